@@ -1,0 +1,24 @@
+"""laddermill_gym: a numba-compiled 3D laddermill simulator (Meijaard, Ockels & Schwab 1999) for control
+and reinforcement-learning research.
+
+Typical use::
+
+    from laddermill_gym import load_scene
+    scene = load_scene("tethered_wing")
+    sim = scene.simulator()
+    sim.step(n_steps=1000)
+"""
+
+from .params import AERO_COLUMNS, Assembly, WindParams, WingType
+from .simulator import IntegratorSettings, SimulationError, Simulator
+
+__all__ = ["AERO_COLUMNS", "Assembly", "WindParams", "WingType", "IntegratorSettings", "SimulationError",
+           "Simulator", "load_scene"]
+__version__ = "0.1.0"
+
+
+def load_scene(name_or_path, **overrides):
+    """Load a scene by name (configs/scenes/NAME.yaml) or path; see :func:`laddermill_gym.scene.load_scene`."""
+    from .scene import load_scene as _load
+
+    return _load(name_or_path, **overrides)

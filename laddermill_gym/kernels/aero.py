@@ -1,0 +1,132 @@
+"""Quasi-steady wing aerodynamics (docs/model.md, "Wing aerodynamics").
+
+Packed wing-type parameters ``tf[k]`` (float64[16]): mass [kg], Jxx, Jyy, Jzz, Jxz [kg m^2], S [m^2],
+b [m], c [m], r_ref (3) [m], attachment (3) [m], unused (2). Aerodynamic spline coefficients
+``ac[k, i, p, j]``: interval i of the uniform alpha grid (start ``a0`` [rad], spacing ``da`` [rad]),
+power p (3, 2, 1, 0 for p = 0..3, scipy.interpolate.CubicSpline's layout), column j (AERO_COLUMNS order).
+"""
+
+import math
+
+from numba import njit
+
+# column indices (must match params.AERO_COLUMNS)
+CL, CD, CM, CLQ, CLAD, CLDE, CMQ, CMAD, CMDE = 0, 1, 2, 3, 4, 5, 6, 7, 8
+CYB, CYP, CYR, CYDR, CLB, CLP, CLR, CLDA, CLDR = 9, 10, 11, 12, 13, 14, 15, 16, 17
+CNB, CNP, CNR, CNDA, CNDR = 18, 19, 20, 21, 22
+N_COLUMNS = 23
+
+
+@njit(cache=True)
+def spline_eval(ac, k, alpha, a0, da, out):
+    """Evaluate all table columns of wing type k at alpha [rad] into out (float64[N_COLUMNS])."""
+    n_int = ac.shape[1]
+    two_pi = 2.0 * math.pi
+    a = alpha - a0
+    if a < 0.0 or a >= two_pi:
+        a = a - two_pi * math.floor(a / two_pi)
+    i = int(a / da)
+    if i >= n_int:
+        i = n_int - 1
+    x = a - i * da
+    for j in range(out.size):
+        out[j] = ((ac[k, i, 0, j] * x + ac[k, i, 1, j]) * x + ac[k, i, 2, j]) * x + ac[k, i, 3, j]
+
+
+@njit(cache=True)
+def wing_aero(k, tf, ac, a0, da, rho, ua, va, wa, p, q, r, de, dr, dal, ad0, coef, out):
+    """Aerodynamic force and moment about the CG, body axes, for one wing.
+
+    Inputs: wing type k, air density rho, air-relative body velocity (ua, va, wa) [m/s], body rates
+    (p, q, r) [rad/s], controls (de, dr, dal) [rad], the known part of the alpha rate ad0 [rad/s].
+    Writes out[0:3] force [N], out[3:6] moment about the CG [N m], out[6:12] the alpha-rate force
+    vector k (generalised force per rad/s of alpha rate), out[12:15] g (d alpha/d v_a, [rad s/m]).
+    Everything is zero when the airspeed is below 1e-9 m/s or rho == 0.
+    """
+    for j in range(15):
+        out[j] = 0.0
+    V2 = ua * ua + va * va + wa * wa
+    if V2 < 1e-18 or rho == 0.0:
+        return
+    V = math.sqrt(V2)
+    S, b, c = tf[k, 5], tf[k, 6], tf[k, 7]
+    rx, ry, rz = tf[k, 8], tf[k, 9], tf[k, 10]
+    alpha = math.atan2(wa, ua)
+    sb = va / V
+    if sb > 1.0:
+        sb = 1.0
+    elif sb < -1.0:
+        sb = -1.0
+    beta = math.asin(sb)
+    spline_eval(ac, k, alpha, a0, da, coef)
+    qbar = 0.5 * rho * V2
+    hb = 0.5 * b / V
+    hc = 0.5 * c / V
+    ph, qh, rh, adh = p * hb, q * hc, r * hb, ad0 * hc
+    cl = coef[CL] + coef[CLQ] * qh + coef[CLAD] * adh + coef[CLDE] * de
+    cd = coef[CD]
+    cm = coef[CM] + coef[CMQ] * qh + coef[CMAD] * adh + coef[CMDE] * de
+    cy = coef[CYB] * beta + coef[CYP] * ph + coef[CYR] * rh + coef[CYDR] * dr
+    cr = coef[CLB] * beta + coef[CLP] * ph + coef[CLR] * rh + coef[CLDA] * dal + coef[CLDR] * dr
+    cn = coef[CNB] * beta + coef[CNP] * ph + coef[CNR] * rh + coef[CNDA] * dal + coef[CNDR] * dr
+    sa, ca = math.sin(alpha), math.cos(alpha)
+    qs = qbar * S
+    X = qs * (cl * sa - cd * ca)
+    Y = qs * cy
+    Z = qs * (-cl * ca - cd * sa)
+    out[0], out[1], out[2] = X, Y, Z
+    out[3] = qs * b * cr + ry * Z - rz * Y
+    out[4] = qs * c * cm + rz * X - rx * Z
+    out[5] = qs * b * cn + rx * Y - ry * X
+    # alpha-rate pieces: force per rad/s of alpha rate, and d alpha / d v_a
+    f = qs * hc * coef[CLAD]
+    kx, kz = f * sa, -f * ca
+    out[6], out[7], out[8] = kx, 0.0, kz
+    out[9] = ry * kz
+    out[10] = qs * c * hc * coef[CMAD] + rz * kx - rx * kz
+    out[11] = -ry * kx
+    d2 = ua * ua + wa * wa
+    if d2 > 1e-18:
+        out[12] = -wa / d2
+        out[14] = ua / d2
+
+
+N_LONGITUDINAL = 9  # CL, CD, Cm and their rate and elevator derivatives come first in the table
+
+
+@njit(cache=True)
+def wing_aero_long(k, tf, ac, a0, da, rho, ua, wa, q, de, ad0, coef, out):
+    """In-plane aerodynamics: only the longitudinal columns are evaluated.
+
+    Writes out[0] X, out[1] Z [N], out[2] pitch moment about the CG [N m], out[3:6] alpha-rate vector
+    (X, Z, M per rad/s) and out[6:8] g = d alpha/d(u_a, w_a) [rad s/m]; zero below 1e-9 m/s airspeed.
+    """
+    for j in range(8):
+        out[j] = 0.0
+    V2 = ua * ua + wa * wa
+    if V2 < 1e-18 or rho == 0.0:
+        return
+    V = math.sqrt(V2)
+    S, c = tf[k, 5], tf[k, 7]
+    rx, rz = tf[k, 8], tf[k, 10]
+    alpha = math.atan2(wa, ua)
+    for j in range(N_LONGITUDINAL):
+        coef[j] = 0.0
+    spline_eval(ac, k, alpha, a0, da, coef[:N_LONGITUDINAL])
+    qs = 0.5 * rho * V2 * S
+    hc = 0.5 * c / V
+    qh, adh = q * hc, ad0 * hc
+    cl = coef[CL] + coef[CLQ] * qh + coef[CLAD] * adh + coef[CLDE] * de
+    cd = coef[CD]
+    cm = coef[CM] + coef[CMQ] * qh + coef[CMAD] * adh + coef[CMDE] * de
+    sa, ca = math.sin(alpha), math.cos(alpha)
+    X = qs * (cl * sa - cd * ca)
+    Z = qs * (-cl * ca - cd * sa)
+    out[0], out[1] = X, Z
+    out[2] = qs * c * cm + rz * X - rx * Z
+    f = qs * hc * coef[CLAD]
+    kx, kz = f * sa, -f * ca
+    out[3], out[4] = kx, kz
+    out[5] = qs * c * hc * coef[CMAD] + rz * kx - rx * kz
+    out[6] = -wa / V2
+    out[7] = ua / V2

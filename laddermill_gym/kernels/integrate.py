@@ -1,0 +1,181 @@
+"""Time integrators over the compiled right-hand sides: fixed-step classic RK4 (the paper's) and an
+error-controlled Dormand-Prince 5(4) for reference solutions.
+
+Status codes returned by the integrators: 0 ok, 1 singular mass matrix, 2 non-finite state,
+3 a speed or rate limit exceeded. On a non-zero status the state is left at the last good step.
+"""
+
+import math
+
+from numba import njit
+
+from .rhs2d import rhs2d
+from .rhs3d import rhs3d
+
+OK, SINGULAR, NONFINITE, LIMIT = 0, 1, 2, 3
+
+
+@njit(cache=True)
+def rhs(t, x, u, dx, M, W, sag, caero, planar):
+    """Dispatch to the 3D (planar is None) or the in-plane right-hand side (compile-time choice)."""
+    if planar is None:
+        return rhs3d(t, x, u, dx, M, W, sag, caero)
+    return rhs2d(t, x, u, dx, M, W, sag, caero)
+
+
+@njit(cache=True)
+def normalise_and_check(x, M, limits, planar):
+    """Renormalise the wings' quaternions (3D) and check the state. Returns a status code."""
+    nw = M.wtype.size
+    nn = M.node_mass.size
+    vmax2 = limits[0] * limits[0]
+    wmax2 = limits[1] * limits[1]
+    for i in range(x.size):
+        if not math.isfinite(x[i]):
+            return NONFINITE
+    if planar is None:
+        for k in range(nw):
+            o = 13 * k
+            n = math.sqrt(x[o + 3] ** 2 + x[o + 4] ** 2 + x[o + 5] ** 2 + x[o + 6] ** 2)
+            for i in range(4):
+                x[o + 3 + i] /= n
+            if x[o + 7] ** 2 + x[o + 8] ** 2 + x[o + 9] ** 2 > vmax2:
+                return LIMIT
+            if x[o + 10] ** 2 + x[o + 11] ** 2 + x[o + 12] ** 2 > wmax2:
+                return LIMIT
+        base = 13 * nw
+        for j in range(nn):
+            o = base + 6 * j + 3
+            if x[o] ** 2 + x[o + 1] ** 2 + x[o + 2] ** 2 > vmax2:
+                return LIMIT
+    else:
+        for k in range(nw):
+            o = 6 * k
+            if x[o + 3] ** 2 + x[o + 4] ** 2 > vmax2 or x[o + 5] ** 2 > wmax2:
+                return LIMIT
+        base = 6 * nw
+        for j in range(nn):
+            o = base + 4 * j + 2
+            if x[o] ** 2 + x[o + 1] ** 2 > vmax2:
+                return LIMIT
+    return OK
+
+
+@njit(cache=True)
+def rk4_advance(t, x, u, dt, n, M, W, sag, caero, planar, limits):
+    """Advance x in place by n classic RK4 steps of size dt. Returns (status, steps done)."""
+    k1, k2, k3, k4, xt, xp = W.k1, W.k2, W.k3, W.k4, W.xt, W.xp
+    ns = x.size
+    h2 = 0.5 * dt
+    h6 = dt / 6.0
+    for step in range(n):
+        for i in range(ns):
+            xp[i] = x[i]
+        if rhs(t, x, u, k1, M, W, sag, caero, planar) != 0:
+            return SINGULAR, step
+        for i in range(ns):
+            xt[i] = x[i] + h2 * k1[i]
+        if rhs(t + h2, xt, u, k2, M, W, sag, caero, planar) != 0:
+            return SINGULAR, step
+        for i in range(ns):
+            xt[i] = x[i] + h2 * k2[i]
+        if rhs(t + h2, xt, u, k3, M, W, sag, caero, planar) != 0:
+            return SINGULAR, step
+        for i in range(ns):
+            xt[i] = x[i] + dt * k3[i]
+        if rhs(t + dt, xt, u, k4, M, W, sag, caero, planar) != 0:
+            return SINGULAR, step
+        for i in range(ns):
+            x[i] += h6 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i])
+        status = normalise_and_check(x, M, limits, planar)
+        if status != OK:
+            for i in range(ns):
+                x[i] = xp[i]
+            return status, step
+        t += dt
+    return OK, n
+
+
+# Dormand & Prince (1980) RK5(4)7M coefficients
+A21 = 1.0 / 5.0
+A31, A32 = 3.0 / 40.0, 9.0 / 40.0
+A41, A42, A43 = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
+A51, A52, A53, A54 = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
+A61, A62, A63, A64, A65 = 9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0, -5103.0 / 18656.0
+B1, B3, B4, B5, B6 = 35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0
+E1, E3, E4, E5, E6, E7 = (71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253.0 / 339200.0,
+                          22.0 / 525.0, -1.0 / 40.0)
+C2, C3, C4, C5 = 0.2, 0.3, 0.8, 8.0 / 9.0
+
+
+@njit(cache=True)
+def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits, max_steps):
+    """Integrate x in place from t to t_end with adaptive Dormand-Prince 5(4) (local extrapolation).
+
+    h is the first trial step [s]. Returns (status, accepted steps, rejected steps, last step size).
+    The error norm is the RMS of err_i / (atol + rtol max(|x_i|, |x_new_i|)); steps are accepted when
+    it is <= 1 and the next step is h * min(5, max(0.2, 0.9 err^(-1/5))).
+    """
+    k1, k2, k3, k4, k5, k6, k7, xt, xp = W.k1, W.k2, W.k3, W.k4, W.k5, W.k6, W.k7, W.xt, W.xp
+    ns = x.size
+    acc = 0
+    rej = 0
+    if rhs(t, x, u, k1, M, W, sag, caero, planar) != 0:
+        return SINGULAR, acc, rej, h
+    while t < t_end:
+        if acc + rej >= max_steps:
+            return LIMIT, acc, rej, h
+        last = False
+        if t + h >= t_end:
+            h = t_end - t
+            last = True
+        for i in range(ns):
+            xt[i] = x[i] + h * A21 * k1[i]
+        if rhs(t + C2 * h, xt, u, k2, M, W, sag, caero, planar) != 0:
+            return SINGULAR, acc, rej, h
+        for i in range(ns):
+            xt[i] = x[i] + h * (A31 * k1[i] + A32 * k2[i])
+        if rhs(t + C3 * h, xt, u, k3, M, W, sag, caero, planar) != 0:
+            return SINGULAR, acc, rej, h
+        for i in range(ns):
+            xt[i] = x[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])
+        if rhs(t + C4 * h, xt, u, k4, M, W, sag, caero, planar) != 0:
+            return SINGULAR, acc, rej, h
+        for i in range(ns):
+            xt[i] = x[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
+        if rhs(t + C5 * h, xt, u, k5, M, W, sag, caero, planar) != 0:
+            return SINGULAR, acc, rej, h
+        for i in range(ns):
+            xt[i] = x[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i])
+        if rhs(t + h, xt, u, k6, M, W, sag, caero, planar) != 0:
+            return SINGULAR, acc, rej, h
+        for i in range(ns):
+            xp[i] = x[i] + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i])
+        if rhs(t + h, xp, u, k7, M, W, sag, caero, planar) != 0:
+            return SINGULAR, acc, rej, h
+        err = 0.0
+        for i in range(ns):
+            ei = h * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i])
+            sc = atol + rtol * max(abs(x[i]), abs(xp[i]))
+            err += (ei / sc) ** 2
+        err = math.sqrt(err / ns)
+        if not math.isfinite(err):
+            err = 1e10
+        if err <= 1.0:
+            status = normalise_and_check(xp, M, limits, planar)
+            if status != OK:
+                return status, acc, rej, h
+            for i in range(ns):
+                x[i] = xp[i]
+            t = t_end if last else t + h
+            acc += 1
+            # first-same-as-last; after renormalisation re-evaluate for exactness
+            if rhs(t, x, u, k1, M, W, sag, caero, planar) != 0:
+                return SINGULAR, acc, rej, h
+            fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
+            if not last:
+                h *= min(5.0, max(0.2, fac))
+        else:
+            rej += 1
+            h *= max(0.2, 0.9 * err ** -0.2)
+    return OK, acc, rej, h
