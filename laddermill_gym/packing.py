@@ -13,7 +13,7 @@ from .params import AERO_COLUMNS, END_FIXED, END_NODE, END_WING, Assembly
 KModel = namedtuple(
     "KModel",
     ["wf", "tmod", "ms", "md", "glob", "wtype", "tf", "ac", "node_mass", "fixed",
-     "ek", "ei", "ea", "ef", "echild", "order", "parent", "bsz"],
+     "ek", "ei", "ea", "ef", "ekd", "echild", "order", "parent", "bsz"],
 )
 KWork = namedtuple(
     "KWork",
@@ -100,6 +100,30 @@ def spline_coefficients(asm: Assembly) -> tuple[np.ndarray, float, float]:
     return np.ascontiguousarray(np.stack(out)), float(grid[0]), da
 
 
+def end_mass_shapes(asm: Assembly) -> np.ndarray:
+    """T^T T of every element end, shape (n_e, 2, 6, 6) (top-left nb x nb used). For a wing end it is
+    [[I, -a~], [a~, -a~ a~]] in body axes (independent of the rotation); for a node end the identity;
+    zero for a fixed end. The in-plane mode keeps the (u, w, q) rows and columns."""
+    el = asm.elements
+    out = np.zeros((el.count, 2, 6, 6))
+    for e in range(el.count):
+        for end in range(2):
+            kind = int(el.end_kind[e, end])
+            if kind == END_WING:
+                ax, ay, az = el.attach[e, end]
+                at = np.array([[0.0, -az, ay], [az, 0.0, -ax], [-ay, ax, 0.0]])
+                full = np.block([[np.eye(3), -at], [at, -at @ at]])
+                if asm.dim == 2:
+                    keep = [0, 2, 4]
+                    full = full[np.ix_(keep, keep)]
+                n = full.shape[0]
+                out[e, end, :n, :n] = full
+            elif kind == END_NODE:
+                n = 3 if asm.dim == 3 else 2
+                out[e, end, :n, :n] = np.eye(n)
+    return out
+
+
 def pack_model(asm: Assembly) -> KModel:
     """Flat float64 / int64 arrays for the kernels (see the kernel module docstrings for layouts)."""
     w = asm.wind
@@ -129,7 +153,7 @@ def pack_model(asm: Assembly) -> KModel:
         ek=np.ascontiguousarray(el.end_kind, dtype=np.int64).reshape(-1, 2),
         ei=np.ascontiguousarray(el.end_index, dtype=np.int64).reshape(-1, 2),
         ea=np.ascontiguousarray(el.attach, dtype=np.float64).reshape(-1, 2, 3),
-        ef=ef, echild=echild, order=order, parent=parent, bsz=bsz,
+        ef=ef, ekd=end_mass_shapes(asm), echild=echild, order=order, parent=parent, bsz=bsz,
     )
 
 

@@ -22,7 +22,7 @@ from .wind import density, modulation, wind_at, wind_rate
 END_WING, END_NODE, END_FIXED = 0, 1, 2
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _end_kinematics(kind, idx, att, x, Rw, fixed, nw, T, ev):
     """Position ev[0:3], velocity ev[3:6] and velocity-quadratic acceleration ev[6:9] (global) of an
     element end, and its 3 x nb velocity transformation T (eq. 13). Returns the block size (0: fixed)."""
@@ -64,14 +64,14 @@ def _end_kinematics(kind, idx, att, x, Rw, fixed, nw, T, ev):
     return 0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _add_end_force(bv, blk, nb, T, fx, fy, fz):
     """Generalised force T^T F of a global force F at an element end."""
     for j in range(nb):
         bv[blk, j] += T[0, j] * fx + T[1, j] * fy + T[2, j] * fz
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _add_mass(A, nb1, T1, nb2, T2, m):
     """A[:nb1, :nb2] += m T1^T T2."""
     for i in range(nb1):
@@ -79,7 +79,15 @@ def _add_mass(A, nb1, T1, nb2, T2, m):
             A[i, j] += m * (T1[0, i] * T2[0, j] + T1[1, i] * T2[1, j] + T1[2, i] * T2[2, j])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
+def _add_const_mass(D, blk, nb, ekd, e, end, m):
+    """D[blk] += m T^T T, with T^T T of the element end precomputed (it does not depend on the rotation)."""
+    for i in range(nb):
+        for j in range(nb):
+            D[blk, i, j] += m * ekd[e, end, i, j]
+
+
+@njit(cache=True, error_model="numpy")
 def _block_of(kind, idx, nw):
     if kind == END_WING:
         return idx
@@ -88,36 +96,82 @@ def _block_of(kind, idx, nw):
     return -1
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
+def _eliminate6(D, U, Y, bv, c, p):
+    """Fixed-size (6 x 6 child, 6 x 6 parent) elimination step without pivoting: the diagonal blocks of
+    wings are symmetric positive definite plus a small apparent-mass term, and so are their Schur
+    complements. Constant loop bounds let the compiler unroll and vectorise."""
+    for k in range(6):
+        inv = 1.0 / D[c, k, k]
+        for i in range(k + 1, 6):
+            f = D[c, i, k] * inv
+            D[c, i, k] = f
+            for j in range(k + 1, 6):
+                D[c, i, j] -= f * D[c, k, j]
+    for i in range(6):
+        for j in range(6):
+            Y[c, i, j] = U[c, i, j]
+    for i in range(1, 6):
+        for j in range(i):
+            f = D[c, i, j]
+            bv[c, i] -= f * bv[c, j]
+            for q in range(6):
+                Y[c, i, q] -= f * Y[c, j, q]
+    for i in range(5, -1, -1):
+        for j in range(i + 1, 6):
+            f = D[c, i, j]
+            bv[c, i] -= f * bv[c, j]
+            for q in range(6):
+                Y[c, i, q] -= f * Y[c, j, q]
+        inv = 1.0 / D[c, i, i]
+        bv[c, i] *= inv
+        for q in range(6):
+            Y[c, i, q] *= inv
+    for k in range(6):
+        bk = bv[c, k]
+        for i in range(6):
+            f = U[c, k, i]
+            bv[p, i] -= f * bk
+            for j in range(6):
+                D[p, i, j] -= f * Y[c, k, j]
+
+
+@njit(cache=True, error_model="numpy")
 def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
     """Solve the block system in place (solution in bv) by elimination children-first.
 
     D[c] diagonal blocks (may be unsymmetric), U[c] = M[c, parent[c]], M[parent[c], c] = U[c]^T.
-    Returns False if a diagonal block is singular."""
+    Returns False if a diagonal block is singular (or, on the fast 6 x 6 path, has a non-positive or
+    non-finite pivot)."""
     nbk = order.size
     for ii in range(nbk):
         c = order[ii]
         n = bsz[c]
+        p = parent[c]
+        if n == 6 and p >= 0 and bsz[p] == 6:
+            ok = True
+            for k in range(6):
+                if not D[c, k, k] > 0.0:
+                    ok = False
+            if ok:
+                _eliminate6(D, U, Y, bv, c, p)
+                continue
         if not lu_factor(D[c], piv[c], n):
             return False
         lu_solve_vec(D[c], piv[c], n, bv[c])
-        p = parent[c]
         if p >= 0:
             m = bsz[p]
             for i in range(n):
                 for j in range(m):
                     Y[c, i, j] = U[c, i, j]
             lu_solve_cols(D[c], piv[c], n, Y[c], m)
-            for i in range(m):
-                s = 0.0
-                for k in range(n):
-                    s += U[c, k, i] * bv[c, k]
-                bv[p, i] -= s
-                for j in range(m):
-                    s = 0.0
-                    for k in range(n):
-                        s += U[c, k, i] * Y[c, k, j]
-                    D[p, i, j] -= s
+            for k in range(n):
+                bk = bv[c, k]
+                for i in range(m):
+                    f = U[c, k, i]
+                    bv[p, i] -= f * bk
+                    for j in range(m):
+                        D[p, i, j] -= f * Y[c, k, j]
     for ii in range(nbk - 1, -1, -1):
         c = order[ii]
         p = parent[c]
@@ -132,7 +186,7 @@ def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def rhs3d(t, x, u, dx, M, W, sag, caero):
     """State derivative dx of the 3D model at time t, state x, controls u (3 per wing).
 
@@ -306,10 +360,10 @@ def rhs3d(t, x, u, dx, M, W, sag, caero):
         bs = _block_of(ks, is_, nw)
         if br >= 0:
             _add_end_force(bv, br, nr, Tr, frx, fry, frz)
-            _add_mass(D[br], nr, Tr, nr, Tr, 2.0 * m6)
+            _add_const_mass(D, br, nr, M.ekd, e, 0, 2.0 * m6)
         if bs >= 0:
             _add_end_force(bv, bs, ns, Ts, fsx, fsy, fsz)
-            _add_mass(D[bs], ns, Ts, ns, Ts, 2.0 * m6)
+            _add_const_mass(D, bs, ns, M.ekd, e, 1, 2.0 * m6)
         ch = M.echild[e]
         if ch == 0:
             _add_mass(U[br], nr, Tr, ns, Ts, m6)
