@@ -14,6 +14,17 @@ class ConfigError(ValueError):
     """An invalid configuration file: the message names the file, the field and the value."""
 
 
+def _show(value: Any) -> str:
+    """Value as the user wrote it (numpy scalars and arrays shown as plain Python numbers)."""
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_show(v) for v in value) + "]"
+    if isinstance(value, np.generic):
+        value = value.item()
+    return repr(value)
+
+
 class Section:
     """A mapping read from a YAML file, with typed getters that validate and track unknown keys."""
 
@@ -29,7 +40,7 @@ class Section:
         return f"{self.path}.{key}" if self.path else key
 
     def error(self, key: str, value: Any, why: str) -> ConfigError:
-        return ConfigError(f"{self.file}: field '{self._name(key)}' = {value!r}: {why}")
+        return ConfigError(f"{self.file}: field '{self._name(key)}' = {_show(value)}: {why}")
 
     def has(self, key: str) -> bool:
         return key in self.data

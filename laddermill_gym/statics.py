@@ -72,6 +72,20 @@ def _accelerations(sim, dx):
     return np.concatenate(parts) if parts else np.zeros(0)
 
 
+def _newton(resid, z0, tol):
+    """Root of resid from z0: MINPACK hybrd first; where the cable starts near slack (a soft, strongly
+    nonlinear start) Levenberg-Marquardt gets into the basin and hybrd polishes. Returns (z, |residual|, msg)."""
+    sol = root(resid, z0, method="hybr", options={"xtol": tol})
+    r = float(np.linalg.norm(resid(sol.x)))
+    if sol.success or r < 1e-9:
+        return sol.x, r, sol.message
+    lm = root(resid, z0, method="lm", options={"xtol": tol, "ftol": tol, "maxiter": 200 * (len(z0) + 1)})
+    pol = root(resid, lm.x, method="hybr", options={"xtol": tol})
+    r_pol = float(np.linalg.norm(resid(pol.x)))
+    r_lm = float(np.linalg.norm(resid(lm.x)))
+    return (pol.x, r_pol, pol.message) if r_pol <= r_lm else (lm.x, r_lm, lm.message)
+
+
 def static_equilibrium(sim, x_guess: np.ndarray, controls: np.ndarray | None = None, t: float = 0.0,
                        tol: float = 1e-10) -> np.ndarray:
     """The state at rest in which all accelerations vanish, found by Newton (MINPACK hybrd) from x_guess.
@@ -83,11 +97,10 @@ def static_equilibrium(sim, x_guess: np.ndarray, controls: np.ndarray | None = N
     def resid(z):
         return _accelerations(sim, sim.rhs(t, _unpack_unknowns(sim, z), u))
 
-    sol = root(resid, z0, method="hybr", options={"xtol": tol})
-    r = np.linalg.norm(resid(sol.x))
-    if not sol.success and r > 1e-6:
-        raise RuntimeError(f"static equilibrium: Newton did not converge (|residual| = {r:.3g}): {sol.message}")
-    return _unpack_unknowns(sim, sol.x)
+    z, r, msg = _newton(resid, z0, tol)
+    if r > 1e-6 * math.sqrt(len(z)):  # RMS acceleration above 1e-6 m/s^2
+        raise RuntimeError(f"static equilibrium: Newton did not converge (|residual| = {r:.3g}): {msg}")
+    return _unpack_unknowns(sim, z)
 
 
 def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
@@ -107,40 +120,48 @@ def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float =
 
     keep = sim.state.copy(), sim.t
     try:
-        sol = root(resid, z0, method="hybr", options={"xtol": 1e-12})
-        r = np.linalg.norm(resid(sol.x))
+        z, r, msg = _newton(resid, z0, 1e-12)
     finally:
         sim.state[:], sim.t = keep
-    if not sol.success and r > 1e-6:
-        raise RuntimeError(f"trim: Newton did not converge (|residual| = {r:.3g}): {sol.message}")
+    if r > 1e-6 * math.sqrt(len(z)):
+        raise RuntimeError(f"trim: Newton did not converge (|residual| = {r:.3g}): {msg}")
     u = u0.copy()
-    u[3 * wing] = sol.x[-1]
-    return _unpack_unknowns(sim, sol.x[:-1]), u
+    u[3 * wing] = z[-1]
+    return _unpack_unknowns(sim, z[:-1]), u
 
 
-def pitch_trim_alpha(wing_type, elevator: float) -> float:
-    """Angle of attack [rad] where the wing alone has no pitching moment about its CG at this elevator
-    (ignoring the cable): a first guess for layouts. Searched on the attached-flow branch (-10..25 deg)."""
+def pitch_trim_alpha(wing_type, elevator: float, dynamic_pressure: float | None = None,
+                     gravity: float = 9.80665) -> float:
+    """Angle of attack [rad] at which a wing at rest in horizontal wind (pitch angle = alpha) has no pitching
+    moment about its cable attachment point, the point where the resultant cable force acts: aerodynamic
+    force at the reference point, aerodynamic moment, and (if ``dynamic_pressure`` [Pa] is given) the weight
+    at the CG. A first guess for layouts, searched on the attached-flow branch (-10..25 deg)."""
     from scipy.interpolate import CubicSpline
 
     from .params import AERO_INDEX
 
     tab = wing_type.aero
     sp = CubicSpline(tab.alpha, tab.values, bc_type="periodic", axis=0)
-    rx, rz = wing_type.r_ref[0], wing_type.r_ref[2]
+    ax = wing_type.r_ref[0] - wing_type.attachment[0]
+    az = wing_type.r_ref[2] - wing_type.attachment[2]
+    gx, gz = -wing_type.attachment[0], -wing_type.attachment[2]  # CG from the attachment [m]
 
-    def cm_cg(a):
+    def cm_att(a):
         c = sp(a)
         cl = c[AERO_INDEX["CL"]] + c[AERO_INDEX["CLde"]] * elevator
         cd = c[AERO_INDEX["CD"]]
         cm = c[AERO_INDEX["Cm"]] + c[AERO_INDEX["Cmde"]] * elevator
         X = cl * math.sin(a) - cd * math.cos(a)
         Z = -cl * math.cos(a) - cd * math.sin(a)
-        return cm + (rz * X - rx * Z) / wing_type.chord
+        m = cm + (az * X - ax * Z) / wing_type.chord
+        if dynamic_pressure is not None and dynamic_pressure > 0.0:
+            w = wing_type.mass * gravity / (dynamic_pressure * wing_type.area)
+            m += (gz * (-w * math.sin(a)) - gx * (w * math.cos(a))) / wing_type.chord
+        return m
 
     grid = np.radians(np.linspace(-10, 25, 141))
-    vals = np.array([cm_cg(a) for a in grid])
+    vals = np.array([cm_att(a) for a in grid])
     for i in range(len(grid) - 1):
         if vals[i] > 0 >= vals[i + 1]:
-            return float(brentq(cm_cg, grid[i], grid[i + 1]))
+            return float(brentq(cm_att, grid[i], grid[i + 1]))
     return float(grid[np.argmin(np.abs(vals))])
