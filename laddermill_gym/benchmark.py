@@ -134,7 +134,7 @@ def startup_times(scene_name: str) -> dict:
             t0 = time.perf_counter()
             r = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
             out[label] = time.perf_counter() - t0
-            out[label.replace("_s", "_inside_s")] = float(r.stdout.strip().splitlines()[-1])
+            out[label[:-2] + "_inside_s"] = float(r.stdout.strip().splitlines()[-1])
     return out
 
 

@@ -15,7 +15,7 @@ from .rhs3d import rhs3d
 OK, SINGULAR, NONFINITE, LIMIT = 0, 1, 2, 3
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def rhs(t, x, u, dx, M, W, sag, caero, planar):
     """Dispatch to the 3D (planar is None) or the in-plane right-hand side (compile-time choice)."""
     if planar is None:
@@ -23,7 +23,7 @@ def rhs(t, x, u, dx, M, W, sag, caero, planar):
     return rhs2d(t, x, u, dx, M, W, sag, caero)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def normalise_and_check(x, M, limits, planar):
     """Renormalise the wings' quaternions (3D) and check the state. Returns a status code."""
     nw = M.wtype.size
@@ -61,7 +61,7 @@ def normalise_and_check(x, M, limits, planar):
     return OK
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def rk4_advance(t, x, u, dt, n, M, W, sag, caero, planar, limits):
     """Advance x in place by n classic RK4 steps of size dt. Returns (status, steps done)."""
     k1, k2, k3, k4, xt, xp = W.k1, W.k2, W.k3, W.k4, W.xt, W.xp
@@ -108,7 +108,7 @@ E1, E3, E4, E5, E6, E7 = (71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253
 C2, C3, C4, C5 = 0.2, 0.3, 0.8, 8.0 / 9.0
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits, max_steps):
     """Integrate x in place from t to t_end with adaptive Dormand-Prince 5(4) (local extrapolation).
 

@@ -15,7 +15,7 @@ from .rhs3d import END_FIXED, END_NODE, END_WING, _add_const_mass, _block_of, tr
 from .wind import density, modulation, wind_at, wind_rate
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def _end_kinematics2(kind, idx, att, x, fixed, nw, T, ev):
     """In-plane version of rhs3d._end_kinematics: ev = (x, z, x', z', ax, az), T is 2 x nb."""
     if kind == END_WING:
@@ -47,20 +47,20 @@ def _end_kinematics2(kind, idx, att, x, fixed, nw, T, ev):
     return 0
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def _add_end_force2(bv, blk, nb, T, fx, fz):
     for j in range(nb):
         bv[blk, j] += T[0, j] * fx + T[1, j] * fz
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def _add_mass2(A, nb1, T1, nb2, T2, m):
     for i in range(nb1):
         for j in range(nb2):
             A[i, j] += m * (T1[0, i] * T2[0, j] + T1[1, i] * T2[1, j])
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def rhs2d(t, x, u, dx, M, W, sag, caero):
     """State derivative of the in-plane model (see rhs3d.rhs3d for the arguments). Returns 0 or 1."""
     nw = M.wtype.size

@@ -11,7 +11,7 @@ import math
 from numba import njit
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def modulation(t, t0, dt, ms, md):
     """Speed factor, direction offset and their time derivatives at time t (linear interpolation,
     held constant outside the sample grid). Returns (s, delta, s_dot, delta_dot)."""
@@ -32,7 +32,7 @@ def modulation(t, t0, dt, ms, md):
     return s, d, (ms[k + 1] - ms[k]) / dt, (md[k + 1] - md[k]) / dt
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def profile(h, wf):
     """Wind speed V_w(h) [m/s] and its height derivative [1/s] (eq. 1)."""
     v0, h0, v1, ex = wf[0], wf[1], wf[2], wf[3]
@@ -44,7 +44,7 @@ def profile(h, wf):
     return v0 + v1 * (h - h0), v1
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def direction(h, wf):
     """Wind direction phi_s(h) [rad] and its height derivative [rad/m] (eq. 2)."""
     pinf, hs = wf[4], wf[5]
@@ -54,7 +54,7 @@ def direction(h, wf):
     return pinf * (1.0 - ex), pinf * ex / hs
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def density(h, wf):
     """Air density [kg/m^3] at altitude h [m] (eq. 3 or ISA troposphere)."""
     if wf[7] == 0.0:
@@ -65,7 +65,7 @@ def density(h, wf):
     return wf[6] * base ** 4.2559
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def wind_at(z, wf, s, d):
     """Wind velocity (global, m/s) at height h = -z with speed factor s and direction offset d."""
     h = -z
@@ -75,7 +75,7 @@ def wind_at(z, wf, s, d):
     return -s * v * math.cos(a), -s * v * math.sin(a), 0.0
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def wind_rate(z, zdot, wf, s, d, sdot, ddot):
     """Time derivative of the wind (global) seen by a point at height -z moving with vertical rate zdot."""
     h = -z
