@@ -12,8 +12,16 @@ Typical use::
 from .params import AERO_COLUMNS, Assembly, WindParams, WingType
 from .simulator import IntegratorSettings, SimulationError, Simulator
 
-__all__ = ["AERO_COLUMNS", "Assembly", "WindParams", "WingType", "IntegratorSettings", "SimulationError",
-           "Simulator", "load_scene"]
+__all__ = [
+    "AERO_COLUMNS",
+    "Assembly",
+    "IntegratorSettings",
+    "SimulationError",
+    "Simulator",
+    "WindParams",
+    "WingType",
+    "load_scene",
+]
 __version__ = "0.1.0"
 
 

@@ -97,7 +97,7 @@ class Section:
             raise self.error(key, v, "must be finite")
         return a
 
-    def section(self, key: str, default: Any = ...) -> "Section":
+    def section(self, key: str, default: Any = ...) -> Section:
         v = self.raw(key, default)
         return Section(v, self.file, self._name(key))
 

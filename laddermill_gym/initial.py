@@ -5,14 +5,13 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 from scipy.optimize import fsolve
 
 from .builders import chain_state
 from .params import AERO_INDEX, N_CONTROLS
 from .simulator import Simulator
 from .states import planar_from_3d, planar_to_3d, rotation_from_euler
-from .statics import pitch_trim_alpha, static_equilibrium, trim_alpha
+from .statics import _table_spline, pitch_trim_alpha, static_equilibrium, trim_alpha
 
 
 def _wind_fields(a):
@@ -29,7 +28,7 @@ def _rest_state(scene, positions, elevators, ends):
 
     a = scene.assembly
     wt = a.wing(0)
-    sp = CubicSpline(wt.aero.alpha, wt.aero.values, bc_type="periodic", axis=0)
+    sp = _table_spline(wt.aero)
     wf = _wind_fields(a)
     m_cable = float(a.elements.mu[0]) * scene.piece_length  # half of each neighbouring piece [kg]
     dia = float(a.elements.diameter[0])
@@ -157,8 +156,9 @@ def initial_state(scene) -> tuple[np.ndarray, np.ndarray]:
     start = scene.ground_points[scene.start]
     end = None if scene.end is None else scene.ground_points[scene.end]
     # solve in the plane first (the in-plane equilibrium is also the 3D one when the wind does not turn)
-    from .scene import load_scene  # noqa: F401  (documented coupling)
     import dataclasses
+
+    from .scene import load_scene  # noqa: F401  (documented coupling)
 
     asm2 = dataclasses.replace(a, dim=2) if a.dim == 3 and a.wind.direction_inf == 0.0 else a
     x3 = chain_state(a, scene.layout, pos, euler, start, end)

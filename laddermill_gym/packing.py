@@ -8,7 +8,7 @@ from collections import namedtuple
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from .params import AERO_COLUMNS, END_FIXED, END_NODE, END_WING, Assembly
+from .params import AERO_COLUMNS, END_NODE, END_WING, Assembly
 
 KModel = namedtuple(
     "KModel",

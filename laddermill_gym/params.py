@@ -76,7 +76,7 @@ class WindParams:
     mod_speed: np.ndarray = field(default_factory=lambda: np.ones(1))
     mod_direction: np.ndarray = field(default_factory=lambda: np.zeros(1))
 
-    def with_modulation(self, t0: float, dt: float, speed: np.ndarray, direction: np.ndarray) -> "WindParams":
+    def with_modulation(self, t0: float, dt: float, speed: np.ndarray, direction: np.ndarray) -> WindParams:
         """Return a copy with a new time modulation (speed factor [-] and direction offset [rad] samples)."""
         speed = np.ascontiguousarray(speed, dtype=np.float64)
         direction = np.ascontiguousarray(direction, dtype=np.float64)

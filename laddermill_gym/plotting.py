@@ -7,10 +7,10 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
-from .recording import Recording  # noqa: E402
+from .recording import Recording
 
 
 def plot_shape(rec: Recording, path: Path, title: str = "") -> Path:

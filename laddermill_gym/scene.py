@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .builders import CableSpec, ChainLayout, build_chain, chain_state
+from .builders import CableSpec, ChainLayout, build_chain
 from .configio import ConfigError, Section, read_yaml
 from .params import AERO_COLUMNS, N_CONTROLS, AeroTable, Assembly, WindParams, WingType
 from .simulator import IntegratorSettings, Simulator
@@ -158,7 +158,7 @@ class Scene:
 
         return initial_state(self)
 
-    def replace(self, **changes) -> "Scene":
+    def replace(self, **changes) -> Scene:
         return dataclasses.replace(self, **changes)
 
 

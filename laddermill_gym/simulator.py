@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from .kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR, dp54_advance, rhs as _rhs_kernel, rk4_advance
+from .kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR, dp54_advance, rk4_advance
+from .kernels.integrate import rhs as _rhs_kernel
 from .packing import make_workspace, pack_model
 from .params import CONTROL_NAMES, N_CONTROLS, Assembly
-from .states import euler_from_quaternion, quaternion_from_euler
+from .states import euler_from_quaternion
 
 
 class SimulationError(RuntimeError):

@@ -130,37 +130,51 @@ def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float =
     return _unpack_unknowns(sim, z[:-1]), u
 
 
+_SPLINES: dict = {}
+
+
+def _table_spline(table):
+    """Periodic cubic spline of an aerodynamic table (cached per table object)."""
+    from scipy.interpolate import CubicSpline
+
+    key = id(table)
+    hit = _SPLINES.get(key)
+    if hit is None or hit[0] is not table:
+        hit = (table, CubicSpline(table.alpha, table.values, bc_type="periodic", axis=0))
+        _SPLINES[key] = hit
+    return hit[1]
+
+
 def pitch_trim_alpha(wing_type, elevator: float, dynamic_pressure: float | None = None,
                      gravity: float = 9.80665) -> float:
     """Angle of attack [rad] at which a wing at rest in horizontal wind (pitch angle = alpha) has no pitching
     moment about its cable attachment point, the point where the resultant cable force acts: aerodynamic
     force at the reference point, aerodynamic moment, and (if ``dynamic_pressure`` [Pa] is given) the weight
     at the CG. A first guess for layouts, searched on the attached-flow branch (-10..25 deg)."""
-    from scipy.interpolate import CubicSpline
-
     from .params import AERO_INDEX
 
-    tab = wing_type.aero
-    sp = CubicSpline(tab.alpha, tab.values, bc_type="periodic", axis=0)
+    sp = _table_spline(wing_type.aero)
     ax = wing_type.r_ref[0] - wing_type.attachment[0]
     az = wing_type.r_ref[2] - wing_type.attachment[2]
     gx, gz = -wing_type.attachment[0], -wing_type.attachment[2]  # CG from the attachment [m]
+    iCL, iCD, iCm = AERO_INDEX["CL"], AERO_INDEX["CD"], AERO_INDEX["Cm"]
+    iCLde, iCmde = AERO_INDEX["CLde"], AERO_INDEX["Cmde"]
 
-    def cm_att(a):
+    def cm_att(a):  # works on scalars and arrays of alpha
         c = sp(a)
-        cl = c[AERO_INDEX["CL"]] + c[AERO_INDEX["CLde"]] * elevator
-        cd = c[AERO_INDEX["CD"]]
-        cm = c[AERO_INDEX["Cm"]] + c[AERO_INDEX["Cmde"]] * elevator
-        X = cl * math.sin(a) - cd * math.cos(a)
-        Z = -cl * math.cos(a) - cd * math.sin(a)
+        cl = c[..., iCL] + c[..., iCLde] * elevator
+        cd = c[..., iCD]
+        cm = c[..., iCm] + c[..., iCmde] * elevator
+        X = cl * np.sin(a) - cd * np.cos(a)
+        Z = -cl * np.cos(a) - cd * np.sin(a)
         m = cm + (az * X - ax * Z) / wing_type.chord
         if dynamic_pressure is not None and dynamic_pressure > 0.0:
             w = wing_type.mass * gravity / (dynamic_pressure * wing_type.area)
-            m += (gz * (-w * math.sin(a)) - gx * (w * math.cos(a))) / wing_type.chord
+            m = m + (gz * (-w * np.sin(a)) - gx * (w * np.cos(a))) / wing_type.chord
         return m
 
     grid = np.radians(np.linspace(-10, 25, 141))
-    vals = np.array([cm_att(a) for a in grid])
+    vals = cm_att(grid)
     for i in range(len(grid) - 1):
         if vals[i] > 0 >= vals[i + 1]:
             return float(brentq(cm_att, grid[i], grid[i + 1]))

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from laddermill_gym.builders import CableSpec
-from laddermill_gym.params import AERO_COLUMNS, AERO_INDEX, Assembly, AeroTable, Elements, WindParams, WingType
+from laddermill_gym.params import AERO_COLUMNS, AERO_INDEX, AeroTable, Assembly, Elements, WindParams, WingType
 
 #: Standard gravity [m/s^2].
 G0 = 9.80665

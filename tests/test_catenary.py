@@ -46,7 +46,7 @@ def _initial_guess(n: int, arc: float, rise: float) -> tuple[np.ndarray, np.ndar
     return np.interp(si, s, xs), np.interp(si, s, z)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def equilibrium(n: int, L0: float, rise: float, sag: bool) -> dict:
     """Static equilibrium of an n-element cable: horizontal and vertical support reactions at A [N],
     mid-span sag [m] (even n), largest Newton residual [m/s^2]."""

@@ -27,7 +27,7 @@ T_END = 3.0  # [s]
 DTS = np.array([0.01, 0.005, 0.0025, 0.00125])  # [s]
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def tethered_wing():
     wt = make_wing_type(mass=5.0, inertia=(4.0, 1.5, 5.0, 0.3), attachment=(0.3, 0.0, 0.6),
                         aero=smooth_aero_table(), area=5.0, span=5.0, chord=1.0, r_ref=(-0.1, 0.0, 0.0))

@@ -39,7 +39,7 @@ TENSION = EA * STRAIN  # 100 N
 L = L0 * (1.0 + STRAIN)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def mode_frequencies(direction: int) -> np.ndarray:
     """Sorted natural frequencies [rad/s] of the node motions along global axis ``direction``
     (0: along the cable, 1: across)."""

@@ -17,7 +17,7 @@ def tension_plain(EA, DA, l0, eps, eps_dot):
     if eps <= 0.0:
         return 0.0
     s = (EA * eps + DA * eps_dot) / l0
-    return s if s > 0.0 else 0.0
+    return max(0.0, s)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
@@ -31,10 +31,9 @@ def tension_sag(EA, DA, l0, eps, eps_dot, eps_p):
     s0 = (EA * eps + DA * eps_dot) / l0
     c = EA * eps_p / l0
     if not (c > 1e-300):
-        return s0 if s0 > 0.0 else 0.0
+        return max(0.0, s0)
     s = c ** (1.0 / 3.0)
-    if s0 > s:
-        s = s0
+    s = max(s, s0)
     for _ in range(SAG_MAX_ITER):
         f = s * s * (s - s0) - c
         df = s * (3.0 * s - 2.0 * s0)

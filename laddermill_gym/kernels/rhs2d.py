@@ -11,7 +11,7 @@ from numba import njit
 
 from .aero import wing_aero_long
 from .cable import aero_load, lateral_elongation, tension_plain, tension_sag
-from .rhs3d import END_FIXED, END_NODE, END_WING, _add_const_mass, _block_of, tree_solve
+from .rhs3d import END_NODE, END_WING, _add_const_mass, _block_of, tree_solve
 from .wind import density, modulation, wind_at, wind_rate
 
 

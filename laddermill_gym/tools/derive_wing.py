@@ -540,8 +540,7 @@ def main(argv=None):
     with open(path, "w", encoding="utf-8") as fh:
         fh.write("\n".join(head) + "\n")
         fh.write(",".join(["alpha_deg", *AERO_COLUMNS]) + "\n")
-        for a, r in zip(a_deg, rows):
-            fh.write(f"{a:.1f}," + ",".join(f"{v if abs(v) > 1e-12 else 0.0:.6g}" for v in r) + "\n")
+        fh.writelines(f"{a:.1f}," + ",".join(f"{v if abs(v) > 1e-12 else 0.0:.6g}" for v in r) + "\n" for a, r in zip(a_deg, rows))
     print(f"wrote {path} ({len(a_deg)} rows)")
     comps, J = mass_properties(wing)
     print("mass build-up (name, kg, x [m], z [m]):")
