@@ -114,3 +114,13 @@ def test_bad_controls_and_state_are_rejected():
     bad[2] = np.nan
     with pytest.raises(ValueError, match=r"state\[2\]"):
         sim.reset(state=bad)
+
+
+def test_nan_inside_the_kernels_is_caught():
+    """The kernels are compiled with fastmath flags that keep NaN/Inf semantics (no 'nnan'/'ninf'): a NaN
+    written straight into the state (bypassing reset's validation) is still detected by the integrator."""
+    scene = load_scene("tethered_wing")
+    sim = scene.simulator()
+    sim.state[9] = np.nan  # a body velocity component
+    with pytest.raises(SimulationError, match="t = "):
+        sim.step(n_steps=3)

@@ -1,0 +1,1 @@
+"""Model-based controllers: linearisation at trim, discrete LQR, and the shared controller protocol."""
