@@ -1,0 +1,399 @@
+"""Discrete-time LQR of the wings' lateral motion about the trim, and its controller.
+
+Design: linearise at the scene's trim in minimal coordinates (:mod:`.linearize`), keep the lateral subsystem
+dz = (y, vy, phi, psi, p, r), du = (rudder, aileron), discretise with a zero-order hold at the control period
+(``control.c2d(..., "zoh")``) and solve the discrete Riccati equation (``control.dlqr``) with Bryson's-rule
+weights from ``configs/agents/lqr_*.yaml``. The controller applies u = u_trim - K dz to rudder and aileron and
+keeps the elevator at trim.
+
+For a chain (``ladder_chain``) each wing gets its own gain from its own lateral block of the chain's
+Jacobian (all other wings and nodes held at trim): a decentralised design; :func:`chain_closed_loop` checks
+it on the full coupled lateral model.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import control
+import numpy as np
+
+from ..configio import read_yaml
+from ..params import N_CONTROLS
+from ..scene import CONFIG_DIR, Scene, load_scene
+from .base import OBS_INDEX, OBS_PER_WING, actions_from_controls, batch_observations, control_ranges
+from .linearize import (
+    LATERAL_INPUTS,
+    Linearization,
+    coupling_norms,
+    lateral_subsystem,
+    linearize,
+    wing_lateral_blocks,
+)
+
+__all__ = [
+    "LATERAL_STATE_NAMES",
+    "LATERAL_INPUT_NAMES",
+    "LQRConfig",
+    "load_lqr_config",
+    "bryson_weights",
+    "DiscreteLQR",
+    "discrete_lqr",
+    "continuous_equivalent",
+    "mode_table",
+    "LateralDesign",
+    "design_tethered_wing",
+    "ChainDesign",
+    "design_ladder_chain",
+    "chain_closed_loop",
+    "LQRController",
+    "DEFAULT_CONFIG",
+    "DEFAULT_CHAIN_CONFIG",
+]
+
+#: Lateral state of one wing (deviation from trim) and its units: m, m/s, rad, rad, rad/s, rad/s.
+LATERAL_STATE_NAMES: tuple[str, ...] = ("y", "vy", "phi", "psi", "p", "r")
+#: Lateral inputs of one wing [rad].
+LATERAL_INPUT_NAMES: tuple[str, ...] = ("rudder", "aileron")
+
+DEFAULT_CONFIG = CONFIG_DIR / "agents" / "lqr_tethered_wing.yaml"
+DEFAULT_CHAIN_CONFIG = CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml"
+
+_MAX_STATE_KEYS = (("y", 1.0), ("vy", 1.0), ("phi_deg", math.pi / 180), ("psi_deg", math.pi / 180),
+                   ("p_deg_s", math.pi / 180), ("r_deg_s", math.pi / 180))
+
+
+# ------------------------------------------------------------------------------------ configuration
+@dataclass(frozen=True)
+class LQRConfig:
+    """A lateral LQR design (``configs/agents/lqr_*.yaml``).
+
+    Attributes
+    ----------
+    file : Path
+    scene : str                   scene name or YAML path
+    elements_per_piece : int      cable elements per piece (1 = the environments' model)
+    control_period : float        [s] zero-order-hold period of the controller
+    max_state : ndarray (6,)      largest acceptable deviations of (y [m], vy [m/s], phi [rad], psi [rad],
+                                  p [rad/s], r [rad/s]) (Bryson's rule)
+    max_input : ndarray (2,)      largest acceptable (rudder, aileron) deflection from trim [rad]
+    """
+
+    file: Path
+    scene: str
+    elements_per_piece: int
+    control_period: float
+    max_state: np.ndarray
+    max_input: np.ndarray
+
+
+def load_lqr_config(path: str | Path = DEFAULT_CONFIG) -> LQRConfig:
+    """Read an LQR config YAML (strict: unknown keys and non-positive limits raise ConfigError)."""
+    s = read_yaml(path)
+    scene = s.text("scene")
+    epp = s.number("elements_per_piece", integer=True, positive=True)
+    period = s.number("control_period", positive=True)
+    ms = s.section("max_state")
+    max_state = np.array([ms.number(k, positive=True) * scale for k, scale in _MAX_STATE_KEYS])
+    ms.done()
+    mi = s.section("max_input_deg")
+    max_input = np.radians([mi.number(k, positive=True) for k in LATERAL_INPUT_NAMES])
+    mi.done()
+    s.done()
+    return LQRConfig(file=Path(path), scene=scene, elements_per_piece=epp, control_period=period,
+                     max_state=max_state, max_input=max_input)
+
+
+def bryson_weights(max_state: np.ndarray, max_input: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Bryson's rule: Q = diag(1 / max_state^2), R = diag(1 / max_input^2)."""
+    return np.diag(1.0 / np.asarray(max_state, float) ** 2), np.diag(1.0 / np.asarray(max_input, float) ** 2)
+
+
+# ------------------------------------------------------------------------------------ discrete LQR
+@dataclass(frozen=True)
+class DiscreteLQR:
+    """A discrete LQR design on the ZOH discretisation of (A, B).
+
+    Attributes
+    ----------
+    A, B : continuous model;  Ad, Bd : ZOH discretisation at ``dt`` [s]
+    Q, R : weights;  K : gain (u = -K x);  S : Riccati solution
+    closed_loop : eigenvalues of Ad - Bd K (discrete, |z| < 1 is stable)
+    open_loop : eigenvalues of A (continuous)
+    """
+
+    A: np.ndarray
+    B: np.ndarray
+    Ad: np.ndarray
+    Bd: np.ndarray
+    dt: float
+    Q: np.ndarray
+    R: np.ndarray
+    K: np.ndarray
+    S: np.ndarray
+    closed_loop: np.ndarray
+    open_loop: np.ndarray
+
+
+def discrete_lqr(A: np.ndarray, B: np.ndarray, Q: np.ndarray, R: np.ndarray, dt: float) -> DiscreteLQR:
+    """ZOH-discretise (A, B) at ``dt`` [s] (``control.c2d``) and solve the discrete LQR (``control.dlqr``).
+
+    Notes
+    -----
+    Minimises sum_k x_k^T Q x_k + u_k^T R u_k subject to x_{k+1} = Ad x_k + Bd u_k with
+    Ad = expm(A dt), Bd = int_0^dt expm(A s) ds B; u_k = -K x_k, K = (R + Bd^T S Bd)^-1 Bd^T S Ad.
+    """
+    n = A.shape[0]
+    sysc = control.ss(A, B, np.eye(n), np.zeros((n, B.shape[1])))
+    sysd = control.c2d(sysc, dt, method="zoh")
+    Ad, Bd = np.asarray(sysd.A), np.asarray(sysd.B)
+    K, S, E = control.dlqr(Ad, Bd, Q, R)
+    return DiscreteLQR(A=A, B=B, Ad=Ad, Bd=Bd, dt=float(dt), Q=Q, R=R, K=np.asarray(K), S=np.asarray(S),
+                       closed_loop=np.asarray(E), open_loop=np.linalg.eigvals(A))
+
+
+def continuous_equivalent(z: np.ndarray, dt: float) -> np.ndarray:
+    """Continuous-time equivalents s = ln(z) / dt [1/s] of discrete eigenvalues z."""
+    return np.log(np.asarray(z, dtype=complex)) / dt
+
+
+def mode_table(eigenvalues: np.ndarray, dt: float | None = None) -> str:
+    """A text table of eigenvalues (continuous; discrete if ``dt`` is given, shown with their continuous
+    equivalents): real and imaginary part [1/s], natural frequency [rad/s], damping ratio, period [s],
+    time to double (unstable) or halve (stable) [s]. Conjugate pairs are shown once."""
+    ev = np.asarray(eigenvalues, dtype=complex)
+    s = continuous_equivalent(ev, dt) if dt is not None else ev
+    order = np.argsort(-s.real)
+    head = ("   |z|     " if dt is not None else "") + \
+        "   Re [1/s]   Im [1/s]  wn [rad/s]    zeta   period [s]  t2x/t1/2 [s]"
+    lines = [head]
+    for i in order:
+        si = s[i]
+        if si.imag < -1e-12:
+            continue
+        wn = abs(si)
+        zeta = -si.real / wn if wn > 0 else float("nan")
+        period = 2 * math.pi / si.imag if si.imag > 1e-12 else float("inf")
+        t2 = math.log(2) / abs(si.real) if si.real != 0 else float("inf")
+        kind = "double" if si.real > 0 else "half"
+        pre = f"{abs(ev[i]):9.5f}  " if dt is not None else ""
+        lines.append(f"{pre}{si.real:10.4f} {si.imag:10.4f} {wn:11.4f} {zeta:8.3f} {period:11.2f}  "
+                     f"{t2:9.2f} ({kind})")
+    return "\n".join(lines)
+
+
+# ------------------------------------------------------------------------------------ tethered wing
+@dataclass(frozen=True)
+class LateralDesign:
+    """The lateral LQR of a single tethered wing: trim, linearisation, lateral model and gain."""
+
+    config: LQRConfig
+    scene: Scene
+    x_trim: np.ndarray
+    u_trim: np.ndarray
+    linearization: Linearization
+    A_lat: np.ndarray
+    B_lat: np.ndarray
+    coupling: dict[str, float]
+    lqr: DiscreteLQR
+
+    def controller(self, action_dtype=np.float32) -> LQRController:
+        """The design's :class:`LQRController`."""
+        return LQRController.from_gains(self.scene, self.x_trim, self.u_trim, self.lqr.K[None], action_dtype)
+
+
+def _scene_for(config: LQRConfig, scene: Scene | None) -> Scene:
+    return scene if scene is not None else load_scene(config.scene, elements_per_piece=config.elements_per_piece)
+
+
+def design_tethered_wing(config: LQRConfig | str | Path = DEFAULT_CONFIG, scene: Scene | None = None,
+                         trim: tuple[np.ndarray, np.ndarray] | None = None) -> LateralDesign:
+    """Trim the single-wing scene, linearise, and design the discrete lateral LQR.
+
+    Parameters
+    ----------
+    config : LQRConfig or path of its YAML
+    scene : Scene, optional      overrides the config's scene (e.g. a modified wing for a study)
+    trim : (x, u), optional      a known trim of ``scene`` (found with ``scene.initial_state()`` otherwise)
+    """
+    cfg = config if isinstance(config, LQRConfig) else load_lqr_config(config)
+    sc = _scene_for(cfg, scene)
+    if sc.assembly.n_wings != 1:
+        raise ValueError(f"design_tethered_wing: scene {sc.name} has {sc.assembly.n_wings} wings; "
+                         "use design_ladder_chain for chains")
+    x, u = trim if trim is not None else sc.initial_state()
+    sim = sc.simulator(x, u)
+    lin = linearize(sim, x, u)
+    A, B, _, _ = lateral_subsystem(lin)
+    n_lat = len(LATERAL_STATE_NAMES)
+    if A.shape[0] != n_lat:
+        # cable nodes add lateral states the controller does not observe: design on the wing's own block
+        A, B = A[:n_lat, :n_lat], B[:n_lat]
+    Q, R = bryson_weights(cfg.max_state, cfg.max_input)
+    lqr = discrete_lqr(A, B, Q, R, cfg.control_period)
+    return LateralDesign(config=cfg, scene=sc, x_trim=x, u_trim=u, linearization=lin, A_lat=A, B_lat=B,
+                         coupling=coupling_norms(lin), lqr=lqr)
+
+
+# ------------------------------------------------------------------------------------ chain
+@dataclass(frozen=True)
+class ChainDesign:
+    """Decentralised lateral LQR of a chain: one gain per wing from its own lateral block."""
+
+    config: LQRConfig
+    scene: Scene
+    x_trim: np.ndarray
+    u_trim: np.ndarray
+    A_blocks: np.ndarray   # (n_wings, 6, 6)
+    B_blocks: np.ndarray   # (n_wings, 6, 2)
+    gains: np.ndarray      # (n_wings, 2, 6)
+    closed_loop: np.ndarray  # (n_wings, 6) discrete eigenvalues of each wing's own closed loop
+
+    def controller(self, action_dtype=np.float32) -> LQRController:
+        return LQRController.from_gains(self.scene, self.x_trim, self.u_trim, self.gains, action_dtype)
+
+
+def design_ladder_chain(config: LQRConfig | str | Path = DEFAULT_CHAIN_CONFIG, scene: Scene | None = None,
+                        trim: tuple[np.ndarray, np.ndarray] | None = None) -> ChainDesign:
+    """Per-wing lateral LQR gains of a chain from the diagonal lateral blocks of its Jacobian.
+
+    Only the 8 columns per wing that the blocks need are differentiated (:func:`wing_lateral_blocks`), so
+    the 101-wing chain costs about 1.6 thousand right-hand sides."""
+    cfg = config if isinstance(config, LQRConfig) else load_lqr_config(config)
+    sc = _scene_for(cfg, scene)
+    x, u = trim if trim is not None else sc.initial_state()
+    sim = sc.simulator(x, u)
+    A_blocks, B_blocks = wing_lateral_blocks(sim, x, u)
+    Q, R = bryson_weights(cfg.max_state, cfg.max_input)
+    gains, eigs = [], []
+    for A, B in zip(A_blocks, B_blocks, strict=True):
+        d = discrete_lqr(A, B, Q, R, cfg.control_period)
+        gains.append(d.K)
+        eigs.append(d.closed_loop)
+    return ChainDesign(config=cfg, scene=sc, x_trim=x, u_trim=u, A_blocks=A_blocks, B_blocks=B_blocks,
+                       gains=np.array(gains), closed_loop=np.array(eigs))
+
+
+def chain_closed_loop(design: ChainDesign) -> tuple[np.ndarray, np.ndarray]:
+    """Check a decentralised chain design on the full coupled lateral model.
+
+    Linearises the whole chain (``control.linearize``, all minimal coordinates), takes the lateral
+    subsystem, discretises it with a ZOH at the control period, closes the loop with the block-diagonal
+    gain (each wing's gain on its own states; cable-node lateral states, if any, unobserved) and returns
+    (open-loop continuous eigenvalues, closed-loop discrete eigenvalues) of that full model.
+    """
+    sc = design.scene
+    sim = sc.simulator(design.x_trim, design.u_trim)
+    lin = linearize(sim, design.x_trim, design.u_trim)
+    A, B, _, _ = lateral_subsystem(lin)
+    nw = lin.n_wings
+    n_lat = len(LATERAL_STATE_NAMES)
+    K = np.zeros((B.shape[1], A.shape[0]))
+    for k in range(nw):
+        K[2 * k: 2 * k + 2, n_lat * k: n_lat * k + n_lat] = design.gains[k]
+    sysd = control.c2d(control.ss(A, B, np.eye(A.shape[0]), np.zeros(B.shape)), design.config.control_period, "zoh")
+    Ad, Bd = np.asarray(sysd.A), np.asarray(sysd.B)
+    return np.linalg.eigvals(A), np.linalg.eigvals(Ad - Bd @ K)
+
+
+# ------------------------------------------------------------------------------------ controller
+class LQRController:
+    """Linear state feedback on the lateral deviations, in the environments' observation and action spaces.
+
+    For every wing k: dz_k = (dy, vy, phi - phi_trim, wrap(psi - psi_trim), p, r) from its observation block
+    (layout :data:`~laddermill_gym.control.base.OBS_NAMES`), (rudder, aileron)_k = trim - K_k dz_k, elevator_k =
+    trim; actions a = (u - mid) / half_range clipped to [-1, 1]. Implements Stable-Baselines3's ``predict``.
+
+    Parameters
+    ----------
+    gains : ndarray (n_wings, 2, 6)
+        Per-wing gains on (y, vy, phi, psi, p, r) giving (rudder, aileron) [rad].
+    u_trim : ndarray (3 n_wings,)
+        Trim controls [rad].
+    trim_attitude : ndarray (n_wings, 2)
+        Trim (phi, psi) of every wing [rad].
+    mid, half_range : ndarray (3 n_wings,)
+        Control range centre and half width [rad] (:func:`~laddermill_gym.control.base.control_ranges`).
+    action_dtype : numpy dtype of the returned actions (float32 as in the environments' Box).
+
+    Attributes
+    ----------
+    n_clipped, n_actions : int
+        Number of action entries clipped to [-1, 1] and of action entries produced since the last
+        :meth:`reset_clip_count`.
+    last_clipped : ndarray of bool
+        Which entries of the last returned actions were clipped.
+    """
+
+    def __init__(self, gains: np.ndarray, u_trim: np.ndarray, trim_attitude: np.ndarray, mid: np.ndarray,
+                 half_range: np.ndarray, action_dtype=np.float32):
+        self.gains = np.asarray(gains, dtype=float)
+        nw = self.gains.shape[0]
+        if self.gains.shape != (nw, len(LATERAL_INPUT_NAMES), len(LATERAL_STATE_NAMES)):
+            raise ValueError(f"gains: expected shape (n_wings, 2, 6), got {self.gains.shape}")
+        self.n_wings = nw
+        self.u_trim = np.asarray(u_trim, dtype=float).reshape(nw, N_CONTROLS)
+        self.trim_attitude = np.asarray(trim_attitude, dtype=float).reshape(nw, 2)
+        self.mid = np.asarray(mid, dtype=float).reshape(nw, N_CONTROLS)
+        self.half_range = np.asarray(half_range, dtype=float).reshape(nw, N_CONTROLS)
+        self.action_dtype = action_dtype
+        self.obs_dim = OBS_PER_WING * nw
+        self.act_dim = N_CONTROLS * nw
+        self.reset_clip_count()
+
+    @classmethod
+    def from_gains(cls, scene: Scene, x_trim: np.ndarray, u_trim: np.ndarray, gains: np.ndarray,
+                   action_dtype=np.float32) -> LQRController:
+        """Controller for ``scene`` at the trim (x_trim, u_trim) with per-wing ``gains`` (n_wings, 2, 6)."""
+        sim = scene.simulator(x_trim, u_trim)
+        euler = sim.wing_euler()
+        mid, half = control_ranges(scene.assembly)
+        return cls(gains, u_trim, euler[:, [0, 2]], mid, half, action_dtype)
+
+    @classmethod
+    def from_config(cls, path: str | Path = DEFAULT_CONFIG, action_dtype=np.float32) -> LQRController:
+        """Design from a config file (single wing or chain, chosen by the scene's number of wings)."""
+        cfg = load_lqr_config(path)
+        sc = load_scene(cfg.scene, elements_per_piece=cfg.elements_per_piece)
+        design = (design_tethered_wing(cfg, sc) if sc.assembly.n_wings == 1 else design_ladder_chain(cfg, sc))
+        return design.controller(action_dtype)
+
+    def reset_clip_count(self) -> None:
+        self.n_clipped = 0
+        self.n_actions = 0
+        self.last_clipped = np.zeros(0, dtype=bool)
+
+    def lateral_deviation(self, observation: np.ndarray) -> np.ndarray:
+        """(n_envs, n_wings, 6) lateral deviations from trim of batched observations (n_envs, obs_dim)."""
+        obs = np.asarray(observation, dtype=float).reshape(-1, self.n_wings, OBS_PER_WING)
+        i = OBS_INDEX
+        dpsi = obs[..., i["psi"]] - self.trim_attitude[:, 1]
+        dpsi = (dpsi + math.pi) % (2 * math.pi) - math.pi
+        return np.stack([obs[..., i["dy"]], obs[..., i["vy"]], obs[..., i["phi"]] - self.trim_attitude[:, 0],
+                         dpsi, obs[..., i["p"]], obs[..., i["r"]]], axis=-1)
+
+    def controls(self, observation: np.ndarray) -> np.ndarray:
+        """Physical controls [rad], shape (n_envs, n_wings, 3), before clipping to the limits."""
+        obs, _ = batch_observations(observation, self.obs_dim)
+        dz = self.lateral_deviation(obs)
+        u = np.broadcast_to(self.u_trim, (len(obs), self.n_wings, N_CONTROLS)).copy()
+        u[..., list(LATERAL_INPUTS)] -= np.einsum("kij,nkj->nki", self.gains, dz)
+        return u
+
+    def predict(self, observation: np.ndarray, state: Any = None, episode_start: np.ndarray | None = None,
+                deterministic: bool = False) -> tuple[np.ndarray, Any]:
+        """Normalised actions for batched (n_envs, obs_dim) or single (obs_dim,) observations."""
+        _, single = batch_observations(observation, self.obs_dim)
+        a = actions_from_controls(self.controls(observation), self.mid, self.half_range)
+        clipped = np.abs(a) > 1.0
+        self.last_clipped = clipped.reshape(len(a), -1)
+        self.n_clipped += int(clipped.sum())
+        self.n_actions += clipped.size
+        a = np.clip(a, -1.0, 1.0).reshape(len(a), self.act_dim).astype(self.action_dtype)
+        if single:
+            self.last_clipped = self.last_clipped[0]
+            return a[0], state
+        return a, state
