@@ -1,0 +1,1 @@
+"""Gymnasium environments of laddermill_gym: observation layout, action maps, tasks and vector envs."""

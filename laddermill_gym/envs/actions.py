@@ -1,0 +1,232 @@
+"""Actions: normalised group commands in [-1, 1] mapped to per-wing control surface angles.
+
+Wings are split into groups that share one command each (``groups``). Each group takes three entries:
+
+* ``action_mode="tail"``: elevator, rudder, aileron;
+* ``action_mode="alpha"``: commanded angle of attack, rudder, aileron. The commanded angle passes through
+  an optional first-order servo lag and is turned into an elevator setting by a static map
+  (:class:`ElevatorFromAlpha`). Rudder and aileron stay direct commands: the elevator only sets the
+  longitudinal trim, and the lateral instability of a wing on a cable needs the lateral surfaces.
+
+A normalised entry ``a`` maps linearly to a physical value ``mid + a * half_range`` over that quantity's
+range (each wing's own control limits, or the angle-of-attack range of the map).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.interpolate import CubicSpline
+
+from ..params import AERO_INDEX, CONTROL_NAMES, N_CONTROLS, Assembly, WingType
+
+ACTION_MODES: tuple[str, ...] = ("tail", "alpha")
+GROUPINGS: tuple[str, ...] = ("per_wing", "all", "halves")
+
+
+def resolve_groups(groups, n_wings: int, two_ended: bool) -> tuple[tuple[int, ...], ...]:
+    """Wing index groups from a grouping name or an explicit list of index lists.
+
+    ``"per_wing"``: one group per wing; ``"all"``: one group; ``"halves"``: the ascending half
+    (wings 0 .. ceil(n/2) - 1) and the descending half of a chain between two ground points. An explicit
+    list must hold every wing exactly once. Raises ValueError naming the field ``groups``.
+    """
+    if isinstance(groups, str):
+        if groups == "per_wing":
+            return tuple((k,) for k in range(n_wings))
+        if groups == "all":
+            return (tuple(range(n_wings)),)
+        if groups == "halves":
+            if not two_ended or n_wings < 2:
+                raise ValueError(f"groups = 'halves' needs a chain between two ground points with >= 2 wings "
+                                 f"(this scene has {n_wings} wing(s), {'two' if two_ended else 'one'} ground end)")
+            half = (n_wings + 1) // 2
+            return (tuple(range(half)), tuple(range(half, n_wings)))
+        raise ValueError(f"groups = {groups!r}: must be one of {GROUPINGS} or a list of wing index lists")
+    try:
+        out = tuple(tuple(int(k) for k in g) for g in groups)
+    except TypeError:
+        raise ValueError(f"groups = {groups!r}: must be one of {GROUPINGS} or a list of wing index lists") from None
+    flat = sorted(k for g in out for k in g)
+    if any(len(g) == 0 for g in out) or flat != list(range(n_wings)):
+        raise ValueError(f"groups = {groups!r}: every wing 0..{n_wings - 1} must appear in exactly one non-empty group")
+    return out
+
+
+class ElevatorFromAlpha:
+    """Static map from a commanded angle of attack to the elevator angle that trims it, for one wing type.
+
+    The map is the pitch-moment balance of :func:`laddermill_gym.statics.pitch_trim_alpha` (no weight):
+    a wing at rest in horizontal wind (pitch angle = alpha) has no pitching moment about its cable
+    attachment point,
+
+        Cm(alpha) + Cmde(alpha) de + [a_z X(alpha, de) - a_x Z(alpha, de)] / c = 0,
+        X = CL sin(alpha) - CD cos(alpha),  Z = -CL cos(alpha) - CD sin(alpha),  CL = CL(alpha) + CLde(alpha) de,
+
+    with (a_x, a_z) the aerodynamic reference point seen from the attachment point [m] and c the chord [m].
+    The balance is linear in the elevator de, so de(alpha) is solved in closed form on a 0.05 deg grid from
+    -30 to 30 deg. The usable range is the interval of alpha around ``alpha_centre`` [rad] on which de(alpha)
+    lies within the elevator limits.
+    """
+
+    def __init__(self, wing_type: WingType, alpha_centre: float):
+        grid = np.radians(np.arange(-30.0, 30.0 + 1e-9, 0.05))
+        spline = CubicSpline(wing_type.aero.alpha, wing_type.aero.values, bc_type="periodic", axis=0)
+        c = spline(grid)
+        cl, cd, cm = c[:, AERO_INDEX["CL"]], c[:, AERO_INDEX["CD"]], c[:, AERO_INDEX["Cm"]]
+        cl_de, cm_de = c[:, AERO_INDEX["CLde"]], c[:, AERO_INDEX["Cmde"]]
+        ax = wing_type.r_ref[0] - wing_type.attachment[0]
+        az = wing_type.r_ref[2] - wing_type.attachment[2]
+        sa, ca = np.sin(grid), np.cos(grid)
+        # moment coefficient about the attachment point = m0 + m_de * de
+        m0 = cm + (az * (cl * sa - cd * ca) - ax * (-cl * ca - cd * sa)) / wing_type.chord
+        m_de = cm_de + (az * cl_de * sa + ax * cl_de * ca) / wing_type.chord
+        with np.errstate(divide="ignore", invalid="ignore"):
+            de = -m0 / m_de
+        lo, hi = wing_type.control_limits[0]
+        ok = np.isfinite(de) & (de >= lo) & (de <= hi)
+        i0 = int(np.argmin(np.abs(grid - alpha_centre)))
+        if not ok[i0]:
+            raise ValueError(f"wing type {wing_type.name!r}: no elevator within [{math.degrees(lo):.3g}, "
+                             f"{math.degrees(hi):.3g}] deg trims alpha = {math.degrees(alpha_centre):.3g} deg")
+        i_lo, i_hi = i0, i0
+        while i_lo > 0 and ok[i_lo - 1]:
+            i_lo -= 1
+        while i_hi < grid.size - 1 and ok[i_hi + 1]:
+            i_hi += 1
+        self.alpha_grid = grid[i_lo: i_hi + 1]
+        self.elevator_grid = de[i_lo: i_hi + 1]
+
+    @property
+    def alpha_range(self) -> tuple[float, float]:
+        """Angles of attack [rad] the map covers (low, high)."""
+        return float(self.alpha_grid[0]), float(self.alpha_grid[-1])
+
+    def __call__(self, alpha):
+        """Elevator angle(s) [rad] trimming the given angle(s) of attack [rad] (held at the range ends)."""
+        return np.interp(alpha, self.alpha_grid, self.elevator_grid)
+
+
+@dataclass(frozen=True)
+class ActionLayout:
+    """Names and physical ranges of the action entries (n_actions = 3 n_groups).
+
+    names : labels like ``'group 0 elevator [rad]'``; low, high : physical value at a = -1 and a = +1
+    (the range of the group's first wing for tail surfaces) [rad].
+    """
+
+    names: tuple[str, ...]
+    low: np.ndarray
+    high: np.ndarray
+
+
+class ActionMap:
+    """Maps a normalised action (3 n_groups,) in [-1, 1] to the controls (3 n_wings,) [rad] of a simulator.
+
+    Parameters
+    ----------
+    assembly : Assembly
+    groups : tuple of tuples of int
+        Wing indices per group (see :func:`resolve_groups`).
+    mode : "tail" or "alpha"
+    nominal_controls : ndarray, shape (3 n_wings,)
+        Equilibrium controls [rad]; the nominal action reproduces them (see Notes).
+    nominal_alpha : ndarray, shape (n_wings,)
+        Equilibrium angles of attack [rad] (used by the alpha mode).
+    control_dt : float
+        Control period [s] (for the servo lag).
+    alpha_servo_tau : float
+        Time constant [s] of the first-order lag between commanded and realised angle of attack
+        (alpha mode); 0 = ideal servo.
+
+    Notes
+    -----
+    Alpha mode: for group g with nominal command alpha_g (mean equilibrium alpha of its wings), wing k's
+    elevator is ``de_k = E(alpha_s) + (de_k_eq - E(alpha_g))`` clipped to its limits, where E is the wing
+    type's :class:`ElevatorFromAlpha` and alpha_s the realised command, which follows the commanded
+    alpha_c as ``alpha_s += (1 - exp(-control_dt / tau)) (alpha_c - alpha_s)`` once per control period
+    (exact for a command held over the period). The offset anchors the static map at the equilibrium,
+    so the nominal action gives exactly the equilibrium controls.
+    """
+
+    def __init__(self, assembly: Assembly, groups, mode: str, nominal_controls: np.ndarray,
+                 nominal_alpha: np.ndarray, control_dt: float, alpha_servo_tau: float = 0.0):
+        if mode not in ACTION_MODES:
+            raise ValueError(f"action_mode = {mode!r}: must be one of {ACTION_MODES}")
+        if not (alpha_servo_tau >= 0.0 and math.isfinite(alpha_servo_tau)):
+            raise ValueError(f"alpha_servo_tau = {alpha_servo_tau!r}: must be a finite number >= 0 s")
+        self.mode = mode
+        self.groups = tuple(tuple(g) for g in groups)
+        n_wings = assembly.n_wings
+        self.n_wings = n_wings
+        limits = np.array([assembly.wing(k).control_limits for k in range(n_wings)])  # (n, 3, 2)
+        self._mid = 0.5 * (limits[:, :, 0] + limits[:, :, 1])
+        self._half = 0.5 * (limits[:, :, 1] - limits[:, :, 0])
+        self._lo, self._hi = limits[:, :, 0], limits[:, :, 1]
+        self._group_of = np.zeros(n_wings, dtype=np.int64)
+        for g, members in enumerate(self.groups):
+            self._group_of[list(members)] = g
+        u_eq = np.asarray(nominal_controls, dtype=float).reshape(n_wings, N_CONTROLS)
+        self.servo_gain = 1.0 if alpha_servo_tau == 0.0 else 1.0 - math.exp(-control_dt / alpha_servo_tau)
+        names, low, high = [], [], []
+        nominal = np.zeros((len(self.groups), N_CONTROLS))
+        for g, members in enumerate(self.groups):
+            k0 = members[0]
+            for j in range(N_CONTROLS):
+                nominal[g, j] = np.mean((u_eq[list(members), j] - self._mid[list(members), j])
+                                        / self._half[list(members), j])
+                names.append(f"group {g} {CONTROL_NAMES[j]} [rad]")
+                low.append(self._lo[k0, j])
+                high.append(self._hi[k0, j])
+        if mode == "alpha":
+            maps: dict[int, ElevatorFromAlpha] = {}
+            self._alpha_lo = np.zeros(len(self.groups))
+            self._alpha_hi = np.zeros(len(self.groups))
+            self._nominal_alpha = np.zeros(len(self.groups))
+            self._elevator_offset = np.zeros(n_wings)
+            self._maps = []
+            for g, members in enumerate(self.groups):
+                alpha_g = float(np.mean(np.asarray(nominal_alpha)[list(members)]))
+                lo, hi = -math.inf, math.inf
+                for k in members:
+                    ti = int(assembly.wing_type_index[k])
+                    if ti not in maps:
+                        maps[ti] = ElevatorFromAlpha(assembly.wing(k), alpha_g)
+                    lo = max(lo, maps[ti].alpha_range[0])
+                    hi = min(hi, maps[ti].alpha_range[1])
+                    self._elevator_offset[k] = u_eq[k, 0] - float(maps[ti](alpha_g))
+                self._alpha_lo[g], self._alpha_hi[g] = lo, hi
+                self._nominal_alpha[g] = alpha_g
+                nominal[g, 0] = (alpha_g - 0.5 * (lo + hi)) / (0.5 * (hi - lo))
+                names[N_CONTROLS * g] = f"group {g} alpha [rad]"
+                low[N_CONTROLS * g], high[N_CONTROLS * g] = lo, hi
+            types = np.asarray(assembly.wing_type_index, dtype=np.int64)
+            self._maps = [(maps[ti], np.flatnonzero(types == ti)) for ti in sorted(maps)]
+        self.layout = ActionLayout(names=tuple(names), low=np.array(low), high=np.array(high))
+        self.nominal_action = np.clip(nominal.reshape(-1), -1.0, 1.0)
+        self.reset()
+
+    @property
+    def n_actions(self) -> int:
+        return N_CONTROLS * len(self.groups)
+
+    def reset(self) -> None:
+        """Put the servo (alpha mode) back at the nominal command."""
+        if self.mode == "alpha":
+            self.alpha_servo = self._nominal_alpha.copy()
+
+    def controls(self, action: np.ndarray) -> np.ndarray:
+        """Controls (3 n_wings,) [rad] for a normalised action (3 n_groups,) already within [-1, 1].
+
+        In alpha mode this advances the servo by one control period."""
+        per_group = np.asarray(action, dtype=float).reshape(len(self.groups), N_CONTROLS)
+        u = self._mid + per_group[self._group_of] * self._half  # (n_wings, 3)
+        if self.mode == "alpha":
+            cmd = 0.5 * (self._alpha_lo + self._alpha_hi) + per_group[:, 0] * 0.5 * (self._alpha_hi - self._alpha_lo)
+            self.alpha_servo = self.alpha_servo + self.servo_gain * (cmd - self.alpha_servo)
+            realised = self.alpha_servo[self._group_of]
+            for elevator_map, wings in self._maps:
+                u[wings, 0] = elevator_map(realised[wings]) + self._elevator_offset[wings]
+        return np.clip(u, self._lo, self._hi).reshape(-1)
