@@ -24,6 +24,10 @@ __all__ = [
 ]
 __version__ = "0.1.0"
 
+from .envs import register_envs as _register_envs  # noqa: E402
+
+_register_envs()
+
 
 def load_scene(name_or_path, **overrides):
     """Load a scene by name (configs/scenes/NAME.yaml) or path; see :func:`laddermill_gym.scene.load_scene`."""

@@ -68,6 +68,13 @@ def cmd_bench(args) -> int:
     return 0
 
 
+def cmd_bench_envs(args) -> int:
+    from .env_benchmark import run_env_benchmark
+
+    run_env_benchmark(quick=args.quick, json_path=args.json)
+    return 0
+
+
 def cmd_scenes(args) -> int:
     from .scene import available_scenes, load_scene
 
@@ -103,6 +110,10 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--quick", action="store_true", help="fewer repetitions (a smoke run)")
     b.add_argument("--scenes", nargs="*", default=None)
     b.set_defaults(func=cmd_bench)
+    e = sub.add_parser("bench-envs", help="env steps/s: native batched vector env vs SyncVectorEnv")
+    e.add_argument("--json", default=None, help="also write the figures as JSON to this file")
+    e.add_argument("--quick", action="store_true", help="fewer repetitions (a smoke run)")
+    e.set_defaults(func=cmd_bench_envs)
     c = sub.add_parser("scenes", help="list the scenes")
     c.set_defaults(func=cmd_scenes)
     return p

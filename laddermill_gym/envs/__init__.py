@@ -1,1 +1,40 @@
-"""Gymnasium environments of laddermill_gym: observation layout, action maps, tasks and vector envs."""
+"""Gymnasium environments of laddermill_gym.
+
+Registered on ``import laddermill_gym``:
+
+* ``laddermill_gym/TetheredWing-v0``: one wing on a 100 m tether (scene ``tethered_wing`` with one cable
+  element, one RK4 step of 0.05 s per 20 Hz control period, 300 s episodes, the paper's 0.01 rad direction step at 1 s);
+* ``laddermill_gym/LadderChain-v0``: the paper's 101-wing chain between two ground points (scene
+  ``ladder_chain``, its own RK4 step, 20 Hz control, 120 s episodes), per-wing actions by default.
+
+Both have a native batched ``vector_entry_point`` (:class:`~laddermill_gym.envs.vector.WingVectorEnv`):
+``gymnasium.make_vec(id, num_envs=n, vectorization_mode="vector_entry_point")``.
+"""
+
+from .disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
+from .task import FAILURES, RewardConfig, TerminationConfig, WingTask
+from .vector import WingVectorEnv
+from .wing_env import WingEnv
+
+__all__ = ["DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule", "FAILURES", "RewardConfig",
+           "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "ENV_IDS", "register_envs"]
+
+#: Registered environment ids and their default arguments (units: seconds).
+ENV_IDS: dict[str, dict] = {
+    "laddermill_gym/TetheredWing-v0": dict(scene="tethered_wing", scene_options={"elements_per_piece": 1},
+                                           physics_dt=0.05, control_dt=0.05, episode_time=300.0),
+    "laddermill_gym/LadderChain-v0": dict(scene="ladder_chain", control_dt=0.05, episode_time=120.0,
+                                          groups="per_wing"),
+}
+
+
+def register_envs() -> None:
+    """Register :data:`ENV_IDS` with Gymnasium (idempotent)."""
+    import gymnasium as gym
+
+    for env_id, kwargs in ENV_IDS.items():
+        if env_id in gym.registry:
+            continue
+        gym.register(id=env_id, entry_point="laddermill_gym.envs.wing_env:WingEnv",
+                     vector_entry_point="laddermill_gym.envs.vector:WingVectorEnv", kwargs=kwargs,
+                     disable_env_checker=False)

@@ -123,7 +123,7 @@ class ActionLayout:
 
 
 class ActionMap:
-    """Maps a normalised action (3 n_groups,) in [-1, 1] to the controls (3 n_wings,) [rad] of a simulator.
+    """Maps normalised actions (B, 3 n_groups) in [-1, 1] to the controls (B, 3 n_wings) [rad] of B copies.
 
     Parameters
     ----------
@@ -206,27 +206,34 @@ class ActionMap:
             self._maps = [(maps[ti], np.flatnonzero(types == ti)) for ti in sorted(maps)]
         self.layout = ActionLayout(names=tuple(names), low=np.array(low), high=np.array(high))
         self.nominal_action = np.clip(nominal.reshape(-1), -1.0, 1.0)
+        self.alpha_servo = None
         self.reset()
 
     @property
     def n_actions(self) -> int:
         return N_CONTROLS * len(self.groups)
 
-    def reset(self) -> None:
-        """Put the servo (alpha mode) back at the nominal command."""
-        if self.mode == "alpha":
-            self.alpha_servo = self._nominal_alpha.copy()
+    def reset(self, n_copies: int = 1, mask: np.ndarray | None = None) -> None:
+        """Put the servo (alpha mode) of all ``n_copies`` copies, or of the copies in the boolean ``mask``
+        (B,), back at the nominal command."""
+        if self.mode != "alpha":
+            return
+        if mask is None or getattr(self, "alpha_servo", None) is None or len(self.alpha_servo) != len(mask):
+            self.alpha_servo = np.tile(self._nominal_alpha, (n_copies if mask is None else len(mask), 1))
+        else:
+            self.alpha_servo[mask] = self._nominal_alpha
 
     def controls(self, action: np.ndarray) -> np.ndarray:
-        """Controls (3 n_wings,) [rad] for a normalised action (3 n_groups,) already within [-1, 1].
+        """Controls (B, 3 n_wings) [rad] for normalised actions (B, 3 n_groups) already within [-1, 1].
 
-        In alpha mode this advances the servo by one control period."""
-        per_group = np.asarray(action, dtype=float).reshape(len(self.groups), N_CONTROLS)
-        u = self._mid + per_group[self._group_of] * self._half  # (n_wings, 3)
+        In alpha mode this advances each copy's servo by one control period (B must match the servo's)."""
+        per_group = np.asarray(action, dtype=float).reshape(-1, len(self.groups), N_CONTROLS)
+        u = self._mid + per_group[:, self._group_of] * self._half  # (B, n_wings, 3)
         if self.mode == "alpha":
-            cmd = 0.5 * (self._alpha_lo + self._alpha_hi) + per_group[:, 0] * 0.5 * (self._alpha_hi - self._alpha_lo)
+            cmd = (0.5 * (self._alpha_lo + self._alpha_hi)
+                   + per_group[:, :, 0] * 0.5 * (self._alpha_hi - self._alpha_lo))  # (B, n_groups)
             self.alpha_servo = self.alpha_servo + self.servo_gain * (cmd - self.alpha_servo)
-            realised = self.alpha_servo[self._group_of]
+            realised = self.alpha_servo[:, self._group_of]  # (B, n_wings)
             for elevator_map, wings in self._maps:
-                u[wings, 0] = elevator_map(realised[wings]) + self._elevator_offset[wings]
-        return np.clip(u, self._lo, self._hi).reshape(-1)
+                u[:, wings, 0] = elevator_map(realised[:, wings]) + self._elevator_offset[wings]
+        return np.clip(u, self._lo, self._hi).reshape(len(u), -1)

@@ -1,0 +1,104 @@
+"""3D pictures of a task copy with matplotlib: each wing as its span and body axis, the cable elements as
+lines, the ground points as markers. Axes: x north (upwind), y east, altitude up [m]."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..params import END_FIXED, END_NODE, END_WING
+from .observation import _rotation_from_quaternions
+
+
+class SceneRenderer:
+    """Draws copy ``b`` of a :class:`~laddermill_gym.envs.task.WingTask` into an RGB array (H, W, 3) uint8, or
+    into a window (``interactive=True``, the ``human`` render mode)."""
+
+    def __init__(self, task, interactive: bool = False, size_px: tuple[int, int] = (640, 480)):
+        import matplotlib
+
+        if not interactive:
+            from matplotlib.backends.backend_agg import FigureCanvasAgg
+            from matplotlib.figure import Figure
+
+            self.fig = Figure(figsize=(size_px[0] / 80, size_px[1] / 80), dpi=80)
+            FigureCanvasAgg(self.fig)
+            self._plt = None
+        else:
+            import matplotlib.pyplot as plt
+
+            if matplotlib.get_backend().lower() in ("agg", "pdf", "svg", "ps", "cairo", "template"):
+                from gymnasium import logger
+
+                logger.warn(f"render_mode='human': matplotlib backend {matplotlib.get_backend()!r} cannot open a "
+                            "window; frames are drawn but not shown (set MPLBACKEND, e.g. TkAgg or QtAgg)")
+            plt.ion()
+            self.fig = plt.figure(figsize=(size_px[0] / 80, size_px[1] / 80), dpi=80)
+            self._plt = plt
+        self.ax = self.fig.add_subplot(projection="3d")
+        self.task = task
+        asm = task.scene.assembly
+        self.asm = asm
+        # fixed view box around the nominal configuration
+        nodes = task.x_trim[13 * asm.n_wings:].reshape(-1, 6)[:, 0:3] if asm.n_nodes else np.zeros((0, 3))
+        pts = np.vstack([task.nominal, nodes, asm.fixed_points])
+        lo, hi = pts.min(axis=0), pts.max(axis=0)
+        pad = 0.15 * float(np.max(hi - lo)) + max(w.span for w in asm.wing_types)
+        self.box = (lo - pad, hi + pad)
+
+    def _geometry(self, b: int):
+        asm = self.asm
+        x = self.task.batch.states[b]
+        nw = asm.n_wings
+        w = x[: 13 * nw].reshape(nw, 13)
+        pos = w[:, 0:3]
+        rot = _rotation_from_quaternions(w[:, 3:7])
+        nodes = x[13 * nw: 13 * nw + 6 * asm.n_nodes].reshape(-1, 6)[:, 0:3]
+        el = asm.elements
+
+        def end_point(e, r):
+            kind, idx = el.end_kind[e, r], el.end_index[e, r]
+            if kind == END_WING:
+                return pos[idx] + rot[idx] @ el.attach[e, r]
+            if kind == END_NODE:
+                return nodes[idx]
+            assert kind == END_FIXED
+            return asm.fixed_points[idx]
+
+        segments = [(end_point(e, 0), end_point(e, 1)) for e in range(el.count)]
+        return pos, rot, segments
+
+    def draw(self, b: int = 0):
+        """Redraw copy ``b``; returns the RGB frame (H, W, 3) uint8 (or None in interactive mode)."""
+        ax = self.ax
+        ax.cla()
+        pos, rot, segments = self._geometry(b)
+        up = np.array([1.0, 1.0, -1.0])  # plot altitude = -z
+        for p, q in segments:
+            seg = np.array([p, q]) * up
+            ax.plot(seg[:, 0], seg[:, 1], seg[:, 2], color="0.35", lw=1.0)
+        for k in range(len(pos)):
+            wt = self.asm.wing(k)
+            half = 0.5 * wt.span
+            span = np.array([pos[k] - half * rot[k][:, 1], pos[k] + half * rot[k][:, 1]]) * up
+            body = np.array([pos[k] + wt.chord * rot[k][:, 0], pos[k] - 3.0 * wt.chord * rot[k][:, 0]]) * up
+            ax.plot(span[:, 0], span[:, 1], span[:, 2], color="tab:blue", lw=2.0)
+            ax.plot(body[:, 0], body[:, 1], body[:, 2], color="tab:red", lw=1.5)
+        fp = self.asm.fixed_points * up
+        ax.scatter(fp[:, 0], fp[:, 1], fp[:, 2], color="k", marker="^", s=30)
+        lo, hi = self.box
+        ax.set_xlim(lo[0], hi[0])
+        ax.set_ylim(lo[1] - 0.5 * (hi[0] - lo[0]), hi[1] + 0.5 * (hi[0] - lo[0]))
+        ax.set_zlim(max(0.0, -hi[2]), -lo[2])
+        ax.set_xlabel("x north [m]")
+        ax.set_ylabel("y east [m]")
+        ax.set_zlabel("altitude [m]")
+        ax.set_title(f"{self.task.scene.name}  t = {self.task.batch.t[b]:6.2f} s")
+        self.fig.canvas.draw()
+        if self._plt is not None:
+            self._plt.pause(1e-3)
+            return None
+        return np.asarray(self.fig.canvas.buffer_rgba())[:, :, :3].copy()
+
+    def close(self) -> None:
+        if self._plt is not None:
+            self._plt.close(self.fig)

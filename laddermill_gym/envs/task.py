@@ -1,0 +1,365 @@
+"""The wing task shared by the single and the vector environments: B copies of a scene stepped by one compiled
+kernel, with actions, observations, rewards, terminations and wind disturbances composed around it.
+
+A single environment is the task with B = 1, so single and vector environments run the same code and agree
+bit for bit (tests/test_envs.py checks it).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from ..batch import BatchSimulator
+from ..kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
+from ..kernels.observe import (
+    AUX_GROUND_END,
+    AUX_GROUND_START,
+    AUX_MAX_TENSION,
+    AUX_MIN_ALTITUDE,
+    N_AUX,
+    step_observe_batch,
+    step_observe_serial,
+)
+from ..packing import KWork, make_workspace
+from ..scene import Scene, load_scene
+from .actions import ActionMap, resolve_groups
+from .disturbances import DirectionStep, Disturbance, sample_modulation
+from .observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
+
+__all__ = ["RewardConfig", "TerminationConfig", "WingTask", "FAILURES", "scene_trim"]
+
+#: Termination causes (code -> name); code 0 means the copy is still flying.
+FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state, speed or rate limit, singular mass)",
+                            2: "ground contact", 3: "cable over its breaking load", 4: "aerodynamic range exceeded"}
+_STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit"}
+
+
+@dataclass(frozen=True)
+class RewardConfig:
+    """Reward per control period: r = w_P P / P_ref - w_y S(dy) - w_w S(rates) - w_u S(effort).
+
+    P is the power a ground generator would take in with the cable reeled out at ``v_reel``:
+    P = T_ground v_reel (Lansdorp et al. 2008: P = T dL/dt) for a single tether, and
+    P = (T_start - T_end) v_reel for a chain between two ground points (the net pull on an endless cable
+    through a generator at the start point). v_reel = ``reel_speed_fraction`` x the scene's wind speed v0;
+    1/3 is Loyd's (1980) optimum for crosswind-free pulling. P_ref is P at the trim in the undisturbed
+    wind, so the power term is 1 at the nominal operating point.
+
+    Penalties saturate, S(x) = 1 - exp(-x), so a step's reward is at least w_P P/P_ref - (w_y + w_w + w_u)
+    and flying on is always worth more than a crash while the weights sum to less than w_P:
+
+    * S(dy): x = mean over wings of (dy / lateral_scale)^2, dy the lateral CG offset [m];
+      lateral_scale [m] defaults to 5 % of the cable piece length;
+    * S(rates): x = mean over wings of (p^2 + r^2) / rate_scale^2 [rad/s];
+    * S(effort): x = mean of (a - a_nominal)^2 over the normalised action entries.
+    """
+
+    power_weight: float = 1.0
+    lateral_weight: float = 0.3
+    lateral_scale: float | None = None
+    rate_weight: float = 0.1
+    rate_scale: float = 0.5
+    effort_weight: float = 0.1
+    reel_speed_fraction: float = 1.0 / 3.0
+
+    def __post_init__(self):
+        for f in dataclasses.fields(self):
+            v = getattr(self, f.name)
+            if v is None and f.name == "lateral_scale":
+                continue
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
+                raise ValueError(f"reward.{f.name} = {v!r}: must be a finite number >= 0")
+        for name in ("rate_scale", "reel_speed_fraction"):
+            if getattr(self, name) <= 0:
+                raise ValueError(f"reward.{name} = {getattr(self, name)!r}: must be > 0")
+        if self.lateral_scale is not None and self.lateral_scale <= 0:
+            raise ValueError(f"reward.lateral_scale = {self.lateral_scale!r}: must be > 0 m")
+
+
+@dataclass(frozen=True)
+class TerminationConfig:
+    """When an episode ends as a physical failure (``terminated``).
+
+    min_altitude [m]: a wing CG below it counts as ground contact; default half the wing span (a wing rolled
+    to 90 deg at that height touches the ground with a tip).
+    breaking_factor [-]: the cable fails when an element's tension exceeds this times its breaking load.
+    alpha_range_deg [deg], max_abs_beta_deg [deg]: the quasi-steady aerodynamic model is left "by far"
+    (deep stall or reversed flow; the attached-flow range of the default wing is about -10 to 15 deg).
+    """
+
+    min_altitude: float | None = None
+    breaking_factor: float = 1.0
+    alpha_range_deg: tuple[float, float] = (-30.0, 60.0)
+    max_abs_beta_deg: float = 60.0
+
+    def __post_init__(self):
+        lo, hi = self.alpha_range_deg
+        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+            raise ValueError(f"termination.alpha_range_deg = {self.alpha_range_deg!r}: need finite low < high")
+        if not (self.max_abs_beta_deg > 0 and self.breaking_factor > 0):
+            raise ValueError(f"termination: max_abs_beta_deg = {self.max_abs_beta_deg!r} and breaking_factor = "
+                             f"{self.breaking_factor!r} must be > 0")
+        if self.min_altitude is not None and not math.isfinite(self.min_altitude):
+            raise ValueError(f"termination.min_altitude = {self.min_altitude!r}: must be finite")
+
+
+def _config(value, cls, name):
+    if value is None:
+        return cls()
+    if isinstance(value, cls):
+        return value
+    if isinstance(value, dict):
+        known = {f.name for f in dataclasses.fields(cls)}
+        bad = sorted(set(value) - known)
+        if bad:
+            raise ValueError(f"{name}: unknown key(s) {bad}; known: {sorted(known)}")
+        return cls(**value)
+    raise ValueError(f"{name} = {value!r}: must be a dict or a {cls.__name__}")
+
+
+@lru_cache(maxsize=16)
+def scene_trim(scene: str, options: tuple) -> tuple[Scene, np.ndarray, np.ndarray]:
+    """(scene, x_trim, u_trim) of a scene name or path with ``load_scene`` overrides ``options`` (a sorted
+    tuple of (key, value) pairs); cached, because every copy of a sync vector env would otherwise trim
+    the same scene again."""
+    sc = load_scene(scene, **dict(options))
+    x, u = sc.initial_state()
+    x.setflags(write=False)
+    u.setflags(write=False)
+    return sc, x, u
+
+
+class WingTask:
+    """B copies of a wing scene as an RL task.
+
+    Parameters
+    ----------
+    n_copies : int
+        B.
+    scene : str
+        Scene name (configs/scenes/NAME.yaml) or path; 3D scenes only.
+    scene_options : dict, optional
+        Overrides passed to :func:`laddermill_gym.scene.load_scene` (e.g. ``elements_per_piece``).
+    control_dt : float
+        Control period [s]; the action is held over it.
+    physics_dt : float, optional
+        RK4 step [s] (default: the scene's); must divide ``control_dt``.
+    action_mode : "tail" or "alpha"
+        See :mod:`laddermill_gym.envs.actions`.
+    groups : "per_wing", "all", "halves" or a list of wing index lists
+        Wings sharing one command.
+    alpha_servo_tau : float
+        First-order servo time constant [s] of the alpha mode (0 = ideal).
+    episode_time : float
+        Episode length [s]; ``truncated`` when it is reached.
+    disturbances : sequence of Disturbance
+        Wind disturbances composed per episode (default: the paper's 0.01 rad direction step at 1 s).
+    wind_dt : float
+        Spacing [s] of the sampled wind modulation.
+    reward, termination : dict or RewardConfig / TerminationConfig
+    parallel : bool, optional
+        Step the copies on numba's thread pool (default: when B >= 32); small batches run faster on one
+        thread.
+    """
+
+    def __init__(self, n_copies: int = 1, scene: str = "tethered_wing", scene_options: dict | None = None,
+                 control_dt: float = 0.05, physics_dt: float | None = None, action_mode: str = "tail",
+                 groups="per_wing", alpha_servo_tau: float = 0.0, episode_time: float = 300.0,
+                 disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
+                 parallel: bool | None = None):
+        for name, v in (("control_dt", control_dt), ("episode_time", episode_time), ("wind_dt", wind_dt)):
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+                raise ValueError(f"{name} = {v!r}: must be a finite number > 0 s")
+        options = dict(scene_options or {})
+        if physics_dt is not None:
+            options["dt"] = physics_dt
+        self.scene, x_trim, u_trim = scene_trim(str(scene), tuple(sorted(options.items())))
+        sc = self.scene
+        asm = sc.assembly
+        if asm.dim != 3:
+            raise ValueError(f"scene {sc.name}: the environments need a 3D scene (dimension = {asm.dim})")
+        if sc.settings.method != "rk4":
+            raise ValueError(f"scene {sc.name}: integrator.method = {sc.settings.method!r}; environments step with rk4")
+        dt = sc.settings.dt
+        self.n_substeps = int(round(control_dt / dt))
+        if self.n_substeps < 1 or abs(self.n_substeps * dt - control_dt) > 1e-9 * control_dt:
+            raise ValueError(f"control_dt = {control_dt!r} s is not a whole multiple of the physics step {dt!r} s")
+        self.control_dt = float(control_dt)
+        self.episode_time = float(episode_time)
+        self.n_steps_max = int(round(episode_time / control_dt))
+        self.wind_dt = float(wind_dt)
+        self.disturbances = (DirectionStep(),) if disturbances is None else tuple(disturbances)
+        for d in self.disturbances:
+            if not isinstance(d, Disturbance):
+                raise ValueError(f"disturbances: {d!r} is not a laddermill_gym.envs.disturbances.Disturbance")
+        self.reward_config = _config(reward, RewardConfig, "reward")
+        self.termination_config = _config(termination, TerminationConfig, "termination")
+        self.x_trim, self.u_trim = x_trim, u_trim
+        nw = asm.n_wings
+        self.n_wings = nw
+        self.n_copies = int(n_copies)
+        self.parallel = self.n_copies >= 32 if parallel is None else bool(parallel)
+        self._kernel = step_observe_batch if self.parallel else step_observe_serial
+        n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
+        self.batch = BatchSimulator(asm, self.n_copies, sc.settings, n_modulation=max(2, n_mod))
+        B = self.n_copies
+        self.nominal = np.ascontiguousarray(x_trim[: 13 * nw].reshape(nw, 13)[:, 0:3])
+        lay = sc.layout
+        self.below = np.array([lay.piece_elements[k][-1] for k in range(nw)], dtype=np.int64)
+        two_ended = sc.end is not None
+        self.ground = np.array([lay.piece_elements[0][0], lay.piece_elements[-1][-1] if two_ended else -1],
+                               dtype=np.int64)
+        self.obs_dim = N_OBS_PER_WING * nw
+        self.obs = np.zeros((B, self.obs_dim))
+        self.aux = np.zeros((B, N_AUX))
+        self._dx = np.zeros((B, asm.state_size))
+        self._nsteps = np.zeros(B, dtype=np.int64)
+        self.steps = np.zeros(B, dtype=np.int64)
+        self.obs_low, self.obs_high = observation_bounds(sc)
+        # trim observation: nominal alpha per wing and the reference power
+        one = WingTask._observe_state(self, x_trim, u_trim)
+        alpha_trim = one[0].reshape(nw, N_OBS_PER_WING)[:, OBS_INDEX["alpha"]]
+        self.alpha_trim = alpha_trim
+        rc = self.reward_config
+        self.v_reel = rc.reel_speed_fraction * asm.wind.v0
+        self.p_ref = float((one[1][AUX_GROUND_START] - one[1][AUX_GROUND_END]) * self.v_reel)
+        if not self.p_ref > 0:
+            raise ValueError(f"scene {sc.name}: the trim gives no positive reference power ({self.p_ref:.4g} W)")
+        self.lateral_scale = rc.lateral_scale if rc.lateral_scale is not None else 0.05 * sc.piece_length
+        tc = self.termination_config
+        self.min_altitude = tc.min_altitude if tc.min_altitude is not None else 0.5 * min(
+            w.span for w in asm.wing_types)
+        self.breaking_tension = tc.breaking_factor * sc.cable.breaking_load
+        self.alpha_lo, self.alpha_hi = np.radians(tc.alpha_range_deg)
+        self.beta_max = math.radians(tc.max_abs_beta_deg)
+        self.actions = ActionMap(asm, resolve_groups(groups, nw, two_ended), action_mode, u_trim, alpha_trim,
+                                 self.control_dt, alpha_servo_tau)
+        self.actions.reset(B)
+        self.n_actions = self.actions.n_actions
+        self.last_action = np.tile(self.actions.nominal_action, (B, 1))
+
+    # ------------------------------------------------------------------ kernels
+    def _run(self, nsteps: np.ndarray) -> None:
+        b = self.batch
+        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, b.model, b.work, b.tmod, b.mod_speed,
+                           b.mod_direction, b._sag, b._caero, b._limits, self._dx, self.nominal, self.below,
+                           self.ground, self.obs, self.aux, b.status, b.done)
+        b.t += b.done * b.settings.dt
+
+    def _observe_state(self, x: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(obs row, aux row) of one state in the undisturbed wind, without touching the copies."""
+        asm = self.scene.assembly
+        from ..packing import pack_model
+
+        work = make_workspace(asm)
+        wb = KWork(*[a[None].copy() for a in work])
+        obs, aux = np.zeros((1, self.obs_dim)), np.zeros((1, N_AUX))
+        step_observe_serial(np.zeros(1), np.array(x, dtype=float)[None].copy(), np.array(u, dtype=float)[None].copy(),
+                           self.scene.settings.dt, np.zeros(1, dtype=np.int64), pack_model(asm), wb,
+                           np.array([[0.0, 1.0]]), np.ones((1, 2)), np.zeros((1, 2)), self.batch._sag,
+                           self.batch._caero, self.batch._limits, np.zeros((1, asm.state_size)), self.nominal,
+                           self.below, self.ground, obs, aux, np.zeros(1, dtype=np.int64), np.zeros(1, dtype=np.int64))
+        return obs[0], aux[0]
+
+    # ------------------------------------------------------------------ episodes
+    def reset(self, mask: np.ndarray, rngs) -> None:
+        """Start new episodes in the copies selected by the boolean ``mask`` (B,): trim state and controls,
+        t = 0, a fresh wind disturbance drawn with ``rngs[b]`` (a numpy Generator per copy), and observe them.
+        Other copies are untouched."""
+        b = self.batch
+        idx = np.flatnonzero(mask)
+        for i in idx:
+            speed, direction = sample_modulation(self.disturbances, self.episode_time, self.wind_dt, rngs[i])
+            b.set_wind(int(i), 0.0, self.wind_dt, speed, direction)
+        b.states[idx] = self.x_trim
+        b.controls[idx] = self.u_trim
+        b.t[idx] = 0.0
+        self.steps[idx] = 0
+        self.actions.reset(self.n_copies, mask)
+        self.last_action[idx] = self.actions.nominal_action
+        self._nsteps[:] = -1
+        self._nsteps[idx] = 0
+        self._run(self._nsteps)
+
+    def step(self, action: np.ndarray, mask: np.ndarray | None = None):
+        """Apply normalised actions (B, n_actions) for one control period to the copies in ``mask`` (default
+        all) and evaluate them.
+
+        Returns
+        -------
+        reward : (B,) float64;  terminated, truncated : (B,) bool;  info : dict of (B,) arrays (reward terms,
+        power [W], largest tension [N], lowest altitude [m], time [s], clipped action entries, failure code
+        (see :data:`FAILURES`)). Rows of copies outside ``mask`` are meaningless.
+        """
+        a = np.asarray(action, dtype=float).reshape(self.n_copies, self.n_actions)
+        if not np.all(np.isfinite(a)):
+            raise ValueError(f"action has non-finite entries: {a[~np.isfinite(a)][:4]}")
+        n_clipped = np.count_nonzero(np.abs(a) > 1.0, axis=1)
+        a = np.clip(a, -1.0, 1.0)
+        b = self.batch
+        sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
+        servo = None if self.actions.alpha_servo is None else self.actions.alpha_servo.copy()
+        u = self.actions.controls(a)
+        if servo is not None and mask is not None:  # copies outside the mask keep their servo state
+            self.actions.alpha_servo[~sel] = servo[~sel]
+        b.controls[sel] = u[sel]
+        self.last_action[sel] = a[sel]
+        self._nsteps[:] = -1
+        self._nsteps[sel] = self.n_substeps
+        self._run(self._nsteps)
+        self.steps[sel] += 1
+        return self._evaluate(a, n_clipped)
+
+    def _evaluate(self, a: np.ndarray, n_clipped: np.ndarray):
+        rc = self.reward_config
+        B, nw = self.n_copies, self.n_wings
+        o = self.obs.reshape(B, nw, N_OBS_PER_WING)
+        power = (self.aux[:, AUX_GROUND_START] - self.aux[:, AUX_GROUND_END]) * self.v_reel
+        lat = np.mean((o[:, :, OBS_INDEX["dy"]] / self.lateral_scale) ** 2, axis=1)
+        rates = np.mean((o[:, :, OBS_INDEX["p"]] ** 2 + o[:, :, OBS_INDEX["r"]] ** 2) / rc.rate_scale ** 2, axis=1)
+        effort = np.mean((a - self.actions.nominal_action) ** 2, axis=1)
+        terms = {
+            "reward_power": rc.power_weight * power / self.p_ref,
+            "reward_lateral": -rc.lateral_weight * -np.expm1(-lat),
+            "reward_rates": -rc.rate_weight * -np.expm1(-rates),
+            "reward_effort": -rc.effort_weight * -np.expm1(-effort),
+        }
+        reward = terms["reward_power"] + terms["reward_lateral"] + terms["reward_rates"] + terms["reward_effort"]
+        alpha = o[:, :, OBS_INDEX["alpha"]]
+        beta = o[:, :, OBS_INDEX["beta"]]
+        failure = np.zeros(B, dtype=np.int64)
+        failure[np.any((alpha < self.alpha_lo) | (alpha > self.alpha_hi) | (np.abs(beta) > self.beta_max), axis=1)] = 4
+        failure[self.aux[:, AUX_MAX_TENSION] > self.breaking_tension] = 3
+        failure[self.aux[:, AUX_MIN_ALTITUDE] < self.min_altitude] = 2
+        failure[self.batch.status != OK] = 1
+        terminated = failure != 0
+        truncated = (self.steps >= self.n_steps_max) & ~terminated
+        info = dict(terms)
+        info.update(power_W=power, max_tension_N=self.aux[:, AUX_MAX_TENSION].copy(),
+                    min_altitude_m=self.aux[:, AUX_MIN_ALTITUDE].copy(), t=self.batch.t.copy(),
+                    n_clipped=n_clipped, failure=failure)
+        return reward, terminated, truncated, info
+
+    def failure_text(self, b: int, code: int) -> str:
+        """A sentence on why copy ``b`` terminated (time, and the quantity)."""
+        if code == 0:
+            return ""
+        t = self.batch.t[b]
+        o = self.obs[b].reshape(self.n_wings, N_OBS_PER_WING)
+        if code == 1:
+            return f"t = {t:.2f} s: integration failed ({_STATUS_TEXT.get(int(self.batch.status[b]), 'unknown')})"
+        if code == 2:
+            k = int(np.argmin(-(o[:, OBS_INDEX['dz']] + self.nominal[:, 2])))
+            return f"t = {t:.2f} s: ground contact, wing {k} CG at {self.aux[b, AUX_MIN_ALTITUDE]:.2f} m altitude"
+        if code == 3:
+            tension = self.aux[b, AUX_MAX_TENSION]
+            return f"t = {t:.2f} s: cable tension {tension:.4g} N over {self.breaking_tension:.4g} N"
+        al, be = o[:, OBS_INDEX["alpha"]], o[:, OBS_INDEX["beta"]]
+        k = int(np.argmax(np.maximum(np.maximum(self.alpha_lo - al, al - self.alpha_hi), np.abs(be) - self.beta_max)))
+        return (f"t = {t:.2f} s: wing {k} alpha = {math.degrees(al[k]):.1f} deg, beta = {math.degrees(be[k]):.1f} deg "
+                "outside the aerodynamic range")
