@@ -80,6 +80,8 @@ class LQRConfig:
     max_state : ndarray (6,)      largest acceptable deviations of (y [m], vy [m/s], phi [rad], psi [rad],
                                   p [rad/s], r [rad/s]) (Bryson's rule)
     max_input : ndarray (2,)      largest acceptable (rudder, aileron) deflection from trim [rad]
+    structure : str               chains: "decentralised" (each wing's gain from its own lateral block) or
+                                  "centralised" (one gain on the full coupled lateral model)
     """
 
     file: Path
@@ -88,6 +90,10 @@ class LQRConfig:
     control_period: float
     max_state: np.ndarray
     max_input: np.ndarray
+    structure: str = "decentralised"
+
+
+STRUCTURES: tuple[str, ...] = ("decentralised", "centralised")
 
 
 def load_lqr_config(path: str | Path = DEFAULT_CONFIG) -> LQRConfig:
@@ -102,9 +108,10 @@ def load_lqr_config(path: str | Path = DEFAULT_CONFIG) -> LQRConfig:
     mi = s.section("max_input_deg")
     max_input = np.radians([mi.number(k, positive=True) for k in LATERAL_INPUT_NAMES])
     mi.done()
+    structure = s.text("structure", "decentralised", choices=STRUCTURES)
     s.done()
     return LQRConfig(file=Path(path), scene=scene, elements_per_piece=epp, control_period=period,
-                     max_state=max_state, max_input=max_input)
+                     max_state=max_state, max_input=max_input, structure=structure)
 
 
 def bryson_weights(max_state: np.ndarray, max_input: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -241,62 +248,86 @@ def design_tethered_wing(config: LQRConfig | str | Path = DEFAULT_CONFIG, scene:
 # ------------------------------------------------------------------------------------ chain
 @dataclass(frozen=True)
 class ChainDesign:
-    """Decentralised lateral LQR of a chain: one gain per wing from its own lateral block."""
+    """Lateral LQR of a chain, decentralised (one gain per wing from its own lateral block) or centralised
+    (one gain on the full coupled lateral model; every wing's commands use every wing's states).
+
+    A_blocks (n_wings, 6, 6), B_blocks (n_wings, 6, 2): each wing's own lateral block of the Jacobian;
+    gains: (n_wings, 2, 6) decentralised or (2 n_wings, 6 n_wings) centralised [rad per unit state];
+    closed_loop: discrete eigenvalues of the design model's closed loop (per-wing blocks (n_wings, 6), or the
+    full model (6 n_wings,)).
+    """
 
     config: LQRConfig
     scene: Scene
     x_trim: np.ndarray
     u_trim: np.ndarray
-    A_blocks: np.ndarray   # (n_wings, 6, 6)
-    B_blocks: np.ndarray   # (n_wings, 6, 2)
-    gains: np.ndarray      # (n_wings, 2, 6)
-    closed_loop: np.ndarray  # (n_wings, 6) discrete eigenvalues of each wing's own closed loop
+    A_blocks: np.ndarray
+    B_blocks: np.ndarray
+    gains: np.ndarray
+    closed_loop: np.ndarray
 
     def controller(self, action_dtype=np.float32) -> LQRController:
         return LQRController.from_gains(self.scene, self.x_trim, self.u_trim, self.gains, action_dtype)
 
 
+def _chain_lateral_model(sc: Scene, x: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Full lateral (A, B) of a chain at (x, u); raises if cable nodes add lateral states a controller of
+    the environments cannot observe."""
+    lin = linearize(sc.simulator(x, u), x, u)
+    A, B, _, _ = lateral_subsystem(lin)
+    if A.shape[0] != len(LATERAL_STATE_NAMES) * lin.n_wings:
+        raise ValueError(f"scene {sc.name}: the lateral model has {A.shape[0]} states, not 6 per wing: cable nodes "
+                         "between wings are not observed; use elements_per_piece = 1 for a centralised design")
+    return A, B
+
+
 def design_ladder_chain(config: LQRConfig | str | Path = DEFAULT_CHAIN_CONFIG, scene: Scene | None = None,
                         trim: tuple[np.ndarray, np.ndarray] | None = None) -> ChainDesign:
-    """Per-wing lateral LQR gains of a chain from the diagonal lateral blocks of its Jacobian.
+    """Lateral LQR of a chain (``config.structure``).
 
-    Only the 8 columns per wing that the blocks need are differentiated (:func:`wing_lateral_blocks`), so
-    the 101-wing chain costs about 1.6 thousand right-hand sides."""
+    Decentralised: per-wing gains from the diagonal lateral blocks; only the 8 columns per wing that the
+    blocks need are differentiated (:func:`wing_lateral_blocks`), about 1.6 thousand right-hand sides for
+    101 wings. Centralised: the Riccati equation of the full lateral model (606 states for 101 wings, about
+    20 s), with block-diagonal Bryson weights."""
     cfg = config if isinstance(config, LQRConfig) else load_lqr_config(config)
     sc = _scene_for(cfg, scene)
     x, u = trim if trim is not None else sc.initial_state()
     sim = sc.simulator(x, u)
     A_blocks, B_blocks = wing_lateral_blocks(sim, x, u)
     Q, R = bryson_weights(cfg.max_state, cfg.max_input)
-    gains, eigs = [], []
-    for A, B in zip(A_blocks, B_blocks, strict=True):
-        d = discrete_lqr(A, B, Q, R, cfg.control_period)
-        gains.append(d.K)
-        eigs.append(d.closed_loop)
+    if cfg.structure == "centralised":
+        A, B = _chain_lateral_model(sc, x, u)
+        nw = sc.assembly.n_wings
+        d = discrete_lqr(A, B, np.kron(np.eye(nw), Q), np.kron(np.eye(nw), R), cfg.control_period)
+        gains, eigs = d.K, d.closed_loop
+    else:
+        blocks = [discrete_lqr(A, B, Q, R, cfg.control_period) for A, B in zip(A_blocks, B_blocks, strict=True)]
+        gains, eigs = np.array([d.K for d in blocks]), np.array([d.closed_loop for d in blocks])
     return ChainDesign(config=cfg, scene=sc, x_trim=x, u_trim=u, A_blocks=A_blocks, B_blocks=B_blocks,
-                       gains=np.array(gains), closed_loop=np.array(eigs))
+                       gains=gains, closed_loop=eigs)
+
+
+def full_gain(gains: np.ndarray) -> np.ndarray:
+    """(2 n_wings, 6 n_wings) gain matrix of per-wing gains (n_wings, 2, 6) (block diagonal) or of a full one."""
+    g = np.asarray(gains, dtype=float)
+    if g.ndim == 2:
+        return g
+    nw, ni, ns = g.shape
+    K = np.zeros((ni * nw, ns * nw))
+    for k in range(nw):
+        K[ni * k: ni * k + ni, ns * k: ns * k + ns] = g[k]
+    return K
 
 
 def chain_closed_loop(design: ChainDesign) -> tuple[np.ndarray, np.ndarray]:
-    """Check a decentralised chain design on the full coupled lateral model.
-
-    Linearises the whole chain (``control.linearize``, all minimal coordinates), takes the lateral
-    subsystem, discretises it with a ZOH at the control period, closes the loop with the block-diagonal
-    gain (each wing's gain on its own states; cable-node lateral states, if any, unobserved) and returns
-    (open-loop continuous eigenvalues, closed-loop discrete eigenvalues) of that full model.
-    """
-    sc = design.scene
-    sim = sc.simulator(design.x_trim, design.u_trim)
-    lin = linearize(sim, design.x_trim, design.u_trim)
-    A, B, _, _ = lateral_subsystem(lin)
-    nw = lin.n_wings
-    n_lat = len(LATERAL_STATE_NAMES)
-    K = np.zeros((B.shape[1], A.shape[0]))
-    for k in range(nw):
-        K[2 * k: 2 * k + 2, n_lat * k: n_lat * k + n_lat] = design.gains[k]
+    """Check a chain design on the full coupled lateral model: linearise the whole chain, discretise its
+    lateral subsystem with a ZOH at the control period, close the loop with the design's gain (block
+    diagonal for a decentralised design) and return (open-loop continuous eigenvalues, closed-loop discrete
+    eigenvalues)."""
+    A, B = _chain_lateral_model(design.scene, design.x_trim, design.u_trim)
     sysd = control.c2d(control.ss(A, B, np.eye(A.shape[0]), np.zeros(B.shape)), design.config.control_period, "zoh")
     Ad, Bd = np.asarray(sysd.A), np.asarray(sysd.B)
-    return np.linalg.eigvals(A), np.linalg.eigvals(Ad - Bd @ K)
+    return np.linalg.eigvals(A), np.linalg.eigvals(Ad - Bd @ full_gain(design.gains))
 
 
 # ------------------------------------------------------------------------------------ controller
@@ -309,8 +340,9 @@ class LQRController:
 
     Parameters
     ----------
-    gains : ndarray (n_wings, 2, 6)
-        Per-wing gains on (y, vy, phi, psi, p, r) giving (rudder, aileron) [rad].
+    gains : ndarray (n_wings, 2, 6) or (2 n_wings, 6 n_wings)
+        Per-wing gains on the wing's own (y, vy, phi, psi, p, r) giving its (rudder, aileron) [rad], or one
+        full gain from all wings' states (wing-major) to all wings' (rudder, aileron).
     u_trim : ndarray (3 n_wings,)
         Trim controls [rad].
     trim_attitude : ndarray (n_wings, 2)
@@ -331,9 +363,14 @@ class LQRController:
     def __init__(self, gains: np.ndarray, u_trim: np.ndarray, trim_attitude: np.ndarray, mid: np.ndarray,
                  half_range: np.ndarray, action_dtype=np.float32):
         self.gains = np.asarray(gains, dtype=float)
-        nw = self.gains.shape[0]
-        if self.gains.shape != (nw, len(LATERAL_INPUT_NAMES), len(LATERAL_STATE_NAMES)):
-            raise ValueError(f"gains: expected shape (n_wings, 2, 6), got {self.gains.shape}")
+        ni, ns = len(LATERAL_INPUT_NAMES), len(LATERAL_STATE_NAMES)
+        g = self.gains
+        if g.ndim == 3 and g.shape[1:] == (ni, ns):
+            nw = g.shape[0]
+        elif g.ndim == 2 and g.shape[0] % ni == 0 and g.shape[1] == g.shape[0] // ni * ns:
+            nw = g.shape[0] // ni
+        else:
+            raise ValueError(f"gains: expected shape (n_wings, 2, 6) or (2 n_wings, 6 n_wings), got {g.shape}")
         self.n_wings = nw
         self.u_trim = np.asarray(u_trim, dtype=float).reshape(nw, N_CONTROLS)
         self.trim_attitude = np.asarray(trim_attitude, dtype=float).reshape(nw, 2)
@@ -347,7 +384,7 @@ class LQRController:
     @classmethod
     def from_gains(cls, scene: Scene, x_trim: np.ndarray, u_trim: np.ndarray, gains: np.ndarray,
                    action_dtype=np.float32) -> LQRController:
-        """Controller for ``scene`` at the trim (x_trim, u_trim) with per-wing ``gains`` (n_wings, 2, 6)."""
+        """Controller for ``scene`` at the trim (x_trim, u_trim) with ``gains`` (see the class)."""
         sim = scene.simulator(x_trim, u_trim)
         euler = sim.wing_euler()
         mid, half = control_ranges(scene.assembly)
@@ -380,7 +417,11 @@ class LQRController:
         obs, _ = batch_observations(observation, self.obs_dim)
         dz = self.lateral_deviation(obs)
         u = np.broadcast_to(self.u_trim, (len(obs), self.n_wings, N_CONTROLS)).copy()
-        u[..., list(LATERAL_INPUTS)] -= np.einsum("kij,nkj->nki", self.gains, dz)
+        if self.gains.ndim == 3:
+            u[..., list(LATERAL_INPUTS)] -= np.einsum("kij,nkj->nki", self.gains, dz)
+        else:
+            du = dz.reshape(len(obs), -1) @ self.gains.T
+            u[..., list(LATERAL_INPUTS)] -= du.reshape(len(obs), self.n_wings, len(LATERAL_INPUT_NAMES))
         return u
 
     def predict(self, observation: np.ndarray, state: Any = None, episode_start: np.ndarray | None = None,

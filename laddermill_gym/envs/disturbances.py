@@ -13,13 +13,13 @@ grid interval, which is short against the wing's lateral dynamics (periods of ab
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 from scipy.signal import lfilter
 
 __all__ = ["Disturbance", "DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule",
-           "sample_modulation"]
+           "DISTURBANCE_TYPES", "disturbance_from_dict", "sample_modulation"]
 
 
 def _draw(value, rng: np.random.Generator, name: str) -> float:
@@ -157,3 +157,33 @@ def sample_modulation(disturbances, t_end: float, spacing: float,
     if np.any(speed < 0):
         raise ValueError(f"disturbances give a negative wind speed factor (min {speed.min():.3g})")
     return speed, direction
+
+
+DISTURBANCE_TYPES: dict[str, type[Disturbance]] = {
+    cls.__name__: cls for cls in (DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule)}
+
+
+def disturbance_from_dict(spec: dict, where: str = "disturbances") -> Disturbance:
+    """A disturbance from a config mapping ``{type: <class name>, <parameter>: value, ...}``; a parameter
+    given as a two-element list is a (low, high) range drawn per episode. Raises ValueError naming ``where``,
+    the field and the value."""
+    if not isinstance(spec, dict) or "type" not in spec:
+        raise ValueError(f"{where} = {spec!r}: must be a mapping with a 'type' (one of {sorted(DISTURBANCE_TYPES)})")
+    kind = spec["type"]
+    if kind not in DISTURBANCE_TYPES:
+        raise ValueError(f"{where}.type = {kind!r}: must be one of {sorted(DISTURBANCE_TYPES)}")
+    cls = DISTURBANCE_TYPES[kind]
+    known = {f.name for f in fields(cls)}
+    params = {}
+    for key, value in spec.items():
+        if key == "type":
+            continue
+        if key not in known:
+            raise ValueError(f"{where}.{key} = {value!r}: unknown parameter of {kind} (known: {sorted(known)})")
+        params[key] = tuple(value) if isinstance(value, list) else value
+    try:
+        dist = cls(**params)
+        dist.sample(np.arange(3.0), np.random.default_rng(0))  # validate values and ranges now
+    except (TypeError, ValueError) as err:
+        raise ValueError(f"{where} ({kind}): {err}") from None
+    return dist

@@ -57,6 +57,10 @@ class RewardConfig:
       lateral_scale [m] defaults to 5 % of the cable piece length;
     * S(rates): x = mean over wings of (p^2 + r^2) / rate_scale^2 [rad/s];
     * S(effort): x = mean of (a - a_nominal)^2 over the normalised action entries.
+
+    ``failure_penalty`` [-] is subtracted once, in the step that ends an episode by a physical failure
+    (``terminated``); default 0, so a return is the plain sum of the terms above. Training configs set it to
+    make a crash cost more than the power a risky manoeuvre gains before it (``reward_failure`` in ``info``).
     """
 
     power_weight: float = 1.0
@@ -66,6 +70,7 @@ class RewardConfig:
     rate_scale: float = 0.5
     effort_weight: float = 0.1
     reel_speed_fraction: float = 1.0 / 3.0
+    failure_penalty: float = 0.0
 
     def __post_init__(self):
         for f in dataclasses.fields(self):
@@ -329,7 +334,6 @@ class WingTask:
             "reward_rates": -rc.rate_weight * -np.expm1(-rates),
             "reward_effort": -rc.effort_weight * -np.expm1(-effort),
         }
-        reward = terms["reward_power"] + terms["reward_lateral"] + terms["reward_rates"] + terms["reward_effort"]
         alpha = o[:, :, OBS_INDEX["alpha"]]
         beta = o[:, :, OBS_INDEX["beta"]]
         failure = np.zeros(B, dtype=np.int64)
@@ -338,6 +342,9 @@ class WingTask:
         failure[self.aux[:, AUX_MIN_ALTITUDE] < self.min_altitude] = 2
         failure[self.batch.status != OK] = 1
         terminated = failure != 0
+        terms["reward_failure"] = -rc.failure_penalty * terminated
+        reward = (terms["reward_power"] + terms["reward_lateral"] + terms["reward_rates"] + terms["reward_effort"]
+                  + terms["reward_failure"])
         truncated = (self.steps >= self.n_steps_max) & ~terminated
         info = dict(terms)
         info.update(power_W=power, max_tension_N=self.aux[:, AUX_MAX_TENSION].copy(),

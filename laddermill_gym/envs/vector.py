@@ -84,7 +84,8 @@ class WingVectorEnv(VectorEnv):
             reward[resetting] = 0.0
             terminated[resetting] = False
             truncated[resetting] = False
-            for k in ("failure", "n_clipped", "reward_power", "reward_lateral", "reward_rates", "reward_effort"):
+            for k in ("failure", "n_clipped", "reward_power", "reward_lateral", "reward_rates", "reward_effort",
+                      "reward_failure"):
                 info[k][resetting] = 0
         else:
             reward, terminated, truncated, info = self.task.step(a)

@@ -1,0 +1,203 @@
+"""Evaluate controllers of the harness on N seeded episodes of a registered scenario; CSV tables and plots.
+
+    python -m agents.evaluate --env laddermill_gym/TetheredWing-v0 --controllers open_loop lqr runs/ppo \
+        [--episodes 4] [--episode-time 300] [--direction-step 0.01] [--out results/tethered_wing]
+
+Controllers: ``open_loop``, ``lqr`` (the environment's default design), ``lqr:<config.yaml>`` or the path of an
+SB3 training run / model (see :mod:`laddermill_gym.control.factory`). Episode i uses seed i, so every
+controller meets the same disturbances. Writes ``summary.csv`` (one row per controller and episode: return,
+length [s], failure, mean power [W], largest lateral excursion [m], share of clipped action entries),
+``lateral.csv`` (the lateral offset of every wing against time in episode 0) and ``lateral.png``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from tqdm import tqdm
+
+from laddermill_gym.envs import ENV_IDS
+from laddermill_gym.envs.disturbances import DirectionStep
+from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX
+from laddermill_gym.envs.task import FAILURES
+
+
+@dataclass
+class EpisodeResults:
+    """Per-episode figures of one controller (n episodes, n_wings wings, T control periods).
+
+    returns (n,) [-];  lengths_s (n,) [s];  failures (n,) failure codes (0 = ran to the time limit);
+    mean_power_W (n,);  max_lateral_m (n, n_wings) largest |lateral offset| of every wing;
+    clipped_fraction (n,) share of action entries outside [-1, 1];
+    t (T + 1,) [s] and lateral_m (n, T + 1, n_wings) lateral offsets (nan after an episode ended), if recorded.
+    """
+
+    returns: np.ndarray
+    lengths_s: np.ndarray
+    failures: np.ndarray
+    mean_power_W: np.ndarray
+    max_lateral_m: np.ndarray
+    clipped_fraction: np.ndarray
+    t: np.ndarray | None = None
+    lateral_m: np.ndarray | None = None
+
+
+def run_episodes(controller, env, n_episodes: int | None = None, record: bool = True,
+                 progress: bool = False) -> EpisodeResults:
+    """Run ``controller`` deterministically on every copy of the vector env ``env``
+    (:class:`~laddermill_gym.envs.vector.WingVectorEnv`, seeds 0 .. num_envs - 1), each copy to the end of its
+    first episode."""
+    n = env.num_envs
+    if n_episodes is not None and n_episodes != n:
+        raise ValueError(f"n_episodes = {n_episodes}: the env has {n} copies")
+    task = env.task
+    nw = task.n_wings
+    obs, _ = env.reset(seed=list(range(n)))
+    alive = np.ones(n, bool)
+    ret, power, steps, clipped = np.zeros(n), np.zeros(n), np.zeros(n, int), np.zeros(n)
+    failures = np.zeros(n, int)
+    lengths = np.zeros(n)
+    dy0 = obs.reshape(n, nw, N_OBS_PER_WING)[:, :, OBS_INDEX["dy"]].astype(float)
+    max_lat = np.abs(dy0)
+    series = [dy0] if record else None
+    bar = tqdm(total=task.n_steps_max, unit="step", disable=not progress, leave=False)
+    while alive.any():
+        a, _ = controller.predict(obs, deterministic=True)
+        obs, r, term, trunc, info = env.step(a)
+        dy = obs.reshape(n, nw, N_OBS_PER_WING)[:, :, OBS_INDEX["dy"]].astype(float)
+        ret[alive] += r[alive]
+        power[alive] += info["power_W"][alive]
+        clipped[alive] += info["n_clipped"][alive]
+        steps[alive] += 1
+        max_lat[alive] = np.maximum(max_lat[alive], np.abs(dy[alive]))
+        if record:
+            series.append(np.where(alive[:, None], dy, np.nan))
+        ended = alive & (term | trunc)
+        failures[ended] = info["failure"][ended]
+        lengths[ended] = info["t"][ended]
+        alive &= ~ended
+        bar.update(1)
+    bar.close()
+    out = EpisodeResults(returns=ret, lengths_s=lengths, failures=failures, mean_power_W=power / np.maximum(steps, 1),
+                         max_lateral_m=max_lat, clipped_fraction=clipped / np.maximum(steps * task.n_actions, 1))
+    if record:
+        lat = np.stack(series, axis=1)
+        out.t = task.control_dt * np.arange(lat.shape[1])
+        out.lateral_m = lat
+    return out
+
+
+def write_tables(out: Path, results: dict[str, EpisodeResults]) -> None:
+    out.mkdir(parents=True, exist_ok=True)
+    with open(out / "summary.csv", "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["controller", "seed", "return", "length_s", "failure", "mean_power_W", "max_lateral_m",
+                    "clipped_fraction"])
+        for name, res in results.items():
+            for i in range(len(res.returns)):
+                w.writerow([name, i, f"{res.returns[i]:.4f}", f"{res.lengths_s[i]:.2f}", FAILURES[int(res.failures[i])],
+                            f"{res.mean_power_W[i]:.1f}", f"{res.max_lateral_m[i].max():.4f}",
+                            f"{res.clipped_fraction[i]:.4f}"])
+    with open(out / "lateral.csv", "w", newline="") as fh:
+        w = csv.writer(fh)
+        first = next(iter(results.values()))
+        nw = first.lateral_m.shape[2]
+        w.writerow(["t_s"] + [f"{name}_wing{k}_dy_m" for name in results for k in range(nw)])
+        for j, t in enumerate(first.t):
+            w.writerow([f"{t:.3f}"] + [f"{res.lateral_m[0, j, k]:.5g}" for res in results.values() for k in range(nw)])
+
+
+def plot_results(out: Path, results: dict[str, EpisodeResults], title: str) -> Path:
+    """Lateral offset against time (episode 0) per controller; for chains also the largest excursion of
+    every wing over the episode."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    first = next(iter(results.values()))
+    nw = first.lateral_m.shape[2]
+    ncol = 1 if nw == 1 else 2
+    fig, axes = plt.subplots(1, ncol, figsize=(6.5 * ncol, 4), squeeze=False)
+    ax = axes[0, 0]
+    for i, (name, res) in enumerate(results.items()):
+        for k in range(nw):
+            ax.plot(res.t, res.lateral_m[0, :, k], color=f"C{i}", lw=1.2 if nw == 1 else 0.4,
+                    label=name if k == 0 else None)
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("lateral offset dy [m]" + ("" if nw == 1 else " (every wing)"))
+    ax.set_yscale("symlog", linthresh=0.1)
+    ax.grid(alpha=0.3)
+    ax.legend()
+    if nw > 1:
+        ax = axes[0, 1]
+        for i, (name, res) in enumerate(results.items()):
+            ax.plot(np.arange(nw), res.max_lateral_m[0], "o-", ms=2, color=f"C{i}", label=name)
+        ax.set_xlabel("wing index (0 at the hauled end)")
+        ax.set_ylabel("largest |dy| over the episode [m]")
+        ax.set_yscale("log")
+        ax.grid(alpha=0.3)
+        ax.legend()
+    fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    path = out / "lateral.png"
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
+def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dict, out: Path,
+             progress: bool = True) -> dict[str, EpisodeResults]:
+    from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.envs.vector import WingVectorEnv
+
+    kw = dict(ENV_IDS[env_id], **env_kwargs)
+    results = {}
+    for spec in controllers:
+        ctrl = make_controller(spec, env_id, env_kwargs)
+        env = WingVectorEnv(episodes, **kw)
+        results[Path(spec).name if Path(spec).exists() else spec] = run_episodes(ctrl, env, progress=progress)
+        env.close()
+    write_tables(out, results)
+    return results
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(prog="python -m agents.evaluate", description=__doc__.split("\n\n")[0])
+    p.add_argument("--env", default="laddermill_gym/TetheredWing-v0", choices=sorted(ENV_IDS))
+    p.add_argument("--controllers", nargs="+", default=["open_loop", "lqr"])
+    p.add_argument("--episodes", type=int, default=4, help="seeded episodes per controller (seeds 0..n-1)")
+    p.add_argument("--episode-time", type=float, help="[s] episode length (default: the environment's)")
+    p.add_argument("--direction-step", type=float, help="[rad] wind-direction step at t = 1 s (default: the "
+                   "environment's, 0.01 rad)")
+    p.add_argument("--out", type=Path, help="output folder (default results/<env name>)")
+    args = p.parse_args(argv)
+    if args.episodes < 1:
+        p.error(f"--episodes = {args.episodes}: must be >= 1")
+    env_kwargs = {}
+    if args.episode_time is not None:
+        if not args.episode_time > 0:
+            p.error(f"--episode-time = {args.episode_time}: must be > 0 s")
+        env_kwargs["episode_time"] = args.episode_time
+    if args.direction_step is not None:
+        env_kwargs["disturbances"] = [DirectionStep(step=args.direction_step)]
+    name = args.env.split("/")[-1]
+    out = args.out or Path("results") / name
+    results = evaluate(args.env, args.controllers, args.episodes, env_kwargs, out)
+    fig = plot_results(out, results, f"{args.env}: {args.episodes} episode(s), lateral offset (episode 0)")
+    print(f"{'controller':<28} {'return':>10} {'length [s]':>11} {'max |dy| [m]':>13} {'power [W]':>10}  failures")
+    for spec, res in results.items():
+        fails = sorted({FAILURES[int(c)] for c in res.failures if c})
+        print(f"{spec:<28} {np.mean(res.returns):10.2f} {np.mean(res.lengths_s):11.1f} "
+              f"{np.max(res.max_lateral_m):13.4f} {np.mean(res.mean_power_W):10.1f}  {', '.join(fails) or '-'}")
+    print(f"tables in {out}/summary.csv, {out}/lateral.csv; figure {fig}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,66 @@
+"""Build any controller of the harness for a registered environment from a short spec string:
+
+* ``open_loop``: trim controls held;
+* ``lqr`` (the environment's default design, configs/agents/lqr_<scene>.yaml) or ``lqr:<config.yaml>``;
+* a path to a training run folder or model file: a Stable-Baselines3 policy (``rl`` extra).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ..envs import ENV_IDS
+from ..envs.task import scene_trim
+from ..scene import CONFIG_DIR
+from .base import Controller
+
+__all__ = ["make_controller", "DEFAULT_LQR_CONFIGS"]
+
+#: LQR design per registered environment (the design's scene and model must be the environment's)
+DEFAULT_LQR_CONFIGS: dict[str, Path] = {
+    "laddermill_gym/TetheredWing-v0": CONFIG_DIR / "agents" / "lqr_tethered_wing.yaml",
+    "laddermill_gym/LadderChain-v0": CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml",
+}
+
+
+def _env_scene(env_kwargs: dict):
+    options = dict(env_kwargs.get("scene_options") or {})
+    if env_kwargs.get("physics_dt") is not None:
+        options["dt"] = env_kwargs["physics_dt"]
+    return scene_trim(str(env_kwargs["scene"]), tuple(sorted(options.items())))
+
+
+def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> Controller:
+    """The controller named by ``spec`` for environment ``env_id`` (with argument overrides ``env_kwargs``).
+
+    Model-based controllers act on every wing (``action_mode="tail"``, ``groups="per_wing"``); other action
+    layouts raise ValueError. The LQR's scene must match the environment's (same wings, cable model)."""
+    if env_id not in ENV_IDS:
+        raise ValueError(f"env_id = {env_id!r}: must be one of {sorted(ENV_IDS)}")
+    kw = dict(ENV_IDS[env_id], **(env_kwargs or {}))
+    if spec in ("open_loop",) or spec == "lqr" or spec.startswith("lqr:"):
+        if kw.get("action_mode", "tail") != "tail" or kw.get("groups", "per_wing") != "per_wing":
+            raise ValueError(f"controller {spec!r} needs action_mode='tail' and groups='per_wing' "
+                             f"(got {kw.get('action_mode')!r}, {kw.get('groups')!r})")
+        sc, x_trim, u_trim = _env_scene(kw)
+        if spec == "open_loop":
+            from .open_loop import OpenLoopController
+
+            return OpenLoopController.from_scene(sc, u_trim)
+        from .lqr import design_ladder_chain, design_tethered_wing, load_lqr_config
+
+        path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_LQR_CONFIGS[env_id]
+        cfg = load_lqr_config(path)
+        if cfg.control_period != kw["control_dt"]:
+            raise ValueError(f"{path}: control_period = {cfg.control_period} s differs from the environment's "
+                             f"control_dt = {kw['control_dt']} s")
+        if cfg.scene != kw["scene"]:
+            raise ValueError(f"{path}: scene = {cfg.scene!r} differs from the environment's scene {kw['scene']!r}")
+        design = design_tethered_wing if sc.assembly.n_wings == 1 else design_ladder_chain
+        return design(cfg, sc, (x_trim.copy(), u_trim.copy())).controller()
+    path = Path(spec)
+    if not path.exists():
+        raise ValueError(f"controller = {spec!r}: not 'open_loop', 'lqr', 'lqr:<config>' or an existing model path")
+    from .sb3_policy import SB3Controller
+
+    return SB3Controller.load(path)

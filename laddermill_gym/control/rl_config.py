@@ -1,0 +1,130 @@
+"""Training configurations of Stable-Baselines3 agents (``configs/agents/ppo_*.yaml``, ``sac_*.yaml``): read
+strictly (unknown keys, wrong types and bad values raise :class:`~laddermill_gym.configio.ConfigError` naming the
+file, the field and the value) into a frozen :class:`RLConfig`, and turned into environments."""
+
+from __future__ import annotations
+
+import inspect
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from ..configio import ConfigError, read_yaml
+from ..envs import ENV_IDS
+from ..envs.disturbances import disturbance_from_dict
+from ..envs.task import WingTask
+
+ALGORITHMS: tuple[str, ...] = ("PPO", "SAC")
+#: WingTask arguments a config may override under ``env_kwargs`` (disturbances have their own section)
+ENV_KWARGS: tuple[str, ...] = tuple(p for p in inspect.signature(WingTask).parameters
+                                    if p not in ("n_copies", "disturbances", "parallel"))
+
+
+@dataclass(frozen=True)
+class RLConfig:
+    """One training run.
+
+    Attributes
+    ----------
+    file : Path
+    algorithm : "PPO" or "SAC"
+    env_id : registered environment id (:data:`laddermill_gym.envs.ENV_IDS`)
+    n_envs : copies stepped together (one batched kernel, :class:`~laddermill_gym.envs.sb3.WingSB3VecEnv`)
+    env_kwargs : overrides of the registered env arguments for training (episode_time [s], reward, ...)
+    disturbances : list of disturbance mappings for training (``type`` plus parameters; ranges drawn per episode)
+    normalize_observations : running mean / variance normalisation of observations (SB3 ``VecNormalize``)
+    seed : int
+    total_timesteps : env steps (all copies together)
+    time_limit_minutes : wall-clock limit [min]; training stops at whichever limit comes first
+    checkpoint_every, eval_every : env steps between checkpoints / evaluations
+    eval_episodes : episodes of the registered evaluation scenario per evaluation (seeds 0 .. n - 1)
+    hyperparameters : keyword arguments of the SB3 algorithm
+    policy_kwargs : SB3 ``policy_kwargs`` (e.g. net_arch, log_std_init)
+    """
+
+    file: Path
+    algorithm: str
+    env_id: str
+    n_envs: int
+    env_kwargs: dict[str, Any]
+    disturbances: list[dict[str, Any]]
+    normalize_observations: bool
+    seed: int
+    total_timesteps: int
+    time_limit_minutes: float
+    checkpoint_every: int
+    eval_every: int
+    eval_episodes: int
+    hyperparameters: dict[str, Any] = field(default_factory=dict)
+    policy_kwargs: dict[str, Any] = field(default_factory=dict)
+
+    def train_env_kwargs(self) -> dict[str, Any]:
+        """WingTask arguments of the training environment: registered defaults, overrides, disturbances."""
+        kw = dict(ENV_IDS[self.env_id])
+        kw.update(self.env_kwargs)
+        if self.disturbances:
+            kw["disturbances"] = [disturbance_from_dict(d, f"{self.file}: disturbances[{i}]")
+                                  for i, d in enumerate(self.disturbances)]
+        return kw
+
+    def eval_env_kwargs(self) -> dict[str, Any]:
+        """The registered scenario (its own disturbance, episode length, reward and termination), with the
+        training's control settings (action mode, groups, control period, model) so the policy's spaces match."""
+        kw = dict(ENV_IDS[self.env_id])
+        for key in ("action_mode", "groups", "control_dt", "physics_dt", "alpha_servo_tau", "scene_options"):
+            if key in self.env_kwargs:
+                kw[key] = self.env_kwargs[key]
+        return kw
+
+
+def _algorithm_class(name: str):
+    import stable_baselines3 as sb3
+
+    return getattr(sb3, name)
+
+
+def load_rl_config(path: str | Path) -> RLConfig:
+    """Read and validate a training config (needs the ``rl`` extra for the hyperparameter check)."""
+    s = read_yaml(path)
+    algo = s.text("algorithm", choices=ALGORITHMS)
+    env_id = s.text("env", choices=tuple(ENV_IDS))
+    n_envs = s.number("n_envs", integer=True, positive=True)
+    env_kwargs = s.raw("env_kwargs", {}) or {}
+    if not isinstance(env_kwargs, dict):
+        raise s.error("env_kwargs", env_kwargs, "must be a mapping")
+    for key in env_kwargs:
+        if key not in ENV_KWARGS:
+            raise s.error(f"env_kwargs.{key}", env_kwargs[key], f"unknown environment argument (known: {ENV_KWARGS})")
+    disturbances = s.raw("disturbances", []) or []
+    if not isinstance(disturbances, list):
+        raise s.error("disturbances", disturbances, "must be a list of mappings with a 'type'")
+    for i, d in enumerate(disturbances):
+        try:
+            disturbance_from_dict(d, f"disturbances[{i}]")
+        except ValueError as err:
+            raise ConfigError(f"{path}: {err}") from None
+    cfg = dict(
+        algorithm=algo, env_id=env_id, n_envs=n_envs, env_kwargs=dict(env_kwargs), disturbances=list(disturbances),
+        normalize_observations=s.flag("normalize_observations", True),
+        seed=s.number("seed", 0, integer=True, nonneg=True),
+        total_timesteps=s.number("total_timesteps", integer=True, positive=True),
+        time_limit_minutes=s.number("time_limit_minutes", positive=True),
+        checkpoint_every=s.number("checkpoint_every", integer=True, positive=True),
+    )
+    ev = s.section("eval")
+    cfg["eval_every"] = ev.number("every", integer=True, positive=True)
+    cfg["eval_episodes"] = ev.number("episodes", integer=True, positive=True)
+    ev.done()
+    hyper = s.raw("hyperparameters", {}) or {}
+    pk = s.raw("policy_kwargs", {}) or {}
+    for key, value in (("hyperparameters", hyper), ("policy_kwargs", pk)):
+        if not isinstance(value, dict):
+            raise s.error(key, value, "must be a mapping")
+    s.done()
+    known = set(inspect.signature(_algorithm_class(algo)).parameters) - {"policy", "env", "seed", "policy_kwargs",
+                                                                         "tensorboard_log", "verbose", "device"}
+    for key, value in hyper.items():
+        if key not in known:
+            raise ConfigError(f"{path}: field 'hyperparameters.{key}' = {value!r}: not an argument of {algo} "
+                              f"(known: {sorted(known)})")
+    return RLConfig(file=Path(path), hyperparameters=dict(hyper), policy_kwargs=dict(pk), **cfg)

@@ -1,0 +1,77 @@
+"""A trained Stable-Baselines3 policy as a controller of the harness (needs the ``rl`` extra).
+
+Training (``python -m agents.train``) writes a run folder with the model (``model.zip``, or the best one
+``best_model.zip``) and, when observations were normalised, the running statistics that go with each
+(``vecnormalize.pkl``, ``best_vecnormalize.pkl``).
+:class:`SB3Controller` applies the same normalisation before the policy, so evaluation sees raw
+environment observations exactly like the open-loop and LQR controllers.
+"""
+
+from __future__ import annotations
+
+import pickle
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+__all__ = ["SB3Controller"]
+
+
+class SB3Controller:
+    """``predict`` of an SB3 model on raw observations.
+
+    Parameters
+    ----------
+    model : a loaded SB3 algorithm (PPO, SAC, ...)
+    obs_mean, obs_var : ndarray (obs_dim,), optional
+        Normalisation statistics: the policy sees clip((obs - mean) / sqrt(var + eps), -clip_obs, clip_obs).
+    clip_obs, epsilon : as in SB3's ``VecNormalize``.
+    """
+
+    def __init__(self, model, obs_mean: np.ndarray | None = None, obs_var: np.ndarray | None = None,
+                 clip_obs: float = 10.0, epsilon: float = 1e-8):
+        self.model = model
+        self.obs_mean = None if obs_mean is None else np.asarray(obs_mean, dtype=np.float64)
+        self.obs_std = None if obs_var is None else np.sqrt(np.asarray(obs_var, dtype=np.float64) + epsilon)
+        self.clip_obs = float(clip_obs)
+
+    @classmethod
+    def load(cls, path: str | Path, best: bool = True) -> SB3Controller:
+        """Load from a training run folder (``best_model.zip`` if present and ``best``, else ``model.zip``)
+        or from a model file, with its normalisation statistics next to it if there are any."""
+        import stable_baselines3 as sb3
+
+        path = Path(path)
+        if path.is_dir():
+            candidates = (["best_model.zip"] if best else []) + ["model.zip"]
+            files = [path / c for c in candidates if (path / c).is_file()]
+            if not files:
+                raise FileNotFoundError(f"{path}: no model.zip or best_model.zip (is it a training run folder?)")
+            model_file, folder = files[0], path
+        elif path.is_file():
+            model_file, folder = path, path.parent
+        else:
+            raise FileNotFoundError(f"{path}: no such model file or run folder")
+        meta = folder / "algorithm.txt"
+        algo = meta.read_text().strip() if meta.is_file() else "PPO"
+        if not hasattr(sb3, algo):
+            raise ValueError(f"{meta}: unknown algorithm {algo!r}")
+        model = getattr(sb3, algo).load(model_file, device="cpu")
+        norm = folder / ("best_vecnormalize.pkl" if model_file.name == "best_model.zip" else "vecnormalize.pkl")
+        if norm.is_file():
+            with open(norm, "rb") as fh:
+                vn = pickle.load(fh)
+            return cls(model, vn.obs_rms.mean, vn.obs_rms.var, vn.clip_obs, vn.epsilon)
+        return cls(model)
+
+    def normalize(self, observation: np.ndarray) -> np.ndarray:
+        obs = np.asarray(observation, dtype=np.float64)
+        if self.obs_mean is None:
+            return obs.astype(np.float32)
+        return np.clip((obs - self.obs_mean) / self.obs_std, -self.clip_obs, self.clip_obs).astype(np.float32)
+
+    def predict(self, observation: np.ndarray, state: Any = None, episode_start: np.ndarray | None = None,
+                deterministic: bool = False) -> tuple[np.ndarray, Any]:
+        """Actions for batched (n_envs, obs_dim) or single (obs_dim,) raw observations."""
+        return self.model.predict(self.normalize(observation), state, episode_start, deterministic)

@@ -1,0 +1,214 @@
+"""The Gymnasium environments: conformance (Gymnasium's and SB3's checkers), determinism, single vs batched
+copies, pickling, rendering, episode ends, the reward's power term against the simulator's tension, and the
+environment's RK4 step against an error-controlled Dormand-Prince reference of the same disturbed flight."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import pickle
+
+import gymnasium as gym
+import numpy as np
+import pytest
+from gymnasium.utils.env_checker import check_env
+
+import laddermill_gym  # noqa: F401  (registers the ids)
+from laddermill_gym.envs import ENV_IDS, DirectionStep, RandomPerturbation, WingEnv, WingVectorEnv
+from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX
+
+TW = "laddermill_gym/TetheredWing-v0"
+TW_KW = ENV_IDS[TW]
+
+
+def short(**kw):
+    return dict(TW_KW, **{"episode_time": 20.0, **kw})
+
+
+def rollout(env, actions, seed):
+    obs, _ = env.reset(seed=seed)
+    out, rewards = [obs], []
+    for a in actions:
+        obs, r, term, trunc, _ = env.step(a)
+        out.append(obs)
+        rewards.append(r)
+        if term or trunc:
+            break
+    return np.array(out), np.array(rewards)
+
+
+def test_gymnasium_checker_and_registration():
+    env = gym.make(TW, episode_time=5.0)
+    check_env(env.unwrapped, skip_render_check=True)
+    assert env.observation_space.shape == (N_OBS_PER_WING,)
+    assert env.action_space.shape == (3,)
+    vec = gym.make_vec(TW, num_envs=2, vectorization_mode="vector_entry_point", episode_time=5.0)
+    assert isinstance(vec, WingVectorEnv)
+    assert vec.metadata["autoreset_mode"] == gym.vector.AutoresetMode.NEXT_STEP
+
+
+def test_sb3_checker():
+    pytest.importorskip("stable_baselines3")
+    from stable_baselines3.common.env_checker import check_env as sb3_check
+
+    sb3_check(WingEnv(**short(episode_time=5.0)), warn=True)
+
+
+def test_same_seed_same_rollout_and_seeds_matter():
+    kw = short(disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.05), DirectionStep(step=(-0.1, 0.1))])
+    acts = np.random.default_rng(0).uniform(-0.3, 0.3, size=(100, 3)).astype(np.float32)
+    o1, r1 = rollout(WingEnv(**kw), acts, seed=7)
+    o2, r2 = rollout(WingEnv(**kw), acts, seed=7)
+    o3, _ = rollout(WingEnv(**kw), acts, seed=8)
+    np.testing.assert_array_equal(o1, o2)
+    np.testing.assert_array_equal(r1, r2)
+    assert not np.array_equal(o1, o3)
+
+
+@pytest.mark.parametrize("parallel", [False, True])
+def test_vector_copies_equal_single_envs(parallel):
+    kw = short(disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.05)])
+    n = 3
+    rng = np.random.default_rng(1)
+    acts = rng.uniform(-0.5, 0.5, size=(60, n, 3)).astype(np.float32)
+    vec = WingVectorEnv(n, parallel=parallel, **kw)
+    obs_v, _ = vec.reset(seed=11)
+    hist_v, rew_v = [obs_v], []
+    for a in acts:
+        o, r, *_ = vec.step(a)
+        hist_v.append(o)
+        rew_v.append(r)
+    for i in range(n):
+        o_s, r_s = rollout(WingEnv(**kw), acts[:, i], seed=11 + i)
+        # same arithmetic: the serial kernel equals a single env bit for bit; the threaded one to round-off
+        np.testing.assert_allclose(np.array(hist_v)[:, i], o_s, rtol=1e-6 if parallel else 0, atol=0)
+        np.testing.assert_allclose(np.array(rew_v)[:, i], r_s, rtol=1e-9 if parallel else 0, atol=0)
+
+
+def test_pickle_round_trip_continues_identically():
+    kw = short(disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.05)])
+    env = WingEnv(**kw)
+    env.reset(seed=3)
+    acts = np.random.default_rng(2).uniform(-0.3, 0.3, size=(40, 3)).astype(np.float32)
+    for a in acts[:20]:
+        env.step(a)
+    clone = pickle.loads(pickle.dumps(env))
+    for a in acts[20:]:
+        o1, r1, *_ = env.step(a)
+        o2, r2, *_ = clone.step(a)
+        np.testing.assert_array_equal(o1, o2)
+        assert r1 == r2
+
+
+def test_render_rgb_array():
+    env = WingEnv(render_mode="rgb_array", **short())
+    env.reset(seed=0)
+    frame = env.render()
+    assert frame.dtype == np.uint8 and frame.ndim == 3 and frame.shape[2] == 3
+    assert len(np.unique(frame.reshape(-1, 3), axis=0)) > 10  # wing, cable and axes drawn, not blank
+    env.close()
+
+
+def test_time_limit_truncates_and_next_step_autoreset():
+    vec = WingVectorEnv(2, **short(episode_time=0.5))
+    obs0, _ = vec.reset(seed=0)
+    nominal = vec.task.actions.nominal_action
+    a = np.tile(nominal, (2, 1)).astype(np.float32)
+    for k in range(10):
+        obs, r, term, trunc, info = vec.step(a)
+        assert not term.any()
+        assert trunc.all() == (k == 9)
+    np.testing.assert_allclose(info["t"], 0.5, atol=1e-9)
+    obs, r, term, trunc, info = vec.step(a)  # the autoreset step: action ignored, reward 0, fresh start
+    np.testing.assert_array_equal(obs, obs0)
+    np.testing.assert_array_equal(r, 0.0)
+
+
+def test_open_loop_large_step_terminates_with_reason():
+    env = WingEnv(**short(episode_time=300.0, disturbances=[DirectionStep(step=0.3)]))
+    env.reset(seed=0)
+    a = env.task.actions.nominal_action.astype(np.float32)
+    for _ in range(6000):
+        _, _, term, trunc, info = env.step(a)
+        if term or trunc:
+            break
+    assert term and not trunc
+    assert info["failure"] != 0 and "t = " in info["failure_reason"]
+
+
+def test_power_term_is_ground_tension_times_reel_speed():
+    """P = T_ground v_reel with v_reel = v0 / 3 (Lansdorp et al. 2008), T_ground from the simulator's own
+    tension view at the trim (a separate code path from the env kernel's observation)."""
+    env = WingEnv(**short())
+    env.reset(seed=0)
+    task = env.task
+    sim = task.scene.simulator(task.x_trim, task.u_trim)
+    t_ground = sim.tensions()[0]
+    v0 = task.scene.assembly.wind.v0
+    assert math.isclose(task.p_ref, t_ground * v0 / 3.0, rel_tol=1e-9)
+    _, r, _, _, info = env.step(task.actions.nominal_action.astype(np.float32))
+    assert abs(info["reward_power"] - 1.0) < 1e-3  # one period at trim before the 1 s direction step
+    total = sum(info[k] for k in ("reward_power", "reward_lateral", "reward_rates", "reward_effort",
+                                  "reward_failure"))
+    assert math.isclose(r, total, rel_tol=1e-12)
+
+
+def test_env_rk4_matches_dormand_prince_reference():
+    """The env's integrator (RK4, 0.05 s, one tether element) against DP5(4) at rtol 1e-10 on the same scene
+    with the same sampled wind modulation (a 0.05 rad direction step at 1 s), open loop for 20 s."""
+    kw = short(disturbances=[DirectionStep(step=0.05)])
+    env = WingEnv(**kw)
+    env.reset(seed=0)
+    task = env.task
+    a = task.actions.nominal_action.astype(np.float32)
+    for _ in range(400):
+        obs, *_ = env.step(a)
+    b = task.batch
+    sc = task.scene
+    asm = sc.assembly
+    wind = asm.wind.with_modulation(float(b.tmod[0, 0]), float(b.tmod[0, 1]), b.mod_speed[0].copy(),
+                                    b.mod_direction[0].copy())
+    ref_scene = sc.replace(assembly=dataclasses.replace(asm, wind=wind))
+    sim = ref_scene.simulator(task.x_trim.copy(), b.controls[0].copy())
+    sim.advance_to(20.0, rtol=1e-10, atol=1e-10)
+    y_ref = sim.wing_positions()[0, 1] - task.nominal[0, 1]
+    y_env = obs[OBS_INDEX["dy"]]
+    assert abs(y_ref) > 0.05  # the step has moved the wing sideways
+    assert abs(y_env - y_ref) < 2e-3 * abs(y_ref) + 1e-4
+
+
+def test_ladder_chain_env_steps_with_grouped_actions():
+    env = gym.make("laddermill_gym/LadderChain-v0", groups="halves", episode_time=1.0).unwrapped
+    assert env.action_space.shape == (6,)
+    assert env.observation_space.shape == (101 * N_OBS_PER_WING,)
+    obs, _ = env.reset(seed=0)
+    for _ in range(3):
+        obs, r, term, trunc, info = env.step(np.zeros(6, np.float32))
+    assert np.all(np.isfinite(obs)) and not term
+    assert info["power_W"] > 0  # the ascending leg pulls harder than the descending one
+
+
+@pytest.mark.parametrize("kwargs, field", [
+    (dict(control_dt=-0.05), "control_dt"),
+    (dict(episode_time=float("nan")), "episode_time"),
+    (dict(action_mode="flaps"), "action_mode"),
+    (dict(groups=[[0, 0]]), "groups"),
+    (dict(reward={"power_wieght": 1.0}), "reward"),
+    (dict(reward={"lateral_weight": -1.0}), "lateral_weight"),
+    (dict(termination={"alpha_range_deg": (10.0, -10.0)}), "alpha_range_deg"),
+    (dict(control_dt=0.07), "control_dt"),
+])
+def test_bad_arguments_name_the_field(kwargs, field):
+    with pytest.raises(ValueError, match=field):
+        WingEnv(**dict(short(), **kwargs))
+
+
+def test_bad_actions_and_order():
+    env = WingEnv(**short())
+    with pytest.raises(RuntimeError, match="reset"):
+        env.step(np.zeros(3, np.float32))
+    env.reset(seed=0)
+    with pytest.raises(ValueError, match="non-finite"):
+        env.step(np.array([np.nan, 0, 0], np.float32))
+    _, _, _, _, info = env.step(np.array([2.0, 0.0, -3.0], np.float32))
+    assert info["n_clipped"] == 2  # clipped to the box, and counted
