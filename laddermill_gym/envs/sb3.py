@@ -60,6 +60,8 @@ class WingSB3VecEnv(VecEnv):
         pass
 
     def get_attr(self, attr_name: str, indices=None) -> list[Any]:
+        if attr_name == "render_mode":  # the copies are drawn by get_images, not by a per-env render mode
+            return [None for _ in self._get_indices(indices)]
         return [getattr(self.task, attr_name) for _ in self._get_indices(indices)]
 
     def set_attr(self, attr_name: str, value: Any, indices=None) -> None:

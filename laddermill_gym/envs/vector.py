@@ -98,7 +98,8 @@ class WingVectorEnv(VectorEnv):
         if self.autoreset_mode == AutoresetMode.SAME_STEP and done.any():
             final_info = {k: v.copy() for k, v in out.items()}
             final_obs = np.empty(n, dtype=object)
-            final_obs[done] = list(obs[done])
+            for i in np.flatnonzero(done):
+                final_obs[i] = obs[i].copy()
             self.task.reset(done, self._rngs)
             obs = self.task.obs.astype(np.float32)
             out["final_obs"], out["_final_obs"] = final_obs, done.copy()
