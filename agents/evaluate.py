@@ -7,7 +7,7 @@ Controllers: ``open_loop``, ``lqr`` (the environment's default design), ``lqr:<c
 SB3 training run / model (see :mod:`laddermill_gym.control.factory`). Episode i uses seed i, so every
 controller meets the same disturbances. Writes ``summary.csv`` (one row per controller and episode: return,
 length [s], failure, mean power [W], largest lateral excursion [m], share of clipped action entries),
-``lateral.csv`` (the lateral offset of every wing against time in episode 0) and ``lateral.png``.
+``lateral.csv`` (controller, t, wing, lateral offset of episode 0) and ``lateral.png``.
 """
 
 from __future__ import annotations
@@ -103,13 +103,15 @@ def write_tables(out: Path, results: dict[str, EpisodeResults]) -> None:
                 w.writerow([name, i, f"{res.returns[i]:.4f}", f"{res.lengths_s[i]:.2f}", FAILURES[int(res.failures[i])],
                             f"{res.mean_power_W[i]:.1f}", f"{res.max_lateral_m[i].max():.4f}",
                             f"{res.clipped_fraction[i]:.4f}"])
-    with open(out / "lateral.csv", "w", newline="") as fh:
+    with open(out / "lateral.csv", "w", newline="") as fh:  # long format: the episodes end at different times
         w = csv.writer(fh)
-        first = next(iter(results.values()))
-        nw = first.lateral_m.shape[2]
-        w.writerow(["t_s"] + [f"{name}_wing{k}_dy_m" for name in results for k in range(nw)])
-        for j, t in enumerate(first.t):
-            w.writerow([f"{t:.3f}"] + [f"{res.lateral_m[0, j, k]:.5g}" for res in results.values() for k in range(nw)])
+        w.writerow(["controller", "t_s", "wing", "dy_m"])
+        for name, res in results.items():
+            for j, t in enumerate(res.t):
+                row = res.lateral_m[0, j]
+                if np.isnan(row).all():
+                    break
+                w.writerows([name, f"{t:.3f}", k, f"{v:.5g}"] for k, v in enumerate(row))
 
 
 def plot_results(out: Path, results: dict[str, EpisodeResults], title: str) -> Path:
@@ -151,6 +153,13 @@ def plot_results(out: Path, results: dict[str, EpisodeResults], title: str) -> P
     return path
 
 
+def controller_label(spec: str) -> str:
+    """Short name of a controller spec for tables and legends."""
+    if spec.startswith("lqr:"):
+        return "lqr:" + Path(spec[4:]).stem
+    return Path(spec).name if Path(spec).exists() else spec
+
+
 def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dict, out: Path,
              progress: bool = True) -> dict[str, EpisodeResults]:
     from laddermill_gym.control.factory import make_controller
@@ -161,7 +170,7 @@ def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dic
     for spec in controllers:
         ctrl = make_controller(spec, env_id, env_kwargs)
         env = WingVectorEnv(episodes, **kw)
-        results[Path(spec).name if Path(spec).exists() else spec] = run_episodes(ctrl, env, progress=progress)
+        results[controller_label(spec)] = run_episodes(ctrl, env, progress=progress)
         env.close()
     write_tables(out, results)
     return results

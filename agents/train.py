@@ -7,7 +7,7 @@ The run folder gets: ``config.yaml`` (the config used), ``algorithm.txt``, Tenso
 checkpoints (``checkpoints/``), ``evaluations.csv`` (deterministic returns on the registered evaluation
 scenario, seeds 0 .. n - 1, against wall time and env steps), ``best_model.zip`` (best evaluation) with
 ``best_vecnormalize.pkl``, ``model.zip`` (last) with ``vecnormalize.pkl`` (observation statistics) and
-``training_curve.png``.
+``training_curve.png`` (with the LQR and open-loop returns on the same episodes, also in ``references.csv``).
 Training stops at ``total_timesteps`` or ``time_limit_minutes``, whichever comes first. A progress bar shows
 steps, episodes and the latest evaluation.
 """
@@ -115,6 +115,24 @@ def plot_curve(out: Path, rows: list[dict], reference: dict[str, float] | None =
     return path
 
 
+def reference_returns(cfg: RLConfig, eval_env) -> dict[str, float]:
+    """Mean returns of the model-based controllers (LQR, open loop) on the evaluation episodes, for the
+    training curve; empty where the action layout does not suit them (grouped or angle-of-attack actions)."""
+    from laddermill_gym.control.factory import make_controller
+
+    refs = {}
+    for spec in ("lqr", "open_loop"):
+        try:
+            ctrl = make_controller(spec, cfg.env_id, {k: v for k, v in cfg.env_kwargs.items()
+                                                      if k in ("action_mode", "groups", "control_dt", "physics_dt",
+                                                               "scene_options")})
+        except ValueError as err:
+            print(f"no {spec} reference: {err}")
+            continue
+        refs[spec] = float(np.mean(_evaluate(ctrl, eval_env, cfg.eval_episodes)[0]))
+    return refs
+
+
 def train(cfg: RLConfig, out: Path) -> dict:
     """Train according to ``cfg`` into the folder ``out``; returns a summary dict."""
     import stable_baselines3 as sb3
@@ -147,9 +165,12 @@ def train(cfg: RLConfig, out: Path) -> dict:
     model.save(out / "model.zip")
     if cfg.normalize_observations:
         venv.save(str(out / "vecnormalize.pkl"))
-    plot_curve(out, cb.rows)
+    refs = reference_returns(cfg, eval_env)
+    with open(out / "references.csv", "w") as fh:
+        fh.write("controller,mean_return\n" + "".join(f"{k},{v:.4f}\n" for k, v in refs.items()))
+    plot_curve(out, cb.rows, refs)
     summary = dict(steps=int(model.num_timesteps), minutes=round(minutes, 2), best_eval_return=cb.best,
-                   last_eval_return=cb.rows[-1]["mean_return"])
+                   last_eval_return=cb.rows[-1]["mean_return"], references=refs)
     return summary
 
 
@@ -161,8 +182,19 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--timesteps", type=int, help="override total_timesteps")
     p.add_argument("--minutes", type=float, help="override time_limit_minutes")
     p.add_argument("--n-envs", type=int, help="override n_envs")
+    p.add_argument("--replot", action="store_true", help="only redraw the training curve of the run folder "
+                   "--out (config: its config.yaml) with the LQR and open-loop references")
     args = p.parse_args(argv)
     cfg = load_rl_config(args.config)
+    if args.replot:
+        if args.out is None or not (args.out / "evaluations.csv").is_file():
+            p.error("--replot needs --out RUN_FOLDER with an evaluations.csv")
+        from laddermill_gym.envs.vector import WingVectorEnv
+
+        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(args.out / "evaluations.csv"))]
+        refs = reference_returns(cfg, WingVectorEnv(cfg.eval_episodes, **cfg.eval_env_kwargs()))
+        print(f"wrote {plot_curve(args.out, rows, refs)}; references {refs}")
+        return 0
     over = {k: v for k, v in (("seed", args.seed), ("total_timesteps", args.timesteps),
                               ("time_limit_minutes", args.minutes), ("n_envs", args.n_envs)) if v is not None}
     for k, v in over.items():
@@ -173,6 +205,8 @@ def main(argv: list[str] | None = None) -> int:
     summary = train(cfg, out)
     print(f"trained {summary['steps']} steps in {summary['minutes']} min; evaluation return best "
           f"{summary['best_eval_return']:.2f}, last {summary['last_eval_return']:.2f}; run folder {out}")
+    for name, value in summary["references"].items():
+        print(f"  {name} on the same episodes: {value:.2f}")
     return 0
 
 

@@ -42,7 +42,7 @@ def test_sb3_smoke_training_and_policy_as_controller(tmp_path, monkeypatch):
     summary = train(cfg, out)
     assert summary["steps"] >= 512
     for name in ("model.zip", "best_model.zip", "vecnormalize.pkl", "evaluations.csv", "training_curve.png",
-                 "config.yaml"):
+                 "config.yaml", "references.csv"):
         assert (out / name).is_file(), name
     assert any((out / "checkpoints").iterdir())
     assert any((out / "tb").rglob("events.out.tfevents*"))
