@@ -52,6 +52,24 @@ def test_sb3_smoke_training_and_policy_as_controller(tmp_path, monkeypatch):
     assert a.shape == (3, 3) and np.all(np.abs(a) <= 1.0)
 
 
+def test_sac_config_trains_a_few_hundred_steps(tmp_path, monkeypatch):
+    pytest.importorskip("stable_baselines3")
+    from agents.train import train
+    from laddermill_gym.control.rl_config import load_rl_config
+
+    data = yaml.safe_load(open("configs/agents/sac_tethered_wing.yaml"))
+    data.update(n_envs=2, total_timesteps=300, checkpoint_every=200, eval={"every": 200, "episodes": 1})
+    data["hyperparameters"].update(learning_starts=100, batch_size=32, gradient_steps=1)
+    data["env_kwargs"]["episode_time"] = 3.0
+    p = tmp_path / "sac_small.yaml"
+    p.write_text(yaml.safe_dump(data))
+    monkeypatch.setitem(ENV_IDS, TW, dict(ENV_IDS[TW], episode_time=2.0))
+    summary = train(load_rl_config(p), tmp_path / "run")
+    assert summary["steps"] >= 300
+    assert (tmp_path / "run" / "algorithm.txt").read_text().strip() == "SAC"
+    assert np.isfinite(summary["best_eval_return"])
+
+
 def test_rl_config_errors_name_the_field(tmp_path):
     pytest.importorskip("stable_baselines3")
     from laddermill_gym.control.rl_config import load_rl_config
