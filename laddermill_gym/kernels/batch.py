@@ -11,6 +11,18 @@ from ..packing import KModel, KWork
 from .integrate import OK, rk4_advance
 
 
+@njit(cache=True)
+def copy_views(b, M, WB, tmod, MS, MD):
+    """(model, workspace) of copy ``b``: the shared model with that copy's wind modulation, and views of the
+    copy's rows of the batched workspace WB (no copies made)."""
+    Mb = KModel(M.wf, tmod[b], MS[b], MD[b], M.glob, M.wtype, M.tf, M.ac, M.node_mass, M.fixed,
+                M.ek, M.ei, M.ea, M.ef, M.ekd, M.echild, M.order, M.parent, M.bsz)
+    Wb = KWork(WB.D[b], WB.U[b], WB.Y[b], WB.piv[b], WB.bv[b], WB.Rw[b], WB.tension[b], WB.Tr[b],
+               WB.Ts[b], WB.er[b], WB.es[b], WB.coef[b], WB.aout[b], WB.k1[b], WB.k2[b], WB.k3[b],
+               WB.k4[b], WB.k5[b], WB.k6[b], WB.k7[b], WB.xt[b], WB.xp[b])
+    return Mb, Wb
+
+
 @njit(cache=True, error_model="numpy", parallel=True)
 def rk4_batch(t, X, U, dt, n, M, WB, tmod, MS, MD, active, sag, caero, planar, limits, status, done):
     """Advance the states X (B, n_state) in place by n RK4 steps of size dt with controls U (B, n_controls).
@@ -26,11 +38,7 @@ def rk4_batch(t, X, U, dt, n, M, WB, tmod, MS, MD, active, sag, caero, planar, l
             status[b] = OK
             done[b] = 0
             continue
-        Mb = KModel(M.wf, tmod[b], MS[b], MD[b], M.glob, M.wtype, M.tf, M.ac, M.node_mass, M.fixed,
-                    M.ek, M.ei, M.ea, M.ef, M.ekd, M.echild, M.order, M.parent, M.bsz)
-        Wb = KWork(WB.D[b], WB.U[b], WB.Y[b], WB.piv[b], WB.bv[b], WB.Rw[b], WB.tension[b], WB.Tr[b],
-                   WB.Ts[b], WB.er[b], WB.es[b], WB.coef[b], WB.aout[b], WB.k1[b], WB.k2[b], WB.k3[b],
-                   WB.k4[b], WB.k5[b], WB.k6[b], WB.k7[b], WB.xt[b], WB.xp[b])
+        Mb, Wb = copy_views(b, M, WB, tmod, MS, MD)
         st, dn = rk4_advance(t[b], X[b], U[b], dt, n, Mb, Wb, sag, caero, planar, limits)
         status[b] = st
         done[b] = dn

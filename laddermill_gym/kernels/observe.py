@@ -10,7 +10,7 @@ import math
 
 from numba import njit, prange
 
-from ..packing import KModel, KWork
+from .batch import copy_views
 from .integrate import OK, SINGULAR, rhs, rk4_advance
 from .wind import modulation, wind_at
 
@@ -73,11 +73,7 @@ def _step_observe_copy(b, t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, 
         status[b] = OK
         done[b] = 0
         return
-    Mb = KModel(M.wf, tmod[b], MS[b], MD[b], M.glob, M.wtype, M.tf, M.ac, M.node_mass, M.fixed,
-                M.ek, M.ei, M.ea, M.ef, M.ekd, M.echild, M.order, M.parent, M.bsz)
-    Wb = KWork(WB.D[b], WB.U[b], WB.Y[b], WB.piv[b], WB.bv[b], WB.Rw[b], WB.tension[b], WB.Tr[b],
-               WB.Ts[b], WB.er[b], WB.es[b], WB.coef[b], WB.aout[b], WB.k1[b], WB.k2[b], WB.k3[b],
-               WB.k4[b], WB.k5[b], WB.k6[b], WB.k7[b], WB.xt[b], WB.xp[b])
+    Mb, Wb = copy_views(b, M, WB, tmod, MS, MD)
     st, dn = OK, 0
     if n > 0:
         st, dn = rk4_advance(t[b], X[b], U[b], dt, n, Mb, Wb, sag, caero, None, limits)
