@@ -4,7 +4,8 @@
         [--episodes 4] [--episode-time 300] [--direction-step 0.01] [--out results/tethered_wing]
 
 Controllers: ``open_loop``, ``lqr`` (the environment's default design), ``lqr:<config.yaml>`` or the path of an
-SB3 training run / model (see :mod:`laddermill_gym.control.factory`). Episode i uses seed i, so every
+SB3 training run (its best model) or model file (``<run>/model.zip`` for the last one); see
+:mod:`laddermill_gym.control.factory`. Episode i uses seed i, so every
 controller meets the same disturbances. Writes ``summary.csv`` (one row per controller and episode: return,
 length [s], failure, mean power [W], largest lateral excursion [m], share of clipped action entries),
 ``lateral.csv`` (controller, t, wing, lateral offset of episode 0) and ``lateral.png``.
@@ -22,9 +23,17 @@ import numpy as np
 from tqdm import tqdm
 
 from laddermill_gym.envs import ENV_IDS
-from laddermill_gym.envs.disturbances import DirectionStep
+from laddermill_gym.envs.disturbances import DirectionStep, OneMinusCosineGust
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX
 from laddermill_gym.envs.task import FAILURES
+
+#: Named evaluation scenarios (disturbance lists); "paper_step" is the registered default of the environments
+SCENARIOS = {
+    "paper_step": [DirectionStep(step=0.01)],
+    "step_minus_0.05": [DirectionStep(step=-0.05)],
+    "step_0.1": [DirectionStep(step=0.1)],
+    "gust": [OneMinusCosineGust(amplitude=0.3, duration=10.0, time=5.0, direction_amplitude=0.05)],
+}
 
 
 @dataclass
@@ -157,7 +166,10 @@ def controller_label(spec: str) -> str:
     """Short name of a controller spec for tables and legends."""
     if spec.startswith("lqr:"):
         return "lqr:" + Path(spec[4:]).stem
-    return Path(spec).name if Path(spec).exists() else spec
+    path = Path(spec)
+    if path.is_file():
+        return f"{path.parent.name}/{path.stem}"
+    return path.name if path.exists() else spec
 
 
 def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dict, out: Path,
@@ -184,6 +196,9 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--episode-time", type=float, help="[s] episode length (default: the environment's)")
     p.add_argument("--direction-step", type=float, help="[rad] wind-direction step at t = 1 s (default: the "
                    "environment's, 0.01 rad)")
+    p.add_argument("--scenario", choices=sorted(SCENARIOS), help="a named disturbance: paper_step (0.01 rad "
+                   "direction step at 1 s), step_minus_0.05, step_0.1, gust (1-cosine, +30 %% speed and 0.05 rad "
+                   "direction over 10 s from t = 5 s)")
     p.add_argument("--out", type=Path, help="output folder (default results/<env name>)")
     args = p.parse_args(argv)
     if args.episodes < 1:
@@ -193,8 +208,12 @@ def main(argv: list[str] | None = None) -> int:
         if not args.episode_time > 0:
             p.error(f"--episode-time = {args.episode_time}: must be > 0 s")
         env_kwargs["episode_time"] = args.episode_time
+    if args.direction_step is not None and args.scenario is not None:
+        p.error("--direction-step and --scenario exclude each other")
     if args.direction_step is not None:
         env_kwargs["disturbances"] = [DirectionStep(step=args.direction_step)]
+    if args.scenario is not None:
+        env_kwargs["disturbances"] = SCENARIOS[args.scenario]
     name = args.env.split("/")[-1]
     out = args.out or Path("results") / name
     results = evaluate(args.env, args.controllers, args.episodes, env_kwargs, out)
