@@ -16,7 +16,6 @@ import math
 from dataclasses import dataclass, field, fields
 
 import numpy as np
-from scipy.signal import lfilter
 
 __all__ = ["Disturbance", "DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule",
            "DISTURBANCE_TYPES", "disturbance_from_dict", "sample_modulation"]
@@ -104,6 +103,8 @@ class RandomPerturbation(Disturbance):
         if not (self.correlation_time > 0 and self.speed_std >= 0 and self.direction_std >= 0):
             raise ValueError(f"RandomPerturbation: correlation_time = {self.correlation_time!r} s must be > 0 and "
                              f"the standard deviations ({self.speed_std!r}, {self.direction_std!r}) >= 0")
+        from scipy.signal import lfilter  # imported here: scipy.signal costs about 0.5 s at package import
+
         n = t.size
         spacing = float(t[1] - t[0]) if n > 1 else 1.0
         a = math.exp(-spacing / self.correlation_time)  # the grid is uniform
