@@ -212,3 +212,26 @@ def test_bad_actions_and_order():
         env.step(np.array([np.nan, 0, 0], np.float32))
     _, _, _, _, info = env.step(np.array([2.0, 0.0, -3.0], np.float32))
     assert info["n_clipped"] == 2  # clipped to the box, and counted
+
+
+def test_alpha_mode_servo_lag_and_achieved_alpha():
+    """action_mode='alpha': the servo state follows the first-order lag in closed form,
+    alpha_k = cmd + (alpha_0 - cmd) exp(-k dt / tau), and the wing settles near the commanded angle of attack
+    (the elevator map is a static pitch balance without weight, exact at the trim; 1 deg allowed)."""
+    tau = 0.5
+    env = WingEnv(**short(action_mode="alpha", alpha_servo_tau=tau, disturbances=[], episode_time=60.0))
+    env.reset(seed=0)
+    task = env.task
+    lo, hi = task.actions.layout.low[0], task.actions.layout.high[0]
+    alpha0 = float(task.actions.alpha_servo[0, 0])
+    cmd = alpha0 + math.radians(2.0)
+    a = task.actions.nominal_action.astype(np.float32).copy()
+    a[0] = (cmd - 0.5 * (lo + hi)) / (0.5 * (hi - lo))
+    for k in range(1, 11):
+        obs, *_ = env.step(a)
+        expected = cmd + (alpha0 - cmd) * math.exp(-k * task.control_dt / tau)
+        assert task.actions.alpha_servo[0, 0] == pytest.approx(expected, abs=1e-5)
+    for _ in range(590):
+        obs, _, term, _, _ = env.step(a)
+    assert not term
+    assert abs(obs[OBS_INDEX["alpha"]] - cmd) < math.radians(1.0)
