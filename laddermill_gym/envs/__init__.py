@@ -29,7 +29,11 @@ ENV_IDS: dict[str, dict] = {
 
 
 def register_envs() -> None:
-    """Register :data:`ENV_IDS` with Gymnasium (idempotent)."""
+    """Register :data:`ENV_IDS` with Gymnasium (idempotent).
+
+    No ``max_episode_steps``: the environments truncate themselves at their ``episode_time`` argument, and a
+    TimeLimit wrapper fixed at registration would silently cut an episode made longer with
+    ``gym.make(id, episode_time=...)``."""
     import gymnasium as gym
 
     for env_id, kwargs in ENV_IDS.items():
