@@ -84,16 +84,21 @@ def elimination_tree(asm: Assembly) -> tuple[np.ndarray, np.ndarray, np.ndarray]
 
 def spline_coefficients(asm: Assembly) -> tuple[np.ndarray, float, float]:
     """Periodic cubic-spline coefficients of every wing type's table: array (n_types, n_int, 4, n_col),
-    grid start [rad] and spacing [rad]. All types must share one uniform grid."""
+    grid start [rad] and spacing [rad]. All types must share one uniform grid; a type without a table
+    (``aero`` None) gets zeros."""
     types = asm.wing_types
-    if not types:
-        return np.zeros((1, 1, 4, len(AERO_COLUMNS))), -np.pi, 2 * np.pi
-    grid = types[0].aero.alpha
+    tabled = [wt for wt in types if wt.aero is not None]
+    if not tabled:  # no wings, or bodies without a table (the rotorcraft): a zero table, never read
+        return np.zeros((max(1, len(types)), 1, 4, len(AERO_COLUMNS))), -np.pi, 2 * np.pi
+    grid = tabled[0].aero.alpha
     out = []
     for wt in types:
+        if wt.aero is None:
+            out.append(np.zeros((grid.size - 1, 4, len(AERO_COLUMNS))))
+            continue
         a = wt.aero.alpha
         if a.shape != grid.shape or not np.allclose(a, grid, rtol=0, atol=1e-12):
-            raise ValueError(f"wing type {wt.name!r}: aero table alpha grid differs from {types[0].name!r}")
+            raise ValueError(f"wing type {wt.name!r}: aero table alpha grid differs from {tabled[0].name!r}")
         sp = CubicSpline(a, wt.aero.values, bc_type="periodic", axis=0)
         out.append(np.ascontiguousarray(np.transpose(sp.c, (1, 0, 2))))
     da = float(grid[1] - grid[0])

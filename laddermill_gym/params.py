@@ -127,7 +127,7 @@ class WingType:
     r_ref : ndarray (3,)         aerodynamic reference point from the CG, body axes [m]
     attachment : ndarray (3,)    cable attachment point from the CG, body axes [m]
     control_limits : ndarray (3, 2)  lower/upper limits of elevator, rudder, aileron [rad]
-    aero : AeroTable
+    aero : AeroTable or None     tables; None for a body whose loads come from elsewhere (the rotorcraft)
     """
 
     name: str
@@ -139,7 +139,7 @@ class WingType:
     r_ref: np.ndarray
     attachment: np.ndarray
     control_limits: np.ndarray
-    aero: AeroTable
+    aero: AeroTable | None
 
 
 @dataclass(frozen=True)

@@ -56,6 +56,9 @@ class Simulator:
         self._sag = np.zeros(1) if assembly.sag else None
         self._caero = np.array([assembly.cable_cn0, assembly.cable_ct0]) if assembly.cable_aero else None
         self._planar = np.zeros(1) if assembly.dim == 2 else None
+        self._craft = self._make_craft()
+        # trailing kernel argument: omitted for wings, so they share the compiled code of the other callers
+        self._kx = () if self._craft is None else (self._craft,)
         if assembly.dim == 2 and (assembly.wind.direction_inf != 0.0 or np.any(assembly.wind.mod_direction != 0.0)):
             raise ValueError("in-plane (dim = 2) simulation needs a fixed wind direction: "
                              f"direction_inf = {assembly.wind.direction_inf}, "
@@ -66,6 +69,10 @@ class Simulator:
         self.initial_controls = (np.zeros(N_CONTROLS * assembly.n_wings) if controls is None
                                  else self._check_controls(controls).copy())
         self.reset()
+
+    def _make_craft(self):
+        """The kernels' ``craft`` argument: None for wings (subclasses with other bodies override this)."""
+        return None
 
     # ------------------------------------------------------------------ state handling
     @property
@@ -119,7 +126,8 @@ class Simulator:
             raise ValueError(f"rhs: x must have {self.n_state} and u {self.n_controls} entries, "
                              f"got {x.shape} and {u.shape}")
         dx = np.zeros(self.n_state)
-        if _rhs_kernel(float(t), x, u, dx, self.model, self.work, self._sag, self._caero, self._planar) != 0:
+        if _rhs_kernel(float(t), x, u, dx, self.model, self.work, self._sag, self._caero, self._planar,
+                       *self._kx) != 0:
             raise SimulationError(f"t = {t:.6g} s: the mass matrix is singular")
         return dx
 
@@ -133,7 +141,8 @@ class Simulator:
         s = self.settings
         if s.method == "rk4":
             status, done = rk4_advance(self.t, self.state, self.controls, s.dt, int(n_steps), self.model,
-                                       self.work, self._sag, self._caero, self._planar, self._limits)
+                                       self.work, self._sag, self._caero, self._planar, self._limits,
+                                       *self._kx)
             self.t += done * s.dt
         else:
             status, done = self._dp54(self.t + n_steps * s.dt)
@@ -145,7 +154,7 @@ class Simulator:
         s = self.settings
         status, acc, rej, _ = dp54_advance(self.t, t_end, self.state, self.controls, min(s.dt, t_end - self.t),
                                            s.rtol, s.atol, self.model, self.work, self._sag, self._caero,
-                                           self._planar, self._limits, 10_000_000)
+                                           self._planar, self._limits, 10_000_000, *self._kx)
         if status == OK:
             self.t = t_end
         return status, acc
@@ -156,7 +165,7 @@ class Simulator:
         status, acc, rej, _ = dp54_advance(self.t, float(t_end), self.state, self.controls,
                                            min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt,
                                            rtol or s.rtol, atol or s.atol, self.model, self.work, self._sag,
-                                           self._caero, self._planar, self._limits, 100_000_000)
+                                           self._caero, self._planar, self._limits, 100_000_000, *self._kx)
         if status != OK:
             self._raise(status)
         self.t = float(t_end)

@@ -16,10 +16,11 @@ OK, SINGULAR, NONFINITE, LIMIT = 0, 1, 2, 3
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def rhs(t, x, u, dx, M, W, sag, caero, planar):
-    """Dispatch to the 3D (planar is None) or the in-plane right-hand side (compile-time choice)."""
+def rhs(t, x, u, dx, M, W, sag, caero, planar, craft=None):
+    """Dispatch to the 3D (planar is None) or the in-plane right-hand side (compile-time choice); ``craft``
+    (3D only) makes body 0 Roberts' rotorcraft (kernels/craft.py)."""
     if planar is None:
-        return rhs3d(t, x, u, dx, M, W, sag, caero)
+        return rhs3d(t, x, u, dx, M, W, sag, caero, craft)
     return rhs2d(t, x, u, dx, M, W, sag, caero)
 
 
@@ -62,7 +63,7 @@ def normalise_and_check(x, M, limits, planar):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def rk4_advance(t, x, u, dt, n, M, W, sag, caero, planar, limits):
+def rk4_advance(t, x, u, dt, n, M, W, sag, caero, planar, limits, craft=None):
     """Advance x in place by n classic RK4 steps of size dt. Returns (status, steps done)."""
     k1, k2, k3, k4, xt, xp = W.k1, W.k2, W.k3, W.k4, W.xt, W.xp
     ns = x.size
@@ -71,19 +72,19 @@ def rk4_advance(t, x, u, dt, n, M, W, sag, caero, planar, limits):
     for step in range(n):
         for i in range(ns):
             xp[i] = x[i]
-        if rhs(t, x, u, k1, M, W, sag, caero, planar) != 0:
+        if rhs(t, x, u, k1, M, W, sag, caero, planar, craft) != 0:
             return SINGULAR, step
         for i in range(ns):
             xt[i] = x[i] + h2 * k1[i]
-        if rhs(t + h2, xt, u, k2, M, W, sag, caero, planar) != 0:
+        if rhs(t + h2, xt, u, k2, M, W, sag, caero, planar, craft) != 0:
             return SINGULAR, step
         for i in range(ns):
             xt[i] = x[i] + h2 * k2[i]
-        if rhs(t + h2, xt, u, k3, M, W, sag, caero, planar) != 0:
+        if rhs(t + h2, xt, u, k3, M, W, sag, caero, planar, craft) != 0:
             return SINGULAR, step
         for i in range(ns):
             xt[i] = x[i] + dt * k3[i]
-        if rhs(t + dt, xt, u, k4, M, W, sag, caero, planar) != 0:
+        if rhs(t + dt, xt, u, k4, M, W, sag, caero, planar, craft) != 0:
             return SINGULAR, step
         for i in range(ns):
             x[i] += h6 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i])
@@ -109,7 +110,7 @@ C2, C3, C4, C5 = 0.2, 0.3, 0.8, 8.0 / 9.0
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits, max_steps):
+def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits, max_steps, craft=None):
     """Integrate x in place from t to t_end with adaptive Dormand-Prince 5(4) (local extrapolation).
 
     h is the first trial step [s]. Returns (status, accepted steps, rejected steps, last step size).
@@ -120,7 +121,7 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits
     ns = x.size
     acc = 0
     rej = 0
-    if rhs(t, x, u, k1, M, W, sag, caero, planar) != 0:
+    if rhs(t, x, u, k1, M, W, sag, caero, planar, craft) != 0:
         return SINGULAR, acc, rej, h
     while t < t_end:
         if acc + rej >= max_steps:
@@ -131,27 +132,27 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits
             last = True
         for i in range(ns):
             xt[i] = x[i] + h * A21 * k1[i]
-        if rhs(t + C2 * h, xt, u, k2, M, W, sag, caero, planar) != 0:
+        if rhs(t + C2 * h, xt, u, k2, M, W, sag, caero, planar, craft) != 0:
             return SINGULAR, acc, rej, h
         for i in range(ns):
             xt[i] = x[i] + h * (A31 * k1[i] + A32 * k2[i])
-        if rhs(t + C3 * h, xt, u, k3, M, W, sag, caero, planar) != 0:
+        if rhs(t + C3 * h, xt, u, k3, M, W, sag, caero, planar, craft) != 0:
             return SINGULAR, acc, rej, h
         for i in range(ns):
             xt[i] = x[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])
-        if rhs(t + C4 * h, xt, u, k4, M, W, sag, caero, planar) != 0:
+        if rhs(t + C4 * h, xt, u, k4, M, W, sag, caero, planar, craft) != 0:
             return SINGULAR, acc, rej, h
         for i in range(ns):
             xt[i] = x[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
-        if rhs(t + C5 * h, xt, u, k5, M, W, sag, caero, planar) != 0:
+        if rhs(t + C5 * h, xt, u, k5, M, W, sag, caero, planar, craft) != 0:
             return SINGULAR, acc, rej, h
         for i in range(ns):
             xt[i] = x[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i])
-        if rhs(t + h, xt, u, k6, M, W, sag, caero, planar) != 0:
+        if rhs(t + h, xt, u, k6, M, W, sag, caero, planar, craft) != 0:
             return SINGULAR, acc, rej, h
         for i in range(ns):
             xp[i] = x[i] + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i])
-        if rhs(t + h, xp, u, k7, M, W, sag, caero, planar) != 0:
+        if rhs(t + h, xp, u, k7, M, W, sag, caero, planar, craft) != 0:
             return SINGULAR, acc, rej, h
         err = 0.0
         for i in range(ns):
@@ -170,7 +171,7 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits
             t = t_end if last else t + h
             acc += 1
             # first-same-as-last; after renormalisation re-evaluate for exactness
-            if rhs(t, x, u, k1, M, W, sag, caero, planar) != 0:
+            if rhs(t, x, u, k1, M, W, sag, caero, planar, craft) != 0:
                 return SINGULAR, acc, rej, h
             fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
             if not last:

@@ -15,6 +15,7 @@ import math
 from numba import njit
 
 from .aero import wing_aero
+from .craft import craft_loads
 from .cable import aero_load, lateral_elongation, tension_plain, tension_sag
 from .small import lu_factor, lu_solve_cols, lu_solve_vec, quat_rotation
 from .wind import density, modulation, wind_at, wind_rate
@@ -187,11 +188,13 @@ def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def rhs3d(t, x, u, dx, M, W, sag, caero):
+def rhs3d(t, x, u, dx, M, W, sag, caero, craft=None):
     """State derivative dx of the 3D model at time t, state x, controls u (3 per wing).
 
     M: packed model (simulator.pack_model), W: workspace (simulator.make_workspace). Element tensions
-    [N] are left in W.tension. Returns 0, or 1 if the mass matrix is singular.
+    [N] are left in W.tension. ``craft`` None: wings with their aerodynamics; otherwise body 0 is Roberts'
+    rotorcraft and craft = (cp, rp, cout, scratch) as in kernels/craft.py (compile-time choice).
+    Returns 0, or 1 if the mass matrix is singular.
     """
     nw = M.wtype.size
     nn = M.node_mass.size
@@ -248,7 +251,16 @@ def rhs3d(t, x, u, dx, M, W, sag, caero):
         my = -(r * hx - p * hz)
         mz = -(p * hy - q * hx)
         rho = density(-x[o + 2], wf)
-        if rho > 0.0:
+        if craft is not None:
+            craft_loads(x, o, R, u, wf, s_mod, d_mod, craft)
+            co = craft[2]
+            fx += co[0]
+            fy += co[1]
+            fz += co[2]
+            mx += co[3]
+            my += co[4]
+            mz += co[5]
+        elif rho > 0.0:
             wgx, wgy, wgz = wind_at(x[o + 2], wf, s_mod, d_mod)
             wbx = R[0, 0] * wgx + R[1, 0] * wgy + R[2, 0] * wgz
             wby = R[0, 1] * wgx + R[1, 1] * wgy + R[2, 1] * wgz
