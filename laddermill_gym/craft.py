@@ -148,6 +148,10 @@ class CraftSimulator(Simulator):
     def n_controls(self) -> int:
         return 2
 
+    @property
+    def control_labels(self) -> list[str]:
+        return list(CRAFT_CONTROL_NAMES)
+
     def _check_controls(self, u) -> np.ndarray:
         u = np.ascontiguousarray(u, dtype=np.float64).reshape(-1)
         if u.shape != (2,):

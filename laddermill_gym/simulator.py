@@ -83,6 +83,11 @@ class Simulator:
     def n_controls(self) -> int:
         return N_CONTROLS * self.assembly.n_wings
 
+    @property
+    def control_labels(self) -> list[str]:
+        """One label per control entry, e.g. 'wing0_elevator'."""
+        return [f"wing{k}_{n}" for k in range(self.assembly.n_wings) for n in CONTROL_NAMES]
+
     def _check_state(self, x) -> np.ndarray:
         x = np.ascontiguousarray(x, dtype=np.float64)
         if x.shape != (self.n_state,):

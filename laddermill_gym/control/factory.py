@@ -30,6 +30,28 @@ def _env_scene(env_kwargs: dict):
     return scene_trim(str(env_kwargs["scene"]), tuple(sorted(options.items())))
 
 
+def _craft_controller(spec: str, kw: dict) -> Controller:
+    """Open loop (trim collective, no differential) or the eq. (6) LQR for Rotorcraft-v0."""
+    from ..envs import rotorcraft_env as re_
+
+    if spec == "open_loop":
+        return re_.open_loop_controller(kw)
+    from .craft_lqr import DEFAULT_CRAFT_LQR, CraftLQRController, design_craft_lqr, load_craft_lqr_config
+
+    path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_CRAFT_LQR
+    cfg = load_craft_lqr_config(path)
+    craft_cfg = re_.load_craft_config(kw["craft"])
+    wind = craft_cfg.wind.v0 if kw.get("wind_speed") is None else float(kw["wind_speed"])
+    for name, mine, env in (("craft", cfg.craft, kw["craft"]), ("wind_speed", cfg.wind_speed, wind),
+                            ("control_period", cfg.control_period, kw["control_dt"])):
+        if mine != env:
+            raise ValueError(f"{path}: {name} = {mine!r} differs from the environment's {env!r}")
+    design = design_craft_lqr(cfg)
+    mid, half = re_._control_ranges(craft_cfg)
+    idx = (re_.OBS_Y, re_.OBS_PHI, re_.OBS_VY, re_.OBS_P)
+    return CraftLQRController(design.gain, idx, re_.N_CRAFT_OBS, design.u_trim[0], mid, half)
+
+
 def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> Controller:
     """The controller named by ``spec`` for environment ``env_id`` (with argument overrides ``env_kwargs``).
 
@@ -38,6 +60,8 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     if env_id not in ENV_IDS:
         raise ValueError(f"env_id = {env_id!r}: must be one of {sorted(ENV_IDS)}")
     kw = dict(ENV_IDS[env_id], **(env_kwargs or {}))
+    if "craft" in kw and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):
+        return _craft_controller(spec, kw)
     if spec in ("open_loop",) or spec == "lqr" or spec.startswith("lqr:"):
         if kw.get("action_mode", "tail") != "tail" or kw.get("groups", "per_wing") != "per_wing":
             raise ValueError(f"controller {spec!r} needs action_mode='tail' and groups='per_wing' "

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import control
 import numpy as np
 
-from ..params import CONTROL_NAMES, N_CONTROLS, Assembly
+from ..params import N_CONTROLS, Assembly
 from ..simulator import Simulator
 
 __all__ = [
@@ -211,15 +211,11 @@ def _state_labels(asm: Assembly) -> list[str]:
     return labels + [f"node{j}_{n}" for j in range(asm.n_nodes) for n in NODE_MINIMAL_NAMES]
 
 
-def _input_labels(asm: Assembly) -> list[str]:
-    return [f"wing{k}_{n}" for k in range(asm.n_wings) for n in CONTROL_NAMES]
-
-
 def minimal_system(sim: Simulator, name: str = "laddermill") -> control.NonlinearIOSystem:
     """``control.nlsys`` of the minimal-coordinate dynamics with labelled states and inputs; the outputs
     are the states."""
     asm = sim.assembly
-    return control.nlsys(minimal_rhs(sim), None, states=_state_labels(asm), inputs=_input_labels(asm),
+    return control.nlsys(minimal_rhs(sim), None, states=_state_labels(asm), inputs=sim.control_labels,
                          outputs=_state_labels(asm), name=name)
 
 
@@ -278,7 +274,7 @@ def linearize(sim: Simulator, x0: np.ndarray, u0: np.ndarray, t: float = 0.0, ep
     residual = float(np.max(np.abs(sys.updfcn(t, z0, u0, {})))) if z0.size else 0.0
     return Linearization(A=np.asarray(lin.A), B=np.asarray(lin.B), z0=z0, u0=u0,
                          x0=np.asarray(x0, dtype=float).copy(), state_names=tuple(_state_labels(asm)),
-                         input_names=tuple(_input_labels(asm)), n_wings=asm.n_wings, n_nodes=asm.n_nodes,
+                         input_names=tuple(sim.control_labels), n_wings=asm.n_wings, n_nodes=asm.n_nodes,
                          residual=residual)
 
 

@@ -1,0 +1,127 @@
+"""LQR for Roberts' tethered twin-rotor craft on his eq. (6): differential collective from (y, phi, y', phi').
+
+The design (:func:`design_craft_lqr`) trims the craft in the config's wind, derives eq. (6) there
+(:mod:`laddermill_gym.control.roll_lateral`), weights it by Bryson's rule from ``configs/agents/lqr_rotorcraft.yaml``
+and solves the discrete LQR at the control period (python-control ``c2d`` + ``dlqr``). :class:`CraftLQRController`
+applies the gain to environment observations with SB3's ``predict`` signature; the collective stays at the trim.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..configio import read_yaml
+from ..scene import CONFIG_DIR
+from .base import batch_observations
+from .lqr import DiscreteLQR, bryson_weights, discrete_lqr
+from .roll_lateral import RollLateralModel, derive_roll_lateral
+
+DEFAULT_CRAFT_LQR = CONFIG_DIR / "agents" / "lqr_rotorcraft.yaml"
+
+_MAX_STATE_KEYS = (("y", 1.0), ("phi_deg", math.pi / 180), ("vy", 1.0), ("p_deg_s", math.pi / 180))
+
+
+@dataclass(frozen=True)
+class CraftLQRConfig:
+    """An eq. (6) LQR design: craft name, design wind v0 [m/s], control period [s], Bryson limits of
+    (y [m], phi [rad], y' [m/s], p [rad/s]) and of the differential collective [rad]."""
+
+    file: Path
+    craft: str
+    wind_speed: float
+    control_period: float
+    max_state: np.ndarray
+    max_input: float
+
+
+def load_craft_lqr_config(path: str | Path = DEFAULT_CRAFT_LQR) -> CraftLQRConfig:
+    """Read a craft LQR YAML strictly (unknown keys or non-positive limits raise ConfigError naming them)."""
+    s = read_yaml(path)
+    craft = s.text("craft")
+    v = s.number("wind_speed", positive=True)
+    period = s.number("control_period", positive=True)
+    ms = s.section("max_state")
+    max_state = np.array([ms.number(k, positive=True) * scale for k, scale in _MAX_STATE_KEYS])
+    ms.done()
+    mi = s.section("max_input_deg")
+    max_input = math.radians(mi.number("differential", positive=True))
+    mi.done()
+    s.done()
+    return CraftLQRConfig(Path(path), craft, v, period, max_state, max_input)
+
+
+@dataclass(frozen=True)
+class CraftLQRDesign:
+    """The design: eq. (6) at the trim, the discrete LQR on it, the trim (x, u) and its simulator."""
+
+    config: CraftLQRConfig
+    model: RollLateralModel
+    lqr: DiscreteLQR
+    x_trim: np.ndarray
+    u_trim: np.ndarray
+    sim: Any
+
+    @property
+    def gain(self) -> np.ndarray:
+        """K (4,): dtheta = -K (y, phi, y', p) [rad per m, rad, m/s, rad/s]."""
+        return self.lqr.K[0].copy()
+
+
+def design_craft_lqr(config: CraftLQRConfig | str | Path = DEFAULT_CRAFT_LQR, craft=None) -> CraftLQRDesign:
+    """Trim the craft at the config's wind, derive eq. (6) and solve the discrete LQR.
+
+    ``craft``: a :class:`~laddermill_gym.craft.Craft` to use instead of loading ``config.craft`` (its wind speed
+    is replaced by the config's)."""
+    from ..craft import load_craft
+
+    cfg = config if isinstance(config, CraftLQRConfig) else load_craft_lqr_config(config)
+    base = load_craft(cfg.craft) if craft is None else craft
+    c = load_craft(config=base.config.with_wind_speed(cfg.wind_speed))
+    sim = c.simulator()
+    model = derive_roll_lateral(sim)
+    A, B = model.state_space()
+    Q, R = bryson_weights(cfg.max_state, np.array([cfg.max_input]))
+    lqr = discrete_lqr(A, B, Q, R, cfg.control_period)
+    return CraftLQRDesign(cfg, model, lqr, sim.state.copy(), sim.controls.copy(), sim)
+
+
+class CraftLQRController:
+    """Differential collective dtheta = -K (y, phi, y', p) from Rotorcraft-v0 observations; collective at trim.
+
+    Parameters
+    ----------
+    gain : ndarray (4,)             LQR gain on (y [m], phi [rad], y' [m/s], p [rad/s])
+    obs_index : sequence of 4 int   where the env's observation holds y, phi, y', p (in those units)
+    obs_dim : int                   length of the env's observation
+    collective : float              trim collective [rad]
+    mid, half_range : ndarray (2,)  the env's action map: control = mid + action * half_range [rad]
+    """
+
+    def __init__(self, gain, obs_index, obs_dim: int, collective: float, mid, half_range, action_dtype=np.float32):
+        self.gain = np.asarray(gain, float).reshape(4)
+        self.obs_index = np.asarray(obs_index, dtype=np.int64).reshape(4)
+        self.obs_dim = int(obs_dim)
+        self.collective = float(collective)
+        self.mid = np.asarray(mid, float).reshape(2)
+        self.half = np.asarray(half_range, float).reshape(2)
+        self.action_dtype = action_dtype
+
+    def controls(self, observation: np.ndarray) -> np.ndarray:
+        """Controls (collective, differential) [rad], shape (n, 2), for observations of shape (n, obs_dim)."""
+        z = observation[:, self.obs_index]
+        u = np.empty((observation.shape[0], 2))
+        u[:, 0] = self.collective
+        u[:, 1] = -z @ self.gain
+        return u
+
+    def predict(self, observation: np.ndarray, state: Any = None, episode_start: np.ndarray | None = None,
+                deterministic: bool = False) -> tuple[np.ndarray, Any]:
+        """SB3's signature: actions in [-1, 1] (clipped: the differential saturates at its limits)."""
+        obs, single = batch_observations(observation, self.obs_dim)
+        a = np.clip((self.controls(obs.astype(float)) - self.mid) / self.half, -1.0, 1.0).astype(self.action_dtype)
+        return (a[0] if single else a), state
