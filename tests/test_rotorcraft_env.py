@@ -1,0 +1,265 @@
+"""The rotorcraft environment (``laddermill_gym/Rotorcraft-v0``): conformance (Gymnasium's and SB3's checkers),
+determinism, pickling, rendering, the reward's terms, the starting state against the trim, episode ends, argument
+errors, the open-loop controller, and the open-loop lateral instability against the eigenvalues of a numerical
+Jacobian of the simulator's right-hand side (an independent linear analysis)."""
+
+from __future__ import annotations
+
+import math
+import pickle
+
+import gymnasium as gym
+import numpy as np
+import pytest
+from gymnasium.utils.env_checker import check_env
+
+import laddermill_gym  # noqa: F401  (registers the ids)
+from laddermill_gym.envs import ENV_IDS, DirectionStep, RandomPerturbation
+from laddermill_gym.envs.rotorcraft_env import (
+    CRAFT_OBS_FIELDS,
+    CRAFT_OBS_INDEX,
+    OBS_P,
+    OBS_PHI,
+    OBS_PSI,
+    OBS_R,
+    OBS_VY,
+    OBS_Y,
+    RotorcraftEnv,
+    open_loop_controller,
+    trim_action,
+)
+from laddermill_gym.states import euler_from_quaternion
+
+RC = "laddermill_gym/Rotorcraft-v0"
+
+
+def short(**kw):
+    return dict(ENV_IDS[RC], **{"episode_time": 10.0, **kw})
+
+
+def rollout(env, actions, seed):
+    obs, _ = env.reset(seed=seed)
+    out, rewards = [obs], []
+    for a in actions:
+        obs, r, term, trunc, _ = env.step(a)
+        out.append(obs)
+        rewards.append(r)
+        if term or trunc:
+            break
+    return np.array(out), np.array(rewards)
+
+
+def test_registration_and_gymnasium_checker():
+    env = gym.make(RC, episode_time=2.0, render_mode="rgb_array")
+    assert isinstance(env.unwrapped, RotorcraftEnv)
+    check_env(env.unwrapped)
+    assert env.observation_space.shape == (len(CRAFT_OBS_FIELDS),)
+    assert env.action_space.shape == (2,)
+    names = ("dy", "phi", "vy", "p", "psi", "r")
+    assert (OBS_Y, OBS_PHI, OBS_VY, OBS_P, OBS_PSI, OBS_R) == tuple(CRAFT_OBS_INDEX[k] for k in names)
+    env.close()
+
+
+def test_sb3_checker_and_ppo_smoke():
+    pytest.importorskip("stable_baselines3")
+    from stable_baselines3 import PPO
+    from stable_baselines3.common.env_checker import check_env as sb3_check
+
+    sb3_check(RotorcraftEnv(**short(episode_time=2.0)), warn=True)
+    env = RotorcraftEnv(**short(episode_time=5.0))
+    model = PPO("MlpPolicy", env, n_steps=128, batch_size=64, n_epochs=1, seed=0, device="cpu")
+    model.learn(total_timesteps=256)
+    action, _ = model.predict(env.reset(seed=0)[0], deterministic=True)
+    assert env.action_space.contains(action.astype(np.float32))
+
+
+def test_same_seed_same_rollout_and_seeds_matter():
+    kw = short(disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.05), DirectionStep(step=(-0.05, 0.05))],
+               initial_noise={"roll_rate": 0.02, "lateral_velocity": 0.1})
+    acts = np.random.default_rng(0).uniform(-0.5, 0.5, size=(60, 2)).astype(np.float32)
+    o1, r1 = rollout(RotorcraftEnv(**kw), acts, seed=7)
+    o2, r2 = rollout(RotorcraftEnv(**kw), acts, seed=7)
+    o3, _ = rollout(RotorcraftEnv(**kw), acts, seed=8)
+    np.testing.assert_array_equal(o1, o2)
+    np.testing.assert_array_equal(r1, r2)
+    assert not np.array_equal(o1, o3)
+
+
+def test_pickle_round_trip_continues_identically():
+    kw = short(disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.05)])
+    env = RotorcraftEnv(**kw)
+    env.reset(seed=3)
+    acts = np.random.default_rng(2).uniform(-0.3, 0.3, size=(40, 2)).astype(np.float32)
+    for a in acts[:20]:
+        env.step(a)
+    clone = pickle.loads(pickle.dumps(env))
+    for a in acts[20:]:
+        o1, r1, *_ = env.step(a)
+        o2, r2, *_ = clone.step(a)
+        np.testing.assert_array_equal(o1, o2)
+        assert r1 == r2
+
+
+def test_render_rgb_array():
+    env = RotorcraftEnv(render_mode="rgb_array", **short())
+    env.reset(seed=0)
+    frame = env.render()
+    assert frame.dtype == np.uint8 and frame.shape == (480, 640, 3)
+    assert len(np.unique(frame.reshape(-1, 3), axis=0)) > 10  # tethers, disks and axes drawn, not blank
+    env.close()
+
+
+def test_reset_is_the_trim():
+    """Offsets, velocities and rates zero, ratios one, attitude and blade pitch those of the trim state
+    (read from the trim's quaternion and controls, not through the environment's observation code)."""
+    env = RotorcraftEnv(**short())
+    obs, info = env.reset(seed=0)
+    i = CRAFT_OBS_INDEX
+    zero = [i[k] for k in ("dx", "dy", "dz", "vx", "vy", "vz", "p", "q", "r")]
+    np.testing.assert_allclose(obs[zero], 0.0, atol=1e-9)
+    ratios = [i[k] for k in ("thrust_right", "thrust_left", "tension_rear_right", "tension_rear_left", "tension_front")]
+    np.testing.assert_allclose(obs[ratios], 1.0, rtol=1e-6)
+    euler = euler_from_quaternion(env.x_trim[3:7])
+    np.testing.assert_allclose(obs[[i["phi"], i["theta"], i["psi"]]], euler, atol=1e-6)
+    assert abs(euler[0]) < 1e-9 and abs(euler[2]) < 1e-9 and 0.1 < euler[1] < 1.0  # level, nose up
+    np.testing.assert_allclose(obs[[i["pitch_right"], i["pitch_left"]]], env.u_trim[0], rtol=1e-6)
+    assert info["reference_power_W"] > 0
+    np.testing.assert_allclose(trim_action(), env.trim_action)
+    np.testing.assert_allclose(env.trim_action, [(4.0 - 5.0) / 10.0, 0.0], atol=1e-7)  # 4 deg in [-5, 15] deg
+
+
+def test_reward_terms_sum_to_reward_and_clipping_counted():
+    env = RotorcraftEnv(**short(disturbances=[DirectionStep(step=0.05, time=0.0)], reward={"failure_penalty": 5.0}))
+    env.reset(seed=0)
+    _, r, _, _, info = env.step(env.trim_action)
+    assert abs(info["reward_power"] - 1.0) < 2e-2  # one period near the trim
+    rng = np.random.default_rng(1)
+    for _ in range(40):
+        a = rng.uniform(-1.5, 1.5, size=2).astype(np.float32)
+        _, r, term, _, info = env.step(a)
+        terms = [v for k, v in info.items() if k.startswith("reward_")]
+        assert len(terms) == 5 and math.isclose(r, sum(terms), rel_tol=1e-12, abs_tol=1e-12)
+        assert info["n_clipped"] == int(np.count_nonzero(np.abs(a) > 1.0))
+        if term:
+            assert info["reward_failure"] == -5.0
+            break
+
+
+def test_huge_differential_terminates_with_reason():
+    env = RotorcraftEnv(**short(episode_time=60.0))
+    env.reset(seed=0)
+    a = np.array([env.trim_action[0], 1.0], dtype=np.float32)  # full differential held
+    for _ in range(1200):
+        _, _, term, trunc, info = env.step(a)
+        if term or trunc:
+            break
+    assert term and not trunc
+    assert info["failure"] != 0 and info["failure_name"] and "t = " in info["failure_reason"]
+    assert info["t"] < 10.0  # rolls over within seconds
+    with pytest.raises(RuntimeError, match="reset"):
+        env.step(a)
+
+
+@pytest.mark.parametrize("termination, name", [({"min_altitude": 1000.0}, "ground contact"),
+                                               ({"breaking_factor": 1e-3}, "tether over its breaking load")])
+def test_other_failures_are_named(termination, name):
+    env = RotorcraftEnv(**short(termination=termination))
+    env.reset(seed=0)
+    _, _, term, trunc, info = env.step(env.trim_action)
+    assert term and not trunc and info["failure_name"] == name
+
+
+def test_time_limit_truncates():
+    env = RotorcraftEnv(**short(episode_time=0.2))
+    env.reset(seed=0)
+    flags = [env.step(env.trim_action)[2:4] for _ in range(4)]
+    assert flags == [(False, False)] * 3 + [(False, True)]
+
+
+@pytest.mark.parametrize("kw, words", [
+    ({"control_dt": 0.033}, "control_dt = 0.033"),
+    ({"episode_time": -1.0}, "episode_time = -1.0"),
+    ({"wind_speed": float("nan")}, "wind_speed = nan"),
+    ({"physics_dt": 0.0}, "physics_dt = 0.0"),
+    ({"collective": 1.0}, "collective = 1.0"),
+    ({"craft": "no_such_craft"}, "craft = 'no_such_craft'"),
+    ({"reward": {"lateral_scale": -1.0}}, "reward.lateral_scale = -1.0"),
+    ({"reward": {"bogus": 1.0}}, "bogus"),
+    ({"termination": {"max_abs_roll_deg": 0.0}}, "termination.max_abs_roll_deg = 0.0"),
+    ({"initial_noise": {"roll_rate": -1.0}}, "initial_noise.roll_rate = -1.0"),
+    ({"disturbances": [{"type": "Nope"}]}, "disturbances[0].type = 'Nope'"),
+    ({"render_mode": "movie"}, "render_mode = 'movie'"),
+])
+def test_bad_arguments_raise_naming_them(kw, words):
+    with pytest.raises(ValueError) as err:
+        RotorcraftEnv(**short(**kw))
+    assert words in str(err.value)
+
+
+def test_bad_action_shape_raises():
+    env = RotorcraftEnv(**short())
+    env.reset(seed=0)
+    with pytest.raises(ValueError, match="action"):
+        env.step(np.zeros(3, dtype=np.float32))
+
+
+def test_open_loop_controller_holds_trim():
+    env = RotorcraftEnv(**short())
+    obs, _ = env.reset(seed=0)
+    ctrl = open_loop_controller(ENV_IDS[RC])
+    a, state = ctrl.predict(obs)
+    np.testing.assert_allclose(a, env.trim_action)
+    batch, _ = ctrl.predict(np.stack([obs, obs, obs]))
+    assert batch.shape == (3, 2) and state is None
+    from laddermill_gym.control.factory import make_controller
+
+    np.testing.assert_allclose(make_controller("open_loop", RC).predict(obs)[0], env.trim_action)
+
+
+def _jacobian_eigenvalues(env):
+    """Eigenvalues of d(rhs)/dx at the trim by central differences on the simulator's rhs."""
+    sim, x, u = env.sim, np.array(env.x_trim), np.array(env.u_trim)
+    n = x.size
+    J = np.empty((n, n))
+    for i in range(n):
+        h = 1e-6 * max(1.0, abs(x[i]))
+        e = np.zeros(n)
+        e[i] = h
+        J[:, i] = (sim.rhs(0.0, x + e, u) - sim.rhs(0.0, x - e, u)) / (2.0 * h)
+    return np.linalg.eigvals(J)
+
+
+def test_open_loop_lateral_instability_matches_linear_growth_rate():
+    """Trim controls held at 10 m/s after the 0.01 rad direction step: y oscillates with a growing envelope
+    (Roberts sec. 7). Its growth rate (half swings between successive extrema of y, which removes the offset
+    of the turned wind's equilibrium) and half period match the unstable oscillatory eigenvalue of the
+    numerical Jacobian within 25 % and 15 %."""
+    env = RotorcraftEnv(**dict(ENV_IDS[RC], episode_time=60.0))
+    assert env.craft.config.wind.v0 == 10.0
+    ev = _jacobian_eigenvalues(env)
+    lam = ev[np.argmax(ev.real)]
+    assert lam.real > 0 and abs(lam.imag) > 0.1  # one unstable oscillatory mode
+    assert np.sum(ev.real > 1e-6) == 2  # ... and only that pair
+    obs, _ = env.reset(seed=0)
+    a = open_loop_controller(ENV_IDS[RC]).predict(obs)[0]
+    ts, ys = [0.0], [float(obs[OBS_Y])]
+    while True:
+        obs, _, term, trunc, info = env.step(a)
+        ts.append(info["t"])
+        ys.append(float(obs[OBS_Y]))
+        if term or trunc:
+            break
+    ts, ys = np.array(ts), np.array(ys)
+    early, late = np.max(np.abs(ys[ts < 15.0])), np.max(np.abs(ys[ts > ts[-1] - 20.0]))
+    assert late > 3.0 * early  # |y| grows
+    d = np.diff(ys)
+    ext = np.flatnonzero(np.sign(d[1:]) != np.sign(d[:-1])) + 1
+    ext = ext[ts[ext] > 3.0]  # after the step and its fast transients
+    amp = 0.5 * np.abs(np.diff(ys[ext]))
+    tm = 0.5 * (ts[ext][1:] + ts[ext][:-1])
+    lin = amp < 5.0  # linear regime: a few metres on 60 m tethers
+    assert np.count_nonzero(lin) >= 3
+    sigma = np.polyfit(tm[lin], np.log(amp[lin]), 1)[0]
+    assert abs(sigma - lam.real) < 0.25 * lam.real, (sigma, lam)
+    half_period = np.mean(np.diff(ts[ext][: np.count_nonzero(lin) + 1]))
+    assert abs(half_period - math.pi / abs(lam.imag)) < 0.15 * math.pi / abs(lam.imag), (half_period, lam)
