@@ -22,6 +22,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.optimize import brentq
 
 from .builders import _ElementList
 from .craft_config import CraftConfig, load_craft_config
@@ -196,6 +197,36 @@ class CraftSimulator(Simulator):
         return v
 
 
+def _damped_newton(sim, u, z, iterations: int = 60):
+    """Equilibrium unknowns z by damped Newton with a central-difference Jacobian (hybrd can stall on the soft
+    yaw direction). Returns (z, |residual|)."""
+    def resid(zz):
+        return _accelerations(sim, sim.rhs(0.0, _unpack_unknowns(sim, zz), u))
+
+    r = resid(z)
+    for _ in range(iterations):
+        J = np.empty((r.size, z.size))
+        for i in range(z.size):
+            h = 1e-6 * max(1.0, abs(z[i]))
+            e = np.zeros(z.size)
+            e[i] = h
+            J[:, i] = (resid(z + e) - resid(z - e)) / (2.0 * h)
+        step = np.linalg.lstsq(J, -r, rcond=None)[0]
+        lam = 1.0
+        r_new = r
+        while lam > 1e-4:
+            r_new = resid(z + lam * step)
+            if np.all(np.isfinite(r_new)) and np.linalg.norm(r_new) < np.linalg.norm(r):
+                break
+            lam *= 0.5
+        if not np.linalg.norm(r_new) < np.linalg.norm(r):
+            break
+        z, r = z + lam * step, r_new
+        if np.linalg.norm(r) < 1e-9 * math.sqrt(z.size):
+            break
+    return z, float(np.linalg.norm(r))
+
+
 @dataclass(frozen=True)
 class Craft:
     """A loaded craft: config, built assembly and tether layout. :meth:`simulator` trims and compiles."""
@@ -219,44 +250,59 @@ class Craft:
 
     def trim(self, collective: float | None = None, x_guess: np.ndarray | None = None) -> np.ndarray:
         """Static equilibrium in the config's steady wind at the given collective [rad] (default: the
-        config's initial collective), no differential. Returns the state (velocities zero)."""
+        config's initial collective), no differential. Returns the state (velocities zero).
+
+        Starts from ``x_guess`` (e.g. the trim at a nearby wind speed) and, if that fails, from the design pose.
+        Raises RuntimeError (naming collective, wind and residual) when neither converges."""
         th = self.config.initial_collective if collective is None else float(collective)
         u = np.array([th, 0.0])
         sim = CraftSimulator(self.config, self.assembly, self.layout, self.design_state(), u)
-        x0 = self.design_state() if x_guess is None else np.asarray(x_guess, float)
-        try:
-            return static_equilibrium(sim, x0, controls=u)
-        except RuntimeError:
-            pass
-        # hybrd can stall on the soft yaw direction: damped Newton with a central-difference Jacobian
-        z = _pack_unknowns(sim, x0)
+        guesses = [self.design_state()] if x_guess is None else [np.asarray(x_guess, float), self.design_state()]
+        residual = math.inf
+        for x0 in guesses:
+            try:
+                return static_equilibrium(sim, x0, controls=u)
+            except RuntimeError:
+                pass
+            z, r = _damped_newton(sim, u, _pack_unknowns(sim, x0))
+            if r < 1e-6 * math.sqrt(z.size):
+                return _unpack_unknowns(sim, z)
+            residual = min(residual, r)
+        raise RuntimeError(f"craft trim at collective {math.degrees(th):.3g} deg, wind v0 = "
+                           f"{self.config.wind.v0:.4g} m/s: no equilibrium found (|residual| = "
+                           f"{residual:.3g} m/s^2); the rotors may not carry the craft")
 
-        def resid(zz):
-            return _accelerations(sim, sim.rhs(0.0, _unpack_unknowns(sim, zz), u))
+    def operating_collective(self, x_guess: np.ndarray | None = None, step: float = math.radians(0.5)
+                             ) -> tuple[float, np.ndarray]:
+        """Collective [rad] of the blade-limited operating schedule and its trim state: the config's collective,
+        or, where that drives a retreating blade tip past the blade-incidence limit (Roberts: 13 deg), the
+        collective that puts the worse tip exactly at the limit (stepped down by ``step``, then Brent's method).
+        Raises RuntimeError if the craft cannot be trimmed within the collective limits."""
+        lim = self.config.blade_incidence_limit
+        cache: dict[float, np.ndarray] = {}
 
-        r = resid(z)
-        for _ in range(60):
-            J = np.empty((r.size, z.size))
-            for i in range(z.size):
-                h = 1e-6 * max(1.0, abs(z[i]))
-                e = np.zeros(z.size)
-                e[i] = h
-                J[:, i] = (resid(z + e) - resid(z - e)) / (2.0 * h)
-            step = np.linalg.lstsq(J, -r, rcond=None)[0]
-            lam = 1.0
-            while lam > 1e-4:
-                r_new = resid(z + lam * step)
-                if np.all(np.isfinite(r_new)) and np.linalg.norm(r_new) < np.linalg.norm(r):
-                    break
-                lam *= 0.5
-            z, r = z + lam * step, r_new
-            if np.linalg.norm(r) < 1e-9 * math.sqrt(z.size):
+        last = [x_guess]
+
+        def excess(th):
+            x = self.trim(th, x_guess=last[0])
+            cache[th] = last[0] = x
+            s = CraftSimulator(self.config, self.assembly, self.layout, x, np.array([th, 0.0]))
+            return float(np.max(s.rotor_outputs()["tip_incidence_rad"])) - lim
+
+        th = self.config.initial_collective
+        if excess(th) <= 0.0:
+            return th, cache[th]
+        lo = th
+        while True:
+            lo -= step
+            if lo < self.config.collective_limits[0]:
+                lim_deg = math.degrees(self.config.collective_limits[0])
+                raise RuntimeError(f"wind v0 = {self.config.wind.v0:.4g} m/s: the blade-incidence limit needs a "
+                                   f"collective below its lower limit {lim_deg:.4g} deg")
+            if excess(lo) <= 0.0:
                 break
-        if not np.linalg.norm(r) < 1e-6 * math.sqrt(z.size):
-            raise RuntimeError(f"craft trim at collective {math.degrees(th):.3g} deg, wind v0 = "
-                               f"{self.config.wind.v0:.4g} m/s: no equilibrium found (|residual| = "
-                               f"{np.linalg.norm(r):.3g} m/s^2); the rotors may not carry the craft")
-        return _unpack_unknowns(sim, z)
+        th = float(brentq(excess, lo, lo + step, xtol=1e-5))
+        return th, self.trim(th, x_guess=cache[lo])
 
     def simulator(self, collective: float | None = None, state: np.ndarray | None = None) -> CraftSimulator:
         """A craft simulator started at ``state`` (default: trimmed at ``collective``)."""

@@ -24,10 +24,10 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import brentq
 
-from ..craft import Craft, CraftSimulator, load_craft
 from ..control.craft_lqr import design_craft_lqr
 from ..control.linearize import linearize
 from ..control.roll_lateral import derive_roll_lateral, restricted_jacobian, sim_euler
+from ..craft import Craft, CraftSimulator, load_craft
 from ..simulator import SimulationError
 from ..states import rotation_from_euler
 
@@ -61,33 +61,50 @@ def jacobian_check(craft: Craft) -> dict:
     return out
 
 
-def growth_rate(craft: Craft, x_guess: np.ndarray | None = None) -> tuple[float, np.ndarray, complex]:
-    """Largest real part [1/s] of the full linearised craft's eigenvalues at its trim, the trim state and the
-    eigenvalue itself."""
-    x = craft.trim(x_guess=x_guess)
-    u = np.array([craft.config.initial_collective, 0.0])
+def lateral_mode(craft: Craft, x: np.ndarray, collective: float) -> complex:
+    """Eigenvalue [1/s] of the craft's lateral mode at the trim x: of the slow (|Im| < 5 rad/s) eigenvalues of the
+    full linearisation (minimal coordinates), the one whose eigenvector moves the CG sideways the most."""
+    u = np.array([collective, 0.0])
     sim = CraftSimulator(craft.config, craft.assembly, craft.layout, x, u)
-    ev = np.linalg.eigvals(linearize(sim, x, u).A)
-    i = int(np.argmax(ev.real))
-    return float(ev[i].real), x, complex(ev[i])
+    lin = linearize(sim, x, u)
+    w, V = np.linalg.eig(lin.A)
+    iy = list(lin.state_names).index("wing0_y")
+    share = np.abs(V[iy]) / np.linalg.norm(V, axis=0)
+    slow = np.abs(w.imag) < 5.0
+    return complex(w[np.argmax(np.where(slow, share, -1.0))])
 
 
-def growth_scan(craft: Craft, speeds) -> tuple[np.ndarray, np.ndarray]:
-    """Growth rates [1/s] at the wind speeds ``speeds`` [m/s] (trims continued from one speed to the next)."""
-    xg, rates, freqs = None, [], []
+def growth_rate(craft: Craft, x_guess: np.ndarray | None = None) -> tuple[float, np.ndarray, complex, float]:
+    """Growth rate [1/s] of the lateral mode at the blade-limited operating point (:meth:`Craft.operating_collective`),
+    the trim state, the eigenvalue and the collective [rad]."""
+    th, x = craft.operating_collective(x_guess)
+    ev = lateral_mode(craft, x, th)
+    return ev.real, x, ev, th
+
+
+def growth_scan(craft: Craft, speeds) -> dict[str, np.ndarray]:
+    """Lateral-mode growth rate [1/s], frequency [rad/s] and operating collective [rad] at the wind speeds
+    ``speeds`` [m/s] (trims continued from one speed to the next)."""
+    xg, out = None, {"growth": [], "frequency": [], "collective": [], "trims": []}
     for v in speeds:
         c = load_craft(config=craft.config.with_wind_speed(float(v)))
-        r, xg, ev = growth_rate(c, xg)
-        rates.append(r)
-        freqs.append(abs(ev.imag))
-    return np.array(rates), np.array(freqs)
+        r, xg, ev, th = growth_rate(c, xg)
+        out["growth"].append(r)
+        out["frequency"].append(abs(ev.imag))
+        out["collective"].append(th)
+        out["trims"].append(xg)
+    return {k: np.array(v) for k, v in out.items()}
 
 
-def critical_wind_speed(craft: Craft, lo: float, hi: float, tol: float = 0.01) -> float:
-    """Wind speed v0 [m/s] in [lo, hi] where the least stable mode's growth rate crosses zero (brentq); the
-    growth rate must change sign over the bracket."""
+def critical_wind_speed(craft: Craft, lo: float, hi: float, tol: float = 0.01,
+                        x_guess: np.ndarray | None = None) -> float:
+    """Wind speed v0 [m/s] in [lo, hi] where the lateral mode's growth rate crosses zero (Brent's method); the
+    growth rate must change sign over the bracket. ``x_guess``: a trim near the bracket (continued)."""
+    last = [x_guess]
+
     def g(v):
-        return growth_rate(load_craft(config=craft.config.with_wind_speed(v)))[0]
+        r, last[0], _, _ = growth_rate(load_craft(config=craft.config.with_wind_speed(v)), last[0])
+        return r
 
     return float(brentq(g, lo, hi, xtol=tol))
 
@@ -143,7 +160,7 @@ def plot(scan_v, scan_rate, v_crit, runs, path: Path) -> None:
     ax[0].axhline(0.0, color="k", lw=0.8)
     ax[0].axvline(v_crit, color="r", ls="--", label=f"critical {v_crit:.2f} m/s")
     ax[0].set(xlabel="wind speed v0 [m/s]", ylabel="growth rate of the lateral mode [1/s]",
-              title="open loop, full linearised craft")
+              title="open loop, full linearised craft, blade-limited collective")
     ax[0].legend()
     for name, r in runs.items():
         ax[1].plot(r["t"], r["y"], label=name)
@@ -168,7 +185,7 @@ def main(argv=None) -> dict:
 
     chk = jacobian_check(straight_tether_variant(load_craft(config=craft.config.with_wind_speed(
         design.config.wind_speed))))
-    print("1. eq. (6) at the trim (v0 = %.1f m/s), straight single-element tethers" % design.config.wind_speed)
+    print(f"1. eq. (6) at the trim (v0 = {design.config.wind_speed:.1f} m/s), straight single-element tethers")
     print("   M =", np.array(chk["M"]).tolist(), "\n   D =", np.array(chk["D"]).tolist(),
           "\n   K =", np.array(chk["K"]).tolist(), "\n   (alpha, beta) =", chk["alpha_beta"])
     for name in ("stiffness", "damping", "input"):
@@ -176,16 +193,18 @@ def main(argv=None) -> dict:
         print(f"   {'':9s} jac {np.round(chk[name]['jacobian'], 4).tolist()}  max rel error "
               f"{chk[name]['max_rel_error']:.2e}")
 
-    speeds = np.arange(7.0, 25.1, 1.5 if args.quick else 1.0)
-    rates, freqs = growth_scan(craft, speeds)
+    speeds = np.arange(7.0, 22.1, 1.5 if args.quick else 1.0)
+    scan = growth_scan(craft, speeds)
+    rates = scan["growth"]
     sign = np.flatnonzero(np.diff(np.sign(rates)) != 0)
     if sign.size == 0:
         raise RuntimeError(f"no sign change of the growth rate over {speeds[0]}..{speeds[-1]} m/s: {rates}")
-    v_crit = critical_wind_speed(craft, speeds[sign[0]], speeds[sign[0] + 1])
-    print("2. least stable mode of the full craft against the wind speed (collective "
-          f"{math.degrees(craft.config.initial_collective):.1f} deg, rotor speed {craft.config.rotor_speed} rad/s)")
-    for v, r, f in zip(speeds, rates, freqs, strict=True):
-        print(f"   v0 = {v:5.1f} m/s  growth {r:+.4f} 1/s  frequency {f:.3f} rad/s")
+    v_crit = critical_wind_speed(craft, speeds[sign[0]], speeds[sign[0] + 1], x_guess=scan["trims"][sign[0]])
+    print("2. lateral mode of the full craft against the wind speed (blade-limited collective, rotor speed "
+          f"{craft.config.rotor_speed} rad/s)")
+    for v, r, f, th in zip(speeds, rates, scan["frequency"], scan["collective"], strict=True):
+        print(f"   v0 = {v:5.1f} m/s  collective {math.degrees(th):5.2f} deg  growth {r:+.4f} 1/s  "
+              f"frequency {f:.3f} rad/s")
     print(f"   critical wind speed: {v_crit:.2f} m/s (unstable below)")
 
     t_end = 60.0 if args.quick else 120.0
@@ -193,21 +212,22 @@ def main(argv=None) -> dict:
     for step in (0.01, 0.1):
         runs[f"open loop, {step} rad"] = closed_loop_run(design, t_end, controller=False, step=step)
         runs[f"eq. (6) LQR, {step} rad"] = closed_loop_run(design, t_end, controller=True, step=step)
-    print("3. direction steps at t = 1 s, v0 = %.1f m/s, %g s; LQR gain K = %s, discrete closed loop max |z| = %.4f"
-          % (design.config.wind_speed, t_end, np.round(design.gain, 4).tolist(),
-             float(np.max(np.abs(design.lqr.closed_loop)))))
+    zmax = float(np.max(np.abs(design.lqr.closed_loop)))
+    print(f"3. direction steps at t = 1 s, v0 = {design.config.wind_speed:.1f} m/s, {t_end:g} s; LQR gain "
+          f"K = {np.round(design.gain, 4).tolist()}, discrete closed loop max |z| = {zmax:.4f}")
     summary = {}
     for name, r in runs.items():
         late = r["t"] > r["t"][-1] / 2
         summary[name] = {"failure_time_s": r["failure_time"], "max_abs_y_m": float(np.max(np.abs(r["y"]))),
                          "max_abs_y_second_half_m": float(np.max(np.abs(r["y"][late]))),
                          "max_abs_dtheta_deg": float(np.degrees(np.max(np.abs(r["dtheta"]))))}
-        print(f"   {name:22s} failure at {r['failure_time']:.1f} s" if math.isfinite(r["failure_time"])
-              else f"   {name:22s} no failure", "| max |y| %.3f m, second half %.4f m, max |dtheta| %.2f deg"
-              % (summary[name]["max_abs_y_m"], summary[name]["max_abs_y_second_half_m"],
-                 summary[name]["max_abs_dtheta_deg"]))
+        sm = summary[name]
+        head = (f"failure at {r['failure_time']:.1f} s" if math.isfinite(r["failure_time"]) else "no failure")
+        print(f"   {name:22s} {head} | max |y| {sm['max_abs_y_m']:.3f} m, second half "
+              f"{sm['max_abs_y_second_half_m']:.4f} m, max |dtheta| {sm['max_abs_dtheta_deg']:.2f} deg")
     plot(speeds, rates, v_crit, runs, args.out / "rotorcraft_stability.png")
     result = {"jacobian_check": chk, "speeds": speeds.tolist(), "growth": rates.tolist(),
+              "collective_deg": np.degrees(scan["collective"]).tolist(),
               "critical_wind_speed": v_crit, "gain": design.gain.tolist(),
               "closed_loop_max_abs_z": float(np.max(np.abs(design.lqr.closed_loop))), "runs": summary}
     (args.out / "rotorcraft_stability.json").write_text(json.dumps(result, indent=1))
