@@ -62,15 +62,16 @@ def jacobian_check(craft: Craft) -> dict:
 
 
 def lateral_mode(craft: Craft, x: np.ndarray, collective: float) -> complex:
-    """Eigenvalue [1/s] of the craft's lateral mode at the trim x: of the slow (|Im| < 5 rad/s) eigenvalues of the
-    full linearisation (minimal coordinates), the one whose eigenvector moves the CG sideways the most."""
+    """Eigenvalue [1/s] of the craft's lateral mode at the trim x: of the slow oscillatory eigenvalues
+    (0.05 < |Im| < 5 rad/s) of the full linearisation (minimal coordinates), the one whose eigenvector moves the CG
+    sideways the most."""
     u = np.array([collective, 0.0])
     sim = CraftSimulator(craft.config, craft.assembly, craft.layout, x, u)
     lin = linearize(sim, x, u)
     w, V = np.linalg.eig(lin.A)
     iy = list(lin.state_names).index("wing0_y")
     share = np.abs(V[iy]) / np.linalg.norm(V, axis=0)
-    slow = np.abs(w.imag) < 5.0
+    slow = (np.abs(w.imag) < 5.0) & (np.abs(w.imag) > 0.05)
     return complex(w[np.argmax(np.where(slow, share, -1.0))])
 
 
