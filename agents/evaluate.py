@@ -8,7 +8,8 @@ SB3 training run (its best model) or model file (``<run>/model.zip`` for the las
 :mod:`laddermill_gym.control.factory`. Episode i uses seed i, so every
 controller meets the same disturbances. Writes ``summary.csv`` (one row per controller and episode: return,
 length [s], failure, mean power [W], largest lateral excursion [m], share of clipped action entries),
-``lateral.csv`` (controller, t, wing, lateral offset of episode 0) and ``lateral.png``.
+``lateral.csv`` (controller, t, wing, lateral offset of episode 0) and ``lateral.png``. On Rotorcraft-v0 the
+"wing" is the craft (one lateral CG offset) and the failure names are the craft's.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from __future__ import annotations
 import argparse
 import csv
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -43,7 +44,8 @@ class EpisodeResults:
     returns (n,) [-];  lengths_s (n,) [s];  failures (n,) failure codes (0 = ran to the time limit);
     mean_power_W (n,);  max_lateral_m (n, n_wings) largest |lateral offset| of every wing;
     clipped_fraction (n,) share of action entries outside [-1, 1];
-    t (T + 1,) [s] and lateral_m (n, T + 1, n_wings) lateral offsets (nan after an episode ended), if recorded.
+    t (T + 1,) [s] and lateral_m (n, T + 1, n_wings) lateral offsets (nan after an episode ended), if recorded;
+    failure_names: failure code -> name of the environment (the wings' :data:`FAILURES` or the craft's).
     """
 
     returns: np.ndarray
@@ -54,31 +56,36 @@ class EpisodeResults:
     clipped_fraction: np.ndarray
     t: np.ndarray | None = None
     lateral_m: np.ndarray | None = None
+    failure_names: dict[int, str] = field(default_factory=lambda: dict(FAILURES))
 
 
 def run_episodes(controller, env, n_episodes: int | None = None, record: bool = True,
                  progress: bool = False) -> EpisodeResults:
     """Run ``controller`` deterministically on every copy of the vector env ``env``
-    (:class:`~laddermill_gym.envs.vector.WingVectorEnv`, seeds 0 .. num_envs - 1), each copy to the end of its
-    first episode."""
+    (:class:`~laddermill_gym.envs.vector.WingVectorEnv` or
+    :class:`~laddermill_gym.envs.rotorcraft_vector.RotorcraftVectorEnv`, seeds 0 .. num_envs - 1), each copy to
+    the end of its first episode. The lateral offsets come from ``env.lateral_offsets(obs)`` where the env has
+    it, else from the wing observation layout."""
     n = env.num_envs
     if n_episodes is not None and n_episodes != n:
         raise ValueError(f"n_episodes = {n_episodes}: the env has {n} copies")
     task = env.task
     nw = task.n_wings
+    lateral = getattr(env, "lateral_offsets", None) or (
+        lambda o: o.reshape(n, nw, N_OBS_PER_WING)[:, :, OBS_INDEX["dy"]].astype(float))
     obs, _ = env.reset(seed=list(range(n)))
     alive = np.ones(n, bool)
     ret, power, steps, clipped = np.zeros(n), np.zeros(n), np.zeros(n, int), np.zeros(n)
     failures = np.zeros(n, int)
     lengths = np.zeros(n)
-    dy0 = obs.reshape(n, nw, N_OBS_PER_WING)[:, :, OBS_INDEX["dy"]].astype(float)
+    dy0 = lateral(obs)
     max_lat = np.abs(dy0)
     series = [dy0] if record else None
     bar = tqdm(total=task.n_steps_max, unit="step", disable=not progress, leave=False)
     while alive.any():
         a, _ = controller.predict(obs, deterministic=True)
         obs, r, term, trunc, info = env.step(a)
-        dy = obs.reshape(n, nw, N_OBS_PER_WING)[:, :, OBS_INDEX["dy"]].astype(float)
+        dy = lateral(obs)
         ret[alive] += r[alive]
         power[alive] += info["power_W"][alive]
         clipped[alive] += info["n_clipped"][alive]
@@ -93,7 +100,8 @@ def run_episodes(controller, env, n_episodes: int | None = None, record: bool = 
         bar.update(1)
     bar.close()
     out = EpisodeResults(returns=ret, lengths_s=lengths, failures=failures, mean_power_W=power / np.maximum(steps, 1),
-                         max_lateral_m=max_lat, clipped_fraction=clipped / np.maximum(steps * task.n_actions, 1))
+                         max_lateral_m=max_lat, clipped_fraction=clipped / np.maximum(steps * task.n_actions, 1),
+                         failure_names=dict(getattr(env, "failure_names", FAILURES)))
     if record:
         lat = np.stack(series, axis=1)
         out.t = task.control_dt * np.arange(lat.shape[1])
@@ -109,7 +117,8 @@ def write_tables(out: Path, results: dict[str, EpisodeResults]) -> None:
                     "clipped_fraction"])
         for name, res in results.items():
             for i in range(len(res.returns)):
-                w.writerow([name, i, f"{res.returns[i]:.4f}", f"{res.lengths_s[i]:.2f}", FAILURES[int(res.failures[i])],
+                fail = res.failure_names[int(res.failures[i])]
+                w.writerow([name, i, f"{res.returns[i]:.4f}", f"{res.lengths_s[i]:.2f}", fail,
                             f"{res.mean_power_W[i]:.1f}", f"{res.max_lateral_m[i].max():.4f}",
                             f"{res.clipped_fraction[i]:.4f}"])
     with open(out / "lateral.csv", "w", newline="") as fh:  # long format: the episodes end at different times
@@ -172,16 +181,44 @@ def controller_label(spec: str) -> str:
     return path.name if path.exists() else spec
 
 
-def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dict, out: Path,
-             progress: bool = True) -> dict[str, EpisodeResults]:
-    from laddermill_gym.control.factory import make_controller
+def check_env_kwargs(env_id: str, env_kwargs: dict) -> None:
+    """ValueError naming an argument (and its value) that the registered environment ``env_id`` does not take,
+    e.g. a scenario's ``disturbances`` or ``episode_time`` for an environment without them."""
+    import inspect
+
+    from laddermill_gym.envs.rotorcraft_vector import CRAFT_ENV_KWARGS, is_craft_env
+    from laddermill_gym.envs.task import WingTask
+
+    if is_craft_env(env_id):
+        known = CRAFT_ENV_KWARGS
+    else:
+        known = tuple(k for k in inspect.signature(WingTask).parameters if k != "n_copies")
+    for key, value in env_kwargs.items():
+        if key not in known:
+            raise ValueError(f"{key} = {value!r}: {env_id} takes no such argument (known: {', '.join(known)})")
+
+
+def vector_env(env_id: str, n: int, env_kwargs: dict):
+    """``n`` copies of the registered environment ``env_id`` (arguments ``env_kwargs`` over the registered ones)
+    with the batched API of :func:`run_episodes` (checked by :func:`check_env_kwargs`)."""
+    from laddermill_gym.envs.rotorcraft_vector import RotorcraftVectorEnv, is_craft_env
     from laddermill_gym.envs.vector import WingVectorEnv
 
+    check_env_kwargs(env_id, env_kwargs)
     kw = dict(ENV_IDS[env_id], **env_kwargs)
+    return RotorcraftVectorEnv(n, **kw) if is_craft_env(env_id) else WingVectorEnv(n, **kw)
+
+
+def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dict, out: Path,
+             progress: bool = True) -> dict[str, EpisodeResults]:
+    """Run every controller spec on ``episodes`` seeded episodes (seeds 0 .. episodes - 1) of ``env_id`` with
+    arguments ``env_kwargs`` (episode_time [s], disturbances) and write the tables into ``out``."""
+    from laddermill_gym.control.factory import make_controller
+
     results = {}
     for spec in controllers:
         ctrl = make_controller(spec, env_id, env_kwargs)
-        env = WingVectorEnv(episodes, **kw)
+        env = vector_env(env_id, episodes, env_kwargs)
         results[controller_label(spec)] = run_episodes(ctrl, env, progress=progress)
         env.close()
     write_tables(out, results)
@@ -216,11 +253,15 @@ def main(argv: list[str] | None = None) -> int:
         env_kwargs["disturbances"] = SCENARIOS[args.scenario]
     name = args.env.split("/")[-1]
     out = args.out or Path("results") / name
+    try:
+        check_env_kwargs(args.env, env_kwargs)
+    except ValueError as err:
+        p.error(str(err))
     results = evaluate(args.env, args.controllers, args.episodes, env_kwargs, out)
     fig = plot_results(out, results, f"{args.env}: {args.episodes} episode(s), lateral offset (episode 0)")
     print(f"{'controller':<28} {'return':>10} {'length [s]':>11} {'max |dy| [m]':>13} {'power [W]':>10}  failures")
     for spec, res in results.items():
-        fails = sorted({FAILURES[int(c)] for c in res.failures if c})
+        fails = sorted({res.failure_names[int(c)] for c in res.failures if c})
         print(f"{spec:<28} {np.mean(res.returns):10.2f} {np.mean(res.lengths_s):11.1f} "
               f"{np.max(res.max_lateral_m):13.4f} {np.mean(res.mean_power_W):10.1f}  {', '.join(fails) or '-'}")
     print(f"tables in {out}/summary.csv, {out}/lateral.csv; figure {fig}")

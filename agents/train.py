@@ -9,7 +9,9 @@ scenario, seeds 0 .. n - 1, against wall time and env steps), ``best_model.zip``
 ``best_vecnormalize.pkl``, ``model.zip`` (last) with ``vecnormalize.pkl`` (observation statistics) and
 ``training_curve.png`` (with the LQR and open-loop returns on the same episodes, also in ``references.csv``).
 Training stops at ``total_timesteps`` or ``time_limit_minutes``, whichever comes first. A progress bar shows
-steps, episodes and the latest evaluation.
+steps, episodes and the latest evaluation. The wing environments train on their batched kernel; Rotorcraft-v0
+(configs/agents/ppo_rotorcraft.yaml) on SB3's ``DummyVecEnv`` of single envs
+(:mod:`laddermill_gym.envs.rotorcraft_vector`).
 """
 
 from __future__ import annotations
@@ -120,17 +122,45 @@ def reference_returns(cfg: RLConfig, eval_env) -> dict[str, float]:
     training curve; empty where the action layout does not suit them (grouped or angle-of-attack actions)."""
     from laddermill_gym.control.factory import make_controller
 
+    if cfg.is_craft:
+        kw = cfg.carried_env_kwargs()
+    else:
+        kw = {k: v for k, v in cfg.env_kwargs.items()
+              if k in ("action_mode", "groups", "control_dt", "physics_dt", "scene_options")}
     refs = {}
     for spec in ("lqr", "open_loop"):
         try:
-            ctrl = make_controller(spec, cfg.env_id, {k: v for k, v in cfg.env_kwargs.items()
-                                                      if k in ("action_mode", "groups", "control_dt", "physics_dt",
-                                                               "scene_options")})
+            ctrl = make_controller(spec, cfg.env_id, kw)
         except ValueError as err:
             print(f"no {spec} reference: {err}")
             continue
         refs[spec] = float(np.mean(_evaluate(ctrl, eval_env, cfg.eval_episodes)[0]))
     return refs
+
+
+def training_env(cfg: RLConfig):
+    """The SB3 VecEnv of ``cfg.n_envs`` seeded training copies: the batched wing task, or for the rotorcraft
+    (no batched kernel) SB3's ``DummyVecEnv`` of single envs."""
+    if cfg.is_craft:
+        from laddermill_gym.envs.rotorcraft_vector import craft_sb3_vec_env
+
+        return craft_sb3_vec_env(cfg.n_envs, seed=cfg.seed, **cfg.train_env_kwargs())
+    from laddermill_gym.envs.sb3 import WingSB3VecEnv
+
+    venv = WingSB3VecEnv(cfg.n_envs, **cfg.train_env_kwargs())
+    venv.seed(cfg.seed)
+    return venv
+
+
+def evaluation_env(cfg: RLConfig):
+    """``cfg.eval_episodes`` copies of the registered evaluation scenario with the harness's batched API."""
+    if cfg.is_craft:
+        from laddermill_gym.envs.rotorcraft_vector import RotorcraftVectorEnv
+
+        return RotorcraftVectorEnv(cfg.eval_episodes, **cfg.eval_env_kwargs())
+    from laddermill_gym.envs.vector import WingVectorEnv
+
+    return WingVectorEnv(cfg.eval_episodes, **cfg.eval_env_kwargs())
 
 
 def train(cfg: RLConfig, out: Path) -> dict:
@@ -139,20 +169,15 @@ def train(cfg: RLConfig, out: Path) -> dict:
     import torch
     from stable_baselines3.common.vec_env import VecMonitor, VecNormalize
 
-    from laddermill_gym.envs.sb3 import WingSB3VecEnv
-    from laddermill_gym.envs.vector import WingVectorEnv
-
     torch.set_num_threads(1)
     out.mkdir(parents=True, exist_ok=True)
     (out / "checkpoints").mkdir(exist_ok=True)
     shutil.copyfile(cfg.file, out / "config.yaml")
     (out / "algorithm.txt").write_text(cfg.algorithm + "\n")
-    venv = WingSB3VecEnv(cfg.n_envs, **cfg.train_env_kwargs())
-    venv.seed(cfg.seed)
-    venv = VecMonitor(venv)
+    venv = VecMonitor(training_env(cfg))
     if cfg.normalize_observations:
         venv = VecNormalize(venv, norm_obs=True, norm_reward=False, clip_obs=10.0)
-    eval_env = WingVectorEnv(cfg.eval_episodes, **cfg.eval_env_kwargs())
+    eval_env = evaluation_env(cfg)
     algo = getattr(sb3, cfg.algorithm)
     model = algo("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=cfg.policy_kwargs or None,
                  tensorboard_log=str(out / "tb"), verbose=0, device="cpu", **cfg.hyperparameters)
@@ -189,10 +214,8 @@ def main(argv: list[str] | None = None) -> int:
     if args.replot:
         if args.out is None or not (args.out / "evaluations.csv").is_file():
             p.error("--replot needs --out RUN_FOLDER with an evaluations.csv")
-        from laddermill_gym.envs.vector import WingVectorEnv
-
         rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(args.out / "evaluations.csv"))]
-        refs = reference_returns(cfg, WingVectorEnv(cfg.eval_episodes, **cfg.eval_env_kwargs()))
+        refs = reference_returns(cfg, evaluation_env(cfg))
         print(f"wrote {plot_curve(args.out, rows, refs)}; references {refs}")
         return 0
     over = {k: v for k, v in (("seed", args.seed), ("total_timesteps", args.timesteps),

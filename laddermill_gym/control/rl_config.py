@@ -12,12 +12,27 @@ from typing import Any
 from ..configio import ConfigError, read_yaml
 from ..envs import ENV_IDS
 from ..envs.disturbances import disturbance_from_dict
+from ..envs.rotorcraft_env import RotorcraftEnv
 from ..envs.task import WingTask
 
 ALGORITHMS: tuple[str, ...] = ("PPO", "SAC")
 #: WingTask arguments a config may override under ``env_kwargs`` (disturbances have their own section)
 ENV_KWARGS: tuple[str, ...] = tuple(p for p in inspect.signature(WingTask).parameters
                                     if p not in ("n_copies", "disturbances", "parallel"))
+#: RotorcraftEnv arguments a config for ``laddermill_gym/Rotorcraft-v0`` may override under ``env_kwargs``
+CRAFT_ENV_KWARGS: tuple[str, ...] = tuple(p for p in inspect.signature(RotorcraftEnv).parameters
+                                          if p not in ("disturbances", "render_mode"))
+#: Arguments the evaluation env takes over from training (the policy's spaces and the model must match);
+#: the rest (wind, disturbances, episode length, reward, termination) is the registered scenario's
+CARRIED_KWARGS: dict[str, tuple[str, ...]] = {
+    "wing": ("action_mode", "groups", "control_dt", "physics_dt", "alpha_servo_tau", "scene_options"),
+    "craft": ("craft", "collective", "control_dt", "physics_dt"),
+}
+
+
+def env_kwargs_known(env_id: str) -> tuple[str, ...]:
+    """The ``env_kwargs`` keys a config for the registered environment ``env_id`` may set."""
+    return CRAFT_ENV_KWARGS if "craft" in ENV_IDS[env_id] else ENV_KWARGS
 
 
 @dataclass(frozen=True)
@@ -29,8 +44,10 @@ class RLConfig:
     file : Path
     algorithm : "PPO" or "SAC"
     env_id : registered environment id (:data:`laddermill_gym.envs.ENV_IDS`)
-    n_envs : copies stepped together (one batched kernel, :class:`~laddermill_gym.envs.sb3.WingSB3VecEnv`)
-    env_kwargs : overrides of the registered env arguments for training (episode_time [s], reward, ...)
+    n_envs : copies stepped together (wings: one batched kernel, :class:`~laddermill_gym.envs.sb3.WingSB3VecEnv`;
+        the rotorcraft: SB3's ``DummyVecEnv`` of :class:`~laddermill_gym.envs.rotorcraft_env.RotorcraftEnv`)
+    env_kwargs : overrides of the registered env arguments for training (episode_time [s], reward, ...):
+        WingTask's arguments (:data:`ENV_KWARGS`) or, for Rotorcraft-v0, RotorcraftEnv's (:data:`CRAFT_ENV_KWARGS`)
     disturbances : list of disturbance mappings for training (``type`` plus parameters; ranges drawn per episode)
     normalize_observations : running mean / variance normalisation of observations (SB3 ``VecNormalize``)
     seed : int
@@ -58,8 +75,14 @@ class RLConfig:
     hyperparameters: dict[str, Any] = field(default_factory=dict)
     policy_kwargs: dict[str, Any] = field(default_factory=dict)
 
+    @property
+    def is_craft(self) -> bool:
+        """Whether the environment is the rotorcraft (Rotorcraft-v0) rather than a wing scene."""
+        return "craft" in ENV_IDS[self.env_id]
+
     def train_env_kwargs(self) -> dict[str, Any]:
-        """WingTask arguments of the training environment: registered defaults, overrides, disturbances."""
+        """WingTask (or RotorcraftEnv) arguments of the training environment: registered defaults, overrides,
+        disturbances."""
         kw = dict(ENV_IDS[self.env_id])
         kw.update(self.env_kwargs)
         if self.disturbances:
@@ -69,12 +92,16 @@ class RLConfig:
 
     def eval_env_kwargs(self) -> dict[str, Any]:
         """The registered scenario (its own disturbance, episode length, reward and termination), with the
-        training's control settings (action mode, groups, control period, model) so the policy's spaces match."""
+        training's control settings (:data:`CARRIED_KWARGS`: action mode, groups, control period, model; for the
+        craft its config, trim collective, control period and physics step) so the policy's spaces match."""
         kw = dict(ENV_IDS[self.env_id])
-        for key in ("action_mode", "groups", "control_dt", "physics_dt", "alpha_servo_tau", "scene_options"):
-            if key in self.env_kwargs:
-                kw[key] = self.env_kwargs[key]
+        kw.update(self.carried_env_kwargs())
         return kw
+
+    def carried_env_kwargs(self) -> dict[str, Any]:
+        """The training's overrides of the arguments the evaluation takes over (:data:`CARRIED_KWARGS`)."""
+        keys = CARRIED_KWARGS["craft" if self.is_craft else "wing"]
+        return {k: v for k, v in self.env_kwargs.items() if k in keys}
 
 
 def _algorithm_class(name: str):
@@ -92,9 +119,11 @@ def load_rl_config(path: str | Path) -> RLConfig:
     env_kwargs = s.raw("env_kwargs", {}) or {}
     if not isinstance(env_kwargs, dict):
         raise s.error("env_kwargs", env_kwargs, "must be a mapping")
+    known = env_kwargs_known(env_id)
     for key in env_kwargs:
-        if key not in ENV_KWARGS:
-            raise s.error(f"env_kwargs.{key}", env_kwargs[key], f"unknown environment argument (known: {ENV_KWARGS})")
+        if key not in known:
+            raise s.error(f"env_kwargs.{key}", env_kwargs[key],
+                          f"unknown argument of {env_id} (known: {', '.join(known)})")
     disturbances = s.raw("disturbances", []) or []
     if not isinstance(disturbances, list):
         raise s.error("disturbances", disturbances, "must be a list of mappings with a 'type'")
