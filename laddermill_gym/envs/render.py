@@ -76,13 +76,7 @@ class SceneRenderer:
         for p, q in segments:
             seg = np.array([p, q]) * up
             ax.plot(seg[:, 0], seg[:, 1], seg[:, 2], color="0.35", lw=1.0)
-        for k in range(len(pos)):
-            wt = self.asm.wing(k)
-            half = 0.5 * wt.span
-            span = np.array([pos[k] - half * rot[k][:, 1], pos[k] + half * rot[k][:, 1]]) * up
-            body = np.array([pos[k] + wt.chord * rot[k][:, 0], pos[k] - 3.0 * wt.chord * rot[k][:, 0]]) * up
-            ax.plot(span[:, 0], span[:, 1], span[:, 2], color="tab:blue", lw=2.0)
-            ax.plot(body[:, 0], body[:, 1], body[:, 2], color="tab:red", lw=1.5)
+        self.draw_bodies(pos, rot, up)
         fp = self.asm.fixed_points * up
         ax.scatter(fp[:, 0], fp[:, 1], fp[:, 2], color="k", marker="^", s=30)
         lo, hi = self.box
@@ -98,6 +92,18 @@ class SceneRenderer:
             self._plt.pause(1e-3)
             return None
         return np.asarray(self.fig.canvas.buffer_rgba())[:, :, :3].copy()
+
+    def draw_bodies(self, pos: np.ndarray, rot: np.ndarray, up: np.ndarray) -> None:
+        """Draw the bodies (CG positions pos (n, 3) [m], rotations rot (n, 3, 3)); a wing is its span (blue)
+        and fuselage line (red). ``up`` flips z to altitude."""
+        ax = self.ax
+        for k in range(len(pos)):
+            wt = self.asm.wing(k)
+            half = 0.5 * wt.span
+            span = np.array([pos[k] - half * rot[k][:, 1], pos[k] + half * rot[k][:, 1]]) * up
+            body = np.array([pos[k] + wt.chord * rot[k][:, 0], pos[k] - 3.0 * wt.chord * rot[k][:, 0]]) * up
+            ax.plot(span[:, 0], span[:, 1], span[:, 2], color="tab:blue", lw=2.0)
+            ax.plot(body[:, 0], body[:, 1], body[:, 2], color="tab:red", lw=1.5)
 
     def close(self) -> None:
         if self._plt is not None:

@@ -30,14 +30,8 @@ def craft_renderer(env, interactive: bool):
     from .render import SceneRenderer
 
     class CraftRenderer(SceneRenderer):
-        def draw(self, b: int = 0):
+        def draw_bodies(self, pos, rot, up):
             ax = self.ax
-            ax.cla()
-            pos, rot, segments = self._geometry(b)
-            up = np.array([1.0, 1.0, -1.0])  # plot altitude = -z
-            for p, q in segments:
-                seg = np.array([p, q]) * up
-                ax.plot(seg[:, 0], seg[:, 1], seg[:, 2], color="0.35", lw=1.0)
             cfg = env.craft.config
             c, R = pos[0], rot[0]
             hubs = [c + R @ np.array([cfg.hub_x, s * 0.5 * cfg.hub_spacing, -cfg.hub_height]) for s in (1.0, -1.0)]
@@ -48,20 +42,5 @@ def craft_renderer(env, interactive: bool):
             for h in hubs:
                 disk = (h + ring @ R.T) * up
                 ax.plot(disk[:, 0], disk[:, 1], disk[:, 2], color="tab:blue", lw=1.5)
-            fp = self.asm.fixed_points * up
-            ax.scatter(fp[:, 0], fp[:, 1], fp[:, 2], color="k", marker="^", s=30)
-            lo, hi = self.box
-            ax.set_xlim(lo[0], hi[0])
-            ax.set_ylim(lo[1] - 0.5 * (hi[0] - lo[0]), hi[1] + 0.5 * (hi[0] - lo[0]))
-            ax.set_zlim(max(0.0, -hi[2]), -lo[2])
-            ax.set_xlabel("x north [m]")
-            ax.set_ylabel("y east [m]")
-            ax.set_zlabel("altitude [m]")
-            ax.set_title(f"{cfg.name}  t = {env.sim.t:6.2f} s")
-            self.fig.canvas.draw()
-            if self._plt is not None:
-                self._plt.pause(1e-3)
-                return None
-            return np.asarray(self.fig.canvas.buffer_rgba())[:, :, :3].copy()
 
     return CraftRenderer(_RenderSource(env), interactive=interactive)

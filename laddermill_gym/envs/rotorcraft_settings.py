@@ -3,9 +3,10 @@ the random start perturbations (frozen dataclasses that validate their fields, n
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from dataclasses import dataclass
+
+from .task import check_nonnegative_fields
 
 
 @dataclass(frozen=True)
@@ -32,12 +33,7 @@ class RotorcraftRewardConfig:
     failure_penalty: float = 0.0
 
     def __post_init__(self):
-        for f in dataclasses.fields(self):
-            v = getattr(self, f.name)
-            if v is None and f.name == "lateral_scale":
-                continue
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
-                raise ValueError(f"reward.{f.name} = {v!r}: must be a finite number >= 0")
+        check_nonnegative_fields(self, "reward", optional=("lateral_scale",))
         if self.rate_scale <= 0:
             raise ValueError(f"reward.rate_scale = {self.rate_scale!r}: must be > 0 rad/s")
         if self.lateral_scale is not None and self.lateral_scale <= 0:
@@ -84,7 +80,4 @@ class InitialNoise:
     yaw_rate: float = 0.0
 
     def __post_init__(self):
-        for f in dataclasses.fields(self):
-            v = getattr(self, f.name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
-                raise ValueError(f"initial_noise.{f.name} = {v!r}: must be a finite number >= 0")
+        check_nonnegative_fields(self, "initial_noise")

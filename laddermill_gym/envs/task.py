@@ -39,6 +39,17 @@ FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state, spe
 _STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit"}
 
 
+def check_nonnegative_fields(obj, section: str, optional: tuple[str, ...] = ()) -> None:
+    """Raise ValueError naming ``section.field`` and the value unless every dataclass field of ``obj`` is a
+    finite number >= 0 (fields named in ``optional`` may also be None)."""
+    for f in dataclasses.fields(obj):
+        v = getattr(obj, f.name)
+        if v is None and f.name in optional:
+            continue
+        if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
+            raise ValueError(f"{section}.{f.name} = {v!r}: must be a finite number >= 0")
+
+
 @dataclass(frozen=True)
 class RewardConfig:
     """Reward per control period: r = w_P P / P_ref - w_y S(dy) - w_w S(rates) - w_u S(effort).
@@ -77,12 +88,7 @@ class RewardConfig:
     failure_penalty: float = 0.0
 
     def __post_init__(self):
-        for f in dataclasses.fields(self):
-            v = getattr(self, f.name)
-            if v is None and f.name == "lateral_scale":
-                continue
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
-                raise ValueError(f"reward.{f.name} = {v!r}: must be a finite number >= 0")
+        check_nonnegative_fields(self, "reward", optional=("lateral_scale",))
         for name in ("rate_scale", "reel_speed_fraction"):
             if getattr(self, name) <= 0:
                 raise ValueError(f"reward.{name} = {getattr(self, name)!r}: must be > 0")
