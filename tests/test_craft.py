@@ -199,3 +199,26 @@ def test_harness_lqr_on_rotorcraft_env():
     assert result["lqr"][0] > result["open_loop"][0]
     with pytest.raises(ValueError, match="wind_speed"):
         make_controller("lqr", env_id, {"wind_speed": 12.0})
+
+
+@pytest.mark.parametrize("name, alt", [("roberts_35m_15kft", 4572.0), ("roberts_35m_30kft", 9144.0)])
+def test_35m_crafts_trim_below_the_ideal_power_coefficient(name, alt):
+    """Roberts' 35 m crafts trim in the simulator near their design altitude and generate; their power
+    coefficient (eq. 4, at the density and wind the trimmed craft meets) lies below Roberts' ideal curve at
+    their incidence (no profile drag: an upper bound for any real rotor) and between half and all of the steady
+    study's optimum, which chooses incidence and collective freely (2 % allowance: the study's density)."""
+    from laddermill_gym.rotor import ideal_power_coefficient
+    from laddermill_gym.tools.rotor_design import best_operating_point, load_design
+
+    c = load_craft(name)
+    sim = c.simulator()
+    z = sim.state[2]
+    assert abs(-z - alt) < 0.15 * alt
+    wind = -wind_at(z, sim.model.wf, 1.0, 0.0)[0]
+    rho = density(-z, sim.model.wf)
+    r = c.config.rotor_radius
+    cp = sim.electrical_power() / (0.95 * 2 * 0.5 * rho * math.pi * r ** 2 * wind ** 3)
+    alpha_c = sim.wing_euler()[0, 1]
+    best = best_operating_point(load_design(c.config.file), wind)
+    assert 0.0 < cp < ideal_power_coefficient(alpha_c)
+    assert 0.5 * best.cp < cp < 1.02 * best.cp
