@@ -22,7 +22,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
+from scipy.optimize import brentq, root
 
 from .builders import _ElementList
 from .craft_config import CraftConfig, load_craft_config
@@ -197,6 +197,48 @@ class CraftSimulator(Simulator):
         return v
 
 
+def _mirror_expansion(layout: CraftLayout, n_unknowns: int) -> tuple[np.ndarray, np.ndarray]:
+    """The trim unknowns of a craft that is mirror-symmetric about its x-z plane, in terms of the independent
+    ones. Returns (E, free): E (n_unknowns, n_free) of 0 / +-1 maps the independent unknowns w to the full
+    z = E w (craft x, z, pitch; the right rear tether's nodes; the front tether's nodes in x and z; the left
+    rear tether mirrors the right); ``free`` (n_free,) indexes the entries of z (and of the residual) that w
+    stands for."""
+    cols: list[dict[int, float]] = []
+    for i in (0, 2, 4):
+        cols.append({i: 1.0})
+    right, left, front = layout.tether_nodes
+    for kr, kl in zip(right, left, strict=True):
+        for c, sign in ((0, 1.0), (1, -1.0), (2, 1.0)):
+            cols.append({6 + 3 * kr + c: 1.0, 6 + 3 * kl + c: sign})
+    for k in front:
+        for c in (0, 2):
+            cols.append({6 + 3 * k + c: 1.0})
+    E = np.zeros((n_unknowns, len(cols)))
+    for j, col in enumerate(cols):
+        for i, v in col.items():
+            E[i, j] = v
+    free = np.array([min(col) for col in cols])
+    return E, free
+
+
+def _symmetric_equilibrium(sim, u, x0) -> tuple[np.ndarray, float]:
+    """Equilibrium restricted to mirror-symmetric poses (no sideslip, roll or yaw; the rear tethers mirror
+    images). Without differential collective or cross wind the trim is one of these, and the restriction
+    removes the nearly free sideways drift of craft and tethers that makes the full Jacobian ill-conditioned
+    (condition number ~1e7). Returns (z, |full residual|): the caller checks that the full residual vanishes,
+    which also catches a scene that is not symmetric."""
+    z0 = _pack_unknowns(sim, x0)
+    E, free = _mirror_expansion(sim.layout, z0.size)
+
+    def full(w):
+        return _accelerations(sim, sim.rhs(0.0, _unpack_unknowns(sim, E @ w), u))
+
+    sol = root(lambda w: full(w)[free], z0[free], method="hybr", options={"xtol": 1e-12})
+    z = E @ sol.x
+    r = full(sol.x)
+    return z, float(np.linalg.norm(r)) if np.all(np.isfinite(r)) else math.inf
+
+
 def _damped_newton(sim, u, z, iterations: int = 60):
     """Equilibrium unknowns z by damped Newton with a central-difference Jacobian (hybrd can stall on the soft
     yaw direction). Returns (z, |residual|)."""
@@ -253,13 +295,17 @@ class Craft:
         config's initial collective), no differential. Returns the state (velocities zero).
 
         Starts from ``x_guess`` (e.g. the trim at a nearby wind speed) and, if that fails, from the design pose.
-        Raises RuntimeError (naming collective, wind and residual) when neither converges."""
+        From each start it first solves for a mirror-symmetric pose (well conditioned), then, if the full
+        residual does not vanish there, for a general one. Raises RuntimeError (naming collective, wind and residual) when neither converges."""
         th = self.config.initial_collective if collective is None else float(collective)
         u = np.array([th, 0.0])
         sim = CraftSimulator(self.config, self.assembly, self.layout, self.design_state(), u)
         guesses = [self.design_state()] if x_guess is None else [np.asarray(x_guess, float), self.design_state()]
         residual = math.inf
         for x0 in guesses:
+            z, r = _symmetric_equilibrium(sim, u, x0)
+            if r < 1e-6 * math.sqrt(z.size):
+                return _unpack_unknowns(sim, z)
             try:
                 return static_equilibrium(sim, x0, controls=u)
             except RuntimeError:
