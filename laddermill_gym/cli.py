@@ -50,7 +50,8 @@ def cmd_simulate(args) -> int:
     title = f"{scene.name}: {asm.n_wings} wings, {rec.t[-1]:.1f} s"
     files.append(plot_shape(rec, Path(f"{stem}_shape.png"), title))
     files.append(plot_histories(rec, Path(f"{stem}_histories.png"), title))
-    print(f"simulated {rec.t[-1] - rec.t[0]:.2f} s in {wall:.2f} s wall ({(rec.t[-1] - rec.t[0]) / wall:.1f}x real time)")
+    span = rec.t[-1] - rec.t[0]
+    print(f"simulated {span:.2f} s in {wall:.2f} s wall ({span / wall:.1f}x real time)")
     if rec.error:
         print(f"run stopped early: {rec.error}")
     for f in files:

@@ -296,7 +296,8 @@ class Craft:
 
         Starts from ``x_guess`` (e.g. the trim at a nearby wind speed) and, if that fails, from the design pose.
         From each start it first solves for a mirror-symmetric pose (well conditioned), then, if the full
-        residual does not vanish there, for a general one. Raises RuntimeError (naming collective, wind and residual) when neither converges."""
+        residual does not vanish there, for a general one. Raises RuntimeError (naming collective, wind and
+        residual) when neither converges."""
         th = self.config.initial_collective if collective is None else float(collective)
         u = np.array([th, 0.0])
         sim = CraftSimulator(self.config, self.assembly, self.layout, self.design_state(), u)

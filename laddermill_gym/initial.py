@@ -43,7 +43,7 @@ def _rest_state(scene, positions, elevators, ends):
             if 0 <= k < len(positions):
                 drag[k] += 0.5 * f
     alphas, forces = [], []
-    for p, el, dc in zip(positions, elevators, drag):
+    for p, el, dc in zip(positions, elevators, drag, strict=True):
         wx, _, _ = wind_at(p[2], wf, 1.0, 0.0)
         qd = 0.5 * density(-p[2], wf) * wx * wx
         al = pitch_trim_alpha(wt, el, qd, a.gravity)

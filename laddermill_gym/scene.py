@@ -95,7 +95,8 @@ def load_wing_type(path: Path) -> WingType:
 def load_cable(path: Path) -> CableSpec:
     """Read a cable YAML (diameter, mass per length, EA, DA, breaking load, cn0, ct0)."""
     s = read_yaml(path)
-    c = CableSpec(diameter=s.number("diameter", positive=True), mass_per_length=s.number("mass_per_length", positive=True),
+    c = CableSpec(diameter=s.number("diameter", positive=True),
+                  mass_per_length=s.number("mass_per_length", positive=True),
                   EA=s.number("EA", positive=True), DA=s.number("DA", nonneg=True),
                   breaking_load=s.number("breaking_load", positive=True), cn0=s.number("cn0", nonneg=True),
                   ct0=s.number("ct0", nonneg=True))
@@ -201,7 +202,8 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
     ini.done()
     it = s.section("integrator")
     settings = IntegratorSettings(method=it.text("method", choices=("rk4", "dp54")), dt=it.number("dt", positive=True),
-                                  rtol=it.number("rtol", 1e-8, positive=True), atol=it.number("atol", 1e-10, positive=True),
+                                  rtol=it.number("rtol", 1e-8, positive=True),
+                                  atol=it.number("atol", 1e-10, positive=True),
                                   max_speed=it.number("max_speed", positive=True),
                                   max_rate=it.number("max_rate", positive=True))
     it.done()

@@ -84,7 +84,7 @@ def make_elements(ends, l0, mu=0.05, EA=2.0e5, DA=50.0, diameter=0.004, attach=N
 
 
 def make_assembly(
-    n_wings=0, node_mass=(), fixed_points=np.zeros((0, 3)), elements=None, wind=None, sag=True,
+    n_wings=0, node_mass=(), fixed_points=None, elements=None, wind=None, sag=True,
     cable_aero=True, gravity=G,
 ) -> Assembly:
     wt = make_wing_type()
@@ -95,7 +95,7 @@ def make_assembly(
         wing_types=(wt,),
         wing_type_index=np.zeros(n_wings, dtype=np.int64),
         node_mass=np.asarray(node_mass, dtype=float),
-        fixed_points=np.asarray(fixed_points, dtype=float).reshape(-1, 3),
+        fixed_points=np.asarray(() if fixed_points is None else fixed_points, dtype=float).reshape(-1, 3),
         elements=make_elements([], []) if elements is None else elements,
         sag=sag,
         cable_aero=cable_aero,

@@ -117,13 +117,13 @@ def test_euler_angle_kinematics():
     eul_u = np.unwrap(eul, axis=0)
     fd = (eul_u[2:] - eul_u[:-2]) / (2 * h)
     mid = states[1:-1]
-    ana = np.array([euler_rates_meijaard(e[0], e[1], s[10:13]) for e, s in zip(eul[1:-1], mid)])
+    ana = np.array([euler_rates_meijaard(e[0], e[1], s[10:13]) for e, s in zip(eul[1:-1], mid, strict=True)])
     assert np.max(np.abs(fd - ana)) < 1e-6
     # the package's A matrix is the same thing
-    pkg = np.array([euler_rate_matrix(e[0], e[1]) @ s[10:13] for e, s in zip(eul[1:-1:50], mid[::50])])
+    pkg = np.array([euler_rate_matrix(e[0], e[1]) @ s[10:13] for e, s in zip(eul[1:-1:50], mid[::50], strict=True)])
     np.testing.assert_allclose(pkg, ana[::50], rtol=0, atol=1e-12)
     # the state's quaternion and its Euler angles describe the same rotation
-    for s, e in zip(states[::500], eul[::500]):
+    for s, e in zip(states[::500], eul[::500], strict=True):
         np.testing.assert_allclose(rotation_from_euler(*e), quat_matrix(s[3:7]), atol=1e-12)
 
 

@@ -45,7 +45,7 @@ def tension_sag(EA, DA, l0, eps, eps_dot, eps_p):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def lateral_elongation(l, ex, ey, ez, prx, pry, prz, psx, psy, psz):
+def lateral_elongation(length, ex, ey, ez, prx, pry, prz, psx, psy, psz):
     """eps_p of eq. (18) [m N^2]: loads per length at r and s (global), made lateral to e."""
     dr = prx * ex + pry * ey + prz * ez
     ds = psx * ex + psy * ey + psz * ez
@@ -54,7 +54,7 @@ def lateral_elongation(l, ex, ey, ez, prx, pry, prz, psx, psy, psz):
     aa = ax * ax + ay * ay + az * az
     bb = bx * bx + by * by + bz * bz
     ab = ax * bx + ay * by + az * bz
-    return l * l * l * ((aa + bb) / 90.0 + 7.0 / 360.0 * ab)
+    return length * length * length * ((aa + bb) / 90.0 + 7.0 / 360.0 * ab)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})

@@ -15,8 +15,8 @@ import math
 from numba import njit
 
 from .aero import wing_aero
-from .craft import craft_loads
 from .cable import aero_load, lateral_elongation, tension_plain, tension_sag
+from .craft import craft_loads
 from .small import lu_factor, lu_solve_cols, lu_solve_vec, quat_rotation
 from .wind import density, modulation, wind_at, wind_rate
 

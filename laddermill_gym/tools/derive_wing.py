@@ -47,7 +47,9 @@ CM0_W = -0.07         # [-]    section moment about the quarter chord, choice (m
 AIL_ETA = (0.55, 0.95)       # [-] aileron span stations (fraction of semispan), choice
 AIL_CF = 0.25         # [-]    aileron chord / wing chord, choice
 
-S_H = 25.0            # [m^2]  horizontal tail area, choice: static margin about 0.08 c with the CG 0.75 m behind the wing ac
+# [m^2] horizontal tail area, choice: static margin about 0.08 c with the CG 0.75 m behind the wing ac
+DEG = np.pi / 180.0  # [rad/deg]
+S_H = 25.0
 B_H = 11.2            # [m]    horizontal tail span, choice (aspect ratio 5.0)
 TC_H = 0.10           # [-]    tail thickness ratio, choice (symmetric section)
 ETA_H = 0.95          # [-]    tail dynamic-pressure ratio q_t/q, typical value (Etkin & Reid Ch. 2)
@@ -64,7 +66,8 @@ RHO_REF, V_REF, NU = 1.225, 10.0, 1.5e-5   # [kg/m^3], [m/s], [m^2/s] design poi
 G = 9.81              # [m/s^2]
 
 # blending of attached flow into the flat plate (logistic weights), stall angles and sharpness
-STALL_W = (np.radians(18.0), np.radians(-16.0))    # [rad] wing: blend midpoints (CL peaks about 3.5 deg earlier), choice
+# [rad] wing: blend midpoints (CL peaks about 3.5 deg earlier), choice
+STALL_W = (np.radians(18.0), np.radians(-16.0))
 STALL_H = (np.radians(17.0), np.radians(-17.0))    # [rad] horizontal tail, choice
 STALL_V = (np.radians(21.0), np.radians(-21.0))    # [rad] fins (low aspect ratio stall later), choice
 M_BLEND = 25.0        # [1/rad] sharpness of the blend (10-90 % over 10 deg), choice: smooth on a 2 deg grid
@@ -368,7 +371,8 @@ def mass_properties(wing: Wing):
     for m, x, yy, zz, jx, jy, jz in items:
         J += [jx + m * (yy**2 + zz**2), jy + m * (x**2 + zz**2), jz + m * (x**2 + yy**2), m * x * zz]
     names = ["main wing", "horizontal tail", "fin right", "fin left", "boom right", "boom left", "pod"]
-    comps = [(names[0], M_WING, x_wcg, mz_w / M_WING)] + [(nm, it[0], it[1], it[3]) for nm, it in zip(names[1:], items)]
+    comps = [(names[0], M_WING, x_wcg, mz_w / M_WING)]
+    comps += [(nm, it[0], it[1], it[3]) for nm, it in zip(names[1:], items, strict=True)]
     return comps, tuple(J)
 
 
@@ -423,7 +427,7 @@ def moment_fixed_tether(tm, alpha, de, V, elev):
     return M + a[2] * Fx - a[0] * Fz
 
 
-def solve_alpha(fun, lo=np.radians(-8), hi=np.radians(22)):
+def solve_alpha(fun, lo=-8.0 * DEG, hi=22.0 * DEG):
     from scipy.optimize import brentq
     grid = np.linspace(lo, hi, 121)
     vals = [fun(x) for x in grid]
@@ -474,7 +478,8 @@ def run_checks(tm: TableModel, wing: Wing, limits_deg):
         print(f"kite trim (cable force from force balance), V={V:4.1f} m/s, de=0: " + "; ".join(s))
     lo, hi = np.radians(limits_deg)
     for target in (0.0, 7.0, 15.0):
-        f = lambda de: moment_kite(tm, np.radians(target), de, V_REF)[0]
+        def f(de, target=target):
+            return moment_kite(tm, np.radians(target), de, V_REF)[0]
         try:
             de = brentq(f, lo, hi)
             print(f"elevator for kite trim at alpha={target:4.1f} deg (V={V_REF} m/s): de = {deg(de):6.2f} deg")
@@ -485,7 +490,8 @@ def run_checks(tm: TableModel, wing: Wing, limits_deg):
         print(f"  de = {de_deg:6.1f} deg -> kite trim alpha = {[round(deg(x), 2) for x in r]} deg")
     for elev in (30.0, 40.0, 50.0):
         r = solve_alpha(lambda a: moment_fixed_tether(tm, a, 0.0, V_REF, np.radians(elev)))
-        f = lambda de: moment_fixed_tether(tm, np.radians(7.0), de, V_REF, np.radians(elev))
+        def f(de, elev=elev):
+            return moment_fixed_tether(tm, np.radians(7.0), de, V_REF, np.radians(elev))
         try:
             de7 = f"{deg(brentq(f, lo, hi)):.2f} deg"
         except ValueError:
@@ -540,14 +546,16 @@ def main(argv=None):
     with open(path, "w", encoding="utf-8") as fh:
         fh.write("\n".join(head) + "\n")
         fh.write(",".join(["alpha_deg", *AERO_COLUMNS]) + "\n")
-        fh.writelines(f"{a:.1f}," + ",".join(f"{v if abs(v) > 1e-12 else 0.0:.6g}" for v in r) + "\n" for a, r in zip(a_deg, rows))
+        for a, r in zip(a_deg, rows, strict=True):
+            fh.write(f"{a:.1f}," + ",".join(f"{v if abs(v) > 1e-12 else 0.0:.6g}" for v in r) + "\n")
     print(f"wrote {path} ({len(a_deg)} rows)")
     comps, J = mass_properties(wing)
     print("mass build-up (name, kg, x [m], z [m]):")
     for nm, m, x, z in comps:
         print(f"  {nm:16s} {m:6.2f} {x:7.3f} {z:7.3f}")
     print(f"inertia about CG: Jxx={J[0]:.1f} Jyy={J[1]:.1f} Jzz={J[2]:.1f} Jxz={J[3]:.2f} kg m^2")
-    print(f"chord {C_W:.3f} m, aero_reference {wing.r_ref.tolist()}, attachment {np.round(attachment_vector(), 4).tolist()}")
+    print(f"chord {C_W:.3f} m, aero_reference {wing.r_ref.tolist()}, "
+          f"attachment {np.round(attachment_vector(), 4).tolist()}")
     print(f"CLa_w={wing.cla_w:.3f} CLa_h={wing.cla_h:.3f} CLa_v={wing.cla_v:.3f} e={wing.e_w:.3f} "
           f"CD0_w={wing.cd0_w:.4f} CD0_h={wing.cd0_h:.4f} CD0_v={wing.cd0_v:.4f} misc={wing.cd_misc0:.4f} "
           f"tau_a={wing.tau_a:.3f} tau_r={wing.tau_r:.3f} eta_v(1+ds/db)={wing.eta_v:.3f} z_root={wing.z_root:.3f}")
