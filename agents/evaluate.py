@@ -140,6 +140,8 @@ def plot_results(out: Path, results: dict[str, EpisodeResults], title: str) -> P
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from laddermill_gym.plotting import save_figure
+
     first = next(iter(results.values()))
     nw = first.lateral_m.shape[2]
     ncol = 1 if nw == 1 else 2
@@ -164,11 +166,7 @@ def plot_results(out: Path, results: dict[str, EpisodeResults], title: str) -> P
         ax.grid(alpha=0.3)
         ax.legend()
     fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    path = out / "lateral.png"
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / "lateral.png")
 
 
 def controller_label(spec: str) -> str:

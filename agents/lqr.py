@@ -73,6 +73,8 @@ def rollout_figure(scene, x, u, controllers: dict, t_end: float, step: float, pe
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from laddermill_gym.plotting import save_figure
+
     out.mkdir(parents=True, exist_ok=True)
     runs = {name: run_direction_step(scene, x, u, c, t_end, period, step) for name, c in controllers.items()}
     fig, ax = plt.subplots(figsize=(6.5, 4))
@@ -87,9 +89,7 @@ def rollout_figure(scene, x, u, controllers: dict, t_end: float, step: float, pe
     ax.set_title(f"{scene.name}: {step} rad wind-direction step at 1 s", fontsize=10)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out / "lqr_rollout.png", dpi=120)
-    plt.close(fig)
+    save_figure(fig, out / "lqr_rollout.png")
     with open(out / "lqr_rollout.csv", "w") as fh:
         fh.write("controller,t_s,wing,y_m\n")
         for name, r in runs.items():

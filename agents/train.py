@@ -102,6 +102,8 @@ def plot_curve(out: Path, rows: list[dict], reference: dict[str, float] | None =
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from laddermill_gym.plotting import save_figure
+
     fig, ax = plt.subplots(figsize=(6.5, 4))
     ax.plot([r["minutes"] for r in rows], [r["mean_return"] for r in rows], "o-", label="agent (deterministic)")
     for i, (name, value) in enumerate((reference or {}).items()):
@@ -110,11 +112,7 @@ def plot_curve(out: Path, rows: list[dict], reference: dict[str, float] | None =
     ax.set_ylabel("evaluation return [-]")
     ax.grid(alpha=0.3)
     ax.legend()
-    fig.tight_layout()
-    path = out / "training_curve.png"
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / "training_curve.png")
 
 
 def reference_returns(cfg: RLConfig, eval_env) -> dict[str, float]:

@@ -13,6 +13,16 @@ import numpy as np
 from .recording import Recording
 
 
+def save_figure(fig, path, dpi: int = 120) -> Path:
+    """Lay out ``fig``, write it to ``path`` (creating the folder) and close it. Returns the path."""
+    path = Path(path)
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+    return path
+
+
 def plot_shape(rec: Recording, path: Path, title: str = "") -> Path:
     """Side view (x, h) and top view (x, y) of wings and cable nodes at the first and last sample."""
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5))
@@ -29,10 +39,7 @@ def plot_shape(rec: Recording, path: Path, title: str = "") -> Path:
     ax1.legend()
     ax2.legend()
     fig.suptitle(title)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path, dpi=110)
 
 
 def plot_histories(rec: Recording, path: Path, title: str = "", wings: list[int] | None = None) -> Path:
@@ -65,7 +72,4 @@ def plot_histories(rec: Recording, path: Path, title: str = "", wings: list[int]
     if rec.error:
         fig.text(0.01, 0.005, "stopped: " + rec.error[:150], fontsize=7, color="red")
     fig.suptitle(title)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path, dpi=110)

@@ -156,6 +156,8 @@ def plot(scan_v, scan_rate, v_crit, runs, path: Path) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from ..plotting import save_figure
+
     fig, ax = plt.subplots(1, 3, figsize=(13, 3.8))
     ax[0].plot(scan_v, scan_rate, "o-")
     ax[0].axhline(0.0, color="k", lw=0.8)
@@ -169,9 +171,7 @@ def plot(scan_v, scan_rate, v_crit, runs, path: Path) -> None:
     ax[1].set(xlabel="t [s]", ylabel="lateral offset y [m]", title="wind direction step at t = 1 s", ylim=(-12, 12))
     ax[2].set(xlabel="t [s]", ylabel="differential collective [deg]", title="control")
     ax[1].legend()
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path, dpi=110)
 
 
 def main(argv=None) -> dict:

@@ -359,6 +359,8 @@ def plot_sweeps(results: list[SweepResult], out: Path) -> Path:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from laddermill_gym.plotting import save_figure
+
     n = len(results)
     ncol = min(3, n)
     nrow = math.ceil(n / ncol)
@@ -382,11 +384,7 @@ def plot_sweeps(results: list[SweepResult], out: Path) -> Path:
         ax.set_visible(False)
     axes.flat[0].legend(fontsize=7)
     fig.suptitle("tethered_wing: open-loop lateral eigenvalues, one parameter at a time (> 0: unstable)")
-    fig.tight_layout()
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out, dpi=120)
-    plt.close(fig)
-    return out
+    return save_figure(fig, out)
 
 
 def _parse_sweeps(text: str | None, known: list[str]) -> list[str]:

@@ -183,6 +183,8 @@ def plot_chart(path: Path, curves: list[LimitCurve], ideal_deg: np.ndarray, idea
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from laddermill_gym.plotting import save_figure
+
     fig, ax = plt.subplots(figsize=(8.5, 6.0))
     ax.plot(ideal_deg, ideal_cp, "k-", lw=2.2, label="ideal (actuator disk, no profile drag)")
     ax.axhline(16.0 / 27.0, color="0.4", ls="--", lw=0.9)
@@ -212,10 +214,7 @@ def plot_chart(path: Path, curves: list[LimitCurve], ideal_deg: np.ndarray, idea
                  f"dashed (mu = {ROBERTS_MU:g}): best collective within the limit")
     ax.grid(alpha=0.3)
     ax.legend(loc="lower right", fontsize=8)
-    fig.tight_layout()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def _parse_mus(text: str) -> tuple[float, ...]:

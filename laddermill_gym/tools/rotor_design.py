@@ -624,6 +624,8 @@ def plot_power_curves(path: Path, studies: list[AltitudeStudy]) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    from laddermill_gym.plotting import save_figure
+
     fig, ax = plt.subplots(figsize=(8.0, 5.2))
     for st in studies:
         power = np.array([p.power / 1e6 if p is not None else np.nan for p in st.points])
@@ -643,10 +645,7 @@ def plot_power_curves(path: Path, studies: list[AltitudeStudy]) -> None:
                  fontsize=10)
     ax.grid(alpha=0.3)
     ax.legend(loc="upper left", fontsize=9)
-    fig.tight_layout()
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def _print_design(st: AltitudeStudy) -> None:
