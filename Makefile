@@ -23,9 +23,9 @@ figures:
 	python -m agents.evaluate --env laddermill_gym/LadderChain-v0 --episodes 1 --out results/ladder_chain \
 		--controllers open_loop lqr lqr:configs/agents/lqr_ladder_chain_central.yaml
 	cp results/ladder_chain/lateral.png $(FIG)/ladder_chain_controllers.png
-	python -m laddermill_gym.tools.craft_stability --out results/craft_stability
+	python -m laddermill_gym.studies.craft_stability --out results/craft_stability
 	cp results/craft_stability/rotorcraft_stability.png $(FIG)/rotorcraft_stability.png
-	python -m laddermill_gym.tools.rotor_chart --out $(FIG)/rotor_power_chart.png --csv results/rotor_power_chart.csv
+	python -m laddermill_gym.studies.rotor_chart --out $(FIG)/rotor_power_chart.png --csv results/rotor_power_chart.csv
 	python -m agents.train configs/agents/ppo_tethered_wing.yaml --out $(RUN)
 	cp $(RUN)/training_curve.png $(FIG)/ppo_training_curve.png
 	python -m agents.evaluate --controllers open_loop lqr $(RUN)/best_model.zip $(RUN)/model.zip --episodes 1 \

@@ -23,8 +23,8 @@ from pathlib import Path
 import numpy as np
 from tqdm import tqdm
 
+from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust
 from laddermill_gym.envs import ENV_IDS
-from laddermill_gym.envs.disturbances import DirectionStep, OneMinusCosineGust
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX
 from laddermill_gym.envs.task import FAILURES
 
@@ -63,7 +63,7 @@ def run_episodes(controller, env, n_episodes: int | None = None, record: bool = 
                  progress: bool = False) -> EpisodeResults:
     """Run ``controller`` deterministically on every copy of the vector env ``env``
     (:class:`~laddermill_gym.envs.vector.WingVectorEnv` or
-    :class:`~laddermill_gym.envs.rotorcraft_vector.RotorcraftVectorEnv`, seeds 0 .. num_envs - 1), each copy to
+    :class:`~laddermill_gym.envs.rotorcraft.vector.RotorcraftVectorEnv`, seeds 0 .. num_envs - 1), each copy to
     the end of its first episode. The lateral offsets come from ``env.lateral_offsets(obs)`` where the env has
     it, else from the wing observation layout."""
     n = env.num_envs
@@ -184,7 +184,7 @@ def check_env_kwargs(env_id: str, env_kwargs: dict) -> None:
     e.g. a scenario's ``disturbances`` or ``episode_time`` for an environment without them."""
     import inspect
 
-    from laddermill_gym.envs.rotorcraft_vector import CRAFT_ENV_KWARGS, is_craft_env
+    from laddermill_gym.envs.rotorcraft.vector import CRAFT_ENV_KWARGS, is_craft_env
     from laddermill_gym.envs.task import WingTask
 
     if is_craft_env(env_id):
@@ -199,7 +199,7 @@ def check_env_kwargs(env_id: str, env_kwargs: dict) -> None:
 def vector_env(env_id: str, n: int, env_kwargs: dict):
     """``n`` copies of the registered environment ``env_id`` (arguments ``env_kwargs`` over the registered ones)
     with the batched API of :func:`run_episodes` (checked by :func:`check_env_kwargs`)."""
-    from laddermill_gym.envs.rotorcraft_vector import RotorcraftVectorEnv, is_craft_env
+    from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv, is_craft_env
     from laddermill_gym.envs.vector import WingVectorEnv
 
     check_env_kwargs(env_id, env_kwargs)

@@ -29,7 +29,7 @@ from laddermill_gym.control.lqr import (
 )
 from laddermill_gym.control.open_loop import OpenLoopController
 from laddermill_gym.control.rollout import run_direction_step
-from laddermill_gym.scene import load_scene
+from laddermill_gym.ladder.scene import load_scene
 
 
 def report_single(design) -> str:

@@ -11,7 +11,7 @@ scenario, seeds 0 .. n - 1, against wall time and env steps), ``best_model.zip``
 Training stops at ``total_timesteps`` or ``time_limit_minutes``, whichever comes first. A progress bar shows
 steps, episodes and the latest evaluation. The wing environments train on their batched kernel; Rotorcraft-v0
 (configs/agents/ppo_rotorcraft.yaml) on SB3's ``DummyVecEnv`` of single envs
-(:mod:`laddermill_gym.envs.rotorcraft_vector`).
+(:mod:`laddermill_gym.envs.rotorcraft.vector`).
 """
 
 from __future__ import annotations
@@ -140,7 +140,7 @@ def training_env(cfg: RLConfig):
     """The SB3 VecEnv of ``cfg.n_envs`` seeded training copies: the batched wing task, or for the rotorcraft
     (no batched kernel) SB3's ``DummyVecEnv`` of single envs."""
     if cfg.is_craft:
-        from laddermill_gym.envs.rotorcraft_vector import craft_sb3_vec_env
+        from laddermill_gym.envs.rotorcraft.vector import craft_sb3_vec_env
 
         return craft_sb3_vec_env(cfg.n_envs, seed=cfg.seed, **cfg.train_env_kwargs())
     from laddermill_gym.envs.sb3 import WingSB3VecEnv
@@ -153,7 +153,7 @@ def training_env(cfg: RLConfig):
 def evaluation_env(cfg: RLConfig):
     """``cfg.eval_episodes`` copies of the registered evaluation scenario with the harness's batched API."""
     if cfg.is_craft:
-        from laddermill_gym.envs.rotorcraft_vector import RotorcraftVectorEnv
+        from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv
 
         return RotorcraftVectorEnv(cfg.eval_episodes, **cfg.eval_env_kwargs())
     from laddermill_gym.envs.vector import WingVectorEnv

@@ -9,8 +9,8 @@ Typical use::
     sim.step(n_steps=1000)
 """
 
-from .params import AERO_COLUMNS, Assembly, WindParams, WingType
-from .simulator import IntegratorSettings, SimulationError, Simulator
+from laddermill_gym.model.params import AERO_COLUMNS, Assembly, WindParams, WingType
+from laddermill_gym.sim.simulator import IntegratorSettings, SimulationError, Simulator
 
 __all__ = [
     "AERO_COLUMNS",
@@ -24,13 +24,13 @@ __all__ = [
 ]
 __version__ = "0.1.0"
 
-from .envs import register_envs as _register_envs  # noqa: E402
+from laddermill_gym.envs import register_envs as _register_envs  # noqa: E402
 
 _register_envs()
 
 
 def load_scene(name_or_path, **overrides):
-    """Load a scene by name (configs/scenes/NAME.yaml) or path; see :func:`laddermill_gym.scene.load_scene`."""
-    from .scene import load_scene as _load
+    """Load a scene by name (configs/scenes/NAME.yaml) or path; see :func:`laddermill_gym.ladder.scene.load_scene`."""
+    from laddermill_gym.ladder.scene import load_scene as _load
 
     return _load(name_or_path, **overrides)

@@ -1,5 +1,5 @@
 import sys
 
-from .cli import main
+from laddermill_gym.cli import main
 
 sys.exit(main())

@@ -14,15 +14,15 @@ import numpy as np
 
 
 def _scene_from_args(args):
-    from .scene import load_scene
+    from laddermill_gym.ladder.scene import load_scene
 
     return load_scene(args.scene, dimension=args.dimension, sag=args.sag, cable_aero=args.cable_aero,
                       elements_per_piece=args.elements_per_piece, n_wings=args.n_wings, dt=args.dt)
 
 
 def cmd_simulate(args) -> int:
-    from .plotting import plot_histories, plot_shape
-    from .recording import record
+    from laddermill_gym.plotting import plot_histories, plot_shape
+    from laddermill_gym.sim.recording import record
 
     t0 = time.perf_counter()
     scene = _scene_from_args(args)
@@ -60,7 +60,7 @@ def cmd_simulate(args) -> int:
 
 
 def cmd_bench(args) -> int:
-    from .benchmark import run_benchmark
+    from laddermill_gym.studies.benchmark import run_benchmark
 
     res = run_benchmark(quick=args.quick, scenes=args.scenes)
     if args.json:
@@ -70,14 +70,14 @@ def cmd_bench(args) -> int:
 
 
 def cmd_bench_envs(args) -> int:
-    from .env_benchmark import run_env_benchmark
+    from laddermill_gym.studies.env_benchmark import run_env_benchmark
 
     run_env_benchmark(quick=args.quick, json_path=args.json)
     return 0
 
 
 def cmd_scenes(args) -> int:
-    from .scene import available_scenes, load_scene
+    from laddermill_gym.ladder.scene import available_scenes, load_scene
 
     for name in available_scenes():
         s = load_scene(name)

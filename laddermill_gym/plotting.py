@@ -10,7 +10,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .recording import Recording
+from laddermill_gym.sim.recording import Recording
 
 
 def save_figure(fig, path, dpi: int = 120) -> Path:

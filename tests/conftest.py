@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.builders import CableSpec
-from laddermill_gym.params import AERO_COLUMNS, AERO_INDEX, AeroTable, Assembly, Elements, WindParams, WingType
+from laddermill_gym.model.builders import CableSpec
+from laddermill_gym.model.params import AERO_COLUMNS, AERO_INDEX, AeroTable, Assembly, Elements, WindParams, WingType
 
 #: Standard gravity [m/s^2].
 G0 = 9.80665

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 import yaml
 
-from laddermill_gym.configio import ConfigError
 from laddermill_gym.envs import ENV_IDS, WingVectorEnv
+from laddermill_gym.model.configio import ConfigError
 
 TW = "laddermill_gym/TetheredWing-v0"
 PPO_CONFIG = "configs/agents/ppo_tethered_wing.yaml"

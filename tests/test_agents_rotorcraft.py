@@ -11,10 +11,10 @@ import numpy as np
 import pytest
 import yaml
 
-from laddermill_gym.configio import ConfigError
 from laddermill_gym.envs import ENV_IDS
-from laddermill_gym.envs.rotorcraft_env import RotorcraftEnv
-from laddermill_gym.envs.rotorcraft_vector import RotorcraftVectorEnv
+from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
+from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv
+from laddermill_gym.model.configio import ConfigError
 
 RC = "laddermill_gym/Rotorcraft-v0"
 PPO_CONFIG = "configs/agents/ppo_rotorcraft.yaml"

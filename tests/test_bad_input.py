@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 import yaml
 
-from laddermill_gym.configio import ConfigError
-from laddermill_gym.scene import CONFIG_DIR, load_scene
-from laddermill_gym.simulator import SimulationError
+from laddermill_gym.ladder.scene import CONFIG_DIR, load_scene
+from laddermill_gym.model.configio import ConfigError
+from laddermill_gym.sim.simulator import SimulationError
 
 
 @pytest.fixture()

@@ -7,8 +7,8 @@ import dataclasses
 import numpy as np
 import pytest
 
-from laddermill_gym.batch import BatchSimulator
-from laddermill_gym.scene import load_scene
+from laddermill_gym.ladder.scene import load_scene
+from laddermill_gym.sim.batch import BatchSimulator
 
 
 @pytest.fixture(scope="module")

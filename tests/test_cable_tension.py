@@ -7,9 +7,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from laddermill_gym.builders import CableSpec, build_cable
 from laddermill_gym.kernels.cable import tension_plain, tension_sag
-from laddermill_gym.simulator import Simulator
+from laddermill_gym.model.builders import CableSpec, build_cable
+from laddermill_gym.sim.simulator import Simulator
 
 
 @pytest.mark.parametrize("strain", [-0.5, -1e-3, -1e-6, 0.0, 1e-6, 1e-3, 0.05])

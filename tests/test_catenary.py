@@ -18,10 +18,9 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from laddermill_gym.builders import build_cable
-from laddermill_gym.simulator import Simulator
-
-from .conftest import G0, cable_spec
+from laddermill_gym.model.builders import build_cable
+from laddermill_gym.sim.simulator import Simulator
+from tests.conftest import G0, cable_spec
 
 W = 10.0  # weight per unstretched length [N/m]
 EA = 1.0e6  # [N]

@@ -9,14 +9,14 @@ import re
 import numpy as np
 import pytest
 
-from laddermill_gym.configio import ConfigError
+from laddermill_gym.atmosphere.wind_kernels import density, wind_at
 from laddermill_gym.control.craft_lqr import design_craft_lqr
 from laddermill_gym.control.linearize import linearize
-from laddermill_gym.craft import CraftSimulator, load_craft
-from laddermill_gym.craft_config import load_craft_config
-from laddermill_gym.kernels.wind import density, wind_at
-from laddermill_gym.rotor import cable_angle, rotor_coefficients
-from laddermill_gym.tools.craft_stability import (
+from laddermill_gym.model.configio import ConfigError
+from laddermill_gym.rotorcraft.config import load_craft_config
+from laddermill_gym.rotorcraft.craft import CraftSimulator, load_craft
+from laddermill_gym.rotorcraft.rotor import cable_angle, rotor_coefficients
+from laddermill_gym.studies.craft_stability import (
     closed_loop_run,
     growth_rate,
     jacobian_check,
@@ -224,8 +224,8 @@ def test_35m_crafts_trim_below_the_ideal_power_coefficient(name, alt):
     coefficient (eq. 4, at the density and wind the trimmed craft meets) lies below Roberts' ideal curve at
     their incidence (no profile drag: an upper bound for any real rotor) and between half and all of the steady
     study's optimum, which chooses incidence and collective freely (2 % allowance: the study's density)."""
-    from laddermill_gym.rotor import ideal_power_coefficient
-    from laddermill_gym.tools.rotor_design import best_operating_point, load_design
+    from laddermill_gym.rotorcraft.rotor import ideal_power_coefficient
+    from laddermill_gym.studies.rotor_design import best_operating_point, load_design
 
     c = load_craft(name)
     sim = c.simulator()

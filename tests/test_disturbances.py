@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from laddermill_gym.envs.disturbances import (
+from laddermill_gym.atmosphere.disturbances import (
     DirectionStep,
     OneMinusCosineGust,
     RandomPerturbation,

@@ -68,7 +68,7 @@ def test_ladder_chain_direction_step():
 
 
 def test_rotorcraft():
-    from laddermill_gym.craft import load_craft
+    from laddermill_gym.rotorcraft.craft import load_craft
 
     sim = load_craft("roberts_flying_model").simulator()
     u = sim.controls.copy()

@@ -8,7 +8,6 @@ import numpy as np
 import pytest
 import scipy.linalg as sla
 
-from laddermill_gym.configio import ConfigError
 from laddermill_gym.control.base import control_ranges
 from laddermill_gym.control.factory import make_controller
 from laddermill_gym.control.linearize import full_from_minimal, minimal_derivative, minimal_from_full
@@ -22,6 +21,7 @@ from laddermill_gym.control.lqr import (
 )
 from laddermill_gym.envs import ENV_IDS, WingVectorEnv
 from laddermill_gym.envs.observation import OBS_INDEX
+from laddermill_gym.model.configio import ConfigError
 
 TW = "laddermill_gym/TetheredWing-v0"
 

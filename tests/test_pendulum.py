@@ -16,10 +16,9 @@ import math
 import numpy as np
 import pytest
 
-from laddermill_gym.builders import build_chain, chain_state
-from laddermill_gym.simulator import IntegratorSettings, Simulator
-
-from .conftest import G0, cable_spec, make_wing_type, vacuum
+from laddermill_gym.model.builders import build_chain, chain_state
+from laddermill_gym.sim.simulator import IntegratorSettings, Simulator
+from tests.conftest import G0, cable_spec, make_wing_type, vacuum
 
 LENGTH = 10.0  # unstretched cable length [m]
 MASS = 1.0  # [kg]

@@ -16,10 +16,9 @@ import math
 import numpy as np
 import pytest
 
-from laddermill_gym.simulator import IntegratorSettings, Simulator
-from laddermill_gym.states import euler_from_quaternion, euler_rate_matrix, rotation_from_euler, wing_state_3d
-
-from .conftest import free_body_assembly, make_wing_type
+from laddermill_gym.model.states import euler_from_quaternion, euler_rate_matrix, rotation_from_euler, wing_state_3d
+from laddermill_gym.sim.simulator import IntegratorSettings, Simulator
+from tests.conftest import free_body_assembly, make_wing_type
 
 
 def inertia_matrix(jxx, jyy, jzz, jxz):

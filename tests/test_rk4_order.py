@@ -17,11 +17,10 @@ import functools
 
 import numpy as np
 
-from laddermill_gym.builders import build_chain, chain_state
-from laddermill_gym.params import WindParams
-from laddermill_gym.simulator import IntegratorSettings, Simulator
-
-from .conftest import cable_spec, make_wing_type, smooth_aero_table
+from laddermill_gym.model.builders import build_chain, chain_state
+from laddermill_gym.model.params import WindParams
+from laddermill_gym.sim.simulator import IntegratorSettings, Simulator
+from tests.conftest import cable_spec, make_wing_type, smooth_aero_table
 
 T_END = 3.0  # [s]
 DTS = np.array([0.01, 0.005, 0.0025, 0.00125])  # [s]

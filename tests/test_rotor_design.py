@@ -1,8 +1,9 @@
-"""Steady design study of the twin 35 m rotorcraft (laddermill_gym/tools/rotor_design.py, docs/rotorcraft_design.md).
+"""Steady design study of the twin 35 m rotorcraft (laddermill_gym/studies/rotor_design.py, docs/rotorcraft_design.md).
 
 Independent oracles only: the ICAO standard-atmosphere table, the closed-form symmetric catenary, a discretised
 hanging chain solved by a different method (link-by-link force balance with shooting, and minimum potential
-energy), the rotor functions of laddermill_gym.rotor with Roberts' eqs. 3 and 4 recomputed here, energy bounds
+energy), the rotor functions of laddermill_gym.rotorcraft.rotor with Roberts' eqs. 3 and 4 recomputed here, energy
+bounds
 (Betz; power <= rotor force along the wind x wind speed), a coarse brute-force search written in this file, and
 the published material data quoted in the configs.
 """
@@ -17,9 +18,9 @@ import pytest
 import yaml
 from scipy.optimize import fsolve, minimize
 
-from laddermill_gym.kernels import wind as kwind
-from laddermill_gym.rotor import cable_angle, power_coefficient, rotor_coefficients
-from laddermill_gym.tools.rotor_design import (
+from laddermill_gym.atmosphere import wind_kernels as kwind
+from laddermill_gym.rotorcraft.rotor import cable_angle, power_coefficient, rotor_coefficients
+from laddermill_gym.studies.rotor_design import (
     CRAFT_CONFIGS,
     ROBERTS_PEAK_POWER,
     best_operating_point,
@@ -178,7 +179,8 @@ def test_catenary_bad_input_names_the_argument():
 
 # ---------------------------------------------------------------------------------------------- the study
 def _forces(design, p):
-    """Rotor state, thrust and H-force of one rotor [N] and the density, recomputed with laddermill_gym.rotor."""
+    """Rotor state, thrust and H-force of one rotor [N] and the density, recomputed with
+    laddermill_gym.rotorcraft.rotor."""
     mu = p.wind * math.cos(p.alpha_c) / (design.rotor_speed * design.radius)
     st = rotor_coefficients(design.rotor, mu, p.alpha_c, p.theta0)
     assert st.converged

@@ -15,7 +15,7 @@ from gymnasium.utils.env_checker import check_env
 
 import laddermill_gym  # noqa: F401  (registers the ids)
 from laddermill_gym.envs import ENV_IDS, DirectionStep, RandomPerturbation
-from laddermill_gym.envs.rotorcraft_env import (
+from laddermill_gym.envs.rotorcraft.env import (
     CRAFT_OBS_FIELDS,
     CRAFT_OBS_INDEX,
     OBS_P,
@@ -28,7 +28,7 @@ from laddermill_gym.envs.rotorcraft_env import (
     open_loop_controller,
     trim_action,
 )
-from laddermill_gym.states import euler_from_quaternion
+from laddermill_gym.model.states import euler_from_quaternion
 
 RC = "laddermill_gym/Rotorcraft-v0"
 

@@ -24,10 +24,9 @@ import math
 import numpy as np
 import pytest
 
-from laddermill_gym.builders import build_cable
-from laddermill_gym.simulator import Simulator
-
-from .conftest import cable_spec
+from laddermill_gym.model.builders import build_cable
+from laddermill_gym.sim.simulator import Simulator
+from tests.conftest import cable_spec
 
 N_EL = 100
 L0 = 100.0  # unstretched length [m]

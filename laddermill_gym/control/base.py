@@ -1,6 +1,6 @@
 """The controller protocol shared by model-based controllers and RL agents, the observation layout of the
 wing environments, and the helpers that map physical controls to normalised actions and simulator views to
-observations (so a controller can be run directly on a :class:`~laddermill_gym.simulator.Simulator`)."""
+observations (so a controller can be run directly on a :class:`~laddermill_gym.sim.simulator.Simulator`)."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ from typing import Any, Protocol, runtime_checkable
 
 import numpy as np
 
-from ..envs.observation import N_OBS_PER_WING, OBS_FIELDS, OBS_INDEX
-from ..params import Assembly
+from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_FIELDS, OBS_INDEX
+from laddermill_gym.model.params import Assembly
 
 __all__ = [
     "Controller",

@@ -1,7 +1,7 @@
 """LQR for Roberts' tethered twin-rotor craft on his eq. (6): differential collective from (y, phi, y', phi').
 
 The design (:func:`design_craft_lqr`) trims the craft in the config's wind, derives eq. (6) there
-(:mod:`laddermill_gym.control.roll_lateral`), weights it by Bryson's rule from ``configs/agents/lqr_rotorcraft.yaml``
+(:mod:`laddermill_gym.rotorcraft.roll_lateral`), weights it by Bryson's rule from ``configs/agents/lqr_rotorcraft.yaml``
 and solves the discrete LQR at the control period (python-control ``c2d`` + ``dlqr``). :class:`CraftLQRController`
 applies the gain to environment observations with SB3's ``predict`` signature; the collective stays at the trim.
 """
@@ -15,11 +15,11 @@ from typing import Any
 
 import numpy as np
 
-from ..configio import read_yaml
-from ..scene import CONFIG_DIR
-from .base import batch_observations
-from .lqr import DiscreteLQR, bryson_weights, discrete_lqr
-from .roll_lateral import RollLateralModel, derive_roll_lateral
+from laddermill_gym.control.base import batch_observations
+from laddermill_gym.control.lqr import DiscreteLQR, bryson_weights, discrete_lqr
+from laddermill_gym.ladder.scene import CONFIG_DIR
+from laddermill_gym.model.configio import read_yaml
+from laddermill_gym.rotorcraft.roll_lateral import RollLateralModel, derive_roll_lateral
 
 DEFAULT_CRAFT_LQR = CONFIG_DIR / "agents" / "lqr_rotorcraft.yaml"
 
@@ -75,9 +75,9 @@ class CraftLQRDesign:
 def design_craft_lqr(config: CraftLQRConfig | str | Path = DEFAULT_CRAFT_LQR, craft=None) -> CraftLQRDesign:
     """Trim the craft at the config's wind, derive eq. (6) and solve the discrete LQR.
 
-    ``craft``: a :class:`~laddermill_gym.craft.Craft` to use instead of loading ``config.craft`` (its wind speed
-    is replaced by the config's)."""
-    from ..craft import load_craft
+    ``craft``: a :class:`~laddermill_gym.rotorcraft.craft.Craft` to use instead of loading ``config.craft``
+    (its wind speed is replaced by the config's)."""
+    from laddermill_gym.rotorcraft.craft import load_craft
 
     cfg = config if isinstance(config, CraftLQRConfig) else load_craft_lqr_config(config)
     base = load_craft(cfg.craft) if craft is None else craft

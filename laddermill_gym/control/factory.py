@@ -9,10 +9,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ..envs import ENV_IDS
-from ..envs.task import scene_trim
-from ..scene import CONFIG_DIR
-from .base import Controller
+from laddermill_gym.control.base import Controller
+from laddermill_gym.envs import ENV_IDS
+from laddermill_gym.envs.task import scene_trim
+from laddermill_gym.model.configio import CONFIG_DIR
 
 __all__ = ["make_controller", "DEFAULT_LQR_CONFIGS"]
 
@@ -32,11 +32,16 @@ def _env_scene(env_kwargs: dict):
 
 def _craft_controller(spec: str, kw: dict) -> Controller:
     """Open loop (trim collective, no differential) or the eq. (6) LQR for Rotorcraft-v0."""
-    from ..envs import rotorcraft_env as re_
+    from laddermill_gym.envs.rotorcraft import env as re_
 
     if spec == "open_loop":
         return re_.open_loop_controller(kw)
-    from .craft_lqr import DEFAULT_CRAFT_LQR, CraftLQRController, design_craft_lqr, load_craft_lqr_config
+    from laddermill_gym.control.craft_lqr import (
+        DEFAULT_CRAFT_LQR,
+        CraftLQRController,
+        design_craft_lqr,
+        load_craft_lqr_config,
+    )
 
     path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_CRAFT_LQR
     cfg = load_craft_lqr_config(path)
@@ -68,10 +73,10 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
                              f"(got {kw.get('action_mode')!r}, {kw.get('groups')!r})")
         sc, x_trim, u_trim = _env_scene(kw)
         if spec == "open_loop":
-            from .open_loop import OpenLoopController
+            from laddermill_gym.control.open_loop import OpenLoopController
 
             return OpenLoopController.from_scene(sc, u_trim)
-        from .lqr import design_ladder_chain, design_tethered_wing, load_lqr_config
+        from laddermill_gym.control.lqr import design_ladder_chain, design_tethered_wing, load_lqr_config
 
         path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_LQR_CONFIGS[env_id]
         cfg = load_lqr_config(path)
@@ -85,6 +90,6 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     path = Path(spec)
     if not path.exists():
         raise ValueError(f"controller = {spec!r}: not 'open_loop', 'lqr', 'lqr:<config>' or an existing model path")
-    from .sb3_policy import SB3Controller
+    from laddermill_gym.control.sb3_policy import SB3Controller
 
     return SB3Controller.load(path)

@@ -29,8 +29,8 @@ from dataclasses import dataclass
 import control
 import numpy as np
 
-from ..params import N_CONTROLS, Assembly
-from ..simulator import Simulator
+from laddermill_gym.model.params import N_CONTROLS, Assembly
+from laddermill_gym.sim.simulator import Simulator
 
 __all__ = [
     "WING_MINIMAL_NAMES",

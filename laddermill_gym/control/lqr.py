@@ -21,11 +21,14 @@ from typing import Any
 import control
 import numpy as np
 
-from ..configio import read_yaml
-from ..params import N_CONTROLS
-from ..scene import CONFIG_DIR, Scene, load_scene
-from .base import OBS_INDEX, OBS_PER_WING, actions_from_controls, batch_observations, control_ranges
-from .linearize import (
+from laddermill_gym.control.base import (
+    OBS_INDEX,
+    OBS_PER_WING,
+    actions_from_controls,
+    batch_observations,
+    control_ranges,
+)
+from laddermill_gym.control.linearize import (
     LATERAL_INPUTS,
     Linearization,
     coupling_norms,
@@ -33,6 +36,9 @@ from .linearize import (
     linearize,
     wing_lateral_blocks,
 )
+from laddermill_gym.ladder.scene import Scene, load_scene
+from laddermill_gym.model.configio import CONFIG_DIR, read_yaml
+from laddermill_gym.model.params import N_CONTROLS
 
 __all__ = [
     "LATERAL_STATE_NAMES",

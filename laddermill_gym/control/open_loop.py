@@ -6,8 +6,8 @@ from typing import Any
 
 import numpy as np
 
-from ..scene import Scene
-from .base import OBS_PER_WING, actions_from_controls, batch_observations, control_ranges
+from laddermill_gym.control.base import OBS_PER_WING, actions_from_controls, batch_observations, control_ranges
+from laddermill_gym.ladder.scene import Scene
 
 __all__ = ["OpenLoopController"]
 

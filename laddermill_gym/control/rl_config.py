@@ -1,5 +1,5 @@
 """Training configurations of Stable-Baselines3 agents (``configs/agents/ppo_*.yaml``, ``sac_*.yaml``): read
-strictly (unknown keys, wrong types and bad values raise :class:`~laddermill_gym.configio.ConfigError` naming the
+strictly (unknown keys, wrong types and bad values raise :class:`~laddermill_gym.model.configio.ConfigError` naming the
 file, the field and the value) into a frozen :class:`RLConfig`, and turned into environments."""
 
 from __future__ import annotations
@@ -9,11 +9,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..configio import ConfigError, read_yaml
-from ..envs import ENV_IDS
-from ..envs.disturbances import disturbance_from_dict
-from ..envs.rotorcraft_env import RotorcraftEnv
-from ..envs.task import WingTask
+from laddermill_gym.atmosphere.disturbances import disturbance_from_dict
+from laddermill_gym.envs import ENV_IDS
+from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
+from laddermill_gym.envs.task import WingTask
+from laddermill_gym.model.configio import ConfigError, read_yaml
 
 ALGORITHMS: tuple[str, ...] = ("PPO", "SAC")
 #: WingTask arguments a config may override under ``env_kwargs`` (disturbances have their own section)
@@ -45,7 +45,7 @@ class RLConfig:
     algorithm : "PPO" or "SAC"
     env_id : registered environment id (:data:`laddermill_gym.envs.ENV_IDS`)
     n_envs : copies stepped together (wings: one batched kernel, :class:`~laddermill_gym.envs.sb3.WingSB3VecEnv`;
-        the rotorcraft: SB3's ``DummyVecEnv`` of :class:`~laddermill_gym.envs.rotorcraft_env.RotorcraftEnv`)
+        the rotorcraft: SB3's ``DummyVecEnv`` of :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`)
     env_kwargs : overrides of the registered env arguments for training (episode_time [s], reward, ...):
         WingTask's arguments (:data:`ENV_KWARGS`) or, for Rotorcraft-v0, RotorcraftEnv's (:data:`CRAFT_ENV_KWARGS`)
     disturbances : list of disturbance mappings for training (``type`` plus parameters; ranges drawn per episode)

@@ -8,9 +8,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..scene import Scene
-from ..simulator import SimulationError
-from .base import Controller, control_ranges, controls_from_actions, elements_below_wings, observe
+from laddermill_gym.control.base import Controller, control_ranges, controls_from_actions, elements_below_wings, observe
+from laddermill_gym.ladder.scene import Scene
+from laddermill_gym.sim.simulator import SimulationError
 
 __all__ = ["Rollout", "with_direction_step", "run_direction_step"]
 

@@ -8,17 +8,17 @@ Registered on ``import laddermill_gym``:
   ``ladder_chain``, its own RK4 step, 20 Hz control, 120 s episodes), per-wing actions by default;
 * ``laddermill_gym/Rotorcraft-v0``: Roberts' tethered twin-rotor craft (configs/rotorcraft/, its own 2 ms
   RK4 step, 20 Hz control of collective and differential collective, 120 s episodes, a 0.01 rad direction
-  step at 1 s), :class:`~laddermill_gym.envs.rotorcraft_env.RotorcraftEnv`.
+  step at 1 s), :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`.
 
 The wing environments have a native batched ``vector_entry_point`` (:class:`~laddermill_gym.envs.vector.WingVectorEnv`):
 ``gymnasium.make_vec(id, num_envs=n, vectorization_mode="vector_entry_point")``.
 """
 
-from .disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
-from .rotorcraft_env import RotorcraftEnv
-from .task import FAILURES, RewardConfig, TerminationConfig, WingTask
-from .vector import WingVectorEnv
-from .wing_env import WingEnv
+from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
+from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
+from laddermill_gym.envs.task import FAILURES, RewardConfig, TerminationConfig, WingTask
+from laddermill_gym.envs.vector import WingVectorEnv
+from laddermill_gym.envs.wing_env import WingEnv
 
 __all__ = ["DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule", "FAILURES", "RewardConfig",
            "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "RotorcraftEnv", "ENV_IDS", "register_envs"]
@@ -32,7 +32,7 @@ ENV_IDS: dict[str, dict] = {
     "laddermill_gym/Rotorcraft-v0": dict(craft="roberts_flying_model", control_dt=0.05, episode_time=120.0),
 }
 #: Entry points of the environments that are not wing scenes (no batched vector entry point).
-_ENTRY_POINTS: dict[str, str] = {"laddermill_gym/Rotorcraft-v0": "laddermill_gym.envs.rotorcraft_env:RotorcraftEnv"}
+_ENTRY_POINTS: dict[str, str] = {"laddermill_gym/Rotorcraft-v0": "laddermill_gym.envs.rotorcraft.env:RotorcraftEnv"}
 
 
 def register_envs() -> None:

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from ..params import AERO_INDEX, CONTROL_NAMES, N_CONTROLS, Assembly, WingType
+from laddermill_gym.model.params import AERO_INDEX, CONTROL_NAMES, N_CONTROLS, Assembly, WingType
 
 ACTION_MODES: tuple[str, ...] = ("tail", "alpha")
 GROUPINGS: tuple[str, ...] = ("per_wing", "all", "halves")
@@ -58,7 +58,7 @@ def resolve_groups(groups, n_wings: int, two_ended: bool) -> tuple[tuple[int, ..
 class ElevatorFromAlpha:
     """Static map from a commanded angle of attack to the elevator angle that trims it, for one wing type.
 
-    The map is the pitch-moment balance of :func:`laddermill_gym.statics.pitch_trim_alpha` (no weight):
+    The map is the pitch-moment balance of :func:`laddermill_gym.sim.statics.pitch_trim_alpha` (no weight):
     a wing at rest in horizontal wind (pitch angle = alpha) has no pitching moment about its cable
     attachment point,
 

@@ -5,7 +5,7 @@ chain order (wing 0 first). The layout is a public contract (controllers index i
 :data:`OBS_INDEX`); change it only together with the env ids' version.
 
 The quantities are computed here directly from the state vector (quaternion algebra vectorised over
-wings), not through :class:`~laddermill_gym.simulator.Simulator`'s per-wing views, so the tests can use
+wings), not through :class:`~laddermill_gym.sim.simulator.Simulator`'s per-wing views, so the tests can use
 those views as an independent check.
 """
 
@@ -16,9 +16,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..kernels.wind import modulation, wind_at
-from ..scene import Scene
-from ..simulator import Simulator
+from laddermill_gym.atmosphere.wind_kernels import modulation, wind_at
+from laddermill_gym.ladder.scene import Scene
+from laddermill_gym.sim.simulator import Simulator
 
 
 @dataclass(frozen=True)

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..params import END_FIXED, END_NODE, END_WING
-from .observation import _rotation_from_quaternions
+from laddermill_gym.envs.observation import _rotation_from_quaternions
+from laddermill_gym.model.params import END_FIXED, END_NODE, END_WING
 
 
 class SceneRenderer:

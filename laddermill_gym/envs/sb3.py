@@ -14,7 +14,7 @@ import gymnasium as gym
 import numpy as np
 from stable_baselines3.common.vec_env import VecEnv
 
-from .task import FAILURES, WingTask
+from laddermill_gym.envs.task import FAILURES, WingTask
 
 
 class WingSB3VecEnv(VecEnv):
@@ -75,7 +75,7 @@ class WingSB3VecEnv(VecEnv):
         return [False for _ in self._get_indices(indices)]
 
     def get_images(self):
-        from .render import SceneRenderer
+        from laddermill_gym.envs.render import SceneRenderer
 
         r = SceneRenderer(self.task)
         return [r.draw(i) for i in range(self.num_envs)]

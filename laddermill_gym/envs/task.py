@@ -14,9 +14,11 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..batch import BatchSimulator
-from ..kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
-from ..kernels.observe import (
+from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, sample_modulation
+from laddermill_gym.envs.actions import ActionMap, resolve_groups
+from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
+from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
+from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
     AUX_GROUND_START,
     AUX_MAX_TENSION,
@@ -25,11 +27,9 @@ from ..kernels.observe import (
     step_observe_batch,
     step_observe_serial,
 )
-from ..packing import KWork, make_workspace
-from ..scene import Scene, load_scene
-from .actions import ActionMap, resolve_groups
-from .disturbances import DirectionStep, Disturbance, sample_modulation
-from .observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
+from laddermill_gym.ladder.scene import Scene, load_scene
+from laddermill_gym.model.packing import KWork, make_workspace
+from laddermill_gym.sim.batch import BatchSimulator
 
 __all__ = ["RewardConfig", "TerminationConfig", "WingTask", "FAILURES", "scene_trim"]
 
@@ -159,7 +159,7 @@ class WingTask:
     scene : str
         Scene name (configs/scenes/NAME.yaml) or path; 3D scenes only.
     scene_options : dict, optional
-        Overrides passed to :func:`laddermill_gym.scene.load_scene` (e.g. ``elements_per_piece``).
+        Overrides passed to :func:`laddermill_gym.ladder.scene.load_scene` (e.g. ``elements_per_piece``).
     control_dt : float
         Control period [s]; the action is held over it.
     physics_dt : float, optional
@@ -211,7 +211,7 @@ class WingTask:
         self.disturbances = (DirectionStep(),) if disturbances is None else tuple(disturbances)
         for d in self.disturbances:
             if not isinstance(d, Disturbance):
-                raise ValueError(f"disturbances: {d!r} is not a laddermill_gym.envs.disturbances.Disturbance")
+                raise ValueError(f"disturbances: {d!r} is not a laddermill_gym.atmosphere.disturbances.Disturbance")
         self.reward_config = _config(reward, RewardConfig, "reward")
         self.termination_config = _config(termination, TerminationConfig, "termination")
         self.x_trim, self.u_trim = x_trim, u_trim
@@ -269,7 +269,7 @@ class WingTask:
     def _observe_state(self, x: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(obs row, aux row) of one state in the undisturbed wind, without touching the copies."""
         asm = self.scene.assembly
-        from ..packing import pack_model
+        from laddermill_gym.model.packing import pack_model
 
         work = make_workspace(asm)
         wb = KWork(*[a[None].copy() for a in work])

@@ -11,7 +11,7 @@ import numpy as np
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
-from .task import WingTask
+from laddermill_gym.envs.task import WingTask
 
 
 class WingVectorEnv(VectorEnv):
@@ -110,7 +110,7 @@ class WingVectorEnv(VectorEnv):
     def render(self):
         if self.render_mode != "rgb_array":
             return None
-        from .render import SceneRenderer
+        from laddermill_gym.envs.render import SceneRenderer
 
         if self._renderer is None:
             self._renderer = SceneRenderer(self.task)

@@ -8,8 +8,8 @@ from typing import Any
 import gymnasium as gym
 import numpy as np
 
-from .observation import OBS_FIELDS
-from .task import FAILURES, WingTask
+from laddermill_gym.envs.observation import OBS_FIELDS
+from laddermill_gym.envs.task import FAILURES, WingTask
 
 
 def _obs_table() -> str:
@@ -150,7 +150,7 @@ OBS_TABLE
         if self.render_mode is None:
             gym.logger.warn("render() called without a render_mode; pass render_mode='rgb_array' or 'human'")
             return None
-        from .render import SceneRenderer
+        from laddermill_gym.envs.render import SceneRenderer
 
         if self._renderer is None:
             self._renderer = SceneRenderer(self.task, interactive=self.render_mode == "human")

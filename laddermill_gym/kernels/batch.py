@@ -7,8 +7,8 @@ the same compiled ``rk4_advance`` a single simulator uses, so a batch copy and a
 
 from numba import njit, prange
 
-from ..packing import KModel, KWork
-from .integrate import OK, rk4_advance
+from laddermill_gym.kernels.integrate import OK, rk4_advance
+from laddermill_gym.model.packing import KModel, KWork
 
 
 @njit(cache=True)

@@ -9,8 +9,8 @@ import math
 
 from numba import njit
 
-from .rhs2d import rhs2d
-from .rhs3d import rhs3d
+from laddermill_gym.kernels.rigid.rhs2d import rhs2d
+from laddermill_gym.kernels.rigid.rhs3d import rhs3d
 
 OK, SINGULAR, NONFINITE, LIMIT = 0, 1, 2, 3
 

@@ -2,8 +2,9 @@
 issue 11) with `python tests/data/make_golden_16b454f.py` from the repository root. Kept as the record of how
 golden_rk4_16b454f.npz was made; it imports the module paths of that commit, which later commits moved."""
 import numpy as np
-from laddermill_gym import load_scene
 from laddermill_gym.craft import load_craft
+
+from laddermill_gym import load_scene
 
 out = {}
 def run(name, sim, steps, u=None):
@@ -16,11 +17,12 @@ def run(name, sim, steps, u=None):
 
 # tethered wing, direction step through the wind modulation
 sc = load_scene("tethered_wing")
-from laddermill_gym.params import WindParams
 w = sc.assembly.wind.with_modulation(0.0, 0.5, np.array([1.0, 1.0, 1.0, 1.1, 1.1]), np.array([0, 0, 0.01, 0.01, 0.01]))
 import dataclasses
+
 asm = dataclasses.replace(sc.assembly, wind=w)
 from laddermill_gym.simulator import Simulator
+
 s0 = sc.simulator()
 sim = Simulator(asm, s0.initial_state, sc.settings, s0.initial_controls)
 u = sim.controls.copy(); u[1] = 0.01; u[2] = -0.005

@@ -1,0 +1,1 @@
+"""Rotorcraft-v0: the craft's environment, its settings, vector adapter and renderer."""

@@ -1,0 +1,83 @@
+"""Settings of :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`: reward weights, termination limits and
+the random start perturbations (frozen dataclasses that validate their fields, naming field and value)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from laddermill_gym.envs.task import check_nonnegative_fields
+
+
+@dataclass(frozen=True)
+class RotorcraftRewardConfig:
+    """Reward per control period: r = w_P P / P_ref - w_y S(y) - w_w S(rates) - w_u S(effort), S(x) = 1 - exp(-x).
+
+    P [W] is the craft's net electrical power (:meth:`CraftSimulator.electrical_power`, Roberts' 95 %
+    efficiency), P_ref its value at the trim in the undisturbed wind, so the power term is 1 at the trim.
+
+    * S(y): x = (dy / lateral_scale)^2, dy the lateral CG offset [m]; lateral_scale [m] defaults to 5 % of the
+      rear tether length;
+    * S(rates): x = (p^2 + r^2) / rate_scale^2, body roll and yaw rates [rad/s];
+    * S(effort): x = mean of (a - a_trim)^2 over the two normalised action entries.
+
+    ``failure_penalty`` [-] is subtracted once, in the step that ends an episode by a physical failure.
+    """
+
+    power_weight: float = 1.0
+    lateral_weight: float = 1.0
+    lateral_scale: float | None = None
+    rate_weight: float = 0.1
+    rate_scale: float = 0.2
+    effort_weight: float = 0.1
+    failure_penalty: float = 0.0
+
+    def __post_init__(self):
+        check_nonnegative_fields(self, "reward", optional=("lateral_scale",))
+        if self.rate_scale <= 0:
+            raise ValueError(f"reward.rate_scale = {self.rate_scale!r}: must be > 0 rad/s")
+        if self.lateral_scale is not None and self.lateral_scale <= 0:
+            raise ValueError(f"reward.lateral_scale = {self.lateral_scale!r}: must be > 0 m")
+
+
+@dataclass(frozen=True)
+class RotorcraftTerminationConfig:
+    """When an episode ends as a physical failure (``terminated``).
+
+    min_altitude [m]: CG altitude below which the craft has hit the ground; default half its span (hub
+    spacing + rotor diameter), where a craft rolled to 90 deg touches the ground with a rotor tip.
+    breaking_factor [-]: a tether fails when an element's tension exceeds this times its breaking load.
+    max_abs_roll_deg [deg], pitch_range_deg [deg], max_abs_yaw_deg [deg]: attitude far from the operating
+    range of the quasi-steady rotor model (the trim pitch of the default craft is about 25 deg).
+    """
+
+    min_altitude: float | None = None
+    breaking_factor: float = 1.0
+    max_abs_roll_deg: float = 60.0
+    pitch_range_deg: tuple[float, float] = (-20.0, 80.0)
+    max_abs_yaw_deg: float = 90.0
+
+    def __post_init__(self):
+        lo, hi = self.pitch_range_deg
+        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+            raise ValueError(f"termination.pitch_range_deg = {self.pitch_range_deg!r}: need finite low < high")
+        for name in ("breaking_factor", "max_abs_roll_deg", "max_abs_yaw_deg"):
+            v = getattr(self, name)
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+                raise ValueError(f"termination.{name} = {v!r}: must be a finite number > 0")
+        if self.min_altitude is not None and not math.isfinite(self.min_altitude):
+            raise ValueError(f"termination.min_altitude = {self.min_altitude!r}: must be finite")
+
+
+@dataclass(frozen=True)
+class InitialNoise:
+    """Random start: standard deviations of perturbations added to the trim at every reset, drawn from the
+    env's ``np_random``: lateral_velocity [m/s] (global y), roll_rate [rad/s] (body p), yaw_rate [rad/s]
+    (body r). Velocities only, so the tethers start at their trim stretch. All 0 (the default): the trim."""
+
+    lateral_velocity: float = 0.0
+    roll_rate: float = 0.0
+    yaw_rate: float = 0.0
+
+    def __post_init__(self):
+        check_nonnegative_fields(self, "initial_noise")

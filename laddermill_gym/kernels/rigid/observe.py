@@ -1,0 +1,110 @@
+"""Batched stepping and observation for the environments: one parallel pass over the copies advances each by
+n RK4 steps and then writes its wing observations and the quantities the rewards and terminations need.
+
+Observation layout per wing (15 floats, ``laddermill_gym/envs/observation.py`` documents it with units):
+CG offset from the nominal position (3), global CG velocity (3), 3-2-1 Euler angles (3), body rates (3),
+angle of attack, sideslip, tension of the element below the wing. 3D scenes only.
+"""
+
+import math
+
+from numba import njit, prange
+
+from laddermill_gym.atmosphere.wind_kernels import modulation, wind_at
+from laddermill_gym.kernels.batch import copy_views
+from laddermill_gym.kernels.integrate import OK, SINGULAR, rhs, rk4_advance
+
+#: Columns of the auxiliary output ``aux`` (B, N_AUX).
+AUX_MAX_TENSION = 0      # largest element tension [N]
+AUX_GROUND_START = 1     # tension of the element at the start ground point [N]
+AUX_GROUND_END = 2       # tension of the element at the end ground point [N] (0 if the chain has no end)
+AUX_MIN_ALTITUDE = 3     # lowest wing CG altitude -z [m]
+N_AUX = 4
+
+_FM = {"contract", "reassoc", "nsz", "arcp"}
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def _observe_one(t, x, u, dx, M, W, sag, caero, nominal, below, ground, obs, aux):
+    """Observation row ``obs`` (n_wings * 15,) and ``aux`` (N_AUX,) of one state (evaluates the right-hand
+    side once for the tensions). Returns OK or SINGULAR."""
+    if rhs(t, x, u, dx, M, W, sag, caero, None) != 0:
+        return SINGULAR
+    nw = M.wtype.size
+    s, d, _, _ = modulation(t, M.tmod[0], M.tmod[1], M.ms, M.md)
+    ten = W.tension
+    zmin = math.inf
+    for k in range(nw):
+        o = 13 * k
+        b = 15 * k
+        R = W.Rw[k]  # filled by rhs at this state
+        vx, vy, vz = x[o + 7], x[o + 8], x[o + 9]
+        for i in range(3):
+            obs[b + i] = x[o + i] - nominal[k, i]
+            obs[b + 3 + i] = R[i, 0] * vx + R[i, 1] * vy + R[i, 2] * vz
+            obs[b + 9 + i] = x[o + 10 + i]
+        obs[b + 6] = math.atan2(R[2, 1], R[2, 2])
+        obs[b + 7] = -math.asin(min(1.0, max(-1.0, R[2, 0])))
+        obs[b + 8] = math.atan2(R[1, 0], R[0, 0])
+        wx, wy, wz = wind_at(x[o + 2], M.wf, s, d)
+        ua = vx - (R[0, 0] * wx + R[1, 0] * wy + R[2, 0] * wz)
+        va = vy - (R[0, 1] * wx + R[1, 1] * wy + R[2, 1] * wz)
+        wa = vz - (R[0, 2] * wx + R[1, 2] * wy + R[2, 2] * wz)
+        sp = math.sqrt(ua * ua + va * va + wa * wa)
+        obs[b + 12] = math.atan2(wa, ua)
+        obs[b + 13] = math.asin(min(1.0, max(-1.0, va / sp))) if sp > 0.0 else 0.0
+        obs[b + 14] = ten[below[k]]
+        zmin = min(zmin, -x[o + 2])
+    tmax = 0.0
+    for e in range(M.ek.shape[0]):
+        tmax = max(tmax, ten[e])
+    aux[AUX_MAX_TENSION] = tmax
+    aux[AUX_GROUND_START] = ten[ground[0]] if ground[0] >= 0 else 0.0
+    aux[AUX_GROUND_END] = ten[ground[1]] if ground[1] >= 0 else 0.0
+    aux[AUX_MIN_ALTITUDE] = zmin
+    return OK
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def _step_observe_copy(b, t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, limits, DX, nominal, below, ground,
+                       obs, aux, status, done):
+    n = nsteps[b]
+    if n < 0:
+        status[b] = OK
+        done[b] = 0
+        return
+    Mb, Wb = copy_views(b, M, WB, tmod, MS, MD)
+    st, dn = OK, 0
+    if n > 0:
+        st, dn = rk4_advance(t[b], X[b], U[b], dt, n, Mb, Wb, sag, caero, None, limits)
+    ost = _observe_one(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, sag, caero, nominal, below, ground,
+                       obs[b], aux[b])
+    status[b] = st if st != OK else ost
+    done[b] = dn
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, parallel=True)
+def step_observe_batch(t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, limits, DX, nominal, below, ground,
+                       obs, aux, status, done):
+    """Advance copy b by nsteps[b] RK4 steps, then observe it (nsteps[b] = 0: observe only; < 0: skip the copy).
+    Parallel over the copies (numba prange).
+
+    t (B,) [s] is each copy's time before the steps (not advanced here); X (B, n_state), U (B, n_controls);
+    per-copy wind modulation tmod (B, 2), MS, MD (B, n_mod); WB a KWork with a leading batch axis; DX (B,
+    n_state) scratch; nominal (n_wings, 3) [m]; below (n_wings,) element below each wing; ground (2,) ground
+    elements (start, end; -1 if none). Writes obs (B, 15 n_wings), aux (B, N_AUX), status (B,) and done (B,)
+    (steps completed). A copy whose integration fails is left at its last good state and observed there.
+    """
+    for b in prange(X.shape[0]):
+        _step_observe_copy(b, t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, limits, DX, nominal, below,
+                           ground, obs, aux, status, done)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def step_observe_serial(t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, limits, DX, nominal, below, ground,
+                        obs, aux, status, done):
+    """:func:`step_observe_batch` on one thread: for single environments and small batches, where starting
+    the thread pool costs more than it saves (and on a loaded machine waits for a descheduled thread)."""
+    for b in range(X.shape[0]):
+        _step_observe_copy(b, t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, limits, DX, nominal, below,
+                           ground, obs, aux, status, done)

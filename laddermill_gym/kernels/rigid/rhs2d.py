@@ -1,0 +1,205 @@
+"""Right-hand side of the in-plane (2D) model: the 3D model restricted to the x-z plane.
+
+State per wing (6): x, z, theta, u, w, q; per free node (4): x, z, x', z'. Blocks: 3 dof per wing
+(u, w, q), 2 per node. Lateral states and lateral aerodynamics are absent, not zeroed. The packed
+model and workspace are the 3D ones; switches as in rhs3d.
+"""
+
+import math
+
+from numba import njit
+
+from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_at, wind_rate
+from laddermill_gym.kernels.cable import aero_load, lateral_elongation, tension_plain, tension_sag
+from laddermill_gym.kernels.rigid.aero import wing_aero_long
+from laddermill_gym.kernels.rigid.rhs3d import END_NODE, END_WING, _add_const_mass, _block_of, tree_solve
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _end_kinematics2(kind, idx, att, x, fixed, nw, T, ev):
+    """In-plane version of rhs3d._end_kinematics: ev = (x, z, x', z', ax, az), T is 2 x nb."""
+    if kind == END_WING:
+        o = 6 * idx
+        c, s = math.cos(x[o + 2]), math.sin(x[o + 2])
+        ax, az = att[0], att[2]
+        u, w, q = x[o + 3], x[o + 4], x[o + 5]
+        bx, bz = u + q * az, w - q * ax
+        cx, cz = q * bz, -q * bx
+        ev[0] = x[o] + c * ax + s * az
+        ev[1] = x[o + 1] - s * ax + c * az
+        ev[2] = c * bx + s * bz
+        ev[3] = -s * bx + c * bz
+        ev[4] = c * cx + s * cz
+        ev[5] = -s * cx + c * cz
+        T[0, 0], T[0, 1], T[0, 2] = c, s, c * az - s * ax
+        T[1, 0], T[1, 1], T[1, 2] = -s, c, -s * az - c * ax
+        return 3
+    if kind == END_NODE:
+        o = 6 * nw + 4 * idx
+        ev[0], ev[1], ev[2], ev[3] = x[o], x[o + 1], x[o + 2], x[o + 3]
+        ev[4] = 0.0
+        ev[5] = 0.0
+        T[0, 0], T[0, 1], T[1, 0], T[1, 1] = 1.0, 0.0, 0.0, 1.0
+        return 2
+    ev[0], ev[1] = fixed[idx, 0], fixed[idx, 2]
+    for i in range(2, 6):
+        ev[i] = 0.0
+    return 0
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _add_end_force2(bv, blk, nb, T, fx, fz):
+    for j in range(nb):
+        bv[blk, j] += T[0, j] * fx + T[1, j] * fz
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _add_mass2(A, nb1, T1, nb2, T2, m):
+    for i in range(nb1):
+        for j in range(nb2):
+            A[i, j] += m * (T1[0, i] * T2[0, j] + T1[1, i] * T2[1, j])
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def rhs2d(t, x, u, dx, M, W, sag, caero):
+    """State derivative of the in-plane model (see rhs3d.rhs3d for the arguments). Returns 0 or 1."""
+    nw = M.wtype.size
+    nn = M.node_mass.size
+    ne = M.ef.shape[0]
+    g = M.glob[0]
+    a0, da = M.glob[3], M.glob[4]
+    wf = M.wf
+    s_mod, d_mod, sd_mod, dd_mod = modulation(t, M.tmod[0], M.tmod[1], M.ms, M.md)
+    D, U, bv = W.D, W.U, W.bv
+    nbk = nw + nn
+    for b in range(nbk):
+        for i in range(3):
+            bv[b, i] = 0.0
+            for j in range(3):
+                D[b, i, j] = 0.0
+                U[b, i, j] = 0.0
+    ao = W.aout
+    for k in range(nw):
+        o = 6 * k
+        c, s = math.cos(x[o + 2]), math.sin(x[o + 2])
+        uu, ww, q = x[o + 3], x[o + 4], x[o + 5]
+        xd = c * uu + s * ww
+        zd = -s * uu + c * ww
+        dx[o], dx[o + 1], dx[o + 2] = xd, zd, q
+        ty = M.wtype[k]
+        m = M.tf[ty, 0]
+        Dk = D[k]
+        Dk[0, 0] = m
+        Dk[1, 1] = m
+        Dk[2, 2] = M.tf[ty, 2]
+        fx = -m * g * s - m * q * ww
+        fz = m * g * c + m * q * uu
+        my = 0.0
+        rho = density(-x[o + 1], wf)
+        if rho > 0.0:
+            wgx, _, wgz = wind_at(x[o + 1], wf, s_mod, d_mod)
+            wbx = c * wgx - s * wgz
+            wbz = s * wgx + c * wgz
+            ua, wa = uu - wbx, ww - wbz
+            dwx, _, dwz = wind_rate(x[o + 1], zd, wf, s_mod, d_mod, sd_mod, dd_mod)
+            ex_ = q * wbz - (c * dwx - s * dwz)
+            ez_ = -q * wbx - (s * dwx + c * dwz)
+            d2 = ua * ua + wa * wa
+            ad0 = (-wa * ex_ + ua * ez_) / d2 if d2 > 1e-18 else 0.0
+            wing_aero_long(ty, M.tf, M.ac, a0, da, rho, ua, wa, q, u[3 * k], ad0, W.coef, ao)
+            fx += ao[0]
+            fz += ao[1]
+            my += ao[2]
+            for i in range(3):
+                ki = ao[3 + i]
+                if ki != 0.0:
+                    Dk[i, 0] -= ki * ao[6]
+                    Dk[i, 1] -= ki * ao[7]
+        bv[k, 0] = fx
+        bv[k, 1] = fz
+        bv[k, 2] = my
+    base = 6 * nw
+    for j in range(nn):
+        o = base + 4 * j
+        dx[o], dx[o + 1] = x[o + 2], x[o + 3]
+        mn = M.node_mass[j]
+        b = nw + j
+        D[b, 0, 0] = mn
+        D[b, 1, 1] = mn
+        bv[b, 1] += mn * g
+    Tr, Ts, er, es = W.Tr, W.Ts, W.er, W.es
+    for e in range(ne):
+        kr, ks = M.ek[e, 0], M.ek[e, 1]
+        ir, is_ = M.ei[e, 0], M.ei[e, 1]
+        nr = _end_kinematics2(kr, ir, M.ea[e, 0], x, M.fixed, nw, Tr, er)
+        ns = _end_kinematics2(ks, is_, M.ea[e, 1], x, M.fixed, nw, Ts, es)
+        l0, mu, EA, DA, dia = M.ef[e, 0], M.ef[e, 1], M.ef[e, 2], M.ef[e, 3], M.ef[e, 4]
+        lx, lz = es[0] - er[0], es[1] - er[1]
+        ln = math.sqrt(lx * lx + lz * lz)
+        if ln > 1e-9:
+            ux, uz = lx / ln, lz / ln
+        else:
+            ux, uz = 0.0, 0.0
+        eps = ln - l0
+        epsd = ux * (es[2] - er[2]) + uz * (es[3] - er[3])
+        me = mu * l0
+        wg = 0.5 * me * g
+        m6 = me / 6.0
+        frx = -m6 * (2.0 * er[4] + es[4])
+        frz = -m6 * (2.0 * er[5] + es[5]) + wg
+        fsx = -m6 * (er[4] + 2.0 * es[4])
+        fsz = -m6 * (er[5] + 2.0 * es[5]) + wg
+        pgz = mu * g
+        prx, prz = 0.0, pgz
+        psx, psz = 0.0, pgz
+        if caero is not None:
+            w1, _, w3 = wind_at(er[1], wf, s_mod, d_mod)
+            ar1, _, ar3 = aero_load(w1 - er[2], 0.0, w3 - er[3], ux, 0.0, uz,
+                                    density(-er[1], wf), dia, caero[0], caero[1])
+            w1, _, w3 = wind_at(es[1], wf, s_mod, d_mod)
+            as1, _, as3 = aero_load(w1 - es[2], 0.0, w3 - es[3], ux, 0.0, uz,
+                                    density(-es[1], wf), dia, caero[0], caero[1])
+            c6 = ln / 6.0
+            frx += c6 * (2.0 * ar1 + as1)
+            frz += c6 * (2.0 * ar3 + as3)
+            fsx += c6 * (ar1 + 2.0 * as1)
+            fsz += c6 * (ar3 + 2.0 * as3)
+            prx += ar1
+            prz += ar3
+            psx += as1
+            psz += as3
+        if sag is not None:
+            if ln > 1e-9:
+                epsp = lateral_elongation(ln, ux, 0.0, uz, prx, 0.0, prz, psx, 0.0, psz)
+            else:
+                epsp = 0.0
+            sig = tension_sag(EA, DA, l0, eps, epsd, epsp)
+        else:
+            sig = tension_plain(EA, DA, l0, eps, epsd)
+        W.tension[e] = sig
+        frx += sig * ux
+        frz += sig * uz
+        fsx -= sig * ux
+        fsz -= sig * uz
+        br = _block_of(kr, ir, nw)
+        bs = _block_of(ks, is_, nw)
+        if br >= 0:
+            _add_end_force2(bv, br, nr, Tr, frx, frz)
+            _add_const_mass(D, br, nr, M.ekd, e, 0, 2.0 * m6)
+        if bs >= 0:
+            _add_end_force2(bv, bs, ns, Ts, fsx, fsz)
+            _add_const_mass(D, bs, ns, M.ekd, e, 1, 2.0 * m6)
+        ch = M.echild[e]
+        if ch == 0:
+            _add_mass2(U[br], nr, Tr, ns, Ts, m6)
+        elif ch == 1:
+            _add_mass2(U[bs], ns, Ts, nr, Tr, m6)
+    if not tree_solve(D, U, W.Y, W.piv, bv, M.order, M.parent, M.bsz):
+        return 1
+    for k in range(nw):
+        o = 6 * k + 3
+        dx[o], dx[o + 1], dx[o + 2] = bv[k, 0], bv[k, 1], bv[k, 2]
+    for j in range(nn):
+        o = base + 4 * j + 2
+        dx[o], dx[o + 1] = bv[nw + j, 0], bv[nw + j, 1]
+    return 0

@@ -1,0 +1,397 @@
+"""Right-hand side of the 3D model: wings (rigid bodies), free cable nodes and truss elements.
+
+Implements docs/model.md: assembly of eq. (25) M v' = f + h - D^T sigma into blocks (6 dof per wing,
+3 per free node) and its O(N) solution by block elimination along the tree the elements form
+(``order`` lists the blocks children-first, ``parent`` the one block each is coupled to later).
+
+Switches are arguments whose *type* selects the compiled path: ``sag`` is None (plain tension-only
+truss) or any float64 array (sag correction on); ``caero`` is None (no cable aerodynamics) or
+float64[2] = (C_N0, C_T0). numba prunes the ``is None`` branches at compile time, so a switched-off
+part costs nothing at run time.
+"""
+
+import math
+
+from numba import njit
+
+from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_at, wind_rate
+from laddermill_gym.kernels.cable import aero_load, lateral_elongation, tension_plain, tension_sag
+from laddermill_gym.kernels.rigid.aero import wing_aero
+from laddermill_gym.kernels.small import lu_factor, lu_solve_cols, lu_solve_vec, quat_rotation
+from laddermill_gym.rotorcraft.craft_kernels import craft_loads
+
+END_WING, END_NODE, END_FIXED = 0, 1, 2
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _end_kinematics(kind, idx, att, x, Rw, fixed, nw, T, ev):
+    """Position ev[0:3], velocity ev[3:6] and velocity-quadratic acceleration ev[6:9] (global) of an
+    element end, and its 3 x nb velocity transformation T (eq. 13). Returns the block size (0: fixed)."""
+    if kind == END_WING:
+        o = 13 * idx
+        R = Rw[idx]
+        ax, ay, az = att[0], att[1], att[2]
+        vx, vy, vz = x[o + 7], x[o + 8], x[o + 9]
+        p, q, r = x[o + 10], x[o + 11], x[o + 12]
+        # body velocity of the attachment point and w x (v + w x a)
+        wax, way, waz = q * az - r * ay, r * ax - p * az, p * ay - q * ax
+        bx, by, bz = vx + wax, vy + way, vz + waz
+        cx, cy, cz = q * bz - r * by, r * bx - p * bz, p * by - q * bx
+        for i in range(3):
+            ev[i] = x[o + i] + R[i, 0] * ax + R[i, 1] * ay + R[i, 2] * az
+            ev[3 + i] = R[i, 0] * bx + R[i, 1] * by + R[i, 2] * bz
+            ev[6 + i] = R[i, 0] * cx + R[i, 1] * cy + R[i, 2] * cz
+            T[i, 0] = R[i, 0]
+            T[i, 1] = R[i, 1]
+            T[i, 2] = R[i, 2]
+            # -R a~ : column j is R (e_j x a)
+            T[i, 3] = R[i, 2] * ay - R[i, 1] * az
+            T[i, 4] = R[i, 0] * az - R[i, 2] * ax
+            T[i, 5] = R[i, 1] * ax - R[i, 0] * ay
+        return 6
+    if kind == END_NODE:
+        o = 13 * nw + 6 * idx
+        for i in range(3):
+            ev[i] = x[o + i]
+            ev[3 + i] = x[o + 3 + i]
+            ev[6 + i] = 0.0
+            for j in range(3):
+                T[i, j] = 1.0 if i == j else 0.0
+        return 3
+    for i in range(3):
+        ev[i] = fixed[idx, i]
+        ev[3 + i] = 0.0
+        ev[6 + i] = 0.0
+    return 0
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _add_end_force(bv, blk, nb, T, fx, fy, fz):
+    """Generalised force T^T F of a global force F at an element end."""
+    for j in range(nb):
+        bv[blk, j] += T[0, j] * fx + T[1, j] * fy + T[2, j] * fz
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _add_mass(A, nb1, T1, nb2, T2, m):
+    """A[:nb1, :nb2] += m T1^T T2."""
+    for i in range(nb1):
+        for j in range(nb2):
+            A[i, j] += m * (T1[0, i] * T2[0, j] + T1[1, i] * T2[1, j] + T1[2, i] * T2[2, j])
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _add_const_mass(D, blk, nb, ekd, e, end, m):
+    """D[blk] += m T^T T, with T^T T of the element end precomputed (it does not depend on the rotation)."""
+    for i in range(nb):
+        for j in range(nb):
+            D[blk, i, j] += m * ekd[e, end, i, j]
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _block_of(kind, idx, nw):
+    if kind == END_WING:
+        return idx
+    if kind == END_NODE:
+        return nw + idx
+    return -1
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _eliminate6(D, U, Y, bv, c, p):
+    """Fixed-size (6 x 6 child, 6 x 6 parent) elimination step without pivoting: the diagonal blocks of
+    wings are symmetric positive definite plus a small apparent-mass term, and so are their Schur
+    complements. Constant loop bounds let the compiler unroll and vectorise."""
+    for k in range(6):
+        inv = 1.0 / D[c, k, k]
+        for i in range(k + 1, 6):
+            f = D[c, i, k] * inv
+            D[c, i, k] = f
+            for j in range(k + 1, 6):
+                D[c, i, j] -= f * D[c, k, j]
+    for i in range(6):
+        for j in range(6):
+            Y[c, i, j] = U[c, i, j]
+    for i in range(1, 6):
+        for j in range(i):
+            f = D[c, i, j]
+            bv[c, i] -= f * bv[c, j]
+            for q in range(6):
+                Y[c, i, q] -= f * Y[c, j, q]
+    for i in range(5, -1, -1):
+        for j in range(i + 1, 6):
+            f = D[c, i, j]
+            bv[c, i] -= f * bv[c, j]
+            for q in range(6):
+                Y[c, i, q] -= f * Y[c, j, q]
+        inv = 1.0 / D[c, i, i]
+        bv[c, i] *= inv
+        for q in range(6):
+            Y[c, i, q] *= inv
+    for k in range(6):
+        bk = bv[c, k]
+        for i in range(6):
+            f = U[c, k, i]
+            bv[p, i] -= f * bk
+            for j in range(6):
+                D[p, i, j] -= f * Y[c, k, j]
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
+    """Solve the block system in place (solution in bv) by elimination children-first.
+
+    D[c] diagonal blocks (may be unsymmetric), U[c] = M[c, parent[c]], M[parent[c], c] = U[c]^T.
+    Returns False if a diagonal block is singular (or, on the fast 6 x 6 path, has a non-positive or
+    non-finite pivot)."""
+    nbk = order.size
+    for ii in range(nbk):
+        c = order[ii]
+        n = bsz[c]
+        p = parent[c]
+        if n == 6 and p >= 0 and bsz[p] == 6:
+            ok = True
+            for k in range(6):
+                if not D[c, k, k] > 0.0:
+                    ok = False
+            if ok:
+                _eliminate6(D, U, Y, bv, c, p)
+                continue
+        if not lu_factor(D[c], piv[c], n):
+            return False
+        lu_solve_vec(D[c], piv[c], n, bv[c])
+        if p >= 0:
+            m = bsz[p]
+            for i in range(n):
+                for j in range(m):
+                    Y[c, i, j] = U[c, i, j]
+            lu_solve_cols(D[c], piv[c], n, Y[c], m)
+            for k in range(n):
+                bk = bv[c, k]
+                for i in range(m):
+                    f = U[c, k, i]
+                    bv[p, i] -= f * bk
+                    for j in range(m):
+                        D[p, i, j] -= f * Y[c, k, j]
+    for ii in range(nbk - 1, -1, -1):
+        c = order[ii]
+        p = parent[c]
+        if p >= 0:
+            n = bsz[c]
+            m = bsz[p]
+            for i in range(n):
+                s = 0.0
+                for j in range(m):
+                    s += Y[c, i, j] * bv[p, j]
+                bv[c, i] -= s
+    return True
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def rhs3d(t, x, u, dx, M, W, sag, caero, craft=None):
+    """State derivative dx of the 3D model at time t, state x, controls u (3 per wing).
+
+    M: packed model (simulator.pack_model), W: workspace (simulator.make_workspace). Element tensions
+    [N] are left in W.tension. ``craft`` None: wings with their aerodynamics; otherwise body 0 is Roberts'
+    rotorcraft and craft = (cp, rp, cout, scratch) as in kernels/craft.py (compile-time choice).
+    Returns 0, or 1 if the mass matrix is singular.
+    """
+    nw = M.wtype.size
+    nn = M.node_mass.size
+    ne = M.ef.shape[0]
+    g = M.glob[0]
+    a0, da = M.glob[3], M.glob[4]
+    wf = M.wf
+    s_mod, d_mod, sd_mod, dd_mod = modulation(t, M.tmod[0], M.tmod[1], M.ms, M.md)
+    D, U, bv = W.D, W.U, W.bv
+    nbk = nw + nn
+    for b in range(nbk):
+        for i in range(6):
+            bv[b, i] = 0.0
+            for j in range(6):
+                D[b, i, j] = 0.0
+                U[b, i, j] = 0.0
+    ao = W.aout
+    # ---- wings: kinematics, inertia, gravity, aerodynamics
+    for k in range(nw):
+        o = 13 * k
+        R = W.Rw[k]
+        q0, q1, q2, q3 = x[o + 3], x[o + 4], x[o + 5], x[o + 6]
+        quat_rotation(q0, q1, q2, q3, R)
+        vx, vy, vz = x[o + 7], x[o + 8], x[o + 9]
+        p, q, r = x[o + 10], x[o + 11], x[o + 12]
+        xd = R[0, 0] * vx + R[0, 1] * vy + R[0, 2] * vz
+        yd = R[1, 0] * vx + R[1, 1] * vy + R[1, 2] * vz
+        zd = R[2, 0] * vx + R[2, 1] * vy + R[2, 2] * vz
+        dx[o], dx[o + 1], dx[o + 2] = xd, yd, zd
+        dx[o + 3] = 0.5 * (-q1 * p - q2 * q - q3 * r)
+        dx[o + 4] = 0.5 * (q0 * p + q2 * r - q3 * q)
+        dx[o + 5] = 0.5 * (q0 * q + q3 * p - q1 * r)
+        dx[o + 6] = 0.5 * (q0 * r + q1 * q - q2 * p)
+        ty = M.wtype[k]
+        m = M.tf[ty, 0]
+        jxx, jyy, jzz, jxz = M.tf[ty, 1], M.tf[ty, 2], M.tf[ty, 3], M.tf[ty, 4]
+        Dk = D[k]
+        Dk[0, 0] = m
+        Dk[1, 1] = m
+        Dk[2, 2] = m
+        Dk[3, 3] = jxx
+        Dk[4, 4] = jyy
+        Dk[5, 5] = jzz
+        Dk[3, 5] = -jxz
+        Dk[5, 3] = -jxz
+        # angular momentum J w
+        hx = jxx * p - jxz * r
+        hy = jyy * q
+        hz = jzz * r - jxz * p
+        fx = m * g * R[2, 0] - m * (q * vz - r * vy)
+        fy = m * g * R[2, 1] - m * (r * vx - p * vz)
+        fz = m * g * R[2, 2] - m * (p * vy - q * vx)
+        mx = -(q * hz - r * hy)
+        my = -(r * hx - p * hz)
+        mz = -(p * hy - q * hx)
+        rho = density(-x[o + 2], wf)
+        if craft is not None:
+            craft_loads(x, o, R, u, wf, s_mod, d_mod, craft)
+            co = craft[2]
+            fx += co[0]
+            fy += co[1]
+            fz += co[2]
+            mx += co[3]
+            my += co[4]
+            mz += co[5]
+        elif rho > 0.0:
+            wgx, wgy, wgz = wind_at(x[o + 2], wf, s_mod, d_mod)
+            wbx = R[0, 0] * wgx + R[1, 0] * wgy + R[2, 0] * wgz
+            wby = R[0, 1] * wgx + R[1, 1] * wgy + R[2, 1] * wgz
+            wbz = R[0, 2] * wgx + R[1, 2] * wgy + R[2, 2] * wgz
+            ua, va, wa = vx - wbx, vy - wby, vz - wbz
+            # known part of the alpha rate: g . (w x w_b - R^T dw/dt)
+            dwx, dwy, dwz = wind_rate(x[o + 2], zd, wf, s_mod, d_mod, sd_mod, dd_mod)
+            ex_ = (q * wbz - r * wby) - (R[0, 0] * dwx + R[1, 0] * dwy + R[2, 0] * dwz)
+            ez_ = (p * wby - q * wbx) - (R[0, 2] * dwx + R[1, 2] * dwy + R[2, 2] * dwz)
+            d2 = ua * ua + wa * wa
+            ad0 = (-wa * ex_ + ua * ez_) / d2 if d2 > 1e-18 else 0.0
+            wing_aero(ty, M.tf, M.ac, a0, da, rho, ua, va, wa, p, q, r,
+                      u[3 * k], u[3 * k + 1], u[3 * k + 2], ad0, W.coef, ao)
+            fx += ao[0]
+            fy += ao[1]
+            fz += ao[2]
+            mx += ao[3]
+            my += ao[4]
+            mz += ao[5]
+            for i in range(6):
+                ki = ao[6 + i]
+                if ki != 0.0:
+                    for j in range(3):
+                        Dk[i, j] -= ki * ao[12 + j]
+        bv[k, 0] = fx
+        bv[k, 1] = fy
+        bv[k, 2] = fz
+        bv[k, 3] = mx
+        bv[k, 4] = my
+        bv[k, 5] = mz
+    # ---- free nodes: kinematics and lumped mass
+    base = 13 * nw
+    for j in range(nn):
+        o = base + 6 * j
+        dx[o], dx[o + 1], dx[o + 2] = x[o + 3], x[o + 4], x[o + 5]
+        mn = M.node_mass[j]
+        b = nw + j
+        D[b, 0, 0] = mn
+        D[b, 1, 1] = mn
+        D[b, 2, 2] = mn
+        bv[b, 2] += mn * g
+    # ---- cable elements
+    Tr, Ts, er, es = W.Tr, W.Ts, W.er, W.es
+    for e in range(ne):
+        kr, ks = M.ek[e, 0], M.ek[e, 1]
+        ir, is_ = M.ei[e, 0], M.ei[e, 1]
+        nr = _end_kinematics(kr, ir, M.ea[e, 0], x, W.Rw, M.fixed, nw, Tr, er)
+        ns = _end_kinematics(ks, is_, M.ea[e, 1], x, W.Rw, M.fixed, nw, Ts, es)
+        l0, mu, EA, DA, dia = M.ef[e, 0], M.ef[e, 1], M.ef[e, 2], M.ef[e, 3], M.ef[e, 4]
+        lx, ly, lz = es[0] - er[0], es[1] - er[1], es[2] - er[2]
+        ln = math.sqrt(lx * lx + ly * ly + lz * lz)
+        if ln > 1e-9:
+            ux, uy, uz = lx / ln, ly / ln, lz / ln
+        else:
+            ux, uy, uz = 0.0, 0.0, 0.0
+        eps = ln - l0
+        epsd = ux * (es[3] - er[3]) + uy * (es[4] - er[4]) + uz * (es[5] - er[5])
+        me = mu * l0
+        # nodal loads (global) at r and s: gravity, aerodynamics, quadratic velocity terms
+        wg = 0.5 * me * g
+        m6 = me / 6.0
+        frx = -m6 * (2.0 * er[6] + es[6])
+        fry = -m6 * (2.0 * er[7] + es[7])
+        frz = -m6 * (2.0 * er[8] + es[8]) + wg
+        fsx = -m6 * (er[6] + 2.0 * es[6])
+        fsy = -m6 * (er[7] + 2.0 * es[7])
+        fsz = -m6 * (er[8] + 2.0 * es[8]) + wg
+        pgz = mu * g
+        prx, pry, prz = 0.0, 0.0, pgz
+        psx, psy, psz = 0.0, 0.0, pgz
+        if caero is not None:
+            rho_r = density(-er[2], wf)
+            rho_s = density(-es[2], wf)
+            w1, w2, w3 = wind_at(er[2], wf, s_mod, d_mod)
+            ar1, ar2, ar3 = aero_load(w1 - er[3], w2 - er[4], w3 - er[5], ux, uy, uz,
+                                      rho_r, dia, caero[0], caero[1])
+            w1, w2, w3 = wind_at(es[2], wf, s_mod, d_mod)
+            as1, as2, as3 = aero_load(w1 - es[3], w2 - es[4], w3 - es[5], ux, uy, uz,
+                                      rho_s, dia, caero[0], caero[1])
+            c6 = ln / 6.0
+            frx += c6 * (2.0 * ar1 + as1)
+            fry += c6 * (2.0 * ar2 + as2)
+            frz += c6 * (2.0 * ar3 + as3)
+            fsx += c6 * (ar1 + 2.0 * as1)
+            fsy += c6 * (ar2 + 2.0 * as2)
+            fsz += c6 * (ar3 + 2.0 * as3)
+            prx += ar1
+            pry += ar2
+            prz += ar3
+            psx += as1
+            psy += as2
+            psz += as3
+        if sag is not None:
+            if ln > 1e-9:
+                epsp = lateral_elongation(ln, ux, uy, uz, prx, pry, prz, psx, psy, psz)
+            else:
+                epsp = 0.0
+            sig = tension_sag(EA, DA, l0, eps, epsd, epsp)
+        else:
+            sig = tension_plain(EA, DA, l0, eps, epsd)
+        W.tension[e] = sig
+        frx += sig * ux
+        fry += sig * uy
+        frz += sig * uz
+        fsx -= sig * ux
+        fsy -= sig * uy
+        fsz -= sig * uz
+        br = _block_of(kr, ir, nw)
+        bs = _block_of(ks, is_, nw)
+        if br >= 0:
+            _add_end_force(bv, br, nr, Tr, frx, fry, frz)
+            _add_const_mass(D, br, nr, M.ekd, e, 0, 2.0 * m6)
+        if bs >= 0:
+            _add_end_force(bv, bs, ns, Ts, fsx, fsy, fsz)
+            _add_const_mass(D, bs, ns, M.ekd, e, 1, 2.0 * m6)
+        ch = M.echild[e]
+        if ch == 0:
+            _add_mass(U[br], nr, Tr, ns, Ts, m6)
+        elif ch == 1:
+            _add_mass(U[bs], ns, Ts, nr, Tr, m6)
+    # ---- solve M v' = F
+    if not tree_solve(D, U, W.Y, W.piv, bv, M.order, M.parent, M.bsz):
+        return 1
+    for k in range(nw):
+        o = 13 * k + 7
+        for i in range(6):
+            dx[o + i] = bv[k, i]
+    for j in range(nn):
+        o = base + 6 * j + 3
+        b = nw + j
+        dx[o] = bv[b, 0]
+        dx[o + 1] = bv[b, 1]
+        dx[o + 2] = bv[b, 2]
+    return 0

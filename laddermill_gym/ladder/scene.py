@@ -1,0 +1,226 @@
+"""Scenes: YAML files in configs/scenes/ loaded into frozen parameters and built into a simulator.
+
+A scene file names its wing type and cable files, the wind, the ground points, a chain of wings on
+cable pieces, the fidelity switches, how the initial state is found, and the integrator. See
+configs/scenes/tethered_wing.yaml for a commented example and README.md ("Adding a scene").
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from laddermill_gym.model.builders import CableSpec, ChainLayout, build_chain
+from laddermill_gym.model.configio import CONFIG_DIR, ConfigError, Section, config_path, read_yaml
+from laddermill_gym.model.params import AERO_COLUMNS, N_CONTROLS, AeroTable, Assembly, WindParams, WingType
+from laddermill_gym.sim.simulator import IntegratorSettings, Simulator
+
+SCENE_DIR = CONFIG_DIR / "scenes"
+
+
+def scene_path(name_or_path: str | Path) -> Path:
+    """The shipped configs/scenes/NAME.yaml for a bare name, else the path itself."""
+    return config_path("scenes", name_or_path)
+
+
+def available_scenes() -> list[str]:
+    return sorted(p.stem for p in SCENE_DIR.glob("*.yaml"))
+
+
+# ---------------------------------------------------------------------------------------- parts
+def load_aero_table(path: Path) -> AeroTable:
+    """Read a wing's coefficient table (CSV: alpha_deg and the AERO_COLUMNS, '#' comments)."""
+    try:
+        with open(path, encoding="utf-8") as fh:
+            lines = [ln for ln in fh if ln.strip() and not ln.lstrip().startswith("#")]
+    except OSError as err:
+        raise ConfigError(f"{path}: cannot read aerodynamic table: {err}") from None
+    header = [h.strip() for h in lines[0].split(",")]
+    want = ["alpha_deg", *AERO_COLUMNS]
+    if header != want:
+        raise ConfigError(f"{path}: header {header} must be {want}")
+    try:
+        data = np.array([[float(v) for v in ln.split(",")] for ln in lines[1:]])
+    except ValueError as err:
+        raise ConfigError(f"{path}: non-numeric entry: {err}") from None
+    if data.ndim != 2 or data.shape[1] != len(want) or data.shape[0] < 8:
+        raise ConfigError(f"{path}: table must have >= 8 rows of {len(want)} numbers, got shape {data.shape}")
+    if not np.all(np.isfinite(data)):
+        r, c = np.argwhere(~np.isfinite(data))[0]
+        raise ConfigError(f"{path}: field '{want[c]}' row {r} = {data[r, c]!r}: must be finite")
+    a = data[:, 0]
+    step = np.diff(a)
+    if abs(a[0] + 180) > 1e-9 or abs(a[-1] - 180) > 1e-9 or np.ptp(step) > 1e-9 or step[0] <= 0:
+        raise ConfigError(f"{path}: field 'alpha_deg' must be a uniform grid from -180 to 180 deg")
+    if not np.allclose(data[0, 1:], data[-1, 1:], rtol=0, atol=1e-12):
+        raise ConfigError(f"{path}: rows at -180 and 180 deg must be equal (periodic table)")
+    return AeroTable(alpha=np.radians(a), values=np.ascontiguousarray(data[:, 1:]), source=str(path))
+
+
+def load_wing_type(path: Path) -> WingType:
+    """Read a wing type YAML (mass, inertia, geometry, attachment, control limits, table file)."""
+    s = read_yaml(path)
+    inertia = s.section("inertia")
+    J = (inertia.number("Jxx", positive=True), inertia.number("Jyy", positive=True),
+         inertia.number("Jzz", positive=True), inertia.number("Jxz"))
+    inertia.done()
+    if J[0] * J[2] - J[3] ** 2 <= 0:
+        raise ConfigError(f"{path}: field 'inertia' = {J}: Jxx Jzz - Jxz^2 must be > 0")
+    lim = s.section("control_limits_deg")
+    limits = np.zeros((N_CONTROLS, 2))
+    for i, name in enumerate(("elevator", "rudder", "aileron")):
+        lo_hi = lim.vector(name, 2)
+        if not lo_hi[0] < lo_hi[1]:
+            raise lim.error(name, list(lo_hi), "lower limit must be below the upper limit")
+        limits[i] = np.radians(lo_hi)
+    lim.done()
+    table_file = config_path("wings", s.text("aero_table"), path.parent)
+    wt = WingType(
+        name=s.text("name"), mass=s.number("mass", positive=True), inertia=J,
+        area=s.number("area", positive=True), span=s.number("span", positive=True),
+        chord=s.number("chord", positive=True), r_ref=s.vector("aero_reference", 3),
+        attachment=s.vector("attachment", 3), control_limits=limits, aero=load_aero_table(table_file))
+    s.done()
+    return wt
+
+
+def load_cable(path: Path) -> CableSpec:
+    """Read a cable YAML (diameter, mass per length, EA, DA, breaking load, cn0, ct0)."""
+    s = read_yaml(path)
+    c = CableSpec(diameter=s.number("diameter", positive=True),
+                  mass_per_length=s.number("mass_per_length", positive=True),
+                  EA=s.number("EA", positive=True), DA=s.number("DA", nonneg=True),
+                  breaking_load=s.number("breaking_load", positive=True), cn0=s.number("cn0", nonneg=True),
+                  ct0=s.number("ct0", nonneg=True))
+    s.done()
+    return c
+
+
+def read_wind(s: Section) -> WindParams:
+    w = WindParams(
+        v0=s.number("v0", nonneg=True), h0=s.number("h0", positive=True), v1=s.number("v1"),
+        exponent=s.number("exponent", nonneg=True), direction_inf=s.number("direction_inf_rad", 0.0),
+        direction_height=s.number("direction_height", 500.0, positive=True),
+        rho0=s.number("rho0", nonneg=True), density_model=s.text("density_model", "barometric",
+                                                                 choices=("barometric", "isa")),
+        scale_height=s.number("scale_height", 8400.0, positive=True))
+    s.done()
+    return w
+
+
+# ---------------------------------------------------------------------------------------- scene
+@dataclass(frozen=True)
+class InitialSpec:
+    """How the initial state is found: 'trim' (one wing at a target angle of attack alpha [rad]) or
+    'static' (equilibrium at rest with the given elevator angles [rad] of ascending/descending wings)."""
+
+    method: str
+    alpha: float
+    elevation: float
+    elevator_up: float
+    elevator_down: float
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A loaded scene: the built assembly plus what is needed to start it."""
+
+    name: str
+    file: Path
+    description: str
+    assembly: Assembly
+    layout: ChainLayout
+    cable: CableSpec
+    ground_points: dict
+    start: str
+    end: str | None
+    piece_length: float
+    initial: InitialSpec
+    settings: IntegratorSettings
+
+    def simulator(self, initial_state: np.ndarray | None = None, controls: np.ndarray | None = None) -> Simulator:
+        """A compiled simulator started from the scene's initial state (found on first use)."""
+        if initial_state is None:
+            initial_state, c0 = self.initial_state()
+            controls = c0 if controls is None else controls
+        return Simulator(self.assembly, initial_state, self.settings, controls)
+
+    def initial_state(self) -> tuple[np.ndarray, np.ndarray]:
+        """(state, controls) at the scene's initial equilibrium."""
+        from laddermill_gym.ladder.initial import initial_state
+
+        return initial_state(self)
+
+    def replace(self, **changes) -> Scene:
+        return dataclasses.replace(self, **changes)
+
+
+def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: bool | None = None,
+               cable_aero: bool | None = None, elements_per_piece: int | None = None,
+               n_wings: int | None = None, dt: float | None = None, method: str | None = None) -> Scene:
+    """Load a scene YAML; keyword overrides replace the file's values (for benchmarks and studies)."""
+    path = scene_path(name_or_path)
+    s = read_yaml(path)
+    name = s.text("name")
+    desc = s.text("description", "")
+    dim = s.number("dimension", integer=True)
+    gravity = s.number("gravity", positive=True)
+    wind = read_wind(s.section("wind"))
+    wing_type = load_wing_type(config_path("wings", s.text("wing_type"), path.parent))
+    cable = load_cable(config_path("cables", s.text("cable"), path.parent))
+    gp = s.section("ground_points")
+    points = {k: gp.vector(k, 3) for k in list(gp.data)}
+    gp.done()
+    ch = s.section("chain")
+    start = ch.text("start")
+    end = ch.text("end", None)
+    nw = ch.number("n_wings", integer=True, positive=True)
+    piece = ch.number("piece_length", positive=True)
+    epp = ch.number("elements_per_piece", integer=True, positive=True)
+    ch.done()
+    for key, pname in (("start", start), ("end", end)):
+        if pname is not None and pname not in points:
+            raise ch.error(key, pname, f"is not one of the ground points {sorted(points)}")
+    fid = s.section("fidelity")
+    sag_on = fid.flag("sag")
+    caero_on = fid.flag("cable_aero")
+    fid.done()
+    ini = s.section("initial")
+    init = InitialSpec(method=ini.text("method", choices=("trim", "static")),
+                       alpha=math.radians(ini.number("alpha_deg", 8.0)),
+                       elevation=math.radians(ini.number("elevation_deg", 45.0)),
+                       elevator_up=math.radians(ini.number("elevator_up_deg", 0.0)),
+                       elevator_down=math.radians(ini.number("elevator_down_deg", 0.0)))
+    ini.done()
+    it = s.section("integrator")
+    settings = IntegratorSettings(method=it.text("method", choices=("rk4", "dp54")), dt=it.number("dt", positive=True),
+                                  rtol=it.number("rtol", 1e-8, positive=True),
+                                  atol=it.number("atol", 1e-10, positive=True),
+                                  max_speed=it.number("max_speed", positive=True),
+                                  max_rate=it.number("max_rate", positive=True))
+    it.done()
+    s.done()
+    # overrides
+    dim = dim if dimension is None else int(dimension)
+    if dim not in (2, 3):
+        raise ConfigError(f"{path}: field 'dimension' = {dim!r}: must be 2 or 3")
+    if dim == 2 and (wind.direction_inf != 0.0 or abs(wing_type.attachment[1]) > 0 or abs(wing_type.r_ref[1]) > 0):
+        raise ConfigError(f"{path}: the in-plane mode needs a fixed wind direction and symmetric wings")
+    sag_on = sag_on if sag is None else bool(sag)
+    caero_on = caero_on if cable_aero is None else bool(cable_aero)
+    epp = epp if elements_per_piece is None else int(elements_per_piece)
+    nw = nw if n_wings is None else int(n_wings)
+    if dt is not None or method is not None:
+        settings = dataclasses.replace(settings, dt=settings.dt if dt is None else float(dt),
+                                       method=settings.method if method is None else method)
+    names = list(points)
+    fixed = np.array([points[k] for k in names])
+    asm, layout = build_chain((wing_type,), np.zeros(nw, dtype=np.int64), piece, epp, cable, fixed,
+                              names.index(start), None if end is None else names.index(end), wind,
+                              dim=dim, sag=sag_on, cable_aero=caero_on, gravity=gravity)
+    return Scene(name=name, file=path, description=desc, assembly=asm, layout=layout, cable=cable,
+                 ground_points=points, start=start, end=end, piece_length=piece, initial=init, settings=settings)

@@ -1,0 +1,158 @@
+"""Strict YAML reading: every error names the file, the field and the offending value."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import yaml
+
+
+class ConfigError(ValueError):
+    """An invalid configuration file: the message names the file, the field and the value."""
+
+
+def _find_config_dir() -> Path:
+    """The shipped configs: the package data ``laddermill_gym.configs`` (a wheel or ``pip install .``); in a
+    source checkout installed in editable mode that is the repository's top-level ``configs/`` itself."""
+    from importlib.resources import files
+
+    try:
+        root = Path(str(files("laddermill_gym.configs")))
+    except ModuleNotFoundError:  # the source tree on sys.path without any install
+        root = Path(__file__).resolve().parents[2] / "configs"
+    if not (root / "scenes").is_dir():
+        raise FileNotFoundError(f"laddermill_gym: the shipped configs are missing (looked in {root})")
+    return root
+
+
+#: Folder of the shipped configuration files (scenes, wings, cables, rotors, rotorcraft, agents).
+CONFIG_DIR: Path = _find_config_dir()
+
+
+def config_path(kind: str, name_or_path: str | Path, base: Path | None = None) -> Path:
+    """Path of a configuration file.
+
+    ``name_or_path`` is a bare name (``"tethered_wing"``: ``CONFIG_DIR/kind/NAME.yaml``), or a path: absolute,
+    relative to ``base`` (the folder of the file that names it) when that file exists there, else relative to
+    the working directory. A path that starts with ``package:`` names the shipped data
+    (``package:wings/meijaard_wing.yaml``). ``kind`` is a folder of ``CONFIG_DIR`` (``"scenes"``, ...).
+    """
+    text = str(name_or_path)
+    if text.startswith("package:"):
+        return CONFIG_DIR / text[len("package:"):]
+    p = Path(text)
+    if p.suffix not in (".yaml", ".yml", ".csv") and len(p.parts) == 1 and not p.exists():
+        return CONFIG_DIR / kind / f"{text}.yaml"
+    if base is not None and not p.is_absolute() and (base / p).exists():
+        return (base / p).resolve()
+    return p
+
+
+def _show(value: Any) -> str:
+    """Value as the user wrote it (numpy scalars and arrays shown as plain Python numbers)."""
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_show(v) for v in value) + "]"
+    if isinstance(value, np.generic):
+        value = value.item()
+    return repr(value)
+
+
+class Section:
+    """A mapping read from a YAML file, with typed getters that validate and track unknown keys."""
+
+    def __init__(self, data: Any, file: Path | str, path: str = ""):
+        self.file = str(file)
+        self.path = path
+        if not isinstance(data, dict):
+            raise ConfigError(f"{self.file}: {path or 'top level'} must be a mapping, got {data!r}")
+        self.data = data
+        self.used: set[str] = set()
+
+    def _name(self, key: str) -> str:
+        return f"{self.path}.{key}" if self.path else key
+
+    def error(self, key: str, value: Any, why: str) -> ConfigError:
+        return ConfigError(f"{self.file}: field '{self._name(key)}' = {_show(value)}: {why}")
+
+    def has(self, key: str) -> bool:
+        return key in self.data
+
+    def raw(self, key: str, default: Any = ...) -> Any:
+        self.used.add(key)
+        if key not in self.data:
+            if default is ...:
+                raise ConfigError(f"{self.file}: missing field '{self._name(key)}'")
+            return default
+        return self.data[key]
+
+    def number(self, key: str, default: Any = ..., *, positive=False, nonneg=False, integer=False) -> float:
+        v = self.raw(key, default)
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise self.error(key, v, "must be a number")
+        if not math.isfinite(v):
+            raise self.error(key, v, "must be finite")
+        if positive and not v > 0:
+            raise self.error(key, v, "must be > 0")
+        if nonneg and v < 0:
+            raise self.error(key, v, "must be >= 0")
+        if integer:
+            if int(v) != v:
+                raise self.error(key, v, "must be an integer")
+            return int(v)
+        return float(v)
+
+    def flag(self, key: str, default: Any = ...) -> bool:
+        v = self.raw(key, default)
+        if not isinstance(v, bool):
+            raise self.error(key, v, "must be true or false")
+        return v
+
+    def text(self, key: str, default: Any = ..., choices: tuple[str, ...] | None = None) -> str:
+        v = self.raw(key, default)
+        if v is None and default is None:
+            return None
+        if not isinstance(v, str):
+            raise self.error(key, v, "must be a string")
+        if choices and v not in choices:
+            raise self.error(key, v, f"must be one of {choices}")
+        return v
+
+    def vector(self, key: str, length: int | None = None, default: Any = ...) -> np.ndarray:
+        v = self.raw(key, default)
+        try:
+            a = np.asarray(v, dtype=float)
+        except (TypeError, ValueError):
+            raise self.error(key, v, "must be a list of numbers") from None
+        if a.ndim != 1 or (length is not None and a.size != length):
+            raise self.error(key, v, f"must be a list of {length or 'some'} numbers")
+        if not np.all(np.isfinite(a)):
+            raise self.error(key, v, "must be finite")
+        return a
+
+    def section(self, key: str, default: Any = ...) -> Section:
+        v = self.raw(key, default)
+        return Section(v, self.file, self._name(key))
+
+    def done(self) -> None:
+        """Raise on keys that were never read (typos, unsupported options)."""
+        extra = sorted(set(self.data) - self.used)
+        if extra:
+            raise ConfigError(f"{self.file}: unknown field '{self._name(extra[0])}' "
+                              f"(value {self.data[extra[0]]!r}); known fields: {sorted(self.used)}")
+
+
+def read_yaml(path: Path | str) -> Section:
+    path = Path(path)
+    if not path.is_file():
+        raise ConfigError(f"{path}: no such file")
+    with open(path, encoding="utf-8") as fh:
+        try:
+            data = yaml.safe_load(fh)
+        except yaml.YAMLError as err:
+            raise ConfigError(f"{path}: not valid YAML: {err}") from None
+    return Section(data if data is not None else {}, path)

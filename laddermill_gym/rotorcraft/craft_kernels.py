@@ -1,0 +1,153 @@
+"""Loads on Roberts' tethered twin-rotor craft: two rotors side by side, vertical fins and frame drag.
+
+The craft is body 0 of an ordinary 3D assembly (its tethers are the core's cable elements); ``rhs3d``
+calls :func:`craft_loads` instead of the wing aerodynamics when its ``craft`` argument is given. Model and
+sources: ``laddermill_gym/docs/rotorcraft.md``; rotor formulas: ``kernels/rotor.py``.
+
+``craft`` is a tuple of four float64 arrays ``(cp, rp, cout, scratch)``:
+
+- ``cp[N_CP]``: craft parameters, indices C_* below (SI units, body axes x forward, y right, z down).
+- ``rp[rotor.N_PARAMS]``: blade parameters (sigma, a, delta, B, gamma) as in ``kernels/rotor.py``.
+- ``cout[N_COUT]``: written on every call: body-frame force [N] and moment [N m] on the craft
+  (entries 0-5), then per rotor r (right r = 0, left r = 1) the block at 6 + N_RO r: R_* indices.
+- ``scratch[rotor.N_OUT]``: the inflow solver's output.
+
+Controls: u[0] collective pitch theta0 [rad], u[1] differential collective dtheta [rad]: the right rotor
+runs at theta0 + dtheta, the left at theta0 - dtheta.
+"""
+
+import math
+
+from numba import njit
+
+from laddermill_gym.atmosphere.wind_kernels import density, wind_at
+from laddermill_gym.rotorcraft.rotor_kernels import (
+    O_CT,
+    O_LAMBDA,
+    O_STATUS,
+    P_A,
+    P_B,
+    P_DELTA,
+    P_GAMMA,
+    P_SIGMA,
+    STATUS_OK,
+    coning_angle,
+    h_force_coefficient,
+    lateral_flapping,
+    longitudinal_flapping,
+    solve_inflow,
+    tip_incidence,
+    torque_coefficient,
+)
+
+# craft parameters
+C_RADIUS, C_OMEGA, C_HUB_X, C_HUB_Y, C_HUB_Z = 0, 1, 2, 3, 4
+C_FIN_AREA, C_FIN_SLOPE, C_FIN_X, C_FIN_Z, C_DRAG_AREA = 5, 6, 7, 8, 9
+C_ETA, C_TOL, C_MAX_ITER = 10, 11, 12
+N_CP = 13
+
+# per-rotor outputs
+R_THRUST, R_HFORCE, R_TORQUE, R_POWER, R_MU, R_LAMBDA, R_CT, R_TIP_AOA, R_STATUS, R_THETA = range(10)
+N_RO = 10
+N_COUT = 6 + 2 * N_RO
+
+#: spin sense of the rotors about body -z (right rotor +1, left rotor -1: contra-rotating)
+SPIN = (1.0, -1.0)
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _air_at(x, o, R, px, py, pz, wf, s_mod, d_mod):
+    """Air velocity relative to the body point (px, py, pz) [m] in body axes [m/s], and the density there."""
+    vx, vy, vz = x[o + 7], x[o + 8], x[o + 9]
+    p, q, r = x[o + 10], x[o + 11], x[o + 12]
+    zg = x[o + 2] + R[2, 0] * px + R[2, 1] * py + R[2, 2] * pz
+    wgx, wgy, wgz = wind_at(zg, wf, s_mod, d_mod)
+    ax = R[0, 0] * wgx + R[1, 0] * wgy + R[2, 0] * wgz - (vx + q * pz - r * py)
+    ay = R[0, 1] * wgx + R[1, 1] * wgy + R[2, 1] * wgz - (vy + r * px - p * pz)
+    az = R[0, 2] * wgx + R[1, 2] * wgy + R[2, 2] * wgz - (vz + p * py - q * px)
+    return ax, ay, az, density(-zg, wf)
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _rotor(cp, rp, scratch, ax, ay, az, rho, theta0, out, k):
+    """One rotor in the relative air velocity (ax, ay, az) [m/s, body axes] at its hub.
+
+    Writes the R_* block at out[k:]; returns the body force (thrust along -z, H-force along the in-plane air
+    flow) [N] and the torque the rotor's generator puts on the frame about body z [N m] (before the spin sign).
+    """
+    rad, om = cp[C_RADIUS], cp[C_OMEGA]
+    vt = om * rad
+    vip = math.sqrt(ax * ax + ay * ay)
+    mu = max(vip / vt, 1e-9)
+    lam_inf = -az / vt
+    solve_inflow(rp, mu, lam_inf, theta0, cp[C_TOL], int(cp[C_MAX_ITER]), scratch)
+    out[k + R_STATUS] = scratch[O_STATUS]
+    out[k + R_THETA] = theta0
+    out[k + R_MU] = mu
+    if scratch[O_STATUS] != STATUS_OK:
+        for j in (R_THRUST, R_HFORCE, R_TORQUE, R_POWER, R_LAMBDA, R_CT, R_TIP_AOA):
+            out[k + j] = math.nan
+        return math.nan, math.nan, math.nan, math.nan
+    lam, ct = scratch[O_LAMBDA], scratch[O_CT]
+    sigma, a, delta, b, gamma = rp[P_SIGMA], rp[P_A], rp[P_DELTA], rp[P_B], rp[P_GAMMA]
+    a0 = coning_angle(gamma, mu, lam, theta0)
+    a1 = longitudinal_flapping(mu, lam, theta0)
+    b1 = lateral_flapping(mu, a0)
+    ch = h_force_coefficient(sigma, a, delta, b, mu, lam, theta0, a0, a1, b1)
+    cq = torque_coefficient(sigma, delta, mu, lam, ct, ch)
+    f = rho * math.pi * rad * rad * vt * vt
+    thrust, hforce, torque = f * ct, f * ch, f * rad * cq
+    out[k + R_THRUST] = thrust
+    out[k + R_HFORCE] = hforce
+    out[k + R_TORQUE] = torque
+    out[k + R_POWER] = -torque * om
+    out[k + R_LAMBDA] = lam
+    out[k + R_CT] = ct
+    out[k + R_TIP_AOA] = tip_incidence(theta0, mu, lam, a1)
+    ux, uy = (ax / vip, ay / vip) if vip > 0.0 else (0.0, 0.0)
+    return hforce * ux, hforce * uy, -thrust, torque
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def craft_loads(x, o, R, u, wf, s_mod, d_mod, craft):
+    """Aerodynamic and generator loads on the craft (body o of state x, rotation R) into craft[2][0:6].
+
+    Rotors at body (hub_x, +-hub_y, hub_z); quasi-steady Gessow & Myers rotor with Glauert inflow at each
+    hub's own relative air velocity (so roll rate gives differential inflow: the rotors' roll damping);
+    generator holds the rotor speed, so its reaction torque on the frame equals the rotor's torque. Fins:
+    side force 1/2 rho S a_f |u_x| u_y at (fin_x, 0, fin_z). Frame drag 1/2 rho C_D A |u| u at the CG.
+    Returns False if an inflow did not converge (loads then nan).
+    """
+    cp, rp, out, scratch = craft[0], craft[1], craft[2], craft[3]
+    fx = fy = fz = mx = my = mz = 0.0
+    ok = True
+    for r in range(2):
+        spin = SPIN[r]
+        hx, hy, hz = cp[C_HUB_X], cp[C_HUB_Y] if r == 0 else -cp[C_HUB_Y], cp[C_HUB_Z]
+        ax, ay, az, rho = _air_at(x, o, R, hx, hy, hz, wf, s_mod, d_mod)
+        theta = u[0] + u[1] if r == 0 else u[0] - u[1]
+        k = 6 + N_RO * r
+        gx, gy, gz, torque = _rotor(cp, rp, scratch, ax, ay, az, rho, theta, out, k)
+        if out[k + R_STATUS] != STATUS_OK:
+            ok = False
+        fx += gx
+        fy += gy
+        fz += gz
+        mx += hy * gz - hz * gy
+        my += hz * gx - hx * gz
+        mz += hx * gy - hy * gx + spin * torque
+    # fins
+    px, pz = cp[C_FIN_X], cp[C_FIN_Z]
+    ax, ay, az, rho = _air_at(x, o, R, px, 0.0, pz, wf, s_mod, d_mod)
+    side = 0.5 * rho * cp[C_FIN_AREA] * cp[C_FIN_SLOPE] * abs(ax) * ay
+    fy += side
+    mx -= pz * side
+    mz += px * side
+    # frame drag at the CG
+    ax, ay, az, rho = _air_at(x, o, R, 0.0, 0.0, 0.0, wf, s_mod, d_mod)
+    k = 0.5 * rho * cp[C_DRAG_AREA] * math.sqrt(ax * ax + ay * ay + az * az)
+    fx += k * ax
+    fy += k * ay
+    fz += k * az
+    out[0], out[1], out[2], out[3], out[4], out[5] = fx, fy, fz, mx, my, mz
+    return ok

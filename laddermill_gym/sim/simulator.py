@@ -1,0 +1,316 @@
+"""The simulator object: a built scene, its compiled kernels, state, controls and named views."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR, dp54_advance, rk4_advance
+from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
+from laddermill_gym.model.packing import make_workspace, pack_model
+from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
+from laddermill_gym.model.states import euler_from_quaternion
+
+
+class SimulationError(RuntimeError):
+    """The integration broke down; the message names the time, the body or element and the quantity."""
+
+
+@dataclass(frozen=True)
+class IntegratorSettings:
+    """Integrator choice and safety limits.
+
+    method : "rk4" (fixed step dt [s]) or "dp54" (adaptive, rtol/atol).
+    max_speed [m/s], max_rate [rad/s]: a state beyond these is reported as exploding.
+    """
+
+    method: str = "rk4"
+    dt: float = 0.01
+    rtol: float = 1e-8
+    atol: float = 1e-10
+    max_speed: float = 300.0
+    max_rate: float = 100.0
+
+
+class Simulator:
+    """A compiled simulator of one built scene.
+
+    Parameters
+    ----------
+    assembly : Assembly
+        The built model (``laddermill_gym.ladder.scene.load_scene(...).assembly``).
+    initial_state : ndarray, shape (n_state,)
+        State at t = 0 (layout in docs/model.md).
+    settings : IntegratorSettings
+    controls : ndarray, shape (3 n_wings,), optional
+        Initial controls [rad] (elevator, rudder, aileron per wing).
+    """
+
+    def __init__(self, assembly: Assembly, initial_state: np.ndarray, settings: IntegratorSettings | None = None,
+                 controls: np.ndarray | None = None):
+        self.assembly = assembly
+        self.settings = settings or IntegratorSettings()
+        self.model = pack_model(assembly)
+        self.work = make_workspace(assembly)
+        self._sag = np.zeros(1) if assembly.sag else None
+        self._caero = np.array([assembly.cable_cn0, assembly.cable_ct0]) if assembly.cable_aero else None
+        self._planar = np.zeros(1) if assembly.dim == 2 else None
+        self._craft = self._make_craft()
+        # trailing kernel argument: omitted for wings, so they share the compiled code of the other callers
+        self._kx = () if self._craft is None else (self._craft,)
+        if assembly.dim == 2 and (assembly.wind.direction_inf != 0.0 or np.any(assembly.wind.mod_direction != 0.0)):
+            raise ValueError("in-plane (dim = 2) simulation needs a fixed wind direction: "
+                             f"direction_inf = {assembly.wind.direction_inf}, "
+                             f"max |mod_direction| = {np.max(np.abs(assembly.wind.mod_direction))}")
+        self._limits = np.array([self.settings.max_speed, self.settings.max_rate])
+        self._dx = np.zeros(assembly.state_size)
+        self.initial_state = self._check_state(initial_state).copy()
+        self.initial_controls = (np.zeros(N_CONTROLS * assembly.n_wings) if controls is None
+                                 else self._check_controls(controls).copy())
+        self.reset()
+
+    def _make_craft(self):
+        """The kernels' ``craft`` argument: None for wings (subclasses with other bodies override this)."""
+        return None
+
+    # ------------------------------------------------------------------ state handling
+    @property
+    def n_state(self) -> int:
+        return self.assembly.state_size
+
+    @property
+    def n_controls(self) -> int:
+        return N_CONTROLS * self.assembly.n_wings
+
+    @property
+    def control_labels(self) -> list[str]:
+        """One label per control entry, e.g. 'wing0_elevator'."""
+        return [f"wing{k}_{n}" for k in range(self.assembly.n_wings) for n in CONTROL_NAMES]
+
+    def _check_state(self, x) -> np.ndarray:
+        x = np.ascontiguousarray(x, dtype=np.float64)
+        if x.shape != (self.n_state,):
+            raise ValueError(f"state: expected shape ({self.n_state},), got {x.shape}")
+        if not np.all(np.isfinite(x)):
+            i = int(np.flatnonzero(~np.isfinite(x))[0])
+            raise ValueError(f"state[{i}] is not finite: {x[i]}")
+        return x
+
+    def _check_controls(self, u) -> np.ndarray:
+        u = np.ascontiguousarray(u, dtype=np.float64)
+        if u.shape != (self.n_controls,):
+            raise ValueError(f"controls: expected shape ({self.n_controls},), got {u.shape}")
+        for k in range(self.assembly.n_wings):
+            lim = self.assembly.wing(k).control_limits
+            for j in range(N_CONTROLS):
+                v = u[N_CONTROLS * k + j]
+                if not np.isfinite(v) or v < lim[j, 0] - 1e-12 or v > lim[j, 1] + 1e-12:
+                    raise ValueError(
+                        f"controls: wing {k} {CONTROL_NAMES[j]} = {v!r} rad is outside "
+                        f"[{lim[j, 0]:.4g}, {lim[j, 1]:.4g}] rad")
+        return u
+
+    def reset(self, state: np.ndarray | None = None, t: float = 0.0, controls: np.ndarray | None = None) -> np.ndarray:
+        """Set the state (default: the initial state), time [s] and controls [rad]; returns the state."""
+        self.state = (self.initial_state if state is None else self._check_state(state)).copy()
+        self.t = float(t)
+        self.controls = (self.initial_controls if controls is None else self._check_controls(controls)).copy()
+        return self.state
+
+    # ------------------------------------------------------------------ dynamics
+    def rhs(self, t: float, x: np.ndarray, u: np.ndarray | None = None, params: dict | None = None) -> np.ndarray:
+        """State derivative dx/dt = f(t, x, u) with python-control's ``updfcn`` signature.
+
+        ``control.nlsys(sim.rhs, states=sim.n_state, inputs=sim.n_controls)`` and
+        ``control.linearize`` work on it directly. ``params`` is accepted and ignored.
+        """
+        x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1)
+        u = self.controls if u is None else np.ascontiguousarray(u, dtype=np.float64).reshape(-1)
+        if x.shape != (self.n_state,) or u.shape != (self.n_controls,):
+            raise ValueError(f"rhs: x must have {self.n_state} and u {self.n_controls} entries, "
+                             f"got {x.shape} and {u.shape}")
+        dx = np.zeros(self.n_state)
+        if _rhs_kernel(float(t), x, u, dx, self.model, self.work, self._sag, self._caero, self._planar,
+                       *self._kx) != 0:
+            raise SimulationError(f"t = {t:.6g} s: the mass matrix is singular")
+        return dx
+
+    def step(self, controls: np.ndarray | None = None, n_steps: int = 1) -> np.ndarray:
+        """Advance n_steps fixed RK4 steps of ``settings.dt`` (or the same time span with DP5(4)) with
+        the controls held; returns the new state (a view of ``self.state``)."""
+        if controls is not None:
+            self.controls = self._check_controls(controls).copy()
+        if int(n_steps) != n_steps or n_steps < 0:
+            raise ValueError(f"n_steps must be a non-negative integer, got {n_steps!r}")
+        s = self.settings
+        if s.method == "rk4":
+            status, done = rk4_advance(self.t, self.state, self.controls, s.dt, int(n_steps), self.model,
+                                       self.work, self._sag, self._caero, self._planar, self._limits,
+                                       *self._kx)
+            self.t += done * s.dt
+        else:
+            status, done = self._dp54(self.t + n_steps * s.dt)
+        if status != OK:
+            self._raise(status)
+        return self.state
+
+    def _dp54(self, t_end: float):
+        s = self.settings
+        status, acc, rej, _ = dp54_advance(self.t, t_end, self.state, self.controls, min(s.dt, t_end - self.t),
+                                           s.rtol, s.atol, self.model, self.work, self._sag, self._caero,
+                                           self._planar, self._limits, 10_000_000, *self._kx)
+        if status == OK:
+            self.t = t_end
+        return status, acc
+
+    def advance_to(self, t_end: float, rtol: float | None = None, atol: float | None = None) -> np.ndarray:
+        """Integrate to t_end [s] with the error-controlled Dormand-Prince 5(4) method."""
+        s = self.settings
+        status, acc, rej, _ = dp54_advance(self.t, float(t_end), self.state, self.controls,
+                                           min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt,
+                                           rtol or s.rtol, atol or s.atol, self.model, self.work, self._sag,
+                                           self._caero, self._planar, self._limits, 100_000_000, *self._kx)
+        if status != OK:
+            self._raise(status)
+        self.t = float(t_end)
+        return self.state
+
+    def _raise(self, status: int):
+        """Diagnose a failed step from the last good state and one trial right-hand side."""
+        where = self.diagnose()
+        kind = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state",
+                LIMIT: "speed or rate limit exceeded"}.get(status, f"status {status}")
+        raise SimulationError(f"integration failed at t = {self.t:.6g} s ({kind}); {where}")
+
+    def diagnose(self) -> str:
+        """Name the body, node or element with the largest speed, rate or derivative in the current state."""
+        a = self.assembly
+        msgs = []
+        try:
+            dx = self.rhs(self.t, self.state, self.controls)
+        except SimulationError as err:
+            return str(err)
+        bad = np.flatnonzero(~np.isfinite(dx))
+        if bad.size:
+            msgs.append(f"non-finite derivative of {self.state_name(int(bad[0]))}")
+        speeds = np.linalg.norm(self.wing_velocities(), axis=1) if a.n_wings else np.zeros(0)
+        if speeds.size:
+            k = int(np.argmax(speeds))
+            msgs.append(f"fastest wing {k}: speed {speeds[k]:.4g} m/s")
+        rates = np.linalg.norm(self.wing_rates(), axis=1) if a.n_wings else np.zeros(0)
+        if rates.size:
+            k = int(np.argmax(rates))
+            msgs.append(f"wing {k} angular rate {rates[k]:.4g} rad/s")
+        if a.elements.count:
+            ten = self.tensions()
+            e = int(np.argmax(ten))
+            msgs.append(f"element {e} tension {ten[e]:.4g} N")
+        acc = np.abs(dx)
+        i = int(np.nanargmax(np.where(np.isfinite(acc), acc, -1.0)))
+        msgs.append(f"largest derivative {self.state_name(i)} = {dx[i]:.4g}")
+        return "; ".join(msgs)
+
+    # ------------------------------------------------------------------ names and views
+    def state_name(self, i: int) -> str:
+        """Human-readable name of state entry i (e.g. 'wing 3 v_body[1] [m/s]')."""
+        a = self.assembly
+        ws, ns = a.wing_state_size, a.node_state_size
+        if i < a.n_wings * ws:
+            k, j = divmod(i, ws)
+            names = (("x [m]", "y [m]", "z [m]", "q0", "q1", "q2", "q3", "u [m/s]", "v [m/s]", "w [m/s]",
+                      "p [rad/s]", "q [rad/s]", "r [rad/s]") if a.dim == 3 else
+                     ("x [m]", "z [m]", "theta [rad]", "u [m/s]", "w [m/s]", "q [rad/s]"))
+            return f"wing {k} {names[j]}"
+        k, j = divmod(i - a.n_wings * ws, ns)
+        names = (("x [m]", "y [m]", "z [m]", "vx [m/s]", "vy [m/s]", "vz [m/s]") if a.dim == 3 else
+                 ("x [m]", "z [m]", "vx [m/s]", "vz [m/s]"))
+        return f"node {k} {names[j]}"
+
+    def _wing_block(self) -> np.ndarray:
+        a = self.assembly
+        return self.state[: a.n_wings * a.wing_state_size].reshape(a.n_wings, a.wing_state_size)
+
+    def _node_block(self) -> np.ndarray:
+        a = self.assembly
+        return self.state[a.n_wings * a.wing_state_size:].reshape(a.n_nodes, a.node_state_size)
+
+    def wing_positions(self) -> np.ndarray:
+        """CG positions, shape (n_wings, 3), global frame [m] (y = 0 in the in-plane mode)."""
+        w = self._wing_block()
+        if self.assembly.dim == 3:
+            return w[:, 0:3].copy()
+        return np.stack([w[:, 0], np.zeros(len(w)), w[:, 1]], axis=1)
+
+    def wing_euler(self) -> np.ndarray:
+        """3-2-1 Euler angles (roll phi, pitch theta, yaw psi), shape (n_wings, 3) [rad]."""
+        w = self._wing_block()
+        if self.assembly.dim == 3:
+            return np.array([euler_from_quaternion(qq) for qq in w[:, 3:7]]).reshape(-1, 3)
+        return np.stack([np.zeros(len(w)), w[:, 2], np.zeros(len(w))], axis=1)
+
+    def wing_velocities(self) -> np.ndarray:
+        """Body-frame CG velocities (u, v, w), shape (n_wings, 3) [m/s]."""
+        w = self._wing_block()
+        if self.assembly.dim == 3:
+            return w[:, 7:10].copy()
+        return np.stack([w[:, 3], np.zeros(len(w)), w[:, 4]], axis=1)
+
+    def wing_rates(self) -> np.ndarray:
+        """Body rates (p, q, r), shape (n_wings, 3) [rad/s]."""
+        w = self._wing_block()
+        if self.assembly.dim == 3:
+            return w[:, 10:13].copy()
+        return np.stack([np.zeros(len(w)), w[:, 5], np.zeros(len(w))], axis=1)
+
+    def wing_rotations(self) -> np.ndarray:
+        """Rotation matrices body -> global, shape (n_wings, 3, 3)."""
+        from laddermill_gym.model.states import rotation_from_euler
+
+        return np.array([rotation_from_euler(*e) for e in self.wing_euler()]).reshape(-1, 3, 3)
+
+    def air_velocity_body(self) -> np.ndarray:
+        """Air-relative CG velocity in body axes, shape (n_wings, 3) [m/s] (from the kernels' wind)."""
+        from laddermill_gym.atmosphere.wind_kernels import modulation, wind_at
+
+        m = self.model
+        s, d, _, _ = modulation(self.t, m.tmod[0], m.tmod[1], m.ms, m.md)
+        pos = self.wing_positions()
+        Rs = self.wing_rotations()
+        out = np.zeros((len(pos), 3))
+        for k in range(len(pos)):
+            w = np.array(wind_at(pos[k, 2], m.wf, s, d))
+            out[k] = self.wing_velocities()[k] - Rs[k].T @ w
+        return out
+
+    def wing_alpha_beta(self) -> np.ndarray:
+        """Angle of attack and sideslip, shape (n_wings, 2) [rad]."""
+        va = self.air_velocity_body()
+        V = np.maximum(np.linalg.norm(va, axis=1), 1e-300)
+        return np.stack([np.arctan2(va[:, 2], va[:, 0]), np.arcsin(np.clip(va[:, 1] / V, -1, 1))], axis=1)
+
+    def node_positions(self) -> np.ndarray:
+        """Free cable node positions, shape (n_nodes, 3) [m]."""
+        n = self._node_block()
+        if self.assembly.dim == 3:
+            return n[:, 0:3].copy()
+        return np.stack([n[:, 0], np.zeros(len(n)), n[:, 1]], axis=1)
+
+    def tensions(self) -> np.ndarray:
+        """Element tensions, shape (n_elements,) [N], evaluated at the current state."""
+        self.rhs(self.t, self.state, self.controls)
+        return self.work.tension[: self.assembly.elements.count].copy()
+
+    def views(self) -> dict[str, np.ndarray]:
+        """All named views at once (for saving): name -> array, units in the names."""
+        ab = self.wing_alpha_beta()
+        return {
+            "wing_position_m": self.wing_positions(),
+            "wing_velocity_body_m_s": self.wing_velocities(),
+            "wing_euler_rad": self.wing_euler(),
+            "wing_rates_rad_s": self.wing_rates(),
+            "wing_alpha_rad": ab[:, 0],
+            "wing_beta_rad": ab[:, 1],
+            "node_position_m": self.node_positions(),
+            "element_tension_N": self.tensions(),
+        }

@@ -1,0 +1,181 @@
+"""Steady states: static equilibria in steady wind (trim) by Newton's method on the simulator's own
+accelerations, and a quasi-static shooting layout that gives chains a good first guess."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.optimize import brentq, root
+
+from laddermill_gym.model.states import euler_from_quaternion, quaternion_from_euler
+
+
+def _pack_unknowns(sim, x):
+    """Equilibrium unknowns from a state: per wing position + Euler angles (3D) or x, z, theta (2D);
+    per node its position."""
+    a = sim.assembly
+    out = []
+    if a.dim == 3:
+        for k in range(a.n_wings):
+            s = x[13 * k: 13 * k + 13]
+            out.extend([*s[0:3], *euler_from_quaternion(s[3:7])])
+        b = 13 * a.n_wings
+        for j in range(a.n_nodes):
+            out.extend(x[b + 6 * j: b + 6 * j + 3])
+    else:
+        for k in range(a.n_wings):
+            out.extend(x[6 * k: 6 * k + 3])
+        b = 6 * a.n_wings
+        for j in range(a.n_nodes):
+            out.extend(x[b + 4 * j: b + 4 * j + 2])
+    return np.array(out)
+
+
+def _unpack_unknowns(sim, z):
+    """State at rest (all velocities zero) from the equilibrium unknowns."""
+    a = sim.assembly
+    x = np.zeros(a.state_size)
+    i = 0
+    if a.dim == 3:
+        for k in range(a.n_wings):
+            x[13 * k: 13 * k + 3] = z[i: i + 3]
+            x[13 * k + 3: 13 * k + 7] = quaternion_from_euler(*z[i + 3: i + 6])
+            i += 6
+        b = 13 * a.n_wings
+        for j in range(a.n_nodes):
+            x[b + 6 * j: b + 6 * j + 3] = z[i: i + 3]
+            i += 3
+    else:
+        for k in range(a.n_wings):
+            x[6 * k: 6 * k + 3] = z[i: i + 3]
+            i += 3
+        b = 6 * a.n_wings
+        for j in range(a.n_nodes):
+            x[b + 4 * j: b + 4 * j + 2] = z[i: i + 2]
+            i += 2
+    return x
+
+
+def _accelerations(sim, dx):
+    """The acceleration entries of a state derivative (the equilibrium residual)."""
+    a = sim.assembly
+    parts = []
+    if a.dim == 3:
+        parts += [dx[13 * k + 7: 13 * k + 13] for k in range(a.n_wings)]
+        b = 13 * a.n_wings
+        parts += [dx[b + 6 * j + 3: b + 6 * j + 6] for j in range(a.n_nodes)]
+    else:
+        parts += [dx[6 * k + 3: 6 * k + 6] for k in range(a.n_wings)]
+        b = 6 * a.n_wings
+        parts += [dx[b + 4 * j + 2: b + 4 * j + 4] for j in range(a.n_nodes)]
+    return np.concatenate(parts) if parts else np.zeros(0)
+
+
+def _newton(resid, z0, tol):
+    """Root of resid from z0: MINPACK hybrd first; where the cable starts near slack (a soft, strongly
+    nonlinear start) Levenberg-Marquardt gets into the basin and hybrd polishes. Returns (z, |residual|, msg)."""
+    sol = root(resid, z0, method="hybr", options={"xtol": tol})
+    r = float(np.linalg.norm(resid(sol.x)))
+    if sol.success or r < 1e-9:
+        return sol.x, r, sol.message
+    lm = root(resid, z0, method="lm", options={"xtol": tol, "ftol": tol, "maxiter": 200 * (len(z0) + 1)})
+    pol = root(resid, lm.x, method="hybr", options={"xtol": tol})
+    r_pol = float(np.linalg.norm(resid(pol.x)))
+    r_lm = float(np.linalg.norm(resid(lm.x)))
+    return (pol.x, r_pol, pol.message) if r_pol <= r_lm else (lm.x, r_lm, lm.message)
+
+
+def static_equilibrium(sim, x_guess: np.ndarray, controls: np.ndarray | None = None, t: float = 0.0,
+                       tol: float = 1e-10) -> np.ndarray:
+    """The state at rest in which all accelerations vanish, found by Newton (MINPACK hybrd) from x_guess.
+
+    Raises RuntimeError when the solve does not converge (with the residual norm)."""
+    u = sim.controls if controls is None else np.asarray(controls, float)
+    z0 = _pack_unknowns(sim, x_guess)
+
+    def resid(z):
+        return _accelerations(sim, sim.rhs(t, _unpack_unknowns(sim, z), u))
+
+    z, r, msg = _newton(resid, z0, tol)
+    if r > 1e-6 * math.sqrt(len(z)):  # RMS acceleration above 1e-6 m/s^2
+        raise RuntimeError(f"static equilibrium: Newton did not converge (|residual| = {r:.3g}): {msg}")
+    return _unpack_unknowns(sim, z)
+
+
+def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """Static equilibrium in which wing ``wing`` flies at angle of attack ``alpha`` [rad]: the elevator of
+    that wing is an extra unknown. Returns (state, controls)."""
+    u0 = sim.controls.copy()
+    z0 = np.concatenate([_pack_unknowns(sim, x_guess), [u0[3 * wing]]])
+
+    def resid(z):
+        u = u0.copy()
+        u[3 * wing] = z[-1]
+        x = _unpack_unknowns(sim, z[:-1])
+        acc = _accelerations(sim, sim.rhs(t, x, u))
+        sim.state[:] = x
+        sim.t = t
+        return np.concatenate([acc, [sim.wing_alpha_beta()[wing, 0] - alpha]])
+
+    keep = sim.state.copy(), sim.t
+    try:
+        z, r, msg = _newton(resid, z0, 1e-12)
+    finally:
+        sim.state[:], sim.t = keep
+    if r > 1e-6 * math.sqrt(len(z)):
+        raise RuntimeError(f"trim: Newton did not converge (|residual| = {r:.3g}): {msg}")
+    u = u0.copy()
+    u[3 * wing] = z[-1]
+    return _unpack_unknowns(sim, z[:-1]), u
+
+
+_SPLINES: dict = {}
+
+
+def _table_spline(table):
+    """Periodic cubic spline of an aerodynamic table (cached per table object)."""
+    from scipy.interpolate import CubicSpline
+
+    key = id(table)
+    hit = _SPLINES.get(key)
+    if hit is None or hit[0] is not table:
+        hit = (table, CubicSpline(table.alpha, table.values, bc_type="periodic", axis=0))
+        _SPLINES[key] = hit
+    return hit[1]
+
+
+def pitch_trim_alpha(wing_type, elevator: float, dynamic_pressure: float | None = None,
+                     gravity: float = 9.80665) -> float:
+    """Angle of attack [rad] at which a wing at rest in horizontal wind (pitch angle = alpha) has no pitching
+    moment about its cable attachment point, the point where the resultant cable force acts: aerodynamic
+    force at the reference point, aerodynamic moment, and (if ``dynamic_pressure`` [Pa] is given) the weight
+    at the CG. A first guess for layouts, searched on the attached-flow branch (-10..25 deg)."""
+    from laddermill_gym.model.params import AERO_INDEX
+
+    sp = _table_spline(wing_type.aero)
+    ax = wing_type.r_ref[0] - wing_type.attachment[0]
+    az = wing_type.r_ref[2] - wing_type.attachment[2]
+    gx, gz = -wing_type.attachment[0], -wing_type.attachment[2]  # CG from the attachment [m]
+    iCL, iCD, iCm = AERO_INDEX["CL"], AERO_INDEX["CD"], AERO_INDEX["Cm"]
+    iCLde, iCmde = AERO_INDEX["CLde"], AERO_INDEX["Cmde"]
+
+    def cm_att(a):  # works on scalars and arrays of alpha
+        c = sp(a)
+        cl = c[..., iCL] + c[..., iCLde] * elevator
+        cd = c[..., iCD]
+        cm = c[..., iCm] + c[..., iCmde] * elevator
+        X = cl * np.sin(a) - cd * np.cos(a)
+        Z = -cl * np.cos(a) - cd * np.sin(a)
+        m = cm + (az * X - ax * Z) / wing_type.chord
+        if dynamic_pressure is not None and dynamic_pressure > 0.0:
+            w = wing_type.mass * gravity / (dynamic_pressure * wing_type.area)
+            m = m + (gz * (-w * np.sin(a)) - gx * (w * np.cos(a))) / wing_type.chord
+        return m
+
+    grid = np.radians(np.linspace(-10, 25, 141))
+    vals = cm_att(grid)
+    for i in range(len(grid) - 1):
+        if vals[i] > 0 >= vals[i + 1]:
+            return float(brentq(cm_att, grid[i], grid[i + 1]))
+    return float(grid[np.argmin(np.abs(vals))])

@@ -1,1 +1,0 @@
-"""Offline tools that derive the data sets in ``configs/`` (not imported by the simulator)."""
