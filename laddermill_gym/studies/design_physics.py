@@ -16,7 +16,10 @@ FOOT = 0.3048
 # air [J/(kg K)], standard gravity [m/s^2], ratio of specific heats [-], tropopause [m].
 _T0, _P0, _LAPSE, _R_AIR, _G0, _GAMMA, _H_TROPO = 288.15, 101325.0, 0.0065, 287.05287, 9.80665, 1.4, 11000.0
 
-def _number(name: str, value, lo: float = -math.inf, hi: float = math.inf, *, lo_open: bool = False) -> float:
+
+def number(name: str, value, lo: float = -math.inf, hi: float = math.inf, *, lo_open: bool = False) -> float:
+    """``value`` as a float when it is a finite number in [lo, hi] (lo excluded with ``lo_open``); a ValueError
+    naming the argument ``name`` and the value otherwise."""
     if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)):
         raise ValueError(f"argument '{name}' = {value!r}: must be a number")
     v = float(value)
@@ -29,7 +32,7 @@ def _number(name: str, value, lo: float = -math.inf, hi: float = math.inf, *, lo
 # ------------------------------------------------------------------------------------------ atmosphere
 def isa_temperature(altitude: float) -> float:
     """ISA temperature [K] at geopotential altitude [m] (troposphere, -500 m .. 11 km)."""
-    return _T0 - _LAPSE * _number("altitude", altitude, -500.0, _H_TROPO)
+    return _T0 - _LAPSE * number("altitude", altitude, -500.0, _H_TROPO)
 
 
 def isa_density(altitude: float) -> float:
@@ -124,10 +127,10 @@ def catenary(horizontal: float, top_vertical: float, weight_per_length: float, l
     ValueError
         On a bad argument (naming it and its value), or for H = 0 with V_a < 0 (a slack cable has no shape).
     """
-    h = _number("horizontal", horizontal, 0.0)
-    vt = _number("top_vertical", top_vertical)
-    w = _number("weight_per_length", weight_per_length, 0.0, lo_open=True)
-    length = _number("length", length, 0.0, lo_open=True)
+    h = number("horizontal", horizontal, 0.0)
+    vt = number("top_vertical", top_vertical)
+    w = number("weight_per_length", weight_per_length, 0.0, lo_open=True)
+    length = number("length", length, 0.0, lo_open=True)
     va = vt - w * length
     if h == 0.0:
         if va < 0.0:
