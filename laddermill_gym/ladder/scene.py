@@ -170,8 +170,16 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
     dim = s.number("dimension", integer=True)
     gravity = s.number("gravity", positive=True)
     wind = read_wind(s.section("wind"))
-    wing_type = load_wing_type(config_path("wings", s.text("wing_type"), path.parent))
-    cable = load_cable(config_path("cables", s.text("cable"), path.parent))
+    parts = {}
+    for key, kind in (("wing_type", "wings"), ("cable", "cables")):
+        value = s.text(key)
+        parts[key] = config_path(kind, value, path.parent)
+        if not parts[key].is_file():  # name the scene file and its field, not only the missing file
+            shown = parts[key] if parts[key].is_absolute() else path.parent / parts[key]
+            raise s.error(key, value, f"no such file {shown} (a path is relative to the scene's folder, a bare "
+                                      f"name is {CONFIG_DIR / kind}/NAME.yaml, 'package:{kind}/FILE' the shipped data)")
+    wing_type = load_wing_type(parts["wing_type"])
+    cable = load_cable(parts["cable"])
     gp = s.section("ground_points")
     points = {k: gp.vector(k, 3) for k in list(gp.data)}
     gp.done()
