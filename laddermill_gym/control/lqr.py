@@ -9,6 +9,9 @@ keeps the elevator at trim.
 For a chain (``ladder_chain``) each wing gets its own gain from its own lateral block of the chain's
 Jacobian (all other wings and nodes held at trim): a decentralised design; :func:`chain_closed_loop` checks
 it on the full coupled lateral model.
+
+The configuration (:class:`LQRConfig`, Bryson's weights) lives in ``lqr_config`` and the discrete LQR itself in
+``discrete_lqr``; both are re-exported here.
 """
 
 from __future__ import annotations
@@ -28,6 +31,7 @@ from laddermill_gym.control.base import (
     batch_observations,
     control_ranges,
 )
+from laddermill_gym.control.discrete_lqr import DiscreteLQR, continuous_equivalent, discrete_lqr, mode_table
 from laddermill_gym.control.linearize import (
     LATERAL_INPUTS,
     Linearization,
@@ -36,8 +40,17 @@ from laddermill_gym.control.linearize import (
     linearize,
     wing_lateral_blocks,
 )
+from laddermill_gym.control.lqr_config import (
+    DEFAULT_CHAIN_CONFIG,
+    DEFAULT_CONFIG,
+    LATERAL_INPUT_NAMES,
+    LATERAL_STATE_NAMES,
+    STRUCTURES,
+    LQRConfig,
+    bryson_weights,
+    load_lqr_config,
+)
 from laddermill_gym.ladder.scene import Scene, load_scene
-from laddermill_gym.model.configio import CONFIG_DIR, read_yaml
 from laddermill_gym.model.params import N_CONTROLS
 
 __all__ = [
@@ -58,144 +71,8 @@ __all__ = [
     "LQRController",
     "DEFAULT_CONFIG",
     "DEFAULT_CHAIN_CONFIG",
+    "STRUCTURES",
 ]
-
-#: Lateral state of one wing (deviation from trim) and its units: m, m/s, rad, rad, rad/s, rad/s.
-LATERAL_STATE_NAMES: tuple[str, ...] = ("y", "vy", "phi", "psi", "p", "r")
-#: Lateral inputs of one wing [rad].
-LATERAL_INPUT_NAMES: tuple[str, ...] = ("rudder", "aileron")
-
-DEFAULT_CONFIG = CONFIG_DIR / "agents" / "lqr_tethered_wing.yaml"
-DEFAULT_CHAIN_CONFIG = CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml"
-
-_MAX_STATE_KEYS = (("y", 1.0), ("vy", 1.0), ("phi_deg", math.pi / 180), ("psi_deg", math.pi / 180),
-                   ("p_deg_s", math.pi / 180), ("r_deg_s", math.pi / 180))
-
-
-# ------------------------------------------------------------------------------------ configuration
-@dataclass(frozen=True)
-class LQRConfig:
-    """A lateral LQR design (``configs/agents/lqr_*.yaml``).
-
-    Attributes
-    ----------
-    file : Path
-    scene : str                   scene name or YAML path
-    elements_per_piece : int      cable elements per piece (1 = the environments' model)
-    control_period : float        [s] zero-order-hold period of the controller
-    max_state : ndarray (6,)      largest acceptable deviations of (y [m], vy [m/s], phi [rad], psi [rad],
-                                  p [rad/s], r [rad/s]) (Bryson's rule)
-    max_input : ndarray (2,)      largest acceptable (rudder, aileron) deflection from trim [rad]
-    structure : str               chains: "decentralised" (each wing's gain from its own lateral block) or
-                                  "centralised" (one gain on the full coupled lateral model)
-    """
-
-    file: Path
-    scene: str
-    elements_per_piece: int
-    control_period: float
-    max_state: np.ndarray
-    max_input: np.ndarray
-    structure: str = "decentralised"
-
-
-STRUCTURES: tuple[str, ...] = ("decentralised", "centralised")
-
-
-def load_lqr_config(path: str | Path = DEFAULT_CONFIG) -> LQRConfig:
-    """Read an LQR config YAML (strict: unknown keys and non-positive limits raise ConfigError)."""
-    s = read_yaml(path)
-    scene = s.text("scene")
-    epp = s.number("elements_per_piece", integer=True, positive=True)
-    period = s.number("control_period", positive=True)
-    ms = s.section("max_state")
-    max_state = np.array([ms.number(k, positive=True) * scale for k, scale in _MAX_STATE_KEYS])
-    ms.done()
-    mi = s.section("max_input_deg")
-    max_input = np.radians([mi.number(k, positive=True) for k in LATERAL_INPUT_NAMES])
-    mi.done()
-    structure = s.text("structure", "decentralised", choices=STRUCTURES)
-    s.done()
-    return LQRConfig(file=Path(path), scene=scene, elements_per_piece=epp, control_period=period,
-                     max_state=max_state, max_input=max_input, structure=structure)
-
-
-def bryson_weights(max_state: np.ndarray, max_input: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Bryson's rule: Q = diag(1 / max_state^2), R = diag(1 / max_input^2)."""
-    return np.diag(1.0 / np.asarray(max_state, float) ** 2), np.diag(1.0 / np.asarray(max_input, float) ** 2)
-
-
-# ------------------------------------------------------------------------------------ discrete LQR
-@dataclass(frozen=True)
-class DiscreteLQR:
-    """A discrete LQR design on the ZOH discretisation of (A, B).
-
-    Attributes
-    ----------
-    A, B : continuous model;  Ad, Bd : ZOH discretisation at ``dt`` [s]
-    Q, R : weights;  K : gain (u = -K x);  S : Riccati solution
-    closed_loop : eigenvalues of Ad - Bd K (discrete, |z| < 1 is stable)
-    open_loop : eigenvalues of A (continuous)
-    """
-
-    A: np.ndarray
-    B: np.ndarray
-    Ad: np.ndarray
-    Bd: np.ndarray
-    dt: float
-    Q: np.ndarray
-    R: np.ndarray
-    K: np.ndarray
-    S: np.ndarray
-    closed_loop: np.ndarray
-    open_loop: np.ndarray
-
-
-def discrete_lqr(A: np.ndarray, B: np.ndarray, Q: np.ndarray, R: np.ndarray, dt: float) -> DiscreteLQR:
-    """ZOH-discretise (A, B) at ``dt`` [s] (``control.c2d``) and solve the discrete LQR (``control.dlqr``).
-
-    Notes
-    -----
-    Minimises sum_k x_k^T Q x_k + u_k^T R u_k subject to x_{k+1} = Ad x_k + Bd u_k with
-    Ad = expm(A dt), Bd = int_0^dt expm(A s) ds B; u_k = -K x_k, K = (R + Bd^T S Bd)^-1 Bd^T S Ad.
-    """
-    n = A.shape[0]
-    sysc = control.ss(A, B, np.eye(n), np.zeros((n, B.shape[1])))
-    sysd = control.c2d(sysc, dt, method="zoh")
-    Ad, Bd = np.asarray(sysd.A), np.asarray(sysd.B)
-    K, S, E = control.dlqr(Ad, Bd, Q, R)
-    return DiscreteLQR(A=A, B=B, Ad=Ad, Bd=Bd, dt=float(dt), Q=Q, R=R, K=np.asarray(K), S=np.asarray(S),
-                       closed_loop=np.asarray(E), open_loop=np.linalg.eigvals(A))
-
-
-def continuous_equivalent(z: np.ndarray, dt: float) -> np.ndarray:
-    """Continuous-time equivalents s = ln(z) / dt [1/s] of discrete eigenvalues z."""
-    return np.log(np.asarray(z, dtype=complex)) / dt
-
-
-def mode_table(eigenvalues: np.ndarray, dt: float | None = None) -> str:
-    """A text table of eigenvalues (continuous; discrete if ``dt`` is given, shown with their continuous
-    equivalents): real and imaginary part [1/s], natural frequency [rad/s], damping ratio, period [s],
-    time to double (unstable) or halve (stable) [s]. Conjugate pairs are shown once."""
-    ev = np.asarray(eigenvalues, dtype=complex)
-    s = continuous_equivalent(ev, dt) if dt is not None else ev
-    order = np.argsort(-s.real)
-    head = ("   |z|     " if dt is not None else "") + \
-        "   Re [1/s]   Im [1/s]  wn [rad/s]    zeta   period [s]  t2x/t1/2 [s]"
-    lines = [head]
-    for i in order:
-        si = s[i]
-        if si.imag < -1e-12:
-            continue
-        wn = abs(si)
-        zeta = -si.real / wn if wn > 0 else float("nan")
-        period = 2 * math.pi / si.imag if si.imag > 1e-12 else float("inf")
-        t2 = math.log(2) / abs(si.real) if si.real != 0 else float("inf")
-        kind = "double" if si.real > 0 else "half"
-        pre = f"{abs(ev[i]):9.5f}  " if dt is not None else ""
-        lines.append(f"{pre}{si.real:10.4f} {si.imag:10.4f} {wn:11.4f} {zeta:8.3f} {period:11.2f}  "
-                     f"{t2:9.2f} ({kind})")
-    return "\n".join(lines)
 
 
 # ------------------------------------------------------------------------------------ tethered wing

@@ -1,0 +1,77 @@
+"""Configuration of the lateral LQR (``configs/agents/lqr_*.yaml``): the lateral state and inputs of one wing,
+:class:`LQRConfig` and its loader, and Bryson's-rule weights."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from laddermill_gym.model.configio import CONFIG_DIR, read_yaml
+
+#: Lateral state of one wing (deviation from trim) and its units: m, m/s, rad, rad, rad/s, rad/s.
+LATERAL_STATE_NAMES: tuple[str, ...] = ("y", "vy", "phi", "psi", "p", "r")
+#: Lateral inputs of one wing [rad].
+LATERAL_INPUT_NAMES: tuple[str, ...] = ("rudder", "aileron")
+
+DEFAULT_CONFIG = CONFIG_DIR / "agents" / "lqr_tethered_wing.yaml"
+DEFAULT_CHAIN_CONFIG = CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml"
+
+_MAX_STATE_KEYS = (("y", 1.0), ("vy", 1.0), ("phi_deg", math.pi / 180), ("psi_deg", math.pi / 180),
+                   ("p_deg_s", math.pi / 180), ("r_deg_s", math.pi / 180))
+
+
+
+# ------------------------------------------------------------------------------------ configuration
+@dataclass(frozen=True)
+class LQRConfig:
+    """A lateral LQR design (``configs/agents/lqr_*.yaml``).
+
+    Attributes
+    ----------
+    file : Path
+    scene : str                   scene name or YAML path
+    elements_per_piece : int      cable elements per piece (1 = the environments' model)
+    control_period : float        [s] zero-order-hold period of the controller
+    max_state : ndarray (6,)      largest acceptable deviations of (y [m], vy [m/s], phi [rad], psi [rad],
+                                  p [rad/s], r [rad/s]) (Bryson's rule)
+    max_input : ndarray (2,)      largest acceptable (rudder, aileron) deflection from trim [rad]
+    structure : str               chains: "decentralised" (each wing's gain from its own lateral block) or
+                                  "centralised" (one gain on the full coupled lateral model)
+    """
+
+    file: Path
+    scene: str
+    elements_per_piece: int
+    control_period: float
+    max_state: np.ndarray
+    max_input: np.ndarray
+    structure: str = "decentralised"
+
+
+STRUCTURES: tuple[str, ...] = ("decentralised", "centralised")
+
+
+def load_lqr_config(path: str | Path = DEFAULT_CONFIG) -> LQRConfig:
+    """Read an LQR config YAML (strict: unknown keys and non-positive limits raise ConfigError)."""
+    s = read_yaml(path)
+    scene = s.text("scene")
+    epp = s.number("elements_per_piece", integer=True, positive=True)
+    period = s.number("control_period", positive=True)
+    ms = s.section("max_state")
+    max_state = np.array([ms.number(k, positive=True) * scale for k, scale in _MAX_STATE_KEYS])
+    ms.done()
+    mi = s.section("max_input_deg")
+    max_input = np.radians([mi.number(k, positive=True) for k in LATERAL_INPUT_NAMES])
+    mi.done()
+    structure = s.text("structure", "decentralised", choices=STRUCTURES)
+    s.done()
+    return LQRConfig(file=Path(path), scene=scene, elements_per_piece=epp, control_period=period,
+                     max_state=max_state, max_input=max_input, structure=structure)
+
+
+def bryson_weights(max_state: np.ndarray, max_input: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Bryson's rule: Q = diag(1 / max_state^2), R = diag(1 / max_input^2)."""
+    return np.diag(1.0 / np.asarray(max_state, float) ** 2), np.diag(1.0 / np.asarray(max_input, float) ** 2)
