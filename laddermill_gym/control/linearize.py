@@ -305,13 +305,6 @@ def lateral_subsystem(lin: Linearization) -> tuple[np.ndarray, np.ndarray, tuple
             tuple(lin.input_names[j] for j in i))
 
 
-def longitudinal_subsystem(lin: Linearization) -> tuple[np.ndarray, np.ndarray]:
-    """(A_lon, B_lon): the longitudinal rows and columns of ``lin`` (input: elevator per wing)."""
-    s = longitudinal_indices(lin.n_wings, lin.n_nodes)
-    i = _input_indices(lin.n_wings, LONGITUDINAL_INPUTS)
-    return lin.A[np.ix_(s, s)], lin.B[np.ix_(s, i)]
-
-
 def coupling_norms(lin: Linearization) -> dict[str, float]:
     """Size of the longitudinal-lateral coupling blocks relative to the matrix they sit in.
 
