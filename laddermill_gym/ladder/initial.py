@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -11,7 +12,7 @@ from laddermill_gym.model.builders import chain_state
 from laddermill_gym.model.params import AERO_INDEX, N_CONTROLS
 from laddermill_gym.model.states import planar_from_3d, planar_to_3d, rotation_from_euler
 from laddermill_gym.sim.simulator import Simulator
-from laddermill_gym.sim.statics import _table_spline, pitch_trim_alpha, static_equilibrium, trim_alpha
+from laddermill_gym.sim.statics import pitch_trim_alpha, static_equilibrium, table_spline, trim_alpha
 
 
 def _wind_fields(a):
@@ -28,7 +29,7 @@ def _rest_state(scene, positions, elevators, ends):
 
     a = scene.assembly
     wt = a.wing(0)
-    sp = _table_spline(wt.aero)
+    sp = table_spline(wt.aero)
     wf = _wind_fields(a)
     m_cable = float(a.elements.mu[0]) * scene.piece_length  # half of each neighbouring piece [kg]
     dia = float(a.elements.diameter[0])
@@ -75,7 +76,7 @@ def _march(A, L, EA, T0, forces, w=0.0):
     return np.stack(pts, -2), p
 
 
-def _layout(scene, elevators):
+def layout(scene, elevators):
     """Cable attachment points (n, 3) [m] and pitch angles (n,) [rad] of the wings of a chain at rest:
     straight massless pieces stretched by T / EA, each wing in force and moment balance at rest at its
     local dynamic pressure. A free upper end: each piece points along the sum of the forces above it;
@@ -149,17 +150,13 @@ def initial_state(scene) -> tuple[np.ndarray, np.ndarray]:
     elev = [ini.elevator_up if k < half else ini.elevator_down for k in range(n)]
     controls = np.zeros(N_CONTROLS * n)
     controls[0::N_CONTROLS] = elev
-    attach, alphas = _layout(scene, elev)
+    attach, alphas = layout(scene, elev)
     euler = np.array([[0.0, al, 0.0] for al in alphas])
     # wing at rest in horizontal wind: pitch angle = angle of attack; CG = attachment - R r_att
     pos = np.array([attach[k] - rotation_from_euler(*euler[k]) @ a.wing(k).attachment for k in range(n)])
     start = scene.ground_points[scene.start]
     end = None if scene.end is None else scene.ground_points[scene.end]
     # solve in the plane first (the in-plane equilibrium is also the 3D one when the wind does not turn)
-    import dataclasses
-
-    from laddermill_gym.ladder.scene import load_scene  # noqa: F401  (documented coupling)
-
     asm2 = dataclasses.replace(a, dim=2) if a.dim == 3 and a.wind.direction_inf == 0.0 else a
     x3 = chain_state(a, scene.layout, pos, euler, start, end)
     x_guess = planar_from_3d(x3, n, a.n_nodes) if asm2.dim == 2 else x3

@@ -29,7 +29,7 @@ class CableSpec:
 
 
 @dataclass
-class _ElementList:
+class ElementList:
     kind: list = field(default_factory=list)
     index: list = field(default_factory=list)
     attach: list = field(default_factory=list)
@@ -77,7 +77,7 @@ def build_chain(wing_types: tuple[WingType, ...], wing_type_index, piece_lengths
     m = int(elements_per_piece)
     if m < 1:
         raise ValueError(f"elements_per_piece must be >= 1, got {elements_per_piece}")
-    els = _ElementList()
+    els = ElementList()
     zero = (0.0, 0.0, 0.0)
     n_nodes = 0
     piece_nodes, piece_elements = [], []

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq, root
 
-from laddermill_gym.model.builders import _ElementList
+from laddermill_gym.model.builders import ElementList
 from laddermill_gym.model.params import END_FIXED, END_NODE, END_WING, Assembly, WingType
 from laddermill_gym.model.states import rotation_from_euler, wing_state_3d
 from laddermill_gym.rotorcraft import craft_kernels as _kc
@@ -32,7 +32,7 @@ from laddermill_gym.rotorcraft import rotor_kernels as _kr
 from laddermill_gym.rotorcraft.config import CraftConfig, load_craft_config
 from laddermill_gym.rotorcraft.rotor import INFLOW_MAX_ITER, INFLOW_TOL
 from laddermill_gym.sim.simulator import Simulator
-from laddermill_gym.sim.statics import _accelerations, _pack_unknowns, _unpack_unknowns, static_equilibrium
+from laddermill_gym.sim.statics import accelerations, pack_unknowns, static_equilibrium, unpack_unknowns
 
 #: Names of the craft's controls, in order.
 CRAFT_CONTROL_NAMES = ("collective", "differential")
@@ -85,7 +85,7 @@ def build_craft_assembly(cfg: CraftConfig) -> tuple[Assembly, CraftLayout]:
     """The craft as a one-body 3D assembly with three tethers of ``tethers.elements`` elements each."""
     anchors, attach, lengths, pos = tether_layout(cfg)
     n = cfg.tethers.elements
-    els = _ElementList()
+    els = ElementList()
     zero = (0.0, 0.0, 0.0)
     tether_elements, tether_nodes = [], []
     n_nodes = 0
@@ -227,11 +227,11 @@ def _symmetric_equilibrium(sim, u, x0) -> tuple[np.ndarray, float]:
     removes the nearly free sideways drift of craft and tethers that makes the full Jacobian ill-conditioned
     (condition number ~1e7). Returns (z, |full residual|): the caller checks that the full residual vanishes,
     which also catches a scene that is not symmetric."""
-    z0 = _pack_unknowns(sim, x0)
+    z0 = pack_unknowns(sim, x0)
     E, free = _mirror_expansion(sim.layout, z0.size)
 
     def full(w):
-        return _accelerations(sim, sim.rhs(0.0, _unpack_unknowns(sim, E @ w), u))
+        return accelerations(sim, sim.rhs(0.0, unpack_unknowns(sim, E @ w), u))
 
     sol = root(lambda w: full(w)[free], z0[free], method="hybr", options={"xtol": 1e-12})
     z = E @ sol.x
@@ -243,7 +243,7 @@ def _damped_newton(sim, u, z, iterations: int = 60):
     """Equilibrium unknowns z by damped Newton with a central-difference Jacobian (hybrd can stall on the soft
     yaw direction). Returns (z, |residual|)."""
     def resid(zz):
-        return _accelerations(sim, sim.rhs(0.0, _unpack_unknowns(sim, zz), u))
+        return accelerations(sim, sim.rhs(0.0, unpack_unknowns(sim, zz), u))
 
     r = resid(z)
     for _ in range(iterations):
@@ -306,14 +306,14 @@ class Craft:
         for x0 in guesses:
             z, r = _symmetric_equilibrium(sim, u, x0)
             if r < 1e-6 * math.sqrt(z.size):
-                return _unpack_unknowns(sim, z)
+                return unpack_unknowns(sim, z)
             try:
                 return static_equilibrium(sim, x0, controls=u)
             except RuntimeError:
                 pass
-            z, r = _damped_newton(sim, u, _pack_unknowns(sim, x0))
+            z, r = _damped_newton(sim, u, pack_unknowns(sim, x0))
             if r < 1e-6 * math.sqrt(z.size):
-                return _unpack_unknowns(sim, z)
+                return unpack_unknowns(sim, z)
             residual = min(residual, r)
         raise RuntimeError(f"craft trim at collective {math.degrees(th):.3g} deg, wind v0 = "
                            f"{self.config.wind.v0:.4g} m/s: no equilibrium found (|residual| = "

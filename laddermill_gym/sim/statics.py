@@ -11,7 +11,7 @@ from scipy.optimize import brentq, root
 from laddermill_gym.model.states import euler_from_quaternion, quaternion_from_euler
 
 
-def _pack_unknowns(sim, x):
+def pack_unknowns(sim, x):
     """Equilibrium unknowns from a state: per wing position + Euler angles (3D) or x, z, theta (2D);
     per node its position."""
     a = sim.assembly
@@ -32,7 +32,7 @@ def _pack_unknowns(sim, x):
     return np.array(out)
 
 
-def _unpack_unknowns(sim, z):
+def unpack_unknowns(sim, z):
     """State at rest (all velocities zero) from the equilibrium unknowns."""
     a = sim.assembly
     x = np.zeros(a.state_size)
@@ -57,7 +57,7 @@ def _unpack_unknowns(sim, z):
     return x
 
 
-def _accelerations(sim, dx):
+def accelerations(sim, dx):
     """The acceleration entries of a state derivative (the equilibrium residual)."""
     a = sim.assembly
     parts = []
@@ -92,28 +92,28 @@ def static_equilibrium(sim, x_guess: np.ndarray, controls: np.ndarray | None = N
 
     Raises RuntimeError when the solve does not converge (with the residual norm)."""
     u = sim.controls if controls is None else np.asarray(controls, float)
-    z0 = _pack_unknowns(sim, x_guess)
+    z0 = pack_unknowns(sim, x_guess)
 
     def resid(z):
-        return _accelerations(sim, sim.rhs(t, _unpack_unknowns(sim, z), u))
+        return accelerations(sim, sim.rhs(t, unpack_unknowns(sim, z), u))
 
     z, r, msg = _newton(resid, z0, tol)
     if r > 1e-6 * math.sqrt(len(z)):  # RMS acceleration above 1e-6 m/s^2
         raise RuntimeError(f"static equilibrium: Newton did not converge (|residual| = {r:.3g}): {msg}")
-    return _unpack_unknowns(sim, z)
+    return unpack_unknowns(sim, z)
 
 
 def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     """Static equilibrium in which wing ``wing`` flies at angle of attack ``alpha`` [rad]: the elevator of
     that wing is an extra unknown. Returns (state, controls)."""
     u0 = sim.controls.copy()
-    z0 = np.concatenate([_pack_unknowns(sim, x_guess), [u0[3 * wing]]])
+    z0 = np.concatenate([pack_unknowns(sim, x_guess), [u0[3 * wing]]])
 
     def resid(z):
         u = u0.copy()
         u[3 * wing] = z[-1]
-        x = _unpack_unknowns(sim, z[:-1])
-        acc = _accelerations(sim, sim.rhs(t, x, u))
+        x = unpack_unknowns(sim, z[:-1])
+        acc = accelerations(sim, sim.rhs(t, x, u))
         sim.state[:] = x
         sim.t = t
         return np.concatenate([acc, [sim.wing_alpha_beta()[wing, 0] - alpha]])
@@ -127,13 +127,13 @@ def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float =
         raise RuntimeError(f"trim: Newton did not converge (|residual| = {r:.3g}): {msg}")
     u = u0.copy()
     u[3 * wing] = z[-1]
-    return _unpack_unknowns(sim, z[:-1]), u
+    return unpack_unknowns(sim, z[:-1]), u
 
 
 _SPLINES: dict = {}
 
 
-def _table_spline(table):
+def table_spline(table):
     """Periodic cubic spline of an aerodynamic table (cached per table object)."""
     from scipy.interpolate import CubicSpline
 
@@ -153,7 +153,7 @@ def pitch_trim_alpha(wing_type, elevator: float, dynamic_pressure: float | None 
     at the CG. A first guess for layouts, searched on the attached-flow branch (-10..25 deg)."""
     from laddermill_gym.model.params import AERO_INDEX
 
-    sp = _table_spline(wing_type.aero)
+    sp = table_spline(wing_type.aero)
     ax = wing_type.r_ref[0] - wing_type.attachment[0]
     az = wing_type.r_ref[2] - wing_type.attachment[2]
     gx, gz = -wing_type.attachment[0], -wing_type.attachment[2]  # CG from the attachment [m]

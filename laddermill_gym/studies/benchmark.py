@@ -158,14 +158,14 @@ def startup_times(scene_name: str) -> dict:
 
 def _layout_state(scene):
     """The shooting layout (no Newton): a representative state for timing long chains."""
-    from laddermill_gym.ladder.initial import _layout
+    from laddermill_gym.ladder.initial import layout
     from laddermill_gym.model.builders import chain_state
 
     a = scene.assembly
     n = a.n_wings
     half = (n + 1) // 2
     el = [scene.initial.elevator_up if k < half else scene.initial.elevator_down for k in range(n)]
-    pos, alphas = _layout(scene, el)
+    pos, alphas = layout(scene, el)
     u = np.zeros(3 * n)
     u[0::3] = el
     end = None if scene.end is None else scene.ground_points[scene.end]
