@@ -179,6 +179,68 @@ def _inflow_residual(c0, c1, mu, lam_inf, lam):
 
 
 @njit(cache=True)
+def _inflow_bracket(c0, c1, mu, lam_inf, f0, n_eval, max_iter):
+    """Bracket search of :func:`solve_inflow`: from lam_inf (residual f0) in the direction that reduces |f|, steps
+    growing by 1.25 until f changes sign. Returns (found, x0, f0, x1, f1, n_eval): the last two points and their
+    residuals (a sign change between them when found) and the residual evaluations so far."""
+    x0 = lam_inf
+    direction = -1.0 if f0 > 0.0 else 1.0
+    scale = max(abs(lam_inf), mu, 1e-3)
+    h = 1e-3 * scale
+    x1 = x0
+    f1 = f0
+    found = False
+    while n_eval < max_iter:
+        x1 = x0 + direction * h
+        f1, _ = _inflow_residual(c0, c1, mu, lam_inf, x1)
+        n_eval += 1
+        if not math.isfinite(f1):
+            break
+        if (f1 > 0.0) != (f0 > 0.0) or f1 == 0.0:
+            found = True
+            break
+        x0, f0 = x1, f1
+        h *= 1.25
+    return found, x0, f0, x1, f1, n_eval
+
+
+@njit(cache=True)
+def _inflow_refine(c0, c1, mu, lam_inf, x0, f0, x1, f1, n_eval, max_iter, tol, ftol):
+    """Root of the inflow residual in the bracket (x0, x1) of :func:`_inflow_bracket`: Newton steps that fall back
+    to bisection when they leave the bracket. Returns (lam, status, n_eval)."""
+    # orient: f(lo) < 0 < f(hi)
+    if f0 < 0.0:
+        lo, hi = x0, x1
+    else:
+        lo, hi = x1, x0
+    lam = x1 if abs(f1) < abs(f0) else x0
+    status = STATUS_MAX_ITER
+    while n_eval < max_iter:
+        f, df = _inflow_residual(c0, c1, mu, lam_inf, lam)
+        n_eval += 1
+        if f == 0.0 or abs(f) <= ftol:
+            status = STATUS_OK
+            break
+        if f < 0.0:
+            lo = lam
+        else:
+            hi = lam
+        if abs(hi - lo) <= tol * (1.0 + abs(lam)):
+            lam = 0.5 * (lo + hi)
+            status = STATUS_OK
+            break
+        step_ok = False
+        if df != 0.0 and math.isfinite(df):
+            trial = lam - f / df
+            if (trial - lo) * (trial - hi) < 0.0:
+                lam = trial
+                step_ok = True
+        if not step_ok:
+            lam = 0.5 * (lo + hi)
+    return lam, status, n_eval
+
+
+@njit(cache=True)
 def solve_inflow(p, mu, lam_inf, theta0, tol, max_iter, out):
     """Inflow ratio lam consistent with C_T: lam = lam_inf - C_T(lam) / (2 sqrt(mu^2 + lam^2)).
 
@@ -205,62 +267,16 @@ def solve_inflow(p, mu, lam_inf, theta0, tol, max_iter, out):
         out[O_STATUS] = STATUS_NOT_FINITE
         return
     ftol = tol * (1.0 + abs(lam_inf))
-    x0 = lam_inf
-    f0, df0 = _inflow_residual(c0, c1, mu, lam_inf, x0)
+    f0, _ = _inflow_residual(c0, c1, mu, lam_inf, lam_inf)
     n_eval = 1
     status = STATUS_NO_BRACKET
-    lam = x0
+    lam = lam_inf
     if abs(f0) <= ftol:
         status = STATUS_OK
     else:
-        # bracket search away from lam_inf
-        direction = -1.0 if f0 > 0.0 else 1.0
-        scale = max(abs(lam_inf), mu, 1e-3)
-        h = 1e-3 * scale
-        x1 = x0
-        f1 = f0
-        found = False
-        while n_eval < max_iter:
-            x1 = x0 + direction * h
-            f1, df1 = _inflow_residual(c0, c1, mu, lam_inf, x1)
-            n_eval += 1
-            if not math.isfinite(f1):
-                break
-            if (f1 > 0.0) != (f0 > 0.0) or f1 == 0.0:
-                found = True
-                break
-            x0, f0 = x1, f1
-            h *= 1.25
+        found, x0, f0, x1, f1, n_eval = _inflow_bracket(c0, c1, mu, lam_inf, f0, n_eval, max_iter)
         if found:
-            # orient: f(lo) < 0 < f(hi)
-            if f0 < 0.0:
-                lo, hi = x0, x1
-            else:
-                lo, hi = x1, x0
-            lam = x1 if abs(f1) < abs(f0) else x0
-            status = STATUS_MAX_ITER
-            while n_eval < max_iter:
-                f, df = _inflow_residual(c0, c1, mu, lam_inf, lam)
-                n_eval += 1
-                if f == 0.0 or abs(f) <= ftol:
-                    status = STATUS_OK
-                    break
-                if f < 0.0:
-                    lo = lam
-                else:
-                    hi = lam
-                if abs(hi - lo) <= tol * (1.0 + abs(lam)):
-                    lam = 0.5 * (lo + hi)
-                    status = STATUS_OK
-                    break
-                step_ok = False
-                if df != 0.0 and math.isfinite(df):
-                    trial = lam - f / df
-                    if (trial - lo) * (trial - hi) < 0.0:
-                        lam = trial
-                        step_ok = True
-                if not step_ok:
-                    lam = 0.5 * (lo + hi)
+            lam, status, n_eval = _inflow_refine(c0, c1, mu, lam_inf, x0, f0, x1, f1, n_eval, max_iter, tol, ftol)
     if status == STATUS_OK or status == STATUS_MAX_ITER:
         ct = c0 + c1 * lam
         out[O_LAMBDA] = lam
