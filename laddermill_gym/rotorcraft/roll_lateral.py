@@ -103,11 +103,23 @@ def derive_roll_lateral(sim, x: np.ndarray | None = None, u: np.ndarray | None =
     R0 = rotation_from_euler(*sim_euler(x))
     b = R0 @ _EX
     pos = x[0:3]
-    m = cfg.mass
-    M = np.diag([m, cfg.inertia[0]])
+    M = np.diag([cfg.mass, cfg.inertia[0]])
     K = np.zeros((2, 2))
     D = np.zeros((2, 2))
-    g = cfg.gravity
+    _add_tethers(asm, x, tension, pos, R0, b, cfg.gravity, M, D, K)
+    # rotors, fins and drag: body-frame loads; tilting their resultant with the body (global y force only)
+    F_body = out[0:3]
+    K[0, 1] -= (np.cross(b, R0 @ F_body))[1]
+    s_mod, d_mod, _, _ = modulation(0.0, model.tmod[0], model.tmod[1], model.ms, model.md)
+    beta_in = _add_rotors(cfg, model.wf, s_mod, d_mod, out, pos, R0, b, D, K)
+    _add_fins_and_drag(cfg, model.wf, s_mod, d_mod, pos, R0, D, K)
+    return RollLateralModel(M=M, D=D, K=K, b=np.array([0.0, beta_in]))
+
+
+def _add_tethers(asm, x, tension, pos, R0, b, g, M, D, K) -> None:
+    """Add the tethers' terms to M, D and K (in place): each element end at the craft is a straight string of
+    stiffness S = k n n^T + (T / l)(I - n n^T) with Voigt damping DA / l0 along n and the consistent end mass
+    m_e / 3; the moment changes also because the attachment arm turns with the roll."""
     el = asm.elements
     nodes = x[13:].reshape(-1, 6)[:, 0:3] if asm.n_nodes else np.zeros((0, 3))
     for e in range(el.count):
@@ -141,11 +153,12 @@ def derive_roll_lateral(sim, x: np.ndarray | None = None, u: np.ndarray | None =
             M[0, 1] += me / 3.0 * c[1]
             M[1, 0] += me / 3.0 * c[1]
             M[1, 1] += me / 3.0 * (c @ c)
-    # rotors, fins and drag: body-frame loads; tilting their resultant with the body (global y force only)
-    F_body = out[0:3]
-    K[0, 1] -= (np.cross(b, R0 @ F_body))[1]
-    s_mod, d_mod, _, _ = modulation(0.0, model.tmod[0], model.tmod[1], model.ms, model.md)
-    wf = model.wf
+
+
+def _add_rotors(cfg, wf, s_mod, d_mod, out, pos, R0, b, D, K) -> float:
+    """Add the rotors' terms to D and K (in place): roll turns the relative wind in the body and moves the hubs
+    through the wind shear, lateral air speed turns the H-force, roll rate changes each hub's normal air speed.
+    Returns beta [N m per rad], the rolling moment of the differential collective."""
     rp = np.array(cfg.rotor.packed(), float)
     Rr, Om = cfg.rotor_radius, cfg.rotor_speed
     s = 0.5 * cfg.hub_spacing
@@ -178,7 +191,12 @@ def derive_roll_lateral(sim, x: np.ndarray | None = None, u: np.ndarray | None =
             mat[0, col] -= dFy
             mat[1, col] -= h[1] * dFz - h[2] * dFy
         beta_in += hy * (-dT_dth) * (1.0 if r == 0 else -1.0)   # right +dtheta, left -dtheta; L = h_y F_z
-    # fins and frame drag: side forces linear in the lateral air speed
+    return beta_in
+
+
+def _add_fins_and_drag(cfg, wf, s_mod, d_mod, pos, R0, D, K) -> None:
+    """Add the fins' and the frame drag's side forces, linear in the lateral air speed, to D and K (in place)."""
+    targets = ((K, 1), (D, 0), (D, 1))
     for px, pz, at_cg in ((cfg.fin_x, cfg.fin_z, False), (0.0, 0.0, True)):
         pg = pos + R0 @ np.array([px, 0.0, pz])
         w_b = R0.T @ np.array(wind_at(pg[2], wf, s_mod, d_mod))
@@ -190,7 +208,6 @@ def derive_roll_lateral(sim, x: np.ndarray | None = None, u: np.ndarray | None =
             dFy = kk * day[j]
             mat[0, col] -= dFy
             mat[1, col] -= -pz * dFy
-    return RollLateralModel(M=M, D=D, K=K, b=np.array([0.0, beta_in]))
 
 
 def sim_euler(x: np.ndarray) -> np.ndarray:
