@@ -1,14 +1,26 @@
 """Wind profile, direction, density and time modulation (Meijaard et al. 1999 eqs. 1-3).
 
-Packed wind parameters ``wf`` (float64[10]): v0 [m/s], h0 [m], v1 [1/s], exponent [-], phi_inf [rad],
-h_s [m], rho0 [kg/m^3], density model (0 barometric, 1 ISA), H_b [m], unused.
-Modulation samples ``ms`` (speed factor) and ``md`` (direction offset, rad) on the grid
-``mod_t0 + k mod_dt`` (``tf[0]``, ``tf[1]``).
+Packed wind parameters ``wf``: slots ``WF_*`` of ``kernels/contract.py`` (v0 [m/s], h0 [m], v1 [1/s],
+exponent [-], phi_inf [rad], h_s [m], rho0 [kg/m^3], density model, H_b [m]). Modulation samples ``ms`` (speed
+factor) and ``md`` (direction offset, rad) on the grid ``t0 + k dt`` (``tmod[TM_T0]``, ``tmod[TM_DT]``).
 """
 
 import math
 
 from numba import njit
+
+from laddermill_gym.kernels.contract import (
+    DENSITY_BAROMETRIC,
+    WF_DENSITY_MODEL,
+    WF_DIR_HEIGHT,
+    WF_DIR_INF,
+    WF_EXPONENT,
+    WF_H0,
+    WF_RHO0,
+    WF_SCALE_HEIGHT,
+    WF_V0,
+    WF_V1,
+)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
@@ -35,7 +47,7 @@ def modulation(t, t0, dt, ms, md):
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def profile(h, wf):
     """Wind speed V_w(h) [m/s] and its height derivative [1/s] (eq. 1)."""
-    v0, h0, v1, ex = wf[0], wf[1], wf[2], wf[3]
+    v0, h0, v1, ex = wf[WF_V0], wf[WF_H0], wf[WF_V1], wf[WF_EXPONENT]
     if h <= 0.0:
         return 0.0, 0.0
     if h < h0:
@@ -47,7 +59,7 @@ def profile(h, wf):
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def direction(h, wf):
     """Wind direction phi_s(h) [rad] and its height derivative [rad/m] (eq. 2)."""
-    pinf, hs = wf[4], wf[5]
+    pinf, hs = wf[WF_DIR_INF], wf[WF_DIR_HEIGHT]
     if pinf == 0.0 or h <= 0.0:
         return 0.0, 0.0
     ex = math.exp(-h / hs)
@@ -57,12 +69,12 @@ def direction(h, wf):
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def density(h, wf):
     """Air density [kg/m^3] at altitude h [m] (eq. 3 or ISA troposphere)."""
-    if wf[7] == 0.0:
-        return wf[6] * math.exp(-h / wf[8])
+    if wf[WF_DENSITY_MODEL] == DENSITY_BAROMETRIC:
+        return wf[WF_RHO0] * math.exp(-h / wf[WF_SCALE_HEIGHT])
     base = 1.0 - 2.2558e-5 * h
     if base <= 0.0:
         return 0.0
-    return wf[6] * base ** 4.2559
+    return wf[WF_RHO0] * base ** 4.2559
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})

@@ -17,6 +17,7 @@ import numpy as np
 from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, sample_modulation
 from laddermill_gym.envs.actions import ActionMap, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
+from laddermill_gym.kernels.contract import KWork
 from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
@@ -28,7 +29,7 @@ from laddermill_gym.kernels.rigid.observe import (
     step_observe_serial,
 )
 from laddermill_gym.ladder.scene import Scene, load_scene
-from laddermill_gym.model.packing import KWork, make_workspace
+from laddermill_gym.model.packing import make_workspace
 from laddermill_gym.sim.batch import BatchSimulator
 
 __all__ = ["RewardConfig", "TerminationConfig", "WingTask", "FAILURES", "scene_trim"]
@@ -261,23 +262,21 @@ class WingTask:
     # ------------------------------------------------------------------ kernels
     def _run(self, nsteps: np.ndarray) -> None:
         b = self.batch
-        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, b.model, b.work, b.tmod, b.mod_speed,
-                           b.mod_direction, b._sag, b._caero, b._limits, self._dx, self.nominal, self.below,
-                           self.ground, self.obs, self.aux, b.status, b.done)
+        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.tmod, b.mod_speed,
+                     b.mod_direction, b.limits, self._dx, self.nominal, self.below, self.ground, self.obs, self.aux,
+                     b.status, b.done)
         b.t += b.done * b.settings.dt
 
     def _observe_state(self, x: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(obs row, aux row) of one state in the undisturbed wind, without touching the copies."""
         asm = self.scene.assembly
-        from laddermill_gym.model.packing import pack_model
-
         work = make_workspace(asm)
         wb = KWork(*[a[None].copy() for a in work])
         obs, aux = np.zeros((1, self.obs_dim)), np.zeros((1, N_AUX))
         step_observe_serial(np.zeros(1), np.array(x, dtype=float)[None].copy(), np.array(u, dtype=float)[None].copy(),
-                           self.scene.settings.dt, np.zeros(1, dtype=np.int64), pack_model(asm), wb,
-                           np.array([[0.0, 1.0]]), np.ones((1, 2)), np.zeros((1, 2)), self.batch._sag,
-                           self.batch._caero, self.batch._limits, np.zeros((1, asm.state_size)), self.nominal,
+                           self.scene.settings.dt, np.zeros(1, dtype=np.int64), *self.batch.detached, wb,
+                           np.array([[0.0, 1.0]]), np.ones((1, 2)), np.zeros((1, 2)), self.batch.limits,
+                           np.zeros((1, asm.state_size)), self.nominal,
                            self.below, self.ground, obs, aux, np.zeros(1, dtype=np.int64), np.zeros(1, dtype=np.int64))
         return obs[0], aux[0]
 

@@ -9,61 +9,27 @@ import math
 
 from numba import njit
 
-from laddermill_gym.kernels.rigid.rhs2d import rhs2d
-from laddermill_gym.kernels.rigid.rhs3d import rhs3d
+from laddermill_gym.kernels.dispatch import model_check, model_rhs
 
 OK, SINGULAR, NONFINITE, LIMIT = 0, 1, 2, 3
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def rhs(t, x, u, dx, M, W, sag, caero, planar, craft=None):
-    """Dispatch to the 3D (planar is None) or the in-plane right-hand side (compile-time choice); ``craft``
-    (3D only) makes body 0 Roberts' rotorcraft (kernels/craft.py)."""
-    if planar is None:
-        return rhs3d(t, x, u, dx, M, W, sag, caero, craft)
-    return rhs2d(t, x, u, dx, M, W, sag, caero)
+def rhs(t, x, u, dx, M, W):
+    """State derivative of the packed model M (its kind chooses the right-hand side at compile time).
+    Returns 0, or 1 if the mass matrix is singular."""
+    return model_rhs(M.kind, t, x, u, dx, M, W)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def normalise_and_check(x, M, limits, planar):
-    """Renormalise the wings' quaternions (3D) and check the state. Returns a status code."""
-    nw = M.wtype.size
-    nn = M.node_mass.size
-    vmax2 = limits[0] * limits[0]
-    wmax2 = limits[1] * limits[1]
-    for i in range(x.size):
-        if not math.isfinite(x[i]):
-            return NONFINITE
-    if planar is None:
-        for k in range(nw):
-            o = 13 * k
-            n = math.sqrt(x[o + 3] ** 2 + x[o + 4] ** 2 + x[o + 5] ** 2 + x[o + 6] ** 2)
-            for i in range(4):
-                x[o + 3 + i] /= n
-            if x[o + 7] ** 2 + x[o + 8] ** 2 + x[o + 9] ** 2 > vmax2:
-                return LIMIT
-            if x[o + 10] ** 2 + x[o + 11] ** 2 + x[o + 12] ** 2 > wmax2:
-                return LIMIT
-        base = 13 * nw
-        for j in range(nn):
-            o = base + 6 * j + 3
-            if x[o] ** 2 + x[o + 1] ** 2 + x[o + 2] ** 2 > vmax2:
-                return LIMIT
-    else:
-        for k in range(nw):
-            o = 6 * k
-            if x[o + 3] ** 2 + x[o + 4] ** 2 > vmax2 or x[o + 5] ** 2 > wmax2:
-                return LIMIT
-        base = 6 * nw
-        for j in range(nn):
-            o = base + 4 * j + 2
-            if x[o] ** 2 + x[o + 1] ** 2 > vmax2:
-                return LIMIT
-    return OK
+def normalise_and_check(x, M, limits):
+    """Normalise the state after a step as the model kind needs (quaternions) and check it against
+    ``limits`` (``LIM_SPEED`` [m/s], ``LIM_RATE`` [rad/s]). Returns a status code."""
+    return model_check(M.kind, x, M, limits)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def rk4_advance(t, x, u, dt, n, M, W, sag, caero, planar, limits, craft=None):
+def rk4_advance(t, x, u, dt, n, M, W, limits):
     """Advance x in place by n classic RK4 steps of size dt. Returns (status, steps done)."""
     k1, k2, k3, k4, xt, xp = W.k1, W.k2, W.k3, W.k4, W.xt, W.xp
     ns = x.size
@@ -72,23 +38,23 @@ def rk4_advance(t, x, u, dt, n, M, W, sag, caero, planar, limits, craft=None):
     for step in range(n):
         for i in range(ns):
             xp[i] = x[i]
-        if rhs(t, x, u, k1, M, W, sag, caero, planar, craft) != 0:
+        if rhs(t, x, u, k1, M, W) != 0:
             return SINGULAR, step
         for i in range(ns):
             xt[i] = x[i] + h2 * k1[i]
-        if rhs(t + h2, xt, u, k2, M, W, sag, caero, planar, craft) != 0:
+        if rhs(t + h2, xt, u, k2, M, W) != 0:
             return SINGULAR, step
         for i in range(ns):
             xt[i] = x[i] + h2 * k2[i]
-        if rhs(t + h2, xt, u, k3, M, W, sag, caero, planar, craft) != 0:
+        if rhs(t + h2, xt, u, k3, M, W) != 0:
             return SINGULAR, step
         for i in range(ns):
             xt[i] = x[i] + dt * k3[i]
-        if rhs(t + dt, xt, u, k4, M, W, sag, caero, planar, craft) != 0:
+        if rhs(t + dt, xt, u, k4, M, W) != 0:
             return SINGULAR, step
         for i in range(ns):
             x[i] += h6 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i])
-        status = normalise_and_check(x, M, limits, planar)
+        status = normalise_and_check(x, M, limits)
         if status != OK:
             for i in range(ns):
                 x[i] = xp[i]
@@ -110,7 +76,7 @@ C2, C3, C4, C5 = 0.2, 0.3, 0.8, 8.0 / 9.0
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits, max_steps, craft=None):
+def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
     """Integrate x in place from t to t_end with adaptive Dormand-Prince 5(4) (local extrapolation).
 
     h is the first trial step [s]. Returns (status, accepted steps, rejected steps, last step size).
@@ -121,7 +87,7 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits
     ns = x.size
     acc = 0
     rej = 0
-    if rhs(t, x, u, k1, M, W, sag, caero, planar, craft) != 0:
+    if rhs(t, x, u, k1, M, W) != 0:
         return SINGULAR, acc, rej, h
     while t < t_end:
         if acc + rej >= max_steps:
@@ -132,27 +98,27 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits
             last = True
         for i in range(ns):
             xt[i] = x[i] + h * A21 * k1[i]
-        if rhs(t + C2 * h, xt, u, k2, M, W, sag, caero, planar, craft) != 0:
+        if rhs(t + C2 * h, xt, u, k2, M, W) != 0:
             return SINGULAR, acc, rej, h
         for i in range(ns):
             xt[i] = x[i] + h * (A31 * k1[i] + A32 * k2[i])
-        if rhs(t + C3 * h, xt, u, k3, M, W, sag, caero, planar, craft) != 0:
+        if rhs(t + C3 * h, xt, u, k3, M, W) != 0:
             return SINGULAR, acc, rej, h
         for i in range(ns):
             xt[i] = x[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])
-        if rhs(t + C4 * h, xt, u, k4, M, W, sag, caero, planar, craft) != 0:
+        if rhs(t + C4 * h, xt, u, k4, M, W) != 0:
             return SINGULAR, acc, rej, h
         for i in range(ns):
             xt[i] = x[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
-        if rhs(t + C5 * h, xt, u, k5, M, W, sag, caero, planar, craft) != 0:
+        if rhs(t + C5 * h, xt, u, k5, M, W) != 0:
             return SINGULAR, acc, rej, h
         for i in range(ns):
             xt[i] = x[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i])
-        if rhs(t + h, xt, u, k6, M, W, sag, caero, planar, craft) != 0:
+        if rhs(t + h, xt, u, k6, M, W) != 0:
             return SINGULAR, acc, rej, h
         for i in range(ns):
             xp[i] = x[i] + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i])
-        if rhs(t + h, xp, u, k7, M, W, sag, caero, planar, craft) != 0:
+        if rhs(t + h, xp, u, k7, M, W) != 0:
             return SINGULAR, acc, rej, h
         err = 0.0
         for i in range(ns):
@@ -163,7 +129,7 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits
         if not math.isfinite(err):
             err = 1e10
         if err <= 1.0:
-            status = normalise_and_check(xp, M, limits, planar)
+            status = normalise_and_check(xp, M, limits)
             if status != OK:
                 return status, acc, rej, h
             for i in range(ns):
@@ -171,7 +137,7 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, sag, caero, planar, limits
             t = t_end if last else t + h
             acc += 1
             # first-same-as-last; after renormalisation re-evaluate for exactness
-            if rhs(t, x, u, k1, M, W, sag, caero, planar, craft) != 0:
+            if rhs(t, x, u, k1, M, W) != 0:
                 return SINGULAR, acc, rej, h
             fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
             if not last:

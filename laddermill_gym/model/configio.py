@@ -17,10 +17,10 @@ class ConfigError(ValueError):
 def _find_config_dir() -> Path:
     """The shipped configs: the package data ``laddermill_gym.configs`` (a wheel or ``pip install .``); in a
     source checkout installed in editable mode that is the repository's top-level ``configs/`` itself."""
-    from importlib.resources import files
+    try:  # a namespace package (no __init__.py): files() would give a MultiplexedPath, whose str() is no path
+        import laddermill_gym.configs as shipped
 
-    try:
-        root = Path(str(files("laddermill_gym.configs")))
+        root = Path(next(iter(shipped.__path__)))
     except ModuleNotFoundError:  # the source tree on sys.path without any install
         root = Path(__file__).resolve().parents[2] / "configs"
     if not (root / "scenes").is_dir():

@@ -3,23 +3,13 @@ the kernels' workspace. Also finds the block elimination order (the tree the cab
 
 from __future__ import annotations
 
-from collections import namedtuple
-
 import numpy as np
 from scipy.interpolate import CubicSpline
 
+from laddermill_gym.kernels import contract as C
+from laddermill_gym.kernels.contract import KModel, KWork
+from laddermill_gym.kernels.rigid.kinds import RIGID_2D, RIGID_3D, WING
 from laddermill_gym.model.params import AERO_COLUMNS, END_NODE, END_WING, Assembly
-
-KModel = namedtuple(
-    "KModel",
-    ["wf", "tmod", "ms", "md", "glob", "wtype", "tf", "ac", "node_mass", "fixed",
-     "ek", "ei", "ea", "ef", "ekd", "echild", "order", "parent", "bsz"],
-)
-KWork = namedtuple(
-    "KWork",
-    ["D", "U", "Y", "piv", "bv", "Rw", "tension", "Tr", "Ts", "er", "es", "coef", "aout",
-     "k1", "k2", "k3", "k4", "k5", "k6", "k7", "xt", "xp"],
-)
 
 
 def _block(kind: int, idx: int, n_wings: int) -> int:
@@ -129,47 +119,78 @@ def end_mass_shapes(asm: Assembly) -> np.ndarray:
     return out
 
 
-def pack_model(asm: Assembly) -> KModel:
-    """Flat float64 / int64 arrays for the kernels (see the kernel module docstrings for layouts)."""
-    w = asm.wind
-    wf = np.array([w.v0, w.h0, w.v1, w.exponent, w.direction_inf, w.direction_height, w.rho0,
-                   0.0 if w.density_model == "barometric" else 1.0, w.scale_height, 0.0])
-    ac, a0, da = spline_coefficients(asm)
-    tf = np.zeros((max(1, len(asm.wing_types)), 16))
+def wind_fields(w) -> np.ndarray:
+    """The packed wind parameters ``wf`` (slots ``WF_*`` of kernels/contract.py) of a WindParams."""
+    wf = np.zeros(C.WF_SIZE)
+    wf[C.WF_V0], wf[C.WF_H0], wf[C.WF_V1], wf[C.WF_EXPONENT] = w.v0, w.h0, w.v1, w.exponent
+    wf[C.WF_DIR_INF], wf[C.WF_DIR_HEIGHT], wf[C.WF_RHO0] = w.direction_inf, w.direction_height, w.rho0
+    wf[C.WF_DENSITY_MODEL] = C.DENSITY_BAROMETRIC if w.density_model == "barometric" else C.DENSITY_ISA
+    wf[C.WF_SCALE_HEIGHT] = w.scale_height
+    return wf
+
+
+def wing_type_table(asm: Assembly) -> np.ndarray:
+    """The wing-type table ``tf`` (n_types, TF_SIZE) (slots ``TF_*``)."""
+    tf = np.zeros((max(1, len(asm.wing_types)), C.TF_SIZE))
     for i, wt in enumerate(asm.wing_types):
-        tf[i, :5] = (wt.mass, *wt.inertia)
-        tf[i, 5:8] = (wt.area, wt.span, wt.chord)
-        tf[i, 8:11] = wt.r_ref
-        tf[i, 11:14] = wt.attachment
+        tf[i, C.TF_MASS] = wt.mass
+        tf[i, C.TF_JXX:C.TF_JXZ + 1] = wt.inertia
+        tf[i, C.TF_AREA], tf[i, C.TF_SPAN], tf[i, C.TF_CHORD] = wt.area, wt.span, wt.chord
+        tf[i, C.TF_RREF:C.TF_RREF + 3] = wt.r_ref
+        tf[i, C.TF_ATTACH:C.TF_ATTACH + 3] = wt.attachment
+    return tf
+
+
+def pack_model(asm: Assembly, vehicle=WING) -> KModel:
+    """Flat float64 / int64 arrays for the kernels (layout: kernels/contract.py).
+
+    ``vehicle`` is the body-loads plug-in the kernels call for every rigid body (``WING``: the wing types'
+    aerodynamics; the rotorcraft passes its own). The model kind follows ``asm.dim``; the fidelity switches
+    ``asm.sag`` and ``asm.cable_aero`` become the ``sag`` and ``caero`` fields (None when off)."""
+    w = asm.wind
+    ac, a0, da = spline_coefficients(asm)
+    glob = np.zeros(C.GL_SIZE)
+    glob[C.GL_GRAVITY], glob[C.GL_CN0], glob[C.GL_CT0] = asm.gravity, asm.cable_cn0, asm.cable_ct0
+    glob[C.GL_ALPHA0], glob[C.GL_DALPHA] = a0, da
     el = asm.elements
-    ef = np.ascontiguousarray(np.stack([el.l0, el.mu, el.EA, el.DA, el.diameter], axis=1).reshape(-1, 5))
+    ef = np.zeros((el.count, C.EF_SIZE))
+    ef[:, C.EF_L0], ef[:, C.EF_MU], ef[:, C.EF_EA] = el.l0, el.mu, el.EA
+    ef[:, C.EF_DA], ef[:, C.EF_DIAMETER] = el.DA, el.diameter
     order, parent, echild = elimination_tree(asm)
-    wing_dof, node_dof = (6, 3) if asm.dim == 3 else (3, 2)
+    wing_dof, node_dof = (C.DOF_B3, C.DOF_N3) if asm.dim == 3 else (C.DOF_B2, C.DOF_N2)
     bsz = np.array([wing_dof] * asm.n_wings + [node_dof] * asm.n_nodes, dtype=np.int64)
     fixed = asm.fixed_points if asm.fixed_points.size else np.zeros((1, 3))
+    tmod = np.zeros(C.TM_SIZE)
+    tmod[C.TM_T0], tmod[C.TM_DT] = w.mod_t0, w.mod_dt
+    if asm.dim == 2 and vehicle is not WING:
+        raise ValueError("the in-plane (dim = 2) model supports winged bodies only")
     return KModel(
-        wf=wf, tmod=np.array([w.mod_t0, w.mod_dt]),
+        kind=RIGID_3D if asm.dim == 3 else RIGID_2D, wf=wind_fields(w), tmod=tmod,
         ms=np.ascontiguousarray(w.mod_speed, dtype=np.float64),
         md=np.ascontiguousarray(w.mod_direction, dtype=np.float64),
-        glob=np.array([asm.gravity, asm.cable_cn0, asm.cable_ct0, a0, da, 0.0, 0.0, 0.0]),
-        wtype=np.ascontiguousarray(asm.wing_type_index, dtype=np.int64), tf=tf, ac=ac,
+        glob=glob, wtype=np.ascontiguousarray(asm.wing_type_index, dtype=np.int64), tf=wing_type_table(asm), ac=ac,
         node_mass=np.ascontiguousarray(asm.node_mass, dtype=np.float64),
         fixed=np.ascontiguousarray(fixed, dtype=np.float64),
         ek=np.ascontiguousarray(el.end_kind, dtype=np.int64).reshape(-1, 2),
         ei=np.ascontiguousarray(el.end_index, dtype=np.int64).reshape(-1, 2),
         ea=np.ascontiguousarray(el.attach, dtype=np.float64).reshape(-1, 2, 3),
         ef=ef, ekd=end_mass_shapes(asm), echild=echild, order=order, parent=parent, bsz=bsz,
+        sag=np.zeros(1) if asm.sag else None,
+        caero=np.array([asm.cable_cn0, asm.cable_ct0]) if asm.cable_aero else None,
+        vehicle=vehicle,
     )
 
 
-def make_workspace(asm: Assembly) -> KWork:
-    """Every array the kernels write into, allocated once per simulator."""
+def make_workspace(asm: Assembly, n_vout: int = 1, n_vscratch: int = 1) -> KWork:
+    """Every array the kernels write into, allocated once per simulator; ``n_vout`` and ``n_vscratch`` are the
+    sizes of the vehicle's output and scratch arrays (1 for wings, which use neither)."""
     nb = max(1, asm.n_wings + asm.n_nodes)
     n = asm.state_size
     z = np.zeros
     return KWork(
         D=z((nb, 6, 6)), U=z((nb, 6, 6)), Y=z((nb, 6, 6)), piv=z((nb, 6), dtype=np.int64),
         bv=z((nb, 6)), Rw=z((max(1, asm.n_wings), 3, 3)), tension=z(max(1, asm.elements.count)),
-        Tr=z((3, 6)), Ts=z((3, 6)), er=z(9), es=z(9), coef=z(len(AERO_COLUMNS)), aout=z(15),
+        Tr=z((3, 6)), Ts=z((3, 6)), er=z(9), es=z(9), coef=z(len(AERO_COLUMNS)), aout=z(C.AO_SIZE),
+        vout=z(max(1, n_vout)), vscratch=z(max(1, n_vscratch)),
         k1=z(n), k2=z(n), k3=z(n), k4=z(n), k5=z(n), k6=z(n), k7=z(n), xt=z(n), xp=z(n),
     )

@@ -127,6 +127,11 @@ def craft_parameters(cfg: CraftConfig) -> np.ndarray:
     return cp
 
 
+def craft_vehicle(cfg: CraftConfig) -> _kc.CraftVehicle:
+    """The packed model's vehicle for a craft config (``kernels/dispatch.py``)."""
+    return _kc.CraftVehicle(craft_parameters(cfg), np.array(cfg.rotor.packed(), dtype=np.float64))
+
+
 class CraftSimulator(Simulator):
     """The core :class:`~laddermill_gym.sim.simulator.Simulator` with Roberts' craft as body 0.
 
@@ -141,9 +146,13 @@ class CraftSimulator(Simulator):
         self.layout = layout
         super().__init__(assembly, initial_state, config.settings, controls)
 
-    def _make_craft(self):
-        rp = np.array(self.config.rotor.packed(), dtype=np.float64)
-        return (craft_parameters(self.config), rp, np.zeros(_kc.N_COUT), np.zeros(_kr.N_OUT))
+    def make_vehicle(self):
+        """The craft's body-loads plug-in: its parameters and the rotor's blade parameters."""
+        return craft_vehicle(self.config)
+
+    def vehicle_sizes(self) -> tuple[int, int]:
+        """The rotor outputs (``craft_kernels.N_COUT``) and the inflow solver's scratch."""
+        return _kc.N_COUT, _kr.N_OUT
 
     @property
     def n_controls(self) -> int:
@@ -168,7 +177,7 @@ class CraftSimulator(Simulator):
         shaft torque Q [N m] (> 0 supplied), mechanical power -Q Omega [W], mu, lambda, C_T [-], retreating-tip
         incidence [rad], blade pitch [rad]; plus ``force_body`` (3,) [N] and ``moment_body`` (3,) [N m]."""
         self.rhs(self.t, self.state, self.controls)
-        out = self._craft[2]
+        out = self.work.vout
         blocks = out[6:].reshape(2, _kc.N_RO)
         names = {"thrust_N": _kc.R_THRUST, "hforce_N": _kc.R_HFORCE, "torque_Nm": _kc.R_TORQUE,
                  "power_W": _kc.R_POWER, "mu": _kc.R_MU, "lambda": _kc.R_LAMBDA, "ct": _kc.R_CT,

@@ -1,10 +1,12 @@
 """Loads on Roberts' tethered twin-rotor craft: two rotors side by side, vertical fins and frame drag.
 
-The craft is body 0 of an ordinary 3D assembly (its tethers are the core's cable elements); ``rhs3d``
-calls :func:`craft_loads` instead of the wing aerodynamics when its ``craft`` argument is given. Model and
-sources: ``laddermill_gym/docs/rotorcraft.md``; rotor formulas: ``kernels/rotor.py``.
+The craft is body 0 of an ordinary 3D assembly (its tethers are the core's cable elements). Its packed model
+names the vehicle :class:`CraftVehicle` ``(cp, rp)``, registered here with ``kernels/dispatch.py``, so the
+generic rigid-body right-hand side takes the craft's loads from :func:`craft_body_loads` without importing this
+module. Model and sources: ``laddermill_gym/docs/rotorcraft.md``; rotor formulas: ``rotorcraft/rotor_kernels.py``.
 
-``craft`` is a tuple of four float64 arrays ``(cp, rp, cout, scratch)``:
+:func:`craft_loads` takes a tuple of four float64 arrays ``(cp, rp, cout, scratch)``; the last two are the
+workspace's ``vout`` and ``vscratch`` (one per batched copy):
 
 - ``cp[N_CP]``: craft parameters, indices C_* below (SI units, body axes x forward, y right, z down).
 - ``rp[rotor.N_PARAMS]``: blade parameters (sigma, a, delta, B, gamma) as in ``kernels/rotor.py``.
@@ -17,10 +19,13 @@ runs at theta0 + dtheta, the left at theta0 - dtheta.
 """
 
 import math
+from collections import namedtuple
 
 from numba import njit
 
 from laddermill_gym.atmosphere.wind_kernels import density, wind_at
+from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_SIZE, B3_VEL
+from laddermill_gym.kernels.dispatch import register_vehicle
 from laddermill_gym.rotorcraft.rotor_kernels import (
     O_CT,
     O_LAMBDA,
@@ -58,9 +63,9 @@ SPIN = (1.0, -1.0)
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def _air_at(x, o, R, px, py, pz, wf, s_mod, d_mod):
     """Air velocity relative to the body point (px, py, pz) [m] in body axes [m/s], and the density there."""
-    vx, vy, vz = x[o + 7], x[o + 8], x[o + 9]
-    p, q, r = x[o + 10], x[o + 11], x[o + 12]
-    zg = x[o + 2] + R[2, 0] * px + R[2, 1] * py + R[2, 2] * pz
+    vx, vy, vz = x[o + B3_VEL], x[o + B3_VEL + 1], x[o + B3_VEL + 2]
+    p, q, r = x[o + B3_RATE], x[o + B3_RATE + 1], x[o + B3_RATE + 2]
+    zg = x[o + B3_POS + 2] + R[2, 0] * px + R[2, 1] * py + R[2, 2] * pz
     wgx, wgy, wgz = wind_at(zg, wf, s_mod, d_mod)
     ax = R[0, 0] * wgx + R[1, 0] * wgy + R[2, 0] * wgz - (vx + q * pz - r * py)
     ay = R[0, 1] * wgx + R[1, 1] * wgy + R[2, 1] * wgz - (vy + r * px - p * pz)
@@ -151,3 +156,19 @@ def craft_loads(x, o, R, u, wf, s_mod, d_mod, craft):
     fz += k * az
     out[0], out[1], out[2], out[3], out[4], out[5] = fx, fy, fz, mx, my, mz
     return ok
+
+
+#: The rotorcraft vehicle of a packed model: craft parameters ``cp`` (N_CP) and blade parameters ``rp``.
+CraftVehicle = namedtuple("CraftVehicle", ["cp", "rp"])
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"}, inline="always")
+def craft_body_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
+    """The body-loads plug-in (``kernels/dispatch.py``): the craft's loads on body k, body axes [N, N m];
+    rotor outputs left in ``W.vout`` (layout of ``cout`` above)."""
+    craft_loads(x, B3_SIZE * k, R, u, M.wf, env[0], env[1], (vehicle.cp, vehicle.rp, W.vout, W.vscratch))
+    co = W.vout
+    return co[0], co[1], co[2], co[3], co[4], co[5]
+
+
+register_vehicle(CraftVehicle, craft_body_loads)

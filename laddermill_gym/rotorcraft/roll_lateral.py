@@ -99,7 +99,7 @@ def derive_roll_lateral(sim, x: np.ndarray | None = None, u: np.ndarray | None =
     cfg, asm, model = sim.config, sim.assembly, sim.model
     sim.rhs(0.0, x, u)
     tension = sim.work.tension[: asm.elements.count].copy()
-    out = sim._craft[2].copy()
+    out = sim.work.vout.copy()
     R0 = rotation_from_euler(*sim_euler(x))
     b = R0 @ _EX
     pos = x[0:3]

@@ -9,11 +9,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.kernels.batch import rk4_batch
+from laddermill_gym.kernels.batch import detach_markers, rk4_batch
+from laddermill_gym.kernels.contract import KWork
 from laddermill_gym.kernels.integrate import OK
-from laddermill_gym.model.packing import KWork, make_workspace, pack_model
+from laddermill_gym.kernels.rigid.kinds import WING
+from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import N_CONTROLS, Assembly
-from laddermill_gym.sim.simulator import IntegratorSettings
+from laddermill_gym.sim.simulator import IntegratorSettings, limits_array
 
 
 class BatchSimulator:
@@ -30,6 +32,11 @@ class BatchSimulator:
     n_modulation : int
         Samples per copy in the wind modulation series (>= 2); shorter series are padded with their
         last value, which the kernel holds anyway.
+    vehicle, n_controls, vehicle_sizes
+        The body-loads plug-in (default ``WING``), the number of controls per copy (default 3 per wing) and
+        the sizes of the vehicle's output and scratch arrays in each copy's workspace (see
+        :meth:`Simulator.make_vehicle`; the rotorcraft's :class:`~laddermill_gym.rotorcraft.craft.CraftSimulator`
+        gives all three).
 
     Attributes
     ----------
@@ -37,7 +44,8 @@ class BatchSimulator:
     status : ndarray (B,) int64        integrator status of the last step (0 ok; see kernels/integrate.py)
     """
 
-    def __init__(self, assembly: Assembly, n_copies: int, settings: IntegratorSettings, n_modulation: int = 2):
+    def __init__(self, assembly: Assembly, n_copies: int, settings: IntegratorSettings, n_modulation: int = 2,
+                 vehicle=WING, n_controls: int | None = None, vehicle_sizes: tuple[int, int] = (1, 1)):
         if int(n_copies) != n_copies or n_copies < 1:
             raise ValueError(f"n_copies must be a positive integer, got {n_copies!r}")
         if settings.method != "rk4":
@@ -48,11 +56,13 @@ class BatchSimulator:
         self.settings = settings
         self.n_copies = int(n_copies)
         nb, ns, nm = self.n_copies, assembly.state_size, int(n_modulation)
-        self.model = pack_model(assembly)
-        one = make_workspace(assembly)
+        self.model = pack_model(assembly, vehicle)
+        #: (model without markers, kind, vehicle): the parallel kernels' form of ``model``
+        self.detached = detach_markers(self.model)
+        one = make_workspace(assembly, *vehicle_sizes)
         self.work = KWork(*[np.zeros((nb, *a.shape), dtype=a.dtype) for a in one])
         self.states = np.zeros((nb, ns))
-        self.controls = np.zeros((nb, N_CONTROLS * assembly.n_wings))
+        self.controls = np.zeros((nb, N_CONTROLS * assembly.n_wings if n_controls is None else int(n_controls)))
         self.t = np.zeros(nb)
         self.tmod = np.tile(np.array([0.0, 1.0]), (nb, 1))
         self.mod_speed = np.ones((nb, nm))
@@ -60,10 +70,7 @@ class BatchSimulator:
         self.active = np.ones(nb, dtype=np.int64)
         self.status = np.zeros(nb, dtype=np.int64)
         self.done = np.zeros(nb, dtype=np.int64)
-        self._sag = np.zeros(1) if assembly.sag else None
-        self._caero = np.array([assembly.cable_cn0, assembly.cable_ct0]) if assembly.cable_aero else None
-        self._planar = np.zeros(1) if assembly.dim == 2 else None
-        self._limits = np.array([settings.max_speed, settings.max_rate])
+        self.limits = limits_array(settings)
 
     @property
     def n_modulation(self) -> int:
@@ -91,9 +98,8 @@ class BatchSimulator:
     def step(self, n_steps: int = 1) -> np.ndarray:
         """Advance every active copy by n_steps RK4 steps (time advances by the steps each copy completed).
         Returns the status array (B,); a failed copy is left at its last good state."""
-        rk4_batch(self.t, self.states, self.controls, self.settings.dt, int(n_steps), self.model, self.work,
-                  self.tmod, self.mod_speed, self.mod_direction, self.active, self._sag, self._caero,
-                  self._planar, self._limits, self.status, self.done)
+        rk4_batch(self.t, self.states, self.controls, self.settings.dt, int(n_steps), *self.detached, self.work,
+                  self.tmod, self.mod_speed, self.mod_direction, self.active, self.limits, self.status, self.done)
         self.t += self.done * self.settings.dt
         return self.status
 

@@ -6,8 +6,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from laddermill_gym.kernels.contract import LIM_RATE, LIM_SIZE, LIM_SPEED
 from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR, dp54_advance, rk4_advance
 from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
+from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 from laddermill_gym.model.states import euler_from_quaternion
@@ -33,6 +35,13 @@ class IntegratorSettings:
     max_rate: float = 100.0
 
 
+def limits_array(settings: IntegratorSettings) -> np.ndarray:
+    """The kernels' ``limits`` (slots ``LIM_*``): largest speed [m/s] and angular rate [rad/s]."""
+    lim = np.zeros(LIM_SIZE)
+    lim[LIM_SPEED], lim[LIM_RATE] = settings.max_speed, settings.max_rate
+    return lim
+
+
 class Simulator:
     """A compiled simulator of one built scene.
 
@@ -51,28 +60,27 @@ class Simulator:
                  controls: np.ndarray | None = None):
         self.assembly = assembly
         self.settings = settings or IntegratorSettings()
-        self.model = pack_model(assembly)
-        self.work = make_workspace(assembly)
-        self._sag = np.zeros(1) if assembly.sag else None
-        self._caero = np.array([assembly.cable_cn0, assembly.cable_ct0]) if assembly.cable_aero else None
-        self._planar = np.zeros(1) if assembly.dim == 2 else None
-        self._craft = self._make_craft()
-        # trailing kernel argument: omitted for wings, so they share the compiled code of the other callers
-        self._kx = () if self._craft is None else (self._craft,)
+        self.model = pack_model(assembly, self.make_vehicle())
+        self.work = make_workspace(assembly, *self.vehicle_sizes())
         if assembly.dim == 2 and (assembly.wind.direction_inf != 0.0 or np.any(assembly.wind.mod_direction != 0.0)):
             raise ValueError("in-plane (dim = 2) simulation needs a fixed wind direction: "
                              f"direction_inf = {assembly.wind.direction_inf}, "
                              f"max |mod_direction| = {np.max(np.abs(assembly.wind.mod_direction))}")
-        self._limits = np.array([self.settings.max_speed, self.settings.max_rate])
+        self.limits = limits_array(self.settings)
         self._dx = np.zeros(assembly.state_size)
         self.initial_state = self._check_state(initial_state).copy()
         self.initial_controls = (np.zeros(N_CONTROLS * assembly.n_wings) if controls is None
                                  else self._check_controls(controls).copy())
         self.reset()
 
-    def _make_craft(self):
-        """The kernels' ``craft`` argument: None for wings (subclasses with other bodies override this)."""
-        return None
+    def make_vehicle(self):
+        """The body-loads plug-in of the packed model (``kernels/dispatch.py``): ``WING`` for winged bodies;
+        a simulator of another vehicle (the rotorcraft) returns its own."""
+        return WING
+
+    def vehicle_sizes(self) -> tuple[int, int]:
+        """Sizes of the vehicle's output and scratch arrays in the workspace (``W.vout``, ``W.vscratch``)."""
+        return 1, 1
 
     # ------------------------------------------------------------------ state handling
     @property
@@ -131,8 +139,7 @@ class Simulator:
             raise ValueError(f"rhs: x must have {self.n_state} and u {self.n_controls} entries, "
                              f"got {x.shape} and {u.shape}")
         dx = np.zeros(self.n_state)
-        if _rhs_kernel(float(t), x, u, dx, self.model, self.work, self._sag, self._caero, self._planar,
-                       *self._kx) != 0:
+        if _rhs_kernel(float(t), x, u, dx, self.model, self.work) != 0:
             raise SimulationError(f"t = {t:.6g} s: the mass matrix is singular")
         return dx
 
@@ -146,8 +153,7 @@ class Simulator:
         s = self.settings
         if s.method == "rk4":
             status, done = rk4_advance(self.t, self.state, self.controls, s.dt, int(n_steps), self.model,
-                                       self.work, self._sag, self._caero, self._planar, self._limits,
-                                       *self._kx)
+                                       self.work, self.limits)
             self.t += done * s.dt
         else:
             status, done = self._dp54(self.t + n_steps * s.dt)
@@ -158,8 +164,7 @@ class Simulator:
     def _dp54(self, t_end: float):
         s = self.settings
         status, acc, rej, _ = dp54_advance(self.t, t_end, self.state, self.controls, min(s.dt, t_end - self.t),
-                                           s.rtol, s.atol, self.model, self.work, self._sag, self._caero,
-                                           self._planar, self._limits, 10_000_000, *self._kx)
+                                           s.rtol, s.atol, self.model, self.work, self.limits, 10_000_000)
         if status == OK:
             self.t = t_end
         return status, acc
@@ -169,8 +174,8 @@ class Simulator:
         s = self.settings
         status, acc, rej, _ = dp54_advance(self.t, float(t_end), self.state, self.controls,
                                            min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt,
-                                           rtol or s.rtol, atol or s.atol, self.model, self.work, self._sag,
-                                           self._caero, self._planar, self._limits, 100_000_000, *self._kx)
+                                           rtol or s.rtol, atol or s.atol, self.model, self.work, self.limits,
+                                           100_000_000)
         if status != OK:
             self._raise(status)
         self.t = float(t_end)

@@ -26,10 +26,10 @@ from laddermill_gym.sim.simulator import SimulationError, Simulator
 
 
 @njit(cache=True)
-def _rhs_loop(n, t, x, u, dx, M, W, sag, caero, planar):
+def _rhs_loop(n, t, x, u, dx, M, W):
     s = 0
     for _ in range(n):
-        s += rhs_kernel(t, x, u, dx, M, W, sag, caero, planar)
+        s += rhs_kernel(t, x, u, dx, M, W)
     return s
 
 
@@ -46,7 +46,7 @@ def _rhs_runner(sim: Simulator, n: int):
     """A compiled, warmed-up loop of n right-hand sides of ``sim`` at its state."""
     x = sim.state.copy()
     dx = np.zeros_like(x)
-    args = (0.0, x, sim.controls, dx, sim.model, sim.work, sim._sag, sim._caero, sim._planar)
+    args = (0.0, x, sim.controls, dx, sim.model, sim.work)
     _rhs_loop(1, *args)
     return lambda: _rhs_loop(n, *args)
 
@@ -75,8 +75,7 @@ def time_step(sim: Simulator, n: int, repeats: int) -> float:
 
     def run():
         x = x0.copy()
-        rk4_advance(0.0, x, sim.controls, sim.settings.dt, n, sim.model, sim.work, sim._sag, sim._caero,
-                    sim._planar, sim._limits)
+        rk4_advance(0.0, x, sim.controls, sim.settings.dt, n, sim.model, sim.work, sim.limits)
 
     run()
     return _median_time(run, repeats) / n

@@ -38,7 +38,7 @@ sc = load_scene("ladder_chain")
 asm = dataclasses.replace(sc.assembly, wind=sc.assembly.wind.with_modulation(0.0, 0.25, np.array([1.0, 1.0, 1.05]), np.array([0.0, 0.01, 0.01])))
 s0 = sc.simulator()
 sim = Simulator(asm, s0.initial_state, sc.settings, s0.initial_controls)
-run("ladder_chain", sim, [40, 40])
+run("ladder_chain", sim, [20, 20])
 sim = load_scene("ladder_chain", dimension=2).simulator()
 run("ladder_chain_2d", sim, [40, 40])
 # rotorcraft flying model

@@ -141,7 +141,7 @@ def _positive(name: str, v, unit: str) -> float:
 
 def _inflow_failed(sim: CraftSimulator) -> bool:
     """Whether the last right-hand side evaluation met a rotor whose Glauert inflow did not converge."""
-    out = sim._craft[2]
+    out = sim.work.vout
     return any(out[6 + _kc.N_RO * r + _kc.R_STATUS] != STATUS_OK for r in range(2))
 
 

@@ -12,6 +12,22 @@ from numba import njit, prange
 
 from laddermill_gym.atmosphere.wind_kernels import modulation, wind_at
 from laddermill_gym.kernels.batch import copy_views
+from laddermill_gym.kernels.contract import (
+    B3_POS,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
+    OBS_ALPHA,
+    OBS_BETA,
+    OBS_EULER,
+    OBS_OFFSET,
+    OBS_RATES,
+    OBS_SIZE,
+    OBS_TENSION,
+    OBS_VELOCITY,
+    TM_DT,
+    TM_T0,
+)
 from laddermill_gym.kernels.integrate import OK, SINGULAR, rhs, rk4_advance
 
 #: Columns of the auxiliary output ``aux`` (B, N_AUX).
@@ -25,36 +41,38 @@ _FM = {"contract", "reassoc", "nsz", "arcp"}
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
-def _observe_one(t, x, u, dx, M, W, sag, caero, nominal, below, ground, obs, aux):
+def _observe_one(t, x, u, dx, M, W, nominal, below, ground, obs, aux):
     """Observation row ``obs`` (n_wings * 15,) and ``aux`` (N_AUX,) of one state (evaluates the right-hand
     side once for the tensions). Returns OK or SINGULAR."""
-    if rhs(t, x, u, dx, M, W, sag, caero, None) != 0:
+    if rhs(t, x, u, dx, M, W) != 0:
         return SINGULAR
     nw = M.wtype.size
-    s, d, _, _ = modulation(t, M.tmod[0], M.tmod[1], M.ms, M.md)
+    s, d, _, _ = modulation(t, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
     ten = W.tension
     zmin = math.inf
     for k in range(nw):
-        o = 13 * k
-        b = 15 * k
+        o = B3_SIZE * k
+        b = OBS_SIZE * k
         R = W.Rw[k]  # filled by rhs at this state
-        vx, vy, vz = x[o + 7], x[o + 8], x[o + 9]
+        ov = o + B3_VEL
+        vx, vy, vz = x[ov], x[ov + 1], x[ov + 2]
         for i in range(3):
-            obs[b + i] = x[o + i] - nominal[k, i]
-            obs[b + 3 + i] = R[i, 0] * vx + R[i, 1] * vy + R[i, 2] * vz
-            obs[b + 9 + i] = x[o + 10 + i]
-        obs[b + 6] = math.atan2(R[2, 1], R[2, 2])
-        obs[b + 7] = -math.asin(min(1.0, max(-1.0, R[2, 0])))
-        obs[b + 8] = math.atan2(R[1, 0], R[0, 0])
-        wx, wy, wz = wind_at(x[o + 2], M.wf, s, d)
+            obs[b + OBS_OFFSET + i] = x[o + B3_POS + i] - nominal[k, i]
+            obs[b + OBS_VELOCITY + i] = R[i, 0] * vx + R[i, 1] * vy + R[i, 2] * vz
+            obs[b + OBS_RATES + i] = x[o + B3_RATE + i]
+        obs[b + OBS_EULER] = math.atan2(R[2, 1], R[2, 2])
+        obs[b + OBS_EULER + 1] = -math.asin(min(1.0, max(-1.0, R[2, 0])))
+        obs[b + OBS_EULER + 2] = math.atan2(R[1, 0], R[0, 0])
+        z = x[o + B3_POS + 2]
+        wx, wy, wz = wind_at(z, M.wf, s, d)
         ua = vx - (R[0, 0] * wx + R[1, 0] * wy + R[2, 0] * wz)
         va = vy - (R[0, 1] * wx + R[1, 1] * wy + R[2, 1] * wz)
         wa = vz - (R[0, 2] * wx + R[1, 2] * wy + R[2, 2] * wz)
         sp = math.sqrt(ua * ua + va * va + wa * wa)
-        obs[b + 12] = math.atan2(wa, ua)
-        obs[b + 13] = math.asin(min(1.0, max(-1.0, va / sp))) if sp > 0.0 else 0.0
-        obs[b + 14] = ten[below[k]]
-        zmin = min(zmin, -x[o + 2])
+        obs[b + OBS_ALPHA] = math.atan2(wa, ua)
+        obs[b + OBS_BETA] = math.asin(min(1.0, max(-1.0, va / sp))) if sp > 0.0 else 0.0
+        obs[b + OBS_TENSION] = ten[below[k]]
+        zmin = min(zmin, -z)
     tmax = 0.0
     for e in range(M.ek.shape[0]):
         tmax = max(tmax, ten[e])
@@ -66,25 +84,24 @@ def _observe_one(t, x, u, dx, M, W, sag, caero, nominal, below, ground, obs, aux
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
-def _step_observe_copy(b, t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, limits, DX, nominal, below, ground,
-                       obs, aux, status, done):
+def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, tmod, MS, MD, limits, DX, nominal, below,
+                       ground, obs, aux, status, done):
     n = nsteps[b]
     if n < 0:
         status[b] = OK
         done[b] = 0
         return
-    Mb, Wb = copy_views(b, M, WB, tmod, MS, MD)
+    Mb, Wb = copy_views(b, M, kind, vehicle, WB, tmod, MS, MD)
     st, dn = OK, 0
     if n > 0:
-        st, dn = rk4_advance(t[b], X[b], U[b], dt, n, Mb, Wb, sag, caero, None, limits)
-    ost = _observe_one(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, sag, caero, nominal, below, ground,
-                       obs[b], aux[b])
+        st, dn = rk4_advance(t[b], X[b], U[b], dt, n, Mb, Wb, limits)
+    ost = _observe_one(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, nominal, below, ground, obs[b], aux[b])
     status[b] = st if st != OK else ost
     done[b] = dn
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, parallel=True)
-def step_observe_batch(t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, limits, DX, nominal, below, ground,
+def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, tmod, MS, MD, limits, DX, nominal, below, ground,
                        obs, aux, status, done):
     """Advance copy b by nsteps[b] RK4 steps, then observe it (nsteps[b] = 0: observe only; < 0: skip the copy).
     Parallel over the copies (numba prange).
@@ -92,19 +109,20 @@ def step_observe_batch(t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, lim
     t (B,) [s] is each copy's time before the steps (not advanced here); X (B, n_state), U (B, n_controls);
     per-copy wind modulation tmod (B, 2), MS, MD (B, n_mod); WB a KWork with a leading batch axis; DX (B,
     n_state) scratch; nominal (n_wings, 3) [m]; below (n_wings,) element below each wing; ground (2,) ground
-    elements (start, end; -1 if none). Writes obs (B, 15 n_wings), aux (B, N_AUX), status (B,) and done (B,)
+    elements (start, end; -1 if none). M comes without its markers, passed as ``kind`` and ``vehicle``
+    (``kernels.batch.detach_markers``). Writes obs (B, 15 n_wings), aux (B, N_AUX), status (B,) and done (B,)
     (steps completed). A copy whose integration fails is left at its last good state and observed there.
     """
     for b in prange(X.shape[0]):
-        _step_observe_copy(b, t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, limits, DX, nominal, below,
+        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, tmod, MS, MD, limits, DX, nominal, below,
                            ground, obs, aux, status, done)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
-def step_observe_serial(t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, limits, DX, nominal, below, ground,
+def step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, tmod, MS, MD, limits, DX, nominal, below, ground,
                         obs, aux, status, done):
     """:func:`step_observe_batch` on one thread: for single environments and small batches, where starting
     the thread pool costs more than it saves (and on a loaded machine waits for a descheduled thread)."""
     for b in range(X.shape[0]):
-        _step_observe_copy(b, t, X, U, dt, nsteps, M, WB, tmod, MS, MD, sag, caero, limits, DX, nominal, below,
+        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, tmod, MS, MD, limits, DX, nominal, below,
                            ground, obs, aux, status, done)

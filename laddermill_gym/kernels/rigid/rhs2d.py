@@ -2,7 +2,8 @@
 
 State per wing (6): x, z, theta, u, w, q; per free node (4): x, z, x', z'. Blocks: 3 dof per wing
 (u, w, q), 2 per node. Lateral states and lateral aerodynamics are absent, not zeroed. The packed
-model and workspace are the 3D ones; switches as in rhs3d.
+model and workspace are the 3D ones; switches as in rhs3d. Only winged bodies (their longitudinal
+aerodynamics is written here; the in-plane mode has no vehicle plug-in).
 """
 
 import math
@@ -11,22 +12,50 @@ from numba import njit
 
 from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_at, wind_rate
 from laddermill_gym.kernels.cable import aero_load, lateral_elongation, tension_plain, tension_sag
+from laddermill_gym.kernels.contract import (
+    B2_Q,
+    B2_SIZE,
+    B2_THETA,
+    B2_U,
+    B2_W,
+    B2_X,
+    B2_Z,
+    CTRL_ELEVATOR,
+    EF_DA,
+    EF_DIAMETER,
+    EF_EA,
+    EF_L0,
+    EF_MU,
+    END_NODE,
+    END_WING,
+    GL_ALPHA0,
+    GL_DALPHA,
+    GL_GRAVITY,
+    N2_POS,
+    N2_SIZE,
+    N2_VEL,
+    N_CONTROLS,
+    TF_JYY,
+    TF_MASS,
+    TM_DT,
+    TM_T0,
+)
 from laddermill_gym.kernels.rigid.aero import wing_aero_long
-from laddermill_gym.kernels.rigid.rhs3d import END_NODE, END_WING, _add_const_mass, _block_of, tree_solve
+from laddermill_gym.kernels.rigid.rhs3d import add_const_mass, block_of, tree_solve
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def _end_kinematics2(kind, idx, att, x, fixed, nw, T, ev):
     """In-plane version of rhs3d._end_kinematics: ev = (x, z, x', z', ax, az), T is 2 x nb."""
     if kind == END_WING:
-        o = 6 * idx
-        c, s = math.cos(x[o + 2]), math.sin(x[o + 2])
+        o = B2_SIZE * idx
+        c, s = math.cos(x[o + B2_THETA]), math.sin(x[o + B2_THETA])
         ax, az = att[0], att[2]
-        u, w, q = x[o + 3], x[o + 4], x[o + 5]
+        u, w, q = x[o + B2_U], x[o + B2_W], x[o + B2_Q]
         bx, bz = u + q * az, w - q * ax
         cx, cz = q * bz, -q * bx
-        ev[0] = x[o] + c * ax + s * az
-        ev[1] = x[o + 1] - s * ax + c * az
+        ev[0] = x[o + B2_X] + c * ax + s * az
+        ev[1] = x[o + B2_Z] - s * ax + c * az
         ev[2] = c * bx + s * bz
         ev[3] = -s * bx + c * bz
         ev[4] = c * cx + s * cz
@@ -35,8 +64,9 @@ def _end_kinematics2(kind, idx, att, x, fixed, nw, T, ev):
         T[1, 0], T[1, 1], T[1, 2] = -s, c, -s * az - c * ax
         return 3
     if kind == END_NODE:
-        o = 6 * nw + 4 * idx
-        ev[0], ev[1], ev[2], ev[3] = x[o], x[o + 1], x[o + 2], x[o + 3]
+        o = B2_SIZE * nw + N2_SIZE * idx
+        ev[0], ev[1] = x[o + N2_POS], x[o + N2_POS + 1]
+        ev[2], ev[3] = x[o + N2_VEL], x[o + N2_VEL + 1]
         ev[4] = 0.0
         ev[5] = 0.0
         T[0, 0], T[0, 1], T[1, 0], T[1, 1] = 1.0, 0.0, 0.0, 1.0
@@ -66,10 +96,10 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
     nw = M.wtype.size
     nn = M.node_mass.size
     ne = M.ef.shape[0]
-    g = M.glob[0]
-    a0, da = M.glob[3], M.glob[4]
+    g = M.glob[GL_GRAVITY]
+    a0, da = M.glob[GL_ALPHA0], M.glob[GL_DALPHA]
     wf = M.wf
-    s_mod, d_mod, sd_mod, dd_mod = modulation(t, M.tmod[0], M.tmod[1], M.ms, M.md)
+    s_mod, d_mod, sd_mod, dd_mod = modulation(t, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
     D, U, bv = W.D, W.U, W.bv
     nbk = nw + nn
     for b in range(nbk):
@@ -80,33 +110,33 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
                 U[b, i, j] = 0.0
     ao = W.aout
     for k in range(nw):
-        o = 6 * k
-        c, s = math.cos(x[o + 2]), math.sin(x[o + 2])
-        uu, ww, q = x[o + 3], x[o + 4], x[o + 5]
+        o = B2_SIZE * k
+        c, s = math.cos(x[o + B2_THETA]), math.sin(x[o + B2_THETA])
+        uu, ww, q = x[o + B2_U], x[o + B2_W], x[o + B2_Q]
         xd = c * uu + s * ww
         zd = -s * uu + c * ww
-        dx[o], dx[o + 1], dx[o + 2] = xd, zd, q
+        dx[o + B2_X], dx[o + B2_Z], dx[o + B2_THETA] = xd, zd, q
         ty = M.wtype[k]
-        m = M.tf[ty, 0]
+        m = M.tf[ty, TF_MASS]
         Dk = D[k]
         Dk[0, 0] = m
         Dk[1, 1] = m
-        Dk[2, 2] = M.tf[ty, 2]
+        Dk[2, 2] = M.tf[ty, TF_JYY]
         fx = -m * g * s - m * q * ww
         fz = m * g * c + m * q * uu
         my = 0.0
-        rho = density(-x[o + 1], wf)
+        rho = density(-x[o + B2_Z], wf)
         if rho > 0.0:
-            wgx, _, wgz = wind_at(x[o + 1], wf, s_mod, d_mod)
+            wgx, _, wgz = wind_at(x[o + B2_Z], wf, s_mod, d_mod)
             wbx = c * wgx - s * wgz
             wbz = s * wgx + c * wgz
             ua, wa = uu - wbx, ww - wbz
-            dwx, _, dwz = wind_rate(x[o + 1], zd, wf, s_mod, d_mod, sd_mod, dd_mod)
+            dwx, _, dwz = wind_rate(x[o + B2_Z], zd, wf, s_mod, d_mod, sd_mod, dd_mod)
             ex_ = q * wbz - (c * dwx - s * dwz)
             ez_ = -q * wbx - (s * dwx + c * dwz)
             d2 = ua * ua + wa * wa
             ad0 = (-wa * ex_ + ua * ez_) / d2 if d2 > 1e-18 else 0.0
-            wing_aero_long(ty, M.tf, M.ac, a0, da, rho, ua, wa, q, u[3 * k], ad0, W.coef, ao)
+            wing_aero_long(ty, M.tf, M.ac, a0, da, rho, ua, wa, q, u[N_CONTROLS * k + CTRL_ELEVATOR], ad0, W.coef, ao)
             fx += ao[0]
             fz += ao[1]
             my += ao[2]
@@ -118,10 +148,10 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
         bv[k, 0] = fx
         bv[k, 1] = fz
         bv[k, 2] = my
-    base = 6 * nw
+    base = B2_SIZE * nw
     for j in range(nn):
-        o = base + 4 * j
-        dx[o], dx[o + 1] = x[o + 2], x[o + 3]
+        o = base + N2_SIZE * j
+        dx[o + N2_POS], dx[o + N2_POS + 1] = x[o + N2_VEL], x[o + N2_VEL + 1]
         mn = M.node_mass[j]
         b = nw + j
         D[b, 0, 0] = mn
@@ -133,7 +163,7 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
         ir, is_ = M.ei[e, 0], M.ei[e, 1]
         nr = _end_kinematics2(kr, ir, M.ea[e, 0], x, M.fixed, nw, Tr, er)
         ns = _end_kinematics2(ks, is_, M.ea[e, 1], x, M.fixed, nw, Ts, es)
-        l0, mu, EA, DA, dia = M.ef[e, 0], M.ef[e, 1], M.ef[e, 2], M.ef[e, 3], M.ef[e, 4]
+        l0, mu, EA, DA, dia = M.ef[e, EF_L0], M.ef[e, EF_MU], M.ef[e, EF_EA], M.ef[e, EF_DA], M.ef[e, EF_DIAMETER]
         lx, lz = es[0] - er[0], es[1] - er[1]
         ln = math.sqrt(lx * lx + lz * lz)
         if ln > 1e-9:
@@ -181,14 +211,14 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
         frz += sig * uz
         fsx -= sig * ux
         fsz -= sig * uz
-        br = _block_of(kr, ir, nw)
-        bs = _block_of(ks, is_, nw)
+        br = block_of(kr, ir, nw)
+        bs = block_of(ks, is_, nw)
         if br >= 0:
             _add_end_force2(bv, br, nr, Tr, frx, frz)
-            _add_const_mass(D, br, nr, M.ekd, e, 0, 2.0 * m6)
+            add_const_mass(D, br, nr, M.ekd, e, 0, 2.0 * m6)
         if bs >= 0:
             _add_end_force2(bv, bs, ns, Ts, fsx, fsz)
-            _add_const_mass(D, bs, ns, M.ekd, e, 1, 2.0 * m6)
+            add_const_mass(D, bs, ns, M.ekd, e, 1, 2.0 * m6)
         ch = M.echild[e]
         if ch == 0:
             _add_mass2(U[br], nr, Tr, ns, Ts, m6)
@@ -197,9 +227,9 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
     if not tree_solve(D, U, W.Y, W.piv, bv, M.order, M.parent, M.bsz):
         return 1
     for k in range(nw):
-        o = 6 * k + 3
+        o = B2_SIZE * k + B2_U
         dx[o], dx[o + 1], dx[o + 2] = bv[k, 0], bv[k, 1], bv[k, 2]
     for j in range(nn):
-        o = base + 4 * j + 2
+        o = base + N2_SIZE * j + N2_VEL
         dx[o], dx[o + 1] = bv[nw + j, 0], bv[nw + j, 1]
     return 0

@@ -1,26 +1,48 @@
-"""Right-hand side of the 3D model: wings (rigid bodies), free cable nodes and truss elements.
+"""Right-hand side of the 3D model: rigid bodies, free cable nodes and truss elements.
 
-Implements docs/model.md: assembly of eq. (25) M v' = f + h - D^T sigma into blocks (6 dof per wing,
+Implements docs/model.md: assembly of eq. (25) M v' = f + h - D^T sigma into blocks (6 dof per body,
 3 per free node) and its O(N) solution by block elimination along the tree the elements form
 (``order`` lists the blocks children-first, ``parent`` the one block each is coupled to later).
 
-Switches are arguments whose *type* selects the compiled path: ``sag`` is None (plain tension-only
-truss) or any float64 array (sag correction on); ``caero`` is None (no cable aerodynamics) or
-float64[2] = (C_N0, C_T0). numba prunes the ``is None`` branches at compile time, so a switched-off
-part costs nothing at run time.
+The external loads on each body come from the vehicle the model names (``kernels/dispatch.py``:
+wing aerodynamics, or the rotorcraft's rotors), so this module imports no vehicle. The switches ``sag``
+(None: plain tension-only truss) and ``caero`` (None: no cable aerodynamics) are passed as arguments whose
+*type* selects the compiled path; numba prunes the ``is None`` branches, so a switched-off part costs nothing.
 """
 
 import math
 
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_at, wind_rate
+from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_at
 from laddermill_gym.kernels.cable import aero_load, lateral_elongation, tension_plain, tension_sag
-from laddermill_gym.kernels.rigid.aero import wing_aero
+from laddermill_gym.kernels.contract import (
+    B3_POS,
+    B3_QUAT,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
+    EF_DA,
+    EF_DIAMETER,
+    EF_EA,
+    EF_L0,
+    EF_MU,
+    END_NODE,
+    END_WING,
+    GL_GRAVITY,
+    N3_POS,
+    N3_SIZE,
+    N3_VEL,
+    TF_JXX,
+    TF_JXZ,
+    TF_JYY,
+    TF_JZZ,
+    TF_MASS,
+    TM_DT,
+    TM_T0,
+)
+from laddermill_gym.kernels.dispatch import body_loads
 from laddermill_gym.kernels.small import lu_factor, lu_solve_cols, lu_solve_vec, quat_rotation
-from laddermill_gym.rotorcraft.craft_kernels import craft_loads
-
-END_WING, END_NODE, END_FIXED = 0, 1, 2
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
@@ -28,17 +50,17 @@ def _end_kinematics(kind, idx, att, x, Rw, fixed, nw, T, ev):
     """Position ev[0:3], velocity ev[3:6] and velocity-quadratic acceleration ev[6:9] (global) of an
     element end, and its 3 x nb velocity transformation T (eq. 13). Returns the block size (0: fixed)."""
     if kind == END_WING:
-        o = 13 * idx
+        o = B3_SIZE * idx
         R = Rw[idx]
         ax, ay, az = att[0], att[1], att[2]
-        vx, vy, vz = x[o + 7], x[o + 8], x[o + 9]
-        p, q, r = x[o + 10], x[o + 11], x[o + 12]
+        vx, vy, vz = x[o + B3_VEL], x[o + B3_VEL + 1], x[o + B3_VEL + 2]
+        p, q, r = x[o + B3_RATE], x[o + B3_RATE + 1], x[o + B3_RATE + 2]
         # body velocity of the attachment point and w x (v + w x a)
         wax, way, waz = q * az - r * ay, r * ax - p * az, p * ay - q * ax
         bx, by, bz = vx + wax, vy + way, vz + waz
         cx, cy, cz = q * bz - r * by, r * bx - p * bz, p * by - q * bx
         for i in range(3):
-            ev[i] = x[o + i] + R[i, 0] * ax + R[i, 1] * ay + R[i, 2] * az
+            ev[i] = x[o + B3_POS + i] + R[i, 0] * ax + R[i, 1] * ay + R[i, 2] * az
             ev[3 + i] = R[i, 0] * bx + R[i, 1] * by + R[i, 2] * bz
             ev[6 + i] = R[i, 0] * cx + R[i, 1] * cy + R[i, 2] * cz
             T[i, 0] = R[i, 0]
@@ -50,10 +72,10 @@ def _end_kinematics(kind, idx, att, x, Rw, fixed, nw, T, ev):
             T[i, 5] = R[i, 1] * ax - R[i, 0] * ay
         return 6
     if kind == END_NODE:
-        o = 13 * nw + 6 * idx
+        o = B3_SIZE * nw + N3_SIZE * idx
         for i in range(3):
-            ev[i] = x[o + i]
-            ev[3 + i] = x[o + 3 + i]
+            ev[i] = x[o + N3_POS + i]
+            ev[3 + i] = x[o + N3_VEL + i]
             ev[6 + i] = 0.0
             for j in range(3):
                 T[i, j] = 1.0 if i == j else 0.0
@@ -81,7 +103,7 @@ def _add_mass(A, nb1, T1, nb2, T2, m):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def _add_const_mass(D, blk, nb, ekd, e, end, m):
+def add_const_mass(D, blk, nb, ekd, e, end, m):
     """D[blk] += m T^T T, with T^T T of the element end precomputed (it does not depend on the rotation)."""
     for i in range(nb):
         for j in range(nb):
@@ -89,7 +111,7 @@ def _add_const_mass(D, blk, nb, ekd, e, end, m):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def _block_of(kind, idx, nw):
+def block_of(kind, idx, nw):
     if kind == END_WING:
         return idx
     if kind == END_NODE:
@@ -188,21 +210,19 @@ def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def rhs3d(t, x, u, dx, M, W, sag, caero, craft=None):
-    """State derivative dx of the 3D model at time t, state x, controls u (3 per wing).
+def rhs3d(t, x, u, dx, M, W, sag, caero, vehicle):
+    """State derivative dx of the 3D model at time t, state x, controls u (the vehicle's, per body).
 
-    M: packed model (simulator.pack_model), W: workspace (simulator.make_workspace). Element tensions
-    [N] are left in W.tension. ``craft`` None: wings with their aerodynamics; otherwise body 0 is Roberts'
-    rotorcraft and craft = (cp, rp, cout, scratch) as in kernels/craft.py (compile-time choice).
-    Returns 0, or 1 if the mass matrix is singular.
+    M: packed model (``kernels/contract.py``), W: workspace. Element tensions [N] are left in W.tension.
+    ``sag``, ``caero`` and ``vehicle`` are the model's fields, passed separately so that their types select
+    the compiled path. Returns 0, or 1 if the mass matrix is singular.
     """
     nw = M.wtype.size
     nn = M.node_mass.size
     ne = M.ef.shape[0]
-    g = M.glob[0]
-    a0, da = M.glob[3], M.glob[4]
+    g = M.glob[GL_GRAVITY]
     wf = M.wf
-    s_mod, d_mod, sd_mod, dd_mod = modulation(t, M.tmod[0], M.tmod[1], M.ms, M.md)
+    s_mod, d_mod, sd_mod, dd_mod = modulation(t, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
     D, U, bv = W.D, W.U, W.bv
     nbk = nw + nn
     for b in range(nbk):
@@ -211,26 +231,26 @@ def rhs3d(t, x, u, dx, M, W, sag, caero, craft=None):
             for j in range(6):
                 D[b, i, j] = 0.0
                 U[b, i, j] = 0.0
-    ao = W.aout
-    # ---- wings: kinematics, inertia, gravity, aerodynamics
+    # ---- bodies: kinematics, inertia, gravity, the vehicle's loads
     for k in range(nw):
-        o = 13 * k
+        o = B3_SIZE * k
         R = W.Rw[k]
-        q0, q1, q2, q3 = x[o + 3], x[o + 4], x[o + 5], x[o + 6]
+        oq, ov, orr = o + B3_QUAT, o + B3_VEL, o + B3_RATE
+        q0, q1, q2, q3 = x[oq], x[oq + 1], x[oq + 2], x[oq + 3]
         quat_rotation(q0, q1, q2, q3, R)
-        vx, vy, vz = x[o + 7], x[o + 8], x[o + 9]
-        p, q, r = x[o + 10], x[o + 11], x[o + 12]
+        vx, vy, vz = x[ov], x[ov + 1], x[ov + 2]
+        p, q, r = x[orr], x[orr + 1], x[orr + 2]
         xd = R[0, 0] * vx + R[0, 1] * vy + R[0, 2] * vz
         yd = R[1, 0] * vx + R[1, 1] * vy + R[1, 2] * vz
         zd = R[2, 0] * vx + R[2, 1] * vy + R[2, 2] * vz
-        dx[o], dx[o + 1], dx[o + 2] = xd, yd, zd
-        dx[o + 3] = 0.5 * (-q1 * p - q2 * q - q3 * r)
-        dx[o + 4] = 0.5 * (q0 * p + q2 * r - q3 * q)
-        dx[o + 5] = 0.5 * (q0 * q + q3 * p - q1 * r)
-        dx[o + 6] = 0.5 * (q0 * r + q1 * q - q2 * p)
+        dx[o + B3_POS], dx[o + B3_POS + 1], dx[o + B3_POS + 2] = xd, yd, zd
+        dx[oq] = 0.5 * (-q1 * p - q2 * q - q3 * r)
+        dx[oq + 1] = 0.5 * (q0 * p + q2 * r - q3 * q)
+        dx[oq + 2] = 0.5 * (q0 * q + q3 * p - q1 * r)
+        dx[oq + 3] = 0.5 * (q0 * r + q1 * q - q2 * p)
         ty = M.wtype[k]
-        m = M.tf[ty, 0]
-        jxx, jyy, jzz, jxz = M.tf[ty, 1], M.tf[ty, 2], M.tf[ty, 3], M.tf[ty, 4]
+        m = M.tf[ty, TF_MASS]
+        jxx, jyy, jzz, jxz = M.tf[ty, TF_JXX], M.tf[ty, TF_JYY], M.tf[ty, TF_JZZ], M.tf[ty, TF_JXZ]
         Dk = D[k]
         Dk[0, 0] = m
         Dk[1, 1] = m
@@ -250,41 +270,14 @@ def rhs3d(t, x, u, dx, M, W, sag, caero, craft=None):
         mx = -(q * hz - r * hy)
         my = -(r * hx - p * hz)
         mz = -(p * hy - q * hx)
-        rho = density(-x[o + 2], wf)
-        if craft is not None:
-            craft_loads(x, o, R, u, wf, s_mod, d_mod, craft)
-            co = craft[2]
-            fx += co[0]
-            fy += co[1]
-            fz += co[2]
-            mx += co[3]
-            my += co[4]
-            mz += co[5]
-        elif rho > 0.0:
-            wgx, wgy, wgz = wind_at(x[o + 2], wf, s_mod, d_mod)
-            wbx = R[0, 0] * wgx + R[1, 0] * wgy + R[2, 0] * wgz
-            wby = R[0, 1] * wgx + R[1, 1] * wgy + R[2, 1] * wgz
-            wbz = R[0, 2] * wgx + R[1, 2] * wgy + R[2, 2] * wgz
-            ua, va, wa = vx - wbx, vy - wby, vz - wbz
-            # known part of the alpha rate: g . (w x w_b - R^T dw/dt)
-            dwx, dwy, dwz = wind_rate(x[o + 2], zd, wf, s_mod, d_mod, sd_mod, dd_mod)
-            ex_ = (q * wbz - r * wby) - (R[0, 0] * dwx + R[1, 0] * dwy + R[2, 0] * dwz)
-            ez_ = (p * wby - q * wbx) - (R[0, 2] * dwx + R[1, 2] * dwy + R[2, 2] * dwz)
-            d2 = ua * ua + wa * wa
-            ad0 = (-wa * ex_ + ua * ez_) / d2 if d2 > 1e-18 else 0.0
-            wing_aero(ty, M.tf, M.ac, a0, da, rho, ua, va, wa, p, q, r,
-                      u[3 * k], u[3 * k + 1], u[3 * k + 2], ad0, W.coef, ao)
-            fx += ao[0]
-            fy += ao[1]
-            fz += ao[2]
-            mx += ao[3]
-            my += ao[4]
-            mz += ao[5]
-            for i in range(6):
-                ki = ao[6 + i]
-                if ki != 0.0:
-                    for j in range(3):
-                        Dk[i, j] -= ki * ao[12 + j]
+        env = (s_mod, d_mod, sd_mod, dd_mod, zd)
+        lx, ly, lz, lmx, lmy, lmz = body_loads(vehicle, k, t, x, R, u, M, W, Dk, env)
+        fx += lx
+        fy += ly
+        fz += lz
+        mx += lmx
+        my += lmy
+        mz += lmz
         bv[k, 0] = fx
         bv[k, 1] = fy
         bv[k, 2] = fz
@@ -292,10 +285,10 @@ def rhs3d(t, x, u, dx, M, W, sag, caero, craft=None):
         bv[k, 4] = my
         bv[k, 5] = mz
     # ---- free nodes: kinematics and lumped mass
-    base = 13 * nw
+    base = B3_SIZE * nw
     for j in range(nn):
-        o = base + 6 * j
-        dx[o], dx[o + 1], dx[o + 2] = x[o + 3], x[o + 4], x[o + 5]
+        o = base + N3_SIZE * j
+        dx[o + N3_POS], dx[o + N3_POS + 1], dx[o + N3_POS + 2] = x[o + N3_VEL], x[o + N3_VEL + 1], x[o + N3_VEL + 2]
         mn = M.node_mass[j]
         b = nw + j
         D[b, 0, 0] = mn
@@ -309,7 +302,7 @@ def rhs3d(t, x, u, dx, M, W, sag, caero, craft=None):
         ir, is_ = M.ei[e, 0], M.ei[e, 1]
         nr = _end_kinematics(kr, ir, M.ea[e, 0], x, W.Rw, M.fixed, nw, Tr, er)
         ns = _end_kinematics(ks, is_, M.ea[e, 1], x, W.Rw, M.fixed, nw, Ts, es)
-        l0, mu, EA, DA, dia = M.ef[e, 0], M.ef[e, 1], M.ef[e, 2], M.ef[e, 3], M.ef[e, 4]
+        l0, mu, EA, DA, dia = M.ef[e, EF_L0], M.ef[e, EF_MU], M.ef[e, EF_EA], M.ef[e, EF_DA], M.ef[e, EF_DIAMETER]
         lx, ly, lz = es[0] - er[0], es[1] - er[1], es[2] - er[2]
         ln = math.sqrt(lx * lx + ly * ly + lz * lz)
         if ln > 1e-9:
@@ -368,14 +361,14 @@ def rhs3d(t, x, u, dx, M, W, sag, caero, craft=None):
         fsx -= sig * ux
         fsy -= sig * uy
         fsz -= sig * uz
-        br = _block_of(kr, ir, nw)
-        bs = _block_of(ks, is_, nw)
+        br = block_of(kr, ir, nw)
+        bs = block_of(ks, is_, nw)
         if br >= 0:
             _add_end_force(bv, br, nr, Tr, frx, fry, frz)
-            _add_const_mass(D, br, nr, M.ekd, e, 0, 2.0 * m6)
+            add_const_mass(D, br, nr, M.ekd, e, 0, 2.0 * m6)
         if bs >= 0:
             _add_end_force(bv, bs, ns, Ts, fsx, fsy, fsz)
-            _add_const_mass(D, bs, ns, M.ekd, e, 1, 2.0 * m6)
+            add_const_mass(D, bs, ns, M.ekd, e, 1, 2.0 * m6)
         ch = M.echild[e]
         if ch == 0:
             _add_mass(U[br], nr, Tr, ns, Ts, m6)
@@ -385,11 +378,11 @@ def rhs3d(t, x, u, dx, M, W, sag, caero, craft=None):
     if not tree_solve(D, U, W.Y, W.piv, bv, M.order, M.parent, M.bsz):
         return 1
     for k in range(nw):
-        o = 13 * k + 7
+        o = B3_SIZE * k + B3_VEL
         for i in range(6):
             dx[o + i] = bv[k, i]
     for j in range(nn):
-        o = base + 6 * j + 3
+        o = base + N3_SIZE * j + N3_VEL
         b = nw + j
         dx[o] = bv[b, 0]
         dx[o + 1] = bv[b, 1]

@@ -1,0 +1,117 @@
+"""The data contract between the Python layer and the numba kernels: every packed slot and state offset by name.
+
+No other module writes a literal slot index or a ``13*k``: the kernels, the packer (``model/packing.py``) and
+the Python views all read the names below. numba treats these module globals as compile-time constants, so a
+named slot costs nothing.
+
+Packed model ``KModel`` (one per built system; arrays float64 unless said):
+
+====================  ============================================================================
+field                 content
+====================  ============================================================================
+kind                  model kind marker (a namedtuple whose *type* selects the right-hand side, see
+                      ``kernels/dispatch.py``): ``RIGID_3D`` or ``RIGID_2D`` (``kernels/rigid/kinds.py``)
+wf                    wind parameters, slots ``WF_*``
+tmod, ms, md          wind modulation: ``tmod[TM_T0]`` start [s], ``tmod[TM_DT]`` spacing [s]; speed factor [-]
+                      and direction offset [rad] samples
+glob                  global constants, slots ``GL_*``
+wtype (int64)         wing type index of each rigid body (n_bodies,)
+tf                    wing-type table (n_types, TF_SIZE), slots ``TF_*``
+ac                    aerodynamic spline coefficients (n_types, n_intervals, 4, n_columns)
+node_mass             lumped mass of each free node [kg] (n_nodes,)
+fixed                 fixed (ground) points [m] (n_fixed, 3)
+ek, ei (int64)        element end kinds (``END_*``) and indices (n_e, 2)
+ea                    body-frame attachment vectors of element ends [m] (n_e, 2, 3)
+ef                    element table (n_e, EF_SIZE), slots ``EF_*``
+ekd                   T^T T of every element end (n_e, 2, 6, 6)
+echild, order, parent, bsz (int64)  block-elimination tree (``model/packing.py``)
+sag                   None (plain tension-only truss) or float64[1] (sag correction on)
+caero                 None (no cable aerodynamics) or float64[2] = (C_N0, C_T0)
+vehicle               body-loads plug-in (``kernels/dispatch.py``): ``WING`` for winged bodies, the
+                      rotorcraft's namedtuple for Roberts' craft
+====================  ============================================================================
+
+The ``None``-or-array fields are compile-time switches: numba compiles one specialisation per combination of
+field types and prunes the switched-off code, so a part that is off costs nothing at run time.
+"""
+
+from collections import namedtuple
+
+# ------------------------------------------------------------------------------------------- state layout
+#: 3D rigid body (13): CG position (global) [m], unit quaternion body -> global, CG velocity (body) [m/s],
+#: body rates (p, q, r) [rad/s].
+B3_POS, B3_QUAT, B3_VEL, B3_RATE, B3_SIZE = 0, 3, 7, 10, 13
+#: 3D free cable node (6): position (global) [m], velocity (global) [m/s].
+N3_POS, N3_VEL, N3_SIZE = 0, 3, 6
+#: In-plane rigid body (6): x, z [m], pitch theta [rad], body velocity u, w [m/s], pitch rate q [rad/s].
+B2_X, B2_Z, B2_THETA, B2_U, B2_W, B2_Q, B2_SIZE = 0, 1, 2, 3, 4, 5, 6
+#: In-plane free node (4): x, z [m], x', z' [m/s].
+N2_POS, N2_VEL, N2_SIZE = 0, 2, 4
+#: Velocity-block sizes (degrees of freedom) of a body and a node, 3D and in-plane.
+DOF_B3, DOF_N3, DOF_B2, DOF_N2 = 6, 3, 3, 2
+
+# ------------------------------------------------------------------------------------------- controls
+#: Controls per winged body [rad]: elevator, rudder, aileron.
+CTRL_ELEVATOR, CTRL_RUDDER, CTRL_AILERON, N_CONTROLS = 0, 1, 2, 3
+
+# ------------------------------------------------------------------------------------------- wind
+#: Wind parameters ``wf``: speed at the top of the boundary layer v0 [m/s], boundary-layer height h0 [m],
+#: gradient above it v1 [1/s], power-law exponent [-], direction turn far aloft phi_inf [rad], its height h_s
+#: [m], density at h = 0 rho0 [kg/m^3], density model (``DENSITY_BAROMETRIC`` or ``DENSITY_ISA``), scale
+#: height H_b [m].
+WF_V0, WF_H0, WF_V1, WF_EXPONENT, WF_DIR_INF, WF_DIR_HEIGHT, WF_RHO0, WF_DENSITY_MODEL, WF_SCALE_HEIGHT = range(9)
+WF_SIZE = 10
+DENSITY_BAROMETRIC, DENSITY_ISA = 0.0, 1.0
+#: Wind modulation grid ``tmod``: first sample time [s], sample spacing [s].
+TM_T0, TM_DT, TM_SIZE = 0, 1, 2
+
+# ------------------------------------------------------------------------------------------- globals
+#: ``glob``: gravity [m/s^2], cable normal and tangential drag constants C_N0, C_T0 [-], first alpha of the
+#: aerodynamic tables [rad] and their spacing [rad].
+GL_GRAVITY, GL_CN0, GL_CT0, GL_ALPHA0, GL_DALPHA, GL_SIZE = 0, 1, 2, 3, 4, 8
+
+# ------------------------------------------------------------------------------------------- wing types
+#: Wing-type table ``tf``: mass [kg], inertia Jxx, Jyy, Jzz, Jxz [kg m^2], area [m^2], span [m], chord [m],
+#: aerodynamic reference point (3) and cable attachment (3) from the CG, body axes [m].
+TF_MASS, TF_JXX, TF_JYY, TF_JZZ, TF_JXZ, TF_AREA, TF_SPAN, TF_CHORD = range(8)
+TF_RREF, TF_ATTACH, TF_SIZE = 8, 11, 16
+
+# ------------------------------------------------------------------------------------------- elements
+#: Element table ``ef``: unstretched length [m], mass per length [kg/m], axial stiffness EA [N], Voigt
+#: damping DA [N s], diameter [m].
+EF_L0, EF_MU, EF_EA, EF_DA, EF_DIAMETER, EF_SIZE = 0, 1, 2, 3, 4, 5
+#: End kinds of an element (``ek``).
+END_WING, END_NODE, END_FIXED = 0, 1, 2
+
+# ------------------------------------------------------------------------------------------- loads output
+#: Wing aerodynamics output ``W.aout`` (3D): force (3) [N] and moment (3) [N m] in body axes, the
+#: alpha-rate coefficients of the six equations (6) and the direction g along which they act (3).
+AO_FORCE, AO_MOMENT, AO_KAPPA, AO_G, AO_SIZE = 0, 3, 6, 12, 15
+#: In-plane wing aerodynamics output: fx, fz, my, the three alpha-rate coefficients and g (x, z).
+AO2_FORCE_X, AO2_FORCE_Z, AO2_MOMENT, AO2_KAPPA, AO2_G = 0, 1, 2, 3, 6
+
+# ------------------------------------------------------------------------------------------- observation
+#: Observation of one winged body (``kernels/rigid/observe.py``; names and units in ``envs/observation.py``):
+#: CG offset from the nominal position (global, 3) [m], CG velocity (global, 3) [m/s], 3-2-1 Euler angles
+#: roll, pitch, yaw (3) [rad], body rates (3) [rad/s], angle of attack [rad], sideslip [rad], tension of the
+#: element below the body [N].
+OBS_OFFSET, OBS_VELOCITY, OBS_EULER, OBS_RATES, OBS_ALPHA, OBS_BETA, OBS_TENSION, OBS_SIZE = 0, 3, 6, 9, 12, 13, 14, 15
+
+# ------------------------------------------------------------------------------------------- limits
+#: Integrator safety limits ``limits``: largest speed [m/s], largest angular rate [rad/s].
+LIM_SPEED, LIM_RATE, LIM_SIZE = 0, 1, 2
+
+# ------------------------------------------------------------------------------------------- records
+KModel = namedtuple(
+    "KModel",
+    ["kind", "wf", "tmod", "ms", "md", "glob", "wtype", "tf", "ac", "node_mass", "fixed",
+     "ek", "ei", "ea", "ef", "ekd", "echild", "order", "parent", "bsz", "sag", "caero", "vehicle"],
+)
+#: Kernel workspace: block matrices and pivots of the elimination, scratch of the element ends, tensions [N]
+#: (``tension``), body rotations (``Rw``), aerodynamic scratch, the vehicle's outputs and scratch (``vout``,
+#: ``vscratch``: per copy, so batched copies never share them) and the integrators' stage vectors.
+KWork = namedtuple(
+    "KWork",
+    ["D", "U", "Y", "piv", "bv", "Rw", "tension", "Tr", "Ts", "er", "es", "coef", "aout", "vout", "vscratch",
+     "k1", "k2", "k3", "k4", "k5", "k6", "k7", "xt", "xp"],
+)

@@ -1,0 +1,88 @@
+"""Compile-time dispatch of the kernels on the model kind and on the vehicle (the body-loads plug-in).
+
+A model kind (rigid 3D, rigid in-plane; room for point masses) and a vehicle (winged body, rotorcraft) are
+small namedtuples whose *class* names them. Their modules register implementations here:
+
+* :func:`register_kind` (marker class, rhs, check): ``rhs(kind, t, x, u, dx, M, W) -> status`` writes the
+  state derivative; ``check(kind, x, M, limits) -> status`` renormalises and checks a state after a step.
+* :func:`register_vehicle` (vehicle class, loads): ``loads(vehicle, k, t, x, R, u, M, W, Dk, env) ->
+  (fx, fy, fz, mx, my, mz)`` gives the external loads on rigid body k (body axes, about the CG) and may add
+  apparent-mass terms to its diagonal block Dk; ``env`` = (s_mod, d_mod, sd_mod, dd_mod, zd) is the wind
+  modulation, its rates and the body's vertical speed.
+
+The generic kernels call :func:`model_rhs`, :func:`model_check` and :func:`body_loads`; numba resolves each
+call by the argument's type when it compiles, so no branch is left at run time, a scene compiles only the
+code it uses, adding a kind or a vehicle changes no existing kernel signature, and the compiled functions
+cache across processes (a jitted callable passed as an argument would be recompiled in every process).
+The generic rigid-body kernels import this module, never a vehicle.
+"""
+
+from numba.core.errors import TypingError
+from numba.extending import overload
+
+_RHS: dict[type, object] = {}
+_CHECK: dict[type, object] = {}
+_LOADS: dict[type, object] = {}
+
+
+def register_kind(marker: type, rhs, check) -> None:
+    """Register the right-hand side and the post-step check of a model kind (``marker`` namedtuple class)."""
+    _RHS[marker] = rhs
+    _CHECK[marker] = check
+
+
+def register_vehicle(marker: type, loads) -> None:
+    """Register the body-loads function of a vehicle (``marker`` namedtuple class)."""
+    _LOADS[marker] = loads
+
+
+def _lookup(table: dict, typ, what: str):
+    cls = getattr(typ, "instance_class", None)
+    if cls not in table:
+        raise TypingError(f"no {what} registered for {typ} (known: {[c.__name__ for c in table]})")
+    return table[cls]
+
+
+def model_rhs(kind, t, x, u, dx, M, W):
+    """State derivative of model kind ``kind`` (jitted code only)."""
+    raise NotImplementedError("model_rhs is resolved inside numba kernels")
+
+
+def model_check(kind, x, M, limits):
+    """Post-step normalisation and check of model kind ``kind`` (jitted code only)."""
+    raise NotImplementedError("model_check is resolved inside numba kernels")
+
+
+def body_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
+    """External loads on rigid body k from its vehicle (jitted code only)."""
+    raise NotImplementedError("body_loads is resolved inside numba kernels")
+
+
+@overload(model_rhs, inline="always")
+def _model_rhs(kind, t, x, u, dx, M, W):
+    impl = _lookup(_RHS, kind, "model kind right-hand side")
+
+    def f(kind, t, x, u, dx, M, W):
+        return impl(kind, t, x, u, dx, M, W)
+
+    return f
+
+
+@overload(model_check, inline="always")
+def _model_check(kind, x, M, limits):
+    impl = _lookup(_CHECK, kind, "model kind check")
+
+    def f(kind, x, M, limits):
+        return impl(kind, x, M, limits)
+
+    return f
+
+
+@overload(body_loads, inline="always")
+def _body_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
+    impl = _lookup(_LOADS, vehicle, "vehicle body loads")
+
+    def f(vehicle, k, t, x, R, u, M, W, Dk, env):
+        return impl(vehicle, k, t, x, R, u, M, W, Dk, env)
+
+    return f

@@ -1,0 +1,167 @@
+"""The rigid model kinds (3D and in-plane) and the winged-body vehicle, registered with ``kernels/dispatch.py``.
+
+``RIGID_3D`` and ``RIGID_2D`` are the ``kind`` of a packed rigid model (``model/packing.py`` sets it);
+``WING`` is the ``vehicle`` of a model whose bodies are laddermill wings (quasi-steady aerodynamics from the
+wing type's tables). Another vehicle (the rotorcraft) registers its own loads from its own package.
+"""
+
+import math
+from collections import namedtuple
+
+import numpy as np
+from numba import njit
+
+from laddermill_gym.atmosphere.wind_kernels import density, wind_at, wind_rate
+from laddermill_gym.kernels.contract import (
+    AO_FORCE,
+    AO_G,
+    AO_KAPPA,
+    AO_MOMENT,
+    B2_Q,
+    B2_SIZE,
+    B2_U,
+    B2_W,
+    B3_POS,
+    B3_QUAT,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
+    CTRL_AILERON,
+    CTRL_ELEVATOR,
+    CTRL_RUDDER,
+    GL_ALPHA0,
+    GL_DALPHA,
+    LIM_RATE,
+    LIM_SPEED,
+    N2_SIZE,
+    N2_VEL,
+    N3_SIZE,
+    N3_VEL,
+    N_CONTROLS,
+)
+from laddermill_gym.kernels.dispatch import register_kind, register_vehicle
+from laddermill_gym.kernels.rigid.aero import wing_aero
+from laddermill_gym.kernels.rigid.rhs2d import rhs2d
+from laddermill_gym.kernels.rigid.rhs3d import rhs3d
+
+_FM = {"contract", "reassoc", "nsz", "arcp"}
+#: Status codes of a post-step check (the integrators' codes).
+OK, NONFINITE, LIMIT = 0, 2, 3
+
+# The markers hold a small array rather than a scalar: numba's parallel (prange) lowering passes the packed
+# model to its worker function field by field and accepts arrays, not scalars, inside a nested tuple.
+Rigid3D = namedtuple("Rigid3D", ["dim"])
+Rigid2D = namedtuple("Rigid2D", ["dim"])
+WingVehicle = namedtuple("WingVehicle", ["n_controls"])
+#: Kind markers (``dim``: [3.0] or [2.0]) and the winged-body vehicle (``n_controls``: [3.0] per body).
+RIGID_3D = Rigid3D(np.array([3.0]))
+RIGID_2D = Rigid2D(np.array([2.0]))
+WING = WingVehicle(np.array([float(N_CONTROLS)]))
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def wing_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
+    """Aerodynamic force and moment (body axes, about the CG) on wing k, and its alpha-rate (apparent mass)
+    terms added to the diagonal block Dk. Zero in vacuum. ``env`` = (s_mod, d_mod, sd_mod, dd_mod, zd)."""
+    s_mod, d_mod, sd_mod, dd_mod, zd = env
+    o = B3_SIZE * k
+    wf = M.wf
+    rho = density(-x[o + B3_POS + 2], wf)
+    if not rho > 0.0:
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    ov, orr = o + B3_VEL, o + B3_RATE
+    vx, vy, vz = x[ov], x[ov + 1], x[ov + 2]
+    p, q, r = x[orr], x[orr + 1], x[orr + 2]
+    wgx, wgy, wgz = wind_at(x[o + B3_POS + 2], wf, s_mod, d_mod)
+    wbx = R[0, 0] * wgx + R[1, 0] * wgy + R[2, 0] * wgz
+    wby = R[0, 1] * wgx + R[1, 1] * wgy + R[2, 1] * wgz
+    wbz = R[0, 2] * wgx + R[1, 2] * wgy + R[2, 2] * wgz
+    ua, va, wa = vx - wbx, vy - wby, vz - wbz
+    # known part of the alpha rate: g . (w x w_b - R^T dw/dt)
+    dwx, dwy, dwz = wind_rate(x[o + B3_POS + 2], zd, wf, s_mod, d_mod, sd_mod, dd_mod)
+    ex_ = (q * wbz - r * wby) - (R[0, 0] * dwx + R[1, 0] * dwy + R[2, 0] * dwz)
+    ez_ = (p * wby - q * wbx) - (R[0, 2] * dwx + R[1, 2] * dwy + R[2, 2] * dwz)
+    d2 = ua * ua + wa * wa
+    ad0 = (-wa * ex_ + ua * ez_) / d2 if d2 > 1e-18 else 0.0
+    ao = W.aout
+    c = N_CONTROLS * k
+    wing_aero(M.wtype[k], M.tf, M.ac, M.glob[GL_ALPHA0], M.glob[GL_DALPHA], rho, ua, va, wa, p, q, r,
+              u[c + CTRL_ELEVATOR], u[c + CTRL_RUDDER], u[c + CTRL_AILERON], ad0, W.coef, ao)
+    for i in range(6):
+        ki = ao[AO_KAPPA + i]
+        if ki != 0.0:
+            for j in range(3):
+                Dk[i, j] -= ki * ao[AO_G + j]
+    return (ao[AO_FORCE], ao[AO_FORCE + 1], ao[AO_FORCE + 2], ao[AO_MOMENT], ao[AO_MOMENT + 1],
+            ao[AO_MOMENT + 2])
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def rigid3d_rhs(kind, t, x, u, dx, M, W):
+    return rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def rigid2d_rhs(kind, t, x, u, dx, M, W):
+    return rhs2d(t, x, u, dx, M, W, M.sag, M.caero)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def _all_finite(x):
+    for i in range(x.size):
+        if not math.isfinite(x[i]):
+            return False
+    return True
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def rigid3d_check(kind, x, M, limits):
+    """Renormalise every body's quaternion and check speeds [m/s] and rates [rad/s] against ``limits``."""
+    nw = M.wtype.size
+    nn = M.node_mass.size
+    vmax2 = limits[LIM_SPEED] * limits[LIM_SPEED]
+    wmax2 = limits[LIM_RATE] * limits[LIM_RATE]
+    if not _all_finite(x):
+        return NONFINITE
+    for k in range(nw):
+        o = B3_SIZE * k
+        oq, ov, orr = o + B3_QUAT, o + B3_VEL, o + B3_RATE
+        n = math.sqrt(x[oq] ** 2 + x[oq + 1] ** 2 + x[oq + 2] ** 2 + x[oq + 3] ** 2)
+        for i in range(4):
+            x[oq + i] /= n
+        if x[ov] ** 2 + x[ov + 1] ** 2 + x[ov + 2] ** 2 > vmax2:
+            return LIMIT
+        if x[orr] ** 2 + x[orr + 1] ** 2 + x[orr + 2] ** 2 > wmax2:
+            return LIMIT
+    base = B3_SIZE * nw
+    for j in range(nn):
+        o = base + N3_SIZE * j + N3_VEL
+        if x[o] ** 2 + x[o + 1] ** 2 + x[o + 2] ** 2 > vmax2:
+            return LIMIT
+    return OK
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def rigid2d_check(kind, x, M, limits):
+    """Check in-plane speeds [m/s] and pitch rates [rad/s] against ``limits``."""
+    nw = M.wtype.size
+    nn = M.node_mass.size
+    vmax2 = limits[LIM_SPEED] * limits[LIM_SPEED]
+    wmax2 = limits[LIM_RATE] * limits[LIM_RATE]
+    if not _all_finite(x):
+        return NONFINITE
+    for k in range(nw):
+        o = B2_SIZE * k
+        if x[o + B2_U] ** 2 + x[o + B2_W] ** 2 > vmax2 or x[o + B2_Q] ** 2 > wmax2:
+            return LIMIT
+    base = B2_SIZE * nw
+    for j in range(nn):
+        o = base + N2_SIZE * j + N2_VEL
+        if x[o] ** 2 + x[o + 1] ** 2 > vmax2:
+            return LIMIT
+    return OK
+
+
+register_kind(Rigid3D, rigid3d_rhs, rigid3d_check)
+register_kind(Rigid2D, rigid2d_rhs, rigid2d_check)
+register_vehicle(WingVehicle, wing_loads)
