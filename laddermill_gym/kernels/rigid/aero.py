@@ -10,6 +10,23 @@ import math
 
 from numba import njit
 
+from laddermill_gym.kernels.contract import (
+    AO2_FORCE_X,
+    AO2_FORCE_Z,
+    AO2_G,
+    AO2_KAPPA,
+    AO2_MOMENT,
+    AO_FORCE,
+    AO_G,
+    AO_KAPPA,
+    AO_MOMENT,
+    AO_SIZE,
+    TF_AREA,
+    TF_CHORD,
+    TF_RREF,
+    TF_SPAN,
+)
+
 # column indices (must match params.AERO_COLUMNS)
 CL, CD, CM, CLQ, CLAD, CLDE, CMQ, CMAD, CMDE = 0, 1, 2, 3, 4, 5, 6, 7, 8
 CYB, CYP, CYR, CYDR, CLB, CLP, CLR, CLDA, CLDR = 9, 10, 11, 12, 13, 14, 15, 16, 17
@@ -43,14 +60,14 @@ def wing_aero(k, tf, ac, a0, da, rho, ua, va, wa, p, q, r, de, dr, dal, ad0, coe
     vector k (generalised force per rad/s of alpha rate), out[12:15] g (d alpha/d v_a, [rad s/m]).
     Everything is zero when the airspeed is below 1e-9 m/s or rho == 0.
     """
-    for j in range(15):
+    for j in range(AO_SIZE):
         out[j] = 0.0
     V2 = ua * ua + va * va + wa * wa
     if V2 < 1e-18 or rho == 0.0:
         return
     V = math.sqrt(V2)
-    S, b, c = tf[k, 5], tf[k, 6], tf[k, 7]
-    rx, ry, rz = tf[k, 8], tf[k, 9], tf[k, 10]
+    S, b, c = tf[k, TF_AREA], tf[k, TF_SPAN], tf[k, TF_CHORD]
+    rx, ry, rz = tf[k, TF_RREF], tf[k, TF_RREF + 1], tf[k, TF_RREF + 2]
     alpha = math.atan2(wa, ua)
     sb = va / V
     if sb > 1.0:
@@ -74,21 +91,21 @@ def wing_aero(k, tf, ac, a0, da, rho, ua, va, wa, p, q, r, de, dr, dal, ad0, coe
     X = qs * (cl * sa - cd * ca)
     Y = qs * cy
     Z = qs * (-cl * ca - cd * sa)
-    out[0], out[1], out[2] = X, Y, Z
-    out[3] = qs * b * cr + ry * Z - rz * Y
-    out[4] = qs * c * cm + rz * X - rx * Z
-    out[5] = qs * b * cn + rx * Y - ry * X
+    out[AO_FORCE], out[AO_FORCE + 1], out[AO_FORCE + 2] = X, Y, Z
+    out[AO_MOMENT] = qs * b * cr + ry * Z - rz * Y
+    out[AO_MOMENT + 1] = qs * c * cm + rz * X - rx * Z
+    out[AO_MOMENT + 2] = qs * b * cn + rx * Y - ry * X
     # alpha-rate pieces: force per rad/s of alpha rate, and d alpha / d v_a
     f = qs * hc * coef[CLAD]
     kx, kz = f * sa, -f * ca
-    out[6], out[7], out[8] = kx, 0.0, kz
-    out[9] = ry * kz
-    out[10] = qs * c * hc * coef[CMAD] + rz * kx - rx * kz
-    out[11] = -ry * kx
+    out[AO_KAPPA], out[AO_KAPPA + 1], out[AO_KAPPA + 2] = kx, 0.0, kz
+    out[AO_KAPPA + 3] = ry * kz
+    out[AO_KAPPA + 4] = qs * c * hc * coef[CMAD] + rz * kx - rx * kz
+    out[AO_KAPPA + 5] = -ry * kx
     d2 = ua * ua + wa * wa
     if d2 > 1e-18:
-        out[12] = -wa / d2
-        out[14] = ua / d2
+        out[AO_G] = -wa / d2
+        out[AO_G + 2] = ua / d2
 
 
 N_LONGITUDINAL = 9  # CL, CD, Cm and their rate and elevator derivatives come first in the table
@@ -101,14 +118,14 @@ def wing_aero_long(k, tf, ac, a0, da, rho, ua, wa, q, de, ad0, coef, out):
     Writes out[0] X, out[1] Z [N], out[2] pitch moment about the CG [N m], out[3:6] alpha-rate vector
     (X, Z, M per rad/s) and out[6:8] g = d alpha/d(u_a, w_a) [rad s/m]; zero below 1e-9 m/s airspeed.
     """
-    for j in range(8):
+    for j in range(AO2_G + 2):
         out[j] = 0.0
     V2 = ua * ua + wa * wa
     if V2 < 1e-18 or rho == 0.0:
         return
     V = math.sqrt(V2)
-    S, c = tf[k, 5], tf[k, 7]
-    rx, rz = tf[k, 8], tf[k, 10]
+    S, c = tf[k, TF_AREA], tf[k, TF_CHORD]
+    rx, rz = tf[k, TF_RREF], tf[k, TF_RREF + 2]
     alpha = math.atan2(wa, ua)
     for j in range(N_LONGITUDINAL):
         coef[j] = 0.0
@@ -122,11 +139,11 @@ def wing_aero_long(k, tf, ac, a0, da, rho, ua, wa, q, de, ad0, coef, out):
     sa, ca = math.sin(alpha), math.cos(alpha)
     X = qs * (cl * sa - cd * ca)
     Z = qs * (-cl * ca - cd * sa)
-    out[0], out[1] = X, Z
-    out[2] = qs * c * cm + rz * X - rx * Z
+    out[AO2_FORCE_X], out[AO2_FORCE_Z] = X, Z
+    out[AO2_MOMENT] = qs * c * cm + rz * X - rx * Z
     f = qs * hc * coef[CLAD]
     kx, kz = f * sa, -f * ca
-    out[3], out[4] = kx, kz
-    out[5] = qs * c * hc * coef[CMAD] + rz * kx - rx * kz
-    out[6] = -wa / V2
-    out[7] = ua / V2
+    out[AO2_KAPPA], out[AO2_KAPPA + 1] = kx, kz
+    out[AO2_KAPPA + 2] = qs * c * hc * coef[CMAD] + rz * kx - rx * kz
+    out[AO2_G] = -wa / V2
+    out[AO2_G + 1] = ua / V2
