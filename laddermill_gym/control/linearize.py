@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import control
 import numpy as np
 
+from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_RATE, B3_SIZE, B3_VEL, N3_SIZE
 from laddermill_gym.model.params import N_CONTROLS, Assembly
 from laddermill_gym.sim.simulator import Simulator
 
@@ -130,15 +131,15 @@ def minimal_from_full(asm: Assembly, x: np.ndarray) -> np.ndarray:
     _check_3d(asm)
     x = np.asarray(x, dtype=float)
     nw, nn = asm.n_wings, asm.n_nodes
-    w = x[: 13 * nw].reshape(nw, 13)
-    euler = _euler_from_quaternions(w[:, 3:7])
+    w = x[: B3_SIZE * nw].reshape(nw, B3_SIZE)
+    euler = _euler_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
     R = _rotations(euler)
     z = np.empty((nw, _WM))
-    z[:, 0:3] = w[:, 0:3]
+    z[:, 0:3] = w[:, B3_POS: B3_POS + 3]
     z[:, 3:6] = euler
-    z[:, 6:9] = np.einsum("nij,nj->ni", R, w[:, 7:10])
-    z[:, 9:12] = w[:, 10:13]
-    return np.concatenate([z.reshape(-1), x[13 * nw: 13 * nw + 6 * nn]])
+    z[:, 6:9] = np.einsum("nij,nj->ni", R, w[:, B3_VEL: B3_VEL + 3])
+    z[:, 9:12] = w[:, B3_RATE: B3_RATE + 3]
+    return np.concatenate([z.reshape(-1), x[B3_SIZE * nw: B3_SIZE * nw + N3_SIZE * nn]])
 
 
 def full_from_minimal(asm: Assembly, z: np.ndarray) -> np.ndarray:
@@ -148,11 +149,11 @@ def full_from_minimal(asm: Assembly, z: np.ndarray) -> np.ndarray:
     nw, nn = asm.n_wings, asm.n_nodes
     zw = z[: _WM * nw].reshape(nw, _WM)
     R = _rotations(zw[:, 3:6])
-    w = np.empty((nw, 13))
-    w[:, 0:3] = zw[:, 0:3]
-    w[:, 3:7] = _quaternions(zw[:, 3:6])
-    w[:, 7:10] = np.einsum("nji,nj->ni", R, zw[:, 6:9])  # R^T v_global
-    w[:, 10:13] = zw[:, 9:12]
+    w = np.empty((nw, B3_SIZE))
+    w[:, B3_POS: B3_POS + 3] = zw[:, 0:3]
+    w[:, B3_QUAT: B3_QUAT + 4] = _quaternions(zw[:, 3:6])
+    w[:, B3_VEL: B3_VEL + 3] = np.einsum("nji,nj->ni", R, zw[:, 6:9])  # R^T v_global
+    w[:, B3_RATE: B3_RATE + 3] = zw[:, 9:12]
     return np.concatenate([w.reshape(-1), z[_WM * nw: _WM * nw + _NM * nn]])
 
 
@@ -161,28 +162,30 @@ def minimal_derivative(asm: Assembly, x: np.ndarray, dx: np.ndarray) -> np.ndarr
 
     Notes
     -----
-    Per wing: position' = dx[0:3]; (phi, theta, psi)' = A(phi, theta) omega with
+    Per wing: position' = dx[B3_POS: B3_POS + 3]; (phi, theta, psi)' = A(phi, theta) omega with
     A = [[1, sin(phi) tan(theta), cos(phi) tan(theta)], [0, cos(phi), -sin(phi)],
-    [0, sin(phi)/cos(theta), cos(phi)/cos(theta)]]; v_global' = R (v' + omega x v); omega' = dx[10:13].
+    [0, sin(phi)/cos(theta), cos(phi)/cos(theta)]]; v_global' = R (v' + omega x v);
+    omega' = dx[B3_RATE: B3_RATE + 3].
     """
     _check_3d(asm)
     x, dx = np.asarray(x, dtype=float), np.asarray(dx, dtype=float)
     nw, nn = asm.n_wings, asm.n_nodes
-    w = x[: 13 * nw].reshape(nw, 13)
-    dw = dx[: 13 * nw].reshape(nw, 13)
-    euler = _euler_from_quaternions(w[:, 3:7])
+    w = x[: B3_SIZE * nw].reshape(nw, B3_SIZE)
+    dw = dx[: B3_SIZE * nw].reshape(nw, B3_SIZE)
+    euler = _euler_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
     R = _rotations(euler)
     phi, theta = euler[:, 0], euler[:, 1]
-    p, q, r = w[:, 10], w[:, 11], w[:, 12]
+    p, q, r = w[:, B3_RATE], w[:, B3_RATE + 1], w[:, B3_RATE + 2]
     sf, cf, tt, ct = np.sin(phi), np.cos(phi), np.tan(theta), np.cos(theta)
     dz = np.empty((nw, _WM))
-    dz[:, 0:3] = dw[:, 0:3]
+    dz[:, 0:3] = dw[:, B3_POS: B3_POS + 3]
     dz[:, 3] = p + sf * tt * q + cf * tt * r
     dz[:, 4] = cf * q - sf * r
     dz[:, 5] = (sf * q + cf * r) / ct
-    dz[:, 6:9] = np.einsum("nij,nj->ni", R, dw[:, 7:10] + np.cross(w[:, 10:13], w[:, 7:10]))
-    dz[:, 9:12] = dw[:, 10:13]
-    return np.concatenate([dz.reshape(-1), dx[13 * nw: 13 * nw + 6 * nn]])
+    vb, om = w[:, B3_VEL: B3_VEL + 3], w[:, B3_RATE: B3_RATE + 3]
+    dz[:, 6:9] = np.einsum("nij,nj->ni", R, dw[:, B3_VEL: B3_VEL + 3] + np.cross(om, vb))
+    dz[:, 9:12] = dw[:, B3_RATE: B3_RATE + 3]
+    return np.concatenate([dz.reshape(-1), dx[B3_SIZE * nw: B3_SIZE * nw + N3_SIZE * nn]])
 
 
 def minimal_rhs(sim: Simulator, rhs=None):

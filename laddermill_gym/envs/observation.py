@@ -17,6 +17,22 @@ from dataclasses import dataclass
 import numpy as np
 
 from laddermill_gym.atmosphere.wind_kernels import modulation, wind_at
+from laddermill_gym.kernels.contract import (
+    B2_Q,
+    B2_SIZE,
+    B2_THETA,
+    B2_U,
+    B2_W,
+    B2_X,
+    B2_Z,
+    B3_POS,
+    B3_QUAT,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
+    TM_DT,
+    TM_T0,
+)
 from laddermill_gym.ladder.scene import Scene
 from laddermill_gym.sim.simulator import Simulator
 
@@ -130,22 +146,22 @@ def _rotation_about_y(theta: np.ndarray) -> np.ndarray:
 def wing_kinematics(state: np.ndarray, dim: int, n_wings: int) -> WingKinematics:
     """Wing kinematics from a raw state vector (3D: 13 floats per wing; in-plane: 6, embedded in 3D)."""
     if dim == 3:
-        w = state[: 13 * n_wings].reshape(n_wings, 13)
-        pos = w[:, 0:3].copy()
-        rot = _rotation_from_quaternions(w[:, 3:7])
-        vb = w[:, 7:10].copy()
-        rates = w[:, 10:13].copy()
+        w = state[: B3_SIZE * n_wings].reshape(n_wings, B3_SIZE)
+        pos = w[:, B3_POS: B3_POS + 3].copy()
+        rot = _rotation_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
+        vb = w[:, B3_VEL: B3_VEL + 3].copy()
+        rates = w[:, B3_RATE: B3_RATE + 3].copy()
         euler = np.stack([np.arctan2(rot[:, 2, 1], rot[:, 2, 2]),
                           -np.arcsin(np.clip(rot[:, 2, 0], -1.0, 1.0)),
                           np.arctan2(rot[:, 1, 0], rot[:, 0, 0])], axis=1)
     else:
-        w = state[: 6 * n_wings].reshape(n_wings, 6)
+        w = state[: B2_SIZE * n_wings].reshape(n_wings, B2_SIZE)
         zeros = np.zeros(n_wings)
-        pos = np.stack([w[:, 0], zeros, w[:, 1]], axis=1)
-        rot = _rotation_about_y(w[:, 2])
-        vb = np.stack([w[:, 3], zeros, w[:, 4]], axis=1)
-        rates = np.stack([zeros, w[:, 5], zeros], axis=1)
-        euler = np.stack([zeros, w[:, 2], zeros], axis=1)
+        pos = np.stack([w[:, B2_X], zeros, w[:, B2_Z]], axis=1)
+        rot = _rotation_about_y(w[:, B2_THETA])
+        vb = np.stack([w[:, B2_U], zeros, w[:, B2_W]], axis=1)
+        rates = np.stack([zeros, w[:, B2_Q], zeros], axis=1)
+        euler = np.stack([zeros, w[:, B2_THETA], zeros], axis=1)
     vel = np.einsum("nij,nj->ni", rot, vb)
     return WingKinematics(position=pos, rotation=rot, euler=euler, velocity_body=vb, velocity=vel, rates=rates)
 
@@ -154,7 +170,7 @@ def wind_at_points(sim: Simulator, t: float, positions: np.ndarray) -> np.ndarra
     """Wind velocity (n, 3) [m/s], global, at the given points (n, 3) [m] and time t [s], from the wind
     model (profile, direction and time modulation) the simulator was built with."""
     m = sim.model
-    s, d, _, _ = modulation(float(t), m.tmod[0], m.tmod[1], m.ms, m.md)
+    s, d, _, _ = modulation(float(t), m.tmod[TM_T0], m.tmod[TM_DT], m.ms, m.md)
     out = np.empty((len(positions), 3))
     for k in range(len(positions)):
         out[k] = wind_at(float(positions[k, 2]), m.wf, s, d)

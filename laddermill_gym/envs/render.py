@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from laddermill_gym.envs.observation import _rotation_from_quaternions
+from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_SIZE, N3_POS, N3_SIZE
 from laddermill_gym.model.params import END_FIXED, END_NODE, END_WING
 
 
@@ -39,7 +40,8 @@ class SceneRenderer:
         asm = task.scene.assembly
         self.asm = asm
         # fixed view box around the nominal configuration
-        nodes = task.x_trim[13 * asm.n_wings:].reshape(-1, 6)[:, 0:3] if asm.n_nodes else np.zeros((0, 3))
+        nodes = (task.x_trim[B3_SIZE * asm.n_wings:].reshape(-1, N3_SIZE)[:, N3_POS: N3_POS + 3] if asm.n_nodes
+                 else np.zeros((0, 3)))
         pts = np.vstack([task.nominal, nodes, asm.fixed_points])
         lo, hi = pts.min(axis=0), pts.max(axis=0)
         pad = 0.15 * float(np.max(hi - lo)) + max(w.span for w in asm.wing_types)
@@ -49,10 +51,10 @@ class SceneRenderer:
         asm = self.asm
         x = self.task.batch.states[b]
         nw = asm.n_wings
-        w = x[: 13 * nw].reshape(nw, 13)
-        pos = w[:, 0:3]
-        rot = _rotation_from_quaternions(w[:, 3:7])
-        nodes = x[13 * nw: 13 * nw + 6 * asm.n_nodes].reshape(-1, 6)[:, 0:3]
+        w = x[: B3_SIZE * nw].reshape(nw, B3_SIZE)
+        pos = w[:, B3_POS: B3_POS + 3]
+        rot = _rotation_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
+        nodes = x[B3_SIZE * nw: B3_SIZE * nw + N3_SIZE * asm.n_nodes].reshape(-1, N3_SIZE)[:, N3_POS: N3_POS + 3]
         el = asm.elements
 
         def end_point(e, r):

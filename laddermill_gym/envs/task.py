@@ -17,7 +17,7 @@ import numpy as np
 from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, sample_modulation
 from laddermill_gym.envs.actions import ActionMap, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
-from laddermill_gym.kernels.contract import KWork
+from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, KWork
 from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
@@ -224,7 +224,7 @@ class WingTask:
         n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
         self.batch = BatchSimulator(asm, self.n_copies, sc.settings, n_modulation=max(2, n_mod))
         B = self.n_copies
-        self.nominal = np.ascontiguousarray(x_trim[: 13 * nw].reshape(nw, 13)[:, 0:3])
+        self.nominal = np.ascontiguousarray(x_trim[: B3_SIZE * nw].reshape(nw, B3_SIZE)[:, B3_POS: B3_POS + 3])
         lay = sc.layout
         self.below = np.array([lay.piece_elements[k][-1] for k in range(nw)], dtype=np.int64)
         two_ended = sc.end is not None

@@ -8,7 +8,9 @@ import math
 import numpy as np
 from scipy.optimize import fsolve
 
+from laddermill_gym.kernels.contract import CTRL_ELEVATOR, WF_DIR_HEIGHT, WF_DIR_INF
 from laddermill_gym.model.builders import chain_state
+from laddermill_gym.model.packing import wind_fields
 from laddermill_gym.model.params import AERO_INDEX, N_CONTROLS
 from laddermill_gym.model.states import planar_from_3d, planar_to_3d, rotation_from_euler
 from laddermill_gym.sim.simulator import Simulator
@@ -16,8 +18,11 @@ from laddermill_gym.sim.statics import pitch_trim_alpha, static_equilibrium, tab
 
 
 def _wind_fields(a):
-    return np.array([a.wind.v0, a.wind.h0, a.wind.v1, a.wind.exponent, 0.0, 1.0, a.wind.rho0,
-                     0.0 if a.wind.density_model == "barometric" else 1.0, a.wind.scale_height, 0.0])
+    """The packed wind parameters of the scene's wind without its direction turn (direction_inf 0,
+    direction_height 1 m): the layout is solved in the vertical plane of the wind at the ground."""
+    wf = wind_fields(a.wind)
+    wf[WF_DIR_INF], wf[WF_DIR_HEIGHT] = 0.0, 1.0
+    return wf
 
 
 def _rest_state(scene, positions, elevators, ends):
@@ -149,7 +154,7 @@ def initial_state(scene) -> tuple[np.ndarray, np.ndarray]:
     half = (n + 1) // 2 if scene.end is not None else n
     elev = [ini.elevator_up if k < half else ini.elevator_down for k in range(n)]
     controls = np.zeros(N_CONTROLS * n)
-    controls[0::N_CONTROLS] = elev
+    controls[CTRL_ELEVATOR::N_CONTROLS] = elev
     attach, alphas = layout(scene, elev)
     euler = np.array([[0.0, al, 0.0] for al in alphas])
     # wing at rest in horizontal wind: pitch angle = angle of attack; CG = attachment - R r_att

@@ -6,6 +6,27 @@ import math
 
 import numpy as np
 
+from laddermill_gym.kernels.contract import (
+    B2_Q,
+    B2_SIZE,
+    B2_THETA,
+    B2_U,
+    B2_W,
+    B2_X,
+    B2_Z,
+    B3_POS,
+    B3_QUAT,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
+    N2_POS,
+    N2_SIZE,
+    N2_VEL,
+    N3_POS,
+    N3_SIZE,
+    N3_VEL,
+)
+
 
 def rotation_from_euler(phi: float, theta: float, psi: float) -> np.ndarray:
     """R = Rz(psi) Ry(theta) Rx(phi) (body -> global), 3x3."""
@@ -53,8 +74,12 @@ def euler_rate_matrix(phi: float, theta: float) -> np.ndarray:
 def wing_state_3d(position, euler, v_body, rates) -> np.ndarray:
     """13-float wing state from position [m], Euler angles (phi, theta, psi) [rad], body velocity [m/s]
     and body rates [rad/s]."""
-    return np.concatenate([np.asarray(position, float), quaternion_from_euler(*euler),
-                           np.asarray(v_body, float), np.asarray(rates, float)])
+    s = np.empty(B3_SIZE)
+    s[B3_POS: B3_POS + 3] = np.asarray(position, float)
+    s[B3_QUAT: B3_QUAT + 4] = quaternion_from_euler(*euler)
+    s[B3_VEL: B3_VEL + 3] = np.asarray(v_body, float)
+    s[B3_RATE: B3_RATE + 3] = np.asarray(rates, float)
+    return s
 
 
 def planar_to_3d(x2: np.ndarray, n_wings: int, n_nodes: int) -> np.ndarray:
@@ -62,12 +87,16 @@ def planar_to_3d(x2: np.ndarray, n_wings: int, n_nodes: int) -> np.ndarray:
     x2 = np.asarray(x2, dtype=float)
     out = []
     for k in range(n_wings):
-        x, z, th, u, w, q = x2[6 * k: 6 * k + 6]
-        out.append(wing_state_3d([x, 0.0, z], [0.0, th, 0.0], [u, 0.0, w], [0.0, q, 0.0]))
-    b = 6 * n_wings
+        s = x2[B2_SIZE * k: B2_SIZE * (k + 1)]
+        out.append(wing_state_3d([s[B2_X], 0.0, s[B2_Z]], [0.0, s[B2_THETA], 0.0], [s[B2_U], 0.0, s[B2_W]],
+                                 [0.0, s[B2_Q], 0.0]))
+    b = B2_SIZE * n_wings
     for j in range(n_nodes):
-        x, z, vx, vz = x2[b + 4 * j: b + 4 * j + 4]
-        out.append(np.array([x, 0.0, z, vx, 0.0, vz]))
+        s = x2[b + N2_SIZE * j: b + N2_SIZE * (j + 1)]
+        n = np.zeros(N3_SIZE)
+        n[N3_POS], n[N3_POS + 2] = s[N2_POS], s[N2_POS + 1]
+        n[N3_VEL], n[N3_VEL + 2] = s[N2_VEL], s[N2_VEL + 1]
+        out.append(n)
     return np.concatenate(out) if out else np.zeros(0)
 
 
@@ -76,11 +105,17 @@ def planar_from_3d(x3: np.ndarray, n_wings: int, n_nodes: int) -> np.ndarray:
     x3 = np.asarray(x3, dtype=float)
     out = []
     for k in range(n_wings):
-        s = x3[13 * k: 13 * k + 13]
-        _, th, _ = euler_from_quaternion(s[3:7])
-        out.append(np.array([s[0], s[2], th, s[7], s[9], s[11]]))
-    b = 13 * n_wings
+        s = x3[B3_SIZE * k: B3_SIZE * (k + 1)]
+        _, th, _ = euler_from_quaternion(s[B3_QUAT: B3_QUAT + 4])
+        w = np.zeros(B2_SIZE)
+        w[B2_X], w[B2_Z], w[B2_THETA] = s[B3_POS], s[B3_POS + 2], th
+        w[B2_U], w[B2_W], w[B2_Q] = s[B3_VEL], s[B3_VEL + 2], s[B3_RATE + 1]
+        out.append(w)
+    b = B3_SIZE * n_wings
     for j in range(n_nodes):
-        s = x3[b + 6 * j: b + 6 * j + 6]
-        out.append(np.array([s[0], s[2], s[3], s[5]]))
+        s = x3[b + N3_SIZE * j: b + N3_SIZE * (j + 1)]
+        n = np.zeros(N2_SIZE)
+        n[N2_POS], n[N2_POS + 1] = s[N3_POS], s[N3_POS + 2]
+        n[N2_VEL], n[N2_VEL + 1] = s[N3_VEL], s[N3_VEL + 2]
+        out.append(n)
     return np.concatenate(out) if out else np.zeros(0)

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq, root
 
+from laddermill_gym.kernels.contract import N3_POS, N3_SIZE
 from laddermill_gym.model.builders import ElementList
 from laddermill_gym.model.params import END_FIXED, END_NODE, END_WING, Assembly, WingType
 from laddermill_gym.model.states import rotation_from_euler, wing_state_3d
@@ -292,11 +293,11 @@ class Craft:
         pos = self.layout.design_position
         euler = np.array([0.0, t.design_pitch, 0.0])
         R = rotation_from_euler(*euler)
-        nodes = np.zeros((self.assembly.n_nodes, 6))
+        nodes = np.zeros((self.assembly.n_nodes, N3_SIZE))
         for i, idx in enumerate(self.layout.tether_nodes):
             a, b = self.layout.anchors[i], pos + R @ self.layout.attach[i]
             for j, k in enumerate(idx):
-                nodes[k, :3] = a + (j + 1) / (len(idx) + 1) * (b - a)
+                nodes[k, N3_POS: N3_POS + 3] = a + (j + 1) / (len(idx) + 1) * (b - a)
         return np.concatenate([wing_state_3d(pos, euler, np.zeros(3), np.zeros(3)), nodes.reshape(-1)])
 
     def trim(self, collective: float | None = None, x_guess: np.ndarray | None = None) -> np.ndarray:

@@ -6,13 +6,55 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from laddermill_gym.kernels.contract import LIM_RATE, LIM_SIZE, LIM_SPEED
+from laddermill_gym.kernels.contract import (
+    B2_Q,
+    B2_SIZE,
+    B2_THETA,
+    B2_U,
+    B2_W,
+    B2_X,
+    B2_Z,
+    B3_POS,
+    B3_QUAT,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
+    LIM_RATE,
+    LIM_SIZE,
+    LIM_SPEED,
+    N2_POS,
+    N2_SIZE,
+    N2_VEL,
+    N3_POS,
+    N3_SIZE,
+    N3_VEL,
+    TM_DT,
+    TM_T0,
+)
 from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR, dp54_advance, rk4_advance
 from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 from laddermill_gym.model.states import euler_from_quaternion
+
+
+def _slot_names(size: int, *groups) -> tuple[str, ...]:
+    """Names of the entries of one body's or node's state block from (offset, names) pairs."""
+    names = [""] * size
+    for offset, group in groups:
+        names[offset: offset + len(group)] = group
+    return tuple(names)
+
+
+_WING_NAMES_3D = _slot_names(B3_SIZE, (B3_POS, ("x [m]", "y [m]", "z [m]")), (B3_QUAT, ("q0", "q1", "q2", "q3")),
+                             (B3_VEL, ("u [m/s]", "v [m/s]", "w [m/s]")),
+                             (B3_RATE, ("p [rad/s]", "q [rad/s]", "r [rad/s]")))
+_WING_NAMES_2D = _slot_names(B2_SIZE, (B2_X, ("x [m]",)), (B2_Z, ("z [m]",)), (B2_THETA, ("theta [rad]",)),
+                             (B2_U, ("u [m/s]",)), (B2_W, ("w [m/s]",)), (B2_Q, ("q [rad/s]",)))
+_NODE_NAMES_3D = _slot_names(N3_SIZE, (N3_POS, ("x [m]", "y [m]", "z [m]")),
+                             (N3_VEL, ("vx [m/s]", "vy [m/s]", "vz [m/s]")))
+_NODE_NAMES_2D = _slot_names(N2_SIZE, (N2_POS, ("x [m]", "z [m]")), (N2_VEL, ("vx [m/s]", "vz [m/s]")))
 
 
 class SimulationError(RuntimeError):
@@ -223,13 +265,10 @@ class Simulator:
         ws, ns = a.wing_state_size, a.node_state_size
         if i < a.n_wings * ws:
             k, j = divmod(i, ws)
-            names = (("x [m]", "y [m]", "z [m]", "q0", "q1", "q2", "q3", "u [m/s]", "v [m/s]", "w [m/s]",
-                      "p [rad/s]", "q [rad/s]", "r [rad/s]") if a.dim == 3 else
-                     ("x [m]", "z [m]", "theta [rad]", "u [m/s]", "w [m/s]", "q [rad/s]"))
+            names = _WING_NAMES_3D if a.dim == 3 else _WING_NAMES_2D
             return f"wing {k} {names[j]}"
         k, j = divmod(i - a.n_wings * ws, ns)
-        names = (("x [m]", "y [m]", "z [m]", "vx [m/s]", "vy [m/s]", "vz [m/s]") if a.dim == 3 else
-                 ("x [m]", "z [m]", "vx [m/s]", "vz [m/s]"))
+        names = _NODE_NAMES_3D if a.dim == 3 else _NODE_NAMES_2D
         return f"node {k} {names[j]}"
 
     def _wing_block(self) -> np.ndarray:
@@ -244,29 +283,29 @@ class Simulator:
         """CG positions, shape (n_wings, 3), global frame [m] (y = 0 in the in-plane mode)."""
         w = self._wing_block()
         if self.assembly.dim == 3:
-            return w[:, 0:3].copy()
-        return np.stack([w[:, 0], np.zeros(len(w)), w[:, 1]], axis=1)
+            return w[:, B3_POS: B3_POS + 3].copy()
+        return np.stack([w[:, B2_X], np.zeros(len(w)), w[:, B2_Z]], axis=1)
 
     def wing_euler(self) -> np.ndarray:
         """3-2-1 Euler angles (roll phi, pitch theta, yaw psi), shape (n_wings, 3) [rad]."""
         w = self._wing_block()
         if self.assembly.dim == 3:
-            return np.array([euler_from_quaternion(qq) for qq in w[:, 3:7]]).reshape(-1, 3)
-        return np.stack([np.zeros(len(w)), w[:, 2], np.zeros(len(w))], axis=1)
+            return np.array([euler_from_quaternion(qq) for qq in w[:, B3_QUAT: B3_QUAT + 4]]).reshape(-1, 3)
+        return np.stack([np.zeros(len(w)), w[:, B2_THETA], np.zeros(len(w))], axis=1)
 
     def wing_velocities(self) -> np.ndarray:
         """Body-frame CG velocities (u, v, w), shape (n_wings, 3) [m/s]."""
         w = self._wing_block()
         if self.assembly.dim == 3:
-            return w[:, 7:10].copy()
-        return np.stack([w[:, 3], np.zeros(len(w)), w[:, 4]], axis=1)
+            return w[:, B3_VEL: B3_VEL + 3].copy()
+        return np.stack([w[:, B2_U], np.zeros(len(w)), w[:, B2_W]], axis=1)
 
     def wing_rates(self) -> np.ndarray:
         """Body rates (p, q, r), shape (n_wings, 3) [rad/s]."""
         w = self._wing_block()
         if self.assembly.dim == 3:
-            return w[:, 10:13].copy()
-        return np.stack([np.zeros(len(w)), w[:, 5], np.zeros(len(w))], axis=1)
+            return w[:, B3_RATE: B3_RATE + 3].copy()
+        return np.stack([np.zeros(len(w)), w[:, B2_Q], np.zeros(len(w))], axis=1)
 
     def wing_rotations(self) -> np.ndarray:
         """Rotation matrices body -> global, shape (n_wings, 3, 3)."""
@@ -279,7 +318,7 @@ class Simulator:
         from laddermill_gym.atmosphere.wind_kernels import modulation, wind_at
 
         m = self.model
-        s, d, _, _ = modulation(self.t, m.tmod[0], m.tmod[1], m.ms, m.md)
+        s, d, _, _ = modulation(self.t, m.tmod[TM_T0], m.tmod[TM_DT], m.ms, m.md)
         pos = self.wing_positions()
         Rs = self.wing_rotations()
         out = np.zeros((len(pos), 3))
@@ -298,8 +337,8 @@ class Simulator:
         """Free cable node positions, shape (n_nodes, 3) [m]."""
         n = self._node_block()
         if self.assembly.dim == 3:
-            return n[:, 0:3].copy()
-        return np.stack([n[:, 0], np.zeros(len(n)), n[:, 1]], axis=1)
+            return n[:, N3_POS: N3_POS + 3].copy()
+        return np.stack([n[:, N2_POS], np.zeros(len(n)), n[:, N2_POS + 1]], axis=1)
 
     def tensions(self) -> np.ndarray:
         """Element tensions, shape (n_elements,) [N], evaluated at the current state."""

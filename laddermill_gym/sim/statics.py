@@ -8,6 +8,25 @@ import math
 import numpy as np
 from scipy.optimize import brentq, root
 
+from laddermill_gym.kernels.contract import (
+    B2_Q,
+    B2_SIZE,
+    B2_U,
+    B2_X,
+    B3_POS,
+    B3_QUAT,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
+    CTRL_ELEVATOR,
+    N2_POS,
+    N2_SIZE,
+    N2_VEL,
+    N3_POS,
+    N3_SIZE,
+    N3_VEL,
+    N_CONTROLS,
+)
 from laddermill_gym.model.states import euler_from_quaternion, quaternion_from_euler
 
 
@@ -18,17 +37,20 @@ def pack_unknowns(sim, x):
     out = []
     if a.dim == 3:
         for k in range(a.n_wings):
-            s = x[13 * k: 13 * k + 13]
-            out.extend([*s[0:3], *euler_from_quaternion(s[3:7])])
-        b = 13 * a.n_wings
+            s = x[B3_SIZE * k: B3_SIZE * (k + 1)]
+            out.extend([*s[B3_POS: B3_POS + 3], *euler_from_quaternion(s[B3_QUAT: B3_QUAT + 4])])
+        b = B3_SIZE * a.n_wings
         for j in range(a.n_nodes):
-            out.extend(x[b + 6 * j: b + 6 * j + 3])
+            o = b + N3_SIZE * j + N3_POS
+            out.extend(x[o: o + 3])
     else:
         for k in range(a.n_wings):
-            out.extend(x[6 * k: 6 * k + 3])
-        b = 6 * a.n_wings
+            o = B2_SIZE * k + B2_X
+            out.extend(x[o: o + 3])  # x, z, theta
+        b = B2_SIZE * a.n_wings
         for j in range(a.n_nodes):
-            out.extend(x[b + 4 * j: b + 4 * j + 2])
+            o = b + N2_SIZE * j + N2_POS
+            out.extend(x[o: o + 2])
     return np.array(out)
 
 
@@ -39,20 +61,24 @@ def unpack_unknowns(sim, z):
     i = 0
     if a.dim == 3:
         for k in range(a.n_wings):
-            x[13 * k: 13 * k + 3] = z[i: i + 3]
-            x[13 * k + 3: 13 * k + 7] = quaternion_from_euler(*z[i + 3: i + 6])
+            o = B3_SIZE * k
+            x[o + B3_POS: o + B3_POS + 3] = z[i: i + 3]
+            x[o + B3_QUAT: o + B3_QUAT + 4] = quaternion_from_euler(*z[i + 3: i + 6])
             i += 6
-        b = 13 * a.n_wings
+        b = B3_SIZE * a.n_wings
         for j in range(a.n_nodes):
-            x[b + 6 * j: b + 6 * j + 3] = z[i: i + 3]
+            o = b + N3_SIZE * j + N3_POS
+            x[o: o + 3] = z[i: i + 3]
             i += 3
     else:
         for k in range(a.n_wings):
-            x[6 * k: 6 * k + 3] = z[i: i + 3]
+            o = B2_SIZE * k + B2_X
+            x[o: o + 3] = z[i: i + 3]  # x, z, theta
             i += 3
-        b = 6 * a.n_wings
+        b = B2_SIZE * a.n_wings
         for j in range(a.n_nodes):
-            x[b + 4 * j: b + 4 * j + 2] = z[i: i + 2]
+            o = b + N2_SIZE * j + N2_POS
+            x[o: o + 2] = z[i: i + 2]
             i += 2
     return x
 
@@ -62,13 +88,13 @@ def accelerations(sim, dx):
     a = sim.assembly
     parts = []
     if a.dim == 3:
-        parts += [dx[13 * k + 7: 13 * k + 13] for k in range(a.n_wings)]
-        b = 13 * a.n_wings
-        parts += [dx[b + 6 * j + 3: b + 6 * j + 6] for j in range(a.n_nodes)]
+        parts += [dx[B3_SIZE * k + B3_VEL: B3_SIZE * k + B3_RATE + 3] for k in range(a.n_wings)]
+        b = B3_SIZE * a.n_wings
+        parts += [dx[b + N3_SIZE * j + N3_VEL: b + N3_SIZE * j + N3_VEL + 3] for j in range(a.n_nodes)]
     else:
-        parts += [dx[6 * k + 3: 6 * k + 6] for k in range(a.n_wings)]
-        b = 6 * a.n_wings
-        parts += [dx[b + 4 * j + 2: b + 4 * j + 4] for j in range(a.n_nodes)]
+        parts += [dx[B2_SIZE * k + B2_U: B2_SIZE * k + B2_Q + 1] for k in range(a.n_wings)]
+        b = B2_SIZE * a.n_wings
+        parts += [dx[b + N2_SIZE * j + N2_VEL: b + N2_SIZE * j + N2_VEL + 2] for j in range(a.n_nodes)]
     return np.concatenate(parts) if parts else np.zeros(0)
 
 
@@ -107,11 +133,11 @@ def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float =
     """Static equilibrium in which wing ``wing`` flies at angle of attack ``alpha`` [rad]: the elevator of
     that wing is an extra unknown. Returns (state, controls)."""
     u0 = sim.controls.copy()
-    z0 = np.concatenate([pack_unknowns(sim, x_guess), [u0[3 * wing]]])
+    z0 = np.concatenate([pack_unknowns(sim, x_guess), [u0[N_CONTROLS * wing + CTRL_ELEVATOR]]])
 
     def resid(z):
         u = u0.copy()
-        u[3 * wing] = z[-1]
+        u[N_CONTROLS * wing + CTRL_ELEVATOR] = z[-1]
         x = unpack_unknowns(sim, z[:-1])
         acc = accelerations(sim, sim.rhs(t, x, u))
         sim.state[:] = x
@@ -126,7 +152,7 @@ def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float =
     if r > 1e-6 * math.sqrt(len(z)):
         raise RuntimeError(f"trim: Newton did not converge (|residual| = {r:.3g}): {msg}")
     u = u0.copy()
-    u[3 * wing] = z[-1]
+    u[N_CONTROLS * wing + CTRL_ELEVATOR] = z[-1]
     return unpack_unknowns(sim, z[:-1]), u
 
 
