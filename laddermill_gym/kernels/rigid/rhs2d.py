@@ -90,6 +90,9 @@ def _add_mass2(A, nb1, T1, nb2, T2, m):
             A[i, j] += m * (T1[0, i] * T2[0, j] + T1[1, i] * T2[1, j])
 
 
+# One function of more than 80 lines on purpose: it is the hot loop of every scene, and each element's end
+# kinematics, loads and tension stay in local scalars across its three phases (bodies, nodes, elements, marked
+# by comments) instead of passing a dozen values through calls; the golden-trajectory test pins its arithmetic.
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def rhs2d(t, x, u, dx, M, W, sag, caero):
     """State derivative of the in-plane model (see rhs3d.rhs3d for the arguments). Returns 0 or 1."""
