@@ -1,6 +1,7 @@
 """The controller protocol shared by model-based controllers and RL agents, the observation layout of the
-wing environments, and the helpers that map physical controls to normalised actions and simulator views to
-observations (so a controller can be run directly on a :class:`~laddermill_gym.sim.simulator.Simulator`)."""
+wing environments, and the helpers that map physical controls to normalised actions and a simulator's state to
+the environments' observation (with the environments' kernel, so a controller can be run directly on a
+:class:`~laddermill_gym.sim.simulator.Simulator`)."""
 
 from __future__ import annotations
 
@@ -9,7 +10,10 @@ from typing import Any, Protocol, runtime_checkable
 import numpy as np
 
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_FIELDS, OBS_INDEX
+from laddermill_gym.kernels.integrate import OK
+from laddermill_gym.kernels.rigid.observe import N_AUX, observe_state
 from laddermill_gym.model.params import Assembly
+from laddermill_gym.sim.simulator import SimulationError
 
 __all__ = [
     "Controller",
@@ -72,25 +76,46 @@ def batch_observations(observation: np.ndarray, obs_dim: int) -> tuple[np.ndarra
 
 
 def observe(sim, nominal_positions: np.ndarray, below_elements: np.ndarray) -> np.ndarray:
-    """The environments' observation vector (``OBS_PER_WING`` entries per wing, layout ``OBS_NAMES``) built from
-    a simulator's views at its current state.
+    """The environments' observation vector of a simulator's current state (time ``sim.t``, controls
+    ``sim.controls``, the simulator's own wind modulation): shape (n_wings * ``OBS_PER_WING``,) float64, layout
+    ``OBS_NAMES``, computed by the environments' kernel
+    (:func:`laddermill_gym.kernels.rigid.observe.observe_state` on ``sim.model`` and ``sim.work``).
 
     Parameters
     ----------
     sim : Simulator
+        A simulator of a 3D scene (ValueError for an in-plane one).
     nominal_positions : ndarray (n_wings, 3)
         CG positions at the initial equilibrium [m].
     below_elements : int array (n_wings,)
         Index of the cable element below each wing (for the tether tension).
+
+    Raises
+    ------
+    ValueError
+        In-plane scene, or arguments of the wrong shape or an element index out of range.
+    SimulationError
+        The mass matrix is singular at the current state.
     """
-    pos = sim.wing_positions()
-    euler = sim.wing_euler()
-    R = sim.wing_rotations()
-    v_global = np.einsum("nij,nj->ni", R, sim.wing_velocities())
-    ab = sim.wing_alpha_beta()
-    ten = sim.tensions()[np.asarray(below_elements, dtype=np.int64)]
-    obs = np.concatenate([pos - nominal_positions, v_global, euler, sim.wing_rates(), ab, ten[:, None]], axis=1)
-    return obs.reshape(-1)
+    asm = sim.assembly
+    if asm.dim != 3:
+        raise ValueError(f"observe: the wing observation needs a 3D scene, this simulator is in-plane "
+                         f"(dimension = {asm.dim})")
+    nw = asm.n_wings
+    nominal = np.ascontiguousarray(nominal_positions, dtype=np.float64)
+    below = np.ascontiguousarray(below_elements, dtype=np.int64)
+    if nominal.shape != (nw, 3) or below.shape != (nw,):
+        raise ValueError(f"observe: nominal_positions must have shape ({nw}, 3) and below_elements ({nw},), "
+                         f"got {nominal.shape} and {below.shape}")
+    ne = asm.elements.count
+    if np.any((below < -ne) | (below >= ne)):
+        raise ValueError(f"observe: below_elements {below.tolist()} outside -{ne}..{ne - 1}")
+    below = np.where(below < 0, below + ne, below)  # numpy's meaning of a negative index
+    obs, aux = np.zeros(nw * N_OBS_PER_WING), np.zeros(N_AUX)
+    if observe_state(float(sim.t), sim.state, sim.controls, sim.model, sim.work, nominal, below,
+                     np.array([-1, -1], dtype=np.int64), obs, aux) != OK:
+        raise SimulationError(f"t = {sim.t:.6g} s: the mass matrix is singular")
+    return obs
 
 
 def elements_below_wings(layout, n_wings: int) -> np.ndarray:

@@ -51,8 +51,9 @@ def run_direction_step(scene: Scene, x_trim: np.ndarray, u_trim: np.ndarray, con
     """Start at the trim, apply the wind-direction step, and run ``controller`` at ``control_period`` [s] until
     ``t_end`` [s] or until the integration breaks down (then ``error`` says why).
 
-    Observations are built from the simulator's views in the environments' layout
-    (:func:`~laddermill_gym.control.base.observe`); the scene's integrator step must divide the period.
+    Observations come from the environments' observation kernel on the simulator's state
+    (:func:`~laddermill_gym.control.base.observe`), so a 3D scene is needed; the scene's integrator step must
+    divide the period.
     """
     sc = with_direction_step(scene, step, step_time)
     sim = sc.simulator(x_trim, u_trim)

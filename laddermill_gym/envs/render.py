@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.envs.observation import _rotation_from_quaternions
 from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_SIZE, N3_POS, N3_SIZE
 from laddermill_gym.model.params import END_FIXED, END_NODE, END_WING
+from laddermill_gym.model.states import rotations_from_quaternions
 
 
 class SceneRenderer:
@@ -53,7 +53,7 @@ class SceneRenderer:
         nw = asm.n_wings
         w = x[: B3_SIZE * nw].reshape(nw, B3_SIZE)
         pos = w[:, B3_POS: B3_POS + 3]
-        rot = _rotation_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
+        rot = rotations_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
         nodes = x[B3_SIZE * nw: B3_SIZE * nw + N3_SIZE * asm.n_nodes].reshape(-1, N3_SIZE)[:, N3_POS: N3_POS + 3]
         el = asm.elements
 

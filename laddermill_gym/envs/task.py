@@ -17,7 +17,7 @@ import numpy as np
 from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, sample_modulation
 from laddermill_gym.envs.actions import ActionMap, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
-from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, KWork
+from laddermill_gym.kernels.contract import B3_POS, B3_SIZE
 from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
@@ -25,6 +25,7 @@ from laddermill_gym.kernels.rigid.observe import (
     AUX_MAX_TENSION,
     AUX_MIN_ALTITUDE,
     N_AUX,
+    observe_state,
     step_observe_batch,
     step_observe_serial,
 )
@@ -268,17 +269,16 @@ class WingTask:
         b.t += b.done * b.settings.dt
 
     def _observe_state(self, x: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(obs row, aux row) of one state in the undisturbed wind, without touching the copies."""
-        asm = self.scene.assembly
-        work = make_workspace(asm)
-        wb = KWork(*[a[None].copy() for a in work])
-        obs, aux = np.zeros((1, self.obs_dim)), np.zeros((1, N_AUX))
-        step_observe_serial(np.zeros(1), np.array(x, dtype=float)[None].copy(), np.array(u, dtype=float)[None].copy(),
-                           self.scene.settings.dt, np.zeros(1, dtype=np.int64), *self.batch.detached, wb,
-                           np.array([[0.0, 1.0]]), np.ones((1, 2)), np.zeros((1, 2)), self.batch.limits,
-                           np.zeros((1, asm.state_size)), self.nominal,
-                           self.below, self.ground, obs, aux, np.zeros(1, dtype=np.int64), np.zeros(1, dtype=np.int64))
-        return obs[0], aux[0]
+        """(obs row (obs_dim,), aux row (N_AUX,)) of one state x at t = 0 in the undisturbed wind (speed factor
+        1, no direction offset), without touching the copies; raises ValueError if the mass matrix is
+        singular there."""
+        model = self.batch.model._replace(tmod=np.array([0.0, 1.0]), ms=np.ones(2), md=np.zeros(2))
+        obs, aux = np.zeros(self.obs_dim), np.zeros(N_AUX)
+        status = observe_state(0.0, np.array(x, dtype=float), np.array(u, dtype=float), model,
+                               make_workspace(self.scene.assembly), self.nominal, self.below, self.ground, obs, aux)
+        if status != OK:
+            raise ValueError(f"scene {self.scene.name}: singular mass matrix at the state observed")
+        return obs, aux
 
     # ------------------------------------------------------------------ episodes
     def reset(self, mask: np.ndarray, rngs) -> None:

@@ -40,6 +40,30 @@ def rotation_from_euler(phi: float, theta: float, psi: float) -> np.ndarray:
     ])
 
 
+def rotations_from_quaternions(q: np.ndarray) -> np.ndarray:
+    """Body -> global rotation matrices of many quaternions.
+
+    q : array (n, 4), scalar first, not necessarily unit (each row is normalised here).
+    Returns float64 (n, 3, 3); entry [k] is R(q_k) of docs/model.md, so global = R @ body.
+    """
+    q = np.asarray(q, dtype=float)
+    if q.ndim != 2 or q.shape[1] != 4:
+        raise ValueError(f"rotations_from_quaternions: expected shape (n, 4), got {q.shape}")
+    qn = q / np.linalg.norm(q, axis=1, keepdims=True)
+    a, b, c, d = qn[:, 0], qn[:, 1], qn[:, 2], qn[:, 3]
+    rot = np.empty((len(qn), 3, 3))
+    rot[:, 0, 0] = a * a + b * b - c * c - d * d
+    rot[:, 0, 1] = 2.0 * (b * c - a * d)
+    rot[:, 0, 2] = 2.0 * (b * d + a * c)
+    rot[:, 1, 0] = 2.0 * (b * c + a * d)
+    rot[:, 1, 1] = a * a - b * b + c * c - d * d
+    rot[:, 1, 2] = 2.0 * (c * d - a * b)
+    rot[:, 2, 0] = 2.0 * (b * d - a * c)
+    rot[:, 2, 1] = 2.0 * (c * d + a * b)
+    rot[:, 2, 2] = a * a - b * b - c * c + d * d
+    return rot
+
+
 def quaternion_from_euler(phi: float, theta: float, psi: float) -> np.ndarray:
     """Unit quaternion (scalar first) of the 3-2-1 Euler angles (roll, pitch, yaw) [rad]."""
     c1, s1 = math.cos(phi / 2), math.sin(phi / 2)

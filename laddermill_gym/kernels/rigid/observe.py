@@ -1,5 +1,7 @@
 """Batched stepping and observation for the environments: one parallel pass over the copies advances each by
-n RK4 steps and then writes its wing observations and the quantities the rewards and terminations need.
+n RK4 steps and then writes its wing observations and the quantities the rewards and terminations need;
+:func:`observe_state` observes one state with the same code (the task's trim, and
+``control.base.observe`` on a ``Simulator``). This is the only implementation of the wing observation.
 
 Observation layout per wing (15 floats, ``laddermill_gym/envs/observation.py`` documents it with units):
 CG offset from the nominal position (3), global CG velocity (3), 3-2-1 Euler angles (3), body rates (3),
@@ -81,6 +83,24 @@ def _observe_one(t, x, u, dx, M, W, nominal, below, ground, obs, aux):
     aux[AUX_GROUND_END] = ten[ground[1]] if ground[1] >= 0 else 0.0
     aux[AUX_MIN_ALTITUDE] = zmin
     return OK
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def observe_state(t, x, u, M, W, nominal, below, ground, obs, aux):
+    """Observation of one 3D state: the single-state entry point of the kernel the batched envs use.
+
+    t [s]; x (n_state,) 3D state; u (3 n_wings,) controls [rad]; M the packed model with its markers (a
+    ``Simulator``'s ``model``; its own wind modulation ``tmod``, ``ms``, ``md`` is the one observed); W its
+    workspace (``W.k1``, the integrators' first stage, serves as the derivative scratch: free between
+    integrator calls); nominal (n_wings, 3) [m] CG positions the offsets are taken from; below (n_wings,)
+    int64 element below each wing; ground (2,) int64 ground elements (start, end; -1 if none).
+
+    Writes obs (15 n_wings,) in the ``OBS_*`` layout of ``kernels/contract.py`` (names and units:
+    ``envs.observation.OBS_FIELDS``) and aux (N_AUX,) (``AUX_*`` columns), and the element tensions
+    ``W.tension`` [N] and body rotations ``W.Rw`` of the state. Returns OK, or SINGULAR if the mass matrix is
+    singular (obs and aux then untouched). 3D models only: the caller checks the kind.
+    """
+    return _observe_one(t, x, u, W.k1, M, W, nominal, below, ground, obs, aux)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
