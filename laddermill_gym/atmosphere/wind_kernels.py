@@ -1,8 +1,20 @@
-"""Wind profile, direction, density and time modulation (Meijaard et al. 1999 eqs. 1-3).
+"""Wind profile, direction, density, time modulation (Meijaard et al. 1999 eqs. 1-3) and the frozen gust
+grid that makes the wind vary in space.
 
 Packed wind parameters ``wf``: slots ``WF_*`` of ``kernels/contract.py`` (v0 [m/s], h0 [m], v1 [1/s],
 exponent [-], phi_inf [rad], h_s [m], rho0 [kg/m^3], density model, H_b [m]). Modulation samples ``ms`` (speed
 factor) and ``md`` (direction offset, rad) on the grid ``t0 + k dt`` (``tmod[TM_T0]``, ``tmod[TM_DT]``).
+Gust grid: header ``gp`` (slots ``GP_*``) and samples ``gv`` (``atmosphere/field.py`` builds both; None and None
+when there is none).
+
+The wind at a point p = (x, y, z) [m] and time t [s] is (:func:`wind_point`)
+
+    w(p, t) = -s(t) V(h) (cos a, sin a, 0) + g(xi, h),   h = -z,  a = phi_s(h) + delta(t),
+    xi = p . e - U t,
+
+with s, delta the modulation, V, phi_s the profile and direction (eqs. 1-2), e the grid's downwind unit vector,
+U its advection speed (Taylor's frozen turbulence) and g the bilinear interpolation of the grid samples
+(held at the grid's edges outside it), rotated from (u downwind, v right, w up) to global axes.
 """
 
 import math
@@ -11,6 +23,19 @@ from numba import njit
 
 from laddermill_gym.kernels.contract import (
     DENSITY_BAROMETRIC,
+    GP_ADVECTION,
+    GP_DH,
+    GP_DXI,
+    GP_EX,
+    GP_EY,
+    GP_H0,
+    GP_NH,
+    GP_NXI,
+    GP_XI0,
+    GV_SIZE,
+    GV_U,
+    GV_V,
+    GV_W,
     WF_DENSITY_MODEL,
     WF_DIR_HEIGHT,
     WF_DIR_INF,
@@ -102,3 +127,89 @@ def wind_rate(z, zdot, wf, s, d, sdot, ddot):
     wx = -(sdot * v + s * dvdt) * ca + s * v * sa * dadt
     wy = -(sdot * v + s * dvdt) * sa - s * v * ca * dadt
     return wx, wy, 0.0
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _cell(u, n):
+    """Cell index k, fraction f in it and whether u lies inside the grid (0 <= u <= n - 1); held at the edges.
+    A NaN u (a non-finite state) gives cell 0, never a NaN index."""
+    if n < 2 or not u > 0.0:
+        return 0, 0.0, False
+    if u >= n - 1:
+        return n - 2, 1.0, False
+    k = int(math.floor(u))
+    return k, u - k, True
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _grid_sample(xi, h, gp, gv, c):
+    """Component c of the gust grid at (xi, h) [m] by bilinear interpolation, and its derivatives along xi and
+    h [1/s] (zero across a held edge). A grid of one row or column is constant along that axis."""
+    nx, nh = int(gp[GP_NXI]), int(gp[GP_NH])
+    i, a, in_x = _cell((xi - gp[GP_XI0]) / gp[GP_DXI], nx)
+    j, b, in_h = _cell((h - gp[GP_H0]) / gp[GP_DH], nh)
+    i1 = i + 1 if nx > 1 else i
+    j1 = j + 1 if nh > 1 else j
+    f00 = gv[(i * nh + j) * GV_SIZE + c]
+    f10 = gv[(i1 * nh + j) * GV_SIZE + c]
+    f01 = gv[(i * nh + j1) * GV_SIZE + c]
+    f11 = gv[(i1 * nh + j1) * GV_SIZE + c]
+    f = (1.0 - a) * ((1.0 - b) * f00 + b * f01) + a * ((1.0 - b) * f10 + b * f11)
+    dfx = ((1.0 - b) * (f10 - f00) + b * (f11 - f01)) / gp[GP_DXI] if in_x else 0.0
+    dfh = ((1.0 - a) * (f01 - f00) + a * (f11 - f10)) / gp[GP_DH] if in_h else 0.0
+    return f, dfx, dfh
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def gust_at(x, y, z, t, gp, gv):
+    """Gust velocity (global, m/s) of the frozen grid at the point (x, y, z) [m] and time t [s]."""
+    if gp[GP_NXI] == 0.0:  # a batch row without a grid
+        return 0.0, 0.0, 0.0
+    ex, ey = gp[GP_EX], gp[GP_EY]
+    xi = x * ex + y * ey - gp[GP_ADVECTION] * t
+    h = -z
+    u, _, _ = _grid_sample(xi, h, gp, gv, GV_U)
+    v, _, _ = _grid_sample(xi, h, gp, gv, GV_V)
+    w, _, _ = _grid_sample(xi, h, gp, gv, GV_W)
+    return u * ex - v * ey, u * ey + v * ex, -w
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def gust_rate(x, y, z, vx, vy, vz, t, gp, gv):
+    """Time derivative (global, m/s^2) of the gust seen by a point at (x, y, z) [m] moving with the global
+    velocity (vx, vy, vz) [m/s]: dg/dxi (v . e - U) + dg/dh (-vz)."""
+    if gp[GP_NXI] == 0.0:  # a batch row without a grid
+        return 0.0, 0.0, 0.0
+    ex, ey = gp[GP_EX], gp[GP_EY]
+    xi = x * ex + y * ey - gp[GP_ADVECTION] * t
+    h = -z
+    xid = vx * ex + vy * ey - gp[GP_ADVECTION]
+    hd = -vz
+    _, ux, uh = _grid_sample(xi, h, gp, gv, GV_U)
+    _, vx_, vh = _grid_sample(xi, h, gp, gv, GV_V)
+    _, wx, wh = _grid_sample(xi, h, gp, gv, GV_W)
+    du, dv, dw = ux * xid + uh * hd, vx_ * xid + vh * hd, wx * xid + wh * hd
+    return du * ex - dv * ey, du * ey + dv * ex, -dw
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def wind_point(x, y, z, t, wf, s, d, gp, gv):
+    """Wind velocity (global, m/s) at the point (x, y, z) [m] and time t [s]: the profile with speed factor s
+    and direction offset d (:func:`wind_at`) plus the frozen gust grid (``gp``, ``gv``; both None for none: the
+    test is then resolved when numba compiles, so the kernels are the profile-only code, bit for bit)."""
+    if gv is None:
+        return wind_at(z, wf, s, d)
+    wx, wy, wz = wind_at(z, wf, s, d)
+    gx, gy, gz = gust_at(x, y, z, t, gp, gv)
+    return wx + gx, wy + gy, wz + gz
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def wind_point_rate(x, y, z, vx, vy, vz, t, wf, s, d, sdot, ddot, gp, gv):
+    """Time derivative (global, m/s^2) of the wind seen by a point at (x, y, z) [m] moving with the global
+    velocity (vx, vy, vz) [m/s] (:func:`wind_rate` plus :func:`gust_rate`); the alpha-rate term uses it."""
+    if gv is None:
+        return wind_rate(z, vz, wf, s, d, sdot, ddot)
+    wx, wy, wz = wind_rate(z, vz, wf, s, d, sdot, ddot)
+    gx, gy, gz = gust_rate(x, y, z, vx, vy, vz, t, gp, gv)
+    return wx + gx, wy + gy, wz + gz

@@ -15,6 +15,7 @@ from functools import lru_cache
 import numpy as np
 
 from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, sample_modulation
+from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.envs.actions import ActionMap, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
 from laddermill_gym.kernels.contract import B3_POS, B3_SIZE
@@ -263,8 +264,8 @@ class WingTask:
     # ------------------------------------------------------------------ kernels
     def _run(self, nsteps: np.ndarray) -> None:
         b = self.batch
-        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.tmod, b.mod_speed,
-                     b.mod_direction, b.limits, self._dx, self.nominal, self.below, self.ground, self.obs, self.aux,
+        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.air, b.limits,
+                     self._dx, self.nominal, self.below, self.ground, self.obs, self.aux,
                      b.status, b.done)
         b.t += b.done * b.settings.dt
 
@@ -289,7 +290,7 @@ class WingTask:
         idx = np.flatnonzero(mask)
         for i in idx:
             speed, direction = sample_modulation(self.disturbances, self.episode_time, self.wind_dt, rngs[i])
-            b.set_wind(int(i), 0.0, self.wind_dt, speed, direction)
+            b.set_wind(int(i), WindField(0.0, self.wind_dt, speed, direction))
         b.states[idx] = self.x_trim
         b.controls[idx] = self.u_trim
         b.t[idx] = 0.0

@@ -104,8 +104,8 @@ OBS_TABLE
     def __getstate__(self):
         b = self.task.batch
         return {"kwargs": self._kwargs, "render_mode": self.render_mode, "np_random": self._np_random,
-                "arrays": (b.states.copy(), b.controls.copy(), b.t.copy(), b.tmod.copy(), b.mod_speed.copy(),
-                           b.mod_direction.copy(), self.task.steps.copy(), self.task.last_action.copy(),
+                "arrays": (b.states.copy(), b.controls.copy(), b.t.copy(), *[None if a is None else a.copy() for a in b.air],
+                           self.task.steps.copy(), self.task.last_action.copy(),
                            None if self.task.actions.alpha_servo is None else self.task.actions.alpha_servo.copy()),
                 "needs_reset": self._needs_reset}
 
@@ -113,8 +113,11 @@ OBS_TABLE
         self.__init__(render_mode=state["render_mode"], **state["kwargs"])
         self._np_random = state["np_random"]
         b = self.task.batch
-        (b.states[:], b.controls[:], b.t[:], b.tmod[:], b.mod_speed[:], b.mod_direction[:], self.task.steps[:],
-         self.task.last_action[:], servo) = state["arrays"]
+        (b.states[:], b.controls[:], b.t[:], *air, self.task.steps[:], self.task.last_action[:],
+         servo) = state["arrays"]
+        for mine, saved in zip(b.air, air):
+            if mine is not None:
+                mine[:] = saved
         if servo is not None:
             self.task.actions.alpha_servo = servo
         self._needs_reset = state["needs_reset"]

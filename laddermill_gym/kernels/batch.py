@@ -5,7 +5,8 @@ series, so each copy can see its own gust) and owns one slice of a batched works
 the same compiled ``rk4_advance`` a single simulator uses, so a batch copy and a single run agree bit for bit.
 """
 
-from numba import njit, prange
+from numba import njit, prange, types
+from numba.extending import overload
 
 from laddermill_gym.kernels.contract import KModel, KWork
 from laddermill_gym.kernels.integrate import OK, rk4_advance
@@ -19,12 +20,26 @@ def detach_markers(M: KModel) -> tuple[KModel, object, object]:
     return M._replace(kind=None, vehicle=None), M.kind, M.vehicle
 
 
+def row_or_none(a, b):
+    """Row ``b`` of the array ``a``, or None when ``a`` is None (resolved when numba compiles)."""
+    return None if a is None else a[b]
+
+
+@overload(row_or_none, inline="always")
+def _row_or_none(a, b):
+    if isinstance(a, types.NoneType):
+        return lambda a, b: None
+    return lambda a, b: a[b]
+
+
 @njit(cache=True)
-def copy_views(b, M, kind, vehicle, WB, tmod, MS, MD):
-    """(model, workspace) of copy ``b``: the shared model (markers ``kind`` and ``vehicle``) with that copy's wind
-    modulation, and views of the copy's rows of the batched workspace WB (no copies made)."""
-    Mb = KModel(kind, M.wf, tmod[b], MS[b], MD[b], M.glob, M.wtype, M.tf, M.ac, M.node_mass, M.fixed,
-                M.ek, M.ei, M.ea, M.ef, M.ekd, M.echild, M.order, M.parent, M.bsz, M.sag, M.caero, vehicle)
+def copy_views(b, M, kind, vehicle, WB, AB):
+    """(model, workspace) of copy ``b``: the shared model (markers ``kind`` and ``vehicle``) with that copy's air
+    (row b of the batched :class:`~laddermill_gym.kernels.contract.KAir` AB: wind modulation and gust grid), and
+    views of the copy's rows of the batched workspace WB (no copies made)."""
+    Mb = KModel(kind, M.wf, AB.tmod[b], AB.ms[b], AB.md[b], row_or_none(AB.gp, b), row_or_none(AB.gv, b), M.glob, M.wtype, M.tf, M.ac,
+                M.node_mass, M.fixed, M.ek, M.ei, M.ea, M.ef, M.ekd, M.echild, M.order, M.parent, M.bsz, M.sag,
+                M.caero, vehicle)
     Wb = KWork(WB.D[b], WB.U[b], WB.Y[b], WB.piv[b], WB.bv[b], WB.Rw[b], WB.tension[b], WB.Tr[b],
                WB.Ts[b], WB.er[b], WB.es[b], WB.coef[b], WB.aout[b], WB.vout[b], WB.vscratch[b], WB.k1[b],
                WB.k2[b], WB.k3[b], WB.k4[b], WB.k5[b], WB.k6[b], WB.k7[b], WB.xt[b], WB.xp[b])
@@ -32,14 +47,15 @@ def copy_views(b, M, kind, vehicle, WB, tmod, MS, MD):
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
-def rk4_batch(t, X, U, dt, n, M, kind, vehicle, WB, tmod, MS, MD, active, limits, status, done):
+def rk4_batch(t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, status, done):
     """Advance the states X (B, n_state) in place by n RK4 steps of size dt with controls U (B, n_controls).
 
-    t (B,) [s] is each copy's time (not advanced here). Wind modulation per copy: tmod (B, 2) start and
-    sample spacing [s], MS (B, n_mod) speed factors [-], MD (B, n_mod) direction offsets [rad]. Copies with
-    active[b] == 0 are skipped. WB is a KWork whose arrays carry a leading batch axis. M is the packed model
-    with its ``kind`` and ``vehicle`` markers passed separately (:func:`detach_markers`). Writes status (B,)
-    (integrate.py's codes) and done (B,) (steps completed before a failure).
+    t (B,) [s] is each copy's time (not advanced here). AB is the per-copy air, a KAir of arrays with a leading
+    copy axis (wind modulation grid tmod (B, 2), speed factors ms (B, n_mod) [-], direction offsets md (B, n_mod)
+    [rad], gust grid header gp (B, GP_SIZE) and samples gv (B, n_grid)). Copies with active[b] == 0 are skipped.
+    WB is a KWork whose arrays carry a leading batch axis. M is the packed model with its ``kind`` and
+    ``vehicle`` markers passed separately (:func:`detach_markers`). Writes status (B,) (integrate.py's codes)
+    and done (B,) (steps completed before a failure).
     """
     nb = X.shape[0]
     for b in prange(nb):
@@ -47,7 +63,7 @@ def rk4_batch(t, X, U, dt, n, M, kind, vehicle, WB, tmod, MS, MD, active, limits
             status[b] = OK
             done[b] = 0
             continue
-        Mb, Wb = copy_views(b, M, kind, vehicle, WB, tmod, MS, MD)
+        Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
         st, dn = rk4_advance(t[b], X[b], U[b], dt, n, Mb, Wb, limits)
         status[b] = st
         done[b] = dn

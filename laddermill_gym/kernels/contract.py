@@ -14,6 +14,8 @@ kind                  model kind marker (a namedtuple whose *type* selects the r
 wf                    wind parameters, slots ``WF_*``
 tmod, ms, md          wind modulation: ``tmod[TM_T0]`` start [s], ``tmod[TM_DT]`` spacing [s]; speed factor [-]
                       and direction offset [rad] samples
+gp, gv                None and None (no gust grid) or the frozen gust grid: header (slots ``GP_*``) and samples
+                      (n_xi n_h GV_SIZE,) [m/s] (``atmosphere/field.py``)
 glob                  global constants, slots ``GL_*``
 wtype (int64)         wing type index of each rigid body (n_bodies,)
 tf                    wing-type table (n_types, TF_SIZE), slots ``TF_*``
@@ -64,6 +66,13 @@ WF_SIZE = 10
 DENSITY_BAROMETRIC, DENSITY_ISA = 0.0, 1.0
 #: Wind modulation grid ``tmod``: first sample time [s], sample spacing [s].
 TM_T0, TM_DT, TM_SIZE = 0, 1, 2
+#: Frozen gust grid header ``gp`` (``atmosphere/field.py``): along-wind coordinate of the first grid column
+#: xi0 [m] and spacing [m], height of the first grid row [m] and spacing [m], columns and rows [-] (0 columns:
+#: an empty row of a batch), advection speed of the frozen field [m/s], downwind unit vector (x, y) of the grid's u axis [-].
+GP_XI0, GP_DXI, GP_H0, GP_DH, GP_NXI, GP_NH, GP_ADVECTION, GP_EX, GP_EY, GP_SIZE = range(10)
+#: Components of a gust grid sample ``gv`` (flat, index ((i n_h + j) GV_SIZE + c)): along the mean wind u,
+#: lateral v (to the right looking downwind), vertical w (up) [m/s].
+GV_U, GV_V, GV_W, GV_SIZE = 0, 1, 2, 3
 
 # ------------------------------------------------------------------------------------------- globals
 #: ``glob``: gravity [m/s^2], cable normal and tangential drag constants C_N0, C_T0 [-], first alpha of the
@@ -104,9 +113,13 @@ LIM_SPEED, LIM_RATE, LIM_SIZE = 0, 1, 2
 # ------------------------------------------------------------------------------------------- records
 KModel = namedtuple(
     "KModel",
-    ["kind", "wf", "tmod", "ms", "md", "glob", "wtype", "tf", "ac", "node_mass", "fixed",
+    ["kind", "wf", "tmod", "ms", "md", "gp", "gv", "glob", "wtype", "tf", "ac", "node_mass", "fixed",
      "ek", "ei", "ea", "ef", "ekd", "echild", "order", "parent", "bsz", "sag", "caero", "vehicle"],
 )
+#: Per-copy air of a batch (each array with a leading copy axis; rows as the KModel fields of the same name; gp and
+#: gv None when no copy has a gust grid):
+#: the batch kernels take it as one argument, so adding a part of the air does not change their signatures.
+KAir = namedtuple("KAir", ["tmod", "ms", "md", "gp", "gv"])
 #: Kernel workspace: block matrices and pivots of the elimination, scratch of the element ends, tensions [N]
 #: (``tension``), body rotations (``Rw``), aerodynamic scratch, the vehicle's outputs and scratch (``vout``,
 #: ``vscratch``: per copy, so batched copies never share them) and the integrators' stage vectors.

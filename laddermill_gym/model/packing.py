@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.interpolate import CubicSpline
 
+from laddermill_gym.atmosphere.field import pack_wind_field
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.contract import KModel, KWork
 from laddermill_gym.kernels.rigid.kinds import RIGID_2D, RIGID_3D, WING
@@ -160,14 +161,11 @@ def pack_model(asm: Assembly, vehicle=WING) -> KModel:
     wing_dof, node_dof = (C.DOF_B3, C.DOF_N3) if asm.dim == 3 else (C.DOF_B2, C.DOF_N2)
     bsz = np.array([wing_dof] * asm.n_wings + [node_dof] * asm.n_nodes, dtype=np.int64)
     fixed = asm.fixed_points if asm.fixed_points.size else np.zeros((1, 3))
-    tmod = np.zeros(C.TM_SIZE)
-    tmod[C.TM_T0], tmod[C.TM_DT] = w.mod_t0, w.mod_dt
+    tmod, ms, md, gp, gv = pack_wind_field(w.field)
     if asm.dim == 2 and vehicle is not WING:
         raise ValueError("the in-plane (dim = 2) model supports winged bodies only")
     return KModel(
-        kind=RIGID_3D if asm.dim == 3 else RIGID_2D, wf=wind_fields(w), tmod=tmod,
-        ms=np.ascontiguousarray(w.mod_speed, dtype=np.float64),
-        md=np.ascontiguousarray(w.mod_direction, dtype=np.float64),
+        kind=RIGID_3D if asm.dim == 3 else RIGID_2D, wf=wind_fields(w), tmod=tmod, ms=ms, md=md, gp=gp, gv=gv,
         glob=glob, wtype=np.ascontiguousarray(asm.wing_type_index, dtype=np.int64), tf=wing_type_table(asm), ac=ac,
         node_mass=np.ascontiguousarray(asm.node_mass, dtype=np.float64),
         fixed=np.ascontiguousarray(fixed, dtype=np.float64),

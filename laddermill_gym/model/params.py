@@ -7,9 +7,12 @@ specified in ``laddermill_gym/docs/model.md``.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 
 import numpy as np
+
+from laddermill_gym.atmosphere.field import GustGrid, WindField
 
 #: Column names of a wing's aerodynamic table, in kernel order (see docs/model.md, "Wing aerodynamics").
 AERO_COLUMNS: tuple[str, ...] = (
@@ -60,6 +63,11 @@ class WindParams:
         Speed factor samples [-] (1 = undisturbed).
     mod_direction : ndarray, shape (n_mod,)
         Direction offset samples [rad].
+    gust : GustGrid or None
+        Frozen gust grid added to the profile (``atmosphere/field.py``); None for none.
+
+    The modulation and the gust grid together are the wind's :attr:`field`; set them with :meth:`with_field`
+    (or, on a built simulator, ``Simulator.set_wind`` / ``BatchSimulator.set_wind``).
     """
 
     v0: float = 8.0
@@ -75,20 +83,24 @@ class WindParams:
     mod_dt: float = 1.0
     mod_speed: np.ndarray = field(default_factory=lambda: np.ones(1))
     mod_direction: np.ndarray = field(default_factory=lambda: np.zeros(1))
+    gust: GustGrid | None = None
+
+    @property
+    def field(self) -> WindField:
+        """The wind's variation in time and space (modulation and gust grid) as one :class:`WindField`."""
+        return WindField(self.mod_t0, self.mod_dt, self.mod_speed, self.mod_direction, self.gust)
+
+    def with_field(self, f: WindField) -> WindParams:
+        """Return a copy whose variation in time and space is the :class:`WindField` ``f``."""
+        if not isinstance(f, WindField):
+            raise ValueError(f"wind field = {f!r}: must be a laddermill_gym.atmosphere.field.WindField")
+        return dataclasses.replace(self, mod_t0=f.t0, mod_dt=f.dt, mod_speed=f.speed, mod_direction=f.direction,
+                                   gust=f.grid)
 
     def with_modulation(self, t0: float, dt: float, speed: np.ndarray, direction: np.ndarray) -> WindParams:
-        """Return a copy with a new time modulation (speed factor [-] and direction offset [rad] samples)."""
-        speed = np.ascontiguousarray(speed, dtype=np.float64)
-        direction = np.ascontiguousarray(direction, dtype=np.float64)
-        if speed.ndim != 1 or direction.shape != speed.shape or speed.size == 0:
-            raise ValueError(f"wind modulation: speed {speed.shape} and direction {direction.shape} must be equal 1-D")
-        if not (dt > 0 and np.isfinite(dt)):
-            raise ValueError(f"wind modulation: dt must be > 0, got {dt}")
-        if not (np.all(np.isfinite(speed)) and np.all(np.isfinite(direction))):
-            raise ValueError("wind modulation: samples must be finite")
-        import dataclasses
-
-        return dataclasses.replace(self, mod_t0=float(t0), mod_dt=float(dt), mod_speed=speed, mod_direction=direction)
+        """Return a copy with a new time modulation (speed factor [-] and direction offset [rad] samples at
+        t0 + k dt [s]); the gust grid is kept. Shorthand for :meth:`with_field`."""
+        return self.with_field(WindField(t0, dt, speed, direction, self.gust))
 
 
 @dataclass(frozen=True)

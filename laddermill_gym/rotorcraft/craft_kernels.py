@@ -10,8 +10,9 @@ workspace's ``vout`` and ``vscratch`` (one per batched copy):
 
 - ``cp[N_CP]``: craft parameters, indices C_* below (SI units, body axes x forward, y right, z down).
 - ``rp[rotor.N_PARAMS]``: blade parameters (sigma, a, delta, B, gamma) as in ``kernels/rotor.py``.
-- ``cout[N_COUT]``: written on every call: body-frame force [N] and moment [N m] on the craft
-  (entries 0-5), then per rotor r (right r = 0, left r = 1) the block at 6 + N_RO r: R_* indices.
+- ``cout[N_COUT]``: written on every call: body-frame force [N] (slots V_FORCE..+2) and moment [N m]
+  (V_MOMENT..+2) on the craft, then per rotor r (right r = 0, left r = 1) the block at V_ROTOR + N_RO r: R_*
+  indices.
 - ``scratch[rotor.N_OUT]``: the inflow solver's output.
 
 Controls: u[0] collective pitch theta0 [rad], u[1] differential collective dtheta [rad]: the right rotor
@@ -23,7 +24,7 @@ from collections import namedtuple
 
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import density, wind_at
+from laddermill_gym.atmosphere.wind_kernels import density, wind_point
 from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_SIZE, B3_VEL
 from laddermill_gym.kernels.dispatch import register_vehicle
 from laddermill_gym.rotorcraft.rotor_kernels import (
@@ -54,23 +55,27 @@ N_CP = 13
 # per-rotor outputs
 R_THRUST, R_HFORCE, R_TORQUE, R_POWER, R_MU, R_LAMBDA, R_CT, R_TIP_AOA, R_STATUS, R_THETA = range(10)
 N_RO = 10
-N_COUT = 6 + 2 * N_RO
+# vehicle outputs ``cout`` (the workspace's ``vout``): body force (3), body moment (3), the rotors' blocks
+V_FORCE, V_MOMENT, V_ROTOR = 0, 3, 6
+N_COUT = V_ROTOR + 2 * N_RO
 
 #: spin sense of the rotors about body -z (right rotor +1, left rotor -1: contra-rotating)
 SPIN = (1.0, -1.0)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def _air_at(x, o, R, px, py, pz, wf, s_mod, d_mod):
+def _air_at(x, o, R, px, py, pz, t, M, s_mod, d_mod):
     """Air velocity relative to the body point (px, py, pz) [m] in body axes [m/s], and the density there."""
     vx, vy, vz = x[o + B3_VEL], x[o + B3_VEL + 1], x[o + B3_VEL + 2]
     p, q, r = x[o + B3_RATE], x[o + B3_RATE + 1], x[o + B3_RATE + 2]
     zg = x[o + B3_POS + 2] + R[2, 0] * px + R[2, 1] * py + R[2, 2] * pz
-    wgx, wgy, wgz = wind_at(zg, wf, s_mod, d_mod)
+    xg = x[o + B3_POS] + R[0, 0] * px + R[0, 1] * py + R[0, 2] * pz
+    yg = x[o + B3_POS + 1] + R[1, 0] * px + R[1, 1] * py + R[1, 2] * pz
+    wgx, wgy, wgz = wind_point(xg, yg, zg, t, M.wf, s_mod, d_mod, M.gp, M.gv)
     ax = R[0, 0] * wgx + R[1, 0] * wgy + R[2, 0] * wgz - (vx + q * pz - r * py)
     ay = R[0, 1] * wgx + R[1, 1] * wgy + R[2, 1] * wgz - (vy + r * px - p * pz)
     az = R[0, 2] * wgx + R[1, 2] * wgy + R[2, 2] * wgz - (vz + p * py - q * px)
-    return ax, ay, az, density(-zg, wf)
+    return ax, ay, az, density(-zg, M.wf)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
@@ -114,8 +119,9 @@ def _rotor(cp, rp, scratch, ax, ay, az, rho, theta0, out, k):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def craft_loads(x, o, R, u, wf, s_mod, d_mod, craft):
-    """Aerodynamic and generator loads on the craft (body o of state x, rotation R) into craft[2][0:6].
+def craft_loads(x, o, R, u, t, M, s_mod, d_mod, craft):
+    """Aerodynamic and generator loads on the craft (body o of state x, rotation R) into craft[2][0:6], in the
+    wind of the packed model M at time t [s] (speed factor s_mod, direction offset d_mod, its gust grid).
 
     Rotors at body (hub_x, +-hub_y, hub_z); quasi-steady Gessow & Myers rotor with Glauert inflow at each
     hub's own relative air velocity (so roll rate gives differential inflow: the rotors' roll damping);
@@ -129,9 +135,9 @@ def craft_loads(x, o, R, u, wf, s_mod, d_mod, craft):
     for r in range(2):
         spin = SPIN[r]
         hx, hy, hz = cp[C_HUB_X], cp[C_HUB_Y] if r == 0 else -cp[C_HUB_Y], cp[C_HUB_Z]
-        ax, ay, az, rho = _air_at(x, o, R, hx, hy, hz, wf, s_mod, d_mod)
+        ax, ay, az, rho = _air_at(x, o, R, hx, hy, hz, t, M, s_mod, d_mod)
         theta = u[0] + u[1] if r == 0 else u[0] - u[1]
-        k = 6 + N_RO * r
+        k = V_ROTOR + N_RO * r
         gx, gy, gz, torque = _rotor(cp, rp, scratch, ax, ay, az, rho, theta, out, k)
         if out[k + R_STATUS] != STATUS_OK:
             ok = False
@@ -143,18 +149,19 @@ def craft_loads(x, o, R, u, wf, s_mod, d_mod, craft):
         mz += hx * gy - hy * gx + spin * torque
     # fins
     px, pz = cp[C_FIN_X], cp[C_FIN_Z]
-    ax, ay, az, rho = _air_at(x, o, R, px, 0.0, pz, wf, s_mod, d_mod)
+    ax, ay, az, rho = _air_at(x, o, R, px, 0.0, pz, t, M, s_mod, d_mod)
     side = 0.5 * rho * cp[C_FIN_AREA] * cp[C_FIN_SLOPE] * abs(ax) * ay
     fy += side
     mx -= pz * side
     mz += px * side
     # frame drag at the CG
-    ax, ay, az, rho = _air_at(x, o, R, 0.0, 0.0, 0.0, wf, s_mod, d_mod)
+    ax, ay, az, rho = _air_at(x, o, R, 0.0, 0.0, 0.0, t, M, s_mod, d_mod)
     k = 0.5 * rho * cp[C_DRAG_AREA] * math.sqrt(ax * ax + ay * ay + az * az)
     fx += k * ax
     fy += k * ay
     fz += k * az
-    out[0], out[1], out[2], out[3], out[4], out[5] = fx, fy, fz, mx, my, mz
+    out[V_FORCE], out[V_FORCE + 1], out[V_FORCE + 2] = fx, fy, fz
+    out[V_MOMENT], out[V_MOMENT + 1], out[V_MOMENT + 2] = mx, my, mz
     return ok
 
 
@@ -166,9 +173,10 @@ CraftVehicle = namedtuple("CraftVehicle", ["cp", "rp"])
 def craft_body_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
     """The body-loads plug-in (``kernels/dispatch.py``): the craft's loads on body k, body axes [N, N m];
     rotor outputs left in ``W.vout`` (layout of ``cout`` above)."""
-    craft_loads(x, B3_SIZE * k, R, u, M.wf, env[0], env[1], (vehicle.cp, vehicle.rp, W.vout, W.vscratch))
+    craft_loads(x, B3_SIZE * k, R, u, t, M, env[0], env[1], (vehicle.cp, vehicle.rp, W.vout, W.vscratch))
     co = W.vout
-    return co[0], co[1], co[2], co[3], co[4], co[5]
+    return (co[V_FORCE], co[V_FORCE + 1], co[V_FORCE + 2], co[V_MOMENT], co[V_MOMENT + 1],
+            co[V_MOMENT + 2])
 
 
 register_vehicle(CraftVehicle, craft_body_loads)

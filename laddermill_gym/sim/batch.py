@@ -1,8 +1,9 @@
 """Many copies of one scene stepped by one compiled kernel, parallel over copies (numba ``prange``).
 
-Each copy has its own state, controls, time and wind modulation (speed factor and direction offset sampled
-on a uniform time grid, the same representation as :meth:`WindParams.with_modulation`); everything else is
-the shared scene. Used by the batched Gymnasium vector envs and the benchmark.
+Each copy has its own state, controls, time and air (a :class:`~laddermill_gym.atmosphere.field.WindField`:
+the wind modulation and an optional frozen gust grid, set with :meth:`BatchSimulator.set_wind` exactly as on a
+single simulator); everything else is the shared scene. Used by the batched Gymnasium vector envs and the
+benchmark.
 """
 
 from __future__ import annotations
@@ -10,7 +11,8 @@ from __future__ import annotations
 import numpy as np
 
 from laddermill_gym.kernels.batch import detach_markers, rk4_batch
-from laddermill_gym.kernels.contract import KWork
+from laddermill_gym.atmosphere.field import WindField, pack_wind_field
+from laddermill_gym.kernels.contract import GP_SIZE, KAir, KWork
 from laddermill_gym.kernels.integrate import OK
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
@@ -32,6 +34,9 @@ class BatchSimulator:
     n_modulation : int
         Samples per copy in the wind modulation series (>= 2); shorter series are padded with their
         last value, which the kernel holds anyway.
+    n_grid : int
+        Floats per copy for a frozen gust grid (n_xi n_h 3 of the largest ``GustGrid`` a copy will get; 0:
+        no copy has one).
     vehicle, n_controls, vehicle_sizes
         The body-loads plug-in (default ``WING``), the number of controls per copy (default 3 per wing) and
         the sizes of the vehicle's output and scratch arrays in each copy's workspace (see
@@ -42,20 +47,29 @@ class BatchSimulator:
     ----------
     states : ndarray (B, n_state)      controls : ndarray (B, 3 n_wings) [rad]      t : ndarray (B,) [s]
     status : ndarray (B,) int64        integrator status of the last step (0 ok; see kernels/integrate.py)
+    air : KAir                         per-copy wind arrays (tmod (B, 2), mod_speed, mod_direction (B, n_mod),
+                                       gust header (B, GP_SIZE), gust samples (B, n_grid); None
+                                       if n_grid is 0); write with set_wind
     """
 
     def __init__(self, assembly: Assembly, n_copies: int, settings: IntegratorSettings, n_modulation: int = 2,
-                 vehicle=WING, n_controls: int | None = None, vehicle_sizes: tuple[int, int] = (1, 1)):
+                 vehicle=WING, n_controls: int | None = None, vehicle_sizes: tuple[int, int] = (1, 1),
+                 n_grid: int = 0):
         if int(n_copies) != n_copies or n_copies < 1:
             raise ValueError(f"n_copies must be a positive integer, got {n_copies!r}")
         if settings.method != "rk4":
             raise ValueError(f"settings.method = {settings.method!r}: the batch kernel integrates with 'rk4'")
         if int(n_modulation) < 2:
             raise ValueError(f"n_modulation must be >= 2, got {n_modulation!r}")
+        if int(n_grid) != n_grid or n_grid < 0:
+            raise ValueError(f"n_grid must be an integer >= 0, got {n_grid!r}")
         self.assembly = assembly
         self.settings = settings
         self.n_copies = int(n_copies)
-        nb, ns, nm = self.n_copies, assembly.state_size, int(n_modulation)
+        nb, ns = self.n_copies, assembly.state_size
+        own = assembly.wind.field  # the scene's own air: every copy starts with it, so room for it is made
+        nm = max(int(n_modulation), own.speed.size)
+        n_grid = max(int(n_grid), 0 if own.grid is None else own.grid.size)
         self.model = pack_model(assembly, vehicle)
         #: (model without markers, kind, vehicle): the parallel kernels' form of ``model``
         self.detached = detach_markers(self.model)
@@ -67,6 +81,10 @@ class BatchSimulator:
         self.tmod = np.tile(np.array([0.0, 1.0]), (nb, 1))
         self.mod_speed = np.ones((nb, nm))
         self.mod_direction = np.zeros((nb, nm))
+        gp, gv = (np.zeros((nb, GP_SIZE)), np.zeros((nb, n_grid))) if n_grid else (None, None)
+        self.air = KAir(self.tmod, self.mod_speed, self.mod_direction, gp, gv)
+        for b in range(nb):
+            self.set_wind(b, own)
         self.active = np.ones(nb, dtype=np.int64)
         self.status = np.zeros(nb, dtype=np.int64)
         self.done = np.zeros(nb, dtype=np.int64)
@@ -76,30 +94,39 @@ class BatchSimulator:
     def n_modulation(self) -> int:
         return self.mod_speed.shape[1]
 
-    def set_wind(self, copy: int, t0: float, spacing: float, speed: np.ndarray, direction: np.ndarray) -> None:
-        """Wind modulation of one copy: samples at t0 + i spacing [s] of the speed factor [-] and the
-        direction offset [rad] (at most n_modulation samples; held at the last value afterwards)."""
-        speed = np.asarray(speed, float).reshape(-1)
-        direction = np.asarray(direction, float).reshape(-1)
-        n = speed.size
-        if direction.size != n or n < 1 or n > self.n_modulation:
-            raise ValueError(f"wind modulation of copy {copy}: speed and direction need the same length "
-                             f"1..{self.n_modulation}, got {speed.size} and {direction.size}")
-        if not (spacing > 0 and np.isfinite(spacing) and np.isfinite(t0)):
-            raise ValueError(f"wind modulation of copy {copy}: t0 = {t0!r}, spacing = {spacing!r} s")
-        if not (np.all(np.isfinite(speed)) and np.all(np.isfinite(direction)) and np.all(speed >= 0)):
-            raise ValueError(f"wind modulation of copy {copy}: non-finite samples or a negative speed factor")
-        self.tmod[copy] = (t0, spacing)
-        self.mod_speed[copy, :n] = speed
-        self.mod_speed[copy, n:] = speed[-1]
-        self.mod_direction[copy, :n] = direction
-        self.mod_direction[copy, n:] = direction[-1]
+    @property
+    def n_grid(self) -> int:
+        return 0 if self.air.gv is None else self.air.gv.shape[1]
+
+    def set_wind(self, copy: int, field: WindField | float, spacing: float | None = None, speed=None,
+                 direction=None) -> None:
+        """Set the air of one copy: a :class:`~laddermill_gym.atmosphere.field.WindField` (modulation and gust
+        grid), as :meth:`Simulator.set_wind <laddermill_gym.sim.simulator.Simulator.set_wind>` does.
+
+        The short form ``set_wind(copy, t0, spacing, speed, direction)`` sets a modulation without a gust grid
+        (samples at t0 + i spacing [s] of the speed factor [-] and the direction offset [rad]). At most
+        ``n_modulation`` samples (held at the last value afterwards) and a grid of at most ``n_grid`` floats."""
+        if not isinstance(field, WindField):
+            if not (isinstance(spacing, (int, float)) and spacing > 0 and np.isfinite(spacing)):
+                raise ValueError(f"wind modulation of copy {copy}: spacing = {spacing!r} s must be a finite number > 0")
+            try:
+                field = WindField(field, spacing, speed, direction)
+            except (ValueError, TypeError) as err:
+                raise ValueError(f"wind modulation of copy {copy}: {err}") from None
+        try:
+            tmod, ms, md, gp, gv = pack_wind_field(field, self.n_modulation, self.n_grid)
+        except ValueError as err:
+            raise ValueError(f"wind of copy {copy}: {err}") from None
+        a = self.air
+        a.tmod[copy], a.ms[copy], a.md[copy] = tmod, ms, md
+        if a.gv is not None:
+            a.gp[copy], a.gv[copy] = gp, gv
 
     def step(self, n_steps: int = 1) -> np.ndarray:
         """Advance every active copy by n_steps RK4 steps (time advances by the steps each copy completed).
         Returns the status array (B,); a failed copy is left at its last good state."""
         rk4_batch(self.t, self.states, self.controls, self.settings.dt, int(n_steps), *self.detached, self.work,
-                  self.tmod, self.mod_speed, self.mod_direction, self.active, self.limits, self.status, self.done)
+                  self.air, self.active, self.limits, self.status, self.done)
         self.t += self.done * self.settings.dt
         return self.status
 

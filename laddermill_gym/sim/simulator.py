@@ -6,6 +6,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from laddermill_gym.atmosphere.field import WindField, pack_wind_field
+from laddermill_gym.atmosphere.wind_kernels import modulation, wind_point
 from laddermill_gym.kernels.contract import (
     B2_Q,
     B2_SIZE,
@@ -104,6 +106,10 @@ class Simulator:
         self.settings = settings or IntegratorSettings()
         self.model = pack_model(assembly, self.make_vehicle())
         self.work = make_workspace(assembly, *self.vehicle_sizes())
+        #: the wind's variation in time and space now in force (:meth:`set_wind`)
+        self.wind_field = assembly.wind.field
+        if assembly.dim == 2 and assembly.wind.gust is not None:
+            raise ValueError("in-plane (dim = 2) simulation takes no gust grid (wind.gust); use dimension 3")
         if assembly.dim == 2 and (assembly.wind.direction_inf != 0.0 or np.any(assembly.wind.mod_direction != 0.0)):
             raise ValueError("in-plane (dim = 2) simulation needs a fixed wind direction: "
                              f"direction_inf = {assembly.wind.direction_inf}, "
@@ -167,6 +173,21 @@ class Simulator:
         self.t = float(t)
         self.controls = (self.initial_controls if controls is None else self._check_controls(controls)).copy()
         return self.state
+
+    # ------------------------------------------------------------------ air
+    def set_wind(self, field: WindField) -> None:
+        """Set the wind's variation in time and space (:class:`~laddermill_gym.atmosphere.field.WindField`: the
+        speed-factor and direction-offset modulation and an optional frozen gust grid) from now on; the steady
+        profile, direction and density stay the scene's. The same call as ``BatchSimulator.set_wind`` on one
+        copy."""
+        if not isinstance(field, WindField):
+            raise ValueError(f"field = {field!r}: must be a laddermill_gym.atmosphere.field.WindField")
+        if self.assembly.dim == 2 and (np.any(field.direction != 0.0) or field.grid is not None):
+            raise ValueError("in-plane (dim = 2) simulation needs a fixed wind direction and no gust grid: "
+                             f"max |direction| = {np.max(np.abs(field.direction))} rad, grid = {field.grid!r}")
+        tmod, ms, md, gp, gv = pack_wind_field(field)
+        self.model = self.model._replace(tmod=tmod, ms=ms, md=md, gp=gp, gv=gv)
+        self.wind_field = field
 
     # ------------------------------------------------------------------ dynamics
     def rhs(self, t: float, x: np.ndarray, u: np.ndarray | None = None, params: dict | None = None) -> np.ndarray:
@@ -315,15 +336,13 @@ class Simulator:
 
     def air_velocity_body(self) -> np.ndarray:
         """Air-relative CG velocity in body axes, shape (n_wings, 3) [m/s] (from the kernels' wind)."""
-        from laddermill_gym.atmosphere.wind_kernels import modulation, wind_at
-
         m = self.model
         s, d, _, _ = modulation(self.t, m.tmod[TM_T0], m.tmod[TM_DT], m.ms, m.md)
         pos = self.wing_positions()
         Rs = self.wing_rotations()
         out = np.zeros((len(pos), 3))
         for k in range(len(pos)):
-            w = np.array(wind_at(pos[k, 2], m.wf, s, d))
+            w = np.array(wind_point(pos[k, 0], pos[k, 1], pos[k, 2], self.t, m.wf, s, d, m.gp, m.gv))
             out[k] = self.wing_velocities()[k] - Rs[k].T @ w
         return out
 

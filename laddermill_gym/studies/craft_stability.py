@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import brentq
 
+from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.control.craft_lqr import design_craft_lqr
 from laddermill_gym.control.linearize import linearize
 from laddermill_gym.model.states import rotation_from_euler
@@ -115,7 +116,7 @@ def direction_step(sim: CraftSimulator, step: float = 0.01, at: float = 1.0) -> 
     n = int(round(at / 0.01))
     md = np.zeros(n + 1)
     md[-1] = step
-    sim.model = sim.model._replace(tmod=np.array([0.0, 0.01]), ms=np.ones(n + 1), md=md)
+    sim.set_wind(WindField(0.0, 0.01, np.ones(n + 1), md))
 
 
 def closed_loop_run(design, t_end: float = 120.0, controller: bool = True, step: float = 0.01) -> dict:

@@ -11,7 +11,7 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import density, wind_at, wind_rate
+from laddermill_gym.atmosphere.wind_kernels import density, wind_point, wind_point_rate
 from laddermill_gym.kernels.contract import (
     AO_FORCE,
     AO_G,
@@ -72,13 +72,16 @@ def wing_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
     ov, orr = o + B3_VEL, o + B3_RATE
     vx, vy, vz = x[ov], x[ov + 1], x[ov + 2]
     p, q, r = x[orr], x[orr + 1], x[orr + 2]
-    wgx, wgy, wgz = wind_at(x[o + B3_POS + 2], wf, s_mod, d_mod)
+    px, py, pz = x[o + B3_POS], x[o + B3_POS + 1], x[o + B3_POS + 2]
+    wgx, wgy, wgz = wind_point(px, py, pz, t, wf, s_mod, d_mod, M.gp, M.gv)
     wbx = R[0, 0] * wgx + R[1, 0] * wgy + R[2, 0] * wgz
     wby = R[0, 1] * wgx + R[1, 1] * wgy + R[2, 1] * wgz
     wbz = R[0, 2] * wgx + R[1, 2] * wgy + R[2, 2] * wgz
     ua, va, wa = vx - wbx, vy - wby, vz - wbz
     # known part of the alpha rate: g . (w x w_b - R^T dw/dt)
-    dwx, dwy, dwz = wind_rate(x[o + B3_POS + 2], zd, wf, s_mod, d_mod, sd_mod, dd_mod)
+    vgx = R[0, 0] * vx + R[0, 1] * vy + R[0, 2] * vz
+    vgy = R[1, 0] * vx + R[1, 1] * vy + R[1, 2] * vz
+    dwx, dwy, dwz = wind_point_rate(px, py, pz, vgx, vgy, zd, t, wf, s_mod, d_mod, sd_mod, dd_mod, M.gp, M.gv)
     ex_ = (q * wbz - r * wby) - (R[0, 0] * dwx + R[1, 0] * dwy + R[2, 0] * dwz)
     ez_ = (p * wby - q * wbx) - (R[0, 2] * dwx + R[1, 2] * dwy + R[2, 2] * dwz)
     d2 = ua * ua + wa * wa

@@ -12,7 +12,7 @@ import math
 
 from numba import njit, prange
 
-from laddermill_gym.atmosphere.wind_kernels import modulation, wind_at
+from laddermill_gym.atmosphere.wind_kernels import modulation, wind_point
 from laddermill_gym.kernels.batch import copy_views
 from laddermill_gym.kernels.contract import (
     B3_POS,
@@ -66,7 +66,7 @@ def _observe_one(t, x, u, dx, M, W, nominal, below, ground, obs, aux):
         obs[b + OBS_EULER + 1] = -math.asin(min(1.0, max(-1.0, R[2, 0])))
         obs[b + OBS_EULER + 2] = math.atan2(R[1, 0], R[0, 0])
         z = x[o + B3_POS + 2]
-        wx, wy, wz = wind_at(z, M.wf, s, d)
+        wx, wy, wz = wind_point(x[o + B3_POS], x[o + B3_POS + 1], z, t, M.wf, s, d, M.gp, M.gv)
         ua = vx - (R[0, 0] * wx + R[1, 0] * wy + R[2, 0] * wz)
         va = vy - (R[0, 1] * wx + R[1, 1] * wy + R[2, 1] * wz)
         wa = vz - (R[0, 2] * wx + R[1, 2] * wy + R[2, 2] * wz)
@@ -104,14 +104,14 @@ def observe_state(t, x, u, M, W, nominal, below, ground, obs, aux):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
-def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, tmod, MS, MD, limits, DX, nominal, below,
+def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, nominal, below,
                        ground, obs, aux, status, done):
     n = nsteps[b]
     if n < 0:
         status[b] = OK
         done[b] = 0
         return
-    Mb, Wb = copy_views(b, M, kind, vehicle, WB, tmod, MS, MD)
+    Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
     st, dn = OK, 0
     if n > 0:
         st, dn = rk4_advance(t[b], X[b], U[b], dt, n, Mb, Wb, limits)
@@ -121,28 +121,28 @@ def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, tmod, MS, M
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, parallel=True)
-def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, tmod, MS, MD, limits, DX, nominal, below, ground,
+def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, nominal, below, ground,
                        obs, aux, status, done):
     """Advance copy b by nsteps[b] RK4 steps, then observe it (nsteps[b] = 0: observe only; < 0: skip the copy).
     Parallel over the copies (numba prange).
 
     t (B,) [s] is each copy's time before the steps (not advanced here); X (B, n_state), U (B, n_controls);
-    per-copy wind modulation tmod (B, 2), MS, MD (B, n_mod); WB a KWork with a leading batch axis; DX (B,
+    per-copy air AB (a ``KAir`` of arrays with a leading copy axis: wind modulation and gust grid); WB a KWork with a leading batch axis; DX (B,
     n_state) scratch; nominal (n_wings, 3) [m]; below (n_wings,) element below each wing; ground (2,) ground
     elements (start, end; -1 if none). M comes without its markers, passed as ``kind`` and ``vehicle``
     (``kernels.batch.detach_markers``). Writes obs (B, 15 n_wings), aux (B, N_AUX), status (B,) and done (B,)
     (steps completed). A copy whose integration fails is left at its last good state and observed there.
     """
     for b in prange(X.shape[0]):
-        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, tmod, MS, MD, limits, DX, nominal, below,
+        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, nominal, below,
                            ground, obs, aux, status, done)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
-def step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, tmod, MS, MD, limits, DX, nominal, below, ground,
+def step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, nominal, below, ground,
                         obs, aux, status, done):
     """:func:`step_observe_batch` on one thread: for single environments and small batches, where starting
     the thread pool costs more than it saves (and on a loaded machine waits for a descheduled thread)."""
     for b in range(X.shape[0]):
-        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, tmod, MS, MD, limits, DX, nominal, below,
+        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, nominal, below,
                            ground, obs, aux, status, done)

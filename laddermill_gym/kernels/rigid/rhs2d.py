@@ -10,7 +10,7 @@ import math
 
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_at, wind_rate
+from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_point, wind_point_rate
 from laddermill_gym.kernels.cable import aero_load, lateral_elongation, tension_plain, tension_sag
 from laddermill_gym.kernels.contract import (
     B2_Q,
@@ -130,11 +130,12 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
         my = 0.0
         rho = density(-x[o + B2_Z], wf)
         if rho > 0.0:
-            wgx, _, wgz = wind_at(x[o + B2_Z], wf, s_mod, d_mod)
+            wgx, _, wgz = wind_point(x[o + B2_X], 0.0, x[o + B2_Z], t, wf, s_mod, d_mod, M.gp, M.gv)
             wbx = c * wgx - s * wgz
             wbz = s * wgx + c * wgz
             ua, wa = uu - wbx, ww - wbz
-            dwx, _, dwz = wind_rate(x[o + B2_Z], zd, wf, s_mod, d_mod, sd_mod, dd_mod)
+            dwx, _, dwz = wind_point_rate(x[o + B2_X], 0.0, x[o + B2_Z], xd, 0.0, zd, t, wf, s_mod, d_mod,
+                                          sd_mod, dd_mod, M.gp, M.gv)
             ex_ = q * wbz - (c * dwx - s * dwz)
             ez_ = -q * wbx - (s * dwx + c * dwz)
             d2 = ua * ua + wa * wa
@@ -186,10 +187,10 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
         prx, prz = 0.0, pgz
         psx, psz = 0.0, pgz
         if caero is not None:
-            w1, _, w3 = wind_at(er[1], wf, s_mod, d_mod)
+            w1, _, w3 = wind_point(er[0], 0.0, er[1], t, wf, s_mod, d_mod, M.gp, M.gv)
             ar1, _, ar3 = aero_load(w1 - er[2], 0.0, w3 - er[3], ux, 0.0, uz,
                                     density(-er[1], wf), dia, caero[0], caero[1])
-            w1, _, w3 = wind_at(es[1], wf, s_mod, d_mod)
+            w1, _, w3 = wind_point(es[0], 0.0, es[1], t, wf, s_mod, d_mod, M.gp, M.gv)
             as1, _, as3 = aero_load(w1 - es[2], 0.0, w3 - es[3], ux, 0.0, uz,
                                     density(-es[1], wf), dia, caero[0], caero[1])
             c6 = ln / 6.0

@@ -14,7 +14,7 @@ import math
 
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_at
+from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_point
 from laddermill_gym.kernels.cable import aero_load, lateral_elongation, tension_plain, tension_sag
 from laddermill_gym.kernels.contract import (
     B3_POS,
@@ -332,10 +332,10 @@ def rhs3d(t, x, u, dx, M, W, sag, caero, vehicle):
         if caero is not None:
             rho_r = density(-er[2], wf)
             rho_s = density(-es[2], wf)
-            w1, w2, w3 = wind_at(er[2], wf, s_mod, d_mod)
+            w1, w2, w3 = wind_point(er[0], er[1], er[2], t, wf, s_mod, d_mod, M.gp, M.gv)
             ar1, ar2, ar3 = aero_load(w1 - er[3], w2 - er[4], w3 - er[5], ux, uy, uz,
                                       rho_r, dia, caero[0], caero[1])
-            w1, w2, w3 = wind_at(es[2], wf, s_mod, d_mod)
+            w1, w2, w3 = wind_point(es[0], es[1], es[2], t, wf, s_mod, d_mod, M.gp, M.gv)
             as1, as2, as3 = aero_load(w1 - es[3], w2 - es[4], w3 - es[5], ux, uy, uz,
                                       rho_s, dia, caero[0], caero[1])
             c6 = ln / 6.0

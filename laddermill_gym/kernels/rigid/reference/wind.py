@@ -1,5 +1,6 @@
 """Wind and air of the reference model: the speed and direction profiles (M1)-(M2), the time modulation, the
-wind velocity and its rate along a moving point, and the air density (M3 or ISA).
+frozen gust grid (scipy's linear grid interpolation, independent of the kernels' bilinear formula), the wind
+velocity and its rate along a moving point, and the air density (M3 or ISA).
 
 Choices where the specification leaves room (the kernels make the same ones): the modulation interval is
 ``k = floor((t - t0) / dt)`` with the end values held (slope 0) outside ``0 <= k <= n-2``; at exactly ``h = h0``
@@ -110,7 +111,69 @@ def wind_velocity(wind: WindParams, position: np.ndarray, t: float) -> np.ndarra
     phi, _ = wind_direction_profile(wind, h)
     s, _, delta, _ = wind_modulation(wind, t)
     angle = phi + delta
-    return -s * V * np.array([np.cos(angle), np.sin(angle), 0.0])
+    return -s * V * np.array([np.cos(angle), np.sin(angle), 0.0]) + gust_velocity(wind, position, t)
+
+
+def _gust_axes(grid) -> np.ndarray:
+    """Rows: the global directions of the grid's u (downwind), v (right of downwind) and w (up) components."""
+    e = -np.array([np.cos(grid.heading), np.sin(grid.heading), 0.0])
+    return np.array([e, np.cross([0.0, 0.0, 1.0], e), [0.0, 0.0, -1.0]])
+
+
+def _grid_coordinates(grid, position: np.ndarray, t: float) -> tuple[float, float]:
+    """(xi, h) of a point at time t: the along-wind coordinate in the frozen, advected field and the height."""
+    e = _gust_axes(grid)[0]
+    return float(e @ position - grid.advection * t), -float(position[2])
+
+
+def _grid_interpolator(grid):
+    from scipy.interpolate import RegularGridInterpolator
+
+    n_xi, n_h, _ = grid.values.shape
+    xi = grid.xi0 + grid.dxi * np.arange(max(n_xi, 2))
+    h = grid.h0 + grid.dh * np.arange(max(n_h, 2))
+    vals = grid.values
+    if n_xi == 1:  # one column: constant along xi
+        vals = np.concatenate([vals, vals], axis=0)
+    if n_h == 1:
+        vals = np.concatenate([vals, vals], axis=1)
+    return RegularGridInterpolator((xi, h), vals, method="linear"), xi, h
+
+
+def gust_velocity(wind: WindParams, position: np.ndarray, t: float) -> np.ndarray:
+    """The frozen gust grid's velocity (global, m/s) at a point and time: scipy's linear interpolation on the
+    grid at (xi, h), with the query held inside the grid (edge values outside); zero without a grid."""
+    grid = wind.gust
+    if grid is None:
+        return np.zeros(3)
+    interp, xs, hs = _grid_interpolator(grid)
+    xi, h = _grid_coordinates(grid, position, t)
+    q = np.array([np.clip(xi, xs[0], xs[-1]), np.clip(h, hs[0], hs[-1])])
+    uvw = interp(q[None])[0]
+    return uvw @ _gust_axes(grid)
+
+
+def gust_rate(wind: WindParams, position: np.ndarray, velocity: np.ndarray, t: float) -> np.ndarray:
+    """d/dt of :func:`gust_velocity` along a point moving with global ``velocity``: the chain rule through
+    xi' = velocity . e - U and h' = -velocity[2], with the gradient of the linear interpolant in the grid cell
+    (a one-sided difference of the interpolant across the cell; 0 along an axis where the point is outside)."""
+    grid = wind.gust
+    if grid is None:
+        return np.zeros(3)
+    interp, xs, hs = _grid_interpolator(grid)
+    axes = _gust_axes(grid)
+    xi, h = _grid_coordinates(grid, position, t)
+    q = np.array([np.clip(xi, xs[0], xs[-1]), np.clip(h, hs[0], hs[-1])])
+    grad = np.zeros((2, 3))
+    for axis, (coord, nodes, step) in enumerate(((xi, xs, grid.dxi), (h, hs, grid.dh))):
+        if not nodes[0] < coord < nodes[-1]:
+            continue
+        k = min(int(np.floor((coord - nodes[0]) / step)), nodes.size - 2)
+        lo, hi = q.copy(), q.copy()
+        lo[axis], hi[axis] = nodes[k], nodes[k + 1]
+        grad[axis] = (interp(hi[None])[0] - interp(lo[None])[0]) / step
+    rates = np.array([float(velocity @ axes[0]) - grid.advection, -float(velocity[2])])
+    return (rates @ grad) @ axes
 
 
 def wind_rate(wind: WindParams, position: np.ndarray, velocity: np.ndarray, t: float) -> np.ndarray:
@@ -145,7 +208,7 @@ def wind_rate(wind: WindParams, position: np.ndarray, velocity: np.ndarray, t: f
     # w = -s V along(angle)
     dw_dh = -s * (dV_dh * along + V * dphi_dh * turn)
     dw_dt = -(ds_dt * V * along + s * V * ddelta_dt * turn)
-    return dw_dh * h_dot + dw_dt
+    return dw_dh * h_dot + dw_dt + gust_rate(wind, position, velocity, t)
 
 
 def air_density(wind: WindParams, h: float) -> float:
