@@ -1,6 +1,7 @@
 """Wind disturbances for the environments: each one is a speed factor and a direction offset as functions of
-time, sampled per episode on the environment's modulation grid and handed to the simulator's wind model
-(:meth:`laddermill_gym.model.params.WindParams.with_modulation`; the kernels interpolate linearly between samples).
+time, sampled per episode on the environment's modulation grid as a :class:`~laddermill_gym.atmosphere.field.WindField`
+(:func:`sample_wind_field`) and handed to the simulator with ``set_wind`` (the kernels interpolate linearly between
+samples).
 
 Composition: speed factors multiply, direction offsets add. A parameter given as a pair ``(low, high)`` is
 drawn uniformly from that interval at every reset with the environment's ``np_random``, so the same
@@ -17,8 +18,10 @@ from dataclasses import dataclass, field, fields
 
 import numpy as np
 
+from laddermill_gym.atmosphere.field import WindField
+
 __all__ = ["Disturbance", "DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule",
-           "DISTURBANCE_TYPES", "disturbance_from_dict", "sample_modulation"]
+           "DISTURBANCE_TYPES", "disturbance_from_dict", "sample_modulation", "sample_wind_field"]
 
 
 def _draw(value, rng: np.random.Generator, name: str) -> float:
@@ -158,6 +161,14 @@ def sample_modulation(disturbances, t_end: float, spacing: float,
     if np.any(speed < 0):
         raise ValueError(f"disturbances give a negative wind speed factor (min {speed.min():.3g})")
     return speed, direction
+
+
+def sample_wind_field(disturbances, t_end: float, spacing: float, rng: np.random.Generator) -> WindField:
+    """The :class:`~laddermill_gym.atmosphere.field.WindField` of the composed ``disturbances`` from t = 0 on
+    (:func:`sample_modulation`'s samples, no gust grid): what ``Simulator.set_wind`` and
+    ``BatchSimulator.set_wind`` take."""
+    speed, direction = sample_modulation(disturbances, t_end, spacing, rng)
+    return WindField(0.0, spacing, speed, direction)
 
 
 DISTURBANCE_TYPES: dict[str, type[Disturbance]] = {

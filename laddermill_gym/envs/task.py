@@ -14,8 +14,8 @@ from functools import lru_cache
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, sample_modulation
-from laddermill_gym.atmosphere.field import WindField
+from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, sample_wind_field
+from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.envs.actions import ActionMap, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
 from laddermill_gym.kernels.contract import B3_POS, B3_SIZE
@@ -273,7 +273,8 @@ class WingTask:
         """(obs row (obs_dim,), aux row (N_AUX,)) of one state x at t = 0 in the undisturbed wind (speed factor
         1, no direction offset), without touching the copies; raises ValueError if the mass matrix is
         singular there."""
-        model = self.batch.model._replace(tmod=np.array([0.0, 1.0]), ms=np.ones(2), md=np.zeros(2))
+        tmod, ms, md, gp, gv = pack_wind_field(WindField())  # undisturbed: factor 1, no offset, no gust grid
+        model = self.batch.model._replace(tmod=tmod, ms=ms, md=md, gp=gp, gv=gv)
         obs, aux = np.zeros(self.obs_dim), np.zeros(N_AUX)
         status = observe_state(0.0, np.array(x, dtype=float), np.array(u, dtype=float), model,
                                make_workspace(self.scene.assembly), self.nominal, self.below, self.ground, obs, aux)
@@ -289,8 +290,7 @@ class WingTask:
         b = self.batch
         idx = np.flatnonzero(mask)
         for i in idx:
-            speed, direction = sample_modulation(self.disturbances, self.episode_time, self.wind_dt, rngs[i])
-            b.set_wind(int(i), WindField(0.0, self.wind_dt, speed, direction))
+            b.set_wind(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rngs[i]))
         b.states[idx] = self.x_trim
         b.controls[idx] = self.u_trim
         b.t[idx] = 0.0

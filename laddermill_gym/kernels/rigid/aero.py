@@ -40,10 +40,10 @@ def spline_eval(ac, k, alpha, a0, da, out):
     n_int = ac.shape[1]
     two_pi = 2.0 * math.pi
     a = alpha - a0
-    if a < 0.0 or a >= two_pi:
+    if not abs(a) < 1e300:  # NaN or infinite alpha (a non-finite state, reported by the integrator's check)
+        a = 0.0  # never a NaN index
+    elif a < 0.0 or a >= two_pi:
         a = a - two_pi * math.floor(a / two_pi)
-    if a != a:  # NaN or infinite alpha (a non-finite state, reported by the integrator's check): never a NaN index
-        a = 0.0
     i = int(a / da)
     if i >= n_int:
         i = n_int - 1
