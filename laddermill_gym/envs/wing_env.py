@@ -104,7 +104,8 @@ OBS_TABLE
     def __getstate__(self):
         b = self.task.batch
         return {"kwargs": self._kwargs, "render_mode": self.render_mode, "np_random": self._np_random,
-                "arrays": (b.states.copy(), b.controls.copy(), b.t.copy(), *[None if a is None else a.copy() for a in b.air],
+                "arrays": (b.states.copy(), b.controls.copy(), b.t.copy(),
+                           *[None if a is None else a.copy() for a in b.air],
                            self.task.steps.copy(), self.task.last_action.copy(),
                            None if self.task.actions.alpha_servo is None else self.task.actions.alpha_servo.copy()),
                 "needs_reset": self._needs_reset}
@@ -115,7 +116,7 @@ OBS_TABLE
         b = self.task.batch
         (b.states[:], b.controls[:], b.t[:], *air, self.task.steps[:], self.task.last_action[:],
          servo) = state["arrays"]
-        for mine, saved in zip(b.air, air):
+        for mine, saved in zip(b.air, air, strict=True):
             if mine is not None:
                 mine[:] = saved
         if servo is not None:

@@ -37,7 +37,8 @@ def copy_views(b, M, kind, vehicle, WB, AB):
     """(model, workspace) of copy ``b``: the shared model (markers ``kind`` and ``vehicle``) with that copy's air
     (row b of the batched :class:`~laddermill_gym.kernels.contract.KAir` AB: wind modulation and gust grid), and
     views of the copy's rows of the batched workspace WB (no copies made)."""
-    Mb = KModel(kind, M.wf, AB.tmod[b], AB.ms[b], AB.md[b], row_or_none(AB.gp, b), row_or_none(AB.gv, b), M.glob, M.wtype, M.tf, M.ac,
+    Mb = KModel(kind, M.wf, AB.tmod[b], AB.ms[b], AB.md[b], row_or_none(AB.gp, b), row_or_none(AB.gv, b), M.glob,
+                M.wtype, M.tf, M.ac,
                 M.node_mass, M.fixed, M.ek, M.ei, M.ea, M.ef, M.ekd, M.echild, M.order, M.parent, M.bsz, M.sag,
                 M.caero, vehicle)
     Wb = KWork(WB.D[b], WB.U[b], WB.Y[b], WB.piv[b], WB.bv[b], WB.Rw[b], WB.tension[b], WB.Tr[b],

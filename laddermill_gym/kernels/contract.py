@@ -68,7 +68,8 @@ DENSITY_BAROMETRIC, DENSITY_ISA = 0.0, 1.0
 TM_T0, TM_DT, TM_SIZE = 0, 1, 2
 #: Frozen gust grid header ``gp`` (``atmosphere/field.py``): along-wind coordinate of the first grid column
 #: xi0 [m] and spacing [m], height of the first grid row [m] and spacing [m], columns and rows [-] (0 columns:
-#: an empty row of a batch), advection speed of the frozen field [m/s], downwind unit vector (x, y) of the grid's u axis [-].
+#: an empty row of a batch), advection speed of the frozen field [m/s], downwind unit vector (x, y) of the grid's
+#: u axis [-].
 GP_XI0, GP_DXI, GP_H0, GP_DH, GP_NXI, GP_NH, GP_ADVECTION, GP_EX, GP_EY, GP_SIZE = range(10)
 #: Components of a gust grid sample ``gv`` (flat, index ((i n_h + j) GV_SIZE + c)): along the mean wind u,
 #: lateral v (to the right looking downwind), vertical w (up) [m/s].

@@ -13,6 +13,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from laddermill_gym.atmosphere.field import GustGrid, WindField
+from laddermill_gym.kernels.contract import B2_SIZE, B3_SIZE, N2_SIZE, N3_SIZE
+from laddermill_gym.kernels.contract import END_FIXED as END_FIXED
+from laddermill_gym.kernels.contract import END_NODE as END_NODE
+from laddermill_gym.kernels.contract import END_WING as END_WING
+from laddermill_gym.kernels.contract import N_CONTROLS as N_CONTROLS
 
 #: Column names of a wing's aerodynamic table, in kernel order (see docs/model.md, "Wing aerodynamics").
 AERO_COLUMNS: tuple[str, ...] = (
@@ -25,11 +30,8 @@ AERO_COLUMNS: tuple[str, ...] = (
 )
 AERO_INDEX: dict[str, int] = {name: i for i, name in enumerate(AERO_COLUMNS)}
 
-#: End kinds of a cable element.
-END_WING, END_NODE, END_FIXED = 0, 1, 2
-
-#: Number of controls per wing: elevator, rudder, aileron [rad].
-N_CONTROLS = 3
+# End kinds of a cable element (END_WING, END_NODE, END_FIXED) and controls per wing (N_CONTROLS: elevator,
+# rudder, aileron [rad]) are the contract's names, re-exported above.
 CONTROL_NAMES: tuple[str, ...] = ("elevator", "rudder", "aileron")
 
 
@@ -212,11 +214,11 @@ class Assembly:
 
     @property
     def wing_state_size(self) -> int:
-        return 13 if self.dim == 3 else 6
+        return B3_SIZE if self.dim == 3 else B2_SIZE
 
     @property
     def node_state_size(self) -> int:
-        return 6 if self.dim == 3 else 4
+        return N3_SIZE if self.dim == 3 else N2_SIZE
 
     @property
     def state_size(self) -> int:

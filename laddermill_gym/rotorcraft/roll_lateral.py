@@ -33,6 +33,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from laddermill_gym.atmosphere.wind_kernels import density, modulation, profile, wind_at
+from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_RATE, B3_SIZE, B3_VEL, N3_POS, N3_SIZE, TM_DT, TM_T0
 from laddermill_gym.model.states import rotation_from_euler
 from laddermill_gym.rotorcraft import craft_kernels as _kc
 
@@ -102,15 +103,15 @@ def derive_roll_lateral(sim, x: np.ndarray | None = None, u: np.ndarray | None =
     out = sim.work.vout.copy()
     R0 = rotation_from_euler(*sim_euler(x))
     b = R0 @ _EX
-    pos = x[0:3]
+    pos = x[B3_POS: B3_POS + 3]
     M = np.diag([cfg.mass, cfg.inertia[0]])
     K = np.zeros((2, 2))
     D = np.zeros((2, 2))
     _add_tethers(asm, x, tension, pos, R0, b, cfg.gravity, M, D, K)
     # rotors, fins and drag: body-frame loads; tilting their resultant with the body (global y force only)
-    F_body = out[0:3]
+    F_body = out[_kc.V_FORCE: _kc.V_FORCE + 3]
     K[0, 1] -= (np.cross(b, R0 @ F_body))[1]
-    s_mod, d_mod, _, _ = modulation(0.0, model.tmod[0], model.tmod[1], model.ms, model.md)
+    s_mod, d_mod, _, _ = modulation(0.0, model.tmod[TM_T0], model.tmod[TM_DT], model.ms, model.md)
     beta_in = _add_rotors(cfg, model.wf, s_mod, d_mod, out, pos, R0, b, D, K)
     _add_fins_and_drag(cfg, model.wf, s_mod, d_mod, pos, R0, D, K)
     return RollLateralModel(M=M, D=D, K=K, b=np.array([0.0, beta_in]))
@@ -121,7 +122,7 @@ def _add_tethers(asm, x, tension, pos, R0, b, g, M, D, K) -> None:
     stiffness S = k n n^T + (T / l)(I - n n^T) with Voigt damping DA / l0 along n and the consistent end mass
     m_e / 3; the moment changes also because the attachment arm turns with the roll."""
     el = asm.elements
-    nodes = x[13:].reshape(-1, 6)[:, 0:3] if asm.n_nodes else np.zeros((0, 3))
+    nodes = x[B3_SIZE:].reshape(-1, N3_SIZE)[:, N3_POS: N3_POS + 3] if asm.n_nodes else np.zeros((0, 3))
     for e in range(el.count):
         for end in range(2):
             if el.end_kind[e, end] != 0:  # not the craft's end
@@ -214,25 +215,23 @@ def sim_euler(x: np.ndarray) -> np.ndarray:
     """3-2-1 Euler angles (phi, theta, psi) [rad] of the craft (body 0) in state x."""
     from laddermill_gym.model.states import euler_from_quaternion
 
-    return np.asarray(euler_from_quaternion(x[3:7]))
+    return np.asarray(euler_from_quaternion(x[B3_QUAT: B3_QUAT + 4]))
 
 
 def _perturbed(x: np.ndarray, dy: float, dphi: float, dvy: float, dp: float) -> np.ndarray:
     """State x with the craft moved by dy (global y) [m], rolled by dphi about its body x axis [rad], given a
     global lateral velocity dvy [m/s] and a roll rate dp [rad/s]."""
     z = x.copy()
-    z[1] += dy
+    z[B3_POS + 1] += dy
     if dphi:
-        q = x[3:7]
+        q = x[B3_QUAT: B3_QUAT + 4]
         c, s_ = math.cos(0.5 * dphi), math.sin(0.5 * dphi)
         # q (x) (cos, sin, 0, 0): rotation about the body x axis
-        z[3] = q[0] * c - q[1] * s_
-        z[4] = q[1] * c + q[0] * s_
-        z[5] = q[2] * c + q[3] * s_
-        z[6] = q[3] * c - q[2] * s_
+        z[B3_QUAT: B3_QUAT + 4] = (q[0] * c - q[1] * s_, q[1] * c + q[0] * s_, q[2] * c + q[3] * s_,
+                                   q[3] * c - q[2] * s_)
     R = rotation_from_euler(*sim_euler(z))
-    z[7:10] += R.T @ (_EY * dvy)
-    z[10] += dp
+    z[B3_VEL: B3_VEL + 3] += R.T @ (_EY * dvy)
+    z[B3_RATE] += dp
     return z
 
 
@@ -240,7 +239,7 @@ def _lateral_accelerations(sim, x: np.ndarray, u: np.ndarray) -> np.ndarray:
     """(global lateral acceleration [m/s^2], roll acceleration p' [rad/s^2]) of the craft at rest-ish state x."""
     dx = sim.rhs(0.0, x, u)
     R = rotation_from_euler(*sim_euler(x))
-    return np.array([(R @ dx[7:10])[1], dx[10]])
+    return np.array([(R @ dx[B3_VEL: B3_VEL + 3])[1], dx[B3_RATE]])
 
 
 def restricted_jacobian(sim, x: np.ndarray | None = None, u: np.ndarray | None = None, h: float = 1e-5

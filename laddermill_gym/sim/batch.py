@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.kernels.batch import detach_markers, rk4_batch
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
+from laddermill_gym.kernels.batch import detach_markers, rk4_batch
 from laddermill_gym.kernels.contract import GP_SIZE, KAir, KWork
 from laddermill_gym.kernels.integrate import OK
 from laddermill_gym.kernels.rigid.kinds import WING

@@ -127,7 +127,8 @@ def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX
     Parallel over the copies (numba prange).
 
     t (B,) [s] is each copy's time before the steps (not advanced here); X (B, n_state), U (B, n_controls);
-    per-copy air AB (a ``KAir`` of arrays with a leading copy axis: wind modulation and gust grid); WB a KWork with a leading batch axis; DX (B,
+    per-copy air AB (a ``KAir`` of arrays with a leading copy axis: wind modulation and gust grid); WB a KWork
+    with a leading batch axis; DX (B,
     n_state) scratch; nominal (n_wings, 3) [m]; below (n_wings,) element below each wing; ground (2,) ground
     elements (start, end; -1 if none). M comes without its markers, passed as ``kind`` and ``vehicle``
     (``kernels.batch.detach_markers``). Writes obs (B, 15 n_wings), aux (B, N_AUX), status (B,) and done (B,)
