@@ -20,6 +20,7 @@ import time
 import numpy as np
 from numba import njit
 
+from laddermill_gym.kernels.contract import B3_RATE, B3_SIZE, B3_VEL
 from laddermill_gym.kernels.integrate import rhs as rhs_kernel
 from laddermill_gym.kernels.integrate import rk4_advance
 from laddermill_gym.sim.simulator import SimulationError, Simulator
@@ -103,8 +104,8 @@ def largest_stable_dt(scene, x0, u0, horizon: float = 4.0, tol: float = 0.01, it
     a = scene.assembly
     if a.dim == 3:
         for k in range(a.n_wings):
-            x_pert[13 * k + 8] += 0.2 * rng.normal()   # sideways velocity [m/s]
-            x_pert[13 * k + 10] += 0.02 * rng.normal()  # roll rate [rad/s]
+            x_pert[B3_SIZE * k + B3_VEL + 1] += 0.2 * rng.normal()  # sideways velocity [m/s]
+            x_pert[B3_SIZE * k + B3_RATE] += 0.02 * rng.normal()  # roll rate [rad/s]
     ref = Simulator(a, x_pert, dataclasses.replace(scene.settings, method="dp54"), u0)
     ref.advance_to(horizon, rtol=1e-9, atol=1e-9)
     pos_ref = np.vstack([ref.wing_positions(), ref.node_positions()])
