@@ -61,8 +61,8 @@ class EpisodeResults:
 
 def run_episodes(controller, env, n_episodes: int | None = None, record: bool = True,
                  progress: bool = False) -> EpisodeResults:
-    """Run ``controller`` deterministically on every copy of the vector env ``env``
-    (:class:`~laddermill_gym.envs.vector.WingVectorEnv` or
+    """Run ``controller`` deterministically on every copy of the native vector env ``env`` (:func:`vector_env`:
+    :class:`~laddermill_gym.envs.vector.WingVectorEnv` or
     :class:`~laddermill_gym.envs.rotorcraft.vector.RotorcraftVectorEnv`, seeds 0 .. num_envs - 1), each copy to
     the end of its first episode. The lateral offsets come from ``env.lateral_offsets(obs)`` where the env has
     it, else from the wing observation layout."""
@@ -182,29 +182,23 @@ def controller_label(spec: str) -> str:
 def check_env_kwargs(env_id: str, env_kwargs: dict) -> None:
     """ValueError naming an argument (and its value) that the registered environment ``env_id`` does not take,
     e.g. a scenario's ``disturbances`` or ``episode_time`` for an environment without them."""
-    import inspect
+    from laddermill_gym.envs import env_arguments
 
-    from laddermill_gym.envs.rotorcraft.vector import CRAFT_ENV_KWARGS, is_craft_env
-    from laddermill_gym.envs.task import WingTask
-
-    if is_craft_env(env_id):
-        known = CRAFT_ENV_KWARGS
-    else:
-        known = tuple(k for k in inspect.signature(WingTask).parameters if k != "n_copies")
+    known = env_arguments(env_id)
     for key, value in env_kwargs.items():
         if key not in known:
             raise ValueError(f"{key} = {value!r}: {env_id} takes no such argument (known: {', '.join(known)})")
 
 
 def vector_env(env_id: str, n: int, env_kwargs: dict):
-    """``n`` copies of the registered environment ``env_id`` (arguments ``env_kwargs`` over the registered ones)
-    with the batched API of :func:`run_episodes` (checked by :func:`check_env_kwargs`)."""
-    from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv, is_craft_env
-    from laddermill_gym.envs.vector import WingVectorEnv
+    """``n`` copies of the registered environment ``env_id`` (arguments ``env_kwargs`` over the registered ones,
+    checked by :func:`check_env_kwargs`): its native vector env (Gymnasium's ``vector_entry_point``), stepped by
+    one compiled kernel."""
+    import gymnasium as gym
 
     check_env_kwargs(env_id, env_kwargs)
     kw = dict(ENV_IDS[env_id], **env_kwargs)
-    return RotorcraftVectorEnv(n, **kw) if is_craft_env(env_id) else WingVectorEnv(n, **kw)
+    return gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **kw)
 
 
 def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dict, out: Path,

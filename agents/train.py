@@ -9,9 +9,9 @@ scenario, seeds 0 .. n - 1, against wall time and env steps), ``best_model.zip``
 ``best_vecnormalize.pkl``, ``model.zip`` (last) with ``vecnormalize.pkl`` (observation statistics) and
 ``training_curve.png`` (with the LQR and open-loop returns on the same episodes, also in ``references.csv``).
 Training stops at ``total_timesteps`` or ``time_limit_minutes``, whichever comes first. A progress bar shows
-steps, episodes and the latest evaluation. The wing environments train on their batched kernel; Rotorcraft-v0
-(configs/agents/ppo_rotorcraft.yaml) on SB3's ``DummyVecEnv`` of single envs
-(:mod:`laddermill_gym.envs.rotorcraft.vector`).
+steps, episodes and the latest evaluation. Every environment (the wings and Rotorcraft-v0,
+configs/agents/ppo_rotorcraft.yaml) trains and evaluates on its batched kernel (:mod:`laddermill_gym.envs.sb3`,
+the native vector env).
 """
 
 from __future__ import annotations
@@ -120,11 +120,7 @@ def reference_returns(cfg: RLConfig, eval_env) -> dict[str, float]:
     training curve; empty where the action layout does not suit them (grouped or angle-of-attack actions)."""
     from laddermill_gym.control.factory import make_controller
 
-    if cfg.is_craft:
-        kw = cfg.carried_env_kwargs()
-    else:
-        kw = {k: v for k, v in cfg.env_kwargs.items()
-              if k in ("action_mode", "groups", "control_dt", "physics_dt", "scene_options")}
+    kw = cfg.carried_env_kwargs()
     refs = {}
     for spec in ("lqr", "open_loop"):
         try:
@@ -137,28 +133,18 @@ def reference_returns(cfg: RLConfig, eval_env) -> dict[str, float]:
 
 
 def training_env(cfg: RLConfig):
-    """The SB3 VecEnv of ``cfg.n_envs`` seeded training copies: the batched wing task, or for the rotorcraft
-    (no batched kernel) SB3's ``DummyVecEnv`` of single envs."""
-    if cfg.is_craft:
-        from laddermill_gym.envs.rotorcraft.vector import craft_sb3_vec_env
+    """The SB3 VecEnv of ``cfg.n_envs`` seeded training copies on the environment's batched task."""
+    from laddermill_gym.envs.sb3 import sb3_vec_env
 
-        return craft_sb3_vec_env(cfg.n_envs, seed=cfg.seed, **cfg.train_env_kwargs())
-    from laddermill_gym.envs.sb3 import WingSB3VecEnv
-
-    venv = WingSB3VecEnv(cfg.n_envs, **cfg.train_env_kwargs())
-    venv.seed(cfg.seed)
-    return venv
+    return sb3_vec_env(cfg.env_id, cfg.n_envs, seed=cfg.seed, **cfg.train_env_kwargs())
 
 
 def evaluation_env(cfg: RLConfig):
-    """``cfg.eval_episodes`` copies of the registered evaluation scenario with the harness's batched API."""
-    if cfg.is_craft:
-        from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv
+    """``cfg.eval_episodes`` copies of the registered evaluation scenario: the native vector env."""
+    import gymnasium as gym
 
-        return RotorcraftVectorEnv(cfg.eval_episodes, **cfg.eval_env_kwargs())
-    from laddermill_gym.envs.vector import WingVectorEnv
-
-    return WingVectorEnv(cfg.eval_episodes, **cfg.eval_env_kwargs())
+    return gym.make_vec(cfg.env_id, num_envs=cfg.eval_episodes, vectorization_mode="vector_entry_point",
+                        **cfg.eval_env_kwargs())
 
 
 def train(cfg: RLConfig, out: Path) -> dict:

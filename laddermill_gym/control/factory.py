@@ -32,10 +32,11 @@ def _env_scene(env_kwargs: dict):
 
 def _craft_controller(spec: str, kw: dict) -> Controller:
     """Open loop (trim collective, no differential) or the eq. (6) LQR for Rotorcraft-v0."""
-    from laddermill_gym.envs.rotorcraft import env as re_
+    from laddermill_gym.envs.rotorcraft import observation as ro
+    from laddermill_gym.envs.rotorcraft import trim as rt
 
     if spec == "open_loop":
-        return re_.open_loop_controller(kw)
+        return rt.open_loop_controller(kw)
     from laddermill_gym.control.craft_lqr import (
         DEFAULT_CRAFT_LQR,
         CraftLQRController,
@@ -45,16 +46,16 @@ def _craft_controller(spec: str, kw: dict) -> Controller:
 
     path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_CRAFT_LQR
     cfg = load_craft_lqr_config(path)
-    craft_cfg = re_.load_craft_config(kw["craft"])
+    craft_cfg = rt.craft_config(str(kw["craft"]))
     wind = craft_cfg.wind.v0 if kw.get("wind_speed") is None else float(kw["wind_speed"])
     for name, mine, env in (("craft", cfg.craft, kw["craft"]), ("wind_speed", cfg.wind_speed, wind),
                             ("control_period", cfg.control_period, kw["control_dt"])):
         if mine != env:
             raise ValueError(f"{path}: {name} = {mine!r} differs from the environment's {env!r}")
     design = design_craft_lqr(cfg)
-    mid, half = re_._control_ranges(craft_cfg)
-    idx = (re_.OBS_Y, re_.OBS_PHI, re_.OBS_VY, re_.OBS_P)
-    return CraftLQRController(design.gain, idx, re_.N_CRAFT_OBS, design.u_trim[0], mid, half)
+    mid, half = rt.control_ranges(craft_cfg)
+    idx = (ro.OBS_Y, ro.OBS_PHI, ro.OBS_VY, ro.OBS_P)
+    return CraftLQRController(design.gain, idx, ro.N_CRAFT_OBS, design.u_trim[0], mid, half)
 
 
 def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> Controller:

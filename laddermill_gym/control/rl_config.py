@@ -44,8 +44,8 @@ class RLConfig:
     file : Path
     algorithm : "PPO" or "SAC"
     env_id : registered environment id (:data:`laddermill_gym.envs.ENV_IDS`)
-    n_envs : copies stepped together (wings: one batched kernel, :class:`~laddermill_gym.envs.sb3.WingSB3VecEnv`;
-        the rotorcraft: SB3's ``DummyVecEnv`` of :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`)
+    n_envs : copies stepped together by the environment's batched kernel (:func:`laddermill_gym.envs.sb3.sb3_vec_env`
+        over :class:`~laddermill_gym.envs.task.WingTask` or :class:`~laddermill_gym.envs.rotorcraft.task.CraftTask`)
     env_kwargs : overrides of the registered env arguments for training (episode_time [s], reward, ...):
         WingTask's arguments (:data:`ENV_KWARGS`) or, for Rotorcraft-v0, RotorcraftEnv's (:data:`CRAFT_ENV_KWARGS`)
     disturbances : list of disturbance mappings for training (``type`` plus parameters; ranges drawn per episode)

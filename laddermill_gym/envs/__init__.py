@@ -10,18 +10,26 @@ Registered on ``import laddermill_gym``:
   RK4 step, 20 Hz control of collective and differential collective, 120 s episodes, a 0.01 rad direction
   step at 1 s), :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`.
 
-The wing environments have a native batched ``vector_entry_point`` (:class:`~laddermill_gym.envs.vector.WingVectorEnv`):
-``gymnasium.make_vec(id, num_envs=n, vectorization_mode="vector_entry_point")``.
+Every environment has a native batched ``vector_entry_point`` (:class:`~laddermill_gym.envs.vector.WingVectorEnv`,
+:class:`~laddermill_gym.envs.rotorcraft.vector.RotorcraftVectorEnv`): one compiled kernel steps all copies,
+``gymnasium.make_vec(id, num_envs=n, vectorization_mode="vector_entry_point")``. Each is a task with B copies
+(:class:`~laddermill_gym.envs.task.WingTask`, :class:`~laddermill_gym.envs.rotorcraft.task.CraftTask`), whose
+arguments are the environment's (:func:`env_arguments`).
 """
+
+import importlib
+import inspect
 
 from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
 from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
+from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv
 from laddermill_gym.envs.task import FAILURES, RewardConfig, TerminationConfig, WingTask
 from laddermill_gym.envs.vector import WingVectorEnv
 from laddermill_gym.envs.wing_env import WingEnv
 
 __all__ = ["DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule", "FAILURES", "RewardConfig",
-           "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "RotorcraftEnv", "ENV_IDS", "register_envs"]
+           "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "RotorcraftEnv", "RotorcraftVectorEnv",
+           "ENV_IDS", "ENTRY_POINTS", "register_envs", "task_class", "env_arguments"]
 
 #: Registered environment ids and their default arguments (units: seconds).
 ENV_IDS: dict[str, dict] = {
@@ -31,8 +39,35 @@ ENV_IDS: dict[str, dict] = {
                                           groups="per_wing"),
     "laddermill_gym/Rotorcraft-v0": dict(craft="roberts_flying_model", control_dt=0.05, episode_time=120.0),
 }
-#: Entry points of the environments that are not wing scenes (no batched vector entry point).
-_ENTRY_POINTS: dict[str, str] = {"laddermill_gym/Rotorcraft-v0": "laddermill_gym.envs.rotorcraft.env:RotorcraftEnv"}
+_WING = ("laddermill_gym.envs.wing_env:WingEnv", "laddermill_gym.envs.vector:WingVectorEnv",
+         "laddermill_gym.envs.task:WingTask")
+#: Entry points of every registered id: (single env, native vector env, the task with B copies behind both).
+ENTRY_POINTS: dict[str, tuple[str, str, str]] = {
+    "laddermill_gym/TetheredWing-v0": _WING,
+    "laddermill_gym/LadderChain-v0": _WING,
+    "laddermill_gym/Rotorcraft-v0": ("laddermill_gym.envs.rotorcraft.env:RotorcraftEnv",
+                                     "laddermill_gym.envs.rotorcraft.vector:RotorcraftVectorEnv",
+                                     "laddermill_gym.envs.rotorcraft.task:CraftTask"),
+}
+
+
+def _check_id(env_id: str) -> None:
+    if env_id not in ENV_IDS:
+        raise ValueError(f"env_id = {env_id!r}: must be one of {sorted(ENV_IDS)}")
+
+
+def task_class(env_id: str) -> type:
+    """The task class behind the registered environment ``env_id`` (``WingTask`` or ``CraftTask``): its first
+    argument is the number of copies, the others are the environment's."""
+    _check_id(env_id)
+    module, name = ENTRY_POINTS[env_id][2].split(":")
+    return getattr(importlib.import_module(module), name)
+
+
+def env_arguments(env_id: str) -> tuple[str, ...]:
+    """The keyword arguments the registered environment ``env_id`` takes (single and vector env alike; the task's
+    arguments but the number of copies and the thread-pool switch ``parallel``)."""
+    return tuple(p for p in inspect.signature(task_class(env_id)).parameters if p not in ("n_copies", "parallel"))
 
 
 def register_envs() -> None:
@@ -46,9 +81,6 @@ def register_envs() -> None:
     for env_id, kwargs in ENV_IDS.items():
         if env_id in gym.registry:
             continue
-        if env_id in _ENTRY_POINTS:
-            gym.register(id=env_id, entry_point=_ENTRY_POINTS[env_id], kwargs=kwargs, disable_env_checker=False)
-            continue
-        gym.register(id=env_id, entry_point="laddermill_gym.envs.wing_env:WingEnv",
-                     vector_entry_point="laddermill_gym.envs.vector:WingVectorEnv", kwargs=kwargs,
+        single, vector, _ = ENTRY_POINTS[env_id]
+        gym.register(id=env_id, entry_point=single, vector_entry_point=vector, kwargs=kwargs,
                      disable_env_checker=False)

@@ -179,12 +179,13 @@ class CraftSimulator(Simulator):
         incidence [rad], blade pitch [rad]; plus ``force_body`` (3,) [N] and ``moment_body`` (3,) [N m]."""
         self.rhs(self.t, self.state, self.controls)
         out = self.work.vout
-        blocks = out[6:].reshape(2, _kc.N_RO)
+        blocks = out[_kc.V_ROTOR:].reshape(2, _kc.N_RO)
         names = {"thrust_N": _kc.R_THRUST, "hforce_N": _kc.R_HFORCE, "torque_Nm": _kc.R_TORQUE,
                  "power_W": _kc.R_POWER, "mu": _kc.R_MU, "lambda": _kc.R_LAMBDA, "ct": _kc.R_CT,
                  "tip_incidence_rad": _kc.R_TIP_AOA, "pitch_rad": _kc.R_THETA}
         res = {k: blocks[:, j].copy() for k, j in names.items()}
-        res["force_body"], res["moment_body"] = out[0:3].copy(), out[3:6].copy()
+        res["force_body"] = out[_kc.V_FORCE: _kc.V_FORCE + 3].copy()
+        res["moment_body"] = out[_kc.V_MOMENT: _kc.V_MOMENT + 3].copy()
         return res
 
     def electrical_power(self) -> float:

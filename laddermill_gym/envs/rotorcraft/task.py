@@ -1,0 +1,363 @@
+"""The rotorcraft task shared by the single and the vector environments: B copies of Roberts' craft on one
+:class:`~laddermill_gym.sim.batch.BatchSimulator`, stepped by one compiled kernel per control period
+(:mod:`laddermill_gym.rotorcraft.craft_observe`), with actions, observations, rewards, terminations and wind
+disturbances composed around it.
+
+A single environment is the task with B = 1, so single and vector environments run the same code and agree
+bit for bit (tests/test_rotorcraft_vector.py checks it), as the wing environments do with
+:class:`~laddermill_gym.envs.task.WingTask`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import namedtuple
+
+import numpy as np
+
+from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, disturbance_from_dict, sample_modulation
+from laddermill_gym.envs.rotorcraft.observation import OBS_P, OBS_R, OBS_Y, craft_observation_bounds
+from laddermill_gym.envs.rotorcraft.settings import (
+    InitialNoise,
+    RotorcraftRewardConfig,
+    RotorcraftTerminationConfig,
+    config_from,
+)
+from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim
+from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_VEL
+from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
+from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
+from laddermill_gym.rotorcraft.craft import TETHER_NAMES, CraftSimulator
+from laddermill_gym.rotorcraft.craft_observe import (
+    CA_ALTITUDE,
+    CA_INFLOW_OK,
+    CA_MAX_ELEMENT,
+    CA_MAX_TENSION,
+    CA_POWER,
+    CA_TENSION,
+    CA_THRUST,
+    CA_TIP_AOA,
+    CO_EULER,
+    CO_THRUST,
+    N_CRAFT_AUX,
+    N_CRAFT_OBS,
+    REF_POSITION,
+    REF_SIZE,
+    REF_TENSION,
+    REF_THRUST,
+    craft_step_observe_batch,
+    craft_step_observe_serial,
+)
+from laddermill_gym.sim.batch import BatchSimulator
+
+__all__ = ["CraftTask", "CRAFT_FAILURES", "CraftScene"]
+
+#: Termination causes (code -> name); 0: still flying.
+CRAFT_FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state, speed or rate limit)",
+                                  2: "rotor inflow failed", 3: "ground contact", 4: "tether over its breaking load",
+                                  5: "attitude out of range"}
+_STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit exceeded"}
+#: What the scene renderer reads of a task's scene: the built assembly and a name.
+CraftScene = namedtuple("CraftScene", ["assembly", "name"])
+
+
+def _positive(name: str, v, unit: str) -> float:
+    if not (isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) and v > 0):
+        raise ValueError(f"{name} = {v!r}: must be a finite number > 0 {unit}")
+    return float(v)
+
+
+def _disturbances(disturbances) -> tuple[Disturbance, ...]:
+    if disturbances is None:
+        return (DirectionStep(),)
+    out = []
+    for i, d in enumerate(disturbances):
+        if isinstance(d, dict):
+            d = disturbance_from_dict(d, f"disturbances[{i}]")
+        if not isinstance(d, Disturbance):
+            raise ValueError(f"disturbances[{i}] = {d!r}: not a Disturbance or its config dict")
+        out.append(d)
+    return tuple(out)
+
+
+class CraftTask:
+    """B copies of Roberts' tethered twin-rotor craft as an RL task.
+
+    Parameters (those of :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`, which documents the task)
+    ----------
+    n_copies : int
+        B.
+    craft : str
+        Craft name in configs/rotorcraft/ or a YAML path.
+    wind_speed : float, optional
+        Wind speed v0 at h0 [m/s] (default: the config's).
+    collective : float, optional
+        Trim collective [rad] (default: the config's).
+    control_dt : float
+        Control period [s]; the action is held over it; a whole multiple of the physics step.
+    physics_dt : float, optional
+        RK4 step [s] (default: the config's).
+    episode_time : float
+        Episode length [s]; ``truncated`` when it is reached.
+    disturbances : sequence of Disturbance or their config dicts
+        Wind disturbances composed per episode (default: a 0.01 rad direction step at 1 s).
+    wind_dt : float
+        Spacing [s] of the sampled wind modulation.
+    initial_noise, reward, termination : dict or InitialNoise / RotorcraftRewardConfig / RotorcraftTerminationConfig
+    parallel : bool, optional
+        Step the copies on numba's thread pool (default: when B >= 32).
+
+    Attributes
+    ----------
+    obs : (B, 19) float64, the clipped observations;  raw_obs : (B, 19) float64, as the kernel wrote them;
+    aux : (B, N_CRAFT_AUX) float64 (``craft_observe.CA_*``);  steps : (B,) control periods since the reset;
+    batch : the BatchSimulator (states, controls, t, wind modulation, status).
+    """
+
+    #: One lateral offset per copy (the harness's lateral read-out) and the craft's failure names.
+    n_wings = 1
+    failure_names = CRAFT_FAILURES
+
+    def __init__(self, n_copies: int = 1, craft: str = DEFAULT_CRAFT, wind_speed: float | None = None,
+                 collective: float | None = None, control_dt: float = 0.05, physics_dt: float | None = None,
+                 episode_time: float = 120.0, disturbances=None, wind_dt: float = 0.1, initial_noise=None,
+                 reward=None, termination=None, parallel: bool | None = None):
+        if isinstance(n_copies, bool) or int(n_copies) != n_copies or n_copies < 1:
+            raise ValueError(f"n_copies = {n_copies!r}: must be a positive integer")
+        self.control_dt = _positive("control_dt", control_dt, "s")
+        self.episode_time = _positive("episode_time", episode_time, "s")
+        self.wind_dt = _positive("wind_dt", wind_dt, "s")
+        if wind_speed is not None:
+            wind_speed = _positive("wind_speed", wind_speed, "m/s")
+        if physics_dt is not None:
+            physics_dt = _positive("physics_dt", physics_dt, "s")
+        self.disturbances = _disturbances(disturbances)
+        self.reward_config = config_from(reward, RotorcraftRewardConfig, "reward")
+        self.termination_config = config_from(termination, RotorcraftTerminationConfig, "termination")
+        self.initial_noise = config_from(initial_noise, InitialNoise, "initial_noise")
+        self.craft, self.x_trim, self.u_trim = craft_trim(str(craft), wind_speed, collective, physics_dt)
+        cfg = self.craft.config
+        dt = cfg.settings.dt
+        self.n_substeps = int(round(self.control_dt / dt))
+        if self.n_substeps < 1 or abs(self.n_substeps * dt - self.control_dt) > 1e-9 * self.control_dt:
+            raise ValueError(f"control_dt = {control_dt!r} s is not a whole multiple of the physics step {dt!r} s")
+        self.n_steps_max = int(round(self.episode_time / self.control_dt))
+        self.n_copies = int(n_copies)
+        self.parallel = self.n_copies >= 32 if parallel is None else bool(parallel)
+        self._build_batch()
+        self._references()
+        rc, tc = self.reward_config, self.termination_config
+        self.lateral_scale = rc.lateral_scale if rc.lateral_scale is not None else 0.05 * cfg.tethers.length
+        span = cfg.hub_spacing + 2.0 * cfg.rotor_radius
+        self.min_altitude = tc.min_altitude if tc.min_altitude is not None else 0.5 * span
+        self.breaking_tension = tc.breaking_factor * cfg.tethers.cable.breaking_load
+        self.obs_low, self.obs_high = craft_observation_bounds(cfg, self.craft.layout.lengths, self.tension_trim)
+        self.mid, self.half = control_ranges(cfg)
+        self.trim_action = ((self.u_trim - self.mid) / self.half).astype(np.float32)
+        self.n_actions = 2
+        self.last_action = np.tile(self.trim_action.astype(float), (self.n_copies, 1))
+        self._clip_obs()
+
+    # ------------------------------------------------------------------ construction
+    def _build_batch(self) -> None:
+        """The batch of B copies at the trim, its kernel and scratch, and a single simulator of the craft for
+        read-outs (linearisation, diagnosis)."""
+        c, B = self.craft, self.n_copies
+        self.sim = CraftSimulator(c.config, c.assembly, c.layout, self.x_trim, self.u_trim)
+        self.scene = CraftScene(c.assembly, c.config.name)
+        n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
+        self.batch = BatchSimulator(c.assembly, B, c.config.settings, n_modulation=max(2, n_mod),
+                                    vehicle=self.sim.make_vehicle(), n_controls=self.sim.n_controls,
+                                    vehicle_sizes=self.sim.vehicle_sizes())
+        self.batch.states[:] = self.x_trim
+        self.batch.controls[:] = self.u_trim
+        self._kernel = craft_step_observe_batch if self.parallel else craft_step_observe_serial
+        self.tether_end = np.array([els[-1] for els in c.layout.tether_elements], dtype=np.int64)
+        self.raw_obs = np.zeros((B, N_CRAFT_OBS))
+        self.obs = np.zeros((B, N_CRAFT_OBS))
+        self.aux = np.zeros((B, N_CRAFT_AUX))
+        self._dx = np.zeros((B, c.assembly.state_size))
+        self._nsteps = np.zeros(B, dtype=np.int64)
+        self.steps = np.zeros(B, dtype=np.int64)
+
+    def _references(self) -> None:
+        """Trim read-outs (every copy sits at the trim in the undisturbed wind): the nominal CG position [m], the
+        rotor thrusts [N] and tether tensions [N] the observation's ratios refer to, and the reference power [W]."""
+        self.nominal_position = np.array(self.x_trim[B3_POS: B3_POS + 3])
+        self.nominal = self.nominal_position[None]  # (1, 3): what the scene renderer reads
+        self._rotation_trim = self.sim.wing_rotations()[0]
+        self.ref = np.ones(REF_SIZE)
+        self.ref[REF_POSITION: REF_POSITION + 3] = self.nominal_position
+        self._nsteps[:] = 0
+        self._kernel_pass(self._nsteps)
+        aux = self.aux[0]
+        self.thrust_trim = aux[CA_THRUST: CA_THRUST + 2].copy()
+        self.tension_trim = aux[CA_TENSION: CA_TENSION + 3].copy()
+        self.p_ref = float(aux[CA_POWER])
+        cfg = self.craft.config
+        if not (self.p_ref > 0 and np.all(self.thrust_trim > 0) and np.all(self.tension_trim > 0)):
+            raise ValueError(f"craft {cfg.name} at wind_speed = {cfg.wind.v0!r} m/s: the trim gives no positive power "
+                             f"({self.p_ref:.4g} W), thrust {self.thrust_trim} N or tensions {self.tension_trim} N")
+        self.ref[REF_THRUST: REF_THRUST + 2] = self.thrust_trim
+        self.ref[REF_TENSION: REF_TENSION + 3] = self.tension_trim
+        self._kernel_pass(self._nsteps)
+
+    # ------------------------------------------------------------------ kernel
+    def _kernel_pass(self, nsteps: np.ndarray) -> None:
+        """Advance copy b by nsteps[b] RK4 steps (0: observe only, < 0: skip) and write raw_obs and aux."""
+        b = self.batch
+        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.air, b.limits,
+                     self._dx, self.ref, self.tether_end, self.raw_obs, self.aux, b.status, b.done)
+        b.t += b.done * b.settings.dt
+
+    def _run(self, nsteps: np.ndarray) -> None:
+        """:meth:`_kernel_pass`, then the clipped observations."""
+        self._kernel_pass(nsteps)
+        self._clip_obs()
+
+    def observe(self) -> None:
+        """Observe every copy at its current state without stepping (after restoring states by hand)."""
+        self._nsteps[:] = 0
+        self._run(self._nsteps)
+
+    def _clip_obs(self) -> None:
+        """obs: raw_obs with non-finite entries replaced by the bound on their side (nan: the upper) and clipped
+        to [obs_low, obs_high]."""
+        raw, lo, hi = self.raw_obs, self.obs_low, self.obs_high
+        np.clip(np.where(np.isfinite(raw), raw, np.where(raw < 0, lo, hi)), lo, hi, out=self.obs)
+
+    # ------------------------------------------------------------------ episodes
+    def reset(self, mask: np.ndarray, rngs) -> None:
+        """Start new episodes in the copies selected by the boolean ``mask`` (B,): the trim state (plus the
+        initial noise) and controls, t = 0, a fresh wind disturbance, drawn with ``rngs[b]`` (a numpy Generator
+        per copy: first the disturbances, then the noise), and observe them. Other copies are untouched."""
+        b = self.batch
+        idx = np.flatnonzero(mask)
+        n = self.initial_noise
+        noisy = n.lateral_velocity > 0 or n.roll_rate > 0 or n.yaw_rate > 0
+        for i in idx:
+            rng = rngs[i]
+            speed, direction = sample_modulation(self.disturbances, self.episode_time, self.wind_dt, rng)
+            b.set_wind(int(i), 0.0, self.wind_dt, speed, direction)
+            x = np.array(self.x_trim)
+            if noisy:
+                dvy, dp, dr = rng.normal(size=3) * np.array([n.lateral_velocity, n.roll_rate, n.yaw_rate])
+                # the body velocity of a global lateral velocity dvy
+                x[B3_VEL: B3_VEL + 3] += self._rotation_trim.T @ np.array([0.0, dvy, 0.0])
+                x[B3_RATE] += dp
+                x[B3_RATE + 2] += dr
+            b.states[i] = x
+        b.controls[idx] = self.u_trim
+        b.t[idx] = 0.0
+        self.steps[idx] = 0
+        self.last_action[idx] = self.trim_action
+        self._nsteps[:] = -1
+        self._nsteps[idx] = 0
+        self._run(self._nsteps)
+
+    def step(self, action: np.ndarray, mask: np.ndarray | None = None):
+        """Apply normalised actions (B, 2) for one control period to the copies in ``mask`` (default all) and
+        evaluate them.
+
+        Returns
+        -------
+        reward : (B,) float64;  terminated, truncated : (B,) bool;  info : dict of arrays, one row per copy:
+        the reward terms, t [s], power_W [W], thrust_N (B, 2) [N], tether_tension_N (B, 3) [N], altitude_m [m],
+        max_tip_incidence_rad [rad], n_clipped (action entries outside [-1, 1]) and failure (code of
+        :data:`CRAFT_FAILURES`). Rows of copies outside ``mask`` are meaningless.
+        """
+        a = np.asarray(action, dtype=float).reshape(self.n_copies, self.n_actions)
+        if not np.all(np.isfinite(a)):
+            raise ValueError(f"action = {a.tolist()}: entries must be finite")
+        n_clipped = np.count_nonzero(np.abs(a) > 1.0, axis=1)
+        a = np.clip(a, -1.0, 1.0)
+        sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
+        self.batch.controls[sel] = (self.mid + a * self.half)[sel]
+        self.last_action[sel] = a[sel]
+        self._nsteps[:] = -1
+        self._nsteps[sel] = self.n_substeps
+        self._run(self._nsteps)
+        self.steps[sel] += 1
+        return self._evaluate(a, n_clipped)
+
+    def _failures(self) -> np.ndarray:
+        """Failure code (B,) of each copy at its observed state (0: flying); where several apply, the one listed
+        first in :data:`CRAFT_FAILURES`."""
+        tc, raw, aux = self.termination_config, self.raw_obs, self.aux
+        phi, theta, psi = np.degrees(raw[:, CO_EULER: CO_EULER + 3]).T
+        lo, hi = tc.pitch_range_deg
+        failure = np.zeros(self.n_copies, dtype=np.int64)
+        failure[(np.abs(phi) > tc.max_abs_roll_deg) | ~((lo <= theta) & (theta <= hi))
+                | (np.abs(psi) > tc.max_abs_yaw_deg)] = 5
+        failure[aux[:, CA_MAX_TENSION] > self.breaking_tension] = 4
+        failure[aux[:, CA_ALTITUDE] < self.min_altitude] = 3
+        failure[~np.all(np.isfinite(raw[:, CO_THRUST: CO_THRUST + 2]), axis=1)] = 2
+        broke = self.batch.status != OK
+        failure[broke] = np.where(aux[broke, CA_INFLOW_OK] == 1.0, 1, 2)
+        return failure
+
+    def _evaluate(self, a: np.ndarray, n_clipped: np.ndarray):
+        rc, aux = self.reward_config, self.aux
+        o = np.nan_to_num(self.raw_obs)
+        lat = (o[:, OBS_Y] / self.lateral_scale) ** 2
+        rates = (o[:, OBS_P] ** 2 + o[:, OBS_R] ** 2) / rc.rate_scale ** 2
+        effort = np.mean((a - self.trim_action) ** 2, axis=1)
+        failure = self._failures()
+        terminated = failure != 0
+        power = np.where(np.isfinite(aux[:, CA_POWER]), aux[:, CA_POWER], 0.0)
+        terms = {"reward_power": rc.power_weight * power / self.p_ref,
+                 "reward_lateral": -rc.lateral_weight * -np.expm1(-lat),
+                 "reward_rates": -rc.rate_weight * -np.expm1(-rates),
+                 "reward_effort": -rc.effort_weight * -np.expm1(-effort),
+                 "reward_failure": -rc.failure_penalty * terminated}
+        reward = (terms["reward_power"] + terms["reward_lateral"] + terms["reward_rates"] + terms["reward_effort"]
+                  + terms["reward_failure"])
+        truncated = (self.steps >= self.n_steps_max) & ~terminated
+        info = dict(terms, t=self.batch.t.copy(), power_W=power, thrust_N=aux[:, CA_THRUST: CA_THRUST + 2].copy(),
+                    tether_tension_N=aux[:, CA_TENSION: CA_TENSION + 3].copy(), altitude_m=aux[:, CA_ALTITUDE].copy(),
+                    max_tip_incidence_rad=np.max(aux[:, CA_TIP_AOA: CA_TIP_AOA + 2], axis=1), n_clipped=n_clipped,
+                    failure=failure)
+        return reward, terminated, truncated, info
+
+    # ------------------------------------------------------------------ read-outs
+    def simulator(self, b: int = 0) -> CraftSimulator:
+        """The task's :class:`CraftSimulator` set to copy ``b``: its state, time [s], controls [rad] and wind
+        modulation (a snapshot: stepping it does not step the copy, and the next call resets it)."""
+        bt, sim = self.batch, self.sim
+        air = {f: a[b].copy() for f, a in zip(bt.air._fields, bt.air, strict=True) if a is not None}
+        sim.model = sim.model._replace(**air)
+        sim.reset(state=bt.states[b], t=float(bt.t[b]), controls=bt.controls[b])
+        return sim
+
+    def failure_text(self, b: int, code: int) -> str:
+        """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0."""
+        t = float(self.batch.t[b])
+        if code in (1, 2) and self.batch.status[b] != OK:
+            kind = _STATUS_TEXT.get(int(self.batch.status[b]), f"status {int(self.batch.status[b])}")
+            error = f"integration failed at t = {t:.6g} s ({kind}); {self.simulator(b).diagnose()}"
+            if code == 2:
+                return f"t = {t:.2f} s: a rotor's Glauert inflow did not converge ({error})"
+            return f"t = {t:.2f} s: {error}"
+        if code == 2:
+            return f"t = {t:.2f} s: a rotor's Glauert inflow did not converge"
+        if code == 3:
+            altitude = self.aux[b, CA_ALTITUDE]
+            return f"t = {t:.2f} s: ground contact, CG at {altitude:.2f} m altitude (< {self.min_altitude:.3g} m)"
+        if code == 4:
+            e = int(self.aux[b, CA_MAX_ELEMENT])
+            which = next(TETHER_NAMES[i] for i, els in enumerate(self.craft.layout.tether_elements) if e in els)
+            return (f"t = {t:.2f} s: {which} tether tension {self.aux[b, CA_MAX_TENSION]:.4g} N over "
+                    f"{self.breaking_tension:.4g} N")
+        if code == 5:
+            tc = self.termination_config
+            phi, theta, psi = np.degrees(self.raw_obs[b, CO_EULER: CO_EULER + 3])
+            return (f"t = {t:.2f} s: attitude roll {phi:.1f}, pitch {theta:.1f}, yaw {psi:.1f} deg outside "
+                    f"|roll| <= {tc.max_abs_roll_deg:g}, pitch in {list(tc.pitch_range_deg)}, "
+                    f"|yaw| <= {tc.max_abs_yaw_deg:g} deg")
+        return ""
+
+    def renderer(self, interactive: bool = False):
+        """A scene renderer of the copies that draws the craft as its frame and rotor disks."""
+        from laddermill_gym.envs.rotorcraft.render import craft_renderer
+
+        return craft_renderer(self, interactive)

@@ -1,0 +1,88 @@
+"""The rotorcraft environments' starting point: the craft config, its control ranges, the trim (cached) and the
+trim-holding action and open-loop controller."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from functools import lru_cache
+
+import numpy as np
+
+from laddermill_gym.envs.rotorcraft.observation import N_CRAFT_OBS
+from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT, CraftConfig, load_craft_config
+from laddermill_gym.rotorcraft.craft import Craft, load_craft
+
+__all__ = ["craft_config", "control_ranges", "trim_controls", "craft_trim", "trim_action", "open_loop_controller"]
+
+
+@lru_cache(maxsize=8)
+def craft_config(craft: str) -> CraftConfig:
+    """The craft config of a name in configs/rotorcraft/ or a YAML path (cached); ValueError names ``craft``."""
+    try:
+        return load_craft_config(craft)
+    except ValueError as err:
+        raise ValueError(f"craft = {craft!r}: {err}") from None
+
+
+def control_ranges(cfg: CraftConfig) -> tuple[np.ndarray, np.ndarray]:
+    """(mid, half_range), each (2,) [rad], of the controls (collective, differential): the normalised action
+    a in [-1, 1] maps onto mid + a half_range."""
+    lim = np.array([cfg.collective_limits, cfg.differential_limits])
+    return 0.5 * (lim[:, 0] + lim[:, 1]), 0.5 * (lim[:, 1] - lim[:, 0])
+
+
+def trim_controls(cfg: CraftConfig, collective: float | None) -> np.ndarray:
+    """The trim controls (collective [rad] (None: the config's initial collective), no differential), shape
+    (2,); ValueError names ``collective`` outside the config's collective limits."""
+    th = cfg.initial_collective if collective is None else collective
+    lo, hi = cfg.collective_limits
+    if not (isinstance(th, (int, float)) and math.isfinite(th) and lo <= th <= hi):
+        raise ValueError(f"collective = {th!r} rad: must lie in the craft's collective_limits [{lo:.4g}, {hi:.4g}] rad")
+    return np.array([float(th), 0.0])
+
+
+@lru_cache(maxsize=16)
+def craft_trim(craft: str = DEFAULT_CRAFT, wind_speed: float | None = None, collective: float | None = None,
+               physics_dt: float | None = None) -> tuple[Craft, np.ndarray, np.ndarray]:
+    """(craft, x_trim (n_state,), u_trim (2,) [rad]) for a craft name or path, wind speed v0 [m/s] (None: the
+    config's), trim collective [rad] (None: the config's) and physics step [s] (None: the config's).
+
+    Cached on the arguments (a trim takes about 0.5 s); the returned arrays are read-only."""
+    cfg = craft_config(craft)
+    u = trim_controls(cfg, collective)
+    if wind_speed is not None:
+        cfg = cfg.with_wind_speed(wind_speed)
+    if physics_dt is not None:
+        cfg = cfg.replace(settings=dataclasses.replace(cfg.settings, dt=float(physics_dt)))
+    c = load_craft(config=cfg)
+    try:
+        x = c.trim(u[0])
+    except RuntimeError as err:
+        raise ValueError(f"wind_speed = {wind_speed!r} m/s, collective = {collective!r} rad: {err}") from None
+    x.setflags(write=False)
+    u.setflags(write=False)
+    return c, x, u
+
+
+def trim_action(craft: str = DEFAULT_CRAFT, collective: float | None = None) -> np.ndarray:
+    """The normalised action (2,) float32 that holds the trim controls (collective, zero differential).
+
+    Needs only the config (no trim): the trim controls do not depend on the wind."""
+    cfg = craft_config(str(craft))
+    mid, half = control_ranges(cfg)
+    return ((trim_controls(cfg, collective) - mid) / half).astype(np.float32)
+
+
+def open_loop_controller(env_kwargs: dict | None = None):
+    """An :class:`~laddermill_gym.control.open_loop.OpenLoopController` holding the trim controls of the
+    environment with arguments ``env_kwargs`` (only ``craft`` and ``collective`` matter: the open-loop action
+    does not depend on the wind or the timing)."""
+    from laddermill_gym.control.open_loop import OpenLoopController
+
+    kw = dict(env_kwargs or {})
+    cfg = craft_config(str(kw.get("craft", DEFAULT_CRAFT)))
+    mid, half = control_ranges(cfg)
+    ctrl = OpenLoopController(trim_controls(cfg, kw.get("collective")), mid, half)
+    ctrl.obs_dim = N_CRAFT_OBS  # its default assumes the wing layout (15 entries per 3 actions)
+    return ctrl

@@ -1,0 +1,158 @@
+"""Batched stepping and observation of Roberts' craft for the rotorcraft environments: one pass over the copies
+advances each by n RK4 steps of the core kernels and then writes its observation and the quantities the rewards
+and terminations need (one compiled call per control period, like ``kernels/rigid/observe.py`` for the wings).
+
+Observation row (``N_CRAFT_OBS`` float64, raw: non-finite entries kept, not clipped; the environment's
+``CRAFT_OBS_FIELDS`` names them with units): CG offset from the nominal position (3, global) [m], CG velocity
+(3, global) [m/s], 3-2-1 Euler angles (3) [rad], body rates (3) [rad/s], rotor thrust over its trim thrust (2,
+right then left) [-], craft-end tether tension over its trim tension (3, rear right, rear left, front) [-],
+blade collective pitch of each rotor (2) [rad].
+
+Auxiliary row (``N_CRAFT_AUX`` float64, slots ``CA_*``): net electrical power [W], largest element tension [N]
+and its element index, CG altitude [m], whether both rotors' inflow converged (1.0 / 0.0), rotor thrusts [N],
+tether tensions [N] and retreating-tip incidences [rad]. The references of the ratios come in ``ref`` (slots
+``REF_*``).
+"""
+
+import math
+
+from numba import njit, prange
+
+from laddermill_gym.kernels.batch import copy_views
+from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_SIZE, B3_VEL
+from laddermill_gym.kernels.integrate import OK, SINGULAR, rhs, rk4_advance
+from laddermill_gym.rotorcraft.craft_kernels import (
+    C_ETA,
+    N_RO,
+    R_POWER,
+    R_STATUS,
+    R_THETA,
+    R_THRUST,
+    R_TIP_AOA,
+    V_ROTOR,
+)
+from laddermill_gym.rotorcraft.rotor_kernels import STATUS_OK
+
+#: The craft is rigid body 0 of its assembly.
+CRAFT_BODY = 0
+#: Rotors and tethers of the craft.
+N_ROTORS, N_TETHERS = 2, 3
+
+# observation row
+CO_OFFSET = 0      # CG position minus the nominal position (3) [m]
+CO_VELOCITY = 3    # CG velocity, global (3) [m/s]
+CO_EULER = 6       # roll, pitch, yaw (3) [rad]
+CO_RATES = 9       # body rates p, q, r (3) [rad/s]
+CO_THRUST = 12     # thrust ratio per rotor (2) [-]
+CO_TENSION = 14    # tension ratio per tether (3) [-]
+CO_PITCH = 17      # blade collective pitch per rotor (2) [rad]
+N_CRAFT_OBS = 19
+
+# auxiliary row
+CA_POWER = 0           # net electrical power [W] (eta P generating, P / eta driven; nan if an inflow failed)
+CA_MAX_TENSION = 1     # largest element tension [N]
+CA_MAX_ELEMENT = 2     # index of that element (a whole number)
+CA_ALTITUDE = 3        # CG altitude -z [m]
+CA_INFLOW_OK = 4       # 1.0 when both rotors' inflow converged, else 0.0
+CA_THRUST = 5          # rotor thrusts (2) [N]
+CA_TENSION = 7         # craft-end tether tensions (3) [N]
+CA_TIP_AOA = 10        # retreating-tip incidences (2) [rad]
+N_CRAFT_AUX = 12
+
+# references ``ref``
+REF_POSITION = 0   # nominal CG position (3) [m]
+REF_THRUST = 3     # trim thrust per rotor (2) [N]
+REF_TENSION = 5    # trim craft-end tension per tether (3) [N]
+REF_SIZE = 8
+
+
+@njit(cache=True, error_model="numpy")
+def _observe_craft(t, x, u, dx, M, W, cp, ref, tether_end, obs, aux):
+    """Observation ``obs`` (N_CRAFT_OBS,) and auxiliary row ``aux`` (N_CRAFT_AUX,) of the state x at time t [s]
+    (evaluates the right-hand side once for the rotation, the tensions and the rotor outputs). cp: the craft
+    parameters (``craft_kernels.C_*``); tether_end (3,): the element at the craft end of each tether.
+    Returns OK or SINGULAR (the mass matrix; the loads and tensions are written before the solve)."""
+    status = OK if rhs(t, x, u, dx, M, W) == 0 else SINGULAR
+    o = B3_SIZE * CRAFT_BODY
+    R = W.Rw[CRAFT_BODY]
+    vx, vy, vz = x[o + B3_VEL], x[o + B3_VEL + 1], x[o + B3_VEL + 2]
+    for i in range(3):
+        obs[CO_OFFSET + i] = x[o + B3_POS + i] - ref[REF_POSITION + i]
+        obs[CO_VELOCITY + i] = R[i, 0] * vx + R[i, 1] * vy + R[i, 2] * vz
+        obs[CO_RATES + i] = x[o + B3_RATE + i]
+    obs[CO_EULER] = math.atan2(R[2, 1], R[2, 2])
+    obs[CO_EULER + 1] = -math.asin(min(1.0, max(-1.0, R[2, 0])))
+    obs[CO_EULER + 2] = math.atan2(R[1, 0], R[0, 0])
+    out = W.vout
+    power = 0.0
+    inflow_ok = 1.0
+    for r in range(N_ROTORS):
+        k = V_ROTOR + N_RO * r
+        obs[CO_THRUST + r] = out[k + R_THRUST] / ref[REF_THRUST + r]
+        obs[CO_PITCH + r] = out[k + R_THETA]
+        aux[CA_THRUST + r] = out[k + R_THRUST]
+        aux[CA_TIP_AOA + r] = out[k + R_TIP_AOA]
+        power += out[k + R_POWER]
+        if out[k + R_STATUS] != STATUS_OK:
+            inflow_ok = 0.0
+    ten = W.tension
+    for i in range(N_TETHERS):
+        obs[CO_TENSION + i] = ten[tether_end[i]] / ref[REF_TENSION + i]
+        aux[CA_TENSION + i] = ten[tether_end[i]]
+    tmax, emax = ten[0], 0
+    for e in range(1, M.ek.shape[0]):
+        if ten[e] > tmax:
+            tmax, emax = ten[e], e
+    eta = cp[C_ETA]
+    aux[CA_POWER] = eta * power if power >= 0.0 else power / eta
+    aux[CA_MAX_TENSION] = tmax
+    aux[CA_MAX_ELEMENT] = emax
+    aux[CA_ALTITUDE] = -x[o + B3_POS + 2]
+    aux[CA_INFLOW_OK] = inflow_ok
+    return status
+
+
+@njit(cache=True, error_model="numpy")
+def _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, ref, tether_end, obs,
+                             aux, status, done):
+    n = nsteps[b]
+    if n < 0:
+        status[b] = OK
+        done[b] = 0
+        return
+    Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
+    st, dn = OK, 0
+    if n > 0:
+        st, dn = rk4_advance(t[b], X[b], U[b], dt, n, Mb, Wb, limits)
+    ost = _observe_craft(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, vehicle.cp, ref, tether_end, obs[b], aux[b])
+    status[b] = st if st != OK else ost
+    done[b] = dn
+
+
+@njit(cache=True, error_model="numpy", parallel=True)
+def craft_step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, ref, tether_end, obs, aux,
+                             status, done):
+    """Advance copy b by nsteps[b] RK4 steps of dt [s], then observe it (nsteps[b] = 0: observe only; < 0: skip
+    the copy). Parallel over the copies (numba prange).
+
+    t (B,) [s] is each copy's time before the steps (not advanced here); X (B, n_state), U (B, 2) [rad]
+    (collective, differential); M the packed craft model without its markers, passed as ``kind`` and
+    ``vehicle`` (``kernels.batch.detach_markers``); WB a KWork with a leading batch axis; AB the copies' air, a
+    KAir with a leading copy axis (the batch's ``air``: wind modulation and gust grid); limits (LIM_SIZE,);
+    DX (B, n_state) scratch; ref (REF_SIZE,) references; tether_end (3,)
+    int64. Writes obs (B, N_CRAFT_OBS), aux (B, N_CRAFT_AUX), status (B,) (integrate.py's codes) and done (B,)
+    (steps completed). A copy whose integration fails is left at its last good state and observed there.
+    """
+    for b in prange(X.shape[0]):
+        _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, ref, tether_end,
+                                 obs, aux, status, done)
+
+
+@njit(cache=True, error_model="numpy")
+def craft_step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, ref, tether_end, obs, aux,
+                              status, done):
+    """:func:`craft_step_observe_batch` on one thread: for single environments and small batches, where starting
+    the thread pool costs more than it saves."""
+    for b in range(X.shape[0]):
+        _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, ref, tether_end,
+                                 obs, aux, status, done)
