@@ -124,6 +124,7 @@ def test_make_vec_vector_entry_point_and_spaces():
         RotorcraftVectorEnv(0)
 
 
+@pytest.mark.filterwarnings("ignore:.*not having a spec")  # built directly: the render modes are checked elsewhere
 def test_gymnasium_checker_on_the_single_env():
     env = RotorcraftEnv(**dict(ENV_IDS[RC], episode_time=2.0))
     check_env(env)
