@@ -1,1 +1,2 @@
-"""Rotorcraft-v0: the craft's environment, its settings, vector adapter and renderer."""
+"""Rotorcraft-v0: the batched task (``task``), the single env (``env``), the native vector env (``vector``), the
+observation layout, the trim and trim action, the settings and the renderer."""

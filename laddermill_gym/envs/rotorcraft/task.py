@@ -15,7 +15,7 @@ from collections import namedtuple
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, disturbance_from_dict, sample_modulation
+from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, disturbance_from_dict, sample_wind_field
 from laddermill_gym.envs.rotorcraft.observation import OBS_P, OBS_R, OBS_Y, craft_observation_bounds
 from laddermill_gym.envs.rotorcraft.settings import (
     InitialNoise,
@@ -24,7 +24,7 @@ from laddermill_gym.envs.rotorcraft.settings import (
     config_from,
 )
 from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim
-from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_VEL
+from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_SIZE, B3_VEL
 from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
 from laddermill_gym.rotorcraft.craft import TETHER_NAMES, CraftSimulator
@@ -39,6 +39,7 @@ from laddermill_gym.rotorcraft.craft_observe import (
     CA_TIP_AOA,
     CO_EULER,
     CO_THRUST,
+    CRAFT_BODY,
     N_CRAFT_AUX,
     N_CRAFT_OBS,
     REF_POSITION,
@@ -183,7 +184,8 @@ class CraftTask:
     def _references(self) -> None:
         """Trim read-outs (every copy sits at the trim in the undisturbed wind): the nominal CG position [m], the
         rotor thrusts [N] and tether tensions [N] the observation's ratios refer to, and the reference power [W]."""
-        self.nominal_position = np.array(self.x_trim[B3_POS: B3_POS + 3])
+        o = B3_SIZE * CRAFT_BODY
+        self.nominal_position = np.array(self.x_trim[o + B3_POS: o + B3_POS + 3])
         self.nominal = self.nominal_position[None]  # (1, 3): what the scene renderer reads
         self._rotation_trim = self.sim.wing_rotations()[0]
         self.ref = np.ones(REF_SIZE)
@@ -235,17 +237,17 @@ class CraftTask:
         idx = np.flatnonzero(mask)
         n = self.initial_noise
         noisy = n.lateral_velocity > 0 or n.roll_rate > 0 or n.yaw_rate > 0
+        ov, orr = B3_SIZE * CRAFT_BODY + B3_VEL, B3_SIZE * CRAFT_BODY + B3_RATE
         for i in idx:
             rng = rngs[i]
-            speed, direction = sample_modulation(self.disturbances, self.episode_time, self.wind_dt, rng)
-            b.set_wind(int(i), 0.0, self.wind_dt, speed, direction)
+            b.set_wind(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rng))
             x = np.array(self.x_trim)
             if noisy:
                 dvy, dp, dr = rng.normal(size=3) * np.array([n.lateral_velocity, n.roll_rate, n.yaw_rate])
                 # the body velocity of a global lateral velocity dvy
-                x[B3_VEL: B3_VEL + 3] += self._rotation_trim.T @ np.array([0.0, dvy, 0.0])
-                x[B3_RATE] += dp
-                x[B3_RATE + 2] += dr
+                x[ov: ov + 3] += self._rotation_trim.T @ np.array([0.0, dvy, 0.0])
+                x[orr] += dp
+                x[orr + 2] += dr
             b.states[i] = x
         b.controls[idx] = self.u_trim
         b.t[idx] = 0.0
