@@ -16,6 +16,7 @@ from collections import namedtuple
 import numpy as np
 
 from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, disturbance_from_dict, sample_wind_field
+from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.envs.rotorcraft.observation import OBS_P, OBS_R, OBS_Y, craft_observation_bounds
 from laddermill_gym.envs.rotorcraft.settings import (
     InitialNoise,
@@ -182,8 +183,11 @@ class CraftTask:
         self.steps = np.zeros(B, dtype=np.int64)
 
     def _references(self) -> None:
-        """Trim read-outs (every copy sits at the trim in the undisturbed wind): the nominal CG position [m], the
-        rotor thrusts [N] and tether tensions [N] the observation's ratios refer to, and the reference power [W]."""
+        """Trim read-outs (every copy sits at the trim in the undisturbed air: speed factor 1, no direction offset,
+        no gust grid): the nominal CG position [m], the rotor thrusts [N] and tether tensions [N] the observation's
+        ratios refer to, and the reference power [W]."""
+        for i in range(self.n_copies):
+            self.batch.set_wind(i, WindField())
         o = B3_SIZE * CRAFT_BODY
         self.nominal_position = np.array(self.x_trim[o + B3_POS: o + B3_POS + 3])
         self.nominal = self.nominal_position[None]  # (1, 3): what the scene renderer reads
