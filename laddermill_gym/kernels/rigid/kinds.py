@@ -99,17 +99,17 @@ def wing_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
             ao[AO_MOMENT + 2])
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def rigid3d_rhs(kind, t, x, u, dx, M, W):
     return rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def rigid2d_rhs(kind, t, x, u, dx, M, W):
     return rhs2d(t, x, u, dx, M, W, M.sag, M.caero)
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _all_finite(x):
     for i in range(x.size):
         if not math.isfinite(x[i]):
@@ -117,7 +117,7 @@ def _all_finite(x):
     return True
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def rigid3d_check(kind, x, M, limits):
     """Renormalise every body's quaternion and check speeds [m/s] and rates [rad/s] against ``limits``."""
     nw = M.wtype.size
@@ -144,7 +144,7 @@ def rigid3d_check(kind, x, M, limits):
     return OK
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def rigid2d_check(kind, x, M, limits):
     """Check in-plane speeds [m/s] and pitch rates [rad/s] against ``limits``."""
     nw = M.wtype.size
