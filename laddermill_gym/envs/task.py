@@ -126,7 +126,9 @@ class TerminationConfig:
             raise ValueError(f"termination.min_altitude = {self.min_altitude!r}: must be finite")
 
 
-def _config(value, cls, name):
+def config_from(value, cls, name: str):
+    """An instance of the settings dataclass ``cls`` from ``value``: None (the defaults), an instance, or a dict of
+    its fields. Raises ValueError naming ``name`` and the unknown keys or the value."""
     if value is None:
         return cls()
     if isinstance(value, cls):
@@ -215,8 +217,8 @@ class WingTask:
         for d in self.disturbances:
             if not isinstance(d, Disturbance):
                 raise ValueError(f"disturbances: {d!r} is not a laddermill_gym.atmosphere.disturbances.Disturbance")
-        self.reward_config = _config(reward, RewardConfig, "reward")
-        self.termination_config = _config(termination, TerminationConfig, "termination")
+        self.reward_config = config_from(reward, RewardConfig, "reward")
+        self.termination_config = config_from(termination, TerminationConfig, "termination")
         self.x_trim, self.u_trim = x_trim, u_trim
         nw = asm.n_wings
         self.n_wings = nw

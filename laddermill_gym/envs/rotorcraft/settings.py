@@ -3,27 +3,10 @@ the random start perturbations (frozen dataclasses that validate their fields, n
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from dataclasses import dataclass
 
 from laddermill_gym.envs.task import check_nonnegative_fields
-
-
-def config_from(value, cls, name: str):
-    """An instance of the settings dataclass ``cls`` from ``value``: None (the defaults), an instance, or a dict of
-    its fields. Raises ValueError naming ``name`` and the unknown keys or the value."""
-    if value is None:
-        return cls()
-    if isinstance(value, cls):
-        return value
-    if isinstance(value, dict):
-        known = {f.name for f in dataclasses.fields(cls)}
-        bad = sorted(set(value) - known)
-        if bad:
-            raise ValueError(f"{name}: unknown key(s) {bad}; known: {sorted(known)}")
-        return cls(**value)
-    raise ValueError(f"{name} = {value!r}: must be a dict or a {cls.__name__}")
 
 
 @dataclass(frozen=True)

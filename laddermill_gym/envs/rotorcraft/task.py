@@ -22,9 +22,9 @@ from laddermill_gym.envs.rotorcraft.settings import (
     InitialNoise,
     RotorcraftRewardConfig,
     RotorcraftTerminationConfig,
-    config_from,
 )
 from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim
+from laddermill_gym.envs.task import config_from
 from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_SIZE, B3_VEL
 from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
