@@ -1,6 +1,7 @@
-"""The native vector environment: all copies of a wing scene stepped by one compiled kernel, parallel over
-copies (registered as the ``vector_entry_point`` of the wing envs; ``gymnasium.make_vec(id, n,
-vectorization_mode="vector_entry_point")``)."""
+"""The native vector environments: all copies of a task stepped by one compiled kernel, parallel over copies
+(registered as the ``vector_entry_point`` of every env; ``gymnasium.make_vec(id, n,
+vectorization_mode="vector_entry_point")``). :class:`TaskVectorEnv` is the Gymnasium side shared by every task;
+:class:`WingVectorEnv` the wing scenes' (the rotorcraft's is ``envs/rotorcraft/vector.py``)."""
 
 from __future__ import annotations
 
@@ -13,43 +14,47 @@ from gymnasium.vector.utils import batch_space
 
 from laddermill_gym.envs.task import WingTask
 
+#: info entries of copies reset in a NextStep autoreset step (reported as 0)
+ZEROED_ON_RESET: tuple[str, ...] = ("failure", "n_clipped", "reward_power", "reward_lateral", "reward_rates",
+                                    "reward_effort", "reward_failure")
 
-class WingVectorEnv(VectorEnv):
-    """``num_envs`` copies of :class:`~laddermill_gym.envs.wing_env.WingEnv` in one batch.
 
-    Copy i behaves exactly like a single env seeded with ``seed + i`` (bit for bit: same kernel, same
-    arithmetic). Autoreset: ``autoreset_mode`` "NextStep" (Gymnasium's default: the step after an episode
-    ends resets that copy and ignores its action) or "SameStep" (the reset observation is returned at once;
-    the final observation and info are in ``info["final_obs"]``, ``info["final_info"]``).
+def check_vector_arguments(num_envs, render_mode, autoreset_mode) -> AutoresetMode:
+    """Validate the vector-env arguments every task shares; returns the autoreset mode. Raises ValueError
+    naming the argument and its value."""
+    if isinstance(num_envs, bool) or int(num_envs) != num_envs or num_envs < 1:
+        raise ValueError(f"num_envs = {num_envs!r}: must be a positive integer")
+    mode = AutoresetMode(autoreset_mode)
+    if mode == AutoresetMode.DISABLED:
+        raise ValueError("autoreset_mode = 'Disabled' is not supported: use 'NextStep' or 'SameStep'")
+    if render_mode not in (None, "rgb_array"):
+        raise ValueError(f"render_mode = {render_mode!r}: the vector env renders 'rgb_array' only")
+    return mode
 
-    ``info`` holds (num_envs,) arrays of every reward term, power [W], largest tension [N], lowest wing
-    altitude [m], time [s], clipped action entries and the failure code (0 flying; see
-    :data:`laddermill_gym.envs.task.FAILURES`), each with its ``_name`` mask.
 
-    Parameters: ``num_envs``, ``autoreset_mode``, ``parallel`` (numba thread pool; default from 32 copies
-    on) and the :class:`~laddermill_gym.envs.task.WingTask` arguments.
+class TaskVectorEnv(VectorEnv):
+    """The Gymnasium vector env of a task of B copies (``WingTask``, ``CraftTask``: ``reset(mask, rngs)``,
+    ``step(actions, mask) -> (reward, terminated, truncated, info)``, ``obs`` (B, obs_dim), ``obs_low`` /
+    ``obs_high``, ``n_actions``, ``control_dt``, ``batch.t``).
+
+    Copy i behaves exactly like the task's single env seeded with ``seed + i`` (bit for bit: same kernel, same
+    arithmetic). Autoreset: ``autoreset_mode`` "NextStep" (Gymnasium's default: the step after an episode ends
+    resets that copy, ignores its action and reports reward 0 and failure 0) or "SameStep" (the reset
+    observation is returned at once; the final observation and info are in ``info["final_obs"]``,
+    ``info["final_info"]``). Subclasses build the task and say how to draw copy 0 (:meth:`_make_renderer`).
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 20, "autoreset_mode": AutoresetMode.NEXT_STEP}
 
-    def __init__(self, num_envs: int, render_mode: str | None = None,
-                 autoreset_mode: AutoresetMode | str = AutoresetMode.NEXT_STEP, **task_kwargs):
-        if int(num_envs) != num_envs or num_envs < 1:
-            raise ValueError(f"num_envs = {num_envs!r}: must be a positive integer")
-        mode = AutoresetMode(autoreset_mode)
-        if mode == AutoresetMode.DISABLED:
-            raise ValueError("autoreset_mode = 'Disabled' is not supported: use 'NextStep' or 'SameStep'")
-        if render_mode not in (None, "rgb_array"):
-            raise ValueError(f"render_mode = {render_mode!r}: the vector env renders 'rgb_array' only")
-        task_kwargs.pop("max_episode_steps", None)
-        self.task = WingTask(int(num_envs), **task_kwargs)
-        self.num_envs = int(num_envs)
+    def __init__(self, task, render_mode: str | None, mode: AutoresetMode):
+        self.task = task
+        self.num_envs = int(task.n_copies)
         self.render_mode = render_mode
-        self.metadata = dict(self.metadata, autoreset_mode=mode, render_fps=int(round(1.0 / self.task.control_dt)))
+        self.metadata = dict(self.metadata, autoreset_mode=mode, render_fps=int(round(1.0 / task.control_dt)))
         self.autoreset_mode = mode
-        self.single_observation_space = gym.spaces.Box(self.task.obs_low.astype(np.float32),
-                                                       self.task.obs_high.astype(np.float32), dtype=np.float32)
-        self.single_action_space = gym.spaces.Box(-1.0, 1.0, shape=(self.task.n_actions,), dtype=np.float32)
+        self.single_observation_space = gym.spaces.Box(task.obs_low.astype(np.float32),
+                                                       task.obs_high.astype(np.float32), dtype=np.float32)
+        self.single_action_space = gym.spaces.Box(-1.0, 1.0, shape=(task.n_actions,), dtype=np.float32)
         self.observation_space = batch_space(self.single_observation_space, self.num_envs)
         self.action_space = batch_space(self.single_action_space, self.num_envs)
         self._rngs = [np.random.default_rng() for _ in range(self.num_envs)]
@@ -60,13 +65,16 @@ class WingVectorEnv(VectorEnv):
         if seed is None:
             self._rngs = [np.random.default_rng() for _ in range(self.num_envs)]
             return
-        seeds = [seed + i for i in range(self.num_envs)] if isinstance(seed, int) else list(seed)
+        seeds = ([int(seed) + i for i in range(self.num_envs)] if isinstance(seed, (int, np.integer))
+                 else list(seed))
         if len(seeds) != self.num_envs:
             raise ValueError(f"seed: expected an int or {self.num_envs} seeds, got {len(seeds)}")
         # the same generator a single env builds in Env.reset(seed=s)
         self._rngs = [gym.utils.seeding.np_random(s)[0] for s in seeds]
 
     def reset(self, *, seed: int | list[int] | None = None, options: dict[str, Any] | None = None):
+        """Reset every copy; ``seed`` an int (copy i gets seed + i), a list of num_envs seeds or None (the copies
+        keep drawing from their generators)."""
         if seed is not None:
             self._seed(seed)
         self.task.reset(np.ones(self.num_envs, bool), self._rngs)
@@ -84,8 +92,7 @@ class WingVectorEnv(VectorEnv):
             reward[resetting] = 0.0
             terminated[resetting] = False
             truncated[resetting] = False
-            for k in ("failure", "n_clipped", "reward_power", "reward_lateral", "reward_rates", "reward_effort",
-                      "reward_failure"):
+            for k in ZEROED_ON_RESET:
                 info[k][resetting] = 0
         else:
             reward, terminated, truncated, info = self.task.step(a)
@@ -107,16 +114,41 @@ class WingVectorEnv(VectorEnv):
         self._autoreset = done
         return obs, reward, terminated, truncated, out
 
+    def _make_renderer(self):
+        raise NotImplementedError(f"{type(self).__name__} does not say how to draw its task")
+
     def render(self):
         if self.render_mode != "rgb_array":
             return None
-        from laddermill_gym.envs.render import SceneRenderer
-
         if self._renderer is None:
-            self._renderer = SceneRenderer(self.task)
+            self._renderer = self._make_renderer()
         return self._renderer.draw(0)
 
     def close_extras(self, **kwargs):
         if self._renderer is not None:
             self._renderer.close()
             self._renderer = None
+
+
+class WingVectorEnv(TaskVectorEnv):
+    """``num_envs`` copies of :class:`~laddermill_gym.envs.wing_env.WingEnv` in one batch (:class:`TaskVectorEnv`
+    over a :class:`~laddermill_gym.envs.task.WingTask`).
+
+    ``info`` holds (num_envs,) arrays of every reward term, power [W], largest tension [N], lowest wing
+    altitude [m], time [s], clipped action entries and the failure code (0 flying; see
+    :data:`laddermill_gym.envs.task.FAILURES`), each with its ``_name`` mask.
+
+    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0), ``autoreset_mode``, ``parallel`` (numba
+    thread pool; default from 32 copies on) and the :class:`~laddermill_gym.envs.task.WingTask` arguments.
+    """
+
+    def __init__(self, num_envs: int, render_mode: str | None = None,
+                 autoreset_mode: AutoresetMode | str = AutoresetMode.NEXT_STEP, **task_kwargs):
+        mode = check_vector_arguments(num_envs, render_mode, autoreset_mode)
+        task_kwargs.pop("max_episode_steps", None)
+        super().__init__(WingTask(int(num_envs), **task_kwargs), render_mode, mode)
+
+    def _make_renderer(self):
+        from laddermill_gym.envs.render import SceneRenderer
+
+        return SceneRenderer(self.task)
