@@ -110,3 +110,24 @@ class SceneRenderer:
     def close(self) -> None:
         if self._plt is not None:
             self._plt.close(self.fig)
+
+
+class TaskRendering:
+    """``render`` and ``close`` of a single env over a task (copy 0; ``self.task.renderer(interactive)`` draws):
+    "rgb_array" returns the frame, "human" shows it; without a render mode a warning and None."""
+
+    def render(self):
+        if self.render_mode is None:
+            from gymnasium import logger
+
+            logger.warn("render() called without a render_mode; pass render_mode='rgb_array' or 'human'")
+            return None
+        if self._renderer is None:
+            self._renderer = self.task.renderer(interactive=self.render_mode == "human")
+        frame = self._renderer.draw(0)
+        return frame if self.render_mode == "rgb_array" else None
+
+    def close(self):
+        if self._renderer is not None:
+            self._renderer.close()
+            self._renderer = None

@@ -81,9 +81,7 @@ class TaskSB3VecEnv(VecEnv):
         return [False for _ in self._get_indices(indices)]
 
     def get_images(self):
-        from laddermill_gym.envs.render import SceneRenderer
-
-        r = self.task.renderer() if hasattr(self.task, "renderer") else SceneRenderer(self.task)
+        r = self.task.renderer()
         return [r.draw(i) for i in range(self.num_envs)]
 
 

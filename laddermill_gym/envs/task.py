@@ -364,6 +364,12 @@ class WingTask:
                     n_clipped=n_clipped, failure=failure)
         return reward, terminated, truncated, info
 
+    def renderer(self, interactive: bool = False):
+        """A 3D renderer of the copies (``envs/render.py``): wings, cable and ground points."""
+        from laddermill_gym.envs.render import SceneRenderer
+
+        return SceneRenderer(self, interactive)
+
     def failure_text(self, b: int, code: int) -> str:
         """A sentence on why copy ``b`` terminated (time, and the quantity)."""
         if code == 0:

@@ -41,7 +41,7 @@ class TaskVectorEnv(VectorEnv):
     arithmetic). Autoreset: ``autoreset_mode`` "NextStep" (Gymnasium's default: the step after an episode ends
     resets that copy, ignores its action and reports reward 0 and failure 0) or "SameStep" (the reset
     observation is returned at once; the final observation and info are in ``info["final_obs"]``,
-    ``info["final_info"]``). Subclasses build the task and say how to draw copy 0 (:meth:`_make_renderer`).
+    ``info["final_info"]``). Subclasses build the task; ``task.renderer()`` draws copy 0.
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 20, "autoreset_mode": AutoresetMode.NEXT_STEP}
@@ -114,14 +114,11 @@ class TaskVectorEnv(VectorEnv):
         self._autoreset = done
         return obs, reward, terminated, truncated, out
 
-    def _make_renderer(self):
-        raise NotImplementedError(f"{type(self).__name__} does not say how to draw its task")
-
     def render(self):
         if self.render_mode != "rgb_array":
             return None
         if self._renderer is None:
-            self._renderer = self._make_renderer()
+            self._renderer = self.task.renderer()
         return self._renderer.draw(0)
 
     def close_extras(self, **kwargs):
@@ -147,8 +144,3 @@ class WingVectorEnv(TaskVectorEnv):
         mode = check_vector_arguments(num_envs, render_mode, autoreset_mode)
         task_kwargs.pop("max_episode_steps", None)
         super().__init__(WingTask(int(num_envs), **task_kwargs), render_mode, mode)
-
-    def _make_renderer(self):
-        from laddermill_gym.envs.render import SceneRenderer
-
-        return SceneRenderer(self.task)

@@ -9,6 +9,7 @@ import gymnasium as gym
 import numpy as np
 
 from laddermill_gym.envs.observation import OBS_FIELDS
+from laddermill_gym.envs.render import TaskRendering
 from laddermill_gym.envs.task import FAILURES, WingTask
 
 
@@ -17,7 +18,7 @@ def _obs_table() -> str:
     return "\n".join(rows)
 
 
-class WingEnv(gym.Env):
+class WingEnv(TaskRendering, gym.Env):
     """Wings of a laddermill scene on their cables, controlled through their tail surfaces.
 
     ## Description
@@ -149,22 +150,6 @@ OBS_TABLE
         if self.render_mode == "human":
             self.render()
         return self._obs(), float(reward[0]), bool(terminated[0]), bool(truncated[0]), out
-
-    def render(self):
-        if self.render_mode is None:
-            gym.logger.warn("render() called without a render_mode; pass render_mode='rgb_array' or 'human'")
-            return None
-        from laddermill_gym.envs.render import SceneRenderer
-
-        if self._renderer is None:
-            self._renderer = SceneRenderer(self.task, interactive=self.render_mode == "human")
-        frame = self._renderer.draw(0)
-        return frame if self.render_mode == "rgb_array" else None
-
-    def close(self):
-        if self._renderer is not None:
-            self._renderer.close()
-            self._renderer = None
 
 
 WingEnv.__doc__ = WingEnv.__doc__.replace("OBS_TABLE", _obs_table())

@@ -16,6 +16,7 @@ from typing import Any
 import gymnasium as gym
 import numpy as np
 
+from laddermill_gym.envs.render import TaskRendering
 from laddermill_gym.envs.rotorcraft.observation import (
     CRAFT_OBS_FIELDS,
     CRAFT_OBS_INDEX,
@@ -50,7 +51,7 @@ def _obs_table() -> str:
     return "\n".join(f"    | {i} | {f.name} | {f.unit} | {f.description} |" for i, f in enumerate(CRAFT_OBS_FIELDS))
 
 
-class RotorcraftEnv(gym.Env):
+class RotorcraftEnv(TaskRendering, gym.Env):
     """Roberts' tethered twin-rotor craft held by differential collective pitch.
 
     ## Description
@@ -217,20 +218,6 @@ OBS_TABLE
         if self.render_mode == "human":
             self.render()
         return self.task.obs[0].astype(np.float32), float(reward[0]), bool(terminated[0]), bool(truncated[0]), out
-
-    def render(self):
-        if self.render_mode is None:
-            gym.logger.warn("render() called without a render_mode; pass render_mode='rgb_array' or 'human'")
-            return None
-        if self._renderer is None:
-            self._renderer = self.task.renderer(interactive=self.render_mode == "human")
-        frame = self._renderer.draw(0)
-        return frame if self.render_mode == "rgb_array" else None
-
-    def close(self):
-        if self._renderer is not None:
-            self._renderer.close()
-            self._renderer = None
 
 
 RotorcraftEnv.__doc__ = RotorcraftEnv.__doc__.replace("OBS_TABLE", _obs_table())

@@ -51,6 +51,3 @@ class RotorcraftVectorEnv(TaskVectorEnv):
     def lateral_offsets(self, obs: np.ndarray) -> np.ndarray:
         """Lateral CG offsets dy [m], shape (num_envs, 1), of batched observations (num_envs, 19)."""
         return np.asarray(obs, dtype=float)[:, OBS_Y:OBS_Y + 1]
-
-    def _make_renderer(self):
-        return self.task.renderer()
