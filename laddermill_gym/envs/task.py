@@ -19,7 +19,7 @@ from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.envs.actions import ActionMap, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
 from laddermill_gym.kernels.contract import B3_POS, B3_SIZE
-from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
+from laddermill_gym.kernels.integrate import GROUND, LIMIT, NONFINITE, OK, SINGULAR
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
     AUX_GROUND_START,
@@ -33,6 +33,7 @@ from laddermill_gym.kernels.rigid.observe import (
 from laddermill_gym.ladder.scene import Scene, load_scene
 from laddermill_gym.model.packing import make_workspace
 from laddermill_gym.sim.batch import BatchSimulator
+from laddermill_gym.sim.reports import ground_stop_text
 
 __all__ = ["RewardConfig", "TerminationConfig", "WingTask", "FAILURES", "scene_trim"]
 
@@ -104,7 +105,8 @@ class TerminationConfig:
     """When an episode ends as a physical failure (``terminated``).
 
     min_altitude [m]: a wing CG below it counts as ground contact; default half the wing span (a wing rolled
-    to 90 deg at that height touches the ground with a tip).
+    to 90 deg at that height touches the ground with a tip). A wing CG or cable node reaching the scene's
+    ``integrator.ground_height`` within a control period (``ground_contact: stop``) is a ground contact too.
     breaking_factor [-]: the cable fails when an element's tension exceeds this times its breaking load.
     alpha_range_deg [deg], max_abs_beta_deg [deg]: the quasi-steady aerodynamic model is left "by far"
     (deep stall or reversed flow; the attached-flow range of the default wing is about -10 to 15 deg).
@@ -353,6 +355,7 @@ class WingTask:
         failure[self.aux[:, AUX_MAX_TENSION] > self.breaking_tension] = 3
         failure[self.aux[:, AUX_MIN_ALTITUDE] < self.min_altitude] = 2
         failure[self.batch.status != OK] = 1
+        failure[self.batch.status == GROUND] = 2
         terminated = failure != 0
         terms["reward_failure"] = -rc.failure_penalty * terminated
         reward = (terms["reward_power"] + terms["reward_lateral"] + terms["reward_rates"] + terms["reward_effort"]
@@ -378,6 +381,9 @@ class WingTask:
         o = self.obs[b].reshape(self.n_wings, N_OBS_PER_WING)
         if code == 1:
             return f"t = {t:.2f} s: integration failed ({_STATUS_TEXT.get(int(self.batch.status[b]), 'unknown')})"
+        if code == 2 and self.batch.status[b] == GROUND:
+            bt = self.batch
+            return f"t = {t:.2f} s: {ground_stop_text(self.scene.assembly, bt.states[b], bt.settings.ground_height)}"
         if code == 2:
             k = int(np.argmin(-(o[:, OBS_INDEX['dz']] + self.nominal[:, 2])))
             return f"t = {t:.2f} s: ground contact, wing {k} CG at {self.aux[b, AUX_MIN_ALTITUDE]:.2f} m altitude"

@@ -108,8 +108,10 @@ AO2_FORCE_X, AO2_FORCE_Z, AO2_MOMENT, AO2_KAPPA, AO2_G = 0, 1, 2, 3, 6
 OBS_OFFSET, OBS_VELOCITY, OBS_EULER, OBS_RATES, OBS_ALPHA, OBS_BETA, OBS_TENSION, OBS_SIZE = 0, 3, 6, 9, 12, 13, 14, 15
 
 # ------------------------------------------------------------------------------------------- limits
-#: Integrator safety limits ``limits``: largest speed [m/s], largest angular rate [rad/s].
-LIM_SPEED, LIM_RATE, LIM_SIZE = 0, 1, 2
+#: Integrator safety limits ``limits``: largest speed [m/s], largest angular rate [rad/s], ground height h_g [m]
+#: (height h = -z): a wing CG or free node at h <= h_g after a step stops the run; -inf when the kernels are not
+#: to stop on the ground (``ground_contact`` "flag" or "off", ``sim/simulator.py``).
+LIM_SPEED, LIM_RATE, LIM_GROUND, LIM_SIZE = 0, 1, 2, 3
 
 # ------------------------------------------------------------------------------------------- records
 KModel = namedtuple(

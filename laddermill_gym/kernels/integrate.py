@@ -2,7 +2,8 @@
 error-controlled Dormand-Prince 5(4) for reference solutions.
 
 Status codes returned by the integrators: 0 ok, 1 singular mass matrix, 2 non-finite state,
-3 a speed or rate limit exceeded. On a non-zero status the state is left at the last good step.
+3 a speed or rate limit exceeded, 4 a wing CG or free cable node at or below the ground height
+(``limits[LIM_GROUND]``). On a non-zero status the state is left at the last good step.
 """
 
 import math
@@ -11,7 +12,7 @@ from numba import njit
 
 from laddermill_gym.kernels.dispatch import model_check, model_rhs
 
-OK, SINGULAR, NONFINITE, LIMIT = 0, 1, 2, 3
+OK, SINGULAR, NONFINITE, LIMIT, GROUND = 0, 1, 2, 3, 4
 
 # _nrt=False on these kernels (and on the model kinds' rhs/check, kernels/rigid/kinds.py): they allocate nothing,
 # and numba's reference counting of the packed model's arrays passed through them cost about 1.3 us per
@@ -29,7 +30,7 @@ def rhs(t, x, u, dx, M, W):
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"}, _nrt=False)
 def normalise_and_check(x, M, limits):
     """Normalise the state after a step as the model kind needs (quaternions) and check it against
-    ``limits`` (``LIM_SPEED`` [m/s], ``LIM_RATE`` [rad/s]). Returns a status code."""
+    ``limits`` (``LIM_SPEED`` [m/s], ``LIM_RATE`` [rad/s], ``LIM_GROUND`` [m]). Returns a status code."""
     return model_check(M.kind, x, M, limits)
 
 
@@ -84,7 +85,8 @@ C2, C3, C4, C5 = 0.2, 0.3, 0.8, 8.0 / 9.0
 def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
     """Integrate x in place from t to t_end with adaptive Dormand-Prince 5(4) (local extrapolation).
 
-    h is the first trial step [s]. Returns (status, accepted steps, rejected steps, last step size).
+    h is the first trial step [s]. Returns (status, accepted steps, rejected steps, last step size [s], time [s]
+    of x: t_end, or on a failure the time of the last accepted step, where x is left).
     The error norm is the RMS of err_i / (atol + rtol max(|x_i|, |x_new_i|)); steps are accepted when
     it is <= 1 and the next step is h * min(5, max(0.2, 0.9 err^(-1/5))).
     """
@@ -93,10 +95,10 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
     acc = 0
     rej = 0
     if rhs(t, x, u, k1, M, W) != 0:
-        return SINGULAR, acc, rej, h
+        return SINGULAR, acc, rej, h, t
     while t < t_end:
         if acc + rej >= max_steps:
-            return LIMIT, acc, rej, h
+            return LIMIT, acc, rej, h, t
         last = False
         if t + h >= t_end:
             h = t_end - t
@@ -104,27 +106,27 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
         for i in range(ns):
             xt[i] = x[i] + h * A21 * k1[i]
         if rhs(t + C2 * h, xt, u, k2, M, W) != 0:
-            return SINGULAR, acc, rej, h
+            return SINGULAR, acc, rej, h, t
         for i in range(ns):
             xt[i] = x[i] + h * (A31 * k1[i] + A32 * k2[i])
         if rhs(t + C3 * h, xt, u, k3, M, W) != 0:
-            return SINGULAR, acc, rej, h
+            return SINGULAR, acc, rej, h, t
         for i in range(ns):
             xt[i] = x[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])
         if rhs(t + C4 * h, xt, u, k4, M, W) != 0:
-            return SINGULAR, acc, rej, h
+            return SINGULAR, acc, rej, h, t
         for i in range(ns):
             xt[i] = x[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
         if rhs(t + C5 * h, xt, u, k5, M, W) != 0:
-            return SINGULAR, acc, rej, h
+            return SINGULAR, acc, rej, h, t
         for i in range(ns):
             xt[i] = x[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i])
         if rhs(t + h, xt, u, k6, M, W) != 0:
-            return SINGULAR, acc, rej, h
+            return SINGULAR, acc, rej, h, t
         for i in range(ns):
             xp[i] = x[i] + h * (B1 * k1[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i])
         if rhs(t + h, xp, u, k7, M, W) != 0:
-            return SINGULAR, acc, rej, h
+            return SINGULAR, acc, rej, h, t
         err = 0.0
         for i in range(ns):
             ei = h * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i])
@@ -136,18 +138,18 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
         if err <= 1.0:
             status = normalise_and_check(xp, M, limits)
             if status != OK:
-                return status, acc, rej, h
+                return status, acc, rej, h, t
             for i in range(ns):
                 x[i] = xp[i]
             t = t_end if last else t + h
             acc += 1
             # first-same-as-last; after renormalisation re-evaluate for exactness
             if rhs(t, x, u, k1, M, W) != 0:
-                return SINGULAR, acc, rej, h
+                return SINGULAR, acc, rej, h, t
             fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
             if not last:
                 h *= min(5.0, max(0.2, fac))
         else:
             rej += 1
             h *= max(0.2, 0.9 * err ** -0.2)
-    return OK, acc, rej, h
+    return OK, acc, rej, h, t

@@ -205,11 +205,15 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
                        elevator_down=math.radians(ini.number("elevator_down_deg", 0.0)))
     ini.done()
     it = s.section("integrator")
+    if it.data.get("ground_contact") is False:  # YAML 1.1 reads a bare `off` as false
+        it.data["ground_contact"] = "off"
     settings = IntegratorSettings(method=it.text("method", choices=("rk4", "dp54")), dt=it.number("dt", positive=True),
                                   rtol=it.number("rtol", 1e-8, positive=True),
                                   atol=it.number("atol", 1e-10, positive=True),
                                   max_speed=it.number("max_speed", positive=True),
-                                  max_rate=it.number("max_rate", positive=True))
+                                  max_rate=it.number("max_rate", positive=True),
+                                  ground_height=it.number("ground_height", 0.0),
+                                  ground_contact=it.text("ground_contact", "stop", choices=("stop", "flag", "off")))
     it.done()
     s.done()
     # overrides

@@ -18,6 +18,7 @@ from laddermill_gym.model.builders import CableSpec
 from laddermill_gym.model.configio import CONFIG_DIR, ConfigError, config_path, read_yaml
 from laddermill_gym.model.params import WindParams
 from laddermill_gym.rotorcraft.rotor import RotorParams, load_rotor_config
+from laddermill_gym.sim.reports import GROUND_MODES
 from laddermill_gym.sim.simulator import IntegratorSettings
 
 #: Folder of the craft YAML files; the default craft.
@@ -130,10 +131,14 @@ def load_craft_config(name_or_path: str | Path = DEFAULT_CRAFT) -> CraftConfig:
     collective = math.radians(ini.number("collective_deg"))
     ini.done()
     integ = s.section("integrator")
+    if integ.data.get("ground_contact") is False:  # YAML 1.1 reads a bare `off` as false
+        integ.data["ground_contact"] = "off"
     settings = IntegratorSettings(method=integ.text("method", "rk4", choices=("rk4", "dp54")),
                                   dt=integ.number("dt", positive=True),
                                   max_speed=integ.number("max_speed", 100.0, positive=True),
-                                  max_rate=integ.number("max_rate", 50.0, positive=True))
+                                  max_rate=integ.number("max_rate", 50.0, positive=True),
+                                  ground_height=integ.number("ground_height", 0.0),
+                                  ground_contact=integ.text("ground_contact", "stop", choices=GROUND_MODES))
     integ.done()
     eta = s.number("electrical_efficiency", positive=True)
     if eta > 1.0:

@@ -21,6 +21,7 @@ from laddermill_gym.kernels.contract import (
     B3_RATE,
     B3_SIZE,
     B3_VEL,
+    LIM_GROUND,
     LIM_RATE,
     LIM_SIZE,
     LIM_SPEED,
@@ -33,12 +34,13 @@ from laddermill_gym.kernels.contract import (
     TM_DT,
     TM_T0,
 )
-from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR, dp54_advance, rk4_advance
+from laddermill_gym.kernels.integrate import OK, dp54_advance, rk4_advance
 from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 from laddermill_gym.model.states import euler_from_quaternion
+from laddermill_gym.sim.reports import GROUND_MODES, body_heights, diagnose, failure_message
 
 
 def _slot_names(size: int, *groups) -> tuple[str, ...]:
@@ -69,6 +71,10 @@ class IntegratorSettings:
 
     method : "rk4" (fixed step dt [s]) or "dp54" (adaptive, rtol/atol).
     max_speed [m/s], max_rate [rad/s]: a state beyond these is reported as exploding.
+    ground_height [m]: height h = -z of the ground (global z points down).
+    ground_contact : what a wing CG or free cable node at h <= ground_height after a step does: "stop" (the run
+    stops at the last state above the ground with a SimulationError naming the time, the body and its height),
+    "flag" (the run goes on; ``sim.recording.record`` flags the contact per body and sample) or "off" (no ground).
     """
 
     method: str = "rk4"
@@ -77,12 +83,24 @@ class IntegratorSettings:
     atol: float = 1e-10
     max_speed: float = 300.0
     max_rate: float = 100.0
+    ground_height: float = 0.0
+    ground_contact: str = "stop"
+
+    def __post_init__(self):
+        if self.ground_contact not in GROUND_MODES:
+            raise ValueError(f"IntegratorSettings.ground_contact = {self.ground_contact!r}: must be one of "
+                             f"{', '.join(repr(m) for m in GROUND_MODES)}")
+        h = self.ground_height
+        if isinstance(h, bool) or not isinstance(h, (int, float, np.number)) or not np.isfinite(h):
+            raise ValueError(f"IntegratorSettings.ground_height = {h!r}: must be a finite number [m]")
 
 
 def limits_array(settings: IntegratorSettings) -> np.ndarray:
-    """The kernels' ``limits`` (slots ``LIM_*``): largest speed [m/s] and angular rate [rad/s]."""
+    """The kernels' ``limits`` (slots ``LIM_*``): largest speed [m/s] and angular rate [rad/s], and the ground
+    height [m] where a contact stops the run (-inf unless ``ground_contact`` is "stop")."""
     lim = np.zeros(LIM_SIZE)
     lim[LIM_SPEED], lim[LIM_RATE] = settings.max_speed, settings.max_rate
+    lim[LIM_GROUND] = float(settings.ground_height) if settings.ground_contact == "stop" else -np.inf
     return lim
 
 
@@ -218,66 +236,44 @@ class Simulator:
             status, done = rk4_advance(self.t, self.state, self.controls, s.dt, int(n_steps), self.model,
                                        self.work, self.limits)
             self.t += done * s.dt
+            h = s.dt
         else:
-            status, done = self._dp54(self.t + n_steps * s.dt)
+            status, h = self._dp54(self.t + n_steps * s.dt)
         if status != OK:
-            self._raise(status)
+            self._raise(status, h)
         return self.state
 
     def _dp54(self, t_end: float):
+        """Integrate to t_end [s] with DP5(4); (status, size of the last step tried [s]). On a failure the time is
+        that of the last accepted step, where the state is left."""
         s = self.settings
-        status, acc, rej, _ = dp54_advance(self.t, t_end, self.state, self.controls, min(s.dt, t_end - self.t),
-                                           s.rtol, s.atol, self.model, self.work, self.limits, 10_000_000)
-        if status == OK:
-            self.t = t_end
-        return status, acc
+        status, acc, rej, h, t = dp54_advance(self.t, t_end, self.state, self.controls, min(s.dt, t_end - self.t),
+                                              s.rtol, s.atol, self.model, self.work, self.limits, 10_000_000)
+        self.t = t_end if status == OK else t
+        return status, h
 
     def advance_to(self, t_end: float, rtol: float | None = None, atol: float | None = None) -> np.ndarray:
         """Integrate to t_end [s] with the error-controlled Dormand-Prince 5(4) method."""
         s = self.settings
-        status, acc, rej, _ = dp54_advance(self.t, float(t_end), self.state, self.controls,
-                                           min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt,
-                                           rtol or s.rtol, atol or s.atol, self.model, self.work, self.limits,
-                                           100_000_000)
+        status, acc, rej, h, t = dp54_advance(self.t, float(t_end), self.state, self.controls,
+                                              min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt,
+                                              rtol or s.rtol, atol or s.atol, self.model, self.work, self.limits,
+                                              100_000_000)
         if status != OK:
-            self._raise(status)
+            self.t = t  # the last accepted step, where the state is left
+            self._raise(status, h)
         self.t = float(t_end)
         return self.state
 
-    def _raise(self, status: int):
-        """Diagnose a failed step from the last good state and one trial right-hand side."""
-        where = self.diagnose()
-        kind = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state",
-                LIMIT: "speed or rate limit exceeded"}.get(status, f"status {status}")
-        raise SimulationError(f"integration failed at t = {self.t:.6g} s ({kind}); {where}")
+    def _raise(self, status: int, h: float):
+        """Raise the report of a step of h [s] that failed with ``status`` (``sim/reports.py``: a ground contact
+        names the time, the bodies and their heights; a breakdown the time, the body and the quantity over its
+        limit in the failed step, and :meth:`diagnose` of the last good state)."""
+        raise SimulationError(failure_message(self, status, h))
 
     def diagnose(self) -> str:
         """Name the body, node or element with the largest speed, rate or derivative in the current state."""
-        a = self.assembly
-        msgs = []
-        try:
-            dx = self.rhs(self.t, self.state, self.controls)
-        except SimulationError as err:
-            return str(err)
-        bad = np.flatnonzero(~np.isfinite(dx))
-        if bad.size:
-            msgs.append(f"non-finite derivative of {self.state_name(int(bad[0]))}")
-        speeds = np.linalg.norm(self.wing_velocities(), axis=1) if a.n_wings else np.zeros(0)
-        if speeds.size:
-            k = int(np.argmax(speeds))
-            msgs.append(f"fastest wing {k}: speed {speeds[k]:.4g} m/s")
-        rates = np.linalg.norm(self.wing_rates(), axis=1) if a.n_wings else np.zeros(0)
-        if rates.size:
-            k = int(np.argmax(rates))
-            msgs.append(f"wing {k} angular rate {rates[k]:.4g} rad/s")
-        if a.elements.count:
-            ten = self.tensions()
-            e = int(np.argmax(ten))
-            msgs.append(f"element {e} tension {ten[e]:.4g} N")
-        acc = np.abs(dx)
-        i = int(np.nanargmax(np.where(np.isfinite(acc), acc, -1.0)))
-        msgs.append(f"largest derivative {self.state_name(i)} = {dx[i]:.4g}")
-        return "; ".join(msgs)
+        return diagnose(self)
 
     # ------------------------------------------------------------------ names and views
     def state_name(self, i: int) -> str:
@@ -351,6 +347,10 @@ class Simulator:
         va = self.air_velocity_body()
         V = np.maximum(np.linalg.norm(va, axis=1), 1e-300)
         return np.stack([np.arctan2(va[:, 2], va[:, 0]), np.arcsin(np.clip(va[:, 1] / V, -1, 1))], axis=1)
+
+    def body_heights(self) -> tuple[np.ndarray, np.ndarray]:
+        """Heights h = -z [m] of the wing CGs (n_wings,) and of the free cable nodes (n_nodes,)."""
+        return body_heights(self.assembly, self.state)
 
     def node_positions(self) -> np.ndarray:
         """Free cable node positions, shape (n_nodes, 3) [m]."""

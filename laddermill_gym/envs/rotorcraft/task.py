@@ -26,7 +26,7 @@ from laddermill_gym.envs.rotorcraft.settings import (
 from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim
 from laddermill_gym.envs.task import config_from
 from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_SIZE, B3_VEL
-from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
+from laddermill_gym.kernels.integrate import GROUND, LIMIT, NONFINITE, OK, SINGULAR
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
 from laddermill_gym.rotorcraft.craft import TETHER_NAMES, CraftSimulator
 from laddermill_gym.rotorcraft.craft_observe import (
@@ -51,6 +51,7 @@ from laddermill_gym.rotorcraft.craft_observe import (
     craft_step_observe_serial,
 )
 from laddermill_gym.sim.batch import BatchSimulator
+from laddermill_gym.sim.reports import ground_stop_text
 
 __all__ = ["CraftTask", "CRAFT_FAILURES", "CraftScene"]
 
@@ -300,6 +301,7 @@ class CraftTask:
         failure[~np.all(np.isfinite(raw[:, CO_THRUST: CO_THRUST + 2]), axis=1)] = 2
         broke = self.batch.status != OK
         failure[broke] = np.where(aux[broke, CA_INFLOW_OK] == 1.0, 1, 2)
+        failure[self.batch.status == GROUND] = 3
         return failure
 
     def _evaluate(self, a: np.ndarray, n_clipped: np.ndarray):
@@ -346,6 +348,9 @@ class CraftTask:
             return f"t = {t:.2f} s: {error}"
         if code == 2:
             return f"t = {t:.2f} s: a rotor's Glauert inflow did not converge"
+        if code == 3 and self.batch.status[b] == GROUND:
+            bt = self.batch
+            return f"t = {t:.2f} s: {ground_stop_text(self.craft.assembly, bt.states[b], bt.settings.ground_height)}"
         if code == 3:
             altitude = self.aux[b, CA_ALTITUDE]
             return f"t = {t:.2f} s: ground contact, CG at {altitude:.2f} m altitude (< {self.min_altitude:.3g} m)"

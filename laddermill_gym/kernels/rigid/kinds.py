@@ -21,6 +21,7 @@ from laddermill_gym.kernels.contract import (
     B2_SIZE,
     B2_U,
     B2_W,
+    B2_Z,
     B3_POS,
     B3_QUAT,
     B3_RATE,
@@ -31,10 +32,13 @@ from laddermill_gym.kernels.contract import (
     CTRL_RUDDER,
     GL_ALPHA0,
     GL_DALPHA,
+    LIM_GROUND,
     LIM_RATE,
     LIM_SPEED,
+    N2_POS,
     N2_SIZE,
     N2_VEL,
+    N3_POS,
     N3_SIZE,
     N3_VEL,
     N_CONTROLS,
@@ -45,8 +49,8 @@ from laddermill_gym.kernels.rigid.rhs2d import rhs2d
 from laddermill_gym.kernels.rigid.rhs3d import rhs3d
 
 _FM = {"contract", "reassoc", "nsz", "arcp"}
-#: Status codes of a post-step check (the integrators' codes).
-OK, NONFINITE, LIMIT = 0, 2, 3
+#: Status codes of a post-step check (the integrators' codes, ``kernels/integrate.py``).
+OK, NONFINITE, LIMIT, GROUND = 0, 2, 3, 4
 
 # The markers hold a small array rather than a scalar: numba's parallel (prange) lowering passes the packed
 # model to its worker function field by field and accepts arrays, not scalars, inside a nested tuple.
@@ -119,11 +123,14 @@ def _all_finite(x):
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def rigid3d_check(kind, x, M, limits):
-    """Renormalise every body's quaternion and check speeds [m/s] and rates [rad/s] against ``limits``."""
+    """Renormalise every body's quaternion and check speeds [m/s] and rates [rad/s] against ``limits``, and the
+    heights -z [m] of the body CGs and free nodes against the ground height ``limits[LIM_GROUND]`` (GROUND at or
+    below it)."""
     nw = M.wtype.size
     nn = M.node_mass.size
     vmax2 = limits[LIM_SPEED] * limits[LIM_SPEED]
     wmax2 = limits[LIM_RATE] * limits[LIM_RATE]
+    hg = limits[LIM_GROUND]
     if not _all_finite(x):
         return NONFINITE
     for k in range(nw):
@@ -136,32 +143,42 @@ def rigid3d_check(kind, x, M, limits):
             return LIMIT
         if x[orr] ** 2 + x[orr + 1] ** 2 + x[orr + 2] ** 2 > wmax2:
             return LIMIT
+        if -x[o + B3_POS + 2] <= hg:
+            return GROUND
     base = B3_SIZE * nw
     for j in range(nn):
         o = base + N3_SIZE * j + N3_VEL
         if x[o] ** 2 + x[o + 1] ** 2 + x[o + 2] ** 2 > vmax2:
             return LIMIT
+        if -x[base + N3_SIZE * j + N3_POS + 2] <= hg:
+            return GROUND
     return OK
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def rigid2d_check(kind, x, M, limits):
-    """Check in-plane speeds [m/s] and pitch rates [rad/s] against ``limits``."""
+    """Check in-plane speeds [m/s] and pitch rates [rad/s] against ``limits``, and the heights -z [m] of the body
+    CGs and free nodes against the ground height ``limits[LIM_GROUND]`` (GROUND at or below it)."""
     nw = M.wtype.size
     nn = M.node_mass.size
     vmax2 = limits[LIM_SPEED] * limits[LIM_SPEED]
     wmax2 = limits[LIM_RATE] * limits[LIM_RATE]
+    hg = limits[LIM_GROUND]
     if not _all_finite(x):
         return NONFINITE
     for k in range(nw):
         o = B2_SIZE * k
         if x[o + B2_U] ** 2 + x[o + B2_W] ** 2 > vmax2 or x[o + B2_Q] ** 2 > wmax2:
             return LIMIT
+        if -x[o + B2_Z] <= hg:
+            return GROUND
     base = B2_SIZE * nw
     for j in range(nn):
         o = base + N2_SIZE * j + N2_VEL
         if x[o] ** 2 + x[o + 1] ** 2 > vmax2:
             return LIMIT
+        if -x[base + N2_SIZE * j + N2_POS + 1] <= hg:
+            return GROUND
     return OK
 
 

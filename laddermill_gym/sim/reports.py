@@ -1,0 +1,178 @@
+"""Reports of a run that stops: which body reached the ground and when, which body broke a speed or rate limit
+or went non-finite in the step that failed, and what the last good state looks like (``diagnose``).
+``Simulator`` (``sim/simulator.py``) raises them as ``SimulationError``; the functions take the simulator as their
+first argument and never change its state, time or controls (only the workspace's scratch).
+
+The integrators leave the state at the last good step, so a report re-runs the failed step once from there
+with the speed, rate and ground checks off (``relaxed_limits``) and names what it finds in that trial state.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from laddermill_gym.kernels.contract import (
+    B2_Q,
+    B2_U,
+    B2_W,
+    B2_Z,
+    B3_POS,
+    B3_RATE,
+    B3_VEL,
+    LIM_GROUND,
+    LIM_RATE,
+    LIM_SPEED,
+    N2_POS,
+    N2_VEL,
+    N3_POS,
+    N3_VEL,
+)
+from laddermill_gym.kernels.integrate import GROUND, LIMIT, NONFINITE, OK, SINGULAR, dp54_advance, rk4_advance
+from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
+
+#: Ground-contact modes of ``IntegratorSettings.ground_contact``.
+GROUND_MODES: tuple[str, ...] = ("stop", "flag", "off")
+_KIND = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit exceeded"}
+#: Bodies named at most in one report.
+_MAX_NAMED = 4
+
+
+def relaxed_limits(limits: np.ndarray) -> np.ndarray:
+    """A copy of the kernels' ``limits`` with no speed, rate or ground check (only non-finite states stop)."""
+    lim = np.array(limits, dtype=np.float64)
+    lim[LIM_SPEED] = lim[LIM_RATE] = np.inf
+    lim[LIM_GROUND] = -np.inf
+    return lim
+
+
+def _blocks(asm, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(wing blocks (n_wings, wing_state_size), node blocks (n_nodes, node_state_size)) of the state x."""
+    nw, ws, ns = asm.n_wings, asm.wing_state_size, asm.node_state_size
+    return x[: nw * ws].reshape(nw, ws), x[nw * ws: nw * ws + asm.n_nodes * ns].reshape(asm.n_nodes, ns)
+
+
+def body_heights(asm, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Heights h = -z [m] of the wing CGs (n_wings,) and of the free cable nodes (n_nodes,) in the state x."""
+    w, n = _blocks(asm, x)
+    if asm.dim == 3:
+        return -w[:, B3_POS + 2], -n[:, N3_POS + 2]
+    return -w[:, B2_Z], -n[:, N2_POS + 1]
+
+
+def trial_state(sim, h: float) -> tuple[float, np.ndarray] | None:
+    """(time [s], state) one step of h [s] after the simulator's current state, integrated with the speed, rate
+    and ground checks off (RK4, or DP5(4) to t + h): the step that failed. None if that step fails too."""
+    s = sim.settings
+    x = sim.state.copy()
+    lim = relaxed_limits(sim.limits)
+    if s.method == "rk4":
+        status = rk4_advance(sim.t, x, sim.controls, h, 1, sim.model, sim.work, lim)[0]
+    else:
+        status = dp54_advance(sim.t, sim.t + h, x, sim.controls, h, s.rtol, s.atol, sim.model, sim.work, lim,
+                              100_000)[0]
+    return (sim.t + h, x) if status == OK else None
+
+
+def ground_message(sim, h: float) -> str:
+    """The report of a run stopped by ground contact in the step of h [s] after the current state: the time of
+    the first state at or below the ground [s], the bodies there ("wing 3", "node 7") and their heights [m]."""
+    hg = sim.settings.ground_height
+    trial = trial_state(sim, h)
+    t, x = trial if trial is not None else (sim.t, sim.state)
+    wh, nh = body_heights(sim.assembly, x)
+    names = [f"wing {k}" for k in range(wh.size)] + [f"node {j}" for j in range(nh.size)]
+    heights = np.concatenate([wh, nh])
+    at = np.flatnonzero(heights <= hg)
+    at = at[np.argsort(heights[at])] if at.size else np.array([int(np.argmin(heights))])
+    parts = [f"{names[i]} at height {heights[i]:.4g} m" for i in at[:_MAX_NAMED]]
+    more = f" and {at.size - _MAX_NAMED} more" if at.size > _MAX_NAMED else ""
+    return (f"ground contact at t = {t:.6g} s: {', '.join(parts)}{more} (ground height {hg:g} m); the state is "
+            f"kept at t = {sim.t:.6g} s, the last one before the contact")
+
+
+def ground_stop_text(asm, x: np.ndarray, ground_height: float) -> str:
+    """Why a batch copy in the state x (its last state above the ground) stopped with status GROUND: the ground
+    height [m] and the lowest wing CG or free cable node, which reached it in the next step (the environments)."""
+    wh, nh = body_heights(asm, x)
+    names = [f"wing {k}" for k in range(wh.size)] + [f"node {j}" for j in range(nh.size)]
+    h = np.concatenate([wh, nh])
+    i = int(np.argmin(h))
+    return (f"ground contact in the next physics step (ground height {ground_height:g} m); lowest body "
+            f"{names[i]} at {h[i]:.3g} m")
+
+
+def _limit_culprits(sim, x: np.ndarray) -> list[str]:
+    """Bodies of the state x over the speed [m/s] or rate [rad/s] limit, with the quantity."""
+    asm, s = sim.assembly, sim.settings
+    w, n = _blocks(asm, x)
+    if asm.dim == 3:
+        ws, wr = np.linalg.norm(w[:, B3_VEL: B3_VEL + 3], axis=1), np.linalg.norm(w[:, B3_RATE: B3_RATE + 3], axis=1)
+        ns = np.linalg.norm(n[:, N3_VEL: N3_VEL + 3], axis=1)
+    else:
+        ws, wr = np.hypot(w[:, B2_U], w[:, B2_W]), np.abs(w[:, B2_Q])
+        ns = np.linalg.norm(n[:, N2_VEL: N2_VEL + 2], axis=1)
+    out = [f"wing {k} speed {ws[k]:.4g} m/s > {s.max_speed:g} m/s" for k in np.flatnonzero(ws > s.max_speed)]
+    out += [f"wing {k} angular rate {wr[k]:.4g} rad/s > {s.max_rate:g} rad/s" for k in np.flatnonzero(wr > s.max_rate)]
+    out += [f"node {j} speed {ns[j]:.4g} m/s > {s.max_speed:g} m/s" for j in np.flatnonzero(ns > s.max_speed)]
+    return out
+
+
+def _rk4_trial(sim, h: float) -> np.ndarray | None:
+    """One classic RK4 step of h [s] from the current state in Python with the kernels' right-hand side and no
+    check at all (to see which entry turns non-finite); None if the mass matrix is singular on the way."""
+    x0, u, t = sim.state, sim.controls, sim.t
+    ks, xt = [], x0
+    for c, a in ((0.0, 0.0), (0.5, 0.5), (0.5, 0.5), (1.0, 1.0)):
+        if ks:
+            xt = x0 + a * h * ks[-1]
+        k = np.zeros_like(x0)
+        if _rhs_kernel(t + c * h, xt, u, k, sim.model, sim.work) != 0:
+            return None
+        ks.append(k)
+    return x0 + h / 6.0 * (ks[0] + 2.0 * (ks[1] + ks[2]) + ks[3])
+
+
+def diagnose(sim) -> str:
+    """Name the body, node or element with the largest speed, rate or derivative in the simulator's state."""
+    a = sim.assembly
+    dx = np.zeros(sim.n_state)
+    if _rhs_kernel(float(sim.t), sim.state, sim.controls, dx, sim.model, sim.work) != 0:
+        return f"t = {sim.t:.6g} s: the mass matrix is singular"
+    msgs = []
+    bad = np.flatnonzero(~np.isfinite(dx))
+    if bad.size:
+        msgs.append(f"non-finite derivative of {sim.state_name(int(bad[0]))}")
+    speeds = np.linalg.norm(sim.wing_velocities(), axis=1) if a.n_wings else np.zeros(0)
+    if speeds.size:
+        k = int(np.argmax(speeds))
+        msgs.append(f"fastest wing {k}: speed {speeds[k]:.4g} m/s")
+    rates = np.linalg.norm(sim.wing_rates(), axis=1) if a.n_wings else np.zeros(0)
+    if rates.size:
+        k = int(np.argmax(rates))
+        msgs.append(f"wing {k} angular rate {rates[k]:.4g} rad/s")
+    if a.elements.count:
+        ten = sim.tensions()
+        e = int(np.argmax(ten))
+        msgs.append(f"element {e} tension {ten[e]:.4g} N")
+    acc = np.abs(dx)
+    i = int(np.nanargmax(np.where(np.isfinite(acc), acc, -1.0)))
+    msgs.append(f"largest derivative {sim.state_name(i)} = {dx[i]:.4g}")
+    return "; ".join(msgs)
+
+
+def failure_message(sim, status: int, h: float) -> str:
+    """The report of a step of h [s] that failed with the integrators' ``status``: the time, the body, node or
+    element and the quantity (a ground contact: :func:`ground_message`)."""
+    if status == GROUND:
+        return ground_message(sim, h)
+    culprit = []
+    if status == LIMIT:
+        trial = trial_state(sim, h)
+        culprit = _limit_culprits(sim, trial[1]) if trial is not None else []
+    elif status == NONFINITE:
+        x = _rk4_trial(sim, h)
+        bad = np.flatnonzero(~np.isfinite(x)) if x is not None else np.zeros(0, dtype=int)
+        culprit = [f"{sim.state_name(int(bad[0]))} non-finite"] if bad.size else []
+    what = f"; in the step to t = {sim.t + h:.6g} s: {', '.join(culprit[:_MAX_NAMED])}" if culprit else ""
+    kind = _KIND.get(status, f"status {status}")
+    return f"integration failed at t = {sim.t:.6g} s ({kind}){what}; last good state: {sim.diagnose()}"
