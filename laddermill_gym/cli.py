@@ -33,6 +33,11 @@ def cmd_simulate(args) -> int:
         ts = args.step_time
         wind = asm.wind.with_modulation(ts - 1e-3, 1e-3, np.ones(2), np.array([0.0, args.direction_step]))
         scene = scene.replace(assembly=dataclasses.replace(asm, wind=wind))
+    if args.ground_contact is not None or args.ground_height is not None:
+        g = scene.settings
+        scene = scene.replace(settings=dataclasses.replace(
+            g, ground_contact=g.ground_contact if args.ground_contact is None else args.ground_contact,
+            ground_height=g.ground_height if args.ground_height is None else args.ground_height))
     sim = scene.simulator(x0, u0)
     print(f"scene {scene.name}: {asm.n_wings} wings, {asm.n_nodes} cable nodes, {asm.elements.count} elements, "
           f"{asm.state_size} states, {'3D' if asm.dim == 3 else 'in-plane'}, sag {'on' if asm.sag else 'off'}, "
@@ -54,9 +59,29 @@ def cmd_simulate(args) -> int:
     print(f"simulated {span:.2f} s in {wall:.2f} s wall ({span / wall:.1f}x real time)")
     if rec.error:
         print(f"run stopped early: {rec.error}")
+    for line in _flag_lines(rec):
+        print(line)
     for f in files:
         print(f"wrote {f}")
     return 1 if rec.error and args.strict else 0
+
+
+def _flag_lines(rec) -> list[str]:
+    """Printed summary of a recording's flags: ground contacts (``ground_contact: flag``) and wings outside the
+    accurate range of their aerodynamic data."""
+    lines = []
+    if rec.ground_contacts:
+        shown = "; ".join(f"t = {c.t:.6g} s {c.body} at height {c.height:.4g} m" for c in rec.ground_contacts[:5])
+        more = f" (and {len(rec.ground_contacts) - 5} more)" if len(rec.ground_contacts) > 5 else ""
+        lines.append(f"ground contacts flagged (the run went on): {shown}{more}")
+    out = rec.views["aero_out_of_range"]
+    for k in np.flatnonzero(out.any(axis=0))[:5]:
+        i = int(np.argmax(out[:, k]))
+        lines.append(f"wing {k} outside the accurate range of its aerodynamic data in {int(out[:, k].sum())} of "
+                     f"{len(rec.t)} samples, first at t = {rec.t[i]:.6g} s (alpha "
+                     f"{np.degrees(rec.views['wing_alpha_rad'][i, k]):.1f} deg, beta "
+                     f"{np.degrees(rec.views['wing_beta_rad'][i, k]):.1f} deg)")
+    return lines
 
 
 def cmd_bench(args) -> int:
@@ -103,6 +128,11 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--direction-step", type=float, default=0.0,
                    help="wind direction step [rad] (the paper's disturbance is 0.01)")
     s.add_argument("--step-time", type=float, default=1.0, help="time of the direction step [s]")
+    s.add_argument("--ground-contact", choices=("stop", "flag", "off"), default=None,
+                   help="a wing or cable node reaching the ground: stop with a report, flag and go on, or no "
+                        "ground (default: the scene's integrator.ground_contact, else stop)")
+    s.add_argument("--ground-height", type=float, default=None,
+                   help="ground height [m] (default: the scene's integrator.ground_height, else 0)")
     s.add_argument("--strict", action="store_true", help="exit 1 if the integration breaks down")
     s.add_argument("--quiet", action="store_true", help="no progress bar")
     s.set_defaults(func=cmd_simulate)

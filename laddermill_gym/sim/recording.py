@@ -3,22 +3,45 @@
 from __future__ import annotations
 
 import csv
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
 from laddermill_gym.sim.simulator import SimulationError, Simulator
 
+#: The band of angle of attack [deg] where the shipped wing data (configs/wings/meijaard_wing.yaml) are accurate:
+#: attached flow on every surface. laddermill_gym/docs/wing_data.md: the main wing stalls at alpha_s = -16 / +18
+#: deg ("Surface coefficient curves") and the tail plane from about -14 and 18 deg of the aircraft's alpha ("Key
+#: numbers"); beyond, the table holds flat-plate estimates "good for keeping a simulation going, not for
+#: predicting post-stall manoeuvres" ("Limitations").
+ALPHA_RANGE_DEG: tuple[float, float] = (-14.0, 18.0)
+#: Largest sideslip [deg] where the wing data are accurate: the lateral coefficients are linear in beta (docs/
+#: model.md) and the fins, which carry them, stall at +-21 deg (wing_data.md, "Surface coefficient curves").
+MAX_ABS_BETA_DEG: float = 21.0
+
+
+class GroundContact(NamedTuple):
+    """A body found at or below the ground in a recorded sample (``ground_contact: flag``): the time [s] of the
+    first sample of that contact, the body ("wing 3", "node 7") and its height there [m]."""
+
+    t: float
+    body: str
+    height: float
+
 
 @dataclass
 class Recording:
     """Time histories: ``t`` (n,) [s] and ``views[name]`` (n, ...) with units in the names; ``error`` holds
-    the SimulationError message if the run broke down (the record stops at the last good state)."""
+    the SimulationError message if the run broke down (the record stops at the last good state);
+    ``ground_contacts`` the contacts flagged in the samples (each body's first sample at or below the ground
+    after one above it, in time order)."""
 
     t: np.ndarray
     views: dict[str, np.ndarray]
     error: str | None = None
+    ground_contacts: list[GroundContact] = field(default_factory=list)
 
     def save_npz(self, path: Path) -> Path:
         np.savez_compressed(path, t_s=self.t, error=np.array(self.error or ""), **self.views)
@@ -41,12 +64,26 @@ class Recording:
         return path
 
 
-def record(sim: Simulator, duration: float, sample_dt: float, progress: bool = True) -> Recording:
+def record(sim: Simulator, duration: float, sample_dt: float, progress: bool = True,
+           alpha_range_deg: tuple[float, float] = ALPHA_RANGE_DEG, max_abs_beta_deg: float = MAX_ABS_BETA_DEG
+           ) -> Recording:
     """Advance ``sim`` by ``duration`` [s] with its current controls, sampling the views every
-    ``sample_dt`` [s] (rounded to whole integrator steps). A breakdown ends the record early and is kept in
-    ``Recording.error``."""
+    ``sample_dt`` [s] (rounded to whole integrator steps). A breakdown or a ground contact in "stop" mode ends
+    the record early with the last good state (its last sample, between two regular ones) and the report in
+    ``Recording.error``.
+
+    Besides :meth:`Simulator.views <laddermill_gym.sim.simulator.Simulator.views>` the record holds the boolean
+    views ``aero_out_of_range`` (n, n_wings): the wing's angle of attack outside ``alpha_range_deg`` [deg] or its
+    |sideslip| above ``max_abs_beta_deg`` [deg], the band where its aerodynamic data are accurate (defaults:
+    the shipped wing's, :data:`ALPHA_RANGE_DEG` and :data:`MAX_ABS_BETA_DEG`; never for a body without a table,
+    the rotorcraft); and, unless ``settings.ground_contact`` is "off", ``wing_ground_contact`` (n, n_wings) and
+    ``node_ground_contact`` (n, n_nodes): the wing CG or free node at or below ``settings.ground_height``."""
     if not duration > 0 or not sample_dt > 0:
         raise ValueError(f"duration ({duration}) and sample_dt ({sample_dt}) must be > 0")
+    lo, hi = alpha_range_deg
+    if not (np.isfinite(lo) and np.isfinite(hi) and lo < hi and max_abs_beta_deg > 0):
+        raise ValueError(f"alpha_range_deg = {alpha_range_deg!r} (need finite low < high) and max_abs_beta_deg = "
+                         f"{max_abs_beta_deg!r} (need > 0)")
     dt = sim.settings.dt
     per = max(1, int(round(sample_dt / dt)))
     n = int(round(duration / (per * dt)))
@@ -63,6 +100,7 @@ def record(sim: Simulator, duration: float, sample_dt: float, progress: bool = T
                 sim.step(n_steps=per)
             except SimulationError as err:
                 error = str(err)
+                _add_last_good(sim, times, frames)
                 break
             times.append(sim.t)
             frames.append(sim.views())
@@ -72,4 +110,41 @@ def record(sim: Simulator, duration: float, sample_dt: float, progress: bool = T
         if bar:
             bar.close()
     views = {k: np.array([f[k] for f in frames]) for k in frames[0]}
-    return Recording(np.array(times), views, error)
+    views["aero_out_of_range"] = _aero_flags(sim, views, alpha_range_deg, max_abs_beta_deg)
+    t = np.array(times)
+    contacts = []
+    if sim.settings.ground_contact != "off":
+        contacts = _ground_flags(sim.settings.ground_height, t, views)
+    return Recording(t, views, error, contacts)
+
+
+def _add_last_good(sim: Simulator, times: list, frames: list) -> None:
+    """Append the simulator's state after a breakdown (the last good one, between two samples) to the record."""
+    if sim.t > times[-1]:
+        try:
+            frame = sim.views()
+        except SimulationError:  # a singular mass matrix right there: the last sample stays the last
+            return
+        times.append(sim.t)
+        frames.append(frame)
+
+
+def _aero_flags(sim: Simulator, views: dict, alpha_range_deg, max_abs_beta_deg) -> np.ndarray:
+    """(n, n_wings) True where a wing with an aerodynamic table is outside the accurate alpha / beta band."""
+    alpha, beta = np.degrees(views["wing_alpha_rad"]), np.degrees(views["wing_beta_rad"])
+    has_table = np.array([sim.assembly.wing(k).aero is not None for k in range(alpha.shape[1])], dtype=bool)
+    out = (alpha < alpha_range_deg[0]) | (alpha > alpha_range_deg[1]) | (np.abs(beta) > max_abs_beta_deg)
+    return out & has_table
+
+
+def _ground_flags(ground_height: float, t: np.ndarray, views: dict) -> list[GroundContact]:
+    """Add the views ``wing_ground_contact`` and ``node_ground_contact`` (height -z <= ground_height [m]) and
+    return the contacts: each body's first sample at or below the ground (and each new one after leaving it)."""
+    contacts = []
+    for kind, name in (("wing", "wing_position_m"), ("node", "node_position_m")):
+        h = -views[name][..., 2]
+        below = h <= ground_height
+        views[f"{kind}_ground_contact"] = below
+        starts = below & ~np.vstack([np.zeros((1, below.shape[1]), dtype=bool), below[:-1]])
+        contacts += [GroundContact(float(t[i]), f"{kind} {k}", float(h[i, k])) for i, k in np.argwhere(starts)]
+    return sorted(contacts)
