@@ -93,6 +93,25 @@ EF_L0, EF_MU, EF_EA, EF_DA, EF_DIAMETER, EF_SIZE = 0, 1, 2, 3, 4, 5
 #: End kinds of an element (``ek``).
 END_WING, END_NODE, END_FIXED = 0, 1, 2
 
+# ------------------------------------------------------------------------------------------- moving cable
+#: Ground station of the moving cable (``kernels/moving_cable.py``; parameters in ``model/station.py``), packed in
+#: the kind marker's array ``station``: piece length l0 [m]; the first (veered) and last (hauled) elements'
+#: unstretched lengths as fractions of l0 when the cable has moved 0 since the last transfer (Meijaard: 1/10,
+#: 11/10) [-]; their element indices; the offset of the station block in the state; mode (``MODE_PRESCRIBED``:
+#: the cable speed follows the schedule, ``MODE_DRUM``: the speed is a state driven by the tension difference
+#: against the generator torque); drum radius [m] and inertia referred to the drum axis [kg m^2]; offset of the
+#: generator torque in the controls; number of schedule points; the schedule: times [s], then speeds [m/s].
+SP_PIECE, SP_F_FIRST, SP_F_LAST, SP_E_FIRST, SP_E_LAST, SP_XOFF, SP_MODE = range(7)
+SP_RADIUS, SP_INERTIA, SP_UOFF, SP_NSCHED, SP_SCHED = 7, 8, 9, 10, 11
+MODE_PRESCRIBED, MODE_DRUM = 0.0, 1.0
+#: Station block of the state (after the bodies and nodes): cable moved since the last transfer s [m] (the
+#: first element's unstretched length is f_first l0 + s, the last one's f_last l0 - s), number of transfers
+#: [-] (signed; wing slots shift by one at each), cable speed V_c [m/s] (> 0: the cable leaves the station on
+#: the first, veered side and returns on the last, hauled side), generator energy E [J] (the integral of the
+#: generator's mechanical power: (T_first - T_last) V_c with a prescribed speed, (torque / radius) V_c with a
+#: drum).
+SX_MOVED, SX_TRANSFERS, SX_SPEED, SX_ENERGY, SX_SIZE = 0, 1, 2, 3, 4
+
 # ------------------------------------------------------------------------------------------- loads output
 #: Wing aerodynamics output ``W.aout`` (3D): force (3) [N] and moment (3) [N m] in body axes, the
 #: alpha-rate coefficients of the six equations (6) and the direction g along which they act (3).

@@ -20,9 +20,12 @@ The generic rigid-body kernels import this module, never a vehicle.
 from numba.core.errors import TypingError
 from numba.extending import overload
 
+from laddermill_gym.kernels.contract import EF_L0
+
 _RHS: dict[type, object] = {}
 _CHECK: dict[type, object] = {}
 _LOADS: dict[type, object] = {}
+_ENDS: dict[type, tuple] = {}
 
 
 def register_kind(marker: type, rhs, check) -> None:
@@ -34,6 +37,14 @@ def register_kind(marker: type, rhs, check) -> None:
 def register_vehicle(marker: type, loads) -> None:
     """Register the body-loads function of a vehicle (``marker`` namedtuple class)."""
     _LOADS[marker] = loads
+
+
+def register_moving_ends(marker: type, rest_length, elongation_rate) -> None:
+    """Register element rest lengths that change in time for a model kind (the moving cable):
+    ``rest_length(kind, e, t, x, M) -> l0`` [m] and ``elongation_rate(kind, e, t, x, M, ln, l0, ld) -> rate``
+    [m/s], the material elongation rate l0 d(eps)/dt from the element's length ln [m] and its rate ld [m/s].
+    A kind that registers none has the packed lengths ``M.ef[e, EF_L0]`` and rate ``ld``."""
+    _ENDS[marker] = (rest_length, elongation_rate)
 
 
 def _lookup(table: dict, typ, what: str):
@@ -56,6 +67,16 @@ def model_check(kind, x, M, limits):
 def body_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
     """External loads on rigid body k from its vehicle (jitted code only)."""
     raise NotImplementedError("body_loads is resolved inside numba kernels")
+
+
+def rest_length(kind, e, t, x, M):
+    """Unstretched length [m] of element e at time t in state x (jitted code only)."""
+    raise NotImplementedError("rest_length is resolved inside numba kernels")
+
+
+def elongation_rate(kind, e, t, x, M, ln, l0, ld):
+    """Material elongation rate [m/s] of element e of length ln [m] changing at ld [m/s] (jitted code only)."""
+    raise NotImplementedError("elongation_rate is resolved inside numba kernels")
 
 
 @overload(model_rhs, inline="always")
@@ -86,3 +107,21 @@ def _body_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
         return impl(vehicle, k, t, x, R, u, M, W, Dk, env)
 
     return f
+
+
+@overload(rest_length, inline="always")
+def _rest_length(kind, e, t, x, M):
+    cls = getattr(kind, "instance_class", None)
+    if cls in _ENDS:
+        impl = _ENDS[cls][0]
+        return lambda kind, e, t, x, M: impl(kind, e, t, x, M)
+    return lambda kind, e, t, x, M: M.ef[e, EF_L0]
+
+
+@overload(elongation_rate, inline="always")
+def _elongation_rate(kind, e, t, x, M, ln, l0, ld):
+    cls = getattr(kind, "instance_class", None)
+    if cls in _ENDS:
+        impl = _ENDS[cls][1]
+        return lambda kind, e, t, x, M, ln, l0, ld: impl(kind, e, t, x, M, ln, l0, ld)
+    return lambda kind, e, t, x, M, ln, l0, ld: ld

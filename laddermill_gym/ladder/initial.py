@@ -13,6 +13,7 @@ from laddermill_gym.model.builders import chain_state
 from laddermill_gym.model.packing import wind_fields
 from laddermill_gym.model.params import AERO_INDEX, N_CONTROLS
 from laddermill_gym.model.states import planar_from_3d, planar_to_3d, rotation_from_euler
+from laddermill_gym.model.station import station_initial
 from laddermill_gym.sim.simulator import Simulator
 from laddermill_gym.sim.statics import pitch_trim_alpha, static_equilibrium, table_spline, trim_alpha
 
@@ -61,7 +62,7 @@ def _rest_state(scene, positions, elevators, ends):
 
 
 def _march(A, L, EA, T0, forces, w=0.0):
-    """Attachment points of a chain of pieces (unstretched length L [m], stiffness EA [N], weight w [N/m])
+    """Attachment points of a chain of pieces (unstretched lengths L (n + 1,) [m], stiffness EA [N], weight w [N/m])
     from A: piece k carries the tension vector T_k (x, z) [N] and T_{k+1} = T_k - F_k at wing k. Its chord
     is L (1 + T/EA) less the parabolic sag shortening w_perp^2 L^3 / (24 T^2) (Irvine 1981), floored at L/2.
     T0 may be a batch (..., 2). Returns the wing attachment points (..., n, 3) and the end of the last
@@ -69,11 +70,12 @@ def _march(A, L, EA, T0, forces, w=0.0):
     T = np.array(T0, dtype=float)
     p = np.broadcast_to(np.asarray(A, float), T.shape[:-1] + (3,)).copy()
     pts = []
+    L = np.broadcast_to(np.asarray(L, float), (len(forces) + 1,))
     for k in range(len(forces) + 1):
         Tn = np.maximum(np.hypot(T[..., 0], T[..., 1]), 1e-9)[..., None]
         e = T / Tn
-        chord = L * (1.0 + Tn / EA) - (w * e[..., :1]) ** 2 * L ** 3 / (24.0 * Tn * Tn)
-        chord = np.maximum(chord, 0.5 * L)
+        chord = L[k] * (1.0 + Tn / EA) - (w * e[..., :1]) ** 2 * L[k] ** 3 / (24.0 * Tn * Tn)
+        chord = np.maximum(chord, 0.5 * L[k])
         p = p + chord * np.stack([e[..., 0], np.zeros_like(Tn[..., 0]), e[..., 1]], -1)
         if k < len(forces):
             pts.append(p)
@@ -91,6 +93,8 @@ def layout(scene, elevators):
     n = a.n_wings
     A = np.asarray(scene.ground_points[scene.start], float)
     L = scene.piece_length
+    # unstretched length of each piece (the moving cable's first and last pieces differ from L)
+    Ls = np.array([a.elements.l0[list(ix)].sum() for ix in scene.layout.piece_elements])
     EA = float(a.elements.EA[0])
     el = np.asarray(elevators, float)
     # first guess: wings on a straight line up at the guessed elevation (both legs together for a loop)
@@ -106,7 +110,7 @@ def layout(scene, elevators):
         alphas, F = _rest_state(scene, pts, el, ends)
         if scene.end is None:
             T0 = F.sum(axis=0)
-            new, _ = _march(A, L, EA, T0, F, w)
+            new, _ = _march(A, Ls, EA, T0, F, w)
         else:
             B = np.asarray(scene.ground_points[scene.end], float)
             # unknowns: the tension of the piece after the apex (wing m - 1) in polar form (log magnitude
@@ -120,7 +124,7 @@ def layout(scene, elevators):
                 return below + np.exp(v[..., :1]) * Ftot * np.stack([np.cos(v[..., 1]), np.sin(v[..., 1])], -1)
 
             def miss(v):
-                return (_march(A, L, EA, start_tension(v), F, w)[1] - B)[..., [0, 2]] / L
+                return (_march(A, Ls, EA, start_tension(v), F, w)[1] - B)[..., [0, 2]] / L
 
             if v_top is None:
                 g = np.stack(np.meshgrid(np.linspace(-9.0, 0.5, 39), np.linspace(-math.pi, math.pi, 73),
@@ -137,7 +141,7 @@ def layout(scene, elevators):
             if r > 1e-8:
                 raise RuntimeError(f"{scene.file}: chain layout shooting failed (miss {r * L:.3g} m): {msg}")
             T0 = start_tension(v_top)
-            new, _ = _march(A, L, EA, T0, F, w)
+            new, _ = _march(A, Ls, EA, T0, F, w)
         if np.max(np.abs(new - pts)) < 1e-6 * L:
             pts = new
             break
@@ -147,7 +151,13 @@ def layout(scene, elevators):
 
 
 def initial_state(scene) -> tuple[np.ndarray, np.ndarray]:
-    """(state, controls) at the scene's initial equilibrium (see scene.InitialSpec)."""
+    """(state, controls) at the scene's initial equilibrium (see scene.InitialSpec). A moving cable starts from
+    the equilibrium at rest with its first and last elements at their lengths after a transfer (the station
+    block of ``model/station.station_initial`` appended; its generator torque control, if any, 0)."""
+    if scene.assembly.station is not None:
+        st = scene.assembly.station
+        x, u = initial_state(scene.replace(assembly=dataclasses.replace(scene.assembly, station=None)))
+        return np.concatenate([x, station_initial(st)]), np.concatenate([u, np.zeros(st.n_controls)])
     a = scene.assembly
     n = a.n_wings
     ini = scene.initial

@@ -17,6 +17,7 @@ import numpy as np
 from laddermill_gym.model.builders import CableSpec, ChainLayout, build_chain
 from laddermill_gym.model.configio import CONFIG_DIR, ConfigError, Section, config_path, read_yaml
 from laddermill_gym.model.params import AERO_COLUMNS, N_CONTROLS, AeroTable, Assembly, WindParams, WingType
+from laddermill_gym.model.station import MODES, StationParams
 from laddermill_gym.sim.simulator import IntegratorSettings, Simulator
 
 SCENE_DIR = CONFIG_DIR / "scenes"
@@ -112,6 +113,26 @@ def read_wind(s: Section) -> WindParams:
     return w
 
 
+def read_station(s: Section, piece: float) -> StationParams:
+    """The moving cable's ground station (``station:`` section; ``model/station.py``), errors naming the field."""
+    mode = s.text("mode", "prescribed", choices=MODES)
+    times = s.vector("speed_times_s", default=[0.0])
+    speeds = s.vector("speed_m_s", default=[0.0])
+    kw = dict(piece_length=piece, first_fraction=s.number("first_fraction", 0.1, positive=True),
+              last_fraction=s.number("last_fraction", 1.1, positive=True), mode=mode,
+              speed_times=tuple(times), speed_values=tuple(speeds),
+              efficiency=s.number("efficiency", 1.0, positive=True))
+    if mode == "drum":
+        kw.update(drum_radius=s.number("drum_radius", positive=True),
+                  drum_inertia=s.number("drum_inertia", positive=True),
+                  torque_limits=tuple(s.vector("torque_limits", 2)))
+    s.done()
+    try:
+        return StationParams(**kw)
+    except ValueError as err:
+        raise ConfigError(f"{s.file}: {err}") from None
+
+
 # ---------------------------------------------------------------------------------------- scene
 @dataclass(frozen=True)
 class InitialSpec:
@@ -193,6 +214,11 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
     for key, pname in (("start", start), ("end", end)):
         if pname is not None and pname not in points:
             raise ch.error(key, pname, f"is not one of the ground points {sorted(points)}")
+    station = read_station(s.section("station"), piece) if s.has("station") else None
+    if station is not None and (end is None or epp != 1):
+        raise ch.error("elements_per_piece" if end is not None else "end", epp if end is not None else end,
+                       "a moving cable (station) needs two ground points (start and end) and one element per "
+                       "piece (Meijaard's boundary conditions)")
     fid = s.section("fidelity")
     sag_on = fid.flag("sag")
     caero_on = fid.flag("cable_aero")
@@ -231,8 +257,13 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
                                        method=settings.method if method is None else method)
     names = list(points)
     fixed = np.array([points[k] for k in names])
-    asm, layout = build_chain((wing_type,), np.zeros(nw, dtype=np.int64), piece, epp, cable, fixed,
+    pieces = np.full(nw + (end is not None), piece)
+    if station is not None:  # the first and last elements at their lengths right after a transfer
+        pieces[0], pieces[-1] = station.first_fraction * piece, station.last_fraction * piece
+    asm, layout = build_chain((wing_type,), np.zeros(nw, dtype=np.int64), pieces, epp, cable, fixed,
                               names.index(start), None if end is None else names.index(end), wind,
                               dim=dim, sag=sag_on, cable_aero=caero_on, gravity=gravity)
+    if station is not None:
+        asm = dataclasses.replace(asm, station=station)
     return Scene(name=name, file=path, description=desc, assembly=asm, layout=layout, cable=cable,
                  ground_points=points, start=start, end=end, piece_length=piece, initial=init, settings=settings)

@@ -9,8 +9,10 @@ from scipy.interpolate import CubicSpline
 from laddermill_gym.atmosphere.field import pack_wind_field
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.contract import KModel, KWork
+from laddermill_gym.kernels.moving_cable import MovingCable2D, MovingCable3D
 from laddermill_gym.kernels.rigid.kinds import RIGID_2D, RIGID_3D, WING
 from laddermill_gym.model.params import AERO_COLUMNS, END_NODE, END_WING, Assembly
+from laddermill_gym.model.station import pack_station
 
 
 def _block(kind: int, idx: int, n_wings: int) -> int:
@@ -142,12 +144,21 @@ def wing_type_table(asm: Assembly) -> np.ndarray:
     return tf
 
 
+def model_kind(asm: Assembly):
+    """The kind marker of a built assembly: rigid 3D or in-plane, with a moving cable when it has a station."""
+    if asm.station is None:
+        return RIGID_3D if asm.dim == 3 else RIGID_2D
+    sp = pack_station(asm.station, asm.elements.count, asm.body_state_size, C.N_CONTROLS * asm.n_wings)
+    return MovingCable3D(sp) if asm.dim == 3 else MovingCable2D(sp)
+
+
 def pack_model(asm: Assembly, vehicle=WING) -> KModel:
     """Flat float64 / int64 arrays for the kernels (layout: kernels/contract.py).
 
     ``vehicle`` is the body-loads plug-in the kernels call for every rigid body (``WING``: the wing types'
     aerodynamics; the rotorcraft passes its own). The model kind follows ``asm.dim``; the fidelity switches
-    ``asm.sag`` and ``asm.cable_aero`` become the ``sag`` and ``caero`` fields (None when off)."""
+    ``asm.sag`` and ``asm.cable_aero`` become the ``sag`` and ``caero`` fields (None when off); a station makes it a
+    moving-cable kind (``kernels/moving_cable.py``)."""
     w = asm.wind
     ac, a0, da = spline_coefficients(asm)
     glob = np.zeros(C.GL_SIZE)
@@ -165,7 +176,7 @@ def pack_model(asm: Assembly, vehicle=WING) -> KModel:
     if asm.dim == 2 and vehicle is not WING:
         raise ValueError("the in-plane (dim = 2) model supports winged bodies only")
     return KModel(
-        kind=RIGID_3D if asm.dim == 3 else RIGID_2D, wf=wind_fields(w), tmod=tmod, ms=ms, md=md, gp=gp, gv=gv,
+        kind=model_kind(asm), wf=wind_fields(w), tmod=tmod, ms=ms, md=md, gp=gp, gv=gv,
         glob=glob, wtype=np.ascontiguousarray(asm.wing_type_index, dtype=np.int64), tf=wing_type_table(asm), ac=ac,
         node_mass=np.ascontiguousarray(asm.node_mass, dtype=np.float64),
         fixed=np.ascontiguousarray(fixed, dtype=np.float64),

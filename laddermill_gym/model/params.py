@@ -13,11 +13,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from laddermill_gym.atmosphere.field import GustGrid, WindField
-from laddermill_gym.kernels.contract import B2_SIZE, B3_SIZE, N2_SIZE, N3_SIZE
+from laddermill_gym.kernels.contract import B2_SIZE, B3_SIZE, N2_SIZE, N3_SIZE, SX_SIZE
 from laddermill_gym.kernels.contract import END_FIXED as END_FIXED
 from laddermill_gym.kernels.contract import END_NODE as END_NODE
 from laddermill_gym.kernels.contract import END_WING as END_WING
 from laddermill_gym.kernels.contract import N_CONTROLS as N_CONTROLS
+from laddermill_gym.model.station import StationParams
 
 #: Column names of a wing's aerodynamic table, in kernel order (see docs/model.md, "Wing aerodynamics").
 AERO_COLUMNS: tuple[str, ...] = (
@@ -189,6 +190,8 @@ class Assembly:
     dim : 3 or 2 (in-plane).  gravity [m/s^2].  sag, cable_aero : fidelity switches.
     wing_type_index : int array (n_w,) into wing_types.  node_mass : (n_nodes,) lumped extra mass [kg].
     fixed_points : (n_fixed, 3) global positions [m].  cable_cn0, cable_ct0 : cable aerodynamic constants [-].
+    station : the moving cable's ground station (``model/station.py``), or None for a cable that does not move;
+    with a station the state ends with its block (``SX_*``, kernels/contract.py).
     """
 
     dim: int
@@ -203,6 +206,7 @@ class Assembly:
     cable_aero: bool = True
     cable_cn0: float = 1.1
     cable_ct0: float = 0.02
+    station: StationParams | None = None
 
     @property
     def n_wings(self) -> int:
@@ -222,7 +226,17 @@ class Assembly:
 
     @property
     def state_size(self) -> int:
+        return self.body_state_size + (SX_SIZE if self.station is not None else 0)
+
+    @property
+    def body_state_size(self) -> int:
+        """Entries of the wings and nodes (the station block, if any, follows them)."""
         return self.n_wings * self.wing_state_size + self.n_nodes * self.node_state_size
+
+    @property
+    def n_controls(self) -> int:
+        """Controls: N_CONTROLS per wing, then the station's (the generator torque of a drum)."""
+        return N_CONTROLS * self.n_wings + (self.station.n_controls if self.station is not None else 0)
 
     def wing(self, k: int) -> WingType:
         return self.wing_types[int(self.wing_type_index[k])]

@@ -16,7 +16,7 @@ from laddermill_gym.kernels.contract import GP_SIZE, KAir, KWork
 from laddermill_gym.kernels.integrate import OK
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
-from laddermill_gym.model.params import N_CONTROLS, Assembly
+from laddermill_gym.model.params import Assembly
 from laddermill_gym.sim.simulator import IntegratorSettings, limits_array
 
 
@@ -76,7 +76,7 @@ class BatchSimulator:
         one = make_workspace(assembly, *vehicle_sizes)
         self.work = KWork(*[np.zeros((nb, *a.shape), dtype=a.dtype) for a in one])
         self.states = np.zeros((nb, ns))
-        self.controls = np.zeros((nb, N_CONTROLS * assembly.n_wings if n_controls is None else int(n_controls)))
+        self.controls = np.zeros((nb, assembly.n_controls if n_controls is None else int(n_controls)))
         self.t = np.zeros(nb)
         self.tmod = np.tile(np.array([0.0, 1.0]), (nb, 1))
         self.mod_speed = np.ones((nb, nm))

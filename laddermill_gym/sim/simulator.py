@@ -41,6 +41,12 @@ from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 from laddermill_gym.model.states import euler_from_quaternion
 from laddermill_gym.sim.reports import GROUND_MODES, body_heights, diagnose, failure_message
+from laddermill_gym.sim.station_views import (
+    StationViews,
+    check_station_controls,
+    station_control_labels,
+    station_state_name,
+)
 
 
 def _slot_names(size: int, *groups) -> tuple[str, ...]:
@@ -104,7 +110,7 @@ def limits_array(settings: IntegratorSettings) -> np.ndarray:
     return lim
 
 
-class Simulator:
+class Simulator(StationViews):
     """A compiled simulator of one built scene.
 
     Parameters
@@ -135,7 +141,7 @@ class Simulator:
         self.limits = limits_array(self.settings)
         self._dx = np.zeros(assembly.state_size)
         self.initial_state = self._check_state(initial_state).copy()
-        self.initial_controls = (np.zeros(N_CONTROLS * assembly.n_wings) if controls is None
+        self.initial_controls = (np.zeros(assembly.n_controls) if controls is None
                                  else self._check_controls(controls).copy())
         self.reset()
 
@@ -155,12 +161,13 @@ class Simulator:
 
     @property
     def n_controls(self) -> int:
-        return N_CONTROLS * self.assembly.n_wings
+        return self.assembly.n_controls
 
     @property
     def control_labels(self) -> list[str]:
         """One label per control entry, e.g. 'wing0_elevator'."""
-        return [f"wing{k}_{n}" for k in range(self.assembly.n_wings) for n in CONTROL_NAMES]
+        return ([f"wing{k}_{n}" for k in range(self.assembly.n_wings) for n in CONTROL_NAMES]
+                + station_control_labels(self.assembly))
 
     def _check_state(self, x) -> np.ndarray:
         x = np.ascontiguousarray(x, dtype=np.float64)
@@ -183,6 +190,7 @@ class Simulator:
                     raise ValueError(
                         f"controls: wing {k} {CONTROL_NAMES[j]} = {v!r} rad is outside "
                         f"[{lim[j, 0]:.4g}, {lim[j, 1]:.4g}] rad")
+        check_station_controls(self.assembly, u)
         return u
 
     def reset(self, state: np.ndarray | None = None, t: float = 0.0, controls: np.ndarray | None = None) -> np.ndarray:
@@ -284,6 +292,8 @@ class Simulator:
             k, j = divmod(i, ws)
             names = _WING_NAMES_3D if a.dim == 3 else _WING_NAMES_2D
             return f"wing {k} {names[j]}"
+        if i >= a.body_state_size:
+            return station_state_name(i - a.body_state_size)
         k, j = divmod(i - a.n_wings * ws, ns)
         names = _NODE_NAMES_3D if a.dim == 3 else _NODE_NAMES_2D
         return f"node {k} {names[j]}"
@@ -294,7 +304,7 @@ class Simulator:
 
     def _node_block(self) -> np.ndarray:
         a = self.assembly
-        return self.state[a.n_wings * a.wing_state_size:].reshape(a.n_nodes, a.node_state_size)
+        return self.state[a.n_wings * a.wing_state_size: a.body_state_size].reshape(a.n_nodes, a.node_state_size)
 
     def wing_positions(self) -> np.ndarray:
         """CG positions, shape (n_wings, 3), global frame [m] (y = 0 in the in-plane mode)."""
@@ -376,4 +386,5 @@ class Simulator:
             "wing_beta_rad": ab[:, 1],
             "node_position_m": self.node_positions(),
             "element_tension_N": self.tensions(),
+            **self.station_views(),
         }

@@ -124,6 +124,10 @@ def static_equilibrium(sim, x_guess: np.ndarray, controls: np.ndarray | None = N
         return accelerations(sim, sim.rhs(t, unpack_unknowns(sim, z), u))
 
     z, r, msg = _newton(resid, z0, tol)
+    if r > 1e-6 * math.sqrt(len(z)):  # ill-conditioned (a long closed loop): restart once from there
+        z2, r2, msg2 = _newton(resid, z, tol)
+        if r2 < r:
+            z, r, msg = z2, r2, msg2
     if r > 1e-6 * math.sqrt(len(z)):  # RMS acceleration above 1e-6 m/s^2
         raise RuntimeError(f"static equilibrium: Newton did not converge (|residual| = {r:.3g}): {msg}")
     return unpack_unknowns(sim, z)

@@ -24,7 +24,6 @@ from laddermill_gym.kernels.contract import (
     EF_DA,
     EF_DIAMETER,
     EF_EA,
-    EF_L0,
     EF_MU,
     END_NODE,
     END_WING,
@@ -40,6 +39,7 @@ from laddermill_gym.kernels.contract import (
     TM_DT,
     TM_T0,
 )
+from laddermill_gym.kernels.dispatch import elongation_rate, rest_length
 from laddermill_gym.kernels.rigid.aero import wing_aero_long
 from laddermill_gym.kernels.rigid.rhs3d import add_const_mass, block_of, tree_solve
 
@@ -167,7 +167,8 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
         ir, is_ = M.ei[e, 0], M.ei[e, 1]
         nr = _end_kinematics2(kr, ir, M.ea[e, 0], x, M.fixed, nw, Tr, er)
         ns = _end_kinematics2(ks, is_, M.ea[e, 1], x, M.fixed, nw, Ts, es)
-        l0, mu, EA, DA, dia = M.ef[e, EF_L0], M.ef[e, EF_MU], M.ef[e, EF_EA], M.ef[e, EF_DA], M.ef[e, EF_DIAMETER]
+        l0 = rest_length(M.kind, e, t, x, M)
+        mu, EA, DA, dia = M.ef[e, EF_MU], M.ef[e, EF_EA], M.ef[e, EF_DA], M.ef[e, EF_DIAMETER]
         lx, lz = es[0] - er[0], es[1] - er[1]
         ln = math.sqrt(lx * lx + lz * lz)
         if ln > 1e-9:
@@ -175,7 +176,7 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
         else:
             ux, uz = 0.0, 0.0
         eps = ln - l0
-        epsd = ux * (es[2] - er[2]) + uz * (es[3] - er[3])
+        epsd = elongation_rate(M.kind, e, t, x, M, ln, l0, ux * (es[2] - er[2]) + uz * (es[3] - er[3]))
         me = mu * l0
         wg = 0.5 * me * g
         m6 = me / 6.0

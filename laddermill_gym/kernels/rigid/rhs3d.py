@@ -25,7 +25,6 @@ from laddermill_gym.kernels.contract import (
     EF_DA,
     EF_DIAMETER,
     EF_EA,
-    EF_L0,
     EF_MU,
     END_NODE,
     END_WING,
@@ -41,7 +40,7 @@ from laddermill_gym.kernels.contract import (
     TM_DT,
     TM_T0,
 )
-from laddermill_gym.kernels.dispatch import body_loads
+from laddermill_gym.kernels.dispatch import body_loads, elongation_rate, rest_length
 from laddermill_gym.kernels.small import lu_factor, lu_solve_cols, lu_solve_vec, quat_rotation
 
 
@@ -307,7 +306,8 @@ def rhs3d(t, x, u, dx, M, W, sag, caero, vehicle):
         ir, is_ = M.ei[e, 0], M.ei[e, 1]
         nr = _end_kinematics(kr, ir, M.ea[e, 0], x, W.Rw, M.fixed, nw, Tr, er)
         ns = _end_kinematics(ks, is_, M.ea[e, 1], x, W.Rw, M.fixed, nw, Ts, es)
-        l0, mu, EA, DA, dia = M.ef[e, EF_L0], M.ef[e, EF_MU], M.ef[e, EF_EA], M.ef[e, EF_DA], M.ef[e, EF_DIAMETER]
+        l0 = rest_length(M.kind, e, t, x, M)
+        mu, EA, DA, dia = M.ef[e, EF_MU], M.ef[e, EF_EA], M.ef[e, EF_DA], M.ef[e, EF_DIAMETER]
         lx, ly, lz = es[0] - er[0], es[1] - er[1], es[2] - er[2]
         ln = math.sqrt(lx * lx + ly * ly + lz * lz)
         if ln > 1e-9:
@@ -315,7 +315,8 @@ def rhs3d(t, x, u, dx, M, W, sag, caero, vehicle):
         else:
             ux, uy, uz = 0.0, 0.0, 0.0
         eps = ln - l0
-        epsd = ux * (es[3] - er[3]) + uy * (es[4] - er[4]) + uz * (es[5] - er[5])
+        epsd = elongation_rate(M.kind, e, t, x, M, ln, l0,
+                               ux * (es[3] - er[3]) + uy * (es[4] - er[4]) + uz * (es[5] - er[5]))
         me = mu * l0
         # nodal loads (global) at r and s: gravity, aerodynamics, quadratic velocity terms
         wg = 0.5 * me * g

@@ -1,0 +1,305 @@
+"""The moving cable of the laddermill (Meijaard et al. 1999, "Boundary conditions") as two model kinds.
+
+``MovingCable3D`` and ``MovingCable2D`` are the rigid kinds (``kernels/rigid/kinds.py``) plus a ground station
+(parameters ``station``, slots ``SP_*``; state block ``SX_*``; both in ``kernels/contract.py``):
+
+* The first element (veered-side ground point -> wing slot 0) has the unstretched length f_first l0 + s and the
+  last one (wing slot n-1 -> hauled-side ground point) f_last l0 - s, with s the cable moved since the last
+  transfer (a state, ds/dt = V_c). Their mass follows (mu l0); the damping acts on the material strain rate,
+  so the elongation rate used is l0 d(eps)/dt = dl/dt - (l / l0) dl0/dt (zero for a cable paid out at constant
+  strain), a choice where the paper only says the constitutive relation changes "accordingly".
+* After every step, when s >= l0 a wing is transferred (:func:`transfer_up_3d`): the wing in the last slot leaves
+  (its two elements merge, which the rest length above already says), every wing moves one slot up the cable,
+  and a wing enters slot 0 at the point of the first element at the unstretched distance f_first l0 + s - l0
+  from the ground (linear interpolation of position and velocity between the ground point and the attachment
+  of the wing above, the paper's rule). The paper leaves the new wing's attitude and rates open: it takes the
+  attitude of the wing above it (the one it will follow up the cable) and no rotation. s < 0 (the cable
+  running backwards) transfers the other way. The state keeps its size: the leaving wing's slot is reused,
+  nothing is allocated or repacked, and the count of transfers (a state) names which wing is in which slot.
+* Generator: a prescribed schedule V_c(t), or a drum, (J / r^2) dV_c/dt = T_first - T_last - Q / r with the
+  generator torque Q the control after the wings'. The state integrates the generator's mechanical power,
+  (T_first - T_last) V_c (prescribed) or (Q / r) V_c (drum), into SX_ENERGY [J].
+"""
+
+import math
+from collections import namedtuple
+
+from numba import njit
+
+from laddermill_gym.kernels.contract import (
+    B2_Q,
+    B2_SIZE,
+    B2_THETA,
+    B2_U,
+    B2_W,
+    B2_X,
+    B2_Z,
+    B3_POS,
+    B3_QUAT,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
+    EF_L0,
+    MODE_DRUM,
+    SP_E_FIRST,
+    SP_E_LAST,
+    SP_F_FIRST,
+    SP_F_LAST,
+    SP_INERTIA,
+    SP_MODE,
+    SP_NSCHED,
+    SP_PIECE,
+    SP_RADIUS,
+    SP_SCHED,
+    SP_UOFF,
+    SP_XOFF,
+    SX_ENERGY,
+    SX_MOVED,
+    SX_SPEED,
+    SX_TRANSFERS,
+)
+from laddermill_gym.kernels.dispatch import register_kind, register_moving_ends
+from laddermill_gym.kernels.rigid.kinds import LIMIT, OK, rigid2d_check, rigid3d_check
+from laddermill_gym.kernels.rigid.rhs2d import rhs2d
+from laddermill_gym.kernels.rigid.rhs3d import rhs3d
+
+_FM = {"contract", "reassoc", "nsz", "arcp"}
+
+#: Kind markers of the moving cable; ``station`` is the packed station (``model/station.py``).
+MovingCable3D = namedtuple("MovingCable3D", ["station"])
+MovingCable2D = namedtuple("MovingCable2D", ["station"])
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def scheduled_speed(sp, t):
+    """The schedule's cable speed V_c(t) [m/s] and its rate [m/s^2] (piecewise linear, held outside)."""
+    n = int(sp[SP_NSCHED])
+    ot, ov = SP_SCHED, SP_SCHED + n
+    if n == 1 or not t > sp[ot]:
+        return sp[ov], 0.0
+    if t >= sp[ot + n - 1]:
+        return sp[ov + n - 1], 0.0
+    k = 0
+    while t >= sp[ot + k + 1]:
+        k += 1
+    a = (sp[ov + k + 1] - sp[ov + k]) / (sp[ot + k + 1] - sp[ot + k])
+    return sp[ov + k] + a * (t - sp[ot + k]), a
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def cable_speed(sp, t, x):
+    """Cable speed V_c [m/s] at time t [s] in state x: the drum's state or the schedule."""
+    if sp[SP_MODE] == MODE_DRUM:
+        return x[int(sp[SP_XOFF]) + SX_SPEED]
+    return scheduled_speed(sp, t)[0]
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def mill_rest_length(kind, e, t, x, M):
+    sp = kind.station
+    if e == int(sp[SP_E_FIRST]):
+        return sp[SP_PIECE] * sp[SP_F_FIRST] + x[int(sp[SP_XOFF]) + SX_MOVED]
+    if e == int(sp[SP_E_LAST]):
+        return sp[SP_PIECE] * sp[SP_F_LAST] - x[int(sp[SP_XOFF]) + SX_MOVED]
+    return M.ef[e, EF_L0]
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def mill_elongation_rate(kind, e, t, x, M, ln, l0, ld):
+    sp = kind.station
+    if e == int(sp[SP_E_FIRST]):
+        return ld - ln / l0 * cable_speed(sp, t, x)
+    if e == int(sp[SP_E_LAST]):
+        return ld + ln / l0 * cable_speed(sp, t, x)
+    return ld
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def station_rates(sp, t, x, u, dx, tension):
+    """The station block of dx: ds/dt = V_c, the drum's acceleration (or the schedule's rate) and the
+    generator's mechanical power [W] (into the energy)."""
+    o = int(sp[SP_XOFF])
+    dt = tension[int(sp[SP_E_FIRST])] - tension[int(sp[SP_E_LAST])]
+    if sp[SP_MODE] == MODE_DRUM:
+        v = x[o + SX_SPEED]
+        r = sp[SP_RADIUS]
+        force = u[int(sp[SP_UOFF])] / r
+        dx[o + SX_SPEED] = (dt - force) * r * r / sp[SP_INERTIA]
+        power = force * v
+    else:
+        v, a = scheduled_speed(sp, t)
+        dx[o + SX_SPEED] = a
+        power = dt * v
+    dx[o + SX_MOVED] = v
+    dx[o + SX_TRANSFERS] = 0.0
+    dx[o + SX_ENERGY] = power
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def mill3d_rhs(kind, t, x, u, dx, M, W):
+    status = rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+    station_rates(kind.station, t, x, u, dx, W.tension)
+    return status
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def mill2d_rhs(kind, t, x, u, dx, M, W):
+    status = rhs2d(t, x, u, dx, M, W, M.sag, M.caero)
+    station_rates(kind.station, t, x, u, dx, W.tension)
+    return status
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def _rotation(q0, q1, q2, q3):
+    """Rotation matrix (body -> global) of a quaternion as a row-major 9-tuple (the post-step check has no
+    workspace; :func:`~laddermill_gym.kernels.small.quat_rotation` writes the same matrix into an array)."""
+    n = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
+    a, b, c, d = q0 / n, q1 / n, q2 / n, q3 / n
+    return (a * a + b * b - c * c - d * d, 2.0 * (b * c - a * d), 2.0 * (b * d + a * c),
+            2.0 * (b * c + a * d), a * a - b * b + c * c - d * d, 2.0 * (c * d - a * b),
+            2.0 * (b * d - a * c), 2.0 * (c * d + a * b), a * a - b * b - c * c + d * d)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def transfer_3d(sp, x, M, up):
+    """One wing transfer in a 3D state (``up``: the cable has moved one piece forwards, else backwards)."""
+    nw = M.wtype.size
+    s = x[int(sp[SP_XOFF]) + SX_MOVED]
+    lp = sp[SP_PIECE]
+    if up:  # split the first element; the neighbour is slot 0 (it moves to slot 1)
+        e, nb, end, old = int(sp[SP_E_FIRST]), 0, 1, sp[SP_F_FIRST] * lp + s
+        f = (sp[SP_F_FIRST] * lp + s - lp) / old
+    else:  # split the last element; the neighbour is slot n-1 (it moves to slot n-2)
+        e, nb, end, old = int(sp[SP_E_LAST]), nw - 1, 0, sp[SP_F_LAST] * lp - s
+        f = (sp[SP_F_LAST] * lp - s - lp) / old
+    o = B3_SIZE * nb
+    R = _rotation(x[o + B3_QUAT], x[o + B3_QUAT + 1], x[o + B3_QUAT + 2], x[o + B3_QUAT + 3])
+    a0, a1, a2 = M.ea[e, end, 0], M.ea[e, end, 1], M.ea[e, end, 2]
+    ax = x[o + B3_POS] + R[0] * a0 + R[1] * a1 + R[2] * a2
+    ay = x[o + B3_POS + 1] + R[3] * a0 + R[4] * a1 + R[5] * a2
+    az = x[o + B3_POS + 2] + R[6] * a0 + R[7] * a1 + R[8] * a2
+    p, q, r = x[o + B3_RATE], x[o + B3_RATE + 1], x[o + B3_RATE + 2]
+    bu = x[o + B3_VEL] + q * a2 - r * a1
+    bv = x[o + B3_VEL + 1] + r * a0 - p * a2
+    bw = x[o + B3_VEL + 2] + p * a1 - q * a0
+    # the new wing's attachment: the fraction f of the way from the ground point; its velocity f v_attach
+    gi = M.ei[e, 1 - end]
+    px = M.fixed[gi, 0] + f * (ax - M.fixed[gi, 0])
+    py = M.fixed[gi, 1] + f * (ay - M.fixed[gi, 1])
+    pz = M.fixed[gi, 2] + f * (az - M.fixed[gi, 2])
+    wx = f * (R[0] * bu + R[1] * bv + R[2] * bw)
+    wy = f * (R[3] * bu + R[4] * bv + R[5] * bw)
+    wz = f * (R[6] * bu + R[7] * bv + R[8] * bw)
+    if up:
+        for k in range(nw - 1, 0, -1):
+            for i in range(B3_SIZE):
+                x[B3_SIZE * k + i] = x[B3_SIZE * (k - 1) + i]
+        o = 0
+    else:
+        for k in range(nw - 1):
+            for i in range(B3_SIZE):
+                x[B3_SIZE * k + i] = x[B3_SIZE * (k + 1) + i]
+        o = B3_SIZE * (nw - 1)
+    # the new wing keeps the neighbour's quaternion (still in its slot after the shift), turns not at all
+    x[o + B3_POS] = px - (R[0] * a0 + R[1] * a1 + R[2] * a2)
+    x[o + B3_POS + 1] = py - (R[3] * a0 + R[4] * a1 + R[5] * a2)
+    x[o + B3_POS + 2] = pz - (R[6] * a0 + R[7] * a1 + R[8] * a2)
+    x[o + B3_VEL] = R[0] * wx + R[3] * wy + R[6] * wz
+    x[o + B3_VEL + 1] = R[1] * wx + R[4] * wy + R[7] * wz
+    x[o + B3_VEL + 2] = R[2] * wx + R[5] * wy + R[8] * wz
+    for i in range(3):
+        x[o + B3_RATE + i] = 0.0
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def transfer_2d(sp, x, M, up):
+    """One wing transfer in an in-plane state (see :func:`transfer_3d`)."""
+    nw = M.wtype.size
+    s = x[int(sp[SP_XOFF]) + SX_MOVED]
+    lp = sp[SP_PIECE]
+    if up:
+        e, nb, end, old = int(sp[SP_E_FIRST]), 0, 1, sp[SP_F_FIRST] * lp + s
+        f = (sp[SP_F_FIRST] * lp + s - lp) / old
+    else:
+        e, nb, end, old = int(sp[SP_E_LAST]), nw - 1, 0, sp[SP_F_LAST] * lp - s
+        f = (sp[SP_F_LAST] * lp - s - lp) / old
+    o = B2_SIZE * nb
+    th = x[o + B2_THETA]
+    c, sn = math.cos(th), math.sin(th)
+    a = M.ea[e, end]
+    ax = x[o + B2_X] + c * a[0] + sn * a[2]
+    az = x[o + B2_Z] - sn * a[0] + c * a[2]
+    q = x[o + B2_Q]
+    bu, bw = x[o + B2_U] + q * a[2], x[o + B2_W] - q * a[0]
+    vx, vz = c * bu + sn * bw, -sn * bu + c * bw
+    g = M.fixed[M.ei[e, 1 - end]]
+    if up:
+        for k in range(nw - 1, 0, -1):
+            for i in range(B2_SIZE):
+                x[B2_SIZE * k + i] = x[B2_SIZE * (k - 1) + i]
+        slot = 0
+    else:
+        for k in range(nw - 1):
+            for i in range(B2_SIZE):
+                x[B2_SIZE * k + i] = x[B2_SIZE * (k + 1) + i]
+        slot = nw - 1
+    o = B2_SIZE * slot
+    px, pz = g[0] + f * (ax - g[0]), g[2] + f * (az - g[2])
+    x[o + B2_X] = px - (c * a[0] + sn * a[2])
+    x[o + B2_Z] = pz - (-sn * a[0] + c * a[2])
+    x[o + B2_THETA] = th
+    x[o + B2_U] = c * f * vx - sn * f * vz
+    x[o + B2_W] = sn * f * vx + c * f * vz
+    x[o + B2_Q] = 0.0
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _transfers_due(sp, x):
+    """+1 (forwards), -1 (backwards) or 0: the transfer the moved cable s calls for."""
+    s = x[int(sp[SP_XOFF]) + SX_MOVED]
+    if s >= sp[SP_PIECE]:
+        return 1
+    if s < 0.0:
+        return -1
+    return 0
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _book(sp, x, d):
+    o = int(sp[SP_XOFF])
+    x[o + SX_MOVED] -= d * sp[SP_PIECE]
+    x[o + SX_TRANSFERS] += d
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def mill3d_check(kind, x, M, limits):
+    """The rigid check, then at most one wing transfer; LIMIT if the cable moved more than one piece in a step."""
+    status = rigid3d_check(kind, x, M, limits)
+    sp = kind.station
+    d = _transfers_due(sp, x) if status == OK else 0
+    if d != 0:
+        transfer_3d(sp, x, M, d > 0)
+        _book(sp, x, d)
+        if _transfers_due(sp, x) != 0:
+            return LIMIT
+    return status
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def mill2d_check(kind, x, M, limits):
+    """The in-plane rigid check, then at most one wing transfer (see :func:`mill3d_check`)."""
+    status = rigid2d_check(kind, x, M, limits)
+    sp = kind.station
+    d = _transfers_due(sp, x) if status == OK else 0
+    if d != 0:
+        transfer_2d(sp, x, M, d > 0)
+        _book(sp, x, d)
+        if _transfers_due(sp, x) != 0:
+            return LIMIT
+    return status
+
+
+register_kind(MovingCable3D, mill3d_rhs, mill3d_check)
+register_kind(MovingCable2D, mill2d_rhs, mill2d_check)
+register_moving_ends(MovingCable3D, mill_rest_length, mill_elongation_rate)
+register_moving_ends(MovingCable2D, mill_rest_length, mill_elongation_rate)

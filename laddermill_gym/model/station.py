@@ -1,0 +1,111 @@
+"""The ground station of the moving cable (Meijaard et al. 1999, "Boundary conditions"): typed parameters and
+their packing into the kind marker's ``station`` array (slots ``SP_*`` of ``kernels/contract.py``).
+
+Both cable ends are fixed points at the generator. The first element (from the veered-side ground point up to
+wing slot 0) and the last element (from wing slot n-1 down to the hauled-side ground point) change their
+unstretched length at the cable speed V_c; when the cable has moved one piece length a wing is transferred
+(``kernels/moving_cable.py``). The generator either holds a prescribed speed schedule V_c(t) or is a drum
+whose speed is a state, driven by the tension difference against the generator torque (a control input).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from laddermill_gym.kernels import contract as C
+
+MODES = ("prescribed", "drum")
+
+
+@dataclass(frozen=True)
+class StationParams:
+    """Ground station of the moving cable.
+
+    piece_length : l0 [m], the cable between two wings.
+    first_fraction, last_fraction : unstretched lengths of the first (veered) and last (hauled) elements as
+        fractions of l0 right after a transfer [-]; Meijaard: 1/10 and 11/10.
+    mode : 'prescribed' (the generator holds V_c(t)) or 'drum' (V_c is a state).
+    speed_times [s], speed_values [m/s] : piecewise-linear schedule V_c(t), held constant outside; with a drum
+        only ``speed_values[0]`` is used, as the initial speed.
+    drum_radius [m], drum_inertia [kg m^2] : the drum (and generator rotor) the cable drives; its equation is
+        (J / r^2) dV_c/dt = T_first - T_last - Q / r with the generator torque Q [N m] (a control input).
+    torque_limits : (min, max) generator torque [N m] accepted as a control.
+    efficiency : electrical over mechanical generator power [-].
+    """
+
+    piece_length: float
+    first_fraction: float = 0.1
+    last_fraction: float = 1.1
+    mode: str = "prescribed"
+    speed_times: tuple[float, ...] = (0.0,)
+    speed_values: tuple[float, ...] = (0.0,)
+    drum_radius: float = 1.0
+    drum_inertia: float = 0.0
+    torque_limits: tuple[float, float] = (0.0, 0.0)
+    efficiency: float = 1.0
+
+    def __post_init__(self):
+        def bad(field, value, why):
+            raise ValueError(f"station.{field} = {value!r}: {why}")
+
+        if not (math.isfinite(self.piece_length) and self.piece_length > 0):
+            bad("piece_length", self.piece_length, "must be a finite length > 0 m")
+        if not 0 < self.first_fraction < self.last_fraction:
+            bad("first_fraction", self.first_fraction, f"must be in (0, last_fraction = {self.last_fraction})")
+        if not self.last_fraction > 1.0:
+            bad("last_fraction", self.last_fraction, "must be > 1 (the hauled element absorbs one piece)")
+        if self.mode not in MODES:
+            bad("mode", self.mode, f"must be one of {MODES}")
+        t = np.asarray(self.speed_times, float)
+        v = np.asarray(self.speed_values, float)
+        if t.ndim != 1 or t.shape != v.shape or t.size < 1:
+            bad("speed_times", self.speed_times, f"need one time per speed value ({len(self.speed_values)})")
+        if not (np.all(np.isfinite(t)) and np.all(np.isfinite(v))):
+            bad("speed_values", self.speed_values, "times and speeds must be finite")
+        if np.any(np.diff(t) <= 0):
+            bad("speed_times", self.speed_times, "must increase strictly")
+        if self.mode == "drum":
+            if not (self.drum_radius > 0 and math.isfinite(self.drum_radius)):
+                bad("drum_radius", self.drum_radius, "must be a finite radius > 0 m")
+            if not (self.drum_inertia > 0 and math.isfinite(self.drum_inertia)):
+                bad("drum_inertia", self.drum_inertia, "must be a finite inertia > 0 kg m^2 with a drum")
+            lo, hi = self.torque_limits
+            if not (math.isfinite(lo) and math.isfinite(hi) and lo <= hi):
+                bad("torque_limits", self.torque_limits, "need finite min <= max [N m]")
+        if not 0 < self.efficiency <= 1:
+            bad("efficiency", self.efficiency, "must be in (0, 1]")
+
+    @property
+    def n_controls(self) -> int:
+        """Controls the station adds after the wings' (the generator torque with a drum)."""
+        return 1 if self.mode == "drum" else 0
+
+    def speed(self, t: float) -> float:
+        """The scheduled cable speed V_c(t) [m/s] (numpy; the kernel evaluates the same schedule)."""
+        return float(np.interp(t, self.speed_times, self.speed_values))
+
+
+def pack_station(st: StationParams, n_elements: int, state_offset: int, control_offset: int) -> np.ndarray:
+    """The station's slots (``SP_*``) for a cable of ``n_elements`` elements (first 0, last n_e - 1) whose
+    station state block starts at ``state_offset`` and generator torque (drum) at ``control_offset``."""
+    n = len(st.speed_times)
+    p = np.zeros(C.SP_SCHED + 2 * n)
+    p[C.SP_PIECE], p[C.SP_F_FIRST], p[C.SP_F_LAST] = st.piece_length, st.first_fraction, st.last_fraction
+    p[C.SP_E_FIRST], p[C.SP_E_LAST], p[C.SP_XOFF] = 0, n_elements - 1, state_offset
+    p[C.SP_MODE] = C.MODE_DRUM if st.mode == "drum" else C.MODE_PRESCRIBED
+    p[C.SP_RADIUS], p[C.SP_INERTIA], p[C.SP_UOFF] = st.drum_radius, st.drum_inertia, control_offset
+    p[C.SP_NSCHED] = n
+    p[C.SP_SCHED:C.SP_SCHED + n] = st.speed_times
+    p[C.SP_SCHED + n:] = st.speed_values
+    return p
+
+
+def station_initial(st: StationParams) -> np.ndarray:
+    """The station block of an initial state (``SX_*``): nothing moved, no transfer, the schedule's speed at
+    t = 0 (or the drum's initial speed), no energy."""
+    x = np.zeros(C.SX_SIZE)
+    x[C.SX_SPEED] = st.speed(0.0) if st.mode == "prescribed" else float(st.speed_values[0])
+    return x
