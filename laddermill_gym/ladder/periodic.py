@@ -1,0 +1,125 @@
+"""The laddermill's periodic stationary motion: run a moving-cable simulator period by period until it repeats.
+
+With a constant cable speed V_c the mill's motion, once the transients have died out, repeats with the period
+l0 / V_c: every transfer shifts the wings one slot and the state returns to the same shape, slot by slot
+(Meijaard et al. 1999: "the resulting motion is periodic"). :func:`run_to_periodic` steps the simulator one
+period at a time, starting at a transfer, so that successive samples are at the same phase, and stops when
+
+* the shape repeats: the largest change of any wing's CG position between two successive periods, over the
+  piece length, is below ``shape_tol``, and
+* the power repeats: the mean generator power of a period (energy delivered in it / period) differs from the
+  previous period's by less than ``power_tol`` relative,
+
+for ``confirm`` periods in a row; or gives up after ``max_time`` seconds and says so (``converged`` False, with
+the history, never silently).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from laddermill_gym.sim.simulator import Simulator
+
+
+@dataclass
+class PeriodicResult:
+    """What :func:`run_to_periodic` found.
+
+    converged : both criteria held for ``confirm`` successive periods.
+    period_s : l0 / V_c [s].  t_s : simulated time at the end [s].
+    mean_power_W : mean mechanical generator power over the last period [W].
+    mean_electrical_power_W : the same times the station's efficiency [W].
+    tension_mean_N, tension_min_N, tension_max_N : per element over the last period (n_elements,) [N].
+    shape_m : wing CG positions at the last transfer (n_wings, 3) [m], slot order (slot 0 on the veered side).
+    history : per period: time [s], mean power [W], shape change [-], power change [-].
+    """
+
+    converged: bool
+    period_s: float
+    t_s: float
+    mean_power_W: float
+    mean_electrical_power_W: float
+    tension_mean_N: np.ndarray
+    tension_min_N: np.ndarray
+    tension_max_N: np.ndarray
+    shape_m: np.ndarray
+    history: list[dict] = field(default_factory=list)
+
+    def summary(self) -> str:
+        state = "converged" if self.converged else "NOT converged"
+        last = self.history[-1] if self.history else {}
+        return (f"periodic motion {state} at t = {self.t_s:.1f} s (period {self.period_s:.2f} s): mean generator "
+                f"power {self.mean_power_W / 1e3:.1f} kW; last shape change {last.get('shape_change', np.nan):.2e} "
+                f"l0, power change {last.get('power_change', np.nan):.2e}")
+
+
+def _advance_to_transfer(sim: Simulator, max_steps: int) -> None:
+    """Step until the transfer count changes (the state is then just after a transfer)."""
+    n0 = sim.transfers()
+    for _ in range(max_steps):
+        sim.step()
+        if sim.transfers() != n0:
+            return
+    raise RuntimeError(f"t = {sim.t:.3f} s: no wing transfer within {max_steps} steps; is the cable moving "
+                       f"(V_c = {sim.cable_speed():.4g} m/s)?")
+
+
+def run_to_periodic(sim: Simulator, shape_tol: float = 1e-2, power_tol: float = 1e-2, confirm: int = 2,
+                    max_time: float = 3000.0, progress: bool = True) -> PeriodicResult:
+    """Run ``sim`` (a moving cable with a prescribed speed that is constant from now on, or a drum held at a
+    constant speed by its torque) to its periodic stationary motion; see the module docstring for the criteria.
+    The period is l0 / V_c with the speed at the start of the search. Tensions are sampled every step."""
+    st = sim.assembly.station
+    if st is None:
+        raise ValueError("run_to_periodic needs a moving cable (a scene with a station)")
+    if st.mode == "prescribed" and sim.t < st.speed_times[-1]:  # to the end of the schedule's ramp
+        sim.step(n_steps=int(np.ceil((st.speed_times[-1] - sim.t) / sim.settings.dt)))
+    v = sim.cable_speed()
+    if not v > 0:
+        raise ValueError(f"cable speed V_c = {v!r} m/s at t = {sim.t} s: the periodic motion needs V_c > 0")
+    period = st.piece_length / v
+    per_steps = int(np.ceil(2 * period / sim.settings.dt))
+    _advance_to_transfer(sim, per_steps)
+    bar = None
+    if progress:
+        from tqdm import tqdm
+
+        bar = tqdm(total=int(max_time), desc="periodic motion", unit="s", leave=False)
+    t_start = sim.t
+    shape, energy, t_prev = sim.wing_positions(), sim.generator_energy(), sim.t
+    history: list[dict] = []
+    hits, p_prev = 0, np.nan
+    ten = None
+    try:
+        while sim.t - t_start < max_time:
+            n0 = sim.transfers()
+            tens = []
+            for _ in range(per_steps):
+                sim.step()
+                tens.append(sim.tensions())
+                if sim.transfers() != n0:
+                    break
+            else:
+                raise RuntimeError(f"t = {sim.t:.3f} s: no transfer within two periods ({2 * period:.1f} s)")
+            ten = np.array(tens)
+            new_shape, e = sim.wing_positions(), sim.generator_energy()
+            p = (e - energy) / (sim.t - t_prev)
+            d_shape = float(np.max(np.linalg.norm(new_shape - shape, axis=1)) / st.piece_length)
+            d_power = abs(p - p_prev) / max(abs(p), 1e-12)
+            history.append({"t_s": sim.t, "mean_power_W": p, "shape_change": d_shape, "power_change": d_power})
+            hits = hits + 1 if (d_shape < shape_tol and d_power < power_tol) else 0
+            shape, energy, t_prev, p_prev = new_shape, e, sim.t, p
+            if bar is not None:
+                bar.update(int(sim.t - t_start) - bar.n)
+            if hits >= confirm:
+                break
+    finally:
+        if bar is not None:
+            bar.close()
+    p = history[-1]["mean_power_W"]
+    return PeriodicResult(converged=hits >= confirm, period_s=period, t_s=sim.t, mean_power_W=p,
+                          mean_electrical_power_W=st.efficiency * p, tension_mean_N=ten.mean(axis=0),
+                          tension_min_N=ten.min(axis=0), tension_max_N=ten.max(axis=0), shape_m=shape,
+                          history=history)
