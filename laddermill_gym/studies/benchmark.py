@@ -177,8 +177,9 @@ def _layout_state(scene):
     return x, u
 
 
-def run_benchmark(quick: bool = False, scenes: list[str] | None = None, echo=print) -> dict:
-    """Measure everything and print a table; returns the figures as a dict."""
+def run_benchmark(quick: bool = False, scenes: list[str] | None = None, echo=print, mill: bool = True) -> dict:
+    """Measure everything and print a table; returns the figures as a dict. ``mill``: also the moving-cable
+    laddermill (``studies/mill_benchmark.py``)."""
     from laddermill_gym.ladder.scene import load_scene
 
     reps = 3 if quick else 7
@@ -226,12 +227,17 @@ def run_benchmark(quick: bool = False, scenes: list[str] | None = None, echo=pri
     res["scaling_per_wing_ratio_1000_vs_100"] = (scal[1000] / 1000) / (scal[100] / 100)
     if not quick:
         res["startup"] = {name: startup_times(name) for name in scenes}
+    _print_scenes(res, echo)
+    if mill:
+        from laddermill_gym.studies.mill_benchmark import bench_mill
+
+        res["laddermill"] = bench_mill(quick, echo)
     res["peak_rss_MiB"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-    _print(res, echo)
+    echo(f"peak resident memory of this process {res['peak_rss_MiB']:.0f} MiB")
     return res
 
 
-def _print(res: dict, echo) -> None:
+def _print_scenes(res: dict, echo) -> None:
     echo(f"laddermill_gym benchmark ({res['machine']['cpus']} CPUs, one thread, medians)")
     for name, r in res["scenes"].items():
         echo(f"\n== {name}: {r['n_wings']} wings, {r['n_nodes']} nodes, {r['n_elements']} elements, "
@@ -261,4 +267,3 @@ def _print(res: dict, echo) -> None:
         for name, s in res["startup"].items():
             echo(f"== start-up {name}: cold (compiling) {s['cold_start_s']:.1f} s, warm cache "
                  f"{s['warm_start_s']:.2f} s (inside the process {s['warm_start_inside_s']:.2f} s)")
-    echo(f"peak resident memory of this process {res['peak_rss_MiB']:.0f} MiB")
