@@ -68,7 +68,8 @@ _NODE_NAMES_2D = _slot_names(N2_SIZE, (N2_POS, ("x [m]", "z [m]")), (N2_VEL, ("v
 
 
 class SimulationError(RuntimeError):
-    """The integration broke down; the message names the time, the body or element and the quantity."""
+    """The integration broke down (the message names the time, the body or element and the quantity) or a wing or
+    cable node reached the ground with ``ground_contact`` "stop" (the time, the body and its height)."""
 
 
 @dataclass(frozen=True)
