@@ -14,6 +14,9 @@ bench:
 	laddermill bench --json bench.json
 
 simulate:
+	laddermill simulate laddermill --start periodic --direction-step 0.01 --time 60 --animate --out runs
+	cp runs/laddermill_shape.png laddermill_gym/docs/figures/laddermill_direction_step.png
+	cp runs/laddermill_generator.png laddermill_gym/docs/figures/laddermill_generator.png
 	laddermill simulate tethered_wing --time 120 --direction-step 0.01 --out runs
 
 # README figures and tables: chain controllers, PPO training (about 25 minutes), tethered-wing controllers

@@ -20,17 +20,33 @@ def _scene_from_args(args):
                       elements_per_piece=args.elements_per_piece, n_wings=args.n_wings, dt=args.dt)
 
 
+def _start(scene, args):
+    """(state, controls, time [s]) the run starts from: the scene's initial state, or the periodic motion of a
+    moving-cable scene (--start periodic)."""
+    if args.start == "scene":
+        x0, u0 = scene.initial_state()
+        return x0, u0, 0.0
+    if scene.assembly.station is None:
+        raise SystemExit(f"--start periodic needs a moving-cable scene (one with a station:), not {scene.name}")
+    from laddermill_gym.ladder.periodic import periodic_start
+
+    print("finding the periodic motion of the in-plane mill (the operating point) ...")
+    x0, u0, t_start, res = periodic_start(scene, progress=not args.quiet)
+    print(res.summary())
+    return x0, u0, t_start
+
+
 def cmd_simulate(args) -> int:
-    from laddermill_gym.plotting import plot_histories, plot_shape
+    from laddermill_gym.plotting import plot_generator, plot_histories, plot_shape
     from laddermill_gym.sim.recording import record
 
     t0 = time.perf_counter()
     scene = _scene_from_args(args)
-    x0, u0 = scene.initial_state()
+    x0, u0, t_start = _start(scene, args)
     asm = scene.assembly
     if args.direction_step:
-        # the paper's disturbance: a step in wind direction [rad] at time --step-time
-        ts = args.step_time
+        # the paper's disturbance: a step in wind direction [rad] at --step-time after the start
+        ts = t_start + args.step_time
         wind = asm.wind.with_modulation(ts - 1e-3, 1e-3, np.ones(2), np.array([0.0, args.direction_step]))
         scene = scene.replace(assembly=dataclasses.replace(asm, wind=wind))
     if args.ground_contact is not None or args.ground_height is not None:
@@ -39,6 +55,7 @@ def cmd_simulate(args) -> int:
             g, ground_contact=g.ground_contact if args.ground_contact is None else args.ground_contact,
             ground_height=g.ground_height if args.ground_height is None else args.ground_height))
     sim = scene.simulator(x0, u0)
+    sim.reset(x0, t=t_start, controls=u0)
     print(f"scene {scene.name}: {asm.n_wings} wings, {asm.n_nodes} cable nodes, {asm.elements.count} elements, "
           f"{asm.state_size} states, {'3D' if asm.dim == 3 else 'in-plane'}, sag {'on' if asm.sag else 'off'}, "
           f"cable aerodynamics {'on' if asm.cable_aero else 'off'}, dt {scene.settings.dt:g} s "
@@ -53,8 +70,14 @@ def cmd_simulate(args) -> int:
     if args.csv:
         files.append(rec.save_csv(stem.with_suffix(".csv")))
     title = f"{scene.name}: {asm.n_wings} wings, {rec.t[-1]:.1f} s"
-    files.append(plot_shape(rec, Path(f"{stem}_shape.png"), title))
+    files.append(plot_shape(rec, Path(f"{stem}_shape.png"), title, asm=asm))
     files.append(plot_histories(rec, Path(f"{stem}_histories.png"), title))
+    if asm.station is not None:
+        files.append(plot_generator(rec, Path(f"{stem}_generator.png"), title))
+    if args.animate:
+        from laddermill_gym.animation import animate_loop
+
+        files.append(animate_loop(rec, asm, Path(f"{stem}_loop.gif"), title=scene.name, progress=not args.quiet))
     span = rec.t[-1] - rec.t[0]
     print(f"simulated {span:.2f} s in {wall:.2f} s wall ({span / wall:.1f}x real time)")
     if rec.error:
@@ -114,7 +137,11 @@ def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="laddermill", description=__doc__)
     sub = p.add_subparsers(dest="command", required=True)
     s = sub.add_parser("simulate", help="simulate a scene, save states (npz, CSV) and plots")
-    s.add_argument("scene", help="scene name in configs/scenes or a YAML path")
+    s.add_argument("scene", nargs="?", default="laddermill",
+                   help="scene name in configs/scenes or a YAML path (default: laddermill)")
+    s.add_argument("--start", choices=("scene", "periodic"), default="scene",
+                   help="start from the scene's initial state, or (moving cable) from its periodic motion")
+    s.add_argument("--animate", action="store_true", help="also write a GIF of the loop")
     s.add_argument("--time", type=float, default=60.0, help="simulated time [s]")
     s.add_argument("--sample-dt", type=float, default=0.1, help="recording interval [s]")
     s.add_argument("--out", default="results", help="output directory")
@@ -127,7 +154,7 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--n-wings", type=int, default=None)
     s.add_argument("--direction-step", type=float, default=0.0,
                    help="wind direction step [rad] (the paper's disturbance is 0.01)")
-    s.add_argument("--step-time", type=float, default=1.0, help="time of the direction step [s]")
+    s.add_argument("--step-time", type=float, default=1.0, help="time of the direction step after the start [s]")
     s.add_argument("--ground-contact", choices=("stop", "flag", "off"), default=None,
                    help="a wing or cable node reaching the ground: stop with a report, flag and go on, or no "
                         "ground (default: the scene's integrator.ground_contact, else stop)")

@@ -123,3 +123,27 @@ def run_to_periodic(sim: Simulator, shape_tol: float = 1e-2, power_tol: float = 
                           mean_electrical_power_W=st.efficiency * p, tension_mean_N=ten.mean(axis=0),
                           tension_min_N=ten.min(axis=0), tension_max_N=ten.max(axis=0), shape_m=shape,
                           history=history)
+
+
+def periodic_start(scene, progress: bool = True, shape_tol: float = 1e-3, power_tol: float = 1e-3,
+                   max_time: float = 3000.0):
+    """The operating point of a moving-cable scene: its in-plane model run to the periodic motion
+    (:func:`run_to_periodic`), in the scene's own dimension (a 3D scene gets the in-plane state embedded, which
+    the 3D model continues in plane to round-off). Returns (state, controls, time [s], PeriodicResult); the time
+    matters because the cable-speed schedule is a function of it. Raises ValueError for a turning wind."""
+    import dataclasses
+
+    from laddermill_gym.model.states import planar_to_3d
+
+    a = scene.assembly
+    if a.wind.direction_inf != 0.0:
+        raise ValueError(f"{scene.file}: the periodic start solves the in-plane mill; wind.direction_inf_rad = "
+                         f"{a.wind.direction_inf} must be 0")
+    s2 = scene.replace(assembly=dataclasses.replace(a, dim=2)) if a.dim == 3 else scene
+    sim = s2.simulator()
+    res = run_to_periodic(sim, shape_tol=shape_tol, power_tol=power_tol, max_time=max_time, progress=progress)
+    x = sim.state.copy()
+    if a.dim == 3:
+        nb = s2.assembly.body_state_size
+        x = np.concatenate([planar_to_3d(x[:nb], a.n_wings, a.n_nodes), x[nb:]])
+    return x, sim.controls.copy(), sim.t, res
