@@ -109,8 +109,11 @@ def _flag_lines(rec) -> list[str]:
 
 def cmd_bench(args) -> int:
     from laddermill_gym.studies.benchmark import run_benchmark
+    from laddermill_gym.studies.mill_benchmark import bench_mill
 
     res = run_benchmark(quick=args.quick, scenes=args.scenes)
+    if not args.no_mill:
+        res["laddermill"] = bench_mill(quick=args.quick)
     if args.json:
         Path(args.json).write_text(json.dumps(res, indent=2))
         print(f"wrote {args.json}")
@@ -167,6 +170,7 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--json", default=None, help="also write the figures as JSON to this file")
     b.add_argument("--quick", action="store_true", help="fewer repetitions (a smoke run)")
     b.add_argument("--scenes", nargs="*", default=None)
+    b.add_argument("--no-mill", action="store_true", help="leave out the moving-cable laddermill")
     b.set_defaults(func=cmd_bench)
     e = sub.add_parser("bench-envs", help="env steps/s: native batched vector env vs SyncVectorEnv")
     e.add_argument("--json", default=None, help="also write the figures as JSON to this file")

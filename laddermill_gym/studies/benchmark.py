@@ -34,7 +34,8 @@ def _rhs_loop(n, t, x, u, dx, M, W):
     return s
 
 
-def _median_time(fn, repeats: int) -> float:
+def median_time(fn, repeats: int) -> float:
+    """Median wall time [s] of ``repeats`` calls of ``fn``."""
     times = []
     for _ in range(repeats):
         t0 = time.perf_counter()
@@ -54,7 +55,7 @@ def _rhs_runner(sim: Simulator, n: int):
 
 def time_rhs(sim: Simulator, n: int, repeats: int) -> float:
     """Median wall time of one compiled right-hand side [s] (loop inside numba, no Python overhead)."""
-    return _median_time(_rhs_runner(sim, n), repeats) / n
+    return median_time(_rhs_runner(sim, n), repeats) / n
 
 
 def time_rhs_interleaved(sims: dict[str, Simulator], n: int, repeats: int) -> dict[str, float]:
@@ -79,7 +80,7 @@ def time_step(sim: Simulator, n: int, repeats: int) -> float:
         rk4_advance(0.0, x, sim.controls, sim.settings.dt, n, sim.model, sim.work, sim.limits)
 
     run()
-    return _median_time(run, repeats) / n
+    return median_time(run, repeats) / n
 
 
 def time_reference(sim: Simulator, repeats: int) -> float:
@@ -88,8 +89,8 @@ def time_reference(sim: Simulator, repeats: int) -> float:
 
     x = sim.state.copy()
     reference_rhs(0.0, x, sim.controls, sim.assembly)
-    n = max(1, int(0.2 / max(1e-4, _median_time(lambda: reference_rhs(0.0, x, sim.controls, sim.assembly), 1))))
-    return _median_time(lambda: [reference_rhs(0.0, x, sim.controls, sim.assembly) for _ in range(n)], repeats) / n
+    n = max(1, int(0.2 / max(1e-4, median_time(lambda: reference_rhs(0.0, x, sim.controls, sim.assembly), 1))))
+    return median_time(lambda: [reference_rhs(0.0, x, sim.controls, sim.assembly) for _ in range(n)], repeats) / n
 
 
 def largest_stable_dt(scene, x0, u0, horizon: float = 4.0, tol: float = 0.01, iters: int = 8) -> dict:
@@ -177,9 +178,9 @@ def _layout_state(scene):
     return x, u
 
 
-def run_benchmark(quick: bool = False, scenes: list[str] | None = None, echo=print, mill: bool = True) -> dict:
-    """Measure everything and print a table; returns the figures as a dict. ``mill``: also the moving-cable
-    laddermill (``studies/mill_benchmark.py``)."""
+def run_benchmark(quick: bool = False, scenes: list[str] | None = None, echo=print) -> dict:
+    """Measure everything and print a table; returns the figures as a dict (the moving-cable mill is measured by
+    ``studies/mill_benchmark.py``; ``laddermill bench`` runs both)."""
     from laddermill_gym.ladder.scene import load_scene
 
     reps = 3 if quick else 7
@@ -228,10 +229,6 @@ def run_benchmark(quick: bool = False, scenes: list[str] | None = None, echo=pri
     if not quick:
         res["startup"] = {name: startup_times(name) for name in scenes}
     _print_scenes(res, echo)
-    if mill:
-        from laddermill_gym.studies.mill_benchmark import bench_mill
-
-        res["laddermill"] = bench_mill(quick, echo)
     res["peak_rss_MiB"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     echo(f"peak resident memory of this process {res['peak_rss_MiB']:.0f} MiB")
     return res

@@ -16,18 +16,10 @@ import numpy as np
 from laddermill_gym.kernels.contract import SX_MOVED
 from laddermill_gym.kernels.integrate import normalise_and_check, rk4_advance
 from laddermill_gym.sim.simulator import Simulator
+from laddermill_gym.studies.benchmark import median_time
 
 #: Target of issue 12: the 3D mill at least this many times real time on one thread at its default dt.
 TARGET_REAL_TIME = 30.0
-
-
-def _median(fn, repeats: int) -> float:
-    times = []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
 
 
 def _fixed_chain(sim: Simulator):
@@ -90,8 +82,8 @@ def _transfer_cost(sim: Simulator, repeats: int, n: int = 2000) -> tuple[float, 
 
     plain()
     transfer()
-    copy_time = _median(lambda: ys.__setitem__(slice(None), due), repeats)
-    return _median(plain, repeats) / n, (_median(transfer, repeats) - copy_time) / n
+    copy_time = median_time(lambda: ys.__setitem__(slice(None), due), repeats)
+    return median_time(plain, repeats) / n, (median_time(transfer, repeats) - copy_time) / n
 
 
 def bench_mill(quick: bool = False, echo=print) -> dict:
