@@ -97,12 +97,13 @@ END_WING, END_NODE, END_FIXED = 0, 1, 2
 #: Ground station of the moving cable (``kernels/moving_cable.py``; parameters in ``model/station.py``), packed in
 #: the kind marker's array ``station``: piece length l0 [m]; the first (veered) and last (hauled) elements'
 #: unstretched lengths as fractions of l0 when the cable has moved 0 since the last transfer (Meijaard: 1/10,
-#: 11/10) [-]; their element indices; the offset of the station block in the state; mode (``MODE_PRESCRIBED``:
+#: 11/10) [-] (the first element is element 0, the last element n_e - 1); the offset of the station block in the
+#: state; mode (``MODE_PRESCRIBED``:
 #: the cable speed follows the schedule, ``MODE_DRUM``: the speed is a state driven by the tension difference
 #: against the generator torque); drum radius [m] and inertia referred to the drum axis [kg m^2]; offset of the
 #: generator torque in the controls; number of schedule points; the schedule: times [s], then speeds [m/s].
-SP_PIECE, SP_F_FIRST, SP_F_LAST, SP_E_FIRST, SP_E_LAST, SP_XOFF, SP_MODE = range(7)
-SP_RADIUS, SP_INERTIA, SP_UOFF, SP_NSCHED, SP_SCHED = 7, 8, 9, 10, 11
+SP_PIECE, SP_F_FIRST, SP_F_LAST, SP_XOFF, SP_MODE = range(5)
+SP_RADIUS, SP_INERTIA, SP_UOFF, SP_NSCHED, SP_SCHED = 5, 6, 7, 8, 9
 MODE_PRESCRIBED, MODE_DRUM = 0.0, 1.0
 #: Station block of the state (after the bodies and nodes): cable moved since the last transfer s [m] (the
 #: first element's unstretched length is f_first l0 + s, the last one's f_last l0 - s), number of transfers

@@ -41,8 +41,6 @@ from laddermill_gym.kernels.contract import (
     B3_VEL,
     EF_L0,
     MODE_DRUM,
-    SP_E_FIRST,
-    SP_E_LAST,
     SP_F_FIRST,
     SP_F_LAST,
     SP_INERTIA,
@@ -96,22 +94,20 @@ def cable_speed(sp, t, x):
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
 def mill_rest_length(kind, e, t, x, M):
+    if e != 0 and e != M.ef.shape[0] - 1:
+        return M.ef[e, EF_L0]
     sp = kind.station
-    if e == int(sp[SP_E_FIRST]):
+    if e == 0:
         return sp[SP_PIECE] * sp[SP_F_FIRST] + x[int(sp[SP_XOFF]) + SX_MOVED]
-    if e == int(sp[SP_E_LAST]):
-        return sp[SP_PIECE] * sp[SP_F_LAST] - x[int(sp[SP_XOFF]) + SX_MOVED]
-    return M.ef[e, EF_L0]
+    return sp[SP_PIECE] * sp[SP_F_LAST] - x[int(sp[SP_XOFF]) + SX_MOVED]
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
 def mill_elongation_rate(kind, e, t, x, M, ln, l0, ld):
-    sp = kind.station
-    if e == int(sp[SP_E_FIRST]):
-        return ld - ln / l0 * cable_speed(sp, t, x)
-    if e == int(sp[SP_E_LAST]):
-        return ld + ln / l0 * cable_speed(sp, t, x)
-    return ld
+    if e != 0 and e != M.ef.shape[0] - 1:
+        return ld
+    v = cable_speed(kind.station, t, x)
+    return ld - ln / l0 * v if e == 0 else ld + ln / l0 * v
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
@@ -119,7 +115,7 @@ def station_rates(sp, t, x, u, dx, tension):
     """The station block of dx: ds/dt = V_c, the drum's acceleration (or the schedule's rate) and the
     generator's mechanical power [W] (into the energy)."""
     o = int(sp[SP_XOFF])
-    dt = tension[int(sp[SP_E_FIRST])] - tension[int(sp[SP_E_LAST])]
+    dt = tension[0] - tension[tension.size - 1]
     if sp[SP_MODE] == MODE_DRUM:
         v = x[o + SX_SPEED]
         r = sp[SP_RADIUS]
@@ -167,10 +163,10 @@ def transfer_3d(sp, x, M, up):
     s = x[int(sp[SP_XOFF]) + SX_MOVED]
     lp = sp[SP_PIECE]
     if up:  # split the first element; the neighbour is slot 0 (it moves to slot 1)
-        e, nb, end, old = int(sp[SP_E_FIRST]), 0, 1, sp[SP_F_FIRST] * lp + s
+        e, nb, end, old = 0, 0, 1, sp[SP_F_FIRST] * lp + s
         f = (sp[SP_F_FIRST] * lp + s - lp) / old
     else:  # split the last element; the neighbour is slot n-1 (it moves to slot n-2)
-        e, nb, end, old = int(sp[SP_E_LAST]), nw - 1, 0, sp[SP_F_LAST] * lp - s
+        e, nb, end, old = M.ef.shape[0] - 1, nw - 1, 0, sp[SP_F_LAST] * lp - s
         f = (sp[SP_F_LAST] * lp - s - lp) / old
     o = B3_SIZE * nb
     R = _rotation(x[o + B3_QUAT], x[o + B3_QUAT + 1], x[o + B3_QUAT + 2], x[o + B3_QUAT + 3])
@@ -218,10 +214,10 @@ def transfer_2d(sp, x, M, up):
     s = x[int(sp[SP_XOFF]) + SX_MOVED]
     lp = sp[SP_PIECE]
     if up:
-        e, nb, end, old = int(sp[SP_E_FIRST]), 0, 1, sp[SP_F_FIRST] * lp + s
+        e, nb, end, old = 0, 0, 1, sp[SP_F_FIRST] * lp + s
         f = (sp[SP_F_FIRST] * lp + s - lp) / old
     else:
-        e, nb, end, old = int(sp[SP_E_LAST]), nw - 1, 0, sp[SP_F_LAST] * lp - s
+        e, nb, end, old = M.ef.shape[0] - 1, nw - 1, 0, sp[SP_F_LAST] * lp - s
         f = (sp[SP_F_LAST] * lp - s - lp) / old
     o = B2_SIZE * nb
     th = x[o + B2_THETA]

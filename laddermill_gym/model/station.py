@@ -89,12 +89,15 @@ class StationParams:
 
 
 def pack_station(st: StationParams, n_elements: int, state_offset: int, control_offset: int) -> np.ndarray:
-    """The station's slots (``SP_*``) for a cable of ``n_elements`` elements (first 0, last n_e - 1) whose
-    station state block starts at ``state_offset`` and generator torque (drum) at ``control_offset``."""
+    """The station's slots (``SP_*``) for a cable whose station state block starts at ``state_offset`` and generator
+    torque (drum) at ``control_offset``. The kernels take element 0 as the first and element n_e - 1 as the last
+    (``n_elements`` is checked: at least two)."""
+    if n_elements < 2:
+        raise ValueError(f"a moving cable needs at least two elements, got {n_elements}")
     n = len(st.speed_times)
     p = np.zeros(C.SP_SCHED + 2 * n)
     p[C.SP_PIECE], p[C.SP_F_FIRST], p[C.SP_F_LAST] = st.piece_length, st.first_fraction, st.last_fraction
-    p[C.SP_E_FIRST], p[C.SP_E_LAST], p[C.SP_XOFF] = 0, n_elements - 1, state_offset
+    p[C.SP_XOFF] = state_offset
     p[C.SP_MODE] = C.MODE_DRUM if st.mode == "drum" else C.MODE_PRESCRIBED
     p[C.SP_RADIUS], p[C.SP_INERTIA], p[C.SP_UOFF] = st.drum_radius, st.drum_inertia, control_offset
     p[C.SP_NSCHED] = n
