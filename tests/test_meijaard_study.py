@@ -1,0 +1,135 @@
+"""The Meijaard et al. (1999) study (``laddermill_gym/studies/meijaard.py``) on an 11-wing mill with tiny times.
+
+Oracles: closed-form areas for the loop width (a rectangle and a triangle); the mean tensions written to
+``tension.csv`` times V_c for the power in ``power.csv`` (the power itself comes from the generator energy the
+state integrates, a different computation); the 2D simulator for the study's 2D -> 3D map; hand-made samples
+with known crossing times for the range exits; and a rate limit set below the wing's rate for the breakdown report.
+"""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from laddermill_gym import Simulator
+from laddermill_gym.studies import meijaard as mj
+
+TINY = mj.Config(n_wings=11, max_time=10.0, max_time_3d=5.0, extra_s=2.0, after_step=2.0, dp54_wall=10.0,
+                 speeds=(2.0,), ramp_s=5.0, slot=4, progress=False)
+
+
+@pytest.fixture(scope="module")
+def study(tmp_path_factory):
+    """The study's pieces, as ``main`` runs them, on the tiny mill; (output folder, cases, direction-step runs)."""
+    out = tmp_path_factory.mktemp("meijaard")
+    cases, sim3 = mj.run_periodic_cases(TINY, out)
+    runs = mj.run_direction_steps(sim3, TINY, out)
+    return out, cases, runs
+
+
+def _read(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def test_loop_width_of_closed_forms():
+    """A 100 m x 1000 m rectangle above the station is 100 m wide; a triangle with its apex 1000 m up is 50 m."""
+    ground = (np.array([0.0, 0.0, -50.0]), np.array([100.0, 0.0, -50.0]))
+    h = np.linspace(150.0, 1050.0, 10)
+    rect = np.vstack([np.stack([np.zeros(10), np.zeros(10), -h], 1), np.stack([np.full(10, 100.0), np.zeros(10),
+                                                                                 -h[::-1]], 1)])
+    assert mj.loop_width(rect, ground) == pytest.approx(100.0, rel=1e-12)
+    assert mj.loop_width(np.array([[50.0, 0.0, -1050.0]]), ground) == pytest.approx(50.0, rel=1e-12)
+
+
+def test_power_is_tension_difference_times_speed(study):
+    """power.csv's mean power (generator energy over the period) equals (T_first - T_last) V_c from tension.csv
+    to 1 % (measured: 0.1 % and below; the tensions are sampled once per step, the energy is integrated)."""
+    out, _, _ = study
+    power, tension = _read(out / "power.csv"), _read(out / "tension.csv")
+    assert len(power) == 2  # 2D V_c = 2 and 3D V_c = 2
+    for row in power:
+        t_first = float(tension[0][f"{row['case']} T_mean_kN"])
+        t_last = float(tension[-1][f"{row['case']} T_mean_kN"])
+        assert float(row["mean_power_kW"]) == pytest.approx((t_first - t_last) * float(row["V_c_m_s"]), rel=1e-2)
+        assert float(row["T_min_kN"]) == pytest.approx(min(float(r[f"{row['case']} T_mean_kN"]) for r in tension))
+
+
+def test_files_columns_and_units(study):
+    """Every CSV and PNG is written; the column names carry their units; a case that did not converge says so."""
+    out, cases, runs = study
+    for name in ("fig6_shapes.png", "fig7_tension.png", "fig8_direction_step.png"):
+        data = (out / name).read_bytes()
+        assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10_000
+    power = _read(out / "power.csv")
+    for col in ("V_c_m_s", "mean_power_kW", "tension_estimate_kW", "T_first_kN", "T_last_kN", "T_min_kN",
+                "period_s", "t_end_s", "loop_width_m", "periodic"):
+        assert col in power[0]
+    assert {r["periodic"] for r in power} <= {"True", "False"}
+    assert [r["periodic"] == "True" for r in power] == [c.res.converged for c in cases]
+    assert float(power[0]["period_s"]) == pytest.approx(70.0 / 2.0)
+    assert "yaw_deg" in _read(out / "direction_step.csv")[0]
+    assert [r["label"] for r in _read(out / "breakdown.csv")] == [r["label"] for r in runs]
+    assert len(_read(out / "shapes.csv")) == 2 * 11
+
+
+def test_3d_map_continues_the_2d_motion(study):
+    """The study's 2D -> 3D map: the 3D simulator started from a running 2D mill follows it (positions to 1e-6 m
+    and the generator energy to 1e-8 relative after 0.25 s; test_moving_cable_modes holds the kernels to this)."""
+    sim2 = mj.mill(2, 2.0, TINY)
+    sim2.step(n_steps=200)
+    sim3 = mj.to_3d(sim2, TINY)
+    assert sim3.t == sim2.t and sim3.cable_speed() == sim2.cable_speed()
+    np.testing.assert_allclose(sim3.wing_positions(), sim2.wing_positions(), atol=1e-12)
+    sim2.step(n_steps=20)
+    sim3.step(n_steps=20)
+    np.testing.assert_allclose(sim3.wing_positions(), sim2.wing_positions(), atol=1e-6)
+    assert sim3.generator_energy() == pytest.approx(sim2.generator_energy(), rel=1e-8)
+
+
+def test_range_exit_times():
+    """Hand-made samples: alpha of the slot passes 18 deg between 1 and 2 s (20 deg at 2 s), beta of some wing
+    passes 21 deg at 1 s; the first sample outside is reported."""
+    rows = []
+    for t in (0.0, 1.0, 2.0, 3.0):
+        r = dict.fromkeys(mj.SAMPLE_KEYS, 0.0)
+        r.update(t_after_step_s=t, alpha_deg=10.0 + 5.0 * t, alpha_min_deg=5.0, alpha_max_deg=15.0,
+                 abs_beta_max_deg=25.0 if t >= 1.0 else 3.0)
+        rows.append(r)
+    ex = mj.range_exit(rows)
+    assert ex["alpha_exit_slot_s"] == 2.0 and ex["beta_exit_any_s"] == 1.0
+    assert math.isnan(ex["beta_exit_slot_s"]) and math.isnan(ex["alpha_exit_any_s"])
+
+
+def test_breakdown_is_reported_not_hidden(study):
+    """With a rate limit below the rates the wings already have, the first step fails: the run says it broke
+    down, names the time and the quantity, and stops before the end."""
+    sim = mj.mill(3, 2.0, TINY)
+    sim.step(n_steps=400)  # 5 s: the ramp has set the wings moving
+    rate = float(np.max(np.abs(sim.wing_rates())))
+    assert rate > 0
+    limited = Simulator(sim.assembly, sim.state, dataclasses.replace(sim.settings, max_rate=0.5 * rate), sim.controls)
+    limited.reset(sim.state, t=sim.t, controls=sim.controls)
+    run = mj.direction_step(limited, TINY, "limited")
+    assert run["broke_down"] and run["t_reached_s"] < TINY.after_step
+    assert "angular rate" in run["message"] and "t = " in run["message"]
+
+
+@pytest.mark.slow
+def test_quick_command_end_to_end(tmp_path, capsys):
+    """``python -m laddermill_gym.studies.meijaard --quick`` on the 101-wing mill (about a minute): every file is
+    written, every case's line says whether it is periodic, and each direction-step run reports how it ended."""
+    assert mj.main(["--quick", "--no-progress", "--out", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    names = {p.name for p in tmp_path.iterdir()}
+    assert {"fig6_shapes.png", "fig7_tension.png", "fig8_direction_step.png", "power.csv", "tension.csv",
+            "history.csv", "shapes.csv", "direction_step.csv", "breakdown.csv"} <= names
+    power = _read(tmp_path / "power.csv")
+    assert [r["case"] for r in power] == ["2D V_c=1", "2D V_c=2", "2D V_c=5", "3D V_c=2"]
+    for r in power:
+        assert f"{r['case']}: {'periodic' if r['periodic'] == 'True' else 'NOT PERIODIC'}" in out
+    assert out.count("after the step (") == 3
