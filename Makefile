@@ -29,6 +29,10 @@ figures:
 	python -m laddermill_gym.studies.craft_stability --out results/craft_stability
 	cp results/craft_stability/rotorcraft_stability.png $(FIG)/rotorcraft_stability.png
 	python -m laddermill_gym.studies.rotor_chart --out $(FIG)/rotor_power_chart.png --csv results/rotor_power_chart.csv
+	python -m laddermill_gym.studies.meijaard --out results/meijaard
+	cp results/meijaard/fig6_shapes.png $(FIG)/meijaard_fig6_shapes.png
+	cp results/meijaard/fig7_tension.png $(FIG)/meijaard_fig7_tension.png
+	cp results/meijaard/fig8_direction_step.png $(FIG)/meijaard_fig8_direction_step.png
 	python -m agents.train configs/agents/ppo_tethered_wing.yaml --out $(RUN)
 	cp $(RUN)/training_curve.png $(FIG)/ppo_training_curve.png
 	python -m agents.evaluate --controllers open_loop lqr $(RUN)/best_model.zip $(RUN)/model.zip --episodes 1 \
