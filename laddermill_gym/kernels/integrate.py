@@ -12,7 +12,10 @@ from numba import njit
 
 from laddermill_gym.kernels.dispatch import model_check, model_rhs
 
-OK, SINGULAR, NONFINITE, LIMIT, GROUND = 0, 1, 2, 3, 4
+OK, SINGULAR, NONFINITE, LIMIT, GROUND, STALLED = 0, 1, 2, 3, 4, 5
+#: DP5(4) gives up (STALLED) when its step falls below this fraction of max(1 s, |t|): the error control is then
+#: chasing a discontinuity or a stiff blow-up and would spin for ever.
+H_MIN_REL = 1e-12
 
 # _nrt=False on these kernels (and on the model kinds' rhs/check, kernels/rigid/kinds.py): they allocate nothing,
 # and numba's reference counting of the packed model's arrays passed through them cost about 1.3 us per
@@ -152,4 +155,6 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
         else:
             rej += 1
             h *= max(0.2, 0.9 * err ** -0.2)
+            if h < H_MIN_REL * max(1.0, abs(t)):
+                return STALLED, acc, rej, h, t
     return OK, acc, rej, h, t

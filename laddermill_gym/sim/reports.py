@@ -27,12 +27,22 @@ from laddermill_gym.kernels.contract import (
     N3_POS,
     N3_VEL,
 )
-from laddermill_gym.kernels.integrate import GROUND, LIMIT, NONFINITE, OK, SINGULAR, dp54_advance, rk4_advance
+from laddermill_gym.kernels.integrate import (
+    GROUND,
+    LIMIT,
+    NONFINITE,
+    OK,
+    SINGULAR,
+    STALLED,
+    dp54_advance,
+    rk4_advance,
+)
 from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
 
 #: Ground-contact modes of ``IntegratorSettings.ground_contact``.
 GROUND_MODES: tuple[str, ...] = ("stop", "flag", "off")
-_KIND = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit exceeded"}
+_KIND = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit exceeded",
+         STALLED: "DP5(4) step size collapsed below 1e-12 max(1 s, t)"}
 #: Bodies named at most in one report.
 _MAX_NAMED = 4
 

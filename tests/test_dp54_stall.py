@@ -1,0 +1,25 @@
+"""DP5(4) gives up with a named status instead of spinning when its step size collapses.
+
+Oracle: an error tolerance below double-precision round-off (rtol 1e-17, atol 0) cannot be met by any step, so the
+error control must shrink the step until the guard H_MIN_REL max(1 s, t) stops it, within a bounded number of
+right-hand sides, and the report says so.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from laddermill_gym import load_scene
+from laddermill_gym.kernels.integrate import H_MIN_REL, STALLED, dp54_advance
+from laddermill_gym.sim.simulator import SimulationError
+
+
+def test_unattainable_tolerance_stalls_with_a_report():
+    sim = load_scene("tethered_wing").simulator()
+    x = sim.state.copy()
+    status, acc, rej, h, t = dp54_advance(0.0, 1.0, x, sim.controls, 1e-3, 1e-17, 0.0, sim.model, sim.work,
+                                          sim.limits, 10_000_000)
+    assert status == STALLED
+    assert h < H_MIN_REL and rej < 200  # about log(1e-3 / 1e-12) / log(5) rejections, not millions
+    with pytest.raises(SimulationError, match="step size collapsed"):
+        sim.advance_to(1.0, rtol=1e-17, atol=1e-300)
