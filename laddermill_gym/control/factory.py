@@ -1,6 +1,6 @@
 """Build any controller of the harness for a registered environment from a short spec string:
 
-* ``open_loop``: trim controls held;
+* ``open_loop``: trim controls held (LadderMill-v0: the operating point's tail settings, zero normalised action);
 * ``lqr`` (the environment's default design, configs/agents/lqr_<scene>.yaml) or ``lqr:<config.yaml>``;
 * a path to a training run folder or model file: a Stable-Baselines3 policy (``rl`` extra).
 """
@@ -10,7 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from laddermill_gym.control.base import Controller
-from laddermill_gym.envs import ENV_IDS
+from laddermill_gym.envs import ENV_IDS, task_class
 from laddermill_gym.envs.task import scene_trim
 from laddermill_gym.model.configio import CONFIG_DIR
 
@@ -58,6 +58,30 @@ def _craft_controller(spec: str, kw: dict) -> Controller:
     return CraftLQRController(design.gain, idx, ro.N_CRAFT_OBS, design.u_trim[0], mid, half)
 
 
+def _mill_controller(spec: str, kw: dict) -> Controller:
+    """Open loop for LadderMill-v0: the zero normalised action, which holds the operating point's tail settings
+    (the paper's fixed settings) and, with a drum, its generator torque. Needs the scene only, not the operating
+    point."""
+    if spec != "open_loop":
+        raise ValueError(f"controller {spec!r}: LadderMill-v0 has no LQR design yet (open_loop or a trained policy)")
+    import numpy as np
+
+    from laddermill_gym.control.open_loop import OpenLoopController
+    from laddermill_gym.envs.laddermill.actions import action_count
+    from laddermill_gym.envs.laddermill.observation import N_OBS_PER_SLOT, N_STATION_OBS
+    from laddermill_gym.envs.laddermill.operating_point import mill_scene
+    from laddermill_gym.model.params import CONTROL_NAMES
+
+    options = dict(kw.get("scene_options") or {})
+    options.pop("dimension", None)
+    n = mill_scene(str(kw["scene"]), tuple(sorted(options.items())), 3).assembly.n_wings
+    n_act = action_count(n, kw.get("groups", "per_slot"), kw.get("n_bands", 4), kw.get("surfaces", CONTROL_NAMES),
+                         kw.get("generator_torque", False))
+    ctrl = OpenLoopController(np.zeros(n_act), np.zeros(n_act), np.ones(n_act))
+    ctrl.obs_dim = N_OBS_PER_SLOT * n + N_STATION_OBS  # its default assumes the wing layout
+    return ctrl
+
+
 def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> Controller:
     """The controller named by ``spec`` for environment ``env_id`` (with argument overrides ``env_kwargs``).
 
@@ -68,6 +92,8 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     kw = dict(ENV_IDS[env_id], **(env_kwargs or {}))
     if "craft" in kw and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):
         return _craft_controller(spec, kw)
+    if task_class(env_id).__name__ == "MillTask" and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):
+        return _mill_controller(spec, kw)
     if spec in ("open_loop",) or spec == "lqr" or spec.startswith("lqr:"):
         if kw.get("action_mode", "tail") != "tail" or kw.get("groups", "per_wing") != "per_wing":
             raise ValueError(f"controller {spec!r} needs action_mode='tail' and groups='per_wing' "

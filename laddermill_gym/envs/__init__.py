@@ -6,6 +6,9 @@ Registered on ``import laddermill_gym``:
   element, one RK4 step of 0.05 s per 20 Hz control period, 300 s episodes, the paper's 0.01 rad direction step at 1 s);
 * ``laddermill_gym/LadderChain-v0``: the paper's 101-wing chain between two ground points (scene
   ``ladder_chain``, its own RK4 step, 20 Hz control, 120 s episodes), per-wing actions by default;
+* ``laddermill_gym/LadderMill-v0``: the paper's laddermill, 101 wings on the endless cable moving through the
+  ground generator (scene ``laddermill``, 20 Hz control of the tails by slot, 120 s episodes from the periodic
+  stationary motion, the 0.01 rad direction step at 1 s), :class:`~laddermill_gym.envs.laddermill.env.LadderMillEnv`;
 * ``laddermill_gym/Rotorcraft-v0``: Roberts' tethered twin-rotor craft (configs/rotorcraft/, its own 2 ms
   RK4 step, 20 Hz control of collective and differential collective, 120 s episodes, a 0.01 rad direction
   step at 1 s), :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`.
@@ -21,6 +24,8 @@ import importlib
 import inspect
 
 from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
+from laddermill_gym.envs.laddermill.env import LadderMillEnv
+from laddermill_gym.envs.laddermill.vector import LadderMillVectorEnv
 from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
 from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv
 from laddermill_gym.envs.task import FAILURES, RewardConfig, TerminationConfig, WingTask
@@ -29,6 +34,7 @@ from laddermill_gym.envs.wing_env import WingEnv
 
 __all__ = ["DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule", "FAILURES", "RewardConfig",
            "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "RotorcraftEnv", "RotorcraftVectorEnv",
+           "LadderMillEnv", "LadderMillVectorEnv",
            "ENV_IDS", "ENTRY_POINTS", "register_envs", "task_class", "env_arguments"]
 
 #: Registered environment ids and their default arguments (units: seconds).
@@ -38,6 +44,7 @@ ENV_IDS: dict[str, dict] = {
     "laddermill_gym/LadderChain-v0": dict(scene="ladder_chain", control_dt=0.05, episode_time=120.0,
                                           groups="per_wing"),
     "laddermill_gym/Rotorcraft-v0": dict(craft="roberts_flying_model", control_dt=0.05, episode_time=120.0),
+    "laddermill_gym/LadderMill-v0": dict(scene="laddermill", control_dt=0.05, episode_time=120.0),
 }
 _WING = ("laddermill_gym.envs.wing_env:WingEnv", "laddermill_gym.envs.vector:WingVectorEnv",
          "laddermill_gym.envs.task:WingTask")
@@ -48,6 +55,9 @@ ENTRY_POINTS: dict[str, tuple[str, str, str]] = {
     "laddermill_gym/Rotorcraft-v0": ("laddermill_gym.envs.rotorcraft.env:RotorcraftEnv",
                                      "laddermill_gym.envs.rotorcraft.vector:RotorcraftVectorEnv",
                                      "laddermill_gym.envs.rotorcraft.task:CraftTask"),
+    "laddermill_gym/LadderMill-v0": ("laddermill_gym.envs.laddermill.env:LadderMillEnv",
+                                     "laddermill_gym.envs.laddermill.vector:LadderMillVectorEnv",
+                                     "laddermill_gym.envs.laddermill.task:MillTask"),
 }
 
 

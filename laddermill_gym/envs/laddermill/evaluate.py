@@ -1,0 +1,112 @@
+"""Rewards, terminations and failure texts of the laddermill task (:class:`~laddermill_gym.envs.laddermill.task.
+MillTask`), computed from its composed observations and kernel read-outs after a control period."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from laddermill_gym.envs.laddermill.observation import N_OBS_PER_SLOT, OBS_INDEX
+from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, SX_ENERGY, SX_TRANSFERS
+from laddermill_gym.kernels.integrate import GROUND, LIMIT, NONFINITE, OK, SINGULAR
+from laddermill_gym.kernels.rigid.observe import AUX_GROUND_END, AUX_GROUND_START, AUX_MAX_TENSION, AUX_MIN_ALTITUDE
+from laddermill_gym.sim.recording import ALPHA_RANGE_DEG, MAX_ABS_BETA_DEG
+from laddermill_gym.sim.reports import ground_stop_text
+
+__all__ = ["evaluate_copies", "failure_codes", "failure_text"]
+
+_STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit "
+                "(or the cable moved more than one piece in a step)"}
+_BAND_LO, _BAND_HI = np.radians(ALPHA_RANGE_DEG)
+_BAND_BETA = math.radians(MAX_ABS_BETA_DEG)
+
+
+def _slots(task) -> np.ndarray:
+    """The unclipped per-slot observations (B, n, 15)."""
+    return task.raw_obs[:, : N_OBS_PER_SLOT * task.n_wings].reshape(task.n_copies, task.n_wings, N_OBS_PER_SLOT)
+
+
+def failure_codes(task) -> np.ndarray:
+    """Failure code (B,) of each copy at its observed state (0: flying; codes of ``MILL_FAILURES``); where several
+    apply, integration breakdown, then ground contact, cable overload, aerodynamic range."""
+    o = _slots(task)
+    alpha, beta = o[:, :, OBS_INDEX["alpha"]], o[:, :, OBS_INDEX["beta"]]
+    failure = np.zeros(task.n_copies, dtype=np.int64)
+    failure[np.any((alpha < task.alpha_lo) | (alpha > task.alpha_hi) | (np.abs(beta) > task.beta_max), axis=1)] = 4
+    failure[task.aux[:, AUX_MAX_TENSION] > task.breaking_tension] = 3
+    failure[task.aux[:, AUX_MIN_ALTITUDE] < task.min_altitude] = 2
+    failure[task.batch.status != OK] = 1
+    failure[task.batch.status == GROUND] = 2
+    return failure
+
+
+def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
+    """(reward (B,), terminated (B,), truncated (B,), info) after a control period with the clipped normalised
+    actions ``a`` (B, n_actions); the terms of :class:`~laddermill_gym.envs.laddermill.settings.MillRewardConfig`.
+
+    info (each (B,)): reward_power, reward_lateral, reward_rates, reward_effort, reward_failure (they sum to the
+    reward); power_W (electrical, the reward's P) and mechanical_power_W [W] at the end of the period;
+    mean_power_W [W], the electrical power averaged over the period (generator energy / time); cable_speed_m_s;
+    tension_difference_N (T_first - T_last) and max_tension_N [N]; min_altitude_m [m]; transfers (this episode);
+    t [s]; n_clipped; n_aero_out_of_band (slots outside the wing data's attached-flow band, -14..18 deg alpha,
+    |beta| <= 21 deg: a flag, not a termination); failure (code).
+    """
+    rc, b = task.reward_config, task.batch
+    o = _slots(task)
+    with np.errstate(invalid="ignore", over="ignore"):
+        lat = np.mean((o[:, :, OBS_INDEX["dy"]] / task.lateral_scale) ** 2, axis=1)
+        rates = np.mean((o[:, :, OBS_INDEX["p"]] ** 2 + o[:, :, OBS_INDEX["r"]] ** 2) / rc.rate_scale ** 2, axis=1)
+    effort = np.mean(a ** 2, axis=1)
+    power = np.where(np.isfinite(task.power), task.power, 0.0)
+    failure = failure_codes(task)
+    terminated = failure != 0
+    terms = {
+        "reward_power": rc.power_weight * power / task.p_ref,
+        "reward_lateral": -rc.lateral_weight * -np.expm1(-np.nan_to_num(lat, nan=np.inf)),
+        "reward_rates": -rc.rate_weight * -np.expm1(-np.nan_to_num(rates, nan=np.inf)),
+        "reward_effort": -rc.effort_weight * -np.expm1(-effort),
+        "reward_failure": -rc.failure_penalty * terminated,
+    }
+    reward = (terms["reward_power"] + terms["reward_lateral"] + terms["reward_rates"] + terms["reward_effort"]
+              + terms["reward_failure"])
+    truncated = (task.steps >= task.n_steps_max) & ~terminated
+    st = b.assembly.station
+    x = b.states
+    elapsed = np.maximum(b.done, 1) * b.settings.dt
+    alpha, beta = o[:, :, OBS_INDEX["alpha"]], o[:, :, OBS_INDEX["beta"]]
+    out_of_band = (alpha < _BAND_LO) | (alpha > _BAND_HI) | (np.abs(beta) > _BAND_BETA)
+    info = dict(terms)
+    info.update(power_W=power, mechanical_power_W=task.mechanical_power.copy(),
+                mean_power_W=st.efficiency * (x[:, task.xoff + SX_ENERGY] - task.energy_start) / elapsed,
+                cable_speed_m_s=task.cable_speed.copy(),
+                tension_difference_N=task.aux[:, AUX_GROUND_START] - task.aux[:, AUX_GROUND_END],
+                max_tension_N=task.aux[:, AUX_MAX_TENSION].copy(), min_altitude_m=task.aux[:, AUX_MIN_ALTITUDE].copy(),
+                transfers=np.rint(x[:, task.xoff + SX_TRANSFERS]).astype(np.int64), t=b.t.copy(),
+                n_clipped=n_clipped, n_aero_out_of_band=np.count_nonzero(out_of_band, axis=1), failure=failure)
+    return reward, terminated, truncated, info
+
+
+def failure_text(task, b: int, code: int) -> str:
+    """A sentence on why copy ``b`` terminated with failure ``code`` (time, slot and quantity); "" for code 0."""
+    if code == 0:
+        return ""
+    bt = task.batch
+    t = float(bt.t[b])
+    o = _slots(task)[b]
+    if code == 1:
+        return f"t = {t:.2f} s: integration failed ({_STATUS_TEXT.get(int(bt.status[b]), 'unknown')})"
+    if code == 2 and bt.status[b] == GROUND:
+        return f"t = {t:.2f} s: {ground_stop_text(bt.assembly, bt.states[b], bt.settings.ground_height)}"
+    if code == 2:
+        n = task.n_wings
+        k = int(np.argmax(bt.states[b, : B3_SIZE * n].reshape(n, B3_SIZE)[:, B3_POS + 2]))  # lowest: largest z
+        return (f"t = {t:.2f} s: ground contact, slot {k} CG at {task.aux[b, AUX_MIN_ALTITUDE]:.2f} m altitude "
+                f"(< {task.min_altitude:.3g} m)")
+    if code == 3:
+        return (f"t = {t:.2f} s: cable tension {task.aux[b, AUX_MAX_TENSION]:.4g} N over "
+                f"{task.breaking_tension:.4g} N")
+    al, be = o[:, OBS_INDEX["alpha"]], o[:, OBS_INDEX["beta"]]
+    k = int(np.argmax(np.maximum(np.maximum(task.alpha_lo - al, al - task.alpha_hi), np.abs(be) - task.beta_max)))
+    return (f"t = {t:.2f} s: slot {k} alpha = {math.degrees(al[k]):.1f} deg, beta = {math.degrees(be[k]):.1f} deg "
+            "outside the aerodynamic range")

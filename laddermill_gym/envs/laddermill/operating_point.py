@@ -1,0 +1,197 @@
+"""The starting point of ``laddermill_gym/LadderMill-v0``: the mill's periodic stationary motion.
+
+:func:`compute_operating_point` runs the in-plane (2D) mill from the scene's equilibrium at rest through the
+scene's cable-speed ramp to its periodic motion (:func:`laddermill_gym.ladder.periodic.run_to_periodic`), records
+one more period (wing positions per slot against the cable moved, the reference orbit the observations' offsets
+are taken from), and maps the state at the end of that period (just after a transfer) to 3D
+(:func:`laddermill_gym.model.states.planar_to_3d` on the body block, the station block appended with no
+transfers and no energy yet). The 3D mill from that in-plane start stays in plane to round-off without a
+disturbance (docs/moving_cable.md), so the 2D run is the cheap way to the 3D operating point.
+
+It costs about 30 s for the default 101-wing mill (periodic at t ~ 1135 s), so :func:`operating_point` memoises
+it once per process per (scene, scene options, settle settings); a user may pass a precomputed
+:class:`OperatingPoint` to the environment instead (it pickles).
+
+Small mills (11 or 21 wings) do not reach a periodic motion (docs/moving_cable.md, "Small mills wander"): then
+the state after the settling time ``max_time`` is used, ``converged`` is False, a warning says so and every reset's
+``info`` carries the note. The reference power is the mean electrical power of the last period when it is
+positive; otherwise (a small mill that makes no net power) it is efficiency x V_c x the mean tension of the
+first element, stated in the note.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import warnings
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from laddermill_gym.kernels.contract import SX_ENERGY, SX_MOVED, SX_SIZE, SX_SPEED, SX_TRANSFERS
+from laddermill_gym.ladder.periodic import run_to_periodic
+from laddermill_gym.ladder.scene import Scene, load_scene
+from laddermill_gym.model.states import planar_to_3d
+
+__all__ = ["OperatingPoint", "SettleConfig", "compute_operating_point", "operating_point", "mill_scene",
+           "nominal_positions"]
+
+
+@dataclass(frozen=True)
+class SettleConfig:
+    """How the operating point is found (:func:`run_to_periodic`'s criteria).
+
+    max_time [s]: the longest periodic search after the ramp (the settling time of the fallback);
+    shape_tol [-], power_tol [-]: the periodicity criteria (shape change / l0, relative power change);
+    orbit_dt [s]: sample spacing of the recorded reference orbit (a whole number of physics steps, rounded).
+    """
+
+    max_time: float = 3000.0
+    shape_tol: float = 1e-3
+    power_tol: float = 1e-3
+    orbit_dt: float = 0.25
+
+    def __post_init__(self):
+        for f in dataclasses.fields(self):
+            v = getattr(self, f.name)
+            if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+                raise ValueError(f"settle.{f.name} = {v!r}: must be a finite number > 0")
+
+
+@dataclass(frozen=True, eq=False)
+class OperatingPoint:
+    """The mill's periodic stationary operating point, in 3D.
+
+    state : (n_state,) 3D state just after a transfer; station block: s [m], 0 transfers, V_c [m/s], 0 J.
+    controls : (3 n_wings,) tail controls [rad] per slot (elevator, rudder, aileron).
+    cable_speed : V_c [m/s].  period_s : l0 / V_c [s].
+    power_W : mean electrical generator power over the last period [W] (may be <= 0 for a small mill).
+    mechanical_power_W : the same before the station's efficiency [W].
+    reference_power_W : P_ref > 0 [W], the reward's normalisation (power_W when positive, see the module doc).
+    tension_first_N, tension_last_N : mean tensions of the first and last elements over the last period [N].
+    converged : the periodic criteria held.  t_settle_s : simulated time of the 2D run [s].
+    orbit_moved : (m,) cable moved s since the transfer [m], increasing, of the recorded period.
+    orbit_positions : (m, n_wings, 3) CG positions per slot at those s [m] (y = 0: in plane).
+    alpha_range_rad : (2,) smallest and largest angle of attack of any wing over the recorded period [rad].
+    note : a sentence on how the point was found (convergence, settling time, reference power).
+    """
+
+    state: np.ndarray
+    controls: np.ndarray
+    cable_speed: float
+    period_s: float
+    power_W: float
+    mechanical_power_W: float
+    reference_power_W: float
+    tension_first_N: float
+    tension_last_N: float
+    converged: bool
+    t_settle_s: float
+    orbit_moved: np.ndarray
+    orbit_positions: np.ndarray
+    alpha_range_rad: np.ndarray
+    note: str
+
+    @property
+    def n_wings(self) -> int:
+        return int(self.orbit_positions.shape[1])
+
+
+@lru_cache(maxsize=16)
+def mill_scene(scene: str, options: tuple, dimension: int = 3) -> Scene:
+    """The scene ``scene`` with ``load_scene`` overrides ``options`` (sorted (key, value) pairs) in ``dimension``
+    (cached); ValueError unless it has a moving cable."""
+    sc = load_scene(scene, dimension=dimension, **dict(options))
+    if sc.assembly.station is None:
+        raise ValueError(f"scene {sc.name!r}: LadderMill needs a scene with a moving cable (a 'station:' section)")
+    return sc
+
+
+def _record_period(sim, orbit_dt: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Step ``sim`` (just after a transfer) to the next transfer; returns (s (m,), positions (m, n, 3), alpha
+    range (2,)) sampled every ``orbit_dt`` (rounded to physics steps). The body is 2D: y = 0."""
+    n_every = max(1, int(round(orbit_dt / sim.settings.dt)))
+    st = sim.assembly.station
+    n_max = int(math.ceil(2.0 * st.piece_length / max(sim.cable_speed(), 1e-9) / sim.settings.dt))
+    moved, pos = [], []
+    alo, ahi = math.inf, -math.inf
+    n0 = sim.transfers()
+    off = sim.assembly.body_state_size
+    for i in range(n_max):
+        if i % n_every == 0:
+            moved.append(float(sim.state[off + SX_MOVED]))
+            pos.append(sim.wing_positions().copy())
+            alpha = sim.wing_alpha_beta()[:, 0]
+            alo, ahi = min(alo, float(alpha.min())), max(ahi, float(alpha.max()))
+        sim.step()
+        if sim.transfers() != n0:
+            return np.array(moved), np.array(pos), np.array([alo, ahi])
+    raise RuntimeError(f"t = {sim.t:.2f} s: no transfer within two periods while recording the reference orbit")
+
+
+def compute_operating_point(scene: str = "laddermill", options: tuple = (), settle: SettleConfig | None = None,
+                            warn: bool = True) -> OperatingPoint:
+    """Run the in-plane mill to its periodic motion and return the 3D :class:`OperatingPoint` (not cached: see
+    :func:`operating_point`). ``options``: sorted (key, value) ``load_scene`` overrides (no ``dimension``)."""
+    settle = settle or SettleConfig()
+    sc2 = mill_scene(scene, options, 2)
+    sim = sc2.simulator()
+    controls = sim.controls.copy()
+    res = run_to_periodic(sim, shape_tol=settle.shape_tol, power_tol=settle.power_tol, max_time=settle.max_time,
+                          progress=False)
+    st = sc2.assembly.station
+    e0 = sim.generator_energy()
+    t0 = sim.t
+    moved, positions, alpha_range = _record_period(sim, settle.orbit_dt)
+    mech = (sim.generator_energy() - e0) / (sim.t - t0)  # the recorded period's mean (energy integral, exact)
+    v = sim.cable_speed()
+    t_first, t_last = float(res.tension_mean_N[0]), float(res.tension_mean_N[-1])
+    power = st.efficiency * mech
+    how = (f"periodic motion reached at t = {sim.t:.0f} s" if res.converged else
+           f"NO periodic motion within the settling time ({settle.max_time:g} s after the ramp; last shape change "
+           f"{res.history[-1]['shape_change']:.2g} l0, power change {res.history[-1]['power_change']:.2g}): the "
+           f"start is the state reached at t = {sim.t:.0f} s")
+    if power > 0:
+        p_ref, ref = power, f"reference power = the period's mean electrical power {power / 1e3:.4g} kW"
+    else:
+        p_ref = st.efficiency * v * max(t_first, 1.0)
+        ref = (f"the period's mean electrical power is {power / 1e3:.3g} kW (not positive), so the reference power "
+               f"is efficiency x V_c x mean first-element tension = {p_ref / 1e3:.4g} kW")
+    note = f"{sc2.name} ({sc2.assembly.n_wings} wings, V_c = {v:.3g} m/s): {how}; {ref}"
+    nb2 = sc2.assembly.body_state_size
+    station = np.zeros(SX_SIZE)
+    station[SX_MOVED] = sim.state[nb2 + SX_MOVED]
+    station[SX_TRANSFERS] = 0.0
+    station[SX_SPEED] = v
+    station[SX_ENERGY] = 0.0
+    x3 = np.concatenate([planar_to_3d(sim.state[:nb2], sc2.assembly.n_wings, sc2.assembly.n_nodes), station])
+    pos3 = np.zeros_like(positions)
+    pos3[:, :, 0], pos3[:, :, 2] = positions[:, :, 0], positions[:, :, 2]
+    for a in (x3, controls, moved, pos3, alpha_range):
+        a.setflags(write=False)
+    op = OperatingPoint(state=x3, controls=controls, cable_speed=float(v), period_s=st.piece_length / v,
+                        power_W=float(power), mechanical_power_W=float(mech), reference_power_W=float(p_ref),
+                        tension_first_N=t_first, tension_last_N=t_last, converged=bool(res.converged),
+                        t_settle_s=float(sim.t), orbit_moved=moved, orbit_positions=pos3,
+                        alpha_range_rad=alpha_range, note=note)
+    if warn and not op.converged:
+        warnings.warn(f"LadderMill operating point: {note}", RuntimeWarning, stacklevel=2)
+    return op
+
+
+@lru_cache(maxsize=8)
+def operating_point(scene: str, options: tuple, settle: SettleConfig) -> OperatingPoint:
+    """:func:`compute_operating_point`, memoised per process on (scene, options, settle) (the warning of a
+    non-converged point is given once, when it is computed)."""
+    return compute_operating_point(scene, options, settle, warn=True)
+
+
+def nominal_positions(op: OperatingPoint, moved: np.ndarray) -> np.ndarray:
+    """Reference CG positions per slot (B, n_wings, 3) [m] at the cable moved ``moved`` (B,) [m] since the last
+    transfer: linear interpolation of the recorded orbit in s (held at its ends)."""
+    s = np.asarray(moved, dtype=float)
+    grid = op.orbit_moved
+    j = np.clip(np.searchsorted(grid, s, side="right") - 1, 0, grid.size - 2)
+    w = np.clip((s - grid[j]) / (grid[j + 1] - grid[j]), 0.0, 1.0)[:, None, None]
+    return (1.0 - w) * op.orbit_positions[j] + w * op.orbit_positions[j + 1]

@@ -1,0 +1,326 @@
+"""The laddermill task shared by the single and the vector environments: B copies of the moving-cable mill stepped
+by one compiled kernel (the wings' ``kernels/rigid/observe.py`` step-and-observe kernel, which runs on the
+moving-cable kinds unchanged), with slot actions, slot observations, generator-power rewards, terminations and
+wind disturbances around it.
+
+A single environment is the task with B = 1, so single and vector environments run the same code (same kernel,
+same arithmetic per copy).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from laddermill_gym.atmosphere.disturbances import (
+    DirectionStep,
+    Disturbance,
+    disturbance_from_dict,
+    sample_wind_field,
+)
+from laddermill_gym.envs.laddermill.actions import SlotActionMap, resolve_slot_groups
+from laddermill_gym.envs.laddermill.evaluate import evaluate_copies, failure_text
+from laddermill_gym.envs.laddermill.observation import (
+    N_OBS_PER_SLOT,
+    N_STATION_OBS,
+    OBS_INDEX,
+    mill_observation_bounds,
+)
+from laddermill_gym.envs.laddermill.operating_point import (
+    OperatingPoint,
+    SettleConfig,
+    mill_scene,
+    nominal_positions,
+    operating_point,
+)
+from laddermill_gym.envs.laddermill.settings import (
+    MILL_FAILURES,
+    DrumConfig,
+    InitialNoise,
+    MillRewardConfig,
+    TerminationConfig,
+)
+from laddermill_gym.envs.task import config_from
+from laddermill_gym.kernels.contract import B3_QUAT, B3_RATE, B3_SIZE, B3_VEL, SX_ENERGY, SX_MOVED, SX_SPEED
+from laddermill_gym.kernels.rigid.observe import (
+    AUX_GROUND_END,
+    AUX_GROUND_START,
+    N_AUX,
+    step_observe_batch,
+    step_observe_serial,
+)
+from laddermill_gym.model.params import CONTROL_NAMES
+from laddermill_gym.model.states import rotations_from_quaternions
+from laddermill_gym.sim.batch import BatchSimulator
+from laddermill_gym.sim.simulator import Simulator
+
+__all__ = ["MillTask"]
+
+
+def _positive(name: str, v, unit: str) -> float:
+    if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+        raise ValueError(f"{name} = {v!r}: must be a finite number > 0 {unit}")
+    return float(v)
+
+
+def _disturbance_tuple(disturbances) -> tuple[Disturbance, ...]:
+    """Disturbance objects (or their config dicts); None: the paper's 0.01 rad direction step at 1 s."""
+    if disturbances is None:
+        return (DirectionStep(),)
+    out = []
+    for i, d in enumerate(disturbances):
+        d = disturbance_from_dict(d, f"disturbances[{i}]") if isinstance(d, dict) else d
+        if not isinstance(d, Disturbance):
+            raise ValueError(f"disturbances[{i}] = {d!r}: not a Disturbance or its config dict")
+        out.append(d)
+    return tuple(out)
+
+
+def _scene_options(scene_options) -> tuple:
+    """Sorted (key, value) ``load_scene`` overrides; the env is 3D (a ``dimension`` other than 3 is refused)."""
+    options = dict(scene_options or {})
+    if options.pop("dimension", 3) != 3:
+        raise ValueError(f"scene_options: dimension = {scene_options['dimension']!r}; LadderMill is 3D (the "
+                         "operating point is found in plane and mapped to 3D)")
+    return tuple(sorted(options.items()))
+
+
+class MillTask:
+    """B copies of the moving-cable laddermill as an RL task (arguments: :class:`LadderMillEnv
+    <laddermill_gym.envs.laddermill.env.LadderMillEnv>`; ``n_copies`` = B, ``parallel``: numba's thread pool,
+    default from 32 copies on).
+
+    Attributes (shapes with B copies, n slots): ``obs`` (B, 15 n + 4) clipped observations, ``raw_obs`` the same
+    unclipped, ``aux`` (B, N_AUX) kernel read-outs, ``power`` (B,) electrical generator power [W], ``op`` the
+    :class:`~laddermill_gym.envs.laddermill.operating_point.OperatingPoint`, ``p_ref`` [W], ``u_op``
+    (n_controls,) operating-point controls, ``energy_start`` (B,) generator energy at the start of the last control
+    period [J], ``batch`` the :class:`~laddermill_gym.sim.batch.BatchSimulator`.
+    """
+
+    #: failure code -> name (the SB3 adapter and the evaluation harness read it)
+    failure_names = MILL_FAILURES
+
+    def __init__(self, n_copies: int = 1, scene: str = "laddermill", scene_options: dict | None = None,
+                 control_dt: float = 0.05, episode_time: float = 120.0, groups="per_slot", n_bands: int = 4,
+                 surfaces=CONTROL_NAMES, generator_torque: bool = False, drum=None,
+                 operating_point: OperatingPoint | None = None, settle=None, initial_noise=None,
+                 disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
+                 parallel: bool | None = None):
+        if isinstance(n_copies, bool) or int(n_copies) != n_copies or n_copies < 1:
+            raise ValueError(f"n_copies = {n_copies!r}: must be a positive integer")
+        self.control_dt = _positive("control_dt", control_dt, "s")
+        self.episode_time = _positive("episode_time", episode_time, "s")
+        self.wind_dt = _positive("wind_dt", wind_dt, "s")
+        self.disturbances = _disturbance_tuple(disturbances)
+        self.reward_config = config_from(reward, MillRewardConfig, "reward")
+        self.termination_config = config_from(termination, TerminationConfig, "termination")
+        self.initial_noise = config_from(initial_noise, InitialNoise, "initial_noise")
+        self.settle = config_from(settle, SettleConfig, "settle")
+        self.drum = config_from(drum, DrumConfig, "drum")
+        options = _scene_options(scene_options)
+        self.scene = sc = mill_scene(str(scene), options, 3)
+        if sc.settings.method != "rk4":
+            raise ValueError(f"scene {sc.name}: integrator.method = {sc.settings.method!r}; environments step with rk4")
+        dt = sc.settings.dt
+        self.n_substeps = int(round(self.control_dt / dt))
+        if self.n_substeps < 1 or abs(self.n_substeps * dt - self.control_dt) > 1e-9 * self.control_dt:
+            raise ValueError(f"control_dt = {control_dt!r} s is not a whole multiple of the physics step {dt!r} s")
+        self.n_steps_max = int(round(self.episode_time / self.control_dt))
+        self.op = self._operating_point(operating_point, str(scene), options)
+        self.p_ref = self.op.reference_power_W
+        self.generator_torque = bool(generator_torque)
+        asm = self._assembly()
+        self.n_wings = n = asm.n_wings
+        self.n_copies = B = int(n_copies)
+        self.parallel = B >= 32 if parallel is None else bool(parallel)
+        self._kernel = step_observe_batch if self.parallel else step_observe_serial
+        n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
+        self.batch = BatchSimulator(asm, B, sc.settings, n_modulation=max(2, n_mod))
+        self.xoff = asm.body_state_size
+        lay = sc.layout
+        self.below = np.array([lay.piece_elements[k][-1] for k in range(n)], dtype=np.int64)
+        self.ground = np.array([lay.piece_elements[0][0], lay.piece_elements[-1][-1]], dtype=np.int64)
+        self._zero_nominal = np.zeros((n, 3))  # the kernel writes absolute positions; offsets: _compose
+        self.actions = SlotActionMap(asm, resolve_slot_groups(groups, n, n_bands), surfaces, self.u_op,
+                                     self.torque_half_range if self.generator_torque else None)
+        self.n_actions = self.actions.n_actions
+        self.obs_dim = N_OBS_PER_SLOT * n + N_STATION_OBS
+        self.slot_obs = np.zeros((B, N_OBS_PER_SLOT * n))
+        self.raw_obs = np.zeros((B, self.obs_dim))
+        self.obs = np.zeros((B, self.obs_dim))
+        self.aux = np.zeros((B, N_AUX))
+        self.power = np.zeros(B)
+        self.mechanical_power = np.zeros(B)
+        self.cable_speed = np.zeros(B)
+        self._dx = np.zeros((B, asm.state_size))
+        self._nsteps = np.zeros(B, dtype=np.int64)
+        self.energy_start = np.zeros(B)
+        self.steps = np.zeros(B, dtype=np.int64)
+        self.last_action = np.zeros((B, self.n_actions))
+        max_speed = asm.station.piece_length / dt
+        self.obs_low, self.obs_high = mill_observation_bounds(sc, max_speed)
+        self._limits()
+        self._rotation_op = rotations_from_quaternions(
+            self.op.state[: B3_SIZE * n].reshape(n, B3_SIZE)[:, B3_QUAT: B3_QUAT + 4])
+        self.batch.states[:] = self.op.state
+        self.batch.controls[:] = self.u_op
+
+    # ------------------------------------------------------------------ construction
+    def _operating_point(self, given, scene: str, options: tuple) -> OperatingPoint:
+        """The given operating point (checked against the scene) or the memoised one of (scene, options, settle)."""
+        sc = self.scene
+        if given is None:
+            return operating_point(scene, options, self.settle)
+        if not isinstance(given, OperatingPoint):
+            raise ValueError(f"operating_point = {given!r}: must be an OperatingPoint (envs.laddermill) or None")
+        n, size = sc.assembly.n_wings, sc.assembly.state_size
+        if given.state.shape != (size,) or given.controls.shape != (3 * n,) or given.n_wings != n:
+            raise ValueError(f"operating_point: state {given.state.shape} / controls {given.controls.shape} do not "
+                             f"fit scene {sc.name} with {n} wings (state ({size},), controls ({3 * n},))")
+        return given
+
+    def _assembly(self):
+        """The scene's assembly with the station at the operating point's constant cable speed: a prescribed
+        schedule held at V_c, or (``generator_torque``) a drum starting at V_c whose torque is the last control.
+        Sets ``u_op``, ``torque_op`` [N m] and ``torque_half_range`` [N m]."""
+        sc, op, d = self.scene, self.op, self.drum
+        st = sc.assembly.station
+        v = op.cable_speed
+        self.torque_op = d.radius * op.mechanical_power_W / v  # the drum's torque that balances the mean pull
+        self.torque_half_range = (d.torque_half_range if d.torque_half_range is not None
+                                  else d.radius * self.p_ref / (st.efficiency * v))
+        if self.generator_torque:
+            q_lo, q_hi = self.torque_op - self.torque_half_range, self.torque_op + self.torque_half_range
+            station = dataclasses.replace(st, mode="drum", speed_times=(0.0,), speed_values=(v,),
+                                          drum_radius=d.radius, drum_inertia=d.inertia, torque_limits=(q_lo, q_hi))
+            self.u_op = np.concatenate([op.controls, [self.torque_op]])
+        else:
+            station = dataclasses.replace(st, mode="prescribed", speed_times=(0.0,), speed_values=(v,))
+            self.u_op = np.array(op.controls, dtype=float)
+        self.u_op.setflags(write=False)
+        return dataclasses.replace(sc.assembly, station=station)
+
+    def _limits(self) -> None:
+        rc, tc, sc = self.reward_config, self.termination_config, self.scene
+        self.lateral_scale = rc.lateral_scale if rc.lateral_scale is not None else 0.05 * sc.piece_length
+        self.min_altitude = tc.min_altitude if tc.min_altitude is not None else 0.5 * min(
+            w.span for w in sc.assembly.wing_types)
+        self.breaking_tension = tc.breaking_factor * sc.cable.breaking_load
+        self.alpha_lo, self.alpha_hi = np.radians(tc.alpha_range_deg)
+        self.beta_max = math.radians(tc.max_abs_beta_deg)
+
+    # ------------------------------------------------------------------ kernel
+    def _run(self, nsteps: np.ndarray) -> None:
+        """Advance copy b by nsteps[b] RK4 steps (0: observe only, < 0: skip), then compose the observations."""
+        b = self.batch
+        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.air, b.limits,
+                     self._dx, self._zero_nominal, self.below, self.ground, self.slot_obs, self.aux,
+                     b.status, b.done)
+        b.t += b.done * b.settings.dt
+        self._compose()
+
+    def _compose(self) -> None:
+        """raw_obs from the kernel's slot rows (offsets taken from the reference orbit at each copy's cable phase)
+        and the station read-outs; power [W]; obs = raw_obs clipped to the bounds (non-finite: the bound)."""
+        B, n, st = self.n_copies, self.n_wings, self.batch.assembly.station
+        x = self.batch.states
+        moved = x[:, self.xoff + SX_MOVED]
+        slots = self.raw_obs[:, : N_OBS_PER_SLOT * n].reshape(B, n, N_OBS_PER_SLOT)
+        slots[:] = self.slot_obs.reshape(B, n, N_OBS_PER_SLOT)
+        i = OBS_INDEX["dx"]
+        slots[:, :, i: i + 3] -= nominal_positions(self.op, moved)
+        self.cable_speed[:] = x[:, self.xoff + SX_SPEED] if st.mode == "drum" else self.op.cable_speed
+        dten = self.aux[:, AUX_GROUND_START] - self.aux[:, AUX_GROUND_END]
+        if st.mode == "drum":
+            self.mechanical_power[:] = self.batch.controls[:, -1] / st.drum_radius * self.cable_speed
+        else:
+            self.mechanical_power[:] = dten * self.cable_speed
+        self.power[:] = st.efficiency * self.mechanical_power
+        station = self.raw_obs[:, N_OBS_PER_SLOT * n:]
+        station[:, 0], station[:, 1] = self.cable_speed, moved / st.piece_length
+        station[:, 2], station[:, 3] = dten, self.power / self.p_ref
+        raw, lo, hi = self.raw_obs, self.obs_low, self.obs_high
+        np.clip(np.where(np.isfinite(raw), raw, np.where(raw < 0, lo, hi)), lo, hi, out=self.obs)
+
+    def observe(self) -> None:
+        """Observe every copy at its current state without stepping (after restoring states by hand)."""
+        self._nsteps[:] = 0
+        self._run(self._nsteps)
+
+    # ------------------------------------------------------------------ episodes
+    def reset(self, mask: np.ndarray, rngs) -> None:
+        """Start new episodes in the copies selected by the boolean ``mask`` (B,): the operating point (plus the
+        initial noise, per wing) and its controls, t = 0, a fresh wind disturbance, drawn with ``rngs[b]`` (a numpy
+        Generator per copy: first the disturbances, then the noise), and observe them. Other copies are untouched."""
+        b, n, noise = self.batch, self.n_wings, self.initial_noise
+        idx = np.flatnonzero(mask)
+        noisy = noise.lateral_velocity > 0 or noise.roll_rate > 0 or noise.yaw_rate > 0
+        scale = np.array([noise.lateral_velocity, noise.roll_rate, noise.yaw_rate])
+        for i in idx:
+            rng = rngs[i]
+            b.set_wind(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rng))
+            x = np.array(self.op.state)
+            if noisy:
+                d = rng.normal(size=(n, 3)) * scale  # (global lateral velocity, roll rate, yaw rate) per wing
+                w = x[: B3_SIZE * n].reshape(n, B3_SIZE)
+                w[:, B3_VEL: B3_VEL + 3] += self._rotation_op[:, 1, :] * d[:, :1]  # R^T (0, dvy, 0)
+                w[:, B3_RATE] += d[:, 1]
+                w[:, B3_RATE + 2] += d[:, 2]
+            b.states[i] = x
+        b.controls[idx] = self.u_op
+        b.t[idx] = 0.0
+        self.steps[idx] = 0
+        self.last_action[idx] = 0.0
+        self._nsteps[:] = -1
+        self._nsteps[idx] = 0
+        self._run(self._nsteps)
+
+    def step(self, action: np.ndarray, mask: np.ndarray | None = None):
+        """Apply normalised actions (B, n_actions) for one control period to the copies in ``mask`` (default all)
+        and evaluate them.
+
+        Returns
+        -------
+        reward : (B,) float64;  terminated, truncated : (B,) bool;  info : dict of (B,) arrays (reward terms,
+        powers [W], cable speed [m/s], tension difference and largest tension [N], lowest altitude [m], transfers,
+        time [s], clipped action entries, wings outside the attached-flow band, failure code). Rows of copies
+        outside ``mask`` are meaningless.
+        """
+        a = np.asarray(action, dtype=float).reshape(self.n_copies, self.n_actions)
+        if not np.all(np.isfinite(a)):
+            raise ValueError(f"action has non-finite entries: {a[~np.isfinite(a)][:4]}")
+        n_clipped = np.count_nonzero(np.abs(a) > 1.0, axis=1)
+        a = np.clip(a, -1.0, 1.0)
+        b = self.batch
+        sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
+        b.controls[sel] = self.actions.controls(a)[sel]
+        self.last_action[sel] = a[sel]
+        self.energy_start[:] = b.states[:, self.xoff + SX_ENERGY]
+        self._nsteps[:] = -1
+        self._nsteps[sel] = self.n_substeps
+        self._run(self._nsteps)
+        self.steps[sel] += 1
+        return evaluate_copies(self, a, n_clipped)
+
+    # ------------------------------------------------------------------ read-outs
+    def simulator(self, b: int = 0) -> Simulator:
+        """A :class:`~laddermill_gym.sim.simulator.Simulator` of copy ``b`` (its state, time [s], controls and wind;
+        a snapshot: stepping it does not step the copy). ``generator_power()``, ``slot_wings()`` etc. read it out."""
+        bt = self.batch
+        sim = Simulator(bt.assembly, bt.states[b], bt.settings, bt.controls[b])
+        air = {f: a[b].copy() for f, a in zip(bt.air._fields, bt.air, strict=True) if a is not None}
+        sim.model = sim.model._replace(**air)
+        sim.reset(state=bt.states[b], t=float(bt.t[b]), controls=bt.controls[b])
+        return sim
+
+    def failure_text(self, b: int, code: int) -> str:
+        """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0."""
+        return failure_text(self, b, code)
+
+    def renderer(self, interactive: bool = False):
+        """Side and top views of the loop (``envs/laddermill/render.py``)."""
+        from laddermill_gym.envs.laddermill.render import MillRenderer
+
+        return MillRenderer(self, interactive)
