@@ -93,22 +93,29 @@ def time_reference(sim: Simulator, repeats: int) -> float:
     return median_time(lambda: [reference_rhs(0.0, x, sim.controls, sim.assembly) for _ in range(n)], repeats) / n
 
 
-def largest_stable_dt(scene, x0, u0, horizon: float = 4.0, tol: float = 0.01, iters: int = 8, t0: float = 0.0) -> dict:
+def largest_stable_dt(scene, x0, u0, horizon: float = 4.0, tol: float = 0.01, iters: int = 8, t0: float = 0.0,
+                      lateral: bool = True) -> dict:
     """Largest RK4 step [s] whose run over ``horizon`` seconds from a slightly disturbed initial state stays
     within ``tol`` x piece length of a DP5(4) reference (rtol 1e-9) in every wing and node position.
 
     Bisection between a step that passes and one that fails; a run that breaks down fails. ``t0`` [s] is the time
     of the state (schedules such as a moving cable's speed depend on it). A failing reference is reported in
-    ``note``, not raised. Above the
-    stability limit RK4 on a tension-only cable need not produce NaN, hence the comparison with a reference.
+    ``note``, not raised. ``lateral``: disturb sideways velocity and roll rate (3D); else the in-plane velocity
+    (for a laterally unstable system such as the moving mill, whose lateral divergence would otherwise swamp the
+    step-size error). Above the stability limit RK4 on a tension-only cable need not produce NaN, hence the
+    comparison with a reference.
     """
     rng = np.random.default_rng(0)
     x_pert = x0.copy()
     a = scene.assembly
     if a.dim == 3:
         for k in range(a.n_wings):
-            x_pert[B3_SIZE * k + B3_VEL + 1] += 0.2 * rng.normal()  # sideways velocity [m/s]
-            x_pert[B3_SIZE * k + B3_RATE] += 0.02 * rng.normal()  # roll rate [rad/s]
+            if lateral:
+                x_pert[B3_SIZE * k + B3_VEL + 1] += 0.2 * rng.normal()  # sideways velocity [m/s]
+                x_pert[B3_SIZE * k + B3_RATE] += 0.02 * rng.normal()  # roll rate [rad/s]
+            else:
+                x_pert[B3_SIZE * k + B3_VEL] += 0.2 * rng.normal()  # forward velocity [m/s]
+                x_pert[B3_SIZE * k + B3_VEL + 2] += 0.2 * rng.normal()  # normal velocity [m/s]
     ref = Simulator(a, x_pert, dataclasses.replace(scene.settings, method="dp54"), u0)
     ref.reset(x_pert, t=t0, controls=u0)
     try:
