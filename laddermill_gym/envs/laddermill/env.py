@@ -12,6 +12,7 @@ import numpy as np
 
 from laddermill_gym.envs.laddermill.observation import SLOT_OBS_FIELDS, STATION_OBS_FIELDS
 from laddermill_gym.envs.laddermill.task import MillTask
+from laddermill_gym.envs.pickling import TaskPickling
 from laddermill_gym.envs.render import TaskRendering
 
 __all__ = ["LadderMillEnv", "TASK_ARGUMENTS", "check_task_arguments"]
@@ -32,7 +33,7 @@ def _table(fields, first: str) -> str:
     return "\n".join(f"    | {first}{i} | {f.name} | {f.unit} | {f.description} |" for i, f in enumerate(fields))
 
 
-class LadderMillEnv(TaskRendering, gym.Env):
+class LadderMillEnv(TaskPickling, TaskRendering, gym.Env):
     """The laddermill of Meijaard, Ockels & Schwab (1999): wings on an endless cable that moves through the ground
     generator, controlled through their tail surfaces by slot.
 
@@ -124,24 +125,6 @@ STATION_TABLE
     def operating_point(self):
         """The :class:`~laddermill_gym.envs.laddermill.operating_point.OperatingPoint` the episodes start from."""
         return self.task.op
-
-    def __getstate__(self):
-        b, task = self.task.batch, self.task
-        return {"kwargs": self._kwargs, "render_mode": self.render_mode, "np_random": self._np_random,
-                "arrays": (b.states.copy(), b.controls.copy(), b.t.copy(), task.steps.copy(), task.last_action.copy()),
-                "air": tuple(None if a is None else a.copy() for a in b.air), "needs_reset": self._needs_reset}
-
-    def __setstate__(self, state):
-        self.__init__(render_mode=state["render_mode"], **state["kwargs"])
-        self._np_random = state["np_random"]
-        b, task = self.task.batch, self.task
-        b.states[:], b.controls[:], b.t[:], task.steps[:], task.last_action[:] = state["arrays"]
-        for mine, saved in zip(b.air, state["air"], strict=True):
-            if mine is not None:
-                mine[:] = saved
-        self._needs_reset = state["needs_reset"]
-        if not self._needs_reset:
-            task.observe()
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
         super().reset(seed=seed)

@@ -16,6 +16,7 @@ from typing import Any
 import gymnasium as gym
 import numpy as np
 
+from laddermill_gym.envs.pickling import TaskPickling
 from laddermill_gym.envs.render import TaskRendering
 from laddermill_gym.envs.rotorcraft.observation import (
     CRAFT_OBS_FIELDS,
@@ -51,7 +52,7 @@ def _obs_table() -> str:
     return "\n".join(f"    | {i} | {f.name} | {f.unit} | {f.description} |" for i, f in enumerate(CRAFT_OBS_FIELDS))
 
 
-class RotorcraftEnv(TaskRendering, gym.Env):
+class RotorcraftEnv(TaskPickling, TaskRendering, gym.Env):
     """Roberts' tethered twin-rotor craft held by differential collective pitch.
 
     ## Description
@@ -171,27 +172,6 @@ OBS_TABLE
         """A :class:`CraftSimulator` of the craft at the env's current state, time, controls and wind (a snapshot
         for read-outs and linearisation: stepping it does not step the env)."""
         return self.task.simulator(0)
-
-    # ------------------------------------------------------------------ pickling
-    # rebuild from the constructor arguments and restore the copy's state
-    def __getstate__(self):
-        b, task = self.task.batch, self.task
-        return {"kwargs": self._kwargs, "render_mode": self.render_mode, "np_random": self._np_random,
-                "arrays": (b.states.copy(), b.controls.copy(), b.t.copy(), task.steps.copy(), task.last_action.copy()),
-                "air": tuple(None if a is None else a.copy() for a in b.air),
-                "needs_reset": self._needs_reset}
-
-    def __setstate__(self, state):
-        self.__init__(render_mode=state["render_mode"], **state["kwargs"])
-        self._np_random = state["np_random"]
-        b, task = self.task.batch, self.task
-        b.states[:], b.controls[:], b.t[:], task.steps[:], task.last_action[:] = state["arrays"]
-        for mine, saved in zip(b.air, state["air"], strict=True):
-            if mine is not None:
-                mine[:] = saved
-        self._needs_reset = state["needs_reset"]
-        if not self._needs_reset:
-            task.observe()
 
     # ------------------------------------------------------------------ Gymnasium API
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
