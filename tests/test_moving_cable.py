@@ -206,3 +206,24 @@ def test_bad_station_is_named():
         StationParams(piece_length=70.0, speed_times=(0.0, 0.0), speed_values=(1.0, 2.0))
     with pytest.raises(ValueError, match="station.drum_inertia"):
         StationParams(piece_length=70.0, mode="drum", drum_inertia=0.0)
+
+
+def test_commanded_speed_follows_a_first_order_lag(mill3d):
+    """Commanded mode: V_c(t) = V_cmd + (V_0 - V_cmd) exp(-t / tau) (closed form, RK4 to 1e-9 m/s), the paid-out
+    length its integral V_cmd t + tau (V_0 - V_cmd)(1 - exp(-t / tau)), and the power (T_first - T_last) V_c."""
+    asm = _with_station(mill3d, mode="commanded", speed_times=(0.0,), speed_values=(1.0,), speed_time_constant=2.0,
+                        speed_limits=(-1.0, 4.0))
+    x0, u0 = mill3d.initial_state()
+    x0[asm.body_state_size + SX_SPEED] = 1.0
+    sim = Simulator(asm, x0, mill3d.settings, np.concatenate([u0, [3.0]]))
+    assert sim.control_labels[-1] == "cable_speed_command"
+    t = 10.0
+    sim.step(n_steps=int(round(t / sim.settings.dt)))
+    decay = np.exp(-t / 2.0)
+    assert sim.cable_speed() == pytest.approx(3.0 + (1.0 - 3.0) * decay, abs=1e-9)
+    assert sim.cable_paid_out() == pytest.approx(3.0 * t + 2.0 * (1.0 - 3.0) * (1.0 - decay), abs=1e-8)
+    p = sim.generator_power()
+    ten = sim.tensions()
+    assert p["mechanical_W"] == pytest.approx((ten[0] - ten[-1]) * sim.cable_speed(), rel=1e-12)
+    with pytest.raises(ValueError, match="cable_speed_command = 5.0 m/s is outside station.speed_limits"):
+        sim.step(np.concatenate([u0, [5.0]]))

@@ -16,9 +16,10 @@
   attitude of the wing above it (the one it will follow up the cable) and no rotation. s < 0 (the cable
   running backwards) transfers the other way. The state keeps its size: the leaving wing's slot is reused,
   nothing is allocated or repacked, and the count of transfers (a state) names which wing is in which slot.
-* Generator: a prescribed schedule V_c(t), or a drum, (J / r^2) dV_c/dt = T_first - T_last - Q / r with the
-  generator torque Q the control after the wings'. The state integrates the generator's mechanical power,
-  (T_first - T_last) V_c (prescribed) or (Q / r) V_c (drum), into SX_ENERGY [J].
+* Generator: a prescribed schedule V_c(t); a drum, (J / r^2) dV_c/dt = T_first - T_last - Q / r with the
+  generator torque Q the control after the wings'; or a commanded speed, dV_c/dt = (V_cmd - V_c) / tau with V_cmd
+  that control. The state integrates the generator's mechanical power, (T_first - T_last) V_c (prescribed,
+  commanded) or (Q / r) V_c (drum), into SX_ENERGY [J].
 """
 
 import math
@@ -40,7 +41,9 @@ from laddermill_gym.kernels.contract import (
     B3_SIZE,
     B3_VEL,
     EF_L0,
+    MODE_COMMANDED,
     MODE_DRUM,
+    MODE_PRESCRIBED,
     SP_F_FIRST,
     SP_F_LAST,
     SP_INERTIA,
@@ -49,6 +52,7 @@ from laddermill_gym.kernels.contract import (
     SP_PIECE,
     SP_RADIUS,
     SP_SCHED,
+    SP_TAU,
     SP_UOFF,
     SP_XOFF,
     SX_ENERGY,
@@ -86,8 +90,8 @@ def scheduled_speed(sp, t):
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
 def cable_speed(sp, t, x):
-    """Cable speed V_c [m/s] at time t [s] in state x: the drum's state or the schedule."""
-    if sp[SP_MODE] == MODE_DRUM:
+    """Cable speed V_c [m/s] at time t [s] in state x: the state (drum, commanded) or the schedule."""
+    if sp[SP_MODE] != MODE_PRESCRIBED:
         return x[int(sp[SP_XOFF]) + SX_SPEED]
     return scheduled_speed(sp, t)[0]
 
@@ -122,6 +126,10 @@ def station_rates(sp, t, x, u, dx, tension):
         force = u[int(sp[SP_UOFF])] / r
         dx[o + SX_SPEED] = (dt - force) * r * r / sp[SP_INERTIA]
         power = force * v
+    elif sp[SP_MODE] == MODE_COMMANDED:
+        v = x[o + SX_SPEED]
+        dx[o + SX_SPEED] = (u[int(sp[SP_UOFF])] - v) / sp[SP_TAU]
+        power = dt * v
     else:
         v, a = scheduled_speed(sp, t)
         dx[o + SX_SPEED] = a

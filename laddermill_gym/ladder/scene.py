@@ -126,6 +126,9 @@ def read_station(s: Section, piece: float) -> StationParams:
         kw.update(drum_radius=s.number("drum_radius", positive=True),
                   drum_inertia=s.number("drum_inertia", positive=True),
                   torque_limits=tuple(s.vector("torque_limits", 2)))
+    if mode == "commanded":
+        kw.update(speed_time_constant=s.number("speed_time_constant", positive=True),
+                  speed_limits=tuple(s.vector("speed_limits", 2)))
     s.done()
     try:
         return StationParams(**kw)

@@ -17,7 +17,7 @@ import numpy as np
 
 from laddermill_gym.kernels import contract as C
 
-MODES = ("prescribed", "drum")
+MODES = ("prescribed", "drum", "commanded")
 
 
 @dataclass(frozen=True)
@@ -27,12 +27,16 @@ class StationParams:
     piece_length : l0 [m], the cable between two wings.
     first_fraction, last_fraction : unstretched lengths of the first (veered) and last (hauled) elements as
         fractions of l0 right after a transfer [-]; Meijaard: 1/10 and 11/10.
-    mode : 'prescribed' (the generator holds V_c(t)) or 'drum' (V_c is a state).
+    mode : 'prescribed' (the generator holds V_c(t)), 'drum' (V_c is a state driven by the tension difference
+        against the generator torque, a control) or 'commanded' (V_c is a state that follows a commanded speed, a
+        control: dV_c/dt = (V_cmd - V_c) / tau, the generator's speed controller; the drum's inertia is then the
+        controller's business and the generator takes P = (T_first - T_last) V_c).
     speed_times [s], speed_values [m/s] : piecewise-linear schedule V_c(t), held constant outside; with a drum
         only ``speed_values[0]`` is used, as the initial speed.
     drum_radius [m], drum_inertia [kg m^2] : the drum (and generator rotor) the cable drives; its equation is
         (J / r^2) dV_c/dt = T_first - T_last - Q / r with the generator torque Q [N m] (a control input).
     torque_limits : (min, max) generator torque [N m] accepted as a control.
+    speed_time_constant : tau [s] of the commanded-speed mode.  speed_limits : (min, max) commanded speed [m/s].
     efficiency : electrical over mechanical generator power [-].
     """
 
@@ -45,6 +49,8 @@ class StationParams:
     drum_radius: float = 1.0
     drum_inertia: float = 0.0
     torque_limits: tuple[float, float] = (0.0, 0.0)
+    speed_time_constant: float = 1.0
+    speed_limits: tuple[float, float] = (0.0, 0.0)
     efficiency: float = 1.0
 
     def __post_init__(self):
@@ -75,13 +81,19 @@ class StationParams:
             lo, hi = self.torque_limits
             if not (math.isfinite(lo) and math.isfinite(hi) and lo <= hi):
                 bad("torque_limits", self.torque_limits, "need finite min <= max [N m]")
+        if self.mode == "commanded":
+            if not (self.speed_time_constant > 0 and math.isfinite(self.speed_time_constant)):
+                bad("speed_time_constant", self.speed_time_constant, "must be a finite time > 0 s")
+            lo, hi = self.speed_limits
+            if not (math.isfinite(lo) and math.isfinite(hi) and lo <= hi):
+                bad("speed_limits", self.speed_limits, "need finite min <= max [m/s]")
         if not 0 < self.efficiency <= 1:
             bad("efficiency", self.efficiency, "must be in (0, 1]")
 
     @property
     def n_controls(self) -> int:
-        """Controls the station adds after the wings' (the generator torque with a drum)."""
-        return 1 if self.mode == "drum" else 0
+        """Controls the station adds after the wings' (the generator torque of a drum, or the commanded speed)."""
+        return 0 if self.mode == "prescribed" else 1
 
     def speed(self, t: float) -> float:
         """The scheduled cable speed V_c(t) [m/s] (numpy; the kernel evaluates the same schedule)."""
@@ -98,8 +110,9 @@ def pack_station(st: StationParams, n_elements: int, state_offset: int, control_
     p = np.zeros(C.SP_SCHED + 2 * n)
     p[C.SP_PIECE], p[C.SP_F_FIRST], p[C.SP_F_LAST] = st.piece_length, st.first_fraction, st.last_fraction
     p[C.SP_XOFF] = state_offset
-    p[C.SP_MODE] = C.MODE_DRUM if st.mode == "drum" else C.MODE_PRESCRIBED
+    p[C.SP_MODE] = {"prescribed": C.MODE_PRESCRIBED, "drum": C.MODE_DRUM, "commanded": C.MODE_COMMANDED}[st.mode]
     p[C.SP_RADIUS], p[C.SP_INERTIA], p[C.SP_UOFF] = st.drum_radius, st.drum_inertia, control_offset
+    p[C.SP_TAU] = st.speed_time_constant
     p[C.SP_NSCHED] = n
     p[C.SP_SCHED:C.SP_SCHED + n] = st.speed_times
     p[C.SP_SCHED + n:] = st.speed_values
@@ -108,7 +121,7 @@ def pack_station(st: StationParams, n_elements: int, state_offset: int, control_
 
 def station_initial(st: StationParams) -> np.ndarray:
     """The station block of an initial state (``SX_*``): nothing moved, no transfer, the schedule's speed at
-    t = 0 (or the drum's initial speed), no energy."""
+    t = 0 (or the drum's or commanded mode's initial speed, ``speed_values[0]``), no energy."""
     x = np.zeros(C.SX_SIZE)
     x[C.SX_SPEED] = st.speed(0.0) if st.mode == "prescribed" else float(st.speed_values[0])
     return x

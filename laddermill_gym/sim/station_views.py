@@ -4,8 +4,8 @@ assembly has no station returns empty views and raises on the station read-outs.
 
 Sign convention: V_c > 0 when the cable leaves the station on the veered (first, ascending) side and returns on
 the hauled (last, descending) side; the generator's mechanical power P = (T_first - T_last) V_c with a prescribed
-speed, (Q / r) V_c with a drum (Q the generator torque [N m], r the drum radius [m]); P > 0 is power delivered to
-the generator; the electrical power is the station's efficiency times P.
+or a commanded speed, (Q / r) V_c with a drum (Q the generator torque [N m], r the drum radius [m]); P > 0 is
+power delivered to the generator; the electrical power is the station's efficiency times P.
 """
 
 from __future__ import annotations
@@ -24,19 +24,24 @@ def station_state_name(j: int) -> str:
 
 
 def station_control_labels(asm) -> list[str]:
-    """Labels of the station's controls (the generator torque of a drum)."""
-    return ["generator_torque"] if asm.station is not None and asm.station.n_controls else []
+    """Labels of the station's controls (the generator torque of a drum, or the commanded cable speed)."""
+    if asm.station is None or not asm.station.n_controls:
+        return []
+    return ["generator_torque"] if asm.station.mode == "drum" else ["cable_speed_command"]
 
 
 def check_station_controls(asm, u: np.ndarray) -> None:
-    """Raise ValueError naming the value if the generator torque [N m] is outside the station's limits."""
+    """Raise ValueError naming the value if the station's control (generator torque [N m] or commanded speed [m/s])
+    is outside its limits."""
     st = asm.station
     if st is None or not st.n_controls:
         return
     q = float(u[-1])
-    lo, hi = st.torque_limits
+    name, field, unit = (("generator_torque", "torque_limits", "N m") if st.mode == "drum"
+                         else ("cable_speed_command", "speed_limits", "m/s"))
+    lo, hi = getattr(st, field)
     if not np.isfinite(q) or q < lo or q > hi:
-        raise ValueError(f"controls: generator_torque = {q!r} N m is outside station.torque_limits [{lo}, {hi}] N m")
+        raise ValueError(f"controls: {name} = {q!r} {unit} is outside station.{field} [{lo}, {hi}] {unit}")
 
 
 class StationViews:
@@ -53,7 +58,7 @@ class StationViews:
         """Cable speed V_c [m/s] now (the schedule's value, or the drum's state)."""
         st = self.assembly.station
         block = self._station()
-        return st.speed(self.t) if st.mode == "prescribed" else float(block[SX_SPEED])
+        return st.speed(self.t) if st.mode == "prescribed" else float(block[SX_SPEED])  # drum, commanded: a state
 
     def cable_paid_out(self) -> float:
         """Cable moved through the station since t = 0 [m]: transfers x l0 + s - s(0) (s(0) = 0)."""
@@ -82,7 +87,7 @@ class StationViews:
         ten = self.tensions()
         dt = float(ten[0] - ten[-1])
         v = self.cable_speed()
-        mech = dt * v if st.mode == "prescribed" else float(self.controls[-1]) / st.drum_radius * v
+        mech = float(self.controls[-1]) / st.drum_radius * v if st.mode == "drum" else dt * v
         return {"tension_difference_N": dt, "cable_speed_m_s": v, "mechanical_W": mech,
                 "electrical_W": st.efficiency * mech}
 
