@@ -113,6 +113,21 @@ def read_wind(s: Section) -> WindParams:
     return w
 
 
+def read_integrator(it: Section) -> IntegratorSettings:
+    """The ``integrator:`` section: method, step, tolerances, exploding-state limits and the ground."""
+    if it.data.get("ground_contact") is False:  # YAML 1.1 reads a bare `off` as false
+        it.data["ground_contact"] = "off"
+    settings = IntegratorSettings(method=it.text("method", choices=("rk4", "dp54")), dt=it.number("dt", positive=True),
+                                  rtol=it.number("rtol", 1e-8, positive=True),
+                                  atol=it.number("atol", 1e-10, positive=True),
+                                  max_speed=it.number("max_speed", positive=True),
+                                  max_rate=it.number("max_rate", positive=True),
+                                  ground_height=it.number("ground_height", 0.0),
+                                  ground_contact=it.text("ground_contact", "stop", choices=("stop", "flag", "off")))
+    it.done()
+    return settings
+
+
 def read_station(s: Section, piece: float) -> StationParams:
     """The moving cable's ground station (``station:`` section; ``model/station.py``), errors naming the field."""
     mode = s.text("mode", "prescribed", choices=MODES)
@@ -233,17 +248,7 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
                        elevator_up=math.radians(ini.number("elevator_up_deg", 0.0)),
                        elevator_down=math.radians(ini.number("elevator_down_deg", 0.0)))
     ini.done()
-    it = s.section("integrator")
-    if it.data.get("ground_contact") is False:  # YAML 1.1 reads a bare `off` as false
-        it.data["ground_contact"] = "off"
-    settings = IntegratorSettings(method=it.text("method", choices=("rk4", "dp54")), dt=it.number("dt", positive=True),
-                                  rtol=it.number("rtol", 1e-8, positive=True),
-                                  atol=it.number("atol", 1e-10, positive=True),
-                                  max_speed=it.number("max_speed", positive=True),
-                                  max_rate=it.number("max_rate", positive=True),
-                                  ground_height=it.number("ground_height", 0.0),
-                                  ground_contact=it.text("ground_contact", "stop", choices=("stop", "flag", "off")))
-    it.done()
+    settings = read_integrator(s.section("integrator"))
     s.done()
     # overrides
     dim = dim if dimension is None else int(dimension)
