@@ -232,6 +232,31 @@ def test_power_term_is_the_generators_power(torque):
     assert terms == pytest.approx(float(np.sum([info[k] for k in info if k.startswith("reward_")])))
 
 
+def test_cable_speed_command_action():
+    """With cable_speed_command the last action sets the commanded speed V_op + a V_op; the cable speed follows the
+    first-order lag V_cmd + (V_op - V_cmd) exp(-t / tau) (closed form, tau = 1 s) and the power term is
+    eta (T_first - T_last) V_c from the simulator's tensions; both station actions at once are refused."""
+    env = LadderMillEnv(**small(disturbances=[], termination=WIDE, cable_speed_command=True))
+    env.reset(seed=0)
+    task = env.task
+    v0 = task.op.cable_speed
+    assert task.actions.layout.names[-1] == "cable speed command [m/s]"
+    a = np.zeros(env.action_space.shape, np.float32)
+    a[-1] = 0.5
+    for _ in range(5):
+        _, _, _, _, info = env.step(a)
+    sim = task.simulator(0)
+    cmd = 1.5 * v0
+    t = 5 * task.control_dt
+    assert sim.controls[-1] == pytest.approx(cmd, rel=1e-6)
+    assert info["cable_speed_m_s"] == pytest.approx(cmd + (v0 - cmd) * np.exp(-t / 1.0), rel=1e-9)
+    ten = sim.tensions()
+    st = sim.assembly.station
+    assert info["power_W"] == pytest.approx(st.efficiency * (ten[0] - ten[-1]) * info["cable_speed_m_s"], rel=1e-9)
+    with pytest.raises(ValueError, match="choose one station action"):
+        LadderMillEnv(**small(generator_torque=True, cable_speed_command=True))
+
+
 def _constructed(clean: bool = True, **kw):
     env = LadderMillEnv(**small(disturbances=[], **kw))
     env.reset(seed=0)

@@ -9,7 +9,8 @@ Groups of slots share one command (``groups``): ``"per_slot"``, ``"all"``, ``"ha
 0 .. ceil(n/2) - 1, descending the rest), ``"bands"`` (each half split into ``n_bands`` bands of consecutive
 slots: height bands, 2 n_bands groups) or an explicit list of slot lists. Each group takes one entry per tail
 surface in ``surfaces`` (elevator, rudder, aileron, in that order); with ``generator_torque`` one last entry
-commands the drum's generator torque.
+commands the drum's generator torque or, with ``cable_speed_command``, the cable speed the generator's speed
+controller holds (Q_op or V_c at a = 0, the same linear law with its own half range).
 
 Mapping (a = 0 is the operating point, the paper's fixed tail settings): a surface of slot k is
 clip(u_op[k] + a half_range, limits), with half_range the half width of the wing's control limits (the scale of
@@ -59,8 +60,10 @@ class SlotActionMap:
     assembly : Assembly                       the env's (its station decides whether a torque control exists)
     groups : tuple of tuples of int           slots per group (:func:`resolve_slot_groups`)
     surfaces : tuple of str                   tail surfaces commanded, a subset of ("elevator", "rudder", "aileron")
-    u_op : ndarray (n_controls,)              operating-point controls [rad] (and the torque [N m] last, drum)
-    torque_half_range : float or None         torque per unit action [N m] (needs a drum station), None: no torque
+    u_op : ndarray (n_controls,)              operating-point controls [rad] (and the station's control last: the
+                                              drum's torque [N m] or the commanded cable speed [m/s])
+    torque_half_range : float or None         the station's control per unit action [N m or m/s] (needs a station
+                                              in mode 'drum' or 'commanded'), None: no station action
     """
 
     def __init__(self, assembly: Assembly, groups, surfaces, u_op: np.ndarray, torque_half_range: float | None):
@@ -79,8 +82,10 @@ class SlotActionMap:
         for g, members in enumerate(self.groups):
             self._group_of[list(members)] = g
         self.torque = torque_half_range is not None
-        if self.torque and (assembly.station is None or assembly.station.mode != "drum"):
-            raise ValueError("generator torque actions need the station in mode 'drum'")
+        if self.torque and (assembly.station is None or assembly.station.mode == "prescribed"):
+            raise ValueError("a station action needs the station in mode 'drum' (torque) or 'commanded' (speed)")
+        self.station_label = ("generator torque [N m]" if self.torque and assembly.station.mode == "drum"
+                              else "cable speed command [m/s]")
         self.torque_half_range = float(torque_half_range) if self.torque else 0.0
         self.n_surface_actions = len(self.groups) * len(self.surface_index)
         self.n_actions = self.n_surface_actions + int(self.torque)
@@ -98,7 +103,7 @@ class SlotActionMap:
                 low.append(max(self._lo[k, j], u[k, j] - self._half[k, j]))
                 high.append(min(self._hi[k, j], u[k, j] + self._half[k, j]))
         if self.torque:
-            names.append("generator torque [N m]")
+            names.append(self.station_label)
             low.append(self.u_op[-1] - self.torque_half_range)
             high.append(self.u_op[-1] + self.torque_half_range)
         return ActionLayout(names=tuple(names), low=np.array(low), high=np.array(high))

@@ -94,6 +94,8 @@ STATION_TABLE
 
     scene, scene_options (``load_scene`` overrides, e.g. ``{"n_wings": 11}``), control_dt [s], episode_time [s],
     groups, n_bands, surfaces, generator_torque, drum (:class:`~laddermill_gym.envs.laddermill.settings.DrumConfig`),
+    cable_speed_command (the last action commands the cable speed instead), speed
+    (:class:`~laddermill_gym.envs.laddermill.settings.SpeedCommandConfig`),
     operating_point, settle (:class:`~laddermill_gym.envs.laddermill.operating_point.SettleConfig`), initial_noise,
     disturbances, wind_dt [s], reward, termination, render_mode ("rgb_array" or "human").
 

@@ -75,3 +75,25 @@ class DrumConfig:
                 continue
             if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
                 raise ValueError(f"drum.{name} = {v!r}: must be a finite number > 0")
+
+
+@dataclass(frozen=True)
+class SpeedCommandConfig:
+    """The generator's speed controller when the cable speed is an action (``cable_speed_command=True``; station
+    mode 'commanded', ``model/station.py``: dV_c/dt = (V_cmd - V_c) / time_constant).
+
+    half_range [m/s]: commanded speed per unit normalised action (default: the operating point's V_c, so a in
+    [-1, 1] spans 0..2 V_c); time_constant [s]: the controller's (chosen: 1 s, fast against the mill's 35 s period
+    and slower than the 50 ms control period, so a command is a smooth change of speed).
+    """
+
+    half_range: float | None = None
+    time_constant: float = 1.0
+
+    def __post_init__(self):
+        for name in ("half_range", "time_constant"):
+            v = getattr(self, name)
+            if v is None and name == "half_range":
+                continue
+            if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+                raise ValueError(f"speed.{name} = {v!r}: must be a finite number > 0")

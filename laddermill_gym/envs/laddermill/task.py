@@ -40,6 +40,7 @@ from laddermill_gym.envs.laddermill.settings import (
     DrumConfig,
     InitialNoise,
     MillRewardConfig,
+    SpeedCommandConfig,
     TerminationConfig,
 )
 from laddermill_gym.envs.task import config_from
@@ -105,6 +106,7 @@ class MillTask:
     def __init__(self, n_copies: int = 1, scene: str = "laddermill", scene_options: dict | None = None,
                  control_dt: float = 0.05, episode_time: float = 120.0, groups="per_slot", n_bands: int = 4,
                  surfaces=CONTROL_NAMES, generator_torque: bool = False, drum=None,
+                 cable_speed_command: bool = False, speed=None,
                  operating_point: OperatingPoint | None = None, settle=None, initial_noise=None,
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
                  parallel: bool | None = None):
@@ -119,6 +121,9 @@ class MillTask:
         self.initial_noise = config_from(initial_noise, InitialNoise, "initial_noise")
         self.settle = config_from(settle, SettleConfig, "settle")
         self.drum = config_from(drum, DrumConfig, "drum")
+        self.speed = config_from(speed, SpeedCommandConfig, "speed")
+        if generator_torque and cable_speed_command:
+            raise ValueError("generator_torque and cable_speed_command: choose one station action")
         options = _scene_options(scene_options)
         self.scene = sc = mill_scene(str(scene), options, 3)
         if sc.settings.method != "rk4":
@@ -131,6 +136,7 @@ class MillTask:
         self.op = self._operating_point(operating_point, str(scene), options)
         self.p_ref = self.op.reference_power_W
         self.generator_torque = bool(generator_torque)
+        self.cable_speed_command = bool(cable_speed_command)
         asm = self._assembly()
         self.n_wings = n = asm.n_wings
         self.n_copies = B = int(n_copies)
@@ -144,7 +150,7 @@ class MillTask:
         self.ground = np.array([lay.piece_elements[0][0], lay.piece_elements[-1][-1]], dtype=np.int64)
         self._zero_nominal = np.zeros((n, 3))  # the kernel writes absolute positions; offsets: _compose
         self.actions = SlotActionMap(asm, resolve_slot_groups(groups, n, n_bands), surfaces, self.u_op,
-                                     self.torque_half_range if self.generator_torque else None)
+                                     self.station_half_range)
         self.n_actions = self.actions.n_actions
         self.obs_dim = N_OBS_PER_SLOT * n + N_STATION_OBS
         self.slot_obs = np.zeros((B, N_OBS_PER_SLOT * n))
@@ -184,7 +190,9 @@ class MillTask:
     def _assembly(self):
         """The scene's assembly with the station at the operating point's constant cable speed: a prescribed
         schedule held at V_c, or (``generator_torque``) a drum starting at V_c whose torque is the last control.
-        Sets ``u_op``, ``torque_op`` [N m] and ``torque_half_range`` [N m]."""
+        With ``cable_speed_command`` the station follows a commanded speed (mode 'commanded', V_c at a = 0).
+        Sets ``u_op``, ``torque_op`` [N m], ``torque_half_range`` [N m] and ``station_half_range`` (the station
+        action's unit, None without one)."""
         sc, op, d = self.scene, self.op, self.drum
         st = sc.assembly.station
         v = op.cable_speed
@@ -196,9 +204,17 @@ class MillTask:
             station = dataclasses.replace(st, mode="drum", speed_times=(0.0,), speed_values=(v,),
                                           drum_radius=d.radius, drum_inertia=d.inertia, torque_limits=(q_lo, q_hi))
             self.u_op = np.concatenate([op.controls, [self.torque_op]])
+            self.station_half_range = self.torque_half_range
+        elif self.cable_speed_command:
+            h = self.speed.half_range if self.speed.half_range is not None else v
+            station = dataclasses.replace(st, mode="commanded", speed_times=(0.0,), speed_values=(v,),
+                                          speed_time_constant=self.speed.time_constant, speed_limits=(v - h, v + h))
+            self.u_op = np.concatenate([op.controls, [v]])
+            self.station_half_range = h
         else:
             station = dataclasses.replace(st, mode="prescribed", speed_times=(0.0,), speed_values=(v,))
             self.u_op = np.array(op.controls, dtype=float)
+            self.station_half_range = None
         self.u_op.setflags(write=False)
         return dataclasses.replace(sc.assembly, station=station)
 
@@ -231,7 +247,7 @@ class MillTask:
         slots[:] = self.slot_obs.reshape(B, n, N_OBS_PER_SLOT)
         i = OBS_INDEX["dx"]
         slots[:, :, i: i + 3] -= nominal_positions(self.op, moved)
-        self.cable_speed[:] = x[:, self.xoff + SX_SPEED] if st.mode == "drum" else self.op.cable_speed
+        self.cable_speed[:] = x[:, self.xoff + SX_SPEED] if st.mode != "prescribed" else self.op.cable_speed
         dten = self.aux[:, AUX_GROUND_START] - self.aux[:, AUX_GROUND_END]
         if st.mode == "drum":
             self.mechanical_power[:] = self.batch.controls[:, -1] / st.drum_radius * self.cable_speed
