@@ -131,3 +131,34 @@ def test_run_episodes_records_until_each_copy_ends():
     assert res.lateral_m.shape == (2, 61, 1)
     np.testing.assert_allclose(res.lengths_s, 3.0, atol=1e-9)
     assert res.returns == pytest.approx(np.full(2, 60.0), rel=0.01)  # about 1 per step at trim power
+
+
+def test_laddermill_ppo_config_trains_a_few_steps(tmp_path, monkeypatch):
+    """configs/agents/ppo_laddermill.yaml is read strictly and trains through agents.train (an 11-wing mill with a
+    short settle, a few hundred steps): the policy's action space is the config's 8 bands x 2 surfaces."""
+    pytest.importorskip("stable_baselines3")
+    from agents.train import train
+    from laddermill_gym.control.rl_config import env_family, load_rl_config
+
+    mill = "laddermill_gym/LadderMill-v0"
+    data = yaml.safe_load(open("configs/agents/ppo_laddermill.yaml"))
+    data.update(n_envs=2, total_timesteps=128, checkpoint_every=64, eval={"every": 64, "episodes": 1})
+    data["env_kwargs"].update(episode_time=1.0, scene_options={"n_wings": 11}, settle={"max_time": 100.0},
+                              termination={"alpha_range_deg": [-180.0, 180.0], "max_abs_beta_deg": 90.0})
+    data["hyperparameters"].update(n_steps=32, batch_size=32, n_epochs=1)
+    p = tmp_path / "ppo_mill.yaml"
+    p.write_text(yaml.safe_dump(data))
+    cfg = load_rl_config(p)
+    assert env_family(mill) == "mill"
+    assert set(cfg.carried_env_kwargs()) >= {"groups", "n_bands", "surfaces", "scene_options", "settle"}
+    monkeypatch.setitem(ENV_IDS, mill, dict(ENV_IDS[mill], episode_time=0.5))
+    summary = train(cfg, tmp_path / "run")
+    assert summary["steps"] >= 128
+    from stable_baselines3 import PPO
+
+    model = PPO.load(tmp_path / "run" / "model.zip")
+    assert model.action_space.shape == (16,)
+    with pytest.raises(ConfigError, match="env_kwargs.action_mode"):
+        bad = dict(data, env_kwargs=dict(data["env_kwargs"], action_mode="tail"))
+        p.write_text(yaml.safe_dump(bad))
+        load_rl_config(p)

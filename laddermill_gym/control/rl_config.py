@@ -10,7 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from laddermill_gym.atmosphere.disturbances import disturbance_from_dict
-from laddermill_gym.envs import ENV_IDS
+from laddermill_gym.envs import ENV_IDS, env_arguments, task_class
 from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
 from laddermill_gym.envs.task import WingTask
 from laddermill_gym.model.configio import ConfigError, read_yaml
@@ -27,12 +27,24 @@ CRAFT_ENV_KWARGS: tuple[str, ...] = tuple(p for p in inspect.signature(Rotorcraf
 CARRIED_KWARGS: dict[str, tuple[str, ...]] = {
     "wing": ("action_mode", "groups", "control_dt", "physics_dt", "alpha_servo_tau", "scene_options"),
     "craft": ("craft", "collective", "control_dt", "physics_dt"),
+    "mill": ("scene", "scene_options", "control_dt", "groups", "n_bands", "surfaces", "generator_torque", "drum",
+             "cable_speed_command", "speed", "operating_point", "settle"),
 }
+
+
+def env_family(env_id: str) -> str:
+    """'craft' (Rotorcraft-v0), 'mill' (the moving-cable LadderMill-v0) or 'wing' (the fixed-cable wing scenes)."""
+    if "craft" in ENV_IDS[env_id]:
+        return "craft"
+    return "mill" if task_class(env_id).__name__ == "MillTask" else "wing"
 
 
 def env_kwargs_known(env_id: str) -> tuple[str, ...]:
     """The ``env_kwargs`` keys a config for the registered environment ``env_id`` may set."""
-    return CRAFT_ENV_KWARGS if "craft" in ENV_IDS[env_id] else ENV_KWARGS
+    family = env_family(env_id)
+    if family == "mill":
+        return tuple(a for a in env_arguments(env_id) if a != "disturbances")
+    return CRAFT_ENV_KWARGS if family == "craft" else ENV_KWARGS
 
 
 @dataclass(frozen=True)
@@ -100,7 +112,7 @@ class RLConfig:
 
     def carried_env_kwargs(self) -> dict[str, Any]:
         """The training's overrides of the arguments the evaluation takes over (:data:`CARRIED_KWARGS`)."""
-        keys = CARRIED_KWARGS["craft" if self.is_craft else "wing"]
+        keys = CARRIED_KWARGS[env_family(self.env_id)]
         return {k: v for k, v in self.env_kwargs.items() if k in keys}
 
 
