@@ -201,6 +201,19 @@ def vector_env(env_id: str, n: int, env_kwargs: dict):
     return gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **kw)
 
 
+def policy_env_kwargs(spec: str) -> dict:
+    """The control settings a trained policy was trained with (the ``CARRIED_KWARGS`` of the ``config.yaml`` in its
+    run folder: action groups, surfaces, model), so that its evaluation env has the policy's action and observation
+    layout; {} for a controller that is not a run folder or a model file in one."""
+    path = Path(spec)
+    folder = path if path.is_dir() else path.parent
+    if not (path.exists() and (folder / "config.yaml").is_file()):
+        return {}
+    from laddermill_gym.control.rl_config import load_rl_config
+
+    return load_rl_config(folder / "config.yaml").carried_env_kwargs()
+
+
 def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dict, out: Path,
              progress: bool = True) -> dict[str, EpisodeResults]:
     """Run every controller spec on ``episodes`` seeded episodes (seeds 0 .. episodes - 1) of ``env_id`` with
@@ -209,8 +222,9 @@ def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dic
 
     results = {}
     for spec in controllers:
-        ctrl = make_controller(spec, env_id, env_kwargs)
-        env = vector_env(env_id, episodes, env_kwargs)
+        kw = dict(env_kwargs, **policy_env_kwargs(spec))
+        ctrl = make_controller(spec, env_id, kw)
+        env = vector_env(env_id, episodes, kw)
         results[controller_label(spec)] = run_episodes(ctrl, env, progress=progress)
         env.close()
     write_tables(out, results)

@@ -158,6 +158,11 @@ def test_laddermill_ppo_config_trains_a_few_steps(tmp_path, monkeypatch):
 
     model = PPO.load(tmp_path / "run" / "model.zip")
     assert model.action_space.shape == (16,)
+    # the evaluation harness builds the policy's env layout from the run's config (11 wings, bands x 2 surfaces)
+    from agents.evaluate import evaluate
+
+    res = evaluate(mill, [str(tmp_path / "run")], 1, {"episode_time": 0.5}, tmp_path / "eval", progress=False)
+    assert len(res) == 1 and (tmp_path / "eval" / "summary.csv").is_file()
     with pytest.raises(ConfigError, match="env_kwargs.action_mode"):
         bad = dict(data, env_kwargs=dict(data["env_kwargs"], action_mode="tail"))
         p.write_text(yaml.safe_dump(bad))
