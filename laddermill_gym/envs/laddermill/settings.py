@@ -8,8 +8,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from laddermill_gym.envs.rotorcraft.settings import InitialNoise
-from laddermill_gym.envs.task import TerminationConfig, check_nonnegative_fields
+from laddermill_gym.envs.rotorcraft.settings import InitialNoise, RotorcraftRewardConfig
+from laddermill_gym.envs.task import TerminationConfig
 
 __all__ = ["MillRewardConfig", "DrumConfig", "InitialNoise", "TerminationConfig", "MILL_FAILURES"]
 
@@ -20,7 +20,7 @@ MILL_FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state
 
 
 @dataclass(frozen=True)
-class MillRewardConfig:
+class MillRewardConfig(RotorcraftRewardConfig):
     """Reward per control period: r = w_P P / P_ref - w_y S(dy) - w_w S(rates) - w_u S(effort) - failure_penalty.
 
     P [W] is the simulated generator's electrical power at the end of the control period: the station's
@@ -37,20 +37,7 @@ class MillRewardConfig:
     ``failure_penalty`` [-] is subtracted once, in the step that ends an episode by a physical failure.
     """
 
-    power_weight: float = 1.0
-    lateral_weight: float = 1.0
-    lateral_scale: float | None = None
-    rate_weight: float = 0.1
-    rate_scale: float = 0.5
-    effort_weight: float = 0.1
-    failure_penalty: float = 0.0
-
-    def __post_init__(self):
-        check_nonnegative_fields(self, "reward", optional=("lateral_scale",))
-        if self.rate_scale <= 0:
-            raise ValueError(f"reward.rate_scale = {self.rate_scale!r}: must be > 0 rad/s")
-        if self.lateral_scale is not None and self.lateral_scale <= 0:
-            raise ValueError(f"reward.lateral_scale = {self.lateral_scale!r}: must be > 0 m")
+    rate_scale: float = 0.5  # [rad/s] the fields, their checks and the other defaults are the rotorcraft's
 
 
 @dataclass(frozen=True)
