@@ -1,0 +1,192 @@
+"""Site wind readers: unit conversions and interpolation checked by hand, the shipped files' own published
+numbers (read here with the csv module), and bad files rejected naming the file, line and field."""
+
+from __future__ import annotations
+
+import csv
+import gzip
+import math
+
+import numpy as np
+import pytest
+
+from laddermill_gym.atmosphere.site_wind import SiteWindError, daily, read_profiles_csv
+from laddermill_gym.atmosphere.site_wind_formats import read_two_heights, read_wyoming
+from laddermill_gym.quasisteady.site_data import WIND_DIR, load_wind, shipped_wind
+
+CSV_TEXT = """# two profiles; the second in other heights
+time,height [km],speed [knot],direction [deg]
+2020-01-01T00:00,0.01,10,350
+2020-01-01T00:00,0.1,20,10
+2020-01-01T00:00,0.3,30,20
+2020-01-02T00:00,0.1,40,180
+2020-01-02T00:00,0.02,20,180
+"""
+
+
+def test_profiles_csv_units_grid_and_interpolation(tmp_path):
+    p = tmp_path / "profiles.csv"
+    p.write_text(CSV_TEXT)
+    w = read_profiles_csv(p, grid_step=5.0)
+    assert w.n == 2 and w.labels == ("2020-01-01T00:00", "2020-01-02T00:00")
+    assert w.weight == pytest.approx([0.5, 0.5])
+    kn = 1852.0 / 3600.0
+    assert w.at(10.0)[0] == pytest.approx(10 * kn, rel=1e-12) and w.at(100.0)[1] == pytest.approx(40 * kn)
+    # 55 m: halfway between 10 m (10 kn) and 100 m (20 kn) for the first profile; 20..100 m for the second
+    assert w.at(55.0)[0] == pytest.approx(15.0 * kn, rel=1e-5)
+    assert w.at(55.0)[1] == pytest.approx((20 + 35.0 / 80.0 * 20) * kn, rel=1e-5)
+    assert np.isnan(w.at(200.0)[1])  # above the second profile's top
+    assert w.at(300.0)[0] == pytest.approx(30.0 * kn, rel=1e-5)
+    # the direction turns through north, not through south: at 20 m (a height of the second profile) the first
+    # profile's direction is 1/9 of the way from 350 to 10 deg, through the unit vectors
+    j = int(np.flatnonzero(w.heights == 20.0)[0])
+    t = 10.0 / 90.0
+    a, b = math.radians(350.0), math.radians(10.0)
+    want = math.degrees(math.atan2((1 - t) * math.sin(a) + t * math.sin(b), (1 - t) * math.cos(a) + t * math.cos(b)))
+    assert w.direction[0, j] == pytest.approx(want % 360.0, rel=1e-12)
+    assert 350.0 < w.direction[0, j] < 360.0
+    with pytest.raises(ValueError, match="outside"):
+        w.at(400.0)
+
+
+def test_profiles_csv_gzip_and_semicolons(tmp_path):
+    p = tmp_path / "p.csv.gz"
+    with gzip.open(p, "wt") as fh:
+        fh.write("time;height [m];speed [m/s]\nA;10;3\nA;50;7\n")
+    w = read_profiles_csv(p)
+    assert w.at(20.0) == pytest.approx([4.0], rel=1e-12)
+
+
+@pytest.mark.parametrize("text, where", [
+    ("time,height [yd],speed [m/s]\nA,10,3\nA,20,4\n", ["line 1", "height [yd]", "unit 'yd'"]),
+    ("time,height [m],speed [m/s]\nA,10,3\nA,20,fast\n", ["line 3", "'speed [m/s]'", "'fast'"]),
+    ("time,height [m],speed [m/s]\nA,10,3\nA,20,-4\n", ["line 3", "'speed [m/s]'", "'-4'"]),
+    ("time,height [m],speed [m/s]\nA,10,3\nA,10,4\n", ["line 3", "'height [m]'", "twice"]),
+    ("time,height [m]\nA,10\n", ["line 1", "speed"]),
+    ("time,height [m],speed [m/s]\nA,10,3,9\n", ["line 2", "4 fields"]),
+])
+def test_bad_profiles_csv_named(tmp_path, text, where):
+    p = tmp_path / "bad.csv"
+    p.write_text(text)
+    with pytest.raises(SiteWindError) as err:
+        read_profiles_csv(p)
+    msg = str(err.value)
+    assert str(p) in msg
+    for part in where:
+        assert part in msg
+
+
+# Two soundings typed by hand in the archive's TEXT:LIST layout (7-character columns), one with HTML tags
+WYOMING = """<HTML><TITLE>University of Wyoming - Radiosonde Data</TITLE>
+<H2>06260 EHDB De Bilt Observations at 00Z 01 Jan 2007</H2>
+<PRE>
+-----------------------------------------------------------------------------
+   PRES   HGHT   TEMP   DWPT   RELH   MIXR   DRCT   SKNT   THTA   THTE   THTV
+    hPa     m      C      C      %    g/kg    deg   knot     K      K      K
+-----------------------------------------------------------------------------
+ 1000.0     94
+ 1011.0      4    9.8    8.3     90   6.72    220     10  281.5  299.9  282.6
+  997.0    120    8.6    7.0     90   6.20    230     20  281.4  298.3  282.5
+  950.0    520    6.0    4.1     88   5.40    250     40  282.7  297.8  283.7
+</PRE><H3>Station information and sounding indices</H3><PRE>
+                         Station identifier: EHDB
+                          Station elevation: 4.0
+</PRE>
+<H2>06260 EHDB De Bilt Observations at 12Z 01 Jan 2007</H2>
+<PRE>
+-----------------------------------------------------------------------------
+   PRES   HGHT   TEMP   DWPT   RELH   MIXR   DRCT   SKNT   THTA   THTE   THTV
+    hPa     m      C      C      %    g/kg    deg   knot     K      K      K
+-----------------------------------------------------------------------------
+ 1012.0      4   10.0    8.0     87   6.67    200      6  281.6  299.8  282.7
+  990.0    200    8.4    6.6     88   6.00    210     16  281.9  298.6  283.0
+</PRE><H3>Station information and sounding indices</H3><PRE>
+                          Station elevation: 4.0
+</PRE>
+"""
+
+
+def test_wyoming_soundings(tmp_path):
+    p = tmp_path / "debilt.html"
+    p.write_text(WYOMING)
+    w = read_wyoming(p)
+    kn = 1852.0 / 3600.0
+    assert w.labels == ("2007-01-01T00:00Z", "2007-01-01T12:00Z")
+    assert w.heights[0] == 0.0  # the surface level, 4 m above sea level
+    assert w.at(0.0) == pytest.approx([10 * kn, 6 * kn], rel=1e-9)
+    # 116 m above ground is the 997 hPa level of the first sounding; the second: 6 kn at 0 m, 16 kn at 196 m
+    assert w.at(116.0)[0] == pytest.approx(20 * kn, rel=1e-9)
+    assert w.at(116.0)[1] == pytest.approx((6 + 10 * 116 / 196) * kn, rel=1e-9)
+    assert w.at(316.0)[0] == pytest.approx((20 + 20 * 200 / 400) * kn, rel=1e-9)
+    assert np.isnan(w.at(316.0)[1])
+    # one sounding a day: daily() averages the two
+    d = daily(w)
+    assert d.n == 1 and d.at(0.0)[0] == pytest.approx(8 * kn, rel=1e-9)
+
+
+def test_wyoming_bad_files_named(tmp_path):
+    p = tmp_path / "bad.txt"
+    p.write_text(WYOMING.replace("    230     20", "    230     2x"))
+    with pytest.raises(SiteWindError, match=r"line 10, field 'SKNT' = '2x'"):
+        read_wyoming(p)
+    q = tmp_path / "none.txt"
+    q.write_text("PRES HGHT\n1000 100\n")
+    with pytest.raises(SiteWindError, match="line 1: no sounding title"):
+        read_wyoming(q)
+
+
+def _rows(name, delimiter):
+    path = WIND_DIR / name
+    opener = gzip.open(path, "rt") if name.endswith(".gz") else open(path, newline="")
+    with opener as fh:
+        return list(csv.reader(fh, delimiter=delimiter))
+
+
+def test_shipped_cabauw_clusters():
+    w = shipped_wind("cabauw")
+    freq = _rows("cabauw_8clusters_frequency.csv", ";")[1:]
+    assert w.n == len(freq) == 800
+    assert w.weight.sum() == pytest.approx(sum(float(r[4]) for r in freq) / 100, rel=1e-12)
+    assert w.weight.sum() == pytest.approx(0.566, abs=5e-4)  # the README's 56.6 %
+    # cluster 3, bin 40: speed at 10 m = bin centre x |(u, v)| at 10 m of cluster 3's shape
+    row = next(r for r in freq if r[0] == "3" and r[1] == "40")
+    shape = _rows("cabauw_8clusters_profile3.csv", ";")[1]
+    v100 = 0.5 * (float(row[2]) + float(row[3]))
+    k = w.labels.index("cluster 3 bin 40")
+    assert w.at(10.0)[k] == pytest.approx(v100 * math.hypot(float(shape[1]), float(shape[2])), rel=1e-12)
+    assert w.at(100.0)[k] == pytest.approx(v100, rel=1e-12)
+
+
+def test_shipped_two_heights_extrapolation_labelled():
+    w = shipped_wind("weather2010")
+    rows = _rows("windpowerlib_weather_2010.csv.gz", ",")
+    v10, v80 = float(rows[2][3]), float(rows[2][6])
+    assert rows[1][3] == "10" and rows[1][6] == "80"
+    alpha = math.log(v80 / v10) / math.log(8.0)
+    assert w.n == 8760
+    assert w.at(80.0)[0] == pytest.approx(v80, rel=1e-12)
+    assert w.at(45.0)[0] == pytest.approx(v10 + (v80 - v10) * 35 / 70, rel=1e-12)
+    assert w.at(200.0)[0] == pytest.approx(v80 * (200 / 80) ** alpha, rel=1e-12)
+    assert w.measured_top == 80.0 and w.is_extrapolated(200.0) and not w.is_extrapolated(80.0)
+    assert "power law above 80 m" in w.extrapolation
+    d = shipped_wind("weather2010-daily")
+    assert d.n == 365
+    day1 = [float(r[6]) for r in rows[2:] if r[0].startswith("2010-01-01")]
+    assert len(day1) == 24 and d.at(80.0)[0] == pytest.approx(np.mean(day1), rel=1e-12)
+
+
+def test_two_heights_bad_value_named(tmp_path):
+    p = tmp_path / "weather.csv"
+    p.write_text("variable_name,wind_speed,wind_speed\nheight,10,80\n2010-01-01 00:00:00,3,5\n2010-01-01 01:00:00,"
+                 "x,5\n")
+    with pytest.raises(SiteWindError, match=r"line 4, field 'wind_speed' at 10 m = 'x'"):
+        read_two_heights(p)
+
+
+def test_load_wind_detects_formats(tmp_path):
+    p = tmp_path / "debilt.txt"
+    p.write_text(WYOMING)
+    assert load_wind(str(p)).labels[0] == "2007-01-01T00:00Z"
+    assert load_wind("daily:" + str(p)).n == 1
+    with pytest.raises(ValueError, match="unknown shipped"):
+        shipped_wind("nowhere")
