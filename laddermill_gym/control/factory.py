@@ -20,6 +20,7 @@ __all__ = ["make_controller", "DEFAULT_LQR_CONFIGS"]
 DEFAULT_LQR_CONFIGS: dict[str, Path] = {
     "laddermill_gym/TetheredWing-v0": CONFIG_DIR / "agents" / "lqr_tethered_wing.yaml",
     "laddermill_gym/LadderChain-v0": CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml",
+    "laddermill_gym/LadderMill-v0": CONFIG_DIR / "agents" / "lqr_laddermill.yaml",
 }
 
 
@@ -59,27 +60,36 @@ def _craft_controller(spec: str, kw: dict) -> Controller:
 
 
 def _mill_controller(spec: str, kw: dict) -> Controller:
-    """Open loop for LadderMill-v0: the zero normalised action, which holds the operating point's tail settings
-    (the paper's fixed settings) and, with a drum, its generator torque. Needs the scene only, not the operating
-    point."""
-    if spec != "open_loop":
-        raise ValueError(f"controller {spec!r}: LadderMill-v0 has no LQR design yet (open_loop or a trained policy)")
-    import numpy as np
+    """LadderMill-v0: open loop (the zero normalised action, which holds the operating point's tail settings, the
+    paper's fixed settings, and with a drum its generator torque; needs the scene only) or the lateral LQR
+    (``control.mill_lqr``: centralised, frozen phase, on the env's own mill; needs the operating point)."""
+    if spec == "open_loop":
+        import numpy as np
 
-    from laddermill_gym.control.open_loop import OpenLoopController
-    from laddermill_gym.envs.laddermill.actions import action_count
-    from laddermill_gym.envs.laddermill.observation import N_OBS_PER_SLOT, N_STATION_OBS
-    from laddermill_gym.envs.laddermill.operating_point import mill_scene
-    from laddermill_gym.model.params import CONTROL_NAMES
+        from laddermill_gym.control.open_loop import OpenLoopController
+        from laddermill_gym.envs.laddermill.actions import action_count
+        from laddermill_gym.envs.laddermill.observation import N_OBS_PER_SLOT, N_STATION_OBS
+        from laddermill_gym.envs.laddermill.operating_point import mill_scene
+        from laddermill_gym.model.params import CONTROL_NAMES
 
-    options = dict(kw.get("scene_options") or {})
-    options.pop("dimension", None)
-    n = mill_scene(str(kw["scene"]), tuple(sorted(options.items())), 3).assembly.n_wings
-    n_act = action_count(n, kw.get("groups", "per_slot"), kw.get("n_bands", 4), kw.get("surfaces", CONTROL_NAMES),
-                         kw.get("generator_torque", False))
-    ctrl = OpenLoopController(np.zeros(n_act), np.zeros(n_act), np.ones(n_act))
-    ctrl.obs_dim = N_OBS_PER_SLOT * n + N_STATION_OBS  # its default assumes the wing layout
-    return ctrl
+        options = dict(kw.get("scene_options") or {})
+        options.pop("dimension", None)
+        n = mill_scene(str(kw["scene"]), tuple(sorted(options.items())), 3).assembly.n_wings
+        n_act = action_count(n, kw.get("groups", "per_slot"), kw.get("n_bands", 4),
+                             kw.get("surfaces", CONTROL_NAMES), kw.get("generator_torque", False))
+        ctrl = OpenLoopController(np.zeros(n_act), np.zeros(n_act), np.ones(n_act))
+        ctrl.obs_dim = N_OBS_PER_SLOT * n + N_STATION_OBS  # its default assumes the wing layout
+        return ctrl
+    from laddermill_gym.control.lqr_config import load_lqr_config
+    from laddermill_gym.control.mill_lqr import design_mill_lqr
+    from laddermill_gym.envs.laddermill.task import MillTask
+
+    path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_LQR_CONFIGS["laddermill_gym/LadderMill-v0"]
+    cfg = load_lqr_config(path)
+    if cfg.scene != kw["scene"]:
+        raise ValueError(f"{path}: scene = {cfg.scene!r} differs from the environment's scene {kw['scene']!r}")
+    task = MillTask(1, **{k: v for k, v in kw.items() if k != "parallel"})
+    return design_mill_lqr(cfg, task).controller(task)
 
 
 def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> Controller:

@@ -142,9 +142,13 @@ def minimal_from_full(asm: Assembly, x: np.ndarray) -> np.ndarray:
     return np.concatenate([z.reshape(-1), x[B3_SIZE * nw: B3_SIZE * nw + N3_SIZE * nn]])
 
 
-def full_from_minimal(asm: Assembly, z: np.ndarray) -> np.ndarray:
-    """Full simulator state (unit quaternions, body velocities) of minimal coordinates ``z``."""
+def full_from_minimal(asm: Assembly, z: np.ndarray, tail: np.ndarray | None = None) -> np.ndarray:
+    """Full simulator state (unit quaternions, body velocities) of minimal coordinates ``z``.
+
+    ``tail``: the state entries after the bodies (a moving cable's station block ``SX_*``, held as given; the
+    minimal coordinates cover the bodies only). Required when the assembly has a station."""
     _check_3d(asm)
+    tail = _station_tail(asm, tail)
     z = np.asarray(z, dtype=float)
     nw, nn = asm.n_wings, asm.n_nodes
     zw = z[: _WM * nw].reshape(nw, _WM)
@@ -154,7 +158,18 @@ def full_from_minimal(asm: Assembly, z: np.ndarray) -> np.ndarray:
     w[:, B3_QUAT: B3_QUAT + 4] = _quaternions(zw[:, 3:6])
     w[:, B3_VEL: B3_VEL + 3] = np.einsum("nji,nj->ni", R, zw[:, 6:9])  # R^T v_global
     w[:, B3_RATE: B3_RATE + 3] = zw[:, 9:12]
-    return np.concatenate([w.reshape(-1), z[_WM * nw: _WM * nw + _NM * nn]])
+    return np.concatenate([w.reshape(-1), z[_WM * nw: _WM * nw + _NM * nn], tail])
+
+
+def _station_tail(asm: Assembly, tail: np.ndarray | None) -> np.ndarray:
+    """The state block after the bodies (empty without a station); ValueError if a station's is missing."""
+    n_tail = asm.state_size - asm.body_state_size
+    if n_tail == 0:
+        return np.zeros(0)
+    if tail is None or np.shape(tail) != (n_tail,):
+        raise ValueError(f"the assembly has a station: its {n_tail} state entries after the bodies must be given "
+                         f"as tail (got {None if tail is None else np.shape(tail)})")
+    return np.asarray(tail, dtype=float)
 
 
 def minimal_derivative(asm: Assembly, x: np.ndarray, dx: np.ndarray) -> np.ndarray:
@@ -188,7 +203,7 @@ def minimal_derivative(asm: Assembly, x: np.ndarray, dx: np.ndarray) -> np.ndarr
     return np.concatenate([dz.reshape(-1), dx[B3_SIZE * nw: B3_SIZE * nw + N3_SIZE * nn]])
 
 
-def minimal_rhs(sim: Simulator, rhs=None):
+def minimal_rhs(sim: Simulator, rhs=None, tail: np.ndarray | None = None):
     """The dynamics in minimal coordinates, ``f(t, z, u, params) -> dz/dt`` (python-control ``updfcn``).
 
     Parameters
@@ -197,13 +212,16 @@ def minimal_rhs(sim: Simulator, rhs=None):
         A 3D simulator (its compiled right-hand side is wrapped).
     rhs : callable, optional
         ``rhs(t, x, u) -> dx`` to wrap instead of ``sim.rhs`` (e.g. the numpy reference, for tests).
+    tail : ndarray, optional
+        A moving cable's station state (held fixed: the bodies' dynamics at a frozen cable phase and speed).
     """
     asm = sim.assembly
     _check_3d(asm)
     full_rhs = sim.rhs if rhs is None else rhs
+    tail = _station_tail(asm, tail)
 
     def updfcn(t, z, u, params=None):
-        x = full_from_minimal(asm, z)
+        x = full_from_minimal(asm, z, tail)
         return minimal_derivative(asm, x, full_rhs(t, x, np.asarray(u, dtype=float).reshape(-1)))
 
     return updfcn
@@ -214,11 +232,12 @@ def _state_labels(asm: Assembly) -> list[str]:
     return labels + [f"node{j}_{n}" for j in range(asm.n_nodes) for n in NODE_MINIMAL_NAMES]
 
 
-def minimal_system(sim: Simulator, name: str = "laddermill") -> control.NonlinearIOSystem:
+def minimal_system(sim: Simulator, name: str = "laddermill", tail: np.ndarray | None = None
+                   ) -> control.NonlinearIOSystem:
     """``control.nlsys`` of the minimal-coordinate dynamics with labelled states and inputs; the outputs
-    are the states."""
+    are the states (``tail``: see :func:`minimal_rhs`)."""
     asm = sim.assembly
-    return control.nlsys(minimal_rhs(sim), None, states=_state_labels(asm), inputs=sim.control_labels,
+    return control.nlsys(minimal_rhs(sim, tail=tail), None, states=_state_labels(asm), inputs=sim.control_labels,
                          outputs=_state_labels(asm), name=name)
 
 
@@ -270,7 +289,8 @@ def linearize(sim: Simulator, x0: np.ndarray, u0: np.ndarray, t: float = 0.0, ep
     Linearization
     """
     asm = sim.assembly
-    sys = minimal_system(sim)
+    x0 = np.asarray(x0, dtype=float)
+    sys = minimal_system(sim, tail=x0[asm.body_state_size:])
     z0 = minimal_from_full(asm, x0)
     u0 = np.asarray(u0, dtype=float).reshape(-1)
     lin = control.linearize(sys, z0, u0, t=t, eps=eps)
@@ -345,7 +365,8 @@ def wing_lateral_blocks(sim: Simulator, x0: np.ndarray, u0: np.ndarray, t: float
     B_blocks : ndarray (n_wings, 6, 2)
     """
     asm = sim.assembly
-    f = minimal_rhs(sim)
+    x0 = np.asarray(x0, dtype=float)
+    f = minimal_rhs(sim, tail=x0[asm.body_state_size:])
     z0 = minimal_from_full(asm, x0)
     u0 = np.asarray(u0, dtype=float).reshape(-1)
     nw = asm.n_wings
