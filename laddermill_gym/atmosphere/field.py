@@ -20,12 +20,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import numpy as np
 
 from laddermill_gym.kernels import contract as C
 
-__all__ = ["GustGrid", "WindField", "pack_wind_field"]
+__all__ = ["GridGeometry", "GustGrid", "WindField", "pack_wind_field", "sum_grids", "union_geometry"]
 
 
 def _finite(name: str, value, positive: bool = False) -> float:
@@ -79,6 +80,11 @@ class GustGrid:
         for name in ("dxi", "dh"):
             object.__setattr__(self, name, _finite(f"GustGrid.{name}", getattr(self, name), positive=True))
 
+    def geometry(self) -> GridGeometry:
+        """The grid's nodes, advection and heading as a :class:`GridGeometry`."""
+        nx, nh = self.values.shape[:2]
+        return GridGeometry(self.xi0, self.dxi, nx, self.h0, self.dh, nh, self.advection, self.heading)
+
     @property
     def size(self) -> int:
         """Number of packed floats (n_xi n_h 3)."""
@@ -92,6 +98,87 @@ class GustGrid:
         gp[C.GP_ADVECTION] = self.advection
         gp[C.GP_EX], gp[C.GP_EY] = -math.cos(self.heading), -math.sin(self.heading)
         return gp
+
+
+class GridGeometry(NamedTuple):
+    """The nodes of a gust grid: xi = xi0 + i dxi (i < n_xi), h = h0 + j dh (j < n_h) [m], with its advection
+    speed [m/s] and heading [rad] (see :class:`GustGrid`). ``floats`` = n_xi n_h 3, ``bytes`` = 8 floats."""
+
+    xi0: float
+    dxi: float
+    n_xi: int
+    h0: float
+    dh: float
+    n_h: int
+    advection: float
+    heading: float
+
+    @property
+    def floats(self) -> int:
+        return int(self.n_xi * self.n_h * C.GV_SIZE)
+
+    @property
+    def bytes(self) -> int:
+        return 8 * self.floats
+
+
+def union_geometry(geoms) -> GridGeometry | None:
+    """One grid covering all of ``geoms`` (their union of extents at their finest spacings); None for none.
+    Raises ValueError if their advection speeds or headings differ (frozen fields moving differently cannot
+    share one grid)."""
+    geoms = [g for g in geoms if g is not None]
+    if not geoms:
+        return None
+    g0 = geoms[0]
+    for g in geoms[1:]:
+        if not (math.isclose(g.advection, g0.advection) and math.isclose(g.heading, g0.heading)):
+            raise ValueError(f"gust grids advected at {g0.advection} m/s, heading {g0.heading} rad and at "
+                             f"{g.advection} m/s, heading {g.heading} rad cannot be combined: give every spatial "
+                             "disturbance the same wind_speed and heading")
+    if len(geoms) == 1:
+        return g0
+    dxi, dh = min(g.dxi for g in geoms), min(g.dh for g in geoms)
+    x0, h0 = min(g.xi0 for g in geoms), min(g.h0 for g in geoms)
+    x1 = max(g.xi0 + (g.n_xi - 1) * g.dxi for g in geoms)
+    h1 = max(g.h0 + (g.n_h - 1) * g.dh for g in geoms)
+    return GridGeometry(x0, dxi, int(math.ceil((x1 - x0) / dxi - 1e-9)) + 1, h0, dh,
+                        int(math.ceil((h1 - h0) / dh - 1e-9)) + 1, g0.advection, g0.heading)
+
+
+def _interp_axis(u: np.ndarray, n: int):
+    """Cell index, fraction and next index of fractional grid coordinates u on an axis of n nodes, held at
+    the edges (as the kernels' ``_cell``)."""
+    if n < 2:
+        z = np.zeros(u.shape, dtype=np.int64)
+        return z, np.zeros(u.shape), z
+    uc = np.clip(u, 0.0, n - 1)
+    k = np.minimum(np.floor(uc).astype(np.int64), n - 2)
+    return k, uc - k, k + 1
+
+
+def sum_grids(grids, geom: GridGeometry | None = None) -> GustGrid | None:
+    """The sum of gust grids sampled (bilinearly, held at their edges, as the kernels do) on the nodes of
+    ``geom`` (default: :func:`union_geometry` of theirs); a single grid on its own geometry is returned as it
+    is. None for no grids."""
+    grids = [g for g in grids if g is not None]
+    if not grids:
+        return None
+    if geom is None:
+        geom = union_geometry([g.geometry() for g in grids])
+    if len(grids) == 1 and grids[0].geometry() == geom:
+        return grids[0]
+    xi = geom.xi0 + geom.dxi * np.arange(geom.n_xi)
+    h = geom.h0 + geom.dh * np.arange(geom.n_h)
+    out = np.zeros((geom.n_xi, geom.n_h, C.GV_SIZE))
+    for g in grids:
+        nx, nh = g.values.shape[:2]
+        i, a, i1 = _interp_axis((xi - g.xi0) / g.dxi, nx)
+        j, b, j1 = _interp_axis((h - g.h0) / g.dh, nh)
+        a, b = a[:, None, None], b[None, :, None]
+        v = g.values
+        out += ((1.0 - a) * ((1.0 - b) * v[i][:, j] + b * v[i][:, j1])
+                + a * ((1.0 - b) * v[i1][:, j] + b * v[i1][:, j1]))
+    return GustGrid(out, geom.xi0, geom.dxi, geom.h0, geom.dh, geom.advection, geom.heading)
 
 
 @dataclass(frozen=True, eq=False)

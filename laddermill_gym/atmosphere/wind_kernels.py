@@ -142,18 +142,27 @@ def _cell(u, n):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
-def _grid_sample(xi, h, gp, gv, c):
-    """Component c of the gust grid at (xi, h) [m] by bilinear interpolation, and its derivatives along xi and
-    h [1/s] (zero across a held edge). A grid of one row or column is constant along that axis."""
+def _grid_cell(xi, h, gp):
+    """The cell of (xi, h) [m]: flat offsets of its four corners' first component (k00, k10, k01, k11), the
+    fractions (a along xi, b along h) and whether xi and h lie inside the grid (else held at the edge). A grid
+    of one row or column is constant along that axis. Computed once for all three components."""
     nx, nh = int(gp[GP_NXI]), int(gp[GP_NH])
     i, a, in_x = _cell((xi - gp[GP_XI0]) / gp[GP_DXI], nx)
     j, b, in_h = _cell((h - gp[GP_H0]) / gp[GP_DH], nh)
     i1 = i + 1 if nx > 1 else i
     j1 = j + 1 if nh > 1 else j
-    f00 = gv[(i * nh + j) * GV_SIZE + c]
-    f10 = gv[(i1 * nh + j) * GV_SIZE + c]
-    f01 = gv[(i * nh + j1) * GV_SIZE + c]
-    f11 = gv[(i1 * nh + j1) * GV_SIZE + c]
+    return ((i * nh + j) * GV_SIZE, (i1 * nh + j) * GV_SIZE, (i * nh + j1) * GV_SIZE, (i1 * nh + j1) * GV_SIZE,
+            a, b, in_x, in_h)
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, c):
+    """Component c of the gust grid in the cell of :func:`_grid_cell` by bilinear interpolation, and its
+    derivatives along xi and h [1/s] (zero across a held edge)."""
+    f00 = gv[k00 + c]
+    f10 = gv[k10 + c]
+    f01 = gv[k01 + c]
+    f11 = gv[k11 + c]
     f = (1.0 - a) * ((1.0 - b) * f00 + b * f01) + a * ((1.0 - b) * f10 + b * f11)
     dfx = ((1.0 - b) * (f10 - f00) + b * (f11 - f01)) / gp[GP_DXI] if in_x else 0.0
     dfh = ((1.0 - a) * (f01 - f00) + a * (f11 - f10)) / gp[GP_DH] if in_h else 0.0
@@ -167,10 +176,10 @@ def gust_at(x, y, z, t, gp, gv):
         return 0.0, 0.0, 0.0
     ex, ey = gp[GP_EX], gp[GP_EY]
     xi = x * ex + y * ey - gp[GP_ADVECTION] * t
-    h = -z
-    u, _, _ = _grid_sample(xi, h, gp, gv, GV_U)
-    v, _, _ = _grid_sample(xi, h, gp, gv, GV_V)
-    w, _, _ = _grid_sample(xi, h, gp, gv, GV_W)
+    k00, k10, k01, k11, a, b, in_x, in_h = _grid_cell(xi, -z, gp)
+    u, _, _ = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_U)
+    v, _, _ = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_V)
+    w, _, _ = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_W)
     return u * ex - v * ey, u * ey + v * ex, -w
 
 
@@ -182,12 +191,12 @@ def gust_rate(x, y, z, vx, vy, vz, t, gp, gv):
         return 0.0, 0.0, 0.0
     ex, ey = gp[GP_EX], gp[GP_EY]
     xi = x * ex + y * ey - gp[GP_ADVECTION] * t
-    h = -z
     xid = vx * ex + vy * ey - gp[GP_ADVECTION]
     hd = -vz
-    _, ux, uh = _grid_sample(xi, h, gp, gv, GV_U)
-    _, vx_, vh = _grid_sample(xi, h, gp, gv, GV_V)
-    _, wx, wh = _grid_sample(xi, h, gp, gv, GV_W)
+    k00, k10, k01, k11, a, b, in_x, in_h = _grid_cell(xi, -z, gp)
+    _, ux, uh = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_U)
+    _, vx_, vh = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_V)
+    _, wx, wh = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_W)
     du, dv, dw = ux * xid + uh * hd, vx_ * xid + vh * hd, wx * xid + wh * hd
     return du * ex - dv * ey, du * ey + dv * ex, -dw
 

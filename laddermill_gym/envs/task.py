@@ -14,7 +14,8 @@ from functools import lru_cache
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, sample_wind_field
+from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
+from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry, sample_wind_field
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.envs.actions import ActionMap, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
@@ -179,8 +180,9 @@ class WingTask:
         First-order servo time constant [s] of the alpha mode (0 = ideal).
     episode_time : float
         Episode length [s]; ``truncated`` when it is reached.
-    disturbances : sequence of Disturbance
-        Wind disturbances composed per episode (default: the paper's 0.01 rad direction step at 1 s).
+    disturbances : Disturbance, mapping, a sequence of them, or YAML text
+        Wind disturbances composed per episode (default: the paper's 0.01 rad direction step at 1 s); mappings
+        as :mod:`laddermill_gym.atmosphere.disturbance_spec` reads them.
     wind_dt : float
         Spacing [s] of the sampled wind modulation.
     reward, termination : dict or RewardConfig / TerminationConfig
@@ -215,10 +217,8 @@ class WingTask:
         self.episode_time = float(episode_time)
         self.n_steps_max = int(round(episode_time / control_dt))
         self.wind_dt = float(wind_dt)
-        self.disturbances = (DirectionStep(),) if disturbances is None else tuple(disturbances)
-        for d in self.disturbances:
-            if not isinstance(d, Disturbance):
-                raise ValueError(f"disturbances: {d!r} is not a laddermill_gym.atmosphere.disturbances.Disturbance")
+        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
+        geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid
         self.reward_config = config_from(reward, RewardConfig, "reward")
         self.termination_config = config_from(termination, TerminationConfig, "termination")
         self.x_trim, self.u_trim = x_trim, u_trim
@@ -228,7 +228,8 @@ class WingTask:
         self.parallel = self.n_copies >= 32 if parallel is None else bool(parallel)
         self._kernel = step_observe_batch if self.parallel else step_observe_serial
         n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
-        self.batch = BatchSimulator(asm, self.n_copies, sc.settings, n_modulation=max(2, n_mod))
+        self.batch = BatchSimulator(asm, self.n_copies, sc.settings, n_modulation=max(2, n_mod),
+                                    n_grid=0 if geom is None else geom.floats)
         B = self.n_copies
         self.nominal = np.ascontiguousarray(x_trim[: B3_SIZE * nw].reshape(nw, B3_SIZE)[:, B3_POS: B3_POS + 3])
         lay = sc.layout

@@ -15,7 +15,8 @@ from collections import namedtuple
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, disturbance_from_dict, sample_wind_field
+from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
+from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, grid_geometry, sample_wind_field
 from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.envs.rotorcraft.observation import OBS_P, OBS_R, OBS_Y, craft_observation_bounds
 from laddermill_gym.envs.rotorcraft.settings import (
@@ -71,16 +72,7 @@ def _positive(name: str, v, unit: str) -> float:
 
 
 def _disturbances(disturbances) -> tuple[Disturbance, ...]:
-    if disturbances is None:
-        return (DirectionStep(),)
-    out = []
-    for i, d in enumerate(disturbances):
-        if isinstance(d, dict):
-            d = disturbance_from_dict(d, f"disturbances[{i}]")
-        if not isinstance(d, Disturbance):
-            raise ValueError(f"disturbances[{i}] = {d!r}: not a Disturbance or its config dict")
-        out.append(d)
-    return tuple(out)
+    return parse_disturbances(disturbances, (DirectionStep(),))
 
 
 class CraftTask:
@@ -169,9 +161,10 @@ class CraftTask:
         self.sim = CraftSimulator(c.config, c.assembly, c.layout, self.x_trim, self.u_trim)
         self.scene = CraftScene(c.assembly, c.config.name)
         n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
+        geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid
         self.batch = BatchSimulator(c.assembly, B, c.config.settings, n_modulation=max(2, n_mod),
                                     vehicle=self.sim.make_vehicle(), n_controls=self.sim.n_controls,
-                                    vehicle_sizes=self.sim.vehicle_sizes())
+                                    vehicle_sizes=self.sim.vehicle_sizes(), n_grid=0 if geom is None else geom.floats)
         self.batch.states[:] = self.x_trim
         self.batch.controls[:] = self.u_trim
         self._kernel = craft_step_observe_batch if self.parallel else craft_step_observe_serial

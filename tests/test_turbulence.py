@@ -1,0 +1,180 @@
+"""Turbulence fields (laddermill_gym/atmosphere/turbulence.py) against the models' closed forms.
+
+Oracles, written here from the standards' formulas (not from the code's helpers): IEC 61400-1 ed. 3 NTM / ETM
+standard deviations (6.3.1.3, 6.3.2.3) and Kaimal ratios (Table B.1); the Kaimal spectrum; the IEC coherence
+exp(-12 sqrt((f r / V)^2 + (0.12 r / L_c)^2)), L_c = 8.1 Lambda_1; the exact discrete Dryden update's
+autocorrelation a^k, a = exp(-dx / L) (../shared/design/oracles.md), the Dryden lateral autocorrelation
+(1 - r / (2 L)) exp(-r / L) and the von Karman longitudinal autocorrelation 2^(2/3) / Gamma(1/3) (r / a)^(1/3)
+K_(1/3)(r / a), a = 1.339 L; their integral scales; MIL-F-8785C intensities at altitude.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import quad
+from scipy.special import gamma, kv
+
+from laddermill_gym.atmosphere.disturbances import sample_wind_field
+from laddermill_gym.atmosphere.field import pack_wind_field
+from laddermill_gym.atmosphere.turbulence import Turbulence
+from laddermill_gym.atmosphere.wind_kernels import gust_at
+
+FT = 0.3048
+L_HIGH = 1750 * FT  # MIL-F-8785C scale above 2000 ft [m]
+
+
+def fields(turb: Turbulence, t_end: float, n: int, seed0: int = 0):
+    """n fields' values (n, n_xi, n_h, 3) drawn with seeds seed0, seed0 + 1, ..."""
+    return np.array([turb.gust_grid(t_end, np.random.default_rng(seed0 + i)).values for i in range(n)])
+
+
+def circular_autocorrelation(x: np.ndarray, lags: np.ndarray) -> np.ndarray:
+    """Mean over records (axis 0) of the circular autocovariance along axis 1, at the given lags."""
+    f = np.fft.rfft(x, axis=1)
+    acov = np.fft.irfft(np.abs(f) ** 2, n=x.shape[1], axis=1) / x.shape[1]
+    return acov.mean(axis=0)[lags]
+
+
+@pytest.mark.parametrize("model, sigma1", [
+    ("NTM", 0.16 * (0.75 * 10.0 + 5.6)),  # class A, V_hub 10 m/s
+    ("ETM", 2.0 * 0.16 * (0.072 * (0.2 * 50.0 / 2.0 + 3.0) * (10.0 / 2.0 - 4.0) + 10.0)),  # class IA
+])
+def test_iec_variances_per_component_and_height(model, sigma1):
+    turb = Turbulence(model=model, wind_class="IA", wind_speed=10.0, hub_height=100.0, heights=(50.0, 150.0),
+                      dh=50.0, along_wind=(0.0, 1.0), dxi=4.0)
+    v = fields(turb, 600.0, 60)  # 60 ten-minute records
+    var = v.var(axis=1).mean(axis=0)  # (n_h, 3)
+    for k, ratio in enumerate((1.0, 0.8, 0.5)):
+        np.testing.assert_allclose(var[:, k], (ratio * sigma1) ** 2, rtol=0.05)
+
+
+def test_kaimal_spectrum_of_the_longitudinal_component():
+    """Averaged periodogram against (Kaimal S scaled to the record's sigma^2), in octave bands."""
+    U, lam = 10.0, 42.0
+    sigma = 0.16 * (0.75 * U + 5.6)
+    turb = Turbulence(model="NTM", wind_class="IA", wind_speed=U, heights=(100.0, 101.0), dh=1.0,
+                      along_wind=(0.0, 1.0), dxi=4.0)
+    v = fields(turb, 1200.0, 80)[:, :, 0, 0]  # (80, n_xi)
+    n, dx = v.shape[1], turb.dxi
+    kappa = np.arange(1, n // 2) / (n * dx)
+    period = (2.0 * np.abs(np.fft.rfft(v, axis=1)[:, 1: n // 2]) ** 2 / n ** 2).mean(axis=0) / (kappa[0])
+    L1 = 8.1 * lam
+    S = 4.0 * sigma ** 2 * L1 / (1.0 + 6.0 * kappa * L1) ** (5.0 / 3.0)
+    S *= sigma ** 2 / (S.sum() * kappa[0])  # the record's variance is sigma^2
+    edges = kappa[0] * 2.0 ** np.arange(1, int(np.log2(kappa.size)))
+    for lo, hi in zip(edges[:-1], edges[1:], strict=True):
+        band = (kappa >= lo) & (kappa < hi)
+        assert period[band].mean() == pytest.approx(S[band].mean(), rel=0.15 if band.sum() > 8 else 0.35)
+
+
+@pytest.mark.parametrize("r", [10.0, 40.0])
+def test_iec_coherence_between_two_heights(r):
+    U, Lc = 10.0, 8.1 * 42.0
+    turb = Turbulence(model="NTM", wind_speed=U, heights=(100.0, 100.0 + r), dh=r, along_wind=(0.0, 1.0), dxi=4.0)
+    u = fields(turb, 600.0, 150)[..., 0]  # (150, n_xi, 2)
+    n = u.shape[1]
+    F = np.fft.rfft(u, axis=1)
+    for k, half in ((1, 0), (3, 0), (8, 2), (20, 3), (50, 5)):  # neighbouring modes pooled at higher k
+        ks = np.arange(k - half, k + half + 1)
+        a, b = F[:, ks, 0], F[:, ks, 1]
+        coh = abs(np.sum(a * np.conj(b))) / math.sqrt(np.sum(abs(a) ** 2) * np.sum(abs(b) ** 2))
+        f = ks / (n * turb.dxi) * U  # temporal frequencies of the modes [Hz]
+        expected = np.mean(np.exp(-12.0 * np.sqrt((f * r / U) ** 2 + (0.12 * r / Lc) ** 2)))
+        assert coh == pytest.approx(expected, abs=0.06)
+
+
+def test_dryden_autocorrelations_and_integral_scale_at_altitude():
+    """Above 2000 ft: isotropic, L = 1750 ft; u follows the exact discrete Dryden update (lag-k correlation
+    a^k), v and w have (1 - r / 2L) exp(-r / L)."""
+    turb = Turbulence(model="Dryden", severity="moderate", wind_speed=10.0, heights=(1000.0, 1001.0), dh=1.0,
+                      along_wind=(0.0, 1.0), dxi=10.0)
+    v = fields(turb, 16000.0, 60)[:, :, 0, :]  # records of 300 L: the missing mean biases R by about 2 L / 300 L
+    sigma2 = v.var(axis=1).mean(axis=0)
+    sigma_table = np.interp(1000.0 / FT, [500, 1750, 3750, 7500], [8.6, 9.6, 10.6, 10.1]) * FT  # 1e-3 exceedance
+    np.testing.assert_allclose(np.sqrt(sigma2), sigma_table, rtol=0.03)
+    lags = np.array([1, 5, 20, 50, 100])
+    r = lags * turb.dxi
+    a = math.exp(-turb.dxi / L_HIGH)
+    np.testing.assert_allclose(circular_autocorrelation(v[..., 0], lags) / sigma2[0], a ** lags, atol=0.05)
+    lateral = (1.0 - r / (2.0 * L_HIGH)) * np.exp(-r / L_HIGH)
+    for k in (1, 2):
+        np.testing.assert_allclose(circular_autocorrelation(v[..., k], lags) / sigma2[k], lateral, atol=0.05)
+    # integral scale of u: int_0^5L R / sigma^2 dr = L (1 - exp(-5))
+    m = int(5 * L_HIGH / turb.dxi)
+    rho = circular_autocorrelation(v[..., 0], np.arange(m + 1)) / sigma2[0]
+    integral = turb.dxi * (rho.sum() - 0.5 * (rho[0] + rho[-1]))
+    assert integral == pytest.approx(L_HIGH * (1.0 - math.exp(-5.0)), rel=0.1)
+
+
+def test_von_karman_longitudinal_autocorrelation_and_integral_scale():
+    turb = Turbulence(model="VonKarman", severity="light", wind_speed=10.0, heights=(1000.0, 1001.0), dh=1.0,
+                      along_wind=(0.0, 1.0), dxi=10.0)
+    u = fields(turb, 3000.0, 80, seed0=100)[:, :, 0, 0]
+    s2 = u.var(axis=1).mean()
+    a = 1.339 * L_HIGH
+
+    def rho(r):
+        return 2.0 ** (2.0 / 3.0) / gamma(1.0 / 3.0) * (r / a) ** (1.0 / 3.0) * kv(1.0 / 3.0, r / a)
+
+    lags = np.array([2, 10, 40, 100])
+    np.testing.assert_allclose(circular_autocorrelation(u, lags) / s2, rho(lags * turb.dxi), atol=0.05)
+    m = int(3 * L_HIGH / turb.dxi)
+    est = circular_autocorrelation(u, np.arange(m + 1)) / s2
+    integral = turb.dxi * (est.sum() - 0.5 * (est[0] + est[-1]))
+    assert integral == pytest.approx(quad(rho, 1e-12, m * turb.dxi)[0], rel=0.1)
+
+
+def test_mil_low_altitude_intensities():
+    """Below 1000 ft: sigma_w = 0.1 W20, sigma_u = sigma_v = sigma_w / (0.177 + 0.000823 h)^0.4 (h in ft)."""
+    h = 60.0
+    hf = h / FT
+    sw = 0.1 * 30.0 * 1852.0 / 3600.0  # moderate: W20 = 30 kt
+    su = sw / (0.177 + 0.000823 * hf) ** 0.4
+    turb = Turbulence(model="Dryden", severity="moderate", wind_speed=10.0, heights=(h, h + 1.0), dh=1.0,
+                      along_wind=(0.0, 1.0), dxi=2.0)
+    v = fields(turb, 1200.0, 40, seed0=7)[:, :, 0, :]
+    np.testing.assert_allclose(np.sqrt(v.var(axis=1).mean(axis=0)), [su, su, sw], rtol=0.05)
+
+
+def test_replayable_from_the_seed_and_sampled_by_the_kernels():
+    turb = Turbulence(model="NTM", heights=(0.0, 200.0), dh=20.0, along_wind=(-100.0, 100.0))
+    f1 = sample_wind_field([turb], 30.0, 0.1, np.random.default_rng(5))
+    f2 = sample_wind_field([turb], 30.0, 0.1, np.random.default_rng(5))
+    f3 = sample_wind_field([turb], 30.0, 0.1, np.random.default_rng(6))
+    np.testing.assert_array_equal(f1.grid.values, f2.grid.values)
+    assert not np.array_equal(f1.grid.values, f3.grid.values)
+    # the kernel reads the grid node at xi = p . e - U t (heading 0: e = -x), h = -z
+    g = f1.grid
+    _, _, _, gp, gv = pack_wind_field(f1)
+    i, j, t = 37, 4, 2.0
+    xi, h = g.xi0 + i * g.dxi, g.h0 + j * g.dh
+    x = -(xi + g.advection * t)
+    u, v, w = g.values[i, j]
+    np.testing.assert_allclose(gust_at(x, 3.0, -h, t, gp, gv), (-u, -v, -w), rtol=1e-12, atol=1e-12)
+
+
+def test_memory_of_a_field_for_the_3500_m_chain_over_600_s():
+    """24 bytes per node: n_xi = (span + U T + 2 dxi) / dxi (+1, even), n_h = (h_top - h_bottom) / dh + 1."""
+    turb = Turbulence(model="NTM", wind_speed=13.5, heights=(0.0, 3600.0), dh=25.0, along_wind=(-4000.0, 500.0),
+                      dxi=10.0)
+    g = turb.grid_geometry(600.0)
+    n_xi = math.ceil((4500.0 + 13.5 * 600.0 + 2 * 10.0) / 10.0) + 1
+    n_xi += n_xi % 2
+    assert (g.n_xi, g.n_h) == (n_xi, 145)
+    assert g.bytes == 24 * n_xi * 145 < 5e6
+    assert turb.gust_grid(600.0, np.random.default_rng(0)).values.nbytes == g.bytes
+
+
+@pytest.mark.parametrize("kw, text", [
+    ({"model": "Kolmogorov"}, "Turbulence.model"),
+    ({"heights": (100.0, 10.0)}, "Turbulence.heights"),
+    ({"dxi": 0.0}, "Turbulence.dxi"),
+    ({"wind_class": "IVA"}, "Turbulence.wind_class"),
+    ({"model": "Dryden", "severity": "extreme"}, "Turbulence.severity"),
+])
+def test_bad_parameters_name_the_field(kw, text):
+    with pytest.raises(ValueError, match=text):
+        Turbulence(**kw)
