@@ -15,7 +15,7 @@ SHIPPED = {
     "cabauw": "Cabauw (NL) 8 clustered profiles x 100 bins of the 100 m speed, 10-600 m, frequency weights "
               "(Schelbergen et al. 2020; MIT)",
     "weather2010": "hourly wind 2010 at 10 m and 80 m (windpowerlib example data; MIT); power-law extrapolation "
-                   "above 80 m",
+                   "from 80 m up to 600 m",
     "weather2010-daily": "the same, daily mean profiles (one state per day, as Lansdorp et al. 2008)",
 }
 
@@ -26,7 +26,9 @@ def shipped_wind(name: str) -> SiteWind:
         return read_clusters([WIND_DIR / f"cabauw_8clusters_profile{k}.csv" for k in range(1, 9)],
                              WIND_DIR / "cabauw_8clusters_frequency.csv")
     if name in ("weather2010", "weather2010-daily"):
-        wind = read_two_heights(WIND_DIR / "windpowerlib_weather_2010.csv.gz")
+        # extrapolated up to 600 m only: the Cabauw data's top and the altitudes pumping systems use; a power law
+        # fitted at 10 and 80 m says little about the wind higher up
+        wind = read_two_heights(WIND_DIR / "windpowerlib_weather_2010.csv.gz", top=600.0)
         return daily(wind) if name.endswith("daily") else wind
     raise ValueError(f"unknown shipped wind data {name!r}; known: {sorted(SHIPPED)}")
 

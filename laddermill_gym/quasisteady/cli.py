@@ -1,0 +1,171 @@
+"""``laddermill site``: optimise a pumping laddermill for a site's wind (Lansdorp et al. 2008, eqs. 16-20) and
+write Tables 1-2 beside the paper's, Figs. 10-20 and the turbine comparison (also ``python -m
+laddermill_gym.quasisteady.cli``)."""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import json
+from pathlib import Path
+
+import numpy as np
+from tqdm import tqdm
+
+from laddermill_gym.quasisteady import site_outputs as so
+from laddermill_gym.quasisteady.site_data import SHIPPED, load_wind
+from laddermill_gym.quasisteady.site_optimise import TABLE1, TABLE2, altitude_angle_grid, operate, optimise, sweep
+
+SWEEPS = {  # Figs. 15-18: parameter, values, unit
+    "kite_glide": (np.array([5.0, 7.0, 10.0, 13.0, 16.0]), "-"),
+    "reel_in_speed": (np.array([4.0, 8.0, 12.0, 16.7, 25.0]), "m/s"),
+    "reel_length": (np.array([100.0, 200.0, 300.0, 450.0, 600.0]), "m"),
+    "reel_in_tension_ratio": (np.array([0.01, 0.02, 0.05, 0.1, 0.2]), "-"),
+}
+
+
+def _eval_spec(spec: str) -> str:
+    """The states a design is run through (Figs. 19-20, capacity factor): the hourly data behind daily means."""
+    if spec == "weather2010-daily":
+        return "weather2010"
+    return spec[len("daily:"):] if spec.startswith("daily:") else spec
+
+
+def _tag(spec: str) -> str:
+    """A file-name part for a data set: the shipped name, or the file's stem."""
+    daily = spec.startswith("daily:")
+    name = spec[len("daily:"):] if daily else spec
+    name = name if name in SHIPPED else Path(name).name.split(".")[0]
+    return ("daily_" if daily else "") + name
+
+
+def _note(wind, r) -> str:
+    if wind.is_extrapolated(r.design.h):
+        return (f"wind at {r.design.h:.0f} m is an extrapolation ({wind.extrapolation}); measured up to "
+                f"{wind.measured_top:g} m")
+    return "; ".join(wind.notes)
+
+
+def _run_case(case, spec, wind, out, quiet):
+    r = optimise(case, wind)
+    stem = f"{case.name}_{_tag(spec)}"
+    files = [so.plot_design(r, wind.weight, wind.labels, out / f"{stem}_figs10-13.png",
+                            f"{case.name} on {spec}: h {r.design.h:.0f} m, S {r.design.S:.0f} m^2")]
+    ev = load_wind(_eval_spec(spec))
+    w_ev = ev.at(r.design.h)
+    ok = np.isfinite(w_ev)
+    runs = {f"f <= {lab}": operate(case, r.design, w_ev[ok], fm)[:2] for lab, fm in (("1/3", 1 / 3), ("1/2", 0.5))}
+    files.append(so.plot_operation(runs, ev.weight[ok], out / f"{stem}_figs19-20.png",
+                                   f"{case.name} design run through {_eval_spec(spec)}"))
+    if not quiet:
+        print(f"  {case.name} on {spec}: {r.states} states, {r.evaluations} inner solves, {r.wall_time:.2f} s, "
+              f"feasible {r.feasible}")
+    return r, ev, w_ev[ok], ev.weight[ok], files
+
+
+def _turbine(case, r, spec, w_ev, p_ev, ev, hub, turbine, out):
+    from laddermill_gym.quasisteady import turbine as tb
+
+    P, *_ = operate(case, r.design, w_ev, 0.5)
+    name = turbine if turbine != "auto" else tb.nearest_turbine(float(np.max(P)))
+    ty = tb.turbine_yield(ev, name, hub)
+    lm = tb.laddermill_yield(f"laddermill {case.name} (f <= 1/2)", P, p_ev, ty.rated_power, r.design.h,
+                             ev.is_extrapolated(r.design.h))
+    path = so.plot_yields([lm, ty], out / f"turbine_{_tag(spec)}.png",
+                          f"same rated power {ty.rated_power / 1e6:.2f} MW on {_eval_spec(spec)} (* extrapolated)")
+    return [lm, ty], path, float(np.max(P))
+
+
+def run(args) -> int:
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    base = {"table1": dataclasses.replace(TABLE1, k1=args.k1, power_target=args.power_mw * 1e6),
+            "table2": dataclasses.replace(TABLE2, power_target=args.power_mw * 1e6)}
+    tables, record, files, yields = {c: {} for c in args.case}, {}, [], []
+    for spec in args.wind:
+        wind = load_wind(spec, args.format)
+        print(f"{spec}: {wind.n} wind states, {wind.heights[0]:g}-{wind.heights[-1]:g} m ({wind.source})")
+        for cname in args.case:
+            case = base[cname]
+            r, ev, w_ev, p_ev, f = _run_case(case, spec, wind, out, args.quiet)
+            files += f
+            tables[cname][spec] = (r, wind.weight, _note(wind, r))
+            record[f"{cname}/{spec}"] = {"design": dataclasses.asdict(r.design), "feasible": r.feasible,
+                                         "mean_power_W": r.solution.mean_power,
+                                         "mean_tension_N": r.solution.mean_tension, "F_max_N": r.solution.f_max,
+                                         "values": so.design_values(r, wind.weight), "wall_time_s": r.wall_time,
+                                         "inner_solves": r.evaluations, "states": r.states}
+            if cname == args.case[-1]:
+                speeds = np.linspace(3.0, 25.0, 45)
+                files.append(so.plot_models(so.model_power_curves(case, r.design, speeds), speeds,
+                                            out / f"models_{_tag(spec)}.png",
+                                            f"{cname} design on {spec}: Lansdorp vs Schmehl quasi-steady model"))
+                if not args.no_turbine:
+                    ys, path, peak = _turbine(case, r, spec, w_ev, p_ev, ev, args.hub_height, args.turbine, out)
+                    yields.append((spec, ys, peak))
+                    files.append(path)
+        if args.sweeps:
+            files += _sweeps(base[args.case[0]], spec, wind, out, args.sweep_states, args.quiet)
+    text = []
+    for cname, res in tables.items():
+        text += [f"## {cname} ({'eq. 16' if base[cname].cost == 'eq16' else 'eq. 20'})", "", so.table_markdown(cname,
+                                                                                                                res)]
+    if yields:
+        text += ["## Capacity factor beside a wind turbine of the same rated power", "",
+                 "| machine | rated [MW] | height [m] | mean power [MW] | capacity factor [%] | energy [GWh/yr] |",
+                 "|---|---|---|---|---|---|"]
+        for spec, ys, peak in yields:
+            text += [y.row() for y in ys] + [f"| (data: {_eval_spec(spec)}; laddermill peak {peak / 1e6:.2f} MW; "
+                                             f"time outside the data counts as no power) | | | | | |"]
+    (out / "tables.md").write_text("\n".join(text) + "\n")
+    record["yields"] = {spec: [dataclasses.asdict(y) for y in ys] for spec, ys, _ in yields}
+    (out / "results.json").write_text(json.dumps(record, indent=1, default=float))
+    print("\n".join(text))
+    print("wrote", out / "tables.md", out / "results.json", *files, sep="\n  ")
+    return 0
+
+
+def _sweeps(case, spec, wind, out, n_states, quiet):
+    sub = wind.subset(slice(None, None, max(1, wind.n // n_states)))
+    sub = dataclasses.replace(sub, weight=sub.weight / sub.weight.sum() * wind.weight.sum())
+    hs, thetas = np.linspace(200.0, 600.0, 9), np.radians(np.linspace(45.0, 80.0, 8))
+    hs = hs[hs <= wind.heights[-1]]
+    total = hs.size * thetas.size + sum(v.size for v, _ in SWEEPS.values())
+    with tqdm(total=total, desc=f"sensitivity on {sub.n} states", disable=quiet) as bar:
+        grid = altitude_angle_grid(case, sub, hs, thetas, bar)
+        runs = {k: (v, sweep(case, sub, k, v, bar), u) for k, (v, u) in SWEEPS.items()}
+    tag = _tag(spec)
+    return [so.plot_altitude_angle(hs, thetas, grid, out / f"fig14_{tag}.png",
+                                   f"Fig. 14 on {sub.n} states of {spec} ({case.name})"),
+            so.plot_sweeps(runs, out / f"figs15-18_{tag}.png", f"Figs. 15-18 on {sub.n} states of {spec}")]
+
+
+def add_parser(sub) -> argparse.ArgumentParser:
+    p = sub.add_parser("site", help="optimise a pumping laddermill for a site's wind (Lansdorp et al. 2008)",
+                       description=__doc__)
+    p.add_argument("--wind", nargs="+", default=["weather2010-daily", "cabauw"],
+                   help=f"shipped data {sorted(SHIPPED)} or wind files ('daily:FILE' for daily means)")
+    p.add_argument("--format", default="auto", choices=("auto", "csv", "wyoming", "two-heights"))
+    p.add_argument("--case", nargs="+", default=["table1", "table2"], choices=("table1", "table2"))
+    p.add_argument("--power-mw", type=float, default=1.0, help="design mean power P_d [MW] (eq. 19)")
+    p.add_argument("--k1", type=float, default=TABLE1.k1, help="kite-area weight of eq. 16 [N/m^2]")
+    p.add_argument("--sweeps", action="store_true", help="also the sensitivity studies (Figs. 14-18)")
+    p.add_argument("--sweep-states", type=int, default=120, help="states used by the sweeps (a subset, as the paper)")
+    p.add_argument("--no-turbine", action="store_true", help="skip the windpowerlib turbine comparison")
+    p.add_argument("--turbine", default="auto", help="windpowerlib turbine type, or 'auto' (nearest rated power)")
+    p.add_argument("--hub-height", type=float, default=80.0, help="turbine hub height [m]")
+    p.add_argument("--out", default="runs/site", help="output folder")
+    p.add_argument("--quiet", action="store_true")
+    p.set_defaults(func=run)
+    return p
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="laddermill")
+    add_parser(parser.add_subparsers(dest="command", required=True))
+    args = parser.parse_args(["site", *(argv if argv is not None else __import__("sys").argv[1:])])
+    return args.func(args)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
