@@ -12,7 +12,7 @@ from numba import njit
 
 from laddermill_gym.kernels.dispatch import model_check, model_rhs
 
-OK, SINGULAR, NONFINITE, LIMIT, GROUND, STALLED = 0, 1, 2, 3, 4, 5
+OK, SINGULAR, NONFINITE, LIMIT, GROUND, STALLED, BUDGET = 0, 1, 2, 3, 4, 5, 6
 #: DP5(4) gives up (STALLED) when its step falls below this fraction of max(1 s, |t|): the error control is then
 #: chasing a discontinuity or a stiff blow-up and would spin for ever.
 H_MIN_REL = 1e-12
@@ -101,7 +101,7 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
         return SINGULAR, acc, rej, h, t
     while t < t_end:
         if acc + rej >= max_steps:
-            return LIMIT, acc, rej, h, t
+            return BUDGET, acc, rej, h, t
         last = False
         if t + h >= t_end:
             h = t_end - t

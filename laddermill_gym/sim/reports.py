@@ -17,6 +17,7 @@ from laddermill_gym.kernels.contract import (
     B2_W,
     B2_Z,
     B3_POS,
+    B3_QUAT,
     B3_RATE,
     B3_VEL,
     LIM_GROUND,
@@ -28,6 +29,7 @@ from laddermill_gym.kernels.contract import (
     N3_VEL,
 )
 from laddermill_gym.kernels.integrate import (
+    BUDGET,
     GROUND,
     LIMIT,
     NONFINITE,
@@ -42,7 +44,8 @@ from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
 #: Ground-contact modes of ``IntegratorSettings.ground_contact``.
 GROUND_MODES: tuple[str, ...] = ("stop", "flag", "off")
 _KIND = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit exceeded",
-         STALLED: "DP5(4) step size collapsed below 1e-12 max(1 s, t)"}
+         STALLED: "DP5(4) step size collapsed below 1e-12 max(1 s, t)",
+         BUDGET: "DP5(4) used up its budget of steps (1e7 per step(), 1e8 per advance_to) before the end time"}
 #: Bodies named at most in one report.
 _MAX_NAMED = 4
 
@@ -125,6 +128,21 @@ def _limit_culprits(sim, x: np.ndarray) -> list[str]:
     out += [f"wing {k} angular rate {wr[k]:.4g} rad/s > {s.max_rate:g} rad/s" for k in np.flatnonzero(wr > s.max_rate)]
     out += [f"node {j} speed {ns[j]:.4g} m/s > {s.max_speed:g} m/s" for j in np.flatnonzero(ns > s.max_speed)]
     return out
+
+
+def state_problems(sim, x: np.ndarray) -> list[str]:
+    """What makes the (finite) state x unfit to start from: wing quaternions of zero or overflowing norm (3D), and
+    bodies over the speed or rate limit, each with the body and the value; empty if none."""
+    asm = sim.assembly
+    out = []
+    if asm.dim == 3:
+        w, _ = _blocks(asm, x)
+        q = w[:, B3_QUAT: B3_QUAT + 4]
+        scale = np.max(np.abs(q), axis=1)
+        norm = scale * np.linalg.norm(q / np.where(scale > 0, scale, 1.0)[:, None], axis=1)
+        out += [f"wing {k} quaternion norm {norm[k]:.4g} (must be between 1e-8 and 1e8; it is renormalised)"
+                for k in np.flatnonzero(~((norm > 1e-8) & (norm < 1e8)))]
+    return out + _limit_culprits(sim, x)
 
 
 def _rk4_trial(sim, h: float) -> np.ndarray | None:

@@ -40,7 +40,7 @@ from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 from laddermill_gym.model.states import euler_from_quaternion
-from laddermill_gym.sim.reports import GROUND_MODES, body_heights, diagnose, failure_message
+from laddermill_gym.sim.reports import GROUND_MODES, body_heights, diagnose, failure_message, state_problems
 from laddermill_gym.sim.station_views import (
     StationViews,
     check_station_controls,
@@ -72,6 +72,12 @@ class SimulationError(RuntimeError):
     cable node reached the ground with ``ground_contact`` "stop" (the time, the body and its height)."""
 
 
+#: DP5(4) step budgets: one ``step()`` (a few physics steps) and one ``advance_to`` call
+STEP_MAX_STEPS, ADVANCE_MAX_STEPS = 10_000_000, 100_000_000
+#: Integrators a simulator runs: fixed-step classical Runge-Kutta and adaptive Dormand-Prince 5(4).
+INTEGRATOR_METHODS: tuple[str, ...] = ("rk4", "dp54")
+
+
 @dataclass(frozen=True)
 class IntegratorSettings:
     """Integrator choice and safety limits.
@@ -94,6 +100,14 @@ class IntegratorSettings:
     ground_contact: str = "stop"
 
     def __post_init__(self):
+        if self.method not in INTEGRATOR_METHODS:
+            raise ValueError(f"IntegratorSettings.method = {self.method!r}: must be one of "
+                             f"{', '.join(repr(m) for m in INTEGRATOR_METHODS)}")
+        for name, unit in (("dt", "s"), ("rtol", "-"), ("atol", "state units"), ("max_speed", "m/s"),
+                           ("max_rate", "rad/s")):
+            v = getattr(self, name)
+            if isinstance(v, bool) or not isinstance(v, (int, float, np.number)) or not 0.0 < v < np.inf:
+                raise ValueError(f"IntegratorSettings.{name} = {v!r}: must be a finite number > 0 [{unit}]")
         if self.ground_contact not in GROUND_MODES:
             raise ValueError(f"IntegratorSettings.ground_contact = {self.ground_contact!r}: must be one of "
                              f"{', '.join(repr(m) for m in GROUND_MODES)}")
@@ -195,8 +209,18 @@ class Simulator(StationViews):
         return u
 
     def reset(self, state: np.ndarray | None = None, t: float = 0.0, controls: np.ndarray | None = None) -> np.ndarray:
-        """Set the state (default: the initial state), time [s] and controls [rad]; returns the state."""
-        self.state = (self.initial_state if state is None else self._check_state(state)).copy()
+        """Set the state (default: the initial state), time [s] and controls [rad]; returns the state.
+
+        ValueError (naming the entry, body or quantity) for a non-finite time or state, a wing quaternion of zero
+        or non-finite norm, or a body speed or rate beyond the settings' ``max_speed`` / ``max_rate``."""
+        if isinstance(t, bool) or not isinstance(t, (int, float, np.number)) or not np.isfinite(t):
+            raise ValueError(f"t = {t!r}: the time must be a finite number [s]")
+        if state is not None:
+            state = self._check_state(state)
+            problems = state_problems(self, state)
+            if problems:
+                raise ValueError(f"state: {'; '.join(problems)}")
+        self.state = (self.initial_state if state is None else state).copy()
         self.t = float(t)
         self.controls = (self.initial_controls if controls is None else self._check_controls(controls)).copy()
         return self.state
@@ -231,6 +255,10 @@ class Simulator(StationViews):
         dx = np.zeros(self.n_state)
         if _rhs_kernel(float(t), x, u, dx, self.model, self.work) != 0:
             raise SimulationError(f"t = {t:.6g} s: the mass matrix is singular")
+        if not np.all(np.isfinite(dx)):
+            i = int(np.flatnonzero(~np.isfinite(dx))[0])
+            raise SimulationError(f"t = {t:.6g} s: the derivative of {self.state_name(i)} is {dx[i]} (state entry {i} "
+                                  f"= {x[i]!r}): the state is outside what the model can evaluate")
         return dx
 
     def step(self, controls: np.ndarray | None = None, n_steps: int = 1) -> np.ndarray:
@@ -257,17 +285,29 @@ class Simulator(StationViews):
         that of the last accepted step, where the state is left."""
         s = self.settings
         status, acc, rej, h, t = dp54_advance(self.t, t_end, self.state, self.controls, min(s.dt, t_end - self.t),
-                                              s.rtol, s.atol, self.model, self.work, self.limits, 10_000_000)
+                                              s.rtol, s.atol, self.model, self.work, self.limits, STEP_MAX_STEPS)
         self.t = t_end if status == OK else t
         return status, h
 
     def advance_to(self, t_end: float, rtol: float | None = None, atol: float | None = None) -> np.ndarray:
-        """Integrate to t_end [s] with the error-controlled Dormand-Prince 5(4) method."""
+        """Integrate to t_end [s] (finite, not before the current time) with the error-controlled Dormand-Prince
+        5(4) method at tolerances ``rtol``, ``atol`` (> 0; default the settings'). ValueError for a bad time or
+        tolerance; SimulationError when the integration breaks down (at most 1e8 steps)."""
         s = self.settings
+        if isinstance(t_end, bool) or not isinstance(t_end, (int, float, np.number)) or not np.isfinite(t_end):
+            raise ValueError(f"t_end = {t_end!r}: must be a finite time [s]")
+        if t_end < self.t:
+            raise ValueError(f"t_end = {t_end!r} s is before the current time {self.t!r} s: the simulator does not "
+                             "run backwards (reset to start again)")
+        rtol = s.rtol if rtol is None else rtol
+        atol = s.atol if atol is None else atol
+        for name, v in (("rtol", rtol), ("atol", atol)):
+            if isinstance(v, bool) or not isinstance(v, (int, float, np.number)) or not 0.0 < v < np.inf:
+                raise ValueError(f"{name} = {v!r}: must be a finite number > 0 (an absolute tolerance of 0 stalls "
+                                 "the error control on any state entry that passes through zero)")
         status, acc, rej, h, t = dp54_advance(self.t, float(t_end), self.state, self.controls,
                                               min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt,
-                                              rtol or s.rtol, atol or s.atol, self.model, self.work, self.limits,
-                                              100_000_000)
+                                              rtol, atol, self.model, self.work, self.limits, ADVANCE_MAX_STEPS)
         if status != OK:
             self.t = t  # the last accepted step, where the state is left
             self._raise(status, h)

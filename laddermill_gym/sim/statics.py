@@ -28,6 +28,7 @@ from laddermill_gym.kernels.contract import (
     N_CONTROLS,
 )
 from laddermill_gym.model.states import euler_from_quaternion, quaternion_from_euler
+from laddermill_gym.sim.simulator import SimulationError
 
 
 def pack_unknowns(sim, x):
@@ -98,6 +99,16 @@ def accelerations(sim, dx):
     return np.concatenate(parts) if parts else np.zeros(0)
 
 
+def _accelerations_or_nan(sim, t: float, x: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """:func:`accelerations` of ``sim.rhs``; NaN where a trial state of the solver is outside what the model can
+    evaluate (``rhs`` raises SimulationError for a non-finite derivative), which the solvers treat as a failed
+    trial."""
+    try:
+        return accelerations(sim, sim.rhs(t, x, u))
+    except SimulationError:
+        return np.full(len(accelerations(sim, np.zeros_like(x))), np.nan)
+
+
 def _newton(resid, z0, tol):
     """Root of resid from z0: MINPACK hybrd first; where the cable starts near slack (a soft, strongly
     nonlinear start) Levenberg-Marquardt gets into the basin and hybrd polishes. Returns (z, |residual|, msg)."""
@@ -121,7 +132,7 @@ def static_equilibrium(sim, x_guess: np.ndarray, controls: np.ndarray | None = N
     z0 = pack_unknowns(sim, x_guess)
 
     def resid(z):
-        return accelerations(sim, sim.rhs(t, unpack_unknowns(sim, z), u))
+        return _accelerations_or_nan(sim, t, unpack_unknowns(sim, z), u)
 
     z, r, msg = _newton(resid, z0, tol)
     if r > 1e-6 * math.sqrt(len(z)):  # ill-conditioned (a long closed loop): restart once from there
@@ -143,7 +154,7 @@ def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float =
         u = u0.copy()
         u[N_CONTROLS * wing + CTRL_ELEVATOR] = z[-1]
         x = unpack_unknowns(sim, z[:-1])
-        acc = accelerations(sim, sim.rhs(t, x, u))
+        acc = _accelerations_or_nan(sim, t, x, u)
         sim.state[:] = x
         sim.t = t
         return np.concatenate([acc, [sim.wing_alpha_beta()[wing, 0] - alpha]])

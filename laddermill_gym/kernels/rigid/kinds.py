@@ -137,6 +137,8 @@ def rigid3d_check(kind, x, M, limits):
         o = B3_SIZE * k
         oq, ov, orr = o + B3_QUAT, o + B3_VEL, o + B3_RATE
         n = math.sqrt(x[oq] ** 2 + x[oq + 1] ** 2 + x[oq + 2] ** 2 + x[oq + 3] ** 2)
+        if not (n > 1e-100 and n < 1e100):  # a vanished or overflowing quaternion: the attitude is lost
+            return NONFINITE
         for i in range(4):
             x[oq + i] /= n
         if x[ov] ** 2 + x[ov + 1] ** 2 + x[ov + 2] ** 2 > vmax2:
