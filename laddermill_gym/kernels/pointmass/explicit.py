@@ -1,0 +1,156 @@
+"""Explicit stepping of the point-mass fidelity: symplectic (semi-implicit) Euler, Podgaets & Ockels eq. (22)
+with the position updated from the new velocity.
+
+One step holds nothing but the state (6 n) and the element tensions (n_e): pass 1 (parallel over elements)
+writes the Voigt tensions from the old state, pass 2 (parallel over nodes) updates each node's velocity from
+them, its own velocity and the old positions, pass 3 (parallel over nodes) moves the nodes and checks them.
+An RK4 would hold four stage vectors (4 x 24 MB at 500,000 nodes) and not fit the 40 MB budget; symplectic
+Euler is second-order accurate in phase for the undamped string and stable for dt < l0 / c (c = sqrt(EA/mu))
+and, with Voigt damping, dt < mu l0^2 / (2 DA) (the real eigenvalue -4 DA / (mu l0^2); docs/pointmass.md).
+"""
+
+import math
+
+from numba import njit, prange
+
+from laddermill_gym.atmosphere.wind_kernels import modulation
+from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL, TM_DT, TM_T0
+from laddermill_gym.kernels.pointmass.forces import (
+    element_tension,
+    external_force,
+    n_elements,
+    node_mass,
+    string_force,
+)
+from laddermill_gym.kernels.pointmass.layout import (
+    PM_GROUND,
+    PM_LIMIT,
+    PM_NONFINITE,
+    PM_OK,
+    PP_GROUND,
+    PP_MAX_SPEED,
+    PP_N,
+)
+
+_FM = {"contract", "reassoc", "nsz", "arcp"}
+
+
+#: Nodes (elements) per task of the parallel loops: each task calls a kernel compiled without numba's reference
+#: counting (``_nrt=False``; the field reads of the packed model would otherwise incref and decref its arrays
+#: at every node, a tenfold cost measured on the elimination), and a task amortises the call.
+CHUNK = 2048
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _tension_chunk(x, M, tension, damped, e0, e1):
+    par = M.par
+    for e in range(e0, e1):
+        tension[e] = element_tension(x, e, par, damped)
+
+
+@njit(cache=True, error_model="numpy", parallel=True)
+def tensions(x, M, tension, damped):
+    """Write every element's tension [N] into ``tension`` (n_e,), with Voigt damping when ``damped``."""
+    ne = n_elements(M.par)
+    for c in prange((ne + CHUNK - 1) // CHUNK):
+        _tension_chunk(x, M, tension, damped, c * CHUNK, min(ne, (c + 1) * CHUNK))
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _move_chunk(x, dt, par, j0, j1):
+    """Move nodes j0..j1-1; returns the worst status among them."""
+    hg, vmax = par[PP_GROUND], par[PP_MAX_SPEED]
+    st = PM_OK
+    for j in range(j0, j1):
+        o = N3_SIZE * j
+        v2 = 0.0
+        for i in range(3):
+            v = x[o + N3_VEL + i]
+            x[o + N3_POS + i] += dt * v
+            v2 += v * v
+        z = x[o + N3_POS + 2]
+        if not (math.isfinite(z) and math.isfinite(v2)):
+            return PM_NONFINITE
+        if v2 > vmax * vmax:
+            st = PM_LIMIT
+        elif -z <= hg and st == PM_OK:
+            st = PM_GROUND
+    return st
+
+
+@njit(cache=True, error_model="numpy", parallel=True)
+def move_and_check(x, dt, par):
+    """x += dt v for every node (parallel); returns a status: non-finite, speed limit, ground (h <= h_g)."""
+    n = int(par[PP_N])
+    nc = (n + CHUNK - 1) // CHUNK
+    bad_nf, bad_v, bad_g = 0, 0, 0
+    for c in prange(nc):
+        st = _move_chunk(x, dt, par, c * CHUNK, min(n, (c + 1) * CHUNK))
+        bad_nf += st == PM_NONFINITE
+        bad_v += st == PM_LIMIT
+        bad_g += st == PM_GROUND
+    if bad_nf > 0:
+        return PM_NONFINITE
+    if bad_v > 0:
+        return PM_LIMIT
+    if bad_g > 0:
+        return PM_GROUND
+    return PM_OK
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _kick_chunk(t, x, u, dt, M, tension, s, d, j0, j1):
+    par = M.par
+    for j in range(j0, j1):
+        fx, fy, fz = external_force(t, x, j, u, M, s, d)
+        gx, gy, gz = string_force(x, j, tension, par)
+        h = dt / node_mass(j, M)
+        o = N3_SIZE * j + N3_VEL
+        x[o] += h * (fx + gx)
+        x[o + 1] += h * (fy + gy)
+        x[o + 2] += h * (fz + gz)
+
+
+@njit(cache=True, error_model="numpy", parallel=True)
+def _kick(t, x, u, dt, M, tension, s, d):
+    n = int(M.par[PP_N])
+    for c in prange((n + CHUNK - 1) // CHUNK):
+        _kick_chunk(t, x, u, dt, M, tension, s, d, c * CHUNK, min(n, (c + 1) * CHUNK))
+
+
+@njit(cache=True, error_model="numpy")
+def explicit_advance(t, x, u, dt, nsteps, M, W):
+    """Advance the state x (6 n,) in place by ``nsteps`` symplectic Euler steps of dt [s] from time t [s] with
+    the kites' commanded attitude u (n_k * 3,) [rad]. Returns (status, steps done)."""
+    for k in range(nsteps):
+        tk = t + k * dt
+        s, d, _, _ = modulation(tk, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
+        tensions(x, M, W.tension, True)
+        _kick(tk, x, u, dt, M, W.tension, s, d)
+        st = move_and_check(x, dt, M.par)
+        if st != PM_OK:
+            return st, k + 1
+    return PM_OK, nsteps
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _accel_chunk(t, x, u, M, tension, out, s, d, j0, j1):
+    par = M.par
+    for j in range(j0, j1):
+        fx, fy, fz = external_force(t, x, j, u, M, s, d)
+        gx, gy, gz = string_force(x, j, tension, par)
+        m = node_mass(j, M)
+        out[3 * j] = (fx + gx) / m
+        out[3 * j + 1] = (fy + gy) / m
+        out[3 * j + 2] = (fz + gz) / m
+
+
+@njit(cache=True, error_model="numpy", parallel=True)
+def accelerations(t, x, u, M, tension, out):
+    """Accelerations [m/s^2] of every node (3 n,) with Voigt tensions: the right-hand side of the string
+    (the tests' reference integrations use it)."""
+    n = int(M.par[PP_N])
+    s, d, _, _ = modulation(t, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
+    tensions(x, M, tension, True)
+    for c in prange((n + CHUNK - 1) // CHUNK):
+        _accel_chunk(t, x, u, M, tension, out, s, d, c * CHUNK, min(n, (c + 1) * CHUNK))

@@ -1,0 +1,204 @@
+"""Linearly implicit Euler for the point-mass string: the string's stiffness (axial EA/l0 and geometric T/l)
+and its Voigt damping are taken implicitly along the string; gravity, cable drag and the kites' aerodynamics
+explicitly. One step solves
+
+    (M + dt C + dt^2 K) v+ = M v + dt F(x, v),   x+ = x + dt v+,
+
+with M the lumped node masses (diagonal), C and K the string's damping and tangent stiffness at the start of
+the step and F the elastic and external forces. Element e adds S_e = dt C_e + dt^2 K_e =
+a t t^T + b I (a = dt DA/l0 + dt^2 EA/l0 - b, b = dt^2 T/l; zero when slack) to the diagonal blocks of its two
+nodes and -S_e off the diagonal: a block-tridiagonal system with 3x3 blocks, solved by block elimination along
+the string in O(n) (Thomas). Each pivot D'_j = D_j - S_j D'_{j-1}^{-1} S_j is symmetric positive definite
+(M > 0, S_e >= 0), so no pivoting is needed.
+
+Memory: the right-hand side and the eliminated right-hand side overwrite the velocities in place; the inverse
+pivots (6 numbers each) are kept only at every ``seg``-th node (``W.ckpt``) and recomputed one segment at a time
+on the way back (``W.seg``): 6 (n / seg + seg) numbers instead of 6 n, at the price of a second forward pass
+over the blocks (no right-hand side). The elimination is sequential; the assembly and the move are parallel.
+"""
+
+from numba import njit, prange
+
+from laddermill_gym.atmosphere.wind_kernels import modulation
+from laddermill_gym.kernels.contract import N3_SIZE, N3_VEL, TM_DT, TM_T0
+from laddermill_gym.kernels.pointmass.explicit import CHUNK, move_and_check, tensions
+from laddermill_gym.kernels.pointmass.forces import (
+    element_geometry,
+    external_force,
+    has_upper,
+    node_mass,
+    string_force,
+)
+from laddermill_gym.kernels.pointmass.layout import PM_OK, PP_DA, PP_EA, PP_L0, PP_N
+
+_FM = {"contract", "reassoc", "nsz", "arcp"}
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def _block(x, e, tension, par, dt):
+    """S_e = a t t^T + b I of element e: returns (a, b, tx, ty, tz). Every element keeps its axial stiffness
+    and damping within the step (slack ones too: their start-of-step tension is 0, so they resist only the
+    change of length during the step); the geometric term b = dt^2 T/l only under tension."""
+    tx, ty, tz, ln = element_geometry(x, e, par)
+    l0 = par[PP_L0]
+    b = dt * dt * tension[e] / ln if ln > 0.0 else 0.0
+    return dt * par[PP_DA] / l0 + dt * dt * par[PP_EA] / l0 - b, b, tx, ty, tz
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def _sds(a, b, tx, ty, tz, d0, d1, d2, d3, d4, d5):
+    """S D S for S = a t t^T + b I and symmetric D (xx, yy, zz, xy, xz, yz)."""
+    wx = d0 * tx + d3 * ty + d4 * tz
+    wy = d3 * tx + d1 * ty + d5 * tz
+    wz = d4 * tx + d5 * ty + d2 * tz
+    s = tx * wx + ty * wy + tz * wz
+    aa, ab, bb = a * a * s, a * b, b * b
+    return (aa * tx * tx + 2.0 * ab * wx * tx + bb * d0, aa * ty * ty + 2.0 * ab * wy * ty + bb * d1,
+            aa * tz * tz + 2.0 * ab * wz * tz + bb * d2, aa * tx * ty + ab * (wx * ty + tx * wy) + bb * d3,
+            aa * tx * tz + ab * (wx * tz + tx * wz) + bb * d4, aa * ty * tz + ab * (wy * tz + ty * wz) + bb * d5)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def _inv(d0, d1, d2, d3, d4, d5):
+    """Inverse of a symmetric 3x3 matrix (xx, yy, zz, xy, xz, yz) by cofactors."""
+    c0 = d1 * d2 - d5 * d5
+    c1 = d0 * d2 - d4 * d4
+    c2 = d0 * d1 - d3 * d3
+    c3 = d4 * d5 - d3 * d2
+    c4 = d3 * d5 - d4 * d1
+    c5 = d3 * d4 - d0 * d5
+    r = 1.0 / (d0 * c0 + d3 * c3 + d4 * c4)
+    return c0 * r, c1 * r, c2 * r, c3 * r, c4 * r, c5 * r
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def _pivot(x, j, tension, M, dt, lower, q):
+    """Inverse pivot D'_j^{-1} from the lower element's S (``lower``) and the previous inverse pivot ``q``
+    (ignored for j = 0). Returns (inverse pivot, the upper element's S)."""
+    par = M.par
+    m = node_mass(j, M)
+    a, b, tx, ty, tz = lower
+    d = (m + a * tx * tx + b, m + a * ty * ty + b, m + a * tz * tz + b, a * tx * ty, a * tx * tz, a * ty * tz)
+    upper = (0.0, 0.0, 0.0, 0.0, 0.0)
+    if has_upper(j, par):
+        upper = _block(x, j + 1, tension, par, dt)
+        a, b, tx, ty, tz = upper
+        d = (d[0] + a * tx * tx + b, d[1] + a * ty * ty + b, d[2] + a * tz * tz + b, d[3] + a * tx * ty,
+             d[4] + a * tx * tz, d[5] + a * ty * tz)
+    if j > 0:
+        a, b, tx, ty, tz = lower
+        e = _sds(a, b, tx, ty, tz, q[0], q[1], q[2], q[3], q[4], q[5])
+        d = (d[0] - e[0], d[1] - e[1], d[2] - e[2], d[3] - e[3], d[4] - e[4], d[5] - e[5])
+    return _inv(d[0], d[1], d[2], d[3], d[4], d[5]), upper
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def _smul(a, b, tx, ty, tz, vx, vy, vz):
+    """S v for S = a t t^T + b I."""
+    p = a * (tx * vx + ty * vy + tz * vz)
+    return p * tx + b * vx, p * ty + b * vy, p * tz + b * vz
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def _qmul(q, vx, vy, vz):
+    """Symmetric q (6) times v."""
+    return (q[0] * vx + q[3] * vy + q[4] * vz, q[3] * vx + q[1] * vy + q[5] * vz,
+            q[4] * vx + q[5] * vy + q[2] * vz)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _forward(x, tension, M, dt, ckpt, seg):
+    """Forward elimination: r'_j = r_j + S_j D'_{j-1}^{-1} r'_{j-1} in place in the velocities; the inverse
+    pivot at the end of every segment of ``seg`` nodes into ``ckpt``."""
+    n = int(M.par[PP_N])
+    lower = _block(x, 0, tension, M.par, dt)
+    q = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    yx, yy, yz = 0.0, 0.0, 0.0  # D'_{j-1}^{-1} r'_{j-1}
+    for j in range(n):
+        o = N3_SIZE * j + N3_VEL
+        if j > 0:
+            a, b, tx, ty, tz = lower
+            sx, sy, sz = _smul(a, b, tx, ty, tz, yx, yy, yz)
+            x[o] += sx
+            x[o + 1] += sy
+            x[o + 2] += sz
+        q, lower = _pivot(x, j, tension, M, dt, lower, q)
+        yx, yy, yz = _qmul(q, x[o], x[o + 1], x[o + 2])
+        if (j + 1) % seg == 0 or j == n - 1:
+            c = j // seg
+            for i in range(6):
+                ckpt[c, i] = q[i]
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _backward(x, tension, M, dt, ckpt, buf):
+    """Back substitution v_j = D'_j^{-1} (r'_j + S_{j+1} v_{j+1}), segment by segment from the top, each
+    segment's inverse pivots recomputed from the previous segment's checkpoint."""
+    n = int(M.par[PP_N])
+    seg = buf.shape[0]
+    nseg = (n + seg - 1) // seg
+    ux, uy, uz = 0.0, 0.0, 0.0  # v_{j+1}
+    up = (0.0, 0.0, 0.0, 0.0, 0.0)  # S_{j+1}
+    for c in range(nseg - 1, -1, -1):
+        j0 = c * seg
+        j1 = min(n, j0 + seg)
+        q = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+        if c > 0:
+            q = (ckpt[c - 1, 0], ckpt[c - 1, 1], ckpt[c - 1, 2], ckpt[c - 1, 3], ckpt[c - 1, 4], ckpt[c - 1, 5])
+        lower = _block(x, j0, tension, M.par, dt)
+        for j in range(j0, j1):
+            q, nxt = _pivot(x, j, tension, M, dt, lower, q)
+            for i in range(6):
+                buf[j - j0, i] = q[i]
+            lower = nxt
+        for j in range(j1 - 1, j0 - 1, -1):
+            o = N3_SIZE * j + N3_VEL
+            rx, ry, rz = x[o], x[o + 1], x[o + 2]
+            if j < n - 1:
+                a, b, tx, ty, tz = up
+                sx, sy, sz = _smul(a, b, tx, ty, tz, ux, uy, uz)
+                rx, ry, rz = rx + sx, ry + sy, rz + sz
+            qj = (buf[j - j0, 0], buf[j - j0, 1], buf[j - j0, 2], buf[j - j0, 3], buf[j - j0, 4], buf[j - j0, 5])
+            ux, uy, uz = _qmul(qj, rx, ry, rz)
+            x[o], x[o + 1], x[o + 2] = ux, uy, uz
+            up = _block(x, j, tension, M.par, dt)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _assemble_chunk(t, x, u, dt, M, tension, s, d, j0, j1):
+    par = M.par
+    for j in range(j0, j1):
+        fx, fy, fz = external_force(t, x, j, u, M, s, d)
+        gx, gy, gz = string_force(x, j, tension, par)
+        m = node_mass(j, M)
+        o = N3_SIZE * j + N3_VEL
+        x[o] = m * x[o] + dt * (fx + gx)
+        x[o + 1] = m * x[o + 1] + dt * (fy + gy)
+        x[o + 2] = m * x[o + 2] + dt * (fz + gz)
+
+
+@njit(cache=True, error_model="numpy", parallel=True)
+def _assemble(t, x, u, dt, M, tension, s, d):
+    """r_j = m_j v_j + dt (F_ext + F_elastic) in place in the velocities (parallel over nodes)."""
+    n = int(M.par[PP_N])
+    for c in prange((n + CHUNK - 1) // CHUNK):
+        _assemble_chunk(t, x, u, dt, M, tension, s, d, c * CHUNK, min(n, (c + 1) * CHUNK))
+
+
+@njit(cache=True, error_model="numpy")
+def implicit_advance(t, x, u, dt, nsteps, M, W):
+    """Advance the state x (6 n,) in place by ``nsteps`` linearly implicit Euler steps of dt [s] from time t
+    [s], kites' attitude u (n_k * 3,) [rad]. ``W.tension`` holds the elastic tensions at the start of the last
+    step. Returns (status, steps done)."""
+    for k in range(nsteps):
+        tk = t + k * dt
+        s, d, _, _ = modulation(tk, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
+        tensions(x, M, W.tension, False)
+        _assemble(tk, x, u, dt, M, W.tension, s, d)
+        _forward(x, W.tension, M, dt, W.ckpt, W.seg.shape[0])
+        _backward(x, W.tension, M, dt, W.ckpt, W.seg)
+        st = move_and_check(x, dt, M.par)
+        if st != PM_OK:
+            return st, k + 1
+    return PM_OK, nsteps
+

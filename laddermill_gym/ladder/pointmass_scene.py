@@ -1,0 +1,162 @@
+"""Scenes at the point-mass fidelity (Podgaets & Ockels 2007): a YAML file with ``fidelity: {wing: pointmass}``
+read into a :class:`~laddermill_gym.model.pointmass.PointMassString`, the kites' commanded attitude, the
+integrator settings and a quasi-static start. The wind, wing-type and cable sections are those of the rigid
+scenes (``ladder/scene.py``); see configs/scenes/podgaets_5km.yaml for a commented example."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from laddermill_gym.atmosphere.wind_kernels import density, wind_point
+from laddermill_gym.kernels.contract import N3_POS, N3_SIZE
+from laddermill_gym.kernels.pointmass.forces import kite_force
+from laddermill_gym.model.configio import ConfigError, Section, config_path, read_yaml
+from laddermill_gym.model.pointmass import PointMassKite, PointMassString, attitude_controls, pack
+from laddermill_gym.sim.pointmass import METHODS, PointMassSimulator
+
+
+@dataclass(frozen=True)
+class PointMassScene:
+    """A loaded point-mass scene: the string, the kites' attitude (n_k * 3,) [rad], the method and step."""
+
+    name: str
+    file: Path
+    description: str
+    string: PointMassString
+    controls: np.ndarray
+    method: str
+    dt: float
+    piece_length: float
+
+    def initial_state(self) -> np.ndarray:
+        return quasi_static_state(self.string, self.controls)
+
+    def simulator(self, x0: np.ndarray | None = None, method: str | None = None,
+                  dt: float | None = None) -> PointMassSimulator:
+        x0 = self.initial_state() if x0 is None else x0
+        return PointMassSimulator(self.string, x0, self.controls, self.dt if dt is None else dt,
+                                  self.method if method is None else method)
+
+
+def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: float | None = None,
+                   n_kites: int | None = None, dt: float | None = None, method: str | None = None) -> PointMassScene:
+    """Build a point-mass scene from a scene file already opened as ``s`` whose ``fidelity`` section ``fid``
+    says ``wing: pointmass`` (the caller has read ``name``-independent keys it owns)."""
+    from laddermill_gym.ladder.scene import load_cable, load_wing_type, read_wind
+
+    name, desc = s.text("name"), s.text("description", "")
+    if s.number("dimension", 3, integer=True) != 3:
+        raise s.error("dimension", s.data.get("dimension"), "the point-mass fidelity is 3D only")
+    gravity = s.number("gravity", positive=True)
+    wind = read_wind(s.section("wind"))
+    wing = load_wing_type(config_path("wings", s.text("wing_type"), path.parent))
+    cable = load_cable(config_path("cables", s.text("cable"), path.parent))
+    gp = s.section("ground_points")
+    points = {k: gp.vector(k, 3) for k in list(gp.data)}
+    gp.done()
+    ch = s.section("chain")
+    start, end = ch.text("start"), ch.text("end", None)
+    nk = ch.number("n_wings", integer=True, positive=True)
+    piece = ch.number("piece_length", positive=True)
+    ch.raw("elements_per_piece", None)  # the rigid fidelity's subdivision; element_length replaces it
+    ch.done()
+    for key, pname in (("start", start), ("end", end)):
+        if pname is not None and pname not in points:
+            raise ch.error(key, pname, f"is not one of the ground points {sorted(points)}")
+    el = fid.number("element_length", positive=True)
+    for key in ("sag", "cable_aero"):
+        fid.raw(key, None)  # the rigid fidelity's switches: the string needs no sag correction, drag always on
+    fid.done()
+    ini = s.section("initial")
+    att = [math.radians(ini.number(k, 0.0)) for k in ("roll_deg", "pitch_deg", "yaw_deg")]
+    for key in ("method", "alpha_deg", "elevation_deg", "elevator_up_deg", "elevator_down_deg"):
+        ini.raw(key, None)  # the rigid fidelity's start: the point-mass start is quasi-static
+    ini.done()
+    it = s.section("integrator")
+    meth = it.text("method", choices=METHODS + ("rk4", "dp54"))
+    meth = "implicit" if meth not in METHODS else meth
+    step = it.number("dt", positive=True)
+    vmax = it.number("max_speed", 1000.0, positive=True)
+    hg = it.number("ground_height", 0.0)
+    contact = it.text("ground_contact", "stop", choices=("stop", "flag", "off"))
+    for key in ("max_rate", "rtol", "atol"):
+        it.raw(key, None)
+    it.done()
+    s.done()
+    el = el if element_length is None else float(element_length)
+    nk = nk if n_kites is None else int(n_kites)
+    per = piece / el
+    if abs(per - round(per)) > 1e-6 * per or round(per) < 1:
+        raise fid.error("element_length", el, f"must divide the piece length {piece} m into whole elements")
+    per = int(round(per))
+    n_nodes = per * nk + (per - 1 if end is not None else 0)
+    kite_nodes = np.arange(1, nk + 1, dtype=np.int64) * per - 1
+    string = PointMassString(wind=wind, gravity=gravity, cable=cable, element_length=el, n_nodes=n_nodes,
+                             anchor=points[start], end=None if end is None else points[end],
+                             kite=PointMassKite.from_wing(wing), kite_nodes=kite_nodes,
+                             ground_height=hg if contact == "stop" else -math.inf, max_speed=vmax)
+    return PointMassScene(name=name, file=path, description=desc, string=string,
+                          controls=attitude_controls(nk, *att), method=meth if method is None else method,
+                          dt=step if dt is None else float(dt), piece_length=piece)
+
+
+def load_pointmass_scene(path: str | Path, **overrides) -> PointMassScene:
+    """Load a scene file at the point-mass fidelity (its ``fidelity.wing`` must be ``pointmass``)."""
+    from laddermill_gym.ladder.scene import scene_path
+
+    path = scene_path(path)
+    s = read_yaml(path)
+    fid = s.section("fidelity")
+    if fid.text("wing", "rigid", choices=("rigid", "pointmass")) != "pointmass":
+        raise ConfigError(f"{path}: field 'fidelity.wing' must be 'pointmass' for a point-mass scene")
+    return read_pointmass(s, fid, path, **overrides)
+
+
+def _kite_net_force(string: PointMassString, M, p: np.ndarray, u: np.ndarray, k: int) -> np.ndarray:
+    """Aerodynamic force plus weight [N] of kite k at rest at p (cable weight added by the caller)."""
+    w = np.array(wind_point(p[0], p[1], p[2], 0.0, M.wf, M.ms[0], M.md[0], M.gp, M.gv))
+    f = np.array(kite_force(k, -w[0], -w[1], -w[2], density(-p[2], M.wf), u, M))
+    f[2] += string.kite.mass * string.gravity
+    return f
+
+
+def quasi_static_state(string: PointMassString, u: np.ndarray, iterations: int = 20) -> np.ndarray:
+    """A start near equilibrium for a chain of kites with a free upper end: kites at rest in the wind, each
+    piece straight along its tension (tension accumulated from the top kite down: kite lift, drag and
+    weight and the pieces' weight), stretched by T/EA; nodes spaced evenly along each piece, at rest.
+    Iterated because the kites' forces depend on their heights. A fixed upper end is not supported here."""
+    if string.end is not None or string.n_kites == 0 or string.kite_nodes[-1] != string.n_nodes - 1:
+        raise ValueError("quasi_static_state needs a free upper end carried by the last kite")
+    M = pack(string)
+    kn = string.kite_nodes
+    nk = kn.size
+    lens = np.diff(np.concatenate([[-1], kn])) * string.element_length  # unstretched piece lengths [m]
+    wpiece = lens * string.cable.mass_per_length * string.gravity
+    pos = string.anchor + np.outer(np.cumsum(lens), [-math.sqrt(0.5), 0.0, -math.sqrt(0.5)])
+    for _ in range(iterations):
+        tens = np.zeros((nk, 3))
+        above = np.zeros(3)
+        for k in range(nk - 1, -1, -1):
+            f = _kite_net_force(string, M, pos[k], u, k)
+            f[2] += 0.5 * wpiece[k] + (0.5 * wpiece[k + 1] if k + 1 < nk else 0.0)
+            above = above - f  # tension vector of the piece below kite k, pointing down the cable
+            tens[k] = above
+        prev = string.anchor.copy()
+        for k in range(nk):
+            t = np.linalg.norm(tens[k])
+            prev = prev - tens[k] / t * lens[k] * (1.0 + t / string.cable.EA)
+            pos[k] = prev
+    x = np.zeros(string.state_size)
+    xs = x.reshape(-1, N3_SIZE)
+    lo = string.anchor
+    j0 = 0
+    for k in range(nk):
+        m = kn[k] - j0 + 1
+        f = np.arange(1, m + 1) / m
+        xs[j0:kn[k] + 1, N3_POS:N3_POS + 3] = lo + np.outer(f, pos[k] - lo)
+        lo, j0 = pos[k], kn[k] + 1
+    return x

@@ -1,0 +1,112 @@
+"""Driver of the point-mass fidelity: holds the packed string, its workspace, state and the kites' commanded
+attitude, and steps it with the explicit (symplectic Euler) or the implicit (linearly implicit Euler,
+block-tridiagonal along the string) kernel of ``kernels/pointmass/``.
+
+The rigid ``sim.Simulator`` cannot carry it without changing its signatures: it is built from an ``Assembly``
+(bodies with 13 states, element tables, the block-elimination tree) and allocates the seven stage vectors of
+RK4 / DP5(4), which at 500,000 nodes would alone take 7 x 24 MB.
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+from tqdm import tqdm
+
+from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL
+from laddermill_gym.kernels.pointmass.explicit import CHUNK, explicit_advance, tensions
+from laddermill_gym.kernels.pointmass.implicit import implicit_advance
+from laddermill_gym.kernels.pointmass.layout import PM_OK, PP_DA, PP_EA, PP_L0, PP_MU
+from laddermill_gym.model.pointmass import PointMassString, held_bytes, make_work, pack
+
+METHODS = ("explicit", "implicit")
+STATUS_TEXT = {0: "ok", 2: "non-finite state", 3: "speed limit exceeded", 4: "a node at or below the ground"}
+
+
+class PointMassError(RuntimeError):
+    """A step failed (non-finite state, speed limit, ground); the message names the status and the time."""
+
+
+def explicit_stable_dt(s: PointMassString) -> float:
+    """Largest stable symplectic-Euler step [s] of the string's axial dynamics: min(l0/c, mu l0^2 / (2 DA)),
+    c = sqrt(EA/mu) (the undamped chain's omega_max = 2c/l0 and the Voigt eigenvalue -4 DA/(mu l0^2))."""
+    c = s.cable
+    l0 = s.element_length
+    dt = l0 / np.sqrt(c.EA / c.mass_per_length)
+    if c.DA > 0:
+        dt = min(dt, c.mass_per_length * l0 * l0 / (2.0 * c.DA))
+    return float(dt)
+
+
+class PointMassSimulator:
+    """Point-mass string and kites stepped at a fixed dt [s] by ``method`` ('explicit' or 'implicit'), the
+    parallel loops on ``threads`` threads (default: all of numba's)."""
+
+    def __init__(self, string: PointMassString, x0: np.ndarray, controls: np.ndarray, dt: float,
+                 method: str = "implicit", t0: float = 0.0, threads: int | None = None):
+        if method not in METHODS:
+            raise ValueError(f"method = {method!r}: must be one of {METHODS}")
+        if not dt > 0:
+            raise ValueError(f"dt = {dt!r}: must be > 0")
+        self.string = string
+        self.M = pack(string)
+        self.W = make_work(string)
+        self.x = np.ascontiguousarray(x0, dtype=np.float64).copy()
+        if self.x.shape != (string.state_size,):
+            raise ValueError(f"initial state shape {self.x.shape}: must be ({string.state_size},)")
+        self.u = np.ascontiguousarray(controls, dtype=np.float64).copy()
+        if self.u.size != 3 * max(1, string.n_kites):
+            raise ValueError(f"controls size {self.u.size}: must be 3 per kite ({3 * string.n_kites})")
+        self.dt, self.method, self.t = float(dt), method, float(t0)
+        self._advance = explicit_advance if method == "explicit" else implicit_advance
+        #: Threads of the parallel loops (default: numba's, i.e. the machine's cores or NUMBA_NUM_THREADS).
+        self.threads = numba.config.NUMBA_NUM_THREADS if threads is None else int(threads)
+
+    def step(self, nsteps: int = 1) -> None:
+        """Advance by ``nsteps`` steps; raises PointMassError on a failed step (state at that step).
+        The parallel loops run on at most one thread per ``CHUNK`` nodes (a string shorter than that runs on
+        one thread: waking a thread pool costs more than its work)."""
+        before = numba.get_num_threads()
+        numba.set_num_threads(max(1, min(self.threads, before, -(-self.string.n_nodes // CHUNK))))
+        try:
+            st, done = self._advance(self.t, self.x, self.u, self.dt, int(nsteps), self.M, self.W)
+        finally:
+            numba.set_num_threads(before)
+        self.t += done * self.dt
+        if st != PM_OK:
+            raise PointMassError(f"step failed at t = {self.t:.6g} s: {STATUS_TEXT.get(st, st)}")
+
+    def advance(self, duration: float, chunk: int = 100, progress: bool = False) -> None:
+        """Advance by ``duration`` [s] (rounded to whole steps), ``chunk`` steps per kernel call."""
+        n = int(round(duration / self.dt))
+        bar = tqdm(total=n, desc=f"{self.method} dt={self.dt:.3g}s", disable=not progress, unit="step")
+        while n > 0:
+            k = min(chunk, n)
+            self.step(k)
+            n -= k
+            bar.update(k)
+        bar.close()
+
+    @property
+    def positions(self) -> np.ndarray:
+        """Node positions (n, 3) [m] (a view)."""
+        return self.x.reshape(-1, N3_SIZE)[:, N3_POS:N3_POS + 3]
+
+    @property
+    def velocities(self) -> np.ndarray:
+        """Node velocities (n, 3) [m/s] (a view)."""
+        return self.x.reshape(-1, N3_SIZE)[:, N3_VEL:N3_VEL + 3]
+
+    def tensions(self, damped: bool = True) -> np.ndarray:
+        """Element tensions (n_e,) [N] of the current state (Voigt damping included when ``damped``)."""
+        tensions(self.x, self.M, self.W.tension, damped)
+        return self.W.tension.copy()
+
+    def held_bytes(self) -> dict[str, int]:
+        """Bytes held by the state, controls, workspace and packed parameters."""
+        return held_bytes(self.M, self.W, self.x, self.u)
+
+    def describe(self) -> str:
+        p = self.M.par
+        return (f"{self.string.n_nodes} nodes, l0 = {p[PP_L0]:.4g} m, EA = {p[PP_EA]:.3g} N, DA = {p[PP_DA]:.3g} "
+                f"N s, mu = {p[PP_MU]:.3g} kg/m, {self.string.n_kites} kites, {self.method} dt = {self.dt:.3g} s")
