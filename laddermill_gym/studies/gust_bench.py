@@ -1,0 +1,272 @@
+"""The scripted gust benchmark: run controllers on a versioned suite of named disturbance scenarios.
+
+    laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 --controllers open_loop lqr runs/ppo_x
+    python -m laddermill_gym.studies.gust_bench --suite gusts-v1 [--env ID ...] [--scenarios NAME ...] [--out DIR]
+
+A suite (``configs/benchmarks/<name>.yaml``, read by :mod:`laddermill_gym.studies.gust_suite`) names, per
+environment, scenarios of a disturbance list, a duration and seeds; every controller meets the same episodes
+(same seeds, same wind). Per controller, scenario and seed: survived or the time and cause of failure, largest
+and RMS lateral excursion [m], energy produced [J] and its ratio to the same controller's undisturbed run (same
+seed and duration, no disturbance), peak tension over its limit, settling time [s] and control effort (RMS of
+the action's deviation from the trim action). Writes ``gust_bench.csv``, ``gust_bench.json`` and a scorecard
+figure per environment into ``--out`` (default ``results/gust_bench/<suite>``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+from tqdm import tqdm
+
+from laddermill_gym.studies.gust_suite import Scenario, Suite, load_suite
+
+__all__ = ["run_episodes", "episode_metrics", "run_suite", "write_outputs", "add_parser", "main"]
+
+#: A copy counts as settled when its largest lateral excursion stays below this share of its peak after the
+#: disturbance's start (a 10 % band; chosen: the lateral motion of these systems is lightly damped).
+SETTLE_BAND = 0.1
+
+
+def _lateral_fn(env, n: int, nw: int):
+    if hasattr(env, "lateral_offsets"):
+        return lambda o: np.asarray(env.lateral_offsets(o), dtype=float).reshape(n, -1)
+    from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX
+
+    return lambda o: o.reshape(n, nw, N_OBS_PER_WING)[:, :, OBS_INDEX["dy"]].astype(float)
+
+
+def _nominal_action(task) -> np.ndarray:
+    actions = getattr(task, "actions", None)
+    if actions is not None and hasattr(actions, "nominal_action"):
+        return np.asarray(actions.nominal_action, dtype=float)
+    return np.asarray(task.trim_action, dtype=float)
+
+
+def _tension(info) -> np.ndarray:
+    if "max_tension_N" in info:
+        return np.asarray(info["max_tension_N"], dtype=float)
+    return np.max(np.asarray(info["tether_tension_N"], dtype=float), axis=1)
+
+
+def run_episodes(controller, env_id: str, env_kwargs: dict, seeds, duration: float, disturbances) -> dict:
+    """One episode per seed (one vector-env copy each) of ``controller`` on ``env_id`` with ``env_kwargs``, the
+    given ``disturbances`` (mappings) and ``duration`` [s]. Returns arrays over the copies: ``t_end`` [s],
+    ``failure`` (code), ``cause`` (text), ``lateral`` (T + 1, n) largest |lateral offset| [m] (nan after the
+    end), ``lateral_sq`` (n,) sum of the mean-square offsets, ``energy_J``, ``peak_tension_N``, ``effort_sq``
+    (sum of mean-square action deviations), ``steps`` (n,), ``limit_N`` and ``control_dt`` [s]."""
+    import gymnasium as gym
+
+    n = len(seeds)
+    kw = dict(env_kwargs, episode_time=float(duration), disturbances=[dict(d) for d in disturbances])
+    env = gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **kw)
+    task = env.task
+    lateral = _lateral_fn(env, n, task.n_wings)
+    nominal = _nominal_action(task)
+    obs, _ = env.reset(seed=[int(s) for s in seeds])
+    alive = np.ones(n, bool)
+    out = {"t_end": np.zeros(n), "failure": np.zeros(n, int), "cause": [""] * n, "energy_J": np.zeros(n),
+           "peak_tension_N": np.zeros(n), "lateral_sq": np.zeros(n), "effort_sq": np.zeros(n),
+           "steps": np.zeros(n, int), "limit_N": float(task.breaking_tension), "control_dt": float(task.control_dt)}
+    dy = lateral(obs)
+    series = [np.max(np.abs(dy), axis=1)]
+    while alive.any():
+        a, _ = controller.predict(obs, deterministic=True)
+        obs, _, term, trunc, info = env.step(a)
+        dy = lateral(obs)
+        dev = np.asarray(a, dtype=float).reshape(n, -1) - nominal
+        out["energy_J"][alive] += task.control_dt * np.asarray(info["power_W"], dtype=float)[alive]
+        out["peak_tension_N"][alive] = np.maximum(out["peak_tension_N"][alive], _tension(info)[alive])
+        out["lateral_sq"][alive] += np.mean(dy ** 2, axis=1)[alive]
+        out["effort_sq"][alive] += np.mean(dev ** 2, axis=1)[alive]
+        out["steps"][alive] += 1
+        series.append(np.where(alive, np.max(np.abs(dy), axis=1), np.nan))
+        ended = alive & (term | trunc)
+        for b in np.flatnonzero(ended):
+            code = int(info["failure"][b])
+            out["failure"][b], out["t_end"][b] = code, float(info["t"][b])
+            out["cause"][b] = task.failure_text(int(b), code) if code else ""
+        alive &= ~ended
+    out["lateral"] = np.array(series)
+    from laddermill_gym.envs.task import FAILURES
+
+    out["failure_names"] = dict(getattr(env, "failure_names", None) or getattr(task, "failure_names", None)
+                                or FAILURES)
+    env.close()
+    return out
+
+
+def _settling_time(series: np.ndarray, dt: float, start: float, duration: float) -> float:
+    """Time [s] from ``start`` until the excursion e(t) stays within SETTLE_BAND x its largest deviation after
+    ``start`` from its final value (the mean over the last 10 % of the episode, so a new equilibrium counts as
+    settled); nan if e still varies by more than the band over that last 10 % (not settled)."""
+    t = dt * np.arange(series.size)
+    after = (t >= start) & np.isfinite(series)
+    if not after.any():
+        return math.nan
+    ta, e = t[after], series[after]
+    tail = ta >= start + 0.9 * (duration - start)
+    final = float(np.mean(e[tail])) if tail.any() else float(e[-1])
+    d = np.abs(e - final)
+    band = SETTLE_BAND * float(np.max(d))
+    if not band > 0:
+        return 0.0
+    if tail.any() and float(np.max(d[tail])) > band:
+        return math.nan
+    above = np.flatnonzero(d > band)
+    return float(ta[above[-1]] - start + dt) if above.size else 0.0
+
+
+def episode_metrics(rec: dict, ref_energy: np.ndarray, scenario: Scenario, names: dict) -> list[dict]:
+    """The per-seed rows of one controller on one scenario (``rec`` from :func:`run_episodes`, ``ref_energy``
+    the undisturbed runs' energies [J] per seed)."""
+    rows = []
+    dt = rec["control_dt"]
+    for b, seed in enumerate(scenario.seeds):
+        steps = max(int(rec["steps"][b]), 1)
+        code = int(rec["failure"][b])
+        survived = code == 0
+        rows.append({
+            "scenario": scenario.name, "seed": int(seed), "survived": survived,
+            "t_end_s": float(rec["t_end"][b]),
+            "failure": "" if survived else str(names.get(code, code)), "cause": rec["cause"][b],
+            "max_lateral_m": float(np.nanmax(rec["lateral"][:, b])),
+            "rms_lateral_m": math.sqrt(rec["lateral_sq"][b] / steps),
+            "energy_J": float(rec["energy_J"][b]),
+            "energy_ratio": float(rec["energy_J"][b] / ref_energy[b]) if ref_energy[b] != 0 else math.nan,
+            "peak_tension_ratio": float(rec["peak_tension_N"][b] / rec["limit_N"]),
+            "settling_time_s": _settling_time(rec["lateral"][:, b], dt, scenario.start, scenario.duration)
+            if survived else math.nan,
+            "control_effort": math.sqrt(rec["effort_sq"][b] / steps),
+        })
+    return rows
+
+
+def _controller_label(spec: str) -> str:
+    if spec.startswith("lqr:"):
+        return "lqr:" + Path(spec[4:]).stem
+    p = Path(spec)
+    return (f"{p.parent.name}/{p.stem}" if p.is_file() else p.name) if p.exists() else spec
+
+
+def _policy_kwargs(spec: str) -> dict:
+    """The action / observation layout a trained policy's run folder carries (its ``config.yaml``); {} else."""
+    path = Path(spec)
+    folder = path if path.is_dir() else path.parent
+    if not (path.exists() and (folder / "config.yaml").is_file()):
+        return {}
+    from laddermill_gym.control.rl_config import load_rl_config
+
+    return load_rl_config(folder / "config.yaml").carried_env_kwargs()
+
+
+def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool = True) -> list[dict]:
+    """Every controller spec on every scenario of the chosen environments (all of the suite's if ``env_ids`` is
+    empty; scenario names filtered by ``scenarios``); rows as :func:`episode_metrics` plus env and controller."""
+    from laddermill_gym.control.factory import make_controller
+
+    env_ids = list(env_ids) or list(suite.envs)
+    for e in env_ids:
+        if e not in suite.envs:
+            raise ValueError(f"--env {e!r}: suite {suite.name} has {sorted(suite.envs)}")
+    jobs = []
+    for env_id in env_ids:
+        env_kwargs, scen = suite.envs[env_id]
+        chosen = [s for s in scen if not scenarios or s.name in scenarios]
+        jobs += [(env_id, env_kwargs, spec, s) for spec in controllers for s in chosen]
+    rows, ctrls, refs = [], {}, {}
+    for env_id, env_kwargs, spec, s in tqdm(jobs, desc=f"gust-bench {suite.name}", unit="scenario",
+                                            disable=not progress):
+        kw = dict(env_kwargs, **_policy_kwargs(spec))
+        key = (env_id, spec)
+        if key not in ctrls:
+            ctrls[key] = make_controller(spec, env_id, kw)
+        ref_key = (env_id, spec, s.duration, s.seeds)
+        if ref_key not in refs:
+            refs[ref_key] = run_episodes(ctrls[key], env_id, kw, s.seeds, s.duration, [])["energy_J"]
+        rec = run_episodes(ctrls[key], env_id, kw, s.seeds, s.duration, s.disturbances)
+        for row in episode_metrics(rec, refs[ref_key], s, rec["failure_names"]):
+            rows.append({"env": env_id, "controller": _controller_label(spec), **row})
+    return rows
+
+
+def write_outputs(rows: list[dict], suite: Suite, out: Path) -> list[Path]:
+    """``gust_bench.csv`` (one row per env, controller, scenario and seed), ``gust_bench.json`` (the suite, the
+    rows and per-(env, controller, scenario) summaries) and ``scorecard_<env>.png``; returns the paths."""
+    out.mkdir(parents=True, exist_ok=True)
+    paths = [out / "gust_bench.csv", out / "gust_bench.json"]
+    with open(paths[0], "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    summary = summarise(rows)
+    with open(paths[1], "w") as f:
+        json.dump({"suite": suite.name, "version": suite.version, "file": str(suite.path), "rows": rows,
+                   "summary": summary}, f, indent=1, default=lambda x: None if x != x else x)
+    from laddermill_gym.studies.gust_scorecard import plot_scorecard
+
+    for env_id in dict.fromkeys(r["env"] for r in rows):
+        paths.append(plot_scorecard([s for s in summary if s["env"] == env_id], env_id, suite.name,
+                                    out / f"scorecard_{env_id.split('/')[-1]}.png"))
+    return paths
+
+
+def summarise(rows: list[dict]) -> list[dict]:
+    """Per (env, controller, scenario): survival share, medians of the metrics over seeds (nan-aware)."""
+    groups: dict[tuple, list[dict]] = {}
+    for r in rows:
+        groups.setdefault((r["env"], r["controller"], r["scenario"]), []).append(r)
+    out = []
+    for (env_id, ctrl, scen), rs in groups.items():
+        s = {"env": env_id, "controller": ctrl, "scenario": scen, "n": len(rs),
+             "survived": sum(r["survived"] for r in rs) / len(rs)}
+        for k in ("t_end_s", "max_lateral_m", "rms_lateral_m", "energy_ratio", "peak_tension_ratio",
+                  "settling_time_s", "control_effort"):
+            v = np.array([r[k] for r in rs], dtype=float)
+            s[k] = float(np.nanmedian(v)) if np.isfinite(v).any() else math.nan
+        out.append(s)
+    return out
+
+
+def add_parser(sub) -> argparse.ArgumentParser:
+    """The ``gust-bench`` subcommand on an argparse subparsers object (sets ``func``)."""
+    p = sub.add_parser("gust-bench", help="run controllers on a versioned gust benchmark suite",
+                       description=__doc__.split("\n\n")[0])
+    _arguments(p)
+    p.set_defaults(func=_run)
+    return p
+
+
+def _arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--suite", default="gusts-v1", help="suite name in configs/benchmarks/ or a YAML path")
+    p.add_argument("--env", nargs="*", default=[], help="environment ids (default: all of the suite's)")
+    p.add_argument("--controllers", nargs="+", default=["open_loop"],
+                   help="open_loop, lqr, lqr:<config.yaml> or a training run folder / model file")
+    p.add_argument("--scenarios", nargs="*", default=[], help="scenario names (default: all)")
+    p.add_argument("--out", type=Path, help="output folder (default results/gust_bench/<suite>)")
+
+
+def _run(args) -> int:
+    suite = load_suite(args.suite)
+    rows = run_suite(suite, args.env, args.controllers, args.scenarios)
+    if not rows:
+        raise SystemExit(f"no scenario of suite {suite.name} matches --scenarios {args.scenarios}")
+    out = args.out or Path("results") / "gust_bench" / suite.name
+    for path in write_outputs(rows, suite, out):
+        print(path)
+    return 0
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.gust_bench",
+                                description=__doc__.split("\n\n")[0])
+    _arguments(p)
+    return _run(p.parse_args(argv))
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
