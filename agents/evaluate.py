@@ -160,7 +160,8 @@ def plot_results(out: Path, results: dict[str, EpisodeResults], title: str) -> P
         ax = axes[0, 1]
         for i, (name, res) in enumerate(results.items()):
             ax.plot(np.arange(nw), res.max_lateral_m[0], "o-", ms=2, color=f"C{i}", label=name)
-        ax.set_xlabel("wing index (0 at the hauled end)")
+        ax.set_xlabel("slot (0: lowest ascending, veered side; the wing in it changes at each transfer)"
+                      if "LadderMill" in title else "wing index (0 at the hauled end)")
         ax.set_ylabel("largest |dy| over the episode [m]")
         ax.set_yscale("log")
         ax.grid(alpha=0.3)

@@ -5,7 +5,9 @@
 
 Prints the open-loop lateral eigenvalues of the linearised model, the gain, and the discrete closed-loop
 eigenvalues (stable when every |z| < 1). For a chain it prints the per-wing design summary and, with
-``--full-check``, the eigenvalues of the decentralised gains on the full coupled lateral model.
+``--full-check``, the eigenvalues of the decentralised gains on the full coupled lateral model. For the
+moving-cable mill (``configs/agents/lqr_laddermill.yaml``) it prints the check over the period
+(:mod:`laddermill_gym.control.mill_lqr`).
 ``--rollout T`` flies open loop and LQR for T seconds after the paper's wind-direction step on the nonlinear
 simulator and writes ``lqr_rollout.png`` and ``lqr_rollout.csv``.
 """
@@ -67,6 +69,21 @@ def report_chain(design, full_check: bool) -> str:
     return "\n".join(rows)
 
 
+def report_mill(cfg) -> str:
+    """Design the mill's LQR (``control.mill_lqr``) on LadderMill-v0's task at the config's control period and
+    describe its check over the period."""
+    from laddermill_gym.control.mill_lqr import design_mill_lqr
+    from laddermill_gym.envs.laddermill.task import MillTask
+
+    task = MillTask(1, scene=cfg.scene, scene_options={"elements_per_piece": cfg.elements_per_piece},
+                    control_dt=cfg.control_period)
+    d = design_mill_lqr(cfg, task, progress=print)
+    rows = [d.summary(), "  phase s/l0   open-loop growth [1/s]   frozen closed loop max |z|"]
+    rows += [f"  {ph:9.3f}   {g:22.3f}   {z:26.5f}" for ph, g, z in
+             zip(d.phases, d.open_loop_growth, d.frozen_radius, strict=True)]
+    return "\n".join(rows)
+
+
 def rollout_figure(scene, x, u, controllers: dict, t_end: float, step: float, period: float, out: Path) -> None:
     import matplotlib
 
@@ -109,6 +126,12 @@ def main(argv: list[str] | None = None) -> int:
     args = p.parse_args(argv)
     cfg = load_lqr_config(args.config)
     sc = load_scene(cfg.scene, elements_per_piece=cfg.elements_per_piece)
+    if sc.assembly.station is not None:
+        if args.rollout or args.full_check:
+            p.error("a moving-cable mill: the design is checked over the period anyway; fly it with "
+                    "python -m agents.evaluate --env laddermill_gym/LadderMill-v0 --controllers open_loop lqr")
+        print(report_mill(cfg))
+        return 0
     chain = sc.assembly.n_wings > 1
     design = design_ladder_chain(cfg, sc) if chain else design_tethered_wing(cfg, sc)
     print(report_chain(design, args.full_check) if chain else report_single(design))
