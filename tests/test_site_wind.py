@@ -190,3 +190,20 @@ def test_load_wind_detects_formats(tmp_path):
     assert load_wind("daily:" + str(p)).n == 1
     with pytest.raises(ValueError, match="unknown shipped"):
         shipped_wind("nowhere")
+
+
+def test_bad_cluster_files_named(tmp_path):
+    from laddermill_gym.atmosphere.site_wind_formats import read_clusters
+
+    shape = tmp_path / "shape.csv"
+    shape.write_text("h [m];u1 [-];v1 [-];scale factor1 [-]\n10.0;0.7;0.0;1.1\n100.0;1.0;0.0;1.1\n")
+    freq = tmp_path / "freq.csv"
+    freq.write_text("cluster;bin;v100_low [m/s];v100_high [m/s];frequency [%]\n1;0;5.0;6.0;2.5\n1;1;6.0;7.0;n/a\n")
+    with pytest.raises(SiteWindError, match=r"freq.csv: line 3, field 'frequency \[%\]' = 'n/a'"):
+        read_clusters([shape], freq)
+    freq.write_text("cluster;bin;v100_low [m/s];v100_high [m/s];frequency [%]\n2;0;5.0;6.0;2.5\n")
+    with pytest.raises(SiteWindError, match="field 'cluster': clusters 2..2, but 1 profile files"):
+        read_clusters([shape], freq)
+    shape.write_text("h [m];u1 [-];v1 [-];scale factor1 [-]\n10.0;0.7;0.0;1.1\n100.0;0.9;0.0;1.1\n")
+    with pytest.raises(SiteWindError, match="shape.csv: the shape must be 1 at h = 100 m"):
+        read_clusters([shape], freq)

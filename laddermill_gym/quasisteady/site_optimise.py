@@ -98,7 +98,8 @@ def optimise(case: SiteCase, wind: SiteWind, fixed: dict | None = None, starts: 
         res = minimize(objective, z0, method="SLSQP", bounds=zb, constraints=cons,
                        options={"maxiter": 200, "ftol": 1e-10})
         des, sol = solve(res.x)
-        ok = all(c["fun"](res.x) >= -1e-6 for c in cons)
+        ok = all(c["fun"](res.x) >= -1e-6 for c in cons) and (
+            case.power_mode == "at_least" or abs(sol.mean_power / case.power_target - 1.0) < 1e-6)
         key = (ok, sol.ratio)
         if best is None or key > best[0]:
             best = (key, des, sol)
