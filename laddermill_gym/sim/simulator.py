@@ -34,12 +34,13 @@ from laddermill_gym.kernels.contract import (
     TM_DT,
     TM_T0,
 )
-from laddermill_gym.kernels.integrate import OK, dp54_advance, rk4_advance
+from laddermill_gym.kernels.integrate import OK
 from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 from laddermill_gym.model.states import euler_from_quaternion
+from laddermill_gym.sim.breakpoints import dp54_pieces, modulation_kinks, rk4_pieces
 from laddermill_gym.sim.reports import GROUND_MODES, body_heights, diagnose, failure_message, state_problems
 from laddermill_gym.sim.station_views import (
     StationViews,
@@ -88,6 +89,8 @@ class IntegratorSettings:
     ground_contact : what a wing CG or free cable node at h <= ground_height after a step does: "stop" (the run
     stops at the last state above the ground with a SimulationError naming the time, the body and its height),
     "flag" (the run goes on; ``sim.recording.record`` flags the contact per body and sample) or "off" (no ground).
+    breakpoints : step exactly onto the kinks of the wind's time modulation (``sim/breakpoints.py``); False
+    integrates across them (the behaviour before; for comparisons).
     """
 
     method: str = "rk4"
@@ -98,8 +101,11 @@ class IntegratorSettings:
     max_rate: float = 100.0
     ground_height: float = 0.0
     ground_contact: str = "stop"
+    breakpoints: bool = True
 
     def __post_init__(self):
+        if not isinstance(self.breakpoints, (bool, np.bool_)):
+            raise ValueError(f"IntegratorSettings.breakpoints = {self.breakpoints!r}: must be True or False")
         if self.method not in INTEGRATOR_METHODS:
             raise ValueError(f"IntegratorSettings.method = {self.method!r}: must be one of "
                              f"{', '.join(repr(m) for m in INTEGRATOR_METHODS)}")
@@ -240,6 +246,17 @@ class Simulator(StationViews):
         self.model = self.model._replace(tmod=tmod, ms=ms, md=md, gp=gp, gv=gv)
         self.wind_field = field
 
+    @property
+    def breakpoint_times(self) -> np.ndarray:
+        """Times [s] where the wind modulation of ``self.model`` has a kink (the steps stop on them), sorted;
+        recomputed when the model's modulation arrays are replaced."""
+        m = self.model
+        cached = getattr(self, "_breakpoint_cache", None)
+        if cached is None or any(a is not b for a, b in zip(cached[0], (m.tmod, m.ms, m.md), strict=True)):
+            cached = ((m.tmod, m.ms, m.md), modulation_kinks(m.tmod, m.ms, m.md))
+            self._breakpoint_cache = cached
+        return cached[1]
+
     # ------------------------------------------------------------------ dynamics
     def rhs(self, t: float, x: np.ndarray, u: np.ndarray | None = None, params: dict | None = None) -> np.ndarray:
         """State derivative dx/dt = f(t, x, u) with python-control's ``updfcn`` signature.
@@ -263,19 +280,16 @@ class Simulator(StationViews):
 
     def step(self, controls: np.ndarray | None = None, n_steps: int = 1) -> np.ndarray:
         """Advance n_steps fixed RK4 steps of ``settings.dt`` (or the same time span with DP5(4)) with
-        the controls held; returns the new state (a view of ``self.state``)."""
+        the controls held; returns the new state (a view of ``self.state``). A step that holds a kink of the
+        wind modulation is split at it (``settings.breakpoints``, ``sim/breakpoints.py``)."""
         if controls is not None:
             self.controls = self._check_controls(controls).copy()
         if int(n_steps) != n_steps or n_steps < 0:
             raise ValueError(f"n_steps must be a non-negative integer, got {n_steps!r}")
-        s = self.settings
-        if s.method == "rk4":
-            status, done = rk4_advance(self.t, self.state, self.controls, s.dt, int(n_steps), self.model,
-                                       self.work, self.limits)
-            self.t += done * s.dt
-            h = s.dt
+        if self.settings.method == "rk4":
+            status, h = rk4_pieces(self, int(n_steps))
         else:
-            status, h = self._dp54(self.t + n_steps * s.dt)
+            status, h = self._dp54(self.t + n_steps * self.settings.dt)
         if status != OK:
             self._raise(status, h)
         return self.state
@@ -284,8 +298,7 @@ class Simulator(StationViews):
         """Integrate to t_end [s] with DP5(4); (status, size of the last step tried [s]). On a failure the time is
         that of the last accepted step, where the state is left."""
         s = self.settings
-        status, acc, rej, h, t = dp54_advance(self.t, t_end, self.state, self.controls, min(s.dt, t_end - self.t),
-                                              s.rtol, s.atol, self.model, self.work, self.limits, STEP_MAX_STEPS)
+        status, h, t = dp54_pieces(self, t_end, min(s.dt, t_end - self.t), s.rtol, s.atol, STEP_MAX_STEPS)
         self.t = t_end if status == OK else t
         return status, h
 
@@ -305,9 +318,8 @@ class Simulator(StationViews):
             if isinstance(v, bool) or not isinstance(v, (int, float, np.number)) or not 0.0 < v < np.inf:
                 raise ValueError(f"{name} = {v!r}: must be a finite number > 0 (an absolute tolerance of 0 stalls "
                                  "the error control on any state entry that passes through zero)")
-        status, acc, rej, h, t = dp54_advance(self.t, float(t_end), self.state, self.controls,
-                                              min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt,
-                                              rtol, atol, self.model, self.work, self.limits, ADVANCE_MAX_STEPS)
+        status, h, t = dp54_pieces(self, float(t_end), min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt,
+                                 rtol, atol, ADVANCE_MAX_STEPS)
         if status != OK:
             self.t = t  # the last accepted step, where the state is left
             self._raise(status, h)

@@ -1,0 +1,131 @@
+"""Breakpoints of the forcing: the integrators step exactly onto them.
+
+The wind's time modulation (``atmosphere/field.py``) is piecewise linear in time on the grid t0 + k dt and held
+before the first and after the last sample, so the right-hand side has a kink (a jump of the speed-factor and
+direction rates, which enter the wings' alpha-rate term) wherever the slope changes. A Runge-Kutta step across a
+kink loses its order: the CLI's direction step, a 1 ms ramp inside one 12.5 ms RK4 step, made RK4's error
+4-7 orders of magnitude larger than on smooth dynamics. Here a step that holds a kink strictly inside is split
+at it, and each piece is integrated with the modulation of its own linear segment (so the stage at the end of
+a piece sees the left-hand slope, not the next segment's). Steps with no kink strictly inside are left exactly
+as they were (bit for bit).
+
+Control changes happen between calls of ``Simulator.step`` / ``advance_to`` (the controls are held within a
+call), so they are breakpoints already. The frozen gust grid moves continuously with time (no time kinks
+of its own); the batched kernels (``BatchSimulator``, the envs) do not split steps.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from laddermill_gym.atmosphere.wind_kernels import modulation
+from laddermill_gym.kernels.contract import TM_DT, TM_SIZE, TM_T0
+from laddermill_gym.kernels.integrate import OK, dp54_advance, rk4_advance
+
+#: a kink closer than this fraction of the step to a step's end counts as on it (no split): accumulated time
+#: roundoff must not split a step that a grid aligned with the step was meant to end on
+ALIGN_TOL = 1e-9
+
+
+def modulation_kinks(tmod: np.ndarray, ms: np.ndarray, md: np.ndarray) -> np.ndarray:
+    """Times [s] where the packed modulation's slope changes (speed factor or direction offset), sorted.
+
+    The slope is zero before the first and after the last sample (the modulation holds there), so the ends
+    are kinks when the adjacent segment is not flat. Padding (repeated last samples) adds none."""
+    n = ms.size
+    if n < 2:
+        return np.zeros(0)
+    t0, dt = float(tmod[TM_T0]), float(tmod[TM_DT])
+    slopes = np.zeros((n + 1, 2))
+    slopes[1:n, 0] = np.diff(ms)
+    slopes[1:n, 1] = np.diff(md)
+    change = np.any(slopes[1:] != slopes[:-1], axis=1)
+    return t0 + dt * np.flatnonzero(change)
+
+
+def segment_model(model, ta: float, tb: float):
+    """``model`` with its modulation replaced by the straight line that the real modulation follows on
+    [ta, tb] (an interval holding no kink inside), extended beyond it; evaluated at ta or tb the line gives the
+    value and the slope of this segment (the kernel's own grid gives the next segment's slope at a grid point)."""
+    m = model
+    tm = 0.5 * (ta + tb)
+    s, d, sd, dd = modulation(tm, m.tmod[TM_T0], m.tmod[TM_DT], m.ms, m.md)
+    h = max(tb - ta, 1e-12)
+    k = np.arange(-1.0, 3.0)  # samples at ta - h, ta, ta + h, ta + 2 h: [ta, tb] maps to u in [1, 2]
+    tmod = np.zeros(TM_SIZE)
+    tmod[TM_T0], tmod[TM_DT] = ta - h, h
+    ms = s + sd * (ta - tm + k * h)
+    md = d + dd * (ta - tm + k * h)
+    return m._replace(tmod=tmod, ms=ms, md=md)
+
+
+def split_steps(kinks: np.ndarray, t: float, dt: float, n: int) -> list[tuple[int, list[float]]]:
+    """The steps of n RK4 steps of dt [s] from t [s] that hold kinks strictly inside: [(step index, [kink times
+    inside it, sorted])], in order. Kinks within ``ALIGN_TOL`` dt of a step's end are on it (no split)."""
+    if kinks.size == 0 or n == 0:
+        return []
+    lo, hi = np.searchsorted(kinks, [t, t + n * dt], side="right")
+    out: dict[int, list[float]] = {}
+    for b in kinks[lo:hi]:
+        u = (b - t) / dt
+        j = int(np.floor(u))
+        f = u - j
+        if f < ALIGN_TOL or f > 1.0 - ALIGN_TOL or j >= n:
+            continue
+        out.setdefault(j, []).append(float(b))
+    return sorted(out.items())
+
+
+def interior_kinks(kinks: np.ndarray, ta: float, tb: float) -> list[float]:
+    """Kinks strictly inside (ta, tb) [s], beyond ``ALIGN_TOL`` of the span from either end."""
+    if kinks.size == 0 or not tb > ta:
+        return []
+    tol = ALIGN_TOL * max(tb - ta, 1e-300)
+    lo, hi = np.searchsorted(kinks, [ta + tol, tb - tol], side="right")
+    return [float(b) for b in kinks[lo:hi] if ta + tol < b < tb - tol]
+
+
+def rk4_pieces(sim, n: int):
+    """n RK4 steps of ``sim.settings.dt`` on ``sim`` (a ``Simulator``), a step that holds a kink split at it, each
+    piece with its segment's modulation; advances ``sim.t`` and ``sim.state``. Returns (status, size of the failed
+    step [s]); on a failure the state and time are those before the failed step (or piece)."""
+    s = sim.settings
+    splits = split_steps(sim.breakpoint_times, sim.t, s.dt, n) if s.breakpoints else []
+    done = 0
+    for j, inside in splits + [(n, [])]:
+        if j > done:
+            status, k = rk4_advance(sim.t, sim.state, sim.controls, s.dt, j - done, sim.model, sim.work, sim.limits)
+            sim.t += k * s.dt
+            done += k
+            if status != OK:
+                return status, s.dt
+        if j == n:
+            break
+        ends = [sim.t, *inside, sim.t + s.dt]
+        for ta, tb in zip(ends[:-1], ends[1:]):
+            status, _ = rk4_advance(ta, sim.state, sim.controls, tb - ta, 1, segment_model(sim.model, ta, tb),
+                                    sim.work, sim.limits)
+            if status != OK:
+                sim.t = ta
+                return status, tb - ta
+        sim.t = ends[-1]
+        done += 1
+    return OK, s.dt
+
+
+def dp54_pieces(sim, t_end: float, h: float, rtol: float, atol: float, max_steps: int):
+    """DP5(4) on ``sim`` from its time to t_end [s] (first trial step h [s]), ending a step on every kink inside,
+    each piece with its segment's modulation; the state is advanced in place, ``sim.t`` is left to the caller.
+    Returns (status, last step size [s], time of the state [s]: t_end, or the last accepted step's)."""
+    inside = interior_kinks(sim.breakpoint_times, sim.t, t_end) if sim.settings.breakpoints else []
+    if not inside:
+        status, _, _, h, t = dp54_advance(sim.t, t_end, sim.state, sim.controls, h, rtol, atol, sim.model, sim.work,
+                                          sim.limits, max_steps)
+        return status, h, t
+    ends = [sim.t, *inside, t_end]
+    for ta, tb in zip(ends[:-1], ends[1:]):
+        status, _, _, h, t = dp54_advance(ta, tb, sim.state, sim.controls, h, rtol, atol,
+                                          segment_model(sim.model, ta, tb), sim.work, sim.limits, max_steps)
+        if status != OK:
+            return status, h, t
+    return OK, h, t_end

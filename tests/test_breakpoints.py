@@ -1,0 +1,103 @@
+"""Stepping onto the kinks of the wind modulation (``sim/breakpoints.py``).
+
+Oracles: the kink times of a piecewise-linear schedule in closed form; scipy's DOP853 integrating the same
+right-hand side piece by piece between the kinks (its own error control, no knowledge of our steppers); and
+RK4's theoretical fourth order, which a step across a kink destroys and a split step restores.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from laddermill_gym import Simulator, load_scene
+from laddermill_gym.atmosphere.field import WindField, pack_wind_field
+from laddermill_gym.sim.breakpoints import modulation_kinks, split_steps
+
+T_STEP = 0.2037  # [s] start of the 1 ms direction ramp: inside a step of every dt used here
+T_END = 0.45  # [s]
+
+
+def _sim(bp: bool, dt: float, method: str = "rk4") -> Simulator:
+    scene = load_scene("tethered_wing")
+    start = scene.simulator()
+    wind = scene.assembly.wind.with_modulation(T_STEP, 1e-3, np.ones(2), np.array([0.0, 0.05]))
+    settings = dataclasses.replace(scene.settings, dt=dt, method=method, breakpoints=bp)
+    return Simulator(dataclasses.replace(scene.assembly, wind=wind), start.initial_state, settings,
+                     start.initial_controls)
+
+
+def test_kink_times_closed_form():
+    f = WindField(0.0, 0.5, np.array([1.0, 1.0, 1.1, 1.1, 1.1]), np.array([0.0, 0.0, 0.0, 0.0, 0.02]))
+    tmod, ms, md, _, _ = pack_wind_field(f, n_modulation=8)  # padding with the last sample adds no kink
+    # speed ramps on [0.5, 1.0]; direction ramps on [1.5, 2.0] and holds after
+    assert np.allclose(modulation_kinks(tmod, ms, md), [0.5, 1.0, 1.5, 2.0])
+    assert modulation_kinks(*pack_wind_field(WindField())[:3]).size == 0
+    # a kink on a step's end is no split; one inside is (roundoff of a grid aligned with dt ignored)
+    assert split_steps(np.array([0.5, 0.7]), 0.0, 0.1, 10) == []
+    assert split_steps(np.array([0.55, 0.56, 0.8]), 0.0, 0.1, 10) == [(5, [0.55, 0.56])]
+
+
+def _dop853_reference() -> np.ndarray:
+    """scipy DOP853 between the kinks; inside a piece the time passed to the rhs stays below the piece's end, so
+    the rhs follows the piece's own linear segment up to its end."""
+    sim = _sim(True, 0.005)
+    x = sim.state.copy()
+    ends = [0.0, T_STEP, T_STEP + 1e-3, T_END]
+    for ta, tb in zip(ends[:-1], ends[1:]):
+        top = tb - 1e-12
+        sol = solve_ivp(lambda t, y: sim.rhs(min(t, top), y), (ta, tb), x, method="DOP853", rtol=1e-11,
+                        atol=1e-11)
+        assert sol.success
+        x = sol.y[:, -1]
+    return x
+
+
+@pytest.fixture(scope="module")
+def reference():
+    return _dop853_reference()
+
+
+def test_rk4_fourth_order_across_a_ramp(reference):
+    errs = {}
+    for bp in (True, False):
+        errs[bp] = []
+        for dt in (0.005, 0.0025, 0.00125):
+            sim = _sim(bp, dt)
+            sim.step(n_steps=int(round(T_END / dt)))
+            assert abs(sim.t - T_END) < 1e-12
+            errs[bp].append(np.max(np.abs(sim.state - reference)))
+    e = np.array(errs[True])
+    order = np.log2(e[:-1] / e[1:])
+    assert np.all(order > 3.6), (errs, order)
+    assert np.all(e < 1e-2 * np.array(errs[False])), errs  # split steps: at least 100x more accurate here
+
+
+def test_dp54_ends_steps_on_kinks(reference):
+    sim = _sim(True, 0.005, "dp54")
+    sim.advance_to(T_END, rtol=1e-10, atol=1e-10)
+    assert np.max(np.abs(sim.state - reference)) < 1e-6
+
+
+def test_aligned_grid_unchanged():
+    """A modulation grid on the step grid splits nothing: the run is the run without breakpoint stepping."""
+    runs = []
+    for bp in (True, False):
+        scene = load_scene("tethered_wing")
+        start = scene.simulator()
+        wind = scene.assembly.wind.with_modulation(0.1, 0.05, np.array([1.0, 1.1, 1.1]), np.zeros(3))
+        sim = Simulator(dataclasses.replace(scene.assembly, wind=wind), start.initial_state,
+                        dataclasses.replace(scene.settings, breakpoints=bp), start.initial_controls)
+        sim.step(n_steps=int(round(0.3 / sim.settings.dt)))
+        runs.append(sim.state.copy())
+    assert np.array_equal(runs[0], runs[1])
+
+
+def test_breakpoints_setting_checked():
+    from laddermill_gym.sim.simulator import IntegratorSettings
+
+    with pytest.raises(ValueError, match="breakpoints"):
+        IntegratorSettings(breakpoints="yes")
