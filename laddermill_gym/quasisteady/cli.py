@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 from tqdm import tqdm
 
+from laddermill_gym.atmosphere.site_wind import SiteWindError
 from laddermill_gym.quasisteady import site_outputs as so
 from laddermill_gym.quasisteady.site_data import SHIPPED, load_wind
 from laddermill_gym.quasisteady.site_optimise import TABLE1, TABLE2, altitude_angle_grid, operate, optimise, sweep
@@ -83,7 +84,10 @@ def run(args) -> int:
             "table2": dataclasses.replace(TABLE2, power_target=args.power_mw * 1e6)}
     tables, record, files, yields = {c: {} for c in args.case}, {}, [], []
     for spec in args.wind:
-        wind = load_wind(spec, args.format)
+        try:
+            wind = load_wind(spec, args.format)
+        except (SiteWindError, ValueError) as err:
+            raise SystemExit(f"laddermill site: {err}") from None
         print(f"{spec}: {wind.n} wind states, {wind.heights[0]:g}-{wind.heights[-1]:g} m ({wind.source})")
         for cname in args.case:
             case = base[cname]
