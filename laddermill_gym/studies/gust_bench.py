@@ -30,6 +30,8 @@ __all__ = ["run_episodes", "episode_metrics", "run_suite", "write_outputs", "add
 #: A copy counts as settled when its largest lateral excursion stays below this share of its peak after the
 #: disturbance's start (a 10 % band; chosen: the lateral motion of these systems is lightly damped).
 SETTLE_BAND = 0.1
+#: Excursion changes below this [m] count as settled (a floor for disturbances that hardly move the system).
+SETTLE_FLOOR = 1e-3
 
 
 def _lateral_fn(env, n: int, nw: int):
@@ -101,9 +103,10 @@ def run_episodes(controller, env_id: str, env_kwargs: dict, seeds, duration: flo
 
 
 def _settling_time(series: np.ndarray, dt: float, start: float, duration: float) -> float:
-    """Time [s] from ``start`` until the excursion e(t) stays within SETTLE_BAND x its largest deviation after
-    ``start`` from its final value (the mean over the last 10 % of the episode, so a new equilibrium counts as
-    settled); nan if e still varies by more than the band over that last 10 % (not settled)."""
+    """Time [s] from ``start`` until the excursion e(t) stays within a band of its final value (the mean over
+    the last 10 % of the episode, so a new equilibrium counts as settled); the band is SETTLE_BAND x the largest
+    deviation from the final value after ``start``, at least SETTLE_FLOOR. nan if e still leaves the band in
+    that last 10 % (not settled)."""
     t = dt * np.arange(series.size)
     after = (t >= start) & np.isfinite(series)
     if not after.any():
@@ -112,9 +115,7 @@ def _settling_time(series: np.ndarray, dt: float, start: float, duration: float)
     tail = ta >= start + 0.9 * (duration - start)
     final = float(np.mean(e[tail])) if tail.any() else float(e[-1])
     d = np.abs(e - final)
-    band = SETTLE_BAND * float(np.max(d))
-    if not band > 0:
-        return 0.0
+    band = max(SETTLE_BAND * float(np.max(d)), SETTLE_FLOOR)
     if tail.any() and float(np.max(d[tail])) > band:
         return math.nan
     above = np.flatnonzero(d > band)
