@@ -47,7 +47,7 @@ def _dop853_reference() -> np.ndarray:
     sim = _sim(True, 0.005)
     x = sim.state.copy()
     ends = [0.0, T_STEP, T_STEP + 1e-3, T_END]
-    for ta, tb in zip(ends[:-1], ends[1:]):
+    for ta, tb in zip(ends[:-1], ends[1:], strict=True):
         top = tb - 1e-12
         sol = solve_ivp(lambda t, y: sim.rhs(min(t, top), y), (ta, tb), x, method="DOP853", rtol=1e-11,
                         atol=1e-11)

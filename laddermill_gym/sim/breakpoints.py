@@ -102,7 +102,7 @@ def rk4_pieces(sim, n: int):
         if j == n:
             break
         ends = [sim.t, *inside, sim.t + s.dt]
-        for ta, tb in zip(ends[:-1], ends[1:]):
+        for ta, tb in zip(ends[:-1], ends[1:], strict=True):
             status, _ = rk4_advance(ta, sim.state, sim.controls, tb - ta, 1, segment_model(sim.model, ta, tb),
                                     sim.work, sim.limits)
             if status != OK:
@@ -123,7 +123,7 @@ def dp54_pieces(sim, t_end: float, h: float, rtol: float, atol: float, max_steps
                                           sim.limits, max_steps)
         return status, h, t
     ends = [sim.t, *inside, t_end]
-    for ta, tb in zip(ends[:-1], ends[1:]):
+    for ta, tb in zip(ends[:-1], ends[1:], strict=True):
         status, _, _, h, t = dp54_advance(ta, tb, sim.state, sim.controls, h, rtol, atol,
                                           segment_model(sim.model, ta, tb), sim.work, sim.limits, max_steps)
         if status != OK:
