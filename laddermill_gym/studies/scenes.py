@@ -1,0 +1,47 @@
+"""The scenes the numerical studies (work-precision, stress, stable step) run on, built the same way: the rigid
+wing-and-cable scenes of ``configs/scenes/`` and Roberts' flying model (``configs/rotorcraft/``), each as a
+simulator at its initial equilibrium; and copies of a simulator with other integrator settings or wind."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from laddermill_gym.sim.simulator import Simulator
+
+#: the rotorcraft configs a study accepts by name (everything else is a scene)
+CRAFT_NAMES = ("roberts_flying_model",)
+#: the scenes the studies run by default
+DEFAULT_SCENES = ("tethered_wing", "ladder_chain", "roberts_flying_model", "laddermill")
+
+
+def build_simulator(name: str, elements_per_piece: int | None = None, **settings) -> Simulator:
+    """A simulator of scene (or craft config) ``name`` at its initial equilibrium, with integrator ``settings``
+    replaced (``dt``, ``method``, ``breakpoints``, ...). ``elements_per_piece`` re-divides a scene's cable."""
+    if name in CRAFT_NAMES:
+        if elements_per_piece is not None:
+            raise ValueError(f"{name}: elements_per_piece applies to scenes, not to the rotorcraft")
+        from laddermill_gym.rotorcraft.craft import load_craft
+
+        sim = load_craft(name).simulator()
+    else:
+        from laddermill_gym.ladder.scene import load_scene
+
+        sim = load_scene(name, elements_per_piece=elements_per_piece).simulator()
+    return with_settings(sim, **settings) if settings else sim
+
+
+def with_settings(sim: Simulator, state: np.ndarray | None = None, controls: np.ndarray | None = None,
+                  wind=None, **changes) -> Simulator:
+    """A new simulator of the same system as ``sim`` (same class, assembly and vehicle) started from ``state``
+    and ``controls`` (default the initial ones), integrator settings with ``changes``, and ``wind`` (a
+    ``WindParams``) replacing the assembly's wind when given."""
+    settings = dataclasses.replace(sim.settings, **changes)
+    asm = sim.assembly if wind is None else dataclasses.replace(sim.assembly, wind=wind)
+    x = sim.initial_state if state is None else state
+    u = sim.initial_controls if controls is None else controls
+    config = getattr(sim, "config", None)
+    if config is not None:  # the rotorcraft's simulator takes its settings from its config
+        return type(sim)(dataclasses.replace(config, settings=settings), asm, sim.layout, x, u)
+    return type(sim)(asm, x, settings, u)
