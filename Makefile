@@ -23,7 +23,7 @@ simulate:
 FIG = laddermill_gym/docs/figures
 RUN = runs/ppo_tethered_wing_seed0
 figures:
-	python -m agents.evaluate --env laddermill_gym/LadderChain-v0 --episodes 1 --out results/ladder_chain \
+	laddermill evaluate --env laddermill_gym/LadderChain-v0 --episodes 1 --out results/ladder_chain \
 		--controllers open_loop lqr lqr:configs/agents/lqr_ladder_chain_central.yaml
 	cp results/ladder_chain/lateral.png $(FIG)/ladder_chain_controllers.png
 	python -m laddermill_gym.studies.craft_stability --out results/craft_stability
@@ -35,9 +35,9 @@ figures:
 	cp results/meijaard/fig8_direction_step.png $(FIG)/meijaard_fig8_direction_step.png
 	python -m agents.train configs/agents/ppo_tethered_wing.yaml --out $(RUN)
 	cp $(RUN)/training_curve.png $(FIG)/ppo_training_curve.png
-	python -m agents.evaluate --controllers open_loop lqr $(RUN)/best_model.zip $(RUN)/model.zip --episodes 1 \
+	laddermill evaluate --controllers open_loop lqr $(RUN)/best_model.zip $(RUN)/model.zip --episodes 1 \
 		--out results/tethered_wing
 	cp results/tethered_wing/lateral.png $(FIG)/tethered_wing_controllers.png
 	for s in step_minus_0.05 step_0.1 gust; do \
-		python -m agents.evaluate --scenario $$s --controllers lqr $(RUN)/best_model.zip $(RUN)/model.zip \
+		laddermill evaluate --scenario $$s --controllers lqr $(RUN)/best_model.zip $(RUN)/model.zip \
 			--episodes 1 --out results/tethered_wing_$$s; done

@@ -1,3 +1,4 @@
-"""Command-line agents of laddermill_gym, run from the repository root: ``python -m agents.lqr`` (LQR design
-and closed-loop eigenvalues), ``python -m agents.train`` (Stable-Baselines3 PPO / SAC from
-configs/agents/*.yaml) and ``python -m agents.evaluate`` (any controller on seeded episodes)."""
+"""Thin entry points of the baseline agents for a repository checkout: ``python -m agents.train``,
+``python -m agents.evaluate`` and ``python -m agents.lqr`` run ``laddermill train | evaluate | lqr``, whose code lives
+in :mod:`laddermill_gym.harness` (installed with the package; this folder is not, so the name ``agents`` stays free
+in site-packages)."""

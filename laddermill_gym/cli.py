@@ -1,5 +1,14 @@
-"""Command line: ``laddermill simulate``, ``laddermill bench``, ``laddermill scenes``
-(also ``python -m laddermill_gym ...``)."""
+"""The laddermill_gym command line (also ``python -m laddermill_gym ...``).
+
+Examples:
+  laddermill simulate --start periodic --direction-step 0.01 --animate      # the moving mill, the paper's step
+  laddermill simulate tethered_wing --time 30 --out runs/wing
+  laddermill bench                                                          # real-time factors, ratios
+  laddermill train configs/agents/ppo_tethered_wing.yaml                    # Stable-Baselines3 from a config
+  laddermill evaluate --env laddermill_gym/LadderMill-v0 --controllers open_loop lqr
+  laddermill lqr --config configs/agents/lqr_laddermill.yaml                # LQR design report
+  laddermill COMMAND --help                                                 # each command's options
+"""
 
 from __future__ import annotations
 
@@ -136,9 +145,29 @@ def cmd_scenes(args) -> int:
     return 0
 
 
+#: commands with their own parser, run as ``laddermill NAME ARGS``: name -> (module with ``main(argv)``, help)
+FORWARDED: dict[str, tuple[str, str]] = {
+    "train": ("laddermill_gym.harness.train", "train a Stable-Baselines3 agent from configs/agents/*.yaml"),
+    "evaluate": ("laddermill_gym.harness.evaluate", "evaluate controllers (open_loop, lqr, trained runs) on "
+                 "seeded episodes; tables and plots"),
+    "lqr": ("laddermill_gym.harness.lqr_report", "design an LQR from configs/agents/lqr_*.yaml and report its "
+            "modes; optionally fly it against open loop"),
+    "site": ("laddermill_gym.quasisteady.cli", "pumping kite: quasi-steady power and site optimisation on wind data "
+             "(Lansdorp et al. 2008, Tables 1-2, Figs. 10-20, a turbine beside it)"),
+    "gust-bench": ("laddermill_gym.studies.gust_bench", "run controllers on a versioned gust benchmark suite "
+                   "(configs/benchmarks/); CSV, JSON and a scorecard"),
+}
+
+
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="laddermill", description=__doc__)
+    from laddermill_gym import __version__
+
+    p = argparse.ArgumentParser(prog="laddermill", description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--version", action="version", version=f"laddermill_gym {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
+    for name, (_module, text) in FORWARDED.items():
+        sub.add_parser(name, help=text, add_help=False)
     s = sub.add_parser("simulate", help="simulate a scene, save states (npz, CSV) and plots")
     s.add_argument("scene", nargs="?", default="laddermill",
                    help="scene name in configs/scenes or a YAML path (default: laddermill)")
@@ -182,6 +211,11 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if argv and argv[0] in FORWARDED:
+        import importlib
+
+        return int(importlib.import_module(FORWARDED[argv[0]][0]).main(argv[1:]) or 0)
     args = build_parser().parse_args(argv)
     return int(args.func(args) or 0)
 

@@ -31,7 +31,7 @@ def _small_config(tmp_path, **changes):
 
 def test_sb3_smoke_training_and_policy_as_controller(tmp_path, monkeypatch):
     pytest.importorskip("stable_baselines3")
-    from agents.train import train
+    from laddermill_gym.harness.train import train
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.rl_config import load_rl_config
 
@@ -54,7 +54,7 @@ def test_sb3_smoke_training_and_policy_as_controller(tmp_path, monkeypatch):
 
 def test_sac_config_trains_a_few_hundred_steps(tmp_path, monkeypatch):
     pytest.importorskip("stable_baselines3")
-    from agents.train import train
+    from laddermill_gym.harness.train import train
     from laddermill_gym.control.rl_config import load_rl_config
 
     data = yaml.safe_load(open("configs/agents/sac_tethered_wing.yaml"))
@@ -110,7 +110,7 @@ def test_sb3_adapter_episode_ends_match_native_vector_env():
 
 
 def test_evaluate_writes_tables_and_figure(tmp_path):
-    from agents.evaluate import main
+    from laddermill_gym.harness.evaluate import main
 
     out = tmp_path / "eval"
     assert main(["--env", TW, "--controllers", "open_loop", "lqr", "--episodes", "2", "--episode-time", "30",
@@ -123,7 +123,7 @@ def test_evaluate_writes_tables_and_figure(tmp_path):
 
 
 def test_run_episodes_records_until_each_copy_ends():
-    from agents.evaluate import run_episodes
+    from laddermill_gym.harness.evaluate import run_episodes
     from laddermill_gym.control.factory import make_controller
 
     env = WingVectorEnv(2, **dict(ENV_IDS[TW], episode_time=3.0))
@@ -137,7 +137,7 @@ def test_laddermill_ppo_config_trains_a_few_steps(tmp_path, monkeypatch):
     """configs/agents/ppo_laddermill.yaml is read strictly and trains through agents.train (an 11-wing mill with a
     short settle, a few hundred steps): the policy's action space is the config's 8 bands x 2 surfaces."""
     pytest.importorskip("stable_baselines3")
-    from agents.train import train
+    from laddermill_gym.harness.train import train
     from laddermill_gym.control.rl_config import env_family, load_rl_config
 
     mill = "laddermill_gym/LadderMill-v0"
@@ -159,7 +159,7 @@ def test_laddermill_ppo_config_trains_a_few_steps(tmp_path, monkeypatch):
     model = PPO.load(tmp_path / "run" / "model.zip")
     assert model.action_space.shape == (16,)
     # the evaluation harness builds the policy's env layout from the run's config (11 wings, bands x 2 surfaces)
-    from agents.evaluate import evaluate
+    from laddermill_gym.harness.evaluate import evaluate
 
     res = evaluate(mill, [str(tmp_path / "run")], 1, {"episode_time": 0.5}, tmp_path / "eval", progress=False)
     assert len(res) == 1 and (tmp_path / "eval" / "summary.csv").is_file()

@@ -76,7 +76,7 @@ def test_vector_env_copies_behave_like_single_envs():
 
 def test_ppo_smoke_run_and_policy_as_controller(tmp_path, monkeypatch):
     pytest.importorskip("stable_baselines3")
-    from agents.train import train
+    from laddermill_gym.harness.train import train
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.rl_config import load_rl_config
     from laddermill_gym.control.sb3_policy import SB3Controller
@@ -107,7 +107,7 @@ def test_ppo_smoke_run_and_policy_as_controller(tmp_path, monkeypatch):
 
 
 def test_evaluate_open_loop_and_lqr_on_the_craft(tmp_path):
-    from agents.evaluate import main
+    from laddermill_gym.harness.evaluate import main
 
     out = tmp_path / "eval"
     assert main(["--env", RC, "--controllers", "open_loop", "lqr", "--episodes", "2", "--episode-time", "5",
@@ -120,7 +120,7 @@ def test_evaluate_open_loop_and_lqr_on_the_craft(tmp_path):
 
 
 def test_evaluate_names_an_argument_the_env_does_not_take():
-    from agents.evaluate import check_env_kwargs
+    from laddermill_gym.harness.evaluate import check_env_kwargs
 
     with pytest.raises(ValueError, match="groups = 'per_wing'.*Rotorcraft-v0"):
         check_env_kwargs(RC, {"groups": "per_wing"})

@@ -128,7 +128,8 @@ def test_wheel_holds_the_sources_and_configs(wheel_site):
                                      f"extra {sorted(modules - want_modules)}")
     configs = {n for n in names if n.startswith("laddermill_gym/configs/")}
     want_configs = {"laddermill_gym/configs/" + p.relative_to(CONFIGS).as_posix()
-                    for pattern in ("*/*.yaml", "*/*.csv") for p in CONFIGS.glob(pattern)}
+                    for pattern in ("*/*.yaml", "*/*.csv", "*/*.csv.gz", "*/*.txt", "*/*.md")
+                    for p in CONFIGS.glob(pattern)}
     assert configs == want_configs, (f"wheel configs: missing {sorted(want_configs - configs)}, "
                                      f"extra {sorted(configs - want_configs)}")
     assert "laddermill_gym/py.typed" in names

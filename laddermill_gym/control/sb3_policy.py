@@ -1,6 +1,6 @@
 """A trained Stable-Baselines3 policy as a controller of the harness (needs the ``rl`` extra).
 
-Training (``python -m agents.train``) writes a run folder with the model (``model.zip``, or the best one
+Training (``laddermill train``) writes a run folder with the model (``model.zip``, or the best one
 ``best_model.zip``) and, when observations were normalised, the running statistics that go with each
 (``vecnormalize.pkl``, ``best_vecnormalize.pkl``).
 :class:`SB3Controller` applies the same normalisation before the policy, so evaluation sees raw

@@ -1,0 +1,283 @@
+"""Evaluate controllers of the harness on N seeded episodes of a registered scenario; CSV tables and plots.
+
+    laddermill evaluate --env laddermill_gym/TetheredWing-v0 --controllers open_loop lqr runs/ppo \
+        [--episodes 4] [--episode-time 300] [--direction-step 0.01] [--out results/tethered_wing]
+
+Controllers: ``open_loop``, ``lqr`` (the environment's default design), ``lqr:<config.yaml>`` or the path of an
+SB3 training run (its best model) or model file (``<run>/model.zip`` for the last one); see
+:mod:`laddermill_gym.control.factory`. Episode i uses seed i, so every
+controller meets the same disturbances. Writes ``summary.csv`` (one row per controller and episode: return,
+length [s], failure, mean power [W], largest lateral excursion [m], share of clipped action entries),
+``lateral.csv`` (controller, t, wing, lateral offset of episode 0) and ``lateral.png``. On Rotorcraft-v0 the
+"wing" is the craft (one lateral CG offset) and the failure names are the craft's.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+from tqdm import tqdm
+
+from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust
+from laddermill_gym.envs import ENV_IDS
+from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX
+from laddermill_gym.envs.task import FAILURES
+
+#: Named evaluation scenarios (disturbance lists); "paper_step" is the registered default of the environments
+SCENARIOS = {
+    "paper_step": [DirectionStep(step=0.01)],
+    "step_minus_0.05": [DirectionStep(step=-0.05)],
+    "step_0.1": [DirectionStep(step=0.1)],
+    "gust": [OneMinusCosineGust(amplitude=0.3, duration=10.0, time=5.0, direction_amplitude=0.05)],
+}
+
+
+@dataclass
+class EpisodeResults:
+    """Per-episode figures of one controller (n episodes, n_wings wings, T control periods).
+
+    returns (n,) [-];  lengths_s (n,) [s];  failures (n,) failure codes (0 = ran to the time limit);
+    mean_power_W (n,);  max_lateral_m (n, n_wings) largest |lateral offset| of every wing;
+    clipped_fraction (n,) share of action entries outside [-1, 1];
+    t (T + 1,) [s] and lateral_m (n, T + 1, n_wings) lateral offsets (nan after an episode ended), if recorded;
+    failure_names: failure code -> name of the environment (the wings' :data:`FAILURES` or the craft's).
+    """
+
+    returns: np.ndarray
+    lengths_s: np.ndarray
+    failures: np.ndarray
+    mean_power_W: np.ndarray
+    max_lateral_m: np.ndarray
+    clipped_fraction: np.ndarray
+    t: np.ndarray | None = None
+    lateral_m: np.ndarray | None = None
+    failure_names: dict[int, str] = field(default_factory=lambda: dict(FAILURES))
+
+
+def run_episodes(controller, env, n_episodes: int | None = None, record: bool = True,
+                 progress: bool = False) -> EpisodeResults:
+    """Run ``controller`` deterministically on every copy of the native vector env ``env`` (:func:`vector_env`:
+    :class:`~laddermill_gym.envs.vector.WingVectorEnv` or
+    :class:`~laddermill_gym.envs.rotorcraft.vector.RotorcraftVectorEnv`, seeds 0 .. num_envs - 1), each copy to
+    the end of its first episode. The lateral offsets come from ``env.lateral_offsets(obs)`` where the env has
+    it, else from the wing observation layout."""
+    n = env.num_envs
+    if n_episodes is not None and n_episodes != n:
+        raise ValueError(f"n_episodes = {n_episodes}: the env has {n} copies")
+    task = env.task
+    nw = task.n_wings
+    lateral = getattr(env, "lateral_offsets", None) or (
+        lambda o: o.reshape(n, nw, N_OBS_PER_WING)[:, :, OBS_INDEX["dy"]].astype(float))
+    obs, _ = env.reset(seed=list(range(n)))
+    alive = np.ones(n, bool)
+    ret, power, steps, clipped = np.zeros(n), np.zeros(n), np.zeros(n, int), np.zeros(n)
+    failures = np.zeros(n, int)
+    lengths = np.zeros(n)
+    dy0 = lateral(obs)
+    max_lat = np.abs(dy0)
+    series = [dy0] if record else None
+    bar = tqdm(total=task.n_steps_max, unit="step", disable=not progress, leave=False)
+    while alive.any():
+        a, _ = controller.predict(obs, deterministic=True)
+        obs, r, term, trunc, info = env.step(a)
+        dy = lateral(obs)
+        ret[alive] += r[alive]
+        power[alive] += info["power_W"][alive]
+        clipped[alive] += info["n_clipped"][alive]
+        steps[alive] += 1
+        max_lat[alive] = np.maximum(max_lat[alive], np.abs(dy[alive]))
+        if record:
+            series.append(np.where(alive[:, None], dy, np.nan))
+        ended = alive & (term | trunc)
+        failures[ended] = info["failure"][ended]
+        lengths[ended] = info["t"][ended]
+        alive &= ~ended
+        bar.update(1)
+    bar.close()
+    out = EpisodeResults(returns=ret, lengths_s=lengths, failures=failures, mean_power_W=power / np.maximum(steps, 1),
+                         max_lateral_m=max_lat, clipped_fraction=clipped / np.maximum(steps * task.n_actions, 1),
+                         failure_names=dict(getattr(env, "failure_names", FAILURES)))
+    if record:
+        lat = np.stack(series, axis=1)
+        out.t = task.control_dt * np.arange(lat.shape[1])
+        out.lateral_m = lat
+    return out
+
+
+def write_tables(out: Path, results: dict[str, EpisodeResults]) -> None:
+    out.mkdir(parents=True, exist_ok=True)
+    with open(out / "summary.csv", "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["controller", "seed", "return", "length_s", "failure", "mean_power_W", "max_lateral_m",
+                    "clipped_fraction"])
+        for name, res in results.items():
+            for i in range(len(res.returns)):
+                fail = res.failure_names[int(res.failures[i])]
+                w.writerow([name, i, f"{res.returns[i]:.4f}", f"{res.lengths_s[i]:.2f}", fail,
+                            f"{res.mean_power_W[i]:.1f}", f"{res.max_lateral_m[i].max():.4f}",
+                            f"{res.clipped_fraction[i]:.4f}"])
+    with open(out / "lateral.csv", "w", newline="") as fh:  # long format: the episodes end at different times
+        w = csv.writer(fh)
+        w.writerow(["controller", "t_s", "wing", "dy_m"])
+        for name, res in results.items():
+            for j, t in enumerate(res.t):
+                row = res.lateral_m[0, j]
+                if np.isnan(row).all():
+                    break
+                w.writerows([name, f"{t:.3f}", k, f"{v:.5g}"] for k, v in enumerate(row))
+
+
+def plot_results(out: Path, results: dict[str, EpisodeResults], title: str) -> Path:
+    """Lateral offset against time (episode 0) per controller; for chains also the largest excursion of
+    every wing over the episode."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from laddermill_gym.plotting import save_figure
+
+    first = next(iter(results.values()))
+    nw = first.lateral_m.shape[2]
+    ncol = 1 if nw == 1 else 2
+    fig, axes = plt.subplots(1, ncol, figsize=(6.5 * ncol, 4), squeeze=False)
+    ax = axes[0, 0]
+    for i, (name, res) in enumerate(results.items()):
+        for k in range(nw):
+            ax.plot(res.t, res.lateral_m[0, :, k], color=f"C{i}", lw=1.2 if nw == 1 else 0.4,
+                    label=name if k == 0 else None)
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("lateral offset dy [m]" + ("" if nw == 1 else " (every wing)"))
+    ax.set_yscale("symlog", linthresh=0.1)
+    ax.grid(alpha=0.3)
+    ax.legend()
+    if nw > 1:
+        ax = axes[0, 1]
+        for i, (name, res) in enumerate(results.items()):
+            ax.plot(np.arange(nw), res.max_lateral_m[0], "o-", ms=2, color=f"C{i}", label=name)
+        ax.set_xlabel("slot (0: lowest ascending, veered side; the wing in it changes at each transfer)"
+                      if "LadderMill" in title else "wing index (0 at the hauled end)")
+        ax.set_ylabel("largest |dy| over the episode [m]")
+        ax.set_yscale("log")
+        ax.grid(alpha=0.3)
+        ax.legend()
+    fig.suptitle(title, fontsize=10)
+    return save_figure(fig, out / "lateral.png")
+
+
+def controller_label(spec: str) -> str:
+    """Short name of a controller spec for tables and legends."""
+    if spec.startswith("lqr:"):
+        return "lqr:" + Path(spec[4:]).stem
+    path = Path(spec)
+    if path.is_file():
+        return f"{path.parent.name}/{path.stem}"
+    return path.name if path.exists() else spec
+
+
+def check_env_kwargs(env_id: str, env_kwargs: dict) -> None:
+    """ValueError naming an argument (and its value) that the registered environment ``env_id`` does not take,
+    e.g. a scenario's ``disturbances`` or ``episode_time`` for an environment without them."""
+    from laddermill_gym.envs import env_arguments
+
+    known = env_arguments(env_id)
+    for key, value in env_kwargs.items():
+        if key not in known:
+            raise ValueError(f"{key} = {value!r}: {env_id} takes no such argument (known: {', '.join(known)})")
+
+
+def vector_env(env_id: str, n: int, env_kwargs: dict):
+    """``n`` copies of the registered environment ``env_id`` (arguments ``env_kwargs`` over the registered ones,
+    checked by :func:`check_env_kwargs`): its native vector env (Gymnasium's ``vector_entry_point``), stepped by
+    one compiled kernel."""
+    import gymnasium as gym
+
+    check_env_kwargs(env_id, env_kwargs)
+    kw = dict(ENV_IDS[env_id], **env_kwargs)
+    return gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **kw)
+
+
+def policy_env_kwargs(spec: str) -> dict:
+    """The control settings a trained policy was trained with (the ``CARRIED_KWARGS`` of the ``config.yaml`` in its
+    run folder: action groups, surfaces, model), so that its evaluation env has the policy's action and observation
+    layout; {} for a controller that is not a run folder or a model file in one."""
+    path = Path(spec)
+    folder = path if path.is_dir() else path.parent
+    if not (path.exists() and (folder / "config.yaml").is_file()):
+        return {}
+    from laddermill_gym.control.rl_config import load_rl_config
+
+    return load_rl_config(folder / "config.yaml").carried_env_kwargs()
+
+
+def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dict, out: Path,
+             progress: bool = True) -> dict[str, EpisodeResults]:
+    """Run every controller spec on ``episodes`` seeded episodes (seeds 0 .. episodes - 1) of ``env_id`` with
+    arguments ``env_kwargs`` (episode_time [s], disturbances) and write the tables into ``out``."""
+    from laddermill_gym.control.factory import make_controller
+
+    results = {}
+    for spec in controllers:
+        kw = dict(env_kwargs, **policy_env_kwargs(spec))
+        ctrl = make_controller(spec, env_id, kw)
+        env = vector_env(env_id, episodes, kw)
+        results[controller_label(spec)] = run_episodes(ctrl, env, progress=progress)
+        env.close()
+    write_tables(out, results)
+    return results
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(prog="laddermill evaluate", description=__doc__.split("\n\n")[0])
+    p.add_argument("--env", default="laddermill_gym/TetheredWing-v0", choices=sorted(ENV_IDS))
+    p.add_argument("--controllers", nargs="+", default=["open_loop", "lqr"],
+                   help="each one of: open_loop (trim controls held); lqr (the environment's default design in "
+                   "configs/agents/lqr_<scene>.yaml); lqr:PATH (an LQR config file); a training run folder "
+                   "(its best model, with its VecNormalize statistics) or a model .zip file (default: open_loop "
+                   "lqr)")
+    p.add_argument("--episodes", type=int, default=4, help="seeded episodes per controller (seeds 0..n-1)")
+    p.add_argument("--episode-time", type=float, help="[s] episode length (default: the environment's)")
+    p.add_argument("--direction-step", type=float, help="[rad] wind-direction step at t = 1 s (default: the "
+                   "environment's, 0.01 rad)")
+    p.add_argument("--scenario", choices=sorted(SCENARIOS), help="a named disturbance: paper_step (0.01 rad "
+                   "direction step at 1 s), step_minus_0.05, step_0.1, gust (1-cosine, +30 %% speed and 0.05 rad "
+                   "direction over 10 s from t = 5 s)")
+    p.add_argument("--out", type=Path, help="output folder (default results/<env name>)")
+    args = p.parse_args(argv)
+    if args.episodes < 1:
+        p.error(f"--episodes = {args.episodes}: must be >= 1")
+    env_kwargs = {}
+    if args.episode_time is not None:
+        if not args.episode_time > 0:
+            p.error(f"--episode-time = {args.episode_time}: must be > 0 s")
+        env_kwargs["episode_time"] = args.episode_time
+    if args.direction_step is not None and args.scenario is not None:
+        p.error("--direction-step and --scenario exclude each other")
+    if args.direction_step is not None:
+        env_kwargs["disturbances"] = [DirectionStep(step=args.direction_step)]
+    if args.scenario is not None:
+        env_kwargs["disturbances"] = SCENARIOS[args.scenario]
+    name = args.env.split("/")[-1]
+    out = args.out or Path("results") / name
+    try:
+        check_env_kwargs(args.env, env_kwargs)
+    except ValueError as err:
+        p.error(str(err))
+    results = evaluate(args.env, args.controllers, args.episodes, env_kwargs, out)
+    fig = plot_results(out, results, f"{args.env}: {args.episodes} episode(s), lateral offset (episode 0)")
+    print(f"{'controller':<28} {'return':>10} {'length [s]':>11} {'max |dy| [m]':>13} {'power [W]':>10}  failures")
+    for spec, res in results.items():
+        fails = sorted({res.failure_names[int(c)] for c in res.failures if c})
+        print(f"{spec:<28} {np.mean(res.returns):10.2f} {np.mean(res.lengths_s):11.1f} "
+              f"{np.max(res.max_lateral_m):13.4f} {np.mean(res.mean_power_W):10.1f}  {', '.join(fails) or '-'}")
+    print(f"tables in {out}/summary.csv, {out}/lateral.csv; figure {fig}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,221 @@
+"""Train a Stable-Baselines3 agent (PPO or SAC) on a laddermill_gym environment from a config file.
+
+    laddermill train configs/agents/ppo_tethered_wing.yaml [--out runs/ppo] [--seed 1]
+                           [--timesteps N] [--minutes M]
+
+The run folder gets: ``config.yaml`` (the config used), ``algorithm.txt``, TensorBoard logs (``tb/``),
+checkpoints (``checkpoints/``), ``evaluations.csv`` (deterministic returns on the registered evaluation
+scenario, seeds 0 .. n - 1, against wall time and env steps), ``best_model.zip`` (best evaluation) with
+``best_vecnormalize.pkl``, ``model.zip`` (last) with ``vecnormalize.pkl`` (observation statistics) and
+``training_curve.png`` (with the LQR and open-loop returns on the same episodes, also in ``references.csv``).
+Training stops at ``total_timesteps`` or ``time_limit_minutes``, whichever comes first. A progress bar shows
+steps, episodes and the latest evaluation. Every environment (the wings and Rotorcraft-v0,
+configs/agents/ppo_rotorcraft.yaml) trains and evaluates on its batched kernel (:mod:`laddermill_gym.envs.sb3`,
+the native vector env).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import dataclasses
+import shutil
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+from tqdm import tqdm
+
+from laddermill_gym.control.rl_config import RLConfig, load_rl_config
+
+
+def _evaluate(policy, env, n_episodes: int) -> tuple[np.ndarray, np.ndarray]:
+    """Deterministic returns and lengths [s] of ``n_episodes`` copies of the evaluation env (seeds 0..n-1),
+    each run to its first end."""
+    from laddermill_gym.harness.evaluate import run_episodes
+
+    res = run_episodes(policy, env, n_episodes, record=False)
+    return res.returns, res.lengths_s
+
+
+def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm):
+    from stable_baselines3.common.callbacks import BaseCallback
+
+    from laddermill_gym.control.sb3_policy import SB3Controller
+
+    class Harness(BaseCallback):
+        """Progress bar, time limit, periodic evaluation (best model kept) and checkpoints."""
+
+        def __init__(self):
+            super().__init__()
+            self.t0 = time.perf_counter()
+            self.next_eval = 0
+            self.next_ckpt = cfg.checkpoint_every
+            self.best = -np.inf
+            self.rows = []
+
+        def _vecnorm(self):
+            from stable_baselines3.common.vec_env import VecNormalize
+
+            return self.model.get_env() if isinstance(self.model.get_env(), VecNormalize) else None
+
+        def evaluate(self):
+            vn = self._vecnorm()
+            ctrl = SB3Controller(self.model, *((vn.obs_rms.mean, vn.obs_rms.var, vn.clip_obs, vn.epsilon)
+                                               if vn is not None else ()))
+            returns, lengths = _evaluate(ctrl, eval_env, cfg.eval_episodes)
+            minutes = (time.perf_counter() - self.t0) / 60
+            row = dict(steps=self.num_timesteps, minutes=round(minutes, 3), mean_return=float(np.mean(returns)),
+                       min_return=float(np.min(returns)), mean_length_s=float(np.mean(lengths)))
+            self.rows.append(row)
+            self.logger.record("eval/mean_return", row["mean_return"])
+            self.logger.record("eval/mean_length_s", row["mean_length_s"])
+            if row["mean_return"] > self.best:
+                self.best = row["mean_return"]
+                self.model.save(out / "best_model.zip")
+                if vn is not None:
+                    vn.save(str(out / "best_vecnormalize.pkl"))
+            with open(out / "evaluations.csv", "w", newline="") as fh:
+                w = csv.DictWriter(fh, fieldnames=list(row))
+                w.writeheader()
+                w.writerows(self.rows)
+            pbar.set_postfix(eval_return=f"{row['mean_return']:.1f}", best=f"{self.best:.1f}")
+
+        def _on_step(self) -> bool:
+            pbar.update(self.num_timesteps - pbar.n)
+            if self.num_timesteps >= self.next_eval:
+                self.evaluate()
+                self.next_eval = self.num_timesteps + cfg.eval_every
+            if self.num_timesteps >= self.next_ckpt:
+                self.model.save(out / "checkpoints" / f"step_{self.num_timesteps}.zip")
+                self.next_ckpt += cfg.checkpoint_every
+            return (time.perf_counter() - self.t0) < 60.0 * cfg.time_limit_minutes
+
+    return Harness()
+
+
+def plot_curve(out: Path, rows: list[dict], reference: dict[str, float] | None = None) -> Path:
+    """Evaluation return against wall time, with horizontal reference lines (e.g. LQR, open loop)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from laddermill_gym.plotting import save_figure
+
+    fig, ax = plt.subplots(figsize=(6.5, 4))
+    ax.plot([r["minutes"] for r in rows], [r["mean_return"] for r in rows], "o-", label="agent (deterministic)")
+    for i, (name, value) in enumerate((reference or {}).items()):
+        ax.axhline(value, ls="--", color=f"C{i + 1}", label=name)
+    ax.set_xlabel("wall time [min]")
+    ax.set_ylabel("evaluation return [-]")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    return save_figure(fig, out / "training_curve.png")
+
+
+def reference_returns(cfg: RLConfig, eval_env) -> dict[str, float]:
+    """Mean returns of the model-based controllers (LQR, open loop) on the evaluation episodes, for the
+    training curve; empty where the action layout does not suit them (grouped or angle-of-attack actions)."""
+    from laddermill_gym.control.factory import make_controller
+
+    kw = cfg.carried_env_kwargs()
+    refs = {}
+    for spec in ("lqr", "open_loop"):
+        try:
+            ctrl = make_controller(spec, cfg.env_id, kw)
+        except ValueError as err:
+            print(f"no {spec} reference: {err}")
+            continue
+        refs[spec] = float(np.mean(_evaluate(ctrl, eval_env, cfg.eval_episodes)[0]))
+    return refs
+
+
+def training_env(cfg: RLConfig):
+    """The SB3 VecEnv of ``cfg.n_envs`` seeded training copies on the environment's batched task."""
+    from laddermill_gym.envs.sb3 import sb3_vec_env
+
+    return sb3_vec_env(cfg.env_id, cfg.n_envs, seed=cfg.seed, **cfg.train_env_kwargs())
+
+
+def evaluation_env(cfg: RLConfig):
+    """``cfg.eval_episodes`` copies of the registered evaluation scenario: the native vector env."""
+    import gymnasium as gym
+
+    return gym.make_vec(cfg.env_id, num_envs=cfg.eval_episodes, vectorization_mode="vector_entry_point",
+                        **cfg.eval_env_kwargs())
+
+
+def train(cfg: RLConfig, out: Path) -> dict:
+    """Train according to ``cfg`` into the folder ``out``; returns a summary dict."""
+    import stable_baselines3 as sb3
+    import torch
+    from stable_baselines3.common.vec_env import VecMonitor, VecNormalize
+
+    torch.set_num_threads(1)
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "checkpoints").mkdir(exist_ok=True)
+    shutil.copyfile(cfg.file, out / "config.yaml")
+    (out / "algorithm.txt").write_text(cfg.algorithm + "\n")
+    venv = VecMonitor(training_env(cfg))
+    if cfg.normalize_observations:
+        venv = VecNormalize(venv, norm_obs=True, norm_reward=False, clip_obs=10.0)
+    eval_env = evaluation_env(cfg)
+    algo = getattr(sb3, cfg.algorithm)
+    model = algo("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=cfg.policy_kwargs or None,
+                 tensorboard_log=str(out / "tb"), verbose=0, device="cpu", **cfg.hyperparameters)
+    t0 = time.perf_counter()
+    with tqdm(total=cfg.total_timesteps, unit="step", desc=f"{cfg.algorithm} {cfg.env_id}", smoothing=0.05) as pbar:
+        cb = make_callback(cfg, out, eval_env, pbar)
+        model.learn(total_timesteps=cfg.total_timesteps, callback=cb, tb_log_name=cfg.algorithm)
+        cb.evaluate()
+    minutes = (time.perf_counter() - t0) / 60
+    model.save(out / "model.zip")
+    if cfg.normalize_observations:
+        venv.save(str(out / "vecnormalize.pkl"))
+    refs = reference_returns(cfg, eval_env)
+    with open(out / "references.csv", "w") as fh:
+        fh.write("controller,mean_return\n" + "".join(f"{k},{v:.4f}\n" for k, v in refs.items()))
+    plot_curve(out, cb.rows, refs)
+    summary = dict(steps=int(model.num_timesteps), minutes=round(minutes, 2), best_eval_return=cb.best,
+                   last_eval_return=cb.rows[-1]["mean_return"], references=refs)
+    return summary
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(prog="laddermill train", description=__doc__.split("\n\n")[0])
+    p.add_argument("config", help="configs/agents/ppo_*.yaml or sac_*.yaml")
+    p.add_argument("--out", type=Path, help="run folder (default runs/<config name>_seed<seed>)")
+    p.add_argument("--seed", type=int, help="override the config's seed")
+    p.add_argument("--timesteps", type=int, help="override total_timesteps")
+    p.add_argument("--minutes", type=float, help="override time_limit_minutes")
+    p.add_argument("--n-envs", type=int, help="override n_envs")
+    p.add_argument("--replot", action="store_true", help="only redraw the training curve of the run folder "
+                   "--out (config: its config.yaml) with the LQR and open-loop references")
+    args = p.parse_args(argv)
+    cfg = load_rl_config(args.config)
+    if args.replot:
+        if args.out is None or not (args.out / "evaluations.csv").is_file():
+            p.error("--replot needs --out RUN_FOLDER with an evaluations.csv")
+        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(args.out / "evaluations.csv"))]
+        refs = reference_returns(cfg, evaluation_env(cfg))
+        print(f"wrote {plot_curve(args.out, rows, refs)}; references {refs}")
+        return 0
+    over = {k: v for k, v in (("seed", args.seed), ("total_timesteps", args.timesteps),
+                              ("time_limit_minutes", args.minutes), ("n_envs", args.n_envs)) if v is not None}
+    for k, v in over.items():
+        if v <= 0 and k != "seed":
+            p.error(f"--{k.replace('_', '-')} = {v}: must be > 0")
+    cfg = dataclasses.replace(cfg, **over)
+    out = args.out or Path("runs") / f"{Path(args.config).stem}_seed{cfg.seed}"
+    summary = train(cfg, out)
+    print(f"trained {summary['steps']} steps in {summary['minutes']} min; evaluation return best "
+          f"{summary['best_eval_return']:.2f}, last {summary['last_eval_return']:.2f}; run folder {out}")
+    for name, value in summary["references"].items():
+        print(f"  {name} on the same episodes: {value:.2f}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
