@@ -263,8 +263,7 @@ def _run(args) -> int:
 
 
 def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.gust_bench",
-                                description=__doc__.split("\n\n")[0])
+    p = argparse.ArgumentParser(prog="laddermill gust-bench", description=__doc__.split("\n\n")[0])
     _arguments(p)
     return _run(p.parse_args(argv))
 
