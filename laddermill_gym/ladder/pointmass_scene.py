@@ -14,7 +14,7 @@ import numpy as np
 from laddermill_gym.atmosphere.wind_kernels import density, wind_point
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE
 from laddermill_gym.kernels.pointmass.forces import kite_force
-from laddermill_gym.model.configio import ConfigError, Section, config_path, read_yaml
+from laddermill_gym.model.configio import ConfigError, Section, config_path
 from laddermill_gym.model.pointmass import PointMassKite, PointMassString, attitude_controls, pack
 from laddermill_gym.sim.pointmass import METHODS, PointMassSimulator
 
@@ -32,14 +32,29 @@ class PointMassScene:
     dt: float
     piece_length: float
 
-    def initial_state(self) -> np.ndarray:
-        return quasi_static_state(self.string, self.controls)
+    @property
+    def n_wings(self) -> int:
+        return self.string.n_kites
 
-    def simulator(self, x0: np.ndarray | None = None, method: str | None = None,
-                  dt: float | None = None) -> PointMassSimulator:
-        x0 = self.initial_state() if x0 is None else x0
-        return PointMassSimulator(self.string, x0, self.controls, self.dt if dt is None else dt,
-                                  self.method if method is None else method)
+    def initial_state(self) -> tuple[np.ndarray, np.ndarray]:
+        """(state, controls): a free upper end starts quasi-static at the file's attitude; a chain between two
+        ground points starts from the rigid fidelity's static equilibrium of the same file (its wings' CG
+        positions and attitudes, ``ladder/fidelity.py``)."""
+        if self.string.end is None:
+            return quasi_static_state(self.string, self.controls), self.controls
+        from laddermill_gym.ladder.fidelity import pointmass_from_rigid
+
+        return pointmass_from_rigid(self)
+
+    def simulator(self, x0: np.ndarray | None = None, controls: np.ndarray | None = None,
+                  method: str | None = None, dt: float | None = None) -> PointMassSimulator:
+        fresh = x0 is None
+        if fresh:
+            x0, c0 = self.initial_state()
+            controls = c0 if controls is None else controls
+        return PointMassSimulator(self.string, x0, self.controls if controls is None else controls,
+                                  self.dt if dt is None else dt, self.method if method is None else method,
+                                  copy=not fresh)
 
 
 def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: float | None = None,
@@ -67,18 +82,27 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
     for key, pname in (("start", start), ("end", end)):
         if pname is not None and pname not in points:
             raise ch.error(key, pname, f"is not one of the ground points {sorted(points)}")
-    el = fid.number("element_length", positive=True)
+    fid.raw("wing", None)
+    if element_length is None:
+        el = fid.number("element_length", positive=True)
+    else:
+        fid.raw("element_length", None)
+        el = float(element_length)
     for key in ("sag", "cable_aero"):
         fid.raw(key, None)  # the rigid fidelity's switches: the string needs no sag correction, drag always on
     fid.done()
     ini = s.section("initial")
-    att = [math.radians(ini.number(k, 0.0)) for k in ("roll_deg", "pitch_deg", "yaw_deg")]
-    for key in ("method", "alpha_deg", "elevation_deg", "elevator_up_deg", "elevator_down_deg"):
+    pitch0 = ini.number("alpha_deg", 0.0)  # a rigid scene's trim alpha: the kite's pitch at rest in level wind
+    att = [math.radians(ini.number("roll_deg", 0.0)), math.radians(ini.number("pitch_deg", pitch0)),
+           math.radians(ini.number("yaw_deg", 0.0))]
+    for key in ("method", "elevation_deg", "elevator_up_deg", "elevator_down_deg"):
         ini.raw(key, None)  # the rigid fidelity's start: the point-mass start is quasi-static
     ini.done()
     it = s.section("integrator")
     meth = it.text("method", choices=METHODS + ("rk4", "dp54"))
-    meth = "implicit" if meth not in METHODS else meth
+    meth = "implicit" if meth not in METHODS else meth  # a rigid scene's integrator: the implicit method
+    if method is not None and method not in METHODS:
+        raise ConfigError(f"{path}: method override {method!r}: the point-mass fidelity has {METHODS}")
     step = it.number("dt", positive=True)
     vmax = it.number("max_speed", 1000.0, positive=True)
     hg = it.number("ground_height", 0.0)
@@ -87,7 +111,6 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
         it.raw(key, None)
     it.done()
     s.done()
-    el = el if element_length is None else float(element_length)
     nk = nk if n_kites is None else int(n_kites)
     per = piece / el
     if abs(per - round(per)) > 1e-6 * per or round(per) < 1:
@@ -104,16 +127,14 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
                           dt=step if dt is None else float(dt), piece_length=piece)
 
 
-def load_pointmass_scene(path: str | Path, **overrides) -> PointMassScene:
-    """Load a scene file at the point-mass fidelity (its ``fidelity.wing`` must be ``pointmass``)."""
-    from laddermill_gym.ladder.scene import scene_path
+def load_pointmass_scene(path: str | Path, *, element_length: float | None = None, n_kites: int | None = None,
+                         dt: float | None = None, method: str | None = None) -> PointMassScene:
+    """Load any scene file at the point-mass fidelity (``ladder.scene.load_scene(..., fidelity='pointmass')``).
+    A rigid scene needs ``fidelity.element_length`` in its file or the ``element_length`` override [m]."""
+    from laddermill_gym.ladder.scene import load_scene
 
-    path = scene_path(path)
-    s = read_yaml(path)
-    fid = s.section("fidelity")
-    if fid.text("wing", "rigid", choices=("rigid", "pointmass")) != "pointmass":
-        raise ConfigError(f"{path}: field 'fidelity.wing' must be 'pointmass' for a point-mass scene")
-    return read_pointmass(s, fid, path, **overrides)
+    return load_scene(path, fidelity="pointmass", element_length=element_length, n_wings=n_kites, dt=dt,
+                      method=method)
 
 
 def _kite_net_force(string: PointMassString, M, p: np.ndarray, u: np.ndarray, k: int) -> np.ndarray:

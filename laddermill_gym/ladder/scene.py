@@ -198,12 +198,30 @@ class Scene:
         return dataclasses.replace(self, **changes)
 
 
+FIDELITIES = ("rigid", "pointmass")
+
+
 def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: bool | None = None,
                cable_aero: bool | None = None, elements_per_piece: int | None = None,
-               n_wings: int | None = None, dt: float | None = None, method: str | None = None) -> Scene:
-    """Load a scene YAML; keyword overrides replace the file's values (for benchmarks and studies)."""
+               n_wings: int | None = None, dt: float | None = None, method: str | None = None,
+               fidelity: str | None = None, element_length: float | None = None):
+    """Load a scene YAML; keyword overrides replace the file's values (for benchmarks and studies).
+
+    The fidelity is the file's ``fidelity.wing`` ('rigid', the default, or 'pointmass') unless ``fidelity``
+    overrides it; at 'pointmass' the result is a :class:`~laddermill_gym.ladder.pointmass_scene.PointMassScene`
+    (its string at ``fidelity.element_length`` or ``element_length`` [m]; ``n_wings``, ``dt`` and ``method``
+    ('explicit' or 'implicit') apply), and nothing of the rigid model is built."""
     path = scene_path(name_or_path)
     s = read_yaml(path)
+    fdata = s.data.get("fidelity")
+    wing_fid = fidelity or (fdata.get("wing", "rigid") if isinstance(fdata, dict) else "rigid")
+    if wing_fid not in FIDELITIES:
+        raise ConfigError(f"{path}: fidelity.wing = {wing_fid!r}: must be one of {FIDELITIES}")
+    if wing_fid == "pointmass":
+        from laddermill_gym.ladder.pointmass_scene import read_pointmass
+
+        return read_pointmass(s, s.section("fidelity"), path, element_length=element_length, n_kites=n_wings,
+                              dt=dt, method=method)
     name = s.text("name")
     desc = s.text("description", "")
     dim = s.number("dimension", integer=True)
@@ -238,6 +256,8 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
                        "a moving cable (station) needs two ground points (start and end) and one element per "
                        "piece (Meijaard's boundary conditions)")
     fid = s.section("fidelity")
+    fid.text("wing", "rigid", choices=FIDELITIES)
+    fid.raw("element_length", None)  # the point-mass string's resolution, unused by the rigid model
     sag_on = fid.flag("sag")
     caero_on = fid.flag("cable_aero")
     fid.done()

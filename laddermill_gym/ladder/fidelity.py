@@ -1,0 +1,46 @@
+"""Between fidelities: a point-mass start from the rigid model's static equilibrium of the same scene file (the
+same trim), and the comparison of the two static solutions (shape and tension along the cable).
+
+The point-mass kite sits at the rigid wing's CG with the wing's attitude (3-2-1 Euler angles) as its commanded
+attitude; the string's nodes start evenly spaced on the straight line between consecutive kites (or ground
+points), at rest. ``docs/pointmass.md`` ("Between fidelities") discusses the differences.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from laddermill_gym.kernels.contract import N3_POS, N3_SIZE
+from laddermill_gym.kernels.pointmass.layout import PU_SIZE
+
+
+def rigid_static(pm_scene):
+    """(rigid simulator at the static equilibrium, rigid scene) of the file behind a point-mass scene."""
+    from laddermill_gym.ladder.scene import load_scene
+
+    rigid = load_scene(pm_scene.file, fidelity="rigid", n_wings=pm_scene.string.n_kites)
+    x, u = rigid.initial_state()
+    return rigid.simulator(x, u), rigid
+
+
+def _string_through(string, points: np.ndarray) -> np.ndarray:
+    """State (6 n,) of the string at rest with its kites at ``points`` (n_k, 3) [m], nodes evenly on the
+    straight lines between consecutive kites and the anchors."""
+    x = np.zeros(string.state_size)
+    xs = x.reshape(-1, N3_SIZE)
+    corners = [string.anchor, *points] + ([string.end] if string.end is not None else [])
+    ends = [*string.kite_nodes] + ([string.n_nodes] if string.end is not None else [])
+    j0 = 0
+    for k, jk in enumerate(ends):
+        m = jk - j0 + 1  # elements of this piece
+        f = np.arange(1, m + (0 if jk == string.n_nodes else 1)) / m
+        xs[j0:j0 + f.size, N3_POS:N3_POS + 3] = corners[k] + np.outer(f, corners[k + 1] - corners[k])
+        j0 = jk + 1
+    return x
+
+
+def pointmass_from_rigid(pm_scene) -> tuple[np.ndarray, np.ndarray]:
+    """(state, controls) of a point-mass scene at the rigid model's static equilibrium of the same file."""
+    sim, _ = rigid_static(pm_scene)
+    u = np.ascontiguousarray(sim.wing_euler().reshape(-1, PU_SIZE).ravel())
+    return _string_through(pm_scene.string, sim.wing_positions()), u
