@@ -21,7 +21,7 @@ T_STEP = 0.2037  # [s] start of the 1 ms direction ramp: inside a step of every 
 T_END = 0.45  # [s]
 
 
-def _sim(bp: bool, dt: float, method: str = "rk4") -> Simulator:
+def _sim(bp: str, dt: float, method: str = "rk4") -> Simulator:
     scene = load_scene("tethered_wing")
     start = scene.simulator()
     wind = scene.assembly.wind.with_modulation(T_STEP, 1e-3, np.ones(2), np.array([0.0, 0.05]))
@@ -44,7 +44,7 @@ def test_kink_times_closed_form():
 def _dop853_reference() -> np.ndarray:
     """scipy DOP853 between the kinks; inside a piece the time passed to the rhs stays below the piece's end, so
     the rhs follows the piece's own linear segment up to its end."""
-    sim = _sim(True, 0.005)
+    sim = _sim("inside", 0.005)
     x = sim.state.copy()
     ends = [0.0, T_STEP, T_STEP + 1e-3, T_END]
     for ta, tb in zip(ends[:-1], ends[1:], strict=True):
@@ -63,21 +63,21 @@ def reference():
 
 def test_rk4_fourth_order_across_a_ramp(reference):
     errs = {}
-    for bp in (True, False):
+    for bp in ("inside", "off"):
         errs[bp] = []
         for dt in (0.005, 0.0025, 0.00125):
             sim = _sim(bp, dt)
             sim.step(n_steps=int(round(T_END / dt)))
             assert abs(sim.t - T_END) < 1e-12
             errs[bp].append(np.max(np.abs(sim.state - reference)))
-    e = np.array(errs[True])
+    e = np.array(errs["inside"])
     order = np.log2(e[:-1] / e[1:])
     assert np.all(order > 3.6), (errs, order)
-    assert np.all(e < 1e-2 * np.array(errs[False])), errs  # split steps: at least 100x more accurate here
+    assert np.all(e < 1e-2 * np.array(errs["off"])), errs  # split steps: at least 100x more accurate here
 
 
 def test_dp54_ends_steps_on_kinks(reference):
-    sim = _sim(True, 0.005, "dp54")
+    sim = _sim("inside", 0.005, "dp54")
     sim.advance_to(T_END, rtol=1e-10, atol=1e-10)
     assert np.max(np.abs(sim.state - reference)) < 1e-6
 
@@ -85,7 +85,7 @@ def test_dp54_ends_steps_on_kinks(reference):
 def test_aligned_grid_unchanged():
     """A modulation grid on the step grid splits nothing: the run is the run without breakpoint stepping."""
     runs = []
-    for bp in (True, False):
+    for bp in ("inside", "off"):
         scene = load_scene("tethered_wing")
         start = scene.simulator()
         wind = scene.assembly.wind.with_modulation(0.1, 0.05, np.array([1.0, 1.1, 1.1]), np.zeros(3))
@@ -100,4 +100,32 @@ def test_breakpoints_setting_checked():
     from laddermill_gym.sim.simulator import IntegratorSettings
 
     with pytest.raises(ValueError, match="breakpoints"):
-        IntegratorSettings(breakpoints="yes")
+        IntegratorSettings(breakpoints=True)
+
+
+def test_aligned_kinks_fourth_order_with_all():
+    """A gust sampled on the step grid: every step ends on a kink. "all" gives each step its own segment's line
+    (RK4's fourth order: error ratio near 16 per halving); across the kinks ("inside" = "off" here) the end stage
+    sees the next segment's slope and the error falls far slower."""
+    scene = load_scene("tethered_wing")
+    start = scene.simulator()
+    tt = np.arange(0.0, 0.4001, 0.02)
+    speed = 1.0 + 0.15 * (1.0 - np.cos(2 * np.pi * tt / 0.4))
+    asm = dataclasses.replace(scene.assembly, wind=scene.assembly.wind.with_modulation(0.1, 0.02, speed,
+                                                                                     np.zeros_like(speed)))
+
+    def run(mode, dt, method="rk4"):
+        sim = Simulator(asm, start.initial_state, dataclasses.replace(scene.settings, dt=dt, method=method,
+                                                                      breakpoints=mode), start.initial_controls)
+        if method == "dp54":
+            for t in np.arange(0.02, 0.6001, 0.02):  # stop on every kink: DOP853-like reference pieces
+                sim.advance_to(t, rtol=1e-12, atol=1e-12)
+        else:
+            sim.step(n_steps=int(round(0.6 / dt)))
+        return sim.state.copy()
+
+    ref = run("all", 0.005, "dp54")
+    err = {m: [np.max(np.abs(run(m, dt) - ref)) for dt in (0.0025, 0.00125)] for m in ("all", "inside")}
+    assert err["all"][0] / err["all"][1] > 12, err
+    assert err["inside"][0] / err["inside"][1] < 8, err  # measured 5.4: far from fourth order
+    assert err["all"][1] < 0.05 * err["inside"][1], err

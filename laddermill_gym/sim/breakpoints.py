@@ -25,6 +25,10 @@ from laddermill_gym.kernels.integrate import OK, dp54_advance, rk4_advance
 #: a kink closer than this fraction of the step to a step's end counts as on it (no split): accumulated time
 #: roundoff must not split a step that a grid aligned with the step was meant to end on
 ALIGN_TOL = 1e-9
+#: ``IntegratorSettings.breakpoints``: "off" integrates across kinks (as before); "inside" splits the steps that
+#: hold a kink inside (steps that only end or start on one run as before, bit for bit); "all" also runs those
+#: with their own segment's modulation (fourth order on a kink grid aligned with the steps too)
+BREAKPOINT_MODES = ("off", "inside", "all")
 
 
 def modulation_kinks(tmod: np.ndarray, ms: np.ndarray, md: np.ndarray) -> np.ndarray:
@@ -59,28 +63,41 @@ def segment_model(model, ta: float, tb: float):
     return m._replace(tmod=tmod, ms=ms, md=md)
 
 
-def split_steps(kinks: np.ndarray, t: float, dt: float, n: int) -> list[tuple[int, list[float]]]:
+def split_steps(kinks: np.ndarray, t: float, dt: float, n: int, ends: bool = False) -> list[tuple[int, list[float]]]:
     """The steps of n RK4 steps of dt [s] from t [s] that hold kinks strictly inside: [(step index, [kink times
-    inside it, sorted])], in order. Kinks within ``ALIGN_TOL`` dt of a step's end are on it (no split)."""
+    inside it, sorted])], in order. Kinks within ``ALIGN_TOL`` dt of a step's end are on it (no split); with
+    ``ends`` the steps that end or start on a kink are listed too (with no kink inside), so that they run with
+    their own segment's modulation."""
     if kinks.size == 0 or n == 0:
         return []
-    lo, hi = np.searchsorted(kinks, [t, t + n * dt], side="right")
+    eps = ALIGN_TOL * dt
+    lo, hi = np.searchsorted(kinks, [t - eps, t + n * dt + eps], side="right")
     out: dict[int, list[float]] = {}
     for b in kinks[lo:hi]:
         u = (b - t) / dt
         j = int(np.floor(u))
         f = u - j
-        if f < ALIGN_TOL or f > 1.0 - ALIGN_TOL or j >= n:
+        if f < ALIGN_TOL or f > 1.0 - ALIGN_TOL:
+            if ends:
+                k = int(round(u))
+                for i in (k - 1, k):
+                    if 0 <= i < n:
+                        out.setdefault(i, [])
             continue
-        out.setdefault(j, []).append(float(b))
+        if 0 <= j < n:
+            out.setdefault(j, []).append(float(b))
     return sorted(out.items())
 
 
-def interior_kinks(kinks: np.ndarray, ta: float, tb: float) -> list[float]:
-    """Kinks strictly inside (ta, tb) [s], beyond ``ALIGN_TOL`` of the span from either end."""
+def interior_kinks(kinks: np.ndarray, ta: float, tb: float, ends: bool = False) -> list[float]:
+    """Kinks strictly inside (ta, tb) [s], beyond ``ALIGN_TOL`` of the span from either end (with ``ends``, the
+    kinks at either end too, so that each piece runs with its own segment's modulation)."""
     if kinks.size == 0 or not tb > ta:
         return []
     tol = ALIGN_TOL * max(tb - ta, 1e-300)
+    if ends:
+        lo, hi = np.searchsorted(kinks, [ta - tol, tb + tol], side="right")
+        return [float(b) for b in kinks[lo:hi]]
     lo, hi = np.searchsorted(kinks, [ta + tol, tb - tol], side="right")
     return [float(b) for b in kinks[lo:hi] if ta + tol < b < tb - tol]
 
@@ -90,7 +107,8 @@ def rk4_pieces(sim, n: int):
     piece with its segment's modulation; advances ``sim.t`` and ``sim.state``. Returns (status, size of the failed
     step [s]); on a failure the state and time are those before the failed step (or piece)."""
     s = sim.settings
-    splits = split_steps(sim.breakpoint_times, sim.t, s.dt, n) if s.breakpoints else []
+    mode = s.breakpoints
+    splits = split_steps(sim.breakpoint_times, sim.t, s.dt, n, mode == "all") if mode != "off" else []
     done = 0
     for j, inside in splits + [(n, [])]:
         if j > done:
@@ -117,12 +135,13 @@ def dp54_pieces(sim, t_end: float, h: float, rtol: float, atol: float, max_steps
     """DP5(4) on ``sim`` from its time to t_end [s] (first trial step h [s]), ending a step on every kink inside,
     each piece with its segment's modulation; the state is advanced in place, ``sim.t`` is left to the caller.
     Returns (status, last step size [s], time of the state [s]: t_end, or the last accepted step's)."""
-    inside = interior_kinks(sim.breakpoint_times, sim.t, t_end) if sim.settings.breakpoints else []
+    mode = sim.settings.breakpoints
+    inside = interior_kinks(sim.breakpoint_times, sim.t, t_end, mode == "all") if mode != "off" else []
     if not inside:
         status, _, _, h, t = dp54_advance(sim.t, t_end, sim.state, sim.controls, h, rtol, atol, sim.model, sim.work,
                                           sim.limits, max_steps)
         return status, h, t
-    ends = [sim.t, *inside, t_end]
+    ends = [sim.t, *[b for b in inside if sim.t < b < t_end], t_end]
     for ta, tb in zip(ends[:-1], ends[1:], strict=True):
         status, _, _, h, t = dp54_advance(ta, tb, sim.state, sim.controls, h, rtol, atol,
                                           segment_model(sim.model, ta, tb), sim.work, sim.limits, max_steps)

@@ -40,7 +40,7 @@ from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 from laddermill_gym.model.states import euler_from_quaternion
-from laddermill_gym.sim.breakpoints import dp54_pieces, modulation_kinks, rk4_pieces
+from laddermill_gym.sim.breakpoints import BREAKPOINT_MODES, dp54_pieces, modulation_kinks, rk4_pieces
 from laddermill_gym.sim.reports import GROUND_MODES, body_heights, diagnose, failure_message, state_problems
 from laddermill_gym.sim.station_views import (
     StationViews,
@@ -89,8 +89,10 @@ class IntegratorSettings:
     ground_contact : what a wing CG or free cable node at h <= ground_height after a step does: "stop" (the run
     stops at the last state above the ground with a SimulationError naming the time, the body and its height),
     "flag" (the run goes on; ``sim.recording.record`` flags the contact per body and sample) or "off" (no ground).
-    breakpoints : step exactly onto the kinks of the wind's time modulation (``sim/breakpoints.py``); False
-    integrates across them (the behaviour before; for comparisons).
+    breakpoints : step exactly onto the kinks of the wind's time modulation (``sim/breakpoints.py``): "inside"
+    splits a step at a kink inside it; "all" also gives a step that ends or starts on a kink its own segment's
+    modulation (fourth-order RK4 on a kink grid aligned with the steps; changes such runs slightly); "off"
+    integrates across kinks (the behaviour before).
     """
 
     method: str = "rk4"
@@ -101,11 +103,12 @@ class IntegratorSettings:
     max_rate: float = 100.0
     ground_height: float = 0.0
     ground_contact: str = "stop"
-    breakpoints: bool = True
+    breakpoints: str = "inside"
 
     def __post_init__(self):
-        if not isinstance(self.breakpoints, (bool, np.bool_)):
-            raise ValueError(f"IntegratorSettings.breakpoints = {self.breakpoints!r}: must be True or False")
+        if self.breakpoints not in BREAKPOINT_MODES:
+            raise ValueError(f"IntegratorSettings.breakpoints = {self.breakpoints!r}: must be one of "
+                             f"{', '.join(repr(m) for m in BREAKPOINT_MODES)}")
         if self.method not in INTEGRATOR_METHODS:
             raise ValueError(f"IntegratorSettings.method = {self.method!r}: must be one of "
                              f"{', '.join(repr(m) for m in INTEGRATOR_METHODS)}")
