@@ -1,0 +1,81 @@
+"""Output of ``laddermill work-precision``: the CSV table, the log-log figure (error against wall time) and
+the printed summary."""
+
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+
+COLUMNS = ("forcing", "method", "dt_s", "tol", "wall_s", "real_time_factor", "err_final_pos_m", "err_rms_pos_m",
+           "err_final_state", "err_rms_state", "status")
+_STYLE = {"rk4": ("C0", "o", "-"), "rk4-all": ("C2", "+", "--"), "rk4-off": ("C3", "x", ":"),
+          "dp54": ("C1", "s", "-")}
+
+
+def save_rows(res: dict, path: Path) -> Path:
+    """One line per run, the columns of ``COLUMNS`` (units in the names; errors of the state are scaled)."""
+    with open(path, "w", newline="", encoding="utf-8") as fh:
+        w = csv.DictWriter(fh, fieldnames=["scene", *COLUMNS], extrasaction="ignore")
+        w.writeheader()
+        for r in res["rows"]:
+            w.writerow({"scene": res["scene"], **r})
+    return path
+
+
+def plot_work_precision(res: dict, path: Path) -> Path:
+    """Wall time against error, log-log: one column per forcing, rows the final position error and the RMS
+    state error; the references' agreement as a dotted line (errors below it are not resolved)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    forcings = list(res["references"])
+    fig, axes = plt.subplots(2, len(forcings), figsize=(3.6 * len(forcings), 6.0), squeeze=False)
+    for j, f in enumerate(forcings):
+        rows = [r for r in res["rows"] if r["forcing"] == f and r["status"] == "ok"]
+        for i, (key, label) in enumerate((("err_final_pos_m", "final position error [m]"),
+                                          ("err_rms_state", "RMS scaled state error [-]"))):
+            ax = axes[i, j]
+            for m in dict.fromkeys(r["method"] for r in rows):
+                pts = sorted((r[key], r["wall_s"]) for r in rows if r["method"] == m and r[key] > 0)
+                if pts:
+                    c, mk, ls = _STYLE.get(m, (None, "^", "-"))
+                    ax.loglog(*zip(*pts, strict=True), marker=mk, ls=ls, color=c, label=m, ms=4)
+            if key == "err_rms_state":
+                ax.axvline(res["references"][f]["reference_agreement_state"], color="k", ls=":", lw=0.8)
+            ax.set_xlabel(label)
+            ax.grid(True, which="both", lw=0.3)
+            if j == 0:
+                ax.set_ylabel("wall time [s]")
+            if i == 0:
+                ax.set_title(f"{res['scene']}: {f}", fontsize=9)
+        axes[0, j].legend(fontsize=7)
+    fig.suptitle(f"{res['scene']}, {res['duration_s']:g} s simulated; RK4 stable step {res['dt_stable_s']:.4g} s "
+                 "(estimate)", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+    return path
+
+
+def _fmt(v, spec):
+    return "-" if v is None or (isinstance(v, float) and math.isnan(v)) else format(v, spec)
+
+
+def print_summary(res: dict, echo=print) -> None:
+    """The table of runs and, per forcing and method, the fastest run with a final position error below 1 mm."""
+    echo(f"\n== {res['scene']}: {res['duration_s']:g} s, RK4 stable step {res['dt_stable_s']:.4g} s (eigenvalue "
+         f"{res['limiting_eigenvalue'][0]:.3g} +- {abs(res['limiting_eigenvalue'][1]):.4g}i 1/s)")
+    for f, ref in res["references"].items():
+        echo(f"-- {f}: references (DP5(4) and scipy DOP853 at 1e-12) agree to {ref['reference_agreement_state']:.1e}")
+        echo(f"   {'method':9s} {'dt [s]':>9s} {'tol':>7s} {'wall [s]':>9s} {'x real':>8s} {'pos T [m]':>10s} "
+             f"{'pos RMS':>9s} {'state T':>9s} {'state RMS':>9s}")
+        for r in (r for r in res["rows"] if r["forcing"] == f):
+            if r["status"] != "ok":
+                echo(f"   {r['method']:9s} {_fmt(r['dt_s'], '9.5f')} {_fmt(r['tol'], '7.0e')}  {r['status']}")
+                continue
+            echo(f"   {r['method']:9s} {_fmt(r['dt_s'], '9.5f')} {_fmt(r['tol'], '7.0e')} {r['wall_s']:9.3f} "
+                 f"{r['real_time_factor']:8.1f} {r['err_final_pos_m']:10.2e} {r['err_rms_pos_m']:9.2e} "
+                 f"{r['err_final_state']:9.2e} {r['err_rms_state']:9.2e}")
