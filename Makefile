@@ -14,7 +14,7 @@ bench:
 	laddermill bench --json bench.json
 
 simulate:
-	laddermill simulate laddermill --start periodic --direction-step 0.01 --time 60 --animate --out runs
+	laddermill simulate laddermill --start periodic --direction-step 0.01 --time 60 --animate --allow-breakdown --out runs
 	cp runs/laddermill_shape.png laddermill_gym/docs/figures/laddermill_direction_step.png
 	cp runs/laddermill_generator.png laddermill_gym/docs/figures/laddermill_generator.png
 	laddermill simulate tethered_wing --time 120 --direction-step 0.01 --out runs

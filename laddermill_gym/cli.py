@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import json
+import math
 import sys
 import time
 from pathlib import Path
@@ -45,10 +46,59 @@ def _start(scene, args):
     return x0, u0, t_start
 
 
+class UsageError(ValueError):
+    """Bad command-line input: printed as one line, exit status 2."""
+
+
+def _positive(name: str, value, allow_none: bool = False, integer: bool = False) -> None:
+    if value is None and allow_none:
+        return
+    ok = value is not None and math.isfinite(value) and value > 0 and (not integer or int(value) == value)
+    if not ok:
+        kind = "a whole number >= 1" if integer else "a finite number > 0"
+        raise UsageError(f"{name} = {value!r}: must be {kind}")
+
+
+def _writable_folder(path: str) -> Path:
+    """The output folder, created now (so a bad path fails before any simulation); UsageError if it is a file or
+    cannot be written."""
+    out = Path(path)
+    if out.exists() and not out.is_dir():
+        raise UsageError(f"--out = {path!r}: is a file, not a folder")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        probe = out / ".laddermill_write_test"
+        probe.write_bytes(b"")
+        probe.unlink()
+    except OSError as err:
+        raise UsageError(f"--out = {path!r}: cannot write there ({err.strerror or err})") from None
+    return out
+
+
+def _check_simulate_args(args) -> Path:
+    """Refuse bad numbers before any work (one line naming the option, the value and what is allowed); returns the
+    output folder, created and checked writable."""
+    _positive("--time", args.time)
+    _positive("--sample-dt", args.sample_dt)
+    _positive("--dt", args.dt, allow_none=True)
+    _positive("--n-wings", args.n_wings, allow_none=True, integer=True)
+    _positive("--elements-per-piece", args.elements_per_piece, allow_none=True, integer=True)
+    for name, v in (("--direction-step", args.direction_step), ("--step-time", args.step_time),
+                    ("--ground-height", args.ground_height)):
+        if v is not None and not math.isfinite(v):
+            raise UsageError(f"{name} = {v!r}: must be a finite number")
+    if args.step_time < 0:
+        raise UsageError(f"--step-time = {args.step_time!r}: must be >= 0 s")
+    if args.sample_dt > args.time:
+        raise UsageError(f"--sample-dt = {args.sample_dt!r} s: must not exceed --time = {args.time!r} s")
+    return _writable_folder(args.out)
+
+
 def cmd_simulate(args) -> int:
     from laddermill_gym.plotting import plot_generator, plot_histories, plot_shape
     from laddermill_gym.sim.recording import record
 
+    out = _check_simulate_args(args)
     t0 = time.perf_counter()
     scene = _scene_from_args(args)
     x0, u0, t_start = _start(scene, args)
@@ -72,8 +122,6 @@ def cmd_simulate(args) -> int:
     t1 = time.perf_counter()
     rec = record(sim, args.time, args.sample_dt, progress=not args.quiet)
     wall = time.perf_counter() - t1
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     stem = out / scene.name
     files = [rec.save_npz(stem.with_suffix(".npz"))]
     if args.csv:
@@ -95,6 +143,10 @@ def cmd_simulate(args) -> int:
         print(line)
     for f in files:
         print(f"wrote {f}")
+    if rec.error and not rec.error.startswith("ground contact") and not args.allow_breakdown:
+        print("exit status 3: the run broke down (outputs written up to the breakdown; --allow-breakdown exits 0)",
+              file=sys.stderr)
+        return 3
     return 1 if rec.error and args.strict else 0
 
 
@@ -192,7 +244,10 @@ def build_parser() -> argparse.ArgumentParser:
                         "ground (default: the scene's integrator.ground_contact, else stop)")
     s.add_argument("--ground-height", type=float, default=None,
                    help="ground height [m] (default: the scene's integrator.ground_height, else 0)")
-    s.add_argument("--strict", action="store_true", help="exit 1 if the integration breaks down")
+    s.add_argument("--allow-breakdown", action="store_true",
+                   help="exit 0 even if the integration breaks down (default: exit status 3, outputs written)")
+    s.add_argument("--strict", action="store_true",
+                   help="also exit 1 when the run stops at a ground contact (a documented termination, else exit 0)")
     s.add_argument("--quiet", action="store_true", help="no progress bar")
     s.set_defaults(func=cmd_simulate)
     b = sub.add_parser("bench", help="run the benchmark and print its figures")
@@ -217,7 +272,17 @@ def main(argv: list[str] | None = None) -> int:
 
         return int(importlib.import_module(FORWARDED[argv[0]][0]).main(argv[1:]) or 0)
     args = build_parser().parse_args(argv)
-    return int(args.func(args) or 0)
+    from laddermill_gym.model.configio import ConfigError
+    from laddermill_gym.sim.simulator import SimulationError
+
+    try:
+        return int(args.func(args) or 0)
+    except (UsageError, ConfigError) as err:  # bad input: one line, no traceback
+        print(f"laddermill {args.command}: error: {err}", file=sys.stderr)
+        return 2
+    except SimulationError as err:  # a start state or setting the simulator refuses
+        print(f"laddermill {args.command}: error: {err}", file=sys.stderr)
+        return 3
 
 
 if __name__ == "__main__":

@@ -149,10 +149,11 @@ def test_blow_up_is_recorded_and_saved_with_its_report(tmp_path):
 
 def test_cli_writes_what_it_has_and_prints_the_report(tmp_path, capsys):
     args = ["simulate", "tethered_wing", "--dt", "0.2", "--time", "20", "--out", str(tmp_path), "--quiet", "--csv"]
-    assert cli_main(args) == 0
+    assert cli_main(args) == 3  # a breakdown exits non-zero, outputs written
     out = capsys.readouterr().out
     assert re.search(r"run stopped early: integration failed at t = [\d.]+ s .*(wing|node) \d+ (speed|angular rate)",
                      out), out
     for name in ("tethered_wing.npz", "tethered_wing.csv", "tethered_wing_shape.png", "tethered_wing_histories.png"):
         assert (tmp_path / name).is_file()
-    assert cli_main([*args, "--strict"]) == 1
+    assert cli_main([*args, "--strict"]) == 3
+    assert cli_main([*args, "--allow-breakdown"]) == 0

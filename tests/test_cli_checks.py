@@ -1,0 +1,66 @@
+"""The command line refuses bad input before any work, with one line naming the option, the value and what is
+allowed, and a non-zero exit status (issue 17 point 7); ``--version`` and the forwarded commands' help work."""
+
+from __future__ import annotations
+
+import pytest
+
+from laddermill_gym import __version__
+from laddermill_gym.cli import main as cli_main
+
+
+@pytest.mark.parametrize("option, value, says", [
+    ("--time", "inf", "--time = inf: must be a finite number > 0"),
+    ("--time", "-1", "--time = -1.0: must be a finite number > 0"),
+    ("--dt", "0", "--dt = 0.0: must be a finite number > 0"),
+    ("--dt", "-0.005", "--dt = -0.005: must be a finite number > 0"),
+    ("--n-wings", "0", "--n-wings = 0: must be a whole number >= 1"),
+    ("--elements-per-piece", "0", "--elements-per-piece = 0: must be a whole number >= 1"),
+    ("--sample-dt", "nan", "--sample-dt = nan: must be a finite number > 0"),
+    ("--direction-step", "inf", "--direction-step = inf: must be a finite number"),
+])
+def test_bad_numbers_give_one_line_and_exit_2(tmp_path, capsys, option, value, says):
+    out = tmp_path / "never_made"
+    assert cli_main(["simulate", "tethered_wing", option, value, "--out", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == f"laddermill simulate: error: {says}"
+    assert not out.exists()  # nothing was done
+
+
+def test_output_path_problems_are_found_before_the_run(tmp_path, capsys):
+    f = tmp_path / "a_file"
+    f.write_text("")
+    assert cli_main(["simulate", "tethered_wing", "--out", str(f), "--quiet"]) == 2
+    assert "is a file, not a folder" in capsys.readouterr().err
+    locked = tmp_path / "locked"
+    locked.mkdir()
+    locked.chmod(0o500)
+    try:
+        probe = locked / "x"
+        try:  # root ignores the mode: then there is nothing to test
+            probe.write_text("")
+            probe.unlink()
+            pytest.skip("running as root: a read-only folder is writable")
+        except PermissionError:
+            pass
+        assert cli_main(["simulate", "tethered_wing", "--out", str(locked / "sub"), "--quiet"]) == 2
+        assert "cannot write there" in capsys.readouterr().err
+    finally:
+        locked.chmod(0o700)
+
+
+def test_unknown_scene_is_one_line(tmp_path, capsys):
+    assert cli_main(["simulate", "no_such_scene", "--out", str(tmp_path), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "no_such_scene.yaml: no such file" in err
+
+
+def test_version_and_forwarded_help(capsys):
+    with pytest.raises(SystemExit) as e:
+        cli_main(["--version"])
+    assert e.value.code == 0 and capsys.readouterr().out.strip() == f"laddermill_gym {__version__}"
+    for cmd in ("train", "evaluate", "lqr", "site", "gust-bench"):
+        with pytest.raises(SystemExit) as e:
+            cli_main([cmd, "--help"])
+        assert e.value.code == 0
+        assert f"usage: laddermill {cmd}" in capsys.readouterr().out.replace("\n", " ")
