@@ -1,0 +1,145 @@
+"""The pumping kite's scene: a plain one-wing scene (``configs/scenes/pumping_kite.yaml``) with its tether's ground
+end on a winch (``kernels/winch.py``), read from a pumping config (``configs/pumping/*.yaml``: ``scene``, ``winch``
+and ``cycle`` sections), and the simulators that run it.
+
+:class:`WinchSimulator` is a :class:`~laddermill_gym.sim.simulator.Simulator` of the winch assembly (its packed
+model has the winch kind, as has a ``BatchSimulator``'s: ``model.packing.model_kind``). The station read-outs of
+the simulator (``cable_speed``, ``cable_paid_out``, ``generator_energy``) apply unchanged (no transfers: the paid-out
+tether is s); :meth:`WinchSimulator.winch_power` replaces the mill's ``generator_power`` (the drum feels T_0 alone).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from laddermill_gym.ladder.scene import Scene, load_scene
+from laddermill_gym.model.configio import ConfigError, config_path, read_yaml
+from laddermill_gym.model.station import StationParams
+from laddermill_gym.model.winch import read_winch, with_winch
+from laddermill_gym.sim.simulator import Simulator
+
+__all__ = ["CycleSpec", "PumpingScene", "WinchSimulator", "load_pumping", "electrical_energy"]
+
+
+def electrical_energy(mechanical: np.ndarray | float, efficiency: float) -> np.ndarray:
+    """Electrical energy [J] of mechanical energy increments at the drum [J]: eta E when generating (E > 0),
+    E / eta when the motor reels in (E < 0) (Lansdorp et al. 2008 eq. 13)."""
+    e = np.asarray(mechanical, dtype=float)
+    return np.where(e > 0, efficiency * e, e / efficiency)
+
+
+@dataclass(frozen=True)
+class CycleSpec:
+    """The scripted pumping cycle (Lansdorp et al. 2008): reel out at ``reel_out_factor`` times the wind speed at
+    the wing until ``reel_length`` has been paid out, switch the angle of attack from ``alpha_out`` to ``alpha_in``,
+    reel in at ``reel_in_speed`` until the tether is back at its start length, switch back, repeat.
+
+    reel_out_factor [-], reel_length [m], reel_in_speed [m/s] (> 0, the speed of the tether coming in),
+    alpha_out, alpha_in [rad] the trim angles of attack of the two phases (the elevators are trimmed for them).
+    """
+
+    reel_out_factor: float
+    reel_length: float
+    reel_in_speed: float
+    alpha_out: float
+    alpha_in: float
+
+    def __post_init__(self):
+        for name in ("reel_out_factor", "reel_length", "reel_in_speed"):
+            v = getattr(self, name)
+            if not (math.isfinite(v) and v > 0):
+                raise ValueError(f"cycle.{name} = {v!r}: must be a finite number > 0")
+        if not self.alpha_in < self.alpha_out:
+            raise ValueError(f"cycle.alpha_in_deg = {math.degrees(self.alpha_in)!r}: must be below alpha_out_deg "
+                             f"({math.degrees(self.alpha_out)!r}) (reel in at low lift)")
+
+
+class WinchSimulator(Simulator):
+    """A :class:`Simulator` of an assembly with a winch (``model.winch.with_winch``; ``model.packing`` gives it the
+    winch kind) with the winch's read-out."""
+
+    def winch_power(self) -> dict[str, float]:
+        """The winch now: tension of the tether at the drum T_0 [N], winch speed V [m/s] (> 0 reeling out),
+        mechanical power at the drum [W] ((Q / r) V with a drum, T_0 V otherwise) and electrical power [W]
+        (eta P generating, P / eta reeling in)."""
+        st = self.assembly.station
+        t0 = float(self.tensions()[0])
+        v = self.cable_speed()
+        mech = float(self.controls[-1]) / st.drum_radius * v if st.mode == "drum" else t0 * v
+        return {"tension_N": t0, "speed_m_s": v, "mechanical_W": mech,
+                "electrical_W": float(electrical_energy(mech, st.efficiency))}
+
+
+@dataclass(frozen=True)
+class PumpingScene:
+    """A pumping config loaded: the plain scene (``scene``, no winch: its trim and the lateral LQR's design), the
+    winch (station parameters of ``model/winch.py``), the cycle, the config's file."""
+
+    file: Path
+    scene: Scene
+    winch: StationParams
+    cycle: CycleSpec
+
+    @property
+    def assembly(self):
+        """The assembly with the winch."""
+        return with_winch(self.scene.assembly, self.winch)
+
+    def replace_winch(self, **changes) -> PumpingScene:
+        return dataclasses.replace(self, winch=dataclasses.replace(self.winch, **changes))
+
+    def trim(self, alpha: float | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(state, wing controls) of the plain scene trimmed at angle of attack ``alpha`` [rad] (default: the
+        scene's), the tether held (no winch)."""
+        sc = self.scene
+        if alpha is not None:
+            sc = sc.replace(initial=dataclasses.replace(sc.initial, alpha=float(alpha)))
+        return sc.initial_state()
+
+    def initial_state(self) -> tuple[np.ndarray, np.ndarray]:
+        """(state, controls) with the winch: the trim at ``cycle.alpha_out``, the winch block (nothing paid out,
+        the winch's initial speed, no energy) and the winch control (0 torque or the initial speed command)."""
+        from laddermill_gym.model.station import station_initial
+
+        x, u = self.trim(self.cycle.alpha_out)
+        w = self.winch
+        cmd = w.speed_values[0] if w.mode == "commanded" else 0.0
+        tail = np.array([cmd] if w.n_controls else [])
+        return np.concatenate([x, station_initial(w)]), np.concatenate([u, tail])
+
+    def simulator(self, initial_state=None, controls=None) -> WinchSimulator:
+        if initial_state is None:
+            initial_state, c0 = self.initial_state()
+            controls = c0 if controls is None else controls
+        return WinchSimulator(self.assembly, initial_state, self.scene.settings, controls)
+
+
+def load_pumping(name_or_path: str | Path = "pumping_kite", **scene_overrides) -> PumpingScene:
+    """Read a pumping config (``configs/pumping/NAME.yaml`` or a path): ``scene`` (a scene name or path, loaded by
+    ``load_scene`` with ``scene_overrides``), ``winch`` (``model.winch.read_winch``) and ``cycle``."""
+    path = config_path("pumping", name_or_path)
+    s = read_yaml(path)
+    scene_ref = s.text("scene")
+    try:
+        sc = load_scene(config_path("scenes", scene_ref, path.parent), **scene_overrides)
+    except ConfigError as err:
+        raise ConfigError(f"{path}: field 'scene' = {scene_ref!r}: {err}") from None
+    first = float(sc.assembly.elements.l0[0])
+    winch = read_winch(s.section("winch"), first)
+    c = s.section("cycle")
+    try:
+        cycle = CycleSpec(reel_out_factor=c.number("reel_out_factor", positive=True),
+                          reel_length=c.number("reel_length", positive=True),
+                          reel_in_speed=c.number("reel_in_speed", positive=True),
+                          alpha_out=math.radians(c.number("alpha_out_deg")),
+                          alpha_in=math.radians(c.number("alpha_in_deg")))
+    except ValueError as err:
+        raise ConfigError(f"{path}: {err}") from None
+    c.done()
+    s.done()
+    return PumpingScene(file=path, scene=sc, winch=winch, cycle=cycle)

@@ -1,0 +1,141 @@
+"""The winch of a pumping kite (Lansdorp et al. 2008) as two model kinds: one tether whose ground end is wound on a
+drum, so that its first element (element 0, from the ground point up) changes unstretched length with the drum.
+
+``Winch3D`` and ``Winch2D`` are the rigid kinds (``kernels/rigid/kinds.py``) plus the winch, packed with the
+ground station's slots (``SP_*`` of ``kernels/contract.py``, written by ``model/winch.py``) and carrying the same
+state block (``SX_*``):
+
+* element 0 has the unstretched length f_first l_p + s, with l_p = ``SP_PIECE`` its length at s = 0, f_first =
+  ``SP_F_FIRST`` (1 for a winch) and s = ``SX_MOVED`` the tether paid out since t = 0 (ds/dt = V, the winch
+  speed, > 0 reeling out). Every other element keeps its packed length; there is no last moving element and no
+  wing transfer (``SX_TRANSFERS`` stays 0). The tether's mass follows the rest length (mu l0), and the damping
+  acts on the material strain rate, l0 d(eps)/dt = dl/dt - (l / l0) dl0/dt, as for the moving cable.
+* Winch: a prescribed speed schedule V(t); a drum, (J / r^2) dV/dt = T_0 - Q / r with the generator torque Q [N m]
+  the control after the wings'; or a commanded speed, dV/dt = (V_cmd - V) / tau with V_cmd that control.
+  ``SX_ENERGY`` integrates the mechanical power at the drum: (Q / r) V with a drum, T_0 V otherwise (> 0 when the
+  tether is reeled out under tension: energy to the generator; < 0 reeling in: energy the motor spends).
+* The post-step check is the rigid one; it returns LIMIT when element 0 has been reeled in below
+  ``MIN_FRACTION`` of l_p (the drum cannot swallow the wing).
+"""
+
+from collections import namedtuple
+
+from numba import njit
+
+from laddermill_gym.kernels.contract import (
+    EF_L0,
+    MODE_COMMANDED,
+    MODE_DRUM,
+    SP_F_FIRST,
+    SP_INERTIA,
+    SP_MODE,
+    SP_PIECE,
+    SP_RADIUS,
+    SP_TAU,
+    SP_UOFF,
+    SP_XOFF,
+    SX_ENERGY,
+    SX_MOVED,
+    SX_SPEED,
+    SX_TRANSFERS,
+)
+from laddermill_gym.kernels.dispatch import register_kind, register_moving_ends
+from laddermill_gym.kernels.moving_cable import cable_speed, scheduled_speed
+from laddermill_gym.kernels.rigid.kinds import LIMIT, OK, rigid2d_check, rigid3d_check
+from laddermill_gym.kernels.rigid.rhs2d import rhs2d
+from laddermill_gym.kernels.rigid.rhs3d import rhs3d
+
+_FM = {"contract", "reassoc", "nsz", "arcp"}
+
+#: Kind markers of the winch; ``station`` is the packed winch (``model/winch.py``, ``SP_*`` slots).
+Winch3D = namedtuple("Winch3D", ["station"])
+Winch2D = namedtuple("Winch2D", ["station"])
+
+#: Shortest rest length of the winch element, as a fraction of its length at s = 0 [-]: below it the step
+#: returns LIMIT (a reel-in that would pull the wing into the drum).
+MIN_FRACTION = 0.05
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def winch_rest_length(kind, e, t, x, M):
+    """Unstretched length [m] of element e: f_first l_p + s for element 0, the packed length otherwise."""
+    sp = kind.station
+    if e == 0:
+        return sp[SP_PIECE] * sp[SP_F_FIRST] + x[int(sp[SP_XOFF]) + SX_MOVED]
+    return M.ef[e, EF_L0]
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def winch_elongation_rate(kind, e, t, x, M, ln, l0, ld):
+    """Material elongation rate [m/s] of element e: dl/dt - (l / l0) V for element 0 (tether paid out at V)."""
+    if e != 0:
+        return ld
+    return ld - ln / l0 * cable_speed(kind.station, t, x)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def winch_rates(sp, t, x, u, dx, tension):
+    """The winch block of dx: ds/dt = V, the drum's acceleration (or the schedule's rate or the speed lag) and
+    the mechanical power at the drum [W] (into the energy). ``tension[0]`` is the tension of element 0 [N]."""
+    o = int(sp[SP_XOFF])
+    t0 = tension[0]
+    if sp[SP_MODE] == MODE_DRUM:
+        v = x[o + SX_SPEED]
+        r = sp[SP_RADIUS]
+        force = u[int(sp[SP_UOFF])] / r
+        dx[o + SX_SPEED] = (t0 - force) * r * r / sp[SP_INERTIA]
+        power = force * v
+    elif sp[SP_MODE] == MODE_COMMANDED:
+        v = x[o + SX_SPEED]
+        dx[o + SX_SPEED] = (u[int(sp[SP_UOFF])] - v) / sp[SP_TAU]
+        power = t0 * v
+    else:
+        v, a = scheduled_speed(sp, t)
+        dx[o + SX_SPEED] = a
+        power = t0 * v
+    dx[o + SX_MOVED] = v
+    dx[o + SX_TRANSFERS] = 0.0
+    dx[o + SX_ENERGY] = power
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def winch3d_rhs(kind, t, x, u, dx, M, W):
+    status = rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+    winch_rates(kind.station, t, x, u, dx, W.tension)
+    return status
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def winch2d_rhs(kind, t, x, u, dx, M, W):
+    status = rhs2d(t, x, u, dx, M, W, M.sag, M.caero)
+    winch_rates(kind.station, t, x, u, dx, W.tension)
+    return status
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _reeled_in_too_far(sp, x):
+    return sp[SP_PIECE] * sp[SP_F_FIRST] + x[int(sp[SP_XOFF]) + SX_MOVED] < MIN_FRACTION * sp[SP_PIECE]
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def winch3d_check(kind, x, M, limits):
+    """The rigid check; LIMIT when the winch element is shorter than MIN_FRACTION of its start length."""
+    status = rigid3d_check(kind, x, M, limits)
+    if status == OK and _reeled_in_too_far(kind.station, x):
+        return LIMIT
+    return status
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def winch2d_check(kind, x, M, limits):
+    """The in-plane rigid check; LIMIT as :func:`winch3d_check`."""
+    status = rigid2d_check(kind, x, M, limits)
+    if status == OK and _reeled_in_too_far(kind.station, x):
+        return LIMIT
+    return status
+
+
+register_kind(Winch3D, winch3d_rhs, winch3d_check)
+register_kind(Winch2D, winch2d_rhs, winch2d_check)
+register_moving_ends(Winch3D, winch_rest_length, winch_elongation_rate)
+register_moving_ends(Winch2D, winch_rest_length, winch_elongation_rate)
