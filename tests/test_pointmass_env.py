@@ -52,3 +52,10 @@ def test_episode_ends():
         if terminated:
             break
     assert terminated and info["failure"]
+
+
+def test_wing_env_points_to_the_point_mass_env():
+    from laddermill_gym.envs.wing_env import WingEnv
+
+    with pytest.raises(ValueError, match="PointMassEnv"):
+        WingEnv(scene="tethered_wing", scene_options={"fidelity": "pointmass", "element_length": 1.0})

@@ -151,6 +151,9 @@ def scene_trim(scene: str, options: tuple) -> tuple[Scene, np.ndarray, np.ndarra
     tuple of (key, value) pairs); cached, because every copy of a sync vector env would otherwise trim
     the same scene again."""
     sc = load_scene(scene, **dict(options))
+    if not isinstance(sc, Scene):  # fidelity 'pointmass': no tails, the attitude is the action
+        raise ValueError(f"scene {scene!r} is at the point-mass fidelity: use laddermill_gym.envs.pointmass.env."
+                         "PointMassEnv, whose actions command the kites' attitude")
     x, u = sc.initial_state()
     x.setflags(write=False)
     u.setflags(write=False)
