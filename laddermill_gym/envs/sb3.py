@@ -3,8 +3,12 @@
 SB3 resets finished copies in the same step and puts the last observation of an episode into
 ``infos[i]["terminal_observation"]`` and ``infos[i]["TimeLimit.truncated"]``; this adapter does exactly that
 on top of a task with B copies (:class:`~laddermill_gym.envs.task.WingTask`,
-:class:`~laddermill_gym.envs.rotorcraft.task.CraftTask`), so SB3 algorithms train on the compiled batch without
-Gymnasium's per-copy Python loop. :func:`sb3_vec_env` builds it for any registered environment.
+:class:`~laddermill_gym.envs.rotorcraft.task.CraftTask`, the mill's ``MillTask``), so SB3 algorithms train on the
+compiled batch without Gymnasium's per-copy Python loop. Every step's ``infos[i]`` holds the single env's ``info``
+keys (reward terms, power, failure code, name and reason ...), as ``DummyVecEnv`` over ``gymnasium.make`` gives.
+
+One line for SB3 users: ``venv = sb3_vec_env("laddermill_gym/TetheredWing-v0", 8, seed=0)`` builds the same model
+as ``gymnasium.make`` (the registered defaults, then your overrides), bit for bit.
 """
 
 from __future__ import annotations
@@ -15,7 +19,7 @@ import gymnasium as gym
 import numpy as np
 from stable_baselines3.common.vec_env import VecEnv
 
-from laddermill_gym.envs import env_arguments, task_class
+from laddermill_gym.envs import ENV_IDS, env_arguments, task_class
 from laddermill_gym.envs.task import FAILURES, WingTask
 
 __all__ = ["TaskSB3VecEnv", "WingSB3VecEnv", "sb3_vec_env"]
@@ -26,8 +30,14 @@ class TaskSB3VecEnv(VecEnv):
     ``obs`` (B, n_obs), ``obs_low``, ``obs_high``, ``n_actions``, ``n_copies``) as an SB3 VecEnv. Copy i seeded
     with ``seed + i`` (``venv.seed(seed)`` before the reset) draws the disturbances of a single env seeded so."""
 
-    def __init__(self, task):
+    def __init__(self, task, env_id: str | None = None, env_kwargs: dict | None = None,
+                 render_mode: str | None = None):
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError(f"render_mode = {render_mode!r}: None or 'rgb_array'")
         self.task = task
+        self.render_mode = render_mode  # before VecEnv.__init__, which asks get_attr("render_mode")
+        self.env_id = env_id
+        self.env_kwargs = dict(env_kwargs or {})
         obs_space = gym.spaces.Box(self.task.obs_low.astype(np.float32), self.task.obs_high.astype(np.float32),
                                    dtype=np.float32)
         act_space = gym.spaces.Box(-1.0, 1.0, shape=(self.task.n_actions,), dtype=np.float32)
@@ -35,7 +45,7 @@ class TaskSB3VecEnv(VecEnv):
         self.failure_names = dict(getattr(task, "failure_names", FAILURES))
         self._rngs = [np.random.default_rng() for _ in range(self.num_envs)]
         self._actions = np.zeros((self.num_envs, self.task.n_actions))
-        self.render_mode = None
+        self.render_mode = render_mode
 
     def reset(self) -> np.ndarray:
         if self._seeds is not None and any(s is not None for s in self._seeds):
@@ -51,12 +61,16 @@ class TaskSB3VecEnv(VecEnv):
         reward, terminated, truncated, info = self.task.step(self._actions)
         done = terminated | truncated
         obs = self.task.obs.astype(np.float32)
-        infos: list[dict[str, Any]] = [{} for _ in range(self.num_envs)]
+        infos: list[dict[str, Any]] = []
+        for i in range(self.num_envs):
+            d = {k: (v[i].item() if v.ndim == 1 else v[i].copy()) for k, v in info.items()}
+            code = int(info["failure"][i])
+            d["failure_name"] = self.failure_names[code]
+            d["failure_reason"] = self.task.failure_text(i, code) if code else ""
+            d["TimeLimit.truncated"] = bool(truncated[i] and not terminated[i])  # every step, as DummyVecEnv
+            infos.append(d)
         for i in np.flatnonzero(done):
-            infos[i] = {k: (v[i].item() if v.ndim == 1 else v[i].copy()) for k, v in info.items()}
             infos[i]["terminal_observation"] = obs[i].copy()
-            infos[i]["TimeLimit.truncated"] = bool(truncated[i] and not terminated[i])
-            infos[i]["failure_name"] = self.failure_names[int(info["failure"][i])]
         if done.any():
             self.task.reset(done, self._rngs)
             obs = self.task.obs.astype(np.float32)
@@ -66,12 +80,29 @@ class TaskSB3VecEnv(VecEnv):
         pass
 
     def get_attr(self, attr_name: str, indices=None) -> list[Any]:
-        if attr_name == "render_mode":  # the copies are drawn by get_images, not by a per-env render mode
-            return [None for _ in self._get_indices(indices)]
-        return [getattr(self.task, attr_name) for _ in self._get_indices(indices)]
+        """``spec`` (the registered EnvSpec with this env's arguments), ``render_mode``, or an attribute of the
+        shared task (the same for every copy)."""
+        if attr_name == "render_mode":
+            value = self.render_mode
+        elif attr_name == "spec":
+            import dataclasses
+
+            value = (dataclasses.replace(gym.spec(self.env_id), kwargs=dict(self.env_kwargs))
+                     if self.env_id is not None else None)
+        else:
+            value = getattr(self.task, attr_name)
+        return [value for _ in self._get_indices(indices)]
 
     def set_attr(self, attr_name: str, value: Any, indices=None) -> None:
-        raise AttributeError(f"set_attr({attr_name!r}): the copies share one task; build a new env instead")
+        """Set an attribute of the task the copies share: only for all copies at once (AttributeError otherwise,
+        and for an attribute the task does not have)."""
+        if len(list(self._get_indices(indices))) != self.num_envs:
+            raise AttributeError(f"set_attr({attr_name!r}, indices={indices!r}): the copies share one task, so an "
+                                 "attribute can only be set for all of them")
+        if not hasattr(self.task, attr_name):
+            raise AttributeError(f"set_attr({attr_name!r}): the task {type(self.task).__name__} has no such "
+                                 "attribute")
+        setattr(self.task, attr_name, value)
 
     def env_method(self, method_name: str, *method_args, indices=None, **method_kwargs) -> list[Any]:
         fn = getattr(self.task, method_name)
@@ -89,20 +120,27 @@ class WingSB3VecEnv(TaskSB3VecEnv):
     """``num_envs`` copies of a wing env as an SB3 VecEnv (same arguments as
     :class:`~laddermill_gym.envs.vector.WingVectorEnv`)."""
 
-    def __init__(self, num_envs: int, **task_kwargs):
-        super().__init__(WingTask(int(num_envs), **task_kwargs))
+    def __init__(self, num_envs: int, env_id: str = "laddermill_gym/TetheredWing-v0", render_mode=None,
+                 **task_kwargs):
+        kw = dict(ENV_IDS[env_id], **task_kwargs)  # the registered defaults, as gymnasium.make(env_id) uses
+        super().__init__(WingTask(int(num_envs), **kw), env_id, kw, render_mode)
 
 
-def sb3_vec_env(env_id: str, num_envs: int, seed: int | None = None, **env_kwargs) -> TaskSB3VecEnv:
-    """SB3 VecEnv of ``num_envs`` copies of the registered environment ``env_id`` with the arguments ``env_kwargs``
-    (the registered defaults are not added: pass them), copy i seeded with ``seed + i`` at its first reset.
-    ValueError names an argument the environment does not take."""
+def sb3_vec_env(env_id: str, num_envs: int, seed: int | None = None, render_mode: str | None = None,
+                **env_kwargs) -> TaskSB3VecEnv:
+    """SB3 VecEnv of ``num_envs`` copies of the registered environment ``env_id``: its registered defaults updated
+    with ``env_kwargs`` (the model ``gymnasium.make(env_id, **env_kwargs)`` builds), copy i seeded with
+    ``seed + i`` at its first reset; ``render_mode="rgb_array"`` for ``VecVideoRecorder``. ValueError names an
+    argument the environment does not take."""
+    if env_id not in ENV_IDS:
+        raise ValueError(f"env_id = {env_id!r}: must be one of {sorted(ENV_IDS)}")
     known = env_arguments(env_id)
     unknown = sorted(set(env_kwargs) - set(known))
     if unknown:
         raise ValueError(f"{', '.join(f'{k} = {env_kwargs[k]!r}' for k in unknown)}: {env_id} takes no such "
                          f"argument (known: {', '.join(known)})")
-    venv = TaskSB3VecEnv(task_class(env_id)(int(num_envs), **env_kwargs))
+    kw = dict(ENV_IDS[env_id], **env_kwargs)
+    venv = TaskSB3VecEnv(task_class(env_id)(int(num_envs), **kw), env_id, kw, render_mode)
     if seed is not None:
         venv.seed(seed)
     return venv

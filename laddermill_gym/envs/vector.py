@@ -12,7 +12,7 @@ import numpy as np
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
-from laddermill_gym.envs.task import WingTask
+from laddermill_gym.envs.task import FAILURES, WingTask
 
 #: info entries of copies reset in a NextStep autoreset step (reported as 0)
 ZEROED_ON_RESET: tuple[str, ...] = ("failure", "n_clipped", "reward_power", "reward_lateral", "reward_rates",
@@ -98,6 +98,12 @@ class TaskVectorEnv(VectorEnv):
             reward, terminated, truncated, info = self.task.step(a)
         done = terminated | truncated
         obs = self.task.obs.astype(np.float32)
+        # the single env's failure name and reason too, so native and sync vector envs give the same info keys
+        names = getattr(self.task, "failure_names", FAILURES)
+        codes = [int(c) for c in info["failure"]]
+        info["failure_name"] = np.array([names[c] for c in codes], dtype=object)
+        info["failure_reason"] = np.array([self.task.failure_text(i, c) if c else "" for i, c in enumerate(codes)],
+                                          dtype=object)
         out: dict[str, Any] = {}
         for k, v in info.items():
             out[k] = v
