@@ -217,16 +217,18 @@ class Simulator(StationViews):
         check_station_controls(self.assembly, u)
         return u
 
-    def reset(self, state: np.ndarray | None = None, t: float = 0.0, controls: np.ndarray | None = None) -> np.ndarray:
+    def reset(self, state: np.ndarray | None = None, t: float = 0.0, controls: np.ndarray | None = None,
+              check: bool = True) -> np.ndarray:
         """Set the state (default: the initial state), time [s] and controls [rad]; returns the state.
 
         ValueError (naming the entry, body or quantity) for a non-finite time or state, a wing quaternion of zero
-        or non-finite norm, or a body speed or rate beyond the settings' ``max_speed`` / ``max_rate``."""
+        or non-finite norm, or (``check``) a body speed or rate beyond the settings' ``max_speed`` / ``max_rate``.
+        ``check=False`` takes any finite state: for read-out snapshots of where a run got to (a failed copy's)."""
         if isinstance(t, bool) or not isinstance(t, (int, float, np.number)) or not np.isfinite(t):
             raise ValueError(f"t = {t!r}: the time must be a finite number [s]")
         if state is not None:
             state = self._check_state(state)
-            problems = state_problems(self, state)
+            problems = state_problems(self, state) if check else []
             if problems:
                 raise ValueError(f"state: {'; '.join(problems)}")
         self.state = (self.initial_state if state is None else state).copy()
