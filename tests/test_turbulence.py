@@ -178,3 +178,37 @@ def test_memory_of_a_field_for_the_3500_m_chain_over_600_s():
 def test_bad_parameters_name_the_field(kw, text):
     with pytest.raises(ValueError, match=text):
         Turbulence(**kw)
+
+
+def test_fade_in_scales_the_field_and_its_rate():
+    """r(t) = 0.5 (1 - cos(pi t / T_f)) on [0, T_f), 0 before, 1 after: the kernel's gust is r times the unfaded
+    grid's, its rate along a moving point is the central difference of the sampled gust, and the plain-numpy
+    reference (scipy interpolation) agrees."""
+    from laddermill_gym.atmosphere.field import GustGrid, WindField
+    from laddermill_gym.atmosphere.wind_kernels import gust_rate
+    from laddermill_gym.kernels.rigid.reference.wind import gust_rate as ref_rate
+    from laddermill_gym.kernels.rigid.reference.wind import gust_velocity
+    from laddermill_gym.model.params import WindParams
+
+    tf = 10.0
+    turb = Turbulence(model="NTM", heights=(0.0, 200.0), dh=20.0, along_wind=(-100.0, 100.0), fade_in=tf)
+    f = sample_wind_field([turb], 30.0, 0.1, np.random.default_rng(5))
+    g = f.grid
+    assert g.fade_in == tf
+    plain = GustGrid(g.values, g.xi0, g.dxi, g.h0, g.dh, g.advection, g.heading)
+    _, _, _, gp, gv = pack_wind_field(f)
+    _, _, _, gp0, gv0 = pack_wind_field(WindField(grid=plain))
+    wind = WindParams().with_field(f)
+    p0, vel = np.array([-12.0, 4.0, -63.0]), np.array([1.5, -0.7, 0.4])
+    for t in (-1.0, 0.0, 2.5, 5.0, 9.9, 10.0, 20.0):
+        r = 0.0 if t <= 0 else (1.0 if t >= tf else 0.5 * (1 - math.cos(math.pi * t / tf)))
+        p = p0 + vel * t
+        np.testing.assert_allclose(gust_at(*p, t, gp, gv), r * np.array(gust_at(*p, t, gp0, gv0)), atol=1e-12)
+        np.testing.assert_allclose(gust_at(*p, t, gp, gv), gust_velocity(wind, p, t), atol=1e-9)
+    for t in (3.3, 7.1):  # inside a grid cell: the sampled gust is smooth there
+        h = 1e-5
+        fd = (np.array(gust_at(*(p0 + vel * (t + h)), t + h, gp, gv))
+              - np.array(gust_at(*(p0 + vel * (t - h)), t - h, gp, gv))) / (2 * h)
+        rate = np.array(gust_rate(*(p0 + vel * t), *vel, t, gp, gv))
+        np.testing.assert_allclose(rate, fd, rtol=1e-5, atol=1e-6)
+        np.testing.assert_allclose(rate, ref_rate(wind, p0 + vel * t, vel, t), atol=1e-9)

@@ -57,6 +57,9 @@ class GustGrid:
     heading : float
         Direction the grid's u axis points to [rad], measured like the wind direction of
         ``WindParams``: 0 is the undisturbed wind (blowing towards -x), so e = (-cos heading, -sin heading).
+    fade_in : float
+        Fade-in time T_f [s] (>= 0): the grid's gust is scaled by 0.5 (1 - cos(pi t / T_f)) for 0 <= t < T_f
+        (0 before t = 0), so a field does not switch on at full strength at the start; 0: no fade.
     """
 
     values: np.ndarray
@@ -66,6 +69,7 @@ class GustGrid:
     dh: float = 1.0
     advection: float = 0.0
     heading: float = 0.0
+    fade_in: float = 0.0
 
     def __post_init__(self):
         v = np.ascontiguousarray(self.values, dtype=np.float64)
@@ -79,11 +83,14 @@ class GustGrid:
             object.__setattr__(self, name, _finite(f"GustGrid.{name}", getattr(self, name)))
         for name in ("dxi", "dh"):
             object.__setattr__(self, name, _finite(f"GustGrid.{name}", getattr(self, name), positive=True))
+        object.__setattr__(self, "fade_in", _finite("GustGrid.fade_in", self.fade_in))
+        if self.fade_in < 0:
+            raise ValueError(f"GustGrid.fade_in = {self.fade_in!r}: must be >= 0 s")
 
     def geometry(self) -> GridGeometry:
         """The grid's nodes, advection and heading as a :class:`GridGeometry`."""
         nx, nh = self.values.shape[:2]
-        return GridGeometry(self.xi0, self.dxi, nx, self.h0, self.dh, nh, self.advection, self.heading)
+        return GridGeometry(self.xi0, self.dxi, nx, self.h0, self.dh, nh, self.advection, self.heading, self.fade_in)
 
     @property
     def size(self) -> int:
@@ -97,12 +104,14 @@ class GustGrid:
         gp[C.GP_NXI], gp[C.GP_NH] = self.values.shape[0], self.values.shape[1]
         gp[C.GP_ADVECTION] = self.advection
         gp[C.GP_EX], gp[C.GP_EY] = -math.cos(self.heading), -math.sin(self.heading)
+        gp[C.GP_FADE] = self.fade_in
         return gp
 
 
 class GridGeometry(NamedTuple):
     """The nodes of a gust grid: xi = xi0 + i dxi (i < n_xi), h = h0 + j dh (j < n_h) [m], with its advection
-    speed [m/s] and heading [rad] (see :class:`GustGrid`). ``floats`` = n_xi n_h 3, ``bytes`` = 8 floats."""
+    speed [m/s], heading [rad] and fade-in time [s] (see :class:`GustGrid`). ``floats`` = n_xi n_h 3, ``bytes`` =
+    8 floats."""
 
     xi0: float
     dxi: float
@@ -112,6 +121,7 @@ class GridGeometry(NamedTuple):
     n_h: int
     advection: float
     heading: float
+    fade_in: float = 0.0
 
     @property
     def floats(self) -> int:
@@ -131,10 +141,12 @@ def union_geometry(geoms) -> GridGeometry | None:
         return None
     g0 = geoms[0]
     for g in geoms[1:]:
-        if not (math.isclose(g.advection, g0.advection) and math.isclose(g.heading, g0.heading)):
-            raise ValueError(f"gust grids advected at {g0.advection} m/s, heading {g0.heading} rad and at "
-                             f"{g.advection} m/s, heading {g.heading} rad cannot be combined: give every spatial "
-                             "disturbance the same wind_speed and heading")
+        if not (math.isclose(g.advection, g0.advection) and math.isclose(g.heading, g0.heading)
+                and g.fade_in == g0.fade_in):
+            raise ValueError(f"gust grids advected at {g0.advection} m/s, heading {g0.heading} rad, fade-in "
+                             f"{g0.fade_in} s and at {g.advection} m/s, heading {g.heading} rad, fade-in {g.fade_in} s "
+                             "cannot be combined: give every spatial disturbance the same wind_speed, heading and "
+                             "fade_in")
     if len(geoms) == 1:
         return g0
     dxi, dh = min(g.dxi for g in geoms), min(g.dh for g in geoms)
@@ -142,7 +154,7 @@ def union_geometry(geoms) -> GridGeometry | None:
     x1 = max(g.xi0 + (g.n_xi - 1) * g.dxi for g in geoms)
     h1 = max(g.h0 + (g.n_h - 1) * g.dh for g in geoms)
     return GridGeometry(x0, dxi, int(math.ceil((x1 - x0) / dxi - 1e-9)) + 1, h0, dh,
-                        int(math.ceil((h1 - h0) / dh - 1e-9)) + 1, g0.advection, g0.heading)
+                        int(math.ceil((h1 - h0) / dh - 1e-9)) + 1, g0.advection, g0.heading, g0.fade_in)
 
 
 def _interp_axis(u: np.ndarray, n: int):
@@ -178,7 +190,7 @@ def sum_grids(grids, geom: GridGeometry | None = None) -> GustGrid | None:
         v = g.values
         out += ((1.0 - a) * ((1.0 - b) * v[i][:, j] + b * v[i][:, j1])
                 + a * ((1.0 - b) * v[i1][:, j] + b * v[i1][:, j1]))
-    return GustGrid(out, geom.xi0, geom.dxi, geom.h0, geom.dh, geom.advection, geom.heading)
+    return GustGrid(out, geom.xi0, geom.dxi, geom.h0, geom.dh, geom.advection, geom.heading, geom.fade_in)
 
 
 @dataclass(frozen=True, eq=False)

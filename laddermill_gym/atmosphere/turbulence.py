@@ -139,6 +139,9 @@ class Turbulence(Disturbance):
         Dryden / von Karman: wind at 20 ft [m/s] for the low-altitude intensities (default from the severity).
     heading : float
         Direction of the field's u axis [rad] (0: the undisturbed wind).
+    fade_in : float
+        Time [s] over which the field rises from 0 to full strength, 0.5 (1 - cos(pi t / fade_in)), so an
+        episode starting from a state trimmed in steady wind does not meet the whole field at once (0: none).
     """
 
     model: str = "NTM"
@@ -152,6 +155,7 @@ class Turbulence(Disturbance):
     along_wind: tuple[float, float] = (-500.0, 500.0)
     dxi: float = 5.0
     heading: float = 0.0
+    fade_in: float = 0.0
 
     def __post_init__(self):
         if self.model not in TURBULENCE_MODELS:
@@ -159,6 +163,8 @@ class Turbulence(Disturbance):
         for name in ("wind_speed", "hub_height", "dh", "dxi"):
             _number(name, getattr(self, name))
         _number("heading", self.heading, positive=False)
+        if _number("fade_in", self.fade_in, positive=False) < 0:
+            raise ValueError(f"Turbulence.fade_in = {self.fade_in!r}: must be >= 0 s")
         _number("w20", self.w20, allow_none=True)
         object.__setattr__(self, "heights", _pair("heights", self.heights))
         object.__setattr__(self, "along_wind", _pair("along_wind", self.along_wind))
@@ -180,7 +186,7 @@ class Turbulence(Disturbance):
         n_xi += n_xi % 2
         h0, h1 = self.heights
         n_h = int(math.ceil((h1 - h0) / self.dh - 1e-9)) + 1
-        return GridGeometry(xi0, self.dxi, n_xi, h0, self.dh, n_h, self.wind_speed, self.heading)
+        return GridGeometry(xi0, self.dxi, n_xi, h0, self.dh, n_h, self.wind_speed, self.heading, self.fade_in)
 
     def gust_grid(self, t_end: float, rng: np.random.Generator) -> GustGrid:
         g = self.grid_geometry(t_end)
@@ -191,4 +197,4 @@ class Turbulence(Disturbance):
         comps = turbulence_spectra(self.model, kappa, h, self.wind_class, self.wind_speed, self.hub_height,
                                    self.severity, self.w20)
         values = np.stack([synthesize(s, sig, dec, g.dh, dkappa, g.n_xi, rng) for s, sig, dec in comps], axis=-1)
-        return GustGrid(values, g.xi0, g.dxi, g.h0, g.dh, g.advection, g.heading)
+        return GustGrid(values, g.xi0, g.dxi, g.h0, g.dh, g.advection, g.heading, g.fade_in)

@@ -28,6 +28,7 @@ from laddermill_gym.kernels.contract import (
     GP_DXI,
     GP_EX,
     GP_EY,
+    GP_FADE,
     GP_H0,
     GP_NH,
     GP_NXI,
@@ -170,8 +171,21 @@ def _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, c):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+def _fade(t, tf):
+    """The grid's fade-in factor r(t) = 0.5 (1 - cos(pi t / T_f)) on 0 <= t < T_f (0 before, 1 after; 1 for
+    T_f = 0) and its time derivative [1/s]."""
+    if tf <= 0.0 or t >= tf:
+        return 1.0, 0.0
+    if not t > 0.0:
+        return 0.0, 0.0
+    c = math.pi / tf
+    return 0.5 * (1.0 - math.cos(c * t)), 0.5 * c * math.sin(c * t)
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def gust_at(x, y, z, t, gp, gv):
-    """Gust velocity (global, m/s) of the frozen grid at the point (x, y, z) [m] and time t [s]."""
+    """Gust velocity (global, m/s) of the frozen grid at the point (x, y, z) [m] and time t [s] (times the
+    fade-in factor)."""
     if gp[GP_NXI] == 0.0:  # a batch row without a grid
         return 0.0, 0.0, 0.0
     ex, ey = gp[GP_EX], gp[GP_EY]
@@ -180,13 +194,14 @@ def gust_at(x, y, z, t, gp, gv):
     u, _, _ = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_U)
     v, _, _ = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_V)
     w, _, _ = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_W)
-    return u * ex - v * ey, u * ey + v * ex, -w
+    r, _ = _fade(t, gp[GP_FADE])
+    return r * (u * ex - v * ey), r * (u * ey + v * ex), -r * w
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
 def gust_rate(x, y, z, vx, vy, vz, t, gp, gv):
     """Time derivative (global, m/s^2) of the gust seen by a point at (x, y, z) [m] moving with the global
-    velocity (vx, vy, vz) [m/s]: dg/dxi (v . e - U) + dg/dh (-vz)."""
+    velocity (vx, vy, vz) [m/s]: r (dg/dxi (v . e - U) + dg/dh (-vz)) + r' g, r the fade-in factor."""
     if gp[GP_NXI] == 0.0:  # a batch row without a grid
         return 0.0, 0.0, 0.0
     ex, ey = gp[GP_EX], gp[GP_EY]
@@ -194,10 +209,13 @@ def gust_rate(x, y, z, vx, vy, vz, t, gp, gv):
     xid = vx * ex + vy * ey - gp[GP_ADVECTION]
     hd = -vz
     k00, k10, k01, k11, a, b, in_x, in_h = _grid_cell(xi, -z, gp)
-    _, ux, uh = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_U)
-    _, vx_, vh = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_V)
-    _, wx, wh = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_W)
-    du, dv, dw = ux * xid + uh * hd, vx_ * xid + vh * hd, wx * xid + wh * hd
+    u, ux, uh = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_U)
+    v, vx_, vh = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_V)
+    w, wx, wh = _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, GV_W)
+    r, rd = _fade(t, gp[GP_FADE])
+    du = r * (ux * xid + uh * hd) + rd * u
+    dv = r * (vx_ * xid + vh * hd) + rd * v
+    dw = r * (wx * xid + wh * hd) + rd * w
     return du * ex - dv * ey, du * ey + dv * ex, -dw
 
 

@@ -69,8 +69,9 @@ TM_T0, TM_DT, TM_SIZE = 0, 1, 2
 #: Frozen gust grid header ``gp`` (``atmosphere/field.py``): along-wind coordinate of the first grid column
 #: xi0 [m] and spacing [m], height of the first grid row [m] and spacing [m], columns and rows [-] (0 columns:
 #: an empty row of a batch), advection speed of the frozen field [m/s], downwind unit vector (x, y) of the grid's
-#: u axis [-].
-GP_XI0, GP_DXI, GP_H0, GP_DH, GP_NXI, GP_NH, GP_ADVECTION, GP_EX, GP_EY, GP_SIZE = range(10)
+#: u axis [-], fade-in time T_f [s] (the grid's values are scaled by 0.5 (1 - cos(pi t / T_f)) for 0 <= t < T_f,
+#: 0 before; T_f = 0: no fade).
+GP_XI0, GP_DXI, GP_H0, GP_DH, GP_NXI, GP_NH, GP_ADVECTION, GP_EX, GP_EY, GP_FADE, GP_SIZE = range(11)
 #: Components of a gust grid sample ``gv`` (flat, index ((i n_h + j) GV_SIZE + c)): along the mean wind u,
 #: lateral v (to the right looking downwind), vertical w (up) [m/s].
 GV_U, GV_V, GV_W, GV_SIZE = 0, 1, 2, 3

@@ -150,7 +150,18 @@ def gust_velocity(wind: WindParams, position: np.ndarray, t: float) -> np.ndarra
     xi, h = _grid_coordinates(grid, position, t)
     q = np.array([np.clip(xi, xs[0], xs[-1]), np.clip(h, hs[0], hs[-1])])
     uvw = interp(q[None])[0]
-    return uvw @ _gust_axes(grid)
+    return _fade_in(grid, t)[0] * (uvw @ _gust_axes(grid))
+
+
+def _fade_in(grid, t: float) -> tuple[float, float]:
+    """The grid's fade-in factor 0.5 (1 - cos(pi t / T_f)) on [0, T_f) (0 before, 1 after or for T_f = 0) and
+    its time derivative [1/s]."""
+    tf = getattr(grid, "fade_in", 0.0)
+    if tf <= 0.0 or t >= tf:
+        return 1.0, 0.0
+    if t <= 0.0:
+        return 0.0, 0.0
+    return 0.5 * (1.0 - np.cos(np.pi * t / tf)), 0.5 * np.pi / tf * np.sin(np.pi * t / tf)
 
 
 def gust_rate(wind: WindParams, position: np.ndarray, velocity: np.ndarray, t: float) -> np.ndarray:
@@ -173,7 +184,8 @@ def gust_rate(wind: WindParams, position: np.ndarray, velocity: np.ndarray, t: f
         lo[axis], hi[axis] = nodes[k], nodes[k + 1]
         grad[axis] = (interp(hi[None])[0] - interp(lo[None])[0]) / step
     rates = np.array([float(velocity @ axes[0]) - grid.advection, -float(velocity[2])])
-    return (rates @ grad) @ axes
+    r, r_dot = _fade_in(grid, t)
+    return r * ((rates @ grad) @ axes) + r_dot * (interp(q[None])[0] @ axes)
 
 
 def wind_rate(wind: WindParams, position: np.ndarray, velocity: np.ndarray, t: float) -> np.ndarray:
