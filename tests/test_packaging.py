@@ -85,6 +85,36 @@ _WHEEL_SCRIPT = textwrap.dedent("""
         env.close()
     craft = load_craft_config("roberts_flying_model")
     out["craft"] = {"name": craft.name, "file": str(craft.file), "mass": craft.mass}
+    # the command line: help and a short simulation, from this folder
+    import contextlib
+    import io
+    import os
+
+    from laddermill_gym.cli import main as cli_main
+
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf):
+        try:
+            cli_main(["--help"])
+        except SystemExit as e:
+            out["cli_help"] = {"exit": e.code, "lists_simulate": "simulate" in buf.getvalue()}
+        code = cli_main(["simulate", "tethered_wing", "--time", "0.5", "--out", "sim_out", "--quiet"])
+    out["cli_simulate"] = {"exit": code, "npz": os.path.isfile(os.path.join("sim_out", "tethered_wing.npz"))}
+    # a short Stable-Baselines3 run on the batched env (when the rl extra is installed)
+    try:
+        from stable_baselines3 import PPO
+    except ImportError:
+        out["sb3"] = None
+    else:
+        import torch
+
+        from laddermill_gym.envs.sb3 import sb3_vec_env
+
+        torch.set_num_threads(1)
+        venv = sb3_vec_env("laddermill_gym/TetheredWing-v0", 2, seed=0, episode_time=5.0)
+        model = PPO("MlpPolicy", venv, n_steps=250, batch_size=100, n_epochs=1, seed=0, device="cpu")
+        model.learn(1000)
+        out["sb3"] = {"steps": int(model.num_timesteps)}
     print("RESULT " + json.dumps(out))
 """)
 
@@ -161,6 +191,14 @@ def test_wheel_runs_outside_the_repository(wheel_site, tmp_path):
         assert r["finite"], f"{env_id}: observation not finite"
         assert r["module"].startswith("laddermill_gym."), r
     assert out["craft"]["name"] == "roberts_flying_model"
+    assert out["cli_help"] == {"exit": 0, "lists_simulate": True}
+    assert out["cli_simulate"] == {"exit": 0, "npz": True}
+    try:
+        import stable_baselines3  # noqa: F401
+    except ImportError:
+        assert out["sb3"] is None
+    else:
+        assert out["sb3"]["steps"] >= 1000
 
 
 # ------------------------------------------------------------------------------------------- c. user scenes
