@@ -71,6 +71,27 @@ def measure_costs(quick: bool, threads_all: int) -> list[dict]:
     return rows
 
 
+def thread_scaling(threads: tuple[int, ...], element_length: float = 0.01, repeats: int = 5) -> list[dict]:
+    """Step time of both methods at ``element_length`` on each thread count (speed-up against one thread)."""
+    sc = load_pointmass_scene(SCENE, element_length=element_length)
+    x0, _ = sc.initial_state()
+    dt_exp = EXPLICIT_SAFETY * explicit_stable_dt(sc.string)
+    sims = {}
+    for th in threads:
+        sims[("implicit", th)] = PointMassSimulator(sc.string, x0, sc.controls, sc.dt, "implicit", threads=th)
+        sims[("explicit", th)] = PointMassSimulator(sc.string, x0, sc.controls, dt_exp, "explicit", threads=th)
+    n_run = max(2, int(2e6 / sc.string.n_nodes))
+    cost = _step_cost(sims, {k: n_run for k in sims}, repeats)
+    rows = []
+    for (meth, th), c in cost.items():
+        rows.append({"elements": sc.string.n_elements, "method": meth, "threads": th, "step_s": c,
+                     "speedup": cost[(meth, threads[0])] / c,
+                     "real_time_factor": (sc.dt if meth == "implicit" else dt_exp) / c})
+        print(f"{sc.string.n_elements:9d} {meth:>9} {th:4d} threads: step {1e3 * c:9.3f} ms, speed-up "
+              f"{rows[-1]['speedup']:5.2f}, {rows[-1]['real_time_factor']:.3g} x real time", flush=True)
+    return rows
+
+
 def implicit_error(quick: bool, element_length: float = 0.5) -> list[dict]:
     """The implicit method at several steps against the explicit one (its stable step) over a short run from
     the quasi-static start: largest kite-position difference [m] at the end, and the kites' largest travel."""
@@ -151,12 +172,25 @@ def run_pointmass_benchmark(quick: bool = False, json_path: str | None = None) -
     return out
 
 
+def _run(args) -> int:
+    if args.scaling:
+        rows = thread_scaling(tuple(args.scaling))
+        if args.json:
+            with open(args.json, "w", encoding="utf-8") as fh:
+                json.dump(rows, fh, indent=1)
+    else:
+        run_pointmass_benchmark(args.quick, args.json)
+    return 0
+
+
 def add_parser(sub) -> argparse.ArgumentParser:
     """``laddermill bench-pointmass``-style subcommand (the lead wires it into ``laddermill bench``)."""
     p = sub.add_parser("bench-pointmass", help="point-mass fidelity: memory, per-element cost, real-time factor")
     p.add_argument("--quick", action="store_true", help="fewer repeats and a shorter error run")
     p.add_argument("--json", default=None, help="also write the results to this JSON file")
-    p.set_defaults(func=lambda a: run_pointmass_benchmark(a.quick, a.json) and 0)
+    p.add_argument("--scaling", type=int, nargs="+", default=None, metavar="THREADS",
+                   help="only the thread scaling at 500,000 elements on these thread counts (e.g. 1 2 4 8 16)")
+    p.set_defaults(func=_run)
     return p
 
 
