@@ -129,8 +129,9 @@ OBS_TABLE
     * ``physics_dt`` [s]: RK4 step (default: the config's, 2 ms);
     * ``episode_time`` [s]: episode length (default 120);
     * ``disturbances``: :class:`~laddermill_gym.atmosphere.disturbances.Disturbance` objects or their config dicts
-      (``{"type": "DirectionStep", "step": [-0.05, 0.05]}``; ranges are drawn per episode); default the 0.01 rad
-      direction step at 1 s;
+      (``{"type": "DirectionStep", "step": [-0.05, 0.05]}``; ranges are drawn per episode; every type of
+      :mod:`laddermill_gym.atmosphere.disturbance_spec`: IEC gusts, turbulence), or YAML text of them; default the
+      0.01 rad direction step at 1 s;
     * ``wind_dt`` [s]: spacing of the sampled wind modulation (default 0.1);
     * ``initial_noise``: dict or :class:`InitialNoise` (random start velocities);
     * ``reward``, ``termination``: dicts or :class:`RotorcraftRewardConfig` / :class:`RotorcraftTerminationConfig`;
