@@ -108,7 +108,7 @@ def test_bad_winch_config_names_file_and_field(tmp_path):
     bad = tmp_path / "bad.yaml"
     bad.write_text("scene: pumping_kite\nwinch:\n  mode: commanded\n  speed_time_constant: -1\n"
                    "  speed_limits: [-1, 1]\ncycle: {reel_out_factor: 0.3, reel_length: 200, reel_in_speed: 5,"
-                   " alpha_out_deg: 8, alpha_in_deg: 0}\n")
+                   " alpha_out_deg: 8, alpha_in_deg: 0, depower_tension: 300, depower_overrun: 20}\n")
     with pytest.raises(ConfigError, match=r"bad.yaml.*winch.speed_time_constant"):
         load_pumping(bad)
     bad.write_text(bad.read_text().replace("speed_time_constant: -1", "speed_time_constant: 1\n  drumm: 2"))

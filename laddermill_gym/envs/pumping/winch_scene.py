@@ -35,12 +35,15 @@ def electrical_energy(mechanical: np.ndarray | float, efficiency: float) -> np.n
 
 @dataclass(frozen=True)
 class CycleSpec:
-    """The scripted pumping cycle (Lansdorp et al. 2008): reel out at ``reel_out_factor`` times the wind speed at
-    the wing until ``reel_length`` has been paid out, switch the angle of attack from ``alpha_out`` to ``alpha_in``,
-    reel in at ``reel_in_speed`` until the tether is back at its start length, switch back, repeat.
+    """The scripted pumping cycle (Lansdorp et al. 2008): reel out at ``reel_out_factor`` times the wind along the
+    tether at the wing until ``reel_length`` has been paid out, switch the angle of attack from ``alpha_out`` to
+    ``alpha_in`` and keep reeling out until the drum tension has fallen below ``depower_tension`` (or another
+    ``depower_overrun`` has been paid out), reel in at ``reel_in_speed`` until the tether is back at its start
+    length, switch back, repeat (``control/pumping_cycle.py``; the depower wait is ours: docs/pumping.md).
 
     reel_out_factor [-], reel_length [m], reel_in_speed [m/s] (> 0, the speed of the tether coming in),
-    alpha_out, alpha_in [rad] the trim angles of attack of the two phases (the elevators are trimmed for them).
+    alpha_out, alpha_in [rad] the angles of attack of the two phases (their elevators: the scene's trim and the
+    tethered wing's pitch balance), depower_tension [N], depower_overrun [m].
     """
 
     reel_out_factor: float
@@ -48,9 +51,11 @@ class CycleSpec:
     reel_in_speed: float
     alpha_out: float
     alpha_in: float
+    depower_tension: float
+    depower_overrun: float
 
     def __post_init__(self):
-        for name in ("reel_out_factor", "reel_length", "reel_in_speed"):
+        for name in ("reel_out_factor", "reel_length", "reel_in_speed", "depower_tension", "depower_overrun"):
             v = getattr(self, name)
             if not (math.isfinite(v) and v > 0):
                 raise ValueError(f"cycle.{name} = {v!r}: must be a finite number > 0")
@@ -137,7 +142,9 @@ def load_pumping(name_or_path: str | Path = "pumping_kite", **scene_overrides) -
                           reel_length=c.number("reel_length", positive=True),
                           reel_in_speed=c.number("reel_in_speed", positive=True),
                           alpha_out=math.radians(c.number("alpha_out_deg")),
-                          alpha_in=math.radians(c.number("alpha_in_deg")))
+                          alpha_in=math.radians(c.number("alpha_in_deg")),
+                          depower_tension=c.number("depower_tension", positive=True),
+                          depower_overrun=c.number("depower_overrun", positive=True))
     except ValueError as err:
         raise ConfigError(f"{path}: {err}") from None
     c.done()

@@ -1,0 +1,53 @@
+"""Settings of ``laddermill_gym/PumpingKite-v0``: the reward (frozen dataclass that validates its fields, naming field
+and value) and the failure codes. Terminations use the wing envs' :class:`~laddermill_gym.envs.task.TerminationConfig`,
+the random start the rotorcraft's :class:`~laddermill_gym.envs.rotorcraft.settings.InitialNoise`."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from laddermill_gym.envs.rotorcraft.settings import InitialNoise
+from laddermill_gym.envs.task import TerminationConfig, check_nonnegative_fields
+
+__all__ = ["PumpingRewardConfig", "InitialNoise", "TerminationConfig", "PUMPING_FAILURES"]
+
+#: Termination causes (code -> name), the wing envs' codes; 0: still flying.
+PUMPING_FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state, speed or rate limit, singular "
+                                    "mass, or the winch reeled in below 5 % of the start length)",
+                                    2: "ground contact", 3: "cable over its breaking load",
+                                    4: "aerodynamic range exceeded"}
+
+
+@dataclass(frozen=True)
+class PumpingRewardConfig:
+    """Reward per control period of length dt: r = w_P E_el / (P_ref dt) - w_y S(dy) - w_w S(rates)
+    - failure_penalty [terminated], S(x) = 1 - exp(-x) (bounded below).
+
+    E_el [J] is the electrical energy of the period: eta dE while the winch generates (dE > 0, the mechanical
+    energy at the drum), dE / eta while it reels in (dE < 0) (Lansdorp et al. 2008 eq. 13), so the power terms of
+    an episode sum to its net electrical energy over P_ref dt. ``reference_power`` P_ref [W] scales it (default
+    1 kW, the order of the scripted cycle's mean on the default scene; docs/pumping.md).
+
+    * S(dy): x = (dy / lateral_scale)^2, dy the lateral CG offset [m] from the wind plane; lateral_scale [m]
+      defaults to 5 % of the tether's start length;
+    * S(rates): x = (p^2 + r^2) / rate_scale^2, body roll and yaw rates [rad/s].
+
+    ``failure_penalty`` [-] is subtracted once, in the step that ends an episode by a physical failure.
+    """
+
+    reference_power: float = 1000.0
+    power_weight: float = 1.0
+    lateral_weight: float = 0.1
+    lateral_scale: float | None = None
+    rate_weight: float = 0.1
+    rate_scale: float = 0.5
+    failure_penalty: float = 100.0
+
+    def __post_init__(self):
+        check_nonnegative_fields(self, "reward", optional=("lateral_scale",))
+        if not self.reference_power > 0:
+            raise ValueError(f"reward.reference_power = {self.reference_power!r}: must be > 0 W")
+        if self.rate_scale <= 0:
+            raise ValueError(f"reward.rate_scale = {self.rate_scale!r}: must be > 0 rad/s")
+        if self.lateral_scale is not None and self.lateral_scale <= 0:
+            raise ValueError(f"reward.lateral_scale = {self.lateral_scale!r}: must be > 0 m")
