@@ -113,10 +113,13 @@ def pack(s: PointMassString) -> PMModel:
 
 
 def make_work(s: PointMassString, segment: int = SOLVER_SEGMENT) -> PMWork:
-    """The workspace: tensions (n_e,), elimination checkpoints (n / segment, 6) and one segment (segment, 6)."""
-    seg = max(1, min(int(segment), s.n_nodes))
-    nseg = (s.n_nodes + seg - 1) // seg
-    return PMWork(tension=np.zeros(s.n_elements), ckpt=np.zeros((nseg, P.S_SIZE)), seg=np.zeros((seg, P.S_SIZE)))
+    """The workspace: tensions (n_e,) and, for each side of the two-sided elimination (n / 2 nodes each),
+    checkpoints (2, n / (2 segment), 6), one segment (2, segment, 6) and the meeting data (2, 9)."""
+    half = max(1, s.n_nodes // 2)
+    seg = max(1, min(int(segment), half))
+    nseg = (half + seg - 1) // seg
+    return PMWork(tension=np.zeros(s.n_elements), ckpt=np.zeros((2, nseg, P.S_SIZE)),
+                  seg=np.zeros((2, seg, P.S_SIZE)), mid=np.zeros((2, 9)))
 
 
 def held_bytes(M: PMModel, W: PMWork, x: np.ndarray, u: np.ndarray) -> dict[str, int]:

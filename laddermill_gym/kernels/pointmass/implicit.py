@@ -13,8 +13,9 @@ the string in O(n) (Thomas). Each pivot D'_j = D_j - S_j D'_{j-1}^{-1} S_j is sy
 
 Memory: the right-hand side and the eliminated right-hand side overwrite the velocities in place; the inverse
 pivots (6 numbers each) are kept only at every ``seg``-th node (``W.ckpt``) and recomputed one segment at a time
-on the way back (``W.seg``): 6 (n / seg + seg) numbers instead of 6 n, at the price of a second forward pass
-over the blocks (no right-hand side). The elimination is sequential; the assembly and the move are parallel.
+on the way back (``W.seg``): 6 (n / seg + 2 seg) numbers instead of 6 n, at the price of a second forward pass
+over the blocks (no right-hand side). The elimination is two-sided (:func:`_solve`: from both ends towards the
+middle on two threads); the assembly and the move are parallel over chunks of nodes.
 """
 
 from numba import njit, prange
@@ -72,24 +73,31 @@ def _inv(d0, d1, d2, d3, d4, d5):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
-def _pivot(x, j, tension, M, dt, lower, q):
-    """Inverse pivot D'_j^{-1} from the lower element's S (``lower``) and the previous inverse pivot ``q``
-    (ignored for j = 0). Returns (inverse pivot, the upper element's S)."""
-    par = M.par
+def _between(x, j, step, tension, M, dt):
+    """S of the element between node j and node j + step (zero where there is none)."""
+    e = j + 1 if step > 0 else j
+    if step > 0 and not has_upper(j, M.par):
+        return 0.0, 0.0, 0.0, 0.0, 0.0
+    return _block(x, e, tension, M.par, dt)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def _pivot(x, j, step, tension, M, dt, prev, q, first):
+    """Inverse pivot of node j in a sweep going ``step`` (+1 up, -1 down): D_j minus, unless ``first``, the
+    eliminated previous node's S q S (``prev``: S of the element to node j - step, ``q`` its inverse pivot).
+    Returns (inverse pivot, S of the element to node j + step)."""
     m = node_mass(j, M)
-    a, b, tx, ty, tz = lower
-    d = (m + a * tx * tx + b, m + a * ty * ty + b, m + a * tz * tz + b, a * tx * ty, a * tx * tz, a * ty * tz)
-    upper = (0.0, 0.0, 0.0, 0.0, 0.0)
-    if has_upper(j, par):
-        upper = _block(x, j + 1, tension, par, dt)
-        a, b, tx, ty, tz = upper
+    nxt = _between(x, j, step, tension, M, dt)
+    d = (m, m, m, 0.0, 0.0, 0.0)
+    for s_e in (prev, nxt):
+        a, b, tx, ty, tz = s_e
         d = (d[0] + a * tx * tx + b, d[1] + a * ty * ty + b, d[2] + a * tz * tz + b, d[3] + a * tx * ty,
              d[4] + a * tx * tz, d[5] + a * ty * tz)
-    if j > 0:
-        a, b, tx, ty, tz = lower
+    if not first:
+        a, b, tx, ty, tz = prev
         e = _sds(a, b, tx, ty, tz, q[0], q[1], q[2], q[3], q[4], q[5])
         d = (d[0] - e[0], d[1] - e[1], d[2] - e[2], d[3] - e[3], d[4] - e[4], d[5] - e[5])
-    return _inv(d[0], d[1], d[2], d[3], d[4], d[5]), upper
+    return _inv(d[0], d[1], d[2], d[3], d[4], d[5]), nxt
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
@@ -107,61 +115,102 @@ def _qmul(q, vx, vy, vz):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def _forward(x, tension, M, dt, ckpt, seg):
-    """Forward elimination: r'_j = r_j + S_j D'_{j-1}^{-1} r'_{j-1} in place in the velocities; the inverse
-    pivot at the end of every segment of ``seg`` nodes into ``ckpt``."""
-    n = int(M.par[PP_N])
-    lower = _block(x, 0, tension, M.par, dt)
+def _sweep(x, tension, M, dt, j0, count, step, ckpt, mid, seg):
+    """Eliminate ``count`` nodes from j0 going ``step``: r'_j = r_j + S q_prev r'_prev in place in the
+    velocities; the inverse pivot at the end of every segment of ``seg`` nodes into ``ckpt``; the last node's
+    inverse pivot and q r' into ``mid`` (9,)."""
+    prev = _between(x, j0, -step, tension, M, dt)
     q = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
-    yx, yy, yz = 0.0, 0.0, 0.0  # D'_{j-1}^{-1} r'_{j-1}
-    for j in range(n):
+    yx, yy, yz = 0.0, 0.0, 0.0
+    for i in range(count):
+        j = j0 + i * step
         o = N3_SIZE * j + N3_VEL
-        if j > 0:
-            a, b, tx, ty, tz = lower
+        if i > 0:
+            a, b, tx, ty, tz = prev
             sx, sy, sz = _smul(a, b, tx, ty, tz, yx, yy, yz)
             x[o] += sx
             x[o + 1] += sy
             x[o + 2] += sz
-        q, lower = _pivot(x, j, tension, M, dt, lower, q)
+        q, prev = _pivot(x, j, step, tension, M, dt, prev, q, i == 0)
         yx, yy, yz = _qmul(q, x[o], x[o + 1], x[o + 2])
-        if (j + 1) % seg == 0 or j == n - 1:
-            c = j // seg
-            for i in range(6):
-                ckpt[c, i] = q[i]
+        if (i + 1) % seg == 0 or i == count - 1:
+            for k in range(6):
+                ckpt[i // seg, k] = q[k]
+    for k in range(6):
+        mid[k] = q[k]
+    mid[6], mid[7], mid[8] = yx, yy, yz
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def _backward(x, tension, M, dt, ckpt, buf):
-    """Back substitution v_j = D'_j^{-1} (r'_j + S_{j+1} v_{j+1}), segment by segment from the top, each
-    segment's inverse pivots recomputed from the previous segment's checkpoint."""
-    n = int(M.par[PP_N])
+def _back(x, tension, M, dt, j0, count, step, ckpt, buf, vx, vy, vz):
+    """Back substitution of a sweep: v_j = q_j (r'_j + S_next v_next) from the sweep's last node back to j0,
+    v_next starting at (vx, vy, vz), the solution of the node beyond the last; each segment's inverse pivots
+    recomputed from the previous segment's checkpoint."""
     seg = buf.shape[0]
-    nseg = (n + seg - 1) // seg
-    ux, uy, uz = 0.0, 0.0, 0.0  # v_{j+1}
-    up = (0.0, 0.0, 0.0, 0.0, 0.0)  # S_{j+1}
+    nseg = (count + seg - 1) // seg
     for c in range(nseg - 1, -1, -1):
-        j0 = c * seg
-        j1 = min(n, j0 + seg)
+        i0 = c * seg
+        i1 = min(count, i0 + seg)
         q = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
         if c > 0:
             q = (ckpt[c - 1, 0], ckpt[c - 1, 1], ckpt[c - 1, 2], ckpt[c - 1, 3], ckpt[c - 1, 4], ckpt[c - 1, 5])
-        lower = _block(x, j0, tension, M.par, dt)
-        for j in range(j0, j1):
-            q, nxt = _pivot(x, j, tension, M, dt, lower, q)
-            for i in range(6):
-                buf[j - j0, i] = q[i]
-            lower = nxt
-        for j in range(j1 - 1, j0 - 1, -1):
+        prev = _between(x, j0 + i0 * step, -step, tension, M, dt)
+        for i in range(i0, i1):
+            q, prev = _pivot(x, j0 + i * step, step, tension, M, dt, prev, q, i == 0)
+            for k in range(6):
+                buf[i - i0, k] = q[k]
+        for i in range(i1 - 1, i0 - 1, -1):
+            j = j0 + i * step
             o = N3_SIZE * j + N3_VEL
-            rx, ry, rz = x[o], x[o + 1], x[o + 2]
-            if j < n - 1:
-                a, b, tx, ty, tz = up
-                sx, sy, sz = _smul(a, b, tx, ty, tz, ux, uy, uz)
-                rx, ry, rz = rx + sx, ry + sy, rz + sz
-            qj = (buf[j - j0, 0], buf[j - j0, 1], buf[j - j0, 2], buf[j - j0, 3], buf[j - j0, 4], buf[j - j0, 5])
-            ux, uy, uz = _qmul(qj, rx, ry, rz)
-            x[o], x[o + 1], x[o + 2] = ux, uy, uz
-            up = _block(x, j, tension, M.par, dt)
+            a, b, tx, ty, tz = _between(x, j, step, tension, M, dt)
+            sx, sy, sz = _smul(a, b, tx, ty, tz, vx, vy, vz)
+            qj = (buf[i - i0, 0], buf[i - i0, 1], buf[i - i0, 2], buf[i - i0, 3], buf[i - i0, 4], buf[i - i0, 5])
+            vx, vy, vz = _qmul(qj, x[o] + sx, x[o + 1] + sy, x[o + 2] + sz)
+            x[o], x[o + 1], x[o + 2] = vx, vy, vz
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _middle(x, tension, M, dt, m, n_lo, n_hi, mid):
+    """Solve the meeting node m from both sweeps' last pivots and eliminated right-hand sides."""
+    o = N3_SIZE * m + N3_VEL
+    lo = _between(x, m, -1, tension, M, dt)
+    hi = _between(x, m, 1, tension, M, dt)
+    mass = node_mass(m, M)
+    d = (mass, mass, mass, 0.0, 0.0, 0.0)
+    rx, ry, rz = x[o], x[o + 1], x[o + 2]
+    for side in range(2):
+        a, b, tx, ty, tz = lo if side == 0 else hi
+        d = (d[0] + a * tx * tx + b, d[1] + a * ty * ty + b, d[2] + a * tz * tz + b, d[3] + a * tx * ty,
+             d[4] + a * tx * tz, d[5] + a * ty * tz)
+        if (n_lo if side == 0 else n_hi) > 0:
+            e = _sds(a, b, tx, ty, tz, mid[side, 0], mid[side, 1], mid[side, 2], mid[side, 3], mid[side, 4],
+                     mid[side, 5])
+            d = (d[0] - e[0], d[1] - e[1], d[2] - e[2], d[3] - e[3], d[4] - e[4], d[5] - e[5])
+            sx, sy, sz = _smul(a, b, tx, ty, tz, mid[side, 6], mid[side, 7], mid[side, 8])
+            rx, ry, rz = rx + sx, ry + sy, rz + sz
+    q = _inv(d[0], d[1], d[2], d[3], d[4], d[5])
+    x[o], x[o + 1], x[o + 2] = _qmul(q, rx, ry, rz)
+
+
+@njit(cache=True, error_model="numpy", parallel=True)
+def _solve(x, tension, M, dt, W):
+    """Two-sided block elimination: nodes below the middle m = n // 2 eliminated upwards and nodes above it
+    downwards at the same time (two parallel tasks), the middle node solved, then both back substitutions
+    at the same time. Each side keeps its own checkpoints ``W.ckpt[side]`` and segment ``W.seg[side]``."""
+    n = int(M.par[PP_N])
+    m = n // 2
+    counts = (m, n - 1 - m)
+    for side in prange(2):
+        step = 1 if side == 0 else -1
+        j0 = 0 if side == 0 else n - 1
+        _sweep(x, tension, M, dt, j0, counts[side], step, W.ckpt[side], W.mid[side], W.seg.shape[1])
+    _middle(x, tension, M, dt, m, counts[0], counts[1], W.mid)
+    o = N3_SIZE * m + N3_VEL
+    vx, vy, vz = x[o], x[o + 1], x[o + 2]
+    for side in prange(2):
+        step = 1 if side == 0 else -1
+        j0 = 0 if side == 0 else n - 1
+        _back(x, tension, M, dt, j0, counts[side], step, W.ckpt[side], W.seg[side], vx, vy, vz)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
@@ -195,8 +244,7 @@ def implicit_advance(t, x, u, dt, nsteps, M, W):
         s, d, _, _ = modulation(tk, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
         tensions(x, M, W.tension, False)
         _assemble(tk, x, u, dt, M, W.tension, s, d)
-        _forward(x, W.tension, M, dt, W.ckpt, W.seg.shape[0])
-        _backward(x, W.tension, M, dt, W.ckpt, W.seg)
+        _solve(x, W.tension, M, dt, W)
         st = move_and_check(x, dt, M.par)
         if st != PM_OK:
             return st, k + 1

@@ -46,8 +46,10 @@ PM_OK, PM_NONFINITE, PM_LIMIT, PM_GROUND = 0, 2, 3, 4
 
 PMModel = namedtuple("PMModel", ["wf", "tmod", "ms", "md", "gp", "gv", "par", "knode", "kflag", "kt",
                                  "kcl", "kcd"])
-#: Workspace: element tension [N] (n_e,); checkpoints of the block elimination (n_seg, 6) and one segment's
-#: inverse pivots (seg, 6) (symmetric 3x3 blocks: xx, yy, zz, xy, xz, yz), see ``kernels/pointmass/implicit.py``.
-PMWork = namedtuple("PMWork", ["tension", "ckpt", "seg"])
+#: Workspace: element tension [N] (n_e,); per side of the two-sided block elimination (0: from the bottom up,
+#: 1: from the top down) its checkpoints (2, n_seg, 6), one segment's inverse pivots (2, seg, 6) (symmetric 3x3
+#: blocks: xx, yy, zz, xy, xz, yz) and its last pivot and eliminated right-hand side (2, 9), see
+#: ``kernels/pointmass/implicit.py``.
+PMWork = namedtuple("PMWork", ["tension", "ckpt", "seg", "mid"])
 #: Symmetric 3x3 storage order.
 S_XX, S_YY, S_ZZ, S_XY, S_XZ, S_YZ, S_SIZE = 0, 1, 2, 3, 4, 5, 6
