@@ -2,6 +2,8 @@
 
 * ``open_loop``: trim controls held (LadderMill-v0: the operating point's tail settings, zero normalised action);
 * ``lqr`` (the environment's default design, configs/agents/lqr_<scene>.yaml) or ``lqr:<config.yaml>``;
+* ``scripted`` (PumpingKite-v0 only): the scripted pumping cycle; there ``lqr`` is the cycle with the lateral LQR
+  (``control/pumping_cycle.py``) and ``open_loop`` the reel-out trim with the winch stopped;
 * a path to a training run folder or model file: a Stable-Baselines3 policy (``rl`` extra).
 """
 
@@ -92,6 +94,28 @@ def _mill_controller(spec: str, kw: dict) -> Controller:
     return design_mill_lqr(cfg, task).controller(task)
 
 
+def _pumping_controller(spec: str, kw: dict) -> Controller:
+    """PumpingKite-v0: ``open_loop`` (the zero action: reel-out trim, winch stopped), ``scripted`` (the pumping cycle
+    with rudder and aileron at trim) or ``lqr`` / ``lqr:<config>`` (the cycle with the wing's lateral LQR; default
+    config ``lqr_tethered_wing.yaml``, designed on the pumping scene: ``control.pumping_cycle``)."""
+    import numpy as np
+
+    from laddermill_gym.control.pumping_cycle import PumpingCycleController, lateral_lqr
+    from laddermill_gym.envs.pumping.task import PumpingTask
+
+    task = PumpingTask(1, **{k: v for k, v in kw.items() if k != "parallel"})
+    if spec == "open_loop":
+        from laddermill_gym.control.open_loop import OpenLoopController
+
+        ctrl = OpenLoopController(np.zeros(task.n_actions), np.zeros(task.n_actions), np.ones(task.n_actions))
+        ctrl.obs_dim = task.obs_dim  # its default assumes the wing layout
+        return ctrl
+    if spec == "scripted":
+        return PumpingCycleController(task)
+    path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_LQR_CONFIGS["laddermill_gym/TetheredWing-v0"]
+    return PumpingCycleController(task, lateral_lqr(task, path))
+
+
 def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> Controller:
     """The controller named by ``spec`` for environment ``env_id`` (with argument overrides ``env_kwargs``).
 
@@ -102,6 +126,9 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     kw = dict(ENV_IDS[env_id], **(env_kwargs or {}))
     if "craft" in kw and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):
         return _craft_controller(spec, kw)
+    if task_class(env_id).__name__ == "PumpingTask" and (spec in ("open_loop", "scripted", "lqr")
+                                                        or spec.startswith("lqr:")):
+        return _pumping_controller(spec, kw)
     if task_class(env_id).__name__ == "MillTask" and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):
         return _mill_controller(spec, kw)
     if spec in ("open_loop",) or spec == "lqr" or spec.startswith("lqr:"):

@@ -9,6 +9,10 @@ Registered on ``import laddermill_gym``:
 * ``laddermill_gym/LadderMill-v0``: the paper's laddermill, 101 wings on the endless cable moving through the
   ground generator (scene ``laddermill``, 20 Hz control of the tails by slot, 120 s episodes from the periodic
   stationary motion, the 0.01 rad direction step at 1 s), :class:`~laddermill_gym.envs.laddermill.env.LadderMillEnv`;
+* ``laddermill_gym/PumpingKite-v0``: Lansdorp et al.'s (2008) pumping kite, one wing on a 300 m tether wound on a
+  winch (configs/pumping/pumping_kite.yaml, 20 Hz control of the tails and the winch speed, 400 s episodes of about
+  two reel-out / reel-in cycles, the 0.01 rad direction step at 1 s), :class:`~laddermill_gym.envs.pumping.env.
+  PumpingKiteEnv`;
 * ``laddermill_gym/Rotorcraft-v0``: Roberts' tethered twin-rotor craft (configs/rotorcraft/, its own 2 ms
   RK4 step, 20 Hz control of collective and differential collective, 120 s episodes, a 0.01 rad direction
   step at 1 s), :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`.
@@ -26,6 +30,8 @@ import inspect
 from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
 from laddermill_gym.envs.laddermill.env import LadderMillEnv
 from laddermill_gym.envs.laddermill.vector import LadderMillVectorEnv
+from laddermill_gym.envs.pumping.env import PumpingKiteEnv
+from laddermill_gym.envs.pumping.vector import PumpingKiteVectorEnv
 from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
 from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv
 from laddermill_gym.envs.task import FAILURES, RewardConfig, TerminationConfig, WingTask
@@ -34,7 +40,7 @@ from laddermill_gym.envs.wing_env import WingEnv
 
 __all__ = ["DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule", "FAILURES", "RewardConfig",
            "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "RotorcraftEnv", "RotorcraftVectorEnv",
-           "LadderMillEnv", "LadderMillVectorEnv",
+           "LadderMillEnv", "LadderMillVectorEnv", "PumpingKiteEnv", "PumpingKiteVectorEnv",
            "ENV_IDS", "ENTRY_POINTS", "register_envs", "task_class", "env_arguments"]
 
 #: Registered environment ids and their default arguments (units: seconds).
@@ -45,6 +51,7 @@ ENV_IDS: dict[str, dict] = {
                                           groups="per_wing"),
     "laddermill_gym/Rotorcraft-v0": dict(craft="roberts_flying_model", control_dt=0.05, episode_time=120.0),
     "laddermill_gym/LadderMill-v0": dict(scene="laddermill", control_dt=0.05, episode_time=120.0),
+    "laddermill_gym/PumpingKite-v0": dict(config="pumping_kite", control_dt=0.05, episode_time=400.0),
 }
 _WING = ("laddermill_gym.envs.wing_env:WingEnv", "laddermill_gym.envs.vector:WingVectorEnv",
          "laddermill_gym.envs.task:WingTask")
@@ -58,6 +65,9 @@ ENTRY_POINTS: dict[str, tuple[str, str, str]] = {
     "laddermill_gym/LadderMill-v0": ("laddermill_gym.envs.laddermill.env:LadderMillEnv",
                                      "laddermill_gym.envs.laddermill.vector:LadderMillVectorEnv",
                                      "laddermill_gym.envs.laddermill.task:MillTask"),
+    "laddermill_gym/PumpingKite-v0": ("laddermill_gym.envs.pumping.env:PumpingKiteEnv",
+                                      "laddermill_gym.envs.pumping.vector:PumpingKiteVectorEnv",
+                                      "laddermill_gym.envs.pumping.task:PumpingTask"),
 }
 
 

@@ -1,0 +1,153 @@
+"""laddermill_gym/PumpingKite-v0: Gymnasium's checker, seeding, pickling, the native vector env against single envs,
+the reward's power term against a quadrature of the drum's tension and speed, terminations, the controllers of
+the factory and the evaluation harness."""
+
+import pickle
+
+import gymnasium as gym
+import numpy as np
+import pytest
+from gymnasium.utils.env_checker import check_env
+from scipy.integrate import trapezoid
+
+import laddermill_gym  # noqa: F401  (registers the envs)
+from laddermill_gym.atmosphere.disturbances import DirectionStep, RandomPerturbation
+from laddermill_gym.control.factory import make_controller
+from laddermill_gym.envs.pumping.env import PumpingKiteEnv
+from laddermill_gym.envs.pumping.observation import N_OBS, WINCH_OBS_INDEX
+from laddermill_gym.envs.pumping.vector import PumpingKiteVectorEnv
+from laddermill_gym.kernels.contract import B3_POS
+
+PK = "laddermill_gym/PumpingKite-v0"
+NOISY = dict(disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.01), DirectionStep(step=(-0.01, 0.01))],
+             initial_noise={"lateral_velocity": 0.05, "roll_rate": 0.01})
+
+
+def _rollout(env, actions, seed):
+    obs, _ = env.reset(seed=seed)
+    out, rew = [obs], []
+    for a in actions:
+        obs, r, term, trunc, _ = env.step(a)
+        out.append(obs)
+        rew.append(r)
+        if term or trunc:
+            break
+    return np.array(out), np.array(rew)
+
+
+def test_registration_and_checkers():
+    env = gym.make(PK, render_mode="rgb_array", episode_time=2.0)
+    assert isinstance(env.unwrapped, PumpingKiteEnv)
+    check_env(env.unwrapped)
+    assert env.observation_space.shape == (N_OBS,) and env.action_space.shape == (4,)
+    env.reset(seed=0)
+    frame = env.render()
+    assert frame.ndim == 3 and frame.shape[2] == 3
+    env.close()
+    vec = gym.make_vec(PK, num_envs=2, vectorization_mode="vector_entry_point", episode_time=2.0)
+    assert isinstance(vec, PumpingKiteVectorEnv)
+    pytest.importorskip("stable_baselines3")
+    from stable_baselines3.common.env_checker import check_env as sb3_check
+
+    sb3_check(PumpingKiteEnv(episode_time=1.0), warn=True)
+
+
+def test_same_seed_same_rollout_and_seeds_matter():
+    acts = np.random.default_rng(0).uniform(-0.2, 0.2, size=(60, 4)).astype(np.float32)
+    o1, r1 = _rollout(PumpingKiteEnv(**NOISY), acts, seed=7)
+    o2, r2 = _rollout(PumpingKiteEnv(**NOISY), acts, seed=7)
+    o3, _ = _rollout(PumpingKiteEnv(**NOISY), acts, seed=8)
+    np.testing.assert_array_equal(o1, o2)
+    np.testing.assert_array_equal(r1, r2)
+    assert not np.array_equal(o1[:5], o3[:5])
+
+
+@pytest.mark.parametrize("parallel", [False, True])
+def test_vector_copies_equal_single_envs(parallel):
+    acts = np.random.default_rng(1).uniform(-0.3, 0.3, size=(40, 3, 4)).astype(np.float32)
+    vec = PumpingKiteVectorEnv(3, parallel=parallel, **NOISY)
+    ov, _ = vec.reset(seed=11)
+    singles = [PumpingKiteEnv(**NOISY) for _ in range(3)]
+    os_ = [e.reset(seed=11 + i)[0] for i, e in enumerate(singles)]
+    np.testing.assert_array_equal(ov, np.array(os_))
+    for a in acts:
+        ov, rv, *_ = vec.step(a)
+        for i, e in enumerate(singles):
+            o, r, *_ = e.step(a[i])
+            np.testing.assert_array_equal(ov[i], o)
+            assert rv[i] == r
+
+
+def test_pickle_round_trip_continues_identically():
+    env = PumpingKiteEnv(**NOISY)
+    env.reset(seed=3)
+    acts = np.random.default_rng(2).uniform(-0.2, 0.2, size=(30, 4)).astype(np.float32)
+    for a in acts[:15]:
+        env.step(a)
+    clone = pickle.loads(pickle.dumps(env))
+    for a in acts[15:]:
+        o1, r1, *_ = env.step(a)
+        o2, r2, *_ = clone.step(a)
+        np.testing.assert_array_equal(o1, o2)
+        assert r1 == r2
+
+
+def test_power_reward_is_the_net_electrical_energy():
+    """Reeling out at 1.5 m/s then in at 1.67 m/s: the power terms summed times P_ref dt equal eta times the
+    trapezoid of T_0 V over the reel-out steps plus 1 / eta times that of the reel-in steps (the observations'
+    drum tension and winch speed, sampled every 0.05 s)."""
+    env = PumpingKiteEnv(disturbances=[], episode_time=40.0)
+    obs, _ = env.reset(seed=0)
+    i = WINCH_OBS_INDEX
+    samples, rp = [obs], []
+    for k in range(600):
+        a = np.array([0.0, 0.0, 0.0, 0.15 if k < 300 else -0.1], np.float32)
+        obs, _, term, _, info = env.step(a)
+        assert not term, info["failure_reason"]
+        samples.append(obs)
+        rp.append(info["reward_power"])
+    s = np.array(samples, dtype=float)
+    p = s[:, i["drum_tension"]] * s[:, i["winch_speed"]]
+    t = 0.05 * np.arange(len(s))
+    eta = env.task.winch.efficiency
+    gen, mot = np.where(p > 0, p, 0.0), np.where(p < 0, p, 0.0)
+    expected = eta * trapezoid(gen, t) + trapezoid(mot, t) / eta
+    ref = env.task.reward_config.reference_power
+    assert np.sum(rp) * ref * 0.05 == pytest.approx(expected, rel=5e-3)
+    assert s[-1, i["paid_out"]] == pytest.approx(0.05 * (300 * 1.5 - 300 * 1.67), abs=1.0)  # the 0.5 s lag
+
+
+def test_ground_contact_terminates():
+    env = PumpingKiteEnv(disturbances=[])
+    env.reset(seed=0)
+    b = env.task.batch
+    b.states[0, B3_POS + 2] = -1.0  # the wing CG 1 m above the ground (below half the span)
+    env.task.observe()
+    _, r, term, trunc, info = env.step(np.zeros(4, np.float32))
+    assert term and not trunc and info["failure_name"] == "ground contact" and "altitude" not in info["failure_name"]
+    assert r < -50
+
+
+@pytest.mark.parametrize("spec", ["open_loop", "scripted", "lqr"])
+def test_factory_controllers_and_harness(spec, tmp_path):
+    from laddermill_gym.harness.evaluate import evaluate
+
+    ctl = make_controller(spec, PK, {"episode_time": 20.0})
+    a, _ = ctl.predict(np.zeros((2, N_OBS), np.float32))
+    assert a.shape == (2, 4) and np.all(np.abs(a) <= 1)
+    res = evaluate(PK, [spec], 2, {"episode_time": 20.0}, tmp_path, progress=False)[spec]
+    assert np.all(res.lengths_s == pytest.approx(20.0)) and np.all(res.failures == 0)
+    assert (tmp_path / "summary.csv").is_file()
+    if spec == "open_loop":
+        np.testing.assert_allclose(res.mean_power_W, 0.0, atol=1e-9)  # the winch stays stopped
+    else:
+        assert np.all(res.mean_power_W > 0)  # reeling out from the trim
+
+
+def test_bad_arguments_are_named():
+    with pytest.raises(ValueError, match="control_dt = 0.0123"):
+        PumpingKiteEnv(control_dt=0.0123)
+    with pytest.raises(ValueError, match="bogus = 1"):
+        PumpingKiteEnv(bogus=1)
+    with pytest.raises(ValueError, match="reward.*reference_power"):
+        PumpingKiteEnv(reward={"reference_power": -1.0})
