@@ -394,3 +394,20 @@ def test_default_mill_starts_periodic_and_pays_its_reference_power():
     assert energy / (n * env.task.control_dt) == pytest.approx(env.task.p_ref, rel=1e-3)
     assert np.mean(rewards) == pytest.approx(1.0, rel=1e-2)
     assert dy < 1e-6
+
+
+def test_turbulence_reaches_the_mill_and_replays_from_the_seed():
+    """A turbulence mapping sizes the batch's gust grid, and the same seed gives the same wind at the wings (the
+    field is drawn from the env's np_random); a different seed a different one."""
+    turb = [{"type": "Turbulence", "model": "NTM", "wind_class": "IB", "heights": [0, 400]}]
+    env = LadderMillEnv(**small(disturbances=turb, termination=WIDE))
+    assert env.task.batch.air.gv is not None and env.task.batch.air.gv.shape[1] > 0
+
+    def airspeed(seed):
+        env.reset(seed=seed)
+        obs = [env.step(np.zeros(env.action_space.shape, np.float32))[0] for _ in range(10)]
+        return np.array([slots(o)[:, OBS_INDEX["alpha"]] for o in obs])
+
+    a, b, c = airspeed(3), airspeed(3), airspeed(4)
+    np.testing.assert_array_equal(a, b)
+    assert np.max(np.abs(a - c)) > 1e-6

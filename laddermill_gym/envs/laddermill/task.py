@@ -14,12 +14,8 @@ import math
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbances import (
-    DirectionStep,
-    Disturbance,
-    disturbance_from_dict,
-    sample_wind_field,
-)
+from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
+from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry, sample_wind_field
 from laddermill_gym.envs.laddermill.actions import SlotActionMap, resolve_slot_groups
 from laddermill_gym.envs.laddermill.evaluate import evaluate_copies, failure_text
 from laddermill_gym.envs.laddermill.observation import (
@@ -66,17 +62,6 @@ def _positive(name: str, v, unit: str) -> float:
     return float(v)
 
 
-def _disturbance_tuple(disturbances) -> tuple[Disturbance, ...]:
-    """Disturbance objects (or their config dicts); None: the paper's 0.01 rad direction step at 1 s."""
-    if disturbances is None:
-        return (DirectionStep(),)
-    out = []
-    for i, d in enumerate(disturbances):
-        d = disturbance_from_dict(d, f"disturbances[{i}]") if isinstance(d, dict) else d
-        if not isinstance(d, Disturbance):
-            raise ValueError(f"disturbances[{i}] = {d!r}: not a Disturbance or its config dict")
-        out.append(d)
-    return tuple(out)
 
 
 def _scene_options(scene_options) -> tuple:
@@ -115,7 +100,8 @@ class MillTask:
         self.control_dt = _positive("control_dt", control_dt, "s")
         self.episode_time = _positive("episode_time", episode_time, "s")
         self.wind_dt = _positive("wind_dt", wind_dt, "s")
-        self.disturbances = _disturbance_tuple(disturbances)
+        # objects, mappings or YAML text; None: the paper's 0.01 rad direction step at 1 s
+        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
         self.reward_config = config_from(reward, MillRewardConfig, "reward")
         self.termination_config = config_from(termination, TerminationConfig, "termination")
         self.initial_noise = config_from(initial_noise, InitialNoise, "initial_noise")
@@ -143,7 +129,9 @@ class MillTask:
         self.parallel = B >= 32 if parallel is None else bool(parallel)
         self._kernel = step_observe_batch if self.parallel else step_observe_serial
         n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
-        self.batch = BatchSimulator(asm, B, sc.settings, n_modulation=max(2, n_mod))
+        geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid (turbulence)
+        self.batch = BatchSimulator(asm, B, sc.settings, n_modulation=max(2, n_mod),
+                                    n_grid=0 if geom is None else geom.floats)
         self.xoff = asm.body_state_size
         lay = sc.layout
         self.below = np.array([lay.piece_elements[k][-1] for k in range(n)], dtype=np.int64)
