@@ -1,5 +1,5 @@
 # Developer shortcuts (run inside the project's venv)
-.PHONY: test slow lint bench simulate figures
+.PHONY: test slow lint bench simulate figures gust-bench
 
 test:
 	python -m pytest -q
@@ -12,6 +12,9 @@ lint:
 
 bench:
 	laddermill bench --json bench.json
+
+gust-bench:
+	laddermill gust-bench --suite gusts-v1 --controllers open_loop lqr --out results/gust_bench/gusts-v1
 
 simulate:
 	laddermill simulate laddermill --start periodic --direction-step 0.01 --time 60 --animate --allow-breakdown --out runs
