@@ -175,6 +175,10 @@ def cmd_bench(args) -> int:
     res = run_benchmark(quick=args.quick, scenes=args.scenes)
     if not args.no_mill:
         res["laddermill"] = bench_mill(quick=args.quick)
+    if not args.no_pointmass:
+        from laddermill_gym.studies.pointmass_benchmark import run_pointmass_benchmark
+
+        res["pointmass"] = run_pointmass_benchmark(quick=args.quick)
     if args.json:
         Path(args.json).write_text(json.dumps(res, indent=2))
         print(f"wrote {args.json}")
@@ -193,7 +197,8 @@ def cmd_scenes(args) -> int:
 
     for name in available_scenes():
         s = load_scene(name)
-        print(f"{name:20s} {s.assembly.n_wings:4d} wings  {s.description}")
+        n = s.assembly.n_wings if hasattr(s, "assembly") else s.n_wings  # a point-mass scene has no Assembly
+        print(f"{name:20s} {n:4d} wings  {s.description}")
     return 0
 
 
@@ -255,6 +260,8 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--quick", action="store_true", help="fewer repetitions (a smoke run)")
     b.add_argument("--scenes", nargs="*", default=None)
     b.add_argument("--no-mill", action="store_true", help="leave out the moving-cable laddermill")
+    b.add_argument("--no-pointmass", action="store_true",
+                   help="leave out the point-mass scenes (podgaets_5km: 500,000 elements, memory and cost)")
     b.set_defaults(func=cmd_bench)
     e = sub.add_parser("bench-envs", help="env steps/s: native batched vector env vs SyncVectorEnv")
     e.add_argument("--json", default=None, help="also write the figures as JSON to this file")

@@ -64,3 +64,11 @@ def test_version_and_forwarded_help(capsys):
             cli_main([cmd, "--help"])
         assert e.value.code == 0
         assert f"usage: laddermill {cmd}" in capsys.readouterr().out.replace("\n", " ")
+
+
+def test_scenes_lists_every_scene(capsys):
+    from laddermill_gym.ladder.scene import available_scenes
+
+    assert cli_main(["scenes"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert [ln.split()[0] for ln in lines] == available_scenes()  # point-mass scenes included
