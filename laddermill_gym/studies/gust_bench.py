@@ -21,11 +21,12 @@ import math
 from pathlib import Path
 
 import numpy as np
-from tqdm import tqdm
 
 from laddermill_gym.studies.gust_suite import Scenario, Suite, load_suite
+from laddermill_gym.studies.parallel import add_arguments, check_arguments
 
-__all__ = ["run_episodes", "episode_metrics", "run_suite", "write_outputs", "add_parser", "main"]
+__all__ = ["run_episodes", "episode_metrics", "episodes_task", "warmup_tasks", "run_suite", "write_outputs",
+           "add_parser", "main"]
 
 #: A copy counts as settled when its largest lateral excursion stays below this share of its peak after the
 #: disturbance's start (a 10 % band; chosen: the lateral motion of these systems is lightly damped).
@@ -165,11 +166,8 @@ def _policy_kwargs(spec: str) -> dict:
     return load_rl_config(folder / "config.yaml").carried_env_kwargs()
 
 
-def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool = True) -> list[dict]:
-    """Every controller spec on every scenario of the chosen environments (all of the suite's if ``env_ids`` is
-    empty; scenario names filtered by ``scenarios``); rows as :func:`episode_metrics` plus env and controller."""
-    from laddermill_gym.control.factory import make_controller
-
+def _jobs(suite: Suite, env_ids, controllers, scenarios) -> list[tuple]:
+    """(env_id, env_kwargs with the policy's layout, controller spec, scenario) in the benchmark's order."""
     env_ids = list(env_ids) or list(suite.envs)
     for e in env_ids:
         if e not in suite.envs:
@@ -178,19 +176,82 @@ def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool
     for env_id in env_ids:
         env_kwargs, scen = suite.envs[env_id]
         chosen = [s for s in scen if not scenarios or s.name in scenarios]
-        jobs += [(env_id, env_kwargs, spec, s) for spec in controllers for s in chosen]
-    rows, ctrls, refs = [], {}, {}
-    for env_id, env_kwargs, spec, s in tqdm(jobs, desc=f"gust-bench {suite.name}", unit="scenario",
-                                            disable=not progress):
-        kw = dict(env_kwargs, **_policy_kwargs(spec))
-        key = (env_id, spec)
-        if key not in ctrls:
-            ctrls[key] = make_controller(spec, env_id, kw)
-        ref_key = (env_id, spec, s.duration, s.seeds)
+        jobs += [(env_id, dict(env_kwargs, **_policy_kwargs(spec)), spec, s) for spec in controllers for s in chosen]
+    return jobs
+
+
+def warmup_tasks(suite: Suite, env_ids, controllers, scenarios=None) -> list[tuple]:
+    """What a worker runs once before its first task (:mod:`laddermill_gym.studies.parallel`): per environment
+    and controller a WARMUP_S episode without disturbance and, if a chosen scenario has a gust grid, one with
+    the first such scenario's disturbances (numba compiles the grid-free and the grid code apart). This builds
+    the worker's controllers and compiles, or loads from numba's cache, every kernel the tasks reach."""
+    from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
+    from laddermill_gym.atmosphere.disturbances import grid_geometry
+
+    tasks: list[tuple] = [(forget_controllers, {})]
+    seen = set()
+    for env_id, kw, spec, s in _jobs(suite, env_ids, controllers, scenarios):
+        spatial = grid_geometry(parse_disturbances(list(s.disturbances)), s.duration) is not None
+        for dist in ((), s.disturbances) if spatial else ((),):
+            key = (env_id, spec, bool(dist))
+            if key not in seen:
+                seen.add(key)
+                tasks.append((episodes_task, dict(env_id=env_id, env_kwargs=kw, spec=spec, seeds=(0,),
+                                                  duration=WARMUP_S, disturbances=dist)))
+    return tasks
+
+
+#: Length [s] of the warm-up episodes (several control steps of every environment).
+WARMUP_S = 0.5
+
+# Controllers as built, per (env id, spec, env kwargs), in this process (a worker builds each once).
+_CONTROLLERS: dict = {}
+
+
+def forget_controllers() -> None:
+    """Drop this process's built controllers (a run starts from the files as they are now)."""
+    _CONTROLLERS.clear()
+
+
+def episodes_task(env_id: str, env_kwargs: dict, spec: str, seeds, duration: float, disturbances) -> dict:
+    """A picklable task: :func:`run_episodes` of the controller ``spec`` (built once per process and copied for
+    every task, so a controller with internal state starts each task alike, whichever worker runs it)."""
+    import copy
+
+    from laddermill_gym.control.factory import make_controller
+
+    key = (env_id, spec, repr(sorted(env_kwargs.items())))
+    if key not in _CONTROLLERS:
+        _CONTROLLERS[key] = make_controller(spec, env_id, env_kwargs)
+    return run_episodes(copy.deepcopy(_CONTROLLERS[key]), env_id, env_kwargs, seeds, duration, disturbances)
+
+
+def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool = True, workers: int = 0,
+              ray: str | None = None) -> list[dict]:
+    """Every controller spec on every scenario of the chosen environments (all of the suite's if ``env_ids`` is
+    empty; scenario names filtered by ``scenarios``); rows as :func:`episode_metrics` plus env and controller.
+
+    The episode sets (each scenario's, and each undisturbed reference once per env, controller, duration and
+    seeds) are independent tasks run by :func:`laddermill_gym.studies.parallel.run_tasks`: serially
+    (``workers=0``), in ``workers`` local processes or on Ray (``ray``); the rows are the same either way."""
+    from laddermill_gym.studies.parallel import run_tasks
+
+    jobs = _jobs(suite, env_ids, controllers, scenarios)
+    tasks, refs, runs = [], {}, []
+    for env_id, kw, spec, s in jobs:
+        base = dict(env_id=env_id, env_kwargs=kw, spec=spec, seeds=s.seeds, duration=s.duration)
+        ref_key = (env_id, spec, repr(sorted(kw.items())), s.duration, s.seeds)
         if ref_key not in refs:
-            refs[ref_key] = run_episodes(ctrls[key], env_id, kw, s.seeds, s.duration, [])["energy_J"]
-        rec = run_episodes(ctrls[key], env_id, kw, s.seeds, s.duration, s.disturbances)
-        for row in episode_metrics(rec, refs[ref_key], s, rec["failure_names"]):
+            refs[ref_key] = len(tasks)
+            tasks.append((episodes_task, dict(base, disturbances=())))
+        runs.append((refs[ref_key], len(tasks)))
+        tasks.append((episodes_task, dict(base, disturbances=s.disturbances)))
+    results = run_tasks(tasks, workers=workers, ray=ray, warmup=warmup_tasks(suite, env_ids, controllers, scenarios),
+                        desc=f"gust-bench {suite.name}", unit="episode set", progress=progress)
+    rows = []
+    for (env_id, _, spec, s), (i_ref, i_run) in zip(jobs, runs, strict=True):
+        rec = results[i_run]
+        for row in episode_metrics(rec, results[i_ref]["energy_J"], s, rec["failure_names"]):
             rows.append({"env": env_id, "controller": _controller_label(spec), **row})
     return rows
 
@@ -249,11 +310,13 @@ def _arguments(p: argparse.ArgumentParser) -> None:
                    help="open_loop, lqr, lqr:<config.yaml> or a training run folder / model file")
     p.add_argument("--scenarios", nargs="*", default=[], help="scenario names (default: all)")
     p.add_argument("--out", type=Path, help="output folder (default results/gust_bench/<suite>)")
+    add_arguments(p)
 
 
 def _run(args) -> int:
+    check_arguments(args, "laddermill gust-bench")
     suite = load_suite(args.suite)
-    rows = run_suite(suite, args.env, args.controllers, args.scenarios)
+    rows = run_suite(suite, args.env, args.controllers, args.scenarios, workers=args.workers, ray=args.ray)
     if not rows:
         raise SystemExit(f"no scenario of suite {suite.name} matches --scenarios {args.scenarios}")
     out = args.out or Path("results") / "gust_bench" / suite.name

@@ -1,0 +1,298 @@
+"""Run independent tasks serially, in local worker processes or on a Ray cluster, with the same results.
+
+A task is a plain picklable pair ``(function, kwargs)``: a module-level function (pickled by its module and
+name, so every worker must have the same package installed) and a dict of picklable arguments. Every way of
+running returns the results in the order of the tasks:
+
+* serial (``workers=0``, the default): in this process, one after the other;
+* local processes (``workers=N``): :class:`concurrent.futures.ProcessPoolExecutor` with N workers started by
+  ``spawn`` (a fresh interpreter, never a fork of a process whose numba threads are running);
+* Ray (``ray="local"|"auto"|ADDRESS``): N Ray actors (one CPU each; N = ``workers`` or the cluster's CPUs).
+
+Warm-up. A fresh process pays numba's compile of every kernel a task reaches on its first call (about 50 s of
+wall time for one environment on a loaded 2-core machine with an empty cache), or a load from the on-disk cache
+(``__pycache__`` or ``NUMBA_CACHE_DIR``, about 0.3 s). Each worker therefore runs the caller's ``warmup``
+tasks once, when it starts, before its first task (a short episode of every environment and controller the
+tasks use): the compile or cache load happens once per worker, never per task, and the worker's numba thread
+count is set to its share of the cores. A worker with another laddermill_gym, numba or numpy version than the
+caller refuses to start; one whose package source differs (a digest of its ``.py`` files: an edited file) is
+reported as a RuntimeWarning. Measured figures and the cluster set-up: ``laddermill_gym/docs/scale_out.md``.
+
+    python -m laddermill_gym.studies.parallel warm       # compile or load every kernel here; prints the time
+"""
+
+from __future__ import annotations
+
+import argparse
+import concurrent.futures as cf
+import hashlib
+import multiprocessing
+import os
+import socket
+import sys
+import time
+import uuid
+import warnings
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from tqdm import tqdm
+
+__all__ = ["Task", "run_tasks", "worker_report", "source_digest", "add_arguments", "check_arguments",
+           "RAY_HINT", "main"]
+
+#: One task: a module-level function and its keyword arguments (both picklable).
+Task = tuple[Callable[..., Any], dict]
+
+#: What to install for ``--ray``.
+RAY_HINT = 'Ray is an optional extra: pip install "laddermill_gym[ray]" (or "ray[default]") on every node'
+
+# The state of this process as a worker: the run it warmed up for, how often it warmed up for that run and the
+# warm-up's wall time [s].
+_STATE: dict[str, Any] = {"run": None, "warmups": 0, "warmup_s": 0.0}
+
+
+def source_digest() -> str:
+    """SHA-256 (first 16 hex digits) over the relative paths and contents of the package's ``.py`` files: two
+    processes with the same digest run the same code (computed afresh at every call: about 15 ms; an edit
+    between the caller's start of a run and a worker's start is caught)."""
+    root = Path(__file__).resolve().parents[1]
+    h = hashlib.sha256()
+    for path in sorted(root.rglob("*.py")):
+        h.update(path.relative_to(root).as_posix().encode())
+        h.update(path.read_bytes())
+    return h.hexdigest()[:16]
+
+
+def _versions() -> dict[str, str]:
+    import numba
+    import numpy
+
+    import laddermill_gym
+
+    return {"laddermill_gym": laddermill_gym.__version__, "source": source_digest(), "numba": numba.__version__,
+            "numpy": numpy.__version__}
+
+
+def _init_worker(run_id: str, warmup: tuple, threads: int | None, versions: dict) -> None:
+    """Per-worker start: check the versions against the caller's, set numba's thread count, run the warm-up.
+
+    Another package version, numba or numpy raises RuntimeError; other package source (an edited file) only
+    leaves a note that the caller turns into a warning (a shared working tree changes under a run)."""
+    here = _versions()
+    bad = {k: (v, here.get(k)) for k, v in versions.items() if here.get(k) != v}
+    text = ", ".join(f"{k} {w!r} here, {v!r} at the caller" for k, (v, w) in bad.items())
+    where = f"worker on {socket.gethostname()} (pid {os.getpid()})"
+    if set(bad) - {"source"}:
+        raise RuntimeError(f"{where} runs other code than the caller: {text}; install the same laddermill_gym on "
+                           "every node")
+    if threads:
+        import numba
+
+        numba.set_num_threads(min(int(threads), numba.config.NUMBA_NUM_THREADS))
+    t0 = time.perf_counter()
+    for fn, kw in warmup:
+        fn(**kw)
+    if _STATE["run"] != run_id:
+        _STATE.update(run=run_id, warmups=0, warmup_s=0.0)
+    _STATE["warmups"] += 1
+    _STATE["warmup_s"] += time.perf_counter() - t0
+    _STATE["note"] = f"{where} runs other package source than the caller ({text})" if bad else ""
+
+
+def _call(index: int, fn: Callable, kwargs: dict) -> tuple[int, Any, str]:
+    """(index, the task's result, the worker's version note: given once, then "")."""
+    result = fn(**kwargs)
+    return index, result, _STATE.pop("note", "")
+
+
+def worker_report() -> dict:
+    """A task that describes the process running it: host, pid, run id, warm-ups done for that run and their
+    wall time [s], numba's thread count."""
+    import numba
+
+    return {"host": socket.gethostname(), "pid": os.getpid(), "run": _STATE["run"], "warmups": _STATE["warmups"],
+            "warmup_s": _STATE["warmup_s"], "numba_threads": numba.get_num_threads()}
+
+
+def _warn(note: str) -> None:
+    if note:
+        warnings.warn(note, RuntimeWarning, stacklevel=3)
+
+
+def _failed(index: int, task: Task, err: BaseException) -> RuntimeError:
+    fn, kw = task
+    return RuntimeError(f"task {index} ({fn.__module__}.{fn.__qualname__}, {sorted(kw)}) failed: "
+                        f"{type(err).__name__}: {err}")
+
+
+def _serial(tasks, init_args, bar) -> list:
+    _init_worker(*init_args)
+    out = []
+    for i, task in enumerate(tasks):
+        try:
+            out.append(_call(i, *task)[1])
+        except Exception as err:
+            raise _failed(i, task, err) from err
+        bar.update()
+    return out
+
+
+def _processes(tasks, workers: int, init_args, bar) -> list:
+    out: list = [None] * len(tasks)
+    ctx = multiprocessing.get_context("spawn")
+    with cf.ProcessPoolExecutor(workers, mp_context=ctx, initializer=_init_worker, initargs=init_args) as ex:
+        futures = {ex.submit(_call, i, fn, kw): i for i, (fn, kw) in enumerate(tasks)}
+        for fut in cf.as_completed(futures):
+            i = futures[fut]
+            try:
+                _, out[i], note = fut.result()
+                _warn(note)
+            except Exception as err:
+                ex.shutdown(wait=False, cancel_futures=True)
+                raise _failed(i, tasks[i], err) from err
+            bar.update()
+    return out
+
+
+def _ray_module():
+    try:
+        import ray
+    except ImportError:
+        raise RuntimeError(f"--ray: {RAY_HINT}") from None
+    return ray
+
+
+def _ray_connect(ray, address: str, workers: int) -> bool:
+    """Connect (or start a local Ray for ``address == "local"``); True if this call did, so it shuts down."""
+    if ray.is_initialized():
+        return False
+    if address == "local":
+        ray.init(num_cpus=workers or os.cpu_count(), include_dashboard=False, logging_level="warning")
+    else:
+        ray.init(address=address, logging_level="warning")
+    return True
+
+
+def _ray(tasks, address: str, workers: int, init_args, bar) -> list:
+    ray = _ray_module()
+    started = _ray_connect(ray, address, workers)
+    try:
+        n = workers or max(1, int(ray.cluster_resources().get("CPU", 1)))
+        actor = ray.remote(num_cpus=1)(_RayWorker)
+        pool = [actor.remote(*init_args) for _ in range(min(n, len(tasks)))]
+        out: list = [None] * len(tasks)
+        pending, queue = {}, list(range(len(tasks)))[::-1]
+        for a in pool:
+            if queue:
+                i = queue.pop()
+                pending[a.call.remote(i, *tasks[i])] = (i, a)
+        while pending:
+            done, _ = ray.wait(list(pending), num_returns=1)
+            i, a = pending.pop(done[0])
+            try:
+                _, out[i], note = ray.get(done[0])
+                _warn(note)
+            except Exception as err:
+                raise _failed(i, tasks[i], err) from err
+            bar.update()
+            if queue:
+                j = queue.pop()
+                pending[a.call.remote(j, *tasks[j])] = (j, a)
+        for a in pool:
+            ray.kill(a)
+        return out
+    finally:
+        if started:
+            ray.shutdown()
+
+
+class _RayWorker:
+    """The Ray actor: one worker process that warms up once (in ``__init__``) and then runs tasks."""
+
+    def __init__(self, *init_args):
+        _init_worker(*init_args)
+
+    def call(self, index: int, fn: Callable, kwargs: dict) -> tuple[int, Any, str]:
+        return _call(index, fn, kwargs)
+
+
+def run_tasks(tasks, *, workers: int = 0, ray: str | None = None, warmup=(), threads: int | None = None,
+              desc: str = "tasks", unit: str = "task", progress: bool = True) -> list:
+    """Run ``tasks`` (a sequence of :data:`Task`) and return their results in the order of ``tasks``.
+
+    Parameters
+    ----------
+    workers : int        0: serially in this process; N >= 1: N local worker processes, or N Ray actors with
+                         ``ray`` (0 with ``ray``: one per CPU of the cluster)
+    ray : str or None    None (no Ray), ``"local"`` (start a one-node Ray here with ``workers`` CPUs),
+                         ``"auto"`` (join the running cluster: ``RAY_ADDRESS`` or ``ray start`` on this node) or
+                         a cluster address (``HOST:6379`` or ``ray://HOST:10001``)
+    warmup : sequence    tasks each worker runs once before its first task (serially: once, here)
+    threads : int        numba threads per worker (default: this machine's cores / workers, at least 1; Ray
+                         actors 1, their CPU share); serially numba's setting stays as it is
+    Raises RuntimeError naming the task that failed (the others are cancelled)."""
+    tasks = [(fn, dict(kw)) for fn, kw in tasks]
+    warmup = tuple((fn, dict(kw)) for fn, kw in warmup)
+    if not isinstance(workers, int) or workers < 0:
+        raise ValueError(f"workers = {workers!r}: must be a whole number >= 0 (0: serial)")
+    if ray is None and workers and threads is None:
+        threads = max(1, (os.cpu_count() or 1) // workers)
+    elif ray is not None and threads is None:
+        threads = 1
+    init_args = (uuid.uuid4().hex, warmup, threads if (workers or ray) else None, _versions())
+    with tqdm(total=len(tasks), desc=desc, unit=unit, disable=not progress, smoothing=0.0) as bar:
+        if not tasks:
+            return []
+        if ray is not None:
+            return _ray(tasks, ray, workers, init_args, bar)
+        if workers:
+            return _processes(tasks, min(workers, len(tasks)), init_args, bar)
+        return _serial(tasks, init_args, bar)
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """``--workers N`` and ``--ray local|auto|ADDRESS`` on a command's parser."""
+    p.add_argument("--workers", type=int, default=0, metavar="N",
+                   help="local worker processes (0: serial, the default); with --ray: Ray actors (0: one per CPU)")
+    p.add_argument("--ray", metavar="ADDRESS", default=None,
+                   help="run on Ray: 'auto' (the running cluster), 'local' (start one here) or HOST:PORT / "
+                        "ray://HOST:10001; needs the optional extra [ray]")
+
+
+def check_arguments(args, prog: str) -> None:
+    """Refuse a negative ``--workers``, an empty ``--ray`` and ``--ray`` without Ray installed: one line
+    ``PROG: error: ...`` naming the option and value on stderr, exit status 2 (as argparse)."""
+    msg = None
+    if args.workers < 0:
+        msg = f"--workers {args.workers}: must be >= 0 (0: serial)"
+    elif args.ray is not None and not args.ray.strip():
+        msg = "--ray '': give auto, local or a cluster address"
+    elif args.ray is not None:
+        try:
+            _ray_module()
+        except RuntimeError as err:
+            msg = str(err)
+    if msg:
+        sys.stderr.write(f"{prog}: error: {msg}\n")
+        raise SystemExit(2)
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.parallel", description=__doc__.split("\n\n")[0])
+    p.add_argument("action", choices=["warm"], help="warm: compile (or load from the cache) every environment's "
+                   "kernels in this process and print the time; run once per node after installing")
+    p.parse_args(argv)
+    from laddermill_gym.studies.gust_bench import warmup_tasks
+    from laddermill_gym.studies.gust_suite import load_suite
+
+    t0 = time.perf_counter()
+    for fn, kw in tqdm(warmup_tasks(load_suite("gusts-v1"), [], ["open_loop"]), desc="warm", unit="env"):
+        fn(**kw)
+    print(f"warm: {time.perf_counter() - t0:.1f} s; numba cache: {os.environ.get('NUMBA_CACHE_DIR') or '__pycache__'}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
