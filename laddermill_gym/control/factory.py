@@ -14,6 +14,7 @@ from pathlib import Path
 from laddermill_gym.control.base import Controller
 from laddermill_gym.envs import ENV_IDS, task_class
 from laddermill_gym.envs.task import scene_trim
+from laddermill_gym.ladder.scene import options_key
 from laddermill_gym.model.configio import CONFIG_DIR
 
 __all__ = ["make_controller", "DEFAULT_LQR_CONFIGS"]
@@ -30,7 +31,7 @@ def _env_scene(env_kwargs: dict):
     options = dict(env_kwargs.get("scene_options") or {})
     if env_kwargs.get("physics_dt") is not None:
         options["dt"] = env_kwargs["physics_dt"]
-    return scene_trim(str(env_kwargs["scene"]), tuple(sorted(options.items())))
+    return scene_trim(str(env_kwargs["scene"]), options_key(options))
 
 
 def _craft_controller(spec: str, kw: dict) -> Controller:
@@ -76,7 +77,7 @@ def _mill_controller(spec: str, kw: dict) -> Controller:
 
         options = dict(kw.get("scene_options") or {})
         options.pop("dimension", None)
-        n = mill_scene(str(kw["scene"]), tuple(sorted(options.items())), 3).assembly.n_wings
+        n = mill_scene(str(kw["scene"]), options_key(options), 3).assembly.n_wings
         n_act = action_count(n, kw.get("groups", "per_slot"), kw.get("n_bands", 4),
                              kw.get("surfaces", CONTROL_NAMES), kw.get("generator_torque", False))
         ctrl = OpenLoopController(np.zeros(n_act), np.zeros(n_act), np.ones(n_act))
@@ -87,9 +88,7 @@ def _mill_controller(spec: str, kw: dict) -> Controller:
     from laddermill_gym.envs.laddermill.task import MillTask
 
     path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_LQR_CONFIGS["laddermill_gym/LadderMill-v0"]
-    cfg = load_lqr_config(path)
-    if cfg.scene != kw["scene"]:
-        raise ValueError(f"{path}: scene = {cfg.scene!r} differs from the environment's scene {kw['scene']!r}")
+    cfg = load_lqr_config(path)  # its weights, designed on the environment's own mill
     task = MillTask(1, **{k: v for k, v in kw.items() if k != "parallel"})
     return design_mill_lqr(cfg, task).controller(task)
 
@@ -120,7 +119,8 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     """The controller named by ``spec`` for environment ``env_id`` (with argument overrides ``env_kwargs``).
 
     Model-based controllers act on every wing (``action_mode="tail"``, ``groups="per_wing"``); other action
-    layouts raise ValueError. The LQR's scene must match the environment's (same wings, cable model)."""
+    layouts raise ValueError. An LQR takes its weights and control period from the config and is designed on the
+    environment's own scene (a custom scene file or ``scene_options`` overrides included)."""
     if env_id not in ENV_IDS:
         raise ValueError(f"env_id = {env_id!r}: must be one of {sorted(ENV_IDS)}")
     kw = dict(ENV_IDS[env_id], **(env_kwargs or {}))
@@ -147,8 +147,8 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
         if cfg.control_period != kw["control_dt"]:
             raise ValueError(f"{path}: control_period = {cfg.control_period} s differs from the environment's "
                              f"control_dt = {kw['control_dt']} s")
-        if cfg.scene != kw["scene"]:
-            raise ValueError(f"{path}: scene = {cfg.scene!r} differs from the environment's scene {kw['scene']!r}")
+        # the config gives the weights and the period; the design is made on the environment's own scene (a
+        # custom file or overrides included)
         design = design_tethered_wing if sc.assembly.n_wings == 1 else design_ladder_chain
         return design(cfg, sc, (x_trim.copy(), u_trim.copy())).controller()
     path = Path(spec)

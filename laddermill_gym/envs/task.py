@@ -31,7 +31,7 @@ from laddermill_gym.kernels.rigid.observe import (
     step_observe_batch,
     step_observe_serial,
 )
-from laddermill_gym.ladder.scene import Scene, load_scene
+from laddermill_gym.ladder.scene import Scene, load_scene, options_key, options_kwargs
 from laddermill_gym.model.packing import make_workspace
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.reports import ground_stop_text
@@ -53,6 +53,13 @@ def check_nonnegative_fields(obj, section: str, optional: tuple[str, ...] = ()) 
             continue
         if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
             raise ValueError(f"{section}.{f.name} = {v!r}: must be a finite number >= 0")
+
+
+def _check_reference_power(cfg) -> None:
+    """``reward.reference_power_W`` is None (the operating point's power) or a fixed power > 0 [W]."""
+    v = cfg.reference_power_W
+    if v is not None and not v > 0:
+        raise ValueError(f"reward.reference_power_W = {v!r}: must be > 0 W (or None: the operating point's power)")
 
 
 @dataclass(frozen=True)
@@ -81,6 +88,9 @@ class RewardConfig:
     ``failure_penalty`` [-] is subtracted once, in the step that ends an episode by a physical failure
     (``terminated``); default 0, so a return is the plain sum of the terms above. Training configs set it to
     make a crash cost more than the power a risky manoeuvre gains before it (``reward_failure`` in ``info``).
+
+    ``reference_power_W`` [W]: a fixed P_ref instead of the trim's, so that returns compare across wind speeds
+    and scenes (the power term is then P / reference_power_W).
     """
 
     power_weight: float = 1.0
@@ -91,9 +101,11 @@ class RewardConfig:
     effort_weight: float = 0.1
     reel_speed_fraction: float = 1.0 / 3.0
     failure_penalty: float = 0.0
+    reference_power_W: float | None = None
 
     def __post_init__(self):
-        check_nonnegative_fields(self, "reward", optional=("lateral_scale",))
+        check_nonnegative_fields(self, "reward", optional=("lateral_scale", "reference_power_W"))
+        _check_reference_power(self)
         for name in ("rate_scale", "reel_speed_fraction"):
             if getattr(self, name) <= 0:
                 raise ValueError(f"reward.{name} = {getattr(self, name)!r}: must be > 0")
@@ -150,7 +162,7 @@ def scene_trim(scene: str, options: tuple) -> tuple[Scene, np.ndarray, np.ndarra
     """(scene, x_trim, u_trim) of a scene name or path with ``load_scene`` overrides ``options`` (a sorted
     tuple of (key, value) pairs); cached, because every copy of a sync vector env would otherwise trim
     the same scene again."""
-    sc = load_scene(scene, **dict(options))
+    sc = load_scene(scene, **options_kwargs(options))
     if not isinstance(sc, Scene):  # fidelity 'pointmass': no tails, the attitude is the action
         raise ValueError(f"scene {scene!r} is at the point-mass fidelity: use laddermill_gym.envs.pointmass.env."
                          "PointMassEnv, whose actions command the kites' attitude")
@@ -170,7 +182,9 @@ class WingTask:
     scene : str
         Scene name (configs/scenes/NAME.yaml) or path; 3D scenes only.
     scene_options : dict, optional
-        Overrides passed to :func:`laddermill_gym.ladder.scene.load_scene` (e.g. ``elements_per_piece``).
+        Overrides passed to :func:`laddermill_gym.ladder.scene.load_scene` (e.g. ``elements_per_piece``), including
+        ``overrides``: a nested mapping of the scene file's fields, e.g. ``{"overrides": {"wind": {"v0": 10.0}}}``
+        (parameters as data, checked like the file).
     control_dt : float
         Control period [s]; the action is held over it.
     physics_dt : float, optional
@@ -205,7 +219,7 @@ class WingTask:
         options = dict(scene_options or {})
         if physics_dt is not None:
             options["dt"] = physics_dt
-        self.scene, x_trim, u_trim = scene_trim(str(scene), tuple(sorted(options.items())))
+        self.scene, x_trim, u_trim = scene_trim(str(scene), options_key(options))
         sc = self.scene
         asm = sc.assembly
         if asm.dim != 3:
@@ -254,6 +268,8 @@ class WingTask:
         rc = self.reward_config
         self.v_reel = rc.reel_speed_fraction * asm.wind.v0
         self.p_ref = float((one[1][AUX_GROUND_START] - one[1][AUX_GROUND_END]) * self.v_reel)
+        if rc.reference_power_W is not None:
+            self.p_ref = float(rc.reference_power_W)
         if not self.p_ref > 0:
             raise ValueError(f"scene {sc.name}: the trim gives no positive reference power ({self.p_ref:.4g} W)")
         self.lateral_scale = rc.lateral_scale if rc.lateral_scale is not None else 0.05 * sc.piece_length

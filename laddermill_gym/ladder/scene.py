@@ -34,32 +34,56 @@ def available_scenes() -> list[str]:
 
 # ---------------------------------------------------------------------------------------- parts
 def load_aero_table(path: Path) -> AeroTable:
-    """Read a wing's coefficient table (CSV: alpha_deg and the AERO_COLUMNS, '#' comments)."""
+    """Read a wing's coefficient table (CSV: alpha_deg and the AERO_COLUMNS, '#' comments); ConfigError naming the
+    file, line and column of a bad entry."""
     try:
         with open(path, encoding="utf-8") as fh:
-            lines = [ln for ln in fh if ln.strip() and not ln.lstrip().startswith("#")]
+            lines = [(i + 1, ln) for i, ln in enumerate(fh) if ln.strip() and not ln.lstrip().startswith("#")]
     except OSError as err:
         raise ConfigError(f"{path}: cannot read aerodynamic table: {err}") from None
-    header = [h.strip() for h in lines[0].split(",")]
     want = ["alpha_deg", *AERO_COLUMNS]
+    if not lines:
+        raise ConfigError(f"{path}: no header and no rows (empty or only comments); the header must be {want}")
+    header = [h.strip() for h in lines[0][1].split(",")]
     if header != want:
-        raise ConfigError(f"{path}: header {header} must be {want}")
-    try:
-        data = np.array([[float(v) for v in ln.split(",")] for ln in lines[1:]])
-    except ValueError as err:
-        raise ConfigError(f"{path}: non-numeric entry: {err}") from None
-    if data.ndim != 2 or data.shape[1] != len(want) or data.shape[0] < 8:
-        raise ConfigError(f"{path}: table must have >= 8 rows of {len(want)} numbers, got shape {data.shape}")
+        raise ConfigError(f"{path}: line {lines[0][0]}: header {header} must be {want}")
+    rows = []
+    for lineno, ln in lines[1:]:
+        cells = [c.strip() for c in ln.split(",")]
+        if len(cells) != len(want):
+            raise ConfigError(f"{path}: line {lineno}: {len(cells)} entries, the header has {len(want)}")
+        try:
+            rows.append([float(c) for c in cells])
+        except ValueError:
+            j = next(j for j, c in enumerate(cells) if not _is_float(c))
+            raise ConfigError(f"{path}: line {lineno}, column '{want[j]}' = {cells[j]!r}: must be a number") from None
+    data = np.array(rows).reshape(-1, len(want))
+    if data.shape[0] < 8:
+        raise ConfigError(f"{path}: table must have >= 8 rows of {len(want)} numbers, got {data.shape[0]}")
     if not np.all(np.isfinite(data)):
         r, c = np.argwhere(~np.isfinite(data))[0]
-        raise ConfigError(f"{path}: field '{want[c]}' row {r} = {data[r, c]!r}: must be finite")
+        raise ConfigError(f"{path}: line {lines[r + 1][0]}, column '{want[c]}' = {float(data[r, c])!r}: must be finite")
+    step = np.diff(data[:, 0])
+    bad = np.flatnonzero(np.abs(step - step[0]) > 1e-9)
+    if step[0] <= 0 or bad.size:
+        r = 1 if step[0] <= 0 else int(bad[0]) + 1
+        raise ConfigError(f"{path}: line {lines[r + 1][0]}, column 'alpha_deg' = {float(data[r, 0])!r}: alpha must "
+                          f"rise on a uniform grid (step {step[0]:g} deg from the first row) from -180 to 180 deg")
     a = data[:, 0]
-    step = np.diff(a)
-    if abs(a[0] + 180) > 1e-9 or abs(a[-1] - 180) > 1e-9 or np.ptp(step) > 1e-9 or step[0] <= 0:
-        raise ConfigError(f"{path}: field 'alpha_deg' must be a uniform grid from -180 to 180 deg")
+    if abs(a[0] + 180) > 1e-9 or abs(a[-1] - 180) > 1e-9:
+        raise ConfigError(f"{path}: column 'alpha_deg' runs from {a[0]:g} to {a[-1]:g} deg: it must run from -180 "
+                          "to 180 deg")
     if not np.allclose(data[0, 1:], data[-1, 1:], rtol=0, atol=1e-12):
         raise ConfigError(f"{path}: rows at -180 and 180 deg must be equal (periodic table)")
     return AeroTable(alpha=np.radians(a), values=np.ascontiguousarray(data[:, 1:]), source=str(path))
+
+
+def _is_float(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 def load_wing_type(path: Path) -> WingType:
@@ -79,7 +103,10 @@ def load_wing_type(path: Path) -> WingType:
             raise lim.error(name, list(lo_hi), "lower limit must be below the upper limit")
         limits[i] = np.radians(lo_hi)
     lim.done()
-    table_file = config_path("wings", s.text("aero_table"), path.parent)
+    table_name = s.text("aero_table")
+    table_file = config_path("wings", table_name, path.parent)
+    if not table_file.is_file():
+        raise s.error("aero_table", table_name, f"no such file {table_file}")
     wt = WingType(
         name=s.text("name"), mass=s.number("mass", positive=True), inertia=J,
         area=s.number("area", positive=True), span=s.number("span", positive=True),
@@ -102,11 +129,12 @@ def load_cable(path: Path) -> CableSpec:
 
 
 def read_wind(s: Section) -> WindParams:
+    # v0 and rho0 > 0: without wind or air no wing or rotor here can hold an equilibrium (the trim would fail)
     w = WindParams(
-        v0=s.number("v0", nonneg=True), h0=s.number("h0", positive=True), v1=s.number("v1"),
+        v0=s.number("v0", positive=True), h0=s.number("h0", positive=True), v1=s.number("v1"),
         exponent=s.number("exponent", nonneg=True), direction_inf=s.number("direction_inf_rad", 0.0),
         direction_height=s.number("direction_height", 500.0, positive=True),
-        rho0=s.number("rho0", nonneg=True), density_model=s.text("density_model", "barometric",
+        rho0=s.number("rho0", positive=True), density_model=s.text("density_model", "barometric",
                                                                  choices=("barometric", "isa")),
         scale_height=s.number("scale_height", 8400.0, positive=True))
     s.done()
@@ -192,7 +220,14 @@ class Scene:
         """(state, controls) at the scene's initial equilibrium."""
         from laddermill_gym.ladder.initial import initial_state
 
-        return initial_state(self)
+        try:
+            return initial_state(self)
+        except RuntimeError as err:  # no equilibrium: say which file and which settings decide it
+            w = self.assembly.wind
+            raise ConfigError(
+                f"{self.file}: no initial state ({err}); the wind (wind.v0 = {w.v0:g} m/s, wind.rho0 = {w.rho0:g} "
+                f"kg/m^3) and initial.method = {self.initial.method!r} (alpha_deg = "
+                f"{math.degrees(self.initial.alpha):g}) decide whether the wings can hold an equilibrium") from None
 
     def replace(self, **changes) -> Scene:
         return dataclasses.replace(self, **changes)
@@ -201,18 +236,57 @@ class Scene:
 FIDELITIES = ("rigid", "pointmass")
 
 
+def options_key(options: dict | None) -> tuple:
+    """A hashable key of ``load_scene`` keyword overrides (sorted pairs; a nested mapping such as ``overrides`` as
+    canonical JSON), for caches of loaded scenes; :func:`options_kwargs` turns it back."""
+    import json
+
+    return tuple(sorted((k, json.dumps(v, sort_keys=True) if isinstance(v, (dict, list)) else v)
+                        for k, v in dict(options or {}).items()))
+
+
+def options_kwargs(key: tuple) -> dict:
+    """The ``load_scene`` keyword arguments of an :func:`options_key`."""
+    import json
+
+    return {k: json.loads(v) if k == "overrides" and isinstance(v, str) else v for k, v in key}
+
+
+def _merged(data: dict, overrides, where: str) -> dict:
+    """A copy of the YAML mapping ``data`` with the nested mapping ``overrides`` merged in (mappings merge, other
+    values replace); ConfigError naming the override's path if it is not a mapping with text keys."""
+    if not isinstance(overrides, dict) or not all(isinstance(k, str) for k in overrides):
+        raise ConfigError(f"{where} = {overrides!r}: must be a mapping with text keys")
+    out = dict(data)
+    for k, v in overrides.items():
+        if isinstance(v, dict) and isinstance(out.get(k), dict):
+            out[k] = _merged(out[k], v, f"{where}.{k}")
+        else:
+            out[k] = v
+    return out
+
+
 def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: bool | None = None,
                cable_aero: bool | None = None, elements_per_piece: int | None = None,
                n_wings: int | None = None, dt: float | None = None, method: str | None = None,
-               fidelity: str | None = None, element_length: float | None = None):
+               fidelity: str | None = None, element_length: float | None = None, overrides: dict | None = None):
     """Load a scene YAML; keyword overrides replace the file's values (for benchmarks and studies).
 
     The fidelity is the file's ``fidelity.wing`` ('rigid', the default, or 'pointmass') unless ``fidelity``
     overrides it; at 'pointmass' the result is a :class:`~laddermill_gym.ladder.pointmass_scene.PointMassScene`
     (its string at ``fidelity.element_length`` or ``element_length`` [m]; ``n_wings``, ``dt`` and ``method``
-    ('explicit' or 'implicit') apply), and nothing of the rigid model is built."""
+    ('explicit' or 'implicit') apply), and nothing of the rigid model is built.
+
+    ``overrides``: a nested mapping merged into the file's fields before they are read, e.g.
+    ``{"wind": {"v0": 10.0}, "chain": {"piece_length": 120.0}}`` (parameters as data); checked like the file, errors
+    naming the field and "(with overrides)"."""
     path = scene_path(name_or_path)
     s = read_yaml(path)
+    if overrides:
+        s = Section(_merged(s.data, overrides, "overrides"), f"{path} (with overrides)")
+    for key, v in (("n_wings", n_wings), ("elements_per_piece", elements_per_piece)):
+        if v is not None and (isinstance(v, bool) or int(v) != v or v < 1):
+            raise ConfigError(f"{path}: {key} = {v!r} (override): must be a whole number >= 1")
     fdata = s.data.get("fidelity")
     wing_fid = fidelity or (fdata.get("wing", "rigid") if isinstance(fdata, dict) else "rigid")
     if wing_fid not in FIDELITIES:

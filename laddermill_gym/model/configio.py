@@ -96,6 +96,9 @@ class Section:
             raise self.error(key, v, "must be a number")
         if not math.isfinite(v):
             raise self.error(key, v, "must be finite")
+        if abs(v) > MAX_MAGNITUDE:
+            raise self.error(key, v, f"must be at most {MAX_MAGNITUDE:g} in magnitude (SI units; larger values "
+                                     "overflow the simulation)")
         if positive and not v > 0:
             raise self.error(key, v, "must be > 0")
         if nonneg and v < 0:
@@ -144,6 +147,11 @@ class Section:
         if extra:
             raise ConfigError(f"{self.file}: unknown field '{self._name(extra[0])}' "
                               f"(value {self.data[extra[0]]!r}); known fields: {sorted(self.used)}")
+
+
+#: The largest magnitude a config number may have [SI units]: far above any physical value of these models (the
+#: stiffest cable's EA is about 1e8 N) and far below where squares and products overflow float64.
+MAX_MAGNITUDE = 1e12
 
 
 class _UniqueKeyLoader(yaml.SafeLoader):

@@ -31,7 +31,7 @@ import numpy as np
 
 from laddermill_gym.kernels.contract import SX_ENERGY, SX_MOVED, SX_SIZE, SX_SPEED, SX_TRANSFERS
 from laddermill_gym.ladder.periodic import run_to_periodic
-from laddermill_gym.ladder.scene import Scene, load_scene
+from laddermill_gym.ladder.scene import Scene, load_scene, options_kwargs
 from laddermill_gym.model.states import planar_to_3d
 
 __all__ = ["OperatingPoint", "SettleConfig", "compute_operating_point", "operating_point", "mill_scene",
@@ -102,7 +102,7 @@ class OperatingPoint:
 def mill_scene(scene: str, options: tuple, dimension: int = 3) -> Scene:
     """The scene ``scene`` with ``load_scene`` overrides ``options`` (sorted (key, value) pairs) in ``dimension``
     (cached); ValueError unless it has a moving cable."""
-    sc = load_scene(scene, dimension=dimension, **dict(options))
+    sc = load_scene(scene, dimension=dimension, **options_kwargs(options))
     if sc.assembly.station is None:
         raise ValueError(f"scene {sc.name!r}: LadderMill needs a scene with a moving cable (a 'station:' section)")
     return sc

@@ -48,6 +48,7 @@ from laddermill_gym.kernels.rigid.observe import (
     step_observe_batch,
     step_observe_serial,
 )
+from laddermill_gym.ladder.scene import options_key
 from laddermill_gym.model.params import CONTROL_NAMES
 from laddermill_gym.model.states import rotations_from_quaternions
 from laddermill_gym.sim.batch import BatchSimulator
@@ -70,7 +71,7 @@ def _scene_options(scene_options) -> tuple:
     if options.pop("dimension", 3) != 3:
         raise ValueError(f"scene_options: dimension = {scene_options['dimension']!r}; LadderMill is 3D (the "
                          "operating point is found in plane and mapped to 3D)")
-    return tuple(sorted(options.items()))
+    return options_key(options)
 
 
 class MillTask:
@@ -120,7 +121,8 @@ class MillTask:
             raise ValueError(f"control_dt = {control_dt!r} s is not a whole multiple of the physics step {dt!r} s")
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
         self.op = self._operating_point(operating_point, str(scene), options)
-        self.p_ref = self.op.reference_power_W
+        rp = self.reward_config.reference_power_W
+        self.p_ref = self.op.reference_power_W if rp is None else float(rp)
         self.generator_torque = bool(generator_torque)
         self.cable_speed_command = bool(cable_speed_command)
         asm = self._assembly()

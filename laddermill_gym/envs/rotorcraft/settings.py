@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from laddermill_gym.envs.task import check_nonnegative_fields
+from laddermill_gym.envs.task import _check_reference_power, check_nonnegative_fields
 
 
 @dataclass(frozen=True)
@@ -22,6 +22,7 @@ class RotorcraftRewardConfig:
     * S(effort): x = mean of (a - a_trim)^2 over the two normalised action entries.
 
     ``failure_penalty`` [-] is subtracted once, in the step that ends an episode by a physical failure.
+    ``reference_power_W`` [W]: a fixed P_ref instead of the operating point's, so returns compare across winds.
     """
 
     power_weight: float = 1.0
@@ -31,9 +32,11 @@ class RotorcraftRewardConfig:
     rate_scale: float = 0.2
     effort_weight: float = 0.1
     failure_penalty: float = 0.0
+    reference_power_W: float | None = None
 
     def __post_init__(self):
-        check_nonnegative_fields(self, "reward", optional=("lateral_scale",))
+        check_nonnegative_fields(self, "reward", optional=("lateral_scale", "reference_power_W"))
+        _check_reference_power(self)
         if self.rate_scale <= 0:
             raise ValueError(f"reward.rate_scale = {self.rate_scale!r}: must be > 0 rad/s")
         if self.lateral_scale is not None and self.lateral_scale <= 0:

@@ -198,6 +198,8 @@ class CraftTask:
         if not (self.p_ref > 0 and np.all(self.thrust_trim > 0) and np.all(self.tension_trim > 0)):
             raise ValueError(f"craft {cfg.name} at wind_speed = {cfg.wind.v0!r} m/s: the trim gives no positive power "
                              f"({self.p_ref:.4g} W), thrust {self.thrust_trim} N or tensions {self.tension_trim} N")
+        if self.reward_config.reference_power_W is not None:
+            self.p_ref = float(self.reward_config.reference_power_W)
         self.ref[REF_THRUST: REF_THRUST + 2] = self.thrust_trim
         self.ref[REF_TENSION: REF_TENSION + 3] = self.tension_trim
         self._kernel_pass(self._nsteps)
