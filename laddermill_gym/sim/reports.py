@@ -174,6 +174,12 @@ def diagnose(sim) -> str:
     if speeds.size:
         k = int(np.argmax(speeds))
         msgs.append(f"fastest wing {k}: speed {speeds[k]:.4g} m/s")
+    if a.n_nodes:
+        vn = sim.state[a.n_wings * a.wing_state_size: a.body_state_size].reshape(a.n_nodes, a.node_state_size)
+        vel, nv = (N3_VEL, 3) if a.dim == 3 else (N2_VEL, 2)
+        vn = np.linalg.norm(vn[:, vel: vel + nv], axis=1)
+        j = int(np.argmax(vn))
+        msgs.append(f"fastest node {j}: speed {vn[j]:.4g} m/s")
     rates = np.linalg.norm(sim.wing_rates(), axis=1) if a.n_wings else np.zeros(0)
     if rates.size:
         k = int(np.argmax(rates))

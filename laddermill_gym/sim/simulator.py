@@ -274,6 +274,10 @@ class Simulator(StationViews):
         if x.shape != (self.n_state,) or u.shape != (self.n_controls,):
             raise ValueError(f"rhs: x must have {self.n_state} and u {self.n_controls} entries, "
                              f"got {x.shape} and {u.shape}")
+        if not np.all(np.isfinite(x)):
+            i = int(np.flatnonzero(~np.isfinite(x))[0])
+            raise SimulationError(f"t = {t:.6g} s: {self.state_name(i)} is {x[i]} (state entry {i}): "
+                                  "a non-finite state")
         dx = np.zeros(self.n_state)
         if _rhs_kernel(float(t), x, u, dx, self.model, self.work) != 0:
             raise SimulationError(f"t = {t:.6g} s: the mass matrix is singular")
