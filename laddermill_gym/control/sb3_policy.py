@@ -2,14 +2,14 @@
 
 Training (``laddermill train``) writes a run folder with the model (``model.zip``, or the best one
 ``best_model.zip``) and, when observations were normalised, the running statistics that go with each
-(``vecnormalize.pkl``, ``best_vecnormalize.pkl``).
+(``vecnormalize.pkl``, ``best_vecnormalize.pkl``). rl-zoo3 log folders are read as well
+(:mod:`laddermill_gym.control.zoo_run`).
 :class:`SB3Controller` applies the same normalisation before the policy, so evaluation sees raw
 environment observations exactly like the open-loop and LQR controllers.
 """
 
 from __future__ import annotations
 
-import pickle
 from pathlib import Path
 from typing import Any
 
@@ -37,12 +37,30 @@ class SB3Controller:
         self.clip_obs = float(clip_obs)
 
     @classmethod
+    def from_vecnormalize(cls, model, vecnormalize) -> SB3Controller:
+        """``model`` with the observation statistics of an SB3 ``VecNormalize`` (None, or one that does not
+        normalise observations: none)."""
+        if vecnormalize is None or not getattr(vecnormalize, "norm_obs", True):
+            return cls(model)
+        return cls(model, vecnormalize.obs_rms.mean, vecnormalize.obs_rms.var, vecnormalize.clip_obs,
+                   vecnormalize.epsilon)
+
+    @classmethod
     def load(cls, path: str | Path, best: bool = True) -> SB3Controller:
         """Load from a training run folder (``best_model.zip`` if present and ``best``, else ``model.zip``)
-        or from a model file, with its normalisation statistics next to it if there are any."""
-        import stable_baselines3 as sb3
+        or from a model file, with its normalisation statistics next to it if there are any.
+
+        An rl-zoo3 log folder (``logs/<algo>/<env name>_<n>``, or a model file in one) is read by
+        :func:`~laddermill_gym.control.zoo_run.read_zoo_run`: algorithm from its ``args.yml``, statistics from
+        ``<env name>/vecnormalize.pkl``, the last model (``best`` does not apply: rl-zoo3 keeps the statistics of
+        the last model only); it raises naming what is missing or unsupported."""
+        from laddermill_gym.control.zoo_run import find_zoo_run, load_vecnormalize
 
         path = Path(path)
+        if find_zoo_run(path) is not None:
+            return cls.load_zoo(path)
+        import stable_baselines3 as sb3
+
         if path.is_dir():
             candidates = (["best_model.zip"] if best else []) + ["model.zip"]
             files = [path / c for c in candidates if (path / c).is_file()]
@@ -59,11 +77,20 @@ class SB3Controller:
             raise ValueError(f"{meta}: unknown algorithm {algo!r}")
         model = getattr(sb3, algo).load(model_file, device="cpu")
         norm = folder / ("best_vecnormalize.pkl" if model_file.name == "best_model.zip" else "vecnormalize.pkl")
-        if norm.is_file():
-            with open(norm, "rb") as fh:
-                vn = pickle.load(fh)
-            return cls(model, vn.obs_rms.mean, vn.obs_rms.var, vn.clip_obs, vn.epsilon)
-        return cls(model)
+        return cls.from_vecnormalize(model, load_vecnormalize(norm) if norm.is_file() else None)
+
+    @classmethod
+    def load_zoo(cls, path: str | Path) -> SB3Controller:
+        """Load an rl-zoo3 run folder or a model file in one (:func:`~laddermill_gym.control.zoo_run.read_zoo_run`).
+        The schedules pickled in the model (rl-zoo3's own classes) are replaced by constants, as
+        ``rl_zoo3.enjoy`` does: evaluation does not train, and rl_zoo3 need not be installed."""
+        from laddermill_gym.control.zoo_run import load_vecnormalize, read_zoo_run, zoo_algorithm_class
+
+        run = read_zoo_run(path)
+        algo = zoo_algorithm_class(run.algo, run.folder)
+        constants = {"learning_rate": 0.0, "lr_schedule": lambda _: 0.0, "clip_range": lambda _: 0.0}
+        model = algo.load(run.model_file, device="cpu", custom_objects=constants)
+        return cls.from_vecnormalize(model, None if run.vecnormalize is None else load_vecnormalize(run.vecnormalize))
 
     def normalize(self, observation: np.ndarray) -> np.ndarray:
         obs = np.asarray(observation, dtype=np.float64)

@@ -4,7 +4,8 @@
         [--episodes 4] [--episode-time 300] [--direction-step 0.01] [--out results/tethered_wing]
 
 Controllers: ``open_loop``, ``lqr`` (the environment's default design), ``lqr:<config.yaml>`` or the path of an
-SB3 training run (its best model) or model file (``<run>/model.zip`` for the last one); see
+SB3 training run (its best model) or model file (``<run>/model.zip`` for the last one), or an rl-zoo3 log folder
+``logs/<algo>/<env name>_<n>`` (its last model and ``vecnormalize.pkl``; docs/rl_zoo3.md); see
 :mod:`laddermill_gym.control.factory`. Episode i uses seed i, so every
 controller meets the same disturbances. Writes ``summary.csv`` (one row per controller and episode: return,
 length [s], failure, mean power [W], largest lateral excursion [m], share of clipped action entries),
@@ -202,16 +203,26 @@ def vector_env(env_id: str, n: int, env_kwargs: dict):
     return gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **kw)
 
 
-def policy_env_kwargs(spec: str) -> dict:
+def policy_env_kwargs(spec: str, env_id: str | None = None) -> dict:
     """The control settings a trained policy was trained with (the ``CARRIED_KWARGS`` of the ``config.yaml`` in its
-    run folder: action groups, surfaces, model), so that its evaluation env has the policy's action and observation
-    layout; {} for a controller that is not a run folder or a model file in one."""
+    run folder, or of the ``env_kwargs`` of an rl-zoo3 run: action groups, surfaces, model), so that its evaluation
+    env has the policy's action and observation layout; {} for a controller that is not a run folder or a model file
+    in one. An rl-zoo3 run trained on another environment than ``env_id`` raises ValueError naming both."""
+    from laddermill_gym.control.rl_config import CARRIED_KWARGS, env_family, load_rl_config
+    from laddermill_gym.control.zoo_run import find_zoo_run, read_zoo_run
+
     path = Path(spec)
+    if path.exists() and find_zoo_run(path) is not None:
+        run = read_zoo_run(path)
+        if run.env_id not in ENV_IDS:
+            raise ValueError(f"{run.folder}: an rl-zoo3 run on {run.env_id!r}, not a laddermill_gym environment")
+        if env_id is not None and run.env_id != env_id:
+            raise ValueError(f"{run.folder}: an rl-zoo3 run on {run.env_id!r}, evaluated on {env_id!r} (--env)")
+        keys = CARRIED_KWARGS[env_family(run.env_id)]
+        return {k: v for k, v in run.env_kwargs.items() if k in keys}
     folder = path if path.is_dir() else path.parent
     if not (path.exists() and (folder / "config.yaml").is_file()):
         return {}
-    from laddermill_gym.control.rl_config import load_rl_config
-
     return load_rl_config(folder / "config.yaml").carried_env_kwargs()
 
 
@@ -223,7 +234,7 @@ def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dic
 
     results = {}
     for spec in controllers:
-        kw = dict(env_kwargs, **policy_env_kwargs(spec))
+        kw = dict(env_kwargs, **policy_env_kwargs(spec, env_id))
         ctrl = make_controller(spec, env_id, kw)
         env = vector_env(env_id, episodes, kw)
         results[controller_label(spec)] = run_episodes(ctrl, env, progress=progress)
@@ -238,8 +249,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--controllers", nargs="+", default=["open_loop", "lqr"],
                    help="each one of: open_loop (trim controls held); lqr (the environment's default design in "
                    "configs/agents/lqr_<scene>.yaml); lqr:PATH (an LQR config file); a training run folder "
-                   "(its best model, with its VecNormalize statistics) or a model .zip file (default: open_loop "
-                   "lqr)")
+                   "(its best model, with its VecNormalize statistics), a model .zip file, or an rl-zoo3 log folder "
+                   "logs/<algo>/<env name>_<n> (its last model and statistics) (default: open_loop lqr)")
     p.add_argument("--episodes", type=int, default=4, help="seeded episodes per controller (seeds 0..n-1)")
     p.add_argument("--episode-time", type=float, help="[s] episode length (default: the environment's)")
     p.add_argument("--direction-step", type=float, help="[rad] wind-direction step at t = 1 s (default: the "

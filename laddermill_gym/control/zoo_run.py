@@ -1,0 +1,202 @@
+"""Read an rl-zoo3 log folder (``python -m rl_zoo3.train``) for the harness: its algorithm, model file,
+observation statistics and environment arguments, or refuse naming what is missing.
+
+rl-zoo3 (2.x, ``rl_zoo3/exp_manager.py``) writes ``<log folder>/<algo>/<env name>_<n>/`` holding
+
+* ``<env name>.zip``: the last model, saved at the end of training;
+* ``best_model.zip``: the model of the best evaluation (SB3's ``EvalCallback``, when ``--eval-freq`` > 0);
+* ``rl_model_<N>_steps.zip``: checkpoints (``--save-freq``), without statistics;
+* ``<env name>/args.yml``: the command line (``algo``, ``env``, ``env_kwargs``);
+* ``<env name>/config.yml``: the hyperparameters used (``normalize``, ``env_kwargs``, ``frame_stack``, wrappers);
+* ``<env name>/vecnormalize.pkl``: the observation statistics, written at every new best evaluation and again,
+  over the same file, with the last model;
+
+where ``<env name>`` is the environment id with "/" replaced by "-" (``laddermill_gym-TetheredWing-v0``). A run
+folder therefore holds the statistics of its last model only (or, when training stopped before the final save, of
+its best model): :func:`read_zoo_run` takes the last model (as ``python -m rl_zoo3.enjoy`` does without
+``--load-best``) and accepts ``best_model.zip`` or a checkpoint only where the statistics on disk are its own.
+"""
+
+from __future__ import annotations
+
+import ast
+import importlib
+import pickle
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+__all__ = ["ZooRun", "ZOO_ALGORITHMS", "find_zoo_run", "read_zoo_run", "zoo_algorithm_class", "read_zoo_yaml"]
+
+#: rl-zoo3's algorithm names (``rl_zoo3.utils.ALGOS``) -> (module, class). Kept here rather than imported from
+#: rl_zoo3, so that a run folder can be evaluated where only Stable-Baselines3 (and sb3-contrib) are installed;
+#: its recurrent "ppo_lstm" is refused, because the harness calls ``predict`` without a recurrent state.
+ZOO_ALGORITHMS: dict[str, tuple[str, str]] = {
+    "a2c": ("stable_baselines3", "A2C"), "ddpg": ("stable_baselines3", "DDPG"), "dqn": ("stable_baselines3", "DQN"),
+    "ppo": ("stable_baselines3", "PPO"), "sac": ("stable_baselines3", "SAC"), "td3": ("stable_baselines3", "TD3"),
+    "ars": ("sb3_contrib", "ARS"), "crossq": ("sb3_contrib", "CrossQ"), "qrdqn": ("sb3_contrib", "QRDQN"),
+    "tqc": ("sb3_contrib", "TQC"), "trpo": ("sb3_contrib", "TRPO"),
+}
+_ORDERED_DICT_TAG = "tag:yaml.org,2002:python/object/apply:collections.OrderedDict"
+#: config.yml entries that change what the policy sees in ways the harness's evaluation env does not reproduce
+_UNSUPPORTED = ("frame_stack", "env_wrapper", "vec_env_wrapper")
+
+
+@dataclass(frozen=True)
+class ZooRun:
+    """An rl-zoo3 run: ``folder`` (``.../<algo>/<env name>_<n>``), ``algo`` (rl-zoo3's name, e.g. "ppo"),
+    ``env_id`` (the registered id), ``model_file``, ``vecnormalize`` (the statistics file that goes with it, None
+    when observations were not normalised) and ``env_kwargs`` (the training environment's arguments)."""
+
+    folder: Path
+    algo: str
+    env_id: str
+    model_file: Path
+    vecnormalize: Path | None
+    env_kwargs: dict = field(default_factory=dict)
+
+
+class _ZooLoader(yaml.SafeLoader):
+    """yaml's safe loader plus the one Python tag rl-zoo3 writes (``yaml.dump`` of an OrderedDict), read as a
+    dict; every other Python tag still fails (rl-zoo3 reads these files with the unsafe loader)."""
+
+
+def _ordered_dict(loader: _ZooLoader, node: yaml.Node) -> dict:
+    args = loader.construct_sequence(node, deep=True) if isinstance(node, yaml.SequenceNode) else \
+        loader.construct_mapping(node, deep=True).get("args", [[]])
+    return {k: v for k, v in (args[0] if args else [])}
+
+
+_ZooLoader.add_constructor(_ORDERED_DICT_TAG, _ordered_dict)
+
+
+def read_zoo_yaml(path: Path) -> dict[str, Any]:
+    """The mapping in rl-zoo3's ``args.yml`` or ``config.yml``; ValueError naming the file otherwise."""
+    try:
+        data = yaml.load(path.read_text(), Loader=_ZooLoader)  # noqa: S506 (a safe loader with one added tag)
+    except yaml.YAMLError as err:
+        raise ValueError(f"{path}: not readable as an rl-zoo3 file ({err})") from None
+    if not isinstance(data, dict):
+        raise ValueError(f"{path}: {type(data).__name__} at the top, expected a mapping")
+    return data
+
+
+def find_zoo_run(path: str | Path) -> tuple[Path, Path] | None:
+    """(run folder, its ``<env name>`` subfolder) if ``path`` is an rl-zoo3 run folder or a file in one, else None.
+    A run folder ``<env name>_<n>`` is recognised by its subfolder ``<env name>`` holding ``args.yml`` or
+    ``config.yml``."""
+    path = Path(path)
+    folder = path if path.is_dir() else path.parent
+    stem, _, number = folder.name.rpartition("_")
+    sub = folder / stem
+    if stem and number.isdigit() and ((sub / "args.yml").is_file() or (sub / "config.yml").is_file()):
+        return folder, sub
+    return None
+
+
+def zoo_algorithm_class(algo: str, where: Path) -> type:
+    """The SB3 (or sb3-contrib) class of rl-zoo3's algorithm name ``algo`` (read from ``where``)."""
+    if algo == "ppo_lstm":
+        raise ValueError(f"{where}: algo = 'ppo_lstm' (RecurrentPPO) is recurrent; the harness evaluates "
+                         "feed-forward policies only (it passes no recurrent state)")
+    if algo not in ZOO_ALGORITHMS:
+        raise ValueError(f"{where}: algo = {algo!r}: not one of rl-zoo3's {sorted(ZOO_ALGORITHMS)}")
+    module, name = ZOO_ALGORITHMS[algo]
+    try:
+        return getattr(importlib.import_module(module), name)
+    except ImportError:
+        raise ValueError(f"{where}: algo = {algo!r} needs the package {module} (pip install {module})") from None
+
+
+def _python_mapping(text: str, where: str) -> dict:
+    """rl-zoo3's Python text of a mapping (``"dict(norm_obs=True)"`` or ``"{'norm_obs': True}"``), read with
+    :mod:`ast` (literals only; rl-zoo3 itself calls eval)."""
+    try:
+        expr = ast.parse(text, mode="eval").body
+        if isinstance(expr, ast.Call) and isinstance(expr.func, ast.Name) and expr.func.id == "dict" \
+                and not expr.args:
+            return {kw.arg: ast.literal_eval(kw.value) for kw in expr.keywords}
+        value = ast.literal_eval(expr)
+    except (SyntaxError, ValueError):
+        value = None
+    if not isinstance(value, dict):
+        raise ValueError(f"{where} = {text!r}: not a literal mapping")
+    return value
+
+
+def _normalized(config: dict, config_file: Path) -> bool:
+    """Whether training normalised observations: ``normalize`` in config.yml is a bool, a mapping of VecNormalize
+    arguments or its Python text; VecNormalize's default ``norm_obs`` is True."""
+    value = config.get("normalize", False)
+    if isinstance(value, str):
+        value = _python_mapping(value, f"{config_file}: normalize")
+    if isinstance(value, dict):
+        return bool(value.get("norm_obs", True))
+    if isinstance(value, bool):
+        return value
+    raise ValueError(f"{config_file}: normalize = {value!r}: expected true/false, a mapping or rl-zoo3's text")
+
+
+def _pick_model(folder: Path, stem: str, path: Path, stats: Path | None) -> tuple[Path, Path | None]:
+    """The model file (``path`` itself when it names one) and the statistics that go with it (None: none)."""
+    last = folder / f"{stem}.zip"
+    if path.is_dir():
+        for candidate in (last, folder / "best_model.zip"):
+            if candidate.is_file():
+                return candidate, stats
+        raise FileNotFoundError(f"{folder}: no {last.name} or best_model.zip (training saved no model yet)")
+    if stats is None or path == last:
+        return path, stats
+    if path.name == "best_model.zip":
+        if last.is_file():
+            raise ValueError(f"{path}: rl-zoo3 wrote {stats} again with the last model ({last.name}) after this "
+                             "best model, so its own observation statistics are lost; evaluate the run folder "
+                             "(its last model) instead")
+        return path, stats
+    own = folder / path.name.replace("rl_model_", "rl_model_vecnormalize_").replace(".zip", ".pkl")
+    if own.is_file():
+        return path, own
+    raise ValueError(f"{path}: a checkpoint of a run with normalised observations, but {own.name} (its "
+                     "statistics) is missing; evaluate the run folder (its last model) instead")
+
+
+def read_zoo_run(path: str | Path) -> ZooRun:
+    """Read the rl-zoo3 run folder ``path`` (or a model file in one). Raises FileNotFoundError or ValueError
+    naming the missing file or the unsupported entry: no ``args.yml`` / ``config.yml``, an unknown or recurrent
+    algorithm, frame stacking or wrappers, normalised observations without ``vecnormalize.pkl``."""
+    path = Path(path)
+    found = find_zoo_run(path)
+    if found is None:
+        raise ValueError(f"{path}: not an rl-zoo3 run folder (<env name>_<n>/ with <env name>/args.yml)")
+    folder, sub = found
+    args_file, config_file = sub / "args.yml", sub / "config.yml"
+    for needed, what in ((args_file, "the algorithm and environment"), (config_file, "the normalisation")):
+        if not needed.is_file():
+            raise FileNotFoundError(f"{needed}: missing; rl-zoo3 writes it with the run and it names {what}")
+    args, config = read_zoo_yaml(args_file), read_zoo_yaml(config_file)
+    for key in ("algo", "env"):
+        if not isinstance(args.get(key), str):
+            raise ValueError(f"{args_file}: {key} = {args.get(key)!r}: expected a name")
+    zoo_algorithm_class(args["algo"], args_file)
+    for key in _UNSUPPORTED:
+        if config.get(key) is not None:
+            raise ValueError(f"{config_file}: {key} = {config[key]!r}: the harness evaluates on the bare "
+                             "environment and cannot reproduce it")
+    stats = sub / "vecnormalize.pkl"
+    if _normalized(config, config_file):
+        if not stats.is_file():
+            raise FileNotFoundError(f"{stats}: missing, but {config_file} says observations were normalised "
+                                    f"(normalize = {config.get('normalize')!r})")
+    else:
+        stats = None
+    model_file, stats = _pick_model(folder, sub.name, path, stats)
+    env_kwargs = args.get("env_kwargs") if args.get("env_kwargs") is not None else config.get("env_kwargs")
+    return ZooRun(folder, args["algo"], args["env"], model_file, stats, dict(env_kwargs or {}))
+
+
+def load_vecnormalize(path: Path):
+    """The pickled SB3 ``VecNormalize`` in ``path`` (its ``obs_rms``, ``clip_obs``, ``epsilon``, ``norm_obs``)."""
+    with open(path, "rb") as fh:
+        return pickle.load(fh)
