@@ -1,7 +1,7 @@
 """Train a Stable-Baselines3 agent (PPO or SAC) on a laddermill_gym environment from a config file.
 
     laddermill train configs/agents/ppo_tethered_wing.yaml [--out runs/ppo] [--seed 1]
-                           [--timesteps N] [--minutes M]
+                           [--timesteps N] [--minutes M] [--torch-threads T]
 
 The run folder gets: ``config.yaml`` (the config used), ``algorithm.txt``, TensorBoard logs (``tb/``),
 checkpoints (``checkpoints/``), ``evaluations.csv`` (deterministic returns on the registered evaluation
@@ -12,6 +12,11 @@ Training stops at ``total_timesteps`` or ``time_limit_minutes``, whichever comes
 steps, episodes and the latest evaluation. Every environment (the wings and Rotorcraft-v0,
 configs/agents/ppo_rotorcraft.yaml) trains and evaluates on its batched kernel (:mod:`laddermill_gym.envs.sb3`,
 the native vector env).
+
+torch runs on one thread unless ``--torch-threads`` or the environment variable ``LADDERMILL_TORCH_THREADS``
+says otherwise: the networks are small (two layers of 64 or 256) and torch's default, one thread per core, spends
+more time synchronising its threads than computing (measured by ``python -m laddermill_gym.studies.torch_threads``,
+docs/rl_zoo3.md).
 """
 
 from __future__ import annotations
@@ -19,6 +24,7 @@ from __future__ import annotations
 import argparse
 import csv
 import dataclasses
+import os
 import shutil
 import sys
 import time
@@ -147,13 +153,37 @@ def evaluation_env(cfg: RLConfig):
                         **cfg.eval_env_kwargs())
 
 
-def train(cfg: RLConfig, out: Path) -> dict:
-    """Train according to ``cfg`` into the folder ``out``; returns a summary dict."""
+#: environment variable naming torch's thread count when ``--torch-threads`` is not given
+TORCH_THREADS_VAR = "LADDERMILL_TORCH_THREADS"
+
+
+def torch_threads(requested: int | None = None) -> int:
+    """The torch thread count for training: ``requested`` (``--torch-threads``), else the environment variable
+    :data:`TORCH_THREADS_VAR`, else 1. Raises ValueError naming the option or variable and a value that is not a
+    whole number >= 1."""
+    if requested is not None:
+        source, value = "--torch-threads", requested
+    elif os.environ.get(TORCH_THREADS_VAR, "").strip():
+        source, value = TORCH_THREADS_VAR, os.environ[TORCH_THREADS_VAR].strip()
+    else:
+        return 1
+    try:
+        n = int(value)
+    except ValueError:
+        n = 0
+    if n < 1 or str(n) != str(value).strip():
+        raise ValueError(f"{source} = {value!r}: must be a whole number >= 1 (torch's thread count)")
+    return n
+
+
+def train(cfg: RLConfig, out: Path, threads: int | None = None) -> dict:
+    """Train according to ``cfg`` into the folder ``out`` with ``threads`` torch threads (None:
+    :func:`torch_threads`); returns a summary dict."""
     import stable_baselines3 as sb3
     import torch
     from stable_baselines3.common.vec_env import VecMonitor, VecNormalize
 
-    torch.set_num_threads(1)
+    torch.set_num_threads(torch_threads(threads))
     out.mkdir(parents=True, exist_ok=True)
     (out / "checkpoints").mkdir(exist_ok=True)
     shutil.copyfile(cfg.file, out / "config.yaml")
@@ -179,7 +209,7 @@ def train(cfg: RLConfig, out: Path) -> dict:
         fh.write("controller,mean_return\n" + "".join(f"{k},{v:.4f}\n" for k, v in refs.items()))
     plot_curve(out, cb.rows, refs)
     summary = dict(steps=int(model.num_timesteps), minutes=round(minutes, 2), best_eval_return=cb.best,
-                   last_eval_return=cb.rows[-1]["mean_return"], references=refs)
+                   last_eval_return=cb.rows[-1]["mean_return"], references=refs, torch_threads=torch.get_num_threads())
     return summary
 
 
@@ -191,6 +221,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--timesteps", type=int, help="override total_timesteps")
     p.add_argument("--minutes", type=float, help="override time_limit_minutes")
     p.add_argument("--n-envs", type=int, help="override n_envs")
+    p.add_argument("--torch-threads", type=int, help=f"torch threads (default: ${TORCH_THREADS_VAR}, else 1: "
+                   "faster than one per core for these small networks)")
     p.add_argument("--replot", action="store_true", help="only redraw the training curve of the run folder "
                    "--out (config: its config.yaml) with the LQR and open-loop references")
     args = p.parse_args(argv)
@@ -208,10 +240,15 @@ def main(argv: list[str] | None = None) -> int:
         if v <= 0 and k != "seed":
             p.error(f"--{k.replace('_', '-')} = {v}: must be > 0")
     cfg = dataclasses.replace(cfg, **over)
+    try:
+        threads = torch_threads(args.torch_threads)
+    except ValueError as err:
+        p.error(str(err))
     out = args.out or Path("runs") / f"{Path(args.config).stem}_seed{cfg.seed}"
-    summary = train(cfg, out)
-    print(f"trained {summary['steps']} steps in {summary['minutes']} min; evaluation return best "
-          f"{summary['best_eval_return']:.2f}, last {summary['last_eval_return']:.2f}; run folder {out}")
+    summary = train(cfg, out, threads)
+    print(f"trained {summary['steps']} steps in {summary['minutes']} min ({summary['torch_threads']} torch "
+          f"thread(s)); evaluation return best {summary['best_eval_return']:.2f}, last "
+          f"{summary['last_eval_return']:.2f}; run folder {out}")
     for name, value in summary["references"].items():
         print(f"  {name} on the same episodes: {value:.2f}")
     return 0
