@@ -117,6 +117,21 @@ def test_power_reward_is_the_net_electrical_energy():
     assert s[-1, i["paid_out"]] == pytest.approx(0.05 * (300 * 1.5 - 300 * 1.67), abs=1.0)  # the 0.5 s lag
 
 
+def test_full_drum_pays_out_no_more():
+    """Full reel-out for 200 s at 10 m/s would pay out 2 km; the drum stops at Delta L + 2 overruns = 240 m (plus
+    what the 0.5 s speed lag carries past it, at most 10 m/s x 0.5 s)."""
+    env = PumpingKiteEnv(disturbances=[], episode_time=200.0, termination={"alpha_range_deg": (-90.0, 90.0),
+                                                                           "max_abs_beta_deg": 90.0})
+    env.reset(seed=0)
+    s = []
+    for _ in range(1000):
+        obs, _, term, trunc, _ = env.step(np.array([0, 0, 0, 1.0], np.float32))
+        s.append(obs[WINCH_OBS_INDEX["paid_out"]])
+        if term or trunc:
+            break
+    assert max(s) == pytest.approx(240.0, abs=5.5)
+
+
 def test_ground_contact_terminates():
     env = PumpingKiteEnv(disturbances=[])
     env.reset(seed=0)

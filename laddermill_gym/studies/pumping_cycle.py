@@ -56,7 +56,9 @@ def run_cycles(task: PumpingTask, controller, n_cycles: int, t_max: float | None
             bar.update(1)
         prev = phase
         if term[0]:
-            raise RuntimeError(f"the cycle failed: {task.failure_text(0, int(info['failure'][0]))}")
+            raise RuntimeError(f"the cycle failed: {task.failure_text(0, int(info['failure'][0]))}; before it: "
+                           f"{sum(r[5] for r in rows) / 1e3:.0f} kJ net electrical, largest |dy| "
+                           f"{max(r[-1] for r in rows):.1f} m, largest drum tension {max(r[4] for r in rows):.0f} N")
         if trunc[0]:
             break
     bar.close()
@@ -150,14 +152,29 @@ def _arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--config", default="pumping_kite", help="pumping config (configs/pumping/NAME.yaml or a path)")
     p.add_argument("--cycles", type=int, default=3, help="complete cycles to fly (the first starts from the trim)")
     p.add_argument("--out", type=Path, default=None, help="folder for pumping_cycle.json and .png (default: none)")
+    p.add_argument("--reel-in-speed", type=float, help="[m/s] override the config's cycle.reel_in_speed")
+    p.add_argument("--alpha-in-deg", type=float, help="[deg] override the config's cycle.alpha_in_deg")
+    p.add_argument("--elements", type=int, help="tether elements (scene elements_per_piece; the winch changes the "
+                   "lowest one's length)")
+    p.add_argument("--no-lqr", action="store_true", help="the scripted cycle alone (rudder and aileron at trim)")
 
 
 def _run(args) -> int:
     if args.cycles < 2:
         raise SystemExit(f"--cycles = {args.cycles}: need at least 2 (the first cycle starts from the trim)")
-    task = PumpingTask(1, config=args.config, episode_time=2000.0)  # the envs' 0.01 rad direction step at 1 s
-    ctl = PumpingCycleController(task, lateral_lqr(task, DEFAULT_CONFIG))
-    rec = run_cycles(task, ctl, args.cycles + 1)
+    options = {} if args.elements is None else {"elements_per_piece": args.elements}
+    task = PumpingTask(1, config=args.config, episode_time=2000.0, scene_options=options)  # the 0.01 rad step at 1 s
+    changes = {k: v for k, v in (("reel_in_speed", args.reel_in_speed),
+                                 ("alpha_in", None if args.alpha_in_deg is None else math.radians(args.alpha_in_deg)))
+               if v is not None}
+    if changes:
+        task.pumping = dataclasses.replace(task.pumping, cycle=dataclasses.replace(task.pumping.cycle, **changes))
+    ctl = PumpingCycleController(task, None if args.no_lqr else lateral_lqr(task, DEFAULT_CONFIG))
+    try:
+        rec = run_cycles(task, ctl, args.cycles + 1)
+    except RuntimeError as err:
+        print(err)
+        return 1
     stats = cycle_stats(rec, task.control_dt)
     rows = []
     print(f"{'cycle':>5} {'T_c s':>7} {'sim W':>8} {'Lansdorp W':>11} {'Schmehl W':>10} {'static W':>9} "

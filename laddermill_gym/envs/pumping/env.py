@@ -58,9 +58,10 @@ class PumpingKiteEnv(TaskPickling, TaskRendering, gym.Env):
     | 2 | aileron: trim + a x 20 deg | -20 | 20 | deg |
     | 3 | winch command: commanded speed 10 a (a > 0) or 16.7 a (a < 0) | -16.7 | 10 | m/s |
 
-    a = 0 holds the reel-out trim with the winch stopped (:class:`~laddermill_gym.envs.pumping.actions.
-    PumpingActionMap`; a drum winch takes a torque instead). Entries outside [-1, 1] are clipped and counted in
-    ``info["n_clipped"]``.
+    The drum holds Delta L + 2 depower overruns (240 m): beyond that a reel-out command is replaced by 0 (so no
+    policy gains by paying out for ever). a = 0 holds the reel-out trim with the winch stopped
+    (:class:`~laddermill_gym.envs.pumping.actions.PumpingActionMap`; a drum winch takes a torque instead). Entries
+    outside [-1, 1] are clipped and counted in ``info["n_clipped"]``.
 
     ## Observation Space
 
@@ -78,9 +79,9 @@ WINCH_TABLE
 
     r = E_el / (P_ref dt) - w_y S(dy) - w_w S(rates) - failure_penalty [terminated], S(x) = 1 - exp(-x): E_el the
     net electrical energy of the control period (eta times the drum's mechanical energy while generating, over eta
-    while reeling in; eta = 0.92, Lansdorp eq. 13), P_ref = 1 kW (:class:`~laddermill_gym.envs.pumping.settings.
-    PumpingRewardConfig`). The power terms of an episode sum to its net electrical energy over P_ref dt. Every term
-    is in ``info``.
+    while reeling in; eta = 0.92, Lansdorp eq. 13), P_ref = 1 kW, w_y = w_w = 0.1, failure_penalty 1e5 (5 MJ, more
+    than any energy flown before a crash) (:class:`~laddermill_gym.envs.pumping.settings.PumpingRewardConfig`). The
+    power terms of an episode sum to its net electrical energy over P_ref dt. Every term is in ``info``.
 
     ## Starting State
 

@@ -121,6 +121,9 @@ class PumpingTask:
         self.steps = np.zeros(B, dtype=np.int64)
         self.last_action = np.zeros((B, self.n_actions))
         self.obs_low, self.obs_high = pumping_observation_bounds(sc, self.pumping.cycle.reel_length)
+        cyc = self.pumping.cycle
+        #: drum capacity [m]: a commanded winch pays out no further than Delta L + 2 depower overruns
+        self.max_paid_out = cyc.reel_length + 2.0 * cyc.depower_overrun
         rc, tc = self.reward_config, self.termination_config
         self.lateral_scale = rc.lateral_scale if rc.lateral_scale is not None else 0.05 * sc.piece_length
         self.min_altitude = tc.min_altitude if tc.min_altitude is not None else 0.5 * asm.wing(0).span
@@ -221,7 +224,11 @@ class PumpingTask:
         a = np.clip(a, -1.0, 1.0)
         b = self.batch
         sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
-        b.controls[sel] = self.actions.controls(a)[sel]
+        u = self.actions.controls(a)
+        if self.winch.mode == "commanded":  # a full drum pays out no more (the cycle's Delta L + 2 overruns)
+            full = b.states[:, self.xoff + SX_MOVED] >= self.max_paid_out
+            u[full, -1] = np.minimum(u[full, -1], 0.0)
+        b.controls[sel] = u[sel]
         self.last_action[sel] = a[sel]
         self.energy_start[:] = b.states[:, self.xoff + SX_ENERGY]
         self._nsteps[:] = -1
