@@ -39,7 +39,7 @@ def plot_work_precision(res: dict, path: Path) -> Path:
                                           ("err_rms_state", "RMS scaled state error [-]"))):
             ax = axes[i, j]
             for m in dict.fromkeys(r["method"] for r in rows):
-                pts = sorted((r[key], r["wall_s"]) for r in rows if r["method"] == m and r[key] > 0)
+                pts = [(r[key], r["wall_s"]) for r in rows if r["method"] == m and r[key] > 0]  # in step order
                 if pts:
                     c, mk, ls = _STYLE.get(m, (None, "^", "-"))
                     ax.loglog(*zip(*pts, strict=True), marker=mk, ls=ls, color=c, label=m, ms=4)
@@ -79,3 +79,10 @@ def print_summary(res: dict, echo=print) -> None:
             echo(f"   {r['method']:9s} {_fmt(r['dt_s'], '9.5f')} {_fmt(r['tol'], '7.0e')} {r['wall_s']:9.3f} "
                  f"{r['real_time_factor']:8.1f} {r['err_final_pos_m']:10.2e} {r['err_rms_pos_m']:9.2e} "
                  f"{r['err_final_state']:9.2e} {r['err_rms_state']:9.2e}")
+
+
+def replot(json_path: Path, png_path: Path) -> Path:
+    """Redraw the figure of a saved ``SCENE.json`` (no rerun)."""
+    import json
+
+    return plot_work_precision(json.loads(Path(json_path).read_text()), Path(png_path))
