@@ -122,3 +122,31 @@ def test_bad_parallel_options_exit_2_naming_the_option(argv, text, capsys):
     with pytest.raises(SystemExit) as err:
         gb.main(["--suite", "gusts-v1", *argv])
     assert err.value.code == 2 and text in capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_lateral_study_on_two_workers_gives_the_serial_eigenvalues():
+    import numpy as np
+
+    from laddermill_gym.studies.lateral_analysis import run_sweeps
+    from laddermill_gym.studies.lateral_variants import base_scene, sweep_specs
+
+    specs = sweep_specs(base_scene(), quick=True)
+    (r0, c0), (r2, c2) = (run_sweeps(specs, ["dihedral"], workers=w, progress=False) for w in (0, 2))
+    assert c0 == c2 and c0["dihedral"]["max_real"]  # the dihedral sweep crosses the stability boundary
+    for a, b in zip(r0[0].variants, r2[0].variants, strict=True):
+        assert a.error == b.error and np.array_equal(a.eigenvalues, b.eigenvalues, equal_nan=True)
+
+
+@pytest.mark.slow
+def test_two_training_seeds_on_two_workers_give_the_serial_runs(tmp_path):
+    from laddermill_gym.harness.train_seeds import train_seeds
+
+    config = "configs/agents/ppo_tethered_wing.yaml"
+    over = {"total_timesteps": 512, "n_envs": 2, "eval_episodes": 2}
+    runs = {w: train_seeds(config, [0, 1], tmp_path / f"w{w}", over, workers=w) for w in (0, 2)}
+    for a, b in zip(runs[0], runs[2], strict=True):
+        assert a["seed"] == b["seed"] and a["steps"] == b["steps"] == 512
+        assert a["best_eval_return"] == b["best_eval_return"] and a["last_eval_return"] == b["last_eval_return"]
+        assert a["references"] == b["references"]
+    assert runs[0][0]["last_eval_return"] != runs[0][1]["last_eval_return"]  # the seeds differ

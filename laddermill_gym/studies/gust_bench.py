@@ -180,6 +180,13 @@ def _jobs(suite: Suite, env_ids, controllers, scenarios) -> list[tuple]:
     return jobs
 
 
+def _absolute(spec: str) -> str:
+    """``spec`` with a file or folder it names made absolute (workers on Ray do not share the caller's
+    working directory); other specs as they are."""
+    prefix, name = ("lqr:", spec[4:]) if spec.startswith("lqr:") else ("", spec)
+    return prefix + str(Path(name).resolve()) if Path(name).exists() else spec
+
+
 def warmup_tasks(suite: Suite, env_ids, controllers, scenarios=None) -> list[tuple]:
     """What a worker runs once before its first task (:mod:`laddermill_gym.studies.parallel`): per environment
     and controller a WARMUP_S episode without disturbance and, if a chosen scenario has a gust grid, one with
@@ -196,7 +203,7 @@ def warmup_tasks(suite: Suite, env_ids, controllers, scenarios=None) -> list[tup
             key = (env_id, spec, bool(dist))
             if key not in seen:
                 seen.add(key)
-                tasks.append((episodes_task, dict(env_id=env_id, env_kwargs=kw, spec=spec, seeds=(0,),
+                tasks.append((episodes_task, dict(env_id=env_id, env_kwargs=kw, spec=_absolute(spec), seeds=(0,),
                                                   duration=WARMUP_S, disturbances=dist)))
     return tasks
 
@@ -239,7 +246,7 @@ def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool
     jobs = _jobs(suite, env_ids, controllers, scenarios)
     tasks, refs, runs = [], {}, []
     for env_id, kw, spec, s in jobs:
-        base = dict(env_id=env_id, env_kwargs=kw, spec=spec, seeds=s.seeds, duration=s.duration)
+        base = dict(env_id=env_id, env_kwargs=kw, spec=_absolute(spec), seeds=s.seeds, duration=s.duration)
         ref_key = (env_id, spec, repr(sorted(kw.items())), s.duration, s.seeds)
         if ref_key not in refs:
             refs[ref_key] = len(tasks)

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from laddermill_gym.ladder.scene import Scene
-from laddermill_gym.studies.lateral_variants import SweepSpec, variant_for
+from laddermill_gym.studies.lateral_variants import SweepSpec, base_scene, variant_for
 
 
 def lateral_eigenvalues(scene: Scene) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -132,3 +132,51 @@ def evaluate(scene: Scene, value: float = float("nan")) -> VariantResult:
 def run_sweep(base: Scene, spec: SweepSpec) -> SweepResult:
     """Evaluate every value of ``spec`` (one parameter changed at a time from ``base``)."""
     return SweepResult(spec, tuple(evaluate(variant_for(base, spec.name, float(v)), float(v)) for v in spec.values))
+
+
+# The default scene, built once per process (a worker's tasks share it).
+_BASE: dict[str, Scene] = {}
+
+
+def _base() -> Scene:
+    if "scene" not in _BASE:
+        _BASE["scene"] = base_scene()
+    return _BASE["scene"]
+
+
+def warm_base() -> VariantResult:
+    """The per-worker warm-up: build the default scene and analyse it (compiles or loads the trim and
+    linearisation kernels)."""
+    _BASE.clear()
+    return evaluate(_base(), float("nan"))
+
+
+def variant_task(name: str, value: float) -> VariantResult:
+    """A picklable task: :func:`evaluate` of the default scene with sweep ``name`` at ``value``."""
+    return evaluate(variant_for(_base(), name, float(value)), float(value))
+
+
+def sign_change_task(name: str, a: float, b: float, quantity: str) -> float:
+    """A picklable task: :func:`locate_sign_change` on the default scene."""
+    return locate_sign_change(_base(), name, a, b, quantity)
+
+
+def run_sweeps(specs: dict[str, SweepSpec], names, workers: int = 0, ray: str | None = None,
+               progress: bool = True) -> tuple[list[SweepResult], dict]:
+    """Every value of the sweeps ``names`` (one task each), then every sign change (one bisection task per
+    bracket), serially or on workers (:func:`laddermill_gym.studies.parallel.run_tasks`): the same results
+    either way. Returns (results in the order of ``names``, {sweep: {quantity: [values]}})."""
+    from laddermill_gym.studies.parallel import Pool
+
+    tasks = [(variant_task, {"name": n, "value": float(v)}) for n in names for v in specs[n].values]
+    quantities = ("max_real", "osc_real")
+    with Pool(workers, ray, warmup=[(warm_base, {})]) as pool:
+        out = iter(pool.run(tasks, desc="lateral variants", unit="variant", progress=progress))
+        results = [SweepResult(specs[n], tuple(next(out) for _ in specs[n].values)) for n in names]
+        brackets = [(r.spec.name, q, a, b) for r in results for q in quantities for a, b in r.brackets(q)]
+        found = pool.run([(sign_change_task, {"name": n, "a": a, "b": b, "quantity": q}) for n, q, a, b in brackets],
+                         desc="lateral sign changes", unit="bisection", progress=progress)
+    crossings: dict = {n: {q: [] for q in quantities} for n in names}
+    for (n, q, _, _), v in zip(brackets, found, strict=True):
+        crossings[n][q].append(v)
+    return results, crossings

@@ -1,7 +1,8 @@
 """Parameter study of the lateral (sideways) instability of one wing on a tether (scene ``tethered_wing``).
 
 Run ``python -m laddermill_gym.studies.lateral_study [--out laddermill_gym/docs/figures/lateral_study.png]
-[--quick] [--sweeps NAME,NAME,...]``.
+[--quick] [--sweeps NAME,NAME,...] [--workers N] [--ray auto|local|ADDRESS]``: every variant and every
+bisection is a task of :mod:`laddermill_gym.studies.parallel` (serial by default; the same table either way).
 
 Method: for every variant the scene is rebuilt with one parameter changed (all others at the default of
 ``configs/scenes/tethered_wing.yaml`` and ``configs/wings/meijaard_wing.yaml``), trimmed at the scene's target
@@ -42,6 +43,7 @@ from laddermill_gym.studies.lateral_analysis import (
     locate_sign_change,
     mode_summary,
     run_sweep,
+    run_sweeps,
     sign_changes,
 )
 from laddermill_gym.studies.lateral_output import format_table, plot_sweeps
@@ -56,6 +58,7 @@ from laddermill_gym.studies.lateral_variants import (
     make_variant,
     sweep_specs,
 )
+from laddermill_gym.studies.parallel import add_arguments, check_arguments
 
 __all__ = [
     "SCENE",
@@ -75,6 +78,7 @@ __all__ = [
     "mode_summary",
     "evaluate",
     "run_sweep",
+    "run_sweeps",
     "format_table",
     "plot_sweeps",
     "main",
@@ -101,7 +105,9 @@ def main(argv: list[str] | None = None) -> list[SweepResult]:
     ap.add_argument("--quick", action="store_true", help="4 points per sweep instead of 7")
     ap.add_argument("--sweeps", default=None,
                     help="comma-separated subset of: " + ",".join(SWEEP_NAMES))
+    add_arguments(ap)
     args = ap.parse_args(argv)
+    check_arguments(args, ap.prog)
     out = Path(args.out)
     if out.suffix.lower() not in _FIGURE_SUFFIXES:
         raise ValueError(f"--out {args.out!r}: the figure file must end in one of {_FIGURE_SUFFIXES}")
@@ -116,8 +122,7 @@ def main(argv: list[str] | None = None) -> list[SweepResult]:
         raise RuntimeError(f"the default scene does not trim: {ref.error}")
     print(f"default: max Re = {ref.max_real:.4f} 1/s, slow oscillation period {ref.period:.2f} s")
     print("default lateral eigenvalues [1/s]: " + ", ".join(f"{e.real:.4f}{e.imag:+.4f}j" for e in ref.eigenvalues))
-    results = [run_sweep(base, specs[n]) for n in names]
-    crossings = {r.spec.name: {q: sign_changes(base, r, q) for q in ("max_real", "osc_real")} for r in results}
+    results, crossings = run_sweeps(specs, names, workers=args.workers, ray=args.ray)
     print(format_table(results, crossings))
     plot_sweeps(results, out)
     print(f"\nwrote {out} ({time.perf_counter() - t0:.1f} s)")

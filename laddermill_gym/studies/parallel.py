@@ -18,7 +18,7 @@ count is set to its share of the cores. A worker with another laddermill_gym, nu
 caller refuses to start; one whose package source differs (a digest of its ``.py`` files: an edited file) is
 reported as a RuntimeWarning. Measured figures and the cluster set-up: ``laddermill_gym/docs/scale_out.md``.
 
-    python -m laddermill_gym.studies.parallel warm       # compile or load every kernel here; prints the time
+    python -m laddermill_gym.studies.parallel warm   # compile or load every gusts-v1 env's kernels; prints the time
 """
 
 from __future__ import annotations
@@ -39,7 +39,7 @@ from typing import Any
 
 from tqdm import tqdm
 
-__all__ = ["Task", "run_tasks", "worker_report", "source_digest", "add_arguments", "check_arguments",
+__all__ = ["Task", "Pool", "run_tasks", "worker_report", "source_digest", "add_arguments", "check_arguments",
            "RAY_HINT", "main"]
 
 #: One task: a module-level function and its keyword arguments (both picklable).
@@ -127,85 +127,12 @@ def _failed(index: int, task: Task, err: BaseException) -> RuntimeError:
                         f"{type(err).__name__}: {err}")
 
 
-def _serial(tasks, init_args, bar) -> list:
-    _init_worker(*init_args)
-    out = []
-    for i, task in enumerate(tasks):
-        try:
-            out.append(_call(i, *task)[1])
-        except Exception as err:
-            raise _failed(i, task, err) from err
-        bar.update()
-    return out
-
-
-def _processes(tasks, workers: int, init_args, bar) -> list:
-    out: list = [None] * len(tasks)
-    ctx = multiprocessing.get_context("spawn")
-    with cf.ProcessPoolExecutor(workers, mp_context=ctx, initializer=_init_worker, initargs=init_args) as ex:
-        futures = {ex.submit(_call, i, fn, kw): i for i, (fn, kw) in enumerate(tasks)}
-        for fut in cf.as_completed(futures):
-            i = futures[fut]
-            try:
-                _, out[i], note = fut.result()
-                _warn(note)
-            except Exception as err:
-                ex.shutdown(wait=False, cancel_futures=True)
-                raise _failed(i, tasks[i], err) from err
-            bar.update()
-    return out
-
-
 def _ray_module():
     try:
         import ray
     except ImportError:
         raise RuntimeError(f"--ray: {RAY_HINT}") from None
     return ray
-
-
-def _ray_connect(ray, address: str, workers: int) -> bool:
-    """Connect (or start a local Ray for ``address == "local"``); True if this call did, so it shuts down."""
-    if ray.is_initialized():
-        return False
-    if address == "local":
-        ray.init(num_cpus=workers or os.cpu_count(), include_dashboard=False, logging_level="warning")
-    else:
-        ray.init(address=address, logging_level="warning")
-    return True
-
-
-def _ray(tasks, address: str, workers: int, init_args, bar) -> list:
-    ray = _ray_module()
-    started = _ray_connect(ray, address, workers)
-    try:
-        n = workers or max(1, int(ray.cluster_resources().get("CPU", 1)))
-        actor = ray.remote(num_cpus=1)(_RayWorker)
-        pool = [actor.remote(*init_args) for _ in range(min(n, len(tasks)))]
-        out: list = [None] * len(tasks)
-        pending, queue = {}, list(range(len(tasks)))[::-1]
-        for a in pool:
-            if queue:
-                i = queue.pop()
-                pending[a.call.remote(i, *tasks[i])] = (i, a)
-        while pending:
-            done, _ = ray.wait(list(pending), num_returns=1)
-            i, a = pending.pop(done[0])
-            try:
-                _, out[i], note = ray.get(done[0])
-                _warn(note)
-            except Exception as err:
-                raise _failed(i, tasks[i], err) from err
-            bar.update()
-            if queue:
-                j = queue.pop()
-                pending[a.call.remote(j, *tasks[j])] = (j, a)
-        for a in pool:
-            ray.kill(a)
-        return out
-    finally:
-        if started:
-            ray.shutdown()
 
 
 class _RayWorker:
@@ -218,38 +145,131 @@ class _RayWorker:
         return _call(index, fn, kwargs)
 
 
-def run_tasks(tasks, *, workers: int = 0, ray: str | None = None, warmup=(), threads: int | None = None,
-              desc: str = "tasks", unit: str = "task", progress: bool = True) -> list:
-    """Run ``tasks`` (a sequence of :data:`Task`) and return their results in the order of ``tasks``.
+class Pool:
+    """Workers that warm up once and then run any number of batches of tasks::
+
+        with Pool(workers=2, warmup=[(fn, kwargs)]) as pool:
+            first = pool.run(tasks)             # results in the order of tasks
+            second = pool.run(more_tasks)       # the same warmed-up workers
 
     Parameters
     ----------
-    workers : int        0: serially in this process; N >= 1: N local worker processes, or N Ray actors with
-                         ``ray`` (0 with ``ray``: one per CPU of the cluster)
+    workers : int        0: serially in this process; N >= 1: N local worker processes (``spawn``), or N Ray
+                         actors with ``ray`` (0 with ``ray``: one per CPU of the cluster)
     ray : str or None    None (no Ray), ``"local"`` (start a one-node Ray here with ``workers`` CPUs),
                          ``"auto"`` (join the running cluster: ``RAY_ADDRESS`` or ``ray start`` on this node) or
                          a cluster address (``HOST:6379`` or ``ray://HOST:10001``)
     warmup : sequence    tasks each worker runs once before its first task (serially: once, here)
     threads : int        numba threads per worker (default: this machine's cores / workers, at least 1; Ray
                          actors 1, their CPU share); serially numba's setting stays as it is
-    Raises RuntimeError naming the task that failed (the others are cancelled)."""
-    tasks = [(fn, dict(kw)) for fn, kw in tasks]
-    warmup = tuple((fn, dict(kw)) for fn, kw in warmup)
-    if not isinstance(workers, int) or workers < 0:
-        raise ValueError(f"workers = {workers!r}: must be a whole number >= 0 (0: serial)")
-    if ray is None and workers and threads is None:
-        threads = max(1, (os.cpu_count() or 1) // workers)
-    elif ray is not None and threads is None:
-        threads = 1
-    init_args = (uuid.uuid4().hex, warmup, threads if (workers or ray) else None, _versions())
-    with tqdm(total=len(tasks), desc=desc, unit=unit, disable=not progress, smoothing=0.0) as bar:
-        if not tasks:
-            return []
-        if ray is not None:
-            return _ray(tasks, ray, workers, init_args, bar)
-        if workers:
-            return _processes(tasks, min(workers, len(tasks)), init_args, bar)
-        return _serial(tasks, init_args, bar)
+    """
+
+    def __init__(self, workers: int = 0, ray: str | None = None, warmup=(), threads: int | None = None):
+        if not isinstance(workers, int) or isinstance(workers, bool) or workers < 0:
+            raise ValueError(f"workers = {workers!r}: must be a whole number >= 0 (0: serial)")
+        if threads is None and ray is not None:
+            threads = 1
+        elif threads is None and workers:
+            threads = max(1, (os.cpu_count() or 1) // workers)
+        self.workers, self.ray = workers, ray
+        warm = tuple((fn, dict(kw)) for fn, kw in warmup)
+        self._init = (uuid.uuid4().hex, warm, threads if (workers or ray) else None, _versions())
+        self._ex = self._ray = None
+        self._actors: list = []
+        self._started_ray = False
+
+    def __enter__(self) -> Pool:
+        if self.ray is not None:
+            self._ray = _ray_module()
+            if not self._ray.is_initialized():
+                if self.ray == "local":
+                    self._ray.init(num_cpus=self.workers or os.cpu_count(), include_dashboard=False,
+                                   logging_level="warning")
+                else:
+                    self._ray.init(address=self.ray, logging_level="warning")
+                self._started_ray = True
+            n = self.workers or max(1, int(self._ray.cluster_resources().get("CPU", 1)))
+            actor = self._ray.remote(num_cpus=1)(_RayWorker)
+            self._actors = [actor.remote(*self._init) for _ in range(n)]
+        elif self.workers:
+            self._ex = cf.ProcessPoolExecutor(self.workers, mp_context=multiprocessing.get_context("spawn"),
+                                              initializer=_init_worker, initargs=self._init)
+        else:
+            _init_worker(*self._init)
+        return self
+
+    def __exit__(self, *exc) -> None:
+        if self._ex is not None:
+            self._ex.shutdown(wait=True, cancel_futures=True)
+        for a in self._actors:
+            self._ray.kill(a)
+        if self._started_ray:
+            self._ray.shutdown()
+
+    def run(self, tasks, desc: str = "tasks", unit: str = "task", progress: bool = True) -> list:
+        """Run ``tasks`` (a sequence of :data:`Task`); their results in the order of ``tasks``, a progress bar
+        over completed tasks. Raises RuntimeError naming the task that failed (the batch's others cancelled)."""
+        tasks = [(fn, dict(kw)) for fn, kw in tasks]
+        out: list = [None] * len(tasks)
+        with tqdm(total=len(tasks), desc=desc, unit=unit, disable=not progress, smoothing=0.0) as bar:
+            for i, result, note in self._completed(tasks):
+                _warn(note)
+                out[i] = result
+                bar.update()
+        return out
+
+    def _completed(self, tasks):
+        """(index, result, note) of every task as it completes."""
+        if self._actors:
+            yield from self._ray_completed(tasks)
+        elif self._ex is not None:
+            futures = {self._ex.submit(_call, i, fn, kw): i for i, (fn, kw) in enumerate(tasks)}
+            for fut in cf.as_completed(futures):
+                try:
+                    yield fut.result()
+                except Exception as err:
+                    for f in futures:
+                        f.cancel()
+                    raise _failed(futures[fut], tasks[futures[fut]], err) from err
+        else:
+            for i, task in enumerate(tasks):
+                try:
+                    yield _call(i, *task)
+                except Exception as err:
+                    raise _failed(i, task, err) from err
+
+    def _ray_completed(self, tasks):
+        """Each actor takes the next task when it finishes one (its warm-up stays in its process)."""
+        ray, pending, queue = self._ray, {}, list(range(len(tasks)))[::-1]
+        for a in self._actors[:len(tasks)]:
+            i = queue.pop()
+            pending[a.call.remote(i, *tasks[i])] = (i, a)
+        while pending:
+            done, _ = ray.wait(list(pending), num_returns=1)
+            i, a = pending.pop(done[0])
+            try:
+                yield ray.get(done[0])
+            except Exception as err:
+                for ref in pending:
+                    ray.cancel(ref)
+                raise _failed(i, tasks[i], err) from err
+            if queue:
+                j = queue.pop()
+                pending[a.call.remote(j, *tasks[j])] = (j, a)
+
+
+def run_tasks(tasks, *, workers: int = 0, ray: str | None = None, warmup=(), threads: int | None = None,
+              desc: str = "tasks", unit: str = "task", progress: bool = True) -> list:
+    """Run ``tasks`` (a sequence of :data:`Task`) on a :class:`Pool` of its own (arguments as there; local
+    processes: at most one per task) and return their results in the order of ``tasks``."""
+    tasks = list(tasks)
+    if not tasks:
+        return []
+    if ray is None and workers > len(tasks):
+        threads = threads or max(1, (os.cpu_count() or 1) // workers)
+        workers = len(tasks)
+    with Pool(workers, ray, warmup, threads) as pool:
+        return pool.run(tasks, desc, unit, progress)
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -281,8 +301,8 @@ def check_arguments(args, prog: str) -> None:
 
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.parallel", description=__doc__.split("\n\n")[0])
-    p.add_argument("action", choices=["warm"], help="warm: compile (or load from the cache) every environment's "
-                   "kernels in this process and print the time; run once per node after installing")
+    p.add_argument("action", choices=["warm"], help="warm: compile (or load from the cache) the kernels of every "
+                   "gusts-v1 environment in this process and print the time; run once per node after installing")
     p.parse_args(argv)
     from laddermill_gym.studies.gust_bench import warmup_tasks
     from laddermill_gym.studies.gust_suite import load_suite

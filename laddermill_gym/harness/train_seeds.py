@@ -1,0 +1,98 @@
+"""Train one config with several seeds: serially, in local worker processes or on a Ray cluster.
+
+    python -m laddermill_gym.harness.train_seeds configs/agents/ppo_tethered_wing.yaml --seeds 0 1 2
+        [--out-root runs] [--timesteps N] [--minutes M] [--n-envs N] [--workers N] [--ray auto|local|ADDRESS]
+
+Every seed is one task of :mod:`laddermill_gym.studies.parallel` that calls
+:func:`laddermill_gym.harness.train.train` into ``<out-root>/<config name>_seed<seed>`` (the folder
+``laddermill train --seed S`` uses); each worker first builds the config's training and evaluation envs once
+(the numba warm-up). A run with a step budget (no ``--minutes``, or a limit it does not reach) gives the same
+run folder contents whichever way it ran; a time limit ends training at a step count that depends on the
+machine's speed. On a cluster the run folders are written on the node that trained the seed: give
+``--out-root`` a path on a file system every node shares. Prints one line per seed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+from pathlib import Path
+
+from laddermill_gym.studies.parallel import Pool, add_arguments, check_arguments
+
+__all__ = ["train_task", "warm_envs", "train_seeds", "main"]
+
+
+def _config(config: str, overrides: dict):
+    from laddermill_gym.control.rl_config import load_rl_config
+
+    return dataclasses.replace(load_rl_config(config), **overrides)
+
+
+def warm_envs(config: str) -> None:
+    """The per-worker warm-up: build the config's training and evaluation envs and step each once (compiles
+    or loads their kernels)."""
+    import numpy as np
+
+    from laddermill_gym.harness.train import evaluation_env, training_env
+
+    cfg = _config(config, {"n_envs": 1})
+    venv = training_env(cfg)
+    venv.reset()
+    venv.step(np.zeros((1, *venv.action_space.shape), dtype=np.float32))
+    venv.close()
+    env = evaluation_env(cfg)
+    env.reset(seed=0)
+    env.step(np.zeros(env.action_space.shape, dtype=np.float32))
+    env.close()
+
+
+def train_task(config: str, seed: int, out: str, overrides: dict) -> dict:
+    """A picklable task: train ``config`` with ``seed`` and ``overrides`` (RLConfig fields) into ``out``;
+    returns :func:`~laddermill_gym.harness.train.train`'s summary with the seed and folder."""
+    from laddermill_gym.harness.train import train
+
+    summary = train(_config(config, dict(overrides, seed=int(seed))), Path(out))
+    return dict(summary, seed=int(seed), out=str(out))
+
+
+def train_seeds(config: str, seeds, out_root: Path, overrides: dict, workers: int = 0,
+                ray: str | None = None) -> list[dict]:
+    """Train ``config`` once per seed (tasks in seed order); the summaries in that order."""
+    stem = Path(config).stem
+    if Path(config).exists():  # Ray workers do not share the caller's working directory
+        config = str(Path(config).resolve())
+    tasks = [(train_task, dict(config=config, seed=int(s), out=str((out_root / f"{stem}_seed{s}").resolve()),
+                               overrides=dict(overrides))) for s in seeds]
+    with Pool(min(workers, len(tasks)), ray, warmup=[(warm_envs, {"config": config})]) as pool:
+        return pool.run(tasks, desc=f"train {stem}", unit="seed")
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(prog="python -m laddermill_gym.harness.train_seeds",
+                                description=__doc__.split("\n\n")[0])
+    p.add_argument("config", help="configs/agents/ppo_*.yaml or sac_*.yaml")
+    p.add_argument("--seeds", type=int, nargs="+", required=True, help="training seeds (one run each)")
+    p.add_argument("--out-root", type=Path, default=Path("runs"), help="parent of the run folders (default runs)")
+    p.add_argument("--timesteps", type=int, help="override total_timesteps")
+    p.add_argument("--minutes", type=float, help="override time_limit_minutes")
+    p.add_argument("--n-envs", type=int, help="override n_envs")
+    add_arguments(p)
+    args = p.parse_args(argv)
+    check_arguments(args, p.prog)
+    if len(set(args.seeds)) != len(args.seeds) or min(args.seeds) < 0:
+        p.error(f"--seeds {args.seeds}: must be distinct whole numbers >= 0")
+    over = {k: v for k, v in (("total_timesteps", args.timesteps), ("time_limit_minutes", args.minutes),
+                              ("n_envs", args.n_envs)) if v is not None}
+    for k, v in over.items():
+        if v <= 0:
+            p.error(f"--{k.replace('_', '-')} = {v}: must be > 0")
+    _config(args.config, over)  # a bad config fails here, before any worker starts
+    for s in train_seeds(args.config, args.seeds, args.out_root, over, args.workers, args.ray):
+        print(f"seed {s['seed']}: {s['steps']} steps in {s['minutes']} min; evaluation return best "
+              f"{s['best_eval_return']:.2f}, last {s['last_eval_return']:.2f}; run folder {s['out']}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
