@@ -9,6 +9,7 @@ from __future__ import annotations
 import csv
 import math
 import os
+import sys
 
 import pytest
 
@@ -122,6 +123,20 @@ def test_bad_parallel_options_exit_2_naming_the_option(argv, text, capsys):
     with pytest.raises(SystemExit) as err:
         gb.main(["--suite", "gusts-v1", *argv])
     assert err.value.code == 2 and text in capsys.readouterr().err
+
+
+def test_ray_without_ray_installed_and_bad_training_options_exit_2(monkeypatch, capsys):
+    from laddermill_gym.harness import train_seeds
+
+    monkeypatch.setitem(sys.modules, "ray", None)  # import ray now raises ImportError
+    with pytest.raises(SystemExit) as err:
+        gb.main(["--suite", "gusts-v1", "--ray", "auto"])
+    assert err.value.code == 2 and 'pip install "laddermill_gym[ray]"' in capsys.readouterr().err
+    for argv, text in ((["--seeds", "0", "0"], "--seeds [0, 0]: must be distinct"),
+                       (["--seeds", "0", "--timesteps", "0"], "--timesteps = 0: must be > 0")):
+        with pytest.raises(SystemExit) as err:
+            train_seeds.main(["configs/agents/ppo_tethered_wing.yaml", *argv])
+        assert err.value.code == 2 and text in capsys.readouterr().err
 
 
 @pytest.mark.slow

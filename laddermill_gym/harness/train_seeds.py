@@ -1,6 +1,7 @@
 """Train one config with several seeds: serially, in local worker processes or on a Ray cluster.
 
-    python -m laddermill_gym.harness.train_seeds configs/agents/ppo_tethered_wing.yaml --seeds 0 1 2
+    laddermill train-seeds configs/agents/ppo_tethered_wing.yaml --seeds 0 1 2   (or python -m
+        laddermill_gym.harness.train_seeds)
         [--out-root runs] [--timesteps N] [--minutes M] [--n-envs N] [--workers N] [--ray auto|local|ADDRESS]
 
 Every seed is one task of :mod:`laddermill_gym.studies.parallel` that calls
@@ -16,11 +17,14 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
+import sys
 from pathlib import Path
 
 from laddermill_gym.studies.parallel import Pool, add_arguments, check_arguments
 
-__all__ = ["train_task", "warm_envs", "train_seeds", "main"]
+__all__ = ["train_task", "warm_envs", "train_seeds", "add_parser", "main"]
+
+PROG = "laddermill train-seeds"
 
 
 def _config(config: str, overrides: dict):
@@ -68,9 +72,7 @@ def train_seeds(config: str, seeds, out_root: Path, overrides: dict, workers: in
         return pool.run(tasks, desc=f"train {stem}", unit="seed")
 
 
-def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="python -m laddermill_gym.harness.train_seeds",
-                                description=__doc__.split("\n\n")[0])
+def _arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("config", help="configs/agents/ppo_*.yaml or sac_*.yaml")
     p.add_argument("--seeds", type=int, nargs="+", required=True, help="training seeds (one run each)")
     p.add_argument("--out-root", type=Path, default=Path("runs"), help="parent of the run folders (default runs)")
@@ -78,20 +80,43 @@ def main(argv=None) -> int:
     p.add_argument("--minutes", type=float, help="override time_limit_minutes")
     p.add_argument("--n-envs", type=int, help="override n_envs")
     add_arguments(p)
-    args = p.parse_args(argv)
-    check_arguments(args, p.prog)
+
+
+def _fail(prog: str, msg: str) -> None:
+    sys.stderr.write(f"{prog}: error: {msg}\n")
+    raise SystemExit(2)
+
+
+def _run(args, prog: str = PROG) -> int:
+    check_arguments(args, prog)
     if len(set(args.seeds)) != len(args.seeds) or min(args.seeds) < 0:
-        p.error(f"--seeds {args.seeds}: must be distinct whole numbers >= 0")
-    over = {k: v for k, v in (("total_timesteps", args.timesteps), ("time_limit_minutes", args.minutes),
-                              ("n_envs", args.n_envs)) if v is not None}
-    for k, v in over.items():
-        if v <= 0:
-            p.error(f"--{k.replace('_', '-')} = {v}: must be > 0")
+        _fail(prog, f"--seeds {args.seeds}: must be distinct whole numbers >= 0")
+    given = (("timesteps", "total_timesteps", args.timesteps), ("minutes", "time_limit_minutes", args.minutes),
+             ("n-envs", "n_envs", args.n_envs))
+    for option, _, v in given:
+        if v is not None and v <= 0:
+            _fail(prog, f"--{option} = {v}: must be > 0")
+    over = {field: v for _, field, v in given if v is not None}
     _config(args.config, over)  # a bad config fails here, before any worker starts
     for s in train_seeds(args.config, args.seeds, args.out_root, over, args.workers, args.ray):
         print(f"seed {s['seed']}: {s['steps']} steps in {s['minutes']} min; evaluation return best "
               f"{s['best_eval_return']:.2f}, last {s['last_eval_return']:.2f}; run folder {s['out']}")
     return 0
+
+
+def add_parser(sub) -> argparse.ArgumentParser:
+    """The ``train-seeds`` subcommand on an argparse subparsers object (sets ``func``)."""
+    p = sub.add_parser("train-seeds", help="train one config with several seeds (locally parallel or on Ray)",
+                       description=__doc__.split("\n\n")[0])
+    _arguments(p)
+    p.set_defaults(func=_run)
+    return p
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n\n")[0])
+    _arguments(p)
+    return _run(p.parse_args(argv))
 
 
 if __name__ == "__main__":

@@ -2,6 +2,7 @@
 
     laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 --controllers open_loop lqr runs/ppo_x
     python -m laddermill_gym.studies.gust_bench --suite gusts-v1 [--env ID ...] [--scenarios NAME ...] [--out DIR]
+        [--workers N] [--ray auto|local|ADDRESS]
 
 A suite (``configs/benchmarks/<name>.yaml``, read by :mod:`laddermill_gym.studies.gust_suite`) names, per
 environment, scenarios of a disturbance list, a duration and seeds; every controller meets the same episodes
@@ -9,7 +10,9 @@ environment, scenarios of a disturbance list, a duration and seeds; every contro
 and RMS lateral excursion [m], energy produced [J] and its ratio to the same controller's undisturbed run (same
 seed and duration, no disturbance), peak tension over its limit, settling time [s] and control effort (RMS of
 the action's deviation from the trim action). Writes ``gust_bench.csv``, ``gust_bench.json`` and a scorecard
-figure per environment into ``--out`` (default ``results/gust_bench/<suite>``).
+figure per environment into ``--out`` (default ``results/gust_bench/<suite>``). The episode sets run serially,
+on ``--workers`` local processes or on Ray (:mod:`laddermill_gym.studies.parallel`, docs/scale_out.md), with
+the same rows.
 """
 
 from __future__ import annotations
