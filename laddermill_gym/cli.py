@@ -211,6 +211,12 @@ FORWARDED: dict[str, tuple[str, str]] = {
             "modes; optionally fly it against open loop"),
     "site": ("laddermill_gym.quasisteady.cli", "pumping kite: quasi-steady power and site optimisation on wind data "
              "(Lansdorp et al. 2008, Tables 1-2, Figs. 10-20, a turbine beside it)"),
+    "work-precision": ("laddermill_gym.studies.work_precision", "error against run time of the integrators on a "
+                       "scene (RK4 over dt, DP5(4) over tolerances; smooth and non-smooth forcing)"),
+    "stress": ("laddermill_gym.studies.stress", "numerical stress suite of a scene: stable steps, hour-long runs, "
+               "slack-taut, wind extremes, bang-bang controls, injected NaN, env episodes"),
+    "pumping-cycle": ("laddermill_gym.studies.pumping_cycle", "pumping kite: the scripted cycle with the lateral "
+                      "LQR against the quasi-steady prediction (Lansdorp, Schmehl)"),
     "gust-bench": ("laddermill_gym.studies.gust_bench", "run controllers on a versioned gust benchmark suite "
                    "(configs/benchmarks/); CSV, JSON and a scorecard"),
 }

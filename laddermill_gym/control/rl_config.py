@@ -29,20 +29,23 @@ CARRIED_KWARGS: dict[str, tuple[str, ...]] = {
     "craft": ("craft", "collective", "control_dt", "physics_dt"),
     "mill": ("scene", "scene_options", "control_dt", "groups", "n_bands", "surfaces", "generator_torque", "drum",
              "cable_speed_command", "speed", "operating_point", "settle"),
+    "pumping": ("config", "scene_options", "control_dt"),
 }
 
 
 def env_family(env_id: str) -> str:
-    """'craft' (Rotorcraft-v0), 'mill' (the moving-cable LadderMill-v0) or 'wing' (the fixed-cable wing scenes)."""
+    """'craft' (Rotorcraft-v0), 'mill' (the moving-cable LadderMill-v0), 'pumping' (PumpingKite-v0) or 'wing' (the
+    fixed-cable wing scenes)."""
     if "craft" in ENV_IDS[env_id]:
         return "craft"
-    return "mill" if task_class(env_id).__name__ == "MillTask" else "wing"
+    name = task_class(env_id).__name__
+    return {"MillTask": "mill", "PumpingTask": "pumping"}.get(name, "wing")
 
 
 def env_kwargs_known(env_id: str) -> tuple[str, ...]:
     """The ``env_kwargs`` keys a config for the registered environment ``env_id`` may set."""
     family = env_family(env_id)
-    if family == "mill":
+    if family in ("mill", "pumping"):
         return tuple(a for a in env_arguments(env_id) if a != "disturbances")
     return CRAFT_ENV_KWARGS if family == "craft" else ENV_KWARGS
 

@@ -222,7 +222,7 @@ def _cmd(args) -> int:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.work_precision")
+    parser = argparse.ArgumentParser(prog="laddermill")
     sub = parser.add_subparsers(dest="cmd", required=True)
     add_parser(sub)
     args = parser.parse_args(["work-precision", *(sys.argv[1:] if argv is None else argv)])
