@@ -67,3 +67,11 @@ def test_disturbance_and_parameter_equal_a_packed_wind_field(trimmed):
     assert not np.allclose(plant.dynamics(0.0, plant.z0, plant.u0), f_ref)
     with pytest.raises(ValueError, match="unknown \\['v0'\\]"):
         plant.dynamics(0.0, plant.z0, plant.u0, params={"v0": 10.0})
+
+
+def test_full_state_rhs_refuses_parameters(trimmed):
+    sc, x, u = trimmed
+    sim = sc.simulator(x, u)
+    sim.rhs(0.0, x, u, {})  # python-control passes an empty mapping
+    with pytest.raises(ValueError, match=r"params \['v0'\] are not taken"):
+        sim.rhs(0.0, x, u, {"v0": 10.0})

@@ -266,9 +266,14 @@ class Simulator(StationViews):
     def rhs(self, t: float, x: np.ndarray, u: np.ndarray | None = None, params: dict | None = None) -> np.ndarray:
         """State derivative dx/dt = f(t, x, u) with python-control's ``updfcn`` signature.
 
-        ``control.nlsys(sim.rhs, states=sim.n_state, inputs=sim.n_controls)`` and
-        ``control.linearize`` work on it directly. ``params`` is accepted and ignored.
+        ``control.nlsys(sim.rhs, states=sim.n_state, inputs=sim.n_controls)`` works on it, but for control design
+        use :func:`laddermill_gym.control.plant.plant_system` (minimal coordinates: the full state's quaternions
+        give a pole at 0 per wing). ``params`` must be empty: the full-state right-hand side takes no parameters
+        (ValueError otherwise; the plant takes ``wind_speed_factor``).
         """
+        if params:
+            raise ValueError(f"rhs: params {sorted(params)} are not taken by the full-state right-hand side; "
+                             "laddermill_gym.control.plant.plant_system takes 'wind_speed_factor'")
         x = np.ascontiguousarray(x, dtype=np.float64).reshape(-1)
         u = self.controls if u is None else np.ascontiguousarray(u, dtype=np.float64).reshape(-1)
         if x.shape != (self.n_state,) or u.shape != (self.n_controls,):
