@@ -9,14 +9,15 @@ running returns the results in the order of the tasks:
   ``spawn`` (a fresh interpreter, never a fork of a process whose numba threads are running);
 * Ray (``ray="local"|"auto"|ADDRESS``): N Ray actors (one CPU each; N = ``workers`` or the cluster's CPUs).
 
-Warm-up. A fresh process pays numba's compile of every kernel a task reaches on its first call (about 50 s of
-wall time for one environment on a loaded 2-core machine with an empty cache), or a load from the on-disk cache
-(``__pycache__`` or ``NUMBA_CACHE_DIR``, about 0.3 s). Each worker therefore runs the caller's ``warmup``
-tasks once, when it starts, before its first task (a short episode of every environment and controller the
-tasks use): the compile or cache load happens once per worker, never per task, and the worker's numba thread
-count is set to its share of the cores. A worker with another laddermill_gym, numba or numpy version than the
-caller refuses to start; one whose package source differs (a digest of its ``.py`` files: an edited file) is
-reported as a RuntimeWarning. Measured figures and the cluster set-up: ``laddermill_gym/docs/scale_out.md``.
+Warm-up. A fresh process pays numba's compile of every kernel a task reaches on its first call (94 s of wall
+time for one environment on a loaded 2-core machine with an empty cache), or a load from the on-disk cache
+(``__pycache__`` or ``NUMBA_CACHE_DIR``, 0.43 s; measured by ``python -m laddermill_gym.studies.parallel_cost``).
+Each worker therefore runs the caller's ``warmup`` tasks once, when it starts, before its first task (a short
+episode of every environment and controller the tasks use): the compile or cache load happens once per worker,
+never per task, and the worker's numba thread count is set to its share of the cores. A worker with another
+laddermill_gym, numba or numpy version than the caller refuses to start; one whose package source differs (a
+digest of its ``.py`` files: an edited file) is reported as a RuntimeWarning.
+Measured figures and the cluster set-up: ``laddermill_gym/docs/scale_out.md``.
 
     python -m laddermill_gym.studies.parallel warm   # compile or load every gusts-v1 env's kernels; prints the time
 """
@@ -40,7 +41,7 @@ from typing import Any
 from tqdm import tqdm
 
 __all__ = ["Task", "Pool", "run_tasks", "worker_report", "source_digest", "add_arguments", "check_arguments",
-           "RAY_HINT", "main"]
+           "RAY_HINT", "add_parser", "main"]
 
 #: One task: a module-level function and its keyword arguments (both picklable).
 Task = tuple[Callable[..., Any], dict]
@@ -299,11 +300,12 @@ def check_arguments(args, prog: str) -> None:
         raise SystemExit(2)
 
 
-def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.parallel", description=__doc__.split("\n\n")[0])
+def _warm_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("action", choices=["warm"], help="warm: compile (or load from the cache) the kernels of every "
                    "gusts-v1 environment in this process and print the time; run once per node after installing")
-    p.parse_args(argv)
+
+
+def _warm(args) -> int:
     from laddermill_gym.studies.gust_bench import warmup_tasks
     from laddermill_gym.studies.gust_suite import load_suite
 
@@ -312,6 +314,21 @@ def main(argv=None) -> int:
         fn(**kw)
     print(f"warm: {time.perf_counter() - t0:.1f} s; numba cache: {os.environ.get('NUMBA_CACHE_DIR') or '__pycache__'}")
     return 0
+
+
+def add_parser(sub) -> argparse.ArgumentParser:
+    """The ``workers`` subcommand (``laddermill workers warm``) on an argparse subparsers object."""
+    p = sub.add_parser("workers", help="prepare a node for --workers / --ray (fill numba's cache)",
+                       description=__doc__.split("\n\n")[0])
+    _warm_arguments(p)
+    p.set_defaults(func=_warm)
+    return p
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.parallel", description=__doc__.split("\n\n")[0])
+    _warm_arguments(p)
+    return _warm(p.parse_args(argv))
 
 
 if __name__ == "__main__":
