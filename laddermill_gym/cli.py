@@ -215,6 +215,10 @@ FORWARDED: dict[str, tuple[str, str]] = {
                        "scene (RK4 over dt, DP5(4) over tolerances; smooth and non-smooth forcing)"),
     "stress": ("laddermill_gym.studies.stress", "numerical stress suite of a scene: stable steps, hour-long runs, "
                "slack-taut, wind extremes, bang-bang controls, injected NaN, env episodes"),
+    "train-seeds": ("laddermill_gym.harness.train_seeds", "train one config with several seeds, serially, on "
+                    "local processes (--workers N) or on Ray (--ray)"),
+    "workers": ("laddermill_gym.studies.parallel", "laddermill workers warm: prepare a node for --workers / --ray "
+                "(fill numba's cache, compute the operating points once)"),
     "pumping-cycle": ("laddermill_gym.studies.pumping_cycle", "pumping kite: the scripted cycle with the lateral "
                       "LQR against the quasi-steady prediction (Lansdorp, Schmehl)"),
     "gust-bench": ("laddermill_gym.studies.gust_bench", "run controllers on a versioned gust benchmark suite "

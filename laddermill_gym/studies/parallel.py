@@ -326,7 +326,7 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.parallel", description=__doc__.split("\n\n")[0])
+    p = argparse.ArgumentParser(prog="laddermill workers", description=__doc__.split("\n\n")[0])
     _warm_arguments(p)
     return _warm(p.parse_args(argv))
 
