@@ -23,21 +23,21 @@ H_MIN_REL = 1e-12
 # for bit the same). A kernel that allocates must not carry the flag.
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"}, _nrt=False)
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def rhs(t, x, u, dx, M, W):
     """State derivative of the packed model M (its kind chooses the right-hand side at compile time).
     Returns 0, or 1 if the mass matrix is singular."""
     return model_rhs(M.kind, t, x, u, dx, M, W)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"}, _nrt=False)
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def normalise_and_check(x, M, limits):
     """Normalise the state after a step as the model kind needs (quaternions) and check it against
     ``limits`` (``LIM_SPEED`` [m/s], ``LIM_RATE`` [rad/s], ``LIM_GROUND`` [m]). Returns a status code."""
     return model_check(M.kind, x, M, limits)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"}, _nrt=False)
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def rk4_advance(t, x, u, dt, n, M, W, limits):
     """Advance x in place by n classic RK4 steps of size dt. Returns (status, steps done)."""
     k1, k2, k3, k4, xt, xp = W.k1, W.k2, W.k3, W.k4, W.xt, W.xp
@@ -84,7 +84,7 @@ E1, E3, E4, E5, E6, E7 = (71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253
 C2, C3, C4, C5 = 0.2, 0.3, 0.8, 8.0 / 9.0
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"}, _nrt=False)
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
     """Integrate x in place from t to t_end with adaptive Dormand-Prince 5(4) (local extrapolation).
 

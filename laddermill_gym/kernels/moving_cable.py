@@ -65,7 +65,7 @@ from laddermill_gym.kernels.rigid.kinds import LIMIT, OK, rigid2d_check, rigid3d
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
 from laddermill_gym.kernels.rigid.rhs3d import rhs3d
 
-_FM = {"contract", "reassoc", "nsz", "arcp"}
+_FM = {"contract", "nsz", "arcp"}
 
 #: Kind markers of the moving cable; ``station`` is the packed station (``model/station.py``).
 MovingCable3D = namedtuple("MovingCable3D", ["station"])

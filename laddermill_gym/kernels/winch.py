@@ -45,7 +45,7 @@ from laddermill_gym.kernels.rigid.kinds import LIMIT, OK, rigid2d_check, rigid3d
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
 from laddermill_gym.kernels.rigid.rhs3d import rhs3d
 
-_FM = {"contract", "reassoc", "nsz", "arcp"}
+_FM = {"contract", "nsz", "arcp"}
 
 #: Kind markers of the winch; ``station`` is the packed winch (``model/winch.py``, ``SP_*`` slots).
 Winch3D = namedtuple("Winch3D", ["station"])

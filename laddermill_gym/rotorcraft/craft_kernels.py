@@ -63,7 +63,7 @@ N_COUT = V_ROTOR + 2 * N_RO
 SPIN = (1.0, -1.0)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def _air_at(x, o, R, px, py, pz, t, M, s_mod, d_mod):
     """Air velocity relative to the body point (px, py, pz) [m] in body axes [m/s], and the density there."""
     vx, vy, vz = x[o + B3_VEL], x[o + B3_VEL + 1], x[o + B3_VEL + 2]
@@ -78,7 +78,7 @@ def _air_at(x, o, R, px, py, pz, t, M, s_mod, d_mod):
     return ax, ay, az, density(-zg, M.wf)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def _rotor(cp, rp, scratch, ax, ay, az, rho, theta0, out, k):
     """One rotor in the relative air velocity (ax, ay, az) [m/s, body axes] at its hub.
 
@@ -118,7 +118,7 @@ def _rotor(cp, rp, scratch, ax, ay, az, rho, theta0, out, k):
     return hforce * ux, hforce * uy, -thrust, torque
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def craft_loads(x, o, R, u, t, M, s_mod, d_mod, craft):
     """Aerodynamic and generator loads on the craft (body o of state x, rotation R) into craft[2][0:6], in the
     wind of the packed model M at time t [s] (speed factor s_mod, direction offset d_mod, its gust grid).
@@ -169,7 +169,7 @@ def craft_loads(x, o, R, u, t, M, s_mod, d_mod, craft):
 CraftVehicle = namedtuple("CraftVehicle", ["cp", "rp"])
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"}, inline="always")
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always")
 def craft_body_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
     """The body-loads plug-in (``kernels/dispatch.py``): the craft's loads on body k, body axes [N, N m];
     rotor outputs left in ``W.vout`` (layout of ``cout`` above)."""

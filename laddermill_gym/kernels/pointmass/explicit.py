@@ -32,7 +32,7 @@ from laddermill_gym.kernels.pointmass.layout import (
     PP_N,
 )
 
-_FM = {"contract", "reassoc", "nsz", "arcp"}
+_FM = {"contract", "nsz", "arcp"}
 
 
 #: Nodes (elements) per task of the parallel loops: each task calls a kernel compiled without numba's reference

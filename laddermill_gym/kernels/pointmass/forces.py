@@ -43,7 +43,7 @@ from laddermill_gym.kernels.pointmass.layout import (
     PU_YAW,
 )
 
-_FM = {"contract", "reassoc", "nsz", "arcp"}
+_FM = {"contract", "nsz", "arcp"}
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)

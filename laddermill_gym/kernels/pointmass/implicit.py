@@ -32,7 +32,7 @@ from laddermill_gym.kernels.pointmass.forces import (
 )
 from laddermill_gym.kernels.pointmass.layout import PM_OK, PP_DA, PP_EA, PP_L0, PP_N
 
-_FM = {"contract", "reassoc", "nsz", "arcp"}
+_FM = {"contract", "nsz", "arcp"}
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)

@@ -34,7 +34,7 @@ CNB, CNP, CNR, CNDA, CNDR = 18, 19, 20, 21, 22
 N_COLUMNS = 23
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def spline_eval(ac, k, alpha, a0, da, out):
     """Evaluate all table columns of wing type k at alpha [rad] into out (float64[N_COLUMNS])."""
     n_int = ac.shape[1]
@@ -52,7 +52,7 @@ def spline_eval(ac, k, alpha, a0, da, out):
         out[j] = ((ac[k, i, 0, j] * x + ac[k, i, 1, j]) * x + ac[k, i, 2, j]) * x + ac[k, i, 3, j]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def wing_aero(k, tf, ac, a0, da, rho, ua, va, wa, p, q, r, de, dr, dal, ad0, coef, out):
     """Aerodynamic force and moment about the CG, body axes, for one wing.
 
@@ -113,7 +113,7 @@ def wing_aero(k, tf, ac, a0, da, rho, ua, va, wa, p, q, r, de, dr, dal, ad0, coe
 N_LONGITUDINAL = 9  # CL, CD, Cm and their rate and elevator derivatives come first in the table
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def wing_aero_long(k, tf, ac, a0, da, rho, ua, wa, q, de, ad0, coef, out):
     """In-plane aerodynamics: only the longitudinal columns are evaluated.
 

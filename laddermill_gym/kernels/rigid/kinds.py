@@ -48,7 +48,7 @@ from laddermill_gym.kernels.rigid.aero import wing_aero
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
 from laddermill_gym.kernels.rigid.rhs3d import rhs3d
 
-_FM = {"contract", "reassoc", "nsz", "arcp"}
+_FM = {"contract", "nsz", "arcp"}
 #: Status codes of a post-step check (the integrators' codes, ``kernels/integrate.py``).
 OK, NONFINITE, LIMIT, GROUND = 0, 2, 3, 4
 

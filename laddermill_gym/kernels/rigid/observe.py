@@ -39,7 +39,7 @@ AUX_GROUND_END = 2       # tension of the element at the end ground point [N] (0
 AUX_MIN_ALTITUDE = 3     # lowest wing CG altitude -z [m]
 N_AUX = 4
 
-_FM = {"contract", "reassoc", "nsz", "arcp"}
+_FM = {"contract", "nsz", "arcp"}
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)

@@ -44,7 +44,7 @@ from laddermill_gym.kernels.dispatch import body_loads, elongation_rate, rest_le
 from laddermill_gym.kernels.small import lu_factor, lu_solve_cols, lu_solve_vec, quat_rotation
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def _end_kinematics(kind, idx, att, x, Rw, fixed, nw, T, ev):
     """Position ev[0:3], velocity ev[3:6] and velocity-quadratic acceleration ev[6:9] (global) of an
     element end, and its 3 x nb velocity transformation T (eq. 13). Returns the block size (0: fixed)."""
@@ -86,14 +86,14 @@ def _end_kinematics(kind, idx, att, x, Rw, fixed, nw, T, ev):
     return 0
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def _add_end_force(bv, blk, nb, T, fx, fy, fz):
     """Generalised force T^T F of a global force F at an element end."""
     for j in range(nb):
         bv[blk, j] += T[0, j] * fx + T[1, j] * fy + T[2, j] * fz
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def _add_mass(A, nb1, T1, nb2, T2, m):
     """A[:nb1, :nb2] += m T1^T T2."""
     for i in range(nb1):
@@ -101,7 +101,7 @@ def _add_mass(A, nb1, T1, nb2, T2, m):
             A[i, j] += m * (T1[0, i] * T2[0, j] + T1[1, i] * T2[1, j] + T1[2, i] * T2[2, j])
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def add_const_mass(D, blk, nb, ekd, e, end, m):
     """D[blk] += m T^T T, with T^T T of the element end precomputed (it does not depend on the rotation)."""
     for i in range(nb):
@@ -109,7 +109,7 @@ def add_const_mass(D, blk, nb, ekd, e, end, m):
             D[blk, i, j] += m * ekd[e, end, i, j]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def block_of(kind, idx, nw):
     if kind == END_WING:
         return idx
@@ -118,7 +118,7 @@ def block_of(kind, idx, nw):
     return -1
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def _eliminate6(D, U, Y, bv, c, p):
     """Fixed-size (6 x 6 child, 6 x 6 parent) elimination step without pivoting: the diagonal blocks of
     wings are symmetric positive definite plus a small apparent-mass term, and so are their Schur
@@ -158,7 +158,7 @@ def _eliminate6(D, U, Y, bv, c, p):
                 D[p, i, j] -= f * Y[c, k, j]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
     """Solve the block system in place (solution in bv) by elimination children-first.
 
@@ -213,7 +213,7 @@ def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
 # by comments) instead of passing a dozen values through calls; the golden-trajectory test pins its arithmetic.
 # _nrt=False: it allocates nothing, and without numba's reference counting the arrays of the packed model and
 # workspace handed to the inlined body-loads plug-in cost no atomic increments (chain right-hand side 118 -> 55 us).
-@njit(cache=True, error_model="numpy", fastmath={"contract", "reassoc", "nsz", "arcp"}, _nrt=False)
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def rhs3d(t, x, u, dx, M, W, sag, caero, vehicle):
     """State derivative dx of the 3D model at time t, state x, controls u (the vehicle's, per body).
 

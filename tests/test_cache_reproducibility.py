@@ -1,0 +1,45 @@
+"""Identical seeds give bit-identical rollouts whatever the state of numba's cache (issue 13 point 4): a process
+that compiles the kernels and one that loads them from the cache it left must step LadderChain-v0 the same to the
+last bit. They did not while the kernels allowed LLVM's reassociation ('reassoc' in fastmath): the observations
+parted from step 8 at the float32 ulp. Slow: the first process compiles every kernel (about a minute)."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+
+_SCRIPT = textwrap.dedent("""
+    import sys
+    import gymnasium as gym
+    import numpy as np
+    import laddermill_gym
+    env = gym.make("laddermill_gym/LadderChain-v0", episode_time=2.0)
+    obs, _ = env.reset(seed=0)
+    rng = np.random.default_rng(1)
+    out = [obs]
+    for _ in range(40):
+        obs, _, term, trunc, _ = env.step(rng.uniform(-0.2, 0.2, env.action_space.shape).astype(np.float32))
+        out.append(obs)
+        if term or trunc:
+            break
+    np.save(sys.argv[1], np.array(out))
+""")
+
+
+@pytest.mark.slow
+def test_compiled_and_cached_kernels_give_the_same_bits(tmp_path):
+    script = tmp_path / "roll.py"
+    script.write_text(_SCRIPT)
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "cache"), "PYTHONDONTWRITEBYTECODE": "1"}
+    for name in ("compiled", "cached"):  # the first fills the empty cache, the second loads from it
+        proc = subprocess.run([sys.executable, str(script), str(tmp_path / f"{name}.npy")], env=env,
+                              capture_output=True, text=True, timeout=900)
+        assert proc.returncode == 0, proc.stderr[-4000:]
+    a, b = np.load(tmp_path / "compiled.npy"), np.load(tmp_path / "cached.npy")
+    assert a.shape == b.shape and len(a) > 20
+    np.testing.assert_array_equal(a, b)
