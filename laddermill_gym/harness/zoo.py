@@ -23,6 +23,7 @@ from __future__ import annotations
 import argparse
 import runpy
 import sys
+import warnings
 from pathlib import Path
 
 from laddermill_gym.model.configio import CONFIG_DIR
@@ -94,7 +95,10 @@ def run_script(script: str, args: list[str], save: Path | None = None) -> None:
     argv = sys.argv
     sys.argv = [SCRIPTS[script], *script_arguments(script, args)]
     try:
-        runpy.run_module(SCRIPTS[script], run_name="__main__", alter_sys=True)
+        with warnings.catch_warnings():  # rl_zoo3.plots imports its scripts in __init__; runpy warns about it
+            warnings.filterwarnings("ignore", message=".*found in sys.modules after import of package",
+                                    category=RuntimeWarning)
+            runpy.run_module(SCRIPTS[script], run_name="__main__", alter_sys=True)
     finally:
         sys.argv = argv
 

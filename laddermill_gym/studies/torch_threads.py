@@ -4,8 +4,9 @@
         [--rollouts 2] [--repeats 5] [--json out.json]
 
 Builds the model of a training config exactly as ``laddermill train`` does (its batched training env,
-VecNormalize, hyperparameters and network), lets it learn once to compile the kernels, then times
-``model.learn`` over ``--rollouts`` rollouts (PPO: n_envs x n_steps env steps each; SAC: n_envs x 1000) for each
+VecNormalize, hyperparameters and network), lets it learn once to compile the kernels (and, for SAC, past
+``learning_starts``), then times
+``model.learn`` over ``--rollouts`` rollouts (PPO: n_envs x n_steps env steps each; SAC: n_envs x 256) for each
 thread count in turn, ``--repeats`` times, interleaved so that the machine's load affects every count alike.
 Prints the median wall time per 1000 env steps and its ratio to one thread. The default thread counts are 1 and
 torch's own default on this machine (one per core).
@@ -29,7 +30,8 @@ DEFAULT_CONFIG = CONFIG_DIR / "agents" / "ppo_tethered_wing.yaml"
 
 
 def build_model(config: Path):
-    """The SB3 model and its VecEnv of ``laddermill train`` for ``config`` (no callbacks, no logging)."""
+    """The SB3 model of ``laddermill train`` for ``config`` (no callbacks, no logging), the env steps of one
+    rollout and of the warm-up (compilation; SAC's ``learning_starts``)."""
     import stable_baselines3 as sb3
     from stable_baselines3.common.vec_env import VecMonitor, VecNormalize
 
@@ -42,8 +44,9 @@ def build_model(config: Path):
     algo = getattr(sb3, cfg.algorithm)
     model = algo("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=cfg.policy_kwargs or None, verbose=0,
                  device="cpu", **cfg.hyperparameters)
-    per_rollout = cfg.n_envs * (cfg.hyperparameters.get("n_steps", 2048) if cfg.algorithm == "PPO" else 1000)
-    return model, per_rollout
+    per_rollout = cfg.n_envs * (cfg.hyperparameters.get("n_steps", 2048) if cfg.algorithm == "PPO" else 256)
+    warm_up = per_rollout + int(cfg.hyperparameters.get("learning_starts", 0))  # SAC: past its random start
+    return model, per_rollout, warm_up
 
 
 def measure(config: Path, threads: list[int], rollouts: int, repeats: int) -> dict:
@@ -51,9 +54,9 @@ def measure(config: Path, threads: list[int], rollouts: int, repeats: int) -> di
     ``rollouts`` rollouts each): {"steps": n, "seconds_per_1000": {threads: [..]}, "median": {...}}."""
     import torch
 
-    model, per_rollout = build_model(config)
+    model, per_rollout, warm_up = build_model(config)
     steps = rollouts * per_rollout
-    model.learn(total_timesteps=per_rollout)  # compile the kernels, allocate the buffers
+    model.learn(total_timesteps=warm_up)  # compile the kernels, allocate the buffers, fill SAC's first samples
     times: dict[int, list[float]] = {t: [] for t in threads}
     with tqdm(total=repeats * len(threads), unit="run", desc="torch threads") as bar:
         for _ in range(repeats):
