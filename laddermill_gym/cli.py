@@ -207,6 +207,8 @@ FORWARDED: dict[str, tuple[str, str]] = {
     "train": ("laddermill_gym.harness.train", "train a Stable-Baselines3 agent from configs/agents/*.yaml"),
     "evaluate": ("laddermill_gym.harness.evaluate", "evaluate controllers (open_loop, lqr, trained runs) on "
                  "seeded episodes; tables and plots"),
+    "zoo": ("laddermill_gym.harness.zoo", "run an rl-zoo3 script (train, enjoy, record_video, plot_train, ...) with "
+            "the laddermill_gym environments registered"),
     "lqr": ("laddermill_gym.harness.lqr_report", "design an LQR from configs/agents/lqr_*.yaml and report its "
             "modes; optionally fly it against open loop"),
     "site": ("laddermill_gym.quasisteady.cli", "pumping kite: quasi-steady power and site optimisation on wind data "
