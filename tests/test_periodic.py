@@ -44,3 +44,25 @@ def test_default_mill_reaches_its_periodic_motion():
     # the smallest tension is near the top of the loop (Meijaard et al. 1999, Fig. 7)
     top = int(np.argmax(-r.shape_m[:, 2]))
     assert abs(int(np.argmin(r.tension_mean_N)) - top) <= 3
+
+
+def test_a_breakdown_during_the_search_is_reported_not_raised():
+    """A mill that diverges while it is searched (here: the step that fails is simulated after 300 good steps of
+    the search) returns a result that says so, with the report and the last period's power, instead of raising."""
+    from laddermill_gym import SimulationError
+
+    sim = load_scene("laddermill", dimension=2, n_wings=11).simulator()
+    real_step, calls = sim.step, {"n": 0}
+
+    def step(*a, **kw):
+        if sim.t > 100.0:  # after the speed ramp and the first transfer: inside the search
+            calls["n"] += 1
+            if calls["n"] > 300:
+                raise SimulationError(f"integration failed at t = {sim.t:.6g} s (injected)")
+        return real_step(*a, **kw)
+
+    sim.step = step
+    res = run_to_periodic(sim, max_time=2000.0, progress=False)
+    assert not res.converged and res.breakdown.endswith("(injected)")
+    assert "broke down" in res.summary()
+    assert np.isfinite(res.mean_power_W) and res.tension_mean_N.shape == (sim.assembly.elements.count,)

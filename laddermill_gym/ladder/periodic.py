@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from laddermill_gym.sim.simulator import Simulator
+from laddermill_gym.sim.simulator import SimulationError, Simulator
 
 
 @dataclass
@@ -34,6 +34,8 @@ class PeriodicResult:
     tension_mean_N, tension_min_N, tension_max_N : per element over the last period (n_elements,) [N].
     shape_m : wing CG positions at the last transfer (n_wings, 3) [m], slot order (slot 0 on the veered side).
     history : per period: time [s], mean power [W], shape change [-], power change [-].
+    breakdown : the simulator's report when the integration broke down during the search (the motion is then not
+    periodic; power and tensions are those of the last, possibly partial, period), else None.
     """
 
     converged: bool
@@ -46,9 +48,11 @@ class PeriodicResult:
     tension_max_N: np.ndarray
     shape_m: np.ndarray
     history: list[dict] = field(default_factory=list)
+    breakdown: str | None = None
 
     def summary(self) -> str:
-        state = "converged" if self.converged else "NOT converged"
+        state = "converged" if self.converged else ("NOT converged (broke down: " + self.breakdown + ")"
+                                                     if self.breakdown else "NOT converged")
         last = self.history[-1] if self.history else {}
         return (f"periodic motion {state} at t = {self.t_s:.1f} s (period {self.period_s:.2f} s): mean generator "
                 f"power {self.mean_power_W / 1e3:.1f} kW; last shape change {last.get('shape_change', np.nan):.2e} "
@@ -91,19 +95,30 @@ def run_to_periodic(sim: Simulator, shape_tol: float = 1e-2, power_tol: float = 
     shape, energy, t_prev = sim.wing_positions(), sim.generator_energy(), sim.t
     history: list[dict] = []
     hits, p_prev = 0, np.nan
-    ten = None
+    ten, breakdown = None, None
     try:
         while sim.t - t_start < max_time:
             n0 = sim.transfers()
             tens = []
             for _ in range(per_steps):
-                sim.step()
+                try:
+                    sim.step()
+                except SimulationError as err:  # a motion that diverges is reported, not periodic
+                    breakdown = str(err)
+                    break
                 tens.append(sim.tensions())
                 if sim.transfers() != n0:
                     break
             else:
                 raise RuntimeError(f"t = {sim.t:.3f} s: no transfer within two periods ({2 * period:.1f} s)")
-            ten = np.array(tens)
+            if tens or ten is None:  # (a breakdown in the first step of a period keeps the last period's tensions)
+                ten = np.array(tens or [sim.tensions()])
+            if breakdown is not None:
+                if sim.t > t_prev:
+                    p = (sim.generator_energy() - energy) / (sim.t - t_prev)
+                    history.append({"t_s": sim.t, "mean_power_W": p, "shape_change": np.nan, "power_change": np.nan})
+                shape = sim.wing_positions()
+                break
             new_shape, e = sim.wing_positions(), sim.generator_energy()
             p = (e - energy) / (sim.t - t_prev)
             d_shape = float(np.max(np.linalg.norm(new_shape - shape, axis=1)) / st.piece_length)
@@ -118,11 +133,11 @@ def run_to_periodic(sim: Simulator, shape_tol: float = 1e-2, power_tol: float = 
     finally:
         if bar is not None:
             bar.close()
-    p = history[-1]["mean_power_W"]
-    return PeriodicResult(converged=hits >= confirm, period_s=period, t_s=sim.t, mean_power_W=p,
+    p = history[-1]["mean_power_W"] if history else float("nan")
+    return PeriodicResult(converged=breakdown is None and hits >= confirm, period_s=period, t_s=sim.t, mean_power_W=p,
                           mean_electrical_power_W=st.efficiency * p, tension_mean_N=ten.mean(axis=0),
                           tension_min_N=ten.min(axis=0), tension_max_N=ten.max(axis=0), shape_m=shape,
-                          history=history)
+                          history=history, breakdown=breakdown)
 
 
 def periodic_start(scene, progress: bool = True, shape_tol: float = 1e-3, power_tol: float = 1e-3,

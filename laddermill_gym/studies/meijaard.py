@@ -123,7 +123,8 @@ def case_row(label: str, dim: int, v_c: float, res: PeriodicResult, ground, widt
             "late_periods": late.size, "late_power_mean_kW": late.mean(), "late_power_min_kW": late.min(),
             "late_power_max_kW": late.max(),
             "T_first_kN": tm[0] / 1e3, "T_last_kN": tm[-1] / 1e3, "T_min_kN": tm[k] / 1e3, "T_min_element": k,
-            "loop_width_m": loop_width(res.shape_m, ground), "width_min_m": widths.min(), "width_max_m": widths.max()}
+            "loop_width_m": loop_width(res.shape_m, ground), "width_min_m": widths.min(), "width_max_m": widths.max(),
+            "breakdown": res.breakdown or ""}
 
 
 def periodic_case(v_c: float, dim: int, cfg: Config, sim: Simulator | None = None, max_time: float | None = None):
@@ -132,8 +133,9 @@ def periodic_case(v_c: float, dim: int, cfg: Config, sim: Simulator | None = Non
     sim = sim or mill(dim, v_c, cfg)
     res = run_to_periodic(sim, max_time=cfg.max_time if max_time is None else max_time, progress=cfg.progress)
     state, t, ground = sim.state.copy(), sim.t, _ground(sim)
-    widths = width_span(sim, cfg.extra_s)
-    sim.reset(state, t=t, controls=sim.controls)
+    # a run that broke down cannot go on: its width is the last good state's
+    widths = (np.array([loop_width(sim.wing_positions(), ground)]) if res.breakdown else width_span(sim, cfg.extra_s))
+    sim.reset(state, t=t, controls=sim.controls, check=res.breakdown is None)
     return sim, Case(res, case_row(f"{dim}D V_c={v_c:g}", dim, v_c, res, ground, widths), ground)
 
 
@@ -307,6 +309,8 @@ def tension_rows(cases: list[Case]) -> list[dict]:
 def describe_case(row: dict) -> str:
     """The printed line of one periodic case."""
     state = "periodic" if row["periodic"] else "NOT PERIODIC (last period shown)"
+    if row.get("breakdown"):
+        state = f"NOT PERIODIC: broke down ({row['breakdown']}; the last, partial period shown)"
     return (f"{row['case']}: {state}, t = {row['t_end_s']:.0f} s; mean power {row['mean_power_kW']:.1f} kW "
             f"(tension estimate (T_first - T_last) V_c = {row['tension_estimate_kW']:.1f} kW; paper ~200 kW; the "
             f"last {row['late_periods']} periods: mean {row['late_power_mean_kW']:.1f} kW, period means "
