@@ -119,6 +119,8 @@ def cmd_simulate(args) -> int:
           f"{asm.state_size} states, {'3D' if asm.dim == 3 else 'in-plane'}, sag {'on' if asm.sag else 'off'}, "
           f"cable aerodynamics {'on' if asm.cable_aero else 'off'}, dt {scene.settings.dt:g} s "
           f"(set up in {time.perf_counter() - t0:.1f} s)")
+    if scene.settings.method == "rk4" and not args.no_step_check:
+        _check_step(sim)
     t1 = time.perf_counter()
     rec = record(sim, args.time, args.sample_dt, progress=not args.quiet)
     wall = time.perf_counter() - t1
@@ -148,6 +150,22 @@ def cmd_simulate(args) -> int:
               file=sys.stderr)
         return 3
     return 1 if rec.error and args.strict else 0
+
+
+def _check_step(sim) -> None:
+    """Print the RK4 step against its estimated stability limit at the start (studies.stable_step: eigenvalues of
+    the Jacobian), with a warning line when the step is beyond it (the run could oscillate without failing)."""
+    import warnings
+
+    from laddermill_gym.studies.stable_step import check_step
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        est = check_step(sim, action="warn")
+    print(f"RK4 step {sim.settings.dt:g} s; estimated stability limit at the start {est.dt_max:.4g} s "
+          f"(eigenvalue {est.eigenvalue:.4g} 1/s)")
+    for w in caught:
+        print(f"warning: {w.message}", file=sys.stderr)
 
 
 def _flag_lines(rec) -> list[str]:
@@ -215,6 +233,8 @@ FORWARDED: dict[str, tuple[str, str]] = {
              "(Lansdorp et al. 2008, Tables 1-2, Figs. 10-20, a turbine beside it)"),
     "work-precision": ("laddermill_gym.studies.work_precision", "error against run time of the integrators on a "
                        "scene (RK4 over dt, DP5(4) over tolerances; smooth and non-smooth forcing)"),
+    "stable-step": ("laddermill_gym.studies.stable_step", "estimate the largest stable explicit step of a scene from "
+                    "the eigenvalues of its Jacobian"),
     "stress": ("laddermill_gym.studies.stress", "numerical stress suite of a scene: stable steps, hour-long runs, "
                "slack-taut, wind extremes, bang-bang controls, injected NaN, env episodes"),
     "train-seeds": ("laddermill_gym.harness.train_seeds", "train one config with several seeds, serially, on "
@@ -266,6 +286,8 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--strict", action="store_true",
                    help="also exit 1 when the run stops at a ground contact (a documented termination, else exit 0)")
     s.add_argument("--quiet", action="store_true", help="no progress bar")
+    s.add_argument("--no-step-check", action="store_true",
+                   help="skip the estimate of RK4's stable step at the start (one Jacobian, about 0.1-2 s)")
     s.set_defaults(func=cmd_simulate)
     b = sub.add_parser("bench", help="run the benchmark and print its figures")
     b.add_argument("--json", default=None, help="also write the figures as JSON to this file")

@@ -74,3 +74,13 @@ def test_scenes_lists_every_scene(capsys):
     assert cli_main(["scenes"]) == 0
     lines = capsys.readouterr().out.splitlines()
     assert [ln.split()[0] for ln in lines] == available_scenes()  # point-mass scenes included
+
+
+def test_a_step_past_the_stable_limit_is_warned(tmp_path, capsys):
+    """ladder_chain at 0.025 s (once called its largest stable step) is beyond the estimated limit, 0.0245 s
+    (issue 13: such a run oscillates without failing, so the start says so)."""
+    assert cli_main(["simulate", "ladder_chain", "--time", "0.1", "--dt", "0.025", "--out", str(tmp_path),
+                     "--quiet"]) == 0
+    captured = capsys.readouterr()
+    assert "estimated stability limit at the start 0.024" in captured.out
+    assert "warning: dt = 0.025 s is above the estimated stability limit" in captured.err

@@ -7,65 +7,24 @@ from dataclasses import dataclass
 import numpy as np
 
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
-from laddermill_gym.atmosphere.wind_kernels import modulation, wind_point
 from laddermill_gym.kernels.contract import (
-    B2_Q,
-    B2_SIZE,
-    B2_THETA,
-    B2_U,
-    B2_W,
-    B2_X,
-    B2_Z,
-    B3_POS,
-    B3_QUAT,
-    B3_RATE,
-    B3_SIZE,
-    B3_VEL,
     LIM_GROUND,
     LIM_RATE,
     LIM_SIZE,
     LIM_SPEED,
-    N2_POS,
-    N2_SIZE,
-    N2_VEL,
-    N3_POS,
-    N3_SIZE,
-    N3_VEL,
-    TM_DT,
-    TM_T0,
 )
 from laddermill_gym.kernels.integrate import OK
 from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
-from laddermill_gym.model.states import euler_from_quaternion
+from laddermill_gym.sim.body_views import BodyViews
 from laddermill_gym.sim.breakpoints import BREAKPOINT_MODES, dp54_pieces, modulation_kinks, rk4_pieces
-from laddermill_gym.sim.reports import GROUND_MODES, body_heights, diagnose, failure_message, state_problems
+from laddermill_gym.sim.reports import GROUND_MODES, diagnose, failure_message, state_problems
 from laddermill_gym.sim.station_views import (
-    StationViews,
     check_station_controls,
     station_control_labels,
-    station_state_name,
 )
-
-
-def _slot_names(size: int, *groups) -> tuple[str, ...]:
-    """Names of the entries of one body's or node's state block from (offset, names) pairs."""
-    names = [""] * size
-    for offset, group in groups:
-        names[offset: offset + len(group)] = group
-    return tuple(names)
-
-
-_WING_NAMES_3D = _slot_names(B3_SIZE, (B3_POS, ("x [m]", "y [m]", "z [m]")), (B3_QUAT, ("q0", "q1", "q2", "q3")),
-                             (B3_VEL, ("u [m/s]", "v [m/s]", "w [m/s]")),
-                             (B3_RATE, ("p [rad/s]", "q [rad/s]", "r [rad/s]")))
-_WING_NAMES_2D = _slot_names(B2_SIZE, (B2_X, ("x [m]",)), (B2_Z, ("z [m]",)), (B2_THETA, ("theta [rad]",)),
-                             (B2_U, ("u [m/s]",)), (B2_W, ("w [m/s]",)), (B2_Q, ("q [rad/s]",)))
-_NODE_NAMES_3D = _slot_names(N3_SIZE, (N3_POS, ("x [m]", "y [m]", "z [m]")),
-                             (N3_VEL, ("vx [m/s]", "vy [m/s]", "vz [m/s]")))
-_NODE_NAMES_2D = _slot_names(N2_SIZE, (N2_POS, ("x [m]", "z [m]")), (N2_VEL, ("vx [m/s]", "vz [m/s]")))
 
 
 class SimulationError(RuntimeError):
@@ -134,7 +93,7 @@ def limits_array(settings: IntegratorSettings) -> np.ndarray:
     return lim
 
 
-class Simulator(StationViews):
+class Simulator(BodyViews):
     """A compiled simulator of one built scene.
 
     Parameters
@@ -349,109 +308,3 @@ class Simulator(StationViews):
     def diagnose(self) -> str:
         """Name the body, node or element with the largest speed, rate or derivative in the current state."""
         return diagnose(self)
-
-    # ------------------------------------------------------------------ names and views
-    def state_name(self, i: int) -> str:
-        """Human-readable name of state entry i (e.g. 'wing 3 v_body[1] [m/s]')."""
-        a = self.assembly
-        ws, ns = a.wing_state_size, a.node_state_size
-        if i < a.n_wings * ws:
-            k, j = divmod(i, ws)
-            names = _WING_NAMES_3D if a.dim == 3 else _WING_NAMES_2D
-            return f"wing {k} {names[j]}"
-        if i >= a.body_state_size:
-            return station_state_name(i - a.body_state_size)
-        k, j = divmod(i - a.n_wings * ws, ns)
-        names = _NODE_NAMES_3D if a.dim == 3 else _NODE_NAMES_2D
-        return f"node {k} {names[j]}"
-
-    def _wing_block(self) -> np.ndarray:
-        a = self.assembly
-        return self.state[: a.n_wings * a.wing_state_size].reshape(a.n_wings, a.wing_state_size)
-
-    def _node_block(self) -> np.ndarray:
-        a = self.assembly
-        return self.state[a.n_wings * a.wing_state_size: a.body_state_size].reshape(a.n_nodes, a.node_state_size)
-
-    def wing_positions(self) -> np.ndarray:
-        """CG positions, shape (n_wings, 3), global frame [m] (y = 0 in the in-plane mode)."""
-        w = self._wing_block()
-        if self.assembly.dim == 3:
-            return w[:, B3_POS: B3_POS + 3].copy()
-        return np.stack([w[:, B2_X], np.zeros(len(w)), w[:, B2_Z]], axis=1)
-
-    def wing_euler(self) -> np.ndarray:
-        """3-2-1 Euler angles (roll phi, pitch theta, yaw psi), shape (n_wings, 3) [rad]."""
-        w = self._wing_block()
-        if self.assembly.dim == 3:
-            return np.array([euler_from_quaternion(qq) for qq in w[:, B3_QUAT: B3_QUAT + 4]]).reshape(-1, 3)
-        return np.stack([np.zeros(len(w)), w[:, B2_THETA], np.zeros(len(w))], axis=1)
-
-    def wing_velocities(self) -> np.ndarray:
-        """Body-frame CG velocities (u, v, w), shape (n_wings, 3) [m/s]."""
-        w = self._wing_block()
-        if self.assembly.dim == 3:
-            return w[:, B3_VEL: B3_VEL + 3].copy()
-        return np.stack([w[:, B2_U], np.zeros(len(w)), w[:, B2_W]], axis=1)
-
-    def wing_rates(self) -> np.ndarray:
-        """Body rates (p, q, r), shape (n_wings, 3) [rad/s]."""
-        w = self._wing_block()
-        if self.assembly.dim == 3:
-            return w[:, B3_RATE: B3_RATE + 3].copy()
-        return np.stack([np.zeros(len(w)), w[:, B2_Q], np.zeros(len(w))], axis=1)
-
-    def wing_rotations(self) -> np.ndarray:
-        """Rotation matrices body -> global, shape (n_wings, 3, 3)."""
-        from laddermill_gym.model.states import rotation_from_euler
-
-        return np.array([rotation_from_euler(*e) for e in self.wing_euler()]).reshape(-1, 3, 3)
-
-    def air_velocity_body(self) -> np.ndarray:
-        """Air-relative CG velocity in body axes, shape (n_wings, 3) [m/s] (from the kernels' wind)."""
-        m = self.model
-        s, d, _, _ = modulation(self.t, m.tmod[TM_T0], m.tmod[TM_DT], m.ms, m.md)
-        pos = self.wing_positions()
-        Rs = self.wing_rotations()
-        out = np.zeros((len(pos), 3))
-        for k in range(len(pos)):
-            w = np.array(wind_point(pos[k, 0], pos[k, 1], pos[k, 2], self.t, m.wf, s, d, m.gp, m.gv))
-            out[k] = self.wing_velocities()[k] - Rs[k].T @ w
-        return out
-
-    def wing_alpha_beta(self) -> np.ndarray:
-        """Angle of attack and sideslip, shape (n_wings, 2) [rad]."""
-        va = self.air_velocity_body()
-        V = np.maximum(np.linalg.norm(va, axis=1), 1e-300)
-        return np.stack([np.arctan2(va[:, 2], va[:, 0]), np.arcsin(np.clip(va[:, 1] / V, -1, 1))], axis=1)
-
-    def body_heights(self) -> tuple[np.ndarray, np.ndarray]:
-        """Heights h = -z [m] of the wing CGs (n_wings,) and of the free cable nodes (n_nodes,)."""
-        return body_heights(self.assembly, self.state)
-
-    def node_positions(self) -> np.ndarray:
-        """Free cable node positions, shape (n_nodes, 3) [m]."""
-        n = self._node_block()
-        if self.assembly.dim == 3:
-            return n[:, N3_POS: N3_POS + 3].copy()
-        return np.stack([n[:, N2_POS], np.zeros(len(n)), n[:, N2_POS + 1]], axis=1)
-
-    def tensions(self) -> np.ndarray:
-        """Element tensions, shape (n_elements,) [N], evaluated at the current state."""
-        self.rhs(self.t, self.state, self.controls)
-        return self.work.tension[: self.assembly.elements.count].copy()
-
-    def views(self) -> dict[str, np.ndarray]:
-        """All named views at once (for saving): name -> array, units in the names."""
-        ab = self.wing_alpha_beta()
-        return {
-            "wing_position_m": self.wing_positions(),
-            "wing_velocity_body_m_s": self.wing_velocities(),
-            "wing_euler_rad": self.wing_euler(),
-            "wing_rates_rad_s": self.wing_rates(),
-            "wing_alpha_rad": ab[:, 0],
-            "wing_beta_rad": ab[:, 1],
-            "node_position_m": self.node_positions(),
-            "element_tension_N": self.tensions(),
-            **self.station_views(),
-        }

@@ -187,7 +187,7 @@ def _cmd(args) -> int:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.stable_step")
+    parser = argparse.ArgumentParser(prog="laddermill")
     sub = parser.add_subparsers(dest="cmd", required=True)
     add_parser(sub)
     args = parser.parse_args(["stable-step", *(argv if argv is not None else __import__("sys").argv[1:])])
