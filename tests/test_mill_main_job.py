@@ -21,7 +21,7 @@ from laddermill_gym.sim.recording import record
 
 @pytest.fixture(scope="module")
 def mill_record():
-    scene = load_scene("laddermill", n_wings=11)
+    scene = load_scene("laddermill", n_wings=11, dt=0.0125)  # the step counts below are at 12.5 ms
     sim = scene.simulator()
     sim.step(n_steps=800)  # 10 s: the cable moving, wings pitched
     return scene, record(sim, 3.0, 0.5, progress=False)
