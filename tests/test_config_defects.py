@@ -108,3 +108,20 @@ def test_an_impossible_equilibrium_names_the_file_and_the_settings():
     scene = load_scene("tethered_wing", overrides={"initial": {"alpha_deg": 89.0}})
     with pytest.raises(ConfigError, match=r"(?s)tethered_wing.yaml: no initial state .*alpha_deg = 89"):
         scene.initial_state()
+
+
+@pytest.mark.parametrize("scene, dt", [("tethered_wing", 10.0), ("laddermill", 0.05), ("ladder_chain", 0.1)])
+def test_a_step_that_cannot_work_is_refused_at_load(scene, dt):
+    """Oracle: the stiffest element's axial frequency, sqrt(EA / l0 (1/m_r + 1/m_s)), and RK4's 2.83 bound; a step
+    over twice that bound is refused naming the field, while the scenes' own steps load."""
+    with pytest.raises(ConfigError, match=rf"field 'integrator.dt' = {dt!r} s cannot work with RK4"):
+        load_scene(scene, dt=dt)
+    load_scene(scene)
+
+
+def test_the_step_bound_is_the_spring_mass_frequency():
+    """ladder_chain's piece between two wings: k = EA / l0 = 21.6e6 / 70 N/m on two 54 kg wings, each with half of
+    two 21 kg pieces: omega = sqrt(k (2 / 75)) = 90.7 rad/s, bound 2.83 / omega = 0.0312 s: 0.062 s loads, 0.063 s not."""
+    load_scene("ladder_chain", dt=0.062)
+    with pytest.raises(ConfigError, match=r"oscillates at 90.7\d rad/s"):
+        load_scene("ladder_chain", dt=0.063)

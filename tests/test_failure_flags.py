@@ -127,15 +127,15 @@ def test_speed_limit_report_names_time_body_and_quantity():
 
 
 def test_blow_up_is_recorded_and_saved_with_its_report(tmp_path):
-    """A 0.2 s step on the stiff tether makes RK4 explode (test_bad_input): the record ends at the last good state
-    with the report, and both files hold the data so far."""
-    sim = load_scene("tethered_wing", dt=0.2).simulator()
-    rec = record(sim, 20.0, 0.2, progress=False)
+    """A 25 ms step on the stiff tether (stable up to 19 ms) makes RK4 explode (test_bad_input): the record ends at the
+    last good state with the report, and both files hold the data so far."""
+    sim = load_scene("tethered_wing", dt=0.025).simulator()
+    rec = record(sim, 20.0, 0.025, progress=False)
     assert rec.error and rec.t[-1] < 20.0 and rec.t[-1] == pytest.approx(sim.t)
     m = re.search(r"integration failed at t = ([\d.e+-]+) s \((.+?)\); in the step to t = ([\d.e+-]+) s: "
                   r"(wing|node) (\d+) (speed|angular rate) ([\d.e+-]+)", rec.error)
     assert m, rec.error
-    assert float(m.group(1)) == pytest.approx(rec.t[-1]) and float(m.group(3)) == pytest.approx(rec.t[-1] + 0.2)
+    assert float(m.group(1)) == pytest.approx(rec.t[-1]) and float(m.group(3)) == pytest.approx(rec.t[-1] + 0.025)
     assert float(m.group(7)) > 100.0
     for views in rec.views.values():
         assert len(views) == len(rec.t) and np.all(np.isfinite(views))
@@ -148,7 +148,7 @@ def test_blow_up_is_recorded_and_saved_with_its_report(tmp_path):
 
 
 def test_cli_writes_what_it_has_and_prints_the_report(tmp_path, capsys):
-    args = ["simulate", "tethered_wing", "--dt", "0.2", "--time", "20", "--out", str(tmp_path), "--quiet", "--csv"]
+    args = ["simulate", "tethered_wing", "--dt", "0.025", "--time", "20", "--out", str(tmp_path), "--quiet", "--csv"]
     assert cli_main(args) == 3  # a breakdown exits non-zero, outputs written
     out = capsys.readouterr().out
     assert re.search(r"run stopped early: integration failed at t = [\d.]+ s .*(wing|node) \d+ (speed|angular rate)",

@@ -14,9 +14,17 @@ from pathlib import Path
 
 import numpy as np
 
+from laddermill_gym.model.aero_table import load_aero_table
 from laddermill_gym.model.builders import CableSpec, ChainLayout, build_chain
 from laddermill_gym.model.configio import CONFIG_DIR, ConfigError, Section, config_path, read_yaml
-from laddermill_gym.model.params import AERO_COLUMNS, N_CONTROLS, AeroTable, Assembly, WindParams, WingType
+from laddermill_gym.model.params import (
+    END_NODE,
+    END_WING,
+    N_CONTROLS,
+    Assembly,
+    WindParams,
+    WingType,
+)
 from laddermill_gym.model.station import MODES, StationParams
 from laddermill_gym.sim.simulator import IntegratorSettings, Simulator
 
@@ -33,59 +41,6 @@ def available_scenes() -> list[str]:
 
 
 # ---------------------------------------------------------------------------------------- parts
-def load_aero_table(path: Path) -> AeroTable:
-    """Read a wing's coefficient table (CSV: alpha_deg and the AERO_COLUMNS, '#' comments); ConfigError naming the
-    file, line and column of a bad entry."""
-    try:
-        with open(path, encoding="utf-8") as fh:
-            lines = [(i + 1, ln) for i, ln in enumerate(fh) if ln.strip() and not ln.lstrip().startswith("#")]
-    except OSError as err:
-        raise ConfigError(f"{path}: cannot read aerodynamic table: {err}") from None
-    want = ["alpha_deg", *AERO_COLUMNS]
-    if not lines:
-        raise ConfigError(f"{path}: no header and no rows (empty or only comments); the header must be {want}")
-    header = [h.strip() for h in lines[0][1].split(",")]
-    if header != want:
-        raise ConfigError(f"{path}: line {lines[0][0]}: header {header} must be {want}")
-    rows = []
-    for lineno, ln in lines[1:]:
-        cells = [c.strip() for c in ln.split(",")]
-        if len(cells) != len(want):
-            raise ConfigError(f"{path}: line {lineno}: {len(cells)} entries, the header has {len(want)}")
-        try:
-            rows.append([float(c) for c in cells])
-        except ValueError:
-            j = next(j for j, c in enumerate(cells) if not _is_float(c))
-            raise ConfigError(f"{path}: line {lineno}, column '{want[j]}' = {cells[j]!r}: must be a number") from None
-    data = np.array(rows).reshape(-1, len(want))
-    if data.shape[0] < 8:
-        raise ConfigError(f"{path}: table must have >= 8 rows of {len(want)} numbers, got {data.shape[0]}")
-    if not np.all(np.isfinite(data)):
-        r, c = np.argwhere(~np.isfinite(data))[0]
-        raise ConfigError(f"{path}: line {lines[r + 1][0]}, column '{want[c]}' = {float(data[r, c])!r}: must be finite")
-    step = np.diff(data[:, 0])
-    bad = np.flatnonzero(np.abs(step - step[0]) > 1e-9)
-    if step[0] <= 0 or bad.size:
-        r = 1 if step[0] <= 0 else int(bad[0]) + 1
-        raise ConfigError(f"{path}: line {lines[r + 1][0]}, column 'alpha_deg' = {float(data[r, 0])!r}: alpha must "
-                          f"rise on a uniform grid (step {step[0]:g} deg from the first row) from -180 to 180 deg")
-    a = data[:, 0]
-    if abs(a[0] + 180) > 1e-9 or abs(a[-1] - 180) > 1e-9:
-        raise ConfigError(f"{path}: column 'alpha_deg' runs from {a[0]:g} to {a[-1]:g} deg: it must run from -180 "
-                          "to 180 deg")
-    if not np.allclose(data[0, 1:], data[-1, 1:], rtol=0, atol=1e-12):
-        raise ConfigError(f"{path}: rows at -180 and 180 deg must be equal (periodic table)")
-    return AeroTable(alpha=np.radians(a), values=np.ascontiguousarray(data[:, 1:]), source=str(path))
-
-
-def _is_float(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
-
-
 def load_wing_type(path: Path) -> WingType:
     """Read a wing type YAML (mass, inertia, geometry, attachment, control limits, table file)."""
     s = read_yaml(path)
@@ -252,6 +207,36 @@ def options_kwargs(key: tuple) -> dict:
     return {k: json.loads(v) if k == "overrides" and isinstance(v, str) else v for k, v in key}
 
 
+def _refuse_impossible_step(asm: Assembly, settings: IntegratorSettings, path: Path) -> None:
+    """ConfigError if an RK4 step is more than twice the stability bound of the stiffest cable element's axial
+    oscillation, omega^2 = (EA / l0) (1/m_r + 1/m_s), the end masses lumped (a wing's or node's own mass plus half of
+    each attached element's; a fixed end infinite) and RK4's bound on the imaginary axis omega dt = 2.83. A cheap,
+    geometry-only check against values that cannot work; the precise limit is ``laddermill stable-step``'s."""
+    e = asm.elements
+    if settings.method != "rk4" or e.count == 0:
+        return
+    mass = {END_WING: np.array([asm.wing(k).mass for k in range(asm.n_wings)], dtype=float),
+            END_NODE: np.array(asm.node_mass, dtype=float)}
+    half = 0.5 * e.mu * e.l0
+    for end in (0, 1):
+        for kind, m in mass.items():
+            sel = e.end_kind[:, end] == kind
+            np.add.at(m, e.end_index[sel, end], half[sel])
+    inv = np.zeros(e.end_kind.shape)
+    for kind, m in mass.items():
+        for end in (0, 1):
+            sel = e.end_kind[:, end] == kind
+            inv[sel, end] = 1.0 / m[e.end_index[sel, end]]
+    omega = np.sqrt(e.EA / e.l0 * inv.sum(axis=1))
+    j = int(np.argmax(omega))
+    bound = 2.83 / omega[j]
+    if settings.dt > 2.0 * bound:
+        raise ConfigError(f"{path}: field 'integrator.dt' = {settings.dt!r} s cannot work with RK4: the stiffest cable "
+                          f"element ({j}, EA / l0 = {e.EA[j] / e.l0[j]:.3g} N/m) oscillates at {omega[j]:.4g} rad/s, "
+                          f"stable up to about {bound:.3g} s (refused above twice that; the precise limit: "
+                          "laddermill stable-step SCENE)")
+
+
 def _merged(data: dict, overrides, where: str) -> dict:
     """A copy of the YAML mapping ``data`` with the nested mapping ``overrides`` merged in (mappings merge, other
     values replace); ConfigError naming the override's path if it is not a mapping with text keys."""
@@ -367,5 +352,6 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
                               dim=dim, sag=sag_on, cable_aero=caero_on, gravity=gravity)
     if station is not None:
         asm = dataclasses.replace(asm, station=station)
+    _refuse_impossible_step(asm, settings, path)
     return Scene(name=name, file=path, description=desc, assembly=asm, layout=layout, cable=cable,
                  ground_points=points, start=start, end=end, piece_length=piece, initial=init, settings=settings)
