@@ -31,9 +31,9 @@ def _small_config(tmp_path, **changes):
 
 def test_sb3_smoke_training_and_policy_as_controller(tmp_path, monkeypatch):
     pytest.importorskip("stable_baselines3")
-    from laddermill_gym.harness.train import train
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.rl_config import load_rl_config
+    from laddermill_gym.harness.train import train
 
     cfg = load_rl_config(_small_config(tmp_path))
     # evaluation episodes of 300 s would dominate a smoke test: shorten the registered scenario here
@@ -54,8 +54,8 @@ def test_sb3_smoke_training_and_policy_as_controller(tmp_path, monkeypatch):
 
 def test_sac_config_trains_a_few_hundred_steps(tmp_path, monkeypatch):
     pytest.importorskip("stable_baselines3")
-    from laddermill_gym.harness.train import train
     from laddermill_gym.control.rl_config import load_rl_config
+    from laddermill_gym.harness.train import train
 
     data = yaml.safe_load(open("configs/agents/sac_tethered_wing.yaml"))
     data.update(n_envs=2, total_timesteps=300, checkpoint_every=200, eval={"every": 200, "episodes": 1})
@@ -123,8 +123,8 @@ def test_evaluate_writes_tables_and_figure(tmp_path):
 
 
 def test_run_episodes_records_until_each_copy_ends():
-    from laddermill_gym.harness.evaluate import run_episodes
     from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.harness.evaluate import run_episodes
 
     env = WingVectorEnv(2, **dict(ENV_IDS[TW], episode_time=3.0))
     res = run_episodes(make_controller("lqr", TW), env)
@@ -137,8 +137,8 @@ def test_laddermill_ppo_config_trains_a_few_steps(tmp_path, monkeypatch):
     """configs/agents/ppo_laddermill.yaml is read strictly and trains through agents.train (an 11-wing mill with a
     short settle, a few hundred steps): the policy's action space is the config's 8 bands x 2 surfaces."""
     pytest.importorskip("stable_baselines3")
-    from laddermill_gym.harness.train import train
     from laddermill_gym.control.rl_config import env_family, load_rl_config
+    from laddermill_gym.harness.train import train
 
     mill = "laddermill_gym/LadderMill-v0"
     data = yaml.safe_load(open("configs/agents/ppo_laddermill.yaml"))

@@ -76,10 +76,10 @@ def test_vector_env_copies_behave_like_single_envs():
 
 def test_ppo_smoke_run_and_policy_as_controller(tmp_path, monkeypatch):
     pytest.importorskip("stable_baselines3")
-    from laddermill_gym.harness.train import train
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.rl_config import load_rl_config
     from laddermill_gym.control.sb3_policy import SB3Controller
+    from laddermill_gym.harness.train import train
 
     cfg = load_rl_config(_small_config(tmp_path))
     # evaluation episodes of 120 s would dominate a smoke test: shorten the registered scenario here

@@ -121,7 +121,8 @@ def test_a_step_that_cannot_work_is_refused_at_load(scene, dt):
 
 def test_the_step_bound_is_the_spring_mass_frequency():
     """ladder_chain's piece between two wings: k = EA / l0 = 21.6e6 / 70 N/m on two 54 kg wings, each with half of
-    two 21 kg pieces: omega = sqrt(k (2 / 75)) = 90.7 rad/s, bound 2.83 / omega = 0.0312 s: 0.062 s loads, 0.063 s not."""
+    two 21 kg pieces: omega = sqrt(k (2 / 75)) = 90.7 rad/s, bound 2.83 / omega = 0.0312 s: 0.062 s loads, 0.063 s
+    does not."""
     load_scene("ladder_chain", dt=0.062)
     with pytest.raises(ConfigError, match=r"oscillates at 90.7\d rad/s"):
         load_scene("ladder_chain", dt=0.063)

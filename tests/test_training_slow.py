@@ -12,11 +12,11 @@ pytestmark = pytest.mark.slow
 
 def test_ppo_matches_lqr_within_30_minutes(tmp_path):
     pytest.importorskip("stable_baselines3")
-    from laddermill_gym.harness.evaluate import run_episodes
-    from laddermill_gym.harness.train import train
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.rl_config import load_rl_config
     from laddermill_gym.envs import ENV_IDS, WingVectorEnv
+    from laddermill_gym.harness.evaluate import run_episodes
+    from laddermill_gym.harness.train import train
 
     cfg = load_rl_config("configs/agents/ppo_tethered_wing.yaml")
     assert cfg.time_limit_minutes <= 30.0
