@@ -15,6 +15,12 @@ bench:
 
 gust-bench:
 	laddermill gust-bench --suite gusts-v1 --controllers open_loop lqr --out results/gust_bench/gusts-v1
+	laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 \
+		--controllers open_loop lqr runs/ppo_tethered_wing_seed0 --out results/gb_tw
+	cp results/gb_tw/scorecard_TetheredWing-v0.png $(FIG)/gust_scorecard_tethered_wing.png
+	laddermill gust-bench --suite gusts-v1 --env laddermill_gym/Rotorcraft-v0 \
+		--controllers open_loop lqr runs/ppo_rotorcraft_seed0 --out results/gb_rc
+	cp results/gb_rc/scorecard_Rotorcraft-v0.png $(FIG)/gust_scorecard_rotorcraft.png
 
 simulate:
 	laddermill simulate laddermill --start periodic --direction-step 0.01 --time 60 --animate --allow-breakdown --out runs
