@@ -201,7 +201,11 @@ def run_benchmark(quick: bool = False, scenes: list[str] | None = None, echo=pri
     scenes = scenes or ["tethered_wing", "ladder_chain"]
     res: dict = {"machine": {"cpus": os.cpu_count(), "python": sys.version.split()[0],
                              "numba_threads": os.environ.get("NUMBA_NUM_THREADS", "default")}, "scenes": {}}
+    t_start = time.perf_counter()
     for name in scenes:
+        echo(f"[{time.perf_counter() - t_start:5.0f} s] measuring {name}: right-hand side, RK4 step, numpy reference, "
+             f"fidelity variants{'' if quick else ', largest stable step'} ...")
+        sys.stdout.flush()
         t0 = time.perf_counter()
         scene = load_scene(name)
         x0, u0 = scene.initial_state()
@@ -231,6 +235,8 @@ def run_benchmark(quick: bool = False, scenes: list[str] | None = None, echo=pri
                                              sum(np.asarray(v).nbytes for v in sim.work) + x0.nbytes)
         res["scenes"][name] = r
     # cost per step against the number of wings (ladder chains of 10, 100, 1000 wings, layout states)
+    echo(f"[{time.perf_counter() - t_start:5.0f} s] measuring the cost per wing at 10, 100 and 1000 wings ...")
+    sys.stdout.flush()
     scal = {}
     for n in (10, 100, 1000):
         sc = load_scene("ladder_chain", n_wings=n)

@@ -95,6 +95,8 @@ def bench_mill(quick: bool = False, echo=print) -> dict:
     warm = 10.0 if quick else 40.0  # [s] of the mill run before timing: the cable at speed
     out: dict = {"target_real_time_factor": TARGET_REAL_TIME}
     for dim in (3, 2):
+        echo(f"measuring the moving-cable laddermill ({'3D' if dim == 3 else 'in plane'}): {warm:g} s of running, "
+             "then the RK4 step against the fixed chain, the transfer, the stable step ...")
         scene = load_scene("laddermill", dimension=dim)
         sim = scene.simulator()
         sim.step(n_steps=int(round(warm / scene.settings.dt)))
