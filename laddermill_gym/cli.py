@@ -251,7 +251,7 @@ FORWARDED: dict[str, tuple[str, str]] = {
 def build_parser() -> argparse.ArgumentParser:
     from laddermill_gym import __version__
 
-    p = argparse.ArgumentParser(prog="laddermill", description=__doc__,
+    p = argparse.ArgumentParser(prog="laddermill", description=__doc__.replace("``", ""),
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"laddermill_gym {__version__}")
     sub = p.add_subparsers(dest="command", required=True)

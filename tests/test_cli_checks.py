@@ -65,7 +65,9 @@ def test_version_and_forwarded_help(capsys):
         with pytest.raises(SystemExit) as e:
             cli_main([cmd, "--help"])
         assert e.value.code == 0
-        assert f"usage: laddermill {cmd}" in capsys.readouterr().out.replace("\n", " ")
+        text = capsys.readouterr().out
+        assert f"usage: laddermill {cmd}" in text.replace("\n", " ")
+        assert "``" not in text, f"laddermill {cmd} --help shows raw reStructuredText backticks"
 
 
 def test_scenes_lists_every_scene(capsys):

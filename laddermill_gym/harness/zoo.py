@@ -106,7 +106,7 @@ def run_script(script: str, args: list[str], save: Path | None = None) -> None:
 def add_parser(sub) -> argparse.ArgumentParser:
     """``laddermill zoo`` on the subparsers ``sub`` (sets ``func``)."""
     p = sub.add_parser("zoo", help="run an rl-zoo3 script (train, enjoy, record_video, plot_train, ...) with the "
-                       "laddermill_gym environments registered", description=__doc__.split("\n\n")[0])
+                       "laddermill_gym environments registered", description=__doc__.split("\n\n")[0].replace("``", ""))
     _arguments(p)
     p.set_defaults(func=lambda a: _run(a, p))
     return p
@@ -135,7 +135,7 @@ def _run(a: argparse.Namespace, p: argparse.ArgumentParser) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
-    p = argparse.ArgumentParser(prog="laddermill zoo", description=__doc__.split("\n\n")[0])
+    p = argparse.ArgumentParser(prog="laddermill zoo", description=__doc__.split("\n\n")[0].replace("``", ""))
     _arguments(p)
     return _run(p.parse_args(argv), p)
 

@@ -146,7 +146,7 @@ def _sweeps(case, spec, wind, out, n_states, quiet):
 
 def add_parser(sub) -> argparse.ArgumentParser:
     p = sub.add_parser("site", help="optimise a pumping laddermill for a site's wind (Lansdorp et al. 2008)",
-                       description=__doc__)
+                       description=__doc__.replace("``", ""))
     p.add_argument("--wind", nargs="+", default=["weather2010-daily", "cabauw"],
                    help=f"shipped data {sorted(SHIPPED)} or wind files ('daily:FILE' for daily means)")
     p.add_argument("--format", default="auto", choices=("auto", "csv", "wyoming", "two-heights"))

@@ -196,14 +196,14 @@ def _run(args) -> int:
 def add_parser(sub) -> argparse.ArgumentParser:
     """The ``pumping-cycle`` subcommand on an argparse subparsers object (sets ``func``)."""
     p = sub.add_parser("pumping-cycle", help="dynamic pumping cycle vs the quasi-steady prediction",
-                       description=__doc__.split("\n\n")[0])
+                       description=__doc__.split("\n\n")[0].replace("``", ""))
     _arguments(p)
     p.set_defaults(func=_run)
     return p
 
 
 def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="laddermill pumping-cycle", description=__doc__.split("\n\n")[0])
+    p = argparse.ArgumentParser(prog="laddermill pumping-cycle", description=__doc__.split("\n\n")[0].replace("``", ""))
     _arguments(p)
     return _run(p.parse_args(argv))
 

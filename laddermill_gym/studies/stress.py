@@ -207,7 +207,7 @@ def _fmt(v):
 
 def add_parser(sub) -> argparse.ArgumentParser:
     p = sub.add_parser("stress", help="numerical stress tests of the scenes and envs",
-                       description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+                       description=__doc__.replace("``", ""), formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("scene", nargs="*", default=list(DEFAULT_SCENES), help="scenes (default: all four)")
     p.add_argument("--hours", type=float, default=1.0, help="simulated time of the held run [h] (default 1)")
     p.add_argument("--episodes", type=int, default=10_000, help="env episodes per env (default 10000)")

@@ -192,7 +192,7 @@ def run_scene(scene: str, forcings=FORCINGS, duration: float = 5.0, n_samples: i
 
 def add_parser(sub) -> argparse.ArgumentParser:
     p = sub.add_parser("work-precision", help="error against wall time of the integrators on a scene",
-                       description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+                       description=__doc__.replace("``", ""), formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("scene", nargs="+", help="scene names or YAML paths; 'roberts_flying_model' for the rotorcraft")
     p.add_argument("--forcing", nargs="+", choices=FORCINGS, default=list(FORCINGS))
     p.add_argument("--time", type=float, default=5.0, help="simulated time per run [s] (default 5)")
