@@ -134,7 +134,7 @@ def test_layouts_the_lqr_cannot_drive_are_refused(task):
     halves = MillTask(1, **dict(SMALL, groups="halves"), operating_point=task.op)
     with pytest.raises(ValueError, match="per_slot"):
         design.controller(halves)
-    fine = load_scene("laddermill", n_wings=N, elements_per_piece=2)
+    fine = load_scene("laddermill", n_wings=N, elements_per_piece=2, dt=0.001)  # half-pieces need a small step
     with pytest.raises(ValueError, match="elements_per_piece"):
         mill_lateral_model(fine.simulator(), fine.simulator().state, np.zeros(3 * N))
 

@@ -15,7 +15,9 @@ from laddermill_gym.control.factory import make_controller
 from laddermill_gym.model.configio import ConfigError
 
 TW = "laddermill_gym/TetheredWing-v0"
-WIND10 = {"overrides": {"wind": {"v0": 10.0}}}
+#: scene_options replaces the registered one, so TetheredWing-v0's one element per piece (which its 50 ms physics
+#: step needs: two elements are refused at load) is given again
+WIND10 = {"elements_per_piece": 1, "overrides": {"wind": {"v0": 10.0}}}
 
 
 def test_scene_overrides_reach_the_model_and_survive_the_spec():
@@ -31,9 +33,11 @@ def test_scene_overrides_reach_the_model_and_survive_the_spec():
 
 def test_bad_overrides_name_the_field():
     with pytest.raises(ConfigError, match=r"field 'wind.v0' = -1.0: must be > 0"):
-        gym.make(TW, scene_options={"overrides": {"wind": {"v0": -1.0}}})
+        gym.make(TW, scene_options={"elements_per_piece": 1, "overrides": {"wind": {"v0": -1.0}}})
     with pytest.raises(ConfigError, match=r"unknown field 'wind.speed'"):
-        gym.make(TW, scene_options={"overrides": {"wind": {"speed": 9.0}}})
+        gym.make(TW, scene_options={"elements_per_piece": 1, "overrides": {"wind": {"speed": 9.0}}})
+    with pytest.raises(ConfigError, match=r"field 'integrator.dt' = 0.05 s cannot work with RK4"):
+        gym.make(TW, scene_options={"overrides": {"wind": {"v0": 10.0}}})  # two elements at 50 ms
 
 
 def test_lqr_designs_for_the_modified_scene():
@@ -44,7 +48,7 @@ def test_lqr_designs_for_the_modified_scene():
 
 
 def test_fixed_reference_power_normalises_the_reward():
-    for opts in ({}, WIND10):
+    for opts in ({"elements_per_piece": 1}, WIND10):
         env = gym.make(TW, scene_options=opts, episode_time=1.0, reward={"reference_power_W": 5000.0})
         env.reset(seed=0)
         _, _, _, _, info = env.step(np.zeros(env.action_space.shape, np.float32))
