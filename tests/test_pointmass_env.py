@@ -1,13 +1,24 @@
-"""PointMassEnv: the Gymnasium contract (env checker, determinism), actions mapped onto the kites' commanded
-attitude (closed form: start attitude + a x range, clipped), and the physical ends of an episode."""
+"""PointMassEnv and the registered laddermill_gym/PointMassChain-v0: the Gymnasium contract (env checker,
+determinism), actions mapped onto the kites' commanded attitude (closed form: start attitude + a x range,
+clipped), the power term against the ground tensions of the observation (P = (T_start - T_end) v_reel), the native
+vector env against single envs (bit for bit), the settled start against the fidelity study's tension, the
+physical ends of an episode, pickling and the controller factory."""
 
 import math
+import pickle
 
+import gymnasium as gym
 import numpy as np
 import pytest
 from gymnasium.utils.env_checker import check_env
 
+import laddermill_gym  # noqa: F401  (registers the ids)
+from laddermill_gym.envs import ENV_IDS, RandomPerturbation
 from laddermill_gym.envs.pointmass.env import PointMassEnv
+
+PMC = "laddermill_gym/PointMassChain-v0"
+#: configs/scenes/ladder_chain.yaml: wind.v0 [m/s]; RewardConfig.reel_speed_fraction 1/3 (Loyd 1980)
+V_REEL = 8.0 / 3.0
 
 
 @pytest.fixture(scope="module")
@@ -15,12 +26,34 @@ def env():
     return PointMassEnv(episode_time=2.0)
 
 
+def chain_kwargs(**kw):
+    return dict(ENV_IDS[PMC], **kw)
+
+
 def test_env_checker(env):
     check_env(env, skip_render_check=True)
 
 
+def test_registered_chain_passes_the_env_checker():
+    e = gym.make(PMC, episode_time=1.0)
+    check_env(e.unwrapped, skip_render_check=True)
+    assert e.unwrapped.task.n_wings == 101 and e.action_space.shape == (202,)
+    assert e.observation_space.shape == (7 * 101 + 2,)
+
+
+def test_settled_chain_start_against_the_fidelity_study():
+    # docs/pointmass.md "Between fidelities": the point-mass chain's static base tension is 178.9 kN (1 m elements);
+    # the registered env settles the 70 m string from the rigid equilibrium for 600 s
+    e = PointMassEnv(**chain_kwargs())
+    obs, _ = e.reset(seed=0)
+    assert obs[-2] == pytest.approx(178.9e3, rel=0.01)
+    vel = obs[: 7 * 101].reshape(101, 7)[:, 3:6]
+    assert np.abs(vel).max() < 0.1  # at rest [m/s]
+    assert np.all(obs[: 7 * 101].reshape(101, 7)[:, :3] == 0.0)  # offsets from the start
+
+
 def test_actions_command_the_attitude(env):
-    u0 = env.u0.reshape(-1, 3)
+    u0 = env.task.u_trim.reshape(-1, 3)
     u = env.commanded_attitude(np.array([0.4, -1.7])).reshape(-1, 3)
     assert u[:, 1] == pytest.approx(u0[:, 1] + 0.4 * math.radians(5.0))
     assert u[:, 0] == pytest.approx(u0[:, 0] - math.radians(15.0))  # clipped at -1
@@ -28,16 +61,91 @@ def test_actions_command_the_attitude(env):
     env.reset(seed=1)
     _, _, _, _, info = env.step(np.array([0.4, -1.7], dtype=np.float32))
     assert info["n_clipped"] == 1
-    np.testing.assert_allclose(env.sim.u.reshape(-1, 3), u)
+    np.testing.assert_allclose(env.task.batch.controls[0].reshape(-1, 3), u)
 
 
-def test_episodes_are_deterministic(env):
+def test_power_term_from_the_observed_ground_tensions():
+    e = PointMassEnv(**chain_kwargs(episode_time=1.0))
+    obs, _ = e.reset(seed=2)
+    p_ref = (float(obs[-2]) - float(obs[-1])) * V_REEL  # the start's power, from the observation
+    rng = np.random.default_rng(0)
+    for _ in range(10):
+        a = rng.uniform(-1, 1, 202).astype(np.float32)
+        obs, reward, _, _, info = e.step(a)
+        p = (float(obs[-2]) - float(obs[-1])) * V_REEL
+        assert info["power_W"] == pytest.approx(p, rel=1e-6)
+        assert info["reward_power"] == pytest.approx(p / p_ref, rel=1e-5)
+        assert info["reward_effort"] == pytest.approx(-0.1 * (1 - math.exp(-np.mean(a.astype(float) ** 2))), rel=1e-9)
+        terms = [info[k] for k in ("reward_power", "reward_lateral", "reward_rates", "reward_effort", "reward_failure")]
+        assert reward == pytest.approx(sum(terms), rel=1e-12)
+        tension_below = obs[: 7 * 101].reshape(101, 7)[:, 6]
+        assert tension_below[0] == obs[-2]  # one element per piece: kite 0's element is the start's
+
+
+def _single_runs(kw, seeds, actions):
+    """Observations, rewards and flags of single envs stepped as NextStep autoreset does."""
+    out = []
+    for s, acts in zip(seeds, actions, strict=True):
+        e = PointMassEnv(**kw)
+        obs, _ = e.reset(seed=s)
+        rows, done = [obs], False
+        for a in acts:
+            if done:
+                obs, _ = e.reset()
+                rows.append((obs, 0.0, False, False))
+                done = False
+                continue
+            obs, r, te, tr, _ = e.step(a)
+            rows.append((obs, r, te, tr))
+            done = te or tr
+        out.append(rows)
+    return out
+
+
+def test_vector_env_equals_single_envs_bit_for_bit():
+    kw = chain_kwargs(episode_time=0.5, disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.05)])
+    n, steps = 3, 14  # 10 steps per episode: every copy resets once
+    rng = np.random.default_rng(7)
+    acts = rng.uniform(-1.2, 1.2, (steps, n, 202)).astype(np.float32)
+    venv = gym.make_vec(PMC, num_envs=n, vectorization_mode="vector_entry_point", **kw)
+    vobs, _ = venv.reset(seed=10)
+    runs = [[vobs]]
+    for k in range(steps):
+        runs.append(venv.step(acts[k])[:4])
+    single = _single_runs(kw, [10, 11, 12], [acts[:, i] for i in range(n)])
+    for i in range(n):
+        np.testing.assert_array_equal(runs[0][0][i], single[i][0])
+        for k in range(1, steps + 1):
+            obs, r, te, tr = runs[k]
+            so, sr, ste, str_ = single[i][k]
+            np.testing.assert_array_equal(obs[i], so)
+            assert (r[i], te[i], tr[i]) == (sr, ste, str_)
+    assert any(single[0][k][3] for k in range(1, steps + 1))  # an episode was truncated on the way
+    # the seeds matter: the copies' random winds differ
+    assert not np.array_equal(runs[5][0][0], runs[5][0][1])
+
+
+def test_reset_with_the_same_seed_is_reproducible(env):
+    kw = chain_kwargs(episode_time=1.0, disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.05)])
+    e = PointMassEnv(**kw)
+    a = np.full(202, 0.3, dtype=np.float32)
     runs = []
-    for _ in range(2):
-        env.reset(seed=3)
-        obs = [env.step(np.array([0.0, 0.0], dtype=np.float32)) for _ in range(3)]
-        runs.append(np.concatenate([o[0] for o in obs]))
+    for seed in (3, 3, 4):
+        obs = [e.reset(seed=seed)[0]] + [e.step(a)[0] for _ in range(5)]
+        runs.append(np.concatenate(obs))
     np.testing.assert_array_equal(runs[0], runs[1])
+    assert not np.array_equal(runs[0], runs[2])
+
+
+def test_pickled_env_continues_the_same_episode():
+    e = PointMassEnv(**chain_kwargs(episode_time=1.0, disturbances=[RandomPerturbation()]))
+    e.reset(seed=1)
+    a = np.full(202, -0.2, dtype=np.float32)
+    for _ in range(3):
+        e.step(a)
+    twin = pickle.loads(pickle.dumps(e))
+    for _ in range(3):
+        np.testing.assert_array_equal(e.step(a)[0], twin.step(a)[0])
 
 
 def test_episode_ends():
@@ -51,7 +159,18 @@ def test_episode_ends():
         _, _, terminated, _, info = e.step(np.array([-1.0, 0.0], dtype=np.float32))
         if terminated:
             break
-    assert terminated and info["failure"]
+    assert terminated and info["failure"] == 2 and info["failure_name"] == "ground contact"
+    assert info["failure_reason"].startswith(f"t = {info['t']:.3f} s")
+
+
+def test_controllers_of_the_factory():
+    from laddermill_gym.control.factory import make_controller
+
+    ctrl = make_controller("open_loop", PMC)
+    obs = np.zeros((2, 7 * 101 + 2), dtype=np.float32)
+    assert np.array_equal(ctrl.predict(obs)[0], np.zeros((2, 202), dtype=np.float32))
+    with pytest.raises(ValueError, match="not available for the point-mass"):
+        make_controller("lqr", PMC)
 
 
 def test_wing_env_points_to_the_point_mass_env():

@@ -4,6 +4,8 @@
 * ``lqr`` (the environment's default design, configs/agents/lqr_<scene>.yaml) or ``lqr:<config.yaml>``;
 * ``scripted`` (PumpingKite-v0 only): the scripted pumping cycle; there ``lqr`` is the cycle with the lateral LQR
   (``control/pumping_cycle.py``) and ``open_loop`` the reel-out trim with the winch stopped;
+* PointMassChain-v0 (the point-mass fidelity): ``open_loop`` holds the start attitude; ``lqr`` raises ValueError
+  (the LQR designs are the rigid wings');
 * a path to a training run folder or model file: a Stable-Baselines3 policy (``rl`` extra).
 """
 
@@ -115,6 +117,25 @@ def _pumping_controller(spec: str, kw: dict) -> Controller:
     return PumpingCycleController(task, lateral_lqr(task, path))
 
 
+def _pointmass_controller(spec: str, kw: dict) -> Controller:
+    """PointMassChain-v0: ``open_loop`` (the zero action: every kite holds the start attitude). The LQR designs
+    linearise the rigid wings (tail surfaces, body rates), which a point-mass kite does not have."""
+    if spec != "open_loop":
+        raise ValueError(f"controller {spec!r} is not available for the point-mass fidelity (its kites have no tail "
+                         "surfaces and no rotational dynamics to design an LQR on): use 'open_loop' or a trained "
+                         "policy")
+    import numpy as np
+
+    from laddermill_gym.control.open_loop import OpenLoopController
+    from laddermill_gym.envs.pointmass.task import PointMassTask
+
+    task = PointMassTask(1, **kw)  # its start is memoised per process
+    n = task.n_actions
+    ctrl = OpenLoopController(np.zeros(n), np.zeros(n), np.ones(n))
+    ctrl.obs_dim = task.obs_dim  # its default assumes the wing layout
+    return ctrl
+
+
 def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> Controller:
     """The controller named by ``spec`` for environment ``env_id`` (with argument overrides ``env_kwargs``).
 
@@ -129,6 +150,8 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     if task_class(env_id).__name__ == "PumpingTask" and (spec in ("open_loop", "scripted", "lqr")
                                                         or spec.startswith("lqr:")):
         return _pumping_controller(spec, kw)
+    if task_class(env_id).__name__ == "PointMassTask" and (spec in ("open_loop", "lqr") or spec.startswith("lqr:")):
+        return _pointmass_controller(spec, kw)
     if task_class(env_id).__name__ == "MillTask" and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):
         return _mill_controller(spec, kw)
     if spec in ("open_loop",) or spec == "lqr" or spec.startswith("lqr:"):

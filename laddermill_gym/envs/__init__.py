@@ -13,15 +13,21 @@ Registered on ``import laddermill_gym``:
   winch (configs/pumping/pumping_kite.yaml, 20 Hz control of the tails and the winch speed, 400 s episodes of about
   two reel-out / reel-in cycles, the 0.01 rad direction step at 1 s), :class:`~laddermill_gym.envs.pumping.env.
   PumpingKiteEnv`;
+* ``laddermill_gym/PointMassChain-v0``: the paper's 101-wing chain (scene ``ladder_chain``) at the point-mass
+  fidelity of Podgaets & Ockels (2007): point-mass kites whose pitch and roll are the actions, one 70 m element per
+  piece, the implicit point-mass step of 0.025 s, 20 Hz control, 120 s episodes from the chain settled for 600 s,
+  the 0.01 rad direction step at 1 s), :class:`~laddermill_gym.envs.pointmass.env.PointMassEnv`;
 * ``laddermill_gym/Rotorcraft-v0``: Roberts' tethered twin-rotor craft (configs/rotorcraft/, its own 2 ms
   RK4 step, 20 Hz control of collective and differential collective, 120 s episodes, a 0.01 rad direction
   step at 1 s), :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`.
 
 Every environment has a native batched ``vector_entry_point`` (:class:`~laddermill_gym.envs.vector.WingVectorEnv`,
 :class:`~laddermill_gym.envs.rotorcraft.vector.RotorcraftVectorEnv`): one compiled kernel steps all copies,
-``gymnasium.make_vec(id, num_envs=n, vectorization_mode="vector_entry_point")``. Each is a task with B copies
-(:class:`~laddermill_gym.envs.task.WingTask`, :class:`~laddermill_gym.envs.rotorcraft.task.CraftTask`), whose
-arguments are the environment's (:func:`env_arguments`).
+``gymnasium.make_vec(id, num_envs=n, vectorization_mode="vector_entry_point")`` (PointMassChain-v0's
+:class:`~laddermill_gym.envs.pointmass.vector.PointMassVectorEnv` steps its copies one after another by the compiled
+point-mass kernels within one call). Each is a task with B copies (:class:`~laddermill_gym.envs.task.WingTask`,
+:class:`~laddermill_gym.envs.rotorcraft.task.CraftTask`, :class:`~laddermill_gym.envs.pointmass.task.PointMassTask`
+...), whose arguments are the environment's (:func:`env_arguments`).
 """
 
 import importlib
@@ -30,6 +36,8 @@ import inspect
 from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
 from laddermill_gym.envs.laddermill.env import LadderMillEnv
 from laddermill_gym.envs.laddermill.vector import LadderMillVectorEnv
+from laddermill_gym.envs.pointmass.env import PointMassEnv
+from laddermill_gym.envs.pointmass.vector import PointMassVectorEnv
 from laddermill_gym.envs.pumping.env import PumpingKiteEnv
 from laddermill_gym.envs.pumping.vector import PumpingKiteVectorEnv
 from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
@@ -41,7 +49,8 @@ from laddermill_gym.envs.wing_env import WingEnv
 __all__ = ["DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule", "FAILURES", "RewardConfig",
            "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "RotorcraftEnv", "RotorcraftVectorEnv",
            "LadderMillEnv", "LadderMillVectorEnv", "PumpingKiteEnv", "PumpingKiteVectorEnv",
-           "ENV_IDS", "ENTRY_POINTS", "register_envs", "task_class", "env_arguments"]
+           "PointMassEnv", "PointMassVectorEnv", "ENV_IDS", "ENTRY_POINTS", "register_envs", "task_class",
+           "env_arguments"]
 
 #: Registered environment ids and their default arguments (units: seconds).
 ENV_IDS: dict[str, dict] = {
@@ -52,6 +61,17 @@ ENV_IDS: dict[str, dict] = {
     "laddermill_gym/Rotorcraft-v0": dict(craft="roberts_flying_model", control_dt=0.05, episode_time=120.0),
     "laddermill_gym/LadderMill-v0": dict(scene="laddermill", control_dt=0.05, episode_time=120.0),
     "laddermill_gym/PumpingKite-v0": dict(config="pumping_kite", control_dt=0.05, episode_time=400.0),
+    # ladder_chain at the point-mass fidelity. element_length 70 m: one element per 70 m piece, as LadderChain-v0
+    # (elements_per_piece 1, Meijaard et al. 1999); its settled base tension 178.7 kN against 178.9 kN at 1 m
+    # (docs/pointmass.md, "Between fidelities"). method implicit, dt 0.025 s: the explicit step must stay below
+    # l0/c = 8.25 ms (c = sqrt(EA/mu) = 8485 m/s, Dyneema 25 mm; sim.pointmass.explicit_stable_dt), 7 steps per
+    # 50 ms period; the implicit one ran 60 s from the rigid start at 0.05 s too (at 7 m elements it failed
+    # there, 0.025 s held), 2 steps per period, kite positions within 0.5 m of 5 ms steps after 20 s. control_dt
+    # 0.05 s (20 Hz) and episode_time 120 s: LadderChain-v0's. settle_time 600 s: from the rigid equilibrium the
+    # point-mass chain moves ~800 m and comes to rest (node speeds 0.14 m/s at 400 s, measured).
+    "laddermill_gym/PointMassChain-v0": dict(scene="ladder_chain", scene_options={"element_length": 70.0,
+                                             "method": "implicit", "dt": 0.025}, settle_time=600.0,
+                                             control_dt=0.05, episode_time=120.0, groups="per_kite"),
 }
 _WING = ("laddermill_gym.envs.wing_env:WingEnv", "laddermill_gym.envs.vector:WingVectorEnv",
          "laddermill_gym.envs.task:WingTask")
@@ -68,6 +88,9 @@ ENTRY_POINTS: dict[str, tuple[str, str, str]] = {
     "laddermill_gym/PumpingKite-v0": ("laddermill_gym.envs.pumping.env:PumpingKiteEnv",
                                       "laddermill_gym.envs.pumping.vector:PumpingKiteVectorEnv",
                                       "laddermill_gym.envs.pumping.task:PumpingTask"),
+    "laddermill_gym/PointMassChain-v0": ("laddermill_gym.envs.pointmass.env:PointMassEnv",
+                                         "laddermill_gym.envs.pointmass.vector:PointMassVectorEnv",
+                                         "laddermill_gym.envs.pointmass.task:PointMassTask"),
 }
 
 
@@ -77,7 +100,8 @@ def _check_id(env_id: str) -> None:
 
 
 def task_class(env_id: str) -> type:
-    """The task class behind the registered environment ``env_id`` (``WingTask`` or ``CraftTask``): its first
+    """The task class behind the registered environment ``env_id`` (``WingTask``, ``CraftTask``, ``MillTask``,
+    ``PumpingTask`` or ``PointMassTask``): its first
     argument is the number of copies, the others are the environment's."""
     _check_id(env_id)
     module, name = ENTRY_POINTS[env_id][2].split(":")

@@ -61,7 +61,8 @@ def bench_vector(env_id: str, counts=(1, 8, 64, 512), quick: bool = False, echo=
 
 def run_env_benchmark(quick: bool = False, json_path: str | None = None, echo=print) -> dict:
     """The full env benchmark: TetheredWing-v0 at 1, 8, 64, 512 copies; LadderChain-v0 at 1 and 8; Rotorcraft-v0
-    at 1, 16 and 64; LadderMill-v0 at 1 and 8 (after its operating point, about 30 s, once)."""
+    at 1, 16 and 64; LadderMill-v0 at 1 and 8 (after its operating point, about 30 s, once); PointMassChain-v0 at
+    1, 8 and 64."""
     threads = os.environ.get("NUMBA_NUM_THREADS", "default")
     echo(f"Environment throughput (medians; numba threads: {threads}; cpus: {os.cpu_count()})")
     res = {"cpus": os.cpu_count(), "numba_threads": threads}
@@ -74,6 +75,9 @@ def run_env_benchmark(quick: bool = False, json_path: str | None = None, echo=pr
                                      budget=5e4)
     echo("laddermill_gym/LadderMill-v0 (101 wings on the moving cable, 20 Hz control):")
     res["laddermill"] = bench_vector("laddermill_gym/LadderMill-v0", counts=(1, 8), quick=True, echo=echo, budget=2e4)
+    echo("laddermill_gym/PointMassChain-v0 (101 point-mass kites, 2 implicit steps of 25 ms per 20 Hz period):")
+    res["pointmass_chain"] = bench_vector("laddermill_gym/PointMassChain-v0", counts=(1, 8, 64), quick=quick,
+                                          echo=echo, budget=5e4)
     if json_path:
         with open(json_path, "w") as fh:
             json.dump(res, fh, indent=2)

@@ -1,21 +1,30 @@
-"""A scene at the point-mass fidelity as a Gymnasium environment whose actions command the kites' attitude."""
+"""A scene at the point-mass fidelity as a Gymnasium environment whose actions command the kites' attitude
+(``laddermill_gym/PointMassChain-v0``): the single env, a :class:`~laddermill_gym.envs.pointmass.task.PointMassTask`
+with one copy (the vector env, :class:`~laddermill_gym.envs.pointmass.vector.PointMassVectorEnv`, is the same task
+with many)."""
 
 from __future__ import annotations
 
-import math
+import inspect
 from typing import Any
 
 import gymnasium as gym
 import numpy as np
 
-from laddermill_gym.envs.task import RewardConfig
-from laddermill_gym.kernels.pointmass.layout import PU_PITCH, PU_ROLL, PU_SIZE
-from laddermill_gym.ladder.scene import load_scene
-from laddermill_gym.sim.pointmass import PointMassError
+from laddermill_gym.envs.pointmass.task import OBS_PER_KITE, PointMassTask
 
-#: Observation entries per kite: position offset from the start (3) [m], velocity (3) [m/s], tension of the
-#: element below the kite [N].
-OBS_PER_KITE = 7
+__all__ = ["PointMassEnv", "OBS_PER_KITE", "TASK_ARGUMENTS", "check_task_arguments"]
+
+#: The PointMassTask arguments the envs take (all but the number of copies)
+TASK_ARGUMENTS: tuple[str, ...] = tuple(p for p in inspect.signature(PointMassTask).parameters if p != "n_copies")
+
+
+def check_task_arguments(kwargs: dict) -> None:
+    """ValueError naming the arguments (and values) that are not PointMassTask arguments."""
+    unknown = sorted(set(kwargs) - set(TASK_ARGUMENTS))
+    if unknown:
+        raise ValueError(f"{', '.join(f'{k} = {kwargs[k]!r}' for k in unknown)}: not arguments of PointMassEnv "
+                         f"(known: {', '.join(TASK_ARGUMENTS)})")
 
 
 class PointMassEnv(gym.Env):
@@ -26,7 +35,11 @@ class PointMassEnv(gym.Env):
     Any scene read at the point-mass fidelity (``ladder.scene.load_scene(scene, fidelity="pointmass")``,
     Podgaets & Ockels 2007): kites are point masses whose attitude is set directly by the actions, on an elastic
     string (laddermill_gym/docs/pointmass.md). The task: pull on the ground point(s) while holding the kites
-    near the plane of the wind. The kites have no rotational dynamics: an action is the attitude, at once.
+    near the plane of the wind (default disturbance: the wing envs' 0.01 rad wind-direction step at t = 1 s). The
+    kites have no rotational dynamics: an action is the attitude, at once. Registered as
+    ``laddermill_gym/PointMassChain-v0`` (the scene ``ladder_chain``); many copies:
+    ``gymnasium.make_vec(id, n, vectorization_mode="vector_entry_point")`` (the copies are stepped one after
+    another by the compiled kernels, not by one batched kernel call).
 
     ## Action Space
 
@@ -41,121 +54,106 @@ class PointMassEnv(gym.Env):
 
     ## Observation Space
 
-    Box (7 n_kites,) float32, per kite (kite 0 lowest): offset of its position from the start (x, y, z) [m],
-    velocity (x, y, z) [m/s], tension of the cable element below it [N]. Bounds +-(2 x cable length) for
-    offsets, +-max_speed for velocities, 0 to 100 x breaking load for tension.
+    Box (7 n_kites + n_ground,) float32, per kite (kite 0 nearest the start ground point): offset of its position
+    from the start (x, y, z) [m], velocity (x, y, z) [m/s], tension of the cable element below it (towards the
+    start) [N]; then the tension of the element at the start ground point [N] and, for a chain between two
+    ground points, at the end ground point [N] (n_ground = 1 or 2). Bounds +-(2 x cable length) for offsets,
+    +-max_speed for velocities, 0 to 100 x breaking load for tensions.
 
     ## Rewards
 
     r = w_P P / P_ref - w_y S(x_y) - w_u S(x_u) - failure_penalty [terminated], S(x) = 1 - exp(-x), with the
     fields of :class:`~laddermill_gym.envs.task.RewardConfig`: P = T_ground v_reel (single tether) or
-    (T_start - T_end) v_reel (chain between two ground points), v_reel = reel_speed_fraction x v0, P_ref the
-    power at the start; x_y = mean over kites of (dy / lateral_scale)^2 (default 5 % of the piece length);
-    x_u = mean of a^2. The rate term of the rigid envs is absent (a point mass has no body rates).
+    (T_start - T_end) v_reel (chain between two ground points), the ground tensions being the observation's last
+    entries, v_reel = reel_speed_fraction x v0, P_ref the power at the start (or ``reference_power_W``);
+    x_y = mean over kites of (dy / lateral_scale)^2 (default 5 % of the piece length); x_u = mean of a^2. The rate
+    term of the rigid envs is absent (a point mass has no body rates; ``info["reward_rates"]`` is 0).
 
     ## Starting State
 
     The scene's point-mass start (quasi-static for a free upper end, the rigid static equilibrium for a chain
-    between two ground points), computed once per env; every reset returns to it.
+    between two ground points), then ``settle_time`` [s] in the steady wind with the start attitude held
+    (default 0), computed once per process; every reset returns to it with a fresh wind disturbance drawn from
+    ``np_random``.
 
     ## Episode End
 
     terminated: the simulator stops (non-finite state, a node faster than ``integrator.max_speed``, a node at the
-    ground), a kite below ``min_altitude`` [m], or an element above ``breaking_factor`` x the breaking load.
+    ground), a kite below ``min_altitude`` [m], or an element above ``breaking_factor`` x the breaking load
+    (``info["failure"]``, ``info["failure_name"]``, ``info["failure_reason"]``).
     truncated: ``episode_time`` [s] reached.
 
     ## Arguments
 
-    scene, scene_options (keyword overrides of ``load_scene``, e.g. ``element_length`` [m]), control_dt [s]
-    (a whole number of the scene's steps), episode_time [s], groups, pitch_range_deg, roll_range_deg,
-    reward (RewardConfig), min_altitude [m], breaking_factor [-].
+    scene, scene_options (keyword overrides of ``load_scene``: ``element_length`` [m], default 1 m, ``dt`` [s],
+    ``method``, ``n_wings``), control_dt [s] (a whole number of the scene's steps), episode_time [s],
+    settle_time [s], groups, pitch_range_deg, roll_range_deg, disturbances, wind_dt [s], reward (RewardConfig or
+    dict), min_altitude [m], breaking_factor [-].
 
     ## Version History
 
-    Not registered yet (no id); its vector entry point and registration are future work.
+    * v0 (``laddermill_gym/PointMassChain-v0``): initial version.
     """
 
     metadata = {"render_modes": []}
 
-    def __init__(self, scene: str = "tethered_wing", scene_options: dict | None = None, control_dt: float = 0.05,
-                 episode_time: float = 60.0, groups: str = "all", pitch_range_deg: float = 5.0,
-                 roll_range_deg: float = 15.0, reward: RewardConfig | None = None, min_altitude: float = 10.0,
-                 breaking_factor: float = 1.0):
-        opts = {"element_length": 1.0, **(scene_options or {})}
-        self.scene = load_scene(scene, fidelity="pointmass", **opts)
-        s = self.scene.string
-        n_sub = control_dt / self.scene.dt
-        if abs(n_sub - round(n_sub)) > 1e-9 or round(n_sub) < 1:
-            raise ValueError(f"control_dt = {control_dt!r}: must be a whole number of scene steps ({self.scene.dt} s)")
-        if groups not in ("all", "per_kite"):
-            raise ValueError(f"groups = {groups!r}: must be 'all' or 'per_kite'")
-        self.n_sub, self.control_dt, self.episode_time = int(round(n_sub)), control_dt, episode_time
-        self.groups = groups
-        self.ranges = np.radians([pitch_range_deg, roll_range_deg])
-        self.rc = reward or RewardConfig()
-        self.min_altitude, self.breaking_factor = min_altitude, breaking_factor
-        self.x0, self.u0 = self.scene.initial_state()
-        self.sim = self.scene.simulator(self.x0, self.u0)
-        ng = 1 if groups == "all" else s.n_kites
-        self.action_space = gym.spaces.Box(-1.0, 1.0, (2 * ng,), np.float32)
-        span = 2.0 * s.element_length * s.n_elements
-        hi = np.tile([span] * 3 + [s.max_speed] * 3 + [100.0 * s.cable.breaking_load], s.n_kites)
-        lo = np.tile([-span] * 3 + [-s.max_speed] * 3 + [0.0], s.n_kites)
-        self.observation_space = gym.spaces.Box(lo.astype(np.float32), hi.astype(np.float32), dtype=np.float32)
-        self.v_reel = self.rc.reel_speed_fraction * s.wind.v0
-        self.lateral_scale = self.rc.lateral_scale or 0.05 * self.scene.piece_length
-        self.p_ref = self._power(self.sim.tensions())
-        if not self.p_ref > 0:
-            raise ValueError(f"scene {self.scene.name}: the start gives no positive reference power")
+    def __init__(self, render_mode: str | None = None, **task_kwargs):
+        if render_mode is not None:
+            raise ValueError(f"render_mode = {render_mode!r}: the point-mass env does not render (None only)")
+        task_kwargs.pop("n_copies", None)
+        task_kwargs.pop("max_episode_steps", None)
+        check_task_arguments(task_kwargs)
+        self.task = PointMassTask(1, **task_kwargs)
+        self._kwargs = dict(task_kwargs)
+        self.render_mode = None
+        self.observation_space = gym.spaces.Box(self.task.obs_low.astype(np.float32),
+                                                self.task.obs_high.astype(np.float32), dtype=np.float32)
+        self.action_space = gym.spaces.Box(-1.0, 1.0, (self.task.n_actions,), np.float32)
+        self._needs_reset = True
 
-    def _power(self, tension: np.ndarray) -> float:
-        ends = tension[0] - (tension[-1] if self.scene.string.end is not None else 0.0)
-        return float(ends * self.v_reel)
+    @property
+    def scene(self):
+        """The :class:`~laddermill_gym.ladder.pointmass_scene.PointMassScene`."""
+        return self.task.scene
 
     def commanded_attitude(self, action: np.ndarray) -> np.ndarray:
         """Controls (n_k * 3,) [rad] of a normalised action: the start attitude plus pitch and roll offsets."""
-        a = np.clip(np.asarray(action, dtype=np.float64), -1.0, 1.0).reshape(-1, 2) * self.ranges
-        u = self.u0.reshape(-1, PU_SIZE).copy()
-        u[:, PU_PITCH] += a[:, 0]
-        u[:, PU_ROLL] += a[:, 1]
-        return u.ravel()
-
-    def _observe(self, tension: np.ndarray) -> np.ndarray:
-        s = self.scene.string
-        kn = s.kite_nodes
-        pos = self.sim.positions[kn] - self.x0.reshape(-1, 6)[kn, :3]
-        obs = np.concatenate([pos, self.sim.velocities[kn], tension[kn, None]], axis=1)
-        return np.clip(obs.ravel(), self.observation_space.low, self.observation_space.high).astype(np.float32)
+        return self.task.commanded_attitude(np.asarray(action, dtype=float)[None])[0]
 
     def reset(self, *, seed: int | None = None, options: dict | None = None):
         super().reset(seed=seed)
-        self.sim.x[:] = self.x0
-        self.sim.u[:] = self.u0
-        self.sim.t = 0.0
-        return self._observe(self.sim.tensions()), {"time": 0.0}
+        self.task.reset(np.ones(1, bool), [self.np_random])
+        self._needs_reset = False
+        return self.task.obs[0].astype(np.float32), {"t": 0.0}
 
     def step(self, action):
-        act = np.asarray(action, dtype=np.float64)
-        n_clipped = int(np.sum(np.abs(act) > 1.0))
-        self.sim.u[:] = self.commanded_attitude(act)
-        failure = None
-        try:
-            self.sim.step(self.n_sub)
-        except PointMassError as err:
-            failure = str(err)
-        tension = self.sim.tensions()
-        s = self.scene.string
-        if failure is None and np.min(-self.sim.positions[s.kite_nodes, 2]) < self.min_altitude:
-            failure = "a kite below min_altitude"
-        if failure is None and tension.max() > self.breaking_factor * s.cable.breaking_load:
-            failure = "cable overload"
-        rc = self.rc
-        dy = self.sim.positions[s.kite_nodes, 1] - self.x0.reshape(-1, 6)[s.kite_nodes, 1]
-        terms = {"reward_power": rc.power_weight * self._power(tension) / self.p_ref,
-                 "reward_lateral": -rc.lateral_weight * (1 - math.exp(-np.mean((dy / self.lateral_scale) ** 2))),
-                 "reward_effort": -rc.effort_weight * (1 - math.exp(-np.mean(np.clip(act, -1, 1) ** 2)))}
-        terminated = failure is not None
-        reward = sum(terms.values()) - (rc.failure_penalty if terminated else 0.0)
-        truncated = not terminated and self.sim.t >= self.episode_time - 1e-9
-        info: dict[str, Any] = {"time": self.sim.t, "n_clipped": n_clipped, "failure": failure, **terms}
-        return self._observe(tension), float(reward), terminated, truncated, info
+        if self._needs_reset:
+            raise RuntimeError("step() called before reset() or after the episode ended; call reset()")
+        a = np.asarray(action, dtype=float).reshape(-1)
+        if a.shape != (self.task.n_actions,):
+            raise ValueError(f"action: expected shape ({self.task.n_actions},), got {np.shape(action)}")
+        reward, terminated, truncated, info = self.task.step(a[None])
+        code = int(info["failure"][0])
+        out: dict[str, Any] = {k: v[0].item() for k, v in info.items()}
+        out["failure_name"] = self.task.failure_names[code]
+        out["failure_reason"] = self.task.failure_text(0, code)
+        if terminated[0] or truncated[0]:
+            self._needs_reset = True
+        return self.task.obs[0].astype(np.float32), float(reward[0]), bool(terminated[0]), bool(truncated[0]), out
+
+    def __getstate__(self):
+        b, task = self.task.batch, self.task
+        air = [tuple(getattr(m, f) for f in ("tmod", "ms", "md", "gp", "gv")) for m in b.models]
+        return {"kwargs": self._kwargs, "np_random": self._np_random, "needs_reset": self._needs_reset, "air": air,
+                "arrays": (b.states.copy(), b.controls.copy(), b.t.copy(), b.status.copy(), task.steps.copy(),
+                           task.last_action.copy())}
+
+    def __setstate__(self, state):
+        self.__init__(**state["kwargs"])
+        self._np_random = state["np_random"]
+        b, task = self.task.batch, self.task
+        b.states[:], b.controls[:], b.t[:], b.status[:], task.steps[:], task.last_action[:] = state["arrays"]
+        for i, (tmod, ms, md, gp, gv) in enumerate(state["air"]):
+            b.models[i] = b.models[i]._replace(tmod=tmod, ms=ms, md=md, gp=gp, gv=gv)
+        self._needs_reset = state["needs_reset"]
+        task.observe()

@@ -1,0 +1,120 @@
+"""B copies of one point-mass scene (Podgaets & Ockels 2007) for the point-mass task: the start state (the
+scene's own start, optionally settled in its steady wind, memoised per process) and :class:`PointMassBatch`, the
+copies' states, controls, times and air, stepped by the kernels of ``kernels/pointmass/``.
+
+The copies are B independent strings advanced one after another, each by one call of the compiled multi-step
+kernel (``explicit_advance`` or ``implicit_advance``): there is no kernel that steps all copies in one call yet
+(each copy has its own wind, which the point-mass kernels read from their packed model; a batched kernel would
+take per-copy air arrays as the rigid ``kernels/batch.py`` does). The per-copy cost in Python is one kernel call
+per control period.
+"""
+
+from __future__ import annotations
+
+import functools
+
+import numba
+import numpy as np
+
+from laddermill_gym.atmosphere.field import WindField, pack_wind_field
+from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL
+from laddermill_gym.kernels.pointmass.explicit import CHUNK, explicit_advance, tensions
+from laddermill_gym.kernels.pointmass.implicit import implicit_advance
+from laddermill_gym.ladder.pointmass_scene import PointMassScene
+from laddermill_gym.ladder.scene import load_scene
+from laddermill_gym.model.pointmass import make_work, pack
+from laddermill_gym.sim.pointmass import PointMassError, PointMassSimulator
+
+__all__ = ["PointMassBatch", "pointmass_start", "POINTMASS_FAILURES"]
+
+#: Termination causes (code -> name), the wing envs' codes (``envs/task.py`` FAILURES); 0: still flying.
+POINTMASS_FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state or speed limit)",
+                                      2: "ground contact", 3: "cable over its breaking load"}
+
+
+@functools.lru_cache(maxsize=8)
+def pointmass_start(scene: str, options: tuple, settle_time: float) -> tuple[PointMassScene, np.ndarray, np.ndarray]:
+    """(scene at the point-mass fidelity, start state (6 n,), controls (3 n_k,) [rad]) of ``scene`` with
+    ``load_scene`` overrides ``options`` (sorted (key, value) pairs): the scene's own start
+    (:meth:`~laddermill_gym.ladder.pointmass_scene.PointMassScene.initial_state`), then ``settle_time`` [s] of
+    its own method and step in its steady wind with the start attitude held. Memoised per process (a chain's
+    start solves the rigid statics, about a second); the arrays are read-only."""
+    sc = load_scene(scene, fidelity="pointmass", **dict(options))
+    x0, u0 = sc.initial_state()
+    x0, u0 = np.array(x0, dtype=float), np.array(u0, dtype=float)
+    if settle_time > 0:
+        sim = PointMassSimulator(sc.string, x0, u0, sc.dt, sc.method)
+        try:
+            sim.advance(settle_time, chunk=1000)
+        except PointMassError as err:
+            raise ValueError(f"scene {sc.name} ({sc.file}): settle_time = {settle_time!r} s: settling failed "
+                             f"({err})") from None
+        x0 = sim.x.copy()
+    x0.setflags(write=False)
+    u0.setflags(write=False)
+    return sc, x0, u0
+
+
+class PointMassBatch:
+    """B copies of a point-mass scene: ``states`` (B, 6 n), ``controls`` (B, 3 n_k) [rad], ``t`` (B,) [s],
+    ``status`` (B,) the last kernel status (``kernels/pointmass/layout.py`` PM_*), ``tension`` (B, n_e) [N] the
+    element tensions (Voigt damping included) at the current states (after :meth:`update_tensions`), and one
+    packed model per copy (``models``, the scene's string with that copy's air) and workspace (``works``)."""
+
+    def __init__(self, scene: PointMassScene, n_copies: int):
+        s = scene.string
+        self.scene, self.string, self.n_copies = scene, s, int(n_copies)
+        self.dt, self.method = float(scene.dt), scene.method
+        self._advance = explicit_advance if self.method == "explicit" else implicit_advance
+        B = self.n_copies
+        self.states = np.zeros((B, s.state_size))
+        self.controls = np.zeros((B, 3 * max(1, s.n_kites)))
+        self.t = np.zeros(B)
+        self.status = np.zeros(B, dtype=np.int64)
+        self.tension = np.zeros((B, s.n_elements))
+        self.models = [pack(s) for _ in range(B)]
+        self.works = [make_work(s) for _ in range(B)]
+        #: numba threads of the kernels' parallel loops: one per CHUNK nodes (sim/pointmass.py's rule)
+        self.threads = max(1, -(-s.n_nodes // CHUNK))
+
+    def set_wind(self, b: int, field: WindField) -> None:
+        """The air of copy ``b``: a :class:`~laddermill_gym.atmosphere.field.WindField` (modulation from t = 0,
+        optional gust grid) over the scene's steady profile."""
+        tmod, ms, md, gp, gv = pack_wind_field(field)
+        self.models[b] = self.models[b]._replace(tmod=tmod, ms=ms, md=md, gp=gp, gv=gv)
+
+    def step(self, nsteps: np.ndarray) -> None:
+        """Advance copy b by ``nsteps[b]`` steps of dt (0 or less: untouched); its time by the steps done and its
+        ``status`` to the kernel's (a failed copy stays at the state of its failed step)."""
+        before = numba.get_num_threads()
+        numba.set_num_threads(min(self.threads, before))
+        try:
+            for b in np.flatnonzero(nsteps > 0):
+                st, done = self._advance(float(self.t[b]), self.states[b], self.controls[b], self.dt,
+                                         int(nsteps[b]), self.models[b], self.works[b])
+                self.t[b] += done * self.dt
+                self.status[b] = st
+        finally:
+            numba.set_num_threads(before)
+
+    def update_tensions(self, mask: np.ndarray) -> None:
+        """Recompute ``tension`` of the copies in ``mask`` (B,) from their states."""
+        for b in np.flatnonzero(mask):
+            tensions(self.states[b], self.models[b], self.works[b].tension, True)
+            self.tension[b] = self.works[b].tension
+
+    def positions(self, nodes: np.ndarray) -> np.ndarray:
+        """Positions (B, len(nodes), 3) [m] of the given nodes in every copy (a copy)."""
+        return self.states.reshape(self.n_copies, -1, N3_SIZE)[:, nodes, N3_POS:N3_POS + 3].copy()
+
+    def velocities(self, nodes: np.ndarray) -> np.ndarray:
+        """Velocities (B, len(nodes), 3) [m/s] of the given nodes in every copy (a copy)."""
+        return self.states.reshape(self.n_copies, -1, N3_SIZE)[:, nodes, N3_VEL:N3_VEL + 3].copy()
+
+    def simulator(self, b: int) -> PointMassSimulator:
+        """A :class:`~laddermill_gym.sim.pointmass.PointMassSimulator` of copy ``b``: a snapshot of its state,
+        controls and time, with its air (shared arrays, never written), stepped by the same kernel."""
+        sim = PointMassSimulator(self.string, self.states[b], self.controls[b], self.dt, self.method,
+                                 t0=float(self.t[b]))
+        sim.M = self.models[b]
+        return sim

@@ -1,0 +1,244 @@
+"""The point-mass task shared by the single and the vector environments: B copies of a scene at the point-mass
+fidelity (Podgaets & Ockels 2007, laddermill_gym/docs/pointmass.md) whose kites' attitude is the action, with the
+observation, the rewards of the rigid envs' :class:`~laddermill_gym.envs.task.RewardConfig`, terminations and
+wind disturbances around them.
+
+A single environment is the task with B = 1, so single and vector environments run the same code. The copies are
+stepped one after another by the compiled multi-step kernels (:class:`~laddermill_gym.envs.pointmass.batch.
+PointMassBatch`: one kernel call per copy and control period, not one call for all copies).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, disturbance_from_dict, sample_wind_field
+from laddermill_gym.envs.pointmass.batch import POINTMASS_FAILURES, PointMassBatch, pointmass_start
+from laddermill_gym.envs.task import RewardConfig, config_from
+from laddermill_gym.kernels.pointmass.layout import PM_GROUND, PM_OK, PU_PITCH, PU_ROLL, PU_SIZE
+from laddermill_gym.sim.pointmass import STATUS_TEXT
+
+__all__ = ["PointMassTask", "OBS_PER_KITE"]
+
+#: Observation entries per kite: position offset from the start (3) [m], velocity (3) [m/s], tension of the
+#: element below the kite [N]; then the tension at each ground point (start, and end for a chain) [N].
+OBS_PER_KITE = 7
+
+
+def _positive(name: str, v, unit: str) -> float:
+    if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+        raise ValueError(f"{name} = {v!r}: must be a finite number > 0 {unit}")
+    return float(v)
+
+
+def _disturbances(disturbances) -> tuple[Disturbance, ...]:
+    """Disturbance objects (or their config dicts); None: the wing envs' 0.01 rad direction step at 1 s."""
+    if disturbances is None:
+        return (DirectionStep(),)
+    out = []
+    for i, d in enumerate(disturbances):
+        d = disturbance_from_dict(d, f"disturbances[{i}]") if isinstance(d, dict) else d
+        if not isinstance(d, Disturbance):
+            raise ValueError(f"disturbances[{i}] = {d!r}: not a Disturbance or its config dict")
+        out.append(d)
+    return tuple(out)
+
+
+class PointMassTask:
+    """B copies of a point-mass scene as an RL task (arguments: :class:`PointMassEnv
+    <laddermill_gym.envs.pointmass.env.PointMassEnv>`; ``n_copies`` = B).
+
+    Attributes (B copies): ``obs`` (B, obs_dim) clipped observations, ``raw_obs`` unclipped, ``obs_low`` /
+    ``obs_high`` (obs_dim,) bounds, ``scene`` the :class:`~laddermill_gym.ladder.pointmass_scene.PointMassScene`,
+    ``x_trim`` / ``u_trim`` the start state (6 n,) and attitude (3 n_k,) [rad], ``nominal`` (n_k, 3) the kites'
+    start positions [m], ``batch`` the :class:`~laddermill_gym.envs.pointmass.batch.PointMassBatch`, ``steps``
+    (B,) control periods of the episode, ``last_action`` (B, n_actions), ``p_ref`` [W] the reference power.
+    """
+
+    failure_names = POINTMASS_FAILURES
+
+    def __init__(self, n_copies: int = 1, scene: str = "tethered_wing", scene_options: dict | None = None,
+                 control_dt: float = 0.05, episode_time: float = 60.0, settle_time: float = 0.0,
+                 groups: str = "all", pitch_range_deg: float = 5.0, roll_range_deg: float = 15.0,
+                 disturbances=None, wind_dt: float = 0.1, reward=None, min_altitude: float = 10.0,
+                 breaking_factor: float = 1.0):
+        if isinstance(n_copies, bool) or int(n_copies) != n_copies or n_copies < 1:
+            raise ValueError(f"n_copies = {n_copies!r}: must be a positive integer")
+        self.control_dt = _positive("control_dt", control_dt, "s")
+        self.episode_time = _positive("episode_time", episode_time, "s")
+        self.wind_dt = _positive("wind_dt", wind_dt, "s")
+        if isinstance(settle_time, bool) or not (isinstance(settle_time, (int, float)) and settle_time >= 0):
+            raise ValueError(f"settle_time = {settle_time!r}: must be a number >= 0 s")
+        if groups not in ("all", "per_kite"):
+            raise ValueError(f"groups = {groups!r}: must be 'all' or 'per_kite'")
+        self.ranges = np.radians([_positive("pitch_range_deg", pitch_range_deg, "deg"),
+                                  _positive("roll_range_deg", roll_range_deg, "deg")])
+        self.min_altitude = float(min_altitude)
+        self.breaking_factor = _positive("breaking_factor", breaking_factor, "(-)")
+        self.disturbances = _disturbances(disturbances)
+        self.reward_config = rc = config_from(reward, RewardConfig, "reward")
+        options = {"element_length": 1.0, **(scene_options or {})}
+        self.scene, self.x_trim, self.u_trim = pointmass_start(str(scene), tuple(sorted(options.items())),
+                                                               float(settle_time))
+        sc, s = self.scene, self.scene.string
+        self.string = s
+        if s.n_kites < 1:
+            raise ValueError(f"scene {sc.name} ({sc.file}): no kites; the point-mass task flies at least one")
+        self.n_substeps = int(round(self.control_dt / sc.dt))
+        if self.n_substeps < 1 or abs(self.n_substeps * sc.dt - self.control_dt) > 1e-9 * self.control_dt:
+            raise ValueError(f"control_dt = {control_dt!r}: must be a whole number of scene steps ({sc.dt} s)")
+        self.n_steps_max = int(round(self.episode_time / self.control_dt))
+        self.n_copies = B = int(n_copies)
+        self.n_wings = s.n_kites
+        self.groups = groups
+        self.kite_nodes = s.kite_nodes
+        self.nominal = self.x_trim.reshape(-1, 6)[self.kite_nodes, :3].copy()
+        self.n_actions = 2 * (1 if groups == "all" else s.n_kites)
+        self.trim_action = np.zeros(self.n_actions)
+        self.n_ground = 1 + (s.end is not None)
+        self.obs_dim = OBS_PER_KITE * s.n_kites + self.n_ground
+        span = 2.0 * s.element_length * s.n_elements
+        t_hi = 100.0 * s.cable.breaking_load
+        self.obs_high = np.concatenate([np.tile([span] * 3 + [s.max_speed] * 3 + [t_hi], s.n_kites),
+                                        [t_hi] * self.n_ground])
+        self.obs_low = np.concatenate([np.tile([-span] * 3 + [-s.max_speed] * 3 + [0.0], s.n_kites),
+                                       [0.0] * self.n_ground])
+        self.breaking_tension = self.breaking_factor * s.cable.breaking_load
+        self.v_reel = rc.reel_speed_fraction * s.wind.v0
+        self.lateral_scale = rc.lateral_scale or 0.05 * sc.piece_length
+        self.batch = PointMassBatch(sc, B)
+        self.batch.states[:] = self.x_trim
+        self.batch.controls[:] = self.u_trim
+        self.batch.update_tensions(np.ones(B, bool))
+        start_power = float(self._power(self.batch.tension[:1])[0])
+        self.p_ref = rc.reference_power_W or start_power
+        if not self.p_ref > 0:
+            raise ValueError(f"scene {sc.name} ({sc.file}): the start gives no positive reference power "
+                             f"({start_power:.6g} W); set reward.reference_power_W")
+        self.raw_obs = np.zeros((B, self.obs_dim))
+        self.obs = np.zeros((B, self.obs_dim))
+        self.steps = np.zeros(B, dtype=np.int64)
+        self.last_action = np.zeros((B, self.n_actions))
+        self._failure_value = np.zeros(B)
+        self._compose()
+
+    # ------------------------------------------------------------------ read-outs
+    def _power(self, tension: np.ndarray) -> np.ndarray:
+        """Ground-generator power [W] (B,) of element tensions (B, n_e): (T_start - T_end) v_reel for a chain
+        between two ground points, T_start v_reel for a free upper end."""
+        ends = tension[:, 0] - (tension[:, -1] if self.string.end is not None else 0.0)
+        return ends * self.v_reel
+
+    def _compose(self) -> None:
+        """raw_obs from the states and tensions; obs = raw_obs clipped to the bounds (non-finite: the bound)."""
+        b, kn, nk = self.batch, self.kite_nodes, self.string.n_kites
+        per = self.raw_obs[:, : OBS_PER_KITE * nk].reshape(self.n_copies, nk, OBS_PER_KITE)
+        per[:, :, 0:3] = b.positions(kn) - self.nominal
+        per[:, :, 3:6] = b.velocities(kn)
+        per[:, :, 6] = b.tension[:, kn]
+        self.raw_obs[:, OBS_PER_KITE * nk] = b.tension[:, 0]
+        if self.n_ground == 2:
+            self.raw_obs[:, -1] = b.tension[:, -1]
+        ro, lo, hi = self.raw_obs, self.obs_low, self.obs_high
+        np.clip(np.where(np.isfinite(ro), ro, np.where(ro < 0, lo, hi)), lo, hi, out=self.obs)
+
+    def observe(self) -> None:
+        """Observe every copy at its current state without stepping (after restoring states by hand)."""
+        self.batch.update_tensions(np.ones(self.n_copies, bool))
+        self._compose()
+
+    def commanded_attitude(self, action: np.ndarray) -> np.ndarray:
+        """Controls (B, 3 n_k) [rad] of normalised actions (B, n_actions): the start attitude plus the pitch and
+        roll offsets a x range (entries clipped to [-1, 1]), one pair for all kites or one per kite."""
+        a = np.clip(np.asarray(action, dtype=float).reshape(self.n_copies, -1, 2), -1.0, 1.0) * self.ranges
+        nk = self.string.n_kites
+        u = np.broadcast_to(self.u_trim.reshape(1, nk, PU_SIZE), (self.n_copies, nk, PU_SIZE)).copy()
+        u[:, :, PU_PITCH] += a[:, :, 0]
+        u[:, :, PU_ROLL] += a[:, :, 1]
+        return u.reshape(self.n_copies, -1)
+
+    # ------------------------------------------------------------------ episodes
+    def reset(self, mask: np.ndarray, rngs) -> None:
+        """Start new episodes in the copies selected by ``mask`` (B,): the start state and attitude, t = 0, a
+        fresh wind disturbance drawn with ``rngs[b]``, and observe them. Other copies are untouched."""
+        b = self.batch
+        idx = np.flatnonzero(mask)
+        for i in idx:
+            b.set_wind(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rngs[i]))
+        b.states[idx] = self.x_trim
+        b.controls[idx] = self.u_trim
+        b.t[idx] = 0.0
+        b.status[idx] = PM_OK
+        self.steps[idx] = 0
+        self.last_action[idx] = 0.0
+        b.update_tensions(np.asarray(mask, bool))
+        self._compose()
+
+    def _failures(self, sel: np.ndarray, low: np.ndarray, peak: np.ndarray) -> np.ndarray:
+        """Failure codes (B,) (:data:`POINTMASS_FAILURES`) of the copies in ``sel``, given the lowest kite altitude
+        ``low`` (B,) [m] and the largest tension ``peak`` (B,) [N]; ``_failure_value`` keeps the quantity."""
+        b, code = self.batch, np.zeros(self.n_copies, dtype=np.int64)
+        for i in np.flatnonzero(sel):
+            if b.status[i] != PM_OK:
+                code[i] = 2 if b.status[i] == PM_GROUND else 1
+            elif low[i] < self.min_altitude:
+                code[i], self._failure_value[i] = 2, low[i]
+            elif peak[i] > self.breaking_tension:
+                code[i], self._failure_value[i] = 3, peak[i]
+        return code
+
+    def step(self, action: np.ndarray, mask: np.ndarray | None = None):
+        """Apply normalised actions (B, n_actions) for one control period to the copies in ``mask`` (default
+        all) and evaluate them: (reward (B,), terminated (B,), truncated (B,), info dict of (B,) arrays: reward
+        terms, ``power_W``, ``max_tension_N``, ``min_altitude_m``, ``t`` [s], ``n_clipped``, ``failure``)."""
+        a = np.asarray(action, dtype=float).reshape(self.n_copies, self.n_actions)
+        if not np.all(np.isfinite(a)):
+            raise ValueError(f"action has non-finite entries: {a[~np.isfinite(a)][:4]}")
+        n_clipped = np.count_nonzero(np.abs(a) > 1.0, axis=1)
+        a = np.clip(a, -1.0, 1.0)
+        b = self.batch
+        sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
+        b.controls[sel] = self.commanded_attitude(a)[sel]
+        self.last_action[sel] = a[sel]
+        b.step(np.where(sel, self.n_substeps, 0))
+        b.update_tensions(sel)
+        self.steps[sel] += 1
+        self._compose()
+        kites = b.positions(self.kite_nodes)
+        low, peak = -np.max(kites[:, :, 2], axis=1), np.max(b.tension, axis=1)
+        failure = self._failures(sel, low, peak)
+        rc = self.reward_config
+        power = self._power(b.tension)
+        dy = kites[:, :, 1] - self.nominal[:, 1]
+        terminated = failure > 0
+        info = {"reward_power": rc.power_weight * power / self.p_ref,
+                "reward_lateral": -rc.lateral_weight * -np.expm1(-np.mean((dy / self.lateral_scale) ** 2, axis=1)),
+                "reward_rates": np.zeros(self.n_copies),
+                "reward_effort": -rc.effort_weight * -np.expm1(-np.mean(a ** 2, axis=1)),
+                "reward_failure": -rc.failure_penalty * terminated}
+        reward = sum(info.values())
+        truncated = ~terminated & (self.steps >= self.n_steps_max)
+        info.update(power_W=power, max_tension_N=peak, min_altitude_m=low, t=b.t.copy(), n_clipped=n_clipped,
+                    failure=failure)
+        return reward, terminated, truncated, info
+
+    # ------------------------------------------------------------------ read-outs
+    def failure_text(self, b: int, code: int) -> str:
+        """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0."""
+        if code == 0:
+            return ""
+        t = float(self.batch.t[b])
+        st = int(self.batch.status[b])
+        if st != PM_OK:
+            return f"t = {t:.3f} s: the simulator stopped: {STATUS_TEXT.get(st, st)}"
+        if code == 2:
+            return f"t = {t:.3f} s: a kite at {self._failure_value[b]:.3f} m, below min_altitude {self.min_altitude} m"
+        return (f"t = {t:.3f} s: tension {self._failure_value[b]:.6g} N over {self.breaking_factor} x the breaking "
+                f"load ({self.breaking_tension:.6g} N)")
+
+    def simulator(self, b: int = 0):
+        """A :class:`~laddermill_gym.sim.pointmass.PointMassSimulator` of copy ``b`` (snapshot of its state, time,
+        controls and air)."""
+        return self.batch.simulator(b)
