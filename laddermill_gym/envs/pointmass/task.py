@@ -203,7 +203,6 @@ class PointMassTask:
         b.controls[sel] = self.commanded_attitude(a)[sel]
         self.last_action[sel] = a[sel]
         b.step(np.where(sel, self.n_substeps, 0))
-        b.update_tensions(sel)
         self.steps[sel] += 1
         self._compose()
         kites = b.positions(self.kite_nodes)
