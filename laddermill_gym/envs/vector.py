@@ -92,8 +92,9 @@ class TaskVectorEnv(VectorEnv):
             reward[resetting] = 0.0
             terminated[resetting] = False
             truncated[resetting] = False
-            for k in ZEROED_ON_RESET:
-                info[k][resetting] = 0
+            for k in ZEROED_ON_RESET:  # the terms a task reports (PumpingKite-v0 has no reward_effort)
+                if k in info:
+                    info[k][resetting] = 0
         else:
             reward, terminated, truncated, info = self.task.step(a)
         done = terminated | truncated

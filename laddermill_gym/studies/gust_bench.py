@@ -47,10 +47,15 @@ def _lateral_fn(env, n: int, nw: int):
 
 
 def _nominal_action(task) -> np.ndarray:
+    """The trim action (n_actions,) the control effort is measured from: the action map's ``nominal_action``, the
+    task's ``trim_action``, else zeros (PumpingKite-v0: a = 0 is the reel-out trim with the winch stopped, so there
+    the effort includes the cycle's winch commands)."""
     actions = getattr(task, "actions", None)
     if actions is not None and hasattr(actions, "nominal_action"):
         return np.asarray(actions.nominal_action, dtype=float)
-    return np.asarray(task.trim_action, dtype=float)
+    if hasattr(task, "trim_action"):
+        return np.asarray(task.trim_action, dtype=float)
+    return np.zeros(int(task.n_actions))
 
 
 def _tension(info) -> np.ndarray:

@@ -18,6 +18,7 @@ from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
 from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry, sample_wind_field
 from laddermill_gym.envs.laddermill.actions import SlotActionMap, resolve_slot_groups
 from laddermill_gym.envs.laddermill.evaluate import evaluate_copies, failure_text
+from laddermill_gym.envs.laddermill.gust_extent import LoopExtent, check_turbulence_cover, extent, loop_points
 from laddermill_gym.envs.laddermill.observation import (
     N_OBS_PER_SLOT,
     N_STATION_OBS,
@@ -83,7 +84,10 @@ class MillTask:
     unclipped, ``aux`` (B, N_AUX) kernel read-outs, ``power`` (B,) electrical generator power [W], ``op`` the
     :class:`~laddermill_gym.envs.laddermill.operating_point.OperatingPoint`, ``p_ref`` [W], ``u_op``
     (n_controls,) operating-point controls, ``energy_start`` (B,) generator energy at the start of the last control
-    period [J], ``batch`` the :class:`~laddermill_gym.sim.batch.BatchSimulator`.
+    period [J], ``batch`` the :class:`~laddermill_gym.sim.batch.BatchSimulator`, ``loop_points`` (m, 3) the points
+    the loop passes through over a transfer period [m] (wings over the orbit, cable nodes, ground stations:
+    :mod:`~laddermill_gym.envs.laddermill.gust_extent`), which a turbulence grid must cover (a RuntimeWarning at
+    construction names a grid that does not; :meth:`loop_extent` gives the ranges).
     """
 
     #: failure code -> name (the SB3 adapter and the evaluation harness read it)
@@ -134,6 +138,8 @@ class MillTask:
         geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid (turbulence)
         self.batch = BatchSimulator(asm, B, sc.settings, n_modulation=max(2, n_mod),
                                     n_grid=0 if geom is None else geom.floats)
+        self.loop_points = loop_points(self.op, asm)
+        check_turbulence_cover(self.disturbances, self.loop_points)
         self.xoff = asm.body_state_size
         lay = sc.layout
         self.below = np.array([lay.piece_elements[k][-1] for k in range(n)], dtype=np.int64)
@@ -311,6 +317,11 @@ class MillTask:
         return evaluate_copies(self, a, n_clipped)
 
     # ------------------------------------------------------------------ read-outs
+    def loop_extent(self, heading: float = 0.0) -> LoopExtent:
+        """Height and along-wind (p . e) ranges [m] of ``loop_points`` for a gust grid of ``heading`` [rad] (0: the
+        undisturbed wind, e = (-1, 0, 0)): the least ``heights`` and ``along_wind`` of a turbulence over the mill."""
+        return extent(self.loop_points, heading)
+
     def simulator(self, b: int = 0) -> Simulator:
         """A :class:`~laddermill_gym.sim.simulator.Simulator` of copy ``b`` (its state, time [s], controls and wind;
         a snapshot: stepping it does not step the copy). ``generator_power()``, ``slot_wings()`` etc. read it out."""

@@ -13,7 +13,13 @@ import math
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, disturbance_from_dict, sample_wind_field
+from laddermill_gym.atmosphere.disturbances import (
+    DirectionStep,
+    Disturbance,
+    disturbance_from_dict,
+    grid_geometry,
+    sample_wind_field,
+)
 from laddermill_gym.atmosphere.wind_kernels import modulation, wind_point
 from laddermill_gym.envs.pumping.actions import PumpingActionMap
 from laddermill_gym.envs.pumping.evaluate import evaluate_copies, failure_text
@@ -102,7 +108,9 @@ class PumpingTask:
         self.parallel = B >= 32 if parallel is None else bool(parallel)
         self._kernel = step_observe_batch if self.parallel else step_observe_serial
         n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
-        self.batch = BatchSimulator(asm, B, sc.settings, n_modulation=max(2, n_mod))
+        geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid (turbulence)
+        self.batch = BatchSimulator(asm, B, sc.settings, n_modulation=max(2, n_mod),
+                                    n_grid=0 if geom is None else geom.floats)
         self.xoff = asm.body_state_size
         self.nominal = np.array(x0[:3], dtype=float).reshape(1, 3)
         self.below = np.array([sc.layout.piece_elements[0][-1]], dtype=np.int64)
