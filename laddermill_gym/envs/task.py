@@ -42,6 +42,7 @@ from laddermill_gym.ladder.scene import Scene, load_scene, options_key, options_
 from laddermill_gym.model.packing import make_workspace
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.reports import ground_stop_text
+from laddermill_gym.sim.simulator import FIXED_STEP_METHODS
 
 __all__ = ["RewardConfig", "TerminationConfig", "WingTask", "FAILURES", "scene_trim"]
 
@@ -118,8 +119,9 @@ class WingTask:
         asm = sc.assembly
         if asm.dim != 3:
             raise ValueError(f"scene {sc.name}: the environments need a 3D scene (dimension = {asm.dim})")
-        if sc.settings.method != "rk4":
-            raise ValueError(f"scene {sc.name}: integrator.method = {sc.settings.method!r}; environments step with rk4")
+        if sc.settings.method not in FIXED_STEP_METHODS:
+            raise ValueError(f"scene {sc.name}: integrator.method = {sc.settings.method!r}; environments step with a "
+                             f"fixed-step method, one of {FIXED_STEP_METHODS}")
         dt = sc.settings.dt
         self.n_substeps = int(round(control_dt / dt))
         if self.n_substeps < 1 or abs(self.n_substeps * dt - control_dt) > 1e-9 * control_dt:
@@ -182,7 +184,7 @@ class WingTask:
     # ------------------------------------------------------------------ kernels
     def _run(self, nsteps: np.ndarray) -> None:
         b = self.batch
-        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.air, b.limits,
+        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.air, b.limits, b.tableau,
                      self._dx, self.nominal, self.below, self.ground, self.obs, self.aux,
                      b.status, b.done)
         b.t += b.done * b.settings.dt

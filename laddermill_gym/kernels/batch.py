@@ -1,8 +1,10 @@
-"""Many copies of one scene advanced together: RK4 over a batch, parallel over copies.
+"""Many copies of one scene advanced together: a fixed-step method (RK4 or a Rosenbrock-W method) over a batch,
+parallel over copies.
 
 Every copy shares the scene's packed model except its wind modulation (speed factor and direction offset
 series, so each copy can see its own gust) and owns one slice of a batched workspace. The per-copy work is
-the same compiled ``rk4_advance`` a single simulator uses, so a batch copy and a single run agree bit for bit.
+the same compiled ``rk4_advance`` / ``w_advance`` a single simulator uses, so a batch copy and a single run agree bit
+for bit.
 """
 
 from numba import njit, prange, types
@@ -10,6 +12,7 @@ from numba.extending import overload
 
 from laddermill_gym.kernels.contract import KModel, KWork
 from laddermill_gym.kernels.integrate import OK, rk4_advance
+from laddermill_gym.kernels.rigid.rosenbrock import w_advance
 
 
 def detach_markers(M: KModel) -> tuple[KModel, object, object]:
@@ -43,13 +46,24 @@ def copy_views(b, M, kind, vehicle, WB, AB):
                 M.caero, vehicle)
     Wb = KWork(WB.D[b], WB.U[b], WB.Y[b], WB.piv[b], WB.bv[b], WB.Rw[b], WB.tension[b], WB.Tr[b],
                WB.Ts[b], WB.er[b], WB.es[b], WB.coef[b], WB.aout[b], WB.vout[b], WB.vscratch[b], WB.k1[b],
-               WB.k2[b], WB.k3[b], WB.k4[b], WB.k5[b], WB.k6[b], WB.k7[b], WB.xt[b], WB.xp[b])
+               WB.k2[b], WB.k3[b], WB.k4[b], WB.k5[b], WB.k6[b], WB.k7[b], WB.xt[b], WB.xp[b], WB.Dm[b], WB.Um[b],
+               WB.Ds[b], WB.Us[b], WB.Rn[b], WB.ke[b], WB.kb[b])
     return Mb, Wb
 
 
+@njit(cache=True, error_model="numpy")
+def advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
+    """n fixed steps of dt [s] from t [s]: RK4 when ``tableau`` is None, else the Rosenbrock-W method of that
+    tableau (``kernels/rigid/rosenbrock.py``); the argument's type selects the compiled path. (status, steps)."""
+    if tableau is None:
+        return rk4_advance(t, x, u, dt, n, M, W, limits)
+    return w_advance(t, x, u, dt, n, M, W, limits, tableau)
+
+
 @njit(cache=True, error_model="numpy", parallel=True)
-def rk4_batch(t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, status, done):
-    """Advance the states X (B, n_state) in place by n RK4 steps of size dt with controls U (B, n_controls).
+def fixed_batch(t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, tableau, status, done):
+    """Advance the states X (B, n_state) in place by n fixed steps of size dt with controls U (B, n_controls): RK4
+    (``tableau`` None) or a Rosenbrock-W method (its tableau, ``kernels/rigid/rosenbrock.py``).
 
     t (B,) [s] is each copy's time (not advanced here). AB is the per-copy air, a KAir of arrays with a leading
     copy axis (wind modulation grid tmod (B, 2), speed factors ms (B, n_mod) [-], direction offsets md (B, n_mod)
@@ -65,6 +79,6 @@ def rk4_batch(t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, status, 
             done[b] = 0
             continue
         Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
-        st, dn = rk4_advance(t[b], X[b], U[b], dt, n, Mb, Wb, limits)
+        st, dn = advance_fixed(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau)
         status[b] = st
         done[b] = dn

@@ -136,6 +136,10 @@ OBS_OFFSET, OBS_VELOCITY, OBS_EULER, OBS_RATES, OBS_ALPHA, OBS_BETA, OBS_TENSION
 #: to stop on the ground (``ground_contact`` "flag" or "off", ``sim/simulator.py``).
 LIM_SPEED, LIM_RATE, LIM_GROUND, LIM_SIZE = 0, 1, 2, 3
 
+# ------------------------------------------------------------------------------------------- element stiffness
+#: Element stiffness ``W.ke`` (symmetric 3 x 3, global axes, [N/m]): entries xx, yy, zz, xy, xz, yz.
+KE_XX, KE_YY, KE_ZZ, KE_XY, KE_XZ, KE_YZ, KE_SIZE = 0, 1, 2, 3, 4, 5, 6
+
 # ------------------------------------------------------------------------------------------- records
 KModel = namedtuple(
     "KModel",
@@ -148,9 +152,13 @@ KModel = namedtuple(
 KAir = namedtuple("KAir", ["tmod", "ms", "md", "gp", "gv"])
 #: Kernel workspace: block matrices and pivots of the elimination, scratch of the element ends, tensions [N]
 #: (``tension``), body rotations (``Rw``), aerodynamic scratch, the vehicle's outputs and scratch (``vout``,
-#: ``vscratch``: per copy, so batched copies never share them) and the integrators' stage vectors.
+#: ``vscratch``: per copy, so batched copies never share them), the integrators' stage vectors, and the linearly
+#: implicit integrator's (``kernels/rigid/rosenbrock.py``) mass matrix at the step's start (``Dm``, ``Um``), its
+#: iteration matrix (``Ds``, ``Us``), the body rotations at the step's start (``Rn``) and each element's stiffness
+#: (``ke`` (n_e, KE_SIZE): the symmetric 3 x 3 axial and geometric stiffness [N/m], slots ``KE_*``) and each body's
+#: load derivatives with its attitude (``kb`` (n_bodies, 6, 3) [N/rad, N m/rad], ``kernels/rigid/body_jacobian.py``).
 KWork = namedtuple(
     "KWork",
     ["D", "U", "Y", "piv", "bv", "Rw", "tension", "Tr", "Ts", "er", "es", "coef", "aout", "vout", "vscratch",
-     "k1", "k2", "k3", "k4", "k5", "k6", "k7", "xt", "xp"],
+     "k1", "k2", "k3", "k4", "k5", "k6", "k7", "xt", "xp", "Dm", "Um", "Ds", "Us", "Rn", "ke", "kb"],
 )

@@ -26,12 +26,27 @@ _RHS: dict[type, object] = {}
 _CHECK: dict[type, object] = {}
 _LOADS: dict[type, object] = {}
 _ENDS: dict[type, tuple] = {}
+_ASSEMBLE: dict[type, object] = {}
 
 
 def register_kind(marker: type, rhs, check) -> None:
     """Register the right-hand side and the post-step check of a model kind (``marker`` namedtuple class)."""
     _RHS[marker] = rhs
     _CHECK[marker] = check
+
+
+def register_assemble(marker: type, assemble) -> None:
+    """Register the assembly of a model kind whose velocities are the 3D rigid blocks (bodies, free nodes):
+    ``assemble(kind, t, x, u, dx, M, W) -> status`` writes every rate of dx except the block velocities' (those
+    are the solution of the block system), the mass matrix blocks into W.D, W.U, the generalised forces into W.bv,
+    the tensions into W.tension and the rotations into W.Rw. A kind with one runs the linearly implicit
+    integrators (``kernels/rigid/rosenbrock.py``)."""
+    _ASSEMBLE[marker] = assemble
+
+
+def has_assemble(kind) -> bool:
+    """Whether the model kind ``kind`` (a marker instance) registered an assembly (Python side)."""
+    return type(kind) in _ASSEMBLE
 
 
 def register_vehicle(marker: type, loads) -> None:
@@ -62,6 +77,11 @@ def model_rhs(kind, t, x, u, dx, M, W):
 def model_check(kind, x, M, limits):
     """Post-step normalisation and check of model kind ``kind`` (jitted code only)."""
     raise NotImplementedError("model_check is resolved inside numba kernels")
+
+
+def model_assemble(kind, t, x, u, dx, M, W):
+    """Block assembly of model kind ``kind`` without the solve (jitted code only)."""
+    raise NotImplementedError("model_assemble is resolved inside numba kernels")
 
 
 def body_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
@@ -95,6 +115,16 @@ def _model_check(kind, x, M, limits):
 
     def f(kind, x, M, limits):
         return impl(kind, x, M, limits)
+
+    return f
+
+
+@overload(model_assemble, inline="always")
+def _model_assemble(kind, t, x, u, dx, M, W):
+    impl = _lookup(_ASSEMBLE, kind, "model kind assembly (a linearly implicit integrator)")
+
+    def f(kind, t, x, u, dx, M, W):
+        return impl(kind, t, x, u, dx, M, W)
 
     return f
 

@@ -60,10 +60,10 @@ from laddermill_gym.kernels.contract import (
     SX_SPEED,
     SX_TRANSFERS,
 )
-from laddermill_gym.kernels.dispatch import register_kind, register_moving_ends
+from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_moving_ends
 from laddermill_gym.kernels.rigid.kinds import LIMIT, OK, rigid2d_check, rigid3d_check
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
-from laddermill_gym.kernels.rigid.rhs3d import rhs3d
+from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
 
 _FM = {"contract", "nsz", "arcp"}
 
@@ -144,6 +144,13 @@ def mill3d_rhs(kind, t, x, u, dx, M, W):
     status = rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
     station_rates(kind.station, t, x, u, dx, W.tension)
     return status
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def mill3d_assemble(kind, t, x, u, dx, M, W):
+    assemble3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+    station_rates(kind.station, t, x, u, dx, W.tension)
+    return 0
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
@@ -307,3 +314,4 @@ register_kind(MovingCable3D, mill3d_rhs, mill3d_check)
 register_kind(MovingCable2D, mill2d_rhs, mill2d_check)
 register_moving_ends(MovingCable3D, mill_rest_length, mill_elongation_rate)
 register_moving_ends(MovingCable2D, mill_rest_length, mill_elongation_rate)
+register_assemble(MovingCable3D, mill3d_assemble)

@@ -39,11 +39,11 @@ from laddermill_gym.kernels.contract import (
     SX_SPEED,
     SX_TRANSFERS,
 )
-from laddermill_gym.kernels.dispatch import register_kind, register_moving_ends
+from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_moving_ends
 from laddermill_gym.kernels.moving_cable import cable_speed, scheduled_speed
 from laddermill_gym.kernels.rigid.kinds import LIMIT, OK, rigid2d_check, rigid3d_check
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
-from laddermill_gym.kernels.rigid.rhs3d import rhs3d
+from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
 
 _FM = {"contract", "nsz", "arcp"}
 
@@ -106,6 +106,13 @@ def winch3d_rhs(kind, t, x, u, dx, M, W):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def winch3d_assemble(kind, t, x, u, dx, M, W):
+    assemble3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+    winch_rates(kind.station, t, x, u, dx, W.tension)
+    return 0
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def winch2d_rhs(kind, t, x, u, dx, M, W):
     status = rhs2d(t, x, u, dx, M, W, M.sag, M.caero)
     winch_rates(kind.station, t, x, u, dx, W.tension)
@@ -139,3 +146,4 @@ register_kind(Winch3D, winch3d_rhs, winch3d_check)
 register_kind(Winch2D, winch2d_rhs, winch2d_check)
 register_moving_ends(Winch3D, winch_rest_length, winch_elongation_rate)
 register_moving_ends(Winch2D, winch_rest_length, winch_elongation_rate)
+register_assemble(Winch3D, winch3d_assemble)

@@ -17,6 +17,7 @@ from laddermill_gym.kernels.pointmass.forces import kite_force
 from laddermill_gym.model.configio import ConfigError, Section, config_path
 from laddermill_gym.model.pointmass import PointMassKite, PointMassString, attitude_controls, pack
 from laddermill_gym.sim.pointmass import METHODS, PointMassSimulator
+from laddermill_gym.sim.simulator import INTEGRATOR_METHODS
 
 
 @dataclass(frozen=True)
@@ -99,7 +100,7 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
         ini.raw(key, None)  # the rigid fidelity's start: the point-mass start is quasi-static
     ini.done()
     it = s.section("integrator")
-    meth = it.text("method", choices=METHODS + ("rk4", "dp54"))
+    meth = it.text("method", choices=METHODS + INTEGRATOR_METHODS)
     meth = "implicit" if meth not in METHODS else meth  # a rigid scene's integrator: the implicit method
     if method is not None and method not in METHODS:
         raise ConfigError(f"{path}: method override {method!r}: the point-mass fidelity has {METHODS}")

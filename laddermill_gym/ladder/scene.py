@@ -26,7 +26,7 @@ from laddermill_gym.model.params import (
     WingType,
 )
 from laddermill_gym.model.station import MODES, StationParams
-from laddermill_gym.sim.simulator import IntegratorSettings, Simulator
+from laddermill_gym.sim.simulator import INTEGRATOR_METHODS, IntegratorSettings, Simulator
 
 SCENE_DIR = CONFIG_DIR / "scenes"
 
@@ -100,7 +100,8 @@ def read_integrator(it: Section) -> IntegratorSettings:
     """The ``integrator:`` section: method, step, tolerances, exploding-state limits and the ground."""
     if it.data.get("ground_contact") is False:  # YAML 1.1 reads a bare `off` as false
         it.data["ground_contact"] = "off"
-    settings = IntegratorSettings(method=it.text("method", choices=("rk4", "dp54")), dt=it.number("dt", positive=True),
+    settings = IntegratorSettings(method=it.text("method", choices=INTEGRATOR_METHODS),
+                                  dt=it.number("dt", positive=True),
                                   rtol=it.number("rtol", 1e-8, positive=True),
                                   atol=it.number("atol", 1e-10, positive=True),
                                   max_speed=it.number("max_speed", positive=True),

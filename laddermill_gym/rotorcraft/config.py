@@ -19,7 +19,7 @@ from laddermill_gym.model.configio import CONFIG_DIR, ConfigError, config_path, 
 from laddermill_gym.model.params import WindParams
 from laddermill_gym.rotorcraft.rotor import RotorParams, load_rotor_config
 from laddermill_gym.sim.reports import GROUND_MODES
-from laddermill_gym.sim.simulator import IntegratorSettings
+from laddermill_gym.sim.simulator import INTEGRATOR_METHODS, IntegratorSettings
 
 #: Folder of the craft YAML files; the default craft.
 CRAFT_CONFIG_DIR = CONFIG_DIR / "rotorcraft"
@@ -133,7 +133,7 @@ def load_craft_config(name_or_path: str | Path = DEFAULT_CRAFT) -> CraftConfig:
     integ = s.section("integrator")
     if integ.data.get("ground_contact") is False:  # YAML 1.1 reads a bare `off` as false
         integ.data["ground_contact"] = "off"
-    settings = IntegratorSettings(method=integ.text("method", "rk4", choices=("rk4", "dp54")),
+    settings = IntegratorSettings(method=integ.text("method", "rk4", choices=INTEGRATOR_METHODS),
                                   dt=integ.number("dt", positive=True),
                                   max_speed=integ.number("max_speed", 100.0, positive=True),
                                   max_rate=integ.number("max_rate", 50.0, positive=True),

@@ -11,13 +11,15 @@ from __future__ import annotations
 import numpy as np
 
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
-from laddermill_gym.kernels.batch import detach_markers, rk4_batch
+from laddermill_gym.kernels.batch import detach_markers, fixed_batch
 from laddermill_gym.kernels.contract import GP_SIZE, KAir, KWork
+from laddermill_gym.kernels.dispatch import has_assemble
 from laddermill_gym.kernels.integrate import OK
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import Assembly
-from laddermill_gym.sim.simulator import IntegratorSettings, limits_array
+from laddermill_gym.sim.breakpoints import W_METHODS
+from laddermill_gym.sim.simulator import FIXED_STEP_METHODS, IntegratorSettings, limits_array
 
 
 class BatchSimulator:
@@ -57,8 +59,9 @@ class BatchSimulator:
                  n_grid: int = 0):
         if int(n_copies) != n_copies or n_copies < 1:
             raise ValueError(f"n_copies must be a positive integer, got {n_copies!r}")
-        if settings.method != "rk4":
-            raise ValueError(f"settings.method = {settings.method!r}: the batch kernel integrates with 'rk4'")
+        if settings.method not in FIXED_STEP_METHODS:
+            raise ValueError(f"settings.method = {settings.method!r}: the batch kernel integrates with a fixed-step "
+                             f"method, one of {FIXED_STEP_METHODS}")
         if int(n_modulation) < 2:
             raise ValueError(f"n_modulation must be >= 2, got {n_modulation!r}")
         if int(n_grid) != n_grid or n_grid < 0:
@@ -71,6 +74,11 @@ class BatchSimulator:
         nm = max(int(n_modulation), own.speed.size)
         n_grid = max(int(n_grid), 0 if own.grid is None else own.grid.size)
         self.model = pack_model(assembly, vehicle)
+        if settings.method in W_METHODS and not has_assemble(self.model.kind):
+            raise ValueError(f"settings.method = {settings.method!r}: the linearly implicit methods need a 3D rigid "
+                             f"model (this one is {type(self.model.kind).__name__}); use 'rk4'")
+        #: the kernels' method argument: None (RK4) or the Rosenbrock-W tableau
+        self.tableau = W_METHODS.get(settings.method)
         #: (model without markers, kind, vehicle): the parallel kernels' form of ``model``
         self.detached = detach_markers(self.model)
         one = make_workspace(assembly, *vehicle_sizes)
@@ -123,10 +131,11 @@ class BatchSimulator:
             a.gp[copy], a.gv[copy] = gp, gv
 
     def step(self, n_steps: int = 1) -> np.ndarray:
-        """Advance every active copy by n_steps RK4 steps (time advances by the steps each copy completed).
+        """Advance every active copy by n_steps steps of the fixed-step method (time advances by the steps each copy
+        completed).
         Returns the status array (B,); a failed copy is left at its last good state."""
-        rk4_batch(self.t, self.states, self.controls, self.settings.dt, int(n_steps), *self.detached, self.work,
-                  self.air, self.active, self.limits, self.status, self.done)
+        fixed_batch(self.t, self.states, self.controls, self.settings.dt, int(n_steps), *self.detached, self.work,
+                    self.air, self.active, self.limits, self.tableau, self.status, self.done)
         self.t += self.done * self.settings.dt
         return self.status
 

@@ -21,6 +21,21 @@ import numpy as np
 from laddermill_gym.atmosphere.wind_kernels import modulation
 from laddermill_gym.kernels.contract import TM_DT, TM_SIZE, TM_T0
 from laddermill_gym.kernels.integrate import OK, dp54_advance, rk4_advance
+from laddermill_gym.kernels.rigid.rosenbrock import ROS2, ROS34PW2, w_advance
+from laddermill_gym.kernels.rigid.rosenbrock_adaptive import w_adaptive
+
+#: Tableaux of the fixed-step linearly implicit (Rosenbrock-W) methods by name (``kernels/rigid/rosenbrock.py``)
+W_METHODS = {"ros2": ROS2, "ros34pw2": ROS34PW2}
+#: The error-controlled Rosenbrock-W methods: (tableau, order of the embedded method)
+W_ADAPTIVE = {"ros34pw2a": (ROS34PW2, 2)}
+
+
+def fixed_advance(method: str, t, x, u, dt, n, model, work, limits):
+    """n steps of dt [s] of the fixed-step ``method`` ("rk4" or a name of :data:`W_METHODS`) from t [s];
+    (status, steps done)."""
+    if method == "rk4":
+        return rk4_advance(t, x, u, dt, n, model, work, limits)
+    return w_advance(t, x, u, dt, n, model, work, limits, W_METHODS[method])
 
 #: a kink closer than this fraction of the step to a step's end counts as on it (no split): accumulated time
 #: roundoff must not split a step that a grid aligned with the step was meant to end on
@@ -102,17 +117,19 @@ def interior_kinks(kinks: np.ndarray, ta: float, tb: float, ends: bool = False) 
     return [float(b) for b in kinks[lo:hi] if ta + tol < b < tb - tol]
 
 
-def rk4_pieces(sim, n: int):
-    """n RK4 steps of ``sim.settings.dt`` on ``sim`` (a ``Simulator``), a step that holds a kink split at it, each
-    piece with its segment's modulation; advances ``sim.t`` and ``sim.state``. Returns (status, size of the failed
-    step [s]); on a failure the state and time are those before the failed step (or piece)."""
+def fixed_pieces(sim, n: int):
+    """n steps of ``sim.settings.dt`` of its fixed-step method (RK4 or a Rosenbrock-W method) on ``sim`` (a
+    ``Simulator``), a step that holds a kink split at it, each piece with its segment's modulation; advances
+    ``sim.t`` and ``sim.state``. Returns (status, size of the failed step [s]); on a failure the state and time are
+    those before the failed step (or piece)."""
     s = sim.settings
     mode = s.breakpoints
     splits = split_steps(sim.breakpoint_times, sim.t, s.dt, n, mode == "all") if mode != "off" else []
     done = 0
     for j, inside in splits + [(n, [])]:
         if j > done:
-            status, k = rk4_advance(sim.t, sim.state, sim.controls, s.dt, j - done, sim.model, sim.work, sim.limits)
+            status, k = fixed_advance(s.method, sim.t, sim.state, sim.controls, s.dt, j - done, sim.model, sim.work,
+                                      sim.limits)
             sim.t += k * s.dt
             done += k
             if status != OK:
@@ -121,8 +138,8 @@ def rk4_pieces(sim, n: int):
             break
         ends = [sim.t, *inside, sim.t + s.dt]
         for ta, tb in zip(ends[:-1], ends[1:], strict=True):
-            status, _ = rk4_advance(ta, sim.state, sim.controls, tb - ta, 1, segment_model(sim.model, ta, tb),
-                                    sim.work, sim.limits)
+            status, _ = fixed_advance(s.method, ta, sim.state, sim.controls, tb - ta, 1,
+                                      segment_model(sim.model, ta, tb), sim.work, sim.limits)
             if status != OK:
                 sim.t = ta
                 return status, tb - ta
@@ -131,20 +148,29 @@ def rk4_pieces(sim, n: int):
     return OK, s.dt
 
 
-def dp54_pieces(sim, t_end: float, h: float, rtol: float, atol: float, max_steps: int):
-    """DP5(4) on ``sim`` from its time to t_end [s] (first trial step h [s]), ending a step on every kink inside,
-    each piece with its segment's modulation; the state is advanced in place, ``sim.t`` is left to the caller.
-    Returns (status, last step size [s], time of the state [s]: t_end, or the last accepted step's)."""
+def _adaptive(method: str, t, t_end, x, u, h, rtol, atol, model, work, limits, max_steps):
+    """The error-controlled ``method`` ("dp54" or a name of :data:`W_ADAPTIVE`) from t to t_end [s]."""
+    if method in W_ADAPTIVE:
+        tableau, q = W_ADAPTIVE[method]
+        return w_adaptive(t, t_end, x, u, h, rtol, atol, model, work, limits, max_steps, tableau, q)
+    return dp54_advance(t, t_end, x, u, h, rtol, atol, model, work, limits, max_steps)
+
+
+def adaptive_pieces(sim, t_end: float, h: float, rtol: float, atol: float, max_steps: int, method: str = "dp54"):
+    """The error-controlled ``method`` (DP5(4) or an adaptive Rosenbrock-W method) on ``sim`` from its time to
+    t_end [s] (first trial step h [s]), ending a step on every kink inside, each piece with its segment's
+    modulation; the state is advanced in place, ``sim.t`` is left to the caller. Returns (status, last step size
+    [s], time of the state [s]: t_end, or the last accepted step's)."""
     mode = sim.settings.breakpoints
     inside = interior_kinks(sim.breakpoint_times, sim.t, t_end, mode == "all") if mode != "off" else []
     if not inside:
-        status, _, _, h, t = dp54_advance(sim.t, t_end, sim.state, sim.controls, h, rtol, atol, sim.model, sim.work,
-                                          sim.limits, max_steps)
+        status, _, _, h, t = _adaptive(method, sim.t, t_end, sim.state, sim.controls, h, rtol, atol, sim.model,
+                                       sim.work, sim.limits, max_steps)
         return status, h, t
     ends = [sim.t, *[b for b in inside if sim.t < b < t_end], t_end]
     for ta, tb in zip(ends[:-1], ends[1:], strict=True):
-        status, _, _, h, t = dp54_advance(ta, tb, sim.state, sim.controls, h, rtol, atol,
-                                          segment_model(sim.model, ta, tb), sim.work, sim.limits, max_steps)
+        status, _, _, h, t = _adaptive(method, ta, tb, sim.state, sim.controls, h, rtol, atol,
+                                       segment_model(sim.model, ta, tb), sim.work, sim.limits, max_steps)
         if status != OK:
             return status, h, t
     return OK, h, t_end

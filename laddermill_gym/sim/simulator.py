@@ -13,13 +13,21 @@ from laddermill_gym.kernels.contract import (
     LIM_SIZE,
     LIM_SPEED,
 )
+from laddermill_gym.kernels.dispatch import has_assemble
 from laddermill_gym.kernels.integrate import OK
 from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 from laddermill_gym.sim.body_views import BodyViews
-from laddermill_gym.sim.breakpoints import BREAKPOINT_MODES, dp54_pieces, modulation_kinks, rk4_pieces
+from laddermill_gym.sim.breakpoints import (
+    BREAKPOINT_MODES,
+    W_ADAPTIVE,
+    W_METHODS,
+    adaptive_pieces,
+    fixed_pieces,
+    modulation_kinks,
+)
 from laddermill_gym.sim.reports import GROUND_MODES, diagnose, failure_message, state_problems
 from laddermill_gym.sim.station_views import (
     check_station_controls,
@@ -34,15 +42,22 @@ class SimulationError(RuntimeError):
 
 #: DP5(4) step budgets: one ``step()`` (a few physics steps) and one ``advance_to`` call
 STEP_MAX_STEPS, ADVANCE_MAX_STEPS = 10_000_000, 100_000_000
-#: Integrators a simulator runs: fixed-step classical Runge-Kutta and adaptive Dormand-Prince 5(4).
-INTEGRATOR_METHODS: tuple[str, ...] = ("rk4", "dp54")
+#: Integrators a simulator runs: fixed-step classical Runge-Kutta, adaptive Dormand-Prince 5(4) and the fixed-step
+#: linearly implicit Rosenbrock-W methods (``kernels/rigid/rosenbrock.py``; 3D rigid models).
+INTEGRATOR_METHODS: tuple[str, ...] = ("rk4", "dp54", *W_METHODS, *W_ADAPTIVE)
+#: The fixed-step methods (``dt``): RK4 and the Rosenbrock-W methods.
+FIXED_STEP_METHODS: tuple[str, ...] = ("rk4", *W_METHODS)
+#: The error-controlled methods (``rtol``, ``atol``; ``dt`` is the first trial step).
+ADAPTIVE_METHODS: tuple[str, ...] = ("dp54", *W_ADAPTIVE)
 
 
 @dataclass(frozen=True)
 class IntegratorSettings:
     """Integrator choice and safety limits.
 
-    method : "rk4" (fixed step dt [s]) or "dp54" (adaptive, rtol/atol).
+    method : "rk4" (fixed step dt [s]), "dp54" (adaptive, rtol/atol), "ros2" / "ros34pw2" (linearly implicit
+    Rosenbrock-W of order 2 / 3, fixed step dt [s] not limited by the cable's axial modes; 3D rigid models;
+    docs/numerics.md) or "ros34pw2a" (ROS34PW2 with error control, rtol/atol: the step is chosen by accuracy).
     max_speed [m/s], max_rate [rad/s]: a state beyond these is reported as exploding.
     ground_height [m]: height h = -z of the ground (global z points down).
     ground_contact : what a wing CG or free cable node at h <= ground_height after a step does: "stop" (the run
@@ -113,6 +128,11 @@ class Simulator(BodyViews):
         self.settings = settings or IntegratorSettings()
         self.model = pack_model(assembly, self.make_vehicle())
         self.work = make_workspace(assembly, *self.vehicle_sizes())
+        if (self.settings.method in W_METHODS or self.settings.method in W_ADAPTIVE) and not has_assemble(
+                self.model.kind):
+            raise ValueError(f"IntegratorSettings.method = {self.settings.method!r}: the linearly implicit methods "
+                             f"need a 3D rigid model (this one is {type(self.model.kind).__name__}); use 'rk4' or "
+                             "'dp54'")
         #: the wind's variation in time and space now in force (:meth:`set_wind`)
         self.wind_field = assembly.wind.field
         if assembly.dim == 2 and assembly.wind.gust is not None:
@@ -259,26 +279,28 @@ class Simulator(BodyViews):
             self.controls = self._check_controls(controls).copy()
         if int(n_steps) != n_steps or n_steps < 0:
             raise ValueError(f"n_steps must be a non-negative integer, got {n_steps!r}")
-        if self.settings.method == "rk4":
-            status, h = rk4_pieces(self, int(n_steps))
+        if self.settings.method in FIXED_STEP_METHODS:
+            status, h = fixed_pieces(self, int(n_steps))
         else:
-            status, h = self._dp54(self.t + n_steps * self.settings.dt)
+            status, h = self._adaptive(self.t + n_steps * self.settings.dt)
         if status != OK:
             self._raise(status, h)
         return self.state
 
-    def _dp54(self, t_end: float):
-        """Integrate to t_end [s] with DP5(4); (status, size of the last step tried [s]). On a failure the time is
-        that of the last accepted step, where the state is left."""
+    def _adaptive(self, t_end: float):
+        """Integrate to t_end [s] with the settings' error-controlled method; (status, size of the last step tried
+        [s]). On a failure the time is that of the last accepted step, where the state is left."""
         s = self.settings
-        status, h, t = dp54_pieces(self, t_end, min(s.dt, t_end - self.t), s.rtol, s.atol, STEP_MAX_STEPS)
+        status, h, t = adaptive_pieces(self, t_end, min(s.dt, t_end - self.t), s.rtol, s.atol, STEP_MAX_STEPS,
+                                       s.method)
         self.t = t_end if status == OK else t
         return status, h
 
     def advance_to(self, t_end: float, rtol: float | None = None, atol: float | None = None) -> np.ndarray:
-        """Integrate to t_end [s] (finite, not before the current time) with the error-controlled Dormand-Prince
-        5(4) method at tolerances ``rtol``, ``atol`` (> 0; default the settings'). ValueError for a bad time or
-        tolerance; SimulationError when the integration breaks down (at most 1e8 steps)."""
+        """Integrate to t_end [s] (finite, not before the current time) with an error-controlled method at tolerances
+        ``rtol``, ``atol`` (> 0; default the settings'): the settings' method when it is one ("ros34pw2a"), else the
+        Dormand-Prince 5(4). ValueError for a bad time or tolerance; SimulationError when the integration breaks down
+        (at most 1e8 steps)."""
         s = self.settings
         if isinstance(t_end, bool) or not isinstance(t_end, (int, float, np.number)) or not np.isfinite(t_end):
             raise ValueError(f"t_end = {t_end!r}: must be a finite time [s]")
@@ -291,8 +313,10 @@ class Simulator(BodyViews):
             if isinstance(v, bool) or not isinstance(v, (int, float, np.number)) or not 0.0 < v < np.inf:
                 raise ValueError(f"{name} = {v!r}: must be a finite number > 0 (an absolute tolerance of 0 stalls "
                                  "the error control on any state entry that passes through zero)")
-        status, h, t = dp54_pieces(self, float(t_end), min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt,
-                                 rtol, atol, ADVANCE_MAX_STEPS)
+        method = s.method if s.method in ADAPTIVE_METHODS else "dp54"
+        status, h, t = adaptive_pieces(self, float(t_end),
+                                       min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt, rtol, atol,
+                                       ADVANCE_MAX_STEPS, method)
         if status != OK:
             self.t = t  # the last accepted step, where the state is left
             self._raise(status, h)

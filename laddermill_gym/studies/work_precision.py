@@ -7,14 +7,19 @@ kink) the scene is run over ``--time`` seconds by
 * RK4 on a grid of steps up to its stability limit (``studies/stable_step.py``) with the default breakpoint
   stepping (``rk4``: steps split at kinks inside them) and, on the non-smooth forcings, with ``rk4-all`` (steps
   that end on a kink too get their own segment) and ``rk4-off`` (across kinks: the behaviour before);
-* DP5(4) over tolerances rtol = atol from 1e-3 to 1e-10;
-* every other fixed-step method the simulator lists (``INTEGRATOR_METHODS``) on a grid up to 4x RK4's limit.
+* DP5(4) over tolerances rtol = atol from 1e-3 to 1e-10, the error-controlled ROS34PW2 (``ros34pw2a``) from 1e-3
+  to 1e-8;
+* the linearly implicit Rosenbrock-W methods (``ros2``, ``ros34pw2``; any other fixed-step method the simulator
+  lists in ``INTEGRATOR_METHODS``) on the steps period / k, k = 1, 2, 3, 4, 6, 8, 12, 16 (period = the time between
+  samples), which reach far beyond RK4's limit.
 
 Errors are against a reference: our DP5(4) at rtol = atol = 1e-12 and scipy's DOP853 (an independent
 implementation) at 1e-12, both stepping onto the kinks; their difference is reported (``reference_agreement``)
 and is the floor of what can be measured. Errors are taken at the final time and as an RMS over ``--samples``
 equally spaced times, for the positions (wing CGs and cable nodes, [m]) and the full state (each entry scaled
-by max(1, |reference|)). Wall time: the median of ``--repeats`` warm runs (after one untimed run, which is the
+by max(1, |reference|)); the largest position error over the samples relative to the scene's extent (the largest
+distance of a body from the origin in the reference) is ``err_max_pos_rel``, the measure of the summary's
+"fastest at 1e-3" table. Wall time: the median of ``--repeats`` warm runs (after one untimed run, which is the
 one whose errors are recorded), one numba thread. Output: ``SCENE.csv``, ``SCENE.json`` and ``SCENE.png``
 (log-log) in ``--out``.
 """
@@ -31,10 +36,12 @@ from pathlib import Path
 
 import numpy as np
 
-from laddermill_gym.sim.simulator import INTEGRATOR_METHODS, SimulationError, Simulator
+from laddermill_gym.sim.simulator import ADAPTIVE_METHODS, FIXED_STEP_METHODS, SimulationError, Simulator
 from laddermill_gym.studies.scenes import build_simulator, with_settings
 
 FORCINGS = ("smooth", "step", "gust")
+#: the linearly implicit methods run at the sample period divided by these
+W_STEP_DIVISORS = (1, 2, 3, 4, 6, 8, 12, 16)
 TOLERANCES = (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10)
 REF_TOL = 1e-12
 
@@ -74,7 +81,7 @@ def trajectory(sim: Simulator, times: np.ndarray, method: str, value: float) -> 
     (states (n, n_state), positions (n, n_bodies, 3)) at the times. SimulationError when it breaks down."""
     xs, ps = [sim.state.copy()], [positions(sim)]
     for t in times[1:]:
-        if method == "dp54":
+        if method in ADAPTIVE_METHODS:
             sim.advance_to(t, rtol=value, atol=value)
         else:
             sim.step(n_steps=int(round((t - sim.t) / value)))
@@ -105,10 +112,13 @@ def scipy_reference(sim: Simulator, times: np.ndarray) -> np.ndarray:
 
 
 def errors(xs, ps, xr, pr) -> dict:
-    """Final-time and RMS errors of positions [m] (per body Euclidean) and of the scaled full state [-]."""
+    """Final-time, RMS and largest errors of positions [m] (per body Euclidean; the largest also relative to the
+    reference's extent, the largest distance of a body from the origin) and of the scaled full state [-]."""
     dp = np.linalg.norm(ps - pr, axis=2)
     dx = (xs - xr) / np.maximum(1.0, np.abs(xr))
+    extent = float(np.max(np.linalg.norm(pr, axis=2)))
     return {"err_final_pos_m": float(np.max(dp[-1])), "err_rms_pos_m": float(np.sqrt(np.mean(dp**2))),
+            "err_max_pos_m": float(np.max(dp)), "err_max_pos_rel": float(np.max(dp)) / extent,
             "err_final_state": float(np.max(np.abs(dx[-1]))), "err_rms_state": float(np.sqrt(np.mean(dx**2)))}
 
 
@@ -129,14 +139,17 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
     if forcing != "smooth":
         cases += [(label, period / m) for label in ("rk4-all", "rk4-off") for m in ms]
     cases += [("dp54", tol) for tol in TOLERANCES]
-    for other in INTEGRATOR_METHODS:
-        if other not in ("rk4", "dp54"):
-            cases += [(other, period / max(1, round(m / 4))) for m in ms]
+    for other in FIXED_STEP_METHODS:
+        if other != "rk4":
+            cases += [(other, period / k) for k in W_STEP_DIVISORS]
+    for other in ADAPTIVE_METHODS:
+        if other != "dp54":
+            cases += [(other, tol) for tol in TOLERANCES[:6]]
     rows = []
     for label, value in cases:
         method, _, mode = label.partition("-")
         kw = dict(method=method, breakpoints=mode or "inside")
-        if method != "dp54":
+        if method not in ADAPTIVE_METHODS:
             kw["dt"] = value
 
         def once():
@@ -146,8 +159,9 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
             xs, ps = trajectory(sim, times, method, value)
             return xs, ps, time.perf_counter() - t0
 
-        row = {"forcing": forcing, "method": label, "dt_s": value if method != "dp54" else math.nan,
-               "tol": value if method == "dp54" else math.nan}
+        adaptive = method in ADAPTIVE_METHODS
+        row = {"forcing": forcing, "method": label, "dt_s": math.nan if adaptive else value,
+               "tol": value if adaptive else math.nan}
         try:
             xs, ps, _ = once()
             row.update(errors(xs, ps, xr, pr), status="ok")

@@ -53,7 +53,7 @@ from laddermill_gym.ladder.scene import options_key
 from laddermill_gym.model.params import CONTROL_NAMES
 from laddermill_gym.model.states import rotations_from_quaternions
 from laddermill_gym.sim.batch import BatchSimulator
-from laddermill_gym.sim.simulator import Simulator
+from laddermill_gym.sim.simulator import FIXED_STEP_METHODS, Simulator
 
 __all__ = ["MillTask"]
 
@@ -117,8 +117,9 @@ class MillTask:
             raise ValueError("generator_torque and cable_speed_command: choose one station action")
         options = _scene_options(scene_options)
         self.scene = sc = mill_scene(str(scene), options, 3)
-        if sc.settings.method != "rk4":
-            raise ValueError(f"scene {sc.name}: integrator.method = {sc.settings.method!r}; environments step with rk4")
+        if sc.settings.method not in FIXED_STEP_METHODS:
+            raise ValueError(f"scene {sc.name}: integrator.method = {sc.settings.method!r}; environments step with a "
+                             f"fixed-step method, one of {FIXED_STEP_METHODS}")
         dt = sc.settings.dt
         self.n_substeps = int(round(self.control_dt / dt))
         if self.n_substeps < 1 or abs(self.n_substeps * dt - self.control_dt) > 1e-9 * self.control_dt:
@@ -227,7 +228,7 @@ class MillTask:
     def _run(self, nsteps: np.ndarray) -> None:
         """Advance copy b by nsteps[b] RK4 steps (0: observe only, < 0: skip), then compose the observations."""
         b = self.batch
-        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.air, b.limits,
+        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.air, b.limits, b.tableau,
                      self._dx, self._zero_nominal, self.below, self.ground, self.slot_obs, self.aux,
                      b.status, b.done)
         b.t += b.done * b.settings.dt

@@ -41,6 +41,7 @@ from laddermill_gym.kernels.rigid.observe import (
 )
 from laddermill_gym.model.states import rotations_from_quaternions
 from laddermill_gym.sim.batch import BatchSimulator
+from laddermill_gym.sim.simulator import FIXED_STEP_METHODS
 
 __all__ = ["PumpingTask", "pumping_start"]
 
@@ -93,8 +94,9 @@ class PumpingTask:
             raise ValueError(f"scene_options: dimension = {options['dimension']!r}; PumpingKite is 3D")
         self.pumping, x0, u0 = pumping_start(str(config), tuple(sorted(options.items())))
         self.scene = sc = self.pumping.scene
-        if sc.settings.method != "rk4":
-            raise ValueError(f"scene {sc.name}: integrator.method = {sc.settings.method!r}; environments step with rk4")
+        if sc.settings.method not in FIXED_STEP_METHODS:
+            raise ValueError(f"scene {sc.name}: integrator.method = {sc.settings.method!r}; environments step with a "
+                             f"fixed-step method, one of {FIXED_STEP_METHODS}")
         dt = sc.settings.dt
         self.n_substeps = int(round(self.control_dt / dt))
         if self.n_substeps < 1 or abs(self.n_substeps * dt - self.control_dt) > 1e-9 * self.control_dt:
@@ -159,7 +161,7 @@ class PumpingTask:
     def _run(self, nsteps: np.ndarray) -> None:
         """Advance copy b by nsteps[b] RK4 steps (0: observe only, < 0: skip), then compose the observations."""
         b = self.batch
-        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.air, b.limits,
+        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.air, b.limits, b.tableau,
                      self._dx, self.nominal, self.below, self.ground, self.wing_obs, self.aux, b.status, b.done)
         b.t += b.done * b.settings.dt
         self._compose()

@@ -43,10 +43,10 @@ from laddermill_gym.kernels.contract import (
     N3_VEL,
     N_CONTROLS,
 )
-from laddermill_gym.kernels.dispatch import register_kind, register_vehicle
+from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_vehicle
 from laddermill_gym.kernels.rigid.aero import wing_aero
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
-from laddermill_gym.kernels.rigid.rhs3d import rhs3d
+from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
 
 _FM = {"contract", "nsz", "arcp"}
 #: Status codes of a post-step check (the integrators' codes, ``kernels/integrate.py``).
@@ -106,6 +106,12 @@ def wing_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def rigid3d_rhs(kind, t, x, u, dx, M, W):
     return rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def rigid3d_assemble(kind, t, x, u, dx, M, W):
+    assemble3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+    return 0
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
@@ -186,4 +192,5 @@ def rigid2d_check(kind, x, M, limits):
 
 register_kind(Rigid3D, rigid3d_rhs, rigid3d_check)
 register_kind(Rigid2D, rigid2d_rhs, rigid2d_check)
+register_assemble(Rigid3D, rigid3d_assemble)
 register_vehicle(WingVehicle, wing_loads)

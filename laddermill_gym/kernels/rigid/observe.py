@@ -13,7 +13,7 @@ import math
 from numba import njit, prange
 
 from laddermill_gym.atmosphere.wind_kernels import modulation, wind_point
-from laddermill_gym.kernels.batch import copy_views
+from laddermill_gym.kernels.batch import advance_fixed, copy_views
 from laddermill_gym.kernels.contract import (
     B3_POS,
     B3_RATE,
@@ -30,7 +30,7 @@ from laddermill_gym.kernels.contract import (
     TM_DT,
     TM_T0,
 )
-from laddermill_gym.kernels.integrate import OK, SINGULAR, rhs, rk4_advance
+from laddermill_gym.kernels.integrate import OK, SINGULAR, rhs
 
 #: Columns of the auxiliary output ``aux`` (B, N_AUX).
 AUX_MAX_TENSION = 0      # largest element tension [N]
@@ -104,7 +104,7 @@ def observe_state(t, x, u, M, W, nominal, below, ground, obs, aux):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
-def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, nominal, below,
+def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, nominal, below,
                        ground, obs, aux, status, done):
     n = nsteps[b]
     if n < 0:
@@ -114,14 +114,14 @@ def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits,
     Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
     st, dn = OK, 0
     if n > 0:
-        st, dn = rk4_advance(t[b], X[b], U[b], dt, n, Mb, Wb, limits)
+        st, dn = advance_fixed(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau)
     ost = _observe_one(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, nominal, below, ground, obs[b], aux[b])
     status[b] = st if st != OK else ost
     done[b] = dn
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, parallel=True)
-def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, nominal, below, ground,
+def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, nominal, below, ground,
                        obs, aux, status, done):
     """Advance copy b by nsteps[b] RK4 steps, then observe it (nsteps[b] = 0: observe only; < 0: skip the copy).
     Parallel over the copies (numba prange).
@@ -135,15 +135,15 @@ def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX
     (steps completed). A copy whose integration fails is left at its last good state and observed there.
     """
     for b in prange(X.shape[0]):
-        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, nominal, below,
+        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, nominal, below,
                            ground, obs, aux, status, done)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
-def step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, nominal, below, ground,
+def step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, nominal, below, ground,
                         obs, aux, status, done):
     """:func:`step_observe_batch` on one thread: for single environments and small batches, where starting
     the thread pool costs more than it saves (and on a loaded machine waits for a descheduled thread)."""
     for b in range(X.shape[0]):
-        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, DX, nominal, below,
+        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, nominal, below,
                            ground, obs, aux, status, done)

@@ -41,12 +41,13 @@ from laddermill_gym.kernels.contract import (
 )
 from laddermill_gym.kernels.dispatch import elongation_rate, rest_length
 from laddermill_gym.kernels.rigid.aero import wing_aero_long
-from laddermill_gym.kernels.rigid.rhs3d import add_const_mass, block_of, tree_solve
+from laddermill_gym.kernels.rigid.blocks import tree_solve
+from laddermill_gym.kernels.rigid.rhs3d import add_const_mass, block_of
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def _end_kinematics2(kind, idx, att, x, fixed, nw, T, ev):
-    """In-plane version of rhs3d._end_kinematics: ev = (x, z, x', z', ax, az), T is 2 x nb."""
+    """In-plane version of rhs3d.end_kinematics: ev = (x, z, x', z', ax, az), T is 2 x nb."""
     if kind == END_WING:
         o = B2_SIZE * idx
         c, s = math.cos(x[o + B2_THETA]), math.sin(x[o + B2_THETA])

@@ -41,11 +41,12 @@ from laddermill_gym.kernels.contract import (
     TM_T0,
 )
 from laddermill_gym.kernels.dispatch import body_loads, elongation_rate, rest_length
-from laddermill_gym.kernels.small import lu_factor, lu_solve_cols, lu_solve_vec, quat_rotation
+from laddermill_gym.kernels.rigid.blocks import tree_solve
+from laddermill_gym.kernels.small import quat_rotation
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
-def _end_kinematics(kind, idx, att, x, Rw, fixed, nw, T, ev):
+def end_kinematics(kind, idx, att, x, Rw, fixed, nw, T, ev):
     """Position ev[0:3], velocity ev[3:6] and velocity-quadratic acceleration ev[6:9] (global) of an
     element end, and its 3 x nb velocity transformation T (eq. 13). Returns the block size (0: fixed)."""
     if kind == END_WING:
@@ -118,109 +119,16 @@ def block_of(kind, idx, nw):
     return -1
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
-def _eliminate6(D, U, Y, bv, c, p):
-    """Fixed-size (6 x 6 child, 6 x 6 parent) elimination step without pivoting: the diagonal blocks of
-    wings are symmetric positive definite plus a small apparent-mass term, and so are their Schur
-    complements. Constant loop bounds let the compiler unroll and vectorise."""
-    for k in range(6):
-        inv = 1.0 / D[c, k, k]
-        for i in range(k + 1, 6):
-            f = D[c, i, k] * inv
-            D[c, i, k] = f
-            for j in range(k + 1, 6):
-                D[c, i, j] -= f * D[c, k, j]
-    for i in range(6):
-        for j in range(6):
-            Y[c, i, j] = U[c, i, j]
-    for i in range(1, 6):
-        for j in range(i):
-            f = D[c, i, j]
-            bv[c, i] -= f * bv[c, j]
-            for q in range(6):
-                Y[c, i, q] -= f * Y[c, j, q]
-    for i in range(5, -1, -1):
-        for j in range(i + 1, 6):
-            f = D[c, i, j]
-            bv[c, i] -= f * bv[c, j]
-            for q in range(6):
-                Y[c, i, q] -= f * Y[c, j, q]
-        inv = 1.0 / D[c, i, i]
-        bv[c, i] *= inv
-        for q in range(6):
-            Y[c, i, q] *= inv
-    for k in range(6):
-        bk = bv[c, k]
-        for i in range(6):
-            f = U[c, k, i]
-            bv[p, i] -= f * bk
-            for j in range(6):
-                D[p, i, j] -= f * Y[c, k, j]
-
-
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
-def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
-    """Solve the block system in place (solution in bv) by elimination children-first.
-
-    D[c] diagonal blocks (may be unsymmetric), U[c] = M[c, parent[c]], M[parent[c], c] = U[c]^T.
-    Returns False if a diagonal block is singular (or, on the fast 6 x 6 path, has a non-positive or
-    non-finite pivot)."""
-    nbk = order.size
-    for ii in range(nbk):
-        c = order[ii]
-        n = bsz[c]
-        p = parent[c]
-        if n == 6 and p >= 0 and bsz[p] == 6:
-            ok = True
-            for k in range(6):
-                if not D[c, k, k] > 0.0:
-                    ok = False
-            if ok:
-                _eliminate6(D, U, Y, bv, c, p)
-                continue
-        if not lu_factor(D[c], piv[c], n):
-            return False
-        lu_solve_vec(D[c], piv[c], n, bv[c])
-        if p >= 0:
-            m = bsz[p]
-            for i in range(n):
-                for j in range(m):
-                    Y[c, i, j] = U[c, i, j]
-            lu_solve_cols(D[c], piv[c], n, Y[c], m)
-            for k in range(n):
-                bk = bv[c, k]
-                for i in range(m):
-                    f = U[c, k, i]
-                    bv[p, i] -= f * bk
-                    for j in range(m):
-                        D[p, i, j] -= f * Y[c, k, j]
-    for ii in range(nbk - 1, -1, -1):
-        c = order[ii]
-        p = parent[c]
-        if p >= 0:
-            n = bsz[c]
-            m = bsz[p]
-            for i in range(n):
-                s = 0.0
-                for j in range(m):
-                    s += Y[c, i, j] * bv[p, j]
-                bv[c, i] -= s
-    return True
-
-
 # One function of more than 80 lines on purpose: it is the hot loop of every scene, and each element's end
 # kinematics, loads and tension stay in local scalars across its three phases (bodies, nodes, elements, marked
 # by comments) instead of passing a dozen values through calls; the golden-trajectory test pins its arithmetic.
 # _nrt=False: it allocates nothing, and without numba's reference counting the arrays of the packed model and
 # workspace handed to the inlined body-loads plug-in cost no atomic increments (chain right-hand side 118 -> 55 us).
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
-def rhs3d(t, x, u, dx, M, W, sag, caero, vehicle):
-    """State derivative dx of the 3D model at time t, state x, controls u (the vehicle's, per body).
-
-    M: packed model (``kernels/contract.py``), W: workspace. Element tensions [N] are left in W.tension.
-    ``sag``, ``caero`` and ``vehicle`` are the model's fields, passed separately so that their types select
-    the compiled path. Returns 0, or 1 if the mass matrix is singular.
-    """
+def assemble3d(t, x, u, dx, M, W, sag, caero, vehicle):
+    """Assemble eq. (25) at time t, state x, controls u: the position and quaternion rates into dx, the mass
+    matrix blocks into W.D (diagonal) and W.U (to the parent block), the generalised forces into W.bv, element
+    tensions [N] into W.tension and the body rotations into W.Rw; nothing is solved (arguments as rhs3d)."""
     nw = M.wtype.size
     nn = M.node_mass.size
     ne = M.ef.shape[0]
@@ -304,8 +212,8 @@ def rhs3d(t, x, u, dx, M, W, sag, caero, vehicle):
     for e in range(ne):
         kr, ks = M.ek[e, 0], M.ek[e, 1]
         ir, is_ = M.ei[e, 0], M.ei[e, 1]
-        nr = _end_kinematics(kr, ir, M.ea[e, 0], x, W.Rw, M.fixed, nw, Tr, er)
-        ns = _end_kinematics(ks, is_, M.ea[e, 1], x, W.Rw, M.fixed, nw, Ts, es)
+        nr = end_kinematics(kr, ir, M.ea[e, 0], x, W.Rw, M.fixed, nw, Tr, er)
+        ns = end_kinematics(ks, is_, M.ea[e, 1], x, W.Rw, M.fixed, nw, Ts, es)
         l0 = rest_length(M.kind, e, t, x, M)
         mu, EA, DA, dia = M.ef[e, EF_MU], M.ef[e, EF_EA], M.ef[e, EF_DA], M.ef[e, EF_DIAMETER]
         lx, ly, lz = es[0] - er[0], es[1] - er[1], es[2] - er[2]
@@ -380,8 +288,25 @@ def rhs3d(t, x, u, dx, M, W, sag, caero, vehicle):
             _add_mass(U[br], nr, Tr, ns, Ts, m6)
         elif ch == 1:
             _add_mass(U[bs], ns, Ts, nr, Tr, m6)
+
+
+# _nrt=False and the split from assemble3d as above: the linearly implicit integrator (kernels/rigid/rosenbrock.py)
+# assembles the same blocks without solving them.
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+def rhs3d(t, x, u, dx, M, W, sag, caero, vehicle):
+    """State derivative dx of the 3D model at time t, state x, controls u (the vehicle's, per body).
+
+    M: packed model (``kernels/contract.py``), W: workspace. Element tensions [N] are left in W.tension.
+    ``sag``, ``caero`` and ``vehicle`` are the model's fields, passed separately so that their types select
+    the compiled path. Returns 0, or 1 if the mass matrix is singular.
+    """
+    assemble3d(t, x, u, dx, M, W, sag, caero, vehicle)
+    D, bv = W.D, W.bv
+    nw = M.wtype.size
+    nn = M.node_mass.size
+    base = B3_SIZE * nw
     # ---- solve M v' = F
-    if not tree_solve(D, U, W.Y, W.piv, bv, M.order, M.parent, M.bsz):
+    if not tree_solve(D, W.U, W.Y, W.piv, bv, M.order, M.parent, M.bsz):
         return 1
     for k in range(nw):
         o = B3_SIZE * k + B3_VEL

@@ -1,0 +1,112 @@
+"""Block operations on the tree-structured mass matrix of the rigid models (docs/numerics.md, "Equations of motion
+in O(N)"): the O(N) elimination along the tree, and copies of the blocks.
+
+The matrix is held as diagonal blocks D[c] and the blocks U[c] = M[c, parent[c]] to each block's parent
+(M[parent[c], c] = U[c]^T); ``order`` lists the blocks children-first and ``bsz`` their sizes (6 for a body, 3 for
+a free node in 3D).
+"""
+
+from numba import njit
+
+from laddermill_gym.kernels.small import lu_factor, lu_solve_cols, lu_solve_vec
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+def eliminate6(D, U, Y, bv, c, p):
+    """Fixed-size (6 x 6 child, 6 x 6 parent) elimination step without pivoting: the diagonal blocks of
+    wings are symmetric positive definite plus a small apparent-mass term, and so are their Schur
+    complements. Constant loop bounds let the compiler unroll and vectorise."""
+    for k in range(6):
+        inv = 1.0 / D[c, k, k]
+        for i in range(k + 1, 6):
+            f = D[c, i, k] * inv
+            D[c, i, k] = f
+            for j in range(k + 1, 6):
+                D[c, i, j] -= f * D[c, k, j]
+    for i in range(6):
+        for j in range(6):
+            Y[c, i, j] = U[c, i, j]
+    for i in range(1, 6):
+        for j in range(i):
+            f = D[c, i, j]
+            bv[c, i] -= f * bv[c, j]
+            for q in range(6):
+                Y[c, i, q] -= f * Y[c, j, q]
+    for i in range(5, -1, -1):
+        for j in range(i + 1, 6):
+            f = D[c, i, j]
+            bv[c, i] -= f * bv[c, j]
+            for q in range(6):
+                Y[c, i, q] -= f * Y[c, j, q]
+        inv = 1.0 / D[c, i, i]
+        bv[c, i] *= inv
+        for q in range(6):
+            Y[c, i, q] *= inv
+    for k in range(6):
+        bk = bv[c, k]
+        for i in range(6):
+            f = U[c, k, i]
+            bv[p, i] -= f * bk
+            for j in range(6):
+                D[p, i, j] -= f * Y[c, k, j]
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
+    """Solve the block system in place (solution in bv) by elimination children-first.
+
+    D[c] diagonal blocks (may be unsymmetric), U[c] = M[c, parent[c]], M[parent[c], c] = U[c]^T.
+    Returns False if a diagonal block is singular (or, on the fast 6 x 6 path, has a non-positive or
+    non-finite pivot)."""
+    nbk = order.size
+    for ii in range(nbk):
+        c = order[ii]
+        n = bsz[c]
+        p = parent[c]
+        if n == 6 and p >= 0 and bsz[p] == 6:
+            ok = True
+            for k in range(6):
+                if not D[c, k, k] > 0.0:
+                    ok = False
+            if ok:
+                eliminate6(D, U, Y, bv, c, p)
+                continue
+        if not lu_factor(D[c], piv[c], n):
+            return False
+        lu_solve_vec(D[c], piv[c], n, bv[c])
+        if p >= 0:
+            m = bsz[p]
+            for i in range(n):
+                for j in range(m):
+                    Y[c, i, j] = U[c, i, j]
+            lu_solve_cols(D[c], piv[c], n, Y[c], m)
+            for k in range(n):
+                bk = bv[c, k]
+                for i in range(m):
+                    f = U[c, k, i]
+                    bv[p, i] -= f * bk
+                    for j in range(m):
+                        D[p, i, j] -= f * Y[c, k, j]
+    for ii in range(nbk - 1, -1, -1):
+        c = order[ii]
+        p = parent[c]
+        if p >= 0:
+            n = bsz[c]
+            m = bsz[p]
+            for i in range(n):
+                s = 0.0
+                for j in range(m):
+                    s += Y[c, i, j] * bv[p, j]
+                bv[c, i] -= s
+    return True
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+def copy_blocks(Ds, Us, Dd, Ud, order, bsz):
+    """Dd, Ud = Ds, Us over the blocks in use."""
+    for ii in range(order.size):
+        c = order[ii]
+        for i in range(6):
+            for j in range(6):
+                Dd[c, i, j] = Ds[c, i, j]
+                Ud[c, i, j] = Us[c, i, j]

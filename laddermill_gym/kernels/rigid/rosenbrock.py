@@ -1,0 +1,228 @@
+"""Linearly implicit (Rosenbrock-W) integrators whose step is not limited by the cable's axial modes.
+
+docs/numerics.md, "A linearly implicit integrator". A Rosenbrock-W method (Hairer & Wanner, Solving ODEs II,
+sect. IV.7, the transformed form (7.4')) solves per stage
+
+    (I - h gamma J) U_i = h gamma [ f(t + alpha_i h, y0 + sum_j a_ij U_j) + sum_j (c_ij / h) U_j ],
+    y1 = y0 + sum_i m_i U_i,
+
+with one matrix I - h gamma J per step. J holds the cable's stiffness and damping (``kernels/rigid/cable_jacobian.py``)
+and the bodies' own load derivatives (``kernels/rigid/body_jacobian.py``); for the cable part,
+for the state y = (positions and quaternions x, block velocities v), J = [[0, A], [M^-1 K P, M^-1 C]], A the map
+from block velocities to position and quaternion rates, P its left inverse (state increment to displacement,
+P A = I), K = dQ/dq and C = dQ/dv of the cable. Eliminating the position rows leaves, per stage,
+
+    S U_v = h gamma [ M r_v + h gamma K P r_x ],   S = M - h gamma C - (h gamma)^2 K,
+    U_x = h gamma (r_x + A U_v),
+
+where r is the bracket above: S has the block-tree structure of the mass matrix M (taken at y0), so a stage costs
+one O(N) elimination. Entries of the state outside the blocks (the moving cable's station) are explicit
+(U = h gamma r). A W-method's order holds for any J, so the Jacobian may leave out the non-stiff terms.
+
+Methods:
+
+* ``ros2``: Verwer, Spee, Blom & Hundsdorfer (1999), SIAM J. Sci. Comput. 20(4), gamma = 1 + 1/sqrt(2): order 2
+  for any J, L-stable for the exact one; two stages (one assembly, one right-hand side, two eliminations).
+* ``ros34pw2``: Rang & Angermann (2005), BIT Numer. Math. 45: order 3 for any J, stiffly accurate, L-stable for the
+  exact one; four stages (one assembly, three right-hand sides, four eliminations).
+
+Status codes as ``kernels/integrate.py``; on a failure the state is left at the last good step.
+"""
+
+import math
+
+import numpy as np
+from numba import njit
+
+from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_SIZE, B3_VEL, N3_POS, N3_SIZE, N3_VEL
+from laddermill_gym.kernels.dispatch import model_assemble, model_check, model_rhs
+from laddermill_gym.kernels.rigid.blocks import copy_blocks, tree_solve
+from laddermill_gym.kernels.rigid.body_jacobian import add_body_force, add_body_jacobian
+from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness, add_stiffness_force
+
+_FM = {"contract", "nsz", "arcp"}
+OK, SINGULAR = 0, 1
+
+
+def transformed_tableau(gamma: float, alpha: np.ndarray, gam: np.ndarray, b: np.ndarray, bhat: np.ndarray):
+    """(gamma, stage times alpha_i (s,), a (s, s), c (s, s), m (s,), mhat (s,)) of the transformed form (Hairer &
+    Wanner (7.4')) from a method's published coefficients: alpha (s, s) strictly lower, gam (s, s) strictly lower
+    (gamma on the diagonal implied), weights b (s,) and the embedded method's bhat (s,). With G = gam + gamma I:
+    a = alpha G^-1, c = diag(1/gamma) - G^-1, m = b G^-1, mhat = bhat G^-1."""
+    s = b.size
+    G = np.tril(gam, -1) + gamma * np.eye(s)
+    Gi = np.linalg.inv(G)
+    a = np.tril(alpha, -1) @ Gi
+    c = np.tril(np.eye(s) / gamma - Gi, -1)
+    return (float(gamma), np.tril(alpha, -1).sum(axis=1), np.ascontiguousarray(np.tril(a, -1)),
+            np.ascontiguousarray(c), np.ascontiguousarray(b @ Gi), np.ascontiguousarray(bhat @ Gi))
+
+
+#: ROS2 (Verwer, Spee, Blom & Hundsdorfer 1999): gamma = 1 + 1/sqrt(2), alpha_21 = 1, gamma_21 = -2 gamma,
+#: b = (1/2, 1/2); order 2 for any J (a W-method), L-stable for the exact one; embedded: the first-order
+#: linearly implicit Euler y0 + k1 (bhat = (1, 0)).
+_G2 = 1.0 + 1.0 / math.sqrt(2.0)
+ROS2 = transformed_tableau(_G2, np.array([[0.0, 0.0], [1.0, 0.0]]), np.array([[0.0, 0.0], [-2.0 * _G2, 0.0]]),
+                           np.array([0.5, 0.5]), np.array([1.0, 0.0]))
+#: ROS34PW2 (Rang & Angermann 2005, BIT 45, table 4.2): 4 stages, order 3 for any J (a W-method), stiffly
+#: accurate and L-stable for the exact one; embedded method of order 2.
+_G34 = 0.435866521508459
+ROS34PW2 = transformed_tableau(
+    _G34,
+    np.array([[0.0, 0.0, 0.0, 0.0], [0.87173304301691801, 0.0, 0.0, 0.0],
+              [0.84457060015369423, -0.11299064236484185, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0]]),
+    np.array([[0.0, 0.0, 0.0, 0.0], [-0.87173304301691801, 0.0, 0.0, 0.0],
+              [-0.90338057013044082, 0.054180672388095326, 0.0, 0.0],
+              [0.24212380706095346, -1.2232505839045147, 0.54526025533510214, 0.0]]),
+    np.array([0.24212380706095346, -1.2232505839045147, 1.5452602553351020, 0.435866521508459]),
+    np.array([0.37810903145819369, -0.096042292212423178, 0.5, 0.2179332607542295]))
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _vel_offset(c, nw):
+    """Offset in the state of block c's velocities (a body's v then omega, or a node's velocity)."""
+    if c < nw:
+        return B3_SIZE * c + B3_VEL
+    return B3_SIZE * nw + N3_SIZE * (c - nw) + N3_VEL
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _mass_times(Dm, Um, r, bv, M):
+    """bv = M r_v: the block matrix (Dm, Um) times the velocity entries of the state-shaped vector r."""
+    nw = M.wtype.size
+    order, parent, bsz = M.order, M.parent, M.bsz
+    for ii in range(order.size):
+        c = order[ii]
+        oc = _vel_offset(c, nw)
+        n = bsz[c]
+        for i in range(n):
+            s = 0.0
+            for j in range(n):
+                s += Dm[c, i, j] * r[oc + j]
+            bv[c, i] = s
+    for ii in range(order.size):
+        c = order[ii]
+        p = parent[c]
+        if p >= 0:
+            oc, op = _vel_offset(c, nw), _vel_offset(p, nw)
+            n, m = bsz[c], bsz[p]
+            for i in range(n):
+                s = 0.0
+                for j in range(m):
+                    s += Um[c, i, j] * r[op + j]
+                bv[c, i] += s
+            for j in range(m):
+                s = 0.0
+                for i in range(n):
+                    s += Um[c, i, j] * r[oc + i]
+                bv[p, j] += s
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _stage_increment(xn, r, Ui, M, W, gh):
+    """U_i from the solved block velocities W.bv: velocities as solved, positions and quaternions
+    gh (r_x + A U_v) with A at the step's start (rotations W.Rn, quaternions of xn), other entries gh r."""
+    nw = M.wtype.size
+    nn = M.node_mass.size
+    for i in range(Ui.size):
+        Ui[i] = gh * r[i]
+    for k in range(nw):
+        o = B3_SIZE * k
+        R = W.Rn[k]
+        vx, vy, vz, p, q, rr = W.bv[k, 0], W.bv[k, 1], W.bv[k, 2], W.bv[k, 3], W.bv[k, 4], W.bv[k, 5]
+        for i in range(6):
+            Ui[o + B3_VEL + i] = W.bv[k, i]
+        for i in range(3):
+            Ui[o + B3_POS + i] += gh * (R[i, 0] * vx + R[i, 1] * vy + R[i, 2] * vz)
+        oq = o + B3_QUAT
+        q0, q1, q2, q3 = xn[oq], xn[oq + 1], xn[oq + 2], xn[oq + 3]
+        Ui[oq] += gh * 0.5 * (-q1 * p - q2 * q - q3 * rr)
+        Ui[oq + 1] += gh * 0.5 * (q0 * p + q2 * rr - q3 * q)
+        Ui[oq + 2] += gh * 0.5 * (q0 * q + q3 * p - q1 * rr)
+        Ui[oq + 3] += gh * 0.5 * (q0 * rr + q1 * q - q2 * p)
+    for j in range(nn):
+        o = B3_SIZE * nw + N3_SIZE * j
+        b = nw + j
+        for i in range(3):
+            Ui[o + N3_VEL + i] = W.bv[b, i]
+            Ui[o + N3_POS + i] += gh * W.bv[b, i]
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def w_step(t, x, u, dt, M, W, tableau):
+    """One step of dt [s] of the Rosenbrock-W method ``tableau`` from (t, x): the stage increments into W.k1..k4,
+    x into W.xp, the new state (not yet normalised or checked) into x. Returns OK or SINGULAR (x then restored)."""
+    gam, alpha, a, c, m, _ = tableau
+    stages = (W.k1, W.k2, W.k3, W.k4)
+    f, r, xt, xp = W.k5, W.k6, W.xt, W.xp
+    ns = x.size
+    s = m.size
+    gh = gam * dt
+    nbk = M.order.size
+    for i in range(ns):
+        xp[i] = x[i]
+    if model_assemble(M.kind, t, x, u, f, M, W) != 0:
+        return SINGULAR
+    copy_blocks(W.D, W.U, W.Dm, W.Um, M.order, M.bsz)
+    for k in range(W.Rw.shape[0]):
+        for i in range(3):
+            for j in range(3):
+                W.Rn[k, i, j] = W.Rw[k, i, j]
+    add_body_jacobian(t, xp, u, M, W, gh, gh * gh)
+    add_cable_stiffness(t, xp, M, W, gh, gh * gh)
+    copy_blocks(W.D, W.U, W.Ds, W.Us, M.order, M.bsz)
+    for st in range(s):
+        if st == 0:
+            for i in range(ns):
+                r[i] = f[i]  # W.bv holds M r_v = the generalised forces of the assembly
+        else:
+            for i in range(ns):
+                acc = xp[i]
+                for j in range(st):
+                    acc += a[st, j] * stages[j][i]
+                xt[i] = acc
+            if model_rhs(M.kind, t + alpha[st] * dt, xt, u, f, M, W) != 0:
+                for i in range(ns):
+                    x[i] = xp[i]
+                return SINGULAR
+            for i in range(ns):
+                acc = f[i]
+                for j in range(st):
+                    acc += (c[st, j] / dt) * stages[j][i]
+                r[i] = acc
+            _mass_times(W.Dm, W.Um, r, W.bv, M)
+            copy_blocks(W.Ds, W.Us, W.D, W.U, M.order, M.bsz)
+        add_stiffness_force(xp, r, M, W, gh)
+        add_body_force(xp, r, M, W, gh)
+        for b in range(nbk):
+            for i in range(6):
+                W.bv[b, i] *= gh
+        if not tree_solve(W.D, W.U, W.Y, W.piv, W.bv, M.order, M.parent, M.bsz):
+            for i in range(ns):
+                x[i] = xp[i]
+            return SINGULAR
+        _stage_increment(xp, r, stages[st], M, W, gh)
+    for i in range(ns):
+        acc = xp[i]
+        for j in range(s):
+            acc += m[j] * stages[j][i]
+        x[i] = acc
+    return OK
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def w_advance(t, x, u, dt, n, M, W, limits, tableau):
+    """Advance x in place by n steps of size dt [s] of the Rosenbrock-W method ``tableau`` (e.g. :data:`ROS2`:
+    gamma, alpha, a, c, m, mhat; at most 4 stages). Returns (status, steps done); on a failure x is the state
+    before the failed step."""
+    ns = x.size
+    for step in range(n):
+        if w_step(t, x, u, dt, M, W, tableau) != OK:
+            return SINGULAR, step
+        status = model_check(M.kind, x, M, limits)
+        if status != OK:
+            for i in range(ns):
+                x[i] = W.xp[i]
+            return status, step
+        t += dt
+    return OK, n
