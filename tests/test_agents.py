@@ -167,3 +167,16 @@ def test_laddermill_ppo_config_trains_a_few_steps(tmp_path, monkeypatch):
         bad = dict(data, env_kwargs=dict(data["env_kwargs"], action_mode="tail"))
         p.write_text(yaml.safe_dump(bad))
         load_rl_config(p)
+
+
+def test_pointmass_env_has_its_own_config_family():
+    """A training config for PointMassChain-v0 takes the point-mass task's arguments (attitude ranges), not the
+    rigid wing task's (action_mode, physics_dt), and carries its control layout to the evaluation."""
+    from laddermill_gym.control.rl_config import CARRIED_KWARGS, env_family, env_kwargs_known
+    from laddermill_gym.envs import env_arguments
+
+    pm = "laddermill_gym/PointMassChain-v0"
+    assert env_family(pm) == "pointmass"
+    known = env_kwargs_known(pm)
+    assert "pitch_range_deg" in known and "action_mode" not in known
+    assert set(CARRIED_KWARGS["pointmass"]) <= set(env_arguments(pm))

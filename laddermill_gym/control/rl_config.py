@@ -30,22 +30,23 @@ CARRIED_KWARGS: dict[str, tuple[str, ...]] = {
     "mill": ("scene", "scene_options", "control_dt", "groups", "n_bands", "surfaces", "generator_torque", "drum",
              "cable_speed_command", "speed", "operating_point", "settle"),
     "pumping": ("config", "scene_options", "control_dt"),
+    "pointmass": ("scene", "scene_options", "control_dt", "groups", "pitch_range_deg", "roll_range_deg"),
 }
 
 
 def env_family(env_id: str) -> str:
-    """'craft' (Rotorcraft-v0), 'mill' (the moving-cable LadderMill-v0), 'pumping' (PumpingKite-v0) or 'wing' (the
-    fixed-cable wing scenes)."""
+    """'craft' (Rotorcraft-v0), 'mill' (the moving-cable LadderMill-v0), 'pumping' (PumpingKite-v0), 'pointmass'
+    (PointMassChain-v0) or 'wing' (the fixed-cable wing scenes)."""
     if "craft" in ENV_IDS[env_id]:
         return "craft"
     name = task_class(env_id).__name__
-    return {"MillTask": "mill", "PumpingTask": "pumping"}.get(name, "wing")
+    return {"MillTask": "mill", "PumpingTask": "pumping", "PointMassTask": "pointmass"}.get(name, "wing")
 
 
 def env_kwargs_known(env_id: str) -> tuple[str, ...]:
     """The ``env_kwargs`` keys a config for the registered environment ``env_id`` may set."""
     family = env_family(env_id)
-    if family in ("mill", "pumping"):
+    if family in ("mill", "pumping", "pointmass"):
         return tuple(a for a in env_arguments(env_id) if a != "disturbances")
     return CRAFT_ENV_KWARGS if family == "craft" else ENV_KWARGS
 

@@ -36,8 +36,6 @@ import inspect
 from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
 from laddermill_gym.envs.laddermill.env import LadderMillEnv
 from laddermill_gym.envs.laddermill.vector import LadderMillVectorEnv
-from laddermill_gym.envs.pointmass.env import PointMassEnv
-from laddermill_gym.envs.pointmass.vector import PointMassVectorEnv
 from laddermill_gym.envs.pumping.env import PumpingKiteEnv
 from laddermill_gym.envs.pumping.vector import PumpingKiteVectorEnv
 from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
@@ -51,6 +49,18 @@ __all__ = ["DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedul
            "LadderMillEnv", "LadderMillVectorEnv", "PumpingKiteEnv", "PumpingKiteVectorEnv",
            "PointMassEnv", "PointMassVectorEnv", "ENV_IDS", "ENTRY_POINTS", "register_envs", "task_class",
            "env_arguments"]
+
+_LAZY = {"PointMassEnv": "laddermill_gym.envs.pointmass.env",
+         "PointMassVectorEnv": "laddermill_gym.envs.pointmass.vector"}
+
+
+def __getattr__(name: str):
+    """The point-mass envs are imported on first use: importing the package (and so any rigid scene) must not load
+    the point-mass kernels (a scene pays only for what it uses)."""
+    if name in _LAZY:
+        return getattr(importlib.import_module(_LAZY[name]), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 #: Registered environment ids and their default arguments (units: seconds).
 ENV_IDS: dict[str, dict] = {
