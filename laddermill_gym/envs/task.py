@@ -184,10 +184,10 @@ class WingTask:
     # ------------------------------------------------------------------ kernels
     def _run(self, nsteps: np.ndarray) -> None:
         b = self.batch
-        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.air, b.limits, b.tableau,
-                     self._dx, self.nominal, self.below, self.ground, self.obs, self.aux,
-                     b.status, b.done)
-        b.t += b.done * b.settings.dt
+        b.advance(nsteps, lambda dt, ns: self._kernel(
+            b.t, b.states, b.controls, dt, ns, *b.detached, b.work, b.air, b.limits, b.tableau,
+            self._dx, self.nominal, self.below, self.ground, self.obs, self.aux,
+            b.status, b.done))
 
     def _observe_state(self, x: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(obs row (obs_dim,), aux row (N_AUX,)) of one state x at t = 0 in the undisturbed wind (speed factor

@@ -128,11 +128,6 @@ class Simulator(BodyViews):
         self.settings = settings or IntegratorSettings()
         self.model = pack_model(assembly, self.make_vehicle())
         self.work = make_workspace(assembly, *self.vehicle_sizes())
-        if (self.settings.method in W_METHODS or self.settings.method in W_ADAPTIVE) and not has_assemble(
-                self.model.kind):
-            raise ValueError(f"IntegratorSettings.method = {self.settings.method!r}: the linearly implicit methods "
-                             f"need a 3D rigid model (this one is {type(self.model.kind).__name__}); use 'rk4' or "
-                             "'dp54'")
         #: the wind's variation in time and space now in force (:meth:`set_wind`)
         self.wind_field = assembly.wind.field
         if assembly.dim == 2 and assembly.wind.gust is not None:
@@ -279,6 +274,7 @@ class Simulator(BodyViews):
             self.controls = self._check_controls(controls).copy()
         if int(n_steps) != n_steps or n_steps < 0:
             raise ValueError(f"n_steps must be a non-negative integer, got {n_steps!r}")
+        self._check_method(self.settings.method)
         if self.settings.method in FIXED_STEP_METHODS:
             status, h = fixed_pieces(self, int(n_steps))
         else:
@@ -286,6 +282,14 @@ class Simulator(BodyViews):
         if status != OK:
             self._raise(status, h)
         return self.state
+
+    def _check_method(self, method: str) -> None:
+        """ValueError when ``method`` is a linearly implicit one and the model kind has no block assembly (checked
+        when stepping, not when building: the statics and trim build in-plane simulators from a scene's settings
+        that never step)."""
+        if (method in W_METHODS or method in W_ADAPTIVE) and not has_assemble(self.model.kind):
+            raise ValueError(f"IntegratorSettings.method = {method!r}: the linearly implicit methods need a 3D rigid "
+                             f"model (this one is {type(self.model.kind).__name__}); use 'rk4' or 'dp54'")
 
     def _adaptive(self, t_end: float):
         """Integrate to t_end [s] with the settings' error-controlled method; (status, size of the last step tried
@@ -314,6 +318,7 @@ class Simulator(BodyViews):
                 raise ValueError(f"{name} = {v!r}: must be a finite number > 0 (an absolute tolerance of 0 stalls "
                                  "the error control on any state entry that passes through zero)")
         method = s.method if s.method in ADAPTIVE_METHODS else "dp54"
+        self._check_method(method)
         status, h, t = adaptive_pieces(self, float(t_end),
                                        min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt, rtol, atol,
                                        ADVANCE_MAX_STEPS, method)

@@ -228,10 +228,10 @@ class MillTask:
     def _run(self, nsteps: np.ndarray) -> None:
         """Advance copy b by nsteps[b] RK4 steps (0: observe only, < 0: skip), then compose the observations."""
         b = self.batch
-        self._kernel(b.t, b.states, b.controls, b.settings.dt, nsteps, *b.detached, b.work, b.air, b.limits, b.tableau,
-                     self._dx, self._zero_nominal, self.below, self.ground, self.slot_obs, self.aux,
-                     b.status, b.done)
-        b.t += b.done * b.settings.dt
+        b.advance(nsteps, lambda dt, ns: self._kernel(
+            b.t, b.states, b.controls, dt, ns, *b.detached, b.work, b.air, b.limits, b.tableau,
+            self._dx, self._zero_nominal, self.below, self.ground, self.slot_obs, self.aux,
+            b.status, b.done))
         self._compose()
 
     def _compose(self) -> None:
