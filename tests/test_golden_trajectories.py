@@ -81,7 +81,15 @@ def test_ladder_chain_direction_step():
 def test_rotorcraft():
     from laddermill_gym.rotorcraft.craft import load_craft
 
-    sim = load_craft("roberts_flying_model").simulator()
+    import dataclasses
+
+    from laddermill_gym.sim.simulator import IntegratorSettings
+
+    craft = load_craft("roberts_flying_model")
+    # the kernels' arithmetic is pinned with the integrator of 16b454f (RK4 at 2 ms), whatever the config's default
+    rk4 = IntegratorSettings(method="rk4", dt=0.002, max_speed=100.0, max_rate=50.0)
+    craft = load_craft(config=dataclasses.replace(craft.config, settings=rk4))
+    sim = craft.simulator()
     u = sim.controls.copy()
     u[1] = 0.002
     _check("rotorcraft", _rollout(sim, [250, 250], u))
