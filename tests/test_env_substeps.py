@@ -1,7 +1,7 @@
 """An env does not end an episode for a numerical failure that a smaller step avoids (issue 13, point 4).
 
-TetheredWing-v0 steps RK4 at 0.05 s; after a 5x wind step its cable stiffens past RK4's stability limit and the
-control period starting at 1.05 s diverges ("integration failed"). ``BatchSimulator.advance`` reruns such a copy
+TetheredWing-v0 with RK4 at 0.05 s (its step before ROS34PW2 became its default); after a 5x wind step its cable
+stiffens past RK4's stability limit and the control period starting at 1.05 s diverges ("integration failed"). ``BatchSimulator.advance`` reruns such a copy
 from its state before the period at a quarter (then a sixteenth) of the step. Oracles: the same episode with the
 reruns switched off fails numerically at that time; a copy that does not fail is bit-identical to a single env
 that never reran anything.
@@ -17,6 +17,7 @@ from laddermill_gym.control.factory import make_controller
 
 TW = "laddermill_gym/TetheredWing-v0"
 STEP5X = [{"type": "SpeedStep", "step": 4.0, "time": 1.0}]  # speed factor 1 -> 5 at 1 s
+RK4 = {"elements_per_piece": 1, "method": "rk4"}
 
 
 def _run(env, ctrl, n):
@@ -31,14 +32,26 @@ def _run(env, ctrl, n):
 def test_numerical_failure_is_rerun_at_a_finer_step(monkeypatch):
     ctrl = make_controller("lqr", TW)
     monkeypatch.setattr(batch_module, "SUBSTEP_DIVISORS", ())
-    env = gym.make(TW, disturbances=STEP5X, episode_time=5.0)
+    env = gym.make(TW, disturbances=STEP5X, episode_time=5.0, scene_options=RK4)
     n_off, info_off = _run(env, ctrl, 100)
     assert "integration failed" in info_off["failure_reason"]
     monkeypatch.undo()
-    env = gym.make(TW, disturbances=STEP5X, episode_time=5.0)
+    env = gym.make(TW, disturbances=STEP5X, episode_time=5.0, scene_options=RK4)
     n_on, info_on = _run(env, ctrl, 100)
     assert env.unwrapped.task.batch.substep_reruns >= 1
     assert n_on > n_off and "integration failed" not in info_on.get("failure_reason", "")
+
+
+def test_the_default_integrator_flies_through_the_5x_wind_step():
+    """With its default ROS34PW2 at 0.05 s TetheredWing-v0's LQR flies the 5x wind step for 20 s without a rerun
+    (as RK4 at 10 ms does); RK4 at 50 ms ends at 1.3 s even with reruns (the state before the failing period is
+    already off)."""
+    ctrl = make_controller("lqr", TW)
+    env = gym.make(TW, disturbances=STEP5X, episode_time=20.0)
+    n, info = _run(env, ctrl, 400)
+    assert n == 400 and env.unwrapped.task.batch.substep_reruns == 0
+    fine = gym.make(TW, disturbances=STEP5X, episode_time=20.0, physics_dt=0.01, scene_options=RK4)
+    assert _run(fine, ctrl, 400)[0] == 400
 
 
 def test_copies_that_do_not_fail_are_untouched_by_a_neighbours_rerun():

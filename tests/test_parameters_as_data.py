@@ -15,9 +15,9 @@ from laddermill_gym.control.factory import make_controller
 from laddermill_gym.model.configio import ConfigError
 
 TW = "laddermill_gym/TetheredWing-v0"
-#: scene_options replaces the registered one, so TetheredWing-v0's one element per piece (which its 50 ms physics
-#: step needs: two elements are refused at load) is given again
-WIND10 = {"elements_per_piece": 1, "overrides": {"wind": {"v0": 10.0}}}
+#: scene_options replaces the registered one, so TetheredWing-v0's one element per piece and its ROS34PW2 (which
+#: its 50 ms physics step needs: two elements with the scene's RK4 are refused at load) are given again
+WIND10 = {"elements_per_piece": 1, "method": "ros34pw2", "overrides": {"wind": {"v0": 10.0}}}
 
 
 def test_scene_overrides_reach_the_model_and_survive_the_spec():

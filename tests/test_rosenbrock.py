@@ -59,6 +59,7 @@ def transformed_step(t, y, h, tableau, J, embedded=False):
     """One step of the transformed form with our tableau (the form the kernels use); the embedded solution when
     ``embedded``."""
     gamma, al, a, c, m, mhat = tableau
+    gamma = gamma[0]
     m = mhat if embedded else m
     W = np.eye(y.size) / (gamma * h) - J
     U = np.zeros((m.size, y.size))

@@ -34,7 +34,7 @@ def _loads(k, t, x, R, u, M, W, mods):
     o = B3_SIZE * k + B3_VEL
     zd = R[2, 0] * x[o] + R[2, 1] * x[o + 1] + R[2, 2] * x[o + 2]
     env = (mods[0], mods[1], mods[2], mods[3], zd)
-    return body_loads(M.vehicle, k, t, x, R, u, M, W, W.Y[1], env)
+    return body_loads(M.vehicle, k, t, x, R, u, M, W, W.Y[0], env)  # Y[0]: scratch for the apparent mass
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
@@ -42,7 +42,8 @@ def add_body_jacobian(t, x, u, M, W, gh, gh2):
     """Subtract gh dL/dv + gh2 dL/dtheta from each body's diagonal block W.D[k] (L its loads: the vehicle's and
     gravity, body axes; v its 6 velocities; theta a small rotation in body axes [rad]) and keep dL/dtheta in
     W.kb[k] (6 x 3) [N/rad, N m/rad] for :func:`add_body_force`. x must hold the state whose rotations are in
-    W.Rn; it is perturbed and restored. W.Rw, W.Y[1] and W.aout are scratch."""
+    W.Rn; it is perturbed and restored. W.Rw, W.Y[0] and W.aout are scratch (W.Y has one block per body or node:
+    a scene of one body has only W.Y[0])."""
     s_mod, d_mod, sd_mod, dd_mod = modulation(t, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
     mods = (s_mod, d_mod, sd_mod, dd_mod)
     g = M.glob[GL_GRAVITY]

@@ -45,7 +45,7 @@ OK, SINGULAR = 0, 1
 
 
 def transformed_tableau(gamma: float, alpha: np.ndarray, gam: np.ndarray, b: np.ndarray, bhat: np.ndarray):
-    """(gamma, stage times alpha_i (s,), a (s, s), c (s, s), m (s,), mhat (s,)) of the transformed form (Hairer &
+    """(gamma (1,), stage times alpha_i (s,), a (s, s), c (s, s), m (s,), mhat (s,)) of the transformed form (Hairer &
     Wanner (7.4')) from a method's published coefficients: alpha (s, s) strictly lower, gam (s, s) strictly lower
     (gamma on the diagonal implied), weights b (s,) and the embedded method's bhat (s,). With G = gam + gamma I:
     a = alpha G^-1, c = diag(1/gamma) - G^-1, m = b G^-1, mhat = bhat G^-1."""
@@ -54,7 +54,9 @@ def transformed_tableau(gamma: float, alpha: np.ndarray, gam: np.ndarray, b: np.
     Gi = np.linalg.inv(G)
     a = np.tril(alpha, -1) @ Gi
     c = np.tril(np.eye(s) / gamma - Gi, -1)
-    return (float(gamma), np.tril(alpha, -1).sum(axis=1), np.ascontiguousarray(np.tril(a, -1)),
+    # gamma as a one-element array: numba's parallel (prange) lowering passes a tuple argument to its worker
+    # function element by element and accepts arrays, not scalars, inside it (a float there crashed the compiler)
+    return (np.array([float(gamma)]), np.tril(alpha, -1).sum(axis=1), np.ascontiguousarray(np.tril(a, -1)),
             np.ascontiguousarray(c), np.ascontiguousarray(b @ Gi), np.ascontiguousarray(bhat @ Gi))
 
 
@@ -152,7 +154,8 @@ def _stage_increment(xn, r, Ui, M, W, gh):
 def w_step(t, x, u, dt, M, W, tableau):
     """One step of dt [s] of the Rosenbrock-W method ``tableau`` from (t, x): the stage increments into W.k1..k4,
     x into W.xp, the new state (not yet normalised or checked) into x. Returns OK or SINGULAR (x then restored)."""
-    gam, alpha, a, c, m, _ = tableau
+    gam_, alpha, a, c, m, _ = tableau
+    gam = gam_[0]
     stages = (W.k1, W.k2, W.k3, W.k4)
     f, r, xt, xp = W.k5, W.k6, W.xt, W.xp
     ns = x.size
