@@ -16,7 +16,9 @@ from laddermill_gym.kernels.contract import N3_POS, N3_SIZE
 from laddermill_gym.kernels.pointmass.forces import kite_force
 from laddermill_gym.model.configio import ConfigError, Section, config_path
 from laddermill_gym.model.pointmass import PointMassKite, PointMassString, attitude_controls, pack
+from laddermill_gym.model.pointmass_mill import PointMassStation, mill_layout, station_from_rigid
 from laddermill_gym.sim.pointmass import METHODS, PointMassSimulator
+from laddermill_gym.sim.pointmass_mill import PointMassMillSimulator
 from laddermill_gym.sim.simulator import INTEGRATOR_METHODS
 
 
@@ -32,6 +34,8 @@ class PointMassScene:
     method: str
     dt: float
     piece_length: float
+    #: The moving cable's station (a scene with ``station:``, docs/pointmass.md "The moving cable"), else None.
+    station: PointMassStation | None = None
 
     @property
     def n_wings(self) -> int:
@@ -40,7 +44,13 @@ class PointMassScene:
     def initial_state(self) -> tuple[np.ndarray, np.ndarray]:
         """(state, controls): a free upper end starts quasi-static at the file's attitude; a chain between two
         ground points starts from the rigid fidelity's static equilibrium of the same file (its wings' CG
-        positions and attitudes, ``ladder/fidelity.py``)."""
+        positions and attitudes, ``ladder/fidelity.py``); a moving cable from the same equilibrium with the kites
+        at the rigid wings' cable attachment points (``ladder/pointmass_mill.py``). A moving cable's
+        :meth:`simulator` starts from the rigid mill's periodic operating point instead."""
+        if self.station is not None:
+            from laddermill_gym.ladder.pointmass_mill import mill_start
+
+            return mill_start(self)  # the simulator's default start is the periodic one (mill_simulator)
         if self.string.end is None:
             return quasi_static_state(self.string, self.controls), self.controls
         from laddermill_gym.ladder.fidelity import pointmass_from_rigid
@@ -50,9 +60,17 @@ class PointMassScene:
     def simulator(self, x0: np.ndarray | None = None, controls: np.ndarray | None = None,
                   method: str | None = None, dt: float | None = None) -> PointMassSimulator:
         fresh = x0 is None
+        if fresh and self.station is not None:  # the rigid mill's periodic operating point (ladder/pointmass_mill)
+            from laddermill_gym.ladder.pointmass_mill import mill_simulator
+
+            return mill_simulator(self, "periodic", dt, method)
         if fresh:
             x0, c0 = self.initial_state()
             controls = c0 if controls is None else controls
+        if self.station is not None:
+            return PointMassMillSimulator(self.string, self.station, x0, self.controls if controls is None else
+                                          controls, self.dt if dt is None else dt,
+                                          self.method if method is None else method, copy=not fresh)
         return PointMassSimulator(self.string, x0, self.controls if controls is None else controls,
                                   self.dt if dt is None else dt, self.method if method is None else method,
                                   copy=not fresh)
@@ -62,7 +80,7 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
                    n_kites: int | None = None, dt: float | None = None, method: str | None = None) -> PointMassScene:
     """Build a point-mass scene from a scene file already opened as ``s`` whose ``fidelity`` section ``fid``
     says ``wing: pointmass`` (the caller has read ``name``-independent keys it owns)."""
-    from laddermill_gym.ladder.scene import load_cable, load_wing_type, read_wind
+    from laddermill_gym.ladder.scene import load_cable, load_wing_type, read_station, read_wind
 
     name, desc = s.text("name"), s.text("description", "")
     if s.number("dimension", 3, integer=True) != 3:
@@ -83,6 +101,9 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
     for key, pname in (("start", start), ("end", end)):
         if pname is not None and pname not in points:
             raise ch.error(key, pname, f"is not one of the ground points {sorted(points)}")
+    rigid_station = read_station(s.section("station"), piece) if s.has("station") else None
+    if rigid_station is not None and end is None:
+        raise ch.error("end", end, "a moving cable (station) needs two ground points (start and end)")
     fid.raw("wing", None)
     if element_length is None:
         el = fid.number("element_length", positive=True)
@@ -119,13 +140,21 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
     per = int(round(per))
     n_nodes = per * nk + (per - 1 if end is not None else 0)
     kite_nodes = np.arange(1, nk + 1, dtype=np.int64) * per - 1
+    station = None
+    if rigid_station is not None:  # the moving cable: the layout that holds the rigid mill's cable
+        lay = mill_layout(nk, piece, el, rigid_station.first_fraction, rigid_station.last_fraction)
+        n_nodes, kite_nodes = lay.n_nodes, lay.kite_nodes
+        try:
+            station = station_from_rigid(rigid_station, lay, el)
+        except ValueError as err:
+            raise ConfigError(f"{path}: {err}") from None
     string = PointMassString(wind=wind, gravity=gravity, cable=cable, element_length=el, n_nodes=n_nodes,
                              anchor=points[start], end=None if end is None else points[end],
                              kite=PointMassKite.from_wing(wing), kite_nodes=kite_nodes,
                              ground_height=hg if contact == "stop" else -math.inf, max_speed=vmax)
     return PointMassScene(name=name, file=path, description=desc, string=string,
                           controls=attitude_controls(nk, *att), method=meth if method is None else method,
-                          dt=step if dt is None else float(dt), piece_length=piece)
+                          dt=step if dt is None else float(dt), piece_length=piece, station=station)
 
 
 def load_pointmass_scene(path: str | Path, *, element_length: float | None = None, n_kites: int | None = None,

@@ -93,6 +93,7 @@ def pack(s: PointMassString) -> PMModel:
     par[P.PP_ANCHOR:P.PP_ANCHOR + 3] = s.anchor
     par[P.PP_END:P.PP_END + 3] = s.anchor if s.end is None else s.end
     par[P.PP_GROUND], par[P.PP_MAX_SPEED] = s.ground_height, s.max_speed
+    par[P.PP_L_FIRST], par[P.PP_L_LAST] = s.element_length, s.element_length  # a moving cable resets these
     kt = np.zeros(P.KT_SIZE)
     if s.kite is not None:
         a = s.kite.alpha

@@ -5,7 +5,10 @@ Frame: x along the nominal wind's origin ("north", the wind blows towards -x), y
 ``N3_POS``/``N3_VEL`` and the packed ``PMModel``; none allocates.
 
 * Element e (node e - 1 to node e): tension only, Voigt: T = EA (l - l0)/l0 + DA l'/l0 for l > l0, else 0,
-  clipped at 0 (eq. 13 with damping; the paper's eq. 16 without it).
+  clipped at 0 (eq. 13 with damping; the paper's eq. 16 without it). l0 is ``PP_L0`` but for the first element
+  (``PP_L_FIRST``) and the element to the end anchor (``PP_L_LAST``), whose lengths the moving cable changes at
+  the rates ``PP_RATE_FIRST``/``PP_RATE_LAST``; the damping then acts on the material strain rate,
+  l0 d(eps)/dt = l' - (l/l0) dl0/dt (as the rigid moving cable, docs/moving_cable.md).
 * Kite (eqs. 3-15): lift L = 1/2 rho S C_L(alpha) |V| (d x V), drag D = -1/2 rho S C_D(alpha) |V| V, with V the
   kite's velocity relative to the air, d the span (body y) axis of the commanded attitude and alpha the angle
   of V in the body x-z plane. (The paper writes V x d with its own sign of V; d x V points "up" for a kite
@@ -35,8 +38,12 @@ from laddermill_gym.kernels.pointmass.layout import (
     PP_END_FIXED,
     PP_GRAVITY,
     PP_L0,
+    PP_L_FIRST,
+    PP_L_LAST,
     PP_MU,
     PP_N,
+    PP_RATE_FIRST,
+    PP_RATE_LAST,
     PU_PITCH,
     PU_ROLL,
     PU_SIZE,
@@ -73,6 +80,27 @@ def n_elements(par):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def rest_length(e, par):
+    """Unstretched length [m] of element e: ``PP_L_FIRST`` for the first, ``PP_L_LAST`` for the element to the end
+    anchor (e = n), else ``PP_L0``."""
+    if e == 0:
+        return par[PP_L_FIRST]
+    if e == int(par[PP_N]):
+        return par[PP_L_LAST]
+    return par[PP_L0]
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def rest_rate(e, par):
+    """Rate of the unstretched length [m/s] of element e (non-zero only at the moving cable's two ends)."""
+    if e == 0:
+        return par[PP_RATE_FIRST]
+    if e == int(par[PP_N]):
+        return par[PP_RATE_LAST]
+    return 0.0
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
 def element_geometry(x, e, par):
     """Unit vector (node e - 1 -> node e) and length l [m] of element e."""
     ax, ay, az = node_pos(x, e - 1, par)
@@ -85,16 +113,18 @@ def element_geometry(x, e, par):
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
 def element_tension(x, e, par, damped):
-    """Tension [N] of element e: elastic, plus Voigt damping when ``damped``; zero when slack."""
+    """Tension [N] of element e: elastic, plus Voigt damping on the material strain rate when ``damped``; zero
+    when slack."""
     tx, ty, tz, ln = element_geometry(x, e, par)
-    l0 = par[PP_L0]
+    l0 = rest_length(e, par)
     if ln <= l0:
         return 0.0
     ten = par[PP_EA] * (ln - l0) / l0
     if damped:
         ax, ay, az = node_vel(x, e - 1, par)
         bx, by, bz = node_vel(x, e, par)
-        ten += par[PP_DA] * ((bx - ax) * tx + (by - ay) * ty + (bz - az) * tz) / l0
+        ld = (bx - ax) * tx + (by - ay) * ty + (bz - az) * tz - ln / l0 * rest_rate(e, par)
+        ten += par[PP_DA] * ld / l0
     return ten if ten > 0.0 else 0.0
 
 
@@ -120,7 +150,9 @@ def kite_index(j, knode):
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
 def cable_length_at(j, par):
     """Cable length [m] lumped at free node j: half of each element it touches."""
-    return par[PP_L0] * (1.0 if has_upper(j, par) else 0.5)
+    if has_upper(j, par):
+        return 0.5 * (rest_length(j, par) + rest_length(j + 1, par))
+    return 0.5 * rest_length(j, par)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)

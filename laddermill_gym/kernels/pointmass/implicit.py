@@ -28,9 +28,10 @@ from laddermill_gym.kernels.pointmass.forces import (
     external_force,
     has_upper,
     node_mass,
+    rest_length,
     string_force,
 )
-from laddermill_gym.kernels.pointmass.layout import PM_OK, PP_DA, PP_EA, PP_L0, PP_N
+from laddermill_gym.kernels.pointmass.layout import PM_OK, PP_DA, PP_EA, PP_N
 
 _FM = {"contract", "nsz", "arcp"}
 
@@ -41,7 +42,7 @@ def _block(x, e, tension, par, dt):
     and damping within the step (slack ones too: their start-of-step tension is 0, so they resist only the
     change of length during the step); the geometric term b = dt^2 T/l only under tension."""
     tx, ty, tz, ln = element_geometry(x, e, par)
-    l0 = par[PP_L0]
+    l0 = rest_length(e, par)
     b = dt * dt * tension[e] / ln if ln > 0.0 else 0.0
     return dt * par[PP_DA] / l0 + dt * dt * par[PP_EA] / l0 - b, b, tx, ty, tz
 

@@ -30,9 +30,12 @@ from collections import namedtuple
 #: Scalars ``par``: gravity [m/s^2]; element unstretched length l0 [m]; cable mass per length mu [kg/m]; axial
 #: stiffness EA [N]; Voigt damping DA [N s]; diameter [m]; normal and tangential drag constants C_N0, C_T0 [-];
 #: number of free nodes [-]; end fixed (1) or free (0); start anchor (3) [m]; end anchor (3) [m]; ground height
-#: h_g [m] (-inf: no ground check); speed limit [m/s].
+#: h_g [m] (-inf: no ground check); speed limit [m/s]; unstretched lengths of the first element (start anchor ->
+#: node 0) and of the element to the end anchor [m] and their rates [m/s] (l0 and 0 for a fixed string; the moving
+#: cable of ``kernels/pointmass/mill.py`` sets them from the cable moved at the station every step).
 PP_GRAVITY, PP_L0, PP_MU, PP_EA, PP_DA, PP_DIAM, PP_CN0, PP_CT0, PP_N, PP_END_FIXED = range(10)
-PP_ANCHOR, PP_END, PP_GROUND, PP_MAX_SPEED, PP_SIZE = 10, 13, 16, 17, 18
+PP_ANCHOR, PP_END, PP_GROUND, PP_MAX_SPEED = 10, 13, 16, 17
+PP_L_FIRST, PP_L_LAST, PP_RATE_FIRST, PP_RATE_LAST, PP_SIZE = 18, 19, 20, 21, 22
 #: Kite type ``kt``: mass [kg]; wing area [m^2]; first alpha of the coefficient grid [rad]; its spacing [rad].
 KT_MASS, KT_AREA, KT_ALPHA0, KT_DALPHA, KT_SIZE = 0, 1, 2, 3, 4
 #: Controls of one kite: commanded roll, pitch, yaw [rad].
