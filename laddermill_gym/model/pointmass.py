@@ -7,11 +7,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import numba
 import numpy as np
 
 from laddermill_gym.atmosphere.field import pack_wind_field
 from laddermill_gym.kernels.contract import N3_SIZE
 from laddermill_gym.kernels.pointmass import layout as P
+from laddermill_gym.kernels.pointmass import partitioned as PT
 from laddermill_gym.kernels.pointmass.layout import PMModel, PMWork
 from laddermill_gym.model.builders import CableSpec
 from laddermill_gym.model.packing import wind_fields
@@ -113,14 +115,20 @@ def pack(s: PointMassString) -> PMModel:
                    kcl=np.ascontiguousarray(kcl, dtype=float), kcd=np.ascontiguousarray(kcd, dtype=float))
 
 
-def make_work(s: PointMassString, segment: int = SOLVER_SEGMENT) -> PMWork:
-    """The workspace: tensions (n_e,) and, for each side of the two-sided elimination (n / 2 nodes each),
-    checkpoints (2, n / (2 segment), 6), one segment (2, segment, 6) and the meeting data (2, 9)."""
-    half = max(1, s.n_nodes // 2)
-    seg = max(1, min(int(segment), half))
-    nseg = (half + seg - 1) // seg
-    return PMWork(tension=np.zeros(s.n_elements), ckpt=np.zeros((2, nseg, P.S_SIZE)),
-                  seg=np.zeros((2, seg, P.S_SIZE)), mid=np.zeros((2, 9)))
+def make_work(s: PointMassString, segment: int = SOLVER_SEGMENT, parts: int | None = None) -> PMWork:
+    """The workspace: tensions (n_e,) and, for the partitioned elimination on up to ``parts`` chunks (default:
+    numba's thread count, capped at one chunk per ``MIN_PART`` nodes and at least 2; ``kernels/pointmass/
+    partitioned.py``), checkpoints (n / seg + parts + 1, 15), one segment per chunk (parts, seg, 9) and the
+    chunks' and separators' data (parts, 48). seg = min(segment, sqrt(n)) (at least 64) keeps the checkpoints
+    and buffers small (1 MB at 500,000 nodes and 16 parts); it depends on n only, because a middle chunk's
+    spike restarts at every checkpoint (roundoff-level changes with seg from three chunks on)."""
+    if parts is None:
+        parts = min(numba.config.NUMBA_NUM_THREADS, s.n_nodes // PT.MIN_PART)
+    parts = max(2, int(parts))
+    seg = max(1, min(int(segment), s.n_nodes, max(64, math.isqrt(s.n_nodes))))
+    rows = (s.n_nodes + seg - 1) // seg + parts + 1
+    return PMWork(tension=np.zeros(s.n_elements), ckpt=np.zeros((rows, PT.CKPT_COLS)),
+                  seg=np.zeros((parts, seg, PT.BUF_COLS)), mid=np.zeros((parts, PT.MID_COLS)))
 
 
 def held_bytes(M: PMModel, W: PMWork, x: np.ndarray, u: np.ndarray) -> dict[str, int]:
