@@ -49,10 +49,9 @@ PM_OK, PM_NONFINITE, PM_LIMIT, PM_GROUND = 0, 2, 3, 4
 
 PMModel = namedtuple("PMModel", ["wf", "tmod", "ms", "md", "gp", "gv", "par", "knode", "kflag", "kt",
                                  "kcl", "kcd"])
-#: Workspace: element tension [N] (n_e,); per side of the two-sided block elimination (0: from the bottom up,
-#: 1: from the top down) its checkpoints (2, n_seg, 6), one segment's inverse pivots (2, seg, 6) (symmetric 3x3
-#: blocks: xx, yy, zz, xy, xz, yz) and its last pivot and eliminated right-hand side (2, 9), see
-#: ``kernels/pointmass/implicit.py``.
+#: Workspace: element tension [N] (n_e,); for the partitioned block elimination (``kernels/pointmass/partitioned.py``)
+#: checkpoints (rows, 15: inverse pivot 6, spike 9), one segment's buffer per chunk (P_max, seg, 9) and the chunks'
+#: and separators' data (P_max, 48) (``model/pointmass.make_work``).
 PMWork = namedtuple("PMWork", ["tension", "ckpt", "seg", "mid"])
 #: Symmetric 3x3 storage order.
 S_XX, S_YY, S_ZZ, S_XY, S_XZ, S_YZ, S_SIZE = 0, 1, 2, 3, 4, 5, 6
