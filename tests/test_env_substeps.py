@@ -1,8 +1,9 @@
 """An env does not end an episode for a numerical failure that a smaller step avoids (issue 13, point 4).
 
 TetheredWing-v0 with RK4 at 0.05 s (its step before ROS34PW2 became its default); after a 5x wind step its cable
-stiffens past RK4's stability limit and the control period starting at 1.05 s diverges ("integration failed"). ``BatchSimulator.advance`` reruns such a copy
-from its state before the period at a quarter (then a sixteenth) of the step. Oracles: the same episode with the
+stiffens past RK4's stability limit and the control period starting at 1.05 s diverges ("integration failed").
+``BatchSimulator.advance`` reruns such a copy from its state before the period at a quarter (then a sixteenth) of
+the step. Oracles: the same episode with the
 reruns switched off fails numerically at that time; a copy that does not fail is bit-identical to a single env
 that never reran anything.
 """

@@ -18,9 +18,9 @@ Registered on ``import laddermill_gym``:
   fidelity of Podgaets & Ockels (2007): point-mass kites whose pitch and roll are the actions, one 70 m element per
   piece, the implicit point-mass step of 0.025 s, 20 Hz control, 120 s episodes from the chain settled for 600 s,
   the 0.01 rad direction step at 1 s), :class:`~laddermill_gym.envs.pointmass.env.PointMassEnv`;
-* ``laddermill_gym/Rotorcraft-v0``: Roberts' tethered twin-rotor craft (configs/rotorcraft/, its config's
-  step: one ROS34PW2 step of 50 ms, 20 Hz control of collective and differential collective, 120 s episodes, a 0.01 rad direction
-  step at 1 s), :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`.
+* ``laddermill_gym/Rotorcraft-v0``: Roberts' tethered twin-rotor craft (configs/rotorcraft/, its config's step:
+  one ROS34PW2 step of 50 ms, 20 Hz control of collective and differential collective, 120 s episodes, a 0.01 rad
+  direction step at 1 s), :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`.
 
 Every environment has a native batched ``vector_entry_point`` (:class:`~laddermill_gym.envs.vector.WingVectorEnv`,
 :class:`~laddermill_gym.envs.rotorcraft.vector.RotorcraftVectorEnv`): one compiled kernel steps all copies,
