@@ -79,10 +79,9 @@ def test_ladder_chain_direction_step():
 
 
 def test_rotorcraft():
-    from laddermill_gym.rotorcraft.craft import load_craft
-
     import dataclasses
 
+    from laddermill_gym.rotorcraft.craft import load_craft
     from laddermill_gym.sim.simulator import IntegratorSettings
 
     craft = load_craft("roberts_flying_model")
