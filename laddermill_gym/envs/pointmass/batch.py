@@ -123,6 +123,18 @@ class PointMassBatch:
         """Velocities (B, len(nodes), 3) [m/s] of the given nodes in every copy (a copy)."""
         return self.states.reshape(self.n_copies, -1, N3_SIZE)[:, nodes, N3_VEL:N3_VEL + 3].copy()
 
+    def kite_positions(self) -> np.ndarray:
+        """Kite positions (B, n_k, 3) [m] (a copy)."""
+        return self.positions(self.string.kite_nodes)
+
+    def kite_velocities(self) -> np.ndarray:
+        """Kite velocities (B, n_k, 3) [m/s] (a copy)."""
+        return self.velocities(self.string.kite_nodes)
+
+    def kite_tensions(self) -> np.ndarray:
+        """Tension of the element below each kite (B, n_k) [N]."""
+        return self.tension[:, self.string.kite_nodes]
+
     def simulator(self, b: int) -> PointMassSimulator:
         """A :class:`~laddermill_gym.sim.pointmass.PointMassSimulator` of copy ``b``: a snapshot of its state,
         controls and time, with its air (shared arrays, never written), stepped by the same kernel."""

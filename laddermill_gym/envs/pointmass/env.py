@@ -90,6 +90,20 @@ class PointMassEnv(gym.Env):
     settle_time [s], groups, pitch_range_deg, roll_range_deg, disturbances, wind_dt [s], reward (RewardConfig or
     dict), min_altitude [m], breaking_factor [-].
 
+    ## The moving cable
+
+    A scene with a ``station`` (``scene="laddermill"``, e.g. ``scene_options={"element_length": 70.0}``) runs
+    the moving cable (:mod:`laddermill_gym.envs.pointmass.mill`): every copy a
+    :class:`~laddermill_gym.sim.pointmass_mill.PointMassMillSimulator` started at the rigid mill's periodic
+    operating point mapped to the point-mass mill (computed once per process, about 30 s), its kites' attitude
+    following the slots' schedule. Kites are relabelled as the cable moves, so everything is per slot (slot k:
+    the k-th kite from the veered ground point): the action's offsets add to the slot's scheduled attitude, the
+    observation's per-kite entries are the slot's kite, its last two entries the tensions of the first and last
+    element [N]. P = (T_first - T_last) V_c, V_c [m/s] the copy's station speed (``info["cable_speed_m_s"]``);
+    P_ref the mean generator power over the first period from the start (or ``reference_power_W``).
+    ``info["t"]`` counts from the start's time on the speed schedule; ``settle_time`` must be 0 and a gust grid
+    is refused.
+
     ## Version History
 
     * v0 (``laddermill_gym/PointMassChain-v0``): initial version.
@@ -142,6 +156,9 @@ class PointMassEnv(gym.Env):
         return self.task.obs[0].astype(np.float32), float(reward[0]), bool(terminated[0]), bool(truncated[0]), out
 
     def __getstate__(self):
+        if self.task.mill is not None:
+            raise TypeError(f"scene {self.task.scene.name}: pickling the moving-cable point-mass env is not "
+                            "supported (its copies' station states and slots are not saved)")
         b, task = self.task.batch, self.task
         air = [tuple(getattr(m, f) for f in ("tmod", "ms", "md", "gp", "gv")) for m in b.models]
         return {"kwargs": self._kwargs, "np_random": self._np_random, "needs_reset": self._needs_reset, "air": air,

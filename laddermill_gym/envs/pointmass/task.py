@@ -10,14 +10,17 @@ PointMassBatch`: one kernel call per copy and control period, not one call for a
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
 
 from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, disturbance_from_dict, sample_wind_field
 from laddermill_gym.envs.pointmass.batch import POINTMASS_FAILURES, PointMassBatch, pointmass_start
+from laddermill_gym.envs.pointmass.mill import PointMassMillBatch, mill_task_start
 from laddermill_gym.envs.task import RewardConfig, config_from
 from laddermill_gym.kernels.pointmass.layout import PM_GROUND, PM_OK, PU_PITCH, PU_ROLL, PU_SIZE
+from laddermill_gym.ladder.scene import load_scene
 from laddermill_gym.sim.pointmass import STATUS_TEXT
 
 __all__ = ["PointMassTask", "OBS_PER_KITE"]
@@ -44,6 +47,12 @@ def _disturbances(disturbances) -> tuple[Disturbance, ...]:
             raise ValueError(f"disturbances[{i}] = {d!r}: not a Disturbance or its config dict")
         out.append(d)
     return tuple(out)
+
+
+@functools.lru_cache(maxsize=8)
+def _has_station(scene: str, options: tuple) -> bool:
+    """Whether ``scene`` with ``load_scene`` overrides ``options`` is a moving cable (has a station)."""
+    return load_scene(scene, fidelity="pointmass", **dict(options)).station is not None
 
 
 class PointMassTask:
@@ -79,9 +88,16 @@ class PointMassTask:
         self.breaking_factor = _positive("breaking_factor", breaking_factor, "(-)")
         self.disturbances = _disturbances(disturbances)
         self.reward_config = rc = config_from(reward, RewardConfig, "reward")
-        options = {"element_length": 1.0, **(scene_options or {})}
-        self.scene, self.x_trim, self.u_trim = pointmass_start(str(scene), tuple(sorted(options.items())),
-                                                               float(settle_time))
+        options = tuple(sorted({"element_length": 1.0, **(scene_options or {})}.items()))
+        self.mill = None
+        if _has_station(str(scene), options):
+            if settle_time > 0:
+                raise ValueError(f"settle_time = {settle_time!r}: scene {scene!r} has a moving cable, which starts "
+                                 "at its periodic operating point (settle_time must be 0)")
+            self.scene, self.mill = mill_task_start(str(scene), options)
+            self.x_trim, self.u_trim = self.mill.x0, self.mill.attitudes.ravel()
+        else:
+            self.scene, self.x_trim, self.u_trim = pointmass_start(str(scene), options, float(settle_time))
         sc, s = self.scene, self.scene.string
         self.string = s
         if s.n_kites < 1:
@@ -108,11 +124,15 @@ class PointMassTask:
         self.breaking_tension = self.breaking_factor * s.cable.breaking_load
         self.v_reel = rc.reel_speed_fraction * s.wind.v0
         self.lateral_scale = rc.lateral_scale or 0.05 * sc.piece_length
-        self.batch = PointMassBatch(sc, B)
-        self.batch.states[:] = self.x_trim
-        self.batch.controls[:] = self.u_trim
-        self.batch.update_tensions(np.ones(B, bool))
-        start_power = float(self._power(self.batch.tension[:1])[0])
+        if self.mill is not None:
+            self.batch = PointMassMillBatch(sc, B, self.mill)
+            start_power = self.mill.mean_power_W
+        else:
+            self.batch = PointMassBatch(sc, B)
+            self.batch.states[:] = self.x_trim
+            self.batch.controls[:] = self.u_trim
+            self.batch.update_tensions(np.ones(B, bool))
+            start_power = float(self._power(self.batch.tension[:1])[0])
         self.p_ref = rc.reference_power_W or start_power
         if not self.p_ref > 0:
             raise ValueError(f"scene {sc.name} ({sc.file}): the start gives no positive reference power "
@@ -127,17 +147,18 @@ class PointMassTask:
     # ------------------------------------------------------------------ read-outs
     def _power(self, tension: np.ndarray) -> np.ndarray:
         """Ground-generator power [W] (B,) of element tensions (B, n_e): (T_start - T_end) v_reel for a chain
-        between two ground points, T_start v_reel for a free upper end."""
+        between two ground points, T_start v_reel for a free upper end; for the moving cable the generator's
+        (T_first - T_last) V_c with each copy's cable speed V_c [m/s] from its station state."""
         ends = tension[:, 0] - (tension[:, -1] if self.string.end is not None else 0.0)
-        return ends * self.v_reel
+        return ends * (self.batch.cable_speed if self.mill is not None else self.v_reel)
 
     def _compose(self) -> None:
         """raw_obs from the states and tensions; obs = raw_obs clipped to the bounds (non-finite: the bound)."""
-        b, kn, nk = self.batch, self.kite_nodes, self.string.n_kites
+        b, nk = self.batch, self.string.n_kites
         per = self.raw_obs[:, : OBS_PER_KITE * nk].reshape(self.n_copies, nk, OBS_PER_KITE)
-        per[:, :, 0:3] = b.positions(kn) - self.nominal
-        per[:, :, 3:6] = b.velocities(kn)
-        per[:, :, 6] = b.tension[:, kn]
+        per[:, :, 0:3] = b.kite_positions() - self.nominal
+        per[:, :, 3:6] = b.kite_velocities()
+        per[:, :, 6] = b.kite_tensions()
         self.raw_obs[:, OBS_PER_KITE * nk] = b.tension[:, 0]
         if self.n_ground == 2:
             self.raw_obs[:, -1] = b.tension[:, -1]
@@ -165,6 +186,12 @@ class PointMassTask:
         fresh wind disturbance drawn with ``rngs[b]``, and observe them. Other copies are untouched."""
         b = self.batch
         idx = np.flatnonzero(mask)
+        if self.mill is not None:
+            for i in idx:
+                b.restart(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rngs[i]))
+                self.steps[i], self.last_action[i] = 0, 0.0
+            self._compose()
+            return
         for i in idx:
             b.set_wind(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rngs[i]))
         b.states[idx] = self.x_trim
@@ -200,12 +227,16 @@ class PointMassTask:
         a = np.clip(a, -1.0, 1.0)
         b = self.batch
         sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
-        b.controls[sel] = self.commanded_attitude(a)[sel]
+        if self.mill is not None:
+            off = self.commanded_attitude(a).reshape(self.n_copies, -1, PU_SIZE) - self.u_trim.reshape(-1, PU_SIZE)
+            b.offsets[sel] = off[sel]
+        else:
+            b.controls[sel] = self.commanded_attitude(a)[sel]
         self.last_action[sel] = a[sel]
         b.step(np.where(sel, self.n_substeps, 0))
         self.steps[sel] += 1
         self._compose()
-        kites = b.positions(self.kite_nodes)
+        kites = b.kite_positions()
         low, peak = -np.max(kites[:, :, 2], axis=1), np.max(b.tension, axis=1)
         failure = self._failures(sel, low, peak)
         rc = self.reward_config
@@ -219,8 +250,10 @@ class PointMassTask:
                 "reward_failure": -rc.failure_penalty * terminated}
         reward = sum(info.values())
         truncated = ~terminated & (self.steps >= self.n_steps_max)
-        info.update(power_W=power, max_tension_N=peak, min_altitude_m=low, t=b.t.copy(), n_clipped=n_clipped,
-                    failure=failure)
+        t = b.t - self.mill.t0 if self.mill is not None else b.t.copy()
+        info.update(power_W=power, max_tension_N=peak, min_altitude_m=low, t=t, n_clipped=n_clipped, failure=failure)
+        if self.mill is not None:
+            info["cable_speed_m_s"] = b.cable_speed.copy()
         return reward, terminated, truncated, info
 
     # ------------------------------------------------------------------ read-outs
@@ -228,7 +261,7 @@ class PointMassTask:
         """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0."""
         if code == 0:
             return ""
-        t = float(self.batch.t[b])
+        t = float(self.batch.t[b]) - (self.mill.t0 if self.mill is not None else 0.0)
         st = int(self.batch.status[b])
         if st != PM_OK:
             return f"t = {t:.3f} s: the simulator stopped: {STATUS_TEXT.get(st, st)}"
