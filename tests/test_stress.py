@@ -24,11 +24,14 @@ def test_bisection_agrees_with_the_eigenvalue_estimate():
     assert rk4["passed"] and abs(rk4["ratio_bisection_to_estimate"] - 1) < 0.05, rk4
     dp = rows[1]
     assert dp["passed"] and 0.8 < dp["ratio_step_to_estimate"] < 1.05, dp  # DP5(4) sits at its stability limit
+    w = {r["case"]: r for r in rows[2:]}  # the linearly implicit methods hold steps well beyond RK4's limit
+    assert set(w) == {"largest stable step ros2", "largest stable step ros34pw2"}
+    assert all(r["passed"] and r["ratio_to_rk4_limit"] >= 2.0 for r in w.values()), w
 
 
 def test_injections_are_reported_with_time_body_and_quantity():
     rows = stress_cases.injection_rows("tethered_wing")
-    assert len(rows) == 2 * len(stress_cases.INJECTIONS)
+    assert len(rows) == 3 * len(stress_cases.INJECTIONS)  # RK4, DP5(4), ROS34PW2
     for r in rows:
         assert r["passed"], r
         assert "t = 0.05 s" in r["outcome"]

@@ -16,6 +16,7 @@ import numpy as np
 
 from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_RATE, B3_SIZE, B3_VEL, N3_POS, N3_VEL
 from laddermill_gym.kernels.integrate import OK, dp54_advance
+from laddermill_gym.sim.breakpoints import W_METHODS
 from laddermill_gym.sim.simulator import SimulationError, Simulator
 from laddermill_gym.studies.scenes import CRAFT_NAMES, build_simulator, with_settings
 from laddermill_gym.studies.stable_step import estimate_stable_step
@@ -75,8 +76,11 @@ def run_for(sim: Simulator, duration: float, controls=None, sample: float = 0.5)
 def stable_step_rows(scene: str, horizon: float = 4.0, iters: int = 8) -> list[dict]:
     """Largest stable RK4 step by bisection (a run passes if it completes, stays within 1 % of a piece length of
     a DP5(4) reference at 1e-9 in every position and keeps its kinetic energy below 1.5 x the reference's
-    largest + 1 J) beside the eigenvalue estimate; and DP5(4)'s mean accepted step at rtol 1e-6 beside its
-    estimated stability limit (a step-size controller pinned at the limit is stability-bound)."""
+    largest + 1 J) beside the eigenvalue estimate; DP5(4)'s mean accepted step at rtol 1e-6 beside its
+    estimated stability limit (a step-size controller pinned at the limit is stability-bound); and the largest
+    step of each linearly implicit method by the same test, bisected between RK4's estimated limit and 64 times it
+    (capped at a quarter of the horizon; it passes when it holds at least twice RK4's limit, the point of the
+    method)."""
     base = build_simulator(scene)
     x0 = base.initial_state.copy()
     rng = np.random.default_rng(0)
@@ -91,9 +95,9 @@ def stable_step_rows(scene: str, horizon: float = 4.0, iters: int = 8) -> list[d
     pos_ref = np.vstack([ref.wing_positions(), ref.node_positions()])
     piece = 1.0 if scene in CRAFT_NAMES else _piece_length(scene)  # [m] the craft: its 1 m scale
 
-    def ok(dt: float) -> bool:
+    def ok(dt: float, method: str = "rk4") -> bool:
         n = int(round(horizon / dt))
-        sim = with_settings(base, state=x0, dt=horizon / n)
+        sim = with_settings(base, state=x0, dt=horizon / n, method=method)
         e_max = kinetic_energy(sim)
         try:
             for chunk in np.diff(np.linspace(0, n, 41).round().astype(int)):
@@ -122,6 +126,21 @@ def stable_step_rows(scene: str, horizon: float = 4.0, iters: int = 8) -> list[d
     rows.append({"case": "dp54 step at rtol 1e-6", "scene": scene, "passed": status == OK, "outcome": "ok",
                  "mean_step_s": horizon / max(acc, 1), "accepted": acc, "rejected": rej,
                  "dt_estimate_s": est5.dt_max, "ratio_step_to_estimate": horizon / max(acc, 1) / est5.dt_max})
+    for method in W_METHODS:
+        lo, hi = est.dt_max, min(64.0 * est.dt_max, 0.25 * horizon)
+        row = {"case": f"largest stable step {method}", "scene": scene, "dt_estimate_rk4_s": est.dt_max}
+        if ok(hi, method):
+            rows.append({**row, "passed": True, "outcome": f"stable at the bracket's top, {hi:.4g} s",
+                         "dt_bisection_s": hi, "ratio_to_rk4_limit": hi / est.dt_max})
+            continue
+        if not ok(lo, method):
+            rows.append({**row, "passed": False, "outcome": f"fails at RK4's limit {lo:.4g} s already"})
+            continue
+        for _ in range(iters):
+            mid = math.sqrt(lo * hi)
+            lo, hi = (mid, hi) if ok(mid, method) else (lo, mid)
+        rows.append({**row, "passed": lo >= 2.0 * est.dt_max, "outcome": "ok", "dt_bisection_s": lo, "dt_fails_s": hi,
+                     "ratio_to_rk4_limit": lo / est.dt_max})
     return rows
 
 
@@ -137,7 +156,7 @@ INJECTIONS = (("position NaN", "wing", B3_POS, math.nan), ("quaternion NaN", "wi
               ("node position NaN", "node", N3_POS, math.nan), ("node velocity 1e12 m/s", "node", N3_VEL, 1e12))
 
 
-def injection_rows(scene: str, methods=("rk4", "dp54")) -> list[dict]:
+def injection_rows(scene: str, methods=("rk4", "dp54", "ros34pw2")) -> list[dict]:
     """Write a bad value into the state behind ``reset``'s back (last wing or node, mid-run) and step: every
     injection must raise a SimulationError naming the time, the body and a quantity, and leave no non-finite
     value in a state that is reported as good."""
