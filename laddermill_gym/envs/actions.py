@@ -26,6 +26,15 @@ ACTION_MODES: tuple[str, ...] = ("tail", "alpha")
 GROUPINGS: tuple[str, ...] = ("per_wing", "all", "halves")
 
 
+def clip_actions(action, n_copies: int, n_actions: int) -> tuple[np.ndarray, np.ndarray]:
+    """The task's actions as (n_copies, n_actions) float64 clipped to [-1, 1], and the number of entries clipped per
+    copy (B,); ValueError naming the entries if any is not finite."""
+    a = np.asarray(action, dtype=float).reshape(n_copies, n_actions)
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"action has non-finite entries: {a[~np.isfinite(a)][:4]}")
+    return np.clip(a, -1.0, 1.0), np.count_nonzero(np.abs(a) > 1.0, axis=1)
+
+
 def resolve_groups(groups, n_wings: int, two_ended: bool) -> tuple[tuple[int, ...], ...]:
     """Wing index groups from a grouping name or an explicit list of index lists.
 

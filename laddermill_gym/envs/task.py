@@ -15,7 +15,7 @@ import numpy as np
 from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
 from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry, sample_wind_field
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
-from laddermill_gym.envs.actions import ActionMap, resolve_groups
+from laddermill_gym.envs.actions import ActionMap, clip_actions, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
 
 # the settings dataclasses live in task_settings.py; imported here, where every env has always found them
@@ -231,11 +231,7 @@ class WingTask:
         power [W], largest tension [N], lowest altitude [m], time [s], clipped action entries, failure code
         (see :data:`FAILURES`)). Rows of copies outside ``mask`` are meaningless.
         """
-        a = np.asarray(action, dtype=float).reshape(self.n_copies, self.n_actions)
-        if not np.all(np.isfinite(a)):
-            raise ValueError(f"action has non-finite entries: {a[~np.isfinite(a)][:4]}")
-        n_clipped = np.count_nonzero(np.abs(a) > 1.0, axis=1)
-        a = np.clip(a, -1.0, 1.0)
+        a, n_clipped = clip_actions(action, self.n_copies, self.n_actions)
         b = self.batch
         sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
         servo = None if self.actions.alpha_servo is None else self.actions.alpha_servo.copy()

@@ -16,6 +16,7 @@ import numpy as np
 
 from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
 from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry, sample_wind_field
+from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.laddermill.actions import SlotActionMap, resolve_slot_groups
 from laddermill_gym.envs.laddermill.evaluate import evaluate_copies, failure_text
 from laddermill_gym.envs.laddermill.gust_extent import LoopExtent, check_turbulence_cover, extent, loop_points
@@ -301,11 +302,7 @@ class MillTask:
         time [s], clipped action entries, wings outside the attached-flow band, failure code). Rows of copies
         outside ``mask`` are meaningless.
         """
-        a = np.asarray(action, dtype=float).reshape(self.n_copies, self.n_actions)
-        if not np.all(np.isfinite(a)):
-            raise ValueError(f"action has non-finite entries: {a[~np.isfinite(a)][:4]}")
-        n_clipped = np.count_nonzero(np.abs(a) > 1.0, axis=1)
-        a = np.clip(a, -1.0, 1.0)
+        a, n_clipped = clip_actions(action, self.n_copies, self.n_actions)
         b = self.batch
         sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
         b.controls[sel] = self.actions.controls(a)[sel]

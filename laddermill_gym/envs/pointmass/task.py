@@ -15,7 +15,9 @@ import math
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, disturbance_from_dict, sample_wind_field
+from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
+from laddermill_gym.atmosphere.disturbances import DirectionStep, sample_wind_field
+from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.pointmass.batch import POINTMASS_FAILURES, PointMassBatch, pointmass_start
 from laddermill_gym.envs.pointmass.mill import PointMassMillBatch, mill_task_start
 from laddermill_gym.envs.task import RewardConfig, config_from
@@ -34,19 +36,6 @@ def _positive(name: str, v, unit: str) -> float:
     if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
         raise ValueError(f"{name} = {v!r}: must be a finite number > 0 {unit}")
     return float(v)
-
-
-def _disturbances(disturbances) -> tuple[Disturbance, ...]:
-    """Disturbance objects (or their config dicts); None: the wing envs' 0.01 rad direction step at 1 s."""
-    if disturbances is None:
-        return (DirectionStep(),)
-    out = []
-    for i, d in enumerate(disturbances):
-        d = disturbance_from_dict(d, f"disturbances[{i}]") if isinstance(d, dict) else d
-        if not isinstance(d, Disturbance):
-            raise ValueError(f"disturbances[{i}] = {d!r}: not a Disturbance or its config dict")
-        out.append(d)
-    return tuple(out)
 
 
 @functools.lru_cache(maxsize=8)
@@ -86,7 +75,7 @@ class PointMassTask:
                                   _positive("roll_range_deg", roll_range_deg, "deg")])
         self.min_altitude = float(min_altitude)
         self.breaking_factor = _positive("breaking_factor", breaking_factor, "(-)")
-        self.disturbances = _disturbances(disturbances)
+        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
         self.reward_config = rc = config_from(reward, RewardConfig, "reward")
         options = tuple(sorted({"element_length": 1.0, **(scene_options or {})}.items()))
         self.mill = None
@@ -220,11 +209,7 @@ class PointMassTask:
         """Apply normalised actions (B, n_actions) for one control period to the copies in ``mask`` (default
         all) and evaluate them: (reward (B,), terminated (B,), truncated (B,), info dict of (B,) arrays: reward
         terms, ``power_W``, ``max_tension_N``, ``min_altitude_m``, ``t`` [s], ``n_clipped``, ``failure``)."""
-        a = np.asarray(action, dtype=float).reshape(self.n_copies, self.n_actions)
-        if not np.all(np.isfinite(a)):
-            raise ValueError(f"action has non-finite entries: {a[~np.isfinite(a)][:4]}")
-        n_clipped = np.count_nonzero(np.abs(a) > 1.0, axis=1)
-        a = np.clip(a, -1.0, 1.0)
+        a, n_clipped = clip_actions(action, self.n_copies, self.n_actions)
         b = self.batch
         sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
         if self.mill is not None:

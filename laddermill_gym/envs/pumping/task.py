@@ -13,14 +13,14 @@ import math
 
 import numpy as np
 
+from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
 from laddermill_gym.atmosphere.disturbances import (
     DirectionStep,
-    Disturbance,
-    disturbance_from_dict,
     grid_geometry,
     sample_wind_field,
 )
 from laddermill_gym.atmosphere.wind_kernels import modulation, wind_point
+from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.pumping.actions import PumpingActionMap
 from laddermill_gym.envs.pumping.evaluate import evaluate_copies, failure_text
 from laddermill_gym.envs.pumping.observation import N_OBS, WINCH_OBS_INDEX, pumping_observation_bounds
@@ -85,7 +85,7 @@ class PumpingTask:
         self.control_dt = _positive("control_dt", control_dt, "s")
         self.episode_time = _positive("episode_time", episode_time, "s")
         self.wind_dt = _positive("wind_dt", wind_dt, "s")
-        self.disturbances = self._disturbances(disturbances)
+        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
         self.reward_config = config_from(reward, PumpingRewardConfig, "reward")
         self.termination_config = config_from(termination, TerminationConfig, "termination")
         self.initial_noise = config_from(initial_noise, InitialNoise, "initial_noise")
@@ -143,19 +143,6 @@ class PumpingTask:
         self._rotation0 = rotations_from_quaternions(x0[3:7].reshape(1, 4))[0]
         self.batch.states[:] = x0
         self.batch.controls[:] = u0
-
-    @staticmethod
-    def _disturbances(disturbances) -> tuple[Disturbance, ...]:
-        """Disturbance objects (or their config dicts); None: the wing envs' 0.01 rad direction step at 1 s."""
-        if disturbances is None:
-            return (DirectionStep(),)
-        out = []
-        for i, d in enumerate(disturbances):
-            d = disturbance_from_dict(d, f"disturbances[{i}]") if isinstance(d, dict) else d
-            if not isinstance(d, Disturbance):
-                raise ValueError(f"disturbances[{i}] = {d!r}: not a Disturbance or its config dict")
-            out.append(d)
-        return tuple(out)
 
     # ------------------------------------------------------------------ kernel
     def _run(self, nsteps: np.ndarray) -> None:
@@ -227,11 +214,7 @@ class PumpingTask:
         """Apply normalised actions (B, 4) for one control period to the copies in ``mask`` (default all) and
         evaluate them: (reward (B,), terminated (B,), truncated (B,), info dict of (B,) arrays)
         (:func:`~laddermill_gym.envs.pumping.evaluate.evaluate_copies`)."""
-        a = np.asarray(action, dtype=float).reshape(self.n_copies, self.n_actions)
-        if not np.all(np.isfinite(a)):
-            raise ValueError(f"action has non-finite entries: {a[~np.isfinite(a)][:4]}")
-        n_clipped = np.count_nonzero(np.abs(a) > 1.0, axis=1)
-        a = np.clip(a, -1.0, 1.0)
+        a, n_clipped = clip_actions(action, self.n_copies, self.n_actions)
         b = self.batch
         sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
         u = self.actions.controls(a)

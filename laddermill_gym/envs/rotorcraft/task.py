@@ -18,6 +18,7 @@ import numpy as np
 from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
 from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, grid_geometry, sample_wind_field
 from laddermill_gym.atmosphere.field import WindField
+from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.rotorcraft.observation import OBS_P, OBS_R, OBS_Y, craft_observation_bounds
 from laddermill_gym.envs.rotorcraft.settings import (
     InitialNoise,
@@ -268,11 +269,7 @@ class CraftTask:
         max_tip_incidence_rad [rad], n_clipped (action entries outside [-1, 1]) and failure (code of
         :data:`CRAFT_FAILURES`). Rows of copies outside ``mask`` are meaningless.
         """
-        a = np.asarray(action, dtype=float).reshape(self.n_copies, self.n_actions)
-        if not np.all(np.isfinite(a)):
-            raise ValueError(f"action = {a.tolist()}: entries must be finite")
-        n_clipped = np.count_nonzero(np.abs(a) > 1.0, axis=1)
-        a = np.clip(a, -1.0, 1.0)
+        a, n_clipped = clip_actions(action, self.n_copies, self.n_actions)
         sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
         self.batch.controls[sel] = (self.mid + a * self.half)[sel]
         self.last_action[sel] = a[sel]
