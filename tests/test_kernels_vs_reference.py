@@ -13,7 +13,7 @@ from laddermill_gym.model.builders import CableSpec, build_chain
 from laddermill_gym.model.params import WindParams
 from laddermill_gym.model.states import planar_from_3d, planar_to_3d, quaternion_from_euler
 from laddermill_gym.sim.simulator import Simulator
-from tests.test_reference_selfchecks import make_wing_type
+from tests.reference_builders import make_wing_type
 
 
 def random_chain_state(asm, rng, spread=1.0):
