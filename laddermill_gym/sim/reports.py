@@ -43,8 +43,10 @@ from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
 #: Ground-contact modes of ``IntegratorSettings.ground_contact``.
 GROUND_MODES: tuple[str, ...] = ("stop", "flag", "off")
 _KIND = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit exceeded",
-         STALLED: "DP5(4) step size collapsed below 1e-12 max(1 s, t)",
-         BUDGET: "DP5(4) used up its budget of steps (1e7 per step(), 1e8 per advance_to) before the end time"}
+         STALLED: "{method} step size collapsed below 1e-12 max(1 s, t)",
+         BUDGET: "{method} used up its budget of steps (1e7 per step(), 1e8 per advance_to) before the end time"}
+#: The error-controlled methods' names in reports (``advance_to`` runs DP5(4) unless the settings name another).
+_ADAPTIVE_NAME = {"ros34pw2a": "ROS34PW2 (error-controlled)"}
 #: Bodies named at most in one report.
 _MAX_NAMED = 4
 
@@ -211,5 +213,5 @@ def failure_message(sim, status: int, h: float) -> str:
         bad = np.flatnonzero(~np.isfinite(x)) if x is not None else np.zeros(0, dtype=int)
         culprit = [f"{sim.state_name(int(bad[0]))} non-finite"] if bad.size else []
     what = f"; in the step to t = {sim.t + h:.6g} s: {', '.join(culprit[:_MAX_NAMED])}" if culprit else ""
-    kind = _KIND.get(status, f"status {status}")
+    kind = _KIND.get(status, f"status {status}").format(method=_ADAPTIVE_NAME.get(sim.settings.method, "DP5(4)"))
     return f"integration failed at t = {sim.t:.6g} s ({kind}){what}; last good state: {sim.diagnose()}"
