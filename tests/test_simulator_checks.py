@@ -99,3 +99,13 @@ def test_dp54_out_of_steps_says_so(wing, monkeypatch):
     with pytest.raises(SimulationError, match="used up its budget of steps"):
         sim.advance_to(1.0)
     assert 0.0 < sim.t < 1.0
+
+
+def test_the_error_controlled_w_method_is_named_when_out_of_steps(wing, monkeypatch):
+    """advance_to runs the settings' error-controlled method (here ROS34PW2), and its report names it, not DP5(4)."""
+    monkeypatch.setattr(simulator_module, "ADVANCE_MAX_STEPS", 3)
+    sim = wing.simulator()
+    sim = type(sim)(sim.assembly, sim.initial_state, dataclasses.replace(wing.settings, method="ros34pw2a"),
+                    sim.initial_controls)
+    with pytest.raises(SimulationError, match=r"ROS34PW2 \(error-controlled\) used up its budget of steps"):
+        sim.advance_to(1.0)
