@@ -26,6 +26,17 @@ ACTION_MODES: tuple[str, ...] = ("tail", "alpha")
 GROUPINGS: tuple[str, ...] = ("per_wing", "all", "halves")
 
 
+def single_action(action, n_actions: int, needs_reset: bool) -> np.ndarray:
+    """A single env's action as the task's batch of one, (1, n_actions) float64; RuntimeError when the episode
+    needs a reset, ValueError naming the expected shape."""
+    if needs_reset:
+        raise RuntimeError("step() called before reset() or after the episode ended; call reset()")
+    a = np.asarray(action, dtype=float).reshape(-1)
+    if a.shape != (n_actions,):
+        raise ValueError(f"action: expected shape ({n_actions},), got {np.shape(action)}")
+    return a[None]
+
+
 def clip_actions(action, n_copies: int, n_actions: int) -> tuple[np.ndarray, np.ndarray]:
     """The task's actions as (n_copies, n_actions) float64 clipped to [-1, 1], and the number of entries clipped per
     copy (B,); ValueError naming the entries if any is not finite."""

@@ -11,6 +11,7 @@ from typing import Any
 import gymnasium as gym
 import numpy as np
 
+from laddermill_gym.envs.actions import single_action
 from laddermill_gym.envs.pointmass.task import OBS_PER_KITE, PointMassTask
 
 __all__ = ["PointMassEnv", "OBS_PER_KITE", "TASK_ARGUMENTS", "check_task_arguments"]
@@ -141,12 +142,8 @@ class PointMassEnv(gym.Env):
         return self.task.obs[0].astype(np.float32), {"t": 0.0}
 
     def step(self, action):
-        if self._needs_reset:
-            raise RuntimeError("step() called before reset() or after the episode ended; call reset()")
-        a = np.asarray(action, dtype=float).reshape(-1)
-        if a.shape != (self.task.n_actions,):
-            raise ValueError(f"action: expected shape ({self.task.n_actions},), got {np.shape(action)}")
-        reward, terminated, truncated, info = self.task.step(a[None])
+        a = single_action(action, self.task.n_actions, self._needs_reset)
+        reward, terminated, truncated, info = self.task.step(a)
         code = int(info["failure"][0])
         out: dict[str, Any] = {k: v[0].item() for k, v in info.items()}
         out["failure_name"] = self.task.failure_names[code]

@@ -16,6 +16,7 @@ from typing import Any
 import gymnasium as gym
 import numpy as np
 
+from laddermill_gym.envs.actions import single_action
 from laddermill_gym.envs.pickling import TaskPickling
 from laddermill_gym.envs.render import TaskRendering
 from laddermill_gym.envs.rotorcraft.observation import (
@@ -184,12 +185,8 @@ OBS_TABLE
         return self.task.obs[0].astype(np.float32), {"t": 0.0, "reference_power_W": self.p_ref}
 
     def step(self, action):
-        if self._needs_reset:
-            raise RuntimeError("step() called before reset() or after the episode ended; call reset()")
-        a = np.asarray(action, dtype=float).reshape(-1)
-        if a.shape != (self.task.n_actions,):
-            raise ValueError(f"action: expected shape ({self.task.n_actions},), got {np.shape(action)}")
-        reward, terminated, truncated, info = self.task.step(a[None])
+        a = single_action(action, self.task.n_actions, self._needs_reset)
+        reward, terminated, truncated, info = self.task.step(a)
         code = int(info["failure"][0])
         out = {k: (v[0].item() if v.ndim == 1 else v[0].copy()) for k, v in info.items()}
         out["failure_name"] = CRAFT_FAILURES[code]
