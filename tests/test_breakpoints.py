@@ -15,13 +15,14 @@ from scipy.integrate import solve_ivp
 
 from laddermill_gym import Simulator, load_scene
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
-from laddermill_gym.sim.breakpoints import modulation_kinks, split_steps
+from laddermill_gym.kernels.fixed_steps import step_kinks
+from laddermill_gym.sim.breakpoints import modulation_kinks
 
 T_STEP = 0.2037  # [s] start of the 1 ms direction ramp: inside a step of every dt used here
 T_END = 0.45  # [s]
 
 
-def _sim(bp: str, dt: float, method: str = "rk4") -> Simulator:
+def ramp_sim(bp: str, dt: float, method: str = "rk4") -> Simulator:
     scene = load_scene("tethered_wing")
     start = scene.simulator()
     wind = scene.assembly.wind.with_modulation(T_STEP, 1e-3, np.ones(2), np.array([0.0, 0.05]))
@@ -36,15 +37,25 @@ def test_kink_times_closed_form():
     # speed ramps on [0.5, 1.0]; direction ramps on [1.5, 2.0] and holds after
     assert np.allclose(modulation_kinks(tmod, ms, md), [0.5, 1.0, 1.5, 2.0])
     assert modulation_kinks(*pack_wind_field(WindField())[:3]).size == 0
-    # a kink on a step's end is no split; one inside is (roundoff of a grid aligned with dt ignored)
-    assert split_steps(np.array([0.5, 0.7]), 0.0, 0.1, 10) == []
-    assert split_steps(np.array([0.55, 0.56, 0.8]), 0.0, 0.1, 10) == [(5, [0.55, 0.56])]
+    # a kink on a step's end is no split; one inside is (roundoff of a grid aligned with dt ignored): steps of
+    # 0.1 s from 0 meet the kinks 0.5 and 1.0 (speed ramp) and 1.5, 2.0 (direction ramp) on their ends only
+    tmod, ms, md, _, _ = pack_wind_field(f, n_modulation=8)
+    assert [step_kinks(0.0, 0.1, j, tmod, ms, md) for j in (3, 4, 5, 6, 9, 10, 14, 15, 20, 21)] == [
+        (0, False), (0, True), (0, True), (0, False), (0, True), (0, True), (0, True), (0, True), (0, True),
+        (0, False)]
+    # kinks at 0.55, 0.56 (speed ramp) and 0.80, 0.81 (direction ramp) on a 0.01 s grid from 0.55
+    md = np.zeros(27)
+    md[26] = 0.01
+    tmod, ms, md, _, _ = pack_wind_field(WindField(0.55, 0.01, np.r_[1.0, np.full(26, 1.1)], md))
+    assert np.allclose(modulation_kinks(tmod, ms, md), [0.55, 0.56, 0.8, 0.81])
+    got = [step_kinks(0.0, 0.1, j, tmod, ms, md) for j in range(10)]
+    assert got == [(0, False)] * 5 + [(2, False), (0, False), (0, True), (1, True), (0, False)], got
 
 
-def _dop853_reference() -> np.ndarray:
+def dop853_reference() -> np.ndarray:
     """scipy DOP853 between the kinks; inside a piece the time passed to the rhs stays below the piece's end, so
     the rhs follows the piece's own linear segment up to its end."""
-    sim = _sim("inside", 0.005)
+    sim = ramp_sim("inside", 0.005)
     x = sim.state.copy()
     ends = [0.0, T_STEP, T_STEP + 1e-3, T_END]
     for ta, tb in zip(ends[:-1], ends[1:], strict=True):
@@ -58,7 +69,7 @@ def _dop853_reference() -> np.ndarray:
 
 @pytest.fixture(scope="module")
 def reference():
-    return _dop853_reference()
+    return dop853_reference()
 
 
 def test_rk4_fourth_order_across_a_ramp(reference):
@@ -66,7 +77,7 @@ def test_rk4_fourth_order_across_a_ramp(reference):
     for bp in ("inside", "off"):
         errs[bp] = []
         for dt in (0.005, 0.0025, 0.00125):
-            sim = _sim(bp, dt)
+            sim = ramp_sim(bp, dt)
             sim.step(n_steps=int(round(T_END / dt)))
             assert abs(sim.t - T_END) < 1e-12
             errs[bp].append(np.max(np.abs(sim.state - reference)))
@@ -77,7 +88,7 @@ def test_rk4_fourth_order_across_a_ramp(reference):
 
 
 def test_dp54_ends_steps_on_kinks(reference):
-    sim = _sim("inside", 0.005, "dp54")
+    sim = ramp_sim("inside", 0.005, "dp54")
     sim.advance_to(T_END, rtol=1e-10, atol=1e-10)
     assert np.max(np.abs(sim.state - reference)) < 1e-6
 

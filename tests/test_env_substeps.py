@@ -75,7 +75,7 @@ def test_copies_that_do_not_fail_are_untouched_by_a_neighbours_rerun():
         def run(dt, ns):
             active = (ns > 0).astype(np.int64)
             fixed_batch(b.t, b.states, b.controls, dt, int(ns.max()), *b.detached, b.work, b.air, active, b.limits,
-                        b.tableau, b.status, b.done)
+                        b.tableau, b.breaks, b.status, b.done)
         return run
 
     two, one = make(2), make(1)

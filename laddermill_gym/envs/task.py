@@ -185,7 +185,7 @@ class WingTask:
     def _run(self, nsteps: np.ndarray) -> None:
         b = self.batch
         b.advance(nsteps, lambda dt, ns: self._kernel(
-            b.t, b.states, b.controls, dt, ns, *b.detached, b.work, b.air, b.limits, b.tableau,
+            b.t, b.states, b.controls, dt, ns, *b.detached, b.work, b.air, b.limits, b.tableau, b.breaks,
             self._dx, self.nominal, self.below, self.ground, self.obs, self.aux,
             b.status, b.done))
 

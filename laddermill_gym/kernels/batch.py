@@ -3,16 +3,16 @@ parallel over copies.
 
 Every copy shares the scene's packed model except its wind modulation (speed factor and direction offset
 series, so each copy can see its own gust) and owns one slice of a batched workspace. The per-copy work is
-the same compiled ``rk4_advance`` / ``w_advance`` a single simulator uses, so a batch copy and a single run agree bit
-for bit.
+the same compiled ``kernels/fixed_steps.advance_breaks`` a single simulator uses, so a batch copy and a single run
+agree bit for bit.
 """
 
 from numba import njit, prange, types
 from numba.extending import overload
 
 from laddermill_gym.kernels.contract import KModel, KWork
-from laddermill_gym.kernels.integrate import OK, rk4_advance
-from laddermill_gym.kernels.rigid.rosenbrock import w_advance
+from laddermill_gym.kernels.fixed_steps import advance_breaks, model_with_air
+from laddermill_gym.kernels.integrate import OK
 
 
 def detach_markers(M: KModel) -> tuple[KModel, object, object]:
@@ -40,30 +40,20 @@ def copy_views(b, M, kind, vehicle, WB, AB):
     """(model, workspace) of copy ``b``: the shared model (markers ``kind`` and ``vehicle``) with that copy's air
     (row b of the batched :class:`~laddermill_gym.kernels.contract.KAir` AB: wind modulation and gust grid), and
     views of the copy's rows of the batched workspace WB (no copies made)."""
-    Mb = KModel(kind, M.wf, AB.tmod[b], AB.ms[b], AB.md[b], row_or_none(AB.gp, b), row_or_none(AB.gv, b), M.glob,
-                M.wtype, M.tf, M.ac,
-                M.node_mass, M.fixed, M.ek, M.ei, M.ea, M.ef, M.ekd, M.echild, M.order, M.parent, M.bsz, M.sag,
-                M.caero, vehicle)
+    Mb = model_with_air(kind, vehicle, M, AB.tmod[b], AB.ms[b], AB.md[b], row_or_none(AB.gp, b),
+                        row_or_none(AB.gv, b))
     Wb = KWork(WB.D[b], WB.U[b], WB.Y[b], WB.piv[b], WB.bv[b], WB.Rw[b], WB.tension[b], WB.Tr[b],
                WB.Ts[b], WB.er[b], WB.es[b], WB.coef[b], WB.aout[b], WB.vout[b], WB.vscratch[b], WB.k1[b],
                WB.k2[b], WB.k3[b], WB.k4[b], WB.k5[b], WB.k6[b], WB.k7[b], WB.xt[b], WB.xp[b], WB.Dm[b], WB.Um[b],
-               WB.Ds[b], WB.Us[b], WB.Rn[b], WB.ke[b], WB.kb[b])
+               WB.Ds[b], WB.Us[b], WB.Rn[b], WB.ke[b], WB.kb[b], WB.seg_tmod[b], WB.seg_ms[b], WB.seg_md[b])
     return Mb, Wb
 
 
-@njit(cache=True, error_model="numpy")
-def advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
-    """n fixed steps of dt [s] from t [s]: RK4 when ``tableau`` is None, else the Rosenbrock-W method of that
-    tableau (``kernels/rigid/rosenbrock.py``); the argument's type selects the compiled path. (status, steps)."""
-    if tableau is None:
-        return rk4_advance(t, x, u, dt, n, M, W, limits)
-    return w_advance(t, x, u, dt, n, M, W, limits, tableau)
-
-
 @njit(cache=True, error_model="numpy", parallel=True)
-def fixed_batch(t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, tableau, status, done):
+def fixed_batch(t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, tableau, breaks, status, done):
     """Advance the states X (B, n_state) in place by n fixed steps of size dt with controls U (B, n_controls): RK4
-    (``tableau`` None) or a Rosenbrock-W method (its tableau, ``kernels/rigid/rosenbrock.py``).
+    (``tableau`` None) or a Rosenbrock-W method (its tableau, ``kernels/rigid/rosenbrock.py``), stepping onto the
+    kinks of each copy's wind modulation as ``breaks`` says (``kernels/fixed_steps.py``).
 
     t (B,) [s] is each copy's time (not advanced here). AB is the per-copy air, a KAir of arrays with a leading
     copy axis (wind modulation grid tmod (B, 2), speed factors ms (B, n_mod) [-], direction offsets md (B, n_mod)
@@ -79,6 +69,6 @@ def fixed_batch(t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, tablea
             done[b] = 0
             continue
         Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
-        st, dn = advance_fixed(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau)
+        st, dn, _, _ = advance_breaks(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau, breaks)
         status[b] = st
         done[b] = dn

@@ -156,9 +156,12 @@ KAir = namedtuple("KAir", ["tmod", "ms", "md", "gp", "gv"])
 #: implicit integrator's (``kernels/rigid/rosenbrock.py``) mass matrix at the step's start (``Dm``, ``Um``), its
 #: iteration matrix (``Ds``, ``Us``), the body rotations at the step's start (``Rn``) and each element's stiffness
 #: (``ke`` (n_e, KE_SIZE): the symmetric 3 x 3 axial and geometric stiffness [N/m], slots ``KE_*``) and each body's
-#: load derivatives with its attitude (``kb`` (n_bodies, 6, 3) [N/rad, N m/rad], ``kernels/rigid/body_jacobian.py``).
+#: load derivatives with its attitude (``kb`` (n_bodies, 6, 3) [N/rad, N m/rad], ``kernels/rigid/body_jacobian.py``),
+#: and the wind modulation's line on a step between kinks (``seg_tmod`` (TM_SIZE,), ``seg_ms``, ``seg_md`` (4,):
+#: ``kernels/fixed_steps.py``).
 KWork = namedtuple(
     "KWork",
     ["D", "U", "Y", "piv", "bv", "Rw", "tension", "Tr", "Ts", "er", "es", "coef", "aout", "vout", "vscratch",
-     "k1", "k2", "k3", "k4", "k5", "k6", "k7", "xt", "xp", "Dm", "Um", "Ds", "Us", "Rn", "ke", "kb"],
+     "k1", "k2", "k3", "k4", "k5", "k6", "k7", "xt", "xp", "Dm", "Um", "Ds", "Us", "Rn", "ke", "kb",
+     "seg_tmod", "seg_ms", "seg_md"],
 )

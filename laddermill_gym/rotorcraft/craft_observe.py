@@ -18,8 +18,9 @@ import math
 
 from numba import njit, prange
 
-from laddermill_gym.kernels.batch import advance_fixed, copy_views
+from laddermill_gym.kernels.batch import copy_views
 from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_SIZE, B3_VEL
+from laddermill_gym.kernels.fixed_steps import advance_breaks
 from laddermill_gym.kernels.integrate import OK, SINGULAR, rhs
 from laddermill_gym.rotorcraft.craft_kernels import (
     C_ETA,
@@ -113,9 +114,8 @@ def _observe_craft(t, x, u, dx, M, W, cp, ref, tether_end, obs, aux):
 
 
 @njit(cache=True, error_model="numpy")
-def _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, ref, tether_end,
-                             obs,
-                             aux, status, done):
+def _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
+                             tether_end, obs, aux, status, done):
     n = nsteps[b]
     if n < 0:
         status[b] = OK
@@ -124,17 +124,17 @@ def _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, l
     Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
     st, dn = OK, 0
     if n > 0:
-        st, dn = advance_fixed(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau)
+        st, dn, _, _ = advance_breaks(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau, breaks)
     ost = _observe_craft(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, vehicle.cp, ref, tether_end, obs[b], aux[b])
     status[b] = st if st != OK else ost
     done[b] = dn
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
-def craft_step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, ref, tether_end, obs,
-                             aux,
-                             status, done):
-    """Advance copy b by nsteps[b] RK4 steps of dt [s], then observe it (nsteps[b] = 0: observe only; < 0: skip
+def craft_step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
+                             tether_end, obs, aux, status, done):
+    """Advance copy b by nsteps[b] fixed steps of dt [s] (``tableau`` and ``breaks`` as in
+    ``kernels/rigid/observe.step_observe_batch``), then observe it (nsteps[b] = 0: observe only; < 0: skip
     the copy). Parallel over the copies (numba prange).
 
     t (B,) [s] is each copy's time before the steps (not advanced here); X (B, n_state), U (B, 2) [rad]
@@ -146,16 +146,15 @@ def craft_step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limi
     (steps completed). A copy whose integration fails is left at its last good state and observed there.
     """
     for b in prange(X.shape[0]):
-        _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, ref, tether_end,
-                                 obs, aux, status, done)
+        _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
+                                 tether_end, obs, aux, status, done)
 
 
 @njit(cache=True, error_model="numpy")
-def craft_step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, ref, tether_end,
-                              obs, aux,
-                              status, done):
+def craft_step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
+                              tether_end, obs, aux, status, done):
     """:func:`craft_step_observe_batch` on one thread: for single environments and small batches, where starting
     the thread pool costs more than it saves."""
     for b in range(X.shape[0]):
-        _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, ref, tether_end,
-                                 obs, aux, status, done)
+        _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
+                                 tether_end, obs, aux, status, done)

@@ -18,7 +18,7 @@ from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import Assembly
-from laddermill_gym.sim.breakpoints import W_METHODS
+from laddermill_gym.sim.breakpoints import W_METHODS, breaks_mode
 from laddermill_gym.sim.simulator import FIXED_STEP_METHODS, IntegratorSettings, limits_array
 
 #: Status codes a smaller step may avoid: a singular matrix, a non-finite state, a speed or rate beyond the limits.
@@ -85,6 +85,8 @@ class BatchSimulator:
                              f"model (this one is {type(self.model.kind).__name__}); use 'rk4'")
         #: the kernels' method argument: None (RK4) or the Rosenbrock-W tableau
         self.tableau = W_METHODS.get(settings.method)
+        #: the kernels' ``breaks`` argument: how the steps meet the kinks of each copy's wind (``settings.breakpoints``)
+        self.breaks = breaks_mode(settings)
         #: (model without markers, kind, vehicle): the parallel kernels' form of ``model``
         self.detached = detach_markers(self.model)
         one = make_workspace(assembly, *vehicle_sizes)
@@ -143,7 +145,7 @@ class BatchSimulator:
         completed).
         Returns the status array (B,); a failed copy is left at its last good state."""
         fixed_batch(self.t, self.states, self.controls, self.settings.dt, int(n_steps), *self.detached, self.work,
-                    self.air, self.active, self.limits, self.tableau, self.status, self.done)
+                    self.air, self.active, self.limits, self.tableau, self.breaks, self.status, self.done)
         self.t += self.done * self.settings.dt
         return self.status
 

@@ -11,7 +11,8 @@ as they were (bit for bit).
 
 Control changes happen between calls of ``Simulator.step`` / ``advance_to`` (the controls are held within a
 call), so they are breakpoints already. The frozen gust grid moves continuously with time (no time kinks
-of its own); the batched kernels (``BatchSimulator``, the envs) do not split steps.
+of its own). The fixed-step methods split their steps in the compiled ``kernels/fixed_steps.py``, which the batched
+kernels (``BatchSimulator``, the envs) run too; the error-controlled ones are split here.
 """
 
 from __future__ import annotations
@@ -20,8 +21,9 @@ import numpy as np
 
 from laddermill_gym.atmosphere.wind_kernels import modulation
 from laddermill_gym.kernels.contract import TM_DT, TM_SIZE, TM_T0
-from laddermill_gym.kernels.integrate import OK, dp54_advance, rk4_advance
-from laddermill_gym.kernels.rigid.rosenbrock import ROS2, ROS34PW2, w_advance
+from laddermill_gym.kernels.fixed_steps import ALIGN_TOL, BREAKS_ENDS, BREAKS_INSIDE, BREAKS_OFF, advance_breaks
+from laddermill_gym.kernels.integrate import OK, dp54_advance
+from laddermill_gym.kernels.rigid.rosenbrock import ROS2, ROS34PW2
 from laddermill_gym.kernels.rigid.rosenbrock_adaptive import w_adaptive
 
 #: Tableaux of the fixed-step linearly implicit (Rosenbrock-W) methods by name (``kernels/rigid/rosenbrock.py``)
@@ -30,16 +32,6 @@ W_METHODS = {"ros2": ROS2, "ros34pw2": ROS34PW2}
 W_ADAPTIVE = {"ros34pw2a": (ROS34PW2, 2)}
 
 
-def fixed_advance(method: str, t, x, u, dt, n, model, work, limits):
-    """n steps of dt [s] of the fixed-step ``method`` ("rk4" or a name of :data:`W_METHODS`) from t [s];
-    (status, steps done)."""
-    if method == "rk4":
-        return rk4_advance(t, x, u, dt, n, model, work, limits)
-    return w_advance(t, x, u, dt, n, model, work, limits, W_METHODS[method])
-
-#: a kink closer than this fraction of the step to a step's end counts as on it (no split): accumulated time
-#: roundoff must not split a step that a grid aligned with the step was meant to end on
-ALIGN_TOL = 1e-9
 #: ``IntegratorSettings.breakpoints``: "off" integrates across kinks (as before); "inside" splits the steps that
 #: hold a kink inside (steps that only end or start on one run as before, bit for bit); "all" also runs those
 #: with their own segment's modulation (fourth order on a kink grid aligned with the steps too)
@@ -78,32 +70,6 @@ def segment_model(model, ta: float, tb: float):
     return m._replace(tmod=tmod, ms=ms, md=md)
 
 
-def split_steps(kinks: np.ndarray, t: float, dt: float, n: int, ends: bool = False) -> list[tuple[int, list[float]]]:
-    """The steps of n RK4 steps of dt [s] from t [s] that hold kinks strictly inside: [(step index, [kink times
-    inside it, sorted])], in order. Kinks within ``ALIGN_TOL`` dt of a step's end are on it (no split); with
-    ``ends`` the steps that end or start on a kink are listed too (with no kink inside), so that they run with
-    their own segment's modulation."""
-    if kinks.size == 0 or n == 0:
-        return []
-    eps = ALIGN_TOL * dt
-    lo, hi = np.searchsorted(kinks, [t - eps, t + n * dt + eps], side="right")
-    out: dict[int, list[float]] = {}
-    for b in kinks[lo:hi]:
-        u = (b - t) / dt
-        j = int(np.floor(u))
-        f = u - j
-        if f < ALIGN_TOL or f > 1.0 - ALIGN_TOL:
-            if ends:
-                k = int(round(u))
-                for i in (k - 1, k):
-                    if 0 <= i < n:
-                        out.setdefault(i, [])
-            continue
-        if 0 <= j < n:
-            out.setdefault(j, []).append(float(b))
-    return sorted(out.items())
-
-
 def interior_kinks(kinks: np.ndarray, ta: float, tb: float, ends: bool = False) -> list[float]:
     """Kinks strictly inside (ta, tb) [s], beyond ``ALIGN_TOL`` of the span from either end (with ``ends``, the
     kinks at either end too, so that each piece runs with its own segment's modulation)."""
@@ -117,38 +83,27 @@ def interior_kinks(kinks: np.ndarray, ta: float, tb: float, ends: bool = False) 
     return [float(b) for b in kinks[lo:hi] if ta + tol < b < tb - tol]
 
 
+def breaks_mode(settings) -> int:
+    """The fixed-step kernels' ``breaks`` argument (``kernels/fixed_steps.py``) for ``settings.breakpoints``: a
+    Rosenbrock-W method's last stage sits on the step's end, so a step that ends on a kink runs with its own
+    segment's line too ("all"); RK4 keeps "inside" as its default for the pinned trajectories' sake."""
+    mode = settings.breakpoints
+    if mode == "off":
+        return BREAKS_OFF
+    return BREAKS_ENDS if mode == "all" or settings.method != "rk4" else BREAKS_INSIDE
+
+
 def fixed_pieces(sim, n: int):
     """n steps of ``sim.settings.dt`` of its fixed-step method (RK4 or a Rosenbrock-W method) on ``sim`` (a
-    ``Simulator``), a step that holds a kink split at it, each piece with its segment's modulation; advances
-    ``sim.t`` and ``sim.state``. Returns (status, size of the failed step [s]); on a failure the state and time are
-    those before the failed step (or piece)."""
+    ``Simulator``), a step that holds a kink split at it, each piece with its segment's modulation
+    (``kernels/fixed_steps.advance_breaks``, the batched kernels' own stepper); advances ``sim.t`` and
+    ``sim.state``. Returns (status, size of the failed step [s]); on a failure the state and time are those before
+    the failed step (or piece)."""
     s = sim.settings
-    mode = s.breakpoints
-    # a Rosenbrock-W method's last stage sits on the step's end, so a step that ends on a kink must run with its own
-    # segment's line too ("all"; RK4 keeps "inside" as its default for the pinned trajectories' sake)
-    ends = mode == "all" or (mode == "inside" and s.method != "rk4")
-    splits = split_steps(sim.breakpoint_times, sim.t, s.dt, n, ends) if mode != "off" else []
-    done = 0
-    for j, inside in splits + [(n, [])]:
-        if j > done:
-            status, k = fixed_advance(s.method, sim.t, sim.state, sim.controls, s.dt, j - done, sim.model, sim.work,
-                                      sim.limits)
-            sim.t += k * s.dt
-            done += k
-            if status != OK:
-                return status, s.dt
-        if j == n:
-            break
-        ends = [sim.t, *inside, sim.t + s.dt]
-        for ta, tb in zip(ends[:-1], ends[1:], strict=True):
-            status, _ = fixed_advance(s.method, ta, sim.state, sim.controls, tb - ta, 1,
-                                      segment_model(sim.model, ta, tb), sim.work, sim.limits)
-            if status != OK:
-                sim.t = ta
-                return status, tb - ta
-        sim.t = ends[-1]
-        done += 1
-    return OK, s.dt
+    status, _, t, h = advance_breaks(sim.t, sim.state, sim.controls, s.dt, n, sim.model, sim.work, sim.limits,
+                                     W_METHODS.get(s.method), breaks_mode(s))
+    sim.t = t
+    return status, h
 
 
 def _adaptive(method: str, t, t_end, x, u, h, rtol, atol, model, work, limits, max_steps):

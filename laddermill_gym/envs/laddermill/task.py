@@ -230,7 +230,7 @@ class MillTask:
         """Advance copy b by nsteps[b] RK4 steps (0: observe only, < 0: skip), then compose the observations."""
         b = self.batch
         b.advance(nsteps, lambda dt, ns: self._kernel(
-            b.t, b.states, b.controls, dt, ns, *b.detached, b.work, b.air, b.limits, b.tableau,
+            b.t, b.states, b.controls, dt, ns, *b.detached, b.work, b.air, b.limits, b.tableau, b.breaks,
             self._dx, self._zero_nominal, self.below, self.ground, self.slot_obs, self.aux,
             b.status, b.done))
         self._compose()

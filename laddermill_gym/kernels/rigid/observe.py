@@ -13,7 +13,7 @@ import math
 from numba import njit, prange
 
 from laddermill_gym.atmosphere.wind_kernels import modulation, wind_point
-from laddermill_gym.kernels.batch import advance_fixed, copy_views
+from laddermill_gym.kernels.batch import copy_views
 from laddermill_gym.kernels.contract import (
     B3_POS,
     B3_RATE,
@@ -30,6 +30,7 @@ from laddermill_gym.kernels.contract import (
     TM_DT,
     TM_T0,
 )
+from laddermill_gym.kernels.fixed_steps import advance_breaks
 from laddermill_gym.kernels.integrate import OK, SINGULAR, rhs
 
 #: Columns of the auxiliary output ``aux`` (B, N_AUX).
@@ -104,7 +105,7 @@ def observe_state(t, x, u, M, W, nominal, below, ground, obs, aux):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
-def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, nominal, below,
+def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below,
                        ground, obs, aux, status, done):
     n = nsteps[b]
     if n < 0:
@@ -114,17 +115,18 @@ def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits,
     Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
     st, dn = OK, 0
     if n > 0:
-        st, dn = advance_fixed(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau)
+        st, dn, _, _ = advance_breaks(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau, breaks)
     ost = _observe_one(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, nominal, below, ground, obs[b], aux[b])
     status[b] = st if st != OK else ost
     done[b] = dn
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, parallel=True)
-def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, nominal, below, ground,
-                       obs, aux, status, done):
-    """Advance copy b by nsteps[b] RK4 steps, then observe it (nsteps[b] = 0: observe only; < 0: skip the copy).
-    Parallel over the copies (numba prange).
+def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below,
+                       ground, obs, aux, status, done):
+    """Advance copy b by nsteps[b] steps of the fixed-step method (RK4 when ``tableau`` is None, else that
+    Rosenbrock-W method; steps meet the kinks of the copy's wind as ``breaks`` says, ``kernels/fixed_steps.py``),
+    then observe it (nsteps[b] = 0: observe only; < 0: skip the copy). Parallel over the copies (numba prange).
 
     t (B,) [s] is each copy's time before the steps (not advanced here); X (B, n_state), U (B, n_controls);
     per-copy air AB (a ``KAir`` of arrays with a leading copy axis: wind modulation and gust grid); WB a KWork
@@ -135,15 +137,15 @@ def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, ta
     (steps completed). A copy whose integration fails is left at its last good state and observed there.
     """
     for b in prange(X.shape[0]):
-        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, nominal, below,
-                           ground, obs, aux, status, done)
+        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal,
+                           below, ground, obs, aux, status, done)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
-def step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, nominal, below, ground,
-                        obs, aux, status, done):
+def step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below,
+                        ground, obs, aux, status, done):
     """:func:`step_observe_batch` on one thread: for single environments and small batches, where starting
     the thread pool costs more than it saves (and on a loaded machine waits for a descheduled thread)."""
     for b in range(X.shape[0]):
-        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, DX, nominal, below,
-                           ground, obs, aux, status, done)
+        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal,
+                           below, ground, obs, aux, status, done)

@@ -1,0 +1,175 @@
+"""Fixed-step integration that steps onto the kinks of the wind's time modulation, for the single and the batched
+simulators alike (one compiled implementation, so a batch copy and a single run agree bit for bit).
+
+The modulation (``atmosphere/field.py``) is piecewise linear on the grid t0 + k dt_w and held outside it, so the
+right-hand side has a kink wherever the slope of the speed factor or of the direction offset changes (the slopes
+enter the wings' alpha-rate term). A Runge-Kutta or Rosenbrock-W step across a kink loses its order, and a step
+that only ends on one still does: its last stage, evaluated on the kink, sees the next segment's slope. So a
+step with a kink strictly inside is split there, and each piece runs with the straight line of its own segment
+(``seg_*`` arrays of the workspace; the line is extended beyond the piece, so a stage on the piece's end sees the
+piece's slope). ``ends`` mode also runs the steps that only start or end on a kink on their own line.
+
+A kink closer than ``ALIGN_TOL`` of the step to a step's end counts as on it (no split), so a grid meant to be
+aligned with the steps is not split by accumulated time roundoff. Steps away from every kink run exactly as the
+plain fixed-step kernels run them (bit for bit).
+"""
+
+import math
+
+from numba import njit
+
+from laddermill_gym.atmosphere.wind_kernels import modulation
+from laddermill_gym.kernels.contract import TM_DT, TM_T0, KModel
+from laddermill_gym.kernels.integrate import OK, rk4_advance
+from laddermill_gym.kernels.rigid.rosenbrock import w_advance
+
+#: a kink within this fraction of a step of the step's end is on it (see the module docstring)
+ALIGN_TOL = 1e-9
+#: the ``breaks`` argument: integrate across kinks / split steps with a kink inside / also give the steps that
+#: start or end on a kink their own segment's line
+BREAKS_OFF, BREAKS_INSIDE, BREAKS_ENDS = 0, 1, 2
+
+
+@njit(cache=True)
+def model_with_air(kind, vehicle, M, tmod, ms, md, gp, gv):
+    """The packed model ``M`` with markers ``kind`` and ``vehicle`` and the given air (wind modulation grid tmod (2,),
+    speed factors ms and direction offsets md (n_mod,), gust grid header gp and samples gv, or None)."""
+    return KModel(kind, M.wf, tmod, ms, md, gp, gv, M.glob, M.wtype, M.tf, M.ac, M.node_mass, M.fixed, M.ek, M.ei,
+                  M.ea, M.ef, M.ekd, M.echild, M.order, M.parent, M.bsz, M.sag, M.caero, vehicle)
+
+
+@njit(cache=True, error_model="numpy")
+def advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
+    """n fixed steps of dt [s] from t [s]: RK4 when ``tableau`` is None, else the Rosenbrock-W method of that
+    tableau (``kernels/rigid/rosenbrock.py``); the argument's type selects the compiled path. (status, steps)."""
+    if tableau is None:
+        return rk4_advance(t, x, u, dt, n, M, W, limits)
+    return w_advance(t, x, u, dt, n, M, W, limits, tableau)
+
+
+@njit(cache=True)
+def is_kink(k, ms, md):
+    """Whether the slope of the modulation (speed factor ms or direction offset md, (n_mod,)) changes at grid
+    point k (the slope is zero before the first and after the last point)."""
+    n = ms.size
+    ls = ms[k] - ms[k - 1] if k >= 1 else 0.0
+    ld = md[k] - md[k - 1] if k >= 1 else 0.0
+    rs = ms[k + 1] - ms[k] if k <= n - 2 else 0.0
+    rd = md[k + 1] - md[k] if k <= n - 2 else 0.0
+    return ls != rs or ld != rd
+
+
+@njit(cache=True)
+def grid_range(ta, tb, tmod, n_mod):
+    """Grid indices (first, last + 1) of the modulation points that may lie in [ta, tb] [s] (a superset by one
+    point at each end; empty for a non-finite time or a single sample: no index is formed from a non-finite
+    float)."""
+    t0, dtw = tmod[TM_T0], tmod[TM_DT]
+    if n_mod < 2 or not (math.isfinite(ta) and math.isfinite(tb) and dtw > 0.0):
+        return 0, 0
+    lo = (ta - t0) / dtw - 1.0
+    hi = (tb - t0) / dtw + 2.0
+    if hi < 0.0 or lo > n_mod:
+        return 0, 0
+    return max(0, int(math.floor(lo))), min(n_mod, int(math.ceil(hi)))
+
+
+@njit(cache=True)
+def step_kinks(t, dt, j, tmod, ms, md):
+    """Kinks of step j of the steps of dt [s] from t [s]: (how many lie strictly inside it, whether one lies on its
+    start or end within ``ALIGN_TOL``). Classified by u = (kink - t) / dt against j, j + 1."""
+    inside, on_end = 0, False
+    k0, k1 = grid_range(t + j * dt, t + (j + 1) * dt, tmod, ms.size)
+    for k in range(k0, k1):
+        if not is_kink(k, ms, md):
+            continue
+        u = (tmod[TM_T0] + tmod[TM_DT] * k - t) / dt
+        f = u - math.floor(u)
+        if f < ALIGN_TOL or f > 1.0 - ALIGN_TOL:
+            r = round(u)
+            if r == j or r == j + 1:
+                on_end = True
+        elif math.floor(u) == j:
+            inside += 1
+    return inside, on_end
+
+
+@njit(cache=True)
+def fill_segment(M, ta, tb, seg_tmod, seg_ms, seg_md):
+    """The straight line that the modulation of M follows on [ta, tb] [s] (no kink inside), extended beyond it,
+    as a four-sample modulation: [ta, tb] maps to the grid's second segment, so a stage on either end sees this
+    segment's value and slope."""
+    tm = 0.5 * (ta + tb)
+    s, d, sd, dd = modulation(tm, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
+    h = max(tb - ta, 1e-12)
+    seg_tmod[TM_T0] = ta - h
+    seg_tmod[TM_DT] = h
+    for i in range(4):
+        off = (ta - tm) + (i - 1.0) * h
+        seg_ms[i] = s + sd * off
+        seg_md[i] = d + dd * off
+
+
+@njit(cache=True, error_model="numpy")
+def _piece(ta, tb, x, u, M, W, limits, tableau):
+    """One step from ta to tb [s] with the modulation's line on [ta, tb]; (status, steps done)."""
+    fill_segment(M, ta, tb, W.seg_tmod, W.seg_ms, W.seg_md)
+    Ms = model_with_air(M.kind, M.vehicle, M, W.seg_tmod, W.seg_ms, W.seg_md, M.gp, M.gv)
+    return advance_fixed(ta, x, u, tb - ta, 1, Ms, W, limits, tableau)
+
+
+@njit(cache=True, error_model="numpy")
+def _kinked_step(tc, t, dt, j, x, u, M, W, limits, tableau):
+    """Step j (from tc [s]) of the steps of dt from t, split at its interior kinks, each piece on its own line.
+    (status, start of the failed piece or the step's end [s], size of the failed piece [s])."""
+    ta = tc
+    k0, k1 = grid_range(tc, tc + dt, M.tmod, M.ms.size)
+    for k in range(k0, k1):
+        if not is_kink(k, M.ms, M.md):
+            continue
+        b = M.tmod[TM_T0] + M.tmod[TM_DT] * k
+        u_k = (b - t) / dt
+        f = u_k - math.floor(u_k)
+        if math.floor(u_k) != j or f < ALIGN_TOL or f > 1.0 - ALIGN_TOL:
+            continue
+        st, _ = _piece(ta, b, x, u, M, W, limits, tableau)
+        if st != OK:
+            return st, ta, b - ta
+        ta = b
+    te = tc + dt
+    st, _ = _piece(ta, te, x, u, M, W, limits, tableau)
+    if st != OK:
+        return st, ta, te - ta
+    return OK, te, dt
+
+
+@njit(cache=True, error_model="numpy")
+def advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks):
+    """n fixed steps of dt [s] from t [s] (RK4 when ``tableau`` is None, else that Rosenbrock-W method) stepping
+    onto the modulation's kinks as ``breaks`` says (``BREAKS_*``). Runs of plain steps go through
+    :func:`advance_fixed` in one call. Returns (status, whole steps done, time of the state [s], size of the
+    failed step or piece [s], or dt); on a failure the state is that at the returned time."""
+    tc = t
+    done = 0
+    if breaks != BREAKS_OFF:
+        for j in range(n):
+            inside, on_end = step_kinks(t, dt, j, M.tmod, M.ms, M.md)
+            if inside == 0 and not (on_end and breaks == BREAKS_ENDS):
+                continue
+            if j > done:
+                st, k = advance_fixed(tc, x, u, dt, j - done, M, W, limits, tableau)
+                tc += k * dt
+                done += k
+                if st != OK:
+                    return st, done, tc, dt
+            st, tc, h = _kinked_step(tc, t, dt, j, x, u, M, W, limits, tableau)
+            if st != OK:
+                return st, done, tc, h
+            done += 1
+    if n > done:
+        st, k = advance_fixed(tc, x, u, dt, n - done, M, W, limits, tableau)
+        tc += k * dt
+        done += k
+        if st != OK:
+            return st, done, tc, dt
+    return OK, done, tc, dt
