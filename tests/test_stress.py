@@ -70,7 +70,10 @@ def test_command_table(tmp_path, capsys):
         rows = list(csv.DictReader(fh))
     cases = {r["case"]: r for r in rows}
     assert cases["hold 0.002 h"]["passed"] == "True"
-    # a finding the command reports (not a crash): the scene's trim finds no state with 8 elements per piece
-    assert cases["8 element(s) per piece"]["passed"] == "False"
-    assert code == 1 and "FAIL" in capsys.readouterr().out
+    # 8 elements per piece has an initial state since issue 13 (catenary guess, Newton on forces: ladder/initial.py);
+    # the scene's 5 ms RK4 step is above the estimated stable step (1.35 ms), which the case flags, and the run at
+    # half the estimate holds
+    row = cases["8 element(s) per piece"]
+    assert row["passed"] == "True" and row["scene_dt_flagged"] == "True", row
+    assert code == 0 and "FAIL" not in capsys.readouterr().out
     assert np.all([r["scene"] == "tethered_wing" for r in rows])
