@@ -39,6 +39,7 @@ from laddermill_gym.kernels.integrate import (
     dp54_advance,
 )
 from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
+from laddermill_gym.model.params import AERO_INDEX
 
 #: Ground-contact modes of ``IntegratorSettings.ground_contact``.
 GROUND_MODES: tuple[str, ...] = ("stop", "flag", "off")
@@ -198,7 +199,46 @@ def diagnose(sim) -> str:
     acc = np.abs(dx)
     i = int(np.nanargmax(np.where(np.isfinite(acc), acc, -1.0)))
     msgs.append(f"largest derivative {sim.state_name(i)} = {dx[i]:.4g}")
+    cause = alpha_rate_cause(sim, dx, i)
+    if cause:
+        msgs.append(cause)
     return "; ".join(msgs)
+
+
+#: a wing's largest acceleration [m/s^2 or rad/s^2] above which :func:`alpha_rate_cause` looks at the alpha-rate
+#: terms, and the factor by which removing them must lower it to be named as the cause
+ALPHA_RATE_CHECK, ALPHA_RATE_FACTOR = 1e4, 1e3
+
+
+def alpha_rate_cause(sim, dx: np.ndarray, i: int) -> str:
+    """The alpha-rate terms (C_L_alphadot, C_m_alphadot, Meijaard et al. 1999 eq. 6) enter the mass matrix as
+    -k g^T, with g = d alpha / d v_a ~ 1 / (in-plane airspeed) and k ~ airspeed: at large sideslip (flow along
+    the span) they can make the mass matrix singular, and the accelerations pass through a pole that no step
+    size resolves (the error-controlled methods' steps collapse there; a fixed step jumps it). When state entry
+    ``i`` (the largest derivative ``dx``) is a wing's acceleration above ``ALPHA_RATE_CHECK`` and the same state
+    without those two columns gives ``ALPHA_RATE_FACTOR`` times less, say so, with the wing's angle of attack
+    and sideslip; else ''."""
+    a = sim.assembly
+    if not (a.n_wings and i < a.n_wings * a.wing_state_size and abs(dx[i]) > ALPHA_RATE_CHECK):
+        return ""
+    k, j = divmod(i, a.wing_state_size)
+    vel = B3_VEL if a.dim == 3 else B2_U
+    if j < vel:
+        return ""
+    cols = [AERO_INDEX["CLad"], AERO_INDEX["Cmad"]]
+    ac = sim.model.ac.copy()
+    if ac.ndim != 4 or ac.shape[-1] <= max(cols):  # a vehicle without the wing table (the rotorcraft)
+        return ""
+    ac[:, :, :, cols] = 0.0
+    dx0 = np.zeros(sim.n_state)
+    if _rhs_kernel(float(sim.t), sim.state, sim.controls, dx0, sim.model._replace(ac=ac), sim.work) != 0:
+        return ""
+    if not abs(dx0[i]) * ALPHA_RATE_FACTOR < abs(dx[i]):
+        return ""
+    al, be = np.degrees(sim.wing_alpha_beta()[k])
+    return (f"wing {k} (angle of attack {al:.3g} deg, sideslip {be:.3g} deg): its alpha-rate terms make the mass "
+            f"matrix nearly singular ({sim.state_name(i)} derivative {dx0[i]:.3g} without them), a limit of the "
+            "quasi-steady alpha-rate model at large sideslip, not of the step size (docs/numerics.md)")
 
 
 def failure_message(sim, status: int, h: float) -> str:

@@ -2,7 +2,8 @@
 "outcome", figures...}``.
 
 Outcomes: "ok" (ran to the end); "terminated: ..." for a documented physical termination (a wing or free node at
-the ground with ``ground_contact`` "stop", raised as a SimulationError naming the time, body and height); "failed:
+the ground with ``ground_contact`` "stop", raised as a SimulationError naming the time, body and height; or a
+wing whose alpha-rate terms make the mass matrix singular at large sideslip, ``sim/reports.alpha_rate_cause``); "failed:
 ..." for a numerical breakdown (non-finite state, speed or rate limit, singular mass matrix, DP5(4) step
 collapse or budget), which is a failure of the case unless the case provokes it on purpose (injections).
 """
@@ -49,6 +50,8 @@ def outcome(err: Exception | None) -> tuple[str, bool]:
     text = str(err).splitlines()[0]
     if "ground" in text and ("height" in text or "contact" in text):
         return f"terminated: {text[:150]}", True
+    if "alpha-rate terms make the mass matrix nearly singular" in text:  # sim/reports.alpha_rate_cause
+        return f"terminated (limit of the quasi-steady model): {text.split('; wing ')[-1][:150]}", True
     return f"failed: {text[:150]}", False
 
 
