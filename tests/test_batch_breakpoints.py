@@ -7,12 +7,10 @@ sampled on the step grid, and the single simulator (bit for bit: the same compil
 
 from __future__ import annotations
 
-import dataclasses
-
 import numpy as np
 import pytest
 
-from laddermill_gym import Simulator, load_scene
+from laddermill_gym import Simulator
 from laddermill_gym.atmosphere.disturbances import DirectionStep
 from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.sim.batch import BatchSimulator
@@ -54,34 +52,6 @@ def test_batch_copy_splits_a_step_at_a_kink_like_a_single_run(reference, mode):
         assert err < 1e-7, err
     else:
         assert err > 1e-6, err  # the step across the kink: second order there
-
-
-def test_batch_aligned_kinks_fourth_order():
-    """A gust sampled on the step grid (every step ends on a kink), run with "all": each step on its own segment's
-    line, RK4's error falls by about 16 per halving; "inside" there is the former stepping across the kinks."""
-    scene = load_scene("tethered_wing")
-    start = scene.simulator()
-    tt = np.arange(0.0, 0.4001, 0.02)
-    speed = 1.0 + 0.15 * (1.0 - np.cos(2 * np.pi * tt / 0.4))
-    asm = dataclasses.replace(scene.assembly, wind=scene.assembly.wind.with_modulation(0.1, 0.02, speed,
-                                                                                     np.zeros_like(speed)))
-
-    def run(mode, dt, method="rk4"):
-        settings = dataclasses.replace(scene.settings, dt=dt, method=method, breakpoints=mode)
-        sim = Simulator(asm, start.initial_state, settings, start.initial_controls)
-        if method == "dp54":
-            for t in np.arange(0.02, 0.6001, 0.02):  # stop on every kink: reference pieces
-                sim.advance_to(t, rtol=1e-12, atol=1e-12)
-            return sim.state.copy()
-        b = _batch(sim, 1)
-        assert np.all(b.step(int(round(0.6 / dt))) == 0)
-        return b.states[0].copy()
-
-    ref = run("all", 0.005, "dp54")
-    err = {m: [np.max(np.abs(run(m, dt) - ref)) for dt in (0.0025, 0.00125)] for m in ("all", "inside")}
-    assert err["all"][0] / err["all"][1] > 12, err
-    assert err["inside"][0] / err["inside"][1] < 8, err
-    assert err["all"][1] < 0.05 * err["inside"][1], err
 
 
 def test_env_gust_grid_off_the_step_grid_is_split():

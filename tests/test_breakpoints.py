@@ -16,6 +16,7 @@ from scipy.integrate import solve_ivp
 from laddermill_gym import Simulator, load_scene
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.kernels.fixed_steps import step_kinks
+from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.breakpoints import modulation_kinks
 
 T_STEP = 0.2037  # [s] start of the 1 ms direction ramp: inside a step of every dt used here
@@ -114,10 +115,11 @@ def test_breakpoints_setting_checked():
         IntegratorSettings(breakpoints=True)
 
 
-def test_aligned_kinks_fourth_order_with_all():
+@pytest.mark.parametrize("runner", ["single", "batch"])
+def test_aligned_kinks_fourth_order_with_all(runner):
     """A gust sampled on the step grid: every step ends on a kink. "all" gives each step its own segment's line
     (RK4's fourth order: error ratio near 16 per halving); across the kinks ("inside" = "off" here) the end stage
-    sees the next segment's slope and the error falls far slower."""
+    sees the next segment's slope and the error falls far slower. The same for a copy of the batched kernel."""
     scene = load_scene("tethered_wing")
     start = scene.simulator()
     tt = np.arange(0.0, 0.4001, 0.02)
@@ -131,6 +133,11 @@ def test_aligned_kinks_fourth_order_with_all():
         if method == "dp54":
             for t in np.arange(0.02, 0.6001, 0.02):  # stop on every kink: DOP853-like reference pieces
                 sim.advance_to(t, rtol=1e-12, atol=1e-12)
+        elif runner == "batch":
+            b = BatchSimulator(asm, 1, sim.settings)
+            b.states[0], b.controls[0] = sim.state, sim.controls
+            assert np.all(b.step(int(round(0.6 / dt))) == 0)
+            return b.states[0].copy()
         else:
             sim.step(n_steps=int(round(0.6 / dt)))
         return sim.state.copy()

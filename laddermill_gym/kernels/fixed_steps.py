@@ -151,25 +151,23 @@ def advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks):
     failed step or piece [s], or dt); on a failure the state is that at the returned time."""
     tc = t
     done = 0
-    if breaks != BREAKS_OFF:
-        for j in range(n):
+    for j in range(n + 1):  # j == n flushes the last run of plain steps
+        if j < n:
+            if breaks == BREAKS_OFF:
+                continue
             inside, on_end = step_kinks(t, dt, j, M.tmod, M.ms, M.md)
             if inside == 0 and not (on_end and breaks == BREAKS_ENDS):
                 continue
-            if j > done:
-                st, k = advance_fixed(tc, x, u, dt, j - done, M, W, limits, tableau)
-                tc += k * dt
-                done += k
-                if st != OK:
-                    return st, done, tc, dt
-            st, tc, h = _kinked_step(tc, t, dt, j, x, u, M, W, limits, tableau)
+        if j > done:
+            st, k = advance_fixed(tc, x, u, dt, j - done, M, W, limits, tableau)
+            tc += k * dt
+            done += k
             if st != OK:
-                return st, done, tc, h
-            done += 1
-    if n > done:
-        st, k = advance_fixed(tc, x, u, dt, n - done, M, W, limits, tableau)
-        tc += k * dt
-        done += k
+                return st, done, tc, dt
+        if j == n:
+            break
+        st, tc, h = _kinked_step(tc, t, dt, j, x, u, M, W, limits, tableau)
         if st != OK:
-            return st, done, tc, dt
+            return st, done, tc, h
+        done += 1
     return OK, done, tc, dt
