@@ -84,3 +84,16 @@ def node_slice(n_wings: int, j: int) -> slice:
     """State slice of free node j's position and velocity (6 floats) in a 3D state."""
     o = 13 * n_wings + 6 * j
     return slice(o, o + 6)
+
+
+def pytest_configure(config):
+    """SB3 writes an (empty) log folder to the system's temporary directory for every model learnt without a log
+    folder; the tests' go to one folder, removed when the session ends (SB3 reads ``SB3_LOGDIR``)."""
+    import os
+    import shutil
+    import tempfile
+
+    if "SB3_LOGDIR" not in os.environ:
+        folder = tempfile.mkdtemp(prefix="laddermill-tests-sb3-")
+        os.environ["SB3_LOGDIR"] = folder
+        config.add_cleanup(lambda: shutil.rmtree(folder, ignore_errors=True))
