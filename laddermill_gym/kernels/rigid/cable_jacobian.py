@@ -48,7 +48,7 @@ from laddermill_gym.kernels.contract import (
     N3_POS,
     N3_SIZE,
 )
-from laddermill_gym.kernels.dispatch import rest_length
+from laddermill_gym.kernels.dispatch import elongation_rate, rest_length
 from laddermill_gym.kernels.rigid.rhs3d import block_of, end_kinematics
 
 _FM = {"contract", "nsz", "arcp"}
@@ -188,6 +188,71 @@ def add_stiffness_force(xn, rx, M, W, fac):
         fx = fac * (ke[KE_XX] * dx + ke[KE_XY] * dy + ke[KE_XZ] * dz)
         fy = fac * (ke[KE_XY] * dx + ke[KE_YY] * dy + ke[KE_YZ] * dz)
         fz = fac * (ke[KE_XZ] * dx + ke[KE_YZ] * dy + ke[KE_ZZ] * dz)
+        br = block_of(kr, ir, nw)
+        bs = block_of(ks, is_, nw)
+        if br >= 0:
+            for j in range(nr):
+                W.bv[br, j] += W.Tr[0, j] * fx + W.Tr[1, j] * fy + W.Tr[2, j] * fz
+        if bs >= 0:
+            for j in range(ns):
+                W.bv[bs, j] -= W.Ts[0, j] * fx + W.Ts[1, j] * fy + W.Ts[2, j] * fz
+
+
+#: Size of the directional difference of :func:`add_moving_end_force` along the largest entry of its direction
+DIFF_END = 1e-6
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def add_moving_end_force(t, xn, r, rt, M, W, fac):
+    """W.bv += fac dQ/dz (r_z, rt): the change of the elements' pull as their rest length and its rate move with
+    the states outside the block tree (a station's pay-out and cable speed) and with time, along the stage
+    direction r (state-shaped; its non-block entries count) and rt (time), for the taut elements at xn.
+
+    This is the Jacobian's column for those states and for time (the stage's time increment rt, H&W IV.7's
+    gamma_i h f_t term). A W-method keeps its order without it; with it, a stiff element driven by a moving
+    rest length (the mill's short first element, l0 = l_p / 10 + s(t)) is not left explicit, which cost the
+    method its order on the laddermill (local errors at wing 0 nearly independent of the step). Derivatives of
+    the plain truss: dsigma / dl0 = -(EA + sigma) / l0, dsigma / d(elongation rate) = DA / l0; the rest length and
+    the rate come from the kind (``kernels/dispatch.py``) at (t, xn) and at (t + e rt, xn + e r), a directional
+    difference (exact for the mill's linear ends). W.k7 is scratch (unused by the W-methods' stages); W.Tr, W.Ts,
+    W.er, W.es too."""
+    big = abs(rt)
+    for i in range(xn.size):
+        a = abs(r[i])
+        if a > big:
+            big = a
+    if not big > 0.0:
+        return
+    step = DIFF_END / big
+    xe = W.k7
+    for i in range(xn.size):
+        xe[i] = xn[i] + step * r[i]
+    te = t + step * rt
+    nw = M.wtype.size
+    for e in range(M.ef.shape[0]):
+        sig = W.tension[e]
+        if not sig > 0.0:
+            continue
+        l0 = rest_length(M.kind, e, t, xn, M)
+        dl0 = (rest_length(M.kind, e, te, xe, M) - l0) / step
+        drate = (elongation_rate(M.kind, e, te, xe, M, l0, l0, 0.0)
+                 - elongation_rate(M.kind, e, t, xn, M, l0, l0, 0.0)) / step
+        if dl0 == 0.0 and drate == 0.0:
+            continue
+        kr, ks = M.ek[e, 0], M.ek[e, 1]
+        ir, is_ = M.ei[e, 0], M.ei[e, 1]
+        nr = end_kinematics(kr, ir, M.ea[e, 0], xn, W.Rn, M.fixed, nw, W.Tr, W.er)
+        ns = end_kinematics(ks, is_, M.ea[e, 1], xn, W.Rn, M.fixed, nw, W.Ts, W.es)
+        lx, ly, lz = W.es[0] - W.er[0], W.es[1] - W.er[1], W.es[2] - W.er[2]
+        ln = math.sqrt(lx * lx + ly * ly + lz * lz)
+        if not ln > 1e-9:
+            continue
+        if drate != 0.0:  # the rate at the element's own length (it scales with ln / l0 on the mill's ends)
+            drate = (elongation_rate(M.kind, e, te, xe, M, ln, l0, 0.0)
+                     - elongation_rate(M.kind, e, t, xn, M, ln, l0, 0.0)) / step
+        EA, DA = M.ef[e, EF_EA], M.ef[e, EF_DA]
+        ds = fac * (-(EA + sig) / l0 * dl0 + DA / l0 * drate)
+        fx, fy, fz = ds * lx / ln, ds * ly / ln, ds * lz / ln
         br = block_of(kr, ir, nw)
         bs = block_of(ks, is_, nw)
         if br >= 0:

@@ -38,7 +38,7 @@ from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_SIZE, B3_VEL, N3
 from laddermill_gym.kernels.dispatch import model_assemble, model_check, model_rhs
 from laddermill_gym.kernels.rigid.blocks import copy_blocks, tree_solve
 from laddermill_gym.kernels.rigid.body_jacobian import add_body_force, add_body_jacobian
-from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness, add_stiffness_force
+from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness, add_moving_end_force, add_stiffness_force
 
 _FM = {"contract", "nsz", "arcp"}
 OK, SINGULAR = 0, 1
@@ -174,7 +174,11 @@ def w_step(t, x, u, dt, M, W, tableau):
     add_body_jacobian(t, xp, u, M, W, gh, gh * gh)
     add_cable_stiffness(t, xp, M, W, gh, gh * gh)
     copy_blocks(W.D, W.U, W.Ds, W.Us, M.order, M.bsz)
+    ut0, ut1, ut2 = 0.0, 0.0, 0.0  # the stages' time increments (the autonomised time's entries of U_i)
     for st in range(s):
+        rt = 1.0
+        for j in range(st):
+            rt += (c[st, j] / dt) * (ut0 if j == 0 else (ut1 if j == 1 else ut2))
         if st == 0:
             for i in range(ns):
                 r[i] = f[i]  # W.bv holds M r_v = the generalised forces of the assembly
@@ -197,6 +201,13 @@ def w_step(t, x, u, dt, M, W, tableau):
             copy_blocks(W.Ds, W.Us, W.D, W.U, M.order, M.bsz)
         add_stiffness_force(xp, r, M, W, gh)
         add_body_force(xp, r, M, W, gh)
+        add_moving_end_force(t, xp, r, rt, M, W, gh)
+        if st == 0:
+            ut0 = gh * rt
+        elif st == 1:
+            ut1 = gh * rt
+        elif st == 2:
+            ut2 = gh * rt
         for b in range(nbk):
             for i in range(6):
                 W.bv[b, i] *= gh
