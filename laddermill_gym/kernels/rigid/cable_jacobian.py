@@ -21,8 +21,8 @@ with dsigma/dl = EA / l0 and dsigma/dl' = DA / l0, the plain truss's, used for e
 point's velocity T v of its block's velocity v (eq. 13), the generalised forces Q = T^T F change by
 -T_r^T K_e T_r on the r-block's diagonal, +T_r^T K_e T_s off it, and likewise for s: the same sparsity as the mass
 matrix, so the iteration matrix S = M - h gamma dQ/dv - (h gamma)^2 dQ/dq keeps its tree and its O(N) elimination.
-The change of c with the direction of the lateral loads, the moving cable's rest length (a state of the station)
-and the rotation of the attachment lever arms are left out of this Jacobian on purpose: the integrator is a
+The moving cable's rest length and its rate (station states and time) enter through :func:`add_moving_end_force`.
+The change of c with the direction of the lateral loads is left out of this Jacobian on purpose: the integrator is a
 W-method, whose order holds for any approximation of the Jacobian (only its stability relies on the stiff part
 being there).
 """
