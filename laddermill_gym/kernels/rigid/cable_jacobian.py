@@ -203,6 +203,29 @@ DIFF_END = 1e-6
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _end_change(kind, e, t, te, xn, xe, M, ln, step):
+    """(rest length l0 [m] of element e at (t, xn), its change and the change of its elongation rate per unit of
+    the direction from (t, xn) to (te, xe) of size ``step``), the rate taken at length ln [m] (l0 when ln < 0)."""
+    l0 = _rest(kind, e, t, xn, M)
+    dl0 = (_rest(kind, e, te, xe, M) - l0) / step
+    lr = l0 if ln < 0.0 else ln
+    drate = (_rate(kind, e, te, xe, M, lr, l0) - _rate(kind, e, t, xn, M, lr, l0)) / step
+    return l0, dl0, drate
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _rest(kind, e, t, x, M):
+    """The kind's rest length of element e (one inlined call per function: numba's inliner mis-scopes a second)."""
+    return rest_length(kind, e, t, x, M)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _rate(kind, e, t, x, M, ln, l0):
+    """The kind's elongation rate of element e at length ln [m], rest length l0 [m] and length rate 0."""
+    return elongation_rate(kind, e, t, x, M, ln, l0, 0.0)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def add_moving_end_force(t, xn, r, rt, M, W, fac):
     """W.bv += fac dQ/dz (r_z, rt): the change of the elements' pull as their rest length and its rate move with
     the states outside the block tree (a station's pay-out and cable speed) and with time, along the stage
@@ -233,10 +256,7 @@ def add_moving_end_force(t, xn, r, rt, M, W, fac):
         sig = W.tension[e]
         if not sig > 0.0:
             continue
-        l0 = rest_length(M.kind, e, t, xn, M)
-        dl0 = (rest_length(M.kind, e, te, xe, M) - l0) / step
-        drate = (elongation_rate(M.kind, e, te, xe, M, l0, l0, 0.0)
-                 - elongation_rate(M.kind, e, t, xn, M, l0, l0, 0.0)) / step
+        l0, dl0, drate = _end_change(M.kind, e, t, te, xn, xe, M, -1.0, step)
         if dl0 == 0.0 and drate == 0.0:
             continue
         kr, ks = M.ek[e, 0], M.ek[e, 1]
@@ -248,8 +268,7 @@ def add_moving_end_force(t, xn, r, rt, M, W, fac):
         if not ln > 1e-9:
             continue
         if drate != 0.0:  # the rate at the element's own length (it scales with ln / l0 on the mill's ends)
-            drate = (elongation_rate(M.kind, e, te, xe, M, ln, l0, 0.0)
-                     - elongation_rate(M.kind, e, t, xn, M, ln, l0, 0.0)) / step
+            drate = _end_change(M.kind, e, t, te, xn, xe, M, ln, step)[2]
         EA, DA = M.ef[e, EF_EA], M.ef[e, EF_DA]
         ds = fac * (-(EA + sig) / l0 * dl0 + DA / l0 * drate)
         fx, fy, fz = ds * lx / ln, ds * ly / ln, ds * lz / ln
