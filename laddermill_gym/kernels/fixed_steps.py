@@ -110,64 +110,66 @@ def fill_segment(M, ta, tb, seg_tmod, seg_ms, seg_md):
         seg_md[i] = d + dd * off
 
 
-@njit(cache=True, error_model="numpy")
-def _piece(ta, tb, x, u, M, W, limits, tableau):
-    """One step from ta to tb [s] with the modulation's line on [ta, tb]; (status, steps done)."""
-    fill_segment(M, ta, tb, W.seg_tmod, W.seg_ms, W.seg_md)
-    Ms = model_with_air(M.kind, M.vehicle, M, W.seg_tmod, W.seg_ms, W.seg_md, M.gp, M.gv)
-    return advance_fixed(ta, x, u, tb - ta, 1, Ms, W, limits, tableau)
-
-
-@njit(cache=True, error_model="numpy")
-def _kinked_step(tc, t, dt, j, x, u, M, W, limits, tableau):
-    """Step j (from tc [s]) of the steps of dt from t, split at its interior kinks, each piece on its own line.
-    (status, start of the failed piece or the step's end [s], size of the failed piece [s])."""
-    ta = tc
-    k0, k1 = grid_range(tc, tc + dt, M.tmod, M.ms.size)
+@njit(cache=True)
+def next_kink(tc, te, t, dt, j, tmod, ms, md):
+    """The first kink of step j (of the steps of dt [s] from t [s]) strictly inside it and after tc [s], or the
+    step's end te [s] when none is left."""
+    k0, k1 = grid_range(tc, te, tmod, ms.size)
     for k in range(k0, k1):
-        if not is_kink(k, M.ms, M.md):
+        if not is_kink(k, ms, md):
             continue
-        b = M.tmod[TM_T0] + M.tmod[TM_DT] * k
+        b = tmod[TM_T0] + tmod[TM_DT] * k
         u_k = (b - t) / dt
         f = u_k - math.floor(u_k)
-        if math.floor(u_k) != j or f < ALIGN_TOL or f > 1.0 - ALIGN_TOL:
-            continue
-        st, _ = _piece(ta, b, x, u, M, W, limits, tableau)
-        if st != OK:
-            return st, ta, b - ta
-        ta = b
-    te = tc + dt
-    st, _ = _piece(ta, te, x, u, M, W, limits, tableau)
-    if st != OK:
-        return st, ta, te - ta
-    return OK, te, dt
+        if math.floor(u_k) == j and ALIGN_TOL <= f <= 1.0 - ALIGN_TOL and b > tc:
+            return b
+    return te
 
 
 @njit(cache=True, error_model="numpy")
 def advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks):
     """n fixed steps of dt [s] from t [s] (RK4 when ``tableau`` is None, else that Rosenbrock-W method) stepping
     onto the modulation's kinks as ``breaks`` says (``BREAKS_*``). Runs of plain steps go through
-    :func:`advance_fixed` in one call. Returns (status, whole steps done, time of the state [s], size of the
-    failed step or piece [s], or dt); on a failure the state is that at the returned time."""
+    :func:`advance_fixed` in one call, a step that needs its segments' lines piece by piece (one call site of the
+    integrator, so the compiled code holds it once). Returns (status, whole steps done, time of the state [s], size
+    of the failed step or piece [s], or dt); on a failure the state is that at the returned time."""
     tc = t
     done = 0
-    for j in range(n + 1):  # j == n flushes the last run of plain steps
-        if j < n:
+    nxt = 0  # the steps before it need no splitting (or are done)
+    inside = False  # a split step in progress: its pieces from tc to te
+    te = t
+    b = t
+    while done < n:
+        if inside:
+            b = next_kink(tc, te, t, dt, done, M.tmod, M.ms, M.md)
+            fill_segment(M, tc, b, W.seg_tmod, W.seg_ms, W.seg_md)
+            Mx = model_with_air(M.kind, M.vehicle, M, W.seg_tmod, W.seg_ms, W.seg_md, M.gp, M.gv)
+            h, count = b - tc, 1
+        else:
+            while nxt < n and breaks != BREAKS_OFF:
+                inside_kinks, on_end = step_kinks(t, dt, nxt, M.tmod, M.ms, M.md)
+                if inside_kinks > 0 or (on_end and breaks == BREAKS_ENDS):
+                    break
+                nxt += 1
             if breaks == BREAKS_OFF:
+                nxt = n
+            if nxt == done:  # this step is split: its pieces come next
+                inside, te = True, tc + dt
+                nxt += 1
                 continue
-            inside, on_end = step_kinks(t, dt, j, M.tmod, M.ms, M.md)
-            if inside == 0 and not (on_end and breaks == BREAKS_ENDS):
-                continue
-        if j > done:
-            st, k = advance_fixed(tc, x, u, dt, j - done, M, W, limits, tableau)
+            Mx = M
+            h, count = dt, nxt - done
+        st, k = advance_fixed(tc, x, u, h, count, Mx, W, limits, tableau)
+        if inside:
+            if st != OK:
+                return st, done, tc, h
+            tc = b
+            if b == te:
+                inside = False
+                done += 1
+        else:
             tc += k * dt
             done += k
             if st != OK:
                 return st, done, tc, dt
-        if j == n:
-            break
-        st, tc, h = _kinked_step(tc, t, dt, j, x, u, M, W, limits, tableau)
-        if st != OK:
-            return st, done, tc, h
-        done += 1
     return OK, done, tc, dt
