@@ -66,6 +66,18 @@ def _add_t_g_t(A, n1, T1, n2, T2, G, sign):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _element_ends(e, x, M, W, nw):
+    """Element e's ends at x with the rotations W.Rn: (end kinds and indices kr, ir, ks, is_, their block sizes nr,
+    ns, the vector from r to s (lx, ly, lz) [m] and its length [m]); the ends' maps in W.Tr, W.Ts, W.er, W.es."""
+    kr, ks = M.ek[e, 0], M.ek[e, 1]
+    ir, is_ = M.ei[e, 0], M.ei[e, 1]
+    nr = end_kinematics(kr, ir, M.ea[e, 0], x, W.Rn, M.fixed, nw, W.Tr, W.er)
+    ns = end_kinematics(ks, is_, M.ea[e, 1], x, W.Rn, M.fixed, nw, W.Ts, W.es)
+    lx, ly, lz = W.es[0] - W.er[0], W.es[1] - W.er[1], W.es[2] - W.er[2]
+    return kr, ir, ks, is_, nr, ns, lx, ly, lz, math.sqrt(lx * lx + ly * ly + lz * lz)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def add_cable_stiffness(t, x, M, W, gh, gh2):
     """Add to the blocks W.D, W.U (holding the mass matrix at t, x) the cable's gh C + gh2 K terms of the iteration
     matrix, gh = h gamma [s] and gh2 = (h gamma)^2 [s^2], and store each element's K_e in W.ke (slots ``KE_*``).
@@ -76,12 +88,7 @@ def add_cable_stiffness(t, x, M, W, gh, gh2):
     nw = M.wtype.size
     G = W.Y[0]
     for e in range(M.ef.shape[0]):
-        kr, ks = M.ek[e, 0], M.ek[e, 1]
-        ir, is_ = M.ei[e, 0], M.ei[e, 1]
-        nr = end_kinematics(kr, ir, M.ea[e, 0], x, W.Rn, M.fixed, nw, W.Tr, W.er)
-        ns = end_kinematics(ks, is_, M.ea[e, 1], x, W.Rn, M.fixed, nw, W.Ts, W.es)
-        lx, ly, lz = W.es[0] - W.er[0], W.es[1] - W.er[1], W.es[2] - W.er[2]
-        ln = math.sqrt(lx * lx + ly * ly + lz * lz)
+        kr, ir, ks, is_, nr, ns, lx, ly, lz, ln = _element_ends(e, x, M, W, nw)
         sig = W.tension[e]
         ke = W.ke[e]
         if not ln > 1e-9:
@@ -169,6 +176,18 @@ def _end_displacement(kind, idx, att, xn, rx, Rn, nw):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def _add_end_pull(W, br, nr, bs, ns, fx, fy, fz):
+    """W.bv[br] += T_r^T F and W.bv[bs] -= T_s^T F for a change F (global) of an element's pull on its end r, with
+    the ends' maps in W.Tr, W.Ts (a block index < 0: a fixed end, nothing to add)."""
+    if br >= 0:
+        for j in range(nr):
+            W.bv[br, j] += W.Tr[0, j] * fx + W.Tr[1, j] * fy + W.Tr[2, j] * fz
+    if bs >= 0:
+        for j in range(ns):
+            W.bv[bs, j] -= W.Ts[0, j] * fx + W.Ts[1, j] * fy + W.Ts[2, j] * fz
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def add_stiffness_force(xn, rx, M, W, fac):
     """W.bv += fac (dQ/dq) P rx: the generalised forces of the elements' stiffness K_e (W.ke, from
     :func:`add_cable_stiffness` at xn) for the state increment rx (positions and quaternions; P maps it to
@@ -188,14 +207,7 @@ def add_stiffness_force(xn, rx, M, W, fac):
         fx = fac * (ke[KE_XX] * dx + ke[KE_XY] * dy + ke[KE_XZ] * dz)
         fy = fac * (ke[KE_XY] * dx + ke[KE_YY] * dy + ke[KE_YZ] * dz)
         fz = fac * (ke[KE_XZ] * dx + ke[KE_YZ] * dy + ke[KE_ZZ] * dz)
-        br = block_of(kr, ir, nw)
-        bs = block_of(ks, is_, nw)
-        if br >= 0:
-            for j in range(nr):
-                W.bv[br, j] += W.Tr[0, j] * fx + W.Tr[1, j] * fy + W.Tr[2, j] * fz
-        if bs >= 0:
-            for j in range(ns):
-                W.bv[bs, j] -= W.Ts[0, j] * fx + W.Ts[1, j] * fy + W.Ts[2, j] * fz
+        _add_end_pull(W, block_of(kr, ir, nw), nr, block_of(ks, is_, nw), ns, fx, fy, fz)
 
 
 #: Size of the directional difference of :func:`add_moving_end_force` along the largest entry of its direction
@@ -259,12 +271,7 @@ def add_moving_end_force(t, xn, r, rt, M, W, fac):
         l0, dl0, drate = _end_change(M.kind, e, t, te, xn, xe, M, -1.0, step)
         if dl0 == 0.0 and drate == 0.0:
             continue
-        kr, ks = M.ek[e, 0], M.ek[e, 1]
-        ir, is_ = M.ei[e, 0], M.ei[e, 1]
-        nr = end_kinematics(kr, ir, M.ea[e, 0], xn, W.Rn, M.fixed, nw, W.Tr, W.er)
-        ns = end_kinematics(ks, is_, M.ea[e, 1], xn, W.Rn, M.fixed, nw, W.Ts, W.es)
-        lx, ly, lz = W.es[0] - W.er[0], W.es[1] - W.er[1], W.es[2] - W.er[2]
-        ln = math.sqrt(lx * lx + ly * ly + lz * lz)
+        kr, ir, ks, is_, nr, ns, lx, ly, lz, ln = _element_ends(e, xn, M, W, nw)
         if not ln > 1e-9:
             continue
         if drate != 0.0:  # the rate at the element's own length (it scales with ln / l0 on the mill's ends)
@@ -272,11 +279,4 @@ def add_moving_end_force(t, xn, r, rt, M, W, fac):
         EA, DA = M.ef[e, EF_EA], M.ef[e, EF_DA]
         ds = fac * (-(EA + sig) / l0 * dl0 + DA / l0 * drate)
         fx, fy, fz = ds * lx / ln, ds * ly / ln, ds * lz / ln
-        br = block_of(kr, ir, nw)
-        bs = block_of(ks, is_, nw)
-        if br >= 0:
-            for j in range(nr):
-                W.bv[br, j] += W.Tr[0, j] * fx + W.Tr[1, j] * fy + W.Tr[2, j] * fz
-        if bs >= 0:
-            for j in range(ns):
-                W.bv[bs, j] -= W.Ts[0, j] * fx + W.Ts[1, j] * fy + W.Ts[2, j] * fz
+        _add_end_pull(W, block_of(kr, ir, nw), nr, block_of(ks, is_, nw), ns, fx, fy, fz)
