@@ -75,6 +75,16 @@ def grid_range(ta, tb, tmod, n_mod):
 
 
 @njit(cache=True)
+def kink_place(k, tmod, t, dt):
+    """Grid point k's time b [s] and where it falls among the steps of dt [s] from t [s]: (b, index i of the step
+    it lies in, fraction f in [0, 1) of that step)."""
+    b = tmod[TM_T0] + tmod[TM_DT] * k
+    u = (b - t) / dt
+    i = math.floor(u)
+    return b, i, u - i
+
+
+@njit(cache=True)
 def step_kinks(t, dt, j, tmod, ms, md):
     """Kinks of step j of the steps of dt [s] from t [s]: (how many lie strictly inside it, whether one lies on its
     start or end within ``ALIGN_TOL``). Classified by u = (kink - t) / dt against j, j + 1."""
@@ -83,13 +93,12 @@ def step_kinks(t, dt, j, tmod, ms, md):
     for k in range(k0, k1):
         if not is_kink(k, ms, md):
             continue
-        u = (tmod[TM_T0] + tmod[TM_DT] * k - t) / dt
-        f = u - math.floor(u)
+        _, i, f = kink_place(k, tmod, t, dt)
         if f < ALIGN_TOL or f > 1.0 - ALIGN_TOL:
-            r = round(u)
+            r = i if f < 0.5 else i + 1  # the step boundary it sits on
             if r == j or r == j + 1:
                 on_end = True
-        elif math.floor(u) == j:
+        elif i == j:
             inside += 1
     return inside, on_end
 
@@ -118,10 +127,8 @@ def next_kink(tc, te, t, dt, j, tmod, ms, md):
     for k in range(k0, k1):
         if not is_kink(k, ms, md):
             continue
-        b = tmod[TM_T0] + tmod[TM_DT] * k
-        u_k = (b - t) / dt
-        f = u_k - math.floor(u_k)
-        if math.floor(u_k) == j and ALIGN_TOL <= f <= 1.0 - ALIGN_TOL and b > tc:
+        b, i, f = kink_place(k, tmod, t, dt)
+        if i == j and ALIGN_TOL <= f <= 1.0 - ALIGN_TOL and b > tc:
             return b
     return te
 

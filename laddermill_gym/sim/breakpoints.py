@@ -19,9 +19,16 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.atmosphere.wind_kernels import modulation
 from laddermill_gym.kernels.contract import TM_DT, TM_SIZE, TM_T0
-from laddermill_gym.kernels.fixed_steps import ALIGN_TOL, BREAKS_ENDS, BREAKS_INSIDE, BREAKS_OFF, advance_breaks
+from laddermill_gym.kernels.fixed_steps import (
+    ALIGN_TOL,
+    BREAKS_ENDS,
+    BREAKS_INSIDE,
+    BREAKS_OFF,
+    advance_breaks,
+    fill_segment,
+    is_kink,
+)
 from laddermill_gym.kernels.integrate import OK, dp54_advance
 from laddermill_gym.kernels.rigid.rosenbrock import ROS2, ROS34PW2
 from laddermill_gym.kernels.rigid.rosenbrock_adaptive import w_adaptive
@@ -43,31 +50,17 @@ def modulation_kinks(tmod: np.ndarray, ms: np.ndarray, md: np.ndarray) -> np.nda
 
     The slope is zero before the first and after the last sample (the modulation holds there), so the ends
     are kinks when the adjacent segment is not flat. Padding (repeated last samples) adds none."""
-    n = ms.size
-    if n < 2:
-        return np.zeros(0)
-    t0, dt = float(tmod[TM_T0]), float(tmod[TM_DT])
-    slopes = np.zeros((n + 1, 2))
-    slopes[1:n, 0] = np.diff(ms)
-    slopes[1:n, 1] = np.diff(md)
-    change = np.any(slopes[1:] != slopes[:-1], axis=1)
-    return t0 + dt * np.flatnonzero(change)
+    ks = [k for k in range(ms.size) if is_kink(k, ms, md)]  # the compiled steppers' own test
+    return float(tmod[TM_T0]) + float(tmod[TM_DT]) * np.array(ks, dtype=float)
 
 
 def segment_model(model, ta: float, tb: float):
     """``model`` with its modulation replaced by the straight line that the real modulation follows on
     [ta, tb] (an interval holding no kink inside), extended beyond it; evaluated at ta or tb the line gives the
     value and the slope of this segment (the kernel's own grid gives the next segment's slope at a grid point)."""
-    m = model
-    tm = 0.5 * (ta + tb)
-    s, d, sd, dd = modulation(tm, m.tmod[TM_T0], m.tmod[TM_DT], m.ms, m.md)
-    h = max(tb - ta, 1e-12)
-    k = np.arange(-1.0, 3.0)  # samples at ta - h, ta, ta + h, ta + 2 h: [ta, tb] maps to u in [1, 2]
-    tmod = np.zeros(TM_SIZE)
-    tmod[TM_T0], tmod[TM_DT] = ta - h, h
-    ms = s + sd * (ta - tm + k * h)
-    md = d + dd * (ta - tm + k * h)
-    return m._replace(tmod=tmod, ms=ms, md=md)
+    tmod, ms, md = np.zeros(TM_SIZE), np.zeros(4), np.zeros(4)
+    fill_segment(model, ta, tb, tmod, ms, md)  # the compiled steppers' own line
+    return model._replace(tmod=tmod, ms=ms, md=md)
 
 
 def interior_kinks(kinks: np.ndarray, ta: float, tb: float, ends: bool = False) -> list[float]:
