@@ -88,8 +88,10 @@ C2, C3, C4, C5 = 0.2, 0.3, 0.8, 8.0 / 9.0
 def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
     """Integrate x in place from t to t_end with adaptive Dormand-Prince 5(4) (local extrapolation).
 
-    h is the first trial step [s]. Returns (status, accepted steps, rejected steps, last step size [s], time [s]
-    of x: t_end, or on a failure the time of the last accepted step, where x is left).
+    h is the first trial step [s]. Returns (status, accepted steps, rejected steps, step size [s], time [s]
+    of x: t_end, or on a failure the time of the last accepted step, where x is left). The step size is, on a
+    failure, that of the failed step; on success the step to try next: the controller's proposal, not the last
+    step cut short to land on t_end (so a run continued in pieces, e.g. between output times, keeps its pace).
     The error norm is the RMS of err_i / (atol + rtol max(|x_i|, |x_new_i|)); steps are accepted when
     it is <= 1 and the next step is h * min(5, max(0.2, 0.9 err^(-1/5))).
     """
@@ -103,7 +105,8 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
         if acc + rej >= max_steps:
             return BUDGET, acc, rej, h, t
         last = False
-        if t + h >= t_end:
+        hp = h
+        if t + 1.01 * h >= t_end:  # no sliver before t_end: stretch a step that would leave one (as HNW's DOPRI5)
             h = t_end - t
             last = True
         for i in range(ns):
@@ -152,6 +155,8 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
             fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
             if not last:
                 h *= min(5.0, max(0.2, fac))
+            else:  # keep the proposal: a step cut short to land on t_end says little about the next one
+                h = max(hp, h * min(5.0, max(0.2, fac)))
         else:
             rej += 1
             h *= max(0.2, 0.9 * err ** -0.2)

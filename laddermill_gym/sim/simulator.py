@@ -208,6 +208,8 @@ class Simulator(BodyViews):
         self.state = (self.initial_state if state is None else state).copy()
         self.t = float(t)
         self.controls = (self.initial_controls if controls is None else self._check_controls(controls)).copy()
+        #: the error-controlled methods' proposal for their next step [s], kept between calls (None: settings.dt)
+        self._h_next = None
         return self.state
 
     # ------------------------------------------------------------------ air
@@ -295,10 +297,16 @@ class Simulator(BodyViews):
         """Integrate to t_end [s] with the settings' error-controlled method; (status, size of the last step tried
         [s]). On a failure the time is that of the last accepted step, where the state is left."""
         s = self.settings
-        status, h, t = adaptive_pieces(self, t_end, min(s.dt, t_end - self.t), s.rtol, s.atol, STEP_MAX_STEPS,
-                                       s.method)
+        status, h, t = adaptive_pieces(self, t_end, min(self._first_step(), t_end - self.t), s.rtol, s.atol,
+                                       STEP_MAX_STEPS, s.method)
         self.t = t_end if status == OK else t
+        self._h_next = h if status == OK else None
         return status, h
+
+    def _first_step(self) -> float:
+        """The first trial step [s] of an error-controlled run: where the previous run's controller left off (its
+        proposal, not its last step cut short to land on the output time), else ``settings.dt``."""
+        return self.settings.dt if self._h_next is None else self._h_next
 
     def advance_to(self, t_end: float, rtol: float | None = None, atol: float | None = None) -> np.ndarray:
         """Integrate to t_end [s] (finite, not before the current time) with an error-controlled method at tolerances
@@ -319,13 +327,15 @@ class Simulator(BodyViews):
                                  "the error control on any state entry that passes through zero)")
         method = s.method if s.method in ADAPTIVE_METHODS else "dp54"
         self._check_method(method)
-        status, h, t = adaptive_pieces(self, float(t_end),
-                                       min(s.dt, float(t_end) - self.t) if t_end > self.t else s.dt, rtol, atol,
-                                       ADVANCE_MAX_STEPS, method)
+        h0 = self._first_step()
+        status, h, t = adaptive_pieces(self, float(t_end), min(h0, float(t_end) - self.t) if t_end > self.t else h0,
+                                       rtol, atol, ADVANCE_MAX_STEPS, method)
         if status != OK:
             self.t = t  # the last accepted step, where the state is left
+            self._h_next = None
             self._raise(status, h)
         self.t = float(t_end)
+        self._h_next = h
         return self.state
 
     def _raise(self, status: int, h: float):

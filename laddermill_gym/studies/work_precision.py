@@ -7,8 +7,8 @@ kink) the scene is run over ``--time`` seconds by
 * RK4 on a grid of steps up to its stability limit (``studies/stable_step.py``) with the default breakpoint
   stepping (``rk4``: steps split at kinks inside them) and, on the non-smooth forcings, with ``rk4-all`` (steps
   that end on a kink too get their own segment) and ``rk4-off`` (across kinks: the behaviour before);
-* DP5(4) over tolerances rtol = atol from 1e-3 to 1e-10, the error-controlled ROS34PW2 (``ros34pw2a``) from 1e-3
-  to 1e-8;
+* DP5(4) over tolerances rtol = atol from 1e-3 to 1e-10, the error-controlled ROS34PW2 (``ros34pw2a``) from 1e-2
+  to 1e-8 (``W_TOLERANCES``);
 * the linearly implicit Rosenbrock-W methods (``ros2``, ``ros34pw2``; any other fixed-step method the simulator
   lists in ``INTEGRATOR_METHODS``) on the steps period / k, k = 1, 2, 3, 4, 6, 8, 12, 16 (period = the time between
   samples), which reach far beyond RK4's limit.
@@ -43,6 +43,10 @@ FORCINGS = ("smooth", "step", "gust")
 #: the linearly implicit methods run at the sample period divided by these
 W_STEP_DIVISORS = (1, 2, 3, 4, 6, 8, 12, 16)
 TOLERANCES = (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10)
+#: the error-controlled W-method's: it starts looser, since its estimate is that of the embedded order-2 solution
+#: while the order-3 one is propagated (measured on the laddermill over 10 s: rtol 3e-3 -> position error 1.4e-4
+#: of the extent)
+W_TOLERANCES = (1e-2, 3e-3, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8)
 REF_TOL = 1e-12
 
 
@@ -144,7 +148,7 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
             cases += [(other, period / k) for k in W_STEP_DIVISORS]
     for other in ADAPTIVE_METHODS:
         if other != "dp54":
-            cases += [(other, tol) for tol in TOLERANCES[:6]]
+            cases += [(other, tol) for tol in W_TOLERANCES]
     rows = []
     for label, value in cases:
         method, _, mode = label.partition("-")

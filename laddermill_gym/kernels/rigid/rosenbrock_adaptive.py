@@ -44,8 +44,9 @@ def _error_norm(x, xp, W, m, mhat, rtol, atol):
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def w_adaptive(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps, tableau, q):
     """Integrate x in place from t to t_end [s] with the Rosenbrock-W method ``tableau`` under error control
-    (embedded order q). h is the first trial step [s]. Returns (status, accepted steps, rejected steps, last step
-    size [s], time [s] of x: t_end, or on a failure the time of the last accepted step, where x is left)."""
+    (embedded order q). h is the first trial step [s]. Returns (status, accepted steps, rejected steps, step size
+    [s]: the failed step's on a failure, else the proposal for the next step as in ``dp54_advance``, time [s] of
+    x: t_end, or on a failure the time of the last accepted step, where x is left)."""
     m, mhat = tableau[4], tableau[5]
     ns = x.size
     xp = W.xp
@@ -56,7 +57,8 @@ def w_adaptive(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps, tableau, 
         if acc + rej >= max_steps:
             return BUDGET, acc, rej, h, t
         last = False
-        if t + h >= t_end:
+        hp = h
+        if t + 1.01 * h >= t_end:  # no sliver before t_end: stretch a step that would leave one (as HNW's DOPRI5)
             h = t_end - t
             last = True
         if w_step(t, x, u, h, M, W, tableau) != OK:
@@ -74,6 +76,8 @@ def w_adaptive(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps, tableau, 
             acc += 1
             if not last:
                 h *= min(5.0, max(0.2, 0.9 * err ** expo)) if err > 0.0 else 5.0
+            else:  # keep the proposal: a step cut short to land on t_end says little about the next one
+                h = max(hp, h * (min(5.0, max(0.2, 0.9 * err ** expo)) if err > 0.0 else 5.0))
         else:
             for i in range(ns):
                 x[i] = xp[i]
