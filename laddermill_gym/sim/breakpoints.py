@@ -110,18 +110,18 @@ def _adaptive(method: str, t, t_end, x, u, h, rtol, atol, model, work, limits, m
 def adaptive_pieces(sim, t_end: float, h: float, rtol: float, atol: float, max_steps: int, method: str = "dp54"):
     """The error-controlled ``method`` (DP5(4) or an adaptive Rosenbrock-W method) on ``sim`` from its time to
     t_end [s] (first trial step h [s]), ending a step on every kink inside, each piece with its segment's
-    modulation; the state is advanced in place, ``sim.t`` is left to the caller. Returns (status, last step size
-    [s], time of the state [s]: t_end, or the last accepted step's)."""
+    modulation; the state is advanced in place, ``sim.t`` is left to the caller, the steps taken are added to
+    ``sim.adaptive_steps`` (accepted, rejected). Returns (status, step size [s]: the failed step's, or on success
+    the controller's proposal for the next one, time of the state [s]: t_end, or the last accepted step's)."""
     mode = sim.settings.breakpoints
     inside = interior_kinks(sim.breakpoint_times, sim.t, t_end, mode == "all") if mode != "off" else []
-    if not inside:
-        status, _, _, h, t = _adaptive(method, sim.t, t_end, sim.state, sim.controls, h, rtol, atol, sim.model,
-                                       sim.work, sim.limits, max_steps)
-        return status, h, t
     ends = [sim.t, *[b for b in inside if sim.t < b < t_end], t_end]
     for ta, tb in zip(ends[:-1], ends[1:], strict=True):
-        status, _, _, h, t = _adaptive(method, ta, tb, sim.state, sim.controls, h, rtol, atol,
-                                       segment_model(sim.model, ta, tb), sim.work, sim.limits, max_steps)
+        model = segment_model(sim.model, ta, tb) if inside else sim.model
+        status, acc, rej, h, t = _adaptive(method, ta, tb, sim.state, sim.controls, h, rtol, atol, model, sim.work,
+                                           sim.limits, max_steps)
+        sim.adaptive_steps[0] += acc
+        sim.adaptive_steps[1] += rej
         if status != OK:
             return status, h, t
     return OK, h, t_end

@@ -210,6 +210,8 @@ class Simulator(BodyViews):
         self.controls = (self.initial_controls if controls is None else self._check_controls(controls)).copy()
         #: the error-controlled methods' proposal for their next step [s], kept between calls (None: settings.dt)
         self._h_next = None
+        #: steps of the error-controlled methods ("dp54", "ros34pw2a") since the reset: [accepted, rejected]
+        self.adaptive_steps = [0, 0]
         return self.state
 
     # ------------------------------------------------------------------ air
