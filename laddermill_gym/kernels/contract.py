@@ -157,11 +157,12 @@ KAir = namedtuple("KAir", ["tmod", "ms", "md", "gp", "gv"])
 #: iteration matrix (``Ds``, ``Us``), the body rotations at the step's start (``Rn``) and each element's stiffness
 #: (``ke`` (n_e, KE_SIZE): the symmetric 3 x 3 axial and geometric stiffness [N/m], slots ``KE_*``) and each body's
 #: load derivatives with its attitude (``kb`` (n_bodies, 6, 3) [N/rad, N m/rad], ``kernels/rigid/body_jacobian.py``),
-#: and the wind modulation's line on a step between kinks (``seg_tmod`` (TM_SIZE,), ``seg_ms``, ``seg_md`` (4,):
-#: ``kernels/fixed_steps.py``).
+#: the wind modulation's line on a step between kinks (``seg_tmod`` (TM_SIZE,), ``seg_ms``, ``seg_md`` (4,):
+#: ``kernels/fixed_steps.py``), and the factored iteration matrix's coupling blocks and pivots (``Yw``, ``pivw``;
+#: its factored diagonal blocks in ``Ds``: ``kernels/rigid/blocks.py`` ``tree_factor``).
 KWork = namedtuple(
     "KWork",
     ["D", "U", "Y", "piv", "bv", "Rw", "tension", "Tr", "Ts", "er", "es", "coef", "aout", "vout", "vscratch",
      "k1", "k2", "k3", "k4", "k5", "k6", "k7", "xt", "xp", "Dm", "Um", "Ds", "Us", "Rn", "ke", "kb",
-     "seg_tmod", "seg_ms", "seg_md"],
+     "seg_tmod", "seg_ms", "seg_md", "Yw", "pivw"],
 )

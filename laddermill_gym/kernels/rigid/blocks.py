@@ -87,7 +87,14 @@ def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
                     bv[p, i] -= f * bk
                     for j in range(m):
                         D[p, i, j] -= f * Y[c, k, j]
-    for ii in range(nbk - 1, -1, -1):
+    _back_substitute(Y, bv, order, parent, bsz)
+    return True
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+def _back_substitute(Y, bv, order, parent, bsz):
+    """The elimination's second pass, parents first: bv[c] -= Y[c] bv[parent[c]]."""
+    for ii in range(order.size - 1, -1, -1):
         c = order[ii]
         p = parent[c]
         if p >= 0:
@@ -98,7 +105,6 @@ def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
                 for j in range(m):
                     s += Y[c, i, j] * bv[p, j]
                 bv[c, i] -= s
-    return True
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
@@ -110,3 +116,100 @@ def copy_blocks(Ds, Us, Dd, Ud, order, bsz):
             for j in range(6):
                 Dd[c, i, j] = Ds[c, i, j]
                 Ud[c, i, j] = Us[c, i, j]
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+def _factor6(D, U, Y, c, p):
+    """:func:`eliminate6` without a right-hand side: D[c] into its unit-lower / upper factors in place, Y[c] =
+    D[c]^-1 U[c], and the Schur complement on the parent, D[p] -= U[c]^T Y[c]."""
+    for k in range(6):
+        inv = 1.0 / D[c, k, k]
+        for i in range(k + 1, 6):
+            f = D[c, i, k] * inv
+            D[c, i, k] = f
+            for j in range(k + 1, 6):
+                D[c, i, j] -= f * D[c, k, j]
+    for i in range(6):
+        for j in range(6):
+            Y[c, i, j] = U[c, i, j]
+    for i in range(1, 6):
+        for j in range(i):
+            f = D[c, i, j]
+            for q in range(6):
+                Y[c, i, q] -= f * Y[c, j, q]
+    for i in range(5, -1, -1):
+        for j in range(i + 1, 6):
+            f = D[c, i, j]
+            for q in range(6):
+                Y[c, i, q] -= f * Y[c, j, q]
+        inv = 1.0 / D[c, i, i]
+        for q in range(6):
+            Y[c, i, q] *= inv
+    for k in range(6):
+        for i in range(6):
+            f = U[c, k, i]
+            for j in range(6):
+                D[p, i, j] -= f * Y[c, k, j]
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+def tree_factor(D, U, Y, piv, order, parent, bsz):
+    """Factor the block system in place for repeated solves (:func:`tree_solve_factored`): the elimination of
+    :func:`tree_solve` without a right-hand side. A block factored on the fast 6 x 6 path is marked piv[c, 0] = -1.
+    Returns False if a diagonal block is singular."""
+    for ii in range(order.size):
+        c = order[ii]
+        n = bsz[c]
+        p = parent[c]
+        if n == 6 and p >= 0 and bsz[p] == 6:
+            ok = True
+            for k in range(6):
+                if not D[c, k, k] > 0.0:
+                    ok = False
+            if ok:
+                _factor6(D, U, Y, c, p)
+                piv[c, 0] = -1
+                continue
+        if not lu_factor(D[c], piv[c], n):
+            return False
+        if p >= 0:
+            m = bsz[p]
+            for i in range(n):
+                for j in range(m):
+                    Y[c, i, j] = U[c, i, j]
+            lu_solve_cols(D[c], piv[c], n, Y[c], m)
+            for k in range(n):
+                for i in range(m):
+                    f = U[c, k, i]
+                    for j in range(m):
+                        D[p, i, j] -= f * Y[c, k, j]
+    return True
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+def tree_solve_factored(D, U, Y, piv, bv, order, parent, bsz):
+    """Solve the system factored by :func:`tree_factor` for the right-hand side bv, in place; the same operations
+    on bv, in the same order, as :func:`tree_solve`."""
+    nbk = order.size
+    for ii in range(nbk):
+        c = order[ii]
+        n = bsz[c]
+        p = parent[c]
+        if piv[c, 0] == -1:
+            for i in range(1, 6):
+                for j in range(i):
+                    bv[c, i] -= D[c, i, j] * bv[c, j]
+            for i in range(5, -1, -1):
+                for j in range(i + 1, 6):
+                    bv[c, i] -= D[c, i, j] * bv[c, j]
+                inv = 1.0 / D[c, i, i]
+                bv[c, i] *= inv
+        else:
+            lu_solve_vec(D[c], piv[c], n, bv[c])
+        if p >= 0:
+            m = bsz[p]
+            for k in range(n):
+                bk = bv[c, k]
+                for i in range(m):
+                    bv[p, i] -= U[c, k, i] * bk
+    _back_substitute(Y, bv, order, parent, bsz)

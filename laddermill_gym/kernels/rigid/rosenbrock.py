@@ -36,7 +36,7 @@ from numba import njit
 
 from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_SIZE, B3_VEL, N3_POS, N3_SIZE, N3_VEL
 from laddermill_gym.kernels.dispatch import model_assemble, model_check, model_rhs
-from laddermill_gym.kernels.rigid.blocks import copy_blocks, tree_solve
+from laddermill_gym.kernels.rigid.blocks import copy_blocks, tree_factor, tree_solve_factored
 from laddermill_gym.kernels.rigid.body_jacobian import add_body_force, add_body_jacobian
 from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness, add_moving_end_force, add_stiffness_force
 
@@ -174,6 +174,8 @@ def w_step(t, x, u, dt, M, W, tableau):
     add_body_jacobian(t, xp, u, M, W, gh, gh * gh)
     add_cable_stiffness(t, xp, M, W, gh, gh * gh)
     copy_blocks(W.D, W.U, W.Ds, W.Us, M.order, M.bsz)
+    if not tree_factor(W.Ds, W.Us, W.Yw, W.pivw, M.order, M.parent, M.bsz):  # once: the stages share it
+        return SINGULAR
     ut0, ut1, ut2 = 0.0, 0.0, 0.0  # the stages' time increments (the autonomised time's entries of U_i)
     for st in range(s):
         rt = 1.0
@@ -198,7 +200,6 @@ def w_step(t, x, u, dt, M, W, tableau):
                     acc += (c[st, j] / dt) * stages[j][i]
                 r[i] = acc
             _mass_times(W.Dm, W.Um, r, W.bv, M)
-            copy_blocks(W.Ds, W.Us, W.D, W.U, M.order, M.bsz)
         add_stiffness_force(xp, r, M, W, gh)
         add_body_force(xp, r, M, W, gh)
         add_moving_end_force(t, xp, r, rt, M, W, gh)
@@ -211,10 +212,7 @@ def w_step(t, x, u, dt, M, W, tableau):
         for b in range(nbk):
             for i in range(6):
                 W.bv[b, i] *= gh
-        if not tree_solve(W.D, W.U, W.Y, W.piv, W.bv, M.order, M.parent, M.bsz):
-            for i in range(ns):
-                x[i] = xp[i]
-            return SINGULAR
+        tree_solve_factored(W.Ds, W.Us, W.Yw, W.pivw, W.bv, M.order, M.parent, M.bsz)
         _stage_increment(xp, r, stages[st], M, W, gh)
     for i in range(ns):
         acc = xp[i]
