@@ -75,7 +75,8 @@ def plot_work_precision(res: dict, path: Path) -> Path:
             if i == 0:
                 ax.set_title(f"{res['scene']}: {f}", fontsize=9)
         axes[0, j].legend(fontsize=7)
-    fig.suptitle(f"{res['scene']}, {res['duration_s']:g} s simulated; RK4 stable step {res['dt_stable_s']:.4g} s "
+    sep = "\n" if len(forcings) == 1 else "; "  # one column is too narrow for the title on one line
+    fig.suptitle(f"{res['scene']}, {res['duration_s']:g} s simulated{sep}RK4 stable step {res['dt_stable_s']:.4g} s "
                  "(estimate)", fontsize=9)
     fig.tight_layout()
     fig.savefig(path, dpi=80)
