@@ -65,13 +65,20 @@ def forcing_setup(sim: Simulator, forcing: str, duration: float):
                 x0[B3_SIZE * k + B3_VEL + 1] += 0.2 * rng.normal()
                 x0[B3_SIZE * k + B3_RATE] += 0.02 * rng.normal()
         return x0, None
+    return x0, forcing_wind(wind, forcing, duration)
+
+
+def forcing_wind(wind, forcing: str, duration: float):
+    """The ``WindParams`` of a non-smooth forcing over ``duration`` [s] (:func:`forcing_setup`), None for smooth."""
+    if forcing == "smooth":
+        return None
     if forcing == "step":
-        return x0, wind.with_modulation(0.3037 * duration, 1e-3, np.ones(2), np.array([0.0, 0.1]))
+        return wind.with_modulation(0.3037 * duration, 1e-3, np.ones(2), np.array([0.0, 0.1]))
     if forcing == "gust":
         t0, length = 0.2 * duration, 0.4 * duration
         tt = np.arange(0.0, length + 1e-9, 0.1)
         speed = 1.0 + 0.15 * (1.0 - np.cos(2 * np.pi * tt / length))
-        return x0, wind.with_modulation(t0, 0.1, speed, np.zeros_like(speed))
+        return wind.with_modulation(t0, 0.1, speed, np.zeros_like(speed))
     raise ValueError(f"forcing = {forcing!r}: must be one of {FORCINGS}")
 
 
@@ -211,12 +218,16 @@ def run_scene(scene: str, forcings=FORCINGS, duration: float = 5.0, n_samples: i
 def add_parser(sub) -> argparse.ArgumentParser:
     p = sub.add_parser("work-precision", help="error against wall time of the integrators on a scene",
                        description=__doc__.replace("``", ""), formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("scene", nargs="+", help="scene names or YAML paths; 'roberts_flying_model' for the rotorcraft")
+    p.add_argument("scene", nargs="+",
+                   help="scene names or YAML paths; 'roberts_flying_model' for the rotorcraft; a point-mass scene "
+                   "(podgaets_5km) runs its explicit and implicit methods (studies/pointmass_precision.py)")
     p.add_argument("--forcing", nargs="+", choices=FORCINGS, default=list(FORCINGS))
     p.add_argument("--time", type=float, default=5.0, help="simulated time per run [s] (default 5)")
     p.add_argument("--samples", type=int, default=20, help="times in the RMS error (default 20)")
     p.add_argument("--repeats", type=int, default=3, help="timed repeats per run, median taken (default 3)")
     p.add_argument("--n-dt", type=int, default=7, help="RK4 steps on the grid (halving every two; default 7)")
+    p.add_argument("--element-length", type=float, default=25.0,
+                   help="point-mass scenes: element length [m] (default 25: 200 nodes on podgaets_5km)")
     p.add_argument("--out", default="results/work_precision", help="output folder")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_cmd)
@@ -224,12 +235,17 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def _cmd(args) -> int:
+    from laddermill_gym.studies import pointmass_precision
     from laddermill_gym.studies.work_precision_output import plot_work_precision, print_summary, save_rows
 
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     for scene in args.scene:
-        res = run_scene(scene, args.forcing, args.time, args.samples, args.repeats, args.n_dt, not args.quiet)
+        if pointmass_precision.is_pointmass_scene(scene):
+            res = pointmass_precision.run_scene(scene, args.forcing, args.time, args.samples, args.repeats,
+                                                args.element_length, not args.quiet)
+        else:
+            res = run_scene(scene, args.forcing, args.time, args.samples, args.repeats, args.n_dt, not args.quiet)
         stem = out / Path(scene).stem
         save_rows(res, stem.with_suffix(".csv"))
         stem.with_suffix(".json").write_text(json.dumps(res, indent=1, default=float))

@@ -11,14 +11,15 @@ COLUMNS = ("forcing", "method", "dt_s", "tol", "wall_s", "real_time_factor", "er
            "err_max_pos_m", "err_max_pos_rel", "err_final_state", "err_rms_state", "status")
 _STYLE = {"rk4": ("C0", "o", "-"), "rk4-all": ("C2", "+", "--"), "rk4-off": ("C3", "x", ":"),
           "dp54": ("C1", "s", "-"), "ros2": ("C4", "v", "-"), "ros34pw2": ("C5", "D", "-"),
-          "ros34pw2a": ("C6", "*", "--")}
+          "ros34pw2a": ("C6", "*", "--"), "explicit": ("C0", "o", "-"), "implicit": ("C4", "v", "-")}
 #: the accuracy of the summary's "fastest within" table: largest position error / the scene's extent
 TARGET_REL = 1e-3
 
 
 def fastest_within(res: dict, rel: float = TARGET_REL) -> list[dict]:
     """Per forcing and method, the fastest run whose largest position error relative to the scene's extent is at
-    most ``rel``, and its speed-up over the fastest such RK4 run (breakpoints "inside", the default)."""
+    most ``rel``, and its speed-up over the fastest such run of the baseline (``res["baseline"]``, default RK4
+    with breakpoints "inside"; the point-mass string's: its explicit method)."""
     out = []
     for f in res["references"]:
         best: dict[str, dict] = {}
@@ -26,7 +27,7 @@ def fastest_within(res: dict, rel: float = TARGET_REL) -> list[dict]:
             if r["forcing"] == f and r["status"] == "ok" and r.get("err_max_pos_rel", math.inf) <= rel:
                 if r["method"] not in best or r["wall_s"] < best[r["method"]]["wall_s"]:
                     best[r["method"]] = r
-        base = best.get("rk4")
+        base = best.get(res.get("baseline", "rk4"))
         for m, r in best.items():
             out.append({"forcing": f, "method": m, "dt_s": r["dt_s"], "tol": r["tol"], "wall_s": r["wall_s"],
                         "real_time_factor": r["real_time_factor"], "err_max_pos_rel": r["err_max_pos_rel"],
@@ -76,8 +77,8 @@ def plot_work_precision(res: dict, path: Path) -> Path:
                 ax.set_title(f"{res['scene']}: {f}", fontsize=9)
         axes[0, j].legend(fontsize=7)
     sep = "\n" if len(forcings) == 1 else "; "  # one column is too narrow for the title on one line
-    fig.suptitle(f"{res['scene']}, {res['duration_s']:g} s simulated{sep}RK4 stable step {res['dt_stable_s']:.4g} s "
-                 "(estimate)", fontsize=9)
+    fig.suptitle(f"{res['scene']}, {res['duration_s']:g} s simulated{sep}{res.get('baseline', 'rk4')} stable step "
+                 f"{res['dt_stable_s']:.4g} s (estimate)", fontsize=9)
     fig.tight_layout()
     fig.savefig(path, dpi=80)
     plt.close(fig)
@@ -90,10 +91,13 @@ def _fmt(v, spec):
 
 def print_summary(res: dict, echo=print) -> None:
     """The table of runs and, per forcing and method, the fastest run within :data:`TARGET_REL` of the extent."""
-    echo(f"\n== {res['scene']}: {res['duration_s']:g} s, RK4 stable step {res['dt_stable_s']:.4g} s (eigenvalue "
-         f"{res['limiting_eigenvalue'][0]:.3g} +- {abs(res['limiting_eigenvalue'][1]):.4g}i 1/s)")
+    base = res.get("baseline", "rk4")
+    lam = res["limiting_eigenvalue"]
+    echo(f"\n== {res['scene']}: {res['duration_s']:g} s, {base} stable step {res['dt_stable_s']:.4g} s (eigenvalue "
+         f"{lam[0]:.3g} +- {abs(lam[1]):.4g}i 1/s)")
     for f, ref in res["references"].items():
-        echo(f"-- {f}: references (DP5(4) and scipy DOP853 at 1e-12) agree to {ref['reference_agreement_state']:.1e}")
+        names = " and ".join(f"{k[:-5]} at {v:g}" for k, v in ref.items() if k.endswith("_rtol"))
+        echo(f"-- {f}: references ({names}) agree to {ref['reference_agreement_state']:.1e}")
         echo(f"   {'method':9s} {'dt [s]':>9s} {'tol':>7s} {'wall [s]':>9s} {'x real':>8s} {'pos T [m]':>10s} "
              f"{'pos RMS':>9s} {'state T':>9s} {'state RMS':>9s}")
         for r in (r for r in res["rows"] if r["forcing"] == f):
@@ -105,11 +109,11 @@ def print_summary(res: dict, echo=print) -> None:
                  f"{r['err_final_state']:9.2e} {r['err_rms_state']:9.2e}")
 
     echo(f"\n-- fastest run of each method with the largest position error <= {TARGET_REL:g} of the extent "
-         "(speed-up against the fastest such RK4 run):")
+         f"(speed-up against the fastest such {base} run):")
     for r in fastest_within(res):
         echo(f"   {r['forcing']:7s} {r['method']:9s} {_fmt(r['dt_s'], '9.5f')} {_fmt(r['tol'], '7.0e')} "
              f"{r['real_time_factor']:8.1f}x real time  err/extent {r['err_max_pos_rel']:.2e}  "
-             f"{_fmt(r['speedup_vs_rk4'], '.2f')}x RK4")
+             f"{_fmt(r['speedup_vs_rk4'], '.2f')}x {base}")
 
 
 def replot(json_path: Path, png_path: Path) -> Path:
