@@ -1,5 +1,5 @@
 # Developer shortcuts (run inside the project's venv)
-.PHONY: test slow lint bench simulate figures gust-bench
+.PHONY: test slow lint bench simulate figures gust-bench work-precision
 
 test:
 	python -m pytest -q
@@ -21,6 +21,17 @@ gust-bench:
 	laddermill gust-bench --suite gusts-v1 --env laddermill_gym/Rotorcraft-v0 \
 		--controllers open_loop lqr runs/ppo_rotorcraft_seed0 --out results/gb_rc
 	cp results/gb_rc/scorecard_Rotorcraft-v0.png $(FIG)/gust_scorecard_rotorcraft.png
+
+# docs/work_precision.md: its figures and tables (about 15 minutes, one thread each)
+WP = NUMBA_NUM_THREADS=1 laddermill work-precision
+work-precision:
+	$(WP) ladder_chain --time 10 --samples 50 --out results/work_precision
+	$(WP) tethered_wing roberts_flying_model laddermill --time 5 --samples 25 --out results/work_precision
+	$(WP) podgaets_5km --time 10 --samples 50 --out results/work_precision
+	for s in ladder_chain tethered_wing roberts_flying_model laddermill podgaets_5km; do \
+		cp results/work_precision/$$s.png $(FIG)/work_precision_$$s.png; done
+	$(WP) laddermill --forcing step --time 10 --samples 50 --out results/work_precision_10s
+	cp results/work_precision_10s/laddermill.png $(FIG)/work_precision_laddermill_10s.png
 
 simulate:
 	laddermill simulate laddermill --start periodic --direction-step 0.01 --time 60 --animate --allow-breakdown --out runs
