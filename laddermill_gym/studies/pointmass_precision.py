@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import statistics
 import time
 
 import numpy as np
@@ -31,7 +30,7 @@ from laddermill_gym.kernels.contract import N3_SIZE
 from laddermill_gym.kernels.pointmass.explicit import accelerations
 from laddermill_gym.sim.breakpoints import modulation_kinks
 from laddermill_gym.sim.pointmass import PointMassError, PointMassSimulator, explicit_stable_dt
-from laddermill_gym.studies.work_precision import FORCINGS, errors, forcing_wind
+from laddermill_gym.studies.work_precision import FORCINGS, forcing_wind, measure
 
 #: the implicit method runs at the sample period divided by these
 IMPLICIT_DIVISORS = (1, 2, 4, 5, 10, 20, 40)
@@ -128,14 +127,7 @@ def run_forcing(scene, forcing: str, duration: float, n_samples: int, repeats: i
             return xs, ps, time.perf_counter() - t0
 
         row = {"forcing": forcing, "method": method, "dt_s": dt, "tol": math.nan}
-        try:
-            xs, ps, _ = once()
-            row.update(errors(xs, ps, xr, pr), status="ok")
-            row["wall_s"] = statistics.median([once()[2] for _ in range(repeats)])
-            row["real_time_factor"] = duration / row["wall_s"]
-        except PointMassError as err:
-            row.update(status=f"failed: {str(err)[:160]}", wall_s=math.nan)
-        rows.append(row)
+        rows.append(measure(row, once, xr, pr, duration, repeats, PointMassError))
         if bar is not None:
             bar.update(1)
     return rows, ref

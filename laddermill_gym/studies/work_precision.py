@@ -173,17 +173,24 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
         adaptive = method in ADAPTIVE_METHODS
         row = {"forcing": forcing, "method": label, "dt_s": math.nan if adaptive else value,
                "tol": value if adaptive else math.nan}
-        try:
-            xs, ps, _ = once()
-            row.update(errors(xs, ps, xr, pr), status="ok")
-            row["wall_s"] = statistics.median([once()[2] for _ in range(repeats)])
-            row["real_time_factor"] = duration / row["wall_s"]
-        except SimulationError as err:
-            row.update(status=f"failed: {str(err).splitlines()[0][:160]}", wall_s=math.nan)
-        rows.append(row)
+        rows.append(measure(row, once, xr, pr, duration, repeats, SimulationError))
         if bar is not None:
             bar.update(1)
     return rows, ref
+
+
+def measure(row: dict, once, xr, pr, duration: float, repeats: int, failure=SimulationError) -> dict:
+    """Fill ``row`` for one run: ``once()`` gives (states, positions, wall time [s]); the errors of its first call
+    against the reference (xr, pr), the median wall time of ``repeats`` more and the real-time factor; a
+    ``failure`` raised becomes the row's status (its first line), with no time."""
+    try:
+        xs, ps, _ = once()
+        row.update(errors(xs, ps, xr, pr), status="ok")
+        row["wall_s"] = statistics.median([once()[2] for _ in range(repeats)])
+        row["real_time_factor"] = duration / row["wall_s"]
+    except failure as err:
+        row.update(status=f"failed: {str(err).splitlines()[0][:160]}", wall_s=math.nan)
+    return row
 
 
 def run_scene(scene: str, forcings=FORCINGS, duration: float = 5.0, n_samples: int = 20, repeats: int = 3,
