@@ -16,39 +16,8 @@ def eliminate6(D, U, Y, bv, c, p):
     """Fixed-size (6 x 6 child, 6 x 6 parent) elimination step without pivoting: the diagonal blocks of
     wings are symmetric positive definite plus a small apparent-mass term, and so are their Schur
     complements. Constant loop bounds let the compiler unroll and vectorise."""
-    for k in range(6):
-        inv = 1.0 / D[c, k, k]
-        for i in range(k + 1, 6):
-            f = D[c, i, k] * inv
-            D[c, i, k] = f
-            for j in range(k + 1, 6):
-                D[c, i, j] -= f * D[c, k, j]
-    for i in range(6):
-        for j in range(6):
-            Y[c, i, j] = U[c, i, j]
-    for i in range(1, 6):
-        for j in range(i):
-            f = D[c, i, j]
-            bv[c, i] -= f * bv[c, j]
-            for q in range(6):
-                Y[c, i, q] -= f * Y[c, j, q]
-    for i in range(5, -1, -1):
-        for j in range(i + 1, 6):
-            f = D[c, i, j]
-            bv[c, i] -= f * bv[c, j]
-            for q in range(6):
-                Y[c, i, q] -= f * Y[c, j, q]
-        inv = 1.0 / D[c, i, i]
-        bv[c, i] *= inv
-        for q in range(6):
-            Y[c, i, q] *= inv
-    for k in range(6):
-        bk = bv[c, k]
-        for i in range(6):
-            f = U[c, k, i]
-            bv[p, i] -= f * bk
-            for j in range(6):
-                D[p, i, j] -= f * Y[c, k, j]
+    _factor6(D, U, Y, c, p)
+    _solve6(D, U, bv, c, p)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
@@ -153,6 +122,24 @@ def _factor6(D, U, Y, c, p):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+def _solve6(D, U, bv, c, p):
+    """The right-hand side's part of a 6 x 6 elimination step (:func:`_factor6` done): bv[c] = D[c]^-1 bv[c] by
+    the unit-lower and upper factors, then the parent's update bv[p] -= U[c]^T bv[c]."""
+    for i in range(1, 6):
+        for j in range(i):
+            bv[c, i] -= D[c, i, j] * bv[c, j]
+    for i in range(5, -1, -1):
+        for j in range(i + 1, 6):
+            bv[c, i] -= D[c, i, j] * bv[c, j]
+        inv = 1.0 / D[c, i, i]
+        bv[c, i] *= inv
+    for k in range(6):
+        bk = bv[c, k]
+        for i in range(6):
+            bv[p, i] -= U[c, k, i] * bk
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def tree_factor(D, U, Y, piv, order, parent, bsz):
     """Factor the block system in place for repeated solves (:func:`tree_solve_factored`): the elimination of
     :func:`tree_solve` without a right-hand side. A block factored on the fast 6 x 6 path is marked piv[c, 0] = -1.
@@ -196,16 +183,9 @@ def tree_solve_factored(D, U, Y, piv, bv, order, parent, bsz):
         n = bsz[c]
         p = parent[c]
         if piv[c, 0] == -1:
-            for i in range(1, 6):
-                for j in range(i):
-                    bv[c, i] -= D[c, i, j] * bv[c, j]
-            for i in range(5, -1, -1):
-                for j in range(i + 1, 6):
-                    bv[c, i] -= D[c, i, j] * bv[c, j]
-                inv = 1.0 / D[c, i, i]
-                bv[c, i] *= inv
-        else:
-            lu_solve_vec(D[c], piv[c], n, bv[c])
+            _solve6(D, U, bv, c, p)
+            continue
+        lu_solve_vec(D[c], piv[c], n, bv[c])
         if p >= 0:
             m = bsz[p]
             for k in range(n):
