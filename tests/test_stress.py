@@ -77,3 +77,22 @@ def test_command_table(tmp_path, capsys):
     assert row["passed"] == "True" and row["scene_dt_flagged"] == "True", row
     assert code == 0 and "FAIL" not in capsys.readouterr().out
     assert np.all([r["scene"] == "tethered_wing" for r in rows])
+
+
+def test_a_refused_scene_step_counts_as_detected(tmp_path):
+    # the tethered wing's scene with a 50 ms RK4 step: at 8 elements per piece the loader refuses it (beyond twice the
+    # stiffest element's closed-form bound); the case must find the equilibrium below the bound and hold at half the
+    # estimate
+    from laddermill_gym.ladder.scene import scene_path
+
+    src = scene_path("tethered_wing")
+    text = src.read_text().replace("dt: 0.005 ", "dt: 0.05  ")
+    for folder in ("wings", "cables"):
+        text = text.replace(f"../{folder}/", f"{src.parent.parent / folder}/")
+    path = tmp_path / "tethered_wing_50ms.yaml"
+    path.write_text(text)
+    rows = {r["case"]: r for r in stress.element_rows(str(path), 2.0)}
+    row = rows["8 element(s) per piece"]
+    assert "refused at load" in row["outcome"] and row["scene_dt_flagged"], row
+    assert row["passed"] and "half the estimate: ok" in row["outcome"], row
+    assert row["dt_scene_s"] == 0.05

@@ -114,6 +114,16 @@ def control_rows(scene: str, duration: float) -> list[dict]:
     return rows
 
 
+def _file_dt(scene: str, settings) -> float:
+    """The integrator step [s] the scene file asks for (``settings.dt``'s default where it names none)."""
+    from laddermill_gym.ladder.scene import scene_path
+    from laddermill_gym.model.configio import read_yaml
+    from laddermill_gym.sim.simulator import IntegratorSettings
+
+    data = read_yaml(scene_path(scene)).data.get("integrator") or {}
+    return float(data.get("dt", IntegratorSettings().dt))
+
+
 def element_rows(scene: str, duration: float) -> list[dict]:
     """Very long and very short elements: the scene's step against the estimate, and a run at half of it. A step
     that the scene's loader refuses (more than twice the stiffest element's closed-form bound, ``ladder/scene.py``)
@@ -133,8 +143,8 @@ def element_rows(scene: str, duration: float) -> list[dict]:
                                  outcome=str(e).splitlines()[0][-160:]))
                 continue
             refused = str(e).splitlines()[0]
-            sim = with_settings(load_scene(scene, elements_per_piece=n, dt=1e-6).simulator(),
-                                dt=build_simulator(scene).settings.dt)
+            sim = load_scene(scene, elements_per_piece=n, dt=1e-6).simulator()
+            sim = with_settings(sim, dt=_file_dt(scene, sim.settings))
         est = estimate_stable_step(sim, "rk4")
         flagged = refused is not None or sim.settings.dt > est.dt_max
         at_scene = ({"passed": False, "outcome": f"refused at load ({refused[refused.index('oscillates'):][:90]})"}
