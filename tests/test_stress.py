@@ -96,3 +96,9 @@ def test_a_refused_scene_step_counts_as_detected(tmp_path):
     assert "refused at load" in row["outcome"] and row["scene_dt_flagged"], row
     assert row["passed"] and "half the estimate: ok" in row["outcome"], row
     assert row["dt_scene_s"] == 0.05
+
+
+def test_injections_on_a_scene_whose_step_is_beyond_rk4s_limit():
+    # the rotorcraft steps ROS34PW2 at 50 ms, eight times RK4's limit: the RK4 injections run at half its estimate
+    rows = stress_cases.injection_rows("roberts_flying_model")
+    assert len(rows) == 3 * len(stress_cases.INJECTIONS) and all(r["passed"] for r in rows), rows
