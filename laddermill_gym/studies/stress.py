@@ -114,6 +114,11 @@ def control_rows(scene: str, duration: float) -> list[dict]:
     return rows
 
 
+#: the most steps a run of the elements cases takes (the mill at 8 elements per piece: a 2.8 us RK4 limit, so 20 s
+#: would be 14 million steps; 20,000 of them are 28 ms)
+ELEMENT_RUN_STEPS = 20_000
+
+
 def _file_dt(scene: str, settings) -> float:
     """The integrator step [s] the scene file asks for (``settings.dt``'s default where it names none)."""
     from laddermill_gym.ladder.scene import scene_path
@@ -125,9 +130,10 @@ def _file_dt(scene: str, settings) -> float:
 
 
 def element_rows(scene: str, duration: float) -> list[dict]:
-    """Very long and very short elements: the scene's step against the estimate, and a run at half of it. A step
-    that the scene's loader refuses (more than twice the stiffest element's closed-form bound, ``ladder/scene.py``)
-    counts as detected; the scene is then loaded with a step below the bound to find its equilibrium."""
+    """Very long and very short elements: the scene's step against the estimate, and a run at half of it (each
+    ``duration`` [s] or :data:`ELEMENT_RUN_STEPS` steps, whichever is shorter). A step that the scene's loader
+    refuses (more than twice the stiffest element's closed-form bound, ``ladder/scene.py``) counts as detected;
+    the scene is then loaded with a step below the bound to find its equilibrium."""
     if scene in CRAFT_NAMES:
         return []
     from laddermill_gym.ladder.scene import load_scene
@@ -148,8 +154,9 @@ def element_rows(scene: str, duration: float) -> list[dict]:
         est = estimate_stable_step(sim, "rk4")
         flagged = refused is not None or sim.settings.dt > est.dt_max
         at_scene = ({"passed": False, "outcome": f"refused at load ({refused[refused.index('oscillates'):][:90]})"}
-                    if refused else sc.run_for(with_settings(sim), duration))
-        safe = sc.run_for(with_settings(sim, dt=0.5 * est.dt_max), duration)
+                    if refused else sc.run_for(with_settings(sim), min(duration, ELEMENT_RUN_STEPS * sim.settings.dt)))
+        h = 0.5 * est.dt_max
+        safe = sc.run_for(with_settings(sim, dt=h), min(duration, ELEMENT_RUN_STEPS * h))
         detected = at_scene["passed"] or flagged
         rows.append(_row(f"{n} element(s) per piece", scene, passed=bool(safe["passed"] and detected),
                          outcome=f"scene dt: {at_scene['outcome']}; half the estimate: {safe['outcome']}",
