@@ -30,7 +30,7 @@ from laddermill_gym.kernels.contract import N3_SIZE
 from laddermill_gym.kernels.pointmass.explicit import accelerations
 from laddermill_gym.sim.breakpoints import modulation_kinks
 from laddermill_gym.sim.pointmass import PointMassError, PointMassSimulator, explicit_stable_dt
-from laddermill_gym.studies.work_precision import FORCINGS, forcing_wind, measure
+from laddermill_gym.studies.work_precision import FORCINGS, forcing_wind, measure, run_forcings
 
 #: the implicit method runs at the sample period divided by these
 IMPLICIT_DIVISORS = (1, 2, 4, 5, 10, 20, 40)
@@ -149,17 +149,5 @@ def run_scene(name: str, forcings=FORCINGS, duration: float = 5.0, n_samples: in
            "repeats": repeats, "baseline": "explicit", "dt_stable_s": dt_stable,
            "limiting_eigenvalue": [0.0, 2.0 * math.sqrt(c.EA / c.mass_per_length) / scene.string.element_length],
            "references": {}, "rows": []}
-    bar = None
-    if progress:
-        from tqdm import tqdm
-
-        bar = tqdm(desc=f"work-precision {scene.name}", unit="run", leave=False)
-    try:
-        for f in forcings:
-            rows, ref = run_forcing(scene, f, duration, n_samples, repeats, dt_stable, bar)
-            out["references"][f] = ref
-            out["rows"] += rows
-    finally:
-        if bar is not None:
-            bar.close()
-    return out
+    return run_forcings(out, forcings, f"work-precision {scene.name}", progress,
+                        lambda f, bar: run_forcing(scene, f, duration, n_samples, repeats, dt_stable, bar))

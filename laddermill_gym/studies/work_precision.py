@@ -206,14 +206,21 @@ def run_scene(scene: str, forcings=FORCINGS, duration: float = 5.0, n_samples: i
     out = {"scene": scene, "duration_s": duration, "samples": n_samples, "repeats": repeats,
            "dt_stable_s": est.dt_max, "limiting_eigenvalue": [est.eigenvalue.real, est.eigenvalue.imag],
            "references": {}, "rows": []}
+    return run_forcings(out, forcings, f"work-precision {scene}", progress,
+                        lambda f, bar: run_cases(base, f, duration, n_samples, repeats, est.dt_max, n_dt, bar))
+
+
+def run_forcings(out: dict, forcings, desc: str, progress: bool, run) -> dict:
+    """Add ``run(forcing, bar)``'s (rows, reference summary) of every forcing to the result ``out`` (its
+    "references" and "rows"), with a progress bar counting the runs when ``progress``."""
     bar = None
     if progress:
         from tqdm import tqdm
 
-        bar = tqdm(desc=f"work-precision {scene}", unit="run", leave=False)
+        bar = tqdm(desc=desc, unit="run", leave=False)
     try:
         for f in forcings:
-            rows, ref = run_cases(base, f, duration, n_samples, repeats, est.dt_max, n_dt, bar)
+            rows, ref = run(f, bar)
             out["references"][f] = ref
             out["rows"] += rows
     finally:
