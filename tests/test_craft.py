@@ -15,6 +15,7 @@ from laddermill_gym.control.linearize import linearize
 from laddermill_gym.model.configio import ConfigError
 from laddermill_gym.rotorcraft.config import load_craft_config
 from laddermill_gym.rotorcraft.craft import CraftSimulator, load_craft
+from laddermill_gym.rotorcraft.roll_lateral import _perturbed, lateral_state
 from laddermill_gym.rotorcraft.rotor import cable_angle, rotor_coefficients
 from laddermill_gym.studies.craft_stability import (
     closed_loop_run,
@@ -172,6 +173,18 @@ def test_lqr_holds_nonlinear_craft_below_critical_speed(design):
     assert math.isnan(cl["failure_time"])
     assert np.max(np.abs(cl["y"])) < 0.2
     assert np.max(np.abs(cl["dtheta"])) < math.radians(1.0)
+
+
+def test_lateral_state_reads_back_a_perturbation(design):
+    """lateral_state against the perturbation built by quaternion product (roll about the body x axis) and
+    rotated velocity: a roll about the body x axis adds to the 3-2-1 roll angle exactly, so the read-back
+    equals what was put in to roundoff; the LQR's differential is -K z of it."""
+    dz = np.array([0.3, 0.02, -0.15, 0.04])
+    x = _perturbed(design.x_trim, *dz)
+    np.testing.assert_allclose(lateral_state(x, design.x_trim), dz, rtol=1e-12, atol=1e-14)
+    u = design.state_controls(x)
+    assert u[0] == design.u_trim[0]
+    assert u[1] == pytest.approx(float(np.clip(-design.gain @ dz, *design.sim.config.differential_limits)), rel=1e-12)
 
 
 def test_bad_craft_config(tmp_path):

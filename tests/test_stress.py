@@ -79,6 +79,15 @@ def test_command_table(tmp_path, capsys):
     assert np.all([r["scene"] == "tethered_wing" for r in rows])
 
 
+def test_rotorcraft_is_held_by_its_lqr():
+    """The craft is open-loop unstable at its trim (growth +0.127 1/s, rotorcraft.md): the hour is held by its
+    eq. (6) LQR, at the design's control period, and the kinetic energy stays at the trim's roundoff level."""
+    row = stress.long_run_rows("roberts_flying_model", 120.0, progress=False)[0]
+    assert row["held_by"] == "eq. (6) LQR" and row["passed"], row
+    assert row["t_end_s"] == pytest.approx(120.0)
+    assert row["kinetic_energy_last_J"] < 1e-6 and abs(row["height_drift_m"]) < 1e-6
+
+
 def test_a_refused_scene_step_counts_as_detected(tmp_path):
     # the tethered wing's scene with a 50 ms RK4 step: at 8 elements per piece the loader refuses it (beyond twice the
     # stiffest element's closed-form bound); the case must find the equilibrium below the bound and hold at half the

@@ -19,7 +19,7 @@ from laddermill_gym.control.base import batch_observations
 from laddermill_gym.control.lqr import DiscreteLQR, bryson_weights, discrete_lqr
 from laddermill_gym.ladder.scene import CONFIG_DIR
 from laddermill_gym.model.configio import read_yaml
-from laddermill_gym.rotorcraft.roll_lateral import RollLateralModel, derive_roll_lateral
+from laddermill_gym.rotorcraft.roll_lateral import RollLateralModel, derive_roll_lateral, lateral_state
 
 DEFAULT_CRAFT_LQR = CONFIG_DIR / "agents" / "lqr_rotorcraft.yaml"
 
@@ -70,6 +70,13 @@ class CraftLQRDesign:
     def gain(self) -> np.ndarray:
         """K (4,): dtheta = -K (y, phi, y', p) [rad per m, rad, m/s, rad/s]."""
         return self.lqr.K[0].copy()
+
+    def state_controls(self, x: np.ndarray) -> np.ndarray:
+        """Controls (collective at the trim, differential dtheta = -K z clipped to the craft's limits) [rad],
+        shape (2,), from the full simulator state x, z = :func:`lateral_state` (x, trim)."""
+        lo, hi = self.sim.config.differential_limits
+        d = float(np.clip(-self.gain @ lateral_state(x, self.x_trim), lo, hi))
+        return np.array([self.u_trim[0], d])
 
 
 def design_craft_lqr(config: CraftLQRConfig | str | Path = DEFAULT_CRAFT_LQR, craft=None) -> CraftLQRDesign:

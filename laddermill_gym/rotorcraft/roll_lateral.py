@@ -218,6 +218,14 @@ def sim_euler(x: np.ndarray) -> np.ndarray:
     return np.asarray(euler_from_quaternion(x[B3_QUAT: B3_QUAT + 4]))
 
 
+def lateral_state(x: np.ndarray, x_trim: np.ndarray) -> np.ndarray:
+    """Eq. (6)'s state (y [m], phi [rad], y' [m/s], p [rad/s]) of the craft (body 0) in state x: the lateral CG
+    offset from the trim ``x_trim``, the 3-2-1 roll angle, the global lateral velocity and the body roll rate."""
+    eu = sim_euler(x)
+    vy = (rotation_from_euler(*eu) @ x[B3_VEL: B3_VEL + 3])[1]
+    return np.array([x[B3_POS + 1] - x_trim[B3_POS + 1], eu[0], vy, x[B3_RATE]])
+
+
 def _perturbed(x: np.ndarray, dy: float, dphi: float, dvy: float, dp: float) -> np.ndarray:
     """State x with the craft moved by dy (global y) [m], rolled by dphi about its body x axis [rad], given a
     global lateral velocity dvy [m/s] and a roll rate dp [rad/s]."""

@@ -27,10 +27,8 @@ from scipy.optimize import brentq
 from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.control.craft_lqr import design_craft_lqr
 from laddermill_gym.control.linearize import linearize
-from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_VEL
-from laddermill_gym.model.states import rotation_from_euler
 from laddermill_gym.rotorcraft.craft import Craft, CraftSimulator, load_craft
-from laddermill_gym.rotorcraft.roll_lateral import derive_roll_lateral, restricted_jacobian, sim_euler
+from laddermill_gym.rotorcraft.roll_lateral import derive_roll_lateral, lateral_state, restricted_jacobian, sim_euler
 from laddermill_gym.sim.simulator import SimulationError
 
 
@@ -128,16 +126,12 @@ def closed_loop_run(design, t_end: float = 120.0, controller: bool = True, step:
     direction_step(sim, step)
     dt = design.config.control_period
     n_sub = int(round(dt / sim.settings.dt))
-    lo, hi = sim.config.differential_limits
     rec = {k: [] for k in ("t", "y", "phi", "psi", "dtheta")}
     fail = math.nan
     for _ in range(int(round(t_end / dt))):
-        s = sim.state
-        eu = sim_euler(s)
-        vy = (rotation_from_euler(*eu) @ s[B3_VEL: B3_VEL + 3])[1]
-        z = np.array([s[B3_POS + 1] - design.x_trim[B3_POS + 1], eu[0], vy, s[B3_RATE]])
-        d = float(np.clip(-design.gain @ z, lo, hi)) if controller else 0.0
-        for k, v in zip(rec, (sim.t, z[0], eu[0], eu[2], d), strict=True):
+        z = lateral_state(sim.state, design.x_trim)
+        d = design.state_controls(sim.state)[1] if controller else 0.0
+        for k, v in zip(rec, (sim.t, z[0], z[1], sim_euler(sim.state)[2], d), strict=True):
             rec[k].append(v)
         try:
             sim.step(np.array([design.u_trim[0], d]), n_sub)
