@@ -2,8 +2,9 @@
 
 Cases per scene (``studies/stress_cases.py`` for the outcome rules): the largest stable RK4 step by bisection
 against a DP5(4) reference and a kinetic-energy bound, beside the eigenvalue estimate, and DP5(4)'s mean step
-beside its estimated limit; a long run (``--hours``, default 1 h) with the equilibrium controls held, reporting
-the drift of the wing height, the largest tension and the kinetic energy between its first and last tenth;
+beside its estimated limit; a long run (``--hours``, default 1 h), the wing scenes at their equilibrium controls and
+the open-loop unstable rotorcraft by its eq. (6) LQR (:func:`_holder`), reporting the drift of the wing height,
+the largest tension and the kinetic energy between its first and last tenth;
 slack-taut transitions (the wind to zero and back, a gust that unloads the cable); mean winds from 0 to 40 m/s
 at the reference height (ramped over 5 s from the scene's); bang-bang and random controls; very long and very
 short cable elements (1 and 8 per piece: the scene's step is checked against the estimate, a run at half the
