@@ -126,3 +126,19 @@ def test_the_step_bound_is_the_spring_mass_frequency():
     load_scene("ladder_chain", dt=0.062)
     with pytest.raises(ConfigError, match=r"oscillates at 90.7\d rad/s"):
         load_scene("ladder_chain", dt=0.063)
+
+
+@pytest.mark.parametrize("dt", [0.0, -0.005, float("nan")])
+def test_a_scene_step_that_makes_no_progress_is_refused(dt):
+    """dt = 0 made no progress and dt < 0 integrated backwards (issue 13): refused at load, naming the field."""
+    with pytest.raises(ValueError, match=r"IntegratorSettings.dt = .*must be a finite number > 0 \[s\]"):
+        load_scene("tethered_wing", dt=dt)
+
+
+def test_an_env_physics_step_of_zero_is_refused():
+    import gymnasium as gym
+
+    import laddermill_gym  # noqa: F401  (registers the ids)
+
+    with pytest.raises(ValueError, match=r"dt = 0.0: must be a finite number > 0"):
+        gym.make("laddermill_gym/TetheredWing-v0", physics_dt=0.0)

@@ -157,3 +157,23 @@ def test_cli_writes_what_it_has_and_prints_the_report(tmp_path, capsys):
         assert (tmp_path / name).is_file()
     assert cli_main([*args, "--strict"]) == 3
     assert cli_main([*args, "--allow-breakdown"]) == 0
+
+
+def test_diagnose_names_a_fast_node_and_an_overflowing_quaternion():
+    """diagnose() on states the right-hand side refuses or that hold a fast node: the report names the node and
+    its speed (set by hand: the oracle), and an overflowing quaternion by wing and norm, instead of raising."""
+    from laddermill_gym.kernels.contract import N3_VEL
+    from laddermill_gym.sim.reports import diagnose
+
+    sim = load_scene("tethered_wing").simulator()
+    a = sim.assembly
+    assert a.n_nodes == 1  # the cable's free node between the two elements
+    x = sim.state.copy()
+    o = a.n_wings * a.wing_state_size + N3_VEL
+    x[o: o + 3] = (0.0, 120.0, 50.0)  # node 0 at 130 m/s
+    sim.state = x
+    assert "fastest node 0: speed 130 m/s" in diagnose(sim)
+    x = sim.initial_state.copy()
+    x[3:7] *= 1e160
+    sim.state = x
+    assert "wing 0 quaternion norm 1e+160" in diagnose(sim)

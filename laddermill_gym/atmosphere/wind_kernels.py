@@ -57,6 +57,8 @@ def modulation(t, t0, dt, ms, md):
     if n == 1:
         return ms[0], md[0], 0.0, 0.0
     u = (t - t0) / dt
+    if u != u:  # a NaN time indexes nothing: NaN out, for the caller's finiteness checks (issue 13)
+        return u, u, u, u
     if u <= 0.0:
         if u == 0.0:
             return ms[0], md[0], (ms[1] - ms[0]) / dt, (md[1] - md[0]) / dt

@@ -85,6 +85,15 @@ C2, C3, C4, C5 = 0.2, 0.3, 0.8, 8.0 / 9.0
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+def _all_finite(v):
+    """True if every entry of v is finite."""
+    for i in range(v.size):
+        if not (abs(v[i]) < math.inf):
+            return False
+    return True
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
     """Integrate x in place from t to t_end with adaptive Dormand-Prince 5(4) (local extrapolation).
 
@@ -93,7 +102,9 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
     failure, that of the failed step; on success the step to try next: the controller's proposal, not the last
     step cut short to land on t_end (so a run continued in pieces, e.g. between output times, keeps its pace).
     The error norm is the RMS of err_i / (atol + rtol max(|x_i|, |x_new_i|)); steps are accepted when
-    it is <= 1 and the next step is h * min(5, max(0.2, 0.9 err^(-1/5))).
+    it is <= 1 and the next step is h * min(5, max(0.2, 0.9 err^(-1/5))). A non-finite trial stage is rejected
+    like a large error; a non-finite derivative at an accepted state, which no smaller step can mend, returns
+    NONFINITE at once.
     """
     k1, k2, k3, k4, k5, k6, k7, xt, xp = W.k1, W.k2, W.k3, W.k4, W.k5, W.k6, W.k7, W.xt, W.xp
     ns = x.size
@@ -101,6 +112,8 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
     rej = 0
     if rhs(t, x, u, k1, M, W) != 0:
         return SINGULAR, acc, rej, h, t
+    if not _all_finite(k1):  # at the accepted state no smaller step can help: stop at once (issue 13)
+        return NONFINITE, acc, rej, h, t
     while t < t_end:
         if acc + rej >= max_steps:
             return BUDGET, acc, rej, h, t
@@ -152,6 +165,8 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
             # first-same-as-last; after renormalisation re-evaluate for exactness
             if rhs(t, x, u, k1, M, W) != 0:
                 return SINGULAR, acc, rej, h, t
+            if not _all_finite(k1):
+                return NONFINITE, acc, rej, h, t
             fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
             if not last:
                 h *= min(5.0, max(0.2, fac))

@@ -138,19 +138,24 @@ def _limit_culprits(sim, x: np.ndarray) -> list[str]:
     return out
 
 
+def quaternion_problems(sim, x: np.ndarray) -> list[str]:
+    """Wing quaternions of the (finite) state x with zero or overflowing norm (3D; outside 1e-8..1e8, where the
+    kernels' renormalisation loses them), each with the wing and its norm; empty if none."""
+    asm = sim.assembly
+    if asm.dim != 3:
+        return []
+    w, _ = _blocks(asm, x)
+    q = w[:, B3_QUAT: B3_QUAT + 4]
+    scale = np.max(np.abs(q), axis=1)
+    norm = scale * np.linalg.norm(q / np.where(scale > 0, scale, 1.0)[:, None], axis=1)
+    return [f"wing {k} quaternion norm {norm[k]:.4g} (must be between 1e-8 and 1e8; it is renormalised)"
+            for k in np.flatnonzero(~((norm > 1e-8) & (norm < 1e8)))]
+
+
 def state_problems(sim, x: np.ndarray) -> list[str]:
     """What makes the (finite) state x unfit to start from: wing quaternions of zero or overflowing norm (3D), and
     bodies over the speed or rate limit, each with the body and the value; empty if none."""
-    asm = sim.assembly
-    out = []
-    if asm.dim == 3:
-        w, _ = _blocks(asm, x)
-        q = w[:, B3_QUAT: B3_QUAT + 4]
-        scale = np.max(np.abs(q), axis=1)
-        norm = scale * np.linalg.norm(q / np.where(scale > 0, scale, 1.0)[:, None], axis=1)
-        out += [f"wing {k} quaternion norm {norm[k]:.4g} (must be between 1e-8 and 1e8; it is renormalised)"
-                for k in np.flatnonzero(~((norm > 1e-8) & (norm < 1e8)))]
-    return out + _limit_culprits(sim, x)
+    return quaternion_problems(sim, x) + _limit_culprits(sim, x)
 
 
 def _rk4_trial(sim, h: float) -> np.ndarray | None:
@@ -174,7 +179,7 @@ def diagnose(sim) -> str:
     dx = np.zeros(sim.n_state)
     if _rhs_kernel(float(sim.t), sim.state, sim.controls, dx, sim.model, sim.work) != 0:
         return f"t = {sim.t:.6g} s: the mass matrix is singular"
-    msgs = []
+    msgs = quaternion_problems(sim, sim.state) if np.all(np.isfinite(sim.state)) else []
     bad = np.flatnonzero(~np.isfinite(dx))
     if bad.size:
         msgs.append(f"non-finite derivative of {sim.state_name(int(bad[0]))}")
@@ -193,7 +198,7 @@ def diagnose(sim) -> str:
         k = int(np.argmax(rates))
         msgs.append(f"wing {k} angular rate {rates[k]:.4g} rad/s")
     if a.elements.count:
-        ten = sim.tensions()
+        ten = sim.work.tension[: a.elements.count]  # of this state: the kernel call above left them there
         e = int(np.argmax(ten))
         msgs.append(f"element {e} tension {ten[e]:.4g} N")
     acc = np.abs(dx)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -28,7 +29,7 @@ from laddermill_gym.sim.breakpoints import (
     fixed_pieces,
     modulation_kinks,
 )
-from laddermill_gym.sim.reports import GROUND_MODES, diagnose, failure_message, state_problems
+from laddermill_gym.sim.reports import GROUND_MODES, diagnose, failure_message, quaternion_problems, state_problems
 from laddermill_gym.sim.station_views import (
     check_station_controls,
     station_control_labels,
@@ -257,10 +258,15 @@ class Simulator(BodyViews):
         if x.shape != (self.n_state,) or u.shape != (self.n_controls,):
             raise ValueError(f"rhs: x must have {self.n_state} and u {self.n_controls} entries, "
                              f"got {x.shape} and {u.shape}")
+        if not math.isfinite(t):
+            raise ValueError(f"rhs: t must be finite, got {t!r}")
         if not np.all(np.isfinite(x)):
             i = int(np.flatnonzero(~np.isfinite(x))[0])
             raise SimulationError(f"t = {t:.6g} s: {self.state_name(i)} is {x[i]} (state entry {i}): "
                                   "a non-finite state")
+        bad = quaternion_problems(self, x)
+        if bad:
+            raise SimulationError(f"t = {t:.6g} s: {bad[0]}: the state is outside what the model can evaluate")
         dx = np.zeros(self.n_state)
         if _rhs_kernel(float(t), x, u, dx, self.model, self.work) != 0:
             raise SimulationError(f"t = {t:.6g} s: the mass matrix is singular")

@@ -167,14 +167,14 @@ def node_mass(j, M):
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _coefficients(alpha, M):
     """C_L, C_D at alpha [rad] by linear interpolation on the kite's uniform grid (periodic in 2 pi)."""
+    if not (abs(alpha) < math.inf):  # NaN or infinite alpha: no table index, NaN coefficients (issue 13)
+        return math.nan, math.nan
     a0, da = M.kt[KT_ALPHA0], M.kt[KT_DALPHA]
     a = alpha - a0
     a -= 2.0 * math.pi * math.floor(a / (2.0 * math.pi))
     u = a / da
-    i = int(u)
     n = M.kcl.size
-    if i >= n - 1:
-        i = n - 2
+    i = min(max(int(u), 0), n - 2)
     f = u - i
     return M.kcl[i] + f * (M.kcl[i + 1] - M.kcl[i]), M.kcd[i] + f * (M.kcd[i + 1] - M.kcd[i])
 
