@@ -157,7 +157,7 @@ def _check_step(sim) -> None:
     the Jacobian), with a warning line when the step is beyond it (the run could oscillate without failing)."""
     import warnings
 
-    from laddermill_gym.studies.stable_step import check_step
+    from laddermill_gym.sim.stable_step import check_step
 
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")

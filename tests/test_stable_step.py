@@ -67,3 +67,18 @@ def test_check_step_warns_naming_dt(wing):
         ss.check_step(over)
     with pytest.raises(ValueError, match="stability limit"):
         ss.check_step(over, action="error")
+
+
+def test_a_scene_past_its_stable_step_warns_when_its_simulator_is_made():
+    """The issue's case: ``ladder_chain`` at 0.025 s (the README's old "largest stable" step) oscillates, bounded,
+    without any error. Made through its scene, the simulator warns with the estimate (0.02445 s against the
+    bisection's 0.02458 s, docs/work_precision.md); the scene's own 12.5 ms does not warn."""
+    import warnings
+
+    from laddermill_gym import load_scene
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ss.UnstableStepWarning)
+        load_scene("ladder_chain").simulator()
+    with pytest.warns(ss.UnstableStepWarning, match=r"dt = 0\.025 s .* 0\.024\d* s"):
+        load_scene("ladder_chain", dt=0.025).simulator()

@@ -8,6 +8,7 @@ configs/scenes/tethered_wing.yaml for a commented example and README.md ("Adding
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -27,6 +28,7 @@ from laddermill_gym.model.params import (
 )
 from laddermill_gym.model.station import MODES, StationParams
 from laddermill_gym.sim.simulator import INTEGRATOR_METHODS, IntegratorSettings, Simulator
+from laddermill_gym.sim.stable_step import check_step
 
 SCENE_DIR = CONFIG_DIR / "scenes"
 
@@ -148,6 +150,10 @@ class InitialSpec:
     elevator_down: float
 
 
+#: (scene file, dt, start) already checked against RK4's stable step in this process
+_CHECKED_STEPS: set = set()
+
+
 @dataclass(frozen=True)
 class Scene:
     """A loaded scene: the built assembly plus what is needed to start it."""
@@ -166,11 +172,21 @@ class Scene:
     settings: IntegratorSettings
 
     def simulator(self, initial_state: np.ndarray | None = None, controls: np.ndarray | None = None) -> Simulator:
-        """A compiled simulator started from the scene's initial state (found on first use)."""
+        """A compiled simulator started from the scene's initial state (found on first use).
+
+        With RK4, a step above the estimated stability limit at the start (the Jacobian's eigenvalues,
+        ``sim/stable_step.py``) gives an :class:`~laddermill_gym.sim.stable_step.UnstableStepWarning` naming both:
+        such a run can oscillate, bounded, without any error. Checked once per scene file, step and start."""
         if initial_state is None:
             initial_state, c0 = self.initial_state()
             controls = c0 if controls is None else controls
-        return Simulator(self.assembly, initial_state, self.settings, controls)
+        sim = Simulator(self.assembly, initial_state, self.settings, controls)
+        if self.settings.method == "rk4":
+            key = (str(self.file), self.settings.dt, hashlib.sha1(sim.state.tobytes()).hexdigest())
+            if key not in _CHECKED_STEPS:
+                _CHECKED_STEPS.add(key)
+                check_step(sim)
+        return sim
 
     def initial_state(self) -> tuple[np.ndarray, np.ndarray]:
         """(state, controls) at the scene's initial equilibrium."""

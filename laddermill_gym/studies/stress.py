@@ -30,9 +30,9 @@ import numpy as np
 
 from laddermill_gym.model.configio import ConfigError
 from laddermill_gym.sim.simulator import SimulationError
+from laddermill_gym.sim.stable_step import estimate_stable_step
 from laddermill_gym.studies import stress_cases as sc
 from laddermill_gym.studies.scenes import CRAFT_NAMES, DEFAULT_SCENES, build_simulator, with_settings
-from laddermill_gym.studies.stable_step import estimate_stable_step
 
 
 def control_limits(sim) -> tuple[np.ndarray, np.ndarray]:

@@ -19,8 +19,8 @@ from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_RATE, B3_SIZE, B
 from laddermill_gym.kernels.integrate import OK, dp54_advance
 from laddermill_gym.sim.breakpoints import W_METHODS
 from laddermill_gym.sim.simulator import SimulationError, Simulator
+from laddermill_gym.sim.stable_step import estimate_stable_step
 from laddermill_gym.studies.scenes import CRAFT_NAMES, build_simulator, with_settings
-from laddermill_gym.studies.stable_step import estimate_stable_step
 
 
 def kinetic_energy(sim: Simulator, x: np.ndarray | None = None) -> float:

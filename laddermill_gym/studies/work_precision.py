@@ -198,7 +198,7 @@ def run_scene(scene: str, forcings=FORCINGS, duration: float = 5.0, n_samples: i
     """The study on one scene: {"scene", "dt_stable_s", "references": {forcing: ...}, "rows": [...]}."""
     import numba
 
-    from laddermill_gym.studies.stable_step import estimate_stable_step
+    from laddermill_gym.sim.stable_step import estimate_stable_step
 
     numba.set_num_threads(1)
     base = build_simulator(scene)
