@@ -8,6 +8,8 @@ reruns switched off fails numerically at that time; a copy that does not fail is
 that never reran anything.
 """
 
+import math
+
 import gymnasium as gym
 import numpy as np
 import pytest
@@ -15,6 +17,8 @@ import pytest
 import laddermill_gym  # noqa: F401
 import laddermill_gym.sim.batch as batch_module
 from laddermill_gym.control.factory import make_controller
+from laddermill_gym.envs import physics_step
+from laddermill_gym.sim.stable_step import UnstableStepWarning
 
 TW = "laddermill_gym/TetheredWing-v0"
 STEP5X = [{"type": "SpeedStep", "step": 4.0, "time": 1.0}]  # speed factor 1 -> 5 at 1 s
@@ -32,11 +36,12 @@ def _run(env, ctrl, n):
 
 def test_numerical_failure_is_rerun_at_a_finer_step(monkeypatch):
     ctrl = make_controller("lqr", TW)
+    monkeypatch.setattr(physics_step, "ENV_STEP_MARGIN", math.inf)  # keep the 50 ms step (see the next tests)
     monkeypatch.setattr(batch_module, "SUBSTEP_DIVISORS", ())
     env = gym.make(TW, disturbances=STEP5X, episode_time=5.0, scene_options=RK4)
     n_off, info_off = _run(env, ctrl, 100)
     assert "integration failed" in info_off["failure_reason"]
-    monkeypatch.undo()
+    monkeypatch.setattr(batch_module, "SUBSTEP_DIVISORS", (4, 16))
     env = gym.make(TW, disturbances=STEP5X, episode_time=5.0, scene_options=RK4)
     n_on, info_on = _run(env, ctrl, 100)
     assert env.unwrapped.task.batch.substep_reruns >= 1
@@ -45,8 +50,7 @@ def test_numerical_failure_is_rerun_at_a_finer_step(monkeypatch):
 
 def test_the_default_integrator_flies_through_the_5x_wind_step():
     """With its default ROS34PW2 at 0.05 s TetheredWing-v0's LQR flies the 5x wind step for 20 s without a rerun
-    (as RK4 at 10 ms does); RK4 at 50 ms ends at 1.3 s even with reruns (the state before the failing period is
-    already off)."""
+    (as RK4 at 10 ms does)."""
     ctrl = make_controller("lqr", TW)
     env = gym.make(TW, disturbances=STEP5X, episode_time=20.0)
     n, info = _run(env, ctrl, 400)
@@ -86,3 +90,31 @@ def test_copies_that_do_not_fail_are_untouched_by_a_neighbours_rerun():
         assert np.array_equal(two.states[1], one.states[0]) and two.t[1] == one.t[0]
     assert two.substep_reruns >= 1 and one.substep_reruns == 0
     assert two.status[0] == 0 and two.t[0] == pytest.approx(3.0)
+
+
+def test_rk4_past_its_stable_step_in_the_strongest_wind_steps_finer(monkeypatch):
+    """RK4 at 50 ms: stable at the trim in the nominal wind (limit 0.11 s), past the limit after the 5x wind step
+    (about 0.023 s: the wing's aerodynamic damping, 5x larger). Kept at 50 ms it ends at 1.3 s on an angle of
+    attack "outside the aerodynamic range" even with the reruns (the state before the failing period is already
+    off): a numerical end that looks physical. The env therefore estimates RK4's stable step at the trim in the
+    disturbances' strongest wind and steps at 50/3 ms, with a warning naming both; the LQR flies the 20 s."""
+    ctrl = make_controller("lqr", TW)
+    monkeypatch.setattr(physics_step, "ENV_STEP_MARGIN", math.inf)
+    kept = gym.make(TW, disturbances=STEP5X, episode_time=20.0, scene_options=RK4)
+    n, info = _run(kept, ctrl, 400)
+    assert n < 40 and "outside the aerodynamic range" in info["failure_reason"]
+    monkeypatch.undo()
+    with pytest.warns(UnstableStepWarning, match=r"physics_dt = 0.05 s .*\(speed factor 5\): stepping at 0.01667 s"):
+        env = gym.make(TW, disturbances=STEP5X, episode_time=20.0, scene_options=RK4)
+    assert env.unwrapped.task.scene.settings.dt == pytest.approx(0.05 / 3)
+    assert _run(env, ctrl, 400)[0] == 400
+
+
+def test_the_step_is_kept_where_it_is_stable():
+    """The nominal wind (the default direction step): RK4 at 50 ms is within its limit and kept, silently."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", UnstableStepWarning)
+        env = gym.make(TW, episode_time=5.0, scene_options=RK4)
+    assert env.unwrapped.task.scene.settings.dt == 0.05 and env.unwrapped.task.physics_step_note == ""

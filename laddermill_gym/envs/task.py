@@ -8,6 +8,7 @@ bit for bit (tests/test_envs.py checks it).
 from __future__ import annotations
 
 import math
+import warnings
 from functools import lru_cache
 
 import numpy as np
@@ -17,6 +18,7 @@ from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry,
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.envs.actions import ActionMap, clip_actions, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
+from laddermill_gym.envs.physics_step import stable_physics_step
 
 # the settings dataclasses live in task_settings.py; imported here, where every env has always found them
 from laddermill_gym.envs.task_settings import (  # noqa: F401
@@ -43,6 +45,7 @@ from laddermill_gym.model.packing import make_workspace
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.reports import ground_stop_text
 from laddermill_gym.sim.simulator import FIXED_STEP_METHODS
+from laddermill_gym.sim.stable_step import UnstableStepWarning
 
 __all__ = ["RewardConfig", "TerminationConfig", "WingTask", "FAILURES", "scene_trim"]
 
@@ -67,6 +70,19 @@ def scene_trim(scene: str, options: tuple) -> tuple[Scene, np.ndarray, np.ndarra
     return sc, x, u
 
 
+def _stable_step_scene(name: str, options: dict, trimmed, control_dt: float, disturbances, episode_time: float,
+                       wind_dt: float):
+    """(scene, x_trim, u_trim, note): ``trimmed`` = (scene, x, u) unchanged (note '') unless its RK4 step is past
+    the stable step in the strongest wind of ``disturbances``; then the scene at the finer step that
+    :func:`~laddermill_gym.envs.physics_step.stable_physics_step` chooses, with an UnstableStepWarning."""
+    sc, x, u = trimmed
+    dt, note = stable_physics_step(sc, x, u, control_dt, disturbances, episode_time, wind_dt)
+    if not note:
+        return sc, x, u, ""
+    warnings.warn(f"scene {sc.name}: {note}", UnstableStepWarning, stacklevel=3)
+    return (*scene_trim(name, options_key(dict(options, dt=dt))), note)
+
+
 class WingTask:
     """B copies of a wing scene as an RL task.
 
@@ -83,7 +99,9 @@ class WingTask:
     control_dt : float
         Control period [s]; the action is held over it.
     physics_dt : float, optional
-        RK4 step [s] (default: the scene's); must divide ``control_dt``.
+        Integrator step [s] (default: the scene's); must divide ``control_dt``. With RK4, a step past the stable
+        step in the strongest wind of the disturbances is replaced by a finer one, with an UnstableStepWarning
+        (:mod:`laddermill_gym.envs.physics_step`; the note in ``physics_step_note``).
     action_mode : "tail" or "alpha"
         See :mod:`laddermill_gym.envs.actions`.
     groups : "per_wing", "all", "halves" or a list of wing index lists
@@ -114,8 +132,7 @@ class WingTask:
         options = dict(scene_options or {})
         if physics_dt is not None:
             options["dt"] = physics_dt
-        self.scene, x_trim, u_trim = scene_trim(str(scene), options_key(options))
-        sc = self.scene
+        sc, x_trim, u_trim = scene_trim(str(scene), options_key(options))
         asm = sc.assembly
         if asm.dim != 3:
             raise ValueError(f"scene {sc.name}: the environments need a 3D scene (dimension = {asm.dim})")
@@ -123,14 +140,18 @@ class WingTask:
             raise ValueError(f"scene {sc.name}: integrator.method = {sc.settings.method!r}; environments step with a "
                              f"fixed-step method, one of {FIXED_STEP_METHODS}")
         dt = sc.settings.dt
-        self.n_substeps = int(round(control_dt / dt))
-        if self.n_substeps < 1 or abs(self.n_substeps * dt - control_dt) > 1e-9 * control_dt:
+        n = int(round(control_dt / dt))
+        if n < 1 or abs(n * dt - control_dt) > 1e-9 * control_dt:
             raise ValueError(f"control_dt = {control_dt!r} s is not a whole multiple of the physics step {dt!r} s")
+        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
+        self.scene, x_trim, u_trim, self.physics_step_note = _stable_step_scene(
+            str(scene), options, (sc, x_trim, u_trim), control_dt, self.disturbances, episode_time, wind_dt)
+        sc, asm = self.scene, self.scene.assembly
+        self.n_substeps = int(round(control_dt / sc.settings.dt))
         self.control_dt = float(control_dt)
         self.episode_time = float(episode_time)
         self.n_steps_max = int(round(episode_time / control_dt))
         self.wind_dt = float(wind_dt)
-        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
         geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid
         self.reward_config = config_from(reward, RewardConfig, "reward")
         self.termination_config = config_from(termination, TerminationConfig, "termination")
