@@ -61,3 +61,15 @@ def test_command_writes_outputs(tmp_path):
     assert all(r["err_max_pos_rel"] != "" for r in rows if r["status"] == "ok")
     assert json.loads((tmp_path / "tethered_wing.json").read_text())["scene"] == "tethered_wing"
     assert (tmp_path / "tethered_wing.png").stat().st_size > 1000
+
+
+def test_gust_forcing_references_and_error_control():
+    """The 1-cos gust (+30 %, a speed modulation sampled every 0.1 s): the two references agree, and the
+    error-controlled methods' errors follow their tolerances over four decades (DP5(4) and ROS34PW2 under
+    error control)."""
+    res = wp.run_scene("tethered_wing", forcings=("gust",), duration=1.0, n_samples=5, repeats=1, n_dt=4,
+                       progress=False)
+    assert res["references"]["gust"]["reference_agreement_state"] < 1e-8
+    for method in ("dp54", "ros34pw2a"):
+        rows = {r["tol"]: r["err_final_state"] for r in _rows(res, method)}
+        assert rows[1e-8] < 3e-4 * rows[1e-4] and rows[1e-8] < 1e-6, (method, rows)
