@@ -69,14 +69,16 @@ def test_check_step_warns_naming_dt(wing):
         ss.check_step(over, action="error")
 
 
-def test_a_scene_past_its_stable_step_warns_when_its_simulator_is_made():
+def test_a_scene_past_its_stable_step_warns_when_its_simulator_is_made(monkeypatch):
     """The issue's case: ``ladder_chain`` at 0.025 s (the README's old "largest stable" step) oscillates, bounded,
     without any error. Made through its scene, the simulator warns with the estimate (0.02445 s against the
     bisection's 0.02458 s, docs/work_precision.md); the scene's own 12.5 ms does not warn."""
     import warnings
 
     from laddermill_gym import load_scene
+    from laddermill_gym.ladder import scene as scene_module
 
+    monkeypatch.setattr(scene_module, "CHECKED_STEPS", set())  # checked once per process: forget earlier tests'
     with warnings.catch_warnings():
         warnings.simplefilter("error", ss.UnstableStepWarning)
         load_scene("ladder_chain").simulator()

@@ -151,7 +151,7 @@ class InitialSpec:
 
 
 #: (scene file, dt, start) already checked against RK4's stable step in this process
-_CHECKED_STEPS: set = set()
+CHECKED_STEPS: set = set()
 
 
 @dataclass(frozen=True)
@@ -183,8 +183,8 @@ class Scene:
         sim = Simulator(self.assembly, initial_state, self.settings, controls)
         if self.settings.method == "rk4":
             key = (str(self.file), self.settings.dt, hashlib.sha1(sim.state.tobytes()).hexdigest())
-            if key not in _CHECKED_STEPS:
-                _CHECKED_STEPS.add(key)
+            if key not in CHECKED_STEPS:
+                CHECKED_STEPS.add(key)
                 check_step(sim)
         return sim
 

@@ -10,8 +10,8 @@ import numpy as np
 
 from laddermill_gym.sim.simulator import Simulator
 
-#: the rotorcraft configs a study accepts by name (everything else is a scene)
-CRAFT_NAMES = ("roberts_flying_model",)
+#: the rotorcraft configs a study accepts by name (everything else is a scene): ``configs/rotorcraft/``
+CRAFT_NAMES = ("roberts_flying_model", "roberts_35m_15kft", "roberts_35m_30kft")
 #: the scenes the studies run by default
 DEFAULT_SCENES = ("tethered_wing", "ladder_chain", "roberts_flying_model", "laddermill")
 
