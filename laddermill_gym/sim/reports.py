@@ -176,6 +176,10 @@ def _rk4_trial(sim, h: float) -> np.ndarray | None:
 def diagnose(sim) -> str:
     """Name the body, node or element with the largest speed, rate or derivative in the simulator's state."""
     a = sim.assembly
+    badx = np.flatnonzero(~np.isfinite(sim.state))
+    if badx.size:  # a state corrupted behind the integrator's back (or injected): its first bad entry is the cause
+        i = int(badx[0])
+        return f"{sim.state_name(i)} is {sim.state[i]} (state entry {i}): a non-finite state"
     dx = np.zeros(sim.n_state)
     if _rhs_kernel(float(sim.t), sim.state, sim.controls, dx, sim.model, sim.work) != 0:
         return f"t = {sim.t:.6g} s: the mass matrix is singular"
@@ -255,10 +259,11 @@ def failure_message(sim, status: int, h: float) -> str:
     if status == LIMIT:
         trial = trial_state(sim, h)
         culprit = _limit_culprits(sim, trial[1]) if trial is not None else []
-    elif status == NONFINITE:
+    elif status == NONFINITE and np.all(np.isfinite(sim.state)):
         x = _rk4_trial(sim, h)
         bad = np.flatnonzero(~np.isfinite(x)) if x is not None else np.zeros(0, dtype=int)
         culprit = [f"{sim.state_name(int(bad[0]))} non-finite"] if bad.size else []
     what = f"; in the step to t = {sim.t + h:.6g} s: {', '.join(culprit[:_MAX_NAMED])}" if culprit else ""
     kind = _KIND.get(status, f"status {status}").format(method=_ADAPTIVE_NAME.get(sim.settings.method, "DP5(4)"))
-    return f"integration failed at t = {sim.t:.6g} s ({kind}){what}; last good state: {sim.diagnose()}"
+    where = "last good state" if np.all(np.isfinite(sim.state)) else "the state"
+    return f"integration failed at t = {sim.t:.6g} s ({kind}){what}; {where}: {sim.diagnose()}"
