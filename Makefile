@@ -28,7 +28,8 @@ work-precision:
 	$(WP) ladder_chain --time 10 --samples 50 --out results/work_precision
 	$(WP) tethered_wing roberts_flying_model laddermill --time 5 --samples 25 --out results/work_precision
 	$(WP) podgaets_5km --time 10 --samples 50 --out results/work_precision
-	for s in ladder_chain tethered_wing roberts_flying_model laddermill podgaets_5km; do \
+	$(WP) pumping_kite roberts_35m_15kft roberts_35m_30kft --forcing step --time 5 --samples 25 --out results/work_precision
+	for s in ladder_chain tethered_wing roberts_flying_model laddermill podgaets_5km pumping_kite roberts_35m_15kft roberts_35m_30kft; do \
 		cp results/work_precision/$$s.png $(FIG)/work_precision_$$s.png; done
 	$(WP) laddermill --forcing step --time 10 --samples 50 --out results/work_precision_10s
 	cp results/work_precision_10s/laddermill.png $(FIG)/work_precision_laddermill_10s.png
