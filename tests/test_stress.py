@@ -111,3 +111,15 @@ def test_injections_on_a_scene_whose_step_is_beyond_rk4s_limit():
     # the rotorcraft steps ROS34PW2 at 50 ms, eight times RK4's limit: the RK4 injections run at half its estimate
     rows = stress_cases.injection_rows("roberts_flying_model")
     assert len(rows) == 3 * len(stress_cases.INJECTIONS) and all(r["passed"] for r in rows), rows
+
+
+def test_wing_scenes_are_held_by_their_lateral_lqr():
+    """The tethered wing's hour is held by its env's lateral LQR on the env observation of the simulator's state. At
+    the equilibrium the observation's deviations are zero, so the LQR must give back the equilibrium controls (the
+    action map's oracle: mid + a half-range inverts the trim); a short hold passes."""
+    sim = build_simulator("tethered_wing")
+    period, controls, name = stress.scene_holder("tethered_wing", sim)
+    assert (period, name) == (0.05, "lateral LQR")
+    np.testing.assert_allclose(controls(sim), sim.initial_controls, rtol=0, atol=1e-9)
+    row = stress.long_run_rows("tethered_wing", 60.0, progress=False)[0]
+    assert row["passed"] and row["held_by"] == "lateral LQR" and abs(row["height_drift_m"]) < 1e-6, row

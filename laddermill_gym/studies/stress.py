@@ -2,9 +2,10 @@
 
 Cases per scene (``studies/stress_cases.py`` for the outcome rules): the largest stable RK4 step by bisection
 against a DP5(4) reference and a kinetic-energy bound, beside the eigenvalue estimate, and DP5(4)'s mean step
-beside its estimated limit; a long run (``--hours``, default 1 h), the wing scenes at their equilibrium controls and
-the open-loop unstable rotorcraft by its eq. (6) LQR (:func:`_holder`), reporting the drift of the wing height,
-the largest tension and the kinetic energy between its first and last tenth;
+beside its estimated limit; a long run (``--hours``, default 1 h) held by a controller (:func:`scene_holder`: the
+tethered wing and the chain by their lateral LQR, the rotorcraft by its eq. (6) LQR, the mill at its equilibrium
+controls), reporting the drift of the wing height, the largest tension and the kinetic energy between its first and
+last tenth;
 slack-taut transitions (the wind to zero and back, a gust that unloads the cable); mean winds from 0 to 40 m/s
 at the reference height (ramped over 5 s from the scene's); bang-bang and random controls; very long and very
 short cable elements (1 and 8 per piece: the scene's step is checked against the estimate, a run at half the
@@ -51,25 +52,46 @@ def _row(case, scene, **r):
     return {"case": case, "scene": scene, **r}
 
 
-def _holder(scene: str, sim):
-    """How ``scene`` is held: (control period [s], controls from the state or None for the equilibrium controls).
-    The rotorcraft is open-loop unstable at its trim (rotorcraft.md), so its eq. (6) LQR holds it; the wing
-    scenes are stable at their equilibrium controls, which hold them."""
-    if scene not in CRAFT_NAMES:
-        return sim.settings.dt, None
-    from laddermill_gym.control.craft_lqr import design_craft_lqr
+#: the wing scenes held by their env's lateral LQR in the hour (the env id whose LQR config and design apply)
+WING_LQR_ENVS = {"tethered_wing": "laddermill_gym/TetheredWing-v0", "ladder_chain": "laddermill_gym/LadderChain-v0"}
 
-    design = design_craft_lqr()
-    if design.config.craft != scene or not np.array_equal(design.x_trim, sim.initial_state):
-        raise ValueError(f"{design.config.file}: its design trim ({design.config.craft} at "
-                         f"{design.config.wind_speed} m/s) is not the trim of scene {scene}")
-    return design.config.control_period, design.state_controls
+
+def scene_holder(scene: str, sim):
+    """How ``scene`` is held: (control period [s], controls(sim) -> controls or None, name). The rotorcraft, open-loop
+    unstable at its trim (rotorcraft.md), by its eq. (6) LQR; the tethered wing and the chain by their envs' lateral
+    LQR (``control/lqr.py``, designed on the scene itself, applied to the env observation of the simulator's state:
+    ``control.base.observe``); the laddermill, stable at its operating point, by its equilibrium controls (its LQR
+    needs the env's periodic operating point)."""
+    if scene in CRAFT_NAMES:
+        from laddermill_gym.control.craft_lqr import design_craft_lqr
+
+        design = design_craft_lqr()
+        if design.config.craft != scene or not np.array_equal(design.x_trim, sim.initial_state):
+            raise ValueError(f"{design.config.file}: its design trim ({design.config.craft} at "
+                             f"{design.config.wind_speed} m/s) is not the trim of scene {scene}")
+        return design.config.control_period, lambda s: design.state_controls(s.state), "eq. (6) LQR"
+    if scene not in WING_LQR_ENVS:
+        return sim.settings.dt, None, "equilibrium controls"
+    from laddermill_gym.control.base import control_ranges, controls_from_actions, elements_below_wings, observe
+    from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.envs import ENV_IDS
+    from laddermill_gym.ladder.scene import load_scene
+
+    ctrl = make_controller("lqr", WING_LQR_ENVS[scene], {"scene_options": {}, "physics_dt": None})
+    asm, nw = sim.assembly, sim.assembly.n_wings
+    nominal, below = sim.wing_positions().copy(), elements_below_wings(load_scene(scene).layout, nw)
+    mid, half = control_ranges(asm)
+
+    def controls(s):
+        return controls_from_actions(ctrl.predict(observe(s, nominal, below))[0], mid, half)
+
+    return ENV_IDS[WING_LQR_ENVS[scene]]["control_dt"], controls, "lateral LQR"
 
 
 def long_run_rows(scene: str, duration: float, progress: bool) -> list[dict]:
-    """The scene held for ``duration`` [s] (:func:`_holder`); drift of bounded quantities (last tenth - first)."""
+    """The scene held for ``duration`` [s] (:func:`scene_holder`); drift of bounded quantities (last tenth - first)."""
     sim = build_simulator(scene)
-    period, controls = _holder(scene, sim)
+    period, controls, held_by = scene_holder(scene, sim)
     n_sub, n = int(round(period / sim.settings.dt)), 100
     per_sample = int(round(duration / n / period))
     samples, err = [], None
@@ -84,7 +106,7 @@ def long_run_rows(scene: str, duration: float, progress: bool) -> list[dict]:
                 sim.step(n_steps=per_sample * n_sub)
             else:
                 for _ in range(per_sample):
-                    sim.step(controls(sim.state), n_steps=n_sub)
+                    sim.step(controls(sim), n_steps=n_sub)
             samples.append((float(np.mean(sim.body_heights()[0])), float(np.max(sim.tensions())),
                             sc.kinetic_energy(sim)))
             if bar:
@@ -99,7 +121,7 @@ def long_run_rows(scene: str, duration: float, progress: bool) -> list[dict]:
     first, last = s[: max(1, len(s) // 10)], s[-max(1, len(s) // 10):]
     bounded = bool(np.max(last[:, 2]) <= 1.5 * np.max(first[:, 2]) + 1.0)
     return [_row(f"hold {duration / 3600:g} h", scene, passed=ok and err is None and bounded, outcome=text,
-                 held_by="equilibrium controls" if controls is None else "eq. (6) LQR", t_end_s=sim.t,
+                 held_by=held_by, t_end_s=sim.t,
                  height_drift_m=float(np.mean(last[:, 0]) - np.mean(first[:, 0])),
                  tension_drift_N=float(np.mean(last[:, 1]) - np.mean(first[:, 1])),
                  kinetic_energy_first_J=float(np.max(first[:, 2])), kinetic_energy_last_J=float(np.max(last[:, 2])))]
