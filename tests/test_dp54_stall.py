@@ -38,3 +38,14 @@ def test_a_nan_state_stops_dp54_at_once_with_its_cause():
     sim.state = x  # reset() refuses a non-finite state; set it behind its back, as a diverged step would
     with pytest.raises(SimulationError, match=r"wing 0.*nan|nan.*wing 0"):
         sim.step(None, n_steps=1)
+
+
+def test_a_nan_state_stops_the_error_controlled_w_method_at_once():
+    """The same for ROS34PW2 under error control (was: 14 rejections, then a collapsed step)."""
+    sim = load_scene("tethered_wing", method="ros34pw2a").simulator()
+    x = sim.state.copy()
+    x[7] = float("nan")
+    sim.state = x
+    with pytest.raises(SimulationError, match=r"\(non-finite state\).*wing 0 u \[m/s\] is nan"):
+        sim.step(None, n_steps=1)
+    assert sim.adaptive_steps == [0, 0]

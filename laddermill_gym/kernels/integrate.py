@@ -85,7 +85,7 @@ C2, C3, C4, C5 = 0.2, 0.3, 0.8, 8.0 / 9.0
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
-def _all_finite(v):
+def all_finite(v):
     """True if every entry of v is finite."""
     for i in range(v.size):
         if not (abs(v[i]) < math.inf):
@@ -112,7 +112,7 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
     rej = 0
     if rhs(t, x, u, k1, M, W) != 0:
         return SINGULAR, acc, rej, h, t
-    if not _all_finite(k1):  # at the accepted state no smaller step can help: stop at once (issue 13)
+    if not all_finite(k1):  # at the accepted state no smaller step can help: stop at once (issue 13)
         return NONFINITE, acc, rej, h, t
     while t < t_end:
         if acc + rej >= max_steps:
@@ -165,7 +165,7 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
             # first-same-as-last; after renormalisation re-evaluate for exactness
             if rhs(t, x, u, k1, M, W) != 0:
                 return SINGULAR, acc, rej, h, t
-            if not _all_finite(k1):
+            if not all_finite(k1):
                 return NONFINITE, acc, rej, h, t
             fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
             if not last:

@@ -19,7 +19,17 @@ import math
 from numba import njit
 
 from laddermill_gym.kernels.dispatch import model_check
-from laddermill_gym.kernels.integrate import BUDGET, GROUND, H_MIN_REL, LIMIT, NONFINITE, OK, SINGULAR, STALLED
+from laddermill_gym.kernels.integrate import (
+    BUDGET,
+    GROUND,
+    H_MIN_REL,
+    LIMIT,
+    NONFINITE,
+    OK,
+    SINGULAR,
+    STALLED,
+    all_finite,
+)
 from laddermill_gym.kernels.rigid.rosenbrock import w_step
 
 _FM = {"contract", "nsz", "arcp"}
@@ -53,6 +63,8 @@ def w_adaptive(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps, tableau, 
     acc = 0
     rej = 0
     expo = -1.0 / (q + 1.0)
+    if not all_finite(x):  # no smaller step mends a non-finite state: stop at once (as dp54_advance)
+        return NONFINITE, acc, rej, h, t
     while t < t_end:
         if acc + rej >= max_steps:
             return BUDGET, acc, rej, h, t
