@@ -94,7 +94,7 @@ def long_run_rows(scene: str, duration: float, progress: bool) -> list[dict]:
     sim = build_simulator(scene)
     period, controls, held_by = scene_holder(scene, sim)
     n_sub, n = int(round(period / sim.settings.dt)), 100
-    per_sample = int(round(duration / n / period))
+    per_sample = max(1, int(round(duration / n / period)))  # control periods per sample (t_end_s: what ran)
     samples, err = [], None
     bar = None
     if progress:
