@@ -27,8 +27,9 @@ ea                    body-frame attachment vectors of element ends [m] (n_e, 2,
 ef                    element table (n_e, EF_SIZE), slots ``EF_*``
 ekd                   T^T T of every element end (n_e, 2, 6, 6)
 echild, order, parent, bsz (int64)  block-elimination tree (``model/packing.py``)
-sag                   None (plain tension-only truss) or float64[1] (sag correction on)
-caero                 None (no cable aerodynamics) or float64[2] = (C_N0, C_T0)
+sag                   3D: float64[1], 1 = sag correction on, 0 = plain tension-only truss (branched on by value);
+                      in-plane: None (off) or float64[1] (on), the type selecting the compiled path
+caero                 3D: float64[2] = (C_N0, C_T0), zeros = no cable aerodynamics (by value); in-plane: None or that
 vehicle               body-loads plug-in (``kernels/dispatch.py``): ``WING`` for winged bodies, the
                       rotorcraft's namedtuple for Roberts' craft
 ====================  ============================================================================

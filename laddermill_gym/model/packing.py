@@ -99,6 +99,15 @@ def spline_coefficients(asm: Assembly) -> tuple[np.ndarray, float, float]:
     return np.ascontiguousarray(np.stack(out)), float(grid[0]), da
 
 
+def cable_switch(dim: int, on: bool, values: np.ndarray):
+    """A cable fidelity switch as the kernels take it: in 3D always an array (``values`` when on, zeros when off; the
+    kernel branches on the values at run time, so every switch setting runs one compiled kernel); in-plane
+    ``values`` or None (the in-plane kernel is compiled per setting, the branch removed)."""
+    if dim == 3:
+        return values if on else np.zeros_like(values)
+    return values if on else None
+
+
 def end_mass_shapes(asm: Assembly) -> np.ndarray:
     """T^T T of every element end, shape (n_e, 2, 6, 6) (top-left nb x nb used). For a wing end it is
     [[I, -a~], [a~, -a~ a~]] in body axes (independent of the rotation); for a node end the identity;
@@ -160,8 +169,8 @@ def pack_model(asm: Assembly, vehicle=WING) -> KModel:
 
     ``vehicle`` is the body-loads plug-in the kernels call for every rigid body (``WING``: the wing types'
     aerodynamics; the rotorcraft passes its own). The model kind follows ``asm.dim``; the fidelity switches
-    ``asm.sag`` and ``asm.cable_aero`` become the ``sag`` and ``caero`` fields (None when off); a station makes it a
-    moving-cable kind (``kernels/moving_cable.py``)."""
+    ``asm.sag`` and ``asm.cable_aero`` become the ``sag`` and ``caero`` fields (:func:`cable_switch`); a station
+    makes it a moving-cable kind (``kernels/moving_cable.py``)."""
     w = asm.wind
     ac, a0, da = spline_coefficients(asm)
     glob = np.zeros(C.GL_SIZE)
@@ -187,8 +196,8 @@ def pack_model(asm: Assembly, vehicle=WING) -> KModel:
         ei=np.ascontiguousarray(el.end_index, dtype=np.int64).reshape(-1, 2),
         ea=np.ascontiguousarray(el.attach, dtype=np.float64).reshape(-1, 2, 3),
         ef=ef, ekd=end_mass_shapes(asm), echild=echild, order=order, parent=parent, bsz=bsz,
-        sag=np.zeros(1) if asm.sag else None,
-        caero=np.array([asm.cable_cn0, asm.cable_ct0]) if asm.cable_aero else None,
+        sag=cable_switch(asm.dim, asm.sag, np.ones(1)),
+        caero=cable_switch(asm.dim, asm.cable_aero, np.array([asm.cable_cn0, asm.cable_ct0])),
         vehicle=vehicle,
     )
 
