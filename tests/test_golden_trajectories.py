@@ -4,17 +4,30 @@ This is the one test that compares with the code's own earlier output, and it sa
 that nothing changes in behaviour, so RK4 trajectories of ``tethered_wing`` (with a direction step and a speed
 change through the wind modulation, and controls), its plain and in-plane variants, ``ladder_chain`` (3D with
 a direction step, and in-plane) and the rotorcraft flying model must equal the states written by commit 16b454f
-(``tests/data/make_golden_16b454f.py``) to RTOL relative (see there). The physics itself is checked against independent
-oracles elsewhere in the suite.
+(``tests/data/make_golden_16b454f.py``). The physics itself is checked against independent oracles elsewhere in
+the suite.
 
-The 3D chain is held for 0.5 s (two 0.25 s spans): its right-hand side differs from the old one in the last bit
-(reordered sums); the chain's element tension iteration (Newton to a relative 1e-13) and block elimination turn
-that into differences of about 1e-10 within 0.5 s, as any reordering of floating-point operations would.
+Two measures, both at every stored snapshot x_k (reference r_k):
+
+- **normwise relative**, ||x_k - r_k||_inf / ||r_k||_inf, the relative error of a vector (Higham, *Accuracy and
+  Stability of Numerical Algorithms*, sec. 1.2): held to the issue's 1e-12 (measured: at most 4.6e-14);
+- **componentwise**, max_i |x_ki - r_ki| / max(|r_ki|, 1): held to the trajectory's own round-off floor. The
+  kernels compile without reference counting (kernels/rigid/rhs3d.py) and without fastmath reassociation (the
+  cache-reproducibility fix, docs/numerics.md "Compiler flags"), so LLVM orders some sums differently from
+  16b454f. Such last-bit differences grow like any other: the stiff cable elements (EA / l0 ~ 1.7e6 N/m on a
+  lumped node of a few kg) and the equilibrium solve that makes the chain's start turn them into componentwise
+  differences of about 1e-10 in the chain's near-zero velocities within 0.5 s, 2e-12 in the single wing's and the
+  rotorcraft's. 16b454f differs from *itself* by as much when its start is moved by one ulp per entry (measured
+  with ``tests/data/ulp_floor_16b454f.py`` at that commit: single wing 1.5-2.3e-12, its in-plane variant
+  1.2-2.0e-12, rotorcraft 1.6-1.9e-12, chains 0.9-1.2e-10), so the issue's 1e-12 componentwise is below what the
+  reference code reproduces of itself. The test measures that floor with today's code (the same one-ulp start
+  moves, two seeds) and holds the difference from 16b454f to FLOOR_FACTOR times it.
 """
 
 from __future__ import annotations
 
 import dataclasses
+from functools import cache
 from pathlib import Path
 
 import numpy as np
@@ -23,21 +36,12 @@ import pytest
 from laddermill_gym import Simulator, load_scene
 
 GOLDEN = np.load(Path(__file__).parent / "data" / "golden_rk4_16b454f.npz")
-#: The issue asks for 1e-12. The kernels compile without reference counting (kernels/rigid/rhs3d.py) and, since
-#: the cache-reproducibility fix, without fastmath reassociation (docs/numerics.md, "Compiler flags"), so LLVM
-#: orders some sums differently from 16b454f; those last-bit differences grow to at most 2.6e-12 over the single
-#: wing and rotorcraft runs (measured), hence 5e-12. The chain's stiff cable grows them further: its in-plane
-#: equilibrium differs by 8.5e-13 and both chain runs by up to 1.1e-10 after 0.5 s (measured), hence CHAIN_RTOL.
-RTOL = 5e-12
-CHAIN_RTOL = 2e-10
-
-
-def _rollout(sim, steps, u=None) -> np.ndarray:
-    xs = [sim.state.copy()]
-    for n in steps:
-        sim.step(u, n_steps=n)
-        xs.append(sim.state.copy())
-    return np.array(xs)
+#: the issue's bound, normwise relative
+NORMWISE_RTOL = 1e-12
+#: componentwise: the difference from 16b454f may be this many times the largest difference a one-ulp move of the
+#: start makes (measured ratios 0.6-1.4 at the time of writing)
+FLOOR_FACTOR = 3.0
+_FLOOR_SEEDS = (1, 2)
 
 
 def _modulated(scene, t0, dt, speed, direction):
@@ -47,48 +51,90 @@ def _modulated(scene, t0, dt, speed, direction):
                      start.initial_controls)
 
 
-def _check(name, xs):
-    ref = GOLDEN[name]
-    assert xs.shape == ref.shape
-    scale = np.maximum(np.abs(ref), 1.0)
-    err = np.max(np.abs(xs - ref) / scale)
-    tol = CHAIN_RTOL if name.startswith("ladder_chain") else RTOL
-    assert err <= tol, f"{name}: largest relative difference {err:.3g}"
-
-
-def test_tethered_wing_direction_step():
+def _tethered_wing():
     sim = _modulated(load_scene("tethered_wing"), 0.0, 0.5, [1.0, 1.0, 1.0, 1.1, 1.1], [0, 0, 0.01, 0.01, 0.01])
     u = sim.controls.copy()
     u[1], u[2] = 0.01, -0.005
-    _check("tethered_wing", _rollout(sim, [200, 200, 200], u))
+    return sim, [200, 200, 200], u
 
 
-@pytest.mark.parametrize("name, options, steps", [
-    ("tethered_wing_plain", dict(sag=False, cable_aero=False, elements_per_piece=1), [100, 100]),
-    ("tethered_wing_2d", dict(dimension=2), [200, 200]),
-    ("ladder_chain_2d", dict(dimension=2), [40, 40]),
-])
-def test_scene_variants(name, options, steps):
-    scene = load_scene(name.split("_2d")[0].replace("_plain", ""), **options)
-    _check(name, _rollout(scene.simulator(), steps))
+def _ladder_chain():
+    return _modulated(load_scene("ladder_chain"), 0.0, 0.25, [1.0, 1.0, 1.05], [0.0, 0.01, 0.01]), [20, 20], None
 
 
-def test_ladder_chain_direction_step():
-    sim = _modulated(load_scene("ladder_chain"), 0.0, 0.25, [1.0, 1.0, 1.05], [0.0, 0.01, 0.01])
-    _check("ladder_chain", _rollout(sim, [20, 20]))
-
-
-def test_rotorcraft():
-    import dataclasses
-
+def _rotorcraft():
     from laddermill_gym.rotorcraft.craft import load_craft
     from laddermill_gym.sim.simulator import IntegratorSettings
 
     craft = load_craft("roberts_flying_model")
     # the kernels' arithmetic is pinned with the integrator of 16b454f (RK4 at 2 ms), whatever the config's default
     rk4 = IntegratorSettings(method="rk4", dt=0.002, max_speed=100.0, max_rate=50.0)
-    craft = load_craft(config=dataclasses.replace(craft.config, settings=rk4))
-    sim = craft.simulator()
+    sim = load_craft(config=dataclasses.replace(craft.config, settings=rk4)).simulator()
     u = sim.controls.copy()
     u[1] = 0.002
-    _check("rotorcraft", _rollout(sim, [250, 250], u))
+    return sim, [250, 250], u
+
+
+def _variant(scene, steps, **options):
+    return lambda: (load_scene(scene, **options).simulator(), steps, None)
+
+
+#: name in the golden file -> the run (simulator, steps per stored span, controls)
+CASES = {
+    "tethered_wing": _tethered_wing,
+    "tethered_wing_plain": _variant("tethered_wing", [100, 100], sag=False, cable_aero=False, elements_per_piece=1),
+    "tethered_wing_2d": _variant("tethered_wing", [200, 200], dimension=2),
+    "ladder_chain": _ladder_chain,
+    "ladder_chain_2d": _variant("ladder_chain", [40, 40], dimension=2),
+    "rotorcraft": _rotorcraft,
+}
+
+
+@cache
+def _run(name):
+    return CASES[name]()
+
+
+def _trajectory(name, seed=None) -> np.ndarray:
+    """The stored snapshots of run ``name``; with a seed, from its start with each entry moved by one ulp (a random
+    sign per entry, relative 2^-52)."""
+    sim, steps, u = _run(name)
+    x0 = sim.initial_state.copy()
+    if seed is not None:
+        x0 *= 1.0 + np.random.default_rng(seed).choice([-1.0, 1.0], x0.shape) * 2.0 ** -52
+    sim.reset(state=x0)
+    xs = [sim.state.copy()]
+    for n in steps:
+        sim.step(u, n_steps=n)
+        xs.append(sim.state.copy())
+    return np.array(xs)
+
+
+def componentwise(xs, ref) -> float:
+    """max_i |x_ki - r_ki| / max(|r_ki|, 1) over every snapshot k and entry i."""
+    return float(np.max(np.abs(xs - ref) / np.maximum(np.abs(ref), 1.0)))
+
+
+def normwise(xs, ref) -> float:
+    """max_k ||x_k - r_k||_inf / ||r_k||_inf."""
+    return float(np.max(np.max(np.abs(xs - ref), axis=1) / np.max(np.abs(ref), axis=1)))
+
+
+def test_the_measures():
+    ref = np.array([[1000.0, 0.5, -2.0]])
+    xs = ref + np.array([[1e-9, 1e-12, -4e-12]])
+    assert componentwise(xs, ref) == pytest.approx(2e-12)  # the -2.0 entry: 4e-12 / 2
+    assert normwise(xs, ref) == pytest.approx(1e-12)  # 1e-9 / 1000
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_equals_16b454f(name):
+    ref = GOLDEN[name]
+    xs = _trajectory(name)
+    assert xs.shape == ref.shape
+    assert normwise(xs, ref) <= NORMWISE_RTOL, f"{name}: normwise relative difference {normwise(xs, ref):.3g}"
+    floor = max(componentwise(_trajectory(name, seed), xs) for seed in _FLOOR_SEEDS)
+    assert floor > 0.0  # the start moves by one ulp and the run follows it
+    err = componentwise(xs, ref)
+    assert err <= FLOOR_FACTOR * max(floor, NORMWISE_RTOL), (
+        f"{name}: componentwise difference {err:.3g}, {err / floor:.2f} times the one-ulp floor {floor:.3g}")
