@@ -102,7 +102,7 @@ def random_quaternion(rng) -> np.ndarray:
     return 1.7 * q / np.linalg.norm(q)  # deliberately not unit
 
 
-def _wing_on_tether(sag=True, cable_aero=True):
+def wing_on_tether(sag=True, cable_aero=True):
     """Wing 0 tethered to a fixed ground point through a free node (two elements)."""
     wind = WindParams(v0=8.0, h0=50.0, v1=0.0016, direction_inf=0.3, direction_height=400.0).with_modulation(
         0.0, 1.0, np.array([1.0, 1.2, 0.9]), np.array([0.0, 0.1, -0.1]))

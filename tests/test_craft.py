@@ -15,7 +15,7 @@ from laddermill_gym.control.linearize import linearize
 from laddermill_gym.model.configio import ConfigError
 from laddermill_gym.rotorcraft.config import load_craft_config
 from laddermill_gym.rotorcraft.craft import CraftSimulator, load_craft
-from laddermill_gym.rotorcraft.roll_lateral import _perturbed, lateral_state
+from laddermill_gym.rotorcraft.roll_lateral import lateral_state, perturbed_state
 from laddermill_gym.rotorcraft.rotor import cable_angle, rotor_coefficients
 from laddermill_gym.studies.craft_stability import (
     closed_loop_run,
@@ -180,7 +180,7 @@ def test_lateral_state_reads_back_a_perturbation(design):
     rotated velocity: a roll about the body x axis adds to the 3-2-1 roll angle exactly, so the read-back
     equals what was put in to roundoff; the LQR's differential is -K z of it."""
     dz = np.array([0.3, 0.02, -0.15, 0.04])
-    x = _perturbed(design.x_trim, *dz)
+    x = perturbed_state(design.x_trim, *dz)
     np.testing.assert_allclose(lateral_state(x, design.x_trim), dz, rtol=1e-12, atol=1e-14)
     u = design.state_controls(x)
     assert u[0] == design.u_trim[0]

@@ -1,4 +1,4 @@
-"""The numba kernels against the independent plain-numpy reference (laddermill_gym/kernels/rigid/reference.py), which
+"""The numba kernels against the independent plain-numpy reference (laddermill_gym/reference.py), which
 is written from docs/model.md with dense matrices: equal to 1e-10 relative on random states."""
 
 from __future__ import annotations
@@ -8,7 +8,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from laddermill_gym.kernels.rigid import reference as ref
+from laddermill_gym import reference as ref
 from laddermill_gym.model.builders import CableSpec, build_chain
 from laddermill_gym.model.params import WindParams
 from laddermill_gym.model.states import planar_from_3d, planar_to_3d, quaternion_from_euler

@@ -1,6 +1,6 @@
 """The lateral LQR of the moving-cable mill (``control/mill_lqr.py``, issue 12 point 4).
 
-Oracles: the plain-numpy reference right-hand side (``kernels/rigid/reference``) for the lateral model; the mirror
+Oracles: the plain-numpy reference right-hand side (``reference``) for the lateral model; the mirror
 symmetry of an in-plane state (lateral and longitudinal blocks decouple exactly); the paper's transfer rule for the
 transfer's Jacobian (slots shift by one unchanged, the new wing takes its neighbour's attitude and no rates); the
 gain itself for the controller's action layout; and, in the slow test, the nonlinear mill after the paper's
@@ -21,8 +21,8 @@ from laddermill_gym.control.mill_lqr import design_mill_lqr, mill_lateral_model,
 from laddermill_gym.envs.laddermill.observation import OBS_INDEX
 from laddermill_gym.envs.laddermill.task import MillTask
 from laddermill_gym.kernels.contract import SX_MOVED, SX_SIZE
-from laddermill_gym.kernels.rigid.reference import reference_rhs
 from laddermill_gym.model.configio import CONFIG_DIR
+from laddermill_gym.reference import reference_rhs
 
 N = 11
 SMALL = dict(scene="laddermill", scene_options={"n_wings": N}, settle={"max_time": 100.0}, control_dt=0.05,

@@ -2,7 +2,7 @@
 animation, ``laddermill simulate`` on the moving mill.
 
 Oracles: the element end points recomputed here from the quaternion state with the numpy reference's element
-kinematics (``kernels/rigid/reference``), the GIF's frame count read back with Pillow, and the generator
+kinematics (``reference``), the GIF's frame count read back with Pillow, and the generator
 energy's mean against the recorded power samples.
 """
 
@@ -14,8 +14,8 @@ from PIL import Image
 
 from laddermill_gym import load_scene
 from laddermill_gym.cli import main as cli_main
-from laddermill_gym.kernels.rigid.reference.cable import end_kinematics
 from laddermill_gym.plotting import cable_segments
+from laddermill_gym.reference.cable import end_kinematics
 from laddermill_gym.sim.recording import record
 
 

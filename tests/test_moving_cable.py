@@ -1,6 +1,6 @@
 """The moving cable (issue 12, Meijaard et al. 1999 "Boundary conditions"): rest lengths, transfers, generator.
 
-Oracles: the plain-numpy reference right-hand side (``kernels/rigid/reference``) on an assembly whose first and
+Oracles: the plain-numpy reference right-hand side (``reference``) on an assembly whose first and
 last elements are given the station's lengths; the closed-form Voigt damping of a cable paid out at V_c; the
 integral of a piecewise-linear speed schedule; the drum's energy identity E = (Q / r) x paid-out length; and, at
 a transfer, mass and linear momentum computed here from the states with the reference's element-end kinematics
@@ -17,9 +17,9 @@ import pytest
 from laddermill_gym import Simulator, load_scene
 from laddermill_gym.kernels.contract import SX_MOVED, SX_SPEED
 from laddermill_gym.kernels.integrate import normalise_and_check
-from laddermill_gym.kernels.rigid.reference import reference_rhs
-from laddermill_gym.kernels.rigid.reference.cable import end_kinematics
-from laddermill_gym.kernels.rigid.reference.rotations import rotation
+from laddermill_gym.reference import reference_rhs
+from laddermill_gym.reference.cable import end_kinematics
+from laddermill_gym.reference.rotations import rotation
 
 N_WINGS = 11
 

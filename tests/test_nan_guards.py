@@ -49,7 +49,7 @@ def test_wind_modulation_at_a_nan_time_indexes_nothing():
 @pytest.mark.parametrize("alpha", [np.nan, np.inf, -np.inf])
 def test_point_mass_kite_table_with_non_finite_alpha(alpha):
     """The point-mass kite's C_L, C_D lookup: NaN for a non-finite angle, the table's value on a grid point."""
-    from laddermill_gym.kernels.pointmass.forces import _coefficients
+    from laddermill_gym.kernels.pointmass.forces import kite_coefficients
     from laddermill_gym.model.builders import CableSpec
     from laddermill_gym.model.params import WindParams
     from laddermill_gym.model.pointmass import PointMassKite, PointMassString, pack
@@ -62,8 +62,8 @@ def test_point_mass_kite_table_with_non_finite_alpha(alpha):
     s = PointMassString(wind=wind, gravity=9.81, cable=cab, element_length=3.0, n_nodes=10, anchor=np.zeros(3),
                         kite=kite, kite_nodes=np.array([9]))
     M = pack(s)
-    assert np.all(np.isnan(_coefficients(alpha, M)))
-    assert _coefficients(a[40], M) == pytest.approx((cl[40], cd[40]), rel=1e-12)
+    assert np.all(np.isnan(kite_coefficients(alpha, M)))
+    assert kite_coefficients(a[40], M) == pytest.approx((cl[40], cd[40]), rel=1e-12)
 
 
 def test_rhs_refuses_a_nan_time_and_an_overflowing_quaternion():

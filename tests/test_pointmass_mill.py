@@ -114,7 +114,7 @@ def test_zero_speed_equals_the_fixed_string():
 def test_zero_speed_equals_the_fixed_string_with_other_end_lengths():
     """The same with the mill's own end elements (7 m elements, first 7 m, last 14 m): the plain simulator with
     those two rest lengths set in its packed slots."""
-    from laddermill_gym.kernels.pointmass.layout import PP_L_FIRST, PP_L_LAST
+    from laddermill_gym.kernels.contract import PP_L_FIRST, PP_L_LAST
 
     sc = small_mill()
     x, u = mill_simulator(sc, "static").x.copy(), sc.controls
@@ -196,10 +196,10 @@ def test_periodic_power_and_tension_against_the_rigid_mill():
     mill at one element per piece settles to its own periodic motion with more power: no tail, so every kite
     keeps the wing table's full lift (the rigid wings' elevator tail takes 9.6 % of it on the ascending side,
     docs/pointmass.md); the difference is stated there, checked here within the measured band."""
-    from laddermill_gym.ladder.pointmass_mill import _rigid_periodic, run_pointmass_periodic
+    from laddermill_gym.ladder.pointmass_mill import rigid_periodic, run_pointmass_periodic
 
     sc = load_scene("laddermill", fidelity="pointmass", element_length=70.0)
-    rigid = _rigid_periodic(str(sc.file), 101)[2]
+    rigid = rigid_periodic(str(sc.file), 101)[2]
     res = run_pointmass_periodic(mill_simulator(sc), max_time=1500.0)
     assert res.converged, res.summary()
     assert 1.0 < res.mean_power_W / rigid.mean_power_W < 2.0

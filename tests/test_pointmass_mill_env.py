@@ -12,7 +12,7 @@ from gymnasium.utils.env_checker import check_env
 from laddermill_gym.atmosphere.disturbances import RandomPerturbation
 from laddermill_gym.envs.pointmass.env import PointMassEnv
 from laddermill_gym.envs.pointmass.vector import PointMassVectorEnv
-from laddermill_gym.kernels.pointmass.layout import PU_PITCH, PU_ROLL
+from laddermill_gym.kernels.contract import PU_PITCH, PU_ROLL
 
 MILL = {"scene": "laddermill", "scene_options": {"element_length": 70.0}}
 #: configs/scenes/laddermill.yaml at element_length 70 m: 101 kites (one per 70 m piece), V_c = 2 m/s after the

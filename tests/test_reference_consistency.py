@@ -1,4 +1,4 @@
-"""Further consistency checks of the numpy reference (laddermill_gym/kernels/rigid/reference.py): finite
+"""Further consistency checks of the numpy reference (laddermill_gym/reference.py): finite
 differences, virtual work, energy and symmetry (split from tests/test_reference_selfchecks.py)."""
 
 from __future__ import annotations
@@ -6,17 +6,17 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from laddermill_gym.kernels.rigid import reference as ref
+from laddermill_gym import reference as ref
 from laddermill_gym.model.params import AERO_COLUMNS, AeroTable, WindParams
 from tests.reference_builders import (
     G,
-    _wing_on_tether,
     make_table,
+    wing_on_tether,
 )
 
 
 def test_alpha_rate_equals_finite_difference_along_the_motion():
-    asm, x, u = _wing_on_tether()
+    asm, x, u = wing_on_tether()
     t = 0.3
 
     def alpha_at(tt, xx):
@@ -33,7 +33,7 @@ def test_alpha_rate_equals_finite_difference_along_the_motion():
 
 
 def test_attachment_acceleration_equals_T_vdot_plus_quadratic_term():
-    asm, x, u = _wing_on_tether()
+    asm, x, u = wing_on_tether()
     t = 0.3
     dx = ref.reference_rhs(t, x, u, asm)
     M, F = ref.mass_matrix_and_forces(asm, t, x, u)
@@ -54,7 +54,7 @@ def test_attachment_acceleration_equals_T_vdot_plus_quadratic_term():
 
 
 def test_mass_matrix_symmetric_positive_definite_without_alpha_rate_term():
-    asm, x, u = _wing_on_tether()
+    asm, x, u = wing_on_tether()
     import dataclasses
 
     vac = dataclasses.replace(asm, wind=dataclasses.replace(asm.wind, rho0=0.0))
@@ -73,7 +73,7 @@ def test_mass_matrix_symmetric_positive_definite_without_alpha_rate_term():
 
 def test_element_loads_do_no_virtual_work_mismatch():
     """The generalised element forces equal T^T of the global end forces: check by virtual power."""
-    asm, x, u = _wing_on_tether(sag=True, cable_aero=True)
+    asm, x, u = wing_on_tether(sag=True, cable_aero=True)
     t = 0.3
     rng = np.random.default_rng(11)
     gen_vel = rng.normal(size=9)
@@ -94,7 +94,7 @@ def test_element_loads_do_no_virtual_work_mismatch():
 
 
 def test_wing_aero_with_zero_airspeed_and_controls_sign():
-    asm, x, u = _wing_on_tether()
+    asm, x, u = wing_on_tether()
     wt = asm.wing(0)
     R = ref.rotation(x[3:7])
     v_still = R.T @ ref.wind_velocity(asm.wind, x[0:3], 0.3)
@@ -133,7 +133,7 @@ def test_energy_is_conserved_without_damping_air_and_sag():
     """d/dt (kinetic + elastic + gravitational energy) = 0: checks T^T M0e T against the (M15) terms."""
     import dataclasses
 
-    asm, x, u = _wing_on_tether(sag=False, cable_aero=False)
+    asm, x, u = wing_on_tether(sag=False, cable_aero=False)
     el = dataclasses.replace(asm.elements, DA=np.zeros(2), l0=np.array([45.0, 40.0]))  # both stretched
     asm = dataclasses.replace(asm, elements=el, wind=dataclasses.replace(asm.wind, rho0=0.0))
     x = x.copy()
@@ -164,7 +164,7 @@ def test_alpha_rate_load_equals_k_times_finite_difference_alpha_rate():
     """M0 v' = F0 + k alpha' where M0, F0 are computed with CLad = Cmad = 0 and alpha' by finite differences."""
     import dataclasses
 
-    asm, x, u = _wing_on_tether()
+    asm, x, u = wing_on_tether()
     t = 0.3
     wt = asm.wing(0)
     values = wt.aero.values.copy()

@@ -1,4 +1,4 @@
-"""Self-checks of the numpy reference (laddermill_gym/kernels/rigid/reference.py) against closed forms.
+"""Self-checks of the numpy reference (laddermill_gym/reference.py) against closed forms.
 
 None of these tests touches the numba kernels: they check the oracle itself against hand-derived
 results, finite differences and numpy.roots.
@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from laddermill_gym.kernels.rigid import reference as ref
+from laddermill_gym import reference as ref
 from laddermill_gym.model.params import (
     END_FIXED,
     END_NODE,

@@ -14,6 +14,7 @@ import pytest
 from gymnasium.utils.env_checker import check_env
 
 import laddermill_gym  # noqa: F401  (registers the ids)
+from laddermill_gym.control.open_loop import craft_open_loop_controller
 from laddermill_gym.envs import ENV_IDS, DirectionStep, RandomPerturbation
 from laddermill_gym.envs.rotorcraft.env import (
     CRAFT_OBS_FIELDS,
@@ -25,7 +26,6 @@ from laddermill_gym.envs.rotorcraft.env import (
     OBS_VY,
     OBS_Y,
     RotorcraftEnv,
-    open_loop_controller,
     trim_action,
 )
 from laddermill_gym.model.states import euler_from_quaternion
@@ -206,7 +206,7 @@ def test_bad_action_shape_raises():
 def test_open_loop_controller_holds_trim():
     env = RotorcraftEnv(**short())
     obs, _ = env.reset(seed=0)
-    ctrl = open_loop_controller(ENV_IDS[RC])
+    ctrl = craft_open_loop_controller(ENV_IDS[RC])
     a, state = ctrl.predict(obs)
     np.testing.assert_allclose(a, env.trim_action)
     batch, _ = ctrl.predict(np.stack([obs, obs, obs]))
@@ -241,7 +241,7 @@ def test_open_loop_lateral_instability_matches_linear_growth_rate():
     assert lam.real > 0 and abs(lam.imag) > 0.1  # one unstable oscillatory mode
     assert np.sum(ev.real > 1e-6) == 2  # ... and only that pair
     obs, _ = env.reset(seed=0)
-    a = open_loop_controller(ENV_IDS[RC]).predict(obs)[0]
+    a = craft_open_loop_controller(ENV_IDS[RC]).predict(obs)[0]
     ts, ys = [0.0], [float(obs[OBS_Y])]
     while True:
         obs, _, term, trunc, info = env.step(a)

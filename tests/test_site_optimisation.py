@@ -14,7 +14,7 @@ from scipy.optimize import brentq, linprog, minimize, minimize_scalar
 from laddermill_gym.atmosphere.site_wind import SiteWind
 from laddermill_gym.quasisteady import lansdorp
 from laddermill_gym.quasisteady.site_optimise import TABLE1, TABLE2, operate, optimise
-from laddermill_gym.quasisteady.site_problem import Design, _best_fill, solve_states
+from laddermill_gym.quasisteady.site_problem import Design, best_fill, solve_states
 
 RNG = np.random.default_rng(7)
 
@@ -33,7 +33,7 @@ def test_inner_problem_equal_power_matches_linprog(seed):
     RNG = np.random.default_rng(seed)
     p, k, t_lo, t_hi = _instance()
     target = 0.4 * np.sum(p * k * t_hi)
-    T = _best_fill(p, k, t_lo, t_hi, target, 0.0, "equal")
+    T = best_fill(p, k, t_lo, t_hi, target, 0.0, "equal")
     lp = linprog(p, A_eq=[p * k], b_eq=[target], bounds=list(zip(t_lo, t_hi, strict=True)), method="highs")
     assert np.sum(p * k * T) == pytest.approx(target, rel=1e-12)
     assert np.all(T >= t_lo - 1e-9) and np.all(T <= t_hi + 1e-9)
@@ -44,7 +44,7 @@ def test_inner_problem_equal_power_matches_linprog(seed):
 def test_inner_problem_at_least_matches_charnes_cooper_lp(c0):
     p, k, t_lo, t_hi = _instance()
     target = 0.2 * np.sum(p * k * t_hi)
-    T = _best_fill(p, k, t_lo, t_hi, target, c0, "at_least")
+    T = best_fill(p, k, t_lo, t_hi, target, c0, "at_least")
     ratio = np.sum(p * k * T) / (np.sum(p * T) + c0)
     # max (p k).y  s.t. p.y + c0 t = 1, (p k).y >= target t, t_lo t <= y <= t_hi t, t >= 0 (y = T t)
     n = p.size

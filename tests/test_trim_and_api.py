@@ -8,7 +8,7 @@ import control
 import numpy as np
 import pytest
 
-from laddermill_gym.kernels.rigid import reference as ref
+from laddermill_gym import reference as ref
 from laddermill_gym.ladder.scene import load_scene
 from laddermill_gym.model.states import planar_from_3d, planar_to_3d
 

@@ -186,9 +186,9 @@ def test_fade_in_scales_the_field_and_its_rate():
     reference (scipy interpolation) agrees."""
     from laddermill_gym.atmosphere.field import GustGrid, WindField
     from laddermill_gym.atmosphere.wind_kernels import gust_rate
-    from laddermill_gym.kernels.rigid.reference.wind import gust_rate as ref_rate
-    from laddermill_gym.kernels.rigid.reference.wind import gust_velocity
     from laddermill_gym.model.params import WindParams
+    from laddermill_gym.reference.wind import gust_rate as ref_rate
+    from laddermill_gym.reference.wind import gust_velocity
 
     tf = 10.0
     turb = Turbulence(model="NTM", heights=(0.0, 200.0), dh=20.0, along_wind=(-100.0, 100.0), fade_in=tf)

@@ -3,7 +3,7 @@
 Oracles: closed forms (a bilinear field is reproduced exactly by bilinear interpolation; a frozen field
 advected at U is the t = 0 field shifted by U t; the rate along a path is the derivative of the sampled wind,
 checked by central differences), and the plain-numpy reference right-hand side
-(kernels/rigid/reference, which interpolates the grid with scipy's RegularGridInterpolator) for the wings', the
+(reference, which interpolates the grid with scipy's RegularGridInterpolator) for the wings', the
 cable's and the alpha-rate term's use of the field.
 """
 
@@ -14,9 +14,9 @@ import math
 import numpy as np
 import pytest
 
+from laddermill_gym import reference as ref
 from laddermill_gym.atmosphere.field import GustGrid, WindField, pack_wind_field
 from laddermill_gym.atmosphere.wind_kernels import gust_at, wind_point, wind_point_rate
-from laddermill_gym.kernels.rigid import reference as ref
 from laddermill_gym.model.params import WindParams
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.simulator import Simulator

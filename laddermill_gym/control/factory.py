@@ -42,7 +42,9 @@ def _craft_controller(spec: str, kw: dict) -> Controller:
     from laddermill_gym.envs.rotorcraft import trim as rt
 
     if spec == "open_loop":
-        return rt.open_loop_controller(kw)
+        from laddermill_gym.control.open_loop import craft_open_loop_controller
+
+        return craft_open_loop_controller(kw)
     from laddermill_gym.control.craft_lqr import (
         DEFAULT_CRAFT_LQR,
         CraftLQRController,

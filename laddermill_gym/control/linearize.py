@@ -114,7 +114,7 @@ def _quaternions(euler: np.ndarray) -> np.ndarray:
                      c3 * s2 * c1 + s3 * c2 * s1, s3 * c2 * c1 - c3 * s2 * s1], axis=1)
 
 
-def _euler_from_quaternions(q: np.ndarray) -> np.ndarray:
+def euler_from_quaternions(q: np.ndarray) -> np.ndarray:
     """3-2-1 Euler angles (phi, theta, psi) of the (normalised) quaternions (n, 4) -> (n, 3)."""
     a, b, c, d = (q / np.linalg.norm(q, axis=1, keepdims=True)).T
     r32 = 2 * (c * d + a * b)
@@ -132,7 +132,7 @@ def minimal_from_full(asm: Assembly, x: np.ndarray) -> np.ndarray:
     x = np.asarray(x, dtype=float)
     nw, nn = asm.n_wings, asm.n_nodes
     w = x[: B3_SIZE * nw].reshape(nw, B3_SIZE)
-    euler = _euler_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
+    euler = euler_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
     R = _rotations(euler)
     z = np.empty((nw, _WM))
     z[:, 0:3] = w[:, B3_POS: B3_POS + 3]
@@ -187,7 +187,7 @@ def minimal_derivative(asm: Assembly, x: np.ndarray, dx: np.ndarray) -> np.ndarr
     nw, nn = asm.n_wings, asm.n_nodes
     w = x[: B3_SIZE * nw].reshape(nw, B3_SIZE)
     dw = dx[: B3_SIZE * nw].reshape(nw, B3_SIZE)
-    euler = _euler_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
+    euler = euler_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
     R = _rotations(euler)
     phi, theta = euler[:, 0], euler[:, 1]
     p, q, r = w[:, B3_RATE], w[:, B3_RATE + 1], w[:, B3_RATE + 2]
@@ -227,7 +227,7 @@ def minimal_rhs(sim: Simulator, rhs=None, tail: np.ndarray | None = None):
     return updfcn
 
 
-def _state_labels(asm: Assembly) -> list[str]:
+def state_labels(asm: Assembly) -> list[str]:
     labels = [f"wing{k}_{n}" for k in range(asm.n_wings) for n in WING_MINIMAL_NAMES]
     return labels + [f"node{j}_{n}" for j in range(asm.n_nodes) for n in NODE_MINIMAL_NAMES]
 
@@ -237,8 +237,8 @@ def minimal_system(sim: Simulator, name: str = "laddermill", tail: np.ndarray | 
     """``control.nlsys`` of the minimal-coordinate dynamics with labelled states and inputs; the outputs
     are the states (``tail``: see :func:`minimal_rhs`)."""
     asm = sim.assembly
-    return control.nlsys(minimal_rhs(sim, tail=tail), None, states=_state_labels(asm), inputs=sim.control_labels,
-                         outputs=_state_labels(asm), name=name)
+    return control.nlsys(minimal_rhs(sim, tail=tail), None, states=state_labels(asm), inputs=sim.control_labels,
+                         outputs=state_labels(asm), name=name)
 
 
 # ------------------------------------------------------------------------ linear models
@@ -296,7 +296,7 @@ def linearize(sim: Simulator, x0: np.ndarray, u0: np.ndarray, t: float = 0.0, ep
     lin = control.linearize(sys, z0, u0, t=t, eps=eps)
     residual = float(np.max(np.abs(sys.updfcn(t, z0, u0, {})))) if z0.size else 0.0
     return Linearization(A=np.asarray(lin.A), B=np.asarray(lin.B), z0=z0, u0=u0,
-                         x0=np.asarray(x0, dtype=float).copy(), state_names=tuple(_state_labels(asm)),
+                         x0=np.asarray(x0, dtype=float).copy(), state_names=tuple(state_labels(asm)),
                          input_names=tuple(sim.control_labels), n_wings=asm.n_wings, n_nodes=asm.n_nodes,
                          residual=residual)
 

@@ -41,7 +41,7 @@ from laddermill_gym.control.discrete_lqr import discrete_lqr
 from laddermill_gym.control.linearize import (
     LATERAL_INPUTS,
     WING_LATERAL,
-    _euler_from_quaternions,
+    euler_from_quaternions,
     full_from_minimal,
     lateral_indices,
     minimal_from_full,
@@ -220,7 +220,7 @@ def design_mill_lqr(config: LQRConfig, task, n_phases: int = 8, progress=None) -
     frozen, growth, phi = _period_check(models, _full_gain(np.asarray(gains)), config.control_period, n_steps)
     flow = float(np.max(np.abs(np.linalg.eigvals(phi))))
     monodromy = float(np.max(np.abs(np.linalg.eigvals(transfer_jacobian(sim, before) @ phi))))
-    euler = _euler_from_quaternions(states[0][: B3_SIZE * n].reshape(n, B3_SIZE)[:, B3_QUAT: B3_QUAT + 4])
+    euler = euler_from_quaternions(states[0][: B3_SIZE * n].reshape(n, B3_SIZE)[:, B3_QUAT: B3_QUAT + 4])
     return MillLQRDesign(config=config, A=A0, B=B0, gains=np.asarray(gains), phases=phases, frozen_radius=frozen,
                          open_loop_growth=growth, monodromy_radius=monodromy, flow_radius=flow,
                          trim_attitude=euler[:, [0, 2]], u_op=u)

@@ -41,3 +41,18 @@ class OpenLoopController:
         if single:
             return self.actions.copy(), state
         return np.tile(self.actions, (len(obs), 1)), state
+
+
+def craft_open_loop_controller(env_kwargs: dict | None = None):
+    """An :class:`OpenLoopController` holding the trim controls of the
+    environment with arguments ``env_kwargs`` (only ``craft`` and ``collective`` matter: the open-loop action
+    does not depend on the wind or the timing)."""
+    from laddermill_gym.envs.rotorcraft.observation import N_CRAFT_OBS
+    from laddermill_gym.envs.rotorcraft.trim import DEFAULT_CRAFT, control_ranges, craft_config, trim_controls
+
+    kw = dict(env_kwargs or {})
+    cfg = craft_config(str(kw.get("craft", DEFAULT_CRAFT)))
+    mid, half = control_ranges(cfg)
+    ctrl = OpenLoopController(trim_controls(cfg, kw.get("collective")), mid, half)
+    ctrl.obs_dim = N_CRAFT_OBS  # its default assumes the wing layout (15 entries per 3 actions)
+    return ctrl

@@ -25,7 +25,7 @@ from __future__ import annotations
 import numpy as np
 
 from laddermill_gym.control.base import OBS_NAMES, elements_below_wings, observe
-from laddermill_gym.control.linearize import _state_labels, full_from_minimal, minimal_derivative, minimal_from_full
+from laddermill_gym.control.linearize import full_from_minimal, minimal_derivative, minimal_from_full, state_labels
 from laddermill_gym.kernels.contract import TM_DT, TM_SIZE, TM_T0
 
 __all__ = ["DISTURBANCE_NAMES", "PARAMETER_NAMES", "plant_system", "with_steady_wind"]
@@ -103,7 +103,7 @@ def plant_system(scene, x0: np.ndarray, u0: np.ndarray, outputs: str = "observat
             sim.model = base_model
             sim.state, sim.t, sim.controls = saved
 
-    states = _state_labels(asm)
+    states = state_labels(asm)
     out_names = states if outputs == "states" else [f"wing{k}_{n}" for k in range(asm.n_wings) for n in OBS_NAMES]
     plant = control.nlsys(updfcn, outfcn, states=states, inputs=list(sim.control_labels) + list(DISTURBANCE_NAMES),
                           outputs=out_names, name=name, params={})

@@ -1,4 +1,5 @@
-"""Gymnasium environments of laddermill_gym.
+"""Gymnasium environments: tasks of B copies, single and native vector envs, the SB3 adapter; one sub-package per
+system beside the wing envs. Imports the systems, ``sim``, ``model``, ``kernels`` and ``atmosphere``, never ``control``.
 
 Registered on ``import laddermill_gym``:
 

@@ -24,8 +24,8 @@ from laddermill_gym.envs.physics_step import stable_physics_step
 from laddermill_gym.envs.task_settings import (  # noqa: F401
     RewardConfig,
     TerminationConfig,
-    _check_reference_power,
     check_nonnegative_fields,
+    check_reference_power,
     config_from,
 )
 from laddermill_gym.kernels.contract import B3_POS, B3_SIZE

@@ -21,7 +21,7 @@ def check_nonnegative_fields(obj, section: str, optional: tuple[str, ...] = ()) 
             raise ValueError(f"{section}.{f.name} = {v!r}: must be a finite number >= 0")
 
 
-def _check_reference_power(cfg) -> None:
+def check_reference_power(cfg) -> None:
     """``reward.reference_power_W`` is None (the operating point's power) or a fixed power > 0 [W]."""
     v = cfg.reference_power_W
     if v is not None and not v > 0:
@@ -71,7 +71,7 @@ class RewardConfig:
 
     def __post_init__(self):
         check_nonnegative_fields(self, "reward", optional=("lateral_scale", "reference_power_W"))
-        _check_reference_power(self)
+        check_reference_power(self)
         for name in ("rate_scale", "reel_speed_fraction"):
             if getattr(self, name) <= 0:
                 raise ValueError(f"reward.{name} = {getattr(self, name)!r}: must be > 0")

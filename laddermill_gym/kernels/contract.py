@@ -34,6 +34,9 @@ vehicle               body-loads plug-in (``kernels/dispatch.py``): ``WING`` for
                       rotorcraft's namedtuple for Roberts' craft
 ====================  ============================================================================
 
+The point-mass fidelity, the rotorcraft vehicle and the aerodynamic tables keep their slots here too (sections
+below), so this is the one module that names every packed slot, state offset and status code.
+
 The ``None``-or-array fields are compile-time switches: numba compiles one specialisation per combination of
 field types and prunes the switched-off code, so a part that is off costs nothing at run time.
 """
@@ -141,6 +144,132 @@ LIM_SPEED, LIM_RATE, LIM_GROUND, LIM_SIZE = 0, 1, 2, 3
 #: Element stiffness ``W.ke`` (symmetric 3 x 3, global axes, [N/m]): entries xx, yy, zz, xy, xz, yz.
 KE_XX, KE_YY, KE_ZZ, KE_XY, KE_XZ, KE_YZ, KE_SIZE = 0, 1, 2, 3, 4, 5, 6
 
+# ------------------------------------------------------------------------------------------- status codes
+#: Status of an integrator step or a post-step check (``kernels/integrate.py``, ``kernels/rigid/kinds.py``,
+#: ``kernels/rigid/rosenbrock.py``): success, singular block, non-finite state, speed or rate limit, ground
+#: contact, DP5(4)'s step collapsed, step budget spent.
+OK, SINGULAR, NONFINITE, LIMIT, GROUND, STALLED, BUDGET = 0, 1, 2, 3, 4, 5, 6
+
+# ------------------------------------------------------------------------------------------- aerodynamic tables
+#: Columns of a wing type's aerodynamic table ``ac[k, i, p, j]`` (the order of ``model.params.AERO_COLUMNS``).
+CL, CD, CM, CLQ, CLAD, CLDE, CMQ, CMAD, CMDE = 0, 1, 2, 3, 4, 5, 6, 7, 8
+CYB, CYP, CYR, CYDR, CLB, CLP, CLR, CLDA, CLDR = 9, 10, 11, 12, 13, 14, 15, 16, 17
+CNB, CNP, CNR, CNDA, CNDR = 18, 19, 20, 21, 22
+N_COLUMNS = 23
+
+# ------------------------------------------------------------------------------------------- point-mass fidelity
+#: The point-mass fidelity (Podgaets & Ockels 2007, ``kernels/pointmass/``): state layout, packed slots, the packed
+#: model and its workspace.
+#:
+#: The point-mass model keeps its own compact layout (the rigid ``KModel`` holds per-element tables that do not fit
+#: 500,000 elements in 40 MB). The string is a chain of ``n`` free nodes; element e joins node e - 1 (the start
+#: anchor for e = 0) to node e; with a fixed end the last element joins node n - 1 to the end anchor. Kites sit on
+#: nodes (``knode``). Every node has the 3D free-node layout above (``N3_POS``, ``N3_VEL``,
+#: ``N3_SIZE`` = 6 per node), so the state is (6 n,) float64.
+#:
+#: Packed model ``PMModel``:
+#:
+#: =========  ========================================================================================
+#: field      content
+#: =========  ========================================================================================
+#: wf, tmod,  the air, exactly as in ``KModel`` (``atmosphere/wind_kernels.wind_point``)
+#: ms, md,
+#: gp, gv
+#: par        scalars, slots ``PP_*``
+#: knode      node index of each kite (n_k,) int64, ascending
+#: kflag      1 where a node carries a kite (n,) uint8 (0.5 MB at 500,000 nodes; avoids a search per node)
+#: kt         kite type, slots ``KT_*`` (one type for every kite)
+#: kcl, kcd   the kite's lift and drag coefficients on the uniform alpha grid of ``KT_ALPHA0``, ``KT_DALPHA``
+#: =========  ========================================================================================
+#:
+#: Controls ``u``: commanded attitude of each kite, (n_k * PU_SIZE,) [rad]: roll, pitch, yaw (3-2-1 Euler angles,
+#: z down; Podgaets & Ockels 2007, eqs. 6-9).
+#:
+#: Scalars ``par``: gravity [m/s^2]; element unstretched length l0 [m]; cable mass per length mu [kg/m]; axial
+#: stiffness EA [N]; Voigt damping DA [N s]; diameter [m]; normal and tangential drag constants C_N0, C_T0 [-];
+#: number of free nodes [-]; end fixed (1) or free (0); start anchor (3) [m]; end anchor (3) [m]; ground height
+#: h_g [m] (-inf: no ground check); speed limit [m/s]; unstretched lengths of the first element (start anchor ->
+#: node 0) and of the element to the end anchor [m] and their rates [m/s] (l0 and 0 for a fixed string; the moving
+#: cable of ``kernels/pointmass/mill.py`` sets them from the cable moved at the station every step).
+PP_GRAVITY, PP_L0, PP_MU, PP_EA, PP_DA, PP_DIAM, PP_CN0, PP_CT0, PP_N, PP_END_FIXED = range(10)
+PP_ANCHOR, PP_END, PP_GROUND, PP_MAX_SPEED = 10, 13, 16, 17
+PP_L_FIRST, PP_L_LAST, PP_RATE_FIRST, PP_RATE_LAST, PP_SIZE = 18, 19, 20, 21, 22
+#: Kite type ``kt``: mass [kg]; wing area [m^2]; first alpha of the coefficient grid [rad]; its spacing [rad].
+KT_MASS, KT_AREA, KT_ALPHA0, KT_DALPHA, KT_SIZE = 0, 1, 2, 3, 4
+#: Controls of one kite: commanded roll, pitch, yaw [rad].
+PU_ROLL, PU_PITCH, PU_YAW, PU_SIZE = 0, 1, 2, 3
+
+#: Status codes of the point-mass kernels (the integrators' codes).
+PM_OK, PM_NONFINITE, PM_LIMIT, PM_GROUND = OK, NONFINITE, LIMIT, GROUND
+
+#: Symmetric 3x3 storage order.
+S_XX, S_YY, S_ZZ, S_XY, S_XZ, S_YZ, S_SIZE = 0, 1, 2, 3, 4, 5, 6
+
+#: Partitioned elimination's workspace (``kernels/pointmass/partitioned.py``).
+#: Columns of a checkpoint row (inverse pivot 6, spike 9), of a segment buffer row (inverse pivot 6, spike
+#: times the lower separator's load 3) and of a chunk's row of ``PMWork.mid``.
+CKPT_COLS, BUF_COLS, MID_COLS = 15, 9, 48
+#: ``PMWork.mid`` row c: chunk c's top inverse pivot and solution, bottom inverse pivot and solution, corner
+#: block q_top W_top (3x3, row-major); separator c's reduced inverse pivot, eliminated right-hand side, coupling
+#: L_c to separator c - 1 (3x3) and solution z_c.
+MID_TOP, MID_BOT, MID_GTB, MID_DINV, MID_GRED, MID_LBLK, MID_ZSEP = 0, 9, 18, 27, 33, 36, 45
+
+# ------------------------------------------------------------------------------------------- rotorcraft vehicle
+#: Blade parameters ``rp`` and the inflow solver's outputs and status (``rotorcraft/rotor_kernels.py``).
+P_SIGMA, P_A, P_DELTA, P_B, P_GAMMA = 0, 1, 2, 3, 4
+N_PARAMS = 5
+
+#: Outputs of solve_inflow (first five) and rotor_state (all).
+O_LAMBDA, O_NU, O_CT, O_ITER, O_STATUS = 0, 1, 2, 3, 4
+O_CH, O_CQ, O_A0, O_A1, O_B1, O_TIP_AOA, O_CP = 5, 6, 7, 8, 9, 10, 11
+N_OUT = 12
+
+#: Inflow solver status.
+STATUS_OK = 0
+STATUS_NO_BRACKET = 1   # no sign change of the residual found within the search
+STATUS_MAX_ITER = 2     # bracket found, but the tolerance was not met within max_iter refinements
+STATUS_NOT_FINITE = 3   # a non-finite input or residual
+
+#: Craft parameters ``cp``, per-rotor outputs and vehicle outputs (``rotorcraft/craft_kernels.py``).
+C_RADIUS, C_OMEGA, C_HUB_X, C_HUB_Y, C_HUB_Z = 0, 1, 2, 3, 4
+C_FIN_AREA, C_FIN_SLOPE, C_FIN_X, C_FIN_Z, C_DRAG_AREA = 5, 6, 7, 8, 9
+C_ETA, C_TOL, C_MAX_ITER = 10, 11, 12
+N_CP = 13
+
+#: Per-rotor outputs.
+R_THRUST, R_HFORCE, R_TORQUE, R_POWER, R_MU, R_LAMBDA, R_CT, R_TIP_AOA, R_STATUS, R_THETA = range(10)
+N_RO = 10
+#: Vehicle outputs ``cout`` (the workspace's ``vout``): body force (3), body moment (3), the rotors' blocks
+V_FORCE, V_MOMENT, V_ROTOR = 0, 3, 6
+N_COUT = V_ROTOR + 2 * N_RO
+
+#: Rows of the craft's batched observation (``rotorcraft/craft_observe.py``).
+CO_OFFSET = 0      # CG position minus the nominal position (3) [m]
+CO_VELOCITY = 3    # CG velocity, global (3) [m/s]
+CO_EULER = 6       # roll, pitch, yaw (3) [rad]
+CO_RATES = 9       # body rates p, q, r (3) [rad/s]
+CO_THRUST = 12     # thrust ratio per rotor (2) [-]
+CO_TENSION = 14    # tension ratio per tether (3) [-]
+CO_PITCH = 17      # blade collective pitch per rotor (2) [rad]
+N_CRAFT_OBS = 19
+
+#: Auxiliary row.
+CA_POWER = 0           # net electrical power [W] (eta P generating, P / eta driven; nan if an inflow failed)
+CA_MAX_TENSION = 1     # largest element tension [N]
+CA_MAX_ELEMENT = 2     # index of that element (a whole number)
+CA_ALTITUDE = 3        # CG altitude -z [m]
+CA_INFLOW_OK = 4       # 1.0 when both rotors' inflow converged, else 0.0
+CA_THRUST = 5          # rotor thrusts (2) [N]
+CA_TENSION = 7         # craft-end tether tensions (3) [N]
+CA_TIP_AOA = 10        # retreating-tip incidences (2) [rad]
+N_CRAFT_AUX = 12
+
+#: References ``ref``.
+REF_POSITION = 0   # nominal CG position (3) [m]
+REF_THRUST = 3     # trim thrust per rotor (2) [N]
+REF_TENSION = 5    # trim craft-end tension per tether (3) [N]
+REF_SIZE = 8
+
 # ------------------------------------------------------------------------------------------- records
 KModel = namedtuple(
     "KModel",
@@ -167,3 +296,12 @@ KWork = namedtuple(
      "k1", "k2", "k3", "k4", "k5", "k6", "k7", "xt", "xp", "Dm", "Um", "Ds", "Us", "Rn", "ke", "kb",
      "seg_tmod", "seg_ms", "seg_md", "Yw", "pivw"],
 )
+
+#: The packed model holds no kind marker: numba's prange lowering cannot pass a namedtuple nested in the model
+#: (``kernels.batch.detach_markers``), and the point-mass kernels are called directly (``sim/pointmass.py``).
+PMModel = namedtuple("PMModel", ["wf", "tmod", "ms", "md", "gp", "gv", "par", "knode", "kflag", "kt",
+                                 "kcl", "kcd"])
+#: Workspace: element tension [N] (n_e,); for the partitioned block elimination (``kernels/pointmass/partitioned.py``)
+#: checkpoints (rows, 15: inverse pivot 6, spike 9), one segment's buffer per chunk (P_max, seg, 9) and the chunks'
+#: and separators' data (P_max, 48) (``model/pointmass.make_work``).
+PMWork = namedtuple("PMWork", ["tension", "ckpt", "seg", "mid"])

@@ -10,8 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.kernels.contract import N3_POS, N3_SIZE
-from laddermill_gym.kernels.pointmass.layout import PU_SIZE
+from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, PU_SIZE
 
 
 def rigid_static(pm_scene):

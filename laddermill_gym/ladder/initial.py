@@ -8,7 +8,7 @@ import dataclasses
 import numpy as np
 
 from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_SIZE, CTRL_ELEVATOR, N3_POS, N3_SIZE
-from laddermill_gym.ladder.layout import _layout, layout, piece_nodes  # noqa: F401 (layout: studies/benchmark.py)
+from laddermill_gym.ladder.layout import piece_nodes, rest_layout
 from laddermill_gym.model.builders import build_chain, chain_state
 from laddermill_gym.model.params import N_CONTROLS
 from laddermill_gym.model.states import euler_from_quaternion, planar_from_3d, planar_to_3d, rotation_from_euler
@@ -65,7 +65,7 @@ def initial_state(scene) -> tuple[np.ndarray, np.ndarray]:
     elev = [ini.elevator_up if k < half else ini.elevator_down for k in range(n)]
     controls = np.zeros(N_CONTROLS * n)
     controls[CTRL_ELEVATOR::N_CONTROLS] = elev
-    attach, alphas, tensions = _layout(scene, elev)
+    attach, alphas, tensions = rest_layout(scene, elev)
     euler = np.array([[0.0, al, 0.0] for al in alphas])
     # wing at rest in horizontal wind: pitch angle = angle of attack; CG = attachment - R r_att
     pos = np.array([attach[k] - rotation_from_euler(*euler[k]) @ a.wing(k).attachment for k in range(n)])

@@ -80,7 +80,7 @@ def _march(A, L, EA, T0, forces, w=0.0):
     return np.stack(pts, -2), p
 
 
-def _layout(scene, elevators):
+def rest_layout(scene, elevators):
     """Cable attachment points (n, 3) [m] and pitch angles (n,) [rad] of the wings of a chain at rest:
     straight massless pieces stretched by T / EA, each wing in force and moment balance at rest at its
     local dynamic pressure. A free upper end: each piece points along the sum of the forces above it;
@@ -151,8 +151,8 @@ def _layout(scene, elevators):
 
 def layout(scene, elevators):
     """Cable attachment points (n, 3) [m] and pitch angles (n,) [rad] of the wings of a chain at rest (see
-    :func:`_layout`)."""
-    pts, alphas, _ = _layout(scene, elevators)
+    :func:`rest_layout`)."""
+    pts, alphas, _ = rest_layout(scene, elevators)
     return pts, alphas
 
 

@@ -16,8 +16,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL
-from laddermill_gym.kernels.pointmass.layout import PU_SIZE
+from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL, PU_SIZE
 from laddermill_gym.sim.pointmass import PointMassError
 
 
@@ -153,7 +152,7 @@ def run_pointmass_periodic(sim, shape_tol: float = 1e-3, power_tol: float = 1e-3
 
 
 @lru_cache(maxsize=4)
-def _rigid_periodic(file: str, n_wings: int):
+def rigid_periodic(file: str, n_wings: int):
     """The rigid mill's periodic start of a scene file (``ladder/periodic.periodic_start``; about 30 s, once per
     process): (rigid simulator at that state, its time [s], PeriodicResult)."""
     from laddermill_gym.ladder.periodic import periodic_start
@@ -173,7 +172,7 @@ def periodic_mill_start(pm_scene):
     from laddermill_gym.kernels.contract import SX_MOVED
     from laddermill_gym.model.pointmass_mill import station_state
 
-    sim, t0, res = _rigid_periodic(str(pm_scene.file), pm_scene.string.n_kites)
+    sim, t0, res = rigid_periodic(str(pm_scene.file), pm_scene.string.n_kites)
     a = sim.assembly
     att = np.array([a.wing(k).attachment for k in range(a.n_wings)])
     rot = sim.wing_rotations()

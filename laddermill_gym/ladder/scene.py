@@ -268,6 +268,55 @@ def _merged(data: dict, overrides, where: str) -> dict:
     return out
 
 
+def _parts(s: Section, path: Path):
+    """The wing type and the cable the scene names; ConfigError naming the scene file and field (not only the
+    missing file) when one is not found."""
+    parts = {}
+    for key, kind in (("wing_type", "wings"), ("cable", "cables")):
+        value = s.text(key)
+        parts[key] = config_path(kind, value, path.parent)
+        if not parts[key].is_file():
+            shown = parts[key] if parts[key].is_absolute() else path.parent / parts[key]
+            raise s.error(key, value, f"no such file {shown} (a path is relative to the scene's folder, a bare "
+                                      f"name is {CONFIG_DIR / kind}/NAME.yaml, 'package:{kind}/FILE' the shipped data)")
+    return load_wing_type(parts["wing_type"]), load_cable(parts["cable"])
+
+
+def _chain(s: Section):
+    """The ground points {name: (3,) [m]}, the chain's start and end point names, wings, piece length [m],
+    elements per piece and the ground station (None: a fixed cable)."""
+    gp = s.section("ground_points")
+    points = {k: gp.vector(k, 3) for k in list(gp.data)}
+    gp.done()
+    ch = s.section("chain")
+    start = ch.text("start")
+    end = ch.text("end", None)
+    nw = ch.number("n_wings", integer=True, positive=True)
+    piece = ch.number("piece_length", positive=True)
+    epp = ch.number("elements_per_piece", integer=True, positive=True)
+    ch.done()
+    for key, pname in (("start", start), ("end", end)):
+        if pname is not None and pname not in points:
+            raise ch.error(key, pname, f"is not one of the ground points {sorted(points)}")
+    station = read_station(s.section("station"), piece) if s.has("station") else None
+    if station is not None and (end is None or epp != 1):
+        raise ch.error("elements_per_piece" if end is not None else "end", epp if end is not None else end,
+                       "a moving cable (station) needs two ground points (start and end) and one element per "
+                       "piece (Meijaard's boundary conditions)")
+    return points, start, end, nw, piece, epp, station
+
+
+def _initial(ini: Section) -> InitialSpec:
+    """The ``initial`` section (angles in the file in degrees, here in rad)."""
+    spec = InitialSpec(method=ini.text("method", choices=("trim", "static")),
+                       alpha=math.radians(ini.number("alpha_deg", 8.0)),
+                       elevation=math.radians(ini.number("elevation_deg", 45.0)),
+                       elevator_up=math.radians(ini.number("elevator_up_deg", 0.0)),
+                       elevator_down=math.radians(ini.number("elevator_down_deg", 0.0)))
+    ini.done()
+    return spec
+
+
 def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: bool | None = None,
                cable_aero: bool | None = None, elements_per_piece: int | None = None,
                n_wings: int | None = None, dt: float | None = None, method: str | None = None,
@@ -303,47 +352,15 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
     dim = s.number("dimension", integer=True)
     gravity = s.number("gravity", positive=True)
     wind = read_wind(s.section("wind"))
-    parts = {}
-    for key, kind in (("wing_type", "wings"), ("cable", "cables")):
-        value = s.text(key)
-        parts[key] = config_path(kind, value, path.parent)
-        if not parts[key].is_file():  # name the scene file and its field, not only the missing file
-            shown = parts[key] if parts[key].is_absolute() else path.parent / parts[key]
-            raise s.error(key, value, f"no such file {shown} (a path is relative to the scene's folder, a bare "
-                                      f"name is {CONFIG_DIR / kind}/NAME.yaml, 'package:{kind}/FILE' the shipped data)")
-    wing_type = load_wing_type(parts["wing_type"])
-    cable = load_cable(parts["cable"])
-    gp = s.section("ground_points")
-    points = {k: gp.vector(k, 3) for k in list(gp.data)}
-    gp.done()
-    ch = s.section("chain")
-    start = ch.text("start")
-    end = ch.text("end", None)
-    nw = ch.number("n_wings", integer=True, positive=True)
-    piece = ch.number("piece_length", positive=True)
-    epp = ch.number("elements_per_piece", integer=True, positive=True)
-    ch.done()
-    for key, pname in (("start", start), ("end", end)):
-        if pname is not None and pname not in points:
-            raise ch.error(key, pname, f"is not one of the ground points {sorted(points)}")
-    station = read_station(s.section("station"), piece) if s.has("station") else None
-    if station is not None and (end is None or epp != 1):
-        raise ch.error("elements_per_piece" if end is not None else "end", epp if end is not None else end,
-                       "a moving cable (station) needs two ground points (start and end) and one element per "
-                       "piece (Meijaard's boundary conditions)")
+    wing_type, cable = _parts(s, path)
+    points, start, end, nw, piece, epp, station = _chain(s)
     fid = s.section("fidelity")
     fid.text("wing", "rigid", choices=FIDELITIES)
     fid.raw("element_length", None)  # the point-mass string's resolution, unused by the rigid model
     sag_on = fid.flag("sag")
     caero_on = fid.flag("cable_aero")
     fid.done()
-    ini = s.section("initial")
-    init = InitialSpec(method=ini.text("method", choices=("trim", "static")),
-                       alpha=math.radians(ini.number("alpha_deg", 8.0)),
-                       elevation=math.radians(ini.number("elevation_deg", 45.0)),
-                       elevator_up=math.radians(ini.number("elevator_up_deg", 0.0)),
-                       elevator_down=math.radians(ini.number("elevator_down_deg", 0.0)))
-    ini.done()
+    init = _initial(s.section("initial"))
     settings = read_integrator(s.section("integrator"))
     s.done()
     # overrides

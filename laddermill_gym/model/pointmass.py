@@ -11,10 +11,9 @@ import numba
 import numpy as np
 
 from laddermill_gym.atmosphere.field import pack_wind_field
-from laddermill_gym.kernels.contract import N3_SIZE
-from laddermill_gym.kernels.pointmass import layout as P
+from laddermill_gym.kernels import contract as P
+from laddermill_gym.kernels.contract import N3_SIZE, PMModel, PMWork
 from laddermill_gym.kernels.pointmass import partitioned as PT
-from laddermill_gym.kernels.pointmass.layout import PMModel, PMWork
 from laddermill_gym.model.builders import CableSpec
 from laddermill_gym.model.packing import wind_fields
 from laddermill_gym.model.params import AERO_INDEX, WindParams, WingType
@@ -85,7 +84,7 @@ class PointMassString:
 
 
 def pack(s: PointMassString) -> PMModel:
-    """The packed model (``kernels/pointmass/layout.py``)."""
+    """The packed model (``kernels/contract.py``, point-mass section)."""
     c = s.cable
     par = np.zeros(P.PP_SIZE)
     par[P.PP_GRAVITY], par[P.PP_L0], par[P.PP_MU] = s.gravity, s.element_length, c.mass_per_length
@@ -127,8 +126,8 @@ def make_work(s: PointMassString, segment: int = SOLVER_SEGMENT, parts: int | No
     parts = max(2, int(parts))
     seg = max(1, min(int(segment), s.n_nodes, max(64, math.isqrt(s.n_nodes))))
     rows = (s.n_nodes + seg - 1) // seg + parts + 1
-    return PMWork(tension=np.zeros(s.n_elements), ckpt=np.zeros((rows, PT.CKPT_COLS)),
-                  seg=np.zeros((parts, seg, PT.BUF_COLS)), mid=np.zeros((parts, PT.MID_COLS)))
+    return PMWork(tension=np.zeros(s.n_elements), ckpt=np.zeros((rows, P.CKPT_COLS)),
+                  seg=np.zeros((parts, seg, P.BUF_COLS)), mid=np.zeros((parts, P.MID_COLS)))
 
 
 def held_bytes(M: PMModel, W: PMWork, x: np.ndarray, u: np.ndarray) -> dict[str, int]:

@@ -110,7 +110,7 @@ def tension_table(case: SiteCase, design: Design, n: int = 1201):
     return cl, g
 
 
-def _best_fill(p, k, t_lo, t_hi, target, c0, mode):
+def best_fill(p, k, t_lo, t_hi, target, c0, mode):
     """Tensions maximising sum(p k T) / (sum(p T) + c0) over t_lo <= T <= t_hi with sum(p k T) = target ('equal')
     or >= target ('at_least'). Greedy in decreasing k; returns T (n,)."""
     order = np.argsort(-k, kind="stable")
@@ -157,7 +157,7 @@ def solve_states(case: SiteCase, design: Design, wind: np.ndarray, weight: np.nd
     parked = t_lo > f_max                                  # even C_L = 0 overloads the cable: the kite is landed
     t_lo, t_hi = np.where(parked, 0.0, t_lo), np.where(parked, 0.0, t_hi)
     c0 = case.k1 * design.S if case.cost == "eq16" else 0.0
-    T = _best_fill(weight, k, t_lo, t_hi, case.power_target, c0, case.power_mode)
+    T = best_fill(weight, k, t_lo, t_hi, case.power_target, c0, case.power_mode)
     with np.errstate(divide="ignore", invalid="ignore"):
         cl = np.where(c > 0, np.interp(T / np.where(c > 0, c, 1.0), g_tab, cl_tab), 0.0)
     P = k * T

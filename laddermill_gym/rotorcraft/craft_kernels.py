@@ -25,7 +25,41 @@ from collections import namedtuple
 from numba import njit
 
 from laddermill_gym.atmosphere.wind_kernels import density, wind_point
-from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_SIZE, B3_VEL
+from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
+    B3_POS,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
+    C_DRAG_AREA,
+    C_ETA,
+    C_FIN_AREA,
+    C_FIN_SLOPE,
+    C_FIN_X,
+    C_FIN_Z,
+    C_HUB_X,
+    C_HUB_Y,
+    C_HUB_Z,
+    C_MAX_ITER,
+    C_OMEGA,
+    C_RADIUS,
+    C_TOL,
+    N_COUT,
+    N_CP,
+    N_RO,
+    R_CT,
+    R_HFORCE,
+    R_LAMBDA,
+    R_MU,
+    R_POWER,
+    R_STATUS,
+    R_THETA,
+    R_THRUST,
+    R_TIP_AOA,
+    R_TORQUE,
+    V_FORCE,
+    V_MOMENT,
+    V_ROTOR,
+)
 from laddermill_gym.kernels.dispatch import register_vehicle
 from laddermill_gym.rotorcraft.rotor_kernels import (
     O_CT,
@@ -45,19 +79,6 @@ from laddermill_gym.rotorcraft.rotor_kernels import (
     tip_incidence,
     torque_coefficient,
 )
-
-# craft parameters
-C_RADIUS, C_OMEGA, C_HUB_X, C_HUB_Y, C_HUB_Z = 0, 1, 2, 3, 4
-C_FIN_AREA, C_FIN_SLOPE, C_FIN_X, C_FIN_Z, C_DRAG_AREA = 5, 6, 7, 8, 9
-C_ETA, C_TOL, C_MAX_ITER = 10, 11, 12
-N_CP = 13
-
-# per-rotor outputs
-R_THRUST, R_HFORCE, R_TORQUE, R_POWER, R_MU, R_LAMBDA, R_CT, R_TIP_AOA, R_STATUS, R_THETA = range(10)
-N_RO = 10
-# vehicle outputs ``cout`` (the workspace's ``vout``): body force (3), body moment (3), the rotors' blocks
-V_FORCE, V_MOMENT, V_ROTOR = 0, 3, 6
-N_COUT = V_ROTOR + 2 * N_RO
 
 #: spin sense of the rotors about body -z (right rotor +1, left rotor -1: contra-rotating)
 SPIN = (1.0, -1.0)

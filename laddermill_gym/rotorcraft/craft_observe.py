@@ -19,7 +19,33 @@ import math
 from numba import njit, prange
 
 from laddermill_gym.kernels.batch import copy_views
-from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_SIZE, B3_VEL
+from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
+    B3_POS,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
+    CA_ALTITUDE,
+    CA_INFLOW_OK,
+    CA_MAX_ELEMENT,
+    CA_MAX_TENSION,
+    CA_POWER,
+    CA_TENSION,
+    CA_THRUST,
+    CA_TIP_AOA,
+    CO_EULER,
+    CO_OFFSET,
+    CO_PITCH,
+    CO_RATES,
+    CO_TENSION,
+    CO_THRUST,
+    CO_VELOCITY,
+    N_CRAFT_AUX,
+    N_CRAFT_OBS,
+    REF_POSITION,
+    REF_SIZE,
+    REF_TENSION,
+    REF_THRUST,
+)
 from laddermill_gym.kernels.fixed_steps import advance_breaks
 from laddermill_gym.kernels.integrate import OK, SINGULAR, rhs
 from laddermill_gym.rotorcraft.craft_kernels import (
@@ -39,32 +65,6 @@ CRAFT_BODY = 0
 #: Rotors and tethers of the craft.
 N_ROTORS, N_TETHERS = 2, 3
 
-# observation row
-CO_OFFSET = 0      # CG position minus the nominal position (3) [m]
-CO_VELOCITY = 3    # CG velocity, global (3) [m/s]
-CO_EULER = 6       # roll, pitch, yaw (3) [rad]
-CO_RATES = 9       # body rates p, q, r (3) [rad/s]
-CO_THRUST = 12     # thrust ratio per rotor (2) [-]
-CO_TENSION = 14    # tension ratio per tether (3) [-]
-CO_PITCH = 17      # blade collective pitch per rotor (2) [rad]
-N_CRAFT_OBS = 19
-
-# auxiliary row
-CA_POWER = 0           # net electrical power [W] (eta P generating, P / eta driven; nan if an inflow failed)
-CA_MAX_TENSION = 1     # largest element tension [N]
-CA_MAX_ELEMENT = 2     # index of that element (a whole number)
-CA_ALTITUDE = 3        # CG altitude -z [m]
-CA_INFLOW_OK = 4       # 1.0 when both rotors' inflow converged, else 0.0
-CA_THRUST = 5          # rotor thrusts (2) [N]
-CA_TENSION = 7         # craft-end tether tensions (3) [N]
-CA_TIP_AOA = 10        # retreating-tip incidences (2) [rad]
-N_CRAFT_AUX = 12
-
-# references ``ref``
-REF_POSITION = 0   # nominal CG position (3) [m]
-REF_THRUST = 3     # trim thrust per rotor (2) [N]
-REF_TENSION = 5    # trim craft-end tension per tether (3) [N]
-REF_SIZE = 8
 
 
 @njit(cache=True, error_model="numpy")

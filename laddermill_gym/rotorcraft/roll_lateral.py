@@ -226,7 +226,7 @@ def lateral_state(x: np.ndarray, x_trim: np.ndarray) -> np.ndarray:
     return np.array([x[B3_POS + 1] - x_trim[B3_POS + 1], eu[0], vy, x[B3_RATE]])
 
 
-def _perturbed(x: np.ndarray, dy: float, dphi: float, dvy: float, dp: float) -> np.ndarray:
+def perturbed_state(x: np.ndarray, dy: float, dphi: float, dvy: float, dp: float) -> np.ndarray:
     """State x with the craft moved by dy (global y) [m], rolled by dphi about its body x axis [rad], given a
     global lateral velocity dvy [m/s] and a roll rate dp [rad/s]."""
     z = x.copy()
@@ -262,8 +262,8 @@ def restricted_jacobian(sim, x: np.ndarray | None = None, u: np.ndarray | None =
     for k in range(4):
         d = np.zeros(4)
         d[k] = h
-        cols.append((_lateral_accelerations(sim, _perturbed(x, *d), u)
-                     - _lateral_accelerations(sim, _perturbed(x, *(-d)), u)) / (2 * h))
+        cols.append((_lateral_accelerations(sim, perturbed_state(x, *d), u)
+                     - _lateral_accelerations(sim, perturbed_state(x, *(-d)), u)) / (2 * h))
     J = np.array(cols).T
     du = np.array([0.0, h])
     Bn = (_lateral_accelerations(sim, x, u + du) - _lateral_accelerations(sim, x, u - du)) / (2 * h)

@@ -20,20 +20,31 @@ import math
 
 from numba import njit
 
-# packed parameters
-P_SIGMA, P_A, P_DELTA, P_B, P_GAMMA = 0, 1, 2, 3, 4
-N_PARAMS = 5
-
-# outputs of solve_inflow (first five) and rotor_state (all)
-O_LAMBDA, O_NU, O_CT, O_ITER, O_STATUS = 0, 1, 2, 3, 4
-O_CH, O_CQ, O_A0, O_A1, O_B1, O_TIP_AOA, O_CP = 5, 6, 7, 8, 9, 10, 11
-N_OUT = 12
-
-# inflow solver status
-STATUS_OK = 0
-STATUS_NO_BRACKET = 1   # no sign change of the residual found within the search
-STATUS_MAX_ITER = 2     # bracket found, but the tolerance was not met within max_iter refinements
-STATUS_NOT_FINITE = 3   # a non-finite input or residual
+from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
+    N_OUT,
+    N_PARAMS,
+    O_A0,
+    O_A1,
+    O_B1,
+    O_CH,
+    O_CP,
+    O_CQ,
+    O_CT,
+    O_ITER,
+    O_LAMBDA,
+    O_NU,
+    O_STATUS,
+    O_TIP_AOA,
+    P_A,
+    P_B,
+    P_DELTA,
+    P_GAMMA,
+    P_SIGMA,
+    STATUS_MAX_ITER,
+    STATUS_NO_BRACKET,
+    STATUS_NOT_FINITE,
+    STATUS_OK,
+)
 
 
 @njit(cache=True)

@@ -13,10 +13,9 @@ import numba
 import numpy as np
 from tqdm import tqdm
 
-from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL
+from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL, PM_OK, PP_DA, PP_EA, PP_L0, PP_MU
 from laddermill_gym.kernels.pointmass.explicit import CHUNK, explicit_advance, tensions
 from laddermill_gym.kernels.pointmass.implicit import implicit_advance
-from laddermill_gym.kernels.pointmass.layout import PM_OK, PP_DA, PP_EA, PP_L0, PP_MU
 from laddermill_gym.model.pointmass import PointMassString, held_bytes, make_work, pack
 
 METHODS = ("explicit", "implicit")

@@ -5,8 +5,17 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.kernels.contract import SX_ENERGY, SX_MOVED, SX_SPEED, SX_TRANSFERS
-from laddermill_gym.kernels.pointmass.layout import PP_L0, PP_L_FIRST, PP_L_LAST, PP_MU, PP_N
+from laddermill_gym.kernels.contract import (
+    PP_L0,
+    PP_L_FIRST,
+    PP_L_LAST,
+    PP_MU,
+    PP_N,
+    SX_ENERGY,
+    SX_MOVED,
+    SX_SPEED,
+    SX_TRANSFERS,
+)
 from laddermill_gym.kernels.pointmass.mill import (
     MX_KITE_TRANSFERS,
     MX_SIZE,

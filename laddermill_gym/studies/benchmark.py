@@ -85,7 +85,7 @@ def time_step(sim: Simulator, n: int, repeats: int) -> float:
 
 def time_reference(sim: Simulator, repeats: int) -> float:
     """Median wall time of one right-hand side of the plain-numpy reference [s]."""
-    from laddermill_gym.kernels.rigid.reference import reference_rhs
+    from laddermill_gym.reference import reference_rhs
 
     x = sim.state.copy()
     reference_rhs(0.0, x, sim.controls, sim.assembly)
@@ -173,7 +173,7 @@ def startup_times(scene_name: str) -> dict:
 
 def _layout_state(scene):
     """The shooting layout (no Newton): a representative state for timing long chains."""
-    from laddermill_gym.ladder.initial import layout
+    from laddermill_gym.ladder.layout import layout
     from laddermill_gym.model.builders import chain_state
 
     a = scene.assembly

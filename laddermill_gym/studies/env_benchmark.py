@@ -70,7 +70,7 @@ def run_env_benchmark(quick: bool = False, json_path: str | None = None, echo=pr
     res["tethered_wing"] = bench_vector("laddermill_gym/TetheredWing-v0", quick=quick, echo=echo)
     echo("laddermill_gym/LadderChain-v0 (101 wings, 20 Hz control):")
     res["ladder_chain"] = bench_vector("laddermill_gym/LadderChain-v0", counts=(1, 8), quick=True, echo=echo)
-    echo("laddermill_gym/Rotorcraft-v0 (25 RK4 steps of 2 ms per 20 Hz control period):")
+    echo("laddermill_gym/Rotorcraft-v0 (one ROS34PW2 step of 50 ms per 20 Hz control period):")
     res["rotorcraft"] = bench_vector("laddermill_gym/Rotorcraft-v0", counts=(1, 16, 64), quick=quick, echo=echo,
                                      budget=5e4)
     echo("laddermill_gym/LadderMill-v0 (101 wings on the moving cable, 20 Hz control):")

@@ -17,7 +17,7 @@ import time
 
 import numpy as np
 
-from laddermill_gym.ladder.pointmass_mill import _rigid_periodic, mill_simulator, run_pointmass_periodic
+from laddermill_gym.ladder.pointmass_mill import mill_simulator, rigid_periodic, run_pointmass_periodic
 from laddermill_gym.ladder.scene import load_scene
 
 
@@ -44,7 +44,7 @@ def main(argv=None) -> None:
     ap.add_argument("--max-time", type=float, default=3000.0, help="longest periodic search [s]")
     a = ap.parse_args(argv)
     sc = load_scene("laddermill")
-    _, t_rigid, rigid = _rigid_periodic(str(sc.file), sc.assembly.n_wings)
+    _, t_rigid, rigid = rigid_periodic(str(sc.file), sc.assembly.n_wings)
     k = int(np.argmin(rigid.tension_mean_N))
     print(f"rigid (one element per piece, RK4 dt {sc.settings.dt} s): periodic at t = {rigid.t_s:.0f} s, mean power "
           f"{rigid.mean_power_W / 1e3:.1f} kW, first element {rigid.tension_mean_N[0] / 1e3:.1f} kN, last "

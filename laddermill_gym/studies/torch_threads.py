@@ -35,10 +35,11 @@ def build_model(config: Path):
     import stable_baselines3 as sb3
     from stable_baselines3.common.vec_env import VecMonitor, VecNormalize
 
-    from laddermill_gym.harness.train import training_env
+    from laddermill_gym.envs.sb3 import sb3_vec_env
 
     cfg = load_rl_config(config)
-    venv = VecMonitor(training_env(cfg))
+    # the training env of ``laddermill train`` (harness.train.training_env; the harness sits above the studies)
+    venv = VecMonitor(sb3_vec_env(cfg.env_id, cfg.n_envs, seed=cfg.seed, **cfg.train_env_kwargs()))
     if cfg.normalize_observations:
         venv = VecNormalize(venv, norm_obs=True, norm_reward=False, clip_obs=10.0)
     algo = getattr(sb3, cfg.algorithm)

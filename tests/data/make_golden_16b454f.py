@@ -27,7 +27,7 @@ s0 = sc.simulator()
 sim = Simulator(asm, s0.initial_state, sc.settings, s0.initial_controls)
 u = sim.controls.copy(); u[1] = 0.01; u[2] = -0.005
 run("tethered_wing", sim, [200, 200, 200], u)
-# tethered wing, no sag, no cable aero, 4 elements
+# tethered wing, no sag, no cable aero, one element per piece
 sim = load_scene("tethered_wing", sag=False, cable_aero=False, elements_per_piece=1).simulator()
 run("tethered_wing_plain", sim, [100, 100])
 # tethered wing in-plane

@@ -24,6 +24,7 @@ from laddermill_gym.envs.laddermill.observation import (
     N_OBS_PER_SLOT,
     N_STATION_OBS,
     OBS_INDEX,
+    STATION_OBS_INDEX,
     mill_observation_bounds,
 )
 from laddermill_gym.envs.laddermill.operating_point import (
@@ -253,8 +254,10 @@ class MillTask:
             self.mechanical_power[:] = dten * self.cable_speed
         self.power[:] = st.efficiency * self.mechanical_power
         station = self.raw_obs[:, N_OBS_PER_SLOT * n:]
-        station[:, 0], station[:, 1] = self.cable_speed, moved / st.piece_length
-        station[:, 2], station[:, 3] = dten, self.power / self.p_ref
+        station[:, STATION_OBS_INDEX["cable_speed"]] = self.cable_speed
+        station[:, STATION_OBS_INDEX["cable_phase"]] = moved / st.piece_length
+        station[:, STATION_OBS_INDEX["tension_difference"]] = dten
+        station[:, STATION_OBS_INDEX["power_ratio"]] = self.power / self.p_ref
         raw, lo, hi = self.raw_obs, self.obs_low, self.obs_high
         np.clip(np.where(np.isfinite(raw), raw, np.where(raw < 0, lo, hi)), lo, hi, out=self.obs)
 

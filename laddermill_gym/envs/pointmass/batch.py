@@ -57,7 +57,7 @@ def pointmass_start(scene: str, options: tuple, settle_time: float) -> tuple[Poi
 
 class PointMassBatch:
     """B copies of a point-mass scene: ``states`` (B, 6 n), ``controls`` (B, 3 n_k) [rad], ``t`` (B,) [s],
-    ``status`` (B,) the last kernel status (``kernels/pointmass/layout.py`` PM_*), ``tension`` (B, n_e) [N] the
+    ``status`` (B,) the last kernel status (``kernels/contract.py`` PM_*), ``tension`` (B, n_e) [N] the
     element tensions (Voigt damping included) at the current states (after :meth:`update_tensions`), and one
     packed model per copy (``models``, the scene's string with that copy's air) and workspace (``works``)."""
 

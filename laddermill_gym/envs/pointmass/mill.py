@@ -18,9 +18,8 @@ import numba
 import numpy as np
 
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
-from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL, SX_SPEED
+from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL, PU_SIZE, SX_SPEED
 from laddermill_gym.kernels.pointmass.explicit import CHUNK
-from laddermill_gym.kernels.pointmass.layout import PU_SIZE
 from laddermill_gym.ladder.pointmass_scene import PointMassScene
 from laddermill_gym.ladder.scene import load_scene
 from laddermill_gym.sim.pointmass_mill import PointMassMillSimulator

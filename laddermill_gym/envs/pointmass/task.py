@@ -21,7 +21,7 @@ from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.pointmass.batch import POINTMASS_FAILURES, PointMassBatch, pointmass_start
 from laddermill_gym.envs.pointmass.mill import PointMassMillBatch, mill_task_start
 from laddermill_gym.envs.task import RewardConfig, config_from
-from laddermill_gym.kernels.pointmass.layout import PM_GROUND, PM_OK, PU_PITCH, PU_ROLL, PU_SIZE
+from laddermill_gym.kernels.contract import PM_GROUND, PM_OK, PU_PITCH, PU_ROLL, PU_SIZE
 from laddermill_gym.ladder.scene import load_scene
 from laddermill_gym.sim.pointmass import STATUS_TEXT
 

@@ -32,7 +32,7 @@ from laddermill_gym.envs.pumping.settings import (
 )
 from laddermill_gym.envs.pumping.winch_scene import PumpingScene, WinchSimulator, electrical_energy, load_pumping
 from laddermill_gym.envs.task import config_from
-from laddermill_gym.kernels.contract import B3_RATE, B3_VEL, SX_ENERGY, SX_MOVED, SX_SPEED
+from laddermill_gym.kernels.contract import B3_QUAT, B3_RATE, B3_VEL, SX_ENERGY, SX_MOVED, SX_SPEED
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_START,
     N_AUX,
@@ -140,7 +140,7 @@ class PumpingTask:
         self.breaking_tension = tc.breaking_factor * sc.cable.breaking_load
         self.alpha_lo, self.alpha_hi = np.radians(tc.alpha_range_deg)
         self.beta_max = math.radians(tc.max_abs_beta_deg)
-        self._rotation0 = rotations_from_quaternions(x0[3:7].reshape(1, 4))[0]
+        self._rotation0 = rotations_from_quaternions(x0[B3_QUAT: B3_QUAT + 4].reshape(1, 4))[0]
         self.batch.states[:] = x0
         self.batch.controls[:] = u0
 

@@ -32,13 +32,13 @@ from laddermill_gym.envs.rotorcraft.observation import (
 )
 from laddermill_gym.envs.rotorcraft.settings import InitialNoise, RotorcraftRewardConfig, RotorcraftTerminationConfig
 from laddermill_gym.envs.rotorcraft.task import CRAFT_FAILURES, CraftTask
-from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim, open_loop_controller, trim_action
+from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim, trim_action
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
 from laddermill_gym.rotorcraft.craft import CraftSimulator
 
 __all__ = ["RotorcraftEnv", "RotorcraftRewardConfig", "RotorcraftTerminationConfig", "InitialNoise",
            "CRAFT_OBS_FIELDS", "CRAFT_OBS_INDEX", "CRAFT_FAILURES", "N_CRAFT_OBS", "OBS_Y", "OBS_PHI", "OBS_VY",
-           "OBS_P", "OBS_PSI", "OBS_R", "craft_trim", "trim_action", "open_loop_controller", "control_ranges",
+           "OBS_P", "OBS_PSI", "OBS_R", "craft_trim", "trim_action", "control_ranges",
            "CraftTask"]
 
 #: Read-only attributes of the task that the env shows as its own (units and shapes: CraftTask).

@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from laddermill_gym.envs.task import _check_reference_power, check_nonnegative_fields
+from laddermill_gym.envs.task import check_nonnegative_fields, check_reference_power
 
 
 @dataclass(frozen=True)
@@ -36,7 +36,7 @@ class RotorcraftRewardConfig:
 
     def __post_init__(self):
         check_nonnegative_fields(self, "reward", optional=("lateral_scale", "reference_power_W"))
-        _check_reference_power(self)
+        check_reference_power(self)
         if self.rate_scale <= 0:
             raise ValueError(f"reward.rate_scale = {self.rate_scale!r}: must be > 0 rad/s")
         if self.lateral_scale is not None and self.lateral_scale <= 0:

@@ -9,11 +9,10 @@ from functools import lru_cache
 
 import numpy as np
 
-from laddermill_gym.envs.rotorcraft.observation import N_CRAFT_OBS
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT, CraftConfig, load_craft_config
 from laddermill_gym.rotorcraft.craft import Craft, load_craft
 
-__all__ = ["craft_config", "control_ranges", "trim_controls", "craft_trim", "trim_action", "open_loop_controller"]
+__all__ = ["craft_config", "control_ranges", "trim_controls", "craft_trim", "trim_action"]
 
 
 @lru_cache(maxsize=8)
@@ -72,17 +71,3 @@ def trim_action(craft: str = DEFAULT_CRAFT, collective: float | None = None) -> 
     cfg = craft_config(str(craft))
     mid, half = control_ranges(cfg)
     return ((trim_controls(cfg, collective) - mid) / half).astype(np.float32)
-
-
-def open_loop_controller(env_kwargs: dict | None = None):
-    """An :class:`~laddermill_gym.control.open_loop.OpenLoopController` holding the trim controls of the
-    environment with arguments ``env_kwargs`` (only ``craft`` and ``collective`` matter: the open-loop action
-    does not depend on the wind or the timing)."""
-    from laddermill_gym.control.open_loop import OpenLoopController
-
-    kw = dict(env_kwargs or {})
-    cfg = craft_config(str(kw.get("craft", DEFAULT_CRAFT)))
-    mid, half = control_ranges(cfg)
-    ctrl = OpenLoopController(trim_controls(cfg, kw.get("collective")), mid, half)
-    ctrl.obs_dim = N_CRAFT_OBS  # its default assumes the wing layout (15 entries per 3 actions)
-    return ctrl

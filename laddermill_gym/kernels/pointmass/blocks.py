@@ -10,9 +10,8 @@ xz, yz); an element's S as the 5 numbers (a, b, tx, ty, tz).
 
 from numba import njit
 
-from laddermill_gym.kernels.contract import N3_SIZE, N3_VEL
+from laddermill_gym.kernels.contract import N3_SIZE, N3_VEL, PP_DA, PP_EA
 from laddermill_gym.kernels.pointmass.forces import element_geometry, has_upper, node_mass, rest_length
-from laddermill_gym.kernels.pointmass.layout import PP_DA, PP_EA
 
 _FM = {"contract", "nsz", "arcp"}
 
@@ -29,7 +28,7 @@ def _block(x, e, tension, par, dt):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
-def _sds(a, b, tx, ty, tz, d0, d1, d2, d3, d4, d5):
+def sds(a, b, tx, ty, tz, d0, d1, d2, d3, d4, d5):
     """S D S for S = a t t^T + b I and symmetric D (xx, yy, zz, xy, xz, yz)."""
     wx = d0 * tx + d3 * ty + d4 * tz
     wy = d3 * tx + d1 * ty + d5 * tz
@@ -42,7 +41,7 @@ def _sds(a, b, tx, ty, tz, d0, d1, d2, d3, d4, d5):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
-def _inv(d0, d1, d2, d3, d4, d5):
+def inv_sym(d0, d1, d2, d3, d4, d5):
     """Inverse of a symmetric 3x3 matrix (xx, yy, zz, xy, xz, yz) by cofactors."""
     c0 = d1 * d2 - d5 * d5
     c1 = d0 * d2 - d4 * d4
@@ -55,7 +54,7 @@ def _inv(d0, d1, d2, d3, d4, d5):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
-def _between(x, j, step, tension, M, dt):
+def element_block(x, j, step, tension, M, dt):
     """S of the element between node j and node j + step (zero where there is none)."""
     e = j + 1 if step > 0 else j
     if step > 0 and not has_upper(j, M.par):
@@ -64,12 +63,12 @@ def _between(x, j, step, tension, M, dt):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
-def _pivot(x, j, step, tension, M, dt, prev, q, first):
+def pivot_block(x, j, step, tension, M, dt, prev, q, first):
     """Inverse pivot of node j in a sweep going ``step`` (+1 up, -1 down): D_j minus, unless ``first``, the
     eliminated previous node's S q S (``prev``: S of the element to node j - step, ``q`` its inverse pivot).
     Returns (inverse pivot, S of the element to node j + step)."""
     m = node_mass(j, M)
-    nxt = _between(x, j, step, tension, M, dt)
+    nxt = element_block(x, j, step, tension, M, dt)
     d = (m, m, m, 0.0, 0.0, 0.0)
     for s_e in (prev, nxt):
         a, b, tx, ty, tz = s_e
@@ -77,20 +76,20 @@ def _pivot(x, j, step, tension, M, dt, prev, q, first):
              d[4] + a * tx * tz, d[5] + a * ty * tz)
     if not first:
         a, b, tx, ty, tz = prev
-        e = _sds(a, b, tx, ty, tz, q[0], q[1], q[2], q[3], q[4], q[5])
+        e = sds(a, b, tx, ty, tz, q[0], q[1], q[2], q[3], q[4], q[5])
         d = (d[0] - e[0], d[1] - e[1], d[2] - e[2], d[3] - e[3], d[4] - e[4], d[5] - e[5])
-    return _inv(d[0], d[1], d[2], d[3], d[4], d[5]), nxt
+    return inv_sym(d[0], d[1], d[2], d[3], d[4], d[5]), nxt
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
-def _smul(a, b, tx, ty, tz, vx, vy, vz):
+def s_mul(a, b, tx, ty, tz, vx, vy, vz):
     """S v for S = a t t^T + b I."""
     p = a * (tx * vx + ty * vy + tz * vz)
     return p * tx + b * vx, p * ty + b * vy, p * tz + b * vz
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
-def _qmul(q, vx, vy, vz):
+def q_mul(q, vx, vy, vz):
     """Symmetric q (6) times v."""
     return (q[0] * vx + q[3] * vy + q[4] * vz, q[3] * vx + q[1] * vy + q[5] * vz,
             q[4] * vx + q[5] * vy + q[2] * vz)
@@ -101,7 +100,7 @@ def sweep(x, tension, M, dt, j0, count, step, ckpt, mid, seg):
     """Eliminate ``count`` nodes from j0 going ``step``: r'_j = r_j + S q_prev r'_prev in place in the
     velocities; the inverse pivot at the end of every segment of ``seg`` nodes into ``ckpt`` (columns 0-5);
     the last node's inverse pivot and q r' into ``mid`` (9,)."""
-    prev = _between(x, j0, -step, tension, M, dt)
+    prev = element_block(x, j0, -step, tension, M, dt)
     q = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     yx, yy, yz = 0.0, 0.0, 0.0
     for i in range(count):
@@ -109,12 +108,12 @@ def sweep(x, tension, M, dt, j0, count, step, ckpt, mid, seg):
         o = N3_SIZE * j + N3_VEL
         if i > 0:
             a, b, tx, ty, tz = prev
-            sx, sy, sz = _smul(a, b, tx, ty, tz, yx, yy, yz)
+            sx, sy, sz = s_mul(a, b, tx, ty, tz, yx, yy, yz)
             x[o] += sx
             x[o + 1] += sy
             x[o + 2] += sz
-        q, prev = _pivot(x, j, step, tension, M, dt, prev, q, i == 0)
-        yx, yy, yz = _qmul(q, x[o], x[o + 1], x[o + 2])
+        q, prev = pivot_block(x, j, step, tension, M, dt, prev, q, i == 0)
+        yx, yy, yz = q_mul(q, x[o], x[o + 1], x[o + 2])
         if (i + 1) % seg == 0 or i == count - 1:
             for k in range(6):
                 ckpt[i // seg, k] = q[k]
@@ -136,16 +135,16 @@ def back(x, tension, M, dt, j0, count, step, ckpt, buf, vx, vy, vz):
         q = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
         if c > 0:
             q = (ckpt[c - 1, 0], ckpt[c - 1, 1], ckpt[c - 1, 2], ckpt[c - 1, 3], ckpt[c - 1, 4], ckpt[c - 1, 5])
-        prev = _between(x, j0 + i0 * step, -step, tension, M, dt)
+        prev = element_block(x, j0 + i0 * step, -step, tension, M, dt)
         for i in range(i0, i1):
-            q, prev = _pivot(x, j0 + i * step, step, tension, M, dt, prev, q, i == 0)
+            q, prev = pivot_block(x, j0 + i * step, step, tension, M, dt, prev, q, i == 0)
             for k in range(6):
                 buf[i - i0, k] = q[k]
         for i in range(i1 - 1, i0 - 1, -1):
             j = j0 + i * step
             o = N3_SIZE * j + N3_VEL
-            a, b, tx, ty, tz = _between(x, j, step, tension, M, dt)
-            sx, sy, sz = _smul(a, b, tx, ty, tz, vx, vy, vz)
+            a, b, tx, ty, tz = element_block(x, j, step, tension, M, dt)
+            sx, sy, sz = s_mul(a, b, tx, ty, tz, vx, vy, vz)
             qj = (buf[i - i0, 0], buf[i - i0, 1], buf[i - i0, 2], buf[i - i0, 3], buf[i - i0, 4], buf[i - i0, 5])
-            vx, vy, vz = _qmul(qj, x[o] + sx, x[o + 1] + sy, x[o + 2] + sz)
+            vx, vy, vz = q_mul(qj, x[o] + sx, x[o + 1] + sy, x[o + 2] + sz)
             x[o], x[o + 1], x[o + 2] = vx, vy, vz

@@ -14,15 +14,10 @@ import math
 from numba import njit, prange
 
 from laddermill_gym.atmosphere.wind_kernels import modulation
-from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL, TM_DT, TM_T0
-from laddermill_gym.kernels.pointmass.forces import (
-    element_tension,
-    external_force,
-    n_elements,
-    node_mass,
-    string_force,
-)
-from laddermill_gym.kernels.pointmass.layout import (
+from laddermill_gym.kernels.contract import (
+    N3_POS,
+    N3_SIZE,
+    N3_VEL,
     PM_GROUND,
     PM_LIMIT,
     PM_NONFINITE,
@@ -30,6 +25,15 @@ from laddermill_gym.kernels.pointmass.layout import (
     PP_GROUND,
     PP_MAX_SPEED,
     PP_N,
+    TM_DT,
+    TM_T0,
+)
+from laddermill_gym.kernels.pointmass.forces import (
+    element_tension,
+    external_force,
+    n_elements,
+    node_mass,
+    string_force,
 )
 
 _FM = {"contract", "nsz", "arcp"}

@@ -22,12 +22,14 @@ import math
 from numba import njit
 
 from laddermill_gym.atmosphere.wind_kernels import density, wind_point
-from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL
-from laddermill_gym.kernels.pointmass.layout import (
+from laddermill_gym.kernels.contract import (
     KT_ALPHA0,
     KT_AREA,
     KT_DALPHA,
     KT_MASS,
+    N3_POS,
+    N3_SIZE,
+    N3_VEL,
     PP_ANCHOR,
     PP_CN0,
     PP_CT0,
@@ -165,7 +167,7 @@ def node_mass(j, M):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def _coefficients(alpha, M):
+def kite_coefficients(alpha, M):
     """C_L, C_D at alpha [rad] by linear interpolation on the kite's uniform grid (periodic in 2 pi)."""
     if not (abs(alpha) < math.inf):  # NaN or infinite alpha: no table index, NaN coefficients (issue 13)
         return math.nan, math.nan
@@ -190,7 +192,7 @@ def kite_force(k, vx, vy, vz, rho, u, M):
     dx, dy, dz = cp * st * sf - sp * cf, sp * st * sf + cp * cf, ct * sf
     zbx, zby, zbz = cp * st * cf + sp * sf, sp * st * cf - cp * sf, ct * cf
     alpha = math.atan2(vx * zbx + vy * zby + vz * zbz, vx * xbx + vy * xby + vz * xbz)
-    cl, cd = _coefficients(alpha, M)
+    cl, cd = kite_coefficients(alpha, M)
     vv = math.sqrt(vx * vx + vy * vy + vz * vz)
     q = 0.5 * rho * M.kt[KT_AREA] * vv
     lx, ly, lz = dy * vz - dz * vy, dz * vx - dx * vz, dx * vy - dy * vx

@@ -24,6 +24,17 @@ from laddermill_gym.kernels.contract import (
     N3_POS,
     N3_SIZE,
     N3_VEL,
+    PM_LIMIT,
+    PM_OK,
+    PP_ANCHOR,
+    PP_DA,
+    PP_EA,
+    PP_END,
+    PP_L_FIRST,
+    PP_L_LAST,
+    PP_N,
+    PP_RATE_FIRST,
+    PP_RATE_LAST,
     SP_F_FIRST,
     SP_F_LAST,
     SP_NSCHED,
@@ -36,19 +47,6 @@ from laddermill_gym.kernels.contract import (
     SX_TRANSFERS,
 )
 from laddermill_gym.kernels.pointmass.forces import element_geometry, element_tension, node_mass, rest_length
-from laddermill_gym.kernels.pointmass.layout import (
-    PM_LIMIT,
-    PM_OK,
-    PP_ANCHOR,
-    PP_DA,
-    PP_EA,
-    PP_END,
-    PP_L_FIRST,
-    PP_L_LAST,
-    PP_N,
-    PP_RATE_FIRST,
-    PP_RATE_LAST,
-)
 
 _FM = {"contract", "nsz", "arcp"}
 

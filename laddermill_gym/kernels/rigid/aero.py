@@ -10,7 +10,7 @@ import math
 
 from numba import njit
 
-from laddermill_gym.kernels.contract import (
+from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
     AO2_FORCE_X,
     AO2_FORCE_Z,
     AO2_G,
@@ -21,17 +21,35 @@ from laddermill_gym.kernels.contract import (
     AO_KAPPA,
     AO_MOMENT,
     AO_SIZE,
+    CD,
+    CL,
+    CLAD,
+    CLB,
+    CLDA,
+    CLDE,
+    CLDR,
+    CLP,
+    CLQ,
+    CLR,
+    CM,
+    CMAD,
+    CMDE,
+    CMQ,
+    CNB,
+    CNDA,
+    CNDR,
+    CNP,
+    CNR,
+    CYB,
+    CYDR,
+    CYP,
+    CYR,
+    N_COLUMNS,
     TF_AREA,
     TF_CHORD,
     TF_RREF,
     TF_SPAN,
 )
-
-# column indices (must match params.AERO_COLUMNS)
-CL, CD, CM, CLQ, CLAD, CLDE, CMQ, CMAD, CMDE = 0, 1, 2, 3, 4, 5, 6, 7, 8
-CYB, CYP, CYR, CYDR, CLB, CLP, CLR, CLDA, CLDR = 9, 10, 11, 12, 13, 14, 15, 16, 17
-CNB, CNP, CNR, CNDA, CNDR = 18, 19, 20, 21, 22
-N_COLUMNS = 23
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})

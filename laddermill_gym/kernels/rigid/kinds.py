@@ -12,7 +12,7 @@ import numpy as np
 from numba import njit
 
 from laddermill_gym.atmosphere.wind_kernels import density, wind_point, wind_point_rate
-from laddermill_gym.kernels.contract import (
+from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
     AO_FORCE,
     AO_G,
     AO_KAPPA,
@@ -32,9 +32,11 @@ from laddermill_gym.kernels.contract import (
     CTRL_RUDDER,
     GL_ALPHA0,
     GL_DALPHA,
+    GROUND,
     LIM_GROUND,
     LIM_RATE,
     LIM_SPEED,
+    LIMIT,
     N2_POS,
     N2_SIZE,
     N2_VEL,
@@ -42,6 +44,8 @@ from laddermill_gym.kernels.contract import (
     N3_SIZE,
     N3_VEL,
     N_CONTROLS,
+    NONFINITE,
+    OK,
 )
 from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_vehicle
 from laddermill_gym.kernels.rigid.aero import wing_aero
@@ -49,8 +53,6 @@ from laddermill_gym.kernels.rigid.rhs2d import rhs2d
 from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
 
 _FM = {"contract", "nsz", "arcp"}
-#: Status codes of a post-step check (the integrators' codes, ``kernels/integrate.py``).
-OK, NONFINITE, LIMIT, GROUND = 0, 2, 3, 4
 
 # The markers hold a small array rather than a scalar: numba's parallel (prange) lowering passes the packed
 # model to its worker function field by field and accepts arrays, not scalars, inside a nested tuple.

@@ -13,6 +13,11 @@ from numba import njit
 from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_point, wind_point_rate
 from laddermill_gym.kernels.cable import aero_load, lateral_elongation, tension_plain, tension_sag
 from laddermill_gym.kernels.contract import (
+    AO2_FORCE_X,
+    AO2_FORCE_Z,
+    AO2_G,
+    AO2_KAPPA,
+    AO2_MOMENT,
     B2_Q,
     B2_SIZE,
     B2_THETA,
@@ -142,14 +147,14 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
             d2 = ua * ua + wa * wa
             ad0 = (-wa * ex_ + ua * ez_) / d2 if d2 > 1e-18 else 0.0
             wing_aero_long(ty, M.tf, M.ac, a0, da, rho, ua, wa, q, u[N_CONTROLS * k + CTRL_ELEVATOR], ad0, W.coef, ao)
-            fx += ao[0]
-            fz += ao[1]
-            my += ao[2]
+            fx += ao[AO2_FORCE_X]
+            fz += ao[AO2_FORCE_Z]
+            my += ao[AO2_MOMENT]
             for i in range(3):
-                ki = ao[3 + i]
+                ki = ao[AO2_KAPPA + i]
                 if ki != 0.0:
-                    Dk[i, 0] -= ki * ao[6]
-                    Dk[i, 1] -= ki * ao[7]
+                    Dk[i, 0] -= ki * ao[AO2_G]
+                    Dk[i, 1] -= ki * ao[AO2_G + 1]
         bv[k, 0] = fx
         bv[k, 1] = fz
         bv[k, 2] = my

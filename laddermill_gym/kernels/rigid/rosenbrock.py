@@ -34,14 +34,23 @@ import math
 import numpy as np
 from numba import njit
 
-from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_SIZE, B3_VEL, N3_POS, N3_SIZE, N3_VEL
+from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
+    B3_POS,
+    B3_QUAT,
+    B3_SIZE,
+    B3_VEL,
+    N3_POS,
+    N3_SIZE,
+    N3_VEL,
+    OK,
+    SINGULAR,
+)
 from laddermill_gym.kernels.dispatch import model_assemble, model_check, model_rhs
 from laddermill_gym.kernels.rigid.blocks import copy_blocks, tree_factor, tree_solve_factored
 from laddermill_gym.kernels.rigid.body_jacobian import add_body_force, add_body_jacobian
 from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness, add_moving_end_force, add_stiffness_force
 
 _FM = {"contract", "nsz", "arcp"}
-OK, SINGULAR = 0, 1
 
 
 def transformed_tableau(gamma: float, alpha: np.ndarray, gam: np.ndarray, b: np.ndarray, bhat: np.ndarray):

@@ -10,9 +10,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from laddermill_gym.kernels.rigid.reference.state import check_dim, end_kinematics
-from laddermill_gym.kernels.rigid.reference.wind import air_density, wind_velocity
 from laddermill_gym.model.params import Assembly
+from laddermill_gym.reference.state import check_dim, end_kinematics
+from laddermill_gym.reference.wind import air_density, wind_velocity
 
 #: Element length below which the element direction is taken as 0 [m].
 LENGTH_EPS = 1e-9

@@ -1,6 +1,6 @@
 """Plain-numpy reference implementation of the laddermill model's right-hand side (3D only).
 
-The package ``laddermill_gym.kernels.rigid.reference`` is the *oracle* the numba kernels are tested against. It
+The package ``laddermill_gym.reference`` is the *oracle* the numba kernels are tested against. It
 is written directly from ``laddermill_gym/docs/model.md`` with readability as the only goal: this module assembles
 the dense global mass matrix ``M`` (``n_dof x n_dof``) and the dense generalised force vector ``F`` of eq. (M25),
 ``M v' = f + h - D^T sigma``, and solves with :func:`numpy.linalg.solve`. Nothing here is fast. The pieces live
@@ -12,8 +12,8 @@ Conventions (see docs/model.md):
 * SI units and radians; global frame x north, y east, z down; altitude ``h = -z``.
 * Generalised velocities: per wing ``(v, omega)`` in body axes (6 dof, wing ``k`` at dof ``6 k``),
   then per free node its global velocity (3 dof, node ``j`` at dof ``6 n_w + 3 j``).
-* State: per wing ``[x(3), q(4), v(3), omega(3)]`` (13 floats at ``13 k``), then per node
-  ``[position(3), velocity(3)]`` (6 floats at ``13 n_w + 6 j``).
+* State: per wing ``[x(3), q(4), v(3), omega(3)]`` (``B3_SIZE`` floats each), then per node
+  ``[position(3), velocity(3)]`` (``N3_SIZE`` floats each; slot names of ``kernels/contract.py``).
 
 Choices made where the specification leaves room (the kernels must make the same ones):
 
@@ -35,9 +35,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.kernels.rigid.reference.cable import element_loads_per_length, element_state, tension
-from laddermill_gym.kernels.rigid.reference.rotations import quaternion_product, rotation
-from laddermill_gym.kernels.rigid.reference.state import (
+from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_RATE, B3_SIZE, B3_VEL, N3_POS, N3_SIZE, N3_VEL
+from laddermill_gym.model.params import N_CONTROLS, Assembly
+from laddermill_gym.reference.cable import element_loads_per_length, element_state, tension
+from laddermill_gym.reference.rotations import quaternion_product, rotation
+from laddermill_gym.reference.state import (
     check_dim,
     end_kinematics,
     end_transformation,
@@ -47,8 +49,7 @@ from laddermill_gym.kernels.rigid.reference.state import (
     wing_dof,
     wing_state,
 )
-from laddermill_gym.kernels.rigid.reference.wing import inertia_matrix, wing_aero
-from laddermill_gym.model.params import N_CONTROLS, Assembly
+from laddermill_gym.reference.wing import inertia_matrix, wing_aero
 
 
 def mass_matrix_and_forces(asm: Assembly, t: float, x: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -178,15 +179,16 @@ def reference_rhs(t: float, x: np.ndarray, u: np.ndarray, asm: Assembly) -> np.n
     dx = np.zeros_like(x)
     for k in range(asm.n_wings):
         _, q, v, w = wing_state(asm, x, k)
-        o = 13 * k
+        o = B3_SIZE * k
         d = wing_dof(k)
-        dx[o : o + 3] = rotation(q) @ v
-        dx[o + 3 : o + 7] = 0.5 * quaternion_product(q, np.concatenate([[0.0], w]))
-        dx[o + 7 : o + 13] = accel[d : d + 6]
+        dx[o + B3_POS: o + B3_POS + 3] = rotation(q) @ v
+        dx[o + B3_QUAT: o + B3_QUAT + 4] = 0.5 * quaternion_product(q, np.concatenate([[0.0], w]))
+        dx[o + B3_VEL: o + B3_VEL + 3] = accel[d: d + 3]
+        dx[o + B3_RATE: o + B3_RATE + 3] = accel[d + 3: d + 6]
     for j in range(asm.n_nodes):
         _, vel = node_state(asm, x, j)
-        o = 13 * asm.n_wings + 6 * j
+        o = B3_SIZE * asm.n_wings + N3_SIZE * j
         d = node_dof(asm, j)
-        dx[o : o + 3] = vel
-        dx[o + 3 : o + 6] = accel[d : d + 3]
+        dx[o + N3_POS: o + N3_POS + 3] = vel
+        dx[o + N3_VEL: o + N3_VEL + 3] = accel[d: d + 3]
     return dx

@@ -3,15 +3,28 @@ kinematics and velocity transformation of a cable element's end (wing, free node
 
 Generalised velocities: per wing ``(v, omega)`` in body axes (6 dof, wing ``k`` at dof ``6 k``), then per free
 node its global velocity (3 dof, node ``j`` at dof ``6 n_w + 3 j``). State: per wing ``[x(3), q(4), v(3),
-omega(3)]`` (13 floats at ``13 k``), then per node ``[position(3), velocity(3)]`` (6 floats at ``13 n_w + 6 j``).
+omega(3)]`` (``B3_SIZE`` = 13 floats at ``B3_SIZE k``), then per node ``[position(3), velocity(3)]`` (``N3_SIZE`` =
+6 floats after the wings); the slot names of ``kernels/contract.py``, the physics written independently.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.kernels.rigid.reference.rotations import rotation, skew
+from laddermill_gym.kernels.contract import (
+    B3_POS,
+    B3_QUAT,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
+    DOF_B3,
+    DOF_N3,
+    N3_POS,
+    N3_SIZE,
+    N3_VEL,
+)
 from laddermill_gym.model.params import END_FIXED, END_NODE, END_WING, Assembly
+from laddermill_gym.reference.rotations import rotation, skew
 
 
 def check_dim(asm: Assembly) -> None:
@@ -21,26 +34,27 @@ def check_dim(asm: Assembly) -> None:
 
 def wing_state(asm: Assembly, x: np.ndarray, k: int):
     """(position, q, v, omega) of wing ``k`` (views into the state)."""
-    o = 13 * k
-    return x[o : o + 3], x[o + 3 : o + 7], x[o + 7 : o + 10], x[o + 10 : o + 13]
+    o = B3_SIZE * k
+    return (x[o + B3_POS: o + B3_POS + 3], x[o + B3_QUAT: o + B3_QUAT + 4], x[o + B3_VEL: o + B3_VEL + 3],
+            x[o + B3_RATE: o + B3_RATE + 3])
 
 
 def node_state(asm: Assembly, x: np.ndarray, j: int):
     """(position, velocity) of free node ``j``."""
-    o = 13 * asm.n_wings + 6 * j
-    return x[o : o + 3], x[o + 3 : o + 6]
+    o = B3_SIZE * asm.n_wings + N3_SIZE * j
+    return x[o + N3_POS: o + N3_POS + 3], x[o + N3_VEL: o + N3_VEL + 3]
 
 
 def n_dof(asm: Assembly) -> int:
-    return 6 * asm.n_wings + 3 * asm.n_nodes
+    return DOF_B3 * asm.n_wings + DOF_N3 * asm.n_nodes
 
 
 def wing_dof(k: int) -> int:
-    return 6 * k
+    return DOF_B3 * k
 
 
 def node_dof(asm: Assembly, j: int) -> int:
-    return 6 * asm.n_wings + 3 * j
+    return DOF_B3 * asm.n_wings + DOF_N3 * j
 
 
 def end_kinematics(asm: Assembly, e: int, end: int, x: np.ndarray):

@@ -1,6 +1,8 @@
-"""Plain-numpy reference (oracle) of the 3D right-hand side: wind, rotations, wing, state, cable and rhs modules."""
+"""Plain-numpy reference (oracle) of the 3D right-hand side, written independently of the kernels: wind, rotations,
+wing, state, cable and rhs. Imports only ``model`` (typed parameters) and ``kernels.contract`` (slot names); the
+tests and ``studies/benchmark.py`` use it, the simulator never does."""
 
-from laddermill_gym.kernels.rigid.reference.cable import (
+from laddermill_gym.reference.cable import (
     LENGTH_EPS,
     ElementState,
     cable_aero_load,
@@ -11,10 +13,10 @@ from laddermill_gym.kernels.rigid.reference.cable import (
     sag_tension,
     tension,
 )
-from laddermill_gym.kernels.rigid.reference.rhs import mass_matrix_and_forces, reference_rhs
-from laddermill_gym.kernels.rigid.reference.rotations import euler_321, quaternion_product, rotation, skew
-from laddermill_gym.kernels.rigid.reference.state import end_transformation
-from laddermill_gym.kernels.rigid.reference.wind import (
+from laddermill_gym.reference.rhs import mass_matrix_and_forces, reference_rhs
+from laddermill_gym.reference.rotations import euler_321, quaternion_product, rotation, skew
+from laddermill_gym.reference.state import end_transformation
+from laddermill_gym.reference.wind import (
     air_density,
     wind_direction_profile,
     wind_modulation,
@@ -22,7 +24,7 @@ from laddermill_gym.kernels.rigid.reference.wind import (
     wind_speed_profile,
     wind_velocity,
 )
-from laddermill_gym.kernels.rigid.reference.wing import AIRSPEED_EPS, aero_coefficients, inertia_matrix, wing_aero
+from laddermill_gym.reference.wing import AIRSPEED_EPS, aero_coefficients, inertia_matrix, wing_aero
 
 __all__ = [
     "AIRSPEED_EPS",

@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from laddermill_gym.kernels.rigid.reference.wind import air_density, wind_rate, wind_velocity
 from laddermill_gym.model.params import AERO_COLUMNS, AeroTable, WindParams, WingType
+from laddermill_gym.reference.wind import air_density, wind_rate, wind_velocity
 
 #: Airspeed below which a wing gets no aerodynamic load [m/s].
 AIRSPEED_EPS = 1e-9
