@@ -29,6 +29,18 @@ RANK = {
     "cli": 8, "__main__": 8,
     "": 4,  # the package's own __init__: the public API (model, sim, ladder) and the env registration (envs)
 }
+#: Parts whose ``__init__.py`` names exactly what they may import (beside themselves): held to that list.
+ONLY = {
+    "atmosphere": {"contract"},
+    "kernels": {"contract", "atmosphere"},
+    "model": {"contract", "kernels", "atmosphere", "configs"},
+    "reference": {"contract", "model"},
+    "sim": {"contract", "kernels", "atmosphere", "model"},
+    "quasisteady": {"contract", "model", "atmosphere", "configs"},
+    "derivations": {"model"},
+}
+#: A literal 3D rigid-body offset: ``13 * k`` or ``k * 13`` (not a number like 1e-13 * s).
+THIRTEEN = re.compile(r"(?<![\w.+-])13\s*\*\s*[A-Za-z_(]|[\w)\]]\s*\*\s*13(?![\w.])")
 
 
 def _sources(*folders):
@@ -88,19 +100,34 @@ def test_layers_import_downward_only_and_parts_import_each_other_one_way():
                     upward.append(f"{path.relative_to(ROOT)}:{line} ({mine}, layer {RANK[mine]}) imports {module} "
                                   f"(layer {RANK[other]})")
     assert not upward, "\n".join(upward)
+    beyond = {part: sorted(edges[part] - allowed) for part, allowed in ONLY.items() if edges[part] - allowed}
+    assert not beyond, f"imports beyond what the folder's __init__ says: {beyond}"
     both_ways = sorted({tuple(sorted((a, b))) for a in edges for b in edges[a] if a in edges.get(b, ())})
     assert not both_ways, f"sub-packages importing each other: {both_ways}"
+
+
+def _import_time(body):
+    """The statements that run when a module is imported: its top level, including the bodies of ``if``, ``try``,
+    ``with`` and class statements, but not of functions."""
+    for node in body:
+        yield node
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+            continue
+        for field in ("body", "orelse", "finalbody", "handlers"):
+            yield from _import_time(getattr(node, field, []) or [])
 
 
 def test_no_module_level_import_cycle():
     graph = defaultdict(set)
     modules = {_module(p): p for p in _sources("laddermill_gym")}
     for name, path in modules.items():
-        for node in ast.parse(path.read_text()).body:  # module level only: a function's import runs later
+        for node in _import_time(ast.parse(path.read_text()).body):
             if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("laddermill_gym"):
                 for a in node.names:
                     full = f"{node.module}.{a.name}"
                     graph[name].add(full if full in modules else node.module)
+            elif isinstance(node, ast.Import):
+                graph[name].update(a.name for a in node.names if a.name.startswith("laddermill_gym"))
     state: dict[str, int] = {}
 
     def visit(m, stack):
@@ -128,7 +155,25 @@ def test_no_module_imports_a_private_name_of_another():
               for path in _sources("tests") for node in ast.walk(ast.parse(path.read_text()))
               if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("tests")
               for a in node.names if a.name.startswith("_")]
+    found += [f"{path.relative_to(ROOT)}:{line} {name}" for path in _sources("laddermill_gym", "agents", "tests")
+              for line, name in _private_attributes(path)]
     assert not found, "\n".join(found)
+
+
+def _private_attributes(path: Path):
+    """(line, 'alias._name') wherever a module of the package, bound to a name by an import, is asked for a private
+    attribute."""
+    tree = ast.parse(path.read_text())
+    aliases = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            aliases |= {a.asname for a in node.names if a.name.startswith("laddermill_gym") and a.asname}
+        elif isinstance(node, ast.ImportFrom) and (node.module or "").startswith("laddermill_gym"):
+            aliases |= {a.asname or a.name for a in node.names if _is_module(f"{node.module}.{a.name}")}
+    for node in ast.walk(tree):
+        if (isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id in aliases
+                and node.attr.startswith("_") and not node.attr.startswith("__")):
+            yield node.lineno, f"{node.value.id}.{node.attr}"
 
 
 def test_files_under_400_lines():
@@ -154,11 +199,10 @@ def test_functions_under_80_lines_or_a_kernel_that_says_why():
 
 def test_no_literal_rigid_body_offset_outside_the_contract():
     """A state offset of the 3D rigid body (13 entries) is written ``B3_SIZE * k``, never ``13 * k``."""
-    pattern = re.compile(r"(?<![\w.+-])13\s*\*\s*[A-Za-z_(]|[\w)\]]\s*\*\s*13(?![\w.])")
     found = [f"{p.relative_to(ROOT)}:{i}: {line.strip()}" for p in _sources("laddermill_gym", "agents")
              if p.name != "contract.py"
              for i, line in enumerate(p.read_text().splitlines(), 1)
-             if pattern.search(line.split("#")[0]) and not line.lstrip().startswith(('"', "'", "``"))]
+             if THIRTEEN.search(line.split("#")[0]) and not line.lstrip().startswith(('"', "'", "``"))]
     assert not found, "\n".join(found)
 
 
@@ -179,5 +223,8 @@ def test_the_checks_catch_what_they_look_for(tmp_path):
     found = list(_imports(src))
     assert found == [(2, "laddermill_gym.envs.task", ["_hidden", "WingTask"])]
     assert _part(found[0][1]) == "envs" and RANK["envs"] > RANK["sim"]
-    pattern = re.compile(r"(?<![\w.+-])13\s*\*\s*[A-Za-z_(]|[\w)\]]\s*\*\s*13(?![\w.])")
-    assert pattern.search("    o = 13 * k") and pattern.search("x = n * 13") and not pattern.search("1e-13 * s")
+    assert THIRTEEN.search("    o = 13 * k") and THIRTEEN.search("x = n * 13") and not THIRTEEN.search("1e-13 * s")
+    src.write_text("import laddermill_gym.studies.gust_bench as gb\ntry:\n    from laddermill_gym.sim import batch\n"
+                   "except ImportError:\n    pass\nprint(gb._hidden, batch._x, gb.__doc__)\n")
+    assert [name for _, name in _private_attributes(src)] == ["gb._hidden", "batch._x"]
+    assert sum(isinstance(n, ast.ImportFrom) for n in _import_time(ast.parse(src.read_text()).body)) == 1

@@ -93,10 +93,10 @@ def test_settling_time_of_an_exponential_decay():
     dt, start, tau, duration = 0.05, 2.0, 3.0, 60.0
     t = dt * np.arange(int(duration / dt) + 1)
     e = np.where(t < start, 0.0, np.exp(-(t - start) / tau))
-    ts = gb._settling_time(e, dt, start, duration)
+    ts = gb.settling_time(e, dt, start, duration)
     assert ts == pytest.approx(tau * math.log(1.0 / gb.SETTLE_BAND), abs=2 * dt)
     growing = np.where(t < start, 0.0, np.exp((t - start) / tau) - 1.0)
-    assert math.isnan(gb._settling_time(growing, dt, start, duration))
+    assert math.isnan(gb.settling_time(growing, dt, start, duration))
 
 
 def test_subcommand_parser():

@@ -17,6 +17,7 @@ import numpy as np
 
 from laddermill_gym.control.base import batch_observations
 from laddermill_gym.control.lqr import DiscreteLQR, bryson_weights, discrete_lqr
+from laddermill_gym.kernels.contract import CU_COLLECTIVE, CU_DIFFERENTIAL, CU_SIZE
 from laddermill_gym.ladder.scene import CONFIG_DIR
 from laddermill_gym.model.configio import read_yaml
 from laddermill_gym.rotorcraft.roll_lateral import RollLateralModel, derive_roll_lateral, lateral_state
@@ -76,7 +77,9 @@ class CraftLQRDesign:
         shape (2,), from the full simulator state x, z = :func:`lateral_state` (x, trim)."""
         lo, hi = self.sim.config.differential_limits
         d = float(np.clip(-self.gain @ lateral_state(x, self.x_trim), lo, hi))
-        return np.array([self.u_trim[0], d])
+        u = np.empty(CU_SIZE)
+        u[CU_COLLECTIVE], u[CU_DIFFERENTIAL] = self.u_trim[CU_COLLECTIVE], d
+        return u
 
 
 def design_craft_lqr(config: CraftLQRConfig | str | Path = DEFAULT_CRAFT_LQR, craft=None) -> CraftLQRDesign:
@@ -121,9 +124,9 @@ class CraftLQRController:
     def controls(self, observation: np.ndarray) -> np.ndarray:
         """Controls (collective, differential) [rad], shape (n, 2), for observations of shape (n, obs_dim)."""
         z = observation[:, self.obs_index]
-        u = np.empty((observation.shape[0], 2))
-        u[:, 0] = self.collective
-        u[:, 1] = -z @ self.gain
+        u = np.empty((observation.shape[0], CU_SIZE))
+        u[:, CU_COLLECTIVE] = self.collective
+        u[:, CU_DIFFERENTIAL] = -z @ self.gain
         return u
 
     def predict(self, observation: np.ndarray, state: Any = None, episode_start: np.ndarray | None = None,

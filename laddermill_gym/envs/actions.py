@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import CubicSpline
 
+from laddermill_gym.kernels.contract import CTRL_ELEVATOR
 from laddermill_gym.model.params import AERO_INDEX, CONTROL_NAMES, N_CONTROLS, Assembly, WingType
 
 ACTION_MODES: tuple[str, ...] = ("tail", "alpha")
@@ -255,5 +256,5 @@ class ActionMap:
             self.alpha_servo = self.alpha_servo + self.servo_gain * (cmd - self.alpha_servo)
             realised = self.alpha_servo[:, self._group_of]  # (B, n_wings)
             for elevator_map, wings in self._maps:
-                u[:, wings, 0] = elevator_map(realised[:, wings]) + self._elevator_offset[wings]
+                u[:, wings, CTRL_ELEVATOR] = elevator_map(realised[:, wings]) + self._elevator_offset[wings]
         return np.clip(u, self._lo, self._hi).reshape(len(u), -1)

@@ -134,6 +134,11 @@ AO2_FORCE_X, AO2_FORCE_Z, AO2_MOMENT, AO2_KAPPA, AO2_G = 0, 1, 2, 3, 6
 #: element below the body [N].
 OBS_OFFSET, OBS_VELOCITY, OBS_EULER, OBS_RATES, OBS_ALPHA, OBS_BETA, OBS_TENSION, OBS_SIZE = 0, 3, 6, 9, 12, 13, 14, 15
 
+#: Auxiliary output of the batched wing step ``aux`` (B, N_AUX), ``kernels/rigid/observe.py``: largest element
+#: tension [N], tension of the element at the start ground point [N], at the end ground point [N] (0 without an
+#: end), lowest wing CG altitude -z [m].
+AUX_MAX_TENSION, AUX_GROUND_START, AUX_GROUND_END, AUX_MIN_ALTITUDE, N_AUX = 0, 1, 2, 3, 4
+
 # ------------------------------------------------------------------------------------------- limits
 #: Integrator safety limits ``limits``: largest speed [m/s], largest angular rate [rad/s], ground height h_g [m]
 #: (height h = -z): a wing CG or free node at h <= h_g after a step stops the run; -inf when the kernels are not
@@ -156,6 +161,10 @@ CL, CD, CM, CLQ, CLAD, CLDE, CMQ, CMAD, CMDE = 0, 1, 2, 3, 4, 5, 6, 7, 8
 CYB, CYP, CYR, CYDR, CLB, CLP, CLR, CLDA, CLDR = 9, 10, 11, 12, 13, 14, 15, 16, 17
 CNB, CNP, CNR, CNDA, CNDR = 18, 19, 20, 21, 22
 N_COLUMNS = 23
+
+#: The longitudinal columns (CL, CD, Cm, their rate and elevator derivatives) come first: the in-plane kernel
+#: evaluates only these.
+N_LONGITUDINAL = CMDE + 1
 
 # ------------------------------------------------------------------------------------------- point-mass fidelity
 #: The point-mass fidelity (Podgaets & Ockels 2007, ``kernels/pointmass/``): state layout, packed slots, the packed
@@ -205,6 +214,14 @@ PM_OK, PM_NONFINITE, PM_LIMIT, PM_GROUND = OK, NONFINITE, LIMIT, GROUND
 #: Symmetric 3x3 storage order.
 S_XX, S_YY, S_ZZ, S_XY, S_XZ, S_YZ, S_SIZE = 0, 1, 2, 3, 4, 5, 6
 
+#: Observation of one point-mass kite (``envs/pointmass/task.py``): position offset from the start (3) [m],
+#: velocity (3) [m/s], tension of the element below the kite [N].
+PKO_OFFSET, PKO_VELOCITY, PKO_TENSION, PKO_SIZE = 0, 3, 6, 7
+#: Station state of the point-mass mill (``kernels/pointmass/mill.py``): the rigid mill's ``SX_*`` block, then the
+#: kites transferred (signed) [-].
+MX_KITE_TRANSFERS = SX_SIZE
+MX_SIZE = SX_SIZE + 1
+
 #: Partitioned elimination's workspace (``kernels/pointmass/partitioned.py``).
 #: Columns of a checkpoint row (inverse pivot 6, spike 9), of a segment buffer row (inverse pivot 6, spike
 #: times the lower separator's load 3) and of a chunk's row of ``PMWork.mid``.
@@ -242,6 +259,10 @@ N_RO = 10
 #: Vehicle outputs ``cout`` (the workspace's ``vout``): body force (3), body moment (3), the rotors' blocks
 V_FORCE, V_MOMENT, V_ROTOR = 0, 3, 6
 N_COUT = V_ROTOR + 2 * N_RO
+
+#: Controls of the craft ``u`` [rad]: collective pitch theta0, differential collective dtheta (right rotor at
+#: theta0 + dtheta, left at theta0 - dtheta).
+CU_COLLECTIVE, CU_DIFFERENTIAL, CU_SIZE = 0, 1, 2
 
 #: Rows of the craft's batched observation (``rotorcraft/craft_observe.py``).
 CO_OFFSET = 0      # CG position minus the nominal position (3) [m]

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq, root
 
-from laddermill_gym.kernels.contract import N3_POS, N3_SIZE
+from laddermill_gym.kernels.contract import DOF_B3, DOF_N3, N3_POS, N3_SIZE
 from laddermill_gym.model.builders import ElementList
 from laddermill_gym.model.params import END_FIXED, END_NODE, END_WING, Assembly, WingType
 from laddermill_gym.model.states import rotation_from_euler, wing_state_3d
@@ -215,15 +215,15 @@ def _mirror_expansion(layout: CraftLayout, n_unknowns: int) -> tuple[np.ndarray,
     rear tether mirrors the right); ``free`` (n_free,) indexes the entries of z (and of the residual) that w
     stands for."""
     cols: list[dict[int, float]] = []
-    for i in (0, 2, 4):
+    for i in (0, 2, 4):  # the craft's x, z and pitch: its velocity-block dofs v_x, v_z, q (body 0)
         cols.append({i: 1.0})
     right, left, front = layout.tether_nodes
     for kr, kl in zip(right, left, strict=True):
         for c, sign in ((0, 1.0), (1, -1.0), (2, 1.0)):
-            cols.append({6 + 3 * kr + c: 1.0, 6 + 3 * kl + c: sign})
+            cols.append({DOF_B3 + DOF_N3 * kr + c: 1.0, DOF_B3 + DOF_N3 * kl + c: sign})
     for k in front:
         for c in (0, 2):
-            cols.append({6 + 3 * k + c: 1.0})
+            cols.append({DOF_B3 + DOF_N3 * k + c: 1.0})
     E = np.zeros((n_unknowns, len(cols)))
     for j, col in enumerate(cols):
         for i, v in col.items():

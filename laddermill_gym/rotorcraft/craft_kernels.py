@@ -43,6 +43,8 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
     C_OMEGA,
     C_RADIUS,
     C_TOL,
+    CU_COLLECTIVE,
+    CU_DIFFERENTIAL,
     N_COUT,
     N_CP,
     N_RO,
@@ -157,7 +159,7 @@ def craft_loads(x, o, R, u, t, M, s_mod, d_mod, craft):
         spin = SPIN[r]
         hx, hy, hz = cp[C_HUB_X], cp[C_HUB_Y] if r == 0 else -cp[C_HUB_Y], cp[C_HUB_Z]
         ax, ay, az, rho = _air_at(x, o, R, hx, hy, hz, t, M, s_mod, d_mod)
-        theta = u[0] + u[1] if r == 0 else u[0] - u[1]
+        theta = u[CU_COLLECTIVE] + u[CU_DIFFERENTIAL] if r == 0 else u[CU_COLLECTIVE] - u[CU_DIFFERENTIAL]
         k = V_ROTOR + N_RO * r
         gx, gy, gz, torque = _rotor(cp, rp, scratch, ax, ay, az, rho, theta, out, k)
         if out[k + R_STATUS] != STATUS_OK:

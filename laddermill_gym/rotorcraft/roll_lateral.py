@@ -172,7 +172,7 @@ def _add_rotors(cfg, wf, s_mod, d_mod, out, pos, R0, b, D, K) -> float:
         w_g = np.array(wind_at(hg[2], wf, s_mod, d_mod))
         w_b = R0.T @ w_g
         rho = density(-hg[2], wf)
-        blk = out[6 + _kc.N_RO * r: 6 + _kc.N_RO * (r + 1)]
+        blk = out[_kc.V_ROTOR + _kc.N_RO * r: _kc.V_ROTOR + _kc.N_RO * (r + 1)]
         H, mu, lam, th = blk[_kc.R_HFORCE], blk[_kc.R_MU], blk[_kc.R_LAMBDA], blk[_kc.R_THETA]
         dT_dvn, dT_dvip, dT_dth = _thrust_partials(rp, mu, lam, th, rho, Rr, Om)
         vip = math.hypot(w_b[0], w_b[1])

@@ -19,6 +19,8 @@ from laddermill_gym.kernels.contract import (
     B3_SIZE,
     B3_VEL,
     CTRL_ELEVATOR,
+    DOF_B2,
+    DOF_B3,
     END_NODE,
     N2_POS,
     N2_SIZE,
@@ -156,7 +158,7 @@ def body_masses(sim) -> np.ndarray:
     """The mass [kg] of every body, wings then free nodes (:func:`mass_scales`' linear entries)."""
     a = sim.assembly
     s = mass_scales(sim)
-    per = 2 * a.dim if a.dim == 3 else 3
+    per = DOF_B3 if a.dim == 3 else DOF_B2
     return np.concatenate([s[per * k: per * k + 1] for k in range(a.n_wings)] + [s[per * a.n_wings::a.dim]])
 
 

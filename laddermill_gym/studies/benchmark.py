@@ -20,7 +20,7 @@ import time
 import numpy as np
 from numba import njit
 
-from laddermill_gym.kernels.contract import B3_RATE, B3_SIZE, B3_VEL
+from laddermill_gym.kernels.contract import B3_RATE, B3_SIZE, B3_VEL, CTRL_ELEVATOR, N_CONTROLS
 from laddermill_gym.kernels.integrate import rhs as rhs_kernel
 from laddermill_gym.kernels.integrate import rk4_advance
 from laddermill_gym.sim.simulator import SimulationError, Simulator
@@ -181,8 +181,8 @@ def _layout_state(scene):
     half = (n + 1) // 2
     el = [scene.initial.elevator_up if k < half else scene.initial.elevator_down for k in range(n)]
     pos, alphas = layout(scene, el)
-    u = np.zeros(3 * n)
-    u[0::3] = el
+    u = np.zeros(N_CONTROLS * n)
+    u[CTRL_ELEVATOR::N_CONTROLS] = el
     end = None if scene.end is None else scene.ground_points[scene.end]
     x = chain_state(a, scene.layout, pos, [[0.0, al, 0.0] for al in alphas], scene.ground_points[scene.start], end)
     if a.dim == 2:

@@ -27,6 +27,7 @@ from scipy.optimize import brentq
 from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.control.craft_lqr import design_craft_lqr
 from laddermill_gym.control.linearize import linearize
+from laddermill_gym.kernels.contract import B3_POS, CU_DIFFERENTIAL
 from laddermill_gym.rotorcraft.craft import Craft, CraftSimulator, load_craft
 from laddermill_gym.rotorcraft.roll_lateral import derive_roll_lateral, lateral_state, restricted_jacobian, sim_euler
 from laddermill_gym.sim.simulator import SimulationError
@@ -134,11 +135,13 @@ def closed_loop_run(design, t_end: float = 120.0, controller: bool = True, step:
         for k, v in zip(rec, (sim.t, z[0], z[1], sim_euler(sim.state)[2], d), strict=True):
             rec[k].append(v)
         try:
-            sim.step(np.array([design.u_trim[0], d]), n_sub)
+            u = design.u_trim.copy()
+            u[CU_DIFFERENTIAL] = d
+            sim.step(u, n_sub)
         except SimulationError:
             fail = sim.t
             break
-        if sim.state[2] > -1.0:  # CG within 1 m of the ground
+        if sim.state[B3_POS + 2] > -1.0:  # CG within 1 m of the ground (z down)
             fail = sim.t
             break
     out = {k: np.array(v) for k, v in rec.items()}

@@ -111,7 +111,7 @@ def run_episodes(controller, env_id: str, env_kwargs: dict, seeds, duration: flo
     return out
 
 
-def _settling_time(series: np.ndarray, dt: float, start: float, duration: float) -> float:
+def settling_time(series: np.ndarray, dt: float, start: float, duration: float) -> float:
     """Time [s] from ``start`` until the excursion e(t) stays within a band of its final value (the mean over
     the last 10 % of the episode, so a new equilibrium counts as settled); the band is SETTLE_BAND x the largest
     deviation from the final value after ``start``, at least SETTLE_FLOOR. nan if e still leaves the band in
@@ -149,7 +149,7 @@ def episode_metrics(rec: dict, ref_energy: np.ndarray, scenario: Scenario, names
             "energy_J": float(rec["energy_J"][b]),
             "energy_ratio": float(rec["energy_J"][b] / ref_energy[b]) if ref_energy[b] != 0 else math.nan,
             "peak_tension_ratio": float(rec["peak_tension_N"][b] / rec["limit_N"]),
-            "settling_time_s": _settling_time(rec["lateral"][:, b], dt, scenario.start, scenario.duration)
+            "settling_time_s": settling_time(rec["lateral"][:, b], dt, scenario.start, scenario.duration)
             if survived else math.nan,
             "control_effort": math.sqrt(rec["effort_sq"][b] / steps),
         })

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from laddermill_gym.kernels.contract import B3_POS
 from laddermill_gym.ladder.scene import Scene
 from laddermill_gym.studies.lateral_variants import SweepSpec, base_scene, variant_for
 
@@ -122,7 +123,7 @@ def evaluate(scene: Scene, value: float = float("nan")) -> VariantResult:
     osc = ev[ev.imag > 1e-9]
     osc_real = float(np.max(osc.real)) if osc.size else float("nan")
     # CG position relative to the ground station: elevation of the tether line above the horizon
-    rel = x[:3] - scene.ground_points[scene.start]
+    rel = x[B3_POS: B3_POS + 3] - scene.ground_points[scene.start]
     elevation = math.degrees(math.atan2(-rel[2], math.hypot(rel[0], rel[1])))
     lo, hi = scene.assembly.wing_types[0].control_limits[0]
     return VariantResult(float(value), max_real, period, osc_real, math.degrees(u[0]), elevation, ev,

@@ -30,6 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
+from laddermill_gym.kernels.contract import N_CONTROLS
 from laddermill_gym.model.configio import ConfigError
 from laddermill_gym.sim.simulator import SimulationError
 from laddermill_gym.sim.stable_step import UnstableStepWarning, estimate_stable_step
@@ -45,7 +46,7 @@ def control_limits(sim) -> tuple[np.ndarray, np.ndarray]:
     lo, hi = sim.initial_controls.copy(), sim.initial_controls.copy()  # station controls held
     for k in range(sim.assembly.n_wings):
         cl = sim.assembly.wing(k).control_limits
-        lo[3 * k: 3 * k + 3], hi[3 * k: 3 * k + 3] = cl[:, 0], cl[:, 1]
+        lo[N_CONTROLS * k: N_CONTROLS * (k + 1)], hi[N_CONTROLS * k: N_CONTROLS * (k + 1)] = cl[:, 0], cl[:, 1]
     return lo, hi
 
 

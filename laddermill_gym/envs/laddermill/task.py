@@ -43,7 +43,7 @@ from laddermill_gym.envs.laddermill.settings import (
     TerminationConfig,
 )
 from laddermill_gym.envs.task import config_from
-from laddermill_gym.kernels.contract import B3_QUAT, B3_RATE, B3_SIZE, B3_VEL, SX_ENERGY, SX_MOVED, SX_SPEED
+from laddermill_gym.kernels.contract import B3_QUAT, B3_RATE, B3_SIZE, B3_VEL, N_CONTROLS, SX_ENERGY, SX_MOVED, SX_SPEED
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
     AUX_GROUND_START,
@@ -181,9 +181,9 @@ class MillTask:
         if not isinstance(given, OperatingPoint):
             raise ValueError(f"operating_point = {given!r}: must be an OperatingPoint (envs.laddermill) or None")
         n, size = sc.assembly.n_wings, sc.assembly.state_size
-        if given.state.shape != (size,) or given.controls.shape != (3 * n,) or given.n_wings != n:
+        if given.state.shape != (size,) or given.controls.shape != (N_CONTROLS * n,) or given.n_wings != n:
             raise ValueError(f"operating_point: state {given.state.shape} / controls {given.controls.shape} do not "
-                             f"fit scene {sc.name} with {n} wings (state ({size},), controls ({3 * n},))")
+                             f"fit scene {sc.name} with {n} wings (state ({size},), controls ({N_CONTROLS * n},))")
         return given
 
     def _assembly(self):

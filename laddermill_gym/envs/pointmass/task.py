@@ -21,15 +21,26 @@ from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.pointmass.batch import POINTMASS_FAILURES, PointMassBatch, pointmass_start
 from laddermill_gym.envs.pointmass.mill import PointMassMillBatch, mill_task_start
 from laddermill_gym.envs.task import RewardConfig, config_from
-from laddermill_gym.kernels.contract import PM_GROUND, PM_OK, PU_PITCH, PU_ROLL, PU_SIZE
+from laddermill_gym.kernels.contract import (
+    PKO_OFFSET,
+    PKO_SIZE,
+    PKO_TENSION,
+    PKO_VELOCITY,
+    PM_GROUND,
+    PM_OK,
+    PU_PITCH,
+    PU_ROLL,
+    PU_SIZE,
+)
 from laddermill_gym.ladder.scene import load_scene
 from laddermill_gym.sim.pointmass import STATUS_TEXT
 
 __all__ = ["PointMassTask", "OBS_PER_KITE"]
 
-#: Observation entries per kite: position offset from the start (3) [m], velocity (3) [m/s], tension of the
-#: element below the kite [N]; then the tension at each ground point (start, and end for a chain) [N].
-OBS_PER_KITE = 7
+#: Observation entries per kite (slots ``PKO_*`` of ``kernels/contract.py``): position offset from the start (3)
+#: [m], velocity (3) [m/s], tension of the element below the kite [N]; then the tension at each ground point (start,
+#: and end for a chain) [N].
+OBS_PER_KITE = PKO_SIZE
 
 
 def _positive(name: str, v, unit: str) -> float:
@@ -145,9 +156,9 @@ class PointMassTask:
         """raw_obs from the states and tensions; obs = raw_obs clipped to the bounds (non-finite: the bound)."""
         b, nk = self.batch, self.string.n_kites
         per = self.raw_obs[:, : OBS_PER_KITE * nk].reshape(self.n_copies, nk, OBS_PER_KITE)
-        per[:, :, 0:3] = b.kite_positions() - self.nominal
-        per[:, :, 3:6] = b.kite_velocities()
-        per[:, :, 6] = b.kite_tensions()
+        per[:, :, PKO_OFFSET: PKO_OFFSET + 3] = b.kite_positions() - self.nominal
+        per[:, :, PKO_VELOCITY: PKO_VELOCITY + 3] = b.kite_velocities()
+        per[:, :, PKO_TENSION] = b.kite_tensions()
         self.raw_obs[:, OBS_PER_KITE * nk] = b.tension[:, 0]
         if self.n_ground == 2:
             self.raw_obs[:, -1] = b.tension[:, -1]

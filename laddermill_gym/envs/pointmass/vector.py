@@ -13,6 +13,7 @@ from laddermill_gym.envs.pointmass.batch import POINTMASS_FAILURES
 from laddermill_gym.envs.pointmass.env import check_task_arguments
 from laddermill_gym.envs.pointmass.task import OBS_PER_KITE, PointMassTask
 from laddermill_gym.envs.vector import TaskVectorEnv, check_vector_arguments
+from laddermill_gym.kernels.contract import PKO_OFFSET
 
 __all__ = ["PointMassVectorEnv"]
 
@@ -46,4 +47,4 @@ class PointMassVectorEnv(TaskVectorEnv):
         harness's and the gust benchmark's lateral read-out)."""
         nk = self.task.n_wings
         o = np.asarray(obs, dtype=float)[:, : OBS_PER_KITE * nk].reshape(self.num_envs, nk, OBS_PER_KITE)
-        return o[:, :, 1]
+        return o[:, :, PKO_OFFSET + 1]

@@ -32,7 +32,18 @@ from laddermill_gym.envs.pumping.settings import (
 )
 from laddermill_gym.envs.pumping.winch_scene import PumpingScene, WinchSimulator, electrical_energy, load_pumping
 from laddermill_gym.envs.task import config_from
-from laddermill_gym.kernels.contract import B3_QUAT, B3_RATE, B3_VEL, SX_ENERGY, SX_MOVED, SX_SPEED
+from laddermill_gym.kernels.contract import (
+    B3_POS,
+    B3_QUAT,
+    B3_RATE,
+    B3_VEL,
+    N_CONTROLS,
+    SX_ENERGY,
+    SX_MOVED,
+    SX_SPEED,
+    TM_DT,
+    TM_T0,
+)
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_START,
     N_AUX,
@@ -114,10 +125,10 @@ class PumpingTask:
         self.batch = BatchSimulator(asm, B, sc.settings, n_modulation=max(2, n_mod),
                                     n_grid=0 if geom is None else geom.floats)
         self.xoff = asm.body_state_size
-        self.nominal = np.array(x0[:3], dtype=float).reshape(1, 3)
+        self.nominal = np.array(x0[B3_POS: B3_POS + 3], dtype=float).reshape(1, 3)
         self.below = np.array([sc.layout.piece_elements[0][-1]], dtype=np.int64)
         self.ground = np.array([0, -1], dtype=np.int64)
-        self.actions = PumpingActionMap(asm.wing(0).control_limits, u0[:3], self.winch)
+        self.actions = PumpingActionMap(asm.wing(0).control_limits, u0[:N_CONTROLS], self.winch)
         self.n_actions = self.actions.n_actions
         self.obs_dim = N_OBS
         self.wing_obs = np.zeros((B, N_OBS - len(WINCH_OBS_INDEX)))
@@ -158,11 +169,12 @@ class PumpingTask:
         b, m = self.batch, self.batch.model
         x, t = b.states[i], float(b.t[i])
         a = b.air
-        s, d, _, _ = modulation(t, a.tmod[i, 0], a.tmod[i, 1], a.ms[i], a.md[i])
+        s, d, _, _ = modulation(t, a.tmod[i, TM_T0], a.tmod[i, TM_DT], a.ms[i], a.md[i])
         gp = None if a.gp is None else a.gp[i]
         gv = None if a.gv is None else a.gv[i]
-        w = np.array(wind_point(x[0], x[1], x[2], t, m.wf, s, d, gp, gv))
-        r = x[:3] - b.assembly.fixed_points[0]
+        p = x[B3_POS: B3_POS + 3]  # the wing's CG, body 0
+        w = np.array(wind_point(p[0], p[1], p[2], t, m.wf, s, d, gp, gv))
+        r = p - b.assembly.fixed_points[0]
         return float(w @ r / max(np.linalg.norm(r), 1e-9)), float(np.linalg.norm(w))
 
     def _compose(self) -> None:

@@ -20,7 +20,9 @@ generator energy [J]) plus ``MX_KITE_TRANSFERS``, the kites that have gone round
 
 from numba import njit
 
-from laddermill_gym.kernels.contract import (
+from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes of this module)
+    MX_KITE_TRANSFERS,
+    MX_SIZE,
     N3_POS,
     N3_SIZE,
     N3_VEL,
@@ -50,9 +52,6 @@ from laddermill_gym.kernels.pointmass.forces import element_geometry, element_te
 
 _FM = {"contract", "nsz", "arcp"}
 
-#: Station state slots beyond the rigid mill's ``SX_*``: kites transferred (signed) [-].
-MX_KITE_TRANSFERS = SX_SIZE
-MX_SIZE = SX_SIZE + 1
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)

@@ -45,6 +45,7 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
     CYP,
     CYR,
     N_COLUMNS,
+    N_LONGITUDINAL,
     TF_AREA,
     TF_CHORD,
     TF_RREF,
@@ -128,7 +129,6 @@ def wing_aero(k, tf, ac, a0, da, rho, ua, va, wa, p, q, r, de, dr, dal, ad0, coe
         out[AO_G + 2] = ua / d2
 
 
-N_LONGITUDINAL = 9  # CL, CD, Cm and their rate and elevator derivatives come first in the table
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})

@@ -14,11 +14,16 @@ from numba import njit, prange
 
 from laddermill_gym.atmosphere.wind_kernels import modulation, wind_point
 from laddermill_gym.kernels.batch import copy_views
-from laddermill_gym.kernels.contract import (
+from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes of this module)
+    AUX_GROUND_END,
+    AUX_GROUND_START,
+    AUX_MAX_TENSION,
+    AUX_MIN_ALTITUDE,
     B3_POS,
     B3_RATE,
     B3_SIZE,
     B3_VEL,
+    N_AUX,
     OBS_ALPHA,
     OBS_BETA,
     OBS_EULER,
@@ -32,13 +37,6 @@ from laddermill_gym.kernels.contract import (
 )
 from laddermill_gym.kernels.fixed_steps import advance_breaks
 from laddermill_gym.kernels.integrate import OK, SINGULAR, rhs
-
-#: Columns of the auxiliary output ``aux`` (B, N_AUX).
-AUX_MAX_TENSION = 0      # largest element tension [N]
-AUX_GROUND_START = 1     # tension of the element at the start ground point [N]
-AUX_GROUND_END = 2       # tension of the element at the end ground point [N] (0 if the chain has no end)
-AUX_MIN_ALTITUDE = 3     # lowest wing CG altitude -z [m]
-N_AUX = 4
 
 _FM = {"contract", "nsz", "arcp"}
 
