@@ -10,7 +10,8 @@ from __future__ import annotations
 import pytest
 
 from laddermill_gym import load_scene
-from laddermill_gym.kernels.integrate import H_MIN_REL, NONFINITE, STALLED, dp54_advance
+from laddermill_gym.kernels.contract import NONFINITE, STALLED
+from laddermill_gym.kernels.integrate import H_MIN_REL, dp54_advance
 from laddermill_gym.sim.simulator import SimulationError
 
 

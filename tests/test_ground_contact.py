@@ -23,13 +23,14 @@ from laddermill_gym.kernels.contract import (
     B3_POS,
     B3_QUAT,
     B3_SIZE,
+    GROUND,
     N2_POS,
     N2_SIZE,
     N3_POS,
     N3_SIZE,
     N3_VEL,
+    OK,
 )
-from laddermill_gym.kernels.integrate import GROUND, OK
 from laddermill_gym.ladder.scene import load_scene
 from laddermill_gym.model.builders import build_cable
 from laddermill_gym.model.configio import ConfigError

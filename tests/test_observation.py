@@ -19,7 +19,7 @@ from laddermill_gym.control.base import OBS_NAMES, observe
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_FIELDS, OBS_INDEX
 from laddermill_gym.envs.task import scene_trim
 from laddermill_gym.kernels import contract as C
-from laddermill_gym.kernels.integrate import OK
+from laddermill_gym.kernels.contract import OK
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
     AUX_GROUND_START,

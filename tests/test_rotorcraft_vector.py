@@ -16,7 +16,7 @@ from laddermill_gym.envs import ENV_IDS, DirectionStep, RandomPerturbation
 from laddermill_gym.envs.rotorcraft.env import CRAFT_OBS_INDEX, RotorcraftEnv
 from laddermill_gym.envs.rotorcraft.task import CraftTask
 from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv
-from laddermill_gym.rotorcraft.craft_observe import (
+from laddermill_gym.kernels.contract import (
     CA_ALTITUDE,
     CA_INFLOW_OK,
     CA_MAX_ELEMENT,

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from laddermill_gym import IntegratorSettings, SimulationError, load_scene
-from laddermill_gym.kernels.contract import B3_QUAT, B3_RATE, B3_VEL
-from laddermill_gym.kernels.integrate import NONFINITE, rk4_advance
+from laddermill_gym.kernels.contract import B3_QUAT, B3_RATE, B3_VEL, NONFINITE
+from laddermill_gym.kernels.integrate import rk4_advance
 from laddermill_gym.sim import simulator as simulator_module
 
 

@@ -10,7 +10,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from laddermill_gym.kernels.integrate import OK, dp54_advance
+from laddermill_gym.kernels.contract import OK
+from laddermill_gym.kernels.integrate import dp54_advance
 from laddermill_gym.kernels.rigid.rosenbrock_adaptive import w_adaptive
 from laddermill_gym.sim.breakpoints import W_ADAPTIVE
 from laddermill_gym.studies.scenes import build_simulator, with_settings

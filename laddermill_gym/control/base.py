@@ -10,7 +10,7 @@ from typing import Any, Protocol, runtime_checkable
 import numpy as np
 
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_FIELDS, OBS_INDEX
-from laddermill_gym.kernels.integrate import OK
+from laddermill_gym.kernels.contract import OK
 from laddermill_gym.kernels.rigid.observe import N_AUX, observe_state
 from laddermill_gym.model.params import Assembly
 from laddermill_gym.sim.simulator import SimulationError

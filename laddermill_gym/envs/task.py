@@ -28,8 +28,7 @@ from laddermill_gym.envs.task_settings import (  # noqa: F401
     check_reference_power,
     config_from,
 )
-from laddermill_gym.kernels.contract import B3_POS, B3_SIZE
-from laddermill_gym.kernels.integrate import GROUND, LIMIT, NONFINITE, OK, SINGULAR
+from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, GROUND, LIMIT, NONFINITE, OK, SINGULAR
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
     AUX_GROUND_START,

@@ -10,9 +10,8 @@ agree bit for bit.
 from numba import njit, prange, types
 from numba.extending import overload
 
-from laddermill_gym.kernels.contract import KModel, KWork
+from laddermill_gym.kernels.contract import OK, KModel, KWork
 from laddermill_gym.kernels.fixed_steps import advance_breaks, model_with_air
-from laddermill_gym.kernels.integrate import OK
 
 
 def detach_markers(M: KModel) -> tuple[KModel, object, object]:

@@ -24,6 +24,7 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
     B3_RATE,
     B3_SIZE,
     B3_VEL,
+    C_ETA,
     CA_ALTITUDE,
     CA_INFLOW_OK,
     CA_MAX_ELEMENT,
@@ -41,23 +42,22 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
     CO_VELOCITY,
     N_CRAFT_AUX,
     N_CRAFT_OBS,
-    REF_POSITION,
-    REF_SIZE,
-    REF_TENSION,
-    REF_THRUST,
-)
-from laddermill_gym.kernels.fixed_steps import advance_breaks
-from laddermill_gym.kernels.integrate import OK, SINGULAR, rhs
-from laddermill_gym.rotorcraft.craft_kernels import (
-    C_ETA,
     N_RO,
+    OK,
     R_POWER,
     R_STATUS,
     R_THETA,
     R_THRUST,
     R_TIP_AOA,
+    REF_POSITION,
+    REF_SIZE,
+    REF_TENSION,
+    REF_THRUST,
+    SINGULAR,
     V_ROTOR,
 )
+from laddermill_gym.kernels.fixed_steps import advance_breaks
+from laddermill_gym.kernels.integrate import rhs
 from laddermill_gym.rotorcraft.rotor_kernels import STATUS_OK
 
 #: The craft is rigid body 0 of its assembly.

@@ -12,9 +12,8 @@ import numpy as np
 
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.kernels.batch import detach_markers, fixed_batch
-from laddermill_gym.kernels.contract import GP_SIZE, KAir, KWork
+from laddermill_gym.kernels.contract import GP_SIZE, LIMIT, NONFINITE, OK, SINGULAR, KAir, KWork
 from laddermill_gym.kernels.dispatch import has_assemble
-from laddermill_gym.kernels.integrate import LIMIT, NONFINITE, OK, SINGULAR
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import Assembly

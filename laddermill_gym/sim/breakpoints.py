@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.kernels.contract import TM_DT, TM_SIZE, TM_T0
+from laddermill_gym.kernels.contract import OK, TM_DT, TM_SIZE, TM_T0
 from laddermill_gym.kernels.fixed_steps import (
     ALIGN_TOL,
     BREAKS_ENDS,
@@ -29,7 +29,7 @@ from laddermill_gym.kernels.fixed_steps import (
     fill_segment,
     is_kink,
 )
-from laddermill_gym.kernels.integrate import OK, dp54_advance
+from laddermill_gym.kernels.integrate import dp54_advance
 from laddermill_gym.kernels.rigid.rosenbrock import ROS2, ROS34PW2
 from laddermill_gym.kernels.rigid.rosenbrock_adaptive import w_adaptive
 

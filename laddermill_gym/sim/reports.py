@@ -20,24 +20,22 @@ from laddermill_gym.kernels.contract import (
     B3_QUAT,
     B3_RATE,
     B3_VEL,
+    BUDGET,
+    GROUND,
     LIM_GROUND,
     LIM_RATE,
     LIM_SPEED,
+    LIMIT,
     N2_POS,
     N2_VEL,
     N3_POS,
     N3_VEL,
-)
-from laddermill_gym.kernels.integrate import (
-    BUDGET,
-    GROUND,
-    LIMIT,
     NONFINITE,
     OK,
     SINGULAR,
     STALLED,
-    dp54_advance,
 )
+from laddermill_gym.kernels.integrate import dp54_advance
 from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
 from laddermill_gym.model.params import AERO_INDEX
 

@@ -13,9 +13,9 @@ from laddermill_gym.kernels.contract import (
     LIM_RATE,
     LIM_SIZE,
     LIM_SPEED,
+    OK,
 )
 from laddermill_gym.kernels.dispatch import has_assemble
-from laddermill_gym.kernels.integrate import OK
 from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model

@@ -15,8 +15,8 @@ import re
 
 import numpy as np
 
-from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_RATE, B3_SIZE, B3_VEL, N3_POS, N3_VEL
-from laddermill_gym.kernels.integrate import OK, dp54_advance
+from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_RATE, B3_SIZE, B3_VEL, N3_POS, N3_VEL, OK
+from laddermill_gym.kernels.integrate import dp54_advance
 from laddermill_gym.sim.breakpoints import W_METHODS
 from laddermill_gym.sim.simulator import SimulationError, Simulator
 from laddermill_gym.sim.stable_step import estimate_stable_step

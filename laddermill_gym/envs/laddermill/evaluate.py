@@ -8,8 +8,17 @@ import math
 import numpy as np
 
 from laddermill_gym.envs.laddermill.observation import N_OBS_PER_SLOT, OBS_INDEX
-from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, SX_ENERGY, SX_TRANSFERS
-from laddermill_gym.kernels.integrate import GROUND, LIMIT, NONFINITE, OK, SINGULAR
+from laddermill_gym.kernels.contract import (
+    B3_POS,
+    B3_SIZE,
+    GROUND,
+    LIMIT,
+    NONFINITE,
+    OK,
+    SINGULAR,
+    SX_ENERGY,
+    SX_TRANSFERS,
+)
 from laddermill_gym.kernels.rigid.observe import AUX_GROUND_END, AUX_GROUND_START, AUX_MAX_TENSION, AUX_MIN_ALTITUDE
 from laddermill_gym.sim.recording import ALPHA_RANGE_DEG, MAX_ABS_BETA_DEG
 from laddermill_gym.sim.reports import ground_stop_text

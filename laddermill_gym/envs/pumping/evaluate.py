@@ -9,8 +9,7 @@ import numpy as np
 
 from laddermill_gym.envs.observation import OBS_INDEX
 from laddermill_gym.envs.pumping.observation import WINCH_OBS_INDEX
-from laddermill_gym.kernels.contract import SX_ENERGY
-from laddermill_gym.kernels.integrate import GROUND, LIMIT, NONFINITE, OK, SINGULAR
+from laddermill_gym.kernels.contract import GROUND, LIMIT, NONFINITE, OK, SINGULAR, SX_ENERGY
 from laddermill_gym.kernels.rigid.observe import AUX_MAX_TENSION, AUX_MIN_ALTITUDE
 from laddermill_gym.sim.reports import ground_stop_text
 

@@ -14,8 +14,7 @@ import math
 import numpy as np
 
 from laddermill_gym.envs.observation import ObsField
-from laddermill_gym.rotorcraft.config import CraftConfig
-from laddermill_gym.rotorcraft.craft_observe import (
+from laddermill_gym.kernels.contract import (
     CO_EULER,
     CO_OFFSET,
     CO_PITCH,
@@ -25,6 +24,7 @@ from laddermill_gym.rotorcraft.craft_observe import (
     CO_VELOCITY,
     N_CRAFT_OBS,
 )
+from laddermill_gym.rotorcraft.config import CraftConfig
 
 __all__ = ["CRAFT_OBS_FIELDS", "CRAFT_OBS_INDEX", "N_CRAFT_OBS", "OBS_Y", "OBS_PHI", "OBS_VY", "OBS_P", "OBS_PSI",
            "OBS_R", "craft_observation_bounds"]

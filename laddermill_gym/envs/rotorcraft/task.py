@@ -27,11 +27,11 @@ from laddermill_gym.envs.rotorcraft.settings import (
 )
 from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim
 from laddermill_gym.envs.task import config_from
-from laddermill_gym.kernels.contract import B3_POS, B3_RATE, B3_SIZE, B3_VEL
-from laddermill_gym.kernels.integrate import GROUND, LIMIT, NONFINITE, OK, SINGULAR
-from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
-from laddermill_gym.rotorcraft.craft import TETHER_NAMES, CraftSimulator
-from laddermill_gym.rotorcraft.craft_observe import (
+from laddermill_gym.kernels.contract import (
+    B3_POS,
+    B3_RATE,
+    B3_SIZE,
+    B3_VEL,
     CA_ALTITUDE,
     CA_INFLOW_OK,
     CA_MAX_ELEMENT,
@@ -42,16 +42,21 @@ from laddermill_gym.rotorcraft.craft_observe import (
     CA_TIP_AOA,
     CO_EULER,
     CO_THRUST,
-    CRAFT_BODY,
+    GROUND,
+    LIMIT,
     N_CRAFT_AUX,
     N_CRAFT_OBS,
+    NONFINITE,
+    OK,
     REF_POSITION,
     REF_SIZE,
     REF_TENSION,
     REF_THRUST,
-    craft_step_observe_batch,
-    craft_step_observe_serial,
+    SINGULAR,
 )
+from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
+from laddermill_gym.rotorcraft.craft import TETHER_NAMES, CraftSimulator
+from laddermill_gym.rotorcraft.craft_observe import CRAFT_BODY, craft_step_observe_batch, craft_step_observe_serial
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.reports import ground_stop_text
 

@@ -32,11 +32,13 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes 
     OBS_SIZE,
     OBS_TENSION,
     OBS_VELOCITY,
+    OK,
+    SINGULAR,
     TM_DT,
     TM_T0,
 )
 from laddermill_gym.kernels.fixed_steps import advance_breaks
-from laddermill_gym.kernels.integrate import OK, SINGULAR, rhs
+from laddermill_gym.kernels.integrate import rhs
 
 _FM = {"contract", "nsz", "arcp"}
 

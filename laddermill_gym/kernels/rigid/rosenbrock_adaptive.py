@@ -18,18 +18,9 @@ import math
 
 from numba import njit
 
+from laddermill_gym.kernels.contract import BUDGET, GROUND, LIMIT, NONFINITE, OK, SINGULAR, STALLED
 from laddermill_gym.kernels.dispatch import model_check
-from laddermill_gym.kernels.integrate import (
-    BUDGET,
-    GROUND,
-    H_MIN_REL,
-    LIMIT,
-    NONFINITE,
-    OK,
-    SINGULAR,
-    STALLED,
-    all_finite,
-)
+from laddermill_gym.kernels.integrate import H_MIN_REL, all_finite
 from laddermill_gym.kernels.rigid.rosenbrock import w_step
 
 _FM = {"contract", "nsz", "arcp"}
