@@ -1,7 +1,8 @@
 """The house rules of ARCHITECTURE.md ("Layers", "Rules"), checked on the source (issue 11 point 1 and 2): layers
-import downward only, no import cycles, no module imports another's private name, files under 400 lines, functions
-under 80 unless a kernel says why, no literal state offset outside the data contract, and every folder's
-``__init__.py`` says what it may import. The oracle is the layer table below, written from ARCHITECTURE.md."""
+import downward only, no import circle (lazy imports inside functions included, issue 28), no module imports
+another's private name, files under 400 lines, functions under 80 unless a kernel says why, no literal state offset
+outside the data contract, and every folder's ``__init__.py`` says what it may import. The oracle is the layer
+table below, written from ARCHITECTURE.md."""
 
 from __future__ import annotations
 
@@ -32,7 +33,7 @@ RANK = {
 #: Parts whose ``__init__.py`` names exactly what they may import (beside themselves): held to that list.
 ONLY = {
     "atmosphere": {"contract"},
-    "kernels": {"contract", "atmosphere"},
+    "kernels": {"contract"},  # the bottom layer: the wind sampling kernels live in kernels/wind.py
     "model": {"contract", "kernels", "atmosphere", "configs"},
     "reference": {"contract", "model"},
     "sim": {"contract", "kernels", "atmosphere", "model"},
@@ -117,33 +118,75 @@ def _import_time(body):
             yield from _import_time(getattr(node, field, []) or [])
 
 
-def test_no_module_level_import_cycle():
-    graph = defaultdict(set)
-    modules = {_module(p): p for p in _sources("laddermill_gym")}
+def _package_modules() -> dict[str, Path]:
+    return {_module(p): p for p in _sources("laddermill_gym")}
+
+
+def _import_graph(modules: dict[str, Path], statements=ast.walk):
+    """{module: {imported module: first line}} over the package's modules, from the import statements that
+    ``statements(tree)`` yields (``ast.walk``: every import, lazy ones inside functions too; ``_import_time``: those
+    that run when the module is imported); ``modules``: {dotted name: file}. ``from A import B`` is an edge to
+    ``A.B`` when that is a module, else to ``A``; the packages above an imported module are not edges (their
+    ``__init__`` runs, but cannot import the importer back without a cycle of its own)."""
+    graph: dict[str, dict[str, int]] = defaultdict(dict)
     for name, path in modules.items():
-        for node in _import_time(ast.parse(path.read_text()).body):
+        for node in statements(ast.parse(path.read_text())):
             if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("laddermill_gym"):
-                for a in node.names:
-                    full = f"{node.module}.{a.name}"
-                    graph[name].add(full if full in modules else node.module)
+                targets = [f"{node.module}.{a.name}" if f"{node.module}.{a.name}" in modules else node.module
+                           for a in node.names]
             elif isinstance(node, ast.Import):
-                graph[name].update(a.name for a in node.names if a.name.startswith("laddermill_gym"))
-    state: dict[str, int] = {}
-
-    def visit(m, stack):
-        state[m] = 1
-        for n in graph.get(m, ()):
-            if n == m or n not in modules:
+                targets = [a.name for a in node.names if a.name.startswith("laddermill_gym")]
+            else:
                 continue
-            if state.get(n) == 1:
-                raise AssertionError(f"import cycle: {' -> '.join(stack[stack.index(n):] + [n])}")
-            if n not in state:
-                visit(n, stack + [n])
-        state[m] = 2
+            for target in targets:
+                if target in modules and target != name:
+                    graph[name].setdefault(target, node.lineno)
+    return graph
 
-    for m in modules:
-        if m not in state:
-            visit(m, [m])
+
+def _circles(graph) -> list[str]:
+    """Every import circle of ``graph`` (its strongly connected components of two or more modules, Tarjan's
+    algorithm), each written as its modules and the import lines that close it, sorted."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    found = []
+
+    def visit(m):
+        index[m] = low[m] = len(index)
+        stack.append(m)
+        for n in graph.get(m, ()):
+            if n not in index:
+                visit(n)
+                low[m] = min(low[m], low[n])
+            elif n in stack:
+                low[m] = min(low[m], index[n])
+        if low[m] == index[m]:
+            component = []
+            while not component or component[-1] != m:
+                component.append(stack.pop())
+            if len(component) > 1:
+                found.append(sorted(component))
+
+    for m in sorted(graph):
+        if m not in index:
+            visit(m)
+    short = {m: m.split(".", 1)[-1] for c in found for m in c}
+    return sorted(" <-> ".join(short[m] for m in c) + ": " + ", ".join(
+        f"{short[a]}:{graph[a][b]} imports {short[b]}" for a in c for b in sorted(graph[a]) if b in c)
+        for c in found)
+
+
+def test_no_module_level_import_cycle():
+    circles = _circles(_import_graph(_package_modules(), lambda tree: _import_time(tree.body)))
+    assert not circles, "import cycles when the modules load:\n" + "\n".join(circles)
+
+
+def test_no_import_circle_even_through_lazy_imports():
+    """An import inside a function still ties the two modules together: every import, at any depth, goes one way
+    (issue 28 point 4), inside a folder as between folders."""
+    circles = _circles(_import_graph(_package_modules()))
+    assert not circles, "import circles (lazy imports included):\n" + "\n".join(circles)
 
 
 def test_no_module_imports_a_private_name_of_another():
@@ -228,3 +271,14 @@ def test_the_checks_catch_what_they_look_for(tmp_path):
                    "except ImportError:\n    pass\nprint(gb._hidden, batch._x, gb.__doc__)\n")
     assert [name for _, name in _private_attributes(src)] == ["gb._hidden", "batch._x"]
     assert sum(isinstance(n, ast.ImportFrom) for n in _import_time(ast.parse(src.read_text()).body)) == 1
+    # a circle closed by a lazy import: found over every import, not over the import-time ones
+    pkg = tmp_path / "laddermill_gym"
+    pkg.mkdir()
+    (pkg / "a.py").write_text("from laddermill_gym.b import g\n")
+    (pkg / "b.py").write_text("def g():\n    from laddermill_gym import a\n    return a\n")
+    (pkg / "c.py").write_text("import laddermill_gym.a\n")
+    modules = {f"laddermill_gym.{m}": pkg / f"{m}.py" for m in "abc"}
+    assert _circles(_import_graph(modules)) == ["a <-> b: a:1 imports b, b:2 imports a"]
+    assert _circles(_import_graph(modules, lambda tree: _import_time(tree.body))) == []
+    assert _circles({"x": {"y": 1}, "y": {"z": 2}, "z": {"x": 3, "w": 4}, "w": {}}) == [
+        "x <-> y <-> z: x:1 imports y, y:2 imports z, z:3 imports x"]
