@@ -47,10 +47,10 @@ figures:
 	laddermill evaluate --env laddermill_gym/LadderChain-v0 --episodes 1 --out results/ladder_chain \
 		--controllers open_loop lqr lqr:configs/agents/lqr_ladder_chain_central.yaml
 	cp results/ladder_chain/lateral.png $(FIG)/ladder_chain_controllers.png
-	python -m laddermill_gym.studies.craft_stability --out results/craft_stability
+	python -m laddermill_gym.studies.rotorcraft.craft_stability --out results/craft_stability
 	cp results/craft_stability/rotorcraft_stability.png $(FIG)/rotorcraft_stability.png
-	python -m laddermill_gym.studies.rotor_chart --out $(FIG)/rotor_power_chart.png --csv results/rotor_power_chart.csv
-	python -m laddermill_gym.studies.meijaard --out results/meijaard
+	python -m laddermill_gym.studies.rotorcraft.rotor_chart --out $(FIG)/rotor_power_chart.png --csv results/rotor_power_chart.csv
+	python -m laddermill_gym.studies.mill.meijaard --out results/meijaard
 	cp results/meijaard/fig6_shapes.png $(FIG)/meijaard_fig6_shapes.png
 	cp results/meijaard/fig7_tension.png $(FIG)/meijaard_fig7_tension.png
 	cp results/meijaard/fig8_direction_step.png $(FIG)/meijaard_fig8_direction_step.png

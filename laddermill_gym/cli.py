@@ -153,8 +153,9 @@ def cmd_simulate(args) -> int:
 
 
 def _check_step(sim) -> None:
-    """Print the RK4 step against its estimated stability limit at the start (studies.stable_step: eigenvalues of
-    the Jacobian), with a warning line when the step is beyond it (the run could oscillate without failing)."""
+    """Print the RK4 step against its estimated stability limit at the start (studies.numerics.stable_step:
+    eigenvalues of the Jacobian), with a warning line when the step is beyond it (the run could oscillate without
+    failing)."""
     import warnings
 
     from laddermill_gym.sim.stable_step import check_step
@@ -187,14 +188,14 @@ def _flag_lines(rec) -> list[str]:
 
 
 def cmd_bench(args) -> int:
-    from laddermill_gym.studies.benchmark import run_benchmark
-    from laddermill_gym.studies.mill_benchmark import bench_mill
+    from laddermill_gym.studies.benchmarks.benchmark import run_benchmark
+    from laddermill_gym.studies.mill.mill_benchmark import bench_mill
 
     res = run_benchmark(quick=args.quick, scenes=args.scenes)
     if not args.no_mill:
         res["laddermill"] = bench_mill(quick=args.quick)
     if not args.no_pointmass:
-        from laddermill_gym.studies.pointmass_benchmark import run_pointmass_benchmark
+        from laddermill_gym.studies.pointmass.pointmass_benchmark import run_pointmass_benchmark
 
         res["pointmass"] = run_pointmass_benchmark(quick=args.quick)
     if args.json:
@@ -204,7 +205,7 @@ def cmd_bench(args) -> int:
 
 
 def cmd_bench_envs(args) -> int:
-    from laddermill_gym.studies.env_benchmark import run_env_benchmark
+    from laddermill_gym.studies.benchmarks.env_benchmark import run_env_benchmark
 
     run_env_benchmark(quick=args.quick, json_path=args.json)
     return 0
@@ -231,19 +232,19 @@ FORWARDED: dict[str, tuple[str, str]] = {
             "modes; optionally fly it against open loop"),
     "site": ("laddermill_gym.quasisteady.cli", "pumping kite: quasi-steady power and site optimisation on wind data "
              "(Lansdorp et al. 2008, Tables 1-2, Figs. 10-20, a turbine beside it)"),
-    "work-precision": ("laddermill_gym.studies.work_precision", "error against run time of the integrators on a "
-                       "scene (RK4 over dt, DP5(4) over tolerances; smooth and non-smooth forcing)"),
-    "stable-step": ("laddermill_gym.studies.stable_step", "estimate the largest stable explicit step of a scene from "
-                    "the eigenvalues of its Jacobian"),
-    "stress": ("laddermill_gym.studies.stress", "numerical stress suite of a scene: stable steps, hour-long runs, "
-               "slack-taut, wind extremes, bang-bang controls, injected NaN, env episodes"),
+    "work-precision": ("laddermill_gym.studies.numerics.work_precision", "error against run time of the integrators "
+                       "on a scene (RK4 over dt, DP5(4) over tolerances; smooth and non-smooth forcing)"),
+    "stable-step": ("laddermill_gym.studies.numerics.stable_step", "estimate the largest stable explicit step of a "
+                    "scene from the eigenvalues of its Jacobian"),
+    "stress": ("laddermill_gym.studies.numerics.stress", "numerical stress suite of a scene: stable steps, hour-long "
+               "runs, slack-taut, wind extremes, bang-bang controls, injected NaN, env episodes"),
     "train-seeds": ("laddermill_gym.harness.train_seeds", "train one config with several seeds, serially, on "
                     "local processes (--workers N) or on Ray (--ray)"),
     "workers": ("laddermill_gym.studies.parallel", "laddermill workers warm: prepare a node for --workers / --ray "
                 "(fill numba's cache, compute the operating points once)"),
-    "pumping-cycle": ("laddermill_gym.studies.pumping_cycle", "pumping kite: the scripted cycle with the lateral "
-                      "LQR against the quasi-steady prediction (Lansdorp, Schmehl)"),
-    "gust-bench": ("laddermill_gym.studies.gust_bench", "run controllers on a versioned gust benchmark suite "
+    "pumping-cycle": ("laddermill_gym.studies.pumping.pumping_cycle", "pumping kite: the scripted cycle with the "
+                      "lateral LQR against the quasi-steady prediction (Lansdorp, Schmehl)"),
+    "gust-bench": ("laddermill_gym.studies.gusts.gust_bench", "run controllers on a versioned gust benchmark suite "
                    "(configs/benchmarks/); CSV, JSON and a scorecard"),
 }
 

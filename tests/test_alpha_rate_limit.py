@@ -15,8 +15,8 @@ import pytest
 
 from laddermill_gym.model.params import AERO_INDEX
 from laddermill_gym.sim.simulator import SimulationError
-from laddermill_gym.studies.scenes import build_simulator, with_settings
-from laddermill_gym.studies.stress import control_limits
+from laddermill_gym.studies.numerics.scenes import build_simulator, with_settings
+from laddermill_gym.studies.numerics.stress import control_limits
 
 
 @pytest.fixture(scope="module")

@@ -17,7 +17,7 @@ from laddermill_gym.rotorcraft.config import load_craft_config
 from laddermill_gym.rotorcraft.craft import CraftSimulator, load_craft
 from laddermill_gym.rotorcraft.roll_lateral import lateral_state, perturbed_state
 from laddermill_gym.rotorcraft.rotor import cable_angle, rotor_coefficients
-from laddermill_gym.studies.craft_stability import (
+from laddermill_gym.studies.rotorcraft.craft_stability import (
     closed_loop_run,
     growth_rate,
     jacobian_check,
@@ -238,7 +238,7 @@ def test_35m_crafts_trim_below_the_ideal_power_coefficient(name, alt):
     their incidence (no profile drag: an upper bound for any real rotor) and between half and all of the steady
     study's optimum, which chooses incidence and collective freely (2 % allowance: the study's density)."""
     from laddermill_gym.rotorcraft.rotor import ideal_power_coefficient
-    from laddermill_gym.studies.rotor_design import best_operating_point, load_design
+    from laddermill_gym.studies.rotorcraft.rotor_design import best_operating_point, load_design
 
     c = load_craft(name)
     sim = c.simulator()

@@ -1,4 +1,4 @@
-"""The gust benchmark (laddermill_gym/studies/gust_bench.py, gust_suite.py): the shipped suite loads, bad suites
+"""The gust benchmark (laddermill_gym/studies/gusts/gust_bench.py, gust_suite.py): the shipped suite loads, bad suites
 name file and field, every controller meets the same episodes, and the metrics against independent answers:
 a scenario without disturbance has energy ratio 1 (it is its own reference); the peak tension and the
 energy against a plain Gymnasium rollout of the same env and seed; the settling time of an exponential decay
@@ -17,8 +17,8 @@ import pytest
 import laddermill_gym  # noqa: F401  (registers the ids)
 from laddermill_gym.envs import ENV_IDS
 from laddermill_gym.model.configio import ConfigError
-from laddermill_gym.studies import gust_bench as gb
-from laddermill_gym.studies.gust_suite import load_suite
+from laddermill_gym.studies.gusts import gust_bench as gb
+from laddermill_gym.studies.gusts.gust_suite import load_suite
 
 TW = "laddermill_gym/TetheredWing-v0"
 SUITE = f"""

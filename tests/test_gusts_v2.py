@@ -22,8 +22,8 @@ from laddermill_gym.envs.laddermill.gust_extent import point_positions
 from laddermill_gym.envs.laddermill.task import MillTask
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.ladder.scene import load_scene
-from laddermill_gym.studies import gust_bench as gb
-from laddermill_gym.studies.gust_suite import load_suite
+from laddermill_gym.studies.gusts import gust_bench as gb
+from laddermill_gym.studies.gusts.gust_suite import load_suite
 
 LM, PK = "laddermill_gym/LadderMill-v0", "laddermill_gym/PumpingKite-v0"
 V2 = load_suite("gusts-v2")

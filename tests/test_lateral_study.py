@@ -1,4 +1,4 @@
-"""Lateral study (laddermill_gym/studies/lateral_study.py): its eigenvalues against the nonlinear wing.
+"""Lateral study (laddermill_gym/studies/lateral/lateral_study.py): its eigenvalues against the nonlinear wing.
 
 The study's claims (the default tethered wing is laterally unstable; a large enough dihedral effect makes it
 stable) rest on the eigenvalues of the linearised lateral model. The oracle here is a separate computation:
@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from laddermill_gym.studies.lateral_study import base_scene, lateral_eigenvalues, main, make_variant
+from laddermill_gym.studies.lateral.lateral_study import base_scene, lateral_eigenvalues, main, make_variant
 
 SAMPLE = 0.5     # [s] sampling interval of y(t)
 T_SETTLE = 10.0  # [s] fast modes (Re <= -1.7 1/s) decay by e^-17 before the fit window starts

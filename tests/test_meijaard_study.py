@@ -1,4 +1,4 @@
-"""The Meijaard et al. (1999) study (``laddermill_gym/studies/meijaard.py``) on an 11-wing mill with tiny times.
+"""The Meijaard et al. (1999) study (``laddermill_gym/studies/mill/meijaard.py``) on an 11-wing mill with tiny times.
 
 Oracles: closed-form areas for the loop width (a rectangle and a triangle); the mean tensions written to
 ``tension.csv`` times V_c for the power in ``power.csv`` (the power itself comes from the generator energy the
@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from laddermill_gym import Simulator
-from laddermill_gym.studies import meijaard as mj
+from laddermill_gym.studies.mill import meijaard as mj
 
 TINY = mj.Config(n_wings=11, max_time=10.0, max_time_3d=5.0, extra_s=2.0, after_step=2.0, dp54_wall=10.0,
                  speeds=(2.0,), ramp_s=5.0, slot=4, progress=False)
@@ -121,7 +121,7 @@ def test_breakdown_is_reported_not_hidden(study):
 
 @pytest.mark.slow
 def test_quick_command_end_to_end(tmp_path, capsys):
-    """``python -m laddermill_gym.studies.meijaard --quick`` on the 101-wing mill (about a minute): every file is
+    """``python -m laddermill_gym.studies.mill.meijaard --quick`` on the 101-wing mill (about a minute): every file is
     written, every case's line says whether it is periodic, and each direction-step run reports how it ended."""
     assert mj.main(["--quick", "--no-progress", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out

@@ -15,7 +15,7 @@ from numba import njit
 
 from laddermill_gym.kernels.dispatch import model_assemble
 from laddermill_gym.kernels.rigid.cable_jacobian import add_moving_end_force
-from laddermill_gym.studies.scenes import build_simulator, with_settings
+from laddermill_gym.studies.numerics.scenes import build_simulator, with_settings
 
 
 @njit

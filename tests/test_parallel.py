@@ -14,9 +14,9 @@ import sys
 import pytest
 
 import laddermill_gym  # noqa: F401  (registers the ids)
-from laddermill_gym.studies import gust_bench as gb
 from laddermill_gym.studies import parallel
-from laddermill_gym.studies.gust_suite import load_suite
+from laddermill_gym.studies.gusts import gust_bench as gb
+from laddermill_gym.studies.gusts.gust_suite import load_suite
 
 TW = "laddermill_gym/TetheredWing-v0"
 # One env, two scenarios (a gust and a small turbulence grid, so the warm-up covers both kernel variants), two
@@ -108,7 +108,7 @@ def test_each_ray_worker_warms_up_once_before_its_tasks():
 def test_a_failing_task_is_named_and_results_keep_the_task_order():
     squares = parallel.run_tasks([(pow, {})] * 0, progress=False)
     assert squares == []
-    with pytest.raises(RuntimeError, match=r"task 1 \(laddermill_gym.studies.gust_bench.episodes_task"):
+    with pytest.raises(RuntimeError, match=r"task 1 \(laddermill_gym.studies.gusts.gust_bench.episodes_task"):
         parallel.run_tasks([(parallel.worker_report, {}),
                             (gb.episodes_task, dict(env_id="laddermill_gym/NoSuchEnv-v0", env_kwargs={},
                                                     spec="open_loop", seeds=(0,), duration=1.0, disturbances=()))],
@@ -143,8 +143,8 @@ def test_ray_without_ray_installed_and_bad_training_options_exit_2(monkeypatch, 
 def test_lateral_study_on_two_workers_gives_the_serial_eigenvalues():
     import numpy as np
 
-    from laddermill_gym.studies.lateral_analysis import run_sweeps
-    from laddermill_gym.studies.lateral_variants import base_scene, sweep_specs
+    from laddermill_gym.studies.lateral.lateral_analysis import run_sweeps
+    from laddermill_gym.studies.lateral.lateral_variants import base_scene, sweep_specs
 
     specs = sweep_specs(base_scene(), quick=True)
     (r0, c0), (r2, c2) = (run_sweeps(specs, ["dihedral"], workers=w, progress=False) for w in (0, 2))

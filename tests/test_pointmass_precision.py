@@ -1,4 +1,4 @@
-"""``laddermill work-precision podgaets_5km`` (``studies/pointmass_precision.py``) on a short run.
+"""``laddermill work-precision podgaets_5km`` (``studies/numerics/pointmass_precision.py``) on a short run.
 
 Oracles: two independent scipy integrators (DOP853 and RK45) agreeing as the reference; the first order of both
 methods (error ratio dt1 / dt2 between steps, asymptotically).
@@ -11,8 +11,8 @@ import math
 
 import pytest
 
-from laddermill_gym.studies import pointmass_precision as pp
-from laddermill_gym.studies import work_precision as wp
+from laddermill_gym.studies.numerics import pointmass_precision as pp
+from laddermill_gym.studies.numerics import work_precision as wp
 
 
 @pytest.fixture(scope="module")

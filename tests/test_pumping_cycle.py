@@ -1,5 +1,5 @@
 """The scripted pumping cycle (control/pumping_cycle.py) and its quasi-steady comparison
-(studies/pumping_cycle.py): phase logic against hand-built observations, the lateral instability the LQR cures,
+(studies/pumping/pumping_cycle.py): phase logic against hand-built observations, the lateral instability the LQR cures,
 and the simulated cycle against Lansdorp et al. (2008) eqs. 10-14 fed with its own phase means."""
 
 import math
@@ -20,7 +20,7 @@ from laddermill_gym.envs.pumping.observation import N_OBS, WINCH_OBS_INDEX
 from laddermill_gym.envs.pumping.task import PumpingTask
 from laddermill_gym.model.params import AERO_INDEX
 from laddermill_gym.sim.statics import table_spline
-from laddermill_gym.studies.pumping_cycle import cycle_stats, quasi_steady, run_cycles
+from laddermill_gym.studies.pumping.pumping_cycle import cycle_stats, quasi_steady, run_cycles
 
 
 @pytest.fixture(scope="module")

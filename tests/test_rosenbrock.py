@@ -15,7 +15,7 @@ from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness
 from laddermill_gym.kernels.rigid.rosenbrock import ROS2, ROS34PW2
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.simulator import IntegratorSettings, SimulationError
-from laddermill_gym.studies.scenes import build_simulator, with_settings
+from laddermill_gym.studies.numerics.scenes import build_simulator, with_settings
 
 # published coefficients (alpha_ij, gamma_ij strictly lower, gamma, b, embedded bhat): Verwer et al. 1999; Rang &
 # Angermann 2005
@@ -230,7 +230,7 @@ def test_order_on_a_gust_with_kinks_at_the_step_ends():
     excites, the observed orders are the methods' (measured ratios ROS2 3.9, 4.2; ROS34PW2 8.1, 8.2 from 5 ms to
     1.25 ms). At larger steps the L-stable methods damp those modes and the error falls more slowly (ROS2: 1.3 mm
     at 50 ms and 25 ms, 0.7 mm at 12.5 ms: the missing vibration)."""
-    from laddermill_gym.studies.work_precision import forcing_setup
+    from laddermill_gym.studies.numerics.work_precision import forcing_setup
 
     base = build_simulator("tethered_wing")
     x0, wind = forcing_setup(base, "gust", 5.0)

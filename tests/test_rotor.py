@@ -307,7 +307,7 @@ def test_min_autorotation_angle_against_collective_scan():
 def test_roberts_chart_autorotation_at_the_configured_solidity(tmp_path):
     """With configs/rotors/roberts_rotor.yaml the chart's mu = 0.1 curve crosses C_p = 0 at 22.5 deg (the
     solidity was chosen for that: a calibration check), and the command writes its PNG and CSV."""
-    from laddermill_gym.studies import rotor_chart
+    from laddermill_gym.studies.rotorcraft import rotor_chart
 
     cfg = load_rotor_config(DEFAULT_ROTOR_CONFIG)
     assert cfg.blade_incidence_limit == pytest.approx(13.0 * DEG)

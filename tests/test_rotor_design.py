@@ -1,4 +1,5 @@
-"""Steady design study of the twin 35 m rotorcraft (laddermill_gym/studies/rotor_design.py, docs/rotorcraft_design.md).
+"""Steady design study of the twin 35 m rotorcraft (laddermill_gym/studies/rotorcraft/rotor_design.py,
+docs/rotorcraft_design.md).
 
 Independent oracles only: the ICAO standard-atmosphere table, the closed-form symmetric catenary, a discretised
 hanging chain solved by a different method (link-by-link force balance with shooting, and minimum potential
@@ -20,7 +21,7 @@ from scipy.optimize import fsolve, minimize
 
 from laddermill_gym.atmosphere import wind_kernels as kwind
 from laddermill_gym.rotorcraft.rotor import cable_angle, power_coefficient, rotor_coefficients
-from laddermill_gym.studies.rotor_design import (
+from laddermill_gym.studies.rotorcraft.rotor_design import (
     CRAFT_CONFIGS,
     ROBERTS_PEAK_POWER,
     best_operating_point,

@@ -1,4 +1,4 @@
-"""The automatic stable-step estimate (``studies/stable_step.py``).
+"""The automatic stable-step estimate (``studies/numerics/stable_step.py``).
 
 Oracles: RK4's stability boundary in closed form (2 sqrt 2 on the imaginary axis, the real root 2.7853 of
 |1 + x + x^2/2 + x^3/6 + x^4/24| = 1) and DP5(4)'s stability polynomial (1 + z + ... + z^5/120 + z^6/600,
@@ -16,8 +16,8 @@ import pytest
 from scipy.optimize import brentq
 
 from laddermill_gym.sim.simulator import SimulationError
-from laddermill_gym.studies import stable_step as ss
-from laddermill_gym.studies.scenes import build_simulator, with_settings
+from laddermill_gym.studies.numerics import stable_step as ss
+from laddermill_gym.studies.numerics.scenes import build_simulator, with_settings
 
 
 def test_stability_boundaries_closed_form():
@@ -76,7 +76,7 @@ def test_a_scene_past_its_stable_step_warns_when_its_simulator_is_made(monkeypat
     import warnings
 
     from laddermill_gym import load_scene
-    from laddermill_gym.ladder import scene as scene_module
+    from laddermill_gym.ladder import rigid_scene as scene_module
 
     monkeypatch.setattr(scene_module, "CHECKED_STEPS", set())  # checked once per process: forget earlier tests'
     with warnings.catch_warnings():

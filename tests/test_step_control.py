@@ -14,7 +14,7 @@ from laddermill_gym.kernels.contract import OK
 from laddermill_gym.kernels.integrate import dp54_advance
 from laddermill_gym.kernels.rigid.rosenbrock_adaptive import w_adaptive
 from laddermill_gym.sim.breakpoints import W_ADAPTIVE
-from laddermill_gym.studies.scenes import build_simulator, with_settings
+from laddermill_gym.studies.numerics.scenes import build_simulator, with_settings
 
 
 @pytest.mark.parametrize("method, tol", [("dp54", 1e-6), ("ros34pw2a", 1e-3)])

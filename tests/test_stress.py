@@ -1,7 +1,7 @@
-"""``laddermill stress`` (``studies/stress.py``, ``studies/stress_cases.py``): the small version.
+"""``laddermill stress`` (``studies/numerics/stress.py``, ``studies/numerics/stress_cases.py``): the small version.
 
-Oracles: the eigenvalue estimate of the stable step (``studies/stable_step.py``) for the bisection by simulation
-(two independent routes to one number); the injected entry's own name for the failure reports; the kinetic
+Oracles: the eigenvalue estimate of the stable step (``studies/numerics/stable_step.py``) for the bisection by
+simulation (two independent routes to one number); the injected entry's own name for the failure reports; the kinetic
 energy of a hand-built state in closed form; the env's documented failure codes for the episodes.
 """
 
@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 
 from laddermill_gym.kernels.contract import B3_RATE, B3_VEL
-from laddermill_gym.studies import stress, stress_cases
-from laddermill_gym.studies.scenes import build_simulator
+from laddermill_gym.studies.numerics import stress, stress_cases
+from laddermill_gym.studies.numerics.scenes import build_simulator
 
 
 def test_bisection_agrees_with_the_eigenvalue_estimate():

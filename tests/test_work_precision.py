@@ -1,4 +1,4 @@
-"""``laddermill work-precision`` (``studies/work_precision.py``) on a short run of the tethered wing.
+"""``laddermill work-precision`` (``studies/numerics/work_precision.py``) on a short run of the tethered wing.
 
 Oracles: scipy's DOP853 (an independent implementation) agreeing with our DP5(4) reference; RK4's theoretical
 fourth order (error ratio (dt1/dt2)^4 between grid steps) with breakpoint stepping, which the run across the
@@ -13,7 +13,7 @@ import json
 import numpy as np
 import pytest
 
-from laddermill_gym.studies import work_precision as wp
+from laddermill_gym.studies.numerics import work_precision as wp
 
 
 @pytest.fixture(scope="module")

@@ -15,8 +15,8 @@ the native vector env).
 
 torch runs on one thread unless ``--torch-threads`` or the environment variable ``LADDERMILL_TORCH_THREADS``
 says otherwise: the networks are small (two layers of 64 or 256) and torch's default, one thread per core, spends
-more time synchronising its threads than computing (measured by ``python -m laddermill_gym.studies.torch_threads``,
-docs/rl_zoo3.md).
+more time synchronising its threads than computing (measured by
+``python -m laddermill_gym.studies.benchmarks.torch_threads``, docs/rl_zoo3.md).
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """Plain-numpy reference (oracle) of the 3D right-hand side, written independently of the kernels: wind, rotations,
 wing, state, cable and rhs. Imports only ``model`` (typed parameters) and ``kernels.contract`` (slot names); the
-tests and ``studies/benchmark.py`` use it, the simulator never does."""
+tests and ``studies/benchmarks/benchmark.py`` use it, the simulator never does."""
 
 from laddermill_gym.reference.cable import (
     LENGTH_EPS,

@@ -11,7 +11,8 @@ running returns the results in the order of the tasks:
 
 Warm-up. A fresh process pays numba's compile of every kernel a task reaches on its first call (94 s of wall
 time for one environment on a loaded 2-core machine with an empty cache), or a load from the on-disk cache
-(``__pycache__`` or ``NUMBA_CACHE_DIR``, 0.43 s; measured by ``python -m laddermill_gym.studies.parallel_cost``).
+(``__pycache__`` or ``NUMBA_CACHE_DIR``, 0.43 s; measured by
+``python -m laddermill_gym.studies.benchmarks.parallel_cost``).
 Each worker therefore runs the caller's ``warmup`` tasks once, when it starts, before its first task (a short
 episode of every environment and controller the tasks use): the compile or cache load happens once per worker,
 never per task, and the worker's numba thread count is set to its share of the cores. A worker with another
@@ -306,8 +307,8 @@ def _warm_arguments(p: argparse.ArgumentParser) -> None:
 
 
 def _warm(args) -> int:
-    from laddermill_gym.studies.gust_bench import warmup_tasks
-    from laddermill_gym.studies.gust_suite import load_suite
+    from laddermill_gym.studies.gusts.gust_bench import warmup_tasks
+    from laddermill_gym.studies.gusts.gust_suite import load_suite
 
     t0 = time.perf_counter()
     for fn, kw in tqdm(warmup_tasks(load_suite("gusts-v1"), [], ["open_loop"]), desc="warm", unit="env"):

@@ -20,7 +20,7 @@ import numpy as np  # noqa: E402
 import laddermill_gym  # noqa: E402
 
 try:
-    from laddermill_gym.studies import benchmark as bm
+    from laddermill_gym.studies.benchmarks import benchmark as bm
 except ImportError:
     from laddermill_gym import benchmark as bm
 

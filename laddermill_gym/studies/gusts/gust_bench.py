@@ -1,0 +1,350 @@
+"""The scripted gust benchmark: run controllers on a versioned suite of named disturbance scenarios.
+
+    laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 --controllers open_loop lqr runs/ppo_x
+    python -m laddermill_gym.studies.gusts.gust_bench --suite gusts-v1 [--env ID ...] [--scenarios NAME ...] [--out DIR]
+        [--workers N] [--ray auto|local|ADDRESS]
+
+A suite (``configs/benchmarks/<name>.yaml``, read by :mod:`laddermill_gym.studies.gusts.gust_suite`) names, per
+environment, scenarios of a disturbance list, a duration and seeds; every controller meets the same episodes
+(same seeds, same wind). Per controller, scenario and seed: survived or the time and cause of failure, largest
+and RMS lateral excursion [m], energy produced [J] and its ratio to the same controller's undisturbed run (same
+seed and duration, no disturbance), peak tension over its limit, settling time [s] and control effort (RMS of
+the action's deviation from the trim action). Writes ``gust_bench.csv``, ``gust_bench.json`` and a scorecard
+figure per environment into ``--out`` (default ``results/gust_bench/<suite>``). The episode sets run serially,
+on ``--workers`` local processes or on Ray (:mod:`laddermill_gym.studies.parallel`, docs/scale_out.md), with
+the same rows.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from laddermill_gym.studies.gusts.gust_suite import Scenario, Suite, load_suite
+from laddermill_gym.studies.parallel import add_arguments, check_arguments
+
+__all__ = ["run_episodes", "episode_metrics", "episodes_task", "warmup_tasks", "run_suite", "write_outputs",
+           "add_parser", "main"]
+
+#: A copy counts as settled when its largest lateral excursion stays below this share of its peak after the
+#: disturbance's start (a 10 % band; chosen: the lateral motion of these systems is lightly damped).
+SETTLE_BAND = 0.1
+#: Excursion changes below this [m] count as settled (a floor for disturbances that hardly move the system).
+SETTLE_FLOOR = 1e-3
+
+
+def _lateral_fn(env, n: int, nw: int):
+    if hasattr(env, "lateral_offsets"):
+        return lambda o: np.asarray(env.lateral_offsets(o), dtype=float).reshape(n, -1)
+    from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX
+
+    return lambda o: o.reshape(n, nw, N_OBS_PER_WING)[:, :, OBS_INDEX["dy"]].astype(float)
+
+
+def _nominal_action(task) -> np.ndarray:
+    """The trim action (n_actions,) the control effort is measured from: the action map's ``nominal_action``, the
+    task's ``trim_action``, else zeros (PumpingKite-v0: a = 0 is the reel-out trim with the winch stopped, so there
+    the effort includes the cycle's winch commands)."""
+    actions = getattr(task, "actions", None)
+    if actions is not None and hasattr(actions, "nominal_action"):
+        return np.asarray(actions.nominal_action, dtype=float)
+    if hasattr(task, "trim_action"):
+        return np.asarray(task.trim_action, dtype=float)
+    return np.zeros(int(task.n_actions))
+
+
+def _tension(info) -> np.ndarray:
+    if "max_tension_N" in info:
+        return np.asarray(info["max_tension_N"], dtype=float)
+    return np.max(np.asarray(info["tether_tension_N"], dtype=float), axis=1)
+
+
+def run_episodes(controller, env_id: str, env_kwargs: dict, seeds, duration: float, disturbances) -> dict:
+    """One episode per seed (one vector-env copy each) of ``controller`` on ``env_id`` with ``env_kwargs``, the
+    given ``disturbances`` (mappings) and ``duration`` [s]. Returns arrays over the copies: ``t_end`` [s],
+    ``failure`` (code), ``cause`` (text), ``lateral`` (T + 1, n) largest |lateral offset| [m] (nan after the
+    end), ``lateral_sq`` (n,) sum of the mean-square offsets, ``energy_J``, ``peak_tension_N``, ``effort_sq``
+    (sum of mean-square action deviations), ``steps`` (n,), ``limit_N`` and ``control_dt`` [s]."""
+    import gymnasium as gym
+
+    n = len(seeds)
+    kw = dict(env_kwargs, episode_time=float(duration), disturbances=[dict(d) for d in disturbances])
+    env = gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **kw)
+    task = env.task
+    lateral = _lateral_fn(env, n, task.n_wings)
+    nominal = _nominal_action(task)
+    obs, _ = env.reset(seed=[int(s) for s in seeds])
+    alive = np.ones(n, bool)
+    out = {"t_end": np.zeros(n), "failure": np.zeros(n, int), "cause": [""] * n, "energy_J": np.zeros(n),
+           "peak_tension_N": np.zeros(n), "lateral_sq": np.zeros(n), "effort_sq": np.zeros(n),
+           "steps": np.zeros(n, int), "limit_N": float(task.breaking_tension), "control_dt": float(task.control_dt)}
+    dy = lateral(obs)
+    series = [np.max(np.abs(dy), axis=1)]
+    while alive.any():
+        a, _ = controller.predict(obs, deterministic=True)
+        obs, _, term, trunc, info = env.step(a)
+        dy = lateral(obs)
+        dev = np.asarray(a, dtype=float).reshape(n, -1) - nominal
+        out["energy_J"][alive] += task.control_dt * np.asarray(info["power_W"], dtype=float)[alive]
+        out["peak_tension_N"][alive] = np.maximum(out["peak_tension_N"][alive], _tension(info)[alive])
+        out["lateral_sq"][alive] += np.mean(dy ** 2, axis=1)[alive]
+        out["effort_sq"][alive] += np.mean(dev ** 2, axis=1)[alive]
+        out["steps"][alive] += 1
+        series.append(np.where(alive, np.max(np.abs(dy), axis=1), np.nan))
+        ended = alive & (term | trunc)
+        for b in np.flatnonzero(ended):
+            code = int(info["failure"][b])
+            out["failure"][b], out["t_end"][b] = code, float(info["t"][b])
+            out["cause"][b] = task.failure_text(int(b), code) if code else ""
+        alive &= ~ended
+    out["lateral"] = np.array(series)
+    from laddermill_gym.envs.task import FAILURES
+
+    out["failure_names"] = dict(getattr(env, "failure_names", None) or getattr(task, "failure_names", None)
+                                or FAILURES)
+    env.close()
+    return out
+
+
+def settling_time(series: np.ndarray, dt: float, start: float, duration: float) -> float:
+    """Time [s] from ``start`` until the excursion e(t) stays within a band of its final value (the mean over
+    the last 10 % of the episode, so a new equilibrium counts as settled); the band is SETTLE_BAND x the largest
+    deviation from the final value after ``start``, at least SETTLE_FLOOR. nan if e still leaves the band in
+    that last 10 % (not settled)."""
+    t = dt * np.arange(series.size)
+    after = (t >= start) & np.isfinite(series)
+    if not after.any():
+        return math.nan
+    ta, e = t[after], series[after]
+    tail = ta >= start + 0.9 * (duration - start)
+    final = float(np.mean(e[tail])) if tail.any() else float(e[-1])
+    d = np.abs(e - final)
+    band = max(SETTLE_BAND * float(np.max(d)), SETTLE_FLOOR)
+    if tail.any() and float(np.max(d[tail])) > band:
+        return math.nan
+    above = np.flatnonzero(d > band)
+    return float(ta[above[-1]] - start + dt) if above.size else 0.0
+
+
+def episode_metrics(rec: dict, ref_energy: np.ndarray, scenario: Scenario, names: dict) -> list[dict]:
+    """The per-seed rows of one controller on one scenario (``rec`` from :func:`run_episodes`, ``ref_energy``
+    the undisturbed runs' energies [J] per seed)."""
+    rows = []
+    dt = rec["control_dt"]
+    for b, seed in enumerate(scenario.seeds):
+        steps = max(int(rec["steps"][b]), 1)
+        code = int(rec["failure"][b])
+        survived = code == 0
+        rows.append({
+            "scenario": scenario.name, "seed": int(seed), "survived": survived,
+            "t_end_s": float(rec["t_end"][b]),
+            "failure": "" if survived else str(names.get(code, code)), "cause": rec["cause"][b],
+            "max_lateral_m": float(np.nanmax(rec["lateral"][:, b])),
+            "rms_lateral_m": math.sqrt(rec["lateral_sq"][b] / steps),
+            "energy_J": float(rec["energy_J"][b]),
+            "energy_ratio": float(rec["energy_J"][b] / ref_energy[b]) if ref_energy[b] != 0 else math.nan,
+            "peak_tension_ratio": float(rec["peak_tension_N"][b] / rec["limit_N"]),
+            "settling_time_s": settling_time(rec["lateral"][:, b], dt, scenario.start, scenario.duration)
+            if survived else math.nan,
+            "control_effort": math.sqrt(rec["effort_sq"][b] / steps),
+        })
+    return rows
+
+
+def _controller_label(spec: str) -> str:
+    if spec.startswith("lqr:"):
+        return "lqr:" + Path(spec[4:]).stem
+    p = Path(spec)
+    return (f"{p.parent.name}/{p.stem}" if p.is_file() else p.name) if p.exists() else spec
+
+
+def _policy_kwargs(spec: str) -> dict:
+    """The action / observation layout a trained policy's run folder carries (its ``config.yaml``); {} else."""
+    path = Path(spec)
+    folder = path if path.is_dir() else path.parent
+    if not (path.exists() and (folder / "config.yaml").is_file()):
+        return {}
+    from laddermill_gym.control.rl_config import load_rl_config
+
+    return load_rl_config(folder / "config.yaml").carried_env_kwargs()
+
+
+def _jobs(suite: Suite, env_ids, controllers, scenarios) -> list[tuple]:
+    """(env_id, env_kwargs with the policy's layout, controller spec, scenario) in the benchmark's order."""
+    env_ids = list(env_ids) or list(suite.envs)
+    for e in env_ids:
+        if e not in suite.envs:
+            raise ValueError(f"--env {e!r}: suite {suite.name} has {sorted(suite.envs)}")
+    jobs = []
+    for env_id in env_ids:
+        env_kwargs, scen = suite.envs[env_id]
+        chosen = [s for s in scen if not scenarios or s.name in scenarios]
+        jobs += [(env_id, dict(env_kwargs, **_policy_kwargs(spec)), spec, s) for spec in controllers for s in chosen]
+    return jobs
+
+
+def _absolute(spec: str) -> str:
+    """``spec`` with a file or folder it names made absolute (workers on Ray do not share the caller's
+    working directory); other specs as they are."""
+    prefix, name = ("lqr:", spec[4:]) if spec.startswith("lqr:") else ("", spec)
+    return prefix + str(Path(name).resolve()) if Path(name).exists() else spec
+
+
+def warmup_tasks(suite: Suite, env_ids, controllers, scenarios=None) -> list[tuple]:
+    """What a worker runs once before its first task (:mod:`laddermill_gym.studies.parallel`): per environment
+    and controller a WARMUP_S episode without disturbance and, if a chosen scenario has a gust grid, one with
+    the first such scenario's disturbances (numba compiles the grid-free and the grid code apart). This builds
+    the worker's controllers and compiles, or loads from numba's cache, every kernel the tasks reach."""
+    from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
+    from laddermill_gym.atmosphere.disturbances import grid_geometry
+
+    tasks: list[tuple] = [(forget_controllers, {})]
+    seen = set()
+    for env_id, kw, spec, s in _jobs(suite, env_ids, controllers, scenarios):
+        spatial = grid_geometry(parse_disturbances(list(s.disturbances)), s.duration) is not None
+        for dist in ((), s.disturbances) if spatial else ((),):
+            key = (env_id, spec, bool(dist))
+            if key not in seen:
+                seen.add(key)
+                tasks.append((episodes_task, dict(env_id=env_id, env_kwargs=kw, spec=_absolute(spec), seeds=(0,),
+                                                  duration=WARMUP_S, disturbances=dist)))
+    return tasks
+
+
+#: Length [s] of the warm-up episodes (several control steps of every environment).
+WARMUP_S = 0.5
+
+# Controllers as built, per (env id, spec, env kwargs), in this process (a worker builds each once).
+_CONTROLLERS: dict = {}
+
+
+def forget_controllers() -> None:
+    """Drop this process's built controllers (a run starts from the files as they are now)."""
+    _CONTROLLERS.clear()
+
+
+def episodes_task(env_id: str, env_kwargs: dict, spec: str, seeds, duration: float, disturbances) -> dict:
+    """A picklable task: :func:`run_episodes` of the controller ``spec`` (built once per process and copied for
+    every task, so a controller with internal state starts each task alike, whichever worker runs it)."""
+    import copy
+
+    from laddermill_gym.control.factory import make_controller
+
+    key = (env_id, spec, repr(sorted(env_kwargs.items())))
+    if key not in _CONTROLLERS:
+        _CONTROLLERS[key] = make_controller(spec, env_id, env_kwargs)
+    return run_episodes(copy.deepcopy(_CONTROLLERS[key]), env_id, env_kwargs, seeds, duration, disturbances)
+
+
+def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool = True, workers: int = 0,
+              ray: str | None = None) -> list[dict]:
+    """Every controller spec on every scenario of the chosen environments (all of the suite's if ``env_ids`` is
+    empty; scenario names filtered by ``scenarios``); rows as :func:`episode_metrics` plus env and controller.
+
+    The episode sets (each scenario's, and each undisturbed reference once per env, controller, duration and
+    seeds) are independent tasks run by :func:`laddermill_gym.studies.parallel.run_tasks`: serially
+    (``workers=0``), in ``workers`` local processes or on Ray (``ray``); the rows are the same either way."""
+    from laddermill_gym.studies.parallel import run_tasks
+
+    jobs = _jobs(suite, env_ids, controllers, scenarios)
+    tasks, refs, runs = [], {}, []
+    for env_id, kw, spec, s in jobs:
+        base = dict(env_id=env_id, env_kwargs=kw, spec=_absolute(spec), seeds=s.seeds, duration=s.duration)
+        ref_key = (env_id, spec, repr(sorted(kw.items())), s.duration, s.seeds)
+        if ref_key not in refs:
+            refs[ref_key] = len(tasks)
+            tasks.append((episodes_task, dict(base, disturbances=())))
+        runs.append((refs[ref_key], len(tasks)))
+        tasks.append((episodes_task, dict(base, disturbances=s.disturbances)))
+    results = run_tasks(tasks, workers=workers, ray=ray, warmup=warmup_tasks(suite, env_ids, controllers, scenarios),
+                        desc=f"gust-bench {suite.name}", unit="episode set", progress=progress)
+    rows = []
+    for (env_id, _, spec, s), (i_ref, i_run) in zip(jobs, runs, strict=True):
+        rec = results[i_run]
+        for row in episode_metrics(rec, results[i_ref]["energy_J"], s, rec["failure_names"]):
+            rows.append({"env": env_id, "controller": _controller_label(spec), **row})
+    return rows
+
+
+def write_outputs(rows: list[dict], suite: Suite, out: Path) -> list[Path]:
+    """``gust_bench.csv`` (one row per env, controller, scenario and seed), ``gust_bench.json`` (the suite, the
+    rows and per-(env, controller, scenario) summaries) and ``scorecard_<env>.png``; returns the paths."""
+    out.mkdir(parents=True, exist_ok=True)
+    paths = [out / "gust_bench.csv", out / "gust_bench.json"]
+    with open(paths[0], "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    summary = summarise(rows)
+    with open(paths[1], "w") as f:
+        json.dump({"suite": suite.name, "version": suite.version, "file": str(suite.path), "rows": rows,
+                   "summary": summary}, f, indent=1, default=lambda x: None if x != x else x)
+    from laddermill_gym.studies.gusts.gust_scorecard import plot_scorecard
+
+    for env_id in dict.fromkeys(r["env"] for r in rows):
+        paths.append(plot_scorecard([s for s in summary if s["env"] == env_id], env_id, suite.name,
+                                    out / f"scorecard_{env_id.split('/')[-1]}.png"))
+    return paths
+
+
+def summarise(rows: list[dict]) -> list[dict]:
+    """Per (env, controller, scenario): survival share, medians of the metrics over seeds (nan-aware)."""
+    groups: dict[tuple, list[dict]] = {}
+    for r in rows:
+        groups.setdefault((r["env"], r["controller"], r["scenario"]), []).append(r)
+    out = []
+    for (env_id, ctrl, scen), rs in groups.items():
+        s = {"env": env_id, "controller": ctrl, "scenario": scen, "n": len(rs),
+             "survived": sum(r["survived"] for r in rs) / len(rs)}
+        for k in ("t_end_s", "max_lateral_m", "rms_lateral_m", "energy_ratio", "peak_tension_ratio",
+                  "settling_time_s", "control_effort"):
+            v = np.array([r[k] for r in rs], dtype=float)
+            s[k] = float(np.nanmedian(v)) if np.isfinite(v).any() else math.nan
+        out.append(s)
+    return out
+
+
+def add_parser(sub) -> argparse.ArgumentParser:
+    """The ``gust-bench`` subcommand on an argparse subparsers object (sets ``func``)."""
+    p = sub.add_parser("gust-bench", help="run controllers on a versioned gust benchmark suite",
+                       description=__doc__.split("\n\n")[0])
+    _arguments(p)
+    p.set_defaults(func=_run)
+    return p
+
+
+def _arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--suite", default="gusts-v1", help="suite name in configs/benchmarks/ or a YAML path")
+    p.add_argument("--env", nargs="*", default=[], help="environment ids (default: all of the suite's)")
+    p.add_argument("--controllers", nargs="+", default=["open_loop"],
+                   help="open_loop, lqr, lqr:<config.yaml> or a training run folder / model file")
+    p.add_argument("--scenarios", nargs="*", default=[], help="scenario names (default: all)")
+    p.add_argument("--out", type=Path, help="output folder (default results/gust_bench/<suite>)")
+    add_arguments(p)
+
+
+def _run(args) -> int:
+    check_arguments(args, "laddermill gust-bench")
+    suite = load_suite(args.suite)
+    rows = run_suite(suite, args.env, args.controllers, args.scenarios, workers=args.workers, ray=args.ray)
+    if not rows:
+        raise SystemExit(f"no scenario of suite {suite.name} matches --scenarios {args.scenarios}")
+    out = args.out or Path("results") / "gust_bench" / suite.name
+    for path in write_outputs(rows, suite, out):
+        print(path)
+    return 0
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(prog="laddermill gust-bench", description=__doc__.split("\n\n")[0])
+    _arguments(p)
+    return _run(p.parse_args(argv))
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,49 @@
+"""``laddermill stable-step SCENE``: the largest stable step of the explicit methods (RK4, DP5(4)) of a scene from the
+eigenvalues of its Jacobian at the initial state. The estimate itself lives in ``sim/stable_step.py``."""
+
+from __future__ import annotations
+
+import argparse
+
+from laddermill_gym.sim.stable_step import (  # noqa: F401  (re-exported: the studies' and tests' names)
+    DENSE_MAX,
+    SAFETY,
+    TABLEAUX,
+    StableStep,
+    UnstableStepWarning,
+    check_step,
+    estimate_stable_step,
+    jacobian_eigenvalues,
+    ray_limit,
+    stability_function,
+)
+
+
+def add_parser(sub) -> argparse.ArgumentParser:
+    p = sub.add_parser("stable-step", help="estimate the largest stable explicit step of a scene")
+    p.add_argument("scene", help="scene name or YAML path, or 'roberts_flying_model' (the rotorcraft)")
+    p.add_argument("--elements-per-piece", type=int, default=None, help="override the scene's cable division")
+    p.set_defaults(func=_cmd)
+    return p
+
+
+def _cmd(args) -> int:
+    from laddermill_gym.studies.numerics.scenes import build_simulator
+
+    sim = build_simulator(args.scene, elements_per_piece=args.elements_per_piece)
+    print(f"{args.scene}: {sim.n_state} states, dt {sim.settings.dt:g} s")
+    for m in ("rk4", "dp54"):
+        print("  " + str(estimate_stable_step(sim, m)))
+    return 0
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="laddermill")
+    sub = parser.add_subparsers(dest="cmd", required=True)
+    add_parser(sub)
+    args = parser.parse_args(["stable-step", *(argv if argv is not None else __import__("sys").argv[1:])])
+    return args.func(args)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

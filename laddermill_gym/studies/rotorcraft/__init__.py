@@ -1,0 +1,3 @@
+"""Roberts' tethered twin-rotor craft: roll / lateral stability against eq. (6) (``craft_stability``), his power
+chart (``rotor_chart``) and the 35 m design study (``rotor_design`` with its data, physics, operating points,
+sweeps and output). May import the layers below studies; no topic of studies, never ``harness``."""
