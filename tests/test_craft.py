@@ -9,9 +9,9 @@ import re
 import numpy as np
 import pytest
 
-from laddermill_gym.atmosphere.wind_kernels import density, wind_at
 from laddermill_gym.control.craft_lqr import design_craft_lqr
 from laddermill_gym.control.linearize import linearize
+from laddermill_gym.kernels.wind import density, wind_at
 from laddermill_gym.model.configio import ConfigError
 from laddermill_gym.rotorcraft.config import load_craft_config
 from laddermill_gym.rotorcraft.craft import CraftSimulator, load_craft

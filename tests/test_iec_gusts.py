@@ -12,7 +12,7 @@ import pytest
 from laddermill_gym.atmosphere.disturbances import sample_wind_field
 from laddermill_gym.atmosphere.field import pack_wind_field
 from laddermill_gym.atmosphere.iec_gusts import ECD, EDC, EOG, EWS, Ramp, SpeedStep
-from laddermill_gym.atmosphere.wind_kernels import gust_at
+from laddermill_gym.kernels.wind import gust_at
 
 RNG = np.random.default_rng
 IA10 = dict(wind_class="IA", wind_speed=10.0, diameter=10.0, hub_height=100.0)

@@ -21,7 +21,7 @@ from laddermill_gym.ladder.scene import load_scene
 from laddermill_gym.model.states import rotation_from_euler
 from laddermill_gym.sim.statics import accelerations, mass_scales, rest_acceleration
 
-#: RK4 steps the scenes accept with 8 elements per piece (ladder/scene._refuse_impossible_step) [s]
+#: RK4 steps the scenes accept with 8 elements per piece (ladder/rigid_scene._refuse_impossible_step) [s]
 DT = {"tethered_wing": 0.0005, "ladder_chain": 0.001}
 
 
@@ -104,8 +104,8 @@ def _station_reaction(a, tension: float, far: np.ndarray) -> np.ndarray:
     """Force (3,) [N] (global, z down) of the first element, from the station at the origin to ``far`` [m], on the
     station: its tension along its chord plus the share of its loads the kernels lump at its ends (eq. 24 and
     docs/model.md: half its weight, and (l/6)(2 p_r + p_s) of its aerodynamic loads per length p at the ends)."""
-    from laddermill_gym.atmosphere.wind_kernels import density, wind_at
     from laddermill_gym.kernels.cable import aero_load
+    from laddermill_gym.kernels.wind import density, wind_at
     from laddermill_gym.model.packing import wind_fields
 
     ln = float(np.linalg.norm(far))

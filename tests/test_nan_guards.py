@@ -38,7 +38,7 @@ def test_nan_state_is_reported_not_crashed():
 
 def test_wind_modulation_at_a_nan_time_indexes_nothing():
     """A NaN time gives NaN factors (no table read); a finite time inside the grid interpolates linearly."""
-    from laddermill_gym.atmosphere.wind_kernels import modulation
+    from laddermill_gym.kernels.wind import modulation
 
     ms, md = np.array([1.0, 2.0, 4.0]), np.array([0.0, 0.1, 0.3])
     assert np.all(np.isnan(modulation(np.nan, 0.0, 0.5, ms, md)))

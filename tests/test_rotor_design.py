@@ -19,7 +19,7 @@ import pytest
 import yaml
 from scipy.optimize import fsolve, minimize
 
-from laddermill_gym.atmosphere import wind_kernels as kwind
+from laddermill_gym.kernels import wind as kwind
 from laddermill_gym.rotorcraft.rotor import cable_angle, power_coefficient, rotor_coefficients
 from laddermill_gym.studies.rotorcraft.rotor_design import (
     CRAFT_CONFIGS,

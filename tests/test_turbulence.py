@@ -20,7 +20,7 @@ from scipy.special import gamma, kv
 from laddermill_gym.atmosphere.disturbances import sample_wind_field
 from laddermill_gym.atmosphere.field import pack_wind_field
 from laddermill_gym.atmosphere.turbulence import Turbulence
-from laddermill_gym.atmosphere.wind_kernels import gust_at
+from laddermill_gym.kernels.wind import gust_at
 
 FT = 0.3048
 L_HIGH = 1750 * FT  # MIL-F-8785C scale above 2000 ft [m]
@@ -185,7 +185,7 @@ def test_fade_in_scales_the_field_and_its_rate():
     grid's, its rate along a moving point is the central difference of the sampled gust, and the plain-numpy
     reference (scipy interpolation) agrees."""
     from laddermill_gym.atmosphere.field import GustGrid, WindField
-    from laddermill_gym.atmosphere.wind_kernels import gust_rate
+    from laddermill_gym.kernels.wind import gust_rate
     from laddermill_gym.model.params import WindParams
     from laddermill_gym.reference.wind import gust_rate as ref_rate
     from laddermill_gym.reference.wind import gust_velocity

@@ -1,4 +1,4 @@
-"""The air's variation in time and space (laddermill_gym/atmosphere/field.py, wind_kernels.py).
+"""The air's variation in time and space (laddermill_gym/atmosphere/field.py, kernels/wind.py).
 
 Oracles: closed forms (a bilinear field is reproduced exactly by bilinear interpolation; a frozen field
 advected at U is the t = 0 field shifted by U t; the rate along a path is the derivative of the sampled wind,
@@ -16,7 +16,7 @@ import pytest
 
 from laddermill_gym import reference as ref
 from laddermill_gym.atmosphere.field import GustGrid, WindField, pack_wind_field
-from laddermill_gym.atmosphere.wind_kernels import gust_at, wind_point, wind_point_rate
+from laddermill_gym.kernels.wind import gust_at, wind_point, wind_point_rate
 from laddermill_gym.model.params import WindParams
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.simulator import Simulator
@@ -71,7 +71,7 @@ def test_rate_along_a_path_is_the_derivative_of_the_wind():
     f = WindField(0.0, 0.5, 1.0 + 0.1 * np.sin(np.arange(8.0)), 0.05 * np.cos(np.arange(8.0)),
                   bilinear_grid(0.5, 0.003, 0.01))
     tmod, ms, md, gp, gv = pack_wind_field(f)
-    from laddermill_gym.atmosphere.wind_kernels import modulation
+    from laddermill_gym.kernels.wind import modulation
     from laddermill_gym.model.packing import wind_fields
 
     wf = wind_fields(wind)

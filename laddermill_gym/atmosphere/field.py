@@ -3,7 +3,7 @@ same way on a single simulator (:meth:`laddermill_gym.sim.simulator.Simulator.se
 (:meth:`laddermill_gym.sim.batch.BatchSimulator.set_wind`) or at build time (:meth:`WindParams.with_field
 <laddermill_gym.model.params.WindParams.with_field>`).
 
-A field has two parts (formulas in ``atmosphere/wind_kernels.py``):
+A field has two parts (formulas in ``kernels/wind.py``):
 
 * a **time modulation** of the profile: a speed factor s(t) [-] and a direction offset delta(t) [rad], sampled
   on the grid t0 + k dt and interpolated linearly (the disturbances of ``atmosphere/disturbances.py``);

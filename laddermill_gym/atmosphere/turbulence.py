@@ -2,7 +2,7 @@
 
 :class:`Turbulence` is a disturbance: at every reset it draws, from the env's ``np_random``, a
 :class:`~laddermill_gym.atmosphere.field.GustGrid` whose columns are the along-wind coordinate xi and whose rows
-are heights; the kernels sample it at every wing, cable node and rotor point (``atmosphere/wind_kernels.py``).
+are heights; the kernels sample it at every wing, cable node and rotor point (``kernels/wind.py``).
 Models (formulas and sources in ``turbulence_models.py`` and ``docs/wind.md``): IEC 61400-1 NTM and ETM with
 Kaimal spectra, MIL-F-8785C Dryden and von Karman (light / moderate / severe, intensities and scales with
 height).

@@ -181,7 +181,7 @@ N_LONGITUDINAL = CMDE + 1
 #: =========  ========================================================================================
 #: field      content
 #: =========  ========================================================================================
-#: wf, tmod,  the air, exactly as in ``KModel`` (``atmosphere/wind_kernels.wind_point``)
+#: wf, tmod,  the air, exactly as in ``KModel`` (``kernels/wind.wind_point``)
 #: ms, md,
 #: gp, gv
 #: par        scalars, slots ``PP_*``

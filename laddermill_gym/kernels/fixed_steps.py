@@ -18,10 +18,10 @@ import math
 
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import modulation
 from laddermill_gym.kernels.contract import OK, TM_DT, TM_T0, KModel
 from laddermill_gym.kernels.integrate import rk4_advance
 from laddermill_gym.kernels.rigid.rosenbrock import w_advance
+from laddermill_gym.kernels.wind import modulation
 
 #: a kink within this fraction of a step of the step's end is on it (see the module docstring)
 ALIGN_TOL = 1e-9

@@ -28,7 +28,7 @@ def _rest_state(scene, positions, elevators, ends):
     wind at the given positions (n, 3) [m] and elevator angles [rad]: wing aerodynamics and weight, plus
     half the weight and the cross-flow drag C_N0 sin^3 + C_T0 (eq. 23) of each neighbouring piece (pieces
     run between consecutive points of ``ends`` (n + 2, 3), which adds the chain's end points)."""
-    from laddermill_gym.atmosphere.wind_kernels import density, wind_at
+    from laddermill_gym.kernels.wind import density, wind_at
 
     a = scene.assembly
     wt = a.wing(0)
@@ -205,8 +205,8 @@ def cable_air(scene):
     """Aerodynamic load per length (k, 2) (x, z) [N/m] on cable at rest at midpoints (k, 3) [m] with unit tangents
     (k, 3), the kernels' eq. (24) (:func:`laddermill_gym.kernels.cable.aero_load`) in the scene's steady wind;
     None where the scene has no cable aerodynamics."""
-    from laddermill_gym.atmosphere.wind_kernels import density, wind_at
     from laddermill_gym.kernels.cable import aero_load
+    from laddermill_gym.kernels.wind import density, wind_at
 
     a = scene.assembly
     if not a.cable_aero:

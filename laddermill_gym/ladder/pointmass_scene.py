@@ -11,9 +11,9 @@ from pathlib import Path
 
 import numpy as np
 
-from laddermill_gym.atmosphere.wind_kernels import density, wind_point
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE
 from laddermill_gym.kernels.pointmass.forces import kite_force
+from laddermill_gym.kernels.wind import density, wind_point
 from laddermill_gym.model.configio import ConfigError, Section, config_path
 from laddermill_gym.model.pointmass import PointMassKite, PointMassString, attitude_controls, pack
 from laddermill_gym.model.pointmass_mill import PointMassStation, mill_layout, station_from_rigid

@@ -24,7 +24,6 @@ from collections import namedtuple
 
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import density, wind_point
 from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
     B3_POS,
     B3_RATE,
@@ -63,6 +62,7 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
     V_ROTOR,
 )
 from laddermill_gym.kernels.dispatch import register_vehicle
+from laddermill_gym.kernels.wind import density, wind_point
 from laddermill_gym.rotorcraft.rotor_kernels import (
     O_CT,
     O_LAMBDA,

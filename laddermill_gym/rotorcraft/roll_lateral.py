@@ -32,8 +32,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from laddermill_gym.atmosphere.wind_kernels import density, modulation, profile, wind_at
 from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_RATE, B3_SIZE, B3_VEL, N3_POS, N3_SIZE, TM_DT, TM_T0
+from laddermill_gym.kernels.wind import density, modulation, profile, wind_at
 from laddermill_gym.model.states import rotation_from_euler
 from laddermill_gym.rotorcraft import craft_kernels as _kc
 

@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.atmosphere.wind_kernels import modulation, wind_point
 from laddermill_gym.kernels.contract import (
     B2_Q,
     B2_SIZE,
@@ -30,6 +29,7 @@ from laddermill_gym.kernels.contract import (
     TM_DT,
     TM_T0,
 )
+from laddermill_gym.kernels.wind import modulation, wind_point
 from laddermill_gym.model.states import euler_from_quaternion
 from laddermill_gym.sim.reports import body_heights
 from laddermill_gym.sim.station_views import StationViews, station_state_name

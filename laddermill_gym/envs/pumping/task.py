@@ -19,7 +19,6 @@ from laddermill_gym.atmosphere.disturbances import (
     grid_geometry,
     sample_wind_field,
 )
-from laddermill_gym.atmosphere.wind_kernels import modulation, wind_point
 from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.pumping.actions import PumpingActionMap
 from laddermill_gym.envs.pumping.evaluate import evaluate_copies, failure_text
@@ -50,6 +49,7 @@ from laddermill_gym.kernels.rigid.observe import (
     step_observe_batch,
     step_observe_serial,
 )
+from laddermill_gym.kernels.wind import modulation, wind_point
 from laddermill_gym.model.states import rotations_from_quaternions
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.simulator import FIXED_STEP_METHODS

@@ -13,7 +13,6 @@ import math
 
 from numba import njit, prange
 
-from laddermill_gym.atmosphere.wind_kernels import modulation
 from laddermill_gym.kernels.contract import (
     N3_POS,
     N3_SIZE,
@@ -35,6 +34,7 @@ from laddermill_gym.kernels.pointmass.forces import (
     node_mass,
     string_force,
 )
+from laddermill_gym.kernels.wind import modulation
 
 _FM = {"contract", "nsz", "arcp"}
 

@@ -21,7 +21,6 @@ import math
 
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import density, wind_point
 from laddermill_gym.kernels.contract import (
     KT_ALPHA0,
     KT_AREA,
@@ -51,6 +50,7 @@ from laddermill_gym.kernels.contract import (
     PU_SIZE,
     PU_YAW,
 )
+from laddermill_gym.kernels.wind import density, wind_point
 
 _FM = {"contract", "nsz", "arcp"}
 

@@ -26,11 +26,11 @@ over the blocks (no right-hand side). The assembly and the move are parallel ove
 from numba import njit, prange
 from numba.np.ufunc.parallel import _iget_num_threads, _launch_threads
 
-from laddermill_gym.atmosphere.wind_kernels import modulation
 from laddermill_gym.kernels.contract import N3_SIZE, N3_VEL, PM_OK, PP_N, TM_DT, TM_T0
 from laddermill_gym.kernels.pointmass.explicit import CHUNK, move_and_check, tensions
 from laddermill_gym.kernels.pointmass.forces import external_force, node_mass, string_force
 from laddermill_gym.kernels.pointmass.partitioned import partitioned_solve, solver_parts
+from laddermill_gym.kernels.wind import modulation
 
 _FM = {"contract", "nsz", "arcp"}
 

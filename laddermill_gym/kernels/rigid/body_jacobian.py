@@ -19,9 +19,9 @@ that resolves it.
 
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import modulation
 from laddermill_gym.kernels.contract import B3_QUAT, B3_SIZE, B3_VEL, GL_GRAVITY, TF_MASS, TM_DT, TM_T0
 from laddermill_gym.kernels.dispatch import body_loads
+from laddermill_gym.kernels.wind import modulation
 
 _FM = {"contract", "nsz", "arcp"}
 #: Relative difference step of the load derivatives (forward differences: the square root of the float64 epsilon)

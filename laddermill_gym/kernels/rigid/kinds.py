@@ -11,7 +11,6 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import density, wind_point, wind_point_rate
 from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
     AO_FORCE,
     AO_G,
@@ -51,6 +50,7 @@ from laddermill_gym.kernels.dispatch import register_assemble, register_kind, re
 from laddermill_gym.kernels.rigid.aero import wing_aero
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
 from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
+from laddermill_gym.kernels.wind import density, wind_point, wind_point_rate
 
 _FM = {"contract", "nsz", "arcp"}
 

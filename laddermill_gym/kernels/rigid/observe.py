@@ -12,7 +12,6 @@ import math
 
 from numba import njit, prange
 
-from laddermill_gym.atmosphere.wind_kernels import modulation, wind_point
 from laddermill_gym.kernels.batch import copy_views
 from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes of this module)
     AUX_GROUND_END,
@@ -39,6 +38,7 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes 
 )
 from laddermill_gym.kernels.fixed_steps import advance_breaks
 from laddermill_gym.kernels.integrate import rhs
+from laddermill_gym.kernels.wind import modulation, wind_point
 
 _FM = {"contract", "nsz", "arcp"}
 

@@ -10,7 +10,6 @@ import math
 
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_point, wind_point_rate
 from laddermill_gym.kernels.cable import aero_load, lateral_elongation, tension_plain, tension_sag
 from laddermill_gym.kernels.contract import (
     AO2_FORCE_X,
@@ -48,6 +47,7 @@ from laddermill_gym.kernels.dispatch import elongation_rate, rest_length
 from laddermill_gym.kernels.rigid.aero import wing_aero_long
 from laddermill_gym.kernels.rigid.blocks import tree_solve
 from laddermill_gym.kernels.rigid.rhs3d import add_const_mass, block_of
+from laddermill_gym.kernels.wind import density, modulation, wind_point, wind_point_rate
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})

@@ -16,7 +16,6 @@ import math
 
 from numba import njit
 
-from laddermill_gym.atmosphere.wind_kernels import density, modulation, wind_point
 from laddermill_gym.kernels.cable import aero_load, lateral_elongation, tension_plain, tension_sag
 from laddermill_gym.kernels.contract import (
     B3_POS,
@@ -45,6 +44,7 @@ from laddermill_gym.kernels.contract import (
 from laddermill_gym.kernels.dispatch import body_loads, elongation_rate, rest_length
 from laddermill_gym.kernels.rigid.blocks import tree_solve
 from laddermill_gym.kernels.small import quat_rotation
+from laddermill_gym.kernels.wind import density, modulation, wind_point
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
