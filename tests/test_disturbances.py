@@ -8,12 +8,12 @@ import math
 import numpy as np
 import pytest
 
+from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_dict
 from laddermill_gym.atmosphere.disturbances import (
     DirectionStep,
     OneMinusCosineGust,
     RandomPerturbation,
     Schedule,
-    disturbance_from_dict,
     sample_modulation,
 )
 

@@ -28,7 +28,8 @@ from laddermill_gym.atmosphere.disturbances import (
 from laddermill_gym.atmosphere.iec_gusts import ECD, EDC, EOG, EWS, Ramp, SpeedStep
 from laddermill_gym.atmosphere.turbulence import Turbulence
 
-__all__ = ["DISTURBANCE_TYPES", "disturbance_from_spec", "disturbance_to_spec", "parse_disturbances"]
+__all__ = ["DISTURBANCE_TYPES", "disturbance_from_dict", "disturbance_from_spec", "disturbance_to_spec",
+           "parse_disturbances"]
 
 #: Every disturbance type a mapping may name.
 DISTURBANCE_TYPES: dict[str, type[Disturbance]] = {cls.__name__: cls for cls in (
@@ -76,6 +77,10 @@ def disturbance_from_spec(spec: dict, where: str = "disturbances") -> Disturbanc
     except (TypeError, ValueError) as err:
         raise ValueError(f"{where} ({kind}): {err}") from None
     return dist
+
+
+#: The name the agent configs (``control/rl_config.py``) read their ``disturbances:`` entries with.
+disturbance_from_dict = disturbance_from_spec
 
 
 def disturbance_to_spec(dist: Disturbance) -> dict:

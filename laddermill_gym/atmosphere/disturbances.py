@@ -13,7 +13,7 @@ grid interval, which is short against the wing's lateral dynamics (periods of ab
 Spatial disturbances (turbulence, ``atmosphere/turbulence.py``; the IEC extreme wind shear,
 ``atmosphere/iec_gusts.py``) also give a frozen gust grid (:meth:`Disturbance.gust_grid`); the grids of a
 composition are summed on one grid (:func:`~laddermill_gym.atmosphere.field.sum_grids`). Every disturbance
-can be written as plain data (``atmosphere/disturbance_spec.py``).
+can be written as plain data and read back (``atmosphere/disturbance_spec.py``, which imports this module).
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ import numpy as np
 from laddermill_gym.atmosphere.field import GridGeometry, WindField, sum_grids, union_geometry
 
 __all__ = ["Disturbance", "DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule",
-           "DISTURBANCE_TYPES", "disturbance_from_dict", "grid_geometry", "sample_modulation", "sample_wind_field"]
+           "DISTURBANCE_TYPES", "grid_geometry", "sample_modulation", "sample_wind_field"]
 
 
 def _draw(value, rng: np.random.Generator, name: str) -> float:
@@ -212,13 +212,3 @@ def sample_wind_field(disturbances, t_end: float, spacing: float, rng: np.random
 
 DISTURBANCE_TYPES: dict[str, type[Disturbance]] = {
     cls.__name__: cls for cls in (DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule)}
-
-
-def disturbance_from_dict(spec: dict, where: str = "disturbances") -> Disturbance:
-    """A disturbance from a config mapping ``{type: <class name>, <parameter>: value, ...}`` (every type of
-    :data:`laddermill_gym.atmosphere.disturbance_spec.DISTURBANCE_TYPES`: these, the IEC gusts, turbulence);
-    a parameter given as a two-element list is a (low, high) range drawn per episode where the type allows
-    it. Raises ValueError naming ``where``, the field and the value."""
-    from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_spec  # it imports this module
-
-    return disturbance_from_spec(spec, where)

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from laddermill_gym.atmosphere.disturbances import disturbance_from_dict
+from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_dict
 from laddermill_gym.envs import ENV_IDS, env_arguments, task_class
 from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
 from laddermill_gym.envs.task import WingTask
