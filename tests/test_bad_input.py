@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 import yaml
 
-from laddermill_gym.ladder.scene import CONFIG_DIR, load_scene
-from laddermill_gym.model.configio import ConfigError
+from laddermill_gym.ladder.scene import load_scene
+from laddermill_gym.model.configio import CONFIG_DIR, ConfigError
 from laddermill_gym.sim.simulator import SimulationError
 
 

@@ -57,7 +57,7 @@ def _table_lines():
     (lambda c: c.__setitem__(0, "-170.5"), r"line \d+, column 'alpha_deg' = -170.5: alpha must rise"),
 ])
 def test_bad_table_cells_name_line_and_column(tmp_path, edit, says):
-    from laddermill_gym.ladder.scene import load_wing_type
+    from laddermill_gym.ladder.scene_files import load_wing_type
 
     lines, h = _table_lines()
     cells = lines[h + 5].split(",")
@@ -69,7 +69,7 @@ def test_bad_table_cells_name_line_and_column(tmp_path, edit, says):
 
 
 def test_empty_or_comment_only_table_is_named(tmp_path):
-    from laddermill_gym.ladder.scene import load_wing_type
+    from laddermill_gym.ladder.scene_files import load_wing_type
 
     path = _wing_copy(tmp_path, "# nothing but a comment\n\n")
     with pytest.raises(ConfigError, match="no header and no rows"):
@@ -77,7 +77,7 @@ def test_empty_or_comment_only_table_is_named(tmp_path):
 
 
 def test_missing_table_names_the_wing_field(tmp_path):
-    from laddermill_gym.ladder.scene import load_wing_type
+    from laddermill_gym.ladder.scene_files import load_wing_type
 
     path = _wing_copy(tmp_path, aero_table="nowhere.csv")
     with pytest.raises(ConfigError, match=r"w.yaml: field 'aero_table' = 'nowhere.csv': no such file"):

@@ -18,8 +18,7 @@ import numpy as np
 from laddermill_gym.control.base import batch_observations
 from laddermill_gym.control.lqr import DiscreteLQR, bryson_weights, discrete_lqr
 from laddermill_gym.kernels.contract import CU_COLLECTIVE, CU_DIFFERENTIAL, CU_SIZE
-from laddermill_gym.ladder.scene import CONFIG_DIR
-from laddermill_gym.model.configio import read_yaml
+from laddermill_gym.model.configio import CONFIG_DIR, read_yaml
 from laddermill_gym.rotorcraft.roll_lateral import RollLateralModel, derive_roll_lateral, lateral_state
 
 DEFAULT_CRAFT_LQR = CONFIG_DIR / "agents" / "lqr_rotorcraft.yaml"

@@ -11,13 +11,12 @@ from __future__ import annotations
 import numpy as np
 
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, PU_SIZE
+from laddermill_gym.ladder.rigid_scene import load_rigid_scene
 
 
 def rigid_static(pm_scene):
     """(rigid simulator at the static equilibrium, rigid scene) of the file behind a point-mass scene."""
-    from laddermill_gym.ladder.scene import load_scene
-
-    rigid = load_scene(pm_scene.file, fidelity="rigid", n_wings=pm_scene.string.n_kites)
+    rigid = load_rigid_scene(pm_scene.file, n_wings=pm_scene.string.n_kites)
     x, u = rigid.initial_state()
     return rigid.simulator(x, u), rigid
 

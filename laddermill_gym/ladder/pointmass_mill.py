@@ -156,9 +156,9 @@ def rigid_periodic(file: str, n_wings: int):
     """The rigid mill's periodic start of a scene file (``ladder/periodic.periodic_start``; about 30 s, once per
     process): (rigid simulator at that state, its time [s], PeriodicResult)."""
     from laddermill_gym.ladder.periodic import periodic_start
-    from laddermill_gym.ladder.scene import load_scene
+    from laddermill_gym.ladder.rigid_scene import load_rigid_scene
 
-    rigid = load_scene(file, fidelity="rigid", n_wings=n_wings)
+    rigid = load_rigid_scene(file, n_wings=n_wings)
     x, u, t, res = periodic_start(rigid, progress=False)
     return rigid.simulator(x, u), t, res
 

@@ -14,12 +14,13 @@ import numpy as np
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE
 from laddermill_gym.kernels.pointmass.forces import kite_force
 from laddermill_gym.kernels.wind import density, wind_point
+from laddermill_gym.ladder.scene_files import load_cable, load_wing_type, open_scene, read_station, read_wind
 from laddermill_gym.model.configio import ConfigError, Section, config_path
 from laddermill_gym.model.pointmass import PointMassKite, PointMassString, attitude_controls, pack
 from laddermill_gym.model.pointmass_mill import PointMassStation, mill_layout, station_from_rigid
+from laddermill_gym.sim.breakpoints import INTEGRATOR_METHODS
 from laddermill_gym.sim.pointmass import METHODS, PointMassSimulator
 from laddermill_gym.sim.pointmass_mill import PointMassMillSimulator
-from laddermill_gym.sim.simulator import INTEGRATOR_METHODS
 
 
 @dataclass(frozen=True)
@@ -80,8 +81,6 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
                    n_kites: int | None = None, dt: float | None = None, method: str | None = None) -> PointMassScene:
     """Build a point-mass scene from a scene file already opened as ``s`` whose ``fidelity`` section ``fid``
     says ``wing: pointmass`` (the caller has read ``name``-independent keys it owns)."""
-    from laddermill_gym.ladder.scene import load_cable, load_wing_type, read_station, read_wind
-
     name, desc = s.text("name"), s.text("description", "")
     if s.number("dimension", 3, integer=True) != 3:
         raise s.error("dimension", s.data.get("dimension"), "the point-mass fidelity is 3D only")
@@ -161,10 +160,9 @@ def load_pointmass_scene(path: str | Path, *, element_length: float | None = Non
                          dt: float | None = None, method: str | None = None) -> PointMassScene:
     """Load any scene file at the point-mass fidelity (``ladder.scene.load_scene(..., fidelity='pointmass')``).
     A rigid scene needs ``fidelity.element_length`` in its file or the ``element_length`` override [m]."""
-    from laddermill_gym.ladder.scene import load_scene
-
-    return load_scene(path, fidelity="pointmass", element_length=element_length, n_wings=n_kites, dt=dt,
-                      method=method)
+    file, s = open_scene(path, n_wings=n_kites)
+    return read_pointmass(s, s.section("fidelity"), file, element_length=element_length, n_kites=n_kites, dt=dt,
+                          method=method)
 
 
 def _kite_net_force(string: PointMassString, M, p: np.ndarray, u: np.ndarray, k: int) -> np.ndarray:

@@ -13,13 +13,14 @@ from pathlib import Path
 
 import numpy as np
 
-from laddermill_gym.ladder.scene import load_cable, read_wind
+from laddermill_gym.ladder.scene_files import load_cable, read_wind
 from laddermill_gym.model.builders import CableSpec
 from laddermill_gym.model.configio import CONFIG_DIR, ConfigError, config_path, read_yaml
 from laddermill_gym.model.params import WindParams
 from laddermill_gym.rotorcraft.rotor import RotorParams, load_rotor_config
+from laddermill_gym.sim.breakpoints import INTEGRATOR_METHODS
 from laddermill_gym.sim.reports import GROUND_MODES
-from laddermill_gym.sim.simulator import INTEGRATOR_METHODS, IntegratorSettings
+from laddermill_gym.sim.simulator import IntegratorSettings
 
 #: Folder of the craft YAML files; the default craft.
 CRAFT_CONFIG_DIR = CONFIG_DIR / "rotorcraft"

@@ -1,0 +1,250 @@
+"""Scenes at the rigid fidelity: a scene file read into a built :class:`~laddermill_gym.model.params.Assembly`, its
+chain layout, how its initial state is found and its integrator settings (:class:`Scene`), and the simulator built
+from them. ``ladder/scene.py`` (``load_scene``) picks this or the point-mass fidelity by the file's ``fidelity.wing``;
+the point-mass starts taken from the rigid model (``ladder/fidelity.py``, ``ladder/pointmass_mill.py``) load their
+file here.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from laddermill_gym.ladder.scene_files import (
+    FIDELITIES,
+    load_cable,
+    load_wing_type,
+    open_scene,
+    read_station,
+    read_wind,
+)
+from laddermill_gym.model.builders import CableSpec, ChainLayout, build_chain
+from laddermill_gym.model.configio import CONFIG_DIR, ConfigError, Section, config_path
+from laddermill_gym.model.params import END_NODE, END_WING, Assembly
+from laddermill_gym.sim.breakpoints import INTEGRATOR_METHODS
+from laddermill_gym.sim.simulator import IntegratorSettings, Simulator
+from laddermill_gym.sim.stable_step import check_step
+
+
+def read_integrator(it: Section) -> IntegratorSettings:
+    """The ``integrator:`` section: method, step, tolerances, exploding-state limits and the ground."""
+    if it.data.get("ground_contact") is False:  # YAML 1.1 reads a bare `off` as false
+        it.data["ground_contact"] = "off"
+    settings = IntegratorSettings(method=it.text("method", choices=INTEGRATOR_METHODS),
+                                  dt=it.number("dt", positive=True),
+                                  rtol=it.number("rtol", 1e-8, positive=True),
+                                  atol=it.number("atol", 1e-10, positive=True),
+                                  max_speed=it.number("max_speed", positive=True),
+                                  max_rate=it.number("max_rate", positive=True),
+                                  ground_height=it.number("ground_height", 0.0),
+                                  ground_contact=it.text("ground_contact", "stop", choices=("stop", "flag", "off")))
+    it.done()
+    return settings
+
+
+@dataclass(frozen=True)
+class InitialSpec:
+    """How the initial state is found: 'trim' (one wing at a target angle of attack alpha [rad]) or
+    'static' (equilibrium at rest with the given elevator angles [rad] of ascending/descending wings)."""
+
+    method: str
+    alpha: float
+    elevation: float
+    elevator_up: float
+    elevator_down: float
+
+
+#: (scene file, dt, start) already checked against RK4's stable step in this process
+CHECKED_STEPS: set = set()
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A loaded scene: the built assembly plus what is needed to start it."""
+
+    name: str
+    file: Path
+    description: str
+    assembly: Assembly
+    layout: ChainLayout
+    cable: CableSpec
+    ground_points: dict
+    start: str
+    end: str | None
+    piece_length: float
+    initial: InitialSpec
+    settings: IntegratorSettings
+
+    def simulator(self, initial_state: np.ndarray | None = None, controls: np.ndarray | None = None) -> Simulator:
+        """A compiled simulator started from the scene's initial state (found on first use).
+
+        With RK4, a step above the estimated stability limit at the start (the Jacobian's eigenvalues,
+        ``sim/stable_step.py``) gives an :class:`~laddermill_gym.sim.stable_step.UnstableStepWarning` naming both:
+        such a run can oscillate, bounded, without any error. Checked once per scene file, step and start."""
+        if initial_state is None:
+            initial_state, c0 = self.initial_state()
+            controls = c0 if controls is None else controls
+        sim = Simulator(self.assembly, initial_state, self.settings, controls)
+        if self.settings.method == "rk4":
+            key = (str(self.file), self.settings.dt, hashlib.sha1(sim.state.tobytes()).hexdigest())
+            if key not in CHECKED_STEPS:
+                CHECKED_STEPS.add(key)
+                check_step(sim)
+        return sim
+
+    def initial_state(self) -> tuple[np.ndarray, np.ndarray]:
+        """(state, controls) at the scene's initial equilibrium."""
+        from laddermill_gym.ladder.initial import initial_state
+
+        try:
+            return initial_state(self)
+        except RuntimeError as err:  # no equilibrium: say which file and which settings decide it
+            w = self.assembly.wind
+            raise ConfigError(
+                f"{self.file}: no initial state ({err}); the wind (wind.v0 = {w.v0:g} m/s, wind.rho0 = {w.rho0:g} "
+                f"kg/m^3) and initial.method = {self.initial.method!r} (alpha_deg = "
+                f"{math.degrees(self.initial.alpha):g}) decide whether the wings can hold an equilibrium") from None
+
+    def replace(self, **changes) -> Scene:
+        return dataclasses.replace(self, **changes)
+
+
+def _refuse_impossible_step(asm: Assembly, settings: IntegratorSettings, path: Path) -> None:
+    """ConfigError if an RK4 step is more than twice the stability bound of the stiffest cable element's axial
+    oscillation, omega^2 = (EA / l0) (1/m_r + 1/m_s), the end masses lumped (a wing's or node's own mass plus half of
+    each attached element's; a fixed end infinite) and RK4's bound on the imaginary axis omega dt = 2.83. A cheap,
+    geometry-only check against values that cannot work; the precise limit is ``laddermill stable-step``'s."""
+    e = asm.elements
+    if settings.method != "rk4" or e.count == 0:
+        return
+    mass = {END_WING: np.array([asm.wing(k).mass for k in range(asm.n_wings)], dtype=float),
+            END_NODE: np.array(asm.node_mass, dtype=float)}
+    half = 0.5 * e.mu * e.l0
+    for end in (0, 1):
+        for kind, m in mass.items():
+            sel = e.end_kind[:, end] == kind
+            np.add.at(m, e.end_index[sel, end], half[sel])
+    inv = np.zeros(e.end_kind.shape)
+    for kind, m in mass.items():
+        for end in (0, 1):
+            sel = e.end_kind[:, end] == kind
+            inv[sel, end] = 1.0 / m[e.end_index[sel, end]]
+    omega = np.sqrt(e.EA / e.l0 * inv.sum(axis=1))
+    j = int(np.argmax(omega))
+    bound = 2.83 / omega[j]
+    if settings.dt > 2.0 * bound:
+        raise ConfigError(f"{path}: field 'integrator.dt' = {settings.dt!r} s cannot work with RK4: the stiffest cable "
+                          f"element ({j}, EA / l0 = {e.EA[j] / e.l0[j]:.3g} N/m) oscillates at {omega[j]:.4g} rad/s, "
+                          f"stable up to about {bound:.3g} s (refused above twice that; the precise limit: "
+                          "laddermill stable-step SCENE)")
+
+
+def _parts(s: Section, path: Path):
+    """The wing type and the cable the scene names; ConfigError naming the scene file and field (not only the
+    missing file) when one is not found."""
+    parts = {}
+    for key, kind in (("wing_type", "wings"), ("cable", "cables")):
+        value = s.text(key)
+        parts[key] = config_path(kind, value, path.parent)
+        if not parts[key].is_file():
+            shown = parts[key] if parts[key].is_absolute() else path.parent / parts[key]
+            raise s.error(key, value, f"no such file {shown} (a path is relative to the scene's folder, a bare "
+                                      f"name is {CONFIG_DIR / kind}/NAME.yaml, 'package:{kind}/FILE' the shipped data)")
+    return load_wing_type(parts["wing_type"]), load_cable(parts["cable"])
+
+
+def _chain(s: Section):
+    """The ground points {name: (3,) [m]}, the chain's start and end point names, wings, piece length [m],
+    elements per piece and the ground station (None: a fixed cable)."""
+    gp = s.section("ground_points")
+    points = {k: gp.vector(k, 3) for k in list(gp.data)}
+    gp.done()
+    ch = s.section("chain")
+    start = ch.text("start")
+    end = ch.text("end", None)
+    nw = ch.number("n_wings", integer=True, positive=True)
+    piece = ch.number("piece_length", positive=True)
+    epp = ch.number("elements_per_piece", integer=True, positive=True)
+    ch.done()
+    for key, pname in (("start", start), ("end", end)):
+        if pname is not None and pname not in points:
+            raise ch.error(key, pname, f"is not one of the ground points {sorted(points)}")
+    station = read_station(s.section("station"), piece) if s.has("station") else None
+    if station is not None and (end is None or epp != 1):
+        raise ch.error("elements_per_piece" if end is not None else "end", epp if end is not None else end,
+                       "a moving cable (station) needs two ground points (start and end) and one element per "
+                       "piece (Meijaard's boundary conditions)")
+    return points, start, end, nw, piece, epp, station
+
+
+def _initial(ini: Section) -> InitialSpec:
+    """The ``initial`` section (angles in the file in degrees, here in rad)."""
+    spec = InitialSpec(method=ini.text("method", choices=("trim", "static")),
+                       alpha=math.radians(ini.number("alpha_deg", 8.0)),
+                       elevation=math.radians(ini.number("elevation_deg", 45.0)),
+                       elevator_up=math.radians(ini.number("elevator_up_deg", 0.0)),
+                       elevator_down=math.radians(ini.number("elevator_down_deg", 0.0)))
+    ini.done()
+    return spec
+
+
+def read_rigid(s: Section, path: Path, *, dimension: int | None = None, sag: bool | None = None,
+               cable_aero: bool | None = None, elements_per_piece: int | None = None,
+               n_wings: int | None = None, dt: float | None = None, method: str | None = None) -> Scene:
+    """Build the rigid scene of a scene file already opened as ``s`` (``scene_files.open_scene``); the keyword
+    overrides replace the file's values (``ladder.scene.load_scene``)."""
+    name = s.text("name")
+    desc = s.text("description", "")
+    dim = s.number("dimension", integer=True)
+    gravity = s.number("gravity", positive=True)
+    wind = read_wind(s.section("wind"))
+    wing_type, cable = _parts(s, path)
+    points, start, end, nw, piece, epp, station = _chain(s)
+    fid = s.section("fidelity")
+    fid.text("wing", "rigid", choices=FIDELITIES)
+    fid.raw("element_length", None)  # the point-mass string's resolution, unused by the rigid model
+    sag_on = fid.flag("sag")
+    caero_on = fid.flag("cable_aero")
+    fid.done()
+    init = _initial(s.section("initial"))
+    settings = read_integrator(s.section("integrator"))
+    s.done()
+    # overrides
+    dim = dim if dimension is None else int(dimension)
+    if dim not in (2, 3):
+        raise ConfigError(f"{path}: field 'dimension' = {dim!r}: must be 2 or 3")
+    if dim == 2 and (wind.direction_inf != 0.0 or abs(wing_type.attachment[1]) > 0 or abs(wing_type.r_ref[1]) > 0):
+        raise ConfigError(f"{path}: the in-plane mode needs a fixed wind direction and symmetric wings")
+    sag_on = sag_on if sag is None else bool(sag)
+    caero_on = caero_on if cable_aero is None else bool(cable_aero)
+    epp = epp if elements_per_piece is None else int(elements_per_piece)
+    nw = nw if n_wings is None else int(n_wings)
+    if dt is not None or method is not None:
+        settings = dataclasses.replace(settings, dt=settings.dt if dt is None else float(dt),
+                                       method=settings.method if method is None else method)
+    names = list(points)
+    fixed = np.array([points[k] for k in names])
+    pieces = np.full(nw + (end is not None), piece)
+    if station is not None:  # the first and last elements at their lengths right after a transfer
+        pieces[0], pieces[-1] = station.first_fraction * piece, station.last_fraction * piece
+    asm, layout = build_chain((wing_type,), np.zeros(nw, dtype=np.int64), pieces, epp, cable, fixed,
+                              names.index(start), None if end is None else names.index(end), wind,
+                              dim=dim, sag=sag_on, cable_aero=caero_on, gravity=gravity)
+    if station is not None:
+        asm = dataclasses.replace(asm, station=station)
+    _refuse_impossible_step(asm, settings, path)
+    return Scene(name=name, file=path, description=desc, assembly=asm, layout=layout, cable=cable,
+                 ground_points=points, start=start, end=end, piece_length=piece, initial=init, settings=settings)
+
+
+def load_rigid_scene(name_or_path: str | Path, *, overrides: dict | None = None, **options) -> Scene:
+    """``ladder.scene.load_scene(name_or_path, fidelity="rigid", ...)``: the scene file at the rigid fidelity
+    whatever its ``fidelity.wing`` says; ``options`` are :func:`read_rigid`'s overrides."""
+    path, s = open_scene(name_or_path, overrides, n_wings=options.get("n_wings"),
+                         elements_per_piece=options.get("elements_per_piece"))
+    return read_rigid(s, path, **options)
