@@ -17,8 +17,8 @@ from laddermill_gym.kernels.dispatch import has_assemble
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import Assembly
-from laddermill_gym.sim.breakpoints import W_METHODS, breaks_mode
-from laddermill_gym.sim.simulator import FIXED_STEP_METHODS, IntegratorSettings, limits_array
+from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, W_METHODS, breaks_mode
+from laddermill_gym.sim.simulator import IntegratorSettings, limits_array
 
 #: Status codes a smaller step may avoid: a singular matrix, a non-finite state, a speed or rate beyond the limits.
 NUMERICAL_FAILURES = (SINGULAR, NONFINITE, LIMIT)

@@ -37,6 +37,13 @@ from laddermill_gym.kernels.rigid.rosenbrock_adaptive import w_adaptive
 W_METHODS = {"ros2": ROS2, "ros34pw2": ROS34PW2}
 #: The error-controlled Rosenbrock-W methods: (tableau, order of the embedded method)
 W_ADAPTIVE = {"ros34pw2a": (ROS34PW2, 2)}
+#: Integrators a simulator runs: fixed-step classical Runge-Kutta, adaptive Dormand-Prince 5(4) and the fixed-step
+#: linearly implicit Rosenbrock-W methods (``kernels/rigid/rosenbrock.py``; 3D rigid models).
+INTEGRATOR_METHODS: tuple[str, ...] = ("rk4", "dp54", *W_METHODS, *W_ADAPTIVE)
+#: The fixed-step methods (``dt``): RK4 and the Rosenbrock-W methods.
+FIXED_STEP_METHODS: tuple[str, ...] = ("rk4", *W_METHODS)
+#: The error-controlled methods (``rtol``, ``atol``; ``dt`` is the first trial step).
+ADAPTIVE_METHODS: tuple[str, ...] = ("dp54", *W_ADAPTIVE)
 
 
 #: ``IntegratorSettings.breakpoints``: "off" integrates across kinks (as before); "inside" splits the steps that

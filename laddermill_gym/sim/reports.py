@@ -77,8 +77,7 @@ def trial_state(sim, h: float) -> tuple[float, np.ndarray] | None:
     and ground checks off (the settings' fixed-step method, or DP5(4) to t + h): the step that failed. None if that
     step fails too."""
     from laddermill_gym.kernels.fixed_steps import advance_breaks
-    from laddermill_gym.sim.breakpoints import W_METHODS, breaks_mode
-    from laddermill_gym.sim.simulator import FIXED_STEP_METHODS
+    from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, W_METHODS, breaks_mode
 
     s = sim.settings
     x = sim.state.copy()

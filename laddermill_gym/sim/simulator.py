@@ -22,7 +22,10 @@ from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 from laddermill_gym.sim.body_views import BodyViews
 from laddermill_gym.sim.breakpoints import (
+    ADAPTIVE_METHODS,
     BREAKPOINT_MODES,
+    FIXED_STEP_METHODS,
+    INTEGRATOR_METHODS,
     W_ADAPTIVE,
     W_METHODS,
     adaptive_pieces,
@@ -43,13 +46,6 @@ class SimulationError(RuntimeError):
 
 #: DP5(4) step budgets: one ``step()`` (a few physics steps) and one ``advance_to`` call
 STEP_MAX_STEPS, ADVANCE_MAX_STEPS = 10_000_000, 100_000_000
-#: Integrators a simulator runs: fixed-step classical Runge-Kutta, adaptive Dormand-Prince 5(4) and the fixed-step
-#: linearly implicit Rosenbrock-W methods (``kernels/rigid/rosenbrock.py``; 3D rigid models).
-INTEGRATOR_METHODS: tuple[str, ...] = ("rk4", "dp54", *W_METHODS, *W_ADAPTIVE)
-#: The fixed-step methods (``dt``): RK4 and the Rosenbrock-W methods.
-FIXED_STEP_METHODS: tuple[str, ...] = ("rk4", *W_METHODS)
-#: The error-controlled methods (``rtol``, ``atol``; ``dt`` is the first trial step).
-ADAPTIVE_METHODS: tuple[str, ...] = ("dp54", *W_ADAPTIVE)
 
 
 @dataclass(frozen=True)

@@ -137,7 +137,7 @@ def mass_scales(sim) -> np.ndarray:
     """Per entry of :func:`accelerations`, the mass that turns it into a force: a wing's mass [kg] for its linear
     and its principal moments of inertia Jxx, Jyy, Jzz [kg m^2] for its angular accelerations (Jyy in the
     plane), a free cable node's lumped mass [kg] (its own plus half of each attached element's mu l0, as
-    ``ladder/scene._refuse_impossible_step`` lumps them), floored at 1e-9 of the largest."""
+    ``ladder/rigid_scene._refuse_impossible_step`` lumps them), floored at 1e-9 of the largest."""
     a = sim.assembly
     e = a.elements
     node = np.array(a.node_mass, dtype=float)
