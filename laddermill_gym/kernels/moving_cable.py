@@ -27,43 +27,12 @@ from collections import namedtuple
 
 from numba import njit
 
-from laddermill_gym.kernels.contract import (
-    B2_Q,
-    B2_SIZE,
-    B2_THETA,
-    B2_U,
-    B2_W,
-    B2_X,
-    B2_Z,
-    B3_POS,
-    B3_QUAT,
-    B3_RATE,
-    B3_SIZE,
-    B3_VEL,
-    EF_L0,
-    MODE_COMMANDED,
-    MODE_DRUM,
-    MODE_PRESCRIBED,
-    SP_F_FIRST,
-    SP_F_LAST,
-    SP_INERTIA,
-    SP_MODE,
-    SP_NSCHED,
-    SP_PIECE,
-    SP_RADIUS,
-    SP_SCHED,
-    SP_TAU,
-    SP_UOFF,
-    SP_XOFF,
-    SX_ENERGY,
-    SX_MOVED,
-    SX_SPEED,
-    SX_TRANSFERS,
-)
+from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_moving_ends
-from laddermill_gym.kernels.rigid.kinds import LIMIT, OK, rigid2d_check, rigid3d_check
+from laddermill_gym.kernels.rigid.kinds import rigid2d_check, rigid3d_check
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
 from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
+from laddermill_gym.kernels.station import cable_speed, first_rest_length, register_drive, station_drive, station_rates
 
 _FM = {"contract", "nsz", "arcp"}
 
@@ -72,38 +41,14 @@ MovingCable3D = namedtuple("MovingCable3D", ["station"])
 MovingCable2D = namedtuple("MovingCable2D", ["station"])
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
-def scheduled_speed(sp, t):
-    """The schedule's cable speed V_c(t) [m/s] and its rate [m/s^2] (piecewise linear, held outside)."""
-    n = int(sp[SP_NSCHED])
-    ot, ov = SP_SCHED, SP_SCHED + n
-    if n == 1 or not t > sp[ot]:
-        return sp[ov], 0.0
-    if t >= sp[ot + n - 1]:
-        return sp[ov + n - 1], 0.0
-    k = 0
-    while t >= sp[ot + k + 1]:
-        k += 1
-    a = (sp[ov + k + 1] - sp[ov + k]) / (sp[ot + k + 1] - sp[ot + k])
-    return sp[ov + k] + a * (t - sp[ot + k]), a
-
-
-@njit(cache=True, error_model="numpy", fastmath=_FM)
-def cable_speed(sp, t, x):
-    """Cable speed V_c [m/s] at time t [s] in state x: the state (drum, commanded) or the schedule."""
-    if sp[SP_MODE] != MODE_PRESCRIBED:
-        return x[int(sp[SP_XOFF]) + SX_SPEED]
-    return scheduled_speed(sp, t)[0]
-
-
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
 def mill_rest_length(kind, e, t, x, M):
     if e != 0 and e != M.ef.shape[0] - 1:
-        return M.ef[e, EF_L0]
+        return M.ef[e, C.EF_L0]
     sp = kind.station
     if e == 0:
-        return sp[SP_PIECE] * sp[SP_F_FIRST] + x[int(sp[SP_XOFF]) + SX_MOVED]
-    return sp[SP_PIECE] * sp[SP_F_LAST] - x[int(sp[SP_XOFF]) + SX_MOVED]
+        return first_rest_length(sp, x)
+    return sp[C.SP_PIECE] * sp[C.SP_F_LAST] - x[int(sp[C.SP_XOFF]) + C.SX_MOVED]
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
@@ -114,49 +59,32 @@ def mill_elongation_rate(kind, e, t, x, M, ln, l0, ld):
     return ld - ln / l0 * v if e == 0 else ld + ln / l0 * v
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
-def station_rates(sp, t, x, u, dx, tension):
-    """The station block of dx: ds/dt = V_c, the drum's acceleration (or the schedule's rate) and the
-    generator's mechanical power [W] (into the energy)."""
-    o = int(sp[SP_XOFF])
-    dt = tension[0] - tension[tension.size - 1]
-    if sp[SP_MODE] == MODE_DRUM:
-        v = x[o + SX_SPEED]
-        r = sp[SP_RADIUS]
-        force = u[int(sp[SP_UOFF])] / r
-        dx[o + SX_SPEED] = (dt - force) * r * r / sp[SP_INERTIA]
-        power = force * v
-    elif sp[SP_MODE] == MODE_COMMANDED:
-        v = x[o + SX_SPEED]
-        dx[o + SX_SPEED] = (u[int(sp[SP_UOFF])] - v) / sp[SP_TAU]
-        power = dt * v
-    else:
-        v, a = scheduled_speed(sp, t)
-        dx[o + SX_SPEED] = a
-        power = dt * v
-    dx[o + SX_MOVED] = v
-    dx[o + SX_TRANSFERS] = 0.0
-    dx[o + SX_ENERGY] = power
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def veered_minus_hauled(tension):
+    """The moving cable's drive [N]: the first (veered-side) element's tension less the last (hauled-side) one's."""
+    return tension[0] - tension[tension.size - 1]
 
 
+# The right-hand sides of every station kind (the moving cable, the winch: kernels/winch.py registers these too):
+# the rigid model's, then the station block driven by the kind's registered drive (kernels/station.py).
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def mill3d_rhs(kind, t, x, u, dx, M, W):
+def station3d_rhs(kind, t, x, u, dx, M, W):
     status = rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
-    station_rates(kind.station, t, x, u, dx, W.tension)
+    station_rates(kind.station, t, x, u, dx, station_drive(kind, W.tension))
     return status
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def mill3d_assemble(kind, t, x, u, dx, M, W):
+def station3d_assemble(kind, t, x, u, dx, M, W):
     assemble3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
-    station_rates(kind.station, t, x, u, dx, W.tension)
+    station_rates(kind.station, t, x, u, dx, station_drive(kind, W.tension))
     return 0
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def mill2d_rhs(kind, t, x, u, dx, M, W):
+def station2d_rhs(kind, t, x, u, dx, M, W):
     status = rhs2d(t, x, u, dx, M, W, M.sag, M.caero)
-    station_rates(kind.station, t, x, u, dx, W.tension)
+    station_rates(kind.station, t, x, u, dx, station_drive(kind, W.tension))
     return status
 
 
@@ -171,28 +99,49 @@ def _rotation(q0, q1, q2, q3):
             2.0 * (b * d - a * c), 2.0 * (c * d + a * b), a * a - b * b - c * c + d * d)
 
 
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def _split(sp, x, M, up):
+    """The element a transfer splits and where: (element, neighbour slot, its end on the neighbour, f) with f the
+    new wing's fraction of the way from the ground point to the neighbour's attachment."""
+    s = x[int(sp[C.SP_XOFF]) + C.SX_MOVED]
+    lp = sp[C.SP_PIECE]
+    if up:  # split the first element; the neighbour is slot 0 (it moves to slot 1)
+        old = sp[C.SP_F_FIRST] * lp + s
+        return 0, 0, 1, (sp[C.SP_F_FIRST] * lp + s - lp) / old
+    # split the last element; the neighbour is slot n-1 (it moves to slot n-2)
+    old = sp[C.SP_F_LAST] * lp - s
+    return M.ef.shape[0] - 1, M.wtype.size - 1, 0, (sp[C.SP_F_LAST] * lp - s - lp) / old
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def _shift_slots(x, nw, size, up):
+    """Move every wing's block (``size`` entries) one slot up (``up``) or down the cable; the offset of the slot
+    freed for the new wing."""
+    if up:
+        for k in range(nw - 1, 0, -1):
+            for i in range(size):
+                x[size * k + i] = x[size * (k - 1) + i]
+        return 0
+    for k in range(nw - 1):
+        for i in range(size):
+            x[size * k + i] = x[size * (k + 1) + i]
+    return size * (nw - 1)
+
+
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def transfer_3d(sp, x, M, up):
     """One wing transfer in a 3D state (``up``: the cable has moved one piece forwards, else backwards)."""
-    nw = M.wtype.size
-    s = x[int(sp[SP_XOFF]) + SX_MOVED]
-    lp = sp[SP_PIECE]
-    if up:  # split the first element; the neighbour is slot 0 (it moves to slot 1)
-        e, nb, end, old = 0, 0, 1, sp[SP_F_FIRST] * lp + s
-        f = (sp[SP_F_FIRST] * lp + s - lp) / old
-    else:  # split the last element; the neighbour is slot n-1 (it moves to slot n-2)
-        e, nb, end, old = M.ef.shape[0] - 1, nw - 1, 0, sp[SP_F_LAST] * lp - s
-        f = (sp[SP_F_LAST] * lp - s - lp) / old
-    o = B3_SIZE * nb
-    R = _rotation(x[o + B3_QUAT], x[o + B3_QUAT + 1], x[o + B3_QUAT + 2], x[o + B3_QUAT + 3])
+    e, nb, end, f = _split(sp, x, M, up)
+    o = C.B3_SIZE * nb
+    R = _rotation(x[o + C.B3_QUAT], x[o + C.B3_QUAT + 1], x[o + C.B3_QUAT + 2], x[o + C.B3_QUAT + 3])
     a0, a1, a2 = M.ea[e, end, 0], M.ea[e, end, 1], M.ea[e, end, 2]
-    ax = x[o + B3_POS] + R[0] * a0 + R[1] * a1 + R[2] * a2
-    ay = x[o + B3_POS + 1] + R[3] * a0 + R[4] * a1 + R[5] * a2
-    az = x[o + B3_POS + 2] + R[6] * a0 + R[7] * a1 + R[8] * a2
-    p, q, r = x[o + B3_RATE], x[o + B3_RATE + 1], x[o + B3_RATE + 2]
-    bu = x[o + B3_VEL] + q * a2 - r * a1
-    bv = x[o + B3_VEL + 1] + r * a0 - p * a2
-    bw = x[o + B3_VEL + 2] + p * a1 - q * a0
+    ax = x[o + C.B3_POS] + R[0] * a0 + R[1] * a1 + R[2] * a2
+    ay = x[o + C.B3_POS + 1] + R[3] * a0 + R[4] * a1 + R[5] * a2
+    az = x[o + C.B3_POS + 2] + R[6] * a0 + R[7] * a1 + R[8] * a2
+    p, q, r = x[o + C.B3_RATE], x[o + C.B3_RATE + 1], x[o + C.B3_RATE + 2]
+    bu = x[o + C.B3_VEL] + q * a2 - r * a1
+    bv = x[o + C.B3_VEL + 1] + r * a0 - p * a2
+    bw = x[o + C.B3_VEL + 2] + p * a1 - q * a0
     # the new wing's attachment: the fraction f of the way from the ground point; its velocity f v_attach
     gi = M.ei[e, 1 - end]
     px = M.fixed[gi, 0] + f * (ax - M.fixed[gi, 0])
@@ -201,74 +150,50 @@ def transfer_3d(sp, x, M, up):
     wx = f * (R[0] * bu + R[1] * bv + R[2] * bw)
     wy = f * (R[3] * bu + R[4] * bv + R[5] * bw)
     wz = f * (R[6] * bu + R[7] * bv + R[8] * bw)
-    if up:
-        for k in range(nw - 1, 0, -1):
-            for i in range(B3_SIZE):
-                x[B3_SIZE * k + i] = x[B3_SIZE * (k - 1) + i]
-        o = 0
-    else:
-        for k in range(nw - 1):
-            for i in range(B3_SIZE):
-                x[B3_SIZE * k + i] = x[B3_SIZE * (k + 1) + i]
-        o = B3_SIZE * (nw - 1)
+    o = _shift_slots(x, M.wtype.size, C.B3_SIZE, up)
     # the new wing keeps the neighbour's quaternion (still in its slot after the shift), turns not at all
-    x[o + B3_POS] = px - (R[0] * a0 + R[1] * a1 + R[2] * a2)
-    x[o + B3_POS + 1] = py - (R[3] * a0 + R[4] * a1 + R[5] * a2)
-    x[o + B3_POS + 2] = pz - (R[6] * a0 + R[7] * a1 + R[8] * a2)
-    x[o + B3_VEL] = R[0] * wx + R[3] * wy + R[6] * wz
-    x[o + B3_VEL + 1] = R[1] * wx + R[4] * wy + R[7] * wz
-    x[o + B3_VEL + 2] = R[2] * wx + R[5] * wy + R[8] * wz
+    x[o + C.B3_POS] = px - (R[0] * a0 + R[1] * a1 + R[2] * a2)
+    x[o + C.B3_POS + 1] = py - (R[3] * a0 + R[4] * a1 + R[5] * a2)
+    x[o + C.B3_POS + 2] = pz - (R[6] * a0 + R[7] * a1 + R[8] * a2)
+    x[o + C.B3_VEL] = R[0] * wx + R[3] * wy + R[6] * wz
+    x[o + C.B3_VEL + 1] = R[1] * wx + R[4] * wy + R[7] * wz
+    x[o + C.B3_VEL + 2] = R[2] * wx + R[5] * wy + R[8] * wz
     for i in range(3):
-        x[o + B3_RATE + i] = 0.0
+        x[o + C.B3_RATE + i] = 0.0
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def transfer_2d(sp, x, M, up):
     """One wing transfer in an in-plane state (see :func:`transfer_3d`)."""
-    nw = M.wtype.size
-    s = x[int(sp[SP_XOFF]) + SX_MOVED]
-    lp = sp[SP_PIECE]
-    if up:
-        e, nb, end, old = 0, 0, 1, sp[SP_F_FIRST] * lp + s
-        f = (sp[SP_F_FIRST] * lp + s - lp) / old
-    else:
-        e, nb, end, old = M.ef.shape[0] - 1, nw - 1, 0, sp[SP_F_LAST] * lp - s
-        f = (sp[SP_F_LAST] * lp - s - lp) / old
-    o = B2_SIZE * nb
-    th = x[o + B2_THETA]
+    e, nb, end, f = _split(sp, x, M, up)
+    o = C.B2_SIZE * nb
+    th = x[o + C.B2_THETA]
     c, sn = math.cos(th), math.sin(th)
     a = M.ea[e, end]
-    ax = x[o + B2_X] + c * a[0] + sn * a[2]
-    az = x[o + B2_Z] - sn * a[0] + c * a[2]
-    q = x[o + B2_Q]
-    bu, bw = x[o + B2_U] + q * a[2], x[o + B2_W] - q * a[0]
+    ax = x[o + C.B2_X] + c * a[0] + sn * a[2]
+    az = x[o + C.B2_Z] - sn * a[0] + c * a[2]
+    q = x[o + C.B2_Q]
+    bu, bw = x[o + C.B2_U] + q * a[2], x[o + C.B2_W] - q * a[0]
     vx, vz = c * bu + sn * bw, -sn * bu + c * bw
     g = M.fixed[M.ei[e, 1 - end]]
-    if up:
-        for k in range(nw - 1, 0, -1):
-            for i in range(B2_SIZE):
-                x[B2_SIZE * k + i] = x[B2_SIZE * (k - 1) + i]
-        slot = 0
-    else:
-        for k in range(nw - 1):
-            for i in range(B2_SIZE):
-                x[B2_SIZE * k + i] = x[B2_SIZE * (k + 1) + i]
-        slot = nw - 1
-    o = B2_SIZE * slot
+    o = _shift_slots(x, M.wtype.size, C.B2_SIZE, up)
     px, pz = g[0] + f * (ax - g[0]), g[2] + f * (az - g[2])
-    x[o + B2_X] = px - (c * a[0] + sn * a[2])
-    x[o + B2_Z] = pz - (-sn * a[0] + c * a[2])
-    x[o + B2_THETA] = th
-    x[o + B2_U] = c * f * vx - sn * f * vz
-    x[o + B2_W] = sn * f * vx + c * f * vz
-    x[o + B2_Q] = 0.0
+    x[o + C.B2_X] = px - (c * a[0] + sn * a[2])
+    x[o + C.B2_Z] = pz - (-sn * a[0] + c * a[2])
+    x[o + C.B2_THETA] = th
+    x[o + C.B2_U] = c * f * vx - sn * f * vz
+    x[o + C.B2_W] = sn * f * vx + c * f * vz
+    x[o + C.B2_Q] = 0.0
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def _transfers_due(sp, x):
-    """+1 (forwards), -1 (backwards) or 0: the transfer the moved cable s calls for."""
-    s = x[int(sp[SP_XOFF]) + SX_MOVED]
-    if s >= sp[SP_PIECE]:
+def _transfers_due(sp, x, status):
+    """+1 (forwards), -1 (backwards) or 0: the transfer the moved cable s calls for after a step that ended with
+    ``status`` (none unless OK)."""
+    if status != C.OK:
+        return 0
+    s = x[int(sp[C.SP_XOFF]) + C.SX_MOVED]
+    if s >= sp[C.SP_PIECE]:
         return 1
     if s < 0.0:
         return -1
@@ -277,41 +202,40 @@ def _transfers_due(sp, x):
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _book(sp, x, d):
-    o = int(sp[SP_XOFF])
-    x[o + SX_MOVED] -= d * sp[SP_PIECE]
-    x[o + SX_TRANSFERS] += d
+    """Book the transfer d (made in x): s less d pieces, one more (or less) transfer. LIMIT if the cable still
+    calls for one (it moved more than a piece in a step), else OK."""
+    o = int(sp[C.SP_XOFF])
+    x[o + C.SX_MOVED] -= d * sp[C.SP_PIECE]
+    x[o + C.SX_TRANSFERS] += d
+    return C.LIMIT if _transfers_due(sp, x, C.OK) != 0 else C.OK
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def mill3d_check(kind, x, M, limits):
     """The rigid check, then at most one wing transfer; LIMIT if the cable moved more than one piece in a step."""
     status = rigid3d_check(kind, x, M, limits)
-    sp = kind.station
-    d = _transfers_due(sp, x) if status == OK else 0
-    if d != 0:
-        transfer_3d(sp, x, M, d > 0)
-        _book(sp, x, d)
-        if _transfers_due(sp, x) != 0:
-            return LIMIT
-    return status
+    d = _transfers_due(kind.station, x, status)
+    if d == 0:
+        return status
+    transfer_3d(kind.station, x, M, d > 0)
+    return _book(kind.station, x, d)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def mill2d_check(kind, x, M, limits):
     """The in-plane rigid check, then at most one wing transfer (see :func:`mill3d_check`)."""
     status = rigid2d_check(kind, x, M, limits)
-    sp = kind.station
-    d = _transfers_due(sp, x) if status == OK else 0
-    if d != 0:
-        transfer_2d(sp, x, M, d > 0)
-        _book(sp, x, d)
-        if _transfers_due(sp, x) != 0:
-            return LIMIT
-    return status
+    d = _transfers_due(kind.station, x, status)
+    if d == 0:
+        return status
+    transfer_2d(kind.station, x, M, d > 0)
+    return _book(kind.station, x, d)
 
 
-register_kind(MovingCable3D, mill3d_rhs, mill3d_check)
-register_kind(MovingCable2D, mill2d_rhs, mill2d_check)
+register_kind(MovingCable3D, station3d_rhs, mill3d_check)
+register_kind(MovingCable2D, station2d_rhs, mill2d_check)
 register_moving_ends(MovingCable3D, mill_rest_length, mill_elongation_rate)
 register_moving_ends(MovingCable2D, mill_rest_length, mill_elongation_rate)
-register_assemble(MovingCable3D, mill3d_assemble)
+register_assemble(MovingCable3D, station3d_assemble)
+register_drive(MovingCable3D, veered_minus_hauled)
+register_drive(MovingCable2D, veered_minus_hauled)

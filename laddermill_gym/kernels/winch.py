@@ -22,28 +22,11 @@ from collections import namedtuple
 
 from numba import njit
 
-from laddermill_gym.kernels.contract import (
-    EF_L0,
-    MODE_COMMANDED,
-    MODE_DRUM,
-    SP_F_FIRST,
-    SP_INERTIA,
-    SP_MODE,
-    SP_PIECE,
-    SP_RADIUS,
-    SP_TAU,
-    SP_UOFF,
-    SP_XOFF,
-    SX_ENERGY,
-    SX_MOVED,
-    SX_SPEED,
-    SX_TRANSFERS,
-)
+from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_moving_ends
-from laddermill_gym.kernels.moving_cable import cable_speed, scheduled_speed
-from laddermill_gym.kernels.rigid.kinds import LIMIT, OK, rigid2d_check, rigid3d_check
-from laddermill_gym.kernels.rigid.rhs2d import rhs2d
-from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
+from laddermill_gym.kernels.moving_cable import station2d_rhs, station3d_assemble, station3d_rhs
+from laddermill_gym.kernels.rigid.kinds import rigid2d_check, rigid3d_check
+from laddermill_gym.kernels.station import cable_speed, first_rest_length, register_drive
 
 _FM = {"contract", "nsz", "arcp"}
 
@@ -59,10 +42,9 @@ MIN_FRACTION = 0.05
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
 def winch_rest_length(kind, e, t, x, M):
     """Unstretched length [m] of element e: f_first l_p + s for element 0, the packed length otherwise."""
-    sp = kind.station
     if e == 0:
-        return sp[SP_PIECE] * sp[SP_F_FIRST] + x[int(sp[SP_XOFF]) + SX_MOVED]
-    return M.ef[e, EF_L0]
+        return first_rest_length(kind.station, x)
+    return M.ef[e, C.EF_L0]
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
@@ -73,77 +55,37 @@ def winch_elongation_rate(kind, e, t, x, M, ln, l0, ld):
     return ld - ln / l0 * cable_speed(kind.station, t, x)
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
-def winch_rates(sp, t, x, u, dx, tension):
-    """The winch block of dx: ds/dt = V, the drum's acceleration (or the schedule's rate or the speed lag) and
-    the mechanical power at the drum [W] (into the energy). ``tension[0]`` is the tension of element 0 [N]."""
-    o = int(sp[SP_XOFF])
-    t0 = tension[0]
-    if sp[SP_MODE] == MODE_DRUM:
-        v = x[o + SX_SPEED]
-        r = sp[SP_RADIUS]
-        force = u[int(sp[SP_UOFF])] / r
-        dx[o + SX_SPEED] = (t0 - force) * r * r / sp[SP_INERTIA]
-        power = force * v
-    elif sp[SP_MODE] == MODE_COMMANDED:
-        v = x[o + SX_SPEED]
-        dx[o + SX_SPEED] = (u[int(sp[SP_UOFF])] - v) / sp[SP_TAU]
-        power = t0 * v
-    else:
-        v, a = scheduled_speed(sp, t)
-        dx[o + SX_SPEED] = a
-        power = t0 * v
-    dx[o + SX_MOVED] = v
-    dx[o + SX_TRANSFERS] = 0.0
-    dx[o + SX_ENERGY] = power
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def first_tension(tension):
+    """The winch's drive [N]: the tension of element 0 (no hauled side)."""
+    return tension[0]
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def winch3d_rhs(kind, t, x, u, dx, M, W):
-    status = rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
-    winch_rates(kind.station, t, x, u, dx, W.tension)
+def _checked(sp, x, status):
+    """LIMIT when an OK step left the winch element shorter than MIN_FRACTION of its start length, else status."""
+    if status == C.OK and first_rest_length(sp, x) < MIN_FRACTION * sp[C.SP_PIECE]:
+        return C.LIMIT
     return status
-
-
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def winch3d_assemble(kind, t, x, u, dx, M, W):
-    assemble3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
-    winch_rates(kind.station, t, x, u, dx, W.tension)
-    return 0
-
-
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def winch2d_rhs(kind, t, x, u, dx, M, W):
-    status = rhs2d(t, x, u, dx, M, W, M.sag, M.caero)
-    winch_rates(kind.station, t, x, u, dx, W.tension)
-    return status
-
-
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def _reeled_in_too_far(sp, x):
-    return sp[SP_PIECE] * sp[SP_F_FIRST] + x[int(sp[SP_XOFF]) + SX_MOVED] < MIN_FRACTION * sp[SP_PIECE]
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def winch3d_check(kind, x, M, limits):
     """The rigid check; LIMIT when the winch element is shorter than MIN_FRACTION of its start length."""
-    status = rigid3d_check(kind, x, M, limits)
-    if status == OK and _reeled_in_too_far(kind.station, x):
-        return LIMIT
-    return status
+    return _checked(kind.station, x, rigid3d_check(kind, x, M, limits))
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def winch2d_check(kind, x, M, limits):
     """The in-plane rigid check; LIMIT as :func:`winch3d_check`."""
-    status = rigid2d_check(kind, x, M, limits)
-    if status == OK and _reeled_in_too_far(kind.station, x):
-        return LIMIT
-    return status
+    return _checked(kind.station, x, rigid2d_check(kind, x, M, limits))
 
 
-register_kind(Winch3D, winch3d_rhs, winch3d_check)
-register_kind(Winch2D, winch2d_rhs, winch2d_check)
+# The right-hand sides are the station kinds' of kernels/moving_cable.py, driven by T_0 (first_tension).
+register_kind(Winch3D, station3d_rhs, winch3d_check)
+register_kind(Winch2D, station2d_rhs, winch2d_check)
 register_moving_ends(Winch3D, winch_rest_length, winch_elongation_rate)
 register_moving_ends(Winch2D, winch_rest_length, winch_elongation_rate)
-register_assemble(Winch3D, winch3d_assemble)
+register_assemble(Winch3D, station3d_assemble)
+register_drive(Winch3D, first_tension)
+register_drive(Winch2D, first_tension)

@@ -106,6 +106,12 @@ def pack_station(st: StationParams, n_elements: int, state_offset: int, control_
     (``n_elements`` is checked: at least two)."""
     if n_elements < 2:
         raise ValueError(f"a moving cable needs at least two elements, got {n_elements}")
+    return station_slots(st, state_offset, control_offset)
+
+
+def station_slots(st: StationParams, state_offset: int, control_offset: int) -> np.ndarray:
+    """The ``SP_*`` slots of station parameters (the moving cable's or a winch's): piece length and fractions, the
+    offsets of the state block and the control, mode, drum, tau and the schedule."""
     n = len(st.speed_times)
     p = np.zeros(C.SP_SCHED + 2 * n)
     p[C.SP_PIECE], p[C.SP_F_FIRST], p[C.SP_F_LAST] = st.piece_length, st.first_fraction, st.last_fraction

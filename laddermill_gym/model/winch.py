@@ -18,7 +18,7 @@ from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.winch import Winch2D, Winch3D
 from laddermill_gym.model.configio import ConfigError, Section
 from laddermill_gym.model.params import N_CONTROLS, Assembly
-from laddermill_gym.model.station import MODES, StationParams
+from laddermill_gym.model.station import MODES, StationParams, station_slots
 
 #: The first element's rest length is f l_p + s with f = 1 for a winch; ``last_fraction`` must pass the
 #: station's check (> f) but no last element moves (kernels/winch.py).
@@ -96,17 +96,7 @@ def is_winch(st: StationParams | None) -> bool:
 def pack_winch(st: StationParams, state_offset: int, control_offset: int) -> np.ndarray:
     """The winch's slots (``SP_*``): l_p, f = 1, the offsets of its state block and control, mode, drum, tau and
     the schedule."""
-    n = len(st.speed_times)
-    p = np.zeros(C.SP_SCHED + 2 * n)
-    p[C.SP_PIECE], p[C.SP_F_FIRST], p[C.SP_F_LAST] = st.piece_length, st.first_fraction, st.last_fraction
-    p[C.SP_XOFF] = state_offset
-    p[C.SP_MODE] = {"prescribed": C.MODE_PRESCRIBED, "drum": C.MODE_DRUM, "commanded": C.MODE_COMMANDED}[st.mode]
-    p[C.SP_RADIUS], p[C.SP_INERTIA], p[C.SP_UOFF] = st.drum_radius, st.drum_inertia, control_offset
-    p[C.SP_TAU] = st.speed_time_constant
-    p[C.SP_NSCHED] = n
-    p[C.SP_SCHED:C.SP_SCHED + n] = st.speed_times
-    p[C.SP_SCHED + n:] = st.speed_values
-    return p
+    return station_slots(st, state_offset, control_offset)
 
 
 def winch_kind(asm: Assembly):

@@ -57,7 +57,7 @@ _FM = {"contract", "nsz", "arcp"}
 @njit(cache=True, error_model="numpy", fastmath=_FM)
 def schedule_speed(sp, t):
     """V_c(t) [m/s] of the piecewise-linear schedule, held constant outside it (the rigid mill's
-    ``kernels/moving_cable.scheduled_speed``, without importing the rigid kernels)."""
+    ``kernels/station.scheduled_speed``, without the rate)."""
     n = int(sp[SP_NSCHED])
     ot, ov = SP_SCHED, SP_SCHED + n
     if n == 1 or not t > sp[ot]:
