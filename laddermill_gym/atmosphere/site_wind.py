@@ -118,7 +118,9 @@ def _column(header: list[str], name: str, units: dict, path, required=True):
     return None
 
 
-def _number(text: str, path, line: int, name: str) -> float:
+def parse_number(text: str, path, line: int, name: str) -> float:
+    """The finite number in the text of field ``name`` on ``line`` of the file ``path``; SiteWindError naming the
+    file, line, field and text otherwise."""
     try:
         v = float(text)
     except ValueError:
@@ -179,13 +181,13 @@ def read_profiles_csv(path: Path | str, grid_step: float = 5.0) -> SiteWind:
     for (line, _), row in zip(lines[1:], rows[1:], strict=True):
         if len(row) != len(header):
             raise SiteWindError(f"{path}: line {line}: {len(row)} fields, the header has {len(header)}")
-        h = _number(row[hi], path, line, header[hi]) * hf
-        v = _number(row[vi], path, line, header[vi]) * vf
+        h = parse_number(row[hi], path, line, header[hi]) * hf
+        v = parse_number(row[vi], path, line, header[vi]) * vf
         if h < 0:
             raise SiteWindError(f"{path}: line {line}, field '{header[hi]}' = {row[hi]!r}: must be >= 0")
         if v < 0:
             raise SiteWindError(f"{path}: line {line}, field '{header[vi]}' = {row[vi]!r}: must be >= 0")
-        d = _number(row[di[0]], path, line, header[di[0]]) if di else np.nan
+        d = parse_number(row[di[0]], path, line, header[di[0]]) if di else np.nan
         entry = data.setdefault(row[ti].strip(), [])
         if any(h == e[0] for e in entry):
             raise SiteWindError(f"{path}: line {line}, field '{header[hi]}' = {row[hi]!r}: height given twice "

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from laddermill_gym.atmosphere.site_wind import SiteWind, SiteWindError, common_grid, open_text
+from laddermill_gym.atmosphere.site_wind import SiteWind, SiteWindError, common_grid, open_text, parse_number
 
 KNOT = 1852.0 / 3600.0  # [m/s] one international knot (1852 m per hour)
 
@@ -122,16 +122,7 @@ def _read_semicolon(path: Path, need: int):
     for k, row in enumerate(rows[1:], start=2):
         if len(row) != len(header) or len(row) < need:
             raise SiteWindError(f"{path}: line {k}: {len(row)} fields, expected {len(header)}")
-        vals = []
-        for name, text in zip(header, row, strict=True):
-            try:
-                v = float(text)
-            except ValueError:
-                raise SiteWindError(f"{path}: line {k}, field '{name}' = {text!r}: not a number") from None
-            if not np.isfinite(v):
-                raise SiteWindError(f"{path}: line {k}, field '{name}' = {text!r}: must be finite")
-            vals.append(v)
-        out.append(vals)
+        out.append([parse_number(text, path, k, name) for name, text in zip(header, row, strict=True)])
     return header, np.array(out)
 
 

@@ -106,6 +106,17 @@ def wing_state_3d(position, euler, v_body, rates) -> np.ndarray:
     return s
 
 
+def block_view(v: np.ndarray, start: int, count: int, size: int, first: int, n: int) -> np.ndarray:
+    """The entries ``first`` .. ``first + n - 1`` of ``count`` consecutive blocks of ``size`` entries (every wing's
+    or every node's state block) that begin at ``start`` of the flat contiguous vector v, as a (count, n) view:
+    writing to it writes v."""
+    return v[start: start + size * count].reshape(count, size)[:, first: first + n]
+
+
+#: A node's in-plane (x, z) pairs and where they sit in its 3D block (x, y, z): the position, then the velocity.
+NODE_PLANE_SLOTS = ((N2_POS, N3_POS), (N2_VEL, N3_VEL))
+
+
 def planar_to_3d(x2: np.ndarray, n_wings: int, n_nodes: int) -> np.ndarray:
     """Embed an in-plane state (6 per wing, 4 per node) into the 3D layout (13 per wing, 6 per node)."""
     x2 = np.asarray(x2, dtype=float)
@@ -114,14 +125,10 @@ def planar_to_3d(x2: np.ndarray, n_wings: int, n_nodes: int) -> np.ndarray:
         s = x2[B2_SIZE * k: B2_SIZE * (k + 1)]
         out.append(wing_state_3d([s[B2_X], 0.0, s[B2_Z]], [0.0, s[B2_THETA], 0.0], [s[B2_U], 0.0, s[B2_W]],
                                  [0.0, s[B2_Q], 0.0]))
-    b = B2_SIZE * n_wings
-    for j in range(n_nodes):
-        s = x2[b + N2_SIZE * j: b + N2_SIZE * (j + 1)]
-        n = np.zeros(N3_SIZE)
-        n[N3_POS], n[N3_POS + 2] = s[N2_POS], s[N2_POS + 1]
-        n[N3_VEL], n[N3_VEL + 2] = s[N2_VEL], s[N2_VEL + 1]
-        out.append(n)
-    return np.concatenate(out) if out else np.zeros(0)
+    nodes = np.zeros((n_nodes, N3_SIZE))
+    for s2, s3 in NODE_PLANE_SLOTS:
+        nodes[:, s3: s3 + 3: 2] = block_view(x2, B2_SIZE * n_wings, n_nodes, N2_SIZE, s2, 2)
+    return np.concatenate([*out, nodes.ravel()])
 
 
 def planar_from_3d(x3: np.ndarray, n_wings: int, n_nodes: int) -> np.ndarray:
@@ -135,11 +142,7 @@ def planar_from_3d(x3: np.ndarray, n_wings: int, n_nodes: int) -> np.ndarray:
         w[B2_X], w[B2_Z], w[B2_THETA] = s[B3_POS], s[B3_POS + 2], th
         w[B2_U], w[B2_W], w[B2_Q] = s[B3_VEL], s[B3_VEL + 2], s[B3_RATE + 1]
         out.append(w)
-    b = B3_SIZE * n_wings
-    for j in range(n_nodes):
-        s = x3[b + N3_SIZE * j: b + N3_SIZE * (j + 1)]
-        n = np.zeros(N2_SIZE)
-        n[N2_POS], n[N2_POS + 1] = s[N3_POS], s[N3_POS + 2]
-        n[N2_VEL], n[N2_VEL + 1] = s[N3_VEL], s[N3_VEL + 2]
-        out.append(n)
-    return np.concatenate(out) if out else np.zeros(0)
+    nodes = np.zeros((n_nodes, N2_SIZE))
+    for s2, s3 in NODE_PLANE_SLOTS:
+        nodes[:, s2: s2 + 2] = block_view(x3, B3_SIZE * n_wings, n_nodes, N3_SIZE, s3, 3)[:, ::2]
+    return np.concatenate([*out, nodes.ravel()])

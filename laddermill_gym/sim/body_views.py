@@ -79,33 +79,32 @@ class BodyViews(StationViews):
         a = self.assembly
         return self.state[a.n_wings * a.wing_state_size: a.body_state_size].reshape(a.n_nodes, a.node_state_size)
 
-    def wing_positions(self) -> np.ndarray:
-        """CG positions, shape (n_wings, 3), global frame [m] (y = 0 in the in-plane mode)."""
+    def _wing_vectors(self, slot3: int, slots2: tuple) -> np.ndarray:
+        """A 3-vector of every wing, shape (n_wings, 3): the three slots from ``slot3`` of a 3D wing, or the in-plane
+        wing's slots ``slots2`` (None: a component the plane does not have, 0)."""
         w = self._wing_block()
         if self.assembly.dim == 3:
-            return w[:, B3_POS: B3_POS + 3].copy()
-        return np.stack([w[:, B2_X], np.zeros(len(w)), w[:, B2_Z]], axis=1)
+            return w[:, slot3: slot3 + 3].copy()
+        return np.stack([np.zeros(len(w)) if s is None else w[:, s] for s in slots2], axis=1)
+
+    def wing_positions(self) -> np.ndarray:
+        """CG positions, shape (n_wings, 3), global frame [m] (y = 0 in the in-plane mode)."""
+        return self._wing_vectors(B3_POS, (B2_X, None, B2_Z))
 
     def wing_euler(self) -> np.ndarray:
         """3-2-1 Euler angles (roll phi, pitch theta, yaw psi), shape (n_wings, 3) [rad]."""
-        w = self._wing_block()
         if self.assembly.dim == 3:
-            return np.array([euler_from_quaternion(qq) for qq in w[:, B3_QUAT: B3_QUAT + 4]]).reshape(-1, 3)
-        return np.stack([np.zeros(len(w)), w[:, B2_THETA], np.zeros(len(w))], axis=1)
+            q = self._wing_block()[:, B3_QUAT: B3_QUAT + 4]
+            return np.array([euler_from_quaternion(qq) for qq in q]).reshape(-1, 3)
+        return self._wing_vectors(B3_QUAT, (None, B2_THETA, None))
 
     def wing_velocities(self) -> np.ndarray:
         """Body-frame CG velocities (u, v, w), shape (n_wings, 3) [m/s]."""
-        w = self._wing_block()
-        if self.assembly.dim == 3:
-            return w[:, B3_VEL: B3_VEL + 3].copy()
-        return np.stack([w[:, B2_U], np.zeros(len(w)), w[:, B2_W]], axis=1)
+        return self._wing_vectors(B3_VEL, (B2_U, None, B2_W))
 
     def wing_rates(self) -> np.ndarray:
         """Body rates (p, q, r), shape (n_wings, 3) [rad/s]."""
-        w = self._wing_block()
-        if self.assembly.dim == 3:
-            return w[:, B3_RATE: B3_RATE + 3].copy()
-        return np.stack([np.zeros(len(w)), w[:, B2_Q], np.zeros(len(w))], axis=1)
+        return self._wing_vectors(B3_RATE, (None, B2_Q, None))
 
     def wing_rotations(self) -> np.ndarray:
         """Rotation matrices body -> global, shape (n_wings, 3, 3)."""

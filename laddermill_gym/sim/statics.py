@@ -30,76 +30,58 @@ from laddermill_gym.kernels.contract import (
     N3_VEL,
     N_CONTROLS,
 )
-from laddermill_gym.model.states import euler_from_quaternion, quaternion_from_euler
+from laddermill_gym.model.states import block_view, euler_from_quaternion, quaternion_from_euler
 from laddermill_gym.sim.simulator import SimulationError
 
 
 def pack_unknowns(sim, x):
     """Equilibrium unknowns from a state: per wing position + Euler angles (3D) or x, z, theta (2D);
     per node its position."""
-    a = sim.assembly
-    out = []
+    a, x = sim.assembly, np.asarray(x, dtype=float)
+    wings, nodes = _unknown_views(a, x)
     if a.dim == 3:
-        for k in range(a.n_wings):
-            s = x[B3_SIZE * k: B3_SIZE * (k + 1)]
-            out.extend([*s[B3_POS: B3_POS + 3], *euler_from_quaternion(s[B3_QUAT: B3_QUAT + 4])])
-        b = B3_SIZE * a.n_wings
-        for j in range(a.n_nodes):
-            o = b + N3_SIZE * j + N3_POS
-            out.extend(x[o: o + 3])
-    else:
-        for k in range(a.n_wings):
-            o = B2_SIZE * k + B2_X
-            out.extend(x[o: o + 3])  # x, z, theta
-        b = B2_SIZE * a.n_wings
-        for j in range(a.n_nodes):
-            o = b + N2_SIZE * j + N2_POS
-            out.extend(x[o: o + 2])
-    return np.array(out)
+        euler = [euler_from_quaternion(q) for q in block_view(x, 0, a.n_wings, B3_SIZE, B3_QUAT, 4)]
+        wings = np.hstack([wings, np.reshape(euler, (-1, 3))])
+    return np.concatenate([wings.ravel(), nodes.ravel()])
+
+
+def _unknown_views(a, x):
+    """(wing, node) views of the state x that hold the equilibrium unknowns (3D: each wing's position, each node's;
+    in-plane: each wing's x, z, theta, each node's x, z)."""
+    if a.dim == 3:
+        return (block_view(x, 0, a.n_wings, B3_SIZE, B3_POS, 3),
+                block_view(x, B3_SIZE * a.n_wings, a.n_nodes, N3_SIZE, N3_POS, 3))
+    return (block_view(x, 0, a.n_wings, B2_SIZE, B2_X, 3),
+            block_view(x, B2_SIZE * a.n_wings, a.n_nodes, N2_SIZE, N2_POS, 2))
 
 
 def unpack_unknowns(sim, z):
     """State at rest (all velocities zero) from the equilibrium unknowns."""
     a = sim.assembly
     x = np.zeros(a.state_size)
-    i = 0
+    wings, nodes = _unknown_views(a, x)
+    z = np.asarray(z, dtype=float)
+    per = 6 if a.dim == 3 else 3  # a 3D wing's unknowns: position and Euler angles
+    zw = z[: per * a.n_wings].reshape(a.n_wings, per)
+    wings[:] = zw[:, :3]
     if a.dim == 3:
+        quats = block_view(x, 0, a.n_wings, B3_SIZE, B3_QUAT, 4)
         for k in range(a.n_wings):
-            o = B3_SIZE * k
-            x[o + B3_POS: o + B3_POS + 3] = z[i: i + 3]
-            x[o + B3_QUAT: o + B3_QUAT + 4] = quaternion_from_euler(*z[i + 3: i + 6])
-            i += 6
-        b = B3_SIZE * a.n_wings
-        for j in range(a.n_nodes):
-            o = b + N3_SIZE * j + N3_POS
-            x[o: o + 3] = z[i: i + 3]
-            i += 3
-    else:
-        for k in range(a.n_wings):
-            o = B2_SIZE * k + B2_X
-            x[o: o + 3] = z[i: i + 3]  # x, z, theta
-            i += 3
-        b = B2_SIZE * a.n_wings
-        for j in range(a.n_nodes):
-            o = b + N2_SIZE * j + N2_POS
-            x[o: o + 2] = z[i: i + 2]
-            i += 2
+            quats[k] = quaternion_from_euler(*zw[k, 3:])
+    nodes[:] = z[per * a.n_wings: per * a.n_wings + nodes.size].reshape(nodes.shape)
     return x
 
 
 def accelerations(sim, dx):
     """The acceleration entries of a state derivative (the equilibrium residual)."""
     a = sim.assembly
-    parts = []
     if a.dim == 3:
-        parts += [dx[B3_SIZE * k + B3_VEL: B3_SIZE * k + B3_RATE + 3] for k in range(a.n_wings)]
-        b = B3_SIZE * a.n_wings
-        parts += [dx[b + N3_SIZE * j + N3_VEL: b + N3_SIZE * j + N3_VEL + 3] for j in range(a.n_nodes)]
+        wings = block_view(dx, 0, a.n_wings, B3_SIZE, B3_VEL, B3_RATE + 3 - B3_VEL)
+        nodes = block_view(dx, B3_SIZE * a.n_wings, a.n_nodes, N3_SIZE, N3_VEL, 3)
     else:
-        parts += [dx[B2_SIZE * k + B2_U: B2_SIZE * k + B2_Q + 1] for k in range(a.n_wings)]
-        b = B2_SIZE * a.n_wings
-        parts += [dx[b + N2_SIZE * j + N2_VEL: b + N2_SIZE * j + N2_VEL + 2] for j in range(a.n_nodes)]
-    return np.concatenate(parts) if parts else np.zeros(0)
+        wings = block_view(dx, 0, a.n_wings, B2_SIZE, B2_U, B2_Q + 1 - B2_U)
+        nodes = block_view(dx, B2_SIZE * a.n_wings, a.n_nodes, N2_SIZE, N2_VEL, 2)
+    return np.concatenate([wings.ravel(), nodes.ravel()])
 
 
 def _accelerations_or_nan(sim, t: float, x: np.ndarray, u: np.ndarray) -> np.ndarray:
