@@ -240,13 +240,22 @@ FORWARDED: dict[str, tuple[str, str]] = {
                "runs, slack-taut, wind extremes, bang-bang controls, injected NaN, env episodes"),
     "train-seeds": ("laddermill_gym.harness.train_seeds", "train one config with several seeds, serially, on "
                     "local processes (--workers N) or on Ray (--ray)"),
-    "workers": ("laddermill_gym.studies.parallel", "laddermill workers warm: prepare a node for --workers / --ray "
-                "(fill numba's cache, compute the operating points once)"),
+    "workers": ("laddermill_gym.studies.gusts.warm_workers", "laddermill workers warm: prepare a node for "
+                "--workers / --ray (fill numba's cache, compute the operating points once)"),
     "pumping-cycle": ("laddermill_gym.studies.pumping.pumping_cycle", "pumping kite: the scripted cycle with the "
                       "lateral LQR against the quasi-steady prediction (Lansdorp, Schmehl)"),
     "gust-bench": ("laddermill_gym.studies.gusts.gust_bench", "run controllers on a versioned gust benchmark suite "
                    "(configs/benchmarks/); CSV, JSON and a scorecard"),
 }
+
+
+def _benchmark_parser(sub, name: str, text: str, func) -> argparse.ArgumentParser:
+    """A benchmark command on the subparsers ``sub``: the options every benchmark takes (``--json``, ``--quick``)."""
+    p = sub.add_parser(name, help=text)
+    p.add_argument("--json", default=None, help="also write the figures as JSON to this file")
+    p.add_argument("--quick", action="store_true", help="fewer repetitions (a smoke run)")
+    p.set_defaults(func=func)
+    return p
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -290,18 +299,12 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--no-step-check", action="store_true",
                    help="skip the estimate of RK4's stable step at the start (one Jacobian, about 0.1-2 s)")
     s.set_defaults(func=cmd_simulate)
-    b = sub.add_parser("bench", help="run the benchmark and print its figures")
-    b.add_argument("--json", default=None, help="also write the figures as JSON to this file")
-    b.add_argument("--quick", action="store_true", help="fewer repetitions (a smoke run)")
+    b = _benchmark_parser(sub, "bench", "run the benchmark and print its figures", cmd_bench)
     b.add_argument("--scenes", nargs="*", default=None)
     b.add_argument("--no-mill", action="store_true", help="leave out the moving-cable laddermill")
     b.add_argument("--no-pointmass", action="store_true",
                    help="leave out the point-mass scenes (podgaets_5km: 500,000 elements, memory and cost)")
-    b.set_defaults(func=cmd_bench)
-    e = sub.add_parser("bench-envs", help="env steps/s: native batched vector env vs SyncVectorEnv")
-    e.add_argument("--json", default=None, help="also write the figures as JSON to this file")
-    e.add_argument("--quick", action="store_true", help="fewer repetitions (a smoke run)")
-    e.set_defaults(func=cmd_bench_envs)
+    _benchmark_parser(sub, "bench-envs", "env steps/s: native batched vector env vs SyncVectorEnv", cmd_bench_envs)
     c = sub.add_parser("scenes", help="list the scenes")
     c.set_defaults(func=cmd_scenes)
     return p

@@ -20,6 +20,7 @@ import dataclasses
 import sys
 from pathlib import Path
 
+from laddermill_gym.studies.commands import Command
 from laddermill_gym.studies.parallel import Pool, add_arguments, check_arguments
 
 __all__ = ["train_task", "warm_envs", "train_seeds", "add_parser", "main"]
@@ -104,19 +105,11 @@ def _run(args, prog: str = PROG) -> int:
     return 0
 
 
-def add_parser(sub) -> argparse.ArgumentParser:
-    """The ``train-seeds`` subcommand on an argparse subparsers object (sets ``func``)."""
-    p = sub.add_parser("train-seeds", help="train one config with several seeds (locally parallel or on Ray)",
-                       description=__doc__.split("\n\n")[0])
-    _arguments(p)
-    p.set_defaults(func=_run)
-    return p
-
-
-def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n\n")[0])
-    _arguments(p)
-    return _run(p.parse_args(argv))
+#: ``laddermill train-seeds`` (its own parser's name is :data:`PROG`)
+COMMAND = Command("train-seeds", "train one config with several seeds (locally parallel or on Ray)",
+                  __doc__.split("\n\n")[0], _arguments, _run)
+add_parser = COMMAND.add_parser
+main = COMMAND.main
 
 
 if __name__ == "__main__":

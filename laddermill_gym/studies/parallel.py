@@ -20,7 +20,7 @@ laddermill_gym, numba or numpy version than the caller refuses to start; one who
 digest of its ``.py`` files: an edited file) is reported as a RuntimeWarning.
 Measured figures and the cluster set-up: ``laddermill_gym/docs/scale_out.md``.
 
-    python -m laddermill_gym.studies.parallel warm   # compile or load every gusts-v1 env's kernels; prints the time
+    laddermill workers warm   # compile or load every gusts-v1 env's kernels; prints the time
 """
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ from typing import Any
 from tqdm import tqdm
 
 __all__ = ["Task", "Pool", "run_tasks", "worker_report", "source_digest", "add_arguments", "check_arguments",
-           "RAY_HINT", "add_parser", "main"]
+           "RAY_HINT"]
 
 #: One task: a module-level function and its keyword arguments (both picklable).
 Task = tuple[Callable[..., Any], dict]
@@ -299,38 +299,3 @@ def check_arguments(args, prog: str) -> None:
     if msg:
         sys.stderr.write(f"{prog}: error: {msg}\n")
         raise SystemExit(2)
-
-
-def _warm_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("action", choices=["warm"], help="warm: compile (or load from the cache) the kernels of every "
-                   "gusts-v1 environment in this process and print the time; run once per node after installing")
-
-
-def _warm(args) -> int:
-    from laddermill_gym.studies.gusts.gust_bench import warmup_tasks
-    from laddermill_gym.studies.gusts.gust_suite import load_suite
-
-    t0 = time.perf_counter()
-    for fn, kw in tqdm(warmup_tasks(load_suite("gusts-v1"), [], ["open_loop"]), desc="warm", unit="env"):
-        fn(**kw)
-    print(f"warm: {time.perf_counter() - t0:.1f} s; numba cache: {os.environ.get('NUMBA_CACHE_DIR') or '__pycache__'}")
-    return 0
-
-
-def add_parser(sub) -> argparse.ArgumentParser:
-    """The ``workers`` subcommand (``laddermill workers warm``) on an argparse subparsers object."""
-    p = sub.add_parser("workers", help="prepare a node for --workers / --ray (fill numba's cache)",
-                       description=__doc__.split("\n\n")[0])
-    _warm_arguments(p)
-    p.set_defaults(func=_warm)
-    return p
-
-
-def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="laddermill workers", description=__doc__.split("\n\n")[0])
-    _warm_arguments(p)
-    return _warm(p.parse_args(argv))
-
-
-if __name__ == "__main__":
-    raise SystemExit(main())

@@ -25,8 +25,9 @@ from pathlib import Path
 
 import numpy as np
 
+from laddermill_gym.studies.commands import Command
 from laddermill_gym.studies.gusts.gust_suite import Scenario, Suite, load_suite
-from laddermill_gym.studies.parallel import add_arguments, check_arguments
+from laddermill_gym.studies.parallel import add_arguments, check_arguments, run_tasks
 
 __all__ = ["run_episodes", "episode_metrics", "episodes_task", "warmup_tasks", "run_suite", "write_outputs",
            "add_parser", "main"]
@@ -249,8 +250,6 @@ def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool
     The episode sets (each scenario's, and each undisturbed reference once per env, controller, duration and
     seeds) are independent tasks run by :func:`laddermill_gym.studies.parallel.run_tasks`: serially
     (``workers=0``), in ``workers`` local processes or on Ray (``ray``); the rows are the same either way."""
-    from laddermill_gym.studies.parallel import run_tasks
-
     jobs = _jobs(suite, env_ids, controllers, scenarios)
     tasks, refs, runs = [], {}, []
     for env_id, kw, spec, s in jobs:
@@ -309,15 +308,6 @@ def summarise(rows: list[dict]) -> list[dict]:
     return out
 
 
-def add_parser(sub) -> argparse.ArgumentParser:
-    """The ``gust-bench`` subcommand on an argparse subparsers object (sets ``func``)."""
-    p = sub.add_parser("gust-bench", help="run controllers on a versioned gust benchmark suite",
-                       description=__doc__.split("\n\n")[0])
-    _arguments(p)
-    p.set_defaults(func=_run)
-    return p
-
-
 def _arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--suite", default="gusts-v1", help="suite name in configs/benchmarks/ or a YAML path")
     p.add_argument("--env", nargs="*", default=[], help="environment ids (default: all of the suite's)")
@@ -340,10 +330,11 @@ def _run(args) -> int:
     return 0
 
 
-def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="laddermill gust-bench", description=__doc__.split("\n\n")[0])
-    _arguments(p)
-    return _run(p.parse_args(argv))
+#: ``laddermill gust-bench``
+COMMAND = Command("gust-bench", "run controllers on a versioned gust benchmark suite", __doc__.split("\n\n")[0],
+                  _arguments, _run)
+add_parser = COMMAND.add_parser
+main = COMMAND.main
 
 
 if __name__ == "__main__":

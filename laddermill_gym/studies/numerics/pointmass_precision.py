@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import time
 
 import numpy as np
 
@@ -30,7 +29,16 @@ from laddermill_gym.kernels.contract import N3_SIZE
 from laddermill_gym.kernels.pointmass.explicit import accelerations
 from laddermill_gym.sim.breakpoints import modulation_kinks
 from laddermill_gym.sim.pointmass import PointMassError, PointMassSimulator, explicit_stable_dt
-from laddermill_gym.studies.numerics.work_precision import FORCINGS, forcing_wind, measure, run_forcings
+from laddermill_gym.studies.numerics.precision import (
+    FORCINGS,
+    explicit_step_counts,
+    forcing_wind,
+    measure,
+    piecewise_reference,
+    run_forcings,
+    scaled_difference,
+    timed,
+)
 
 #: the implicit method runs at the sample period divided by these
 IMPLICIT_DIVISORS = (1, 2, 4, 5, 10, 20, 40)
@@ -71,22 +79,8 @@ def _rhs(sim: PointMassSimulator):
 def reference(sim: PointMassSimulator, times: np.ndarray, method: str, tol: float) -> np.ndarray:
     """States at ``times`` from scipy's ``method`` at rtol = atol = ``tol``, piece by piece between the kinks of the
     wind modulation (inside a piece the right-hand side sees times just below its end, so its own segment)."""
-    from scipy.integrate import solve_ivp
-
-    f = _rhs(sim)
     kinks = modulation_kinks(sim.M.tmod, sim.M.ms, sim.M.md)
-    x = sim.x.copy()
-    out = [x.copy()]
-    for ta, tb in zip(times[:-1], times[1:], strict=True):
-        ends = [ta, *[float(b) for b in kinks if ta < b < tb], tb]
-        for a, b in zip(ends[:-1], ends[1:], strict=True):
-            top = b - 1e-12 * max(1.0, abs(b))
-            sol = solve_ivp(lambda t, y, top=top: f(min(t, top), y), (a, b), x, method=method, rtol=tol, atol=tol)
-            if not sol.success:
-                raise RuntimeError(f"scipy {method} reference failed on [{a}, {b}] s: {sol.message}")
-            x = sol.y[:, -1]
-        out.append(x.copy())
-    return np.array(out)
+    return piecewise_reference(_rhs(sim), sim.x.copy(), times, kinks, method, tol)
 
 
 def _trajectory(sim: PointMassSimulator, times: np.ndarray):
@@ -109,27 +103,19 @@ def run_forcing(scene, forcing: str, duration: float, n_samples: int, repeats: i
         return PointMassSimulator(string, x0, u, dt, method, threads=1)
 
     refs = [reference(make("explicit", 1.0), times, m, tol) for m, tol in REFERENCES]
-    agree = float(np.max(np.abs((refs[1] - refs[0]) / np.maximum(1.0, np.abs(refs[0])))))
+    agree = float(np.max(np.abs(scaled_difference(refs[1], refs[0]))))
     xr = refs[0]
     pr = xr.reshape(xr.shape[0], -1, N3_SIZE)[:, :, :3]
     ref = {f"scipy_{m.lower()}_rtol": tol for m, tol in REFERENCES}
     ref["reference_agreement_state"] = agree
     period = duration / n_samples
-    m0 = max(1, math.ceil(period / dt_stable - 1e-9))
-    cases = [("explicit", period / m) for m in sorted({int(round(m0 * 2 ** (k / 2))) for k in range(N_EXPLICIT)})]
+    cases = [("explicit", period / m) for m in explicit_step_counts(period, dt_stable, N_EXPLICIT)]
     cases += [("implicit", period / k) for k in IMPLICIT_DIVISORS]
     rows = []
     for method, dt in cases:
-        def once():
-            sim = make(method, dt)
-            t0 = time.perf_counter()
-            xs, ps = _trajectory(sim, times)
-            return xs, ps, time.perf_counter() - t0
-
+        once = timed(lambda: make(method, dt), lambda sim: _trajectory(sim, times))
         row = {"forcing": forcing, "method": method, "dt_s": dt, "tol": math.nan}
-        rows.append(measure(row, once, xr, pr, duration, repeats, PointMassError))
-        if bar is not None:
-            bar.update(1)
+        rows.append(measure(row, once, xr, pr, duration, repeats, PointMassError, bar))
     return rows, ref
 
 

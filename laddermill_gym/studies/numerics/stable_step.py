@@ -17,6 +17,7 @@ from laddermill_gym.sim.stable_step import (  # noqa: F401  (re-exported: the st
     ray_limit,
     stability_function,
 )
+from laddermill_gym.studies.commands import run_subcommand
 
 
 def add_parser(sub) -> argparse.ArgumentParser:
@@ -38,11 +39,7 @@ def _cmd(args) -> int:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="laddermill")
-    sub = parser.add_subparsers(dest="cmd", required=True)
-    add_parser(sub)
-    args = parser.parse_args(["stable-step", *(argv if argv is not None else __import__("sys").argv[1:])])
-    return args.func(args)
+    return run_subcommand(add_parser, "stable-step", argv)
 
 
 if __name__ == "__main__":

@@ -24,7 +24,6 @@ import argparse
 import csv
 import json
 import math
-import sys
 import warnings
 from pathlib import Path
 
@@ -34,6 +33,7 @@ from laddermill_gym.kernels.contract import N_CONTROLS
 from laddermill_gym.model.configio import ConfigError
 from laddermill_gym.sim.simulator import SimulationError
 from laddermill_gym.sim.stable_step import UnstableStepWarning, estimate_stable_step
+from laddermill_gym.studies.commands import run_subcommand
 from laddermill_gym.studies.numerics import stress_cases as sc
 from laddermill_gym.studies.numerics.scenes import CRAFT_NAMES, DEFAULT_SCENES, build_simulator, with_settings
 
@@ -312,11 +312,7 @@ def _cmd(args) -> int:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="laddermill")
-    sub = parser.add_subparsers(dest="cmd", required=True)
-    add_parser(sub)
-    args = parser.parse_args(["stress", *(sys.argv[1:] if argv is None else argv)])
-    return args.func(args)
+    return run_subcommand(add_parser, "stress", argv)
 
 
 if __name__ == "__main__":

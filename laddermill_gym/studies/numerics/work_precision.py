@@ -29,17 +29,25 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import statistics
-import sys
-import time
 from pathlib import Path
 
 import numpy as np
 
 from laddermill_gym.sim.simulator import ADAPTIVE_METHODS, FIXED_STEP_METHODS, SimulationError, Simulator
+from laddermill_gym.studies.commands import run_subcommand
+from laddermill_gym.studies.numerics import pointmass_precision
+from laddermill_gym.studies.numerics.precision import (
+    FORCINGS,
+    explicit_step_counts,
+    forcing_wind,
+    measure,
+    piecewise_reference,
+    run_forcings,
+    scaled_difference,
+    timed,
+)
 from laddermill_gym.studies.numerics.scenes import build_simulator, with_settings
 
-FORCINGS = ("smooth", "step", "gust")
 #: the linearly implicit methods run at the sample period divided by these
 W_STEP_DIVISORS = (1, 2, 3, 4, 6, 8, 12, 16)
 TOLERANCES = (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10)
@@ -68,20 +76,6 @@ def forcing_setup(sim: Simulator, forcing: str, duration: float):
     return x0, forcing_wind(wind, forcing, duration)
 
 
-def forcing_wind(wind, forcing: str, duration: float):
-    """The ``WindParams`` of a non-smooth forcing over ``duration`` [s] (:func:`forcing_setup`), None for smooth."""
-    if forcing == "smooth":
-        return None
-    if forcing == "step":
-        return wind.with_modulation(0.3037 * duration, 1e-3, np.ones(2), np.array([0.0, 0.1]))
-    if forcing == "gust":
-        t0, length = 0.2 * duration, 0.4 * duration
-        tt = np.arange(0.0, length + 1e-9, 0.1)
-        speed = 1.0 + 0.15 * (1.0 - np.cos(2 * np.pi * tt / length))
-        return wind.with_modulation(t0, 0.1, speed, np.zeros_like(speed))
-    raise ValueError(f"forcing = {forcing!r}: must be one of {FORCINGS}")
-
-
 def positions(sim: Simulator) -> np.ndarray:
     """Wing CG and free node positions stacked, shape (n_wings + n_nodes, 3) [m]."""
     return np.vstack([sim.wing_positions(), sim.node_positions()])
@@ -104,33 +98,7 @@ def trajectory(sim: Simulator, times: np.ndarray, method: str, value: float) -> 
 def scipy_reference(sim: Simulator, times: np.ndarray) -> np.ndarray:
     """States at ``times`` from scipy's DOP853 at rtol = atol = 1e-12 on ``sim.rhs``, integrated piece by piece
     between the wind's kinks (inside a piece the rhs sees times just below its end, so its own segment)."""
-    from scipy.integrate import solve_ivp
-
-    kinks = sim.breakpoint_times
-    x = sim.state.copy()
-    out = [x.copy()]
-    for ta, tb in zip(times[:-1], times[1:], strict=True):
-        ends = [ta, *[float(b) for b in kinks if ta < b < tb], tb]
-        for a, b in zip(ends[:-1], ends[1:], strict=True):
-            top = b - 1e-12 * max(1.0, abs(b))
-            sol = solve_ivp(lambda t, y, top=top: sim.rhs(min(t, top), y), (a, b), x, method="DOP853",
-                            rtol=REF_TOL, atol=REF_TOL)
-            if not sol.success:
-                raise RuntimeError(f"scipy DOP853 reference failed on [{a}, {b}] s: {sol.message}")
-            x = sol.y[:, -1]
-        out.append(x.copy())
-    return np.array(out)
-
-
-def errors(xs, ps, xr, pr) -> dict:
-    """Final-time, RMS and largest errors of positions [m] (per body Euclidean; the largest also relative to the
-    reference's extent, the largest distance of a body from the origin) and of the scaled full state [-]."""
-    dp = np.linalg.norm(ps - pr, axis=2)
-    dx = (xs - xr) / np.maximum(1.0, np.abs(xr))
-    extent = float(np.max(np.linalg.norm(pr, axis=2)))
-    return {"err_final_pos_m": float(np.max(dp[-1])), "err_rms_pos_m": float(np.sqrt(np.mean(dp**2))),
-            "err_max_pos_m": float(np.max(dp)), "err_max_pos_rel": float(np.max(dp)) / extent,
-            "err_final_state": float(np.max(np.abs(dx[-1]))), "err_rms_state": float(np.sqrt(np.mean(dx**2)))}
+    return piecewise_reference(sim.rhs, sim.state.copy(), times, sim.breakpoint_times, "DOP853", REF_TOL)
 
 
 def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, repeats: int, dt_stable: float,
@@ -141,11 +109,10 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
     ref_sim = with_settings(base, state=x0, wind=wind, method="dp54", breakpoints="all")
     xr, pr = trajectory(ref_sim, times, "dp54", REF_TOL)
     xs2 = scipy_reference(with_settings(base, state=x0, wind=wind, method="dp54"), times)
-    agree = float(np.max(np.abs((xs2 - xr) / np.maximum(1.0, np.abs(xr)))))
+    agree = float(np.max(np.abs(scaled_difference(xs2, xr))))
     ref = {"dp54_rtol": REF_TOL, "scipy_dop853_rtol": REF_TOL, "reference_agreement_state": agree}
     period = duration / n_samples
-    m0 = max(1, math.ceil(period / dt_stable - 1e-9))
-    ms = sorted({int(round(m0 * 2 ** (k / 2))) for k in range(n_dt)})
+    ms = explicit_step_counts(period, dt_stable, n_dt)
     cases = [("rk4", period / m) for m in ms]
     if forcing != "smooth":
         cases += [(label, period / m) for label in ("rk4-all", "rk4-off") for m in ms]
@@ -163,34 +130,13 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
         if method not in ADAPTIVE_METHODS:
             kw["dt"] = value
 
-        def once():
-            """(states, positions, wall time [s] of the integration alone)."""
-            sim = with_settings(base, state=x0, wind=wind, **kw)
-            t0 = time.perf_counter()
-            xs, ps = trajectory(sim, times, method, value)
-            return xs, ps, time.perf_counter() - t0
-
+        once = timed(lambda: with_settings(base, state=x0, wind=wind, **kw),
+                     lambda sim: trajectory(sim, times, method, value))
         adaptive = method in ADAPTIVE_METHODS
         row = {"forcing": forcing, "method": label, "dt_s": math.nan if adaptive else value,
                "tol": value if adaptive else math.nan}
-        rows.append(measure(row, once, xr, pr, duration, repeats, SimulationError))
-        if bar is not None:
-            bar.update(1)
+        rows.append(measure(row, once, xr, pr, duration, repeats, SimulationError, bar))
     return rows, ref
-
-
-def measure(row: dict, once, xr, pr, duration: float, repeats: int, failure=SimulationError) -> dict:
-    """Fill ``row`` for one run: ``once()`` gives (states, positions, wall time [s]); the errors of its first call
-    against the reference (xr, pr), the median wall time of ``repeats`` more and the real-time factor; a
-    ``failure`` raised becomes the row's status (its first line), with no time."""
-    try:
-        xs, ps, _ = once()
-        row.update(errors(xs, ps, xr, pr), status="ok")
-        row["wall_s"] = statistics.median([once()[2] for _ in range(repeats)])
-        row["real_time_factor"] = duration / row["wall_s"]
-    except failure as err:
-        row.update(status=f"failed: {str(err).splitlines()[0][:160]}", wall_s=math.nan)
-    return row
 
 
 def run_scene(scene: str, forcings=FORCINGS, duration: float = 5.0, n_samples: int = 20, repeats: int = 3,
@@ -208,25 +154,6 @@ def run_scene(scene: str, forcings=FORCINGS, duration: float = 5.0, n_samples: i
            "references": {}, "rows": []}
     return run_forcings(out, forcings, f"work-precision {scene}", progress,
                         lambda f, bar: run_cases(base, f, duration, n_samples, repeats, est.dt_max, n_dt, bar))
-
-
-def run_forcings(out: dict, forcings, desc: str, progress: bool, run) -> dict:
-    """Add ``run(forcing, bar)``'s (rows, reference summary) of every forcing to the result ``out`` (its
-    "references" and "rows"), with a progress bar counting the runs when ``progress``."""
-    bar = None
-    if progress:
-        from tqdm import tqdm
-
-        bar = tqdm(desc=desc, unit="run", leave=False)
-    try:
-        for f in forcings:
-            rows, ref = run(f, bar)
-            out["references"][f] = ref
-            out["rows"] += rows
-    finally:
-        if bar is not None:
-            bar.close()
-    return out
 
 
 def add_parser(sub) -> argparse.ArgumentParser:
@@ -249,7 +176,6 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def _cmd(args) -> int:
-    from laddermill_gym.studies.numerics import pointmass_precision
     from laddermill_gym.studies.numerics.work_precision_output import plot_work_precision, print_summary, save_rows
 
     out = Path(args.out)
@@ -270,11 +196,7 @@ def _cmd(args) -> int:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="laddermill")
-    sub = parser.add_subparsers(dest="cmd", required=True)
-    add_parser(sub)
-    args = parser.parse_args(["work-precision", *(sys.argv[1:] if argv is None else argv)])
-    return args.func(args)
+    return run_subcommand(add_parser, "work-precision", argv)
 
 
 if __name__ == "__main__":

@@ -22,6 +22,7 @@ from tqdm import tqdm
 
 from laddermill_gym.ladder.pointmass_scene import load_pointmass_scene
 from laddermill_gym.sim.pointmass import PointMassSimulator, explicit_stable_dt
+from laddermill_gym.studies.commands import run_subcommand
 
 SCENE = "podgaets_5km"
 #: Element lengths [m] giving 10,000, 100,000 and 500,000 elements on the scene's 5 km.
@@ -195,12 +196,8 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.pointmass.pointmass_benchmark",
-                                     description=__doc__.split("\n\n")[0])
-    sub = parser.add_subparsers(dest="command")
-    add_parser(sub)
-    args = parser.parse_args(["bench-pointmass", *(sys.argv[1:] if argv is None else argv)])
-    args.func(args)
+    run_subcommand(add_parser, "bench-pointmass", argv,
+                   prog="python -m laddermill_gym.studies.pointmass.pointmass_benchmark", dest="command")
     return 0
 
 

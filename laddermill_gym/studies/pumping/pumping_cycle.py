@@ -28,6 +28,7 @@ from laddermill_gym.model.params import AERO_INDEX
 from laddermill_gym.quasisteady import lansdorp, schmehl
 from laddermill_gym.quasisteady.lansdorp import PumpingParams
 from laddermill_gym.sim.statics import table_spline
+from laddermill_gym.studies.commands import Command
 
 __all__ = ["run_cycles", "cycle_stats", "quasi_steady", "add_parser", "main"]
 
@@ -193,19 +194,11 @@ def _run(args) -> int:
     return 0
 
 
-def add_parser(sub) -> argparse.ArgumentParser:
-    """The ``pumping-cycle`` subcommand on an argparse subparsers object (sets ``func``)."""
-    p = sub.add_parser("pumping-cycle", help="dynamic pumping cycle vs the quasi-steady prediction",
-                       description=__doc__.split("\n\n")[0].replace("``", ""))
-    _arguments(p)
-    p.set_defaults(func=_run)
-    return p
-
-
-def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="laddermill pumping-cycle", description=__doc__.split("\n\n")[0].replace("``", ""))
-    _arguments(p)
-    return _run(p.parse_args(argv))
+#: ``laddermill pumping-cycle``
+COMMAND = Command("pumping-cycle", "dynamic pumping cycle vs the quasi-steady prediction",
+                  __doc__.split("\n\n")[0].replace("``", ""), _arguments, _run)
+add_parser = COMMAND.add_parser
+main = COMMAND.main
 
 
 if __name__ == "__main__":
