@@ -61,8 +61,13 @@ def time_rhs(sim: Simulator, n: int, repeats: int) -> float:
 def time_rhs_interleaved(sims: dict[str, Simulator], n: int, repeats: int) -> dict[str, float]:
     """Median time of one right-hand side [s] of each simulator, timed in turn within every repeat so that
     slow drifts of a shared machine hit all of them alike (the fidelity savings are differences of these)."""
-    runners = {k: _rhs_runner(sim, n) for k, sim in sims.items()}
-    times: dict[str, list[float]] = {k: [] for k in sims}
+    return interleaved_medians({k: _rhs_runner(sim, n) for k, sim in sims.items()}, n, repeats)
+
+
+def interleaved_medians(runners: dict, n: int, repeats: int) -> dict:
+    """Median wall time of one of the ``n`` units [s] each of ``runners`` (name -> a callable doing ``n`` units)
+    does, the runners timed in turn within every repeat (a shared, noisy machine then slows all of them alike)."""
+    times: dict[str, list[float]] = {k: [] for k in runners}
     for _ in range(repeats):
         for k, run in runners.items():
             t0 = time.perf_counter()

@@ -8,15 +8,13 @@ station removed) for the cost of the moving cable, the plain post-step check for
 from __future__ import annotations
 
 import dataclasses
-import statistics
-import time
 
 import numpy as np
 
 from laddermill_gym.kernels.contract import SX_MOVED
 from laddermill_gym.kernels.integrate import normalise_and_check, rk4_advance
 from laddermill_gym.sim.simulator import Simulator
-from laddermill_gym.studies.benchmarks.benchmark import median_time
+from laddermill_gym.studies.benchmarks.benchmark import interleaved_medians, median_time
 
 #: Target of issue 12: the 3D mill at least this many times real time on one thread at its default dt.
 TARGET_REAL_TIME = 30.0
@@ -50,14 +48,7 @@ def _step_runner(sim: Simulator, n: int):
 def _step_times(sims: dict, n: int, repeats: int) -> dict:
     """Median wall time of one RK4 step [s] of each simulator, timed in turn within every repeat (a shared,
     noisy machine then slows all of them alike)."""
-    runners = {k: _step_runner(s, n) for k, s in sims.items()}
-    times: dict = {k: [] for k in sims}
-    for _ in range(repeats):
-        for k, run in runners.items():
-            t0 = time.perf_counter()
-            run()
-            times[k].append(time.perf_counter() - t0)
-    return {k: statistics.median(v) / n for k, v in times.items()}
+    return interleaved_medians({k: _step_runner(s, n) for k, s in sims.items()}, n, repeats)
 
 
 def _transfer_cost(sim: Simulator, repeats: int, n: int = 2000) -> tuple[float, float]:
