@@ -40,6 +40,12 @@ ONLY = {
     "quasisteady": {"contract", "model", "atmosphere", "configs"},
     "derivations": {"model"},
 }
+#: studies/ by topic (issue 28): the other topics each topic may import (beside the shared modules at the top of
+#: studies/ and the layers below), as its ``__init__.py`` says; the shared modules import no topic.
+STUDIES = {
+    "benchmarks": {"gusts"}, "mill": {"benchmarks"}, "gusts": set(), "lateral": set(), "numerics": set(),
+    "pointmass": set(), "pumping": set(), "rotorcraft": set(),
+}
 #: A literal 3D rigid-body offset: ``13 * k`` or ``k * 13`` (not a number like 1e-13 * s).
 THIRTEEN = re.compile(r"(?<![\w.+-])13\s*\*\s*[A-Za-z_(]|[\w)\]]\s*\*\s*13(?![\w.])")
 
@@ -217,6 +223,22 @@ def _private_attributes(path: Path):
         if (isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id in aliases
                 and node.attr.startswith("_") and not node.attr.startswith("__")):
             yield node.lineno, f"{node.value.id}.{node.attr}"
+
+
+def test_the_topics_of_studies_import_only_the_topics_their_init_names():
+    topics = {p.parent.name for p in (PACKAGE / "studies").glob("*/__init__.py")}
+    assert topics == set(STUDIES), f"studies/ topics {sorted(topics)}, STUDIES lists {sorted(STUDIES)}"
+    found = []
+    for path in _sources("laddermill_gym/studies"):
+        rel = path.relative_to(PACKAGE / "studies").parts
+        mine = rel[0] if len(rel) > 1 else None  # None: a shared module at the top of studies/
+        for line, module, names in _imports(path):
+            for n in names or [""]:
+                parts = (f"{module}.{n}" if n else module).split(".")
+                other = parts[2] if parts[:2] == ["laddermill_gym", "studies"] and len(parts) > 2 else None
+                if other in STUDIES and other != mine and other not in STUDIES.get(mine, set()):
+                    found.append(f"{path.relative_to(ROOT)}:{line} ({mine or 'shared'}) imports studies.{other}")
+    assert not found, "\n".join(found)
 
 
 def test_files_under_400_lines():
