@@ -232,10 +232,15 @@ def mill2d_check(kind, x, M, limits):
     return _book(kind.station, x, d)
 
 
-register_kind(MovingCable3D, station3d_rhs, mill3d_check)
-register_kind(MovingCable2D, station2d_rhs, mill2d_check)
-register_moving_ends(MovingCable3D, mill_rest_length, mill_elongation_rate)
-register_moving_ends(MovingCable2D, mill_rest_length, mill_elongation_rate)
-register_assemble(MovingCable3D, station3d_assemble)
-register_drive(MovingCable3D, veered_minus_hauled)
-register_drive(MovingCable2D, veered_minus_hauled)
+def register_station_kinds(kind3d, kind2d, check3d, check2d, rest_length, elongation_rate, drive) -> None:
+    """Register the 3D and in-plane markers of a station kind (the moving cable, the winch) with the station
+    right-hand sides above, the kind's post-step checks, moving element ends and drum drive."""
+    for marker, rhs, check in ((kind3d, station3d_rhs, check3d), (kind2d, station2d_rhs, check2d)):
+        register_kind(marker, rhs, check)
+        register_moving_ends(marker, rest_length, elongation_rate)
+        register_drive(marker, drive)
+    register_assemble(kind3d, station3d_assemble)
+
+
+register_station_kinds(MovingCable3D, MovingCable2D, mill3d_check, mill2d_check, mill_rest_length,
+                       mill_elongation_rate, veered_minus_hauled)

@@ -23,10 +23,9 @@ from collections import namedtuple
 from numba import njit
 
 from laddermill_gym.kernels import contract as C
-from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_moving_ends
-from laddermill_gym.kernels.moving_cable import station2d_rhs, station3d_assemble, station3d_rhs
+from laddermill_gym.kernels.moving_cable import register_station_kinds
 from laddermill_gym.kernels.rigid.kinds import rigid2d_check, rigid3d_check
-from laddermill_gym.kernels.station import cable_speed, first_rest_length, register_drive
+from laddermill_gym.kernels.station import cable_speed, first_rest_length
 
 _FM = {"contract", "nsz", "arcp"}
 
@@ -82,10 +81,5 @@ def winch2d_check(kind, x, M, limits):
 
 
 # The right-hand sides are the station kinds' of kernels/moving_cable.py, driven by T_0 (first_tension).
-register_kind(Winch3D, station3d_rhs, winch3d_check)
-register_kind(Winch2D, station2d_rhs, winch2d_check)
-register_moving_ends(Winch3D, winch_rest_length, winch_elongation_rate)
-register_moving_ends(Winch2D, winch_rest_length, winch_elongation_rate)
-register_assemble(Winch3D, station3d_assemble)
-register_drive(Winch3D, first_tension)
-register_drive(Winch2D, first_tension)
+register_station_kinds(Winch3D, Winch2D, winch3d_check, winch2d_check, winch_rest_length, winch_elongation_rate,
+                       first_tension)

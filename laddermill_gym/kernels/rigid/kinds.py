@@ -11,41 +11,7 @@ from collections import namedtuple
 import numpy as np
 from numba import njit
 
-from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
-    AO_FORCE,
-    AO_G,
-    AO_KAPPA,
-    AO_MOMENT,
-    B2_Q,
-    B2_SIZE,
-    B2_U,
-    B2_W,
-    B2_Z,
-    B3_POS,
-    B3_QUAT,
-    B3_RATE,
-    B3_SIZE,
-    B3_VEL,
-    CTRL_AILERON,
-    CTRL_ELEVATOR,
-    CTRL_RUDDER,
-    GL_ALPHA0,
-    GL_DALPHA,
-    GROUND,
-    LIM_GROUND,
-    LIM_RATE,
-    LIM_SPEED,
-    LIMIT,
-    N2_POS,
-    N2_SIZE,
-    N2_VEL,
-    N3_POS,
-    N3_SIZE,
-    N3_VEL,
-    N_CONTROLS,
-    NONFINITE,
-    OK,
-)
+from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_vehicle
 from laddermill_gym.kernels.rigid.aero import wing_aero
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
@@ -62,7 +28,7 @@ WingVehicle = namedtuple("WingVehicle", ["n_controls"])
 #: Kind markers (``dim``: [3.0] or [2.0]) and the winged-body vehicle (``n_controls``: [3.0] per body).
 RIGID_3D = Rigid3D(np.array([3.0]))
 RIGID_2D = Rigid2D(np.array([2.0]))
-WING = WingVehicle(np.array([float(N_CONTROLS)]))
+WING = WingVehicle(np.array([float(C.N_CONTROLS)]))
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
@@ -70,15 +36,15 @@ def wing_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
     """Aerodynamic force and moment (body axes, about the CG) on wing k, and its alpha-rate (apparent mass)
     terms added to the diagonal block Dk. Zero in vacuum. ``env`` = (s_mod, d_mod, sd_mod, dd_mod, zd)."""
     s_mod, d_mod, sd_mod, dd_mod, zd = env
-    o = B3_SIZE * k
+    o = C.B3_SIZE * k
     wf = M.wf
-    rho = density(-x[o + B3_POS + 2], wf)
+    rho = density(-x[o + C.B3_POS + 2], wf)
     if not rho > 0.0:
         return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-    ov, orr = o + B3_VEL, o + B3_RATE
+    ov, orr = o + C.B3_VEL, o + C.B3_RATE
     vx, vy, vz = x[ov], x[ov + 1], x[ov + 2]
     p, q, r = x[orr], x[orr + 1], x[orr + 2]
-    px, py, pz = x[o + B3_POS], x[o + B3_POS + 1], x[o + B3_POS + 2]
+    px, py, pz = x[o + C.B3_POS], x[o + C.B3_POS + 1], x[o + C.B3_POS + 2]
     wgx, wgy, wgz = wind_point(px, py, pz, t, wf, s_mod, d_mod, M.gp, M.gv)
     wbx = R[0, 0] * wgx + R[1, 0] * wgy + R[2, 0] * wgz
     wby = R[0, 1] * wgx + R[1, 1] * wgy + R[2, 1] * wgz
@@ -93,16 +59,16 @@ def wing_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
     d2 = ua * ua + wa * wa
     ad0 = (-wa * ex_ + ua * ez_) / d2 if d2 > 1e-18 else 0.0
     ao = W.aout
-    c = N_CONTROLS * k
-    wing_aero(M.wtype[k], M.tf, M.ac, M.glob[GL_ALPHA0], M.glob[GL_DALPHA], rho, ua, va, wa, p, q, r,
-              u[c + CTRL_ELEVATOR], u[c + CTRL_RUDDER], u[c + CTRL_AILERON], ad0, W.coef, ao)
+    c = C.N_CONTROLS * k
+    wing_aero(M.wtype[k], M.tf, M.ac, M.glob[C.GL_ALPHA0], M.glob[C.GL_DALPHA], rho, ua, va, wa, p, q, r,
+              u[c + C.CTRL_ELEVATOR], u[c + C.CTRL_RUDDER], u[c + C.CTRL_AILERON], ad0, W.coef, ao)
     for i in range(6):
-        ki = ao[AO_KAPPA + i]
+        ki = ao[C.AO_KAPPA + i]
         if ki != 0.0:
             for j in range(3):
-                Dk[i, j] -= ki * ao[AO_G + j]
-    return (ao[AO_FORCE], ao[AO_FORCE + 1], ao[AO_FORCE + 2], ao[AO_MOMENT], ao[AO_MOMENT + 1],
-            ao[AO_MOMENT + 2])
+                Dk[i, j] -= ki * ao[C.AO_G + j]
+    return (ao[C.AO_FORCE], ao[C.AO_FORCE + 1], ao[C.AO_FORCE + 2], ao[C.AO_MOMENT], ao[C.AO_MOMENT + 1],
+            ao[C.AO_MOMENT + 2])
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
@@ -136,33 +102,33 @@ def rigid3d_check(kind, x, M, limits):
     below it)."""
     nw = M.wtype.size
     nn = M.node_mass.size
-    vmax2 = limits[LIM_SPEED] * limits[LIM_SPEED]
-    wmax2 = limits[LIM_RATE] * limits[LIM_RATE]
-    hg = limits[LIM_GROUND]
+    vmax2 = limits[C.LIM_SPEED] * limits[C.LIM_SPEED]
+    wmax2 = limits[C.LIM_RATE] * limits[C.LIM_RATE]
+    hg = limits[C.LIM_GROUND]
     if not _all_finite(x):
-        return NONFINITE
+        return C.NONFINITE
     for k in range(nw):
-        o = B3_SIZE * k
-        oq, ov, orr = o + B3_QUAT, o + B3_VEL, o + B3_RATE
+        o = C.B3_SIZE * k
+        oq, ov, orr = o + C.B3_QUAT, o + C.B3_VEL, o + C.B3_RATE
         n = math.sqrt(x[oq] ** 2 + x[oq + 1] ** 2 + x[oq + 2] ** 2 + x[oq + 3] ** 2)
         if not (n > 1e-100 and n < 1e100):  # a vanished or overflowing quaternion: the attitude is lost
-            return NONFINITE
+            return C.NONFINITE
         for i in range(4):
             x[oq + i] /= n
         if x[ov] ** 2 + x[ov + 1] ** 2 + x[ov + 2] ** 2 > vmax2:
-            return LIMIT
+            return C.LIMIT
         if x[orr] ** 2 + x[orr + 1] ** 2 + x[orr + 2] ** 2 > wmax2:
-            return LIMIT
-        if -x[o + B3_POS + 2] <= hg:
-            return GROUND
-    base = B3_SIZE * nw
+            return C.LIMIT
+        if -x[o + C.B3_POS + 2] <= hg:
+            return C.GROUND
+    base = C.B3_SIZE * nw
     for j in range(nn):
-        o = base + N3_SIZE * j + N3_VEL
+        o = base + C.N3_SIZE * j + C.N3_VEL
         if x[o] ** 2 + x[o + 1] ** 2 + x[o + 2] ** 2 > vmax2:
-            return LIMIT
-        if -x[base + N3_SIZE * j + N3_POS + 2] <= hg:
-            return GROUND
-    return OK
+            return C.LIMIT
+        if -x[base + C.N3_SIZE * j + C.N3_POS + 2] <= hg:
+            return C.GROUND
+    return C.OK
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
@@ -171,25 +137,25 @@ def rigid2d_check(kind, x, M, limits):
     CGs and free nodes against the ground height ``limits[LIM_GROUND]`` (GROUND at or below it)."""
     nw = M.wtype.size
     nn = M.node_mass.size
-    vmax2 = limits[LIM_SPEED] * limits[LIM_SPEED]
-    wmax2 = limits[LIM_RATE] * limits[LIM_RATE]
-    hg = limits[LIM_GROUND]
+    vmax2 = limits[C.LIM_SPEED] * limits[C.LIM_SPEED]
+    wmax2 = limits[C.LIM_RATE] * limits[C.LIM_RATE]
+    hg = limits[C.LIM_GROUND]
     if not _all_finite(x):
-        return NONFINITE
+        return C.NONFINITE
     for k in range(nw):
-        o = B2_SIZE * k
-        if x[o + B2_U] ** 2 + x[o + B2_W] ** 2 > vmax2 or x[o + B2_Q] ** 2 > wmax2:
-            return LIMIT
-        if -x[o + B2_Z] <= hg:
-            return GROUND
-    base = B2_SIZE * nw
+        o = C.B2_SIZE * k
+        if x[o + C.B2_U] ** 2 + x[o + C.B2_W] ** 2 > vmax2 or x[o + C.B2_Q] ** 2 > wmax2:
+            return C.LIMIT
+        if -x[o + C.B2_Z] <= hg:
+            return C.GROUND
+    base = C.B2_SIZE * nw
     for j in range(nn):
-        o = base + N2_SIZE * j + N2_VEL
+        o = base + C.N2_SIZE * j + C.N2_VEL
         if x[o] ** 2 + x[o + 1] ** 2 > vmax2:
-            return LIMIT
-        if -x[base + N2_SIZE * j + N2_POS + 1] <= hg:
-            return GROUND
-    return OK
+            return C.LIMIT
+        if -x[base + C.N2_SIZE * j + C.N2_POS + 1] <= hg:
+            return C.GROUND
+    return C.OK
 
 
 register_kind(Rigid3D, rigid3d_rhs, rigid3d_check)

@@ -10,42 +10,12 @@ import math
 
 from numba import njit
 
-from laddermill_gym.kernels.cable import aero_load, lateral_elongation, tension_plain, tension_sag
-from laddermill_gym.kernels.contract import (
-    AO2_FORCE_X,
-    AO2_FORCE_Z,
-    AO2_G,
-    AO2_KAPPA,
-    AO2_MOMENT,
-    B2_Q,
-    B2_SIZE,
-    B2_THETA,
-    B2_U,
-    B2_W,
-    B2_X,
-    B2_Z,
-    CTRL_ELEVATOR,
-    EF_DA,
-    EF_DIAMETER,
-    EF_EA,
-    EF_MU,
-    END_NODE,
-    END_WING,
-    GL_ALPHA0,
-    GL_DALPHA,
-    GL_GRAVITY,
-    N2_POS,
-    N2_SIZE,
-    N2_VEL,
-    N_CONTROLS,
-    TF_JYY,
-    TF_MASS,
-    TM_DT,
-    TM_T0,
-)
+from laddermill_gym.kernels import contract as C
+from laddermill_gym.kernels.cable import aero_load
 from laddermill_gym.kernels.dispatch import elongation_rate, rest_length
 from laddermill_gym.kernels.rigid.aero import wing_aero_long
 from laddermill_gym.kernels.rigid.blocks import tree_solve
+from laddermill_gym.kernels.rigid.element_loads import clear_blocks, element_tension, split_ends
 from laddermill_gym.kernels.rigid.rhs3d import add_const_mass, block_of
 from laddermill_gym.kernels.wind import density, modulation, wind_point, wind_point_rate
 
@@ -53,15 +23,15 @@ from laddermill_gym.kernels.wind import density, modulation, wind_point, wind_po
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def _end_kinematics2(kind, idx, att, x, fixed, nw, T, ev):
     """In-plane version of rhs3d.end_kinematics: ev = (x, z, x', z', ax, az), T is 2 x nb."""
-    if kind == END_WING:
-        o = B2_SIZE * idx
-        c, s = math.cos(x[o + B2_THETA]), math.sin(x[o + B2_THETA])
+    if kind == C.END_WING:
+        o = C.B2_SIZE * idx
+        c, s = math.cos(x[o + C.B2_THETA]), math.sin(x[o + C.B2_THETA])
         ax, az = att[0], att[2]
-        u, w, q = x[o + B2_U], x[o + B2_W], x[o + B2_Q]
+        u, w, q = x[o + C.B2_U], x[o + C.B2_W], x[o + C.B2_Q]
         bx, bz = u + q * az, w - q * ax
         cx, cz = q * bz, -q * bx
-        ev[0] = x[o + B2_X] + c * ax + s * az
-        ev[1] = x[o + B2_Z] - s * ax + c * az
+        ev[0] = x[o + C.B2_X] + c * ax + s * az
+        ev[1] = x[o + C.B2_Z] - s * ax + c * az
         ev[2] = c * bx + s * bz
         ev[3] = -s * bx + c * bz
         ev[4] = c * cx + s * cz
@@ -69,10 +39,10 @@ def _end_kinematics2(kind, idx, att, x, fixed, nw, T, ev):
         T[0, 0], T[0, 1], T[0, 2] = c, s, c * az - s * ax
         T[1, 0], T[1, 1], T[1, 2] = -s, c, -s * az - c * ax
         return 3
-    if kind == END_NODE:
-        o = B2_SIZE * nw + N2_SIZE * idx
-        ev[0], ev[1] = x[o + N2_POS], x[o + N2_POS + 1]
-        ev[2], ev[3] = x[o + N2_VEL], x[o + N2_VEL + 1]
+    if kind == C.END_NODE:
+        o = C.B2_SIZE * nw + C.N2_SIZE * idx
+        ev[0], ev[1] = x[o + C.N2_POS], x[o + C.N2_POS + 1]
+        ev[2], ev[3] = x[o + C.N2_VEL], x[o + C.N2_VEL + 1]
         ev[4] = 0.0
         ev[5] = 0.0
         T[0, 0], T[0, 1], T[1, 0], T[1, 1] = 1.0, 0.0, 0.0, 1.0
@@ -105,63 +75,59 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
     nw = M.wtype.size
     nn = M.node_mass.size
     ne = M.ef.shape[0]
-    g = M.glob[GL_GRAVITY]
-    a0, da = M.glob[GL_ALPHA0], M.glob[GL_DALPHA]
+    g = M.glob[C.GL_GRAVITY]
+    a0, da = M.glob[C.GL_ALPHA0], M.glob[C.GL_DALPHA]
     wf = M.wf
-    s_mod, d_mod, sd_mod, dd_mod = modulation(t, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
+    s_mod, d_mod, sd_mod, dd_mod = modulation(t, M.tmod[C.TM_T0], M.tmod[C.TM_DT], M.ms, M.md)
     D, U, bv = W.D, W.U, W.bv
     nbk = nw + nn
-    for b in range(nbk):
-        for i in range(3):
-            bv[b, i] = 0.0
-            for j in range(3):
-                D[b, i, j] = 0.0
-                U[b, i, j] = 0.0
+    clear_blocks(D, U, bv, nbk, 3)
     ao = W.aout
     for k in range(nw):
-        o = B2_SIZE * k
-        c, s = math.cos(x[o + B2_THETA]), math.sin(x[o + B2_THETA])
-        uu, ww, q = x[o + B2_U], x[o + B2_W], x[o + B2_Q]
+        o = C.B2_SIZE * k
+        c, s = math.cos(x[o + C.B2_THETA]), math.sin(x[o + C.B2_THETA])
+        uu, ww, q = x[o + C.B2_U], x[o + C.B2_W], x[o + C.B2_Q]
         xd = c * uu + s * ww
         zd = -s * uu + c * ww
-        dx[o + B2_X], dx[o + B2_Z], dx[o + B2_THETA] = xd, zd, q
+        dx[o + C.B2_X], dx[o + C.B2_Z], dx[o + C.B2_THETA] = xd, zd, q
         ty = M.wtype[k]
-        m = M.tf[ty, TF_MASS]
+        m = M.tf[ty, C.TF_MASS]
         Dk = D[k]
         Dk[0, 0] = m
         Dk[1, 1] = m
-        Dk[2, 2] = M.tf[ty, TF_JYY]
+        Dk[2, 2] = M.tf[ty, C.TF_JYY]
         fx = -m * g * s - m * q * ww
         fz = m * g * c + m * q * uu
         my = 0.0
-        rho = density(-x[o + B2_Z], wf)
+        rho = density(-x[o + C.B2_Z], wf)
         if rho > 0.0:
-            wgx, _, wgz = wind_point(x[o + B2_X], 0.0, x[o + B2_Z], t, wf, s_mod, d_mod, M.gp, M.gv)
+            wgx, _, wgz = wind_point(x[o + C.B2_X], 0.0, x[o + C.B2_Z], t, wf, s_mod, d_mod, M.gp, M.gv)
             wbx = c * wgx - s * wgz
             wbz = s * wgx + c * wgz
             ua, wa = uu - wbx, ww - wbz
-            dwx, _, dwz = wind_point_rate(x[o + B2_X], 0.0, x[o + B2_Z], xd, 0.0, zd, t, wf, s_mod, d_mod,
+            dwx, _, dwz = wind_point_rate(x[o + C.B2_X], 0.0, x[o + C.B2_Z], xd, 0.0, zd, t, wf, s_mod, d_mod,
                                           sd_mod, dd_mod, M.gp, M.gv)
             ex_ = q * wbz - (c * dwx - s * dwz)
             ez_ = -q * wbx - (s * dwx + c * dwz)
             d2 = ua * ua + wa * wa
             ad0 = (-wa * ex_ + ua * ez_) / d2 if d2 > 1e-18 else 0.0
-            wing_aero_long(ty, M.tf, M.ac, a0, da, rho, ua, wa, q, u[N_CONTROLS * k + CTRL_ELEVATOR], ad0, W.coef, ao)
-            fx += ao[AO2_FORCE_X]
-            fz += ao[AO2_FORCE_Z]
-            my += ao[AO2_MOMENT]
+            wing_aero_long(ty, M.tf, M.ac, a0, da, rho, ua, wa, q, u[C.N_CONTROLS * k + C.CTRL_ELEVATOR], ad0, W.coef,
+                           ao)
+            fx += ao[C.AO2_FORCE_X]
+            fz += ao[C.AO2_FORCE_Z]
+            my += ao[C.AO2_MOMENT]
             for i in range(3):
-                ki = ao[AO2_KAPPA + i]
+                ki = ao[C.AO2_KAPPA + i]
                 if ki != 0.0:
-                    Dk[i, 0] -= ki * ao[AO2_G]
-                    Dk[i, 1] -= ki * ao[AO2_G + 1]
+                    Dk[i, 0] -= ki * ao[C.AO2_G]
+                    Dk[i, 1] -= ki * ao[C.AO2_G + 1]
         bv[k, 0] = fx
         bv[k, 1] = fz
         bv[k, 2] = my
-    base = B2_SIZE * nw
+    base = C.B2_SIZE * nw
     for j in range(nn):
-        o = base + N2_SIZE * j
-        dx[o + N2_POS], dx[o + N2_POS + 1] = x[o + N2_VEL], x[o + N2_VEL + 1]
+        o = base + C.N2_SIZE * j
+        dx[o + C.N2_POS], dx[o + C.N2_POS + 1] = x[o + C.N2_VEL], x[o + C.N2_VEL + 1]
         mn = M.node_mass[j]
         b = nw + j
         D[b, 0, 0] = mn
@@ -174,7 +140,7 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
         nr = _end_kinematics2(kr, ir, M.ea[e, 0], x, M.fixed, nw, Tr, er)
         ns = _end_kinematics2(ks, is_, M.ea[e, 1], x, M.fixed, nw, Ts, es)
         l0 = rest_length(M.kind, e, t, x, M)
-        mu, EA, DA, dia = M.ef[e, EF_MU], M.ef[e, EF_EA], M.ef[e, EF_DA], M.ef[e, EF_DIAMETER]
+        mu, EA, DA, dia = M.ef[e, C.EF_MU], M.ef[e, C.EF_EA], M.ef[e, C.EF_DA], M.ef[e, C.EF_DIAMETER]
         lx, lz = es[0] - er[0], es[1] - er[1]
         ln = math.sqrt(lx * lx + lz * lz)
         if ln > 1e-9:
@@ -186,10 +152,9 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
         me = mu * l0
         wg = 0.5 * me * g
         m6 = me / 6.0
-        frx = -m6 * (2.0 * er[4] + es[4])
-        frz = -m6 * (2.0 * er[5] + es[5]) + wg
-        fsx = -m6 * (er[4] + 2.0 * es[4])
-        fsz = -m6 * (er[5] + 2.0 * es[5]) + wg
+        frx, _, frz, fsx, _, fsz = split_ends(-m6, er[4], 0.0, er[5], es[4], 0.0, es[5])
+        frz += wg
+        fsz += wg
         pgz = mu * g
         prx, prz = 0.0, pgz
         psx, psz = 0.0, pgz
@@ -209,14 +174,8 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
             prz += ar3
             psx += as1
             psz += as3
-        if sag is not None:
-            if ln > 1e-9:
-                epsp = lateral_elongation(ln, ux, 0.0, uz, prx, 0.0, prz, psx, 0.0, psz)
-            else:
-                epsp = 0.0
-            sig = tension_sag(EA, DA, l0, eps, epsd, epsp)
-        else:
-            sig = tension_plain(EA, DA, l0, eps, epsd)
+        sig = element_tension(EA, DA, l0, ln, eps, epsd, sag is not None, (ux, 0.0, uz),
+                              (prx, 0.0, prz), (psx, 0.0, psz))
         W.tension[e] = sig
         frx += sig * ux
         frz += sig * uz
@@ -238,9 +197,9 @@ def rhs2d(t, x, u, dx, M, W, sag, caero):
     if not tree_solve(D, U, W.Y, W.piv, bv, M.order, M.parent, M.bsz):
         return 1
     for k in range(nw):
-        o = B2_SIZE * k + B2_U
+        o = C.B2_SIZE * k + C.B2_U
         dx[o], dx[o + 1], dx[o + 2] = bv[k, 0], bv[k, 1], bv[k, 2]
     for j in range(nn):
-        o = base + N2_SIZE * j + N2_VEL
+        o = base + C.N2_SIZE * j + C.N2_VEL
         dx[o], dx[o + 1] = bv[nw + j, 0], bv[nw + j, 1]
     return 0

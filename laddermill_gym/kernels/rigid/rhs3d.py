@@ -16,7 +16,7 @@ import math
 
 from numba import njit
 
-from laddermill_gym.kernels.cable import aero_load, lateral_elongation, tension_plain, tension_sag
+from laddermill_gym.kernels.cable import aero_load
 from laddermill_gym.kernels.contract import (
     B3_POS,
     B3_QUAT,
@@ -43,6 +43,7 @@ from laddermill_gym.kernels.contract import (
 )
 from laddermill_gym.kernels.dispatch import body_loads, elongation_rate, rest_length
 from laddermill_gym.kernels.rigid.blocks import tree_solve
+from laddermill_gym.kernels.rigid.element_loads import clear_blocks, element_tension, split_ends
 from laddermill_gym.kernels.small import quat_rotation
 from laddermill_gym.kernels.wind import density, modulation, wind_point
 
@@ -139,12 +140,7 @@ def assemble3d(t, x, u, dx, M, W, sag, caero, vehicle):
     s_mod, d_mod, sd_mod, dd_mod = modulation(t, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
     D, U, bv = W.D, W.U, W.bv
     nbk = nw + nn
-    for b in range(nbk):
-        for i in range(6):
-            bv[b, i] = 0.0
-            for j in range(6):
-                D[b, i, j] = 0.0
-                U[b, i, j] = 0.0
+    clear_blocks(D, U, bv, nbk, 6)
     # ---- bodies: kinematics, inertia, gravity, the vehicle's loads
     for k in range(nw):
         o = B3_SIZE * k
@@ -231,12 +227,9 @@ def assemble3d(t, x, u, dx, M, W, sag, caero, vehicle):
         # nodal loads (global) at r and s: gravity, aerodynamics, quadratic velocity terms
         wg = 0.5 * me * g
         m6 = me / 6.0
-        frx = -m6 * (2.0 * er[6] + es[6])
-        fry = -m6 * (2.0 * er[7] + es[7])
-        frz = -m6 * (2.0 * er[8] + es[8]) + wg
-        fsx = -m6 * (er[6] + 2.0 * es[6])
-        fsy = -m6 * (er[7] + 2.0 * es[7])
-        fsz = -m6 * (er[8] + 2.0 * es[8]) + wg
+        frx, fry, frz, fsx, fsy, fsz = split_ends(-m6, er[6], er[7], er[8], es[6], es[7], es[8])
+        frz += wg
+        fsz += wg
         pgz = mu * g
         prx, pry, prz = 0.0, 0.0, pgz
         psx, psy, psz = 0.0, 0.0, pgz
@@ -262,14 +255,8 @@ def assemble3d(t, x, u, dx, M, W, sag, caero, vehicle):
             psx += as1
             psy += as2
             psz += as3
-        if sag[0] != 0.0:
-            if ln > 1e-9:
-                epsp = lateral_elongation(ln, ux, uy, uz, prx, pry, prz, psx, psy, psz)
-            else:
-                epsp = 0.0
-            sig = tension_sag(EA, DA, l0, eps, epsd, epsp)
-        else:
-            sig = tension_plain(EA, DA, l0, eps, epsd)
+        sig = element_tension(EA, DA, l0, ln, eps, epsd, sag[0] != 0.0, (ux, uy, uz),
+                              (prx, pry, prz), (psx, psy, psz))
         W.tension[e] = sig
         frx += sig * ux
         fry += sig * uy
