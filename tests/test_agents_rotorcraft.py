@@ -12,8 +12,7 @@ import pytest
 import yaml
 
 from laddermill_gym.envs import ENV_IDS
-from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
-from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv
+from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv, RotorcraftVectorEnv
 from laddermill_gym.model.configio import ConfigError
 
 RC = "laddermill_gym/Rotorcraft-v0"

@@ -145,8 +145,8 @@ def test_power_is_the_tension_difference_times_the_speed():
 
 
 def test_schedule_matches_the_rigid_station():
-    from laddermill_gym.kernels.station import scheduled_speed
     from laddermill_gym.kernels.pointmass.mill import schedule_speed
+    from laddermill_gym.kernels.station import scheduled_speed
 
     rigid = StationParams(piece_length=70.0, speed_times=(0.0, 30.0, 50.0), speed_values=(0.0, 2.0, 1.0))
     sp_r = pack_station(rigid, 3, 0, 0)

@@ -10,8 +10,7 @@ import pytest
 from gymnasium.utils.env_checker import check_env
 
 from laddermill_gym.atmosphere.disturbances import RandomPerturbation
-from laddermill_gym.envs.pointmass.env import PointMassEnv
-from laddermill_gym.envs.pointmass.vector import PointMassVectorEnv
+from laddermill_gym.envs.pointmass.env import PointMassEnv, PointMassVectorEnv
 from laddermill_gym.kernels.contract import PU_PITCH, PU_ROLL
 
 MILL = {"scene": "laddermill", "scene_options": {"element_length": 70.0}}

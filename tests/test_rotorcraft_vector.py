@@ -9,13 +9,11 @@ from __future__ import annotations
 import gymnasium as gym
 import numpy as np
 import pytest
-from gymnasium.utils.env_checker import check_env
 
 import laddermill_gym  # noqa: F401  (registers the ids)
 from laddermill_gym.envs import ENV_IDS, DirectionStep, RandomPerturbation
-from laddermill_gym.envs.rotorcraft.env import CRAFT_OBS_INDEX, RotorcraftEnv
+from laddermill_gym.envs.rotorcraft.env import CRAFT_OBS_INDEX, RotorcraftEnv, RotorcraftVectorEnv
 from laddermill_gym.envs.rotorcraft.task import CraftTask
-from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv
 from laddermill_gym.kernels.contract import (
     CA_ALTITUDE,
     CA_INFLOW_OK,
@@ -122,12 +120,6 @@ def test_make_vec_vector_entry_point_and_spaces():
         RotorcraftVectorEnv(2, scene="tethered_wing")
     with pytest.raises(ValueError, match="num_envs = 0"):
         RotorcraftVectorEnv(0)
-
-
-@pytest.mark.filterwarnings("ignore:.*not having a spec")  # built directly: the render modes are checked elsewhere
-def test_gymnasium_checker_on_the_single_env():
-    env = RotorcraftEnv(**dict(ENV_IDS[RC], episode_time=2.0))
-    check_env(env)
 
 
 def test_sb3_adapter_runs_the_craft_task():

@@ -11,7 +11,7 @@ from typing import Any
 
 from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_dict
 from laddermill_gym.envs import ENV_IDS, env_arguments, task_class
-from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
+from laddermill_gym.envs.rotorcraft.task import CraftTask
 from laddermill_gym.envs.task import WingTask
 from laddermill_gym.model.configio import ConfigError, read_yaml
 
@@ -19,9 +19,9 @@ ALGORITHMS: tuple[str, ...] = ("PPO", "SAC")
 #: WingTask arguments a config may override under ``env_kwargs`` (disturbances have their own section)
 ENV_KWARGS: tuple[str, ...] = tuple(p for p in inspect.signature(WingTask).parameters
                                     if p not in ("n_copies", "disturbances", "parallel"))
-#: RotorcraftEnv arguments a config for ``laddermill_gym/Rotorcraft-v0`` may override under ``env_kwargs``
-CRAFT_ENV_KWARGS: tuple[str, ...] = tuple(p for p in inspect.signature(RotorcraftEnv).parameters
-                                          if p not in ("disturbances", "render_mode"))
+#: RotorcraftEnv (CraftTask) arguments a config for ``laddermill_gym/Rotorcraft-v0`` may override under ``env_kwargs``
+CRAFT_ENV_KWARGS: tuple[str, ...] = tuple(p for p in inspect.signature(CraftTask).parameters
+                                          if p not in ("n_copies", "disturbances", "parallel"))
 #: Arguments the evaluation env takes over from training (the policy's spaces and the model must match);
 #: the rest (wind, disturbances, episode length, reward, termination) is the registered scenario's
 CARRIED_KWARGS: dict[str, tuple[str, ...]] = {

@@ -23,10 +23,10 @@ Registered on ``import laddermill_gym``:
   one ROS34PW2 step of 50 ms, 20 Hz control of collective and differential collective, 120 s episodes, a 0.01 rad
   direction step at 1 s), :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`.
 
-Every environment has a native batched ``vector_entry_point`` (:class:`~laddermill_gym.envs.vector.WingVectorEnv`,
-:class:`~laddermill_gym.envs.rotorcraft.vector.RotorcraftVectorEnv`): one compiled kernel steps all copies,
+Every environment has a native batched ``vector_entry_point`` (:class:`~laddermill_gym.envs.wing_env.WingVectorEnv`,
+:class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftVectorEnv`): one compiled kernel steps all copies,
 ``gymnasium.make_vec(id, num_envs=n, vectorization_mode="vector_entry_point")`` (PointMassChain-v0's
-:class:`~laddermill_gym.envs.pointmass.vector.PointMassVectorEnv` steps its copies one after another by the compiled
+:class:`~laddermill_gym.envs.pointmass.env.PointMassVectorEnv` steps its copies one after another by the compiled
 point-mass kernels within one call). Each is a task with B copies (:class:`~laddermill_gym.envs.task.WingTask`,
 :class:`~laddermill_gym.envs.rotorcraft.task.CraftTask`, :class:`~laddermill_gym.envs.pointmass.task.PointMassTask`
 ...), whose arguments are the environment's (:func:`env_arguments`).
@@ -36,15 +36,11 @@ import importlib
 import inspect
 
 from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
-from laddermill_gym.envs.laddermill.env import LadderMillEnv
-from laddermill_gym.envs.laddermill.vector import LadderMillVectorEnv
-from laddermill_gym.envs.pumping.env import PumpingKiteEnv
-from laddermill_gym.envs.pumping.vector import PumpingKiteVectorEnv
-from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv
-from laddermill_gym.envs.rotorcraft.vector import RotorcraftVectorEnv
+from laddermill_gym.envs.laddermill.env import LadderMillEnv, LadderMillVectorEnv
+from laddermill_gym.envs.pumping.env import PumpingKiteEnv, PumpingKiteVectorEnv
+from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv, RotorcraftVectorEnv
 from laddermill_gym.envs.task import FAILURES, RewardConfig, TerminationConfig, WingTask
-from laddermill_gym.envs.vector import WingVectorEnv
-from laddermill_gym.envs.wing_env import WingEnv
+from laddermill_gym.envs.wing_env import WingEnv, WingVectorEnv
 
 __all__ = ["DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule", "FAILURES", "RewardConfig",
            "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "RotorcraftEnv", "RotorcraftVectorEnv",
@@ -53,7 +49,7 @@ __all__ = ["DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedul
            "env_arguments"]
 
 _LAZY = {"PointMassEnv": "laddermill_gym.envs.pointmass.env",
-         "PointMassVectorEnv": "laddermill_gym.envs.pointmass.vector"}
+         "PointMassVectorEnv": "laddermill_gym.envs.pointmass.env"}
 
 
 def __getattr__(name: str):
@@ -90,23 +86,23 @@ ENV_IDS: dict[str, dict] = {
                                              "method": "implicit", "dt": 0.025}, settle_time=600.0,
                                              control_dt=0.05, episode_time=120.0, groups="per_kite"),
 }
-_WING = ("laddermill_gym.envs.wing_env:WingEnv", "laddermill_gym.envs.vector:WingVectorEnv",
+_WING = ("laddermill_gym.envs.wing_env:WingEnv", "laddermill_gym.envs.wing_env:WingVectorEnv",
          "laddermill_gym.envs.task:WingTask")
 #: Entry points of every registered id: (single env, native vector env, the task with B copies behind both).
 ENTRY_POINTS: dict[str, tuple[str, str, str]] = {
     "laddermill_gym/TetheredWing-v0": _WING,
     "laddermill_gym/LadderChain-v0": _WING,
     "laddermill_gym/Rotorcraft-v0": ("laddermill_gym.envs.rotorcraft.env:RotorcraftEnv",
-                                     "laddermill_gym.envs.rotorcraft.vector:RotorcraftVectorEnv",
+                                     "laddermill_gym.envs.rotorcraft.env:RotorcraftVectorEnv",
                                      "laddermill_gym.envs.rotorcraft.task:CraftTask"),
     "laddermill_gym/LadderMill-v0": ("laddermill_gym.envs.laddermill.env:LadderMillEnv",
-                                     "laddermill_gym.envs.laddermill.vector:LadderMillVectorEnv",
+                                     "laddermill_gym.envs.laddermill.env:LadderMillVectorEnv",
                                      "laddermill_gym.envs.laddermill.task:MillTask"),
     "laddermill_gym/PumpingKite-v0": ("laddermill_gym.envs.pumping.env:PumpingKiteEnv",
-                                      "laddermill_gym.envs.pumping.vector:PumpingKiteVectorEnv",
+                                      "laddermill_gym.envs.pumping.env:PumpingKiteVectorEnv",
                                       "laddermill_gym.envs.pumping.task:PumpingTask"),
     "laddermill_gym/PointMassChain-v0": ("laddermill_gym.envs.pointmass.env:PointMassEnv",
-                                         "laddermill_gym.envs.pointmass.vector:PointMassVectorEnv",
+                                         "laddermill_gym.envs.pointmass.env:PointMassVectorEnv",
                                          "laddermill_gym.envs.pointmass.task:PointMassTask"),
 }
 

@@ -112,3 +112,16 @@ def observation_bounds(scene: Scene) -> tuple[np.ndarray, np.ndarray]:
     low = -high
     low[OBS_INDEX["tension"]] = 0.0
     return np.tile(low, a.n_wings), np.tile(high, a.n_wings)
+
+
+def wing_lateral_offsets(obs: np.ndarray, n_wings: int) -> np.ndarray:
+    """Lateral CG offsets dy [m] (B, n_wings) float64 of observations (B, >= 15 n_wings) that begin with the
+    per-wing rows of :data:`OBS_FIELDS` (wing and mill envs, the pumping kite)."""
+    o = np.asarray(obs, dtype=float)
+    return o[:, : N_OBS_PER_WING * n_wings].reshape(o.shape[0], n_wings, N_OBS_PER_WING)[:, :, OBS_INDEX["dy"]]
+
+
+def observation_table(fields, prefix: str = "", start: int = 0) -> str:
+    """Markdown rows ``| prefix + index | name | unit | meaning |`` of observation ``fields`` (the envs' docs)."""
+    rows = (f"    | {prefix}{start + i} | {f.name} | {f.unit} | {f.description} |" for i, f in enumerate(fields))
+    return "\n".join(rows)

@@ -118,7 +118,7 @@ class TaskSB3VecEnv(VecEnv):
 
 class WingSB3VecEnv(TaskSB3VecEnv):
     """``num_envs`` copies of a wing env as an SB3 VecEnv (same arguments as
-    :class:`~laddermill_gym.envs.vector.WingVectorEnv`)."""
+    :class:`~laddermill_gym.envs.wing_env.WingVectorEnv`)."""
 
     def __init__(self, num_envs: int, env_id: str = "laddermill_gym/TetheredWing-v0", render_mode=None,
                  **task_kwargs):

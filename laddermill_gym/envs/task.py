@@ -17,8 +17,9 @@ from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
 from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry, sample_wind_field
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.envs.actions import ActionMap, clip_actions, resolve_groups
-from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds
+from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds, wing_lateral_offsets
 from laddermill_gym.envs.physics_step import stable_physics_step
+from laddermill_gym.envs.task_base import TaskCore, positive, substeps_per_period
 
 # the settings dataclasses live in task_settings.py; imported here, where every env has always found them
 from laddermill_gym.envs.task_settings import (  # noqa: F401
@@ -28,7 +29,8 @@ from laddermill_gym.envs.task_settings import (  # noqa: F401
     check_reference_power,
     config_from,
 )
-from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, GROUND, LIMIT, NONFINITE, OK, SINGULAR
+from laddermill_gym.envs.wing_failures import aero_range_text, shared_failure_text, status_texts
+from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, GROUND, OK
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
     AUX_GROUND_START,
@@ -42,8 +44,6 @@ from laddermill_gym.kernels.rigid.observe import (
 from laddermill_gym.ladder.scene import Scene, load_scene, options_key, options_kwargs
 from laddermill_gym.model.packing import make_workspace
 from laddermill_gym.sim.batch import BatchSimulator
-from laddermill_gym.sim.reports import ground_stop_text
-from laddermill_gym.sim.simulator import FIXED_STEP_METHODS
 from laddermill_gym.sim.stable_step import UnstableStepWarning
 
 __all__ = ["RewardConfig", "TerminationConfig", "WingTask", "FAILURES", "scene_trim"]
@@ -51,7 +51,7 @@ __all__ = ["RewardConfig", "TerminationConfig", "WingTask", "FAILURES", "scene_t
 #: Termination causes (code -> name); code 0 means the copy is still flying.
 FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state, speed or rate limit, singular mass)",
                             2: "ground contact", 3: "cable over its breaking load", 4: "aerodynamic range exceeded"}
-_STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit"}
+_STATUS_TEXT = status_texts("speed or rate limit")
 
 
 @lru_cache(maxsize=16)
@@ -82,7 +82,7 @@ def _stable_step_scene(name: str, options: dict, trimmed, control_dt: float, dis
     return (*scene_trim(name, options_key(dict(options, dt=dt))), note)
 
 
-class WingTask:
+class WingTask(TaskCore):
     """B copies of a wing scene as an RL task.
 
     Parameters
@@ -120,14 +120,17 @@ class WingTask:
         thread.
     """
 
+    env_name = "the wing env"
+    #: failure code -> name (the SB3 adapter and the evaluation harness read it)
+    failure_names = FAILURES
+
     def __init__(self, n_copies: int = 1, scene: str = "tethered_wing", scene_options: dict | None = None,
                  control_dt: float = 0.05, physics_dt: float | None = None, action_mode: str = "tail",
                  groups="per_wing", alpha_servo_tau: float = 0.0, episode_time: float = 300.0,
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
                  parallel: bool | None = None):
         for name, v in (("control_dt", control_dt), ("episode_time", episode_time), ("wind_dt", wind_dt)):
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
-                raise ValueError(f"{name} = {v!r}: must be a finite number > 0 s")
+            positive(name, v, "s")
         options = dict(scene_options or {})
         if physics_dt is not None:
             options["dt"] = physics_dt
@@ -135,13 +138,7 @@ class WingTask:
         asm = sc.assembly
         if asm.dim != 3:
             raise ValueError(f"scene {sc.name}: the environments need a 3D scene (dimension = {asm.dim})")
-        if sc.settings.method not in FIXED_STEP_METHODS:
-            raise ValueError(f"scene {sc.name}: integrator.method = {sc.settings.method!r}; environments step with a "
-                             f"fixed-step method, one of {FIXED_STEP_METHODS}")
-        dt = sc.settings.dt
-        n = int(round(control_dt / dt))
-        if n < 1 or abs(n * dt - control_dt) > 1e-9 * control_dt:
-            raise ValueError(f"control_dt = {control_dt!r} s is not a whole multiple of the physics step {dt!r} s")
+        substeps_per_period(sc.name, sc.settings, control_dt)
         self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
         self.scene, x_trim, u_trim, self.physics_step_note = _stable_step_scene(
             str(scene), options, (sc, x_trim, u_trim), control_dt, self.disturbances, episode_time, wind_dt)
@@ -188,13 +185,7 @@ class WingTask:
             self.p_ref = float(rc.reference_power_W)
         if not self.p_ref > 0:
             raise ValueError(f"scene {sc.name}: the trim gives no positive reference power ({self.p_ref:.4g} W)")
-        self.lateral_scale = rc.lateral_scale if rc.lateral_scale is not None else 0.05 * sc.piece_length
-        tc = self.termination_config
-        self.min_altitude = tc.min_altitude if tc.min_altitude is not None else 0.5 * min(
-            w.span for w in asm.wing_types)
-        self.breaking_tension = tc.breaking_factor * sc.cable.breaking_load
-        self.alpha_lo, self.alpha_hi = np.radians(tc.alpha_range_deg)
-        self.beta_max = math.radians(tc.max_abs_beta_deg)
+        self._wing_limits(sc, min(w.span for w in asm.wing_types))
         self.actions = ActionMap(asm, resolve_groups(groups, nw, two_ended), action_mode, u_trim, alpha_trim,
                                  self.control_dt, alpha_servo_tau)
         self.actions.reset(B)
@@ -203,11 +194,7 @@ class WingTask:
 
     # ------------------------------------------------------------------ kernels
     def _run(self, nsteps: np.ndarray) -> None:
-        b = self.batch
-        b.advance(nsteps, lambda dt, ns: self._kernel(
-            b.t, b.states, b.controls, dt, ns, *b.detached, b.work, b.air, b.limits, b.tableau, b.breaks,
-            self._dx, self.nominal, self.below, self.ground, self.obs, self.aux,
-            b.status, b.done))
+        self._wing_kernel_pass(nsteps, self.nominal, self.obs)
 
     def _observe_state(self, x: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(obs row (obs_dim,), aux row (N_AUX,)) of one state x at t = 0 in the undisturbed wind (speed factor
@@ -234,12 +221,9 @@ class WingTask:
         b.states[idx] = self.x_trim
         b.controls[idx] = self.u_trim
         b.t[idx] = 0.0
-        self.steps[idx] = 0
         self.actions.reset(self.n_copies, mask)
         self.last_action[idx] = self.actions.nominal_action
-        self._nsteps[:] = -1
-        self._nsteps[idx] = 0
-        self._run(self._nsteps)
+        self._start_copies(idx)
 
     def step(self, action: np.ndarray, mask: np.ndarray | None = None):
         """Apply normalised actions (B, n_actions) for one control period to the copies in ``mask`` (default
@@ -260,10 +244,7 @@ class WingTask:
             self.actions.alpha_servo[~sel] = servo[~sel]
         b.controls[sel] = u[sel]
         self.last_action[sel] = a[sel]
-        self._nsteps[:] = -1
-        self._nsteps[sel] = self.n_substeps
-        self._run(self._nsteps)
-        self.steps[sel] += 1
+        self._advance_copies(sel)
         return self._evaluate(a, n_clipped)
 
     def _evaluate(self, a: np.ndarray, n_clipped: np.ndarray):
@@ -299,6 +280,24 @@ class WingTask:
                     n_clipped=n_clipped, failure=failure)
         return reward, terminated, truncated, info
 
+    def reset_info(self) -> dict:
+        """The single env's reset info beside ``t``: the reference power [W]."""
+        return {"reference_power_W": self.p_ref}
+
+    def lateral_offsets(self, obs: np.ndarray) -> np.ndarray:
+        """Lateral CG offsets dy [m] (B, n_wings) of observations (B, obs_dim)."""
+        return wing_lateral_offsets(obs, self.n_wings)
+
+    def snapshot(self) -> dict:
+        """:meth:`TaskCore.snapshot` and the alpha servo's state."""
+        servo = self.actions.alpha_servo
+        return dict(super().snapshot(), servo=None if servo is None else servo.copy())
+
+    def restore(self, snap: dict) -> None:
+        super().restore(snap)
+        if snap["servo"] is not None:
+            self.actions.alpha_servo = snap["servo"]
+
     def renderer(self, interactive: bool = False):
         """A 3D renderer of the copies (``envs/render.py``): wings, cable and ground points."""
         from laddermill_gym.envs.render import SceneRenderer
@@ -307,22 +306,12 @@ class WingTask:
 
     def failure_text(self, b: int, code: int) -> str:
         """A sentence on why copy ``b`` terminated (time, and the quantity)."""
-        if code == 0:
-            return ""
-        t = self.batch.t[b]
+        text = shared_failure_text(self, b, code, _STATUS_TEXT)
+        if text is not None:
+            return text
         o = self.obs[b].reshape(self.n_wings, N_OBS_PER_WING)
-        if code == 1:
-            return f"t = {t:.2f} s: integration failed ({_STATUS_TEXT.get(int(self.batch.status[b]), 'unknown')})"
-        if code == 2 and self.batch.status[b] == GROUND:
-            bt = self.batch
-            return f"t = {t:.2f} s: {ground_stop_text(self.scene.assembly, bt.states[b], bt.settings.ground_height)}"
         if code == 2:
             k = int(np.argmin(-(o[:, OBS_INDEX['dz']] + self.nominal[:, 2])))
-            return f"t = {t:.2f} s: ground contact, wing {k} CG at {self.aux[b, AUX_MIN_ALTITUDE]:.2f} m altitude"
-        if code == 3:
-            tension = self.aux[b, AUX_MAX_TENSION]
-            return f"t = {t:.2f} s: cable tension {tension:.4g} N over {self.breaking_tension:.4g} N"
-        al, be = o[:, OBS_INDEX["alpha"]], o[:, OBS_INDEX["beta"]]
-        k = int(np.argmax(np.maximum(np.maximum(self.alpha_lo - al, al - self.alpha_hi), np.abs(be) - self.beta_max)))
-        return (f"t = {t:.2f} s: wing {k} alpha = {math.degrees(al[k]):.1f} deg, beta = {math.degrees(be[k]):.1f} deg "
-                "outside the aerodynamic range")
+            return (f"t = {self.batch.t[b]:.2f} s: ground contact, wing {k} CG at {self.aux[b, AUX_MIN_ALTITUDE]:.2f} "
+                    "m altitude")
+        return aero_range_text(self, b, o, "wing")

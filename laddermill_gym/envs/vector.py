@@ -1,7 +1,7 @@
-"""The native vector environments: all copies of a task stepped by one compiled kernel, parallel over copies
-(registered as the ``vector_entry_point`` of every env; ``gymnasium.make_vec(id, n,
-vectorization_mode="vector_entry_point")``). :class:`TaskVectorEnv` is the Gymnasium side shared by every task;
-:class:`WingVectorEnv` the wing scenes' (the rotorcraft's is ``envs/rotorcraft/vector.py``)."""
+"""The one native vector environment of every env family: all copies of a task stepped by one compiled kernel,
+parallel over copies (registered as the ``vector_entry_point`` of every env; ``gymnasium.make_vec(id, n,
+vectorization_mode="vector_entry_point")``). A family's vector env is a subclass that names its task
+(``task_class``) and says what its info holds; the checks, seeding, autoreset, info keys and rendering are here."""
 
 from __future__ import annotations
 
@@ -12,14 +12,14 @@ import numpy as np
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
-from laddermill_gym.envs.task import FAILURES, WingTask
+from laddermill_gym.envs.task_env import check_render_mode, check_task_arguments
 
 #: info entries of copies reset in a NextStep autoreset step (reported as 0)
 ZEROED_ON_RESET: tuple[str, ...] = ("failure", "n_clipped", "reward_power", "reward_lateral", "reward_rates",
                                     "reward_effort", "reward_failure")
 
 
-def check_vector_arguments(num_envs, render_mode, autoreset_mode) -> AutoresetMode:
+def check_vector_arguments(num_envs, render_mode, autoreset_mode, task_class) -> AutoresetMode:
     """Validate the vector-env arguments every task shares; returns the autoreset mode. Raises ValueError
     naming the argument and its value."""
     if isinstance(num_envs, bool) or int(num_envs) != num_envs or num_envs < 1:
@@ -27,27 +27,39 @@ def check_vector_arguments(num_envs, render_mode, autoreset_mode) -> AutoresetMo
     mode = AutoresetMode(autoreset_mode)
     if mode == AutoresetMode.DISABLED:
         raise ValueError("autoreset_mode = 'Disabled' is not supported: use 'NextStep' or 'SameStep'")
+    if not task_class.render_modes:
+        check_render_mode(render_mode, (), task_class.env_name)
     if render_mode not in (None, "rgb_array"):
         raise ValueError(f"render_mode = {render_mode!r}: the vector env renders 'rgb_array' only")
     return mode
 
 
 class TaskVectorEnv(VectorEnv):
-    """The Gymnasium vector env of a task of B copies (``WingTask``, ``CraftTask``: ``reset(mask, rngs)``,
-    ``step(actions, mask) -> (reward, terminated, truncated, info)``, ``obs`` (B, obs_dim), ``obs_low`` /
-    ``obs_high``, ``n_actions``, ``control_dt``, ``batch.t``).
+    """The Gymnasium vector env of a task of B copies (the protocol of ``envs/task_base.py``); subclasses set
+    ``task_class``.
+
+    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0; None only where the task does not render),
+    ``autoreset_mode``, ``parallel`` (numba thread pool; default from 32 copies on) and the task's arguments;
+    others raise ValueError naming them. ``info`` holds the task's info arrays, each with its ``_name`` mask, and
+    ``failure_name`` / ``failure_reason`` per copy.
 
     Copy i behaves exactly like the task's single env seeded with ``seed + i`` (bit for bit: same kernel, same
     arithmetic). Autoreset: ``autoreset_mode`` "NextStep" (Gymnasium's default: the step after an episode ends
     resets that copy, ignores its action and reports reward 0 and failure 0) or "SameStep" (the reset
     observation is returned at once; the final observation and info are in ``info["final_obs"]``,
-    ``info["final_info"]``). Subclasses build the task; ``task.renderer()`` draws copy 0.
+    ``info["final_info"]``). ``task.renderer()`` draws copy 0.
     """
 
+    task_class: type
     metadata = {"render_modes": ["rgb_array"], "render_fps": 20, "autoreset_mode": AutoresetMode.NEXT_STEP}
 
-    def __init__(self, task, render_mode: str | None, mode: AutoresetMode):
-        self.task = task
+    def __init__(self, num_envs: int, render_mode: str | None = None,
+                 autoreset_mode: AutoresetMode | str = AutoresetMode.NEXT_STEP, **task_kwargs):
+        mode = check_vector_arguments(num_envs, render_mode, autoreset_mode, self.task_class)
+        task_kwargs.pop("max_episode_steps", None)
+        check_task_arguments(self.task_class, task_kwargs, vector=True)
+        self.task = task = self.task_class(int(num_envs), **task_kwargs)
+        self.failure_names = dict(task.failure_names)
         self.num_envs = int(task.n_copies)
         self.render_mode = render_mode
         self.metadata = dict(self.metadata, autoreset_mode=mode, render_fps=int(round(1.0 / task.control_dt)))
@@ -60,6 +72,13 @@ class TaskVectorEnv(VectorEnv):
         self._rngs = [np.random.default_rng() for _ in range(self.num_envs)]
         self._autoreset = np.zeros(self.num_envs, dtype=bool)
         self._renderer = None
+        if not task.render_modes:
+            self.metadata = dict(self.metadata, render_modes=[])
+
+    def lateral_offsets(self, obs: np.ndarray) -> np.ndarray:
+        """Lateral offsets [m] (num_envs, m) of batched observations (the evaluation harness's and the gust
+        benchmark's lateral read-out; the task says which offsets)."""
+        return self.task.lateral_offsets(obs)
 
     def _seed(self, seed) -> None:
         if seed is None:
@@ -100,7 +119,7 @@ class TaskVectorEnv(VectorEnv):
         done = terminated | truncated
         obs = self.task.obs.astype(np.float32)
         # the single env's failure name and reason too, so native and sync vector envs give the same info keys
-        names = getattr(self.task, "failure_names", FAILURES)
+        names = self.failure_names
         codes = [int(c) for c in info["failure"]]
         info["failure_name"] = np.array([names[c] for c in codes], dtype=object)
         info["failure_reason"] = np.array([self.task.failure_text(i, c) if c else "" for i, c in enumerate(codes)],
@@ -133,21 +152,3 @@ class TaskVectorEnv(VectorEnv):
             self._renderer.close()
             self._renderer = None
 
-
-class WingVectorEnv(TaskVectorEnv):
-    """``num_envs`` copies of :class:`~laddermill_gym.envs.wing_env.WingEnv` in one batch (:class:`TaskVectorEnv`
-    over a :class:`~laddermill_gym.envs.task.WingTask`).
-
-    ``info`` holds (num_envs,) arrays of every reward term, power [W], largest tension [N], lowest wing
-    altitude [m], time [s], clipped action entries and the failure code (0 flying; see
-    :data:`laddermill_gym.envs.task.FAILURES`), each with its ``_name`` mask.
-
-    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0), ``autoreset_mode``, ``parallel`` (numba
-    thread pool; default from 32 copies on) and the :class:`~laddermill_gym.envs.task.WingTask` arguments.
-    """
-
-    def __init__(self, num_envs: int, render_mode: str | None = None,
-                 autoreset_mode: AutoresetMode | str = AutoresetMode.NEXT_STEP, **task_kwargs):
-        mode = check_vector_arguments(num_envs, render_mode, autoreset_mode)
-        task_kwargs.pop("max_episode_steps", None)
-        super().__init__(WingTask(int(num_envs), **task_kwargs), render_mode, mode)

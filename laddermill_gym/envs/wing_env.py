@@ -1,24 +1,15 @@
-"""The single-copy Gymnasium environment over a wing scene (``laddermill_gym/TetheredWing-v0``,
-``laddermill_gym/LadderChain-v0``)."""
+"""The wing scenes' environments (``laddermill_gym/TetheredWing-v0``, ``laddermill_gym/LadderChain-v0``): the
+single env and the native vector env over :class:`~laddermill_gym.envs.task.WingTask`."""
 
 from __future__ import annotations
 
-from typing import Any
-
-import gymnasium as gym
-import numpy as np
-
-from laddermill_gym.envs.observation import OBS_FIELDS
-from laddermill_gym.envs.render import TaskRendering
-from laddermill_gym.envs.task import FAILURES, WingTask
+from laddermill_gym.envs.observation import OBS_FIELDS, observation_table
+from laddermill_gym.envs.task import WingTask
+from laddermill_gym.envs.task_env import TaskEnv
+from laddermill_gym.envs.vector import TaskVectorEnv
 
 
-def _obs_table() -> str:
-    rows = [f"    | 15k + {i} | {f.name} | {f.unit} | {f.description} |" for i, f in enumerate(OBS_FIELDS)]
-    return "\n".join(rows)
-
-
-class WingEnv(TaskRendering, gym.Env):
+class WingEnv(TaskEnv):
     """Wings of a laddermill scene on their cables, controlled through their tail surfaces.
 
     ## Description
@@ -85,71 +76,22 @@ OBS_TABLE
     * v0: initial version.
     """
 
-    metadata = {"render_modes": ["rgb_array", "human"], "render_fps": 20}
-
-    def __init__(self, render_mode: str | None = None, **task_kwargs):
-        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
-            raise ValueError(f"render_mode = {render_mode!r}: must be one of {self.metadata['render_modes']} or None")
-        task_kwargs.pop("n_copies", None)
-        self._kwargs = dict(task_kwargs)
-        self.task = WingTask(1, parallel=False, **task_kwargs)
-        self.render_mode = render_mode
-        self.metadata = dict(self.metadata, render_fps=int(round(1.0 / self.task.control_dt)))
-        self.observation_space = gym.spaces.Box(self.task.obs_low.astype(np.float32),
-                                                self.task.obs_high.astype(np.float32), dtype=np.float32)
-        self.action_space = gym.spaces.Box(-1.0, 1.0, shape=(self.task.n_actions,), dtype=np.float32)
-        self._renderer = None
-        self._needs_reset = True
-
-    # pickling: rebuild from the constructor arguments and restore the copy's state
-    def __getstate__(self):
-        b = self.task.batch
-        return {"kwargs": self._kwargs, "render_mode": self.render_mode, "np_random": self._np_random,
-                "arrays": (b.states.copy(), b.controls.copy(), b.t.copy(),
-                           *[None if a is None else a.copy() for a in b.air],
-                           self.task.steps.copy(), self.task.last_action.copy(),
-                           None if self.task.actions.alpha_servo is None else self.task.actions.alpha_servo.copy()),
-                "needs_reset": self._needs_reset}
-
-    def __setstate__(self, state):
-        self.__init__(render_mode=state["render_mode"], **state["kwargs"])
-        self._np_random = state["np_random"]
-        b = self.task.batch
-        (b.states[:], b.controls[:], b.t[:], *air, self.task.steps[:], self.task.last_action[:],
-         servo) = state["arrays"]
-        for mine, saved in zip(b.air, air, strict=True):
-            if mine is not None:
-                mine[:] = saved
-        if servo is not None:
-            self.task.actions.alpha_servo = servo
-        self._needs_reset = state["needs_reset"]
-        if not self._needs_reset:
-            self.task._nsteps[:] = 0
-            self.task._run(self.task._nsteps)
-
-    def _obs(self) -> np.ndarray:
-        return self.task.obs[0].astype(np.float32)
-
-    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
-        super().reset(seed=seed)
-        self.task.reset(np.ones(1, bool), [self.np_random])
-        self._needs_reset = False
-        if self.render_mode == "human":
-            self.render()
-        return self._obs(), {"t": 0.0, "reference_power_W": self.task.p_ref}
-
-    def step(self, action):
-        if self._needs_reset:
-            raise RuntimeError("step() called before reset() or after the episode ended; call reset()")
-        reward, terminated, truncated, info = self.task.step(np.asarray(action, dtype=float)[None])
-        out = {k: (v[0].item() if isinstance(v, np.ndarray) else v) for k, v in info.items()}
-        out["failure_reason"] = self.task.failure_text(0, int(info["failure"][0]))
-        out["failure_name"] = FAILURES[int(info["failure"][0])]
-        if terminated[0] or truncated[0]:
-            self._needs_reset = True
-        if self.render_mode == "human":
-            self.render()
-        return self._obs(), float(reward[0]), bool(terminated[0]), bool(truncated[0]), out
+    task_class = WingTask
 
 
-WingEnv.__doc__ = WingEnv.__doc__.replace("OBS_TABLE", _obs_table())
+class WingVectorEnv(TaskVectorEnv):
+    """``num_envs`` copies of :class:`WingEnv` in one batch (:class:`~laddermill_gym.envs.vector.TaskVectorEnv` over
+    a :class:`~laddermill_gym.envs.task.WingTask`).
+
+    ``info`` holds (num_envs,) arrays of every reward term, power [W], largest tension [N], lowest wing
+    altitude [m], time [s], clipped action entries and the failure code (0 flying; see
+    :data:`laddermill_gym.envs.task.FAILURES`), each with its ``_name`` mask.
+
+    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0), ``autoreset_mode``, ``parallel`` (numba
+    thread pool; default from 32 copies on) and the :class:`~laddermill_gym.envs.task.WingTask` arguments.
+    """
+
+    task_class = WingTask
+
+
+WingEnv.__doc__ = WingEnv.__doc__.replace("OBS_TABLE", observation_table(OBS_FIELDS, "15k + "))

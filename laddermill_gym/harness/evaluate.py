@@ -63,8 +63,8 @@ class EpisodeResults:
 def run_episodes(controller, env, n_episodes: int | None = None, record: bool = True,
                  progress: bool = False) -> EpisodeResults:
     """Run ``controller`` deterministically on every copy of the native vector env ``env`` (:func:`vector_env`:
-    :class:`~laddermill_gym.envs.vector.WingVectorEnv` or
-    :class:`~laddermill_gym.envs.rotorcraft.vector.RotorcraftVectorEnv`, seeds 0 .. num_envs - 1), each copy to
+    :class:`~laddermill_gym.envs.wing_env.WingVectorEnv` or
+    :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftVectorEnv`, seeds 0 .. num_envs - 1), each copy to
     the end of its first episode. The lateral offsets come from ``env.lateral_offsets(obs)`` where the env has
     it, else from the wing observation layout."""
     n = env.num_envs

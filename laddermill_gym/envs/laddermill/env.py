@@ -1,40 +1,19 @@
 """The moving-cable laddermill as a Gymnasium environment (``laddermill_gym/LadderMill-v0``): the single env, a
-:class:`~laddermill_gym.envs.laddermill.task.MillTask` with one copy (the vector env,
-:class:`~laddermill_gym.envs.laddermill.vector.LadderMillVectorEnv`, is the same task with many)."""
+:class:`~laddermill_gym.envs.laddermill.task.MillTask` with one copy, and the native vector env, the same task
+with many."""
 
 from __future__ import annotations
 
-import inspect
-from typing import Any
-
-import gymnasium as gym
-import numpy as np
-
-from laddermill_gym.envs.actions import single_action
 from laddermill_gym.envs.laddermill.observation import SLOT_OBS_FIELDS, STATION_OBS_FIELDS
 from laddermill_gym.envs.laddermill.task import MillTask
-from laddermill_gym.envs.pickling import TaskPickling
-from laddermill_gym.envs.render import TaskRendering
+from laddermill_gym.envs.observation import observation_table
+from laddermill_gym.envs.task_env import TaskEnv
+from laddermill_gym.envs.vector import TaskVectorEnv
 
-__all__ = ["LadderMillEnv", "TASK_ARGUMENTS", "check_task_arguments"]
-
-#: The MillTask arguments the envs take (all but the number of copies; ``parallel`` only in the vector env)
-TASK_ARGUMENTS: tuple[str, ...] = tuple(p for p in inspect.signature(MillTask).parameters if p != "n_copies")
+__all__ = ["LadderMillEnv", "LadderMillVectorEnv"]
 
 
-def check_task_arguments(kwargs: dict, allowed: tuple[str, ...] = TASK_ARGUMENTS) -> None:
-    """ValueError naming the arguments (and values) that are not MillTask arguments."""
-    unknown = sorted(set(kwargs) - set(allowed))
-    if unknown:
-        raise ValueError(f"{', '.join(f'{k} = {kwargs[k]!r}' for k in unknown)}: not arguments of LadderMill "
-                         f"(known: {', '.join(allowed)})")
-
-
-def _table(fields, first: str) -> str:
-    return "\n".join(f"    | {first}{i} | {f.name} | {f.unit} | {f.description} |" for i, f in enumerate(fields))
-
-
-class LadderMillEnv(TaskPickling, TaskRendering, gym.Env):
+class LadderMillEnv(TaskEnv):
     """The laddermill of Meijaard, Ockels & Schwab (1999): wings on an endless cable that moves through the ground
     generator, controlled through their tail surfaces by slot.
 
@@ -105,54 +84,30 @@ STATION_TABLE
     * v0: initial version.
     """
 
-    metadata = {"render_modes": ["rgb_array", "human"], "render_fps": 20}
-
-    def __init__(self, render_mode: str | None = None, **task_kwargs):
-        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
-            raise ValueError(f"render_mode = {render_mode!r}: must be one of {self.metadata['render_modes']} or None")
-        task_kwargs.pop("n_copies", None)
-        task_kwargs.pop("max_episode_steps", None)
-        check_task_arguments(task_kwargs, tuple(a for a in TASK_ARGUMENTS if a != "parallel"))
-        self.task = MillTask(1, parallel=False, **task_kwargs)
-        # pickles carry the operating point, so an unpickled env does not recompute it
-        self._kwargs = dict(task_kwargs, operating_point=self.task.op)
-        self.render_mode = render_mode
-        self.metadata = dict(self.metadata, render_fps=int(round(1.0 / self.task.control_dt)))
-        self.observation_space = gym.spaces.Box(self.task.obs_low.astype(np.float32),
-                                                self.task.obs_high.astype(np.float32), dtype=np.float32)
-        self.action_space = gym.spaces.Box(-1.0, 1.0, shape=(self.task.n_actions,), dtype=np.float32)
-        self._renderer = None
-        self._needs_reset = True
+    task_class = MillTask
 
     @property
     def operating_point(self):
         """The :class:`~laddermill_gym.envs.laddermill.operating_point.OperatingPoint` the episodes start from."""
         return self.task.op
 
-    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
-        super().reset(seed=seed)
-        self.task.reset(np.ones(1, bool), [self.np_random])
-        self._needs_reset = False
-        if self.render_mode == "human":
-            self.render()
-        op = self.task.op
-        info = {"t": 0.0, "reference_power_W": self.task.p_ref, "operating_point_converged": op.converged,
-                "operating_point_note": op.note}
-        return self.task.obs[0].astype(np.float32), info
 
-    def step(self, action):
-        a = single_action(action, self.task.n_actions, self._needs_reset)
-        reward, terminated, truncated, info = self.task.step(a)
-        code = int(info["failure"][0])
-        out = {k: v[0].item() for k, v in info.items()}
-        out["failure_name"] = self.task.failure_names[code]
-        out["failure_reason"] = self.task.failure_text(0, code)
-        if terminated[0] or truncated[0]:
-            self._needs_reset = True
-        if self.render_mode == "human":
-            self.render()
-        return self.task.obs[0].astype(np.float32), float(reward[0]), bool(terminated[0]), bool(truncated[0]), out
+class LadderMillVectorEnv(TaskVectorEnv):
+    """``num_envs`` copies of :class:`LadderMillEnv` in one batch (:class:`~laddermill_gym.envs.vector.TaskVectorEnv`
+    over a :class:`~laddermill_gym.envs.laddermill.task.MillTask`; copy i runs the same kernel code as a single env
+    seeded seed + i; NextStep or SameStep autoreset).
+
+    Observations (num_envs, 15 n + 4) float32; ``info`` holds (num_envs,) arrays of every reward term, the powers
+    [W], cable speed [m/s], tensions [N], lowest altitude [m], transfers, t [s], n_clipped, n_aero_out_of_band and
+    the failure code (:data:`~laddermill_gym.envs.laddermill.settings.MILL_FAILURES`), each with its ``_name`` mask.
+    ``lateral_offsets(obs)``: dy [m] per slot (num_envs, n).
+
+    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0), ``autoreset_mode``, ``parallel`` (numba
+    thread pool; default from 32 copies on) and the arguments of the single env; others raise ValueError.
+    """
+
+    task_class = MillTask
 
 
-LadderMillEnv.__doc__ = (LadderMillEnv.__doc__.replace("SLOT_TABLE", _table(SLOT_OBS_FIELDS, "15k + "))
-                         .replace("STATION_TABLE", _table(STATION_OBS_FIELDS, "15n + ")))
+LadderMillEnv.__doc__ = (LadderMillEnv.__doc__.replace("SLOT_TABLE", observation_table(SLOT_OBS_FIELDS, "15k + "))
+                         .replace("STATION_TABLE", observation_table(STATION_OBS_FIELDS, "15n + ")))

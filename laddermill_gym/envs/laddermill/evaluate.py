@@ -8,25 +8,21 @@ import math
 import numpy as np
 
 from laddermill_gym.envs.laddermill.observation import N_OBS_PER_SLOT, OBS_INDEX
+from laddermill_gym.envs.wing_failures import aero_range_text, altitude, shared_failure_text, status_texts
 from laddermill_gym.kernels.contract import (
     B3_POS,
     B3_SIZE,
     GROUND,
-    LIMIT,
-    NONFINITE,
     OK,
-    SINGULAR,
     SX_ENERGY,
     SX_TRANSFERS,
 )
 from laddermill_gym.kernels.rigid.observe import AUX_GROUND_END, AUX_GROUND_START, AUX_MAX_TENSION, AUX_MIN_ALTITUDE
 from laddermill_gym.sim.recording import ALPHA_RANGE_DEG, MAX_ABS_BETA_DEG
-from laddermill_gym.sim.reports import ground_stop_text
 
 __all__ = ["evaluate_copies", "failure_codes", "failure_text"]
 
-_STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit "
-                "(or the cable moved more than one piece in a step)"}
+_STATUS_TEXT = status_texts("speed or rate limit (or the cable moved more than one piece in a step)")
 _BAND_LO, _BAND_HI = np.radians(ALPHA_RANGE_DEG)
 _BAND_BETA = math.radians(MAX_ABS_BETA_DEG)
 
@@ -98,24 +94,12 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
 
 def failure_text(task, b: int, code: int) -> str:
     """A sentence on why copy ``b`` terminated with failure ``code`` (time, slot and quantity); "" for code 0."""
-    if code == 0:
-        return ""
-    bt = task.batch
-    t = float(bt.t[b])
-    o = _slots(task)[b]
-    if code == 1:
-        return f"t = {t:.2f} s: integration failed ({_STATUS_TEXT.get(int(bt.status[b]), 'unknown')})"
-    if code == 2 and bt.status[b] == GROUND:
-        return f"t = {t:.2f} s: {ground_stop_text(bt.assembly, bt.states[b], bt.settings.ground_height)}"
+    text = shared_failure_text(task, b, code, _STATUS_TEXT)
+    if text is not None:
+        return text
     if code == 2:
-        n = task.n_wings
+        bt, n = task.batch, task.n_wings
         k = int(np.argmax(bt.states[b, : B3_SIZE * n].reshape(n, B3_SIZE)[:, B3_POS + 2]))  # lowest: largest z
-        return (f"t = {t:.2f} s: ground contact, slot {k} CG at {task.aux[b, AUX_MIN_ALTITUDE]:.2f} m altitude "
+        return (f"t = {float(bt.t[b]):.2f} s: ground contact, slot {k} CG at {altitude(task, b):.2f} m altitude "
                 f"(< {task.min_altitude:.3g} m)")
-    if code == 3:
-        return (f"t = {t:.2f} s: cable tension {task.aux[b, AUX_MAX_TENSION]:.4g} N over "
-                f"{task.breaking_tension:.4g} N")
-    al, be = o[:, OBS_INDEX["alpha"]], o[:, OBS_INDEX["beta"]]
-    k = int(np.argmax(np.maximum(np.maximum(task.alpha_lo - al, al - task.alpha_hi), np.abs(be) - task.beta_max)))
-    return (f"t = {t:.2f} s: slot {k} alpha = {math.degrees(al[k]):.1f} deg, beta = {math.degrees(be[k]):.1f} deg "
-            "outside the aerodynamic range")
+    return aero_range_text(task, b, _slots(task)[b], "slot")

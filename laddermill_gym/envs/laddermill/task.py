@@ -42,8 +42,16 @@ from laddermill_gym.envs.laddermill.settings import (
     SpeedCommandConfig,
     TerminationConfig,
 )
+from laddermill_gym.envs.observation import wing_lateral_offsets
 from laddermill_gym.envs.task import config_from
-from laddermill_gym.kernels.contract import B3_QUAT, B3_RATE, B3_SIZE, B3_VEL, N_CONTROLS, SX_ENERGY, SX_MOVED, SX_SPEED
+from laddermill_gym.envs.task_base import (
+    TaskCore,
+    add_wing_noise,
+    check_copies,
+    clip_observations,
+    substeps_per_period,
+)
+from laddermill_gym.kernels.contract import B3_QUAT, B3_SIZE, N_CONTROLS, SX_ENERGY, SX_MOVED, SX_SPEED
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
     AUX_GROUND_START,
@@ -55,17 +63,9 @@ from laddermill_gym.ladder.scene import options_key
 from laddermill_gym.model.params import CONTROL_NAMES
 from laddermill_gym.model.states import rotations_from_quaternions
 from laddermill_gym.sim.batch import BatchSimulator
-from laddermill_gym.sim.simulator import FIXED_STEP_METHODS, Simulator
+from laddermill_gym.sim.simulator import Simulator
 
 __all__ = ["MillTask"]
-
-
-def _positive(name: str, v, unit: str) -> float:
-    if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
-        raise ValueError(f"{name} = {v!r}: must be a finite number > 0 {unit}")
-    return float(v)
-
-
 
 
 def _scene_options(scene_options) -> tuple:
@@ -77,7 +77,7 @@ def _scene_options(scene_options) -> tuple:
     return options_key(options)
 
 
-class MillTask:
+class MillTask(TaskCore):
     """B copies of the moving-cable laddermill as an RL task (arguments: :class:`LadderMillEnv
     <laddermill_gym.envs.laddermill.env.LadderMillEnv>`; ``n_copies`` = B, ``parallel``: numba's thread pool,
     default from 32 copies on).
@@ -94,6 +94,7 @@ class MillTask:
 
     #: failure code -> name (the SB3 adapter and the evaluation harness read it)
     failure_names = MILL_FAILURES
+    env_name = "LadderMill"
 
     def __init__(self, n_copies: int = 1, scene: str = "laddermill", scene_options: dict | None = None,
                  control_dt: float = 0.05, episode_time: float = 120.0, groups="per_slot", n_bands: int = 4,
@@ -102,11 +103,8 @@ class MillTask:
                  operating_point: OperatingPoint | None = None, settle=None, initial_noise=None,
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
                  parallel: bool | None = None):
-        if isinstance(n_copies, bool) or int(n_copies) != n_copies or n_copies < 1:
-            raise ValueError(f"n_copies = {n_copies!r}: must be a positive integer")
-        self.control_dt = _positive("control_dt", control_dt, "s")
-        self.episode_time = _positive("episode_time", episode_time, "s")
-        self.wind_dt = _positive("wind_dt", wind_dt, "s")
+        B = check_copies(n_copies)
+        self._episode_times(control_dt, episode_time, wind_dt)
         # objects, mappings or YAML text; None: the paper's 0.01 rad direction step at 1 s
         self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
         self.reward_config = config_from(reward, MillRewardConfig, "reward")
@@ -119,13 +117,8 @@ class MillTask:
             raise ValueError("generator_torque and cable_speed_command: choose one station action")
         options = _scene_options(scene_options)
         self.scene = sc = mill_scene(str(scene), options, 3)
-        if sc.settings.method not in FIXED_STEP_METHODS:
-            raise ValueError(f"scene {sc.name}: integrator.method = {sc.settings.method!r}; environments step with a "
-                             f"fixed-step method, one of {FIXED_STEP_METHODS}")
         dt = sc.settings.dt
-        self.n_substeps = int(round(self.control_dt / dt))
-        if self.n_substeps < 1 or abs(self.n_substeps * dt - self.control_dt) > 1e-9 * self.control_dt:
-            raise ValueError(f"control_dt = {control_dt!r} s is not a whole multiple of the physics step {dt!r} s")
+        self.n_substeps = substeps_per_period(sc.name, sc.settings, self.control_dt, control_dt)
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
         self.op = self._operating_point(operating_point, str(scene), options)
         rp = self.reward_config.reference_power_W
@@ -134,7 +127,7 @@ class MillTask:
         self.cable_speed_command = bool(cable_speed_command)
         asm = self._assembly()
         self.n_wings = n = asm.n_wings
-        self.n_copies = B = int(n_copies)
+        self.n_copies = B
         self.parallel = B >= 32 if parallel is None else bool(parallel)
         self._kernel = step_observe_batch if self.parallel else step_observe_serial
         n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
@@ -218,22 +211,12 @@ class MillTask:
         return dataclasses.replace(sc.assembly, station=station)
 
     def _limits(self) -> None:
-        rc, tc, sc = self.reward_config, self.termination_config, self.scene
-        self.lateral_scale = rc.lateral_scale if rc.lateral_scale is not None else 0.05 * sc.piece_length
-        self.min_altitude = tc.min_altitude if tc.min_altitude is not None else 0.5 * min(
-            w.span for w in sc.assembly.wing_types)
-        self.breaking_tension = tc.breaking_factor * sc.cable.breaking_load
-        self.alpha_lo, self.alpha_hi = np.radians(tc.alpha_range_deg)
-        self.beta_max = math.radians(tc.max_abs_beta_deg)
+        self._wing_limits(self.scene, min(w.span for w in self.scene.assembly.wing_types))
 
     # ------------------------------------------------------------------ kernel
     def _run(self, nsteps: np.ndarray) -> None:
         """Advance copy b by nsteps[b] RK4 steps (0: observe only, < 0: skip), then compose the observations."""
-        b = self.batch
-        b.advance(nsteps, lambda dt, ns: self._kernel(
-            b.t, b.states, b.controls, dt, ns, *b.detached, b.work, b.air, b.limits, b.tableau, b.breaks,
-            self._dx, self._zero_nominal, self.below, self.ground, self.slot_obs, self.aux,
-            b.status, b.done))
+        self._wing_kernel_pass(nsteps, self._zero_nominal, self.slot_obs)
         self._compose()
 
     def _compose(self) -> None:
@@ -258,41 +241,25 @@ class MillTask:
         station[:, STATION_OBS_INDEX["cable_phase"]] = moved / st.piece_length
         station[:, STATION_OBS_INDEX["tension_difference"]] = dten
         station[:, STATION_OBS_INDEX["power_ratio"]] = self.power / self.p_ref
-        raw, lo, hi = self.raw_obs, self.obs_low, self.obs_high
-        np.clip(np.where(np.isfinite(raw), raw, np.where(raw < 0, lo, hi)), lo, hi, out=self.obs)
-
-    def observe(self) -> None:
-        """Observe every copy at its current state without stepping (after restoring states by hand)."""
-        self._nsteps[:] = 0
-        self._run(self._nsteps)
+        clip_observations(self.raw_obs, self.obs_low, self.obs_high, self.obs)
 
     # ------------------------------------------------------------------ episodes
     def reset(self, mask: np.ndarray, rngs) -> None:
         """Start new episodes in the copies selected by the boolean ``mask`` (B,): the operating point (plus the
         initial noise, per wing) and its controls, t = 0, a fresh wind disturbance, drawn with ``rngs[b]`` (a numpy
         Generator per copy: first the disturbances, then the noise), and observe them. Other copies are untouched."""
-        b, n, noise = self.batch, self.n_wings, self.initial_noise
+        b = self.batch
         idx = np.flatnonzero(mask)
-        noisy = noise.lateral_velocity > 0 or noise.roll_rate > 0 or noise.yaw_rate > 0
-        scale = np.array([noise.lateral_velocity, noise.roll_rate, noise.yaw_rate])
         for i in idx:
             rng = rngs[i]
             b.set_wind(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rng))
             x = np.array(self.op.state)
-            if noisy:
-                d = rng.normal(size=(n, 3)) * scale  # (global lateral velocity, roll rate, yaw rate) per wing
-                w = x[: B3_SIZE * n].reshape(n, B3_SIZE)
-                w[:, B3_VEL: B3_VEL + 3] += self._rotation_op[:, 1, :] * d[:, :1]  # R^T (0, dvy, 0)
-                w[:, B3_RATE] += d[:, 1]
-                w[:, B3_RATE + 2] += d[:, 2]
+            add_wing_noise(x, self._rotation_op, self.initial_noise, rng)
             b.states[i] = x
         b.controls[idx] = self.u_op
         b.t[idx] = 0.0
-        self.steps[idx] = 0
         self.last_action[idx] = 0.0
-        self._nsteps[:] = -1
-        self._nsteps[idx] = 0
-        self._run(self._nsteps)
+        self._start_copies(idx)
 
     def step(self, action: np.ndarray, mask: np.ndarray | None = None):
         """Apply normalised actions (B, n_actions) for one control period to the copies in ``mask`` (default all)
@@ -311,10 +278,7 @@ class MillTask:
         b.controls[sel] = self.actions.controls(a)[sel]
         self.last_action[sel] = a[sel]
         self.energy_start[:] = b.states[:, self.xoff + SX_ENERGY]
-        self._nsteps[:] = -1
-        self._nsteps[sel] = self.n_substeps
-        self._run(self._nsteps)
-        self.steps[sel] += 1
+        self._advance_copies(sel)
         return evaluate_copies(self, a, n_clipped)
 
     # ------------------------------------------------------------------ read-outs
@@ -326,12 +290,21 @@ class MillTask:
     def simulator(self, b: int = 0) -> Simulator:
         """A :class:`~laddermill_gym.sim.simulator.Simulator` of copy ``b`` (its state, time [s], controls and wind;
         a snapshot: stepping it does not step the copy). ``generator_power()``, ``slot_wings()`` etc. read it out."""
-        bt = self.batch
-        sim = Simulator(bt.assembly, bt.states[b], bt.settings, bt.controls[b])
-        air = {f: a[b].copy() for f, a in zip(bt.air._fields, bt.air, strict=True) if a is not None}
-        sim.model = sim.model._replace(**air)
-        sim.reset(state=bt.states[b], t=float(bt.t[b]), controls=bt.controls[b], check=False)
-        return sim
+        return self._snapshot_simulator(Simulator, b, check=False)
+
+    def reset_info(self) -> dict:
+        """The single env's reset info beside ``t``: the reference power [W] and whether the operating point
+        converged (with its note)."""
+        return {"reference_power_W": self.p_ref, "operating_point_converged": self.op.converged,
+                "operating_point_note": self.op.note}
+
+    def env_kwargs(self, kwargs: dict) -> dict:
+        """The arguments with the operating point, so that an unpickled env does not compute it again."""
+        return dict(kwargs, operating_point=self.op)
+
+    def lateral_offsets(self, obs: np.ndarray) -> np.ndarray:
+        """Lateral CG offsets dy [m] (B, n) per slot of observations (B, 15 n + 4)."""
+        return wing_lateral_offsets(obs, self.n_wings)
 
     def failure_text(self, b: int, code: int) -> str:
         """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0."""

@@ -1,34 +1,19 @@
 """A scene at the point-mass fidelity as a Gymnasium environment whose actions command the kites' attitude
 (``laddermill_gym/PointMassChain-v0``): the single env, a :class:`~laddermill_gym.envs.pointmass.task.PointMassTask`
-with one copy (the vector env, :class:`~laddermill_gym.envs.pointmass.vector.PointMassVectorEnv`, is the same task
-with many)."""
+with one copy, and the native vector env, the same task with many."""
 
 from __future__ import annotations
 
-import inspect
-from typing import Any
-
-import gymnasium as gym
 import numpy as np
 
-from laddermill_gym.envs.actions import single_action
 from laddermill_gym.envs.pointmass.task import OBS_PER_KITE, PointMassTask
+from laddermill_gym.envs.task_env import TaskEnv
+from laddermill_gym.envs.vector import TaskVectorEnv
 
-__all__ = ["PointMassEnv", "OBS_PER_KITE", "TASK_ARGUMENTS", "check_task_arguments"]
-
-#: The PointMassTask arguments the envs take (all but the number of copies)
-TASK_ARGUMENTS: tuple[str, ...] = tuple(p for p in inspect.signature(PointMassTask).parameters if p != "n_copies")
-
-
-def check_task_arguments(kwargs: dict) -> None:
-    """ValueError naming the arguments (and values) that are not PointMassTask arguments."""
-    unknown = sorted(set(kwargs) - set(TASK_ARGUMENTS))
-    if unknown:
-        raise ValueError(f"{', '.join(f'{k} = {kwargs[k]!r}' for k in unknown)}: not arguments of PointMassEnv "
-                         f"(known: {', '.join(TASK_ARGUMENTS)})")
+__all__ = ["PointMassEnv", "PointMassVectorEnv", "OBS_PER_KITE"]
 
 
-class PointMassEnv(gym.Env):
+class PointMassEnv(TaskEnv):
     """Point-mass kites of a scene (``fidelity: pointmass``) controlled through their commanded attitude.
 
     ## Description
@@ -110,21 +95,7 @@ class PointMassEnv(gym.Env):
     * v0 (``laddermill_gym/PointMassChain-v0``): initial version.
     """
 
-    metadata = {"render_modes": []}
-
-    def __init__(self, render_mode: str | None = None, **task_kwargs):
-        if render_mode is not None:
-            raise ValueError(f"render_mode = {render_mode!r}: the point-mass env does not render (None only)")
-        task_kwargs.pop("n_copies", None)
-        task_kwargs.pop("max_episode_steps", None)
-        check_task_arguments(task_kwargs)
-        self.task = PointMassTask(1, **task_kwargs)
-        self._kwargs = dict(task_kwargs)
-        self.render_mode = None
-        self.observation_space = gym.spaces.Box(self.task.obs_low.astype(np.float32),
-                                                self.task.obs_high.astype(np.float32), dtype=np.float32)
-        self.action_space = gym.spaces.Box(-1.0, 1.0, (self.task.n_actions,), np.float32)
-        self._needs_reset = True
+    task_class = PointMassTask
 
     @property
     def scene(self):
@@ -135,39 +106,20 @@ class PointMassEnv(gym.Env):
         """Controls (n_k * 3,) [rad] of a normalised action: the start attitude plus pitch and roll offsets."""
         return self.task.commanded_attitude(np.asarray(action, dtype=float)[None])[0]
 
-    def reset(self, *, seed: int | None = None, options: dict | None = None):
-        super().reset(seed=seed)
-        self.task.reset(np.ones(1, bool), [self.np_random])
-        self._needs_reset = False
-        return self.task.obs[0].astype(np.float32), {"t": 0.0}
 
-    def step(self, action):
-        a = single_action(action, self.task.n_actions, self._needs_reset)
-        reward, terminated, truncated, info = self.task.step(a)
-        code = int(info["failure"][0])
-        out: dict[str, Any] = {k: v[0].item() for k, v in info.items()}
-        out["failure_name"] = self.task.failure_names[code]
-        out["failure_reason"] = self.task.failure_text(0, code)
-        if terminated[0] or truncated[0]:
-            self._needs_reset = True
-        return self.task.obs[0].astype(np.float32), float(reward[0]), bool(terminated[0]), bool(truncated[0]), out
+class PointMassVectorEnv(TaskVectorEnv):
+    """``num_envs`` copies of :class:`PointMassEnv` in one task (:class:`~laddermill_gym.envs.vector.TaskVectorEnv`;
+    copy i behaves exactly like a single env seeded seed + i; NextStep or SameStep autoreset). The copies are
+    stepped one after another by the compiled point-mass kernels within one Python call (no Python env object per
+    copy, no batched kernel yet).
 
-    def __getstate__(self):
-        if self.task.mill is not None:
-            raise TypeError(f"scene {self.task.scene.name}: pickling the moving-cable point-mass env is not "
-                            "supported (its copies' station states and slots are not saved)")
-        b, task = self.task.batch, self.task
-        air = [tuple(getattr(m, f) for f in ("tmod", "ms", "md", "gp", "gv")) for m in b.models]
-        return {"kwargs": self._kwargs, "np_random": self._np_random, "needs_reset": self._needs_reset, "air": air,
-                "arrays": (b.states.copy(), b.controls.copy(), b.t.copy(), b.status.copy(), task.steps.copy(),
-                           task.last_action.copy())}
+    Observations (num_envs, 7 n_kites + n_ground) float32; ``info`` holds (num_envs,) arrays of every reward term,
+    power [W], largest tension [N], lowest kite altitude [m], t [s], n_clipped and the failure code
+    (:data:`~laddermill_gym.envs.pointmass.batch.POINTMASS_FAILURES`), each with its ``_name`` mask.
+    ``lateral_offsets(obs)``: dy [m] of every kite (num_envs, n_kites).
 
-    def __setstate__(self, state):
-        self.__init__(**state["kwargs"])
-        self._np_random = state["np_random"]
-        b, task = self.task.batch, self.task
-        b.states[:], b.controls[:], b.t[:], b.status[:], task.steps[:], task.last_action[:] = state["arrays"]
-        for i, (tmod, ms, md, gp, gv) in enumerate(state["air"]):
-            b.models[i] = b.models[i]._replace(tmod=tmod, ms=ms, md=md, gp=gp, gv=gv)
-        self._needs_reset = state["needs_reset"]
-        task.observe()
+    Parameters: ``num_envs``, ``render_mode`` (None only: the point-mass env does not render), ``autoreset_mode``
+    and the arguments of the single env; others raise ValueError.
+    """
+
+    task_class = PointMassTask

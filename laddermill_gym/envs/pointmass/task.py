@@ -11,7 +11,6 @@ PointMassBatch`: one kernel call per copy and control period, not one call for a
 from __future__ import annotations
 
 import functools
-import math
 
 import numpy as np
 
@@ -21,6 +20,7 @@ from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.pointmass.batch import POINTMASS_FAILURES, PointMassBatch, pointmass_start
 from laddermill_gym.envs.pointmass.mill import PointMassMillBatch, mill_task_start
 from laddermill_gym.envs.task import RewardConfig, config_from
+from laddermill_gym.envs.task_base import TaskCore, check_copies, clip_observations, positive
 from laddermill_gym.kernels.contract import (
     PKO_OFFSET,
     PKO_SIZE,
@@ -43,19 +43,13 @@ __all__ = ["PointMassTask", "OBS_PER_KITE"]
 OBS_PER_KITE = PKO_SIZE
 
 
-def _positive(name: str, v, unit: str) -> float:
-    if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
-        raise ValueError(f"{name} = {v!r}: must be a finite number > 0 {unit}")
-    return float(v)
-
-
 @functools.lru_cache(maxsize=8)
 def _has_station(scene: str, options: tuple) -> bool:
     """Whether ``scene`` with ``load_scene`` overrides ``options`` is a moving cable (has a station)."""
     return load_scene(scene, fidelity="pointmass", **dict(options)).station is not None
 
 
-class PointMassTask:
+class PointMassTask(TaskCore):
     """B copies of a point-mass scene as an RL task (arguments: :class:`PointMassEnv
     <laddermill_gym.envs.pointmass.env.PointMassEnv>`; ``n_copies`` = B).
 
@@ -67,25 +61,25 @@ class PointMassTask:
     """
 
     failure_names = POINTMASS_FAILURES
+    env_name = "point-mass"
+    #: the point-mass envs do not render
+    render_modes: tuple[str, ...] = ()
 
     def __init__(self, n_copies: int = 1, scene: str = "tethered_wing", scene_options: dict | None = None,
                  control_dt: float = 0.05, episode_time: float = 60.0, settle_time: float = 0.0,
                  groups: str = "all", pitch_range_deg: float = 5.0, roll_range_deg: float = 15.0,
                  disturbances=None, wind_dt: float = 0.1, reward=None, min_altitude: float = 10.0,
                  breaking_factor: float = 1.0):
-        if isinstance(n_copies, bool) or int(n_copies) != n_copies or n_copies < 1:
-            raise ValueError(f"n_copies = {n_copies!r}: must be a positive integer")
-        self.control_dt = _positive("control_dt", control_dt, "s")
-        self.episode_time = _positive("episode_time", episode_time, "s")
-        self.wind_dt = _positive("wind_dt", wind_dt, "s")
+        B = check_copies(n_copies)
+        self._episode_times(control_dt, episode_time, wind_dt)
         if isinstance(settle_time, bool) or not (isinstance(settle_time, (int, float)) and settle_time >= 0):
             raise ValueError(f"settle_time = {settle_time!r}: must be a number >= 0 s")
         if groups not in ("all", "per_kite"):
             raise ValueError(f"groups = {groups!r}: must be 'all' or 'per_kite'")
-        self.ranges = np.radians([_positive("pitch_range_deg", pitch_range_deg, "deg"),
-                                  _positive("roll_range_deg", roll_range_deg, "deg")])
+        self.ranges = np.radians([positive("pitch_range_deg", pitch_range_deg, "deg"),
+                                  positive("roll_range_deg", roll_range_deg, "deg")])
         self.min_altitude = float(min_altitude)
-        self.breaking_factor = _positive("breaking_factor", breaking_factor, "(-)")
+        self.breaking_factor = positive("breaking_factor", breaking_factor, "(-)")
         self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
         self.reward_config = rc = config_from(reward, RewardConfig, "reward")
         options = tuple(sorted({"element_length": 1.0, **(scene_options or {})}.items()))
@@ -106,7 +100,7 @@ class PointMassTask:
         if self.n_substeps < 1 or abs(self.n_substeps * sc.dt - self.control_dt) > 1e-9 * self.control_dt:
             raise ValueError(f"control_dt = {control_dt!r}: must be a whole number of scene steps ({sc.dt} s)")
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
-        self.n_copies = B = int(n_copies)
+        self.n_copies = B
         self.n_wings = s.n_kites
         self.groups = groups
         self.kite_nodes = s.kite_nodes
@@ -162,8 +156,7 @@ class PointMassTask:
         self.raw_obs[:, OBS_PER_KITE * nk] = b.tension[:, 0]
         if self.n_ground == 2:
             self.raw_obs[:, -1] = b.tension[:, -1]
-        ro, lo, hi = self.raw_obs, self.obs_low, self.obs_high
-        np.clip(np.where(np.isfinite(ro), ro, np.where(ro < 0, lo, hi)), lo, hi, out=self.obs)
+        clip_observations(self.raw_obs, self.obs_low, self.obs_high, self.obs)
 
     def observe(self) -> None:
         """Observe every copy at its current state without stepping (after restoring states by hand)."""
@@ -265,6 +258,29 @@ class PointMassTask:
             return f"t = {t:.3f} s: a kite at {self._failure_value[b]:.3f} m, below min_altitude {self.min_altitude} m"
         return (f"t = {t:.3f} s: tension {self._failure_value[b]:.6g} N over {self.breaking_factor} x the breaking "
                 f"load ({self.breaking_tension:.6g} N)")
+
+    def lateral_offsets(self, obs: np.ndarray) -> np.ndarray:
+        """Lateral offsets dy [m] (B, n_kites) of every kite of observations (B, 7 n_kites + n_ground)."""
+        nk = self.n_wings
+        o = np.asarray(obs, dtype=float)[:, : OBS_PER_KITE * nk].reshape(len(obs), nk, OBS_PER_KITE)
+        return o[:, :, PKO_OFFSET + 1]
+
+    def snapshot(self) -> dict:
+        """The batch's states, controls, times, status and air per copy, the step counters and last actions;
+        TypeError on the moving cable (its copies' station states and slots are not saved)."""
+        if self.mill is not None:
+            raise TypeError(f"scene {self.scene.name}: pickling the moving-cable point-mass env is not "
+                            "supported (its copies' station states and slots are not saved)")
+        b = self.batch
+        return {"air": [tuple(getattr(m, f) for f in ("tmod", "ms", "md", "gp", "gv")) for m in b.models],
+                "arrays": (b.states.copy(), b.controls.copy(), b.t.copy(), b.status.copy(), self.steps.copy(),
+                           self.last_action.copy())}
+
+    def restore(self, snap: dict) -> None:
+        b = self.batch
+        b.states[:], b.controls[:], b.t[:], b.status[:], self.steps[:], self.last_action[:] = snap["arrays"]
+        for i, (tmod, ms, md, gp, gv) in enumerate(snap["air"]):
+            b.models[i] = b.models[i]._replace(tmod=tmod, ms=ms, md=md, gp=gp, gv=gv)
 
     def simulator(self, b: int = 0):
         """A :class:`~laddermill_gym.sim.pointmass.PointMassSimulator` of copy ``b`` (snapshot of its state, time,

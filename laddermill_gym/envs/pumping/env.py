@@ -1,41 +1,19 @@
 """The pumping kite as a Gymnasium environment (``laddermill_gym/PumpingKite-v0``): the single env, a
-:class:`~laddermill_gym.envs.pumping.task.PumpingTask` with one copy (the vector env,
-:class:`~laddermill_gym.envs.pumping.vector.PumpingKiteVectorEnv`, is the same task with many)."""
+:class:`~laddermill_gym.envs.pumping.task.PumpingTask` with one copy, and the native vector env, the same task with
+many."""
 
 from __future__ import annotations
 
-import inspect
-from typing import Any
-
-import gymnasium as gym
-import numpy as np
-
-from laddermill_gym.envs.actions import single_action
-from laddermill_gym.envs.observation import OBS_FIELDS
-from laddermill_gym.envs.pickling import TaskPickling
+from laddermill_gym.envs.observation import OBS_FIELDS, observation_table
 from laddermill_gym.envs.pumping.observation import WINCH_OBS_FIELDS
 from laddermill_gym.envs.pumping.task import PumpingTask
-from laddermill_gym.envs.render import TaskRendering
+from laddermill_gym.envs.task_env import TaskEnv
+from laddermill_gym.envs.vector import TaskVectorEnv
 
-__all__ = ["PumpingKiteEnv", "TASK_ARGUMENTS", "check_task_arguments"]
-
-#: The PumpingTask arguments the envs take (all but the number of copies; ``parallel`` only in the vector env)
-TASK_ARGUMENTS: tuple[str, ...] = tuple(p for p in inspect.signature(PumpingTask).parameters if p != "n_copies")
+__all__ = ["PumpingKiteEnv", "PumpingKiteVectorEnv"]
 
 
-def check_task_arguments(kwargs: dict, allowed: tuple[str, ...] = TASK_ARGUMENTS) -> None:
-    """ValueError naming the arguments (and values) that are not PumpingTask arguments."""
-    unknown = sorted(set(kwargs) - set(allowed))
-    if unknown:
-        raise ValueError(f"{', '.join(f'{k} = {kwargs[k]!r}' for k in unknown)}: not arguments of PumpingKite "
-                         f"(known: {', '.join(allowed)})")
-
-
-def _table(fields, start: int) -> str:
-    return "\n".join(f"    | {start + i} | {f.name} | {f.unit} | {f.description} |" for i, f in enumerate(fields))
-
-
-class PumpingKiteEnv(TaskPickling, TaskRendering, gym.Env):
+class PumpingKiteEnv(TaskEnv):
     """The pumping kite of Lansdorp et al. (2008): one wing on a tether wound on a winch, flown through its tail
     surfaces while the winch reels out under high lift and in at low lift.
 
@@ -107,45 +85,25 @@ WINCH_TABLE
     * v0: initial version.
     """
 
-    metadata = {"render_modes": ["rgb_array", "human"], "render_fps": 20}
-
-    def __init__(self, render_mode: str | None = None, **task_kwargs):
-        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
-            raise ValueError(f"render_mode = {render_mode!r}: must be one of {self.metadata['render_modes']} or None")
-        task_kwargs.pop("n_copies", None)
-        task_kwargs.pop("max_episode_steps", None)
-        check_task_arguments(task_kwargs, tuple(a for a in TASK_ARGUMENTS if a != "parallel"))
-        self.task = PumpingTask(1, parallel=False, **task_kwargs)
-        self._kwargs = dict(task_kwargs)
-        self.render_mode = render_mode
-        self.metadata = dict(self.metadata, render_fps=int(round(1.0 / self.task.control_dt)))
-        self.observation_space = gym.spaces.Box(self.task.obs_low.astype(np.float32),
-                                                self.task.obs_high.astype(np.float32), dtype=np.float32)
-        self.action_space = gym.spaces.Box(-1.0, 1.0, shape=(self.task.n_actions,), dtype=np.float32)
-        self._renderer = None
-        self._needs_reset = True
-
-    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
-        super().reset(seed=seed)
-        self.task.reset(np.ones(1, bool), [self.np_random])
-        self._needs_reset = False
-        if self.render_mode == "human":
-            self.render()
-        return self.task.obs[0].astype(np.float32), {"t": 0.0}
-
-    def step(self, action):
-        a = single_action(action, self.task.n_actions, self._needs_reset)
-        reward, terminated, truncated, info = self.task.step(a)
-        code = int(info["failure"][0])
-        out = {k: v[0].item() for k, v in info.items()}
-        out["failure_name"] = self.task.failure_names[code]
-        out["failure_reason"] = self.task.failure_text(0, code)
-        if terminated[0] or truncated[0]:
-            self._needs_reset = True
-        if self.render_mode == "human":
-            self.render()
-        return self.task.obs[0].astype(np.float32), float(reward[0]), bool(terminated[0]), bool(truncated[0]), out
+    task_class = PumpingTask
 
 
-PumpingKiteEnv.__doc__ = (PumpingKiteEnv.__doc__.replace("WING_TABLE", _table(OBS_FIELDS, 0))
-                          .replace("WINCH_TABLE", _table(WINCH_OBS_FIELDS, len(OBS_FIELDS))))
+class PumpingKiteVectorEnv(TaskVectorEnv):
+    """``num_envs`` copies of :class:`PumpingKiteEnv` in one batch (:class:`~laddermill_gym.envs.vector.TaskVectorEnv`
+    over a :class:`~laddermill_gym.envs.pumping.task.PumpingTask`; copy i runs the same kernel code as a single env
+    seeded seed + i; NextStep or SameStep autoreset).
+
+    Observations (num_envs, 20) float32; ``info`` holds (num_envs,) arrays of every reward term, the net electrical
+    and mechanical power [W], winch speed [m/s], paid out [m], tensions [N], lowest altitude [m], t [s], n_clipped
+    and the failure code (:data:`~laddermill_gym.envs.pumping.settings.PUMPING_FAILURES`), each with its ``_name``
+    mask. ``lateral_offsets(obs)``: dy [m] (num_envs, 1).
+
+    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0), ``autoreset_mode``, ``parallel`` (numba
+    thread pool; default from 32 copies on) and the arguments of the single env; others raise ValueError.
+    """
+
+    task_class = PumpingTask
+
+
+PumpingKiteEnv.__doc__ = (PumpingKiteEnv.__doc__.replace("WING_TABLE", observation_table(OBS_FIELDS))
+                          .replace("WINCH_TABLE", observation_table(WINCH_OBS_FIELDS, start=len(OBS_FIELDS))))

@@ -3,20 +3,17 @@ PumpingTask`), computed from its composed observations and kernel read-outs afte
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from laddermill_gym.envs.observation import OBS_INDEX
 from laddermill_gym.envs.pumping.observation import WINCH_OBS_INDEX
-from laddermill_gym.kernels.contract import GROUND, LIMIT, NONFINITE, OK, SINGULAR, SX_ENERGY
+from laddermill_gym.envs.wing_failures import aero_range_text, altitude, shared_failure_text, status_texts
+from laddermill_gym.kernels.contract import GROUND, OK, SX_ENERGY
 from laddermill_gym.kernels.rigid.observe import AUX_MAX_TENSION, AUX_MIN_ALTITUDE
-from laddermill_gym.sim.reports import ground_stop_text
 
 __all__ = ["evaluate_copies", "failure_codes", "failure_text"]
 
-_STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state",
-                LIMIT: "speed or rate limit, or the winch reeled in below 5 % of the tether's start length"}
+_STATUS_TEXT = status_texts("speed or rate limit, or the winch reeled in below 5 % of the tether's start length")
 
 
 def failure_codes(task) -> np.ndarray:
@@ -72,20 +69,10 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
 
 def failure_text(task, b: int, code: int) -> str:
     """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0."""
-    if code == 0:
-        return ""
-    bt = task.batch
-    t = float(bt.t[b])
-    o = task.raw_obs[b]
-    if code == 1:
-        return f"t = {t:.2f} s: integration failed ({_STATUS_TEXT.get(int(bt.status[b]), 'unknown')})"
-    if code == 2 and bt.status[b] == GROUND:
-        return f"t = {t:.2f} s: {ground_stop_text(bt.assembly, bt.states[b], bt.settings.ground_height)}"
+    text = shared_failure_text(task, b, code, _STATUS_TEXT)
+    if text is not None:
+        return text
     if code == 2:
-        return (f"t = {t:.2f} s: ground contact, wing CG at {task.aux[b, AUX_MIN_ALTITUDE]:.2f} m "
+        return (f"t = {float(task.batch.t[b]):.2f} s: ground contact, wing CG at {altitude(task, b):.2f} m "
                 f"(< {task.min_altitude:.3g} m)")
-    if code == 3:
-        return f"t = {t:.2f} s: cable tension {task.aux[b, AUX_MAX_TENSION]:.4g} N over {task.breaking_tension:.4g} N"
-    al, be = o[OBS_INDEX["alpha"]], o[OBS_INDEX["beta"]]
-    return (f"t = {t:.2f} s: alpha = {math.degrees(al):.1f} deg, beta = {math.degrees(be):.1f} deg outside the "
-            "aerodynamic range")
+    return aero_range_text(task, b, task.raw_obs[b: b + 1], None)

@@ -3,7 +3,7 @@
 The physics is the core simulator with the craft's loads (:mod:`laddermill_gym.rotorcraft.craft`: one rigid body,
 two Gessow & Myers rotors, fins, frame drag, three tethers of core cable elements). The environment is the
 rotorcraft task (:class:`~laddermill_gym.envs.rotorcraft.task.CraftTask`) with one copy, stepped by the same
-compiled kernel as the native vector env (:class:`~laddermill_gym.envs.rotorcraft.vector.RotorcraftVectorEnv`),
+compiled kernel as the native vector env (:class:`RotorcraftVectorEnv`, below),
 so a single env and copy i of a vector env seeded alike agree bit for bit. The observation layout lives in
 ``envs/rotorcraft/observation.py``, the trim and the trim action in ``envs/rotorcraft/trim.py``, the settings in
 ``envs/rotorcraft/settings.py``; this module re-exports their public names.
@@ -11,14 +11,7 @@ so a single env and copy i of a vector env seeded alike agree bit for bit. The o
 
 from __future__ import annotations
 
-from typing import Any
-
-import gymnasium as gym
-import numpy as np
-
-from laddermill_gym.envs.actions import single_action
-from laddermill_gym.envs.pickling import TaskPickling
-from laddermill_gym.envs.render import TaskRendering
+from laddermill_gym.envs.observation import observation_table
 from laddermill_gym.envs.rotorcraft.observation import (
     CRAFT_OBS_FIELDS,
     CRAFT_OBS_INDEX,
@@ -33,27 +26,16 @@ from laddermill_gym.envs.rotorcraft.observation import (
 from laddermill_gym.envs.rotorcraft.settings import InitialNoise, RotorcraftRewardConfig, RotorcraftTerminationConfig
 from laddermill_gym.envs.rotorcraft.task import CRAFT_FAILURES, CraftTask
 from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim, trim_action
-from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
+from laddermill_gym.envs.task_env import TaskEnv
+from laddermill_gym.envs.vector import TaskVectorEnv
 from laddermill_gym.rotorcraft.craft import CraftSimulator
 
 __all__ = ["RotorcraftEnv", "RotorcraftRewardConfig", "RotorcraftTerminationConfig", "InitialNoise",
            "CRAFT_OBS_FIELDS", "CRAFT_OBS_INDEX", "CRAFT_FAILURES", "N_CRAFT_OBS", "OBS_Y", "OBS_PHI", "OBS_VY",
            "OBS_P", "OBS_PSI", "OBS_R", "craft_trim", "trim_action", "control_ranges",
-           "CraftTask"]
+           "CraftTask", "RotorcraftVectorEnv"]
 
-#: Read-only attributes of the task that the env shows as its own (units and shapes: CraftTask).
-_TASK_ATTRIBUTES: tuple[str, ...] = (
-    "craft", "x_trim", "u_trim", "trim_action", "control_dt", "episode_time", "wind_dt", "n_substeps", "n_steps_max",
-    "disturbances", "reward_config", "termination_config", "initial_noise", "nominal_position", "thrust_trim",
-    "tension_trim", "p_ref", "lateral_scale", "min_altitude", "breaking_tension")
-
-
-# ---------------------------------------------------------------------------------------------- the env
-def _obs_table() -> str:
-    return "\n".join(f"    | {i} | {f.name} | {f.unit} | {f.description} |" for i, f in enumerate(CRAFT_OBS_FIELDS))
-
-
-class RotorcraftEnv(TaskPickling, TaskRendering, gym.Env):
+class RotorcraftEnv(TaskEnv):
     """Roberts' tethered twin-rotor craft held by differential collective pitch.
 
     ## Description
@@ -71,7 +53,7 @@ class RotorcraftEnv(TaskPickling, TaskRendering, gym.Env):
     control period, :mod:`laddermill_gym.rotorcraft.craft_observe`; ``env.sim`` is a
     :class:`laddermill_gym.rotorcraft.craft.CraftSimulator` at the current state); the default disturbance is a
     0.01 rad step of the wind direction at t = 1 s. Many copies: ``gymnasium.make_vec(id, n,
-    vectorization_mode="vector_entry_point")`` (:class:`~laddermill_gym.envs.rotorcraft.vector.RotorcraftVectorEnv`).
+    vectorization_mode="vector_entry_point")`` (:class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftVectorEnv`).
 
     ## Action Space
 
@@ -143,26 +125,7 @@ OBS_TABLE
     * v0: initial version.
     """
 
-    metadata = {"render_modes": ["rgb_array", "human"], "render_fps": 20}
-
-    def __init__(self, craft: str = DEFAULT_CRAFT, wind_speed: float | None = None, collective: float | None = None,
-                 control_dt: float = 0.05, physics_dt: float | None = None, episode_time: float = 120.0,
-                 disturbances=None, wind_dt: float = 0.1, initial_noise=None, reward=None, termination=None,
-                 render_mode: str | None = None):
-        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
-            raise ValueError(f"render_mode = {render_mode!r}: must be one of {self.metadata['render_modes']} or None")
-        self._kwargs = dict(craft=craft, wind_speed=wind_speed, collective=collective, control_dt=control_dt,
-                            physics_dt=physics_dt, episode_time=episode_time, disturbances=disturbances,
-                            wind_dt=wind_dt, initial_noise=initial_noise, reward=reward, termination=termination)
-        self.task = CraftTask(1, parallel=False, **self._kwargs)
-        for name in _TASK_ATTRIBUTES:
-            setattr(self, name, getattr(self.task, name))
-        self.observation_space = gym.spaces.Box(self.task.obs_low, self.task.obs_high, dtype=np.float32)
-        self.action_space = gym.spaces.Box(-1.0, 1.0, shape=(self.task.n_actions,), dtype=np.float32)
-        self.render_mode = render_mode
-        self.metadata = dict(self.metadata, render_fps=int(round(1.0 / self.control_dt)))
-        self._renderer = None
-        self._needs_reset = True
+    task_class = CraftTask
 
     @property
     def steps(self) -> int:
@@ -175,27 +138,24 @@ OBS_TABLE
         for read-outs and linearisation: stepping it does not step the env)."""
         return self.task.simulator(0)
 
-    # ------------------------------------------------------------------ Gymnasium API
-    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
-        super().reset(seed=seed)
-        self.task.reset(np.ones(1, bool), [self.np_random])
-        self._needs_reset = False
-        if self.render_mode == "human":
-            self.render()
-        return self.task.obs[0].astype(np.float32), {"t": 0.0, "reference_power_W": self.p_ref}
 
-    def step(self, action):
-        a = single_action(action, self.task.n_actions, self._needs_reset)
-        reward, terminated, truncated, info = self.task.step(a)
-        code = int(info["failure"][0])
-        out = {k: (v[0].item() if v.ndim == 1 else v[0].copy()) for k, v in info.items()}
-        out["failure_name"] = CRAFT_FAILURES[code]
-        out["failure_reason"] = self.task.failure_text(0, code)
-        if terminated[0] or truncated[0]:
-            self._needs_reset = True
-        if self.render_mode == "human":
-            self.render()
-        return self.task.obs[0].astype(np.float32), float(reward[0]), bool(terminated[0]), bool(truncated[0]), out
+class RotorcraftVectorEnv(TaskVectorEnv):
+    """``num_envs`` copies of :class:`RotorcraftEnv` in one batch (:class:`~laddermill_gym.envs.vector.TaskVectorEnv`
+    over a :class:`CraftTask`: copy i equals a single env seeded seed + i bit for bit; NextStep or SameStep
+    autoreset).
+
+    Observations (num_envs, 19) float32 (clipped to the bounds, as the single env's); ``info`` holds
+    (num_envs,) arrays of every reward term, t [s], power_W [W], altitude_m [m], max_tip_incidence_rad [rad],
+    n_clipped and failure (code of :data:`~laddermill_gym.envs.rotorcraft.task.CRAFT_FAILURES`), and
+    thrust_N (num_envs, 2) [N] and tether_tension_N (num_envs, 3) [N], each with its ``_name`` mask.
+    ``lateral_offsets(obs)``: dy [m] (num_envs, 1).
+
+    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0), ``autoreset_mode``, ``parallel``
+    (numba thread pool; default from 32 copies on) and the arguments of :class:`RotorcraftEnv` (craft,
+    wind_speed [m/s], control_dt [s], episode_time [s], disturbances, ...); others raise ValueError naming them.
+    """
+
+    task_class = CraftTask
 
 
-RotorcraftEnv.__doc__ = RotorcraftEnv.__doc__.replace("OBS_TABLE", _obs_table())
+RotorcraftEnv.__doc__ = RotorcraftEnv.__doc__.replace("OBS_TABLE", observation_table(CRAFT_OBS_FIELDS))

@@ -27,11 +27,17 @@ from laddermill_gym.envs.rotorcraft.settings import (
 )
 from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim
 from laddermill_gym.envs.task import config_from
+from laddermill_gym.envs.task_base import (
+    TaskCore,
+    add_wing_noise,
+    check_copies,
+    clip_observations,
+    positive,
+    whole_multiple,
+)
 from laddermill_gym.kernels.contract import (
     B3_POS,
-    B3_RATE,
     B3_SIZE,
-    B3_VEL,
     CA_ALTITUDE,
     CA_INFLOW_OK,
     CA_MAX_ELEMENT,
@@ -71,17 +77,11 @@ _STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state",
 CraftScene = namedtuple("CraftScene", ["assembly", "name"])
 
 
-def _positive(name: str, v, unit: str) -> float:
-    if not (isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) and v > 0):
-        raise ValueError(f"{name} = {v!r}: must be a finite number > 0 {unit}")
-    return float(v)
-
-
 def _disturbances(disturbances) -> tuple[Disturbance, ...]:
     return parse_disturbances(disturbances, (DirectionStep(),))
 
 
-class CraftTask:
+class CraftTask(TaskCore):
     """B copies of Roberts' tethered twin-rotor craft as an RL task.
 
     Parameters (those of :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`, which documents the task)
@@ -118,32 +118,32 @@ class CraftTask:
     #: One lateral offset per copy (the harness's lateral read-out) and the craft's failure names.
     n_wings = 1
     failure_names = CRAFT_FAILURES
+    env_name = "the rotorcraft env"
+    #: Read-only attributes the single env shows as its own (units and shapes above and in the code)
+    env_attributes: tuple[str, ...] = (
+        "craft", "x_trim", "u_trim", "trim_action", "control_dt", "episode_time", "wind_dt", "n_substeps",
+        "n_steps_max", "disturbances", "reward_config", "termination_config", "initial_noise", "nominal_position",
+        "thrust_trim", "tension_trim", "p_ref", "lateral_scale", "min_altitude", "breaking_tension")
 
     def __init__(self, n_copies: int = 1, craft: str = DEFAULT_CRAFT, wind_speed: float | None = None,
                  collective: float | None = None, control_dt: float = 0.05, physics_dt: float | None = None,
                  episode_time: float = 120.0, disturbances=None, wind_dt: float = 0.1, initial_noise=None,
                  reward=None, termination=None, parallel: bool | None = None):
-        if isinstance(n_copies, bool) or int(n_copies) != n_copies or n_copies < 1:
-            raise ValueError(f"n_copies = {n_copies!r}: must be a positive integer")
-        self.control_dt = _positive("control_dt", control_dt, "s")
-        self.episode_time = _positive("episode_time", episode_time, "s")
-        self.wind_dt = _positive("wind_dt", wind_dt, "s")
+        B = check_copies(n_copies)
+        self._episode_times(control_dt, episode_time, wind_dt)
         if wind_speed is not None:
-            wind_speed = _positive("wind_speed", wind_speed, "m/s")
+            wind_speed = positive("wind_speed", wind_speed, "m/s")
         if physics_dt is not None:
-            physics_dt = _positive("physics_dt", physics_dt, "s")
+            physics_dt = positive("physics_dt", physics_dt, "s")
         self.disturbances = _disturbances(disturbances)
         self.reward_config = config_from(reward, RotorcraftRewardConfig, "reward")
         self.termination_config = config_from(termination, RotorcraftTerminationConfig, "termination")
         self.initial_noise = config_from(initial_noise, InitialNoise, "initial_noise")
         self.craft, self.x_trim, self.u_trim = craft_trim(str(craft), wind_speed, collective, physics_dt)
         cfg = self.craft.config
-        dt = cfg.settings.dt
-        self.n_substeps = int(round(self.control_dt / dt))
-        if self.n_substeps < 1 or abs(self.n_substeps * dt - self.control_dt) > 1e-9 * self.control_dt:
-            raise ValueError(f"control_dt = {control_dt!r} s is not a whole multiple of the physics step {dt!r} s")
+        self.n_substeps = whole_multiple(self.control_dt, cfg.settings.dt, control_dt)
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
-        self.n_copies = int(n_copies)
+        self.n_copies = B
         self.parallel = self.n_copies >= 32 if parallel is None else bool(parallel)
         self._build_batch()
         self._references()
@@ -223,16 +223,10 @@ class CraftTask:
         self._kernel_pass(nsteps)
         self._clip_obs()
 
-    def observe(self) -> None:
-        """Observe every copy at its current state without stepping (after restoring states by hand)."""
-        self._nsteps[:] = 0
-        self._run(self._nsteps)
-
     def _clip_obs(self) -> None:
         """obs: raw_obs with non-finite entries replaced by the bound on their side (nan: the upper) and clipped
         to [obs_low, obs_high]."""
-        raw, lo, hi = self.raw_obs, self.obs_low, self.obs_high
-        np.clip(np.where(np.isfinite(raw), raw, np.where(raw < 0, lo, hi)), lo, hi, out=self.obs)
+        clip_observations(self.raw_obs, self.obs_low, self.obs_high, self.obs)
 
     # ------------------------------------------------------------------ episodes
     def reset(self, mask: np.ndarray, rngs) -> None:
@@ -241,27 +235,16 @@ class CraftTask:
         per copy: first the disturbances, then the noise), and observe them. Other copies are untouched."""
         b = self.batch
         idx = np.flatnonzero(mask)
-        n = self.initial_noise
-        noisy = n.lateral_velocity > 0 or n.roll_rate > 0 or n.yaw_rate > 0
-        ov, orr = B3_SIZE * CRAFT_BODY + B3_VEL, B3_SIZE * CRAFT_BODY + B3_RATE
         for i in idx:
             rng = rngs[i]
             b.set_wind(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rng))
             x = np.array(self.x_trim)
-            if noisy:
-                dvy, dp, dr = rng.normal(size=3) * np.array([n.lateral_velocity, n.roll_rate, n.yaw_rate])
-                # the body velocity of a global lateral velocity dvy
-                x[ov: ov + 3] += self._rotation_trim.T @ np.array([0.0, dvy, 0.0])
-                x[orr] += dp
-                x[orr + 2] += dr
+            add_wing_noise(x[B3_SIZE * CRAFT_BODY:], self._rotation_trim[None], self.initial_noise, rng)
             b.states[i] = x
         b.controls[idx] = self.u_trim
         b.t[idx] = 0.0
-        self.steps[idx] = 0
         self.last_action[idx] = self.trim_action
-        self._nsteps[:] = -1
-        self._nsteps[idx] = 0
-        self._run(self._nsteps)
+        self._start_copies(idx)
 
     def step(self, action: np.ndarray, mask: np.ndarray | None = None):
         """Apply normalised actions (B, 2) for one control period to the copies in ``mask`` (default all) and
@@ -278,10 +261,7 @@ class CraftTask:
         sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
         self.batch.controls[sel] = (self.mid + a * self.half)[sel]
         self.last_action[sel] = a[sel]
-        self._nsteps[:] = -1
-        self._nsteps[sel] = self.n_substeps
-        self._run(self._nsteps)
-        self.steps[sel] += 1
+        self._advance_copies(sel)
         return self._evaluate(a, n_clipped)
 
     def _failures(self) -> np.ndarray:
@@ -363,6 +343,14 @@ class CraftTask:
                     f"|roll| <= {tc.max_abs_roll_deg:g}, pitch in {list(tc.pitch_range_deg)}, "
                     f"|yaw| <= {tc.max_abs_yaw_deg:g} deg")
         return ""
+
+    def reset_info(self) -> dict:
+        """The single env's reset info beside ``t``: the reference power [W]."""
+        return {"reference_power_W": self.p_ref}
+
+    def lateral_offsets(self, obs: np.ndarray) -> np.ndarray:
+        """Lateral CG offset dy [m] (B, 1) of observations (B, 19)."""
+        return np.asarray(obs, dtype=float)[:, OBS_Y:OBS_Y + 1]
 
     def renderer(self, interactive: bool = False):
         """A scene renderer of the copies that draws the craft as its frame and rotor disks."""

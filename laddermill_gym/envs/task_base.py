@@ -1,0 +1,171 @@
+"""What every env family's task shares (the task is the family's one concern; the single env, the native vector
+env and the SB3 adapter around it are generic: ``envs/task_env.py``, ``envs/vector.py``, ``envs/sb3.py``).
+
+A task holds B copies of one system and answers the protocol those three use:
+
+* ``reset(mask, rngs)``, ``step(actions, mask=None) -> (reward, terminated, truncated, info)`` with (B,) arrays;
+* ``obs`` (B, obs_dim), ``obs_low`` / ``obs_high`` (obs_dim,), ``n_actions``, ``n_copies``, ``control_dt`` [s],
+  ``steps`` (B,), ``last_action`` (B, n_actions), ``batch`` (with ``t`` (B,) [s]);
+* ``failure_names`` (code -> name), ``failure_text(b, code)``, ``lateral_offsets(obs)`` (B, m) [m];
+* ``render_modes`` (empty: the family does not render) and ``renderer(interactive)``;
+* ``snapshot()`` / ``restore(snapshot)`` / ``observe()`` (pickling), ``reset_info()`` (the single env's reset
+  info beside ``t``), ``env_kwargs(kwargs)`` (the arguments a pickled env is rebuilt from).
+
+:class:`TaskCore` implements the parts that are the same for every family over a
+:class:`~laddermill_gym.sim.batch.BatchSimulator`; the checks of the constructor arguments are functions here.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from laddermill_gym.kernels.contract import B3_RATE, B3_SIZE, B3_VEL
+from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS
+
+__all__ = ["TaskCore", "positive", "check_copies", "substeps_per_period", "clip_observations", "add_wing_noise"]
+
+
+def positive(name: str, v, unit: str) -> float:
+    """``v`` as a float; ValueError naming ``name``, the value and the ``unit`` unless it is a finite number > 0."""
+    if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+        raise ValueError(f"{name} = {v!r}: must be a finite number > 0 {unit}")
+    return float(v)
+
+
+def check_copies(n_copies) -> int:
+    """The number of copies B as an int; ValueError unless it is a positive integer."""
+    if isinstance(n_copies, bool) or int(n_copies) != n_copies or n_copies < 1:
+        raise ValueError(f"n_copies = {n_copies!r}: must be a positive integer")
+    return int(n_copies)
+
+
+def substeps_per_period(scene_name: str, settings, control_dt: float, control_dt_given=None) -> int:
+    """Physics steps per control period of a scene's fixed-step integrator ``settings``; ValueError if the method
+    is error-controlled or ``control_dt`` [s] is not a whole multiple of its step (``control_dt_given`` is the value
+    named in that message, default ``control_dt``)."""
+    if settings.method not in FIXED_STEP_METHODS:
+        raise ValueError(f"scene {scene_name}: integrator.method = {settings.method!r}; environments step with a "
+                         f"fixed-step method, one of {FIXED_STEP_METHODS}")
+    return whole_multiple(control_dt, settings.dt, control_dt if control_dt_given is None else control_dt_given)
+
+
+def whole_multiple(control_dt: float, dt: float, shown) -> int:
+    """round(control_dt / dt); ValueError naming ``shown`` unless control_dt [s] is a whole multiple of dt [s]."""
+    n = int(round(control_dt / dt))
+    if n < 1 or abs(n * dt - control_dt) > 1e-9 * control_dt:
+        raise ValueError(f"control_dt = {shown!r} s is not a whole multiple of the physics step {dt!r} s")
+    return n
+
+
+def clip_observations(raw: np.ndarray, low: np.ndarray, high: np.ndarray, out: np.ndarray) -> None:
+    """``out`` = ``raw`` clipped to [low, high], a non-finite entry replaced by the bound on its side (nan: the
+    upper bound)."""
+    np.clip(np.where(np.isfinite(raw), raw, np.where(raw < 0, low, high)), low, high, out=out)
+
+
+def add_wing_noise(x: np.ndarray, rotations: np.ndarray, noise, rng: np.random.Generator) -> None:
+    """Add random start velocities to the first n wings of the state ``x`` in place: per wing a lateral velocity
+    (along the start's body y axis, ``rotations`` (n, 3, 3) body to world) [m/s] and roll and yaw rates [rad/s],
+    normal with the standard deviations of ``noise`` (``lateral_velocity``, ``roll_rate``, ``yaw_rate``), drawn
+    from ``rng`` as one (n, 3) sample; nothing is drawn when all three are 0."""
+    scale = np.array([noise.lateral_velocity, noise.roll_rate, noise.yaw_rate])
+    if not np.any(scale > 0):
+        return
+    n = len(rotations)
+    d = rng.normal(size=(n, 3)) * scale  # (global lateral velocity, roll rate, yaw rate) per wing
+    w = x[: B3_SIZE * n].reshape(n, B3_SIZE)
+    w[:, B3_VEL: B3_VEL + 3] += rotations[:, 1, :] * d[:, :1]  # R^T (0, dvy, 0)
+    w[:, B3_RATE] += d[:, 1]
+    w[:, B3_RATE + 2] += d[:, 2]
+
+
+class TaskCore:
+    """The shared part of the tasks over a :class:`~laddermill_gym.sim.batch.BatchSimulator` (``batch``), with the
+    step counters ``steps`` (B,), ``_nsteps`` (B,) int64 and ``last_action`` (B, n_actions) and a ``_run(nsteps)``
+    that advances copy b by nsteps[b] physics steps (0: observe only, < 0: skip) and observes."""
+
+    #: the render modes of the family's single env ("rgb_array" also for its vector env); empty: no rendering
+    render_modes: tuple[str, ...] = ("rgb_array", "human")
+    #: the name used in the envs' error messages
+    env_name: str = "the env"
+
+    # ------------------------------------------------------------------ construction
+    def _episode_times(self, control_dt, episode_time, wind_dt) -> None:
+        """control_dt, episode_time and wind_dt [s], each checked to be a finite number > 0."""
+        self.control_dt = positive("control_dt", control_dt, "s")
+        self.episode_time = positive("episode_time", episode_time, "s")
+        self.wind_dt = positive("wind_dt", wind_dt, "s")
+
+    def _wing_limits(self, scene, span: float) -> None:
+        """The reward's lateral scale [m] and the termination limits of a wing scene: lowest CG altitude [m]
+        (default half of the smallest ``span`` [m]), tension [N], alpha range and |beta| [rad]."""
+        rc, tc = self.reward_config, self.termination_config
+        self.lateral_scale = rc.lateral_scale if rc.lateral_scale is not None else 0.05 * scene.piece_length
+        self.min_altitude = tc.min_altitude if tc.min_altitude is not None else 0.5 * span
+        self.breaking_tension = tc.breaking_factor * scene.cable.breaking_load
+        self.alpha_lo, self.alpha_hi = np.radians(tc.alpha_range_deg)
+        self.beta_max = math.radians(tc.max_abs_beta_deg)
+
+    # ------------------------------------------------------------------ stepping
+    def _wing_kernel_pass(self, nsteps: np.ndarray, nominal: np.ndarray, obs: np.ndarray) -> None:
+        """Advance the copies by nsteps[b] steps with the wing step-and-observe kernel (``self._kernel``), writing
+        the wing observations relative to ``nominal`` (n, 3) [m] into ``obs`` and the read-outs into ``aux``."""
+        b = self.batch
+        b.advance(nsteps, lambda dt, ns: self._kernel(
+            b.t, b.states, b.controls, dt, ns, *b.detached, b.work, b.air, b.limits, b.tableau, b.breaks,
+            self._dx, nominal, self.below, self.ground, obs, self.aux, b.status, b.done))
+
+    def _start_copies(self, idx: np.ndarray) -> None:
+        """Zero the step counters of the copies ``idx`` and observe them without stepping (the end of a reset)."""
+        self.steps[idx] = 0
+        self._nsteps[:] = -1
+        self._nsteps[idx] = 0
+        self._run(self._nsteps)
+
+    def _advance_copies(self, sel: np.ndarray) -> None:
+        """One control period (``n_substeps`` physics steps) of the copies in the boolean mask ``sel`` (B,)."""
+        self._nsteps[:] = -1
+        self._nsteps[sel] = self.n_substeps
+        self._run(self._nsteps)
+        self.steps[sel] += 1
+
+    def observe(self) -> None:
+        """Observe every copy at its current state without stepping (after restoring states by hand)."""
+        self._nsteps[:] = 0
+        self._run(self._nsteps)
+
+    # ------------------------------------------------------------------ the envs' hooks
+    def reset_info(self) -> dict:
+        """Entries of a single env's reset info beside ``t`` (none by default)."""
+        return {}
+
+    def env_kwargs(self, kwargs: dict) -> dict:
+        """The arguments a pickled single env is rebuilt from (by default those it was made with)."""
+        return dict(kwargs)
+
+    def snapshot(self) -> dict:
+        """Copies of everything an episode in progress depends on: the batch's states, controls, times and air,
+        the step counters and last actions (the pickled env's state)."""
+        b = self.batch
+        return {"arrays": (b.states.copy(), b.controls.copy(), b.t.copy(), self.steps.copy(), self.last_action.copy()),
+                "air": tuple(None if a is None else a.copy() for a in b.air)}
+
+    def restore(self, snap: dict) -> None:
+        """Put a :meth:`snapshot` back (the caller observes afterwards)."""
+        b = self.batch
+        b.states[:], b.controls[:], b.t[:], self.steps[:], self.last_action[:] = snap["arrays"]
+        for mine, saved in zip(b.air, snap["air"], strict=True):
+            if mine is not None:
+                mine[:] = saved
+
+    def _snapshot_simulator(self, make, b: int, **reset_kwargs):
+        """``make(assembly, state, settings, controls)`` at copy ``b``'s state, time [s], controls and air: a
+        single simulator for read-outs (stepping it does not step the copy)."""
+        bt = self.batch
+        sim = make(bt.assembly, bt.states[b], bt.settings, bt.controls[b])
+        air = {f: a[b].copy() for f, a in zip(bt.air._fields, bt.air, strict=True) if a is not None}
+        sim.model = sim.model._replace(**air)
+        sim.reset(state=bt.states[b], t=float(bt.t[b]), controls=bt.controls[b], **reset_kwargs)
+        return sim
