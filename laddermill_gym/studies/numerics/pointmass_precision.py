@@ -29,16 +29,7 @@ from laddermill_gym.kernels.contract import N3_SIZE
 from laddermill_gym.kernels.pointmass.explicit import accelerations
 from laddermill_gym.sim.breakpoints import modulation_kinks
 from laddermill_gym.sim.pointmass import PointMassError, PointMassSimulator, explicit_stable_dt
-from laddermill_gym.studies.numerics.precision import (
-    FORCINGS,
-    explicit_step_counts,
-    forcing_wind,
-    measure,
-    piecewise_reference,
-    run_forcings,
-    scaled_difference,
-    timed,
-)
+from laddermill_gym.studies.numerics import precision
 
 #: the implicit method runs at the sample period divided by these
 IMPLICIT_DIVISORS = (1, 2, 4, 5, 10, 20, 40)
@@ -80,7 +71,7 @@ def reference(sim: PointMassSimulator, times: np.ndarray, method: str, tol: floa
     """States at ``times`` from scipy's ``method`` at rtol = atol = ``tol``, piece by piece between the kinks of the
     wind modulation (inside a piece the right-hand side sees times just below its end, so its own segment)."""
     kinks = modulation_kinks(sim.M.tmod, sim.M.ms, sim.M.md)
-    return piecewise_reference(_rhs(sim), sim.x.copy(), times, kinks, method, tol)
+    return precision.piecewise_reference(_rhs(sim), sim.x.copy(), times, kinks, method, tol)
 
 
 def _trajectory(sim: PointMassSimulator, times: np.ndarray):
@@ -95,7 +86,7 @@ def _trajectory(sim: PointMassSimulator, times: np.ndarray):
 def run_forcing(scene, forcing: str, duration: float, n_samples: int, repeats: int, dt_stable: float, bar=None):
     """Both methods on one forcing: (rows, reference summary)."""
     x0, u = scene.initial_state()
-    wind = forcing_wind(scene.string.wind, forcing, duration)
+    wind = precision.forcing_wind(scene.string.wind, forcing, duration)
     string = scene.string if wind is None else dataclasses.replace(scene.string, wind=wind)
     times = np.linspace(0.0, duration, n_samples + 1)
 
@@ -103,23 +94,23 @@ def run_forcing(scene, forcing: str, duration: float, n_samples: int, repeats: i
         return PointMassSimulator(string, x0, u, dt, method, threads=1)
 
     refs = [reference(make("explicit", 1.0), times, m, tol) for m, tol in REFERENCES]
-    agree = float(np.max(np.abs(scaled_difference(refs[1], refs[0]))))
+    agree = float(np.max(np.abs(precision.scaled_difference(refs[1], refs[0]))))
     xr = refs[0]
     pr = xr.reshape(xr.shape[0], -1, N3_SIZE)[:, :, :3]
     ref = {f"scipy_{m.lower()}_rtol": tol for m, tol in REFERENCES}
     ref["reference_agreement_state"] = agree
     period = duration / n_samples
-    cases = [("explicit", period / m) for m in explicit_step_counts(period, dt_stable, N_EXPLICIT)]
+    cases = [("explicit", period / m) for m in precision.explicit_step_counts(period, dt_stable, N_EXPLICIT)]
     cases += [("implicit", period / k) for k in IMPLICIT_DIVISORS]
     rows = []
     for method, dt in cases:
-        once = timed(lambda: make(method, dt), lambda sim: _trajectory(sim, times))
+        once = precision.timed(lambda: make(method, dt), lambda sim: _trajectory(sim, times))
         row = {"forcing": forcing, "method": method, "dt_s": dt, "tol": math.nan}
-        rows.append(measure(row, once, xr, pr, duration, repeats, PointMassError, bar))
+        rows.append(precision.measure(row, once, xr, pr, duration, repeats, PointMassError, bar))
     return rows, ref
 
 
-def run_scene(name: str, forcings=FORCINGS, duration: float = 5.0, n_samples: int = 20, repeats: int = 3,
+def run_scene(name: str, forcings=precision.FORCINGS, duration: float = 5.0, n_samples: int = 20, repeats: int = 3,
               element_length: float = 25.0, progress: bool = True) -> dict:
     """The study on a point-mass scene, in the result format of ``work_precision.run_scene`` (baseline
     ``explicit``; its stable step and the limiting eigenvalue of the undamped chain, 2 c / l0 [1/s])."""
@@ -135,5 +126,5 @@ def run_scene(name: str, forcings=FORCINGS, duration: float = 5.0, n_samples: in
            "repeats": repeats, "baseline": "explicit", "dt_stable_s": dt_stable,
            "limiting_eigenvalue": [0.0, 2.0 * math.sqrt(c.EA / c.mass_per_length) / scene.string.element_length],
            "references": {}, "rows": []}
-    return run_forcings(out, forcings, f"work-precision {scene.name}", progress,
-                        lambda f, bar: run_forcing(scene, f, duration, n_samples, repeats, dt_stable, bar))
+    return precision.run_forcings(out, forcings, f"work-precision {scene.name}", progress,
+                                  lambda f, bar: run_forcing(scene, f, duration, n_samples, repeats, dt_stable, bar))
