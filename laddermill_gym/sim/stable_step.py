@@ -17,7 +17,7 @@ bound |h lambda| <= the method's imaginary limit.
 ``check_step(sim)`` compares the simulator's dt with the estimate and warns (or raises) naming both: the
 detection of a run past its stable step (``ladder_chain`` at 0.025 s oscillates without any error). A scene's
 ``simulator()`` runs it once per scene, step and initial state (``ladder/scene.py``); ``laddermill simulate`` too.
-The command ``laddermill stable-step SCENE`` is in ``studies/stable_step.py``.
+The command ``laddermill stable-step SCENE`` is in ``studies/numerics/stable_step.py``.
 """
 
 from __future__ import annotations
