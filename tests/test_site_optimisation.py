@@ -188,3 +188,32 @@ def test_operate_picks_the_best_reeling_factor():
         assert P[i] == pytest.approx(-best.fun, rel=1e-6)
         assert f[i] == pytest.approx(best.x, abs=5e-4)
         assert cl[i] == pytest.approx(1.2, abs=1e-6)
+
+
+def _sheared_profiles(seed=3):
+    """28 random days, power-law profiles (alpha 0.2) sampled at 10-600 m: the site command test's wind."""
+    rng = np.random.default_rng(seed)
+    hs = np.array([10.0, 100.0, 300.0, 600.0])
+    v = rng.uniform(5.0, 14.0, 28)
+    return SiteWind(hs, v[:, None] * (hs[None, :] / 100.0) ** 0.2, np.full(28, 1.0 / 28),
+                    tuple(str(i) for i in range(28)))
+
+
+@pytest.mark.parametrize("case", [TABLE1, TABLE2], ids=["table1", "table2"])
+def test_optimum_is_feasible_whatever_the_rounding_of_the_starts(monkeypatch, case):
+    """Issue 34 item 18: on this wind SLSQP ended design 2 infeasible (S at its 1 m^2 bound) for some starts and
+    not for others one rounding away. The optimum must be feasible and the same whatever the last bits of the
+    starting points: a start scaled by 1 + 1e-14 ... 1e-7 gives the same mean power per cost to 1e-4."""
+    from laddermill_gym.quasisteady import site_optimise as so
+
+    wind = _sheared_profiles()
+    orig = so._starts
+    ratios = []
+    for eps in (0.0, 1e-14, 1e-10, 1e-7):
+        monkeypatch.setattr(so, "_starts", lambda *a, eps=eps, **k: [
+            p * (1.0 + eps * np.sin(np.arange(p.size) + 1.0)) for p in orig(*a, **k)])
+        r = so.optimise(case, wind)
+        assert r.feasible and r.solution.mean_power >= case.power_target * (1 - 1e-6)
+        assert r.design.length >= case.params.reel_length * case.params.min_length_ratio * (1 - 1e-6)
+        ratios.append(r.solution.ratio)
+    assert max(ratios) / min(ratios) - 1.0 < 1e-4, ratios

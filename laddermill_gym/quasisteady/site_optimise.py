@@ -2,7 +2,9 @@
 of the design that maximises mean power per cost over a site's wind states, each state's C_L solved in closed form
 (``site_problem``). The outer problem has four variables; SLSQP with finite-difference gradients from a few
 starting points (the greedy inner solution is piecewise smooth in the design), constraints eq. 17 (inside the
-inner problem: no state above F_max), eq. 18 (L / Delta L >= gamma) and eq. 19 (mean power = or >= P_d)."""
+inner problem: no state above F_max), eq. 18 (L / Delta L >= gamma) and eq. 19 (mean power = or >= P_d). The
+result is the best feasible design met in any evaluation (starts included), not SLSQP's last iterate: on the
+piecewise-smooth objective SLSQP may stop at an infeasible point one rounding away from a feasible optimum."""
 
 from __future__ import annotations
 
@@ -71,11 +73,23 @@ def optimise(case: SiteCase, wind: SiteWind, fixed: dict | None = None, starts: 
             x[k] = float(np.clip(z[j] * SCALE[k], *bounds[k]))
         return Design(*x)
 
+    incumbent = [None]                       # (ratio, design, solution): the best feasible point evaluated
+
+    def feasible(des, sol):
+        if sol.mean_power < case.power_target * (1.0 - 1e-9):
+            return False
+        if case.power_mode == "equal" and abs(sol.mean_power / case.power_target - 1.0) >= 1e-6:
+            return False
+        return des.length >= par.reel_length * par.min_length_ratio * (1.0 - 1e-9)
+
     def solve(z):
         count[0] += 1
         des = design_of(z)
         w, p = _usable(wind, des.h)
-        return des, solve_states(case, des, w, p)
+        sol = solve_states(case, des, w, p)
+        if feasible(des, sol) and (incumbent[0] is None or sol.ratio > incumbent[0][0]):
+            incumbent[0] = (sol.ratio, des, sol)
+        return des, sol
 
     def objective(z):
         return -np.log(max(solve(z)[1].ratio, 1e-300))
@@ -88,21 +102,22 @@ def optimise(case: SiteCase, wind: SiteWind, fixed: dict | None = None, starts: 
         cons.append({"type": "ineq", "fun": lambda z: design_of(z).length / (par.reel_length *
                                                                              par.min_length_ratio) - 1.0})
     zb = [(bounds[k][0] / SCALE[k], bounds[k][1] / SCALE[k]) for k in free]
-    best = None
+
     def max_power(*x):
         des = Design(*[fixed.get(nm, v) for nm, v in zip(NAMES, x, strict=True)])
         w, p = _usable(wind, des.h)
         return solve_states(case, des, w, p).max_mean_power
 
     for z0 in _starts(case, bounds, free, starts, max_power):
-        res = minimize(objective, z0, method="SLSQP", bounds=zb, constraints=cons,
-                       options={"maxiter": 200, "ftol": 1e-10})
-        des, sol = solve(res.x)
-        ok = all(c["fun"](res.x) >= -1e-6 for c in cons) and (
-            case.power_mode == "at_least" or abs(sol.mean_power / case.power_target - 1.0) < 1e-6)
-        key = (ok, sol.ratio)
-        if best is None or key > best[0]:
-            best = (key, des, sol)
+        solve(z0)                            # a feasible start is a candidate whatever SLSQP makes of it
+        minimize(objective, z0, method="SLSQP", bounds=zb, constraints=cons,
+                 options={"maxiter": 200, "ftol": 1e-10})
+    if incumbent[0] is not None:
+        _, des, sol = incumbent[0]
+        best = ((True, sol.ratio), des, sol)
+    else:                                    # nothing feasible met: report the last start's design, infeasible
+        des, sol = solve(z0)
+        best = ((False, sol.ratio), des, sol)
     (ok, _), des, sol = best
     return SiteResult(case, des, sol, bool(ok), time.perf_counter() - t0, count[0], int(np.sum(wind.weight > 0)))
 
