@@ -293,7 +293,7 @@ def linearize(sim: Simulator, x0: np.ndarray, u0: np.ndarray, t: float = 0.0, ep
     sys = minimal_system(sim, tail=x0[asm.body_state_size:])
     z0 = minimal_from_full(asm, x0)
     u0 = np.asarray(u0, dtype=float).reshape(-1)
-    lin = control.linearize(sys, z0, u0, t=t, eps=eps)
+    lin = control.linearize(sys, z0, u0, t=t, eps=eps, copy_names=True)  # names kept (python-control drops them)
     residual = float(np.max(np.abs(sys.updfcn(t, z0, u0, {})))) if z0.size else 0.0
     return Linearization(A=np.asarray(lin.A), B=np.asarray(lin.B), z0=z0, u0=u0,
                          x0=np.asarray(x0, dtype=float).copy(), state_names=tuple(state_labels(asm)),
