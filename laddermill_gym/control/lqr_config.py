@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from laddermill_gym.model.configio import CONFIG_DIR, read_yaml
+from laddermill_gym.model.configio import CONFIG_DIR, config_path, find_config, read_yaml, shipped_names
 
 #: Lateral state of one wing (deviation from trim) and its units: m, m/s, rad, rad, rad/s, rad/s.
 LATERAL_STATE_NAMES: tuple[str, ...] = ("y", "vy", "phi", "psi", "p", "r")
@@ -21,7 +21,6 @@ DEFAULT_CHAIN_CONFIG = CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml"
 
 _MAX_STATE_KEYS = (("y", 1.0), ("vy", 1.0), ("phi_deg", math.pi / 180), ("psi_deg", math.pi / 180),
                    ("p_deg_s", math.pi / 180), ("r_deg_s", math.pi / 180))
-
 
 
 # ------------------------------------------------------------------------------------ configuration
@@ -54,17 +53,33 @@ class LQRConfig:
 STRUCTURES: tuple[str, ...] = ("decentralised", "centralised")
 
 
+#: Upper bounds of the Bryson's-rule limits (largest acceptable deviations) and why.
+_MAX_STATE_BOUNDS = {"y": (1e4, "m: beyond the cable's reach"), "vy": (150.0, "m/s: the fastest wind (bounds.py)"),
+                     "phi_deg": (180.0, "deg: an angle"), "psi_deg": (180.0, "deg: an angle"),
+                     "p_deg_s": (36000.0, "deg/s: 100 turns per second"),
+                     "r_deg_s": (36000.0, "deg/s: 100 turns per second")}
+
+
 def load_lqr_config(path: str | Path = DEFAULT_CONFIG) -> LQRConfig:
-    """Read an LQR config YAML (strict: unknown keys and non-positive limits raise ConfigError)."""
+    """Read an LQR config YAML (``path``: a file or the bare name of a shipped one, ``lqr_tethered_wing``; strict:
+    unknown keys, a missing scene file and non-positive or out-of-range limits raise ConfigError naming the field)."""
+    path = find_config("agents", path, "config")
     s = read_yaml(path)
     scene = s.text("scene")
-    epp = s.number("elements_per_piece", integer=True, positive=True)
-    period = s.number("control_period", positive=True)
+    if not config_path("scenes", scene, path.parent).is_file():
+        raise s.error("scene", scene, f"no such scene file (a bare name is one of the shipped scenes: "
+                                      f"{', '.join(shipped_names('scenes'))})")
+    epp = s.number("elements_per_piece", integer=True, positive=True, high=1000,
+                   why="the design linearises the whole model densely")
+    period = s.number("control_period", positive=True, high=10.0,
+                      why="s: the wings' lateral mode has a period of about 15 s")
     ms = s.section("max_state")
-    max_state = np.array([ms.number(k, positive=True) * scale for k, scale in _MAX_STATE_KEYS])
+    max_state = np.array([ms.number(k, positive=True, high=_MAX_STATE_BOUNDS[k][0], why=_MAX_STATE_BOUNDS[k][1])
+                          * scale for k, scale in _MAX_STATE_KEYS])
     ms.done()
     mi = s.section("max_input_deg")
-    max_input = np.radians([mi.number(k, positive=True) for k in LATERAL_INPUT_NAMES])
+    max_input = np.radians([mi.number(k, positive=True, high=90.0, why="deg: a control-surface deflection")
+                            for k in LATERAL_INPUT_NAMES])
     mi.done()
     structure = s.text("structure", "decentralised", choices=STRUCTURES)
     s.done()

@@ -5,6 +5,7 @@ file, the field and the value) into a frozen :class:`RLConfig`, and turned into 
 from __future__ import annotations
 
 import inspect
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -13,7 +14,7 @@ from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_dict
 from laddermill_gym.envs import ENV_IDS, env_arguments, task_class
 from laddermill_gym.envs.rotorcraft.task import CraftTask
 from laddermill_gym.envs.task import WingTask
-from laddermill_gym.model.configio import ConfigError, read_yaml
+from laddermill_gym.model.configio import ConfigError, Section, find_config, read_yaml
 
 ALGORITHMS: tuple[str, ...] = ("PPO", "SAC")
 #: WingTask arguments a config may override under ``env_kwargs`` (disturbances have their own section)
@@ -126,12 +127,216 @@ def _algorithm_class(name: str):
     return getattr(sb3, name)
 
 
+_RATE = dict(positive=True, high=1.0)
+#: Bounds of the numeric Stable-Baselines3 arguments a config may set (others pass to SB3 unchecked): keyword
+#: arguments of :meth:`Section.number`, ``optional``: None allowed, ``auto``: SB3's "auto" / "auto_X" text allowed.
+HYPERPARAMETERS: dict[str, dict] = {
+    "learning_rate": dict(_RATE, why="the optimiser's step (SB3's default 3e-4)"),
+    "gamma": dict(_RATE, why="a discount factor"),
+    "gae_lambda": dict(nonneg=True, high=1.0, why="GAE's lambda"),
+    "clip_range": dict(_RATE, why="PPO's ratio clip (SB3's default 0.2)"),
+    "clip_range_vf": dict(_RATE, optional=True, why="PPO's value clip"),
+    "target_kl": dict(positive=True, optional=True),
+    "tau": dict(_RATE, why="the target networks' soft-update fraction"),
+    "ent_coef": dict(nonneg=True, high=1.0, auto=True, why="the entropy weight (SB3's PPO default 0, SAC 'auto')"),
+    "target_entropy": dict(auto=True),
+    "vf_coef": dict(nonneg=True, high=10.0, why="the value loss weight (SB3's default 0.5)"),
+    "max_grad_norm": dict(positive=True),
+    "n_steps": dict(integer=True, positive=True, high=100_000, why="steps per copy per rollout"),
+    "batch_size": dict(integer=True, positive=True),
+    "n_epochs": dict(integer=True, positive=True, high=1000, why="passes over each rollout (SB3's default 10)"),
+    "buffer_size": dict(integer=True, positive=True, high=10**8, why="transitions held in memory (SB3's default "
+                                                                    "1e6)"),
+    "learning_starts": dict(integer=True, nonneg=True),
+    "train_freq": dict(integer=True, positive=True, high=10_000, why="env steps per copy between updates (SB3: 1)"),
+    "gradient_steps": dict(integer=True, low=-1.0, high=10_000, why="per update; -1: as many as env steps"),
+    "target_update_interval": dict(integer=True, positive=True),
+    "sde_sample_freq": dict(integer=True, low=-1.0, why="-1: only at the start of a rollout"),
+    "stats_window_size": dict(integer=True, positive=True),
+    "normalize_advantage": "flag", "use_sde": "flag", "use_sde_at_warmup": "flag", "optimize_memory_usage": "flag",
+}
+
+
+def _read_hyperparameters(s: Section, algo: str, n_envs: int, total: int) -> dict:
+    """The ``hyperparameters`` mapping, each name an argument of the SB3 algorithm and each number of
+    :data:`HYPERPARAMETERS` within its bounds; a PPO minibatch within a rollout, a SAC one within the buffer,
+    ``learning_starts`` within ``total_timesteps``."""
+    raw = s.raw("hyperparameters", {}) or {}
+    if not isinstance(raw, dict):
+        raise s.error("hyperparameters", raw, "must be a mapping")
+    hp = Section(raw, s.file, "hyperparameters")
+    known = set(inspect.signature(_algorithm_class(algo)).parameters) - {"policy", "env", "seed", "policy_kwargs",
+                                                                         "tensorboard_log", "verbose", "device"}
+    out = {}
+    for key, value in raw.items():
+        rule = HYPERPARAMETERS.get(key)
+        if key not in known:
+            raise hp.error(key, value, f"not an argument of {algo} (known: {sorted(known)})")
+        if rule == "flag":
+            out[key] = hp.flag(key)
+        elif rule is None or (value is None and rule.get("optional")) or (
+                rule.get("auto") and isinstance(value, str) and value.split("_")[0] == "auto"):
+            out[key] = hp.raw(key)
+        else:
+            out[key] = hp.number(key, **{k: v for k, v in rule.items() if k not in ("optional", "auto")})
+    limits = (("batch_size", out.get("n_steps", 2048) * n_envs, "a rollout (n_steps x n_envs)") if algo == "PPO"
+              else ("batch_size", out.get("buffer_size", 10**6), "the replay buffer (buffer_size)"),
+              ("learning_starts", total, "total_timesteps"), ("train_freq", total, "total_timesteps"))
+    for key, most, what in limits:
+        if key in out and out[key] > most:
+            raise hp.error(key, out[key], f"must be at most {most} ({what})")
+    return out
+
+
+#: policy_kwargs a config may set (SB3 names) and their checks; a Python class (activation_fn, ...) cannot be given
+POLICY_NUMBERS: dict[str, dict] = {
+    "log_std_init": dict(low=-20.0, high=2.0, why="the log of the initial action noise std (SB3's default 0)"),
+    "n_critics": dict(integer=True, positive=True, high=10),
+    "clip_mean": dict(positive=True),
+}
+
+
+def _read_policy_kwargs(s: Section, algo: str) -> dict:
+    """The ``policy_kwargs`` mapping: names of the SB3 policy's arguments, ``net_arch`` a list (or a mapping of
+    lists) of layer sizes 1..4096, the numbers of :data:`POLICY_NUMBERS`, flags true or false."""
+    raw = s.raw("policy_kwargs", {}) or {}
+    if not isinstance(raw, dict):
+        raise s.error("policy_kwargs", raw, "must be a mapping")
+    pk = Section(raw, s.file, "policy_kwargs")
+    if algo == "SAC":
+        from stable_baselines3.sac.policies import SACPolicy as policy
+    else:
+        from stable_baselines3.common.policies import ActorCriticPolicy as policy
+    known = set(inspect.signature(policy).parameters) - {"observation_space", "action_space", "lr_schedule"}
+    for key, value in raw.items():
+        if key not in known:
+            raise pk.error(key, value, f"not an argument of {policy.__name__} (known: {sorted(known)})")
+        if key == "net_arch":
+            layers = value if isinstance(value, dict) else {"": value}
+            for part, sizes in layers.items():
+                if not (isinstance(sizes, list) and sizes and all(
+                        isinstance(n, int) and not isinstance(n, bool) and 1 <= n <= 4096 for n in sizes)):
+                    raise pk.error(f"net_arch{'.' + part if part else ''}", sizes,
+                                   "must be a list of layer sizes, whole numbers 1..4096")
+        elif key in POLICY_NUMBERS:
+            pk.number(key, **POLICY_NUMBERS[key])
+        elif key.endswith("_class") or key == "activation_fn":
+            raise pk.error(key, value, "a Python class: set it in Python (stable_baselines3), not in a config")
+        elif isinstance(inspect.signature(policy).parameters[key].default, bool):
+            pk.flag(key)
+    return dict(raw)
+
+
+#: Upper bounds of the env arguments a config sets, beyond the envs' own checks (finite, > 0): (bound, why).
+ENV_KWARG_BOUNDS: dict[str, tuple[float, str]] = {
+    "episode_time": (86400.0, "s: a day of flight per episode"),
+    "control_dt": (10.0, "s: a control period longer than the wings' fastest motion"),
+    "physics_dt": (1.0, "s: as a scene's integrator.dt"),
+    "wind_dt": (60.0, "s: the sampling of the disturbances' time histories"),
+    "settle_time": (3600.0, "s: an hour of settling per episode"),
+    "n_bands": (50.0, "bands per leg: the mill's 101 wings make 50 per leg"),
+}
+#: Upper bounds of the fields of the settings mappings (``initial_noise``: standard deviations): (bound, why).
+SETTINGS_BOUNDS: dict[str, tuple[float, str]] = {
+    "lateral_velocity": (150.0, "m/s: the fastest wind (ladder/bounds.py)"),
+    "roll_rate": (100.0, "rad/s: the scenes' exploding-state guard max_rate"),
+    "yaw_rate": (100.0, "rad/s: the scenes' exploding-state guard max_rate"),
+    "pitch_rate": (100.0, "rad/s: the scenes' exploding-state guard max_rate"),
+}
+#: The settings dataclasses of env arguments given as mappings, by argument: (module of the task, class name).
+_SETTINGS = {"reward": "reward_class", "termination": "termination_class", "initial_noise": "noise_class",
+             "settle": "SettleConfig", "drum": "DrumConfig", "speed": "SpeedCommandConfig"}
+
+
+def _check_env_kwargs(s: Section, env_id: str, kwargs: dict) -> None:
+    """ConfigError naming ``env_kwargs.NAME`` (and its value) for an argument the task would refuse or one beyond
+    :data:`ENV_KWARG_BOUNDS`: its type against the task's default (flag, number, text), its settings mapping
+    (``reward``, ``termination``, ...) through the task's own dataclass, and the named choices and files; checked
+    without building the environment."""
+    import sys
+
+    from laddermill_gym.envs.actions import ACTION_MODES, GROUPINGS
+    from laddermill_gym.envs.laddermill.actions import SLOT_GROUPINGS
+    from laddermill_gym.envs.task_settings import RewardConfig, TerminationConfig, config_from
+
+    task = task_class(env_id)
+    params = inspect.signature(task).parameters
+    ek = Section(kwargs, s.file, "env_kwargs")
+    choices = {"action_mode": ACTION_MODES, "groups": SLOT_GROUPINGS if env_family(env_id) == "mill" else GROUPINGS}
+    files = {"scene": "scenes", "craft": "rotorcraft", "config": "pumping"}
+    for key, value in kwargs.items():
+        default = params[key].default if key in params else None
+        if key in _SETTINGS and (isinstance(value, dict) or value is None):
+            name = _SETTINGS[key]
+            cls = getattr(task, name, None) if name.endswith("_class") else getattr(sys.modules[task.__module__],
+                                                                                    name, None)
+            cls = cls or {"reward": RewardConfig, "termination": TerminationConfig}.get(key)
+            try:
+                if cls is not None:
+                    config_from(value, cls, f"env_kwargs.{key}")
+            except (TypeError, ValueError) as err:
+                raise ConfigError(f"{s.file}: field 'env_kwargs.{key}' = {value!r}: {err}") from None
+            sub = Section(value or {}, s.file, f"env_kwargs.{key}")
+            for name in set(sub.data) & set(SETTINGS_BOUNDS):
+                sub.number(name, nonneg=True, high=SETTINGS_BOUNDS[name][0], why=SETTINGS_BOUNDS[name][1])
+        elif isinstance(default, bool):
+            ek.flag(key)
+        elif isinstance(default, (int, float)) or key in ENV_KWARG_BOUNDS:
+            if value is not None or default is not None:
+                high, why = ENV_KWARG_BOUNDS.get(key, (None, ""))
+                ek.number(key, integer=isinstance(default, int), positive=bool(default) or key in ENV_KWARG_BOUNDS,
+                          nonneg=True, high=high, why=why)
+        elif key in files and value is not None:
+            find_config(files[key], ek.text(key), f"{s.file}: field 'env_kwargs.{key}'")
+        elif key in choices and not isinstance(value, list):
+            ek.text(key, choices=choices[key])
+
+
+#: Disturbance parameters a config may set beyond the disturbances' own checks: (bound, why).
+DISTURBANCE_BOUNDS: dict[str, tuple[float, str]] = {
+    "speed_std": (1.0, "a standard deviation of the speed factor of the whole mean wind"),
+    "direction_std": (math.pi, "rad: half a turn"),
+    "correlation_time": (86400.0, "s: a day"),
+}
+
+
+def _check_disturbances(s: Section) -> list:
+    """The ``disturbances`` list, each entry read by ``atmosphere.disturbance_spec`` (errors naming the entry, the
+    field and the value), its flags true or false and the numbers of :data:`DISTURBANCE_BOUNDS` within them."""
+    import dataclasses
+
+    disturbances = s.raw("disturbances", []) or []
+    if not isinstance(disturbances, list):
+        raise s.error("disturbances", disturbances, "must be a list of mappings with a 'type'")
+    for i, d in enumerate(disturbances):
+        if not isinstance(d, dict):
+            raise s.error(f"disturbances[{i}]", d, "must be a mapping with a 'type'")
+        entry = Section(d, s.file, f"disturbances[{i}]")
+        for key, value in d.items():
+            if isinstance(value, list):
+                entry.vector(key)  # a range [low, high]: numbers
+        try:
+            dist = disturbance_from_dict(d, f"disturbances[{i}]")
+        except ValueError as err:
+            raise ConfigError(f"{s.file}: {err}") from None
+        for f in dataclasses.fields(dist):
+            if f.name in d and isinstance(f.default, bool):
+                entry.flag(f.name)
+            elif f.name in d and f.name in DISTURBANCE_BOUNDS:
+                high, why = DISTURBANCE_BOUNDS[f.name]
+                entry.number(f.name, nonneg=True, high=high, why=why)
+    return list(disturbances)
+
+
 def load_rl_config(path: str | Path) -> RLConfig:
-    """Read and validate a training config (needs the ``rl`` extra for the hyperparameter check)."""
+    """Read and validate a training config (``path``: a file, or the bare name of a shipped one,
+    ``ppo_tethered_wing``; needs the ``rl`` extra for the hyperparameter check)."""
+    path = find_config("agents", path, "config")
     s = read_yaml(path)
     algo = s.text("algorithm", choices=ALGORITHMS)
     env_id = s.text("env", choices=tuple(ENV_IDS))
-    n_envs = s.number("n_envs", integer=True, positive=True)
+    n_envs = s.number("n_envs", integer=True, positive=True, high=4096,
+                      why="copies of one batched kernel; the shipped configs use 4 to 32")
     env_kwargs = s.raw("env_kwargs", {}) or {}
     if not isinstance(env_kwargs, dict):
         raise s.error("env_kwargs", env_kwargs, "must be a mapping")
@@ -140,36 +345,22 @@ def load_rl_config(path: str | Path) -> RLConfig:
         if key not in known:
             raise s.error(f"env_kwargs.{key}", env_kwargs[key],
                           f"unknown argument of {env_id} (known: {', '.join(known)})")
-    disturbances = s.raw("disturbances", []) or []
-    if not isinstance(disturbances, list):
-        raise s.error("disturbances", disturbances, "must be a list of mappings with a 'type'")
-    for i, d in enumerate(disturbances):
-        try:
-            disturbance_from_dict(d, f"disturbances[{i}]")
-        except ValueError as err:
-            raise ConfigError(f"{path}: {err}") from None
+    _check_env_kwargs(s, env_id, env_kwargs)
+    disturbances = _check_disturbances(s)
     cfg = dict(
-        algorithm=algo, env_id=env_id, n_envs=n_envs, env_kwargs=dict(env_kwargs), disturbances=list(disturbances),
+        algorithm=algo, env_id=env_id, n_envs=n_envs, env_kwargs=dict(env_kwargs), disturbances=disturbances,
         normalize_observations=s.flag("normalize_observations", True),
-        seed=s.number("seed", 0, integer=True, nonneg=True),
+        seed=s.number("seed", 0, integer=True, nonneg=True, high=2 ** 32 - 1, why="numpy's seed range"),
         total_timesteps=s.number("total_timesteps", integer=True, positive=True),
         time_limit_minutes=s.number("time_limit_minutes", positive=True),
         checkpoint_every=s.number("checkpoint_every", integer=True, positive=True),
     )
     ev = s.section("eval")
     cfg["eval_every"] = ev.number("every", integer=True, positive=True)
-    cfg["eval_episodes"] = ev.number("episodes", integer=True, positive=True)
+    cfg["eval_episodes"] = ev.number("episodes", integer=True, positive=True, high=1000,
+                                     why="each evaluation runs them all")
     ev.done()
-    hyper = s.raw("hyperparameters", {}) or {}
-    pk = s.raw("policy_kwargs", {}) or {}
-    for key, value in (("hyperparameters", hyper), ("policy_kwargs", pk)):
-        if not isinstance(value, dict):
-            raise s.error(key, value, "must be a mapping")
+    hyper = _read_hyperparameters(s, algo, n_envs, cfg["total_timesteps"])
+    pk = _read_policy_kwargs(s, algo)
     s.done()
-    known = set(inspect.signature(_algorithm_class(algo)).parameters) - {"policy", "env", "seed", "policy_kwargs",
-                                                                         "tensorboard_log", "verbose", "device"}
-    for key, value in hyper.items():
-        if key not in known:
-            raise ConfigError(f"{path}: field 'hyperparameters.{key}' = {value!r}: not an argument of {algo} "
-                              f"(known: {sorted(known)})")
-    return RLConfig(file=Path(path), hyperparameters=dict(hyper), policy_kwargs=dict(pk), **cfg)
+    return RLConfig(file=Path(path), hyperparameters=hyper, policy_kwargs=pk, **cfg)

@@ -106,9 +106,9 @@ def rest_layout(scene, elevators):
     for _ in range(30):
         ends = np.vstack([A, pts] + ([] if scene.end is None else [tail[1]]))
         alphas, F = _rest_state(scene, pts, el, ends)
-        if scene.end is None:
+        if scene.end is None:  # n pieces, one below each wing: the march's piece above the last wing is empty
             T0 = F.sum(axis=0)
-            new, _ = _march(A, Ls, EA, T0, F, w)
+            new, _ = _march(A, np.append(Ls, 0.0), EA, T0, F, w)
         else:
             B = np.asarray(scene.ground_points[scene.end], float)
             # unknowns: the tension of the piece after the apex (wing m - 1) in polar form (log magnitude

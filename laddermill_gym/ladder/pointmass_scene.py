@@ -14,8 +14,17 @@ import numpy as np
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE
 from laddermill_gym.kernels.pointmass.forces import kite_force
 from laddermill_gym.kernels.wind import density, wind_point
-from laddermill_gym.ladder.scene_files import load_cable, load_wing_type, open_scene, read_station, read_wind
-from laddermill_gym.model.configio import ConfigError, Section, config_path
+from laddermill_gym.ladder.bounds import BOUNDS
+from laddermill_gym.ladder.scene_files import (
+    check_cable_length,
+    open_scene,
+    read_ground_points,
+    read_parts,
+    read_station,
+    read_wind,
+)
+from laddermill_gym.model.configio import ConfigError, Section
+from laddermill_gym.model.memory import over_limit, pointmass_bytes
 from laddermill_gym.model.pointmass import PointMassKite, PointMassString, attitude_controls, pack
 from laddermill_gym.model.pointmass_mill import PointMassStation, mill_layout, station_from_rigid
 from laddermill_gym.sim.breakpoints import INTEGRATOR_METHODS
@@ -84,13 +93,10 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
     name, desc = s.text("name"), s.text("description", "")
     if s.number("dimension", 3, integer=True) != 3:
         raise s.error("dimension", s.data.get("dimension"), "the point-mass fidelity is 3D only")
-    gravity = s.number("gravity", positive=True)
+    gravity = s.number("gravity", positive=True, **BOUNDS["gravity"])
     wind = read_wind(s.section("wind"))
-    wing = load_wing_type(config_path("wings", s.text("wing_type"), path.parent))
-    cable = load_cable(config_path("cables", s.text("cable"), path.parent))
-    gp = s.section("ground_points")
-    points = {k: gp.vector(k, 3) for k in list(gp.data)}
-    gp.done()
+    wing, cable = read_parts(s, path)
+    points = read_ground_points(s)
     ch = s.section("chain")
     start, end = ch.text("start"), ch.text("end", None)
     nk = ch.number("n_wings", integer=True, positive=True)
@@ -113,9 +119,9 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
         fid.raw(key, None)  # the rigid fidelity's switches: the string needs no sag correction, drag always on
     fid.done()
     ini = s.section("initial")
-    pitch0 = ini.number("alpha_deg", 0.0)  # a rigid scene's trim alpha: the kite's pitch at rest in level wind
-    att = [math.radians(ini.number("roll_deg", 0.0)), math.radians(ini.number("pitch_deg", pitch0)),
-           math.radians(ini.number("yaw_deg", 0.0))]
+    pitch0 = ini.number("alpha_deg", 0.0, **BOUNDS["initial.alpha_deg"])  # a rigid scene's trim alpha: the pitch
+    att = [math.radians(ini.number(k, d, **BOUNDS["attitude_deg"]))
+           for k, d in (("roll_deg", 0.0), ("pitch_deg", pitch0), ("yaw_deg", 0.0))]
     for key in ("method", "elevation_deg", "elevator_up_deg", "elevator_down_deg"):
         ini.raw(key, None)  # the rigid fidelity's start: the point-mass start is quasi-static
     ini.done()
@@ -124,19 +130,21 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
     meth = "implicit" if meth not in METHODS else meth  # a rigid scene's integrator: the implicit method
     if method is not None and method not in METHODS:
         raise ConfigError(f"{path}: method override {method!r}: the point-mass fidelity has {METHODS}")
-    step = it.number("dt", positive=True)
-    vmax = it.number("max_speed", 1000.0, positive=True)
-    hg = it.number("ground_height", 0.0)
+    step = it.number("dt", positive=True, **BOUNDS["integrator.dt"])
+    vmax = it.number("max_speed", 1000.0, positive=True, **BOUNDS["integrator.max_speed"])
+    hg = it.number("ground_height", 0.0, **BOUNDS["coordinate"])
     contact = it.text("ground_contact", "stop", choices=("stop", "flag", "off"))
     for key in ("max_rate", "rtol", "atol"):
         it.raw(key, None)
     it.done()
     s.done()
     nk = nk if n_kites is None else int(n_kites)
+    check_cable_length(ch, piece, nk, end is not None, cable, gravity, n_kites is not None)
     per = piece / el
     if abs(per - round(per)) > 1e-6 * per or round(per) < 1:
         raise fid.error("element_length", el, f"must divide the piece length {piece} m into whole elements")
     per = int(round(per))
+    _check_nodes(fid, ch, path, per * (nk + 1), el, nk, element_length is not None, n_kites is not None)
     n_nodes = per * nk + (per - 1 if end is not None else 0)
     kite_nodes = np.arange(1, nk + 1, dtype=np.int64) * per - 1
     station = None
@@ -154,6 +162,20 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
     return PointMassScene(name=name, file=path, description=desc, string=string,
                           controls=attitude_controls(nk, *att), method=meth if method is None else method,
                           dt=step if dt is None else float(dt), piece_length=piece, station=station)
+
+
+def _check_nodes(fid: Section, ch: Section, path: Path, n_nodes: int, el: float, nk: int, el_override: bool,
+                 nk_override: bool) -> None:
+    """ConfigError naming fidelity.element_length (or chain.n_wings when the kites make the string long, or the
+    override that set either) when a string of about ``n_nodes`` nodes would take more memory than
+    ``model.memory.memory_limit``."""
+    why = over_limit(pointmass_bytes(n_nodes), f"a string of {n_nodes} nodes")
+    if why is None:
+        return
+    if nk_override or el_override:
+        key, value = ("n_wings", nk) if nk_override else ("element_length", el)
+        raise ConfigError(f"{path}: {key} = {value!r} (override): {why}")
+    raise fid.error("element_length", el, f"{why} (with chain.n_wings = {nk})")
 
 
 def load_pointmass_scene(path: str | Path, *, element_length: float | None = None, n_kites: int | None = None,

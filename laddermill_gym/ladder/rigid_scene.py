@@ -15,16 +15,19 @@ from pathlib import Path
 
 import numpy as np
 
+from laddermill_gym.ladder.bounds import BOUNDS
 from laddermill_gym.ladder.scene_files import (
     FIDELITIES,
-    load_cable,
-    load_wing_type,
+    check_cable_length,
     open_scene,
+    read_ground_points,
+    read_parts,
     read_station,
     read_wind,
 )
 from laddermill_gym.model.builders import CableSpec, ChainLayout, build_chain
-from laddermill_gym.model.configio import CONFIG_DIR, ConfigError, Section, config_path
+from laddermill_gym.model.configio import ConfigError, Section
+from laddermill_gym.model.memory import over_limit, rigid_bytes
 from laddermill_gym.model.params import END_NODE, END_WING, Assembly
 from laddermill_gym.sim.breakpoints import INTEGRATOR_METHODS
 from laddermill_gym.sim.simulator import IntegratorSettings, Simulator
@@ -32,16 +35,17 @@ from laddermill_gym.sim.stable_step import check_step
 
 
 def read_integrator(it: Section) -> IntegratorSettings:
-    """The ``integrator:`` section: method, step, tolerances, exploding-state limits and the ground."""
+    """The ``integrator:`` section: method, step, tolerances, exploding-state limits and the ground (bounds:
+    ``ladder/bounds.py``)."""
     if it.data.get("ground_contact") is False:  # YAML 1.1 reads a bare `off` as false
         it.data["ground_contact"] = "off"
     settings = IntegratorSettings(method=it.text("method", choices=INTEGRATOR_METHODS),
-                                  dt=it.number("dt", positive=True),
-                                  rtol=it.number("rtol", 1e-8, positive=True),
+                                  dt=it.number("dt", positive=True, **BOUNDS["integrator.dt"]),
+                                  rtol=it.number("rtol", 1e-8, positive=True, high=1.0),
                                   atol=it.number("atol", 1e-10, positive=True),
-                                  max_speed=it.number("max_speed", positive=True),
-                                  max_rate=it.number("max_rate", positive=True),
-                                  ground_height=it.number("ground_height", 0.0),
+                                  max_speed=it.number("max_speed", positive=True, **BOUNDS["integrator.max_speed"]),
+                                  max_rate=it.number("max_rate", positive=True, **BOUNDS["integrator.max_rate"]),
+                                  ground_height=it.number("ground_height", 0.0, **BOUNDS["coordinate"]),
                                   ground_contact=it.text("ground_contact", "stop", choices=("stop", "flag", "off")))
     it.done()
     return settings
@@ -144,26 +148,10 @@ def _refuse_impossible_step(asm: Assembly, settings: IntegratorSettings, path: P
                           "laddermill stable-step SCENE)")
 
 
-def _parts(s: Section, path: Path):
-    """The wing type and the cable the scene names; ConfigError naming the scene file and field (not only the
-    missing file) when one is not found."""
-    parts = {}
-    for key, kind in (("wing_type", "wings"), ("cable", "cables")):
-        value = s.text(key)
-        parts[key] = config_path(kind, value, path.parent)
-        if not parts[key].is_file():
-            shown = parts[key] if parts[key].is_absolute() else path.parent / parts[key]
-            raise s.error(key, value, f"no such file {shown} (a path is relative to the scene's folder, a bare "
-                                      f"name is {CONFIG_DIR / kind}/NAME.yaml, 'package:{kind}/FILE' the shipped data)")
-    return load_wing_type(parts["wing_type"]), load_cable(parts["cable"])
-
-
 def _chain(s: Section):
     """The ground points {name: (3,) [m]}, the chain's start and end point names, wings, piece length [m],
     elements per piece and the ground station (None: a fixed cable)."""
-    gp = s.section("ground_points")
-    points = {k: gp.vector(k, 3) for k in list(gp.data)}
-    gp.done()
+    points = read_ground_points(s)
     ch = s.section("chain")
     start = ch.text("start")
     end = ch.text("end", None)
@@ -179,18 +167,59 @@ def _chain(s: Section):
         raise ch.error("elements_per_piece" if end is not None else "end", epp if end is not None else end,
                        "a moving cable (station) needs two ground points (start and end) and one element per "
                        "piece (Meijaard's boundary conditions)")
-    return points, start, end, nw, piece, epp, station
+    return ch, points, start, end, nw, piece, epp, station
 
 
-def _initial(ini: Section) -> InitialSpec:
-    """The ``initial`` section (angles in the file in degrees, here in rad)."""
+def _initial(ini: Section, limits: np.ndarray) -> InitialSpec:
+    """The ``initial`` section (angles in the file in degrees, here in rad; bounds ``ladder/bounds.py``, the
+    elevator angles within the wing's elevator limits ``limits`` (2,) [rad])."""
+    lo, hi = np.degrees(limits)
+    elev = dict(low=float(lo), high=float(hi), why="deg: the wing's control_limits_deg.elevator")
     spec = InitialSpec(method=ini.text("method", choices=("trim", "static")),
-                       alpha=math.radians(ini.number("alpha_deg", 8.0)),
-                       elevation=math.radians(ini.number("elevation_deg", 45.0)),
-                       elevator_up=math.radians(ini.number("elevator_up_deg", 0.0)),
-                       elevator_down=math.radians(ini.number("elevator_down_deg", 0.0)))
+                       alpha=math.radians(ini.number("alpha_deg", 8.0, **BOUNDS["initial.alpha_deg"])),
+                       elevation=math.radians(ini.number("elevation_deg", 45.0, positive=True,
+                                                         **BOUNDS["initial.elevation_deg"])),
+                       elevator_up=math.radians(ini.number("elevator_up_deg", 0.0, **elev)),
+                       elevator_down=math.radians(ini.number("elevator_down_deg", 0.0, **elev)))
     ini.done()
     return spec
+
+
+def _field_error(ch: Section, path: Path, key: str, value, overridden: bool, why: str) -> ConfigError:
+    """The error of ``chain.KEY`` = ``value``, or of the keyword override that replaced it."""
+    return ConfigError(f"{path}: {key} = {value!r} (override): {why}") if overridden else ch.error(key, value, why)
+
+
+def _check_sizes(ch: Section, path: Path, nw: int, epp: int, end, planar: bool, counts: dict) -> None:
+    """ConfigError naming the field (or the override) that sets the number of wings or elements when the model
+    and its start (solved in the plane: ``planar``) would take more memory than ``model.memory.memory_limit``;
+    ``counts`` holds the keyword overrides (None: the file's)."""
+    n_pieces = nw + (end is not None)
+    nodes = n_pieces * (epp - 1)
+    why = over_limit(rigid_bytes(nw, nodes, planar_start=planar),
+                     f"{nw} wing{'s' * (nw != 1)} and {n_pieces * epp} elements ({nodes} cable nodes)")
+    if why is not None:
+        key = "elements_per_piece" if nodes > nw else "n_wings"
+        raise _field_error(ch, path, key, nw if key == "n_wings" else epp, counts.get(key) is not None, why)
+
+
+def _check_start(ch: Section, path: Path, init: InitialSpec, nw: int, end, overridden: bool) -> None:
+    """ConfigError naming chain.n_wings (or its override) when initial.method 'trim' (one wing at a target angle of
+    attack) has more wings than one."""
+    if init.method == "trim" and nw != 1:
+        raise _field_error(ch, path, "n_wings", nw, overridden,
+                           "initial.method 'trim' trims exactly one wing; a chain of several wings starts at rest "
+                           "with initial.method: static" + (" (the last wing carries the free upper end)"
+                                                             if end is None else ""))
+
+
+def _check_step_override(path: Path, dt: float | None) -> None:
+    """ConfigError for a keyword override of the step [s] outside ``integrator.dt``'s bounds (a step that is not
+    a finite number > 0 is left to ``IntegratorSettings``)."""
+    b = BOUNDS["integrator.dt"]
+    if dt is not None and 0.0 < dt < math.inf and not b["low"] <= dt <= b["high"]:
+        raise ConfigError(f"{path}: dt = {dt!r} (override): must be between {b['low']:g} and {b['high']:g} "
+                          f"({b['why']})")
 
 
 def read_rigid(s: Section, path: Path, *, dimension: int | None = None, sag: bool | None = None,
@@ -201,17 +230,17 @@ def read_rigid(s: Section, path: Path, *, dimension: int | None = None, sag: boo
     name = s.text("name")
     desc = s.text("description", "")
     dim = s.number("dimension", integer=True)
-    gravity = s.number("gravity", positive=True)
+    gravity = s.number("gravity", positive=True, **BOUNDS["gravity"])
     wind = read_wind(s.section("wind"))
-    wing_type, cable = _parts(s, path)
-    points, start, end, nw, piece, epp, station = _chain(s)
+    wing_type, cable = read_parts(s, path)
+    ch, points, start, end, nw, piece, epp, station = _chain(s)
     fid = s.section("fidelity")
     fid.text("wing", "rigid", choices=FIDELITIES)
     fid.raw("element_length", None)  # the point-mass string's resolution, unused by the rigid model
     sag_on = fid.flag("sag")
     caero_on = fid.flag("cable_aero")
     fid.done()
-    init = _initial(s.section("initial"))
+    init = _initial(s.section("initial"), wing_type.control_limits[0])
     settings = read_integrator(s.section("integrator"))
     s.done()
     # overrides
@@ -227,6 +256,10 @@ def read_rigid(s: Section, path: Path, *, dimension: int | None = None, sag: boo
     if dt is not None or method is not None:
         settings = dataclasses.replace(settings, dt=settings.dt if dt is None else float(dt),
                                        method=settings.method if method is None else method)
+    _check_sizes(ch, path, nw, epp, end, dim == 2 or wind.direction_inf == 0.0,
+                 {"n_wings": n_wings, "elements_per_piece": elements_per_piece})
+    _check_start(ch, path, init, nw, end, n_wings is not None)
+    check_cable_length(ch, piece, nw, end is not None, cable, gravity, n_wings is not None)
     names = list(points)
     fixed = np.array([points[k] for k in names])
     pieces = np.full(nw + (end is not None), piece)
@@ -238,6 +271,7 @@ def read_rigid(s: Section, path: Path, *, dimension: int | None = None, sag: boo
     if station is not None:
         asm = dataclasses.replace(asm, station=station)
     _refuse_impossible_step(asm, settings, path)
+    _check_step_override(path, dt)
     return Scene(name=name, file=path, description=desc, assembly=asm, layout=layout, cable=cable,
                  ground_points=points, start=start, end=end, piece_length=piece, initial=init, settings=settings)
 

@@ -62,5 +62,15 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
 
         return read_pointmass(s, s.section("fidelity"), path, element_length=element_length, n_kites=n_wings,
                               dt=dt, method=method)
-    return read_rigid(s, path, dimension=dimension, sag=sag, cable_aero=cable_aero,
-                      elements_per_piece=elements_per_piece, n_wings=n_wings, dt=dt, method=method)
+    try:
+        return read_rigid(s, path, dimension=dimension, sag=sag, cable_aero=cable_aero,
+                          elements_per_piece=elements_per_piece, n_wings=n_wings, dt=dt, method=method)
+    except ConfigError as err:  # a point-mass file without its fidelity.wing reads as a rigid one: say so
+        idata = s.data.get("initial")
+        marks = ((isinstance(fdata, dict) and "element_length" in fdata)
+                 or (isinstance(idata, dict) and {"pitch_deg", "roll_deg", "yaw_deg"} & set(idata)))
+        if (fidelity is None and not (isinstance(fdata, dict) and "wing" in fdata) and marks
+                and str(err).startswith(f"{path}") and "missing field" in str(err)):
+            raise ConfigError(f"{err} (the file names no fidelity.wing, so it is read at the rigid fidelity; a "
+                              "point-mass scene says fidelity: {wing: pointmass})") from None
+        raise

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 from typing import Any
 
@@ -35,10 +36,12 @@ CONFIG_DIR: Path = _find_config_dir()
 def config_path(kind: str, name_or_path: str | Path, base: Path | None = None) -> Path:
     """Path of a configuration file.
 
-    ``name_or_path`` is a bare name (``"tethered_wing"``: ``CONFIG_DIR/kind/NAME.yaml``), or a path: absolute,
-    relative to ``base`` (the folder of the file that names it) when that file exists there, else relative to
-    the working directory. A path that starts with ``package:`` names the shipped data
-    (``package:wings/meijaard_wing.yaml``). ``kind`` is a folder of ``CONFIG_DIR`` (``"scenes"``, ...).
+    ``name_or_path`` is a bare name (``"tethered_wing"``: ``CONFIG_DIR/kind/NAME.yaml``; ``"NAME.yaml"`` too when
+    no such file is in the working directory), or a path: absolute, relative to ``base`` (the folder of the file that
+    names it) when that file exists there, else relative to the working directory. A path that starts with
+    ``package:`` names the shipped data (``package:wings/meijaard_wing.yaml``), and so does a relative path
+    ``configs/KIND/FILE`` that does not exist here (``configs/agents/ppo_tethered_wing.yaml`` outside a checkout).
+    ``kind`` is a folder of ``CONFIG_DIR`` (``"scenes"``, ...).
     """
     text = str(name_or_path)
     if text.startswith("package:"):
@@ -48,7 +51,28 @@ def config_path(kind: str, name_or_path: str | Path, base: Path | None = None) -
         return CONFIG_DIR / kind / f"{text}.yaml"
     if base is not None and not p.is_absolute() and (base / p).exists():
         return (base / p).resolve()
+    if not p.is_absolute() and not p.exists():  # the shipped file of that name, if there is one
+        shipped = (CONFIG_DIR.joinpath(*p.parts[1:]) if len(p.parts) > 2 and p.parts[0] == "configs"
+                   else CONFIG_DIR / kind / p.name if len(p.parts) == 1 and base is None else None)
+        if shipped is not None and shipped.is_file():
+            return shipped
     return p
+
+
+def shipped_names(kind: str) -> list[str]:
+    """The bare names of the shipped ``CONFIG_DIR/kind/*.yaml`` files, sorted."""
+    return sorted(f.stem for f in (CONFIG_DIR / kind).glob("*.yaml"))
+
+
+def find_config(kind: str, name_or_path: str | Path, what: str = "") -> Path:
+    """:func:`config_path` of an existing file; ConfigError naming the value (``what``: the option or field that
+    gave it) and the shipped names of ``kind`` otherwise."""
+    path = config_path(kind, name_or_path)
+    if not path.is_file():
+        named = f"{what} = {str(name_or_path)!r}: " if what else ""
+        raise ConfigError(f"{named}{path}: no such file (a bare name is one of the shipped {kind}: "
+                          f"{', '.join(shipped_names(kind))})")
+    return path
 
 
 def _show(value: Any) -> str:
@@ -90,10 +114,15 @@ class Section:
             return default
         return self.data[key]
 
-    def number(self, key: str, default: Any = ..., *, positive=False, nonneg=False, integer=False) -> float:
+    def number(self, key: str, default: Any = ..., *, positive=False, nonneg=False, integer=False,
+               low: float | None = None, high: float | None = None, why: str = "") -> float:
+        """The number at ``key`` (an int with ``integer``); ConfigError naming the file, field and value unless it
+        is a finite number of magnitude at most :data:`MAX_MAGNITUDE`, > 0 (``positive``), >= 0 (``nonneg``) and
+        within [``low``, ``high``] (either None: open); ``why`` says where those bounds come from."""
         v = self.raw(key, default)
         if isinstance(v, bool) or not isinstance(v, (int, float)):
-            raise self.error(key, v, "must be a number")
+            raise self.error(key, v, "must be a number" + (" (YAML reads a quoted value as text)"
+                                                           if isinstance(v, str) else ""))
         if not math.isfinite(v):
             raise self.error(key, v, "must be finite")
         if abs(v) > MAX_MAGNITUDE:
@@ -103,6 +132,10 @@ class Section:
             raise self.error(key, v, "must be > 0")
         if nonneg and v < 0:
             raise self.error(key, v, "must be >= 0")
+        if (low is not None and v < low) or (high is not None and v > high):
+            span = (f"between {low:g} and {high:g}" if low is not None and high is not None
+                    else f"at least {low:g}" if low is not None else f"at most {high:g}")
+            raise self.error(key, v, f"must be {span}" + (f" ({why})" if why else ""))
         if integer:
             if int(v) != v:
                 raise self.error(key, v, "must be an integer")
@@ -154,8 +187,16 @@ class Section:
 MAX_MAGNITUDE = 1e12
 
 
-class _UniqueKeyLoader(yaml.SafeLoader):
-    """YAML's safe loader, refusing a key given twice in one mapping (plain YAML keeps the last one silently)."""
+#: A float as YAML 1.2 writes it (the core schema): digits with a fraction, an exponent or both, ``1e6``, ``1.0e6``,
+#: ``1E-3``, ``.5``, ``5.``; PyYAML's YAML 1.1 resolver reads the exponent forms without a dot or a sign (``1e6``,
+#: ``1.0e6``, ``1e300``) as text.
+_FLOAT_1_2 = re.compile(r"""^[-+]?(?:[0-9][0-9_]*(?:\.[0-9_]*)?|\.[0-9][0-9_]*)(?:[eE][-+]?[0-9]+)?$""")
+
+
+class YAMLLoader(yaml.SafeLoader):
+    """YAML's safe loader reading every float a user writes (``1e6``, ``1.0e6``, ``1e300``: YAML 1.2's core schema; a
+    plain integer stays an int) and refusing a key given twice in one mapping (plain YAML keeps the last one
+    silently). Every YAML file of the package is read with it (:func:`read_yaml`, :func:`load_yaml_text`)."""
 
     def construct_mapping(self, node, deep=False):
         seen: dict[Any, int] = {}
@@ -168,15 +209,28 @@ class _UniqueKeyLoader(yaml.SafeLoader):
         return super().construct_mapping(node, deep)
 
 
+# constructed by PyYAML's own float constructor (float() of the text without underscores); the integers keep
+# precedence (the resolvers of a first character are tried in order and PyYAML's int comes after its float)
+YAMLLoader.add_implicit_resolver("tag:yaml.org,2002:float", _FLOAT_1_2, list("-+0123456789."))
+for _first, _resolvers in YAMLLoader.yaml_implicit_resolvers.items():
+    _ints = [r for r in _resolvers if r[0] == "tag:yaml.org,2002:int"]
+    _resolvers[:] = _ints + [r for r in _resolvers if r[0] != "tag:yaml.org,2002:int"]
+
+
+def load_yaml_text(text: str, where: str) -> Any:
+    """The YAML document ``text`` read with :class:`YAMLLoader`; ConfigError naming ``where`` (a file, an option)
+    for invalid YAML or a key given twice."""
+    try:
+        return yaml.load(text, Loader=YAMLLoader)  # noqa: S506 (a SafeLoader subclass)
+    except yaml.YAMLError as err:
+        raise ConfigError(f"{where}: not valid YAML: {err}") from None
+
+
 def read_yaml(path: Path | str) -> Section:
     """The YAML file as a strict :class:`Section`; ConfigError for a missing file, invalid YAML or a key given
     twice in one mapping (naming the line)."""
     path = Path(path)
     if not path.is_file():
         raise ConfigError(f"{path}: no such file")
-    with open(path, encoding="utf-8") as fh:
-        try:
-            data = yaml.load(fh, Loader=_UniqueKeyLoader)  # noqa: S506 (a SafeLoader subclass)
-        except yaml.YAMLError as err:
-            raise ConfigError(f"{path}: not valid YAML: {err}") from None
+    data = load_yaml_text(path.read_text(encoding="utf-8"), str(path))
     return Section(data if data is not None else {}, path)

@@ -15,6 +15,7 @@ from laddermill_gym.kernels.batch import detach_markers, fixed_batch
 from laddermill_gym.kernels.contract import GP_SIZE, LIMIT, NONFINITE, OK, SINGULAR, KAir, KWork
 from laddermill_gym.kernels.dispatch import has_assemble
 from laddermill_gym.kernels.rigid.kinds import WING
+from laddermill_gym.model.memory import over_limit
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import Assembly
 from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, W_METHODS, breaks_mode
@@ -89,6 +90,10 @@ class BatchSimulator:
         #: (model without markers, kind, vehicle): the parallel kernels' form of ``model``
         self.detached = detach_markers(self.model)
         one = make_workspace(assembly, *vehicle_sizes)
+        per_copy = sum(a.nbytes for a in one) + 8 * (ns + assembly.n_controls + 2 * nm + 8 + int(n_grid) + GP_SIZE)
+        why = over_limit(per_copy * nb, f"{nb} copies of {per_copy / 1e3:.4g} kB")
+        if why is not None:
+            raise ValueError(f"n_copies = {n_copies!r}: {why}")
         self.work = KWork(*[np.zeros((nb, *a.shape), dtype=a.dtype) for a in one])
         self.states = np.zeros((nb, ns))
         self.controls = np.zeros((nb, assembly.n_controls if n_controls is None else int(n_controls)))
