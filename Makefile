@@ -1,5 +1,5 @@
 # Developer shortcuts (run inside the project's venv)
-.PHONY: test slow lint bench simulate figures gust-bench work-precision
+.PHONY: test slow lint bench simulate figures gust-bench work-precision docs docs-pages
 
 test:
 	python -m pytest -q
@@ -12,6 +12,15 @@ lint:
 
 bench:
 	laddermill bench --json bench.json
+
+# the documentation site into build/site/ (pip install -e ".[docs]"): warnings, broken links and anchors fail it, and it
+# runs the tutorials (about 2-3 minutes; laddermill_gym/docs/about_docs.md)
+docs:
+	NO_MKDOCS_2_WARNING=1 mkdocs build --strict
+
+# rewrite the kept generated pages (one per env id, the command reference) after changing an env or a command
+docs-pages:
+	python -m docsite.generate
 
 gust-bench:
 	laddermill gust-bench --suite gusts-v1 --controllers open_loop lqr --out results/gust_bench/gusts-v1

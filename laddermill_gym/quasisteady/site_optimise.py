@@ -186,8 +186,8 @@ def sweep(case: SiteCase, wind: SiteWind, what: str, values, progress=None) -> l
 
 
 def altitude_angle_grid(case: SiteCase, wind: SiteWind, hs, thetas, progress=None):
-    """Fig. 14: the best d and S for fixed altitude and cable angle; results[i][j] for hs[i], thetas[j] (None
-    where the cable would be shorter than gamma Delta L, eq. 18)."""
+    """Fig. 14: the best d and S for fixed altitude and cable angle; ``results[i][j]`` for ``hs[i]``,
+    ``thetas[j]`` (None where the cable would be shorter than gamma Delta L, eq. 18)."""
     need = case.params.reel_length * case.params.min_length_ratio
     grid = []
     for h in hs:

@@ -48,7 +48,7 @@ class Recording:
         return path
 
     def save_csv(self, path: Path) -> Path:
-        """One row per sample: time and every scalar of every view (columns named view[i][j])."""
+        """One row per sample: time and every scalar of every view (columns named ``view[i][j]``)."""
         cols, data = ["t_s"], [self.t[:, None]]
         for name, arr in self.views.items():
             flat = arr.reshape(len(self.t), -1)

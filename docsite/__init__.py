@@ -1,0 +1,1 @@
+"""The documentation site's build code (MkDocs hooks, env pages, tutorial runner); not installed with the package."""

@@ -1,0 +1,131 @@
+"""The documentation: README's shape and links, the quick start is the tutorial the docs build runs, the kept
+generated pages (one per env id, the command reference) are current, CITATION.cff names the package and the four
+papers; and, in the slow set, the site builds with ``mkdocs build --strict`` (warnings, broken links and anchors
+fail it; the tutorials run), within a few minutes.
+
+Oracles: the files on disk (links), the code's own registry and parsers (the generated pages, re-derived here),
+the Citation File Format's required keys, and MkDocs' validation of every link and anchor.
+"""
+
+from __future__ import annotations
+
+import ast
+import os
+import re
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+import yaml
+
+ROOT = Path(__file__).resolve().parent.parent
+README = ROOT / "README.md"
+DOCS = ROOT / "laddermill_gym" / "docs"
+LINK = re.compile(r"\]\(([^)\s]+)\)")
+
+
+def _readme() -> str:
+    return README.read_text()
+
+
+def test_readme_fits_on_two_screens():
+    assert len(_readme().splitlines()) <= 200
+
+
+def test_readme_keeps_the_two_setup_commands_of_ci():
+    """.ci/run installs and tests as README says; both set-up commands stay in README verbatim."""
+    text = _readme()
+    assert "pip install -e . && laddermill simulate laddermill --start periodic --direction-step 0.01" in text
+    assert re.search(r'pip install torch==[\d.]+ && pip install -e "\.\[rl,zoo,dev\]" && python -m pytest -q', text)
+
+
+def test_readme_and_docs_relative_links_exist():
+    """Every relative link (and image) of README and of the Markdown documents points at a file that exists
+    (the site build checks the same for the pages and their anchors; this covers README and runs without MkDocs)."""
+    files = [README] + sorted(DOCS.rglob("*.md"))
+    missing = []
+    for f in files:
+        for target in LINK.findall(f.read_text()):
+            if re.match(r"[a-z]+:", target) or target.startswith("#"):
+                continue
+            path = (f.parent / target.split("#", 1)[0]).resolve()
+            if path.is_relative_to(DOCS / "tutorials"):  # pages the site build writes from tutorials/*.py
+                continue
+            if not path.exists():
+                missing.append(f"{f.relative_to(ROOT)} -> {target}")
+    assert not missing, "\n".join(missing)
+
+
+def _quickstart_code(text: str) -> str:
+    block = text.split("## Quick start", 1)[1].split("```python\n", 1)[1].split("```", 1)[0]
+    return block.strip()
+
+
+def test_readme_quick_start_is_the_tutorial_the_docs_build_runs():
+    """README's quick start is ``tutorials/quickstart.py`` after its docstring, at most 15 lines."""
+    source = (ROOT / "tutorials" / "quickstart.py").read_text()
+    code = "\n".join(source.splitlines()[ast.parse(source).body[0].end_lineno:]).strip()
+    assert _quickstart_code(_readme()) == code, "README's quick start differs from tutorials/quickstart.py"
+    assert len(code.splitlines()) <= 15
+
+
+def test_every_tutorial_is_listed_for_the_docs_build():
+    sys.path.insert(0, str(ROOT))
+    from docsite.tutorials import ORDER, SHORT
+
+    present = {p.name for p in (ROOT / "tutorials").glob("*.py")}
+    assert present == set(ORDER) == set(SHORT)
+    for name, pairs in SHORT.items():
+        source = (ROOT / "tutorials" / name).read_text()
+        for old, _new in pairs:
+            assert source.count(old) == 1, (name, old)
+
+
+def test_generated_pages_are_current():
+    """One page per registered env id and the command reference, as ``python -m docsite.generate`` writes them
+    from the code now (run it after changing an env's docstring, the registry or a command)."""
+    sys.path.insert(0, str(ROOT))
+    from docsite.generate import stale
+    from laddermill_gym.envs import ENV_IDS
+
+    assert not stale(), "stale generated pages; run python -m docsite.generate"
+    for env_id in ENV_IDS:
+        assert (DOCS / "envs" / f"{env_id.split('/', 1)[1]}.md").is_file()
+
+
+def test_citation_file_names_the_package_and_the_four_papers():
+    cff = yaml.safe_load((ROOT / "CITATION.cff").read_text())
+    for key in ("cff-version", "message", "title", "authors"):
+        assert cff.get(key), key
+    titles = " | ".join(r["title"].lower() for r in cff["references"])
+    for words in ("dynamic behaviour of a laddermill", "three-dimensional simulation of a laddermill",
+                  "long-term laddermill modeling", "tethered rotorcraft"):
+        assert words in titles
+    assert "How to cite" in _readme() and "CITATION.cff" in _readme()
+
+
+def test_docs_pages_are_under_400_lines():
+    long = [f"{p.relative_to(ROOT)}: {n}" for p in sorted(DOCS.rglob("*.md"))
+            if (n := len(p.read_text().splitlines())) > 400]
+    assert not long, long
+
+
+@pytest.mark.slow
+def test_site_builds_strict_with_its_tutorials(tmp_path):
+    """``make docs``'s command: strict (a warning, a missing page, link or anchor fails it), the tutorials run."""
+    pytest.importorskip("mkdocs")
+    pytest.importorskip("mkdocstrings")
+    pytest.importorskip("stable_baselines3")  # the quick-start tutorial trains PPO
+    env = dict(os.environ, NO_MKDOCS_2_WARNING="1")
+    env.pop("LADDERMILL_DOCS_TUTORIALS", None)
+    t0 = time.perf_counter()
+    proc = subprocess.run([sys.executable, "-m", "mkdocs", "build", "--strict", "--site-dir", str(tmp_path / "site")],
+                          cwd=ROOT, env=env, capture_output=True, text=True, timeout=900)
+    seconds = time.perf_counter() - t0
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-6000:]
+    for page in ("index.html", "envs/TetheredWing-v0/index.html", "api/scenes_simulators/index.html",
+                 "tutorials/simulate_and_plot/index.html", "commands/index.html", "commands/simulate/index.html"):
+        assert (tmp_path / "site" / page).is_file(), page
+    assert seconds < 600, f"the docs build took {seconds:.0f} s"
