@@ -2,7 +2,7 @@
 same rows serially, in two local worker processes and on a local Ray with two workers (the serial run is the
 reference: the same episodes computed in this process, whose metrics test_gust_bench.py checks against a plain
 Gymnasium rollout); every worker warms up exactly once, before its tasks; failures and bad options are named.
-The Ray tests skip when Ray (the optional extra ``ray``) is not installed."""
+The Ray tests are slow tests (``-m slow``) and skip when Ray (the optional extra ``ray``) is not installed."""
 
 from __future__ import annotations
 
@@ -71,6 +71,7 @@ def test_two_local_workers_give_the_serial_rows(suite, serial_rows, tmp_path):
     assert [{k: str(v) for k, v in r.items()} for r in serial_rows] == written
 
 
+@pytest.mark.slow  # Ray: the ray extra, which CI does not install (README, slow tests)
 def test_local_ray_with_two_workers_gives_the_serial_rows(suite, serial_rows):
     pytest.importorskip("ray", reason="Ray is the optional extra [ray]: pip install 'laddermill_gym[ray]'")
     rows = gb.run_suite(suite, [], CONTROLLERS, progress=False, workers=2, ray="local")
@@ -97,6 +98,7 @@ def test_each_worker_warms_up_once_before_its_tasks(workers):
     assert again[0]["run"] != reports[0]["run"]  # a new run warms up anew
 
 
+@pytest.mark.slow  # Ray: the ray extra, which CI does not install (README, slow tests)
 def test_each_ray_worker_warms_up_once_before_its_tasks():
     pytest.importorskip("ray", reason="Ray is the optional extra [ray]: pip install 'laddermill_gym[ray]'")
     reports = parallel.run_tasks([(parallel.worker_report, {})] * 6, workers=2, ray="local",
