@@ -48,6 +48,7 @@ simulate:
 	cp runs/laddermill_shape.png laddermill_gym/docs/figures/laddermill_direction_step.png
 	cp runs/laddermill_generator.png laddermill_gym/docs/figures/laddermill_generator.png
 	laddermill simulate tethered_wing --time 120 --direction-step 0.01 --out runs
+	cp runs/tethered_wing_histories.png laddermill_gym/docs/figures/tethered_wing_direction_step.png
 
 # README figures and tables: chain controllers, PPO training (about 25 minutes), tethered-wing controllers
 FIG = laddermill_gym/docs/figures
