@@ -1,5 +1,6 @@
 """Videos of the environments: Gymnasium's RecordVideo and Stable-Baselines3's VecVideoRecorder (used by
 ``rl_zoo3.record_video``) write an MP4 of the ``rgb_array`` frames when moviepy is installed (the ``video`` extra).
+Slow tests (``-m slow``), skipped without moviepy.
 
 Oracle: a twin environment (same id, arguments, seed and actions) rendered frame by frame; the video, decoded by
 imageio's ffmpeg reader (not moviepy, which wrote it), must hold those frames up to the codec's loss. moviepy 2.x
@@ -17,6 +18,8 @@ import laddermill_gym  # noqa: F401  (registers the environments)
 
 pytest.importorskip("moviepy", reason="moviepy is not installed (the video extra: pip install moviepy)")
 iio = pytest.importorskip("imageio.v2", reason="imageio (installed with moviepy) is missing")
+#: slow: CI installs no video extra (moviepy and a 165 MB ffmpeg binary); run with -m slow where it is installed
+pytestmark = pytest.mark.slow
 
 ENV_ID = "laddermill_gym/TetheredWing-v0"
 KW = dict(render_mode="rgb_array", episode_time=0.5)  # [s] 10 control periods of 0.05 s: 11 frames with the reset
