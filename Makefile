@@ -1,5 +1,5 @@
 # Developer shortcuts (run inside the project's venv)
-.PHONY: test slow lint bench simulate figures gust-bench work-precision docs docs-pages
+.PHONY: test slow lint bench simulate figures gust-bench work-precision docs
 
 test:
 	python -m pytest -q
@@ -17,10 +17,6 @@ bench:
 # runs the tutorials (about 2-3 minutes; laddermill_gym/docs/about_docs.md)
 docs:
 	NO_MKDOCS_2_WARNING=1 mkdocs build --strict
-
-# rewrite the kept generated pages (one per env id, the command reference) after changing an env or a command
-docs-pages:
-	python -m docsite.generate
 
 gust-bench:
 	laddermill gust-bench --suite gusts-v1 --controllers open_loop lqr --out results/gust_bench/gusts-v1

@@ -28,6 +28,8 @@ ORDER = {
     "quickstart.py": "Quick start: an env, PPO for a minute, the LQR",
     "simulate_and_plot.py": "Simulate a scene and plot it",
     "linearise_with_control.py": "Linearise a scene with python-control",
+    "gust_benchmark.py": "Run a gust benchmark and read its scorecard",
+    "pointmass_string.py": "The point-mass string",
 }
 #: script name -> [(text on a line of the script, its replacement in the docs build)]
 SHORT = {
@@ -35,6 +37,8 @@ SHORT = {
                       ("vector_env(ID, 4, {})", "vector_env(ID, 2, {\"episode_time\": 10.0})")],
     "simulate_and_plot.py": [("T_END = 60.0", "T_END = 20.0")],
     "linearise_with_control.py": [],
+    "gust_benchmark.py": [("SCENARIOS = None", "SCENARIOS = [\"direction_step\", \"EOG_IA\"]")],
+    "pointmass_string.py": [("T_END = 60.0", "T_END = 20.0")],
 }
 TIMEOUT_S = 600
 
