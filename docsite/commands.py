@@ -52,7 +52,8 @@ def commands_pages() -> dict[str, str]:
     names = [n for n in top.split("{", 1)[1].split("}", 1)[0].split(",")]
     lines = ["# Command reference", "",
              "`laddermill COMMAND ...` (or `python -m laddermill_gym COMMAND ...`). These pages are the parsers' own "
-             "`--help`, captured when this site was built; worked examples with their measured outputs are in [the command line](../command_line.md).", "",
+             "`--help`, captured when this site was built; worked examples with their measured outputs are in "
+             "[the command line](../command_line.md).", "",
              "| command | what it does | module |", "|---|---|---|"]
     described = _descriptions(top)
     for n in names:
