@@ -5,7 +5,10 @@ hyperparameter files (configs/rl_zoo3/), then the harness reading the run folder
 Oracles: rl-zoo3's own loading path (``rl_zoo3.utils.get_saved_hyperparams``, ``create_test_env`` with the run's
 statistics, ``rl_zoo3.utils.ALGOS[algo].load``), which must give the harness's actions on the same raw observations
 and, rolled out, the harness's episode return; our own training configs (configs/agents/), whose numbers the
-shipped files claim to carry. Skipped when rl_zoo3 is not installed (the ``zoo`` extra).
+shipped files claim to carry; for the recipe's environment arguments (issue 34 item 13: evaluation ran on the
+registered defaults, not the file's env_kwargs), rl-zoo3's own command-line parser (``StoreDict``), the shell's word
+splitting, and the environments rl-zoo3's ExperimentManager builds for training and for evaluation. Skipped when
+rl_zoo3 is not installed (the ``zoo`` extra).
 """
 
 from __future__ import annotations
@@ -15,6 +18,7 @@ import shutil
 import subprocess
 import sys
 
+import gymnasium as gym
 import numpy as np
 import pytest
 import yaml
@@ -22,7 +26,12 @@ import yaml
 pytest.importorskip("rl_zoo3", reason="rl_zoo3 is not installed (the zoo extra: pip install rl_zoo3)")
 
 from laddermill_gym.control.sb3_policy import SB3Controller  # noqa: E402
-from laddermill_gym.control.zoo_run import find_zoo_run, read_zoo_run  # noqa: E402
+from laddermill_gym.control.zoo_run import (  # noqa: E402
+    env_kwargs_arguments,
+    find_zoo_run,
+    read_zoo_run,
+    zoo_env_kwargs,
+)
 from laddermill_gym.harness import evaluate as ev  # noqa: E402
 from laddermill_gym.model.configio import CONFIG_DIR  # noqa: E402
 
@@ -39,9 +48,10 @@ CONSTANTS = {"learning_rate": 0.0, "lr_schedule": lambda _: 0.0, "clip_range": l
 def zoo_train(tmp_path_factory, algo: str, *extra: str):
     """Train ``algo`` briefly with rl-zoo3 in a subprocess; the run folder."""
     logs = tmp_path_factory.mktemp(f"zoo_{algo}")
+    # the recipe (docs/rl_zoo3.md): the file's env_kwargs also on the command line, so evaluation uses them too
     cmd = [sys.executable, "-m", "rl_zoo3.train", "--algo", algo, "--env", ENV_ID, "--gym-packages", "laddermill_gym",
            "--conf-file", str(CONFIG_DIR / "rl_zoo3" / f"{algo}.yaml"), "--num-threads", "1", "--seed", "0",
-           "-f", str(logs), *extra]
+           "-f", str(logs), "--env-kwargs", *env_kwargs_arguments(zoo_env_kwargs(algo, ENV_ID)), *extra]
     done = subprocess.run(cmd, cwd=logs, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
     return logs / algo / f"{NAME}_1"
@@ -91,6 +101,73 @@ def test_shipped_files_carry_our_training_configs(algo):
         for key, value in ours["hyperparameters"].items():
             assert hp[key] == value, (env_id, key)
         assert hp["env_kwargs"] == dict(ours["env_kwargs"], disturbances=ours["disturbances"])
+
+
+@pytest.mark.parametrize("algo", ["ppo", "sac"])
+def test_recipe_arguments_are_the_files_env_kwargs(algo):
+    """What the recipe passes as ``--env-kwargs`` is, through rl-zoo3's own parser, each entry's env_kwargs; and the
+    printed line survives the shell's word splitting (``$(python -m laddermill_gym.control.zoo_run FILE ID)``)."""
+    import argparse
+
+    from rl_zoo3.utils import StoreDict
+
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--env-kwargs", type=str, nargs="+", action=StoreDict)
+    zoo = yaml.safe_load((CONFIG_DIR / "rl_zoo3" / f"{algo}.yaml").read_text())
+    for env_id, hp in zoo.items():
+        args = env_kwargs_arguments(zoo_env_kwargs(algo, env_id))
+        assert parser.parse_args(["--env-kwargs", *args]).env_kwargs == hp["env_kwargs"], env_id
+    cmd = f'printf "%s\\n" $("{sys.executable}" -m laddermill_gym.control.zoo_run {algo} {ENV_ID})'
+    done = subprocess.run(["bash", "-c", cmd], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines() == env_kwargs_arguments(zoo_env_kwargs(algo, ENV_ID))
+
+
+def _zoo_envs(tmp_path, env_kwargs):
+    """(training env, evaluation env) tasks as rl-zoo3's ExperimentManager builds them from our PPO file, with
+    ``env_kwargs`` as the command line's --env-kwargs (None: not given)."""
+    import argparse
+
+    from rl_zoo3.exp_manager import ExperimentManager
+    from stable_baselines3.common.callbacks import EvalCallback
+
+    em = ExperimentManager(argparse.Namespace(), "ppo", ENV_ID, str(tmp_path), eval_freq=1000, n_eval_episodes=1,
+                           hyperparams={"n_envs": 1, "batch_size": 256}, env_kwargs=env_kwargs,
+                           config=str(CONFIG_DIR / "rl_zoo3" / "ppo.yaml"), verbose=0)
+    model, _ = em.setup_experiment()
+    (evaluation,) = [c for c in em.callbacks if isinstance(c, EvalCallback)]
+    tasks = [env.get_attr("unwrapped")[0].task for env in (model.get_env(), evaluation.eval_env)]
+    for env in (model.get_env(), evaluation.eval_env):
+        env.close()
+    return tasks
+
+
+def settings(task):
+    return task.episode_time, task.disturbances, task.reward_config
+
+
+def test_evaluation_uses_the_training_settings_with_the_recipe(tmp_path):
+    """rl-zoo3 2.9 evaluates on the registered defaults unless the command line gives the env_kwargs (the issue:
+    episodes longer than the file's 60 s); with the recipe's --env-kwargs both envs have the file's settings."""
+    file_kwargs = zoo_env_kwargs("ppo", ENV_ID)
+    train, evaluation = _zoo_envs(tmp_path / "recipe", dict(file_kwargs))
+    assert settings(train) == settings(evaluation) and train.episode_time == file_kwargs["episode_time"] == 60.0
+    assert len(train.disturbances) == len(file_kwargs["disturbances"]) == 2
+    train, evaluation = _zoo_envs(tmp_path / "file_only", None)
+    default = gym.make(ENV_ID).unwrapped.task
+    assert settings(train) != settings(evaluation) and train.episode_time == 60.0
+    assert settings(evaluation) == settings(default) and default.episode_time == 300.0
+
+
+def test_run_folder_records_the_recipes_settings(ppo_run):
+    """args.yml (what enjoy, record_video and ``laddermill evaluate`` read first) and config.yml hold the file's
+    env_kwargs."""
+    from laddermill_gym.control.zoo_run import read_zoo_yaml
+
+    want = zoo_env_kwargs("ppo", ENV_ID)
+    assert read_zoo_yaml(ppo_run / NAME / "args.yml")["env_kwargs"] == want
+    assert read_zoo_yaml(ppo_run / NAME / "config.yml")["env_kwargs"] == want
+    assert read_zoo_run(ppo_run).env_kwargs == want
 
 
 @pytest.mark.parametrize("algo", ["ppo", "sac"])
@@ -199,6 +276,7 @@ def test_wrapper_fills_in_our_defaults(monkeypatch):
     assert script_arguments("record_video", ["-n", "5"]) == ["-n", "5"]
 
 
+@pytest.mark.slow  # moviepy: the video extra, not installed by CI (README, slow tests)
 def test_record_video_through_the_wrapper(ppo_run):
     """``rl_zoo3.record_video`` has no --gym-packages: through ``laddermill zoo`` it finds our id and writes the
     video of the run's policy (n steps after the reset: n + 1 frames, or n where moviepy drops the last)."""

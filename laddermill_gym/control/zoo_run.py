@@ -15,20 +15,32 @@ where ``<env name>`` is the environment id with "/" replaced by "-" (``laddermil
 folder therefore holds the statistics of its last model only (or, when training stopped before the final save, of
 its best model): :func:`read_zoo_run` takes the last model (as ``python -m rl_zoo3.enjoy`` does without
 ``--load-best``) and accepts ``best_model.zip`` or a checkpoint only where the statistics on disk are its own.
+
+Which environment arguments each rl-zoo3 script uses (rl-zoo3 2.9, read in its source): ``train`` builds the training
+envs with the hyperparameter file's ``env_kwargs`` unless the command line gives ``--env-kwargs`` (which then
+replaces them), but its evaluations (``--eval-freq``, SB3's EvalCallback) use ``--eval-env-kwargs``, else the command
+line's ``--env-kwargs``, else none: the registered defaults, not the file's (``exp_manager.py``: ``eval_env_kwargs``
+is bound before the file is read). ``enjoy`` takes config.yml's ``env_kwargs`` (the file's), replaced by args.yml's
+(the command line's) when given; ``record_video`` takes args.yml's only. Giving the file's ``env_kwargs`` on the
+command line (:func:`env_kwargs_arguments`; ``python -m laddermill_gym.control.zoo_run FILE ID`` prints them) makes
+training, evaluation, ``enjoy`` and ``record_video`` use the same settings, and args.yml records them.
 """
 
 from __future__ import annotations
 
+import argparse
 import ast
 import importlib
 import pickle
+import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import yaml
 
-__all__ = ["ZooRun", "ZOO_ALGORITHMS", "find_zoo_run", "read_zoo_run", "zoo_algorithm_class", "read_zoo_yaml"]
+__all__ = ["ZooRun", "ZOO_ALGORITHMS", "find_zoo_run", "read_zoo_run", "zoo_algorithm_class", "read_zoo_yaml",
+           "zoo_env_kwargs", "env_kwargs_arguments"]
 
 #: rl-zoo3's algorithm names (``rl_zoo3.utils.ALGOS``) -> (module, class). Kept here rather than imported from
 #: rl_zoo3, so that a run folder can be evaluated where only Stable-Baselines3 (and sb3-contrib) are installed;
@@ -200,3 +212,64 @@ def load_vecnormalize(path: Path):
     """The pickled SB3 ``VecNormalize`` in ``path`` (its ``obs_rms``, ``clip_obs``, ``epsilon``, ``norm_obs``)."""
     with open(path, "rb") as fh:
         return pickle.load(fh)
+
+
+# ------------------------------------------------------------------ the file's env_kwargs on rl-zoo3's command line
+def zoo_env_kwargs(conf_file: str | Path, env_id: str) -> dict[str, Any]:
+    """The ``env_kwargs`` of ``env_id`` in the rl-zoo3 hyperparameter file ``conf_file`` (a path, or "ppo" / "sac"
+    for our shipped ``configs/rl_zoo3/<algo>.yaml``); {} when the entry has none. ValueError naming the file when it
+    has no entry for ``env_id``."""
+    from laddermill_gym.model.configio import CONFIG_DIR
+
+    path = Path(conf_file)
+    if not path.suffix and not path.exists():
+        path = CONFIG_DIR / "rl_zoo3" / f"{conf_file}.yaml"
+    data = read_zoo_yaml(path)
+    if env_id not in data:
+        raise ValueError(f"{path}: no entry for {env_id!r} (entries: {sorted(data)})")
+    entry = data[env_id]
+    kwargs = entry.get("env_kwargs") if isinstance(entry, dict) else None
+    if kwargs is not None and not isinstance(kwargs, dict):
+        raise ValueError(f"{path}: {env_id}.env_kwargs = {kwargs!r}: expected a mapping")
+    return dict(kwargs or {})
+
+
+def _literal(value: Any, where: str) -> str:
+    """``value`` as a Python literal without whitespace (rl-zoo3 evaluates each value with ``eval``; the shell
+    splits the printed arguments at whitespace)."""
+    if isinstance(value, dict):
+        return "{" + ",".join(f"{k!r}:{_literal(v, f'{where}.{k}')}" for k, v in value.items()) + "}"
+    if isinstance(value, list | tuple):
+        return "[" + ",".join(_literal(v, f"{where}[{i}]") for i, v in enumerate(value)) + "]"
+    if isinstance(value, str) and any(c.isspace() for c in value):
+        raise ValueError(f"{where} = {value!r}: holds whitespace; give this argument by hand, quoted")
+    if value is None or isinstance(value, bool | int | float | str):
+        return repr(value)
+    raise ValueError(f"{where} = {value!r}: not a YAML scalar, list or mapping")
+
+
+def env_kwargs_arguments(env_kwargs: dict[str, Any]) -> list[str]:
+    """rl-zoo3's ``--env-kwargs`` values for ``env_kwargs``: one ``key:literal`` per key, no whitespace."""
+    return [f"{key}:{_literal(value, key)}" for key, value in env_kwargs.items()]
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m laddermill_gym.control.zoo_run FILE ID``: print the ``--env-kwargs`` values of ID's entry."""
+    p = argparse.ArgumentParser(prog="python -m laddermill_gym.control.zoo_run",
+                                description="Print an rl-zoo3 hyperparameter file's env_kwargs for an id as rl-zoo3 "
+                                "command-line values: --env-kwargs $(python -m laddermill_gym.control.zoo_run FILE ID)")
+    p.add_argument("file", help="the hyperparameter file, or ppo / sac for ours (configs/rl_zoo3/)")
+    p.add_argument("env_id", help="the registered id, e.g. laddermill_gym/TetheredWing-v0")
+    a = p.parse_args(argv)
+    try:
+        args = env_kwargs_arguments(zoo_env_kwargs(a.file, a.env_id))
+    except (OSError, ValueError) as err:
+        p.error(str(err))
+    if not args:
+        p.error(f"{a.file}: {a.env_id} has no env_kwargs (nothing to pass)")
+    print(" ".join(args))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
