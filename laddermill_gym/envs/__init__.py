@@ -30,10 +30,17 @@ Every environment has a native batched ``vector_entry_point`` (:class:`~laddermi
 point-mass kernels within one call). Each is a task with B copies (:class:`~laddermill_gym.envs.task.WingTask`,
 :class:`~laddermill_gym.envs.rotorcraft.task.CraftTask`, :class:`~laddermill_gym.envs.pointmass.task.PointMassTask`
 ...), whose arguments are the environment's (:func:`env_arguments`).
+
+``gymnasium.make(id, **kwargs)`` and ``make_vec`` build the env from the id's registered defaults merged with
+``kwargs`` (:func:`registered_arguments`): a dict-valued argument is merged key by key at every depth, so
+``scene_options={"overrides": {"wind": {"v0": 10.0}}}`` keeps TetheredWing-v0's registered ``scene_options``.
+Gymnasium's entry points are ``envs/registration.py``'s, which build the classes of :data:`ENTRY_POINTS` so.
 """
 
+import copy
 import importlib
 import inspect
+from collections.abc import Mapping
 
 from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
 from laddermill_gym.envs.laddermill.env import LadderMillEnv, LadderMillVectorEnv
@@ -46,7 +53,7 @@ __all__ = ["DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedul
            "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "RotorcraftEnv", "RotorcraftVectorEnv",
            "LadderMillEnv", "LadderMillVectorEnv", "PumpingKiteEnv", "PumpingKiteVectorEnv",
            "PointMassEnv", "PointMassVectorEnv", "ENV_IDS", "ENTRY_POINTS", "register_envs", "task_class",
-           "env_arguments"]
+           "env_arguments", "merge_arguments", "registered_arguments"]
 
 _LAZY = {"PointMassEnv": "laddermill_gym.envs.pointmass.env",
          "PointMassVectorEnv": "laddermill_gym.envs.pointmass.env"}
@@ -127,8 +134,28 @@ def env_arguments(env_id: str) -> tuple[str, ...]:
     return tuple(p for p in inspect.signature(task_class(env_id)).parameters if p not in ("n_copies", "parallel"))
 
 
+def merge_arguments(defaults: Mapping, kwargs: Mapping) -> dict:
+    """``defaults`` updated with ``kwargs`` (a new dict; neither is changed): where both hold a dict under the same
+    key, the two are merged the same way, at every depth; any other value in ``kwargs`` replaces the default."""
+    out = dict(defaults)
+    for key, value in kwargs.items():
+        if isinstance(value, Mapping) and isinstance(out.get(key), Mapping):
+            out[key] = merge_arguments(out[key], value)
+        else:
+            out[key] = value
+    return out
+
+
+def registered_arguments(env_id: str, kwargs: Mapping | None = None) -> dict:
+    """The arguments ``gymnasium.make(env_id, **kwargs)`` builds its env with: the registered defaults
+    (:data:`ENV_IDS`, deep-copied) merged with ``kwargs`` by :func:`merge_arguments`."""
+    _check_id(env_id)
+    return merge_arguments(copy.deepcopy(ENV_IDS[env_id]), kwargs or {})
+
+
 def register_envs() -> None:
-    """Register :data:`ENV_IDS` with Gymnasium (idempotent).
+    """Register :data:`ENV_IDS` with Gymnasium (idempotent), each id's entry points those of
+    ``envs/registration.py`` (its classes of :data:`ENTRY_POINTS` built from :func:`registered_arguments`).
 
     No ``max_episode_steps``: the environments truncate themselves at their ``episode_time`` argument, and a
     TimeLimit wrapper fixed at registration would silently cut an episode made longer with
@@ -138,6 +165,6 @@ def register_envs() -> None:
     for env_id, kwargs in ENV_IDS.items():
         if env_id in gym.registry:
             continue
-        single, vector, _ = ENTRY_POINTS[env_id]
-        gym.register(id=env_id, entry_point=single, vector_entry_point=vector, kwargs=kwargs,
+        name = "laddermill_gym.envs.registration:" + env_id.split("/")[-1].replace("-", "_")
+        gym.register(id=env_id, entry_point=name, vector_entry_point=name + "_vector", kwargs=kwargs,
                      disable_env_checker=False)
