@@ -12,6 +12,8 @@ per control period.
 from __future__ import annotations
 
 import functools
+import os
+import sys
 
 import numba
 import numpy as np
@@ -25,21 +27,98 @@ from laddermill_gym.ladder.scene import load_scene
 from laddermill_gym.model.pointmass import make_work, pack
 from laddermill_gym.sim.pointmass import PointMassError, PointMassSimulator
 
-__all__ = ["PointMassBatch", "pointmass_start", "POINTMASS_FAILURES"]
+__all__ = ["PointMassBatch", "pointmass_start", "POINTMASS_FAILURES", "check_fork_safe", "freeze", "thaw"]
 
 #: Termination causes (code -> name), the wing envs' codes (``envs/task.py`` FAILURES); 0: still flying.
 POINTMASS_FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state or speed limit)",
                                       2: "ground contact", 3: "cable over its breaking load"}
 
 
+class _Frozen(tuple):
+    """A dict (as its sorted (key, value) pairs) or a list, hashable, equal only to a frozen value of its own kind."""
+
+    def __eq__(self, other):
+        return type(self) is type(other) and tuple.__eq__(self, other)
+
+    def __ne__(self, other):
+        return not self == other
+
+    def __hash__(self):
+        return hash((type(self).__name__, tuple(self)))
+
+
+class _FrozenDict(_Frozen):
+    pass
+
+
+class _FrozenList(_Frozen):
+    pass
+
+
+def freeze(value):
+    """``value`` with every dict and list in it made hashable (the memoised starts' key: ``load_scene`` options
+    such as ``overrides={"wind": {"v0": 10.0}}``); :func:`thaw` gives it back."""
+    if isinstance(value, dict):
+        return _FrozenDict(sorted((k, freeze(v)) for k, v in value.items()))
+    if isinstance(value, list):
+        return _FrozenList(freeze(v) for v in value)
+    return value
+
+
+def thaw(value):
+    """The value :func:`freeze` was given (new dicts and lists)."""
+    if isinstance(value, _FrozenDict):
+        return {k: thaw(v) for k, v in value}
+    if isinstance(value, _FrozenList):
+        return [thaw(v) for v in value]
+    return value
+
+
+#: True in a process forked after numba started its threads on GNU OpenMP (set by :func:`_note_fork`)
+_FORKED_AFTER_GNU_OPENMP = False
+
+
+def _note_fork() -> None:
+    """In a forked child: note whether the parent's numba threads run on GNU OpenMP, which is not fork-safe (numba
+    ends such a child with SIGTERM at its first parallel loop, and the point-mass kernels are parallel loops)."""
+    global _FORKED_AFTER_GNU_OPENMP
+    try:
+        layer = numba.threading_layer()
+    except ValueError:  # numba's threads not started: the child starts its own
+        return
+    omp = sys.modules.get("numba.np.ufunc.omppool")
+    if layer == "omp" and getattr(omp, "openmp_vendor", "GNU") == "GNU":
+        _FORKED_AFTER_GNU_OPENMP = True
+
+
+os.register_at_fork(after_in_child=_note_fork)
+
+
+def check_fork_safe() -> None:
+    """RuntimeError saying what to do, in a process forked from one whose numba threads run on GNU OpenMP (where
+    numba would end the process at the point-mass kernels' first parallel loop); called before those kernels."""
+    if _FORKED_AFTER_GNU_OPENMP:
+        raise RuntimeError(
+            "the point-mass kernels cannot run in this process: it was forked (multiprocessing's 'fork' start "
+            "method, AsyncVectorEnv's default on Linux) from a process whose numba threads run on GNU OpenMP, which "
+            "is not fork-safe. Start the workers with 'forkserver' or 'spawn' (gymnasium.make_vec(id, n, "
+            "vectorization_mode='async', vector_kwargs={'context': 'forkserver'}); SB3's SubprocVecEnv does so by "
+            "default), or pick a fork-safe numba threading layer before numba starts (NUMBA_THREADING_LAYER="
+            "workqueue, or tbb with the tbb package installed)")
+
+
 @functools.lru_cache(maxsize=8)
-def pointmass_start(scene: str, options: tuple, settle_time: float) -> tuple[PointMassScene, np.ndarray, np.ndarray]:
-    """(scene at the point-mass fidelity, start state (6 n,), controls (3 n_k,) [rad]) of ``scene`` with
-    ``load_scene`` overrides ``options`` (sorted (key, value) pairs): the scene's own start
+def pointmass_start(scene: str, options,
+                    settle_time: float) -> tuple[PointMassScene, np.ndarray, np.ndarray, np.ndarray]:
+    """(scene at the point-mass fidelity, start state (6 n,), controls (3 n_k,) [rad], element tensions (n_e,) [N]
+    at the start, Voigt damping included) of ``scene`` with the ``load_scene`` options ``options`` (a dict made
+    hashable by :func:`freeze`): the scene's own start
     (:meth:`~laddermill_gym.ladder.pointmass_scene.PointMassScene.initial_state`), then ``settle_time`` [s] of
     its own method and step in its steady wind with the start attitude held. Memoised per process (a chain's
-    start solves the rigid statics, about a second); the arrays are read-only."""
-    sc = load_scene(scene, fidelity="pointmass", **dict(options))
+    start solves the rigid statics, about a second; a forked process inherits it and so builds its env without a
+    kernel call); the arrays are read-only."""
+    check_fork_safe()
+    sc = load_scene(scene, fidelity="pointmass", **thaw(options))
     x0, u0 = sc.initial_state()
     x0, u0 = np.array(x0, dtype=float), np.array(u0, dtype=float)
     if settle_time > 0:
@@ -50,9 +129,12 @@ def pointmass_start(scene: str, options: tuple, settle_time: float) -> tuple[Poi
             raise ValueError(f"scene {sc.name} ({sc.file}): settle_time = {settle_time!r} s: settling failed "
                              f"({err})") from None
         x0 = sim.x.copy()
-    x0.setflags(write=False)
-    u0.setflags(write=False)
-    return sc, x0, u0
+    work = make_work(sc.string)
+    tensions(x0, pack(sc.string), work.tension, True)
+    tension = work.tension.copy()
+    for a in (x0, u0, tension):
+        a.setflags(write=False)
+    return sc, x0, u0, tension
 
 
 class PointMassBatch:
@@ -86,6 +168,7 @@ class PointMassBatch:
     def step(self, nsteps: np.ndarray) -> None:
         """Advance copy b by ``nsteps[b]`` steps of dt (0 or less: untouched); its time by the steps done, its
         ``status`` to the kernel's (a failed copy stays at the state of its failed step) and its ``tension``."""
+        check_fork_safe()
         before = numba.get_num_threads()
         numba.set_num_threads(min(self.threads, before))
         try:
@@ -107,6 +190,7 @@ class PointMassBatch:
         on at most one thread per ``CHUNK`` nodes: waking the whole thread pool for a short string costs more than
         its work (measured: 6.7 ms per call for the 101-node chain on the shared two-core machine, against
         0.05 ms for two implicit steps on one thread)."""
+        check_fork_safe()
         before = numba.get_num_threads()
         numba.set_num_threads(min(self.threads, before))
         try:

@@ -60,7 +60,7 @@ class PointMassEnv(TaskEnv):
     The scene's point-mass start (quasi-static for a free upper end, the rigid static equilibrium for a chain
     between two ground points), then ``settle_time`` [s] in the steady wind with the start attitude held
     (default 0), computed once per process; every reset returns to it with a fresh wind disturbance drawn from
-    ``np_random``.
+    ``np_random``. The reset info holds ``t`` (0 s) and ``reference_power_W`` (P_ref).
 
     ## Episode End
 
@@ -74,7 +74,16 @@ class PointMassEnv(TaskEnv):
     scene, scene_options (keyword overrides of ``load_scene``: ``element_length`` [m], default 1 m, ``dt`` [s],
     ``method``, ``n_wings``), control_dt [s] (a whole number of the scene's steps), episode_time [s],
     settle_time [s], groups, pitch_range_deg, roll_range_deg, disturbances, wind_dt [s], reward (RewardConfig or
-    dict), min_altitude [m], breaking_factor [-].
+    dict), min_altitude [m], breaking_factor [-]; ``render_mode`` ("rgb_array" or "human": the string, its kites and
+    ground points in 3D, ``envs/pointmass/render.py``).
+
+    ## Processes
+
+    The point-mass kernels are numba parallel loops. A process forked (multiprocessing's "fork", the default of
+    ``gymnasium.make_vec(..., vectorization_mode="async")`` on Linux) from one whose numba threads run on GNU
+    OpenMP cannot run them (numba would end it): its env raises RuntimeError saying so at its first reset. Use
+    ``vector_kwargs={"context": "forkserver"}`` (or "spawn"; SB3's ``SubprocVecEnv`` does by default), the native
+    ``vectorization_mode="vector_entry_point"`` or "sync".
 
     ## The moving cable
 
@@ -92,7 +101,9 @@ class PointMassEnv(TaskEnv):
 
     ## Version History
 
-    * v0 (``laddermill_gym/PointMassChain-v0``): initial version.
+    * v0 (``laddermill_gym/PointMassChain-v0``): initial version. Later, with the same observations, rewards and
+      dynamics: rendering ("rgb_array", "human"), ``reference_power_W`` in the reset info, and arguments merged into
+      the registered defaults key by key (``scene_options``).
     """
 
     task_class = PointMassTask
@@ -109,7 +120,7 @@ class PointMassEnv(TaskEnv):
 
 class PointMassVectorEnv(TaskVectorEnv):
     """``num_envs`` copies of :class:`PointMassEnv` in one task (:class:`~laddermill_gym.envs.vector.TaskVectorEnv`;
-    copy i behaves exactly like a single env seeded seed + i; NextStep or SameStep autoreset). The copies are
+    copy i behaves exactly like a single env seeded seed + i; NextStep, SameStep or Disabled autoreset). The copies are
     stepped one after another by the compiled point-mass kernels within one Python call (no Python env object per
     copy, no batched kernel yet).
 
@@ -118,8 +129,8 @@ class PointMassVectorEnv(TaskVectorEnv):
     (:data:`~laddermill_gym.envs.pointmass.batch.POINTMASS_FAILURES`), each with its ``_name`` mask.
     ``lateral_offsets(obs)``: dy [m] of every kite (num_envs, n_kites).
 
-    Parameters: ``num_envs``, ``render_mode`` (None only: the point-mass env does not render), ``autoreset_mode``
-    and the arguments of the single env; others raise ValueError.
+    Parameters: ``num_envs``, ``render_mode`` ("rgb_array": one frame per copy, or None), ``autoreset_mode``
+    ("NextStep", "SameStep" or "Disabled") and the arguments of the single env; others raise ValueError.
     """
 
     task_class = PointMassTask

@@ -18,6 +18,7 @@ import numba
 import numpy as np
 
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
+from laddermill_gym.envs.pointmass.batch import check_fork_safe, thaw
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL, PU_SIZE, SX_SPEED
 from laddermill_gym.kernels.pointmass.explicit import CHUNK
 from laddermill_gym.ladder.pointmass_scene import PointMassScene
@@ -43,15 +44,15 @@ class MillStart:
 
 
 @functools.lru_cache(maxsize=4)
-def mill_task_start(scene: str, options: tuple) -> tuple[PointMassScene, MillStart]:
+def mill_task_start(scene: str, options) -> tuple[PointMassScene, MillStart]:
     """(scene at the point-mass fidelity, :class:`MillStart`) of a moving-cable ``scene`` with ``load_scene``
-    overrides ``options`` (sorted (key, value) pairs): the rigid mill's periodic operating point mapped to the
-    point-mass mill (``ladder.pointmass_mill.periodic_mill_start``; the rigid run costs about 30 s, once per
+    options ``options`` (a dict made hashable by ``batch.freeze``): the rigid mill's periodic operating point mapped
+    to the point-mass mill (``ladder.pointmass_mill.periodic_mill_start``; the rigid run costs about 30 s, once per
     process), then one period of the point-mass mill from it for the mean power. Memoised per process; the arrays
     are read-only."""
     from laddermill_gym.ladder.pointmass_mill import periodic_mill_start
 
-    sc = load_scene(scene, fidelity="pointmass", **dict(options))
+    sc = load_scene(scene, fidelity="pointmass", **thaw(options))
     x0, sx0, t0, att, _ = periodic_mill_start(sc)
     att = np.array(att, dtype=float).reshape(-1, PU_SIZE)
     sim = PointMassMillSimulator(sc.string, sc.station, x0, att.ravel(), sc.dt, sc.method, t0=t0, station_x=sx0,
@@ -111,6 +112,7 @@ class PointMassMillBatch:
         """Copy ``b`` back at the start, offsets zero, with the air of ``field`` (its modulation shifted to start at
         the start time t0; None: the steady profile). A gust grid is refused: the kernels sample it at the absolute
         time, which starts at t0 here, past its fade-in."""
+        check_fork_safe()
         st, sc = self.start, self.scene
         self.states[b] = st.x0
         sim = _EnvMillSimulator(self.string, sc.station, self.states[b], st.attitudes.ravel(), sc.dt, sc.method,
@@ -136,6 +138,7 @@ class PointMassMillBatch:
     def step(self, nsteps: np.ndarray) -> None:
         """Advance copy b by ``nsteps[b]`` steps of dt (0 or less: untouched) with its ``offsets``; its time by the
         steps done, its ``status`` to the kernel's (a failed copy stays at its failed step), tensions and slots."""
+        check_fork_safe()
         before = numba.get_num_threads()
         numba.set_num_threads(min(self.threads, before))
         try:

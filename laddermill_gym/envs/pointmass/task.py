@@ -17,7 +17,14 @@ import numpy as np
 from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
 from laddermill_gym.atmosphere.disturbances import DirectionStep, sample_wind_field
 from laddermill_gym.envs.actions import clip_actions
-from laddermill_gym.envs.pointmass.batch import POINTMASS_FAILURES, PointMassBatch, pointmass_start
+from laddermill_gym.envs.pointmass.batch import (
+    POINTMASS_FAILURES,
+    PointMassBatch,
+    check_fork_safe,
+    freeze,
+    pointmass_start,
+    thaw,
+)
 from laddermill_gym.envs.pointmass.mill import PointMassMillBatch, mill_task_start
 from laddermill_gym.envs.task import RewardConfig, config_from
 from laddermill_gym.envs.task_base import TaskCore, check_copies, clip_observations, positive
@@ -44,9 +51,10 @@ OBS_PER_KITE = PKO_SIZE
 
 
 @functools.lru_cache(maxsize=8)
-def _has_station(scene: str, options: tuple) -> bool:
-    """Whether ``scene`` with ``load_scene`` overrides ``options`` is a moving cable (has a station)."""
-    return load_scene(scene, fidelity="pointmass", **dict(options)).station is not None
+def _has_station(scene: str, options) -> bool:
+    """Whether ``scene`` with the ``load_scene`` options ``options`` (:func:`~laddermill_gym.envs.pointmass.batch.
+    freeze`) is a moving cable (has a station)."""
+    return load_scene(scene, fidelity="pointmass", **thaw(options)).station is not None
 
 
 class PointMassTask(TaskCore):
@@ -62,8 +70,6 @@ class PointMassTask(TaskCore):
 
     failure_names = POINTMASS_FAILURES
     env_name = "point-mass"
-    #: the point-mass envs do not render
-    render_modes: tuple[str, ...] = ()
 
     def __init__(self, n_copies: int = 1, scene: str = "tethered_wing", scene_options: dict | None = None,
                  control_dt: float = 0.05, episode_time: float = 60.0, settle_time: float = 0.0,
@@ -82,16 +88,18 @@ class PointMassTask(TaskCore):
         self.breaking_factor = positive("breaking_factor", breaking_factor, "(-)")
         self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
         self.reward_config = rc = config_from(reward, RewardConfig, "reward")
-        options = tuple(sorted({"element_length": 1.0, **(scene_options or {})}.items()))
+        options = freeze({"element_length": 1.0, **(scene_options or {})})
         self.mill = None
         if _has_station(str(scene), options):
             if settle_time > 0:
                 raise ValueError(f"settle_time = {settle_time!r}: scene {scene!r} has a moving cable, which starts "
                                  "at its periodic operating point (settle_time must be 0)")
+            check_fork_safe()
             self.scene, self.mill = mill_task_start(str(scene), options)
             self.x_trim, self.u_trim = self.mill.x0, self.mill.attitudes.ravel()
         else:
-            self.scene, self.x_trim, self.u_trim = pointmass_start(str(scene), options, float(settle_time))
+            self.scene, self.x_trim, self.u_trim, start_tension = pointmass_start(str(scene), options,
+                                                                                  float(settle_time))
         sc, s = self.scene, self.scene.string
         self.string = s
         if s.n_kites < 1:
@@ -125,7 +133,7 @@ class PointMassTask(TaskCore):
             self.batch = PointMassBatch(sc, B)
             self.batch.states[:] = self.x_trim
             self.batch.controls[:] = self.u_trim
-            self.batch.update_tensions(np.ones(B, bool))
+            self.batch.tension[:] = start_tension  # the start's (memoised): building the env runs no kernel
             start_power = float(self._power(self.batch.tension[:1])[0])
         self.p_ref = rc.reference_power_W or start_power
         if not self.p_ref > 0:
@@ -246,6 +254,16 @@ class PointMassTask(TaskCore):
         return reward, terminated, truncated, info
 
     # ------------------------------------------------------------------ read-outs
+    def reset_info(self) -> dict:
+        """The single env's reset info beside ``t``: the reference power [W]."""
+        return {"reference_power_W": self.p_ref}
+
+    def renderer(self, interactive: bool = False):
+        """A 3D renderer of the copies (``envs/pointmass/render.py``): the string, its kites and ground points."""
+        from laddermill_gym.envs.pointmass.render import PointMassRenderer
+
+        return PointMassRenderer(self, interactive)
+
     def failure_text(self, b: int, code: int) -> str:
         """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0."""
         if code == 0:
