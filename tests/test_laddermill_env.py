@@ -291,7 +291,7 @@ def test_render_side_and_top_view():
     env.close()
     vec = LadderMillVectorEnv(2, render_mode="rgb_array", **small())
     vec.reset(seed=0)
-    assert vec.render().shape == (480, 640, 3)
+    assert [f.shape for f in vec.render()] == [(480, 640, 3)] * 2  # one frame per copy, as SyncVectorEnv
     vec.close()
 
 

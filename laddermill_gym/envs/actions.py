@@ -27,23 +27,74 @@ ACTION_MODES: tuple[str, ...] = ("tail", "alpha")
 GROUPINGS: tuple[str, ...] = ("per_wing", "all", "halves")
 
 
+class ActionError(ValueError, TypeError):
+    """An action that is not a finite real array of the action space's shape. Both a ValueError and a TypeError:
+    numpy raises either for such input, so code that catches either still catches this."""
+
+
+def _shown(action) -> str:
+    text = " ".join(repr(action).split())
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _need(shape: tuple[int, ...]) -> str:
+    return (f"an action must be a finite real array of shape {shape} (the action space is Box(-1, 1, {shape}, "
+            "float32); entries outside [-1, 1] are clipped and counted in info['n_clipped'])")
+
+
+def _real_array(action, shape: tuple[int, ...]) -> np.ndarray:
+    """``action`` as a numpy array of integer or float dtype; :class:`ActionError` otherwise."""
+    if action is None or isinstance(action, (str, bytes)):
+        raise ActionError(f"action = {_shown(action)}: {_need(shape)}")
+    try:
+        a = np.asarray(action)
+    except (ValueError, TypeError) as err:  # ragged nested lists
+        raise ActionError(f"action = {_shown(action)}: {_need(shape)} ({err})") from None
+    if a.dtype.kind not in "iuf":
+        kind = {"c": "complex numbers", "b": "booleans", "U": "strings", "S": "bytes", "O": "Python objects"}.get(
+            a.dtype.kind, "not real numbers")
+        raise ActionError(f"action = {_shown(action)} has dtype {a.dtype} ({kind}): {_need(shape)}")
+    return a
+
+
+def _finite(a: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
+    """float64 ``a`` reshaped to ``shape``; :class:`ActionError` naming the non-finite entries if any."""
+    a = a.astype(float).reshape(shape)
+    bad = ~np.isfinite(a)
+    if bad.any():
+        where = [tuple(int(i) for i in ix) for ix in np.argwhere(bad)[:4]]
+        raise ActionError(f"action has non-finite entries at {where} ({a[bad][:4]}): {_need(shape)}")
+    return a
+
+
+def action_array(action, shape: tuple[int, ...], also: tuple[tuple[int, ...], ...] = ()) -> np.ndarray:
+    """``action`` as a float64 array of ``shape`` (an array of one of the shapes ``also`` is reshaped to it). Raises
+    :class:`ActionError` saying what an action must be (a real array of that shape, entries in [-1, 1], outside
+    clipped) and what it got: None, a string, a complex, boolean or object array, another shape, a non-finite entry.
+    Nothing is rounded away: a complex action is refused, not cut to its real part."""
+    a = _real_array(action, shape)
+    if a.shape != shape and a.shape not in also:
+        raise ActionError(f"action = {_shown(action)} has shape {a.shape}: {_need(shape)}")
+    return _finite(a, shape)
+
+
 def single_action(action, n_actions: int, needs_reset: bool) -> np.ndarray:
-    """A single env's action as the task's batch of one, (1, n_actions) float64; RuntimeError when the episode
-    needs a reset, ValueError naming the expected shape."""
+    """A single env's action, shape (n_actions,) (or (1, n_actions)), as the task's batch of one, (1, n_actions)
+    float64; RuntimeError when the episode needs a reset, :class:`ActionError` (see :func:`action_array`)."""
     if needs_reset:
         raise RuntimeError("step() called before reset() or after the episode ended; call reset()")
-    a = np.asarray(action, dtype=float).reshape(-1)
-    if a.shape != (n_actions,):
-        raise ValueError(f"action: expected shape ({n_actions},), got {np.shape(action)}")
-    return a[None]
+    return action_array(action, (n_actions,), also=((1, n_actions),))[None]
 
 
 def clip_actions(action, n_copies: int, n_actions: int) -> tuple[np.ndarray, np.ndarray]:
     """The task's actions as (n_copies, n_actions) float64 clipped to [-1, 1], and the number of entries clipped per
-    copy (B,); ValueError naming the entries if any is not finite."""
-    a = np.asarray(action, dtype=float).reshape(n_copies, n_actions)
-    if not np.all(np.isfinite(a)):
-        raise ValueError(f"action has non-finite entries: {a[~np.isfinite(a)][:4]}")
+    copy (B,); :class:`ActionError` (see :func:`action_array`) unless the action is a finite real array of
+    n_copies x n_actions entries (of any shape, taken in row order)."""
+    shape = (n_copies, n_actions)
+    a = _real_array(action, shape)
+    if a.size != n_copies * n_actions:
+        raise ActionError(f"action = {_shown(action)} has shape {a.shape} ({a.size} entries): {_need(shape)}")
+    a = _finite(a, shape)
     return np.clip(a, -1.0, 1.0), np.count_nonzero(np.abs(a) > 1.0, axis=1)
 
 

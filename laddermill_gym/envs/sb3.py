@@ -19,7 +19,8 @@ import gymnasium as gym
 import numpy as np
 from stable_baselines3.common.vec_env import VecEnv
 
-from laddermill_gym.envs import ENV_IDS, env_arguments, task_class
+from laddermill_gym.envs import ENV_IDS, env_arguments, registered_arguments, task_class
+from laddermill_gym.envs.actions import action_array
 from laddermill_gym.envs.task import FAILURES, WingTask
 
 __all__ = ["TaskSB3VecEnv", "WingSB3VecEnv", "sb3_vec_env"]
@@ -55,7 +56,9 @@ class TaskSB3VecEnv(VecEnv):
         return self.task.obs.astype(np.float32)
 
     def step_async(self, actions: np.ndarray) -> None:
-        self._actions = np.asarray(actions, dtype=float).reshape(self.num_envs, self.task.n_actions)
+        """Take the actions (num_envs, n_actions); :class:`~laddermill_gym.envs.actions.ActionError` (nothing
+        stepped) unless they are a finite real array of that shape."""
+        self._actions = action_array(actions, (self.num_envs, self.task.n_actions))
 
     def step_wait(self):
         reward, terminated, truncated, info = self.task.step(self._actions)
@@ -122,14 +125,15 @@ class WingSB3VecEnv(TaskSB3VecEnv):
 
     def __init__(self, num_envs: int, env_id: str = "laddermill_gym/TetheredWing-v0", render_mode=None,
                  **task_kwargs):
-        kw = dict(ENV_IDS[env_id], **task_kwargs)  # the registered defaults, as gymnasium.make(env_id) uses
+        kw = registered_arguments(env_id, task_kwargs)  # the registered defaults, as gymnasium.make(env_id) uses
         super().__init__(WingTask(int(num_envs), **kw), env_id, kw, render_mode)
 
 
 def sb3_vec_env(env_id: str, num_envs: int, seed: int | None = None, render_mode: str | None = None,
                 **env_kwargs) -> TaskSB3VecEnv:
-    """SB3 VecEnv of ``num_envs`` copies of the registered environment ``env_id``: its registered defaults updated
-    with ``env_kwargs`` (the model ``gymnasium.make(env_id, **env_kwargs)`` builds), copy i seeded with
+    """SB3 VecEnv of ``num_envs`` copies of the registered environment ``env_id``: its registered defaults merged
+    with ``env_kwargs`` (``envs.registered_arguments``: the model ``gymnasium.make(env_id, **env_kwargs)`` builds,
+    dict-valued arguments such as ``scene_options`` merged key by key), copy i seeded with
     ``seed + i`` at its first reset; ``render_mode="rgb_array"`` for ``VecVideoRecorder``. ValueError names an
     argument the environment does not take."""
     if env_id not in ENV_IDS:
@@ -139,7 +143,7 @@ def sb3_vec_env(env_id: str, num_envs: int, seed: int | None = None, render_mode
     if unknown:
         raise ValueError(f"{', '.join(f'{k} = {env_kwargs[k]!r}' for k in unknown)}: {env_id} takes no such "
                          f"argument (known: {', '.join(known)})")
-    kw = dict(ENV_IDS[env_id], **env_kwargs)
+    kw = registered_arguments(env_id, env_kwargs)
     venv = TaskSB3VecEnv(task_class(env_id)(int(num_envs), **kw), env_id, kw, render_mode)
     if seed is not None:
         venv.seed(seed)

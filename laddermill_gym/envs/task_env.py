@@ -56,7 +56,9 @@ class TaskEnv(TaskRendering, gym.Env):
 
     Parameters: ``render_mode`` ("rgb_array", "human" where the task renders, or None) and the task's arguments
     (all but ``n_copies`` and ``parallel``; others raise ValueError naming them). ``max_episode_steps`` is ignored:
-    the episode ends at the task's ``episode_time``.
+    the episode ends at the task's ``episode_time``. An action is a finite real array (n_actions,) (or (1,
+    n_actions)); anything else (None, a scalar, a string, a complex or boolean array, another shape, NaN)
+    raises :class:`~laddermill_gym.envs.actions.ActionError` (a ValueError and a TypeError) before the env moves.
     """
 
     task_class: type

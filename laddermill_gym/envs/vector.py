@@ -1,7 +1,13 @@
 """The one native vector environment of every env family: all copies of a task stepped by one compiled kernel,
 parallel over copies (registered as the ``vector_entry_point`` of every env; ``gymnasium.make_vec(id, n,
 vectorization_mode="vector_entry_point")``). A family's vector env is a subclass that names its task
-(``task_class``) and says what its info holds; the checks, seeding, autoreset, info keys and rendering are here."""
+(``task_class``) and says what its info holds; the checks, seeding, autoreset, info keys and rendering are here.
+
+It follows Gymnasium's ``SyncVectorEnv`` over the family's single envs (copy i seeded seed + i) in everything a
+caller sees: observations, rewards, the three autoreset modes (NextStep, SameStep, Disabled with
+``reset(options={"reset_mask": mask})``), the info dict (each key with its ``_key`` mask: a copy reset in this call
+holds its reset info, ``t`` = 0 and the task's ``reset_info()``, and none of the step's keys, whose entries are then
+0 or None) and ``render()`` (one frame per copy)."""
 
 from __future__ import annotations
 
@@ -12,11 +18,8 @@ import numpy as np
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
+from laddermill_gym.envs.actions import action_array
 from laddermill_gym.envs.task_env import check_render_mode, check_task_arguments
-
-#: info entries of copies reset in a NextStep autoreset step (reported as 0)
-ZEROED_ON_RESET: tuple[str, ...] = ("failure", "n_clipped", "reward_power", "reward_lateral", "reward_rates",
-                                    "reward_effort", "reward_failure")
 
 
 def check_vector_arguments(num_envs, render_mode, autoreset_mode, task_class) -> AutoresetMode:
@@ -24,9 +27,11 @@ def check_vector_arguments(num_envs, render_mode, autoreset_mode, task_class) ->
     naming the argument and its value."""
     if isinstance(num_envs, bool) or int(num_envs) != num_envs or num_envs < 1:
         raise ValueError(f"num_envs = {num_envs!r}: must be a positive integer")
-    mode = AutoresetMode(autoreset_mode)
-    if mode == AutoresetMode.DISABLED:
-        raise ValueError("autoreset_mode = 'Disabled' is not supported: use 'NextStep' or 'SameStep'")
+    try:
+        mode = AutoresetMode(autoreset_mode)
+    except ValueError:
+        raise ValueError(f"autoreset_mode = {autoreset_mode!r}: must be one of "
+                         f"{[m.value for m in AutoresetMode]}") from None
     if not task_class.render_modes:
         check_render_mode(render_mode, (), task_class.env_name)
     if render_mode not in (None, "rgb_array"):
@@ -38,16 +43,19 @@ class TaskVectorEnv(VectorEnv):
     """The Gymnasium vector env of a task of B copies (the protocol of ``envs/task_base.py``); subclasses set
     ``task_class``.
 
-    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0; None only where the task does not render),
-    ``autoreset_mode``, ``parallel`` (numba thread pool; default from 32 copies on) and the task's arguments;
-    others raise ValueError naming them. ``info`` holds the task's info arrays, each with its ``_name`` mask, and
-    ``failure_name`` / ``failure_reason`` per copy.
+    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: ``render()`` returns one frame per copy; None only
+    where the task does not render), ``autoreset_mode``, ``parallel`` (numba thread pool; default from 32 copies on)
+    and the task's arguments; others raise ValueError naming them. ``info`` holds the task's info arrays, each with
+    its ``_name`` mask, and ``failure_name`` / ``failure_reason`` per copy; a copy reset in the call holds its reset
+    info instead (``t`` = 0 and the task's ``reset_info()``, e.g. ``reference_power_W``), as SyncVectorEnv gives.
 
     Copy i behaves exactly like the task's single env seeded with ``seed + i`` (bit for bit: same kernel, same
     arithmetic). Autoreset: ``autoreset_mode`` "NextStep" (Gymnasium's default: the step after an episode ends
-    resets that copy, ignores its action and reports reward 0 and failure 0) or "SameStep" (the reset
-    observation is returned at once; the final observation and info are in ``info["final_obs"]``,
-    ``info["final_info"]``). ``task.renderer()`` draws copy 0.
+    resets that copy, ignores its action and reports reward 0), "SameStep" (the reset observation is returned at
+    once; the final observation and info are in ``info["final_obs"]``, ``info["final_info"]``) or "Disabled" (the
+    caller resets ended copies with ``reset(options={"reset_mask": mask})``; stepping one before raises
+    RuntimeError). Actions: a finite real array (num_envs, n_actions); anything else raises
+    :class:`~laddermill_gym.envs.actions.ActionError` before any copy moves.
     """
 
     task_class: type
@@ -80,75 +88,134 @@ class TaskVectorEnv(VectorEnv):
         benchmark's lateral read-out; the task says which offsets)."""
         return self.task.lateral_offsets(obs)
 
-    def _seed(self, seed) -> None:
+    # ------------------------------------------------------------------ resets
+    def _reset_mask(self, options: dict | None) -> np.ndarray:
+        """``options["reset_mask"]`` checked as SyncVectorEnv checks it (a (num_envs,) bool numpy array with a True
+        entry; TypeError or ValueError otherwise), or every copy."""
+        if not options or "reset_mask" not in options:
+            return np.ones(self.num_envs, bool)
+        mask = options["reset_mask"]
+        if not isinstance(mask, np.ndarray):
+            raise TypeError(f"options['reset_mask'] must be a numpy array, got {type(mask)}")
+        if mask.shape != (self.num_envs,):
+            raise ValueError(f"options['reset_mask'] must have shape ({self.num_envs},), got {mask.shape}")
+        if mask.dtype != np.bool_:
+            raise TypeError(f"options['reset_mask'] must have dtype bool, got {mask.dtype}")
+        if not mask.any():
+            raise ValueError(f"options['reset_mask'] must hold at least one True entry, got {mask}")
+        return mask.copy()
+
+    def _seed(self, seed, mask: np.ndarray) -> None:
+        """New generators for the copies in ``mask`` whose seed is not None: ``seed`` an int (copy i: seed + i) or
+        num_envs seeds; the same generator a single env builds in ``Env.reset(seed=s)``."""
         if seed is None:
-            self._rngs = [np.random.default_rng() for _ in range(self.num_envs)]
             return
         seeds = ([int(seed) + i for i in range(self.num_envs)] if isinstance(seed, (int, np.integer))
                  else list(seed))
         if len(seeds) != self.num_envs:
             raise ValueError(f"seed: expected an int or {self.num_envs} seeds, got {len(seeds)}")
-        # the same generator a single env builds in Env.reset(seed=s)
-        self._rngs = [gym.utils.seeding.np_random(s)[0] for s in seeds]
+        for i in np.flatnonzero(mask):
+            if seeds[i] is not None:
+                self._rngs[i] = gym.utils.seeding.np_random(seeds[i])[0]
 
-    def reset(self, *, seed: int | list[int] | None = None, options: dict[str, Any] | None = None):
-        """Reset every copy; ``seed`` an int (copy i gets seed + i), a list of num_envs seeds or None (the copies
-        keep drawing from their generators)."""
-        if seed is not None:
-            self._seed(seed)
-        self.task.reset(np.ones(self.num_envs, bool), self._rngs)
-        self._autoreset[:] = False
-        info = {"t": self.task.batch.t.copy(), "_t": np.ones(self.num_envs, bool)}
-        return self.task.obs.astype(np.float32), info
+    def reset(self, *, seed: int | list[int | None] | None = None, options: dict[str, Any] | None = None):
+        """Reset the copies of ``options["reset_mask"]`` (default: every copy); ``seed`` an int (copy i gets
+        seed + i), a list of num_envs seeds (None: that copy keeps drawing from its generator) or None. The info
+        holds the reset copies' reset info (``t`` and the task's ``reset_info()``), each key with its mask."""
+        mask = self._reset_mask(options)
+        self._seed(seed, mask)
+        self.task.reset(mask, self._rngs)
+        self._autoreset[mask] = False
+        return self.task.obs.astype(np.float32), self._info(None, np.zeros(self.num_envs, bool), mask)
 
+    # ------------------------------------------------------------------ steps
     def step(self, actions):
-        a = np.asarray(actions, dtype=float).reshape(self.num_envs, self.task.n_actions)
+        """One control period of every copy (the autoreset mode says what a copy whose episode ended does)."""
         n = self.num_envs
-        if self.autoreset_mode == AutoresetMode.NEXT_STEP and self._autoreset.any():
-            resetting = self._autoreset.copy()
+        a = action_array(actions, (n, self.task.n_actions))
+        mode = self.autoreset_mode
+        if mode == AutoresetMode.DISABLED and self._autoreset.any():
+            raise RuntimeError(f"copies {np.flatnonzero(self._autoreset).tolist()} ended in the last step: with "
+                               "autoreset_mode Disabled, reset them with reset(options={'reset_mask': mask}) first")
+        resetting = self._autoreset.copy() if mode == AutoresetMode.NEXT_STEP else np.zeros(n, bool)
+        if resetting.any():
             self.task.reset(resetting, self._rngs)
             reward, terminated, truncated, info = self.task.step(a, mask=~resetting)
             reward[resetting] = 0.0
             terminated[resetting] = False
             truncated[resetting] = False
-            for k in ZEROED_ON_RESET:  # the terms a task reports (PumpingKite-v0 has no reward_effort)
-                if k in info:
-                    info[k][resetting] = 0
         else:
             reward, terminated, truncated, info = self.task.step(a)
         done = terminated | truncated
-        obs = self.task.obs.astype(np.float32)
-        # the single env's failure name and reason too, so native and sync vector envs give the same info keys
-        names = self.failure_names
-        codes = [int(c) for c in info["failure"]]
-        info["failure_name"] = np.array([names[c] for c in codes], dtype=object)
-        info["failure_reason"] = np.array([self.task.failure_text(i, c) if c else "" for i, c in enumerate(codes)],
-                                          dtype=object)
-        out: dict[str, Any] = {}
-        for k, v in info.items():
-            out[k] = v
-            out["_" + k] = np.ones(n, bool)
-        if self.autoreset_mode == AutoresetMode.SAME_STEP and done.any():
-            final_info = {k: v.copy() for k, v in out.items()}
-            final_obs = np.empty(n, dtype=object)
+        self._failure_text(info)
+        if mode == AutoresetMode.SAME_STEP and done.any():
+            final_obs = np.full(n, None, dtype=object)
             for i in np.flatnonzero(done):
-                final_obs[i] = obs[i].copy()
+                final_obs[i] = self.task.obs[i].astype(np.float32)
+            final_info = self._info(info, done, np.zeros(n, bool))
             self.task.reset(done, self._rngs)
-            obs = self.task.obs.astype(np.float32)
+            out = self._info(info, ~done, done)
             out["final_obs"], out["_final_obs"] = final_obs, done.copy()
             out["final_info"], out["_final_info"] = final_info, done.copy()
+        else:
+            out = self._info(info, ~resetting, resetting)
         self._autoreset = done
-        return obs, reward, terminated, truncated, out
+        return self.task.obs.astype(np.float32), reward, terminated, truncated, out
 
-    def render(self):
+    def _failure_text(self, info: dict) -> None:
+        """The single env's ``failure_name`` and ``failure_reason`` per copy into ``info``."""
+        codes = [int(c) for c in info["failure"]]
+        info["failure_name"] = np.array([self.failure_names[c] for c in codes], dtype=object)
+        info["failure_reason"] = np.array([self.task.failure_text(i, c) if c else "" for i, c in enumerate(codes)],
+                                          dtype=object)
+
+    def _info(self, step_info: dict | None, stepped: np.ndarray, reset: np.ndarray) -> dict[str, Any]:
+        """The vector info as SyncVectorEnv builds it from its single envs' infos: the task's step info arrays
+        (B, ...) for the copies ``stepped`` and the reset info for the copies ``reset``, each key with its mask;
+        a copy without a key holds 0 (None in an object array) there; a key no copy holds is left out."""
+        out: dict[str, Any] = {}
+        for k, v in (step_info if step_info is not None and stepped.any() else {}).items():
+            arr = np.array(v, dtype=_single_dtype(v))
+            arr[~stepped] = None if arr.dtype == object else 0
+            out[k], out["_" + k] = arr, stepped.copy()
+        if reset.any():
+            for k, value in {"t": 0.0, **self.task.reset_info()}.items():
+                if k not in out:
+                    out[k], out["_" + k] = _empty_like(value, self.num_envs), np.zeros(self.num_envs, bool)
+                out[k][reset] = value
+                out["_" + k] = out["_" + k] | reset
+        return out
+
+    # ------------------------------------------------------------------ rendering
+    def render(self) -> tuple | None:
+        """One RGB frame (H, W, 3) uint8 per copy, as SyncVectorEnv's tuple of its single envs' frames; None (with
+        a warning) without a render mode."""
         if self.render_mode != "rgb_array":
+            gym.logger.warn("render() called without a render_mode; pass render_mode='rgb_array'")
             return None
         if self._renderer is None:
             self._renderer = self.task.renderer()
-        return self._renderer.draw(0)
+        return tuple(self._renderer.draw(i) for i in range(self.num_envs))
 
     def close_extras(self, **kwargs):
         if self._renderer is not None:
             self._renderer.close()
             self._renderer = None
 
+
+def _single_dtype(v: np.ndarray):
+    """The dtype SyncVectorEnv's info array gets from the single env's entry: v[0].item() (a Python float, int or
+    bool: float64, int64, bool) for a (B,) numeric array, the array's own dtype otherwise."""
+    if v.ndim == 1 and v.dtype.kind in "fiub":
+        return {"f": np.float64, "i": np.int64, "u": np.int64, "b": np.bool_}[v.dtype.kind]
+    return v.dtype
+
+
+def _empty_like(value, n: int) -> np.ndarray:
+    """The array SyncVectorEnv starts for an info key first met with ``value``: zeros of its type for a number,
+    zeros of its shape and dtype for an array, None entries otherwise."""
+    if type(value) in (int, float, bool) or isinstance(value, np.number):
+        return np.zeros(n, dtype=type(value))
+    if isinstance(value, np.ndarray):
+        return np.zeros((n, *value.shape), dtype=value.dtype)
+    return np.full(n, None, dtype=object)

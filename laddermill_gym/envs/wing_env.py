@@ -87,8 +87,9 @@ class WingVectorEnv(TaskVectorEnv):
     altitude [m], time [s], clipped action entries and the failure code (0 flying; see
     :data:`laddermill_gym.envs.task.FAILURES`), each with its ``_name`` mask.
 
-    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0), ``autoreset_mode``, ``parallel`` (numba
-    thread pool; default from 32 copies on) and the :class:`~laddermill_gym.envs.task.WingTask` arguments.
+    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: one frame per copy), ``autoreset_mode`` ("NextStep",
+    "SameStep" or "Disabled"), ``parallel`` (numba thread pool; default from 32 copies on) and the
+    :class:`~laddermill_gym.envs.task.WingTask` arguments.
     """
 
     task_class = WingTask
