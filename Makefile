@@ -1,5 +1,5 @@
 # Developer shortcuts (run inside the project's venv)
-.PHONY: test slow lint bench simulate figures gust-bench work-precision docs
+.PHONY: test slow lint bench simulate figures gust-bench work-precision docs readme-figures
 
 test:
 	python -m pytest -q
@@ -17,6 +17,11 @@ bench:
 # runs the tutorials (about 2-3 minutes; laddermill_gym/docs/about_docs.md)
 docs:
 	NO_MKDOCS_2_WARNING=1 mkdocs build --strict
+
+# re-run the figures README and docs/controllers.md quote (main job, env sizes, TetheredWing-v0's open-loop and LQR
+# rows; about 5-8 minutes) into results/readme_figures.json and fail naming any the text no longer matches
+readme-figures:
+	python -m docsite.readme_figures --out results/readme_figures.json
 
 gust-bench:
 	laddermill gust-bench --suite gusts-v1 --controllers open_loop lqr --out results/gust_bench/gusts-v1

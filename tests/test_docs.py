@@ -141,3 +141,15 @@ def test_site_builds_strict_with_its_tutorials(tmp_path):
                  "tutorials/simulate_and_plot/index.html", "commands/index.html", "commands/simulate/index.html"):
         assert (tmp_path / "site" / page).is_file(), page
     assert seconds < 600, f"the docs build took {seconds:.0f} s"
+
+
+@pytest.mark.slow
+def test_readme_figures_are_what_their_commands_print(tmp_path):
+    """``make readme-figures``: the main job, every env's sizes and TetheredWing-v0's open-loop and LQR rows
+    re-run (several minutes: LadderMill-v0 finds its operating point) and compared with README and controllers.md."""
+    sys.path.insert(0, str(ROOT))
+    from docsite.readme_figures import differences, measure
+
+    figures = measure()
+    (tmp_path / "readme_figures.json").write_text(yaml.safe_dump(figures))
+    assert not differences(figures), differences(figures)

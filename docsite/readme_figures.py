@@ -1,0 +1,146 @@
+"""Re-run the figures README.md (and the controllers page) quote, write them to a JSON, and compare them with the text.
+
+``make readme-figures`` (``python -m docsite.readme_figures --out results/readme_figures.json``) measures:
+
+* the main job, README's first command without the GIF: how long the disturbed mill flies (``simulated ... s``);
+* every env id's action and observation sizes (``gymnasium.make(id)``; LadderMill-v0 finds its periodic operating
+  point first, 2-3 minutes);
+* TetheredWing-v0's open-loop and LQR rows of ``laddermill_gym/docs/controllers.md`` (``laddermill evaluate
+  --controllers open_loop lqr --episodes 1``).
+
+and then checks that README.md and the controllers page print those numbers (exit 1 naming each that differs).
+The slow test ``tests/test_docs.py::test_readme_figures_are_what_their_commands_print`` does the same. Not covered:
+machine-dependent timings (env steps/s, real-time factors: the benchmark pages say where and when they were
+measured) and the studies that take longer than a few minutes (Meijaard's, the trained policies' rows).
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import io
+import json
+import re
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+README = ROOT / "README.md"
+CONTROLLERS = ROOT / "laddermill_gym" / "docs" / "controllers.md"
+MAIN_JOB = ["simulate", "laddermill", "--start", "periodic", "--direction-step", "0.01", "--time", "60",
+            "--allow-breakdown", "--quiet"]
+
+
+def main_job() -> dict:
+    """The main job's simulated time [s] (it stops at the breakdown)."""
+    from laddermill_gym.cli import main
+
+    out = io.StringIO()
+    with tempfile.TemporaryDirectory() as tmp, contextlib.redirect_stdout(out):
+        main(MAIN_JOB + ["--out", tmp])
+    m = re.search(r"simulated ([\d.]+) s in", out.getvalue())
+    if m is None:
+        raise RuntimeError(f"laddermill {' '.join(MAIN_JOB)} printed no 'simulated ... s':\n{out.getvalue()}")
+    return {"main_job_simulated_s": m.group(1)}
+
+
+def env_sizes() -> dict:
+    """{name: [n_actions, n_observations]} of every registered id."""
+    import gymnasium as gym
+
+    from laddermill_gym.envs import ENV_IDS
+
+    sizes = {}
+    for env_id in ENV_IDS:
+        env = gym.make(env_id)
+        sizes[env_id.split("/", 1)[1]] = [int(env.action_space.shape[0]), int(env.observation_space.shape[0])]
+        env.close()
+    return {"env_sizes": sizes}
+
+
+def tethered_wing_rows() -> dict:
+    """TetheredWing-v0, one seeded episode: open loop and LQR (return, flown time, largest offset, mean power)."""
+    from laddermill_gym.envs import FAILURES
+    from laddermill_gym.harness.evaluate import evaluate
+
+    with tempfile.TemporaryDirectory() as tmp:
+        res = evaluate("laddermill_gym/TetheredWing-v0", ["open_loop", "lqr"], 1, {}, Path(tmp), progress=False)
+    rows = {}
+    for label, r in res.items():
+        code = int(r.failures[0])
+        rows[label] = {"return": f"{r.returns[0]:.0f}", "flew_s": f"{r.lengths_s[0]:.1f}",
+                       "failure": r.failure_names.get(code, FAILURES.get(code, str(code))) if code else "",
+                       "max_lateral_m": float(r.max_lateral_m[0].max()), "power_W": f"{r.mean_power_W[0]:.0f}"}
+    return {"tethered_wing": rows}
+
+
+def measure() -> dict:
+    return {**main_job(), **env_sizes(), **tethered_wing_rows()}
+
+
+def _flat(text: str) -> str:
+    return " ".join(text.split())
+
+
+def _env_rows(readme: str) -> dict[str, list[str]]:
+    """README's env table: name -> its cells."""
+    rows = {}
+    for line in readme.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) == 6 and cells[0].startswith("`") and cells[0].endswith("-v0`"):
+            rows[cells[0].strip("`")] = cells
+    return rows
+
+
+def differences(figures: dict) -> list[str]:
+    """Each quoted figure that is not what was measured, as a sentence; [] when all agree."""
+    readme, controllers = _flat(README.read_text()), _flat(CONTROLLERS.read_text())
+    bad = []
+    if f"({figures['main_job_simulated_s']} s simulated)" not in readme:
+        bad.append(f"README: the main job flies {figures['main_job_simulated_s']} s ('(... s simulated)')")
+    rows = _env_rows(README.read_text())
+    for name, (n_act, n_obs) in figures["env_sizes"].items():
+        cells = rows.get(name)
+        if cells is None or cells[2:4] != [str(n_act), str(n_obs)]:
+            bad.append(f"README's env table: {name} has {n_act} actions and {n_obs} observations, table row {cells}")
+    labels = {"open loop": "open_loop", "LQR": "lqr"}
+    for shown, key in labels.items():
+        r = figures["tethered_wing"][key]
+        flew = f"{r['flew_s']} s ({r['failure']})" if r["failure"] else f"{float(r['flew_s']):.0f} s"
+        m = re.search(rf"\| {re.escape(shown)} \| (\S+) \| ([^|]+) \| ([\d.]+) m \| (\d+) W \|", controllers)
+        if m is None:
+            bad.append(f"controllers.md: no TetheredWing-v0 row for {shown}")
+            continue
+        quoted_lat = float(m.group(3))
+        digits = len(m.group(3).split(".")[1]) if "." in m.group(3) else 0
+        ok = (m.group(1) == r["return"] and m.group(2).strip() == flew and m.group(4) == r["power_W"]
+              and round(r["max_lateral_m"], digits) == quoted_lat)
+        if not ok:
+            bad.append(f"controllers.md, TetheredWing-v0 {shown}: measured {r['return']}, {flew}, "
+                       f"{r['max_lateral_m']:.4g} m, {r['power_W']} W; quoted {m.group(0)}")
+    return bad
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(prog="python -m docsite.readme_figures", description=__doc__.split("\n\n")[0])
+    p.add_argument("--out", default="results/readme_figures.json", help="the JSON of the measured figures")
+    p.add_argument("--check-only", action="store_true", help="compare the text with an existing --out JSON")
+    args = p.parse_args(argv)
+    out = Path(args.out)
+    if args.check_only:
+        figures = json.loads(out.read_text())
+    else:
+        figures = measure()
+        out.parent.mkdir(parents=True, exist_ok=True)
+        out.write_text(json.dumps(figures, indent=1))
+        print(f"wrote {out}")
+    bad = differences(figures)
+    for line in bad:
+        print(f"stale: {line}")
+    print("every checked figure is what its command prints" if not bad else f"{len(bad)} stale figures")
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
