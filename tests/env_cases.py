@@ -1,12 +1,14 @@
 """Small arguments for every registered environment id, shared by the tests that run each id (the skeleton's
 contract, the Gymnasium conventions, the fuzz test): random winds (and start noise) so that seeds matter, an action
-amplitude, and a rollout length. Builds nothing and computes no test answer."""
+amplitude, and a rollout length; the malformed actions every env must refuse and a read-out of everything a step
+changes. Builds nothing and computes no test answer."""
 
 from __future__ import annotations
 
 import warnings
 
 import gymnasium as gym
+import numpy as np
 
 import laddermill_gym  # noqa: F401  (registers the ids)
 from laddermill_gym.envs import ENV_IDS, DirectionStep, RandomPerturbation
@@ -55,3 +57,44 @@ def make_native(env_id: str, n: int, **kw):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         return gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **case_kwargs(env_id, **kw))
+
+
+def invalid_actions(shape: tuple[int, ...]) -> list[tuple[str, object]]:
+    """(name, action) pairs that are not finite real arrays of ``shape``."""
+    n = shape[-1]
+    nan = np.zeros(shape)
+    nan.flat[1] = np.nan
+    inf = np.zeros(shape)
+    inf.flat[0] = -np.inf
+    return [("None", None), ("scalar", 0.5), ("empty", np.zeros(0)), ("one short", np.zeros(int(np.prod(shape)) - 1)),
+            ("one more", np.zeros((*shape[:-1], n + 1))), ("transposed", np.zeros(shape[::-1] + (2,))),
+            ("string", "0 0 0"), ("strings", np.full(shape, "0.1")), ("complex", np.full(shape, 0.1 + 0.2j)),
+            ("complex, imaginary 0", np.full(shape, 0.1 + 0j)), ("booleans", np.ones(shape, bool)),
+            ("objects", np.full(shape, None, dtype=object)), ("dict", {"a": 1}), ("ragged", [[0.0], [0.0, 0.0]]),
+            ("NaN", nan), ("-inf", inf)]
+
+
+def env_state(env) -> list:
+    """Everything a step would change: the task's snapshot, the observation, a vector env's autoreset flags and the
+    generators' states (last)."""
+    snap = env.task.snapshot()
+    rngs = env._rngs if hasattr(env, "_rngs") else [env.np_random]
+    flags = [env._autoreset.copy()] if hasattr(env, "_autoreset") else []
+    return [*_arrays(snap), env.task.obs.copy(), *flags, [r.bit_generator.state for r in rngs]]
+
+
+def _arrays(x) -> list:
+    """The arrays in a nest of dicts, tuples and lists (None left out)."""
+    if isinstance(x, dict):
+        return [a for v in x.values() for a in _arrays(v)]
+    if isinstance(x, (tuple, list)):
+        return [a for v in x for a in _arrays(v)]
+    return [] if x is None else [np.array(x, copy=True)]
+
+
+def assert_same_state(a: list, b: list) -> None:
+    """Two :func:`env_state` read-outs are equal."""
+    assert len(a) == len(b)
+    for x, y in zip(a[:-1], b[:-1], strict=True):
+        np.testing.assert_array_equal(x, y)
+    assert a[-1] == b[-1]

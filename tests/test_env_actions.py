@@ -14,56 +14,18 @@ import numpy as np
 import pytest
 
 from laddermill_gym.envs.actions import ActionError
-from tests.env_cases import IDS, TW, make_native, make_single
-
-
-def _invalid(shape: tuple[int, ...]) -> list[tuple[str, object]]:
-    """(name, action) pairs that are not finite real arrays of ``shape``."""
-    n = shape[-1]
-    nan = np.zeros(shape)
-    nan.flat[1] = np.nan
-    inf = np.zeros(shape)
-    inf.flat[0] = -np.inf
-    return [("None", None), ("scalar", 0.5), ("empty", np.zeros(0)), ("one short", np.zeros(int(np.prod(shape)) - 1)),
-            ("one more", np.zeros((*shape[:-1], n + 1))), ("transposed", np.zeros(shape[::-1] + (2,))),
-            ("string", "0 0 0"), ("strings", np.full(shape, "0.1")), ("complex", np.full(shape, 0.1 + 0.2j)),
-            ("complex, imaginary 0", np.full(shape, 0.1 + 0j)), ("booleans", np.ones(shape, bool)),
-            ("objects", np.full(shape, None, dtype=object)), ("dict", {"a": 1}), ("ragged", [[0.0], [0.0, 0.0]]),
-            ("NaN", nan), ("-inf", inf)]
-
-
-def _state(env) -> list:
-    """Everything a step would change: the task's snapshot, the observation and the generators' states."""
-    snap = env.task.snapshot()
-    rngs = env._rngs if hasattr(env, "_rngs") else [env.np_random]
-    return [*_arrays(snap), env.task.obs.copy(), [r.bit_generator.state for r in rngs]]
-
-
-def _arrays(x) -> list:
-    """The arrays in a nest of dicts, tuples and lists (None left out)."""
-    if isinstance(x, dict):
-        return [a for v in x.values() for a in _arrays(v)]
-    if isinstance(x, (tuple, list)):
-        return [a for v in x for a in _arrays(v)]
-    return [] if x is None else [np.array(x, copy=True)]
-
-
-def _assert_same(a: list, b: list) -> None:
-    assert len(a) == len(b)
-    for x, y in zip(a[:-1], b[:-1], strict=True):
-        np.testing.assert_array_equal(x, y)
-    assert a[-1] == b[-1]
+from tests.env_cases import IDS, TW, assert_same_state, env_state, invalid_actions, make_native, make_single
 
 
 def _refuses_everything_invalid(env, twin, shape):
-    before = _state(env)
-    for name, action in _invalid(shape):
+    before = env_state(env)
+    for name, action in invalid_actions(shape):
         with pytest.raises(ActionError) as err:
             env.step(action)
         msg = str(err.value)
         assert f"shape {shape}" in msg and "real array" in msg and "[-1, 1]" in msg, (name, msg)
         assert isinstance(err.value, ValueError) and isinstance(err.value, TypeError)
-        _assert_same(before, _state(env))
+        assert_same_state(before, env_state(env))
     a = np.full(shape, 0.05, np.float32)
     out, ref = env.step(a), twin.step(a)
     for x, y in zip(out[:4], ref[:4], strict=True):
@@ -118,7 +80,7 @@ def test_sb3_adapter_refuses_invalid_actions():
 
     venv = sb3_vec_env(TW, 2, seed=0, episode_time=1.0)
     venv.reset()
-    for _, action in _invalid((2, 3)):
+    for _, action in invalid_actions((2, 3)):
         with pytest.raises(ActionError, match=r"shape \(2, 3\)"):
             venv.step(action)
     obs, *_ = venv.step(np.zeros((2, 3), np.float32))
