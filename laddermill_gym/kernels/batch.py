@@ -49,6 +49,19 @@ def copy_views(b, M, kind, vehicle, WB, AB):
     return Mb, Wb
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def advance_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks):
+    """Advance copy b by nsteps[b] fixed steps of dt [s] (:func:`~laddermill_gym.kernels.fixed_steps.advance_breaks`;
+    0: none) from its time t[b] [s], as the step-and-observe kernels do before observing it. Returns (whether the
+    copy runs: False for nsteps[b] < 0, status, steps done, its model, its workspace: :func:`copy_views`)."""
+    Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
+    n = nsteps[b]
+    st, dn = OK, 0
+    if n > 0:
+        st, dn, _, _ = advance_breaks(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau, breaks)
+    return n >= 0, st, dn, Mb, Wb
+
+
 @njit(cache=True, error_model="numpy", parallel=True)
 def fixed_batch(t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, tableau, breaks, status, done):
     """Advance the states X (B, n_state) in place by n fixed steps of size dt with controls U (B, n_controls): RK4

@@ -102,41 +102,25 @@ def elongation_rate(kind, e, t, x, M, ln, l0, ld):
 @overload(model_rhs, inline="always")
 def _model_rhs(kind, t, x, u, dx, M, W):
     impl = _lookup(_RHS, kind, "model kind right-hand side")
-
-    def f(kind, t, x, u, dx, M, W):
-        return impl(kind, t, x, u, dx, M, W)
-
-    return f
+    return lambda kind, t, x, u, dx, M, W: impl(kind, t, x, u, dx, M, W)
 
 
 @overload(model_check, inline="always")
 def _model_check(kind, x, M, limits):
     impl = _lookup(_CHECK, kind, "model kind check")
-
-    def f(kind, x, M, limits):
-        return impl(kind, x, M, limits)
-
-    return f
+    return lambda kind, x, M, limits: impl(kind, x, M, limits)
 
 
 @overload(model_assemble, inline="always")
 def _model_assemble(kind, t, x, u, dx, M, W):
     impl = _lookup(_ASSEMBLE, kind, "model kind assembly (a linearly implicit integrator)")
-
-    def f(kind, t, x, u, dx, M, W):
-        return impl(kind, t, x, u, dx, M, W)
-
-    return f
+    return lambda kind, t, x, u, dx, M, W: impl(kind, t, x, u, dx, M, W)
 
 
 @overload(body_loads, inline="always")
 def _body_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
     impl = _lookup(_LOADS, vehicle, "vehicle body loads")
-
-    def f(vehicle, k, t, x, R, u, M, W, Dk, env):
-        return impl(vehicle, k, t, x, R, u, M, W, Dk, env)
-
-    return f
+    return lambda vehicle, k, t, x, R, u, M, W, Dk, env: impl(vehicle, k, t, x, R, u, M, W, Dk, env)
 
 
 @overload(rest_length, inline="always")

@@ -45,6 +45,14 @@ def normalise_and_check(x, M, limits):
     return model_check(M.kind, x, M, limits)
 
 
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+def _stage(t, x, a, k, xt, u, kout, M, W):
+    """One explicit stage: kout = f(t, xt) at xt = x + a k; returns the right-hand side's 0 or 1 (singular)."""
+    for i in range(x.size):
+        xt[i] = x[i] + a * k[i]
+    return rhs(t, xt, u, kout, M, W)
+
+
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def rk4_advance(t, x, u, dt, n, M, W, limits):
     """Advance x in place by n classic RK4 steps of size dt. Returns (status, steps done)."""
@@ -57,17 +65,11 @@ def rk4_advance(t, x, u, dt, n, M, W, limits):
             xp[i] = x[i]
         if rhs(t, x, u, k1, M, W) != 0:
             return SINGULAR, step
-        for i in range(ns):
-            xt[i] = x[i] + h2 * k1[i]
-        if rhs(t + h2, xt, u, k2, M, W) != 0:
+        if _stage(t + h2, x, h2, k1, xt, u, k2, M, W) != 0:
             return SINGULAR, step
-        for i in range(ns):
-            xt[i] = x[i] + h2 * k2[i]
-        if rhs(t + h2, xt, u, k3, M, W) != 0:
+        if _stage(t + h2, x, h2, k2, xt, u, k3, M, W) != 0:
             return SINGULAR, step
-        for i in range(ns):
-            xt[i] = x[i] + dt * k3[i]
-        if rhs(t + dt, xt, u, k4, M, W) != 0:
+        if _stage(t + dt, x, dt, k3, xt, u, k4, M, W) != 0:
             return SINGULAR, step
         for i in range(ns):
             x[i] += h6 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i])
@@ -101,6 +103,37 @@ def all_finite(v):
     return True
 
 
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+def _derivative(t, x, u, k, M, W):
+    """k = f(t, x) at an accepted state: SINGULAR (mass matrix), NONFINITE (a non-finite derivative) or OK."""
+    if rhs(t, x, u, k, M, W) != 0:
+        return SINGULAR
+    if not all_finite(k):
+        return NONFINITE
+    return OK
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+def trial_step(t, t_end, h):
+    """(h, the step to try from t [s], whether it is the last): h, unless it would leave a sliver before t_end
+    (t + 1.01 h >= t_end); then t_end - t, stretched or cut to land there (as HNW's DOPRI5). The error-controlled
+    methods keep h as their proposal after a last step (:func:`grown_step`)."""
+    if t + 1.01 * h >= t_end:
+        return h, t_end - t, True
+    return h, h, False
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+def grown_step(h, hp, err, expo, last):
+    """The step [s] to try after an accepted step h [s] with error norm err: h min(5, max(0.2, 0.9 err^expo))
+    (5 h at err = 0); after the ``last`` step, cut short to land on t_end, at least the proposal hp [s] (such a
+    step says little about the next one)."""
+    fac = min(5.0, max(0.2, 0.9 * err ** expo)) if err > 0.0 else 5.0
+    if not last:
+        return h * fac
+    return max(hp, h * fac)
+
+
 # dp54_advance is longer than 80 lines on purpose: the seven stages, the error norm and the step control share
 # one loop over the workspace's stage vectors, and every stage returns its own status from inside that loop;
 # split into helpers, each would have to hand a status and the step's state back through tuples.
@@ -121,18 +154,13 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
     ns = x.size
     acc = 0
     rej = 0
-    if rhs(t, x, u, k1, M, W) != 0:
-        return SINGULAR, acc, rej, h, t
-    if not all_finite(k1):  # at the accepted state no smaller step can help: stop at once (issue 13)
-        return NONFINITE, acc, rej, h, t
+    status = _derivative(t, x, u, k1, M, W)  # NONFINITE: at the accepted state no smaller step can help (issue 13)
+    if status != OK:
+        return status, acc, rej, h, t
     while t < t_end:
         if acc + rej >= max_steps:
             return BUDGET, acc, rej, h, t
-        last = False
-        hp = h
-        if t + 1.01 * h >= t_end:  # no sliver before t_end: stretch a step that would leave one (as HNW's DOPRI5)
-            h = t_end - t
-            last = True
+        hp, h, last = trial_step(t, t_end, h)
         for i in range(ns):
             xt[i] = x[i] + h * A21 * k1[i]
         if rhs(t + C2 * h, xt, u, k2, M, W) != 0:
@@ -174,15 +202,10 @@ def dp54_advance(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps):
             t = t_end if last else t + h
             acc += 1
             # first-same-as-last; after renormalisation re-evaluate for exactness
-            if rhs(t, x, u, k1, M, W) != 0:
-                return SINGULAR, acc, rej, h, t
-            if not all_finite(k1):
-                return NONFINITE, acc, rej, h, t
-            fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
-            if not last:
-                h *= min(5.0, max(0.2, fac))
-            else:  # keep the proposal: a step cut short to land on t_end says little about the next one
-                h = max(hp, h * min(5.0, max(0.2, fac)))
+            status = _derivative(t, x, u, k1, M, W)
+            if status != OK:
+                return status, acc, rej, h, t
+            h = grown_step(h, hp, err, -0.2, last)
         else:
             rej += 1
             h *= max(0.2, 0.9 * err ** -0.2)

@@ -201,9 +201,11 @@ def _transfers_due(sp, x, status):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def _book(sp, x, d):
-    """Book the transfer d (made in x): s less d pieces, one more (or less) transfer. LIMIT if the cable still
-    calls for one (it moved more than a piece in a step), else OK."""
+def _book(sp, x, d, status):
+    """Book the transfer d (made in x; none: ``status`` unchanged): s less d pieces, one more (or less) transfer.
+    LIMIT if the cable still calls for one (it moved more than a piece in a step), else OK."""
+    if d == 0:
+        return status
     o = int(sp[C.SP_XOFF])
     x[o + C.SX_MOVED] -= d * sp[C.SP_PIECE]
     x[o + C.SX_TRANSFERS] += d
@@ -215,10 +217,9 @@ def mill3d_check(kind, x, M, limits):
     """The rigid check, then at most one wing transfer; LIMIT if the cable moved more than one piece in a step."""
     status = rigid3d_check(kind, x, M, limits)
     d = _transfers_due(kind.station, x, status)
-    if d == 0:
-        return status
-    transfer_3d(kind.station, x, M, d > 0)
-    return _book(kind.station, x, d)
+    if d != 0:
+        transfer_3d(kind.station, x, M, d > 0)
+    return _book(kind.station, x, d, status)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
@@ -226,10 +227,9 @@ def mill2d_check(kind, x, M, limits):
     """The in-plane rigid check, then at most one wing transfer (see :func:`mill3d_check`)."""
     status = rigid2d_check(kind, x, M, limits)
     d = _transfers_due(kind.station, x, status)
-    if d == 0:
-        return status
-    transfer_2d(kind.station, x, M, d > 0)
-    return _book(kind.station, x, d)
+    if d != 0:
+        transfer_2d(kind.station, x, M, d > 0)
+    return _book(kind.station, x, d, status)
 
 
 def register_station_kinds(kind3d, kind2d, check3d, check2d, rest_length, elongation_rate, drive) -> None:

@@ -18,7 +18,7 @@ import math
 
 from numba import njit, prange
 
-from laddermill_gym.kernels.batch import copy_views
+from laddermill_gym.kernels.batch import advance_copy
 from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
     B3_POS,
     B3_RATE,
@@ -56,7 +56,6 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
     SINGULAR,
     V_ROTOR,
 )
-from laddermill_gym.kernels.fixed_steps import advance_breaks
 from laddermill_gym.kernels.integrate import rhs
 from laddermill_gym.rotorcraft.rotor_kernels import STATUS_OK
 
@@ -116,17 +115,11 @@ def _observe_craft(t, x, u, dx, M, W, cp, ref, tether_end, obs, aux):
 @njit(cache=True, error_model="numpy")
 def _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
                              tether_end, obs, aux, status, done):
-    n = nsteps[b]
-    if n < 0:
-        status[b] = OK
-        done[b] = 0
-        return
-    Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
-    st, dn = OK, 0
-    if n > 0:
-        st, dn, _, _ = advance_breaks(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau, breaks)
-    ost = _observe_craft(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, vehicle.cp, ref, tether_end, obs[b], aux[b])
-    status[b] = st if st != OK else ost
+    run, st, dn, Mb, Wb = advance_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks)
+    if run:
+        ost = _observe_craft(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, vehicle.cp, ref, tether_end, obs[b], aux[b])
+        st = st if st != OK else ost
+    status[b] = st
     done[b] = dn
 
 

@@ -89,6 +89,16 @@ def s_mul(a, b, tx, ty, tz, vx, vy, vz):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def add_s_mul(x, o, s_e, vx, vy, vz):
+    """x[o: o + 3] += S v for the element block s_e = (a, b, tx, ty, tz) of :func:`element_block`."""
+    a, b, tx, ty, tz = s_e
+    sx, sy, sz = s_mul(a, b, tx, ty, tz, vx, vy, vz)
+    x[o] += sx
+    x[o + 1] += sy
+    x[o + 2] += sz
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
 def q_mul(q, vx, vy, vz):
     """Symmetric q (6) times v."""
     return (q[0] * vx + q[3] * vy + q[4] * vz, q[3] * vx + q[1] * vy + q[5] * vz,
@@ -107,11 +117,7 @@ def sweep(x, tension, M, dt, j0, count, step, ckpt, mid, seg):
         j = j0 + i * step
         o = N3_SIZE * j + N3_VEL
         if i > 0:
-            a, b, tx, ty, tz = prev
-            sx, sy, sz = s_mul(a, b, tx, ty, tz, yx, yy, yz)
-            x[o] += sx
-            x[o + 1] += sy
-            x[o + 2] += sz
+            add_s_mul(x, o, prev, yx, yy, yz)
         q, prev = pivot_block(x, j, step, tension, M, dt, prev, q, i == 0)
         yx, yy, yz = q_mul(q, x[o], x[o + 1], x[o + 2])
         if (i + 1) % seg == 0 or i == count - 1:

@@ -27,13 +27,7 @@ from laddermill_gym.kernels.contract import (
     TM_DT,
     TM_T0,
 )
-from laddermill_gym.kernels.pointmass.forces import (
-    element_tension,
-    external_force,
-    n_elements,
-    node_mass,
-    string_force,
-)
+from laddermill_gym.kernels.pointmass.forces import element_tension, n_elements, node_force, node_mass
 from laddermill_gym.kernels.wind import modulation
 
 _FM = {"contract", "nsz", "arcp"}
@@ -104,15 +98,13 @@ def move_and_check(x, dt, par):
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _kick_chunk(t, x, u, dt, M, tension, s, d, j0, j1):
-    par = M.par
     for j in range(j0, j1):
-        fx, fy, fz = external_force(t, x, j, u, M, s, d)
-        gx, gy, gz = string_force(x, j, tension, par)
+        fx, fy, fz = node_force(t, x, j, u, M, tension, s, d)
         h = dt / node_mass(j, M)
         o = N3_SIZE * j + N3_VEL
-        x[o] += h * (fx + gx)
-        x[o + 1] += h * (fy + gy)
-        x[o + 2] += h * (fz + gz)
+        x[o] += h * fx
+        x[o + 1] += h * fy
+        x[o + 2] += h * fz
 
 
 @njit(cache=True, error_model="numpy", parallel=True)
@@ -139,14 +131,12 @@ def explicit_advance(t, x, u, dt, nsteps, M, W):
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _accel_chunk(t, x, u, M, tension, out, s, d, j0, j1):
-    par = M.par
     for j in range(j0, j1):
-        fx, fy, fz = external_force(t, x, j, u, M, s, d)
-        gx, gy, gz = string_force(x, j, tension, par)
+        fx, fy, fz = node_force(t, x, j, u, M, tension, s, d)
         m = node_mass(j, M)
-        out[3 * j] = (fx + gx) / m
-        out[3 * j + 1] = (fy + gy) / m
-        out[3 * j + 2] = (fz + gz) / m
+        out[3 * j] = fx / m
+        out[3 * j + 1] = fy / m
+        out[3 * j + 2] = fz / m
 
 
 @njit(cache=True, error_model="numpy", parallel=True)

@@ -243,3 +243,12 @@ def string_force(x, j, tension, par):
         t1 = tension[j + 1]
         fx, fy, fz = fx + t1 * ux, fy + t1 * uy, fz + t1 * uz
     return fx, fy, fz
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def node_force(t, x, j, u, M, tension, s, d):
+    """Total force [N] on free node j: :func:`external_force` (wind modulation s, d) plus :func:`string_force` of
+    the stored tensions (n_e,) [N]; what the explicit kick, the accelerations and the implicit assembly step on."""
+    fx, fy, fz = external_force(t, x, j, u, M, s, d)
+    gx, gy, gz = string_force(x, j, tension, M.par)
+    return fx + gx, fy + gy, fz + gz

@@ -28,7 +28,7 @@ from numba.np.ufunc.parallel import _iget_num_threads, _launch_threads
 
 from laddermill_gym.kernels.contract import N3_SIZE, N3_VEL, PM_OK, PP_N, TM_DT, TM_T0
 from laddermill_gym.kernels.pointmass.explicit import CHUNK, move_and_check, tensions
-from laddermill_gym.kernels.pointmass.forces import external_force, node_mass, string_force
+from laddermill_gym.kernels.pointmass.forces import node_force, node_mass
 from laddermill_gym.kernels.pointmass.partitioned import partitioned_solve, solver_parts
 from laddermill_gym.kernels.wind import modulation
 
@@ -41,15 +41,13 @@ _launch_threads()
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _assemble_chunk(t, x, u, dt, M, tension, s, d, j0, j1):
-    par = M.par
     for j in range(j0, j1):
-        fx, fy, fz = external_force(t, x, j, u, M, s, d)
-        gx, gy, gz = string_force(x, j, tension, par)
+        fx, fy, fz = node_force(t, x, j, u, M, tension, s, d)
         m = node_mass(j, M)
         o = N3_SIZE * j + N3_VEL
-        x[o] = m * x[o] + dt * (fx + gx)
-        x[o + 1] = m * x[o + 1] + dt * (fy + gy)
-        x[o + 2] = m * x[o + 2] + dt * (fz + gz)
+        x[o] = m * x[o] + dt * fx
+        x[o + 1] = m * x[o + 1] + dt * fy
+        x[o + 2] = m * x[o + 2] + dt * fz
 
 
 @njit(cache=True, error_model="numpy", parallel=True)

@@ -41,7 +41,17 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
     N3_VEL,
     PP_N,
 )
-from laddermill_gym.kernels.pointmass.blocks import back, element_block, inv_sym, pivot_block, q_mul, s_mul, sds, sweep
+from laddermill_gym.kernels.pointmass.blocks import (
+    add_s_mul,
+    back,
+    element_block,
+    inv_sym,
+    pivot_block,
+    q_mul,
+    s_mul,
+    sds,
+    sweep,
+)
 from laddermill_gym.kernels.pointmass.forces import node_mass
 
 _FM = {"contract", "nsz", "arcp"}
@@ -129,11 +139,7 @@ def _sweep_spike(x, tension, M, dt, j0, count, ckpt, row, seg):
     for i in range(count):
         o = N3_SIZE * (j0 + i) + N3_VEL
         if i > 0:
-            a, b, tx, ty, tz = prev
-            sx, sy, sz = s_mul(a, b, tx, ty, tz, yx, yy, yz)
-            x[o] += sx
-            x[o + 1] += sy
-            x[o + 2] += sz
+            add_s_mul(x, o, prev, yx, yy, yz)
             w = _sqw(prev, q, w)
             if (abs(w[0]) + abs(w[1]) + abs(w[2]) + abs(w[3]) + abs(w[4]) + abs(w[5]) + abs(w[6]) + abs(w[7])
                     + abs(w[8]) < TINY):

@@ -20,6 +20,28 @@ def eliminate6(D, U, Y, bv, c, p):
     _solve6(D, U, bv, c, p)
 
 
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+def _fast6(D, bsz, c, p):
+    """Whether block c is eliminated on the fast 6 x 6 path: a 6 x 6 block under a 6 x 6 parent whose diagonal
+    entries are all positive (finite or not)."""
+    if not (bsz[c] == 6 and p >= 0 and bsz[p] == 6):
+        return False
+    ok = True
+    for k in range(6):
+        if not D[c, k, k] > 0.0:
+            ok = False
+    return ok
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+def _coupling(D, U, Y, piv, c, n, m):
+    """Y[c] = D[c]^-1 U[c] (n x m) by the LU factors of D[c] (in D[c], piv[c])."""
+    for i in range(n):
+        for j in range(m):
+            Y[c, i, j] = U[c, i, j]
+    lu_solve_cols(D[c], piv[c], n, Y[c], m)
+
+
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
     """Solve the block system in place (solution in bv) by elimination children-first.
@@ -32,23 +54,15 @@ def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
         c = order[ii]
         n = bsz[c]
         p = parent[c]
-        if n == 6 and p >= 0 and bsz[p] == 6:
-            ok = True
-            for k in range(6):
-                if not D[c, k, k] > 0.0:
-                    ok = False
-            if ok:
-                eliminate6(D, U, Y, bv, c, p)
-                continue
+        if _fast6(D, bsz, c, p):
+            eliminate6(D, U, Y, bv, c, p)
+            continue
         if not lu_factor(D[c], piv[c], n):
             return False
         lu_solve_vec(D[c], piv[c], n, bv[c])
         if p >= 0:
             m = bsz[p]
-            for i in range(n):
-                for j in range(m):
-                    Y[c, i, j] = U[c, i, j]
-            lu_solve_cols(D[c], piv[c], n, Y[c], m)
+            _coupling(D, U, Y, piv, c, n, m)
             for k in range(n):
                 bk = bv[c, k]
                 for i in range(m):
@@ -148,23 +162,15 @@ def tree_factor(D, U, Y, piv, order, parent, bsz):
         c = order[ii]
         n = bsz[c]
         p = parent[c]
-        if n == 6 and p >= 0 and bsz[p] == 6:
-            ok = True
-            for k in range(6):
-                if not D[c, k, k] > 0.0:
-                    ok = False
-            if ok:
-                _factor6(D, U, Y, c, p)
-                piv[c, 0] = -1
-                continue
+        if _fast6(D, bsz, c, p):
+            _factor6(D, U, Y, c, p)
+            piv[c, 0] = -1
+            continue
         if not lu_factor(D[c], piv[c], n):
             return False
         if p >= 0:
             m = bsz[p]
-            for i in range(n):
-                for j in range(m):
-                    Y[c, i, j] = U[c, i, j]
-            lu_solve_cols(D[c], piv[c], n, Y[c], m)
+            _coupling(D, U, Y, piv, c, n, m)
             for k in range(n):
                 for i in range(m):
                     f = U[c, k, i]

@@ -95,16 +95,20 @@ def _all_finite(x):
     return True
 
 
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def _check_bounds(M, limits):
+    """(wings, free nodes, squared speed limit [m^2/s^2], squared rate limit [rad^2/s^2], ground height [m]): what
+    the post-step checks compare a state with (``limits``: ``LIM_SPEED``, ``LIM_RATE``, ``LIM_GROUND``)."""
+    return (M.wtype.size, M.node_mass.size, limits[C.LIM_SPEED] * limits[C.LIM_SPEED],
+            limits[C.LIM_RATE] * limits[C.LIM_RATE], limits[C.LIM_GROUND])
+
+
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def rigid3d_check(kind, x, M, limits):
     """Renormalise every body's quaternion and check speeds [m/s] and rates [rad/s] against ``limits``, and the
     heights -z [m] of the body CGs and free nodes against the ground height ``limits[LIM_GROUND]`` (GROUND at or
     below it)."""
-    nw = M.wtype.size
-    nn = M.node_mass.size
-    vmax2 = limits[C.LIM_SPEED] * limits[C.LIM_SPEED]
-    wmax2 = limits[C.LIM_RATE] * limits[C.LIM_RATE]
-    hg = limits[C.LIM_GROUND]
+    nw, nn, vmax2, wmax2, hg = _check_bounds(M, limits)
     if not _all_finite(x):
         return C.NONFINITE
     for k in range(nw):
@@ -135,11 +139,7 @@ def rigid3d_check(kind, x, M, limits):
 def rigid2d_check(kind, x, M, limits):
     """Check in-plane speeds [m/s] and pitch rates [rad/s] against ``limits``, and the heights -z [m] of the body
     CGs and free nodes against the ground height ``limits[LIM_GROUND]`` (GROUND at or below it)."""
-    nw = M.wtype.size
-    nn = M.node_mass.size
-    vmax2 = limits[C.LIM_SPEED] * limits[C.LIM_SPEED]
-    wmax2 = limits[C.LIM_RATE] * limits[C.LIM_RATE]
-    hg = limits[C.LIM_GROUND]
+    nw, nn, vmax2, wmax2, hg = _check_bounds(M, limits)
     if not _all_finite(x):
         return C.NONFINITE
     for k in range(nw):

@@ -12,7 +12,7 @@ import math
 
 from numba import njit, prange
 
-from laddermill_gym.kernels.batch import copy_views
+from laddermill_gym.kernels.batch import advance_copy
 from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes of this module)
     AUX_GROUND_END,
     AUX_GROUND_START,
@@ -36,7 +36,6 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes 
     TM_DT,
     TM_T0,
 )
-from laddermill_gym.kernels.fixed_steps import advance_breaks
 from laddermill_gym.kernels.integrate import rhs
 from laddermill_gym.kernels.wind import modulation, wind_point
 
@@ -107,17 +106,11 @@ def observe_state(t, x, u, M, W, nominal, below, ground, obs, aux):
 @njit(cache=True, error_model="numpy", fastmath=_FM)
 def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below,
                        ground, obs, aux, status, done):
-    n = nsteps[b]
-    if n < 0:
-        status[b] = OK
-        done[b] = 0
-        return
-    Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
-    st, dn = OK, 0
-    if n > 0:
-        st, dn, _, _ = advance_breaks(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau, breaks)
-    ost = _observe_one(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, nominal, below, ground, obs[b], aux[b])
-    status[b] = st if st != OK else ost
+    run, st, dn, Mb, Wb = advance_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks)
+    if run:
+        ost = _observe_one(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, nominal, below, ground, obs[b], aux[b])
+        st = st if st != OK else ost
+    status[b] = st
     done[b] = dn
 
 

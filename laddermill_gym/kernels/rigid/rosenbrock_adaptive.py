@@ -20,7 +20,7 @@ from numba import njit
 
 from laddermill_gym.kernels.contract import BUDGET, GROUND, LIMIT, NONFINITE, OK, SINGULAR, STALLED
 from laddermill_gym.kernels.dispatch import model_check
-from laddermill_gym.kernels.integrate import H_MIN_REL, all_finite
+from laddermill_gym.kernels.integrate import H_MIN_REL, all_finite, grown_step, trial_step
 from laddermill_gym.kernels.rigid.rosenbrock import w_step
 
 _FM = {"contract", "nsz", "arcp"}
@@ -59,11 +59,7 @@ def w_adaptive(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps, tableau, 
     while t < t_end:
         if acc + rej >= max_steps:
             return BUDGET, acc, rej, h, t
-        last = False
-        hp = h
-        if t + 1.01 * h >= t_end:  # no sliver before t_end: stretch a step that would leave one (as HNW's DOPRI5)
-            h = t_end - t
-            last = True
+        hp, h, last = trial_step(t, t_end, h)
         if w_step(t, x, u, h, M, W, tableau) != OK:
             return SINGULAR, acc, rej, h, t
         err = _error_norm(x, xp, W, m, mhat, rtol, atol)
@@ -77,10 +73,7 @@ def w_adaptive(t, t_end, x, u, h, rtol, atol, M, W, limits, max_steps, tableau, 
         if err <= 1.0 and status == OK:
             t = t_end if last else t + h
             acc += 1
-            if not last:
-                h *= min(5.0, max(0.2, 0.9 * err ** expo)) if err > 0.0 else 5.0
-            else:  # keep the proposal: a step cut short to land on t_end says little about the next one
-                h = max(hp, h * (min(5.0, max(0.2, 0.9 * err ** expo)) if err > 0.0 else 5.0))
+            h = grown_step(h, hp, err, expo, last)
         else:
             for i in range(ns):
                 x[i] = xp[i]
