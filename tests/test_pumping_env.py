@@ -3,6 +3,8 @@ the reward's power term against a quadrature of the drum's tension and speed, te
 the factory and the evaluation harness."""
 
 
+import re
+
 import gymnasium as gym
 import numpy as np
 import pytest
@@ -14,7 +16,7 @@ from laddermill_gym.atmosphere.disturbances import DirectionStep, RandomPerturba
 from laddermill_gym.control.factory import make_controller
 from laddermill_gym.envs.pumping.env import PumpingKiteEnv, PumpingKiteVectorEnv
 from laddermill_gym.envs.pumping.observation import N_OBS, WINCH_OBS_INDEX
-from laddermill_gym.kernels.contract import B3_POS
+from laddermill_gym.kernels.contract import B3_POS, B3_RATE, SX_MOVED, SX_SPEED
 
 PK = "laddermill_gym/PumpingKite-v0"
 NOISY = dict(disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.01), DirectionStep(step=(-0.01, 0.01))],
@@ -99,6 +101,50 @@ def test_ground_contact_terminates():
     _, r, term, trunc, info = env.step(np.zeros(4, np.float32))
     assert term and not trunc and info["failure_name"] == "ground contact" and "altitude" not in info["failure_name"]
     assert r < -50
+
+
+def _limit_step(state_change, action):
+    """(info of the step, task) after ``state_change(task, x)`` edits copy 0's state at the start (then observed)."""
+    env = PumpingKiteEnv(disturbances=[], termination={"alpha_range_deg": (-180.0, 180.0), "max_abs_beta_deg": 90.0})
+    env.reset(seed=0)
+    state_change(env.task, env.task.batch.states[0])
+    env.task.observe()
+    _, _, term, _, info = env.step(np.array(action, np.float32))
+    assert term and info["failure"] == 1 and info["failure_name"].startswith("integration failed")
+    return info["failure_reason"], env.task
+
+
+def test_limit_failure_names_the_winch_and_its_rest_length():
+    """Issue 34 item 8: the winch's first element 2 cm above 5 % of its 300 m start length (the wing moved in along
+    the tether to meet it) reeling in at 10 m/s passes the 15 m limit within the 5 ms step: the reason names the
+    winch, a rest length under 15 m but within 10 m/s x 5 ms of 15.02 m, and the speed; not the generic list."""
+    def reel_in_short(task, x):
+        g = task.batch.assembly.fixed_points[0]
+        p = x[B3_POS: B3_POS + 3]
+        x[B3_POS: B3_POS + 3] = g + (p - g) * 15.02 / np.linalg.norm(p - g)
+        x[task.xoff + SX_MOVED] = 15.02 - 300.0
+        x[task.xoff + SX_SPEED] = -10.0
+
+    reason, task = _limit_step(reel_in_short, [0, 0, 0, -1.0])
+    assert task.winch.piece_length == 300.0  # configs/scenes/pumping_kite.yaml: one 300 m tether element
+    m = re.search(r"winch reeled the tether's first element in to a rest length of ([0-9.]+) m .* below 5 % of its "
+                  r"start length 300 m \(15 m\), winch speed (-[0-9.]+) m/s", reason)
+    assert m, reason
+    assert 15.02 - 10.5 * 0.005 < float(m.group(1)) < 15.0 and -10.5 < float(m.group(2)) < -10.0
+    assert "speed or rate limit" not in reason
+
+
+def test_limit_failure_names_the_rate_and_its_value():
+    """Issue 34 item 8: a roll rate of 150 rad/s at the start, over the scene's max_rate of 100 rad/s
+    (configs/scenes/pumping_kite.yaml), ends the first step; the reason names the wing's angular rate above 100
+    and at most the 150 it started from (the roll damping slows it), not the winch."""
+    def spin(task, x):
+        x[B3_RATE] = 150.0
+
+    reason, _ = _limit_step(spin, [0, 0, 0, 0.0])
+    m = re.search(r"speed or rate limit: wing 0 angular rate ([0-9.]+) rad/s > 100 rad/s", reason)
+    assert m, reason
+    assert 100.0 < float(m.group(1)) <= 150.0 and "winch" not in reason
 
 
 @pytest.mark.parametrize("spec", ["open_loop", "scripted", "lqr"])

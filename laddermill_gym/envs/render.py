@@ -10,11 +10,35 @@ from laddermill_gym.model.params import END_FIXED, END_NODE, END_WING
 from laddermill_gym.model.states import rotations_from_quaternions
 
 
-class SceneRenderer:
-    """Draws copy ``b`` of a :class:`~laddermill_gym.envs.task.WingTask` into an RGB array (H, W, 3) uint8, or
-    into a window (``interactive=True``, the ``human`` render mode)."""
+def scene_geometry(asm, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(CG positions (n, 3) [m], rotations (n, 3, 3) body -> global, cable segments (n_e, 2, 3) [m]) of a 3D
+    state ``x`` of the assembly ``asm`` (element ends: wing attachment points, free nodes, ground points)."""
+    nw = asm.n_wings
+    w = x[: B3_SIZE * nw].reshape(nw, B3_SIZE)
+    pos = w[:, B3_POS: B3_POS + 3]
+    rot = rotations_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
+    nodes = x[B3_SIZE * nw: B3_SIZE * nw + N3_SIZE * asm.n_nodes].reshape(-1, N3_SIZE)[:, N3_POS: N3_POS + 3]
+    el = asm.elements
+    seg = np.zeros((el.count, 2, 3))
+    for e in range(el.count):
+        for r in range(2):
+            kind, idx = el.end_kind[e, r], el.end_index[e, r]
+            if kind == END_WING:
+                seg[e, r] = pos[idx] + rot[idx] @ el.attach[e, r]
+            elif kind == END_NODE:
+                seg[e, r] = nodes[idx]
+            else:
+                assert kind == END_FIXED
+                seg[e, r] = asm.fixed_points[idx]
+    return pos, rot, seg
 
-    def __init__(self, task, interactive: bool = False, size_px: tuple[int, int] = (640, 480)):
+
+class FigureRenderer:
+    """A matplotlib figure of ``size_px`` (width, height) drawn into an RGB array (H, W, 3) uint8 or, with
+    ``interactive=True`` (the ``human`` render mode), into a window: what every renderer of the envs shares (a
+    subclass draws into ``fig`` and returns :meth:`frame`)."""
+
+    def __init__(self, interactive: bool = False, size_px: tuple[int, int] = (640, 480)):
         import matplotlib
 
         if not interactive:
@@ -35,6 +59,26 @@ class SceneRenderer:
             plt.ion()
             self.fig = plt.figure(figsize=(size_px[0] / 80, size_px[1] / 80), dpi=80)
             self._plt = plt
+
+    def frame(self):
+        """Draw the figure; the RGB frame (H, W, 3) uint8, or None in interactive mode (shown instead)."""
+        self.fig.canvas.draw()
+        if self._plt is not None:
+            self._plt.pause(1e-3)
+            return None
+        return np.asarray(self.fig.canvas.buffer_rgba())[:, :, :3].copy()
+
+    def close(self) -> None:
+        if self._plt is not None:
+            self._plt.close(self.fig)
+
+
+class SceneRenderer(FigureRenderer):
+    """Draws copy ``b`` of a :class:`~laddermill_gym.envs.task.WingTask` into an RGB array (H, W, 3) uint8, or
+    into a window (``interactive=True``, the ``human`` render mode)."""
+
+    def __init__(self, task, interactive: bool = False, size_px: tuple[int, int] = (640, 480)):
+        super().__init__(interactive, size_px)
         self.ax = self.fig.add_subplot(projection="3d")
         self.task = task
         asm = task.scene.assembly
@@ -47,33 +91,11 @@ class SceneRenderer:
         pad = 0.15 * float(np.max(hi - lo)) + max(w.span for w in asm.wing_types)
         self.box = (lo - pad, hi + pad)
 
-    def _geometry(self, b: int):
-        asm = self.asm
-        x = self.task.batch.states[b]
-        nw = asm.n_wings
-        w = x[: B3_SIZE * nw].reshape(nw, B3_SIZE)
-        pos = w[:, B3_POS: B3_POS + 3]
-        rot = rotations_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
-        nodes = x[B3_SIZE * nw: B3_SIZE * nw + N3_SIZE * asm.n_nodes].reshape(-1, N3_SIZE)[:, N3_POS: N3_POS + 3]
-        el = asm.elements
-
-        def end_point(e, r):
-            kind, idx = el.end_kind[e, r], el.end_index[e, r]
-            if kind == END_WING:
-                return pos[idx] + rot[idx] @ el.attach[e, r]
-            if kind == END_NODE:
-                return nodes[idx]
-            assert kind == END_FIXED
-            return asm.fixed_points[idx]
-
-        segments = [(end_point(e, 0), end_point(e, 1)) for e in range(el.count)]
-        return pos, rot, segments
-
     def draw(self, b: int = 0):
         """Redraw copy ``b``; returns the RGB frame (H, W, 3) uint8 (or None in interactive mode)."""
         ax = self.ax
         ax.cla()
-        pos, rot, segments = self._geometry(b)
+        pos, rot, segments = scene_geometry(self.asm, self.task.batch.states[b])
         up = np.array([1.0, 1.0, -1.0])  # plot altitude = -z
         for p, q in segments:
             seg = np.array([p, q]) * up
@@ -89,11 +111,7 @@ class SceneRenderer:
         ax.set_ylabel("y east [m]")
         ax.set_zlabel("altitude [m]")
         ax.set_title(f"{self.task.scene.name}  t = {self.task.batch.t[b]:6.2f} s")
-        self.fig.canvas.draw()
-        if self._plt is not None:
-            self._plt.pause(1e-3)
-            return None
-        return np.asarray(self.fig.canvas.buffer_rgba())[:, :, :3].copy()
+        return self.frame()
 
     def draw_bodies(self, pos: np.ndarray, rot: np.ndarray, up: np.ndarray) -> None:
         """Draw the bodies (CG positions pos (n, 3) [m], rotations rot (n, 3, 3)); a wing is its span (blue)
@@ -106,10 +124,6 @@ class SceneRenderer:
             body = np.array([pos[k] + wt.chord * rot[k][:, 0], pos[k] - 3.0 * wt.chord * rot[k][:, 0]]) * up
             ax.plot(span[:, 0], span[:, 1], span[:, 2], color="tab:blue", lw=2.0)
             ax.plot(body[:, 0], body[:, 1], body[:, 2], color="tab:red", lw=1.5)
-
-    def close(self) -> None:
-        if self._plt is not None:
-            self._plt.close(self.fig)
 
 
 class TaskRendering:

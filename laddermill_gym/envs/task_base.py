@@ -18,10 +18,16 @@ A task holds B copies of one system and answers the protocol those three use:
 from __future__ import annotations
 
 import math
+from functools import reduce
+from operator import add
 
 import numpy as np
 
+from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
+from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry, sample_wind_field
+from laddermill_gym.envs.task_settings import config_from
 from laddermill_gym.kernels.contract import B3_RATE, B3_SIZE, B3_VEL
+from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS
 
 __all__ = ["TaskCore", "positive", "check_copies", "substeps_per_period", "clip_observations", "add_wing_noise"]
@@ -90,8 +96,27 @@ class TaskCore:
     render_modes: tuple[str, ...] = ("rgb_array", "human")
     #: the name used in the envs' error messages
     env_name: str = "the env"
+    #: the settings dataclasses of the ``reward``, ``termination`` and ``initial_noise`` arguments
+    reward_class: type | None = None
+    termination_class: type | None = None
+    noise_class: type | None = None
 
     # ------------------------------------------------------------------ construction
+    def _common_arguments(self, n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
+                          initial_noise) -> int:
+        """Check the arguments every family takes and return B (``n_copies``): sets ``control_dt``,
+        ``episode_time``, ``wind_dt`` [s] (:meth:`_episode_times`), ``disturbances`` (objects, mappings or YAML
+        text; None: the paper's 0.01 rad direction step at 1 s), and ``reward_config``, ``termination_config``,
+        ``initial_noise`` from their arguments (``config_from`` the family's ``reward_class``,
+        ``termination_class``, ``noise_class``: None, an instance or a dict of its fields)."""
+        B = check_copies(n_copies)
+        self._episode_times(control_dt, episode_time, wind_dt)
+        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
+        self.reward_config = config_from(reward, self.reward_class, "reward")
+        self.termination_config = config_from(termination, self.termination_class, "termination")
+        self.initial_noise = config_from(initial_noise, self.noise_class, "initial_noise")
+        return B
+
     def _episode_times(self, control_dt, episode_time, wind_dt) -> None:
         """control_dt, episode_time and wind_dt [s], each checked to be a finite number > 0."""
         self.control_dt = positive("control_dt", control_dt, "s")
@@ -107,6 +132,23 @@ class TaskCore:
         self.breaking_tension = tc.breaking_factor * scene.cable.breaking_load
         self.alpha_lo, self.alpha_hi = np.radians(tc.alpha_range_deg)
         self.beta_max = math.radians(tc.max_abs_beta_deg)
+
+    def _make_batch(self, n_copies: int, assembly, settings, parallel, kernels, **batch_kwargs) -> None:
+        """``n_copies`` (B), ``parallel`` (numba's thread pool; None: from 32 copies on), ``_kernel`` (the first of
+        the (parallel, serial) ``kernels`` when parallel, else the second), the
+        :class:`~laddermill_gym.sim.batch.BatchSimulator` ``batch`` of ``assembly`` with a wind modulation sampled
+        every ``wind_dt`` over ``episode_time`` and room for the gust grid of a spatial disturbance (turbulence)
+        of ``disturbances`` (``batch_kwargs``: a vehicle's), and the step scratch ``_dx``, ``_nsteps``, ``steps``."""
+        B = self.n_copies = n_copies
+        self.parallel = B >= 32 if parallel is None else bool(parallel)
+        self._kernel = kernels[0] if self.parallel else kernels[1]
+        n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
+        geom = grid_geometry(self.disturbances, self.episode_time)
+        self.batch = BatchSimulator(assembly, B, settings, n_modulation=max(2, n_mod),
+                                    n_grid=0 if geom is None else geom.floats, **batch_kwargs)
+        self._dx = np.zeros((B, assembly.state_size))
+        self._nsteps = np.zeros(B, dtype=np.int64)
+        self.steps = np.zeros(B, dtype=np.int64)
 
     # ------------------------------------------------------------------ stepping
     def _wing_kernel_pass(self, nsteps: np.ndarray, nominal: np.ndarray, obs: np.ndarray) -> None:
@@ -130,6 +172,43 @@ class TaskCore:
         self._nsteps[sel] = self.n_substeps
         self._run(self._nsteps)
         self.steps[sel] += 1
+
+    def _reset_copies(self, mask: np.ndarray, rngs, state: np.ndarray, controls: np.ndarray, rotations: np.ndarray,
+                      action, body: int = 0) -> None:
+        """Start new episodes in the copies selected by the boolean ``mask`` (B,): a fresh wind disturbance and
+        the ``initial_noise`` (:func:`add_wing_noise` on the bodies from ``body`` on, whose start rotations are
+        ``rotations``) drawn in that order with ``rngs[b]`` (a numpy Generator per copy), added to ``state``;
+        ``controls``, t = 0, ``last_action`` = ``action``; then observe them. Other copies are untouched."""
+        b = self.batch
+        idx = np.flatnonzero(mask)
+        for i in idx:
+            rng = rngs[i]
+            b.set_wind(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rng))
+            x = np.array(state)
+            add_wing_noise(x[B3_SIZE * body:], rotations, self.initial_noise, rng)
+            b.states[i] = x
+        b.controls[idx] = controls
+        b.t[idx] = 0.0
+        self.last_action[idx] = action
+        self._start_copies(idx)
+
+    def shaped_reward(self, power: np.ndarray, p_ref: float, lateral: np.ndarray, rates: np.ndarray, effort, failure):
+        """(reward (B,), terminated (B,), truncated (B,), info with the reward terms) of the reward the families
+        share: w_P P / P_ref - w_y S(lateral) - w_w S(rates) [- w_u S(effort)] - failure_penalty [terminated],
+        S(x) = 1 - exp(-x) (a nan x: 1), with the weights of ``reward_config``; ``power`` [W], ``p_ref`` [W],
+        ``effort`` None where the family has no effort term; ``failure`` the codes (B,), 0: flying; truncated at
+        ``n_steps_max`` control periods."""
+        rc = self.reward_config
+        terminated = failure != 0
+        terms = {"reward_power": rc.power_weight * power / p_ref,
+                 "reward_lateral": -rc.lateral_weight * -np.expm1(-np.nan_to_num(lateral, nan=np.inf)),
+                 "reward_rates": -rc.rate_weight * -np.expm1(-np.nan_to_num(rates, nan=np.inf))}
+        if effort is not None:
+            terms["reward_effort"] = -rc.effort_weight * -np.expm1(-effort)
+        terms["reward_failure"] = -rc.failure_penalty * terminated
+        reward = reduce(add, terms.values())
+        truncated = (self.steps >= self.n_steps_max) & ~terminated
+        return reward, terminated, truncated, terms
 
     def observe(self) -> None:
         """Observe every copy at its current state without stepping (after restoring states by hand)."""

@@ -1,5 +1,7 @@
 """The wing task's settings: the reward and termination dataclasses, their checks, and ``config_from`` (a settings
-dataclass from None, an instance or a dict of its fields). Plain Python; re-exported by ``envs/task.py``."""
+dataclass from None, an instance or a dict of its fields), with the bases every family's reward and termination
+settings extend (:class:`ShapedRewardConfig`, :class:`FailureLimits`). Plain Python; re-exported by
+``envs/task.py``."""
 
 from __future__ import annotations
 
@@ -7,7 +9,8 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
-__all__ = ["RewardConfig", "TerminationConfig", "check_nonnegative_fields", "config_from"]
+__all__ = ["RewardConfig", "TerminationConfig", "ShapedRewardConfig", "FailureLimits", "check_nonnegative_fields",
+           "config_from"]
 
 
 def check_nonnegative_fields(obj, section: str, optional: tuple[str, ...] = ()) -> None:
@@ -29,7 +32,50 @@ def check_reference_power(cfg) -> None:
 
 
 @dataclass(frozen=True)
-class RewardConfig:
+class ShapedRewardConfig:
+    """The weights and scales of the reward terms every family shares: r = w_P P / P_ref - w_y S(lateral)
+    - w_w S(rates) - ..., S(x) = 1 - exp(-x) (``envs.task_base.TaskCore.shaped_reward``). ``power_weight`` w_P,
+    ``lateral_weight`` w_y, ``rate_weight`` w_w [-]; ``lateral_scale`` [m] (None: the family's default) and
+    ``rate_scale`` [rad/s] of the lateral offset and the rates. A family's config extends it (its defaults, its
+    own terms) and documents the reward; the checks here name the field and the value."""
+
+    power_weight: float = 1.0
+    lateral_weight: float = 1.0
+    lateral_scale: float | None = None
+    rate_weight: float = 0.1
+    rate_scale: float = 0.5
+
+    def __post_init__(self):
+        check_nonnegative_fields(self, "reward", optional=("lateral_scale", "reference_power_W"))
+        if self.rate_scale <= 0:
+            raise ValueError(f"reward.rate_scale = {self.rate_scale!r}: must be > 0 rad/s")
+        if self.lateral_scale is not None and self.lateral_scale <= 0:
+            raise ValueError(f"reward.lateral_scale = {self.lateral_scale!r}: must be > 0 m")
+
+
+@dataclass(frozen=True)
+class FailureLimits:
+    """The termination limits every family shares: ``min_altitude`` [m] (None: the family's default) and
+    ``breaking_factor`` [-] (a cable or tether element fails above this times its breaking load; each family
+    checks it). A family's config extends it with its attitude or aerodynamic ranges (:meth:`check_range`) and
+    documents them."""
+
+    min_altitude: float | None = None
+    breaking_factor: float = 1.0
+
+    def __post_init__(self):
+        if self.min_altitude is not None and not math.isfinite(self.min_altitude):
+            raise ValueError(f"termination.min_altitude = {self.min_altitude!r}: must be finite")
+
+    def check_range(self, name: str) -> None:
+        """ValueError naming ``termination.name`` unless that field is a finite (low, high) pair with low < high."""
+        lo, hi = getattr(self, name)
+        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+            raise ValueError(f"termination.{name} = {getattr(self, name)!r}: need finite low < high")
+
+
+@dataclass(frozen=True)
+class RewardConfig(ShapedRewardConfig):
     """Reward per control period: r = w_P P / P_ref - w_y S(dy) - w_w S(rates) - w_u S(effort).
 
     P is the power a ground generator would take in with the cable reeled out at ``v_reel``:
@@ -59,28 +105,20 @@ class RewardConfig:
     and scenes (the power term is then P / reference_power_W).
     """
 
-    power_weight: float = 1.0
-    lateral_weight: float = 1.0
-    lateral_scale: float | None = None
-    rate_weight: float = 0.1
-    rate_scale: float = 0.5
     effort_weight: float = 0.1
     reel_speed_fraction: float = 1.0 / 3.0
     failure_penalty: float = 0.0
     reference_power_W: float | None = None
 
     def __post_init__(self):
-        check_nonnegative_fields(self, "reward", optional=("lateral_scale", "reference_power_W"))
+        super().__post_init__()
         check_reference_power(self)
-        for name in ("rate_scale", "reel_speed_fraction"):
-            if getattr(self, name) <= 0:
-                raise ValueError(f"reward.{name} = {getattr(self, name)!r}: must be > 0")
-        if self.lateral_scale is not None and self.lateral_scale <= 0:
-            raise ValueError(f"reward.lateral_scale = {self.lateral_scale!r}: must be > 0 m")
+        if self.reel_speed_fraction <= 0:
+            raise ValueError(f"reward.reel_speed_fraction = {self.reel_speed_fraction!r}: must be > 0")
 
 
 @dataclass(frozen=True)
-class TerminationConfig:
+class TerminationConfig(FailureLimits):
     """When an episode ends as a physical failure (``terminated``).
 
     min_altitude [m]: a wing CG below it counts as ground contact; default half the wing span (a wing rolled
@@ -91,20 +129,15 @@ class TerminationConfig:
     (deep stall or reversed flow; the attached-flow range of the default wing is about -10 to 15 deg).
     """
 
-    min_altitude: float | None = None
-    breaking_factor: float = 1.0
     alpha_range_deg: tuple[float, float] = (-30.0, 60.0)
     max_abs_beta_deg: float = 60.0
 
     def __post_init__(self):
-        lo, hi = self.alpha_range_deg
-        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-            raise ValueError(f"termination.alpha_range_deg = {self.alpha_range_deg!r}: need finite low < high")
+        self.check_range("alpha_range_deg")
         if not (self.max_abs_beta_deg > 0 and self.breaking_factor > 0):
             raise ValueError(f"termination: max_abs_beta_deg = {self.max_abs_beta_deg!r} and breaking_factor = "
                              f"{self.breaking_factor!r} must be > 0")
-        if self.min_altitude is not None and not math.isfinite(self.min_altitude):
-            raise ValueError(f"termination.min_altitude = {self.min_altitude!r}: must be finite")
+        super().__post_init__()
 
 
 def config_from(value, cls, name: str):

@@ -1,6 +1,7 @@
-"""The sentences that say why a copy of a wing task ended (the wing scenes, the laddermill and the pumping kite
-share failure codes 1-4: integration, ground, cable, aerodynamic range), written once; each family names its status
-text for the LIMIT code and how it calls a wing ("wing k", "slot k", or the one wing)."""
+"""What the wing families' evaluations share, written once: the failure codes 1-4 (integration, ground, cable,
+aerodynamic range; the wing scenes, the laddermill and the pumping kite) and the sentences that say why a copy
+ended, and the lateral and rate penalties' arguments of their rewards. Each family names its status text for the
+LIMIT code and how it calls a wing ("wing k", "slot k", or the one wing)."""
 
 from __future__ import annotations
 
@@ -9,11 +10,32 @@ import math
 import numpy as np
 
 from laddermill_gym.envs.observation import OBS_INDEX
-from laddermill_gym.kernels.contract import GROUND, LIMIT, NONFINITE, SINGULAR
+from laddermill_gym.kernels.contract import GROUND, LIMIT, NONFINITE, OK, SINGULAR
 from laddermill_gym.kernels.rigid.observe import AUX_MAX_TENSION, AUX_MIN_ALTITUDE
 from laddermill_gym.sim.reports import ground_stop_text
 
-__all__ = ["status_texts", "shared_failure_text", "aero_range_text"]
+__all__ = ["status_texts", "shared_failure_text", "aero_range_text", "wing_failure_text", "wing_terms"]
+
+
+def wing_terms(task, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(lateral, rates, failure), each (B,), of the wing observation ``rows`` (B, n, >= 15) and the kernel's
+    read-outs after a control period: the means over the wings of (dy / lateral_scale)^2 and of (p^2 + r^2) /
+    rate_scale^2 (``reward_config``'s; nan or inf where a row is not finite), the arguments of the rewards'
+    saturating penalties, and each copy's failure code (0: flying); where several apply, integration breakdown
+    (1), then ground contact (2), cable overload (3), a wing's alpha or beta outside the termination range (4)."""
+    rc = task.reward_config
+    with np.errstate(invalid="ignore", over="ignore"):
+        lat = np.mean((rows[:, :, OBS_INDEX["dy"]] / task.lateral_scale) ** 2, axis=1)
+        rates = np.mean((rows[:, :, OBS_INDEX["p"]] ** 2 + rows[:, :, OBS_INDEX["r"]] ** 2) / rc.rate_scale ** 2,
+                        axis=1)
+    alpha, beta = rows[:, :, OBS_INDEX["alpha"]], rows[:, :, OBS_INDEX["beta"]]
+    failure = np.zeros(task.n_copies, dtype=np.int64)
+    failure[np.any((alpha < task.alpha_lo) | (alpha > task.alpha_hi) | (np.abs(beta) > task.beta_max), axis=1)] = 4
+    failure[task.aux[:, AUX_MAX_TENSION] > task.breaking_tension] = 3
+    failure[task.aux[:, AUX_MIN_ALTITUDE] < task.min_altitude] = 2
+    failure[task.batch.status != OK] = 1
+    failure[task.batch.status == GROUND] = 2
+    return lat, rates, failure
 
 
 def status_texts(limit_text: str) -> dict[int, str]:
@@ -36,6 +58,21 @@ def shared_failure_text(task, b: int, code: int, statuses: dict[int, str]) -> st
     if code == 3:
         return f"t = {t:.2f} s: cable tension {task.aux[b, AUX_MAX_TENSION]:.4g} N over {task.breaking_tension:.4g} N"
     return None
+
+
+def wing_failure_text(task, b: int, code: int, statuses: dict[int, str], rows: np.ndarray, label: str | None,
+                      lowest: str) -> str:
+    """A sentence on why copy ``b`` of a wing family ended with failure ``code`` ("" for 0): the integrator's
+    status (``statuses``), a ground stop of the integrator or the ``lowest`` wing's ("slot k", "wing") CG altitude
+    [m] below ``min_altitude``, the cable's tension [N], or the worst wing of the observation ``rows`` (n, 15)
+    outside the aerodynamic range (:func:`aero_range_text` with ``label``)."""
+    text = shared_failure_text(task, b, code, statuses)
+    if text is not None:
+        return text
+    if code == 2:
+        return (f"t = {float(task.batch.t[b]):.2f} s: ground contact, {lowest} CG at {altitude(task, b):.2f} m "
+                f"altitude (< {task.min_altitude:.3g} m)")
+    return aero_range_text(task, b, rows, label)
 
 
 def aero_range_text(task, b: int, rows: np.ndarray, label: str | None) -> str:

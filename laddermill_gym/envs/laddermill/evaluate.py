@@ -8,15 +8,8 @@ import math
 import numpy as np
 
 from laddermill_gym.envs.laddermill.observation import N_OBS_PER_SLOT, OBS_INDEX
-from laddermill_gym.envs.wing_failures import aero_range_text, altitude, shared_failure_text, status_texts
-from laddermill_gym.kernels.contract import (
-    B3_POS,
-    B3_SIZE,
-    GROUND,
-    OK,
-    SX_ENERGY,
-    SX_TRANSFERS,
-)
+from laddermill_gym.envs.wing_failures import status_texts, wing_failure_text, wing_terms
+from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, SX_ENERGY, SX_TRANSFERS
 from laddermill_gym.kernels.rigid.observe import AUX_GROUND_END, AUX_GROUND_START, AUX_MAX_TENSION, AUX_MIN_ALTITUDE
 from laddermill_gym.sim.recording import ALPHA_RANGE_DEG, MAX_ABS_BETA_DEG
 
@@ -35,15 +28,7 @@ def _slots(task) -> np.ndarray:
 def failure_codes(task) -> np.ndarray:
     """Failure code (B,) of each copy at its observed state (0: flying; codes of ``MILL_FAILURES``); where several
     apply, integration breakdown, then ground contact, cable overload, aerodynamic range."""
-    o = _slots(task)
-    alpha, beta = o[:, :, OBS_INDEX["alpha"]], o[:, :, OBS_INDEX["beta"]]
-    failure = np.zeros(task.n_copies, dtype=np.int64)
-    failure[np.any((alpha < task.alpha_lo) | (alpha > task.alpha_hi) | (np.abs(beta) > task.beta_max), axis=1)] = 4
-    failure[task.aux[:, AUX_MAX_TENSION] > task.breaking_tension] = 3
-    failure[task.aux[:, AUX_MIN_ALTITUDE] < task.min_altitude] = 2
-    failure[task.batch.status != OK] = 1
-    failure[task.batch.status == GROUND] = 2
-    return failure
+    return wing_terms(task, _slots(task))[2]
 
 
 def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
@@ -57,31 +42,17 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
     t [s]; n_clipped; n_aero_out_of_band (slots outside the wing data's attached-flow band, -14..18 deg alpha,
     |beta| <= 21 deg: a flag, not a termination); failure (code).
     """
-    rc, b = task.reward_config, task.batch
+    b = task.batch
     o = _slots(task)
-    with np.errstate(invalid="ignore", over="ignore"):
-        lat = np.mean((o[:, :, OBS_INDEX["dy"]] / task.lateral_scale) ** 2, axis=1)
-        rates = np.mean((o[:, :, OBS_INDEX["p"]] ** 2 + o[:, :, OBS_INDEX["r"]] ** 2) / rc.rate_scale ** 2, axis=1)
-    effort = np.mean(a ** 2, axis=1)
+    lat, rates, failure = wing_terms(task, o)
     power = np.where(np.isfinite(task.power), task.power, 0.0)
-    failure = failure_codes(task)
-    terminated = failure != 0
-    terms = {
-        "reward_power": rc.power_weight * power / task.p_ref,
-        "reward_lateral": -rc.lateral_weight * -np.expm1(-np.nan_to_num(lat, nan=np.inf)),
-        "reward_rates": -rc.rate_weight * -np.expm1(-np.nan_to_num(rates, nan=np.inf)),
-        "reward_effort": -rc.effort_weight * -np.expm1(-effort),
-        "reward_failure": -rc.failure_penalty * terminated,
-    }
-    reward = (terms["reward_power"] + terms["reward_lateral"] + terms["reward_rates"] + terms["reward_effort"]
-              + terms["reward_failure"])
-    truncated = (task.steps >= task.n_steps_max) & ~terminated
+    reward, terminated, truncated, info = task.shaped_reward(power, task.p_ref, lat, rates, np.mean(a ** 2, axis=1),
+                                                             failure)
     st = b.assembly.station
     x = b.states
     elapsed = np.maximum(b.done, 1) * b.settings.dt
     alpha, beta = o[:, :, OBS_INDEX["alpha"]], o[:, :, OBS_INDEX["beta"]]
     out_of_band = (alpha < _BAND_LO) | (alpha > _BAND_HI) | (np.abs(beta) > _BAND_BETA)
-    info = dict(terms)
     info.update(power_W=power, mechanical_power_W=task.mechanical_power.copy(),
                 mean_power_W=st.efficiency * (x[:, task.xoff + SX_ENERGY] - task.energy_start) / elapsed,
                 cable_speed_m_s=task.cable_speed.copy(),
@@ -94,12 +65,6 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
 
 def failure_text(task, b: int, code: int) -> str:
     """A sentence on why copy ``b`` terminated with failure ``code`` (time, slot and quantity); "" for code 0."""
-    text = shared_failure_text(task, b, code, _STATUS_TEXT)
-    if text is not None:
-        return text
-    if code == 2:
-        bt, n = task.batch, task.n_wings
-        k = int(np.argmax(bt.states[b, : B3_SIZE * n].reshape(n, B3_SIZE)[:, B3_POS + 2]))  # lowest: largest z
-        return (f"t = {float(bt.t[b]):.2f} s: ground contact, slot {k} CG at {altitude(task, b):.2f} m altitude "
-                f"(< {task.min_altitude:.3g} m)")
-    return aero_range_text(task, b, _slots(task)[b], "slot")
+    bt, n = task.batch, task.n_wings
+    k = int(np.argmax(bt.states[b, : B3_SIZE * n].reshape(n, B3_SIZE)[:, B3_POS + 2]))  # lowest: largest z
+    return wing_failure_text(task, b, code, _STATUS_TEXT, _slots(task)[b], "slot", f"slot {k}")

@@ -6,54 +6,17 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_SIZE, N3_POS, N3_SIZE
-from laddermill_gym.model.params import END_FIXED, END_NODE, END_WING
-from laddermill_gym.model.states import rotations_from_quaternions
+from laddermill_gym.envs.render import FigureRenderer, scene_geometry
 
-__all__ = ["MillRenderer", "loop_geometry"]
+__all__ = ["MillRenderer"]
 
 
-def loop_geometry(asm, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(CG positions (n, 3) [m], rotations (n, 3, 3) body -> global, cable segments (n_e, 2, 3) [m]) of a 3D
-    state ``x`` of the assembly ``asm`` (element ends: wing attachment points, free nodes, ground points)."""
-    nw = asm.n_wings
-    w = x[: B3_SIZE * nw].reshape(nw, B3_SIZE)
-    pos = w[:, B3_POS: B3_POS + 3]
-    rot = rotations_from_quaternions(w[:, B3_QUAT: B3_QUAT + 4])
-    nodes = x[B3_SIZE * nw: B3_SIZE * nw + N3_SIZE * asm.n_nodes].reshape(-1, N3_SIZE)[:, N3_POS: N3_POS + 3]
-    el = asm.elements
-    seg = np.zeros((el.count, 2, 3))
-    for e in range(el.count):
-        for r in range(2):
-            kind, idx = el.end_kind[e, r], el.end_index[e, r]
-            if kind == END_WING:
-                seg[e, r] = pos[idx] + rot[idx] @ el.attach[e, r]
-            elif kind == END_NODE:
-                seg[e, r] = nodes[idx]
-            else:
-                assert kind == END_FIXED
-                seg[e, r] = asm.fixed_points[idx]
-    return pos, rot, seg
-
-
-class MillRenderer:
+class MillRenderer(FigureRenderer):
     """Draws copy ``b`` of a :class:`~laddermill_gym.envs.laddermill.task.MillTask` into an RGB array (H, W, 3)
     uint8, or into a window (``interactive=True``, the ``human`` render mode)."""
 
     def __init__(self, task, interactive: bool = False, size_px: tuple[int, int] = (640, 480)):
-        if interactive:
-            import matplotlib.pyplot as plt
-
-            plt.ion()
-            self.fig = plt.figure(figsize=(size_px[0] / 80, size_px[1] / 80), dpi=80)
-            self._plt = plt
-        else:
-            from matplotlib.backends.backend_agg import FigureCanvasAgg
-            from matplotlib.figure import Figure
-
-            self.fig = Figure(figsize=(size_px[0] / 80, size_px[1] / 80), dpi=80)
-            FigureCanvasAgg(self.fig)
-            self._plt = None
+        super().__init__(interactive, size_px)
         self.side, self.top = self.fig.subplots(1, 2, gridspec_kw={"width_ratios": [3, 2]})
         self.task = task
         self.asm = task.batch.assembly
@@ -67,7 +30,7 @@ class MillRenderer:
     def draw(self, b: int = 0):
         """Redraw copy ``b``; returns the RGB frame (H, W, 3) uint8 (or None in interactive mode)."""
         task = self.task
-        pos, rot, seg = loop_geometry(self.asm, task.batch.states[b])
+        pos, rot, seg = scene_geometry(self.asm, task.batch.states[b])
         side, top = self.side, self.top
         side.cla()
         top.cla()
@@ -100,12 +63,4 @@ class MillRenderer:
         self.fig.suptitle(f"{task.scene.name}  t = {task.batch.t[b]:7.2f} s  P = {task.power[b] / 1e3:7.1f} kW  "
                           f"V_c = {task.cable_speed[b]:.2f} m/s", fontsize=10)
         self.fig.tight_layout()
-        self.fig.canvas.draw()
-        if self._plt is not None:
-            self._plt.pause(1e-3)
-            return None
-        return np.asarray(self.fig.canvas.buffer_rgba())[:, :, :3].copy()
-
-    def close(self) -> None:
-        if self._plt is not None:
-            self._plt.close(self.fig)
+        return self.frame()

@@ -10,12 +10,9 @@ same arithmetic per copy).
 from __future__ import annotations
 
 import dataclasses
-import math
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
-from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry, sample_wind_field
 from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.laddermill.actions import SlotActionMap, resolve_slot_groups
 from laddermill_gym.envs.laddermill.evaluate import evaluate_copies, failure_text
@@ -44,13 +41,7 @@ from laddermill_gym.envs.laddermill.settings import (
 )
 from laddermill_gym.envs.observation import wing_lateral_offsets
 from laddermill_gym.envs.task import config_from
-from laddermill_gym.envs.task_base import (
-    TaskCore,
-    add_wing_noise,
-    check_copies,
-    clip_observations,
-    substeps_per_period,
-)
+from laddermill_gym.envs.task_base import TaskCore, clip_observations, substeps_per_period
 from laddermill_gym.kernels.contract import B3_QUAT, B3_SIZE, N_CONTROLS, SX_ENERGY, SX_MOVED, SX_SPEED
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
@@ -62,7 +53,6 @@ from laddermill_gym.kernels.rigid.observe import (
 from laddermill_gym.ladder.scene import options_key
 from laddermill_gym.model.params import CONTROL_NAMES
 from laddermill_gym.model.states import rotations_from_quaternions
-from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.simulator import Simulator
 
 __all__ = ["MillTask"]
@@ -95,6 +85,7 @@ class MillTask(TaskCore):
     #: failure code -> name (the SB3 adapter and the evaluation harness read it)
     failure_names = MILL_FAILURES
     env_name = "LadderMill"
+    reward_class, termination_class, noise_class = MillRewardConfig, TerminationConfig, InitialNoise
 
     def __init__(self, n_copies: int = 1, scene: str = "laddermill", scene_options: dict | None = None,
                  control_dt: float = 0.05, episode_time: float = 120.0, groups="per_slot", n_bands: int = 4,
@@ -103,13 +94,8 @@ class MillTask(TaskCore):
                  operating_point: OperatingPoint | None = None, settle=None, initial_noise=None,
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
                  parallel: bool | None = None):
-        B = check_copies(n_copies)
-        self._episode_times(control_dt, episode_time, wind_dt)
-        # objects, mappings or YAML text; None: the paper's 0.01 rad direction step at 1 s
-        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
-        self.reward_config = config_from(reward, MillRewardConfig, "reward")
-        self.termination_config = config_from(termination, TerminationConfig, "termination")
-        self.initial_noise = config_from(initial_noise, InitialNoise, "initial_noise")
+        B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
+                                   initial_noise)
         self.settle = config_from(settle, SettleConfig, "settle")
         self.drum = config_from(drum, DrumConfig, "drum")
         self.speed = config_from(speed, SpeedCommandConfig, "speed")
@@ -127,13 +113,7 @@ class MillTask(TaskCore):
         self.cable_speed_command = bool(cable_speed_command)
         asm = self._assembly()
         self.n_wings = n = asm.n_wings
-        self.n_copies = B
-        self.parallel = B >= 32 if parallel is None else bool(parallel)
-        self._kernel = step_observe_batch if self.parallel else step_observe_serial
-        n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
-        geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid (turbulence)
-        self.batch = BatchSimulator(asm, B, sc.settings, n_modulation=max(2, n_mod),
-                                    n_grid=0 if geom is None else geom.floats)
+        self._make_batch(B, asm, sc.settings, parallel, (step_observe_batch, step_observe_serial))
         self.loop_points = loop_points(self.op, asm)
         check_turbulence_cover(self.disturbances, self.loop_points)
         self.xoff = asm.body_state_size
@@ -152,10 +132,7 @@ class MillTask(TaskCore):
         self.power = np.zeros(B)
         self.mechanical_power = np.zeros(B)
         self.cable_speed = np.zeros(B)
-        self._dx = np.zeros((B, asm.state_size))
-        self._nsteps = np.zeros(B, dtype=np.int64)
         self.energy_start = np.zeros(B)
-        self.steps = np.zeros(B, dtype=np.int64)
         self.last_action = np.zeros((B, self.n_actions))
         max_speed = asm.station.piece_length / dt
         self.obs_low, self.obs_high = mill_observation_bounds(sc, max_speed)
@@ -248,18 +225,7 @@ class MillTask(TaskCore):
         """Start new episodes in the copies selected by the boolean ``mask`` (B,): the operating point (plus the
         initial noise, per wing) and its controls, t = 0, a fresh wind disturbance, drawn with ``rngs[b]`` (a numpy
         Generator per copy: first the disturbances, then the noise), and observe them. Other copies are untouched."""
-        b = self.batch
-        idx = np.flatnonzero(mask)
-        for i in idx:
-            rng = rngs[i]
-            b.set_wind(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rng))
-            x = np.array(self.op.state)
-            add_wing_noise(x, self._rotation_op, self.initial_noise, rng)
-            b.states[i] = x
-        b.controls[idx] = self.u_op
-        b.t[idx] = 0.0
-        self.last_action[idx] = 0.0
-        self._start_copies(idx)
+        self._reset_copies(mask, rngs, self.op.state, self.u_op, self._rotation_op, 0.0)
 
     def step(self, action: np.ndarray, mask: np.ndarray | None = None):
         """Apply normalised actions (B, n_actions) for one control period to the copies in ``mask`` (default all)

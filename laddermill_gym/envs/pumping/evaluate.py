@@ -5,29 +5,25 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.envs.observation import OBS_INDEX
 from laddermill_gym.envs.pumping.observation import WINCH_OBS_INDEX
-from laddermill_gym.envs.wing_failures import aero_range_text, altitude, shared_failure_text, status_texts
-from laddermill_gym.kernels.contract import GROUND, OK, SX_ENERGY
+from laddermill_gym.envs.wing_failures import status_texts, wing_failure_text, wing_terms
+from laddermill_gym.kernels.contract import LIMIT, SX_ENERGY, SX_MOVED, SX_SPEED
 from laddermill_gym.kernels.rigid.observe import AUX_MAX_TENSION, AUX_MIN_ALTITUDE
+from laddermill_gym.kernels.winch import MIN_FRACTION
+from laddermill_gym.sim.batch import SUBSTEP_DIVISORS
+from laddermill_gym.sim.reports import state_problems, trial_state
+from laddermill_gym.sim.simulator import SimulationError
 
-__all__ = ["evaluate_copies", "failure_codes", "failure_text"]
+__all__ = ["evaluate_copies", "failure_codes", "failure_text", "limit_text"]
 
-_STATUS_TEXT = status_texts("speed or rate limit, or the winch reeled in below 5 % of the tether's start length")
+_LIMITS = "speed or rate limit, or the winch reeled in below 5 % of the tether's start length"
+_STATUS_TEXT = status_texts(_LIMITS)
 
 
 def failure_codes(task) -> np.ndarray:
     """Failure code (B,) of each copy at its observed state (0: flying; codes of ``PUMPING_FAILURES``); where several
     apply, integration breakdown, then ground contact, cable overload, aerodynamic range."""
-    o = task.raw_obs
-    alpha, beta = o[:, OBS_INDEX["alpha"]], o[:, OBS_INDEX["beta"]]
-    failure = np.zeros(task.n_copies, dtype=np.int64)
-    failure[(alpha < task.alpha_lo) | (alpha > task.alpha_hi) | (np.abs(beta) > task.beta_max)] = 4
-    failure[task.aux[:, AUX_MAX_TENSION] > task.breaking_tension] = 3
-    failure[task.aux[:, AUX_MIN_ALTITUDE] < task.min_altitude] = 2
-    failure[task.batch.status != OK] = 1
-    failure[task.batch.status == GROUND] = 2
-    return failure
+    return wing_terms(task, task.raw_obs[:, None, :])[2]
 
 
 def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
@@ -39,26 +35,15 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
     [W] at the drum over the period; winch_speed_m_s; paid_out_m; drum_tension_N and max_tension_N [N];
     min_altitude_m [m]; t [s]; n_clipped; failure (code).
     """
-    rc, b = task.reward_config, task.batch
+    b = task.batch
     o = task.raw_obs
-    with np.errstate(invalid="ignore", over="ignore"):
-        lat = (o[:, OBS_INDEX["dy"]] / task.lateral_scale) ** 2
-        rates = (o[:, OBS_INDEX["p"]] ** 2 + o[:, OBS_INDEX["r"]] ** 2) / rc.rate_scale ** 2
+    lat, rates, failure = wing_terms(task, o[:, None, :])
     elapsed = np.maximum(b.done, 1) * b.settings.dt
     power = np.where(np.isfinite(task.electrical_energy), task.electrical_energy / elapsed, 0.0)
-    failure = failure_codes(task)
-    terminated = failure != 0
-    terms = {
-        "reward_power": rc.power_weight * power / rc.reference_power,
-        "reward_lateral": -rc.lateral_weight * -np.expm1(-np.nan_to_num(lat, nan=np.inf)),
-        "reward_rates": -rc.rate_weight * -np.expm1(-np.nan_to_num(rates, nan=np.inf)),
-        "reward_failure": -rc.failure_penalty * terminated,
-    }
-    reward = terms["reward_power"] + terms["reward_lateral"] + terms["reward_rates"] + terms["reward_failure"]
-    truncated = (task.steps >= task.n_steps_max) & ~terminated
+    reward, terminated, truncated, info = task.shaped_reward(power, task.reward_config.reference_power, lat, rates,
+                                                             None, failure)
     x = b.states
     w = WINCH_OBS_INDEX
-    info = dict(terms)
     info.update(power_W=power, mechanical_power_W=(x[:, task.xoff + SX_ENERGY] - task.energy_start) / elapsed,
                 winch_speed_m_s=o[:, w["winch_speed"]].copy(), paid_out_m=o[:, w["paid_out"]].copy(),
                 drum_tension_N=o[:, w["drum_tension"]].copy(), max_tension_N=task.aux[:, AUX_MAX_TENSION].copy(),
@@ -68,11 +53,45 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
 
 
 def failure_text(task, b: int, code: int) -> str:
-    """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0."""
-    text = shared_failure_text(task, b, code, _STATUS_TEXT)
-    if text is not None:
-        return text
-    if code == 2:
-        return (f"t = {float(task.batch.t[b]):.2f} s: ground contact, wing CG at {altitude(task, b):.2f} m "
-                f"(< {task.min_altitude:.3g} m)")
-    return aero_range_text(task, b, task.raw_obs[b: b + 1], None)
+    """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0. A limit
+    of the integrator names the one that tripped, with its value (:func:`limit_text`)."""
+    if code == 1 and task.batch.status[b] == LIMIT:
+        return f"t = {float(task.batch.t[b]):.2f} s: integration failed ({limit_text(task, b)})"
+    return wing_failure_text(task, b, code, _STATUS_TEXT, task.raw_obs[b: b + 1], None, "wing")
+
+
+def limit_text(task, b: int) -> str:
+    """Which limit the failed physics step of copy ``b`` broke (the copy waits at its last good state; the step is
+    the batch's finest retry, dt / 16, ``sim.batch.SUBSTEP_DIVISORS``), with its value: a wing's speed [m/s] or
+    rate [rad/s] over the integrator's ``max_speed`` / ``max_rate`` (the step again without those checks,
+    ``sim.reports.trial_state``), or the winch element's rest length [m] under ``MIN_FRACTION`` of its start length
+    (``kernels/winch.py``; the step again without any check, classic RK4 on the right-hand side) with the winch
+    speed [m/s]; the family's words for LIMIT if the step shows neither."""
+    sim = task.simulator(b)
+    h = sim.settings.dt / SUBSTEP_DIVISORS[-1]  # a LIMIT stands after the batch's last, finest retry
+    trial = trial_state(sim, h)  # None: the winch check (or a breakdown) failed it too
+    try:
+        x = trial[1] if trial is not None else _unchecked_step(sim, h)
+    except SimulationError:  # singular or non-finite on the way: no value to name
+        return _LIMITS
+    culprits = state_problems(sim, x)
+    parts = [f"speed or rate limit: {', '.join(culprits[:4])}"] if culprits else []
+    w = task.winch
+    start = w.piece_length * w.first_fraction
+    rest = start + x[task.xoff + SX_MOVED]
+    if rest < MIN_FRACTION * w.piece_length:
+        parts.append(f"the winch reeled the tether's first element in to a rest length of {rest:.6g} m at t = "
+                     f"{sim.t + h:.6g} s, below {100 * MIN_FRACTION:g} % of its start length {start:.4g} m "
+                     f"({MIN_FRACTION * w.piece_length:.4g} m), winch speed {x[task.xoff + SX_SPEED]:.4g} m/s")
+    return "; ".join(parts) if parts else _LIMITS
+
+
+def _unchecked_step(sim, h: float) -> np.ndarray:
+    """The state one classic RK4 step of h [s] after the simulator's, with no check at all (the right-hand side
+    ``sim.rhs``): where the failed step would have gone."""
+    x0, t = sim.state, sim.t
+    k1 = sim.rhs(t, x0)
+    k2 = sim.rhs(t + 0.5 * h, x0 + 0.5 * h * k1)
+    k3 = sim.rhs(t + 0.5 * h, x0 + 0.5 * h * k2)
+    k4 = sim.rhs(t + h, x0 + h * k3)
+    return x0 + h / 6.0 * (k1 + 2.0 * (k2 + k3) + k4)

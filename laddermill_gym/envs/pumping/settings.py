@@ -7,7 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from laddermill_gym.envs.rotorcraft.settings import InitialNoise
-from laddermill_gym.envs.task import TerminationConfig, check_nonnegative_fields
+from laddermill_gym.envs.task_settings import ShapedRewardConfig, TerminationConfig
 
 __all__ = ["PumpingRewardConfig", "InitialNoise", "TerminationConfig", "PUMPING_FAILURES"]
 
@@ -19,7 +19,7 @@ PUMPING_FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite st
 
 
 @dataclass(frozen=True)
-class PumpingRewardConfig:
+class PumpingRewardConfig(ShapedRewardConfig):
     """Reward per control period of length dt: r = w_P E_el / (P_ref dt) - w_y S(dy) - w_w S(rates)
     - failure_penalty [terminated], S(x) = 1 - exp(-x) (bounded below).
 
@@ -38,19 +38,11 @@ class PumpingRewardConfig:
     docs/pumping.md), about ten times the LQR-assisted cycle's 400 s.
     """
 
+    lateral_weight: float = 0.1  # the other shared fields and their defaults: ShapedRewardConfig's
     reference_power: float = 1000.0
-    power_weight: float = 1.0
-    lateral_weight: float = 0.1
-    lateral_scale: float | None = None
-    rate_weight: float = 0.1
-    rate_scale: float = 0.5
     failure_penalty: float = 1.0e5
 
     def __post_init__(self):
-        check_nonnegative_fields(self, "reward", optional=("lateral_scale",))
+        super().__post_init__()
         if not self.reference_power > 0:
             raise ValueError(f"reward.reference_power = {self.reference_power!r}: must be > 0 W")
-        if self.rate_scale <= 0:
-            raise ValueError(f"reward.rate_scale = {self.rate_scale!r}: must be > 0 rad/s")
-        if self.lateral_scale is not None and self.lateral_scale <= 0:
-            raise ValueError(f"reward.lateral_scale = {self.lateral_scale!r}: must be > 0 m")

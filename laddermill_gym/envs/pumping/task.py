@@ -9,16 +9,9 @@ A single environment is the task with B = 1, so single and vector environments r
 from __future__ import annotations
 
 import functools
-import math
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
-from laddermill_gym.atmosphere.disturbances import (
-    DirectionStep,
-    grid_geometry,
-    sample_wind_field,
-)
 from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.observation import wing_lateral_offsets
 from laddermill_gym.envs.pumping.actions import PumpingActionMap
@@ -31,19 +24,11 @@ from laddermill_gym.envs.pumping.settings import (
     TerminationConfig,
 )
 from laddermill_gym.envs.pumping.winch_scene import PumpingScene, WinchSimulator, electrical_energy, load_pumping
-from laddermill_gym.envs.task import config_from
-from laddermill_gym.envs.task_base import (
-    TaskCore,
-    add_wing_noise,
-    check_copies,
-    clip_observations,
-    substeps_per_period,
-)
+from laddermill_gym.envs.task_base import TaskCore, clip_observations, substeps_per_period
 from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, N_CONTROLS, SX_ENERGY, SX_MOVED, SX_SPEED, TM_DT, TM_T0
 from laddermill_gym.kernels.rigid.observe import AUX_GROUND_START, N_AUX, step_observe_batch, step_observe_serial
 from laddermill_gym.kernels.wind import modulation, wind_point
 from laddermill_gym.model.states import rotations_from_quaternions
-from laddermill_gym.sim.batch import BatchSimulator
 
 __all__ = ["PumpingTask", "pumping_start"]
 
@@ -73,16 +58,13 @@ class PumpingTask(TaskCore):
 
     failure_names = PUMPING_FAILURES
     env_name = "PumpingKite"
+    reward_class, termination_class, noise_class = PumpingRewardConfig, TerminationConfig, InitialNoise
 
     def __init__(self, n_copies: int = 1, config: str = "pumping_kite", scene_options: dict | None = None,
                  control_dt: float = 0.05, episode_time: float = 400.0, initial_noise=None, disturbances=None,
                  wind_dt: float = 0.1, reward=None, termination=None, parallel: bool | None = None):
-        B = check_copies(n_copies)
-        self._episode_times(control_dt, episode_time, wind_dt)
-        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
-        self.reward_config = config_from(reward, PumpingRewardConfig, "reward")
-        self.termination_config = config_from(termination, TerminationConfig, "termination")
-        self.initial_noise = config_from(initial_noise, InitialNoise, "initial_noise")
+        B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
+                                   initial_noise)
         options = dict(scene_options or {})
         if options.get("dimension", 3) != 3:
             raise ValueError(f"scene_options: dimension = {options['dimension']!r}; PumpingKite is 3D")
@@ -94,13 +76,7 @@ class PumpingTask(TaskCore):
         asm = self.pumping.assembly
         self.winch = asm.station
         self.n_wings = 1
-        self.n_copies = B
-        self.parallel = B >= 32 if parallel is None else bool(parallel)
-        self._kernel = step_observe_batch if self.parallel else step_observe_serial
-        n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
-        geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid (turbulence)
-        self.batch = BatchSimulator(asm, B, sc.settings, n_modulation=max(2, n_mod),
-                                    n_grid=0 if geom is None else geom.floats)
+        self._make_batch(B, asm, sc.settings, parallel, (step_observe_batch, step_observe_serial))
         self.xoff = asm.body_state_size
         self.nominal = np.array(x0[B3_POS: B3_POS + 3], dtype=float).reshape(1, 3)
         self.below = np.array([sc.layout.piece_elements[0][-1]], dtype=np.int64)
@@ -113,10 +89,7 @@ class PumpingTask(TaskCore):
         self.obs = np.zeros((B, N_OBS))
         self.aux = np.zeros((B, N_AUX))
         self.electrical_energy = np.zeros(B)
-        self._dx = np.zeros((B, asm.state_size))
-        self._nsteps = np.zeros(B, dtype=np.int64)
         self.energy_start = np.zeros(B)
-        self.steps = np.zeros(B, dtype=np.int64)
         self.last_action = np.zeros((B, self.n_actions))
         self.obs_low, self.obs_high = pumping_observation_bounds(sc, self.pumping.cycle.reel_length)
         cyc = self.pumping.cycle
@@ -164,18 +137,7 @@ class PumpingTask(TaskCore):
         """Start new episodes in the copies selected by ``mask`` (B,): the trim at the start of reel-out (plus the
         initial noise), its controls, t = 0, a fresh wind disturbance, drawn with ``rngs[b]`` (first the
         disturbances, then the noise), and observe them. Other copies are untouched."""
-        b = self.batch
-        idx = np.flatnonzero(mask)
-        for i in idx:
-            rng = rngs[i]
-            b.set_wind(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rng))
-            x = np.array(self.x_trim)
-            add_wing_noise(x, self._rotation0, self.initial_noise, rng)
-            b.states[i] = x
-        b.controls[idx] = self.u_trim
-        b.t[idx] = 0.0
-        self.last_action[idx] = 0.0
-        self._start_copies(idx)
+        self._reset_copies(mask, rngs, self.x_trim, self.u_trim, self._rotation0, 0.0)
 
     def step(self, action: np.ndarray, mask: np.ndarray | None = None):
         """Apply normalised actions (B, 4) for one control period to the copies in ``mask`` (default all) and
@@ -200,7 +162,7 @@ class PumpingTask(TaskCore):
     def simulator(self, b: int = 0) -> WinchSimulator:
         """A :class:`~laddermill_gym.envs.pumping.winch_scene.WinchSimulator` of copy ``b`` (a snapshot of its state,
         time [s], controls and air)."""
-        return self._snapshot_simulator(WinchSimulator, b)
+        return self._snapshot_simulator(WinchSimulator, b, check=False)
 
     def lateral_offsets(self, obs: np.ndarray) -> np.ndarray:
         """Lateral CG offsets dy [m] (B, 1) of observations (B, 20)."""

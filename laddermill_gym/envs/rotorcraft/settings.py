@@ -6,11 +6,16 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from laddermill_gym.envs.task import check_nonnegative_fields, check_reference_power
+from laddermill_gym.envs.task_settings import (
+    FailureLimits,
+    ShapedRewardConfig,
+    check_nonnegative_fields,
+    check_reference_power,
+)
 
 
 @dataclass(frozen=True)
-class RotorcraftRewardConfig:
+class RotorcraftRewardConfig(ShapedRewardConfig):
     """Reward per control period: r = w_P P / P_ref - w_y S(y) - w_w S(rates) - w_u S(effort), S(x) = 1 - exp(-x).
 
     P [W] is the craft's net electrical power (:meth:`CraftSimulator.electrical_power`, Roberts' 95 %
@@ -25,26 +30,18 @@ class RotorcraftRewardConfig:
     ``reference_power_W`` [W]: a fixed P_ref instead of the operating point's, so returns compare across winds.
     """
 
-    power_weight: float = 1.0
-    lateral_weight: float = 1.0
-    lateral_scale: float | None = None
-    rate_weight: float = 0.1
-    rate_scale: float = 0.2
+    rate_scale: float = 0.2  # the other shared fields and their defaults: ShapedRewardConfig's
     effort_weight: float = 0.1
     failure_penalty: float = 0.0
     reference_power_W: float | None = None
 
     def __post_init__(self):
-        check_nonnegative_fields(self, "reward", optional=("lateral_scale", "reference_power_W"))
+        super().__post_init__()
         check_reference_power(self)
-        if self.rate_scale <= 0:
-            raise ValueError(f"reward.rate_scale = {self.rate_scale!r}: must be > 0 rad/s")
-        if self.lateral_scale is not None and self.lateral_scale <= 0:
-            raise ValueError(f"reward.lateral_scale = {self.lateral_scale!r}: must be > 0 m")
 
 
 @dataclass(frozen=True)
-class RotorcraftTerminationConfig:
+class RotorcraftTerminationConfig(FailureLimits):
     """When an episode ends as a physical failure (``terminated``).
 
     min_altitude [m]: CG altitude below which the craft has hit the ground; default half its span (hub
@@ -54,22 +51,17 @@ class RotorcraftTerminationConfig:
     range of the quasi-steady rotor model (the trim pitch of the default craft is about 25 deg).
     """
 
-    min_altitude: float | None = None
-    breaking_factor: float = 1.0
     max_abs_roll_deg: float = 60.0
     pitch_range_deg: tuple[float, float] = (-20.0, 80.0)
     max_abs_yaw_deg: float = 90.0
 
     def __post_init__(self):
-        lo, hi = self.pitch_range_deg
-        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-            raise ValueError(f"termination.pitch_range_deg = {self.pitch_range_deg!r}: need finite low < high")
+        self.check_range("pitch_range_deg")
         for name in ("breaking_factor", "max_abs_roll_deg", "max_abs_yaw_deg"):
             v = getattr(self, name)
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
                 raise ValueError(f"termination.{name} = {v!r}: must be a finite number > 0")
-        if self.min_altitude is not None and not math.isfinite(self.min_altitude):
-            raise ValueError(f"termination.min_altitude = {self.min_altitude!r}: must be finite")
+        super().__post_init__()
 
 
 @dataclass(frozen=True)

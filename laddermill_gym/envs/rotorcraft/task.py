@@ -10,13 +10,10 @@ bit for bit (tests/test_rotorcraft_vector.py checks it), as the wing environment
 
 from __future__ import annotations
 
-import math
 from collections import namedtuple
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
-from laddermill_gym.atmosphere.disturbances import DirectionStep, Disturbance, grid_geometry, sample_wind_field
 from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.rotorcraft.observation import OBS_P, OBS_R, OBS_Y, craft_observation_bounds
@@ -26,15 +23,7 @@ from laddermill_gym.envs.rotorcraft.settings import (
     RotorcraftTerminationConfig,
 )
 from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim
-from laddermill_gym.envs.task import config_from
-from laddermill_gym.envs.task_base import (
-    TaskCore,
-    add_wing_noise,
-    check_copies,
-    clip_observations,
-    positive,
-    whole_multiple,
-)
+from laddermill_gym.envs.task_base import TaskCore, clip_observations, positive, whole_multiple
 from laddermill_gym.kernels.contract import (
     B3_POS,
     B3_SIZE,
@@ -63,7 +52,6 @@ from laddermill_gym.kernels.contract import (
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
 from laddermill_gym.rotorcraft.craft import TETHER_NAMES, CraftSimulator
 from laddermill_gym.rotorcraft.craft_observe import CRAFT_BODY, craft_step_observe_batch, craft_step_observe_serial
-from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.reports import ground_stop_text
 
 __all__ = ["CraftTask", "CRAFT_FAILURES", "CraftScene"]
@@ -75,10 +63,6 @@ CRAFT_FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite stat
 _STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit exceeded"}
 #: What the scene renderer reads of a task's scene: the built assembly and a name.
 CraftScene = namedtuple("CraftScene", ["assembly", "name"])
-
-
-def _disturbances(disturbances) -> tuple[Disturbance, ...]:
-    return parse_disturbances(disturbances, (DirectionStep(),))
 
 
 class CraftTask(TaskCore):
@@ -119,6 +103,8 @@ class CraftTask(TaskCore):
     n_wings = 1
     failure_names = CRAFT_FAILURES
     env_name = "the rotorcraft env"
+    reward_class, termination_class = RotorcraftRewardConfig, RotorcraftTerminationConfig
+    noise_class = InitialNoise
     #: Read-only attributes the single env shows as its own (units and shapes above and in the code)
     env_attributes: tuple[str, ...] = (
         "craft", "x_trim", "u_trim", "trim_action", "control_dt", "episode_time", "wind_dt", "n_substeps",
@@ -129,23 +115,17 @@ class CraftTask(TaskCore):
                  collective: float | None = None, control_dt: float = 0.05, physics_dt: float | None = None,
                  episode_time: float = 120.0, disturbances=None, wind_dt: float = 0.1, initial_noise=None,
                  reward=None, termination=None, parallel: bool | None = None):
-        B = check_copies(n_copies)
-        self._episode_times(control_dt, episode_time, wind_dt)
+        B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
+                                   initial_noise)
         if wind_speed is not None:
             wind_speed = positive("wind_speed", wind_speed, "m/s")
         if physics_dt is not None:
             physics_dt = positive("physics_dt", physics_dt, "s")
-        self.disturbances = _disturbances(disturbances)
-        self.reward_config = config_from(reward, RotorcraftRewardConfig, "reward")
-        self.termination_config = config_from(termination, RotorcraftTerminationConfig, "termination")
-        self.initial_noise = config_from(initial_noise, InitialNoise, "initial_noise")
         self.craft, self.x_trim, self.u_trim = craft_trim(str(craft), wind_speed, collective, physics_dt)
         cfg = self.craft.config
         self.n_substeps = whole_multiple(self.control_dt, cfg.settings.dt, control_dt)
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
-        self.n_copies = B
-        self.parallel = self.n_copies >= 32 if parallel is None else bool(parallel)
-        self._build_batch()
+        self._build_batch(B, parallel)
         self._references()
         rc, tc = self.reward_config, self.termination_config
         self.lateral_scale = rc.lateral_scale if rc.lateral_scale is not None else 0.05 * cfg.tethers.length
@@ -160,27 +140,21 @@ class CraftTask(TaskCore):
         self._clip_obs()
 
     # ------------------------------------------------------------------ construction
-    def _build_batch(self) -> None:
+    def _build_batch(self, B: int, parallel: bool | None) -> None:
         """The batch of B copies at the trim, its kernel and scratch, and a single simulator of the craft for
         read-outs (linearisation, diagnosis)."""
-        c, B = self.craft, self.n_copies
+        c = self.craft
         self.sim = CraftSimulator(c.config, c.assembly, c.layout, self.x_trim, self.u_trim)
         self.scene = CraftScene(c.assembly, c.config.name)
-        n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
-        geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid
-        self.batch = BatchSimulator(c.assembly, B, c.config.settings, n_modulation=max(2, n_mod),
-                                    vehicle=self.sim.make_vehicle(), n_controls=self.sim.n_controls,
-                                    vehicle_sizes=self.sim.vehicle_sizes(), n_grid=0 if geom is None else geom.floats)
+        self._make_batch(B, c.assembly, c.config.settings, parallel,
+                         (craft_step_observe_batch, craft_step_observe_serial), vehicle=self.sim.make_vehicle(),
+                         n_controls=self.sim.n_controls, vehicle_sizes=self.sim.vehicle_sizes())
         self.batch.states[:] = self.x_trim
         self.batch.controls[:] = self.u_trim
-        self._kernel = craft_step_observe_batch if self.parallel else craft_step_observe_serial
         self.tether_end = np.array([els[-1] for els in c.layout.tether_elements], dtype=np.int64)
         self.raw_obs = np.zeros((B, N_CRAFT_OBS))
         self.obs = np.zeros((B, N_CRAFT_OBS))
         self.aux = np.zeros((B, N_CRAFT_AUX))
-        self._dx = np.zeros((B, c.assembly.state_size))
-        self._nsteps = np.zeros(B, dtype=np.int64)
-        self.steps = np.zeros(B, dtype=np.int64)
 
     def _references(self) -> None:
         """Trim read-outs (every copy sits at the trim in the undisturbed air: speed factor 1, no direction offset,
@@ -233,18 +207,8 @@ class CraftTask(TaskCore):
         """Start new episodes in the copies selected by the boolean ``mask`` (B,): the trim state (plus the
         initial noise) and controls, t = 0, a fresh wind disturbance, drawn with ``rngs[b]`` (a numpy Generator
         per copy: first the disturbances, then the noise), and observe them. Other copies are untouched."""
-        b = self.batch
-        idx = np.flatnonzero(mask)
-        for i in idx:
-            rng = rngs[i]
-            b.set_wind(int(i), sample_wind_field(self.disturbances, self.episode_time, self.wind_dt, rng))
-            x = np.array(self.x_trim)
-            add_wing_noise(x[B3_SIZE * CRAFT_BODY:], self._rotation_trim[None], self.initial_noise, rng)
-            b.states[i] = x
-        b.controls[idx] = self.u_trim
-        b.t[idx] = 0.0
-        self.last_action[idx] = self.trim_action
-        self._start_copies(idx)
+        self._reset_copies(mask, rngs, self.x_trim, self.u_trim, self._rotation_trim[None], self.trim_action,
+                           CRAFT_BODY)
 
     def step(self, action: np.ndarray, mask: np.ndarray | None = None):
         """Apply normalised actions (B, 2) for one control period to the copies in ``mask`` (default all) and
@@ -288,17 +252,9 @@ class CraftTask(TaskCore):
         rates = (o[:, OBS_P] ** 2 + o[:, OBS_R] ** 2) / rc.rate_scale ** 2
         effort = np.mean((a - self.trim_action) ** 2, axis=1)
         failure = self._failures()
-        terminated = failure != 0
         power = np.where(np.isfinite(aux[:, CA_POWER]), aux[:, CA_POWER], 0.0)
-        terms = {"reward_power": rc.power_weight * power / self.p_ref,
-                 "reward_lateral": -rc.lateral_weight * -np.expm1(-lat),
-                 "reward_rates": -rc.rate_weight * -np.expm1(-rates),
-                 "reward_effort": -rc.effort_weight * -np.expm1(-effort),
-                 "reward_failure": -rc.failure_penalty * terminated}
-        reward = (terms["reward_power"] + terms["reward_lateral"] + terms["reward_rates"] + terms["reward_effort"]
-                  + terms["reward_failure"])
-        truncated = (self.steps >= self.n_steps_max) & ~terminated
-        info = dict(terms, t=self.batch.t.copy(), power_W=power, thrust_N=aux[:, CA_THRUST: CA_THRUST + 2].copy(),
+        reward, terminated, truncated, info = self.shaped_reward(power, self.p_ref, lat, rates, effort, failure)
+        info.update(t=self.batch.t.copy(), power_W=power, thrust_N=aux[:, CA_THRUST: CA_THRUST + 2].copy(),
                     tether_tension_N=aux[:, CA_TENSION: CA_TENSION + 3].copy(), altitude_m=aux[:, CA_ALTITUDE].copy(),
                     max_tip_incidence_rad=np.max(aux[:, CA_TIP_AOA: CA_TIP_AOA + 2], axis=1), n_clipped=n_clipped,
                     failure=failure)
