@@ -207,10 +207,10 @@ def test_optimum_is_feasible_whatever_the_rounding_of_the_starts(monkeypatch, ca
     from laddermill_gym.quasisteady import site_optimise as so
 
     wind = _sheared_profiles()
-    orig = so._starts
+    orig = so.starting_points
     ratios = []
     for eps in (0.0, 1e-14, 1e-10, 1e-7):
-        monkeypatch.setattr(so, "_starts", lambda *a, eps=eps, **k: [
+        monkeypatch.setattr(so, "starting_points", lambda *a, eps=eps, **k: [
             p * (1.0 + eps * np.sin(np.arange(p.size) + 1.0)) for p in orig(*a, **k)])
         r = so.optimise(case, wind)
         assert r.feasible and r.solution.mean_power >= case.power_target * (1 - 1e-6)

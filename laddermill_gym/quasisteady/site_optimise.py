@@ -108,7 +108,7 @@ def optimise(case: SiteCase, wind: SiteWind, fixed: dict | None = None, starts: 
         w, p = _usable(wind, des.h)
         return solve_states(case, des, w, p).max_mean_power
 
-    for z0 in _starts(case, bounds, free, starts, max_power):
+    for z0 in starting_points(case, bounds, free, starts, max_power):
         solve(z0)                            # a feasible start is a candidate whatever SLSQP makes of it
         minimize(objective, z0, method="SLSQP", bounds=zb, constraints=cons,
                  options={"maxiter": 200, "ftol": 1e-10})
@@ -122,7 +122,7 @@ def optimise(case: SiteCase, wind: SiteWind, fixed: dict | None = None, starts: 
     return SiteResult(case, des, sol, bool(ok), time.perf_counter() - t0, count[0], int(np.sum(wind.weight > 0)))
 
 
-def _starts(case, bounds, free, n, max_power):
+def starting_points(case, bounds, free, n, max_power):
     """Starting points: altitude just above the shortest cable and higher, angle low and mid, a thick cable, and
     the kite area at which the largest mean power is 1.5 P_d (bisection in log S), so that SLSQP starts feasible
     where it can. ``max_power(h, theta, d, S)`` [W]."""
