@@ -39,7 +39,8 @@ def test_readme_keeps_the_two_setup_commands_of_ci():
     README section, less pip's -q, is in README's one-line command)."""
     text = _readme()
     assert "pip install -e . && laddermill simulate laddermill --start periodic --direction-step 0.01" in text
-    ci = (ROOT / ".ci" / "run").read_text().split("# --- README", 1)[1].splitlines()[1:]
+    ci = (ROOT / ".ci" / "run").read_text().split("# --- README", 1)[1].split("# --- end of README", 1)[0]
+    ci = ci.splitlines()[1:]
     steps = [" ".join(line.replace(" -q", "").split()) for line in ci if line.startswith(("pip ", "python -m pytest"))]
     assert steps, ".ci/run's README section has no install or test step"
     test_line = next(line for line in text.splitlines() if "python -m pytest -q" in line and "pip install" in line)
