@@ -18,44 +18,8 @@ import math
 
 from numba import njit, prange
 
+from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.batch import advance_copy
-from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
-    B3_POS,
-    B3_RATE,
-    B3_SIZE,
-    B3_VEL,
-    C_ETA,
-    CA_ALTITUDE,
-    CA_INFLOW_OK,
-    CA_MAX_ELEMENT,
-    CA_MAX_TENSION,
-    CA_POWER,
-    CA_TENSION,
-    CA_THRUST,
-    CA_TIP_AOA,
-    CO_EULER,
-    CO_OFFSET,
-    CO_PITCH,
-    CO_RATES,
-    CO_TENSION,
-    CO_THRUST,
-    CO_VELOCITY,
-    N_CRAFT_AUX,
-    N_CRAFT_OBS,
-    N_RO,
-    OK,
-    R_POWER,
-    R_STATUS,
-    R_THETA,
-    R_THRUST,
-    R_TIP_AOA,
-    REF_POSITION,
-    REF_SIZE,
-    REF_TENSION,
-    REF_THRUST,
-    SINGULAR,
-    V_ROTOR,
-)
 from laddermill_gym.kernels.integrate import rhs
 from laddermill_gym.rotorcraft.rotor_kernels import STATUS_OK
 
@@ -72,43 +36,43 @@ def _observe_craft(t, x, u, dx, M, W, cp, ref, tether_end, obs, aux):
     (evaluates the right-hand side once for the rotation, the tensions and the rotor outputs). cp: the craft
     parameters (``craft_kernels.C_*``); tether_end (3,): the element at the craft end of each tether.
     Returns OK or SINGULAR (the mass matrix; the loads and tensions are written before the solve)."""
-    status = OK if rhs(t, x, u, dx, M, W) == 0 else SINGULAR
-    o = B3_SIZE * CRAFT_BODY
+    status = C.OK if rhs(t, x, u, dx, M, W) == 0 else C.SINGULAR
+    o = C.B3_SIZE * CRAFT_BODY
     R = W.Rw[CRAFT_BODY]
-    vx, vy, vz = x[o + B3_VEL], x[o + B3_VEL + 1], x[o + B3_VEL + 2]
+    vx, vy, vz = x[o + C.B3_VEL], x[o + C.B3_VEL + 1], x[o + C.B3_VEL + 2]
     for i in range(3):
-        obs[CO_OFFSET + i] = x[o + B3_POS + i] - ref[REF_POSITION + i]
-        obs[CO_VELOCITY + i] = R[i, 0] * vx + R[i, 1] * vy + R[i, 2] * vz
-        obs[CO_RATES + i] = x[o + B3_RATE + i]
-    obs[CO_EULER] = math.atan2(R[2, 1], R[2, 2])
-    obs[CO_EULER + 1] = -math.asin(min(1.0, max(-1.0, R[2, 0])))
-    obs[CO_EULER + 2] = math.atan2(R[1, 0], R[0, 0])
+        obs[C.CO_OFFSET + i] = x[o + C.B3_POS + i] - ref[C.REF_POSITION + i]
+        obs[C.CO_VELOCITY + i] = R[i, 0] * vx + R[i, 1] * vy + R[i, 2] * vz
+        obs[C.CO_RATES + i] = x[o + C.B3_RATE + i]
+    obs[C.CO_EULER] = math.atan2(R[2, 1], R[2, 2])
+    obs[C.CO_EULER + 1] = -math.asin(min(1.0, max(-1.0, R[2, 0])))
+    obs[C.CO_EULER + 2] = math.atan2(R[1, 0], R[0, 0])
     out = W.vout
     power = 0.0
     inflow_ok = 1.0
     for r in range(N_ROTORS):
-        k = V_ROTOR + N_RO * r
-        obs[CO_THRUST + r] = out[k + R_THRUST] / ref[REF_THRUST + r]
-        obs[CO_PITCH + r] = out[k + R_THETA]
-        aux[CA_THRUST + r] = out[k + R_THRUST]
-        aux[CA_TIP_AOA + r] = out[k + R_TIP_AOA]
-        power += out[k + R_POWER]
-        if out[k + R_STATUS] != STATUS_OK:
+        k = C.V_ROTOR + C.N_RO * r
+        obs[C.CO_THRUST + r] = out[k + C.R_THRUST] / ref[C.REF_THRUST + r]
+        obs[C.CO_PITCH + r] = out[k + C.R_THETA]
+        aux[C.CA_THRUST + r] = out[k + C.R_THRUST]
+        aux[C.CA_TIP_AOA + r] = out[k + C.R_TIP_AOA]
+        power += out[k + C.R_POWER]
+        if out[k + C.R_STATUS] != STATUS_OK:
             inflow_ok = 0.0
     ten = W.tension
     for i in range(N_TETHERS):
-        obs[CO_TENSION + i] = ten[tether_end[i]] / ref[REF_TENSION + i]
-        aux[CA_TENSION + i] = ten[tether_end[i]]
+        obs[C.CO_TENSION + i] = ten[tether_end[i]] / ref[C.REF_TENSION + i]
+        aux[C.CA_TENSION + i] = ten[tether_end[i]]
     tmax, emax = ten[0], 0
     for e in range(1, M.ek.shape[0]):
         if ten[e] > tmax:
             tmax, emax = ten[e], e
-    eta = cp[C_ETA]
-    aux[CA_POWER] = eta * power if power >= 0.0 else power / eta
-    aux[CA_MAX_TENSION] = tmax
-    aux[CA_MAX_ELEMENT] = emax
-    aux[CA_ALTITUDE] = -x[o + B3_POS + 2]
-    aux[CA_INFLOW_OK] = inflow_ok
+    eta = cp[C.C_ETA]
+    aux[C.CA_POWER] = eta * power if power >= 0.0 else power / eta
+    aux[C.CA_MAX_TENSION] = tmax
+    aux[C.CA_MAX_ELEMENT] = emax
+    aux[C.CA_ALTITUDE] = -x[o + C.B3_POS + 2]
+    aux[C.CA_INFLOW_OK] = inflow_ok
     return status
 
 
@@ -118,7 +82,7 @@ def _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, l
     run, st, dn, Mb, Wb = advance_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks)
     if run:
         ost = _observe_craft(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, vehicle.cp, ref, tether_end, obs[b], aux[b])
-        st = st if st != OK else ost
+        st = st if st != C.OK else ost
     status[b] = st
     done[b] = dn
 

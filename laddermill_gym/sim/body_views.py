@@ -7,28 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from laddermill_gym.kernels.contract import (
-    B2_Q,
-    B2_SIZE,
-    B2_THETA,
-    B2_U,
-    B2_W,
-    B2_X,
-    B2_Z,
-    B3_POS,
-    B3_QUAT,
-    B3_RATE,
-    B3_SIZE,
-    B3_VEL,
-    N2_POS,
-    N2_SIZE,
-    N2_VEL,
-    N3_POS,
-    N3_SIZE,
-    N3_VEL,
-    TM_DT,
-    TM_T0,
-)
+from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.wind import modulation, wind_point
 from laddermill_gym.model.states import euler_from_quaternion
 from laddermill_gym.sim.reports import body_heights
@@ -43,14 +22,14 @@ def _slot_names(size: int, *groups) -> tuple[str, ...]:
     return tuple(names)
 
 
-_WING_NAMES_3D = _slot_names(B3_SIZE, (B3_POS, ("x [m]", "y [m]", "z [m]")), (B3_QUAT, ("q0", "q1", "q2", "q3")),
-                             (B3_VEL, ("u [m/s]", "v [m/s]", "w [m/s]")),
-                             (B3_RATE, ("p [rad/s]", "q [rad/s]", "r [rad/s]")))
-_WING_NAMES_2D = _slot_names(B2_SIZE, (B2_X, ("x [m]",)), (B2_Z, ("z [m]",)), (B2_THETA, ("theta [rad]",)),
-                             (B2_U, ("u [m/s]",)), (B2_W, ("w [m/s]",)), (B2_Q, ("q [rad/s]",)))
-_NODE_NAMES_3D = _slot_names(N3_SIZE, (N3_POS, ("x [m]", "y [m]", "z [m]")),
-                             (N3_VEL, ("vx [m/s]", "vy [m/s]", "vz [m/s]")))
-_NODE_NAMES_2D = _slot_names(N2_SIZE, (N2_POS, ("x [m]", "z [m]")), (N2_VEL, ("vx [m/s]", "vz [m/s]")))
+_WING_NAMES_3D = _slot_names(C.B3_SIZE, (C.B3_POS, ("x [m]", "y [m]", "z [m]")), (C.B3_QUAT, ("q0", "q1", "q2", "q3")),
+                             (C.B3_VEL, ("u [m/s]", "v [m/s]", "w [m/s]")),
+                             (C.B3_RATE, ("p [rad/s]", "q [rad/s]", "r [rad/s]")))
+_WING_NAMES_2D = _slot_names(C.B2_SIZE, (C.B2_X, ("x [m]",)), (C.B2_Z, ("z [m]",)), (C.B2_THETA, ("theta [rad]",)),
+                             (C.B2_U, ("u [m/s]",)), (C.B2_W, ("w [m/s]",)), (C.B2_Q, ("q [rad/s]",)))
+_NODE_NAMES_3D = _slot_names(C.N3_SIZE, (C.N3_POS, ("x [m]", "y [m]", "z [m]")),
+                             (C.N3_VEL, ("vx [m/s]", "vy [m/s]", "vz [m/s]")))
+_NODE_NAMES_2D = _slot_names(C.N2_SIZE, (C.N2_POS, ("x [m]", "z [m]")), (C.N2_VEL, ("vx [m/s]", "vz [m/s]")))
 
 
 
@@ -89,22 +68,22 @@ class BodyViews(StationViews):
 
     def wing_positions(self) -> np.ndarray:
         """CG positions, shape (n_wings, 3), global frame [m] (y = 0 in the in-plane mode)."""
-        return self._wing_vectors(B3_POS, (B2_X, None, B2_Z))
+        return self._wing_vectors(C.B3_POS, (C.B2_X, None, C.B2_Z))
 
     def wing_euler(self) -> np.ndarray:
         """3-2-1 Euler angles (roll phi, pitch theta, yaw psi), shape (n_wings, 3) [rad]."""
         if self.assembly.dim == 3:
-            q = self._wing_block()[:, B3_QUAT: B3_QUAT + 4]
+            q = self._wing_block()[:, C.B3_QUAT: C.B3_QUAT + 4]
             return np.array([euler_from_quaternion(qq) for qq in q]).reshape(-1, 3)
-        return self._wing_vectors(B3_QUAT, (None, B2_THETA, None))
+        return self._wing_vectors(C.B3_QUAT, (None, C.B2_THETA, None))
 
     def wing_velocities(self) -> np.ndarray:
         """Body-frame CG velocities (u, v, w), shape (n_wings, 3) [m/s]."""
-        return self._wing_vectors(B3_VEL, (B2_U, None, B2_W))
+        return self._wing_vectors(C.B3_VEL, (C.B2_U, None, C.B2_W))
 
     def wing_rates(self) -> np.ndarray:
         """Body rates (p, q, r), shape (n_wings, 3) [rad/s]."""
-        return self._wing_vectors(B3_RATE, (None, B2_Q, None))
+        return self._wing_vectors(C.B3_RATE, (None, C.B2_Q, None))
 
     def wing_rotations(self) -> np.ndarray:
         """Rotation matrices body -> global, shape (n_wings, 3, 3)."""
@@ -115,7 +94,7 @@ class BodyViews(StationViews):
     def air_velocity_body(self) -> np.ndarray:
         """Air-relative CG velocity in body axes, shape (n_wings, 3) [m/s] (from the kernels' wind)."""
         m = self.model
-        s, d, _, _ = modulation(self.t, m.tmod[TM_T0], m.tmod[TM_DT], m.ms, m.md)
+        s, d, _, _ = modulation(self.t, m.tmod[C.TM_T0], m.tmod[C.TM_DT], m.ms, m.md)
         pos = self.wing_positions()
         Rs = self.wing_rotations()
         out = np.zeros((len(pos), 3))
@@ -138,8 +117,8 @@ class BodyViews(StationViews):
         """Free cable node positions, shape (n_nodes, 3) [m]."""
         n = self._node_block()
         if self.assembly.dim == 3:
-            return n[:, N3_POS: N3_POS + 3].copy()
-        return np.stack([n[:, N2_POS], np.zeros(len(n)), n[:, N2_POS + 1]], axis=1)
+            return n[:, C.N3_POS: C.N3_POS + 3].copy()
+        return np.stack([n[:, C.N2_POS], np.zeros(len(n)), n[:, C.N2_POS + 1]], axis=1)
 
     def tensions(self) -> np.ndarray:
         """Element tensions, shape (n_elements,) [N], evaluated at the current state."""

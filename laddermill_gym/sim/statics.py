@@ -8,28 +8,7 @@ import math
 import numpy as np
 from scipy.optimize import brentq, root
 
-from laddermill_gym.kernels.contract import (
-    B2_Q,
-    B2_SIZE,
-    B2_U,
-    B2_X,
-    B3_POS,
-    B3_QUAT,
-    B3_RATE,
-    B3_SIZE,
-    B3_VEL,
-    CTRL_ELEVATOR,
-    DOF_B2,
-    DOF_B3,
-    END_NODE,
-    N2_POS,
-    N2_SIZE,
-    N2_VEL,
-    N3_POS,
-    N3_SIZE,
-    N3_VEL,
-    N_CONTROLS,
-)
+from laddermill_gym.kernels import contract as C
 from laddermill_gym.model.states import block_view, euler_from_quaternion, quaternion_from_euler
 from laddermill_gym.sim.simulator import SimulationError
 
@@ -40,7 +19,7 @@ def pack_unknowns(sim, x):
     a, x = sim.assembly, np.asarray(x, dtype=float)
     wings, nodes = _unknown_views(a, x)
     if a.dim == 3:
-        euler = [euler_from_quaternion(q) for q in block_view(x, 0, a.n_wings, B3_SIZE, B3_QUAT, 4)]
+        euler = [euler_from_quaternion(q) for q in block_view(x, 0, a.n_wings, C.B3_SIZE, C.B3_QUAT, 4)]
         wings = np.hstack([wings, np.reshape(euler, (-1, 3))])
     return np.concatenate([wings.ravel(), nodes.ravel()])
 
@@ -49,10 +28,10 @@ def _unknown_views(a, x):
     """(wing, node) views of the state x that hold the equilibrium unknowns (3D: each wing's position, each node's;
     in-plane: each wing's x, z, theta, each node's x, z)."""
     if a.dim == 3:
-        return (block_view(x, 0, a.n_wings, B3_SIZE, B3_POS, 3),
-                block_view(x, B3_SIZE * a.n_wings, a.n_nodes, N3_SIZE, N3_POS, 3))
-    return (block_view(x, 0, a.n_wings, B2_SIZE, B2_X, 3),
-            block_view(x, B2_SIZE * a.n_wings, a.n_nodes, N2_SIZE, N2_POS, 2))
+        return (block_view(x, 0, a.n_wings, C.B3_SIZE, C.B3_POS, 3),
+                block_view(x, C.B3_SIZE * a.n_wings, a.n_nodes, C.N3_SIZE, C.N3_POS, 3))
+    return (block_view(x, 0, a.n_wings, C.B2_SIZE, C.B2_X, 3),
+            block_view(x, C.B2_SIZE * a.n_wings, a.n_nodes, C.N2_SIZE, C.N2_POS, 2))
 
 
 def unpack_unknowns(sim, z):
@@ -65,7 +44,7 @@ def unpack_unknowns(sim, z):
     zw = z[: per * a.n_wings].reshape(a.n_wings, per)
     wings[:] = zw[:, :3]
     if a.dim == 3:
-        quats = block_view(x, 0, a.n_wings, B3_SIZE, B3_QUAT, 4)
+        quats = block_view(x, 0, a.n_wings, C.B3_SIZE, C.B3_QUAT, 4)
         for k in range(a.n_wings):
             quats[k] = quaternion_from_euler(*zw[k, 3:])
     nodes[:] = z[per * a.n_wings: per * a.n_wings + nodes.size].reshape(nodes.shape)
@@ -76,11 +55,11 @@ def accelerations(sim, dx):
     """The acceleration entries of a state derivative (the equilibrium residual)."""
     a = sim.assembly
     if a.dim == 3:
-        wings = block_view(dx, 0, a.n_wings, B3_SIZE, B3_VEL, B3_RATE + 3 - B3_VEL)
-        nodes = block_view(dx, B3_SIZE * a.n_wings, a.n_nodes, N3_SIZE, N3_VEL, 3)
+        wings = block_view(dx, 0, a.n_wings, C.B3_SIZE, C.B3_VEL, C.B3_RATE + 3 - C.B3_VEL)
+        nodes = block_view(dx, C.B3_SIZE * a.n_wings, a.n_nodes, C.N3_SIZE, C.N3_VEL, 3)
     else:
-        wings = block_view(dx, 0, a.n_wings, B2_SIZE, B2_U, B2_Q + 1 - B2_U)
-        nodes = block_view(dx, B2_SIZE * a.n_wings, a.n_nodes, N2_SIZE, N2_VEL, 2)
+        wings = block_view(dx, 0, a.n_wings, C.B2_SIZE, C.B2_U, C.B2_Q + 1 - C.B2_U)
+        nodes = block_view(dx, C.B2_SIZE * a.n_wings, a.n_nodes, C.N2_SIZE, C.N2_VEL, 2)
     return np.concatenate([wings.ravel(), nodes.ravel()])
 
 
@@ -124,7 +103,7 @@ def mass_scales(sim) -> np.ndarray:
     e = a.elements
     node = np.array(a.node_mass, dtype=float)
     for end in (0, 1):
-        sel = e.end_kind[:, end] == END_NODE
+        sel = e.end_kind[:, end] == C.END_NODE
         np.add.at(node, e.end_index[sel, end], 0.5 * (e.mu * e.l0)[sel])
     parts = []
     for k in range(a.n_wings):
@@ -140,7 +119,7 @@ def body_masses(sim) -> np.ndarray:
     """The mass [kg] of every body, wings then free nodes (:func:`mass_scales`' linear entries)."""
     a = sim.assembly
     s = mass_scales(sim)
-    per = DOF_B3 if a.dim == 3 else DOF_B2
+    per = C.DOF_B3 if a.dim == 3 else C.DOF_B2
     return np.concatenate([s[per * k: per * k + 1] for k in range(a.n_wings)] + [s[per * a.n_wings::a.dim]])
 
 
@@ -242,12 +221,12 @@ def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float =
     that wing is an extra unknown. Returns (state, controls). ``scaled``: as :func:`static_equilibrium`, the angle
     of attack's equation weighted by the wing's weight [N/rad] and accepted below TRIM_ALPHA_TOL."""
     u0 = sim.controls.copy()
-    z0 = np.concatenate([pack_unknowns(sim, x_guess), [u0[N_CONTROLS * wing + CTRL_ELEVATOR]]])
+    z0 = np.concatenate([pack_unknowns(sim, x_guess), [u0[C.N_CONTROLS * wing + C.CTRL_ELEVATOR]]])
     s = np.append(mass_scales(sim), sim.assembly.wing(wing).mass * sim.assembly.gravity) if scaled else 1.0
 
     def resid(z):
         u = u0.copy()
-        u[N_CONTROLS * wing + CTRL_ELEVATOR] = z[-1]
+        u[C.N_CONTROLS * wing + C.CTRL_ELEVATOR] = z[-1]
         x = unpack_unknowns(sim, z[:-1])
         acc = _accelerations_or_nan(sim, t, x, u)
         sim.state[:] = x
@@ -269,7 +248,7 @@ def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float =
         raise RuntimeError(f"trim: Newton did not converge (|residual| = {r:.3g}, angle of attack off by "
                            f"{f[-1]:.3g} rad): {msg}")
     u = u0.copy()
-    u[N_CONTROLS * wing + CTRL_ELEVATOR] = z[-1]
+    u[C.N_CONTROLS * wing + C.CTRL_ELEVATOR] = z[-1]
     return unpack_unknowns(sim, z[:-1]), u
 
 
