@@ -33,6 +33,19 @@ def scene_geometry(asm, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarr
     return pos, rot, seg
 
 
+def set_view_box(ax, box: tuple[np.ndarray, np.ndarray]) -> None:
+    """Limits and axis labels of the 3D axes ``ax`` on the view ``box`` (low, high corners (3,) in world axes [m]:
+    x north, y east, z down): x as the box, y widened by half the box's x extent on each side, altitude (plotted up)
+    from max(0, -high z) to -low z."""
+    lo, hi = box
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1] - 0.5 * (hi[0] - lo[0]), hi[1] + 0.5 * (hi[0] - lo[0]))
+    ax.set_zlim(max(0.0, -hi[2]), -lo[2])
+    ax.set_xlabel("x north [m]")
+    ax.set_ylabel("y east [m]")
+    ax.set_zlabel("altitude [m]")
+
+
 class FigureRenderer:
     """A matplotlib figure of ``size_px`` (width, height) drawn into an RGB array (H, W, 3) uint8 or, with
     ``interactive=True`` (the ``human`` render mode), into a window: what every renderer of the envs shares (a
@@ -103,13 +116,7 @@ class SceneRenderer(FigureRenderer):
         self.draw_bodies(pos, rot, up)
         fp = self.asm.fixed_points * up
         ax.scatter(fp[:, 0], fp[:, 1], fp[:, 2], color="k", marker="^", s=30)
-        lo, hi = self.box
-        ax.set_xlim(lo[0], hi[0])
-        ax.set_ylim(lo[1] - 0.5 * (hi[0] - lo[0]), hi[1] + 0.5 * (hi[0] - lo[0]))
-        ax.set_zlim(max(0.0, -hi[2]), -lo[2])
-        ax.set_xlabel("x north [m]")
-        ax.set_ylabel("y east [m]")
-        ax.set_zlabel("altitude [m]")
+        set_view_box(ax, self.box)
         ax.set_title(f"{self.task.scene.name}  t = {self.task.batch.t[b]:6.2f} s")
         return self.frame()
 
