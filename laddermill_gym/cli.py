@@ -15,12 +15,13 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import json
-import math
 import sys
 import time
 from pathlib import Path
 
 import numpy as np
+
+from laddermill_gym.studies.commands import Parser, UsageError, check_number
 
 
 def _scene_from_args(args):
@@ -46,17 +47,10 @@ def _start(scene, args):
     return x0, u0, t_start
 
 
-class UsageError(ValueError):
-    """Bad command-line input: printed as one line, exit status 2."""
-
-
 def _positive(name: str, value, allow_none: bool = False, integer: bool = False) -> None:
-    if value is None and allow_none:
-        return
-    ok = value is not None and math.isfinite(value) and value > 0 and (not integer or int(value) == value)
-    if not ok:
-        kind = "a whole number >= 1" if integer else "a finite number > 0"
-        raise UsageError(f"{name} = {value!r}: must be {kind}")
+    if value is None and not allow_none:
+        raise UsageError(f"{name} = None: must be {'a whole number >= 1' if integer else 'a finite number > 0'}")
+    check_number(name, value, low=1 if integer else 0, strict=not integer, integer=integer)
 
 
 def _writable_folder(path: str) -> Path:
@@ -85,8 +79,7 @@ def _check_simulate_args(args) -> Path:
     _positive("--elements-per-piece", args.elements_per_piece, allow_none=True, integer=True)
     for name, v in (("--direction-step", args.direction_step), ("--step-time", args.step_time),
                     ("--ground-height", args.ground_height)):
-        if v is not None and not math.isfinite(v):
-            raise UsageError(f"{name} = {v!r}: must be a finite number")
+        check_number(name, v)
     if args.step_time < 0:
         raise UsageError(f"--step-time = {args.step_time!r}: must be >= 0 s")
     if args.sample_dt > args.time:
@@ -94,13 +87,24 @@ def _check_simulate_args(args) -> Path:
     return _writable_folder(args.out)
 
 
-def cmd_simulate(args) -> int:
-    from laddermill_gym.plotting import plot_generator, plot_histories, plot_shape
-    from laddermill_gym.sim.recording import record
+def _simulate_setup(args):
+    """(scene, simulator) of ``laddermill simulate``: the scene with its start, direction step and ground options;
+    UsageError for a point-mass scene and for a run of more than ``sim.recording.MAX_STEPS`` steps (a warning line
+    above ``WARN_STEPS``)."""
+    from laddermill_gym.sim.recording import check_step_count
 
-    out = _check_simulate_args(args)
-    t0 = time.perf_counter()
     scene = _scene_from_args(args)
+    if not hasattr(scene, "assembly"):
+        raise UsageError(f"scene {args.scene!r} is a point-mass scene (fidelity.wing: pointmass): simulate runs the "
+                         "rigid scenes; run it with load_scene(...).simulator().advance(seconds) or laddermill "
+                         "work-precision")
+    try:
+        warning = check_step_count(scene.settings.dt, args.time,
+                                   "--dt" if args.dt is not None else f"{scene.file}: integrator.dt")
+    except ValueError as err:
+        raise UsageError(f"--time = {args.time!r} s: {err}") from None
+    if warning:
+        print(f"warning: {warning}", file=sys.stderr)
     x0, u0, t_start = _start(scene, args)
     asm = scene.assembly
     if args.direction_step:
@@ -115,6 +119,17 @@ def cmd_simulate(args) -> int:
             ground_height=g.ground_height if args.ground_height is None else args.ground_height))
     sim = scene.simulator(x0, u0)
     sim.reset(x0, t=t_start, controls=u0)
+    return scene, sim
+
+
+def cmd_simulate(args) -> int:
+    from laddermill_gym.plotting import plot_generator, plot_histories, plot_shape
+    from laddermill_gym.sim.recording import record
+
+    out = _check_simulate_args(args)
+    t0 = time.perf_counter()
+    scene, sim = _simulate_setup(args)
+    asm = scene.assembly
     print(f"scene {scene.name}: {asm.n_wings} wings, {asm.n_nodes} cable nodes, {asm.elements.count} elements, "
           f"{asm.state_size} states, {'3D' if asm.dim == 3 else 'in-plane'}, sag {'on' if asm.sag else 'off'}, "
           f"cable aerodynamics {'on' if asm.cable_aero else 'off'}, dt {scene.settings.dt:g} s "
@@ -122,7 +137,7 @@ def cmd_simulate(args) -> int:
     if scene.settings.method == "rk4" and not args.no_step_check:
         _check_step(sim)
     t1 = time.perf_counter()
-    rec = record(sim, args.time, args.sample_dt, progress=not args.quiet)
+    rec = record(sim, args.time, args.sample_dt, progress=not args.quiet, interruptible=True)
     wall = time.perf_counter() - t1
     stem = out / scene.name
     files = [rec.save_npz(stem.with_suffix(".npz"))]
@@ -133,18 +148,22 @@ def cmd_simulate(args) -> int:
     files.append(plot_histories(rec, Path(f"{stem}_histories.png"), title))
     if asm.station is not None:
         files.append(plot_generator(rec, Path(f"{stem}_generator.png"), title))
-    if args.animate:
+    if args.animate and not rec.interrupted:
         from laddermill_gym.animation import animate_loop
 
         files.append(animate_loop(rec, asm, Path(f"{stem}_loop.gif"), title=scene.name, progress=not args.quiet))
     span = rec.t[-1] - rec.t[0]
-    print(f"simulated {span:.2f} s in {wall:.2f} s wall ({span / wall:.1f}x real time)")
+    print(f"simulated {span:.2f} s in {wall:.2f} s wall ({span / max(wall, 1e-9):.1f}x real time)")
     if rec.error:
         print(f"run stopped early: {rec.error}")
     for line in _flag_lines(rec):
         print(line)
     for f in files:
         print(f"wrote {f}")
+    if rec.interrupted:
+        print(f"interrupted (Ctrl-C) at t = {rec.t[-1]:.6g} s: wrote what was recorded, {len(rec.t)} samples "
+              f"(exit status 130)", file=sys.stderr)
+        return 130
     if rec.error and not rec.error.startswith("ground contact") and not args.allow_breakdown:
         print("exit status 3: the run broke down (outputs written up to the breakdown; --allow-breakdown exits 0)",
               file=sys.stderr)
@@ -187,9 +206,22 @@ def _flag_lines(rec) -> list[str]:
     return lines
 
 
+def _check_json(args) -> None:
+    """UsageError for a ``--json`` file whose folder does not exist or cannot be written (found before the run)."""
+    if args.json is not None:
+        folder = Path(args.json).parent
+        if not folder.is_dir():
+            raise UsageError(f"--json = {args.json!r}: no such folder {str(folder)!r}")
+        _writable_folder(str(folder))
+
+
 def cmd_bench(args) -> int:
     from laddermill_gym.studies.benchmarks.benchmark import run_benchmark
     from laddermill_gym.studies.mill.mill_benchmark import bench_mill
+    from laddermill_gym.studies.numerics.scenes import check_scene_names
+
+    _check_json(args)
+    check_scene_names(args.scenes or [], "--scenes", crafts=False)
 
     res = run_benchmark(quick=args.quick, scenes=args.scenes)
     if not args.no_mill:
@@ -207,6 +239,7 @@ def cmd_bench(args) -> int:
 def cmd_bench_envs(args) -> int:
     from laddermill_gym.studies.benchmarks.env_benchmark import run_env_benchmark
 
+    _check_json(args)
     run_env_benchmark(quick=args.quick, json_path=args.json)
     return 0
 
@@ -261,8 +294,8 @@ def _benchmark_parser(sub, name: str, text: str, func) -> argparse.ArgumentParse
 def build_parser() -> argparse.ArgumentParser:
     from laddermill_gym import __version__
 
-    p = argparse.ArgumentParser(prog="laddermill", description=__doc__.replace("``", ""),
-                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p = Parser(prog="laddermill", description=__doc__.replace("``", ""),
+               formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"laddermill_gym {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
     for name, (_module, text) in FORWARDED.items():
@@ -310,24 +343,32 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
+def run_guarded(name: str, run) -> int:
+    """The exit status of ``run()``, the command ``laddermill name``: bad input (UsageError, ConfigError) one line
+    on stderr and 2; a start state or setting the simulator refuses (SimulationError) one line and 3; Ctrl-C one line
+    and 130 (a command that keeps its partial results says so itself)."""
+    from laddermill_gym.model.configio import ConfigError
+    from laddermill_gym.sim.simulator import SimulationError
+
+    try:
+        return int(run() or 0)
+    except (UsageError, ConfigError, SimulationError) as err:  # bad input: one line, no traceback
+        text = " ".join(line.strip() for line in str(err).splitlines() if line.strip())
+        print(f"laddermill {name}: error: {text}", file=sys.stderr)
+        return 3 if isinstance(err, SimulationError) else 2
+    except KeyboardInterrupt:
+        print(f"laddermill {name}: interrupted (Ctrl-C)", file=sys.stderr)
+        return 130
+
+
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     if argv and argv[0] in FORWARDED:
         import importlib
 
-        return int(importlib.import_module(FORWARDED[argv[0]][0]).main(argv[1:]) or 0)
+        return run_guarded(argv[0], lambda: importlib.import_module(FORWARDED[argv[0]][0]).main(argv[1:]))
     args = build_parser().parse_args(argv)
-    from laddermill_gym.model.configio import ConfigError
-    from laddermill_gym.sim.simulator import SimulationError
-
-    try:
-        return int(args.func(args) or 0)
-    except (UsageError, ConfigError) as err:  # bad input: one line, no traceback
-        print(f"laddermill {args.command}: error: {err}", file=sys.stderr)
-        return 2
-    except SimulationError as err:  # a start state or setting the simulator refuses
-        print(f"laddermill {args.command}: error: {err}", file=sys.stderr)
-        return 3
+    return run_guarded(args.command, lambda: args.func(args))
 
 
 if __name__ == "__main__":

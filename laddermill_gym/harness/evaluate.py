@@ -15,7 +15,6 @@ length [s], failure, mean power [W], largest lateral excursion [m], share of cli
 
 from __future__ import annotations
 
-import argparse
 import csv
 import sys
 from dataclasses import dataclass, field
@@ -28,6 +27,7 @@ from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosine
 from laddermill_gym.envs import ENV_IDS
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX
 from laddermill_gym.envs.task import FAILURES
+from laddermill_gym.studies.commands import Parser, UsageError, check_controllers, check_number
 
 #: Named evaluation scenarios (disturbance lists); "paper_step" is the registered default of the environments
 SCENARIOS = {
@@ -244,7 +244,7 @@ def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dic
 
 
 def main(argv: list[str] | None = None) -> int:
-    p = argparse.ArgumentParser(prog="laddermill evaluate", description=__doc__.split("\n\n")[0])
+    p = Parser(prog="laddermill evaluate", description=__doc__.split("\n\n")[0])
     p.add_argument("--env", default="laddermill_gym/TetheredWing-v0", choices=sorted(ENV_IDS))
     p.add_argument("--controllers", nargs="+", default=["open_loop", "lqr"],
                    help="each one of: open_loop (trim controls held); lqr (the environment's default design in "
@@ -260,12 +260,12 @@ def main(argv: list[str] | None = None) -> int:
                    "direction over 10 s from t = 5 s)")
     p.add_argument("--out", type=Path, help="output folder (default results/<env name>)")
     args = p.parse_args(argv)
-    if args.episodes < 1:
-        p.error(f"--episodes = {args.episodes}: must be >= 1")
+    check_number("--episodes", args.episodes, low=1, high=4096, integer=True, strict=False)  # copies of one env
+    check_number("--episode-time", args.episode_time, low=0, high=86400, unit="s")
+    check_number("--direction-step", args.direction_step, low=-3.15, high=3.15, unit="rad")
+    check_controllers(args.controllers)
     env_kwargs = {}
     if args.episode_time is not None:
-        if not args.episode_time > 0:
-            p.error(f"--episode-time = {args.episode_time}: must be > 0 s")
         env_kwargs["episode_time"] = args.episode_time
     if args.direction_step is not None and args.scenario is not None:
         p.error("--direction-step and --scenario exclude each other")
@@ -278,7 +278,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         check_env_kwargs(args.env, env_kwargs)
     except ValueError as err:
-        p.error(str(err))
+        raise UsageError(str(err)) from None
     results = evaluate(args.env, args.controllers, args.episodes, env_kwargs, out)
     fig = plot_results(out, results, f"{args.env}: {args.episodes} episode(s), lateral offset (episode 0)")
     print(f"{'controller':<28} {'return':>10} {'length [s]':>11} {'max |dy| [m]':>13} {'power [W]':>10}  failures")

@@ -14,7 +14,6 @@ simulator and writes ``lqr_rollout.png`` and ``lqr_rollout.csv``.
 
 from __future__ import annotations
 
-import argparse
 import sys
 from pathlib import Path
 
@@ -32,6 +31,7 @@ from laddermill_gym.control.lqr import (
 from laddermill_gym.control.open_loop import OpenLoopController
 from laddermill_gym.control.rollout import run_direction_step
 from laddermill_gym.ladder.scene import load_scene
+from laddermill_gym.studies.commands import Parser, check_number
 
 
 def report_single(design) -> str:
@@ -117,13 +117,15 @@ def rollout_figure(scene, x, u, controllers: dict, t_end: float, step: float, pe
 
 
 def main(argv: list[str] | None = None) -> int:
-    p = argparse.ArgumentParser(prog="laddermill lqr", description=__doc__.split("\n\n")[0])
+    p = Parser(prog="laddermill lqr", description=__doc__.split("\n\n")[0])
     p.add_argument("--config", default=str(DEFAULT_CONFIG), help="configs/agents/lqr_*.yaml")
     p.add_argument("--full-check", action="store_true", help="chain: close the loop on the full coupled model")
     p.add_argument("--rollout", type=float, metavar="T", help="[s] fly open loop and LQR on the simulator")
     p.add_argument("--step", type=float, default=0.01, help="[rad] wind-direction step at 1 s (default 0.01)")
     p.add_argument("--out", type=Path, default=Path("results") / "lqr")
     args = p.parse_args(argv)
+    check_number("--rollout", args.rollout, low=0, high=86400, unit="s")
+    check_number("--step", args.step, low=-3.15, high=3.15, unit="rad")
     cfg = load_lqr_config(args.config)
     sc = load_scene(cfg.scene, elements_per_piece=cfg.elements_per_piece)
     if sc.assembly.station is not None:

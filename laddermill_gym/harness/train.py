@@ -21,7 +21,6 @@ more time synchronising its threads than computing (measured by
 
 from __future__ import annotations
 
-import argparse
 import csv
 import dataclasses
 import os
@@ -34,6 +33,8 @@ import numpy as np
 from tqdm import tqdm
 
 from laddermill_gym.control.rl_config import RLConfig, load_rl_config
+from laddermill_gym.sim.interrupt import stop_requests
+from laddermill_gym.studies.commands import Parser, check_number
 
 
 def _evaluate(policy, env, n_episodes: int) -> tuple[np.ndarray, np.ndarray]:
@@ -45,13 +46,14 @@ def _evaluate(policy, env, n_episodes: int) -> tuple[np.ndarray, np.ndarray]:
     return res.returns, res.lengths_s
 
 
-def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm):
+def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm, stop=None):
     from stable_baselines3.common.callbacks import BaseCallback
 
     from laddermill_gym.control.sb3_policy import SB3Controller
 
     class Harness(BaseCallback):
-        """Progress bar, time limit, periodic evaluation (best model kept) and checkpoints."""
+        """Progress bar, time limit, periodic evaluation (best model kept), checkpoints; training ends at the next
+        step after a Ctrl-C (``stop``: a ``sim.interrupt.StopRequest``)."""
 
         def __init__(self):
             super().__init__()
@@ -96,6 +98,8 @@ def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm):
             if self.num_timesteps >= self.next_ckpt:
                 self.model.save(out / "checkpoints" / f"step_{self.num_timesteps}.zip")
                 self.next_ckpt += cfg.checkpoint_every
+            if stop is not None and stop.requested:
+                return False
             return (time.perf_counter() - self.t0) < 60.0 * cfg.time_limit_minutes
 
     return Harness()
@@ -196,14 +200,23 @@ def train(cfg: RLConfig, out: Path, threads: int | None = None) -> dict:
     model = algo("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=cfg.policy_kwargs or None,
                  tensorboard_log=str(out / "tb"), verbose=0, device="cpu", **cfg.hyperparameters)
     t0 = time.perf_counter()
-    with tqdm(total=cfg.total_timesteps, unit="step", desc=f"{cfg.algorithm} {cfg.env_id}", smoothing=0.05) as pbar:
-        cb = make_callback(cfg, out, eval_env, pbar)
+    with (tqdm(total=cfg.total_timesteps, unit="step", desc=f"{cfg.algorithm} {cfg.env_id}", smoothing=0.05) as pbar,
+          stop_requests("Ctrl-C: ending the training after the current step and saving the model (Ctrl-C again to "
+                        "abort)") as stop):
+        cb = make_callback(cfg, out, eval_env, pbar, stop)
         model.learn(total_timesteps=cfg.total_timesteps, callback=cb, tb_log_name=cfg.algorithm)
-        cb.evaluate()
+        if not stop.requested:
+            cb.evaluate()
     minutes = (time.perf_counter() - t0) / 60
     model.save(out / "model.zip")
     if cfg.normalize_observations:
         venv.save(str(out / "vecnormalize.pkl"))
+    if stop.requested:  # the model so far is saved; no reference runs
+        if cb.rows:
+            plot_curve(out, cb.rows)
+        return dict(steps=int(model.num_timesteps), minutes=round(minutes, 2), best_eval_return=cb.best,
+                    last_eval_return=cb.rows[-1]["mean_return"] if cb.rows else float("nan"), references={},
+                    torch_threads=torch.get_num_threads(), interrupted=True)
     refs = reference_returns(cfg, eval_env)
     with open(out / "references.csv", "w") as fh:
         fh.write("controller,mean_return\n" + "".join(f"{k},{v:.4f}\n" for k, v in refs.items()))
@@ -214,8 +227,9 @@ def train(cfg: RLConfig, out: Path, threads: int | None = None) -> dict:
 
 
 def main(argv: list[str] | None = None) -> int:
-    p = argparse.ArgumentParser(prog="laddermill train", description=__doc__.split("\n\n")[0])
-    p.add_argument("config", help="configs/agents/ppo_*.yaml or sac_*.yaml")
+    p = Parser(prog="laddermill train", description=__doc__.split("\n\n")[0])
+    p.add_argument("config", help="configs/agents/ppo_*.yaml or sac_*.yaml, or a shipped config's name "
+                   "(ppo_tethered_wing)")
     p.add_argument("--out", type=Path, help="run folder (default runs/<config name>_seed<seed>)")
     p.add_argument("--seed", type=int, help="override the config's seed")
     p.add_argument("--timesteps", type=int, help="override total_timesteps")
@@ -237,8 +251,8 @@ def main(argv: list[str] | None = None) -> int:
     over = {k: v for k, v in (("seed", args.seed), ("total_timesteps", args.timesteps),
                               ("time_limit_minutes", args.minutes), ("n_envs", args.n_envs)) if v is not None}
     for k, v in over.items():
-        if v <= 0 and k != "seed":
-            p.error(f"--{k.replace('_', '-')} = {v}: must be > 0")
+        check_number(f"--{k.replace('_', '-')}", v, low=0, strict=k != "seed", integer=k != "time_limit_minutes",
+                     high=2 ** 32 - 1 if k == "seed" else 4096 if k == "n_envs" else None)
     cfg = dataclasses.replace(cfg, **over)
     try:
         threads = torch_threads(args.torch_threads)
@@ -246,6 +260,10 @@ def main(argv: list[str] | None = None) -> int:
         p.error(str(err))
     out = args.out or Path("runs") / f"{Path(args.config).stem}_seed{cfg.seed}"
     summary = train(cfg, out, threads)
+    if summary.get("interrupted"):
+        print(f"laddermill train: interrupted (Ctrl-C) after {summary['steps']} steps: saved {out / 'model.zip'} "
+              f"(and the evaluations so far) (exit status 130)", file=sys.stderr)
+        return 130
     print(f"trained {summary['steps']} steps in {summary['minutes']} min ({summary['torch_threads']} torch "
           f"thread(s)); evaluation return best {summary['best_eval_return']:.2f}, last "
           f"{summary['last_eval_return']:.2f}; run folder {out}")

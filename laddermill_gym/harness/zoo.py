@@ -27,6 +27,7 @@ import warnings
 from pathlib import Path
 
 from laddermill_gym.model.configio import CONFIG_DIR
+from laddermill_gym.studies.commands import Parser, UsageError
 
 #: the rl-zoo3 scripts this command runs: name -> module
 SCRIPTS: dict[str, str] = {
@@ -127,15 +128,21 @@ def _run(a: argparse.Namespace, p: argparse.ArgumentParser) -> int:
         p.error("rl_zoo3 is not installed: pip install 'laddermill_gym[zoo]' (or pip install rl_zoo3)")
     if a.save is not None and not a.script.startswith(("plot", "all_plots")):
         p.error(f"--save applies to the plot scripts, not {a.script}")
+    folder = _value(a.args, "--folder", "-f")
+    if a.script in ("enjoy", "record_video", "record_training") and folder is not None and not Path(folder).is_dir():
+        raise UsageError(f"{a.script} --folder = {folder!r}: no such folder (rl-zoo3's log folder, logs/ by default "
+                         "of its train)")
     try:
         run_script(a.script, a.args, a.save)
     except SystemExit as stop:  # the scripts' own argparse errors and exits
         return stop.code if isinstance(stop.code, int) else (0 if stop.code is None else 1)
+    except AssertionError as err:  # rl-zoo3 checks its input with assert ("The logs/ppo folder was not found")
+        raise UsageError(f"rl_zoo3 {a.script}: {err}") from None
     return 0
 
 
 def main(argv: list[str] | None = None) -> int:
-    p = argparse.ArgumentParser(prog="laddermill zoo", description=__doc__.split("\n\n")[0].replace("``", ""))
+    p = Parser(prog="laddermill zoo", description=__doc__.split("\n\n")[0].replace("``", ""))
     _arguments(p)
     return _run(p.parse_args(argv), p)
 

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import csv
+from contextlib import ExitStack, nullcontext
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
 
+from laddermill_gym.sim.interrupt import stop_requests
 from laddermill_gym.sim.simulator import SimulationError, Simulator
 
 #: The band of angle of attack [deg] where the shipped wing data (configs/wings/meijaard_wing.yaml) are accurate:
@@ -42,6 +44,9 @@ class Recording:
     views: dict[str, np.ndarray]
     error: str | None = None
     ground_contacts: list[GroundContact] = field(default_factory=list)
+    #: the run was stopped by Ctrl-C (:func:`record` with ``interruptible``): the record ends at its last sample,
+    #: the state where it stopped
+    interrupted: bool = False
 
     def save_npz(self, path: Path) -> Path:
         np.savez_compressed(path, t_s=self.t, error=np.array(self.error or ""), **self.views)
@@ -65,12 +70,15 @@ class Recording:
 
 
 def record(sim: Simulator, duration: float, sample_dt: float, progress: bool = True,
-           alpha_range_deg: tuple[float, float] = ALPHA_RANGE_DEG, max_abs_beta_deg: float = MAX_ABS_BETA_DEG
-           ) -> Recording:
+           alpha_range_deg: tuple[float, float] = ALPHA_RANGE_DEG, max_abs_beta_deg: float = MAX_ABS_BETA_DEG,
+           interruptible: bool = False) -> Recording:
     """Advance ``sim`` by ``duration`` [s] with its current controls, sampling the views every
     ``sample_dt`` [s] (rounded to whole integrator steps). A breakdown or a ground contact in "stop" mode ends
     the record early with the last good state (its last sample, between two regular ones) and the report in
-    ``Recording.error``.
+    ``Recording.error``. With ``interruptible`` (in the main thread) a first Ctrl-C stops the run after the
+    current chunk of at most :data:`CHUNK_STEPS` steps (one compiled call), with that state as the last sample and
+    ``Recording.interrupted`` set (``sim/interrupt.py``); the progress bar counts simulated seconds, updated after
+    each chunk. ValueError when the run would take more than :data:`MAX_STEPS` steps (:func:`check_step_count`).
 
     Besides :meth:`Simulator.views <laddermill_gym.sim.simulator.Simulator.views>` the record holds the boolean
     views ``aero_out_of_range`` (n, n_wings): the wing's angle of attack outside ``alpha_range_deg`` [deg] or its
@@ -87,39 +95,81 @@ def record(sim: Simulator, duration: float, sample_dt: float, progress: bool = T
     dt = sim.settings.dt
     per = max(1, int(round(sample_dt / dt)))
     n = int(round(duration / (per * dt)))
+    check_step_count(dt, n * per * dt)
     times, frames = [sim.t], [sim.views()]
-    error = None
+    error, stopped = None, False
     bar = None
     if progress:
         from tqdm import tqdm
 
-        bar = tqdm(total=n, desc=f"simulating {duration:g} s", unit="sample", leave=False)
-    try:
+        bar = tqdm(total=round(n * per * dt, 9), desc=f"simulating {duration:g} s", unit="s", leave=False,
+                   bar_format="{l_bar}{bar}| {n:.4g}/{total:.4g} s [{elapsed}<{remaining}]")
+    with ExitStack() as stack:
+        request = stack.enter_context(stop_requests("Ctrl-C: stopping after the current chunk of steps and writing "
+                                                    "what was recorded (Ctrl-C again to abort)")
+                                      if interruptible else nullcontext(None))
+        if bar:
+            stack.callback(bar.close)
         for _ in range(n):
-            try:
-                sim.step(n_steps=per)
-            except SimulationError as err:
-                error = str(err)
+            error, stopped = _advance_sample(sim, per, bar, request)
+            if error or stopped:
                 _add_last_good(sim, times, frames)
                 break
             times.append(sim.t)
             frames.append(sim.views())
-            if bar:
-                bar.update(1)
-    finally:
-        if bar:
-            bar.close()
     views = {k: np.array([f[k] for f in frames]) for k in frames[0]}
     views["aero_out_of_range"] = _aero_flags(sim, views, alpha_range_deg, max_abs_beta_deg)
     t = np.array(times)
     contacts = []
     if sim.settings.ground_contact != "off":
         contacts = _ground_flags(sim.settings.ground_height, t, views)
-    return Recording(t, views, error, contacts)
+    return Recording(t, views, error, contacts, interrupted=stopped)
+
+
+#: The most steps of one compiled call of :func:`record` [-]: a sample of more steps is run in chunks, so that a
+#: Ctrl-C stops the run within one chunk and the progress bar moves (1000 steps: 10 ms to 10 s, by model size).
+CHUNK_STEPS = 1000
+#: The most steps a recorded run may take [-]: 1e9 steps are hours of compute for the smallest scene (several
+#: microseconds a step) and days for the mill.
+MAX_STEPS = 1e9
+#: Step counts above which the run is warned about (``check_step_count``): minutes to hours of compute.
+WARN_STEPS = 1e7
+
+
+def check_step_count(dt: float, duration: float, where: str = "integrator.dt") -> str | None:
+    """ValueError when ``duration`` [s] at the step ``dt`` [s] (named ``where``) takes more than :data:`MAX_STEPS`
+    steps; the warning text (None: none) when more than :data:`WARN_STEPS`."""
+    steps = duration / dt
+    if steps > MAX_STEPS:
+        raise ValueError(f"{where} = {dt!r} s: {duration:g} s of simulation would take {steps:.3g} steps, more than "
+                         f"{MAX_STEPS:.0e} (hours to days of compute): use a larger step or a shorter time")
+    if steps > WARN_STEPS:
+        return (f"{duration:g} s at {where} = {dt!r} s are {steps:.3g} steps: minutes to hours of compute "
+                "(the progress bar shows the simulated time; Ctrl-C stops and writes what was recorded)")
+    return None
+
+
+def _advance_sample(sim: Simulator, per: int, bar, request) -> tuple[str | None, bool]:
+    """Advance ``sim`` by ``per`` steps in chunks of at most :data:`CHUNK_STEPS`; (the breakdown report or None,
+    whether a stop was requested), after the chunk in which either happened."""
+    left = per
+    while left > 0:
+        k = min(left, CHUNK_STEPS)
+        try:
+            sim.step(n_steps=k)
+        except SimulationError as err:
+            return str(err), False
+        left -= k
+        if bar:
+            bar.update(k * sim.settings.dt)
+        if request is not None and request.requested:
+            return None, True
+    return None, False
 
 
 def _add_last_good(sim: Simulator, times: list, frames: list) -> None:
-    """Append the simulator's state after a breakdown (the last good one, between two samples) to the record."""
+    """Append the simulator's state after a breakdown (the last good one) or a stop (Ctrl-C), between two samples,
+    to the record."""
     if sim.t > times[-1]:
         try:
             frame = sim.views()

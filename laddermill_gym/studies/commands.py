@@ -1,13 +1,70 @@
 """A command's parser written once for its two ways of running: as a subcommand of ``laddermill`` (on an argparse
 subparsers object) and as a program of its own (``main(argv)``: ``laddermill NAME`` forwards to it, and
-``python -m`` runs it). Plain argparse: imports nothing of the package."""
+``python -m`` runs it); the one-line argparse errors (:class:`Parser`) and option checks (:func:`check_number`,
+:func:`check_controllers`, :class:`UsageError`) every command uses. Plain argparse; of the package only the
+configs' lookup (``model.configio``, inside :func:`check_controllers`)."""
 
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from collections.abc import Callable
 from dataclasses import dataclass
+
+
+class UsageError(ValueError):
+    """Bad command-line input: ``laddermill`` prints it as one line, ``laddermill NAME: error: ...``, exit status 2."""
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse with its errors on one line, ``PROG: error: MESSAGE (see PROG --help)``, exit status 2 (argparse's
+    own error prints the whole usage first); subcommand parsers made from it are of the same kind."""
+
+    def error(self, message: str):
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+def _plain(x: float) -> str:
+    """A bound as written: whole numbers in full (4294967295), others as %g."""
+    return str(int(x)) if float(x).is_integer() and abs(x) < 1e16 else f"{x:g}"
+
+
+def check_number(name: str, value, *, low: float | None = None, high: float | None = None, integer: bool = False,
+                 strict: bool = True, unit: str = "") -> None:
+    """UsageError naming the option ``name`` and ``value`` unless it is a finite number (a whole one with
+    ``integer``) above ``low`` (at least ``low`` when not ``strict``) and at most ``high``; None passes."""
+    if value is None:
+        return
+    ok = isinstance(value, (int, float)) and math.isfinite(value) and (not integer or int(value) == value)
+    ok = ok and (low is None or (value > low if strict else value >= low)) and (high is None or value <= high)
+    if not ok:
+        kind = "a whole number" if integer else "a finite number"
+        span = [f"{'>' if strict else '>='} {_plain(low)}" if low is not None else "",
+                f"<= {_plain(high)}" if high is not None else ""]
+        raise UsageError(f"{name} = {value!r}: must be {kind} {' and '.join(x for x in span if x)}".rstrip()
+                         + (f" {unit}" if unit else ""))
+
+
+def check_controllers(specs, option: str = "--controllers") -> None:
+    """UsageError naming ``option`` and the first controller spec that is none of: ``open_loop``, ``lqr``,
+    ``lqr:CONFIG`` (an LQR config file or a shipped name, ``lqr_tethered_wing``), an existing path (a training run
+    folder, a model file, an rl-zoo3 log folder). Checked before any environment is built."""
+    from pathlib import Path
+
+    from laddermill_gym.model.configio import ConfigError, find_config
+
+    for spec in specs:
+        if spec in ("open_loop", "lqr") or (not spec.startswith("lqr:") and Path(spec).exists()):
+            continue
+        if spec.startswith("lqr:"):
+            try:
+                find_config("agents", spec[4:])
+            except ConfigError as err:
+                raise UsageError(f"{option} {spec!r}: {err}") from None
+            continue
+        raise UsageError(f"{option} {spec!r}: not open_loop, lqr, lqr:<config> or an existing run folder, model "
+                         "file or rl-zoo3 log folder")
 
 
 @dataclass(frozen=True)
@@ -31,7 +88,7 @@ class Command:
 
     def main(self, argv: list[str] | None = None) -> int:
         """Parse ``argv`` (None: the process' arguments) with a parser of its own, ``laddermill NAME``, and run."""
-        p = argparse.ArgumentParser(prog=f"laddermill {self.name}", description=self.description)
+        p = Parser(prog=f"laddermill {self.name}", description=self.description)
         self.arguments(p)
         return self.run(p.parse_args(argv))
 
@@ -40,7 +97,7 @@ def run_subcommand(add_parser: Callable, name: str, argv: list[str] | None = Non
                    dest: str = "cmd"):
     """Parse ``argv`` (None: the process' arguments) as ``prog name ARGV`` with the parser ``add_parser(sub)``
     puts on a subparsers object, and return what its ``func`` returns."""
-    parser = argparse.ArgumentParser(prog=prog)
+    parser = Parser(prog=prog)
     add_parser(parser.add_subparsers(dest=dest, required=True))
     args = parser.parse_args([name, *(sys.argv[1:] if argv is None else argv)])
     return args.func(args)

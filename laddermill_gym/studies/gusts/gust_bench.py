@@ -25,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-from laddermill_gym.studies.commands import Command
+from laddermill_gym.studies.commands import Command, UsageError, check_controllers
 from laddermill_gym.studies.gusts.gust_suite import Scenario, Suite, load_suite
 from laddermill_gym.studies.parallel import add_arguments, check_arguments, run_tasks
 
@@ -180,7 +180,7 @@ def _jobs(suite: Suite, env_ids, controllers, scenarios) -> list[tuple]:
     env_ids = list(env_ids) or list(suite.envs)
     for e in env_ids:
         if e not in suite.envs:
-            raise ValueError(f"--env {e!r}: suite {suite.name} has {sorted(suite.envs)}")
+            raise UsageError(f"--env {e!r}: suite {suite.name} has {sorted(suite.envs)}")
     jobs = []
     for env_id in env_ids:
         env_kwargs, scen = suite.envs[env_id]
@@ -320,10 +320,14 @@ def _arguments(p: argparse.ArgumentParser) -> None:
 
 def _run(args) -> int:
     check_arguments(args, "laddermill gust-bench")
+    check_controllers(args.controllers)
     suite = load_suite(args.suite)
+    _jobs(suite, args.env, [], args.scenarios)  # an unknown --env before any run
+    names = {s.name for _, scen in suite.envs.values() for s in scen}
+    unknown = sorted(set(args.scenarios) - names)
+    if unknown:
+        raise UsageError(f"--scenarios {unknown}: not scenarios of suite {suite.name} ({', '.join(sorted(names))})")
     rows = run_suite(suite, args.env, args.controllers, args.scenarios, workers=args.workers, ray=args.ray)
-    if not rows:
-        raise SystemExit(f"no scenario of suite {suite.name} matches --scenarios {args.scenarios}")
     out = args.out or Path("results") / "gust_bench" / suite.name
     for path in write_outputs(rows, suite, out):
         print(path)

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
-from laddermill_gym.model.configio import ConfigError, Section, config_path, read_yaml
+from laddermill_gym.model.configio import ConfigError, Section, find_config, read_yaml
 
 __all__ = ["Scenario", "Suite", "load_suite"]
 
@@ -65,7 +65,7 @@ def load_suite(name_or_path: str | Path) -> Suite:
     environments' arguments, unique scenario names, valid disturbances."""
     from laddermill_gym.envs import ENV_IDS, env_arguments
 
-    path = config_path("benchmarks", name_or_path)
+    path = find_config("benchmarks", name_or_path, "suite")
     top = read_yaml(path)
     version = top.number("version", integer=True, positive=True)
     envs_sec = top.section("envs")

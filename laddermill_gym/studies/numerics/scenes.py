@@ -9,6 +9,7 @@ import dataclasses
 import numpy as np
 
 from laddermill_gym.sim.simulator import Simulator
+from laddermill_gym.studies.commands import UsageError
 
 #: the rotorcraft configs a study accepts by name (everything else is a scene): ``configs/rotorcraft/``
 CRAFT_NAMES = ("roberts_flying_model", "roberts_35m_15kft", "roberts_35m_30kft")
@@ -16,12 +17,27 @@ CRAFT_NAMES = ("roberts_flying_model", "roberts_35m_15kft", "roberts_35m_30kft")
 DEFAULT_SCENES = ("tethered_wing", "ladder_chain", "roberts_flying_model", "laddermill")
 
 
+def check_scene_names(names, option: str = "scene", crafts: bool = True) -> None:
+    """UsageError naming ``option`` and the first of ``names`` that is neither a rotorcraft config name
+    (:data:`CRAFT_NAMES`, with ``crafts``) nor a scene file (a path or a shipped name): checked before a study
+    starts."""
+    from laddermill_gym.model.configio import ConfigError, find_config
+
+    for name in names:
+        if crafts and name in CRAFT_NAMES:
+            continue
+        try:
+            find_config("scenes", name, option)
+        except ConfigError as err:
+            raise UsageError(f"{err}" + (f"; or a rotorcraft: {', '.join(CRAFT_NAMES)}" if crafts else "")) from None
+
+
 def build_simulator(name: str, elements_per_piece: int | None = None, **settings) -> Simulator:
     """A simulator of scene (or craft config) ``name`` at its initial equilibrium, with integrator ``settings``
     replaced (``dt``, ``method``, ``breakpoints``, ...). ``elements_per_piece`` re-divides a scene's cable."""
     if name in CRAFT_NAMES:
         if elements_per_piece is not None:
-            raise ValueError(f"{name}: elements_per_piece applies to scenes, not to the rotorcraft")
+            raise UsageError(f"{name}: elements_per_piece applies to scenes, not to the rotorcraft")
         from laddermill_gym.rotorcraft.craft import load_craft
 
         sim = load_craft(name).simulator()

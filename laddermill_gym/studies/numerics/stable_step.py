@@ -17,7 +17,7 @@ from laddermill_gym.sim.stable_step import (  # noqa: F401  (re-exported: the st
     ray_limit,
     stability_function,
 )
-from laddermill_gym.studies.commands import run_subcommand
+from laddermill_gym.studies.commands import check_number, run_subcommand
 
 
 def add_parser(sub) -> argparse.ArgumentParser:
@@ -29,8 +29,10 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def _cmd(args) -> int:
-    from laddermill_gym.studies.numerics.scenes import build_simulator
+    from laddermill_gym.studies.numerics.scenes import build_simulator, check_scene_names
 
+    check_scene_names([args.scene])
+    check_number("--elements-per-piece", args.elements_per_piece, low=1, integer=True, strict=False)
     sim = build_simulator(args.scene, elements_per_piece=args.elements_per_piece)
     print(f"{args.scene}: {sim.n_state} states, dt {sim.settings.dt:g} s")
     for m in ("rk4", "dp54"):

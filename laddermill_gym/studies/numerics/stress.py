@@ -24,6 +24,7 @@ import argparse
 import csv
 import json
 import math
+import sys
 import warnings
 from pathlib import Path
 
@@ -33,7 +34,7 @@ from laddermill_gym.kernels.contract import N_CONTROLS
 from laddermill_gym.model.configio import ConfigError
 from laddermill_gym.sim.simulator import SimulationError
 from laddermill_gym.sim.stable_step import UnstableStepWarning, estimate_stable_step
-from laddermill_gym.studies.commands import run_subcommand
+from laddermill_gym.studies.commands import UsageError, check_number, run_subcommand
 from laddermill_gym.studies.numerics import stress_cases as sc
 from laddermill_gym.studies.numerics.scenes import CRAFT_NAMES, DEFAULT_SCENES, build_simulator, with_settings
 
@@ -214,6 +215,17 @@ def element_rows(scene: str, duration: float) -> list[dict]:
     return rows
 
 
+def _ended_failures(info: dict, ended: np.ndarray) -> np.ndarray:
+    """The failure codes of the copies that ended in a vector step: from ``final_info`` where the env puts the
+    ended copies' step info there (Gymnasium's same-step autoreset), else from the step's own info, masked by its
+    ``_failure`` (a copy reset in the step holds none of the step's keys)."""
+    src = info.get("final_info") or info
+    if "failure" not in src:
+        return np.zeros(0, dtype=int)
+    mask = ended & np.asarray(src.get("_failure", np.ones_like(ended)), dtype=bool)
+    return np.asarray(src["failure"])[mask]
+
+
 def episode_rows(env_id: str, episodes: int, episode_time: float, n_copies: int = 64) -> list[dict]:
     """Reset-and-run episodes of a vector env with random actions; counts each end by its failure code."""
     import gymnasium as gym
@@ -232,7 +244,7 @@ def episode_rows(env_id: str, episodes: int, episode_time: float, n_copies: int 
         while done < episodes:
             _, _, term, trunc, info = env.step(env.action_space.sample())
             ended = term | trunc
-            for c in np.asarray(info["failure"])[ended]:
+            for c in _ended_failures(info, ended):
                 codes[int(c)] = codes.get(int(c), 0) + 1
             done += int(np.sum(ended))
     except Exception as e:  # a crash is what this case looks for: report it, do not hide it
@@ -248,10 +260,12 @@ def episode_rows(env_id: str, episodes: int, episode_time: float, n_copies: int 
                  ends=json.dumps(ends), solver_failure_codes=str(solver))]
 
 
-def run_stress(scenes, hours: float, episodes: int, envs, quick: bool, progress: bool = True) -> list[dict]:
-    """Every case on every scene, then the env episodes; the rows of the table."""
+def run_stress(scenes, hours: float, episodes: int, envs, quick: bool, progress: bool = True,
+               rows: list | None = None) -> list[dict]:
+    """Every case on every scene, then the env episodes; the rows of the table, appended to ``rows`` as each case
+    ends (so a caller keeps the finished ones when the run is interrupted)."""
     dur = 4.0 if quick else 20.0
-    rows: list[dict] = []
+    rows = [] if rows is None else rows
     for scene in scenes:
         rows += sc.stable_step_rows(scene, horizon=2.0 if quick else 4.0, iters=5 if quick else 8)
         rows += long_run_rows(scene, 3600.0 * hours, progress)
@@ -281,12 +295,18 @@ def _fmt(v):
     return str(v)
 
 
+#: env episodes per env: the default, and with --quick (an explicit --episodes wins over both)
+EPISODES, QUICK_EPISODES = 10_000, 200
+
+
 def add_parser(sub) -> argparse.ArgumentParser:
     p = sub.add_parser("stress", help="numerical stress tests of the scenes and envs",
                        description=__doc__.replace("``", ""), formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("scene", nargs="*", default=list(DEFAULT_SCENES), help="scenes (default: all four)")
     p.add_argument("--hours", type=float, default=1.0, help="simulated time of the held run [h] (default 1)")
-    p.add_argument("--episodes", type=int, default=10_000, help="env episodes per env (default 10000)")
+    p.add_argument("--episodes", type=int, default=None,
+                   help=f"env episodes per env (default {EPISODES}, with --quick {QUICK_EPISODES}; given, it holds "
+                        "with --quick too)")
     p.add_argument("--envs", nargs="*", default=["laddermill_gym/TetheredWing-v0", "laddermill_gym/Rotorcraft-v0"])
     p.add_argument("--quick", action="store_true", help="short cases (the test suite's version)")
     p.add_argument("--out", default="results/stress", help="output folder")
@@ -295,8 +315,28 @@ def add_parser(sub) -> argparse.ArgumentParser:
     return p
 
 
+def check_options(args) -> int:
+    """Refuse bad options before any case runs (UsageError naming the option and the value); the episodes."""
+    from laddermill_gym.envs import ENV_IDS
+    from laddermill_gym.studies.numerics.scenes import check_scene_names
+
+    check_scene_names(args.scene)
+    check_number("--hours", args.hours, low=0, high=1000, unit="h")
+    check_number("--episodes", args.episodes, low=1, high=10**8, integer=True, strict=False)
+    for env_id in args.envs:
+        if env_id not in ENV_IDS:
+            raise UsageError(f"--envs {env_id!r}: not a registered environment ({', '.join(sorted(ENV_IDS))})")
+    return args.episodes if args.episodes is not None else QUICK_EPISODES if args.quick else EPISODES
+
+
 def _cmd(args) -> int:
-    rows = run_stress(args.scene, args.hours, args.episodes, args.envs, args.quick, not args.quiet)
+    episodes = check_options(args)
+    rows: list[dict] = []
+    interrupted = False
+    try:
+        run_stress(args.scene, args.hours, episodes, args.envs, args.quick, not args.quiet, rows=rows)
+    except KeyboardInterrupt:
+        interrupted = True
     print_table(rows)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -308,6 +348,9 @@ def _cmd(args) -> int:
     (out / "stress.json").write_text(json.dumps(rows, indent=1, default=lambda v: v.item() if hasattr(v, "item")
                                                 else str(v)))
     print(f"wrote {out / 'stress.csv'} and {out / 'stress.json'}")
+    if interrupted:
+        print(f"laddermill stress: interrupted (Ctrl-C): wrote the {len(rows)} cases that finished", file=sys.stderr)
+        return 130
     return 0 if all(r["passed"] for r in rows) else 1
 
 

@@ -34,7 +34,7 @@ from pathlib import Path
 import numpy as np
 
 from laddermill_gym.sim.simulator import ADAPTIVE_METHODS, FIXED_STEP_METHODS, SimulationError, Simulator
-from laddermill_gym.studies.commands import run_subcommand
+from laddermill_gym.studies.commands import check_number, run_subcommand
 from laddermill_gym.studies.numerics import pointmass_precision
 from laddermill_gym.studies.numerics.precision import (
     FORCINGS,
@@ -176,8 +176,14 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def _cmd(args) -> int:
+    from laddermill_gym.studies.numerics.scenes import check_scene_names
     from laddermill_gym.studies.numerics.work_precision_output import plot_work_precision, print_summary, save_rows
 
+    check_scene_names(args.scene)
+    check_number("--time", args.time, low=0, high=3600, unit="s")
+    check_number("--element-length", args.element_length, low=0, unit="m")
+    for name, v, lo in (("--samples", args.samples, 1), ("--repeats", args.repeats, 1), ("--n-dt", args.n_dt, 1)):
+        check_number(name, v, low=lo, high=1000, integer=True, strict=False)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     for scene in args.scene:

@@ -28,7 +28,7 @@ from laddermill_gym.model.params import AERO_INDEX
 from laddermill_gym.quasisteady import lansdorp, schmehl
 from laddermill_gym.quasisteady.lansdorp import PumpingParams
 from laddermill_gym.sim.statics import table_spline
-from laddermill_gym.studies.commands import Command
+from laddermill_gym.studies.commands import Command, check_number
 
 __all__ = ["run_cycles", "cycle_stats", "quasi_steady", "add_parser", "main"]
 
@@ -161,8 +161,13 @@ def _arguments(p: argparse.ArgumentParser) -> None:
 
 
 def _run(args) -> int:
-    if args.cycles < 2:
-        raise SystemExit(f"--cycles = {args.cycles}: need at least 2 (the first cycle starts from the trim)")
+    from laddermill_gym.model.configio import find_config
+
+    check_number("--cycles", args.cycles, low=2, high=1000, integer=True, strict=False)
+    check_number("--reel-in-speed", args.reel_in_speed, low=0, high=150, unit="m/s")
+    check_number("--alpha-in-deg", args.alpha_in_deg, low=-90, high=90, strict=False, unit="deg")
+    check_number("--elements", args.elements, low=1, high=1000, integer=True, strict=False)
+    find_config("pumping", args.config, "--config")
     options = {} if args.elements is None else {"elements_per_piece": args.elements}
     task = PumpingTask(1, config=args.config, episode_time=2000.0, scene_options=options)  # the 0.01 rad step at 1 s
     changes = {k: v for k, v in (("reel_in_speed", args.reel_in_speed),
