@@ -43,15 +43,16 @@ import inspect
 from collections.abc import Mapping
 
 from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
+from laddermill_gym.envs.actions import ActionError
 from laddermill_gym.envs.laddermill.env import LadderMillEnv, LadderMillVectorEnv
 from laddermill_gym.envs.pumping.env import PumpingKiteEnv, PumpingKiteVectorEnv
 from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv, RotorcraftVectorEnv
 from laddermill_gym.envs.task import FAILURES, RewardConfig, TerminationConfig, WingTask
 from laddermill_gym.envs.wing_env import WingEnv, WingVectorEnv
 
-__all__ = ["DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule", "FAILURES", "RewardConfig",
-           "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "RotorcraftEnv", "RotorcraftVectorEnv",
-           "LadderMillEnv", "LadderMillVectorEnv", "PumpingKiteEnv", "PumpingKiteVectorEnv",
+__all__ = ["ActionError", "DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule", "FAILURES",
+           "RewardConfig", "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "RotorcraftEnv",
+           "RotorcraftVectorEnv", "LadderMillEnv", "LadderMillVectorEnv", "PumpingKiteEnv", "PumpingKiteVectorEnv",
            "PointMassEnv", "PointMassVectorEnv", "ENV_IDS", "ENTRY_POINTS", "register_envs", "task_class",
            "env_arguments", "merge_arguments", "registered_arguments"]
 
