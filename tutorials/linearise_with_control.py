@@ -23,7 +23,7 @@ T_END = 20.0  # length of the linear response [s]
 # the scene as TetheredWing-v0 has it (one cable element), at its trim
 scene, x0, u0 = scene_trim("tethered_wing", (("elements_per_piece", 1),))
 plant = plant_system(scene, x0, u0)
-lin = control.linearize(plant, plant.z0, plant.u0)
+lin = control.linearize(plant, plant.z0, plant.u0, copy_names=True)
 n_controls = len(u0)  # elevator, rudder, aileron [rad]; then wind speed factor [-] and direction offset [rad]
 print(f"states {lin.nstates}, inputs {lin.ninputs} ({n_controls} controls + 2 wind), outputs {lin.noutputs}")
 
