@@ -95,15 +95,16 @@ STATION_TABLE
 class LadderMillVectorEnv(TaskVectorEnv):
     """``num_envs`` copies of :class:`LadderMillEnv` in one batch (:class:`~laddermill_gym.envs.vector.TaskVectorEnv`
     over a :class:`~laddermill_gym.envs.laddermill.task.MillTask`; copy i runs the same kernel code as a single env
-    seeded seed + i; NextStep or SameStep autoreset).
+    seeded seed + i; NextStep, SameStep or Disabled autoreset).
 
     Observations (num_envs, 15 n + 4) float32; ``info`` holds (num_envs,) arrays of every reward term, the powers
     [W], cable speed [m/s], tensions [N], lowest altitude [m], transfers, t [s], n_clipped, n_aero_out_of_band and
     the failure code (:data:`~laddermill_gym.envs.laddermill.settings.MILL_FAILURES`), each with its ``_name`` mask.
     ``lateral_offsets(obs)``: dy [m] per slot (num_envs, n).
 
-    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0), ``autoreset_mode``, ``parallel`` (numba
-    thread pool; default from 32 copies on) and the arguments of the single env; others raise ValueError.
+    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: one frame per copy), ``autoreset_mode``,
+    ``parallel`` (numba thread pool; default from 32 copies on) and the arguments of the single env; others raise
+    ValueError.
     """
 
     task_class = MillTask

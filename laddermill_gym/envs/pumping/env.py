@@ -91,15 +91,16 @@ WINCH_TABLE
 class PumpingKiteVectorEnv(TaskVectorEnv):
     """``num_envs`` copies of :class:`PumpingKiteEnv` in one batch (:class:`~laddermill_gym.envs.vector.TaskVectorEnv`
     over a :class:`~laddermill_gym.envs.pumping.task.PumpingTask`; copy i runs the same kernel code as a single env
-    seeded seed + i; NextStep or SameStep autoreset).
+    seeded seed + i; NextStep, SameStep or Disabled autoreset).
 
     Observations (num_envs, 20) float32; ``info`` holds (num_envs,) arrays of every reward term, the net electrical
     and mechanical power [W], winch speed [m/s], paid out [m], tensions [N], lowest altitude [m], t [s], n_clipped
     and the failure code (:data:`~laddermill_gym.envs.pumping.settings.PUMPING_FAILURES`), each with its ``_name``
     mask. ``lateral_offsets(obs)``: dy [m] (num_envs, 1).
 
-    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0), ``autoreset_mode``, ``parallel`` (numba
-    thread pool; default from 32 copies on) and the arguments of the single env; others raise ValueError.
+    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: one frame per copy), ``autoreset_mode``,
+    ``parallel`` (numba thread pool; default from 32 copies on) and the arguments of the single env; others raise
+    ValueError.
     """
 
     task_class = PumpingTask

@@ -141,7 +141,7 @@ OBS_TABLE
 
 class RotorcraftVectorEnv(TaskVectorEnv):
     """``num_envs`` copies of :class:`RotorcraftEnv` in one batch (:class:`~laddermill_gym.envs.vector.TaskVectorEnv`
-    over a :class:`CraftTask`: copy i equals a single env seeded seed + i bit for bit; NextStep or SameStep
+    over a :class:`CraftTask`: copy i equals a single env seeded seed + i bit for bit; NextStep, SameStep or Disabled
     autoreset).
 
     Observations (num_envs, 19) float32 (clipped to the bounds, as the single env's); ``info`` holds
@@ -150,7 +150,7 @@ class RotorcraftVectorEnv(TaskVectorEnv):
     thrust_N (num_envs, 2) [N] and tether_tension_N (num_envs, 3) [N], each with its ``_name`` mask.
     ``lateral_offsets(obs)``: dy [m] (num_envs, 1).
 
-    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: copy 0), ``autoreset_mode``, ``parallel``
+    Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: one frame per copy), ``autoreset_mode``, ``parallel``
     (numba thread pool; default from 32 copies on) and the arguments of :class:`RotorcraftEnv` (craft,
     wind_speed [m/s], control_dt [s], episode_time [s], disturbances, ...); others raise ValueError naming them.
     """
