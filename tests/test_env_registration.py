@@ -108,3 +108,19 @@ def test_entry_points_are_the_registered_classes():
         assert f"{vector.env_class.__module__}:{vector.env_class.__name__}" == ENTRY_POINTS[env_id][1]
         assert creator.metadata == creator.env_class.metadata  # Gymnasium reads the render modes there
         assert spec.kwargs == ENV_IDS[env_id]
+
+
+def test_controller_factory_merges_the_same_way():
+    """``make_controller`` designs on the env's merged arguments: the LQR of TetheredWing-v0 in 10 m/s wind keeps
+    the registered scene options (one element, ROS34PW2; before, the shallow merge dropped them and the scene's RK4
+    at 50 ms was refused) and acts on the env made with the same arguments."""
+    from laddermill_gym.control.factory import make_controller
+
+    over = {"scene_options": {"overrides": {"wind": {"v0": 10.0}}}}
+    ctrl = make_controller("lqr", TW, over)
+    want = registered_arguments(TW, over)["scene_options"]
+    assert want["elements_per_piece"] == 1 and want["method"] == "ros34pw2"
+    env = gym.make(TW, episode_time=1.0, **over)
+    obs, _ = env.reset(seed=0)
+    act = np.asarray(ctrl.predict(obs)[0])
+    assert act.shape == env.action_space.shape and np.all(np.isfinite(act))

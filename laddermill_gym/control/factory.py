@@ -14,7 +14,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from laddermill_gym.control.base import Controller
-from laddermill_gym.envs import ENV_IDS, task_class
+from laddermill_gym.envs import ENV_IDS, registered_arguments, task_class
 from laddermill_gym.envs.task import scene_trim
 from laddermill_gym.ladder.scene import options_key
 from laddermill_gym.model.configio import CONFIG_DIR
@@ -146,7 +146,7 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     environment's own scene (a custom scene file or ``scene_options`` overrides included)."""
     if env_id not in ENV_IDS:
         raise ValueError(f"env_id = {env_id!r}: must be one of {sorted(ENV_IDS)}")
-    kw = dict(ENV_IDS[env_id], **(env_kwargs or {}))
+    kw = registered_arguments(env_id, env_kwargs)  # as gymnasium.make merges them, key by key at every depth
     if "craft" in kw and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):
         return _craft_controller(spec, kw)
     if task_class(env_id).__name__ == "PumpingTask" and (spec in ("open_loop", "scripted", "lqr")
