@@ -62,12 +62,6 @@ CASES = [
     ("gust-bench", UNKNOWN, ["--env", "nosuch/Env-v0"], "--env 'nosuch/Env-v0'"),
     ("gust-bench", RANGE, ["--workers", "-1"], "--workers -1"),
 ]
-#: cases of a command this sweep's owner does not maintain (quasisteady/cli.py): its current behaviour is noted, and
-#: the strict xfail reports when it is fixed
-FOREIGN = {("site", MISSING): "prints one line but exits 1", ("site", RANGE): "--power-mw -1 is accepted and runs",
-           ("site", UNKNOWN): "argparse's whole usage before the error line (its own parser)"}
-
-
 def test_the_sweep_covers_every_command_and_kind(capsys):
     """The commands: those ``laddermill`` lists for an unknown one (argparse's "choose from ...")."""
     import re
@@ -83,16 +77,8 @@ def test_the_sweep_covers_every_command_and_kind(capsys):
           f"{sum(k == UNKNOWN for _, k, *_ in CASES)} unknown names, {sum(k == RANGE for _, k, *_ in CASES)} numbers")
 
 
-def _marks(case) -> list:
-    """A foreign case's strict xfail; slow where the command, accepting the value, runs in full (site: 20 s)."""
-    if case[:2] not in FOREIGN:
-        return []
-    return [pytest.mark.xfail(strict=True, reason=FOREIGN[case[:2]])] + [pytest.mark.slow] * (case[:2] == ("site",
-                                                                                                       RANGE))
-
-
 @pytest.mark.parametrize("command, kind, args, names", [
-    pytest.param(*c, marks=_marks(c), id=f"{c[0]}-{c[1].split()[0]}-{i}") for i, c in enumerate(CASES)])
+    pytest.param(*c, id=f"{c[0]}-{c[1].split()[0]}-{i}") for i, c in enumerate(CASES)])
 def test_bad_input_is_one_line_and_exit_2(command, kind, args, names, capsys, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)  # nothing is written into the checkout
     if command in ("train", "train-seeds") and kind == RANGE:

@@ -7,6 +7,8 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import json
+import math
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -87,7 +89,8 @@ def run(args) -> int:
         try:
             wind = load_wind(spec, args.format)
         except (SiteWindError, ValueError) as err:
-            raise SystemExit(f"laddermill site: {err}") from None
+            print(f"laddermill site: error: --wind {spec!r}: {err}", file=sys.stderr)
+            raise SystemExit(2) from None
         print(f"{spec}: {wind.n} wind states, {wind.heights[0]:g}-{wind.heights[-1]:g} m ({wind.source})")
         for cname in args.case:
             case = base[cname]
@@ -164,10 +167,28 @@ def add_parser(sub) -> argparse.ArgumentParser:
     return p
 
 
+class _OneLineParser(argparse.ArgumentParser):
+    """argparse with its errors on one line and exit status 2, as every ``laddermill`` command (the commands' own
+    ``studies.commands.Parser`` is a layer above this package, which may not import it)."""
+
+    def error(self, message: str):
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+#: numeric options and their lower bounds (strict: > low): the design power, the kite-area weight (>= 0), the
+#: sweeps' number of states and the turbine's hub height
+_BOUNDS = (("power_mw", 0.0, True), ("k1", 0.0, False), ("sweep_states", 0.0, True), ("hub_height", 0.0, True))
+
+
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="laddermill")
-    add_parser(parser.add_subparsers(dest="command", required=True))
-    args = parser.parse_args(["site", *(argv if argv is not None else __import__("sys").argv[1:])])
+    parser = _OneLineParser(prog="laddermill")
+    add_parser(parser.add_subparsers(dest="command", required=True, parser_class=_OneLineParser))
+    args = parser.parse_args(["site", *(argv if argv is not None else sys.argv[1:])])
+    for name, low, strict in _BOUNDS:
+        v = getattr(args, name)
+        if not (math.isfinite(v) and (v > low if strict else v >= low)):
+            parser.exit(2, f"laddermill site: error: --{name.replace('_', '-')} = {v!r}: must be a finite number "
+                           f"{'>' if strict else '>='} {low:g} (see laddermill site --help)\n")
     return args.func(args)
 
 
