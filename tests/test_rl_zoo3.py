@@ -30,6 +30,7 @@ from laddermill_gym.control.zoo_run import (  # noqa: E402
     env_kwargs_arguments,
     find_zoo_run,
     read_zoo_run,
+    read_zoo_yaml,
     zoo_env_kwargs,
 )
 from laddermill_gym.harness import evaluate as ev  # noqa: E402
@@ -290,3 +291,16 @@ def test_record_video_through_the_wrapper(ppo_run):
     assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
     (video,) = (ppo_run / "videos").glob("*.mp4")
     assert imageio_ffmpeg.count_frames_and_secs(str(video))[0] in (n, n + 1)
+
+
+def test_run_files_read_yaml_1_2_floats(tmp_path):
+    """A hand-edited ``config.yml`` with ``3e-4`` (PyYAML's own loader reads it as text) gives a float, and the
+    OrderedDict tag rl-zoo3 writes is still read; any other Python tag is refused."""
+    path = tmp_path / "config.yml"
+    path.write_text("!!python/object/apply:collections.OrderedDict\n- - - learning_rate\n    - 3e-4\n  - - n_envs\n"
+                    "    - 4\n")
+    data = read_zoo_yaml(path)
+    assert data == {"learning_rate": 3e-4, "n_envs": 4} and isinstance(data["n_envs"], int)
+    path.write_text("!!python/object/apply:os.system ['true']\n")
+    with pytest.raises(ValueError, match="not readable as an rl-zoo3 file"):
+        read_zoo_yaml(path)

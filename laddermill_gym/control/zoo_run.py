@@ -39,6 +39,8 @@ from typing import Any
 
 import yaml
 
+from laddermill_gym.model.configio import YAMLLoader
+
 __all__ = ["ZooRun", "ZOO_ALGORITHMS", "find_zoo_run", "read_zoo_run", "zoo_algorithm_class", "read_zoo_yaml",
            "zoo_env_kwargs", "env_kwargs_arguments"]
 
@@ -70,9 +72,10 @@ class ZooRun:
     env_kwargs: dict = field(default_factory=dict)
 
 
-class _ZooLoader(yaml.SafeLoader):
-    """yaml's safe loader plus the one Python tag rl-zoo3 writes (``yaml.dump`` of an OrderedDict), read as a
-    dict; every other Python tag still fails (rl-zoo3 reads these files with the unsafe loader)."""
+class _ZooLoader(YAMLLoader):
+    """The package's safe loader (YAML 1.2 floats such as ``3e-4`` read as numbers, a key given twice refused) plus
+    the one Python tag rl-zoo3 writes (``yaml.dump`` of an OrderedDict), read as a dict; every other Python tag still
+    fails (rl-zoo3 reads these files with the unsafe loader)."""
 
 
 def _ordered_dict(loader: _ZooLoader, node: yaml.Node) -> dict:
