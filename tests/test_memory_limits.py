@@ -60,6 +60,16 @@ def test_batched_copies_are_refused_before_allocation():
         BatchSimulator(sc.assembly, 10**9, sc.settings)
 
 
+def test_point_mass_copies_are_refused_before_allocation():
+    """PointMassChain-v0's native vector env with a billion copies: refused naming num_envs and the memory (before:
+    a list of a billion packed models was built until memory ran out)."""
+    import gymnasium as gym
+
+    with pytest.raises(ValueError, match=r"num_envs = 1000000000: 1000000000 copies of a \d+-node string would take "
+                                         r"about [\d.]+ [TP]B of memory"):
+        gym.make_vec("laddermill_gym/PointMassChain-v0", num_envs=10**9, vectorization_mode="vector_entry_point")
+
+
 @pytest.mark.parametrize("scene, options, bodies", [
     ("ladder_chain", dict(n_wings=400, dt=1e-3), 400),                 # wings on single elements
     ("tethered_wing", dict(elements_per_piece=800, dt=1e-6), 800),     # one wing, 799 nodes

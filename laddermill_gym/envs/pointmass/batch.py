@@ -24,6 +24,7 @@ from laddermill_gym.kernels.pointmass.explicit import CHUNK, explicit_advance, t
 from laddermill_gym.kernels.pointmass.implicit import implicit_advance
 from laddermill_gym.ladder.pointmass_scene import PointMassScene
 from laddermill_gym.ladder.scene import load_scene
+from laddermill_gym.model.memory import over_limit, pointmass_bytes
 from laddermill_gym.model.pointmass import make_work, pack
 from laddermill_gym.sim.pointmass import PointMassError, PointMassSimulator
 
@@ -149,6 +150,9 @@ class PointMassBatch:
         self.dt, self.method = float(scene.dt), scene.method
         self._advance = explicit_advance if self.method == "explicit" else implicit_advance
         B = self.n_copies
+        why = over_limit(B * pointmass_bytes(s.n_nodes), f"{B} copies of a {s.n_nodes}-node string")
+        if why is not None:  # checked before anything is allocated
+            raise ValueError(f"num_envs = {n_copies!r}: {why}")
         self.states = np.zeros((B, s.state_size))
         self.controls = np.zeros((B, 3 * max(1, s.n_kites)))
         self.t = np.zeros(B)
