@@ -130,3 +130,17 @@ def test_wing_and_rotorcraft_envs_accept_mappings(env_id):
     env = gym.make(env_id, episode_time=2.0, disturbances=[{"type": "ECD", "wind_class": "IIA", "time": 0.5}])
     assert type(env.unwrapped.task.disturbances[0]).__name__ == "ECD"
     assert env_id in ENV_IDS
+
+
+@pytest.mark.parametrize("env_id", [TW, "laddermill_gym/Rotorcraft-v0", "laddermill_gym/PointMassChain-v0"])
+def test_envs_read_yaml_text_with_yaml_1_2_floats(env_id):
+    """Issue 34 item 4: YAML text given to an env's ``disturbances=`` reads ``2e-2`` as a number (PyYAML's own loader
+    reads it as text, refused as "must be a number"), equal to the mapping written with 0.02; a key given twice is
+    refused naming ``disturbances``; empty text is refused, not read as the default."""
+    text = "- {type: DirectionStep, step: 2e-2, time: 1.5e0}\n"
+    env = gym.make(env_id, episode_time=2.0, disturbances=text).unwrapped
+    assert env.task.disturbances == parse_disturbances([{"type": "DirectionStep", "step": 0.02, "time": 1.5}])
+    with pytest.raises(ValueError, match="disturbances: not valid YAML: .*duplicated key 'step'"):
+        gym.make(env_id, episode_time=2.0, disturbances="- {type: DirectionStep, step: 0.1, step: 0.2}\n")
+    with pytest.raises(ValueError, match="disturbances = '': empty YAML text"):
+        gym.make(env_id, episode_time=2.0, disturbances="")

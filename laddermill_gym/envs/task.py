@@ -13,13 +13,12 @@ from functools import lru_cache
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
-from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry, sample_wind_field
+from laddermill_gym.atmosphere.disturbances import grid_geometry, sample_wind_field
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.envs.actions import ActionMap, clip_actions, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds, wing_lateral_offsets
 from laddermill_gym.envs.physics_step import stable_physics_step
-from laddermill_gym.envs.task_base import TaskCore, positive, substeps_per_period
+from laddermill_gym.envs.task_base import TaskCore, env_disturbances, positive, substeps_per_period
 
 # the settings dataclasses live in task_settings.py; imported here, where every env has always found them
 from laddermill_gym.envs.task_settings import (  # noqa: F401
@@ -139,7 +138,7 @@ class WingTask(TaskCore):
         if asm.dim != 3:
             raise ValueError(f"scene {sc.name}: the environments need a 3D scene (dimension = {asm.dim})")
         substeps_per_period(sc.name, sc.settings, control_dt)
-        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
+        self.disturbances = env_disturbances(disturbances)
         self.scene, x_trim, u_trim, self.physics_step_note = _stable_step_scene(
             str(scene), options, (sc, x_trim, u_trim), control_dt, self.disturbances, episode_time, wind_dt)
         sc, asm = self.scene, self.scene.assembly

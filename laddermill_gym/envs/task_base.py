@@ -27,6 +27,7 @@ from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
 from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry, sample_wind_field
 from laddermill_gym.envs.task_settings import config_from
 from laddermill_gym.kernels.contract import B3_RATE, B3_SIZE, B3_VEL
+from laddermill_gym.model.configio import load_yaml_text
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS
 
@@ -38,6 +39,17 @@ def positive(name: str, v, unit: str) -> float:
     if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
         raise ValueError(f"{name} = {v!r}: must be a finite number > 0 {unit}")
     return float(v)
+
+
+def env_disturbances(value) -> tuple:
+    """An env's ``disturbances=`` argument as disturbances (``atmosphere.disturbance_spec.parse_disturbances``; None:
+    the paper's direction step), YAML text read with the package's loader (YAML 1.2 floats such as ``1e-2`` as
+    numbers, a key given twice refused; ConfigError naming ``disturbances``)."""
+    if isinstance(value, str):
+        value = load_yaml_text(value, "disturbances")
+        if value is None:
+            raise ValueError("disturbances = '': empty YAML text; give None for the default direction step")
+    return parse_disturbances(value, (DirectionStep(),))
 
 
 def check_copies(n_copies) -> int:
@@ -111,7 +123,7 @@ class TaskCore:
         ``termination_class``, ``noise_class``: None, an instance or a dict of its fields)."""
         B = check_copies(n_copies)
         self._episode_times(control_dt, episode_time, wind_dt)
-        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
+        self.disturbances = env_disturbances(disturbances)
         self.reward_config = config_from(reward, self.reward_class, "reward")
         self.termination_config = config_from(termination, self.termination_class, "termination")
         self.initial_noise = config_from(initial_noise, self.noise_class, "initial_noise")

@@ -14,8 +14,7 @@ import functools
 
 import numpy as np
 
-from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
-from laddermill_gym.atmosphere.disturbances import DirectionStep, sample_wind_field
+from laddermill_gym.atmosphere.disturbances import sample_wind_field
 from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.pointmass.batch import (
     POINTMASS_FAILURES,
@@ -27,7 +26,7 @@ from laddermill_gym.envs.pointmass.batch import (
 )
 from laddermill_gym.envs.pointmass.mill import PointMassMillBatch, mill_task_start
 from laddermill_gym.envs.task import RewardConfig, config_from
-from laddermill_gym.envs.task_base import TaskCore, check_copies, clip_observations, positive
+from laddermill_gym.envs.task_base import TaskCore, check_copies, clip_observations, env_disturbances, positive
 from laddermill_gym.kernels.contract import (
     PKO_OFFSET,
     PKO_SIZE,
@@ -86,7 +85,7 @@ class PointMassTask(TaskCore):
                                   positive("roll_range_deg", roll_range_deg, "deg")])
         self.min_altitude = float(min_altitude)
         self.breaking_factor = positive("breaking_factor", breaking_factor, "(-)")
-        self.disturbances = parse_disturbances(disturbances, (DirectionStep(),))
+        self.disturbances = env_disturbances(disturbances)
         self.reward_config = rc = config_from(reward, RewardConfig, "reward")
         options = freeze({"element_length": 1.0, **(scene_options or {})})
         self.mill = None
