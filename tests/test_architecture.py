@@ -24,7 +24,7 @@ RANK = {
     "reference": 2, "sim": 2,
     "ladder": 3, "rotorcraft": 3, "quasisteady": 3,
     "envs": 4,
-    "control": 5,
+    "control": 5, "multiagent": 5,  # multiagent: the per-wing PettingZoo env and SB3 adapter over envs' tasks
     "plotting": 6, "animation": 6, "studies": 6, "derivations": 6,
     "harness": 7,
     "cli": 8, "__main__": 8,
