@@ -34,8 +34,8 @@ class WingParallelEnv(ParallelEnv):
     metadata = {"name": "laddermill_wings_v0", "render_modes": [], "is_parallelizable": True}
 
     def __init__(self, env_id: str, k: int = 1, **env_kwargs):
-        self.env_id = env_id
-        self.view = view = WingAgents(build_task(env_id, 1, dict(env_kwargs)), env_id, check_k(k))
+        self.env_id, k = env_id, check_k(k)
+        self.view = view = WingAgents(build_task(env_id, 1, dict(env_kwargs)), env_id, k)
         self.task = view.task
         self.render_mode = None
         self.possible_agents = list(view.names)
