@@ -80,7 +80,9 @@ def scene_holder(scene: str, sim):
     from laddermill_gym.envs import ENV_IDS
     from laddermill_gym.ladder.scene import load_scene
 
-    ctrl = make_controller("lqr", WING_LQR_ENVS[scene], {"scene_options": {}, "physics_dt": None})
+    # the scene as its file has it: None undoes a registered option (the env's arguments merge key by key)
+    ctrl = make_controller("lqr", WING_LQR_ENVS[scene], {"scene_options": {"elements_per_piece": None, "method": None},
+                                                         "physics_dt": None})
     asm, nw = sim.assembly, sim.assembly.n_wings
     nominal, below = sim.wing_positions().copy(), elements_below_wings(load_scene(scene).layout, nw)
     mid, half = control_ranges(asm)
