@@ -164,19 +164,27 @@ class TaskVectorEnv(VectorEnv):
 
     def _failure_text(self, info: dict) -> None:
         """The single env's ``failure_name`` and ``failure_reason`` per copy into ``info``."""
-        codes = [int(c) for c in info["failure"]]
-        info["failure_name"] = np.array([self.failure_names[c] for c in codes], dtype=object)
-        info["failure_reason"] = np.array([self.task.failure_text(i, c) if c else "" for i, c in enumerate(codes)],
-                                          dtype=object)
+        codes = np.asarray(info["failure"])
+        failed = np.flatnonzero(codes)
+        names = np.full(codes.shape[0], self.failure_names[0], dtype=object)  # code 0: no failure
+        reasons = np.full(codes.shape[0], "", dtype=object)
+        for i in failed:  # the few copies that failed in this step
+            names[i], reasons[i] = self.failure_names[int(codes[i])], self.task.failure_text(int(i), int(codes[i]))
+        info["failure_name"], info["failure_reason"] = names, reasons
 
     def _info(self, step_info: dict | None, stepped: np.ndarray, reset: np.ndarray) -> dict[str, Any]:
         """The vector info as SyncVectorEnv builds it from its single envs' infos: the task's step info arrays
         (B, ...) for the copies ``stepped`` and the reset info for the copies ``reset``, each key with its mask;
         a copy without a key holds 0 (None in an object array) there; a key no copy holds is left out."""
         out: dict[str, Any] = {}
+        every = bool(stepped.all())
         for k, v in (step_info if step_info is not None and stepped.any() else {}).items():
-            arr = np.array(v, dtype=_single_dtype(v))
-            arr[~stepped] = None if arr.dtype == object else 0
+            dtype = _single_dtype(v)
+            if every and v.dtype == dtype:  # the task's fresh array of this step, as it is (no copy)
+                arr = v
+            else:
+                arr = np.array(v, dtype=dtype)
+                arr[~stepped] = None if arr.dtype == object else 0
             out[k], out["_" + k] = arr, stepped.copy()
         if reset.any():
             for k, value in {"t": 0.0, **self.task.reset_info()}.items():
