@@ -67,6 +67,14 @@ def _check(action, obs, reward, terminated, truncated, info, space, names, n):
         assert int(np.atleast_1d(info["n_clipped"])[i]) == np.count_nonzero(np.abs(a[i]) > 1.0)
 
 
+def _refused(env, action) -> None:
+    """A malformed ``action`` raises ActionError and leaves ``env`` where it was."""
+    before = env_state(env)
+    with pytest.raises(ActionError):
+        env.step(action)
+    assert_same_state(before, env_state(env))
+
+
 @pytest.mark.parametrize("env_id", IDS)
 def test_fuzz_single_env(env_id):
     rng = np.random.default_rng(IDS.index(env_id))
@@ -77,10 +85,7 @@ def test_fuzz_single_env(env_id):
     for _ in range(3000):
         action, good = _action(rng, shape)
         if not good:
-            before = env_state(env)
-            with pytest.raises(ActionError):
-                env.step(action)
-            assert_same_state(before, env_state(env))
+            _refused(env, action)
             refused += 1
             continue
         obs, r, term, trunc, info = env.step(action)
@@ -102,10 +107,7 @@ def test_fuzz_native_vector_env(env_id):
     for _ in range(1000):
         action, good = _action(rng, shape)
         if not good:
-            before = env_state(env)
-            with pytest.raises(ActionError):
-                env.step(action)
-            assert_same_state(before, env_state(env))
+            _refused(env, action)
             refused += 1
             continue
         obs, r, term, trunc, info = env.step(action)
