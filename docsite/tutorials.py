@@ -30,6 +30,7 @@ ORDER = {
     "linearise_with_control.py": "Linearise a scene with python-control",
     "gust_benchmark.py": "Run a gust benchmark and read its scorecard",
     "pointmass_string.py": "The point-mass string",
+    "ray_sweep.py": "Scale a sweep out with Ray",
 }
 #: script name -> [(text on a line of the script, its replacement in the docs build)]
 SHORT = {
@@ -39,6 +40,7 @@ SHORT = {
     "linearise_with_control.py": [],
     "gust_benchmark.py": [("SCENARIOS = None", "SCENARIOS = [\"direction_step\", \"EOG_IA\"]")],
     "pointmass_string.py": [("T_END = 60.0", "T_END = 20.0")],
+    "ray_sweep.py": [("WINDS = [6.0, 8.0, 10.0, 12.0, 14.0]", "WINDS = [8.0, 12.0]")],
 }
 TIMEOUT_S = 600
 
