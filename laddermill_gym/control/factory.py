@@ -181,4 +181,6 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
         raise ValueError(f"controller = {spec!r}: not 'open_loop', 'lqr', 'lqr:<config>' or an existing model path")
     from laddermill_gym.control.sb3_policy import SB3Controller
 
-    return SB3Controller.load(path)
+    ctrl = SB3Controller.load(path)
+    ctrl.check_env(env_id)
+    return ctrl

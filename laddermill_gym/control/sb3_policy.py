@@ -27,7 +27,17 @@ class SB3Controller:
     obs_mean, obs_var : ndarray (obs_dim,), optional
         Normalisation statistics: the policy sees clip((obs - mean) / sqrt(var + eps), -clip_obs, clip_obs).
     clip_obs, epsilon : as in SB3's ``VecNormalize``.
+
+    Attributes
+    ----------
+    source : Path or None
+        The model file it was loaded from (named in every error about it).
+    trained_env : str or None
+        The env id it was trained on, when the run folder says (``config.yaml``'s ``env``, rl-zoo3's ``args.yml``).
     """
+
+    source: Path | None = None
+    trained_env: str | None = None
 
     def __init__(self, model, obs_mean: np.ndarray | None = None, obs_var: np.ndarray | None = None,
                  clip_obs: float = 10.0, epsilon: float = 1e-8):
@@ -77,7 +87,9 @@ class SB3Controller:
             raise ValueError(f"{meta}: unknown algorithm {algo!r}")
         model = getattr(sb3, algo).load(model_file, device="cpu")
         norm = folder / ("best_vecnormalize.pkl" if model_file.name == "best_model.zip" else "vecnormalize.pkl")
-        return cls.from_vecnormalize(model, load_vecnormalize(norm) if norm.is_file() else None)
+        ctrl = cls.from_vecnormalize(model, load_vecnormalize(norm) if norm.is_file() else None)
+        ctrl.source, ctrl.trained_env = model_file, _trained_env(folder / "config.yaml")
+        return ctrl
 
     @classmethod
     def load_zoo(cls, path: str | Path) -> SB3Controller:
@@ -90,10 +102,24 @@ class SB3Controller:
         algo = zoo_algorithm_class(run.algo, run.folder)
         constants = {"learning_rate": 0.0, "lr_schedule": lambda _: 0.0, "clip_range": lambda _: 0.0}
         model = algo.load(run.model_file, device="cpu", custom_objects=constants)
-        return cls.from_vecnormalize(model, None if run.vecnormalize is None else load_vecnormalize(run.vecnormalize))
+        ctrl = cls.from_vecnormalize(model, None if run.vecnormalize is None else load_vecnormalize(run.vecnormalize))
+        ctrl.source, ctrl.trained_env = run.model_file, run.env_id
+        return ctrl
+
+    def check_env(self, env_id: str) -> None:
+        """Refuse a policy trained on another env id than ``env_id`` (when its run folder names one)."""
+        if self.trained_env is not None and self.trained_env != env_id:
+            raise ValueError(f"{self.source}: trained on {self.trained_env}, not {env_id}; evaluate it on "
+                             f"{self.trained_env} or train one for {env_id}")
 
     def normalize(self, observation: np.ndarray) -> np.ndarray:
+        """The observation as the policy saw it in training (float32); refuses one of another size."""
         obs = np.asarray(observation, dtype=np.float64)
+        expected = self.model.observation_space.shape
+        if obs.shape[-len(expected):] != expected:
+            raise ValueError(f"{self.source or 'policy'}: expects observations of shape {expected} "
+                             f"(trained on {self.trained_env or 'an unnamed env'}), got {obs.shape}: another "
+                             "env, or other env arguments (n_wings, observation options)")
         if self.obs_mean is None:
             return obs.astype(np.float32)
         return np.clip((obs - self.obs_mean) / self.obs_std, -self.clip_obs, self.clip_obs).astype(np.float32)
@@ -102,3 +128,17 @@ class SB3Controller:
                 deterministic: bool = False) -> tuple[np.ndarray, Any]:
         """Actions for batched (n_envs, obs_dim) or single (obs_dim,) raw observations."""
         return self.model.predict(self.normalize(observation), state, episode_start, deterministic)
+
+
+def _trained_env(config: Path) -> str | None:
+    """The ``env`` of a training run's ``config.yaml`` (None when there is no such file or field)."""
+    if not config.is_file():
+        return None
+    import yaml
+
+    try:
+        data = yaml.safe_load(config.read_text())
+    except yaml.YAMLError as err:
+        raise ValueError(f"{config}: not readable YAML ({err})") from None
+    env = data.get("env") if isinstance(data, dict) else None
+    return str(env) if env is not None else None

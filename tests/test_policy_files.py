@@ -1,0 +1,60 @@
+"""Bad policy files are refused naming the file and what does not match (issue 31 point 6).
+
+A policy is a small PPO built on a stand-in env with a 7-value observation (no simulation: only the spaces
+matter here); its run folder says it was trained on TetheredWing-v0, as ``laddermill train`` writes it.
+"""
+
+import gymnasium as gym
+import numpy as np
+import pytest
+
+pytest.importorskip("stable_baselines3")
+
+from laddermill_gym.control.factory import make_controller  # noqa: E402
+
+TW, RC = "laddermill_gym/TetheredWing-v0", "laddermill_gym/Rotorcraft-v0"
+
+
+class _Spaces(gym.Env):
+    observation_space = gym.spaces.Box(-1.0, 1.0, (7,), np.float32)
+    action_space = gym.spaces.Box(-1.0, 1.0, (3,), np.float32)
+
+
+@pytest.fixture(scope="module")
+def run_folder(tmp_path_factory):
+    from stable_baselines3 import PPO
+
+    folder = tmp_path_factory.mktemp("run")
+    PPO("MlpPolicy", _Spaces(), n_steps=8, batch_size=8, device="cpu", seed=0).save(folder / "model.zip")
+    (folder / "algorithm.txt").write_text("PPO\n")
+    (folder / "config.yaml").write_text(f"algorithm: PPO\nenv: {TW}\n")
+    return folder
+
+
+def test_a_policy_for_another_env_is_refused_naming_both(run_folder):
+    with pytest.raises(ValueError, match=rf"model\.zip: trained on {TW}, not {RC}"):
+        make_controller(str(run_folder), RC)
+
+
+def test_an_observation_of_another_size_is_refused_naming_the_file(run_folder):
+    ctrl = make_controller(str(run_folder), TW)
+    action, _ = ctrl.predict(np.zeros(7), deterministic=True)
+    assert action.shape == (3,)
+    with pytest.raises(ValueError, match=r"model\.zip: expects observations of shape \(7,\).*got \(9,\)"):
+        ctrl.predict(np.zeros(9))
+    with pytest.raises(ValueError, match=r"got \(4, 9\)"):
+        ctrl.predict(np.zeros((4, 9)))
+
+
+def test_an_unknown_algorithm_and_an_unreadable_config_are_named(run_folder, tmp_path):
+    import shutil
+
+    bad = tmp_path / "bad"
+    shutil.copytree(run_folder, bad)
+    (bad / "algorithm.txt").write_text("NOPE\n")
+    with pytest.raises(ValueError, match=r"algorithm\.txt: unknown algorithm 'NOPE'"):
+        make_controller(str(bad), TW)
+    (bad / "algorithm.txt").write_text("PPO\n")
+    (bad / "config.yaml").write_text("env: [unclosed\n")
+    with pytest.raises(ValueError, match=r"config\.yaml: not readable YAML"):
+        make_controller(str(bad), TW)
