@@ -4,6 +4,8 @@
 * ``lqr`` (the environment's default design, configs/agents/lqr_<scene>.yaml) or ``lqr:<config.yaml>``;
 * ``scripted`` (PumpingKite-v0 only): the scripted pumping cycle; there ``lqr`` is the cycle with the lateral LQR
   (``control/pumping_cycle.py``) and ``open_loop`` the reel-out trim with the winch stopped;
+* ``crosswind`` or ``crosswind:<config.yaml>`` (the pumping kite): figure eights during reel-out, the lateral LQR
+  in the reel-in (``control/crosswind.py``; default config ``configs/agents/crosswind_pumping.yaml``);
 * PointMassChain-v0 (the point-mass fidelity): ``open_loop`` holds the start attitude; ``lqr`` raises ValueError
   (the LQR designs are the rigid wings');
 * a path to a training run folder or model file: a Stable-Baselines3 policy (``rl`` extra).
@@ -115,6 +117,12 @@ def _pumping_controller(spec: str, kw: dict) -> Controller:
         return ctrl
     if spec == "scripted":
         return PumpingCycleController(task)
+    if spec == "crosswind" or spec.startswith("crosswind:"):
+        from laddermill_gym.control.crosswind import CrosswindController
+        from laddermill_gym.control.crosswind_config import DEFAULT_CROSSWIND_CONFIG
+
+        lqr = lateral_lqr(task, DEFAULT_LQR_CONFIGS["laddermill_gym/TetheredWing-v0"])
+        return CrosswindController(task, lqr, spec[len("crosswind:"):] if ":" in spec else DEFAULT_CROSSWIND_CONFIG)
     path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_LQR_CONFIGS["laddermill_gym/TetheredWing-v0"]
     return PumpingCycleController(task, lateral_lqr(task, path))
 
@@ -149,8 +157,8 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     kw = registered_arguments(env_id, env_kwargs)  # as gymnasium.make merges them, key by key at every depth
     if "craft" in kw and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):
         return _craft_controller(spec, kw)
-    if task_class(env_id).__name__ == "PumpingTask" and (spec in ("open_loop", "scripted", "lqr")
-                                                        or spec.startswith("lqr:")):
+    if task_class(env_id).__name__ == "PumpingTask" and (spec in ("open_loop", "scripted", "lqr", "crosswind")
+                                                        or spec.startswith(("lqr:", "crosswind:"))):
         return _pumping_controller(spec, kw)
     if task_class(env_id).__name__ == "PointMassTask" and (spec in ("open_loop", "lqr") or spec.startswith("lqr:")):
         return _pointmass_controller(spec, kw)

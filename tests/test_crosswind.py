@@ -1,0 +1,123 @@
+"""The crosswind pumping controller (control/crosswind.py, crosswind_guidance.py, crosswind_config.py) and the
+wind-window read-outs it flies on (envs/pumping/wind_window.py): the geometry against closed forms, the paths'
+extents against their equations, bad configs refused naming the field, and a flown reel-out: figure eights on both
+sides of the wind, far more power than the static cycle, never more than Loyd's bound."""
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from laddermill_gym.control.crosswind import PHASE_NAMES, REEL_OUT
+from laddermill_gym.control.crosswind_config import check_against_scene, load_crosswind_config
+from laddermill_gym.control.crosswind_guidance import PathSpec, path_angles
+from laddermill_gym.control.factory import make_controller
+from laddermill_gym.envs.pumping.task import PumpingTask
+from laddermill_gym.envs.pumping.wind_window import wind_window
+from laddermill_gym.model.configio import ConfigError
+from laddermill_gym.model.params import AERO_INDEX
+from laddermill_gym.sim.statics import table_spline
+
+ID = "laddermill_gym/PumpingKite-v0"
+
+
+def _rodrigues(axis, angle):
+    k = np.asarray(axis, float) / np.linalg.norm(axis)
+    kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + math.sin(angle) * kx + (1 - math.cos(angle)) * kx @ kx
+
+
+@pytest.mark.parametrize("az, el, chi, mu", [(0.3, 0.5, 1.2, 0.1), (-0.6, 0.9, -2.5, -0.3), (0.0, 0.2, 0.0, 0.0)])
+def test_wind_window_against_closed_forms(az, el, chi, mu):
+    """Position (x north, z down, wind towards -x): p = L (-cos el cos az, cos el sin az, -sin el); the tangent
+    vectors are dp/daz and dp/del normalised; a velocity cos(chi) e_el + sin(chi) e_az has course chi; a wing with
+    body x along it and body z down the tether, rolled by mu about body x, has bank mu."""
+    L = 400.0
+    p = L * np.array([-math.cos(el) * math.cos(az), math.cos(el) * math.sin(az), -math.sin(el)])
+    e_az = np.array([math.sin(az), math.cos(az), 0.0])
+    e_el = np.array([math.sin(el) * math.cos(az), -math.sin(el) * math.sin(az), -math.cos(el)])
+    c = math.cos(chi) * e_el + math.sin(chi) * e_az
+    z = -p / L
+    y = np.cross(z, c)
+    rot = _rodrigues(c, mu) @ np.column_stack([c, y, z])
+    ww = wind_window(p[None], 30.0 * c[None], rot[None])
+    np.testing.assert_allclose([ww.azimuth[0], ww.elevation[0], ww.course[0], ww.bank[0]], [az, el, chi, mu],
+                               atol=1e-12)
+    np.testing.assert_allclose([ww.distance[0], ww.tangential_speed[0], ww.radial_speed[0]], [L, 30.0, 0.0],
+                               atol=1e-9)
+
+
+def test_paths_against_their_equations():
+    """The lemniscate of Booth reaches azimuth +-w at s = pi/2, 3pi/2 (at the centre elevation) and crosses the
+    centre twice; every circle point is h from the centre (great-circle distance)."""
+    spec = PathSpec("figure_eight", math.radians(30), math.radians(5), math.radians(25), math.radians(8),
+                    "up_at_sides", math.radians(7))
+    az, el = path_angles(spec)
+    i = np.argmax(az)
+    assert az[i] == pytest.approx(spec.azimuth + spec.width, abs=1e-12)
+    assert el[i] == pytest.approx(spec.elevation, abs=1e-12)
+    assert np.min(az) == pytest.approx(spec.azimuth - spec.width, abs=1e-12)
+    assert np.sum(np.hypot(az - spec.azimuth, el - spec.elevation) < 1e-12) == 2
+    # up at the sides: just after the right end the path climbs (flown order)
+    assert el[(i + 1) % len(el)] > el[i]
+    circle = dataclasses.replace(spec, shape="circle", direction="positive")
+    az, el = path_angles(circle)
+    cos_d = (math.sin(spec.elevation) * np.sin(el)
+             + math.cos(spec.elevation) * np.cos(el) * np.cos(az - spec.azimuth))
+    np.testing.assert_allclose(np.arccos(np.clip(cos_d, -1, 1)), spec.height, atol=1e-9)
+
+
+@pytest.mark.parametrize("change, field", [
+    (dict(path=dict(elevation=math.radians(88.0))), "path.elevation_deg"),
+    (dict(path=dict(width=math.radians(95.0))), "path.width_deg"),
+    (dict(path=dict(elevation=math.radians(2.0), height=math.radians(0.5))), "path.elevation_deg"),
+    (dict(winch=dict(max_tension=6.0e5)), "winch.max_tension"),
+    (dict(winch=dict(reel_in_speed=20.0)), "winch.reel_in_speed"),
+])
+def test_bad_configs_are_refused_naming_the_field(change, field):
+    """A path out of the wind window (elevation over 90 deg, azimuth over 90 deg), a path whose lowest point on the
+    300 m tether is below the 10 m minimum altitude, a tension set-point over the 525 kN breaking load, a reel-in
+    faster than the winch's 16.7 m/s."""
+    cfg = load_crosswind_config()
+    parts = {k: dataclasses.replace(getattr(cfg, k), **v) for k, v in change.items()}
+    with pytest.raises(ConfigError, match=field):
+        check_against_scene(dataclasses.replace(cfg, **parts), 300.0, 5.25e5, 10.0, (-16.7, 10.0))
+
+
+def test_bad_yaml_names_file_field_and_value(tmp_path):
+    text = (load_crosswind_config().file.read_text()).replace("shape: figure_eight", "shape: spiral")
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(text)
+    with pytest.raises(ConfigError, match=r"bad.yaml.*path.shape.*spiral"):
+        load_crosswind_config(bad)
+
+
+def test_reel_out_flies_figure_eights_under_loyds_bound():
+    """60 s of reel-out from the trim: the wing crosses the wind both ways (azimuth beyond +-15 deg), stays in the
+    reel-out phase, and its mean mechanical power at the drum is over 10 times the static cycle's (1.9 kW,
+    docs/pumping.md) but below Loyd's crosswind bound (4/27) 1/2 rho S C_L (C_L / C_D)^2 w^3 at the largest wind
+    the wing met (Loyd 1980, the wing alone: no tether drag, no gravity, both of which only lower the power)."""
+    task = PumpingTask(1, episode_time=100.0)
+    ctl = make_controller("crosswind", ID)
+    task.reset(np.ones(1, bool), [np.random.default_rng(0)])
+    az, phases, mech, wind = [], [], [], []
+    for _ in range(1200):
+        a, _ = ctl.predict(task.obs.copy())
+        _, term, _, info = task.step(a)
+        assert not term[0], task.failure_text(0, int(info["failure"][0]))
+        o = task.raw_obs[0]
+        p = task.nominal[0] + o[:3]
+        az.append(math.atan2(p[1], -p[0]))
+        phases.append(int(ctl.last_phase[0]))
+        mech.append(info["mechanical_power_W"][0])
+        wind.append(o[-1])
+    assert set(phases) == {REEL_OUT}, [PHASE_NAMES[k] for k in set(phases)]
+    late = np.array(az[400:])
+    assert late.min() < -math.radians(15) and late.max() > math.radians(15)
+    coef = table_spline(task.scene.assembly.wing(0).aero)(math.radians(8.0))
+    cl, cd = float(coef[AERO_INDEX["CL"]]), float(coef[AERO_INDEX["CD"]])
+    wing = task.scene.assembly.wing(0)
+    loyd = 4 / 27 * 0.5 * task.scene.assembly.wind.rho0 * wing.area * cl * (cl / cd) ** 2 * max(wind) ** 3
+    mean = float(np.mean(mech[400:]))
+    assert 10 * 1.9e3 < mean < loyd, (mean, loyd)
