@@ -108,10 +108,14 @@ END_WING, END_NODE, END_FIXED = 0, 1, 2
 #: against the generator torque, ``MODE_COMMANDED``: the speed is a state that follows a commanded speed, a
 #: control, with the time constant tau of the generator's speed controller); drum radius [m] and inertia referred
 #: to the drum axis [kg m^2]; offset of the station's control (torque [N m] or commanded speed [m/s]) in the
-#: controls; tau [s]; number of schedule points; the schedule: times [s], then speeds [m/s].
+#: controls; tau [s]; the insertion rule of a transferred wing (``INSERT_PAPER``: its velocity interpolated between
+#: the ground point at rest and its neighbour, Meijaard et al. 1999; ``INSERT_CABLE``: between the cable's own
+#: velocity at the ground point and its neighbour, so that it moves with the cable it joins); number of schedule
+#: points; the schedule: times [s], then speeds [m/s].
 SP_PIECE, SP_F_FIRST, SP_F_LAST, SP_XOFF, SP_MODE = range(5)
-SP_RADIUS, SP_INERTIA, SP_UOFF, SP_TAU, SP_NSCHED, SP_SCHED = 5, 6, 7, 8, 9, 10
+SP_RADIUS, SP_INERTIA, SP_UOFF, SP_TAU, SP_INSERT, SP_NSCHED, SP_SCHED = 5, 6, 7, 8, 9, 10, 11
 MODE_PRESCRIBED, MODE_DRUM, MODE_COMMANDED = 0.0, 1.0, 2.0
+INSERT_PAPER, INSERT_CABLE = 0.0, 1.0
 #: Station block of the state (after the bodies and nodes): cable moved since the last transfer s [m] (the
 #: first element's unstretched length is f_first l0 + s, the last one's f_last l0 - s), number of transfers
 #: [-] (signed; wing slots shift by one at each), cable speed V_c [m/s] (> 0: the cable leaves the station on

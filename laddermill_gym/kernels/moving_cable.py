@@ -12,7 +12,9 @@
   (its two elements merge, which the rest length above already says), every wing moves one slot up the cable,
   and a wing enters slot 0 at the point of the first element at the unstretched distance f_first l0 + s - l0
   from the ground (linear interpolation of position and velocity between the ground point and the attachment
-  of the wing above, the paper's rule). The paper leaves the new wing's attitude and rates open: it takes the
+  of the wing above, the paper's rule, ``station.insertion: paper``; with ``insertion: cable`` the velocity is
+  interpolated from the cable material's at the ground point, V_c l / l0 along the element, instead of from
+  rest, so that the new wing moves with the cable it joins). The paper leaves the new wing's attitude and rates open: it takes the
   attitude of the wing above it (the one it will follow up the cable) and no rotation. s < 0 (the cable
   running backwards) transfers the other way. The state keeps its size: the leaving wing's slot is reused,
   nothing is allocated or repacked, and the count of transfers (a state) names which wing is in which slot.
@@ -101,16 +103,29 @@ def _rotation(q0, q1, q2, q3):
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
 def _split(sp, x, M, up):
-    """The element a transfer splits and where: (element, neighbour slot, its end on the neighbour, f) with f the
-    new wing's fraction of the way from the ground point to the neighbour's attachment."""
+    """The element a transfer splits and where: (element, neighbour slot, its end on the neighbour, f, l0) with f
+    the new wing's fraction of the way from the ground point to the neighbour's attachment and l0 [m] the element's
+    unstretched length before the split."""
     s = x[int(sp[C.SP_XOFF]) + C.SX_MOVED]
     lp = sp[C.SP_PIECE]
     if up:  # split the first element; the neighbour is slot 0 (it moves to slot 1)
         old = sp[C.SP_F_FIRST] * lp + s
-        return 0, 0, 1, (sp[C.SP_F_FIRST] * lp + s - lp) / old
+        return 0, 0, 1, (sp[C.SP_F_FIRST] * lp + s - lp) / old, old
     # split the last element; the neighbour is slot n-1 (it moves to slot n-2)
     old = sp[C.SP_F_LAST] * lp - s
-    return M.ef.shape[0] - 1, M.wtype.size - 1, 0, (sp[C.SP_F_LAST] * lp - s - lp) / old
+    return M.ef.shape[0] - 1, M.wtype.size - 1, 0, (sp[C.SP_F_LAST] * lp - s - lp) / old, old
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def _ground_speed(sp, x, up, length, l0):
+    """Speed [m/s] of the cable material at the ground point of the split element, along it towards the wing, by
+    the insertion rule (``SP_INSERT``): V_c l / l0 (forwards on the first element, backwards on the last) with the
+    cable's rule, 0 (the ground point at rest) with the paper's. ``length`` [m] the element's length, ``l0`` [m]
+    its unstretched length; V_c the state's cable speed (``SX_SPEED``, which follows a prescribed schedule)."""
+    if sp[C.SP_INSERT] != C.INSERT_CABLE or not length > 0.0:
+        return 0.0
+    v = x[int(sp[C.SP_XOFF]) + C.SX_SPEED]
+    return (v if up else -v) * length / l0
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
@@ -131,7 +146,7 @@ def _shift_slots(x, nw, size, up):
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def transfer_3d(sp, x, M, up):
     """One wing transfer in a 3D state (``up``: the cable has moved one piece forwards, else backwards)."""
-    e, nb, end, f = _split(sp, x, M, up)
+    e, nb, end, f, l0 = _split(sp, x, M, up)
     o = C.B3_SIZE * nb
     R = _rotation(x[o + C.B3_QUAT], x[o + C.B3_QUAT + 1], x[o + C.B3_QUAT + 2], x[o + C.B3_QUAT + 3])
     a0, a1, a2 = M.ea[e, end, 0], M.ea[e, end, 1], M.ea[e, end, 2]
@@ -142,14 +157,16 @@ def transfer_3d(sp, x, M, up):
     bu = x[o + C.B3_VEL] + q * a2 - r * a1
     bv = x[o + C.B3_VEL + 1] + r * a0 - p * a2
     bw = x[o + C.B3_VEL + 2] + p * a1 - q * a0
-    # the new wing's attachment: the fraction f of the way from the ground point; its velocity f v_attach
+    # the new wing's attachment: the fraction f of the way from the ground point; its velocity the same way between
+    # the material's at the ground point (g: along the element, :func:`_ground_speed`) and the attachment's
     gi = M.ei[e, 1 - end]
-    px = M.fixed[gi, 0] + f * (ax - M.fixed[gi, 0])
-    py = M.fixed[gi, 1] + f * (ay - M.fixed[gi, 1])
-    pz = M.fixed[gi, 2] + f * (az - M.fixed[gi, 2])
-    wx = f * (R[0] * bu + R[1] * bv + R[2] * bw)
-    wy = f * (R[3] * bu + R[4] * bv + R[5] * bw)
-    wz = f * (R[6] * bu + R[7] * bv + R[8] * bw)
+    dx, dy, dz = ax - M.fixed[gi, 0], ay - M.fixed[gi, 1], az - M.fixed[gi, 2]
+    ln = math.sqrt(dx * dx + dy * dy + dz * dz)
+    g = _ground_speed(sp, x, up, ln, l0) / ln if ln > 0.0 else 0.0
+    px, py, pz = M.fixed[gi, 0] + f * dx, M.fixed[gi, 1] + f * dy, M.fixed[gi, 2] + f * dz
+    wx = g * dx + f * (R[0] * bu + R[1] * bv + R[2] * bw - g * dx)
+    wy = g * dy + f * (R[3] * bu + R[4] * bv + R[5] * bw - g * dy)
+    wz = g * dz + f * (R[6] * bu + R[7] * bv + R[8] * bw - g * dz)
     o = _shift_slots(x, M.wtype.size, C.B3_SIZE, up)
     # the new wing keeps the neighbour's quaternion (still in its slot after the shift), turns not at all
     x[o + C.B3_POS] = px - (R[0] * a0 + R[1] * a1 + R[2] * a2)
@@ -165,7 +182,7 @@ def transfer_3d(sp, x, M, up):
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def transfer_2d(sp, x, M, up):
     """One wing transfer in an in-plane state (see :func:`transfer_3d`)."""
-    e, nb, end, f = _split(sp, x, M, up)
+    e, nb, end, f, l0 = _split(sp, x, M, up)
     o = C.B2_SIZE * nb
     th = x[o + C.B2_THETA]
     c, sn = math.cos(th), math.sin(th)
@@ -175,14 +192,17 @@ def transfer_2d(sp, x, M, up):
     q = x[o + C.B2_Q]
     bu, bw = x[o + C.B2_U] + q * a[2], x[o + C.B2_W] - q * a[0]
     vx, vz = c * bu + sn * bw, -sn * bu + c * bw
-    g = M.fixed[M.ei[e, 1 - end]]
+    gp = M.fixed[M.ei[e, 1 - end]]
+    dx, dz = ax - gp[0], az - gp[2]
+    ln = math.sqrt(dx * dx + dz * dz)
+    g = _ground_speed(sp, x, up, ln, l0) / ln if ln > 0.0 else 0.0
+    wx, wz = g * dx + f * (vx - g * dx), g * dz + f * (vz - g * dz)
     o = _shift_slots(x, M.wtype.size, C.B2_SIZE, up)
-    px, pz = g[0] + f * (ax - g[0]), g[2] + f * (az - g[2])
-    x[o + C.B2_X] = px - (c * a[0] + sn * a[2])
-    x[o + C.B2_Z] = pz - (-sn * a[0] + c * a[2])
+    x[o + C.B2_X] = gp[0] + f * dx - (c * a[0] + sn * a[2])
+    x[o + C.B2_Z] = gp[2] + f * dz - (-sn * a[0] + c * a[2])
     x[o + C.B2_THETA] = th
-    x[o + C.B2_U] = c * f * vx - sn * f * vz
-    x[o + C.B2_W] = sn * f * vx + c * f * vz
+    x[o + C.B2_U] = c * wx - sn * wz
+    x[o + C.B2_W] = sn * wx + c * wz
     x[o + C.B2_Q] = 0.0
 
 

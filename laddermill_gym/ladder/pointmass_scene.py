@@ -106,7 +106,8 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
     for key, pname in (("start", start), ("end", end)):
         if pname is not None and pname not in points:
             raise ch.error(key, pname, f"is not one of the ground points {sorted(points)}")
-    rigid_station = read_station(s.section("station"), piece) if s.has("station") else None
+    # a station without ``insertion`` keeps the point-mass mill's own rule: the node moves with the cable it joins
+    rigid_station = read_station(s.section("station"), piece, "cable") if s.has("station") else None
     if rigid_station is not None and end is None:
         raise ch.error("end", end, "a moving cable (station) needs two ground points (start and end)")
     fid.raw("wing", None)

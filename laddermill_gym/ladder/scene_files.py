@@ -23,7 +23,7 @@ from laddermill_gym.model.aero_table import load_aero_table
 from laddermill_gym.model.builders import CableSpec
 from laddermill_gym.model.configio import CONFIG_DIR, ConfigError, Section, config_path, read_yaml
 from laddermill_gym.model.params import N_CONTROLS, WindParams, WingType
-from laddermill_gym.model.station import MODES, StationParams
+from laddermill_gym.model.station import INSERTIONS, MODES, StationParams
 
 #: The wing models a scene file's ``fidelity.wing`` may name.
 FIDELITIES = ("rigid", "pointmass")
@@ -186,11 +186,12 @@ def check_cable_length(ch: Section, piece: float, n_wings: int, has_end: bool, c
         raise ch.error("n_wings", n_wings, why)
 
 
-def read_station(s: Section, piece: float) -> StationParams:
+def read_station(s: Section, piece: float, insertion: str = "paper") -> StationParams:
     """The moving cable's ground station (``station:`` section; ``model/station.py``), errors naming the field:
     the end elements' fractions of a piece (they change by one piece between transfers), a speed schedule of
     increasing times with one speed each, speeds within the fastest wind (``ladder/bounds.py``), an efficiency of at
-    most 1."""
+    most 1, the insertion rule of a transferred wing (``insertion``: "paper" or "cable"; absent: ``insertion``,
+    the fidelity's own default)."""
     speed = dict(low=-BOUNDS["wind.v0"]["high"], high=BOUNDS["wind.v0"]["high"],
                  why="m/s: the cable cannot outrun the fastest wind that drives it")
     mode = s.text("mode", "prescribed", choices=MODES)
@@ -207,7 +208,8 @@ def read_station(s: Section, piece: float) -> StationParams:
               last_fraction=s.number("last_fraction", 1.1, positive=True, high=2.0, why=why), mode=mode,
               speed_times=tuple(times), speed_values=tuple(speeds),
               efficiency=s.number("efficiency", 1.0, positive=True, high=1.0,
-                                  why="electrical over mechanical power"))
+                                  why="electrical over mechanical power"),
+              insertion=s.text("insertion", insertion, choices=INSERTIONS))
     if mode == "drum":
         kw.update(drum_radius=s.number("drum_radius", positive=True, high=100.0, why="m"),
                   drum_inertia=s.number("drum_inertia", positive=True),

@@ -23,7 +23,7 @@ import numpy as np
 
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.pointmass.mill import MX_SIZE
-from laddermill_gym.model.station import StationParams
+from laddermill_gym.model.station import INSERTIONS, StationParams
 
 
 @dataclass(frozen=True)
@@ -35,6 +35,8 @@ class PointMassStation:
         after a transfer (a + s and b - s in between, s the cable moved since).
     speed_times [s], speed_values [m/s] : the prescribed piecewise-linear schedule V_c(t), held outside.
     efficiency : electrical over mechanical generator power [-].
+    insertion : a transferred node's velocity rule (``model.station.INSERTIONS``): "cable" (it moves with the
+        cable it joins, the point-mass mill's default) or "paper" (interpolated from the ground point at rest).
     """
 
     element_length: float
@@ -43,11 +45,14 @@ class PointMassStation:
     speed_times: tuple[float, ...] = (0.0,)
     speed_values: tuple[float, ...] = (0.0,)
     efficiency: float = 1.0
+    insertion: str = "cable"
 
     def __post_init__(self):
         def bad(field, value, why):
             raise ValueError(f"station.{field} = {value!r}: {why}")
 
+        if self.insertion not in INSERTIONS:
+            bad("insertion", self.insertion, f"must be one of {INSERTIONS}")
         le = self.element_length
         if not (math.isfinite(le) and le > 0):
             bad("element_length", le, "must be a finite length > 0 m")
@@ -104,7 +109,8 @@ def station_from_rigid(st: StationParams, layout: MillLayout, element_length: fl
         raise ValueError(f"station.mode = {st.mode!r}: the point-mass mill has the prescribed speed schedule only")
     return PointMassStation(element_length=element_length, first_length=layout.first_length,
                             last_length=layout.last_length, speed_times=tuple(st.speed_times),
-                            speed_values=tuple(st.speed_values), efficiency=st.efficiency)
+                            speed_values=tuple(st.speed_values), efficiency=st.efficiency,
+                            insertion=st.insertion)
 
 
 def pack_pm_station(st: PointMassStation) -> np.ndarray:
@@ -115,6 +121,7 @@ def pack_pm_station(st: PointMassStation) -> np.ndarray:
     p[C.SP_F_FIRST] = st.first_length / st.element_length
     p[C.SP_F_LAST] = st.last_length / st.element_length
     p[C.SP_MODE] = C.MODE_PRESCRIBED
+    p[C.SP_INSERT] = C.INSERT_CABLE if st.insertion == "cable" else C.INSERT_PAPER
     p[C.SP_NSCHED] = n
     p[C.SP_SCHED:C.SP_SCHED + n] = st.speed_times
     p[C.SP_SCHED + n:] = st.speed_values

@@ -18,6 +18,11 @@ import numpy as np
 from laddermill_gym.kernels import contract as C
 
 MODES = ("prescribed", "drum", "commanded")
+#: Insertion rules of a transferred wing (``station.insertion``): "paper" (Meijaard et al. 1999: position and
+#: velocity interpolated between the ground point at rest and the neighbour's attachment) or "cable" (the velocity
+#: interpolated between the cable's own velocity at the ground point, V_c l / l0 along the element, and the
+#: neighbour's: the new wing moves with the cable it joins). docs/moving_cable.md, "Wing transfer".
+INSERTIONS = ("paper", "cable")
 
 
 @dataclass(frozen=True)
@@ -38,6 +43,8 @@ class StationParams:
     torque_limits : (min, max) generator torque [N m] accepted as a control.
     speed_time_constant : tau [s] of the commanded-speed mode.  speed_limits : (min, max) commanded speed [m/s].
     efficiency : electrical over mechanical generator power [-].
+    insertion : the transferred wing's velocity rule, one of :data:`INSERTIONS` ("paper": the paper's
+        interpolation from the ground point at rest; "cable": it moves with the cable it joins).
     """
 
     piece_length: float
@@ -52,6 +59,7 @@ class StationParams:
     speed_time_constant: float = 1.0
     speed_limits: tuple[float, float] = (0.0, 0.0)
     efficiency: float = 1.0
+    insertion: str = "paper"
 
     def __post_init__(self):
         def bad(field, value, why):
@@ -89,6 +97,8 @@ class StationParams:
                 bad("speed_limits", self.speed_limits, "need finite min <= max [m/s]")
         if not 0 < self.efficiency <= 1:
             bad("efficiency", self.efficiency, "must be in (0, 1]")
+        if self.insertion not in INSERTIONS:
+            bad("insertion", self.insertion, f"must be one of {INSERTIONS}")
 
     @property
     def n_controls(self) -> int:
@@ -119,6 +129,7 @@ def station_slots(st: StationParams, state_offset: int, control_offset: int) -> 
     p[C.SP_MODE] = {"prescribed": C.MODE_PRESCRIBED, "drum": C.MODE_DRUM, "commanded": C.MODE_COMMANDED}[st.mode]
     p[C.SP_RADIUS], p[C.SP_INERTIA], p[C.SP_UOFF] = st.drum_radius, st.drum_inertia, control_offset
     p[C.SP_TAU] = st.speed_time_constant
+    p[C.SP_INSERT] = C.INSERT_CABLE if st.insertion == "cable" else C.INSERT_PAPER
     p[C.SP_NSCHED] = n
     p[C.SP_SCHED:C.SP_SCHED + n] = st.speed_times
     p[C.SP_SCHED + n:] = st.speed_values

@@ -21,6 +21,7 @@ generator energy [J]) plus ``MX_KITE_TRANSFERS``, the kites that have gone round
 from numba import njit
 
 from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes of this module)
+    INSERT_CABLE,
     MX_KITE_TRANSFERS,
     MX_SIZE,
     N3_POS,
@@ -39,6 +40,7 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes 
     PP_RATE_LAST,
     SP_F_FIRST,
     SP_F_LAST,
+    SP_INSERT,
     SP_NSCHED,
     SP_PIECE,
     SP_SCHED,
@@ -123,11 +125,12 @@ def _move_node(x, src, dst):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
-def _sheave_velocity(x, e, par, v, l0):
+def _sheave_velocity(x, e, par, sp, v, l0):
     """Velocity [m/s] of the cable material passing the ground point of end element e (unstretched length l0 [m]
-    now): V_c (l / l0) along the element (node e - 1 -> node e), the pay-out at the element's strain."""
+    now): V_c (l / l0) along the element (node e - 1 -> node e), the pay-out at the element's strain; zero with
+    the paper's insertion rule (``SP_INSERT``: the ground point at rest)."""
     tx, ty, tz, ln = element_geometry(x, e, par)
-    w = v * ln / l0
+    w = v * ln / l0 if sp[SP_INSERT] == INSERT_CABLE else 0.0
     return w * tx, w * ty, w * tz
 
 
@@ -150,7 +153,7 @@ def transfer_up(x, M, sp, s, v):
     n = int(par[PP_N])
     old = sp[SP_F_FIRST] * sp[SP_PIECE] + s
     f = (old - sp[SP_PIECE]) / old
-    ux, uy, uz = _sheave_velocity(x, 0, par, v, old)
+    ux, uy, uz = _sheave_velocity(x, 0, par, sp, v, old)
     # node 0 moves to index 1 first, so the new node is interpolated towards index 1
     for j in range(n - 1, 0, -1):
         _move_node(x, j - 1, j)
@@ -181,7 +184,7 @@ def transfer_down(x, M, sp, s, v):
     n = int(par[PP_N])
     old = sp[SP_F_LAST] * sp[SP_PIECE] - s
     f = (old - sp[SP_PIECE]) / old
-    ux, uy, uz = _sheave_velocity(x, n, par, v, old)
+    ux, uy, uz = _sheave_velocity(x, n, par, sp, v, old)
     for j in range(n - 1):
         _move_node(x, j + 1, j)
     _new_node(x, n - 1, par, PP_END, f, n - 2 if n > 1 else 0, ux, uy, uz)
