@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from laddermill_gym.sim.overload import BREAKING_FRACTION, Overload, OverloadWatch, tension_limits
 from laddermill_gym.sim.simulator import SimulationError, Simulator
 
 
@@ -36,6 +37,9 @@ class PeriodicResult:
     history : per period: time [s], mean power [W], shape change [-], power change [-].
     breakdown : the simulator's report when the integration broke down during the search (the motion is then not
     periodic; power and tensions are those of the last, possibly partial, period), else None.
+    overload : the first sample of the search at which an element's tension exceeded ``breaking_fraction`` times its
+    breaking load (``sim/overload.py``; time [s], element, tension, limit [N]), else None; the search goes on.
+    peak_tension_ratio : the largest tension over that limit in any step of the search [-].
     """
 
     converged: bool
@@ -49,6 +53,8 @@ class PeriodicResult:
     shape_m: np.ndarray
     history: list[dict] = field(default_factory=list)
     breakdown: str | None = None
+    overload: Overload | None = None
+    peak_tension_ratio: float = 0.0
 
     def summary(self) -> str:
         state = "converged" if self.converged else ("NOT converged (broke down: " + self.breakdown + ")"
@@ -56,7 +62,13 @@ class PeriodicResult:
         last = self.history[-1] if self.history else {}
         return (f"periodic motion {state} at t = {self.t_s:.1f} s (period {self.period_s:.2f} s): mean generator "
                 f"power {self.mean_power_W / 1e3:.1f} kW; last shape change {last.get('shape_change', np.nan):.2e} "
-                f"l0, power change {last.get('power_change', np.nan):.2e}")
+                f"l0, power change {last.get('power_change', np.nan):.2e}; " + self.overload_text())
+
+    def overload_text(self) -> str:
+        """The cable's strength over the search: the first overload, or the peak tension's share of the limit."""
+        if self.overload is not None:
+            return f"CABLE OVERLOAD at {self.overload.text()} (peak {self.peak_tension_ratio:.3g} x the limit)"
+        return f"no cable overload (peak tension {self.peak_tension_ratio:.3g} x the limit)"
 
 
 def _advance_to_transfer(sim: Simulator, max_steps: int) -> None:
@@ -71,10 +83,12 @@ def _advance_to_transfer(sim: Simulator, max_steps: int) -> None:
 
 
 def run_to_periodic(sim: Simulator, shape_tol: float = 1e-2, power_tol: float = 1e-2, confirm: int = 2,
-                    max_time: float = 3000.0, progress: bool = True) -> PeriodicResult:
+                    max_time: float = 3000.0, progress: bool = True,
+                    breaking_fraction: float = BREAKING_FRACTION) -> PeriodicResult:
     """Run ``sim`` (a moving cable with a prescribed speed that is constant from now on, or a drum held at a
     constant speed by its torque) to its periodic stationary motion; see the module docstring for the criteria.
-    The period is l0 / V_c with the speed at the start of the search. Tensions are sampled every step."""
+    The period is l0 / V_c with the speed at the start of the search. Tensions are sampled every step and checked
+    against ``breaking_fraction`` [-] times the cable's breaking load (``PeriodicResult.overload``)."""
     st = sim.assembly.station
     if st is None:
         raise ValueError("run_to_periodic needs a moving cable (a scene with a station)")
@@ -96,6 +110,7 @@ def run_to_periodic(sim: Simulator, shape_tol: float = 1e-2, power_tol: float = 
     history: list[dict] = []
     hits, p_prev = 0, np.nan
     ten, breakdown = None, None
+    watch = OverloadWatch(tension_limits(sim.assembly, breaking_fraction))
     try:
         while sim.t - t_start < max_time:
             n0 = sim.transfers()
@@ -107,6 +122,7 @@ def run_to_periodic(sim: Simulator, shape_tol: float = 1e-2, power_tol: float = 
                     breakdown = str(err)
                     break
                 tens.append(sim.tensions())
+                watch.see(sim.t, tens[-1])
                 if sim.transfers() != n0:
                     break
             else:
@@ -137,7 +153,8 @@ def run_to_periodic(sim: Simulator, shape_tol: float = 1e-2, power_tol: float = 
     return PeriodicResult(converged=breakdown is None and hits >= confirm, period_s=period, t_s=sim.t, mean_power_W=p,
                           mean_electrical_power_W=st.efficiency * p, tension_mean_N=ten.mean(axis=0),
                           tension_min_N=ten.min(axis=0), tension_max_N=ten.max(axis=0), shape_m=shape,
-                          history=history, breakdown=breakdown)
+                          history=history, breakdown=breakdown, overload=watch.first,
+                          peak_tension_ratio=watch.peak_ratio)
 
 
 def periodic_start(scene, progress: bool = True, shape_tol: float = 1e-3, power_tol: float = 1e-3,

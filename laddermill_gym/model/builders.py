@@ -49,7 +49,7 @@ class ElementList:
             attach=np.array(self.attach, dtype=np.float64).reshape(n, 2, 3),
             l0=np.array(self.l0, dtype=np.float64),
             mu=np.full(n, cable.mass_per_length), EA=np.full(n, cable.EA), DA=np.full(n, cable.DA),
-            diameter=np.full(n, cable.diameter),
+            diameter=np.full(n, cable.diameter), breaking_load=np.full(n, float(cable.breaking_load)),
         )
 
 

@@ -167,6 +167,8 @@ class Elements:
     l0 : (n_e,)  unstretched length [m];   mu : (n_e,) mass per unstretched length [kg/m]
     EA : (n_e,)  axial stiffness [N];      DA : (n_e,) Voigt damping coefficient [N s]
     diameter : (n_e,) [m]
+    breaking_load : (n_e,) tension at which the element breaks [N] (the cable file's ``breaking_load``), or None:
+        not known (no tension is an overload; ``sim/overload.py``)
     """
 
     end_kind: np.ndarray
@@ -177,6 +179,7 @@ class Elements:
     EA: np.ndarray
     DA: np.ndarray
     diameter: np.ndarray
+    breaking_load: np.ndarray | None = None
 
     @property
     def count(self) -> int:

@@ -11,6 +11,7 @@ from typing import NamedTuple
 import numpy as np
 
 from laddermill_gym.sim.interrupt import stop_requests
+from laddermill_gym.sim.overload import BREAKING_FRACTION, Overload, overload_events, tension_limits
 from laddermill_gym.sim.simulator import SimulationError, Simulator
 
 #: The band of angle of attack [deg] where the shipped wing data (configs/wings/meijaard_wing.yaml) are accurate:
@@ -38,12 +39,14 @@ class Recording:
     """Time histories: ``t`` (n,) [s] and ``views[name]`` (n, ...) with units in the names; ``error`` holds
     the SimulationError message if the run broke down (the record stops at the last good state);
     ``ground_contacts`` the contacts flagged in the samples (each body's first sample at or below the ground
-    after one above it, in time order)."""
+    after one above it, in time order); ``overloads`` the cable elements over their tension limit in the samples
+    (``sim/overload.py``: each element's first sample of a spell over it, in time order)."""
 
     t: np.ndarray
     views: dict[str, np.ndarray]
     error: str | None = None
     ground_contacts: list[GroundContact] = field(default_factory=list)
+    overloads: list[Overload] = field(default_factory=list)
     #: the run was stopped by Ctrl-C (:func:`record` with ``interruptible``): the record ends at its last sample,
     #: the state where it stopped
     interrupted: bool = False
@@ -71,7 +74,7 @@ class Recording:
 
 def record(sim: Simulator, duration: float, sample_dt: float, progress: bool = True,
            alpha_range_deg: tuple[float, float] = ALPHA_RANGE_DEG, max_abs_beta_deg: float = MAX_ABS_BETA_DEG,
-           interruptible: bool = False) -> Recording:
+           interruptible: bool = False, breaking_fraction: float = BREAKING_FRACTION) -> Recording:
     """Advance ``sim`` by ``duration`` [s] with its current controls, sampling the views every
     ``sample_dt`` [s] (rounded to whole integrator steps). A breakdown or a ground contact in "stop" mode ends
     the record early with the last good state (its last sample, between two regular ones) and the report in
@@ -85,7 +88,10 @@ def record(sim: Simulator, duration: float, sample_dt: float, progress: bool = T
     |sideslip| above ``max_abs_beta_deg`` [deg], the band where its aerodynamic data are accurate (defaults:
     the shipped wing's, :data:`ALPHA_RANGE_DEG` and :data:`MAX_ABS_BETA_DEG`; never for a body without a table,
     the rotorcraft); and, unless ``settings.ground_contact`` is "off", ``wing_ground_contact`` (n, n_wings) and
-    ``node_ground_contact`` (n, n_nodes): the wing CG or free node at or below ``settings.ground_height``."""
+    ``node_ground_contact`` (n, n_nodes): the wing CG or free node at or below ``settings.ground_height``; and
+    ``element_overload`` (n, n_elements): the element's tension above ``breaking_fraction`` [-] times its
+    breaking load (``Recording.overloads``; checked on the samples, so a peak between two samples is not seen)."""
+    limits = tension_limits(sim.assembly, breaking_fraction)
     if not duration > 0 or not sample_dt > 0:
         raise ValueError(f"duration ({duration}) and sample_dt ({sample_dt}) must be > 0")
     lo, hi = alpha_range_deg
@@ -123,7 +129,8 @@ def record(sim: Simulator, duration: float, sample_dt: float, progress: bool = T
     contacts = []
     if sim.settings.ground_contact != "off":
         contacts = _ground_flags(sim.settings.ground_height, t, views)
-    return Recording(t, views, error, contacts, interrupted=stopped)
+    views["element_overload"], overloads = overload_events(t, views["element_tension_N"], limits)
+    return Recording(t, views, error, contacts, overloads, interrupted=stopped)
 
 
 #: The most steps of one compiled call of :func:`record` [-]: a sample of more steps is run in chunks, so that a
