@@ -221,6 +221,14 @@ def cmd_bench(args) -> int:
     from laddermill_gym.studies.numerics.scenes import check_scene_names
 
     _check_json(args)
+    if args.startup:  # issue 32 point 1: cold and warm start of the envs in fresh processes
+        from laddermill_gym.studies.benchmarks.startup import run_startup
+
+        res = run_startup(quick=args.quick)
+        if args.json:
+            Path(args.json).write_text(json.dumps(res, indent=2))
+            print(f"wrote {args.json}")
+        return 0
     check_scene_names(args.scenes or [], "--scenes", crafts=False)
 
     res = run_benchmark(quick=args.quick, scenes=args.scenes)
@@ -337,6 +345,9 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--no-mill", action="store_true", help="leave out the moving-cable laddermill")
     b.add_argument("--no-pointmass", action="store_true",
                    help="leave out the point-mass scenes (podgaets_5km: 500,000 elements, memory and cost)")
+    b.add_argument("--startup", action="store_true",
+                   help="only the envs' start-up: make + reset + step in fresh processes, cold (empty numba cache) "
+                        "and warm; with --quick warm only, from the current cache")
     _benchmark_parser(sub, "bench-envs", "env steps/s: native batched vector env vs SyncVectorEnv", cmd_bench_envs)
     c = sub.add_parser("scenes", help="list the scenes")
     c.set_defaults(func=cmd_scenes)

@@ -1,0 +1,137 @@
+"""Start-up time of the environments (``laddermill bench --startup``, issue 32 point 1): a fresh Python process that
+imports gymnasium and the package, makes an env, resets it and takes one step, timed with an empty numba cache
+(cold: every kernel compiled; ``NUMBA_CACHE_DIR`` a new temporary folder) and again with the cache that run left
+(warm: every kernel loaded from it).
+
+Each measurement is its own subprocess (``python -c`` :data:`CHILD`), timed from the outside (interpreter start
+included) and from the inside (the imports to the first step); the child
+also counts the functions numba compiled (``numba.core.event``), so a warm start that compiles anything shows it.
+Machines are shared and noisy: the warm start is the median of a few runs; compare cold starts taken in the same
+period. The targets are issue 32's: TetheredWing-v0 and Rotorcraft-v0 at most 20 s cold and 1 s warm,
+LadderMill-v0 (its operating point included) at most 60 s cold.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+#: env id -> (cold target [s], warm target [s] or None): issue 32, point 1
+TARGETS: dict[str, tuple[float, float | None]] = {
+    "laddermill_gym/TetheredWing-v0": (20.0, 1.0),
+    "laddermill_gym/Rotorcraft-v0": (20.0, 1.0),
+    "laddermill_gym/LadderMill-v0": (60.0, None),
+}
+#: the envs with a warm-start target: ``--quick`` times these warm only
+QUICK_ENVS = ("laddermill_gym/TetheredWing-v0", "laddermill_gym/Rotorcraft-v0")
+#: warm starts per env (median)
+WARM_REPEATS = 3
+
+
+#: what the fresh process runs (``python -c``), its clock started before any import: make + reset (seed 0) + one
+#: step with the zero action; prints the seconds, the number of functions numba compiled and the cache it used
+CHILD = """import time
+t0 = time.perf_counter()
+import json
+from numba.core import event
+compiled = []
+class Count(event.Listener):
+    def on_start(self, ev):
+        compiled.append(1)
+    def on_end(self, ev):
+        pass
+event.register("numba:compile", Count())
+import gymnasium
+import numpy as np
+import laddermill_gym
+env = gymnasium.make({env_id!r})
+env.reset(seed=0)
+env.step(np.zeros(env.action_space.shape, dtype=env.action_space.dtype))
+seconds = time.perf_counter() - t0
+env.close()
+from numba.core.config import CACHE_DIR
+print(json.dumps({{"inside_s": seconds, "compiled": len(compiled), "cache_dir": CACHE_DIR}}))
+"""
+
+
+def run_child(env_id: str, cache_dir: str | None) -> dict:
+    """One start-up of ``env_id`` in a fresh subprocess with ``NUMBA_CACHE_DIR`` = ``cache_dir`` (None: this
+    process's environment as it is): the child's figures plus ``wall_s``, the subprocess's wall time [s]."""
+    env = dict(os.environ)
+    if cache_dir is not None:
+        env["NUMBA_CACHE_DIR"] = cache_dir
+    cmd = [sys.executable, "-c", CHILD.format(env_id=env_id)]
+    t0 = time.perf_counter()
+    r = subprocess.run(cmd, env=env, capture_output=True, text=True)
+    wall = time.perf_counter() - t0
+    if r.returncode != 0:
+        raise RuntimeError(f"start-up of {env_id} failed (exit {r.returncode}):\n{r.stderr[-2000:]}")
+    out = json.loads(r.stdout.strip().splitlines()[-1])
+    out["wall_s"] = wall
+    return out
+
+
+def measure(env_id: str, cold: bool = True, warm_repeats: int = WARM_REPEATS) -> dict:
+    """Cold start (a new, empty numba cache) and the median of ``warm_repeats`` warm starts from the cache it
+    left; with ``cold`` False, warm starts only, from the cache this process's environment names."""
+    res: dict = {"env": env_id}
+    with tempfile.TemporaryDirectory(prefix="laddermill_numba_") as tmp:
+        cache = tmp if cold else None
+        if cold:
+            res["cold"] = run_child(env_id, cache)
+        runs = [run_child(env_id, cache) for _ in range(warm_repeats)]
+    res["warm"] = {"wall_s": statistics.median(r["wall_s"] for r in runs),
+                   "inside_s": statistics.median(r["inside_s"] for r in runs),
+                   "compiled": max(r["compiled"] for r in runs), "runs": len(runs), "cache_dir": runs[0]["cache_dir"]}
+    return res
+
+
+def _verdict(seconds: float, target: float | None) -> str:
+    if target is None:
+        return ""
+    return f"(target {target:g} s: {'met' if seconds <= target else 'NOT met'})"
+
+
+def report(res: dict, echo=print) -> None:
+    """Print one env's figures."""
+    cold_t, warm_t = TARGETS.get(res["env"], (None, None))
+    echo(f"== start-up {res['env']}: make + reset + one step in a fresh process")
+    if "cold" in res:
+        c = res["cold"]
+        echo(f"  cold (empty numba cache)  {c['wall_s']:7.1f} s  (inside {c['inside_s']:.1f} s, "
+             f"{c['compiled']} functions compiled) {_verdict(c['wall_s'], cold_t)}")
+    w = res["warm"]
+    echo(f"  warm (cache filled)       {w['wall_s']:7.2f} s  (inside {w['inside_s']:.2f} s, "
+         f"{w['compiled']} functions compiled, median of runs) {_verdict(w['wall_s'], warm_t)}")
+
+
+def run_startup(quick: bool = False, envs=None, echo=print) -> dict:
+    """``laddermill bench --startup``: cold and warm start of each of ``envs`` (default: the three of
+    :data:`TARGETS`); ``quick``: warm starts only, once each, of :data:`QUICK_ENVS`, from the current cache."""
+    envs = list(envs or (QUICK_ENVS if quick else TARGETS))
+    out = {}
+    for env_id in envs:
+        echo(f"timing the start-up of {env_id} {'(warm only)' if quick else '(cold, then warm)'} ...")
+        sys.stdout.flush()
+        out[env_id] = measure(env_id, cold=not quick, warm_repeats=1 if quick else WARM_REPEATS)
+        report(out[env_id], echo)
+    return out
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.benchmarks.startup")
+    p.add_argument("--quick", action="store_true", help="warm starts only, from the current numba cache")
+    p.add_argument("--envs", nargs="*", default=None, help="env ids (default: the three with targets)")
+    args = p.parse_args(argv)
+    run_startup(args.quick, args.envs)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
