@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from laddermill_gym import Simulator
+from laddermill_gym.studies.mill import divergence as dv
 from laddermill_gym.studies.mill import meijaard as mj
 
 TINY = mj.Config(n_wings=11, max_time=10.0, max_time_3d=5.0, extra_s=2.0, after_step=2.0, dp54_wall=10.0,
@@ -74,6 +75,9 @@ def test_files_columns_and_units(study):
     assert float(power[0]["period_s"]) == pytest.approx(70.0 / 2.0)
     assert "yaw_deg" in _read(out / "direction_step.csv")[0]
     assert [r["label"] for r in _read(out / "breakdown.csv")] == [r["label"] for r in runs]
+    assert {r["outcome"] for r in _read(out / "breakdown.csv")} <= {dv.AERO, dv.HEIGHT, dv.OVERLOAD, dv.BREAKDOWN,
+                                                                     dv.TIME_LIMIT, dv.WALL_LIMIT}
+    assert {"overload", "peak_tension_ratio"} <= set(power[0])
     assert len(_read(out / "shapes.csv")) == 2 * 11
 
 
@@ -96,11 +100,11 @@ def test_range_exit_times():
     passes 21 deg at 1 s; the first sample outside is reported."""
     rows = []
     for t in (0.0, 1.0, 2.0, 3.0):
-        r = dict.fromkeys(mj.SAMPLE_KEYS, 0.0)
+        r = dict.fromkeys(dv.SAMPLE_KEYS, 0.0)
         r.update(t_after_step_s=t, alpha_deg=10.0 + 5.0 * t, alpha_min_deg=5.0, alpha_max_deg=15.0,
                  abs_beta_max_deg=25.0 if t >= 1.0 else 3.0)
         rows.append(r)
-    ex = mj.range_exit(rows)
+    ex = dv.range_exit(rows)
     assert ex["alpha_exit_slot_s"] == 2.0 and ex["beta_exit_any_s"] == 1.0
     assert math.isnan(ex["beta_exit_slot_s"]) and math.isnan(ex["alpha_exit_any_s"])
 
@@ -116,6 +120,7 @@ def test_breakdown_is_reported_not_hidden(study):
     limited.reset(sim.state, t=sim.t, controls=sim.controls, check=False)  # deliberately beyond the new limit
     run = mj.direction_step(limited, TINY, "limited")
     assert run["broke_down"] and run["t_reached_s"] < TINY.after_step
+    assert run["outcome"] == dv.BREAKDOWN and not run["physical_end"]
     assert "angular rate" in run["message"] and "t = " in run["message"]
 
 
@@ -132,4 +137,5 @@ def test_quick_command_end_to_end(tmp_path, capsys):
     assert [r["case"] for r in power] == ["2D V_c=1", "2D V_c=2", "2D V_c=5", "3D V_c=2"]
     for r in power:
         assert f"{r['case']}: {'periodic' if r['periodic'] == 'True' else 'NOT PERIODIC'}" in out
-    assert out.count("after the step (") == 3
+    assert out.count("after the step") == 4
+    assert out.count("physical end, ") + out.count("no physical end, ") == 4

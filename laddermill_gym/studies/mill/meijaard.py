@@ -12,10 +12,14 @@ written as CSV and PNG:
 * Power: the mean generator power over the last period (energy delivered / period) beside the paper's estimate
   (T_first - T_last) V_c from the mean tensions, and the period means over the second half of the search (what a
   motion that is not periodic delivers); 3D at 2 m/s from the 2D state mapped to 3D.
+* Cable strength: every periodic search checks each step's tensions against the cable's breaking load
+  (``sim/overload.py``) and each case's line says whether and where it was exceeded.
 * Fig. 8: from the 3D periodic state at 2 m/s, a 0.01 rad step of the wind direction; roll, pitch, yaw, alpha
-  and beta of the wing in slot 40 (the paper's "node 40") until the run breaks down or ``after_step`` seconds,
-  with fixed-step RK4 at the scene's dt and dt/4 and with DP5(4), and when alpha or beta leave the range in
-  which the wing data are accurate (:data:`ALPHA_OK_DEG`, :data:`BETA_OK_DEG`).
+  and beta of the wing in slot 40 (the paper's "node 40"), followed to its physical end
+  (:mod:`laddermill_gym.studies.mill.divergence`: aerodynamic data out of range for a stated time, a wing below
+  a height, or cable overload) with RK4 at the scene's dt and dt/4 and with ROS34PW2 under error control; and,
+  for comparison, RK4 at dt with no end criterion, run until the integrator breaks down (a separate, named
+  outcome) or ``after_step`` seconds.
 """
 
 from __future__ import annotations
@@ -30,31 +34,26 @@ from typing import NamedTuple
 
 import numpy as np
 from matplotlib.figure import Figure
-from tqdm import tqdm
 
 from laddermill_gym import Simulator, load_scene
-from laddermill_gym.atmosphere.field import WindField
-from laddermill_gym.kernels.integrate import OK, dp54_advance
 from laddermill_gym.ladder.periodic import PeriodicResult, run_to_periodic
 from laddermill_gym.model.states import planar_to_3d
-from laddermill_gym.sim.reports import failure_message
-from laddermill_gym.sim.simulator import SimulationError
+from laddermill_gym.sim.recording import ALPHA_RANGE_DEG, MAX_ABS_BETA_DEG
+from laddermill_gym.studies.mill.divergence import BREAKDOWN, DEFAULT_END, EndCriteria, describe, follow
 
 PAPER_POWER_W = 200e3  # [W] "of the order of 200 kW" (2D, the paper's unoptimised configuration)
-ALPHA_OK_DEG = (-16.0, 18.0)  # [deg] wing stall angles (docs/wing_data.md); beyond: flat-plate "estimates"
-BETA_OK_DEG = 21.0  # [deg] fin stall angle (docs/wing_data.md); the lateral coefficients are linear in beta
 SLOT = 40  # the paper's "node 40, in the ascending part close to the top"
-STEP_RAD = 0.01  # [rad] the paper's wind-direction change
-STEP_LEAD_S = 1.0  # [s] the step comes this long after the periodic state (so the record starts undisturbed)
 
 
 @dataclasses.dataclass(frozen=True)
 class Config:
     """Study settings. n_wings: None for the scene's 101. max_time [s]: periodic search per 2D speed (from the
     first transfer after the ramp); max_time_3d [s]: 3D search from the mapped 2D state; extra_s [s]: span after
-    the search over which the loop width is sampled; after_step [s]: run after the direction step; dp54_wall [s]:
-    wall-clock limit of the DP5(4) run; sample_s [s]: output interval; speeds [m/s]; ramp_s [s]; slot: the wing
-    slot followed after the direction step."""
+    the search over which the loop width is sampled; after_step [s]: the longest run after the direction step;
+    dp54_wall [s]: wall-clock limit of the error-controlled (ROS34PW2) run; sample_s [s]: output interval (and the
+    end criteria's sampling); speeds [m/s]; ramp_s [s]; slot: the wing slot followed after the direction step;
+    rtol: the error-controlled run's relative tolerance [-] (chosen: 1e-4; docs/work_precision.md);
+    end: the physical end criteria of the direction step."""
 
     n_wings: int | None = None
     max_time: float = 3000.0
@@ -67,6 +66,8 @@ class Config:
     ramp_s: float = 30.0
     slot: int = SLOT
     progress: bool = True
+    rtol: float = 1e-4
+    end: EndCriteria = DEFAULT_END
 
 
 class Case(NamedTuple):
@@ -124,7 +125,8 @@ def case_row(label: str, dim: int, v_c: float, res: PeriodicResult, ground, widt
             "late_power_max_kW": late.max(),
             "T_first_kN": tm[0] / 1e3, "T_last_kN": tm[-1] / 1e3, "T_min_kN": tm[k] / 1e3, "T_min_element": k,
             "loop_width_m": loop_width(res.shape_m, ground), "width_min_m": widths.min(), "width_max_m": widths.max(),
-            "breakdown": res.breakdown or ""}
+            "breakdown": res.breakdown or "", "peak_tension_ratio": res.peak_tension_ratio,
+            "overload": res.overload.text() if res.overload else ""}
 
 
 def periodic_case(v_c: float, dim: int, cfg: Config, sim: Simulator | None = None, max_time: float | None = None):
@@ -149,75 +151,16 @@ def to_3d(sim2: Simulator, cfg: Config) -> Simulator:
     return sim3
 
 
-SAMPLE_KEYS = ("t_after_step_s", "roll_deg", "pitch_deg", "yaw_deg", "p_rad_s", "q_rad_s", "r_rad_s", "alpha_deg",
-               "beta_deg", "alpha_min_deg", "alpha_max_deg", "abs_beta_max_deg")
-
-
-def _sample(sim: Simulator, t_step: float, slot: int) -> dict:
-    """The slot's Euler angles [deg], rates [rad/s], alpha and beta [deg]; extremes over slots 1..n-2 [deg]."""
-    e, w, ab = np.degrees(sim.wing_euler()[slot]), sim.wing_rates()[slot], np.degrees(sim.wing_alpha_beta())
-    return dict(zip(SAMPLE_KEYS, (sim.t - t_step, *e, *w, *ab[slot], ab[1:-1, 0].min(), ab[1:-1, 0].max(),
-                                  np.abs(ab[1:-1, 1]).max()), strict=True))
-
-
-def range_exit(rows: list[dict]) -> dict:
-    """First times after the step [s] (nan: never) at which alpha or |beta| of the followed slot, and of any wing in
-    slots 1..n-2, leave :data:`ALPHA_OK_DEG` / :data:`BETA_OK_DEG` (rows: samples of :func:`_sample`)."""
-    c = {k: np.array([r[k] for r in rows]) for k in SAMPLE_KEYS}
-    lo, hi = ALPHA_OK_DEG
-    masks = {"alpha_exit_slot_s": (c["alpha_deg"] < lo) | (c["alpha_deg"] > hi),
-             "beta_exit_slot_s": np.abs(c["beta_deg"]) > BETA_OK_DEG,
-             "alpha_exit_any_s": (c["alpha_min_deg"] < lo) | (c["alpha_max_deg"] > hi),
-             "beta_exit_any_s": c["abs_beta_max_deg"] > BETA_OK_DEG}
-    return {k: float(c["t_after_step_s"][np.argmax(m)]) if m.any() else math.nan for k, m in masks.items()}
-
-
-def _dp54_to(sim: Simulator, t_next: float, h: float, deadline: float) -> tuple[float, str]:
-    """Advance ``sim`` with DP5(4) (the settings' rtol, atol) to ``t_next`` [s] in budgets of 20000 steps from the
-    trial step ``h`` [s]; returns (the last step [s], the breakdown message (a budget that advances less than
-    0.1 ms, a mean step < 5 ns, is a stall) or why it stopped (the wall clock at ``deadline`` [s]), '' if neither)."""
-    s, budget = sim.settings, 20000
-    while sim.t < t_next:
-        t_before = sim.t
-        status, acc, rej, h, sim.t = dp54_advance(sim.t, t_next, sim.state, sim.controls, max(h, 1e-6), s.rtol,
-                                                  s.atol, sim.model, sim.work, sim.limits, budget)
-        if status != OK and acc + rej < budget:
-            return h, failure_message(sim, status, h)
-        if status != OK and sim.t - t_before < 1e-4:
-            return h, (f"DP5(4) stalled at t = {sim.t:.6g} s: {budget} steps advanced {sim.t - t_before:.2g} s (last "
-                       f"step {h:.3g} s, rtol {s.rtol:g}, atol {s.atol:g}); last good state: {sim.diagnose()}")
-        if time.perf_counter() > deadline:
-            return h, f"stopped by the wall-clock limit at t = {sim.t:.6g} s (last step {h:.3g} s; no breakdown)"
-    return h, ""
-
-
-def direction_step(sim: Simulator, cfg: Config, label: str, wall_limit: float = math.inf) -> dict:
-    """From ``sim``'s state (3D), step the wind direction by 0.01 rad ``STEP_LEAD_S`` later and run until a
-    :class:`SimulationError`, ``cfg.after_step`` [s] after the step or ``wall_limit`` [s] of wall time (DP5(4)). RK4
-    unless ``sim.settings.method`` is 'dp54'. Returns the samples, the time reached after the step [s], the
-    breakdown message (or why it stopped) and the range exits (:func:`range_exit`)."""
-    t0, dt, t_step = sim.t, sim.settings.dt, sim.t + STEP_LEAD_S
-    sim.set_wind(WindField(t0=t_step - 1e-3, dt=1e-3, speed=np.ones(2), direction=np.array([0.0, STEP_RAD])))
-    rows, message, wall0, h, done = [_sample(sim, t_step, cfg.slot)], "", time.perf_counter(), dt, 0
-    n, n_total = max(1, int(round(cfg.sample_s / dt))), int(round((STEP_LEAD_S + cfg.after_step) / dt))
-    bar = tqdm(total=round(cfg.after_step + STEP_LEAD_S, 1), desc=f"direction step, {label}", unit="s", leave=False,
-               disable=not cfg.progress)
-    while done < n_total and not message:
-        k = min(n, n_total - done)
-        try:
-            if sim.settings.method == "dp54":
-                h, message = _dp54_to(sim, t0 + (done + k) * dt, h, wall0 + wall_limit)
-            else:
-                sim.step(n_steps=k)
-        except SimulationError as err:
-            message = str(err)
-        done += k
-        rows.append(_sample(sim, t_step, cfg.slot))
-        bar.update(round(rows[-1]["t_after_step_s"] + STEP_LEAD_S, 1) - bar.n)
-    bar.close()
-    return {"label": label, "slot": cfg.slot, "rows": rows, "t_reached_s": sim.t - t_step, "message": message,
-            "broke_down": bool(message) and "wall-clock" not in message, "wall_s": time.perf_counter() - wall0,
-            **range_exit(rows[1:])}
+def direction_step(sim: Simulator, cfg: Config, label: str, wall_limit: float = math.inf,
+                   criteria: EndCriteria | None = DEFAULT_END) -> dict:
+    """From ``sim``'s state (3D), the 0.01 rad direction step followed to its end
+    (:func:`laddermill_gym.studies.mill.divergence.follow`: a physical criterion of ``criteria``, a numerical
+    breakdown, ``cfg.after_step`` [s] or ``wall_limit`` [s] of wall time) with the simulator's integrator. Adds
+    ``outcome``, ``physical_end``, ``broke_down`` and ``message`` to the run."""
+    run = follow(sim, label, cfg.slot, cfg.after_step, cfg.sample_s, criteria, wall_limit, cfg.progress)
+    end = run["end"]
+    return {**run, "outcome": end.outcome, "physical_end": end.physical, "broke_down": end.outcome == BREAKDOWN,
+            "end_bodies": " ".join(str(b) for b in end.bodies), "message": end.text}
 
 
 def write_csv(path: Path, rows: list[dict]) -> None:
@@ -274,20 +217,24 @@ def plot_tensions(cases: list, path: Path) -> None:
 
 
 def plot_step(runs: list[dict], path: Path) -> None:
-    """Fig. 8: yaw, roll and alpha / beta of the wing in slot 40 after the 0.01 rad wind-direction step."""
+    """Fig. 8: yaw, roll and alpha / beta of the wing in slot 40 after the 0.01 rad wind-direction step, each run to
+    its end (a physical criterion, a numerical breakdown or the time limit), the end marked."""
     fig = Figure(figsize=(9, 9))
     axs = fig.subplots(3, 1, sharex=True)
     for run in runs:
         r = {k: np.array([x[k] for x in run["rows"]]) for k in run["rows"][0]}
-        end = f"breaks down at {run['t_reached_s']:.1f} s" if run["broke_down"] else f"to {run['t_reached_s']:.1f} s"
+        end = run["end"]
         yaw = np.degrees(np.unwrap(np.radians(r["yaw_deg"])))
-        line = axs[0].plot(r["t_after_step_s"], yaw, label=f"{run['label']}: {end}")[0]
+        line = axs[0].plot(r["t_after_step_s"], yaw, label=f"{run['label']}: {end.outcome} at "
+                           f"{end.t_after_step_s:.1f} s")[0]
         axs[1].plot(r["t_after_step_s"], r["roll_deg"], color=line.get_color())
         axs[2].plot(r["t_after_step_s"], r["alpha_deg"], color=line.get_color())
         axs[2].plot(r["t_after_step_s"], r["beta_deg"], ":", color=line.get_color())
-    for y in (*ALPHA_OK_DEG, BETA_OK_DEG, -BETA_OK_DEG):
+        for ax in axs:
+            ax.axvline(end.t_after_step_s, color=line.get_color(), lw=0.8, ls="-." if end.physical else ":")
+    for y in (*ALPHA_RANGE_DEG, MAX_ABS_BETA_DEG, -MAX_ABS_BETA_DEG):
         axs[2].axhline(y, color="grey", lw=0.6, ls="--")
-    axs[2].set_xlabel("time after the 0.01 rad wind-direction step [s]")
+    axs[2].set_xlabel("time after the 0.01 rad wind-direction step [s] (vertical lines: the end of each run)")
     axs[0].legend(fontsize=8)
     axs[0].set_title(f"Fig. 8: wing in slot {runs[0]['slot']}, 3D, V_c = 2 m/s (dashed: range of accurate wing data)",
                      fontsize=10)
@@ -318,7 +265,9 @@ def describe_case(row: dict) -> str:
             f"smallest mean tension {row['T_min_kN']:.1f} kN in element {row['T_min_element']}; first - last = "
             f"{row['T_first_kN']:.1f} - {row['T_last_kN']:.1f} = {row['T_first_kN'] - row['T_last_kN']:.1f} kN; "
             f"loop width {row['loop_width_m']:.0f} m (sampled after it: {row['width_min_m']:.0f}-"
-            f"{row['width_max_m']:.0f} m)")
+            f"{row['width_max_m']:.0f} m); " + (f"CABLE OVERLOAD at {row['overload']}" if row["overload"] else
+                                               "no cable overload") +
+            f" (peak tension {row['peak_tension_ratio']:.3g} x the breaking load)")
 
 
 def run_periodic_cases(cfg: Config, out: Path):
@@ -345,23 +294,24 @@ def run_periodic_cases(cfg: Config, out: Path):
 
 
 def run_direction_steps(sim3: Simulator, cfg: Config, out: Path) -> list[dict]:
-    """Section 4: the direction step from the 3D periodic state with RK4 at dt and dt/4 and with DP5(4)."""
+    """Section 4: the direction step from the 3D periodic state, followed to its physical end with RK4 at dt and
+    dt/4 and with ROS34PW2 under error control, and with RK4 at dt and no end criterion (to its breakdown)."""
     dt = sim3.settings.dt
     runs = []
-    for label, method, h, wall in (("RK4 dt", "rk4", dt, math.inf), ("RK4 dt/4", "rk4", dt / 4, math.inf),
-                                   ("DP5(4)", "dp54", dt, cfg.dp54_wall)):
-        s = Simulator(sim3.assembly, sim3.state, dataclasses.replace(sim3.settings, method=method, dt=h),
-                      sim3.controls)
+    for label, method, h, wall, crit in (
+            (f"RK4 dt = {dt * 1e3:g} ms", "rk4", dt, math.inf, cfg.end),
+            (f"RK4 dt/4 = {dt * 250:g} ms", "rk4", dt / 4, math.inf, cfg.end),
+            (f"ROS34PW2, rtol {cfg.rtol:g}", "ros34pw2a", dt, cfg.dp54_wall, cfg.end),
+            (f"RK4 dt = {dt * 1e3:g} ms, no end criterion", "rk4", dt, math.inf, None)):
+        # atol [state units]: 1e-6 (um, um/s) where a state is near 0 (the lateral offsets the step starts from)
+        settings = dataclasses.replace(sim3.settings, method=method, dt=h, rtol=cfg.rtol, atol=1e-6)
+        s = Simulator(sim3.assembly, sim3.state, settings, sim3.controls)
         s.reset(sim3.state, t=sim3.t, controls=sim3.controls)
-        run = direction_step(s, cfg, f"{label} = {h * 1e3:g} ms" if method == "rk4" else label, wall)
+        run = direction_step(s, cfg, label, wall, crit)
         runs.append(run)
-        print(f"{run['label']}: reached {run['t_reached_s']:.2f} s after the step "
-              f"({'broke down' if run['broke_down'] else 'no breakdown'}; {run['wall_s']:.0f} s wall); alpha / "
-              f"beta of slot {cfg.slot} leave the data's range at {run['alpha_exit_slot_s']:.1f} / "
-              f"{run['beta_exit_slot_s']:.1f} s, of any wing at {run['alpha_exit_any_s']:.1f} / "
-              f"{run['beta_exit_any_s']:.1f} s; {run['message'] or 'ran to the end'}", flush=True)
+        print(describe(run), flush=True)
     write_csv(out / "direction_step.csv", [{"run": r["label"], **x} for r in runs for x in r["rows"]])
-    write_csv(out / "breakdown.csv", [{k: v for k, v in r.items() if k != "rows"} for r in runs])
+    write_csv(out / "breakdown.csv", [{k: v for k, v in r.items() if k not in ("rows", "end")} for r in runs])
     plot_step(runs, out / "fig8_direction_step.png")
     return runs
 
@@ -369,8 +319,8 @@ def run_direction_steps(sim3: Simulator, cfg: Config, out: Path) -> list[dict]:
 NOTES = """Notes. What the paper does not give is ours: the wing's coefficients and inertia (docs/wing_data.md), the
 tail settings (elevator -4 deg ascending, -1 deg descending, chosen so that the mill is periodic at 2 m/s), the
 100 m between the two sheaves and the new wing's attitude. The paper's ~200 kW estimates an unoptimised design by
-(T_first - T_last) V_c, as ours. Accurate data: alpha within the wing's stall angles (-16, 18) deg, |beta| within
-the fins' 21 deg (docs/wing_data.md)."""
+(T_first - T_last) V_c, as ours. Accurate data: alpha within -14..18 deg (the tail's and the wing's stall), |beta|
+within the fins' 21 deg (docs/wing_data.md)."""
 
 
 def main(argv: list[str] | None = None) -> int:
