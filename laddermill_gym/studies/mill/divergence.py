@@ -99,12 +99,16 @@ class Judge:
         judged[list(range(n_wings)) if criteria.aero_wings is None else list(criteria.aero_wings)] = True
         self.judged = judged
         self.out_since = np.full(n_wings, np.nan)  # time [s] each wing left the band (nan: inside)
+        #: over the samples seen: the lowest wing CG height [m] and the largest tension over its limit [-]
+        self.lowest, self.peak_ratio = math.inf, 0.0
 
     def see(self, t: float, alpha_deg: np.ndarray, beta_deg: np.ndarray, heights: np.ndarray,
             tensions: np.ndarray) -> End | None:
         """One sample: time [s], alpha and beta per wing [deg], CG heights [m], tensions (n_e,) [N]. Returns the
         :class:`End` when a criterion holds (checked in the order overload, height, aerodynamic range), else None."""
         c, ts = self.c, t - self.t_step
+        self.lowest = min(self.lowest, float(np.min(heights)))
+        self.peak_ratio = max(self.peak_ratio, float(np.max(tensions / self.limits)))
         over = np.flatnonzero(tensions > self.limits)
         if over.size:
             e = int(over[np.argmax(tensions[over] / self.limits[over])])
@@ -199,7 +203,9 @@ def follow(sim: Simulator, label: str, slot: int, after_step: float, sample_s: f
             bar.update(round(rows[-1]["t_after_step_s"] + STEP_LEAD_S, 1) - bar.n)
     end = end or End(TIME_LIMIT, sim.t - t_step, [], f"no end criterion within {after_step:g} s after the step")
     return {"label": label, "slot": slot, "rows": rows, "end": end, "t_reached_s": sim.t - t_step,
-            "wall_s": time.perf_counter() - wall0, "steps": list(sim.adaptive_steps), **range_exit(rows[1:])}
+            "wall_s": time.perf_counter() - wall0, "steps": list(sim.adaptive_steps),
+            "lowest_wing_m": judge.lowest if judge else math.nan, "peak_tension_ratio": judge.peak_ratio if judge
+            else math.nan, **range_exit(rows[1:])}
 
 
 def describe(run: dict) -> str:
@@ -213,4 +219,5 @@ def describe(run: dict) -> str:
     return (f"{run['label']}: {kind}, {end.outcome} at {end.t_after_step_s:.2f} s after the step{wings}: {end.text}; "
             f"slot {run['slot']} leaves the data's alpha / beta range at {run['alpha_exit_slot_s']:.1f} / "
             f"{run['beta_exit_slot_s']:.1f} s, any wing at {run['alpha_exit_any_s']:.1f} / "
-            f"{run['beta_exit_any_s']:.1f} s; {run['wall_s']:.0f} s wall")
+            f"{run['beta_exit_any_s']:.1f} s; lowest wing CG {run['lowest_wing_m']:.1f} m, peak tension "
+            f"{run['peak_tension_ratio']:.3g} x the breaking load (judged samples); {run['wall_s']:.0f} s wall")
