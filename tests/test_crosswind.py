@@ -121,3 +121,21 @@ def test_reel_out_flies_figure_eights_under_loyds_bound():
     loyd = 4 / 27 * 0.5 * task.scene.assembly.wind.rho0 * wing.area * cl * (cl / cd) ** 2 * max(wind) ** 3
     mean = float(np.mean(mech[400:]))
     assert 10 * 1.9e3 < mean < loyd, (mean, loyd)
+
+
+def test_cycle_figures_from_a_record(tmp_path):
+    """The study's angles of recorded positions agree with the wind-window read-outs (two implementations), and
+    the three figures are written."""
+    from laddermill_gym.studies.pumping.cycle_figures import cycle_figures, window_angles
+
+    rng = np.random.default_rng(1)
+    p = rng.normal(size=(50, 3)) * [100, 100, 50] + [-300, 0, -200]
+    rec = {"x": p[:, 0], "y": p[:, 1], "z": p[:, 2], "t": np.arange(50) * 0.05, "phase": np.repeat([0, 1, 2, 3, 0], 10),
+           "tension": np.ones(50), "v": np.zeros(50), "e_el": np.zeros(50)}
+    az, el = window_angles(rec)
+    ww = wind_window(p, np.zeros_like(p), np.repeat(np.eye(3)[None], 50, axis=0))
+    np.testing.assert_allclose(az, ww.azimuth, atol=1e-12)
+    np.testing.assert_allclose(el, ww.elevation, atol=1e-12)
+    paths = cycle_figures(rec, 0.05, PHASE_NAMES, 2, "test", tmp_path)
+    assert [q.name for q in paths] == ["pumping_window.png", "pumping_path3d.png", "pumping_timeseries.png"]
+    assert all(q.stat().st_size > 1000 for q in paths)

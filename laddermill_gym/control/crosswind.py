@@ -56,7 +56,7 @@ REEL_OUT, RETRACT, REEL_IN, ENTRY = 0, 1, 2, 3
 PHASE_NAMES = ("reel_out", "retract", "reel_in", "entry")
 _G = 9.80665  # [m/s^2] standard gravity
 _PARK_MARGIN = math.radians(5.0)  # [rad] the retraction ends this close to the park elevation
-_ZENITH_STOP, _ZENITH_SLOW = math.radians(86.0), math.radians(6.0)  # [rad] the reel-in's elevation limit (chosen)
+_ZENITH_STOP, _ZENITH_SLOW = math.radians(88.0), math.radians(4.0)  # [rad] the reel-in's elevation limit (chosen)
 _ELEVATION_GAIN = 0.0  # [rad elevator / rad elevation] the reel-in's elevation hold (tuned)
 _MIN_TENSION = 5000.0  # [N] the bank law's smallest tension (slack-tether turns are not banked harder; tuned)
 
@@ -146,15 +146,19 @@ class CrosswindController:
         return aileron, rudder
 
     def _winch(self, o: np.ndarray, ph: np.ndarray, s: np.ndarray, elevation: np.ndarray) -> np.ndarray:
-        """Winch speed command [m/s]; the reel-in slows from ``_ZENITH_SLOW`` below ``_ZENITH_STOP`` and stops there
-        (reeling in lifts the wing towards the zenith, over which it would fall upwind)."""
+        """Winch speed command [m/s]. Reel-out: f times the along-tether wind, faster above ``max_tension``.
+        Reel-in: -reel_in_speed, slowed from ``_ZENITH_SLOW`` below ``_ZENITH_STOP`` to a stop there (reeling in
+        lifts the wing towards the zenith, over which it would fall upwind), and paying out again by
+        ``overload_gain`` per N of drum tension above ``reel_in_tension`` (the wing still powered after the
+        retraction is not hauled in against its full pull)."""
         w, f = self.config.winch, self.config.phases
+        tension = o[:, WINCH_OBS_INDEX["drum_tension"]]
+        v_out = w.reel_out_factor * np.maximum(o[:, WINCH_OBS_INDEX["radial_wind"]], 0.0)
+        v_out = v_out + w.overload_gain * np.maximum(tension - w.max_tension, 0.0)
         slow = np.clip((_ZENITH_STOP - elevation) / _ZENITH_SLOW, 0.0, 1.0)
-        i = WINCH_OBS_INDEX
-        v_out = w.reel_out_factor * np.maximum(o[:, i["radial_wind"]], 0.0)
-        v_out = v_out + w.overload_gain * np.maximum(o[:, i["drum_tension"]] - w.max_tension, 0.0)
+        v_in = -w.reel_in_speed * slow + w.overload_gain * np.maximum(tension - w.reel_in_tension, 0.0)
         cmd = np.select([ph == REEL_OUT, ph == RETRACT, ph == REEL_IN],
-                        [v_out, np.where(s < f.reel_length + f.overrun, v_out, 0.0), -w.reel_in_speed * slow], 0.0)
+                        [v_out, np.where(s < f.reel_length + f.overrun, v_out, 0.0), np.minimum(v_in, v_out)], 0.0)
         return np.clip(cmd, *self.speed_limits)
 
     def controls(self, obs: np.ndarray) -> np.ndarray:

@@ -43,12 +43,14 @@ class CourseGains:
 @dataclass(frozen=True)
 class WinchLaw:
     """Reel-out at reel_out_factor x the wind along the tether at the wing (Loyd's 1/3), plus overload_gain
-    [m/s per N] x the tension above max_tension [N]; reel-in at reel_in_speed [m/s] (> 0)."""
+    [m/s per N] x the tension above max_tension [N]; reel-in at reel_in_speed [m/s] (> 0), plus overload_gain x
+    the tension above reel_in_tension [N]."""
 
     reel_out_factor: float
     max_tension: float
     overload_gain: float
     reel_in_speed: float
+    reel_in_tension: float
 
 
 @dataclass(frozen=True)
@@ -110,7 +112,8 @@ def load_crosswind_config(name_or_path: str | Path = DEFAULT_CROSSWIND_CONFIG) -
     winch = WinchLaw(reel_out_factor=w.number("reel_out_factor", positive=True),
                      max_tension=w.number("max_tension", positive=True),
                      overload_gain=w.number("overload_gain", nonneg=True),
-                     reel_in_speed=w.number("reel_in_speed", positive=True))
+                     reel_in_speed=w.number("reel_in_speed", positive=True),
+                     reel_in_tension=w.number("reel_in_tension", positive=True))
     w.done()
     f = s.section("phases")
     phases = PhaseSettings(reel_length=f.number("reel_length", positive=True), overrun=f.number("overrun", nonneg=True),

@@ -1,12 +1,14 @@
-"""Dynamic pumping cycle against the quasi-steady prediction (issue part 4): the LQR-assisted scripted cycle
-(``control/pumping_cycle.py``) flies ``laddermill_gym/PumpingKite-v0``'s task (steady wind after the envs' 0.01 rad
-direction step at 1 s) for several cycles;
+"""Dynamic pumping cycle against the quasi-steady prediction (issue part 4): the crosswind controller
+(``control/crosswind.py``, figure eights; default) or the LQR-assisted static scripted cycle
+(``control/pumping_cycle.py``, ``--controller lqr``) flies ``laddermill_gym/PumpingKite-v0``'s task (steady
+wind after the envs' 0.01 rad direction step at 1 s) for several cycles;
 each complete cycle's net electrical mean power is compared with Lansdorp et al. (2008) eqs. 1-14 and the
 Schmehl / van der Vlugt model (``quasisteady/``) at the same parameters (wind at the wing, cable angle, C_L and
 C_D at the flown angle of attack, Delta L, reel-in speed, efficiency), with a static-kite variant of eq. 9, and
 with eqs. 10-14 fed the simulated phase means. docs/pumping.md explains the differences.
 
-Run: ``python -m laddermill_gym.studies.pumping.pumping_cycle [--cycles 3] [--out results/pumping_cycle]``.
+Run: ``python -m laddermill_gym.studies.pumping.pumping_cycle [--cycles 3] [--controller crosswind|lqr]
+[--out results/pumping_cycle]``; with ``--out``: the table as JSON and the figures of ``cycle_figures.py``.
 """
 
 from __future__ import annotations
@@ -20,6 +22,8 @@ from pathlib import Path
 import numpy as np
 from tqdm import tqdm
 
+from laddermill_gym.control.crosswind import PHASE_NAMES, CrosswindController
+from laddermill_gym.control.crosswind_config import load_crosswind_config
 from laddermill_gym.control.lqr import DEFAULT_CONFIG
 from laddermill_gym.control.pumping_cycle import PHASE_IN, PHASE_OUT, PumpingCycleController, lateral_lqr
 from laddermill_gym.envs.observation import OBS_INDEX
@@ -29,6 +33,7 @@ from laddermill_gym.quasisteady import lansdorp, schmehl
 from laddermill_gym.quasisteady.lansdorp import PumpingParams
 from laddermill_gym.sim.statics import table_spline
 from laddermill_gym.studies.commands import Command, check_number
+from laddermill_gym.studies.pumping.cycle_figures import cycle_figures
 
 __all__ = ["run_cycles", "cycle_stats", "quasi_steady", "add_parser", "main"]
 
@@ -52,7 +57,7 @@ def run_cycles(task: PumpingTask, controller, n_cycles: int, t_max: float | None
                      info["drum_tension_N"][0], task.electrical_energy[0],
                      info["mechanical_power_W"][0] * task.control_dt, *task.batch.states[0, :3],
                      ro[OBS_INDEX["alpha"]], ro[-1], ro[-2], abs(ro[OBS_INDEX["dy"]])])
-        if prev == PHASE_IN and phase == PHASE_OUT:
+        if prev == PHASE_IN and phase != PHASE_IN:
             ends += 1
             bar.update(1)
         prev = phase
@@ -72,12 +77,12 @@ def run_cycles(task: PumpingTask, controller, n_cycles: int, t_max: float | None
 
 
 def cycle_stats(rec: dict[str, np.ndarray], dt: float) -> list[dict[str, float]]:
-    """Per complete cycle (a reel-out start to the next): duration [s], reel-out / reel-in durations [s] (winch
+    """Per complete cycle (the end of a reel-in to the next): duration [s], reel-out / reel-in durations [s] (winch
     speed sign), mechanical energy out / in [J], net electrical energy [J] and mean power [W], mean reel-out
     tension and speed (time means over V > 0), mean reel-in tension [N], tether reeled [m], mean altitude [m],
     cable angle from the vertical [rad], wind at the wing [m/s], alpha [rad] over reel-out, max |dy| [m]."""
     ph = rec["phase"]
-    starts = np.flatnonzero((ph[1:] == PHASE_OUT) & (ph[:-1] == PHASE_IN)) + 1
+    starts = np.flatnonzero((ph[1:] != PHASE_IN) & (ph[:-1] == PHASE_IN)) + 1
     out = []
     for a, b in zip(starts[:-1], starts[1:], strict=True):
         sl = slice(a, b)
@@ -127,28 +132,6 @@ def quasi_steady(c: dict[str, float], task: PumpingTask) -> dict[str, float]:
             "static_tension_N": t_static, "cl": cl, "cd": cd}
 
 
-def _figure(rec, stats, out: Path) -> Path:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(3, 1, figsize=(8, 7), sharex=True)
-    ax[0].plot(rec["t"], rec["s"])
-    ax[0].set_ylabel("paid out s [m]")
-    ax[1].plot(rec["t"], rec["tension"] / 1e3)
-    ax[1].set_ylabel("drum tension [kN]")
-    ax[2].plot(rec["t"], np.cumsum(rec["e_el"]) / 1e3)
-    ax[2].set_ylabel("net electrical energy [kJ]")
-    ax[2].set_xlabel("t [s]")
-    ax[0].set_title("PumpingKite: LQR-assisted scripted cycle (0.01 rad direction step at 1 s)")
-    fig.tight_layout()
-    path = out / "pumping_cycle.png"
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return path
-
-
 def _arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--config", default="pumping_kite", help="pumping config (configs/pumping/NAME.yaml or a path)")
     p.add_argument("--cycles", type=int, default=3, help="complete cycles to fly (the first starts from the trim)")
@@ -158,6 +141,9 @@ def _arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--elements", type=int, help="tether elements (scene elements_per_piece; the winch changes the "
                    "lowest one's length)")
     p.add_argument("--no-lqr", action="store_true", help="the scripted cycle alone (rudder and aileron at trim)")
+    p.add_argument("--controller", choices=("crosswind", "lqr"), default="crosswind",
+                   help="crosswind: figure eights (control/crosswind.py, configs/agents/crosswind_pumping.yaml); lqr: "
+                   "the static scripted cycle with the lateral LQR (--no-lqr: without it)")
 
 
 def _run(args) -> int:
@@ -175,7 +161,7 @@ def _run(args) -> int:
                if v is not None}
     if changes:
         task.pumping = dataclasses.replace(task.pumping, cycle=dataclasses.replace(task.pumping.cycle, **changes))
-    ctl = PumpingCycleController(task, None if args.no_lqr else lateral_lqr(task, DEFAULT_CONFIG))
+    ctl, names, title = _controller(task, args)
     try:
         rec = run_cycles(task, ctl, args.cycles + 1)
     except RuntimeError as err:
@@ -195,8 +181,25 @@ def _run(args) -> int:
         args.out.mkdir(parents=True, exist_ok=True)
         (args.out / "pumping_cycle.json").write_text(json.dumps(rows, indent=1))
         print(args.out / "pumping_cycle.json")
-        print(_figure(rec, stats, args.out))
+        for path in cycle_figures(rec, task.control_dt, names, PHASE_IN, title, args.out):
+            print(path)
     return 0
+
+
+def _controller(task: PumpingTask, args):
+    """(controller, its phase names, a figure title) of the command's options."""
+    if args.controller == "lqr" or args.no_lqr:
+        names = ("reel_out", "depower", "reel_in")
+        if args.no_lqr:
+            return PumpingCycleController(task), names, "PumpingKite: scripted static cycle"
+        return (PumpingCycleController(task, lateral_lqr(task, DEFAULT_CONFIG)), names,
+                "PumpingKite: LQR-assisted static cycle")
+    cfg = load_crosswind_config()
+    winch = dataclasses.replace(cfg.winch, reel_in_speed=args.reel_in_speed or cfg.winch.reel_in_speed)
+    alpha_in = cfg.phases.alpha_in if args.alpha_in_deg is None else math.radians(args.alpha_in_deg)
+    cfg = dataclasses.replace(cfg, winch=winch, phases=dataclasses.replace(cfg.phases, alpha_in=alpha_in))
+    return (CrosswindController(task, lateral_lqr(task, DEFAULT_CONFIG), cfg), PHASE_NAMES,
+            "PumpingKite: crosswind cycle (figure eights)")
 
 
 #: ``laddermill pumping-cycle``
