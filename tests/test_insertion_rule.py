@@ -11,74 +11,37 @@ ground point at rest) gives dv ~ V_c (1 - 1/11); the cable's rule about none.
 
 The 11-wing mill is run at 5 m/s to near its first transfer and slowed to 0.5 m/s (so that the dip stays below the
 tension and the element does not go slack), then both rules step through the transfer from the same state at
-0.1 ms. (The 3D mill, started from its own equilibrium at rest, reaches the transfer at a lower tension, 4.7 kN
+0.1 ms (the runs: ``studies/mill/insertion.py``, whose command prints them; the closed forms are this file's).
+(The 3D mill, started from its own equilibrium at rest, reaches the transfer at a lower tension, 4.7 kN
 against 16 kN in plane.)
 """
 
 from __future__ import annotations
 
-import dataclasses
 import math
 
 import numpy as np
 import pytest
 
-from laddermill_gym import Simulator, load_scene
-from laddermill_gym.kernels.contract import SX_MOVED
+from laddermill_gym import load_scene
 from laddermill_gym.ladder.scene_files import open_scene, read_station
 from laddermill_gym.model.configio import ConfigError
 from laddermill_gym.model.station import StationParams
-
-SCHEDULE = ((0.0, 5.0, 10.0, 13.0), (0.0, 5.0, 5.0, 0.5))  # [s], [m/s]: near the first transfer, then slow
+from laddermill_gym.studies.mill import insertion as ins
 
 
 @pytest.fixture(scope="module", params=[2, 3])
 def before_transfer(request):
     """(assembly, settings, controls, state and time one RK4 step before the first transfer) of the 11-wing mill."""
-    sc = load_scene("laddermill", dimension=request.param, n_wings=11)
-    st = dataclasses.replace(sc.assembly.station, speed_times=SCHEDULE[0], speed_values=SCHEDULE[1])
-    asm = dataclasses.replace(sc.assembly, station=st)
-    x0, u0 = sc.initial_state()
-    sim = Simulator(asm, x0, sc.settings, u0)
-    prev = (sim.state.copy(), sim.t)
-    while sim.transfers() == 0:
-        prev = (sim.state.copy(), sim.t)
-        sim.step()
-    return asm, sc.settings, u0, prev
+    return ins.before_transfer(request.param, 0.5)
 
 
-def _through_transfer(before, rule: str, n_after: int = 300):
-    """Step with ``rule`` at 0.1 ms from the state before the transfer: (tension of element 0 before [N], the
-    simulator right after the transfer, element 0's tension right after and over the next n_after steps [N])."""
-    asm, settings, u0, (x, t) = before
-    a = dataclasses.replace(asm, station=dataclasses.replace(asm.station, insertion=rule))
-    sim = Simulator(a, x, dataclasses.replace(settings, dt=1e-4), u0)
-    sim.reset(x, t=t, controls=u0)
-    while True:
-        t_before = sim.tensions()[0]
-        sim.step()
-        if sim.transfers() == 1:
-            break
-    after = Simulator(a, sim.state, sim.settings, u0)
-    after.reset(sim.state, t=sim.t, controls=u0)
-    ten = [sim.tensions()[0]]
-    for _ in range(n_after):
-        sim.step()
-        ten.append(sim.tensions()[0])
-    return t_before, after, np.array(ten)
+def _through_transfer(before, rule):
+    return ins.through_transfer(before, rule)
 
 
-def _mismatch(sim: Simulator) -> tuple[float, float]:
-    """(dv [m/s]: the cable material's speed at the ground point along the first element less the new wing's
-    attachment velocity along it; l1 [m], the first element's unstretched length), from the state."""
-    a, st = sim.assembly, sim.assembly.station
-    g = a.fixed_points[a.elements.end_index[0, 0]]
-    R = sim.wing_rotations()[0]
-    att = sim.wing_positions()[0] + R @ a.elements.attach[0, 1]
-    v = R @ sim.wing_velocities()[0]  # no rotation: the new wing turns not at all, so this is the attachment's
-    e = (att - g) / np.linalg.norm(att - g)
-    l1 = st.first_fraction * st.piece_length + sim.state[a.body_state_size + SX_MOVED]
-    return sim.cable_speed() * np.linalg.norm(att - g) / l1 - float(v @ e), l1
+def _mismatch(sim):
+    return ins.mismatch(sim)
 
 
 def _oracle(asm, dv: float, l1: float) -> tuple[float, float, float]:
