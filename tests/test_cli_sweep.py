@@ -61,6 +61,9 @@ CASES = [
     ("gust-bench", UNKNOWN, ["--controllers", "nosuch"], "'nosuch'"),
     ("gust-bench", UNKNOWN, ["--env", "nosuch/Env-v0"], "--env 'nosuch/Env-v0'"),
     ("gust-bench", RANGE, ["--workers", "-1"], "--workers -1"),
+    ("demo", MISSING, ["--controllers", NOFILE], "laddermill_sweep.yaml"),
+    ("demo", UNKNOWN, ["--env", "laddermill_gym/TetheredWing-v0"], "not a mill id"),
+    ("demo", RANGE, ["--time", "-1"], "--time = -1.0"),
 ]
 def test_the_sweep_covers_every_command_and_kind(capsys):
     """The commands: those ``laddermill`` lists for an unknown one (argparse's "choose from ...")."""

@@ -1,0 +1,217 @@
+"""The package's main job: the laddermill from its periodic operating point through the paper's 0.01 rad
+wind-direction step, once open loop and once under the lateral LQR (and any trained policy given), in one figure
+and one GIF.
+
+    laddermill demo [--env laddermill_gym/LadderMill-v0] [--time 60] [--controllers open_loop lqr] [--out runs]
+
+Every run starts from the same state (the env's operating point, seed 0) and meets the same step (Meijaard et al.
+1999, Fig. 8: 0.01 rad at 1 s). The figure ``demo.png`` shows, against the time since the step, the generator's
+electrical power [kW] and the largest lateral excursion of any wing [m] for each controller, and the loop seen from
+above at the end of each run; ``demo.gif`` shows the runs side by side (a run that ended keeps its last frame);
+``demo.csv`` holds the time series. What it prints: per controller, how long the mill flew after the step, how
+the run ended (the env's failure name and reason) and the mean power.
+"""
+
+from __future__ import annotations
+
+import csv
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+from tqdm import tqdm
+
+from laddermill_gym.studies.commands import Parser, UsageError, check_controllers, check_number
+
+__all__ = ["DEFAULT_ENV", "STEP", "STEP_TIME", "ControlRun", "run_demo", "plot_demo", "write_gif", "main"]
+
+#: the newest mill id: the one the main job shows
+DEFAULT_ENV = "laddermill_gym/LadderMill-v0"
+#: [rad] the paper's wind-direction step (Meijaard et al. 1999, Fig. 8)
+STEP = 0.01
+#: [s] when it comes, after the start at the operating point
+STEP_TIME = 1.0
+
+
+@dataclass
+class ControlRun:
+    """One controller's run. ``t_s`` (T,) time since the step [s]; ``power_W`` (T,) the generator's electrical
+    power [W]; ``lateral_m`` (T,) largest |lateral offset| of any wing [m]; ``positions`` (n_wings, 3) and
+    ``segments`` (n_elements, 2, 3) the wings' CG and the cable at the end [m, north-east-down]; ``outcome`` how it
+    ended ("ran to the end" or the env's failure name and reason); ``frames`` RGB frames (H, W, 3) for the GIF."""
+
+    label: str
+    t_s: np.ndarray
+    power_W: np.ndarray
+    lateral_m: np.ndarray
+    positions: np.ndarray
+    segments: np.ndarray
+    outcome: str
+    frames: list = field(default_factory=list)
+
+    @property
+    def flew_s(self) -> float:
+        """Time from the step to the end of the run [s]."""
+        return float(self.t_s[-1]) if len(self.t_s) else 0.0
+
+
+def _run_one(env, controller, label: str, frame_every: int | None, progress: bool) -> ControlRun:
+    from laddermill_gym.envs.render import scene_geometry
+
+    task = env.task
+    obs, _ = env.reset(seed=0)
+    renderer = task.renderer() if frame_every else None
+    t, power, lateral, frames = [], [], [], []
+    steps = int(round(task.episode_time / task.control_dt))
+    outcome = "ran to the end"
+    for k in tqdm(range(steps), desc=f"demo {label}", unit="step", disable=not progress):
+        action, _ = controller.predict(obs, deterministic=True)
+        obs, _, terminated, truncated, info = env.step(action)
+        t.append(float(info["t"][0]) - STEP_TIME)
+        power.append(float(info["power_W"][0]))
+        lateral.append(float(np.max(np.abs(env.lateral_offsets(obs)))))
+        if renderer is not None and (k % frame_every == 0 or terminated[0] or truncated[0]):
+            frames.append(renderer.draw(0))
+        if terminated[0]:
+            outcome = f"{info['failure_name'][0]}: {info['failure_reason'][0]}"
+        if terminated[0] or truncated[0]:
+            break
+    pos, _, seg = scene_geometry(task.batch.assembly, task.batch.states[0])
+    if renderer is not None:
+        renderer.close()
+    return ControlRun(label, np.array(t), np.array(power), np.array(lateral), pos.copy(), seg.copy(), outcome, frames)
+
+
+def run_demo(env_id: str = DEFAULT_ENV, controllers=("open_loop", "lqr"), duration: float = 60.0,
+             env_kwargs: dict | None = None, frames_per_s: float = 1.0, progress: bool = True) -> list[ControlRun]:
+    """Run each controller spec (:func:`~laddermill_gym.control.factory.make_controller`) on ``env_id`` from its
+    operating point through the paper's step for ``duration`` [s] after it; ``frames_per_s`` GIF frames per
+    simulated second (0: none). ``env_kwargs`` override the env's arguments (``scene_options`` for a smaller mill)."""
+    import gymnasium as gym
+
+    from laddermill_gym.atmosphere.disturbances import DirectionStep
+    from laddermill_gym.control.factory import make_controller
+
+    kw = dict(env_kwargs or {}, episode_time=float(duration) + STEP_TIME,
+              disturbances=[DirectionStep(step=STEP, time=STEP_TIME)])
+    env = gym.make_vec(env_id, 1, vectorization_mode="vector_entry_point", **kw)
+    every = max(1, int(round(1.0 / (frames_per_s * env.task.control_dt)))) if frames_per_s > 0 else None
+    runs = []
+    for spec in controllers:
+        controller = make_controller(spec, env_id, dict(env_kwargs or {}))
+        runs.append(_run_one(env, controller, spec if len(spec) < 24 else Path(spec).name, every, progress))
+    env.close()
+    return runs
+
+
+def plot_demo(runs: list[ControlRun], path: Path, title: str) -> Path:
+    """``demo.png``: power and largest lateral excursion against the time since the step, and the loop from above
+    at the end of each run."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig = plt.figure(figsize=(4.0 * max(2, len(runs)), 7.5))
+    grid = fig.add_gridspec(2, max(2, len(runs)))
+    ax_p, ax_y = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
+    for r in runs:
+        line, = ax_p.plot(r.t_s, r.power_W / 1e3, label=r.label)
+        ax_y.semilogy(r.t_s, np.maximum(r.lateral_m, 1e-3), color=line.get_color(), label=r.label)
+        if r.outcome != "ran to the end":
+            ax_y.plot(r.t_s[-1], max(r.lateral_m[-1], 1e-3), "x", color=line.get_color(), ms=10)
+    ax_p.set(xlabel="time since the 0.01 rad direction step [s]", ylabel="electrical power [kW]")
+    ax_y.set(xlabel="time since the step [s]", ylabel="largest lateral excursion [m]")
+    for ax in (ax_p, ax_y):
+        ax.set_xlim(left=0.0)  # the runs start STEP_TIME before the step, at the operating point
+    ax_p.legend()
+    ax_y.legend(title="x: the run ended")
+    for i, r in enumerate(runs):
+        ax = fig.add_subplot(grid[1, i])
+        for a, b in r.segments:
+            ax.plot([a[1], b[1]], [a[0], b[0]], color="0.6", lw=0.6)
+        ax.scatter(r.positions[:, 1], r.positions[:, 0], s=6, c=-r.positions[:, 2], cmap="viridis")
+        ax.set(xlabel="east [m]", ylabel="north (upwind) [m]",
+               title=f"{r.label}: {r.flew_s:.1f} s after the step\n{_short(r.outcome)}")
+        ax.title.set_fontsize(9)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _short(text: str, n: int = 60) -> str:
+    return text if len(text) <= n else text[: n - 3] + "..."
+
+
+def write_gif(runs: list[ControlRun], path: Path, fps: int = 8) -> Path | None:
+    """``demo.gif``: the runs' frames side by side (a run that ended keeps its last frame); None without frames."""
+    from PIL import Image
+
+    if not all(r.frames for r in runs):
+        return None
+    n = max(len(r.frames) for r in runs)
+    images = []
+    for i in range(n):
+        row = np.concatenate([r.frames[min(i, len(r.frames) - 1)] for r in runs], axis=1)
+        images.append(Image.fromarray(row).convert("P", palette=Image.Palette.ADAPTIVE))
+    images[0].save(path, save_all=True, append_images=images[1:], duration=int(1000 / fps), loop=0)
+    return path
+
+
+def write_csv(runs: list[ControlRun], path: Path) -> Path:
+    """``demo.csv``: controller, time since the step [s], power [W], largest lateral excursion [m]."""
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["controller", "t_since_step_s", "power_W", "max_lateral_m"])
+        for r in runs:
+            for row in zip(r.t_s, r.power_W, r.lateral_m, strict=True):
+                w.writerow([r.label, *(f"{x:.6g}" for x in row)])
+    return path
+
+
+def _arguments(p) -> None:
+    p.add_argument("--env", default=DEFAULT_ENV, help=f"a mill env id (default {DEFAULT_ENV})")
+    p.add_argument("--controllers", nargs="+", default=["open_loop", "lqr"],
+                   help="open_loop, lqr, lqr:CONFIG or a trained policy (run folder or model file)")
+    p.add_argument("--time", type=float, default=60.0, help="[s] simulated time after the step (default 60)")
+    p.add_argument("--out", type=Path, default=Path("runs"), help="folder for demo.png, demo.gif, demo.csv")
+    p.add_argument("--no-gif", action="store_true", help="no GIF (the runs are a little faster)")
+    p.add_argument("--no-progress", action="store_true", help="no progress bars")
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = Parser(prog="laddermill demo", description=__doc__.split("\n\n")[0])
+    _arguments(p)
+    args = p.parse_args(argv)
+    from laddermill_gym.envs import ENV_IDS
+
+    try:
+        if args.env not in ENV_IDS or "LadderMill" not in args.env:
+            raise UsageError(f"--env {args.env!r}: not a mill id ({', '.join(i for i in ENV_IDS if 'Mill-' in i)})")
+        check_number("--time", args.time, low=0, high=3600, unit="s")
+        check_controllers(args.controllers)
+    except UsageError as err:
+        p.error(str(err))
+    t0 = time.perf_counter()
+    runs = run_demo(args.env, args.controllers, args.time, frames_per_s=0.0 if args.no_gif else 1.0,
+                    progress=not args.no_progress)
+    args.out.mkdir(parents=True, exist_ok=True)
+    print(f"{args.env}: the paper's {STEP} rad wind-direction step at t = {STEP_TIME:g} s, from the periodic "
+          "operating point")
+    print(f"{'controller':<16}{'flew after the step [s]':>24}{'mean power [kW]':>17}{'max |dy| [m]':>14}  end")
+    for r in runs:
+        print(f"{r.label:<16}{r.flew_s:>24.2f}{np.mean(r.power_W) / 1e3:>17.1f}{np.max(r.lateral_m):>14.2f}  "
+              f"{r.outcome}")
+    written = [plot_demo(runs, args.out / "demo.png", f"{args.env}: {STEP} rad direction step"),
+               write_csv(runs, args.out / "demo.csv")]
+    gif = None if args.no_gif else write_gif(runs, args.out / "demo.gif")
+    written += [gif] if gif else []
+    print(f"wrote {', '.join(str(x) for x in written)} in {time.perf_counter() - t0:.0f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
