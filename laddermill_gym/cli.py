@@ -189,9 +189,13 @@ def _check_step(sim) -> None:
 
 
 def _flag_lines(rec) -> list[str]:
-    """Printed summary of a recording's flags: ground contacts (``ground_contact: flag``) and wings outside the
-    accurate range of their aerodynamic data."""
+    """Printed summary of a recording's flags: ground contacts (``ground_contact: flag``), cable elements over
+    their breaking load (``sim/overload.py``) and wings outside the accurate range of their aerodynamic data."""
     lines = []
+    if rec.overloads:
+        shown = "; ".join(e.text() for e in rec.overloads[:5])
+        more = f" (and {len(rec.overloads) - 5} more)" if len(rec.overloads) > 5 else ""
+        lines.append(f"CABLE OVERLOAD, tension above the cable's breaking load (the run went on): {shown}{more}")
     if rec.ground_contacts:
         shown = "; ".join(f"t = {c.t:.6g} s {c.body} at height {c.height:.4g} m" for c in rec.ground_contacts[:5])
         more = f" (and {len(rec.ground_contacts) - 5} more)" if len(rec.ground_contacts) > 5 else ""
