@@ -15,6 +15,10 @@ Registered on ``import laddermill_gym``:
   winch (configs/pumping/pumping_kite.yaml, 20 Hz control of the tails and the winch speed, 400 s episodes of about
   two reel-out / reel-in cycles, the 0.01 rad direction step at 1 s), :class:`~laddermill_gym.envs.pumping.env.
   PumpingKiteEnv`;
+* ``laddermill_gym/PumpingKite-v1``: the same pumping kite flown crosswind (figure eights during reel-out): v0's
+  physics and actions, a flight controller's observation (position on the wind window, course, bank, apparent wind,
+  the cycle's fraction), net electrical power over 10 kW with sideslip and tether-force penalties, 600 s episodes,
+  :class:`~laddermill_gym.envs.pumping.crosswind_env.CrosswindKiteEnv`;
 * ``laddermill_gym/PointMassChain-v0``: the paper's 101-wing chain (scene ``ladder_chain``) at the point-mass
   fidelity of Podgaets & Ockels (2007): point-mass kites whose pitch and roll are the actions, one 70 m element per
   piece, the implicit point-mass step of 0.025 s, 20 Hz control, 120 s episodes from the chain settled for 600 s,
@@ -82,6 +86,8 @@ ENV_IDS: dict[str, dict] = {
     "laddermill_gym/Rotorcraft-v0": dict(craft="roberts_flying_model", control_dt=0.05, episode_time=120.0),
     "laddermill_gym/LadderMill-v0": dict(scene="laddermill", control_dt=0.05, episode_time=120.0),
     "laddermill_gym/PumpingKite-v0": dict(config="pumping_kite", control_dt=0.05, episode_time=400.0),
+    # crosswind pumping (issue 29): v0's kite; 600 s, about two cycles of the crosswind controller (267 s each)
+    "laddermill_gym/PumpingKite-v1": dict(config="pumping_kite", control_dt=0.05, episode_time=600.0),
     # ladder_chain at the point-mass fidelity. element_length 70 m: one element per 70 m piece, as LadderChain-v0
     # (elements_per_piece 1, Meijaard et al. 1999); its settled base tension 178.7 kN against 178.9 kN at 1 m
     # (docs/pointmass.md, "Between fidelities"). method implicit, dt 0.025 s: the explicit step must stay below
@@ -109,6 +115,9 @@ ENTRY_POINTS: dict[str, tuple[str, str, str]] = {
     "laddermill_gym/PumpingKite-v0": ("laddermill_gym.envs.pumping.env:PumpingKiteEnv",
                                       "laddermill_gym.envs.pumping.env:PumpingKiteVectorEnv",
                                       "laddermill_gym.envs.pumping.task:PumpingTask"),
+    "laddermill_gym/PumpingKite-v1": ("laddermill_gym.envs.pumping.crosswind_env:CrosswindKiteEnv",
+                                      "laddermill_gym.envs.pumping.crosswind_env:CrosswindKiteVectorEnv",
+                                      "laddermill_gym.envs.pumping.crosswind_task:CrosswindTask"),
     "laddermill_gym/PointMassChain-v0": ("laddermill_gym.envs.pointmass.env:PointMassEnv",
                                          "laddermill_gym.envs.pointmass.env:PointMassVectorEnv",
                                          "laddermill_gym.envs.pointmass.task:PointMassTask"),
