@@ -99,16 +99,14 @@ def _mill_controller(spec: str, kw: dict) -> Controller:
     return design_mill_lqr(cfg, task).controller(task)
 
 
-def _pumping_controller(spec: str, kw: dict) -> Controller:
-    """PumpingKite-v0: ``open_loop`` (the zero action: reel-out trim, winch stopped), ``scripted`` (the pumping cycle
+def _pumping_controller(spec: str, kw: dict, task_cls: type) -> Controller:
+    """PumpingKite-v0 and -v1: ``open_loop`` (the zero action: reel-out trim, winch stopped), ``scripted`` (the cycle
     with rudder and aileron at trim) or ``lqr`` / ``lqr:<config>`` (the cycle with the wing's lateral LQR; default
     config ``lqr_tethered_wing.yaml``, designed on the pumping scene: ``control.pumping_cycle``)."""
     import numpy as np
 
     from laddermill_gym.control.pumping_cycle import PumpingCycleController, lateral_lqr
-    from laddermill_gym.envs.pumping.task import PumpingTask
-
-    task = PumpingTask(1, **{k: v for k, v in kw.items() if k != "parallel"})
+    task = task_cls(1, **{k: v for k, v in kw.items() if k != "parallel"})
     if spec == "open_loop":
         from laddermill_gym.control.open_loop import OpenLoopController
 
@@ -157,9 +155,10 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     kw = registered_arguments(env_id, env_kwargs)  # as gymnasium.make merges them, key by key at every depth
     if "craft" in kw and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):
         return _craft_controller(spec, kw)
-    if task_class(env_id).__name__ == "PumpingTask" and (spec in ("open_loop", "scripted", "lqr", "crosswind")
-                                                        or spec.startswith(("lqr:", "crosswind:"))):
-        return _pumping_controller(spec, kw)
+    pumping = any(c.__name__ == "PumpingTask" for c in task_class(env_id).__mro__)  # v0's task and v1's
+    if pumping and (spec in ("open_loop", "scripted", "lqr", "crosswind")
+                    or spec.startswith(("lqr:", "crosswind:"))):
+        return _pumping_controller(spec, kw, task_class(env_id))
     if task_class(env_id).__name__ == "PointMassTask" and (spec in ("open_loop", "lqr") or spec.startswith("lqr:")):
         return _pointmass_controller(spec, kw)
     if task_class(env_id).__name__ == "MillTask" and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):

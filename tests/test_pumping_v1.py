@@ -1,0 +1,95 @@
+"""laddermill_gym/PumpingKite-v1 (crosswind pumping): v0's entries unchanged (against the v0 env, same seed and
+actions), the wind-window entries against closed forms of the wing's state and the scene's wind profile, the
+reward's terms, the crosswind controller as its baseline. The shared contract (checkers, seeding, vector = single,
+pickling, autoreset) is tests/test_env_contract.py's."""
+
+import math
+
+import gymnasium as gym
+import numpy as np
+import pytest
+
+from laddermill_gym.control.factory import make_controller
+from laddermill_gym.envs.observation import OBS_INDEX
+from laddermill_gym.envs.pumping.crosswind_observation import CROSSWIND_OBS_INDEX, N_CROSSWIND_OBS
+from laddermill_gym.envs.pumping.observation import N_OBS, WINCH_OBS_INDEX
+
+V0, V1 = "laddermill_gym/PumpingKite-v0", "laddermill_gym/PumpingKite-v1"
+
+
+def _actions(n, seed=3):
+    return np.random.default_rng(seed).uniform(-0.3, 0.3, size=(n, 4)).astype(np.float32)
+
+
+def test_v1_extends_v0_bit_for_bit():
+    """The same seed and actions: v1's first 20 entries are v0's observation, its power term is v0's energy over
+    10 kW instead of 1 kW."""
+    e0, e1 = gym.make(V0, episode_time=5.0).unwrapped, gym.make(V1, episode_time=5.0).unwrapped
+    o0, _ = e0.reset(seed=4)
+    o1, _ = e1.reset(seed=4)
+    assert o1.shape == (N_CROSSWIND_OBS,) and e1.observation_space.shape == (N_CROSSWIND_OBS,)
+    np.testing.assert_array_equal(o1[:N_OBS], o0)
+    for a in _actions(40):
+        o0, _, _, _, i0 = e0.step(a)
+        o1, _, _, _, i1 = e1.step(a)
+        np.testing.assert_array_equal(o1[:N_OBS], o0)
+        assert i1["reward_power"] == pytest.approx(i0["reward_power"] / 10.0, rel=1e-12)
+
+
+def test_wind_window_entries_against_closed_forms():
+    """Steady wind (no disturbance): elevation asin(h / |p|), azimuth atan2(y, -x) of the wing's position (the
+    v0 entries plus the start position), apparent wind |w(h) - v| with the scene's profile w = -V(h) x,
+    V(h) = v0 + v1 (h - h0) above h0 (configs/scenes/pumping_kite.yaml), the cycle fraction s / Delta L."""
+    env = gym.make(V1, episode_time=20.0, disturbances=[]).unwrapped
+    env.reset(seed=0)
+    wind = env.task.scene.assembly.wind
+    for a in _actions(200, seed=5):
+        env.step(a)
+        o = env.task.raw_obs[0]
+        p = env.task.nominal[0] + o[:3]
+        j = CROSSWIND_OBS_INDEX
+        h = -p[2]
+        assert h > wind.h0
+        w = np.array([-(wind.v0 + wind.v1 * (h - wind.h0)), 0.0, 0.0])
+        np.testing.assert_allclose(o[j["elevation"]], math.asin(h / np.linalg.norm(p)), atol=1e-12)
+        np.testing.assert_allclose(o[j["azimuth"]], math.atan2(p[1], -p[0]), atol=1e-12)
+        np.testing.assert_allclose(o[j["apparent_wind"]], np.linalg.norm(w - o[3:6]), rtol=1e-9)
+        np.testing.assert_allclose(o[j["course_sin"]] ** 2 + o[j["course_cos"]] ** 2, 1.0, atol=1e-12)
+        assert o[j["cycle_fraction"]] == pytest.approx(o[WINCH_OBS_INDEX["paid_out"]] / 200.0, rel=1e-12)
+
+
+def test_reward_terms_sum_and_the_tension_term():
+    """The terms in info sum to the reward; the tension term is 0 below 0.4 x the breaking load and
+    -(1 - exp(-x)) above, x the excess over 0.1 x the breaking load."""
+    env = gym.make(V1, episode_time=5.0).unwrapped
+    env.reset(seed=1)
+    for a in _actions(20, seed=7):
+        _, r, _, _, info = env.step(a)
+        terms = [v for k, v in info.items() if k.startswith("reward_")]
+        assert r == pytest.approx(sum(terms), rel=1e-12, abs=1e-12)
+        assert info["reward_tension"] == 0.0  # about 2 kN, far below 210 kN
+    task = env.task
+    brk = task.scene.cable.breaking_load
+    task.reward_config = type(task.reward_config)(tension_allowed=1e-3, tension_scale=1e-3)
+    _, _, _, _, info = env.step(np.zeros(4, np.float32))
+    x = (info["max_tension_N"] - 1e-3 * brk) / (1e-3 * brk)
+    assert info["reward_tension"] == pytest.approx(-(1.0 - math.exp(-x)), rel=1e-9)
+
+
+def test_crosswind_controller_is_v1s_baseline():
+    """make_controller('crosswind', v1) flies v1's native vector env (2 copies, different seeds of the default
+    direction step): figure eights during reel-out, 60 s without a failure, more than 20 kW of mean power."""
+    ctl = make_controller("crosswind", V1)
+    env = gym.make_vec(V1, num_envs=2, vectorization_mode="vector_entry_point", episode_time=60.0)
+    obs, _ = env.reset(seed=[0, 1])
+    power, az = [], []
+    for _ in range(1200):
+        a, _ = ctl.predict(obs)
+        obs, _, term, trunc, info = env.step(a)
+        assert not term.any()
+        power.append(info["power_W"])
+        az.append(obs[:, CROSSWIND_OBS_INDEX["azimuth"]])
+    az = np.array(az)
+    assert (az.min(axis=0) < -0.25).all() and (az.max(axis=0) > 0.25).all()
+    assert (np.mean(power, axis=0) > 2.0e4).all()
+    assert np.all(np.abs(obs[:, OBS_INDEX["beta"]]) < 1.0)
