@@ -127,13 +127,15 @@ def plot_demo(runs: list[ControlRun], path: Path, title: str) -> Path:
         ax.set_xlim(left=0.0)  # the runs start STEP_TIME before the step, at the operating point
     ax_p.legend()
     ax_y.legend(title="x: the run ended")
+    east = max(1.0, 1.1 * max(float(np.max(np.abs(r.positions[:, 1]))) for r in runs))  # one scale for all
     for i, r in enumerate(runs):
         ax = fig.add_subplot(grid[1, i])
         for a, b in r.segments:
             ax.plot([a[1], b[1]], [a[0], b[0]], color="0.6", lw=0.6)
-        ax.scatter(r.positions[:, 1], r.positions[:, 0], s=6, c=-r.positions[:, 2], cmap="viridis")
-        ax.set(xlabel="east [m]", ylabel="north (upwind) [m]",
+        dots = ax.scatter(r.positions[:, 1], r.positions[:, 0], s=6, c=-r.positions[:, 2], cmap="viridis")
+        ax.set(xlabel="east [m]", ylabel="north (upwind) [m]", xlim=(-east, east),
                title=f"{r.label}: {r.flew_s:.1f} s after the step\n{_short(r.outcome)}")
+        fig.colorbar(dots, ax=ax, label="altitude [m]")
         ax.title.set_fontsize(9)
     fig.suptitle(title)
     fig.tight_layout()
