@@ -30,6 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
+from laddermill_gym.derivations.pitch_stability import print_design_study
 from laddermill_gym.derivations.wing_checks import (
     TableModel,
     attachment_vector,
@@ -63,6 +64,7 @@ from laddermill_gym.derivations.wing_parameters import (
     AR_V_EFF,
     AREAL_TAIL,
     ATT_ANGLE,
+    ATT_ANGLE_V1,
     B_H,
     B_W,
     C_W,
@@ -157,12 +159,16 @@ __all__ = [
     "N_STRIP",
     "TRIM_ALPHA_DEG",
     "ELEVATOR_LIMITS",
+    "VARIANTS",
     "design_incidence",
     "main",
 ]
 
 TRIM_ALPHA_DEG = 7.0  # [deg] design kite angle of attack at zero elevator (sets the tail rigging incidence)
 ELEVATOR_LIMITS = (-15.0, 15.0)   # [deg] horizontal-tail angle range, choice (trim alpha spans about -20..16 deg)
+#: the variants the command checks: attachment angle below body x [rad] and the (ascending, descending) elevators
+#: [deg] of their scenes (configs/scenes/laddermill.yaml for v0, laddermill_v1.yaml for v1)
+VARIANTS = {"v0": (ATT_ANGLE, (-4.0, -1.0)), "v1": (ATT_ANGLE_V1, (-6.0, -1.0))}
 
 
 def design_incidence(target_deg=TRIM_ALPHA_DEG):
@@ -186,6 +192,8 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out-dir", default="configs/wings")
     ap.add_argument("--check", action="store_true", help="print the design checks")
+    ap.add_argument("--variant", choices=sorted(VARIANTS), default="v0",
+                    help="the attachment whose trims --check prints (the table is the same for both)")
     args = ap.parse_args(argv)
     i_t = design_incidence()
     print(f"tail rigging incidence for a {TRIM_ALPHA_DEG} deg kite trim at {V_REF} m/s: {np.degrees(i_t):.3f} deg")
@@ -224,7 +232,10 @@ def main(argv=None):
     print(f"tail volumes: V_H (from wing ac) = {vh:.3f}, V_V (from CG) = {vv:.4f}; d eps/d alpha = "
           f"{2 * wing.cla_w / (np.pi * A_W):.3f}")
     if args.check:
-        run_checks(TableModel(a_deg, rows, wing.r_ref), wing, ELEVATOR_LIMITS)
+        tm = TableModel(a_deg, rows, wing.r_ref)
+        run_checks(tm, wing, ELEVATOR_LIMITS, VARIANTS[args.variant][0])
+        print_design_study(tm, {k: (att, {"ascending": np.radians(up), "descending": np.radians(dn)})
+                                for k, (att, (up, dn)) in VARIANTS.items()})
 
 
 if __name__ == "__main__":

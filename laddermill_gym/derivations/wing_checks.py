@@ -22,8 +22,9 @@ from laddermill_gym.derivations.wing_parameters import (
 from laddermill_gym.model.params import AERO_COLUMNS
 
 
-def attachment_vector():
-    return D_ATT * np.array([np.cos(ATT_ANGLE), 0.0, np.sin(ATT_ANGLE)])
+def attachment_vector(angle: float = ATT_ANGLE):
+    """Cable attachment [m], body axes from the CG: D_ATT at ``angle`` [rad] below the body x axis."""
+    return D_ATT * np.array([np.cos(angle), 0.0, np.sin(angle)])
 
 
 class TableModel:
@@ -51,12 +52,13 @@ class TableModel:
         return X, Z, M, qs * cl
 
 
-def moment_kite(tm, alpha, de, V):
-    """Pitch moment about the CG [N m] of a wing held by its cable in steady horizontal wind.
+def moment_kite(tm, alpha, de, V, att_angle: float = ATT_ANGLE):
+    """Pitch moment about the CG [N m] of a wing held by its cable in steady horizontal wind (the attachment at
+    ``att_angle`` [rad] below body x). It equals the moment of aerodynamics and weight about the attachment.
 
     Pitch = alpha; the net cable force balances aerodynamics and weight, F_c = -(F_aero + W).
     """
-    a = attachment_vector()
+    a = attachment_vector(att_angle)
     X, Z, M, _ = tm.aero(alpha, de, V)
     Wx, Wz = -MASS * G * np.sin(alpha), MASS * G * np.cos(alpha)
     Fx, Fz = -(X + Wx), -(Z + Wz)
@@ -83,8 +85,9 @@ def solve_alpha(fun, lo=-8.0 * DEG, hi=22.0 * DEG):
     return roots
 
 
-def run_checks(tm: TableModel, wing: Wing, limits_deg):
-    """Print the design checks (key numbers, trims, elevator authority)."""
+def run_checks(tm: TableModel, wing: Wing, limits_deg, att_angle: float = ATT_ANGLE):
+    """Print the design checks (key numbers, trims, elevator authority) for the attachment at ``att_angle`` [rad]
+    below body x."""
     from scipy.optimize import brentq
     deg = np.degrees
     al = np.radians(np.arange(-10, 30.01, 0.05))
@@ -112,10 +115,10 @@ def run_checks(tm: TableModel, wing: Wing, limits_deg):
     ff = solve_alpha(lambda a: cm_cg(a))
     print(f"free-flight trim (no cable) at de=0: alpha = {[round(deg(x), 2) for x in ff]} deg")
     for V in (6.0, 10.0, 15.0, 20.0):
-        r = solve_alpha(lambda a: moment_kite(tm, a, 0.0, V)[0])
+        r = solve_alpha(lambda a: moment_kite(tm, a, 0.0, V, att_angle)[0])
         s = []
         for x in r:
-            _, (Fx, Fz) = moment_kite(tm, x, 0.0, V)
+            _, (Fx, Fz) = moment_kite(tm, x, 0.0, V, att_angle)
             elev = deg(np.arctan2(Fz * np.cos(x) - Fx * np.sin(x), Fx * np.cos(x) + Fz * np.sin(x)))
             L = tm.aero(x, 0.0, V)[3]
             s.append(f"alpha={deg(x):.2f} deg, cable force {np.hypot(Fx, Fz):.0f} N (L={L:.0f} N) at "
@@ -124,14 +127,15 @@ def run_checks(tm: TableModel, wing: Wing, limits_deg):
     lo, hi = np.radians(limits_deg)
     for target in (0.0, 7.0, 15.0):
         def f(de, target=target):
-            return moment_kite(tm, np.radians(target), de, V_REF)[0]
+            return moment_kite(tm, np.radians(target), de, V_REF, att_angle)[0]
         try:
             de = brentq(f, lo, hi)
             print(f"elevator for kite trim at alpha={target:4.1f} deg (V={V_REF} m/s): de = {deg(de):6.2f} deg")
         except ValueError:
             print(f"elevator for kite trim at alpha={target:4.1f} deg: outside limits {limits_deg}")
     for de_deg in (limits_deg[0], -5.0, 0.0, 5.0, limits_deg[1]):
-        r = solve_alpha(lambda a: moment_kite(tm, a, np.radians(de_deg), V_REF)[0], np.radians(-20), np.radians(30))
+        r = solve_alpha(lambda a: moment_kite(tm, a, np.radians(de_deg), V_REF, att_angle)[0], np.radians(-20),
+                        np.radians(30))
         print(f"  de = {de_deg:6.1f} deg -> kite trim alpha = {[round(deg(x), 2) for x in r]} deg")
     for elev in (30.0, 40.0, 50.0):
         r = solve_alpha(lambda a: moment_fixed_tether(tm, a, 0.0, V_REF, np.radians(elev)))

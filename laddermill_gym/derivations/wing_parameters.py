@@ -39,6 +39,12 @@ D_BOOM = 0.08         # [m]    boom diameter, choice
 RUD_CF = 0.35         # [-]    rudder chord / fin chord, choice
 
 ATT_ANGLE = np.radians(80.0)  # [rad] attachment direction below the body x axis (ahead of and below the CG), choice
+# [rad] the v1 wing (issue 30, docs/wing_data.md "Design study: a stable in-plane mill"): the same airframe and
+# table, the cable attachment 1.5 m (paper) at 60 deg below body x, i.e. 0.75 m ahead of the CG, directly below the
+# main wing's ac: the cable's pull then grows the pitch stiffness about the attachment with the lift (a kite's
+# tow point ahead of the neutral point); chosen by the pitch check of derivations/pitch_stability.py and in-plane
+# runs of the mill (80 deg: not periodic at a descending elevator of 0 deg; 60 deg: periodic, see the doc)
+ATT_ANGLE_V1 = np.radians(60.0)
 RHO_REF, V_REF, NU = 1.225, 10.0, 1.5e-5   # [kg/m^3], [m/s], [m^2/s] design point for Reynolds numbers and trim
 G = 9.81              # [m/s^2]
 
