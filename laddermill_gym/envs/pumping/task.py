@@ -28,6 +28,7 @@ from laddermill_gym.envs.task_base import TaskCore, clip_observations, substeps_
 from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, N_CONTROLS, SX_ENERGY, SX_MOVED, SX_SPEED, TM_DT, TM_T0
 from laddermill_gym.kernels.rigid.observe import AUX_GROUND_START, N_AUX, step_observe_batch, step_observe_serial
 from laddermill_gym.kernels.wind import modulation, wind_point
+from laddermill_gym.ladder.scene import options_key, options_kwargs
 from laddermill_gym.model.states import rotations_from_quaternions
 
 __all__ = ["PumpingTask", "pumping_start"]
@@ -36,8 +37,9 @@ __all__ = ["PumpingTask", "pumping_start"]
 @functools.lru_cache(maxsize=8)
 def pumping_start(config: str, options: tuple) -> tuple[PumpingScene, np.ndarray, np.ndarray]:
     """(pumping scene, initial state, initial controls) of a pumping config with ``load_scene`` overrides
-    ``options`` (sorted (key, value) pairs), memoised per process (the trim takes seconds). Read-only arrays."""
-    ps = load_pumping(config, **dict(options))
+    ``options`` (``ladder.scene.options_key``: sorted pairs, nested mappings as JSON), memoised per process (the
+    trim takes seconds). Read-only arrays."""
+    ps = load_pumping(config, **options_kwargs(options))
     x, u = ps.initial_state()
     x.setflags(write=False)
     u.setflags(write=False)
@@ -68,7 +70,7 @@ class PumpingTask(TaskCore):
         options = dict(scene_options or {})
         if options.get("dimension", 3) != 3:
             raise ValueError(f"scene_options: dimension = {options['dimension']!r}; PumpingKite is 3D")
-        self.pumping, x0, u0 = pumping_start(str(config), tuple(sorted(options.items())))
+        self.pumping, x0, u0 = pumping_start(str(config), options_key(options))
         self.scene = sc = self.pumping.scene
         self.n_substeps = substeps_per_period(sc.name, sc.settings, self.control_dt, control_dt)
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
