@@ -64,6 +64,7 @@ CASES = [
     ("demo", MISSING, ["--controllers", NOFILE], "laddermill_sweep.yaml"),
     ("demo", UNKNOWN, ["--env", "laddermill_gym/TetheredWing-v0"], "not a mill id"),
     ("demo", RANGE, ["--time", "-1"], "--time = -1.0"),
+    ("power-curve", RANGE, ["--workers", "-1"], "--workers -1"),
 ]
 def test_the_sweep_covers_every_command_and_kind(capsys):
     """The commands: those ``laddermill`` lists for an unknown one (argparse's "choose from ...")."""
