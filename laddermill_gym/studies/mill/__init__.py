@@ -1,5 +1,4 @@
 """The moving-cable laddermill: Meijaard, Ockels & Schwab's examples redone (``meijaard``; its Fig. 8 divergence
-followed to a physical end in ``divergence``), the two wing-insertion rules' jerk (``insertion``), the power curve of the v1 mill (``power_curve``) and the
-mill's
-part of ``laddermill bench`` (``mill_benchmark``). May import the layers below studies and ``studies.benchmarks``
-(the timing helpers); no other topic of studies, never ``harness``."""
+followed to a physical end in ``divergence``), the two wing-insertion rules' jerk (``insertion``), the power curve
+of the v1 mill (``power_curve``) and the mill's part of ``laddermill bench`` (``mill_benchmark``). May import the
+layers below studies and ``studies.benchmarks`` (the timing helpers); no other topic of studies, never ``harness``."""
