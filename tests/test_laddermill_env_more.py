@@ -62,3 +62,21 @@ def test_turbulence_reaches_the_mill_and_replays_from_the_seed():
     a, b, c = airspeed(3), airspeed(3), airspeed(4)
     np.testing.assert_array_equal(a, b)
     assert np.max(np.abs(a - c)) > 1e-6
+
+
+def test_authority_scales_a_unit_action_to_its_share_of_the_half_range():
+    """``authority`` s: a = +-1 moves a surface by s x half its range from the operating point (closed form; the
+    default wing's elevator range is +-15 deg); values outside (0, 1] are refused by name."""
+    import math
+
+    env = LadderMillEnv(**small(groups="all", surfaces=("elevator",), termination=WIDE, authority=0.1))
+    env.reset(seed=0)
+    u0 = env.task.u_op[: 3 * N].reshape(N, 3)[:, 0].copy()
+    env.step(np.array([1.0], np.float32))
+    u = env.task.batch.controls[0].reshape(N, 3)
+    np.testing.assert_allclose(u[:, 0], u0 + 0.1 * math.radians(15.0), atol=1e-12)
+    lay = env.task.actions.layout
+    np.testing.assert_allclose([lay.low[0], lay.high[0]], u0[0] + np.array([-1, 1]) * 0.1 * math.radians(15.0))
+    for bad in (0.0, 1.5, True, "x"):
+        with pytest.raises(ValueError, match=f"authority = {bad!r}"):
+            LadderMillEnv(**small(authority=bad))

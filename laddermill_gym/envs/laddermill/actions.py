@@ -13,8 +13,10 @@ commands the drum's generator torque or, with ``cable_speed_command``, the cable
 controller holds (Q_op or V_c at a = 0, the same linear law with its own half range).
 
 Mapping (a = 0 is the operating point, the paper's fixed tail settings): a surface of slot k is
-clip(u_op[k] + a half_range, limits), with half_range the half width of the wing's control limits (the scale of
-``envs/actions.py``: 15 deg of elevator per unit for the default wing); the torque is
+clip(u_op[k] + a authority half_range, limits), with half_range the half width of the wing's control limits (the
+scale of ``envs/actions.py``: 15 deg of elevator per unit for the default wing) and ``authority`` in (0, 1] the
+share of it one unit of action commands (1: the whole range, LadderMill-v0; a smaller one makes a = +-1 a bounded
+increment around the trim, so random actions do not tumble the wings within a second); the torque is
 Q_op + a torque_half_range, clipped to the station's torque limits (the same range). Surfaces not in
 ``surfaces`` hold the operating point.
 """
@@ -64,9 +66,14 @@ class SlotActionMap:
                                               drum's torque [N m] or the commanded cable speed [m/s])
     torque_half_range : float or None         the station's control per unit action [N m or m/s] (needs a station
                                               in mode 'drum' or 'commanded'), None: no station action
+    authority : float                         share (0, 1] of each surface's half range per unit action
     """
 
-    def __init__(self, assembly: Assembly, groups, surfaces, u_op: np.ndarray, torque_half_range: float | None):
+    def __init__(self, assembly: Assembly, groups, surfaces, u_op: np.ndarray, torque_half_range: float | None,
+                 authority: float = 1.0):
+        if isinstance(authority, bool) or not isinstance(authority, (int, float)) or not 0.0 < authority <= 1.0:
+            raise ValueError(f"authority = {authority!r}: must be a number in (0, 1] (the share of each tail "
+                             "surface's half range one unit of action commands)")
         surfaces = tuple(surfaces)
         if not surfaces or len(set(surfaces)) != len(surfaces) or not set(surfaces) <= set(CONTROL_NAMES):
             raise ValueError(f"surfaces = {surfaces!r}: a non-empty subset of {CONTROL_NAMES} without repeats")
@@ -76,7 +83,7 @@ class SlotActionMap:
         self.n_wings = n
         limits = np.array([assembly.wing(k).control_limits for k in range(n)])  # (n, 3, 2)
         self._lo, self._hi = limits[:, :, 0], limits[:, :, 1]
-        self._half = 0.5 * (self._hi - self._lo)
+        self._half = 0.5 * (self._hi - self._lo) * float(authority)
         self.u_op = np.asarray(u_op, dtype=float).copy()
         self._group_of = np.zeros(n, dtype=np.int64)
         for g, members in enumerate(self.groups):

@@ -33,9 +33,10 @@ class LadderMillEnv(TaskEnv):
     "per_slot", "all", "halves" ascending / descending, "bands" of consecutive slots per half, or slot lists), one
     entry per surface in ``surfaces`` (elevator, rudder, aileron), and with ``generator_torque=True`` a last entry
     for the drum's generator torque. a = 0 is the operating point (the scene's fixed tail settings: elevator
-    -4 deg ascending, -1 deg descending); a surface is u_op + a x half its range (15 / 25 / 20 deg per unit),
-    clipped to the limits; the torque Q_op + a x ``drum.torque_half_range`` (:mod:`~laddermill_gym.envs.laddermill.
-    actions`). Entries outside [-1, 1] are clipped and counted in ``info["n_clipped"]``.
+    -4 deg ascending, -1 deg descending); a surface is u_op + a x ``authority`` x half its range (15 / 25 / 20 deg
+    per unit at ``authority=1``, the default), clipped to the limits; the torque Q_op + a x
+    ``drum.torque_half_range`` (:mod:`~laddermill_gym.envs.laddermill.actions`). Entries outside [-1, 1] are
+    clipped and counted in ``info["n_clipped"]``.
 
     ## Observation Space
 
@@ -73,7 +74,8 @@ STATION_TABLE
     ## Arguments
 
     scene, scene_options (``load_scene`` overrides, e.g. ``{"n_wings": 11}``), control_dt [s], episode_time [s],
-    groups, n_bands, surfaces, generator_torque, drum (:class:`~laddermill_gym.envs.laddermill.settings.DrumConfig`),
+    groups, n_bands, surfaces, authority (share (0, 1] of a surface's half range per unit action), generator_torque,
+    drum (:class:`~laddermill_gym.envs.laddermill.settings.DrumConfig`),
     cable_speed_command (the last action commands the cable speed instead), speed
     (:class:`~laddermill_gym.envs.laddermill.settings.SpeedCommandConfig`),
     operating_point, settle (:class:`~laddermill_gym.envs.laddermill.operating_point.SettleConfig`), initial_noise,

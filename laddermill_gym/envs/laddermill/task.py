@@ -93,7 +93,7 @@ class MillTask(TaskCore):
                  cable_speed_command: bool = False, speed=None,
                  operating_point: OperatingPoint | None = None, settle=None, initial_noise=None,
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
-                 parallel: bool | None = None):
+                 parallel: bool | None = None, authority: float = 1.0):
         B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
                                    initial_noise)
         self.settle = config_from(settle, SettleConfig, "settle")
@@ -122,7 +122,7 @@ class MillTask(TaskCore):
         self.ground = np.array([lay.piece_elements[0][0], lay.piece_elements[-1][-1]], dtype=np.int64)
         self._zero_nominal = np.zeros((n, 3))  # the kernel writes absolute positions; offsets: _compose
         self.actions = SlotActionMap(asm, resolve_slot_groups(groups, n, n_bands), surfaces, self.u_op,
-                                     self.station_half_range)
+                                     self.station_half_range, authority)
         self.n_actions = self.actions.n_actions
         self.obs_dim = N_OBS_PER_SLOT * n + N_STATION_OBS
         self.slot_obs = np.zeros((B, N_OBS_PER_SLOT * n))
