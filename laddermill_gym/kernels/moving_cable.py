@@ -14,9 +14,9 @@
   from the ground (linear interpolation of position and velocity between the ground point and the attachment
   of the wing above, the paper's rule, ``station.insertion: paper``; with ``insertion: cable`` the velocity is
   interpolated from the cable material's at the ground point, V_c l / l0 along the element, instead of from
-  rest, so that the new wing moves with the cable it joins). The paper leaves the new wing's attitude and rates open: it takes the
-  attitude of the wing above it (the one it will follow up the cable) and no rotation. s < 0 (the cable
-  running backwards) transfers the other way. The state keeps its size: the leaving wing's slot is reused,
+  rest, so that the new wing moves with the cable it joins). The paper leaves the new wing's attitude and rates
+  open: it takes the attitude of the wing above it (the one it will follow up the cable) and no rotation. s < 0
+  (the cable running backwards) transfers the other way. The state keeps its size: the leaving wing's slot is reused,
   nothing is allocated or repacked, and the count of transfers (a state) names which wing is in which slot.
 * Generator: a prescribed schedule V_c(t); a drum, (J / r^2) dV_c/dt = T_first - T_last - Q / r with the
   generator torque Q the control after the wings'; or a commanded speed, dV_c/dt = (V_cmd - V_c) / tau with V_cmd
@@ -164,9 +164,12 @@ def transfer_3d(sp, x, M, up):
     ln = math.sqrt(dx * dx + dy * dy + dz * dz)
     g = _ground_speed(sp, x, up, ln, l0) / ln if ln > 0.0 else 0.0
     px, py, pz = M.fixed[gi, 0] + f * dx, M.fixed[gi, 1] + f * dy, M.fixed[gi, 2] + f * dz
-    wx = g * dx + f * (R[0] * bu + R[1] * bv + R[2] * bw - g * dx)
-    wy = g * dy + f * (R[3] * bu + R[4] * bv + R[5] * bw - g * dy)
-    wz = g * dz + f * (R[6] * bu + R[7] * bv + R[8] * bw - g * dz)
+    wx = f * (R[0] * bu + R[1] * bv + R[2] * bw)
+    wy = f * (R[3] * bu + R[4] * bv + R[5] * bw)
+    wz = f * (R[6] * bu + R[7] * bv + R[8] * bw)
+    if g != 0.0:  # the cable's rule: plus (1 - f) times the material's velocity at the ground point (the paper's
+        h = (1.0 - f) * g  # arithmetic untouched, bit for bit)
+        wx, wy, wz = wx + h * dx, wy + h * dy, wz + h * dz
     o = _shift_slots(x, M.wtype.size, C.B3_SIZE, up)
     # the new wing keeps the neighbour's quaternion (still in its slot after the shift), turns not at all
     x[o + C.B3_POS] = px - (R[0] * a0 + R[1] * a1 + R[2] * a2)
@@ -196,13 +199,17 @@ def transfer_2d(sp, x, M, up):
     dx, dz = ax - gp[0], az - gp[2]
     ln = math.sqrt(dx * dx + dz * dz)
     g = _ground_speed(sp, x, up, ln, l0) / ln if ln > 0.0 else 0.0
-    wx, wz = g * dx + f * (vx - g * dx), g * dz + f * (vz - g * dz)
     o = _shift_slots(x, M.wtype.size, C.B2_SIZE, up)
-    x[o + C.B2_X] = gp[0] + f * dx - (c * a[0] + sn * a[2])
-    x[o + C.B2_Z] = gp[2] + f * dz - (-sn * a[0] + c * a[2])
+    px, pz = gp[0] + f * dx, gp[2] + f * dz
+    x[o + C.B2_X] = px - (c * a[0] + sn * a[2])
+    x[o + C.B2_Z] = pz - (-sn * a[0] + c * a[2])
     x[o + C.B2_THETA] = th
-    x[o + C.B2_U] = c * wx - sn * wz
-    x[o + C.B2_W] = sn * wx + c * wz
+    x[o + C.B2_U] = c * f * vx - sn * f * vz
+    x[o + C.B2_W] = sn * f * vx + c * f * vz
+    if g != 0.0:  # the cable's rule: plus (1 - f) times the material's velocity at the ground point, in body axes
+        h = (1.0 - f) * g
+        x[o + C.B2_U] += h * (c * dx - sn * dz)
+        x[o + C.B2_W] += h * (sn * dx + c * dz)
     x[o + C.B2_Q] = 0.0
 
 
