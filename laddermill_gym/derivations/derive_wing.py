@@ -168,7 +168,7 @@ TRIM_ALPHA_DEG = 7.0  # [deg] design kite angle of attack at zero elevator (sets
 ELEVATOR_LIMITS = (-15.0, 15.0)   # [deg] horizontal-tail angle range, choice (trim alpha spans about -20..16 deg)
 #: the variants the command checks: attachment angle below body x [rad] and the (ascending, descending) elevators
 #: [deg] of their scenes (configs/scenes/laddermill.yaml for v0, laddermill_v1.yaml for v1)
-VARIANTS = {"v0": (ATT_ANGLE, (-4.0, -1.0)), "v1": (ATT_ANGLE_V1, (-6.0, -1.0))}
+VARIANTS = {"v0": (ATT_ANGLE, (-4.0, -1.0)), "v1": (ATT_ANGLE_V1, (-8.0, -0.5))}
 
 
 def design_incidence(target_deg=TRIM_ALPHA_DEG):
