@@ -31,6 +31,7 @@ from laddermill_gym.envs.pumping.task import PumpingTask
 from laddermill_gym.model.params import AERO_INDEX
 from laddermill_gym.quasisteady import lansdorp, schmehl
 from laddermill_gym.quasisteady.lansdorp import PumpingParams
+from laddermill_gym.quasisteady.schmehl import SchmehlParams
 from laddermill_gym.sim.statics import table_spline
 from laddermill_gym.studies.commands import Command, check_number
 from laddermill_gym.studies.pumping.cycle_figures import cycle_figures
@@ -80,7 +81,8 @@ def cycle_stats(rec: dict[str, np.ndarray], dt: float) -> list[dict[str, float]]
     """Per complete cycle (the end of a reel-in to the next): duration [s], reel-out / reel-in durations [s] (winch
     speed sign), mechanical energy out / in [J], net electrical energy [J] and mean power [W], mean reel-out
     tension and speed (time means over V > 0), mean reel-in tension [N], tether reeled [m], mean altitude [m],
-    cable angle from the vertical [rad], wind at the wing [m/s], alpha [rad] over reel-out, max |dy| [m]."""
+    cable angle from the vertical [rad], wind at the wing [m/s], alpha [rad] over reel-out, max |dy| [m], the
+    RMS azimuth over reel-out and the mean elevation over reel-in [rad]."""
     ph = rec["phase"]
     starts = np.flatnonzero((ph[1:] != PHASE_IN) & (ph[:-1] == PHASE_IN)) + 1
     out = []
@@ -97,7 +99,9 @@ def cycle_stats(rec: dict[str, np.ndarray], dt: float) -> list[dict[str, float]]
             tension_out=float(np.mean(ten[o])), speed_out=float(np.mean(v[o])), tension_in=float(np.mean(ten[i])),
             speed_in=float(-np.mean(v[i])), reeled=float(np.ptp(rec["s"][sl])), altitude=float(np.mean(-z)),
             theta=float(np.mean(np.arctan2(np.hypot(x, rec["y"][sl][o]), -z))), wind=float(np.mean(rec["wind"][sl][o])),
-            alpha=float(np.mean(rec["alpha"][sl][o])), max_dy=float(np.max(rec["abs_dy"][sl]))))
+            alpha=float(np.mean(rec["alpha"][sl][o])), max_dy=float(np.max(rec["abs_dy"][sl])),
+            azimuth_rms=float(np.sqrt(np.mean(np.arctan2(rec["y"][sl][o], -x) ** 2))),
+            elevation_in=float(np.mean(np.arctan2(-rec["z"][sl][i], np.hypot(rec["x"][sl][i], rec["y"][sl][i]))))))
     return out
 
 
@@ -127,7 +131,16 @@ def quasi_steady(c: dict[str, float], task: PumpingTask) -> dict[str, float]:
     fed_params = dataclasses.replace(params, reel_length=c["reeled"], reel_in_speed=c["speed_in"])
     fed = lansdorp.cycle(np.array([c["tension_out"]]), c["speed_out"], fed_params,
                          tension_in=np.array([c["tension_in"]]))[4]
-    return {"lansdorp_W": float(lans.power[0]), "schmehl_W": float(sch.power[0]), "static_kite_W": float(static[0]),
+    # Schmehl's model at the simulated cycle's own operating point (issue 29 point 3): its reel-out factor v_out / w,
+    # reeled length and mean reel-in speed, the RMS azimuth of the figure, the reel-in elevation, the wing's mass
+    matched = dataclasses.replace(params, reel_length=c["reeled"], reel_in_speed=c["speed_in"])
+    qs = SchmehlParams(kite_mass_per_area=wing.mass / S, azimuth=c["azimuth_rms"],
+                       retraction_elevation=max(c["elevation_in"], 0.5 * math.pi - th))
+    mat = schmehl.cycle_power(w, h, th, d, S, cl, cd, params=matched, reel_out_factor=c["speed_out"] / c["wind"],
+                              reel_out_rule="wind", qs=qs)
+    return {"schmehl_matched_W": float(mat.power[0]), "schmehl_matched_tension_N": float(mat.tension_out[0]),
+            "schmehl_matched_in_N": float(mat.tension_in[0]), "schmehl_matched_cycle_s": float(mat.time_cycle[0]),
+            "lansdorp_W": float(lans.power[0]), "schmehl_W": float(sch.power[0]), "static_kite_W": float(static[0]),
             "eqs10_14_fed_W": float(fed[0]), "lansdorp_tension_N": float(lans.tension_out[0]),
             "static_tension_N": t_static, "cl": cl, "cd": cd}
 
@@ -140,6 +153,7 @@ def _arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--alpha-in-deg", type=float, help="[deg] override the config's cycle.alpha_in_deg")
     p.add_argument("--elements", type=int, help="tether elements (scene elements_per_piece; the winch changes the "
                    "lowest one's length)")
+    p.add_argument("--wind", type=float, help="[m/s] override the scene's wind speed v0 at its h0 (50 m)")
     p.add_argument("--no-lqr", action="store_true", help="the scripted cycle alone (rudder and aileron at trim)")
     p.add_argument("--controller", choices=("crosswind", "lqr"), default="crosswind",
                    help="crosswind: figure eights (control/crosswind.py, configs/agents/crosswind_pumping.yaml); lqr: "
@@ -154,7 +168,10 @@ def _run(args) -> int:
     check_number("--alpha-in-deg", args.alpha_in_deg, low=-90, high=90, strict=False, unit="deg")
     check_number("--elements", args.elements, low=1, high=1000, integer=True, strict=False)
     find_config("pumping", args.config, "--config")
+    check_number("--wind", args.wind, low=0, high=60, unit="m/s")
     options = {} if args.elements is None else {"elements_per_piece": args.elements}
+    if args.wind is not None:
+        options["overrides"] = {"wind": {"v0": args.wind}}
     task = PumpingTask(1, config=args.config, episode_time=2000.0, scene_options=options)  # the 0.01 rad step at 1 s
     changes = {k: v for k, v in (("reel_in_speed", args.reel_in_speed),
                                  ("alpha_in", None if args.alpha_in_deg is None else math.radians(args.alpha_in_deg)))
@@ -169,12 +186,15 @@ def _run(args) -> int:
         return 1
     stats = cycle_stats(rec, task.control_dt)
     rows = []
-    print(f"{'cycle':>5} {'T_c s':>7} {'sim W':>8} {'Lansdorp W':>11} {'Schmehl W':>10} {'static W':>9} "
-          f"{'eq10-14 fed W':>13} {'T_out N':>8} {'v_out':>6} {'T_in N':>7} {'alpha':>6} {'max|dy|':>7}")
+    print(f"{'cycle':>5} {'T_c s':>7} {'sim W':>8} {'matched W':>9} {'m. T_out N':>10} {'Lansdorp W':>11} "
+          f"{'Schmehl W':>10} {'static W':>9} {'eq10-14 fed W':>13} {'T_out N':>8} {'v_out':>6} {'T_in N':>7} "
+          f"{'alpha':>6} {'max|dy|':>7}")
     for k, c in enumerate(stats):
         q = quasi_steady(c, task)
         rows.append({**c, **q})
-        print(f"{k:5d} {c['t_cycle']:7.1f} {c['power']:8.0f} {q['lansdorp_W']:11.0f} {q['schmehl_W']:10.0f} "
+        print(f"{k:5d} {c['t_cycle']:7.1f} {c['power']:8.0f} {q['schmehl_matched_W']:9.0f} "
+              f"{q['schmehl_matched_tension_N']:10.0f} {q['lansdorp_W']:11.0f} "
+              f"{q['schmehl_W']:10.0f} "
               f"{q['static_kite_W']:9.0f} {q['eqs10_14_fed_W']:13.0f} {c['tension_out']:8.0f} {c['speed_out']:6.2f} "
               f"{c['tension_in']:7.0f} {math.degrees(c['alpha']):6.2f} {c['max_dy']:7.2f}")
     if args.out is not None:
