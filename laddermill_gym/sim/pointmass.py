@@ -9,13 +9,22 @@ RK4 / DP5(4), which at 500,000 nodes would alone take 7 x 24 MB.
 
 from __future__ import annotations
 
+import os
+import sys
+
 import numba
 import numpy as np
 from tqdm import tqdm
 
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL, PM_OK, PP_DA, PP_EA, PP_L0, PP_MU
-from laddermill_gym.kernels.pointmass.explicit import CHUNK, explicit_advance, tensions
-from laddermill_gym.kernels.pointmass.implicit import implicit_advance
+from laddermill_gym.kernels.pointmass.explicit import (
+    CHUNK,
+    explicit_advance,
+    explicit_advance_serial,
+    tensions,
+    tensions_serial,
+)
+from laddermill_gym.kernels.pointmass.implicit import implicit_advance, implicit_advance_serial
 from laddermill_gym.model.pointmass import PointMassString, held_bytes, make_work, pack
 
 METHODS = ("explicit", "implicit")
@@ -24,6 +33,61 @@ STATUS_TEXT = {0: "ok", 2: "non-finite state", 3: "speed limit exceeded", 4: "a 
 
 class PointMassError(RuntimeError):
     """A step failed (non-finite state, speed limit, ground); the message names the status and the time."""
+
+
+#: True in a process forked after numba started its threads on GNU OpenMP (set by :func:`_note_fork`)
+_FORKED_AFTER_GNU_OPENMP = False
+
+
+def _note_fork() -> None:
+    """In a forked child: note whether the parent's numba threads run on GNU OpenMP, which is not fork-safe (numba
+    ends such a child with SIGTERM at its first parallel loop)."""
+    global _FORKED_AFTER_GNU_OPENMP
+    try:
+        layer = numba.threading_layer()
+    except ValueError:  # numba's threads not started: the child starts its own
+        return
+    omp = sys.modules.get("numba.np.ufunc.omppool")
+    if layer == "omp" and getattr(omp, "openmp_vendor", "GNU") == "GNU":
+        _FORKED_AFTER_GNU_OPENMP = True
+
+
+os.register_at_fork(after_in_child=_note_fork)
+
+
+def check_fork_safe() -> None:
+    """RuntimeError saying what to do, in a process forked from one whose numba threads run on GNU OpenMP (where
+    numba would end the process at the first parallel loop); called before the parallel point-mass kernels (the
+    serial ones, which strings of at most ``CHUNK`` nodes run, need no thread pool and run in such a process)."""
+    if _FORKED_AFTER_GNU_OPENMP:
+        raise RuntimeError(
+            "the point-mass kernels cannot run in this process on more than one thread: it was forked "
+            "(multiprocessing's 'fork' start method, AsyncVectorEnv's default on Linux) from a process whose numba "
+            "threads run on GNU OpenMP, which is not fork-safe. Start the workers with 'forkserver' or 'spawn' "
+            "(gymnasium.make_vec(id, n, vectorization_mode='async', vector_kwargs={'context': 'forkserver'}); SB3's "
+            "SubprocVecEnv does so by default), or pick a fork-safe numba threading layer before numba starts "
+            "(NUMBA_THREADING_LAYER=workqueue, or tbb with the tbb package installed)")
+
+
+def kernel_threads(n_nodes: int, threads: int) -> int:
+    """Threads the kernels of an ``n_nodes`` string use: at most ``threads`` and one per ``CHUNK`` nodes (waking a
+    thread pool costs more than a chunk's work); 1 means the serial kernels."""
+    return max(1, min(int(threads), -(-int(n_nodes) // CHUNK)))
+
+
+def run_on_threads(threads: int, serial, parallel, *args):
+    """``serial(*args)`` when ``threads`` is 1: no parallel loop, numba's thread pool is not started (so a process
+    forked from this one can still run the kernels; issue 34 item 11); else ``parallel(*args)`` on ``threads``
+    of numba's threads (at most its current count, restored after). Both give the same bits on one thread."""
+    if threads <= 1:
+        return serial(*args)
+    check_fork_safe()
+    before = numba.get_num_threads()
+    numba.set_num_threads(min(threads, before))
+    try:
+        return parallel(*args)
+    finally:
+        numba.set_num_threads(before)
 
 
 def explicit_stable_dt(s: PointMassString) -> float:
@@ -60,20 +124,23 @@ class PointMassSimulator:
         if self.u.size != 3 * max(1, string.n_kites):
             raise ValueError(f"controls size {self.u.size}: must be 3 per kite ({3 * string.n_kites})")
         self.dt, self.method, self.t = float(dt), method, float(t0)
-        self._advance = explicit_advance if method == "explicit" else implicit_advance
         #: Threads of the parallel loops (default: numba's, i.e. the machine's cores or NUMBA_NUM_THREADS).
         self.threads = numba.config.NUMBA_NUM_THREADS if threads is None else int(threads)
+        #: the kernels' threads for this string (:func:`kernel_threads`; 1: the serial kernels)
+        self.kernel_threads = kernel_threads(string.n_nodes, self.threads)
+        serial = self.kernel_threads == 1
+        if method == "explicit":
+            self._advance = explicit_advance_serial if serial else explicit_advance
+        else:
+            self._advance = implicit_advance_serial if serial else implicit_advance
+        self._tensions = tensions_serial if serial else tensions
 
     def step(self, nsteps: int = 1) -> None:
         """Advance by ``nsteps`` steps; raises PointMassError on a failed step (state at that step).
-        The parallel loops run on at most one thread per ``CHUNK`` nodes (a string shorter than that runs on
-        one thread: waking a thread pool costs more than its work)."""
-        before = numba.get_num_threads()
-        numba.set_num_threads(max(1, min(self.threads, before, -(-self.string.n_nodes // CHUNK))))
-        try:
-            st, done = self._advance(self.t, self.x, self.u, self.dt, int(nsteps), self.M, self.W)
-        finally:
-            numba.set_num_threads(before)
+        The parallel loops run on at most one thread per ``CHUNK`` nodes (a string shorter than that runs the
+        serial kernels: waking a thread pool costs more than its work)."""
+        st, done = run_on_threads(self.kernel_threads, self._advance, self._advance, self.t, self.x, self.u, self.dt,
+                                  int(nsteps), self.M, self.W)
         self.t += done * self.dt
         if st != PM_OK:
             raise PointMassError(f"step failed at t = {self.t:.6g} s: {STATUS_TEXT.get(st, st)}")
@@ -101,7 +168,7 @@ class PointMassSimulator:
 
     def tensions(self, damped: bool = True) -> np.ndarray:
         """Element tensions (n_e,) [N] of the current state (Voigt damping included when ``damped``)."""
-        tensions(self.x, self.M, self.W.tension, damped)
+        run_on_threads(self.kernel_threads, self._tensions, self._tensions, self.x, self.M, self.W.tension, damped)
         return self.W.tension.copy()
 
     def held_bytes(self) -> dict[str, int]:

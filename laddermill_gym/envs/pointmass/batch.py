@@ -12,21 +12,30 @@ per control period.
 from __future__ import annotations
 
 import functools
-import os
-import sys
 
 import numba
 import numpy as np
 
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL
-from laddermill_gym.kernels.pointmass.explicit import CHUNK, explicit_advance, tensions
-from laddermill_gym.kernels.pointmass.implicit import implicit_advance
+from laddermill_gym.kernels.pointmass.explicit import (
+    explicit_advance,
+    explicit_advance_serial,
+    tensions,
+    tensions_serial,
+)
+from laddermill_gym.kernels.pointmass.implicit import implicit_advance, implicit_advance_serial
 from laddermill_gym.ladder.pointmass_scene import PointMassScene
 from laddermill_gym.ladder.scene import load_scene
 from laddermill_gym.model.memory import over_limit, pointmass_bytes
 from laddermill_gym.model.pointmass import make_work, pack
-from laddermill_gym.sim.pointmass import PointMassError, PointMassSimulator
+from laddermill_gym.sim.pointmass import (
+    PointMassError,
+    PointMassSimulator,
+    check_fork_safe,
+    kernel_threads,
+    run_on_threads,
+)
 
 __all__ = ["PointMassBatch", "pointmass_start", "POINTMASS_FAILURES", "check_fork_safe", "freeze", "thaw"]
 
@@ -75,39 +84,6 @@ def thaw(value):
     return value
 
 
-#: True in a process forked after numba started its threads on GNU OpenMP (set by :func:`_note_fork`)
-_FORKED_AFTER_GNU_OPENMP = False
-
-
-def _note_fork() -> None:
-    """In a forked child: note whether the parent's numba threads run on GNU OpenMP, which is not fork-safe (numba
-    ends such a child with SIGTERM at its first parallel loop, and the point-mass kernels are parallel loops)."""
-    global _FORKED_AFTER_GNU_OPENMP
-    try:
-        layer = numba.threading_layer()
-    except ValueError:  # numba's threads not started: the child starts its own
-        return
-    omp = sys.modules.get("numba.np.ufunc.omppool")
-    if layer == "omp" and getattr(omp, "openmp_vendor", "GNU") == "GNU":
-        _FORKED_AFTER_GNU_OPENMP = True
-
-
-os.register_at_fork(after_in_child=_note_fork)
-
-
-def check_fork_safe() -> None:
-    """RuntimeError saying what to do, in a process forked from one whose numba threads run on GNU OpenMP (where
-    numba would end the process at the point-mass kernels' first parallel loop); called before those kernels."""
-    if _FORKED_AFTER_GNU_OPENMP:
-        raise RuntimeError(
-            "the point-mass kernels cannot run in this process: it was forked (multiprocessing's 'fork' start "
-            "method, AsyncVectorEnv's default on Linux) from a process whose numba threads run on GNU OpenMP, which "
-            "is not fork-safe. Start the workers with 'forkserver' or 'spawn' (gymnasium.make_vec(id, n, "
-            "vectorization_mode='async', vector_kwargs={'context': 'forkserver'}); SB3's SubprocVecEnv does so by "
-            "default), or pick a fork-safe numba threading layer before numba starts (NUMBA_THREADING_LAYER="
-            "workqueue, or tbb with the tbb package installed)")
-
-
 @functools.lru_cache(maxsize=8)
 def pointmass_start(scene: str, options,
                     settle_time: float) -> tuple[PointMassScene, np.ndarray, np.ndarray, np.ndarray]:
@@ -118,7 +94,6 @@ def pointmass_start(scene: str, options,
     its own method and step in its steady wind with the start attitude held. Memoised per process (a chain's
     start solves the rigid statics, about a second; a forked process inherits it and so builds its env without a
     kernel call); the arrays are read-only."""
-    check_fork_safe()
     sc = load_scene(scene, fidelity="pointmass", **thaw(options))
     x0, u0 = sc.initial_state()
     x0, u0 = np.array(x0, dtype=float), np.array(u0, dtype=float)
@@ -131,7 +106,8 @@ def pointmass_start(scene: str, options,
                              f"({err})") from None
         x0 = sim.x.copy()
     work = make_work(sc.string)
-    tensions(x0, pack(sc.string), work.tension, True)
+    threads = kernel_threads(sc.string.n_nodes, numba.config.NUMBA_NUM_THREADS)
+    run_on_threads(threads, tensions_serial, tensions, x0, pack(sc.string), work.tension, True)
     tension = work.tension.copy()
     for a in (x0, u0, tension):
         a.setflags(write=False)
@@ -148,7 +124,15 @@ class PointMassBatch:
         s = scene.string
         self.scene, self.string, self.n_copies = scene, s, int(n_copies)
         self.dt, self.method = float(scene.dt), scene.method
-        self._advance = explicit_advance if self.method == "explicit" else implicit_advance
+        #: numba threads of the kernels' parallel loops: one per CHUNK nodes (sim/pointmass.py's rule); 1: the
+        #: serial kernels, which start no thread pool (a forked process can run them, issue 34 item 11)
+        self.threads = kernel_threads(s.n_nodes, numba.config.NUMBA_NUM_THREADS)
+        serial = self.threads == 1
+        if self.method == "explicit":
+            self._advance = explicit_advance_serial if serial else explicit_advance
+        else:
+            self._advance = implicit_advance_serial if serial else implicit_advance
+        self._tensions = tensions_serial if serial else tensions
         B = self.n_copies
         why = over_limit(B * pointmass_bytes(s.n_nodes), f"{B} copies of a {s.n_nodes}-node string")
         if why is not None:  # checked before anything is allocated
@@ -160,8 +144,6 @@ class PointMassBatch:
         self.tension = np.zeros((B, s.n_elements))
         self.models = [pack(s) for _ in range(B)]
         self.works = [make_work(s) for _ in range(B)]
-        #: numba threads of the kernels' parallel loops: one per CHUNK nodes (sim/pointmass.py's rule)
-        self.threads = max(1, -(-s.n_nodes // CHUNK))
 
     def set_wind(self, b: int, field: WindField) -> None:
         """The air of copy ``b``: a :class:`~laddermill_gym.atmosphere.field.WindField` (modulation from t = 0,
@@ -172,21 +154,18 @@ class PointMassBatch:
     def step(self, nsteps: np.ndarray) -> None:
         """Advance copy b by ``nsteps[b]`` steps of dt (0 or less: untouched); its time by the steps done, its
         ``status`` to the kernel's (a failed copy stays at the state of its failed step) and its ``tension``."""
-        check_fork_safe()
-        before = numba.get_num_threads()
-        numba.set_num_threads(min(self.threads, before))
-        try:
-            for b in np.flatnonzero(nsteps > 0):
-                st, done = self._advance(float(self.t[b]), self.states[b], self.controls[b], self.dt,
-                                         int(nsteps[b]), self.models[b], self.works[b])
-                self.t[b] += done * self.dt
-                self.status[b] = st
-                self._tension(b)
-        finally:
-            numba.set_num_threads(before)
+        run_on_threads(self.threads, self._step, self._step, nsteps)
+
+    def _step(self, nsteps: np.ndarray) -> None:
+        for b in np.flatnonzero(nsteps > 0):
+            st, done = self._advance(float(self.t[b]), self.states[b], self.controls[b], self.dt,
+                                     int(nsteps[b]), self.models[b], self.works[b])
+            self.t[b] += done * self.dt
+            self.status[b] = st
+            self._tension(b)
 
     def _tension(self, b: int) -> None:
-        tensions(self.states[b], self.models[b], self.works[b].tension, True)
+        self._tensions(self.states[b], self.models[b], self.works[b].tension, True)
         self.tension[b] = self.works[b].tension
 
     def update_tensions(self, mask: np.ndarray) -> None:
@@ -194,14 +173,11 @@ class PointMassBatch:
         on at most one thread per ``CHUNK`` nodes: waking the whole thread pool for a short string costs more than
         its work (measured: 6.7 ms per call for the 101-node chain on the shared two-core machine, against
         0.05 ms for two implicit steps on one thread)."""
-        check_fork_safe()
-        before = numba.get_num_threads()
-        numba.set_num_threads(min(self.threads, before))
-        try:
-            for b in np.flatnonzero(mask):
-                self._tension(b)
-        finally:
-            numba.set_num_threads(before)
+        run_on_threads(self.threads, self._tensions_of, self._tensions_of, mask)
+
+    def _tensions_of(self, mask: np.ndarray) -> None:
+        for b in np.flatnonzero(mask):
+            self._tension(b)
 
     def positions(self, nodes: np.ndarray) -> np.ndarray:
         """Positions (B, len(nodes), 3) [m] of the given nodes in every copy (a copy)."""

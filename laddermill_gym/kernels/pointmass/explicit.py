@@ -76,6 +76,18 @@ def _move_chunk(x, dt, par, j0, j1):
     return st
 
 
+@njit(cache=True)
+def _worst(bad_nf, bad_v, bad_g):
+    """The status of a move from the counts of chunks that ended non-finite, over the speed limit, on the ground."""
+    if bad_nf > 0:
+        return PM_NONFINITE
+    if bad_v > 0:
+        return PM_LIMIT
+    if bad_g > 0:
+        return PM_GROUND
+    return PM_OK
+
+
 @njit(cache=True, error_model="numpy", parallel=True)
 def move_and_check(x, dt, par):
     """x += dt v for every node (parallel); returns a status: non-finite, speed limit, ground (h <= h_g)."""
@@ -87,13 +99,7 @@ def move_and_check(x, dt, par):
         bad_nf += st == PM_NONFINITE
         bad_v += st == PM_LIMIT
         bad_g += st == PM_GROUND
-    if bad_nf > 0:
-        return PM_NONFINITE
-    if bad_v > 0:
-        return PM_LIMIT
-    if bad_g > 0:
-        return PM_GROUND
-    return PM_OK
+    return _worst(bad_nf, bad_v, bad_g)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
@@ -124,6 +130,47 @@ def explicit_advance(t, x, u, dt, nsteps, M, W):
         tensions(x, M, W.tension, True)
         _kick(tk, x, u, dt, M, W.tension, s, d)
         st = move_and_check(x, dt, M.par)
+        if st != PM_OK:
+            return st, k + 1
+    return PM_OK, nsteps
+
+
+# The serial twins: the same chunks in the same order on the calling thread, in functions that hold no parallel
+# loop, so a process that only runs these never starts numba's thread pool (GNU OpenMP's is not fork-safe: a
+# process forked from one that started it cannot run a parallel loop; issue 34 item 11). Same bits as the parallel
+# kernels on any thread count (each chunk's arithmetic is independent of the others).
+@njit(cache=True, error_model="numpy")
+def tensions_serial(x, M, tension, damped):
+    """:func:`tensions` on the calling thread."""
+    ne = n_elements(M.par)
+    for c in range((ne + CHUNK - 1) // CHUNK):
+        _tension_chunk(x, M, tension, damped, c * CHUNK, min(ne, (c + 1) * CHUNK))
+
+
+@njit(cache=True, error_model="numpy")
+def move_and_check_serial(x, dt, par):
+    """:func:`move_and_check` on the calling thread."""
+    n = int(par[PP_N])
+    bad_nf, bad_v, bad_g = 0, 0, 0
+    for c in range((n + CHUNK - 1) // CHUNK):
+        st = _move_chunk(x, dt, par, c * CHUNK, min(n, (c + 1) * CHUNK))
+        bad_nf += st == PM_NONFINITE
+        bad_v += st == PM_LIMIT
+        bad_g += st == PM_GROUND
+    return _worst(bad_nf, bad_v, bad_g)
+
+
+@njit(cache=True, error_model="numpy")
+def explicit_advance_serial(t, x, u, dt, nsteps, M, W):
+    """:func:`explicit_advance` on the calling thread (no parallel loop)."""
+    n = int(M.par[PP_N])
+    for k in range(nsteps):
+        tk = t + k * dt
+        s, d, _, _ = modulation(tk, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
+        tensions_serial(x, M, W.tension, True)
+        for c in range((n + CHUNK - 1) // CHUNK):
+            _kick_chunk(tk, x, u, dt, M, W.tension, s, d, c * CHUNK, min(n, (c + 1) * CHUNK))
+        st = move_and_check_serial(x, dt, M.par)
         if st != PM_OK:
             return st, k + 1
     return PM_OK, nsteps

@@ -24,19 +24,27 @@ over the blocks (no right-hand side). The assembly and the move are parallel ove
 """
 
 from numba import njit, prange
-from numba.np.ufunc.parallel import _iget_num_threads, _launch_threads
+from numba.np.ufunc.parallel import _iget_num_threads
 
 from laddermill_gym.kernels.contract import N3_SIZE, N3_VEL, PM_OK, PP_N, TM_DT, TM_T0
-from laddermill_gym.kernels.pointmass.explicit import CHUNK, move_and_check, tensions
+from laddermill_gym.kernels.pointmass.explicit import (
+    CHUNK,
+    move_and_check,
+    move_and_check_serial,
+    tensions,
+    tensions_serial,
+)
 from laddermill_gym.kernels.pointmass.forces import node_force, node_mass
-from laddermill_gym.kernels.pointmass.partitioned import partitioned_solve, solver_parts
+from laddermill_gym.kernels.pointmass.partitioned import partitioned_solve, partitioned_solve_serial, solver_parts
 from laddermill_gym.kernels.wind import modulation
 
 _FM = {"contract", "nsz", "arcp"}
 
-#: numba's thread count inside a compiled function: the intrinsic of numba's own parallel loops (cacheable,
-#: unlike ``numba.get_num_threads()``, a ctypes call), whose symbol exists once the thread pool is started.
-_launch_threads()
+# numba's thread count inside a compiled function is ``_iget_num_threads()``, the intrinsic of numba's own
+# parallel loops (cacheable, unlike ``numba.get_num_threads()``, a ctypes call); its symbol exists once the thread
+# pool is started, which this module no longer does at import (GNU OpenMP's pool is not fork-safe, issue 34 item
+# 11): only :func:`implicit_advance` reads it, and its callers start the pool first (``numba.set_num_threads``,
+# ``sim.pointmass.run_on_threads``).
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
@@ -60,10 +68,8 @@ def _assemble(t, x, u, dt, M, tension, s, d):
 
 @njit(cache=True, error_model="numpy")
 def implicit_advance_parts(t, x, u, dt, nsteps, M, W, parts):
-    """:func:`implicit_advance` with the elimination on ``parts`` chunks (``partitioned_solve``; 0: from
-    numba's thread count, ``solver_parts``)."""
-    n = int(M.par[PP_N])
-    P = parts if parts > 0 else solver_parts(n, _iget_num_threads(), W.mid.shape[0])
+    """:func:`implicit_advance` with the elimination on ``parts`` chunks (``partitioned_solve``; at least 1)."""
+    P = max(1, parts)
     for k in range(nsteps):
         tk = t + k * dt
         s, d, _, _ = modulation(tk, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
@@ -82,4 +88,25 @@ def implicit_advance(t, x, u, dt, nsteps, M, W):
     [s], kites' attitude u (n_k * 3,) [rad]. ``W.tension`` holds the elastic tensions at the start of the last
     step. The elimination runs on one chunk per thread of numba's current count (``solver_parts``). Returns
     (status, steps done)."""
-    return implicit_advance_parts(t, x, u, dt, nsteps, M, W, 0)
+    n = int(M.par[PP_N])
+    return implicit_advance_parts(t, x, u, dt, nsteps, M, W, solver_parts(n, _iget_num_threads(), W.mid.shape[0]))
+
+
+@njit(cache=True, error_model="numpy")
+def implicit_advance_serial(t, x, u, dt, nsteps, M, W):
+    """:func:`implicit_advance` on the calling thread, the elimination on the chunks of one thread
+    (``solver_parts(n, 1, ...)``): no parallel loop, so numba's thread pool is never started (a fork of the
+    process can run it); the same bits as :func:`implicit_advance` on one thread."""
+    n = int(M.par[PP_N])
+    P = solver_parts(n, 1, W.mid.shape[0])
+    for k in range(nsteps):
+        tk = t + k * dt
+        s, d, _, _ = modulation(tk, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
+        tensions_serial(x, M, W.tension, False)
+        for c in range((n + CHUNK - 1) // CHUNK):
+            _assemble_chunk(tk, x, u, dt, M, W.tension, s, d, c * CHUNK, min(n, (c + 1) * CHUNK))
+        partitioned_solve_serial(x, W.tension, M, dt, W, P)
+        st = move_and_check_serial(x, dt, M.par)
+        if st != PM_OK:
+            return st, k + 1
+    return PM_OK, nsteps

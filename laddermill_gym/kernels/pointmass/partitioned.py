@@ -272,6 +272,50 @@ def _reduce(x, tension, M, dt, n, P, mid):
         x[o], x[o + 1], x[o + 2] = zx, zy, zz
 
 
+@njit(cache=True, error_model="numpy")
+def _eliminate_part(x, tension, M, dt, W, n, P, c):
+    """Chunk c's forward pass of :func:`partitioned_solve` (the first and last chunks: a one-direction sweep; a
+    middle chunk: its bottom block read and its spike eliminated)."""
+    seg = W.seg.shape[1]
+    lo, hi = chunk_range(n, P, c)
+    ck = W.ckpt[lo // seg + c:]
+    if c == 0:
+        sweep(x, tension, M, dt, 0, hi, 1, ck, W.mid[c, MID_TOP:MID_TOP + 9], seg)
+    elif c == P - 1:
+        sweep(x, tension, M, dt, n - 1, hi - lo, -1, ck, W.mid[c, MID_BOT:MID_BOT + 9], seg)
+    else:
+        _sweep_read(x, tension, M, dt, hi - 1, hi - lo, -1, W.mid[c, MID_BOT:MID_BOT + 9])
+        _sweep_spike(x, tension, M, dt, lo, hi - lo, ck, W.mid[c], seg)
+
+
+@njit(cache=True, error_model="numpy")
+def _back_part(x, tension, M, dt, W, n, P, c):
+    """Chunk c's back substitution of :func:`partitioned_solve`, from the separators' solution in ``W.mid``."""
+    seg = W.seg.shape[1]
+    lo, hi = chunk_range(n, P, c)
+    ck = W.ckpt[lo // seg + c:]
+    zx, zy, zz = 0.0, 0.0, 0.0
+    if c < P - 1:
+        zx, zy, zz = W.mid[c, MID_ZSEP], W.mid[c, MID_ZSEP + 1], W.mid[c, MID_ZSEP + 2]
+    if c == 0:
+        back(x, tension, M, dt, 0, hi, 1, ck, W.seg[c], zx, zy, zz)
+    else:
+        ux, uy, uz = W.mid[c - 1, MID_ZSEP], W.mid[c - 1, MID_ZSEP + 1], W.mid[c - 1, MID_ZSEP + 2]
+        if c == P - 1:
+            back(x, tension, M, dt, n - 1, hi - lo, -1, ck, W.seg[c], ux, uy, uz)
+        else:
+            a, b, tx, ty, tz = element_block(x, lo - 1, 1, tension, M, dt)
+            wx, wy, wz = s_mul(a, b, tx, ty, tz, ux, uy, uz)
+            _back_spike(x, tension, M, dt, lo, hi - lo, ck, W.seg[c], zx, zy, zz, wx, wy, wz)
+
+
+@njit(cache=True)
+def clamp_parts(n, P, W):
+    """The number of chunks :func:`partitioned_solve` uses: P clamped to the workspace's capacity and to
+    (n + 1) // 2."""
+    return max(1, min(P, W.mid.shape[0], W.seg.shape[0], (n + 1) // 2))
+
+
 @njit(cache=True, error_model="numpy", parallel=True)
 def partitioned_solve(x, tension, M, dt, W, P):
     """Solve the step's block-tridiagonal system in place of the right-hand side in the velocities of x (6 n,)
@@ -279,33 +323,24 @@ def partitioned_solve(x, tension, M, dt, W, P):
     substitutions in parallel, the separators' reduced system of size P - 1 on one thread. The partition
     depends on n and P only: a given P gives the same bits on any thread count and in every process."""
     n = int(M.par[PP_N])
-    P = max(1, min(P, W.mid.shape[0], W.seg.shape[0], (n + 1) // 2))
-    seg = W.seg.shape[1]
+    P = clamp_parts(n, P, W)
     for c in prange(P):
-        lo, hi = chunk_range(n, P, c)
-        ck = W.ckpt[lo // seg + c:]
-        if c == 0:
-            sweep(x, tension, M, dt, 0, hi, 1, ck, W.mid[c, MID_TOP:MID_TOP + 9], seg)
-        elif c == P - 1:
-            sweep(x, tension, M, dt, n - 1, hi - lo, -1, ck, W.mid[c, MID_BOT:MID_BOT + 9], seg)
-        else:
-            _sweep_read(x, tension, M, dt, hi - 1, hi - lo, -1, W.mid[c, MID_BOT:MID_BOT + 9])
-            _sweep_spike(x, tension, M, dt, lo, hi - lo, ck, W.mid[c], seg)
+        _eliminate_part(x, tension, M, dt, W, n, P, c)
     if P > 1:
         _reduce(x, tension, M, dt, n, P, W.mid)
     for c in prange(P):
-        lo, hi = chunk_range(n, P, c)
-        ck = W.ckpt[lo // seg + c:]
-        zx, zy, zz = 0.0, 0.0, 0.0
-        if c < P - 1:
-            zx, zy, zz = W.mid[c, MID_ZSEP], W.mid[c, MID_ZSEP + 1], W.mid[c, MID_ZSEP + 2]
-        if c == 0:
-            back(x, tension, M, dt, 0, hi, 1, ck, W.seg[c], zx, zy, zz)
-        else:
-            ux, uy, uz = W.mid[c - 1, MID_ZSEP], W.mid[c - 1, MID_ZSEP + 1], W.mid[c - 1, MID_ZSEP + 2]
-            if c == P - 1:
-                back(x, tension, M, dt, n - 1, hi - lo, -1, ck, W.seg[c], ux, uy, uz)
-            else:
-                a, b, tx, ty, tz = element_block(x, lo - 1, 1, tension, M, dt)
-                wx, wy, wz = s_mul(a, b, tx, ty, tz, ux, uy, uz)
-                _back_spike(x, tension, M, dt, lo, hi - lo, ck, W.seg[c], zx, zy, zz, wx, wy, wz)
+        _back_part(x, tension, M, dt, W, n, P, c)
+
+
+@njit(cache=True, error_model="numpy")
+def partitioned_solve_serial(x, tension, M, dt, W, P):
+    """:func:`partitioned_solve` on the calling thread (no parallel loop: numba's thread pool is not started;
+    the same chunks in order, the same bits)."""
+    n = int(M.par[PP_N])
+    P = clamp_parts(n, P, W)
+    for c in range(P):
+        _eliminate_part(x, tension, M, dt, W, n, P, c)
+    if P > 1:
+        _reduce(x, tension, M, dt, n, P, W.mid)
+    for c in range(P):
+        _back_part(x, tension, M, dt, W, n, P, c)
