@@ -23,10 +23,26 @@ from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL
 from laddermill_gym.kernels.pointmass.explicit import CHUNK, explicit_advance, explicit_advance_serial
 from laddermill_gym.kernels.pointmass.implicit import implicit_advance, implicit_advance_serial
 from laddermill_gym.kernels.pointmass.partitioned import partitioned_solve, partitioned_solve_serial
-from laddermill_gym.model.pointmass import make_work, pack
+from laddermill_gym.model.builders import CableSpec
+from laddermill_gym.model.params import WindParams
+from laddermill_gym.model.pointmass import PointMassKite, PointMassString, make_work, pack
 from laddermill_gym.sim import pointmass as sim_pointmass
 from tests.env_cases import PMC, case_kwargs
-from tests.test_pointmass_threads import _random_string
+
+
+def _random_string(rng, n, end_fixed):
+    """n free nodes on 1 m elements in random directions, stretched or slack by up to 20 %, a 20 kg kite on every
+    seventh node (EA 1 kN, DA 10 N s, 1 kg/m: a test string, no data source needed)."""
+    kite = PointMassKite(name="k", mass=20.0, area=10.0, alpha=np.linspace(-np.pi, np.pi, 5), cl=np.zeros(5),
+                         cd=np.zeros(5))
+    cab = CableSpec(diameter=0.01, mass_per_length=1.0, EA=1e3, DA=10.0, cn0=0.0, ct0=0.0)
+    d = rng.standard_normal((n + 1, 3))
+    d *= (1.0 + 0.2 * rng.uniform(-1, 1, (n + 1, 1))) / np.linalg.norm(d, axis=1, keepdims=True)
+    pts = np.cumsum(d, axis=0)
+    s = PointMassString(wind=WindParams(v0=0.0, rho0=0.0), gravity=0.0, cable=cab, element_length=1.0, n_nodes=n,
+                        anchor=np.zeros(3), end=pts[n] if end_fixed else None, kite=kite,
+                        kite_nodes=np.arange(3, n, 7))
+    return s, pts[:n]
 
 
 def _on_one_thread(fn, *args):
