@@ -35,7 +35,8 @@ WARM_REPEATS = 3
 
 
 #: what the fresh process runs (``python -c``), its clock started before any import: make + reset (seed 0) + one
-#: step with the zero action; prints the seconds, the number of functions numba compiled and the cache it used
+#: step with the zero action; prints the seconds, the process's CPU time (user + system: less sensitive than the
+#: wall time to other work on a shared machine), the number of functions numba compiled and the cache it used
 CHILD = """import time
 t0 = time.perf_counter()
 import json
@@ -54,9 +55,12 @@ env = gymnasium.make({env_id!r})
 env.reset(seed=0)
 env.step(np.zeros(env.action_space.shape, dtype=env.action_space.dtype))
 seconds = time.perf_counter() - t0
+import resource
+use = resource.getrusage(resource.RUSAGE_SELF)
 env.close()
 from numba.core.config import CACHE_DIR
-print(json.dumps({{"inside_s": seconds, "compiled": len(compiled), "cache_dir": CACHE_DIR}}))
+print(json.dumps({{"inside_s": seconds, "cpu_s": use.ru_utime + use.ru_stime, "compiled": len(compiled),
+                  "cache_dir": CACHE_DIR}}))
 """
 
 
@@ -88,6 +92,7 @@ def measure(env_id: str, cold: bool = True, warm_repeats: int = WARM_REPEATS) ->
         runs = [run_child(env_id, cache) for _ in range(warm_repeats)]
     res["warm"] = {"wall_s": statistics.median(r["wall_s"] for r in runs),
                    "inside_s": statistics.median(r["inside_s"] for r in runs),
+                   "cpu_s": statistics.median(r["cpu_s"] for r in runs),
                    "compiled": max(r["compiled"] for r in runs), "runs": len(runs), "cache_dir": runs[0]["cache_dir"]}
     return res
 
@@ -105,10 +110,10 @@ def report(res: dict, echo=print) -> None:
     if "cold" in res:
         c = res["cold"]
         echo(f"  cold (empty numba cache)  {c['wall_s']:7.1f} s  (inside {c['inside_s']:.1f} s, "
-             f"{c['compiled']} functions compiled) {_verdict(c['wall_s'], cold_t)}")
+             f"CPU {c['cpu_s']:.1f} s, {c['compiled']} functions compiled) {_verdict(c['wall_s'], cold_t)}")
     w = res["warm"]
-    echo(f"  warm (cache filled)       {w['wall_s']:7.2f} s  (inside {w['inside_s']:.2f} s, "
-         f"{w['compiled']} functions compiled, median of runs) {_verdict(w['wall_s'], warm_t)}")
+    echo(f"  warm (cache filled)       {w['wall_s']:7.2f} s  (inside {w['inside_s']:.2f} s, CPU {w['cpu_s']:.2f} s, "
+         f"{w['compiled']} functions compiled, median of {w['runs']}) {_verdict(w['wall_s'], warm_t)}")
 
 
 def run_startup(quick: bool = False, envs=None, echo=print) -> dict:
