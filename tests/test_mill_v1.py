@@ -6,6 +6,7 @@ F_s = 2.5 of Lansdorp et al. (2008). The full runs are ``slow``."""
 
 from __future__ import annotations
 
+import functools
 import json
 
 import numpy as np
@@ -73,11 +74,68 @@ def _periodic(v_c, max_time=3000.0, overrides=None):
     return sim, run_to_periodic(sim, shape_tol=1e-3, power_tol=1e-3, max_time=max_time, progress=False)
 
 
+@functools.cache
+def _periodic_result(v_c):
+    return _periodic(v_c)[1]
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("v_c", [1.0, 2.0, 5.0])
+@pytest.mark.parametrize("v_c", [1.0, 2.0, pytest.param(5.0, marks=pytest.mark.xfail(strict=True, reason=(
+    "issue 30 point 1 open at 5 m/s: the upper descending leg goes slack and the loop does not settle "
+    "(docs/wing_data.md, 'Design study')")))])
 def test_v1_mill_is_periodic_in_plane(v_c):
     """The paper: the in-plane motion is stable and periodic (Figs. 6-7 at 1 and 5 m/s, Fig. 8 at 2 m/s)."""
-    _, res = _periodic(v_c)
+    res = _periodic_result(v_c)
     assert res.converged, res.summary()
     assert res.mean_power_W == pytest.approx(
         power_curve.hand_estimate_w(res.tension_mean_N[0], res.tension_mean_N[-1], v_c), rel=1e-2)
+
+
+@pytest.mark.slow
+def test_v1_mill_delivers_the_papers_power_at_2_m_s():
+    """Issue 30 point 2, matched at V_c = 2 m/s (the paper's Fig. 8 speed; at 5 m/s the mill is not periodic): at
+    least 150 kW, of the order of the paper's 200 kW, every tension of the period below breaking load / 2.5."""
+    res = _periodic_result(2.0)
+    assert res.converged, res.summary()
+    assert 150e3 <= res.mean_electrical_power_W <= 300e3
+    assert np.max(res.tension_max_N) < LIMIT_N
+
+
+def _step_runs(first_vc, overrides_after, wind_factor=None, max_time=3000.0):
+    """Run to the periodic motion, then change the cable-speed schedule or scale the wind (a 1 s ramp) and run to
+    the periodic motion again; returns the two results."""
+    from laddermill_gym.atmosphere.field import WindField
+
+    sim, before = _periodic(first_vc, max_time=max_time)
+    assert before.converged, before.summary()
+    t1, x, u = sim.t, sim.state.copy(), sim.controls.copy()
+    sim2 = load_scene(SCENE, dimension=2, overrides=overrides_after(t1)).simulator()
+    sim2.reset(state=x, t=t1, controls=u)
+    if wind_factor is not None:
+        sim2.set_wind(WindField(t0=t1, dt=1.0, speed=np.array([1.0, wind_factor]), direction=np.zeros(2)))
+    after = run_to_periodic(sim2, shape_tol=1e-3, power_tol=1e-3, max_time=max_time, progress=False)
+    return before, after
+
+
+@pytest.mark.slow
+def test_v1_mill_finds_a_new_periodic_motion_after_a_wind_step():
+    """The paper: after a change of the wind the mill comes to a new stationary motion. Wind 8 -> 9 m/s at V_c =
+    2 m/s (the whole profile scaled by 9/8 over 1 s)."""
+    before, after = _step_runs(2.0, lambda t1: {"station": {"speed_m_s": [0.0, 2.0]}}, wind_factor=9.0 / 8.0)
+    assert after.converged, after.summary()
+    assert after.mean_power_W > before.mean_power_W  # more wind, more power
+    assert np.max(after.tension_max_N) < LIMIT_N
+
+
+@pytest.mark.slow
+def test_v1_mill_finds_a_new_periodic_motion_after_a_cable_speed_step():
+    """The paper: after a change of the cable speed the mill comes to a new stationary motion. V_c 2 -> 3 m/s over
+    1 s, from the periodic motion at 2 m/s."""
+    def after(t1):
+        return {"station": {"speed_times_s": [0.0, 30.0, t1, t1 + 1.0], "speed_m_s": [0.0, 2.0, 2.0, 3.0]}}
+
+    before, res = _step_runs(2.0, after)
+    assert res.converged, res.summary()
+    assert res.period_s == pytest.approx(70.0 / 3.0)
+    assert res.mean_power_W == pytest.approx(
+        power_curve.hand_estimate_w(res.tension_mean_N[0], res.tension_mean_N[-1], 3.0), rel=1e-2)

@@ -30,6 +30,7 @@ from pathlib import Path
 import numpy as np
 
 from laddermill_gym.studies import parallel
+from laddermill_gym.studies.commands import Parser, UsageError, check_number
 
 SCENE = "laddermill_v1"
 PAPER_V0 = 8.0  # [m/s] Meijaard et al. 1999, the example's wind at h0 = 50 m
@@ -140,16 +141,39 @@ def write(out: Path, cfg: Config, rows: list[dict], best: list[dict]) -> list[Pa
     return paths
 
 
+def _config(args) -> Config:
+    """The sweep's settings: ``--quick`` or the full one, with the options given replacing its fields."""
+    cfg = QUICK if args.quick else Config()
+    for opt, name in (("--speeds", "speeds"), ("--winds", "winds"), ("--wind-speeds", "wind_speeds")):
+        values = getattr(args, name)
+        if values is not None:
+            for v in values:
+                check_number(opt, v, low=0.0, high=30.0, unit="m/s")
+            cfg = dataclasses.replace(cfg, **{name: tuple(values)})
+    if args.max_time is not None:
+        check_number("--max-time", args.max_time, low=0.0, unit="s")
+        cfg = dataclasses.replace(cfg, max_time=args.max_time)
+    return cfg
+
+
 def main(argv=None) -> int:
-    from laddermill_gym.studies.commands import Parser
 
     p = Parser(prog="laddermill power-curve", description=__doc__.splitlines()[0])
     p.add_argument("--out", default="results/power_curve", help="output folder (CSV, JSON, PNG)")
     p.add_argument("--quick", action="store_true", help="one case, V_c = 2 m/s at the paper's wind, 70 s search")
+    p.add_argument("--speeds", type=float, nargs="+", default=None, metavar="V_C",
+                   help="cable speeds [m/s] at the paper's wind (default: the full sweep's)")
+    p.add_argument("--winds", type=float, nargs="+", default=None, metavar="V0", help="winds V0 [m/s] of the sweep")
+    p.add_argument("--wind-speeds", type=float, nargs="+", default=None, metavar="V_C",
+                   help="cable speeds [m/s] tried per wind")
+    p.add_argument("--max-time", type=float, default=None, help="periodic search per case [s]")
     parallel.add_arguments(p)
     args = p.parse_args(argv)
     parallel.check_arguments(args, p.prog)
-    cfg = QUICK if args.quick else Config()
+    try:
+        cfg = _config(args)
+    except UsageError as err:
+        p.error(str(err))
     rows, best = run(cfg, workers=args.workers)
     print(f"{SCENE}, in plane; tension limit breaking load / {SAFETY_FACTOR} = {rows[0]['t_limit_kN']:.0f} kN")
     print("   V0   V_c  elev up/down  periodic     P [kW]  (T1-Tn)V_c [kW]  T_max [kN]  within limit  "
