@@ -116,3 +116,13 @@ def test_breakdown_and_time_limit_are_not_physical(small_mill):
     run = _follow(small_mill, None, after_step=0.3)
     assert run["end"].outcome == dv.TIME_LIMIT and run["t_reached_s"] == pytest.approx(0.3)
     assert "no physical end, time limit" in dv.describe(run)
+
+
+def test_undisturbed_spell_is_the_time_out_of_the_band(small_mill):
+    """A band no wing is in: every wing is out from the first sample (0.1 s) on, so after 1 s the longest spell is
+    0.9 s, and the aerodynamic criterion (hold 0.5 s) holds; the simulator given is not advanced."""
+    sim = small_mill[0]
+    t = sim.t
+    ref = dv.undisturbed_spell(sim, dv.EndCriteria(alpha_range_deg=(-90.0, -80.0), aero_hold_s=0.5), 1.0)
+    assert ref["longest_out_s"] == pytest.approx(0.9) and ref["end"].outcome == dv.AERO and sim.t == t
+    assert ref["end"].t_after_step_s == pytest.approx(0.6)

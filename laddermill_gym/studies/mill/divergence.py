@@ -46,10 +46,10 @@ SAMPLE_KEYS = ("t_after_step_s", "roll_deg", "pitch_deg", "yaw_deg", "p_rad_s", 
 class EndCriteria:
     """When a diverging run ends physically. alpha_range_deg [deg], max_abs_beta_deg [deg]: the band of accurate
     aerodynamic data; aero_hold_s [s]: how long a wing must stay outside it without a break (chosen: 2 s, four
-    times the wings' slowest rotational time constant, about 0.5 s, so a wing passing through stall in a gust
-    does not end the run); min_height_m [m]: the lowest wing CG height (None: half the smallest span);
-    breaking_fraction [-]: share of the breaking load that ends the run (1: the cable breaks); aero_wings: which
-    wing slots are judged on their aerodynamic range (None: all)."""
+    times the longest spell outside it in the undisturbed periodic motion at 2 m/s, 0.5 s, the wing just
+    inserted, which ``meijaard`` prints: :func:`undisturbed_spell`); min_height_m [m]: the lowest wing CG height
+    (None: half the smallest span); breaking_fraction [-]: share of the breaking load that ends the run (1: the
+    cable breaks); aero_wings: which wing slots are judged on their aerodynamic range (None: all)."""
 
     alpha_range_deg: tuple[float, float] = ALPHA_RANGE_DEG
     max_abs_beta_deg: float = MAX_ABS_BETA_DEG
@@ -161,6 +161,28 @@ def range_exit(rows: list[dict], alpha_ok_deg=(-16.0, 18.0), beta_ok_deg: float 
              "alpha_exit_any_s": (c["alpha_min_deg"] < lo) | (c["alpha_max_deg"] > hi),
              "beta_exit_any_s": c["abs_beta_max_deg"] > beta_ok_deg}
     return {k: float(c["t_after_step_s"][np.argmax(m)]) if m.any() else math.nan for k, m in masks.items()}
+
+
+def undisturbed_spell(sim: Simulator, criteria: EndCriteria, seconds: float, sample_s: float = 0.1) -> dict:
+    """Run ``sim`` undisturbed for ``seconds`` [s] (a copy: ``sim`` is not advanced) and judge it every
+    ``sample_s`` [s]: the longest spell a wing spends outside the aerodynamic band [s] and that wing, the lowest
+    wing CG [m], the peak tension over its limit [-], and the end if a criterion held (it should not: the undisturbed
+    motion is the reference the criteria are set against)."""
+    s = Simulator(sim.assembly, sim.state, sim.settings, sim.controls)
+    s.reset(sim.state, t=sim.t, controls=sim.controls)
+    s.set_wind(sim.wind_field)
+    judge = Judge(criteria, s.assembly.n_wings, min_height(s, criteria),
+                  tension_limits(s.assembly, criteria.breaking_fraction), s.t)
+    n = max(1, int(round(sample_s / s.settings.dt)))
+    longest, wing, end = 0.0, -1, None
+    for _ in range(int(round(seconds / (n * s.settings.dt)))):
+        s.step(n_steps=n)
+        end = end or judge_state(judge, s)
+        spell = s.t - judge.out_since
+        if np.any(np.isfinite(spell)) and np.nanmax(spell) > longest:
+            longest, wing = float(np.nanmax(spell)), int(np.nanargmax(spell))
+    return {"longest_out_s": longest, "wing": wing, "lowest_wing_m": judge.lowest,
+            "peak_tension_ratio": judge.peak_ratio, "end": end}
 
 
 def set_direction_step(sim: Simulator) -> float:

@@ -39,7 +39,14 @@ from laddermill_gym import Simulator, load_scene
 from laddermill_gym.ladder.periodic import PeriodicResult, run_to_periodic
 from laddermill_gym.model.states import planar_to_3d
 from laddermill_gym.sim.recording import ALPHA_RANGE_DEG, MAX_ABS_BETA_DEG
-from laddermill_gym.studies.mill.divergence import BREAKDOWN, DEFAULT_END, EndCriteria, describe, follow
+from laddermill_gym.studies.mill.divergence import (
+    BREAKDOWN,
+    DEFAULT_END,
+    EndCriteria,
+    describe,
+    follow,
+    undisturbed_spell,
+)
 
 PAPER_POWER_W = 200e3  # [W] "of the order of 200 kW" (2D, the paper's unoptimised configuration)
 SLOT = 40  # the paper's "node 40, in the ascending part close to the top"
@@ -299,6 +306,12 @@ def run_direction_steps(sim3: Simulator, cfg: Config, out: Path) -> list[dict]:
     ends the run when the wing data are trusted beyond their range); and with RK4 at dt and no end criterion (to its
     breakdown, the figure before issue 30)."""
     dt = sim3.settings.dt
+    ref = undisturbed_spell(sim3, cfg.end, sim3.assembly.station.piece_length / sim3.cable_speed(), cfg.sample_s)
+    print(f"undisturbed periodic motion over one period: the longest spell outside the aerodynamic data "
+          f"{ref['longest_out_s']:.2f} s (wing {ref['wing']}; the criterion's hold: {cfg.end.aero_hold_s:g} s), lowest "
+          f"wing CG {ref['lowest_wing_m']:.1f} m, peak tension {ref['peak_tension_ratio']:.3g} x the breaking load; "
+          f"{'no end criterion holds' if ref['end'] is None else 'END CRITERION HOLDS: ' + ref['end'].text}",
+          flush=True)
     runs = []
     for label, method, h, wall, crit in (
             (f"RK4 dt = {dt * 1e3:g} ms", "rk4", dt, math.inf, cfg.end),
