@@ -34,7 +34,7 @@ def _row_or_none(a, b):
     return lambda a, b: a[b]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")  # inlined: no separate compile of its 60 array arguments (issue 32)
 def copy_views(b, M, kind, vehicle, WB, AB):
     """(model, workspace) of copy ``b``: the shared model (markers ``kind`` and ``vehicle``) with that copy's air
     (row b of the batched :class:`~laddermill_gym.kernels.contract.KAir` AB: wind modulation and gust grid), and

@@ -16,7 +16,8 @@ plain fixed-step kernels run them (bit for bit).
 
 import math
 
-from numba import njit
+from numba import njit, types
+from numba.extending import overload
 
 from laddermill_gym.kernels.contract import OK, TM_DT, TM_T0, KModel
 from laddermill_gym.kernels.integrate import rk4_advance
@@ -38,13 +39,19 @@ def model_with_air(kind, vehicle, M, tmod, ms, md, gp, gv):
                   M.ea, M.ef, M.ekd, M.echild, M.order, M.parent, M.bsz, M.sag, M.caero, vehicle)
 
 
-@njit(cache=True, error_model="numpy")
 def advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
     """n fixed steps of dt [s] from t [s]: RK4 when ``tableau`` is None, else the Rosenbrock-W method of that
-    tableau (``kernels/rigid/rosenbrock.py``); the argument's type selects the compiled path. (status, steps)."""
-    if tableau is None:
-        return rk4_advance(t, x, u, dt, n, M, W, limits)
-    return w_advance(t, x, u, dt, n, M, W, limits, tableau)
+    tableau (``kernels/rigid/rosenbrock.py``). (status, steps). Jitted code only: the argument's type selects
+    the method when numba compiles (an overload), so a scene compiles only its own method (``if tableau is
+    None`` would prune the Rosenbrock branch for RK4 but compile RK4 beside every Rosenbrock method)."""
+    raise NotImplementedError("advance_fixed is resolved inside numba kernels")
+
+
+@overload(advance_fixed)
+def _advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
+    if isinstance(tableau, types.NoneType):
+        return lambda t, x, u, dt, n, M, W, limits, tableau: rk4_advance(t, x, u, dt, n, M, W, limits)
+    return lambda t, x, u, dt, n, M, W, limits, tableau: w_advance(t, x, u, dt, n, M, W, limits, tableau)
 
 
 @njit(cache=True)

@@ -103,7 +103,8 @@ def observe_state(t, x, u, M, W, nominal, below, ground, obs, aux):
     return _observe_one(t, x, u, W.k1, M, W, nominal, below, ground, obs, aux)
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+# inlined into both kernels (same flags): the step-and-observe kernel is compiled once, not twice (issue 32)
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
 def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below,
                        ground, obs, aux, status, done):
     run, st, dn, Mb, Wb = advance_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks)
