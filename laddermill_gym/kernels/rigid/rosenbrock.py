@@ -159,7 +159,8 @@ def _stage_increment(xn, r, Ui, M, W, gh):
             Ui[o + N3_POS + i] += gh * W.bv[b, i]
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+# inlined into its callers (same flags): no separate compile of the whole W step (issue 32)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def w_step(t, x, u, dt, M, W, tableau):
     """One step of dt [s] of the Rosenbrock-W method ``tableau`` from (t, x): the stage increments into W.k1..k4,
     x into W.xp, the new state (not yet normalised or checked) into x. Returns OK or SINGULAR (x then restored)."""
