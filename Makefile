@@ -70,6 +70,11 @@ figures:
 	laddermill evaluate --controllers open_loop lqr $(RUN)/best_model.zip $(RUN)/model.zip --episodes 1 \
 		--out results/tethered_wing
 	cp results/tethered_wing/lateral.png $(FIG)/tethered_wing_controllers.png
+	python -m laddermill_gym.studies.pumping.pumping_cycle --cycles 2 --out results/pumping_cycle
+	cp results/pumping_cycle/pumping_window.png $(FIG)/pumping_crosswind_window.png
+	cp results/pumping_cycle/pumping_timeseries.png $(FIG)/pumping_crosswind_timeseries.png
+	python -m laddermill_gym.studies.pumping.power_curve --out results/pumping_power
+	cp results/pumping_power/pumping_power_curve.png $(FIG)/pumping_power_curve.png
 	for s in step_minus_0.05 step_0.1 gust; do \
 		laddermill evaluate --scenario $$s --controllers lqr $(RUN)/best_model.zip $(RUN)/model.zip \
 			--episodes 1 --out results/tethered_wing_$$s; done
