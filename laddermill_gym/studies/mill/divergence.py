@@ -45,8 +45,8 @@ SAMPLE_KEYS = ("t_after_step_s", "roll_deg", "pitch_deg", "yaw_deg", "p_rad_s", 
 @dataclass(frozen=True)
 class EndCriteria:
     """When a diverging run ends physically. alpha_range_deg [deg], max_abs_beta_deg [deg]: the band of accurate
-    aerodynamic data; aero_hold_s [s]: how long a wing must stay outside it without a break (chosen: 2 s, four
-    times the longest spell outside it in the undisturbed periodic motion at 2 m/s, 0.5 s, the wing just
+    aerodynamic data; aero_hold_s [s]: how long a wing must stay outside it without a break (chosen: 2 s, five
+    times the longest spell outside it in the undisturbed periodic motion at 2 m/s, 0.40 s, the wing just
     inserted, which ``meijaard`` prints: :func:`undisturbed_spell`); min_height_m [m]: the lowest wing CG height
     (None: half the smallest span); breaking_fraction [-]: share of the breaking load that ends the run (1: the
     cable breaks); aero_wings: which wing slots are judged on their aerodynamic range (None: all)."""
