@@ -57,7 +57,7 @@ PHASE_NAMES = ("reel_out", "retract", "reel_in", "entry")
 _G = 9.80665  # [m/s^2] standard gravity
 _PARK_MARGIN = math.radians(5.0)  # [rad] the retraction ends this close to the park elevation
 _ZENITH_STOP, _ZENITH_SLOW = math.radians(88.0), math.radians(4.0)  # [rad] the reel-in's elevation limit (chosen)
-_ELEVATION_GAIN = 0.0  # [rad elevator / rad elevation] the reel-in's elevation hold (tuned)
+_ENTRY_TENSION, _ENTRY_GAIN = 2000.0, 1.0e-3  # [N], [m/s per N] the entry's taut-tether law (chosen)
 _MIN_TENSION = 5000.0  # [N] the bank law's smallest tension (slack-tether turns are not banked harder; tuned)
 
 
@@ -82,6 +82,9 @@ class CrosswindController:
         self.config, self.dt, self.lqr = cfg, float(task.control_dt), lqr
         self.guidance = PathGuidance(cfg.path)
         self.park = window_point(np.array([cfg.path.azimuth]), np.array([cfg.phases.park_elevation]))
+        #: the path's two ends (centre azimuth + and - the half span, centre elevation): the entry's targets
+        self.path_ends = window_point(cfg.path.azimuth + np.array([1.0, -1.0]) * cfg.path.width,
+                                      np.full(2, cfg.path.elevation))
         self.nominal = np.asarray(task.nominal, float).reshape(3)
         wing = sc.assembly.wing(0)
         self.mass = float(wing.mass)
@@ -124,6 +127,10 @@ class CrosswindController:
             self.path_index[fly] = idx
             rows = np.flatnonzero(fly)
             ph[rows[(ph[fly] == ENTRY) & (dist < self.config.phases.entry_distance)]] = REEL_OUT
+        entry = ph == ENTRY  # aim at the path's end on the wing's side: a descent across the wind keeps airspeed
+        if entry.any():
+            side = (ww.azimuth[entry] < self.config.path.azimuth).astype(int)
+            chi_c[entry] = bearing(self.path_ends[side], ww.e_r[entry], ww.e_phi[entry], ww.e_beta[entry])
         return chi_c
 
     def _steering(self, o: np.ndarray, ww, rot, chi_c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -150,15 +157,18 @@ class CrosswindController:
         Reel-in: -reel_in_speed, slowed from ``_ZENITH_SLOW`` below ``_ZENITH_STOP`` to a stop there (reeling in
         lifts the wing towards the zenith, over which it would fall upwind), and paying out again by
         ``overload_gain`` per N of drum tension above ``reel_in_tension`` (the wing still powered after the
-        retraction is not hauled in against its full pull)."""
+        retraction is not hauled in against its full pull). Entry: reel in ``_ENTRY_GAIN`` per N below
+        ``_ENTRY_TENSION`` (at most reel_in_speed), so the diving wing keeps its tether taut."""
         w, f = self.config.winch, self.config.phases
         tension = o[:, WINCH_OBS_INDEX["drum_tension"]]
         v_out = w.reel_out_factor * np.maximum(o[:, WINCH_OBS_INDEX["radial_wind"]], 0.0)
         v_out = v_out + w.overload_gain * np.maximum(tension - w.max_tension, 0.0)
         slow = np.clip((_ZENITH_STOP - elevation) / _ZENITH_SLOW, 0.0, 1.0)
         v_in = -w.reel_in_speed * slow + w.overload_gain * np.maximum(tension - w.reel_in_tension, 0.0)
+        v_entry = -np.minimum(_ENTRY_GAIN * np.maximum(_ENTRY_TENSION - tension, 0.0), w.reel_in_speed)
         cmd = np.select([ph == REEL_OUT, ph == RETRACT, ph == REEL_IN],
-                        [v_out, np.where(s < f.reel_length + f.overrun, v_out, 0.0), np.minimum(v_in, v_out)], 0.0)
+                        [v_out, np.where(s < f.reel_length + f.overrun, v_out, 0.0), np.minimum(v_in, v_out)],
+                        v_entry)
         return np.clip(cmd, *self.speed_limits)
 
     def controls(self, obs: np.ndarray) -> np.ndarray:
@@ -181,11 +191,7 @@ class CrosswindController:
             rudder[held] = lat[:, CTRL_RUDDER] - self.u_trim[CTRL_RUDDER]
         u = np.empty((n, 4))
         powered = ph != REEL_IN
-        # reel-in: the elevator holds the park elevation, between the balances of alpha_in and alpha_out (a higher
-        # angle of attack: more drag, a lower glide ratio, a lower elevation)
-        e_in = self.elevator[RETRACT] - _ELEVATION_GAIN * (ww.elevation - self.config.phases.park_elevation)
-        u[:, CTRL_ELEVATOR] = np.where(powered, self.elevator[REEL_OUT], np.clip(e_in, self.elevator[REEL_OUT],
-                                                                                 self.elevator[RETRACT]))
+        u[:, CTRL_ELEVATOR] = np.where(powered, self.elevator[REEL_OUT], self.elevator[RETRACT])
         u[:, CTRL_AILERON] = self.u_trim[CTRL_AILERON] + aileron
         u[:, CTRL_RUDDER] = self.u_trim[CTRL_RUDDER] + rudder
         u[:, 3] = self._winch(o, ph, s, ww.elevation)
