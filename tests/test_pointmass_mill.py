@@ -22,7 +22,7 @@ from laddermill_gym.sim.pointmass_mill import PointMassMillSimulator
 EA, MU = 2.16e7, 0.3  # [N], [kg/m] the laddermill's 2.5 cm Dyneema (configs/cables/dyneema_25mm.yaml)
 
 
-def straight_string(v_c, da=2.16e4, le=1.0, per=10, nk=8, eps=1e-3, method="implicit", dt=0.01):
+def straight_string(v_c, da=2.16e4, le=1.0, per=10, nk=8, eps=1e-3, method="implicit", dt=0.01, insertion="cable"):
     """A string without gravity or air between two ground points pulled to the strain eps, kites (54 kg, no
     aerodynamics) every ``per`` nodes, started in the steady pay-out: every node at V_c (1 + eps) along the line."""
     cable = CableSpec(diameter=0.025, mass_per_length=MU, EA=EA, DA=da, breaking_load=5e5, cn0=0.0, ct0=0.0)
@@ -40,7 +40,7 @@ def straight_string(v_c, da=2.16e4, le=1.0, per=10, nk=8, eps=1e-3, method="impl
     xs[:, 0] = (a + le * np.arange(n)) * (1.0 + eps)
     xs[:, 2] = -100.0
     xs[:, 3] = v_c * (1.0 + eps)
-    st = PointMassStation(le, a, b, (0.0,), (v_c,))
+    st = PointMassStation(le, a, b, (0.0,), (v_c,), insertion=insertion)
     return PointMassMillSimulator(s, st, x, np.zeros(3 * nk), dt, method), length
 
 
@@ -56,6 +56,23 @@ def test_steady_pay_out_of_a_straight_string(v_c):
     assert np.max(np.abs(sim.velocities[:, 1:])) < 1e-12
     p = sim.generator_power()
     assert abs(p["mechanical_W"]) < 1e-6 * EA * 1e-3 * abs(v_c)
+
+
+@pytest.mark.parametrize("insertion", ["cable", "paper"])
+def test_insertion_rule_of_the_new_node(insertion):
+    """``station.insertion`` at this fidelity: right after the first transfer the new node 0 sits at the fraction f =
+    (a + s) / (a + s + l_e) of the way to node 1 and moves at u + f (v_1 - u), u the material's velocity at the
+    ground point: V_c (l / l0) = V_c (1 + eps) along the string with the cable's rule (the steady pay-out kept), 0
+    with the paper's (the node at f v_1, about V_c / 11)."""
+    sim, _ = straight_string(2.0, insertion=insertion)
+    while sim.transfers() == 0:
+        sim.step()
+    le, a = 1.0, 0.1
+    f = (a + sim.moved()) / (a + sim.moved() + le)
+    v1 = sim.velocities[1, 0]
+    u = 2.0 * 1.001 if insertion == "cable" else 0.0
+    assert sim.velocities[0, 0] == pytest.approx(u + f * (v1 - u), rel=1e-9)
+    assert (abs(sim.velocities[0, 0] - 2.002) < 1e-6) == (insertion == "cable")
 
 
 def test_steady_pay_out_explicit():
