@@ -64,6 +64,7 @@ def test_record_flags_overloads():
     assert rec.overloads == [] and not rec.views["element_overload"].any()
     assert ten.max() < _breaking_load()
     frac = 0.99 * ten.min() / _breaking_load()
+    assert sim.overloads() == [] and len(sim.overloads(0.5 * frac)) == ten.shape[1]  # the state now, both ways
     sim = load_scene("tethered_wing").simulator()
     rec = record(sim, 0.5, 0.05, progress=False, breaking_fraction=frac)
     assert rec.views["element_overload"].all()

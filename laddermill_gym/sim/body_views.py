@@ -10,6 +10,7 @@ import numpy as np
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.wind import modulation, wind_point
 from laddermill_gym.model.states import euler_from_quaternion
+from laddermill_gym.sim.overload import BREAKING_FRACTION, Overload, overload_events, tension_limits
 from laddermill_gym.sim.reports import body_heights
 from laddermill_gym.sim.station_views import StationViews, station_state_name
 
@@ -124,6 +125,12 @@ class BodyViews(StationViews):
         """Element tensions, shape (n_elements,) [N], evaluated at the current state."""
         self.rhs(self.t, self.state, self.controls)
         return self.work.tension[: self.assembly.elements.count].copy()
+
+    def overloads(self, breaking_fraction: float = BREAKING_FRACTION) -> list[Overload]:
+        """Elements whose tension now exceeds ``breaking_fraction`` [-] times their cable's breaking load (time,
+        element, tension, limit; ``sim/overload.py``); empty if none. One right-hand side, O(n_elements)."""
+        return overload_events(np.array([self.t]), self.tensions()[None, :],
+                               tension_limits(self.assembly, breaking_fraction))[1]
 
     def views(self) -> dict[str, np.ndarray]:
         """All named views at once (for saving): name -> array, units in the names."""
