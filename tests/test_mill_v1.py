@@ -114,6 +114,8 @@ def _step_runs(first_vc, overrides_after, wind_factor=None, max_time=3000.0):
     if wind_factor is not None:
         sim2.set_wind(WindField(t0=t1, dt=1.0, speed=np.array([1.0, wind_factor]), direction=np.zeros(2)))
     after = run_to_periodic(sim2, shape_tol=1e-3, power_tol=1e-3, max_time=max_time, progress=False)
+    print(f"before the step: {before.summary()}\nafter the step: {after.summary()}; largest tension of its period "
+          f"{np.max(after.tension_max_N) / 1e3:.1f} kN")
     return before, after
 
 

@@ -98,12 +98,13 @@ def best_per_wind(rows: list[dict]) -> list[dict]:
 
 
 def run(cfg: Config, workers: int = 0, progress: bool = True) -> tuple[list[dict], list[dict]]:
-    """Both sweeps; returns (rows, best per wind). The paper's wind's V_c are shared by the two sweeps."""
+    """Both sweeps; returns (rows, best per wind over every row: the paper's wind included). The paper's wind's V_c
+    are shared by the two sweeps."""
     cases = [(PAPER_V0, v) for v in cfg.speeds]
     cases += [(w, v) for w in cfg.winds for v in cfg.wind_speeds if (w, v) not in cases]
     tasks = [(run_case, dict(v0=w, v_c=v, max_time=cfg.max_time, n_wings=cfg.n_wings)) for w, v in cases]
     rows = parallel.run_tasks(tasks, workers=workers, desc="power curve", unit="case", progress=progress)
-    return rows, best_per_wind([r for r in rows if r["v0_m_s"] in cfg.winds])
+    return rows, best_per_wind(rows)
 
 
 def write(out: Path, cfg: Config, rows: list[dict], best: list[dict]) -> list[Path]:
@@ -131,7 +132,11 @@ def write(out: Path, cfg: Config, rows: list[dict], best: list[dict]) -> list[Pa
             title=f"{SCENE}, in plane, V0 = {PAPER_V0:g} m/s")
     ax1.legend(fontsize=8)
     okb = [b for b in best if b["power_kW"] is not None]
-    ax2.plot([b["v0_m_s"] for b in okb], [b["power_kW"] for b in okb], "o-", color="C0")
+    over = [r for r in rows if r["periodic"] and not r["within_limit"]]
+    ax2.plot([r["v0_m_s"] for r in over], [r["power_kW"] for r in over], "x", color="grey",
+             label="periodic, tension over the limit")
+    ax2.plot([b["v0_m_s"] for b in okb], [b["power_kW"] for b in okb], "o-", color="C0", label="best within the limit")
+    ax2.legend(fontsize=8)
     ax2.set(xlabel="wind speed V0 at 50 m [m/s]", ylabel="best mean power [kW]", title="best V_c per wind")
     ax3 = ax2.twinx()
     ax3.plot([b["v0_m_s"] for b in okb], [b["best_v_c_m_s"] for b in okb], "s--", color="C1")
