@@ -45,6 +45,8 @@ work-precision:
 	cp results/work_precision_10s/laddermill.png $(FIG)/work_precision_laddermill_10s.png
 
 simulate:
+	laddermill demo --out runs
+	cp runs/demo.png laddermill_gym/docs/figures/laddermill_demo.png
 	laddermill simulate laddermill --start periodic --direction-step 0.01 --time 60 --animate --allow-breakdown --out runs
 	cp runs/laddermill_shape.png laddermill_gym/docs/figures/laddermill_direction_step.png
 	cp runs/laddermill_generator.png laddermill_gym/docs/figures/laddermill_generator.png

@@ -2,7 +2,8 @@
 
 ``make readme-figures`` (``python -m docsite.readme_figures --out results/readme_figures.json``) measures:
 
-* the main job, README's first command without the GIF: how long the disturbed mill flies (``simulated ... s``);
+* the main job, README's first command without the GIF (``laddermill demo``): how long the open-loop mill flies
+  after the step, and the LQR's largest lateral excursion and mean power;
 * every env id's action and observation sizes (``gymnasium.make(id)``; LadderMill-v0 finds its periodic operating
   point first, 2-3 minutes);
 * TetheredWing-v0's open-loop and LQR rows of ``laddermill_gym/docs/controllers.md`` (``laddermill evaluate
@@ -28,21 +29,21 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 README = ROOT / "README.md"
 CONTROLLERS = ROOT / "laddermill_gym" / "docs" / "controllers.md"
-MAIN_JOB = ["simulate", "laddermill", "--start", "periodic", "--direction-step", "0.01", "--time", "60",
-            "--allow-breakdown", "--quiet"]
+MAIN_JOB = ["demo", "--no-gif", "--no-progress"]
 
 
 def main_job() -> dict:
-    """The main job's simulated time [s] (it stops at the breakdown)."""
+    """The main job's table: {controller: [flew after the step [s], mean power [kW], max |dy| [m], end]}."""
     from laddermill_gym.cli import main
 
     out = io.StringIO()
     with tempfile.TemporaryDirectory() as tmp, contextlib.redirect_stdout(out):
         main(MAIN_JOB + ["--out", tmp])
-    m = re.search(r"simulated ([\d.]+) s in", out.getvalue())
-    if m is None:
-        raise RuntimeError(f"laddermill {' '.join(MAIN_JOB)} printed no 'simulated ... s':\n{out.getvalue()}")
-    return {"main_job_simulated_s": m.group(1)}
+    rows = dict((m.group(1), [m.group(2), m.group(3), m.group(4), m.group(5)]) for m in re.finditer(
+        r"^(open_loop|lqr)\s+([\d.]+)\s+([-\d.]+)\s+([\d.]+)\s+(.*)$", out.getvalue(), re.M))
+    if set(rows) != {"open_loop", "lqr"}:
+        raise RuntimeError(f"laddermill {' '.join(MAIN_JOB)} printed no open_loop and lqr rows:\n{out.getvalue()}")
+    return {"main_job": rows}
 
 
 def env_sizes() -> dict:
@@ -97,8 +98,12 @@ def differences(figures: dict) -> list[str]:
     """Each quoted figure that is not what was measured, as a sentence; [] when all agree."""
     readme, controllers = _flat(README.read_text()), _flat(CONTROLLERS.read_text())
     bad = []
-    if f"({figures['main_job_simulated_s']} s simulated)" not in readme:
-        bad.append(f"README: the main job flies {figures['main_job_simulated_s']} s ('(... s simulated)')")
+    ol, lqr = figures["main_job"]["open_loop"], figures["main_job"]["lqr"]
+    for quoted in (f"leaves the wing data {ol[0]} s after the step", f"excursion {lqr[2]} m, at {lqr[1]} kW mean"):
+        if quoted not in readme:
+            bad.append(f"README: the main job prints open loop {ol}, LQR {lqr}; README lacks '{quoted}'")
+    if lqr[3] != "ran to the end":
+        bad.append(f"README: the LQR no longer holds the mill through the main job ({lqr[3]})")
     rows = _env_rows(README.read_text())
     for name, (n_act, n_obs) in figures["env_sizes"].items():
         cells = rows.get(name)

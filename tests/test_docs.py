@@ -38,7 +38,7 @@ def test_readme_keeps_the_two_setup_commands_of_ci():
     """README's main-job command, and its test command as .ci/run runs it (each install and test step of .ci/run's
     README section, less pip's -q, is in README's one-line command)."""
     text = _readme()
-    assert "pip install -e . && laddermill simulate laddermill --start periodic --direction-step 0.01" in text
+    assert "pip install -e . && laddermill demo --out runs" in text
     ci = (ROOT / ".ci" / "run").read_text().split("# --- README", 1)[1].split("# --- end of README", 1)[0]
     ci = ci.splitlines()[1:]
     steps = [" ".join(line.replace(" -q", "").split()) for line in ci if line.startswith(("pip ", "python -m pytest"))]
