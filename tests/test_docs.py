@@ -100,7 +100,9 @@ def test_every_env_id_and_command_gets_its_page():
     from laddermill_gym.envs import ENV_IDS
 
     pages = dict(env_pages())
+    nav = (ROOT / "mkdocs.yml").read_text()  # a page left out of the nav fails the strict build
     for env_id in ENV_IDS:
+        assert f"- envs/{env_id.split('/', 1)[1]}.md" in nav, f"mkdocs.yml's nav lacks {env_id}'s page"
         text = pages[f"envs/{env_id.split('/', 1)[1]}.md"]
         assert all(s in text for s in REQUIRED + ("## Registered defaults", "## Every argument")), env_id
     commands = commands_pages()
