@@ -124,6 +124,16 @@ INSERT_PAPER, INSERT_CABLE = 0.0, 1.0
 #: drum).
 SX_MOVED, SX_TRANSFERS, SX_SPEED, SX_ENERGY, SX_SIZE = 0, 1, 2, 3, 4
 
+# ------------------------------------------------------------------------------------------- reeling tether
+#: The reeling multi-element tether of a winch (``kernels/reel.py``; packed by ``model/reel.py``), the kind
+#: marker's array ``reel``: nominal element length l_n [m]; split the drum element when its rest length reaches
+#: RL_SPLIT l_n, merge it with the element above below RL_MERGE l_n [-]; free nodes in the air at t = 0 [-] (the
+#: nodes 0 .. n - 1 - that count lie on the drum, held at the ground point); ground contact of a tether node: natural
+#: frequency omega [rad/s] and damping ratio zeta [-] of the penalty spring on the node's lumped mass, Coulomb
+#: friction coefficient [-] and the sliding speed [m/s] below which it is viscous; the ground height h_g [m].
+#: The state's ``SX_TRANSFERS`` counts the nodes paid out into the air since t = 0 (splits less merges).
+RL_LNOM, RL_SPLIT, RL_MERGE, RL_ACTIVE0, RL_OMEGA, RL_ZETA, RL_MU, RL_VSLIP, RL_GROUND, RL_SIZE = range(10)
+
 # ------------------------------------------------------------------------------------------- loads output
 #: Wing aerodynamics output ``W.aout`` (3D): force (3) [N] and moment (3) [N m] in body axes, the
 #: alpha-rate coefficients of the six equations (6) and the direction g along which they act (3).

@@ -12,6 +12,7 @@ from laddermill_gym.kernels.contract import KModel, KWork
 from laddermill_gym.kernels.moving_cable import MovingCable2D, MovingCable3D
 from laddermill_gym.kernels.rigid.kinds import RIGID_2D, RIGID_3D, WING
 from laddermill_gym.model.params import AERO_COLUMNS, END_NODE, END_WING, Assembly
+from laddermill_gym.model.reel import is_reel, reel_kind
 from laddermill_gym.model.station import pack_station
 from laddermill_gym.model.winch import is_winch, winch_kind
 
@@ -158,6 +159,8 @@ def model_kind(asm: Assembly):
     """The kind marker of a built assembly: rigid 3D or in-plane, with a moving cable when it has a station."""
     if asm.station is None:
         return RIGID_3D if asm.dim == 3 else RIGID_2D
+    if is_reel(asm.station):  # a winch with a reeling multi-element tether (model/reel.py, kernels/reel.py)
+        return reel_kind(asm)
     if is_winch(asm.station):  # a pumping kite's winch (model/winch.py, kernels/winch.py)
         return winch_kind(asm)
     sp = pack_station(asm.station, asm.elements.count, asm.body_state_size, C.N_CONTROLS * asm.n_wings)

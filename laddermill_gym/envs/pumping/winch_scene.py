@@ -17,8 +17,10 @@ from pathlib import Path
 
 import numpy as np
 
+from laddermill_gym.envs.pumping.reel_start import reel_state
 from laddermill_gym.ladder.scene import Scene, load_scene
 from laddermill_gym.model.configio import ConfigError, config_path, read_yaml
+from laddermill_gym.model.reel import ReelSpec, read_reeling, with_reel
 from laddermill_gym.model.station import StationParams
 from laddermill_gym.model.winch import read_winch, with_winch
 from laddermill_gym.sim.simulator import Simulator
@@ -89,10 +91,14 @@ class PumpingScene:
     scene: Scene
     winch: StationParams
     cycle: CycleSpec
+    reel: ReelSpec | None = None
+    base: Scene | None = None
 
     @property
     def assembly(self):
-        """The assembly with the winch."""
+        """The assembly with the winch (on a reeling tether with ``reel``: ``model.reel.with_reel``)."""
+        if self.reel is not None:
+            return with_reel(self.scene.assembly, self.winch, self.reel, self.scene.settings.ground_height)
         return with_winch(self.scene.assembly, self.winch)
 
     def replace_winch(self, **changes) -> PumpingScene:
@@ -101,7 +107,7 @@ class PumpingScene:
     def trim(self, alpha: float | None = None) -> tuple[np.ndarray, np.ndarray]:
         """(state, wing controls) of the plain scene trimmed at angle of attack ``alpha`` [rad] (default: the
         scene's), the tether held (no winch)."""
-        sc = self.scene
+        sc = self.scene if self.base is None else self.base
         if alpha is not None:
             sc = sc.replace(initial=dataclasses.replace(sc.initial, alpha=float(alpha)))
         return sc.initial_state()
@@ -115,6 +121,8 @@ class PumpingScene:
         w = self.winch
         cmd = w.speed_values[0] if w.mode == "commanded" else 0.0
         tail = np.array([cmd] if w.n_controls else [])
+        if self.reel is not None:  # the wing of the single-element trim, the nodes on the catenary
+            return reel_state(self.assembly, x, station_initial(w)), np.concatenate([u, tail])
         return np.concatenate([x, station_initial(w)]), np.concatenate([u, tail])
 
     def simulator(self, initial_state=None, controls=None) -> WinchSimulator:
@@ -136,6 +144,15 @@ def load_pumping(name_or_path: str | Path = "pumping_kite", **scene_overrides) -
         raise ConfigError(f"{path}: field 'scene' = {scene_ref!r}: {err}") from None
     first = float(sc.assembly.elements.l0[0])
     winch = read_winch(s.section("winch"), first)
+    reel, base = None, None
+    if s.has("reeling"):  # a reeling multi-element tether (model/reel.py): the scene in its longest chain's elements
+        reel, base = read_reeling(s.section("reeling")), sc
+        try:
+            total = reel.layout(float(sc.assembly.elements.l0.sum()))[0]
+        except ValueError as err:
+            raise ConfigError(f"{path}: {err}") from None
+        sc = load_scene(config_path("scenes", scene_ref, path.parent), **{**scene_overrides,
+                                                                          "elements_per_piece": total})
     c = s.section("cycle")
     try:
         cycle = CycleSpec(reel_out_factor=c.number("reel_out_factor", positive=True),
@@ -149,4 +166,4 @@ def load_pumping(name_or_path: str | Path = "pumping_kite", **scene_overrides) -
         raise ConfigError(f"{path}: {err}") from None
     c.done()
     s.done()
-    return PumpingScene(file=path, scene=sc, winch=winch, cycle=cycle)
+    return PumpingScene(file=path, scene=sc, winch=winch, cycle=cycle, reel=reel, base=base)

@@ -1,0 +1,158 @@
+"""The reeling multi-element tether of a winch (``kernels/reel.py``): its parameters, the strict reader of a
+pumping config's ``reeling:`` section, the assembly with the reeling tether and the packing into the kind marker.
+
+The winch's station parameters (``model/winch.py``) become a :class:`ReelStation`: the same winch (mode, speeds,
+efficiency; ``piece_length`` is the drum element's rest length at t = 0) plus the nominal element length, the split
+and merge thresholds, the nodes in the air at t = 0 and the ground contact of a tether node. ``model.packing``
+gives an assembly whose station is a ``ReelStation`` the kind ``ReelWinch3D``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from laddermill_gym.kernels import contract as C
+from laddermill_gym.kernels.reel import ReelWinch3D
+from laddermill_gym.model.configio import ConfigError, Section
+from laddermill_gym.model.params import N_CONTROLS, Assembly
+from laddermill_gym.model.station import StationParams, station_slots
+
+
+@dataclass(frozen=True)
+class ReelSpec:
+    """The reeling tether of a pumping config (``reeling:`` section).
+
+    element_length [m] : l_n, the nominal element length (the start tether in whole elements of about l_n).
+    max_length [m] : the longest tether the element chain carries in elements of l_n (the drum element grows
+        beyond it without splitting).
+    split_fraction, merge_fraction [-] : split the drum element at split_fraction l_n, merge it below
+        merge_fraction l_n; split_fraction - 1 > merge_fraction, so that a split is not undone at once.
+    contact_frequency [rad/s], contact_damping_ratio [-] : the ground's penalty spring on a node's lumped mass m:
+        stiffness m omega^2, damping 2 zeta m omega (a node resting on the ground sinks g / omega^2).
+    friction [-], slip_speed [m/s] : Coulomb friction coefficient of a node on the ground, viscous below the slip
+        speed.
+    """
+
+    element_length: float
+    max_length: float
+    split_fraction: float = 1.5
+    merge_fraction: float = 0.25
+    contact_frequency: float = 20.0
+    contact_damping_ratio: float = 1.0
+    friction: float = 0.5
+    slip_speed: float = 0.1
+
+    def __post_init__(self):
+        for name in ("element_length", "max_length", "contact_frequency", "slip_speed"):
+            v = getattr(self, name)
+            if not (math.isfinite(v) and v > 0):
+                raise ValueError(f"reeling.{name} = {v!r}: must be a finite number > 0")
+        for name in ("contact_damping_ratio", "friction"):
+            v = getattr(self, name)
+            if not (math.isfinite(v) and v >= 0):
+                raise ValueError(f"reeling.{name} = {v!r}: must be a finite number >= 0")
+        if not 0 < self.merge_fraction < self.split_fraction - 1.0:
+            raise ValueError(f"reeling.merge_fraction = {self.merge_fraction!r}: must be in (0, split_fraction - 1 "
+                             f"= {self.split_fraction - 1.0!r}) (a split must not be undone at once)")
+
+    def layout(self, start_length: float) -> tuple[int, int, float]:
+        """(elements in all, nodes in the air at t = 0, the drum element's rest length l_p [m]) for a tether of
+        ``start_length`` [m]: the start in round(L / l_n) elements (at least two), the last l_n each."""
+        ln = self.element_length
+        n_air = max(2, int(round(start_length / ln)))
+        lp = start_length - (n_air - 1) * ln
+        if not lp > self.merge_fraction * ln:
+            raise ValueError(f"reeling.element_length = {ln!r}: the start tether ({start_length} m) leaves a drum "
+                             f"element of {lp} m, not above merge_fraction l_n")
+        total = max(n_air, int(math.ceil(self.max_length / ln))) + 1
+        return total, n_air - 1, lp
+
+
+@dataclass(frozen=True)
+class ReelStation(StationParams):
+    """A winch (``model.winch.winch_params``) with a reeling tether: ``reel`` the spec, ``nodes_in_air`` the free
+    nodes in the air at t = 0, ``ground_height`` [m] the ground of the node contact."""
+
+    reel: ReelSpec | None = None
+    nodes_in_air: int = 1
+    ground_height: float = 0.0
+
+
+def read_reeling(s: Section) -> ReelSpec:
+    """The ``reeling:`` section (errors name the file and field): element_length_m, max_length_m, split_fraction,
+    merge_fraction, contact_frequency_rad_s, contact_damping_ratio, friction, slip_speed_m_s."""
+    kw = dict(element_length=s.number("element_length_m", positive=True),
+              max_length=s.number("max_length_m", positive=True),
+              split_fraction=s.number("split_fraction", 1.5, positive=True),
+              merge_fraction=s.number("merge_fraction", 0.25, positive=True),
+              contact_frequency=s.number("contact_frequency_rad_s", 20.0, positive=True),
+              contact_damping_ratio=s.number("contact_damping_ratio", 1.0),
+              friction=s.number("friction", 0.5),
+              slip_speed=s.number("slip_speed_m_s", 0.1, positive=True))
+    s.done()
+    try:
+        return ReelSpec(**kw)
+    except ValueError as err:
+        raise ConfigError(f"{s.file}: {err}") from None
+
+
+def with_reel(asm: Assembly, winch: StationParams, spec: ReelSpec, ground_height: float) -> Assembly:
+    """The assembly ``asm`` (a chain from one ground point to one wing, with every element of its
+    ``layout(...)[0]`` elements) with the winch ``winch`` (its ``piece_length`` is replaced by the drum element's
+    start length) on a reeling tether: the elements above the drum element l_n long."""
+    el = asm.elements
+    start = float(np.sum(el.l0))
+    total, air, lp = spec.layout(start)
+    if el.count != total or asm.n_nodes != total - 1 or asm.n_wings != 1:
+        raise ValueError(f"with_reel: need one wing on a chain of {total} elements, got {asm.n_wings} wings and "
+                         f"{el.count} elements")
+    if el.end_kind[0][0] != C.END_FIXED:
+        raise ValueError("with_reel: element 0 must start at a ground point (the winch)")
+    l0 = np.full(total, spec.element_length)
+    elements = dataclasses.replace(el, l0=l0)
+    fields = {f.name: getattr(winch, f.name) for f in dataclasses.fields(StationParams)}
+    fields["piece_length"] = lp
+    station = ReelStation(**fields, reel=spec, nodes_in_air=air, ground_height=float(ground_height))
+    return dataclasses.replace(asm, elements=elements, station=station)
+
+
+def is_reel(st: StationParams | None) -> bool:
+    """Whether station parameters describe a winch with a reeling tether."""
+    return isinstance(st, ReelStation)
+
+
+def pack_reel(st: ReelStation) -> np.ndarray:
+    """The reel's slots (``RL_*``)."""
+    r = st.reel
+    p = np.zeros(C.RL_SIZE)
+    p[C.RL_LNOM], p[C.RL_SPLIT], p[C.RL_MERGE] = r.element_length, r.split_fraction, r.merge_fraction
+    p[C.RL_ACTIVE0] = st.nodes_in_air
+    p[C.RL_OMEGA], p[C.RL_ZETA] = r.contact_frequency, r.contact_damping_ratio
+    p[C.RL_MU], p[C.RL_VSLIP], p[C.RL_GROUND] = r.friction, r.slip_speed, st.ground_height
+    return p
+
+
+def reel_kind(asm: Assembly) -> ReelWinch3D:
+    """The kind marker of an assembly with a reeling winch (:func:`with_reel`)."""
+    if not is_reel(asm.station) or asm.dim != 3:
+        raise ValueError("reel_kind: a 3D assembly with a reeling winch (with_reel) is needed")
+    sp = station_slots(asm.station, asm.body_state_size, N_CONTROLS * asm.n_wings)
+    return ReelWinch3D(sp, pack_reel(asm.station))
+
+
+def nodes_in_air(asm: Assembly, x: np.ndarray) -> int:
+    """Free nodes in the air in state ``x`` (the start's plus those paid out, ``SX_TRANSFERS``)."""
+    return int(asm.station.nodes_in_air + round(float(x[asm.body_state_size + C.SX_TRANSFERS])))
+
+
+def ground_contacts(asm: Assembly, x: np.ndarray) -> int:
+    """Nodes in the air at or below the ground in state ``x`` (touching: the ground pushes them up)."""
+    n = asm.n_nodes
+    k = n - nodes_in_air(asm, x)
+    base = C.B3_SIZE * asm.n_wings
+    z = x[base + C.N3_SIZE * np.arange(k, n) + C.N3_POS + 2]
+    return int(np.sum(-z <= asm.station.ground_height))
