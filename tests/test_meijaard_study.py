@@ -3,7 +3,10 @@
 Oracles: closed-form areas for the loop width (a rectangle and a triangle); the mean tensions written to
 ``tension.csv`` times V_c for the power in ``power.csv`` (the power itself comes from the generator energy the
 state integrates, a different computation); the 2D simulator for the study's 2D -> 3D map; hand-made samples
-with known crossing times for the range exits; and a rate limit set below the wing's rate for the breakdown report.
+with known crossing times for the range exits; a rate limit set below the wing's rate for the breakdown report;
+the saved search against the one just computed; and, on the 101-wing mill (slow), the paper's qualitative claims
+(the loop wider at the higher V_c, the smallest tension near the top, (T_first - T_last) V_c the power).
+The claims' own arithmetic: test_meijaard_claims.py.
 """
 
 from __future__ import annotations
@@ -29,6 +32,7 @@ def study(tmp_path_factory):
     out = tmp_path_factory.mktemp("meijaard")
     cases, sim3 = mj.run_periodic_cases(TINY, out)
     runs = mj.run_direction_steps(sim3, TINY, out)
+    mj.write_figures(cases, runs, TINY, out)
     return out, cases, runs
 
 
@@ -63,7 +67,7 @@ def test_power_is_tension_difference_times_speed(study):
 def test_files_columns_and_units(study):
     """Every CSV and PNG is written; the column names carry their units; a case that did not converge says so."""
     out, cases, runs = study
-    for name in ("fig6_shapes.png", "fig7_tension.png", "fig8_direction_step.png"):
+    for name in ("fig6_shapes.png", "fig7_tension.png", "fig8_direction_step.png", "claims.png"):
         data = (out / name).read_bytes()
         assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10_000
     power = _read(out / "power.csv")
@@ -79,6 +83,36 @@ def test_files_columns_and_units(study):
                                                                      dv.TIME_LIMIT, dv.WALL_LIMIT}
     assert {"overload", "peak_tension_ratio"} <= set(power[0])
     assert len(_read(out / "shapes.csv")) == 2 * 11
+    claims = _read(out / "claims.csv")
+    assert {r["scene"] for r in claims} == {"laddermill_v1"} and {r["agrees"] for r in claims} <= {"yes", "no", "-"}
+    assert any(r["paper"].startswith("node 4 yaws") for r in claims)  # TINY follows slot 4
+
+
+def test_saved_search_is_reused(study, tmp_path):
+    """The periodic search saved under states/ is read back unchanged (row, tensions, shape, state) when the settings
+    match, and recomputed when one differs (here the search time)."""
+    out, cases, _ = study
+    saved = sorted((out / "states").glob("*.npz"))
+    assert [p.name for p in saved] == ["laddermill_v1_2D_Vc2.npz", "laddermill_v1_3D_Vc2.npz"]
+    sim, case, reused = mj.periodic_case(2.0, 2, TINY, folder=out / "states")
+    assert reused and case.row == cases[0].row
+    np.testing.assert_array_equal(case.res.tension_mean_N, cases[0].res.tension_mean_N)
+    np.testing.assert_array_equal(case.res.shape_m, cases[0].res.shape_m)
+    assert sim.t == cases[0].res.t_s
+    other = dataclasses.replace(TINY, max_time=5.0)
+    key = mj.store.case_key(other.scene, 2, 2.0, other.n_wings, other.ramp_s, other.max_time, other.periodic_tol,
+                            other.extra_s)
+    assert mj.store.load_case(mj.store.case_path(out / "states", key), key) is None
+
+
+def test_scene_variants():
+    """Default v1 (LadderMill-v1's wing, the search at 1e-3); ``--scene laddermill`` the v0 reproduction (v0's wing
+    attachment, the search at run_to_periodic's 1e-2 as its page was made)."""
+    v0 = dataclasses.replace(TINY, scene="laddermill")
+    assert TINY.scene == "laddermill_v1" and TINY.periodic_tol == 1e-3 and v0.periodic_tol == 1e-2
+    a1 = mj.mill(2, 2.0, TINY).assembly.wing_types[0].attachment
+    a0 = mj.mill(2, 2.0, v0).assembly.wing_types[0].attachment
+    assert not np.allclose(a0, a1)
 
 
 def test_3d_map_continues_the_2d_motion(study):
@@ -126,8 +160,11 @@ def test_breakdown_is_reported_not_hidden(study):
 
 @pytest.mark.slow
 def test_quick_command_end_to_end(tmp_path, capsys):
-    """``python -m laddermill_gym.studies.mill.meijaard --quick`` on the 101-wing mill (about a minute): every file is
-    written, every case's line says whether it is periodic, and each direction-step run reports how it ended."""
+    """``python -m laddermill_gym.studies.mill.meijaard --quick`` on the 101-wing v1 mill (75 s on a loaded 2-core
+    machine): every file is written, every case's line says whether it is periodic, each direction-step run reports
+    how it ended; and the paper's claims hold where its words are definite: the loop is wider at 5 m/s than at
+    1 m/s, the smallest mean tension at 1 m/s lies in the upper tenth of the loop's height, and (T_first - T_last) V_c
+    is the generator's mean power to 3 % in every case."""
     assert mj.main(["--quick", "--no-progress", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out
     names = {p.name for p in tmp_path.iterdir()}
@@ -139,3 +176,10 @@ def test_quick_command_end_to_end(tmp_path, capsys):
         assert f"{r['case']}: {'periodic' if r['periodic'] == 'True' else 'NOT PERIODIC'}" in out
     assert out.count("physical end, ") == 5  # one line per run ("no physical end, " contains it)
     assert "undisturbed periodic motion over one period" in out
+    claims = {r["paper"]: r for r in _read(tmp_path / "claims.csv")}
+    assert claims["the loop widens with V_c (1 -> 5 m/s)"]["agrees"] == "yes"
+    assert claims["tension smallest near the top (V_c = 1 m/s)"]["agrees"] == "yes"
+    for case in ("2D V_c=1", "2D V_c=2", "2D V_c=5"):
+        assert claims[f"power ~ (T_first - T_last) V_c ({case})"]["agrees"] == "yes"
+    widths = {r["case"]: float(r["width_min_m"]) for r in power}, {r["case"]: float(r["width_max_m"]) for r in power}
+    assert widths[0]["2D V_c=5"] > widths[1]["2D V_c=1"]
