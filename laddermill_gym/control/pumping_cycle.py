@@ -117,6 +117,11 @@ def lateral_lqr(task, config):
     if abs(cfg.control_period - task.control_dt) > 1e-12:
         raise ValueError(f"LQR control_period = {cfg.control_period} s differs from the task's control_dt = "
                          f"{task.control_dt} s")
+    ps = task.pumping
+    if ps.base is not None:  # a reeling tether: designed on the single-element scene's trim
+        x, u = ps.trim(ps.cycle.alpha_out)
+        design = design_tethered_wing(cfg, ps.base, (x, u[:3]))
+        return design.controller()
     nb = task.xoff
     design = design_tethered_wing(cfg, task.scene, (np.array(task.x_trim[:nb]), np.array(task.u_trim[:3])))
     return design.controller()

@@ -61,14 +61,15 @@ class ReelSpec:
 
     def layout(self, start_length: float) -> tuple[int, int, float]:
         """(elements in all, nodes in the air at t = 0, the drum element's rest length l_p [m]) for a tether of
-        ``start_length`` [m]: the start in round(L / l_n) elements (at least two), the last l_n each."""
+        ``start_length`` [m]: the start in round(L / l_n) elements (at least two), the last l_n each; in all the
+        elements of ``max_length`` in l_n (at least the start's)."""
         ln = self.element_length
         n_air = max(2, int(round(start_length / ln)))
         lp = start_length - (n_air - 1) * ln
         if not lp > self.merge_fraction * ln:
             raise ValueError(f"reeling.element_length = {ln!r}: the start tether ({start_length} m) leaves a drum "
                              f"element of {lp} m, not above merge_fraction l_n")
-        total = max(n_air, int(math.ceil(self.max_length / ln))) + 1
+        total = max(n_air, int(math.ceil(self.max_length / ln - 1e-9)))
         return total, n_air - 1, lp
 
 

@@ -11,6 +11,7 @@ tether is s); :meth:`WinchSimulator.winch_power` replaces the mill's ``generator
 from __future__ import annotations
 
 import dataclasses
+import json
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -18,6 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from laddermill_gym.envs.pumping.reel_start import reel_state
+from laddermill_gym.kernels.contract import SX_MOVED
 from laddermill_gym.ladder.scene import Scene, load_scene
 from laddermill_gym.model.configio import ConfigError, config_path, read_yaml
 from laddermill_gym.model.reel import ReelSpec, read_reeling, with_reel
@@ -69,6 +71,11 @@ class CycleSpec:
 class WinchSimulator(Simulator):
     """A :class:`Simulator` of an assembly with a winch (``model.winch.with_winch``; ``model.packing`` gives it the
     winch kind) with the winch's read-out."""
+
+    def cable_paid_out(self) -> float:
+        """Tether paid out since t = 0 [m] (``SX_MOVED``; a reeling tether's ``SX_TRANSFERS`` counts nodes, not
+        pieces)."""
+        return float(self.state[self.assembly.body_state_size + SX_MOVED])
 
     def winch_power(self) -> dict[str, float]:
         """The winch now: tension of the tether at the drum T_0 [N], winch speed V [m/s] (> 0 reeling out),
@@ -136,6 +143,8 @@ def load_pumping(name_or_path: str | Path = "pumping_kite", **scene_overrides) -
     """Read a pumping config (``configs/pumping/NAME.yaml`` or a path): ``scene`` (a scene name or path, loaded by
     ``load_scene`` with ``scene_overrides``), ``winch`` (``model.winch.read_winch``) and ``cycle``."""
     path = config_path("pumping", name_or_path)
+    reel_changes = scene_overrides.pop("reeling", None) or {}  # ReelSpec fields (a dict, or its JSON: options_key)
+    reel_changes = json.loads(reel_changes) if isinstance(reel_changes, str) else dict(reel_changes)
     s = read_yaml(path)
     scene_ref = s.text("scene")
     try:
@@ -145,11 +154,14 @@ def load_pumping(name_or_path: str | Path = "pumping_kite", **scene_overrides) -
     first = float(sc.assembly.elements.l0[0])
     winch = read_winch(s.section("winch"), first)
     reel, base = None, None
+    if reel_changes and not s.has("reeling"):
+        raise ConfigError(f"{path}: reeling overrides {reel_changes!r} given, but the config has no 'reeling' section")
     if s.has("reeling"):  # a reeling multi-element tether (model/reel.py): the scene in its longest chain's elements
         reel, base = read_reeling(s.section("reeling")), sc
         try:
+            reel = dataclasses.replace(reel, **reel_changes)
             total = reel.layout(float(sc.assembly.elements.l0.sum()))[0]
-        except ValueError as err:
+        except (TypeError, ValueError) as err:
             raise ConfigError(f"{path}: {err}") from None
         sc = load_scene(config_path("scenes", scene_ref, path.parent), **{**scene_overrides,
                                                                           "elements_per_piece": total})

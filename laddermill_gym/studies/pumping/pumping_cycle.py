@@ -153,6 +153,9 @@ def _arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--alpha-in-deg", type=float, help="[deg] override the config's cycle.alpha_in_deg")
     p.add_argument("--elements", type=int, help="tether elements (scene elements_per_piece; the winch changes the "
                    "lowest one's length)")
+    p.add_argument("--reel-element-length", type=float, help="[m] a reeling tether (configs/pumping/"
+                   "pumping_kite_reeling.yaml, docs/pumping.md 'The reeling tether') of elements of this nominal "
+                   "length (default: the config's tether)")
     p.add_argument("--wind", type=float, help="[m/s] override the scene's wind speed v0 at its h0 (50 m)")
     p.add_argument("--no-lqr", action="store_true", help="the scripted cycle alone (rudder and aileron at trim)")
     p.add_argument("--controller", choices=("crosswind", "lqr"), default="crosswind",
@@ -169,7 +172,12 @@ def _run(args) -> int:
     check_number("--elements", args.elements, low=1, high=1000, integer=True, strict=False)
     find_config("pumping", args.config, "--config")
     check_number("--wind", args.wind, low=0, high=60, unit="m/s")
+    check_number("--reel-element-length", args.reel_element_length, low=1, high=1000, unit="m")
     options = {} if args.elements is None else {"elements_per_piece": args.elements}
+    if args.reel_element_length is not None:
+        options["reeling"] = {"element_length": args.reel_element_length}
+        if args.config == "pumping_kite":
+            args.config = "pumping_kite_reeling"
     if args.wind is not None:
         options["overrides"] = {"wind": {"v0": args.wind}}
     task = PumpingTask(1, config=args.config, episode_time=2000.0, scene_options=options)  # the 0.01 rad step at 1 s

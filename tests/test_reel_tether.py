@@ -1,0 +1,186 @@
+"""The reeling multi-element tether (kernels/reel.py, model/reel.py, envs/pumping/reel_start.py): split and merge
+against closed-form sums of mass and momentum, the pay-out rate against the winch's closed form, the kind against
+the single-winch kind on the same chain, the ground contact against its closed forms, the catenary start against
+the inextensible catenary."""
+
+import math
+
+import numpy as np
+import pytest
+
+from laddermill_gym.envs.pumping.reel_start import catenary_point, solve_catenary
+from laddermill_gym.envs.pumping.winch_scene import load_pumping
+from laddermill_gym.kernels import contract as C
+from laddermill_gym.kernels.reel import contact_force, relabel
+from laddermill_gym.model.configio import ConfigError
+from laddermill_gym.model.packing import pack_model
+from laddermill_gym.model.reel import ground_contacts, nodes_in_air
+from laddermill_gym.model.states import rotations_from_quaternions
+
+
+@pytest.fixture(scope="module")
+def reeling():
+    ps = load_pumping("pumping_kite_reeling")
+    x, u = ps.initial_state()
+    return ps, ps.assembly, x, u
+
+
+def _rest_lengths(asm, x):
+    """Rest lengths [m] of the elements in the air, drum element first (module docstring of kernels/reel.py)."""
+    st, o = asm.station, asm.body_state_size
+    air = nodes_in_air(asm, x)
+    ld = st.piece_length + x[o + C.SX_MOVED] - x[o + C.SX_TRANSFERS] * st.reel.element_length
+    return np.array([ld] + [st.reel.element_length] * air)
+
+
+def _mass_momentum(asm, x):
+    """Tether mass mu sum(l) [kg] and momentum of the consistent mass, sum mu l (v_r + v_s) / 2, plus the wing's
+    m v [kg m/s] (the ground end at rest, the top element's upper end the wing's attachment)."""
+    n, air = asm.n_nodes, nodes_in_air(asm, x)
+    mu = float(asm.elements.mu[0])
+    base = C.B3_SIZE
+    v_nodes = [np.zeros(3)] + [x[base + C.N3_SIZE * j + C.N3_VEL: base + C.N3_SIZE * j + C.N3_VEL + 3]
+                               for j in range(n - air, n)]
+    R = rotations_from_quaternions(x[C.B3_QUAT:C.B3_QUAT + 4].reshape(1, 4))[0]
+    vb, w = x[C.B3_VEL:C.B3_VEL + 3], x[C.B3_RATE:C.B3_RATE + 3]
+    v_top = R @ (vb + np.cross(w, asm.elements.attach[-1, 1]))
+    ends = v_nodes + [v_top]
+    lengths = _rest_lengths(asm, x)
+    p = sum(mu * le * (ends[i] + ends[i + 1]) / 2 for i, le in enumerate(lengths))
+    m_wing = asm.wing_types[0].mass
+    return mu * lengths.sum(), p + m_wing * (R @ vb)
+
+
+def _stirred(asm, x, drum_fraction, seed):
+    """x with random velocities of the wing and the nodes in the air and the drum element at drum_fraction l_n."""
+    rng = np.random.default_rng(seed)
+    x = x.copy()
+    n, air = asm.n_nodes, nodes_in_air(asm, x)
+    x[C.B3_VEL:C.B3_VEL + 3] = rng.normal(0, 10, 3)
+    x[C.B3_RATE:C.B3_RATE + 3] = rng.normal(0, 0.3, 3)
+    for j in range(n - air, n):
+        o = C.B3_SIZE + C.N3_SIZE * j + C.N3_VEL
+        x[o:o + 3] = rng.normal(0, 10, 3)
+    st = asm.station
+    x[asm.body_state_size + C.SX_MOVED] = drum_fraction * st.reel.element_length - st.piece_length
+    return x
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_split_keeps_mass_and_momentum(reeling, seed):
+    """A split (drum element at 1.6 l_n) pays one node out onto the drum element's chord at l_n from the top, the
+    drum element 0.6 l_n after it; the tether's mass and the momentum (consistent mass + wing) unchanged."""
+    _, asm, x0, _ = reeling
+    M = pack_model(asm)
+    x = _stirred(asm, x0, 1.6, seed)
+    air = nodes_in_air(asm, x)
+    m0, p0 = _mass_momentum(asm, x)
+    assert relabel(M.kind, x, M) == C.OK
+    assert nodes_in_air(asm, x) == air + 1
+    np.testing.assert_allclose(_rest_lengths(asm, x)[:2], [0.6 * 40.0, 40.0], rtol=1e-12)
+    m1, p1 = _mass_momentum(asm, x)
+    assert m1 == pytest.approx(m0, rel=1e-13)
+    np.testing.assert_allclose(p1, p0, rtol=0, atol=1e-12 * np.abs(p0).max())
+    k = asm.n_nodes - air - 1  # the new node: on the chord ground -> node above, at fraction 0.6 / 1.6 of the way
+    new, up = x[C.B3_SIZE + 6 * k: C.B3_SIZE + 6 * k + 3], x[C.B3_SIZE + 6 * (k + 1): C.B3_SIZE + 6 * (k + 1) + 3]
+    np.testing.assert_allclose(new, 0.6 / 1.6 * up, atol=1e-9)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_merge_keeps_mass_and_momentum(reeling, seed):
+    """A merge (drum element at 0.2 l_n) takes the lowest node onto the drum (at the ground point, at rest), the
+    drum element 1.2 l_n after it; mass and momentum unchanged."""
+    _, asm, x0, _ = reeling
+    M = pack_model(asm)
+    x = _stirred(asm, x0, 0.2, seed)
+    air = nodes_in_air(asm, x)
+    m0, p0 = _mass_momentum(asm, x)
+    assert relabel(M.kind, x, M) == C.OK
+    assert nodes_in_air(asm, x) == air - 1
+    assert _rest_lengths(asm, x)[0] == pytest.approx(1.2 * 40.0, rel=1e-12)
+    m1, p1 = _mass_momentum(asm, x)
+    assert m1 == pytest.approx(m0, rel=1e-13)
+    np.testing.assert_allclose(p1, p0, rtol=0, atol=1e-12 * np.abs(p0).max())
+    k = asm.n_nodes - air
+    assert np.all(x[C.B3_SIZE + 6 * k: C.B3_SIZE + 6 * k + 6] == 0.0)
+
+
+def test_no_split_or_merge_between_the_thresholds(reeling):
+    _, asm, x0, _ = reeling
+    M = pack_model(asm)
+    for f in (0.3, 1.0, 1.45):
+        x = _stirred(asm, x0, f, 0)
+        before = x.copy()
+        assert relabel(M.kind, x, M) == C.OK
+        np.testing.assert_array_equal(x, before)
+
+
+def test_paying_out_adds_elements_at_v_over_ln(reeling):
+    """The winch reels out at V_cmd = 2 m/s (s = V (t - tau (1 - e^(-t/tau)))): nodes go into the air when the drum
+    element passes 1.5 l_n, 2.5 l_n, ...: m(t) = floor((l_p + s - 1.5 l_n) / l_n) + 1, a rate of V / l_n. The
+    static wing sinks meanwhile and the lowest node touches the ground (a contact: the run goes on)."""
+    ps, asm, x, u = reeling
+    u = u.copy()
+    u[-1] = 2.0
+    sim = ps.simulator(x, u)
+    tau, ln, lp = ps.winch.speed_time_constant, 40.0, asm.station.piece_length
+    rows = []
+    for _ in range(90):
+        sim.advance_to(sim.t + 1.0)
+        rows.append((sim.t, nodes_in_air(asm, sim.state) - asm.station.nodes_in_air, ground_contacts(asm, sim.state)))
+    t, m, contacts = np.array(rows).T
+    s = 2.0 * (t - tau * (1 - np.exp(-t / tau)))
+    expect = np.maximum(np.floor((lp + s - 1.5 * ln) / ln) + 1, 0)
+    np.testing.assert_array_equal(m, expect)
+    assert m[-1] == 4  # s = 179 m: nodes out at s = 40, 80, 120 and 160 m
+    assert contacts.max() >= 1
+
+
+def test_same_as_the_winch_kind_without_relabelling():
+    """With no node on the drum (max_length = the start) and no split in reach, the reeling kind is the winch kind
+    (kernels/winch.py) on the same 3-element chain: the same trajectory over 2 s of reel-out at 1 m/s."""
+    reel = load_pumping("pumping_kite_reeling", reeling={"element_length": 100.0, "max_length": 300.0})
+    plain = load_pumping("pumping_kite", elements_per_piece=3)
+    x, u = reel.initial_state()
+    assert reel.assembly.n_nodes == plain.assembly.n_nodes == 2
+    u = u.copy()
+    u[-1] = 1.0
+    a, b = reel.simulator(x, u), plain.simulator(x.copy(), u.copy())
+    a.advance_to(2.0)
+    b.advance_to(2.0)
+    np.testing.assert_allclose(a.state, b.state, rtol=1e-12, atol=1e-9)
+    np.testing.assert_allclose(a.tensions(), b.tensions(), rtol=1e-10)
+
+
+def test_contact_force_closed_forms():
+    """Penalty spring-damper: a node of mass m at rest at depth g / omega^2 carries its weight m g; sliding faster
+    than the slip speed the friction is mu F_n against the motion; above the ground, nothing."""
+    rl = np.zeros(C.RL_SIZE)
+    rl[C.RL_OMEGA], rl[C.RL_ZETA], rl[C.RL_MU], rl[C.RL_VSLIP] = 20.0, 1.0, 0.5, 0.1
+    m, g = 12.0, 9.80665
+    fx, fy, fz = contact_force(rl, m, g / 400.0, 0.0, 0.0, 0.0)
+    assert (fx, fy) == (0.0, 0.0) and fz == pytest.approx(-m * g, rel=1e-14)
+    fx, fy, fz = contact_force(rl, m, 0.01, 0.5, 3.0, -4.0)
+    fn = m * (400.0 * 0.01 + 2.0 * 20.0 * 0.5)
+    assert fz == pytest.approx(-fn) and math.hypot(fx, fy) == pytest.approx(0.5 * fn)
+    assert fx / fy == pytest.approx(3.0 / -4.0)
+    assert contact_force(rl, m, -0.01, 1.0, 3.0, 0.0) == (0.0, 0.0, 0.0)
+    assert contact_force(rl, m, 0.001, -10.0, 0.0, 0.0) == (0.0, 0.0, 0.0)  # leaving fast: no pull
+
+
+def test_catenary_against_the_inextensible_one():
+    """With EA -> infinity the elastic catenary is a cosh(x / a) with a = H / w: its length L, span D and rise h
+    obey sqrt(L^2 - h^2) = 2 a sinh(D / (2 a)); the solved ends are the given ones."""
+    w, length, span, rise = 2.94, 300.0, 120.0, 250.0
+    h, v = solve_catenary(span, rise, length, w, 1e16)
+    a = h / w
+    assert math.sqrt(length ** 2 - rise ** 2) == pytest.approx(2 * a * math.sinh(span / (2 * a)), rel=1e-8)
+    x, z = catenary_point(length, h, v, w, 1e16)
+    assert (x, z) == (pytest.approx(span, rel=1e-9), pytest.approx(rise, rel=1e-9))
+
+
+def test_bad_reeling_fields_are_named():
+    with pytest.raises(ConfigError, match="merge_fraction"):
+        load_pumping("pumping_kite_reeling", reeling={"merge_fraction": 0.6})
+    with pytest.raises(ConfigError, match="no 'reeling' section"):
+        load_pumping("pumping_kite", reeling={"element_length": 50.0})
