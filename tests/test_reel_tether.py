@@ -14,7 +14,7 @@ from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.reel import contact_force, relabel
 from laddermill_gym.model.configio import ConfigError
 from laddermill_gym.model.packing import pack_model
-from laddermill_gym.model.reel import ground_contacts, nodes_in_air
+from laddermill_gym.model.reel import ground_contacts, nodes_in_air, stable_dt
 from laddermill_gym.model.states import rotations_from_quaternions
 
 
@@ -68,36 +68,39 @@ def _stirred(asm, x, drum_fraction, seed):
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_split_keeps_mass_and_momentum(reeling, seed):
-    """A split (drum element at 1.6 l_n) pays one node out onto the drum element's chord at l_n from the top, the
-    drum element 0.6 l_n after it; the tether's mass and the momentum (consistent mass + wing) unchanged."""
+    """A split (drum element at f = split_fraction + 0.05 = 1.8 l_n) pays one node out onto the drum element's
+    chord at l_n from the top, the drum element (f - 1) l_n after it; the tether's mass and the momentum
+    (consistent mass + wing) unchanged."""
     _, asm, x0, _ = reeling
     M = pack_model(asm)
-    x = _stirred(asm, x0, 1.6, seed)
+    f = asm.station.reel.split_fraction + 0.05
+    x = _stirred(asm, x0, f, seed)
     air = nodes_in_air(asm, x)
     m0, p0 = _mass_momentum(asm, x)
     assert relabel(M.kind, x, M) == C.OK
     assert nodes_in_air(asm, x) == air + 1
-    np.testing.assert_allclose(_rest_lengths(asm, x)[:2], [0.6 * 40.0, 40.0], rtol=1e-12)
+    np.testing.assert_allclose(_rest_lengths(asm, x)[:2], [(f - 1) * 40.0, 40.0], rtol=1e-12)
     m1, p1 = _mass_momentum(asm, x)
     assert m1 == pytest.approx(m0, rel=1e-13)
     np.testing.assert_allclose(p1, p0, rtol=0, atol=1e-12 * np.abs(p0).max())
-    k = asm.n_nodes - air - 1  # the new node: on the chord ground -> node above, at fraction 0.6 / 1.6 of the way
+    k = asm.n_nodes - air - 1  # the new node: on the chord ground -> node above, at fraction (f - 1) / f of the way
     new, up = x[C.B3_SIZE + 6 * k: C.B3_SIZE + 6 * k + 3], x[C.B3_SIZE + 6 * (k + 1): C.B3_SIZE + 6 * (k + 1) + 3]
-    np.testing.assert_allclose(new, 0.6 / 1.6 * up, atol=1e-9)
+    np.testing.assert_allclose(new, (f - 1) / f * up, atol=1e-9)
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_merge_keeps_mass_and_momentum(reeling, seed):
-    """A merge (drum element at 0.2 l_n) takes the lowest node onto the drum (at the ground point, at rest), the
-    drum element 1.2 l_n after it; mass and momentum unchanged."""
+    """A merge (drum element at f = merge_fraction - 0.05 = 0.45 l_n) takes the lowest node onto the drum (at the
+    ground point, at rest), the drum element (f + 1) l_n after it; mass and momentum unchanged."""
     _, asm, x0, _ = reeling
     M = pack_model(asm)
-    x = _stirred(asm, x0, 0.2, seed)
+    f = asm.station.reel.merge_fraction - 0.05
+    x = _stirred(asm, x0, f, seed)
     air = nodes_in_air(asm, x)
     m0, p0 = _mass_momentum(asm, x)
     assert relabel(M.kind, x, M) == C.OK
     assert nodes_in_air(asm, x) == air - 1
-    assert _rest_lengths(asm, x)[0] == pytest.approx(1.2 * 40.0, rel=1e-12)
+    assert _rest_lengths(asm, x)[0] == pytest.approx((f + 1) * 40.0, rel=1e-12)
     m1, p1 = _mass_momentum(asm, x)
     assert m1 == pytest.approx(m0, rel=1e-13)
     np.testing.assert_allclose(p1, p0, rtol=0, atol=1e-12 * np.abs(p0).max())
@@ -108,7 +111,8 @@ def test_merge_keeps_mass_and_momentum(reeling, seed):
 def test_no_split_or_merge_between_the_thresholds(reeling):
     _, asm, x0, _ = reeling
     M = pack_model(asm)
-    for f in (0.3, 1.0, 1.45):
+    r = asm.station.reel
+    for f in (r.merge_fraction + 0.01, 1.0, r.split_fraction - 0.01):
         x = _stirred(asm, x0, f, 0)
         before = x.copy()
         assert relabel(M.kind, x, M) == C.OK
@@ -117,29 +121,30 @@ def test_no_split_or_merge_between_the_thresholds(reeling):
 
 def test_paying_out_adds_elements_at_v_over_ln(reeling):
     """The winch reels out at V_cmd = 2 m/s (s = V (t - tau (1 - e^(-t/tau)))): nodes go into the air when the drum
-    element passes 1.5 l_n, 2.5 l_n, ...: m(t) = floor((l_p + s - 1.5 l_n) / l_n) + 1, a rate of V / l_n. The
-    static wing sinks meanwhile and the lowest node touches the ground (a contact: the run goes on)."""
+    element passes a l_n, (a + 1) l_n, ... (a = split_fraction): m(t) = floor((l_p + s - a l_n) / l_n) + 1, a rate
+    of V / l_n. The static wing sinks meanwhile and the lowest node touches the ground (a contact: the run goes
+    on)."""
     ps, asm, x, u = reeling
     u = u.copy()
     u[-1] = 2.0
     sim = ps.simulator(x, u)
-    tau, ln, lp = ps.winch.speed_time_constant, 40.0, asm.station.piece_length
+    tau, ln, lp, a = ps.winch.speed_time_constant, 40.0, asm.station.piece_length, asm.station.reel.split_fraction
     rows = []
     for _ in range(90):
         sim.advance_to(sim.t + 1.0)
         rows.append((sim.t, nodes_in_air(asm, sim.state) - asm.station.nodes_in_air, ground_contacts(asm, sim.state)))
     t, m, contacts = np.array(rows).T
     s = 2.0 * (t - tau * (1 - np.exp(-t / tau)))
-    expect = np.maximum(np.floor((lp + s - 1.5 * ln) / ln) + 1, 0)
+    expect = np.maximum(np.floor((lp + s - a * ln) / ln) + 1, 0)
     np.testing.assert_array_equal(m, expect)
-    assert m[-1] == 4  # s = 179 m: nodes out at s = 40, 80, 120 and 160 m
+    assert m[-1] == 5  # s = 179 m: nodes out at s = 10, 50, 90, 130 and 170 m
     assert contacts.max() >= 1
 
 
 def test_same_as_the_winch_kind_without_relabelling():
     """With no node on the drum (max_length = the start) and no split in reach, the reeling kind is the winch kind
     (kernels/winch.py) on the same 3-element chain: the same trajectory over 2 s of reel-out at 1 m/s."""
-    reel = load_pumping("pumping_kite_reeling", reeling={"element_length": 100.0, "max_length": 300.0})
+    reel = load_pumping("pumping_kite_reeling", reeling={"element_length": 100.0, "max_length": 300.0, "dt": 0.005})
     plain = load_pumping("pumping_kite", elements_per_piece=3)
     x, u = reel.initial_state()
     assert reel.assembly.n_nodes == plain.assembly.n_nodes == 2
@@ -181,6 +186,17 @@ def test_catenary_against_the_inextensible_one():
 
 def test_bad_reeling_fields_are_named():
     with pytest.raises(ConfigError, match="merge_fraction"):
-        load_pumping("pumping_kite_reeling", reeling={"merge_fraction": 0.6})
+        load_pumping("pumping_kite_reeling", reeling={"merge_fraction": 0.8})
     with pytest.raises(ConfigError, match="no 'reeling' section"):
         load_pumping("pumping_kite", reeling={"element_length": 50.0})
+
+
+def test_stable_dt_resolves_the_highest_axial_mode():
+    """omega_max = (2 / l) sqrt(3 EA / mu) of a taut consistent-mass chain: 735 rad/s at 40 m of the 25 mm tether;
+    the step kept is the largest of the list with omega_max dt <= 2."""
+    w = 2.0 / 40.0 * math.sqrt(3 * 2.16e7 / 0.3)
+    assert w == pytest.approx(734.8, abs=0.1)
+    assert stable_dt(40.0, 2.16e7, 0.3) == 0.0025 and 0.0025 * w <= 2.0 < 0.005 * w
+    assert stable_dt(100.0, 2.16e7, 0.3) == 0.005
+    with pytest.raises(ValueError, match="need a step below"):
+        stable_dt(1.0, 2.16e7, 0.3)

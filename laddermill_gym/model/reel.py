@@ -29,28 +29,32 @@ class ReelSpec:
     element_length [m] : l_n, the nominal element length (the start tether in whole elements of about l_n).
     max_length [m] : the longest tether the element chain carries in elements of l_n (the drum element grows
         beyond it without splitting).
-    split_fraction, merge_fraction [-] : split the drum element at split_fraction l_n, merge it below
-        merge_fraction l_n; split_fraction - 1 > merge_fraction, so that a split is not undone at once.
+    split_fraction, merge_fraction [-] : split the drum element at split_fraction l_n (default 1.75), merge it below
+        merge_fraction l_n (0.5); split_fraction - 1 > merge_fraction, so that a split is not undone at once.
     contact_frequency [rad/s], contact_damping_ratio [-] : the ground's penalty spring on a node's lumped mass m:
         stiffness m omega^2, damping 2 zeta m omega (a node resting on the ground sinks g / omega^2).
     friction [-], slip_speed [m/s] : Coulomb friction coefficient of a node on the ground, viscous below the slip
         speed.
+    dt [s] : the RK4 step of the reeling scene (None: the scene's); :func:`stable_dt` gives the rule.
     """
 
     element_length: float
     max_length: float
-    split_fraction: float = 1.5
-    merge_fraction: float = 0.25
+    split_fraction: float = 1.75
+    merge_fraction: float = 0.5
     contact_frequency: float = 20.0
     contact_damping_ratio: float = 1.0
     friction: float = 0.5
     slip_speed: float = 0.1
+    dt: float | None = None
 
     def __post_init__(self):
         for name in ("element_length", "max_length", "contact_frequency", "slip_speed"):
             v = getattr(self, name)
             if not (math.isfinite(v) and v > 0):
                 raise ValueError(f"reeling.{name} = {v!r}: must be a finite number > 0")
+        if self.dt is not None and not (math.isfinite(self.dt) and self.dt > 0):
+            raise ValueError(f"reeling.dt_s = {self.dt!r}: must be a finite step > 0 s")
         for name in ("contact_damping_ratio", "friction"):
             v = getattr(self, name)
             if not (math.isfinite(v) and v >= 0):
@@ -61,16 +65,29 @@ class ReelSpec:
 
     def layout(self, start_length: float) -> tuple[int, int, float]:
         """(elements in all, nodes in the air at t = 0, the drum element's rest length l_p [m]) for a tether of
-        ``start_length`` [m]: the start in round(L / l_n) elements (at least two), the last l_n each; in all the
-        elements of ``max_length`` in l_n (at least the start's)."""
+        ``start_length`` [m]: the start in n elements, the upper n - 1 of l_n and the drum element l_p in
+        (merge_fraction, merge_fraction + 1] l_n (n at least two); in all the elements of ``max_length`` in l_n
+        (at least the start's)."""
         ln = self.element_length
-        n_air = max(2, int(round(start_length / ln)))
+        n_air = max(2, int(math.ceil((start_length - self.merge_fraction * ln) / ln - 1e-9)))
         lp = start_length - (n_air - 1) * ln
         if not lp > self.merge_fraction * ln:
             raise ValueError(f"reeling.element_length = {ln!r}: the start tether ({start_length} m) leaves a drum "
                              f"element of {lp} m, not above merge_fraction l_n")
         total = max(n_air, int(math.ceil(self.max_length / ln - 1e-9)))
         return total, n_air - 1, lp
+
+
+def stable_dt(element_length: float, EA: float, mu: float, steps=(0.005, 0.0025, 0.002, 0.001, 0.0005)) -> float:
+    """The largest of ``steps`` [s] (divisors of the envs' 0.05 s control period) at which RK4 resolves the highest
+    axial mode of a taut chain of elements of ``element_length`` [m] with consistent mass: omega_max = (2 / l)
+    sqrt(3 EA / mu) (alternate nodes moving apart: stiffness 4 EA / l against the mass mu l / 3), omega_max dt <= 2
+    (RK4's stability limit on the imaginary axis is 2.83). Raises ValueError below the smallest step."""
+    limit = 2.0 / (2.0 / element_length * math.sqrt(3.0 * EA / mu))
+    for dt in steps:
+        if dt <= limit:
+            return dt
+    raise ValueError(f"stable_dt: elements of {element_length} m need a step below {limit:.2e} s")
 
 
 @dataclass(frozen=True)
@@ -88,12 +105,13 @@ def read_reeling(s: Section) -> ReelSpec:
     merge_fraction, contact_frequency_rad_s, contact_damping_ratio, friction, slip_speed_m_s."""
     kw = dict(element_length=s.number("element_length_m", positive=True),
               max_length=s.number("max_length_m", positive=True),
-              split_fraction=s.number("split_fraction", 1.5, positive=True),
-              merge_fraction=s.number("merge_fraction", 0.25, positive=True),
+              split_fraction=s.number("split_fraction", 1.75, positive=True),
+              merge_fraction=s.number("merge_fraction", 0.5, positive=True),
               contact_frequency=s.number("contact_frequency_rad_s", 20.0, positive=True),
               contact_damping_ratio=s.number("contact_damping_ratio", 1.0),
               friction=s.number("friction", 0.5),
-              slip_speed=s.number("slip_speed_m_s", 0.1, positive=True))
+              slip_speed=s.number("slip_speed_m_s", 0.1, positive=True),
+              dt=s.number("dt_s", None, positive=True))
     s.done()
     try:
         return ReelSpec(**kw)

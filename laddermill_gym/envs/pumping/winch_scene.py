@@ -163,8 +163,8 @@ def load_pumping(name_or_path: str | Path = "pumping_kite", **scene_overrides) -
             total = reel.layout(float(sc.assembly.elements.l0.sum()))[0]
         except (TypeError, ValueError) as err:
             raise ConfigError(f"{path}: {err}") from None
-        sc = load_scene(config_path("scenes", scene_ref, path.parent), **{**scene_overrides,
-                                                                          "elements_per_piece": total})
+        extra = {"elements_per_piece": total, **({"dt": reel.dt} if reel.dt is not None else {})}
+        sc = load_scene(config_path("scenes", scene_ref, path.parent), **{**scene_overrides, **extra})
     c = s.section("cycle")
     try:
         cycle = CycleSpec(reel_out_factor=c.number("reel_out_factor", positive=True),

@@ -40,10 +40,11 @@ __all__ = ["run_cycles", "cycle_stats", "quasi_steady", "add_parser", "main"]
 
 
 def run_cycles(task: PumpingTask, controller, n_cycles: int, t_max: float | None = None,
-               progress: bool = True) -> dict[str, np.ndarray]:
+               progress: bool = True, probe=None) -> dict[str, np.ndarray]:
     """Fly copy 0 of ``task`` (reset with seed 0) until ``n_cycles`` reel-ins have ended (or ``t_max`` [s]); per
     control step: t [s], phase, paid out s [m], winch speed [m/s], drum tension [N], electrical and mechanical
-    energy of the step [J], wing position (3) [m], alpha [rad], wind speed and along-tether wind [m/s], |dy| [m]."""
+    energy of the step [J], wing position (3) [m], alpha [rad], wind speed and along-tether wind [m/s], |dy| [m],
+    and with ``probe`` (a function of the task returning a dict of numbers) its entries."""
     task.reset(np.ones(task.n_copies, bool), [np.random.default_rng(0) for _ in range(task.n_copies)])
     t_max = t_max if t_max is not None else task.episode_time
     rows, ends, prev = [], 0, PHASE_OUT
@@ -57,7 +58,8 @@ def run_cycles(task: PumpingTask, controller, n_cycles: int, t_max: float | None
         rows.append([task.batch.t[0], phase, info["paid_out_m"][0], info["winch_speed_m_s"][0],
                      info["drum_tension_N"][0], task.electrical_energy[0],
                      info["mechanical_power_W"][0] * task.control_dt, *task.batch.states[0, :3],
-                     ro[OBS_INDEX["alpha"]], ro[-1], ro[-2], abs(ro[OBS_INDEX["dy"]])])
+                     ro[OBS_INDEX["alpha"]], ro[-1], ro[-2], abs(ro[OBS_INDEX["dy"]]),
+                     *(probe(task).values() if probe else ())])
         if prev == PHASE_IN and phase != PHASE_IN:
             ends += 1
             bar.update(1)
@@ -71,7 +73,7 @@ def run_cycles(task: PumpingTask, controller, n_cycles: int, t_max: float | None
     bar.close()
     r = np.array(rows)
     names = ["t", "phase", "s", "v", "tension", "e_el", "e_mech", "x", "y", "z", "alpha", "wind", "radial_wind",
-             "abs_dy"]
+             "abs_dy", *(probe(task).keys() if probe else ())]
     out = {k: r[:, i] for i, k in enumerate(names)}
     out["phase"] = out["phase"].astype(int)
     return out
