@@ -74,7 +74,8 @@ _WHEEL_SCRIPT = textwrap.dedent("""
     out["sim"] = {"t": sim.t, "finite": bool(np.all(np.isfinite(x))), "moved": bool(np.any(x != sim.initial_state))}
     out["envs"] = {}
     # the laddermill's default start costs ~20 s (its periodic motion); an 11-wing mill settled for 50 s will do here
-    small = {"laddermill_gym/LadderMill-v0": {"scene_options": {"n_wings": 11}, "settle": {"max_time": 50.0}}}
+    small = {f"laddermill_gym/LadderMill-v{v}": {"scene_options": {"n_wings": 11}, "settle": {"max_time": 50.0}}
+             for v in (0, 1)}
     for env_id in ENV_IDS:
         env = gym.make(env_id, **small.get(env_id, {}))
         obs, _ = env.reset(seed=0)

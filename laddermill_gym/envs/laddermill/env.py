@@ -83,6 +83,9 @@ STATION_TABLE
 
     ## Version History
 
+    * v1: a new id, ``laddermill_gym/LadderMill-v1`` (:class:`~laddermill_gym.envs.laddermill.env_v1.LadderMillV1Env`):
+      the v1 wing (scene ``laddermill_v1``, 152.9 kW at 2 m/s) and ``authority=0.2`` by default; this id keeps its
+      scene, dynamics, spaces and rewards.
     * v0: initial version.
     """
 
