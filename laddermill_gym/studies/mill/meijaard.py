@@ -200,10 +200,12 @@ def direction_step(sim: Simulator, cfg: Config, label: str, wall_limit: float = 
     """From ``sim``'s state (3D), the 0.01 rad direction step followed to its end
     (:func:`laddermill_gym.studies.mill.divergence.follow`: a physical criterion of ``criteria``, a numerical
     breakdown, ``cfg.after_step`` [s] or ``wall_limit`` [s] of wall time) with the simulator's integrator. Adds
-    ``outcome``, ``physical_end``, ``broke_down`` and ``message`` to the run."""
+    ``outcome``, ``physical_end``, ``broke_down``, ``message``, the method and its (first) step ``dt_s`` [s]."""
+    method, dt = sim.settings.method, sim.settings.dt
     run = follow(sim, label, cfg.slot, cfg.after_step, cfg.sample_s, criteria, wall_limit, cfg.progress)
     end = run["end"]
-    return {**run, "outcome": end.outcome, "physical_end": end.physical, "broke_down": end.outcome == BREAKDOWN,
+    return {**run, "method": method, "dt_s": dt, "outcome": end.outcome, "physical_end": end.physical,
+            "broke_down": end.outcome == BREAKDOWN,
             "end_bodies": " ".join(str(b) for b in end.bodies), "message": end.text}
 
 

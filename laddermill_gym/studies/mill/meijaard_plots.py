@@ -5,6 +5,7 @@ exist for us only as its text), and the panel of every claim (:mod:`laddermill_g
 
 from __future__ import annotations
 
+import io
 import textwrap
 from pathlib import Path
 
@@ -25,6 +26,17 @@ PAPER_TEXT = {
 }
 
 
+def save_small(fig: Figure, path: Path, **kwargs) -> None:
+    """Save ``fig`` as a PNG with a 256-colour palette (line plots lose nothing visible; the file is about half the
+    size: the docs ship these figures). Pillow comes with matplotlib."""
+    from PIL import Image
+
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=80, **kwargs)
+    buf.seek(0)
+    Image.open(buf).convert("RGB").quantize(colors=256).save(path, optimize=True)
+
+
 def _title(row: dict, res) -> str:
     state = f"periodic at t = {res.t_s:.0f} s" if res.converged else f"NOT PERIODIC within t = {res.t_s:.0f} s"
     return f"V_c = {row['V_c_m_s']:g} m/s ({state})"
@@ -32,10 +44,11 @@ def _title(row: dict, res) -> str:
 
 def _beside(fig: Figure, figure: str, claims: list[dict] | None, bottom: float) -> None:
     """The paper's words and our numbers for ``figure`` in the band below ``bottom`` (figure fraction)."""
-    lines = textwrap.wrap(PAPER_TEXT[figure], 150)
+    width = int(150 * fig.get_figwidth() / 10)  # characters per line at 7 pt monospace
+    lines = textwrap.wrap(PAPER_TEXT[figure], width)
     for c in claims or []:
         if c["figure"] == figure:
-            lines += textwrap.wrap(f"Ours [{c['agrees']}]: {c['paper']}: {c['ours']}", 150)
+            lines += textwrap.wrap(f"Ours [{c['agrees']}]: {c['paper']}: {c['ours']}", width)
     fig.text(0.01, bottom - 0.01, "\n".join(lines), fontsize=7, va="top", family="monospace")
 
 
@@ -61,7 +74,7 @@ def plot_shapes(cases: list, path: Path, slot: int, scene: str, claims: list[dic
     fig.suptitle(f"Fig. 6 (Meijaard et al. 1999) redone, scene {scene}: shape of the in-plane mill at a transfer")
     fig.tight_layout(rect=(0, 0.16, 1, 1))
     _beside(fig, "6", claims, 0.16)
-    fig.savefig(path, dpi=80)
+    save_small(fig, path)
 
 
 def plot_tensions(cases: list, path: Path, scene: str, claims: list[dict] | None = None) -> None:
@@ -82,41 +95,53 @@ def plot_tensions(cases: list, path: Path, scene: str, claims: list[dict] | None
     ax.grid(alpha=0.3)
     fig.tight_layout(rect=(0, 0.3, 1, 1))
     _beside(fig, "7", claims, 0.3)
-    fig.savefig(path, dpi=80)
+    save_small(fig, path)
+
+
+def _zoom_s(runs: list[dict]) -> float:
+    """The left column's span after the step [s]: three times the latest physical end (at least 10 s), or all."""
+    phys = [r["end"].t_after_step_s for r in runs if r["end"].physical]
+    return max(10.0, 3.0 * max(phys)) if phys else max(r["t_reached_s"] for r in runs)
 
 
 def plot_step(runs: list[dict], path: Path, scene: str, claims: list[dict] | None = None) -> None:
     """Fig. 8: yaw, roll, pitch and alpha / beta of the followed wing after the 0.01 rad wind-direction step, each
-    run to its end (a physical criterion, a numerical breakdown or the time limit), the end marked."""
-    fig = Figure(figsize=(10, 12))
-    axs = fig.subplots(4, 1, sharex=True)
+    run to its end (a physical criterion, a numerical breakdown or the time limit), the end marked; left up to a
+    little after the physical end, right the whole of every run."""
+    fig = Figure(figsize=(14, 12))
+    axs = fig.subplots(4, 2, sharex="col", width_ratios=(1, 1.6))
+    zoom = _zoom_s(runs)
     for run in runs:
         r = {k: np.array([x[k] for x in run["rows"]]) for k in run["rows"][0]}
-        end = run["end"]
+        end, t = run["end"], r["t_after_step_s"]
         yaw = np.degrees(np.unwrap(np.radians(r["yaw_deg"])))
-        line = axs[0].plot(r["t_after_step_s"], yaw, label=f"{run['label']}: {end.outcome} at "
-                           f"{end.t_after_step_s:.1f} s")[0]
-        axs[1].plot(r["t_after_step_s"], r["roll_deg"], color=line.get_color())
-        axs[2].plot(r["t_after_step_s"], r["pitch_deg"], color=line.get_color())
-        axs[3].plot(r["t_after_step_s"], r["alpha_deg"], color=line.get_color())
-        axs[3].plot(r["t_after_step_s"], r["beta_deg"], ":", color=line.get_color())
-        for ax in axs:
-            ax.axvline(end.t_after_step_s, color=line.get_color(), lw=0.8, ls="-." if end.physical else ":")
-    for y in (*ALPHA_RANGE_DEG, MAX_ABS_BETA_DEG, -MAX_ABS_BETA_DEG):
-        axs[3].axhline(y, color="grey", lw=0.6, ls="--")
-    axs[3].set_xlabel("time after the 0.01 rad wind-direction step [s] (vertical lines: the end of each run; "
-                      "dash-dot: a physical end)", fontsize=8)
-    axs[0].legend(fontsize=7)
+        for col, keep in enumerate((t <= zoom + 1e-9, np.ones(t.size, dtype=bool))):
+            line = axs[0, col].plot(t[keep], yaw[keep], label=f"{run['label']}: {end.outcome} at "
+                                    f"{end.t_after_step_s:.1f} s")[0]
+            for row, key in ((1, "roll_deg"), (2, "pitch_deg"), (3, "alpha_deg")):
+                axs[row, col].plot(t[keep], r[key][keep], color=line.get_color())
+            axs[3, col].plot(t[keep], r["beta_deg"][keep], ":", color=line.get_color())
+            if end.t_after_step_s <= (zoom if col == 0 else np.inf):
+                for ax in axs[:, col]:
+                    ax.axvline(end.t_after_step_s, color=line.get_color(), lw=0.8, ls="-." if end.physical else ":")
     slot = runs[0]["slot"]
-    axs[0].set_title(f"Fig. 8 redone, scene {scene}: wing in slot {slot}, 3D, V_c = 2 m/s (dashed: range of accurate "
-                     "wing data)", fontsize=10)
-    for ax, name in zip(axs, (f"yaw (unwrapped), slot {slot}", "roll phi", "pitch theta",
-                              "alpha (solid), beta (dotted)"), strict=True):
-        ax.set_ylabel(f"{name} [deg]", fontsize=8)
-        ax.grid(alpha=0.3)
+    for col in (0, 1):
+        for y in (*ALPHA_RANGE_DEG, MAX_ABS_BETA_DEG, -MAX_ABS_BETA_DEG):
+            axs[3, col].axhline(y, color="grey", lw=0.6, ls="--")
+        for ax, name in zip(axs[:, col], (f"yaw (unwrapped), slot {slot}", "roll phi", "pitch theta",
+                                          "alpha (solid), beta (dotted)"), strict=True):
+            ax.set_ylabel(f"{name} [deg]", fontsize=8)
+            ax.grid(alpha=0.3)
+        axs[3, col].set_xlabel("time after the 0.01 rad wind-direction step [s]", fontsize=8)
+    axs[0, 0].set_title(f"the first {zoom:.0f} s (vertical lines: the end of each run; dash-dot: a physical end)",
+                        fontsize=8)
+    axs[0, 1].set_title("every run to its end (dashed: range of accurate wing data)", fontsize=8)
+    axs[0, 1].legend(fontsize=7)
+    fig.suptitle(f"Fig. 8 redone, scene {scene}: wing in slot {slot}, 3D, V_c = 2 m/s, after a 0.01 rad "
+                 "wind-direction step", fontsize=10)
     fig.tight_layout(rect=(0, 0.1, 1, 1))
     _beside(fig, "8", claims, 0.1)
-    fig.savefig(path, dpi=80)
+    save_small(fig, path)
 
 
 def plot_claims(claims: list[dict], path: Path, scene: str) -> None:
@@ -137,4 +162,4 @@ def plot_claims(claims: list[dict], path: Path, scene: str) -> None:
         if i > 0 and cells[i - 1][3] in ("yes", "no"):
             cell.set_facecolor("#e6f4e6" if cells[i - 1][3] == "yes" else "#fbe3e3")
     fig.suptitle("Meijaard et al. (1999), Figs. 6-8: the paper's claims and ours", fontsize=10)
-    fig.savefig(path, dpi=80, bbox_inches="tight")
+    save_small(fig, path, bbox_inches="tight")
