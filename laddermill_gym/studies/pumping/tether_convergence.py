@@ -9,12 +9,14 @@ tension, cycle time, and the tether's ground contacts (most nodes on the ground 
 with one). docs/pumping.md, "The reeling tether".
 
 Run: ``python -m laddermill_gym.studies.pumping.tether_convergence [--lengths 300 100 60 40 30] [--out DIR]``
-(300 = the shipped single element).
+(300 = the shipped single element); ``--start-length 200 --lengths 40``: from 200 m to 500 m and back (Delta L
+300 m).
 """
 
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import math
 from pathlib import Path
@@ -33,8 +35,9 @@ from laddermill_gym.studies.pumping.pumping_cycle import cycle_stats, run_cycles
 
 __all__ = ["tether_run", "add_parser", "main"]
 
-#: The start tether [m] (configs/scenes/pumping_kite.yaml's piece_length): l_n at or above it is the single element.
-START_LENGTH = 300.0
+#: The start tether [m] (configs/scenes/pumping_kite.yaml's piece_length) and the longest (its start plus the crosswind
+#: config's Delta L = 200 m, configs/agents/crosswind_pumping.yaml).
+START_LENGTH, END_LENGTH = 300.0, 500.0
 
 
 def _probe(task: PumpingTask) -> dict[str, float]:
@@ -45,21 +48,38 @@ def _probe(task: PumpingTask) -> dict[str, float]:
     return {"elements": float(nodes_in_air(asm, x) + 1), "contacts": float(ground_contacts(asm, x))}
 
 
-def tether_run(element_length: float, cycles: int = 2, progress: bool = False) -> dict[str, float]:
-    """Fly ``cycles`` + 1 crosswind cycles on a tether of nominal element length ``element_length`` [m] (the
-    shipped single element at or above START_LENGTH); the figures of the last complete cycle and of the run."""
-    if element_length >= START_LENGTH:
-        task = PumpingTask(1, config="pumping_kite", episode_time=2000.0)
+def _task(element_length: float, start: float) -> PumpingTask:
+    """The pumping task on the single element (``element_length`` >= ``start`` [m]) or the reeling tether, its
+    tether ``start`` long at t = 0 (the scene's piece_length) and reeled out to END_LENGTH."""
+    options = {} if start == START_LENGTH else {"overrides": {"chain": {"piece_length": float(start)}}}
+    if element_length >= start:
+        task = PumpingTask(1, config="pumping_kite", episode_time=3000.0, scene_options=options)
     else:
         cable = load_pumping("pumping_kite").scene.assembly.elements
         dt = stable_dt(element_length, float(cable.EA[0]), float(cable.mu[0]))
-        task = PumpingTask(1, config="pumping_kite_reeling", episode_time=2000.0,
-                           scene_options={"reeling": {"element_length": float(element_length), "dt": dt}})
-    ctl = CrosswindController(task, lateral_lqr(task, DEFAULT_CONFIG), load_crosswind_config())
+        options["reeling"] = {"element_length": float(element_length), "dt": dt}
+        task = PumpingTask(1, config="pumping_kite_reeling", episode_time=3000.0, scene_options=options)
+    if start != START_LENGTH:  # Delta L to END_LENGTH; the drum holds one more overrun than that
+        cyc = dataclasses.replace(task.pumping.cycle, reel_length=END_LENGTH - start)
+        task.pumping = dataclasses.replace(task.pumping, cycle=cyc)
+        task.max_paid_out = cyc.reel_length + 2.0 * cyc.depower_overrun
+    return task
+
+
+def tether_run(element_length: float, cycles: int = 2, start: float = START_LENGTH,
+               progress: bool = False) -> dict[str, float]:
+    """Fly ``cycles`` + 1 crosswind cycles on a tether of nominal element length ``element_length`` [m] (the
+    single element at or above ``start``), from ``start`` [m] to END_LENGTH and back; the figures of the last
+    complete cycle and of the run."""
+    task = _task(element_length, start)
+    cfg = load_crosswind_config()
+    cfg = dataclasses.replace(cfg, phases=dataclasses.replace(cfg.phases, reel_length=END_LENGTH - start))
+    ctl = CrosswindController(task, lateral_lqr(task, DEFAULT_CONFIG), cfg)
     rec = run_cycles(task, ctl, cycles + 1, progress=progress, probe=_probe)
     c = cycle_stats(rec, task.control_dt)[-1]
-    return {"element_length_m": float(min(element_length, START_LENGTH)),
-            "elements_at_start": START_LENGTH / min(element_length, START_LENGTH), "dt_s": task.scene.settings.dt,
+    return {"element_length_m": float(min(element_length, start)), "start_m": start,
+            "tether_min_m": float(start + rec["s"].min()), "tether_max_m": float(start + rec["s"].max()),
+            "elements_at_start": start / min(element_length, start), "dt_s": task.scene.settings.dt,
             "elements_min": int(rec["elements"].min()), "elements_max": int(rec["elements"].max()),
             "power_W": c["power"], "tension_out_N": c["tension_out"], "speed_out_m_s": c["speed_out"],
             "tension_in_N": c["tension_in"], "cycle_s": c["t_cycle"], "alpha_deg": math.degrees(c["alpha"]),
@@ -69,6 +89,8 @@ def tether_run(element_length: float, cycles: int = 2, progress: bool = False) -
 def _arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--lengths", type=float, nargs="+", default=[300.0, 100.0, 60.0, 40.0, 30.0],
                    help="[m] nominal element lengths (300: the shipped single element)")
+    p.add_argument("--start-length", type=float, default=START_LENGTH,
+                   help="[m] the tether at t = 0 (the scene's 300 m by default), reeled out to 500 m")
     p.add_argument("--cycles", type=int, default=2, help="complete cycles after the first (the last is reported)")
     p.add_argument("--out", type=Path, default=None, help="folder for tether_convergence.json (default: none)")
 
@@ -77,17 +99,19 @@ def _run(args) -> int:
     for v in args.lengths:
         check_number("--lengths", v, low=5, high=1000, unit="m")
     check_number("--cycles", args.cycles, low=1, high=100, integer=True, strict=False)
+    check_number("--start-length", args.start_length, low=100, high=450, strict=False, unit="m")
     rows = []
-    print(f"{'l_n m':>6} {'dt ms':>5} {'el. at 300 m':>12} {'el. min-max':>11} {'P W':>7} {'T_out N':>8} {'v_out':>6} "
-          f"{'T_in N':>7} {'T_c s':>6} {'alpha':>6} {'on ground':>9} {'steps %':>7}")
+    print(f"{'l_n m':>6} {'dt ms':>5} {'el. at start':>12} {'tether m':>9} {'el. min-max':>11} {'P W':>7} "
+          f"{'T_out N':>8} {'v_out':>6} {'T_in N':>7} {'T_c s':>6} {'alpha':>6} {'on ground':>9} {'steps %':>7}")
     for ln in tqdm(args.lengths, unit="tether", leave=False):
         try:
-            r = tether_run(ln, args.cycles)
+            r = tether_run(ln, args.cycles, args.start_length)
         except RuntimeError as err:
             print(f"{ln:6.0f} failed: {err}")
             continue
         rows.append(r)
         tqdm.write(f"{r['element_length_m']:6.0f} {1e3 * r['dt_s']:5.1f} {r['elements_at_start']:12.1f} "
+                   f"{r['tether_min_m']:4.0f}-{r['tether_max_m']:<4.0f} "
                    f"{r['elements_min']:5d}-{r['elements_max']:<5d} {r['power_W']:7.0f} {r['tension_out_N']:8.0f} "
                    f"{r['speed_out_m_s']:6.2f} {r['tension_in_N']:7.0f} {r['cycle_s']:6.1f} {r['alpha_deg']:6.2f} "
                    f"{r['contacts_max']:9d} {100 * r['contact_share']:7.1f}")
