@@ -14,6 +14,7 @@ from __future__ import annotations
 import csv
 import dataclasses
 import math
+import shutil
 
 import numpy as np
 import pytest
@@ -90,7 +91,7 @@ def test_files_columns_and_units(study):
 
 def test_saved_search_is_reused(study, tmp_path):
     """The periodic search saved under states/ is read back unchanged (row, tensions, shape, state) when the settings
-    match, and recomputed when one differs (here the search time)."""
+    match, and recomputed when one differs (the search time); a changed rest state changes the fingerprint."""
     out, cases, _ = study
     saved = sorted((out / "states").glob("*.npz"))
     assert [p.name for p in saved] == ["laddermill_v1_2D_Vc2.npz", "laddermill_v1_3D_Vc2.npz"]
@@ -99,10 +100,16 @@ def test_saved_search_is_reused(study, tmp_path):
     np.testing.assert_array_equal(case.res.tension_mean_N, cases[0].res.tension_mean_N)
     np.testing.assert_array_equal(case.res.shape_m, cases[0].res.shape_m)
     assert sim.t == cases[0].res.t_s
-    other = dataclasses.replace(TINY, max_time=5.0)
-    key = mj.store.case_key(other.scene, 2, 2.0, other.n_wings, other.ramp_s, other.max_time, other.periodic_tol,
-                            other.extra_s)
-    assert mj.store.load_case(mj.store.case_path(out / "states", key), key) is None
+    folder = tmp_path / "states"
+    shutil.copytree(out / "states", folder)
+    _, _, reused = mj.periodic_case(2.0, 2, dataclasses.replace(TINY, max_time=5.0), folder=folder)
+    assert not reused
+    # another rest state (any edit of the scene, wing or cable that moves it): another fingerprint
+    sim = mj.mill(2, 2.0, TINY)
+    moved = Simulator(sim.assembly, sim.initial_state + 1e-9, sim.settings, sim.initial_controls)
+    scene = mj.scene_path(TINY.scene)
+    assert mj.store.fingerprint(scene, moved) != mj.store.fingerprint(scene, sim)
+    assert mj.store.fingerprint(scene, mj.mill(2, 2.0, TINY)) == mj.store.fingerprint(scene, sim)
 
 
 def test_scene_variants():

@@ -43,6 +43,7 @@ import numpy as np
 
 from laddermill_gym import Simulator, load_scene
 from laddermill_gym.ladder.periodic import PeriodicResult, run_to_periodic
+from laddermill_gym.ladder.scene import scene_path
 from laddermill_gym.model.states import planar_to_3d
 from laddermill_gym.studies.mill import meijaard_store as store
 from laddermill_gym.studies.mill.divergence import (
@@ -164,15 +165,17 @@ def periodic_case(v_c: float, dim: int, cfg: Config, start=None, max_time: float
     when the case was read from ``folder`` instead). With ``folder`` the case is saved there and a saved case with
     the same settings is reused (:mod:`~laddermill_gym.studies.mill.meijaard_store`)."""
     max_time = cfg.max_time if max_time is None else max_time
-    key = store.case_key(cfg.scene, dim, v_c, cfg.n_wings, cfg.ramp_s, max_time, cfg.periodic_tol, cfg.extra_s)
+    sim = mill(dim, v_c, cfg)
+    key = store.case_key(cfg.scene, dim, v_c, cfg.n_wings, cfg.ramp_s, max_time, cfg.periodic_tol, cfg.extra_s,
+                         store.fingerprint(scene_path(cfg.scene), sim))
     path = store.case_path(folder, key) if folder is not None else None
     saved = store.load_case(path, key) if path is not None else None
     if saved is not None:
         state, t, controls, ground, res, row = saved
-        sim = mill(dim, v_c, cfg)
         sim.reset(state, t=t, controls=controls, check=res.breakdown is None)
         return sim, Case(res, row, ground), True
-    sim = start() if start is not None else mill(dim, v_c, cfg)
+    if start is not None:
+        sim = start()
     res = run_to_periodic(sim, shape_tol=cfg.periodic_tol, power_tol=cfg.periodic_tol, max_time=max_time,
                           progress=cfg.progress)
     state, t, controls, ground = sim.state.copy(), sim.t, sim.controls.copy(), _ground(sim)

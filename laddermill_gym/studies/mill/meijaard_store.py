@@ -3,13 +3,16 @@ its result and the simulator's state at its end are written once to the run's ou
 ``.npz`` per case) and read back by a later run with the same settings.
 
 A file is reused only when its ``key`` (scene, dimension, V_c, number of wings, ramp, search time and tolerance, the
-width-sampling span) equals the one asked for; any other file is ignored and overwritten. What is stored: the state,
+width-sampling span, and a :func:`fingerprint` of the scene file, the mill's state at rest, its controls and the
+integrator settings, which changes with any edit of the scene, wing or cable data that moves the rest state) equals
+the one asked for; any other file is ignored and overwritten. What is stored: the state,
 time and controls at the end of the search (the simulator is reset to them), the two ground points, every field of
 :class:`~laddermill_gym.ladder.periodic.PeriodicResult` and the study's table row.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 from pathlib import Path
 
@@ -25,11 +28,22 @@ SCALARS = ("converged", "period_s", "t_s", "mean_power_W", "mean_electrical_powe
            "peak_tension_ratio")
 
 
+def fingerprint(scene_file: Path, sim) -> str:
+    """SHA-256 of the scene file's text, the simulator's initial state and controls and its integrator settings."""
+    h = hashlib.sha256(Path(scene_file).read_bytes())
+    for a in (sim.initial_state, sim.initial_controls):
+        h.update(np.ascontiguousarray(a, dtype=np.float64).tobytes())
+    h.update(repr(sim.settings).encode())
+    return h.hexdigest()
+
+
 def case_key(scene: str, dim: int, v_c: float, n_wings: int | None, ramp_s: float, max_time: float, tol: float,
-             extra_s: float) -> dict:
-    """The settings a saved case must match to be reused (units: V_c [m/s], times [s], tol [-])."""
+             extra_s: float, print_: str = "") -> dict:
+    """The settings a saved case must match to be reused (units: V_c [m/s], times [s], tol [-]; ``print_`` the
+    :func:`fingerprint`)."""
     return {"scene": scene, "dimension": int(dim), "V_c_m_s": float(v_c), "n_wings": n_wings,
-            "ramp_s": float(ramp_s), "max_time_s": float(max_time), "tol": float(tol), "extra_s": float(extra_s)}
+            "ramp_s": float(ramp_s), "max_time_s": float(max_time), "tol": float(tol), "extra_s": float(extra_s),
+            "fingerprint": print_}
 
 
 def case_path(folder: Path, key: dict) -> Path:
