@@ -1,6 +1,5 @@
 """The reeling multi-element tether of a pumping kite's winch as a model kind: elements are paid out into the air
-from the drum and taken back onto it as the tether reels (issue 29 point 2; docs/pumping.md, "The reeling
-tether").
+from the drum and taken back onto it as the tether reels (issue 29 point 2; docs/reeling_tether.md).
 
 ``ReelWinch3D`` is the 3D winch (``kernels/winch.py``: the station's parameters ``station``, slots ``SP_*``, state
 block ``SX_*``) on a chain of n free nodes with a fixed maximum count and a count in the air (the reel's slots

@@ -156,7 +156,7 @@ def _arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--elements", type=int, help="tether elements (scene elements_per_piece; the winch changes the "
                    "lowest one's length)")
     p.add_argument("--reel-element-length", type=float, help="[m] a reeling tether (configs/pumping/"
-                   "pumping_kite_reeling.yaml, docs/pumping.md 'The reeling tether') of elements of this nominal "
+                   "pumping_kite_reeling.yaml, docs/reeling_tether.md) of elements of this nominal "
                    "length (default: the config's tether)")
     p.add_argument("--wind", type=float, help="[m/s] override the scene's wind speed v0 at its h0 (50 m)")
     p.add_argument("--no-lqr", action="store_true", help="the scripted cycle alone (rudder and aileron at trim)")

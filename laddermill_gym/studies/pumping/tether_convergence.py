@@ -6,7 +6,7 @@ the same crosswind controller and scenario as
 ``pumping_cycle`` (steady wind after the envs' 0.01 rad direction step at 1 s). Per run: the elements in the air
 (fewest, most), the second complete cycle's net electrical mean power, reel-out tension and speed, reel-in
 tension, cycle time, and the tether's ground contacts (most nodes on the ground at once, the share of control steps
-with one). docs/pumping.md, "The reeling tether".
+with one). docs/reeling_tether.md.
 
 Run: ``python -m laddermill_gym.studies.pumping.tether_convergence [--lengths 300 100 60 40 30] [--out DIR]``
 (300 = the shipped single element); ``--start-length 200 --lengths 40``: from 200 m to 500 m and back (Delta L
