@@ -200,3 +200,15 @@ def test_stable_dt_resolves_the_highest_axial_mode():
     assert stable_dt(100.0, 2.16e7, 0.3) == 0.005
     with pytest.raises(ValueError, match="need a step below"):
         stable_dt(1.0, 2.16e7, 0.3)
+
+
+@pytest.mark.parametrize("case", [(110.0, 0.0, 651.998593, 550.0), (120.0, 30.0, 517.6813, 399.2525)])
+def test_catenary_solver_against_irvines_cases(case):
+    """The start's catenary solver against the two elastic catenaries of shared/design/oracles.md ("Elastic
+    catenary", solved independently; tests/test_catenary.py holds the rigid chain to them): w = 10 N/m, EA = 1e6 N,
+    span 100 m; L0 = 110 m level (H = 651.998593 N, V = 550 N) and L0 = 120 m with B 30 m up (H = 517.6813 N,
+    V_A = 399.2525 N). V here is the lower end's upward pull, minus the reaction's vertical part at A."""
+    length, rise, h_ref, v_ref = case
+    h, v = solve_catenary(100.0, rise, length, 10.0, 1e6)
+    assert h == pytest.approx(h_ref, rel=1e-6)
+    assert -v == pytest.approx(v_ref, rel=1e-6)
