@@ -117,6 +117,7 @@ def test_chain_decentralised_blocks_stable():
 
 @pytest.mark.parametrize("change, field", [
     ({"structure": "ring"}, "structure"),
+    ({"design_model": "average"}, "design_model"),
     ({"max_state": {"y": -1.0}}, "max_state.y"),
     ({"control_period": 0}, "control_period"),
     ({"gain_scale": 2.0}, "gain_scale"),

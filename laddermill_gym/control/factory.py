@@ -28,6 +28,7 @@ DEFAULT_LQR_CONFIGS: dict[str, Path] = {
     "laddermill_gym/TetheredWing-v0": CONFIG_DIR / "agents" / "lqr_tethered_wing.yaml",
     "laddermill_gym/LadderChain-v0": CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml",
     "laddermill_gym/LadderMill-v0": CONFIG_DIR / "agents" / "lqr_laddermill.yaml",
+    "laddermill_gym/LadderMill-v1": CONFIG_DIR / "agents" / "lqr_laddermill_v1.yaml",
 }
 
 
@@ -68,10 +69,11 @@ def _craft_controller(spec: str, kw: dict) -> Controller:
     return CraftLQRController(design.gain, idx, ro.N_CRAFT_OBS, design.u_trim[0], mid, half)
 
 
-def _mill_controller(spec: str, kw: dict) -> Controller:
-    """LadderMill-v0: open loop (the zero normalised action, which holds the operating point's tail settings, the
-    paper's fixed settings, and with a drum its generator torque; needs the scene only) or the lateral LQR
-    (``control.mill_lqr``: centralised, frozen phase, on the env's own mill; needs the operating point)."""
+def _mill_controller(spec: str, kw: dict, env_id: str) -> Controller:
+    """LadderMill-v0 and -v1: open loop (the zero normalised action, which holds the operating point's tail
+    settings, the paper's fixed settings, and with a drum its generator torque; needs the scene only) or the lateral
+    LQR (``control.mill_lqr``: centralised, on the env's own mill with the id's config of
+    :data:`DEFAULT_LQR_CONFIGS`; needs the operating point)."""
     if spec == "open_loop":
         import numpy as np
 
@@ -93,7 +95,8 @@ def _mill_controller(spec: str, kw: dict) -> Controller:
     from laddermill_gym.control.mill_lqr import design_mill_lqr
     from laddermill_gym.envs.laddermill.task import MillTask
 
-    path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_LQR_CONFIGS["laddermill_gym/LadderMill-v0"]
+    default = DEFAULT_LQR_CONFIGS.get(env_id, DEFAULT_LQR_CONFIGS["laddermill_gym/LadderMill-v0"])
+    path = Path(spec[4:]) if spec.startswith("lqr:") else default
     cfg = load_lqr_config(path)  # its weights, designed on the environment's own mill
     task = MillTask(1, **{k: v for k, v in kw.items() if k != "parallel"})
     return design_mill_lqr(cfg, task).controller(task)
@@ -162,7 +165,7 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     if task_class(env_id).__name__ == "PointMassTask" and (spec in ("open_loop", "lqr") or spec.startswith("lqr:")):
         return _pointmass_controller(spec, kw)
     if task_class(env_id).__name__ == "MillTask" and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):
-        return _mill_controller(spec, kw)
+        return _mill_controller(spec, kw, env_id)
     if spec in ("open_loop",) or spec == "lqr" or spec.startswith("lqr:"):
         if kw.get("action_mode", "tail") != "tail" or kw.get("groups", "per_wing") != "per_wing":
             raise ValueError(f"controller {spec!r} needs action_mode='tail' and groups='per_wing' "

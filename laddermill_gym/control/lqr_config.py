@@ -39,6 +39,9 @@ class LQRConfig:
     max_input : ndarray (2,)      largest acceptable (rudder, aileron) deflection from trim [rad]
     structure : str               chains: "decentralised" (each wing's gain from its own lateral block) or
                                   "centralised" (one gain on the full coupled lateral model)
+    design_model : str            the moving mill (``control.mill_lqr``): "transfer_phase" (the lateral model at
+                                  the operating point's phase, just after a transfer) or "period_mean" (the mean of
+                                  the models at the checked phases of the orbit); other systems: "transfer_phase"
     """
 
     file: Path
@@ -48,9 +51,11 @@ class LQRConfig:
     max_state: np.ndarray
     max_input: np.ndarray
     structure: str = "decentralised"
+    design_model: str = "transfer_phase"
 
 
 STRUCTURES: tuple[str, ...] = ("decentralised", "centralised")
+DESIGN_MODELS: tuple[str, ...] = ("transfer_phase", "period_mean")
 
 
 #: Upper bounds of the Bryson's-rule limits (largest acceptable deviations) and why.
@@ -82,9 +87,10 @@ def load_lqr_config(path: str | Path = DEFAULT_CONFIG) -> LQRConfig:
                             for k in LATERAL_INPUT_NAMES])
     mi.done()
     structure = s.text("structure", "decentralised", choices=STRUCTURES)
+    design_model = s.text("design_model", "transfer_phase", choices=DESIGN_MODELS)
     s.done()
     return LQRConfig(file=Path(path), scene=scene, elements_per_piece=epp, control_period=period,
-                     max_state=max_state, max_input=max_input, structure=structure)
+                     max_state=max_state, max_input=max_input, structure=structure, design_model=design_model)
 
 
 def bryson_weights(max_state: np.ndarray, max_input: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
