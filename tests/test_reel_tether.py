@@ -138,7 +138,7 @@ def test_paying_out_adds_elements_at_v_over_ln(reeling):
     expect = np.maximum(np.floor((lp + s - a * ln) / ln) + 1, 0)
     np.testing.assert_array_equal(m, expect)
     assert m[-1] == 5  # s = 179 m: nodes out at s = 10, 50, 90, 130 and 170 m
-    assert contacts.max() >= 1
+    assert contacts.max() >= 1 and sim.ground_contacts() == contacts[-1]
 
 
 def test_same_as_the_winch_kind_without_relabelling():

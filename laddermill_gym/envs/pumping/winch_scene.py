@@ -22,7 +22,7 @@ from laddermill_gym.envs.pumping.reel_start import reel_state
 from laddermill_gym.kernels.contract import SX_MOVED
 from laddermill_gym.ladder.scene import Scene, load_scene
 from laddermill_gym.model.configio import ConfigError, config_path, read_yaml
-from laddermill_gym.model.reel import ReelSpec, read_reeling, with_reel
+from laddermill_gym.model.reel import ReelSpec, ground_contacts, is_reel, read_reeling, with_reel
 from laddermill_gym.model.station import StationParams
 from laddermill_gym.model.winch import read_winch, with_winch
 from laddermill_gym.sim.simulator import Simulator
@@ -76,6 +76,10 @@ class WinchSimulator(Simulator):
         """Tether paid out since t = 0 [m] (``SX_MOVED``; a reeling tether's ``SX_TRANSFERS`` counts nodes, not
         pieces)."""
         return float(self.state[self.assembly.body_state_size + SX_MOVED])
+
+    def ground_contacts(self) -> int:
+        """Tether nodes on the ground now (a reeling tether, ``model.reel.ground_contacts``; 0 otherwise)."""
+        return ground_contacts(self.assembly, self.state) if is_reel(self.assembly.station) else 0
 
     def winch_power(self) -> dict[str, float]:
         """The winch now: tension of the tether at the drum T_0 [N], winch speed V [m/s] (> 0 reeling out),
