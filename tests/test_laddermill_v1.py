@@ -67,6 +67,27 @@ def test_action_range_is_the_authority_share_of_the_wing_files_limits(authority)
                              - u_op) > 0)
 
 
+def test_per_slot_multiagent_interface():
+    """PettingZoo's own API and seed tests on v1's per-slot agents (the 11-wing mill), and the agents' actions are
+    the single env's actions (v1's authority) split by slot: one step of both from the same seed is bit for bit."""
+    pettingzoo_test = pytest.importorskip("pettingzoo.test")
+    from laddermill_gym.multiagent import parallel_env
+
+    kw = dict(SMALL, disturbances=[], termination={"alpha_range_deg": (-180.0, 180.0), "max_abs_beta_deg": 90.0})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        pettingzoo_test.parallel_api_test(parallel_env(LM1, k=1, **kw), num_cycles=10)
+        pettingzoo_test.parallel_seed_test(lambda: parallel_env(LM1, k=1, **kw), num_cycles=5)
+        env, single = parallel_env(LM1, k=1, **kw), make(**kw)
+    assert env.possible_agents == [f"slot_{i}" for i in range(11)]
+    env.reset(seed=3)
+    single.reset(seed=3)
+    a = np.random.default_rng(0).uniform(-1, 1, (11, 3)).astype(np.float32)
+    _, _, _, _, infos = env.step({f"slot_{i}": a[i] for i in range(11)})
+    ref, *_ = single.step(a.reshape(-1))
+    np.testing.assert_array_equal(env.state(), ref)
+
+
 @pytest.fixture(scope="module")
 def mill():
     """The registered LadderMill-v1 (101 wings, its periodic operating point), no disturbance."""
