@@ -289,6 +289,8 @@ FORWARDED: dict[str, tuple[str, str]] = {
                 "--workers / --ray (fill numba's cache, compute the operating points once)"),
     "pumping-cycle": ("laddermill_gym.studies.pumping.pumping_cycle", "pumping kite: the scripted cycle with the "
                       "lateral LQR against the quasi-steady prediction (Lansdorp, Schmehl)"),
+    "tether-convergence": ("laddermill_gym.studies.pumping.tether_convergence", "pumping kite: the crosswind cycle "
+                           "on the single element and on reeling tethers of 3 to 10 elements (docs/reeling_tether.md)"),
     "demo": ("laddermill_gym.studies.mill.control_demo", "the main job: the mill through the paper's direction step, "
              "open loop and under the LQR (or a policy); power, lateral excursion, top views, GIF"),
     "gust-bench": ("laddermill_gym.studies.gusts.gust_bench", "run controllers on a versioned gust benchmark suite "

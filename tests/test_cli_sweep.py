@@ -57,6 +57,8 @@ CASES = [
     ("pumping-cycle", MISSING, ["--config", NOFILE], "laddermill_sweep.yaml: no such file"),
     ("pumping-cycle", UNKNOWN, ["--config", "nosuch"], "--config = 'nosuch'"),
     ("pumping-cycle", RANGE, ["--cycles", "1"], "--cycles = 1"),
+    ("tether-convergence", RANGE, ["--lengths", "300", "1"], "--lengths = 1.0"),
+    ("tether-convergence", RANGE, ["--start-length", "50"], "--start-length = 50.0"),
     ("gust-bench", MISSING, ["--suite", NOFILE], "laddermill_sweep.yaml: no such file"),
     ("gust-bench", UNKNOWN, ["--controllers", "nosuch"], "'nosuch'"),
     ("gust-bench", UNKNOWN, ["--env", "nosuch/Env-v0"], "--env 'nosuch/Env-v0'"),
