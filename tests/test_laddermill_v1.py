@@ -3,7 +3,7 @@
 The env contract (Gymnasium's and SB3's checkers, seeding, vector == single bit for bit, pickling, autoreset) runs
 for this id with every other in tests/test_env_contract.py and its neighbours (tests/env_cases.py: the 11-wing v1
 mill). Here: what the id registers, the action mapping against the wing file's control limits (closed form), and,
-on the full 101-wing mill (slow: its operating point costs about 40 s), the operating point's power against the
+on the full 101-wing mill (slow: its operating point costs 80-100 s here), the operating point's power against the
 hand estimate (T_first - T_last) V_c x efficiency, every tension of a period below the cable's breaking load over
 the safety factor 2.5 (docs/wing_data.md), and random actions that survive at least 2 s on the median of 10 seeds.
 """

@@ -25,7 +25,9 @@ class LadderMillV1Env(LadderMillEnv):
     at 152.9 kW with every tension of the period below 150 kN (the 2.5 cm cable's 525 kN breaking load over a
     safety factor of 2.5 is 210 kN). The task: keep the generator's power up while the loop stays laterally
     stable; the default disturbance is the paper's 0.01 rad wind-direction step at t = 1 s, after which the
-    open-loop mill leaves the aerodynamic data at about 7 s (a wing near the top of the loop at |beta| > 60 deg).
+    open-loop mill leaves the aerodynamic data at about 7 s (a wing near the top of the loop at |beta| > 60 deg);
+    the lateral LQR (``make_controller("lqr", id)``, configs/agents/lqr_laddermill_v1.yaml) holds it for 300 s
+    within 0.1 m of the in-plane orbit (docs/controllers.md).
     Many copies: ``gymnasium.make_vec(id, n, vectorization_mode="vector_entry_point")``.
 
     ## Action Space
@@ -66,7 +68,8 @@ STATION_TABLE
 
     The v1 mill's periodic stationary motion (:mod:`~laddermill_gym.envs.laddermill.operating_point`): found in
     plane from the scene's equilibrium at rest through its 30 s cable-speed ramp (periodic at t = 1,380 s of
-    simulated time with the default ``settle``, about 40 s of wall time on one core, memoised per process), mapped
+    simulated time with the default ``settle``; 82 s of wall time, numba's cache warm, on a 2-core machine shared
+    with other runs; memoised per process), mapped
     to 3D just after a transfer; or the ``operating_point`` passed in (it pickles). ``initial_noise`` adds random
     lateral velocity and roll / yaw rates to every wing; the wind disturbances are drawn from ``np_random`` at
     every reset.
