@@ -25,7 +25,8 @@ Field: bound (why).
   level's), named at ``chain.n_wings``
 * ``initial.alpha_deg``: [-90, 90] deg (beyond 90 deg the wing flies backwards)
 * ``initial.elevation_deg``: (0, 90] deg (the tether's elevation above the horizon, downwind of its station)
-* ``initial.elevator_up_deg``, ``elevator_down_deg``: the wing file's ``control_limits_deg.elevator``
+* ``initial.elevator_up_deg``, ``elevator_down_deg``, ``elevator_top_deg``: the wing file's
+  ``control_limits_deg.elevator``; ``initial.top_slots``: [0, the descending slots]
 * point-mass ``initial.roll_deg``, ``pitch_deg``, ``yaw_deg``: [-180, 180] deg (attitude angles)
 * ``integrator.dt``: [1e-9, 1] s (below a nanosecond one simulated second takes 1e9 steps and the float64 time of an
   hour-long run rounds each step by 2e-4 of it; above 1 s a step skips the wings' pitch and roll motion); a keyword

@@ -50,6 +50,15 @@ def _coarse_wings(scene, pos, euler, attach, controls):
     return pos, euler, attach, controls
 
 
+def slot_elevators(ini, n: int, closed: bool) -> list[float]:
+    """Elevator [rad] of each of the ``n`` slots: ``ini.elevator_up`` on the ascending half (slots below
+    ``half = (n + 1) // 2``; every slot of an open chain), ``ini.elevator_top`` on the first ``ini.top_slots``
+    descending slots past the top and ``ini.elevator_down`` on the rest (a closed chain: ``closed``)."""
+    half = (n + 1) // 2 if closed else n
+    return [ini.elevator_up if k < half else ini.elevator_top if k < half + ini.top_slots else ini.elevator_down
+            for k in range(n)]
+
+
 def initial_state(scene) -> tuple[np.ndarray, np.ndarray]:
     """(state, controls) at the scene's initial equilibrium (see scene.InitialSpec). A moving cable starts from
     the equilibrium at rest with its first and last elements at their lengths after a transfer (the station
@@ -61,8 +70,7 @@ def initial_state(scene) -> tuple[np.ndarray, np.ndarray]:
     a = scene.assembly
     n = a.n_wings
     ini = scene.initial
-    half = (n + 1) // 2 if scene.end is not None else n
-    elev = [ini.elevator_up if k < half else ini.elevator_down for k in range(n)]
+    elev = slot_elevators(ini, n, scene.end is not None)
     controls = np.zeros(N_CONTROLS * n)
     controls[CTRL_ELEVATOR::N_CONTROLS] = elev
     attach, alphas, tensions = rest_layout(scene, elev)

@@ -123,7 +123,7 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
     pitch0 = ini.number("alpha_deg", 0.0, **BOUNDS["initial.alpha_deg"])  # a rigid scene's trim alpha: the pitch
     att = [math.radians(ini.number(k, d, **BOUNDS["attitude_deg"]))
            for k, d in (("roll_deg", 0.0), ("pitch_deg", pitch0), ("yaw_deg", 0.0))]
-    for key in ("method", "elevation_deg", "elevator_up_deg", "elevator_down_deg"):
+    for key in ("method", "elevation_deg", "elevator_up_deg", "elevator_down_deg", "top_slots", "elevator_top_deg"):
         ini.raw(key, None)  # the rigid fidelity's start: the point-mass start is quasi-static
     ini.done()
     it = s.section("integrator")

@@ -54,13 +54,20 @@ def read_integrator(it: Section) -> IntegratorSettings:
 @dataclass(frozen=True)
 class InitialSpec:
     """How the initial state is found: 'trim' (one wing at a target angle of attack alpha [rad]) or
-    'static' (equilibrium at rest with the given elevator angles [rad] of ascending/descending wings)."""
+    'static' (equilibrium at rest with the given elevator angles [rad] of ascending/descending wings).
+
+    top_slots [-], elevator_top [rad]: the first ``top_slots`` descending slots past the loop's top (slots half ..
+    half + top_slots - 1 of a closed chain, ``half = (n + 1) // 2``) fly ``elevator_top`` instead of
+    ``elevator_down``; 0 (the default) changes nothing. Elevators belong to slots, not wings (the controls are per
+    slot), so a wing takes the setting of each slot it passes (``ladder.initial.slot_elevators``)."""
 
     method: str
     alpha: float
     elevation: float
     elevator_up: float
     elevator_down: float
+    top_slots: int = 0
+    elevator_top: float = 0.0
 
 
 #: (scene file, dt, start) already checked against RK4's stable step in this process
@@ -180,7 +187,9 @@ def _initial(ini: Section, limits: np.ndarray) -> InitialSpec:
                        elevation=math.radians(ini.number("elevation_deg", 45.0, positive=True,
                                                          **BOUNDS["initial.elevation_deg"])),
                        elevator_up=math.radians(ini.number("elevator_up_deg", 0.0, **elev)),
-                       elevator_down=math.radians(ini.number("elevator_down_deg", 0.0, **elev)))
+                       elevator_down=math.radians(ini.number("elevator_down_deg", 0.0, **elev)),
+                       top_slots=int(ini.number("top_slots", 0, integer=True, nonneg=True)),
+                       elevator_top=math.radians(ini.number("elevator_top_deg", 0.0, **elev)))
     ini.done()
     return spec
 
@@ -211,6 +220,15 @@ def _check_start(ch: Section, path: Path, init: InitialSpec, nw: int, end, overr
                            "initial.method 'trim' trims exactly one wing; a chain of several wings starts at rest "
                            "with initial.method: static" + (" (the last wing carries the free upper end)"
                                                              if end is None else ""))
+
+
+def _check_top_slots(path: Path, init: InitialSpec, nw: int, end) -> None:
+    """ConfigError naming initial.top_slots when it is more than the descending slots (a closed chain's
+    nw - (nw + 1) // 2; an open chain has none)."""
+    most = nw - (nw + 1) // 2 if end is not None else 0
+    if init.top_slots > most:
+        raise ConfigError(f"{path}: field 'initial.top_slots' = {init.top_slots!r}: must be at most the {most} "
+                          f"descending slots of {nw} wings" + ("" if end is not None else " (an open chain has none)"))
 
 
 def _check_step_override(path: Path, dt: float | None) -> None:
@@ -259,6 +277,7 @@ def read_rigid(s: Section, path: Path, *, dimension: int | None = None, sag: boo
     _check_sizes(ch, path, nw, epp, end, dim == 2 or wind.direction_inf == 0.0,
                  {"n_wings": n_wings, "elements_per_piece": elements_per_piece})
     _check_start(ch, path, init, nw, end, n_wings is not None)
+    _check_top_slots(path, init, nw, end)
     check_cable_length(ch, piece, nw, end is not None, cable, gravity, n_wings is not None)
     names = list(points)
     fixed = np.array([points[k] for k in names])

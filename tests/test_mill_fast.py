@@ -1,0 +1,61 @@
+"""Issue 30 point 1 at V_c = 4-5 m/s: the near-top elevator rule (``initial.top_slots``, ``elevator_top_deg``) of the
+moving mill. Oracles: the rule's closed form per slot (ascending half, the first ``top_slots`` descending slots,
+the rest), the scene's own controls when the rule is off (bit for bit), and the paper's power relation
+P = (T_first - T_last) V_c in closed form from the period-mean tensions. The full runs are ``slow``."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from laddermill_gym import load_scene
+from laddermill_gym.kernels.contract import CTRL_ELEVATOR, N_CONTROLS
+from laddermill_gym.ladder.initial import slot_elevators
+from laddermill_gym.model.configio import ConfigError
+
+SCENE = "laddermill_v1"
+
+
+def _closed_form(n, up, down, top, m):
+    """Slot k's elevator: up below (n + 1) // 2, top on the next m slots, down after them."""
+    h = (n + 1) // 2
+    return [up if k < h else (top if k < h + m else down) for k in range(n)]
+
+
+@pytest.mark.parametrize("n, m", [(101, 0), (101, 7), (101, 50), (11, 3), (4, 2)])
+def test_slot_elevators_follow_the_rule(n, m):
+    ini = dataclasses.replace(load_scene(SCENE, dimension=2).initial, top_slots=m, elevator_top=math.radians(-4.0))
+    got = slot_elevators(ini, n, closed=True)
+    assert got == _closed_form(n, ini.elevator_up, ini.elevator_down, math.radians(-4.0), m)
+    assert slot_elevators(ini, n, closed=False) == [ini.elevator_up] * n  # an open chain: all ascending
+
+
+def test_rule_off_keeps_the_scene_bit_for_bit():
+    """top_slots absent or 0: the v1 scene's start and controls are those of the ascending / descending halves."""
+    base = load_scene(SCENE, dimension=2)
+    x0, u0 = base.initial_state()
+    x1, u1 = load_scene(SCENE, dimension=2, overrides={"initial": {"top_slots": 0, "elevator_top_deg": -4.0}}
+                        ).initial_state()
+    np.testing.assert_array_equal(u0, u1)
+    np.testing.assert_array_equal(x0, x1)
+    el = u0[CTRL_ELEVATOR:101 * N_CONTROLS:N_CONTROLS]
+    np.testing.assert_allclose(np.degrees(el), [-8.0] * 51 + [-0.5] * 50, atol=1e-12)
+
+
+def test_rule_sets_the_controls_of_the_scene():
+    """The scene option reaches the simulator's controls: slots 51-57 at the top setting."""
+    sc = load_scene(SCENE, dimension=2, overrides={"initial": {"top_slots": 7, "elevator_top_deg": -4.0}})
+    assert sc.initial.top_slots == 7
+    el = np.degrees(sc.initial_state()[1][CTRL_ELEVATOR:101 * N_CONTROLS:N_CONTROLS])
+    np.testing.assert_allclose(el, _closed_form(101, -8.0, -0.5, -4.0, 7), atol=1e-12)
+
+
+@pytest.mark.parametrize("key, value, words", [("top_slots", 51, "at most the 50 descending slots"),
+                                                ("top_slots", -1, "top_slots"),
+                                                ("elevator_top_deg", 20.0, "elevator_top_deg")])
+def test_bad_rule_is_refused_naming_the_field(key, value, words):
+    with pytest.raises(ConfigError, match=words):
+        load_scene(SCENE, dimension=2, overrides={"initial": {key: value}})
