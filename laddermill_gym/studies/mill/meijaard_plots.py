@@ -34,7 +34,9 @@ def save_small(fig: Figure, path: Path, **kwargs) -> None:
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=80, **kwargs)
     buf.seek(0)
-    Image.open(buf).convert("RGB").quantize(colors=256).save(path, optimize=True)
+    # fast octree keeps the line colours apart (median cut, the default, merges the blue and orange lines into grey
+    # and red)
+    Image.open(buf).convert("RGB").quantize(colors=256, method=Image.Quantize.FASTOCTREE).save(path, optimize=True)
 
 
 def _title(row: dict, res) -> str:
