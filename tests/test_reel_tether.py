@@ -249,3 +249,22 @@ def test_cycle_power_converges_in_the_element_length():
     p = {ln: tether_run(ln, cycles=1)["power_W"] for ln in (60.0, 40.0, 30.0)}
     assert abs(p[40.0] / p[30.0] - 1.0) < 0.01
     assert abs(p[60.0] / p[40.0] - 1.0) < 0.01
+
+
+def test_the_task_reports_elements_and_ground_contacts():
+    """PumpingTask on the reeling config: info carries the elements in the air and the nodes on the ground (those of
+    the state: model.reel's counts); the single-element config's info has neither key."""
+    from laddermill_gym.envs.pumping.task import PumpingTask
+
+    task = PumpingTask(1, config="pumping_kite_reeling", episode_time=10.0)
+    task.reset(np.ones(1, bool), [np.random.default_rng(0)])
+    a = np.zeros((1, task.n_actions))
+    a[:, -1] = 0.5  # reel out at 5 m/s
+    for _ in range(80):  # 4 s: s = 5 (4 - tau (1 - e^(-4/tau))) = 17.5 m, past the first split at 10 m
+        info = task.step(a)[3]
+    asm, x = task.batch.assembly, task.batch.states[0]
+    assert info["tether_elements"][0] == nodes_in_air(asm, x) + 1 == 8  # 7 at the start
+    assert info["tether_ground_contacts"][0] == ground_contacts(asm, x)
+    plain = PumpingTask(1, config="pumping_kite", episode_time=10.0)
+    plain.reset(np.ones(1, bool), [np.random.default_rng(0)])
+    assert "tether_elements" not in plain.step(a)[3]

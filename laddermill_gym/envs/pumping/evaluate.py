@@ -10,6 +10,7 @@ from laddermill_gym.envs.wing_failures import status_texts, wing_failure_text, w
 from laddermill_gym.kernels.contract import LIMIT, SX_ENERGY, SX_MOVED, SX_SPEED
 from laddermill_gym.kernels.rigid.observe import AUX_MAX_TENSION, AUX_MIN_ALTITUDE
 from laddermill_gym.kernels.winch import MIN_FRACTION
+from laddermill_gym.model.reel import ground_contacts, is_reel, nodes_in_air
 from laddermill_gym.sim.batch import SUBSTEP_DIVISORS
 from laddermill_gym.sim.reports import state_problems, trial_state
 from laddermill_gym.sim.simulator import SimulationError
@@ -33,7 +34,8 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
     info (each (B,)): reward_power, reward_lateral, reward_rates, reward_failure (they sum to the reward);
     power_W, the net electrical power of the period [W] (its electrical energy / control_dt); mechanical_power_W
     [W] at the drum over the period; winch_speed_m_s; paid_out_m; drum_tension_N and max_tension_N [N];
-    min_altitude_m [m]; t [s]; n_clipped; failure (code).
+    min_altitude_m [m]; t [s]; n_clipped; failure (code); on a reeling tether (``kernels/reel.py``) also
+    tether_elements (in the air) and tether_ground_contacts (nodes on the ground).
     """
     b = task.batch
     o = task.raw_obs
@@ -49,6 +51,10 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
                 drum_tension_N=o[:, w["drum_tension"]].copy(), max_tension_N=task.aux[:, AUX_MAX_TENSION].copy(),
                 min_altitude_m=task.aux[:, AUX_MIN_ALTITUDE].copy(), t=b.t.copy(), n_clipped=n_clipped,
                 failure=failure)
+    asm = b.assembly
+    if is_reel(asm.station):  # a reeling tether (model/reel.py): its elements in the air, its nodes on the ground
+        info.update(tether_elements=np.array([nodes_in_air(asm, xi) + 1 for xi in x]),
+                    tether_ground_contacts=np.array([ground_contacts(asm, xi) for xi in x]))
     return reward, terminated, truncated, info
 
 
