@@ -59,27 +59,70 @@ def bench_vector(env_id: str, counts=(1, 8, 64, 512), quick: bool = False, echo=
     return rows
 
 
-def run_env_benchmark(quick: bool = False, json_path: str | None = None, echo=print) -> dict:
-    """The full env benchmark: TetheredWing-v0 at 1, 8, 64, 512 copies; LadderChain-v0 at 1 and 8; Rotorcraft-v0
-    at 1, 16 and 64; LadderMill-v0 at 1 and 8 (after its operating point, about 30 s, once); PointMassChain-v0 at
-    1, 8 and 64."""
+#: the envs of the benchmark: short name -> (env id, what it is, copy counts, SyncVectorEnv-budget options)
+ENVS: dict[str, tuple] = {
+    "TetheredWing-v0": ("laddermill_gym/TetheredWing-v0", "20 Hz control", (1, 8, 64, 512), {}),
+    "LadderChain-v0": ("laddermill_gym/LadderChain-v0", "101 wings, 20 Hz control", (1, 8), {"quick": True}),
+    "Rotorcraft-v0": ("laddermill_gym/Rotorcraft-v0", "one ROS34PW2 step of 50 ms per 20 Hz control period",
+                      (1, 16, 64), {"budget": 5e4}),
+    "LadderMill-v0": ("laddermill_gym/LadderMill-v0", "101 wings on the moving cable, 20 Hz control", (1, 8),
+                      {"quick": True, "budget": 2e4}),
+    "PointMassChain-v0": ("laddermill_gym/PointMassChain-v0",
+                          "101 point-mass kites, 2 implicit steps of 25 ms per 20 Hz period", (1, 8, 64),
+                          {"budget": 5e4}),
+}
+#: the result keys of the JSON file (as before the options came)
+_KEYS = {"TetheredWing-v0": "tethered_wing", "LadderChain-v0": "ladder_chain", "Rotorcraft-v0": "rotorcraft",
+         "LadderMill-v0": "laddermill", "PointMassChain-v0": "pointmass_chain"}
+
+
+def run_env_benchmark(quick: bool = False, json_path: str | None = None, echo=print, envs=None,
+                      copies=None) -> dict:
+    """The env benchmark: every env of :data:`ENVS` (or those named in ``envs``) at its copy counts (``copies``:
+    these counts for every env instead); LadderMill-v0 computes its operating point (about 30 s) once."""
     threads = os.environ.get("NUMBA_NUM_THREADS", "default")
     echo(f"Environment throughput (medians; numba threads: {threads}; cpus: {os.cpu_count()})")
     res = {"cpus": os.cpu_count(), "numba_threads": threads}
-    echo("laddermill_gym/TetheredWing-v0 (20 Hz control):")
-    res["tethered_wing"] = bench_vector("laddermill_gym/TetheredWing-v0", quick=quick, echo=echo)
-    echo("laddermill_gym/LadderChain-v0 (101 wings, 20 Hz control):")
-    res["ladder_chain"] = bench_vector("laddermill_gym/LadderChain-v0", counts=(1, 8), quick=True, echo=echo)
-    echo("laddermill_gym/Rotorcraft-v0 (one ROS34PW2 step of 50 ms per 20 Hz control period):")
-    res["rotorcraft"] = bench_vector("laddermill_gym/Rotorcraft-v0", counts=(1, 16, 64), quick=quick, echo=echo,
-                                     budget=5e4)
-    echo("laddermill_gym/LadderMill-v0 (101 wings on the moving cable, 20 Hz control):")
-    res["laddermill"] = bench_vector("laddermill_gym/LadderMill-v0", counts=(1, 8), quick=True, echo=echo, budget=2e4)
-    echo("laddermill_gym/PointMassChain-v0 (101 point-mass kites, 2 implicit steps of 25 ms per 20 Hz period):")
-    res["pointmass_chain"] = bench_vector("laddermill_gym/PointMassChain-v0", counts=(1, 8, 64), quick=quick,
-                                          echo=echo, budget=5e4)
+    for name in envs or ENVS:
+        env_id, what, counts, opts = ENVS[name]
+        echo(f"{env_id} ({what}):")
+        opts = dict(opts, quick=opts.get("quick", False) or quick)
+        res[_KEYS[name]] = bench_vector(env_id, counts=tuple(copies or counts), echo=echo, **opts)
     if json_path:
         with open(json_path, "w") as fh:
             json.dump(res, fh, indent=2)
         echo(f"figures written to {json_path}")
+    return res
+
+
+def thread_scaling(thread_counts, envs=None, copies: int = 512, quick: bool = False, echo=print) -> dict:
+    """Steps/s of the native vector env of each env in ``envs`` (default TetheredWing-v0 and Rotorcraft-v0) at
+    ``copies`` copies for each numba thread count of ``thread_counts`` (``numba.set_num_threads`` in this process;
+    a count above the pool's size, NUMBA_NUM_THREADS or the cpu count, is left out with a note), and the speed-up
+    over the first count."""
+    import numba
+
+    pool = numba.config.NUMBA_NUM_THREADS
+    counts = [k for k in thread_counts if 1 <= k <= pool]
+    if len(counts) < len(thread_counts):
+        echo(f"note: thread counts above the pool's {pool} threads (NUMBA_NUM_THREADS or the cpu count) left out")
+    res = {"cpus": os.cpu_count(), "pool": pool, "copies": copies}
+    for name in envs or ("TetheredWing-v0", "Rotorcraft-v0"):
+        env_id = ENVS[name][0]
+        native = gym.make_vec(env_id, num_envs=copies, vectorization_mode="vector_entry_point")
+        obs, _ = native.reset(seed=0)
+        from laddermill_gym.control.factory import make_controller
+
+        act = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
+        echo(f"{env_id} at {copies} copies:")
+        rows = []
+        for k in counts:
+            numba.set_num_threads(k)
+            n_steps = max(5, int((2e5 if quick else 1e6) / copies) // 10)  # the bench_vector budget per repeat
+            rate = _steps_per_second(native, act, n_steps, 3 if quick else 5)
+            rows.append({"threads": k, "steps_per_s": rate, "speedup": rate / rows[0]["steps_per_s"] if rows else 1.0})
+            echo(f"  {k:3d} threads: {rate:12,.0f} steps/s   speed-up {rows[-1]['speedup']:5.2f}x")
+        native.close()
+        numba.set_num_threads(pool)
+        res[_KEYS[name]] = rows
     return res
