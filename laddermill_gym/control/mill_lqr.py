@@ -16,9 +16,9 @@ lateral design on the slot layout reasonable, and the monodromy check makes it a
    in a few seconds: a gain designed at one phase (``design_phase``) is a frozen-time design of a slowly varying
    system. The config's ``design_model`` picks the model: ``transfer_phase`` (the phase just after a transfer,
    LadderMill-v0's) or ``period_mean`` (the mean of the models at the checked phases). On LadderMill-v1's mill
-   the wings at the loop's top (slots 50-52) change most over the period, and the transfer phase's gain is stable
-   at that phase only (frozen |z| up to 1.115 at the others); the mean model's gain is stable at 7 of the 8
-   phases and over the period (configs/agents/lqr_laddermill_v1.yaml).
+   the transfer phase's gain is stable at that phase only (frozen |z| up to 1.115 at the others; the least stable
+   mode at the loop's top, slot 51); the mean model's gain is stable at 7 of the 8 phases and over the period
+   (configs/agents/lqr_laddermill_v1.yaml).
 3. **The check.** :func:`design_mill_lqr` linearises at ``n_phases`` phases of the recorded orbit, closes the loop
    with the one gain at each (``frozen_radius``: largest |z| of the ZOH-discretised closed loop), and composes the
    period's transition matrix Phi = S prod_j (Ad_j - Bd_j K)^(n_j) with the transfer's own Jacobian S (finite
