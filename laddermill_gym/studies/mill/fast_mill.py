@@ -1,0 +1,112 @@
+"""The v1 mill in plane at V_c = 4-5 m/s (issue 30 point 1): the near-top elevator rule and the loop's downwind drift.
+
+Two measurements, printed as the doc (docs/wing_data.md, "5 m/s: what we found") quotes them:
+
+* ``case``: the scene ``laddermill_v1`` in plane from rest at cable speed V_c [m/s] with the near-top rule
+  (``initial.top_slots`` slots past the top at ``initial.elevator_top_deg``; 0 slots: the scene as shipped), run to
+  its periodic motion (:func:`laddermill_gym.ladder.periodic.run_to_periodic`, shape and power to 1e-3, at most
+  ``max_time`` s); prints the summary, the last period's tension extremes, the period-mean end tensions and the
+  range of the last ten period means of power and shape change.
+* ``drift``: the scene's periodic motion at 2 m/s (t = 1,345 s), then the cable speed ramped to V_c over ``ramp``
+  s and the rule switched on at the ramp's start; every ``every`` s: V_c, the power over the interval, the first,
+  last and top (element 51) tensions, the smallest tension of the interval and its element, and the downwind
+  position x [m] of slots 10, 25, 40, 50, 60, 75 and 90 (the loop leaning downwind: x falls).
+
+``python -m laddermill_gym.studies.mill.fast_mill case --speed 4 --top-slots 7 --top-deg -4``;
+``python -m laddermill_gym.studies.mill.fast_mill drift --speed 4 --time 400``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from laddermill_gym.model.configio import ConfigError
+from laddermill_gym.studies.commands import Parser, UsageError, check_number
+
+SCENE = "laddermill_v1"
+SLOTS = (10, 25, 40, 50, 60, 75, 90)  # [-] slots whose downwind position the drift prints
+
+
+def _overrides(speed_times, speeds, top_slots, top_deg):
+    return {"station": {"speed_times_s": list(speed_times), "speed_m_s": list(speeds)},
+            "initial": {"top_slots": int(top_slots), "elevator_top_deg": float(top_deg)}}
+
+
+def case(speed: float, top_slots: int, top_deg: float, max_time: float) -> None:
+    """One case from rest (the scene's 30 s ramp to ``speed``) run to its periodic motion; prints the figures."""
+    from laddermill_gym import load_scene
+    from laddermill_gym.ladder.periodic import run_to_periodic
+
+    sim = load_scene(SCENE, dimension=2, overrides=_overrides([0.0, 30.0], [0.0, speed], top_slots, top_deg)
+                     ).simulator()
+    res = run_to_periodic(sim, shape_tol=1e-3, power_tol=1e-3, max_time=max_time, progress=True)
+    last = res.history[-10:]
+    p = [h["mean_power_W"] / 1e3 for h in last]
+    s = [h["shape_change"] for h in last]
+    print(f"V_c {speed:g} m/s, top slots {top_slots} at {top_deg:g} deg: {res.summary()}")
+    print(f"last period: largest tension {np.max(res.tension_max_N) / 1e3:.1f} kN, smallest "
+          f"{np.min(res.tension_min_N) / 1e3:.1f} kN; period means T_first {res.tension_mean_N[0] / 1e3:.1f} kN, "
+          f"T_last {res.tension_mean_N[-1] / 1e3:.1f} kN, (T_first - T_last) V_c "
+          f"{(res.tension_mean_N[0] - res.tension_mean_N[-1]) * speed / 1e3:.1f} kW")
+    print(f"last {len(last)} periods: mean power {min(p):.1f} .. {max(p):.1f} kW, shape change "
+          f"{min(s):.2e} .. {max(s):.2e} l0")
+
+
+def drift(speed: float, ramp: float, duration: float, every: float, top_slots: int, top_deg: float) -> None:
+    """From the periodic motion at 2 m/s, V_c ramped to ``speed`` over ``ramp`` s; prints the loop every ``every`` s."""
+    from laddermill_gym import load_scene
+    from laddermill_gym.ladder.periodic import run_to_periodic
+
+    sim0 = load_scene(SCENE, dimension=2).simulator()
+    res = run_to_periodic(sim0, shape_tol=1e-3, power_tol=1e-3, max_time=3000.0, progress=True)
+    t1 = sim0.t
+    print(f"2 m/s: {res.summary()}")
+    sc = load_scene(SCENE, dimension=2, overrides=_overrides([0.0, 30.0, t1, t1 + ramp], [0.0, 2.0, 2.0, speed],
+                                                             top_slots, top_deg))
+    u = sc.initial_state()[1]  # the rule's elevators (those of the periodic state when the rule is off)
+    sim = sc.simulator(initial_state=sim0.state.copy(), controls=u)
+    sim.reset(state=sim0.state.copy(), t=t1, controls=u)
+    e0, t0 = sim.generator_energy(), sim.t
+    n = max(1, int(round(every / sim.settings.dt / 10)))
+    print("t - t1 [s]  V_c [m/s]  P [kW]  T_first  T_last  T_top  [kN]  min T [kN] @ element  x of slots "
+          f"{', '.join(map(str, SLOTS))} [m]")
+    while sim.t < t1 + duration - 1e-9:
+        tmin = np.full(sim.assembly.elements.count, np.inf)
+        for _ in range(n):
+            sim.step(n_steps=10)
+            tmin = np.minimum(tmin, sim.tensions())
+        ten = sim.tensions()
+        p = (sim.generator_energy() - e0) / (sim.t - t0)
+        e0, t0 = sim.generator_energy(), sim.t
+        x = sim.wing_positions()[list(SLOTS), 0]
+        print(f"{sim.t - t1:6.0f} {sim.cable_speed():9.2f} {p / 1e3:8.1f} {ten[0] / 1e3:8.0f} {ten[-1] / 1e3:7.0f} "
+              f"{ten[51] / 1e3:6.0f} {tmin.min() / 1e3:12.1f} @ {int(tmin.argmin()):3d}  "
+              + " ".join(f"{v:6.0f}" for v in x), flush=True)
+
+
+def main(argv=None) -> int:
+    p = Parser(prog="python -m laddermill_gym.studies.mill.fast_mill", description=__doc__.splitlines()[0])
+    p.add_argument("what", choices=("case", "drift"))
+    p.add_argument("--speed", type=float, default=5.0, help="cable speed V_c [m/s]")
+    p.add_argument("--top-slots", type=int, default=0, help="descending slots past the top at --top-deg [-]")
+    p.add_argument("--top-deg", type=float, default=-0.5, help="their elevator [deg]")
+    p.add_argument("--max-time", type=float, default=1500.0, help="case: periodic search [s]")
+    p.add_argument("--ramp", type=float, default=100.0, help="drift: ramp from 2 m/s [s]")
+    p.add_argument("--time", type=float, default=400.0, help="drift: time after the periodic motion at 2 m/s [s]")
+    p.add_argument("--every", type=float, default=25.0, help="drift: print interval [s]")
+    a = p.parse_args(argv)
+    try:
+        check_number("--speed", a.speed, low=0.0, high=30.0, unit="m/s")
+        for opt, v in (("--max-time", a.max_time), ("--ramp", a.ramp), ("--time", a.time), ("--every", a.every)):
+            check_number(opt, v, low=0.0, unit="s")
+        if a.what == "case":
+            case(a.speed, a.top_slots, a.top_deg, a.max_time)
+        else:
+            drift(a.speed, a.ramp, a.time, a.every, a.top_slots, a.top_deg)
+    except (UsageError, ConfigError) as err:
+        p.error(str(err))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
