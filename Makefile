@@ -63,7 +63,10 @@ figures:
 	python -m laddermill_gym.studies.rotorcraft.craft_stability --out results/craft_stability
 	cp results/craft_stability/rotorcraft_stability.png $(FIG)/rotorcraft_stability.png
 	python -m laddermill_gym.studies.rotorcraft.rotor_chart --out $(FIG)/rotor_power_chart.png --csv results/rotor_power_chart.csv
-	python -m laddermill_gym.studies.mill.meijaard --out results/meijaard
+	python -m laddermill_gym.studies.mill.meijaard --out results/meijaard_v1
+	for f in fig6_shapes fig7_tension fig8_direction_step claims; do \
+		cp results/meijaard_v1/$$f.png $(FIG)/meijaard_v1_$$f.png; done
+	python -m laddermill_gym.studies.mill.meijaard --scene laddermill --out results/meijaard
 	cp results/meijaard/fig6_shapes.png $(FIG)/meijaard_fig6_shapes.png
 	cp results/meijaard/fig7_tension.png $(FIG)/meijaard_fig7_tension.png
 	cp results/meijaard/fig8_direction_step.png $(FIG)/meijaard_fig8_direction_step.png
