@@ -110,6 +110,9 @@ def test_saved_search_is_reused(study, tmp_path):
     scene = mj.scene_path(TINY.scene)
     assert mj.store.fingerprint(scene, moved) != mj.store.fingerprint(scene, sim)
     assert mj.store.fingerprint(scene, mj.mill(2, 2.0, TINY)) == mj.store.fingerprint(scene, sim)
+    # a scene given as a path (a scene file made later, --scene path/to/scene.yaml) is saved under its stem
+    key = mj.store.case_key(str(scene), 2, 2.0, 11, 5.0, 10.0, 1e-3, 2.0)
+    assert mj.store.case_path(folder, key) == folder / "laddermill_v1_2D_Vc2.npz"
 
 
 def test_scene_variants():

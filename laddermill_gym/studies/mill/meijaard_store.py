@@ -47,8 +47,8 @@ def case_key(scene: str, dim: int, v_c: float, n_wings: int | None, ramp_s: floa
 
 
 def case_path(folder: Path, key: dict) -> Path:
-    """The file of a case under ``folder``: scene, dimension and V_c in the name."""
-    return Path(folder) / f"{key['scene']}_{key['dimension']}D_Vc{key['V_c_m_s']:g}.npz"
+    """The file of a case under ``folder``: the scene's name (a path's file stem), dimension and V_c in the name."""
+    return Path(folder) / f"{Path(key['scene']).stem}_{key['dimension']}D_Vc{key['V_c_m_s']:g}.npz"
 
 
 def save_case(path: Path, key: dict, state: np.ndarray, t: float, controls: np.ndarray,
