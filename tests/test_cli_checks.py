@@ -86,3 +86,12 @@ def test_a_step_past_the_stable_limit_is_warned(tmp_path, capsys):
     captured = capsys.readouterr()
     assert "estimated stability limit at the start 0.024" in captured.out
     assert "warning: dt = 0.025 s is above the estimated stability limit" in captured.err
+
+
+@pytest.mark.parametrize("option, value", [("--copies", "0"), ("--threads", "-2")])
+def test_bench_envs_refuses_counts_below_one(capsys, option, value):
+    """``laddermill bench-envs --copies / --threads`` (issue 32 point 2): a count below 1 is refused before any env is
+    made, naming the option and the value."""
+    assert cli_main(["bench-envs", option, value]) == 2
+    says = f"{option} = {value}: must be a positive integer"
+    assert capsys.readouterr().err.strip() == f"laddermill bench-envs: error: {says}"
