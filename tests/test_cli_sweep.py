@@ -13,7 +13,7 @@ from laddermill_gym.cli import main as cli_main
 MISSING, UNKNOWN, RANGE = "missing file", "unknown name", "out-of-range number"
 NOFILE = "/nonexistent/laddermill_sweep.yaml"
 
-#: (command, kind, arguments, text the message names); bench-envs, scenes and workers take no names or numbers,
+#: (command, kind, arguments, text the message names); scenes and workers take no names or numbers,
 #: zoo's numbers are rl-zoo3's own
 CASES = [
     ("simulate", MISSING, [NOFILE], "laddermill_sweep.yaml: no such file"),
@@ -25,6 +25,8 @@ CASES = [
     ("bench", UNKNOWN, ["--scenes", "nosuch_scene"], "nosuch_scene"),
     ("bench", MISSING, ["--json", "/nonexistent/x.json"], "--json = '/nonexistent/x.json': no such folder"),
     ("bench-envs", MISSING, ["--json", "/nonexistent/x.json"], "no such folder"),
+    ("bench-envs", RANGE, ["--copies", "0"], "--copies = 0: must be a positive integer"),
+    ("bench-envs", UNKNOWN, ["--envs", "NoSuch-v0"], "invalid choice: 'NoSuch-v0'"),
     ("scenes", UNKNOWN, ["nosuch_argument"], "unrecognized arguments: nosuch_argument"),
     ("train", MISSING, [NOFILE], "laddermill_sweep.yaml: no such file"),
     ("train", UNKNOWN, ["ppo_nosuch"], "config = 'ppo_nosuch'"),
