@@ -248,28 +248,11 @@ def cmd_bench(args) -> int:
     return 0
 
 
-#: the envs ``laddermill bench-envs`` measures (``studies/benchmarks/env_benchmark.ENVS``)
-ENV_BENCH_NAMES = ("TetheredWing-v0", "LadderChain-v0", "Rotorcraft-v0", "LadderMill-v0", "PointMassChain-v0")
-
-
 def cmd_bench_envs(args) -> int:
-    from laddermill_gym.studies.benchmarks.env_benchmark import run_env_benchmark
+    from laddermill_gym.studies.benchmarks.env_benchmark import bench_envs_command
 
     _check_json(args)
-    for name in ("copies", "threads"):
-        bad = [v for v in getattr(args, name) or [] if v < 1]
-        if bad:
-            raise UsageError(f"--{name} = {bad[0]}: must be a positive integer")
-    if args.threads:
-        from laddermill_gym.studies.benchmarks.env_benchmark import thread_scaling
-
-        res = thread_scaling(args.threads, envs=args.envs, copies=max(args.copies or [512]), quick=args.quick)
-        if args.json:
-            Path(args.json).write_text(json.dumps(res, indent=2))
-            print(f"wrote {args.json}")
-        return 0
-    run_env_benchmark(quick=args.quick, json_path=args.json, envs=args.envs, copies=args.copies)
-    return 0
+    return bench_envs_command(args)
 
 
 def cmd_scenes(args) -> int:
@@ -376,14 +359,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="only the envs' start-up: make + reset + step in fresh processes, cold (empty numba cache) "
                         "and warm; with --quick warm only, from the current cache")
     e = _benchmark_parser(sub, "bench-envs", "env steps/s: native batched vector env vs SyncVectorEnv", cmd_bench_envs)
-    e.add_argument("--envs", nargs="+", default=None, choices=ENV_BENCH_NAMES,
-                   help="only these envs (default: all five)")
-    e.add_argument("--copies", nargs="+", type=int, default=None,
-                   help="these copy counts for every env benchmarked (default: each env's own list)")
-    e.add_argument("--threads", nargs="+", type=int, default=None,
-                   help="thread scaling instead: the native env at the largest --copies (default 512) for each numba "
-                        "thread count, steps/s and speed-up over the first count (default envs: TetheredWing-v0, "
-                        "Rotorcraft-v0)")
+    e.add_argument("--envs", nargs="+", default=None, help="only these envs, e.g. TetheredWing-v0 (default: all five)")
+    e.add_argument("--copies", nargs="+", type=int, default=None, help="these copy counts for every env named")
+    e.add_argument("--threads", nargs="+", type=int, default=None, help="thread scaling at the largest --copies (512)")
     c = sub.add_parser("scenes", help="list the scenes")
     c.set_defaults(func=cmd_scenes)
     return p

@@ -26,7 +26,7 @@ CASES = [
     ("bench", MISSING, ["--json", "/nonexistent/x.json"], "--json = '/nonexistent/x.json': no such folder"),
     ("bench-envs", MISSING, ["--json", "/nonexistent/x.json"], "no such folder"),
     ("bench-envs", RANGE, ["--copies", "0"], "--copies = 0: must be a positive integer"),
-    ("bench-envs", UNKNOWN, ["--envs", "NoSuch-v0"], "invalid choice: 'NoSuch-v0'"),
+    ("bench-envs", UNKNOWN, ["--envs", "NoSuch-v0"], "--envs = 'NoSuch-v0': not one of"),
     ("scenes", UNKNOWN, ["nosuch_argument"], "unrecognized arguments: nosuch_argument"),
     ("train", MISSING, [NOFILE], "laddermill_sweep.yaml: no such file"),
     ("train", UNKNOWN, ["ppo_nosuch"], "config = 'ppo_nosuch'"),

@@ -95,6 +95,30 @@ def run_env_benchmark(quick: bool = False, json_path: str | None = None, echo=pr
     return res
 
 
+def bench_envs_command(args) -> int:
+    """``laddermill bench-envs``: :func:`run_env_benchmark`, or :func:`thread_scaling` with ``--threads`` (at the
+    largest ``--copies``, default 512); UsageError for an env name not in :data:`ENVS` or a count below 1."""
+    from pathlib import Path
+
+    from laddermill_gym.studies.commands import UsageError
+
+    for name in ("copies", "threads"):
+        bad = [v for v in getattr(args, name) or [] if v < 1]
+        if bad:
+            raise UsageError(f"--{name} = {bad[0]}: must be a positive integer")
+    unknown = [e for e in args.envs or [] if e not in ENVS]
+    if unknown:
+        raise UsageError(f"--envs = {unknown[0]!r}: not one of {', '.join(ENVS)}")
+    if not args.threads:
+        run_env_benchmark(quick=args.quick, json_path=args.json, envs=args.envs, copies=args.copies)
+        return 0
+    res = thread_scaling(args.threads, envs=args.envs, copies=max(args.copies or [512]), quick=args.quick)
+    if args.json:
+        Path(args.json).write_text(json.dumps(res, indent=2))
+        print(f"wrote {args.json}")
+    return 0
+
+
 def thread_scaling(thread_counts, envs=None, copies: int = 512, quick: bool = False, echo=print) -> dict:
     """Steps/s of the native vector env of each env in ``envs`` (default TetheredWing-v0 and Rotorcraft-v0) at
     ``copies`` copies for each numba thread count of ``thread_counts`` (``numba.set_num_threads`` in this process;
