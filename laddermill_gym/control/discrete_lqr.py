@@ -1,5 +1,7 @@
-"""Discrete LQR on the zero-order-hold discretisation of a continuous model (``control.c2d``, ``control.dlqr``),
-and a text table of eigenvalues (natural frequency, damping, period, doubling or halving time)."""
+"""Discrete LQR on the zero-order-hold discretisation of a continuous model (``control.c2d``, ``control.dlqr``;
+from :data:`~laddermill_gym.control.riccati.DOUBLING_MIN_STATES` states the Riccati equation by doubling,
+:mod:`laddermill_gym.control.riccati`), and a text table of eigenvalues (natural frequency, damping, period,
+doubling or halving time)."""
 
 from __future__ import annotations
 
@@ -8,6 +10,8 @@ from dataclasses import dataclass
 
 import control
 import numpy as np
+
+from laddermill_gym.control.riccati import DOUBLING_MIN_STATES, dare_doubling
 
 
 @dataclass(frozen=True)
@@ -36,7 +40,8 @@ class DiscreteLQR:
 
 
 def discrete_lqr(A: np.ndarray, B: np.ndarray, Q: np.ndarray, R: np.ndarray, dt: float) -> DiscreteLQR:
-    """ZOH-discretise (A, B) at ``dt`` [s] (``control.c2d``) and solve the discrete LQR (``control.dlqr``).
+    """ZOH-discretise (A, B) at ``dt`` [s] (``control.c2d``) and solve the discrete LQR (``control.dlqr``; for
+    n >= ``DOUBLING_MIN_STATES`` states the Riccati equation by doubling, ``riccati.dare_doubling``).
 
     Notes
     -----
@@ -47,7 +52,12 @@ def discrete_lqr(A: np.ndarray, B: np.ndarray, Q: np.ndarray, R: np.ndarray, dt:
     sysc = control.ss(A, B, np.eye(n), np.zeros((n, B.shape[1])))
     sysd = control.c2d(sysc, dt, method="zoh")
     Ad, Bd = np.asarray(sysd.A), np.asarray(sysd.B)
-    K, S, E = control.dlqr(Ad, Bd, Q, R)
+    S = dare_doubling(Ad, Bd, Q, R) if n >= DOUBLING_MIN_STATES else None
+    if S is None:
+        K, S, E = control.dlqr(Ad, Bd, Q, R)
+    else:  # the gain and closed loop as control.dlqr forms them
+        K = np.linalg.solve(R + Bd.T @ S @ Bd, Bd.T @ S @ Ad)
+        E = np.linalg.eigvals(Ad - Bd @ K)
     return DiscreteLQR(A=A, B=B, Ad=Ad, Bd=Bd, dt=float(dt), Q=Q, R=R, K=np.asarray(K), S=np.asarray(S),
                        closed_loop=np.asarray(E), open_loop=np.linalg.eigvals(A))
 
