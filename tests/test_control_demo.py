@@ -23,7 +23,7 @@ def runs():
 
 
 def test_runs_start_at_the_operating_point_and_count_time_from_the_step(runs):
-    dt = 0.05  # LadderMill-v0's control period [s]
+    dt = 0.05  # the mill ids' control period [s]
     for r in runs:
         k = np.arange(1, len(r.t_s) + 1)
         assert np.allclose(r.t_s, k * dt - demo.STEP_TIME, atol=1e-9)

@@ -2,7 +2,7 @@
 wind-direction step, once open loop and once under the lateral LQR (and any trained policy given), in one figure
 and one GIF.
 
-    laddermill demo [--env laddermill_gym/LadderMill-v0] [--time 60] [--controllers open_loop lqr] [--out runs]
+    laddermill demo [--env laddermill_gym/LadderMill-v1] [--time 60] [--controllers open_loop lqr] [--out runs]
 
 Every run starts from the same state (the env's operating point, seed 0) and meets the same step (Meijaard et al.
 1999, Fig. 8: 0.01 rad at 1 s). The figure ``demo.png`` shows, against the time since the step, the generator's
@@ -27,7 +27,7 @@ from laddermill_gym.studies.commands import Parser, UsageError, check_controller
 __all__ = ["DEFAULT_ENV", "STEP", "STEP_TIME", "ControlRun", "run_demo", "plot_demo", "write_gif", "main"]
 
 #: the newest mill id: the one the main job shows
-DEFAULT_ENV = "laddermill_gym/LadderMill-v0"
+DEFAULT_ENV = "laddermill_gym/LadderMill-v1"
 #: [rad] the paper's wind-direction step (Meijaard et al. 1999, Fig. 8)
 STEP = 0.01
 #: [s] when it comes, after the start at the operating point
