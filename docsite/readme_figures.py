@@ -89,7 +89,7 @@ def _env_rows(readme: str) -> dict[str, list[str]]:
     rows = {}
     for line in readme.splitlines():
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        if len(cells) == 6 and cells[0].startswith("`") and cells[0].endswith("-v0`"):
+        if len(cells) == 6 and re.fullmatch(r"`\w+-v\d+`", cells[0]):
             rows[cells[0].strip("`")] = cells
     return rows
 
