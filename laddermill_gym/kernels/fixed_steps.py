@@ -140,7 +140,7 @@ def next_kink(tc, te, t, dt, j, tmod, ms, md):
     return te
 
 
-@njit(cache=True, error_model="numpy", _nrt=False)  # allocates nothing: no reference counting of its 60-odd arrays
+@njit(cache=True, error_model="numpy")
 def advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks):
     """n fixed steps of dt [s] from t [s] (RK4 when ``tableau`` is None, else that Rosenbrock-W method) stepping
     onto the modulation's kinks as ``breaks`` says (``BREAKS_*``). Runs of plain steps go through

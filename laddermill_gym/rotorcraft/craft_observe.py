@@ -76,8 +76,8 @@ def _observe_craft(t, x, u, dx, M, W, cp, ref, tether_end, obs, aux):
     return status
 
 
-# one compiled function for both kernels, without reference counting: see kernels/rigid/observe.py
-@njit(cache=True, error_model="numpy", _nrt=False)
+# inlined into both kernels (same flags): the step-and-observe kernel is compiled once, not twice (issue 32)
+@njit(cache=True, error_model="numpy", inline="always")
 def _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
                              tether_end, obs, aux, status, done):
     run, st, dn, Mb, Wb = advance_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks)

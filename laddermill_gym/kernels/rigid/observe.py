@@ -103,13 +103,8 @@ def observe_state(t, x, u, M, W, nominal, below, ground, obs, aux):
     return _observe_one(t, x, u, W.k1, M, W, nominal, below, ground, obs, aux)
 
 
-# One compiled function called by both kernels (the parallel and the serial one share its one compile), without
-# numba's reference counting (_nrt=False, it allocates nothing): inlined into an NRT kernel, the copy's 40-odd
-# views (its state, workspace and air rows) each cost an atomic increment and decrement shared by every thread
-# (issue 32 point 2; same bits). Measured on the shared 2-core machine, one thread, 512 copies: TetheredWing-v0
-# 16.1 against 17.9 us of CPU per env step, Rotorcraft-v0 50.3 against 57.4 (medians of 3 alternated runs whose
-# spread is 30 %: a gain of about a tenth, within the noise; the W step itself is most of the rest).
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+# inlined into both kernels (same flags): the step-and-observe kernel is compiled once, not twice (issue 32)
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
 def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below,
                        ground, obs, aux, status, done):
     run, st, dn, Mb, Wb = advance_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks)
