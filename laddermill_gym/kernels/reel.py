@@ -46,6 +46,7 @@ from numba import njit
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.dispatch import register_kind, register_moving_ends
 from laddermill_gym.kernels.rigid.blocks import tree_solve
+from laddermill_gym.kernels.rigid.kinds import check_wings3d
 from laddermill_gym.kernels.rigid.rhs3d import assemble3d
 from laddermill_gym.kernels.station import cable_speed, station_rates
 
@@ -229,20 +230,9 @@ def reel3d_check(kind, x, M, limits):
     for i in range(x.size):
         if not math.isfinite(x[i]):
             return C.NONFINITE
-    for b in range(nw):
-        o = C.B3_SIZE * b
-        oq, ov, orr = o + C.B3_QUAT, o + C.B3_VEL, o + C.B3_RATE
-        n = math.sqrt(x[oq] ** 2 + x[oq + 1] ** 2 + x[oq + 2] ** 2 + x[oq + 3] ** 2)
-        if not (n > 1e-100 and n < 1e100):
-            return C.NONFINITE
-        for i in range(4):
-            x[oq + i] /= n
-        if x[ov] ** 2 + x[ov + 1] ** 2 + x[ov + 2] ** 2 > vmax2:
-            return C.LIMIT
-        if x[orr] ** 2 + x[orr + 1] ** 2 + x[orr + 2] ** 2 > wmax2:
-            return C.LIMIT
-        if -x[o + C.B3_POS + 2] <= limits[C.LIM_GROUND]:
-            return C.GROUND
+    st = check_wings3d(x, nw, vmax2, wmax2, limits[C.LIM_GROUND])
+    if st != C.OK:
+        return st
     for j in range(nn):
         o = C.B3_SIZE * nw + C.N3_SIZE * j + C.N3_VEL
         if x[o] ** 2 + x[o + 1] ** 2 + x[o + 2] ** 2 > vmax2:

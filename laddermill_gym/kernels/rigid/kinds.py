@@ -103,14 +103,11 @@ def _check_bounds(M, limits):
             limits[C.LIM_RATE] * limits[C.LIM_RATE], limits[C.LIM_GROUND])
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def rigid3d_check(kind, x, M, limits):
-    """Renormalise every body's quaternion and check speeds [m/s] and rates [rad/s] against ``limits``, and the
-    heights -z [m] of the body CGs and free nodes against the ground height ``limits[LIM_GROUND]`` (GROUND at or
-    below it)."""
-    nw, nn, vmax2, wmax2, hg = _check_bounds(M, limits)
-    if not _all_finite(x):
-        return C.NONFINITE
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
+def check_wings3d(x, nw, vmax2, wmax2, hg):
+    """The wings' part of a 3D post-step check (the first ``nw`` body blocks of ``x``): renormalise each quaternion
+    (NONFINITE if it vanished or overflowed), LIMIT for a squared speed over ``vmax2`` [m^2/s^2] or squared rate over
+    ``wmax2`` [rad^2/s^2], GROUND for a CG height -z at or below ``hg`` [m]; else OK."""
     for k in range(nw):
         o = C.B3_SIZE * k
         oq, ov, orr = o + C.B3_QUAT, o + C.B3_VEL, o + C.B3_RATE
@@ -125,6 +122,20 @@ def rigid3d_check(kind, x, M, limits):
             return C.LIMIT
         if -x[o + C.B3_POS + 2] <= hg:
             return C.GROUND
+    return C.OK
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def rigid3d_check(kind, x, M, limits):
+    """Renormalise every body's quaternion and check speeds [m/s] and rates [rad/s] against ``limits``, and the
+    heights -z [m] of the body CGs and free nodes against the ground height ``limits[LIM_GROUND]`` (GROUND at or
+    below it)."""
+    nw, nn, vmax2, wmax2, hg = _check_bounds(M, limits)
+    if not _all_finite(x):
+        return C.NONFINITE
+    st = check_wings3d(x, nw, vmax2, wmax2, hg)
+    if st != C.OK:
+        return st
     base = C.B3_SIZE * nw
     for j in range(nn):
         o = base + C.N3_SIZE * j + C.N3_VEL
