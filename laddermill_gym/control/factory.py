@@ -189,6 +189,10 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     path = Path(spec)
     if not path.exists():
         raise ValueError(f"controller = {spec!r}: not 'open_loop', 'lqr', 'lqr:<config>' or an existing model path")
+    from laddermill_gym.control.shared_policy import SharedPolicyController
+
+    if SharedPolicyController.is_shared_run(path):  # a shared per-wing policy (laddermill train ppo_mill_v1)
+        return SharedPolicyController.load(path, env_id, {k: v for k, v in kw.items() if k != "parallel"})
     from laddermill_gym.control.sb3_policy import SB3Controller
 
     ctrl = SB3Controller.load(path)

@@ -240,6 +240,12 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--replot", action="store_true", help="only redraw the training curve of the run folder "
                    "--out (config: its config.yaml) with the LQR and open-loop references")
     args = p.parse_args(argv)
+    from laddermill_gym.harness.shared_config import is_shared_config
+
+    if is_shared_config(args.config):  # a shared per-wing policy (configs/agents/ppo_mill_v1.yaml): its own trainer
+        from laddermill_gym.harness.shared_train import main as shared_main
+
+        return shared_main(sys.argv[1:] if argv is None else argv)
     cfg = load_rl_config(args.config)
     if args.replot:
         if args.out is None or not (args.out / "evaluations.csv").is_file():

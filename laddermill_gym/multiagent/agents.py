@@ -144,9 +144,24 @@ class WingAgents:
     def observations(self) -> np.ndarray:
         """Local observations (B, n, d) float32 of every agent of every copy at the task's current observation,
         clipped to the bounds (a non-finite entry: the bound)."""
-        t, n, m, k = self.task, self.n_agents, self.block, self.k
-        B = t.n_copies
-        own = t.obs[:, : n * m].reshape(B, n, m)
+        return self.local_observations(self.task.obs, self.shared())
+
+    def local_observations(self, obs: np.ndarray, shared: np.ndarray | None = None) -> np.ndarray:
+        """Local observations (B, n, d) float32 of single-agent observations ``obs`` (B, D) (the task's layout: n
+        wing blocks first) with shared entries ``shared`` (B, g); None: the mill's station entries of ``obs`` (the
+        slots only; the chains' power needs the task's state). A trained shared policy maps the single-agent env's
+        observation to its agents with it, by the same arithmetic as :meth:`observations`."""
+        n, m, k = self.n_agents, self.block, self.k
+        obs = np.asarray(obs)
+        if obs.ndim != 2 or obs.shape[1] != self.task.obs_dim:
+            raise ValueError(f"{self.env_id}: observations of shape {obs.shape}, expected (B, {self.task.obs_dim})")
+        if shared is None:
+            if self.kind != "slot":
+                raise ValueError(f"{self.env_id}: the {self.kind}s' shared entry (ground power) is not in the "
+                                 "observation; pass shared")
+            shared = obs[:, -N_STATION_OBS:][:, list(_MILL_SHARED)]
+        B = obs.shape[0]
+        own = obs[:, : n * m].reshape(B, n, m)
         padded = np.zeros((B, n + 2 * k, m))
         padded[:, k: k + n] = own
         parts = [own]
@@ -156,7 +171,7 @@ class WingAgents:
         present = ((idx[:, None] + self.offsets[None, :] >= 0) & (idx[:, None] + self.offsets[None, :] < n))
         parts.append(np.broadcast_to(present.astype(float), (B, n, 2 * k)))
         parts.append(np.broadcast_to((idx / max(n - 1, 1))[None, :, None], (B, n, 1)))
-        parts.append(np.broadcast_to(self.shared()[:, None, :], (B, n, self.n_shared)))
+        parts.append(np.broadcast_to(np.asarray(shared)[:, None, :], (B, n, self.n_shared)))
         raw = np.concatenate(parts, axis=2)
         out = np.empty_like(raw)
         clip_observations(raw, self.obs_low, self.obs_high, out)

@@ -1,0 +1,260 @@
+"""Train a parameter-shared per-wing policy of the mill (issue 31 point 2) from one config:
+
+    laddermill train configs/agents/ppo_mill_v1.yaml [--out runs/ppo_mill_v1] [--minutes M]
+
+Two phases, one policy (:mod:`laddermill_gym.control.shared_policy`: a gain-scheduled linear actor on each slot's
+local observation, the same weights for every slot):
+
+1. **Imitation (DAgger; Ross et al. 2011, AISTATS)**: the LQR (``make_controller("lqr", env)``, the centralised
+   design that sees every slot) labels every slot's rudder and aileron at the states visited; iteration 0 flies
+   the LQR, later iterations fly the learner, and the labels of all iterations are aggregated; each iteration
+   fits the actor's weights by ridge regression (least squares of the features, whose normal equations are
+   accumulated). What is learnt here is learnt from the LQR's actions, not from reward.
+2. **PPO (Schulman et al. 2017) fine-tuning** of that policy on the per-wing reward (``multiagent.agents``:
+   shared power and failure terms, local lateral, rate and effort terms) with the shared-policy VecEnv (every
+   slot of ``n_copies`` copies one env), starting from the cloned weights with a small action noise.
+
+Every ``eval.every`` steps (and after each DAgger iteration) the policy is flown deterministically on the
+single-agent env's registered scenario (the paper's 0.01 rad step at 1 s) for ``eval.episode_time`` seconds,
+seeds 0 .. n - 1; ``model.zip`` is the best evaluation (most episodes held, then mean power), ``last_model.zip`` the
+last, ``bc_model.zip`` the cloned policy before PPO. The run folder also gets ``training_curve.csv`` / ``.png``
+(with the LQR's figures on the same episodes), ``config.yaml`` and ``shared_policy.yaml`` (what
+``make_controller(<run folder>, env)`` needs). Observations are not normalised by running statistics: the actor
+divides the lateral deviations by the LQR config's fixed Bryson scales, so no VecNormalize file is written.
+"""
+
+from __future__ import annotations
+
+import csv
+import shutil
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import yaml
+from tqdm import tqdm
+
+from laddermill_gym.harness.shared_config import SharedTrainConfig, load_shared_config
+from laddermill_gym.studies.commands import Parser
+
+__all__ = ["train_shared", "main", "CURVE_FIELDS"]
+
+CURVE_FIELDS = ("phase", "step", "minutes", "held", "mean_length_s", "mean_power_kW", "max_lateral_m",
+                "mean_return")
+
+
+def _bryson_scales(env_id: str) -> np.ndarray:
+    """(dy, vy, phi, psi, p, r) scales [m, m/s, rad, rad, rad/s, rad/s]: the env's LQR config's max_state."""
+    from laddermill_gym.control.factory import DEFAULT_LQR_CONFIGS
+    from laddermill_gym.control.lqr_config import load_lqr_config
+
+    return np.asarray(load_lqr_config(DEFAULT_LQR_CONFIGS[env_id]).max_state, dtype=float)
+
+
+def _policy_kwargs(cfg: SharedTrainConfig, view, trim, scales) -> dict:
+    from laddermill_gym.control.shared_policy import GainScheduledExtractor
+
+    return dict(features_extractor_class=GainScheduledExtractor,
+                features_extractor_kwargs=dict(n_agents=view.n_agents, k=cfg.k, block=view.block,
+                                               n_basis=cfg.n_basis, trim=np.asarray(trim).tolist(),
+                                               scales=np.asarray(scales).tolist()),
+                net_arch=dict(pi=[], vf=[64, 64]), log_std_init=cfg.log_std_init, ortho_init=False)
+
+
+class Evaluator:
+    """Deterministic episodes of the single-agent env (registered scenario, ``episode_time``) for a model."""
+
+    def __init__(self, cfg: SharedTrainConfig, meta: dict):
+        import gymnasium as gym
+
+        from laddermill_gym.multiagent.agents import WingAgents, build_task
+
+        kw = {k: v for k, v in cfg.env_kwargs.items() if k not in ("episode_time", "initial_noise", "reward")}
+        self.env = gym.make_vec(cfg.env_id, num_envs=cfg.eval_episodes, vectorization_mode="vector_entry_point",
+                                episode_time=cfg.eval_time, **kw)
+        self.view = WingAgents(build_task(cfg.env_id, 1, kw), cfg.env_id, cfg.k)
+        self.meta, self.eval_time = meta, cfg.eval_time
+
+    def run(self, controller) -> dict:
+        from laddermill_gym.harness.evaluate import run_episodes
+
+        r = run_episodes(controller, self.env, record=False)
+        return dict(held=int(np.sum(r.lengths_s >= self.eval_time - 1e-6)), mean_length_s=float(r.lengths_s.mean()),
+                    mean_power_kW=float(r.mean_power_W.mean() / 1e3), max_lateral_m=float(r.max_lateral_m.max()),
+                    mean_return=float(r.returns.mean()))
+
+    def policy(self, model):
+        from laddermill_gym.control.shared_policy import SharedPolicyController
+
+        return SharedPolicyController(model, self.view, Path("<training>"), self.meta)
+
+
+def _score(row: dict) -> tuple:
+    return (row["held"], row["mean_length_s"], row["mean_power_kW"])
+
+
+def _fit(model, G: np.ndarray, b: np.ndarray, count: int, ridge: float) -> None:
+    """The actor's weights from the accumulated normal equations (G + ridge N I) W = b."""
+    import torch as th
+
+    W = np.linalg.solve(G + ridge * count * np.eye(G.shape[0]), b)
+    net = model.policy.action_net
+    with th.no_grad():
+        net.weight.copy_(th.as_tensor(W.T, dtype=net.weight.dtype))
+        net.bias.zero_()
+
+
+def imitation(cfg: SharedTrainConfig, model, venv, teacher, log, pbar) -> None:
+    """DAgger (see the module doc): ``cfg.bc_iterations`` rounds of ``cfg.bc_steps`` control steps of every
+    copy, the teacher's actions as labels, a ridge fit of the actor after each; ``log(phase, step)`` evaluates."""
+    import torch as th
+
+    ext, task = model.policy.features_extractor, venv.task
+    F = ext.features_dim
+    G, b, count = np.zeros((F, F)), np.zeros((F, venv.view.act_dim)), 0
+    obs = venv.reset()
+    for it in range(cfg.bc_iterations):
+        for _ in range(cfg.bc_steps):
+            labels = np.asarray(teacher.predict(task.obs, deterministic=True)[0], dtype=float)
+            labels = labels.reshape(venv.num_envs, venv.view.act_dim)
+            with th.no_grad():
+                phi = ext(th.as_tensor(obs)).double().numpy()
+            G += phi.T @ phi
+            b += phi.T @ labels
+            count += phi.shape[0]
+            act = labels if it == 0 else model.predict(obs, deterministic=True)[0]
+            obs = venv.step(act)[0]
+            pbar.update(1)
+        _fit(model, G, b, count, cfg.bc_ridge)
+        log("imitation", it + 1)
+
+
+def _ppo_callback(cfg: SharedTrainConfig, log, pbar, t_end: float):
+    from stable_baselines3.common.callbacks import BaseCallback
+
+    class Callback(BaseCallback):
+        def __init__(self):
+            super().__init__()
+            self.next_eval = cfg.eval_every
+
+        def _on_step(self) -> bool:
+            pbar.update(self.model.num_timesteps - pbar.n)
+            if self.model.num_timesteps >= self.next_eval:
+                log("ppo", int(self.model.num_timesteps))
+                self.next_eval += cfg.eval_every
+            return time.perf_counter() < t_end
+
+    return Callback()
+
+
+def plot_curve(out: Path, rows: list[dict], lqr: dict | None) -> Path:
+    """Episodes held and mean power against wall time, the LQR's as dashed lines."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from laddermill_gym.plotting import save_figure
+
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.5, 6), sharex=True)
+    for phase, style in (("imitation", "o-"), ("ppo", "s-")):
+        r = [x for x in rows if x["phase"] == phase]
+        a1.plot([x["minutes"] for x in r], [x["mean_length_s"] for x in r], style, label=phase)
+        a2.plot([x["minutes"] for x in r], [x["mean_power_kW"] for x in r], style, label=phase)
+    if lqr:
+        a1.axhline(lqr["mean_length_s"], ls="--", color="k", label="LQR")
+        a2.axhline(lqr["mean_power_kW"], ls="--", color="k", label="LQR")
+    a1.set_ylabel("mean episode length [s]")
+    a2.set_ylabel("mean power [kW]")
+    a2.set_xlabel("wall time [min]")
+    for a in (a1, a2):
+        a.grid(alpha=0.3)
+        a.legend()
+    return save_figure(fig, out / "training_curve.png")
+
+
+def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
+    """Run both phases into ``out`` (see the module doc); returns the best evaluation row and the LQR's."""
+    import torch as th
+    from stable_baselines3 import PPO
+
+    from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.multiagent.sb3 import shared_policy_vec_env
+
+    th.set_num_threads(1)
+    t0 = time.perf_counter()
+    out.mkdir(parents=True, exist_ok=True)
+    shutil.copyfile(cfg.file, out / "config.yaml")
+    venv = shared_policy_vec_env(cfg.env_id, cfg.bc_copies, k=cfg.k, seed=cfg.seed, **cfg.train_env_kwargs())
+    view = venv.view
+    teacher = make_controller("lqr", cfg.env_id, {k: v for k, v in cfg.env_kwargs.items() if k != "initial_noise"})
+    meta = dict(env=cfg.env_id, k=cfg.k, n_agents=view.n_agents, obs_dim=view.obs_dim, algorithm="PPO",
+                env_kwargs={k: v for k, v in cfg.env_kwargs.items() if k in ("scene", "scene_options", "authority",
+                                                                              "control_dt", "n_wings")},
+                config=str(cfg.file.name), seed=cfg.seed)
+    (out / "shared_policy.yaml").write_text(yaml.safe_dump(meta, sort_keys=False))
+    pk = _policy_kwargs(cfg, view, teacher.trim_attitude, _bryson_scales(cfg.env_id))
+    model = PPO("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=pk, device="cpu", verbose=0,
+                **cfg.hyperparameters)
+    ev = Evaluator(cfg, meta)
+    lqr = ev.run(teacher)
+    print(f"LQR on the evaluation episodes: {lqr}")
+    rows: list[dict] = []
+    best = {"row": None}
+
+    def log(phase: str, step: int) -> None:
+        row = dict(phase=phase, step=step, minutes=round((time.perf_counter() - t0) / 60, 2),
+                   **ev.run(ev.policy(model)))
+        rows.append(row)
+        tqdm.write(f"{phase} {step}: {row}")
+        if best["row"] is None or _score(row) > _score(best["row"]):
+            best["row"] = row
+            model.save(out / "model.zip")
+        model.save(out / "last_model.zip")
+        with open(out / "training_curve.csv", "w", newline="") as fh:
+            w = csv.DictWriter(fh, fieldnames=list(CURVE_FIELDS))
+            w.writeheader()
+            w.writerows(rows)
+
+    with tqdm(total=cfg.bc_iterations * cfg.bc_steps, unit="step", desc="imitation (DAgger)") as pbar:
+        imitation(cfg, model, venv, teacher, log, pbar)
+    model.save(out / "bc_model.zip")
+    t_end = t0 + 60 * min(cfg.time_limit_minutes, (time.perf_counter() - t0) / 60 + cfg.ppo_minutes)
+    if cfg.ppo_timesteps > 0 and time.perf_counter() < t_end:
+        ppo_env = venv if cfg.ppo_copies == cfg.bc_copies else shared_policy_vec_env(
+            cfg.env_id, cfg.ppo_copies, k=cfg.k, seed=cfg.seed + 1000, **cfg.train_env_kwargs())
+        model.set_env(ppo_env)
+        with tqdm(total=cfg.ppo_timesteps, unit="step", desc="PPO fine-tuning") as pbar:
+            model.learn(total_timesteps=cfg.ppo_timesteps, callback=_ppo_callback(cfg, log, pbar, t_end),
+                        reset_num_timesteps=True)
+        log("ppo", int(model.num_timesteps))
+    plot_curve(out, rows, lqr)
+    with open(out / "lqr_reference.csv", "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(lqr))
+        w.writeheader()
+        w.writerow(lqr)
+    return dict(best=best["row"], lqr=lqr, minutes=round((time.perf_counter() - t0) / 60, 2))
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = Parser(prog="laddermill train", description="train a shared per-wing policy (imitation, then PPO)")
+    p.add_argument("config", help="configs/agents/ppo_mill_v1.yaml or a shipped config's name")
+    p.add_argument("--out", type=Path, help="run folder (default runs/<config name>_seed<seed>)")
+    p.add_argument("--minutes", type=float, help="override ppo.time_limit_minutes")
+    args = p.parse_args(argv)
+    cfg = load_shared_config(args.config)
+    if args.minutes is not None:
+        if not args.minutes >= 0:
+            p.error(f"--minutes = {args.minutes}: must be >= 0")
+        import dataclasses
+
+        cfg = dataclasses.replace(cfg, ppo_minutes=float(args.minutes))
+    out = args.out or Path("runs") / f"{Path(args.config).stem}_seed{cfg.seed}"
+    s = train_shared(cfg, out)
+    print(f"trained in {s['minutes']} min; best evaluation {s['best']}; LQR {s['lqr']}; run folder {out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,183 @@
+"""The shared per-wing policy of the mill (issue 31 point 2): the actor's features against a plain-numpy oracle
+written here (slot arithmetic, hat functions by their formula), the controller's mapping of the single-agent
+observation against the shared-policy VecEnv's own agents (bit for bit), bad input named, the training config
+checked, and a short training smoke (slow)."""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+pytest.importorskip("stable_baselines3", reason="the rl extra (SB3) is not installed")
+import torch as th  # noqa: E402
+
+from laddermill_gym.control.shared_policy import (  # noqa: E402
+    LATERAL_FIELDS,
+    GainScheduledExtractor,
+    SharedPolicyController,
+    hat_basis,
+)
+from laddermill_gym.envs.observation import OBS_INDEX  # noqa: E402
+from tests.env_cases import LM1, case_kwargs  # noqa: E402
+
+
+def test_hat_basis_interpolates_linearly_between_nodes():
+    p = th.tensor([0.0, 0.25, 0.3, 1.0], dtype=th.float64)
+    h = hat_basis(p, 5).numpy()  # nodes 0, 0.25, 0.5, 0.75, 1
+    np.testing.assert_allclose(h.sum(axis=1), 1.0)
+    np.testing.assert_allclose(h[0], [1, 0, 0, 0, 0])
+    np.testing.assert_allclose(h[1], [0, 1, 0, 0, 0])
+    np.testing.assert_allclose(h[2], [0, 0.8, 0.2, 0, 0], atol=1e-12)  # (0.5 - 0.3) / 0.25 on node 0.25
+    np.testing.assert_allclose(hat_basis(p, 1).numpy(), 1.0)
+
+
+def oracle_features(obs: np.ndarray, n: int, k: int, block: int, nb: int, trim: np.ndarray, scales: np.ndarray):
+    """Features of one local observation by explicit loops: slot from the position entry, each seen wing's six
+    lateral entries less its slot's trim, wrapped yaw, over the scales, zero when absent, then a 1; times the
+    hat functions max(0, 1 - |p - j / (nb - 1)| (nb - 1))."""
+    flags = obs[block * (2 * k + 1): block * (2 * k + 1) + 2 * k]
+    p = obs[block * (2 * k + 1) + 2 * k]
+    i = int(round(p * (n - 1)))
+    offsets = [0] + [d for d in range(-k, k + 1) if d != 0]
+    z = []
+    for j, d in enumerate(offsets):
+        present = 1.0 if j == 0 else flags[j - 1]
+        s = min(max(i + d, 0), n - 1)
+        row = []
+        for f, name in enumerate(LATERAL_FIELDS):
+            v = obs[j * block + OBS_INDEX[name]]
+            if name == "phi":
+                v -= trim[s, 0]
+            if name == "psi":
+                v = (v - trim[s, 1] + np.pi) % (2 * np.pi) - np.pi
+            row.append(present * v / scales[f])
+        z.extend(row)
+    z.append(1.0)
+    h = [max(0.0, 1.0 - abs(p - j / (nb - 1)) * (nb - 1)) for j in range(nb)]
+    return np.outer(h, z).ravel()
+
+
+def test_features_match_the_numpy_oracle():
+    import gymnasium as gym
+
+    n, k, block, nb = 7, 2, 15, 4
+    d = block * (2 * k + 1) + 2 * k + 1 + 3
+    rng = np.random.default_rng(3)
+    trim = rng.uniform(-0.2, 0.2, (n, 2))
+    trim[3, 1] = 3.1  # yaw near pi: the wrap matters
+    scales = np.array([1.0, 1.0, 0.17, 0.17, 0.35, 0.35])
+    ext = GainScheduledExtractor(gym.spaces.Box(-np.inf, np.inf, (d,)), n, k, block, nb, trim, scales)
+    obs = rng.normal(size=(n, d))
+    for i in range(n):  # agent i: its position and the true presence flags
+        obs[i, block * 5: block * 5 + 4] = [float(0 <= i + o < n) for o in (-2, -1, 1, 2)]
+        obs[i, block * 5 + 4] = i / (n - 1)
+    obs[3, OBS_INDEX["psi"]] = -3.1  # 0.083 rad from trim across the wrap
+    got = ext(th.as_tensor(obs, dtype=th.float64).float()).double().numpy()
+    want = np.array([oracle_features(o, n, k, block, nb, trim, scales) for o in obs.astype(np.float32)])
+    np.testing.assert_allclose(got, want, rtol=1e-5, atol=1e-5)
+    assert ext.features_dim == nb * (6 * (2 * k + 1) + 1)
+
+
+def small_policy(tmp_path, k=1):
+    """A shared-policy run folder on the 11-wing v1 mill: PPO with the gain-scheduled actor, random weights."""
+    from stable_baselines3 import PPO
+
+    from laddermill_gym.multiagent import shared_policy_vec_env
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # the small mill's fallback start
+        venv = shared_policy_vec_env(LM1, 2, k=k, seed=4, **case_kwargs(LM1))
+    v = venv.view
+    pk = dict(features_extractor_class=GainScheduledExtractor,
+              features_extractor_kwargs=dict(n_agents=v.n_agents, k=k, block=v.block, n_basis=3,
+                                             trim=np.zeros((v.n_agents, 2)).tolist(), scales=[1.0] * 6),
+              net_arch=dict(pi=[], vf=[8]), log_std_init=-3.0)
+    model = PPO("MlpPolicy", venv, n_steps=8, batch_size=44, policy_kwargs=pk, seed=0, device="cpu")
+    with th.no_grad():
+        model.policy.action_net.weight.normal_(0.0, 0.3)
+    model.save(tmp_path / "model.zip")
+    import yaml
+
+    meta = dict(env=LM1, k=k, n_agents=v.n_agents, obs_dim=v.obs_dim, algorithm="PPO")
+    (tmp_path / "shared_policy.yaml").write_text(yaml.safe_dump(meta))
+    return venv, model
+
+
+def test_controller_maps_the_single_agent_observation_as_the_agents_see_it(tmp_path):
+    venv, model = small_policy(tmp_path)
+    obs = venv.reset()
+    kw = {key: val for key, val in case_kwargs(LM1).items() if key != "disturbances"}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        ctrl = SharedPolicyController.load(tmp_path, LM1, kw)
+    for _ in range(3):  # the controller on the task's observations = the policy on the VecEnv's agents
+        joint, _ = ctrl.predict(venv.task.obs.astype(np.float32))
+        np.testing.assert_array_equal(ctrl.view.local_observations(venv.task.obs).reshape(obs.shape), obs)
+        a, _ = model.predict(obs, deterministic=True)
+        np.testing.assert_array_equal(joint, np.clip(a, -1, 1).reshape(joint.shape))
+        obs = venv.step(a)[0]
+    single, _ = ctrl.predict(venv.task.obs[0])
+    assert single.shape == (venv.view.n_agents * 3,)
+
+
+def test_bad_policy_input_is_named(tmp_path):
+    small_policy(tmp_path)
+    kw = {key: val for key, val in case_kwargs(LM1).items() if key != "disturbances"}
+    with pytest.raises(ValueError, match=r"model\.zip: trained on laddermill_gym/LadderMill-v1, not .*v0"):
+        SharedPolicyController.load(tmp_path, "laddermill_gym/LadderMill-v0", kw)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        with pytest.raises(ValueError, match=r"model\.zip: trained with 11 agents .* the env has 9"):
+            SharedPolicyController.load(tmp_path, LM1, dict(kw, scene_options={"n_wings": 9}))
+        ctrl = SharedPolicyController.load(tmp_path, LM1, kw)
+    with pytest.raises(ValueError, match=r"model\.zip: expects observations of"):
+        ctrl.predict(np.zeros(12))
+    (tmp_path / "shared_policy.yaml").write_text("env: x\n")
+    with pytest.raises(ValueError, match=r"shared_policy\.yaml: missing k"):
+        SharedPolicyController.load(tmp_path)
+
+
+def test_training_config_is_checked(tmp_path):
+    from laddermill_gym.harness.shared_config import is_shared_config, load_shared_config
+    from laddermill_gym.model.configio import CONFIG_DIR
+
+    cfg = load_shared_config("ppo_mill_v1")
+    assert cfg.env_id == LM1 and cfg.k >= 0 and cfg.time_limit_minutes <= 120
+    assert is_shared_config("ppo_mill_v1") and not is_shared_config("ppo_tethered_wing")
+    text = (CONFIG_DIR / "agents" / "ppo_mill_v1.yaml").read_text()
+    for old, new, needle in (("k: 4", "k: -1", "k"), ("n_copies: 4", "n_copies: 0", "n_copies"),
+                             ("gamma: 0.99 ", "gama: 0.99 ", "gama"),
+                             ("time_limit_minutes: 110.0", "time_limit_minutes: 300.0", "time_limit_minutes"),
+                             ("episode_time: 60.0      # [s] training", "episode_tme: 60.0      # [s] training",
+                              "episode_tme")):
+        bad = tmp_path / "bad.yaml"
+        assert old in text
+        bad.write_text(text.replace(old, new, 1))
+        with pytest.raises(ValueError, match=needle) as err:
+            load_shared_config(bad)
+        assert "bad.yaml" in str(err.value)
+
+
+@pytest.mark.slow
+def test_training_smoke_writes_a_policy_that_evaluate_loads(tmp_path):
+    """Both phases for a few steps on LadderMill-v1 (the full mill: the LQR teacher needs its design)."""
+    from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.harness.shared_train import main
+    from laddermill_gym.model.configio import CONFIG_DIR
+
+    src = (CONFIG_DIR / "agents" / "ppo_mill_v1.yaml").read_text()
+    for old, new in (("iterations: 4 ", "iterations: 2 "), ("steps: 400 ", "steps: 10 "),
+                     ("total_timesteps: 20000000", "total_timesteps: 3000"), ("every: 500000 ", "every: 2000 "),
+                     ("episodes: 5 ", "episodes: 1 "), ("episode_time: 60.0      # [s] during",
+                                                         "episode_time: 2.0      # [s] during")):
+        assert old in src
+        src = src.replace(old, new)
+    cfg = tmp_path / "smoke.yaml"
+    cfg.write_text(src)
+    assert main([str(cfg), "--out", str(tmp_path / "run")]) == 0
+    for f in ("model.zip", "bc_model.zip", "training_curve.csv", "training_curve.png", "shared_policy.yaml"):
+        assert (tmp_path / "run" / f).is_file()
+    ctrl = make_controller(str(tmp_path / "run"), LM1)
+    assert isinstance(ctrl, SharedPolicyController)
