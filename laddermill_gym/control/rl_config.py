@@ -213,11 +213,12 @@ def _read_policy_kwargs(s: Section, algo: str) -> dict:
             raise pk.error(key, value, f"not an argument of {policy.__name__} (known: {sorted(known)})")
         if key == "net_arch":
             layers = value if isinstance(value, dict) else {"": value}
-            for part, sizes in layers.items():
-                if not (isinstance(sizes, list) and sizes and all(
+            for part, sizes in layers.items():  # a part of a mapping may be [] (pi: []: a linear actor)
+                if not (isinstance(sizes, list) and (sizes or part) and all(
                         isinstance(n, int) and not isinstance(n, bool) and 1 <= n <= 4096 for n in sizes)):
                     raise pk.error(f"net_arch{'.' + part if part else ''}", sizes,
-                                   "must be a list of layer sizes, whole numbers 1..4096")
+                                   "must be a list of layer sizes, whole numbers 1..4096 (empty only as a part "
+                                   "of a mapping, pi: [] for a linear actor)")
         elif key in POLICY_NUMBERS:
             pk.number(key, **POLICY_NUMBERS[key])
         elif key.endswith("_class") or key == "activation_fn":

@@ -81,11 +81,7 @@ class SB3Controller:
             model_file, folder = path, path.parent
         else:
             raise FileNotFoundError(f"{path}: no such model file or run folder")
-        meta = folder / "algorithm.txt"
-        algo = meta.read_text().strip() if meta.is_file() else "PPO"
-        if not hasattr(sb3, algo):
-            raise ValueError(f"{meta}: unknown algorithm {algo!r}")
-        model = getattr(sb3, algo).load(model_file, device="cpu")
+        model = _load_model(sb3, model_file, folder / "algorithm.txt")
         norm = folder / ("best_vecnormalize.pkl" if model_file.name == "best_model.zip" else "vecnormalize.pkl")
         ctrl = cls.from_vecnormalize(model, load_vecnormalize(norm) if norm.is_file() else None)
         ctrl.source, ctrl.trained_env = model_file, _trained_env(folder / "config.yaml")
@@ -111,6 +107,17 @@ class SB3Controller:
         if self.trained_env is not None and self.trained_env != env_id:
             raise ValueError(f"{self.source}: trained on {self.trained_env}, not {env_id}; evaluate it on "
                              f"{self.trained_env} or train one for {env_id}")
+
+    def check_spaces(self, obs_dim: int, n_actions: int, env_id: str) -> None:
+        """Refuse a policy whose observation or action size is not the environment's (``obs_dim``,
+        ``n_actions`` of ``env_id`` with the given arguments), naming the file and both sizes."""
+        obs_shape, act_shape = self.model.observation_space.shape, self.model.action_space.shape
+        for what, mine, env in (("observations", obs_shape, (int(obs_dim),)), ("actions", act_shape,
+                                                                                (int(n_actions),))):
+            if tuple(mine) != env:
+                raise ValueError(f"{self.source or 'policy'}: {what} of shape {tuple(mine)} (trained on "
+                                 f"{self.trained_env or 'an unnamed env'}), but {env_id} with these arguments has "
+                                 f"{env}: another env, or other env arguments (n_wings, action_mode, groups)")
 
     def normalize(self, observation: np.ndarray) -> np.ndarray:
         """The observation as the policy saw it in training (float32); refuses one of another size."""
@@ -142,3 +149,31 @@ def _trained_env(config: Path) -> str | None:
         raise ValueError(f"{config}: not readable YAML ({err})") from None
     env = data.get("env") if isinstance(data, dict) else None
     return str(env) if env is not None else None
+
+
+def _load_model(sb3, model_file: Path, meta: Path):
+    """The SB3 model in ``model_file`` with the algorithm ``meta`` (algorithm.txt) names. Without that file it
+    loads as PPO (what the first run folders held); a model that is not a PPO one then raises naming both files.
+    An algorithm of sb3-contrib (TQC, ...) needs that package; another name raises naming ``meta``."""
+    if not meta.is_file():
+        try:
+            return sb3.PPO.load(model_file, device="cpu")
+        except (KeyError, ValueError, RuntimeError, TypeError, AttributeError) as err:
+            raise ValueError(f"{model_file}: does not load as PPO ({type(err).__name__}: {err}) and {meta} is "
+                             "missing: write the algorithm it was trained with (PPO, SAC, ...) into that file"
+                             ) from None
+    algo = meta.read_text().strip()
+    cls = getattr(sb3, algo, None)
+    if cls is None:
+        try:
+            import sb3_contrib
+        except ImportError:
+            sb3_contrib = None
+        cls = getattr(sb3_contrib, algo, None) if sb3_contrib is not None else None
+        if cls is None:
+            needs = "" if sb3_contrib is not None else " (nor an sb3-contrib one: that package is not installed)"
+            raise ValueError(f"{meta}: unknown algorithm {algo!r}: not one of stable_baselines3's{needs}")
+    try:
+        return cls.load(model_file, device="cpu")
+    except (KeyError, ValueError, RuntimeError, TypeError, AttributeError) as err:
+        raise ValueError(f"{model_file}: does not load as {algo} ({meta}): {type(err).__name__}: {err}") from None

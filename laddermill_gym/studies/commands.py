@@ -49,14 +49,15 @@ def check_number(name: str, value, *, low: float | None = None, high: float | No
 def check_controllers(specs, option: str = "--controllers") -> None:
     """UsageError naming ``option`` and the first controller spec that is none of: ``open_loop``, ``lqr``,
     ``lqr:CONFIG`` (an LQR config file or a shipped name, ``lqr_tethered_wing``), the pumping kite's ``scripted``,
-    ``crosswind`` and ``crosswind:CONFIG``, an existing path (a training run folder, a model file, an rl-zoo3 log
-    folder). Checked before any environment is built."""
+    ``crosswind`` and ``crosswind:CONFIG``, a shipped policy's name (``ppo_tethered_wing``), an existing path (a
+    training run folder, a model file, an rl-zoo3 log folder). Checked before any environment is built."""
     from pathlib import Path
 
+    from laddermill_gym.control.shipped_policies import SHIPPED_POLICIES
     from laddermill_gym.model.configio import ConfigError, find_config
 
     for spec in specs:
-        if spec in ("open_loop", "lqr", "scripted", "crosswind") or (
+        if spec in ("open_loop", "lqr", "scripted", "crosswind") or spec in SHIPPED_POLICIES or (
                 not spec.startswith(("lqr:", "crosswind:")) and Path(spec).exists()):
             continue
         if spec.startswith(("lqr:", "crosswind:")):
@@ -66,7 +67,8 @@ def check_controllers(specs, option: str = "--controllers") -> None:
                 raise UsageError(f"{option} {spec!r}: {err}") from None
             continue
         raise UsageError(f"{option} {spec!r}: not open_loop, lqr, lqr:<config>, scripted, crosswind, "
-                         "crosswind:<config> or an existing run folder, model file or rl-zoo3 log folder")
+                         f"crosswind:<config>, a shipped policy ({', '.join(sorted(SHIPPED_POLICIES))}) or an "
+                         "existing run folder, model file or rl-zoo3 log folder")
 
 
 @dataclass(frozen=True)

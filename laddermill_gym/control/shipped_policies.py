@@ -1,0 +1,36 @@
+"""Trained policies shipped with the package (``laddermill_gym/policies/<name>/``), so a fresh install can run
+them without training: ``make_controller("ppo_tethered_wing", "laddermill_gym/TetheredWing-v0")``,
+``laddermill evaluate --controllers ppo_tethered_wing``, ``laddermill gust-bench --controllers ppo_rotorcraft``.
+
+Each folder is a trimmed training run folder (``laddermill train <config> --seed <seed>``): ``model.zip`` (the
+SB3 model), ``vecnormalize.pkl`` (its observation statistics), ``config.yaml`` (the training config, which names
+the env), ``algorithm.txt`` and ``README.md`` (the command and seed that reproduce it, and its scores).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+__all__ = ["POLICY_DIR", "SHIPPED_POLICIES", "shipped_policy_path"]
+
+#: The folder of the shipped policies (package data, see pyproject.toml)
+POLICY_DIR: Path = Path(__file__).resolve().parent.parent / "policies"
+
+#: Shipped policy name -> the env id it was trained on (its config.yaml's ``env``)
+SHIPPED_POLICIES: dict[str, str] = {
+    "ppo_tethered_wing": "laddermill_gym/TetheredWing-v0",
+    "ppo_rotorcraft": "laddermill_gym/Rotorcraft-v0",
+}
+
+
+def shipped_policy_path(name: str) -> Path:
+    """The folder of the shipped policy ``name``; ValueError naming the known names for another name,
+    FileNotFoundError naming the folder when the package was installed without its policy files."""
+    if name not in SHIPPED_POLICIES:
+        raise ValueError(f"policy = {name!r}: not a shipped policy (shipped: {', '.join(sorted(SHIPPED_POLICIES))})")
+    folder = POLICY_DIR / name
+    if not (folder / "model.zip").is_file():
+        raise FileNotFoundError(f"{folder / 'model.zip'}: missing; the shipped policy {name!r} was not installed "
+                                "with the package (reinstall it, or train one: laddermill train "
+                                f"configs/agents/{name}.yaml)")
+    return folder
