@@ -32,18 +32,22 @@ def _overrides(speed_times, speeds, top_slots, top_deg):
             "initial": {"top_slots": int(top_slots), "elevator_top_deg": float(top_deg)}}
 
 
-def case(speed: float, top_slots: int, top_deg: float, max_time: float) -> None:
+def case(speed: float, top_slots: int, top_deg: float, max_time: float, scene: str = SCENE,
+         start_ramp: float = 30.0, elevators: tuple | None = None) -> None:
     """One case from rest (the scene's 30 s ramp to ``speed``) run to its periodic motion; prints the figures."""
     from laddermill_gym import load_scene
     from laddermill_gym.ladder.periodic import run_to_periodic
 
-    sim = load_scene(SCENE, dimension=2, overrides=_overrides([0.0, 30.0], [0.0, speed], top_slots, top_deg)
-                     ).simulator()
+    ov = _overrides([0.0, start_ramp], [0.0, speed], top_slots, top_deg)
+    if elevators is not None:
+        ov["initial"].update(elevator_up_deg=elevators[0], elevator_down_deg=elevators[1])
+    sim = load_scene(scene, dimension=2, overrides=ov).simulator()
     res = run_to_periodic(sim, shape_tol=1e-3, power_tol=1e-3, max_time=max_time, progress=True)
     last = res.history[-10:]
     p = [h["mean_power_W"] / 1e3 for h in last]
     s = [h["shape_change"] for h in last]
-    print(f"V_c {speed:g} m/s, top slots {top_slots} at {top_deg:g} deg: {res.summary()}")
+    print(f"{scene}: V_c {speed:g} m/s (ramp {start_ramp:g} s, elevators {elevators or 'the scene'}), "
+          f"top slots {top_slots} at {top_deg:g} deg: {res.summary()}")
     print(f"last period: largest tension {np.max(res.tension_max_N) / 1e3:.1f} kN, smallest "
           f"{np.min(res.tension_min_N) / 1e3:.1f} kN; period means T_first {res.tension_mean_N[0] / 1e3:.1f} kN, "
           f"T_last {res.tension_mean_N[-1] / 1e3:.1f} kN, (T_first - T_last) V_c "
@@ -90,6 +94,9 @@ def main(argv=None) -> int:
     p.add_argument("--speed", type=float, default=5.0, help="cable speed V_c [m/s]")
     p.add_argument("--top-slots", type=int, default=0, help="descending slots past the top at --top-deg [-]")
     p.add_argument("--top-deg", type=float, default=-0.5, help="their elevator [deg]")
+    p.add_argument("--scene", default=SCENE, help="case: the scene (laddermill_v1 or laddermill_v2)")
+    p.add_argument("--start-ramp", type=float, default=30.0, help="case: ramp of V_c from rest [s]")
+    p.add_argument("--elevators", type=float, nargs=2, default=None, help="case: ascending, descending [deg]")
     p.add_argument("--max-time", type=float, default=1500.0, help="case: periodic search [s]")
     p.add_argument("--ramp", type=float, default=100.0, help="drift: ramp from 2 m/s [s]")
     p.add_argument("--time", type=float, default=400.0, help="drift: time after the periodic motion at 2 m/s [s]")
@@ -100,7 +107,7 @@ def main(argv=None) -> int:
         for opt, v in (("--max-time", a.max_time), ("--ramp", a.ramp), ("--time", a.time), ("--every", a.every)):
             check_number(opt, v, low=0.0, unit="s")
         if a.what == "case":
-            case(a.speed, a.top_slots, a.top_deg, a.max_time)
+            case(a.speed, a.top_slots, a.top_deg, a.max_time, a.scene, a.start_ramp, a.elevators)
         else:
             drift(a.speed, a.ramp, a.time, a.every, a.top_slots, a.top_deg)
     except (UsageError, ConfigError) as err:
