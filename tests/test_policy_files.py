@@ -36,8 +36,16 @@ def test_a_policy_for_another_env_is_refused_naming_both(run_folder):
         make_controller(str(run_folder), RC)
 
 
+def test_a_policy_of_another_observation_size_is_refused_at_load_naming_the_file(run_folder):
+    # TetheredWing-v0 observes 15 values (N_OBS_PER_WING = 15 for its one wing) and takes 3 actions
+    with pytest.raises(ValueError, match=r"model\.zip: observations of shape \(7,\).*TetheredWing-v0.*\(15,\)"):
+        make_controller(str(run_folder), TW)
+
+
 def test_an_observation_of_another_size_is_refused_naming_the_file(run_folder):
-    ctrl = make_controller(str(run_folder), TW)
+    from laddermill_gym.control.sb3_policy import SB3Controller
+
+    ctrl = SB3Controller.load(run_folder)
     action, _ = ctrl.predict(np.zeros(7), deterministic=True)
     assert action.shape == (3,)
     with pytest.raises(ValueError, match=r"model\.zip: expects observations of shape \(7,\).*got \(9,\)"):
@@ -58,3 +66,32 @@ def test_an_unknown_algorithm_and_an_unreadable_config_are_named(run_folder, tmp
     (bad / "config.yaml").write_text("env: [unclosed\n")
     with pytest.raises(ValueError, match=r"config\.yaml: not readable YAML"):
         make_controller(str(bad), TW)
+
+
+def test_a_model_without_its_algorithm_file_is_named(run_folder, tmp_path):
+    from stable_baselines3 import SAC
+
+    from laddermill_gym.control.sb3_policy import SB3Controller
+
+    bare = tmp_path / "bare"
+    bare.mkdir()
+    (bare / "model.zip").write_bytes((run_folder / "model.zip").read_bytes())
+    assert SB3Controller.load(bare).model.__class__.__name__ == "PPO"  # no algorithm.txt: PPO, as before
+    SAC("MlpPolicy", _Spaces(), buffer_size=10, device="cpu", seed=0).save(bare / "model.zip")
+    with pytest.raises(ValueError, match=r"model\.zip: does not load as PPO.*algorithm\.txt is missing"):
+        SB3Controller.load(bare)
+    (bare / "algorithm.txt").write_text("SAC\n")
+    assert SB3Controller.load(bare).model.__class__.__name__ == "SAC"
+
+
+def test_shipped_policy_names():
+    from laddermill_gym.control.shipped_policies import SHIPPED_POLICIES, shipped_policy_path
+    from laddermill_gym.studies.commands import UsageError, check_controllers
+
+    with pytest.raises(ValueError, match=r"'ppo_nothing': not a shipped policy \(shipped: ppo_rotorcraft"):
+        shipped_policy_path("ppo_nothing")
+    with pytest.raises(ValueError, match=r"'ppo_nothing': not 'open_loop'.*a shipped policy \(ppo_rotorcraft"):
+        make_controller("ppo_nothing", TW)
+    check_controllers(list(SHIPPED_POLICIES))
+    with pytest.raises(UsageError, match=r"'ppo_nothing'.*a shipped policy"):
+        check_controllers(["ppo_nothing"])

@@ -8,7 +8,9 @@
   in the reel-in (``control/crosswind.py``; default config ``configs/agents/crosswind_pumping.yaml``);
 * PointMassChain-v0 (the point-mass fidelity): ``open_loop`` holds the start attitude; ``lqr`` raises ValueError
   (the LQR designs are the rigid wings');
-* a path to a training run folder or model file: a Stable-Baselines3 policy (``rl`` extra).
+* a path to a training run folder or model file: a Stable-Baselines3 policy (``rl`` extra), refused when it was
+  trained on another env or its observation or action size is not the env's;
+* ``ppo_tethered_wing``, ``ppo_rotorcraft``: the policies shipped with the package (``control/shipped_policies.py``).
 """
 
 from __future__ import annotations
@@ -186,9 +188,12 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
         # custom file or overrides included)
         design = design_tethered_wing if sc.assembly.n_wings == 1 else design_ladder_chain
         return design(cfg, sc, (x_trim.copy(), u_trim.copy())).controller()
-    path = Path(spec)
+    from laddermill_gym.control.shipped_policies import SHIPPED_POLICIES, shipped_policy_path
+
+    path = shipped_policy_path(spec) if spec in SHIPPED_POLICIES else Path(spec)
     if not path.exists():
-        raise ValueError(f"controller = {spec!r}: not 'open_loop', 'lqr', 'lqr:<config>' or an existing model path")
+        raise ValueError(f"controller = {spec!r}: not 'open_loop', 'lqr', 'lqr:<config>', a shipped policy "
+                         f"({', '.join(sorted(SHIPPED_POLICIES))}) or an existing model path")
     from laddermill_gym.control.shared_policy import SharedPolicyController
 
     if SharedPolicyController.is_shared_run(path):  # a shared per-wing policy (laddermill train ppo_mill_v1)
@@ -197,4 +202,6 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
 
     ctrl = SB3Controller.load(path)
     ctrl.check_env(env_id)
+    task = task_class(env_id)(1, **{k: v for k, v in kw.items() if k != "parallel"})
+    ctrl.check_spaces(task.obs.shape[-1], task.n_actions, env_id)
     return ctrl
