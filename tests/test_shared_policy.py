@@ -80,6 +80,21 @@ def test_features_match_the_numpy_oracle():
     assert ext.features_dim == nb * (6 * (2 * k + 1) + 1)
 
 
+def test_gain_locality_blocks_and_band():
+    from laddermill_gym.harness.gain_locality import banded, block_norms
+
+    n = 4
+    K = np.zeros((2 * n, 6 * n))
+    K[2:4, 0:6] = 3.0  # slot 1's commands from slot 0's states: norm sqrt(12) * 3
+    K[0:2, 18:24] = 1.0  # slot 0 from slot 3: distance 3
+    W = block_norms(K)
+    assert W[1, 0] == pytest.approx(np.sqrt(12) * 3) and W[0, 3] == pytest.approx(np.sqrt(12))
+    assert np.count_nonzero(W) == 2
+    np.testing.assert_array_equal(banded(K, 2)[0:2, 18:24], 0.0)
+    np.testing.assert_array_equal(banded(K, 2)[2:4, 0:6], 3.0)
+    np.testing.assert_array_equal(banded(K, 3), K)
+
+
 def small_policy(tmp_path, k=1):
     """A shared-policy run folder on the 11-wing v1 mill: PPO with the gain-scheduled actor, random weights."""
     from stable_baselines3 import PPO
@@ -168,8 +183,8 @@ def test_training_smoke_writes_a_policy_that_evaluate_loads(tmp_path):
     from laddermill_gym.model.configio import CONFIG_DIR
 
     src = (CONFIG_DIR / "agents" / "ppo_mill_v1.yaml").read_text()
-    for old, new in (("iterations: 4 ", "iterations: 2 "), ("steps: 400 ", "steps: 10 "),
-                     ("total_timesteps: 20000000", "total_timesteps: 3000"), ("every: 500000 ", "every: 2000 "),
+    for old, new in (("iterations: 6 ", "iterations: 2 "), ("steps: 400 ", "steps: 10 "),
+                     ("total_timesteps: 20000000", "total_timesteps: 3000"), ("every: 1000000 ", "every: 2000 "),
                      ("episodes: 5 ", "episodes: 1 "), ("episode_time: 60.0      # [s] during",
                                                          "episode_time: 2.0      # [s] during")):
         assert old in src
