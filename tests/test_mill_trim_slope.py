@@ -43,11 +43,12 @@ def test_moment_vanishes_at_the_simulator_trim_and_is_stable(variant):
             assert k > 0.0
 
 
-def test_v2_descending_trim_falls_about_1_deg_per_m_s_and_v1_a_quarter_of_that():
+def test_v2_descending_trim_falls_more_than_twice_as_fast_as_v1s():
+    """The design aim: at 10 m/s the v2 descending wing's trim falls with air speed well over twice as fast as v1's
+    (v1 near the bound of an airframe stable in free flight, trim_slope's docstring)."""
     v1, (_, d1) = load("v1")
     v2, (_, d2) = load("v2")
-    assert math.degrees(closed_form_slope(v1, d1, 10.0)) == pytest.approx(-0.252, abs=0.01)
-    assert math.degrees(closed_form_slope(v2, d2, 10.0)) < -0.9
+    assert closed_form_slope(v2, d2, 10.0) < 2.5 * closed_form_slope(v1, d1, 10.0) < 0.0
 
 
 def test_v2_mass_properties_are_v1_with_the_pod_moved():

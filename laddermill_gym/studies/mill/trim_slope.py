@@ -97,8 +97,10 @@ def geometry(wing) -> dict:
             "np_behind_cg": float(-x_np)}
 
 
-def report(variant: str) -> None:
+def report(variant: str, elevators_deg=None) -> None:
     wing, (up, down) = load(variant)
+    if elevators_deg is not None:
+        up, down = (math.radians(e) for e in elevators_deg)
     g = geometry(wing)
     print(f"{variant} ({wing.name}): CG {g['cg_behind_P']:.3f} m behind P, neutral point {g['np_behind_P']:.3f} m "
           f"behind P (h), {g['np_behind_cg']:+.3f} m behind the CG "
@@ -127,9 +129,11 @@ def report(variant: str) -> None:
 def main(argv=None) -> int:
     p = Parser(prog="python -m laddermill_gym.studies.mill.trim_slope", description=__doc__.splitlines()[0])
     p.add_argument("--variants", nargs="+", choices=sorted(WINGS), default=sorted(WINGS))
+    p.add_argument("--elevators", type=float, nargs=2, default=None,
+                   help="ascending, descending elevators [deg] instead of the scenes'")
     a = p.parse_args(argv)
     for v in a.variants:
-        report(v)
+        report(v, a.elevators)
     return 0
 
 
