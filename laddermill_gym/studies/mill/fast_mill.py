@@ -1,9 +1,13 @@
-"""The v1 mill in plane at V_c = 4-5 m/s (issue 30 point 1): the near-top elevator rule and the loop's downwind drift.
+"""The mill in plane at V_c = 1-5 m/s (issue 30 point 1): the v1 near-top elevator rule, the loop's downwind drift, and
+the v2 wing's periodic motions.
 
-Two measurements, printed as the doc (docs/wing_data.md, "5 m/s: what we found") quotes them:
+Two measurements, printed as the doc (docs/wing_data.md, "Not solved with the v1 wing: 5 m/s" and "A wing whose lift
+falls with its air speed (v2)") quotes them:
 
-* ``case``: the scene ``laddermill_v1`` in plane from rest at cable speed V_c [m/s] with the near-top rule
-  (``initial.top_slots`` slots past the top at ``initial.elevator_top_deg``; 0 slots: the scene as shipped), run to
+* ``case``: the scene ``laddermill_v1`` (or ``--scene laddermill_v2``) in plane from rest, V_c ramped from 0 over
+  ``--start-ramp`` s (default 30 s, v1's scene) to V_c [m/s], with the scene's elevators (or ``--elevators``) and the
+  near-top rule (``initial.top_slots`` slots past the top at ``initial.elevator_top_deg``; 0 slots: the scene as
+  shipped), run to
   its periodic motion (:func:`laddermill_gym.ladder.periodic.run_to_periodic`, shape and power to 1e-3, at most
   ``max_time`` s); prints the summary, the last period's tension extremes, the period-mean end tensions and the
   range of the last ten period means of power and shape change.
@@ -13,6 +17,8 @@ Two measurements, printed as the doc (docs/wing_data.md, "5 m/s: what we found")
   position x [m] of slots 10, 25, 40, 50, 60, 75 and 90 (the loop leaning downwind: x falls).
 
 ``python -m laddermill_gym.studies.mill.fast_mill case --speed 4 --top-slots 7 --top-deg -4``;
+``python -m laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2 --speed 5 --start-ramp 500
+--max-time 3000``;
 ``python -m laddermill_gym.studies.mill.fast_mill drift --speed 4 --time 400``.
 """
 
