@@ -74,6 +74,8 @@ class RLConfig:
     eval_episodes : episodes of the registered evaluation scenario per evaluation (seeds 0 .. n - 1)
     hyperparameters : keyword arguments of the SB3 algorithm
     policy_kwargs : SB3 ``policy_kwargs`` (e.g. net_arch, log_std_init)
+    init_from : None, or a controller spec (``lqr``, ``lqr:<config>``) the linear actor of a PPO policy starts at
+        (:mod:`laddermill_gym.control.warm_start`; the observation statistics are then held fixed)
     """
 
     file: Path
@@ -91,6 +93,7 @@ class RLConfig:
     eval_episodes: int
     hyperparameters: dict[str, Any] = field(default_factory=dict)
     policy_kwargs: dict[str, Any] = field(default_factory=dict)
+    init_from: str | None = None
 
     @property
     def is_craft(self) -> bool:
@@ -363,5 +366,21 @@ def load_rl_config(path: str | Path) -> RLConfig:
     ev.done()
     hyper = _read_hyperparameters(s, algo, n_envs, cfg["total_timesteps"])
     pk = _read_policy_kwargs(s, algo)
+    init_from = _read_init_from(s, algo, pk, cfg["normalize_observations"])
     s.done()
-    return RLConfig(file=Path(path), hyperparameters=hyper, policy_kwargs=pk, **cfg)
+    return RLConfig(file=Path(path), hyperparameters=hyper, policy_kwargs=pk, init_from=init_from, **cfg)
+
+
+def _read_init_from(s: Section, algo: str, policy_kwargs: dict, normalized: bool) -> str | None:
+    """``init_from``: absent, or ``lqr`` / ``lqr:<config>`` for a PPO with a linear actor (``net_arch.pi: []``)
+    and normalised observations (control/warm_start.py)."""
+    spec = s.raw("init_from", None)
+    if spec is None:
+        return None
+    if not (isinstance(spec, str) and (spec == "lqr" or spec.startswith("lqr:"))):
+        raise s.error("init_from", spec, "must be 'lqr' or 'lqr:<config>' (the controller the actor starts at)")
+    arch = policy_kwargs.get("net_arch")
+    if algo != "PPO" or not normalized or not (isinstance(arch, dict) and arch.get("pi") == []):
+        raise s.error("init_from", spec, f"needs algorithm: PPO (got {algo}), normalize_observations: true (got "
+                      f"{normalized}) and a linear actor, policy_kwargs.net_arch.pi: [] (got {arch!r})")
+    return spec

@@ -199,6 +199,10 @@ def train(cfg: RLConfig, out: Path, threads: int | None = None) -> dict:
     algo = getattr(sb3, cfg.algorithm)
     model = algo("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=cfg.policy_kwargs or None,
                  tensorboard_log=str(out / "tb"), verbose=0, device="cpu", **cfg.hyperparameters)
+    if cfg.init_from is not None:  # the linear actor started at the LQR (control/warm_start.py)
+        from laddermill_gym.control.warm_start import start_from
+
+        print(f"actor started at {cfg.init_from}: largest gain {start_from(cfg, model, venv)['max_gain']:.3g}")
     t0 = time.perf_counter()
     with (tqdm(total=cfg.total_timesteps, unit="step", desc=f"{cfg.algorithm} {cfg.env_id}", smoothing=0.05) as pbar,
           stop_requests("Ctrl-C: ending the training after the current step and saving the model (Ctrl-C again to "
