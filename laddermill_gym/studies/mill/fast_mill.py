@@ -39,20 +39,26 @@ def _overrides(speed_times, speeds, top_slots, top_deg):
 
 
 def case(speed: float, top_slots: int, top_deg: float, max_time: float, scene: str = SCENE,
-         start_ramp: float = 30.0, elevators: tuple | None = None) -> None:
-    """One case from rest (the scene's 30 s ramp to ``speed``) run to its periodic motion; prints the figures."""
+         start_ramp: float = 30.0, elevators: tuple | None = None, dimension: int = 2) -> None:
+    """One case from rest (a ramp of ``start_ramp`` s to ``speed``) run to its periodic motion; prints the figures.
+    In 3D: the in-plane periodic state embedded (``periodic_start``), then run to the periodic motion in 3D."""
     from laddermill_gym import load_scene
-    from laddermill_gym.ladder.periodic import run_to_periodic
+    from laddermill_gym.ladder.periodic import periodic_start, run_to_periodic
 
     ov = _overrides([0.0, start_ramp], [0.0, speed], top_slots, top_deg)
     if elevators is not None:
         ov["initial"].update(elevator_up_deg=elevators[0], elevator_down_deg=elevators[1])
-    sim = load_scene(scene, dimension=2, overrides=ov).simulator()
+    sc = load_scene(scene, dimension=dimension, overrides=ov)
+    sim = sc.simulator()
+    if dimension == 3:
+        x, u, t, res2 = periodic_start(sc, progress=True, max_time=max_time)
+        print(f"in plane: {res2.summary()}")
+        sim.reset(state=x, t=t, controls=u)
     res = run_to_periodic(sim, shape_tol=1e-3, power_tol=1e-3, max_time=max_time, progress=True)
     last = res.history[-10:]
     p = [h["mean_power_W"] / 1e3 for h in last]
     s = [h["shape_change"] for h in last]
-    print(f"{scene}: V_c {speed:g} m/s (ramp {start_ramp:g} s, elevators {elevators or 'the scene'}), "
+    print(f"{scene} ({dimension}D): V_c {speed:g} m/s (ramp {start_ramp:g} s, elevators {elevators or 'the scene'}), "
           f"top slots {top_slots} at {top_deg:g} deg: {res.summary()}")
     print(f"last period: largest tension {np.max(res.tension_max_N) / 1e3:.1f} kN, smallest "
           f"{np.min(res.tension_min_N) / 1e3:.1f} kN; period means T_first {res.tension_mean_N[0] / 1e3:.1f} kN, "
@@ -101,6 +107,7 @@ def main(argv=None) -> int:
     p.add_argument("--top-slots", type=int, default=0, help="descending slots past the top at --top-deg [-]")
     p.add_argument("--top-deg", type=float, default=-0.5, help="their elevator [deg]")
     p.add_argument("--scene", default=SCENE, help="case: the scene (laddermill_v1 or laddermill_v2)")
+    p.add_argument("--dimension", type=int, choices=(2, 3), default=2, help="case: 2 (in plane) or 3")
     p.add_argument("--start-ramp", type=float, default=30.0, help="case: ramp of V_c from rest [s]")
     p.add_argument("--elevators", type=float, nargs=2, default=None, help="case: ascending, descending [deg]")
     p.add_argument("--max-time", type=float, default=1500.0, help="case: periodic search [s]")
@@ -113,7 +120,7 @@ def main(argv=None) -> int:
         for opt, v in (("--max-time", a.max_time), ("--ramp", a.ramp), ("--time", a.time), ("--every", a.every)):
             check_number(opt, v, low=0.0, unit="s")
         if a.what == "case":
-            case(a.speed, a.top_slots, a.top_deg, a.max_time, a.scene, a.start_ramp, a.elevators)
+            case(a.speed, a.top_slots, a.top_deg, a.max_time, a.scene, a.start_ramp, a.elevators, a.dimension)
         else:
             drift(a.speed, a.ramp, a.time, a.every, a.top_slots, a.top_deg)
     except (UsageError, ConfigError) as err:
