@@ -16,8 +16,9 @@ local observation, the same weights for every slot):
 
 Every ``eval.every`` steps (and after each DAgger iteration) the policy is flown deterministically on the
 single-agent env's registered scenario (the paper's 0.01 rad step at 1 s) for ``eval.episode_time`` seconds,
-seeds 0 .. n - 1; ``model.zip`` is the best evaluation (most episodes held, then mean power), ``last_model.zip`` the
-last, ``bc_model.zip`` the cloned policy before PPO. The run folder also gets ``training_curve.csv`` / ``.png``
+seeds 0 .. n - 1; ``model.zip`` is the best evaluation (most episodes held, then longest, then smallest
+lateral excursion), ``last_model.zip`` the last, ``bc_model.zip`` the cloned policy before PPO,
+``checkpoints/<phase>_<step>.zip`` every evaluated one. The run folder also gets ``training_curve.csv`` / ``.png``
 (with the LQR's figures on the same episodes), ``config.yaml`` and ``shared_policy.yaml`` (what
 ``make_controller(<run folder>, env)`` needs). Observations are not normalised by running statistics: the actor
 divides the lateral deviations by the LQR config's fixed Bryson scales, so no VecNormalize file is written.
@@ -91,18 +92,39 @@ class Evaluator:
 
 
 def _score(row: dict) -> tuple:
-    return (row["held"], row["mean_length_s"], row["mean_power_kW"])
+    """Most episodes held, then the longest, then the smallest lateral excursion."""
+    return (row["held"], row["mean_length_s"], -row["max_lateral_m"])
 
 
-def _fit(model, G: np.ndarray, b: np.ndarray, count: int, ridge: float) -> None:
-    """The actor's weights from the accumulated normal equations (G + ridge N I) W = b."""
+def teacher_labels(teacher, obs: np.ndarray) -> np.ndarray:
+    """The teacher's actions (B, n_actions) at single-agent observations ``obs``: for the mill's LQR
+    (:class:`~laddermill_gym.control.mill_lqr.MillLQRController`) its linear law before the clip to [-1, 1]
+    (u_op - K dz over the action's half range; the controller and the env clip both the same way), so that the
+    labels are the linear map the actor can represent; any other controller: its ``predict``."""
+    if not all(hasattr(teacher, a) for a in ("lateral_deviation", "K", "half", "column", "n_surfaces")):
+        return np.asarray(teacher.predict(obs, deterministic=True)[0], dtype=float)
+    B, n = len(obs), teacher.n_wings
+    du = -(teacher.lateral_deviation(obs).reshape(B, -1) @ teacher.K.T).reshape(B, n, 2)
+    a = np.zeros((B, teacher.act_dim))
+    per_slot = a[:, : n * teacher.n_surfaces].reshape(B, n, teacher.n_surfaces)
+    per_slot[:, :, teacher.column] = du / teacher.half
+    return a
+
+
+def _fit(model, G: np.ndarray, b: np.ndarray, yy: np.ndarray, ridge: float) -> np.ndarray:
+    """The actor's weights from the accumulated normal equations (G + ridge diag(G)) W = b (a ridge relative to
+    each feature's own second moment, so the features' scales do not matter); returns the fit's R^2 per action
+    entry (1 - residual / label second moment, from the same sums)."""
     import torch as th
 
-    W = np.linalg.solve(G + ridge * count * np.eye(G.shape[0]), b)
+    D = np.diag(np.diag(G)) + 1e-12 * np.trace(G) / G.shape[0] * np.eye(G.shape[0])
+    W = np.linalg.solve(G + ridge * D, b)
     net = model.policy.action_net
     with th.no_grad():
         net.weight.copy_(th.as_tensor(W.T, dtype=net.weight.dtype))
         net.bias.zero_()
+    residual = yy - 2 * np.einsum("fa,fa->a", W, b) + np.einsum("fa,fg,ga->a", W, G, W)
+    return 1.0 - residual / np.maximum(yy, 1e-300)
 
 
 def imitation(cfg: SharedTrainConfig, model, venv, teacher, log, pbar) -> None:
@@ -112,21 +134,21 @@ def imitation(cfg: SharedTrainConfig, model, venv, teacher, log, pbar) -> None:
 
     ext, task = model.policy.features_extractor, venv.task
     F = ext.features_dim
-    G, b, count = np.zeros((F, F)), np.zeros((F, venv.view.act_dim)), 0
+    G, b, yy = np.zeros((F, F)), np.zeros((F, venv.view.act_dim)), np.zeros(venv.view.act_dim)
     obs = venv.reset()
     for it in range(cfg.bc_iterations):
         for _ in range(cfg.bc_steps):
-            labels = np.asarray(teacher.predict(task.obs, deterministic=True)[0], dtype=float)
-            labels = labels.reshape(venv.num_envs, venv.view.act_dim)
+            labels = teacher_labels(teacher, task.obs).reshape(venv.num_envs, venv.view.act_dim)
             with th.no_grad():
                 phi = ext(th.as_tensor(obs)).double().numpy()
             G += phi.T @ phi
             b += phi.T @ labels
-            count += phi.shape[0]
-            act = labels if it == 0 else model.predict(obs, deterministic=True)[0]
+            yy += np.sum(labels ** 2, axis=0)
+            act = np.clip(labels, -1.0, 1.0) if it == 0 else model.predict(obs, deterministic=True)[0]
             obs = venv.step(act)[0]
             pbar.update(1)
-        _fit(model, G, b, count, cfg.bc_ridge)
+        r2 = _fit(model, G, b, yy, cfg.bc_ridge)
+        tqdm.write(f"DAgger round {it + 1}: R^2 of the fit (elevator, rudder, aileron) {np.round(r2, 4)}")
         log("imitation", it + 1)
 
 
@@ -184,7 +206,7 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
 
     th.set_num_threads(1)
     t0 = time.perf_counter()
-    out.mkdir(parents=True, exist_ok=True)
+    (out / "checkpoints").mkdir(parents=True, exist_ok=True)
     shutil.copyfile(cfg.file, out / "config.yaml")
     venv = shared_policy_vec_env(cfg.env_id, cfg.bc_copies, k=cfg.k, seed=cfg.seed, **cfg.train_env_kwargs())
     view = venv.view
@@ -208,6 +230,7 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
                    **ev.run(ev.policy(model)))
         rows.append(row)
         tqdm.write(f"{phase} {step}: {row}")
+        model.save(out / "checkpoints" / f"{phase}_{step}.zip")
         if best["row"] is None or _score(row) > _score(best["row"]):
             best["row"] = row
             model.save(out / "model.zip")
