@@ -39,7 +39,8 @@ def _overrides(speed_times, speeds, top_slots, top_deg):
 
 
 def case(speed: float, top_slots: int, top_deg: float, max_time: float, scene: str = SCENE,
-         start_ramp: float = 30.0, elevators: tuple | None = None, dimension: int = 2) -> None:
+         start_ramp: float = 30.0, elevators: tuple | None = None, dimension: int = 2,
+         elevation: float | None = None) -> None:
     """One case from rest (a ramp of ``start_ramp`` s to ``speed``) run to its periodic motion; prints the figures.
     In 3D: the in-plane periodic state embedded (``periodic_start``), then run to the periodic motion in 3D."""
     from laddermill_gym import load_scene
@@ -48,6 +49,8 @@ def case(speed: float, top_slots: int, top_deg: float, max_time: float, scene: s
     ov = _overrides([0.0, start_ramp], [0.0, speed], top_slots, top_deg)
     if elevators is not None:
         ov["initial"].update(elevator_up_deg=elevators[0], elevator_down_deg=elevators[1])
+    if elevation is not None:  # the rest layout's first guess (initial.elevation_deg)
+        ov["initial"]["elevation_deg"] = elevation
     sc = load_scene(scene, dimension=dimension, overrides=ov)
     sim = sc.simulator()
     if dimension == 3:
@@ -108,6 +111,7 @@ def main(argv=None) -> int:
     p.add_argument("--top-deg", type=float, default=-0.5, help="their elevator [deg]")
     p.add_argument("--scene", default=SCENE, help="case: the scene (laddermill_v1 or laddermill_v2)")
     p.add_argument("--dimension", type=int, choices=(2, 3), default=2, help="case: 2 (in plane) or 3")
+    p.add_argument("--elevation", type=float, default=None, help="case: the rest layout's first guess [deg]")
     p.add_argument("--start-ramp", type=float, default=30.0, help="case: ramp of V_c from rest [s]")
     p.add_argument("--elevators", type=float, nargs=2, default=None, help="case: ascending, descending [deg]")
     p.add_argument("--max-time", type=float, default=1500.0, help="case: periodic search [s]")
@@ -120,7 +124,8 @@ def main(argv=None) -> int:
         for opt, v in (("--max-time", a.max_time), ("--ramp", a.ramp), ("--time", a.time), ("--every", a.every)):
             check_number(opt, v, low=0.0, unit="s")
         if a.what == "case":
-            case(a.speed, a.top_slots, a.top_deg, a.max_time, a.scene, a.start_ramp, a.elevators, a.dimension)
+            case(a.speed, a.top_slots, a.top_deg, a.max_time, a.scene, a.start_ramp, a.elevators, a.dimension,
+                 a.elevation)
         else:
             drift(a.speed, a.ramp, a.time, a.every, a.top_slots, a.top_deg)
     except (UsageError, ConfigError) as err:
