@@ -10,19 +10,24 @@ there under the training disturbances, with its own exploration noise (``log_std
   affine map within its unclipped region: the controller is probed there only);
 * :func:`observation_statistics` runs the controller on the training env and returns the mean and variance of
   the observations (the normalisation's statistics, then held fixed: the actor's gains depend on them);
-* :func:`warm_start` sets a PPO model's actor and a ``VecNormalize``'s statistics.
+* :func:`warm_start` sets a PPO model's actor and a ``VecNormalize``'s statistics and clip (:data:`CLIP_OBS`).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["affine_map", "observation_statistics", "warm_start", "start_from", "VAR_INFLATION", "INIT_STEPS"]
+__all__ = ["affine_map", "observation_statistics", "warm_start", "start_from", "VAR_INFLATION", "INIT_STEPS",
+           "CLIP_OBS"]
 
 #: The observation variance of the controller's rollouts is multiplied by this [-] (std x 2) before it becomes the
 #: normalisation's: the normalised observation is clipped to +-10, so excursions up to 20 of the rollouts' standard
 #: deviations (the large gusts the LQR meets in evaluation) still reach the actor unclipped.
 VAR_INFLATION = 4.0
+#: The clip of the normalised observation [-] (SB3's VecNormalize default 10): with 10 the started policy left the
+#: LQR where the turbulence of gusts-v1's NTM_IB moved the wing 65 m sideways (more than 10 of the rollouts'
+#: doubled standard deviations) and crashed in one of its three seeds, where the LQR survives; 100 keeps it linear
+CLIP_OBS = 100.0
 #: Steps per copy [-] of the controller's rollouts that give the statistics: 30 s of flight at 0.05 s, more than a
 #: lateral period of either craft (23 s, 15 s), so the training disturbances have moved the copies
 INIT_STEPS = 600
@@ -81,7 +86,7 @@ def warm_start(model, vecnormalize, controller, raw_venv, n_steps: int) -> dict:
     std = np.sqrt(var + vecnormalize.epsilon)
     vecnormalize.obs_rms.mean, vecnormalize.obs_rms.var = mean, var
     vecnormalize.obs_rms.count = float(n_steps * raw_venv.num_envs)
-    vecnormalize.training = False
+    vecnormalize.training, vecnormalize.clip_obs = False, CLIP_OBS
     with torch.no_grad():
         net.weight.copy_(torch.as_tensor(W * std[None, :], dtype=net.weight.dtype))
         net.bias.copy_(torch.as_tensor(W @ mean + b, dtype=net.bias.dtype))
