@@ -47,11 +47,15 @@ def advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
     raise NotImplementedError("advance_fixed is resolved inside numba kernels")
 
 
-@overload(advance_fixed)
+# The chosen integrator's own Python function is the implementation (compiled with the integrators' flags), not a
+# lambda that calls its dispatcher: a lambda is one more compiled layer that numba links the whole integrator into
+# and optimises again, about 6 s of a cold start (issue 32); rk4_advance takes (and ignores) ``tableau`` for this.
+@overload(advance_fixed, strict=False, jit_options={"error_model": "numpy", "fastmath": {"contract", "nsz", "arcp"},
+                                                    "_nrt": False})
 def _advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
     if isinstance(tableau, types.NoneType):
-        return lambda t, x, u, dt, n, M, W, limits, tableau: rk4_advance(t, x, u, dt, n, M, W, limits)
-    return lambda t, x, u, dt, n, M, W, limits, tableau: w_advance(t, x, u, dt, n, M, W, limits, tableau)
+        return rk4_advance.py_func
+    return w_advance.py_func
 
 
 @njit(cache=True)

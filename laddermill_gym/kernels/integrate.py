@@ -31,14 +31,16 @@ H_MIN_REL = 1e-12
 # for bit the same). A kernel that allocates must not carry the flag.
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+# rhs and normalise_and_check are inlined into jitted callers (one compiled layer less on the cold start, issue 32);
+# called from Python they compile on their own, with these flags.
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False, inline="always")
 def rhs(t, x, u, dx, M, W):
     """State derivative of the packed model M (its kind chooses the right-hand side at compile time).
     Returns 0, or 1 if the mass matrix is singular."""
     return model_rhs(M.kind, t, x, u, dx, M, W)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False, inline="always")
 def normalise_and_check(x, M, limits):
     """Normalise the state after a step as the model kind needs (quaternions) and check it against
     ``limits`` (``LIM_SPEED`` [m/s], ``LIM_RATE`` [rad/s], ``LIM_GROUND`` [m]). Returns a status code."""
@@ -54,8 +56,10 @@ def _stage(t, x, a, k, xt, u, kout, M, W):
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
-def rk4_advance(t, x, u, dt, n, M, W, limits):
-    """Advance x in place by n classic RK4 steps of size dt. Returns (status, steps done)."""
+def rk4_advance(t, x, u, dt, n, M, W, limits, tableau=None):
+    """Advance x in place by n classic RK4 steps of size dt. Returns (status, steps done). ``tableau`` is not
+    read: the argument list is that of ``rosenbrock.w_advance``, so ``fixed_steps.advance_fixed`` can take either
+    function as its implementation."""
     k1, k2, k3, k4, xt, xp = W.k1, W.k2, W.k3, W.k4, W.xt, W.xp
     ns = x.size
     h2 = 0.5 * dt

@@ -71,18 +71,21 @@ def wing_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
             ao[C.AO_MOMENT + 2])
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+# The three wrappers below are inlined (no arithmetic of their own, callers with the same flags): numba links a
+# compiled function's every callee into its library and optimises it all again, so each wrapper compiled on its own
+# cost seconds of a cold start for nothing (issue 32).
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def rigid3d_rhs(kind, t, x, u, dx, M, W):
     return rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def rigid3d_assemble(kind, t, x, u, dx, M, W):
     assemble3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
     return 0
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def rigid2d_rhs(kind, t, x, u, dx, M, W):
     return rhs2d(t, x, u, dx, M, W, M.sag, M.caero)
 

@@ -42,7 +42,8 @@ from laddermill_gym.kernels.wind import modulation, wind_point
 _FM = {"contract", "nsz", "arcp"}
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+# inlined into observe_state and the step-and-observe kernels (same flags): one compiled layer less (issue 32)
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
 def _observe_one(t, x, u, dx, M, W, nominal, below, ground, obs, aux):
     """Observation row ``obs`` (n_wings * 15,) and ``aux`` (N_AUX,) of one state (evaluates the right-hand
     side once for the tensions). Returns OK or SINGULAR."""
