@@ -1,7 +1,7 @@
 """The mill in plane at V_c = 1-5 m/s (issue 30 point 1): the v1 near-top elevator rule, the loop's downwind drift, and
 the v2 wing's periodic motions.
 
-Two measurements, printed as the doc (docs/wing_data.md, "Not solved with the v1 wing: 5 m/s" and "A wing whose lift
+Three measurements, printed as the doc (docs/wing_data.md, "Not solved with the v1 wing: 5 m/s" and "A wing whose lift
 falls with its air speed (v2)") quotes them:
 
 * ``case``: the scene ``laddermill_v1`` (or ``--scene laddermill_v2``) in plane from rest, V_c ramped from 0 over
@@ -15,11 +15,14 @@ falls with its air speed (v2)") quotes them:
   s and the rule switched on at the ramp's start; every ``every`` s: V_c, the power over the interval, the first,
   last and top (element 51) tensions, the smallest tension of the interval and its element, and the downwind
   position x [m] of slots 10, 25, 40, 50, 60, 75 and 90 (the loop leaning downwind: x falls).
+* ``step``: from rest (V_c ramped at 0.01 m/s^2) to the periodic motion, then a cable-speed step (``--new-speed``)
+  and / or a wind step (``--wind-factor``) over 1 s, run to the new periodic motion (the paper's claim).
 
 ``python -m laddermill_gym.studies.mill.fast_mill case --speed 4 --top-slots 7 --top-deg -4``;
 ``python -m laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2 --speed 5 --start-ramp 500
 --max-time 3000``;
-``python -m laddermill_gym.studies.mill.fast_mill drift --speed 4 --time 400``.
+``python -m laddermill_gym.studies.mill.fast_mill drift --speed 4 --time 400``;
+``python -m laddermill_gym.studies.mill.fast_mill step --scene laddermill_v2 --speed 2 --wind-factor 1.125``.
 """
 
 from __future__ import annotations
@@ -71,6 +74,31 @@ def case(speed: float, top_slots: int, top_deg: float, max_time: float, scene: s
           f"{min(s):.2e} .. {max(s):.2e} l0")
 
 
+def step(scene: str, speed: float, new_speed: float, wind_factor: float, max_time: float) -> None:
+    """From rest (V_c ramped at 0.01 m/s^2 to ``speed``) to the periodic motion, then in 1 s the cable speed to
+    ``new_speed`` and the whole wind profile scaled by ``wind_factor``, and on to the new periodic motion; prints
+    both summaries and the new period's largest tension (the paper: "the mill comes to a new stationary motion")."""
+    from laddermill_gym import load_scene
+    from laddermill_gym.atmosphere.field import WindField
+    from laddermill_gym.ladder.periodic import run_to_periodic
+
+    ramp = [0.0, 100.0 * speed]
+    sim = load_scene(scene, dimension=2, overrides={"station": {"speed_times_s": ramp, "speed_m_s": [0.0, speed]}}
+                     ).simulator()
+    before = run_to_periodic(sim, shape_tol=1e-3, power_tol=1e-3, max_time=max_time, progress=True)
+    print(f"{scene}, before the step: {before.summary()}")
+    t1, x, u = sim.t, sim.state.copy(), sim.controls.copy()
+    ov = {"station": {"speed_times_s": ramp + [t1, t1 + 1.0], "speed_m_s": [0.0, speed, speed, new_speed]}}
+    sim2 = load_scene(scene, dimension=2, overrides=ov).simulator()
+    sim2.reset(state=x, t=t1, controls=u)
+    if wind_factor != 1.0:
+        sim2.set_wind(WindField(t0=t1, dt=1.0, speed=np.array([1.0, wind_factor]), direction=np.zeros(2)))
+    after = run_to_periodic(sim2, shape_tol=1e-3, power_tol=1e-3, max_time=max_time, progress=True)
+    print(f"after V_c {speed:g} -> {new_speed:g} m/s, wind x {wind_factor:g} at t = {t1:.1f} s: {after.summary()}; "
+          f"largest tension of its period {np.max(after.tension_max_N) / 1e3:.1f} kN, smallest "
+          f"{np.min(after.tension_min_N) / 1e3:.1f} kN")
+
+
 def drift(speed: float, ramp: float, duration: float, every: float, top_slots: int, top_deg: float) -> None:
     """From the periodic motion at 2 m/s, V_c ramped to ``speed`` over ``ramp`` s; prints the loop every ``every`` s."""
     from laddermill_gym import load_scene
@@ -105,7 +133,9 @@ def drift(speed: float, ramp: float, duration: float, every: float, top_slots: i
 
 def main(argv=None) -> int:
     p = Parser(prog="python -m laddermill_gym.studies.mill.fast_mill", description=__doc__.splitlines()[0])
-    p.add_argument("what", choices=("case", "drift"))
+    p.add_argument("what", choices=("case", "drift", "step"))
+    p.add_argument("--new-speed", type=float, default=None, help="step: cable speed after the step [m/s]")
+    p.add_argument("--wind-factor", type=float, default=1.0, help="step: wind profile scaled by [-]")
     p.add_argument("--speed", type=float, default=5.0, help="cable speed V_c [m/s]")
     p.add_argument("--top-slots", type=int, default=0, help="descending slots past the top at --top-deg [-]")
     p.add_argument("--top-deg", type=float, default=-0.5, help="their elevator [deg]")
@@ -126,6 +156,8 @@ def main(argv=None) -> int:
         if a.what == "case":
             case(a.speed, a.top_slots, a.top_deg, a.max_time, a.scene, a.start_ramp, a.elevators, a.dimension,
                  a.elevation)
+        elif a.what == "step":
+            step(a.scene, a.speed, a.speed if a.new_speed is None else a.new_speed, a.wind_factor, a.max_time)
         else:
             drift(a.speed, a.ramp, a.time, a.every, a.top_slots, a.top_deg)
     except (UsageError, ConfigError) as err:
