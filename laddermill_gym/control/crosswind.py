@@ -25,8 +25,10 @@ What it follows:
 Phases (``PHASE_NAMES``), per copy, kept between calls (reset where ``episode_start`` is true): reel_out (figure
 eights) -> retract (still powered, flying straight up out of the power zone to the park elevation, the winch
 still paying out) -> reel_in (depowered at alpha_in, held in the wind plane by the wing's lateral LQR, as the
-scripted cycle's reel-in, ``control/pumping_cycle.py``) -> entry (repowered, winch stopped,
-diving to the path) -> reel_out. ``last_phase`` holds the phase each copy flew.
+scripted cycle's reel-in, ``control/pumping_cycle.py``) -> entry (repowered, diving to the path, the winch keeping
+the tether taut) -> reel_out. A reel-in whose wing falls out of its hang near the zenith (a lull or a gust) goes to
+the entry at once (the recovery, counted in ``recoveries``) and the next reel-out starts from the tether then out.
+``last_phase`` holds the phase each copy flew.
 """
 
 from __future__ import annotations
@@ -57,7 +59,17 @@ PHASE_NAMES = ("reel_out", "retract", "reel_in", "entry")
 _G = 9.80665  # [m/s^2] standard gravity
 _PARK_MARGIN = math.radians(5.0)  # [rad] the retraction ends this close to the park elevation
 _ZENITH_STOP, _ZENITH_SLOW = math.radians(88.0), math.radians(4.0)  # [rad] the reel-in's elevation limit (chosen)
-_ENTRY_TENSION, _ENTRY_GAIN = 2000.0, 1.0e-3  # [N], [m/s per N] the entry's taut-tether law (chosen)
+# [N], [m/s per N] the entry's taut-tether law (tuned under NTM turbulence, docs/pumping.md "Turbulence": at 2 kN and
+# 1e-3 the diving wing's tether went slack, 110-600 N, the wing flew at its free trim alpha near 0 deg and stalled
+# when the tether snatched; at 4 kN and 2e-3 the entries' least drum tension is 1.2-4.4 kN)
+_ENTRY_TENSION, _ENTRY_GAIN = 4000.0, 2.0e-3
+# [rad] the reel-in's recovery: a wing that has hung above _HANG and falls below _FALL (out of the hang, in a lull or a
+# gust) is re-powered and flown to the path (entry) instead of being reeled in while it falls (chosen: the hangs of
+# an NTM hour stay above 78.8 deg while they hold, docs/pumping.md "Turbulence")
+_HANG, _FALL = math.radians(80.0), math.radians(78.0)
+# [m/s] the entry's taut-tether reel-in acts in full above 15 m/s airspeed and not below 10 m/s (a slow wing is
+# not hauled in: 9.8 m/s, alpha 20.7 deg and a 6 kN snatch in an NTM entry, seed 1; chosen)
+_ENTRY_AIRSPEED = (10.0, 15.0)
 _MIN_TENSION = 5000.0  # [N] the bank law's smallest tension (slack-tether turns are not banked harder; tuned)
 
 
@@ -95,6 +107,8 @@ class CrosswindController:
         self.speed_limits = tuple(float(v) for v in task.winch.speed_limits)
         self.action_dtype = action_dtype
         self.phase = np.zeros(0, np.int64)
+        #: per copy: the reel-in has reached its hang (above 80 deg); recoveries from a fall out of it (counted)
+        self.hung, self.recoveries = np.zeros(0, bool), np.zeros(0, np.int64)
         self.path_index = np.zeros(0, np.int64)
         self.integral = np.zeros(0)
         self.last_phase = np.zeros(0, np.int64)
@@ -104,16 +118,23 @@ class CrosswindController:
         """Start copies ``mask`` (default all n) afresh: reel-out, path index unknown, no bank integral."""
         if len(self.phase) != n:
             self.phase, self.path_index, self.integral = np.zeros(n, np.int64), np.full(n, -1), np.zeros(n)
+            self.hung, self.recoveries = np.zeros(n, bool), np.zeros(n, np.int64)
             return
         m = np.ones(n, bool) if mask is None else np.asarray(mask, bool)
         self.phase[m], self.path_index[m], self.integral[m] = REEL_OUT, -1, 0.0
+        self.hung[m], self.recoveries[m] = False, 0
 
     def _advance_phase(self, ww, s, tension) -> np.ndarray:
         ph, f = self.phase, self.config.phases
         to_retract = (ph == REEL_OUT) & (s >= f.reel_length)
         to_in = (ph == RETRACT) & ((tension < f.depower_tension) | (ww.elevation > f.park_elevation - _PARK_MARGIN))
-        to_entry = (ph == REEL_IN) & (s <= 0.0)
+        self.hung &= ph == REEL_IN
+        self.hung |= (ph == REEL_IN) & (ww.elevation > _HANG)
+        fell = self.hung & (ww.elevation < _FALL)  # the recovery: out of the hang, re-powered towards the path
+        self.recoveries += fell
+        to_entry = ((ph == REEL_IN) & (s <= 0.0)) | fell
         ph[to_retract], ph[to_in], ph[to_entry] = RETRACT, REEL_IN, ENTRY
+        self.hung &= ~to_entry
         self.path_index[to_entry | to_retract] = -1
         return ph
 
@@ -158,14 +179,18 @@ class CrosswindController:
         lifts the wing towards the zenith, over which it would fall upwind), and paying out again by
         ``overload_gain`` per N of drum tension above ``reel_in_tension`` (the wing still powered after the
         retraction is not hauled in against its full pull). Entry: reel in ``_ENTRY_GAIN`` per N below
-        ``_ENTRY_TENSION`` (at most reel_in_speed), so the diving wing keeps its tether taut."""
+        ``_ENTRY_TENSION`` (at most reel_in_speed), so the diving wing keeps its tether taut, in full above
+        ``_ENTRY_AIRSPEED[1]`` and not below ``_ENTRY_AIRSPEED[0]`` (a slow wing hauled in stalls)."""
         w, f = self.config.winch, self.config.phases
         tension = o[:, WINCH_OBS_INDEX["drum_tension"]]
         v_out = w.reel_out_factor * np.maximum(o[:, WINCH_OBS_INDEX["radial_wind"]], 0.0)
         v_out = v_out + w.overload_gain * np.maximum(tension - w.max_tension, 0.0)
         slow = np.clip((_ZENITH_STOP - elevation) / _ZENITH_SLOW, 0.0, 1.0)
         v_in = -w.reel_in_speed * slow + w.overload_gain * np.maximum(tension - w.reel_in_tension, 0.0)
-        v_entry = -np.minimum(_ENTRY_GAIN * np.maximum(_ENTRY_TENSION - tension, 0.0), w.reel_in_speed)
+        airspeed = np.linalg.norm(o[:, 3:6] + o[:, WINCH_OBS_INDEX["wind_speed"], None] * np.array([1.0, 0.0, 0.0]),
+                                  axis=1)  # |w - v| with the wind along -x (the scenes' direction) at its speed
+        fast = np.clip((airspeed - _ENTRY_AIRSPEED[0]) / (_ENTRY_AIRSPEED[1] - _ENTRY_AIRSPEED[0]), 0.0, 1.0)
+        v_entry = -fast * np.minimum(_ENTRY_GAIN * np.maximum(_ENTRY_TENSION - tension, 0.0), w.reel_in_speed)
         cmd = np.select([ph == REEL_OUT, ph == RETRACT, ph == REEL_IN],
                         [v_out, np.where(s < f.reel_length + f.overrun, v_out, 0.0), np.minimum(v_in, v_out)],
                         v_entry)
