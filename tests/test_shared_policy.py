@@ -196,3 +196,22 @@ def test_training_smoke_writes_a_policy_that_evaluate_loads(tmp_path):
         assert (tmp_path / "run" / f).is_file()
     ctrl = make_controller(str(tmp_path / "run"), LM1)
     assert isinstance(ctrl, SharedPolicyController)
+
+
+def test_teacher_labels_are_the_lqr_law_before_its_clip():
+    """The DAgger labels clipped to [-1, 1] are the mill LQR controller's own actions (its predict)."""
+    from laddermill_gym.control.mill_lqr import MillLQRController
+    from laddermill_gym.harness.shared_train import teacher_labels
+    from laddermill_gym.multiagent.agents import build_task
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        task = build_task(LM1, 2, {k: v for k, v in case_kwargs(LM1).items() if k != "disturbances"})
+    n = task.n_wings
+    rng = np.random.default_rng(1)
+    ctrl = MillLQRController(rng.normal(0, 2.0, (2 * n, 6 * n)), np.zeros((n, 2)), task.actions)
+    task.reset(np.ones(2, bool), [np.random.default_rng(s) for s in (0, 1)])
+    obs = task.obs + rng.normal(0, 0.3, task.obs.shape)  # deviations large enough to saturate some entries
+    labels = teacher_labels(ctrl, obs)
+    assert np.abs(labels).max() > 1.0
+    np.testing.assert_array_equal(np.clip(labels, -1, 1).astype(np.float32), ctrl.predict(obs)[0])

@@ -17,7 +17,7 @@ local observation, the same weights for every slot):
 Every ``eval.every`` steps (and after each DAgger iteration) the policy is flown deterministically on the
 single-agent env's registered scenario (the paper's 0.01 rad step at 1 s) for ``eval.episode_time`` seconds,
 seeds 0 .. n - 1; ``model.zip`` is the best evaluation (most episodes held, then longest, then smallest
-lateral excursion), ``last_model.zip`` the last, ``bc_model.zip`` the cloned policy before PPO,
+lateral excursion), ``last_model.zip`` the last, ``bc_model.zip`` the best cloned policy (PPO's start),
 ``checkpoints/<phase>_<step>.zip`` every evaluated one. The run folder also gets ``training_curve.csv`` / ``.png``
 (with the LQR's figures on the same episodes), ``config.yaml`` and ``shared_policy.yaml`` (what
 ``make_controller(<run folder>, env)`` needs). Observations are not normalised by running statistics: the actor
@@ -233,6 +233,7 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
         model.save(out / "checkpoints" / f"{phase}_{step}.zip")
         if best["row"] is None or _score(row) > _score(best["row"]):
             best["row"] = row
+            best["state"] = {key: v.clone() for key, v in model.policy.state_dict().items()}
             model.save(out / "model.zip")
         model.save(out / "last_model.zip")
         with open(out / "training_curve.csv", "w", newline="") as fh:
@@ -242,6 +243,7 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
 
     with tqdm(total=cfg.bc_iterations * cfg.bc_steps, unit="step", desc="imitation (DAgger)") as pbar:
         imitation(cfg, model, venv, teacher, log, pbar)
+    model.policy.load_state_dict(best["state"])  # PPO starts from the best DAgger round (a later fit can be worse)
     model.save(out / "bc_model.zip")
     t_end = t0 + 60 * min(cfg.time_limit_minutes, (time.perf_counter() - t0) / 60 + cfg.ppo_minutes)
     if cfg.ppo_timesteps > 0 and time.perf_counter() < t_end:
