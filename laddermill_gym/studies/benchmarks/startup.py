@@ -6,6 +6,8 @@ imports gymnasium and the package, makes an env, resets it and takes one step, t
 Each measurement is its own subprocess (``python -c`` :data:`CHILD`), timed from the outside (interpreter start
 included) and from the inside (the imports to the first step); the child
 also counts the functions numba compiled (``numba.core.event``), so a warm start that compiles anything shows it.
+``--profile`` (``python -m laddermill_gym.studies.benchmarks.startup --profile --envs ID``) takes one cold start
+with every compile timed (:data:`PROFILE_CHILD`) and prints where the seconds go, function by function.
 Machines are shared and noisy: the warm start is the median of a few runs; compare cold starts taken in the same
 period. The targets are issue 32's: TetheredWing-v0 and Rotorcraft-v0 at most 20 s cold and 1 s warm,
 LadderMill-v0 (its operating point included) at most 60 s cold.
@@ -64,13 +66,70 @@ print(json.dumps({{"inside_s": seconds, "cpu_s": use.ru_utime + use.ru_stime, "c
 """
 
 
-def run_child(env_id: str, cache_dir: str | None) -> dict:
+#: ``--profile``: the fresh process times every function numba compiles (``numba:compile`` events, nested: a
+#: kernel's compile includes its callees'), so each row has its own seconds (self: the total less the callees
+#: compiled inside it, i.e. its typing, lowering and the LLVM optimisation and code generation of its library,
+#: into which numba links every callee's code again) and the phase (make, reset, step) it fell in
+PROFILE_CHILD = """import time
+t0 = time.perf_counter()
+import json
+from numba.core import event
+stack, rows, phase = [], [], ["import"]
+class Tree(event.Listener):
+    def on_start(self, ev):
+        f = ev.data["dispatcher"].py_func
+        row = {{"name": f.__module__ + "." + f.__qualname__, "depth": len(stack), "phase": phase[0],
+               "start": time.perf_counter(), "inner": 0.0}}
+        rows.append(row)
+        stack.append(row)
+    def on_end(self, ev):
+        row = stack.pop()
+        row["total_s"] = time.perf_counter() - row.pop("start")
+        row["self_s"] = row["total_s"] - row.pop("inner")
+        if stack:
+            stack[-1]["inner"] += row["total_s"]
+event.register("numba:compile", Tree())
+import gymnasium
+import numpy as np
+import laddermill_gym
+phase[0] = "make"
+env = gymnasium.make({env_id!r})
+phase[0] = "reset"
+env.reset(seed=0)
+phase[0] = "step"
+env.step(np.zeros(env.action_space.shape, dtype=env.action_space.dtype))
+seconds = time.perf_counter() - t0
+import resource
+use = resource.getrusage(resource.RUSAGE_SELF)
+print(json.dumps({{"inside_s": seconds, "cpu_s": use.ru_utime + use.ru_stime, "rows": rows}}))
+"""
+
+
+def profile(env_id: str, top: int = 25, echo=print) -> dict:
+    """One cold start of ``env_id`` (a new, empty numba cache) with every compile timed: prints the functions
+    with the most seconds of their own and the seconds per phase; returns the child's figures."""
+    with tempfile.TemporaryDirectory(prefix="laddermill_numba_") as tmp:
+        res = run_child(env_id, tmp, PROFILE_CHILD)
+    rows = res["rows"]
+    echo(f"== compile profile {env_id}: cold start {res['wall_s']:.1f} s (inside {res['inside_s']:.1f} s, CPU "
+         f"{res['cpu_s']:.1f} s), {len(rows)} functions compiled")
+    for ph in ("import", "make", "reset", "step"):
+        sel = [r for r in rows if r["phase"] == ph]
+        if sel:
+            echo(f"  {ph:6s} {sum(r['self_s'] for r in sel):7.1f} s compiling ({len(sel)} functions)")
+    echo(f"  {'self [s]':>9s} {'total [s]':>9s}  phase  function (nesting depth)")
+    for r in sorted(rows, key=lambda r: -r["self_s"])[:top]:
+        echo(f"  {r['self_s']:9.2f} {r['total_s']:9.2f}  {r['phase']:5s}  {r['name']} ({r['depth']})")
+    return res
+
+
+def run_child(env_id: str, cache_dir: str | None, child: str = CHILD) -> dict:
     """One start-up of ``env_id`` in a fresh subprocess with ``NUMBA_CACHE_DIR`` = ``cache_dir`` (None: this
     process's environment as it is): the child's figures plus ``wall_s``, the subprocess's wall time [s]."""
     env = dict(os.environ)
     if cache_dir is not None:
         env["NUMBA_CACHE_DIR"] = cache_dir
-    cmd = [sys.executable, "-c", CHILD.format(env_id=env_id)]
+    cmd = [sys.executable, "-c", child.format(env_id=env_id)]
     t0 = time.perf_counter()
     r = subprocess.run(cmd, env=env, capture_output=True, text=True)
     wall = time.perf_counter() - t0
@@ -133,7 +192,13 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(prog="python -m laddermill_gym.studies.benchmarks.startup")
     p.add_argument("--quick", action="store_true", help="warm starts only, from the current numba cache")
     p.add_argument("--envs", nargs="*", default=None, help="env ids (default: the three with targets)")
+    p.add_argument("--profile", action="store_true",
+                   help="one cold start per env with the seconds numba spends compiling each function")
     args = p.parse_args(argv)
+    if args.profile:
+        for env_id in args.envs or QUICK_ENVS:
+            profile(env_id)
+        return 0
     run_startup(args.quick, args.envs)
     return 0
 
