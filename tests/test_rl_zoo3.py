@@ -153,7 +153,7 @@ def test_evaluation_uses_the_training_settings_with_the_recipe(tmp_path):
     file_kwargs = zoo_env_kwargs("ppo", ENV_ID)
     train, evaluation = _zoo_envs(tmp_path / "recipe", dict(file_kwargs))
     assert settings(train) == settings(evaluation) and train.episode_time == file_kwargs["episode_time"] == 60.0
-    assert len(train.disturbances) == len(file_kwargs["disturbances"]) == 2
+    assert len(train.disturbances) == len(file_kwargs["disturbances"]) == 4  # configs/agents/ppo_tethered_wing.yaml
     train, evaluation = _zoo_envs(tmp_path / "file_only", None)
     default = gym.make(ENV_ID).unwrapped.task
     assert settings(train) != settings(evaluation) and train.episode_time == 60.0
