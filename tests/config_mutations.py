@@ -81,6 +81,8 @@ ACCEPTED: dict[tuple[str, str], str] = {
     ("hyperparameters.*", "missing"): "default: Stable-Baselines3's",
     ("policy_kwargs.*", "missing"): "default: Stable-Baselines3's",
     ("net_arch", "short"): "a network of one hidden layer",
+    ("*.net_arch.vf", "short"): "a critic of one hidden layer",
+    ("init_from", "missing"): "default: the actor starts from random weights",
     ("log_std_init", "negative"): "a smaller initial action noise (bounds [-20, 2])",
     ("seed", "huge"): "any seed in numpy's range [0, 2^32)",
     ("total_timesteps", "huge"): "an upper bound: time_limit_minutes ends training first",

@@ -242,6 +242,7 @@ ENV_KWARG_BOUNDS: dict[str, tuple[float, str]] = {
 }
 #: Upper bounds of the fields of the settings mappings (``initial_noise``: standard deviations): (bound, why).
 SETTINGS_BOUNDS: dict[str, tuple[float, str]] = {
+    "power_weight": (100.0, "a power term up to 100 times the other terms' weights"),
     "lateral_velocity": (150.0, "m/s: the fastest wind (ladder/bounds.py)"),
     "roll_rate": (100.0, "rad/s: the scenes' exploding-state guard max_rate"),
     "yaw_rate": (100.0, "rad/s: the scenes' exploding-state guard max_rate"),
@@ -301,7 +302,15 @@ DISTURBANCE_BOUNDS: dict[str, tuple[float, str]] = {
     "speed_std": (1.0, "a standard deviation of the speed factor of the whole mean wind"),
     "direction_std": (math.pi, "rad: half a turn"),
     "correlation_time": (86400.0, "s: a day"),
+    "w20": (100.0, "m/s: the turbulence's wind at 20 ft (MIL-HDBK-1797 severe: 45 kt = 23 m/s)"),
+    "wind_speed": (150.0, "m/s: the fastest wind (ladder/bounds.py)"),
+    "fade_in": (86400.0, "s: a day"),
+    "dh": (1000.0, "m: a turbulence grid's row spacing"),
+    "dxi": (1000.0, "m: a turbulence grid's column spacing"),
 }
+#: Extent [m] of a turbulence grid's ``heights`` and ``along_wind`` pairs: 100 km, beyond every system here (the
+#: mill's chain reaches 3.6 km); a larger grid would not fit in memory
+GRID_EXTENT = 1.0e5
 
 
 def _check_disturbances(s: Section) -> list:
@@ -329,6 +338,8 @@ def _check_disturbances(s: Section) -> list:
             elif f.name in d and f.name in DISTURBANCE_BOUNDS:
                 high, why = DISTURBANCE_BOUNDS[f.name]
                 entry.number(f.name, nonneg=True, high=high, why=why)
+            elif f.name in d and f.name in ("heights", "along_wind") and max(map(abs, d[f.name])) > GRID_EXTENT:
+                raise entry.error(f.name, d[f.name], f"must lie within +-{GRID_EXTENT:g} m (a grid of that extent)")
     return list(disturbances)
 
 
