@@ -16,6 +16,7 @@ from laddermill_gym.envs import ENV_IDS, DirectionStep, RandomPerturbation
 TW, LC, RC = "laddermill_gym/TetheredWing-v0", "laddermill_gym/LadderChain-v0", "laddermill_gym/Rotorcraft-v0"
 LM, PK, PMC = "laddermill_gym/LadderMill-v0", "laddermill_gym/PumpingKite-v0", "laddermill_gym/PointMassChain-v0"
 PK1, LM1 = "laddermill_gym/PumpingKite-v1", "laddermill_gym/LadderMill-v1"
+LM2 = "laddermill_gym/LadderMill-v2"
 #: the small mill of tests/test_laddermill_env.py (11 wings, short settling) and alpha / beta ranges that never end it
 MILL = dict(scene="laddermill", scene_options={"n_wings": 11}, settle={"max_time": 100.0}, control_dt=0.05,
             termination={"alpha_range_deg": (-180.0, 180.0), "max_abs_beta_deg": 90.0})
@@ -34,6 +35,10 @@ CASES = {
               initial_noise={"lateral_velocity": 0.05, "roll_rate": 0.01}), 0.1, 20),
     # LadderMill-v1's registered defaults (scene laddermill_v1, authority 0.2) on the small mill's 11 wings
     LM1: (dict(ENV_IDS[LM1], **{k: v for k, v in MILL.items() if k != "scene"}, episode_time=5.0,
+               disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.01), DirectionStep(step=(-0.01, 0.01))],
+               initial_noise={"lateral_velocity": 0.05, "roll_rate": 0.01}), 0.5, 20),
+    # LadderMill-v2's registered defaults (scene laddermill_v2, authority 0.2) on the small mill's 11 wings
+    LM2: (dict(ENV_IDS[LM2], **{k: v for k, v in MILL.items() if k != "scene"}, episode_time=5.0,
                disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.01), DirectionStep(step=(-0.01, 0.01))],
                initial_noise={"lateral_velocity": 0.05, "roll_rate": 0.01}), 0.5, 20),
     PK: (dict(ENV_IDS[PK], disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.01),

@@ -41,7 +41,8 @@ def test_shipped_suite_loads_with_every_env():
     assert s.version == 1 and set(s.envs) == set(ENV_IDS) - {"laddermill_gym/PumpingKite-v0",
                                                              "laddermill_gym/PointMassChain-v0",
                                                              "laddermill_gym/PumpingKite-v1",
-                                                             "laddermill_gym/LadderMill-v1"}
+                                                             "laddermill_gym/LadderMill-v1",
+                                                             "laddermill_gym/LadderMill-v2"}
     for _, scenarios in s.envs.values():
         assert all(sc.duration > sc.start for sc in scenarios)
 

@@ -31,6 +31,7 @@ DEFAULT_LQR_CONFIGS: dict[str, Path] = {
     "laddermill_gym/LadderChain-v0": CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml",
     "laddermill_gym/LadderMill-v0": CONFIG_DIR / "agents" / "lqr_laddermill.yaml",
     "laddermill_gym/LadderMill-v1": CONFIG_DIR / "agents" / "lqr_laddermill_v1.yaml",
+    "laddermill_gym/LadderMill-v2": CONFIG_DIR / "agents" / "lqr_laddermill_v2.yaml",
 }
 
 

@@ -14,6 +14,9 @@ Registered on ``import laddermill_gym``:
 * ``laddermill_gym/LadderMill-v1``: the same mill with the v1 wing (scene ``laddermill_v1``, 152.9 kW at 2 m/s,
   docs/wing_data.md) and tail actions at a fifth of the surfaces' half ranges (``authority=0.2``), so random actions
   survive seconds, :class:`~laddermill_gym.envs.laddermill.env_v1.LadderMillV1Env`;
+* ``laddermill_gym/LadderMill-v2``: the same mill with the v2 wing, whose lift falls with its air speed (scene
+  ``laddermill_v2``: periodic in plane at 1-5 m/s, 102.2 kW at 2 m/s; docs/wing_data.md) and v1's ``authority=0.2``,
+  :class:`~laddermill_gym.envs.laddermill.env_v2.LadderMillV2Env`;
 * ``laddermill_gym/PumpingKite-v0``: Lansdorp et al.'s (2008) pumping kite, one wing on a 300 m tether wound on a
   winch (configs/pumping/pumping_kite.yaml, 20 Hz control of the tails and the winch speed, 400 s episodes of about
   two reel-out / reel-in cycles, the 0.01 rad direction step at 1 s), :class:`~laddermill_gym.envs.pumping.env.
@@ -93,6 +96,11 @@ ENV_IDS: dict[str, dict] = {
     # median 6.75 s over 10 seeds against 0.82 s at 1.0; envs/laddermill/env_v1.py, tests/test_laddermill_v1.py)
     "laddermill_gym/LadderMill-v1": dict(scene="laddermill_v1", control_dt=0.05, episode_time=120.0,
                                          authority=0.2),
+    # issue 30's v2 wing (scene laddermill_v2: periodic in plane at 1-5 m/s, 102.2 kW at 2 m/s; its 200 s ramp is
+    # the scene's, the default settle finds the periodic motion at t = 975 s) with v1's authority 0.2 [-]
+    # (envs/laddermill/env_v2.py, tests/test_laddermill_v2.py)
+    "laddermill_gym/LadderMill-v2": dict(scene="laddermill_v2", control_dt=0.05, episode_time=120.0,
+                                         authority=0.2),
     "laddermill_gym/PumpingKite-v0": dict(config="pumping_kite", control_dt=0.05, episode_time=400.0),
     # crosswind pumping (issue 29): v0's kite; 600 s, about two cycles of the crosswind controller (267 s each)
     "laddermill_gym/PumpingKite-v1": dict(config="pumping_kite", control_dt=0.05, episode_time=600.0),
@@ -122,6 +130,9 @@ ENTRY_POINTS: dict[str, tuple[str, str, str]] = {
                                      "laddermill_gym.envs.laddermill.task:MillTask"),
     "laddermill_gym/LadderMill-v1": ("laddermill_gym.envs.laddermill.env_v1:LadderMillV1Env",
                                      "laddermill_gym.envs.laddermill.env_v1:LadderMillV1VectorEnv",
+                                     "laddermill_gym.envs.laddermill.task:MillTask"),
+    "laddermill_gym/LadderMill-v2": ("laddermill_gym.envs.laddermill.env_v2:LadderMillV2Env",
+                                     "laddermill_gym.envs.laddermill.env_v2:LadderMillV2VectorEnv",
                                      "laddermill_gym.envs.laddermill.task:MillTask"),
     "laddermill_gym/PumpingKite-v0": ("laddermill_gym.envs.pumping.env:PumpingKiteEnv",
                                       "laddermill_gym.envs.pumping.env:PumpingKiteVectorEnv",

@@ -83,6 +83,8 @@ STATION_TABLE
 
     ## Version History
 
+    * v2: a new id, ``laddermill_gym/LadderMill-v2`` (:class:`~laddermill_gym.envs.laddermill.env_v2.LadderMillV2Env`):
+      the v2 wing (scene ``laddermill_v2``, periodic in plane at 1-5 m/s, 102.2 kW at 2 m/s) and ``authority=0.2``.
     * v1: a new id, ``laddermill_gym/LadderMill-v1`` (:class:`~laddermill_gym.envs.laddermill.env_v1.LadderMillV1Env`):
       the v1 wing (scene ``laddermill_v1``, 152.9 kW at 2 m/s) and ``authority=0.2`` by default; this id keeps its
       scene, dynamics, spaces and rewards.

@@ -89,6 +89,8 @@ STATION_TABLE
 
     ## Version History
 
+    * v2: a new id, ``laddermill_gym/LadderMill-v2`` (the v2 wing, scene ``laddermill_v2``); this id keeps its scene,
+      dynamics, spaces and rewards.
     * v1: the v1 wing (scene ``laddermill_v1``: attachment below the wing's ac, elevators -8 / -0.5 deg, the
       ``cable`` insertion rule; 152.9 kW at 2 m/s against v0's 66 kW) and ``authority=0.2`` by default (random
       actions survive a median 6.75 s instead of 0.82 s). Spaces, observation layout and rewards as v0.
