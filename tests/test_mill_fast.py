@@ -84,7 +84,7 @@ def _v2_case(v_c, max_time=3000.0):
 @pytest.mark.parametrize("v_c", [1.0, 2.0, 5.0])
 def test_v2_mill_is_periodic_in_plane_at_the_papers_cable_speeds(v_c):
     """The paper: periodic in plane at 1 to 5 m/s (Figs. 6-7). The v2 wing (trim alpha falling with air speed,
-    docs/wing_data.md, "A wing whose lift falls with its air speed (v2)") reaches a periodic motion at 1, 2 and 5 m/s
+    docs/mill_fast.md, "A wing whose lift falls with its air speed (v2)") reaches a periodic motion at 1, 2 and 5 m/s
     with every tension of the period below the breaking load over F_s = 2.5 and none above the breaking load on the
     way; its power is the paper's relation (T_first - T_last) V_c (closed form) to 1 %."""
     from laddermill_gym.studies.mill.power_curve import SAFETY_FACTOR, hand_estimate_w

@@ -1,4 +1,4 @@
-"""The v2 laddermill wing's design study (issue 30 point 1 at 5 m/s; docs/wing_data.md, "A wing whose lift falls with
+"""The v2 laddermill wing's design study (issue 30 point 1 at 5 m/s; docs/mill_fast.md, "A wing whose lift falls with
 its air speed (v2)"). Oracles: the closed form d alpha / dV = -2 W m_w / (V k) of the implicit-function theorem
 against finite differences of the simulator's own trim search (``sim.statics.pitch_trim_alpha``, a separate
 implementation of the moment about the attachment); the v2 mass properties against the parallel-axis theorem from

@@ -1,7 +1,7 @@
 """The mill in plane at V_c = 1-5 m/s (issue 30 point 1): the v1 near-top elevator rule, the loop's downwind drift, and
 the v2 wing's periodic motions.
 
-Three measurements, printed as the doc (docs/wing_data.md, "Not solved with the v1 wing: 5 m/s" and "A wing whose lift
+Three measurements, printed as the doc (docs/mill_fast.md, "Not solved with the v1 wing: 5 m/s" and "A wing whose lift
 falls with its air speed (v2)") quotes them:
 
 * ``case``: the scene ``laddermill_v1`` (or ``--scene laddermill_v2``) in plane from rest, V_c ramped from 0 over

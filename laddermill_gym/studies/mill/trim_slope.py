@@ -1,5 +1,5 @@
 """How a cable-held wing's trim angle of attack falls with its air speed (issue 30 point 1 at V_c = 5 m/s; the design
-study of docs/wing_data.md, "A wing whose lift falls with its air speed (v2)").
+study of docs/mill_fast.md, "A wing whose lift falls with its air speed (v2)").
 
 A wing at rest on the mill's cable in a horizontal wind V (pitch = alpha) pivots about its attachment P, where the
 resultant of its two elements' tensions acts, so the tension has no moment about P; the moment of aerodynamics and
