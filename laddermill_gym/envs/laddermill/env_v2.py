@@ -32,7 +32,8 @@ class LadderMillV2Env(LadderMillEnv):
     the open-loop mill leaves the aerodynamic data at 16.2 s (slot 59, at the loop's top, at beta = 60.4 deg); the
     lateral LQR (``make_controller("lqr", id)``, configs/agents/lqr_laddermill_v2.yaml, v1's weights and
     period-mean design on this mill's orbit) holds it for 300 s within 0.09 m of the in-plane orbit at a mean power
-    of 102.8 kW (tests/test_laddermill_v2.py).
+    of 102.8 kW, and the same config designed at 1 and 5 m/s holds those mills too (0.088 and 0.086 m;
+    tests/test_laddermill_v2.py).
     Many copies: ``gymnasium.make_vec(id, n, vectorization_mode="vector_entry_point")``.
 
     ## Action Space
