@@ -80,6 +80,8 @@ figures:
 	cp results/pumping_cycle/pumping_timeseries.png $(FIG)/pumping_crosswind_timeseries.png
 	python -m laddermill_gym.studies.pumping.power_curve --out results/pumping_power
 	cp results/pumping_power/pumping_power_curve.png $(FIG)/pumping_power_curve.png
+	python -m laddermill_gym.studies.pumping.power_curve --reel-element-length 40 --out results/pumping_power_reeling
+	cp results/pumping_power_reeling/pumping_power_curve.png $(FIG)/pumping_power_curve_reeling.png
 	for s in step_minus_0.05 step_0.1 gust; do \
 		laddermill evaluate --scenario $$s --controllers lqr $(RUN)/best_model.zip $(RUN)/model.zip \
 			--episodes 1 --out results/tethered_wing_$$s; done

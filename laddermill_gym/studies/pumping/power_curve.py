@@ -123,6 +123,9 @@ def _figure(rows: list[dict], out: Path) -> Path:
                               ("schmehl_matched_W", "Schmehl at the simulated operating point", "bs--"),
                               ("schmehl_W", "Schmehl, nominal", "c^:"), ("lansdorp_W", "Lansdorp eqs. 1-14", "r.:")):
         ax.plot(v, [r[key] / 1e3 for r in rows], style, label=label)
+    no_trim = [r["v0"] for r in rows if r["failed"].startswith("no trim")]
+    if no_trim:  # a physical limit, shown rather than left out: the wing cannot lift its tether at these winds
+        ax.plot(no_trim, [0.0] * len(no_trim), "kx", ms=9, label="no trim: the wing cannot lift its tether")
     ax.set_xlabel("wind speed v0 at 50 m [m/s]")
     ax.set_ylabel("net electrical mean power of a cycle [kW]")
     ax.set_title("PumpingKite: crosswind cycle against the quasi-steady models")
