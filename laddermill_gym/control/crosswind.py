@@ -187,7 +187,8 @@ class CrosswindController:
         v_out = v_out + w.overload_gain * np.maximum(tension - w.max_tension, 0.0)
         slow = np.clip((_ZENITH_STOP - elevation) / _ZENITH_SLOW, 0.0, 1.0)
         v_in = -w.reel_in_speed * slow + w.overload_gain * np.maximum(tension - w.reel_in_tension, 0.0)
-        airspeed = np.linalg.norm(o[:, 3:6] + o[:, WINCH_OBS_INDEX["wind_speed"], None] * np.array([1.0, 0.0, 0.0]),
+        vel = o[:, OBS_INDEX["vx"]:OBS_INDEX["vz"] + 1]  # [m/s] the wing's velocity
+        airspeed = np.linalg.norm(vel + o[:, WINCH_OBS_INDEX["wind_speed"], None] * np.array([1.0, 0.0, 0.0]),
                                   axis=1)  # |w - v| with the wind along -x (the scenes' direction) at its speed
         fast = np.clip((airspeed - _ENTRY_AIRSPEED[0]) / (_ENTRY_AIRSPEED[1] - _ENTRY_AIRSPEED[0]), 0.0, 1.0)
         v_entry = -fast * np.minimum(_ENTRY_GAIN * np.maximum(_ENTRY_TENSION - tension, 0.0), w.reel_in_speed)
