@@ -26,7 +26,8 @@ from laddermill_gym.studies.commands import Parser, UsageError, check_controller
 
 __all__ = ["DEFAULT_ENV", "STEP", "STEP_TIME", "ControlRun", "run_demo", "plot_demo", "write_gif", "main"]
 
-#: the newest mill id: the one the main job shows
+#: the main job's mill: v1, 153 kW at the paper's Fig. 8 speed of 2 m/s (LadderMill-v2, the wing periodic up to
+#: 5 m/s, is a second design, not v1's replacement: 102 kW at 2 m/s; ``--env laddermill_gym/LadderMill-v2``)
 DEFAULT_ENV = "laddermill_gym/LadderMill-v1"
 #: [rad] the paper's wind-direction step (Meijaard et al. 1999, Fig. 8)
 STEP = 0.01
@@ -88,6 +89,8 @@ def run_demo(env_id: str = DEFAULT_ENV, controllers=("open_loop", "lqr"), durati
     """Run each controller spec (:func:`~laddermill_gym.control.factory.make_controller`) on ``env_id`` from its
     operating point through the paper's step for ``duration`` [s] after it; ``frames_per_s`` GIF frames per
     simulated second (0: none). ``env_kwargs`` override the env's arguments (``scene_options`` for a smaller mill)."""
+    import warnings
+
     import gymnasium as gym
 
     from laddermill_gym.atmosphere.disturbances import DirectionStep
@@ -95,7 +98,9 @@ def run_demo(env_id: str = DEFAULT_ENV, controllers=("open_loop", "lqr"), durati
 
     kw = dict(env_kwargs or {}, episode_time=float(duration) + STEP_TIME,
               disturbances=[DirectionStep(step=STEP, time=STEP_TIME)])
-    env = gym.make_vec(env_id, 1, vectorization_mode="vector_entry_point", **kw)
+    with warnings.catch_warnings():  # Gymnasium calls v1 "out of date" once v2 exists; here both are designs
+        warnings.filterwarnings("ignore", message=".*is out of date", category=DeprecationWarning)
+        env = gym.make_vec(env_id, 1, vectorization_mode="vector_entry_point", **kw)
     every = max(1, int(round(1.0 / (frames_per_s * env.task.control_dt)))) if frames_per_s > 0 else None
     runs = []
     for spec in controllers:
