@@ -53,9 +53,9 @@ def test_v1_scene_is_the_laddermill_with_the_v1_wing():
 
 
 def test_power_curve_quick(tmp_path):
-    """``laddermill power-curve --quick``: files written; every case's mean power equals the paper's relation
-    (T_first - T_last) V_c from the period-mean tensions (closed form) to 1 %."""
-    assert power_curve.main(["--quick", "--out", str(tmp_path)]) == 0
+    """``laddermill power-curve --scene laddermill_v1 --quick``: files written; every case's mean power equals the
+    paper's relation (T_first - T_last) V_c from the period-mean tensions (closed form) to 1 %."""
+    assert power_curve.main(["--scene", SCENE, "--quick", "--out", str(tmp_path)]) == 0
     for name in ("power_curve.csv", "power_curve.json", "power_curve.png"):
         assert (tmp_path / name).stat().st_size > 0
     meta = json.loads((tmp_path / "power_curve.json").read_text(encoding="utf-8"))

@@ -1,20 +1,30 @@
 """The laddermill's power curve (issue 30 point 3): mean electrical power against the cable speed V_c at the paper's
 wind, and the best V_c and its power against the wind speed V0.
 
-Run ``laddermill power-curve [--out results/power_curve] [--quick] [--workers N]`` (or ``python -m
-laddermill_gym.studies.mill.power_curve``). Scene ``laddermill_v1`` (the v1 wing, docs/wing_data.md "Design study")
-in plane (``dimension: 2``), the cable speed ramped from rest in the scene's 30 s and held; each case is run to
-its periodic motion (:func:`laddermill_gym.ladder.periodic.run_to_periodic`, shape and power repeating to 1e-3
-for two periods, at most ``max_time`` s). Per case: the mean electrical power over the last period, the hand
-estimate (T_first - T_last) V_c from the period-mean tensions (the paper's relation, closed form), whether the
-motion is periodic, and the largest tension of the last period against the cable's breaking load divided by the
-safety factor :data:`SAFETY_FACTOR` (``within_limit``); ``t_peak_search_kN`` is the largest tension of the whole
-search, which includes the transient from the start at rest (the mill jerked to V_c in 30 s).
+Run ``laddermill power-curve [--scene laddermill_v2] [--ramp rate] [--out results/power_curve] [--quick]
+[--workers N]`` (or ``python -m laddermill_gym.studies.mill.power_curve``). Scene (``--scene``): ``laddermill_v2``
+(the default: the v2 wing, docs/mill_fast.md "A wing whose lift falls with its air speed (v2)", the design whose
+in-plane mill is periodic over the paper's range, 1-5 m/s) or ``laddermill_v1`` (the v1 wing, docs/wing_data.md
+"Design study", periodic at 0.5-2 m/s only), in plane (``dimension: 2``). Each case starts at rest; the cable speed is
+ramped from 0 to V_c by the ramp rule (:func:`ramp_time`, ``--ramp``): ``rate`` (the default) reaches V_c at the
+scene's own acceleration (v2: 2 m/s over 200 s, 0.01 m/s^2, so 100 V_c s: the ramp the v2 mill needs from rest;
+v1: 2 m/s over 30 s, 15 V_c s), ``scene`` takes the scene's ramp time for every V_c (the v1 table of
+docs/wing_data.md). Then the case is run to its periodic motion (:func:`laddermill_gym.ladder.periodic.run_to_periodic`,
+shape and power repeating to 1e-3 for two periods, at most ``max_time`` s of search after the ramp); a case that is
+not periodic is reported as such with its last period, a breakdown (during the ramp or the search) with its time and
+message, never dropped. Per case: the mean electrical power over the last period, the hand estimate (T_first -
+T_last) V_c from the period-mean tensions (the paper's relation, closed form), the Betz bound of the wind power
+through the loop's frontal strip (:func:`betz_bound_w`), whether the motion is periodic, and the largest tension of
+the last period against the cable's breaking load divided by the safety factor :data:`SAFETY_FACTOR`
+(``within_limit``); ``t_rest_max_kN`` is the largest tension of the rest state the case starts from and
+``t_peak_search_kN`` the largest of the search (every step after the ramp). The ramp is stepped in one call, as
+run_to_periodic and ``fast_mill case`` step it (so a case is bit for bit that command's case); its tensions are not
+sampled.
 
-Tail settings, the stated rule (:func:`tail_rule`): every case flies the scene's own elevators (ascending -8 deg,
-descending -0.5 deg), for which the v1 design was chosen; a wing's trim alpha depends on its elevator and cable
-attachment, not on the wind or the cable speed (derivations/pitch_stability.py), so one setting holds each leg's
-C_L across the curve.
+Tail settings, the stated rule (:func:`tail_rule`): every case flies the scene's own elevators (v2: ascending +1.3,
+descending +2.5 deg; v1: -8 / -0.5 deg), for which each design was chosen; a wing's trim alpha is set by its elevator,
+attachment and air speed (derivations/pitch_stability.py; the v2 wing's falls with air speed by design), not
+scheduled per case.
 
 Writes ``power_curve.csv`` (one row per case), ``power_curve.json`` (settings, rows, best V_c per V0) and
 ``power_curve.png`` (power against V_c at the paper's wind; best power and V_c against V0).
@@ -32,24 +42,29 @@ import numpy as np
 from laddermill_gym.studies import parallel
 from laddermill_gym.studies.commands import Parser, UsageError, check_number
 
-SCENE = "laddermill_v1"
+SCENES = ("laddermill_v2", "laddermill_v1")  # the first: the default (periodic over the paper's 1-5 m/s)
+SCENE = SCENES[0]
+RAMPS = ("rate", "scene")  # ramp rules (ramp_time); the first: the default
 PAPER_V0 = 8.0  # [m/s] Meijaard et al. 1999, the example's wind at h0 = 50 m
 PAPER_POWER_W = 200e3  # [W] Meijaard et al. 1999: "of the order of 200 kW"
 #: [-] tension limit = breaking_load / SAFETY_FACTOR: F_s = 2.5 of Lansdorp, Ruiterkamp, Williams & Ockels,
 #: "Long-Term Laddermill Modeling for Site Selection" (AIAA 2008), its nominal case (../shared/papers/003_*.txt)
 SAFETY_FACTOR = 2.5
-
+BETZ = 16.0 / 27.0  # [-] Betz's limit on the power an actuator disc takes from the wind through it
 
 @dataclasses.dataclass(frozen=True)
 class Config:
     """speeds [m/s]: V_c at the paper's wind; winds [m/s]: V0 of the second sweep; wind_speeds [m/s]: the V_c
-    tried per wind; max_time [s]: periodic search per case; n_wings: None for the scene's 101."""
+    tried per wind (the search for the best V_c: this grid); max_time [s]: periodic search per case after the ramp;
+    n_wings: None for the scene's 101; scene: one of SCENES; ramp: one of RAMPS."""
 
     speeds: tuple[float, ...] = (0.5, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0)
     winds: tuple[float, ...] = (4.0, 6.0, 8.0, 10.0, 12.0, 14.0)
     wind_speeds: tuple[float, ...] = (1.0, 2.0, 3.0)
     max_time: float = 1500.0
     n_wings: int | None = None
+    scene: str = SCENE
+    ramp: str = RAMPS[0]
 
 
 QUICK = Config(speeds=(2.0,), winds=(8.0,), wind_speeds=(2.0,), max_time=70.0)
@@ -60,31 +75,75 @@ def tail_rule(scene_initial) -> tuple[float, float]:
     return float(np.degrees(scene_initial.elevator_up)), float(np.degrees(scene_initial.elevator_down))
 
 
+def ramp_time(station, v_c: float, rule: str) -> float:
+    """The time [s] the cable speed takes from rest to ``v_c`` [m/s]: ``rate``, at the scene's own acceleration
+    (its schedule's last speed over its last time); ``scene``, the scene's ramp time whatever V_c."""
+    t, v = np.asarray(station.speed_times, float), np.asarray(station.speed_values, float)
+    if t.size != 2 or v[0] != 0.0 or not v[1] > 0.0:
+        raise ValueError(f"station.speed_m_s = {list(v)} at speed_times_s = {list(t)}: the ramp rule needs one ramp "
+                         "from rest (0 m/s) to a positive speed")
+    if rule == "scene":
+        return float(t[1] - t[0])
+    if rule == "rate":
+        return float(v_c * (t[1] - t[0]) / v[1])
+    raise ValueError(f"ramp rule {rule!r}: use one of {RAMPS}")
+
+
+def betz_bound_w(wind, span: float, h_low: float, h_high: float, n: int = 4001) -> float:
+    """Betz's limit [W] on the wind power through the loop's frontal strip: BETZ times the integral of
+    rho(h) V(h)^3 / 2 over the span [m] wide strip from h_low to h_high [m] (the wings' lowest and highest height;
+    in plane both legs fly in the same strip). ``wind``: the scene's WindParams (the paper's eqs. 1 and 3: power law
+    below h0, linear above; barometric density); trapezoidal rule on ``n`` points."""
+    if wind.density_model != "barometric":
+        raise ValueError(f"wind.density_model = {wind.density_model!r}: the bound is written for 'barometric'")
+    h = np.linspace(max(h_low, 0.0), max(h_high, 0.0), n)
+    v = np.where(h < wind.h0, wind.v0 * (np.maximum(h, 0.0) / wind.h0) ** wind.exponent,
+                 wind.v0 + wind.v1 * (h - wind.h0))
+    rho = wind.rho0 * np.exp(-h / wind.scale_height)
+    f = 0.5 * rho * v ** 3 * span
+    return float(BETZ * np.sum(0.5 * (f[1:] + f[:-1]) * np.diff(h)))
+
+
 def hand_estimate_w(t_first_n: float, t_last_n: float, v_c: float) -> float:
     """The paper's power relation, closed form: (T_first - T_last) V_c [W] from the tensions [N] and V_c [m/s]."""
     return (t_first_n - t_last_n) * v_c
 
 
-def run_case(v0: float, v_c: float, max_time: float, n_wings: int | None = None, scene: str = SCENE) -> dict:
-    """One case in plane: the scene at wind V0 [m/s] and cable speed V_c [m/s] run to its periodic motion."""
+def run_case(v0: float, v_c: float, max_time: float, n_wings: int | None = None, scene: str = SCENE,
+             ramp: str = RAMPS[0]) -> dict:
+    """One case in plane: the scene at wind V0 [m/s], from rest, its cable speed ramped to V_c [m/s] by the ramp
+    rule and held, run to its periodic motion (or a breakdown, or ``max_time`` [s] of search)."""
     from laddermill_gym import load_scene
     from laddermill_gym.ladder.periodic import run_to_periodic
+    from laddermill_gym.sim.simulator import SimulationError
 
+    t_ramp = ramp_time(load_scene(scene, dimension=2).assembly.station, v_c, ramp)
     sc = load_scene(scene, dimension=2, n_wings=n_wings,
-                    overrides={"wind": {"v0": float(v0)}, "station": {"speed_m_s": [0.0, float(v_c)]}})
+                    overrides={"wind": {"v0": float(v0)},
+                               "station": {"speed_times_s": [0.0, t_ramp], "speed_m_s": [0.0, float(v_c)]}})
     up, down = tail_rule(sc.initial)
-    sim = sc.simulator()
-    res = run_to_periodic(sim, shape_tol=1e-3, power_tol=1e-3, max_time=max_time, progress=False)
     breaking = float(np.min(sc.assembly.elements.breaking_load))
     limit = breaking / SAFETY_FACTOR
-    t_max = float(np.max(res.tension_max_N))
-    return {"v0_m_s": float(v0), "v_c_m_s": float(v_c), "elevator_up_deg": up, "elevator_down_deg": down,
-            "periodic": bool(res.converged), "t_s": float(res.t_s), "power_kW": res.mean_electrical_power_W / 1e3,
-            "hand_estimate_kW": hand_estimate_w(res.tension_mean_N[0], res.tension_mean_N[-1], v_c) / 1e3,
-            "t_first_kN": float(res.tension_mean_N[0]) / 1e3, "t_last_kN": float(res.tension_mean_N[-1]) / 1e3,
-            "t_max_kN": t_max / 1e3, "t_limit_kN": limit / 1e3, "within_limit": bool(t_max <= limit),
-            "t_peak_search_kN": float(res.peak_tension_ratio) * breaking / 1e3,
-            "breakdown": res.breakdown or ""}
+    row = {"scene": scene, "v0_m_s": float(v0), "v_c_m_s": float(v_c), "ramp_s": t_ramp, "elevator_up_deg": up,
+           "elevator_down_deg": down, "t_limit_kN": limit / 1e3}
+    sim = sc.simulator()
+    row["t_rest_max_kN"] = float(np.max(sim.tensions())) / 1e3
+    try:
+        res = run_to_periodic(sim, shape_tol=1e-3, power_tol=1e-3, max_time=max_time, progress=False)
+    except SimulationError as err:  # the search catches its own; this is the ramp (stepped in one call)
+        nan = float("nan")
+        return row | {"periodic": False, "t_s": float(sim.t), "power_kW": nan, "hand_estimate_kW": nan,
+                      "betz_kW": nan, "t_first_kN": nan, "t_last_kN": nan, "t_max_kN": nan, "within_limit": False,
+                      "t_peak_search_kN": nan, "breakdown": f"during the ramp: {err}", "overload": ""}
+    t_max, peak = float(np.max(res.tension_max_N)), float(res.peak_tension_ratio) * breaking
+    heights = -res.shape_m[:, 2]
+    betz = betz_bound_w(sc.assembly.wind, sc.assembly.wing(0).span, float(heights.min()), float(heights.max()))
+    return row | {"periodic": bool(res.converged), "t_s": float(res.t_s), "power_kW": res.mean_electrical_power_W / 1e3,
+                  "hand_estimate_kW": hand_estimate_w(res.tension_mean_N[0], res.tension_mean_N[-1], v_c) / 1e3,
+                  "betz_kW": betz / 1e3, "t_first_kN": float(res.tension_mean_N[0]) / 1e3,
+                  "t_last_kN": float(res.tension_mean_N[-1]) / 1e3, "t_max_kN": t_max / 1e3,
+                  "within_limit": bool(t_max <= limit), "t_peak_search_kN": peak / 1e3,
+                  "breakdown": res.breakdown or "", "overload": res.overload.text() if res.overload else ""}
 
 
 def best_per_wind(rows: list[dict]) -> list[dict]:
@@ -102,53 +161,90 @@ def run(cfg: Config, workers: int = 0, progress: bool = True) -> tuple[list[dict
     are shared by the two sweeps."""
     cases = [(PAPER_V0, v) for v in cfg.speeds]
     cases += [(w, v) for w in cfg.winds for v in cfg.wind_speeds if (w, v) not in cases]
-    tasks = [(run_case, dict(v0=w, v_c=v, max_time=cfg.max_time, n_wings=cfg.n_wings)) for w, v in cases]
+    tasks = [(run_case, dict(v0=w, v_c=v, max_time=cfg.max_time, n_wings=cfg.n_wings, scene=cfg.scene,
+                             ramp=cfg.ramp)) for w, v in cases]
     rows = parallel.run_tasks(tasks, workers=workers, desc="power curve", unit="case", progress=progress)
     return rows, best_per_wind(rows)
 
 
-def write(out: Path, cfg: Config, rows: list[dict], best: list[dict]) -> list[Path]:
-    """CSV, JSON and PNG under ``out``; returns the paths."""
+def _plot(path: Path, cfg: Config, rows: list[dict], best: list[dict]) -> None:
+    """Power against V_c at the paper's wind (left); the best power and V_c per wind (right)."""
     from matplotlib.figure import Figure
 
-    out.mkdir(parents=True, exist_ok=True)
-    paths = [out / "power_curve.csv", out / "power_curve.json", out / "power_curve.png"]
-    with open(paths[0], "w", newline="", encoding="utf-8") as fh:
-        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    meta = {"scene": SCENE, "safety_factor": SAFETY_FACTOR, "config": dataclasses.asdict(cfg),
-            "tail_rule": "the scene's elevators for every case (tail_rule)", "rows": rows, "best_per_wind": best}
-    paths[1].write_text(json.dumps(meta, indent=1), encoding="utf-8")
     fig = Figure(figsize=(11, 4.2))
     ax1, ax2 = fig.subplots(1, 2)
     paper = [r for r in rows if r["v0_m_s"] == PAPER_V0 and r["v_c_m_s"] in cfg.speeds]
-    for flag, mk, lab in ((True, "o-", "periodic"), (False, "x", "not periodic (last period)")):
-        sel = [r for r in paper if r["periodic"] == flag]
+    for sel, mk, lab in (([r for r in paper if r["periodic"]], "o-", "periodic"),
+                         ([r for r in paper if not r["periodic"] and not r["breakdown"]], "x",
+                          "not periodic (last period)")):
         if sel:
             ax1.plot([r["v_c_m_s"] for r in sel], [r["power_kW"] for r in sel], mk, label=lab)
+    broke = [r for r in paper if r["breakdown"]]
+    if broke:
+        ax1.plot([r["v_c_m_s"] for r in broke], [0.0] * len(broke), "v", color="C3", label="broke down (at 0)")
     ax1.axhline(PAPER_POWER_W / 1e3, color="grey", ls="--", label="paper: of the order of 200 kW")
     ax1.set(xlabel="cable speed V_c [m/s]", ylabel="mean electrical power [kW]",
-            title=f"{SCENE}, in plane, V0 = {PAPER_V0:g} m/s")
+            title=f"{cfg.scene}, in plane, V0 = {PAPER_V0:g} m/s")
     ax1.legend(fontsize=8)
     okb = [b for b in best if b["power_kW"] is not None]
     over = [r for r in rows if r["periodic"] and not r["within_limit"]]
     ax2.plot([r["v0_m_s"] for r in over], [r["power_kW"] for r in over], "x", color="grey",
              label="periodic, tension over the limit")
     ax2.plot([b["v0_m_s"] for b in okb], [b["power_kW"] for b in okb], "o-", color="C0", label="best within the limit")
+    none = [b["v0_m_s"] for b in best if b["power_kW"] is None]
+    if none:
+        ax2.plot(none, [0.0] * len(none), "v", color="C3", label="no periodic case within the limit")
     ax2.legend(fontsize=8)
-    ax2.set(xlabel="wind speed V0 at 50 m [m/s]", ylabel="best mean power [kW]", title="best V_c per wind")
+    ax2.set(xlabel="wind speed V0 at 50 m [m/s]", ylabel="best mean power [kW]",
+            title=f"best V_c per wind (V_c grid {', '.join(f'{v:g}' for v in cfg.wind_speeds)} m/s)")
     ax3 = ax2.twinx()
     ax3.plot([b["v0_m_s"] for b in okb], [b["best_v_c_m_s"] for b in okb], "s--", color="C1")
     ax3.set_ylabel("best V_c [m/s]", color="C1")
     fig.tight_layout()
-    fig.savefig(paths[2], dpi=110)
+    fig.savefig(path, dpi=110)
+
+
+def write(out: Path, cfg: Config, rows: list[dict], best: list[dict]) -> list[Path]:
+    """CSV, JSON and PNG under ``out``; returns the paths."""
+    out.mkdir(parents=True, exist_ok=True)
+    paths = [out / "power_curve.csv", out / "power_curve.json", out / "power_curve.png"]
+    with open(paths[0], "w", newline="", encoding="utf-8") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    meta = {"scene": cfg.scene, "safety_factor": SAFETY_FACTOR, "config": dataclasses.asdict(cfg),
+            "ramp_rule": {"rate": "V_c reached at the scene's own acceleration (ramp_time)",
+                          "scene": "the scene's ramp time for every V_c (ramp_time)"}[cfg.ramp],
+            "tail_rule": "the scene's elevators for every case (tail_rule)", "rows": rows, "best_per_wind": best}
+    paths[1].write_text(json.dumps(meta, indent=1), encoding="utf-8")
+    _plot(paths[2], cfg, rows, best)
     return paths
+
+
+def print_table(cfg: Config, rows: list[dict], best: list[dict]) -> None:
+    """The rows, the breakdowns and overloads, and the best V_c per wind, as the docs quote them."""
+    print(f"{cfg.scene}, in plane, ramp rule '{cfg.ramp}', search {cfg.max_time:g} s; tension limit breaking load / "
+          f"{SAFETY_FACTOR} = {rows[0]['t_limit_kN']:.0f} kN")
+    print("   V0   V_c  ramp [s]  elev up/down  periodic   t [s]     P [kW]  (T1-Tn)V_c [kW]  Betz [kW]  "
+          "T_rest  T_max  limit  search peak [kN]")
+    for r in rows:
+        print(f"{r['v0_m_s']:5.1f} {r['v_c_m_s']:5.2f} {r['ramp_s']:8.0f}  {r['elevator_up_deg']:5.1f}/"
+              f"{r['elevator_down_deg']:5.1f}  {str(r['periodic']):8s} {r['t_s']:7.1f} {r['power_kW']:9.1f} "
+              f"{r['hand_estimate_kW']:15.1f} {r['betz_kW']:10.0f}  {r['t_rest_max_kN']:6.1f} {r['t_max_kN']:6.1f}  "
+              f"{'ok' if r['within_limit'] else 'OVER':5s}  {r['t_peak_search_kN']:8.1f}")
+    for r in rows:
+        for what in ("breakdown", "overload"):
+            if r[what]:
+                print(f"V0 {r['v0_m_s']:g} m/s, V_c {r['v_c_m_s']:g} m/s: {what} {r[what]}")
+    for b in best:
+        txt = "no periodic case within the limit" if b["power_kW"] is None else \
+            f"best V_c {b['best_v_c_m_s']:.1f} m/s, {b['power_kW']:.1f} kW"
+        print(f"V0 = {b['v0_m_s']:.1f} m/s: {txt}")
 
 
 def _config(args) -> Config:
     """The sweep's settings: ``--quick`` or the full one, with the options given replacing its fields."""
-    cfg = QUICK if args.quick else Config()
+    cfg = dataclasses.replace(QUICK if args.quick else Config(), scene=args.scene, ramp=args.ramp)
     for opt, name in (("--speeds", "speeds"), ("--winds", "winds"), ("--wind-speeds", "wind_speeds")):
         values = getattr(args, name)
         if values is not None:
@@ -162,16 +258,21 @@ def _config(args) -> Config:
 
 
 def main(argv=None) -> int:
-
     p = Parser(prog="laddermill power-curve", description=__doc__.splitlines()[0])
     p.add_argument("--out", default="results/power_curve", help="output folder (CSV, JSON, PNG)")
+    p.add_argument("--scene", choices=SCENES, default=SCENE,
+                   help=f"the mill (default {SCENE}: periodic over the paper's 1-5 m/s; laddermill_v1: 0.5-2 m/s)")
+    p.add_argument("--ramp", choices=RAMPS, default=RAMPS[0],
+                   help="cable speed from rest: 'rate' at the scene's own acceleration (default; v2: 100 V_c s), "
+                        "'scene' in the scene's ramp time whatever V_c")
     p.add_argument("--quick", action="store_true", help="one case, V_c = 2 m/s at the paper's wind, 70 s search")
     p.add_argument("--speeds", type=float, nargs="+", default=None, metavar="V_C",
                    help="cable speeds [m/s] at the paper's wind (default: the full sweep's)")
-    p.add_argument("--winds", type=float, nargs="+", default=None, metavar="V0", help="winds V0 [m/s] of the sweep")
+    p.add_argument("--winds", type=float, nargs="*", default=None, metavar="V0",
+                   help="winds V0 [m/s] of the sweep (none: the paper's wind only)")
     p.add_argument("--wind-speeds", type=float, nargs="+", default=None, metavar="V_C",
-                   help="cable speeds [m/s] tried per wind")
-    p.add_argument("--max-time", type=float, default=None, help="periodic search per case [s]")
+                   help="cable speeds [m/s] tried per wind: the grid searched for the best V_c")
+    p.add_argument("--max-time", type=float, default=None, help="periodic search per case after the ramp [s]")
     parallel.add_arguments(p)
     args = p.parse_args(argv)
     parallel.check_arguments(args, p.prog)
@@ -180,17 +281,7 @@ def main(argv=None) -> int:
     except UsageError as err:
         p.error(str(err))
     rows, best = run(cfg, workers=args.workers)
-    print(f"{SCENE}, in plane; tension limit breaking load / {SAFETY_FACTOR} = {rows[0]['t_limit_kN']:.0f} kN")
-    print("   V0   V_c  elev up/down  periodic     P [kW]  (T1-Tn)V_c [kW]  T_max [kN]  within limit  "
-          "search peak [kN]")
-    for r in rows:
-        print(f"{r['v0_m_s']:5.1f} {r['v_c_m_s']:5.2f}  {r['elevator_up_deg']:5.1f}/{r['elevator_down_deg']:5.1f}  "
-              f"{str(r['periodic']):8s} {r['power_kW']:9.1f} {r['hand_estimate_kW']:15.1f} {r['t_max_kN']:11.1f}  "
-              f"{str(r['within_limit']):12s}  {r['t_peak_search_kN']:8.1f}")
-    for b in best:
-        txt = "no periodic case within the limit" if b["power_kW"] is None else \
-            f"best V_c {b['best_v_c_m_s']:.1f} m/s, {b['power_kW']:.1f} kW"
-        print(f"V0 = {b['v0_m_s']:.1f} m/s: {txt}")
+    print_table(cfg, rows, best)
     for path in write(Path(args.out), cfg, rows, best):
         print(f"wrote {path}")
     return 0
