@@ -295,7 +295,7 @@ FORWARDED: dict[str, tuple[str, str]] = {
     "gust-bench": ("laddermill_gym.studies.gusts.gust_bench", "run controllers on a versioned gust benchmark suite "
                    "(configs/benchmarks/); CSV, JSON and a scorecard"),
     "power-curve": ("laddermill_gym.studies.mill.power_curve", "laddermill: mean electrical power against the cable "
-                    "speed at the paper's wind and the best cable speed against the wind (scene laddermill_v1, in "
+                    "speed at the paper's wind and the best cable speed against the wind (laddermill_v2 or v1, in "
                     "plane); CSV, JSON, PNG"),
 }
 
