@@ -14,16 +14,24 @@ the largest whole fraction of the control period below it, with a warning that n
 
 What it does not see: a spatial gust grid (its speeds are not in the speed factor) and a state far from the trim;
 a failure there is still rerun by the batch at dt / 4 and dt / 16.
+
+The env argument ``physics_step`` (issue 32 point 3; :func:`env_physics_settings`) swaps the registered step for
+another fixed-step method without changing the id's scene, start or spaces: ``"ros34pw2"`` steps the 101-wing
+envs once per control period, within 1e-3 of the chain's and the mill's extent of RK4 at a quarter of the
+registered step over a short episode (tests/test_fast_physics_step.py) and about twice as fast as the registered
+RK4 (docs/benchmarks.md, "Environment throughput").
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
 
 from laddermill_gym.atmosphere.disturbances import sample_modulation
 from laddermill_gym.atmosphere.field import WindField
+from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, W_METHODS
 from laddermill_gym.sim.simulator import Simulator
 from laddermill_gym.sim.stable_step import estimate_stable_step
 
@@ -67,3 +75,49 @@ def stable_physics_step(scene, x: np.ndarray, u: np.ndarray, control_dt: float, 
                 f"{est.dt_max:.4g} s (eigenvalue {lam.real:.4g} {'+-' if lam.imag else '+'} {abs(lam.imag):.4g}i 1/s) "
                 f"at the trim in the strongest wind of the disturbances (speed factor {peak:.3g}): stepping at "
                 f"{dt:.4g} s, {n} steps per control period")
+
+
+
+def check_physics_step(physics_step) -> None:
+    """ValueError naming ``physics_step`` unless it is None or one of ``FIXED_STEP_METHODS``."""
+    if physics_step is not None and physics_step not in FIXED_STEP_METHODS:
+        raise ValueError(f"physics_step = {physics_step!r}: must be None (the scene's integrator) or one of "
+                         f"{', '.join(repr(m) for m in FIXED_STEP_METHODS)}")
+
+
+def physics_scene_options(scene_options, physics_step: str | None, physics_dt, control_dt: float) -> dict:
+    """A wing env's ``load_scene`` overrides: ``scene_options`` with ``method`` = ``physics_step`` (unless None)
+    and ``dt`` = ``physics_dt`` [s] (None: the control period ``control_dt`` [s] for a Rosenbrock-W method, else
+    the scene's). ValueError naming both when ``scene_options`` sets another method."""
+    options = dict(scene_options or {})
+    check_physics_step(physics_step)
+    if physics_step is not None:
+        if options.get("method", physics_step) != physics_step:
+            raise ValueError(f"physics_step = {physics_step!r} and scene_options['method'] = "
+                             f"{options['method']!r}: give one of them")
+        options["method"] = physics_step
+        if physics_dt is None and physics_step in W_METHODS:
+            physics_dt = control_dt
+    if physics_dt is not None:
+        options["dt"] = physics_dt
+    return options
+
+
+def env_physics_settings(settings, physics_step: str | None, physics_dt: float | None, control_dt: float):
+    """The integrator settings an env steps with: ``settings`` (the scene's; the registered step) when
+    ``physics_step`` and ``physics_dt`` are None; else ``settings`` with the method ``physics_step`` (one of
+    ``FIXED_STEP_METHODS``; None keeps the scene's) and the step ``physics_dt`` [s] (None: the control period
+    ``control_dt`` [s] for a Rosenbrock-W method, one linearly implicit step per period, else the scene's dt).
+    ValueError naming the argument and its value otherwise."""
+    check_physics_step(physics_step)
+    if physics_step is None and physics_dt is None:
+        return settings
+    method = settings.method if physics_step is None else physics_step
+    if physics_dt is None:
+        dt = control_dt if method in W_METHODS else settings.dt
+    elif isinstance(physics_dt, bool) or not (isinstance(physics_dt, (int, float)) and math.isfinite(physics_dt)
+                                              and physics_dt > 0):
+        raise ValueError(f"physics_dt = {physics_dt!r}: must be a finite number > 0 s")
+    else:
+        dt = float(physics_dt)
+    return dataclasses.replace(settings, method=method, dt=dt)

@@ -17,8 +17,14 @@ from laddermill_gym.atmosphere.disturbances import grid_geometry, sample_wind_fi
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.envs.actions import ActionMap, clip_actions, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds, wing_lateral_offsets
-from laddermill_gym.envs.physics_step import stable_physics_step
-from laddermill_gym.envs.task_base import TaskCore, env_disturbances, positive, substeps_per_period
+from laddermill_gym.envs.physics_step import physics_scene_options, stable_physics_step
+from laddermill_gym.envs.task_base import (
+    TaskCore,
+    default_parallel,
+    env_disturbances,
+    positive,
+    substeps_per_period,
+)
 
 # the settings dataclasses live in task_settings.py; imported here, where every env has always found them
 from laddermill_gym.envs.task_settings import (  # noqa: F401
@@ -115,8 +121,8 @@ class WingTask(TaskCore):
         Spacing [s] of the sampled wind modulation.
     reward, termination : dict or RewardConfig / TerminationConfig
     parallel : bool, optional
-        Step the copies on numba's thread pool (default: when B >= 32); small batches run faster on one
-        thread.
+        Step the copies on numba's thread pool (default: from 32 copies on, from 2 for a scene of 500 states or
+        more: ``task_base.default_parallel``); small batches of a small model run faster on one thread.
     """
 
     env_name = "the wing env"
@@ -127,12 +133,10 @@ class WingTask(TaskCore):
                  control_dt: float = 0.05, physics_dt: float | None = None, action_mode: str = "tail",
                  groups="per_wing", alpha_servo_tau: float = 0.0, episode_time: float = 300.0,
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
-                 parallel: bool | None = None):
+                 parallel: bool | None = None, physics_step: str | None = None):
         for name, v in (("control_dt", control_dt), ("episode_time", episode_time), ("wind_dt", wind_dt)):
             positive(name, v, "s")
-        options = dict(scene_options or {})
-        if physics_dt is not None:
-            options["dt"] = physics_dt
+        options = physics_scene_options(scene_options, physics_step, physics_dt, control_dt)
         sc, x_trim, u_trim = scene_trim(str(scene), options_key(options))
         asm = sc.assembly
         if asm.dim != 3:
@@ -154,7 +158,7 @@ class WingTask(TaskCore):
         nw = asm.n_wings
         self.n_wings = nw
         self.n_copies = int(n_copies)
-        self.parallel = self.n_copies >= 32 if parallel is None else bool(parallel)
+        self.parallel = default_parallel(self.n_copies, asm.state_size, parallel)
         self._kernel = step_observe_batch if self.parallel else step_observe_serial
         n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
         self.batch = BatchSimulator(asm, self.n_copies, sc.settings, n_modulation=max(2, n_mod),

@@ -40,6 +40,7 @@ from laddermill_gym.envs.laddermill.settings import (
     TerminationConfig,
 )
 from laddermill_gym.envs.observation import wing_lateral_offsets
+from laddermill_gym.envs.physics_step import env_physics_settings
 from laddermill_gym.envs.task import config_from
 from laddermill_gym.envs.task_base import TaskCore, clip_observations, substeps_per_period
 from laddermill_gym.kernels.contract import B3_QUAT, B3_SIZE, N_CONTROLS, SX_ENERGY, SX_MOVED, SX_SPEED
@@ -70,7 +71,8 @@ def _scene_options(scene_options) -> tuple:
 class MillTask(TaskCore):
     """B copies of the moving-cable laddermill as an RL task (arguments: :class:`LadderMillEnv
     <laddermill_gym.envs.laddermill.env.LadderMillEnv>`; ``n_copies`` = B, ``parallel``: numba's thread pool,
-    default from 32 copies on).
+    default from 2 copies on for the mill's thousand-odd states, ``task_base.default_parallel``; ``physics_step``,
+    ``physics_dt``: the physics' fixed-step method and step instead of the scene's, ``envs/physics_step.py``).
 
     Attributes (shapes with B copies, n slots): ``obs`` (B, 15 n + 4) clipped observations, ``raw_obs`` the same
     unclipped, ``aux`` (B, N_AUX) kernel read-outs, ``power`` (B,) electrical generator power [W], ``op`` the
@@ -93,7 +95,8 @@ class MillTask(TaskCore):
                  cable_speed_command: bool = False, speed=None,
                  operating_point: OperatingPoint | None = None, settle=None, initial_noise=None,
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
-                 parallel: bool | None = None, authority: float = 1.0):
+                 parallel: bool | None = None, authority: float = 1.0, physics_step: str | None = None,
+                 physics_dt: float | None = None):
         B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
                                    initial_noise)
         self.settle = config_from(settle, SettleConfig, "settle")
@@ -103,8 +106,10 @@ class MillTask(TaskCore):
             raise ValueError("generator_torque and cable_speed_command: choose one station action")
         options = _scene_options(scene_options)
         self.scene = sc = mill_scene(str(scene), options, 3)
-        dt = sc.settings.dt
-        self.n_substeps = substeps_per_period(sc.name, sc.settings, self.control_dt, control_dt)
+        dt = sc.settings.dt  # the observation bounds' (the id's spaces whatever the physics step)
+        # the physics step: the scene's, or physics_step / physics_dt (the operating point is the scene's either way)
+        settings = env_physics_settings(sc.settings, physics_step, physics_dt, self.control_dt)
+        self.n_substeps = substeps_per_period(sc.name, settings, self.control_dt, control_dt)
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
         self.op = self._operating_point(operating_point, str(scene), options)
         rp = self.reward_config.reference_power_W
@@ -113,7 +118,7 @@ class MillTask(TaskCore):
         self.cable_speed_command = bool(cable_speed_command)
         asm = self._assembly()
         self.n_wings = n = asm.n_wings
-        self._make_batch(B, asm, sc.settings, parallel, (step_observe_batch, step_observe_serial))
+        self._make_batch(B, asm, settings, parallel, (step_observe_batch, step_observe_serial))
         self.loop_points = loop_points(self.op, asm)
         check_turbulence_cover(self.disturbances, self.loop_points)
         self.xoff = asm.body_state_size
