@@ -32,54 +32,73 @@ def _steps_per_second(env, action: np.ndarray, n_steps: int, repeats: int) -> fl
 
 
 def bench_vector(env_id: str, counts=(1, 8, 64, 512), quick: bool = False, echo=print,
-                 budget: float = 1e6) -> list[dict]:
+                 budget: float = 1e6, variants: dict | None = None) -> list[dict]:
     """Steps/s of the native vector env and of SyncVectorEnv for each number of copies. ``budget``: copy-steps
     per repeat of the native env at the full setting (a fifth of it with ``quick``); the SyncVectorEnv runs 1 %
-    of it (at least 3 steps)."""
+    of it (at least 3 steps). ``variants``: label -> env arguments of further native envs measured in the same
+    run (e.g. the registered step on one thread, the step ``physics_step="ros34pw2"``), each with its ratio."""
     from laddermill_gym.control.factory import make_controller
 
     kwargs = ENV_IDS[env_id]
     single = gym.envs.registration.load_env_creator(ENTRY_POINTS[env_id][0])
+    per_repeat = budget / 5 if quick else budget  # copy-steps per repeat for the native env
     rows = []
     for n in counts:
-        native = gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point")
-        obs, _ = native.reset(seed=0)
-        act = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
-        per_repeat = budget / 5 if quick else budget  # copy-steps per repeat for the native env
-        native_rate = _steps_per_second(native, act, max(5, int(per_repeat / n) // 10), 3 if quick else 5)
-        native.close()
+        rates = {}
+        for label, extra in {"native": {}, **(variants or {})}.items():
+            native = gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **extra)
+            obs, _ = native.reset(seed=0)
+            act = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
+            rates[label] = _steps_per_second(native, act, max(5, int(per_repeat / n) // 10), 3 if quick else 5)
+            native.close()
         sync = gym.vector.SyncVectorEnv([lambda: single(**kwargs) for _ in range(n)])
         sync_rate = _steps_per_second(sync, act, max(3, int(budget / 100 / (5 if quick else 1) / n)), 3)
         sync.close()
+        native_rate = rates.pop("native")
         row = {"env": env_id, "copies": n, "native_steps_per_s": native_rate, "sync_steps_per_s": sync_rate,
                "ratio": native_rate / sync_rate}
-        echo(f"  {n:5d} copies: native {native_rate:12,.0f} steps/s   SyncVectorEnv {sync_rate:10,.0f} steps/s"
-             f"   ratio {row['ratio']:7.1f}x")
+        if rates:
+            row["variants"] = {k: {"steps_per_s": v, "ratio": v / sync_rate} for k, v in rates.items()}
+        extra_text = "".join(f"   {k} {v:10,.0f} ({v / sync_rate:.1f}x)" for k, v in rates.items())
+        echo(f"  {n:5d} copies: native {native_rate:12,.0f} steps/s{extra_text}   SyncVectorEnv {sync_rate:10,.0f} "
+             f"steps/s   ratio {row['ratio']:7.1f}x")
         rows.append(row)
     return rows
+
+
+#: the further native envs of the 101-wing envs' rows (issue 32 point 3): the registered step on one thread (the
+#: default at 8 copies before the 101-wing models stepped on the thread pool from 2 copies) and one ROS34PW2 step
+#: per control period (``physics_step``, ``envs/physics_step.py``), both measured in the same run
+FAST_101 = {"one-thread": {"parallel": False}, "ros34pw2": {"physics_step": "ros34pw2"}}
+#: the 101-wing envs' options: copy-steps per repeat (about a second of native stepping at 8 copies) and the variants
+_OPTS_101 = {"quick": True, "budget": 5e4, "variants": FAST_101}
 
 
 #: the envs of the benchmark: short name -> (env id, what it is, copy counts, SyncVectorEnv-budget options)
 ENVS: dict[str, tuple] = {
     "TetheredWing-v0": ("laddermill_gym/TetheredWing-v0", "20 Hz control", (1, 8, 64, 512), {}),
-    "LadderChain-v0": ("laddermill_gym/LadderChain-v0", "101 wings, 20 Hz control", (1, 8), {"quick": True}),
+    "LadderChain-v0": ("laddermill_gym/LadderChain-v0", "101 wings, four RK4 steps of 12.5 ms per 20 Hz period", (1, 8),
+                       _OPTS_101),
     "Rotorcraft-v0": ("laddermill_gym/Rotorcraft-v0", "one ROS34PW2 step of 50 ms per 20 Hz control period",
                       (1, 16, 64), {"budget": 5e4}),
     "LadderMill-v0": ("laddermill_gym/LadderMill-v0", "101 wings on the moving cable, 20 Hz control", (1, 8),
                       {"quick": True, "budget": 2e4}),
+    "LadderMill-v2": ("laddermill_gym/LadderMill-v2",
+                      "101 v2 wings on the moving cable, five RK4 steps of 10 ms per 20 Hz period", (1, 8), _OPTS_101),
     "PointMassChain-v0": ("laddermill_gym/PointMassChain-v0",
                           "101 point-mass kites, 2 implicit steps of 25 ms per 20 Hz period", (1, 8, 64),
                           {"budget": 5e4}),
 }
 #: the result keys of the JSON file (as before the options came)
 _KEYS = {"TetheredWing-v0": "tethered_wing", "LadderChain-v0": "ladder_chain", "Rotorcraft-v0": "rotorcraft",
-         "LadderMill-v0": "laddermill", "PointMassChain-v0": "pointmass_chain"}
+         "LadderMill-v0": "laddermill", "PointMassChain-v0": "pointmass_chain", "LadderMill-v2": "laddermill_v2"}
 
 
 def run_env_benchmark(quick: bool = False, json_path: str | None = None, echo=print, envs=None,
                       copies=None) -> dict:
     """The env benchmark: every env of :data:`ENVS` (or those named in ``envs``) at its copy counts (``copies``:
-    these counts for every env instead); LadderMill-v0 computes its operating point (about 30 s) once."""
+    these counts for every env instead); LadderMill-v0 and -v2 compute their operating points (30 s, 100-140 s)
+    once."""
     threads = os.environ.get("NUMBA_NUM_THREADS", "default")
     echo(f"Environment throughput (medians; numba threads: {threads}; cpus: {os.cpu_count()})")
     res = {"cpus": os.cpu_count(), "numba_threads": threads}
