@@ -183,10 +183,9 @@ def test_training_smoke_writes_a_policy_that_evaluate_loads(tmp_path):
     from laddermill_gym.model.configio import CONFIG_DIR
 
     src = (CONFIG_DIR / "agents" / "ppo_mill_v1.yaml").read_text()
-    for old, new in (("iterations: 6 ", "iterations: 2 "), ("steps: 400 ", "steps: 10 "),
+    for old, new in (("iterations: 4 ", "iterations: 2 "), ("steps: 400 ", "steps: 10 "),
                      ("total_timesteps: 20000000", "total_timesteps: 3000"), ("every: 1000000 ", "every: 2000 "),
-                     ("episodes: 5 ", "episodes: 1 "), ("episode_time: 60.0      # [s] during",
-                                                         "episode_time: 2.0      # [s] during")):
+                     ("episode_time: 300.0     # [s] rounds", "episode_time: 2.0     # [s] rounds")):
         assert old in src
         src = src.replace(old, new)
     cfg = tmp_path / "smoke.yaml"
@@ -215,3 +214,42 @@ def test_teacher_labels_are_the_lqr_law_before_its_clip():
     labels = teacher_labels(ctrl, obs)
     assert np.abs(labels).max() > 1.0
     np.testing.assert_array_equal(np.clip(labels, -1, 1).astype(np.float32), ctrl.predict(obs)[0])
+
+
+def test_lqr_band_projected_on_per_slot_gains_is_that_band():
+    """harness.shared_fit: with one hat function per slot the actor's head reproduces the LQR's law cut to +-k
+    slots (the mill LQR controller's own arithmetic, on a random gain, before its clip) exactly; with one node the
+    least-squares fit is the slots' mean weight."""
+    import gymnasium as gym
+
+    from laddermill_gym.control.mill_lqr import MillLQRController
+    from laddermill_gym.harness.gain_locality import banded
+    from laddermill_gym.harness.shared_fit import band_weights, project_weights
+    from laddermill_gym.harness.shared_train import teacher_labels
+    from laddermill_gym.multiagent.agents import WingAgents, build_task
+
+    k = 2
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        task = build_task(LM1, 2, {key: v for key, v in case_kwargs(LM1).items() if key != "disturbances"})
+    n = task.n_wings
+    rng = np.random.default_rng(5)
+    K = rng.normal(0, 2.0, (2 * n, 6 * n))
+    lqr = MillLQRController(banded(K, k), np.zeros((n, 2)), task.actions)
+    scales = np.array([1.0, 0.5, 0.17, 0.17, 0.35, 0.35])
+    task.reset(np.ones(2, bool), [np.random.default_rng(s) for s in (0, 1)])
+    obs = task.obs + rng.normal(0, 0.05, task.obs.shape)
+    want = teacher_labels(lqr, obs).reshape(2 * n, -1)
+    view = WingAgents(task, LM1, k)
+    local = view.local_observations(obs).reshape(2 * n, -1)
+    w = band_weights(K, lqr.half, scales, k)  # the band cut happens inside: neighbours beyond k are not seen
+    head, err = project_weights(w, n, lqr.column, view.act_dim)
+    ext = GainScheduledExtractor(gym.spaces.Box(-np.inf, np.inf, (view.obs_dim,)), n, k, view.block, n,
+                                 np.zeros((n, 2)), scales)
+    got = ext(th.as_tensor(local, dtype=th.float32)).double().numpy() @ head.T
+    assert err < 1e-12
+    np.testing.assert_allclose(got, want, rtol=2e-4, atol=2e-4 * np.abs(want).max())
+    head1, err1 = project_weights(w, 1, lqr.column, view.act_dim)
+    f = w.shape[1]
+    np.testing.assert_allclose(head1[lqr.column[0], :f], w[:, :, 0].mean(axis=0), rtol=1e-12, atol=1e-12)
+    assert err1 > 0.1

@@ -69,6 +69,13 @@ class GainScheduledExtractor(BaseFeaturesExtractor):
         self.pos = self.flag0 + 2 * k  # the position entry
 
     def forward(self, obs: th.Tensor) -> th.Tensor:
+        z, pos = self.local_features(obs)
+        h = hat_basis(pos, self.n_basis)
+        return (h[:, :, None] * z[:, None, :]).reshape(obs.shape[0], -1)
+
+    def local_features(self, obs: th.Tensor) -> tuple[th.Tensor, th.Tensor]:
+        """(N, 6 (2k + 1) + 1) scaled lateral deviations and a constant, and (N,) positions i / (n - 1): the
+        features before the position's hat functions multiply them."""
         N, k = obs.shape[0], self.k
         pos = obs[:, self.pos]
         slot = th.round(pos * max(self.n - 1, 1)).long()
@@ -82,9 +89,7 @@ class GainScheduledExtractor(BaseFeaturesExtractor):
         dpsi = th.remainder(lat[..., 3] - trim[..., 1] + math.pi, 2 * math.pi) - math.pi
         z = th.stack([lat[..., 0], lat[..., 1], dphi, dpsi, lat[..., 4], lat[..., 5]], dim=-1) / self.scales
         z = (z * present[..., None]).reshape(N, -1)
-        z = th.cat([z, th.ones(N, 1, dtype=obs.dtype)], dim=1)
-        h = hat_basis(pos, self.n_basis)
-        return (h[:, :, None] * z[:, None, :]).reshape(N, -1)
+        return th.cat([z, th.ones(N, 1, dtype=obs.dtype)], dim=1), pos
 
 
 def _read_meta(path: Path) -> dict[str, Any]:

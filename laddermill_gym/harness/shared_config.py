@@ -36,6 +36,7 @@ class SharedTrainConfig:
     bc_copies: int
     bc_steps: int
     bc_ridge: float
+    bc_action_noise: float
     ppo_copies: int
     ppo_timesteps: int
     ppo_minutes: float
@@ -92,7 +93,9 @@ def load_shared_config(path: str | Path) -> SharedTrainConfig:
     cfg.update(bc_iterations=bc.number("iterations", integer=True, positive=True, high=100),
                bc_copies=bc.number("n_copies", integer=True, positive=True, high=256),
                bc_steps=bc.number("steps", integer=True, positive=True, high=100000),
-               bc_ridge=bc.number("ridge", nonneg=True))
+               bc_ridge=bc.number("ridge", nonneg=True),
+               bc_action_noise=bc.number("action_noise", 0.0, nonneg=True, high=1.0,
+                                         why="std of the flown actions' noise, in normalised action units"))
     bc.done()
     ppo = s.section("ppo")
     cfg.update(ppo_copies=ppo.number("n_copies", integer=True, positive=True, high=256),

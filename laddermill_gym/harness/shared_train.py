@@ -39,13 +39,13 @@ from tqdm import tqdm
 from laddermill_gym.harness.shared_config import SharedTrainConfig, load_shared_config
 from laddermill_gym.studies.commands import Parser
 
-__all__ = ["train_shared", "main", "CURVE_FIELDS"]
+__all__ = ["train_shared", "main", "CURVE_FIELDS", "bryson_scales"]
 
 CURVE_FIELDS = ("phase", "step", "minutes", "held", "mean_length_s", "mean_power_kW", "max_lateral_m",
                 "mean_return")
 
 
-def _bryson_scales(env_id: str) -> np.ndarray:
+def bryson_scales(env_id: str) -> np.ndarray:
     """(dy, vy, phi, psi, p, r) scales [m, m/s, rad, rad, rad/s, rad/s]: the env's LQR config's max_state."""
     from laddermill_gym.control.factory import DEFAULT_LQR_CONFIGS
     from laddermill_gym.control.lqr_config import load_lqr_config
@@ -111,44 +111,81 @@ def teacher_labels(teacher, obs: np.ndarray) -> np.ndarray:
     return a
 
 
-def _fit(model, G: np.ndarray, b: np.ndarray, yy: np.ndarray, ridge: float) -> np.ndarray:
-    """The actor's weights from the accumulated normal equations (G + ridge diag(G)) W = b (a ridge relative to
-    each feature's own second moment, so the features' scales do not matter); returns the fit's R^2 per action
-    entry (1 - residual / label second moment, from the same sums)."""
+def _fit(model, S: np.ndarray, Bz: np.ndarray, yy: np.ndarray, ridge: float) -> np.ndarray:
+    """The actor's weights from the per-slot sums S_i = sum z z^T (n, f, f) and Bz_i = sum z y^T (n, f, a): the
+    normal equations of the features h(i) (outer) z are G = sum_i (h_i h_i^T) (kron) S_i, b = sum_i h_i (kron) Bz_i;
+    solved as (G + ridge diag(G)) W = b (a ridge relative to each feature's own second moment, so the features'
+    scales do not matter), slot by slot when the hat functions are one per slot (G block diagonal). Returns the
+    fit's R^2 per action entry (1 - residual / label second moment, from the same sums) and every slot's weights
+    (n, f, a)."""
     import torch as th
 
-    D = np.diag(np.diag(G)) + 1e-12 * np.trace(G) / G.shape[0] * np.eye(G.shape[0])
-    W = np.linalg.solve(G + ridge * D, b)
+    from laddermill_gym.control.shared_policy import hat_basis
+
+    n, f, na = Bz.shape
+    nb = model.policy.features_extractor.n_basis
+    H = hat_basis(th.arange(n, dtype=th.float64) / max(n - 1, 1), nb).numpy()  # (n, nb)
+    if nb == n and np.allclose(H, np.eye(n)):
+        blocks = []
+        for i in range(n):
+            G = S[i]
+            D = np.diag(np.diag(G)) + 1e-12 * max(np.trace(G), 1e-300) / f * np.eye(f)
+            blocks.append(np.linalg.solve(G + ridge * D, Bz[i]))
+        W = np.concatenate(blocks)
+        G = None
+    else:
+        G = np.einsum("ib,ic,ifg->bfcg", H, H, S).reshape(nb * f, nb * f)
+        b = np.einsum("ib,ifa->bfa", H, Bz).reshape(nb * f, na)
+        D = np.diag(np.diag(G)) + 1e-12 * np.trace(G) / G.shape[0] * np.eye(G.shape[0])
+        W = np.linalg.solve(G + ridge * D, b)
     net = model.policy.action_net
     with th.no_grad():
         net.weight.copy_(th.as_tensor(W.T, dtype=net.weight.dtype))
         net.bias.zero_()
-    residual = yy - 2 * np.einsum("fa,fa->a", W, b) + np.einsum("fa,fg,ga->a", W, G, W)
-    return 1.0 - residual / np.maximum(yy, 1e-300)
+    Wi = np.einsum("ib,bfa->ifa", H, W.reshape(nb, f, na))  # every slot's effective weights
+    residual = yy - 2 * np.einsum("ifa,ifa->a", Wi, Bz) + np.einsum("ifa,ifg,iga->a", Wi, S, Wi)
+    return 1.0 - residual / np.maximum(yy, 1e-300), Wi
 
 
 def imitation(cfg: SharedTrainConfig, model, venv, teacher, log, pbar) -> None:
     """DAgger (see the module doc): ``cfg.bc_iterations`` rounds of ``cfg.bc_steps`` control steps of every
-    copy, the teacher's actions as labels, a ridge fit of the actor after each; ``log(phase, step)`` evaluates."""
+    copy, the teacher's actions as labels, a ridge fit of the actor after each; the flown actions (the teacher's
+    in round 1, the learner's after) get Gaussian noise of std ``cfg.bc_action_noise`` so that the data excite
+    every direction; ``log(phase, step)`` evaluates."""
     import torch as th
 
-    ext, task = model.policy.features_extractor, venv.task
-    F = ext.features_dim
-    G, b, yy = np.zeros((F, F)), np.zeros((F, venv.view.act_dim)), np.zeros(venv.view.act_dim)
+    ext, task, n = model.policy.features_extractor, venv.task, venv.view.n_agents
+    B, na = venv.num_envs // n, venv.view.act_dim
+    f = ext.features_dim // ext.n_basis
+    S, Bz, yy = np.zeros((n, f, f)), np.zeros((n, f, na)), np.zeros(na)
+    rng = np.random.default_rng(cfg.seed)
+    band = None
+    if hasattr(teacher, "K") and hasattr(teacher, "half"):
+        from laddermill_gym.harness.gain_locality import banded
+        from laddermill_gym.harness.shared_fit import band_weights
+
+        band = band_weights(banded(teacher.K, cfg.k), teacher.half, ext.scales.numpy(), cfg.k)
     obs = venv.reset()
     for it in range(cfg.bc_iterations):
         for _ in range(cfg.bc_steps):
-            labels = teacher_labels(teacher, task.obs).reshape(venv.num_envs, venv.view.act_dim)
+            labels = teacher_labels(teacher, task.obs).reshape(venv.num_envs, na)
             with th.no_grad():
-                phi = ext(th.as_tensor(obs)).double().numpy()
-            G += phi.T @ phi
-            b += phi.T @ labels
+                z = ext.local_features(th.as_tensor(obs))[0].double().numpy().reshape(B, n, f)
+            y = labels.reshape(B, n, na)
+            S += np.einsum("bif,big->ifg", z, z)
+            Bz += np.einsum("bif,bia->ifa", z, y)
             yy += np.sum(labels ** 2, axis=0)
-            act = np.clip(labels, -1.0, 1.0) if it == 0 else model.predict(obs, deterministic=True)[0]
+            act = labels if it == 0 else model.predict(obs, deterministic=True)[0]
+            act = np.clip(act + cfg.bc_action_noise * rng.standard_normal(act.shape), -1.0, 1.0)
             obs = venv.step(act)[0]
             pbar.update(1)
-        r2 = _fit(model, G, b, yy, cfg.bc_ridge)
-        tqdm.write(f"DAgger round {it + 1}: R^2 of the fit (elevator, rudder, aileron) {np.round(r2, 4)}")
+        r2, Wi = _fit(model, S, Bz, yy, cfg.bc_ridge)
+        msg = f"DAgger round {it + 1}: R^2 of the fit (elevator, rudder, aileron) {np.round(r2, 4)}"
+        if band is not None:  # how far the fitted gains are from the LQR's own, cut to the band
+            cols = list(teacher.column)
+            err = np.linalg.norm(Wi[:, :-1, cols] - band) / np.linalg.norm(band)
+            msg += f"; gain error vs the LQR's band-{cfg.k} gain {err:.4f}"
+        tqdm.write(msg)
         log("imitation", it + 1)
 
 
@@ -216,7 +253,7 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
                                                                               "control_dt", "n_wings")},
                 config=str(cfg.file.name), seed=cfg.seed)
     (out / "shared_policy.yaml").write_text(yaml.safe_dump(meta, sort_keys=False))
-    pk = _policy_kwargs(cfg, view, teacher.trim_attitude, _bryson_scales(cfg.env_id))
+    pk = _policy_kwargs(cfg, view, teacher.trim_attitude, bryson_scales(cfg.env_id))
     model = PPO("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=pk, device="cpu", verbose=0,
                 **cfg.hyperparameters)
     ev = Evaluator(cfg, meta)
