@@ -7,8 +7,6 @@ both cores from 2 copies on, bit for bit whatever the thread count.
 
 from __future__ import annotations
 
-import warnings
-
 import gymnasium as gym
 import numba
 import numpy as np
@@ -18,59 +16,26 @@ import laddermill_gym.envs  # noqa: F401 (registers the ids)
 from laddermill_gym.control.factory import make_controller
 from laddermill_gym.envs.physics_step import env_physics_settings, physics_scene_options
 from laddermill_gym.envs.task_base import default_parallel
-from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, N3_POS, N3_SIZE
 from laddermill_gym.sim.simulator import IntegratorSettings
+from laddermill_gym.studies.benchmarks.physics_step_accuracy import compare
 
 CHAIN = "laddermill_gym/LadderChain-v0"
 MILL = "laddermill_gym/LadderMill-v2"
 #: the episode compared [s]: the paper's 0.01 rad direction step at 1 s and 9 s after it (the open-loop chain's
 #: apex whip, where every fixed step loses the trajectory, starts after 11 s with these actions)
 EPISODE_S = 10.0
-#: amplitude [-] of the uniform noise added to the open-loop action every control period (seeded)
-ACTION_NOISE = 0.3
 
 
-def positions(task) -> np.ndarray:
-    """(wings + nodes, 3) positions [m] of copy 0: the wings' CGs, then the cable nodes."""
-    a, x, nw = task.batch.assembly, task.batch.states[0], task.n_wings
-    bodies = x[: B3_SIZE * nw].reshape(nw, B3_SIZE)[:, B3_POS: B3_POS + 3]
-    nodes = x[B3_SIZE * nw: a.body_state_size].reshape(-1, N3_SIZE)[:, N3_POS: N3_POS + 3]
-    return np.vstack([bodies, nodes])
-
-
-def episode(env_id: str, n_periods: int, **kwargs) -> np.ndarray:
-    """Positions (n_periods + 1, points, 3) [m] of one copy over n_periods control periods of the open-loop action
-    plus seeded noise (the same actions for every physics step)."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # LadderMill-v1 'out of date' and the like
-        env = gym.make_vec(env_id, num_envs=1, vectorization_mode="vector_entry_point", **kwargs)
-    obs, _ = env.reset(seed=0)
-    a0 = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
-    rng = np.random.default_rng(1)
-    out = [positions(env.task)]
-    for _ in range(n_periods):
-        a = np.clip(a0 + ACTION_NOISE * rng.uniform(-1.0, 1.0, a0.shape), -1.0, 1.0).astype(np.float32)
-        _, _, terminated, truncated, info = env.step(a)
-        assert not (terminated.any() or truncated.any()), info["failure_reason"]
-        out.append(positions(env.task))
-    env.close()
-    return np.array(out)
-
-
-def largest_errors(env_id: str, registered_dt: float, **kwargs) -> tuple[float, float, float]:
+def errors(env_id: str) -> tuple[float, float, float]:
     """(extent [m], largest position error [m] of the registered step, of ``physics_step='ros34pw2'``) against
-    RK4 at registered_dt / 4 over EPISODE_S."""
-    n = int(round(EPISODE_S / 0.05))
-    ref = episode(env_id, n, physics_step="rk4", physics_dt=registered_dt / 4, **kwargs)
-    extent = float(np.max(np.linalg.norm(ref, axis=2)))
-    reg = episode(env_id, n, **kwargs)
-    fast = episode(env_id, n, physics_step="ros34pw2", **kwargs)
-    return (extent, float(np.max(np.linalg.norm(reg - ref, axis=2))),
-            float(np.max(np.linalg.norm(fast - ref, axis=2))))
+    RK4 at a quarter of the registered step over EPISODE_S, every run through the whole episode."""
+    res = compare(env_id, EPISODE_S, ("ros34pw2",))
+    assert res["registered"]["periods"] == res["ros34pw2"]["periods"] == res["periods"]
+    return res["extent"], res["registered"]["error_m"], res["ros34pw2"]["error_m"]
 
 
 def test_chain_ros34pw2_within_1e_3_of_the_extent():
-    extent, e_reg, e_fast = largest_errors(CHAIN, 0.0125)
+    extent, e_reg, e_fast = errors(CHAIN)
     assert 3500.0 < extent < 3700.0  # the chain's 3.6 km (docs/work_precision.md: 3613 m)
     assert e_reg < 1e-4 * extent  # the registered RK4 at 12.5 ms: measured 0.19 m
     assert e_fast < 1e-3 * extent  # measured 1.16 m (3.2e-4 of the extent)
@@ -79,7 +44,7 @@ def test_chain_ros34pw2_within_1e_3_of_the_extent():
 @pytest.mark.slow
 def test_mill_v2_ros34pw2_within_1e_3_of_the_extent():
     """LadderMill-v2 (its operating point: 95-140 s on a loaded 2-core machine)."""
-    extent, e_reg, e_fast = largest_errors(MILL, 0.01)
+    extent, e_reg, e_fast = errors(MILL)
     assert 3000.0 < extent < 4000.0
     assert e_reg < 1e-6 * extent  # measured 3.2e-5 m
     assert e_fast < 1e-3 * extent  # measured 2.4 mm (7e-7 of the extent)

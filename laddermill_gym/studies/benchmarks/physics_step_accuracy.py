@@ -1,0 +1,98 @@
+"""How far an env's trajectory moves when its physics step changes (issue 32 point 3): one copy of an env id over
+a short episode of seeded actions (the open-loop action plus uniform noise, the same for every step), its wings'
+CG and cable nodes' positions after every control period, against RK4 at a quarter of the registered step (the
+reference). Prints the extent (the largest distance of a point from the origin over the reference run) and, per
+physics step, the largest position error [m], as a share of the extent, and its CPU time and rate on this process's
+thread (one copy, so one thread). tests/test_fast_physics_step.py holds the 1e-3 bound for ``physics_step=
+"ros34pw2"``.
+
+Command: ``python -m laddermill_gym.studies.benchmarks.physics_step_accuracy laddermill_gym/LadderChain-v0
+--time 10 --steps ros34pw2 ros2`` (seconds per run; LadderMill-v2's operating point first, 100-140 s).
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+import warnings
+
+import gymnasium as gym
+import numpy as np
+
+import laddermill_gym.envs  # noqa: F401 (registers the ids)
+from laddermill_gym.control.factory import make_controller
+from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, N3_POS, N3_SIZE
+
+#: amplitude [-] of the uniform noise added to the open-loop action every control period (seeded; the mill's
+#: random actions at full amplitude end a median episode at 17.6 s, docs of LadderMill-v2)
+ACTION_NOISE = 0.3
+#: the registered physics steps [s] of the 101-wing envs' scenes (configs/scenes/ladder_chain.yaml: RK4 12.5 ms,
+#: laddermill*.yaml: RK4 10 ms)
+REGISTERED_DT = {"laddermill_gym/LadderChain-v0": 0.0125, "laddermill_gym/LadderMill-v0": 0.01,
+                 "laddermill_gym/LadderMill-v1": 0.01, "laddermill_gym/LadderMill-v2": 0.01}
+
+
+def positions(task) -> np.ndarray:
+    """(wings + nodes, 3) positions [m] of copy 0 of a task: the wings' CGs, then the cable nodes."""
+    a, x, nw = task.batch.assembly, task.batch.states[0], task.n_wings
+    bodies = x[: B3_SIZE * nw].reshape(nw, B3_SIZE)[:, B3_POS: B3_POS + 3]
+    nodes = x[B3_SIZE * nw: a.body_state_size].reshape(-1, N3_SIZE)[:, N3_POS: N3_POS + 3]
+    return np.vstack([bodies, nodes])
+
+
+def episode(env_id: str, n_periods: int, **kwargs) -> tuple[np.ndarray, float]:
+    """(positions (periods run + 1, points, 3) [m], CPU time of the steps [s]) of one copy over ``n_periods``
+    control periods of the seeded actions; stops early (shorter array) at the end of the episode."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # LadderMill-v1 'out of date' and the like
+        env = gym.make_vec(env_id, num_envs=1, vectorization_mode="vector_entry_point", **kwargs)
+    obs, _ = env.reset(seed=0)
+    a0 = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
+    rng = np.random.default_rng(1)
+    out = [positions(env.task)]
+    cpu = 0.0
+    for _ in range(n_periods):
+        a = np.clip(a0 + ACTION_NOISE * rng.uniform(-1.0, 1.0, a0.shape), -1.0, 1.0).astype(np.float32)
+        t0 = time.process_time()
+        _, _, terminated, truncated, _ = env.step(a)
+        cpu += time.process_time() - t0
+        if terminated.any() or truncated.any():
+            break
+        out.append(positions(env.task))
+    env.close()
+    return np.array(out), cpu
+
+
+def compare(env_id: str, episode_time: float, steps=("ros34pw2",), echo=print, **kwargs) -> dict:
+    """The study: {"extent": m, "periods": control periods asked, label: {"error_m", "share", "periods",
+    "cpu_s"}} for the registered step ("registered") and each ``physics_step`` of ``steps`` (once per control
+    period), against RK4 at a quarter of the registered step; ``kwargs`` go to every env (e.g. the operating
+    point)."""
+    n = int(round(episode_time / 0.05))
+    ref, _ = episode(env_id, n, physics_step="rk4", physics_dt=REGISTERED_DT[env_id] / 4, **kwargs)
+    extent = float(np.max(np.linalg.norm(ref, axis=2)))
+    echo(f"{env_id}: {episode_time:g} s, extent {extent:.1f} m; reference RK4 at {REGISTERED_DT[env_id] / 4:g} s "
+         f"ran {len(ref) - 1} periods")
+    res = {"extent": extent, "periods": n}
+    for label in ("registered", *steps):
+        P, cpu = episode(env_id, n, **({} if label == "registered" else {"physics_step": label}), **kwargs)
+        m = min(len(P), len(ref))
+        err = float(np.max(np.linalg.norm(P[:m] - ref[:m], axis=2)))
+        res[label] = {"error_m": err, "share": err / extent, "periods": len(P) - 1, "cpu_s": cpu}
+        echo(f"  {label:10s}: largest position error {err:.4g} m = {err / extent:.3g} of the extent over "
+             f"{len(P) - 1} periods; CPU {cpu:.2f} s ({(len(P) - 1) / cpu:,.0f} steps/s, one copy)")
+    return res
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("env_id", choices=sorted(REGISTERED_DT))
+    p.add_argument("--time", type=float, default=10.0, help="episode time [s] (default 10)")
+    p.add_argument("--steps", nargs="+", default=["ros34pw2", "ros2"], help="physics_step values compared")
+    args = p.parse_args(argv)
+    compare(args.env_id, args.time, tuple(args.steps))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
