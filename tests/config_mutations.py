@@ -83,6 +83,11 @@ ACCEPTED: dict[tuple[str, str], str] = {
     ("net_arch", "short"): "a network of one hidden layer",
     ("*.net_arch.vf", "short"): "a critic of one hidden layer",
     ("init_from", "missing"): "default: the actor starts from random weights",
+    ("critic_warmup", "missing"): "default: no critic-only phase (the actor learns from the first update)",
+    ("validation", "missing"): "default: the kept model is the best on the registered evaluation scenario",
+    ("validation.sets.*", "missing"): "a validation set fewer (the others still select the kept model)",
+    ("validation.sets.*.disturbances[[]*", "missing"): "default: the disturbance's own range "
+                                                        "(atmosphere/disturbances.py)",
     ("log_std_init", "negative"): "a smaller initial action noise (bounds [-20, 2])",
     ("seed", "huge"): "any seed in numpy's range [0, 2^32)",
     ("total_timesteps", "huge"): "an upper bound: time_limit_minutes ends training first",

@@ -5,12 +5,19 @@ file, the field and the value) into a frozen :class:`RLConfig`, and turned into 
 from __future__ import annotations
 
 import inspect
-import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_dict
+from laddermill_gym.control.rl_phases import (
+    CriticWarmup,
+    Validation,
+    check_disturbances,
+    read_critic_warmup,
+    read_init_from,
+    read_validation,
+)
 from laddermill_gym.envs import ENV_IDS, env_arguments, task_class
 from laddermill_gym.envs.rotorcraft.task import CraftTask
 from laddermill_gym.envs.task import WingTask
@@ -76,6 +83,7 @@ class RLConfig:
     policy_kwargs : SB3 ``policy_kwargs`` (e.g. net_arch, log_std_init)
     init_from : None, or a controller spec (``lqr``, ``lqr:<config>``) the linear actor of a PPO policy starts at
         (:mod:`laddermill_gym.control.warm_start`; the observation statistics are then held fixed)
+    critic_warmup, validation : None, or the optional phases of :mod:`laddermill_gym.control.rl_phases`
     """
 
     file: Path
@@ -94,6 +102,8 @@ class RLConfig:
     hyperparameters: dict[str, Any] = field(default_factory=dict)
     policy_kwargs: dict[str, Any] = field(default_factory=dict)
     init_from: str | None = None
+    critic_warmup: CriticWarmup | None = None
+    validation: Validation | None = None
 
     @property
     def is_craft(self) -> bool:
@@ -297,52 +307,6 @@ def _check_env_kwargs(s: Section, env_id: str, kwargs: dict) -> None:
             ek.text(key, choices=choices[key])
 
 
-#: Disturbance parameters a config may set beyond the disturbances' own checks: (bound, why).
-DISTURBANCE_BOUNDS: dict[str, tuple[float, str]] = {
-    "speed_std": (1.0, "a standard deviation of the speed factor of the whole mean wind"),
-    "direction_std": (math.pi, "rad: half a turn"),
-    "correlation_time": (86400.0, "s: a day"),
-    "w20": (100.0, "m/s: the turbulence's wind at 20 ft (MIL-HDBK-1797 severe: 45 kt = 23 m/s)"),
-    "wind_speed": (150.0, "m/s: the fastest wind (ladder/bounds.py)"),
-    "fade_in": (86400.0, "s: a day"),
-    "dh": (1000.0, "m: a turbulence grid's row spacing"),
-    "dxi": (1000.0, "m: a turbulence grid's column spacing"),
-}
-#: Extent [m] of a turbulence grid's ``heights`` and ``along_wind`` pairs: 100 km, beyond every system here (the
-#: mill's chain reaches 3.6 km); a larger grid would not fit in memory
-GRID_EXTENT = 1.0e5
-
-
-def _check_disturbances(s: Section) -> list:
-    """The ``disturbances`` list, each entry read by ``atmosphere.disturbance_spec`` (errors naming the entry, the
-    field and the value), its flags true or false and the numbers of :data:`DISTURBANCE_BOUNDS` within them."""
-    import dataclasses
-
-    disturbances = s.raw("disturbances", []) or []
-    if not isinstance(disturbances, list):
-        raise s.error("disturbances", disturbances, "must be a list of mappings with a 'type'")
-    for i, d in enumerate(disturbances):
-        if not isinstance(d, dict):
-            raise s.error(f"disturbances[{i}]", d, "must be a mapping with a 'type'")
-        entry = Section(d, s.file, f"disturbances[{i}]")
-        for key, value in d.items():
-            if isinstance(value, list):
-                entry.vector(key)  # a range [low, high]: numbers
-        try:
-            dist = disturbance_from_dict(d, f"disturbances[{i}]")
-        except ValueError as err:
-            raise ConfigError(f"{s.file}: {err}") from None
-        for f in dataclasses.fields(dist):
-            if f.name in d and isinstance(f.default, bool):
-                entry.flag(f.name)
-            elif f.name in d and f.name in DISTURBANCE_BOUNDS:
-                high, why = DISTURBANCE_BOUNDS[f.name]
-                entry.number(f.name, nonneg=True, high=high, why=why)
-            elif f.name in d and f.name in ("heights", "along_wind") and max(map(abs, d[f.name])) > GRID_EXTENT:
-                raise entry.error(f.name, d[f.name], f"must lie within +-{GRID_EXTENT:g} m (a grid of that extent)")
-    return list(disturbances)
-
-
 def load_rl_config(path: str | Path) -> RLConfig:
     """Read and validate a training config (``path``: a file, or the bare name of a shipped one,
     ``ppo_tethered_wing``; needs the ``rl`` extra for the hyperparameter check)."""
@@ -361,7 +325,7 @@ def load_rl_config(path: str | Path) -> RLConfig:
             raise s.error(f"env_kwargs.{key}", env_kwargs[key],
                           f"unknown argument of {env_id} (known: {', '.join(known)})")
     _check_env_kwargs(s, env_id, env_kwargs)
-    disturbances = _check_disturbances(s)
+    disturbances = check_disturbances(s)
     cfg = dict(
         algorithm=algo, env_id=env_id, n_envs=n_envs, env_kwargs=dict(env_kwargs), disturbances=disturbances,
         normalize_observations=s.flag("normalize_observations", True),
@@ -377,21 +341,7 @@ def load_rl_config(path: str | Path) -> RLConfig:
     ev.done()
     hyper = _read_hyperparameters(s, algo, n_envs, cfg["total_timesteps"])
     pk = _read_policy_kwargs(s, algo)
-    init_from = _read_init_from(s, algo, pk, cfg["normalize_observations"])
+    init_from = read_init_from(s, algo, pk, cfg["normalize_observations"])
+    phases = dict(critic_warmup=read_critic_warmup(s, init_from), validation=read_validation(s))
     s.done()
-    return RLConfig(file=Path(path), hyperparameters=hyper, policy_kwargs=pk, init_from=init_from, **cfg)
-
-
-def _read_init_from(s: Section, algo: str, policy_kwargs: dict, normalized: bool) -> str | None:
-    """``init_from``: absent, or ``lqr`` / ``lqr:<config>`` for a PPO with a linear actor (``net_arch.pi: []``)
-    and normalised observations (control/warm_start.py)."""
-    spec = s.raw("init_from", None)
-    if spec is None:
-        return None
-    if not (isinstance(spec, str) and (spec == "lqr" or spec.startswith("lqr:"))):
-        raise s.error("init_from", spec, "must be 'lqr' or 'lqr:<config>' (the controller the actor starts at)")
-    arch = policy_kwargs.get("net_arch")
-    if algo != "PPO" or not normalized or not (isinstance(arch, dict) and arch.get("pi") == []):
-        raise s.error("init_from", spec, f"needs algorithm: PPO (got {algo}), normalize_observations: true (got "
-                      f"{normalized}) and a linear actor, policy_kwargs.net_arch.pi: [] (got {arch!r})")
-    return spec
+    return RLConfig(file=Path(path), hyperparameters=hyper, policy_kwargs=pk, init_from=init_from, **phases, **cfg)

@@ -15,6 +15,8 @@ there under the training disturbances, with its own exploration noise (``log_std
 
 from __future__ import annotations
 
+import copy
+
 import numpy as np
 
 __all__ = ["affine_map", "observation_statistics", "warm_start", "start_from", "VAR_INFLATION", "INIT_STEPS",
@@ -40,6 +42,9 @@ def affine_map(controller, obs0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     raw observation ``obs0`` (obs_dim,). ValueError when the action at obs0 is clipped (|a| >= 1): the map is
     then not measurable there."""
     obs0 = np.asarray(obs0, dtype=np.float64)
+    if getattr(controller, "action_dtype", None) is not None:  # probe in float64: float32 actions would put
+        controller = copy.copy(controller)  # their rounding (6e-8) / PROBE into the gains (the LQR controllers)
+        controller.action_dtype = np.float64
     probes = np.repeat(obs0[None], obs0.size + 1, axis=0)
     h = PROBE * (1.0 + np.abs(obs0))
     probes[1:][np.diag_indices(obs0.size)] += h

@@ -50,13 +50,16 @@ def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm, stop=None):
     from stable_baselines3.common.callbacks import BaseCallback
 
     from laddermill_gym.control.sb3_policy import SB3Controller
+    from laddermill_gym.harness.validation import TrainingPhases
 
-    class Harness(BaseCallback):
-        """Progress bar, time limit, periodic evaluation (best model kept), checkpoints; training ends at the next
-        step after a Ctrl-C (``stop``: a ``sim.interrupt.StopRequest``)."""
+    class Harness(TrainingPhases, BaseCallback):
+        """Progress bar, time limit, periodic evaluation (best model kept), checkpoints, the config's phases
+        (critic warm-up, validation: :class:`~laddermill_gym.harness.validation.TrainingPhases`); training ends at
+        the next step after a Ctrl-C (``stop``: a ``sim.interrupt.StopRequest``)."""
 
         def __init__(self):
             super().__init__()
+            self.cfg, self.out, self.pbar = cfg, out, pbar
             self.t0 = time.perf_counter()
             self.next_eval = 0
             self.next_ckpt = cfg.checkpoint_every
@@ -81,17 +84,22 @@ def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm, stop=None):
             self.logger.record("eval/mean_length_s", row["mean_length_s"])
             if row["mean_return"] > self.best:
                 self.best = row["mean_return"]
-                self.model.save(out / "best_model.zip")
-                if vn is not None:
-                    vn.save(str(out / "best_vecnormalize.pkl"))
+                if cfg.validation is None:  # with a validation the best model is the validated one
+                    self._save_best(vn)
             with open(out / "evaluations.csv", "w", newline="") as fh:
                 w = csv.DictWriter(fh, fieldnames=list(row))
                 w.writeheader()
                 w.writerows(self.rows)
             pbar.set_postfix(eval_return=f"{row['mean_return']:.1f}", best=f"{self.best:.1f}")
 
+        def _save_best(self, vn):
+            self.model.save(out / "best_model.zip")
+            if vn is not None:
+                vn.save(str(out / "best_vecnormalize.pkl"))
+
         def _on_step(self) -> bool:
             pbar.update(self.num_timesteps - pbar.n)
+            self._phases()
             if self.num_timesteps >= self.next_eval:
                 self.evaluate()
                 self.next_eval = self.num_timesteps + cfg.eval_every
@@ -211,6 +219,8 @@ def train(cfg: RLConfig, out: Path, threads: int | None = None) -> dict:
         model.learn(total_timesteps=cfg.total_timesteps, callback=cb, tb_log_name=cfg.algorithm)
         if not stop.requested:
             cb.evaluate()
+            if cfg.validation is not None:
+                cb.validate()
     minutes = (time.perf_counter() - t0) / 60
     model.save(out / "model.zip")
     if cfg.normalize_observations:

@@ -1,0 +1,154 @@
+"""The disturbance lists and optional phases of a training config (:mod:`laddermill_gym.control.rl_config`), read
+strictly.
+
+* ``init_from``: the linear actor of a PPO policy started at a model-based controller
+  (:mod:`laddermill_gym.control.warm_start`);
+* ``critic_warmup``: the first ``steps`` env steps train the critic only (the actor's weights and its action noise
+  frozen), at their own ``learning_rate``: PPO's first policy updates then use advantages of a critic that has
+  learned the started policy's values, rather than of random weights;
+* ``validation``: every ``every`` env steps the deterministic policy flies ``episodes`` episodes of each named set
+  of DRAWN disturbances (seeds ``seed``, ``seed`` + 1, ...; a benchmark's own scripted scenarios and seeds are
+  never a validation set), and the policy that survives the most of them is kept as the run's ``best_model.zip``
+  (:mod:`laddermill_gym.harness.validation`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_dict
+from laddermill_gym.model.configio import ConfigError, Section
+
+__all__ = ["check_disturbances", "DISTURBANCE_BOUNDS", "GRID_EXTENT", "CriticWarmup", "ValidationSet", "Validation",
+           "read_init_from", "read_critic_warmup", "read_validation"]
+
+
+@dataclass(frozen=True)
+class CriticWarmup:
+    """The critic-only phase: ``steps`` env steps (all copies) at ``learning_rate``."""
+
+    steps: int
+    learning_rate: float
+
+
+@dataclass(frozen=True)
+class ValidationSet:
+    """``episodes`` episodes of the drawn ``disturbances`` (mappings as a config's ``disturbances``)."""
+
+    name: str
+    episodes: int
+    disturbances: list[dict[str, Any]]
+
+
+@dataclass(frozen=True)
+class Validation:
+    """Checkpoint selection on drawn disturbances: every ``every`` env steps, the sets' episodes of
+    ``episode_time`` [s], copy i of a set seeded ``seed + i``."""
+
+    every: int
+    seed: int
+    episode_time: float
+    sets: tuple[ValidationSet, ...]
+
+
+#: Disturbance parameters a config may set beyond the disturbances' own checks: (bound, why).
+DISTURBANCE_BOUNDS: dict[str, tuple[float, str]] = {
+    "speed_std": (1.0, "a standard deviation of the speed factor of the whole mean wind"),
+    "direction_std": (math.pi, "rad: half a turn"),
+    "correlation_time": (86400.0, "s: a day"),
+    "w20": (100.0, "m/s: the turbulence's wind at 20 ft (MIL-HDBK-1797 severe: 45 kt = 23 m/s)"),
+    "wind_speed": (150.0, "m/s: the fastest wind (ladder/bounds.py)"),
+    "fade_in": (86400.0, "s: a day"),
+    "hub_height": (1.0e5, "m: the extent of a turbulence grid (GRID_EXTENT)"),
+    "dh": (1000.0, "m: a turbulence grid's row spacing"),
+    "dxi": (1000.0, "m: a turbulence grid's column spacing"),
+}
+#: Extent [m] of a turbulence grid's ``heights`` and ``along_wind`` pairs: 100 km, beyond every system here (the
+#: mill's chain reaches 3.6 km); a larger grid would not fit in memory
+GRID_EXTENT = 1.0e5
+
+
+def check_disturbances(s: Section) -> list:
+    """The ``disturbances`` list, each entry read by ``atmosphere.disturbance_spec`` (errors naming the entry, the
+    field and the value), its flags true or false and the numbers of :data:`DISTURBANCE_BOUNDS` within them."""
+    import dataclasses
+
+    disturbances = s.raw("disturbances", []) or []
+    if not isinstance(disturbances, list):
+        raise s.error("disturbances", disturbances, "must be a list of mappings with a 'type'")
+    for i, d in enumerate(disturbances):
+        if not isinstance(d, dict):
+            raise s.error(f"disturbances[{i}]", d, "must be a mapping with a 'type'")
+        entry = Section(d, s.file, f"disturbances[{i}]")
+        for key, value in d.items():
+            if isinstance(value, list):
+                entry.vector(key)  # a range [low, high]: numbers
+        try:
+            dist = disturbance_from_dict(d, f"disturbances[{i}]")
+        except ValueError as err:
+            raise ConfigError(f"{s.file}: {err}") from None
+        for f in dataclasses.fields(dist):
+            if f.name in d and isinstance(f.default, bool):
+                entry.flag(f.name)
+            elif f.name in d and f.name in DISTURBANCE_BOUNDS:
+                high, why = DISTURBANCE_BOUNDS[f.name]
+                entry.number(f.name, nonneg=True, high=high, why=why)
+            elif f.name in d and f.name in ("heights", "along_wind") and max(map(abs, d[f.name])) > GRID_EXTENT:
+                raise entry.error(f.name, d[f.name], f"must lie within +-{GRID_EXTENT:g} m (a grid of that extent)")
+    return list(disturbances)
+
+
+def read_init_from(s: Section, algo: str, policy_kwargs: dict, normalized: bool) -> str | None:
+    """``init_from``: absent, or ``lqr`` / ``lqr:<config>`` for a PPO with a linear actor (``net_arch.pi: []``)
+    and normalised observations (control/warm_start.py)."""
+    spec = s.raw("init_from", None)
+    if spec is None:
+        return None
+    if not (isinstance(spec, str) and (spec == "lqr" or spec.startswith("lqr:"))):
+        raise s.error("init_from", spec, "must be 'lqr' or 'lqr:<config>' (the controller the actor starts at)")
+    arch = policy_kwargs.get("net_arch")
+    if algo != "PPO" or not normalized or not (isinstance(arch, dict) and arch.get("pi") == []):
+        raise s.error("init_from", spec, f"needs algorithm: PPO (got {algo}), normalize_observations: true (got "
+                      f"{normalized}) and a linear actor, policy_kwargs.net_arch.pi: [] (got {arch!r})")
+    return spec
+
+
+def read_critic_warmup(s: Section, init_from: str | None) -> CriticWarmup | None:
+    """``critic_warmup`` (absent: none): ``steps`` [env steps] and ``learning_rate`` [-]; only with ``init_from``
+    (a critic learns the values of a policy worth keeping, not of random weights)."""
+    if not s.has("critic_warmup"):
+        return None
+    cw = s.section("critic_warmup")
+    if init_from is None:
+        raise s.error("critic_warmup", cw.data, "needs init_from (the actor it freezes is the started controller)")
+    out = CriticWarmup(cw.number("steps", integer=True, positive=True, high=10**9, why="env steps"),
+                       cw.number("learning_rate", positive=True, high=1.0, why="the optimiser's step"))
+    cw.done()
+    return out
+
+
+def read_validation(s: Section) -> Validation | None:
+    """``validation`` (absent: none): ``every`` [env steps], ``seed``, ``episode_time`` [s] and ``sets``, a
+    mapping of names to ``episodes`` and ``disturbances`` (checked as the training's)."""
+    if not s.has("validation"):
+        return None
+    v = s.section("validation")
+    every = v.number("every", integer=True, positive=True, high=10**9, why="env steps")
+    seed = v.number("seed", integer=True, nonneg=True, high=2 ** 32 - 1, why="numpy's seed range")
+    episode_time = v.number("episode_time", positive=True, high=3600.0, why="s: an hour per validation episode")
+    raw = v.raw("sets")
+    if not isinstance(raw, dict) or not raw:
+        raise v.error("sets", raw, "must be a mapping of set names to {episodes, disturbances}")
+    sets = []
+    for name in raw:
+        sec = Section(raw[name], s.file, f"validation.sets.{name}")
+        episodes = sec.number("episodes", integer=True, positive=True, high=1000, why="each validation runs them")
+        dist = check_disturbances(sec)
+        if not dist:
+            raise sec.error("disturbances", dist, "must list at least one disturbance (drawn per episode)")
+        sec.done()
+        sets.append(ValidationSet(str(name), episodes, dist))
+    v.done()
+    return Validation(every, seed, episode_time, tuple(sets))
