@@ -17,8 +17,9 @@ cache across processes (a jitted callable passed as an argument would be recompi
 The generic rigid-body kernels import this module, never a vehicle.
 """
 
+from numba.core import types
 from numba.core.errors import TypingError
-from numba.extending import overload
+from numba.core.typing.templates import infer, infer_global, make_overload_template
 
 from laddermill_gym.kernels.contract import EF_L0
 
@@ -27,6 +28,44 @@ _CHECK: dict[type, object] = {}
 _LOADS: dict[type, object] = {}
 _ENDS: dict[type, tuple] = {}
 _ASSEMBLE: dict[type, object] = {}
+
+
+class _TypedOnly:
+    """Template mixin of :func:`inline_overload`: the implementation's dispatcher is typed, never compiled."""
+
+    def _get_jit_decorator(self):
+        jitter = super()._get_jit_decorator()
+
+        def typed_only(**options):
+            decorate = jitter(**options)
+
+            def make(pyfunc):
+                disp = decorate(pyfunc)
+                # numba types its IR for the inliner; a compiled copy would go unused (disable_compile() insists on
+                # one compiled signature, so the flag it sets is set here)
+                disp._can_compile = False
+                return disp
+            return make
+        return typed_only
+
+
+def inline_overload(func):
+    """``numba.extending.overload(func, inline="always")`` without compiling the implementation on its own.
+
+    numba types an always-inlined overload's implementation from its IR and inlines that IR into the caller, but
+    first compiles it as a function of its own (``Dispatcher.get_call_template``) that is never called: for the
+    dispatch lambdas below, whose one call links the whole right-hand side, that cost up to 3 s of LLVM each, per
+    signature, about a tenth of a cold start (issue 32). Here the implementation's dispatcher has compiling
+    disabled, so only the typing runs; the caller's code is the same (the inlined IR is the same)."""
+    opts = {"no_cpython_wrapper": True, "nopython": True}  # numba.extending.overload's defaults
+
+    def decorate(overload_func):
+        base = make_overload_template(func, overload_func, opts, True, "always")
+        template = type(base)(base.__name__, (_TypedOnly, base), {})
+        infer(template)
+        infer_global(func, types.Function(template))
+        return overload_func
+    return decorate
 
 
 def register_kind(marker: type, rhs, check) -> None:
@@ -99,31 +138,31 @@ def elongation_rate(kind, e, t, x, M, ln, l0, ld):
     raise NotImplementedError("elongation_rate is resolved inside numba kernels")
 
 
-@overload(model_rhs, inline="always")
+@inline_overload(model_rhs)
 def _model_rhs(kind, t, x, u, dx, M, W):
     impl = _lookup(_RHS, kind, "model kind right-hand side")
     return lambda kind, t, x, u, dx, M, W: impl(kind, t, x, u, dx, M, W)
 
 
-@overload(model_check, inline="always")
+@inline_overload(model_check)
 def _model_check(kind, x, M, limits):
     impl = _lookup(_CHECK, kind, "model kind check")
     return lambda kind, x, M, limits: impl(kind, x, M, limits)
 
 
-@overload(model_assemble, inline="always")
+@inline_overload(model_assemble)
 def _model_assemble(kind, t, x, u, dx, M, W):
     impl = _lookup(_ASSEMBLE, kind, "model kind assembly (a linearly implicit integrator)")
     return lambda kind, t, x, u, dx, M, W: impl(kind, t, x, u, dx, M, W)
 
 
-@overload(body_loads, inline="always")
+@inline_overload(body_loads)
 def _body_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
     impl = _lookup(_LOADS, vehicle, "vehicle body loads")
     return lambda vehicle, k, t, x, R, u, M, W, Dk, env: impl(vehicle, k, t, x, R, u, M, W, Dk, env)
 
 
-@overload(rest_length, inline="always")
+@inline_overload(rest_length)
 def _rest_length(kind, e, t, x, M):
     cls = getattr(kind, "instance_class", None)
     if cls in _ENDS:
@@ -132,7 +171,7 @@ def _rest_length(kind, e, t, x, M):
     return lambda kind, e, t, x, M: M.ef[e, EF_L0]
 
 
-@overload(elongation_rate, inline="always")
+@inline_overload(elongation_rate)
 def _elongation_rate(kind, e, t, x, M, ln, l0, ld):
     cls = getattr(kind, "instance_class", None)
     if cls in _ENDS:

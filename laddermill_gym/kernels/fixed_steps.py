@@ -31,7 +31,8 @@ ALIGN_TOL = 1e-9
 BREAKS_OFF, BREAKS_INSIDE, BREAKS_ENDS = 0, 1, 2
 
 
-@njit(cache=True)
+# Inlined (no arithmetic, a tuple built): one compile less per caller signature (issue 32)
+@njit(cache=True, inline="always")
 def model_with_air(kind, vehicle, M, tmod, ms, md, gp, gv):
     """The packed model ``M`` with markers ``kind`` and ``vehicle`` and the given air (wind modulation grid tmod (2,),
     speed factors ms and direction offsets md (n_mod,), gust grid header gp and samples gv, or None)."""
@@ -58,7 +59,11 @@ def _advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
     return w_advance.py_func
 
 
-@njit(cache=True)
+# The kink helpers below are inlined into advance_breaks (numba IR; about 4 s of a cold start as six compiles of
+# their own, issue 32). They have no fastmath, like advance_breaks, whose numpy error model only differs from theirs
+# on a division by zero, which their guards (dt_w > 0, the step dt > 0) exclude; called from Python
+# (sim/breakpoints.py) they compile on their own as before.
+@njit(cache=True, inline="always")
 def is_kink(k, ms, md):
     """Whether the slope of the modulation (speed factor ms or direction offset md, (n_mod,)) changes at grid
     point k (the slope is zero before the first and after the last point)."""
@@ -70,7 +75,7 @@ def is_kink(k, ms, md):
     return ls != rs or ld != rd
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def grid_range(ta, tb, tmod, n_mod):
     """Grid indices (first, last + 1) of the modulation points that may lie in [ta, tb] [s] (a superset by one
     point at each end; empty for a non-finite time or a single sample: no index is formed from a non-finite
@@ -85,7 +90,7 @@ def grid_range(ta, tb, tmod, n_mod):
     return max(0, int(math.floor(lo))), min(n_mod, int(math.ceil(hi)))
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def kink_place(k, tmod, t, dt):
     """Grid point k's time b [s] and where it falls among the steps of dt [s] from t [s]: (b, index i of the step
     it lies in, fraction f in [0, 1) of that step)."""
@@ -95,7 +100,7 @@ def kink_place(k, tmod, t, dt):
     return b, i, u - i
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def step_kinks(t, dt, j, tmod, ms, md):
     """Kinks of step j of the steps of dt [s] from t [s]: (how many lie strictly inside it, whether one lies on its
     start or end within ``ALIGN_TOL``). Classified by u = (kink - t) / dt against j, j + 1."""
@@ -114,7 +119,7 @@ def step_kinks(t, dt, j, tmod, ms, md):
     return inside, on_end
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def fill_segment(M, ta, tb, seg_tmod, seg_ms, seg_md):
     """The straight line that the modulation of M follows on [ta, tb] [s] (no kink inside), extended beyond it,
     as a four-sample modulation: [ta, tb] maps to the grid's second segment, so a stage on either end sees this
@@ -130,7 +135,7 @@ def fill_segment(M, ta, tb, seg_tmod, seg_ms, seg_md):
         seg_md[i] = d + dd * off
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def next_kink(tc, te, t, dt, j, tmod, ms, md):
     """The first kink of step j (of the steps of dt [s] from t [s]) strictly inside it and after tc [s], or the
     step's end te [s] when none is left."""

@@ -69,7 +69,8 @@ print(json.dumps({{"inside_s": seconds, "cpu_s": use.ru_utime + use.ru_stime, "c
 #: ``--profile``: the fresh process times every function numba compiles (``numba:compile`` events, nested: a
 #: kernel's compile includes its callees'), so each row has its own seconds (self: the total less the callees
 #: compiled inside it, i.e. its typing, lowering and the LLVM optimisation and code generation of its library,
-#: into which numba links every callee's code again) and the phase (make, reset, step) it fell in
+#: into which numba links every callee's code again), in wall and in CPU seconds of the process (the compile runs
+#: on one thread: CPU seconds are what a loaded machine does not inflate), and the phase (make, reset, step)
 PROFILE_CHILD = """import time
 t0 = time.perf_counter()
 import json
@@ -79,15 +80,18 @@ class Tree(event.Listener):
     def on_start(self, ev):
         f = ev.data["dispatcher"].py_func
         row = {{"name": f.__module__ + "." + f.__qualname__, "depth": len(stack), "phase": phase[0],
-               "start": time.perf_counter(), "inner": 0.0}}
+               "start": time.perf_counter(), "inner": 0.0, "cpu_start": time.process_time(), "cpu_inner": 0.0}}
         rows.append(row)
         stack.append(row)
     def on_end(self, ev):
         row = stack.pop()
         row["total_s"] = time.perf_counter() - row.pop("start")
         row["self_s"] = row["total_s"] - row.pop("inner")
+        row["total_cpu_s"] = time.process_time() - row.pop("cpu_start")
+        row["self_cpu_s"] = row["total_cpu_s"] - row.pop("cpu_inner")
         if stack:
             stack[-1]["inner"] += row["total_s"]
+            stack[-1]["cpu_inner"] += row["total_cpu_s"]
 event.register("numba:compile", Tree())
 import gymnasium
 import numpy as np
@@ -116,10 +120,12 @@ def profile(env_id: str, top: int = 25, echo=print) -> dict:
     for ph in ("import", "make", "reset", "step"):
         sel = [r for r in rows if r["phase"] == ph]
         if sel:
-            echo(f"  {ph:6s} {sum(r['self_s'] for r in sel):7.1f} s compiling ({len(sel)} functions)")
-    echo(f"  {'self [s]':>9s} {'total [s]':>9s}  phase  function (nesting depth)")
-    for r in sorted(rows, key=lambda r: -r["self_s"])[:top]:
-        echo(f"  {r['self_s']:9.2f} {r['total_s']:9.2f}  {r['phase']:5s}  {r['name']} ({r['depth']})")
+            echo(f"  {ph:6s} {sum(r['self_cpu_s'] for r in sel):7.1f} s CPU compiling ({len(sel)} functions; "
+                 f"{sum(r['self_s'] for r in sel):.1f} s wall)")
+    echo(f"  {'self CPU [s]':>12s} {'total CPU [s]':>13s} {'self wall [s]':>13s}  phase  function (nesting depth)")
+    for r in sorted(rows, key=lambda r: -r["self_cpu_s"])[:top]:
+        echo(f"  {r['self_cpu_s']:12.2f} {r['total_cpu_s']:13.2f} {r['self_s']:13.2f}  {r['phase']:5s}  {r['name']} "
+             f"({r['depth']})")
     return res
 
 
