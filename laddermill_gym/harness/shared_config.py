@@ -41,6 +41,7 @@ class SharedTrainConfig:
     ppo_timesteps: int
     ppo_minutes: float
     log_std_init: float
+    value_net: tuple[int, ...]
     eval_episodes: int
     eval_time: float
     eval_every: int
@@ -102,6 +103,11 @@ def load_shared_config(path: str | Path) -> SharedTrainConfig:
                ppo_timesteps=ppo.number("total_timesteps", integer=True, nonneg=True),
                ppo_minutes=ppo.number("time_limit_minutes", nonneg=True),
                log_std_init=ppo.number("log_std_init", high=1.0))
+    vf = ppo.raw("value_net", [64, 64])
+    if not isinstance(vf, list) or not all(isinstance(v, int) and not isinstance(v, bool) and 0 < v <= 1024
+                                           for v in vf):
+        raise ppo.error("value_net", vf, "must be a list of hidden layer widths (integers 1-1024)")
+    cfg["value_net"] = tuple(vf)
     hyper = ppo.raw("hyperparameters", {}) or {}
     if not isinstance(hyper, dict):
         raise ppo.error("hyperparameters", hyper, "must be a mapping of PPO's keyword arguments")

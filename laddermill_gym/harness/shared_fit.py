@@ -77,7 +77,7 @@ def fitted_model(env_id: str, k: int, n_basis: int, teacher, scales: np.ndarray,
               features_extractor_kwargs=dict(n_agents=view.n_agents, k=k, block=view.block, n_basis=n_basis,
                                              trim=np.asarray(teacher.trim_attitude).tolist(),
                                              scales=np.asarray(scales).tolist()),
-              net_arch=dict(pi=[], vf=[64, 64]), log_std_init=-3.0, ortho_init=False)
+              net_arch=dict(pi=[], vf=[8]), log_std_init=-3.0, ortho_init=False)
     model = PPO("MlpPolicy", venv, seed=seed, policy_kwargs=pk, device="cpu", verbose=0)
     w = band_weights(banded(teacher.K, k), teacher.half, scales, k)
     head, err = project_weights(w, n_basis, teacher.column, view.act_dim)

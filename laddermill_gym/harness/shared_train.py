@@ -60,7 +60,7 @@ def _policy_kwargs(cfg: SharedTrainConfig, view, trim, scales) -> dict:
                 features_extractor_kwargs=dict(n_agents=view.n_agents, k=cfg.k, block=view.block,
                                                n_basis=cfg.n_basis, trim=np.asarray(trim).tolist(),
                                                scales=np.asarray(scales).tolist()),
-                net_arch=dict(pi=[], vf=[64, 64]), log_std_init=cfg.log_std_init, ortho_init=False)
+                net_arch=dict(pi=[], vf=list(cfg.value_net)), log_std_init=cfg.log_std_init, ortho_init=False)
 
 
 class Evaluator:
