@@ -101,6 +101,12 @@ def register_moving_ends(marker: type, rest_length, elongation_rate) -> None:
     _ENDS[marker] = (rest_length, elongation_rate)
 
 
+def has_moving_ends(kind_type) -> bool:
+    """Whether the model kind of numba type ``kind_type`` (a marker's type, inside an overload) registered element
+    rest lengths that change (:func:`register_moving_ends`)."""
+    return getattr(kind_type, "instance_class", None) in _ENDS
+
+
 def _lookup(table: dict, typ, what: str):
     cls = getattr(typ, "instance_class", None)
     if cls not in table:

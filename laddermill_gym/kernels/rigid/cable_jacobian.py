@@ -48,7 +48,7 @@ from laddermill_gym.kernels.contract import (
     N3_POS,
     N3_SIZE,
 )
-from laddermill_gym.kernels.dispatch import elongation_rate, rest_length
+from laddermill_gym.kernels.dispatch import elongation_rate, has_moving_ends, inline_overload, rest_length
 from laddermill_gym.kernels.rigid.rhs3d import block_of, end_kinematics
 
 _FM = {"contract", "nsz", "arcp"}
@@ -280,3 +280,17 @@ def add_moving_end_force(t, xn, r, rt, M, W, fac):
         ds = fac * (-(EA + sig) / l0 * dl0 + DA / l0 * drate)
         fx, fy, fz = ds * lx / ln, ds * ly / ln, ds * lz / ln
         _add_end_pull(W, block_of(kr, ir, nw), nr, block_of(ks, is_, nw), ns, fx, fy, fz)
+
+
+def moving_end_force(kind, t, xn, r, rt, M, W, fac):
+    """:func:`add_moving_end_force` for a model kind that registered moving ends (the moving cable, the reel), else
+    nothing (jitted code only): for fixed ends its rest lengths and rates do not move (each element's change is
+    exactly 0 and it adds nothing), so a scene without moving ends does not compile it (issue 32)."""
+    raise NotImplementedError("moving_end_force is resolved inside numba kernels")
+
+
+@inline_overload(moving_end_force)
+def _moving_end_force(kind, t, xn, r, rt, M, W, fac):
+    if has_moving_ends(kind):
+        return lambda kind, t, xn, r, rt, M, W, fac: add_moving_end_force(t, xn, r, rt, M, W, fac)
+    return lambda kind, t, xn, r, rt, M, W, fac: None

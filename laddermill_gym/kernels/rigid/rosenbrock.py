@@ -48,7 +48,7 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
 from laddermill_gym.kernels.dispatch import model_assemble, model_check, model_rhs
 from laddermill_gym.kernels.rigid.blocks import copy_blocks, tree_factor, tree_solve_factored
 from laddermill_gym.kernels.rigid.body_jacobian import add_body_force, add_body_jacobian
-from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness, add_moving_end_force, add_stiffness_force
+from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness, add_stiffness_force, moving_end_force
 
 _FM = {"contract", "nsz", "arcp"}
 
@@ -212,7 +212,7 @@ def w_step(t, x, u, dt, M, W, tableau):
             _mass_times(W.Dm, W.Um, r, W.bv, M)
         add_stiffness_force(xp, r, M, W, gh)
         add_body_force(xp, r, M, W, gh)
-        add_moving_end_force(t, xp, r, rt, M, W, gh)
+        moving_end_force(M.kind, t, xp, r, rt, M, W, gh)
         if st == 0:
             ut0 = gh * rt
         elif st == 1:
