@@ -225,6 +225,11 @@ def write(out: Path, cfg: Config, rows: list[dict], best: list[dict]) -> list[Pa
     return paths
 
 
+def _limit_cell(row: dict) -> str:
+    """'ok' / 'OVER' for the last period's largest tension against the limit; 'n/a' when the ramp broke down."""
+    return "n/a" if row["t_max_kN"] != row["t_max_kN"] else ("ok" if row["within_limit"] else "OVER")
+
+
 def print_table(cfg: Config, rows: list[dict], best: list[dict]) -> None:
     """The rows, the breakdowns and overloads, and the best V_c per wind, as the docs quote them."""
     print(f"{cfg.scene}, in plane, ramp rule '{cfg.ramp}', search {cfg.max_time:g} s; tension limit breaking load / "
@@ -235,7 +240,7 @@ def print_table(cfg: Config, rows: list[dict], best: list[dict]) -> None:
         print(f"{r['v0_m_s']:5.1f} {r['v_c_m_s']:5.2f} {r['ramp_s']:8.0f}  {r['elevator_up_deg']:5.1f}/"
               f"{r['elevator_down_deg']:5.1f}  {str(r['periodic']):8s} {r['t_s']:7.1f} {r['power_kW']:9.1f} "
               f"{r['hand_estimate_kW']:15.1f} {r['betz_kW']:10.0f}  {r['t_rest_max_kN']:6.1f} {r['t_max_kN']:6.1f}  "
-              f"{'ok' if r['within_limit'] else 'OVER':5s}  {r['t_peak_search_kN']:8.1f}")
+              f"{_limit_cell(r):5s}  {r['t_peak_search_kN']:8.1f}")
     for r in rows:
         for what in ("breakdown", "overload"):
             if r[what]:
@@ -270,13 +275,15 @@ def main(argv=None) -> int:
                    help="cable speed from rest: 'rate' at the scene's own acceleration (default; v2: 100 V_c s), "
                         "'scene' in the scene's ramp time whatever V_c")
     p.add_argument("--quick", action="store_true", help="one case, V_c = 2 m/s at the paper's wind, 70 s search")
-    p.add_argument("--speeds", type=float, nargs="+", default=None, metavar="V_C",
-                   help="cable speeds [m/s] at the paper's wind (default: the full sweep's)")
+    p.add_argument("--speeds", type=float, nargs="*", default=None, metavar="V_C",
+                   help="cable speeds [m/s] at the paper's wind (default: the full sweep's; none: only the winds')")
     p.add_argument("--winds", type=float, nargs="*", default=None, metavar="V0",
                    help="winds V0 [m/s] of the sweep (none: the paper's wind only)")
     p.add_argument("--wind-speeds", type=float, nargs="+", default=None, metavar="V_C",
                    help="cable speeds [m/s] tried per wind: the grid searched for the best V_c")
     p.add_argument("--max-time", type=float, default=None, help="periodic search per case after the ramp [s]")
+    p.add_argument("--table", metavar="JSON", default=None,
+                   help="print the table and write the files again from an earlier run's power_curve.json (no run)")
     parallel.add_arguments(p)
     args = p.parse_args(argv)
     parallel.check_arguments(args, p.prog)
@@ -284,7 +291,12 @@ def main(argv=None) -> int:
         cfg = _config(args)
     except UsageError as err:
         p.error(str(err))
-    rows, best = run(cfg, workers=args.workers)
+    if args.table is not None:  # the rows of an earlier run, printed and drawn again
+        meta = json.loads(Path(args.table).read_text(encoding="utf-8"))
+        cfg = Config(**{k: tuple(v) if isinstance(v, list) else v for k, v in meta["config"].items()})
+        rows, best = meta["rows"], best_per_wind(meta["rows"])
+    else:
+        rows, best = run(cfg, workers=args.workers)
     print_table(cfg, rows, best)
     for path in write(Path(args.out), cfg, rows, best):
         print(f"wrote {path}")
