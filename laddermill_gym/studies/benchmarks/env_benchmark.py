@@ -19,16 +19,20 @@ import numpy as np
 from laddermill_gym.envs import ENTRY_POINTS, ENV_IDS
 
 
-def _steps_per_second(env, action: np.ndarray, n_steps: int, repeats: int) -> float:
+def _steps_per_second(env, action: np.ndarray, n_steps: int, repeats: int) -> tuple[float, float]:
+    """(median env steps per wall second, median CPU seconds of this process per wall second over the repeats:
+    about the threads kept busy; well below them on a machine loaded by other work)."""
     env.reset(seed=0)
     env.step(action)  # warm-up
-    rates = []
+    rates, shares = [], []
     for _ in range(repeats):
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         for _ in range(n_steps):
             env.step(action)
-        rates.append(n_steps * env.num_envs / (time.perf_counter() - t0))
-    return float(np.median(rates))
+        wall = time.perf_counter() - t0
+        rates.append(n_steps * env.num_envs / wall)
+        shares.append((time.process_time() - c0) / wall)
+    return float(np.median(rates)), float(np.median(shares))
 
 
 def bench_vector(env_id: str, counts=(1, 8, 64, 512), quick: bool = False, echo=print,
@@ -36,7 +40,9 @@ def bench_vector(env_id: str, counts=(1, 8, 64, 512), quick: bool = False, echo=
     """Steps/s of the native vector env and of SyncVectorEnv for each number of copies. ``budget``: copy-steps
     per repeat of the native env at the full setting (a fifth of it with ``quick``); the SyncVectorEnv runs 1 %
     of it (at least 3 steps). ``variants``: label -> env arguments of further native envs measured in the same
-    run (e.g. the registered step on one thread, the step ``physics_step="ros34pw2"``), each with its ratio."""
+    run (e.g. the registered step on one thread, the step ``physics_step="ros34pw2"``), each with its ratio. Each
+    rate comes with its CPU share ("cpu": this process's CPU seconds per wall second, about the threads kept
+    busy; on a loaded machine well below them, so the wall rates are then the machine's share, not its speed)."""
     from laddermill_gym.control.factory import make_controller
 
     kwargs = ENV_IDS[env_id]
@@ -44,24 +50,26 @@ def bench_vector(env_id: str, counts=(1, 8, 64, 512), quick: bool = False, echo=
     per_repeat = budget / 5 if quick else budget  # copy-steps per repeat for the native env
     rows = []
     for n in counts:
-        rates = {}
+        rates, shares = {}, {}
         for label, extra in {"native": {}, **(variants or {})}.items():
             native = gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **extra)
             obs, _ = native.reset(seed=0)
             act = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
-            rates[label] = _steps_per_second(native, act, max(5, int(per_repeat / n) // 10), 3 if quick else 5)
+            rates[label], shares[label] = _steps_per_second(native, act, max(5, int(per_repeat / n) // 10),
+                                                            3 if quick else 5)
             native.close()
         sync = gym.vector.SyncVectorEnv([lambda: single(**kwargs) for _ in range(n)])
-        sync_rate = _steps_per_second(sync, act, max(3, int(budget / 100 / (5 if quick else 1) / n)), 3)
+        sync_rate, sync_share = _steps_per_second(sync, act, max(3, int(budget / 100 / (5 if quick else 1) / n)), 3)
         sync.close()
         native_rate = rates.pop("native")
         row = {"env": env_id, "copies": n, "native_steps_per_s": native_rate, "sync_steps_per_s": sync_rate,
-               "ratio": native_rate / sync_rate}
+               "ratio": native_rate / sync_rate, "native_cpu_share": shares.pop("native"), "sync_cpu_share": sync_share}
         if rates:
-            row["variants"] = {k: {"steps_per_s": v, "ratio": v / sync_rate} for k, v in rates.items()}
-        extra_text = "".join(f"   {k} {v:10,.0f} ({v / sync_rate:.1f}x)" for k, v in rates.items())
-        echo(f"  {n:5d} copies: native {native_rate:12,.0f} steps/s{extra_text}   SyncVectorEnv {sync_rate:10,.0f} "
-             f"steps/s   ratio {row['ratio']:7.1f}x")
+            row["variants"] = {k: {"steps_per_s": v, "ratio": v / sync_rate, "cpu_share": shares[k]}
+                               for k, v in rates.items()}
+        extra_text = "".join(f"   {k} {v:10,.0f} ({v / sync_rate:.1f}x; cpu {shares[k]:.2f})" for k, v in rates.items())
+        echo(f"  {n:5d} copies: native {native_rate:12,.0f} steps/s (cpu {row['native_cpu_share']:.2f}){extra_text}   "
+             f"SyncVectorEnv {sync_rate:10,.0f} steps/s (cpu {sync_share:.2f})   ratio {row['ratio']:7.1f}x")
         rows.append(row)
     return rows
 
@@ -162,7 +170,7 @@ def thread_scaling(thread_counts, envs=None, copies: int = 512, quick: bool = Fa
         for k in counts:
             numba.set_num_threads(k)
             n_steps = max(5, int((2e5 if quick else 1e6) / copies) // 10)  # the bench_vector budget per repeat
-            rate = _steps_per_second(native, act, n_steps, 3 if quick else 5)
+            rate, _ = _steps_per_second(native, act, n_steps, 3 if quick else 5)
             rows.append({"threads": k, "steps_per_s": rate, "speedup": rate / rows[0]["steps_per_s"] if rows else 1.0})
             echo(f"  {k:3d} threads: {rate:12,.0f} steps/s   speed-up {rows[-1]['speedup']:5.2f}x")
         native.close()
