@@ -201,10 +201,24 @@ class WingTask(TaskCore):
 
     def _observe_state(self, x: np.ndarray, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(obs row (obs_dim,), aux row (N_AUX,)) of one state x at t = 0 in the undisturbed wind (speed factor
-        1, no direction offset), without touching the copies; raises ValueError if the mass matrix is
-        singular there."""
+        1, no direction offset); raises ValueError if the mass matrix is singular there.
+
+        Without a gust grid it is the step kernel's own observation (no step) of copy 0 set to (x, u) in that
+        wind, so a cold start compiles no separate observation kernel (issue 32: about 4 s of CPU); this runs in
+        the constructor, before the first reset sets every copy. With a grid (whose copies add the grid's
+        terms) it is ``observe_state`` on a model without one."""
+        b = self.batch
+        if b.n_grid == 0:
+            b.set_wind(0, WindField())  # undisturbed: factor 1, no offset
+            b.states[0], b.controls[0], b.t[0] = x, u, 0.0
+            self._nsteps[:] = -1
+            self._nsteps[0] = 0
+            self._wing_kernel_pass(self._nsteps, self.nominal, self.obs)
+            if b.status[0] != OK:
+                raise ValueError(f"scene {self.scene.name}: singular mass matrix at the state observed")
+            return self.obs[0].copy(), self.aux[0].copy()
         tmod, ms, md, gp, gv = pack_wind_field(WindField())  # undisturbed: factor 1, no offset, no gust grid
-        model = self.batch.model._replace(tmod=tmod, ms=ms, md=md, gp=gp, gv=gv)
+        model = b.model._replace(tmod=tmod, ms=ms, md=md, gp=gp, gv=gv)
         obs, aux = np.zeros(self.obs_dim), np.zeros(N_AUX)
         status = observe_state(0.0, np.array(x, dtype=float), np.array(u, dtype=float), model,
                                make_workspace(self.scene.assembly), self.nominal, self.below, self.ground, obs, aux)
