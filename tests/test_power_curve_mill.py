@@ -97,3 +97,6 @@ def test_quick_v2_case_against_the_papers_relation_and_betz(tmp_path):
     limit_kn = _yaml("cables", "dyneema_25mm")["breaking_load"] / 2.5 / 1e3
     assert r["t_limit_kN"] == pytest.approx(limit_kn)
     assert r["within_limit"] == (r["t_max_kN"] <= limit_kn)
+    # --table: the same files again from the JSON, without a run
+    assert power_curve.main(["--table", str(tmp_path / "power_curve.json"), "--out", str(tmp_path / "again")]) == 0
+    assert (tmp_path / "again" / "power_curve.csv").read_text() == (tmp_path / "power_curve.csv").read_text()
