@@ -44,10 +44,11 @@ class TaskVectorEnv(VectorEnv):
     ``task_class``.
 
     Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: ``render()`` returns one frame per copy; None only
-    where the task does not render), ``autoreset_mode``, ``parallel`` (numba thread pool; default from 32 copies on)
-    and the task's arguments; others raise ValueError naming them. ``info`` holds the task's info arrays, each with
-    its ``_name`` mask, and ``failure_name`` / ``failure_reason`` per copy; a copy reset in the call holds its reset
-    info instead (``t`` = 0 and the task's ``reset_info()``, e.g. ``reference_power_W``), as SyncVectorEnv gives.
+    where the task does not render), ``autoreset_mode``, ``parallel`` (numba thread pool; default from 32 copies
+    on, from 2 for a model of 500 states or more: ``task_base.default_parallel``) and the task's arguments; others
+    raise ValueError naming them. ``info`` holds the task's info arrays, each with its ``_name`` mask, and
+    ``failure_name`` / ``failure_reason`` per copy; a copy reset in the call holds its reset info instead (``t`` =
+    0 and the task's ``reset_info()``, e.g. ``reference_power_W``), as SyncVectorEnv gives.
 
     Copy i behaves exactly like the task's single env seeded with ``seed + i`` (bit for bit: same kernel, same
     arithmetic). Autoreset: ``autoreset_mode`` "NextStep" (Gymnasium's default: the step after an episode ends

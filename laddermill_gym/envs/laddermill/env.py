@@ -114,8 +114,8 @@ class LadderMillVectorEnv(TaskVectorEnv):
     ``lateral_offsets(obs)``: dy [m] per slot (num_envs, n).
 
     Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: one frame per copy), ``autoreset_mode``,
-    ``parallel`` (numba thread pool; default from 32 copies on) and the arguments of the single env; others raise
-    ValueError.
+    ``parallel`` (numba thread pool; default from 2 copies on: ``task_base.default_parallel``) and the arguments of
+    the single env; others raise ValueError.
     """
 
     task_class = MillTask
