@@ -37,7 +37,8 @@ def _betz_w(scene: dict, span: float, h_low: float, h_high: float) -> float:
 
 
 @pytest.mark.parametrize("argv, value", [(["--scene", "laddermill_v9"], "laddermill_v9"),
-                                         (["--ramp", "fast"], "fast"), (["--max-time", "-5"], "-5")])
+                                         (["--ramp", "fast"], "fast"), (["--max-time", "-5"], "-5"),
+                                         (["--tail-rule", "feather"], "feather")])
 def test_bad_option_is_refused_naming_the_value(argv, value, capsys):
     with pytest.raises(SystemExit) as exc:
         power_curve.main(argv)
@@ -100,3 +101,75 @@ def test_quick_v2_case_against_the_papers_relation_and_betz(tmp_path):
     # --table: the same files again from the JSON, without a run
     assert power_curve.main(["--table", str(tmp_path / "power_curve.json"), "--out", str(tmp_path / "again")]) == 0
     assert (tmp_path / "again" / "power_curve.csv").read_text() == (tmp_path / "power_curve.csv").read_text()
+
+
+# The depower tail rule (--tail-rule depower). Oracle: the moment of aerodynamics and weight about the attachment
+# written out in trim_slope.moment_about_attachment (a separate implementation from the simulator's
+# pitch_trim_alpha, which the rule searches on), its zero found here by scanning alpha, and the lift coefficient
+# read from the wing file's table with a spline built here.
+
+def _table_cl(wing, alpha: float, elevator: float) -> float:
+    """C_L + C_L,de d [-] at alpha [rad] from the wing's table (a periodic cubic spline over the table's alphas)."""
+    from scipy.interpolate import CubicSpline
+
+    from laddermill_gym.model.params import AERO_INDEX
+
+    c = CubicSpline(wing.aero.alpha, wing.aero.values, bc_type="periodic", axis=0)(alpha)
+    return float(c[AERO_INDEX["CL"]] + c[AERO_INDEX["CLde"]] * elevator)
+
+
+def _trim_alpha(wing, elevator: float, speed: float) -> float:
+    """The attached-flow trim [rad]: the first nose-down crossing of M_P from -10 deg up (0.05 deg scan, brentq)."""
+    from scipy.optimize import brentq
+
+    from laddermill_gym.studies.mill.trim_slope import moment_about_attachment
+
+    m = lambda a: moment_about_attachment(wing, a, elevator, speed)  # noqa: E731
+    grid = [math.radians(-10.0 + 0.05 * i) for i in range(601)]
+    for a0, a1 in zip(grid, grid[1:], strict=False):
+        if m(a0) > 0.0 >= m(a1):
+            return brentq(m, a0, a1, xtol=1e-12)
+    raise AssertionError("no attached-flow trim")
+
+
+@pytest.mark.parametrize("v0", [10.0, 12.0, 14.0])
+def test_depower_rule_trims_the_scaled_lift_coefficient(v0):
+    """Above 8 m/s each leg's elevator trims the wing (at rest on the cable, in the wind V0, sea-level density) at
+    C_L(8 m/s, scene elevator) (8 / V0)^n, n = 2 ascending, 1.75 descending, to 1e-6; an elevator above the scene's."""
+    from laddermill_gym.studies.mill.tail_schedule import DEPOWER_EXPONENTS, tail_rule
+
+    sc = load_scene("laddermill_v2", dimension=2)
+    wing, ini = sc.assembly.wing(0), _yaml("scenes", "laddermill_v2")["initial"]
+    got = tail_rule(sc.initial, wing, v0, "depower")
+    assert DEPOWER_EXPONENTS == (2.0, 1.75)
+    for d_deg, scene_deg, n in zip(got, (ini["elevator_up_deg"], ini["elevator_down_deg"]), (2, 1.75), strict=True):
+        d, ds = math.radians(d_deg), math.radians(scene_deg)
+        target = _table_cl(wing, _trim_alpha(wing, ds, 8.0), ds) * (8.0 / v0) ** n
+        assert _table_cl(wing, _trim_alpha(wing, d, v0), d) == pytest.approx(target, abs=1e-6)
+        assert d_deg > scene_deg
+
+
+@pytest.mark.parametrize("v0", [4.0, 8.0])
+def test_depower_rule_is_the_scenes_up_to_the_papers_wind(v0):
+    from laddermill_gym.studies.mill.tail_schedule import tail_rule
+
+    sc = load_scene("laddermill_v2", dimension=2)
+    ini = _yaml("scenes", "laddermill_v2")["initial"]
+    for rule in ("scene", "depower"):
+        assert tail_rule(sc.initial, sc.assembly.wing(0), v0, rule) == pytest.approx(
+            (ini["elevator_up_deg"], ini["elevator_down_deg"]), rel=1e-12)
+    with pytest.raises(ValueError, match="'feather'"):
+        tail_rule(sc.initial, sc.assembly.wing(0), v0, "feather")
+
+
+def test_table_merges_runs_a_later_case_replacing_an_earlier_one():
+    """``--table A.json B.json``: rows in order, B's (V0, V_c) replacing A's, B's settings with both runs' speeds;
+    a row from before the tail rule was recorded gets its run's rule."""
+    base = {"scene": "laddermill_v2", "power_kW": 1.0}
+    a = {"config": {"speeds": [1.0, 2.0], "wind_speeds": [2.0], "tail": "scene"},
+         "rows": [base | {"v0_m_s": 8.0, "v_c_m_s": 2.0}, base | {"v0_m_s": 10.0, "v_c_m_s": 2.0}]}
+    b = {"config": {"speeds": [], "wind_speeds": [2.0, 3.0], "tail": "depower"},
+         "rows": [base | {"v0_m_s": 10.0, "v_c_m_s": 2.0, "tail_rule": "depower", "power_kW": 5.0}]}
+    cfg, rows = power_curve.merge_tables([a, b])
+    assert (cfg.tail, cfg.speeds, cfg.wind_speeds) == ("depower", (1.0, 2.0), (2.0, 3.0))
+    assert [(r["v0_m_s"], r["tail_rule"], r["power_kW"]) for r in rows] == [(8.0, "scene", 1.0), (10.0, "depower", 5.0)]

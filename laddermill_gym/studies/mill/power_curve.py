@@ -21,10 +21,12 @@ the last period against the cable's breaking load divided by the safety factor :
 run_to_periodic and ``fast_mill case`` step it (so a case is bit for bit that command's case); its tensions are not
 sampled.
 
-Tail settings, the stated rule (:func:`tail_rule`): every case flies the scene's own elevators (v2: ascending +1.3,
-descending +2.5 deg; v1: -8 / -0.5 deg), for which each design was chosen; a wing's trim alpha is set by its elevator,
-attachment and air speed (derivations/pitch_stability.py; the v2 wing's falls with air speed by design), not
-scheduled per case.
+Tail settings, the stated rule (``--tail-rule``, :func:`laddermill_gym.studies.mill.tail_schedule.tail_rule`):
+``scene`` (the default), every case flies the scene's own elevators (v2: ascending +1.3, descending +2.5 deg; v1: -8 /
+-0.5 deg), for which each design was chosen; ``depower``, the scene's up to the paper's V0 = 8 m/s and above it each
+leg's elevator set so that the wing's trim lift coefficient (at rest on the cable in the wind V0) is the scene
+elevator's at 8 m/s times (8 / V0)^n, n = 2 for the ascending wings (the paper's wind's load kept) and 1.75 for the
+descending ones.
 
 Writes ``power_curve.csv`` (one row per case), ``power_curve.json`` (settings, rows, best V_c per V0) and
 ``power_curve.png`` (power against V_c at the paper's wind; best power and V_c against V0).
@@ -41,6 +43,7 @@ import numpy as np
 
 from laddermill_gym.studies import parallel
 from laddermill_gym.studies.commands import Parser, UsageError, check_number
+from laddermill_gym.studies.mill.tail_schedule import RULES, tail_rule
 
 SCENES = ("laddermill_v2", "laddermill_v1")  # the first: the default (periodic over the paper's 1-5 m/s)
 SCENE = SCENES[0]
@@ -67,14 +70,10 @@ class Config:
     n_wings: int | None = None
     scene: str = SCENE
     ramp: str = RAMPS[0]
+    tail: str = RULES[0]
 
 
 QUICK = Config(speeds=(2.0,), winds=(8.0,), wind_speeds=(2.0,), max_time=70.0)
-
-
-def tail_rule(scene_initial) -> tuple[float, float]:
-    """(ascending, descending) elevator [deg] of a case: the scene's own settings for every V0 and V_c."""
-    return float(np.degrees(scene_initial.elevator_up)), float(np.degrees(scene_initial.elevator_down))
 
 
 def ramp_time(station, v_c: float, rule: str) -> float:
@@ -112,22 +111,26 @@ def hand_estimate_w(t_first_n: float, t_last_n: float, v_c: float) -> float:
 
 
 def run_case(v0: float, v_c: float, max_time: float, n_wings: int | None = None, scene: str = SCENE,
-             ramp: str = RAMPS[0]) -> dict:
+             ramp: str = RAMPS[0], tail: str = RULES[0]) -> dict:
     """One case in plane: the scene at wind V0 [m/s], from rest, its cable speed ramped to V_c [m/s] by the ramp
-    rule and held, run to its periodic motion (or a breakdown, or ``max_time`` [s] of search)."""
+    rule and held, its elevators by the tail rule, run to its periodic motion (or a breakdown, or ``max_time`` [s]
+    of search)."""
     from laddermill_gym import load_scene
     from laddermill_gym.ladder.periodic import run_to_periodic
     from laddermill_gym.sim.simulator import SimulationError
 
-    t_ramp = ramp_time(load_scene(scene, dimension=2).assembly.station, v_c, ramp)
-    sc = load_scene(scene, dimension=2, n_wings=n_wings,
-                    overrides={"wind": {"v0": float(v0)},
-                               "station": {"speed_times_s": [0.0, t_ramp], "speed_m_s": [0.0, float(v_c)]}})
-    up, down = tail_rule(sc.initial)
+    base = load_scene(scene, dimension=2)
+    t_ramp = ramp_time(base.assembly.station, v_c, ramp)
+    up, down = tail_rule(base.initial, base.assembly.wing(0), v0, tail)
+    overrides = {"wind": {"v0": float(v0)},
+                 "station": {"speed_times_s": [0.0, t_ramp], "speed_m_s": [0.0, float(v_c)]}}
+    if (up, down) != tail_rule(base.initial, base.assembly.wing(0), v0, "scene"):  # else the file's own (bit for bit)
+        overrides["initial"] = {"elevator_up_deg": up, "elevator_down_deg": down}
+    sc = load_scene(scene, dimension=2, n_wings=n_wings, overrides=overrides)
     breaking = float(np.min(sc.assembly.elements.breaking_load))
     limit = breaking / SAFETY_FACTOR
-    row = {"scene": scene, "v0_m_s": float(v0), "v_c_m_s": float(v_c), "ramp_s": t_ramp, "elevator_up_deg": up,
-           "elevator_down_deg": down, "t_limit_kN": limit / 1e3}
+    row = {"scene": scene, "tail_rule": tail, "v0_m_s": float(v0), "v_c_m_s": float(v_c), "ramp_s": t_ramp,
+           "elevator_up_deg": up, "elevator_down_deg": down, "t_limit_kN": limit / 1e3}
     sim = sc.simulator()
     row["t_rest_max_kN"] = float(np.max(sim.tensions())) / 1e3
     try:
@@ -151,10 +154,11 @@ def run_case(v0: float, v_c: float, max_time: float, n_wings: int | None = None,
 
 
 def best_per_wind(rows: list[dict]) -> list[dict]:
-    """Per V0: the periodic case within the tension limit with the largest power (None fields when none is)."""
+    """Per V0: the periodic case within the tension limit with the largest power, if positive (a mill that takes
+    power is no operating point); None fields when there is none."""
     out = []
     for v0 in sorted({r["v0_m_s"] for r in rows}):
-        ok = [r for r in rows if r["v0_m_s"] == v0 and r["periodic"] and r["within_limit"]]
+        ok = [r for r in rows if r["v0_m_s"] == v0 and r["periodic"] and r["within_limit"] and r["power_kW"] > 0.0]
         best = max(ok, key=lambda r: r["power_kW"]) if ok else None
         out.append({"v0_m_s": v0, "best_v_c_m_s": best and best["v_c_m_s"], "power_kW": best and best["power_kW"]})
     return out
@@ -166,7 +170,7 @@ def run(cfg: Config, workers: int = 0, progress: bool = True) -> tuple[list[dict
     cases = [(PAPER_V0, v) for v in cfg.speeds]
     cases += [(w, v) for w in cfg.winds for v in cfg.wind_speeds if (w, v) not in cases]
     tasks = [(run_case, dict(v0=w, v_c=v, max_time=cfg.max_time, n_wings=cfg.n_wings, scene=cfg.scene,
-                             ramp=cfg.ramp)) for w, v in cases]
+                             ramp=cfg.ramp, tail=cfg.tail)) for w, v in cases]
     rows = parallel.run_tasks(tasks, workers=workers, desc="power curve", unit="case", progress=progress)
     return rows, best_per_wind(rows)
 
@@ -220,7 +224,10 @@ def write(out: Path, cfg: Config, rows: list[dict], best: list[dict]) -> list[Pa
     meta = {"scene": cfg.scene, "safety_factor": SAFETY_FACTOR, "config": dataclasses.asdict(cfg),
             "ramp_rule": {"rate": "V_c reached at the scene's own acceleration (ramp_time)",
                           "scene": "the scene's ramp time for every V_c (ramp_time)"}[cfg.ramp],
-            "tail_rule": "the scene's elevators for every case (tail_rule)", "rows": rows, "best_per_wind": best}
+            "tail_rule": {"scene": "the scene's elevators for every case (tail_rule)",
+                          "depower": "above V0 8 m/s the elevators whose trim C_L is the scene's at 8 m/s times "
+                                     "(8 / V0)^2 ascending, (8 / V0)^1.75 descending (tail_rule)"}[cfg.tail],
+            "rows": rows, "best_per_wind": best}
     paths[1].write_text(json.dumps(meta, indent=1), encoding="utf-8")
     _plot(paths[2], cfg, rows, best)
     return paths
@@ -233,13 +240,13 @@ def _limit_cell(row: dict) -> str:
 
 def print_table(cfg: Config, rows: list[dict], best: list[dict]) -> None:
     """The rows, the breakdowns and overloads, and the best V_c per wind, as the docs quote them."""
-    print(f"{cfg.scene}, in plane, ramp rule '{cfg.ramp}', search {cfg.max_time:g} s; tension limit breaking load / "
-          f"{SAFETY_FACTOR} = {rows[0]['t_limit_kN']:.0f} kN")
+    print(f"{cfg.scene}, in plane, ramp rule '{cfg.ramp}', tail rule '{cfg.tail}', search {cfg.max_time:g} s; "
+          f"tension limit breaking load / {SAFETY_FACTOR} = {rows[0]['t_limit_kN']:.0f} kN")
     print("   V0   V_c  ramp [s]  elev up/down  periodic   t [s]     P [kW]  (T1-Tn)V_c [kW]  Betz [kW]  "
           "T_rest  T_max  limit  search peak [kN]")
     for r in rows:
-        print(f"{r['v0_m_s']:5.1f} {r['v_c_m_s']:5.2f} {r['ramp_s']:8.0f}  {r['elevator_up_deg']:5.1f}/"
-              f"{r['elevator_down_deg']:5.1f}  {str(r['periodic']):8s} {r['t_s']:7.1f} {r['power_kW']:9.1f} "
+        print(f"{r['v0_m_s']:5.1f} {r['v_c_m_s']:5.2f} {r['ramp_s']:8.0f}  {r['elevator_up_deg']:5.2f}/"
+              f"{r['elevator_down_deg']:5.2f}  {str(r['periodic']):8s} {r['t_s']:7.1f} {r['power_kW']:9.1f} "
               f"{r['hand_estimate_kW']:15.1f} {r['betz_kW']:10.0f}  {r['t_rest_max_kN']:6.1f} {r['t_max_kN']:6.1f}  "
               f"{_limit_cell(r):5s}  {r['t_peak_search_kN']:8.1f}")
     for r in rows:
@@ -254,7 +261,8 @@ def print_table(cfg: Config, rows: list[dict], best: list[dict]) -> None:
 
 def _config(args) -> Config:
     """The sweep's settings: ``--quick`` or the full one, with the options given replacing its fields."""
-    cfg = dataclasses.replace(QUICK if args.quick else Config(), scene=args.scene, ramp=args.ramp)
+    cfg = dataclasses.replace(QUICK if args.quick else Config(), scene=args.scene, ramp=args.ramp,
+                              tail=args.tail_rule)
     for opt, name in (("--speeds", "speeds"), ("--winds", "winds"), ("--wind-speeds", "wind_speeds")):
         values = getattr(args, name)
         if values is not None:
@@ -267,6 +275,21 @@ def _config(args) -> Config:
     return cfg
 
 
+def merge_tables(metas: list[dict]) -> tuple[Config, list[dict]]:
+    """The settings and rows of earlier runs' JSON (:func:`write`): rows in order, a later run's (V0, V_c) replacing
+    an earlier one's; the last run's settings with the cable speeds of all; a row from before the tail rule was
+    recorded gets its run's (``scene``)."""
+    cases: dict = {}
+    cfgs = []
+    for meta in metas:
+        cfg = Config(**{k: tuple(v) if isinstance(v, list) else v for k, v in meta["config"].items()})
+        cfgs.append(cfg)
+        for r in meta["rows"]:
+            cases[(r["v0_m_s"], r["v_c_m_s"])] = {"scene": r["scene"], "tail_rule": cfg.tail} | r
+    join = lambda name: tuple(sorted({v for c in cfgs for v in getattr(c, name)}))  # noqa: E731
+    return dataclasses.replace(cfgs[-1], speeds=join("speeds"), wind_speeds=join("wind_speeds")), list(cases.values())
+
+
 def main(argv=None) -> int:
     p = Parser(prog="laddermill power-curve", description=__doc__.splitlines()[0])
     p.add_argument("--out", default="results/power_curve", help="output folder (CSV, JSON, PNG)")
@@ -275,6 +298,9 @@ def main(argv=None) -> int:
     p.add_argument("--ramp", choices=RAMPS, default=RAMPS[0],
                    help="cable speed from rest: 'rate' at the scene's own acceleration (default; v2: 100 V_c s), "
                         "'scene' in the scene's ramp time whatever V_c")
+    p.add_argument("--tail-rule", choices=RULES, default=RULES[0],
+                   help="elevators per case: 'scene' the scene's for every case (default), 'depower' above V0 8 m/s "
+                        "the trim C_L of 8 m/s times (8 / V0)^2 ascending, (8 / V0)^1.75 descending")
     p.add_argument("--quick", action="store_true", help="one case, V_c = 2 m/s at the paper's wind, 70 s search")
     p.add_argument("--speeds", type=float, nargs="*", default=None, metavar="V_C",
                    help="cable speeds [m/s] at the paper's wind (default: the full sweep's; none: only the winds')")
@@ -283,8 +309,10 @@ def main(argv=None) -> int:
     p.add_argument("--wind-speeds", type=float, nargs="+", default=None, metavar="V_C",
                    help="cable speeds [m/s] tried per wind: the grid searched for the best V_c")
     p.add_argument("--max-time", type=float, default=None, help="periodic search per case after the ramp [s]")
-    p.add_argument("--table", metavar="JSON", default=None,
-                   help="print the table and write the files again from an earlier run's power_curve.json (no run)")
+    p.add_argument("--table", metavar="JSON", nargs="+", default=None,
+                   help="print the table and write the files again from earlier runs' power_curve.json (no run); "
+                        "several: their rows merged, a later file's case replacing an earlier one's, the settings "
+                        "of the last file, its cable speeds joined with the others'")
     parallel.add_arguments(p)
     args = p.parse_args(argv)
     parallel.check_arguments(args, p.prog)
@@ -293,9 +321,8 @@ def main(argv=None) -> int:
     except UsageError as err:
         p.error(str(err))
     if args.table is not None:  # the rows of an earlier run, printed and drawn again
-        meta = json.loads(Path(args.table).read_text(encoding="utf-8"))
-        cfg = Config(**{k: tuple(v) if isinstance(v, list) else v for k, v in meta["config"].items()})
-        rows, best = meta["rows"], best_per_wind(meta["rows"])
+        cfg, rows = merge_tables([json.loads(Path(f).read_text(encoding="utf-8")) for f in args.table])
+        best = best_per_wind(rows)
     else:
         rows, best = run(cfg, workers=args.workers)
     print_table(cfg, rows, best)
