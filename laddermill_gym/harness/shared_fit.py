@@ -22,9 +22,17 @@ import yaml
 
 from laddermill_gym.studies.commands import Parser
 
-__all__ = ["band_weights", "project_weights", "main"]
+__all__ = ["band_weights", "bryson_scales", "project_weights", "main"]
 
 _NLAT = 6  # lateral entries per slot (shared_policy.LATERAL_FIELDS)
+
+
+def bryson_scales(env_id: str) -> np.ndarray:
+    """(dy, vy, phi, psi, p, r) scales [m, m/s, rad, rad, rad/s, rad/s]: the env's LQR config's max_state."""
+    from laddermill_gym.control.factory import DEFAULT_LQR_CONFIGS
+    from laddermill_gym.control.lqr_config import load_lqr_config
+
+    return np.asarray(load_lqr_config(DEFAULT_LQR_CONFIGS[env_id]).max_state, dtype=float)
 
 
 def band_weights(K: np.ndarray, half: np.ndarray, scales: np.ndarray, k: int) -> np.ndarray:
@@ -99,7 +107,6 @@ def main(argv: list[str] | None = None) -> int:
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.shared_policy import SharedPolicyController
     from laddermill_gym.harness.evaluate import run_episodes
-    from laddermill_gym.harness.shared_train import bryson_scales
 
     p = Parser(prog="python -m laddermill_gym.harness.shared_fit", description=__doc__.split("\n\n")[0])
     p.add_argument("--env", default="laddermill_gym/LadderMill-v1", choices=["laddermill_gym/LadderMill-v1"])

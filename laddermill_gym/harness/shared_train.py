@@ -37,20 +37,13 @@ import yaml
 from tqdm import tqdm
 
 from laddermill_gym.harness.shared_config import SharedTrainConfig, load_shared_config
+from laddermill_gym.harness.shared_fit import band_weights, bryson_scales
 from laddermill_gym.studies.commands import Parser
 
-__all__ = ["train_shared", "main", "CURVE_FIELDS", "bryson_scales"]
+__all__ = ["train_shared", "main", "CURVE_FIELDS"]
 
 CURVE_FIELDS = ("phase", "step", "minutes", "held", "mean_length_s", "mean_power_kW", "max_lateral_m",
                 "mean_return")
-
-
-def bryson_scales(env_id: str) -> np.ndarray:
-    """(dy, vy, phi, psi, p, r) scales [m, m/s, rad, rad, rad/s, rad/s]: the env's LQR config's max_state."""
-    from laddermill_gym.control.factory import DEFAULT_LQR_CONFIGS
-    from laddermill_gym.control.lqr_config import load_lqr_config
-
-    return np.asarray(load_lqr_config(DEFAULT_LQR_CONFIGS[env_id]).max_state, dtype=float)
 
 
 def _policy_kwargs(cfg: SharedTrainConfig, view, trim, scales) -> dict:
@@ -162,7 +155,6 @@ def imitation(cfg: SharedTrainConfig, model, venv, teacher, log, pbar) -> None:
     band = None
     if hasattr(teacher, "K") and hasattr(teacher, "half"):
         from laddermill_gym.harness.gain_locality import banded
-        from laddermill_gym.harness.shared_fit import band_weights
 
         band = band_weights(banded(teacher.K, cfg.k), teacher.half, ext.scales.numpy(), cfg.k)
     obs = venv.reset()
@@ -304,8 +296,15 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("config", help="configs/agents/ppo_mill_v1.yaml or a shipped config's name")
     p.add_argument("--out", type=Path, help="run folder (default runs/<config name>_seed<seed>)")
     p.add_argument("--minutes", type=float, help="override ppo.time_limit_minutes")
+    p.add_argument("--seed", type=int, help="override the config's seed")
     args = p.parse_args(argv)
     cfg = load_shared_config(args.config)
+    if args.seed is not None:
+        if not 0 <= args.seed < 2 ** 31:
+            p.error(f"--seed = {args.seed}: must be in 0 .. 2**31 - 1")
+        import dataclasses
+
+        cfg = dataclasses.replace(cfg, seed=int(args.seed))
     if args.minutes is not None:
         if not args.minutes >= 0:
             p.error(f"--minutes = {args.minutes}: must be >= 0")
