@@ -10,7 +10,8 @@
   (the LQR designs are the rigid wings');
 * a path to a training run folder or model file: a Stable-Baselines3 policy (``rl`` extra), refused when it was
   trained on another env or its observation or action size is not the env's;
-* ``ppo_tethered_wing``, ``ppo_rotorcraft``: the policies shipped with the package (``control/shipped_policies.py``).
+* ``ppo_tethered_wing``, ``ppo_rotorcraft``, ``ppo_mill``: the policies shipped with the package
+  (``control/shipped_policies.py``).
 """
 
 from __future__ import annotations

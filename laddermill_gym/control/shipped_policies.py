@@ -4,7 +4,9 @@ them without training: ``make_controller("ppo_tethered_wing", "laddermill_gym/Te
 
 Each folder is a trimmed training run folder (``laddermill train <config> --seed <seed>``): ``model.zip`` (the
 SB3 model), ``vecnormalize.pkl`` (its observation statistics), ``config.yaml`` (the training config, which names
-the env), ``algorithm.txt`` and ``README.md`` (the command and seed that reproduce it, and its scores).
+the env), ``algorithm.txt`` and ``README.md`` (the command and seed that reproduce it, and its scores). A shared
+per-wing policy of the mill (``ppo_mill``: ``laddermill train ppo_mill_v1``) has ``shared_policy.yaml`` instead of
+``vecnormalize.pkl`` (its actor scales its inputs by fixed Bryson scales) and its config is ``ppo_mill_v1.yaml``.
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ POLICY_DIR: Path = Path(__file__).resolve().parent.parent / "policies"
 SHIPPED_POLICIES: dict[str, str] = {
     "ppo_tethered_wing": "laddermill_gym/TetheredWing-v0",
     "ppo_rotorcraft": "laddermill_gym/Rotorcraft-v0",
+    "ppo_mill": "laddermill_gym/LadderMill-v1",  # a shared per-wing policy (shared_policy.yaml, no vecnormalize.pkl)
 }
 
 
