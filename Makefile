@@ -19,9 +19,10 @@ docs:
 	NO_MKDOCS_2_WARNING=1 mkdocs build --strict
 
 # re-run the figures README and docs/controllers.md quote (main job, env sizes, TetheredWing-v0's open-loop and LQR
-# rows; about 5-8 minutes) into results/readme_figures.json and fail naming any the text no longer matches
+# rows, the shipped policies' gusts-v1 scorecards; about 10-15 minutes) into results/readme_figures.json and fail
+# naming any the text no longer matches
 readme-figures:
-	python -m docsite.readme_figures --out results/readme_figures.json
+	python -m docsite.readme_figures --policies --out results/readme_figures.json
 
 gust-bench:
 	laddermill gust-bench --suite gusts-v1 --controllers open_loop lqr --out results/gust_bench/gusts-v1

@@ -7,12 +7,15 @@
 * every env id's action and observation sizes (``gymnasium.make(id)``; LadderMill-v0 finds its periodic operating
   point first, 2-3 minutes);
 * TetheredWing-v0's open-loop and LQR rows of ``laddermill_gym/docs/controllers.md`` (``laddermill evaluate
-  --controllers open_loop lqr --episodes 1``).
+  --controllers open_loop lqr --episodes 1``);
+* with ``--policies`` (about 3 minutes more with a warm numba cache): the shipped policies' gusts-v1 scorecards
+  beside the LQR's, the sentence README quotes (``laddermill gust-bench --suite gusts-v1 --env ID --controllers lqr
+  ppo_<name>``; a scenario counts when every seed survives).
 
 and then checks that README.md and the controllers page print those numbers (exit 1 naming each that differs).
 The slow test ``tests/test_docs.py::test_readme_figures_are_what_their_commands_print`` does the same. Not covered:
 machine-dependent timings (env steps/s, real-time factors: the benchmark pages say where and when they were
-measured) and the studies that take longer than a few minutes (Meijaard's, the trained policies' rows).
+measured) and the studies that take longer than a few minutes (Meijaard's, the power curve).
 """
 
 from __future__ import annotations
@@ -76,8 +79,25 @@ def tethered_wing_rows() -> dict:
     return {"tethered_wing": rows}
 
 
-def measure() -> dict:
-    return {**main_job(), **env_sizes(), **tethered_wing_rows()}
+#: The shipped policies README scores on gusts-v1, each with its env id, in the order README quotes them.
+SHIPPED = (("ppo_rotorcraft", "laddermill_gym/Rotorcraft-v0"), ("ppo_tethered_wing", "laddermill_gym/TetheredWing-v0"))
+
+
+def policy_scorecards() -> dict:
+    """{policy: [its scenarios survived, the LQR's, the suite's scenario count]} on gusts-v1 (every seed survives)."""
+    from laddermill_gym.studies.gusts.gust_bench import run_suite, summarise
+    from laddermill_gym.studies.gusts.gust_suite import load_suite
+
+    suite, cards = load_suite("gusts-v1"), {}
+    for name, env_id in SHIPPED:
+        summary = summarise(run_suite(suite, [env_id], ["lqr", name], progress=False))
+        won = {c: sum(s["survived"] == 1.0 for s in summary if s["controller"] == c) for c in ("lqr", name)}
+        cards[name] = [won[name], won["lqr"], sum(s["controller"] == name for s in summary)]
+    return {"policy_scorecards": cards}
+
+
+def measure(policies: bool = False) -> dict:
+    return {**main_job(), **env_sizes(), **tethered_wing_rows(), **(policy_scorecards() if policies else {})}
 
 
 def _flat(text: str) -> str:
@@ -124,19 +144,30 @@ def differences(figures: dict) -> list[str]:
         if not ok:
             bad.append(f"controllers.md, TetheredWing-v0 {shown}: measured {r['return']}, {flew}, "
                        f"{r['max_lateral_m']:.4g} m, {r['power_W']} W; quoted {m.group(0)}")
-    return bad
+    return bad + policy_differences(figures.get("policy_scorecards", {}), readme)
+
+
+def policy_differences(cards: dict, readme: str) -> list[str]:
+    """README's sentence on the shipped policies against ``cards`` ({policy: [won, the LQR's, scenarios]} in
+    :data:`SHIPPED`'s order); [] when it agrees or nothing was measured."""
+    quoted = " and ".join(f"{w} / {n} (the LQR {q} / {n})" for w, q, n in cards.values())
+    if cards and f"scenarios {quoted}" not in _flat(readme):
+        return [f"README: the shipped policies score {cards} on gusts-v1 (policy, LQR, scenarios); README lacks "
+                f"'scenarios {quoted}'"]
+    return []
 
 
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(prog="python -m docsite.readme_figures", description=__doc__.split("\n\n")[0])
     p.add_argument("--out", default="results/readme_figures.json", help="the JSON of the measured figures")
     p.add_argument("--check-only", action="store_true", help="compare the text with an existing --out JSON")
+    p.add_argument("--policies", action="store_true", help="also the shipped policies' gusts-v1 scorecards (~10 min)")
     args = p.parse_args(argv)
     out = Path(args.out)
     if args.check_only:
         figures = json.loads(out.read_text())
     else:
-        figures = measure()
+        figures = measure(policies=args.policies)
         out.parent.mkdir(parents=True, exist_ok=True)
         out.write_text(json.dumps(figures, indent=1))
         print(f"wrote {out}")

@@ -148,11 +148,25 @@ def test_site_builds_strict_with_its_tutorials(tmp_path):
 
 @pytest.mark.slow
 def test_readme_figures_are_what_their_commands_print(tmp_path):
-    """``make readme-figures``: the main job, every env's sizes and TetheredWing-v0's open-loop and LQR rows
-    re-run (several minutes: LadderMill-v0 finds its operating point) and compared with README and controllers.md."""
+    """``make readme-figures --policies``: the main job, every env's sizes, TetheredWing-v0's open-loop and LQR rows
+    and the shipped policies' gusts-v1 scorecards re-run (10-15 minutes: LadderMill-v0 finds its operating point,
+    two gust suites, 3 minutes) and compared with README and controllers.md."""
     sys.path.insert(0, str(ROOT))
     from docsite.readme_figures import differences, measure
 
-    figures = measure()
+    figures = measure(policies=True)
     (tmp_path / "readme_figures.json").write_text(yaml.safe_dump(figures))
     assert not differences(figures), differences(figures)
+
+
+def test_the_policy_sentence_check_names_a_changed_scorecard():
+    """The check of README's shipped-policy sentence: the quoted scorecards pass, any other count is named."""
+    sys.path.insert(0, str(ROOT))
+    from docsite.readme_figures import policy_differences
+
+    readme = "they survive gusts-v1's\nscenarios 8 / 9 (the LQR 8 / 9) and 9 / 12 (the LQR 11 / 12) (more)"
+    good = {"ppo_rotorcraft": [8, 8, 9], "ppo_tethered_wing": [9, 11, 12]}
+    assert policy_differences(good, readme) == []
+    assert policy_differences({}, readme) == []
+    bad = policy_differences({**good, "ppo_tethered_wing": [10, 11, 12]}, readme)
+    assert len(bad) == 1 and "10 / 12 (the LQR 11 / 12)" in bad[0]
