@@ -204,8 +204,8 @@ def _plot(path: Path, cfg: Config, rows: list[dict], best: list[dict]) -> None:
         ax2.plot(none, [0.0] * len(none), "v", color="C3", label="no periodic case within the limit")
     ax2.legend(fontsize=8)
     ax2.set(xlabel="wind speed V0 at 50 m [m/s]", ylabel="best mean power [kW]",
-            title=f"best V_c per wind (V_c grid {', '.join(f'{v:g}' for v in cfg.wind_speeds)} m/s; at "
-                  f"{PAPER_V0:g} m/s the left panel's)")
+            title=f"best V_c per wind (V_c {min(cfg.wind_speeds):g}-{max(cfg.wind_speeds):g} m/s), tail rule "
+                  f"'{cfg.tail}'")
     ax3 = ax2.twinx()
     ax3.plot([b["v0_m_s"] for b in okb], [b["best_v_c_m_s"] for b in okb], "s--", color="C1")
     ax3.set_ylabel("best V_c [m/s]", color="C1")
