@@ -9,8 +9,8 @@
 * TetheredWing-v0's open-loop and LQR rows of ``laddermill_gym/docs/controllers.md`` (``laddermill evaluate
   --controllers open_loop lqr --episodes 1``);
 * with ``--policies`` (about 3 minutes more with a warm numba cache): the shipped policies' gusts-v1 scorecards
-  beside the LQR's, the sentence README quotes (``laddermill gust-bench --suite gusts-v1 --env ID --controllers lqr
-  ppo_<name>``; a scenario counts when every seed survives).
+  beside the LQR's, the rows of README's shipped-policy table (``laddermill gust-bench --suite gusts-v1 --env ID
+  --controllers lqr ppo_<name>``; a scenario counts when every seed survives).
 
 and then checks that README.md and the controllers page print those numbers (exit 1 naming each that differs).
 The slow test ``tests/test_docs.py::test_readme_figures_are_what_their_commands_print`` does the same. Not covered:
@@ -144,17 +144,21 @@ def differences(figures: dict) -> list[str]:
         if not ok:
             bad.append(f"controllers.md, TetheredWing-v0 {shown}: measured {r['return']}, {flew}, "
                        f"{r['max_lateral_m']:.4g} m, {r['power_W']} W; quoted {m.group(0)}")
-    return bad + policy_differences(figures.get("policy_scorecards", {}), readme)
+    return bad + policy_differences(figures.get("policy_scorecards", {}), README.read_text())
 
 
 def policy_differences(cards: dict, readme: str) -> list[str]:
-    """README's sentence on the shipped policies against ``cards`` ({policy: [won, the LQR's, scenarios]} in
-    :data:`SHIPPED`'s order); [] when it agrees or nothing was measured."""
-    quoted = " and ".join(f"{w} / {n} (the LQR {q} / {n})" for w, q, n in cards.values())
-    if cards and f"scenarios {quoted}" not in _flat(readme):
-        return [f"README: the shipped policies score {cards} on gusts-v1 (policy, LQR, scenarios); README lacks "
-                f"'scenarios {quoted}'"]
-    return []
+    """README's table of the shipped policies against ``cards`` ({policy: [won, the LQR's, scenarios]}): each row
+    must read "survive gusts-v1's scenarios won / n | LQR / n"; [] when every row agrees or nothing was measured."""
+    bad = []
+    for name, (won, lqr, n) in cards.items():
+        row = rf"^\| `{re.escape(name)}` \|.*\| survive gusts-v1's scenarios (\d+) / (\d+) \| (\d+) / (\d+) \|$"
+        m = re.search(row, readme, re.M)
+        quoted = m and [int(g) for g in m.groups()]
+        if quoted != [won, n, lqr, n]:
+            bad.append(f"README's shipped-policy table: {name} survives {won} / {n} of gusts-v1 (the LQR {lqr} / {n}); "
+                       f"the table's row says {m.group(0) if m else 'nothing'}")
+    return bad
 
 
 def main(argv: list[str] | None = None) -> int:

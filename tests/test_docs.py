@@ -159,14 +159,16 @@ def test_readme_figures_are_what_their_commands_print(tmp_path):
     assert not differences(figures), differences(figures)
 
 
-def test_the_policy_sentence_check_names_a_changed_scorecard():
-    """The check of README's shipped-policy sentence: the quoted scorecards pass, any other count is named."""
+def test_the_policy_table_check_names_a_changed_scorecard():
+    """The check of README's shipped-policy table: the quoted scorecards pass, any other count is named."""
     sys.path.insert(0, str(ROOT))
     from docsite.readme_figures import policy_differences
 
-    readme = "they survive gusts-v1's\nscenarios 8 / 9 (the LQR 8 / 9) and 9 / 12 (the LQR 11 / 12) (more)"
-    good = {"ppo_rotorcraft": [8, 8, 9], "ppo_tethered_wing": [9, 11, 12]}
+    readme = ("| `ppo_tethered_wing` | TetheredWing-v0 | PPO | survive gusts-v1's scenarios 10 / 12 | 11 / 12 |\n"
+              "| `ppo_rotorcraft` | Rotorcraft-v0 | PPO | survive gusts-v1's scenarios 8 / 9 | 8 / 9 |\n")
+    good = {"ppo_rotorcraft": [8, 8, 9], "ppo_tethered_wing": [10, 11, 12]}
     assert policy_differences(good, readme) == []
     assert policy_differences({}, readme) == []
-    bad = policy_differences({**good, "ppo_tethered_wing": [10, 11, 12]}, readme)
-    assert len(bad) == 1 and "10 / 12 (the LQR 11 / 12)" in bad[0]
+    bad = policy_differences({**good, "ppo_tethered_wing": [10, 12, 12]}, readme)
+    assert len(bad) == 1 and "ppo_tethered_wing survives 10 / 12 of gusts-v1 (the LQR 12 / 12)" in bad[0]
+    assert len(policy_differences({"ppo_chain": [1, 1, 1]}, readme)) == 1
