@@ -158,6 +158,9 @@ def test_depower_rule_is_the_scenes_up_to_the_papers_wind(v0):
     for rule in ("scene", "depower"):
         assert tail_rule(sc.initial, sc.assembly.wing(0), v0, rule) == pytest.approx(
             (ini["elevator_up_deg"], ini["elevator_down_deg"]), rel=1e-12)
+    # bit for bit: the same floats, so run_case loads the scene file unchanged under either rule (the default depower)
+    assert tail_rule(sc.initial, sc.assembly.wing(0), v0, "depower") == tail_rule(
+        sc.initial, sc.assembly.wing(0), v0, "scene")
     with pytest.raises(ValueError, match="'feather'"):
         tail_rule(sc.initial, sc.assembly.wing(0), v0, "feather")
 
@@ -173,3 +176,79 @@ def test_table_merges_runs_a_later_case_replacing_an_earlier_one():
     cfg, rows = power_curve.merge_tables([a, b])
     assert (cfg.tail, cfg.speeds, cfg.wind_speeds) == ("depower", (1.0, 2.0), (2.0, 3.0))
     assert [(r["v0_m_s"], r["tail_rule"], r["power_kW"]) for r in rows] == [(8.0, "scene", 1.0), (10.0, "depower", 5.0)]
+
+
+# The adaptive V_c search per wind (studies/mill/vc_search.py). Oracle: the rule as stated in docs/power_curve.md
+# (grid 2, 3, 5; up through 6-10 while the fastest operates; 4 where 3 is best and 5 fails; 1, 0.5 where nothing
+# operates or the best is the lowest tried), walked by hand on synthetic mills that operate on a given set of V_c.
+
+def _synthetic(operates: set[float]):
+    """An evaluator: a row per V_c, an operating point (power V_c kW) when V_c is in ``operates``; records the
+    order of the calls."""
+    calls = []
+
+    def evaluate(v_c):
+        calls.append(v_c)
+        return {"v_c_m_s": v_c, "periodic": v_c in operates, "within_limit": True, "power_kW": v_c}
+
+    return evaluate, calls
+
+
+@pytest.mark.parametrize("operates, tried, best", [
+    ({2.0, 3.0, 5.0, 6.0, 7.0, 8.0}, [2, 3, 5, 6, 7, 8, 9], 8),  # the 14 m/s mill: climbs, stops at 9
+    ({2.0, 3.0, 5.0}, [2, 3, 5, 6], 5),  # 10 m/s: 6 fails, nothing else
+    ({2.0, 3.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0}, [2, 3, 5, 6, 7, 8, 9, 10], 10),  # the climb's end
+    ({2.0, 3.0}, [2, 3, 5, 4], 3),  # 6 m/s: 3 best, 5 fails -> 4
+    ({2.0, 3.0, 4.0}, [2, 3, 5, 4], 4),
+    (set(), [2, 3, 5, 1, 0.5], None),  # 4 m/s: nothing operates -> 1, 0.5
+    ({2.0, 1.0, 0.5}, [2, 3, 5, 1, 0.5], 2),  # best at the lowest tried -> 1, 0.5
+    ({3.0}, [2, 3, 5, 4], 3),
+])
+def test_adaptive_search_walks_the_stated_rule(operates, tried, best):
+    from laddermill_gym.studies.mill import vc_search
+
+    evaluate, calls = _synthetic(operates)
+    rows = vc_search.search(evaluate)
+    assert calls == tried and [r["v_c_m_s"] for r in rows] == tried
+    b = vc_search.best(rows)
+    assert (b and b["v_c_m_s"]) == best
+
+
+def _replay_file(tmp_path, rows) -> str:
+    """An earlier run's power_curve.json holding ``rows`` (V0, V_c, periodic, elevators [deg]), the default
+    settings of the run."""
+    cfg = {"speeds": [2.0], "winds": [6.0], "wind_speeds": None, "max_time": 1500.0, "n_wings": None,
+           "scene": "laddermill_v2", "ramp": "rate", "tail": "depower"}
+    full = [{"scene": "laddermill_v2", "tail_rule": "scene", "v0_m_s": v0, "v_c_m_s": v, "ramp_s": 100.0 * v,
+             "elevator_up_deg": up, "elevator_down_deg": down, "t_limit_kN": 210.0, "t_rest_max_kN": 99.0,
+             "periodic": ok, "t_s": 900.0, "power_kW": 10.0 * v, "hand_estimate_kW": 10.0 * v, "h_low_m": 1.0,
+             "h_high_m": 3000.0, "betz_kW": 1e4, "t_first_kN": 100.0, "t_last_kN": 90.0, "t_max_kN": 100.0,
+             "within_limit": True, "t_peak_search_kN": 101.0, "breakdown": "", "overload": ""}
+            for v0, v, ok, up, down in rows]
+    path = tmp_path / "earlier.json"
+    path.write_text(json.dumps({"config": cfg, "rows": full}), encoding="utf-8")
+    return str(path)
+
+
+def test_replay_walks_earlier_rows_and_refuses_a_missing_case(tmp_path, capsys):
+    """``--replay``: the default run's walk over earlier rows (the scene's elevators at 6 and 8 m/s, the depower
+    rule's there bit for bit); 6 m/s operating at 2, 3 needs 2, 3, 5, 4 (stated rule): without V_c 4 it fails naming
+    V0 6, V_c 4; with it, the table and best as a run would print them; a row at 10 m/s with the scene's elevators
+    is not the depower rule's case and is refused."""
+    sc = load_scene("laddermill_v2", dimension=2)
+    up, down = (math.degrees(float(e)) for e in (sc.initial.elevator_up, sc.initial.elevator_down))
+    rows = [(8.0, 2.0, True, up, down), (6.0, 2.0, True, up, down), (6.0, 3.0, True, up, down),
+            (6.0, 5.0, False, up, down)]
+    argv = ["--speeds", "2", "--winds", "6", "--out", str(tmp_path / "out"), "--replay"]
+    assert power_curve.main(argv + [_replay_file(tmp_path, rows)]) == 1
+    assert "V0 6 m/s, V_c 4 m/s: the search needs this case" in capsys.readouterr().err
+    assert power_curve.main(argv + [_replay_file(tmp_path, rows + [(6.0, 4.0, False, up, down)])]) == 0
+    out = capsys.readouterr().out
+    assert "V0 = 6.0 m/s: best V_c 3.0 m/s, 30.0 kW" in out and "V0 = 8.0 m/s: best V_c 2.0 m/s, 20.0 kW" in out
+    meta = json.loads((tmp_path / "out" / "power_curve.json").read_text(encoding="utf-8"))
+    assert [(r["v0_m_s"], r["v_c_m_s"]) for r in meta["rows"]] == [(8.0, 2.0), (6.0, 2.0), (6.0, 3.0), (6.0, 5.0),
+                                                                    (6.0, 4.0)]
+    ten = [(10.0, v, True, up, down) for v in (2.0, 3.0, 5.0, 6.0)]
+    argv[3] = "10"
+    assert power_curve.main(argv + [_replay_file(tmp_path, rows + ten)]) == 1
+    assert "V0 10 m/s, V_c 2 m/s" in capsys.readouterr().err

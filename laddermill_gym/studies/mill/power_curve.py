@@ -37,12 +37,14 @@ from __future__ import annotations
 import csv
 import dataclasses
 import json
+import sys
 from pathlib import Path
 
 import numpy as np
 
 from laddermill_gym.studies import parallel
 from laddermill_gym.studies.commands import Parser, UsageError, check_number
+from laddermill_gym.studies.mill import vc_search
 from laddermill_gym.studies.mill.tail_schedule import RULES, tail_rule
 
 SCENES = ("laddermill_v2", "laddermill_v1")  # the first: the default (periodic over the paper's 1-5 m/s)
@@ -57,20 +59,20 @@ BETZ = 16.0 / 27.0  # [-] Betz's limit on the power an actuator disc takes from 
 
 @dataclasses.dataclass(frozen=True)
 class Config:
-    """speeds [m/s]: V_c at the paper's wind; winds [m/s]: V0 of the second sweep; wind_speeds [m/s]: the V_c
-    tried per wind (the search for the best V_c: this grid; at the paper's wind the grid is ``speeds``); max_time
-    [s]: periodic search per case after the ramp; n_wings: None for the scene's 101; scene: one of SCENES; ramp: one
-    of RAMPS. The default wind grid is sized to one core in about an hour on a loaded 2-core machine (a case takes
-    1-2 min of CPU): the paper's 2 m/s and 5 m/s, v2's fastest periodic speed at the paper's wind."""
+    """speeds [m/s]: V_c at the paper's wind (every one run); winds [m/s]: V0 of the second sweep; wind_speeds
+    [m/s]: None (the default) for the adaptive search per wind (:mod:`vc_search`: 2, 3, 5 m/s, up through 6-10 while
+    the fastest operates, 4 between, 1 and 0.5 below), or a fixed grid of V_c tried per wind; max_time [s]: periodic
+    search per case after the ramp; n_wings: None for the scene's 101; scene: one of SCENES; ramp: one of RAMPS;
+    tail: one of RULES (default ``depower``: the scene's elevators up to 8 m/s, bit for bit)."""
 
     speeds: tuple[float, ...] = (0.5, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0)
     winds: tuple[float, ...] = (4.0, 6.0, 8.0, 10.0, 12.0, 14.0)
-    wind_speeds: tuple[float, ...] = (2.0, 5.0)
+    wind_speeds: tuple[float, ...] | None = None
     max_time: float = 1500.0
     n_wings: int | None = None
     scene: str = SCENE
     ramp: str = RAMPS[0]
-    tail: str = RULES[0]
+    tail: str = "depower"
 
 
 QUICK = Config(speeds=(2.0,), winds=(8.0,), wind_speeds=(2.0,), max_time=70.0)
@@ -155,23 +157,61 @@ def run_case(v0: float, v_c: float, max_time: float, n_wings: int | None = None,
 
 def best_per_wind(rows: list[dict]) -> list[dict]:
     """Per V0: the periodic case within the tension limit with the largest power, if positive (a mill that takes
-    power is no operating point); None fields when there is none."""
+    power is no operating point: :func:`vc_search.best`); None fields when there is none."""
     out = []
     for v0 in sorted({r["v0_m_s"] for r in rows}):
-        ok = [r for r in rows if r["v0_m_s"] == v0 and r["periodic"] and r["within_limit"] and r["power_kW"] > 0.0]
-        best = max(ok, key=lambda r: r["power_kW"]) if ok else None
+        best = vc_search.best([r for r in rows if r["v0_m_s"] == v0])
         out.append({"v0_m_s": v0, "best_v_c_m_s": best and best["v_c_m_s"], "power_kW": best and best["power_kW"]})
     return out
 
 
-def run(cfg: Config, workers: int = 0, progress: bool = True) -> tuple[list[dict], list[dict]]:
-    """Both sweeps; returns (rows, best per wind over every row: the paper's wind included). The paper's wind's V_c
-    are shared by the two sweeps."""
+def tasks(cfg: Config, case=run_case) -> list[tuple]:
+    """The sweep as tasks (fn, kwargs): one case per V_c at the paper's wind; per other wind the adaptive search
+    (one task, its cases in sequence: :func:`vc_search.search_case`) or, with a fixed ``wind_speeds``, one case per
+    V_c. ``case``: run_case, or a :class:`vc_search.Lookup` (``--replay``)."""
+    settings = dict(max_time=cfg.max_time, n_wings=cfg.n_wings, scene=cfg.scene, ramp=cfg.ramp, tail=cfg.tail)
     cases = [(PAPER_V0, v) for v in cfg.speeds]
-    cases += [(w, v) for w in cfg.winds for v in cfg.wind_speeds if (w, v) not in cases]
-    tasks = [(run_case, dict(v0=w, v_c=v, max_time=cfg.max_time, n_wings=cfg.n_wings, scene=cfg.scene,
-                             ramp=cfg.ramp, tail=cfg.tail)) for w, v in cases]
-    rows = parallel.run_tasks(tasks, workers=workers, desc="power curve", unit="case", progress=progress)
+    out = [(case, dict(v0=w, v_c=v, **settings)) for w, v in cases]
+    if cfg.wind_speeds is None:
+        return out + [(vc_search.search_case, dict(v0=w, case=case, **settings)) for w in cfg.winds if w != PAPER_V0]
+    return out + [(case, dict(v0=w, v_c=v, **settings)) for w in cfg.winds for v in cfg.wind_speeds
+                  if (w, v) not in cases]
+
+
+def _flat(results: list) -> list[dict]:
+    """The tasks' results as rows: a search's list of rows in its order."""
+    return [r for res in results for r in (res if isinstance(res, list) else [res])]
+
+
+def run(cfg: Config, workers: int = 0, progress: bool = True) -> tuple[list[dict], list[dict]]:
+    """Both sweeps, winds in parallel (``workers``), the cases of one wind's search in sequence; returns (rows, best
+    per wind over every row: the paper's wind included)."""
+    rows = _flat(parallel.run_tasks(tasks(cfg), workers=workers, desc="power curve", unit="task", progress=progress))
+    return rows, best_per_wind(rows)
+
+
+def replay(cfg: Config, metas: list[dict], names: list[str]) -> tuple[list[dict], list[dict]]:
+    """The run ``cfg`` walked over earlier runs' rows (:func:`write`'s JSON, ``names`` their files), no case run: a
+    row stands for a case when its file's scene, ramp, max_time and n_wings and its elevators are the run's (a later
+    file's replacing an earlier one's); raises :class:`vc_search.MissingCase` naming a case the walk needs that none
+    holds. Returns (rows, best per wind) as :func:`run` would."""
+    from laddermill_gym import load_scene
+
+    base = load_scene(cfg.scene, dimension=2)
+    elevators = {}
+    held: dict = {}
+    for meta in metas:
+        c = meta["config"]
+        if (c["scene"], c["ramp"], c["max_time"], c["n_wings"]) != (cfg.scene, cfg.ramp, cfg.max_time, cfg.n_wings):
+            continue
+        for r in meta["rows"]:
+            v0 = r["v0_m_s"]
+            if v0 not in elevators:
+                elevators[v0] = tail_rule(base.initial, base.assembly.wing(0), v0, cfg.tail)
+            if (r["elevator_up_deg"], r["elevator_down_deg"]) == elevators[v0]:
+                held[(v0, r["v_c_m_s"])] = r
+    lookup = vc_search.Lookup(held, " ".join(names))
+    rows = _flat([fn(**kw) for fn, kw in tasks(cfg, lookup)])
     return rows, best_per_wind(rows)
 
 
@@ -204,13 +244,19 @@ def _plot(path: Path, cfg: Config, rows: list[dict], best: list[dict]) -> None:
         ax2.plot(none, [0.0] * len(none), "v", color="C3", label="no periodic case within the limit")
     ax2.legend(fontsize=8)
     ax2.set(xlabel="wind speed V0 at 50 m [m/s]", ylabel="best mean power [kW]",
-            title=f"best V_c per wind (V_c {min(cfg.wind_speeds):g}-{max(cfg.wind_speeds):g} m/s), tail rule "
-                  f"'{cfg.tail}'")
+            title=f"best V_c per wind ({_grid_text(cfg)}), tail rule '{cfg.tail}'")
     ax3 = ax2.twinx()
     ax3.plot([b["v0_m_s"] for b in okb], [b["best_v_c_m_s"] for b in okb], "s--", color="C1")
     ax3.set_ylabel("best V_c [m/s]", color="C1")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
+
+
+def _grid_text(cfg: Config) -> str:
+    """The search per wind in words: the adaptive rule or the fixed grid's range."""
+    if cfg.wind_speeds is None:
+        return "adaptive V_c search"
+    return f"V_c {min(cfg.wind_speeds):g}-{max(cfg.wind_speeds):g} m/s"
 
 
 def write(out: Path, cfg: Config, rows: list[dict], best: list[dict]) -> list[Path]:
@@ -282,11 +328,12 @@ def merge_tables(metas: list[dict]) -> tuple[Config, list[dict]]:
     cases: dict = {}
     cfgs = []
     for meta in metas:
-        cfg = Config(**{k: tuple(v) if isinstance(v, list) else v for k, v in meta["config"].items()})
+        cfg = Config(**({"tail": "scene"} | {k: tuple(v) if isinstance(v, list) else v
+                                             for k, v in meta["config"].items()}))
         cfgs.append(cfg)
         for r in meta["rows"]:
             cases[(r["v0_m_s"], r["v_c_m_s"])] = {"scene": r["scene"], "tail_rule": cfg.tail} | r
-    join = lambda name: tuple(sorted({v for c in cfgs for v in getattr(c, name)}))  # noqa: E731
+    join = lambda name: tuple(sorted({v for c in cfgs for v in getattr(c, name) or ()}))  # noqa: E731
     return dataclasses.replace(cfgs[-1], speeds=join("speeds"), wind_speeds=join("wind_speeds")), list(cases.values())
 
 
@@ -298,21 +345,25 @@ def main(argv=None) -> int:
     p.add_argument("--ramp", choices=RAMPS, default=RAMPS[0],
                    help="cable speed from rest: 'rate' at the scene's own acceleration (default; v2: 100 V_c s), "
                         "'scene' in the scene's ramp time whatever V_c")
-    p.add_argument("--tail-rule", choices=RULES, default=RULES[0],
-                   help="elevators per case: 'scene' the scene's for every case (default), 'depower' above V0 8 m/s "
-                        "the trim C_L of 8 m/s times (8 / V0)^2 ascending, (8 / V0)^1.75 descending")
+    p.add_argument("--tail-rule", choices=RULES, default=Config.tail,
+                   help="elevators per case: 'depower' (default) the scene's up to V0 8 m/s, above it the trim C_L "
+                        "of 8 m/s times (8 / V0)^2 ascending, (8 / V0)^1.75 descending; 'scene' the scene's always")
     p.add_argument("--quick", action="store_true", help="one case, V_c = 2 m/s at the paper's wind, 70 s search")
     p.add_argument("--speeds", type=float, nargs="*", default=None, metavar="V_C",
                    help="cable speeds [m/s] at the paper's wind (default: the full sweep's; none: only the winds')")
     p.add_argument("--winds", type=float, nargs="*", default=None, metavar="V0",
                    help="winds V0 [m/s] of the sweep (none: the paper's wind only)")
     p.add_argument("--wind-speeds", type=float, nargs="+", default=None, metavar="V_C",
-                   help="cable speeds [m/s] tried per wind: the grid searched for the best V_c")
+                   help="cable speeds [m/s] tried per wind, a fixed grid (default: the adaptive search of "
+                        "studies/mill/vc_search.py: 2, 3, 5; up through 6-10 while the fastest operates; 4; 1, 0.5)")
     p.add_argument("--max-time", type=float, default=None, help="periodic search per case after the ramp [s]")
     p.add_argument("--table", metavar="JSON", nargs="+", default=None,
                    help="print the table and write the files again from earlier runs' power_curve.json (no run); "
                         "several: their rows merged, a later file's case replacing an earlier one's, the settings "
                         "of the last file, its cable speeds joined with the others'")
+    p.add_argument("--replay", metavar="JSON", nargs="+", default=None,
+                   help="walk this command's run over earlier runs' power_curve.json rows (no case run): fails "
+                        "naming a case the run needs that they do not hold; prints and writes as the run would")
     parallel.add_arguments(p)
     args = p.parse_args(argv)
     parallel.check_arguments(args, p.prog)
@@ -323,6 +374,13 @@ def main(argv=None) -> int:
     if args.table is not None:  # the rows of an earlier run, printed and drawn again
         cfg, rows = merge_tables([json.loads(Path(f).read_text(encoding="utf-8")) for f in args.table])
         best = best_per_wind(rows)
+    elif args.replay is not None:  # this run, its cases looked up in earlier runs
+        try:
+            rows, best = replay(cfg, [json.loads(Path(f).read_text(encoding="utf-8")) for f in args.replay],
+                                args.replay)
+        except vc_search.MissingCase as err:
+            print(f"{p.prog} --replay: {err}", file=sys.stderr)
+            return 1
     else:
         rows, best = run(cfg, workers=args.workers)
     print_table(cfg, rows, best)
