@@ -22,11 +22,11 @@ run_to_periodic and ``fast_mill case`` step it (so a case is bit for bit that co
 sampled.
 
 Tail settings, the stated rule (``--tail-rule``, :func:`laddermill_gym.studies.mill.tail_schedule.tail_rule`):
-``scene`` (the default), every case flies the scene's own elevators (v2: ascending +1.3, descending +2.5 deg; v1: -8 /
--0.5 deg), for which each design was chosen; ``depower``, the scene's up to the paper's V0 = 8 m/s and above it each
-leg's elevator set so that the wing's trim lift coefficient (at rest on the cable in the wind V0) is the scene
-elevator's at 8 m/s times (8 / V0)^n, n = 2 for the ascending wings (the paper's wind's load kept) and 1.75 for the
-descending ones.
+``depower`` (the default), the scene's elevators up to the paper's V0 = 8 m/s (the same floats, so those cases are
+``scene``'s bit for bit) and above it each leg's trim C_L the scene's at 8 m/s times (8 / V0)^n, n = 2 ascending and
+1.75 descending; ``scene``, the scene's elevators for every case. The V_c per wind: every one of ``speeds`` at the
+paper's wind; at the other winds the adaptive search of :mod:`vc_search` (its cases in sequence, winds in parallel),
+or a fixed grid (``--wind-speeds``). ``--replay`` walks the run over earlier runs' rows and runs nothing.
 
 Writes ``power_curve.csv`` (one row per case), ``power_curve.json`` (settings, rows, best V_c per V0) and
 ``power_curve.png`` (power against V_c at the paper's wind; best power and V_c against V0).
@@ -113,7 +113,7 @@ def hand_estimate_w(t_first_n: float, t_last_n: float, v_c: float) -> float:
 
 
 def run_case(v0: float, v_c: float, max_time: float, n_wings: int | None = None, scene: str = SCENE,
-             ramp: str = RAMPS[0], tail: str = RULES[0]) -> dict:
+             ramp: str = RAMPS[0], tail: str = "depower") -> dict:
     """One case in plane: the scene at wind V0 [m/s], from rest, its cable speed ramped to V_c [m/s] by the ramp
     rule and held, its elevators by the tail rule, run to its periodic motion (or a breakdown, or ``max_time`` [s]
     of search)."""

@@ -31,7 +31,7 @@ from scipy.optimize import brentq
 from laddermill_gym.model.params import AERO_INDEX
 from laddermill_gym.sim.statics import pitch_trim_alpha, table_spline
 
-RULES = ("scene", "depower")  # tail rules; the first: the default (the scene's elevators)
+RULES = ("scene", "depower")  # tail rules; `laddermill power-curve` flies depower by default (the scene's up to 8 m/s)
 REF_V0 = 8.0  # [m/s] Meijaard et al. 1999, the example's wind at h0 = 50 m: the load the depower rule keeps
 RHO0 = 1.225  # [kg/m^3] ISA sea level, the scenes' wind.rho0: the trim's dynamic pressure 0.5 RHO0 V0^2
 BRACKET_STEP = math.radians(0.1)  # [rad] the scan that brackets the elevator on the attached-flow trim branch
