@@ -236,8 +236,9 @@ def _plot(path: Path, cfg: Config, rows: list[dict], best: list[dict]) -> None:
     ax1.legend(fontsize=8)
     okb = [b for b in best if b["power_kW"] is not None]
     over = [r for r in rows if r["periodic"] and not r["within_limit"]]
-    ax2.plot([r["v0_m_s"] for r in over], [r["power_kW"] for r in over], "x", color="grey",
-             label="periodic, tension over the limit")
+    if over:
+        ax2.plot([r["v0_m_s"] for r in over], [r["power_kW"] for r in over], "x", color="grey",
+                 label="periodic, tension over the limit")
     ax2.plot([b["v0_m_s"] for b in okb], [b["power_kW"] for b in okb], "o-", color="C0", label="best within the limit")
     none = [b["v0_m_s"] for b in best if b["power_kW"] is None]
     if none:
