@@ -19,10 +19,10 @@ from laddermill_gym.control.rl_config import load_rl_config  # noqa: E402
 from laddermill_gym.control.rl_phases import Validation, ValidationSet  # noqa: E402
 from laddermill_gym.control.warm_start import affine_map  # noqa: E402
 from laddermill_gym.model.configio import ConfigError  # noqa: E402
+from tests.test_warm_start import small_ppo_config  # noqa: E402
 
 TW = "laddermill_gym/TetheredWing-v0"
 TW_CONFIG = "configs/agents/ppo_tethered_wing.yaml"
-RC_CONFIG = "configs/agents/ppo_rotorcraft.yaml"
 
 
 def test_the_warm_start_map_is_the_lqr_to_1e_9_on_sampled_observations():
@@ -44,14 +44,7 @@ def test_the_warm_start_map_is_the_lqr_to_1e_9_on_sampled_observations():
 
 
 def _small_config(tmp_path, **changes):
-    data = yaml.safe_load(open(RC_CONFIG))
-    data.update(n_envs=2, total_timesteps=512, time_limit_minutes=1.0, checkpoint_every=256,
-                eval={"every": 256, "episodes": 1})
-    data["hyperparameters"].update(n_steps=64, batch_size=64, n_epochs=2)
-    data.update(changes)
-    p = tmp_path / "ppo_small.yaml"
-    p.write_text(yaml.safe_dump(data))
-    return p
+    return small_ppo_config(tmp_path, n_epochs=2, **changes)
 
 
 def test_the_critic_only_phase_leaves_the_actor_and_trains_the_critic(tmp_path):

@@ -37,11 +37,12 @@ def test_affine_map_recovers_a_known_affine_controller():
         affine_map(_Affine(W, b + 5.0), obs0)
 
 
-def _config(tmp_path, **changes):
+def small_ppo_config(tmp_path, n_epochs: int = 1, **changes):
+    """ppo_rotorcraft.yaml cut to a few hundred steps on 2 copies (``changes`` replace top-level fields); its path."""
     data = yaml.safe_load(open(RC_CONFIG))
     data.update(n_envs=2, total_timesteps=512, time_limit_minutes=1.0, checkpoint_every=256,
                 eval={"every": 256, "episodes": 1})
-    data["hyperparameters"].update(n_steps=64, batch_size=64, n_epochs=1)
+    data["hyperparameters"].update(n_steps=64, batch_size=64, n_epochs=n_epochs)
     data.update(changes)
     p = tmp_path / "ppo_small.yaml"
     p.write_text(yaml.safe_dump(data))
@@ -57,7 +58,7 @@ def test_the_started_policy_acts_as_the_lqr(tmp_path):
     from laddermill_gym.control.warm_start import start_from
     from laddermill_gym.harness.train import training_env
 
-    cfg = load_rl_config(_config(tmp_path))
+    cfg = load_rl_config(small_ppo_config(tmp_path))
     assert cfg.init_from == "lqr"
     venv = VecNormalize(VecMonitor(training_env(cfg)), norm_obs=True, norm_reward=False, clip_obs=10.0)
     model = sb3.PPO("MlpPolicy", venv, seed=0, policy_kwargs=cfg.policy_kwargs, device="cpu", **cfg.hyperparameters)
@@ -80,4 +81,4 @@ def test_the_started_policy_acts_as_the_lqr(tmp_path):
 ])
 def test_bad_init_from_is_named(tmp_path, changes, match):
     with pytest.raises(ConfigError, match=match):
-        load_rl_config(_config(tmp_path, **changes))
+        load_rl_config(small_ppo_config(tmp_path, **changes))
