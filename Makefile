@@ -19,10 +19,11 @@ docs:
 	NO_MKDOCS_2_WARNING=1 mkdocs build --strict
 
 # re-run the figures README and docs/controllers.md quote (main job, env sizes, TetheredWing-v0's open-loop and LQR
-# rows, the shipped policies' gusts-v1 scorecards; about 10-15 minutes) into results/readme_figures.json and fail
-# naming any the text no longer matches
+# rows; --policies: the shipped policies' gusts-v1 scorecards, ppo_mill's row; --papers: the Papers-reproduced rows,
+# each study in turn: docsite/paper_figures.py) into results/readme_figures.json and fail naming any the text no
+# longer matches (about 40 minutes on a 2-core machine)
 readme-figures:
-	python -m docsite.readme_figures --policies --out results/readme_figures.json
+	python -m docsite.readme_figures --policies --papers --out results/readme_figures.json
 
 gust-bench:
 	laddermill gust-bench --suite gusts-v1 --controllers open_loop lqr --out results/gust_bench/gusts-v1

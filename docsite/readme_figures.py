@@ -8,14 +8,18 @@
   point first, 2-3 minutes);
 * TetheredWing-v0's open-loop and LQR rows of ``laddermill_gym/docs/controllers.md`` (``laddermill evaluate
   --controllers open_loop lqr --episodes 1``);
-* with ``--policies`` (about 3 minutes more with a warm numba cache): the shipped policies' gusts-v1 scorecards
+* with ``--policies`` (about 8 minutes more with a warm numba cache): the shipped policies' gusts-v1 scorecards
   beside the LQR's, the rows of README's shipped-policy table (``laddermill gust-bench --suite gusts-v1 --env ID
-  --controllers lqr ppo_<name>``; a scenario counts when every seed survives).
+  --controllers lqr ppo_<name>``; a scenario counts when every seed survives); its ppo_mill row (``laddermill
+  evaluate --env laddermill_gym/LadderMill-v1 --controllers ppo_mill lqr --episodes 5 --episode-time 300``, the LQR
+  designed on the 606-state linearised mill first); the main job with ppo_mill as a third controller;
+* with ``--papers`` (:mod:`docsite.paper_figures`, about 25 minutes): the figures of README's "Papers reproduced"
+  rows, each from the study command the row names.
 
 and then checks that README.md and the controllers page print those numbers (exit 1 naming each that differs).
-The slow test ``tests/test_docs.py::test_readme_figures_are_what_their_commands_print`` does the same. Not covered:
-machine-dependent timings (env steps/s, real-time factors: the benchmark pages say where and when they were
-measured) and the studies that take longer than a few minutes (Meijaard's, the power curve).
+The slow test ``tests/test_docs.py::test_readme_figures_are_what_their_commands_print`` does the same with both
+groups. Not covered: machine-dependent timings (env steps/s, real-time factors: the benchmark pages say where and
+when they were measured) and the longest studies (the power curve, 12 minutes on two workers).
 """
 
 from __future__ import annotations
@@ -35,17 +39,21 @@ CONTROLLERS = ROOT / "laddermill_gym" / "docs" / "controllers.md"
 MAIN_JOB = ["demo", "--no-gif", "--no-progress"]
 
 
-def main_job() -> dict:
-    """The main job's table: {controller: [flew after the step [s], mean power [kW], max |dy| [m], end]}."""
+def main_job(policy: bool = False) -> dict:
+    """The main job's table: {controller: [flew after the step [s], mean power [kW], max |dy| [m], end]}; with
+    ``policy``, the same run with the shipped mill policy as a third controller (README's ``laddermill demo
+    --controllers open_loop lqr ppo_mill``: the open-loop and LQR rows are the same runs)."""
     from laddermill_gym.cli import main
 
+    names = ("open_loop", "lqr") + (("ppo_mill",) if policy else ())
+    argv = MAIN_JOB + (["--controllers", *names] if policy else [])
     out = io.StringIO()
     with tempfile.TemporaryDirectory() as tmp, contextlib.redirect_stdout(out):
-        main(MAIN_JOB + ["--out", tmp])
+        main(argv + ["--out", tmp])
     rows = dict((m.group(1), [m.group(2), m.group(3), m.group(4), m.group(5)]) for m in re.finditer(
-        r"^(open_loop|lqr)\s+([\d.]+)\s+([-\d.]+)\s+([\d.]+)\s+(.*)$", out.getvalue(), re.M))
-    if set(rows) != {"open_loop", "lqr"}:
-        raise RuntimeError(f"laddermill {' '.join(MAIN_JOB)} printed no open_loop and lqr rows:\n{out.getvalue()}")
+        r"^(open_loop|lqr|ppo_mill)\s+([\d.]+)\s+([-\d.]+)\s+([\d.]+)\s+(.*)$", out.getvalue(), re.M))
+    if set(rows) != set(names):
+        raise RuntimeError(f"laddermill {' '.join(argv)} printed no {', '.join(names)} rows:\n{out.getvalue()}")
     return {"main_job": rows}
 
 
@@ -96,8 +104,54 @@ def policy_scorecards() -> dict:
     return {"policy_scorecards": cards}
 
 
-def measure(policies: bool = False) -> dict:
-    return {**main_job(), **env_sizes(), **tethered_wing_rows(), **(policy_scorecards() if policies else {})}
+#: README's ppo_mill row: ``laddermill evaluate --env laddermill_gym/LadderMill-v1 --controllers ppo_mill lqr
+#: --episodes 5 --episode-time 300`` (the policy's README), the paper's direction step at 1 s.
+MILL_ID, MILL_EPISODES, MILL_EPISODE_S = "laddermill_gym/LadderMill-v1", 5, 300.0
+
+
+def mill_policy_row() -> dict:
+    """{controller: [episodes held to the end, episodes, largest |dy| [m], mean power [kW], all episodes alike]} of
+    ppo_mill and the LQR (the LQR designs on the 606-state linearised mill first: minutes)."""
+    import numpy as np
+
+    from laddermill_gym.harness.evaluate import evaluate
+
+    with tempfile.TemporaryDirectory() as tmp:
+        res = evaluate(MILL_ID, ["ppo_mill", "lqr"], MILL_EPISODES, {"episode_time": MILL_EPISODE_S}, Path(tmp),
+                       progress=False)
+    return {"mill_policy": {label: [int((r.failures == 0).sum()), len(r.failures), f"{r.max_lateral_m.max():.4f}",
+                                    f"{r.mean_power_W.mean() / 1e3:.1f}",
+                                    bool(np.allclose(r.returns, r.returns[0], rtol=1e-9, atol=0.0))]
+                            for label, r in res.items()}}
+
+
+def mill_policy_differences(figures: dict, readme: str) -> list[str]:
+    """README's ppo_mill row and demo sentence against the evaluation and the demo; [] when nothing was measured."""
+    bad, rows, demo = [], figures.get("mill_policy"), figures["main_job"].get("ppo_mill")
+    if rows:
+        (held, n, dy, kw, alike), lqr = rows["ppo_mill"], rows["lqr"]
+        want = (f"| held {MILL_EPISODE_S:.0f} s after the step ({held} / {n} seeds, one deterministic episode), "
+                f"{dy} m, {kw} kW | {lqr[0]} / {lqr[1]}, {lqr[2]} m, {lqr[3]} kW |")
+        if want not in readme or not alike:
+            bad.append(f"README's shipped-policy table: ppo_mill measured {rows} ([held, episodes, max |dy| m, kW, "
+                       f"episodes alike]); README lacks '{want}'")
+    if demo:
+        flew, kw, dy, end = demo
+        want = f"`laddermill demo --controllers open_loop lqr ppo_mill` ({float(flew):.0f} s after the step, {kw} kW"
+        same = demo == figures["main_job"]["lqr"]  # "as the LQR"
+        if f"{want}, {dy} m, as the LQR)" not in readme or end != "ran to the end" or not same:
+            bad.append(f"README: the demo with ppo_mill prints {demo} (the LQR {figures['main_job']['lqr']}); README "
+                       f"lacks '{want}, {dy} m, as the LQR)'")
+    return bad
+
+
+def measure(policies: bool = False, papers: bool = False) -> dict:
+    """Every figure; ``policies`` and ``papers`` add the slow groups (see the module's docstring)."""
+    from docsite.paper_figures import measure_papers
+
+    return {**main_job(policy=policies), **env_sizes(), **tethered_wing_rows(),
+            **({**policy_scorecards(), **mill_policy_row()} if policies else {}),
+            **(measure_papers() if papers else {})}
 
 
 def _flat(text: str) -> str:
@@ -144,7 +198,11 @@ def differences(figures: dict) -> list[str]:
         if not ok:
             bad.append(f"controllers.md, TetheredWing-v0 {shown}: measured {r['return']}, {flew}, "
                        f"{r['max_lateral_m']:.4g} m, {r['power_W']} W; quoted {m.group(0)}")
-    return bad + policy_differences(figures.get("policy_scorecards", {}), README.read_text())
+    from docsite.paper_figures import papers_differences
+
+    text = README.read_text()
+    return (bad + policy_differences(figures.get("policy_scorecards", {}), text)
+            + mill_policy_differences(figures, readme) + papers_differences(figures.get("papers", {}), readme))
 
 
 def policy_differences(cards: dict, readme: str) -> list[str]:
@@ -165,13 +223,16 @@ def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(prog="python -m docsite.readme_figures", description=__doc__.split("\n\n")[0])
     p.add_argument("--out", default="results/readme_figures.json", help="the JSON of the measured figures")
     p.add_argument("--check-only", action="store_true", help="compare the text with an existing --out JSON")
-    p.add_argument("--policies", action="store_true", help="also the shipped policies' gusts-v1 scorecards (~10 min)")
+    p.add_argument("--policies", action="store_true", help="also the shipped policies' gusts-v1 scorecards and "
+                   "ppo_mill's evaluation on LadderMill-v1 (~10 min)")
+    p.add_argument("--papers", action="store_true", help="also the figures of the Papers-reproduced rows, each study "
+                   "in turn (~25 min)")
     args = p.parse_args(argv)
     out = Path(args.out)
     if args.check_only:
         figures = json.loads(out.read_text())
     else:
-        figures = measure(policies=args.policies)
+        figures = measure(policies=args.policies, papers=args.papers)
         out.parent.mkdir(parents=True, exist_ok=True)
         out.write_text(json.dumps(figures, indent=1))
         print(f"wrote {out}")

@@ -148,13 +148,13 @@ def test_site_builds_strict_with_its_tutorials(tmp_path):
 
 @pytest.mark.slow
 def test_readme_figures_are_what_their_commands_print(tmp_path):
-    """``make readme-figures --policies``: the main job, every env's sizes, TetheredWing-v0's open-loop and LQR rows
-    and the shipped policies' gusts-v1 scorecards re-run (10-15 minutes: LadderMill-v0 finds its operating point,
-    two gust suites, 3 minutes) and compared with README and controllers.md."""
+    """``make readme-figures`` (``--policies --papers``): the main job (with ppo_mill), every env's sizes,
+    TetheredWing-v0's open-loop and LQR rows, the shipped policies' gusts-v1 scorecards and ppo_mill's row, and the
+    Papers-reproduced rows' studies re-run (about 40 minutes) and compared with README and controllers.md."""
     sys.path.insert(0, str(ROOT))
     from docsite.readme_figures import differences, measure
 
-    figures = measure(policies=True)
+    figures = measure(policies=True, papers=True)
     (tmp_path / "readme_figures.json").write_text(yaml.safe_dump(figures))
     assert not differences(figures), differences(figures)
 
@@ -172,3 +172,42 @@ def test_the_policy_table_check_names_a_changed_scorecard():
     bad = policy_differences({**good, "ppo_tethered_wing": [10, 12, 12]}, readme)
     assert len(bad) == 1 and "ppo_tethered_wing survives 10 / 12 of gusts-v1 (the LQR 12 / 12)" in bad[0]
     assert len(policy_differences({"ppo_chain": [1, 1, 1]}, readme)) == 1
+
+
+def test_the_mill_policy_check_names_a_changed_figure():
+    """The check of README's ppo_mill row and its demo sentence: the quoted figures pass, any other is named."""
+    sys.path.insert(0, str(ROOT))
+    from docsite.readme_figures import mill_policy_differences
+
+    readme = ("| `ppo_mill` | LadderMill-v1 | DAgger | held 300 s after the step (5 / 5 seeds, one deterministic "
+              "episode), 0.0940 m, 154.0 kW | 5 / 5, 0.0948 m, 154.0 kW | With the `rl` extra: `laddermill demo "
+              "--controllers open_loop lqr ppo_mill` (60 s after the step, 157.1 kW, 0.09 m, as the LQR).")
+    lqr = ["60.00", "157.1", "0.09", "ran to the end"]
+    good = {"main_job": {"lqr": lqr, "ppo_mill": list(lqr)},
+            "mill_policy": {"ppo_mill": [5, 5, "0.0940", "154.0", True], "lqr": [5, 5, "0.0948", "154.0", True]}}
+    assert mill_policy_differences(good, readme) == []
+    assert mill_policy_differences({"main_job": {"lqr": lqr}}, readme) == []
+    fewer = {**good["mill_policy"], "ppo_mill": [4, 5, "0.0940", "154.0", True]}
+    assert len(mill_policy_differences({**good, "mill_policy": fewer}, readme)) == 1
+    fell = {"lqr": lqr, "ppo_mill": ["12.00", *lqr[1:]]}
+    assert len(mill_policy_differences({**good, "main_job": fell}, readme)) == 1
+
+
+def test_the_papers_check_names_a_changed_figure():
+    """The check of README's Papers-reproduced rows: the quoted figures pass, a changed or non-periodic one is named."""
+    sys.path.insert(0, str(ROOT))
+    from docsite.paper_figures import papers_differences
+
+    readme = ("periodic at 1 and 2 m/s (82.1, 153 kW, a wing) ... (323.9 kW at 5 m/s; its power curve) ... 5 km of "
+              "cable at 1 cm (500,000 elements) in 28.69 MB ... ([45.7 kW converged](reeling_tether.md); the cycle "
+              "0.75-0.86 of Schmehl's quasi-steady model at 10-20 m/s)")
+    good = {"meijaard_v1": {"1": [True, 82.1], "2": [True, 152.9]}, "v2_at_5": [True, 323.94],
+            "podgaets": [500_000, 28.69], "tether_power_W": {"40": 45672.0, "30": 45745.0},
+            "schmehl_ratio": {"10": 0.7486, "12": 0.80, "14": 0.83, "16": 0.85, "18": 0.8555, "20": 0.83}}
+    assert papers_differences(good, readme) == []
+    assert papers_differences({}, readme) == []
+    for changed in ({"v2_at_5": [False, 323.9]}, {"podgaets": [500_000, 29.41]}, {"meijaard_v1": {"1": [True, 82.1],
+                    "2": [True, 160.0]}}, {"tether_power_W": {"40": 45672.0, "30": 45800.0}},
+                    {"schmehl_ratio": {**good["schmehl_ratio"], "8": 0.68}}):
+        bad = papers_differences({**good, **changed}, readme)
+        assert len(bad) == 1, (changed, bad)
