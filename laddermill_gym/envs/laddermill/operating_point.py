@@ -8,9 +8,11 @@ are taken from), and maps the state at the end of that period (just after a tran
 transfers and no energy yet). The 3D mill from that in-plane start stays in plane to round-off without a
 disturbance (docs/moving_cable.md), so the 2D run is the cheap way to the 3D operating point.
 
-It costs about 30 s for the default 101-wing mill (periodic at t ~ 1135 s), so :func:`operating_point` memoises
-it once per process per (scene, scene options, settle settings); a user may pass a precomputed
-:class:`OperatingPoint` to the environment instead (it pickles).
+It costs 30-100 s of CPU for the 101-wing mills (periodic at t ~ 1,000-1,400 s), so :func:`operating_point`
+memoises it once per process per (scene, scene options, settle settings) and keeps it on disk for later processes
+(``envs/laddermill/op_cache.py``: ``~/.cache/laddermill_gym``, or ``$LADDERMILL_CACHE_DIR``; keyed by the scene,
+the settings and the code; the exact float64 arrays, so a start read back is bit for bit a recomputed one); a user
+may pass a precomputed :class:`OperatingPoint` to the environment instead (it pickles).
 
 Small mills (11 or 21 wings) do not reach a periodic motion (docs/moving_cable.md, "Small mills wander"): then
 the state after the settling time ``max_time`` is used, ``converged`` is False, a warning says so and every reset's
@@ -29,13 +31,14 @@ from functools import lru_cache
 
 import numpy as np
 
+from laddermill_gym.envs.laddermill import op_cache
 from laddermill_gym.kernels.contract import SX_ENERGY, SX_MOVED, SX_SIZE, SX_SPEED, SX_TRANSFERS
 from laddermill_gym.ladder.periodic import run_to_periodic
 from laddermill_gym.ladder.scene import Scene, load_scene, options_kwargs
 from laddermill_gym.model.states import planar_to_3d
 
-__all__ = ["OperatingPoint", "SettleConfig", "compute_operating_point", "operating_point", "mill_scene",
-           "nominal_positions"]
+__all__ = ["OperatingPoint", "SettleConfig", "compute_operating_point", "operating_point", "cached_operating_point",
+           "mill_scene", "nominal_positions"]
 
 
 @dataclass(frozen=True)
@@ -180,11 +183,55 @@ def compute_operating_point(scene: str = "laddermill", options: tuple = (), sett
     return op
 
 
+#: the fields of an :class:`OperatingPoint` stored as arrays in its cache entry (the others are scalars)
+_ARRAY_FIELDS = ("state", "controls", "orbit_moved", "orbit_positions", "alpha_range_rad")
+
+
+def _from_entry(data: dict) -> OperatingPoint | None:
+    """The operating point of a cache entry's arrays (``envs/laddermill/op_cache.py``), read-only as computed;
+    None when a field is missing."""
+    names = [f.name for f in dataclasses.fields(OperatingPoint)]
+    if set(data) != set(names):
+        return None
+    values = {}
+    for name in names:
+        a = data[name]
+        if name in _ARRAY_FIELDS:
+            a = np.array(a)
+            a.setflags(write=False)
+            values[name] = a
+        else:
+            values[name] = a.item()  # a 0-d array: the same float's bits, bool or str
+    return OperatingPoint(**values)
+
+
+def cached_operating_point(scene: str, options: tuple, settle: SettleConfig) -> tuple[OperatingPoint, bool]:
+    """(operating point, whether it was read from the on-disk cache): the entry of the in-plane scene, ``settle``
+    and the code (``op_cache.entry_key``) when one is there and whole, else :func:`compute_operating_point`,
+    stored for the next process. The same bits either way."""
+    sc2 = mill_scene(scene, options, 2)
+    try:
+        key = op_cache.entry_key("operating_point", sc2, settle)
+    except TypeError:  # a scene field the fingerprint does not know: not cached
+        return compute_operating_point(scene, options, settle, warn=False), False
+    path = op_cache.entry_path("operating_point", f"{sc2.name}-{sc2.assembly.n_wings}", key)
+    data = op_cache.read_entry(path, key)
+    op = None if data is None else _from_entry(data)
+    if op is not None:
+        return op, True
+    op = compute_operating_point(scene, options, settle, warn=False)
+    op_cache.write_entry(path, key, {f.name: getattr(op, f.name) for f in dataclasses.fields(op)})
+    return op, False
+
+
 @lru_cache(maxsize=8)
 def operating_point(scene: str, options: tuple, settle: SettleConfig) -> OperatingPoint:
-    """:func:`compute_operating_point`, memoised per process on (scene, options, settle) (the warning of a
-    non-converged point is given once, when it is computed)."""
-    return compute_operating_point(scene, options, settle, warn=True)
+    """:func:`compute_operating_point`, memoised per process on (scene, options, settle) and on disk across
+    processes (:func:`cached_operating_point`); the warning of a non-converged point is given once per process."""
+    op, _ = cached_operating_point(scene, options, settle)
+    if not op.converged:
+        warnings.warn(f"LadderMill operating point: {op.note}", RuntimeWarning, stacklevel=2)
+    return op
 
 
 def nominal_positions(op: OperatingPoint, moved: np.ndarray) -> np.ndarray:
