@@ -46,6 +46,7 @@ class SharedTrainConfig:
     eval_time: float
     eval_every: int
     hyperparameters: dict[str, Any] = field(default_factory=dict)
+    teacher_config: Path | None = None  # the teacher's LQR config (None: the env's default design)
 
     def train_env_kwargs(self) -> dict[str, Any]:
         """The env arguments of training: overrides plus the disturbances drawn per episode."""
@@ -83,7 +84,11 @@ def load_shared_config(path: str | Path) -> SharedTrainConfig:
         raise s.error("disturbances", dist, "must be a list of mappings")
     for i, d in enumerate(dist):
         disturbance_from_dict(d, f"{path}: disturbances[{i}]")
+    teacher = s.raw("teacher", None)
+    if teacher is not None and not isinstance(teacher, str):
+        raise s.error("teacher", teacher, "must be an LQR config's file or shipped name (configs/agents)")
     cfg: dict[str, Any] = dict(
+        teacher_config=None if teacher is None else find_config("agents", teacher, f"{path}: teacher"),
         algorithm=algo, env_id=env_id, env_kwargs=dict(env_kwargs), disturbances=list(dist),
         k=s.number("k", integer=True, nonneg=True, high=10, why="neighbours seen on each side"),
         n_basis=s.number("n_basis", integer=True, positive=True, high=1000, why="hat functions of the position"),

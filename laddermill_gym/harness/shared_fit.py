@@ -1,12 +1,14 @@
-"""Can the shared policy's class hold the mill at all? The LQR's gain projected onto it, flown:
+"""Can the shared policy's class hold the mill (or the fixed chain)? The LQR's gain projected onto it, flown:
 
-    python -m laddermill_gym.harness.shared_fit [--n-basis 101] [--k 4] [--episode-time 300] [--out DIR]
+    python -m laddermill_gym.harness.shared_fit [--env ID] [--teacher LQR_CONFIG] [--n-basis 101] [--k 4]
+        [--episode-time 300] [--out DIR]
 
 The actor of :mod:`laddermill_gym.control.shared_policy` is a = sum_b h_b(i / (n - 1)) (W_b z_i + c_b): slot i's
 rudder and aileron are a linear map of the lateral deviations z_i of its wing and its k neighbours each side
-(over the LQR config's Bryson scales). The centralised LQR (``make_controller("lqr", env)``, gain K, 2n x 6n) cut
-to that band (``gain_locality.banded(K, k)``) is, slot by slot, such a map w_i; this command fits the W_b to the
-w_i by least squares over the slots (min_W sum_i |sum_b h_b(i) W_b - w_i|^2: with one node per slot,
+(over the LQR config's Bryson scales). The LQR (``make_controller("lqr", env)`` or ``--teacher``'s design, as one
+linear law: ``harness.shared_teacher``, gain K, 2n x 6n, and the trim action as the constant's weight) cut to
+that band (``gain_locality.banded(K, k)``) is, slot by slot, such a map w_i; this command fits the W_b to the w_i
+by least squares over the slots (min_W sum_i |sum_b h_b(i) W_b - w_i|^2: with one node per slot,
 ``n_basis = n``, the fit is exact), writes the result as a shared-policy run folder (``model.zip``,
 ``shared_policy.yaml``) and flies it on the single-agent env's registered scenario (the paper's 0.01 rad step at
 1 s), seeds 0-4, beside the LQR. No data and no reward: it checks the *class*, not a learner.
@@ -27,12 +29,14 @@ __all__ = ["band_weights", "bryson_scales", "project_weights", "main"]
 _NLAT = 6  # lateral entries per slot (shared_policy.LATERAL_FIELDS)
 
 
-def bryson_scales(env_id: str) -> np.ndarray:
-    """(dy, vy, phi, psi, p, r) scales [m, m/s, rad, rad, rad/s, rad/s]: the env's LQR config's max_state."""
+def bryson_scales(env_id: str, lqr_config: Path | None = None) -> np.ndarray:
+    """(dy, vy, phi, psi, p, r) scales [m, m/s, rad, rad, rad/s, rad/s]: the max_state of the LQR config
+    ``lqr_config`` (None: the env's default design's)."""
     from laddermill_gym.control.factory import DEFAULT_LQR_CONFIGS
     from laddermill_gym.control.lqr_config import load_lqr_config
 
-    return np.asarray(load_lqr_config(DEFAULT_LQR_CONFIGS[env_id]).max_state, dtype=float)
+    path = DEFAULT_LQR_CONFIGS[env_id] if lqr_config is None else lqr_config
+    return np.asarray(load_lqr_config(path).max_state, dtype=float)
 
 
 def band_weights(K: np.ndarray, half: np.ndarray, scales: np.ndarray, k: int) -> np.ndarray:
@@ -50,10 +54,12 @@ def band_weights(K: np.ndarray, half: np.ndarray, scales: np.ndarray, k: int) ->
     return w.reshape(n, len(offsets) * _NLAT, 2)
 
 
-def project_weights(w: np.ndarray, n_basis: int, column: np.ndarray, n_act: int) -> tuple[np.ndarray, float]:
+def project_weights(w: np.ndarray, n_basis: int, column: np.ndarray, n_act: int,
+                    offset: np.ndarray | None = None) -> tuple[np.ndarray, float]:
     """The actor's linear head (n_act, n_basis (f + 1)) fitting the per-slot weights ``w`` (n, f, 2) by least
-    squares over the slots (hat functions of i / (n - 1); bias c_b = 0), and the relative gain error
-    |H W - w| / |w| (0 when ``n_basis`` = n)."""
+    squares over the slots (hat functions of i / (n - 1)), and the relative gain error |H W - w| / |w| (0 when
+    ``n_basis`` = n). The constant feature's weights c_b fit ``offset`` (n, n_act), every slot's action at zero
+    deviation, the same way (None: 0)."""
     import torch as th
 
     from laddermill_gym.control.shared_policy import hat_basis
@@ -65,16 +71,19 @@ def project_weights(w: np.ndarray, n_basis: int, column: np.ndarray, n_act: int)
     head = np.zeros((n_act, n_basis, f + 1))
     for c in range(2):
         head[column[c], :, :f] = W[:, :, c]
+    if offset is not None:
+        head[:, :, f] = np.linalg.lstsq(H, np.asarray(offset, dtype=float).reshape(n, n_act), rcond=None)[0].T
     return head.reshape(n_act, -1), err
 
 
 def fitted_model(env_id: str, k: int, n_basis: int, teacher, scales: np.ndarray, out: Path, seed: int = 0):
-    """A PPO model with the shared actor whose head is the projection of the LQR's band-k gain; saved in ``out``
-    as a run folder. Returns (model, relative gain error, meta)."""
+    """A PPO model with the shared actor whose head is the projection of the LQR's band-k gain (and its trim
+    action); saved in ``out`` as a run folder. Returns (model, relative gain error, meta)."""
     import torch as th
     from stable_baselines3 import PPO
 
     from laddermill_gym.harness.gain_locality import banded
+    from laddermill_gym.harness.shared_teacher import linear_teacher
     from laddermill_gym.multiagent.sb3 import shared_policy_vec_env
 
     venv = shared_policy_vec_env(env_id, 1, k=k, seed=seed)
@@ -87,8 +96,9 @@ def fitted_model(env_id: str, k: int, n_basis: int, teacher, scales: np.ndarray,
                                              scales=np.asarray(scales).tolist()),
               net_arch=dict(pi=[], vf=[8]), log_std_init=-3.0, ortho_init=False)
     model = PPO("MlpPolicy", venv, seed=seed, policy_kwargs=pk, device="cpu", verbose=0)
-    w = band_weights(banded(teacher.K, k), teacher.half, scales, k)
-    head, err = project_weights(w, n_basis, teacher.column, view.act_dim)
+    lin = linear_teacher(teacher)
+    w = band_weights(banded(lin.K, k), lin.half, scales, k)
+    head, err = project_weights(w, n_basis, lin.column, view.act_dim, lin.offset)
     net = model.policy.action_net
     with th.no_grad():
         net.weight.copy_(th.as_tensor(head, dtype=net.weight.dtype))
@@ -104,12 +114,15 @@ def fitted_model(env_id: str, k: int, n_basis: int, teacher, scales: np.ndarray,
 def main(argv: list[str] | None = None) -> int:
     import gymnasium as gym
 
-    from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.shared_policy import SharedPolicyController
     from laddermill_gym.harness.evaluate import run_episodes
+    from laddermill_gym.harness.shared_teacher import make_teacher
+    from laddermill_gym.model.configio import find_config
 
     p = Parser(prog="python -m laddermill_gym.harness.shared_fit", description=__doc__.split("\n\n")[0])
-    p.add_argument("--env", default="laddermill_gym/LadderMill-v1", choices=["laddermill_gym/LadderMill-v1"])
+    p.add_argument("--env", default="laddermill_gym/LadderMill-v1",
+                   choices=["laddermill_gym/LadderMill-v1", "laddermill_gym/LadderChain-v0"])
+    p.add_argument("--teacher", help="the LQR config (file or shipped name; default: the env's default design)")
     p.add_argument("--n-basis", type=int, default=101, help="hat functions of the position (101: one per slot)")
     p.add_argument("--k", type=int, default=4, help="neighbours each side")
     p.add_argument("--episode-time", type=float, default=300.0, help="[s]")
@@ -119,8 +132,9 @@ def main(argv: list[str] | None = None) -> int:
     a = p.parse_args(argv)
     if a.n_basis < 1 or not 0 <= a.k <= 10:
         p.error(f"--n-basis {a.n_basis} / --k {a.k}: need n_basis >= 1 and 0 <= k <= 10")
-    teacher = make_controller("lqr", a.env)
-    model, err, _ = fitted_model(a.env, a.k, a.n_basis, teacher, bryson_scales(a.env), a.out)
+    lqr_config = None if a.teacher is None else find_config("agents", a.teacher, "--teacher")
+    teacher = make_teacher(a.env, lqr_config)
+    model, err, _ = fitted_model(a.env, a.k, a.n_basis, teacher, bryson_scales(a.env, lqr_config), a.out)
     print(f"n_basis {a.n_basis}, k {a.k}: relative gain error of the projection {err:.4f}; run folder {a.out}")
     env = gym.make_vec(a.env, num_envs=a.episodes, vectorization_mode="vector_entry_point",
                        episode_time=a.episode_time)

@@ -38,6 +38,7 @@ from tqdm import tqdm
 
 from laddermill_gym.harness.shared_config import SharedTrainConfig, load_shared_config
 from laddermill_gym.harness.shared_fit import band_weights, bryson_scales
+from laddermill_gym.harness.shared_teacher import linear_teacher, make_teacher
 from laddermill_gym.studies.commands import Parser
 
 __all__ = ["train_shared", "main", "CURVE_FIELDS"]
@@ -90,18 +91,15 @@ def _score(row: dict) -> tuple:
 
 
 def teacher_labels(teacher, obs: np.ndarray) -> np.ndarray:
-    """The teacher's actions (B, n_actions) at single-agent observations ``obs``: for the mill's LQR
-    (:class:`~laddermill_gym.control.mill_lqr.MillLQRController`) its linear law before the clip to [-1, 1]
-    (u_op - K dz over the action's half range; the controller and the env clip both the same way), so that the
-    labels are the linear map the actor can represent; any other controller: its ``predict``."""
-    if not all(hasattr(teacher, a) for a in ("lateral_deviation", "K", "half", "column", "n_surfaces")):
+    """The teacher's actions (B, n_actions) at single-agent observations ``obs``: for an LQR (the mill's
+    :class:`~laddermill_gym.control.mill_lqr.MillLQRController` or the chain's
+    :class:`~laddermill_gym.control.lqr.LQRController`) its linear law before the clip to [-1, 1]
+    (``harness.shared_teacher``: the controller and the env clip both the same way), so that the labels are the
+    linear map the actor can represent; any other controller: its ``predict``."""
+    lin = linear_teacher(teacher)
+    if lin is None:
         return np.asarray(teacher.predict(obs, deterministic=True)[0], dtype=float)
-    B, n = len(obs), teacher.n_wings
-    du = -(teacher.lateral_deviation(obs).reshape(B, -1) @ teacher.K.T).reshape(B, n, 2)
-    a = np.zeros((B, teacher.act_dim))
-    per_slot = a[:, : n * teacher.n_surfaces].reshape(B, n, teacher.n_surfaces)
-    per_slot[:, :, teacher.column] = du / teacher.half
-    return a
+    return lin.labels(obs)
 
 
 def _fit(model, S: np.ndarray, Bz: np.ndarray, yy: np.ndarray, ridge: float) -> np.ndarray:
@@ -152,11 +150,11 @@ def imitation(cfg: SharedTrainConfig, model, venv, teacher, log, pbar) -> None:
     f = ext.features_dim // ext.n_basis
     S, Bz, yy = np.zeros((n, f, f)), np.zeros((n, f, na)), np.zeros(na)
     rng = np.random.default_rng(cfg.seed)
-    band = None
-    if hasattr(teacher, "K") and hasattr(teacher, "half"):
+    band, lin = None, linear_teacher(teacher)
+    if lin is not None:
         from laddermill_gym.harness.gain_locality import banded
 
-        band = band_weights(banded(teacher.K, cfg.k), teacher.half, ext.scales.numpy(), cfg.k)
+        band = band_weights(banded(lin.K, cfg.k), lin.half, ext.scales.numpy(), cfg.k)
     obs = venv.reset()
     for it in range(cfg.bc_iterations):
         for _ in range(cfg.bc_steps):
@@ -174,7 +172,7 @@ def imitation(cfg: SharedTrainConfig, model, venv, teacher, log, pbar) -> None:
         r2, Wi = _fit(model, S, Bz, yy, cfg.bc_ridge)
         msg = f"DAgger round {it + 1}: R^2 of the fit (elevator, rudder, aileron) {np.round(r2, 4)}"
         if band is not None:  # how far the fitted gains are from the LQR's own, cut to the band
-            cols = list(teacher.column)
+            cols = list(lin.column)
             err = np.linalg.norm(Wi[:, :-1, cols] - band) / np.linalg.norm(band)
             msg += f"; gain error vs the LQR's band-{cfg.k} gain {err:.4f}"
         tqdm.write(msg)
@@ -230,7 +228,6 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
     import torch as th
     from stable_baselines3 import PPO
 
-    from laddermill_gym.control.factory import make_controller
     from laddermill_gym.multiagent.sb3 import shared_policy_vec_env
 
     th.set_num_threads(1)
@@ -239,13 +236,14 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
     shutil.copyfile(cfg.file, out / "config.yaml")
     venv = shared_policy_vec_env(cfg.env_id, cfg.bc_copies, k=cfg.k, seed=cfg.seed, **cfg.train_env_kwargs())
     view = venv.view
-    teacher = make_controller("lqr", cfg.env_id, {k: v for k, v in cfg.env_kwargs.items() if k != "initial_noise"})
+    teacher = make_teacher(cfg.env_id, cfg.teacher_config,
+                           {k: v for k, v in cfg.env_kwargs.items() if k != "initial_noise"})
     meta = dict(env=cfg.env_id, k=cfg.k, n_agents=view.n_agents, obs_dim=view.obs_dim, algorithm="PPO",
                 env_kwargs={k: v for k, v in cfg.env_kwargs.items() if k in ("scene", "scene_options", "authority",
                                                                               "control_dt", "n_wings")},
                 config=str(cfg.file.name), seed=cfg.seed)
     (out / "shared_policy.yaml").write_text(yaml.safe_dump(meta, sort_keys=False))
-    pk = _policy_kwargs(cfg, view, teacher.trim_attitude, bryson_scales(cfg.env_id))
+    pk = _policy_kwargs(cfg, view, teacher.trim_attitude, bryson_scales(cfg.env_id, cfg.teacher_config))
     model = PPO("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=pk, device="cpu", verbose=0,
                 **cfg.hyperparameters)
     ev = Evaluator(cfg, meta)
@@ -284,6 +282,10 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
                         reset_num_timesteps=True)
         log("ppo", int(model.num_timesteps))
     plot_curve(out, rows, lqr)
+    from laddermill_gym.control.shared_policy import export_linear_actor, is_linear_actor
+
+    if is_linear_actor(model.policy):  # the kept model's actor for torch-free evaluation (control/shared_controller)
+        export_linear_actor(out / "model.zip")
     with open(out / "lqr_reference.csv", "w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=list(lqr))
         w.writeheader()

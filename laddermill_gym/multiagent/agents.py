@@ -149,18 +149,18 @@ class WingAgents:
 
     def local_observations(self, obs: np.ndarray, shared: np.ndarray | None = None) -> np.ndarray:
         """Local observations (B, n, d) float32 of single-agent observations ``obs`` (B, D) (the task's layout: n
-        wing blocks first) with shared entries ``shared`` (B, g); None: the mill's station entries of ``obs`` (the
-        slots only; the chains' power needs the task's state). A trained shared policy maps the single-agent env's
-        observation to its agents with it, by the same arithmetic as :meth:`observations`."""
+        wing blocks first) with shared entries ``shared`` (B, g); None: the mill's station entries of ``obs``; for
+        the chains, whose ground power is not in the single-agent observation (it needs the task's state), None
+        gives that entry 0 (no power seen: a controller on the single-agent env cannot know it; the
+        gain-scheduled actor of ``control.shared_policy`` does not read it). A trained shared policy maps the
+        single-agent env's observation to its agents with it, by the same arithmetic as :meth:`observations`."""
         n, m, k = self.n_agents, self.block, self.k
         obs = np.asarray(obs)
         if obs.ndim != 2 or obs.shape[1] != self.task.obs_dim:
             raise ValueError(f"{self.env_id}: observations of shape {obs.shape}, expected (B, {self.task.obs_dim})")
         if shared is None:
-            if self.kind != "slot":
-                raise ValueError(f"{self.env_id}: the {self.kind}s' shared entry (ground power) is not in the "
-                                 "observation; pass shared")
-            shared = obs[:, -N_STATION_OBS:][:, list(_MILL_SHARED)]
+            shared = (obs[:, -N_STATION_OBS:][:, list(_MILL_SHARED)] if self.kind == "slot"
+                      else np.zeros((obs.shape[0], self.n_shared)))
         B = obs.shape[0]
         own = obs[:, : n * m].reshape(B, n, m)
         padded = np.zeros((B, n + 2 * k, m))
