@@ -5,7 +5,8 @@ in a fresh process (as a user types it; what it prints or writes is parsed), and
 
 * Meijaard, Ockels & Schwab 1999: ``python -m laddermill_gym.studies.mill.meijaard --out results/meijaard_v1``
   (its periodic searches, saved there, are reused by a later run: 92 s; from nothing about 11 minutes): "periodic
-  at 1 and 2 m/s (P1, P2 kW" from ``power.csv`` (the in-plane cases); ``python -m
+  at 1 and 2 m/s (P1, P2 kW" from ``power.csv`` (the in-plane cases), "the loop widens with V_c, the smallest
+  tension at the top" from ``claims.csv`` (each of those claims' rows agrees: yes); ``python -m
   laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2 --speed 5 --start-ramp 200 --max-time 3000``:
   "(P kW at 5 m/s;" from its printed summary, which must say the motion is periodic;
 * Podgaets & Ockels 2007: ``python -m laddermill_gym.studies.pointmass.pointmass_benchmark --quick --json F`` on two
@@ -57,6 +58,9 @@ def meijaard(tmp: Path) -> dict:
         cases = {r["case"]: r for r in csv.DictReader(f)}
     mill = {v: [cases[f"2D V_c={v}"]["periodic"] == "True", float(cases[f"2D V_c={v}"]["mean_power_kW"])]
             for v in ("1", "2")}
+    with open(MEIJAARD_OUT / "claims.csv", newline="") as f:  # README: "the loop widens", "the smallest tension at
+        claims = [[r["paper"], r["agrees"]] for r in csv.DictReader(f)  # the top" (each V_c's row)
+                  if r["paper"].startswith(("the loop widens", "tension smallest near the top"))]
     argv = [STUDY + "mill.fast_mill", "case", "--scene", "laddermill_v2", "--speed", "5", "--start-ramp", "200",
             "--max-time", "3000"]
     out = run_command(argv, 2400)
@@ -64,7 +68,7 @@ def meijaard(tmp: Path) -> dict:
                   r"generator power ([-\d.]+) kW", out)
     if m is None:
         raise RuntimeError(f"python -m {' '.join(argv)} printed no summary:\n{out[-2000:]}")
-    return {"meijaard_v1": mill, "v2_at_5": [m.group(1) == "converged", float(m.group(2))]}
+    return {"meijaard_v1": mill, "meijaard_claims": claims, "v2_at_5": [m.group(1) == "converged", float(m.group(2))]}
 
 
 def podgaets(tmp: Path) -> dict:
@@ -114,6 +118,9 @@ def papers_differences(papers: dict, readme: str) -> list[str]:
     want, bad = [], []
     (per1, p1), (per2, p2) = papers["meijaard_v1"]["1"], papers["meijaard_v1"]["2"]
     want.append((f"periodic at 1 and 2 m/s ({p1:.1f}, {p2:.0f} kW", per1 and per2))
+    claims = papers["meijaard_claims"]
+    for words in ("the loop widens with V_c", "the smallest tension at the top"):
+        want.append((words, len(claims) == 3 and all(agrees == "yes" for _, agrees in claims)))
     periodic5, p5 = papers["v2_at_5"]
     want.append((f"({p5:.1f} kW at 5 m/s;", periodic5))
     n, mb = papers["podgaets"]
