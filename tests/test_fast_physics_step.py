@@ -7,6 +7,9 @@ both cores from 2 copies on, bit for bit whatever the thread count.
 
 from __future__ import annotations
 
+import sys
+import warnings
+
 import gymnasium as gym
 import numba
 import numpy as np
@@ -17,6 +20,7 @@ from laddermill_gym.control.factory import make_controller
 from laddermill_gym.envs.physics_step import env_physics_settings, physics_scene_options
 from laddermill_gym.envs.task_base import default_parallel
 from laddermill_gym.sim.simulator import IntegratorSettings
+from laddermill_gym.studies.benchmarks.env_benchmark import thread_cpu_seconds, threads_working
 from laddermill_gym.studies.benchmarks.physics_step_accuracy import compare
 
 CHAIN = "laddermill_gym/LadderChain-v0"
@@ -50,29 +54,79 @@ def test_mill_v2_ros34pw2_within_1e_3_of_the_extent():
     assert e_fast < 1e-3 * extent  # measured 2.4 mm (7e-7 of the extent)
 
 
-def test_bit_identical_whatever_the_thread_count():
-    """Two copies of the chain step on the thread pool by default; one thread, two threads and the serial kernel
-    give the same observations and rewards bit for bit."""
-    if numba.config.NUMBA_NUM_THREADS < 2:
-        pytest.skip("needs numba's pool of at least 2 threads (NUMBA_NUM_THREADS)")
+#: a small mill on LadderMill-v2's wing (11 wings, 30 s of settling: its fallback start, about a second; 11 wings
+#: are below the pool's default state size, so ``parallel=True`` is given) and wide terminations
+SMALL_MILL = dict(scene_options={"n_wings": 11}, settle={"max_time": 30.0},
+                  termination={"alpha_range_deg": (-180.0, 180.0), "max_abs_beta_deg": 90.0})
+
+
+def open_loop(env_id: str, obs: np.ndarray, kwargs: dict) -> np.ndarray:
+    """The open-loop actions of the registered id; zero for a changed scene (the mill's a = 0 holds its start's
+    controls)."""
+    if kwargs:
+        return np.zeros((obs.shape[0], 3 * kwargs["scene_options"]["n_wings"]), dtype=np.float32)
+    return np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
+
+
+def thread_runs(env_id: str, n_steps: int = 3, **kwargs) -> list:
+    """(observations, rewards) per step of two differing copies with ``physics_step="ros34pw2"`` on one thread of
+    the pool, two threads and the serial kernel."""
     runs = []
-    for threads, parallel in ((1, None), (2, None), (2, False)):
+    for threads, parallel in ((1, True), (2, True), (2, False)):
         numba.set_num_threads(threads)
         try:
-            env = gym.make_vec(CHAIN, num_envs=2, vectorization_mode="vector_entry_point", parallel=parallel,
-                               physics_step="ros34pw2")
-            assert env.task.parallel == (parallel is None)
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", RuntimeWarning)  # the small mill's fallback start
+                env = gym.make_vec(env_id, num_envs=2, vectorization_mode="vector_entry_point", parallel=parallel,
+                                   physics_step="ros34pw2", **kwargs)
+            assert env.task.parallel == parallel
             obs, _ = env.reset(seed=3)
-            a = np.asarray(make_controller("open_loop", CHAIN).predict(obs)[0], dtype=np.float32)
+            a = open_loop(env_id, obs, kwargs)
             a[1] = np.clip(a[1] + 0.2, -1.0, 1.0)  # the copies differ
-            steps = [env.step(a) for _ in range(3)]
+            steps = [env.step(a) for _ in range(n_steps)]
             runs.append([(o.copy(), r.copy()) for o, r, *_ in steps])
             env.close()
         finally:
             numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
+    return runs
+
+
+@pytest.mark.parametrize("env_id, kwargs", [(CHAIN, {}), (MILL, SMALL_MILL)], ids=["chain", "mill"])
+def test_bit_identical_whatever_the_thread_count(env_id, kwargs):
+    """The chain's and the mill's copies with ROS34PW2 on the thread pool (one thread, two threads) and on the
+    serial kernel give the same observations and rewards bit for bit."""
+    if numba.config.NUMBA_NUM_THREADS < 2:
+        pytest.skip("needs numba's pool of at least 2 threads (NUMBA_NUM_THREADS)")
+    runs = thread_runs(env_id, **kwargs)
     for other in runs[1:]:
         for (o1, r1), (o2, r2) in zip(runs[0], other, strict=True):
             assert np.array_equal(o1, o2) and np.array_equal(r1, r2)
+
+
+def test_the_mill_w_step_is_shared_by_the_pool_threads():
+    """The mill's ROS34PW2 step runs on both of the pool's threads (last session's benchmark read "cpu 1.00" for
+    it, a CPU share that other work on the machine lowers; never reproduced): the CPU seconds each thread of this
+    process spends while 16 copies step (Linux's per-thread clock, which other work does not change)."""
+    if numba.config.NUMBA_NUM_THREADS < 2 or not sys.platform.startswith("linux"):
+        pytest.skip("needs numba's pool of at least 2 threads and Linux's per-thread CPU clock")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        env = gym.make_vec(MILL, num_envs=16, vectorization_mode="vector_entry_point", parallel=True,
+                           physics_step="ros34pw2", **SMALL_MILL)
+    obs, _ = env.reset(seed=0)
+    a = open_loop(MILL, obs, SMALL_MILL)
+    env.step(a)
+    numba.set_num_threads(2)
+    try:
+        before = thread_cpu_seconds()
+        for _ in range(150):
+            env.step(a)
+        after = thread_cpu_seconds()
+    finally:
+        numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
+    used = sorted((after[k] - before.get(k, 0.0) for k in after), reverse=True)
+    assert used[0] > 0.2, used  # enough work to read clock ticks
+    assert used[1] > 0.5 * used[0], used  # the second thread did about half the work
 
 
 def test_default_parallel_from_two_copies_for_the_large_models():
@@ -98,3 +152,13 @@ def test_physics_step_arguments():
         physics_scene_options({"method": "rk4"}, "ros2", None, 0.05)
     with pytest.raises(ValueError, match="physics_step = 'dp54'"):
         gym.make(CHAIN, physics_step="dp54")
+
+
+def test_threads_working_counts_the_threads_worth_of_work():
+    """bench-envs' "threads": the threads' CPU seconds over the busiest's (hand-computed readings)."""
+    assert threads_working({"1": 1.0, "2": 5.0}, {"1": 3.0, "2": 7.0, "3": 1.0}) == 2.5  # (2 + 2 + 1) / 2
+    assert threads_working({"1": 1.0}, {"1": 3.0, "2": 0.0}) == 1.0
+    assert threads_working({}, {}) is None
+    readings = thread_cpu_seconds()
+    if sys.platform.startswith("linux"):
+        assert readings and all(v >= 0.0 for v in readings.values())

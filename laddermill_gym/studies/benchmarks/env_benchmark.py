@@ -19,12 +19,43 @@ import numpy as np
 from laddermill_gym.envs import ENTRY_POINTS, ENV_IDS
 
 
-def _steps_per_second(env, action: np.ndarray, n_steps: int, repeats: int) -> tuple[float, float]:
+def thread_cpu_seconds() -> dict[str, float]:
+    """CPU seconds (user + system) of each thread of this process by thread id, from Linux's ``/proc/self/task``
+    (a clock of its own per thread, not slowed by other work on the machine); empty where there is none."""
+    out: dict[str, float] = {}
+    tick = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
+    try:
+        tasks = os.listdir("/proc/self/task")
+    except OSError:
+        return out
+    for tid in tasks:
+        try:
+            with open(f"/proc/self/task/{tid}/stat") as fh:
+                f = fh.read().rsplit(")", 1)[1].split()
+        except OSError:  # a thread that ended meanwhile
+            continue
+        out[tid] = (int(f[11]) + int(f[12])) / tick  # utime, stime (fields 14, 15 of proc(5))
+    return out
+
+
+def threads_working(before: dict, after: dict) -> float | None:
+    """The threads' worth of work between two :func:`thread_cpu_seconds` readings: their CPU seconds over the
+    busiest thread's (1.0: one thread did everything; 2.0: two shared it evenly); None without readings. Unlike
+    the CPU share it does not fall when other work loads the machine. OpenMP's workers spin briefly after each
+    parallel region, which counts a little here."""
+    used = [after[k] - before.get(k, 0.0) for k in after]
+    top = max(used, default=0.0)
+    return sum(used) / top if top > 0 else None
+
+
+def _steps_per_second(env, action: np.ndarray, n_steps: int, repeats: int) -> tuple[float, float, float | None]:
     """(median env steps per wall second, median CPU seconds of this process per wall second over the repeats:
-    about the threads kept busy; well below them on a machine loaded by other work)."""
+    about the threads kept busy; well below them on a machine loaded by other work, and
+    :func:`threads_working` over all repeats: how many threads shared the work, whatever the load)."""
     env.reset(seed=0)
     env.step(action)  # warm-up
     rates, shares = [], []
+    th0 = thread_cpu_seconds()
     for _ in range(repeats):
         t0, c0 = time.perf_counter(), time.process_time()
         for _ in range(n_steps):
@@ -32,7 +63,7 @@ def _steps_per_second(env, action: np.ndarray, n_steps: int, repeats: int) -> tu
         wall = time.perf_counter() - t0
         rates.append(n_steps * env.num_envs / wall)
         shares.append((time.process_time() - c0) / wall)
-    return float(np.median(rates)), float(np.median(shares))
+    return float(np.median(rates)), float(np.median(shares)), threads_working(th0, thread_cpu_seconds())
 
 
 def bench_vector(env_id: str, counts=(1, 8, 64, 512), quick: bool = False, echo=print,
@@ -42,7 +73,8 @@ def bench_vector(env_id: str, counts=(1, 8, 64, 512), quick: bool = False, echo=
     of it (at least 3 steps). ``variants``: label -> env arguments of further native envs measured in the same
     run (e.g. the registered step on one thread, the step ``physics_step="ros34pw2"``), each with its ratio. Each
     rate comes with its CPU share ("cpu": this process's CPU seconds per wall second, about the threads kept
-    busy; on a loaded machine well below them, so the wall rates are then the machine's share, not its speed)."""
+    busy; on a loaded machine well below them, so the wall rates are then the machine's share, not its speed) and
+    each native rate with the threads that shared its work ("threads": :func:`threads_working`, whatever the load)."""
     from laddermill_gym.control.factory import make_controller
 
     kwargs = ENV_IDS[env_id]
@@ -50,28 +82,35 @@ def bench_vector(env_id: str, counts=(1, 8, 64, 512), quick: bool = False, echo=
     per_repeat = budget / 5 if quick else budget  # copy-steps per repeat for the native env
     rows = []
     for n in counts:
-        rates, shares = {}, {}
+        rates, shares, threads = {}, {}, {}
         for label, extra in {"native": {}, **(variants or {})}.items():
             native = gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **extra)
             obs, _ = native.reset(seed=0)
             act = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
-            rates[label], shares[label] = _steps_per_second(native, act, max(5, int(per_repeat / n) // 10),
-                                                            3 if quick else 5)
+            n_steps = max(5, int(per_repeat / n) // 10)
+            rates[label], shares[label], threads[label] = _steps_per_second(native, act, n_steps, 3 if quick else 5)
             native.close()
         sync = gym.vector.SyncVectorEnv([lambda: single(**kwargs) for _ in range(n)])
-        sync_rate, sync_share = _steps_per_second(sync, act, max(3, int(budget / 100 / (5 if quick else 1) / n)), 3)
+        sync_rate, sync_share, _ = _steps_per_second(sync, act, max(3, int(budget / 100 / (5 if quick else 1) / n)), 3)
         sync.close()
         native_rate = rates.pop("native")
         row = {"env": env_id, "copies": n, "native_steps_per_s": native_rate, "sync_steps_per_s": sync_rate,
-               "ratio": native_rate / sync_rate, "native_cpu_share": shares.pop("native"), "sync_cpu_share": sync_share}
+               "ratio": native_rate / sync_rate, "native_cpu_share": shares.pop("native"), "sync_cpu_share": sync_share,
+               "native_threads": threads.pop("native")}
         if rates:
-            row["variants"] = {k: {"steps_per_s": v, "ratio": v / sync_rate, "cpu_share": shares[k]}
-                               for k, v in rates.items()}
-        extra_text = "".join(f"   {k} {v:10,.0f} ({v / sync_rate:.1f}x; cpu {shares[k]:.2f})" for k, v in rates.items())
-        echo(f"  {n:5d} copies: native {native_rate:12,.0f} steps/s (cpu {row['native_cpu_share']:.2f}){extra_text}   "
+            row["variants"] = {k: {"steps_per_s": v, "ratio": v / sync_rate, "cpu_share": shares[k],
+                                   "threads": threads[k]} for k, v in rates.items()}
+        extra_text = "".join(f"   {k} {v:10,.0f} ({v / sync_rate:.1f}x; cpu {shares[k]:.2f}{_th(threads[k])})"
+                             for k, v in rates.items())
+        echo(f"  {n:5d} copies: native {native_rate:12,.0f} steps/s (cpu {row['native_cpu_share']:.2f}"
+             f"{_th(row['native_threads'])}){extra_text}   "
              f"SyncVectorEnv {sync_rate:10,.0f} steps/s (cpu {sync_share:.2f})   ratio {row['ratio']:7.1f}x")
         rows.append(row)
     return rows
+
+
+def _th(threads: float | None) -> str:
+    return "" if threads is None else f", threads {threads:.2f}"
 
 
 #: the further native envs of the 101-wing envs' rows (issue 32 point 3): the registered step on one thread (the
@@ -91,6 +130,9 @@ ENVS: dict[str, tuple] = {
                       (1, 16, 64), {"budget": 5e4}),
     "LadderMill-v0": ("laddermill_gym/LadderMill-v0", "101 wings on the moving cable, 20 Hz control", (1, 8),
                       {"quick": True, "budget": 2e4}),
+    "LadderMill-v1": ("laddermill_gym/LadderMill-v1",
+                      "101 v1 wings on the moving cable (ppo_mill's env), five RK4 steps of 10 ms per 20 Hz period",
+                      (1, 8), _OPTS_101),
     "LadderMill-v2": ("laddermill_gym/LadderMill-v2",
                       "101 v2 wings on the moving cable, five RK4 steps of 10 ms per 20 Hz period", (1, 8), _OPTS_101),
     "PointMassChain-v0": ("laddermill_gym/PointMassChain-v0",
@@ -99,14 +141,15 @@ ENVS: dict[str, tuple] = {
 }
 #: the result keys of the JSON file (as before the options came)
 _KEYS = {"TetheredWing-v0": "tethered_wing", "LadderChain-v0": "ladder_chain", "Rotorcraft-v0": "rotorcraft",
-         "LadderMill-v0": "laddermill", "PointMassChain-v0": "pointmass_chain", "LadderMill-v2": "laddermill_v2"}
+         "LadderMill-v0": "laddermill", "PointMassChain-v0": "pointmass_chain", "LadderMill-v2": "laddermill_v2",
+         "LadderMill-v1": "laddermill_v1"}
 
 
 def run_env_benchmark(quick: bool = False, json_path: str | None = None, echo=print, envs=None,
                       copies=None) -> dict:
     """The env benchmark: every env of :data:`ENVS` (or those named in ``envs``) at its copy counts (``copies``:
-    these counts for every env instead); LadderMill-v0 and -v2 compute their operating points (30 s, 100-140 s)
-    once."""
+    these counts for every env instead); the LadderMill ids compute their operating points (30-140 s) once, or read
+    them from the on-disk cache (``envs/laddermill/op_cache.py``)."""
     threads = os.environ.get("NUMBA_NUM_THREADS", "default")
     echo(f"Environment throughput (medians; numba threads: {threads}; cpus: {os.cpu_count()})")
     res = {"cpus": os.cpu_count(), "numba_threads": threads}
@@ -170,7 +213,7 @@ def thread_scaling(thread_counts, envs=None, copies: int = 512, quick: bool = Fa
         for k in counts:
             numba.set_num_threads(k)
             n_steps = max(5, int((2e5 if quick else 1e6) / copies) // 10)  # the bench_vector budget per repeat
-            rate, _ = _steps_per_second(native, act, n_steps, 3 if quick else 5)
+            rate, _, _ = _steps_per_second(native, act, n_steps, 3 if quick else 5)
             rows.append({"threads": k, "steps_per_s": rate, "speedup": rate / rows[0]["steps_per_s"] if rows else 1.0})
             echo(f"  {k:3d} threads: {rate:12,.0f} steps/s   speed-up {rows[-1]['speedup']:5.2f}x")
         native.close()
