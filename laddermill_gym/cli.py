@@ -356,10 +356,10 @@ def build_parser() -> argparse.ArgumentParser:
     b.add_argument("--no-pointmass", action="store_true",
                    help="leave out the point-mass scenes (podgaets_5km: 500,000 elements, memory and cost)")
     b.add_argument("--startup", action="store_true",
-                   help="only the envs' start-up: make + reset + step in fresh processes, cold (empty numba cache) "
-                        "and warm; with --quick warm only, from the current cache")
+                   help="only the envs' start-up: make + reset + step in fresh processes, cold (empty numba and "
+                        "operating-point caches) and warm; with --quick warm only, from the current caches")
     e = _benchmark_parser(sub, "bench-envs", "env steps/s: native batched vector env vs SyncVectorEnv", cmd_bench_envs)
-    e.add_argument("--envs", nargs="+", default=None, help="only these envs, e.g. TetheredWing-v0 (default: all six)")
+    e.add_argument("--envs", nargs="+", default=None, help="only these envs, e.g. TetheredWing-v0 (default: all seven)")
     e.add_argument("--copies", nargs="+", type=int, default=None, help="these copy counts for every env named")
     e.add_argument("--threads", nargs="+", type=int, default=None, help="thread scaling at the largest --copies (512)")
     c = sub.add_parser("scenes", help="list the scenes")

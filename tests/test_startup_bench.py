@@ -30,7 +30,7 @@ def test_quick_startup_is_warm_and_compiles_nothing(capsys):
     assert warm["cache_dir"] == CACHE_DIR
     assert 0.0 < warm["inside_s"] < warm["wall_s"] < 60.0
     out = capsys.readouterr().out
-    assert f"== start-up {ENV}" in out and "warm (cache filled)" in out and "cold" not in out.split("==")[1]
+    assert f"== start-up {ENV}" in out and "warm (caches filled)" in out and "cold" not in out.split("==")[1]
 
 
 def test_cli_quick_startup_runs(capsys, monkeypatch):

@@ -1,13 +1,15 @@
 """Start-up time of the environments (``laddermill bench --startup``, issue 32 point 1): a fresh Python process that
-imports gymnasium and the package, makes an env, resets it and takes one step, timed with an empty numba cache
-(cold: every kernel compiled; ``NUMBA_CACHE_DIR`` a new temporary folder) and again with the cache that run left
-(warm: every kernel loaded from it).
+imports gymnasium and the package, makes an env, resets it and takes one step, timed with empty caches
+(cold: every kernel compiled and LadderMill's operating point computed; ``NUMBA_CACHE_DIR`` and
+``LADDERMILL_CACHE_DIR`` in a new temporary folder) and again with the caches that run left (warm: every kernel
+and operating point loaded from them).
 
 Each measurement is its own subprocess (``python -c`` :data:`CHILD`), timed from the outside (interpreter start
 included) and from the inside (the imports to the first step); the child
 also counts the functions numba compiled (``numba.core.event``), so a warm start that compiles anything shows it.
 ``--profile`` (``python -m laddermill_gym.studies.benchmarks.startup --profile --envs ID``) takes one cold start
-with every compile timed (:data:`PROFILE_CHILD`) and prints where the seconds go, function by function.
+with every compile timed (:data:`PROFILE_CHILD`) and prints where the seconds go, phase by phase (make, which
+computes the mill's operating point, reset, step) and function by function.
 Machines are shared and noisy: the warm start is the median of a few runs; compare cold starts taken in the same
 period. The targets are issue 32's: TetheredWing-v0 and Rotorcraft-v0 at most 20 s cold and 1 s warm,
 LadderMill-v0 (its operating point included) at most 60 s cold.
@@ -23,6 +25,8 @@ import subprocess
 import sys
 import tempfile
 import time
+
+from laddermill_gym.envs.laddermill.op_cache import CACHE_VARIABLE
 
 #: env id -> (cold target [s], warm target [s] or None): issue 32, point 1
 TARGETS: dict[str, tuple[float, float | None]] = {
@@ -96,32 +100,40 @@ event.register("numba:compile", Tree())
 import gymnasium
 import numpy as np
 import laddermill_gym
-phase[0] = "make"
+phases = {{}}
+def mark(name):
+    phases[phase[0]] = time.process_time() - phases.get("_at", 0.0)
+    phases["_at"] = time.process_time()
+    phase[0] = name
+mark("make")
 env = gymnasium.make({env_id!r})
-phase[0] = "reset"
+mark("reset")
 env.reset(seed=0)
-phase[0] = "step"
+mark("step")
 env.step(np.zeros(env.action_space.shape, dtype=env.action_space.dtype))
+mark("end")
+del phases["_at"]
 seconds = time.perf_counter() - t0
 import resource
 use = resource.getrusage(resource.RUSAGE_SELF)
-print(json.dumps({{"inside_s": seconds, "cpu_s": use.ru_utime + use.ru_stime, "rows": rows}}))
+print(json.dumps({{"inside_s": seconds, "cpu_s": use.ru_utime + use.ru_stime, "rows": rows, "phases": phases}}))
 """
 
 
 def profile(env_id: str, top: int = 25, echo=print) -> dict:
-    """One cold start of ``env_id`` (a new, empty numba cache) with every compile timed: prints the functions
-    with the most seconds of their own and the seconds per phase; returns the child's figures."""
+    """One cold start of ``env_id`` (new, empty numba and operating-point caches) with every compile timed: prints
+    the functions with the most seconds of their own and the seconds per phase; returns the child's figures."""
     with tempfile.TemporaryDirectory(prefix="laddermill_numba_") as tmp:
         res = run_child(env_id, tmp, PROFILE_CHILD)
     rows = res["rows"]
+    cpu = res["phases"]
     echo(f"== compile profile {env_id}: cold start {res['wall_s']:.1f} s (inside {res['inside_s']:.1f} s, CPU "
          f"{res['cpu_s']:.1f} s), {len(rows)} functions compiled")
     for ph in ("import", "make", "reset", "step"):
         sel = [r for r in rows if r["phase"] == ph]
-        if sel:
-            echo(f"  {ph:6s} {sum(r['self_cpu_s'] for r in sel):7.1f} s CPU compiling ({len(sel)} functions; "
-                 f"{sum(r['self_s'] for r in sel):.1f} s wall)")
+        if sel or ph in cpu:
+            echo(f"  {ph:6s} {cpu.get(ph, 0.0):7.1f} s CPU, of which {sum(r['self_cpu_s'] for r in sel):.1f} s "
+                 f"compiling ({len(sel)} functions; {sum(r['self_s'] for r in sel):.1f} s wall)")
     echo(f"  {'self CPU [s]':>12s} {'total CPU [s]':>13s} {'self wall [s]':>13s}  phase  function (nesting depth)")
     for r in sorted(rows, key=lambda r: -r["self_cpu_s"])[:top]:
         echo(f"  {r['self_cpu_s']:12.2f} {r['total_cpu_s']:13.2f} {r['self_s']:13.2f}  {r['phase']:5s}  {r['name']} "
@@ -130,11 +142,14 @@ def profile(env_id: str, top: int = 25, echo=print) -> dict:
 
 
 def run_child(env_id: str, cache_dir: str | None, child: str = CHILD) -> dict:
-    """One start-up of ``env_id`` in a fresh subprocess with ``NUMBA_CACHE_DIR`` = ``cache_dir`` (None: this
-    process's environment as it is): the child's figures plus ``wall_s``, the subprocess's wall time [s]."""
+    """One start-up of ``env_id`` in a fresh subprocess with ``NUMBA_CACHE_DIR`` = ``cache_dir`` and the mill's
+    operating-point cache (``LADDERMILL_CACHE_DIR``, ``envs/laddermill/op_cache.py``) in its ``laddermill``
+    sub-folder (None: this process's environment as it is): the child's figures plus ``wall_s``, the subprocess's
+    wall time [s]."""
     env = dict(os.environ)
     if cache_dir is not None:
         env["NUMBA_CACHE_DIR"] = cache_dir
+        env[CACHE_VARIABLE] = os.path.join(cache_dir, "laddermill")
     cmd = [sys.executable, "-c", child.format(env_id=env_id)]
     t0 = time.perf_counter()
     r = subprocess.run(cmd, env=env, capture_output=True, text=True)
@@ -147,8 +162,8 @@ def run_child(env_id: str, cache_dir: str | None, child: str = CHILD) -> dict:
 
 
 def measure(env_id: str, cold: bool = True, warm_repeats: int = WARM_REPEATS) -> dict:
-    """Cold start (a new, empty numba cache) and the median of ``warm_repeats`` warm starts from the cache it
-    left; with ``cold`` False, warm starts only, from the cache this process's environment names."""
+    """Cold start (new, empty numba and operating-point caches) and the median of ``warm_repeats`` warm starts from
+    the caches it left; with ``cold`` False, warm starts only, from the caches this process's environment names."""
     res: dict = {"env": env_id}
     with tempfile.TemporaryDirectory(prefix="laddermill_numba_") as tmp:
         cache = tmp if cold else None
@@ -174,10 +189,10 @@ def report(res: dict, echo=print) -> None:
     echo(f"== start-up {res['env']}: make + reset + one step in a fresh process")
     if "cold" in res:
         c = res["cold"]
-        echo(f"  cold (empty numba cache)  {c['wall_s']:7.1f} s  (inside {c['inside_s']:.1f} s, "
+        echo(f"  cold (empty caches)       {c['wall_s']:7.1f} s  (inside {c['inside_s']:.1f} s, "
              f"CPU {c['cpu_s']:.1f} s, {c['compiled']} functions compiled) {_verdict(c['wall_s'], cold_t)}")
     w = res["warm"]
-    echo(f"  warm (cache filled)       {w['wall_s']:7.2f} s  (inside {w['inside_s']:.2f} s, CPU {w['cpu_s']:.2f} s, "
+    echo(f"  warm (caches filled)      {w['wall_s']:7.2f} s  (inside {w['inside_s']:.2f} s, CPU {w['cpu_s']:.2f} s, "
          f"{w['compiled']} functions compiled, median of {w['runs']}) {_verdict(w['wall_s'], warm_t)}")
 
 
