@@ -51,3 +51,8 @@ def test_outputs_hold_the_recorded_series(runs, tmp_path):
         assert len(mine) == len(r.t_s)
         assert np.allclose([float(x["power_W"]) for x in mine], r.power_W, rtol=1e-5)
         assert np.allclose([float(x["max_lateral_m"]) for x in mine], r.lateral_m, rtol=1e-5, atol=1e-9)
+
+
+def test_the_default_set_flies_the_shipped_policy_of_the_env():
+    assert demo.default_controllers("laddermill_gym/LadderMill-v1") == ["open_loop", "lqr", "ppo_mill"]
+    assert demo.default_controllers("laddermill_gym/LadderMill-v0") == ["open_loop", "lqr"]

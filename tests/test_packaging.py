@@ -164,6 +164,8 @@ def test_wheel_holds_the_sources_and_configs(wheel_site):
     assert configs == want_configs, (f"wheel configs: missing {sorted(want_configs - configs)}, "
                                      f"extra {sorted(configs - want_configs)}")
     assert "laddermill_gym/py.typed" in names
+    policies = {p.relative_to(ROOT).as_posix() for p in (PACKAGE / "policies").rglob("*") if p.is_file()}
+    assert policies <= names, f"wheel policies: missing {sorted(policies - names)}"  # model, actor, stats, README
 
 
 def test_wheel_runs_outside_the_repository(wheel_site, tmp_path):

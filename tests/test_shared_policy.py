@@ -14,13 +14,13 @@ pytest.importorskip("stable_baselines3", reason="the rl extra (SB3) is not insta
 import torch as th  # noqa: E402
 
 from laddermill_gym.control.shared_policy import (  # noqa: E402
-    LATERAL_FIELDS,
     GainScheduledExtractor,
     SharedPolicyController,
     hat_basis,
 )
 from laddermill_gym.envs.observation import OBS_INDEX  # noqa: E402
 from tests.env_cases import LM1, case_kwargs  # noqa: E402
+from tests.shared_actor_oracle import oracle_features  # noqa: E402
 
 
 def test_hat_basis_interpolates_linearly_between_nodes():
@@ -31,32 +31,6 @@ def test_hat_basis_interpolates_linearly_between_nodes():
     np.testing.assert_allclose(h[1], [0, 1, 0, 0, 0])
     np.testing.assert_allclose(h[2], [0, 0.8, 0.2, 0, 0], atol=1e-12)  # (0.5 - 0.3) / 0.25 on node 0.25
     np.testing.assert_allclose(hat_basis(p, 1).numpy(), 1.0)
-
-
-def oracle_features(obs: np.ndarray, n: int, k: int, block: int, nb: int, trim: np.ndarray, scales: np.ndarray):
-    """Features of one local observation by explicit loops: slot from the position entry, each seen wing's six
-    lateral entries less its slot's trim, wrapped yaw, over the scales, zero when absent, then a 1; times the
-    hat functions max(0, 1 - |p - j / (nb - 1)| (nb - 1))."""
-    flags = obs[block * (2 * k + 1): block * (2 * k + 1) + 2 * k]
-    p = obs[block * (2 * k + 1) + 2 * k]
-    i = int(round(p * (n - 1)))
-    offsets = [0] + [d for d in range(-k, k + 1) if d != 0]
-    z = []
-    for j, d in enumerate(offsets):
-        present = 1.0 if j == 0 else flags[j - 1]
-        s = min(max(i + d, 0), n - 1)
-        row = []
-        for f, name in enumerate(LATERAL_FIELDS):
-            v = obs[j * block + OBS_INDEX[name]]
-            if name == "phi":
-                v -= trim[s, 0]
-            if name == "psi":
-                v = (v - trim[s, 1] + np.pi) % (2 * np.pi) - np.pi
-            row.append(present * v / scales[f])
-        z.extend(row)
-    z.append(1.0)
-    h = [max(0.0, 1.0 - abs(p - j / (nb - 1)) * (nb - 1)) for j in range(nb)]
-    return np.outer(h, z).ravel()
 
 
 def test_features_match_the_numpy_oracle():

@@ -11,7 +11,9 @@
 * a path to a training run folder or model file: a Stable-Baselines3 policy (``rl`` extra), refused when it was
   trained on another env or its observation or action size is not the env's;
 * ``ppo_tethered_wing``, ``ppo_rotorcraft``, ``ppo_mill``: the policies shipped with the package
-  (``control/shipped_policies.py``).
+  (``control/shipped_policies.py``); a shared per-wing policy (``ppo_mill``, a ``laddermill train ppo_mill_v1``
+  run) runs from its exported ``linear_actor.npz`` when it has one (numpy only: no ``rl`` extra needed), else
+  from its SB3 model.
 """
 
 from __future__ import annotations
@@ -196,10 +198,15 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     if not path.exists():
         raise ValueError(f"controller = {spec!r}: not 'open_loop', 'lqr', 'lqr:<config>', a shipped policy "
                          f"({', '.join(sorted(SHIPPED_POLICIES))}) or an existing model path")
-    from laddermill_gym.control.shared_policy import SharedPolicyController
+    from laddermill_gym.control.shared_controller import LinearActorController, is_shared_run
 
-    if SharedPolicyController.is_shared_run(path):  # a shared per-wing policy (laddermill train ppo_mill_v1)
-        return SharedPolicyController.load(path, env_id, {k: v for k, v in kw.items() if k != "parallel"})
+    if is_shared_run(path):  # a shared per-wing policy (laddermill train ppo_mill_v1)
+        own = {k: v for k, v in kw.items() if k != "parallel"}
+        if LinearActorController.available(path):  # its linear actor exported: numpy, no torch
+            return LinearActorController.load(path, env_id, own)
+        from laddermill_gym.control.shared_policy import SharedPolicyController
+
+        return SharedPolicyController.load(path, env_id, own)
     from laddermill_gym.control.sb3_policy import SB3Controller
 
     ctrl = SB3Controller.load(path)

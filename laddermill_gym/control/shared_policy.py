@@ -19,23 +19,25 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import torch as th
-import yaml
 from stable_baselines3.common.torch_layers import BaseFeaturesExtractor
 
-from laddermill_gym.envs.observation import OBS_INDEX
-from laddermill_gym.multiagent.agents import AGENT_KINDS, WingAgents, build_task
+from laddermill_gym.control.shared_controller import (
+    LATERAL_FIELDS,
+    LINEAR_ACTOR_FILE,
+    SHARED_POLICY_FILE,
+    SharedController,
+    build_view,
+    file_digest,
+    lateral_columns,
+    read_shared_meta,
+)
+from laddermill_gym.multiagent.agents import WingAgents
 
 __all__ = ["LATERAL_FIELDS", "GainScheduledExtractor", "SharedPolicyController", "SHARED_POLICY_FILE",
-           "hat_basis"]
-
-#: The lateral entries of a wing block the actor uses, in the order of ``control.linearize.WING_LATERAL``.
-LATERAL_FIELDS = ("dy", "vy", "phi", "psi", "p", "r")
-#: The run folder's description of a shared policy (env id, k, agents, observation size, env arguments).
-SHARED_POLICY_FILE = "shared_policy.yaml"
+           "hat_basis", "export_linear_actor", "is_linear_actor"]
 
 
 def hat_basis(position: th.Tensor, n_basis: int) -> th.Tensor:
@@ -61,8 +63,7 @@ class GainScheduledExtractor(BaseFeaturesExtractor):
         self.n, self.k, self.block, self.n_basis = int(n_agents), int(k), int(block), int(n_basis)
         offsets = [0] + [d for d in range(-k, k + 1) if d != 0]  # own block, then the neighbours' order
         self.register_buffer("offsets", th.tensor(offsets, dtype=th.long))
-        cols = [j * block + OBS_INDEX[f] for j in range(2 * k + 1) for f in LATERAL_FIELDS]
-        self.register_buffer("cols", th.tensor(cols, dtype=th.long))
+        self.register_buffer("cols", th.tensor(lateral_columns(k, block), dtype=th.long))
         self.register_buffer("trim", th.as_tensor(np.asarray(trim, dtype=np.float32).reshape(self.n, 2)))
         self.register_buffer("scales", th.as_tensor(np.asarray(scales, dtype=np.float32).reshape(6)))
         self.flag0 = block * (2 * k + 1)  # first presence flag
@@ -92,39 +93,24 @@ class GainScheduledExtractor(BaseFeaturesExtractor):
         return th.cat([z, th.ones(N, 1, dtype=obs.dtype)], dim=1), pos
 
 
-def _read_meta(path: Path) -> dict[str, Any]:
-    try:
-        meta = yaml.safe_load(path.read_text())
-    except yaml.YAMLError as err:
-        raise ValueError(f"{path}: not readable YAML ({err})") from None
-    need = ("env", "k", "n_agents", "obs_dim", "algorithm")
-    missing = [f for f in need if not isinstance(meta, dict) or f not in meta]
-    if missing:
-        raise ValueError(f"{path}: missing {', '.join(missing)} (not a shared-policy run written by laddermill "
-                         "train)")
-    return meta
-
-
-class SharedPolicyController:
-    """``predict`` of a trained shared per-wing policy on the single-agent env's observations (B, D) or (D,):
-    every slot's local observation -> the policy (deterministic) -> the joint action (B, n m_a) in [-1, 1].
+class SharedPolicyController(SharedController):
+    """``predict`` of a trained shared per-wing policy's SB3 model (``rl`` extra) on the single-agent env's
+    observations (B, D) or (D,): every slot's local observation -> the policy (deterministic) -> the joint action
+    (B, n m_a) in [-1, 1] (:class:`~laddermill_gym.control.shared_controller.SharedController`).
 
     Build with :meth:`load` (a run folder holding ``shared_policy.yaml`` and ``model.zip``, or that model file).
-    ``check_env(env_id, env_kwargs)`` refuses another env, another number of agents or another observation size,
-    naming the file."""
+    ``check_env(env_id)`` refuses another env, another number of agents or another observation size, naming the
+    file. The shipped policies run torch-free from their exported ``linear_actor.npz`` (``LinearActorController``)."""
 
     def __init__(self, model, view: WingAgents, source: Path, meta: dict):
-        self.model, self.view, self.source, self.meta = model, view, source, meta
-        self.trained_env = str(meta["env"])
-        self.obs_dim = view.task.obs_dim
-        self.act_dim = view.n_agents * view.act_dim
+        super().__init__(view, source, meta)
+        self.model = model
 
-    @staticmethod
-    def is_shared_run(path: str | Path) -> bool:
-        """Whether ``path`` is a shared-policy run folder or a model file in one."""
-        path = Path(path)
-        folder = path if path.is_dir() else path.parent
-        return (folder / SHARED_POLICY_FILE).is_file()
+    def actions(self, local: np.ndarray) -> np.ndarray:
+        return self.model.predict(local, deterministic=True)[0]
+
+    def local_obs_dim(self) -> int:
+        return int(self.model.observation_space.shape[0])
 
     @classmethod
     def load(cls, path: str | Path, env_id: str | None = None, env_kwargs: dict | None = None
@@ -136,7 +122,7 @@ class SharedPolicyController:
         path = Path(path)
         folder = path if path.is_dir() else path.parent
         meta_file = folder / SHARED_POLICY_FILE
-        meta = _read_meta(meta_file)
+        meta = read_shared_meta(meta_file)
         model_file = folder / "model.zip" if path.is_dir() else path
         if not model_file.is_file():
             raise FileNotFoundError(f"{model_file}: no such model file (the run folder {folder} has "
@@ -144,50 +130,55 @@ class SharedPolicyController:
         algo = str(meta["algorithm"])
         if not hasattr(sb3, algo):
             raise ValueError(f"{meta_file}: algorithm = {algo!r} is not a Stable-Baselines3 algorithm")
-        env = env_id or str(meta["env"])
-        if env != meta["env"]:
-            raise ValueError(f"{model_file}: trained on {meta['env']}, not {env}; evaluate it on {meta['env']} or "
-                             f"train one for {env}")
-        if env not in AGENT_KINDS:
-            raise ValueError(f"{meta_file}: env = {env!r} has no per-wing interface ({sorted(AGENT_KINDS)})")
-        kw = dict(meta.get("env_kwargs") or {}) if env_kwargs is None else dict(env_kwargs)
-        kw.pop("disturbances", None)
-        kw.pop("parallel", None)
-        view = WingAgents(build_task(env, 1, kw), env, int(meta["k"]))
+        view = build_view(meta, model_file, env_id, env_kwargs)
         ctrl = cls(getattr(sb3, algo).load(model_file, device="cpu"), view, model_file, meta)
-        ctrl.check_env(env)
+        ctrl.check_env(env_id or str(meta["env"]))
         return ctrl
 
-    def check_env(self, env_id: str) -> None:
-        """Refuse an env id, agent count or local observation size other than the training's (ValueError naming
-        the model file and what does not match)."""
-        m, v = self.meta, self.view
-        if env_id != m["env"]:
-            raise ValueError(f"{self.source}: trained on {m['env']}, not {env_id}; evaluate it on {m['env']} or "
-                             f"train one for {env_id}")
-        if v.n_agents != int(m["n_agents"]):
-            raise ValueError(f"{self.source}: trained with {m['n_agents']} agents (slots), the env has "
-                             f"{v.n_agents} (n_wings or scene differ)")
-        shape = self.model.observation_space.shape
-        if shape != (v.obs_dim,) or int(m["obs_dim"]) != v.obs_dim:
-            raise ValueError(f"{self.source}: local observations of {shape} entries (k = {m['k']}), the env gives "
-                             f"{v.obs_dim}")
 
-    def local(self, observation: np.ndarray) -> tuple[np.ndarray, bool]:
-        obs = np.asarray(observation, dtype=np.float64)
-        single = obs.ndim == 1
-        obs = obs[None] if single else obs
-        if obs.ndim != 2 or obs.shape[1] != self.obs_dim:
-            raise ValueError(f"{self.source}: expects observations of {self.obs_dim} entries ({self.view.n_agents} "
-                             f"slots, {self.trained_env}), got shape {np.shape(observation)}")
-        return self.view.local_observations(obs), single
+def is_linear_actor(policy) -> bool:
+    """Whether an SB3 actor-critic ``policy``'s mean action is linear in GainScheduledExtractor's features (no
+    hidden actor layers), so that ``linear_actor.npz`` can hold it."""
+    ext = getattr(policy, "pi_features_extractor", policy.features_extractor)
+    return isinstance(ext, GainScheduledExtractor) and len(policy.mlp_extractor.policy_net) == 0
 
-    def predict(self, observation: np.ndarray, state: Any = None, episode_start: np.ndarray | None = None,
-                deterministic: bool = True) -> tuple[np.ndarray, Any]:
-        """Joint actions (B, n m_a) float32 (or (n m_a,)) of single-agent observations; always deterministic
-        (the policy's mean)."""
-        local, single = self.local(observation)
-        B = local.shape[0]
-        a, _ = self.model.predict(local.reshape(B * self.view.n_agents, -1), deterministic=True)
-        joint = np.clip(a, -1.0, 1.0).reshape(B, self.act_dim).astype(np.float32)
-        return (joint[0] if single else joint), state
+
+def export_linear_actor(model_file: str | Path) -> Path:
+    """Write the linear actor of the shared policy ``model_file`` (a ``model.zip`` beside its
+    ``shared_policy.yaml``) to ``linear_actor.npz`` in the same folder and return its path; ValueError naming the
+    file when the actor is not linear (hidden layers, another features extractor)."""
+    import stable_baselines3 as sb3
+
+    model_file = Path(model_file)
+    meta = read_shared_meta(model_file.parent / SHARED_POLICY_FILE)
+    policy = getattr(sb3, str(meta["algorithm"])).load(model_file, device="cpu").policy
+    ext = getattr(policy, "pi_features_extractor", policy.features_extractor)
+    if not is_linear_actor(policy):
+        raise ValueError(f"{model_file}: the actor is not linear in GainScheduledExtractor's features (extractor "
+                         f"{type(ext).__name__}, {len(policy.mlp_extractor.policy_net)} hidden layers); it needs "
+                         "torch (SharedPolicyController)")
+    out = model_file.parent / LINEAR_ACTOR_FILE
+    arrays = dict(weight=policy.action_net.weight, bias=policy.action_net.bias, trim=ext.trim, scales=ext.scales,
+                  offsets=ext.offsets, cols=ext.cols)
+    with open(out, "wb") as f:
+        np.savez(f, **{key: val.detach().cpu().numpy() for key, val in arrays.items()}, n_agents=ext.n, k=ext.k,
+                 block=ext.block, n_basis=ext.n_basis, model_sha256=file_digest(model_file))
+    return out
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m laddermill_gym.control.shared_policy --export RUN/model.zip``: write its linear_actor.npz."""
+    import argparse
+
+    p = argparse.ArgumentParser(description=main.__doc__)
+    p.add_argument("--export", nargs="+", required=True, metavar="MODEL_ZIP", help="shared-policy model files")
+    # the package's module, not __main__: the saved model's extractor class is the package's
+    from laddermill_gym.control import shared_policy
+
+    for model_file in p.parse_args(argv).export:
+        print(shared_policy.export_linear_actor(model_file))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

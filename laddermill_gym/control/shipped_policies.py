@@ -6,7 +6,9 @@ Each folder is a trimmed training run folder (``laddermill train <config> --seed
 SB3 model), ``vecnormalize.pkl`` (its observation statistics), ``config.yaml`` (the training config, which names
 the env), ``algorithm.txt`` and ``README.md`` (the command and seed that reproduce it, and its scores). A shared
 per-wing policy of the mill (``ppo_mill``: ``laddermill train ppo_mill_v1``) has ``shared_policy.yaml`` instead of
-``vecnormalize.pkl`` (its actor scales its inputs by fixed Bryson scales) and its config is ``ppo_mill_v1.yaml``.
+``vecnormalize.pkl`` (its actor scales its inputs by fixed Bryson scales), its config is ``ppo_mill_v1.yaml``, and
+``linear_actor.npz`` (its linear actor exported from ``model.zip``) lets it run without torch
+(``control/shared_controller.py``).
 """
 
 from __future__ import annotations

@@ -223,7 +223,7 @@ def policy_env_kwargs(spec: str, env_id: str | None = None) -> dict:
     folder = path if path.is_dir() else path.parent
     if not (path.exists() and (folder / "config.yaml").is_file()):
         return {}
-    from laddermill_gym.control.shared_policy import SHARED_POLICY_FILE
+    from laddermill_gym.control.shared_controller import SHARED_POLICY_FILE
 
     if (folder / SHARED_POLICY_FILE).is_file():  # a shared per-wing policy: its own description holds the env's
         import yaml  # control settings (laddermill train ppo_mill_v1; its config.yaml is not an SB3 run's)

@@ -1,8 +1,9 @@
 """The package's main job: the laddermill from its periodic operating point through the paper's 0.01 rad
-wind-direction step, once open loop and once under the lateral LQR (and any trained policy given), in one figure
-and one GIF.
+wind-direction step, open loop, under the lateral LQR and under the shipped learned policy (``ppo_mill``: one
+policy shared by the 101 slots, run torch-free from its exported linear actor), in one figure and one GIF.
 
-    laddermill demo [--env laddermill_gym/LadderMill-v1] [--time 60] [--controllers open_loop lqr] [--out runs]
+    laddermill demo [--env laddermill_gym/LadderMill-v1] [--time 60] [--controllers open_loop lqr ppo_mill]
+                    [--out runs]
 
 Every run starts from the same state (the env's operating point, seed 0) and meets the same step (Meijaard et al.
 1999, Fig. 8: 0.01 rad at 1 s). The figure ``demo.png`` shows, against the time since the step, the generator's
@@ -24,7 +25,8 @@ from tqdm import tqdm
 
 from laddermill_gym.studies.commands import Parser, UsageError, check_controllers, check_number
 
-__all__ = ["DEFAULT_ENV", "STEP", "STEP_TIME", "ControlRun", "run_demo", "plot_demo", "write_gif", "main"]
+__all__ = ["DEFAULT_ENV", "STEP", "STEP_TIME", "ControlRun", "default_controllers", "run_demo", "plot_demo",
+           "write_gif", "main"]
 
 #: the main job's mill: v1, 153 kW at the paper's Fig. 8 speed of 2 m/s (LadderMill-v2, the wing periodic up to
 #: 5 m/s, is a second design, not v1's replacement: 102 kW at 2 m/s; ``--env laddermill_gym/LadderMill-v2``)
@@ -82,6 +84,19 @@ def _run_one(env, controller, label: str, frame_every: int | None, progress: boo
     if renderer is not None:
         renderer.close()
     return ControlRun(label, np.array(t), np.array(power), np.array(lateral), pos.copy(), seg.copy(), outcome, frames)
+
+
+def default_controllers(env_id: str) -> list[str]:
+    """Open loop, the LQR and the policies shipped for ``env_id`` that this install can run: a shared per-wing
+    policy with its exported linear actor (numpy only; ``ppo_mill`` on LadderMill-v1), any other with SB3."""
+    import importlib.util
+
+    from laddermill_gym.control.shared_controller import LinearActorController
+    from laddermill_gym.control.shipped_policies import POLICY_DIR, SHIPPED_POLICIES
+
+    sb3 = importlib.util.find_spec("stable_baselines3") is not None
+    return ["open_loop", "lqr"] + [name for name, env in SHIPPED_POLICIES.items() if env == env_id and (
+        sb3 or LinearActorController.available(POLICY_DIR / name))]
 
 
 def run_demo(env_id: str = DEFAULT_ENV, controllers=("open_loop", "lqr"), duration: float = 60.0,
@@ -181,8 +196,9 @@ def write_csv(runs: list[ControlRun], path: Path) -> Path:
 
 def _arguments(p) -> None:
     p.add_argument("--env", default=DEFAULT_ENV, help=f"a mill env id (default {DEFAULT_ENV})")
-    p.add_argument("--controllers", nargs="+", default=["open_loop", "lqr"],
-                   help="open_loop, lqr, lqr:CONFIG or a trained policy (run folder or model file)")
+    p.add_argument("--controllers", nargs="+", default=None,
+                   help="open_loop, lqr, lqr:CONFIG, a shipped policy or a trained one (run folder or model file); "
+                        "default: open_loop, lqr and the env's shipped policy (ppo_mill on LadderMill-v1)")
     p.add_argument("--time", type=float, default=60.0, help="[s] simulated time after the step (default 60)")
     p.add_argument("--out", type=Path, default=Path("runs"), help="folder for demo.png, demo.gif, demo.csv")
     p.add_argument("--no-gif", action="store_true", help="no GIF (the runs are a little faster)")
@@ -199,6 +215,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.env not in ENV_IDS or "LadderMill" not in args.env:
             raise UsageError(f"--env {args.env!r}: not a mill id ({', '.join(i for i in ENV_IDS if 'Mill-' in i)})")
         check_number("--time", args.time, low=0, high=3600, unit="s")
+        args.controllers = args.controllers or default_controllers(args.env)
         check_controllers(args.controllers)
     except UsageError as err:
         p.error(str(err))
