@@ -136,9 +136,10 @@ def plot_demo(runs: list[ControlRun], path: Path, title: str) -> Path:
     fig = plt.figure(figsize=(4.0 * max(2, len(runs)), 7.5))
     grid = fig.add_gridspec(2, max(2, len(runs)))
     ax_p, ax_y = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
-    for r in runs:
-        line, = ax_p.plot(r.t_s, r.power_W / 1e3, label=r.label)
-        ax_y.semilogy(r.t_s, np.maximum(r.lateral_m, 1e-3), color=line.get_color(), label=r.label)
+    for i, r in enumerate(runs):  # dashed and dotted after the first: a run that flies as another stays visible
+        style = ("-", "--", ":", "-.")[i % 4]
+        line, = ax_p.plot(r.t_s, r.power_W / 1e3, style, label=r.label)
+        ax_y.semilogy(r.t_s, np.maximum(r.lateral_m, 1e-3), style, color=line.get_color(), label=r.label)
         if r.outcome != "ran to the end":
             ax_y.plot(r.t_s[-1], max(r.lateral_m[-1], 1e-3), "x", color=line.get_color(), ms=10)
     ax_p.set(xlabel="time since the 0.01 rad direction step [s]", ylabel="electrical power [kW]")
