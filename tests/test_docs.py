@@ -180,8 +180,8 @@ def test_the_mill_policy_check_names_a_changed_figure():
     from docsite.readme_figures import mill_policy_differences
 
     readme = ("| `ppo_mill` | LadderMill-v1 | DAgger | held 300 s after the step (5 / 5 seeds, one deterministic "
-              "episode), 0.0940 m, 154.0 kW | 5 / 5, 0.0948 m, 154.0 kW | With the `rl` extra: `laddermill demo "
-              "--controllers open_loop lqr ppo_mill` (60 s after the step, 157.1 kW, 0.09 m, as the LQR).")
+              "episode), 0.0940 m, 154.0 kW | 5 / 5, 0.0948 m, 154.0 kW | The main job flies `ppo_mill` ..., so "
+              "the base install runs it: 60 s after the step, 157.1 kW, 0.09 m, as the LQR.")
     lqr = ["60.00", "157.1", "0.09", "ran to the end"]
     good = {"main_job": {"lqr": lqr, "ppo_mill": list(lqr)},
             "mill_policy": {"ppo_mill": [5, 5, "0.0940", "154.0", True], "lqr": [5, 5, "0.0948", "154.0", True]}}
