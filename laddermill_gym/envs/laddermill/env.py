@@ -58,7 +58,9 @@ STATION_TABLE
     ## Starting State
 
     The mill's periodic stationary motion (:mod:`~laddermill_gym.envs.laddermill.operating_point`): found in plane
-    (about 30 s for the default mill, memoised per process), mapped to 3D, just after a transfer; or the
+    (30-100 s of CPU for the 101-wing mills, memoised per process and kept on disk for later processes in
+    ``~/.cache/laddermill_gym``, or ``$LADDERMILL_CACHE_DIR``, ``off`` for none: the same bits as a recomputation,
+    :mod:`~laddermill_gym.envs.laddermill.op_cache`), mapped to 3D, just after a transfer; or the
     ``operating_point`` passed in. A small mill that does not converge starts from the state after the settling
     time, with a warning and ``info["operating_point_converged"] = False``. ``initial_noise`` adds random lateral
     velocity and roll / yaw rates to every wing; the wind disturbances are drawn from ``np_random`` at every reset.

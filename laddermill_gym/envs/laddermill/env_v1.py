@@ -69,7 +69,7 @@ STATION_TABLE
     The v1 mill's periodic stationary motion (:mod:`~laddermill_gym.envs.laddermill.operating_point`): found in
     plane from the scene's equilibrium at rest through its 30 s cable-speed ramp (periodic at t = 1,380 s of
     simulated time with the default ``settle``; 82 s of wall time, numba's cache warm, on a 2-core machine shared
-    with other runs; memoised per process), mapped
+    with other runs; memoised per process and on disk, as LadderMill-v0's), mapped
     to 3D just after a transfer; or the ``operating_point`` passed in (it pickles). ``initial_noise`` adds random
     lateral velocity and roll / yaw rates to every wing; the wind disturbances are drawn from ``np_random`` at
     every reset.

@@ -70,9 +70,10 @@ STATION_TABLE
     The v2 mill's periodic stationary motion (:mod:`~laddermill_gym.envs.laddermill.operating_point`): found in
     plane from the scene's equilibrium at rest through its 200 s cable-speed ramp with the default ``settle``
     (periodic at t = 975 s of simulated time; 140 s of wall time, numba's cache warm, on a 2-core machine shared
-    with about eight other processes; memoised per process), mapped to 3D just after a transfer; or the
-    ``operating_point`` passed in (it pickles). ``initial_noise`` adds random lateral velocity and roll / yaw rates
-    to every wing; the wind disturbances are drawn from ``np_random`` at every reset.
+    with about eight other processes; memoised per process and on disk, as LadderMill-v0's), mapped to 3D just
+    after a transfer; or the ``operating_point`` passed in (it pickles). ``initial_noise`` adds random lateral
+    velocity and roll / yaw rates to every wing; the wind disturbances are drawn from ``np_random`` at every
+    reset.
 
     ## Episode End
 
