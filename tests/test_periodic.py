@@ -66,3 +66,38 @@ def test_a_breakdown_during_the_search_is_reported_not_raised():
     assert not res.converged and res.breakdown.endswith("(injected)")
     assert "broke down" in res.summary()
     assert np.isfinite(res.mean_power_W) and res.tension_mean_N.shape == (sim.assembly.elements.count,)
+
+
+@pytest.mark.parametrize("inject_after", [None, 300])
+def test_tensions_of_the_last_period_only_are_the_same_bits(inject_after):
+    """``watch_every_period=False`` (the operating point's search) evaluates the tensions of the last period only,
+    after the search, from the recorded states: the oracle is the default search, which evaluates them at every
+    step as it goes; tension statistics, history and shape agree bit for bit, also when the integration breaks
+    down inside a period (after 300 good steps of the search)."""
+    from laddermill_gym import SimulationError
+
+    results = []
+    for every in (True, False):
+        sim = load_scene("laddermill", dimension=2, n_wings=11).simulator()
+        real_step, calls = sim.step, {"n": 0}
+
+        def step(*a, _sim=sim, _real=real_step, _calls=calls, **kw):
+            if inject_after is not None and _sim.t > 100.0:
+                _calls["n"] += 1
+                if _calls["n"] > inject_after:
+                    raise SimulationError(f"integration failed at t = {_sim.t:.6g} s (injected)")
+            return _real(*a, **kw)
+
+        sim.step = step
+        results.append(run_to_periodic(sim, max_time=80.0, progress=False, watch_every_period=every))
+    a, b = results
+    assert (a.breakdown is None) == (inject_after is None)
+    assert a.breakdown == b.breakdown and a.t_s == b.t_s and len(a.history) == len(b.history) >= 1
+
+    def rows(r):
+        return np.array([[h[k] for k in sorted(h)] for h in r.history])
+
+    assert rows(a).tobytes() == rows(b).tobytes()  # (nan where a change has no previous period)
+    for name in ("tension_mean_N", "tension_min_N", "tension_max_N", "shape_m"):
+        assert getattr(a, name).tobytes() == getattr(b, name).tobytes(), name
+    assert 0.0 < b.peak_tension_ratio <= a.peak_tension_ratio  # the last period's peak against the whole search's
