@@ -101,7 +101,9 @@ def roberts(tmp: Path) -> dict:
 
 
 def measure_papers() -> dict:
-    """Every Papers-reproduced figure, each study in turn (about 25 minutes; Meijaard's 11 more from nothing)."""
+    """Every Papers-reproduced figure, each study in turn (measured at a load of 5-7 on 2 cores: Meijaard's group 246 s
+    with its searches saved, about 11 minutes more without; Podgaets' 101 s; Lansdorp's 278 s for two tethers and six
+    winds; Roberts' 18 s)."""
     figures, seconds = {}, {}
     with tempfile.TemporaryDirectory() as tmp:
         for study in tqdm((meijaard, podgaets, lansdorp, roberts), desc="papers", unit="paper"):

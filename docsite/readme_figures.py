@@ -8,12 +8,13 @@
   point first, 2-3 minutes);
 * TetheredWing-v0's open-loop and LQR rows of ``laddermill_gym/docs/controllers.md`` (``laddermill evaluate
   --controllers open_loop lqr --episodes 1``);
-* with ``--policies`` (about 8 minutes more with a warm numba cache): the shipped policies' gusts-v1 scorecards
+* with ``--policies`` (about 17 minutes more on a loaded 2-core machine): the shipped policies' gusts-v1 scorecards
   beside the LQR's, the rows of README's shipped-policy table (``laddermill gust-bench --suite gusts-v1 --env ID
   --controllers lqr ppo_<name>``; a scenario counts when every seed survives); its ppo_mill row (``laddermill
   evaluate --env laddermill_gym/LadderMill-v1 --controllers ppo_mill lqr --episodes 5 --episode-time 300``, the LQR
-  designed on the 606-state linearised mill first);
-* with ``--papers`` (:mod:`docsite.paper_figures`, about 25 minutes): the figures of README's "Papers reproduced"
+  designed on the 606-state linearised mill first: 843 s of the 17 at a load of 5-8);
+* with ``--papers`` (:mod:`docsite.paper_figures`, about 12 minutes at a load of 5-7, 23 before Meijaard's
+  searches are saved in results/meijaard_v1): the figures of README's "Papers reproduced"
   rows, each from the study command the row names.
 
 and then checks that README.md and the controllers page print those numbers (exit 1 naming each that differs).
@@ -40,18 +41,17 @@ MAIN_JOB = ["demo", "--no-gif", "--no-progress"]
 
 
 def main_job() -> dict:
-    """The main job's table: {controller: [flew after the step [s], mean power [kW], max |dy| [m], end]} for its
-    default controllers (open loop, the LQR and the shipped ``ppo_mill``, run from its numpy export)."""
+    """The main job's table: {controller: [flew after the step [s], mean power [kW], max |dy| [m], end]}: open loop,
+    the LQR and, where this install can fly it, the shipped mill policy (the demo's default set)."""
     from laddermill_gym.cli import main
 
-    names = ("open_loop", "lqr", "ppo_mill")
     out = io.StringIO()
     with tempfile.TemporaryDirectory() as tmp, contextlib.redirect_stdout(out):
         main(MAIN_JOB + ["--out", tmp])
     rows = dict((m.group(1), [m.group(2), m.group(3), m.group(4), m.group(5)]) for m in re.finditer(
         r"^(open_loop|lqr|ppo_mill)\s+([\d.]+)\s+([-\d.]+)\s+([\d.]+)\s+(.*)$", out.getvalue(), re.M))
-    if set(rows) != set(names):
-        raise RuntimeError(f"laddermill {' '.join(MAIN_JOB)} printed no {', '.join(names)} rows:\n{out.getvalue()}")
+    if not {"open_loop", "lqr"} <= set(rows):
+        raise RuntimeError(f"laddermill {' '.join(MAIN_JOB)} printed no open_loop and lqr rows:\n{out.getvalue()}")
     return {"main_job": rows}
 
 
@@ -135,11 +135,13 @@ def mill_policy_differences(figures: dict, readme: str) -> list[str]:
                        f"episodes alike]); README lacks '{want}'")
     if demo:
         flew, kw, dy, end = demo
-        want = f"the base install runs it: {float(flew):.0f} s after the step, {kw} kW, {dy} m, as the LQR."
+        quotes = (f"so does `ppo_mill`, one policy shared by the 101 slots ({dy} m, {kw} kW)",
+                  f"runs it: {float(flew):.0f} s after the step, {kw} kW, {dy} m, as the LQR")
         same = demo == figures["main_job"]["lqr"]  # "as the LQR"
-        if want not in readme or end != "ran to the end" or not same:
-            bad.append(f"README: the main job's ppo_mill prints {demo} (the LQR {figures['main_job']['lqr']}); README "
-                       f"lacks '{want}'")
+        for quoted in quotes:
+            if quoted not in readme or end != "ran to the end" or not same:
+                bad.append(f"README: the main job prints ppo_mill {demo} (the LQR {figures['main_job']['lqr']}); "
+                           f"README lacks '{quoted}' or it no longer holds")
     return bad
 
 
@@ -222,9 +224,9 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--out", default="results/readme_figures.json", help="the JSON of the measured figures")
     p.add_argument("--check-only", action="store_true", help="compare the text with an existing --out JSON")
     p.add_argument("--policies", action="store_true", help="also the shipped policies' gusts-v1 scorecards and "
-                   "ppo_mill's evaluation on LadderMill-v1 (~10 min)")
+                   "ppo_mill's evaluation on LadderMill-v1 (~17 min)")
     p.add_argument("--papers", action="store_true", help="also the figures of the Papers-reproduced rows, each study "
-                   "in turn (~25 min)")
+                   "in turn (~12 min; 23 before Meijaard's searches are saved)")
     args = p.parse_args(argv)
     out = Path(args.out)
     if args.check_only:
