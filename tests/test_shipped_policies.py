@@ -30,15 +30,21 @@ def test_shipped_files_are_small_and_named_by_their_config(name):
     assert f"laddermill train {config.removesuffix('.yaml')}" in readme and "--seed" in readme
 
 
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.slow) if n == "ppo_mill" else n
-                                  for n in sorted(SHIPPED_POLICIES)])  # the mill's LQR design: minutes
+#: the LQR each policy is flown beside: the env's default design, but on the chain the centralised one (its default
+#: decentralised LQR fails 9 s after the step; ppo_chain is learnt from the centralised one, docs/learned_mill.md)
+EXPERT = {"ppo_chain": f"lqr:{CONFIG_DIR / 'agents' / 'lqr_ladder_chain_central.yaml'}"}
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.slow) if n in ("ppo_mill", "ppo_chain") else n
+                                  for n in sorted(SHIPPED_POLICIES)])  # the 101-wing LQR designs: minutes
 def test_shipped_policy_flies_the_registered_scenario(name):
     import gymnasium as gym
 
     env_id = SHIPPED_POLICIES[name]
     env = gym.make(env_id, episode_time=60.0)
     results = {}
-    for spec in ("lqr", name):
+    lqr = EXPERT.get(name, "lqr")
+    for spec in (lqr, name):
         ctrl = make_controller(spec, env_id)
         obs, _ = env.reset(seed=0)
         for _ in range(1200):  # 60 s at 0.05 s
@@ -46,7 +52,7 @@ def test_shipped_policy_flies_the_registered_scenario(name):
             if terminated or truncated:
                 break
         results[spec] = (terminated, np.asarray(obs))
-    assert not results["lqr"][0] and not results[name][0]  # neither crashes
+    assert not results[lqr][0] and not results[name][0]  # neither crashes
 
 
 def test_a_shipped_policy_on_another_env_is_refused():

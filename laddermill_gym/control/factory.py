@@ -10,7 +10,7 @@
   (the LQR designs are the rigid wings');
 * a path to a training run folder or model file: a Stable-Baselines3 policy (``rl`` extra), refused when it was
   trained on another env or its observation or action size is not the env's;
-* ``ppo_tethered_wing``, ``ppo_rotorcraft``, ``ppo_mill``: the policies shipped with the package
+* ``ppo_tethered_wing``, ``ppo_rotorcraft``, ``ppo_mill``, ``ppo_chain``: the policies shipped with the package
   (``control/shipped_policies.py``); a shared per-wing policy (``ppo_mill``, a ``laddermill train ppo_mill_v1``
   run) runs from its exported ``linear_actor.npz`` when it has one (numpy only: no ``rl`` extra needed), else
   from its SB3 model.

@@ -25,6 +25,7 @@ SHIPPED_POLICIES: dict[str, str] = {
     "ppo_tethered_wing": "laddermill_gym/TetheredWing-v0",
     "ppo_rotorcraft": "laddermill_gym/Rotorcraft-v0",
     "ppo_mill": "laddermill_gym/LadderMill-v1",  # a shared per-wing policy (shared_policy.yaml, no vecnormalize.pkl)
+    "ppo_chain": "laddermill_gym/LadderChain-v0",  # shared per-wing too (laddermill train ppo_chain_v0)
 }
 
 
