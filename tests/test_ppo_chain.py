@@ -124,3 +124,18 @@ def test_ppo_chain_holds_the_chain_after_the_step_with_the_lqrs_power():
     assert lqr.lengths_s[0] >= 30.0 - 1e-6 and pol.lengths_s[0] >= 30.0 - 1e-6
     assert pol.mean_power_W[0] >= 0.9 * lqr.mean_power_W[0]
     assert np.max(pol.max_lateral_m) < 1.0  # [m] the LQR's Bryson scale of dy
+
+
+def test_chain_training_config_names_its_teacher(tmp_path):
+    from laddermill_gym.harness.shared_config import load_shared_config
+
+    cfg = load_shared_config("ppo_chain_v0")
+    assert cfg.env_id == LC and cfg.teacher_config == CENTRAL and cfg.time_limit_minutes <= 120
+    text = (CONFIG_DIR / "agents" / "ppo_chain_v0.yaml").read_text()
+    for old, new, needle in (("teacher: lqr_ladder_chain_central", "teacher: lqr_nothing", r"teacher = 'lqr_nothing'"),
+                             ("teacher: lqr_ladder_chain_central", "teacher: 3", r"field 'teacher' = 3")):
+        bad = tmp_path / "bad.yaml"
+        bad.write_text(text.replace(old, new, 1))
+        with pytest.raises(ValueError, match=needle) as err:
+            load_shared_config(bad)
+        assert "bad.yaml" in str(err.value)
