@@ -1,5 +1,5 @@
 """The package's main job: the laddermill from its periodic operating point through the paper's 0.01 rad
-wind-direction step, open loop, under the lateral LQR and under the shipped learned policy (``ppo_mill``: one
+wind-direction step, open loop, under the lateral LQR and under the shipped learned policy (ppo_mill: one
 policy shared by the 101 slots, run torch-free from its exported linear actor), in one figure and one GIF.
 
     laddermill demo [--env laddermill_gym/LadderMill-v1] [--time 60] [--controllers open_loop lqr ppo_mill]
