@@ -100,9 +100,9 @@ def roberts(tmp: Path) -> dict:
 
 
 def measure_papers() -> dict:
-    """Every Papers-reproduced figure, each study in turn (measured at a load of 5-7 on 2 cores: Meijaard's group 246 s
-    with its searches saved, about 11 minutes more without; Podgaets' 101 s; Lansdorp's 278 s for two tethers and six
-    winds; Roberts' 18 s)."""
+    """Every Papers-reproduced figure, each study in turn (on 2 cores at a load of 5-7, then 2-4: Meijaard's group 246,
+    185 s with its searches saved, about 11 minutes more without; Podgaets' 101, 67 s; Lansdorp's 278, 128 s for two
+    tethers and six winds; Roberts' 18, 8 s)."""
     figures, seconds = {}, {}
     with tempfile.TemporaryDirectory() as tmp:
         for study in tqdm((meijaard, podgaets, lansdorp, roberts), desc="papers", unit="paper"):

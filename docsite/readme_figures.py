@@ -13,8 +13,8 @@
   --controllers lqr ppo_<name>``; a scenario counts when every seed survives); its ppo_mill row (``laddermill
   evaluate --env laddermill_gym/LadderMill-v1 --controllers ppo_mill lqr --episodes 5 --episode-time 300``, the LQR
   designed on the 606-state linearised mill first: 843 s of the 17 at a load of 5-8);
-* with ``--papers`` (:mod:`docsite.paper_figures`, about 12 minutes at a load of 5-7, 23 before Meijaard's
-  searches are saved in results/meijaard_v1): the figures of README's "Papers reproduced"
+* with ``--papers`` (:mod:`docsite.paper_figures`, 6.5 minutes at a load of 2-4, 12 at 5-7, about 11 more before
+  Meijaard's searches are saved in results/meijaard_v1): the figures of README's "Papers reproduced"
   rows, each from the study command the row names.
 
 and then checks that README.md and the controllers page print those numbers (exit 1 naming each that differs).
