@@ -21,7 +21,7 @@ docs:
 # re-run the figures README and docs/controllers.md quote (main job, env sizes, TetheredWing-v0's open-loop and LQR
 # rows; --policies: the shipped policies' gusts-v1 scorecards, ppo_mill's row; --papers: the Papers-reproduced rows,
 # each study in turn: docsite/paper_figures.py) into results/readme_figures.json and fail naming any the text no
-# longer matches (about 35 minutes on a loaded 2-core machine)
+# longer matches (10 minutes on a quiet 2-core machine, about 35 at a load of 5-8)
 readme-figures:
 	python -m docsite.readme_figures --policies --papers --out results/readme_figures.json
 

@@ -150,7 +150,8 @@ def test_site_builds_strict_with_its_tutorials(tmp_path):
 def test_readme_figures_are_what_their_commands_print(tmp_path):
     """``make readme-figures`` (``--policies --papers``): the main job (with ppo_mill), every env's sizes,
     TetheredWing-v0's open-loop and LQR rows, the shipped policies' gusts-v1 scorecards and ppo_mill's row, and the
-    Papers-reproduced rows' studies re-run (about 35 minutes) and compared with README and controllers.md."""
+    Papers-reproduced rows' studies re-run (582 s at a load of 1-2 with Meijaard's searches saved; about 35 minutes
+    at a load of 5-8) and compared with README and controllers.md."""
     sys.path.insert(0, str(ROOT))
     from docsite.readme_figures import differences, measure
 
