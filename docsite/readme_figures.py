@@ -8,11 +8,11 @@
   point first, 2-3 minutes);
 * TetheredWing-v0's open-loop and LQR rows of ``laddermill_gym/docs/controllers.md`` (``laddermill evaluate
   --controllers open_loop lqr --episodes 1``);
-* with ``--policies`` (about 17 minutes more on a loaded 2-core machine): the shipped policies' gusts-v1 scorecards
+* with ``--policies`` (about 25 minutes more on a loaded 2-core machine): the shipped policies' gusts-v1 scorecards
   beside the LQR's, the rows of README's shipped-policy table (``laddermill gust-bench --suite gusts-v1 --env ID
-  --controllers lqr ppo_<name>``; a scenario counts when every seed survives); its ppo_mill row (``laddermill
-  evaluate --env laddermill_gym/LadderMill-v1 --controllers ppo_mill lqr --episodes 5 --episode-time 300``, the LQR
-  designed on the 606-state linearised mill first: 843 s of the 17 at a load of 5-8);
+  --controllers lqr ppo_<name>``; a scenario counts when every seed survives); its ppo_mill and ppo_chain rows
+  (``laddermill evaluate --env ID --controllers ppo_<name> <its LQR> --episodes 1 --episode-time 301``: 300 s after
+  the step at 1 s; the LQR designed on the linearised mill or chain first: minutes);
 * with ``--papers`` (:mod:`docsite.paper_figures`, 6.5 minutes at a load of 2-4, 12 at 5-7, about 11 more before
   Meijaard's searches are saved in results/meijaard_v1): the figures of README's "Papers reproduced"
   rows, each from the study command the row names.
@@ -102,37 +102,52 @@ def policy_scorecards() -> dict:
     return {"policy_scorecards": cards}
 
 
-#: README's ppo_mill row: ``laddermill evaluate --env laddermill_gym/LadderMill-v1 --controllers ppo_mill lqr
-#: --episodes 5 --episode-time 300`` (the policy's README), the paper's direction step at 1 s.
-MILL_ID, MILL_EPISODES, MILL_EPISODE_S = "laddermill_gym/LadderMill-v1", 5, 300.0
+#: README's shared-policy rows: ``laddermill evaluate --env ID --controllers POLICY LQR --episodes 1 --episode-time
+#: 301`` (the paper's direction step at 1 s, so 300 s after it; seed 0: the registered scenario is deterministic, every
+#: seed flies the same episode, docs/learned_mill.md): policy -> (env id, the LQR it is set beside, the words before
+#: the LQR's figures in its row).
+SHARED_ROWS = {"ppo_mill": ("laddermill_gym/LadderMill-v1", "lqr", ""),
+               "ppo_chain": ("laddermill_gym/LadderChain-v0", "lqr:lqr_ladder_chain_central", "centralised ")}
+SHARED_EPISODES, SHARED_EPISODE_S = 1, 301.0
 
 
 def mill_policy_row() -> dict:
-    """{controller: [episodes held to the end, episodes, largest |dy| [m], mean power [kW], all episodes alike]} of
-    ppo_mill and the LQR (the LQR designs on the 606-state linearised mill first: minutes)."""
+    """{policy: {controller: [episodes held to the end, episodes, largest |dy| [m], mean power [kW], all episodes
+    alike]}} of each shared policy and its LQR (the LQR designs on the linearised mill or chain first: minutes)."""
     import numpy as np
 
     from laddermill_gym.harness.evaluate import evaluate
 
-    with tempfile.TemporaryDirectory() as tmp:
-        res = evaluate(MILL_ID, ["ppo_mill", "lqr"], MILL_EPISODES, {"episode_time": MILL_EPISODE_S}, Path(tmp),
-                       progress=False)
-    return {"mill_policy": {label: [int((r.failures == 0).sum()), len(r.failures), f"{r.max_lateral_m.max():.4f}",
-                                    f"{r.mean_power_W.mean() / 1e3:.1f}",
-                                    bool(np.allclose(r.returns, r.returns[0], rtol=1e-9, atol=0.0))]
-                            for label, r in res.items()}}
+    out = {}
+    for policy, (env_id, lqr, _) in SHARED_ROWS.items():
+        with tempfile.TemporaryDirectory() as tmp:
+            res = evaluate(env_id, [policy, lqr], SHARED_EPISODES, {"episode_time": SHARED_EPISODE_S}, Path(tmp),
+                           progress=False)
+        out[policy] = {"policy" if label == policy else "lqr": [
+            int((r.failures == 0).sum()), len(r.failures), f"{r.max_lateral_m.max():.4f}",
+            f"{r.mean_power_W.mean() / 1e3:.1f}", bool(np.allclose(r.returns, r.returns[0], rtol=1e-9, atol=0.0))]
+            for label, r in res.items()}
+    return {"mill_policy": out}
+
+
+def shared_row(policy: str, rows: dict) -> str:
+    """README's row cells of a shared policy's evaluation ``rows`` ({"policy": [...], "lqr": [...]})."""
+    (held, n, dy, kw, _), lqr = rows["policy"], rows["lqr"]
+    said = {(n, n): "held", (0, n): "failed"}
+    return (f"| {said.get((held, n), f'{held} / {n} held')} {SHARED_EPISODE_S - 1:.0f} s after the step (seed 0: the "
+            f"scenario is deterministic), {float(dy):.4f} m, {kw} kW | {SHARED_ROWS[policy][2]}"
+            f"{said.get((lqr[0], lqr[1]), f'{lqr[0]} / {lqr[1]} held')}, {float(lqr[2]):.4f} m, {lqr[3]} kW")
 
 
 def mill_policy_differences(figures: dict, readme: str) -> list[str]:
-    """README's ppo_mill row and demo sentence against the evaluation and the demo; [] when nothing was measured."""
+    """README's shared-policy rows and the main job's ppo_mill sentences against the evaluations and the demo; []
+    when nothing was measured."""
     bad, rows, demo = [], figures.get("mill_policy"), figures["main_job"].get("ppo_mill")
-    if rows:
-        (held, n, dy, kw, alike), lqr = rows["ppo_mill"], rows["lqr"]
-        want = (f"| held {MILL_EPISODE_S:.0f} s after the step ({held} / {n} seeds, one deterministic episode), "
-                f"{dy} m, {kw} kW | {lqr[0]} / {lqr[1]}, {lqr[2]} m, {lqr[3]} kW |")
-        if want not in readme or not alike:
-            bad.append(f"README's shipped-policy table: ppo_mill measured {rows} ([held, episodes, max |dy| m, kW, "
-                       f"episodes alike]); README lacks '{want}'")
+    for policy, measured in (rows or {}).items():
+        want = shared_row(policy, measured)
+        if want not in readme or not (measured["policy"][4] and measured["lqr"][4]):
+            bad.append(f"README's shipped-policy table: {policy} measured {measured} ([held, episodes, max |dy| m, "
+                       f"kW, episodes alike]); README lacks '{want}'")
     if demo:
         flew, kw, dy, end = demo
         quotes = (f"so does `ppo_mill`, one policy shared by the 101 slots ({dy} m, {kw} kW)",

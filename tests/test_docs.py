@@ -180,19 +180,25 @@ def test_the_mill_policy_check_names_a_changed_figure():
     sys.path.insert(0, str(ROOT))
     from docsite.readme_figures import mill_policy_differences
 
-    readme = ("| `ppo_mill` | LadderMill-v1 | DAgger | held 300 s after the step (5 / 5 seeds, one deterministic "
-              "episode), 0.0940 m, 154.0 kW | 5 / 5, 0.0948 m, 154.0 kW | ... at 157.1 kW mean; so does `ppo_mill`, "
-              "one policy shared by the 101 slots (0.09 m, 157.1 kW). ... so the base install runs it: 60 s after the "
-              "step, 157.1 kW, 0.09 m, as the LQR.")
+    readme = ("| `ppo_mill` | LadderMill-v1 | DAgger | held 300 s after the step (seed 0: the scenario is "
+              "deterministic), 0.0940 m, 154.0 kW | held, 0.0948 m, 154.0 kW | ... at 157.1 kW mean; so does "
+              "`ppo_mill`, one policy shared by the 101 slots (0.09 m, 157.1 kW). ... so the base install runs it: "
+              "60 s after the step, 157.1 kW, 0.09 m, as the LQR.")
     lqr = ["60.00", "157.1", "0.09", "ran to the end"]
     good = {"main_job": {"lqr": lqr, "ppo_mill": list(lqr)},
-            "mill_policy": {"ppo_mill": [5, 5, "0.0940", "154.0", True], "lqr": [5, 5, "0.0948", "154.0", True]}}
+            "mill_policy": {"ppo_mill": {"policy": [1, 1, "0.0940", "154.0", True],
+                                         "lqr": [1, 1, "0.0948", "154.0", True]}}}
     assert mill_policy_differences(good, readme) == []
     assert mill_policy_differences({"main_job": {"lqr": lqr}}, readme) == []
-    fewer = {**good["mill_policy"], "ppo_mill": [4, 5, "0.0940", "154.0", True]}
+    fewer = {"ppo_mill": {**good["mill_policy"]["ppo_mill"], "policy": [0, 1, "0.0940", "154.0", True]}}
     assert len(mill_policy_differences({**good, "mill_policy": fewer}, readme)) == 1
     fell = {"lqr": lqr, "ppo_mill": ["12.00", *lqr[1:]]}
     assert len(mill_policy_differences({**good, "main_job": fell}, readme)) == 2
+    chain = {"policy": [1, 1, "0.0813", "237.6", True], "lqr": [1, 1, "0.0803", "237.9", True]}
+    row = ("| held 300 s after the step (seed 0: the scenario is deterministic), 0.0813 m, 237.6 kW | centralised "
+           "held, 0.0803 m, 237.9 kW (the default ...) |")
+    assert mill_policy_differences({**good, "mill_policy": {"ppo_chain": chain}}, readme + row) == []
+    assert len(mill_policy_differences({**good, "mill_policy": {"ppo_chain": chain}}, readme)) == 1
 
 
 def test_the_papers_check_names_a_changed_figure():
