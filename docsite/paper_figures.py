@@ -8,7 +8,9 @@ in a fresh process (as a user types it; what it prints or writes is parsed), and
   at 1 and 2 m/s (P1, P2 kW" from ``power.csv`` (the in-plane cases), "the loop widens with V_c, the smallest
   tension at the top" from ``claims.csv`` (each of those claims' rows agrees: yes); ``python -m
   laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2 --speed 5 --start-ramp 200 --max-time 3000``:
-  "(P kW at 5 m/s;" from its printed summary, which must say the motion is periodic;
+  "(P kW at 5 m/s;" from its printed summary, which must say the motion is periodic; the same at 2 m/s and README's
+  env table's v1 and v2 rows ("stable in plane (P kW at 2 m/s)", "periodic at 1-5 m/s (P kW at 2 m/s, P kW at 5
+  m/s)", rounded to the kW);
 * Podgaets & Ockels 2007: ``python -m laddermill_gym.studies.pointmass.pointmass_benchmark --quick --json F`` on two
   numba threads (the held arrays depend on the thread count: a chunk each): "at 1 cm (N elements) in M MB";
 * Lansdorp et al. 2008: ``laddermill tether-convergence --lengths 40 30`` (the two finest tethers of its default
@@ -61,14 +63,17 @@ def meijaard(tmp: Path) -> dict:
     with open(MEIJAARD_OUT / "claims.csv", newline="") as f:  # README: "the loop widens", "the smallest tension at
         claims = [[r["paper"], r["agrees"]] for r in csv.DictReader(f)  # the top" (each V_c's row)
                   if r["paper"].startswith(("the loop widens", "tension smallest near the top"))]
-    argv = [STUDY + "mill.fast_mill", "case", "--scene", "laddermill_v2", "--speed", "5", "--start-ramp", "200",
-            "--max-time", "3000"]
-    out = run_command(argv, 2400)
-    m = re.search(r"laddermill_v2 \(2D\): V_c 5 m/s .*periodic motion (converged|NOT converged)[^:]*: mean "
-                  r"generator power ([-\d.]+) kW", out)
-    if m is None:
-        raise RuntimeError(f"python -m {' '.join(argv)} printed no summary:\n{out[-2000:]}")
-    return {"meijaard_v1": mill, "meijaard_claims": claims, "v2_at_5": [m.group(1) == "converged", float(m.group(2))]}
+    v2 = {}
+    for speed in ("5", "2"):  # the Papers row quotes 5 m/s, README's env table 2 and 5 m/s
+        argv = [STUDY + "mill.fast_mill", "case", "--scene", "laddermill_v2", "--speed", speed, "--start-ramp", "200",
+                "--max-time", "3000"]
+        out = run_command(argv, 2400)
+        m = re.search(rf"laddermill_v2 \(2D\): V_c {speed} m/s .*periodic motion (converged|NOT converged)[^:]*: "
+                      r"mean generator power ([-\d.]+) kW", out)
+        if m is None:
+            raise RuntimeError(f"python -m {' '.join(argv)} printed no summary:\n{out[-2000:]}")
+        v2[speed] = [m.group(1) == "converged", float(m.group(2))]
+    return {"meijaard_v1": mill, "meijaard_claims": claims, "v2_at_5": v2["5"], "v2_at_2": v2["2"]}
 
 
 def podgaets(tmp: Path) -> dict:
@@ -125,6 +130,10 @@ def papers_differences(papers: dict, readme: str) -> list[str]:
         want.append((words, len(claims) == 3 and all(agrees == "yes" for _, agrees in claims)))
     periodic5, p5 = papers["v2_at_5"]
     want.append((f"({p5:.1f} kW at 5 m/s;", periodic5))
+    if "v2_at_2" in papers:  # README's env table: the v1 and v2 rows' powers, rounded to the kW
+        periodic2, p2v2 = papers["v2_at_2"]
+        want.append((f"stable in plane ({p2:.0f} kW at 2 m/s)", per2))
+        want.append((f"periodic at 1-5 m/s ({p2v2:.0f} kW at 2 m/s, {p5:.0f} kW at 5 m/s)", periodic2 and periodic5))
     n, mb = papers["podgaets"]
     want.append((f"at 1 cm ({n:,} elements) in {mb:.2f} MB", n is not None))  # as printed: 28.69
     power = papers["tether_power_W"]

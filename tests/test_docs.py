@@ -224,3 +224,8 @@ def test_the_papers_check_names_a_changed_figure():
         bad = papers_differences({**good, **changed}, readme)
         assert len(bad) == 1, (changed, bad)
     assert len(papers_differences({**good, "meijaard_claims": [*claims[:2], [claims[2][0], "no"]]}, readme)) == 2
+    table = " stable in plane (153 kW at 2 m/s) ... periodic at 1-5 m/s (102 kW at 2 m/s, 324 kW at 5 m/s)"
+    with_v2 = {**good, "v2_at_2": [True, 102.2]}
+    assert papers_differences(with_v2, readme + table) == []
+    assert len(papers_differences(with_v2, readme)) == 2  # the env table's rows missing
+    assert len(papers_differences({**with_v2, "v2_at_2": [True, 98.0]}, readme + table)) == 1
