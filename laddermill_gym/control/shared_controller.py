@@ -99,8 +99,6 @@ class SharedController(ABC):
         self.obs_dim = view.task.obs_dim
         self.act_dim = view.n_agents * view.act_dim
 
-    is_shared_run = staticmethod(is_shared_run)
-
     @abstractmethod
     def actions(self, local: np.ndarray) -> np.ndarray:
         """(N, m_a) actions of local observations (N, d) float32, before the clip to [-1, 1]."""
@@ -164,7 +162,6 @@ class LinearActor:
                              f"{self.n_basis}")
         self.flag0 = self.block * (2 * self.k + 1)
         self.pos = self.flag0 + 2 * self.k
-        self.obs_dim = self.pos + 1  # at least; the shared entries follow
 
     @classmethod
     def load(cls, path: Path, model_file: Path | None = None) -> LinearActor:
