@@ -36,6 +36,7 @@ import numpy as np
 from laddermill_gym.sim.simulator import ADAPTIVE_METHODS, FIXED_STEP_METHODS, SimulationError, Simulator
 from laddermill_gym.studies.commands import check_number, run_subcommand
 from laddermill_gym.studies.numerics import pointmass_precision
+from laddermill_gym.studies.numerics.controller_errors import controller_errors, controller_quantities
 from laddermill_gym.studies.numerics.precision import (
     FORCINGS,
     explicit_step_counts,
@@ -110,7 +111,11 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
     xr, pr = trajectory(ref_sim, times, "dp54", REF_TOL)
     xs2 = scipy_reference(with_settings(base, state=x0, wind=wind, method="dp54"), times)
     agree = float(np.max(np.abs(scaled_difference(xs2, xr))))
-    ref = {"dp54_rtol": REF_TOL, "scipy_dop853_rtol": REF_TOL, "reference_agreement_state": agree}
+    ev = with_settings(base, state=x0, wind=wind, method="dp54")  # reads the controller quantities of a state
+    qr = controller_quantities(ev, times, xr)
+    ref = {"dp54_rtol": REF_TOL, "scipy_dop853_rtol": REF_TOL, "reference_agreement_state": agree,
+           **{f"{k}_reference_agreement": v for k, v in controller_errors(controller_quantities(ev, times, xs2), qr)
+              .items() if k != "meets_controller"}}
     period = duration / n_samples
     ms = explicit_step_counts(period, dt_stable, n_dt)
     cases = [("rk4", period / m) for m in ms]
@@ -130,12 +135,20 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
         if method not in ADAPTIVE_METHODS:
             kw["dt"] = value
 
-        once = timed(lambda: with_settings(base, state=x0, wind=wind, **kw),
-                     lambda sim: trajectory(sim, times, method, value))
+        last = {}  # the states of the latest timed run: the controller quantities are read from them afterwards
+
+        def go(sim, method=method, value=value, last=last):
+            last["xs"], ps = trajectory(sim, times, method, value)
+            return last["xs"], ps
+
+        once = timed(lambda: with_settings(base, state=x0, wind=wind, **kw), go)
         adaptive = method in ADAPTIVE_METHODS
         row = {"forcing": forcing, "method": label, "dt_s": math.nan if adaptive else value,
                "tol": value if adaptive else math.nan}
-        rows.append(measure(row, once, xr, pr, duration, repeats, SimulationError, bar))
+        measure(row, once, xr, pr, duration, repeats, SimulationError, bar)
+        if row["status"] == "ok":
+            row.update(controller_errors(controller_quantities(ev, times, last["xs"]), qr))
+        rows.append(row)
     return rows, ref
 
 

@@ -8,7 +8,8 @@ import math
 from pathlib import Path
 
 COLUMNS = ("forcing", "method", "dt_s", "tol", "wall_s", "real_time_factor", "err_final_pos_m", "err_rms_pos_m",
-           "err_max_pos_m", "err_max_pos_rel", "err_final_state", "err_rms_state", "status")
+           "err_max_pos_m", "err_max_pos_rel", "err_final_state", "err_rms_state", "err_tension_rel", "err_power_rel",
+           "err_lateral_m", "err_attitude_rad", "meets_controller", "status")
 _STYLE = {"rk4": ("C0", "o", "-"), "rk4-all": ("C2", "+", "--"), "rk4-off": ("C3", "x", ":"),
           "dp54": ("C1", "s", "-"), "ros2": ("C4", "v", "-"), "ros34pw2": ("C5", "D", "-"),
           "ros34pw2a": ("C6", "*", "--"), "explicit": ("C0", "o", "-"), "implicit": ("C4", "v", "-")}
@@ -97,16 +98,17 @@ def print_summary(res: dict, echo=print) -> None:
          f"{lam[0]:.3g} +- {abs(lam[1]):.4g}i 1/s)")
     for f, ref in res["references"].items():
         names = " and ".join(f"{k[:-5]} at {v:g}" for k, v in ref.items() if k.endswith("_rtol"))
-        echo(f"-- {f}: references ({names}) agree to {ref['reference_agreement_state']:.1e}")
+        echo(f"-- {f}: references ({names}) agree to {ref['reference_agreement_state']:.1e}"
+             + "".join(f", {k[4:-20]} {v:.1e}" for k, v in ref.items() if k.endswith("_reference_agreement")))
         echo(f"   {'method':9s} {'dt [s]':>9s} {'tol':>7s} {'wall [s]':>9s} {'x real':>8s} {'pos T [m]':>10s} "
-             f"{'pos RMS':>9s} {'state T':>9s} {'state RMS':>9s}")
+             f"{'pos RMS':>9s} {'state T':>9s} {'state RMS':>9s}" + _CONTROLLER_HEAD)
         for r in (r for r in res["rows"] if r["forcing"] == f):
             if r["status"] != "ok":
                 echo(f"   {r['method']:9s} {_fmt(r['dt_s'], '9.5f')} {_fmt(r['tol'], '7.0e')}  {r['status']}")
                 continue
             echo(f"   {r['method']:9s} {_fmt(r['dt_s'], '9.5f')} {_fmt(r['tol'], '7.0e')} {r['wall_s']:9.3f} "
                  f"{r['real_time_factor']:8.1f} {r['err_final_pos_m']:10.2e} {r['err_rms_pos_m']:9.2e} "
-                 f"{r['err_final_state']:9.2e} {r['err_rms_state']:9.2e}")
+                 f"{r['err_final_state']:9.2e} {r['err_rms_state']:9.2e}" + _controller_cells(r))
 
     echo(f"\n-- fastest run of each method with the largest position error <= {TARGET_REL:g} of the extent "
          f"(speed-up against the fastest such {base} run):")
@@ -114,6 +116,41 @@ def print_summary(res: dict, echo=print) -> None:
         echo(f"   {r['forcing']:7s} {r['method']:9s} {_fmt(r['dt_s'], '9.5f')} {_fmt(r['tol'], '7.0e')} "
              f"{r['real_time_factor']:8.1f}x real time  err/extent {r['err_max_pos_rel']:.2e}  "
              f"{_fmt(r['speedup_vs_rk4'], '.2f')}x {base}")
+    print_controller_summary(res, echo)
+
+
+#: the controller columns of the table of runs (``studies/numerics/controller_errors.py``)
+_CONTROLLER_HEAD = f" {'tension':>8s} {'power':>8s} {'lat [m]':>8s} {'att [rad]':>9s} ctl"
+
+
+def _controller_cells(r: dict) -> str:
+    if "err_tension_rel" not in r:
+        return ""
+    return (f" {r['err_tension_rel']:8.1e} {r['err_power_rel']:8.1e} {r['err_lateral_m']:8.1e} "
+            f"{r['err_attitude_rad']:9.1e} {'yes' if r['meets_controller'] else 'no'}")
+
+
+def print_controller_summary(res: dict, echo=print) -> None:
+    """Per forcing and method the fastest run meeting the controller tolerances, its errors and its speed-up over
+    the fastest such baseline run (whose step it names); nothing for a study without the controller errors."""
+    from laddermill_gym.studies.numerics.controller_errors import TOLERANCES, fastest_meeting
+
+    if not any("meets_controller" in r for r in res["rows"]):
+        return
+    base = res.get("baseline", "rk4")
+    tol = TOLERANCES
+    echo(f"\n-- fastest run of each method meeting the controller tolerances (tension {tol['err_tension_rel']:g} and "
+         f"power {tol['err_power_rel']:g} of their largest value, lateral offset {tol['err_lateral_m']:g} m, "
+         f"attitude {tol['err_attitude_rad']:g} rad; speed-up against the fastest such {base} run):")
+    for f in res["references"]:
+        rows = [r for r in fastest_meeting(res) if r["forcing"] == f]
+        if not any(r["method"] == base for r in rows):
+            echo(f"   {f:7s} no {base} run meets them")
+        for r in rows:
+            echo(f"   {r['forcing']:7s} {r['method']:9s} {_fmt(r['dt_s'], '9.5f')} {_fmt(r['tol'], '7.0e')} "
+                 f"{r['real_time_factor']:8.1f}x real time  tension {r['err_tension_rel']:.1e} power "
+                 f"{r['err_power_rel']:.1e} lat {r['err_lateral_m']:.1e} m att {r['err_attitude_rad']:.1e} rad  "
+                 f"{_fmt(r['speedup_vs_rk4'], '.2f')}x {base} (at {_fmt(r['rk4_dt_s'], '.5f')} s)")
 
 
 def replot(json_path: Path, png_path: Path) -> Path:
