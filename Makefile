@@ -21,9 +21,11 @@ docs:
 # re-run the figures README and docs/controllers.md quote (main job, env sizes, TetheredWing-v0's open-loop and LQR
 # rows; --policies: the shipped policies' gusts-v1 scorecards, ppo_mill's row; --papers: the Papers-reproduced rows,
 # each study in turn: docsite/paper_figures.py) into results/readme_figures.json and fail naming any the text no
-# longer matches (10 minutes on a quiet 2-core machine, about 35 at a load of 5-8)
+# longer matches (10 minutes on a quiet 2-core machine, about 35 at a load of 5-8); --pages: the docs pages' checked
+# numbers (docsite/page_ledger.py; one page alone: --skip-readme --pages NAME); --pictures: every embedded picture
+# drawn again by its command into docs/figures/ (docsite/pictures.py: each command with its cost; training runs left out)
 readme-figures:
-	python -m docsite.readme_figures --policies --papers --out results/readme_figures.json
+	python -m docsite.readme_figures --policies --papers --pages --pictures --out results/readme_figures.json
 
 gust-bench:
 	laddermill gust-bench --suite gusts-v1 --controllers open_loop lqr --out results/gust_bench/gusts-v1

@@ -17,7 +17,14 @@
   Meijaard's searches are saved in results/meijaard_v1): the figures of README's "Papers reproduced"
   rows, each from the study command the row names.
 
-and then checks that README.md and the controllers page print those numbers (exit 1 naming each that differs).
+* with ``--pages [PAGE ...]`` (:mod:`docsite.page_figures`): the checked numbers of the docs pages the ledger
+  (:mod:`docsite.page_ledger`) covers, each group's command re-run once (``--skip-readme --pages NAME`` re-runs one
+  page alone);
+* with ``--pictures [NAME ...]`` (:mod:`docsite.pictures`): every embedded picture drawn again into docs/figures/
+  (printing which changed);
+
+and then checks that README.md, the controllers page and the covered docs pages print those numbers (exit 1 naming
+each that differs).
 The slow test ``tests/test_docs.py::test_readme_figures_are_what_their_commands_print`` does the same with both
 groups. Not covered: machine-dependent timings (env steps/s, real-time factors: the benchmark pages say where and
 when they were measured) and the longest studies (the power curve, 12 minutes on two workers).
@@ -242,16 +249,33 @@ def main(argv: list[str] | None = None) -> int:
                    "ppo_mill's evaluation on LadderMill-v1 (~17 min)")
     p.add_argument("--papers", action="store_true", help="also the figures of the Papers-reproduced rows, each study "
                    "in turn (~12 min; 23 before Meijaard's searches are saved)")
+    p.add_argument("--pages", nargs="*", metavar="PAGE", help="also the checked numbers of these docs pages "
+                   "(docsite/page_ledger.py; no name: every covered page)")
+    p.add_argument("--pictures", nargs="*", metavar="NAME", help="also draw the embedded pictures again into "
+                   "docs/figures/ (docsite/pictures.py; no name: every command but the training runs)")
+    p.add_argument("--skip-readme", action="store_true", help="leave out README's own groups and checks (re-run "
+                   "--pages or --pictures alone)")
     args = p.parse_args(argv)
     out = Path(args.out)
     if args.check_only:
         figures = json.loads(out.read_text())
     else:
-        figures = measure(policies=args.policies, papers=args.papers)
+        figures = {} if args.skip_readme else measure(policies=args.policies, papers=args.papers)
+        if args.pages is not None:
+            from docsite.page_figures import measure_pages
+
+            figures.update(measure_pages(args.pages, have=figures))
         out.parent.mkdir(parents=True, exist_ok=True)
         out.write_text(json.dumps(figures, indent=1))
         print(f"wrote {out}")
-    bad = differences(figures)
+    if args.pictures is not None:
+        from docsite.pictures import regenerate
+
+        changed = {k: v for k, v in regenerate(args.pictures or None).items() if v != "same"}
+        print(f"pictures changed: {changed or 'none'}")
+    from docsite.page_figures import pages_differences
+
+    bad = ([] if args.skip_readme else differences(figures)) + pages_differences(figures.get("pages", {}))
     for line in bad:
         print(f"stale: {line}")
     print("every checked figure is what its command prints" if not bad else f"{len(bad)} stale figures")

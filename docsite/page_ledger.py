@@ -1,0 +1,138 @@
+"""Which number of which docs page is checked against a command, and what every other number on a page is.
+
+Every page of ``laddermill_gym/docs/`` is in :data:`LEDGER`: either a :class:`Covered` page, whose every quoted
+number (:mod:`docsite.page_numbers`) is accounted for by one of its entries, or a :class:`NotYet` page with the reason
+its numbers are not checked yet. ``tests/test_page_figures.py`` enforces both in the fast set (a page not in the
+ledger, a number on a covered page that no entry accounts for, or an entry that matches nothing fails it); the slow
+set re-runs the checks (``python -m docsite.readme_figures --pages``).
+
+A covered page's entries:
+
+* ``checks``: (a regular expression over the page's flattened text, its groups' expected texts as ``str.format``
+  templates over the measured figures, ``{group[key]...}``): the groups are re-run and compared exactly, to the
+  printed digits;
+* ``given``: snippets whose numbers are inputs (a command's settings, a scene's size), the papers' own figures,
+  equation and figure numbers, dates and versions: nothing to re-run;
+* ``timings``: snippets whose numbers are machine timings (durations, real-time factors, memory of a process):
+  dated measurements, each with its machine and load on the page, not compared;
+* ``derived``: snippets whose numbers are worked by hand from checked ones or read off a picture (no command
+  prints them): listed so that a reader of this file sees them;
+* ``not_rerun``: snippets whose numbers a command prints that the page figures do not re-run (too long for the
+  slow set): the gap, stated.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True)
+class Covered:
+    groups: tuple = ()
+    checks: tuple = ()
+    given: tuple = ()
+    timings: tuple = ()
+    derived: tuple = ()
+    not_rerun: tuple = field(default=())
+
+
+@dataclass(frozen=True)
+class NotYet:
+    reason: str
+
+
+RD = r"(\d+\.\d) m/s at 15,000 ft and at (\d+\.\d) m/s at 30,000 ft"
+ROBERTS = Covered(
+    groups=("rotor_design",),
+    checks=((r"The study reaches that rating at " + RD, ("{rotor_design[15kft][wind]}", "{rotor_design[30kft][wind]}")),
+            (r"disks at only (\d+)-(\d+) deg to the wind", ("{rotor_design[30kft][alpha_c]:.0f}",
+                                                            "{rotor_design[15kft][alpha_c]:.0f}")),
+            (r"rotor at C_p (0\.\d\d) and (0\.\d\d) \(Betz: 0\.593\)", ("{rotor_design[15kft][ideal_cp]:.2f}",
+                                                                    "{rotor_design[30kft][ideal_cp]:.2f}"))),
+    given=("eq. 1,", "Fig. 3", "(eqs. 2-3)", "eq. (6)", "Eq. (6)", "the 35 m design", "Table 1", "The 35 m design",
+           "Roberts' 35 m design", "twin 35 m rotors on three 0.23 kg/m tethers", "Table 1's 3.13 MW",
+           "3.13 MW x 8760 h x 48 %", "his 13.3 GWh", "(Betz: 0.593)"),
+    derived=("is 13.2 GWh",),
+)
+INDEX = Covered(given=("Schwab (1999)", "Schwab 1999", "Figs. 6-8", "Ockels 2007", "5 km string at 1 cm",
+                       "Lansdorp et al. 2008", "his Fig. 3, eq. (6), the 35 m design", "after its 0.01 rad"))
+ABOUT_DOCS = Covered(given=("MkDocs 1.6)", "MkDocs 1.6.1 (2024) is the last 1.x release", "May 2027", "MkDocs 1.x"),
+                     timings=("about 1.5-3 minutes here",))
+
+DEMO_ROW = r"{} +(\S+) +(\S+) +(\S+) +{}"
+GETTING_STARTED = Covered(
+    groups=("main_job", "simulate_laddermill", "simulate_tethered_wing"),
+    checks=((DEMO_ROW.format("open_loop", r"(aerodynamic range exceeded: t = [\d.]+ s: slot \d+ alpha = [-\d.]+ deg, "
+                                          r"beta = [-\d.]+ deg outside the aerodynamic range)"),
+             tuple(f"{{main_job[open_loop][{i}]}}" for i in range(4))),
+            (DEMO_ROW.format("lqr", "(ran to the end)"), tuple(f"{{main_job[lqr][{i}]}}" for i in range(4))),
+            (r"\((\d+\.\d+) s simulated, the step at 1 s\)", ("{simulate_laddermill[simulated]}",)),
+            (r"wings (\d+)-(\d+) beyond the (\d+) m/s speed guard",
+             ("{simulate_laddermill[first_wing]}", "{simulate_laddermill[last_wing]}", "{simulate_laddermill[guard]}")),
+            (r"at the start \((0\.\d{4}) s, above the scene's (0\.\d+) s\)",
+             ("{simulate_laddermill[stable_step]:.4f}", "{simulate_laddermill[dt]}")),
+            (r"The run stops at ([\d.]+) s, when", ("{simulate_tethered_wing[contact_t]}",)),
+            (r"ground contact at t = ([\d.]+) s: node (\d+) at height ([-\d.e]+) m",
+             tuple(f"{{simulate_tethered_wing[contact_{k}]}}" for k in ("t", "node", "height")))),
+    given=("at V_c = 2 m/s", "the paper's 0.01 rad wind-direction step (at 1 s) twice, 60 s after the step",
+           "the paper's laddermill (101 wings", "generator at 2 m/s", "then 60 s of the 3D mill after the paper's 0.01 "
+           "rad", "after some 40 seconds", "the step at 1 s", "exits 0", "exits 3", "after a 0.01 rad wind-direction",
+           "A 0.01 rad turn"),
+    timings=("113 s on the 2-core machine with numba's cache filled (2026-11-29)",
+             "took 3 min 54 s (the demo 201 s of it)", "(about 30 s of compute)", "(about a minute, plus numba's",
+             "(about 35 minutes on a 2-core machine from a fresh clone, 31 of them"),
+    derived=("stops about 20 s after the step", "stops, about 20 s after", "(period about 20 s: zero crossings of "
+             "the lateral position 9-12 s apart; the linear model's 23 s)", "dive after about 52 s"),
+)
+
+#: Every docs page: covered, or why not yet.
+LEDGER = {
+    "about_docs.md": ABOUT_DOCS,
+    "architecture.md": Covered(),
+    "command_line.md": Covered(given=("does about 40 s after the direction step",)),
+    "getting_started.md": GETTING_STARTED,
+    "index.md": INDEX,
+    "layout.md": Covered(given=("eq. (6)",)),
+    "paper_roberts.md": ROBERTS,
+    "usage.md": Covered(given=("a pole at 0 for",)),
+    "benchmarks.md": NotYet("machine timings almost throughout (env steps/s, real-time factors, cold and warm starts;"
+                            " each dated with machine and load): to be listed as timings; helper T edits its cold-"
+                            "start section this session"),
+    "cable_data.md": NotYet("material data and worked numbers (given and derived) to list; no command"),
+    "controllers.md": NotYet("README's TetheredWing-v0 rows are checked by readme_figures; the other tables "
+                             "(LadderMill-v0 with a PPO run not shipped, the chain, the rotorcraft, the wing's PPO "
+                             "scenarios) not yet; helper P edits the wing section this session"),
+    "features.md": NotYet("a summary of the other pages' figures: to be checked through them"),
+    "lateral_stability.md": NotYet("every table from `lateral_study` (seconds): a check per table row to write"),
+    "learned_mill.md": NotYet("evaluation tables (`laddermill evaluate` of ppo_mill / ppo_chain, minutes each), "
+                              "training rows from the shipped training_curve.csv, timings: not yet listed"),
+    "mill_fast.md": NotYet("`fast_mill case` runs (minutes each) and timings: not yet listed"),
+    "model.md": NotYet("model constants and equations (given): to list"),
+    "moving_cable.md": NotYet("insertion study, stable-step and LQR figures (minutes) and timings: not yet listed"),
+    "numerics.md": NotYet("stable steps, error tables and timings: not yet listed"),
+    "paper_lansdorp2008.md": NotYet("site and pumping-cycle figures (README's rows check the tether and Schmehl "
+                                    "ratios): the page's own not yet listed"),
+    "paper_meijaard1999.md": NotYet("the Meijaard study's figures (README's Papers row checks the v1 powers and "
+                                    "claims); the page's tables not yet listed"),
+    "paper_podgaets2007.md": NotYet("500,000 elements and 28.69 MB are checked by README's Papers row; the rest "
+                                    "(pointmass_mill: a rigid run to periodic, then three point-mass runs) not yet "
+                                    "listed"),
+    "pointmass.md": NotYet("pointmass_benchmark / pointmass_fidelity tables (timings and figures) not yet listed"),
+    "pointmass_mill.md": NotYet("pointmass_mill (a rigid run to periodic, then three point-mass runs) not re-run yet"),
+    "power_curve.md": NotYet("checked by its own replay test (tests/test_power_curve*: the printed replay against the"
+                             " page); the prose figures not yet listed"),
+    "pumping.md": NotYet("pumping-cycle and power-curve figures (minutes): not yet listed"),
+    "quasisteady.md": NotYet("`laddermill site` / `design` figures and Lansdorp's tables: not yet listed"),
+    "reeling_tether.md": NotYet("tether_convergence table (2 minutes; README's row checks two of its powers): not yet"
+                                " listed"),
+    "rl_zoo3.md": NotYet("rl-zoo3 training logs and timings: not yet listed"),
+    "rotor.md": NotYet("rotor_chart and Gessow & Myers' figures: not yet listed"),
+    "rotorcraft.md": NotYet("craft_stability figures: not yet listed"),
+    "rotorcraft_design.md": NotYet("rotor_design's printed blocks (42 s; paper_roberts.md's four are checked): not "
+                                   "yet listed"),
+    "scale_out.md": NotYet("Ray and worker timings (dated) and lateral-study counts: not yet listed"),
+    "wind.md": NotYet("wind-model constants (given) and turbulence cost timings: not yet listed"),
+    "wing_data.md": NotYet("wing derivation figures (derive_wing) and the papers' data: not yet listed"),
+    "work_precision.md": NotYet("work-precision tables (about 15 minutes, one thread each) and timings; helper R "
+                                "edits it this session"),
+}

@@ -1,0 +1,78 @@
+"""The docs pages' numbers and pictures under ``make readme-figures``: every page is in the ledger, every number of a
+covered page is checked or listed (given, dated timing, derived, not re-run), every embedded picture has the command
+that draws it; in the slow set the covered pages' checks are re-run against their commands.
+
+Oracles: the page files themselves (what they embed and quote), hand-counted numerals of a literal Markdown excerpt,
+and, in the slow set, the commands the pages name, run in fresh processes.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from docsite.page_figures import coverage, measure_pages, pages_differences  # noqa: E402
+from docsite.page_ledger import LEDGER  # noqa: E402
+from docsite.page_numbers import numbers, prose  # noqa: E402
+from docsite.pictures import PICTURES, drawn, embedded  # noqa: E402
+
+
+def test_the_numbers_of_a_page_are_its_prose_numerals():
+    """Counted by hand: 6.15, 169.5, 2, 0.01, 500,000, 1e-3, 8.7x and the output block's 42 are quoted; the code
+    span, the bash block, the link target, 3D, v1 and 6-8's word-internal forms are not (6 and 8 are)."""
+    text = ("open loop 6.15 s at 169.5 kW (`--time 60`), a 2-core machine, a 0.01 rad step, 500,000 elements,\n"
+            "tolerance 1e-3, 8.7x real time, the 3D mill, LadderMill-v1, Figs. 6-8 [page](figures/fig_12.png)\n"
+            "```bash\nladdermill simulate --time 99\n```\n```\nprinted 42\n```\n")
+    flat = prose(text)
+    assert [flat[a:b] for a, b in numbers(flat)] == ["6.15", "169.5", "2", "0.01", "500,000", "1e-3", "8.7x", "6", "8",
+                                                     "42"]
+
+
+def test_every_docs_page_is_in_the_ledger():
+    """A new page must be covered or say why not yet; the ledger names no page that is gone."""
+    pages = {p.name for p in (ROOT / "laddermill_gym" / "docs").glob("*.md")}
+    assert pages - set(LEDGER) == set(), f"docsite/page_ledger.py lacks {sorted(pages - set(LEDGER))}"
+    assert set(LEDGER) - pages == set(), f"docsite/page_ledger.py names missing pages {sorted(set(LEDGER) - pages)}"
+
+
+def test_every_number_of_a_covered_page_is_checked_or_listed():
+    report = coverage()
+    problems = {name: {"loose": r["loose"], "stale": r["stale"]} for name, r in report.items()
+                if r["status"] == "covered" and (r["loose"] or r["stale"])}
+    assert not problems, problems
+
+
+def test_every_embedded_picture_has_its_command():
+    """Each picture README or a docs page embeds is drawn by one command of docsite/pictures.py, and each picture
+    there is embedded somewhere (a new picture without a command, or a command for a dropped picture, fails)."""
+    shown, made = embedded(), drawn()
+    assert set(shown) - set(made) == set(), {n: shown[n] for n in set(shown) - set(made)}
+    assert set(made) - set(shown) == set(), sorted(set(made) - set(shown))
+    assert len({p.name for p in PICTURES}) == len(PICTURES)
+    assert all(p.kind in ("quick", "long", "training") and "{out}" in p.command for p in PICTURES)
+
+
+def test_the_page_check_names_a_changed_figure():
+    """Roberts' page against the rotor design study's printed figures (25.6 / 32.5 m/s, alpha_c 35.3 / 29.7 deg,
+    ideal C_p 0.290 / 0.222): they pass; another wind is named."""
+    good = {"checked_pages": ["paper_roberts.md"],
+            "rotor_design": {"15kft": {"wind": "25.6", "alpha_c": 35.3, "ideal_cp": 0.29},
+                             "30kft": {"wind": "32.5", "alpha_c": 29.7, "ideal_cp": 0.222}}}
+    assert pages_differences(good) == []
+    assert pages_differences({}) == []
+    bad = pages_differences({**good, "rotor_design": {**good["rotor_design"],
+                                                      "30kft": {"wind": "33.0", "alpha_c": 29.7, "ideal_cp": 0.222}}})
+    assert len(bad) == 1 and "33.0" in bad[0] and "paper_roberts.md" in bad[0]
+
+
+@pytest.mark.slow
+def test_the_covered_pages_figures_are_what_their_commands_print():
+    """``python -m docsite.readme_figures --skip-readme --pages``: every covered page's checks re-run (the main job,
+    the two ``laddermill simulate`` runs, Roberts' design study: about 8 minutes on the 2-core machine)."""
+    measured = measure_pages()["pages"]
+    assert not pages_differences(measured), pages_differences(measured)
