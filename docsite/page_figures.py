@@ -70,8 +70,44 @@ def simulate(scene_args: list[str]) -> dict:
     return found
 
 
+def training_curves() -> dict:
+    """The shipped shared policies' ``training_curve.csv`` rows (no command: the files the training run wrote, as
+    shipped), each as docs/learned_mill.md's tables print them: held, length [s] (whole when held), mean power [kW,
+    3 decimals], max |dy| [m, 3 significant digits], PPO's agent steps [millions, 2 decimals]."""
+    import csv
+
+    curves = {}
+    for policy in ("ppo_mill", "ppo_chain"):
+        with open(ROOT / "laddermill_gym" / "policies" / policy / "training_curve.csv", newline="") as f:
+            rows = list(csv.DictReader(f))
+        curves[policy] = [{"held": r["held"], "length": f"{float(r['mean_length_s']):.{0 if r['held'] == '1' else 1}f}",
+                           "power": f"{float(r['mean_power_kW']):.3f}", "dy": f"{float(r['max_lateral_m']):#.3g}",
+                           "million": f"{int(r['step']) / 1e6:.2f}"} for r in rows]
+    return curves
+
+
+def lateral_study() -> dict:
+    """``python -m laddermill_gym.studies.lateral.lateral_study``: the default wing's lateral eigenvalues [1/s] (real,
+    imaginary parts), and per sweep its rows (value, largest real part [1/s], period [s]) and zero crossings."""
+    with tempfile.TemporaryDirectory() as tmp:
+        argv = [STUDY + "lateral.lateral_study", "--out", str(Path(tmp) / "lateral_study.png")]
+        out = run_command(argv, 900)
+    eig = _search(r"^default lateral eigenvalues \[1/s\]: (.*)$", out, argv).group(1)
+    found = {"eigenvalues": [[float(a), float(b)] for a, b in re.findall(r"([-\d.]+)([-+][\d.]+)j", eig)]}
+    for name, table in re.findall(r"^(\w+): [^\n]*\(default [^\n]*\n +value[^\n]*\n((?:[^\n]+\n)+)", out, re.M):
+        rows = [line.split() for line in table.splitlines() if re.match(r" +[-\d.]+ ", line)]
+        found[name] = {"rows": [{"value": float(r[0]), "re": float(r[-6]), "period": float(r[-5])} for r in rows],
+                       "max_re_zero": _zero(table, "max Re"), "osc_zero": _zero(table, "Re of the slow oscillation")}
+    return found
+
+
+def _zero(table: str, what: str) -> float:
+    m = re.search(rf"^ +{what} = 0 at \w+ = ([-\d.]+)", table, re.M)
+    return float(m.group(1)) if m else float("nan")
+
+
 #: Page groups: name -> the function that measures it (each runs its command in a fresh process).
-GROUPS = {"rotor_design": rotor_design,
+GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lateral_study": lateral_study,
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"])}
@@ -99,13 +135,13 @@ def measure_pages(pages: list[str] | None = None, have: dict | None = None) -> d
 
 
 def _pages(pages: list[str] | None) -> list[str]:
-    covered = [n for n, e in LEDGER.items() if isinstance(e, Covered)]
+    checked = [n for n, e in LEDGER.items() if e.checks or isinstance(e, Covered)]
     if not pages:
-        return covered
+        return checked
     names = [p if p.endswith(".md") else f"{p}.md" for p in pages]
-    bad = [n for n in names if n not in covered]
+    bad = [n for n in names if n not in checked]
     if bad:
-        raise ValueError(f"--pages: {bad} are not covered pages of docsite/page_ledger.py; the covered: {covered}")
+        raise ValueError(f"--pages: {bad} have no checks in docsite/page_ledger.py; the pages with checks: {checked}")
     return names
 
 
@@ -121,9 +157,21 @@ def pages_differences(measured: dict) -> list[str]:
                 bad.append(f"docs/{name}: no text matches the check {pattern!r}")
                 continue
             want = tuple(t.format(**measured) for t in templates)
-            if m.groups() != want:
+            if len(m.groups()) != len(want) or not all(_agrees(q, w) for q, w in zip(m.groups(), want, strict=True)):
                 bad.append(f"docs/{name}: '{m.group(0)}' quotes {m.groups()}; its command prints {want}")
     return bad
+
+
+def _agrees(quoted: str | None, want: str) -> bool:
+    """A template's text equals the quoted one; a template marked ``~`` is the printed value, which the page may
+    round: it agrees when the two differ by at most half a unit of the quoted digits plus half a unit of the printed
+    ones (a printed 0.1145 is 0.114 or 0.115 quoted); an optional group the page leaves out agrees."""
+    if not want.startswith("~"):
+        return quoted == want
+    if quoted is None:
+        return True
+    dq, dp = (len(t.split(".")[1]) if "." in t else 0 for t in (quoted, want[1:]))
+    return abs(float(quoted) - float(want[1:])) <= 0.5 * 10.0 ** -dq + 0.5 * 10.0 ** -dp + 1e-12
 
 
 def coverage() -> dict[str, dict]:
@@ -132,11 +180,12 @@ def coverage() -> dict[str, dict]:
     report = {}
     for page in sorted(DOCS.glob("*.md")):
         entry = LEDGER.get(page.name)
+        flat = " ".join(page.read_text().split())
         if not isinstance(entry, Covered):
             report[page.name] = {"status": "not yet" if entry else "missing from the ledger",
-                                 "reason": getattr(entry, "reason", "")}
+                                 "reason": getattr(entry, "reason", ""), "checks": len(getattr(entry, "checks", ())),
+                                 "stale": [c for c, _ in getattr(entry, "checks", ()) if not re.search(c, flat)]}
             continue
-        flat = " ".join(page.read_text().split())
         checks = [c for c, _ in entry.checks if re.search(c, prose(page.read_text()))]
         stale = [c for c, _ in entry.checks if not re.search(c, flat)]
         snippets = [*entry.given, *entry.timings, *entry.derived, *entry.not_rerun]
