@@ -61,6 +61,10 @@ def simulate(scene_args: list[str]) -> dict:
     step = _search(r"^RK4 step ([\d.]+) s; estimated stability limit at the start ([\d.e-]+) s", out, argv)
     found = {"dt": step.group(1), "stable_step": float(step.group(2)),
              "simulated": _search(r"^simulated ([\d.]+) s in", out, argv).group(1)}
+    periodic = re.search(r"periodic motion converged at t = [\d.]+ s \(period [\d.]+ s\): mean generator power "
+                         r"([\d.]+) kW", out)
+    if periodic:
+        found["periodic_kW"] = periodic.group(1)
     wings = re.findall(r"wing (\d+) speed [\d.e+]+ m/s > (\d+) m/s", out)
     if wings:
         found.update(first_wing=wings[0][0], last_wing=wings[-1][0], guard=wings[0][1])
@@ -101,6 +105,21 @@ def lateral_study() -> dict:
     return found
 
 
+def pointmass_benchmark() -> dict:
+    """``python -m laddermill_gym.studies.pointmass.pointmass_benchmark --quick`` on two numba threads (the held
+    arrays depend on the thread count): the 5 km scene's elements, its held arrays [MB, 2 decimals as printed] and
+    the explicit method's stable step [s] at that size."""
+    import json
+
+    with tempfile.TemporaryDirectory() as tmp:
+        argv = [STUDY + "pointmass.pointmass_benchmark", "--quick", "--json", str(Path(tmp) / "pm.json")]
+        run_command(argv, 1800, threads=2)
+        data = json.loads((Path(tmp) / "pm.json").read_text())
+    big = max(r["elements"] for r in data["costs"])
+    dt = next(r["dt_s"] for r in data["costs"] if r["elements"] == big and r["method"] == "explicit")
+    return {"elements": f"{big:,}", "held_MB": f"{data['held_bytes']['total'] / 1e6:.2f}", "explicit_dt": f"{dt:.2g}"}
+
+
 def _zero(table: str, what: str) -> float:
     m = re.search(rf"^ +{what} = 0 at \w+ = ([-\d.]+)", table, re.M)
     return float(m.group(1)) if m else float("nan")
@@ -108,6 +127,7 @@ def _zero(table: str, what: str) -> float:
 
 #: Page groups: name -> the function that measures it (each runs its command in a fresh process).
 GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lateral_study": lateral_study,
+          "pointmass_benchmark": pointmass_benchmark,
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"])}
