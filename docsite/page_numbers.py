@@ -20,8 +20,9 @@ FENCE = re.compile(r"^```(\w*)[^\n]*\n(.*?)^```[ \t]*$", re.M | re.S)
 COMMENT = re.compile(r"<!--.*?-->", re.S)
 SNIPPET = re.compile(r"^.*--8<--.*$", re.M)  # pymdownx.snippets' include line: a file name, not a figure
 COMMAND_FENCES = {"bash", "sh", "shell", "console", "python", "py", "yaml", "yml", "json", "toml", "text", "ini"}
-COMMANDS = r"(?:python|laddermill|cp|NUMBA_|pip|make|git|mkdocs|for |done)"  # an indented line that is a command
+COMMANDS = r"(?:python|laddermill|cp|NUMBA_|pip|make|git|mkdocs|ray |for |done|# )"  # a line that is a command
 INDENTED = re.compile(rf"^(?: {{4}}|\t)+(?:\$ )?{COMMANDS}[^\n]*$", re.M)
+COMMAND_LINE = re.compile(rf"^ *(?:\$ )?{COMMANDS}[^\n]*$", re.M)  # in an unlabelled block: a command, not output
 CODE_SPAN = re.compile(r"(`+)(?!`).*?(?<!`)\1(?!`)", re.S)
 LINK_TARGET = re.compile(r"\]\([^)\s]*\)")
 NUMBER = re.compile(r"(?:(?<![\w.])[-+])?(?<![\w.])\d(?:[\d,]*\d)?(?:\.\d+)?(?:e[-+]?\d+)?x?(?!\w|\.\d)")
@@ -30,7 +31,8 @@ NUMBER = re.compile(r"(?:(?<![\w.])[-+])?(?<![\w.])\d(?:[\d,]*\d)?(?:\.\d+)?(?:e
 def prose(text: str) -> str:
     """``text`` with code (command blocks, code spans) and link targets blanked, whitespace flattened."""
     text = SNIPPET.sub(" ", COMMENT.sub(" ", text))
-    text = FENCE.sub(lambda m: m.group(2) if m.group(1).lower() not in COMMAND_FENCES else " ", text)
+    text = FENCE.sub(lambda m: COMMAND_LINE.sub(" ", m.group(2)) if m.group(1).lower() not in COMMAND_FENCES else " ",
+                     text)
     text = INDENTED.sub(" ", text)
     text = CODE_SPAN.sub(" ", text)
     text = LINK_TARGET.sub("]", text)
