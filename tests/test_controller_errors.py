@@ -105,4 +105,4 @@ def test_study_rows_carry_the_controller_errors():
     lines = []
     print_summary(res, echo=lines.append)
     assert any("meeting the controller tolerances" in s for s in lines)
-    assert any("x rk4 (at " in s for s in lines)
+    assert any("x rk4 at " in s for s in lines)

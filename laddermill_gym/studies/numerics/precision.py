@@ -75,29 +75,32 @@ def errors(xs, ps, xr, pr) -> dict:
 
 def timed(start, go):
     """One run for :func:`measure`: a fresh simulator from ``start()``, then ``go(sim)``'s (states, positions) at
-    the sample times and the wall time [s] of ``go`` alone (the integration, not the set-up)."""
+    the sample times, the wall time [s] and the process CPU time [s] of ``go`` alone (the integration, not the
+    set-up; with one numba thread the CPU time is the integration's own, whatever else loads the machine)."""
 
     def once():
         sim = start()
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         xs, ps = go(sim)
-        return xs, ps, time.perf_counter() - t0
+        return xs, ps, time.perf_counter() - t0, time.process_time() - c0
 
     return once
 
 
 def measure(row: dict, once, xr, pr, duration: float, repeats: int, failure=SimulationError, bar=None) -> dict:
-    """Fill ``row`` for one run: ``once()`` gives (states, positions, wall time [s]); the errors of its first call
-    against the reference (xr, pr), the median wall time of ``repeats`` more and the real-time factor; a
-    ``failure`` raised becomes the row's status (its first line), with no time. The progress ``bar`` (if any)
-    counts the run."""
+    """Fill ``row`` for one run: ``once()`` gives (states, positions, wall time [s], CPU time [s]); the errors of
+    its first call against the reference (xr, pr), the median wall and CPU times of ``repeats`` more and the
+    real-time factor (wall); a ``failure`` raised becomes the row's status (its first line), with no time. The
+    progress ``bar`` (if any) counts the run."""
     try:
-        xs, ps, _ = once()
+        xs, ps = once()[:2]
         row.update(errors(xs, ps, xr, pr), status="ok")
-        row["wall_s"] = statistics.median([once()[2] for _ in range(repeats)])
+        timings = [once()[2:] for _ in range(repeats)]
+        row["wall_s"] = statistics.median(w for w, _ in timings)
+        row["cpu_s"] = statistics.median(c for _, c in timings)
         row["real_time_factor"] = duration / row["wall_s"]
     except failure as err:
-        row.update(status=f"failed: {str(err).splitlines()[0][:160]}", wall_s=math.nan)
+        row.update(status=f"failed: {str(err).splitlines()[0][:160]}", wall_s=math.nan, cpu_s=math.nan)
     if bar is not None:
         bar.update(1)
     return row
