@@ -3,8 +3,8 @@
 ``python -m docsite.readme_figures --pictures [NAME ...]`` (part of ``make readme-figures``) runs each picture's
 command, one at a time in a fresh process, into a temporary folder (or the study's own results folder where it
 reuses saved work), and copies the files it draws over ``laddermill_gym/docs/figures/`` under the embedded names;
-it prints, per picture, whether the bytes changed (a PNG drawn again from the same figures can differ in its
-metadata only where matplotlib's version changed; look at a changed one before committing it).
+it prints, per picture, whether its pixels changed (a picture with the same pixels keeps its file: matplotlib's
+metadata alone makes the bytes differ; look at a changed one before committing it).
 
 :data:`PICTURES` lists each command once with the pictures it draws. ``kind`` says what re-running it costs:
 ``quick`` (seconds to a few minutes), ``long`` (the work-precision studies, about 15 minutes; the v2 mill's
@@ -133,8 +133,16 @@ def drawn() -> dict[str, str]:
     return out
 
 
-def _digest(path: Path) -> str:
-    return hashlib.sha256(path.read_bytes()).hexdigest() if path.exists() else ""
+def _same_pixels(new: Path, old: Path) -> bool:
+    """Whether two PNGs show the same pixels (matplotlib writes its version and the like into the file, so equal
+    pictures can differ in their bytes)."""
+    import numpy as np
+    from matplotlib.image import imread
+
+    if hashlib.sha256(new.read_bytes()).digest() == hashlib.sha256(old.read_bytes()).digest():
+        return True
+    a, b = imread(new), imread(old)
+    return a.shape == b.shape and bool(np.array_equal(a, b))
 
 
 def regenerate(names: list[str] | None = None, timeout_s: float = 3600.0) -> dict[str, str]:
@@ -154,10 +162,12 @@ def regenerate(names: list[str] | None = None, timeout_s: float = 3600.0) -> dic
             proc = subprocess.run(command, shell=True, cwd=ROOT, capture_output=True, text=True, timeout=timeout_s)
             if proc.returncode != 0:
                 raise RuntimeError(f"{pic.name}: `{command}` exited {proc.returncode}:\n{proc.stderr[-3000:]}")
-            for made, name in pic.draws.items():
-                target, before = FIGURES / name, _digest(FIGURES / name)
-                shutil.copyfile(out / made, target)
-                result[name] = "new" if not before else ("same" if _digest(target) == before else "changed")
+            for made, name in pic.draws.items():  # a picture with the same pixels keeps its file (no churn in git)
+                target = FIGURES / name
+                result[name] = "new" if not target.exists() else (
+                    "same" if _same_pixels(out / made, target) else "changed")
+                if result[name] != "same":
+                    shutil.copyfile(out / made, target)
             tqdm.write(f"{pic.name}: {time.perf_counter() - t0:.0f} s; "
                        + ", ".join(f"{n} {result[n]}" for n in pic.draws.values()))
     return result
