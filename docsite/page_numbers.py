@@ -3,7 +3,8 @@
 A page's *quoted numbers* are the numerals of its prose, tables, picture captions and unlabelled fenced blocks (a
 command's printed output); left out are code spans and fenced or indented blocks of commands (``bash``, ``python``,
 ``yaml``...: a command's arguments are its inputs), link targets, and numerals inside words (``3D``, ``v1``,
-``Fig6``). The text is compared with whitespace flattened, so a ledger entry may span a line break.
+``Fig6``) and units (the 1 of ``1/s``, the 2 of ``m^2``). The text is compared with whitespace flattened, so a
+ledger entry may span a line break.
 
 A number is *accounted for* when it lies inside a match of one of its page's entries: a check (a regular expression
 whose groups the re-run compares with what a command prints) or a listed snippet (a given: an input, a paper's own
@@ -25,7 +26,7 @@ INDENTED = re.compile(rf"^(?: {{4}}|\t)+(?:\$ )?{COMMANDS}[^\n]*$", re.M)
 COMMAND_LINE = re.compile(rf"^ *(?:\$ )?{COMMANDS}[^\n]*$", re.M)  # in an unlabelled block: a command, not output
 CODE_SPAN = re.compile(r"(`+)(?!`).*?(?<!`)\1(?!`)", re.S)
 LINK_TARGET = re.compile(r"\]\([^)\s]*\)")
-NUMBER = re.compile(r"(?:(?<![\w.])[-+])?(?<![\w.])\d(?:[\d,]*\d)?(?:\.\d+)?(?:e[-+]?\d+)?x?(?!\w|\.\d)")
+NUMBER = re.compile(r"(?:(?<![\w.^/])[-+])?(?<![\w.^/])\d(?:[\d,]*\d)?(?:\.\d+)?(?:e[-+]?\d+)?x?(?!\w|\.\d|/[a-zA-Z])")
 
 
 def prose(text: str) -> str:

@@ -24,13 +24,14 @@ from docsite.pictures import PICTURES, drawn, embedded  # noqa: E402
 
 def test_the_numbers_of_a_page_are_its_prose_numerals():
     """Counted by hand: 6.15, 169.5, 2, 0.01, 500,000, 1e-3, 8.7x and the output block's 42 are quoted; the code
-    span, the bash block, the link target, 3D, v1 and 6-8's word-internal forms are not (6 and 8 are)."""
+    span, the bash block, the link target, 3D, v1 and the units' 1 of 1/s and 2 of m^2 are not (6-8's 6 and 8 are)."""
     text = ("open loop 6.15 s at 169.5 kW (`--time 60`), a 2-core machine, a 0.01 rad step, 500,000 elements,\n"
             "tolerance 1e-3, 8.7x real time, the 3D mill, LadderMill-v1, Figs. 6-8 [page](figures/fig_12.png)\n"
+            "growth 59 1/s on 4.91e-4 m^2\n"
             "```bash\nladdermill simulate --time 99\n```\n```\nprinted 42\n```\n")
     flat = prose(text)
     assert [flat[a:b] for a, b in numbers(flat)] == ["6.15", "169.5", "2", "0.01", "500,000", "1e-3", "8.7x", "6", "8",
-                                                     "42"]
+                                                     "59", "4.91e-4", "42"]
 
 
 def test_every_docs_page_is_in_the_ledger():
