@@ -176,22 +176,24 @@ GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lat
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"])}
 
 
-def measure_pages(pages: list[str] | None = None, have: dict | None = None) -> dict:
-    """{"pages": {group: figures}} for the groups the ``pages`` (default: every covered page) check; groups already
-    in ``have`` (README's figures measured in the same run, e.g. ``main_job``) are not run again."""
-    from docsite import readme_figures
-
+def measure_pages(pages: list[str] | None = None, have: dict | None = None, more: dict | None = None) -> dict:
+    """{"pages": {group: figures}} for the groups the ``pages`` (default: every page with checks) need; groups already
+    in ``have`` (README's figures measured in the same run, e.g. ``main_job``) are not run again; ``more``: further
+    group functions (README's, from :mod:`docsite.readme_figures`: {name: function returning {name: figures}})."""
     chosen = _pages(pages)
     needed = sorted({g for name in chosen for g in LEDGER[name].groups})
-    have, measured, seconds = dict(have or {}), {}, {}
+    have, more, measured, seconds = dict(have or {}), dict(more or {}), {}, {}
+    unknown = [g for g in needed if g not in have and g not in GROUPS and g not in more]
+    if unknown:
+        raise ValueError(f"docsite/page_ledger.py names groups no function measures: {unknown}")
     for group in tqdm(needed, desc="page figures", unit="group"):
         t0 = time.perf_counter()
         if group in have:
             measured[group] = have[group]
         elif group in GROUPS:
             measured[group] = GROUPS[group]()
-        else:  # a README group (readme_figures.main_job ...): {group: ...}
-            measured.update(getattr(readme_figures, group)())
+        else:
+            measured.update(more[group]())
         seconds[group] = round(time.perf_counter() - t0)
         tqdm.write(f"{group}: {seconds[group]} s")
     return {"pages": {**measured, "seconds": seconds, "checked_pages": chosen}}

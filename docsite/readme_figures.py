@@ -264,7 +264,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.pages is not None:
             from docsite.page_figures import measure_pages
 
-            figures.update(measure_pages(args.pages, have=figures))
+            figures.update(measure_pages(args.pages, have=figures, more={"main_job": main_job}))
         out.parent.mkdir(parents=True, exist_ok=True)
         out.write_text(json.dumps(figures, indent=1))
         print(f"wrote {out}")

@@ -75,7 +75,9 @@ def test_the_page_check_names_a_changed_figure():
 def test_the_covered_pages_figures_are_what_their_commands_print():
     """``python -m docsite.readme_figures --skip-readme --pages``: every covered page's checks re-run (the main job,
     the two ``laddermill simulate`` runs, Roberts' design study: about 8 minutes on the 2-core machine)."""
-    measured = measure_pages()["pages"]
+    from docsite.readme_figures import main_job
+
+    measured = measure_pages(more={"main_job": main_job})["pages"]
     assert not pages_differences(measured), pages_differences(measured)
 
 
@@ -85,3 +87,12 @@ def test_the_training_tables_are_the_shipped_training_curves():
     from docsite.page_figures import training_curves
 
     assert pages_differences({"checked_pages": ["learned_mill.md"], "training_curves": training_curves()}) == []
+
+
+def test_every_ledger_group_has_its_measurement():
+    """Each group a page's checks read is measured by docsite.page_figures.GROUPS or by README's own groups."""
+    from docsite import readme_figures
+    from docsite.page_figures import GROUPS
+
+    named = {g for entry in LEDGER.values() for g in entry.groups}
+    assert {g for g in named if g not in GROUPS and not callable(getattr(readme_figures, g, None))} == set()
