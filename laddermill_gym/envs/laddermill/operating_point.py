@@ -38,7 +38,7 @@ from laddermill_gym.ladder.scene import Scene, load_scene, options_kwargs
 from laddermill_gym.model.states import planar_to_3d
 
 __all__ = ["OperatingPoint", "SettleConfig", "compute_operating_point", "operating_point", "cached_operating_point",
-           "mill_scene", "nominal_positions"]
+           "mill_scene", "nominal_positions", "operating_point_pending"]
 
 
 @dataclass(frozen=True)
@@ -225,11 +225,30 @@ def cached_operating_point(scene: str, options: tuple, settle: SettleConfig) -> 
     return op, False
 
 
+#: the (scene, options, settle) that :func:`operating_point` has returned in this process
+_RETURNED: set = set()
+
+
+def operating_point_pending(scene: str, options: tuple, settle: SettleConfig) -> bool:
+    """Whether :func:`operating_point` of these arguments would compute the point: not returned before in this
+    process and no entry file for it on disk (a present file is not read here: a broken one is recomputed then)."""
+    if (scene, options, settle) in _RETURNED:
+        return False
+    sc2 = mill_scene(scene, options, 2)
+    try:
+        key = op_cache.entry_key("operating_point", sc2, settle)
+    except TypeError:
+        return True
+    path = op_cache.entry_path("operating_point", f"{sc2.name}-{sc2.assembly.n_wings}", key)
+    return path is None or not path.exists()
+
+
 @lru_cache(maxsize=8)
 def operating_point(scene: str, options: tuple, settle: SettleConfig) -> OperatingPoint:
     """:func:`compute_operating_point`, memoised per process on (scene, options, settle) and on disk across
     processes (:func:`cached_operating_point`); the warning of a non-converged point is given once per process."""
     op, _ = cached_operating_point(scene, options, settle)
+    _RETURNED.add((scene, options, settle))
     if not op.converged:
         warnings.warn(f"LadderMill operating point: {op.note}", RuntimeWarning, stacklevel=2)
     return op

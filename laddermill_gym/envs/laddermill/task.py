@@ -14,6 +14,7 @@ import dataclasses
 import numpy as np
 
 from laddermill_gym.envs.actions import clip_actions
+from laddermill_gym.envs.laddermill import kernel_warmup
 from laddermill_gym.envs.laddermill.actions import SlotActionMap, resolve_slot_groups
 from laddermill_gym.envs.laddermill.evaluate import evaluate_copies, failure_text
 from laddermill_gym.envs.laddermill.gust_extent import LoopExtent, check_turbulence_cover, extent, loop_points
@@ -30,6 +31,7 @@ from laddermill_gym.envs.laddermill.operating_point import (
     mill_scene,
     nominal_positions,
     operating_point,
+    operating_point_pending,
 )
 from laddermill_gym.envs.laddermill.settings import (
     MILL_FAILURES,
@@ -97,6 +99,7 @@ class MillTask(TaskCore):
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
                  parallel: bool | None = None, authority: float = 1.0, physics_step: str | None = None,
                  physics_dt: float | None = None):
+        task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "operating_point", "__class__")}
         B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
                                    initial_noise)
         self.settle = config_from(settle, SettleConfig, "settle")
@@ -111,6 +114,9 @@ class MillTask(TaskCore):
         settings = env_physics_settings(sc.settings, physics_step, physics_dt, self.control_dt)
         self.n_substeps = substeps_per_period(sc.name, settings, self.control_dt, control_dt)
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
+        warmup = None  # the 3D kernels compiled in a second process while the operating point is computed
+        if operating_point is None and operating_point_pending(str(scene), options, self.settle):
+            warmup = kernel_warmup.start(task_kwargs, (step_observe_batch, step_observe_serial))
         self.op = self._operating_point(operating_point, str(scene), options)
         rp = self.reward_config.reference_power_W
         self.p_ref = self.op.reference_power_W if rp is None else float(rp)
@@ -146,6 +152,8 @@ class MillTask(TaskCore):
             self.op.state[: B3_SIZE * n].reshape(n, B3_SIZE)[:, B3_QUAT: B3_QUAT + 4])
         self.batch.states[:] = self.op.state
         self.batch.controls[:] = self.u_op
+        if warmup is not None:  # before the first kernel call: load what it compiled from numba's cache
+            warmup.wait()
 
     # ------------------------------------------------------------------ construction
     def _operating_point(self, given, scene: str, options: tuple) -> OperatingPoint:

@@ -1,0 +1,87 @@
+"""Compile the mill env's 3D kernels in a second process while this one computes the operating point (issue 32
+point 1: LadderMill-v0's cold start).
+
+A cold LadderMill start does two long things one after the other on one core: it runs the in-plane mill to its
+periodic motion (``operating_point.py``, about 30 s of CPU for the 101-wing mills) and then compiles the 3D
+step-and-observe kernel at the first reset (about 35 s of CPU, numba). Neither needs the other's result: the
+kernel's compiled code depends on the types of its arguments only, not on the operating point's values. So when
+the operating point has to be computed (not memoised in this process, no entry on disk), :func:`start` launches
+``python -m laddermill_gym.envs.laddermill.warmup_child`` with the task's arguments: it builds the same
+:class:`~laddermill_gym.envs.laddermill.task.MillTask` around a stand-in operating point of the right shapes
+(``warmup_child.stand_in_point``: every value a placeholder, never used for a result), resets it and takes one step, so
+numba compiles exactly the kernels (and signatures) this process will call and writes them to its on-disk cache
+(``NUMBA_CACHE_DIR``, inherited). :meth:`Warmup.wait`, called once the real task is built and before its first
+kernel call, waits for that process; the kernels are then loaded from the cache as in any warm start: the same
+machine code, so the same bits as compiling them here (numba's cache is keyed by the signature, the source and the
+CPU; a signature the second process did not compile is compiled here as before).
+
+This moves CPU seconds to the other core; it does not remove them (the figures in docs/benchmarks.md give the
+second process's CPU seconds too). ``LADDERMILL_KERNEL_WARMUP=off`` (:data:`SWITCH`) switches it off; it is also off
+when numba's JIT is disabled or the kernels are already compiled in this process. Any failure of the second
+process only costs its time: this process then compiles as before.
+"""
+
+from __future__ import annotations
+
+import os
+import pickle
+import subprocess
+import sys
+
+__all__ = ["SWITCH", "Warmup", "enabled", "start"]
+
+#: the environment variable that switches the warm-up off (value ``off``)
+SWITCH = "LADDERMILL_KERNEL_WARMUP"
+#: the module the second process runs (``python -m``)
+CHILD_MODULE = "laddermill_gym.envs.laddermill.warmup_child"
+#: the longest wait for the second process [s] (a cold compile takes 30-80 s of CPU on a loaded machine; past this
+#: it is stopped and this process compiles what it still needs)
+WAIT_LIMIT_S = 900.0
+
+
+class Warmup:
+    """A running warm-up process; :meth:`wait` (idempotent) waits for it, at most :data:`WAIT_LIMIT_S`."""
+
+    def __init__(self, proc: subprocess.Popen):
+        self.proc = proc
+        self.returncode: int | None = None
+
+    def wait(self) -> int | None:
+        """Wait for the process; its exit code (None if it had to be stopped)."""
+        if self.returncode is None and self.proc is not None:
+            try:
+                self.returncode = self.proc.wait(timeout=WAIT_LIMIT_S)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+            self.proc = None
+        return self.returncode
+
+
+def enabled(kernels) -> bool:
+    """Whether a warm-up can help: not switched off, numba's JIT on, and none of ``kernels`` (dispatchers)
+    compiled in this process yet."""
+    from numba.core import config
+
+    if os.environ.get(SWITCH, "").strip().lower() == "off" or config.DISABLE_JIT:
+        return False
+    return not any(k.signatures for k in kernels)
+
+
+def start(task_kwargs: dict, kernels) -> Warmup | None:
+    """Launch the warm-up process for a :class:`MillTask` built with ``task_kwargs`` (without ``operating_point``)
+    when :func:`enabled`; None when not (or when the arguments do not pickle)."""
+    if not enabled(kernels):
+        return None
+    try:
+        payload = pickle.dumps(dict(task_kwargs))
+    except Exception:  # an argument that does not pickle: compile here as before
+        return None
+    proc = subprocess.Popen([sys.executable, "-m", CHILD_MODULE], stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL, env=dict(os.environ))
+    try:
+        proc.stdin.write(payload)
+        proc.stdin.close()
+    except OSError:
+        pass
+    return Warmup(proc)

@@ -1,0 +1,115 @@
+"""LadderMill's kernel warm-up (``envs/laddermill/kernel_warmup.py``, issue 32 point 1): while a cold start computes
+the operating point, a second process compiles the 3D kernels into numba's cache. Oracles: the env run with the
+warm-up switched off (the kernels compiled in the process itself) gives the same bits, in fresh processes with
+empty caches (slow: two cold compiles); numba's compile events show that the process with the warm-up compiles
+nothing at its first reset and step. Fast: the stand-in point builds the real task, and the warm-up starts only
+when the operating point is to be computed and the kernels are not compiled yet."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import warnings
+
+import numpy as np
+import pytest
+
+from laddermill_gym.envs.laddermill import kernel_warmup, op_cache
+from laddermill_gym.envs.laddermill.operating_point import (
+    SettleConfig,
+    mill_scene,
+    operating_point,
+    operating_point_pending,
+)
+from laddermill_gym.envs.laddermill.task import MillTask
+from laddermill_gym.envs.laddermill.warmup_child import stand_in_point
+
+N = 11
+OPTIONS = (("n_wings", N),)
+SETTLE = SettleConfig(max_time=30.0)
+SMALL = dict(scene="laddermill", scene_options={"n_wings": N}, settle={"max_time": 30.0}, episode_time=2.0)
+
+
+def test_the_stand_in_point_builds_the_task_and_resets():
+    sc = mill_scene("laddermill", OPTIONS, 3)
+    op = stand_in_point(sc, 2.0)
+    assert op.state.shape == (sc.assembly.state_size,) and op.n_wings == N and not op.state.flags.writeable
+    task = MillTask(**SMALL, operating_point=op)
+    task.reset(np.ones(1, dtype=bool), [np.random.default_rng(0)])
+    task.step(np.zeros((1, task.n_actions)))
+    assert task.obs.shape == (1, task.obs_dim)
+
+
+def test_pending_until_returned_or_on_disk(tmp_path, monkeypatch):
+    monkeypatch.setenv(op_cache.CACHE_VARIABLE, str(tmp_path / "cache"))
+    operating_point.cache_clear()
+    settle = SettleConfig(max_time=30.5)  # a key no other test in this process has returned
+    try:
+        assert operating_point_pending("laddermill", OPTIONS, settle)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            operating_point("laddermill", OPTIONS, settle)
+        assert not operating_point_pending("laddermill", OPTIONS, settle)
+        operating_point.cache_clear()
+        entries = list((tmp_path / "cache" / "operating_points").glob("*.npz"))
+        assert entries  # on disk: a new process would read it, not compute it
+    finally:
+        operating_point.cache_clear()
+
+
+class FakeKernel:
+    def __init__(self, signatures):
+        self.signatures = signatures
+
+
+def test_started_only_when_it_can_help(monkeypatch):
+    monkeypatch.setenv(kernel_warmup.SWITCH, "off")
+    assert kernel_warmup.start({}, (FakeKernel([]),)) is None
+    monkeypatch.delenv(kernel_warmup.SWITCH)
+    assert kernel_warmup.start({}, (FakeKernel([]), FakeKernel(["a signature"]))) is None  # compiled here already
+    assert kernel_warmup.start({"x": lambda: 0}, (FakeKernel([]),)) is None  # arguments that do not pickle
+
+
+#: a fresh process: make the small mill, reset, roll out; prints the compile events per phase and the rollout
+CHILD = """import json, warnings
+import numpy as np
+from numba.core import event
+count = {"make": 0, "reset": 0}
+phase = ["make"]
+class Count(event.Listener):
+    def on_start(self, ev):
+        count[phase[0]] += 1
+    def on_end(self, ev):
+        pass
+event.register("numba:compile", Count())
+from laddermill_gym.envs.laddermill.env import LadderMillEnv
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore", RuntimeWarning)
+    env = LadderMillEnv(**%r)
+phase[0] = "reset"
+obs, _ = env.reset(seed=3)
+out = [obs]
+rng = np.random.default_rng(3)
+for _ in range(6):
+    obs, r, *_ = env.step(rng.uniform(-0.3, 0.3, env.action_space.shape).astype(np.float32))
+    out += [obs, np.array([r])]
+print(json.dumps({"count": count, "bits": np.concatenate([np.ravel(o) for o in out]).astype(float).tobytes().hex()}))
+"""
+
+
+def fresh(tmp, warmup: bool) -> dict:
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp / "numba"), **{op_cache.CACHE_VARIABLE: str(tmp / "ops")})
+    env[kernel_warmup.SWITCH] = "on" if warmup else "off"
+    r = subprocess.run([sys.executable, "-c", CHILD % (SMALL,)], env=env, capture_output=True, text=True, check=True)
+    return json.loads(r.stdout.strip().splitlines()[-1])
+
+
+@pytest.mark.slow
+def test_warmed_up_start_compiles_nothing_at_reset_and_gives_the_same_bits(tmp_path):
+    own = fresh(tmp_path / "own", warmup=False)
+    warm = fresh(tmp_path / "warm", warmup=True)
+    assert own["count"]["reset"] > 0  # the oracle compiled its kernels itself, at the first reset
+    assert warm["count"]["reset"] == 0  # loaded from what the second process compiled
+    assert warm["bits"] == own["bits"]
