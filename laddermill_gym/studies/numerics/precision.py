@@ -90,8 +90,8 @@ def timed(start, go):
 def measure(row: dict, once, xr, pr, duration: float, repeats: int, failure=SimulationError, bar=None) -> dict:
     """Fill ``row`` for one run: ``once()`` gives (states, positions, wall time [s], CPU time [s]); the errors of
     its first call against the reference (xr, pr), the median wall time and the least CPU time of ``repeats``
-    more and the real-time factor (wall); a ``failure`` raised becomes the row's status (its first line), with no time. The
-    progress ``bar`` (if any) counts the run."""
+    more and the real-time factor (wall); a ``failure`` raised becomes the row's status (its first line), with
+    no time. The progress ``bar`` (if any) counts the run."""
     try:
         xs, ps = once()[:2]
         row.update(errors(xs, ps, xr, pr), status="ok")
