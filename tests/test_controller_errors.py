@@ -106,3 +106,19 @@ def test_study_rows_carry_the_controller_errors():
     print_summary(res, echo=lines.append)
     assert any("meeting the controller tolerances" in s for s in lines)
     assert any("x rk4 at " in s for s in lines)
+
+
+def test_w_step_cost_parts_within_the_step():
+    """The W step's parts (body and cable Jacobians, factorisation) each cost less than the whole step, and a
+    right-hand side less than an RK4 step (four of them): the bound it prints is then between 0 and the W step.
+    On the chain (101 wings): each part is timed through its own call from Python (about 10 us), which on the
+    one-wing tethered wing is most of a part's time."""
+    from laddermill_gym.studies.numerics import w_step_cost
+
+    c = w_step_cost.step_costs("ladder_chain", 0.05, 0.01, n_steps=5)
+    assert all(v > 0 for v in c.values()), c
+    assert c["body_jacobian"] + c["cable_jacobian"] + c["factor"] < c["w_step"], c
+    assert c["rhs"] < c["rk4_step"], c
+    assert "RK4 steps" in w_step_cost.summary("ladder_chain", c)
+    with pytest.raises(SystemExit):
+        w_step_cost.main(["tethered_wing", "--dt-w", "0"])
