@@ -35,7 +35,7 @@ from laddermill_gym.envs.task_settings import (  # noqa: F401
     config_from,
 )
 from laddermill_gym.envs.wing_failures import aero_range_text, shared_failure_text, status_texts
-from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, GROUND, OK
+from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, OK
 from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
     AUX_GROUND_START,
@@ -46,6 +46,7 @@ from laddermill_gym.kernels.rigid.observe import (
     step_observe_batch,
     step_observe_serial,
 )
+from laddermill_gym.kernels.task_rewards import N_ARGS, N_TERMS, TERM_KEYS, shaped_terms, wing_readout
 from laddermill_gym.ladder.scene import Scene, load_scene, options_key, options_kwargs
 from laddermill_gym.model.packing import make_workspace
 from laddermill_gym.sim.batch import BatchSimulator
@@ -194,6 +195,7 @@ class WingTask(TaskCore):
         self.actions.reset(B)
         self.n_actions = self.actions.n_actions
         self.last_action = np.tile(self.actions.nominal_action, (B, 1))
+        self._reward_constants()
 
     # ------------------------------------------------------------------ kernels
     def _run(self, nsteps: np.ndarray) -> None:
@@ -265,37 +267,36 @@ class WingTask(TaskCore):
         return self._evaluate(a, n_clipped)
 
     def _evaluate(self, a: np.ndarray, n_clipped: np.ndarray):
-        rc = self.reward_config
-        B, nw = self.n_copies, self.n_wings
-        o = self.obs.reshape(B, nw, N_OBS_PER_WING)
-        power = (self.aux[:, AUX_GROUND_START] - self.aux[:, AUX_GROUND_END]) * self.v_reel
-        lat = np.mean((o[:, :, OBS_INDEX["dy"]] / self.lateral_scale) ** 2, axis=1)
-        rates = np.mean((o[:, :, OBS_INDEX["p"]] ** 2 + o[:, :, OBS_INDEX["r"]] ** 2) / rc.rate_scale ** 2, axis=1)
-        effort = np.mean((a - self.actions.nominal_action) ** 2, axis=1)
-        terms = {
-            "reward_power": rc.power_weight * power / self.p_ref,
-            "reward_lateral": -rc.lateral_weight * -np.expm1(-lat),
-            "reward_rates": -rc.rate_weight * -np.expm1(-rates),
-            "reward_effort": -rc.effort_weight * -np.expm1(-effort),
-        }
-        alpha = o[:, :, OBS_INDEX["alpha"]]
-        beta = o[:, :, OBS_INDEX["beta"]]
-        failure = np.zeros(B, dtype=np.int64)
-        failure[np.any((alpha < self.alpha_lo) | (alpha > self.alpha_hi) | (np.abs(beta) > self.beta_max), axis=1)] = 4
-        failure[self.aux[:, AUX_MAX_TENSION] > self.breaking_tension] = 3
-        failure[self.aux[:, AUX_MIN_ALTITUDE] < self.min_altitude] = 2
-        failure[self.batch.status != OK] = 1
-        failure[self.batch.status == GROUND] = 2
-        terminated = failure != 0
-        terms["reward_failure"] = -rc.failure_penalty * terminated
-        reward = (terms["reward_power"] + terms["reward_lateral"] + terms["reward_rates"] + terms["reward_effort"]
-                  + terms["reward_failure"])
-        truncated = (self.steps >= self.n_steps_max) & ~terminated
-        info = dict(terms)
+        """(reward, terminated, truncated, info) of every copy at its observed state: two compiled passes over the
+        copies (``kernels/task_rewards.py``: the reward's arguments and failure codes, then the terms and their
+        sum) around numpy's expm1 of the saturating terms (bit for bit the numpy arithmetic of before)."""
+        B = self.n_copies
+        power, p_term, failure = np.empty(B), np.empty(B), np.empty(B, dtype=np.int64)
+        neg_args = np.empty((N_ARGS, B))
+        wing_readout(self.obs, self.aux, self.batch.status, a, self._nominal_action, self.n_wings, self.v_reel,
+                     self._reward_scalars[0], self.p_ref, self.lateral_scale, self._reward_scalars[1],
+                     self._limits, self._scratch, power, p_term, neg_args, failure)
+        terms = np.empty((N_TERMS, B))
+        reward, terminated, truncated = np.empty(B), np.empty(B, dtype=bool), np.empty(B, dtype=bool)
+        shaped_terms(p_term, np.expm1(neg_args), failure, self.steps, self._weights, self.n_steps_max, terms, reward,
+                     terminated, truncated)
+        info = dict(zip(TERM_KEYS, terms, strict=True))
         info.update(power_W=power, max_tension_N=self.aux[:, AUX_MAX_TENSION].copy(),
                     min_altitude_m=self.aux[:, AUX_MIN_ALTITUDE].copy(), t=self.batch.t.copy(),
                     n_clipped=n_clipped, failure=failure)
         return reward, terminated, truncated, info
+
+    def _reward_constants(self) -> None:
+        """The compiled read-out's constants: limits (alpha_lo, alpha_hi, beta_max [rad], breaking tension [N],
+        min altitude [m]), weights (w_y, w_w, w_u, failure penalty), (power weight, rate_scale^2 [rad^2/s^2]),
+        the nominal action as float64 and a scratch row."""
+        rc = self.reward_config
+        self._limits = np.array([self.alpha_lo, self.alpha_hi, self.beta_max, self.breaking_tension,
+                                 self.min_altitude], dtype=float)
+        self._weights = np.array([rc.lateral_weight, rc.rate_weight, rc.effort_weight, rc.failure_penalty], float)
+        self._reward_scalars = (float(rc.power_weight), float(rc.rate_scale) ** 2)
+        self._nominal_action = np.asarray(self.actions.nominal_action, dtype=float)
+        self._scratch = np.empty(max(self.n_wings, self.n_actions))
 
     def reset_info(self) -> dict:
         """The single env's reset info beside ``t``: the reference power [W]."""

@@ -16,27 +16,24 @@ import numpy as np
 
 from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.envs.actions import clip_actions
-from laddermill_gym.envs.rotorcraft.observation import OBS_P, OBS_R, OBS_Y, craft_observation_bounds
+from laddermill_gym.envs.rotorcraft.observation import OBS_Y, craft_observation_bounds
 from laddermill_gym.envs.rotorcraft.settings import (
     InitialNoise,
     RotorcraftRewardConfig,
     RotorcraftTerminationConfig,
 )
 from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim
-from laddermill_gym.envs.task_base import TaskCore, clip_observations, positive, whole_multiple
+from laddermill_gym.envs.task_base import TaskCore, positive, whole_multiple
 from laddermill_gym.kernels.contract import (
     B3_POS,
     B3_SIZE,
     CA_ALTITUDE,
-    CA_INFLOW_OK,
     CA_MAX_ELEMENT,
     CA_MAX_TENSION,
     CA_POWER,
     CA_TENSION,
     CA_THRUST,
-    CA_TIP_AOA,
     CO_EULER,
-    CO_THRUST,
     GROUND,
     LIMIT,
     N_CRAFT_AUX,
@@ -49,6 +46,7 @@ from laddermill_gym.kernels.contract import (
     REF_THRUST,
     SINGULAR,
 )
+from laddermill_gym.kernels.task_rewards import N_ARGS, N_TERMS, TERM_KEYS, clip_rows, craft_readout, shaped_terms
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
 from laddermill_gym.rotorcraft.craft import TETHER_NAMES, CraftSimulator
 from laddermill_gym.rotorcraft.craft_observe import CRAFT_BODY, craft_step_observe_batch, craft_step_observe_serial
@@ -137,6 +135,7 @@ class CraftTask(TaskCore):
         self.trim_action = ((self.u_trim - self.mid) / self.half).astype(np.float32)
         self.n_actions = 2
         self.last_action = np.tile(self.trim_action.astype(float), (self.n_copies, 1))
+        self._reward_constants()
         self._clip_obs()
 
     # ------------------------------------------------------------------ construction
@@ -200,7 +199,7 @@ class CraftTask(TaskCore):
     def _clip_obs(self) -> None:
         """obs: raw_obs with non-finite entries replaced by the bound on their side (nan: the upper) and clipped
         to [obs_low, obs_high]."""
-        clip_observations(self.raw_obs, self.obs_low, self.obs_high, self.obs)
+        clip_rows(self.raw_obs, self.obs_low, self.obs_high, self.obs)
 
     # ------------------------------------------------------------------ episodes
     def reset(self, mask: np.ndarray, rngs) -> None:
@@ -228,37 +227,37 @@ class CraftTask(TaskCore):
         self._advance_copies(sel)
         return self._evaluate(a, n_clipped)
 
-    def _failures(self) -> np.ndarray:
-        """Failure code (B,) of each copy at its observed state (0: flying); where several apply, the one listed
-        first in :data:`CRAFT_FAILURES`."""
-        tc, raw, aux = self.termination_config, self.raw_obs, self.aux
-        phi, theta, psi = np.degrees(raw[:, CO_EULER: CO_EULER + 3]).T
-        lo, hi = tc.pitch_range_deg
-        failure = np.zeros(self.n_copies, dtype=np.int64)
-        failure[(np.abs(phi) > tc.max_abs_roll_deg) | ~((lo <= theta) & (theta <= hi))
-                | (np.abs(psi) > tc.max_abs_yaw_deg)] = 5
-        failure[aux[:, CA_MAX_TENSION] > self.breaking_tension] = 4
-        failure[aux[:, CA_ALTITUDE] < self.min_altitude] = 3
-        failure[~np.all(np.isfinite(raw[:, CO_THRUST: CO_THRUST + 2]), axis=1)] = 2
-        broke = self.batch.status != OK
-        failure[broke] = np.where(aux[broke, CA_INFLOW_OK] == 1.0, 1, 2)
-        failure[self.batch.status == GROUND] = 3
-        return failure
-
     def _evaluate(self, a: np.ndarray, n_clipped: np.ndarray):
-        rc, aux = self.reward_config, self.aux
-        o = np.nan_to_num(self.raw_obs)
-        lat = (o[:, OBS_Y] / self.lateral_scale) ** 2
-        rates = (o[:, OBS_P] ** 2 + o[:, OBS_R] ** 2) / rc.rate_scale ** 2
-        effort = np.mean((a - self.trim_action) ** 2, axis=1)
-        failure = self._failures()
-        power = np.where(np.isfinite(aux[:, CA_POWER]), aux[:, CA_POWER], 0.0)
-        reward, terminated, truncated, info = self.shaped_reward(power, self.p_ref, lat, rates, effort, failure)
+        """(reward, terminated, truncated, info) of every copy at its observed state: two compiled passes over the
+        copies (``kernels/task_rewards.py``: the reward's arguments and the failure codes of
+        :data:`CRAFT_FAILURES`, where several apply the one listed first; then the terms and their sum) around
+        numpy's expm1 of the saturating terms (bit for bit the numpy arithmetic of ``TaskCore.shaped_reward``)."""
+        B, aux = self.n_copies, self.aux
+        power, p_term, failure, tip = np.empty(B), np.empty(B), np.empty(B, dtype=np.int64), np.empty(B)
+        neg_args = np.empty((N_ARGS, B))
+        craft_readout(self.raw_obs, aux, self.batch.status, a, self._trim_action64, self._v_ref, self._limits,
+                      self._scratch, power, p_term, neg_args, failure, tip)
+        terms = np.empty((N_TERMS, B))
+        reward, terminated, truncated = np.empty(B), np.empty(B, dtype=bool), np.empty(B, dtype=bool)
+        shaped_terms(p_term, np.expm1(neg_args), failure, self.steps, self._weights, self.n_steps_max, terms, reward,
+                     terminated, truncated)
+        info = dict(zip(TERM_KEYS, terms, strict=True))
         info.update(t=self.batch.t.copy(), power_W=power, thrust_N=aux[:, CA_THRUST: CA_THRUST + 2].copy(),
                     tether_tension_N=aux[:, CA_TENSION: CA_TENSION + 3].copy(), altitude_m=aux[:, CA_ALTITUDE].copy(),
-                    max_tip_incidence_rad=np.max(aux[:, CA_TIP_AOA: CA_TIP_AOA + 2], axis=1), n_clipped=n_clipped,
-                    failure=failure)
+                    max_tip_incidence_rad=tip, n_clipped=n_clipped, failure=failure)
         return reward, terminated, truncated, info
+
+    def _reward_constants(self) -> None:
+        """The compiled read-out's constants: (power weight, p_ref [W], lateral scale [m], rate_scale^2
+        [rad^2/s^2]), limits (max |roll|, pitch range, max |yaw| [deg], breaking tension [N], min altitude [m]),
+        weights (w_y, w_w, w_u, failure penalty), the trim action as float64 and a scratch row."""
+        rc, tc = self.reward_config, self.termination_config
+        self._v_ref = np.array([rc.power_weight, self.p_ref, self.lateral_scale, rc.rate_scale ** 2], dtype=float)
+        self._limits = np.array([tc.max_abs_roll_deg, *tc.pitch_range_deg, tc.max_abs_yaw_deg, self.breaking_tension,
+                                 self.min_altitude], dtype=float)
+        self._weights = np.array([rc.lateral_weight, rc.rate_weight, rc.effort_weight, rc.failure_penalty], float)
+        self._trim_action64 = self.trim_action.astype(float)
+        self._scratch = np.empty(self.n_actions)
 
     # ------------------------------------------------------------------ read-outs
     def simulator(self, b: int = 0) -> CraftSimulator:
