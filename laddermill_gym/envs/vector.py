@@ -81,6 +81,7 @@ class TaskVectorEnv(VectorEnv):
         self._rngs = [np.random.default_rng() for _ in range(self.num_envs)]
         self._autoreset = np.zeros(self.num_envs, dtype=bool)
         self._renderer = None
+        self._no_failure = None
         if not task.render_modes:
             self.metadata = dict(self.metadata, render_modes=[])
 
@@ -167,8 +168,10 @@ class TaskVectorEnv(VectorEnv):
         """The single env's ``failure_name`` and ``failure_reason`` per copy into ``info``."""
         codes = np.asarray(info["failure"])
         failed = np.flatnonzero(codes)
-        names = np.full(codes.shape[0], self.failure_names[0], dtype=object)  # code 0: no failure
-        reasons = np.full(codes.shape[0], "", dtype=object)
+        if self._no_failure is None:  # (names, reasons) of copies flying: code 0's name, no reason
+            self._no_failure = (np.full(codes.shape[0], self.failure_names[0], dtype=object),
+                                np.full(codes.shape[0], "", dtype=object))
+        names, reasons = self._no_failure[0].copy(), self._no_failure[1].copy()  # a copy: a third of np.full's time
         for i in failed:  # the few copies that failed in this step
             names[i], reasons[i] = self.failure_names[int(codes[i])], self.task.failure_text(int(i), int(codes[i]))
         info["failure_name"], info["failure_reason"] = names, reasons

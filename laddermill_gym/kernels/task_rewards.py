@@ -60,13 +60,18 @@ _DEG = 180.0 / math.pi
 MAX_PAIRWISE = 926
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def pairwise_sum(v, lo, n, stride):
     """numpy's pairwise sum of the ``n`` entries v[lo], v[lo + stride], ... (``np.add.reduce`` of a contiguous
     run, numpy's ``pairwise_sum``): below 8 entries in order from -0.0, up to 128 in 8 interleaved partial sums,
     above that the two halves (the first a multiple of 8 long) summed apart. Written as three levels of halving,
     not as a recursion (numba's cache does not load recursive functions safely: a warm cache crashed here), so
     at most :data:`MAX_PAIRWISE` entries (ValueError above)."""
+    if n < 8:  # the common case (one wing, three actions) without the calls below
+        res = -0.0
+        for i in range(n):
+            res += v[lo + i * stride]
+        return res
     if n <= 470:
         return _pairwise2(v, lo, n, stride)
     if n > MAX_PAIRWISE:
