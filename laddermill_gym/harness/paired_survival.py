@@ -1,0 +1,80 @@
+"""Two controllers on the same drawn episodes: which survives where the other does not (a paired comparison).
+
+A benchmark scenario with three seeds (gusts-v1's NTM_IB) counts a controller as surviving only when all three
+episodes do, so where each controller survives about half of the fields of a turbulence model the count is decided
+largely by those three fields. This flies both controllers on ``episodes`` fields of one of a training config's
+validation sets, drawn with seeds from ``seed`` on (choose seeds no selection used: held out), and reports the
+pairs: both survive, only the first, only the second, neither; and the two-sided exact sign test of the discordant
+pairs (McNemar's exact test: under "equally robust" each discordant pair goes either way with probability 1/2).
+
+    python -m laddermill_gym.harness.paired_survival --config configs/agents/ppo_tethered_wing_severe.yaml \\
+        --set ntm_ib --episodes 200 --seed 5000 --controllers lqr ppo_tethered_wing
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+import numpy as np
+
+__all__ = ["sign_test", "paired_survival", "main"]
+
+
+def sign_test(only_first: int, only_second: int) -> float:
+    """Two-sided exact p-value [-] of the sign test on ``only_first`` against ``only_second`` discordant pairs:
+    the probability, each pair a fair coin, of a split at least as uneven (1.0 without discordant pairs)."""
+    n, k = only_first + only_second, min(only_first, only_second)
+    if only_first < 0 or only_second < 0:
+        raise ValueError(f"sign_test: counts must be >= 0, got {only_first}, {only_second}")
+    if n == 0:
+        return 1.0
+    tail = sum(math.comb(n, i) for i in range(k + 1)) / 2.0 ** n
+    return min(1.0, 2.0 * tail)
+
+
+def paired_survival(config: str, set_name: str, episodes: int, seed: int, controllers: list[str]) -> dict:
+    """Survival (bool array per controller, episode i seeded ``seed + i``) of two ``controllers`` (factory specs)
+    on ``episodes`` episodes of the validation set ``set_name`` of ``config``, with the pair counts and
+    :func:`sign_test`'s p-value."""
+    from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.control.rl_config import load_rl_config
+    from laddermill_gym.studies.gusts.gust_bench import run_episodes
+
+    if len(controllers) != 2:
+        raise ValueError(f"paired_survival: two controllers to compare, got {controllers}")
+    cfg = load_rl_config(config)
+    sets = {} if cfg.validation is None else {s.name: s for s in cfg.validation.sets}
+    if set_name not in sets:
+        raise ValueError(f"{config}: validation set {set_name!r} not found (sets: {sorted(sets)})")
+    kw = cfg.carried_env_kwargs()
+    seeds = list(range(seed, seed + episodes))
+    alive = {}
+    for spec in controllers:
+        rec = run_episodes(make_controller(spec, cfg.env_id, kw), cfg.env_id, kw, seeds,
+                           cfg.validation.episode_time, sets[set_name].disturbances)
+        alive[spec] = np.asarray(rec["failure"]) == 0
+    a, b = (alive[c] for c in controllers)
+    counts = dict(both=int(np.sum(a & b)), only_first=int(np.sum(a & ~b)), only_second=int(np.sum(~a & b)),
+                  neither=int(np.sum(~a & ~b)))
+    return dict(alive=alive, **counts, p_value=sign_test(counts["only_first"], counts["only_second"]))
+
+
+def main(argv: list[str] | None = None) -> None:
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--config", required=True, help="training config holding the validation set")
+    p.add_argument("--set", required=True, help="validation set name (e.g. ntm_ib)")
+    p.add_argument("--episodes", type=int, default=200, help="episodes (fields) [-]")
+    p.add_argument("--seed", type=int, default=5000, help="first episode seed (held out from every selection)")
+    p.add_argument("--controllers", nargs=2, required=True, help="two controller specs (lqr, ppo_tethered_wing)")
+    a = p.parse_args(argv)
+    r = paired_survival(a.config, a.set, a.episodes, a.seed, a.controllers)
+    first, second = a.controllers
+    for c in a.controllers:
+        print(f"{c}: survives {int(r['alive'][c].sum())}/{a.episodes}")
+    print(f"both {r['both']}, only {first} {r['only_first']}, only {second} {r['only_second']}, neither "
+          f"{r['neither']}; sign test p = {r['p_value']:.3g}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,115 @@
+"""Select among a training run's saved policies again, on another config's validation sets.
+
+A run keeps its checkpoints (``checkpoints/step_<n>.zip``, every ``checkpoint_every`` steps), its last model and
+its validated best; with the observation statistics held fixed (``init_from``) one ``vecnormalize.pkl`` serves them
+all. This flies each of them (and, as a reference, a controller such as ``lqr``) on the validation sets of a config
+(:func:`~laddermill_gym.harness.validation.validate`: drawn episodes, never a benchmark suite's) and names the one
+that survives the most (then the smaller RMS lateral excursion, :func:`~laddermill_gym.harness.validation.score`).
+
+    python -m laddermill_gym.harness.reselect --config configs/agents/ppo_tethered_wing_severe.yaml \\
+        --runs runs/ppo_tethered_wing_seed0 --reference lqr --out results/reselect.csv
+
+A config whose ``validation.every`` equals its ``checkpoint_every`` selects, when trained, among the same steps, so
+the selected checkpoint is what ``laddermill train <config> --seed <s>`` keeps (the training is deterministic for
+a seed up to its time limit).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import re
+import time
+from pathlib import Path
+
+__all__ = ["candidates", "reselect", "main"]
+
+_STEP = re.compile(r"step_(\d+)\.zip$")
+
+
+def candidates(run: Path) -> list[tuple[str, Path, Path]]:
+    """(label, model file, statistics file) of every policy saved in the training run folder ``run``: its
+    checkpoints in step order, ``best_model.zip`` and ``model.zip``. FileNotFoundError naming the folder when it
+    holds none or lacks the statistics a model needs."""
+    run = Path(run)
+    found = []
+    ckpts = sorted((run / "checkpoints").glob("step_*.zip"), key=lambda p: int(_STEP.search(p.name).group(1)))
+    for p in ckpts:
+        found.append((f"{run.name}/{p.stem}", p, run / "vecnormalize.pkl"))
+    for name, stats in (("best_model.zip", "best_vecnormalize.pkl"), ("model.zip", "vecnormalize.pkl")):
+        if (run / name).is_file():
+            found.append((f"{run.name}/{Path(name).stem}", run / name, run / stats))
+    if not found:
+        raise FileNotFoundError(f"{run}: no checkpoints/step_*.zip, best_model.zip or model.zip (a training run "
+                                "folder of laddermill train?)")
+    for label, _model, stats in found:
+        if not stats.is_file():
+            raise FileNotFoundError(f"{stats}: missing; {label} needs its observation statistics")
+    return found
+
+
+def _load(model_file: Path, stats: Path):
+    import stable_baselines3 as sb3
+
+    from laddermill_gym.control.sb3_policy import SB3Controller
+    from laddermill_gym.control.zoo_run import load_vecnormalize
+
+    algo = (model_file.parent / "algorithm.txt") if (model_file.parent / "algorithm.txt").is_file() else \
+        (model_file.parent.parent / "algorithm.txt")
+    name = algo.read_text().strip() if algo.is_file() else "PPO"
+    model = getattr(sb3, name).load(model_file, device="cpu")
+    return SB3Controller.from_vecnormalize(model, load_vecnormalize(stats))
+
+
+def reselect(config: str | Path, runs: list[str | Path], reference: list[str] = (), out: str | Path | None = None,
+             log=print) -> list[dict]:
+    """Rows (label, survived, episodes, per-set counts, RMS lateral, seconds, selected) of every policy saved in
+    ``runs`` and of the ``reference`` controllers (factory specs), on ``config``'s validation sets; the selected
+    row is the best policy of the runs (references are never selected). Written to ``out`` (CSV) when given."""
+    from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.control.rl_config import load_rl_config
+    from laddermill_gym.harness.validation import score, validate
+
+    cfg = load_rl_config(config)
+    if cfg.validation is None:
+        raise ValueError(f"{config}: no validation section (the sets to select on)")
+    kw = cfg.carried_env_kwargs()
+    jobs = [(spec, None, None) for spec in reference]
+    for run in runs:
+        jobs += candidates(Path(run))
+    rows = []
+    for label, model_file, stats in jobs:
+        t0 = time.process_time()
+        ctrl = make_controller(label, cfg.env_id, kw) if model_file is None else _load(model_file, stats)
+        res = validate(ctrl, cfg.env_id, kw, cfg.validation)
+        rows.append(dict(label=label, survived=res["survived"], episodes=res["episodes"], per_set=res["per_set"],
+                         rms_lateral_m=round(res["rms_lateral_m"], 3), cpu_s=round(time.process_time() - t0, 1),
+                         reference=int(model_file is None), selected=0))
+        log(f"{label}: {res['survived']}/{res['episodes']} {res['per_set']} RMS lateral "
+            f"{res['rms_lateral_m']:.2f} m ({rows[-1]['cpu_s']} CPU s)")
+    policies = [r for r in rows if not r["reference"]]
+    if policies:
+        best = max(policies, key=lambda r: score(dict(survived=r["survived"], rms_lateral_m=r["rms_lateral_m"])))
+        best["selected"] = 1
+        log(f"selected: {best['label']} ({best['survived']}/{best['episodes']})")
+    if out is not None:
+        Path(out).parent.mkdir(parents=True, exist_ok=True)
+        with open(out, "w", newline="") as fh:
+            w = csv.DictWriter(fh, fieldnames=list(rows[0]))
+            w.writeheader()
+            w.writerows(rows)
+    return rows
+
+
+def main(argv: list[str] | None = None) -> None:
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--config", required=True, help="training config whose validation sets select")
+    p.add_argument("--runs", nargs="+", default=[], help="training run folders (checkpoints/, best_model.zip)")
+    p.add_argument("--reference", nargs="*", default=[], help="controllers flown as references (lqr, ...)")
+    p.add_argument("--out", default=None, help="CSV of the rows")
+    a = p.parse_args(argv)
+    reselect(a.config, a.runs, a.reference, a.out)
+
+
+if __name__ == "__main__":
+    main()
