@@ -250,7 +250,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--papers", action="store_true", help="also the figures of the Papers-reproduced rows, each study "
                    "in turn (~12 min; 23 before Meijaard's searches are saved)")
     p.add_argument("--pages", nargs="*", metavar="PAGE", help="also the checked numbers of these docs pages "
-                   "(docsite/page_ledger.py; no name: every covered page)")
+                   "(docsite/page_ledger.py; no name: every page with checks)")
     p.add_argument("--pictures", nargs="*", metavar="NAME", help="also draw the embedded pictures again into "
                    "docs/figures/ (docsite/pictures.py; no name: every command but the training runs)")
     p.add_argument("--skip-readme", action="store_true", help="leave out README's own groups and checks (re-run "
