@@ -6,9 +6,11 @@ the JSON under ``"pages"`` and compares every check of :data:`docsite.page_ledge
 check's groups capture on the page must equal its template filled from the measured figures (the printed digits,
 or the printed value rounded to the digits the page quotes). ``--pages`` alone re-runs every covered page.
 
-Each group's cost on the shared 2-core machine (load 1-2, numba's cache warm): ``rotor_design`` 42 s,
-``simulate_laddermill`` about 4 minutes (the periodic search, then 60 s of the 3D mill), ``simulate_tethered_wing``
-about 30 s, ``main_job`` (README's demo, shared with README's figures) about 2 minutes.
+Each group's cost, measured on the shared 2-core machine at a load of 6-8 (numba's cache warm; on a quiet machine
+about half): ``main_job`` (README's demo, shared with README's figures) 382 s, ``fast_mill_v2`` (five periodic
+searches) 647 s, ``simulate_laddermill`` 127-223 s, ``pointmass_benchmark`` 125 s, ``rotor_design`` 54 s,
+``craft_stability`` 32 s, ``lateral_study`` 31 s, ``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the
+shipped CSVs) 0 s: every page about 26 minutes.
 """
 
 from __future__ import annotations
