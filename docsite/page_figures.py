@@ -1,16 +1,17 @@
 """The docs pages' figures: re-run the commands the pages quote, compare each checked number, and report coverage.
 
 ``python -m docsite.readme_figures --pages [PAGE ...]`` runs the measurement groups the chosen pages' checks need
-(:data:`GROUPS`, each one command in a fresh process, as a user types it; what it prints is parsed), writes them into
-the JSON under ``"pages"`` and compares every check of :data:`docsite.page_ledger.LEDGER` with them: the text a
-check's groups capture on the page must equal its template filled from the measured figures (the printed digits,
-or the printed value rounded to the digits the page quotes). ``--pages`` alone re-runs every covered page.
+(:data:`GROUPS`: each runs its command in a fresh process, as a user types it, and parses what it prints; one reads
+shipped files), writes them into the JSON under ``"pages"`` and compares every check of
+:data:`docsite.page_ledger.LEDGER` with them: the text a check's groups capture on the page must equal its template
+filled from the measured figures (the printed digits, or the printed value rounded to the digits the page quotes).
+``--pages`` alone re-runs every page with checks.
 
-Each group's cost, measured on the shared 2-core machine at a load of 6-8 (numba's cache warm; on a quiet machine
-about half): ``main_job`` (README's demo, shared with README's figures) 382 s, ``fast_mill_v2`` (five periodic
-searches) 647 s, ``simulate_laddermill`` 127-223 s, ``pointmass_benchmark`` 125 s, ``rotor_design`` 54 s,
-``craft_stability`` 32 s, ``lateral_study`` 31 s, ``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the
-shipped CSVs) 0 s: every page about 26 minutes.
+Each group's cost, measured on the shared 2-core machine at a load of 6-8 (numba's cache warm): ``main_job``
+(README's demo, shared with README's figures) 382 s, ``fast_mill_v2`` (five periodic searches) 647 s,
+``simulate_laddermill`` 127-223 s, ``pointmass_benchmark`` 125 s, ``rotor_design`` 54 s, ``craft_stability`` 32 s,
+``lateral_study`` 31 s, ``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the shipped CSVs) 0 s: every
+page about 26 minutes.
 """
 
 from __future__ import annotations
