@@ -199,6 +199,19 @@ MILL_FAST = NotYet("the in-plane v2 table at 1-5 m/s is checked against fast_mil
                    "drift and elevator tables, the 3D rows and timings not yet listed",
                    groups=("fast_mill_v2",), checks=_v2_rows())
 
+MODEL = Covered(given=(  # the model's equations: their constants and the state layout, nothing measured
+    "Schwab 1999", "3-2-1 Euler", "wing k (13 floats at offset 13 k): x (3, global CG position), q (4), v (3,",
+    "w (3, body-frame", "free node j (6 floats at offset 13 n_w + 6 j): position (3, global), velocity (3, global)",
+    "q' = 1/2 q (x) (0, w)", "per wing (6 dof) and the node velocity (3 dof)", "(C_L_de > 0, C_m_de < 0)",
+    "(C_n_dr < 0, C_Y_dr > 0)", "C_l_da > 0)", "for 0 < h < h0 (n = 0.2)", "0 for h <= 0", "phi_inf (1 - exp",
+    "(1 - 2.2558e-5 h)", "if V < 1e-9", "V^2 / 2", "from -180 to 180 deg", "g = (-w_a, 0, u_a)", "the 6-vector",
+    "(sin a, 0, -cos a) ; r_ref x (CLad (sin a, 0, -cos a)) + (0, c Cmad, 0)", "the node velocity, or 0",
+    "(e = 0 if l < 1e-9)", "mu g (0, 0, 1)", "C_N0 = 1.1, C_T0 = 0.02", "F_r = l (2 f_r + f_s)/6",
+    "F_s = l (f_r + 2 f_s)/6", "+ 7/360 p_r", "- EA eps_p/l0 = 0", "(EA eps_p/l0)^(1/3))", "below 1e-13 of s (at most "
+    "60 steps)", "l0 <= 1e-300 or l < 1e-9: sigma = max(sigma0, 0)", "sigma = max(sigma0, 0) if eps > 0 else 0",
+    "R^T (0, 0, m g)", "J = [[Jxx, 0, -Jxz], [0, Jyy, 0], [-Jxz, 0, Jzz]]", "State per wing (6)", "per node (4)",
+    "y = 0, v = 0, p = r = 0, phi = psi = 0", "sin(phi_s(h) + delta(t)), 0)"))
+
 #: Every docs page: covered, or why not yet.
 LEDGER = {
     "about_docs.md": ABOUT_DOCS,
@@ -220,7 +233,7 @@ LEDGER = {
     "lateral_stability.md": LATERAL,
     "learned_mill.md": LEARNED_MILL,
     "mill_fast.md": MILL_FAST,
-    "model.md": NotYet("model constants and equations (given): to list"),
+    "model.md": MODEL,
     "moving_cable.md": NotYet("insertion study, stable-step and LQR figures (minutes) and timings: not yet listed"),
     "numerics.md": NotYet("stable steps, error tables and timings: not yet listed"),
     "paper_lansdorp2008.md": NotYet("site and pumping-cycle figures (README's rows check the tether and Schmehl "
