@@ -10,8 +10,8 @@ filled from the measured figures (the printed digits, or the printed value round
 Each group's cost, measured on the shared 2-core machine at a load of 6-8 (numba's cache warm): ``main_job``
 (README's demo, shared with README's figures) 382 s, ``fast_mill_v2`` (five periodic searches) 647 s,
 ``simulate_laddermill`` 127-223 s, ``pointmass_benchmark`` 125 s, ``rotor_design`` 54 s, ``craft_stability`` 32 s,
-``lateral_study`` 31 s, ``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the shipped CSVs) 0 s: every
-page about 26 minutes.
+``lateral_study`` 31 s, ``tethered_wing_lqr`` 24 s, ``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the
+shipped CSVs) 0 s: every page about 26 minutes.
 """
 
 from __future__ import annotations
@@ -168,6 +168,17 @@ def fast_mill_v2() -> dict:
     return found
 
 
+def tethered_wing_lqr() -> dict:
+    """``laddermill evaluate --env laddermill_gym/TetheredWing-v0 --controllers lqr --episodes 2`` (20 s): the LQR's
+    printed row (return, length [s], max |dy| [m], power [W]) on the registered scenario."""
+    with tempfile.TemporaryDirectory() as tmp:
+        argv = ["laddermill_gym.cli", "evaluate", "--env", "laddermill_gym/TetheredWing-v0", "--controllers", "lqr",
+                "--episodes", "2", "--out", tmp]
+        out = run_command(argv, 900)
+    row = _search(r"^lqr +(\S+) +(\S+) +(\S+) +(\S+) +(\S+)$", out, argv)
+    return dict(zip(("return", "length", "dy", "power", "failures"), row.groups(), strict=True))
+
+
 def _zero(table: str, what: str) -> float:
     m = re.search(rf"^ +{what} = 0 at \w+ = ([-\d.]+)", table, re.M)
     return float(m.group(1)) if m else float("nan")
@@ -176,7 +187,7 @@ def _zero(table: str, what: str) -> float:
 #: Page groups: name -> the function that measures it (each runs its command in a fresh process).
 GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lateral_study": lateral_study,
           "pointmass_benchmark": pointmass_benchmark, "craft_stability": craft_stability,
-          "fast_mill_v2": fast_mill_v2,
+          "fast_mill_v2": fast_mill_v2, "tethered_wing_lqr": tethered_wing_lqr,
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"])}

@@ -21,7 +21,8 @@ FENCE = re.compile(r"^```(\w*)[^\n]*\n(.*?)^```[ \t]*$", re.M | re.S)
 COMMENT = re.compile(r"<!--.*?-->", re.S)
 SNIPPET = re.compile(r"^.*--8<--.*$", re.M)  # pymdownx.snippets' include line: a file name, not a figure
 COMMAND_FENCES = {"bash", "sh", "shell", "console", "python", "py", "yaml", "yml", "json", "toml", "text", "ini"}
-COMMANDS = r"(?:python|laddermill|cp|NUMBA_|pip|make|git|mkdocs|ray |for |done|# )"  # a line that is a command
+# a line that starts with one of these is a command (its numbers are inputs)
+COMMANDS = r"(?:python3?\b|laddermill\b(?!_)|cp\b|NUMBA_|pip\b|make\b|git\b|mkdocs\b|ray\b|for\b|done\b|# )"
 INDENTED = re.compile(rf"^(?: {{4}}|\t)+(?:\$ )?{COMMANDS}[^\n]*$", re.M)
 COMMAND_LINE = re.compile(rf"^ *(?:\$ )?{COMMANDS}[^\n]*$", re.M)  # in an unlabelled block: a command, not output
 CODE_SPAN = re.compile(r"(`+)(?!`).*?(?<!`)\1(?!`)", re.S)
