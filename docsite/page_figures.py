@@ -179,6 +179,31 @@ def tethered_wing_lqr() -> dict:
     return dict(zip(("return", "length", "dy", "power", "failures"), row.groups(), strict=True))
 
 
+def meijaard_v1() -> dict:
+    """``python -m laddermill_gym.studies.mill.meijaard --out results/meijaard_v1`` (92 s with its periodic searches
+    saved there, about 11 minutes without): its ``power.csv`` per case ("2D V_c=1", "2D V_c=2", "2D V_c=5",
+    "3D V_c=2"), every column as a number (or the text it holds)."""
+    import csv
+
+    from docsite.paper_figures import MEIJAARD_OUT
+
+    run_command([STUDY + "mill.meijaard", "--out", str(MEIJAARD_OUT), "--no-progress"], 2400)
+    with open(MEIJAARD_OUT / "power.csv", newline="") as f:
+        rows = {r["case"].replace(" V_c=", "_"): r for r in csv.DictReader(f)}
+
+    def number(text: str) -> float | str:
+        try:
+            return float(text)
+        except ValueError:
+            return text
+
+    found = {case: {k: number(v) for k, v in row.items()} for case, row in rows.items()}
+    for row in found.values():  # "t = 392.55 s: element 0 tension ..." -> 392.55
+        m = re.match(r"t = ([\d.]+) s", str(row.get("overload", "")))
+        row["overload_s"] = float(m.group(1)) if m else ""
+    return found
+
+
 def _zero(table: str, what: str) -> float:
     m = re.search(rf"^ +{what} = 0 at \w+ = ([-\d.]+)", table, re.M)
     return float(m.group(1)) if m else float("nan")
@@ -188,6 +213,7 @@ def _zero(table: str, what: str) -> float:
 GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lateral_study": lateral_study,
           "pointmass_benchmark": pointmass_benchmark, "craft_stability": craft_stability,
           "fast_mill_v2": fast_mill_v2, "tethered_wing_lqr": tethered_wing_lqr,
+          "meijaard_v1": meijaard_v1,
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"])}
