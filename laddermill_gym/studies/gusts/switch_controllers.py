@@ -1,0 +1,78 @@
+"""One benchmark episode flown by one controller up to a time and by another after it (a hand-over test).
+
+Where two controllers differ on a scenario (one survives, the other not), handing over at several times tells
+whether the difference is in the state the first one leaves (the second cannot recover from it) or in the
+recovery (the second recovers from the first's state), or neither: when the outcome flips with the hand-over time
+in no order, the episode is on a knife edge (chaotic), and one seed of it does not rank the controllers.
+
+    python -m laddermill_gym.studies.gusts.switch_controllers --scenario NTM_IB --seed 0 \\
+        --controllers ppo_tethered_wing lqr --times 10 18 20 21 21.5 22 22.5
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+import yaml
+
+__all__ = ["Handover", "scenario", "handover_outcomes", "main"]
+
+SUITE = Path(__file__).resolve().parents[3] / "configs" / "benchmarks" / "gusts-v1.yaml"
+
+
+class Handover:
+    """``predict`` of ``first`` for the first ``steps`` calls, of ``second`` after (one episode at a time)."""
+
+    def __init__(self, first, second, steps: int):
+        self.first, self.second, self.steps, self.calls = first, second, int(steps), 0
+
+    def predict(self, observation, state=None, episode_start=None, deterministic=True):
+        ctrl = self.first if self.calls < self.steps else self.second
+        self.calls += 1
+        return ctrl.predict(observation, deterministic=True)
+
+
+def scenario(env_id: str, name: str, suite: str | Path = SUITE) -> dict:
+    """The scenario ``name`` of ``env_id`` in the suite file (ValueError naming the file and the names)."""
+    data = yaml.safe_load(open(suite))
+    found = {s["name"]: s for s in data["envs"].get(env_id, {}).get("scenarios", [])}
+    if name not in found:
+        raise ValueError(f"{suite}: no scenario {name!r} for {env_id} (scenarios: {sorted(found)})")
+    return found[name]
+
+
+def handover_outcomes(env_id: str, name: str, seed: int, controllers: list[str], times: list[float]) -> list:
+    """(hand-over time [s], failure code, end time [s]) of ``controllers[0]`` handing over to ``controllers[1]``
+    at each of ``times`` on seed ``seed`` of the scenario ``name``."""
+    import gymnasium as gym
+
+    from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.studies.gusts.gust_bench import run_episodes
+
+    sc = scenario(env_id, name)
+    first, second = (make_controller(c, env_id, {}) for c in controllers)
+    dt = float(gym.make(env_id).unwrapped.task.control_dt)  # [s] the control period
+    rows = []
+    for t in times:
+        steps = round(float(t) / dt)
+        rec = run_episodes(Handover(first, second, steps), env_id, {}, [seed], sc["duration"], sc["disturbances"])
+        rows.append((float(t), int(rec["failure"][0]), float(rec["t_end"][0])))
+    return rows
+
+
+def main(argv: list[str] | None = None) -> None:
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("--env", default="laddermill_gym/TetheredWing-v0")
+    p.add_argument("--scenario", required=True, help="gusts-v1 scenario name")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--controllers", nargs=2, required=True, help="first (flies up to the time) and second")
+    p.add_argument("--times", nargs="+", type=float, required=True, help="hand-over times [s]")
+    a = p.parse_args(argv)
+    first, second = a.controllers
+    for t, code, t_end in handover_outcomes(a.env, a.scenario, a.seed, a.controllers, a.times):
+        print(f"{first} -> {second} at {t:g} s: " + ("survives" if code == 0 else f"fails at {t_end:.2f} s"))
+
+
+if __name__ == "__main__":
+    main()
