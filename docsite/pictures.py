@@ -133,21 +133,27 @@ def drawn() -> dict[str, str]:
     return out
 
 
-def _same_pixels(new: Path, old: Path) -> bool:
-    """Whether two PNGs show the same pixels (matplotlib writes its version and the like into the file, so equal
-    pictures can differ in their bytes)."""
+def compare(new: Path, old: Path) -> str:
+    """"same" when two PNGs show the same pixels (matplotlib writes its version and the like into the file, so equal
+    pictures can differ in their bytes), else "changed" with how many pixels differ and by how much at most (a few
+    pixels at edges is antialiasing; look before committing)."""
     import numpy as np
     from matplotlib.image import imread
 
     if hashlib.sha256(new.read_bytes()).digest() == hashlib.sha256(old.read_bytes()).digest():
-        return True
+        return "same"
     a, b = imread(new), imread(old)
-    return a.shape == b.shape and bool(np.array_equal(a, b))
+    if a.shape != b.shape:
+        return f"changed (size {b.shape[1]} x {b.shape[0]} -> {a.shape[1]} x {a.shape[0]})"
+    diff = np.abs(a - b).max(axis=-1) if a.ndim == 3 else np.abs(a - b)
+    if not diff.any():
+        return "same"
+    return f"changed ({int((diff > 0).sum()):,} of {diff.size:,} pixels, max {diff.max():.2f})"
 
 
 def regenerate(names: list[str] | None = None, timeout_s: float = 3600.0) -> dict[str, str]:
     """Run the commands ``names`` (default: every one but the training kind) and copy their pictures into
-    docs/figures/; {picture: "changed" | "same" | "new"}. A command that fails raises naming it."""
+    docs/figures/; {picture: "same" | "new" | "changed (...)"}. A command that fails raises naming it."""
     by_name = {p.name: p for p in PICTURES}
     unknown = sorted(set(names or ()) - set(by_name))
     if unknown:
@@ -164,8 +170,7 @@ def regenerate(names: list[str] | None = None, timeout_s: float = 3600.0) -> dic
                 raise RuntimeError(f"{pic.name}: `{command}` exited {proc.returncode}:\n{proc.stderr[-3000:]}")
             for made, name in pic.draws.items():  # a picture with the same pixels keeps its file (no churn in git)
                 target = FIGURES / name
-                result[name] = "new" if not target.exists() else (
-                    "same" if _same_pixels(out / made, target) else "changed")
+                result[name] = "new" if not target.exists() else compare(out / made, target)
                 if result[name] != "same":
                     shutil.copyfile(out / made, target)
             tqdm.write(f"{pic.name}: {time.perf_counter() - t0:.0f} s; "

@@ -96,3 +96,20 @@ def test_every_ledger_group_has_its_measurement():
 
     named = {g for entry in LEDGER.values() for g in entry.groups}
     assert {g for g in named if g not in GROUPS and not callable(getattr(readme_figures, g, None))} == set()
+
+
+def test_a_picture_drawn_again_is_judged_by_its_pixels(tmp_path):
+    """The same pixels under other metadata are the same picture; one changed pixel is named with its count."""
+    import numpy as np
+    from matplotlib.image import imsave
+
+    from docsite.pictures import compare
+
+    img = np.zeros((4, 5, 3))
+    imsave(tmp_path / "a.png", img, metadata={"Software": "one"})
+    imsave(tmp_path / "b.png", img, metadata={"Software": "another"})
+    img[1, 2] = 1.0
+    imsave(tmp_path / "c.png", img)
+    assert (tmp_path / "a.png").read_bytes() != (tmp_path / "b.png").read_bytes()
+    assert compare(tmp_path / "b.png", tmp_path / "a.png") == "same"
+    assert compare(tmp_path / "c.png", tmp_path / "a.png") == "changed (1 of 20 pixels, max 1.00)"
