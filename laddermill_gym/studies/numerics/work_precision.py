@@ -19,8 +19,12 @@ and is the floor of what can be measured. Errors are taken at the final time and
 equally spaced times, for the positions (wing CGs and cable nodes, [m]) and the full state (each entry scaled
 by max(1, |reference|)); the largest position error over the samples relative to the scene's extent (the largest
 distance of a body from the origin in the reference) is ``err_max_pos_rel``, the measure of the summary's
-"fastest at 1e-3" table. Wall time: the median of ``--repeats`` warm runs (after one untimed run, which is the
-one whose errors are recorded), one numba thread. Output: ``SCENE.csv``, ``SCENE.json`` and ``SCENE.png``
+"fastest at 1e-3" table. Beside them, what a controller sees (``controller_errors.py``): the element tensions and
+the generator power (largest error over the largest value of the run), the wings' lateral offsets [m] and
+attitudes [rad], and whether a run is within 1 %, 1 %, 0.1 m and 0.01 rad; the summary names the run that meets
+these in the least CPU time per method and its speed-up over the fastest such RK4 run. Wall time: the median of
+``--repeats`` warm runs (after one untimed run, which is the one whose errors are recorded), CPU time the least of
+them, one numba thread. Output: ``SCENE.csv``, ``SCENE.json`` and ``SCENE.png``
 (log-log) in ``--out``.
 """
 
