@@ -46,7 +46,17 @@ from laddermill_gym.kernels.rigid.observe import (
     step_observe_batch,
     step_observe_serial,
 )
-from laddermill_gym.kernels.task_rewards import N_ARGS, N_TERMS, TERM_KEYS, shaped_terms, wing_readout
+from laddermill_gym.kernels.task_rewards import (
+    ARG_EFFORT,
+    ARG_LATERAL,
+    ARG_RATES,
+    N_ARGS,
+    N_TERMS,
+    SEQUENTIAL_SUM,
+    TERM_KEYS,
+    shaped_terms,
+    wing_readout,
+)
 from laddermill_gym.ladder.scene import Scene, load_scene, options_key, options_kwargs
 from laddermill_gym.model.packing import make_workspace
 from laddermill_gym.sim.batch import BatchSimulator
@@ -269,13 +279,16 @@ class WingTask(TaskCore):
     def _evaluate(self, a: np.ndarray, n_clipped: np.ndarray):
         """(reward, terminated, truncated, info) of every copy at its observed state: two compiled passes over the
         copies (``kernels/task_rewards.py``: the reward's arguments and failure codes, then the terms and their
-        sum) around numpy's expm1 of the saturating terms (bit for bit the numpy arithmetic of before)."""
+        sum) around numpy's expm1 of the saturating terms (bit for bit the numpy arithmetic of before; from 8 wings
+        or actions on, the means in numpy: :meth:`_means`)."""
         B = self.n_copies
         power, p_term, failure = np.empty(B), np.empty(B), np.empty(B, dtype=np.int64)
         neg_args = np.empty((N_ARGS, B))
+        if self._numpy_means:
+            self._means(a, neg_args)
         wing_readout(self.obs, self.aux, self.batch.status, a, self._nominal_action, self.n_wings, self.v_reel,
                      self._reward_scalars[0], self.p_ref, self.lateral_scale, self._reward_scalars[1],
-                     self._limits, self._scratch, power, p_term, neg_args, failure)
+                     self._limits, self._numpy_means, power, p_term, neg_args, failure)
         terms = np.empty((N_TERMS, B))
         reward, terminated, truncated = np.empty(B), np.empty(B, dtype=bool), np.empty(B, dtype=bool)
         shaped_terms(p_term, np.expm1(neg_args), failure, self.steps, self._weights, self.n_steps_max, terms, reward,
@@ -296,7 +309,16 @@ class WingTask(TaskCore):
         self._weights = np.array([rc.lateral_weight, rc.rate_weight, rc.effort_weight, rc.failure_penalty], float)
         self._reward_scalars = (float(rc.power_weight), float(rc.rate_scale) ** 2)
         self._nominal_action = np.asarray(self.actions.nominal_action, dtype=float)
-        self._scratch = np.empty(max(self.n_wings, self.n_actions))
+        self._numpy_means = max(self.n_wings, self.n_actions) >= SEQUENTIAL_SUM
+
+    def _means(self, a: np.ndarray, neg_args: np.ndarray) -> None:
+        """The negated means of the saturating terms (``kernels/task_rewards.py``'s rows) with numpy's pairwise
+        sums, for a scene of :data:`SEQUENTIAL_SUM` wings or actions or more (the chain)."""
+        o = self.obs.reshape(self.n_copies, self.n_wings, N_OBS_PER_WING)
+        lat = np.mean((o[:, :, OBS_INDEX["dy"]] / self.lateral_scale) ** 2, axis=1)
+        rates = np.mean((o[:, :, OBS_INDEX["p"]] ** 2 + o[:, :, OBS_INDEX["r"]] ** 2) / self._reward_scalars[1], axis=1)
+        neg_args[ARG_LATERAL], neg_args[ARG_RATES] = -lat, -rates
+        neg_args[ARG_EFFORT] = -np.mean((a - self._nominal_action) ** 2, axis=1)
 
     def reset_info(self) -> dict:
         """The single env's reset info beside ``t``: the reference power [W]."""

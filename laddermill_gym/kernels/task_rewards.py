@@ -6,8 +6,11 @@ The arithmetic is that of the numpy code these kernels replace, operation for op
 for bit those of before (tests/test_task_rewards.py holds them to a numpy reference):
 
 * no fastmath (a fused multiply-add or a reordered sum would change last bits);
-* a mean over wings or actions is numpy's pairwise sum (:func:`pairwise_sum`, numpy's ``pairwise_sum`` of
-  ``loops_utils.h``: blocks of 8 accumulators up to 128 entries, halves above) divided by the count;
+* a mean over fewer than 8 wings or actions is their sum in order from -0.0 divided by the count, which is what
+  numpy's pairwise sum does below 8 entries (``pairwise_sum`` of ``loops_utils.h``); from 8 on (the 101-wing
+  chain) numpy's 8-way interleaved sums differ, so the caller takes those means with numpy and passes them in
+  (``means_given``): the chain's physics costs a millisecond per copy, its means a microsecond. Keeping numpy's
+  order here instead would compile five more functions into every cold start (issue 32 point 1);
 * the exponentials ``expm1`` of the shaped reward stay in numpy (:func:`shaped_terms`' caller): numpy evaluates
   them with its own SIMD library where the CPU has AVX-512 (SVML), which differs from the C library's ``expm1``
   in the last bit for about 1 % of arguments (measured on this machine: 9,607 of 800,000).
@@ -56,93 +59,20 @@ _BIG = np.finfo(np.float64).max
 _DEG = 180.0 / math.pi
 
 
-#: the most entries :func:`pairwise_sum` adds (three levels of numpy's halving above its 128-entry blocks)
-MAX_PAIRWISE = 926
-
-
-@njit(cache=True, inline="always")
-def pairwise_sum(v, lo, n, stride):
-    """numpy's pairwise sum of the ``n`` entries v[lo], v[lo + stride], ... (``np.add.reduce`` of a contiguous
-    run, numpy's ``pairwise_sum``): below 8 entries in order from -0.0, up to 128 in 8 interleaved partial sums,
-    above that the two halves (the first a multiple of 8 long) summed apart. Written as three levels of halving,
-    not as a recursion (numba's cache does not load recursive functions safely: a warm cache crashed here), so
-    at most :data:`MAX_PAIRWISE` entries (ValueError above)."""
-    if n < 8:  # the common case (one wing, three actions) without the calls below
-        res = -0.0
-        for i in range(n):
-            res += v[lo + i * stride]
-        return res
-    if n <= 470:
-        return _pairwise2(v, lo, n, stride)
-    if n > MAX_PAIRWISE:
-        raise ValueError("pairwise_sum: more than MAX_PAIRWISE = 926 entries")
-    n2 = _first_half(n)
-    return _pairwise2(v, lo, n2, stride) + _pairwise2(v, lo + n2 * stride, n - n2, stride)
-
-
-@njit(cache=True)
-def _first_half(n):
-    """numpy's split of n entries: half of them, down to a multiple of 8."""
-    n2 = n // 2
-    return n2 - n2 % 8
-
-
-@njit(cache=True)
-def _pairwise2(v, lo, n, stride):
-    """:func:`pairwise_sum` of at most 470 entries."""
-    if n <= 242:
-        return _pairwise1(v, lo, n, stride)
-    n2 = _first_half(n)
-    return _pairwise1(v, lo, n2, stride) + _pairwise1(v, lo + n2 * stride, n - n2, stride)
-
-
-@njit(cache=True)
-def _pairwise1(v, lo, n, stride):
-    """:func:`pairwise_sum` of at most 242 entries."""
-    if n <= 128:
-        return _block_sum(v, lo, n, stride)
-    n2 = _first_half(n)
-    return _block_sum(v, lo, n2, stride) + _block_sum(v, lo + n2 * stride, n - n2, stride)
-
-
-@njit(cache=True)
-def _block_sum(v, lo, n, stride):
-    """numpy's pairwise sum of at most 128 entries (one block)."""
-    if n < 8:
-        res = -0.0
-        for i in range(n):
-            res += v[lo + i * stride]
-        return res
-    r0, r1, r2, r3 = v[lo], v[lo + stride], v[lo + 2 * stride], v[lo + 3 * stride]
-    r4, r5, r6, r7 = v[lo + 4 * stride], v[lo + 5 * stride], v[lo + 6 * stride], v[lo + 7 * stride]
-    i = 8
-    while i < n - n % 8:
-        j = lo + i * stride
-        r0 += v[j]
-        r1 += v[j + stride]
-        r2 += v[j + 2 * stride]
-        r3 += v[j + 3 * stride]
-        r4 += v[j + 4 * stride]
-        r5 += v[j + 5 * stride]
-        r6 += v[j + 6 * stride]
-        r7 += v[j + 7 * stride]
-        i += 8
-    res = ((r0 + r1) + (r2 + r3)) + ((r4 + r5) + (r6 + r7))
-    while i < n:
-        res += v[lo + i * stride]
-        i += 1
-    return res
+#: below this many entries numpy's pairwise sum adds in order (the kernels' means; from it on the caller's numpy)
+SEQUENTIAL_SUM = 8
 
 
 @njit(cache=True)
 def wing_readout(obs, aux, status, a, nominal_action, nw, v_reel, power_weight, p_ref, lateral_scale, rate_scale2,
-                 limits, scratch, power, p_term, neg_args, failure):
+                 limits, means_given, power, p_term, neg_args, failure):
     """Per copy b of the wing task: ``power`` [W] (ground tension difference x reel speed ``v_reel`` [m/s]),
     ``p_term`` = power_weight power / p_ref, the negated arguments of the saturating terms into ``neg_args``
     (3, B) (mean over the ``nw`` wings of (dy / lateral_scale)^2 and of (p^2 + r^2) / rate_scale2, mean over the
-    actions of (a - nominal_action)^2) and the failure code (``envs.task.FAILURES``: 4 alpha / beta out of
-    range, 3 tension, 2 altitude, 1 integration, 2 ground contact; a later one wins). ``limits`` = (alpha_lo,
-    alpha_hi, beta_max [rad], breaking tension [N], min altitude [m]); ``scratch`` (max(nw, n_actions),)."""
+    actions of (a - nominal_action)^2; left as they are when ``means_given``, which the caller sets from
+    :data:`SEQUENTIAL_SUM` wings or actions on) and the failure code (``envs.task.FAILURES``: 4 alpha / beta out
+    of range, 3 tension, 2 altitude, 1 integration, 2 ground contact; a later one wins). ``limits`` = (alpha_lo,
+    alpha_hi, beta_max [rad], breaking tension [N], min altitude [m])."""
     alpha_lo, alpha_hi, beta_max, breaking, min_alt = limits[0], limits[1], limits[2], limits[3], limits[4]
     na = a.shape[1]
     for b in range(obs.shape[0]):
@@ -150,21 +80,23 @@ def wing_readout(obs, aux, status, a, nominal_action, nw, v_reel, power_weight, 
         power[b] = pw
         p_term[b] = power_weight * pw / p_ref
         out_of_range = False
+        lat, rates, effort = -0.0, -0.0, -0.0
         for k in range(nw):
-            q = obs[b, OBS_SIZE * k + OBS_OFFSET + 1] / lateral_scale
-            scratch[k] = q * q
-            al, be = obs[b, OBS_SIZE * k + OBS_ALPHA], obs[b, OBS_SIZE * k + OBS_BETA]
+            o = OBS_SIZE * k
+            q = obs[b, o + OBS_OFFSET + 1] / lateral_scale
+            lat += q * q
+            p, r = obs[b, o + OBS_RATES], obs[b, o + OBS_RATES + 2]
+            rates += (p * p + r * r) / rate_scale2
+            al, be = obs[b, o + OBS_ALPHA], obs[b, o + OBS_BETA]
             if al < alpha_lo or al > alpha_hi or abs(be) > beta_max:
                 out_of_range = True
-        neg_args[0, b] = -(pairwise_sum(scratch, 0, nw, 1) / nw)
-        for k in range(nw):
-            p, r = obs[b, OBS_SIZE * k + OBS_RATES], obs[b, OBS_SIZE * k + OBS_RATES + 2]
-            scratch[k] = (p * p + r * r) / rate_scale2
-        neg_args[1, b] = -(pairwise_sum(scratch, 0, nw, 1) / nw)
         for j in range(na):
             d = a[b, j] - nominal_action[j]
-            scratch[j] = d * d
-        neg_args[2, b] = -(pairwise_sum(scratch, 0, na, 1) / na)
+            effort += d * d
+        if not means_given:
+            neg_args[ARG_LATERAL, b] = -(lat / nw)
+            neg_args[ARG_RATES, b] = -(rates / nw)
+            neg_args[ARG_EFFORT, b] = -(effort / na)
         code = 4 if out_of_range else 0
         if aux[b, AUX_MAX_TENSION] > breaking:
             code = 3
@@ -176,14 +108,14 @@ def wing_readout(obs, aux, status, a, nominal_action, nw, v_reel, power_weight, 
 
 
 @njit(cache=True)
-def craft_readout(raw, aux, status, a, trim_action, v_ref, limits, scratch, power, p_term, neg_args, failure, tip):
-    """Per copy b of the rotorcraft task (``envs.rotorcraft.task``): ``power`` [W] (0 where not finite),
-    ``p_term`` = power_weight power / p_ref, ``neg_args`` (3, B) as :func:`wing_readout` (nan observations taken
-    as 0, +-inf as the largest float, as ``np.nan_to_num``), the failure code of ``CRAFT_FAILURES`` (5 attitude,
-    4 tension, 3 altitude, 2 inflow, integration 1 or 2, 3 ground contact; a later one wins) and ``tip`` the
-    larger retreating-tip incidence [rad] (nan if either is). ``v_ref`` = (power_weight, p_ref [W],
-    lateral_scale [m], rate_scale^2 [rad^2/s^2]); ``limits`` = (max |roll|, pitch low, pitch high, max |yaw| [deg],
-    breaking tension [N], min altitude [m]); ``scratch`` (n_actions,)."""
+def craft_readout(raw, aux, status, a, trim_action, v_ref, limits, power, p_term, neg_args, failure, tip):
+    """Per copy b of the rotorcraft task (``envs.rotorcraft.task``; its 2 actions, under
+    :data:`SEQUENTIAL_SUM`): ``power`` [W] (0 where not finite), ``p_term`` = power_weight power / p_ref,
+    ``neg_args`` (3, B) as :func:`wing_readout` (nan observations taken as 0, +-inf as the largest float, as
+    ``np.nan_to_num``), the failure code of ``CRAFT_FAILURES`` (5 attitude, 4 tension, 3 altitude, 2 inflow,
+    integration 1 or 2, 3 ground contact; a later one wins) and ``tip`` the larger retreating-tip incidence [rad]
+    (nan if either is). ``v_ref`` = (power_weight, p_ref [W], lateral_scale [m], rate_scale^2 [rad^2/s^2]);
+    ``limits`` = (max |roll|, pitch low, pitch high, max |yaw| [deg], breaking tension [N], min altitude [m])."""
     power_weight, p_ref, lateral_scale, rate_scale2 = v_ref[0], v_ref[1], v_ref[2], v_ref[3]
     na = a.shape[1]
     for b in range(raw.shape[0]):
@@ -195,34 +127,29 @@ def craft_readout(raw, aux, status, a, trim_action, v_ref, limits, scratch, powe
         neg_args[ARG_LATERAL, b] = -(q * q)
         p, r = _finite(raw[b, CO_RATES]), _finite(raw[b, CO_RATES + 2])
         neg_args[ARG_RATES, b] = -((p * p + r * r) / rate_scale2)
+        effort = -0.0
         for j in range(na):
             d = a[b, j] - trim_action[j]
-            scratch[j] = d * d
-        neg_args[ARG_EFFORT, b] = -(pairwise_sum(scratch, 0, na, 1) / na)
-        failure[b] = _craft_failure(raw, aux, status[b], b, limits)
+            effort += d * d
+        neg_args[ARG_EFFORT, b] = -(effort / na)
+        phi, theta, psi = raw[b, CO_EULER] * _DEG, raw[b, CO_EULER + 1] * _DEG, raw[b, CO_EULER + 2] * _DEG
+        code = 0
+        if abs(phi) > limits[0] or not (limits[1] <= theta and theta <= limits[2]) or abs(psi) > limits[3]:
+            code = 5
+        if aux[b, CA_MAX_TENSION] > limits[4]:
+            code = 4
+        if aux[b, CA_ALTITUDE] < limits[5]:
+            code = 3
+        if not (math.isfinite(raw[b, CO_THRUST]) and math.isfinite(raw[b, CO_THRUST + 1])):
+            code = 2
+        if status[b] != OK:
+            code = 3 if status[b] == GROUND else (1 if aux[b, CA_INFLOW_OK] == 1.0 else 2)
+        failure[b] = code
         t0, t1 = aux[b, CA_TIP_AOA], aux[b, CA_TIP_AOA + 1]
         tip[b] = math.nan if (t0 != t0 or t1 != t1) else max(t0, t1)
 
 
-@njit(cache=True)
-def _craft_failure(raw, aux, status, b, limits):
-    """The failure code of copy b of the rotorcraft (see :func:`craft_readout`)."""
-    phi, theta, psi = raw[b, CO_EULER] * _DEG, raw[b, CO_EULER + 1] * _DEG, raw[b, CO_EULER + 2] * _DEG
-    code = 0
-    if abs(phi) > limits[0] or not (limits[1] <= theta and theta <= limits[2]) or abs(psi) > limits[3]:
-        code = 5
-    if aux[b, CA_MAX_TENSION] > limits[4]:
-        code = 4
-    if aux[b, CA_ALTITUDE] < limits[5]:
-        code = 3
-    if not (math.isfinite(raw[b, CO_THRUST]) and math.isfinite(raw[b, CO_THRUST + 1])):
-        code = 2
-    if status != OK:
-        code = 3 if status == GROUND else (1 if aux[b, CA_INFLOW_OK] == 1.0 else 2)
-    return code
-
-
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _finite(v):
     """``np.nan_to_num`` of one float: 0 for nan, the largest finite float for +-inf (with its sign)."""
     if v != v:

@@ -235,8 +235,8 @@ class CraftTask(TaskCore):
         B, aux = self.n_copies, self.aux
         power, p_term, failure, tip = np.empty(B), np.empty(B), np.empty(B, dtype=np.int64), np.empty(B)
         neg_args = np.empty((N_ARGS, B))
-        craft_readout(self.raw_obs, aux, self.batch.status, a, self._trim_action64, self._v_ref, self._limits,
-                      self._scratch, power, p_term, neg_args, failure, tip)
+        craft_readout(self.raw_obs, aux, self.batch.status, a, self._trim_action64, self._v_ref, self._limits, power,
+                      p_term, neg_args, failure, tip)
         terms = np.empty((N_TERMS, B))
         reward, terminated, truncated = np.empty(B), np.empty(B, dtype=bool), np.empty(B, dtype=bool)
         shaped_terms(p_term, np.expm1(neg_args), failure, self.steps, self._weights, self.n_steps_max, terms, reward,
@@ -250,14 +250,13 @@ class CraftTask(TaskCore):
     def _reward_constants(self) -> None:
         """The compiled read-out's constants: (power weight, p_ref [W], lateral scale [m], rate_scale^2
         [rad^2/s^2]), limits (max |roll|, pitch range, max |yaw| [deg], breaking tension [N], min altitude [m]),
-        weights (w_y, w_w, w_u, failure penalty), the trim action as float64 and a scratch row."""
+        weights (w_y, w_w, w_u, failure penalty) and the trim action as float64."""
         rc, tc = self.reward_config, self.termination_config
         self._v_ref = np.array([rc.power_weight, self.p_ref, self.lateral_scale, rc.rate_scale ** 2], dtype=float)
         self._limits = np.array([tc.max_abs_roll_deg, *tc.pitch_range_deg, tc.max_abs_yaw_deg, self.breaking_tension,
                                  self.min_altitude], dtype=float)
         self._weights = np.array([rc.lateral_weight, rc.rate_weight, rc.effort_weight, rc.failure_penalty], float)
         self._trim_action64 = self.trim_action.astype(float)
-        self._scratch = np.empty(self.n_actions)
 
     # ------------------------------------------------------------------ read-outs
     def simulator(self, b: int = 0) -> CraftSimulator:
