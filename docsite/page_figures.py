@@ -9,9 +9,9 @@ filled from the measured figures (the printed digits, or the printed value round
 
 Each group's cost, measured on the shared 2-core machine at a load of 6-8 (numba's cache warm): ``main_job``
 (README's demo, shared with README's figures) 382 s, ``fast_mill_v2`` (five periodic searches) 647 s,
-``simulate_laddermill`` 127-223 s, ``pointmass_benchmark`` 125 s, ``rotor_design`` 54 s, ``craft_stability`` 32 s,
-``lateral_study`` 31 s, ``tethered_wing_lqr`` 24 s, ``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the
-shipped CSVs) 0 s: every page about 26 minutes.
+``meijaard_v1`` (its periodic searches saved) 310 s, ``simulate_laddermill`` 127-223 s, ``pointmass_benchmark``
+125 s, ``rotor_design`` 54 s, ``craft_stability`` 32 s, ``lateral_study`` 31 s, ``tethered_wing_lqr`` 24 s,
+``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the shipped CSVs) 0 s: every page about 31 minutes.
 """
 
 from __future__ import annotations
