@@ -23,6 +23,7 @@ from pathlib import Path
 
 from tqdm import tqdm
 
+from docsite.config_figures import cable_dyneema
 from docsite.page_ledger import LEDGER, Covered
 from docsite.page_numbers import prose, unaccounted
 from docsite.paper_figures import run_command
@@ -213,7 +214,7 @@ def _zero(table: str, what: str) -> float:
 GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lateral_study": lateral_study,
           "pointmass_benchmark": pointmass_benchmark, "craft_stability": craft_stability,
           "fast_mill_v2": fast_mill_v2, "tethered_wing_lqr": tethered_wing_lqr,
-          "meijaard_v1": meijaard_v1,
+          "meijaard_v1": meijaard_v1, "cable_dyneema": cable_dyneema,
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"])}
@@ -277,16 +278,23 @@ def pages_differences(measured: dict) -> list[str]:
 def _agrees(quoted: str | None, want: str) -> bool:
     """A template's text equals the quoted one; a template marked ``~`` is the printed value, which the page may
     round: it agrees when the two differ by at most half a unit of the quoted digits plus half a unit of the printed
-    ones (a printed 0.1145 is 0.114 or 0.115 quoted); an optional group the page leaves out agrees."""
+    ones (a printed 0.1145 is 0.114 or 0.115 quoted; 2.16e7's unit is 1e5);
+    an optional group the page leaves out agrees."""
     if not want.startswith("~"):
         return quoted == want
     if quoted is None:
         return True
-    dq, dp = (len(t.split(".")[1]) if "." in t else 0 for t in (quoted, want[1:]))
     try:
-        return abs(float(quoted.replace(",", "")) - float(want[1:])) <= 0.5 * 10.0 ** -dq + 0.5 * 10.0 ** -dp + 1e-12
+        return abs(float(quoted.replace(",", "")) - float(want[1:])) <= 0.5 * (_unit(quoted) + _unit(want[1:])) + 1e-12
     except ValueError:  # a figure the command did not print (no failure where the page quotes one)
         return False
+
+
+def _unit(text: str) -> float:
+    """One unit of the last digit ``text`` writes: 0.01 for 0.30, 1e5 for 2.16e7, 1e-3 for 1e-3."""
+    mantissa, _, exponent = text.lower().partition("e")
+    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+    return 10.0 ** ((int(exponent) if exponent else 0) - decimals)
 
 
 def coverage() -> dict[str, dict]:

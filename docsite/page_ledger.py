@@ -23,6 +23,7 @@ A covered page's entries:
 
 from __future__ import annotations
 
+from docsite.ledger_data import CABLE_DATA
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
 from docsite.ledger_kinds import Covered, NotYet
 from docsite.ledger_papers import MEIJAARD, PODGAETS, ROBERTS
@@ -43,7 +44,7 @@ LEDGER = {
     "benchmarks.md": NotYet("machine timings almost throughout (env steps/s, real-time factors, cold and warm starts;"
                             " each dated with machine and load): to be listed as timings; helper T edits its cold-"
                             "start section this session"),
-    "cable_data.md": NotYet("material data and worked numbers (given and derived) to list; no command"),
+    "cable_data.md": CABLE_DATA,
     "controllers.md": NotYet("README's TetheredWing-v0 rows are checked by readme_figures; the other tables "
                              "(LadderMill-v0 with a PPO run not shipped, the chain, the rotorcraft, the wing's PPO "
                              "scenarios) not yet; helper P edits the wing section this session"),

@@ -113,3 +113,18 @@ def test_a_picture_drawn_again_is_judged_by_its_pixels(tmp_path):
     assert (tmp_path / "a.png").read_bytes() != (tmp_path / "b.png").read_bytes()
     assert compare(tmp_path / "b.png", tmp_path / "a.png") == "same"
     assert compare(tmp_path / "c.png", tmp_path / "a.png") == "changed (1 of 20 pixels, max 1.00)"
+
+
+def test_the_cable_page_is_its_config_file_and_its_arithmetic():
+    """docs/cable_data.md against configs/cables/dyneema_25mm.yaml and its worked numbers reworked in closed form
+    from the inputs it gives (fast set); a config with another EA is named on each line that quotes it."""
+    import copy
+
+    from docsite.config_figures import cable_dyneema
+
+    measured = {"checked_pages": ["cable_data.md"], "cable_dyneema": cable_dyneema()}
+    assert pages_differences(measured) == []
+    other = copy.deepcopy(measured)
+    other["cable_dyneema"]["config"].update(breaking_load=5.3e5, tau=3e-3)
+    bad = pages_differences(other)
+    assert len(bad) == 4 and all("cable_data.md" in b and ("5.25e5" in b or "1e-3" in b) for b in bad), bad
