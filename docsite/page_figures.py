@@ -42,7 +42,8 @@ def _search(pattern: str, text: str, argv: list[str]) -> re.Match:
 
 def rotor_design() -> dict:
     """Roberts' 35 m design at 15,000 and 30,000 ft: the wind of the 3.13 MW rating [m/s], its incidence alpha_c
-    [deg] and the ideal C_p at that incidence."""
+    [deg] and the ideal C_p at that incidence; ``printed``: its whole output up to the files it wrote (whitespace
+    flattened, as docs/rotorcraft_design.md quotes it)."""
     with tempfile.TemporaryDirectory() as tmp:
         argv = [STUDY + "rotorcraft.rotor_design", "--out", tmp]
         out = run_command(argv, 600)
@@ -53,6 +54,7 @@ def rotor_design() -> dict:
         ideal = _search(r"ideal C_p at that incidence ([\d.]+)", block, argv)
         found[alt.replace(",000", "kft")] = {"wind": m.group(1), "alpha_c": float(m.group(2)),
                                        "ideal_cp": float(ideal.group(1))}
+    found["printed"] = " ".join(out.split("\nwrote ")[0].split())  # all it prints before the files it wrote
     return found
 
 

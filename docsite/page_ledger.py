@@ -27,7 +27,7 @@ from docsite.ledger_data import CABLE_DATA
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
 from docsite.ledger_kinds import Covered, NotYet
 from docsite.ledger_papers import MEIJAARD, PODGAETS, ROBERTS
-from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST, ROTORCRAFT
+from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST, ROTOR_DESIGN, ROTORCRAFT
 
 __all__ = ["LEDGER", "Covered", "NotYet"]
 
@@ -70,8 +70,7 @@ LEDGER = {
     "rl_zoo3.md": RL_ZOO3,
     "rotor.md": NotYet("rotor_chart and Gessow & Myers' figures: not yet listed"),
     "rotorcraft.md": ROTORCRAFT,
-    "rotorcraft_design.md": NotYet("rotor_design's printed blocks (42 s; paper_roberts.md's four are checked): not "
-                                   "yet listed"),
+    "rotorcraft_design.md": ROTOR_DESIGN,
     "scale_out.md": SCALE_OUT,
     "wind.md": NotYet("wind-model constants (given) and turbulence cost timings: not yet listed"),
     "wing_data.md": NotYet("wing derivation figures (derive_wing) and the papers' data: not yet listed"),
