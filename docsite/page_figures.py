@@ -27,6 +27,7 @@ from docsite.config_figures import cable_dyneema
 from docsite.page_ledger import LEDGER, Covered
 from docsite.page_numbers import prose, unaccounted
 from docsite.paper_figures import run_command
+from docsite.rotor_figures import parse_rotor_design
 
 ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "laddermill_gym" / "docs"
@@ -43,7 +44,8 @@ def _search(pattern: str, text: str, argv: list[str]) -> re.Match:
 def rotor_design() -> dict:
     """Roberts' 35 m design at 15,000 and 30,000 ft: the wind of the 3.13 MW rating [m/s], its incidence alpha_c
     [deg] and the ideal C_p at that incidence; ``printed``: its whole output up to the files it wrote (whitespace
-    flattened, as docs/rotorcraft_design.md quotes it)."""
+    flattened, as docs/rotorcraft_design.md quotes it); ``prose``: the figures its prose quotes
+    (:func:`docsite.rotor_figures.parse_rotor_design`)."""
     with tempfile.TemporaryDirectory() as tmp:
         argv = [STUDY + "rotorcraft.rotor_design", "--out", tmp]
         out = run_command(argv, 600)
@@ -55,6 +57,7 @@ def rotor_design() -> dict:
         found[alt.replace(",000", "kft")] = {"wind": m.group(1), "alpha_c": float(m.group(2)),
                                        "ideal_cp": float(ideal.group(1))}
     found["printed"] = " ".join(out.split("\nwrote ")[0].split())  # all it prints before the files it wrote
+    found["prose"] = parse_rotor_design(out)
     return found
 
 
