@@ -101,7 +101,8 @@ def training_curves() -> dict:
 
 def lateral_study() -> dict:
     """``python -m laddermill_gym.studies.lateral.lateral_study``: the default wing's lateral eigenvalues [1/s] (real,
-    imaginary parts), and per sweep its rows (value, largest real part [1/s], period [s]) and zero crossings."""
+    imaginary parts), and per sweep its rows (value, largest real part [1/s], period [s], doubling time [s], trim
+    elevator and tether elevation [deg]) and zero crossings."""
     with tempfile.TemporaryDirectory() as tmp:
         argv = [STUDY + "lateral.lateral_study", "--out", str(Path(tmp) / "lateral_study.png")]
         out = run_command(argv, 900)
@@ -109,7 +110,8 @@ def lateral_study() -> dict:
     found = {"eigenvalues": [[float(a), float(b)] for a, b in re.findall(r"([-\d.]+)([-+][\d.]+)j", eig)]}
     for name, table in re.findall(r"^(\w+): [^\n]*\(default [^\n]*\n +value[^\n]*\n((?:[^\n]+\n)+)", out, re.M):
         rows = [line.split() for line in table.splitlines() if re.match(r" +[-\d.]+ ", line)]
-        found[name] = {"rows": [{"value": float(r[0]), "re": float(r[-6]), "period": float(r[-5])} for r in rows],
+        found[name] = {"rows": [{"value": float(r[0]), "re": float(r[-6]), "period": float(r[-5]), "t2x": float(r[-3]),
+                                 "elevator": float(r[-2]), "elevation": float(r[-1])} for r in rows],
                        "max_re_zero": _zero(table, "max Re"), "osc_zero": _zero(table, "Re of the slow oscillation")}
     return found
 
