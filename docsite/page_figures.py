@@ -11,7 +11,8 @@ Each group's cost, measured on the shared 2-core machine at a load of 6-8 (numba
 (README's demo, shared with README's figures) 382 s, ``fast_mill_v2`` (five periodic searches) 647 s,
 ``meijaard_v1`` (its periodic searches saved) 310 s, ``simulate_laddermill`` 127-223 s, ``pointmass_benchmark``
 125 s, ``rotor_design`` 54 s, ``craft_stability`` 32 s, ``lateral_study`` 31 s, ``tethered_wing_lqr`` 24 s,
-``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the shipped CSVs) 0 s: every page about 31 minutes.
+``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the shipped CSVs) and ``cable_dyneema`` (reads
+the cable's config) 0 s: every page about 31 minutes.
 """
 
 from __future__ import annotations
