@@ -42,15 +42,6 @@ def test_the_stand_in_point_builds_the_task_and_resets():
     assert task.obs.shape == (1, task.obs_dim)
 
 
-def test_the_in_plane_stand_ins_reach_their_kernels_without_raising():
-    from laddermill_gym.kernels.integrate import rhs
-
-    kernel_warmup.compile_statics("laddermill", OPTIONS)
-    kernel_warmup.compile_in_plane("laddermill", OPTIONS)
-    kinds = {str(sig[4].types[0]).split("(")[0] for sig in rhs.signatures}  # (t, x, u, dx, model, work): kind
-    assert {"Rigid2D", "MovingCable2D"} <= kinds, kinds  # the static equilibrium's cable and the moving cable
-
-
 def test_pending_until_returned_or_on_disk(tmp_path, monkeypatch):
     monkeypatch.setenv(op_cache.CACHE_VARIABLE, str(tmp_path / "cache"))
     operating_point.cache_clear()

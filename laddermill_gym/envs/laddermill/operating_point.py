@@ -38,7 +38,7 @@ from laddermill_gym.ladder.scene import Scene, load_scene, options_kwargs
 from laddermill_gym.model.states import planar_to_3d
 
 __all__ = ["OperatingPoint", "SettleConfig", "compute_operating_point", "operating_point", "cached_operating_point",
-           "mill_scene", "nominal_positions", "operating_point_pending", "SEARCH_HOOK"]
+           "mill_scene", "nominal_positions", "operating_point_pending"]
 
 
 @dataclass(frozen=True)
@@ -101,12 +101,6 @@ class OperatingPoint:
         return int(self.orbit_positions.shape[1])
 
 
-#: a function (scene, options) that :func:`compute_operating_point` calls first, or None: LadderMill's kernel warm-up
-#: (``envs/laddermill/kernel_warmup.py``) compiles the search's kernels there while its second process compiles
-#: the static equilibrium's; it computes nothing the operating point depends on
-SEARCH_HOOK: list = [None]
-
-
 @lru_cache(maxsize=16)
 def mill_scene(scene: str, options: tuple, dimension: int = 3) -> Scene:
     """The scene ``scene`` with ``load_scene`` overrides ``options`` (sorted (key, value) pairs) in ``dimension``
@@ -144,8 +138,6 @@ def compute_operating_point(scene: str = "laddermill", options: tuple = (), sett
     """Run the in-plane mill to its periodic motion and return the 3D :class:`OperatingPoint` (not cached: see
     :func:`operating_point`). ``options``: sorted (key, value) ``load_scene`` overrides (no ``dimension``)."""
     settle = settle or SettleConfig()
-    if SEARCH_HOOK[0] is not None:  # LadderMill's kernel warm-up: the kernels compiled on two cores
-        SEARCH_HOOK[0](scene, options)
     sc2 = mill_scene(scene, options, 2)
     sim = sc2.simulator()
     controls = sim.controls.copy()
