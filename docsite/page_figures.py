@@ -138,13 +138,23 @@ def pointmass_benchmark() -> dict:
 def craft_stability() -> dict:
     """``python -m laddermill_gym.studies.rotorcraft.craft_stability``: the critical wind speed [m/s], the eq. (6)
     LQR's gain and discrete closed-loop max |z|, and per direction step (0.01, 0.1 rad) open loop and LQR: the
-    failure time [s] ("" when none), the largest |y| [m] and |dtheta| [deg]."""
+    failure time [s] ("" when none), the largest |y| [m] and |dtheta| [deg]; eq. (6)'s M, D, K (eq6_M...: row by
+    row) and beta at 10 m/s, the largest relative error against the Jacobian [%], and the wind scan (per "vN":
+    collective [deg], growth [1/s], frequency [rad/s])."""
     with tempfile.TemporaryDirectory() as tmp:
         argv = [STUDY + "rotorcraft.craft_stability", "--out", tmp]
         out = run_command(argv, 900)
     lqr = _search(r"LQR gain K = \[([^\]]+)\], discrete closed loop max \|z\| = ([\d.]+)", out, argv)
     found = {"critical": float(_search(r"critical wind speed: ([\d.]+) m/s", out, argv).group(1)),
              "K": [float(k) for k in lqr.group(1).split(",")], "z": float(lqr.group(2))}
+    for name in ("M", "D", "K"):  # eq. (6)'s matrices, flattened row by row
+        found[f"eq6_{name}"] = [float(x) for x in re.findall(r"[-\d.e]+",
+                                                             _search(rf"^ +{name} = (.*)$", out, argv).group(1))]
+    found["beta"] = float(_search(r"\(alpha, beta\) = \[[-\d.]+, ([-\d.]+)\]", out, argv).group(1))
+    found["rel_error_pct"] = 100 * max(float(e) for e in re.findall(r"max rel error ([\d.e-]+)", out))
+    found["scan"] = {f"v{float(v):.0f}": {"collective": float(c), "growth": float(g), "frequency": float(f)}
+                     for v, c, g, f in re.findall(r"v0 = +([\d.]+) m/s +collective +([-\d.]+) deg +growth ([-+\d.]+) "
+                                                  r"1/s +frequency ([\d.]+)", out)}
     row = (r"^ +(open loop|eq\. \(6\) LQR), ([\d.]+) rad +(?:failure at ([\d.]+) s|no failure) \| max \|y\| ([\d.]+) m"
            r".*max \|dtheta\| ([\d.]+) deg")
     for who, step, fail, y, dtheta in re.findall(row, out, re.M):
