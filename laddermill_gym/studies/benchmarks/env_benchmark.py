@@ -189,11 +189,36 @@ def bench_envs_command(args) -> int:
     return 0
 
 
+def serial_share(env, action: np.ndarray, n_steps: int) -> float:
+    """The share of a native vector step's CPU time spent outside the task's compiled step kernel (``task._kernel``:
+    physics and observation, parallel over copies), measured over ``n_steps`` steps on the current numba thread
+    count (one thread: Amdahl's serial part s; the speed-up on p threads is then at most 1 / (s + (1 - s) / p))."""
+    task = env.task
+    inner, spent = task._kernel, [0.0]
+
+    def timed(*args):
+        c = time.process_time()
+        inner(*args)
+        spent[0] += time.process_time() - c
+
+    task._kernel = timed
+    try:
+        c0 = time.process_time()
+        for _ in range(n_steps):
+            env.step(action)
+        total = time.process_time() - c0
+    finally:
+        task._kernel = inner
+    return 1.0 - spent[0] / total if total > 0 else 0.0
+
+
 def thread_scaling(thread_counts, envs=None, copies: int = 512, quick: bool = False, echo=print) -> dict:
     """Steps/s of the native vector env of each env in ``envs`` (default TetheredWing-v0 and Rotorcraft-v0) at
     ``copies`` copies for each numba thread count of ``thread_counts`` (``numba.set_num_threads`` in this process;
     a count above the pool's size, NUMBA_NUM_THREADS or the cpu count, is left out with a note), and the speed-up
-    over the first count."""
+    over the first count; then the serial share of a step on one thread (:func:`serial_share`) and Amdahl's bound it
+    puts on the speed-up at 16 threads (the issue's many-core target; a machine's memory bandwidth and the copies'
+    imbalance lower it further)."""
     import numba
 
     pool = numba.config.NUMBA_NUM_THREADS
@@ -216,7 +241,13 @@ def thread_scaling(thread_counts, envs=None, copies: int = 512, quick: bool = Fa
             rate, _, _ = _steps_per_second(native, act, n_steps, 3 if quick else 5)
             rows.append({"threads": k, "steps_per_s": rate, "speedup": rate / rows[0]["steps_per_s"] if rows else 1.0})
             echo(f"  {k:3d} threads: {rate:12,.0f} steps/s   speed-up {rows[-1]['speedup']:5.2f}x")
+        numba.set_num_threads(1)
+        share = serial_share(native, act, n_steps)
+        bound = 1.0 / (share + (1.0 - share) / 16)
+        echo(f"  serial share on one thread {share:.1%} (CPU outside the compiled step kernel): Amdahl's bound at 16 "
+             f"threads {bound:.1f}x")
         native.close()
         numba.set_num_threads(pool)
         res[_KEYS[name]] = rows
+        res[_KEYS[name] + "_serial_share"] = share
     return res
