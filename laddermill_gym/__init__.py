@@ -9,8 +9,12 @@ Typical use::
     sim.step(n_steps=1000)
 """
 
-from laddermill_gym.model.params import AERO_COLUMNS, Assembly, WindParams, WingType
-from laddermill_gym.sim.simulator import IntegratorSettings, SimulationError, Simulator
+from laddermill_gym.kernels import cache_guard as _cache_guard
+
+_cache_guard.guard()  # before any kernel runs: numba's entries compiled from other sources are removed
+
+from laddermill_gym.model.params import AERO_COLUMNS  # noqa: E402, Assembly, WindParams, WingType
+from laddermill_gym.sim.simulator import IntegratorSettings, SimulationError, Simulator  # noqa: E402
 
 __all__ = [
     "AERO_COLUMNS",

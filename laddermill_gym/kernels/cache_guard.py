@@ -1,0 +1,156 @@
+"""Keep numba's on-disk cache from serving machine code compiled from other sources.
+
+numba keys a cached function by the source of the file that defines it (its SHA-256) and by its signature, not by
+the files its callees and global constants come from. When ``kernels/rigid/rosenbrock.py`` changes and
+``kernels/rigid/observe.py`` does not (a ``git pull``, or a new release installed over an old one: pip removes the
+package's files, not numba's ``*.nbi`` / ``*.nbc`` beside them), the step kernel compiled into observe.py's cache
+entries still holds the old Rosenbrock code, and results differ from a fresh process's in the last bits or more.
+The brief asks for bit-identical results whatever the state of numba's cache, so :func:`guard` runs once at
+``import laddermill_gym``, before any kernel is called:
+
+1. :func:`kernel_sources` finds the package's files a compiled kernel can depend on: those that define cached
+   kernels (``cache=True``) and, transitively, the package modules they import (callees, slot constants and
+   parameters frozen into the machine code);
+2. :func:`sources_digest` hashes their paths and contents (SHA-256);
+3. in the folder numba caches each of those files in (under ``NUMBA_CACHE_DIR``, else beside the source, else
+   numba's user-wide folder: numba's order), a stamp file holds the digest the entries there were compiled under;
+   where it differs, the folder's ``*.nbi`` / ``*.nbc`` files are removed first and the stamp is written after
+   (atomically), so a process never sees a new stamp beside old entries.
+
+A removed entry only costs its recompilation. A folder that cannot be written is left alone (numba does not cache
+there either). Switch off with ``LADDERMILL_CACHE_GUARD=off`` (then numba's own rules apply).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import re
+import tempfile
+from pathlib import Path
+
+__all__ = ["STAMP_NAME", "SWITCH", "guard", "kernel_sources", "sources_digest", "cache_folders"]
+
+#: the stamp file written into each cache folder
+STAMP_NAME = "laddermill_gym_sources.sha256"
+#: environment variable that switches the guard off (value ``off``)
+SWITCH = "LADDERMILL_CACHE_GUARD"
+_IMPORT = r"^\s*(?:from\s+{0}((?:\.\w+)*)\s+import\s+(\([^)]*\)|[^\n]*)|import\s+{0}((?:\.\w+)+))"
+_PACKAGE = Path(__file__).resolve().parent.parent
+
+
+def _module_file(root: Path, dotted: str) -> Path | None:
+    """The file of package module ``dotted`` (relative to ``root``), a module or a package's ``__init__``."""
+    base = root.joinpath(*dotted.split("."))
+    for candidate in (base.with_suffix(".py"), base / "__init__.py"):
+        if candidate.is_file():
+            return candidate
+    return None
+
+
+def _imported_files(root: Path, match: re.Match) -> list[Path]:
+    """The package files one import statement reads: the module named after ``from`` and every imported name that
+    is a submodule of it (``from pkg.kernels import contract``), or the module of ``import pkg.x.y``."""
+    if match.group(3) is not None:
+        dotted = [match.group(3).lstrip(".")]
+    else:
+        base = match.group(1).lstrip(".")
+        names = re.findall(r"\w+", match.group(2).split("#")[0])
+        dotted = [base] + [f"{base}.{name}" if base else name for name in names]
+    return [f for f in (_module_file(root, d) for d in dotted if d) if f is not None]
+
+
+def kernel_sources(root: Path = _PACKAGE) -> list[Path]:
+    """The package's files (sorted) that define cached kernels, closed under the package imports they make."""
+    texts = {p: p.read_text(encoding="utf-8", errors="replace") for p in root.rglob("*.py")}
+    imports = re.compile(_IMPORT.format(re.escape(root.name)), re.M)
+    todo = [p for p, text in texts.items() if "cache=True" in text]
+    found: set[Path] = set()
+    while todo:
+        path = todo.pop()
+        if path in found:
+            continue
+        found.add(path)
+        for match in imports.finditer(texts.get(path, "")):
+            todo.extend(_imported_files(root, match))
+    return sorted(found)
+
+
+def sources_digest(paths: list[Path], root: Path = _PACKAGE) -> str:
+    """SHA-256 (hex) of the files' paths relative to ``root`` and their bytes, in the given order."""
+    digest = hashlib.sha256()
+    for path in paths:
+        digest.update(path.relative_to(root).as_posix().encode() + b"\0")
+        data = path.read_bytes()
+        digest.update(len(data).to_bytes(8, "little") + data)
+    return digest.hexdigest()
+
+
+def _writable(folder: Path) -> bool:
+    """Whether ``folder`` exists or can be made, and a file can be written in it (numba's own test)."""
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        tempfile.TemporaryFile(dir=folder).close()
+    except OSError:
+        return False
+    return True
+
+
+def cache_folders(paths: list[Path]) -> list[Path]:
+    """The folder numba caches each file's functions in, in numba's order of choice: under ``NUMBA_CACHE_DIR`` when
+    it is set, else ``__pycache__`` beside the file when it can be written, else numba's user-wide cache folder
+    (numba's naming of the per-folder subpath). The folders are made (numba would make them at the first save)."""
+    from numba.core import caching, config
+    from numba.misc.appdirs import AppDirs
+
+    folders = set()
+    for source_dir in sorted({path.parent for path in paths}):
+        sub = caching.UserProvidedCacheLocator.get_suitable_cache_subpath(str(source_dir / "__init__.py"))
+        if config.CACHE_DIR:
+            candidates = [Path(config.CACHE_DIR) / sub]
+        else:
+            user_wide = Path(AppDirs(appname="numba", appauthor=False).user_cache_dir) / sub
+            candidates = [source_dir / "__pycache__", user_wide]
+        chosen = next((c for c in candidates if _writable(c)), None)
+        if chosen is not None:
+            folders.add(chosen)
+    return sorted(folders)
+
+
+def _refresh(folder: Path, digest: str) -> bool:
+    """Remove the folder's numba entries when its stamp is not ``digest`` and write the stamp; whether removed."""
+    stamp = folder / STAMP_NAME
+    try:
+        if stamp.read_text().strip() == digest:
+            return False
+    except OSError:
+        pass
+    removed = False
+    for entry in list(folder.glob("*.nbi")) + list(folder.glob("*.nbc")):
+        try:
+            entry.unlink()
+            removed = True
+        except FileNotFoundError:  # another process removed it first
+            pass
+    fd, tmp = tempfile.mkstemp(dir=folder, prefix=".stamp")
+    with os.fdopen(fd, "w") as f:
+        f.write(digest + "\n")
+    os.replace(tmp, stamp)
+    return removed
+
+
+def guard(root: Path = _PACKAGE) -> list[Path]:
+    """Apply the rule above once to the package at ``root``; the folders whose entries were removed (empty when
+    switched off)."""
+    if os.environ.get(SWITCH, "").strip().lower() == "off":
+        return []
+    sources = kernel_sources(root)
+    digest = sources_digest(sources, root)
+    removed = []
+    for folder in cache_folders(sources):
+        try:
+            if _refresh(folder, digest):
+                removed.append(folder)
+        except OSError:  # a folder that vanished or cannot be written: numba cannot cache there either
+            continue
+    return removed

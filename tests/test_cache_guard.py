@@ -1,0 +1,81 @@
+"""kernels/cache_guard: numba's on-disk entries compiled from other sources are not served.
+
+The oracle is numba itself in fresh processes: a cached kernel whose callee lives in another file returns the old
+callee's value after that file changes (numba keys an entry by the defining file's source only), and returns the
+new value once the guard has run; plus hand-known import closures."""
+
+import subprocess
+import sys
+import textwrap
+
+from laddermill_gym.kernels import cache_guard
+
+CALLER = """
+from numba import njit
+from pkgx.callee import value
+
+@njit(cache=True)
+def outer():
+    return value() + 0.5
+"""
+CALLEE = """
+from numba import njit
+
+@njit(cache=True)
+def value():
+    return {}
+"""
+RUN = """
+import sys
+from pathlib import Path
+sys.path.insert(0, {root!r})
+if {guarded}:
+    from laddermill_gym.kernels.cache_guard import guard
+    guard(Path({root!r}) / "pkgx")
+from pkgx.caller import outer
+print(outer())
+"""
+
+
+def _package(tmp_path, callee_value):
+    pkg = tmp_path / "pkgx"
+    pkg.mkdir(exist_ok=True)
+    (pkg / "__init__.py").write_text("")
+    (pkg / "caller.py").write_text(CALLER)
+    (pkg / "callee.py").write_text(CALLEE.format(callee_value))
+    (pkg / "unrelated.py").write_text("X = 1\n")
+    return pkg
+
+
+def _run(tmp_path, guarded):
+    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "NUMBA_CACHE_DIR": ""}
+    code = textwrap.dedent(RUN.format(root=str(tmp_path), guarded=guarded))
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, check=True)
+    return float(out.stdout.strip().splitlines()[-1])
+
+
+def test_closure_follows_package_imports_from_cached_kernels(tmp_path):
+    pkg = _package(tmp_path, 1.0)
+    assert cache_guard.kernel_sources(pkg) == [pkg / "callee.py", pkg / "caller.py"]
+
+
+def test_a_changed_callee_is_recompiled_only_with_the_guard(tmp_path):
+    pkg = _package(tmp_path, 1.0)
+    assert _run(tmp_path, guarded=False) == 1.5
+    (pkg / "callee.py").write_text(CALLEE.format(2.0))
+    assert _run(tmp_path, guarded=False) == 1.5  # numba alone: the stale entry (the bug the guard exists for)
+    assert _run(tmp_path, guarded=True) == 2.5
+    assert _run(tmp_path, guarded=True) == 2.5  # the stamp now matches: entries kept and loaded
+    stamps = list(pkg.glob("__pycache__/" + cache_guard.STAMP_NAME))
+    digest = cache_guard.sources_digest(cache_guard.kernel_sources(pkg), pkg)
+    assert [s.read_text().strip() for s in stamps] == [digest]
+    assert list(pkg.glob("__pycache__/*.nbi"))  # compiled entries kept beside the matching stamp
+
+
+def test_unchanged_sources_keep_their_entries(tmp_path):
+    pkg = _package(tmp_path, 3.0)
+    assert _run(tmp_path, guarded=True) == 3.5
+    entries = sorted(p.name for p in pkg.glob("__pycache__/*.nb*"))
+    assert entries
+    assert cache_guard.guard(pkg) == []
+    assert sorted(p.name for p in pkg.glob("__pycache__/*.nb*")) == entries
