@@ -12,7 +12,8 @@
   beside the LQR's, the rows of README's shipped-policy table (``laddermill gust-bench --suite gusts-v1 --env ID
   --controllers lqr ppo_<name>``; a scenario counts when every seed survives); its ppo_mill and ppo_chain rows
   (``laddermill evaluate --env ID --controllers ppo_<name> <its LQR> --episodes 1 --episode-time 301``: 300 s after
-  the step at 1 s; the LQR designed on the linearised mill or chain first: minutes);
+  the step at 1 s; the LQR designed on the linearised mill or chain first: minutes); the wing policy against the LQR
+  on 200 held-out NTM-IB fields (``python -m laddermill_gym.harness.paired_survival``, :data:`HELD_OUT`);
 * with ``--papers`` (:mod:`docsite.paper_figures`, 6.5 minutes at a load of 2-4, 12 at 5-7, about 11 more before
   Meijaard's searches are saved in results/meijaard_v1): the figures of README's "Papers reproduced"
   rows, each from the study command the row names.
@@ -109,6 +110,29 @@ def policy_scorecards() -> dict:
     return {"policy_scorecards": cards}
 
 
+#: README's held-out comparison of the wing policy with the LQR (``python -m laddermill_gym.harness.paired_survival``
+#: with these arguments): config, validation set, episodes, first seed, controllers.
+HELD_OUT = ("configs/agents/ppo_tethered_wing_severe.yaml", "ntm_ib", 200, 5000, ["lqr", "ppo_tethered_wing"])
+
+
+def wing_held_out() -> dict:
+    """{"wing_held_out": [the LQR's survivors, the policy's, the sign test's p]} on README's held-out fields."""
+    from laddermill_gym.harness.paired_survival import paired_survival
+
+    config, set_name, episodes, seed, controllers = HELD_OUT
+    res = paired_survival(str(ROOT / config), set_name, episodes, seed, controllers)
+    return {"wing_held_out": [int(res["alive"][c].sum()) for c in controllers] + [f"{res['p_value']:.4f}"]}
+
+
+def held_out_differences(figures: dict, readme: str) -> list[str]:
+    """README's held-out sentence against ``figures["wing_held_out"]``; [] when it agrees or was not measured."""
+    if "wing_held_out" not in figures:
+        return []
+    lqr, policy, p = figures["wing_held_out"]
+    quoted = f"the wing policy survives {policy}, the LQR {lqr} (sign test p = {p})"
+    return [] if quoted in readme else [f"README lacks '{quoted}' (paired_survival {HELD_OUT})"]
+
+
 #: README's shared-policy rows: ``laddermill evaluate --env ID --controllers POLICY LQR --episodes 1 --episode-time
 #: 301`` (the paper's direction step at 1 s, so 300 s after it; seed 0: the registered scenario is deterministic, every
 #: seed flies the same episode, docs/learned_mill.md): policy -> (env id, the LQR it is set beside, the words before
@@ -172,7 +196,7 @@ def measure(policies: bool = False, papers: bool = False) -> dict:
     from docsite.paper_figures import measure_papers
 
     return {**main_job(), **env_sizes(), **tethered_wing_rows(),
-            **({**policy_scorecards(), **mill_policy_row()} if policies else {}),
+            **({**policy_scorecards(), **mill_policy_row(), **wing_held_out()} if policies else {}),
             **(measure_papers() if papers else {})}
 
 
@@ -224,7 +248,8 @@ def differences(figures: dict) -> list[str]:
 
     text = README.read_text()
     return (bad + policy_differences(figures.get("policy_scorecards", {}), text)
-            + mill_policy_differences(figures, readme) + papers_differences(figures.get("papers", {}), readme))
+            + mill_policy_differences(figures, readme) + held_out_differences(figures, readme)
+            + papers_differences(figures.get("papers", {}), readme))
 
 
 def policy_differences(cards: dict, readme: str) -> list[str]:
