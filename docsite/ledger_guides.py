@@ -31,8 +31,8 @@ GETTING_STARTED = Covered(
            "rad", "after some 40 seconds", "the step at 1 s", "exits 0", "exits 3", "after a 0.01 rad wind-direction",
            "A 0.01 rad turn"),
     timings=("113 s on the 2-core machine with numba's cache filled (2026-11-29)",
-             "(base install, numba's and the operating-point caches empty, load 0.5, 2026-11-29)",
-             "3 min 30 s (the demo 183 s of it)", "(about 30 s of compute)", "(about a minute, plus numba's",
+             "(base install, numba's and the operating-point caches empty, load 1, 2026-11-29 evening)",
+             "2 min 47 s (the demo 140 s of it", "(about 30 s of compute)", "(about a minute, plus numba's",
              "(about 35 minutes on a 2-core machine from a fresh clone, 31 of them"),
     derived=("stops about 20 s after the step", "stops, about 20 s after", "(period about 20 s: zero crossings of "
              "the lateral position 9-12 s apart; the linear model's 23 s)", "dive after about 52 s"),
