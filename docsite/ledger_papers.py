@@ -1,7 +1,9 @@
 """The ledger entries (:mod:`docsite.page_ledger`) of the pages on papers: Roberts, Podgaets & Ockels, Meijaard
-et al."""
+et al., Lansdorp et al."""
 
 from __future__ import annotations
+
+import re
 
 from docsite.ledger_kinds import Covered, NotYet
 
@@ -60,3 +62,54 @@ MEIJAARD = NotYet(
              (MJ % "2D_5][overload_s", MJ % "2D_5][peak_tension_ratio", MJ % "2D_2][overload_s",
               MJ % "2D_2][peak_tension_ratio")),
             (r"peak tension ([\d.]+) of the breaking load", (MJ % "3D_2][peak_tension_ratio",))))
+
+
+ST, PC = "{site_tables[%s]}", "{pumping_cycle_lqr[%s]}"
+T2 = r"\| {} \| {} \| ([\d.]+) \| ([\d.]+) \|"
+PE = "{pumping_evaluate[%s]}"
+EVAL_ROW = r"\| {} \| ([-\d]+) \| ([\d.]+) s{} \| ([\d.]+) m \| ([\d.]+ k?W) \|"
+
+
+def _evaluate_rows() -> tuple:
+    """docs/paper_lansdorp2008.md's evaluation table: the open loop's, the scripted cycle's and the LQR's rows."""
+    out = []
+    for label, key, failed in (("open loop", "open_loop", True), ("scripted cycle", "scripted", True),
+                               ("scripted cycle \\+ lateral LQR", "lqr", False)):
+        out.append((EVAL_ROW.format(label, r" \(([a-z ]+)\)" if failed else ""),
+                    ("~" + PE % f"{key}][return", "~" + PE % f"{key}][length",
+                     *((PE % f"{key}][failure",) if failed else ()), "~" + PE % f"{key}][dy",
+                     PE % f"{key}][power_text")))
+    return tuple(out)
+
+
+LANSDORP = Covered(
+    groups=("site_tables", "pumping_cycle_lqr", "pumping_evaluate"),
+    checks=tuple((T2.format(re.escape(label), paper), (ST % f"weather2010][{key}", ST % f"cabauw][{key}"))
+                 for label, paper, key in (("altitude [m]", "272.3", "altitude"), ("cable angle [deg]", "57", "angle"),
+                                           ("cable diameter [mm]", "32.43", "diameter"),
+                                           ("kite area [m^2]", "168.8", "area"), ("mean C_L", "1.01", "cl")))
+    + ((r"The Cabauw clusters cover ([\d.]+) % of the time", (ST % "cabauw][covered_pct",)),
+       (r"80 m hub: ([\d.]+) % against ([\d.]+) % \((\S+)\) on the 2010 data \(the kite at ([\d.]+) m, on extrapolated "
+        r"wind\), but ([\d.]+) % against ([\d.]+) % \((\S+)\) on Cabauw",
+        tuple(ST % f"weather2010][{k}" for k in ("kite_cf", "turbine_cf", "turbine", "altitude_m"))
+        + tuple(ST % f"cabauw][{k}" for k in ("kite_cf", "turbine_cf", "turbine"))),
+       (r"with the lateral LQR: ([\d.-]+) kW per cycle after the first \(which starts from the trim\), against "
+        r"([\d-]+) kW from Lansdorp's eqs\. 1-14", (PC % "sim", PC % "lansdorp")),
+       (r"the static-kite form of eq\. 9 gives ([\d.-]+) kW; eqs\. 10-14 fed the simulated mean tension and speed "
+        r"([\d.-]+) kW\)", (PC % "static", PC % "fed")))
+    + _evaluate_rows(),
+    given=("(2008): the pumping laddermill", "for site selection*, 2008.", "(eqs. 1-15)", "(eqs. 16-20, Tables 1-2)",
+           "(eqs. 1-20)", "sizes a 1 MW pumping kite", "the paper's eqs. 1-20. It writes Tables 1-2", "Figs. 10-20",
+           "and 2010 hourly wind at 10 and 80 m, extrapolated above 80 m", "| Table 2 (eq. 20) |",
+           "| 2010 hourly wind, daily means (extrapolated above 80 m) |",
+           "design 2 comes close, and design 1 (Table 1) climbs to the 600 m cap", "so a 1 MW mean",
+           "The paper's \"over 50 % against 22 %\"", "![Table 2 design",
+           "(Figs. 10-13)", "(Lansdorp et al. 2008, simulated)", "on a 300 m tether", "(efficiency 0.92 each way)",
+           "Delta L = 200 m", "eqs. 1-14 (and", "eq. 9, is", "eq. 9 gives", "eqs. 10-14 fed",
+           "(reel-in at 5 m/s, not 16.7; a 10 m/s wind; one tether element)",
+           "(400 s, the registered 0.01 rad direction step;", "| 400 s |", "the 240 m drum"),
+    timings=("optimised in 1.3-2.7 s (median of 5;", "15 min):", "| PPO (15 min) |"),
+    derived=("needs 1.8 MW while flying",),  # 1 MW / 0.566 of the time
+    # a PPO run of `laddermill train configs/agents/ppo_pumping_kite.yaml` (15 min; not shipped) and its 1200 s run
+    not_rerun=("| 232005 | 400 s | 336.5 m | 29.1 kW |", "(9.1 kW mean over 1200 s against the LQR cycle's 1.8 kW)"),
+)

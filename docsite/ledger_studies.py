@@ -1,5 +1,5 @@
-"""The ledger entries (:mod:`docsite.page_ledger`) of the study pages: the learned mill, lateral stability, the
-rotorcraft, the fast mill."""
+"""The ledger entries (:mod:`docsite.page_ledger`) of the study pages: the learned mill, lateral stability, the fast
+mill (the rotorcraft: :mod:`docsite.ledger_craft`)."""
 
 from __future__ import annotations
 
@@ -117,34 +117,6 @@ LATERAL = Covered(
     not_rerun=("trims failed at x = -1, -1.5, -2, -3 m and at +3 m", "Trims failed at 4.5 m/s and below (4.8 m/s",
                "Trims failed for 600 m", "|z| = 0.956 at 0.05 s, a continuous equivalent of -0.89 1/s"),
 )
-
-CS = "~{craft_stability[%s]}"
-SCAN = (7, 10, 13, 16, 18, 19, 20, 21, 22)  # [m/s] the page's columns of the wind scan
-Y = r"\\\|y\\\|"  # the table's escaped |y|
-ROTORCRAFT = NotYet(
-    "the critical wind speed and its wind scan, eq. (6)'s matrices at 10 m/s and their largest error against the "
-    "Jacobian, the full craft's mode at 10 m/s, the eq. (6) LQR's gain and the step table are checked against "
-    "craft_stability (about 35 s); the rest (the model's data, trim, eq. (6)'s modes, the deciding parameters, the "
-    "open points) not yet listed",
-    groups=("craft_stability",),
-    checks=((r"\*\*The critical wind speed is (\d+\.\d\d) m/s\*\*", (CS % "critical",)),
-            (r"K = \((-[\d.]+), (-[\d.]+), (-[\d.]+), (-[\d.]+)\)", tuple(CS % f"K][{i}" for i in range(4))),
-            (r"Closed loop on eq\. \(6\): max \|z\| = (\d\.\d+)", (CS % "z",)),
-            (rf"\| 0\.01 rad \(the paper's\) \| fails at ([\d.]+) s \({Y} (\d+) m\) \| holds, max {Y} ([\d.]+) m, "
-             r"max dtheta ([\d.]+) deg \|", (CS % "open_001][fail", CS % "open_001][y", CS % "lqr_001][y",
-                                             CS % "lqr_001][dtheta")),
-            (rf"\| 0\.1 rad \| fails at ([\d.]+) s \| holds, max {Y} ([\d.]+) m, max dtheta ([\d.]+) deg \|",
-             (CS % "open_01][fail", CS % "lqr_01][y", CS % "lqr_01][dtheta")),
-            (r"M = \[\[([\d.]+), (0)\], \[(0), ([\d.]+)\]\] D = \[\[([\d.]+), ([\d.]+)\], \[([\d.]+), ([\d.]+)\]\] "
-             r"K = \[\[([\d.]+), ([-\d.]+)\], \[([\d.]+), ([\d.]+)\]\] \(alpha, beta\) = \(0, ([-\d]+)\) per rad",
-             tuple(CS % f"eq6_{m}][{i}" for m in "MDK" for i in range(4)) + (CS % "beta",)),
-            (r"entry by entry to ([\d.]+) % at worst", (CS % "rel_error_pct",)),
-            (r"unstable mode at 10 m/s \(([\d.]+) \+- ([\d.]+)j 1/s", (CS % "scan][v10][growth",
-                                                                     CS % "scan][v10][frequency")),
-            (r"\| collective \[deg\] \| " + " \\| ".join([r"([-\d.]+)"] * 9),
-             tuple(CS % f"scan][v{v}][collective" for v in SCAN)),
-            (r"\| growth \[1/s\] \| " + " \\| ".join([r"([-+\d.]+)"] * 9),
-             tuple(CS % f"scan][v{v}][growth" for v in SCAN))))
 
 def _v2_rows() -> tuple:
     """docs/mill_fast.md's rows of the in-plane v2 mill at 1-5 m/s (ramp 100 V_c s), against fast_mill case."""

@@ -23,11 +23,12 @@ A covered page's entries:
 
 from __future__ import annotations
 
+from docsite.ledger_craft import ROTORCRAFT
 from docsite.ledger_data import CABLE_DATA
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
 from docsite.ledger_kinds import Covered, NotYet
-from docsite.ledger_papers import MEIJAARD, PODGAETS, ROBERTS
-from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST, ROTOR_DESIGN, ROTORCRAFT
+from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, ROBERTS
+from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST, ROTOR_DESIGN
 
 __all__ = ["LEDGER", "Covered", "NotYet"]
 
@@ -55,8 +56,7 @@ LEDGER = {
     "model.md": MODEL,
     "moving_cable.md": NotYet("insertion study, stable-step and LQR figures (minutes) and timings: not yet listed"),
     "numerics.md": NotYet("stable steps, error tables and timings: not yet listed"),
-    "paper_lansdorp2008.md": NotYet("site and pumping-cycle figures (README's rows check the tether and Schmehl "
-                                    "ratios): the page's own not yet listed"),
+    "paper_lansdorp2008.md": LANSDORP,
     "paper_meijaard1999.md": MEIJAARD,
     "paper_podgaets2007.md": PODGAETS,
     "pointmass.md": NotYet("pointmass_benchmark / pointmass_fidelity tables (timings and figures) not yet listed"),

@@ -128,3 +128,21 @@ def test_the_cable_page_is_its_config_file_and_its_arithmetic():
     other["cable_dyneema"]["config"].update(breaking_load=5.3e5, tau=3e-3)
     bad = pages_differences(other)
     assert len(bad) == 4 and all("cable_data.md" in b and ("5.25e5" in b or "1e-3" in b) for b in bad), bad
+
+
+def test_the_rotorcraft_data_are_its_config_file_and_its_mass_build_up():
+    """docs/rotorcraft.md's data against configs/rotorcraft/roberts_flying_model.yaml and the page's mass table summed
+    in closed form (20.0 kg, CG x -0.0925 m, Jxx 48.36 kg m^2 worked by hand), in the fast set; another Jxx in the
+    config is named."""
+    import copy
+
+    from docsite.config_figures import craft_data
+
+    measured = {"checked_pages": ["rotorcraft.md"], "craft_data": craft_data()}
+    assert (measured["craft_data"]["worked"]["mass"], measured["craft_data"]["worked"]["Jxx"]) == ("20.0", "48.4")
+    bad = pages_differences(measured)
+    assert bad and all("craft_stability" in b for b in bad), [b for b in bad if "craft_stability" not in b]
+    other = copy.deepcopy(measured)
+    other["craft_data"]["config"]["Jxx"] = "50.1"
+    named = [b for b in pages_differences(other) if "craft_stability" not in b]
+    assert len(named) == 1 and "50.1" in named[0] and "rotorcraft.md" in named[0], named

@@ -1,0 +1,96 @@
+"""Page groups of the pumping kite's pages (docs/paper_lansdorp2008.md): ``laddermill site`` (the quasi-steady site
+optimisation, eqs. 1-20) and ``laddermill pumping-cycle`` (the dynamic cycle), each run in a fresh process and
+parsed from what it prints."""
+
+from __future__ import annotations
+
+import re
+import tempfile
+
+from docsite.paper_figures import run_command
+
+#: pumping_cycle's printed columns, in order: cycle, its time [s], simulated power, Schmehl matched [W], its tension
+#: [N], Lansdorp eqs. 1-14, Schmehl, eq. 9's static kite, eqs. 10-14 fed the simulation [W], reel-out tension [N], speed
+#: [m/s], reel-in tension [N], alpha [deg], max |dy| [m]
+CYCLE_COLUMNS = ("cycle", "t_cycle", "sim", "matched", "matched_tension", "lansdorp", "schmehl", "static", "fed",
+                 "tension_out", "speed_out", "tension_in", "alpha", "max_dy")
+TABLE2_ROWS = {"Kite altitude": "altitude", "Cable angle": "angle", "Cable diameter": "diameter",
+               "Kite area": "area", "Average kite C_L": "cl"}
+
+
+def _need(pattern: str, text: str, argv: list[str]) -> re.Match:
+    m = re.search(pattern, text, re.M)
+    if m is None:
+        raise RuntimeError(f"python -m {' '.join(argv)} printed nothing matching {pattern!r}:\n{text[-2000:]}")
+    return m
+
+
+def site_tables() -> dict:
+    """``laddermill site`` (about 35 s): Table 2's design (eq. 20) per wind source ("weather2010" daily means,
+    "cabauw" clusters: altitude [m], cable angle [deg], cable diameter [mm], kite area [m^2], mean C_L, as printed;
+    altitude_m: the altitude to the metre),
+    the share of the time the Cabauw clusters cover [%], and per source the capacity factors [%] of the laddermill and
+    of the windpowerlib turbine of the same rating (with the turbine's name)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        argv = ["laddermill_gym.cli", "site", "--out", tmp]
+        out = run_command(argv, 900)
+    table2 = _need(r"^## table2 \(eq\. 20\)\n((?:.*\n)+?)\n## ", out, argv).group(1)
+    found = {"weather2010": {}, "cabauw": {}}
+    for label, key in TABLE2_ROWS.items():
+        cells = [c.strip() for c in _need(rf"^\| {re.escape(label)} \|.*$", table2, argv).group(0).split("|")[1:-1]]
+        found["weather2010"][key], found["cabauw"][key] = cells[3], cells[4]
+    for source in found.values():
+        source["altitude_m"] = f"{float(source['altitude']):.0f}"
+    found["cabauw"]["covered_pct"] = _need(r"cabauw: wind-speed bins cover ([\d.]+) % of the time", out, argv).group(1)
+    for source in ("weather2010", "cabauw"):
+        block = _need(rf"^((?:\|.*\n){{2}})\| \(data: {source}", out, argv).group(1)
+        kite, turbine = block.splitlines()
+        found[source]["kite_cf"] = kite.split("|")[5].strip()
+        found[source]["turbine"] = turbine.split("|")[1].strip().split(" ")[0]
+        found[source]["turbine_cf"] = turbine.split("|")[5].strip()
+    return found
+
+
+def pumping_cycle_lqr() -> dict:
+    """``laddermill pumping-cycle --cycles 3 --controller lqr`` (the static scripted cycle with the lateral LQR; about
+    25 s): per cycle the simulated mean power, Lansdorp's eqs. 1-14 and Schmehl's model at the cycle's
+    parameters, the static-kite form of eq. 9 and eqs. 10-14 fed the simulated tension and speed [W] (``rows``); and
+    each one's range over the cycles after the first in kW as the page rounds it ("lo-hi", or one figure when both
+    round alike)."""
+    argv = ["laddermill_gym.cli", "pumping-cycle", "--cycles", "3", "--controller", "lqr"]
+    out = run_command(argv, 1800)
+    _need(r"^ *cycle +T_c s +sim W +matched W +m\. T_out N +Lansdorp W +Schmehl W +static W +eq10-14 fed W ", out, argv)
+    rows = [dict(zip(CYCLE_COLUMNS, line.split(), strict=True)) for line in out.splitlines()
+            if re.match(r"^ +\d+ +[\d.]+ +\d+ ", line)]
+    if len(rows) < 2:
+        raise RuntimeError(f"python -m {' '.join(argv)} printed fewer than two cycle rows:\n{out[-2000:]}")
+
+    def kw(column: str, digits: int) -> str:
+        values = [float(r[column]) / 1e3 for r in rows[1:]]  # the cycles after the first (which starts from the trim)
+        lo, hi = f"{min(values):.{digits}f}", f"{max(values):.{digits}f}"
+        return lo if lo == hi else f"{lo}-{hi}"
+
+    return {"rows": rows, "sim": kw("sim", 1), "lansdorp": kw("lansdorp", 0), "schmehl": kw("schmehl", 0),
+            "static": kw("static", 1), "fed": kw("fed", 2)}
+
+
+def pumping_evaluate() -> dict:
+    """``laddermill evaluate --env laddermill_gym/PumpingKite-v0 --controllers open_loop scripted lqr --episodes 4``
+    (400 s episodes, the registered 0.01 rad direction step; about 35 s): per controller its printed return, length
+    [s], max |dy| [m], power [W] and failure ("-": none), and the power as the page writes it ("0 W" or "13.1 kW")."""
+    with tempfile.TemporaryDirectory() as tmp:
+        argv = ["laddermill_gym.cli", "evaluate", "--env", "laddermill_gym/PumpingKite-v0", "--controllers",
+                "open_loop", "scripted", "lqr", "--episodes", "4", "--out", tmp]
+        out = run_command(argv, 1800)
+    found = {}
+    for name in ("open_loop", "scripted", "lqr"):
+        row = _need(rf"^{name} +(\S+) +(\S+) +(\S+) +(\S+) +(.+)$", out, argv)
+        found[name] = dict(zip(("return", "length", "dy", "power", "failure"), row.groups(), strict=True))
+        watts = float(row.group(4))
+        found[name]["power_text"] = "0 W" if watts == 0 else f"{watts / 1e3:.1f} kW"
+    return found
+
+
+#: This module's page groups (merged into docsite.page_figures.GROUPS).
+PUMPING_GROUPS = {"site_tables": site_tables, "pumping_cycle_lqr": pumping_cycle_lqr,
+                  "pumping_evaluate": pumping_evaluate}
