@@ -13,7 +13,8 @@ Each group's cost, measured on the shared 2-core machine at a load of 6-8 (numba
 125 s, ``rotor_design`` 54 s, ``craft_stability`` 32 s, ``lateral_study`` 31 s, ``tethered_wing_lqr`` 24 s,
 ``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the shipped CSVs), ``cable_dyneema`` and ``craft_data``
 (read the configs) 0 s; at a load of 6-17: ``site_tables`` 34-85 s, ``pumping_evaluate`` 42 s, ``pumping_cycle_lqr``
-34 s (:mod:`docsite.pumping_figures`): every page about 34 minutes.
+34 s (:mod:`docsite.pumping_figures`), ``insertion_study`` 8 s, ``mill_periodic_2d`` 104 s, ``mill_lqr_check`` 274 s
+(:mod:`docsite.mill_figures`): every page about 41 minutes.
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ from pathlib import Path
 from tqdm import tqdm
 
 from docsite.config_figures import cable_dyneema, craft_data
+from docsite.mill_figures import MILL_GROUPS
 from docsite.page_ledger import LEDGER, Covered
 from docsite.page_numbers import prose, unaccounted
 from docsite.paper_figures import run_command
@@ -238,7 +240,7 @@ GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lat
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"]),
-          **PUMPING_GROUPS}
+          **PUMPING_GROUPS, **MILL_GROUPS}
 
 
 def measure_pages(pages: list[str] | None = None, have: dict | None = None, more: dict | None = None) -> dict:

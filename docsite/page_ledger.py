@@ -27,6 +27,7 @@ from docsite.ledger_craft import ROTORCRAFT
 from docsite.ledger_data import CABLE_DATA
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
 from docsite.ledger_kinds import Covered, NotYet
+from docsite.ledger_mill import FEATURES, MOVING_CABLE
 from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, ROBERTS
 from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST, ROTOR_DESIGN
 
@@ -49,12 +50,12 @@ LEDGER = {
     "controllers.md": NotYet("README's TetheredWing-v0 rows are checked by readme_figures; the other tables "
                              "(LadderMill-v0 with a PPO run not shipped, the chain, the rotorcraft, the wing's PPO "
                              "scenarios) not yet; helper P edits the wing section this session"),
-    "features.md": NotYet("a summary of the other pages' figures: to be checked through them"),
+    "features.md": FEATURES,
     "lateral_stability.md": LATERAL,
     "learned_mill.md": LEARNED_MILL,
     "mill_fast.md": MILL_FAST,
     "model.md": MODEL,
-    "moving_cable.md": NotYet("insertion study, stable-step and LQR figures (minutes) and timings: not yet listed"),
+    "moving_cable.md": MOVING_CABLE,
     "numerics.md": NotYet("stable steps, error tables and timings: not yet listed"),
     "paper_lansdorp2008.md": LANSDORP,
     "paper_meijaard1999.md": MEIJAARD,
