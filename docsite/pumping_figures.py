@@ -29,25 +29,28 @@ def site_tables() -> dict:
     """``laddermill site`` (about 35 s): Table 2's design (eq. 20) per wind source ("weather2010" daily means,
     "cabauw" clusters: altitude [m], cable angle [deg], cable diameter [mm], kite area [m^2], mean C_L, as printed;
     altitude_m: the altitude to the metre),
-    the share of the time the Cabauw clusters cover [%], and per source the capacity factors [%] of the laddermill and
-    of the windpowerlib turbine of the same rating (with the turbine's name)."""
+    the same of Table 1 (eq. 16; keys ending "_1"), the share of the time the Cabauw clusters cover [%], and per
+    source the capacity table's rows of the laddermill and of the windpowerlib turbine of the same rating
+    (``kite_row``, ``turbine_row``: rated [MW], height [m], mean [MW], capacity factor [%], energy [GWh/yr]; the
+    capacity factors alone and the turbine's name) and the laddermill's peak [MW]."""
     with tempfile.TemporaryDirectory() as tmp:
         argv = ["laddermill_gym.cli", "site", "--out", tmp]
         out = run_command(argv, 900)
-    table2 = _need(r"^## table2 \(eq\. 20\)\n((?:.*\n)+?)\n## ", out, argv).group(1)
     found = {"weather2010": {}, "cabauw": {}}
-    for label, key in TABLE2_ROWS.items():
-        cells = [c.strip() for c in _need(rf"^\| {re.escape(label)} \|.*$", table2, argv).group(0).split("|")[1:-1]]
-        found["weather2010"][key], found["cabauw"][key] = cells[3], cells[4]
+    for table, suffix in (("table1 \\(eq\\. 16\\)", "_1"), ("table2 \\(eq\\. 20\\)", "")):
+        block = _need(rf"^## {table}\n((?:.*\n)+?)\n## ", out, argv).group(1)
+        for label, key in TABLE2_ROWS.items():
+            cells = [c.strip() for c in _need(rf"^\| {re.escape(label)} \|.*$", block, argv).group(0).split("|")[1:-1]]
+            found["weather2010"][key + suffix], found["cabauw"][key + suffix] = cells[3], cells[4]
     for source in found.values():
         source["altitude_m"] = f"{float(source['altitude']):.0f}"
     found["cabauw"]["covered_pct"] = _need(r"cabauw: wind-speed bins cover ([\d.]+) % of the time", out, argv).group(1)
     for source in ("weather2010", "cabauw"):
         block = _need(rf"^((?:\|.*\n){{2}})\| \(data: {source}", out, argv).group(1)
-        kite, turbine = block.splitlines()
-        found[source]["kite_cf"] = kite.split("|")[5].strip()
-        found[source]["turbine"] = turbine.split("|")[1].strip().split(" ")[0]
-        found[source]["turbine_cf"] = turbine.split("|")[5].strip()
+        kite, turbine = ([c.strip() for c in line.split("|")[1:-1]] for line in block.splitlines())
+        found[source].update(kite_row=kite[1:], turbine_row=turbine[1:], kite_cf=kite[4], turbine_cf=turbine[4],
+                             turbine=turbine[0].split(" ")[0])
+        found[source]["peak_MW"] = _need(rf"\(data: {source}; laddermill peak ([\d.]+) MW", out, argv).group(1)
     return found
 
 
