@@ -129,39 +129,3 @@ def _v2_rows() -> tuple:
 MILL_FAST = NotYet("the in-plane v2 table at 1-5 m/s is checked against fast_mill case (one run per speed); the v1 "
                    "drift and elevator tables, the 3D rows and timings not yet listed",
                    groups=("fast_mill_v2",), checks=_v2_rows())
-
-
-RDS = "{rotor_design[%s]}"
-RP = "{rotor_design[prose][%s]}"
-SENS = (("no profile drag", "no_drag"), ("weightless tethers", "weightless"), ("tethers at 20 deg", "elev20"),
-        ("craft mass x0.7", "mass07"))
-ROTOR_DESIGN = NotYet(
-    "the study's whole printed output (craft estimates, both altitudes' tables, summaries, sensitivities) and the "
-    "prose's results (peaks, rated winds, C_p, sensitivities, craft masses) are checked against rotor_design (54 s); "
-    "the method's and choices' inputs and hand arithmetic and the simulator's trim table not yet listed",
-    groups=("rotor_design",),
-    checks=((r"(Craft estimate \(drive rated .*?) wrote runs/rotor_design/design_study\.csv", (RDS % "printed",)),
-            (r"Result: ([\d.]+) t at 15,000 ft \(180 m/s\) and ([\d.]+) t at 30,000 ft \(230 m/s\)",
-             (RP % "craft_t][tip180", RP % "craft_t][tip230")),
-            (r"top of the range: ([\d.]+) MW at 15,000 ft and ([\d.]+) MW at 30,000 ft at 45 m/s",
-             (RP % "15kft][peak_MW", RP % "30kft][peak_MW")),
-            (r"reach their allowed tension at (\d+) m/s \(([\d.]+) MW\)",
-             (RP % "15kft][stress_wind", RP % "15kft][stress_MW")),
-            (r"\*\*3\.13 MW is reached at ([\d.]+) m/s at 15,000 ft and at ([\d.]+) m/s at 30,000 ft",
-             (RDS % "15kft][wind", RDS % "30kft][wind")),
-            (r"rated winds of ([\d.]+) m/s and ([\d.]+) m/s fit", (RDS % "15kft][wind", RDS % "30kft][wind")),
-            (r"The power coefficient there is ([\d.]+) and ([\d.]+)\.",
-             (RP % "15kft][cp_rated", RP % "30kft][cp_rated")),
-            (r"The required C_p is ([\d.]+) at 20 m/s and ([\d.]+) at 25 m/s at 15,000 ft, and ([\d.]+) at 25 m/s "
-             r"and ([\d.]+) at 30 m/s", (RP % "15kft][need_cp][at20", RP % "15kft][need_cp][at25",
-                                         RP % "30kft][need_cp][at25", RP % "30kft][need_cp][at30")),
-            (r"C_p = ([\d.]+) \(([\d.]+) deg\) and ([\d.]+) \(([\d.]+) deg\)\.",
-             ("{rotor_design[15kft][ideal_cp]:.3f}", "{rotor_design[15kft][alpha_c]}",
-              "{rotor_design[30kft][ideal_cp]:.3f}", "{rotor_design[30kft][alpha_c]}")),
-            (r"3\.13 MW would still need ([\d.]+) m/s and ([\d.]+) m/s", (RP % "15kft][ideal_wind",
-                                                                         RP % "30kft][ideal_wind")),
-            (r"no stress limit: ([\d.]+) m/s at 15,000 ft", (RP % "15kft][sensitivity][no_limit",)),
-            (r"is worse: ([\d.]+) / ([\d.]+) m/s", (RP % "15kft][sensitivity][solidity",
-                                                  RP % "30kft][sensitivity][solidity")))
-    + tuple((rf"{label}: ([\d.]+) / ([\d.]+) m/s", (RP % f"15kft][sensitivity][{key}",
-                                                    RP % f"30kft][sensitivity][{key}")) for label, key in SENS))

@@ -25,11 +25,12 @@ from __future__ import annotations
 
 from docsite.ledger_craft import ROTORCRAFT
 from docsite.ledger_data import CABLE_DATA
+from docsite.ledger_design import ROTOR_DESIGN
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
 from docsite.ledger_kinds import Covered, NotYet
 from docsite.ledger_mill import FEATURES, MOVING_CABLE
 from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, QUASISTEADY, ROBERTS
-from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST, ROTOR_DESIGN
+from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
 
 __all__ = ["LEDGER", "Covered", "NotYet"]
 

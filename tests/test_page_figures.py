@@ -146,3 +146,21 @@ def test_the_rotorcraft_data_are_its_config_file_and_its_mass_build_up():
     other["craft_data"]["config"]["Jxx"] = "50.1"
     named = [b for b in pages_differences(other) if "craft_stability" not in b]
     assert len(named) == 1 and "50.1" in named[0] and "rotorcraft.md" in named[0], named
+
+
+def test_the_35m_design_inputs_are_its_configs_and_closed_forms():
+    """docs/rotorcraft_design.md's tether, atmosphere, scaling and wind arithmetic against the two craft configs, the
+    cable file and closed forms worked from the page's inputs (ISA 0.7708 / 0.4583 kg/m^3 at 4572 / 9144 m, the ICAO
+    table's values), in the fast set; another v1 in a config is named."""
+    import copy
+
+    from docsite.design_figures import design_data
+
+    data = design_data()
+    assert (data["worked"]["15kft"]["rho"], data["worked"]["30kft"]["rho"]) == ("0.7708", "0.4583")
+    measured = {"checked_pages": ["rotorcraft_design.md"], "design_data": data}
+    assert [b for b in pages_differences(measured) if "'rotor_design'" not in b] == []
+    other = copy.deepcopy(measured)
+    other["design_data"]["config"]["30kft"]["v1"] = "2.900e-3"
+    named = [b for b in pages_differences(other) if "'rotor_design'" not in b]
+    assert len(named) == 1 and "2.900e-3" in named[0], named
