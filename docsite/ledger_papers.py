@@ -138,3 +138,16 @@ QUASISTEADY = NotYet(
        (r"f <= 1/2 gives ([\d.]+) MW, with peaks of ([\d.]+) MW", ("~" + KR % ("weather2010", 2),
                                                                   "~" + ST % "weather2010][peak_MW")),
        (r"\(peak ([\d.]+) MW for a ([\d.]+) MW mean\)", ("~" + ST % "cabauw][peak_MW", "~" + KR % ("cabauw", 2)))))
+
+CYCLE_ROW = r"\| {} \| ([\d.]+) \| " + r"(\d+) \| " * 6 + r"([\d.]+) \| (\d+) \| ([\d.]+) \|"
+CYCLE_KEYS = ("t_cycle", "sim", "lansdorp", "schmehl", "static", "fed", "tension_out", "speed_out", "tension_in",
+              "max_dy")
+PUMPING = NotYet(
+    "the LQR cycle's table and its static-kite and eqs. 10-14 ranges are checked against pumping_cycle --controller "
+    "lqr (25-35 s); the crosswind cycle, the power curve, the evaluation tables and the rest not yet listed",
+    groups=("pumping_cycle_lqr",),
+    checks=tuple((CYCLE_ROW.format(label), tuple(("~" if k == "max_dy" else "") + PC % f"rows][{i}][{k}"
+                                                 for k in CYCLE_KEYS))
+                 for i, label in enumerate((r"0 \(from the trim\)", "1", "2")))
+    + ((r"gives ([\d.-]+) kW, still 1\.8 times the simulated power", (PC % "static_all",)),
+       (r"reeled length\) give ([\d.-]+) kW, 12-13 %", (PC % "fed_all",))))

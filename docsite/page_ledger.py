@@ -29,7 +29,7 @@ from docsite.ledger_design import ROTOR_DESIGN
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
 from docsite.ledger_kinds import Covered, NotYet
 from docsite.ledger_mill import FEATURES, MOVING_CABLE
-from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, QUASISTEADY, ROBERTS
+from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, PUMPING, QUASISTEADY, ROBERTS
 from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
 
 __all__ = ["LEDGER", "Covered", "NotYet"]
@@ -65,7 +65,7 @@ LEDGER = {
     "pointmass_mill.md": NotYet("pointmass_mill (a rigid run to periodic, then three point-mass runs) not re-run yet"),
     "power_curve.md": NotYet("checked by its own replay test (tests/test_power_curve*: the printed replay against the"
                              " page); the prose figures not yet listed"),
-    "pumping.md": NotYet("pumping-cycle and power-curve figures (minutes): not yet listed"),
+    "pumping.md": PUMPING,
     "quasisteady.md": QUASISTEADY,
     "reeling_tether.md": NotYet("tether_convergence table (2 minutes; README's row checks two of its powers): not yet"
                                 " listed"),

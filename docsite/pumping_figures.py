@@ -59,7 +59,7 @@ def pumping_cycle_lqr() -> dict:
     25 s): per cycle the simulated mean power, Lansdorp's eqs. 1-14 and Schmehl's model at the cycle's
     parameters, the static-kite form of eq. 9 and eqs. 10-14 fed the simulated tension and speed [W] (``rows``); and
     each one's range over the cycles after the first in kW as the page rounds it ("lo-hi", or one figure when both
-    round alike)."""
+    round alike; ``static_all``, ``fed_all``: over every cycle)."""
     argv = ["laddermill_gym.cli", "pumping-cycle", "--cycles", "3", "--controller", "lqr"]
     out = run_command(argv, 1800)
     _need(r"^ *cycle +T_c s +sim W +matched W +m\. T_out N +Lansdorp W +Schmehl W +static W +eq10-14 fed W ", out, argv)
@@ -68,13 +68,14 @@ def pumping_cycle_lqr() -> dict:
     if len(rows) < 2:
         raise RuntimeError(f"python -m {' '.join(argv)} printed fewer than two cycle rows:\n{out[-2000:]}")
 
-    def kw(column: str, digits: int) -> str:
-        values = [float(r[column]) / 1e3 for r in rows[1:]]  # the cycles after the first (which starts from the trim)
+    def kw(column: str, digits: int, first: int = 1) -> str:
+        values = [float(r[column]) / 1e3 for r in rows[first:]]  # by default the cycles after the first (from the trim)
         lo, hi = f"{min(values):.{digits}f}", f"{max(values):.{digits}f}"
         return lo if lo == hi else f"{lo}-{hi}"
 
     return {"rows": rows, "sim": kw("sim", 1), "lansdorp": kw("lansdorp", 0), "schmehl": kw("schmehl", 0),
-            "static": kw("static", 1), "fed": kw("fed", 2)}
+            "static": kw("static", 1), "fed": kw("fed", 2), "static_all": kw("static", 1, 0),
+            "fed_all": kw("fed", 2, 0)}
 
 
 def pumping_evaluate() -> dict:
