@@ -28,6 +28,7 @@ from tqdm import tqdm
 
 from docsite.config_figures import cable_dyneema, craft_data
 from docsite.design_figures import design_data
+from docsite.learned_figures import gain_locality
 from docsite.mill_figures import MILL_GROUPS
 from docsite.page_ledger import LEDGER, Covered
 from docsite.page_numbers import prose, unaccounted
@@ -238,7 +239,7 @@ GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lat
           "pointmass_benchmark": pointmass_benchmark, "craft_stability": craft_stability,
           "fast_mill_v2": fast_mill_v2, "tethered_wing_lqr": tethered_wing_lqr,
           "meijaard_v1": meijaard_v1, "cable_dyneema": cable_dyneema, "craft_data": craft_data,
-          "design_data": design_data,
+          "design_data": design_data, "gain_locality": gain_locality,
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"]),
