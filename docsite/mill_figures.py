@@ -82,6 +82,32 @@ def mill_lqr_check() -> dict:
     return found
 
 
+
+def pointmass_mill() -> dict:
+    """``python -m laddermill_gym.studies.pointmass.pointmass_mill`` (the rigid mill's in-plane run to periodic
+    motion, then the point-mass mill at 70 m and 1 m elements on one thread; a few minutes): the rigid run's periodic
+    time [s], mean power, first and last element's and smallest mean tension [kN] and its element; per element
+    length ("l70", "l1") the nodes, whether its search converged, where [s], its mean power [kW], the first and last
+    element's and the smallest mean tension [kN] and the slot above it, as printed."""
+    argv = [STUDY + "pointmass.pointmass_mill"]
+    out = run_command(argv, 2400, threads=1)
+    m = _need(r"^rigid \(one element per piece, RK4 dt [\d.]+ s\): periodic at t = (\d+) s, mean power ([\d.]+) kW, "
+              r"first element ([\d.]+) kN, last ([\d.]+) kN, smallest mean tension ([\d.]+) kN \(element (\d+)\)", out,
+              ["-m", *argv])
+    found = {"rigid": dict(zip(("t", "power_kW", "first_kN", "last_kN", "min_kN", "min_element"), m.groups(),
+                               strict=True))}
+    keys = ("nodes", "state", "t", "power_kW", "first_kN", "last_kN", "min_kN", "min_slot")
+    for m in re.finditer(r"^point mass l_e = (\d+) m \((\d+) nodes, .*?; point-mass periodic motion (converged|NOT "
+                         r"converged[^\n]*?) at t = ([\d.]+) s \(period [\d.]+ s\): mean power ([-\d.]+) kW, first "
+                         r"element ([\d.]+) kN, last ([\d.]+) kN, smallest mean tension ([\d.]+) kN \(below slot "
+                         r"(\d+)\)",
+                         out, re.M):
+        found[f"l{m.group(1)}"] = dict(zip(keys, m.groups()[1:], strict=True))
+    if "l70" not in found or "l1" not in found:
+        raise RuntimeError(f"python -m {argv[0]} printed no periodic search for 70 m or 1 m elements:\n{out[-3000:]}")
+    return found
+
+
 #: This module's page groups (merged into docsite.page_figures.GROUPS).
 MILL_GROUPS = {"insertion_study": insertion_study, "mill_periodic_2d": mill_periodic_2d,
-               "mill_lqr_check": mill_lqr_check}
+               "mill_lqr_check": mill_lqr_check, "pointmass_mill": pointmass_mill}

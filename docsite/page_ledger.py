@@ -30,6 +30,7 @@ from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_
 from docsite.ledger_kinds import Covered, NotYet
 from docsite.ledger_mill import FEATURES, MOVING_CABLE
 from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, PUMPING, QUASISTEADY, ROBERTS
+from docsite.ledger_pointmass import POINTMASS_MILL
 from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
 
 __all__ = ["LEDGER", "Covered", "NotYet"]
@@ -62,7 +63,7 @@ LEDGER = {
     "paper_meijaard1999.md": MEIJAARD,
     "paper_podgaets2007.md": PODGAETS,
     "pointmass.md": NotYet("pointmass_benchmark / pointmass_fidelity tables (timings and figures) not yet listed"),
-    "pointmass_mill.md": NotYet("pointmass_mill (a rigid run to periodic, then three point-mass runs) not re-run yet"),
+    "pointmass_mill.md": POINTMASS_MILL,
     "power_curve.md": NotYet("checked by its own replay test (tests/test_power_curve*: the printed replay against the"
                              " page); the prose figures not yet listed"),
     "pumping.md": PUMPING,
