@@ -29,7 +29,7 @@ from docsite.ledger_design import ROTOR_DESIGN
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
 from docsite.ledger_kinds import Covered, NotYet
 from docsite.ledger_mill import FEATURES, MOVING_CABLE
-from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, PUMPING, QUASISTEADY, ROBERTS
+from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, PUMPING, QUASISTEADY, REELING, ROBERTS
 from docsite.ledger_pointmass import POINTMASS_MILL
 from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
 
@@ -68,8 +68,7 @@ LEDGER = {
                              " page); the prose figures not yet listed"),
     "pumping.md": PUMPING,
     "quasisteady.md": QUASISTEADY,
-    "reeling_tether.md": NotYet("tether_convergence table (2 minutes; README's row checks two of its powers): not yet"
-                                " listed"),
+    "reeling_tether.md": REELING,
     "rl_zoo3.md": RL_ZOO3,
     "rotor.md": NotYet("rotor_chart and Gessow & Myers' figures: not yet listed"),
     "rotorcraft.md": ROTORCRAFT,

@@ -95,6 +95,31 @@ def pumping_evaluate() -> dict:
     return found
 
 
+def tether_convergence() -> dict:
+    """``python -m laddermill_gym.studies.pumping.tether_convergence`` (the crosswind cycle on the single element and on
+    reeling tethers of 100, 60, 40 and 30 m; 2-5 minutes): per element length ("l300", "l100", ...) the RK4 step [ms],
+    the elements at the start and over the run ("3-5"; "1" for the single element), the power [W], the reel-out
+    tension [N] and speed [m/s], the reel-in tension [N], the cycle [s], alpha [deg] and the nodes on the ground
+    ("-" for the single element), from its JSON, as its table prints them."""
+    import json
+    from pathlib import Path
+
+    with tempfile.TemporaryDirectory() as tmp:
+        run_command(["laddermill_gym.studies.pumping.tether_convergence", "--out", tmp], 2400)
+        rows = json.loads((Path(tmp) / "tether_convergence.json").read_text())
+    found = {}
+    for r in rows:
+        single = r["elements_min"] == r["elements_max"] == 1
+        found[f"l{r['element_length_m']:.0f}"] = {
+            "dt_ms": f"{1e3 * r['dt_s']:.1f}", "start": f"{r['elements_at_start']:g}",
+            "elements": "1" if single else f"{r['elements_min']}-{r['elements_max']}", "power": f"{r['power_W']:.0f}",
+            "T_out": f"{r['tension_out_N']:.0f}", "v_out": f"{r['speed_out_m_s']:.2f}",
+            "T_in": f"{r['tension_in_N']:.0f}",
+            "cycle": f"{r['cycle_s']:.1f}", "alpha": f"{r['alpha_deg']:.2f}", "ground": "-" if single else
+            str(r["contacts_max"])}
+    return found
+
+
 #: This module's page groups (merged into docsite.page_figures.GROUPS).
 PUMPING_GROUPS = {"site_tables": site_tables, "pumping_cycle_lqr": pumping_cycle_lqr,
-                  "pumping_evaluate": pumping_evaluate}
+                  "pumping_evaluate": pumping_evaluate, "tether_convergence": tether_convergence}
