@@ -34,6 +34,7 @@ from docsite.page_ledger import LEDGER, Covered
 from docsite.page_numbers import prose, unaccounted
 from docsite.paper_figures import run_command
 from docsite.pumping_figures import PUMPING_GROUPS
+from docsite.rotor_chart_figures import rotor_chart
 from docsite.rotor_figures import parse_rotor_design
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -239,7 +240,7 @@ GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lat
           "pointmass_benchmark": pointmass_benchmark, "craft_stability": craft_stability,
           "fast_mill_v2": fast_mill_v2, "tethered_wing_lqr": tethered_wing_lqr,
           "meijaard_v1": meijaard_v1, "cable_dyneema": cable_dyneema, "craft_data": craft_data,
-          "design_data": design_data, "gain_locality": gain_locality,
+          "design_data": design_data, "gain_locality": gain_locality, "rotor_chart": rotor_chart,
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"]),

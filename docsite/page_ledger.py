@@ -23,7 +23,7 @@ A covered page's entries:
 
 from __future__ import annotations
 
-from docsite.ledger_craft import ROTORCRAFT
+from docsite.ledger_craft import ROTOR, ROTORCRAFT
 from docsite.ledger_data import CABLE_DATA
 from docsite.ledger_design import ROTOR_DESIGN
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
@@ -70,7 +70,7 @@ LEDGER = {
     "quasisteady.md": QUASISTEADY,
     "reeling_tether.md": REELING,
     "rl_zoo3.md": RL_ZOO3,
-    "rotor.md": NotYet("rotor_chart and Gessow & Myers' figures: not yet listed"),
+    "rotor.md": ROTOR,
     "rotorcraft.md": ROTORCRAFT,
     "rotorcraft_design.md": ROTOR_DESIGN,
     "scale_out.md": SCALE_OUT,
