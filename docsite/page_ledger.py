@@ -46,12 +46,11 @@ LEDGER = {
     "paper_roberts.md": ROBERTS,
     "usage.md": Covered(given=("a pole at 0 for",)),
     "benchmarks.md": NotYet("machine timings almost throughout (env steps/s, real-time factors, cold and warm starts;"
-                            " each dated with machine and load): to be listed as timings; helper T edits its cold-"
-                            "start section this session"),
+                            " each dated with machine and load): to be listed as timings"),
     "cable_data.md": CABLE_DATA,
     "controllers.md": NotYet("README's TetheredWing-v0 rows are checked by readme_figures; the other tables "
                              "(LadderMill-v0 with a PPO run not shipped, the chain, the rotorcraft, the wing's PPO "
-                             "scenarios) not yet; helper P edits the wing section this session"),
+                             "scenarios) not yet"),
     "features.md": FEATURES,
     "lateral_stability.md": LATERAL,
     "learned_mill.md": LEARNED_MILL,
@@ -76,6 +75,5 @@ LEDGER = {
     "scale_out.md": SCALE_OUT,
     "wind.md": NotYet("wind-model constants (given) and turbulence cost timings: not yet listed"),
     "wing_data.md": NotYet("wing derivation figures (derive_wing) and the papers' data: not yet listed"),
-    "work_precision.md": NotYet("work-precision tables (about 15 minutes, one thread each) and timings; helper R "
-                                "edits it this session"),
+    "work_precision.md": NotYet("work-precision tables (about 15 minutes, one thread each) and timings"),
 }
