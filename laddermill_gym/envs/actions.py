@@ -95,10 +95,10 @@ def clip_actions(action, n_copies: int, n_actions: int) -> tuple[np.ndarray, np.
     a = _real_array(action, shape)
     if a.size != n_copies * n_actions:
         raise ActionError(f"action = {_shown(action)} has shape {a.shape} ({a.size} entries): {_need(shape)}")
-    if a.dtype not in (np.float32, np.float64):
-        a = a.astype(float)
+    # one compiled signature (float64, C order) whatever the caller passes: no further compile at a first step
+    a = np.ascontiguousarray(a, dtype=float).reshape(shape)
     out, n_clipped = np.empty(shape), np.empty(n_copies, dtype=np.intp)
-    if clip_count(a.reshape(shape), out, n_clipped) < 0:  # compiled: np.clip and the count, bit for bit
+    if clip_count(a, out, n_clipped) < 0:  # compiled: np.clip and the count, bit for bit
         return out, n_clipped
     _finite(a, shape)  # raises, naming the non-finite entries
     raise AssertionError("clip_count found a non-finite entry that _finite did not")  # pragma: no cover
