@@ -23,7 +23,7 @@ A covered page's entries:
 
 from __future__ import annotations
 
-from docsite.ledger_craft import ROTORCRAFT
+from docsite.ledger_craft import ROTOR, ROTORCRAFT
 from docsite.ledger_data import CABLE_DATA
 from docsite.ledger_design import ROTOR_DESIGN
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
@@ -46,12 +46,11 @@ LEDGER = {
     "paper_roberts.md": ROBERTS,
     "usage.md": Covered(given=("a pole at 0 for",)),
     "benchmarks.md": NotYet("machine timings almost throughout (env steps/s, real-time factors, cold and warm starts;"
-                            " each dated with machine and load): to be listed as timings; helper T edits its cold-"
-                            "start section this session"),
+                            " each dated with machine and load): to be listed as timings"),
     "cable_data.md": CABLE_DATA,
     "controllers.md": NotYet("README's TetheredWing-v0 rows are checked by readme_figures; the other tables "
                              "(LadderMill-v0 with a PPO run not shipped, the chain, the rotorcraft, the wing's PPO "
-                             "scenarios) not yet; helper P edits the wing section this session"),
+                             "scenarios) not yet"),
     "features.md": FEATURES,
     "lateral_stability.md": LATERAL,
     "learned_mill.md": LEARNED_MILL,
@@ -70,12 +69,11 @@ LEDGER = {
     "quasisteady.md": QUASISTEADY,
     "reeling_tether.md": REELING,
     "rl_zoo3.md": RL_ZOO3,
-    "rotor.md": NotYet("rotor_chart and Gessow & Myers' figures: not yet listed"),
+    "rotor.md": ROTOR,
     "rotorcraft.md": ROTORCRAFT,
     "rotorcraft_design.md": ROTOR_DESIGN,
     "scale_out.md": SCALE_OUT,
     "wind.md": NotYet("wind-model constants (given) and turbulence cost timings: not yet listed"),
     "wing_data.md": NotYet("wing derivation figures (derive_wing) and the papers' data: not yet listed"),
-    "work_precision.md": NotYet("work-precision tables (about 15 minutes, one thread each) and timings; helper R "
-                                "edits it this session"),
+    "work_precision.md": NotYet("work-precision tables (about 15 minutes, one thread each) and timings"),
 }

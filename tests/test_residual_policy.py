@@ -11,8 +11,9 @@ import yaml
 
 pytest.importorskip("stable_baselines3")
 
-from laddermill_gym.control.residual_policy import ResidualPolicy, policy_class, start_residual  # noqa: E402
+from laddermill_gym.control.residual_policy import ResidualPolicy, policy_class  # noqa: E402
 from laddermill_gym.control.rl_config import load_rl_config  # noqa: E402
+from laddermill_gym.control.warm_start import start_residual  # noqa: E402
 from laddermill_gym.model.configio import ConfigError  # noqa: E402
 
 ENV_ID = "laddermill_gym/TetheredWing-v0"

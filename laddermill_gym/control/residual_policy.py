@@ -13,7 +13,8 @@ mean(o) = W o + b  +  skip(z) + mlp(z),   z = clip((o - m) / s, -CLIP_OBS, CLIP_
 * the critic is SB3's (``net_arch.vf``) on z.
 
 The buffers are part of the policy's state dict: SB3's zip format saves and loads them (``PPO.load`` imports this
-class by name). :func:`start_residual` sets them (``init_from: lqr`` with ``policy: ResidualPolicy``).
+class by name). :func:`~laddermill_gym.control.warm_start.start_residual` sets them (``init_from: lqr`` with
+``policy: ResidualPolicy``).
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ import torch
 from stable_baselines3.common.policies import ActorCriticPolicy
 from torch import nn
 
-__all__ = ["ResidualPolicy", "POLICIES", "policy_class", "start_residual"]
+__all__ = ["ResidualPolicy", "POLICIES", "policy_class"]
 
 
 class ResidualPolicy(ActorCriticPolicy):
@@ -122,14 +123,3 @@ def policy_class(name: str):
     if name not in POLICIES:
         raise ValueError(f"policy {name!r}: not one of {sorted(POLICIES)}")
     return POLICIES[name]
-
-
-def start_residual(model, controller, raw_venv, n_steps: int) -> dict:
-    """Set ``model``'s :class:`ResidualPolicy` base at ``controller`` (the LQR) and its normalisation at the
-    statistics of ``n_steps`` steps of ``raw_venv`` under the controller (variance x VAR_INFLATION, clip CLIP_OBS,
-    as :func:`~laddermill_gym.control.warm_start.warm_start`). Returns the largest gain [rad per observation unit]."""
-    from laddermill_gym.control.warm_start import CLIP_OBS, VAR_INFLATION, observation_statistics
-
-    mean, var, _ = observation_statistics(controller, raw_venv, n_steps)
-    model.policy.set_base(controller, mean, VAR_INFLATION * var, CLIP_OBS)
-    return dict(max_gain=float(np.abs(controller.gains).max()))

@@ -19,8 +19,8 @@ import copy
 
 import numpy as np
 
-__all__ = ["affine_map", "observation_statistics", "warm_start", "start_from", "VAR_INFLATION", "INIT_STEPS",
-           "CLIP_OBS"]
+__all__ = ["affine_map", "observation_statistics", "warm_start", "start_residual", "start_from", "VAR_INFLATION",
+           "INIT_STEPS", "CLIP_OBS"]
 
 #: The observation variance of the controller's rollouts is multiplied by this [-] (std x 2) before it becomes the
 #: normalisation's: the normalised observation is clipped to +-10, so excursions up to 20 of the rollouts' standard
@@ -99,13 +99,21 @@ def warm_start(model, vecnormalize, controller, raw_venv, n_steps: int) -> dict:
     return dict(max_gain=float(np.abs(W).max()), trim_observation=first)
 
 
+def start_residual(model, controller, raw_venv, n_steps: int) -> dict:
+    """Set ``model``'s ``ResidualPolicy`` (control/residual_policy.py) base at ``controller`` (the LQR) and its
+    normalisation at the statistics of ``n_steps`` steps of ``raw_venv`` under the controller (variance x
+    :data:`VAR_INFLATION`, clip :data:`CLIP_OBS`, as :func:`warm_start`). Returns the largest gain."""
+    mean, var, _ = observation_statistics(controller, raw_venv, n_steps)
+    model.policy.set_base(controller, mean, VAR_INFLATION * var, CLIP_OBS)
+    return dict(max_gain=float(np.abs(controller.gains).max()))
+
+
 def start_from(cfg, model, vecnormalize) -> dict:
     """:func:`warm_start` of ``model`` at the controller ``cfg.init_from`` (``lqr`` or ``lqr:<config>``, built by
     ``make_controller`` for the training's env arguments) on the training env below ``vecnormalize``."""
     from laddermill_gym.control.factory import make_controller
-    from laddermill_gym.control.residual_policy import ResidualPolicy, start_residual
 
     ctrl = make_controller(cfg.init_from, cfg.env_id, cfg.carried_env_kwargs())
-    if isinstance(model.policy, ResidualPolicy):  # raw observations: no VecNormalize (``vecnormalize`` the env)
+    if hasattr(model.policy, "set_base"):  # a ResidualPolicy: raw observations, ``vecnormalize`` is the env itself
         return start_residual(model, ctrl, vecnormalize.venv, INIT_STEPS)
     return warm_start(model, vecnormalize, ctrl, vecnormalize.venv, INIT_STEPS)
