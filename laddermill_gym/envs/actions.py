@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import CubicSpline
 
+from laddermill_gym.kernels.action_pass import clip_count, grouped_controls
 from laddermill_gym.kernels.contract import CTRL_ELEVATOR
 from laddermill_gym.model.params import AERO_INDEX, CONTROL_NAMES, N_CONTROLS, Assembly, WingType
 
@@ -94,8 +95,13 @@ def clip_actions(action, n_copies: int, n_actions: int) -> tuple[np.ndarray, np.
     a = _real_array(action, shape)
     if a.size != n_copies * n_actions:
         raise ActionError(f"action = {_shown(action)} has shape {a.shape} ({a.size} entries): {_need(shape)}")
-    a = _finite(a, shape)
-    return np.clip(a, -1.0, 1.0), np.count_nonzero(np.abs(a) > 1.0, axis=1)
+    # one compiled signature (float64, C order) whatever the caller passes: no further compile at a first step
+    a = np.ascontiguousarray(a, dtype=float).reshape(shape)
+    out, n_clipped = np.empty(shape), np.empty(n_copies, dtype=np.intp)
+    if clip_count(a, out, n_clipped) < 0:  # compiled: np.clip and the count, bit for bit
+        return out, n_clipped
+    _finite(a, shape)  # raises, naming the non-finite entries
+    raise AssertionError("clip_count found a non-finite entry that _finite did not")  # pragma: no cover
 
 
 def resolve_groups(groups, n_wings: int, two_ended: bool) -> tuple[tuple[int, ...], ...]:
@@ -294,6 +300,20 @@ class ActionMap:
             self.alpha_servo = np.tile(self._nominal_alpha, (n_copies if mask is None else len(mask), 1))
         else:
             self.alpha_servo[mask] = self._nominal_alpha
+
+    def apply(self, action: np.ndarray, sel: np.ndarray, controls: np.ndarray, last_action: np.ndarray) -> None:
+        """Write the controls [rad] of normalised actions (B, 3 n_groups) already within [-1, 1] into the rows of
+        ``controls`` (B, 3 n_wings) of the copies in the boolean ``sel`` (B,), and those actions into
+        ``last_action``'s rows: :meth:`controls` then the masked writes, in one compiled pass in tail mode (bit for
+        bit the same; ``kernels/action_pass.py``); in alpha mode :meth:`controls`, whose servo advances every copy
+        (the caller keeps those outside ``sel``)."""
+        if self.mode == "tail":
+            grouped_controls(action, self._group_of, self._mid, self._half, self._lo, self._hi, sel, controls,
+                             last_action)
+            return
+        u = self.controls(action)
+        controls[sel] = u[sel]
+        last_action[sel] = action[sel]
 
     def controls(self, action: np.ndarray) -> np.ndarray:
         """Controls (B, 3 n_wings) [rad] for normalised actions (B, 3 n_groups) already within [-1, 1].

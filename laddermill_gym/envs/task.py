@@ -276,11 +276,9 @@ class WingTask(TaskCore):
         b = self.batch
         sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
         servo = None if self.actions.alpha_servo is None else self.actions.alpha_servo.copy()
-        u = self.actions.controls(a)
+        self.actions.apply(a, sel, b.controls, self.last_action)
         if servo is not None and mask is not None:  # copies outside the mask keep their servo state
             self.actions.alpha_servo[~sel] = servo[~sel]
-        b.controls[sel] = u[sel]
-        self.last_action[sel] = a[sel]
         self._advance_copies(sel)
         return self._evaluate(a, n_clipped)
 

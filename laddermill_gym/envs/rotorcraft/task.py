@@ -25,6 +25,7 @@ from laddermill_gym.envs.rotorcraft.settings import (
 )
 from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim
 from laddermill_gym.envs.task_base import TaskCore, positive, whole_multiple
+from laddermill_gym.kernels.action_pass import affine_controls
 from laddermill_gym.kernels.contract import (
     B3_POS,
     B3_SIZE,
@@ -231,8 +232,7 @@ class CraftTask(TaskCore):
         """
         a, n_clipped = clip_actions(action, self.n_copies, self.n_actions)
         sel = np.ones(self.n_copies, bool) if mask is None else np.asarray(mask, bool)
-        self.batch.controls[sel] = (self.mid + a * self.half)[sel]
-        self.last_action[sel] = a[sel]
+        affine_controls(a, self.mid, self.half, sel, self.batch.controls, self.last_action)  # mid + a half, compiled
         self._advance_copies(sel)
         return self._evaluate(a, n_clipped)
 
