@@ -1,5 +1,5 @@
-"""The ledger entries (:mod:`docsite.page_ledger`) of the study pages: the learned mill, lateral stability, the
-rotorcraft, the fast mill."""
+"""The ledger entries (:mod:`docsite.page_ledger`) of the study pages: the learned mill, lateral stability, the fast
+mill (the rotorcraft: :mod:`docsite.ledger_craft`)."""
 
 from __future__ import annotations
 
@@ -23,11 +23,19 @@ def _curve_rows(policy: str, labels: tuple, length: bool) -> tuple:
 
 
 DAGGER = ("DAgger 1 (flies the LQR + noise)", "DAgger 2", "DAgger 3", "DAgger 4 (kept: `model.zip`)")
+GL = "{gain_locality[%s]}"
+GAIN_CHECKS = tuple((rf"\| {d} \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \|",
+                     tuple(GL % f"rows][{d}][{k}" for k in ("mean", "largest", "share"))) for d in range(6)) + (
+    (r"\| 6-10 \| ([\d.-]+) \|", (GL % "far",)), (r"\| beyond 10 \| \| \| ([\d.]+) \|", (GL % "beyond",)),
+    (r"\| spectral radius of the design model's closed loop \| " + r"([\d.]+) \| " * 6,
+     tuple(GL % f"bands][k{k}" for k in range(5)) + (GL % "tail",)),
+    (r"every 5th slot: ([\d. ]+?)\.\)", (GL % "own",)))
 LEARNED_MILL = NotYet("evaluation tables (`laddermill evaluate` of ppo_mill / ppo_chain, minutes each) and timings "
-                      "not yet listed; the two training tables are checked against the shipped training_curve.csv",
-                      groups=("training_curves",),
+                      "not yet listed; the two training tables are checked against the shipped training_curve.csv, "
+                      "the gain-locality tables against gain_locality (5 minutes)",
+                      groups=("training_curves", "gain_locality"),
                       checks=_curve_rows("ppo_mill", DAGGER + ("PPO 1.00", "PPO 1.14"), True)
-                      + _curve_rows("ppo_chain", DAGGER + ("PPO 1.00", "PPO 1.73"), False))
+                      + _curve_rows("ppo_chain", DAGGER + ("PPO 1.00", "PPO 1.73"), False) + GAIN_CHECKS)
 
 LS = "{lateral_study[%s]}"
 SWEEPS = (("weathercock", "weathercock Cnb scale"), ("dihedral", "dihedral effect Clb scale"),
@@ -118,34 +126,6 @@ LATERAL = Covered(
                "Trims failed for 600 m", "|z| = 0.956 at 0.05 s, a continuous equivalent of -0.89 1/s"),
 )
 
-CS = "~{craft_stability[%s]}"
-SCAN = (7, 10, 13, 16, 18, 19, 20, 21, 22)  # [m/s] the page's columns of the wind scan
-Y = r"\\\|y\\\|"  # the table's escaped |y|
-ROTORCRAFT = NotYet(
-    "the critical wind speed and its wind scan, eq. (6)'s matrices at 10 m/s and their largest error against the "
-    "Jacobian, the full craft's mode at 10 m/s, the eq. (6) LQR's gain and the step table are checked against "
-    "craft_stability (about 35 s); the rest (the model's data, trim, eq. (6)'s modes, the deciding parameters, the "
-    "open points) not yet listed",
-    groups=("craft_stability",),
-    checks=((r"\*\*The critical wind speed is (\d+\.\d\d) m/s\*\*", (CS % "critical",)),
-            (r"K = \((-[\d.]+), (-[\d.]+), (-[\d.]+), (-[\d.]+)\)", tuple(CS % f"K][{i}" for i in range(4))),
-            (r"Closed loop on eq\. \(6\): max \|z\| = (\d\.\d+)", (CS % "z",)),
-            (rf"\| 0\.01 rad \(the paper's\) \| fails at ([\d.]+) s \({Y} (\d+) m\) \| holds, max {Y} ([\d.]+) m, "
-             r"max dtheta ([\d.]+) deg \|", (CS % "open_001][fail", CS % "open_001][y", CS % "lqr_001][y",
-                                             CS % "lqr_001][dtheta")),
-            (rf"\| 0\.1 rad \| fails at ([\d.]+) s \| holds, max {Y} ([\d.]+) m, max dtheta ([\d.]+) deg \|",
-             (CS % "open_01][fail", CS % "lqr_01][y", CS % "lqr_01][dtheta")),
-            (r"M = \[\[([\d.]+), (0)\], \[(0), ([\d.]+)\]\] D = \[\[([\d.]+), ([\d.]+)\], \[([\d.]+), ([\d.]+)\]\] "
-             r"K = \[\[([\d.]+), ([-\d.]+)\], \[([\d.]+), ([\d.]+)\]\] \(alpha, beta\) = \(0, ([-\d]+)\) per rad",
-             tuple(CS % f"eq6_{m}][{i}" for m in "MDK" for i in range(4)) + (CS % "beta",)),
-            (r"entry by entry to ([\d.]+) % at worst", (CS % "rel_error_pct",)),
-            (r"unstable mode at 10 m/s \(([\d.]+) \+- ([\d.]+)j 1/s", (CS % "scan][v10][growth",
-                                                                     CS % "scan][v10][frequency")),
-            (r"\| collective \[deg\] \| " + " \\| ".join([r"([-\d.]+)"] * 9),
-             tuple(CS % f"scan][v{v}][collective" for v in SCAN)),
-            (r"\| growth \[1/s\] \| " + " \\| ".join([r"([-+\d.]+)"] * 9),
-             tuple(CS % f"scan][v{v}][growth" for v in SCAN))))
-
 def _v2_rows() -> tuple:
     """docs/mill_fast.md's rows of the in-plane v2 mill at 1-5 m/s (ramp 100 V_c s), against fast_mill case."""
     keys = ("t", "period", "P", "dT_P", "T_min", "T_max", "peak", "lo", "hi")
@@ -157,39 +137,3 @@ def _v2_rows() -> tuple:
 MILL_FAST = NotYet("the in-plane v2 table at 1-5 m/s is checked against fast_mill case (one run per speed); the v1 "
                    "drift and elevator tables, the 3D rows and timings not yet listed",
                    groups=("fast_mill_v2",), checks=_v2_rows())
-
-
-RDS = "{rotor_design[%s]}"
-RP = "{rotor_design[prose][%s]}"
-SENS = (("no profile drag", "no_drag"), ("weightless tethers", "weightless"), ("tethers at 20 deg", "elev20"),
-        ("craft mass x0.7", "mass07"))
-ROTOR_DESIGN = NotYet(
-    "the study's whole printed output (craft estimates, both altitudes' tables, summaries, sensitivities) and the "
-    "prose's results (peaks, rated winds, C_p, sensitivities, craft masses) are checked against rotor_design (54 s); "
-    "the method's and choices' inputs and hand arithmetic and the simulator's trim table not yet listed",
-    groups=("rotor_design",),
-    checks=((r"(Craft estimate \(drive rated .*?) wrote runs/rotor_design/design_study\.csv", (RDS % "printed",)),
-            (r"Result: ([\d.]+) t at 15,000 ft \(180 m/s\) and ([\d.]+) t at 30,000 ft \(230 m/s\)",
-             (RP % "craft_t][tip180", RP % "craft_t][tip230")),
-            (r"top of the range: ([\d.]+) MW at 15,000 ft and ([\d.]+) MW at 30,000 ft at 45 m/s",
-             (RP % "15kft][peak_MW", RP % "30kft][peak_MW")),
-            (r"reach their allowed tension at (\d+) m/s \(([\d.]+) MW\)",
-             (RP % "15kft][stress_wind", RP % "15kft][stress_MW")),
-            (r"\*\*3\.13 MW is reached at ([\d.]+) m/s at 15,000 ft and at ([\d.]+) m/s at 30,000 ft",
-             (RDS % "15kft][wind", RDS % "30kft][wind")),
-            (r"rated winds of ([\d.]+) m/s and ([\d.]+) m/s fit", (RDS % "15kft][wind", RDS % "30kft][wind")),
-            (r"The power coefficient there is ([\d.]+) and ([\d.]+)\.",
-             (RP % "15kft][cp_rated", RP % "30kft][cp_rated")),
-            (r"The required C_p is ([\d.]+) at 20 m/s and ([\d.]+) at 25 m/s at 15,000 ft, and ([\d.]+) at 25 m/s "
-             r"and ([\d.]+) at 30 m/s", (RP % "15kft][need_cp][at20", RP % "15kft][need_cp][at25",
-                                         RP % "30kft][need_cp][at25", RP % "30kft][need_cp][at30")),
-            (r"C_p = ([\d.]+) \(([\d.]+) deg\) and ([\d.]+) \(([\d.]+) deg\)\.",
-             ("{rotor_design[15kft][ideal_cp]:.3f}", "{rotor_design[15kft][alpha_c]}",
-              "{rotor_design[30kft][ideal_cp]:.3f}", "{rotor_design[30kft][alpha_c]}")),
-            (r"3\.13 MW would still need ([\d.]+) m/s and ([\d.]+) m/s", (RP % "15kft][ideal_wind",
-                                                                         RP % "30kft][ideal_wind")),
-            (r"no stress limit: ([\d.]+) m/s at 15,000 ft", (RP % "15kft][sensitivity][no_limit",)),
-            (r"is worse: ([\d.]+) / ([\d.]+) m/s", (RP % "15kft][sensitivity][solidity",
-                                                  RP % "30kft][sensitivity][solidity")))
-    + tuple((rf"{label}: ([\d.]+) / ([\d.]+) m/s", (RP % f"15kft][sensitivity][{key}",
-                                                    RP % f"30kft][sensitivity][{key}")) for label, key in SENS))

@@ -11,8 +11,10 @@ Each group's cost, measured on the shared 2-core machine at a load of 6-8 (numba
 (README's demo, shared with README's figures) 382 s, ``fast_mill_v2`` (five periodic searches) 647 s,
 ``meijaard_v1`` (its periodic searches saved) 310 s, ``simulate_laddermill`` 127-223 s, ``pointmass_benchmark``
 125 s, ``rotor_design`` 54 s, ``craft_stability`` 32 s, ``lateral_study`` 31 s, ``tethered_wing_lqr`` 24 s,
-``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the shipped CSVs) and ``cable_dyneema`` (reads
-the cable's config) 0 s: every page about 31 minutes.
+``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the shipped CSVs), ``cable_dyneema`` and ``craft_data``
+(read the configs) 0 s; at a load of 6-17: ``site_tables`` 34-85 s, ``pumping_evaluate`` 42 s, ``pumping_cycle_lqr``
+34 s (:mod:`docsite.pumping_figures`), ``insertion_study`` 8 s, ``mill_periodic_2d`` 104 s, ``mill_lqr_check`` 274 s
+(:mod:`docsite.mill_figures`): every page about 41 minutes.
 """
 
 from __future__ import annotations
@@ -24,10 +26,15 @@ from pathlib import Path
 
 from tqdm import tqdm
 
-from docsite.config_figures import cable_dyneema
+from docsite.config_figures import cable_dyneema, craft_data
+from docsite.design_figures import design_data
+from docsite.learned_figures import gain_locality
+from docsite.mill_figures import MILL_GROUPS
 from docsite.page_ledger import LEDGER, Covered
 from docsite.page_numbers import prose, unaccounted
 from docsite.paper_figures import run_command
+from docsite.pumping_figures import PUMPING_GROUPS
+from docsite.rotor_chart_figures import rotor_chart
 from docsite.rotor_figures import parse_rotor_design
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -232,10 +239,12 @@ def _zero(table: str, what: str) -> float:
 GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lateral_study": lateral_study,
           "pointmass_benchmark": pointmass_benchmark, "craft_stability": craft_stability,
           "fast_mill_v2": fast_mill_v2, "tethered_wing_lqr": tethered_wing_lqr,
-          "meijaard_v1": meijaard_v1, "cable_dyneema": cable_dyneema,
+          "meijaard_v1": meijaard_v1, "cable_dyneema": cable_dyneema, "craft_data": craft_data,
+          "design_data": design_data, "gain_locality": gain_locality, "rotor_chart": rotor_chart,
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
-          "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"])}
+          "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"]),
+          **PUMPING_GROUPS, **MILL_GROUPS}
 
 
 def measure_pages(pages: list[str] | None = None, have: dict | None = None, more: dict | None = None) -> dict:

@@ -23,11 +23,15 @@ A covered page's entries:
 
 from __future__ import annotations
 
+from docsite.ledger_craft import ROTOR, ROTORCRAFT
 from docsite.ledger_data import CABLE_DATA
+from docsite.ledger_design import ROTOR_DESIGN
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
 from docsite.ledger_kinds import Covered, NotYet
-from docsite.ledger_papers import MEIJAARD, PODGAETS, ROBERTS
-from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST, ROTOR_DESIGN, ROTORCRAFT
+from docsite.ledger_mill import FEATURES, MOVING_CABLE
+from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, PUMPING, QUASISTEADY, REELING, ROBERTS
+from docsite.ledger_pointmass import POINTMASS_MILL
+from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
 
 __all__ = ["LEDGER", "Covered", "NotYet"]
 
@@ -42,38 +46,34 @@ LEDGER = {
     "paper_roberts.md": ROBERTS,
     "usage.md": Covered(given=("a pole at 0 for",)),
     "benchmarks.md": NotYet("machine timings almost throughout (env steps/s, real-time factors, cold and warm starts;"
-                            " each dated with machine and load): to be listed as timings; helper T edits its cold-"
-                            "start section this session"),
+                            " each dated with machine and load): to be listed as timings"),
     "cable_data.md": CABLE_DATA,
     "controllers.md": NotYet("README's TetheredWing-v0 rows are checked by readme_figures; the other tables "
                              "(LadderMill-v0 with a PPO run not shipped, the chain, the rotorcraft, the wing's PPO "
-                             "scenarios) not yet; helper P edits the wing section this session"),
-    "features.md": NotYet("a summary of the other pages' figures: to be checked through them"),
+                             "scenarios) not yet"),
+    "features.md": FEATURES,
     "lateral_stability.md": LATERAL,
     "learned_mill.md": LEARNED_MILL,
     "mill_fast.md": MILL_FAST,
     "model.md": MODEL,
-    "moving_cable.md": NotYet("insertion study, stable-step and LQR figures (minutes) and timings: not yet listed"),
+    "moving_cable.md": MOVING_CABLE,
     "numerics.md": NotYet("stable steps, error tables and timings: not yet listed"),
-    "paper_lansdorp2008.md": NotYet("site and pumping-cycle figures (README's rows check the tether and Schmehl "
-                                    "ratios): the page's own not yet listed"),
+    "paper_lansdorp2008.md": LANSDORP,
     "paper_meijaard1999.md": MEIJAARD,
     "paper_podgaets2007.md": PODGAETS,
     "pointmass.md": NotYet("pointmass_benchmark / pointmass_fidelity tables (timings and figures) not yet listed"),
-    "pointmass_mill.md": NotYet("pointmass_mill (a rigid run to periodic, then three point-mass runs) not re-run yet"),
+    "pointmass_mill.md": POINTMASS_MILL,
     "power_curve.md": NotYet("checked by its own replay test (tests/test_power_curve*: the printed replay against the"
                              " page); the prose figures not yet listed"),
-    "pumping.md": NotYet("pumping-cycle and power-curve figures (minutes): not yet listed"),
-    "quasisteady.md": NotYet("`laddermill site` / `design` figures and Lansdorp's tables: not yet listed"),
-    "reeling_tether.md": NotYet("tether_convergence table (2 minutes; README's row checks two of its powers): not yet"
-                                " listed"),
+    "pumping.md": PUMPING,
+    "quasisteady.md": QUASISTEADY,
+    "reeling_tether.md": REELING,
     "rl_zoo3.md": RL_ZOO3,
-    "rotor.md": NotYet("rotor_chart and Gessow & Myers' figures: not yet listed"),
+    "rotor.md": ROTOR,
     "rotorcraft.md": ROTORCRAFT,
     "rotorcraft_design.md": ROTOR_DESIGN,
     "scale_out.md": SCALE_OUT,
     "wind.md": NotYet("wind-model constants (given) and turbulence cost timings: not yet listed"),
     "wing_data.md": NotYet("wing derivation figures (derive_wing) and the papers' data: not yet listed"),
-    "work_precision.md": NotYet("work-precision tables (about 15 minutes, one thread each) and timings; helper R "
-                                "edits it this session"),
+    "work_precision.md": NotYet("work-precision tables (about 15 minutes, one thread each) and timings"),
 }

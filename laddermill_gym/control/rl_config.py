@@ -82,6 +82,7 @@ class RLConfig:
     hyperparameters : keyword arguments of the SB3 algorithm
     policy_kwargs : SB3 ``policy_kwargs`` (e.g. net_arch, log_std_init)
     init_from : None, or a controller spec (``lqr``, ``lqr:<config>``) the linear actor of a PPO policy starts at
+    policy : ``MlpPolicy`` (SB3's) or ``ResidualPolicy`` (control/residual_policy.py: the controller plus a residual)
         (:mod:`laddermill_gym.control.warm_start`; the observation statistics are then held fixed)
     critic_warmup, validation : None, or the optional phases of :mod:`laddermill_gym.control.rl_phases`
     """
@@ -102,6 +103,7 @@ class RLConfig:
     hyperparameters: dict[str, Any] = field(default_factory=dict)
     policy_kwargs: dict[str, Any] = field(default_factory=dict)
     init_from: str | None = None
+    policy: str = "MlpPolicy"
     critic_warmup: CriticWarmup | None = None
     validation: Validation | None = None
 
@@ -341,7 +343,8 @@ def load_rl_config(path: str | Path) -> RLConfig:
     ev.done()
     hyper = _read_hyperparameters(s, algo, n_envs, cfg["total_timesteps"])
     pk = _read_policy_kwargs(s, algo)
-    init_from = read_init_from(s, algo, pk, cfg["normalize_observations"])
+    cfg["policy"] = s.text("policy", "MlpPolicy", choices=("MlpPolicy", "ResidualPolicy"))
+    init_from = read_init_from(s, algo, pk, cfg["normalize_observations"], cfg["policy"])
     phases = dict(critic_warmup=read_critic_warmup(s, init_from), validation=read_validation(s))
     s.done()
     return RLConfig(file=Path(path), hyperparameters=hyper, policy_kwargs=pk, init_from=init_from, **phases, **cfg)

@@ -100,14 +100,23 @@ def check_disturbances(s: Section) -> list:
     return list(disturbances)
 
 
-def read_init_from(s: Section, algo: str, policy_kwargs: dict, normalized: bool) -> str | None:
+def read_init_from(s: Section, algo: str, policy_kwargs: dict, normalized: bool,
+                   policy: str = "MlpPolicy") -> str | None:
     """``init_from``: absent, or ``lqr`` / ``lqr:<config>`` for a PPO with a linear actor (``net_arch.pi: []``)
-    and normalised observations (control/warm_start.py)."""
+    and normalised observations (control/warm_start.py), or for a PPO with ``policy: ResidualPolicy`` and raw
+    observations (``normalize_observations: false``: the policy normalises; control/residual_policy.py)."""
     spec = s.raw("init_from", None)
     if spec is None:
+        if policy == "ResidualPolicy":
+            raise s.error("policy", policy, "needs init_from (the controller the residual is added to)")
         return None
     if not (isinstance(spec, str) and (spec == "lqr" or spec.startswith("lqr:"))):
         raise s.error("init_from", spec, "must be 'lqr' or 'lqr:<config>' (the controller the actor starts at)")
+    if policy == "ResidualPolicy":
+        if algo != "PPO" or normalized:
+            raise s.error("init_from", spec, f"with policy: ResidualPolicy needs algorithm: PPO (got {algo}) and "
+                          f"normalize_observations: false (got {normalized}): the policy normalises itself")
+        return spec
     arch = policy_kwargs.get("net_arch")
     if algo != "PPO" or not normalized or not (isinstance(arch, dict) and arch.get("pi") == []):
         raise s.error("init_from", spec, f"needs algorithm: PPO (got {algo}), normalize_observations: true (got "

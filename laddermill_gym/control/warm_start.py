@@ -103,6 +103,9 @@ def start_from(cfg, model, vecnormalize) -> dict:
     """:func:`warm_start` of ``model`` at the controller ``cfg.init_from`` (``lqr`` or ``lqr:<config>``, built by
     ``make_controller`` for the training's env arguments) on the training env below ``vecnormalize``."""
     from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.control.residual_policy import ResidualPolicy, start_residual
 
     ctrl = make_controller(cfg.init_from, cfg.env_id, cfg.carried_env_kwargs())
+    if isinstance(model.policy, ResidualPolicy):  # raw observations: no VecNormalize (``vecnormalize`` the env)
+        return start_residual(model, ctrl, vecnormalize.venv, INIT_STEPS)
     return warm_start(model, vecnormalize, ctrl, vecnormalize.venv, INIT_STEPS)

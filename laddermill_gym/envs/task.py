@@ -15,6 +15,7 @@ import numpy as np
 
 from laddermill_gym.atmosphere.disturbances import grid_geometry, sample_wind_field
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
+from laddermill_gym.envs import kernel_warmup
 from laddermill_gym.envs.actions import ActionMap, clip_actions, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds, wing_lateral_offsets
 from laddermill_gym.envs.physics_step import physics_scene_options, stable_physics_step
@@ -68,6 +69,8 @@ __all__ = ["RewardConfig", "TerminationConfig", "WingTask", "FAILURES", "scene_t
 FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state, speed or rate limit, singular mass)",
                             2: "ground contact", 3: "cable over its breaking load", 4: "aerodynamic range exceeded"}
 _STATUS_TEXT = status_texts("speed or rate limit")
+#: what the kernel warm-up's second process calls with the task's arguments (envs/task_warmup.py)
+WARMUP_TARGET = "laddermill_gym.envs.task_warmup:compile_wing"
 
 
 @lru_cache(maxsize=16)
@@ -145,6 +148,9 @@ class WingTask(TaskCore):
                  groups="per_wing", alpha_servo_tau: float = 0.0, episode_time: float = 300.0,
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
                  parallel: bool | None = None, physics_step: str | None = None):
+        task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
+        # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py)
+        warmup = kernel_warmup.start(WARMUP_TARGET, task_kwargs, (step_observe_batch, step_observe_serial), True)
         for name, v in (("control_dt", control_dt), ("episode_time", episode_time), ("wind_dt", wind_dt)):
             positive(name, v, "s")
         options = physics_scene_options(scene_options, physics_step, physics_dt, control_dt)
@@ -188,6 +194,8 @@ class WingTask(TaskCore):
         self._nsteps = np.zeros(B, dtype=np.int64)
         self.steps = np.zeros(B, dtype=np.int64)
         self.obs_low, self.obs_high = observation_bounds(sc)
+        if warmup is not None:  # before the first kernel call: load what it compiled from numba's cache
+            warmup.wait()
         # trim observation: nominal alpha per wing and the reference power
         one = WingTask._observe_state(self, x_trim, u_trim)
         alpha_trim = one[0].reshape(nw, N_OBS_PER_WING)[:, OBS_INDEX["alpha"]]

@@ -42,8 +42,9 @@ def candidates(run: Path) -> list[tuple[str, Path, Path]]:
     if not found:
         raise FileNotFoundError(f"{run}: no checkpoints/step_*.zip, best_model.zip or model.zip (a training run "
                                 "folder of laddermill train?)")
+    residual = _config_policy(run / "config.yaml") == "ResidualPolicy"  # it normalises itself: no statistics file
     for label, _model, stats in found:
-        if not stats.is_file():
+        if not stats.is_file() and not residual:
             raise FileNotFoundError(f"{stats}: missing; {label} needs its observation statistics")
     return found
 
@@ -58,7 +59,15 @@ def _load(model_file: Path, stats: Path):
         (model_file.parent.parent / "algorithm.txt")
     name = algo.read_text().strip() if algo.is_file() else "PPO"
     model = getattr(sb3, name).load(model_file, device="cpu")
-    return SB3Controller.from_vecnormalize(model, load_vecnormalize(stats))
+    return SB3Controller.from_vecnormalize(model, load_vecnormalize(stats) if stats.is_file() else None)
+
+
+def _config_policy(config: Path) -> str | None:
+    """The ``policy`` of a run folder's ``config.yaml`` (None without the file or the field)."""
+    import yaml
+
+    data = yaml.safe_load(config.read_text()) if config.is_file() else None
+    return data.get("policy") if isinstance(data, dict) else None
 
 
 def reselect(config: str | Path, runs: list[str | Path], reference: list[str] = (), out: str | Path | None = None,

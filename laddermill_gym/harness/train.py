@@ -205,7 +205,9 @@ def train(cfg: RLConfig, out: Path, threads: int | None = None) -> dict:
         venv = VecNormalize(venv, norm_obs=True, norm_reward=False, clip_obs=10.0)
     eval_env = evaluation_env(cfg)
     algo = getattr(sb3, cfg.algorithm)
-    model = algo("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=cfg.policy_kwargs or None,
+    from laddermill_gym.control.residual_policy import policy_class
+
+    model = algo(policy_class(cfg.policy), venv, seed=cfg.seed, policy_kwargs=cfg.policy_kwargs or None,
                  tensorboard_log=str(out / "tb"), verbose=0, device="cpu", **cfg.hyperparameters)
     if cfg.init_from is not None:  # the linear actor started at the LQR (control/warm_start.py)
         from laddermill_gym.control.warm_start import start_from

@@ -27,7 +27,9 @@ def freeze_actor(model, frozen: bool) -> None:
     layers, ``mlp_extractor.policy_net``) need no gradient (``frozen``) or need one again."""
     policy = model.policy
     params = list(policy.action_net.parameters()) + list(policy.mlp_extractor.policy_net.parameters())
-    if hasattr(policy, "log_std"):
+    if hasattr(policy, "actor_parameters"):  # control/residual_policy.py: its skip layer too
+        params = policy.actor_parameters()
+    elif hasattr(policy, "log_std"):
         params.append(policy.log_std)
     for p in params:
         p.requires_grad_(not frozen)

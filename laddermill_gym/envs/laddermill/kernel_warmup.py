@@ -18,70 +18,22 @@ CPU; a signature the second process did not compile is compiled here as before).
 This moves CPU seconds to the other core; it does not remove them (the figures in docs/benchmarks.md give the
 second process's CPU seconds too). ``LADDERMILL_KERNEL_WARMUP=off`` (:data:`SWITCH`) switches it off; it is also off
 when numba's JIT is disabled or the kernels are already compiled in this process. Any failure of the second
-process only costs its time: this process then compiles as before.
+process only costs its time: this process then compiles as before. The machinery is shared with the wing and craft
+envs (``envs/kernel_warmup.py``); this module names the mill's target (``warmup_child.compile_for``).
 """
 
 from __future__ import annotations
 
-import os
-import pickle
-import subprocess
-import sys
+from laddermill_gym.envs.kernel_warmup import SWITCH, Warmup, enabled
+from laddermill_gym.envs.kernel_warmup import start as start_target
 
-__all__ = ["SWITCH", "Warmup", "enabled", "start"]
+__all__ = ["SWITCH", "TARGET", "Warmup", "enabled", "start"]
 
-#: the environment variable that switches the warm-up off (value ``off``)
-SWITCH = "LADDERMILL_KERNEL_WARMUP"
-#: the module the second process runs (``python -m``)
-CHILD_MODULE = "laddermill_gym.envs.laddermill.warmup_child"
-#: the longest wait for the second process [s] (a cold compile takes 30-80 s of CPU on a loaded machine; past this
-#: it is stopped and this process compiles what it still needs)
-WAIT_LIMIT_S = 900.0
-
-
-class Warmup:
-    """A running warm-up process; :meth:`wait` (idempotent) waits for it, at most :data:`WAIT_LIMIT_S`."""
-
-    def __init__(self, proc: subprocess.Popen):
-        self.proc = proc
-        self.returncode: int | None = None
-
-    def wait(self) -> int | None:
-        """Wait for the process; its exit code (None if it had to be stopped)."""
-        if self.returncode is None and self.proc is not None:
-            try:
-                self.returncode = self.proc.wait(timeout=WAIT_LIMIT_S)
-            except subprocess.TimeoutExpired:
-                self.proc.kill()
-                self.proc.wait()
-            self.proc = None
-        return self.returncode
-
-
-def enabled(kernels) -> bool:
-    """Whether a warm-up can help: not switched off, numba's JIT on, and none of ``kernels`` (dispatchers)
-    compiled in this process yet."""
-    from numba.core import config
-
-    if os.environ.get(SWITCH, "").strip().lower() == "off" or config.DISABLE_JIT:
-        return False
-    return not any(k.signatures for k in kernels)
+#: what the second process calls (``envs/warmup_run.py``) with the task's arguments
+TARGET = "laddermill_gym.envs.laddermill.warmup_child:compile_for"
 
 
 def start(task_kwargs: dict, kernels) -> Warmup | None:
     """Launch the warm-up process for a :class:`MillTask` built with ``task_kwargs`` (without ``operating_point``)
     when :func:`enabled`; None when not (or when the arguments do not pickle)."""
-    if not enabled(kernels):
-        return None
-    try:
-        payload = pickle.dumps(dict(task_kwargs))
-    except Exception:  # an argument that does not pickle: compile here as before
-        return None
-    proc = subprocess.Popen([sys.executable, "-m", CHILD_MODULE], stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL, env=dict(os.environ))
-    try:
-        proc.stdin.write(payload)
-        proc.stdin.close()
-    except OSError:
-        pass
-    return Warmup(proc)
+    return start_target(TARGET, task_kwargs, kernels)

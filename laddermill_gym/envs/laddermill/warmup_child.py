@@ -1,8 +1,9 @@
-"""The second process of LadderMill's kernel warm-up (``envs/laddermill/kernel_warmup.py``, issue 32 point 1):
-``python -m laddermill_gym.envs.laddermill.warmup_child`` reads the arguments of a
-:class:`~laddermill_gym.envs.laddermill.task.MillTask`
-(pickled, on stdin), builds that task around :func:`stand_in_point` and resets and steps it once, so that
-numba compiles the kernels those calls reach and writes them to its on-disk cache for the process that started it."""
+"""The mill's target of the kernel warm-up (``envs/kernel_warmup.py``, ``envs/laddermill/kernel_warmup.py``, issue
+32 point 1): :func:`compile_for`, called in the second process (``python -m laddermill_gym.envs.warmup_run``; ``python
+-m laddermill_gym.envs.laddermill.warmup_child`` reads the arguments pickled on stdin too) with the arguments of a
+:class:`~laddermill_gym.envs.laddermill.task.MillTask`, builds that task around :func:`stand_in_point` and resets and
+steps it once, so that numba compiles the kernels those calls reach and writes them to its on-disk cache for the
+process that started it."""
 
 from __future__ import annotations
 

@@ -15,6 +15,7 @@ from collections import namedtuple
 import numpy as np
 
 from laddermill_gym.atmosphere.field import WindField
+from laddermill_gym.envs import kernel_warmup
 from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.rotorcraft.observation import OBS_Y, craft_observation_bounds
 from laddermill_gym.envs.rotorcraft.settings import (
@@ -58,6 +59,8 @@ __all__ = ["CraftTask", "CRAFT_FAILURES", "CraftScene"]
 CRAFT_FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state, speed or rate limit)",
                                   2: "rotor inflow failed", 3: "ground contact", 4: "tether over its breaking load",
                                   5: "attitude out of range"}
+#: what the kernel warm-up's second process calls with the task's arguments (envs/task_warmup.py)
+WARMUP_TARGET = "laddermill_gym.envs.task_warmup:compile_craft"
 _STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit exceeded"}
 #: What the scene renderer reads of a task's scene: the built assembly and a name.
 CraftScene = namedtuple("CraftScene", ["assembly", "name"])
@@ -113,6 +116,10 @@ class CraftTask(TaskCore):
                  collective: float | None = None, control_dt: float = 0.05, physics_dt: float | None = None,
                  episode_time: float = 120.0, disturbances=None, wind_dt: float = 0.1, initial_noise=None,
                  reward=None, termination=None, parallel: bool | None = None):
+        task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
+        # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py)
+        warmup = kernel_warmup.start(WARMUP_TARGET, task_kwargs,
+                                     (craft_step_observe_batch, craft_step_observe_serial), True)
         B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
                                    initial_noise)
         if wind_speed is not None:
@@ -124,6 +131,8 @@ class CraftTask(TaskCore):
         self.n_substeps = whole_multiple(self.control_dt, cfg.settings.dt, control_dt)
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
         self._build_batch(B, parallel)
+        if warmup is not None:  # before the first kernel call: load what it compiled from numba's cache
+            warmup.wait()
         self._references()
         rc, tc = self.reward_config, self.termination_config
         self.lateral_scale = rc.lateral_scale if rc.lateral_scale is not None else 0.05 * cfg.tethers.length

@@ -12,7 +12,7 @@ import numpy as np
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT, CraftConfig, load_craft_config
 from laddermill_gym.rotorcraft.craft import Craft, load_craft
 
-__all__ = ["craft_config", "control_ranges", "trim_controls", "craft_trim", "trim_action"]
+__all__ = ["craft_config", "control_ranges", "trim_controls", "untrimmed_craft", "craft_trim", "trim_action"]
 
 
 @lru_cache(maxsize=8)
@@ -41,6 +41,18 @@ def trim_controls(cfg: CraftConfig, collective: float | None) -> np.ndarray:
     return np.array([float(th), 0.0])
 
 
+def untrimmed_craft(craft: str = DEFAULT_CRAFT, wind_speed: float | None = None, collective: float | None = None,
+                    physics_dt: float | None = None) -> tuple[Craft, np.ndarray]:
+    """(craft, u_trim (2,) [rad]) as :func:`craft_trim` builds them, before the trim (arguments as there)."""
+    cfg = craft_config(craft)
+    u = trim_controls(cfg, collective)
+    if wind_speed is not None:
+        cfg = cfg.with_wind_speed(wind_speed)
+    if physics_dt is not None:
+        cfg = cfg.replace(settings=dataclasses.replace(cfg.settings, dt=float(physics_dt)))
+    return load_craft(config=cfg), u
+
+
 @lru_cache(maxsize=16)
 def craft_trim(craft: str = DEFAULT_CRAFT, wind_speed: float | None = None, collective: float | None = None,
                physics_dt: float | None = None) -> tuple[Craft, np.ndarray, np.ndarray]:
@@ -48,13 +60,7 @@ def craft_trim(craft: str = DEFAULT_CRAFT, wind_speed: float | None = None, coll
     config's), trim collective [rad] (None: the config's) and physics step [s] (None: the config's).
 
     Cached on the arguments (a trim takes about 0.5 s); the returned arrays are read-only."""
-    cfg = craft_config(craft)
-    u = trim_controls(cfg, collective)
-    if wind_speed is not None:
-        cfg = cfg.with_wind_speed(wind_speed)
-    if physics_dt is not None:
-        cfg = cfg.replace(settings=dataclasses.replace(cfg.settings, dt=float(physics_dt)))
-    c = load_craft(config=cfg)
+    c, u = untrimmed_craft(craft, wind_speed, collective, physics_dt)
     try:
         x = c.trim(u[0])
     except RuntimeError as err:

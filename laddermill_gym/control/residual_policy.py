@@ -1,0 +1,135 @@
+"""A PPO policy whose action mean is a fixed linear controller plus a learned residual (``policy: ResidualPolicy``).
+
+mean(o) = W o + b  +  skip(z) + mlp(z),   z = clip((o - m) / s, -CLIP_OBS, CLIP_OBS)
+
+* W o + b is the affine map of a model-based controller (the LQR, :func:`~laddermill_gym.control.warm_start.
+  affine_map`) on the RAW observation, held in float64 buffers and never trained: the untrained policy's
+  deterministic action is the controller's to float64 rounding (the float32 linear actor of ``init_from: lqr``
+  with normalised observations reproduces it to about 6e-6 only, and that difference alone flips gusts-v1's
+  NTM_IB seed 0);
+* skip (a linear layer) and mlp (``net_arch.pi`` hidden layers, then SB3's ``action_net``) see the normalised
+  observation z (statistics of the controller's rollouts, held in the policy, so no ``VecNormalize``); both
+  last layers start at zero, so training starts exactly at the controller and PPO learns a correction;
+* the critic is SB3's (``net_arch.vf``) on z.
+
+The buffers are part of the policy's state dict: SB3's zip format saves and loads them (``PPO.load`` imports this
+class by name). :func:`start_residual` sets them (``init_from: lqr`` with ``policy: ResidualPolicy``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import torch
+from stable_baselines3.common.policies import ActorCriticPolicy
+from torch import nn
+
+__all__ = ["ResidualPolicy", "POLICIES", "policy_class", "start_residual"]
+
+
+class ResidualPolicy(ActorCriticPolicy):
+    """SB3 ``ActorCriticPolicy`` with a fixed float64 affine base and a zero-started residual (module docstring).
+    Needs a Box observation and action space; ``share_features_extractor`` as SB3's default (the identity)."""
+
+    def _build(self, lr_schedule) -> None:
+        super()._build(lr_schedule)
+        n_obs, n_act = self.observation_space.shape[0], self.action_space.shape[0]
+        f64, nw = dict(dtype=torch.float64), n_act // 3  # 3 controls per wing (model.params.N_CONTROLS)
+        self.register_buffer("lqr_gains", torch.zeros((nw, 2, 6), **f64))  # LQRController's arguments
+        for name, width in (("lqr_u_trim", 3), ("lqr_trim_attitude", 2), ("lqr_mid", 3), ("lqr_half_range", 3)):
+            self.register_buffer(name, torch.ones((nw, width), **f64))
+        self.register_buffer("obs_mean", torch.zeros(n_obs, **f64))
+        self.register_buffer("obs_std", torch.ones(n_obs, **f64))
+        self.register_buffer("clip_obs", torch.tensor(100.0, **f64))  # [-] as warm_start.CLIP_OBS (set there)
+        self.skip_net = nn.Linear(n_obs, n_act)
+        for layer in (self.skip_net, self.action_net):
+            nn.init.zeros_(layer.weight)
+            nn.init.zeros_(layer.bias)
+        self.optimizer = self.optimizer_class(self.parameters(), lr=lr_schedule(1), **self.optimizer_kwargs)
+
+    def actor_parameters(self) -> list:
+        """The trained parameters of the action mean and noise (the critic warm-up freezes them)."""
+        return (list(self.action_net.parameters()) + list(self.mlp_extractor.policy_net.parameters())
+                + list(self.skip_net.parameters()) + [self.log_std])
+
+    def _normalised(self, obs: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+        raw = obs.to(torch.float64)
+        z = ((raw - self.obs_mean) / self.obs_std).clamp(-self.clip_obs, self.clip_obs)
+        return raw, z.to(torch.float32)
+
+    def _distribution(self, raw: torch.Tensor, z: torch.Tensor, latent_pi: torch.Tensor):
+        residual = self.action_net(latent_pi) + self.skip_net(z)
+        mean = (self._lqr(raw) + residual.to(torch.float64)).to(torch.float32)
+        return self.action_dist.proba_distribution(mean, self.log_std)
+
+    def _lqr(self, raw: torch.Tensor) -> torch.Tensor:
+        """The LQR's unclipped float64 actions of raw observations, by the LQR's code (no gradient)."""
+        from laddermill_gym.control.base import actions_from_controls
+        from laddermill_gym.control.lqr import LQRController
+
+        arrays = [getattr(self, f"lqr_{n}").cpu().numpy() for n in ("gains", "u_trim", "trim_attitude", "mid",
+                                                                     "half_range")]
+        ctrl = LQRController(*arrays, action_dtype=np.float64)
+        obs = raw.detach().cpu().numpy()
+        a = actions_from_controls(ctrl.controls(obs), ctrl.mid, ctrl.half_range).reshape(len(obs), -1)
+        return torch.as_tensor(a, dtype=torch.float64)
+
+    def forward(self, obs: torch.Tensor, deterministic: bool = False):
+        raw, z = self._normalised(obs)
+        latent_pi, latent_vf = self.mlp_extractor(z)
+        dist = self._distribution(raw, z, latent_pi)
+        actions = dist.get_actions(deterministic=deterministic)
+        log_prob = dist.log_prob(actions)
+        return actions.reshape((-1, *self.action_space.shape)), self.value_net(latent_vf), log_prob
+
+    def evaluate_actions(self, obs: torch.Tensor, actions: torch.Tensor):
+        raw, z = self._normalised(obs)
+        latent_pi, latent_vf = self.mlp_extractor(z)
+        dist = self._distribution(raw, z, latent_pi)
+        return self.value_net(latent_vf), dist.log_prob(actions), dist.entropy()
+
+    def get_distribution(self, obs: torch.Tensor):
+        raw, z = self._normalised(obs)
+        return self._distribution(raw, z, self.mlp_extractor.forward_actor(z))
+
+    def predict_values(self, obs: torch.Tensor) -> torch.Tensor:
+        return self.value_net(self.mlp_extractor.forward_critic(self._normalised(obs)[1]))
+
+    def set_base(self, lqr, obs_mean: np.ndarray, obs_var: np.ndarray, clip_obs: float) -> None:
+        """The fixed base, an :class:`~laddermill_gym.control.lqr.LQRController` ``lqr`` (its gains, trim and
+        ranges), and the normalisation of the residual's and the critic's input (mean, variance of the raw
+        observation, clip). ValueError for another controller or another number of wings."""
+        from laddermill_gym.control.lqr import LQRController
+
+        if not isinstance(lqr, LQRController) or lqr.gains.shape != tuple(self.lqr_gains.shape):
+            raise ValueError(f"ResidualPolicy.set_base: needs the LQRController of {self.lqr_gains.shape[0]} "
+                             f"wing(s) (gains {tuple(self.lqr_gains.shape)}), got {type(lqr).__name__} "
+                             f"{getattr(getattr(lqr, 'gains', None), 'shape', '')}")
+        with torch.no_grad():
+            for name, value in (("lqr_gains", lqr.gains), ("lqr_u_trim", lqr.u_trim),
+                                ("lqr_trim_attitude", lqr.trim_attitude), ("lqr_mid", lqr.mid),
+                                ("lqr_half_range", lqr.half_range), ("obs_mean", obs_mean),
+                                ("obs_std", np.sqrt(np.asarray(obs_var, dtype=np.float64) + 1e-8)),
+                                ("clip_obs", clip_obs)):
+                getattr(self, name).copy_(torch.as_tensor(np.asarray(value, dtype=np.float64)))
+
+
+#: Policy names a training config's ``policy`` may give: SB3's default and this module's.
+POLICIES = {"MlpPolicy": "MlpPolicy", "ResidualPolicy": ResidualPolicy}
+
+
+def policy_class(name: str):
+    """The policy (an SB3 alias or class) of a config's ``policy`` ``name``; ValueError naming the known ones."""
+    if name not in POLICIES:
+        raise ValueError(f"policy {name!r}: not one of {sorted(POLICIES)}")
+    return POLICIES[name]
+
+
+def start_residual(model, controller, raw_venv, n_steps: int) -> dict:
+    """Set ``model``'s :class:`ResidualPolicy` base at ``controller`` (the LQR) and its normalisation at the
+    statistics of ``n_steps`` steps of ``raw_venv`` under the controller (variance x VAR_INFLATION, clip CLIP_OBS,
+    as :func:`~laddermill_gym.control.warm_start.warm_start`). Returns the largest gain [rad per observation unit]."""
+    from laddermill_gym.control.warm_start import CLIP_OBS, VAR_INFLATION, observation_statistics
+
+    mean, var, _ = observation_statistics(controller, raw_venv, n_steps)
+    model.policy.set_base(controller, mean, VAR_INFLATION * var, CLIP_OBS)
+    return dict(max_gain=float(np.abs(controller.gains).max()))

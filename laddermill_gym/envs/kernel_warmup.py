@@ -1,0 +1,101 @@
+"""Compile an env's step kernels in a second process while this one computes its starting point (issue 32 point 1:
+cold starts), for every env that has one: TetheredWing-v0 and the other wing ids, Rotorcraft-v0, LadderMill.
+
+A cold start does two long single-threaded things one after the other: it computes the starting point (the wing's
+static equilibrium and trim, the craft's trim, the mill's periodic operating point), compiling the kernels that
+needs, and it then compiles the step-and-observe kernel at its first call. The step kernel's compiled code depends
+on the types of its arguments only, not on the starting point's values. So :func:`start` launches ``python -m
+laddermill_gym.envs.warmup_run`` with a target (``"module:function"``) and the task's arguments (pickled, on stdin):
+the target builds the same task around a stand-in starting point of the right shapes and types (its values are
+never used for a result) and calls the step kernel, so numba compiles exactly the kernels and signatures this
+process will call and writes them to its on-disk cache (``NUMBA_CACHE_DIR``, inherited). :meth:`Warmup.wait`,
+called before this process's first call of the step kernel, waits for that process; numba then loads the kernels
+from its cache as in any warm start: the same machine code, so the same bits as compiling them here (numba's cache
+is keyed by the signature, the source and the CPU; a signature the second process did not compile is compiled
+here as before).
+
+This moves CPU seconds to the other core; it removes none: the wall time shrinks only when a second core is free
+(docs/benchmarks.md, "Cold start"). ``LADDERMILL_KERNEL_WARMUP=off`` (:data:`SWITCH`) switches it off for every
+env; it is also off when numba's JIT is disabled, when the kernels are already compiled in this process or (for
+:func:`start` with ``cached_check``) already in numba's on-disk cache. Any failure of the second process only
+costs its time: this process then compiles what it still needs.
+"""
+
+from __future__ import annotations
+
+import os
+import pickle
+import subprocess
+import sys
+
+__all__ = ["SWITCH", "CHILD_MODULE", "Warmup", "enabled", "on_disk", "start"]
+
+#: the environment variable that switches the warm-up off (value ``off``)
+SWITCH = "LADDERMILL_KERNEL_WARMUP"
+#: the module the second process runs (``python -m``)
+CHILD_MODULE = "laddermill_gym.envs.warmup_run"
+#: the longest wait for the second process [s] (a cold compile takes 30-80 s of CPU on a loaded machine; past this
+#: it is stopped and this process compiles what it still needs)
+WAIT_LIMIT_S = 900.0
+
+
+class Warmup:
+    """A running warm-up process; :meth:`wait` (idempotent) waits for it, at most :data:`WAIT_LIMIT_S`."""
+
+    def __init__(self, proc: subprocess.Popen):
+        self.proc = proc
+        self.returncode: int | None = None
+
+    def wait(self) -> int | None:
+        """Wait for the process; its exit code (None if it had to be stopped)."""
+        if self.returncode is None and self.proc is not None:
+            try:
+                self.returncode = self.proc.wait(timeout=WAIT_LIMIT_S)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+            self.proc = None
+        return self.returncode
+
+
+def enabled(kernels) -> bool:
+    """Whether a warm-up can help: not switched off, numba's JIT on, and none of ``kernels`` (dispatchers)
+    compiled in this process yet."""
+    from numba.core import config
+
+    if os.environ.get(SWITCH, "").strip().lower() == "off" or config.DISABLE_JIT:
+        return False
+    return not any(k.signatures for k in kernels)
+
+
+def on_disk(kernels) -> bool:
+    """Whether numba's on-disk cache holds a current entry (any signature, compiled from today's source) of any of
+    ``kernels``: then a start loads them in about a second and a second process would only cost its own start.
+    False when it cannot tell (a dispatcher without a cache)."""
+    for k in kernels:
+        try:
+            if k._cache._cache_file._load_index():  # numba's index: {(signature, target): file}, {} when stale
+                return True
+        except AttributeError:
+            continue
+    return False
+
+
+def start(target: str, task_kwargs: dict, kernels, cached_check: bool = False) -> Warmup | None:
+    """Launch the warm-up process that calls ``target`` (``"module:function"``, a function of one dict) with
+    ``task_kwargs`` when :func:`enabled` (and, with ``cached_check``, ``kernels`` are not :func:`on_disk`); None
+    when not (or when the arguments do not pickle)."""
+    if not enabled(kernels) or (cached_check and on_disk(kernels)):
+        return None
+    try:
+        payload = pickle.dumps((str(target), dict(task_kwargs)))
+    except Exception:  # an argument that does not pickle: compile here as before
+        return None
+    proc = subprocess.Popen([sys.executable, "-m", CHILD_MODULE], stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL, env=dict(os.environ))
+    try:
+        proc.stdin.write(payload)
+        proc.stdin.close()
+    except OSError:
+        pass
+    return Warmup(proc)

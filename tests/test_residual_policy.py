@@ -1,0 +1,109 @@
+"""The residual PPO policy (control/residual_policy.py): untrained, its deterministic action is the LQR's (the
+LQR controller that ``make_controller`` designs, computed apart from the policy, as the oracle) on observations
+far from trim, through SB3's zip format and the harness's loader; the critic warm-up freezes its residual; bad
+configs and a wrong base name what is wrong."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import yaml
+
+pytest.importorskip("stable_baselines3")
+
+from laddermill_gym.control.residual_policy import ResidualPolicy, policy_class, start_residual  # noqa: E402
+from laddermill_gym.control.rl_config import load_rl_config  # noqa: E402
+from laddermill_gym.model.configio import ConfigError  # noqa: E402
+
+ENV_ID = "laddermill_gym/TetheredWing-v0"
+CONFIG = "configs/agents/ppo_tethered_wing_residual.yaml"
+
+
+@pytest.fixture(scope="module")
+def started():
+    """(an untrained residual PPO started at the LQR, the LQR, raw observations of a disturbed LQR rollout)."""
+    import gymnasium as gym
+    from stable_baselines3 import PPO
+    from stable_baselines3.common.vec_env import DummyVecEnv
+
+    from laddermill_gym.control.factory import make_controller
+
+    lqr = make_controller("lqr", ENV_ID, {})
+    venv = DummyVecEnv([lambda: gym.make(ENV_ID)])
+    model = PPO(ResidualPolicy, venv, n_steps=64, batch_size=64, device="cpu", seed=0,
+                policy_kwargs=dict(net_arch=dict(pi=[16, 16], vf=[16]), log_std_init=-2.5))
+    start_residual(model, lqr, venv, 50)
+    env = gym.make(ENV_ID)
+    obs, _ = env.reset(seed=0)
+    rng = np.random.default_rng(1)
+    rows = []
+    for _ in range(100):
+        rows.append(obs)
+        obs, _, term, trunc, _ = env.step(lqr.predict(obs)[0])
+        assert not (term or trunc)
+    rows = np.array(rows)
+    # far from trim as well: deviations of 3 to 300 of the rollout's standard deviations, controls at the clip
+    far = [rows[::4] + rng.normal(size=rows[::4].shape) * k * rows.std(axis=0) for k in (3.0, 30.0, 300.0)]
+    return model, lqr, np.concatenate([rows, *far]).astype(np.float32)
+
+
+def test_untrained_action_is_the_lqr_action(started, tmp_path):
+    from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.control.sb3_policy import SB3Controller
+
+    model, lqr, obs = started
+    expected = lqr.predict(obs)[0]
+    assert lqr.n_clipped > 0  # some actions at the clip: the residual is added before SB3's clip, as the LQR clips
+    got = SB3Controller(model).predict(obs, deterministic=True)[0]
+    assert np.abs(got.astype(np.float64) - expected).max() <= 1e-12
+    model.save(tmp_path / "model.zip")  # SB3's zip format; the harness loads a run folder
+    (tmp_path / "algorithm.txt").write_text("PPO\n")
+    (tmp_path / "config.yaml").write_text(f"env: {ENV_ID}\n")
+    loaded = make_controller(str(tmp_path), ENV_ID, {})
+    assert isinstance(loaded.model.policy, ResidualPolicy)
+    assert np.abs(loaded.predict(obs, deterministic=True)[0].astype(np.float64) - expected).max() <= 1e-12
+
+
+def test_residual_changes_the_action_and_warmup_freezes_it(started):
+    import torch
+
+    from laddermill_gym.harness.validation import freeze_actor
+
+    model, lqr, obs = started
+    policy = model.policy
+    freeze_actor(model, True)
+    assert not any(p.requires_grad for p in policy.actor_parameters())
+    assert all(p.requires_grad for p in policy.value_net.parameters())
+    freeze_actor(model, False)
+    saved = policy.skip_net.bias.detach().clone()
+    try:
+        with torch.no_grad():
+            policy.skip_net.bias.copy_(torch.tensor([0.01, -0.02, 0.0]))
+        got = model.predict(obs[:10], deterministic=True)[0].astype(np.float64)
+        ref = np.clip(lqr.predict(obs[:10])[0].astype(np.float64) + [0.01, -0.02, 0.0], -1, 1)
+        np.testing.assert_allclose(got, ref, atol=2e-7)  # float32 rounding of the sum
+    finally:
+        with torch.no_grad():
+            policy.skip_net.bias.copy_(saved)
+
+
+def test_set_base_refuses_another_controller(started):
+    model = started[0]
+    with pytest.raises(ValueError, match="needs the LQRController"):
+        model.policy.set_base(object(), np.zeros(15), np.ones(15), 100.0)
+    with pytest.raises(ValueError, match="policy 'Residual'"):
+        policy_class("Residual")
+
+
+def test_config_checks(tmp_path):
+    cfg = load_rl_config(CONFIG)
+    assert cfg.policy == "ResidualPolicy" and cfg.init_from == "lqr" and not cfg.normalize_observations
+    data = yaml.safe_load(open(CONFIG))
+    for change, field in ((dict(normalize_observations=True), "init_from"), (dict(init_from=None), "policy"),
+                          (dict(policy="CnnPolicy"), "policy")):
+        bad = {**data, **change}
+        path = tmp_path / "bad.yaml"
+        path.write_text(yaml.safe_dump({k: v for k, v in bad.items() if v is not None}))
+        with pytest.raises(ConfigError, match=field) as err:
+            load_rl_config(path)
+        assert "bad.yaml" in str(err.value)

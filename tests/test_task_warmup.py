@@ -1,0 +1,92 @@
+"""The wing and craft kernel warm-up (``envs/kernel_warmup.py``, ``envs/task_warmup.py``, issue 32 point 1): while
+a cold start solves the trim, a second process compiles the step kernel into numba's cache. Oracles: the env run
+with the warm-up switched off (every kernel compiled in the process itself) gives the same bits, in fresh processes
+with empty caches (slow: two cold compiles per env); numba's compile events show that the process with the warm-up
+compiles no step kernel and nothing at its first reset and steps. Fast: the stand-in trims have the real trims'
+shapes, dtypes and flags, and the warm-up starts only when it can help."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from laddermill_gym.envs import kernel_warmup
+from laddermill_gym.envs.rotorcraft.trim import craft_trim
+from laddermill_gym.envs.task import scene_trim
+from laddermill_gym.envs.task_warmup import stand_in_craft_trim, stand_in_wing_trim
+
+
+def _same_kind(a: np.ndarray, b: np.ndarray) -> bool:
+    return (a.shape, a.dtype, a.flags.writeable, a.flags.c_contiguous) == (b.shape, b.dtype, b.flags.writeable,
+                                                                          b.flags.c_contiguous)
+
+
+def test_the_stand_in_trims_have_the_real_trims_types():
+    sc, x, u = scene_trim("tethered_wing", ())
+    s_sc, s_x, s_u = stand_in_wing_trim("tethered_wing", ())
+    assert type(s_sc) is type(sc) and _same_kind(s_x, x) and _same_kind(s_u, u)
+    c, x, u = craft_trim("roberts_flying_model")
+    s_c, s_x, s_u = stand_in_craft_trim("roberts_flying_model")
+    assert type(s_c) is type(c) and _same_kind(s_x, x) and _same_kind(s_u, u)
+
+
+class FakeKernel:
+    def __init__(self, signatures):
+        self.signatures = signatures
+
+
+def test_started_only_when_it_can_help(monkeypatch):
+    monkeypatch.setenv(kernel_warmup.SWITCH, "off")
+    assert kernel_warmup.start("m:f", {}, (FakeKernel([]),)) is None
+    monkeypatch.delenv(kernel_warmup.SWITCH)
+    assert kernel_warmup.start("m:f", {}, (FakeKernel([]), FakeKernel(["a signature"]))) is None  # compiled here
+    assert kernel_warmup.start("m:f", {"x": lambda: 0}, (FakeKernel([]),)) is None  # arguments that do not pickle
+    assert not kernel_warmup.on_disk((FakeKernel([]),))  # no cache to ask: not known to be on disk
+
+
+#: a fresh process: make the env (compile events named, by phase), reset, roll out; prints the rollout's bits
+CHILD = """import json
+import gymnasium, numpy as np
+from numba.core import event
+names = {"make": [], "after": []}
+phase = ["make"]
+class Names(event.Listener):
+    def on_start(self, ev):
+        names[phase[0]].append(ev.data["dispatcher"].py_func.__qualname__)
+    def on_end(self, ev):
+        pass
+event.register("numba:compile", Names())
+import laddermill_gym
+env = gymnasium.make(%r)
+phase[0] = "after"
+obs, _ = env.reset(seed=3)
+out = [obs]
+rng = np.random.default_rng(3)
+for _ in range(8):
+    obs, r, term, trunc, _ = env.step(rng.uniform(-0.5, 0.5, env.action_space.shape).astype(np.float32))
+    out += [obs, np.array([r, term, trunc], dtype=float)]
+print(json.dumps({"names": names, "bits": np.concatenate([np.ravel(o) for o in out]).astype(float).tobytes().hex()}))
+"""
+
+
+def fresh(tmp, env_id: str, warmup: bool) -> dict:
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp / "numba"), LADDERMILL_CACHE_DIR=str(tmp / "ops"))
+    env[kernel_warmup.SWITCH] = "on" if warmup else "off"
+    r = subprocess.run([sys.executable, "-c", CHILD % (env_id,)], env=env, capture_output=True, text=True, check=True)
+    return json.loads(r.stdout.strip().splitlines()[-1])
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("env_id", ["laddermill_gym/TetheredWing-v0", "laddermill_gym/Rotorcraft-v0"])
+def test_warmed_up_start_compiles_no_step_kernel_and_gives_the_same_bits(tmp_path, env_id):
+    own = fresh(tmp_path / "own", env_id, warmup=False)
+    warm = fresh(tmp_path / "warm", env_id, warmup=True)
+    assert any("step_observe" in n for n in own["names"]["make"])  # the oracle compiled the step kernel itself
+    assert not any("step_observe" in n for n in warm["names"]["make"])  # loaded from the second process's cache
+    assert warm["names"]["after"] == []  # nothing compiled at the reset and the steps
+    assert warm["bits"] == own["bits"]
