@@ -77,6 +77,7 @@ def run_to(base, x0, wind, method: str, dt: float, t: float) -> np.ndarray:
 
 
 def analyse(scene: str, duration: float, times, methods, dt_ref: float, top: int) -> None:
+    """Print, per time of ``times`` [s], the Jacobian's spectrum and each run's error parts (module doc)."""
     base = build_simulator(scene)
     x0, wind = forcing_setup(base, "step", duration)
     nw = base.assembly.n_wings
@@ -96,23 +97,33 @@ def analyse(scene: str, duration: float, times, methods, dt_ref: float, top: int
             if xs is None:
                 print(f"  {method} at {dt} s: breaks down before {t} s")
                 continue
-            c = np.linalg.solve(V, xs - xr)
-            share = np.abs(c) * np.linalg.norm(V[lat, :], axis=0)  # each mode's part of the lateral error
-            z = dt * lam
-            fm, fx = factor(method, z), np.abs(np.exp(z))
-            err = np.abs(xs - xr)[lat].max()
-            print(f"  {method} at {dt} s: largest lateral error {err:.3g} m; modes by their share of it:")
+            parts = error_parts(lam, V, xs - xr, lat, method, dt)
+            share, fm, fx = parts["share"], parts["factor"], parts["exact"]
+            print(f"  {method} at {dt} s: largest lateral error {parts['lateral']:.3g} m; modes by their share of it:")
             print("    lambda [1/s]          share [m]  |exp(h l)|  |R(h l)|  R/exp")
             for k in np.argsort(-share)[:top]:
                 print(f"    {lam[k].real:9.3f} {lam[k].imag:+9.2f}i  {share[k]:9.3g}  {fx[k]:9.4f}  {fm[k]:8.4f}"
                       f"  {fm[k] / fx[k]:6.3f}")
-            damped = (fm / fx < 0.9) & (np.abs(lam.imag) > 1.0)
-            part = (V[:, damped] @ c[damped]).real  # the error's part in the damped modes (conjugates together)
-            slow = np.abs(lam) < 1.0
-            part_slow = (V[:, slow] @ c[slow]).real
-            print(f"    damped below 0.9 of exact per step: {damped.sum()} of {lam.size} modes; the error's part in "
-                  f"them: {np.abs(part[lat]).max():.3g} m lateral; in the {slow.sum()} modes with |lambda| < 1 1/s "
-                  f"(all resolved): {np.abs(part_slow[lat]).max():.3g} m")
+            print(f"    damped below 0.9 of exact per step: {parts['n_damped']} of {lam.size} modes; the error's part "
+                  f"in them: {parts['damped']:.3g} m lateral; in the {parts['n_slow']} modes with |lambda| < 1 1/s "
+                  f"(all resolved): {parts['slow']:.3g} m")
+
+
+def error_parts(lam: np.ndarray, V: np.ndarray, e: np.ndarray, lat: np.ndarray, method: str, h: float) -> dict:
+    """A run's state error e written in the eigenvectors V (e = V c) of the Jacobian (eigenvalues lam [1/s]), read
+    on the entries ``lat``: "lateral" max |e[lat]| [m]; "share" |c_k| ||V[lat, k]|| per mode [m]; "factor" |R(h
+    lambda)| of ``method`` at step h [s] and "exact" |exp(h lambda)|; "damped" max |(V c)[lat]| over the modes
+    with factor < 0.9 exact (oscillating: |Im lambda| > 1 1/s) and "slow" the same over |lambda| < 1 1/s [m]."""
+    c = np.linalg.solve(V, e)
+    z = h * lam
+    fm, fx = factor(method, z), np.abs(np.exp(z))
+    damped = (fm / fx < 0.9) & (np.abs(lam.imag) > 1.0)
+    slow = np.abs(lam) < 1.0
+    part = (V[:, damped] @ c[damped]).real  # conjugate pairs together: a real vector
+    part_slow = (V[:, slow] @ c[slow]).real
+    return {"lateral": float(np.abs(e[lat]).max()), "share": np.abs(c) * np.linalg.norm(V[lat, :], axis=0),
+            "factor": fm, "exact": fx, "n_damped": int(damped.sum()), "n_slow": int(slow.sum()),
+            "damped": float(np.abs(part[lat]).max(initial=0.0)), "slow": float(np.abs(part_slow[lat]).max(initial=0.0))}
 
 
 def main(argv=None) -> int:
