@@ -85,12 +85,13 @@ def mill_lqr_check() -> dict:
 
 def pointmass_mill() -> dict:
     """``python -m laddermill_gym.studies.pointmass.pointmass_mill`` (the rigid mill's in-plane run to periodic
-    motion, then the point-mass mill at 70 m and 1 m elements on one thread; a few minutes): the rigid run's periodic
+    motion, then the point-mass mill at 70 m and 1 m elements on one thread; 5-6 minutes of CPU, over 25 minutes at a
+    load of 13): the rigid run's periodic
     time [s], mean power, first and last element's and smallest mean tension [kN] and its element; per element
     length ("l70", "l1") the nodes, whether its search converged, where [s], its mean power [kW], the first and last
     element's and the smallest mean tension [kN] and the slot above it, as printed."""
     argv = [STUDY + "pointmass.pointmass_mill"]
-    out = run_command(argv, 2400, threads=1)
+    out = run_command(argv, 3600, threads=1)
     m = _need(r"^rigid \(one element per piece, RK4 dt [\d.]+ s\): periodic at t = (\d+) s, mean power ([\d.]+) kW, "
               r"first element ([\d.]+) kN, last ([\d.]+) kN, smallest mean tension ([\d.]+) kN \(element (\d+)\)", out,
               ["-m", *argv])

@@ -13,8 +13,10 @@ Each group's cost, measured on the shared 2-core machine at a load of 6-8 (numba
 125 s, ``rotor_design`` 54 s, ``craft_stability`` 32 s, ``lateral_study`` 31 s, ``tethered_wing_lqr`` 24 s,
 ``simulate_tethered_wing`` 17 s, ``training_curves`` (reads the shipped CSVs), ``cable_dyneema`` and ``craft_data``
 (read the configs) 0 s; at a load of 6-17: ``site_tables`` 34-85 s, ``pumping_evaluate`` 42 s, ``pumping_cycle_lqr``
-34 s (:mod:`docsite.pumping_figures`), ``insertion_study`` 8 s, ``mill_periodic_2d`` 104 s, ``mill_lqr_check`` 274 s
-(:mod:`docsite.mill_figures`): every page about 41 minutes.
+34 s, ``tether_convergence`` 2-5 min (:mod:`docsite.pumping_figures`), ``insertion_study`` 8 s,
+``mill_periodic_2d`` 104-277 s, ``mill_lqr_check`` 216-274 s, ``pointmass_mill`` over 25 minutes at a load of 13
+(5-6 minutes of CPU; :mod:`docsite.mill_figures`), ``gain_locality`` 780 s at a load of 13, ``rotor_chart`` 23 s,
+``design_data`` 0 s: every page about 70 minutes under such load (about 40 on a quieter machine).
 """
 
 from __future__ import annotations
