@@ -12,7 +12,7 @@ from scipy.integrate import solve_ivp
 
 from laddermill_gym.kernels.dispatch import model_assemble
 from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness
-from laddermill_gym.kernels.rigid.rosenbrock import ROS2, ROS34PW2
+from laddermill_gym.kernels.rigid.rosenbrock import ROS2, ROS2T, ROS34PW2
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.simulator import IntegratorSettings, SimulationError
 from laddermill_gym.studies.numerics.scenes import build_simulator, with_settings
@@ -20,9 +20,11 @@ from laddermill_gym.studies.numerics.scenes import build_simulator, with_setting
 # published coefficients (alpha_ij, gamma_ij strictly lower, gamma, b, embedded bhat): Verwer et al. 1999; Rang &
 # Angermann 2005
 G2 = 1.0 + 1.0 / np.sqrt(2.0)
-BHAT = {"ros2": [1.0, 0.0], "ros34pw2": [0.37810903145819369, -0.096042292212423178, 0.5, 0.2179332607542295]}
+BHAT = {"ros2": [1.0, 0.0], "ros2t": [1.0, 0.0],
+        "ros34pw2": [0.37810903145819369, -0.096042292212423178, 0.5, 0.2179332607542295]}
 PUBLISHED = {
     "ros2": (G2, [[0, 0], [1.0, 0]], [[0, 0], [-2.0 * G2, 0]], [0.5, 0.5], ROS2, 2),
+    "ros2t": (0.25, [[0, 0], [1.0, 0]], [[0, 0], [-0.5, 0]], [0.5, 0.5], ROS2T, 2),  # the same family at gamma 1/4
     "ros34pw2": (0.435866521508459,
                  [[0, 0, 0, 0], [0.87173304301691801, 0, 0, 0], [0.84457060015369423, -0.11299064236484185, 0, 0],
                   [0, 0, 1.0, 0]],
@@ -139,7 +141,7 @@ def test_cable_stiffness_equals_finite_differences_of_the_node_forces():
     np.testing.assert_allclose(K, -fd, rtol=2e-3, atol=1e-3 * np.abs(K).max())
 
 
-@pytest.mark.parametrize("method, dt, ratio_min", [("ros2", 0.01, 3.0), ("ros34pw2", 0.01, 6.0)])
+@pytest.mark.parametrize("method, dt, ratio_min", [("ros2", 0.01, 3.0), ("ros2t", 0.01, 3.0), ("ros34pw2", 0.01, 6.0)])
 def test_observed_order_on_the_tethered_wing(method, dt, ratio_min):
     """Halving the step divides the error by about 2^p once the cable's excited axial modes are resolved (at
     larger steps the L-stable methods damp them, so the observed order approaches p from below; measured ratios
@@ -243,3 +245,32 @@ def test_order_on_a_gust_with_kinks_at_the_step_ends():
             sim.step(n_steps=int(round(5.0 / dt)))
             errs.append(np.max(np.linalg.norm(sim.wing_positions() - ref.wing_positions(), axis=1)))
         assert errs[0] / errs[1] > ratio_min, (method, errs)
+
+
+def scalar_step_factor(tableau, z):
+    """y1 / y0 of one transformed-form step on y' = lambda y with the exact Jacobian, z = h lambda (h = 1)."""
+    gamma, _, a, c, m, _ = tableau
+    U = np.zeros(m.size, dtype=complex)
+    for i in range(m.size):
+        U[i] = (z * (1.0 + a[i] @ U) + c[i] @ U) / (1.0 / gamma[0] - z)
+    return 1.0 + m @ U
+
+
+def test_ros2t_keeps_the_amplitude_of_unresolved_oscillations():
+    """ROS2 at gamma = 1/4: R(z) = ((1 + z/4) / (1 - z/4))^2 (closed form), |R(iy)| = 1 on the whole imaginary axis
+    and |R| < 1 in the left half-plane (A-stable); ROS34PW2 (L-stable) damps an oscillation of h omega = 4 to 0.61
+    per step. The study's stability function (whip_spectrum.stability_function_w) agrees with one step of the
+    transformed form on y' = lambda y."""
+    from laddermill_gym.studies.numerics.whip_spectrum import stability_function_w
+
+    y = np.array([0.1, 1.0, 4.0, 12.0, 1e4])
+    zs = np.concatenate([1j * y, -0.3 + 1j * y, -y])
+    closed = ((1 + zs / 4) / (1 - zs / 4)) ** 2
+    step = np.array([scalar_step_factor(ROS2T, z) for z in zs])
+    np.testing.assert_allclose(step, closed, rtol=1e-12)
+    np.testing.assert_allclose(stability_function_w(ROS2T, zs), closed, rtol=1e-12)
+    np.testing.assert_allclose(np.abs(step[: y.size]), 1.0, rtol=1e-12)
+    assert np.all(np.abs(step[y.size:]) < 1.0)
+    r34 = np.array([scalar_step_factor(ROS34PW2, z) for z in 1j * y])
+    np.testing.assert_allclose(stability_function_w(ROS34PW2, 1j * y), r34, rtol=1e-12)
+    assert abs(r34[2]) < 0.62 and abs(r34[-1]) < 1e-3

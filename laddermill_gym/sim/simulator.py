@@ -52,8 +52,8 @@ STEP_MAX_STEPS, ADVANCE_MAX_STEPS = 10_000_000, 100_000_000
 class IntegratorSettings:
     """Integrator choice and safety limits.
 
-    method : "rk4" (fixed step dt [s]), "dp54" (adaptive, rtol/atol), "ros2" / "ros34pw2" (linearly implicit
-    Rosenbrock-W of order 2 / 3, fixed step dt [s] not limited by the cable's axial modes; 3D rigid models;
+    method : "rk4" (fixed step dt [s]), "dp54" (adaptive, rtol/atol), "ros2" / "ros2t" / "ros34pw2" (linearly
+    implicit Rosenbrock-W of order 2 / 2 / 3, fixed step dt [s] not limited by the cable's axial modes; 3D rigid models;
     docs/numerics.md) or "ros34pw2a" (ROS34PW2 with error control, rtol/atol: the step is chosen by accuracy).
     max_speed [m/s], max_rate [rad/s]: a state beyond these is reported as exploding.
     ground_height [m]: height h = -z of the ground (global z points down).

@@ -23,6 +23,8 @@ Methods:
 
 * ``ros2``: Verwer, Spee, Blom & Hundsdorfer (1999), SIAM J. Sci. Comput. 20(4), gamma = 1 + 1/sqrt(2): order 2
   for any J, L-stable for the exact one; two stages (one assembly, one right-hand side, two eliminations).
+* ``ros2t``: the same with gamma = 1/4: order 2 for any J, A-stable and |R(iy)| = 1 for the exact one (not
+  L-stable): it damps no oscillation the step does not resolve.
 * ``ros34pw2``: Rang & Angermann (2005), BIT Numer. Math. 45: order 3 for any J, stiffly accurate, L-stable for the
   exact one; four stages (one assembly, three right-hand sides, four eliminations).
 
@@ -75,6 +77,15 @@ def transformed_tableau(gamma: float, alpha: np.ndarray, gam: np.ndarray, b: np.
 _G2 = 1.0 + 1.0 / math.sqrt(2.0)
 ROS2 = transformed_tableau(_G2, np.array([[0.0, 0.0], [1.0, 0.0]]), np.array([[0.0, 0.0], [-2.0 * _G2, 0.0]]),
                            np.array([0.5, 0.5]), np.array([1.0, 0.0]))
+#: ROS2 with gamma = 1/4 (``ros2t``): the same family (Verwer et al. 1999: order 2 for any J and any gamma, since
+#: b2 alpha_21 = 1/2 and gamma + b2 gamma_21 = 0), at the smallest gamma for which it is A-stable (its stability
+#: function is that of the two-stage SDIRK method of order 2, A-stable for gamma >= 1/4: Hairer & Wanner II,
+#: IV.6). With the exact Jacobian R(z) = ((1 + z/4) / (1 - z/4))^2, the trapezoidal rule's at h/2 squared:
+#: |R(iy)| = 1 for every y, so oscillations the step does not resolve keep their amplitude (with a phase error)
+#: where ROS2 and ROS34PW2 (L-stable) damp them. Not L-stable: R(inf) = 1. Embedded: linearly implicit Euler.
+#: Through the apex whip it is no better than ROS34PW2 (docs/work_precision.md, "The apex whip's modes").
+ROS2T = transformed_tableau(0.25, np.array([[0.0, 0.0], [1.0, 0.0]]), np.array([[0.0, 0.0], [-0.5, 0.0]]),
+                            np.array([0.5, 0.5]), np.array([1.0, 0.0]))
 #: ROS34PW2 (Rang & Angermann 2005, BIT 45, table 4.2): 4 stages, order 3 for any J (a W-method), stiffly
 #: accurate and L-stable for the exact one; embedded method of order 2.
 _G34 = 0.435866521508459
