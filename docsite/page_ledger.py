@@ -32,6 +32,7 @@ from docsite.ledger_mill import FEATURES, MOVING_CABLE
 from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, PUMPING, QUASISTEADY, REELING, ROBERTS
 from docsite.ledger_pointmass import POINTMASS_MILL
 from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
+from docsite.ledger_wind import WIND
 
 __all__ = ["LEDGER", "Covered", "NotYet"]
 
@@ -73,7 +74,7 @@ LEDGER = {
     "rotorcraft.md": ROTORCRAFT,
     "rotorcraft_design.md": ROTOR_DESIGN,
     "scale_out.md": SCALE_OUT,
-    "wind.md": NotYet("wind-model constants (given) and turbulence cost timings: not yet listed"),
+    "wind.md": WIND,
     "wing_data.md": NotYet("wing derivation figures (derive_wing) and the papers' data: not yet listed"),
     "work_precision.md": NotYet("work-precision tables (about 15 minutes, one thread each) and timings"),
 }

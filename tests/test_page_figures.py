@@ -166,3 +166,30 @@ def test_the_35m_design_inputs_are_its_configs_and_closed_forms():
     other["design_data"]["config"]["30kft"]["v1"] = "2.900e-3"
     named = [b for b in pages_differences(other) if "'rotor_design'" not in b]
     assert len(named) == 1 and "2.900e-3" in named[0], named
+
+
+def test_the_wind_page_is_the_standards_constants_in_the_code_and_its_closed_forms(tmp_path, monkeypatch):
+    """docs/wind.md against the constants the atmosphere modules hold and its check values reworked from the IEC
+    formulas (class IA, 10 m/s, D 10 m: EOG V_gust 6.76 m/s, peak 15.0 m/s at 5.25 s, EDC theta_e 46.3 deg worked by
+    hand; the coherence of u over 20 m, exp(-1.44 x 20 / 340.2) = 0.92), in the fast set; another EWS beta in the
+    code is named, and so is the page's earlier coherence 0.93."""
+    import copy
+
+    from docsite import page_figures
+    from docsite.wind_figures import wind_data
+
+    data = wind_data()
+    worked = data["worked"]
+    assert (worked["v_gust"], worked["peak"], worked["t_peak"], worked["theta_e"]) == ("6.76", "15.0", "5.25", "46.3")
+    assert worked["coherence_20m"] == "0.92"
+    measured = {"checked_pages": ["wind.md"], "wind_data": data}
+    assert pages_differences(measured) == []
+    other = copy.deepcopy(measured)
+    other["wind_data"]["code"]["ews_beta"] = "6.5"
+    named = pages_differences(other)
+    assert len(named) == 1 and "6.5" in named[0] and "wind.md" in named[0], named
+    page = (ROOT / "laddermill_gym" / "docs" / "wind.md").read_text()
+    (tmp_path / "wind.md").write_text(page.replace("/ 340 m) = 0.92)", "/ 340 m) = 0.93)"))
+    monkeypatch.setattr(page_figures, "DOCS", tmp_path)
+    stale = pages_differences(measured)
+    assert len(stale) == 1 and "0.93" in stale[0], stale
