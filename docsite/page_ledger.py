@@ -33,6 +33,7 @@ from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, PUMPING, QUASIST
 from docsite.ledger_pointmass import POINTMASS_MILL
 from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
 from docsite.ledger_wind import WIND
+from docsite.ledger_wing import WING_DATA
 
 __all__ = ["LEDGER", "Covered", "NotYet"]
 
@@ -75,6 +76,6 @@ LEDGER = {
     "rotorcraft_design.md": ROTOR_DESIGN,
     "scale_out.md": SCALE_OUT,
     "wind.md": WIND,
-    "wing_data.md": NotYet("wing derivation figures (derive_wing) and the papers' data: not yet listed"),
+    "wing_data.md": WING_DATA,
     "work_precision.md": NotYet("work-precision tables (about 15 minutes, one thread each) and timings"),
 }

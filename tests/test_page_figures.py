@@ -193,3 +193,21 @@ def test_the_wind_page_is_the_standards_constants_in_the_code_and_its_closed_for
     monkeypatch.setattr(page_figures, "DOCS", tmp_path)
     stale = pages_differences(measured)
     assert len(stale) == 1 and "0.93" in stale[0], stale
+
+
+def test_the_wing_page_is_what_derive_wing_prints():
+    """docs/wing_data.md's key numbers, mass build-up, cable trims and pitch check against a fresh
+    ``derive_wing --check`` (about 4 s; the command, not a stored copy of its output), in the fast set; another
+    Clp at 7 deg and another Jxx are each named on the lines that quote them."""
+    import copy
+
+    from docsite.wing_figures import derive_wing
+
+    measured = {"checked_pages": ["wing_data.md"], "derive_wing": derive_wing()}
+    assert pages_differences(measured) == []
+    other = copy.deepcopy(measured)
+    other["derive_wing"]["deriv"]["Clp"][1] = "-0.6100"
+    other["derive_wing"]["J"] = ["1330.2", *other["derive_wing"]["J"][1:]]
+    bad = pages_differences(other)
+    assert len(bad) == 2 and any("-0.652" in b and "-0.6100" in b for b in bad), bad
+    assert any("1325" in b and "1330.2" in b for b in bad), bad
