@@ -72,6 +72,16 @@ WING_DATA = NotYet(
              (_p("model[CD0_w]"), _p("model[CD0_h]"), _p("model[CD0_v]"))),
             (rf"d eps/d alpha = 2 CLa_w/\(pi A\) = {N}\.", (_p("deps"),)),
             (rf"aileron \(c_f/c = 0\.25\) {N}, rudder \(0\.35\) {N}\.", (_p("model[tau_a]"), _p("model[tau_r]"))),
+            (rf"c = S/b = {N} m \(= mean", (_p("chord"),)), (rf"V_H = S_h l_t/\(S c\) = {N} \|", (_p("V_H"),)),
+            (rf"V_V = 2 S_v l_v/\(S b\) = {N} \|", (_p("V_V"),)),
+            (rf"\(1 \+ cos Lambda\) \+ 0\.009 A = {N}", (_p("model[eta_v(1+ds/db)]"),)),
+            (rf"Tail volume V_H = S_h l_t / \(S c\) = {N} \(from the wing's ac\), V_V = {N};", (_p("V_H"), _p("V_V"))),
+            (rf"free-flight static margin {N} c \(neutral point {N} m behind the CG\), pitch damping C_mq = {N}, "
+             rf"C_mad = {N} \(above\)", (_p("margin[0]"), _p("margin[1]"), D % "Cmq", D % "Cmad")),
+            (rf"\(here {N} /rad from 3 deg dihedral", (D % "Clb",)),
+            (rf"\(V_V = {N}; Cnb = {N}, Cnr = {N}\)", (_p("V_V"), D % "Cnb", D % "Cnr")),
+            (rf"its height below the CG \({N} m\) .* its position ahead \({N} m\)",
+             (_p("attachment[2]"), _p("attachment[0]"))), (rf"\(Clp = {N}, Cnr\)", (D % "Clp",)),
             _pitch("v0", "ascending"), _pitch("v0", "descending"), _pitch("v1", "ascending"),
             _pitch("v1", "descending")),
 )

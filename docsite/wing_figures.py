@@ -24,13 +24,12 @@ def _one(pattern: str, out: str) -> tuple[str, ...]:
 
 
 def parse_derive_wing(out: str) -> dict:
-    """The figures of ``derive_wing --check``'s output ``out``, as printed (strings): ``i_t`` [deg], ``mass`` per
-    component (kg, x, z), ``J`` (Jxx, Jyy, Jzz, Jxz), ``model`` (its NAME=VALUE pairs), ``V_H``, ``V_V``, ``deps``,
-    ``CL_max`` (value, alpha), ``CL_alpha``, ``Cm_alpha``, ``margin`` (c, m), ``CD0``, ``LD`` (value, alpha),
-    ``deriv`` (name -> values at 0/7/14/30/90 deg), ``free_trim``, ``kite`` ("V6.0" -> alpha, force,
-    lift, angle), ``elevator`` ("a7.0" -> d_e), ``de_trim`` ("de-15.0" -> alphas), ``tether`` ("e30" -> alpha, d_e),
-    ``pitch``
-    ((variant, leg) -> elevator, alpha, C_L, k, h_P, omega, zeta)."""
+    """The figures of ``derive_wing --check``'s output ``out``, as printed (strings): ``i_t`` [deg], ``chord`` [m],
+    ``attachment`` (x, y, z [m]), ``mass`` per component (kg, x, z), ``J`` (Jxx, Jyy, Jzz, Jxz), ``model`` (its
+    NAME=VALUE pairs), ``V_H``, ``V_V``, ``deps``, ``CL_max`` (value, alpha), ``CL_alpha``, ``Cm_alpha``, ``margin``
+    (c, m), ``CD0``, ``LD`` (value, alpha), ``deriv`` (name -> values at 0/7/14/30/90 deg), ``free_trim``, ``kite``
+    ("V6.0" -> alpha, force, lift, angle), ``elevator`` ("a7.0" -> d_e), ``de_trim`` ("de-15.0" -> alphas),
+    ``tether`` ("e30" -> alpha, d_e), ``pitch`` ("v0 ascending" -> elevator, alpha, C_L, k, h_P, omega, zeta)."""
     found = {"i_t": _one(rf"^tail rigging incidence .*: ({NUM}) deg", out)[0],
              "J": _one(rf"Jxx=({NUM}) Jyy=({NUM}) Jzz=({NUM}) Jxz=({NUM})", out),
              "model": dict(re.findall(rf"([\w()+/]+)=({NUM})", _one(r"^(CLa_w=.*)$", out)[0])),
@@ -38,6 +37,8 @@ def parse_derive_wing(out: str) -> dict:
              "CD0": _one(rf"^CD at CL=0: ({NUM})", out)[0],
              "LD": _one(rf"\(L/D\)_max = ({NUM}) at alpha = ({NUM})", out),
              "free_trim": _numbers(_one(r"^free-flight trim .*alpha = \[(.*)\] deg", out)[0])[0]}
+    found["chord"], found["attachment"] = _one(rf"^chord ({NUM}) m, .*attachment \[(.*)\]", out)
+    found["attachment"] = _numbers(found["attachment"])
     found["V_H"], found["V_V"], found["deps"] = _one(rf"V_H .* = ({NUM}), V_V .* = ({NUM}); d eps/d alpha = ({NUM})",
                                                      out)
     found["CL_alpha"], found["Cm_alpha"], *margin = _one(rf"^aircraft CL_alpha = ({NUM}) /rad, Cm_alpha about CG = "
