@@ -29,6 +29,7 @@ from docsite.ledger_design import ROTOR_DESIGN
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
 from docsite.ledger_kinds import Covered, NotYet
 from docsite.ledger_mill import FEATURES, MOVING_CABLE
+from docsite.ledger_numerics import NUMERICS
 from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, PUMPING, QUASISTEADY, REELING, ROBERTS
 from docsite.ledger_pointmass import POINTMASS_MILL
 from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
@@ -59,7 +60,7 @@ LEDGER = {
     "mill_fast.md": MILL_FAST,
     "model.md": MODEL,
     "moving_cable.md": MOVING_CABLE,
-    "numerics.md": NotYet("stable steps, error tables and timings: not yet listed"),
+    "numerics.md": NUMERICS,
     "paper_lansdorp2008.md": LANSDORP,
     "paper_meijaard1999.md": MEIJAARD,
     "paper_podgaets2007.md": PODGAETS,

@@ -211,3 +211,15 @@ def test_the_wing_page_is_what_derive_wing_prints():
     bad = pages_differences(other)
     assert len(bad) == 3 and any("-0.652" in b and "-0.6100" in b for b in bad), bad  # Clp quoted twice
     assert any("1325" in b and "1330.2" in b for b in bad), bad
+
+
+def test_the_numerics_page_closed_forms():
+    """docs/numerics.md's RK4 limits against |R(z)| = 1 solved here (2 sqrt 2 = 2.83 on the imaginary axis, 2.785 on
+    the real axis, the textbook values), in the fast set; a real-axis limit of 2.51 (RK3's) is named."""
+    from docsite.numerics_figures import numerics_data
+
+    data = numerics_data()
+    assert (data["rk4_imag"], data["rk4_real"]) == (f"{8 ** 0.5:.2f}", "2.785")
+    assert pages_differences({"checked_pages": ["numerics.md"], "numerics_data": data}) == []
+    bad = pages_differences({"checked_pages": ["numerics.md"], "numerics_data": {**data, "rk4_real": "2.513"}})
+    assert len(bad) == 1 and "2.513" in bad[0] and "numerics.md" in bad[0], bad

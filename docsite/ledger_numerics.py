@@ -1,0 +1,83 @@
+"""The ledger entry (:mod:`docsite.page_ledger`) of docs/numerics.md: RK4's stability limits, the asymptotic error
+ratios and a residual's displacement worked in closed form (:mod:`docsite.numerics_figures`); the methods' published
+constants and the solver settings given; per-step costs dated timings; the measured accuracy, stability and
+reproducibility figures (from studies and tests that no page group re-runs) listed as not re-run."""
+
+from __future__ import annotations
+
+from docsite.ledger_kinds import Covered
+
+G = "{numerics_data[%s]}"
+NUMERICS = Covered(
+    groups=("numerics_data",),
+    checks=((r"\|h lambda\| <= ([\d.]+) on the imaginary axis", (G % "rk4_imag",)),
+            (r"with the limit ([\d.]+) on the real axis", (G % "rk4_real",)),
+            (r"approaching (\d) and (\d) from below", (G % "ratio_ros2", G % "ratio_ros34pw2")),
+            (r"1e-6 m/s\^2 at omega\^2 = 7e5 s\^-2 is ([\d.e-]+) m", (G % "node_offset",))),
+    given=(  # the equations and methods as published, the solvers' settings, counts of unknowns
+        "Eq. (25) of Meijaard", "6 velocity unknowns per wing", "3 per free cable node", "6 x 6 blocks",
+        "a precomputed 6 x 6 shape times m_e/3", "f(s) = s^3 - s0 s^2 - c", "c = EA eps_p/l0 >= 0",
+        "when c > 0 (f(0) = -c < 0", "The start value of eq. (21), max(s0, c^(1/3))", "inflection point s0/3",
+        "For s0 > 0", "-s0 c^(2/3)", "for s0 <= 0", "below 1e-13 of the iterate (60 steps at most;", "With c = 0",
+        "max(s0, 0)", "Dormand-Prince 5(4)", "step factor 0.9 err^(-1/5) clipped to [0.2, 5]", "sect. IV.7; Steihaug & "
+        "Wolfbrandt 1979)", "(Verwer, Spee, Blom & Hundsdorfer 1999, SIAM J. Sci. Comput. 20): 2 stages, order 2, "
+        "gamma = 1 + 1/sqrt 2,", "at gamma = 1/4, order 2 for any J, A-stable with R(z) = ((1 + z/4)/(1 - z/4))^2",
+        "(|R(iy)| = 1)", "(Rang & Angermann 2005, BIT 45): 4 stages, order 3,", "transformed form (7.4')",
+        "the small rotation 2 vec(conj(q) dq)", "(h gamma)^2 K", "1. the cable", "2. the bodies' own loads",
+        "the body's 6 velocities and 3 small rotations", "(9 extra evaluations per body and step)",
+        "(10 s, 0.1 rad direction step; position error against DP5(4) at 1e-10)", "h gamma lambda = 1",
+        "(l_p / 10 after a transfer)", "l0 = l_p / 10 + s", "at wing 0", "U_t,i = h gamma (1 + sum_j c_ij U_t,j / h)",
+        "(2 s, disturbed start)", "from 0.04 to 0.005 s", "omega_max of about 2 sqrt(k/m)", "-4 DA/(mu l^2)",
+        "falls like 1/n", "DP5(4) reference", "below 0.9 of it", "rerun at dt / 4, then dt / 16",
+        "0 or 1, C_N0 = C_T0 = 0", "3 unknowns per wing and 2 per node", "1. **Layout.**", "C_N0 sin^3 a_c + C_T0",
+        "L (1 + T/EA)", "w_perp^2 L^3 / (24 T^2)", "2. **Newton.**", "in-plane (2D) model", "the 2D equilibrium is the "
+        "3D one", "**Ground points 100 m apart,", "**Elevators -4 deg rising", "and +1 deg falling",
+        "the float32 ulp", "three times the floor", "(issue 13:", "at n = 4 and 8, at n = 2)", "1e-6 m/s^2, the RMS",
+        "at n <= 8:", "(8 -> 4 -> 2 -> 1,", "the start tension (2 unknowns)", "absolute steps of 1e-7 m (rad)",
+        "up to 10 damped Newton steps", "(1.5e-8 |z|,", "below 1e-4 m/s^2, unbalanced forces below 1e-8",
+        "at n = 2, 4, 8", "from n = 1 to 16", "and RK4 / ROS34PW2 runs from the states stay below 1e-3 m/s",
+        "(C_L_alphadot, C_m_alphadot; Meijaard et al. 1999, eq. 6)", "(sideslip near 90 deg)", "The 101-wing mill",
+        "RK4 at the scene's 10 ms step", "acceleration above 1e4", "D_c^-1 b_c; Y_c = D_c^-1 U_c",
+        "J = [[0, A], [M^-1 K P, M^-1 C]]", "(|h lambda| >> 1)", "below 1/|lambda|", "With n > 1", "with 1 / V_xz",
+        "(DP5(4) and ROS34PW2)", "reaches 3.5 km"),
+    timings=(  # one thread, medians on the shared 2-core machine (the page gives no date: measured when written)
+        "On the mill a ROS34PW2 step went from 432 to 399 us; the rest of it is the three stage right-hand sides (50 us"
+        " each,", "(85 us) and the cable's (15 us)", "assembly 31 us, full right-hand side 53 us, cable Jacobian "
+        "15 us, "
+        "body Jacobian 86 us, one elimination 23 us; a step about 1.4 RK4 steps, a step about 2.4",
+        "about 30 % *slower* than the full model on the chain (right-hand side 63.4 against 49.9 us,",
+        "made every variant about 45 us", "full 49.4 us, cable aerodynamics off 46.7 us, sag off 44.0 us, both off "
+        "39.7 "
+        "us", "savings 7 %, 12 %, 16 % on the chain; 7 %, 14 %, 22 % on the tethered wing",
+        "chain RK4 step 297-305 us against 304-332 us with it, tethered wing 6.45-6.64 us against 6.15-6.41 us (three "
+        "interleaved process pairs", "Cost: 0.2 s at any n <= 16; 1.5, 13 and 85 s at n = 2, 4, 8 (dense "
+        "difference Jacobians of 507, 915 and 1731 "
+        "unknowns)"),
+    derived=(  # worked by hand from the page's own inputs
+        "omega^2 ~ 1e6 s^-2, a wing's pendulum g / L ~ 0.1 s^-2", "outweigh the wing rows 1e7 to one",
+        "some 200 ulps of a 50 m coordinate", "(ratio 4: O(1/n^2);", "as h^0.4 under", "n^-1.4"),
+    not_rerun=(  # measured by the studies and tests the page names (tests/test_*.py, work_precision, the stress suite)
+        "(about -5 +- 119i 1/s on", "unstable at 0.05 s on the chain", "with it, at 0.2 s.", "(3.6x softer",
+        "error at 0.05 s halves (0.028 against 0.058 m), but its largest stable step falls from 0.2 to 0.1 s (the apex "
+        "wings diverge at 7.8 s)", "broke the mill down at 0.2 s", "to 2.4e-5", "ROS34PW2 at 0.2 s 5.9x RK4 on the mill"
+        " over 5 s", "ros2 2.9, 3.1, 3.4 and ros34pw2 6.1, 6.8, 7.3", "-24 1/s, a 0.11 s limit,", "-122 1/s, 0.023 s, "
+        "after a 5x wind step), and RK4 past it grows the state about 30-fold per step",
+        "(the golden runs against 16b454f: 9.8e-11 on the chain, 2.1e-12 on the wing,",
+        "(the rising leg, stretched by 160 kN against the falling leg's 40 kN, is 20 m longer)",
+        "(alpha about 13.7 deg)", "(alpha about 5.4 deg).** At +2 deg (alpha about 2.9 deg)", "within 15 s (the same "
+        "growth at dt = 0.01, 0.005 and 0.0025 s,", "to 1e-10 and the in-plane 3D run still equals the 2D run to 1e-9",
+        "from the 8th control step on", "(from step 16)", "16b454f's by up to 1.1e-10 relative over 0.5 s (the "
+        "in-plane "
+        "chain's equilibrium by 8.5e-13 at the start,", "(chains 0.9-1.2e-10, single wing and rotorcraft 1.2-2.3e-12;",
+        "to 1e-12 normwise relative (measured at most 4.6e-14)", "(half of each neighbouring element, 2.5 kg at "
+        "12.5 m) "
+        "against an element stiffness EA / l0 of 1.7e6 N/m", "at n = 8 (RMS 0.105 m/s^2), and the trim stalls at n = 4 "
+        "and 8 with the angle of attack off by 0.008 rad", "at n = 4 the measure's own round-off", "is 2.5e-7 m/s^2",
+        "(100-230 N against 160 kN at the ground)", "(apex wing 115 N and 580 N m out of balance at n = 8; Newton "
+        "stalls "
+        "at 0.13 m/s^2)", "(1.5e-8 |z|, 0.05 mm)", "stop at 1e-5 m/s^2", "by a factor 2", "4.7e-8 m/s^2",
+        "within 3.6e-4, 8.6e-5, 2.1e-5 m", "(slope -2.0), H and V at the station within 4e-3 / n^2",
+        "moves by 1.10, 0.17, 0.041, 0.010 m", "lies 1.35 m from the limit", "at t = 0.3836 s (wing 46 at -74 deg "
+        "sideslip)", "-4.5e6 rad/s^2 at the last accepted state and 3.9e9 with the other sign 1e-4 s later",
+        "removed, -129 rad/s^2"),
+)
