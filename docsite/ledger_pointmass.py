@@ -1,9 +1,10 @@
-"""The ledger entry (:mod:`docsite.page_ledger`) of docs/pointmass_mill.md: the rigid run and the point-mass mill's
-periodic searches against ``pointmass_mill`` (:func:`docsite.mill_figures.pointmass_mill`)."""
+"""The ledger entries (:mod:`docsite.page_ledger`) of docs/pointmass_mill.md (the rigid run and the point-mass mill's
+periodic searches against ``pointmass_mill``, :func:`docsite.mill_figures.pointmass_mill`) and docs/pointmass.md (its
+closed forms against :mod:`docsite.pointmass_figures`)."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, NotYet
 
 PM = "{pointmass_mill[%s]}"
 RIGID = tuple(PM % f"rigid][{k}" for k in ("power_kW", "first_kN", "last_kN", "min_kN", "min_element", "t"))
@@ -100,4 +101,29 @@ POINTMASS_MILL = Covered(
         "broke down (speed limit) 35 s after its start",
         "(measured -240 kW at t = 60 s, 30 s after the ramp, at 70 m elements)",
     ),
+)
+
+
+PMD = "{pointmass_data[%s]}"  # docs/pointmass.md's closed forms
+POINTMASS = NotYet(
+    "its closed forms are checked (docsite/pointmass_figures.py: the stable steps, memory, checkpoint spacing, the "
+    "partition model, the kites' trim from the shipped files); the benchmark, scaling, fidelity and env tables "
+    "(timings and study figures) not yet listed",
+    groups=("pointmass_data",),
+    checks=((r"For the 2\.5 cm Dyneema \(EA ([\d.e]+) N, DA ([\d.e]+) N s, mu ([\d.]+) kg/m\) at 1 cm the first is "
+             r"([\d.e-]+) s and the second \*\*([\d.e-]+) s\*\*",
+             tuple("~" + PMD % k for k in ("EA", "DA")) + (PMD % "mu",)
+             + tuple("~" + PMD % k for k in ("wave_dt_1cm", "damp_dt_1cm"))),
+            (r"48 bytes per node, (\d+) MB for 500,000 nodes", (PMD % "state_MB",)),
+            (r"one float64 tension per element \((\d+) MB\) and one kite-flag byte per node \(([\d.]+) MB\)",
+             (PMD % "tension_MB", PMD % "flag_MB")),
+            (r"every min\(1024, sqrt\(n\)\) nodes \((\d+) at 500k\)", (PMD % "seg",)),
+            (r"seg = min\(1024, sqrt\(n\)\) \((\d+) at 500,000 nodes\)", (PMD % "seg",)),
+            (r"\(3P \+ 4\)/5 times faster than the one-sided one on one core: ([\d.]+) for P = 2 \(as the two-sided\), "
+             r"([\d.]+) for 4, ([\d.]+) for 8, ([\d.]+) for 16", tuple(f"{{pointmass_data[speedup][{i}]}}"
+                                                                     for i in range(4))),
+            (r"the base tension is 195 kN \((\d+) % of the breaking load\)", (PMD % "base_share_pct",)),
+            (r"Every kite is pitched to 6 deg \(C_L ([\d.]+), C_L/C_D ([\d.]+)\)", (PMD % "cl6", PMD % "ld6")),
+            (r"the kite moves ([\d.]+) m sideways, the wind's turn of its 14\.3 m", (PMD % "sideways_m",)),
+            (r"l0 / c = ([\d.]+) ms", (PMD % "wave_dt_70m_ms",))),
 )

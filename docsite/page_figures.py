@@ -16,8 +16,8 @@ Each group's cost, measured on the shared 2-core machine at a load of 6-8 (numba
 34 s, ``tether_convergence`` 2-5 min (:mod:`docsite.pumping_figures`), ``insertion_study`` 8 s,
 ``mill_periodic_2d`` 104-277 s, ``mill_lqr_check`` 216-274 s, ``pointmass_mill`` 173 s at a load of 3 (over 25
 minutes at 13; :mod:`docsite.mill_figures`), ``gain_locality`` 780 s at a load of 13, ``rotor_chart`` 23 s,
-``design_data``, ``wind_data`` and ``numerics_data`` 0 s, ``derive_wing`` 4 s: every page about 70 minutes at a
-load of 13 (about 40 on a quieter machine).
+``design_data``, ``wind_data``, ``numerics_data``, ``pointmass_data`` 0 s, ``derive_wing`` 4 s: every page about
+70 minutes at a load of 13 (about 40 on a quieter machine).
 """
 
 from __future__ import annotations
@@ -37,6 +37,7 @@ from docsite.numerics_figures import numerics_data
 from docsite.page_ledger import LEDGER, Covered
 from docsite.page_numbers import prose, unaccounted
 from docsite.paper_figures import run_command
+from docsite.pointmass_figures import pointmass_data
 from docsite.pumping_figures import PUMPING_GROUPS
 from docsite.rotor_chart_figures import rotor_chart
 from docsite.rotor_figures import parse_rotor_design
@@ -247,7 +248,8 @@ GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lat
           "fast_mill_v2": fast_mill_v2, "tethered_wing_lqr": tethered_wing_lqr,
           "meijaard_v1": meijaard_v1, "cable_dyneema": cable_dyneema, "craft_data": craft_data,
           "design_data": design_data, "wind_data": wind_data, "numerics_data": numerics_data,
-          "gain_locality": gain_locality, "rotor_chart": rotor_chart, "derive_wing": derive_wing,
+          "pointmass_data": pointmass_data, "gain_locality": gain_locality, "rotor_chart": rotor_chart,
+          "derive_wing": derive_wing,
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"]),

@@ -31,7 +31,7 @@ from docsite.ledger_kinds import Covered, NotYet
 from docsite.ledger_mill import FEATURES, MOVING_CABLE
 from docsite.ledger_numerics import NUMERICS
 from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, PUMPING, QUASISTEADY, REELING, ROBERTS
-from docsite.ledger_pointmass import POINTMASS_MILL
+from docsite.ledger_pointmass import POINTMASS, POINTMASS_MILL
 from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
 from docsite.ledger_wind import WIND
 from docsite.ledger_wing import WING_DATA
@@ -64,7 +64,7 @@ LEDGER = {
     "paper_lansdorp2008.md": LANSDORP,
     "paper_meijaard1999.md": MEIJAARD,
     "paper_podgaets2007.md": PODGAETS,
-    "pointmass.md": NotYet("pointmass_benchmark / pointmass_fidelity tables (timings and figures) not yet listed"),
+    "pointmass.md": POINTMASS,
     "pointmass_mill.md": POINTMASS_MILL,
     "power_curve.md": NotYet("checked by its own replay test (tests/test_power_curve*: the printed replay against the"
                              " page); the prose figures not yet listed"),

@@ -223,3 +223,18 @@ def test_the_numerics_page_closed_forms():
     assert pages_differences({"checked_pages": ["numerics.md"], "numerics_data": data}) == []
     bad = pages_differences({"checked_pages": ["numerics.md"], "numerics_data": {**data, "rk4_real": "2.513"}})
     assert len(bad) == 1 and "2.513" in bad[0] and "numerics.md" in bad[0], bad
+
+
+def test_the_pointmass_page_closed_forms_are_its_cable_file_and_table():
+    """docs/pointmass.md's explicit stable steps from configs/cables/dyneema_25mm.yaml (l0 sqrt(mu/EA) = 1.18e-6 s and
+    mu l0^2/(2 DA) = 6.94e-10 s at 1 cm, worked by hand), the partition model (3P + 4)/5 and the 6 deg trim from the
+    shipped table, in the fast set; a cable with another DA is named."""
+    from docsite.pointmass_figures import pointmass_data
+
+    data = pointmass_data()
+    assert (data["wave_dt_1cm"], data["damp_dt_1cm"], data["speedup"]) == ("1.2e-06", "6.9e-10",
+                                                                         ["2", "3.2", "5.6", "10.4"])
+    assert pages_differences({"checked_pages": ["pointmass.md"], "pointmass_data": data}) == []
+    bad = pages_differences({"checked_pages": ["pointmass.md"],
+                             "pointmass_data": {**data, "DA": "4.32e+04", "damp_dt_1cm": "3.5e-10"}})
+    assert len(bad) == 1 and "3.5e-10" in bad[0] and "pointmass.md" in bad[0], bad
