@@ -4,7 +4,7 @@ closed forms against :mod:`docsite.pointmass_figures`)."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered, NotYet
+from docsite.ledger_kinds import Covered
 
 PM = "{pointmass_mill[%s]}"
 RIGID = tuple(PM % f"rigid][{k}" for k in ("power_kW", "first_kN", "last_kN", "min_kN", "min_element", "t"))
@@ -104,11 +104,90 @@ POINTMASS_MILL = Covered(
 )
 
 
+#: docs/pointmass.md: the paper's equations and data, the scene's settings, the method's constants, counts
+PM_GIVEN = (
+    "(Podgaets & Ockels 2007)", "(paper eqs. 2-19)", "This is eq. (14)-(15)", "eqs. (7)-(9) as printed",
+    "as in eq. (14)", "on its 2 deg grid", "(eqs. 20-22)", "Meijaard et al. eqs. (23)-(24)", "at 1 cm the string",
+    "element e joins node e - 1 to node e; node -1", "6 float64)", "the paper's eq. (22)", "a 3x3 inverse pivot",
+    "(about 6 (n/1024 + 1024) numbers,", "(the chain's omega_max = 2c/l0)", "-4 DA/(mu l0^2)", "the cable's 1 ms "
+    "retardation time", "the benchmark uses 0.9 of it", "(M + dt C + dt^2 K) v+", "a = dt DA/l0 + dt^2 EA/l0 - b, b = "
+    "dt^2 T/l", "(Baraff & Witkin 1998)", "at dt = 0.01 s on 1 cm elements", "at 1 cm; they are implicit",
+    "tension is 0,", "P - 1 single separator", "W_j = S_j q_{j-1} W_{j-1}", "3x3 blocks, size P - 1", "P = 2 is the "
+    "two-sided", "the chunks of P = 4 at 100,000 and 500,000 nodes", "The work on one thread against P = 2 (500,000 "
+    "nodes, minimum of 12)", "one chunk per 4096 nodes", "at least 2", "both sides of P = 2", "Checkpoints (n / seg + "
+    "P + 1) x 15 numbers, one segment buffer per chunk P x seg x 9 and the chunks' data P x 48", "in this one on 2",
+    "between P = 1 and P = 2, 8 or 16", "P = 2, the two-sided elimination, differs from the one-sided P = 1",
+    "1e-12 relative is therefore", "chunks of 2048 nodes", "100 kites on 5 km of cable at 1 cm (500,000 elements, "
+    "500,000 free nodes), one every 50 m,", "a station 50 m high", "(54 kg, 54 m^2,", "the laddermill's 2.5 cm",
+    "The paper gives 5 km, 1 cm and 100 kites", "the 50 m spacing", "holds 100 kites on 5 km", "the base tension is "
+    "195 kN", "the top kite 5060 m high", "The paper's 82 MB", "the paper's whole program: 82 MB", "budget 40 MB",
+    "at 1 m elements (7 m gives", "(-4 deg ascending, +1 deg descending)", "1.5 m from the CG and the aerodynamic "
+    "centre 0.75 m ahead", "(1 m elements,", "turned by 0.01 rad", "ramped over 1 s", "checkpoint segments of 1, 3 "
+    "and 1024 nodes", "omega = 2 sqrt(k/m) sin(kappa l0 / 2) (modes 1 and 17 of 20,", "1/sqrt(1 + (w dt)^2)",
+    "at one 70 m element per piece, implicit step 25 ms", "Open loop over 120 s", "over 2400 steps", "(at 70 m "
+    "elements:", "40 control periods (2 s)", "(35 s) from the start", "after 12 periods", "(102.6 kW at 70 m elements)",
+    "on a zigzag 1 cm string with 3 g nodes", "3x3 pivots", "(PointMassChain-v0", "at 1 m elements)", "about 20 "
+    "1/s", "rerun the "
+    "benchmark",
+    "the 24 MB state once", "L = 1/2 rho S C_L(alpha) |V| (d x V), D = -1/2 rho S C_D(alpha)",
+    "(clipped at 0)", "and DP5(4) seven", "dt < mu l0^2/(2 DA)", "at dt omega >> 1",
+    "then the chunks of P = 4", "one step of (500,000 nodes)", "On a zigzag 1 cm Dyneema string with 3 g nodes",
+    "S - S D'^{-1} S", "both are P = 2,", "runs 20 implicit steps", "must be 0 and", "numba 0.68,", "a 16-core "
+    "Intel Xeon")
+#: worked by hand from the page's inputs: 4 x 24 MB; 24 + 4 + 24 MB; sqrt(195 kN / 0.3 kg/m); 1 cm / 800 m/s
+PM_DERIVED = ("RK4 would hold four stage vectors (96 MB)", "another 24 MB: 52 MB in all", "about 800 m/s",
+              "would bind dt near 1e-5 s")
+#: medians and minima of the page's benchmark runs, each with its machine and load on the page
+PM_TIMINGS = (
+    "| 10,000 | implicit | 1 | 0.01 | 1.64 | 164 | 6.1 | | 100,000 | implicit | 1 | 0.01 | 14.2 | 142 | 0.70 | | "
+    "500,000 | implicit | 1 | 0.01 | 55.6 | 111 | **0.18** | | 500,000 | implicit | 2 | 0.01 | 75.3 | 151 | 0.13 | | "
+    "10,000 | explicit | 1 | 1.56e-6 | 0.95 | 95 | 1.6e-3 | | 100,000 | explicit | 1 | 1.56e-8 | 5.8 | 58 | 2.7e-6 | | "
+    "500,000 | explicit | 1 | 6.25e-10 | 35.5 | 71 | 1.8e-8 | | 500,000 | explicit | 2 | 6.25e-10 | 45.7 | 91 | "
+    "1.4e-8 |",
+    "(2 cores shared by four engineers, load average 4-5 during the run: timings are medians of 5 repeats,",
+    "over 10k / 100k / 500k: max/min 1.47 (implicit) and 1.64 (explicit) in that loaded run; 1.14 and 1.09 in a "
+    "quieter quick run", "On the idle 16-core machine", "one thread 229 / 219 / 248 ns per element (implicit, max/min "
+    "1.13) and 137 / 143 / 134 (explicit, 1.07); 16 threads 88 / 65 / 73 (implicit, 1.37) and 34 / 11 / 15 (explicit, "
+    "2.96: at 10,000 elements a step of 0.3 ms", "Implicit at 500,000 elements on 16 threads: 0.275x real time",
+    "(about 20 ms per step at 10,000 elements, where one thread needs 1-2 ms)", "500,000 elements):",
+    "| 1 | 124.4 | 1.00 | 0.080 | 73.1 | 1.00 | | 2 | 66.2 | 1.88 | 0.151 | 38.2 | 1.92 | | 4 | 47.4 | 2.63 | 0.211 | "
+    "18.8 | 3.89 | | 8 | 38.4 | 3.24 | 0.260 | 10.7 | 6.85 | | 16 | 37.9 | 3.28 | 0.264 | 5.2 | 14.12 |",
+    "1.38x on 2 threads and 2.08x on 16", "Peak resident memory of the scene's process there: 219 MB",
+    "(elimination 68 ms and the rest 65 ms on one thread), the model of \"Methods\" expects about 20 ms on 8 threads "
+    "and 11 ms on 16 (0.9x real time), against 38 ms", "(2 cores shared by three engineers, load average 2-5; minimum "
+    "of 15 single steps", "| 100,000 | 1 | 10.17 / 10.36 | 10.50 / 10.41 | 5.28 / 5.43 | 5.50 / 5.47 | | 100,000 | 2 "
+    "| 9.31 / 13.11 | 13.45 / 13.23 | 2.71 / 2.74 | 2.78 / 2.79 | | 500,000 | 1 | 55.73 / 55.61 | 57.10 / 56.57 | "
+    "31.32 "
+    "/ 27.49 | 27.58 / 27.68 | | 500,000 | 2 | 74.49 / 82.42 | 83.20 / 88.77 | 37.67 / 39.83 | 38.17 / 44.06 |",
+    "moved by up to 50 % between runs", "gave 12.4-14.4 ms at 100,000 and 71-76 ms at 500,000 on one thread",
+    "216 MB with numba's on-disk cache warm (repeated runs 216-256 MB), 414 MB and 524 MB", "About 143 MB of it",
+    "An end chunk costs 54 ns per node", "a middle one 90 ns", "take 1.70 and 1.72 ms at 100,000 nodes",
+    "1.16x for P = 3, 1.26x for 4, 1.59x for 8, 1.70x for 16", "24 to 57 s on the shared two-core machine",
+    "take 0.02 s", "which costs about three minutes", "takes about 3 min", "so end chunks are 5/3 the size")
+#: figures of the studies and tests the page names (pointmass_fidelity, tests/test_pointmass_*.py), no group re-runs
+PM_NOT_RERUN = (
+    "state 24.00 MB, workspace 4.19 MB, parameters 0.50 MB, **28.69 MB** in all on 2 threads (29.41 MB with room "
+    "for 16 "
+    "chunks;", "holds 28.69 MB on 2 threads, 29.41 MB with a workspace for 16 chunks, 35.17 MB for 128",
+    "(speeds over 1000 m/s within seconds at 256 elements)", "by 2.5e-11 of the largest velocity (0.087 m/s) and 9e-13 "
+    "m in position; 50 steps at 1,000 nodes by up to 3.1e-11 of the largest velocity and 4.5e-13 m", "to 3.4e-15",
+    "(condition number 3.3e5)", "backward error of 3e-12 to 5.5e-12, against solve_banded's 7e-17", "agree to 1.5e-7",
+    "at 20,000 nodes (5 steps, 1 and 2 threads) and within 2.8e-17 m/s in 36 of 1,000 nodes",
+    "over 0.2 s from the quasi-static start (10,000 elements, explicit dt 1.56e-6 s, the kites move up to 3 cm): "
+    "largest kite-position difference 3.0e-3 m at dt = 0.01 s, 3.2e-4 m at 1e-3 s, 3.3e-5 m at 1e-4 s",
+    "within 0.1 kN", "first piece 161.0 kN (rigid) vs 178.9 kN (point mass, +11 %); last piece 71.8 vs 67.3 kN (-6 %)",
+    "-9.6 % and +4.4 % of the wing's C_L", "within 0.9 % (first piece) and 0.01 % (last)", "up to 44 m (70 m with "
+    "matched lift) on a 3.6 km high loop", "falls to 0.1-0.2 kN", "within about 10 s and stays (node speeds 1e-10 m/s "
+    "after 120 s)", "doubles every 6.2 s", "(H = 651.998593 N) with the oracle's -1.4e-3 and -8.9e-5 relative "
+    "errors at "
+    "16 and 64 elements (second order) and to 1e-6 at 1 cm (11,000 elements)", "settled 600 s from the rigid "
+    "equilibrium, base tension 178.7 kN against 178.9 kN", "return 1456", "up to 6.9 m sideways", "t0 = 1135 s",
+    "102.6 kW (the converged point-mass motion gives 82.4 kW", "converged motion's 82.4 kW",
+    "its backward error is 5e-12 against LAPACK's 7e-17")
+
+
 PMD = "{pointmass_data[%s]}"  # docs/pointmass.md's closed forms
-POINTMASS = NotYet(
-    "its closed forms are checked (docsite/pointmass_figures.py: the stable steps, memory, checkpoint spacing, the "
-    "partition model, the kites' trim from the shipped files); the benchmark, scaling, fidelity and env tables "
-    "(timings and study figures) not yet listed",
+POINTMASS = Covered(
     groups=("pointmass_data",),
     checks=((r"For the 2\.5 cm Dyneema \(EA ([\d.e]+) N, DA ([\d.e]+) N s, mu ([\d.]+) kg/m\) at 1 cm the first is "
              r"([\d.e-]+) s and the second \*\*([\d.e-]+) s\*\*",
@@ -126,4 +205,5 @@ POINTMASS = NotYet(
             (r"Every kite is pitched to 6 deg \(C_L ([\d.]+), C_L/C_D ([\d.]+)\)", (PMD % "cl6", PMD % "ld6")),
             (r"the kite moves ([\d.]+) m sideways, the wind's turn of its 14\.3 m", (PMD % "sideways_m",)),
             (r"l0 / c = ([\d.]+) ms", (PMD % "wave_dt_70m_ms",))),
+    given=PM_GIVEN, timings=PM_TIMINGS, derived=PM_DERIVED, not_rerun=PM_NOT_RERUN,
 )
