@@ -8,7 +8,7 @@ import re
 import subprocess
 import sys
 
-from docsite.paper_figures import ROOT, run_command
+from docsite.paper_figures import ROOT, printed_match, run_command
 
 STUDY = "laddermill_gym.studies."
 INSERTION = re.compile(r"^insertion (\w+): dv = ([\d.e-]+) m/s on l1 = ([\d.]+) m; element 0 tension ([\d.]+) kN "
@@ -22,10 +22,7 @@ PERIODIC = ("from laddermill_gym import load_scene; from laddermill_gym.ladder.p
 
 
 def _need(pattern: str, text: str, argv: list[str]) -> re.Match:
-    m = re.search(pattern, text, re.M)
-    if m is None:
-        raise RuntimeError(f"python {' '.join(argv)} printed nothing matching {pattern!r}:\n{text[-2000:]}")
-    return m
+    return printed_match(pattern, text, f"python {' '.join(argv)}")
 
 
 def insertion_study() -> dict:

@@ -36,7 +36,7 @@ from docsite.mill_figures import MILL_GROUPS
 from docsite.numerics_figures import numerics_data
 from docsite.page_ledger import LEDGER, Covered
 from docsite.page_numbers import prose, unaccounted
-from docsite.paper_figures import run_command
+from docsite.paper_figures import printed_match, run_command
 from docsite.pointmass_figures import pointmass_data
 from docsite.pumping_figures import PUMPING_GROUPS
 from docsite.rotor_chart_figures import rotor_chart
@@ -50,10 +50,7 @@ STUDY = "laddermill_gym.studies."
 
 
 def _search(pattern: str, text: str, argv: list[str]) -> re.Match:
-    m = re.search(pattern, text, re.M)
-    if m is None:
-        raise RuntimeError(f"python -m {' '.join(argv)} printed nothing matching {pattern!r}:\n{text[-2000:]}")
-    return m
+    return printed_match(pattern, text, f"python -m {' '.join(argv)}")
 
 
 def rotor_design() -> dict:

@@ -42,6 +42,15 @@ PUMPING_WINDS = ("10", "12", "14", "16", "18", "20")  # [m/s] README's "at 10-20
 TETHER_LENGTHS = ("40", "30")  # [m] element lengths: README quotes 40 m and its distance from 30 m
 
 
+def printed_match(pattern: str, text: str, command: str) -> re.Match:
+    """The first match of ``pattern`` (multi-line) in ``text``, what ``command`` printed; RuntimeError naming the
+    command, the pattern and the output's end when nothing matches (the page groups' parsers share it)."""
+    m = re.search(pattern, text, re.M)
+    if m is None:
+        raise RuntimeError(f"{command} printed nothing matching {pattern!r}:\n{text[-2000:]}")
+    return m
+
+
 def run_command(argv: list[str], timeout_s: float, threads: int | None = None) -> str:
     """``python -m ARGV`` in a fresh process from the repository root; its stdout, or RuntimeError naming it."""
     env = dict(os.environ, **({"NUMBA_NUM_THREADS": str(threads)} if threads else {}))

@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 import tempfile
 
-from docsite.paper_figures import run_command
+from docsite.paper_figures import printed_match, run_command
 
 #: pumping_cycle's printed columns, in order: cycle, its time [s], simulated power, Schmehl matched [W], its tension
 #: [N], Lansdorp eqs. 1-14, Schmehl, eq. 9's static kite, eqs. 10-14 fed the simulation [W], reel-out tension [N], speed
@@ -19,10 +19,7 @@ TABLE2_ROWS = {"Kite altitude": "altitude", "Cable angle": "angle", "Cable diame
 
 
 def _need(pattern: str, text: str, argv: list[str]) -> re.Match:
-    m = re.search(pattern, text, re.M)
-    if m is None:
-        raise RuntimeError(f"python -m {' '.join(argv)} printed nothing matching {pattern!r}:\n{text[-2000:]}")
-    return m
+    return printed_match(pattern, text, f"python -m {' '.join(argv)}")
 
 
 def site_tables() -> dict:
