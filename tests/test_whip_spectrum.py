@@ -4,6 +4,7 @@ Oracle: a system whose eigenvectors and modal error coordinates are chosen, so t
 closed form (V[:, group] c[group]); the methods' stability functions are checked in tests/test_rosenbrock.py."""
 
 import numpy as np
+import pytest
 
 from laddermill_gym.studies.numerics import whip_spectrum as ws
 
@@ -38,3 +39,12 @@ def test_command_prints_the_spectrum_and_the_parts(capsys):
     out = capsys.readouterr().out
     assert "tethered_wing t = 1.0 s: 19 eigenvalues" in out
     assert "ros34pw2 at 0.05 s: largest lateral error" in out and "rk4 at 0.005 s" in out
+
+
+@pytest.mark.parametrize("spec", ["rk4", "rk4:-1", "rk4:x", ":0.1"])
+def test_a_bad_methods_entry_is_named(spec, capsys):
+    from laddermill_gym.studies.numerics.whip_spectrum import main
+
+    with pytest.raises(SystemExit):
+        main(["ladder_chain", "--methods", spec])
+    assert f"--methods {spec!r}: expected METHOD:STEP" in capsys.readouterr().err

@@ -126,12 +126,27 @@ def error_parts(lam: np.ndarray, V: np.ndarray, e: np.ndarray, lat: np.ndarray, 
             "damped": float(np.abs(part[lat]).max(initial=0.0)), "slow": float(np.abs(part_slow[lat]).max(initial=0.0))}
 
 
+def method_spec(text: str) -> str:
+    """An argparse type for ``--methods``: ``METHOD:STEP`` with a step in seconds; the method's name is checked by
+    the integrator's settings when it runs."""
+    method, sep, dt = text.partition(":")
+    try:
+        ok = bool(sep and method) and float(dt) > 0.0
+    except ValueError:
+        ok = False
+    if not ok:
+        raise argparse.ArgumentTypeError(f"--methods {text!r}: expected METHOD:STEP with STEP > 0 in seconds, "
+                                         "e.g. ros34pw2:0.0667")
+    return text
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(prog="whip_spectrum", description=__doc__.split("\n\n")[0])
     p.add_argument("scene")
     p.add_argument("--time", type=float, default=10.0, help="the forcing's run length T [s] (step at 0.3037 T)")
     p.add_argument("--at", type=float, nargs="+", default=[6.0, 8.0], help="times of the linearisation [s]")
-    p.add_argument("--methods", nargs="+", default=["ros34pw2:0.0666666666666667", "rk4:0.0222222222222222"])
+    p.add_argument("--methods", nargs="+", type=method_spec,
+                   default=["ros34pw2:0.0666666666666667", "rk4:0.0222222222222222"])
     p.add_argument("--dt-ref", type=float, default=0.002, help="reference RK4 step [s]")
     p.add_argument("--top", type=int, default=8, help="modes listed per run")
     a = p.parse_args(argv)
