@@ -38,6 +38,7 @@ from docsite.page_ledger import LEDGER, Covered
 from docsite.page_numbers import prose, unaccounted
 from docsite.paper_figures import printed_match, run_command
 from docsite.pointmass_figures import pointmass_data
+from docsite.precision_figures import PRECISION_GROUPS
 from docsite.pumping_figures import PUMPING_GROUPS
 from docsite.rotor_chart_figures import rotor_chart
 from docsite.rotor_figures import parse_rotor_design
@@ -250,7 +251,7 @@ GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lat
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"]),
-          **PUMPING_GROUPS, **MILL_GROUPS}
+          **PUMPING_GROUPS, **MILL_GROUPS, **PRECISION_GROUPS}
 
 
 def measure_pages(pages: list[str] | None = None, have: dict | None = None, more: dict | None = None) -> dict:

@@ -23,6 +23,7 @@ A covered page's entries:
 
 from __future__ import annotations
 
+from docsite.ledger_benchmarks import BENCHMARKS
 from docsite.ledger_craft import ROTOR, ROTORCRAFT
 from docsite.ledger_data import CABLE_DATA
 from docsite.ledger_design import ROTOR_DESIGN
@@ -32,6 +33,7 @@ from docsite.ledger_mill import FEATURES, MOVING_CABLE
 from docsite.ledger_numerics import NUMERICS
 from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, PUMPING, QUASISTEADY, REELING, ROBERTS
 from docsite.ledger_pointmass import POINTMASS, POINTMASS_MILL
+from docsite.ledger_precision import WORK_PRECISION
 from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
 from docsite.ledger_wind import WIND
 from docsite.ledger_wing import WING_DATA
@@ -48,8 +50,7 @@ LEDGER = {
     "layout.md": Covered(given=("eq. (6)",)),
     "paper_roberts.md": ROBERTS,
     "usage.md": Covered(given=("a pole at 0 for",)),
-    "benchmarks.md": NotYet("machine timings almost throughout (env steps/s, real-time factors, cold and warm starts;"
-                            " each dated with machine and load): to be listed as timings"),
+    "benchmarks.md": BENCHMARKS,
     "cable_data.md": CABLE_DATA,
     "controllers.md": NotYet("README's TetheredWing-v0 rows are checked by readme_figures; the other tables "
                              "(LadderMill-v0 with a PPO run not shipped, the chain, the rotorcraft, the wing's PPO "
@@ -78,5 +79,5 @@ LEDGER = {
     "scale_out.md": SCALE_OUT,
     "wind.md": WIND,
     "wing_data.md": WING_DATA,
-    "work_precision.md": NotYet("work-precision tables (about 15 minutes, one thread each) and timings"),
+    "work_precision.md": WORK_PRECISION,
 }

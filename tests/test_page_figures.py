@@ -238,3 +238,30 @@ def test_the_pointmass_page_closed_forms_are_its_cable_file_and_table():
     bad = pages_differences({"checked_pages": ["pointmass.md"],
                              "pointmass_data": {**data, "DA": "4.32e+04", "damp_dt_1cm": "3.5e-10"}})
     assert len(bad) == 1 and "3.5e-10" in bad[0] and "pointmass.md" in bad[0], bad
+
+
+def test_the_work_precision_page_stability_limits_are_the_tableaux():
+    """docs/work_precision.md's RK4 and DP5(4) limits against |R(z)| = 1 of the stability polynomials built here from
+    the published tableaux (RK4: 2.785 real, 2 sqrt 2 = 2.828 imaginary, the textbook values; DP5(4) 3.307 real,
+    0.997 imaginary, Hairer & Wanner's Fig. IV.2.1), in the fast set; RK3's 2.513 on the real axis is named."""
+    from docsite.precision_figures import precision_data
+
+    data = precision_data()
+    assert (data["rk4_real"], data["rk4_imag"]) == ("2.785", f"{8 ** 0.5:.3f}")
+    stable = {"stable_steps": {}}  # the table's rows need the command: only the closed-form check here
+    bad = pages_differences({"checked_pages": ["work_precision.md"], "precision_data": data, **stable})
+    assert [b for b in bad if "its command printed no" not in b] == [], bad
+    other = pages_differences({"checked_pages": ["work_precision.md"], "precision_data": {**data, "rk4_real": "2.513"},
+                               **stable})
+    named = [b for b in other if "its command printed no" not in b]
+    assert len(named) == 1 and "2.513" in named[0] and "work_precision.md" in named[0], named
+
+
+def test_the_benchmarks_page_point_mass_figures_are_named_when_changed():
+    """docs/benchmarks.md's point-mass scene (500,000 elements, 28.69 MB held, the explicit step 6.9e-10 s, as
+    pointmass_benchmark printed them on 2026-11-29) pass; another held size is named."""
+    printed = {"elements": "500,000", "held_MB": "28.69", "explicit_dt": "6.9e-10"}
+    assert pages_differences({"checked_pages": ["benchmarks.md"], "pointmass_benchmark": printed}) == []
+    other = {**printed, "held_MB": "30.12"}
+    bad = pages_differences({"checked_pages": ["benchmarks.md"], "pointmass_benchmark": other})
+    assert len(bad) == 1 and "30.12" in bad[0] and "benchmarks.md" in bad[0], bad
