@@ -108,3 +108,93 @@ def test_config_checks(tmp_path):
         with pytest.raises(ConfigError, match=field) as err:
             load_rl_config(path)
         assert "bad.yaml" in str(err.value)
+
+
+LIMIT = 0.2  # [-] the bounded config's residual_limit (a fraction of each control's half range)
+
+
+@pytest.fixture(scope="module")
+def bounded(started):
+    """An untrained residual PPO with ``residual_limit`` LIMIT, started at the same LQR as ``started``."""
+    import gymnasium as gym
+    from stable_baselines3 import PPO
+    from stable_baselines3.common.vec_env import DummyVecEnv
+
+    lqr = started[1]
+    venv = DummyVecEnv([lambda: gym.make(ENV_ID)])
+    model = PPO(ResidualPolicy, venv, n_steps=64, batch_size=64, device="cpu", seed=0,
+                policy_kwargs=dict(net_arch=dict(pi=[16, 16], vf=[16]), log_std_init=-2.5, residual_limit=LIMIT))
+    start_residual(model, lqr, venv, 50)
+    return model
+
+
+def test_bounded_untrained_is_the_lqr_and_keeps_its_bound_through_the_zip(started, bounded, tmp_path):
+    from laddermill_gym.control.factory import make_controller
+
+    _, lqr, obs = started
+    expected = lqr.predict(obs)[0]
+    assert np.abs(bounded.predict(obs, deterministic=True)[0].astype(np.float64) - expected).max() == 0.0
+    bounded.save(tmp_path / "model.zip")
+    (tmp_path / "algorithm.txt").write_text("PPO\n")
+    (tmp_path / "config.yaml").write_text(f"env: {ENV_ID}\n")
+    loaded = make_controller(str(tmp_path), ENV_ID, {})
+    assert loaded.model.policy.residual_limit == LIMIT
+    assert np.abs(loaded.predict(obs, deterministic=True)[0].astype(np.float64) - expected).max() == 0.0
+
+
+def test_the_bound_holds_for_any_weights(started, bounded):
+    """Large random residual weights: every deterministic action within LIMIT of the LQR's (both clipped to the
+    action space, a 1-Lipschitz map: lqr.predict clips), the bound reached (so it is what holds the action), and a
+    small residual passed with slope 1 (tanh(x) = x - x^3 / 3 + ...)."""
+    import torch
+
+    _, lqr, obs = started
+    policy = bounded.policy
+    layers = (policy.skip_net, policy.action_net)
+    saved = [(layer.weight.detach().clone(), layer.bias.detach().clone()) for layer in layers]
+    expected = lqr.predict(obs)[0].astype(np.float64)
+    gen = torch.Generator().manual_seed(3)
+    try:
+        with torch.no_grad():
+            for layer in layers:
+                layer.weight.copy_(torch.randn(layer.weight.shape, generator=gen) * 5.0)
+                layer.bias.copy_(torch.randn(layer.bias.shape, generator=gen) * 5.0)
+        got = bounded.predict(obs, deterministic=True)[0].astype(np.float64)
+        assert np.abs(got - expected).max() <= LIMIT + 1e-6  # float32 rounding of the sum
+        assert np.abs(got - expected).max() >= 0.99 * LIMIT  # the bound binds: without it the residual is ~1e2
+        with torch.no_grad():
+            for layer in layers:
+                layer.weight.zero_()
+                layer.bias.zero_()
+            policy.skip_net.bias.copy_(torch.tensor([1e-3, -2e-3, 0.0]))
+        got = bounded.predict(obs[:10], deterministic=True)[0].astype(np.float64)
+        small = LIMIT * np.tanh(np.array([1e-3, -2e-3, 0.0]) / LIMIT)  # 1e-3 (1 - 8e-6): slope 1 to 1e-8
+        np.testing.assert_allclose(got, np.clip(expected[:10] + small, -1, 1), atol=2e-7)
+    finally:
+        with torch.no_grad():
+            for layer, (w, b) in zip(layers, saved, strict=True):
+                layer.weight.copy_(w)
+                layer.bias.copy_(b)
+
+
+@pytest.mark.parametrize("value", [0.0, -0.1, 2.5, "tight", True, float("nan")])
+def test_bad_residual_limit_names_field_and_value(tmp_path, value):
+    data = yaml.safe_load(open(CONFIG))
+    data["policy_kwargs"]["residual_limit"] = value
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match="residual_limit") as err:
+        load_rl_config(path)
+    assert "bad.yaml" in str(err.value) and str(value)[:4] in str(err.value)
+    with pytest.raises(ValueError, match="residual_limit"):
+        ResidualPolicy.__init__(object.__new__(ResidualPolicy), residual_limit=value)
+
+
+def test_residual_limit_needs_the_residual_policy(tmp_path):
+    data = yaml.safe_load(open("configs/agents/ppo_tethered_wing.yaml"))
+    data.setdefault("policy_kwargs", {})["residual_limit"] = 0.2
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(data))
+    with pytest.raises(ConfigError, match="residual_limit") as err:
+        load_rl_config(path)
+    assert "bad.yaml" in str(err.value)

@@ -1,6 +1,10 @@
 """A PPO policy whose action mean is a fixed linear controller plus a learned residual (``policy: ResidualPolicy``).
 
-mean(o) = W o + b  +  skip(z) + mlp(z),   z = clip((o - m) / s, -CLIP_OBS, CLIP_OBS)
+mean(o) = W o + b  +  r(z),   r(z) = skip(z) + mlp(z),   z = clip((o - m) / s, -CLIP_OBS, CLIP_OBS)
+
+or, with ``policy_kwargs.residual_limit: L`` (a fraction of each control's half range, 0 < L <= 2), the bounded
+residual L tanh(r(z) / L): |mean - (W o + b)| <= L in every action component (the action space is the controls'
+[-1, 1], so L is the fraction of the half range), the same slope 1 at r = 0, and still exactly 0 at the start;
 
 * W o + b is the affine map of a model-based controller (the LQR, :func:`~laddermill_gym.control.warm_start.
   affine_map`) on the RAW observation, held in float64 buffers and never trained: the untrained policy's
@@ -31,6 +35,17 @@ class ResidualPolicy(ActorCriticPolicy):
     """SB3 ``ActorCriticPolicy`` with a fixed float64 affine base and a zero-started residual (module docstring).
     Needs a Box observation and action space; ``share_features_extractor`` as SB3's default (the identity)."""
 
+    def __init__(self, *args, residual_limit: float | None = None, **kwargs) -> None:
+        number = isinstance(residual_limit, (int, float)) and not isinstance(residual_limit, bool)
+        if residual_limit is not None and not (number and 0.0 < residual_limit <= 2.0):
+            raise ValueError(f"ResidualPolicy: residual_limit {residual_limit!r} must be a number in (0, 2] (a "
+                             f"fraction of each control's half range) or None (no bound)")
+        self.residual_limit = None if residual_limit is None else float(residual_limit)
+        super().__init__(*args, **kwargs)
+
+    def _get_constructor_parameters(self) -> dict:
+        return {**super()._get_constructor_parameters(), "residual_limit": self.residual_limit}
+
     def _build(self, lr_schedule) -> None:
         super()._build(lr_schedule)
         n_obs, n_act = self.observation_space.shape[0], self.action_space.shape[0]
@@ -59,6 +74,8 @@ class ResidualPolicy(ActorCriticPolicy):
 
     def _distribution(self, raw: torch.Tensor, z: torch.Tensor, latent_pi: torch.Tensor):
         residual = self.action_net(latent_pi) + self.skip_net(z)
+        if self.residual_limit is not None:  # L tanh(r / L): within +-L of the base, tanh(0) = 0 exactly
+            residual = self.residual_limit * torch.tanh(residual / self.residual_limit)
         mean = (self._lqr(raw) + residual.to(torch.float64)).to(torch.float32)
         return self.action_dist.proba_distribution(mean, self.log_std)
 

@@ -208,10 +208,12 @@ POLICY_NUMBERS: dict[str, dict] = {
     "log_std_init": dict(low=-20.0, high=2.0, why="the log of the initial action noise std (SB3's default 0)"),
     "n_critics": dict(integer=True, positive=True, high=10),
     "clip_mean": dict(positive=True),
+    "residual_limit": dict(positive=True, high=2.0, why="a fraction of each control's half range: the bound of "
+                           "ResidualPolicy's residual (2 spans the whole action range)"),
 }
 
 
-def _read_policy_kwargs(s: Section, algo: str) -> dict:
+def _read_policy_kwargs(s: Section, algo: str, policy_name: str = "MlpPolicy") -> dict:
     """The ``policy_kwargs`` mapping: names of the SB3 policy's arguments, ``net_arch`` a list (or a mapping of
     lists) of layer sizes 1..4096, the numbers of :data:`POLICY_NUMBERS`, flags true or false."""
     raw = s.raw("policy_kwargs", {}) or {}
@@ -223,6 +225,8 @@ def _read_policy_kwargs(s: Section, algo: str) -> dict:
     else:
         from stable_baselines3.common.policies import ActorCriticPolicy as policy
     known = set(inspect.signature(policy).parameters) - {"observation_space", "action_space", "lr_schedule"}
+    if policy_name == "ResidualPolicy":
+        known.add("residual_limit")  # control/residual_policy.py's own argument
     for key, value in raw.items():
         if key not in known:
             raise pk.error(key, value, f"not an argument of {policy.__name__} (known: {sorted(known)})")
@@ -342,8 +346,8 @@ def load_rl_config(path: str | Path) -> RLConfig:
                                      why="each evaluation runs them all")
     ev.done()
     hyper = _read_hyperparameters(s, algo, n_envs, cfg["total_timesteps"])
-    pk = _read_policy_kwargs(s, algo)
     cfg["policy"] = s.text("policy", "MlpPolicy", choices=("MlpPolicy", "ResidualPolicy"))
+    pk = _read_policy_kwargs(s, algo, cfg["policy"])
     init_from = read_init_from(s, algo, pk, cfg["normalize_observations"], cfg["policy"])
     phases = dict(critic_warmup=read_critic_warmup(s, init_from), validation=read_validation(s))
     s.done()
