@@ -38,11 +38,8 @@ PODGAETS = Covered(
 
 
 MJ = "~{meijaard_v1[%s]}"
-MEIJAARD = NotYet(
-    "the v1 table's powers, tensions, widths, periods and overloads are checked against the study's power.csv; its "
-    "claims' wording, the direction step's times and the v0 section not yet listed",
-    groups=("meijaard_v1",),
-    checks=((r"at 1 m/s \(periodic at (\d+) s\) the loop is (\d+) m wide",
+MEIJAARD_CHECKS = (  # the checks of docsite/ledger_meijaard.py's entry
+    ((r"at 1 m/s \(periodic at (\d+) s\) the loop is (\d+) m wide",
              (MJ % "2D_1][t_end_s", MJ % "2D_1][loop_width_m")),
             (r"(\d+)-(\d+) m at 1 m/s; (\d+)-(\d+) m at 5 m/s, \*\*not periodic\*\* within ([\d,]+) s",
              (MJ % "2D_1][width_min_m", MJ % "2D_1][width_max_m", MJ % "2D_5][width_min_m", MJ % "2D_5][width_max_m",
@@ -118,11 +115,8 @@ LANSDORP = Covered(
 T1 = r"\| {} \| {} \| ([\d.]+){} \| ([\d.]+) \|"
 KR, TR = "{site_tables[%s][kite_row][%d]}", "{site_tables[%s][turbine_row][%d]}"
 CAP = r"\| {} \| {} \| ([\d.]+) \| (\d+){} \| ([\d.]+) \| ([\d.]+) % \| ([\d.]+) \|"
-QUASISTEADY = NotYet(
-    "Tables 1-2, the capacity table, the Cabauw coverage and the f <= 1/2 means and peaks are checked against "
-    "`laddermill site` (35-85 s); the method's figures, timings, sweeps and the f <= 1/3 means not yet listed",
-    groups=("site_tables",),
-    checks=tuple((T1.format(re.escape(label), re.escape(paper), r" \(upper bound\)" if key == "altitude" else ""),
+QUASISTEADY_CHECKS = (  # the checks of docsite/ledger_quasisteady.py's entry
+    tuple((T1.format(re.escape(label), re.escape(paper), r" \(upper bound\)" if key == "altitude" else ""),
                   (ST % f"weather2010][{key}_1", ST % f"cabauw][{key}_1"))
                  for label, paper, key in (("altitude [m]", "353.6", "altitude"), ("cable angle [deg]", "45", "angle"),
                                            ("cable diameter [mm]", "29.68", "diameter"),

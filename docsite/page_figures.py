@@ -16,8 +16,9 @@ Each group's cost, measured on the shared 2-core machine at a load of 6-8 (numba
 34 s, ``tether_convergence`` 2-5 min (:mod:`docsite.pumping_figures`), ``insertion_study`` 8 s,
 ``mill_periodic_2d`` 104-277 s, ``mill_lqr_check`` 216-274 s, ``pointmass_mill`` 173 s at a load of 3 (over 25
 minutes at 13; :mod:`docsite.mill_figures`), ``gain_locality`` 780 s at a load of 13, ``rotor_chart`` 23 s,
-``design_data``, ``wind_data``, ``numerics_data``, ``pointmass_data`` 0 s, ``derive_wing`` 4 s: every page about
-70 minutes at a load of 13 (about 40 on a quieter machine).
+``design_data``, ``wind_data``, ``numerics_data``, ``pointmass_data`` 0 s, ``derive_wing`` 4 s; at a load of 5-7
+(2026-11-29): ``precision_data`` 0 s, ``stable_steps`` 19-65 s, ``wing_controllers`` 13 s, ``chain_controllers``
+133 s: every page about 70 minutes at a load of 13 (about 40 on a quieter machine).
 """
 
 from __future__ import annotations
@@ -30,6 +31,7 @@ from pathlib import Path
 from tqdm import tqdm
 
 from docsite.config_figures import cable_dyneema, craft_data
+from docsite.controllers_figures import CONTROLLER_GROUPS
 from docsite.design_figures import design_data
 from docsite.learned_figures import gain_locality
 from docsite.mill_figures import MILL_GROUPS
@@ -250,8 +252,11 @@ GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lat
           "derive_wing": derive_wing,
           "simulate_laddermill": lambda: simulate(["laddermill", "--start", "periodic", "--direction-step", "0.01",
                                                    "--time", "60", "--allow-breakdown"]),
+          "simulate_laddermill_half": lambda: simulate(["laddermill", "--start", "periodic", "--dt", "0.005", "--time",
+                                                        "1", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"]),
-          **PUMPING_GROUPS, **MILL_GROUPS, **PRECISION_GROUPS}
+          **PUMPING_GROUPS, **MILL_GROUPS, **PRECISION_GROUPS,
+          **CONTROLLER_GROUPS}
 
 
 def measure_pages(pages: list[str] | None = None, have: dict | None = None, more: dict | None = None) -> dict:

@@ -24,16 +24,20 @@ A covered page's entries:
 from __future__ import annotations
 
 from docsite.ledger_benchmarks import BENCHMARKS
+from docsite.ledger_controllers import CONTROLLERS
 from docsite.ledger_craft import ROTOR, ROTORCRAFT
 from docsite.ledger_data import CABLE_DATA
 from docsite.ledger_design import ROTOR_DESIGN
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
 from docsite.ledger_kinds import Covered, NotYet
+from docsite.ledger_meijaard import MEIJAARD
 from docsite.ledger_mill import FEATURES, MOVING_CABLE
 from docsite.ledger_numerics import NUMERICS
-from docsite.ledger_papers import LANSDORP, MEIJAARD, PODGAETS, PUMPING, QUASISTEADY, REELING, ROBERTS
+from docsite.ledger_papers import LANSDORP, PODGAETS, PUMPING, REELING, ROBERTS
 from docsite.ledger_pointmass import POINTMASS, POINTMASS_MILL
+from docsite.ledger_power_curve import POWER_CURVE
 from docsite.ledger_precision import WORK_PRECISION
+from docsite.ledger_quasisteady import QUASISTEADY
 from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
 from docsite.ledger_wind import WIND
 from docsite.ledger_wing import WING_DATA
@@ -52,9 +56,7 @@ LEDGER = {
     "usage.md": Covered(given=("a pole at 0 for",)),
     "benchmarks.md": BENCHMARKS,
     "cable_data.md": CABLE_DATA,
-    "controllers.md": NotYet("README's TetheredWing-v0 rows are checked by readme_figures; the other tables "
-                             "(LadderMill-v0 with a PPO run not shipped, the chain, the rotorcraft, the wing's PPO "
-                             "scenarios) not yet"),
+    "controllers.md": CONTROLLERS,
     "features.md": FEATURES,
     "lateral_stability.md": LATERAL,
     "learned_mill.md": LEARNED_MILL,
@@ -67,8 +69,7 @@ LEDGER = {
     "paper_podgaets2007.md": PODGAETS,
     "pointmass.md": POINTMASS,
     "pointmass_mill.md": POINTMASS_MILL,
-    "power_curve.md": NotYet("checked by its own replay test (tests/test_power_curve*: the printed replay against the"
-                             " page); the prose figures not yet listed"),
+    "power_curve.md": POWER_CURVE,
     "pumping.md": PUMPING,
     "quasisteady.md": QUASISTEADY,
     "reeling_tether.md": REELING,

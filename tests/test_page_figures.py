@@ -265,3 +265,18 @@ def test_the_benchmarks_page_point_mass_figures_are_named_when_changed():
     other = {**printed, "held_MB": "30.12"}
     bad = pages_differences({"checked_pages": ["benchmarks.md"], "pointmass_benchmark": other})
     assert len(bad) == 1 and "30.12" in bad[0] and "benchmarks.md" in bad[0], bad
+
+
+def test_the_controllers_page_names_a_changed_figure():
+    """docs/controllers.md's chain paragraph against what its commands printed on 2026-11-29 (laddermill evaluate on
+    LadderChain-v0: open loop 12.2 s, decentralised LQR 9.0 s, centralised 0.0803 m over 120.0 s; laddermill lqr:
+    606 states, +0.7752 1/s, max |z| 1.06903 and 0.99035) passes; a centralised loop at max |z| 1.00210 is named."""
+    row = {"return": "0", "dy": "0", "power": "0", "failures": ""}
+    chain = {"open_loop": {**row, "length": "12.2"}, "lqr": {**row, "length": "9.0"},
+             "central": {**row, "length": "120.0", "dy": "0.0803"}, "states": "606", "real_part": "+0.7752",
+             "decentral_z": "1.06903", "central_z": "0.99035"}
+    measured = {"checked_pages": ["controllers.md"], "chain_controllers": chain}
+    assert [b for b in pages_differences(measured) if "printed no" not in b] == []
+    measured["chain_controllers"] = {**chain, "central_z": "1.00210"}
+    bad = [b for b in pages_differences(measured) if "printed no" not in b]
+    assert len(bad) == 1 and "1.00210" in bad[0] and "controllers.md" in bad[0], bad
