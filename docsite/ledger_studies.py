@@ -30,12 +30,9 @@ GAIN_CHECKS = tuple((rf"\| {d} \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \|",
     (r"\| spectral radius of the design model's closed loop \| " + r"([\d.]+) \| " * 6,
      tuple(GL % f"bands][k{k}" for k in range(5)) + (GL % "tail",)),
     (r"every 5th slot: ([\d. ]+?)\.\)", (GL % "own",)))
-LEARNED_MILL = NotYet("evaluation tables (`laddermill evaluate` of ppo_mill / ppo_chain, minutes each) and timings "
-                      "not yet listed; the two training tables are checked against the shipped training_curve.csv, "
-                      "the gain-locality tables against gain_locality (5 minutes)",
-                      groups=("training_curves", "gain_locality"),
-                      checks=_curve_rows("ppo_mill", DAGGER + ("PPO 1.00", "PPO 1.14"), True)
-                      + _curve_rows("ppo_chain", DAGGER + ("PPO 1.00", "PPO 1.73"), False) + GAIN_CHECKS)
+#: docs/learned_mill.md's checks (its entry: docsite/ledger_learned.py).
+LEARNED_MILL_CHECKS = (_curve_rows("ppo_mill", DAGGER + ("PPO 1.00", "PPO 1.14"), True)
+                       + _curve_rows("ppo_chain", DAGGER + ("PPO 1.00", "PPO 1.73"), False) + GAIN_CHECKS)
 
 LS = "{lateral_study[%s]}"
 SWEEPS = (("weathercock", "weathercock Cnb scale"), ("dihedral", "dihedral effect Clb scale"),

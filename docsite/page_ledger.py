@@ -30,15 +30,17 @@ from docsite.ledger_data import CABLE_DATA
 from docsite.ledger_design import ROTOR_DESIGN
 from docsite.ledger_guides import ABOUT_DOCS, GETTING_STARTED, INDEX, MODEL, RL_ZOO3, SCALE_OUT
 from docsite.ledger_kinds import Covered, NotYet
+from docsite.ledger_learned import LEARNED_MILL
 from docsite.ledger_meijaard import MEIJAARD
 from docsite.ledger_mill import FEATURES, MOVING_CABLE
 from docsite.ledger_numerics import NUMERICS
-from docsite.ledger_papers import LANSDORP, PODGAETS, PUMPING, REELING, ROBERTS
+from docsite.ledger_papers import LANSDORP, PODGAETS, PUMPING, ROBERTS
 from docsite.ledger_pointmass import POINTMASS, POINTMASS_MILL
 from docsite.ledger_power_curve import POWER_CURVE
 from docsite.ledger_precision import WORK_PRECISION
 from docsite.ledger_quasisteady import QUASISTEADY
-from docsite.ledger_studies import LATERAL, LEARNED_MILL, MILL_FAST
+from docsite.ledger_reeling import REELING
+from docsite.ledger_studies import LATERAL, MILL_FAST
 from docsite.ledger_wind import WIND
 from docsite.ledger_wing import WING_DATA
 
