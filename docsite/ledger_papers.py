@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 
-from docsite.ledger_kinds import Covered, NotYet
+from docsite.ledger_kinds import Covered
 
 RD = r"(\d+\.\d) m/s at 15,000 ft and at (\d+\.\d) m/s at 30,000 ft"
 ROBERTS = Covered(
@@ -137,11 +137,8 @@ QUASISTEADY_CHECKS = (  # the checks of docsite/ledger_quasisteady.py's entry
 CYCLE_ROW = r"\| {} \| ([\d.]+) \| " + r"(\d+) \| " * 6 + r"([\d.]+) \| (\d+) \| ([\d.]+) \|"
 CYCLE_KEYS = ("t_cycle", "sim", "lansdorp", "schmehl", "static", "fed", "tension_out", "speed_out", "tension_in",
               "max_dy")
-PUMPING = NotYet(
-    "the LQR cycle's table and its static-kite and eqs. 10-14 ranges are checked against pumping_cycle --controller "
-    "lqr (25-35 s); the crosswind cycle, the power curve, the evaluation tables and the rest not yet listed",
-    groups=("pumping_cycle_lqr",),
-    checks=tuple((CYCLE_ROW.format(label), tuple(("~" if k == "max_dy" else "") + PC % f"rows][{i}][{k}"
+PUMPING_CHECKS = (  # the checks of docsite/ledger_pumping.py's entry
+    tuple((CYCLE_ROW.format(label), tuple(("~" if k == "max_dy" else "") + PC % f"rows][{i}][{k}"
                                                  for k in CYCLE_KEYS))
                  for i, label in enumerate((r"0 \(from the trim\)", "1", "2")))
     + ((r"gives ([\d.-]+) kW, still 1\.8 times the simulated power", (PC % "static_all",)),

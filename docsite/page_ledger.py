@@ -34,10 +34,11 @@ from docsite.ledger_learned import LEARNED_MILL
 from docsite.ledger_meijaard import MEIJAARD
 from docsite.ledger_mill import FEATURES, MOVING_CABLE
 from docsite.ledger_numerics import NUMERICS
-from docsite.ledger_papers import LANSDORP, PODGAETS, PUMPING, ROBERTS
+from docsite.ledger_papers import LANSDORP, PODGAETS, ROBERTS
 from docsite.ledger_pointmass import POINTMASS, POINTMASS_MILL
 from docsite.ledger_power_curve import POWER_CURVE
 from docsite.ledger_precision import WORK_PRECISION
+from docsite.ledger_pumping import PUMPING
 from docsite.ledger_quasisteady import QUASISTEADY
 from docsite.ledger_reeling import REELING
 from docsite.ledger_studies import LATERAL, MILL_FAST
