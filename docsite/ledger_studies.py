@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 
-from docsite.ledger_kinds import Covered, NotYet
+from docsite.ledger_kinds import Covered
 
 
 def _curve_rows(policy: str, labels: tuple, length: bool) -> tuple:
@@ -123,14 +123,9 @@ LATERAL = Covered(
                "Trims failed for 600 m", "|z| = 0.956 at 0.05 s, a continuous equivalent of -0.89 1/s"),
 )
 
-def _v2_rows() -> tuple:
+def v2_rows() -> tuple:
     """docs/mill_fast.md's rows of the in-plane v2 mill at 1-5 m/s (ramp 100 V_c s), against fast_mill case."""
     keys = ("t", "period", "P", "dT_P", "T_min", "T_max", "peak", "lo", "hi")
     return tuple((rf"\| {v} \| {100 * v} \| ([\d,.]+) \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) / ([\d.]+) \| "
                   r"([\d.]+) \| ([-\d.]+) \.\. ([-\d.]+)", tuple(f"~{{fast_mill_v2[v{v}][{k}]}}" for k in keys))
                  for v in range(1, 6))
-
-
-MILL_FAST = NotYet("the in-plane v2 table at 1-5 m/s is checked against fast_mill case (one run per speed); the v1 "
-                   "drift and elevator tables, the 3D rows and timings not yet listed",
-                   groups=("fast_mill_v2",), checks=_v2_rows())

@@ -33,6 +33,7 @@ from docsite.ledger_kinds import Covered, NotYet
 from docsite.ledger_learned import LEARNED_MILL
 from docsite.ledger_meijaard import MEIJAARD
 from docsite.ledger_mill import FEATURES, MOVING_CABLE
+from docsite.ledger_mill_fast import MILL_FAST
 from docsite.ledger_numerics import NUMERICS
 from docsite.ledger_papers import LANSDORP, PODGAETS, ROBERTS
 from docsite.ledger_pointmass import POINTMASS, POINTMASS_MILL
@@ -41,7 +42,7 @@ from docsite.ledger_precision import WORK_PRECISION
 from docsite.ledger_pumping import PUMPING
 from docsite.ledger_quasisteady import QUASISTEADY
 from docsite.ledger_reeling import REELING
-from docsite.ledger_studies import LATERAL, MILL_FAST
+from docsite.ledger_studies import LATERAL
 from docsite.ledger_wind import WIND
 from docsite.ledger_wing import WING_DATA
 
