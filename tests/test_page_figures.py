@@ -280,3 +280,13 @@ def test_the_controllers_page_names_a_changed_figure():
     measured["chain_controllers"] = {**chain, "central_z": "1.00210"}
     bad = [b for b in pages_differences(measured) if "printed no" not in b]
     assert len(bad) == 1 and "1.00210" in bad[0] and "controllers.md" in bad[0], bad
+
+
+def test_the_halved_step_figure_is_named_when_changed():
+    """docs/moving_cable.md's "halving the step ... mean power 66.2 kW" against ``laddermill simulate laddermill
+    --start periodic --dt 0.005`` as it printed on 2026-11-29 (66.2 kW) passes; the 10 ms run's 66.1 kW is named."""
+    measured = {"checked_pages": ["moving_cable.md"], "simulate_laddermill_half": {"periodic_kW": "66.2"}}
+    assert [b for b in pages_differences(measured) if "printed no" not in b] == []
+    measured["simulate_laddermill_half"] = {"periodic_kW": "66.1"}
+    bad = [b for b in pages_differences(measured) if "printed no" not in b]
+    assert len(bad) == 1 and "66.1" in bad[0] and "moving_cable.md" in bad[0], bad
