@@ -5,7 +5,8 @@ command in a fresh process as the page (and the Makefile's ``figures`` target) n
 ``laddermill lqr`` (the wing's default config); ``chain_controllers``: ``laddermill evaluate --env
 laddermill_gym/LadderChain-v0 --episodes 1 --controllers open_loop lqr
 lqr:configs/agents/lqr_ladder_chain_central.yaml`` (120 s) and ``laddermill lqr --config`` of the decentralised
-(``--full-check``) and the centralised chain design."""
+(``--full-check``) and the centralised chain design; ``mill_v1_controllers``: ``laddermill evaluate --env
+laddermill_gym/LadderMill-v1 --controllers open_loop lqr --episodes 1 --episode-time 300``."""
 
 from __future__ import annotations
 
@@ -20,18 +21,20 @@ CENTRAL = "lqr:configs/agents/lqr_ladder_chain_central.yaml"
 ROW = r"^{label} +([-\d.]+) +([\d.]+) +([\d.]+) +([-\d.]+)  (.*)$"
 
 
-def evaluate_rows(env: str, controllers: list[str]) -> dict:
-    """``laddermill evaluate --env ENV --controllers ... --episodes 1``: per controller its printed row (return, length
-    [s], max |dy| [m], mean power [W], failures; "" for none), as printed."""
+def evaluate_rows(env: str, controllers: list[str], episode_time: str | None = None) -> dict:
+    """``laddermill evaluate --env ENV --controllers ... --episodes 1 [--episode-time T]``: per controller its printed
+    row (return, length [s], max |dy| [m], mean power [W] and [kW], failures; "" for none), as printed."""
     with tempfile.TemporaryDirectory() as tmp:
-        argv = [CLI, "evaluate", "--env", env, "--controllers", *controllers, "--episodes", "1", "--out", tmp]
+        argv = [CLI, "evaluate", "--env", env, "--controllers", *controllers, "--episodes", "1", "--out", tmp,
+                *(["--episode-time", episode_time] if episode_time else [])]
         out = run_command(argv, 1800)
     rows = {}
     for label in controllers:  # an LQR config prints as lqr:<its file's stem>
         shown = f"lqr:{Path(label[4:]).stem}" if label.startswith("lqr:") else label
         m = printed_match(ROW.format(label=re.escape(shown)), out, f"python -m {' '.join(argv)}")
         rows[label] = {"return": m.group(1), "length": m.group(2), "dy": m.group(3), "power": m.group(4),
-                       "failures": "" if m.group(5).strip() == "-" else m.group(5).strip()}
+                       "failures": "" if m.group(5).strip() == "-" else m.group(5).strip(),
+                       "power_kW": f"{float(m.group(4)) / 1e3:.4f}"}
     return rows
 
 
@@ -69,5 +72,13 @@ def chain_controllers() -> dict:
             "real_part": full.group(2), "decentral_z": full.group(3), "central_z": central}
 
 
+def mill_v1_controllers() -> dict:
+    """LadderMill-v1 (the paper's 0.01 rad step at 1 s, 300 s): the open-loop and LQR rows of ``laddermill evaluate
+    --env laddermill_gym/LadderMill-v1 --controllers open_loop lqr --episodes 1 --episode-time 300`` (the LQR designed
+    on the linearised mill first: minutes)."""
+    return evaluate_rows("laddermill_gym/LadderMill-v1", ["open_loop", "lqr"], "300")
+
+
 #: docs/controllers.md's groups for :data:`docsite.page_figures.GROUPS`.
-CONTROLLER_GROUPS = {"wing_controllers": wing_controllers, "chain_controllers": chain_controllers}
+CONTROLLER_GROUPS = {"wing_controllers": wing_controllers, "chain_controllers": chain_controllers,
+                     "mill_v1_controllers": mill_v1_controllers}

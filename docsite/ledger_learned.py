@@ -8,9 +8,17 @@ from __future__ import annotations
 from docsite.ledger_kinds import Covered
 from docsite.ledger_studies import LEARNED_MILL_CHECKS
 
+CC, MV = "~{chain_controllers[%s]}", "~{mill_v1_controllers[lqr][%s]}"
 LEARNED_MILL = Covered(
-    groups=("training_curves", "gain_locality"),
-    checks=LEARNED_MILL_CHECKS,
+    groups=("training_curves", "gain_locality", "chain_controllers", "mill_v1_controllers"),
+    checks=LEARNED_MILL_CHECKS + (  # the decentralised chain LQR and the v1 mill's LQR fly deterministic episodes
+        (r"it fails ([\d.]+) s after the step \(aerodynamic range exceeded, max \|dy\| ([\d.]+) m, ([\d.]+) kW\), "
+         r"earlier than the open loop \(([\d.]+) s, ([\d.]+) m\)",
+         (CC % "lqr][length", CC % "lqr][dy", CC % "lqr][power_kW", CC % "open_loop][length", CC % "open_loop][dy")),
+        (r"\| 0 of 5 \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| aerodynamic range exceeded \|",
+         (CC % "lqr][length", CC % "lqr][dy", CC % "lqr][power_kW", CC % "lqr][return")),
+        (r"\| LQR \| 5 of 5 \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| - \|",
+         (MV % "length", MV % "dy", MV % "power_kW", MV % "return"))),
     given=(
         'Issue 31 point 2 asks for one policy, shared by every wing, trained with one command from a YAML config '
         "in at most two hours on the 2-core machine, that holds for 300 s after the paper's 0.01 rad direction "
