@@ -75,7 +75,8 @@ def test_the_page_check_names_a_changed_figure():
 def test_the_covered_pages_figures_are_what_their_commands_print():
     """``python -m docsite.readme_figures --skip-readme --pages``: every page's checks re-run (the groups of
     docsite/page_figures.py: 28 groups in 22 minutes on the 2-core machine with one thread at a load of 1-2.4,
-    about 70 at a load of 13, 2026-11-29; each group's cost is in that module's docstring)."""
+    about 70 at a load of 13, 2026-11-29; six groups added later that night about 11 minutes more at a load of 4-6;
+    each group's cost is in that module's docstring)."""
     from docsite.readme_figures import main_job
 
     measured = measure_pages(more={"main_job": main_job})["pages"]
