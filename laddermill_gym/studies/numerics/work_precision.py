@@ -24,7 +24,9 @@ the generator power (largest error over the largest value of the run), the wings
 attitudes [rad], and whether a run is within 1 %, 1 %, 0.1 m and 0.01 rad; the summary names the run that meets
 these in the least CPU time per method and its speed-up over the fastest such RK4 run. Wall time: the median of
 ``--repeats`` warm runs (after one untimed run, which is the one whose errors are recorded), CPU time the least of
-them, one numba thread. Output: ``SCENE.csv``, ``SCENE.json`` and ``SCENE.png``
+them, one numba thread. ``--controller lqr`` also runs each forcing closed by the scene's lateral LQR at the envs'
+control period (``closed_loop.py``, rows "FORCING+lqr"; steps then divide the control period, the feedback's own
+time is left out). Output: ``SCENE.csv``, ``SCENE.json`` and ``SCENE.png``
 (log-log) in ``--out``.
 """
 
