@@ -24,7 +24,9 @@ the generator power (largest error over the largest value of the run), the wings
 attitudes [rad], and whether a run is within 1 %, 1 %, 0.1 m and 0.01 rad; the summary names the run that meets
 these in the least CPU time per method and its speed-up over the fastest such RK4 run. Wall time: the median of
 ``--repeats`` warm runs (after one untimed run, which is the one whose errors are recorded), CPU time the least of
-them, one numba thread. Output: ``SCENE.csv``, ``SCENE.json`` and ``SCENE.png``
+them, one numba thread. ``--controller lqr`` also runs each forcing closed by the scene's lateral LQR at the envs'
+control period (``closed_loop.py``, rows "FORCING+lqr"; steps then divide the control period, the feedback's own
+time is left out). Output: ``SCENE.csv``, ``SCENE.json`` and ``SCENE.png``
 (log-log) in ``--out``.
 """
 
@@ -38,8 +40,16 @@ from pathlib import Path
 import numpy as np
 
 from laddermill_gym.sim.simulator import ADAPTIVE_METHODS, FIXED_STEP_METHODS, SimulationError, Simulator
-from laddermill_gym.studies.commands import check_number, run_subcommand
+from laddermill_gym.studies.commands import UsageError, check_number, run_subcommand
 from laddermill_gym.studies.numerics import pointmass_precision
+from laddermill_gym.studies.numerics.closed_loop import (
+    CONTROLLERS,
+    LQR_CONFIGS,
+    Feedback,
+    closed_loop_reference,
+    closed_loop_trajectory,
+    design_feedback,
+)
 from laddermill_gym.studies.numerics.controller_errors import controller_errors, controller_quantities
 from laddermill_gym.studies.numerics.precision import (
     FORCINGS,
@@ -106,21 +116,41 @@ def scipy_reference(sim: Simulator, times: np.ndarray) -> np.ndarray:
     return piecewise_reference(sim.rhs, sim.state.copy(), times, sim.breakpoint_times, "DOP853", REF_TOL)
 
 
+def integration_only(once, clock: dict):
+    """``once`` (``precision.timed``) less the feedback's time that the closed loop left in ``clock`` (none open
+    loop): the rows time the integration, not the controller."""
+
+    def run():
+        clock.update(wall=0.0, cpu=0.0)
+        xs, ps, wall, cpu = once()
+        return xs, ps, wall - clock["wall"], cpu - clock["cpu"]
+
+    return run
+
+
 def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, repeats: int, dt_stable: float,
-              n_dt: int, bar=None) -> tuple[list[dict], dict]:
-    """All methods on one forcing: (rows, reference summary)."""
+              n_dt: int, bar=None, fb: Feedback | None = None) -> tuple[list[dict], dict]:
+    """All methods on one forcing, open loop or (``fb``, ``closed_loop.py``) closed by a feedback held over its
+    control period, which then replaces the sample period in the step grids: (rows, reference summary)."""
     x0, wind = forcing_setup(base, forcing, duration)
     times = np.linspace(0.0, duration, n_samples + 1)
+
+    def path(sim, method, value, clock=None):
+        if fb is None:
+            return trajectory(sim, times, method, value)
+        return closed_loop_trajectory(sim, times, method, value, fb, positions, clock)
+
     ref_sim = with_settings(base, state=x0, wind=wind, method="dp54", breakpoints="all")
-    xr, pr = trajectory(ref_sim, times, "dp54", REF_TOL)
-    xs2 = scipy_reference(with_settings(base, state=x0, wind=wind, method="dp54"), times)
+    xr, pr = path(ref_sim, "dp54", REF_TOL)
+    sp = with_settings(base, state=x0, wind=wind, method="dp54")
+    xs2 = scipy_reference(sp, times) if fb is None else closed_loop_reference(sp, times, fb, "DOP853", REF_TOL)
     agree = float(np.max(np.abs(scaled_difference(xs2, xr))))
     ev = with_settings(base, state=x0, wind=wind, method="dp54")  # reads the controller quantities of a state
     qr = controller_quantities(ev, times, xr)
     ref = {"dp54_rtol": REF_TOL, "scipy_dop853_rtol": REF_TOL, "reference_agreement_state": agree,
            **{f"{k}_reference_agreement": v for k, v in controller_errors(controller_quantities(ev, times, xs2), qr)
               .items() if k != "meets_controller"}}
-    period = duration / n_samples
+    period = duration / n_samples if fb is None else fb.period
     ms = explicit_step_counts(period, dt_stable, n_dt)
     cases = [("rk4", period / m) for m in ms]
     if forcing != "smooth":
@@ -142,23 +172,27 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
         last = {}  # the states of the latest timed run: the controller quantities are read from them afterwards
 
         def go(sim, method=method, value=value, last=last):
-            last["xs"], ps = trajectory(sim, times, method, value)
+            last["xs"], ps = path(sim, method, value, last)
             return last["xs"], ps
 
-        once = timed(lambda: with_settings(base, state=x0, wind=wind, **kw), go)
+        once = integration_only(timed(lambda: with_settings(base, state=x0, wind=wind, **kw), go), last)
         adaptive = method in ADAPTIVE_METHODS
-        row = {"forcing": forcing, "method": label, "dt_s": math.nan if adaptive else value,
-               "tol": value if adaptive else math.nan}
+        row = {"forcing": forcing if fb is None else f"{forcing}+lqr", "method": label,
+               "dt_s": math.nan if adaptive else value, "tol": value if adaptive else math.nan}
         measure(row, once, xr, pr, duration, repeats, SimulationError, bar)
         if row["status"] == "ok":
             row.update(controller_errors(controller_quantities(ev, times, last["xs"]), qr))
+            if fb is not None:
+                row["feedback_cpu_s"] = last["cpu"]  # the feedback's own time, left out of cpu_s and wall_s
         rows.append(row)
     return rows, ref
 
 
 def run_scene(scene: str, forcings=FORCINGS, duration: float = 5.0, n_samples: int = 20, repeats: int = 3,
-              n_dt: int = 7, progress: bool = True) -> dict:
-    """The study on one scene: {"scene", "dt_stable_s", "references": {forcing: ...}, "rows": [...]}."""
+              n_dt: int = 7, progress: bool = True, controllers=("none",)) -> dict:
+    """The study on one scene: {"scene", "dt_stable_s", "references": {forcing: ...}, "rows": [...]}; with the
+    controller ``lqr`` among ``controllers`` each forcing is also run closed loop (``closed_loop.py``), its rows
+    and reference under "FORCING+lqr", and the design's wall time is ``lqr_design_s``."""
     import numba
 
     from laddermill_gym.sim.stable_step import estimate_stable_step
@@ -169,8 +203,13 @@ def run_scene(scene: str, forcings=FORCINGS, duration: float = 5.0, n_samples: i
     out = {"scene": scene, "duration_s": duration, "samples": n_samples, "repeats": repeats,
            "dt_stable_s": est.dt_max, "limiting_eigenvalue": [est.eigenvalue.real, est.eigenvalue.imag],
            "references": {}, "rows": []}
-    return run_forcings(out, forcings, f"work-precision {scene}", progress,
-                        lambda f, bar: run_cases(base, f, duration, n_samples, repeats, est.dt_max, n_dt, bar))
+    fbs = {c: design_feedback(scene, base, c) for c in controllers}
+    if fbs.get("lqr") is not None:
+        out.update(lqr_design_s=fbs["lqr"].design_s, lqr_config=fbs["lqr"].config, control_period_s=fbs["lqr"].period)
+    labels = [f if c == "none" else f"{f}+{c}" for c in controllers for f in forcings]
+    return run_forcings(out, labels, f"work-precision {scene}", progress,
+                        lambda lab, bar: run_cases(base, lab.partition("+")[0], duration, n_samples, repeats,
+                                                   est.dt_max, n_dt, bar, fbs[lab.partition("+")[2] or "none"]))
 
 
 def add_parser(sub) -> argparse.ArgumentParser:
@@ -180,6 +219,9 @@ def add_parser(sub) -> argparse.ArgumentParser:
                    help="scene names or YAML paths; 'roberts_flying_model' for the rotorcraft; a point-mass scene "
                    "(podgaets_5km) runs its explicit and implicit methods (studies/numerics/pointmass_precision.py)")
     p.add_argument("--forcing", nargs="+", choices=FORCINGS, default=list(FORCINGS))
+    p.add_argument("--controller", nargs="+", choices=CONTROLLERS, default=["none"],
+                   help="none: open loop (default); lqr: also closed by the scene's lateral LQR at its control "
+                   "period, zero-order hold (studies/numerics/closed_loop.py); 'none lqr': both in one run")
     p.add_argument("--time", type=float, default=5.0, help="simulated time per run [s] (default 5)")
     p.add_argument("--samples", type=int, default=20, help="times in the RMS error (default 20)")
     p.add_argument("--repeats", type=int, default=3, help="timed repeats per run, median taken (default 3)")
@@ -204,11 +246,16 @@ def _cmd(args) -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     for scene in args.scene:
+        if "lqr" in args.controller and Path(scene).stem not in LQR_CONFIGS:
+            raise UsageError(f"--controller lqr: scene {scene!r} has no LQR design here (one of "
+                             f"{', '.join(LQR_CONFIGS)})")
+    for scene in args.scene:
         if pointmass_precision.is_pointmass_scene(scene):
             res = pointmass_precision.run_scene(scene, args.forcing, args.time, args.samples, args.repeats,
                                                 args.element_length, not args.quiet)
         else:
-            res = run_scene(scene, args.forcing, args.time, args.samples, args.repeats, args.n_dt, not args.quiet)
+            res = run_scene(scene, args.forcing, args.time, args.samples, args.repeats, args.n_dt, not args.quiet,
+                            args.controller)
         stem = out / Path(scene).stem
         save_rows(res, stem.with_suffix(".csv"))
         stem.with_suffix(".json").write_text(json.dumps(res, indent=1, default=float))
