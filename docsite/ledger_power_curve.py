@@ -1,4 +1,5 @@
-"""The ledger entry (:mod:`docsite.page_ledger`) of docs/power_curve.md: the rules' settings given; every measured
+"""The ledger entry (:mod:`docsite.page_ledger`) of docs/power_curve.md: the rules' settings given; the 1-5 m/s
+powers at 8 m/s checked against ``fast_mill case`` (``fast_mill_v2``, the same cases); every other measured
 figure from the six ``laddermill power-curve`` runs of 2026-11-29 (60 min on one core), not re-run: their JSONs
 (results/power_curve_v2*/power_curve.json, which ``--table`` and ``--replay`` read) are untracked, so the
 printed blocks (text fences, outside the quoted numbers) and the prose quoting them cannot be replayed from a
@@ -8,7 +9,15 @@ from __future__ import annotations
 
 from docsite.ledger_kinds import Covered
 
+FM = "~{fast_mill_v2[v%d][P]}"  # the 1-5 m/s rows are mill_fast.md's in-plane table (same cases)
+
 POWER_CURVE = Covered(
+    groups=('fast_mill_v2',),
+    checks=((r"(?<= )([\d.]+), ([\d.]+), ([\d.]+), ([\d.]+), ([\d.]+) kW at 0\.5-5 m/s",
+             tuple(FM % v for v in range(1, 6))),
+            (r"\| 8 \| 5 \(grid 0\.5-6\) \| ([\d.]+) \|", (FM % 5,)),
+            (r"crosses 200 kW between 3 m/s \(([\d.]+) kW\) and 4 m/s \(([\d.]+) kW\); at the paper's two speeds it "
+             r"gives ([\d.]+) kW \(1 m/s", (FM % 3, FM % 4, FM % 1))),
     given=(
         'Issue 30 point 3 asks what a wind-energy user asks first: the mean electrical power against the cable '
         "speed V_c at the paper's wind, and the best V_c and its power against the wind speed. One command, ( ), "

@@ -292,3 +292,13 @@ def test_the_halved_step_figure_is_named_when_changed():
     measured["simulate_laddermill_half"] = {"periodic_kW": "66.1"}
     bad = [b for b in pages_differences(measured) if "printed no" not in b]
     assert len(bad) == 1 and "66.1" in bad[0] and "moving_cable.md" in bad[0], bad
+
+
+def test_the_power_curve_page_is_mill_fast_cases():
+    """docs/power_curve.md's 1-5 m/s powers at 8 m/s are fast_mill case's (mill_fast.md's in-plane table: 45.9, 102.2,
+    168.6, 244.0, 323.9 kW as printed on 2026-11-29) and pass; another 5 m/s power is named where it is quoted."""
+    printed = {f"v{v}": {"P": p} for v, p in zip(range(1, 6), (45.9, 102.2, 168.6, 244.0, 323.9), strict=True)}
+    assert pages_differences({"checked_pages": ["power_curve.md"], "fast_mill_v2": printed}) == []
+    other = {**printed, "v5": {"P": 330.1}}
+    bad = pages_differences({"checked_pages": ["power_curve.md"], "fast_mill_v2": other})
+    assert len(bad) == 2 and all("330.1" in b and "power_curve.md" in b for b in bad), bad
