@@ -24,6 +24,7 @@ A covered page's entries:
 from __future__ import annotations
 
 from docsite.ledger_benchmarks import BENCHMARKS
+from docsite.ledger_closed_loop import WORK_PRECISION_CLOSED_LOOP
 from docsite.ledger_controllers import CONTROLLERS
 from docsite.ledger_craft import ROTOR, ROTORCRAFT
 from docsite.ledger_data import CABLE_DATA
@@ -85,4 +86,5 @@ LEDGER = {
     "wind.md": WIND,
     "wing_data.md": WING_DATA,
     "work_precision.md": WORK_PRECISION,
+    "work_precision_closed_loop.md": WORK_PRECISION_CLOSED_LOOP,
 }

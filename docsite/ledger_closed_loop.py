@@ -1,0 +1,81 @@
+"""The ledger entry (:mod:`docsite.page_ledger`) of docs/work_precision_closed_loop.md (merged 2026-11-30): the
+closed-loop work-precision runs (12-17 min each) not re-run, their commands named; the loop's settings given;
+the CPU costs timings as the page dates them; the bounds worked from them derived."""
+
+from __future__ import annotations
+
+from docsite.ledger_kinds import Covered
+
+WORK_PRECISION_CLOSED_LOOP = Covered(
+    given=(
+        '# Work precision with the wings held by the LQR (issue 32 point 4)',
+        "The open-loop rows stay and are still what the issue's 5x target is checked against.",
+        'Over 10 s the cable moves less than 4 m, so no wing is transferred.',
+        "The controller runs at the envs' control period of 0.05 s with a zero-order hold.",
+        "The W-methods run at 0.05 / k s, so their largest step is 0.05 s, not the open loop's 0.2 s.",
+        '- The two references, our DP5(4)',
+        "and scipy's DOP853 (both at 1e-12), run through the same loop.",
+        'The tables give CPU speed-ups over the fastest RK4 run that meets the tolerances in the same run (1 % in'
+        ' tension and power; 0.1 m and 0.01 rad).',
+        'scene, 10 s, step | open loop: RK4 | best W (open)',
+        'The error-controlled meets the tolerances closed loop at 1e-2:',
+        'That is longer than a 10 s study run, but it is done once per study.',
+        'A W step cannot be longer than the 0.05 s hold, while RK4 needs 3 (chain) or 4 (mill) steps per period.',
+        'So the speed-up is 3 or 4 RK4 steps against the cost of one W step.',
+        "The closed-loop grid puts the mill's RK4 at 0.0125 s, against 0.01538 s open loop.",
+    ),
+    timings=(
+        # the page's own durations and CPU costs (2026-11-29/30, one thread, load 4-7 on the two cores)
+        '0.03-0.08 s CPU per 10 s run, or 200 evaluations. and leave it out;',
+        'one thread, load 4-7 on the two cores)',
+        '--controller none lqr --time 10 --samples 50 # 12 min --controller none lqr --time 10 --samples 50 # 17 '
+        'min',
+        "The LQR's design took 30.0 s wall on the chain and 17.4 s on the mill ( in the JSON; the machine was "
+        'loaded).',
+        "**What a Jacobian reused over steps could give.** The W step's Jacobian and factorisation were measured "
+        'at a 0.05 s step with . It printed "ladder_chain:',
+        'CPU per step ROS34PW2 0.576 ms, RK4 0.274 ms (2.10 RK4 steps); one right-hand side 0.075 ms;',
+        'body Jacobian 0.134 ms (23%), cable Jacobian 0.028 ms (5%), factorisation 0.026 ms (5%);',
+        'W step without them 1.41 RK4 steps".',
+        'For the mill it printed "ROS34PW2 0.585 ms, RK4 0.273 ms (2.14 RK4 steps); ...',
+        'body Jacobian 0.137 ms (23%), cable Jacobian 0.032 ms (6%), factorisation 0.027 ms (5%);',
+        'W step without them 1.42 RK4 steps".',
+    ),
+    derived=(
+        # worked from the figures above
+        "At the open-loop step the mill's ros2 ratio would be 2.89 x 0.0125 / 0.01538 = 2.35x.",
+        "- The chain's ros2t step takes 0.39 ms (0.0785 s / 200 steps);",
+        'without the 0.19 ms of parts, 0.175 / 0.041 = at most 4.3x.',
+        "- The mill's ros2 step takes 0.40 ms;",
+        'without the 0.20 ms of parts, 0.231 / 0.041 = at most 5.7x.',
+        'Only then is 5x within reach, and only on the mill.',
+    ),
+    not_rerun=(
+        # NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision ladder_chain / laddermill
+        # --forcing step --controller none lqr --time 10 --samples 50 (12 and 17 min) and
+        # tests/test_closed_loop_precision.py
+        'After the direction step the chain\'s and the mill\'s slow lateral modes are unstable (up to 6.4 1/s, "The'
+        ' apex whip\'s modes" there), so any integrator\'s local error grows by itself, and what separates the '
+        'methods is how much error each step adds to those modes.',
+        "At the scene's own integrator the wing paths agree to 8e-17 m and 3.5e-18 rad on the tethered wing (2 "
+        's). On the chain (4 s, slow test)',
+        'they agree to 5e-12 m and 1.3e-12 rad.',
+        'The closed-loop references agree to 1.3e-9 (chain) and 2.4e-9 (mill) in the scaled state.',
+        '|---|---|---|---|---|---|---| | ladder_chain | 0.0222 s | ROS34PW2 0.0667 s: **1.42x** (ros2t 1.13x)',
+        '0.01667 s | 0.05 s: **2.14x** | 0.05 s: **2.23x** | 0.05 s: 1.36x',
+        'laddermill | 0.01538 s | ros2t 0.01667 s: **0.84x** (ROS34PW2 0.52x)',
+        '0.0125 s | 0.05 s: **2.89x** | 0.05 s: **2.77x** | 0.05 s: 1.78x',
+        '1.37x on the chain and 1.74x on the mill.',
+        '**5x is not met closed loop either:',
+        '2.2x on the chain and 2.9x on the mill.** Closed loop, accuracy is no longer what binds.',
+        'Every W-method meets the tolerances at its largest step, 0.05 s, with room to spare.',
+        'On the chain ROS34PW2 at 0.05 s is 2.5e-4 m and 3.1e-4 rad off, and ros2t is 3.1e-4 m off.',
+        'On the mill ros2t is 1.9e-4 m off and 0.07 % in power.',
+        'The RK4 baseline meets them by orders of magnitude (3e-8 m on the chain).',
+        'A ros2 or ros2t step costs 1.3-1.4 RK4 steps, and a ROS34PW2 step about 2.2.',
+        '- On the chain RK4 at 0.025 s, 2 steps per period and just beyond the stable-step estimate of 0.02445 s,'
+        ' runs to the end but misses the tolerances:',
+        '4.6 % in tension and 0.075 rad in attitude (a growing cable mode).',
+        '- On the mill RK4 at 0.0167 s breaks down at 0.33 s.',
+    ),
+)
