@@ -25,7 +25,8 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
         "The closed-loop grid puts the mill's RK4 at 0.0125 s, against 0.01538 s open loop.",
     ),
     timings=(
-        # the page's own durations and CPU costs (committed in f45b8d3, 2026-11-30 00:27; one thread, load 4-7; no date on the page)
+        # the page's own durations and CPU costs (committed in f45b8d3, 2026-11-30 00:27; one thread, load 4-7;
+        # no date on the page)
         '0.03-0.08 s CPU per 10 s run, or 200 evaluations. and leave it out;',
         'one thread, load 4-7 on the two cores)',
         '--controller none lqr --time 10 --samples 50 # 12 min --controller none lqr --time 10 --samples 50 # 17 '
