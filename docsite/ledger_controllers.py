@@ -198,8 +198,10 @@ CONTROLLERS = Covered(
         "shipped policy's 79 (both 62, only the shipped 17, only the bounded residual 48, neither 73; p = "
         "0.000152) and against the LQR's 70 (both 52, only the LQR 18, only the bounded residual 58, neither 72; "
         'p = 4.71e-06). The same command now prints 79 for the shipped policy where it printed 88 in earlier '
-        "sessions (the LQR's 70 unchanged); the cause was not found in this session. Not shipped: gusts-v1's "
-        'NTM_IB seed 0 is again lost near 23 s.',
+        "sessions (the LQR's 70 unchanged), and so does commit 420c907, where 88 was recorded, run with this "
+        "session's installed packages (the LQR 70, the shipped policy 79; p = 0.298): not a change of the code "
+        "since; the installed packages are the suspect, not checked. Not shipped: gusts-v1's NTM_IB seed 0 is "
+        'again lost near 23 s.',
         # README's --policies group: laddermill evaluate with ppo_mill / ppo_chain and their LQRs, 301 s
         '**The mill and the chain.** and are shared per-wing policies (one set of weights for all 101 slots or '
         'wings, each seeing its wing and 4 neighbours each side, per-slot gains; / : DAgger from the centralised '
