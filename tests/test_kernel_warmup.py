@@ -52,6 +52,18 @@ def test_the_in_plane_stand_ins_reach_their_kernels_without_raising():
     assert {"Rigid2D", "MovingCable2D"} <= kinds, kinds  # the static equilibrium's cable and the moving cable
 
 
+def test_the_first_process_waits_for_the_statics_line_not_for_any_output():
+    def child(code):
+        return kernel_warmup.Warmup(subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE))
+
+    w = child(f"print('a warning on stdout'); print({kernel_warmup.STATICS_DONE!r}); print('more')")
+    assert w.wait_for(kernel_warmup.STATICS_DONE)  # the line after other output
+    assert w.wait() == 0 and w.proc is None and not w.wait_for(kernel_warmup.STATICS_DONE)
+    w = child("print('statics kernel')")  # not the line, then the end of its output
+    assert not w.wait_for(kernel_warmup.STATICS_DONE)
+    w.wait()
+
+
 def test_pending_until_returned_or_on_disk(tmp_path, monkeypatch):
     monkeypatch.setenv(op_cache.CACHE_VARIABLE, str(tmp_path / "cache"))
     operating_point.cache_clear()
