@@ -2,8 +2,9 @@
 the operating point, a second process compiles the 3D kernels into numba's cache. Oracles: the env run with the
 warm-up switched off (the kernels compiled in the process itself) gives the same bits, in fresh processes with
 empty caches (slow: two cold compiles); numba's compile events show that the process with the warm-up compiles
-nothing at its first reset and step. Fast: the stand-in point builds the real task, and the warm-up starts only
-when the operating point is to be computed and the kernels are not compiled yet."""
+nothing at its first reset and step, nor the static equilibrium's right-hand side. Fast: the stand-in point builds
+the real task, the in-plane stand-ins reach both in-plane right-hand sides, and the warm-up starts only when the
+operating point is to be computed and the kernels are not compiled yet."""
 
 from __future__ import annotations
 
@@ -42,6 +43,27 @@ def test_the_stand_in_point_builds_the_task_and_resets():
     assert task.obs.shape == (1, task.obs_dim)
 
 
+def test_the_in_plane_stand_ins_reach_their_kernels_without_raising():
+    from laddermill_gym.kernels.integrate import rhs
+
+    kernel_warmup.compile_statics("laddermill", OPTIONS)
+    kernel_warmup.compile_in_plane("laddermill", OPTIONS)
+    kinds = {str(sig[4].types[0]).split("(")[0] for sig in rhs.signatures}  # (t, x, u, dx, model, work): kind
+    assert {"Rigid2D", "MovingCable2D"} <= kinds, kinds  # the static equilibrium's cable and the moving cable
+
+
+def test_the_first_process_waits_for_the_statics_line_not_for_any_output():
+    def child(code):
+        return kernel_warmup.Warmup(subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE))
+
+    w = child(f"print('a warning on stdout'); print({kernel_warmup.STATICS_DONE!r}); print('more')")
+    assert w.wait_for(kernel_warmup.STATICS_DONE)  # the line after other output
+    assert w.wait() == 0 and w.proc is None and not w.wait_for(kernel_warmup.STATICS_DONE)
+    w = child("print('statics kernel')")  # not the line, then the end of its output
+    assert not w.wait_for(kernel_warmup.STATICS_DONE)
+    w.wait()
+
+
 def test_pending_until_returned_or_on_disk(tmp_path, monkeypatch):
     monkeypatch.setenv(op_cache.CACHE_VARIABLE, str(tmp_path / "cache"))
     operating_point.cache_clear()
@@ -76,11 +98,15 @@ def test_started_only_when_it_can_help(monkeypatch):
 CHILD = """import json, warnings
 import numpy as np
 from numba.core import event
-count = {"make": 0, "reset": 0}
+count = {"make": 0, "reset": 0, "statics": 0}
 phase = ["make"]
 class Count(event.Listener):
     def on_start(self, ev):
         count[phase[0]] += 1
+        f = ev.data["dispatcher"].py_func
+        integrate_rhs = f.__module__.endswith("kernels.integrate") and f.__name__ == "rhs"
+        if integrate_rhs and str(ev.data["args"][4].types[0]).startswith("Rigid2D("):  # (t, x, u, dx, model, work)
+            count["statics"] += 1  # the static equilibrium's right-hand side (the cable without the station)
     def on_end(self, ev):
         pass
 event.register("numba:compile", Count())
@@ -112,4 +138,5 @@ def test_warmed_up_start_compiles_nothing_at_reset_and_gives_the_same_bits(tmp_p
     warm = fresh(tmp_path / "warm", warmup=True)
     assert own["count"]["reset"] > 0  # the oracle compiled its kernels itself, at the first reset
     assert warm["count"]["reset"] == 0  # loaded from what the second process compiled
+    assert own["count"]["statics"] == 1 and warm["count"]["statics"] == 0  # the statics' kernel compiled there too
     assert warm["bits"] == own["bits"]

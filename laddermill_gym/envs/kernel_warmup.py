@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import os
 import pickle
+import select
 import subprocess
 import sys
 
@@ -46,6 +47,20 @@ class Warmup:
         self.proc = proc
         self.returncode: int | None = None
 
+    def wait_for(self, line: str) -> bool:
+        """Wait (at most :data:`WAIT_LIMIT_S`) until the process prints ``line`` on its standard output (started
+        with ``signals``); False when it ended, was waited for or closed its output first."""
+        out = None if self.proc is None else self.proc.stdout
+        if out is None:
+            return False
+        while select.select([out], [], [], WAIT_LIMIT_S)[0]:
+            got = out.readline()
+            if not got:
+                return False
+            if got.decode(errors="replace").strip() == line:
+                return True
+        return False
+
     def wait(self) -> int | None:
         """Wait for the process; its exit code (None if it had to be stopped)."""
         if self.returncode is None and self.proc is not None:
@@ -54,6 +69,8 @@ class Warmup:
             except subprocess.TimeoutExpired:
                 self.proc.kill()
                 self.proc.wait()
+            if self.proc.stdout is not None:
+                self.proc.stdout.close()
             self.proc = None
         return self.returncode
 
@@ -81,17 +98,20 @@ def on_disk(kernels) -> bool:
     return False
 
 
-def start(target: str, task_kwargs: dict, kernels, cached_check: bool = False) -> Warmup | None:
+def start(target: str, task_kwargs: dict, kernels, cached_check: bool = False,
+          signals: bool = False) -> Warmup | None:
     """Launch the warm-up process that calls ``target`` (``"module:function"``, a function of one dict) with
     ``task_kwargs`` when :func:`enabled` (and, with ``cached_check``, ``kernels`` are not :func:`on_disk`); None
-    when not (or when the arguments do not pickle)."""
+    when not (or when the arguments do not pickle). With ``signals`` its standard output is a pipe the target
+    prints lines on (:meth:`Warmup.wait_for`); else it is discarded."""
     if not enabled(kernels) or (cached_check and on_disk(kernels)):
         return None
     try:
         payload = pickle.dumps((str(target), dict(task_kwargs)))
     except Exception:  # an argument that does not pickle: compile here as before
         return None
-    proc = subprocess.Popen([sys.executable, "-m", CHILD_MODULE], stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+    proc = subprocess.Popen([sys.executable, "-m", CHILD_MODULE], stdin=subprocess.PIPE,
+                            stdout=subprocess.PIPE if signals else subprocess.DEVNULL,
                             stderr=subprocess.DEVNULL, env=dict(os.environ))
     try:
         proc.stdin.write(payload)

@@ -38,7 +38,12 @@ from laddermill_gym.ladder.scene import Scene, load_scene, options_kwargs
 from laddermill_gym.model.states import planar_to_3d
 
 __all__ = ["OperatingPoint", "SettleConfig", "compute_operating_point", "operating_point", "cached_operating_point",
-           "mill_scene", "nominal_positions", "operating_point_pending"]
+           "mill_scene", "nominal_positions", "operating_point_pending", "SEARCH_HOOK"]
+
+#: a function (scene, options) that :func:`compute_operating_point` calls first, or None: LadderMill's kernel warm-up
+#: (``envs/laddermill/kernel_warmup.py``) compiles the search's kernels there while its second process compiles the
+#: static equilibrium's; it computes nothing the operating point depends on
+SEARCH_HOOK: list = [None]
 
 
 @dataclass(frozen=True)
@@ -139,6 +144,8 @@ def compute_operating_point(scene: str = "laddermill", options: tuple = (), sett
     :func:`operating_point`). ``options``: sorted (key, value) ``load_scene`` overrides (no ``dimension``)."""
     settle = settle or SettleConfig()
     sc2 = mill_scene(scene, options, 2)
+    if SEARCH_HOOK[0] is not None:  # LadderMill's kernel warm-up: the in-plane kernels compiled on two cores
+        SEARCH_HOOK[0](scene, options)
     sim = sc2.simulator()
     controls = sim.controls.copy()
     # the tensions of the last period only (its mean tensions below; the same bits, a fifth less work per step)

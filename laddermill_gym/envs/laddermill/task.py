@@ -26,6 +26,7 @@ from laddermill_gym.envs.laddermill.observation import (
     mill_observation_bounds,
 )
 from laddermill_gym.envs.laddermill.operating_point import (
+    SEARCH_HOOK,
     OperatingPoint,
     SettleConfig,
     mill_scene,
@@ -114,10 +115,7 @@ class MillTask(TaskCore):
         settings = env_physics_settings(sc.settings, physics_step, physics_dt, self.control_dt)
         self.n_substeps = substeps_per_period(sc.name, settings, self.control_dt, control_dt)
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
-        warmup = None  # the 3D kernels compiled in a second process while the operating point is computed
-        if operating_point is None and operating_point_pending(str(scene), options, self.settle):
-            warmup = kernel_warmup.start(task_kwargs, (step_observe_batch, step_observe_serial))
-        self.op = self._operating_point(operating_point, str(scene), options)
+        self.op, warmup = self._operating_point_warmup(operating_point, str(scene), options, task_kwargs)
         rp = self.reward_config.reference_power_W
         self.p_ref = self.op.reference_power_W if rp is None else float(rp)
         self.generator_torque = bool(generator_torque)
@@ -156,6 +154,21 @@ class MillTask(TaskCore):
             warmup.wait()
 
     # ------------------------------------------------------------------ construction
+    def _operating_point_warmup(self, given, scene: str, options: tuple, task_kwargs: dict):
+        """(:meth:`_operating_point`, the kernel warm-up or None): when the operating point is to be computed, a
+        second process compiles kernels meanwhile (``envs/laddermill/kernel_warmup.py``): the static equilibrium's
+        while this one compiles the search's (``SEARCH_HOOK``), then this task's 3D step kernels."""
+        warmup = None
+        if given is None and operating_point_pending(scene, options, self.settle):
+            warmup = kernel_warmup.start(task_kwargs, (step_observe_batch, step_observe_serial))
+        if warmup is None:
+            return self._operating_point(given, scene, options), None
+        SEARCH_HOOK[0] = lambda sc, opts: kernel_warmup.before_search(warmup, sc, opts)
+        try:
+            return self._operating_point(given, scene, options), warmup
+        finally:
+            SEARCH_HOOK[0] = None
+
     def _operating_point(self, given, scene: str, options: tuple) -> OperatingPoint:
         """The given operating point (checked against the scene) or the memoised one of (scene, options, settle)."""
         sc = self.scene

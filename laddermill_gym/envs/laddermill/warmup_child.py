@@ -1,9 +1,10 @@
 """The mill's target of the kernel warm-up (``envs/kernel_warmup.py``, ``envs/laddermill/kernel_warmup.py``, issue
 32 point 1): :func:`compile_for`, called in the second process (``python -m laddermill_gym.envs.warmup_run``; ``python
 -m laddermill_gym.envs.laddermill.warmup_child`` reads the arguments pickled on stdin too) with the arguments of a
-:class:`~laddermill_gym.envs.laddermill.task.MillTask`, builds that task around :func:`stand_in_point` and resets and
-steps it once, so that numba compiles the kernels those calls reach and writes them to its on-disk cache for the
-process that started it."""
+:class:`~laddermill_gym.envs.laddermill.task.MillTask`, compiles the in-plane static equilibrium's kernel and prints a
+line (``kernel_warmup.STATICS_DONE``), then builds that task around :func:`stand_in_point` and resets and steps it
+once, so that numba compiles the kernels those calls reach and writes them to its on-disk cache for the process that
+started it."""
 
 from __future__ import annotations
 
@@ -37,14 +38,20 @@ def stand_in_point(scene, cable_speed: float):
 
 
 def compile_for(task_kwargs: dict) -> None:
-    """Build the task of ``task_kwargs`` around :func:`stand_in_point`, reset every copy and take one step with
-    the zero action: numba compiles (and caches) the kernels those calls reach."""
+    """Compile the static equilibrium's kernel of the task's in-plane scene (``kernel_warmup.compile_statics``) and
+    print ``kernel_warmup.STATICS_DONE``, then build the task of ``task_kwargs`` around :func:`stand_in_point`,
+    reset every copy and take one step with the zero action: numba compiles (and caches) the kernels those calls
+    reach."""
+    from laddermill_gym.envs.laddermill.kernel_warmup import STATICS_DONE, compile_statics
     from laddermill_gym.envs.laddermill.operating_point import mill_scene
     from laddermill_gym.envs.laddermill.task import MillTask
     from laddermill_gym.ladder.scene import options_key
 
-    options = {k: v for k, v in dict(task_kwargs.get("scene_options") or {}).items() if k != "dimension"}
-    scene = mill_scene(str(task_kwargs.get("scene", "laddermill")), options_key(options), 3)
+    name = str(task_kwargs.get("scene", "laddermill"))
+    options = options_key({k: v for k, v in dict(task_kwargs.get("scene_options") or {}).items() if k != "dimension"})
+    compile_statics(name, options)
+    print(STATICS_DONE, flush=True)  # the first process waits for it before its static equilibrium
+    scene = mill_scene(name, options, 3)
     speed = float(scene.assembly.station.speed_values[-1])
     op = stand_in_point(scene, speed if math.isfinite(speed) and speed > 0 else 1.0)
     task = MillTask(**dict(task_kwargs, operating_point=op))
