@@ -214,12 +214,13 @@ BENCHMARKS = Covered(
         '(38.0 s) runs beside it. With one core busy elsewhere, both processes share the other and nothing is '
         'gained (100.2 / 101.5 s). **The 60 s target is not met** (69.6 s). The warm start is unchanged (1.2-1.6 '
         's CPU; adds one scene key and a file check).',
-        'Quiet (load 0.7-1.3): 68.7 s wall, CPU 67.9 s + 46.2 s, 48 functions compiled in the first: its path did'
-        " not get shorter (the static equilibrium's kernel was compiled again in the first process) and the "
-        "second process spent 8 s more. Its key is not the cause: after a process made ' calls on the 11-wing "
-        'mill, a fresh process building with and the same empty loaded of the station-less kind and its callees '
-        '("data loaded") and compiled only the moving cable\'s kind (8 functions); the cause was not found. 60 s '
-        'would need that split (about 12 s), a cheaper periodic search (about 30 s) or fewer layers.',
+        # the in-plane split, back (ce9ca25): alternated rounds of 2026-11-30
+        'the slow counts its compiles in the first process, 1 without the warm-up, 0 with it (same bits). The '
+        'callees both kernels share (wind, aerodynamics, the block solve) compile in both, so about 5.5 s moves. , '
+        'caches empty, three rounds alternated with the code before (2026-11-30, load 2.4-7): first process 52.9 / '
+        '54.5 / 54.0 -> 48.0 / 48.6 / 48.7 s CPU, second 29-31 -> 38-40 s; wall 207.8 / 210.2 / 128.6 -> 216.9 / '
+        '184.3 / 133.3 s (no gain under that load; a quiet pair not measured yet). 60 s would need a cheaper '
+        'periodic search (about 30 s) or fewer layers.',
         "(c27a42a, load 0.5-3): 60.8 s CPU, 69 functions; the step kernel's nest 45.9 s (own CPU: 10.3, 6.8, 5.4,"
         " its callees 23.2), the static start's in-plane right-hand side 11.1 s, the read-outs at the first step "
         '1.6 s. The same second process now serves every env ( , ): the wing and craft tasks start it first thing'

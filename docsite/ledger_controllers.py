@@ -171,7 +171,7 @@ CONTROLLERS = Covered(
         '5 to 10) kept its 6.0 M-step policy (94 / 184), which scores 10 / 12 (NTM_IB seed 0 at 23.30 s, seed 1 '
         "at 29.40 s; dryden_moderate) and survives 80 of the 200 held-out fields against the shipped policy's 88 "
         '(p = 0.396): no better.',
-        # helper A's paragraph of 2026-11-29: the residual policy's training run (45 min) and its evaluations
+        # the residual paragraph (2026-11-29): the residual policy's training run (45 min) and its evaluations
         "( , ) makes the action mean the LQR's own unclipped float64 action (computed by from gains and trim held"
         ' in the policy, never trained) plus an MLP (64, 64) and a linear layer whose last layers start at zero, '
         'rounded to float32 once as the LQR rounds its action; so the untrained policy acts as the LQR bit for '
@@ -185,7 +185,7 @@ CONTROLLERS = Covered(
         ' 0 at 23.25 s and seed 1 at 30.40 s, beta outside the aerodynamic range; dryden_moderate, as the LQR), '
         "and on the 200 held-out NTM-IB fields it survives 79 against the shipped policy's 88 (both 52, only the "
         'shipped 36, only the residual 27, neither 85; p = 0.314; ): not shipped.',
-        # helper A's paragraph of 2026-11-30: the bounded residual's training run (45 min) and its evaluations
+        # the bounded residual paragraph (2026-11-30): the bounded residual's training run (45 min) and its evaluations
         'A bounded residual did not either, on gusts-v1, though it is the best policy yet on the held-out fields. '
         '( , otherwise the config above) passes the residual through 0.2 tanh(r / 0.2), so the deterministic '
         "action stays within 0.2 of the half range of the LQR's in every control and the untrained policy is "
