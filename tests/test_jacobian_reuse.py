@@ -94,3 +94,14 @@ def test_bad_values_raise_naming_the_value(bad):
 def test_a_method_without_a_jacobian_is_refused():
     with pytest.raises(ValueError, match="jacobian_every = 4: only the fixed-step W-methods.*'rk4'"):
         IntegratorSettings(method="rk4", dt=0.01, jacobian_every=4)
+
+
+def test_the_env_argument_is_checked_by_name():
+    from laddermill_gym.envs.physics_step import jacobian_settings
+
+    w = IntegratorSettings(method="ros34pw2", dt=0.05)
+    assert jacobian_settings(w, 1).jacobian_every == 1 and jacobian_settings(w, 3).jacobian_every == 3
+    with pytest.raises(ValueError, match=r"jacobian_every = 0: must be an integer >= 1"):
+        jacobian_settings(w, 0)
+    with pytest.raises(ValueError, match=r"jacobian_every = 2: only a W-method .*'rk4'"):
+        jacobian_settings(IntegratorSettings(method="rk4", dt=0.01), 2)
