@@ -121,3 +121,16 @@ def env_physics_settings(settings, physics_step: str | None, physics_dt: float |
     else:
         dt = float(physics_dt)
     return dataclasses.replace(settings, method=method, dt=dt)
+
+
+def jacobian_settings(settings, jacobian_every):
+    """``settings`` with the iteration matrix of its W-method kept for ``jacobian_every`` steps (the env argument;
+    ``IntegratorSettings.jacobian_every``). ValueError naming the argument and its value unless an integer >= 1,
+    or > 1 with a method that is not a fixed-step W-method."""
+    k = jacobian_every
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 1:
+        raise ValueError(f"jacobian_every = {k!r}: must be an integer >= 1 (physics steps per Jacobian)")
+    if k != 1 and settings.method not in W_METHODS:
+        raise ValueError(f"jacobian_every = {k!r}: only a W-method reuses its Jacobian (the physics step is "
+                         f"{settings.method!r})")
+    return dataclasses.replace(settings, jacobian_every=int(k))

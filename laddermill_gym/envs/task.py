@@ -18,7 +18,7 @@ from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.envs import kernel_warmup
 from laddermill_gym.envs.actions import ActionMap, clip_actions, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds, wing_lateral_offsets
-from laddermill_gym.envs.physics_step import physics_scene_options, stable_physics_step
+from laddermill_gym.envs.physics_step import jacobian_settings, physics_scene_options, stable_physics_step
 from laddermill_gym.envs.task_base import (
     TaskCore,
     default_parallel,
@@ -134,6 +134,10 @@ class WingTask(TaskCore):
     wind_dt : float
         Spacing [s] of the sampled wind modulation.
     reward, termination : dict or RewardConfig / TerminationConfig
+    jacobian_every : int
+        Physics steps per iteration matrix of a W-method step (default 1: built every step, the registered ids'
+        bits); k > 1 keeps it for k steps (``kernels/rigid/rosenbrock.py`` ``with_jacobian_reuse``: same order,
+        other last bits; an opt-in speed option, docs/benchmarks.md).
     parallel : bool, optional
         Step the copies on numba's thread pool (default: from 32 copies on, from 2 for a scene of 500 states or
         more: ``task_base.default_parallel``); small batches of a small model run faster on one thread.
@@ -147,7 +151,7 @@ class WingTask(TaskCore):
                  control_dt: float = 0.05, physics_dt: float | None = None, action_mode: str = "tail",
                  groups="per_wing", alpha_servo_tau: float = 0.0, episode_time: float = 300.0,
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
-                 parallel: bool | None = None, physics_step: str | None = None):
+                 parallel: bool | None = None, physics_step: str | None = None, jacobian_every: int = 1):
         task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
         # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py)
         warmup = kernel_warmup.start(WARMUP_TARGET, task_kwargs, (step_observe_batch, step_observe_serial), True)
@@ -163,6 +167,7 @@ class WingTask(TaskCore):
         self.scene, x_trim, u_trim, self.physics_step_note = _stable_step_scene(
             str(scene), options, (sc, x_trim, u_trim), control_dt, self.disturbances, episode_time, wind_dt)
         sc, asm = self.scene, self.scene.assembly
+        settings = sc.settings if jacobian_every == 1 else jacobian_settings(sc.settings, jacobian_every)
         self.n_substeps = int(round(control_dt / sc.settings.dt))
         self.control_dt = float(control_dt)
         self.episode_time = float(episode_time)
@@ -178,7 +183,7 @@ class WingTask(TaskCore):
         self.parallel = default_parallel(self.n_copies, asm.state_size, parallel)
         self._kernel = step_observe_batch if self.parallel else step_observe_serial
         n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
-        self.batch = BatchSimulator(asm, self.n_copies, sc.settings, n_modulation=max(2, n_mod),
+        self.batch = BatchSimulator(asm, self.n_copies, settings, n_modulation=max(2, n_mod),
                                     n_grid=0 if geom is None else geom.floats)
         B = self.n_copies
         self.nominal = np.ascontiguousarray(x_trim[: B3_SIZE * nw].reshape(nw, B3_SIZE)[:, B3_POS: B3_POS + 3])

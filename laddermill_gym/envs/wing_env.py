@@ -68,7 +68,8 @@ OBS_TABLE
     ## Arguments
 
     Those of :class:`laddermill_gym.envs.task.WingTask` (scene, scene_options, control_dt, physics_dt,
-    physics_step, action_mode, groups, alpha_servo_tau, episode_time, disturbances, wind_dt, reward, termination)
+    physics_step, jacobian_every, action_mode, groups, alpha_servo_tau, episode_time, disturbances, wind_dt, reward,
+    termination)
     and ``render_mode`` ("rgb_array" or "human").
 
     ## Version History

@@ -45,7 +45,7 @@ def copy_views(b, M, kind, vehicle, WB, AB):
                WB.Ts[b], WB.er[b], WB.es[b], WB.coef[b], WB.aout[b], WB.vout[b], WB.vscratch[b], WB.k1[b],
                WB.k2[b], WB.k3[b], WB.k4[b], WB.k5[b], WB.k6[b], WB.k7[b], WB.xt[b], WB.xp[b], WB.Dm[b], WB.Um[b],
                WB.Ds[b], WB.Us[b], WB.Rn[b], WB.ke[b], WB.kb[b], WB.seg_tmod[b], WB.seg_ms[b], WB.seg_md[b],
-               WB.Yw[b], WB.pivw[b])
+               WB.Yw[b], WB.pivw[b], WB.wjac[b])
     return Mb, Wb
 
 

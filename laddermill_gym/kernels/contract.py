@@ -324,12 +324,14 @@ KAir = namedtuple("KAir", ["tmod", "ms", "md", "gp", "gv"])
 #: load derivatives with its attitude (``kb`` (n_bodies, 6, 3) [N/rad, N m/rad], ``kernels/rigid/body_jacobian.py``),
 #: the wind modulation's line on a step between kinks (``seg_tmod`` (TM_SIZE,), ``seg_ms``, ``seg_md`` (4,):
 #: ``kernels/fixed_steps.py``), and the factored iteration matrix's coupling blocks and pivots (``Yw``, ``pivw``;
-#: its factored diagonal blocks in ``Ds``: ``kernels/rigid/blocks.py`` ``tree_factor``).
+#: its factored diagonal blocks in ``Ds``: ``kernels/rigid/blocks.py`` ``tree_factor``), and ``wjac`` (1,): h gamma [s]
+#: of the iteration matrix those hold (0: none yet), read only when a W-method reuses it over steps
+#: (``kernels/rigid/rosenbrock.py`` ``with_jacobian_reuse``).
 KWork = namedtuple(
     "KWork",
     ["D", "U", "Y", "piv", "bv", "Rw", "tension", "Tr", "Ts", "er", "es", "coef", "aout", "vout", "vscratch",
      "k1", "k2", "k3", "k4", "k5", "k6", "k7", "xt", "xp", "Dm", "Um", "Ds", "Us", "Rn", "ke", "kb",
-     "seg_tmod", "seg_ms", "seg_md", "Yw", "pivw"],
+     "seg_tmod", "seg_ms", "seg_md", "Yw", "pivw", "wjac"],
 )
 
 #: The packed model holds no kind marker: numba's prange lowering cannot pass a namedtuple nested in the model

@@ -220,4 +220,5 @@ def make_workspace(asm: Assembly, n_vout: int = 1, n_vscratch: int = 1) -> KWork
         Dm=z((nb, 6, 6)), Um=z((nb, 6, 6)), Ds=z((nb, 6, 6)), Us=z((nb, 6, 6)), Rn=z((max(1, asm.n_wings), 3, 3)),
         ke=z((max(1, asm.elements.count), C.KE_SIZE)), kb=z((max(1, asm.n_wings), 6, 3)),
         seg_tmod=z(C.TM_SIZE), seg_ms=z(4), seg_md=z(4), Yw=z((nb, 6, 6)), pivw=z((nb, 6), dtype=np.int64),
+        wjac=z(1),
     )

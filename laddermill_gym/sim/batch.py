@@ -18,7 +18,7 @@ from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.memory import over_limit
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import Assembly
-from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, W_METHODS, breaks_mode
+from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, W_METHODS, breaks_mode, fixed_tableau
 from laddermill_gym.sim.simulator import IntegratorSettings, limits_array
 
 #: Status codes a smaller step may avoid: a singular matrix, a non-finite state, a speed or rate beyond the limits.
@@ -84,7 +84,7 @@ class BatchSimulator:
             raise ValueError(f"settings.method = {settings.method!r}: the linearly implicit methods need a 3D rigid "
                              f"model (this one is {type(self.model.kind).__name__}); use 'rk4'")
         #: the kernels' method argument: None (RK4) or the Rosenbrock-W tableau
-        self.tableau = W_METHODS.get(settings.method)
+        self.tableau = fixed_tableau(settings)
         #: the kernels' ``breaks`` argument: how the steps meet the kinks of each copy's wind (``settings.breakpoints``)
         self.breaks = breaks_mode(settings)
         #: (model without markers, kind, vehicle): the parallel kernels' form of ``model``

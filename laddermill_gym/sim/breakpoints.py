@@ -30,7 +30,7 @@ from laddermill_gym.kernels.fixed_steps import (
     is_kink,
 )
 from laddermill_gym.kernels.integrate import dp54_advance
-from laddermill_gym.kernels.rigid.rosenbrock import ROS2, ROS2T, ROS34PW2
+from laddermill_gym.kernels.rigid.rosenbrock import ROS2, ROS2T, ROS34PW2, with_jacobian_reuse
 from laddermill_gym.kernels.rigid.rosenbrock_adaptive import w_adaptive
 
 #: Tableaux of the fixed-step linearly implicit (Rosenbrock-W) methods by name (``kernels/rigid/rosenbrock.py``)
@@ -93,6 +93,15 @@ def breaks_mode(settings) -> int:
     return BREAKS_ENDS if mode == "all" or settings.method != "rk4" else BREAKS_INSIDE
 
 
+def fixed_tableau(settings):
+    """The fixed-step kernels' method argument for ``settings``: None (RK4) or the W-method's tableau, with its
+    iteration matrix kept for ``settings.jacobian_every`` steps (``rosenbrock.with_jacobian_reuse``)."""
+    tableau = W_METHODS.get(settings.method)
+    if tableau is None:
+        return None
+    return with_jacobian_reuse(tableau, settings.jacobian_every)
+
+
 def fixed_pieces(sim, n: int):
     """n steps of ``sim.settings.dt`` of its fixed-step method (RK4 or a Rosenbrock-W method) on ``sim`` (a
     ``Simulator``), a step that holds a kink split at it, each piece with its segment's modulation
@@ -101,7 +110,7 @@ def fixed_pieces(sim, n: int):
     the failed step (or piece)."""
     s = sim.settings
     status, _, t, h = advance_breaks(sim.t, sim.state, sim.controls, s.dt, n, sim.model, sim.work, sim.limits,
-                                     W_METHODS.get(s.method), breaks_mode(s))
+                                     fixed_tableau(s), breaks_mode(s))
     sim.t = t
     return status, h
 

@@ -77,13 +77,13 @@ def trial_state(sim, h: float) -> tuple[float, np.ndarray] | None:
     and ground checks off (the settings' fixed-step method, or DP5(4) to t + h): the step that failed. None if that
     step fails too."""
     from laddermill_gym.kernels.fixed_steps import advance_breaks
-    from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, W_METHODS, breaks_mode
+    from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, breaks_mode, fixed_tableau
 
     s = sim.settings
     x = sim.state.copy()
     lim = relaxed_limits(sim.limits)
     if s.method in FIXED_STEP_METHODS:
-        status = advance_breaks(sim.t, x, sim.controls, h, 1, sim.model, sim.work, lim, W_METHODS.get(s.method),
+        status = advance_breaks(sim.t, x, sim.controls, h, 1, sim.model, sim.work, lim, fixed_tableau(s),
                                 breaks_mode(s))[0]
     else:
         status = dp54_advance(sim.t, sim.t + h, x, sim.controls, h, s.rtol, s.atol, sim.model, sim.work, lim,

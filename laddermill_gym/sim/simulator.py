@@ -64,6 +64,8 @@ class IntegratorSettings:
     splits a step at a kink inside it; "all" also gives a step that ends or starts on a kink its own segment's
     modulation (fourth-order RK4 on a kink grid aligned with the steps; changes such runs slightly); "off"
     integrates across kinks (the behaviour before).
+    jacobian_every : steps per iteration matrix of a fixed-step W-method (1: built every step, the default and the
+    registered envs' bits; k > 1: kept for k steps, ``kernels/rigid/rosenbrock.py`` ``with_jacobian_reuse``).
     """
 
     method: str = "rk4"
@@ -75,8 +77,15 @@ class IntegratorSettings:
     ground_height: float = 0.0
     ground_contact: str = "stop"
     breakpoints: str = "inside"
+    jacobian_every: int = 1
 
     def __post_init__(self):
+        k = self.jacobian_every
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 1:
+            raise ValueError(f"IntegratorSettings.jacobian_every = {k!r}: must be an integer >= 1 (steps per Jacobian)")
+        if k != 1 and self.method not in ("ros2", "ros2t", "ros34pw2"):
+            raise ValueError(f"IntegratorSettings.jacobian_every = {k!r}: only the fixed-step W-methods reuse a "
+                             f"Jacobian (method = {self.method!r})")
         if self.breakpoints not in BREAKPOINT_MODES:
             raise ValueError(f"IntegratorSettings.breakpoints = {self.breakpoints!r}: must be one of "
                              f"{', '.join(repr(m) for m in BREAKPOINT_MODES)}")

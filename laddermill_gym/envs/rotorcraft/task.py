@@ -17,6 +17,7 @@ import numpy as np
 from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.envs import kernel_warmup
 from laddermill_gym.envs.actions import clip_actions
+from laddermill_gym.envs.physics_step import jacobian_settings
 from laddermill_gym.envs.rotorcraft.observation import OBS_Y, craft_observation_bounds
 from laddermill_gym.envs.rotorcraft.settings import (
     InitialNoise,
@@ -93,6 +94,9 @@ class CraftTask(TaskCore):
     initial_noise, reward, termination : dict or InitialNoise / RotorcraftRewardConfig / RotorcraftTerminationConfig
     parallel : bool, optional
         Step the copies on numba's thread pool (default: when B >= 32).
+    jacobian_every : int
+        Physics steps per iteration matrix of the W step (default 1: every step, the registered bits; k > 1 keeps
+        it k steps, ``kernels/rigid/rosenbrock.py`` ``with_jacobian_reuse``: same order, other last bits).
 
     Attributes
     ----------
@@ -116,7 +120,7 @@ class CraftTask(TaskCore):
     def __init__(self, n_copies: int = 1, craft: str = DEFAULT_CRAFT, wind_speed: float | None = None,
                  collective: float | None = None, control_dt: float = 0.05, physics_dt: float | None = None,
                  episode_time: float = 120.0, disturbances=None, wind_dt: float = 0.1, initial_noise=None,
-                 reward=None, termination=None, parallel: bool | None = None):
+                 reward=None, termination=None, parallel: bool | None = None, jacobian_every: int = 1):
         task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
         # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py)
         warmup = kernel_warmup.start(WARMUP_TARGET, task_kwargs,
@@ -130,6 +134,8 @@ class CraftTask(TaskCore):
         self.craft, self.x_trim, self.u_trim = craft_trim(str(craft), wind_speed, collective, physics_dt)
         cfg = self.craft.config
         self.n_substeps = whole_multiple(self.control_dt, cfg.settings.dt, control_dt)
+        # the W step's iteration matrix kept for jacobian_every physics steps (1: every step, the registered bits)
+        self._settings = cfg.settings if jacobian_every == 1 else jacobian_settings(cfg.settings, jacobian_every)
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
         self._build_batch(B, parallel)
         if warmup is not None:  # before the first kernel call: load what it compiled from numba's cache
@@ -155,7 +161,7 @@ class CraftTask(TaskCore):
         c = self.craft
         self.sim = CraftSimulator(c.config, c.assembly, c.layout, self.x_trim, self.u_trim)
         self.scene = CraftScene(c.assembly, c.config.name)
-        self._make_batch(B, c.assembly, c.config.settings, parallel,
+        self._make_batch(B, c.assembly, self._settings, parallel,
                          (craft_step_observe_batch, craft_step_observe_serial), vehicle=self.sim.make_vehicle(),
                          n_controls=self.sim.n_controls, vehicle_sizes=self.sim.vehicle_sizes())
         self.batch.states[:] = self.x_trim

@@ -35,6 +35,7 @@ import math
 
 import numpy as np
 from numba import njit
+from numba.extending import overload
 
 from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
     B3_POS,
@@ -170,13 +171,67 @@ def _stage_increment(xn, r, Ui, M, W, gh):
             Ui[o + N3_POS + i] += gh * W.bv[b, i]
 
 
+#: a held iteration matrix serves steps whose h gamma is within this fraction of its own [-] (rounding of a step
+#: size recomputed from times, not a change of step)
+REUSE_RTOL = 1e-9
+
+
+def with_jacobian_reuse(tableau, every: int):
+    """``tableau`` (a transformed tableau above) whose W step keeps its iteration matrix for ``every`` steps: the
+    bodies' load Jacobian, the cable's stiffness and the factorisation are rebuilt on the steps whose index
+    round(t / dt) is a multiple of ``every`` (so on every episode's first step, t = 0), when the step size changed
+    (beyond ``REUSE_RTOL``) and on a workspace's first step; the other steps solve with the held matrix. Still a
+    W-method of the same order: with the mass matrix M0 and the rotations taken at each step's start, the held
+    matrix S is M0 - h gamma C~ - (h gamma)^2 K~ for the held stiffness K~ and C~ = C_held + (M0 - M_held) /
+    (h gamma), a Jacobian bounded as h -> 0 (Hairer & Wanner II, IV.7: a W-method's order conditions hold for any
+    such J). ``every`` = 1 is the tableau itself (today's bits). ValueError naming the value unless an integer
+    >= 1."""
+    if isinstance(every, bool) or not isinstance(every, (int, np.integer)) or every < 1:
+        raise ValueError(f"jacobian_every = {every!r}: must be an integer >= 1 (steps per Jacobian)")
+    if int(every) == 1:
+        return tableau
+    return tuple(tableau[:6]) + (np.array([int(every)], dtype=np.int64),)
+
+
+def _reuse_every(tableau):
+    """Steps per iteration matrix of ``tableau``: 1 for a plain (6-entry) tableau, else its 7th entry's value
+    (jitted code only; resolved by the tableau's type)."""
+    raise NotImplementedError("_reuse_every is resolved inside numba kernels")
+
+
+@overload(_reuse_every, inline="always")
+def _reuse_every_impl(tableau):
+    if len(tableau) == 6:
+        return lambda tableau: 1
+    return lambda tableau: tableau[6][0]
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
+def _iteration_matrix(t, xp, u, dt, M, W, gh, every):
+    """Build and factor the step's iteration matrix into W.Ds, W.Us, W.Yw, W.pivw (with W.kb, W.ke), unless
+    ``every`` > 1 and the one held (h gamma = W.wjac[0]) is kept for this step (:func:`with_jacobian_reuse`).
+    Returns False if it is singular."""
+    if every > 1:
+        # a step of the same size to rounding (a step run on its own between kinks: h = (t + dt) - t) keeps it
+        if abs(W.wjac[0] - gh) <= REUSE_RTOL * gh and int(math.floor(t / dt + 0.5)) % every != 0:
+            return True
+        W.wjac[0] = 0.0
+    add_body_jacobian(t, xp, u, M, W, gh, gh * gh)
+    add_cable_stiffness(t, xp, M, W, gh, gh * gh)
+    copy_blocks(W.D, W.U, W.Ds, W.Us, M.order, M.bsz)
+    if not tree_factor(W.Ds, W.Us, W.Yw, W.pivw, M.order, M.parent, M.bsz):  # once: the stages share it
+        return False
+    if every > 1:
+        W.wjac[0] = gh
+    return True
+
+
 # inlined into its callers (same flags): no separate compile of the whole W step (issue 32)
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def w_step(t, x, u, dt, M, W, tableau):
     """One step of dt [s] of the Rosenbrock-W method ``tableau`` from (t, x): the stage increments into W.k1..k4,
     x into W.xp, the new state (not yet normalised or checked) into x. Returns OK or SINGULAR (x then restored)."""
-    gam_, alpha, a, c, m, _ = tableau
-    gam = gam_[0]
+    gam, alpha, a, c, m = tableau[0][0], tableau[1], tableau[2], tableau[3], tableau[4]
     stages = (W.k1, W.k2, W.k3, W.k4)
     f, r, xt, xp = W.k5, W.k6, W.xt, W.xp
     ns = x.size
@@ -192,10 +247,7 @@ def w_step(t, x, u, dt, M, W, tableau):
         for i in range(3):
             for j in range(3):
                 W.Rn[k, i, j] = W.Rw[k, i, j]
-    add_body_jacobian(t, xp, u, M, W, gh, gh * gh)
-    add_cable_stiffness(t, xp, M, W, gh, gh * gh)
-    copy_blocks(W.D, W.U, W.Ds, W.Us, M.order, M.bsz)
-    if not tree_factor(W.Ds, W.Us, W.Yw, W.pivw, M.order, M.parent, M.bsz):  # once: the stages share it
+    if not _iteration_matrix(t, xp, u, dt, M, W, gh, _reuse_every(tableau)):
         return SINGULAR
     ut0, ut1, ut2 = 0.0, 0.0, 0.0  # the stages' time increments (the autonomised time's entries of U_i)
     for st in range(s):
