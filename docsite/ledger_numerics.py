@@ -57,6 +57,14 @@ NUMERICS = Covered(
         "omega^2 ~ 1e6 s^-2, a wing's pendulum g / L ~ 0.1 s^-2", "outweigh the wing rows 1e7 to one",
         "some 200 ulps of a 50 m coordinate", "(ratio 4: O(1/n^2);", "as h^0.4 under", "n^-1.4"),
     not_rerun=(  # measured by the studies and tests the page names (tests/test_*.py, work_precision, the stress suite)
+        # the kept iteration matrix (jacobian_every; studies.numerics.jacobian_reuse, 2026-11-30)
+        "(opt-in: , the wing and rotorcraft envs' ; default 1, the registered ids' bits)",
+        "error ratio per halving above 6 with the matrix kept 3 and 8 steps", "a 50 ms step cost 4.66 us of CPU every "
+        "step, 4.01 us kept 2, 3.71 us kept 4, 3.57 us kept 8 (-14, -20, -23 %); over 60 s the largest position error "
+        "against RK4 at 50/128 ms was 3.44, 3.60, 3.96, 4.84 m",
+        "The registered ids keep k = 1.", "2026-11-30, load 3.3-3.4", "With k > 1",
+        "still a W-method of order 3",
+        "controls 0.01 off the trim",
         "(about -5 +- 119i 1/s on", "unstable at 0.05 s on the chain", "with it, at 0.2 s.", "(3.6x softer",
         "error at 0.05 s halves (0.028 against 0.058 m), but its largest stable step falls from 0.2 to 0.1 s (the apex "
         "wings diverge at 7.8 s)", "broke the mill down at 0.2 s", "to 2.4e-5", "ROS34PW2 at 0.2 s 5.9x RK4 on the mill"
