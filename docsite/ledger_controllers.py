@@ -159,8 +159,16 @@ CONTROLLERS = Covered(
         'state the policy leaves nor its recovery is what loses the episode; it is a knife edge. Nor is it the '
         "saturation: both clip alike (the LQR clips its action to [-1, 1], ; SB3's deterministic PPO action is "
         'the Gaussian mean clipped to the action box, no squashing). On 200 held-out NTM-IB fields (seeds 5000 to'
-        ' 5199, used by no selection; ) the LQR survives 70 and the shipped policy 88: both 45, only the LQR 25, '
-        'only the policy 43, neither 87 (exact sign test of the discordant pairs, p = 0.0385).',
+        ' 5199, used by no selection; ) the LQR survives 70 and the shipped policy 79: both 45, only the LQR 25, '
+        'only the policy 34, neither 96 (exact sign test of the discordant pairs, p = 0.298): no clear '
+        'difference. On 2026-11-29 the same command printed 88 for the policy (both 45, only the LQR 25, only the'
+        " policy 43, neither 87; p = 0.0385), and that session's code (420c907) prints 79 today: the code did not"
+        " change it. The policy's deterministic action is a float32 matrix product in torch, whose last bits "
+        "depend on the CPU's kernels (this machine: MKL, AVX512) and even on the batch size (one observation "
+        'alone against 512 at once: up to 4.8e-7 apart); the LQR (float64, our compiled code) prints 70 both '
+        'times. On knife-edge episodes such bits decide survival, so the held-out count is reproducible on one '
+        "machine, not across machines. The comparisons below against the policy's 88 were made on the machine of "
+        '2026-11-29.',
         # reselect over two training seeds, the IA training run (55 min)
         'Selecting on more turbulence did not change the count. validates on 184 drawn episodes (96 NTM-IB and 48'
         ' NTM-IA fields, 24 light Dryden, 16 steps and gusts); flies every checkpoint of the two training seeds '
