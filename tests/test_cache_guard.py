@@ -48,7 +48,9 @@ def _package(tmp_path, callee_value):
 
 
 def _run(tmp_path, guarded):
-    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "NUMBA_CACHE_DIR": ""}
+    # no .pyc: Python's bytecode cache is keyed by the source's mtime in whole seconds and its size, so a callee
+    # rewritten within the second of the first run (same size) would be read from the stale .pyc (CI saw it once)
+    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "NUMBA_CACHE_DIR": "", "PYTHONDONTWRITEBYTECODE": "1"}
     code = textwrap.dedent(RUN.format(root=str(tmp_path), guarded=guarded))
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, check=True)
     return float(out.stdout.strip().splitlines()[-1])
