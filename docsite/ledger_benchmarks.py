@@ -9,8 +9,12 @@ from __future__ import annotations
 from docsite.ledger_kinds import Covered
 
 BENCHMARKS = Covered(
-    groups=('pointmass_benchmark',),
-    checks=((r"at 1 cm \(([\d,]+) elements\)\. The simulation holds ([\d.]+) MB of arrays on two threads",
+    groups=('pointmass_benchmark', 'bench_stable_dt', 'stable_steps'),
+    checks=((r"largest stable RK4 dt \(bisection against DP5; eigenvalue estimate\) \| ([\d.]+) s; ([\d.]+) s \| "
+             r"([\d.]+) s; ([\d.]+) s",  # laddermill bench (the bisection) and laddermill stable-step (the estimate)
+             ("{bench_stable_dt[tethered_wing]}", "~{stable_steps[tethered_wing][rk4]}",
+              "{bench_stable_dt[ladder_chain]}", "~{stable_steps[ladder_chain][rk4]}")),
+            (r"at 1 cm \(([\d,]+) elements\)\. The simulation holds ([\d.]+) MB of arrays on two threads",
              ("{pointmass_benchmark[elements]}", "{pointmass_benchmark[held_MB]}")),
             (r"Voigt damping to ([\d.e-]+) s steps", ("{pointmass_benchmark[explicit_dt]}",))),
     given=(
@@ -248,9 +252,6 @@ BENCHMARKS = Covered(
         '1,020 x 1.6 x 2 = 3,260 for the chain and 800 x 1.9 x 2 = 3,040 for the mill',
     ),
     not_rerun=(
-        # laddermill stable-step SCENE (bisection against DP5(4), seconds each)
-        'largest stable RK4 dt (bisection against DP5; eigenvalue estimate) | 0.0193 s; 0.0190 s | 0.0249 s; '
-        '0.0245 s',
         # python -m laddermill_gym.studies.mill.mill_benchmark (the same run)
         '| largest stable RK4 dt (in-plane disturbance, against DP5; eigenvalue estimate) | 0.0177 s (error at '
         '0.01 s: 1.2 mm); 0.0122 s just after a transfer',

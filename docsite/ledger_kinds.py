@@ -25,3 +25,10 @@ class NotYet:
     reason: str
     groups: tuple = ()
     checks: tuple = ()
+
+
+def row_check(head: str, group: str, keys: tuple) -> tuple:
+    """A check of one Markdown table row: ``head`` (a regular expression of its first cells, as the flattened page
+    writes them) followed by one cell per key, each compared exactly with ``{group[key]}`` (``group`` may index
+    deeper, ``pumping_crosswind[c0]``)."""
+    return (head + "".join(r" \| (\S+)" for _ in keys) + r" \|", tuple(f"{{{group}[{k}]}}" for k in keys))

@@ -5,12 +5,38 @@ turbulence hours not re-run (their commands named); ratios worked from checked f
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, row_check
 from docsite.ledger_papers import PUMPING_CHECKS
 
+CROSSWIND = ("t_cycle", "sim", "matched", "matched_tension", "lansdorp", "schmehl", "static", "fed", "tension_out",
+             "speed_out", "tension_in", "alpha", "max_dy")
+CURVE = ("sim", "matched", "ratio", "nominal", "lansdorp", "T_out", "matched_T_out")
+
+
+def curve_checks(group: str, winds: tuple) -> tuple:
+    """The power-curve table's rows of ``group`` (``power_curve``'s printed table) at ``winds`` [m/s], and its rows
+    without a trim at 4 and 6 m/s."""
+    cells = r" \| (\d+) \| (\d+) \| (\d\.\d\d) \| (\d+) \| (\d+) \| (\d+) \| (\d+) \|"  # not the element-count tables
+    return (tuple((rf"\| {v}{cells}", tuple(f"{{{group}[v{v}][{k}]}}" for k in CURVE)) for v in winds)
+            + tuple((rf"\| {v} \| (no trim) \|", (f"{{{group}[v{v}][failure]:.7}}",)) for v in (4, 6)))
+
+
+#: The crosswind cycle's table (pumping_cycle, about 40 s), its cycle 1 phases and the power curve (power_curve,
+#: 3.5 minutes at a load of 7), each against its command's printed figures.
+CROSSWIND_CHECKS = (
+    row_check(r"\| 0 \(from the trim\)", "pumping_crosswind[c0]", CROSSWIND),
+    row_check(r"\| 1", "pumping_crosswind[c1]", CROSSWIND),
+    (r"in cycle 1 the reel-out phase \((\d+) s\) makes ([\d.]+) MJ at the drum, the reel-in takes (\d+) s at ([\d.]+) "
+     r"m/s mean", tuple(f"{{pumping_crosswind[c1][{k}]}}" for k in ("t_out_s", "energy_out_MJ", "t_in_s", "speed_in"))),
+    *curve_checks("pumping_power_curve", (8, 10, 12, 14, 16, 18, 20)),
+    (r"at 10 m/s (-?\d+) W of reel-out tension, (-?\d+) W of reel-in tension, (-?\d+) W within the phases, (-?\d+) W "
+     r"of the model's transitions", tuple(f"{{pumping_power_curve[v10][{k}]}}" for k in ("out", "in", "within",
+                                                                                      "transitions"))),
+)
+
 PUMPING = Covered(
-    groups=("pumping_cycle_lqr",),
-    checks=PUMPING_CHECKS,
+    groups=("pumping_cycle_lqr", "pumping_crosswind", "pumping_power_curve"),
+    checks=PUMPING_CHECKS + CROSSWIND_CHECKS,
     given=(
         '# The dynamic pumping kite (Lansdorp et al. 2008, issue part 4)',
         "the winch's parameters (the moving cable's with the first fraction 1), the strict reader of the section,"
@@ -194,30 +220,14 @@ PUMPING = Covered(
         'tether comes in and falls upwind of the winch (seen in tuning runs);',
         'at 7 deg it hangs at 84-88 deg, where the zenith limit slows the winch:',
         'the reel-in takes about 170 s at about 1.2 m/s mean, two thirds of the cycle.',
-        # laddermill pumping-cycle --controller crosswind (about 40 s; not a page group)
-        '270.4 | 31711 | 50033 | 66737 | 114703 | 110810 | 3471 | 32609 | 47128 | 2.78 | 5185 | 8.48 | 129.89',
-        '1 | 276.2 | 31440 | 49711 | 67513 | 115592 | 111672 | 3480 | 32259 | 47606 | 2.77 | 5282 | 8.52 | 128.53',
-        'in cycle 1 the reel-out phase (85 s)',
-        'makes 11.2 MJ at the drum, the reel-in takes 192 s at 1.2 m/s mean.',
         "Lansdorp and Schmehl at the config's nominal parameters (5 m/s reel-in, 200 m, the pattern at azimuth 0)"
         ' predict about 4 times more:',
         'their reel-in is 4 times faster.',
         # python -m laddermill_gym.studies.pumping.power_curve (about 3.5 minutes at a load of 7; not a page group)
-        '4 | no trim',
-        '6 | no trim',
-        '8 | 16498 | 29192 | 0.57 | 61728 | 64841 | 29314 | 43041',
-        '10 | 31711 | 50033 | 0.63 | 110810 | 114703 | 47128 | 66737',
-        '12 | 54730 | 81580 | 0.67 | 178590 | 183451 | 68468 | 95291',
-        '14 | 85574 | 121913 | 0.70 | 258354 | 264545 | 93261 | 129873',
-        '16 | 119875 | 167873 | 0.71 | 358700 | 366281 | 118502 | 165782',
-        '18 | 155842 | 217322 | 0.72 | 473691 | 482906 | 143835 | 203667',
-        '20 | 199118 | 280067 | 0.71 | 610381 | 621511 | 173273 | 247103',
         "**On the single element, within 30 % of Schmehl's model at the simulated operating point only at 14-20 "
         'm/s** (ratios 0.702, 0.714, 0.717, 0.711 in :',
         'just inside), not at 8-12 m/s (0.57-0.67).',
         'the ratio is 0.75-0.86 at 10-20 m/s. 2.',
-        'at 10 m/s 15595 W of reel-out tension, 3976 W of reel-in tension, 897 W within the phases, -2147 W of '
-        "the model's transitions):",
         "the simulated reel-out tension is 0.68-0.72 of the model's, the reel-in tension 3.0-15.2 kN against the "
         "model's 0.2-7.2 kN, the simulated cycle 3-4 % shorter.",
         "The aerodynamic force at the flown airspeed is 7-8 % above the tension and 0.74-0.77 of the model's "

@@ -7,9 +7,43 @@ from __future__ import annotations
 from docsite.ledger_kinds import Covered
 
 W, C = "{wind_data[worked][%s]}", "{wind_data[code][%s]}"
+#: The PumpingKite-v0 rows of the gusts-v2 table (laddermill gust-bench --suite gusts-v2 --env
+#: laddermill_gym/PumpingKite-v0 --controllers open_loop lqr, 16 s): survived seeds, the failed seeds' end times, the
+#: median largest lateral excursion [m] and energy ratio, as docsite.study_figures.gust_table writes them.
+PUMPING_SCENARIOS = ("direction_step", "speed_step_20pct", "one_cos_4s", "one_cos_20s", "EOG_IA", "EDC_IA", "NTM_IB")
+GUSTS_V2_CHECKS = tuple(
+    (rf"\| {ctrl} \| {scen} \| (\S+) \| (-|[\d.]+(?:, [\d.]+)*)[^|]*\| (\S+) \| (\S+) \|",
+     tuple(f"{{gusts_v2_pumping[{ctrl}/{scen}][{k}]}}" for k in ("survived", "ends", "lateral", "ratio")))
+    for ctrl in ("open_loop", "lqr") for scen in PUMPING_SCENARIOS) + (
+    (r"61\.3 s: beta ([-\d.]+) deg \(seed 2\)", ("{gusts_v2_pumping[lqr/NTM_IB][beta]}",)),)
+
+#: The LadderMill-v0 rows of the gusts-v2 table (laddermill gust-bench --suite gusts-v2 --env
+#: laddermill_gym/LadderMill-v0 --scenarios EWS_IA NTM_IB dryden_light dryden_moderate --controllers open_loop lqr,
+#: 2 min 50 s): per failed seed, the angles the page names (the page rounds the printed time and angles).
+MILL_ROWS = {("open_loop", "EWS_IA"): (("alpha",),), ("open_loop", "NTM_IB"): (("alpha",), ("beta",), ("alpha",)),
+             ("open_loop", "dryden_light"): (("beta",),) * 3,
+             ("open_loop", "dryden_moderate"): (("beta",), ("alpha",), ("alpha",)),
+             ("lqr", "EWS_IA"): (("alpha", "beta"),), ("lqr", "NTM_IB"): (("beta",),) * 3,
+             ("lqr", "dryden_light"): (("alpha",), ("beta",), ("beta",)), ("lqr", "dryden_moderate"): (("beta",),) * 3}
+
+
+def mill_row(ctrl: str, scen: str, angles: tuple) -> tuple:
+    """The check of one LadderMill-v0 row: survived, each failed seed's time [s], slot and named angles [deg], the
+    median largest lateral excursion [m] and energy ratio."""
+    key = f"gusts_v2_mill[{ctrl}/{scen}]"
+    items = [r"([\d.]+) s:? slot (\d+) " + ", ".join(rf"{a} ([-\d.]+) deg" for a in names) for names in angles]
+    cells = [f"{{{key}[survived]}}"]
+    for i, names in enumerate(angles):
+        cells += [f"~{{{key}[f{i}][t]}}", f"{{{key}[f{i}][slot]}}", *(f"~{{{key}[f{i}][{a}]}}" for a in names)]
+    return (rf"\| {ctrl} \| {scen} \| (\S+) \| " + "; ".join(items) + r" \| (\S+) \| (\S+) \|",
+            (*cells, f"{{{key}[lateral]}}", f"{{{key}[ratio]}}"))
+
+
+GUSTS_V2_CHECKS += tuple(mill_row(c, s, a) for (c, s), a in MILL_ROWS.items())
 WIND = Covered(
-    groups=("wind_data",),
-    checks=((r"Check values \(class IA, 10 m/s, D = 10 m\): EOG V_gust = ([\d.]+) m/s, peak ([\d.]+) m/s at ([\d.]+) "
+    groups=("wind_data", "gusts_v2_pumping", "gusts_v2_mill"),
+    checks=GUSTS_V2_CHECKS + (
+            (r"Check values \(class IA, 10 m/s, D = 10 m\): EOG V_gust = ([\d.]+) m/s, peak ([\d.]+) m/s at ([\d.]+) "
              r"s; EDC theta_e = ([\d.]+) deg", tuple(W % k for k in ("v_gust", "peak", "t_peak", "theta_e"))),
             (r"(\d+) x (\d+) x 3 floats = ([\d.]+) MB \(([\d,]+) bytes\)",
              tuple(W % k for k in ("n_xi", "n_h", "mb", "bytes"))),
@@ -85,25 +119,8 @@ WIND = Covered(
         "random perturbation) |",
         "The loop spans 50 m (the stations) to 3440 m and p . e -100 to 689 m:",
         "(until the LQR-controlled mill fails, near 7 s)",
-        "| open_loop | direction_step | 0/1 | 118.9 s ground contact | 123.6 | - | | open_loop | speed_step_20pct | "
-        "1/1 | - | 0.0 | - | | open_loop | one_cos_4s | 0/1 | 96.7 s ground contact | 91.8 | - | | open_loop | "
-        "one_cos_20s | 0/1 | 110.0 s ground contact | 68.7 | - | | open_loop | EOG_IA | 1/1 | - | 0.0 | - | | "
-        "open_loop | EDC_IA | 0/1 | 71.1 s ground contact | 171.6 | - | | open_loop | NTM_IB | 0/3 | 87.8, 90.2, 74.1"
-        " s ground contact | 71.9 | - | | lqr | direction_step | 1/1 | - | 1.3 | 1.000 | | lqr | speed_step_20pct | "
-        "1/1 | - | 0.0 | 1.968 | | lqr | one_cos_4s | 1/1 | - | 0.4 | 1.001 | | lqr | one_cos_20s | 1/1 | - | 0.6 | "
-        "1.056 | | lqr | EOG_IA | 1/1 | - | 0.0 | 1.000 | | lqr | EDC_IA | 1/1 | - | 22.3 | 1.194 | | lqr | NTM_IB "
-        "| 2/3 | 61.3 s: beta -62.3 deg (seed 2) | 10.2 | 1.141 |",
         "(lateral excursions of 7.6-10.2 m, 14-30 % more energy from the gusts) and loses the third to sideslip at 61 "
         "s.", "(0 m lateral)",
-        "| open_loop | EWS_IA | 0/1 | 14.8 s: slot 100 alpha -30.8 deg | 0.0 | 0.352 | | open_loop | NTM_IB | 0/3 | "
-        "1.4 s slot 0 alpha -162 deg; 7.0 s slot 9 beta 73 deg; 1.5 s slot 0 alpha 113 deg | 1.5 | 0.025 | | "
-        "open_loop | dryden_light | 0/3 | 6.1 s slot 8 beta 63 deg; 8.2 s slot 20 beta 61 deg; 1.3 s slot 0 beta -74 "
-        "deg | 6.4 | 0.103 | | open_loop | dryden_moderate | 0/3 | 1.0 s slot 0 beta -66 deg; 1.4 s slot 0 alpha "
-        "-138 deg; 1.1 s slot 0 alpha 75 deg | 1.5 | 0.019 | | lqr | EWS_IA | 0/1 | 12.4 s: slot 99 alpha -173 deg, "
-        "beta -81 deg | 0.7 | 0.262 | | lqr | NTM_IB | 0/3 | 7.3 s slot 11 beta 75 deg; 6.9 s slot 4 beta 82 deg; "
-        "7.6 s slot 6 beta -66 deg | 1.0 | 0.134 | | lqr | dryden_light | 0/3 | 5.7 s slot 8 alpha -126 deg; 7.5 s "
-        "slot 9 beta -63 deg; 8.2 s slot 12 beta -66 deg | 1.8 | 0.100 | | lqr | dryden_moderate | 0/3 | 5.1 s slot "
-        "8 beta -68 deg; 6.7 s slot 8 beta -66 deg; 5.5 s slot 23 beta 66 deg | 1.9 | 0.089 |",
         "(slots 0-23, 58-1612 m at the operating point), by sideslip beyond 60 deg",
         "lateral offsets of only 1-3 m; open loop, slot 0 (just above the veered station) rolls at 3 rad/s after 1 s "
         "in a faded-in lateral gust of 0.04 m/s (NTM seed 0)", "delays the failure to 5-8 s, when the fade-in has "

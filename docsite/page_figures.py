@@ -45,6 +45,7 @@ from docsite.precision_figures import PRECISION_GROUPS
 from docsite.pumping_figures import PUMPING_GROUPS
 from docsite.rotor_chart_figures import rotor_chart
 from docsite.rotor_figures import parse_rotor_design
+from docsite.study_figures import STUDY_GROUPS, meijaard_files
 from docsite.wind_figures import wind_data
 from docsite.wing_figures import derive_wing
 
@@ -216,7 +217,8 @@ def tethered_wing_lqr() -> dict:
 def meijaard_v1() -> dict:
     """``python -m laddermill_gym.studies.mill.meijaard --out results/meijaard_v1`` (92 s with its periodic searches
     saved there, about 11 minutes without): its ``power.csv`` per case ("2D V_c=1", "2D V_c=2", "2D V_c=5",
-    "3D V_c=2"), every column as a number (or the text it holds)."""
+    "3D V_c=2"), every column as a number (or the text it holds); ``files``: its claims panel and the direction
+    step's ends (:func:`docsite.study_figures.meijaard_files`)."""
     import csv
 
     from docsite.paper_figures import MEIJAARD_OUT
@@ -235,6 +237,7 @@ def meijaard_v1() -> dict:
     for row in found.values():  # "t = 392.55 s: element 0 tension ..." -> 392.55
         m = re.match(r"t = ([\d.]+) s", str(row.get("overload", "")))
         row["overload_s"] = float(m.group(1)) if m else ""
+    found["files"] = meijaard_files(MEIJAARD_OUT)  # its claims panel and the direction step's ends
     return found
 
 
@@ -257,7 +260,7 @@ GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lat
                                                         "1", "--allow-breakdown"]),
           "simulate_tethered_wing": lambda: simulate(["tethered_wing", "--time", "120", "--direction-step", "0.01"]),
           **PUMPING_GROUPS, **MILL_GROUPS, **PRECISION_GROUPS,
-          **CONTROLLER_GROUPS}
+          **CONTROLLER_GROUPS, **STUDY_GROUPS}
 
 
 def measure_pages(pages: list[str] | None = None, have: dict | None = None, more: dict | None = None) -> dict:
