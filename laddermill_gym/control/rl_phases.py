@@ -9,7 +9,9 @@ strictly.
 * ``validation``: every ``every`` env steps the deterministic policy flies ``episodes`` episodes of each named set
   of DRAWN disturbances (seeds ``seed``, ``seed`` + 1, ...; a benchmark's own scripted scenarios and seeds are
   never a validation set), and the policy that survives the most of them is kept as the run's ``best_model.zip``
-  (:mod:`laddermill_gym.harness.validation`).
+  (:mod:`laddermill_gym.harness.validation`); its optional ``selection`` ranks them by episodes survived (the
+  default, ``rule: survived``) or, ``rule: paired``, by episodes survived minus ``penalty`` x the episodes a
+  ``reference`` controller (the LQR) survives and the policy loses, its outcomes flown once per run.
 """
 
 from __future__ import annotations
@@ -22,7 +24,7 @@ from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_dict
 from laddermill_gym.model.configio import ConfigError, Section
 
 __all__ = ["check_disturbances", "DISTURBANCE_BOUNDS", "GRID_EXTENT", "CriticWarmup", "ValidationSet", "Validation",
-           "read_init_from", "read_critic_warmup", "read_validation"]
+           "Selection", "read_init_from", "read_critic_warmup", "read_validation"]
 
 
 @dataclass(frozen=True)
@@ -43,14 +45,26 @@ class ValidationSet:
 
 
 @dataclass(frozen=True)
+class Selection:
+    """How validated policies are ranked: ``rule`` ``survived`` (episodes survived, then the smaller RMS lateral
+    excursion) or ``paired`` (episodes survived minus ``penalty`` [-] x the episodes the ``reference`` controller,
+    a factory spec ``lqr`` or ``lqr:<config>``, survives and the policy loses; then the smaller RMS)."""
+
+    rule: str = "survived"
+    penalty: float = 0.0
+    reference: str = "lqr"
+
+
+@dataclass(frozen=True)
 class Validation:
     """Checkpoint selection on drawn disturbances: every ``every`` env steps, the sets' episodes of
-    ``episode_time`` [s], copy i of a set seeded ``seed + i``."""
+    ``episode_time`` [s], copy i of a set seeded ``seed + i``, ranked by ``selection``."""
 
     every: int
     seed: int
     episode_time: float
     sets: tuple[ValidationSet, ...]
+    selection: Selection = Selection()
 
 
 #: Disturbance parameters a config may set beyond the disturbances' own checks: (bound, why).
@@ -159,5 +173,28 @@ def read_validation(s: Section) -> Validation | None:
             raise sec.error("disturbances", dist, "must list at least one disturbance (drawn per episode)")
         sec.done()
         sets.append(ValidationSet(str(name), episodes, dist))
+    selection = read_selection(v)
     v.done()
-    return Validation(every, seed, episode_time, tuple(sets))
+    return Validation(every, seed, episode_time, tuple(sets), selection)
+
+
+def read_selection(v: Section) -> Selection:
+    """``validation.selection`` (absent: ``rule: survived``, the original ranking): ``rule`` ``survived`` or
+    ``paired``; with ``paired`` a ``penalty`` [-] (> 0, at most 1000: one episode the reference holds and the policy
+    loses costs that many survived ones) and a ``reference`` (``lqr`` or ``lqr:<config>``; default ``lqr``)."""
+    if not v.has("selection"):
+        return Selection()
+    sec = v.section("selection")
+    rule = sec.text("rule", choices=("survived", "paired"))
+    if rule == "survived":
+        for key in ("penalty", "reference"):
+            if sec.has(key):
+                raise sec.error(key, sec.raw(key), "applies only to rule: paired")
+        sec.done()
+        return Selection()
+    penalty = sec.number("penalty", positive=True, high=1000.0, why="survived episodes per lost reference episode")
+    reference = sec.raw("reference", "lqr")
+    if not (isinstance(reference, str) and (reference == "lqr" or reference.startswith("lqr:"))):
+        raise sec.error("reference", reference, "must be 'lqr' or 'lqr:<config>' (the controller paired with)")
+    sec.done()
+    return Selection("paired", float(penalty), reference)

@@ -4,7 +4,9 @@ A run keeps its checkpoints (``checkpoints/step_<n>.zip``, every ``checkpoint_ev
 its validated best; with the observation statistics held fixed (``init_from``) one ``vecnormalize.pkl`` serves them
 all. This flies each of them (and, as a reference, a controller such as ``lqr``) on the validation sets of a config
 (:func:`~laddermill_gym.harness.validation.validate`: drawn episodes, never a benchmark suite's) and names the one
-that survives the most (then the smaller RMS lateral excursion, :func:`~laddermill_gym.harness.validation.score`).
+that survives the most (then the smaller RMS lateral excursion, :func:`~laddermill_gym.harness.validation.score`),
+or, when the config's ``validation.selection`` is ``rule: paired``, the one with the most survived minus ``penalty``
+x the episodes its reference controller (flown once, added to the references if not named) survives and it loses.
 
     python -m laddermill_gym.harness.reselect --config configs/agents/ppo_tethered_wing_severe.yaml \\
         --runs runs/ppo_tethered_wing_seed0 --reference lqr --out results/reselect.csv
@@ -74,33 +76,45 @@ def reselect(config: str | Path, runs: list[str | Path], reference: list[str] = 
              log=print) -> list[dict]:
     """Rows (label, survived, episodes, per-set counts, RMS lateral, seconds, selected) of every policy saved in
     ``runs`` and of the ``reference`` controllers (factory specs), on ``config``'s validation sets; the selected
-    row is the best policy of the runs (references are never selected). Written to ``out`` (CSV) when given."""
+    row is the best policy of the runs (references are never selected) by the config's ``validation.selection``
+    (:func:`~laddermill_gym.harness.validation.score`; rows carry ``lost_to_reference``, blank under the default
+    rule, and ``score``). Written to ``out`` (CSV) when given."""
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.rl_config import load_rl_config
-    from laddermill_gym.harness.validation import score, validate
+    from laddermill_gym.harness.validation import lost_to_reference, score, validate
 
     cfg = load_rl_config(config)
     if cfg.validation is None:
         raise ValueError(f"{config}: no validation section (the sets to select on)")
     kw = cfg.carried_env_kwargs()
+    sel = cfg.validation.selection
+    reference = list(reference) + ([sel.reference] if sel.rule == "paired" and sel.reference not in reference else [])
     jobs = [(spec, None, None) for spec in reference]
     for run in runs:
         jobs += candidates(Path(run))
-    rows = []
+    rows, results = [], {}
     for label, model_file, stats in jobs:
         t0 = time.process_time()
         ctrl = make_controller(label, cfg.env_id, kw) if model_file is None else _load(model_file, stats)
-        res = validate(ctrl, cfg.env_id, kw, cfg.validation)
+        res = results[label] = validate(ctrl, cfg.env_id, kw, cfg.validation)
         rows.append(dict(label=label, survived=res["survived"], episodes=res["episodes"], per_set=res["per_set"],
                          rms_lateral_m=round(res["rms_lateral_m"], 3), cpu_s=round(time.process_time() - t0, 1),
                          reference=int(model_file is None), selected=0))
         log(f"{label}: {res['survived']}/{res['episodes']} {res['per_set']} RMS lateral "
             f"{res['rms_lateral_m']:.2f} m ({rows[-1]['cpu_s']} CPU s)")
+    for r in rows:
+        res = results[r["label"]]
+        r["lost_to_reference"] = lost_to_reference(res, results[sel.reference]) if sel.rule == "paired" else ""
+        r["score"] = score(dict(res, rms_lateral_m=r["rms_lateral_m"], lost_to_reference=r["lost_to_reference"]),
+                           sel)[0]
+        r["selected"] = r.pop("selected")  # the last column
     policies = [r for r in rows if not r["reference"]]
     if policies:
-        best = max(policies, key=lambda r: score(dict(survived=r["survived"], rms_lateral_m=r["rms_lateral_m"])))
+        best = max(policies, key=lambda r: score(r, sel))
         best["selected"] = 1
-        log(f"selected: {best['label']} ({best['survived']}/{best['episodes']})")
+        log(f"selected: {best['label']} ({best['survived']}/{best['episodes']}"
+            + (f", {best['lost_to_reference']} lost that {sel.reference} holds, score {best['score']:g}"
+               if sel.rule == "paired" else "") + ")")
     if out is not None:
         Path(out).parent.mkdir(parents=True, exist_ok=True)
         with open(out, "w", newline="") as fh:

@@ -5,7 +5,9 @@
   critic alone; the learning rate of that phase replaces the config's until it ends.
 * :func:`validate`: the deterministic policy on every validation set (``run_episodes`` of the gust benchmark: one
   vector-env copy per episode, copy i seeded ``seed + i``), scored by the episodes survived, then by the smaller
-  RMS lateral excursion (:func:`score`).
+  RMS lateral excursion (:func:`score`); with ``selection.rule: paired`` by the episodes survived minus ``penalty``
+  x the episodes the reference controller (flown once per run, same seeds) survives and the policy loses
+  (:func:`lost_to_reference`), then the smaller RMS.
 """
 
 from __future__ import annotations
@@ -16,10 +18,12 @@ import time
 
 import numpy as np
 
-__all__ = ["TrainingPhases", "freeze_actor", "set_learning_rate", "validate", "score", "VALIDATION_FIELDS"]
+__all__ = ["TrainingPhases", "freeze_actor", "set_learning_rate", "validate", "score", "lost_to_reference",
+           "VALIDATION_FIELDS"]
 
 #: columns of a run's ``validation.csv``
-VALIDATION_FIELDS = ("steps", "minutes", "survived", "episodes", "rms_lateral_m", "per_set", "selected")
+VALIDATION_FIELDS = ("steps", "minutes", "survived", "episodes", "rms_lateral_m", "per_set", "lost_to_reference",
+                     "score", "selected")
 
 
 def freeze_actor(model, frozen: bool) -> None:
@@ -44,24 +48,42 @@ def set_learning_rate(model, rate: float) -> None:
 def validate(controller, env_id: str, env_kwargs: dict, validation) -> dict:
     """Episodes survived by ``controller`` (``predict`` on raw observations) on every set of ``validation``
     (:class:`~laddermill_gym.control.rl_phases.Validation`) on ``env_id`` with ``env_kwargs`` (the training's
-    carried arguments). Returns ``survived``, ``episodes``, ``rms_lateral_m`` (over all episodes' steps) and
-    ``per_set`` (name -> survived)."""
+    carried arguments). Returns ``survived``, ``episodes``, ``rms_lateral_m`` (over all episodes' steps),
+    ``per_set`` (name -> survived) and ``outcomes`` (name -> tuple of 0/1 per episode, 1 survived, in seed
+    order)."""
     from laddermill_gym.studies.gusts.gust_bench import run_episodes
 
-    survived, episodes, sq, steps, per_set = 0, 0, 0.0, 0, {}
+    survived, episodes, sq, steps, per_set, outcomes = 0, 0, 0.0, 0, {}, {}
     for vs in validation.sets:
         seeds = list(range(validation.seed, validation.seed + vs.episodes))
         rec = run_episodes(controller, env_id, env_kwargs, seeds, validation.episode_time, vs.disturbances)
-        ok = int(np.sum(np.asarray(rec["failure"]) == 0))
-        per_set[vs.name] = ok
+        alive = tuple(int(f == 0) for f in np.asarray(rec["failure"]))
+        ok = sum(alive)
+        per_set[vs.name], outcomes[vs.name] = ok, alive
         survived, episodes = survived + ok, episodes + vs.episodes
         sq, steps = sq + float(np.sum(rec["lateral_sq"])), steps + int(np.sum(rec["steps"]))
-    return dict(survived=survived, episodes=episodes, rms_lateral_m=math.sqrt(sq / max(steps, 1)), per_set=per_set)
+    return dict(survived=survived, episodes=episodes, rms_lateral_m=math.sqrt(sq / max(steps, 1)), per_set=per_set,
+                outcomes=outcomes)
 
 
-def score(result: dict) -> tuple[int, float]:
-    """The order of validation results: more episodes survived, then a smaller RMS lateral excursion."""
-    return result["survived"], -result["rms_lateral_m"]
+def lost_to_reference(result: dict, reference: dict) -> int:
+    """Episodes the ``reference`` result survives and ``result`` loses: both :func:`validate` results of the same
+    sets and seeds (their ``outcomes``, paired episode by episode). ValueError when the sets or counts differ."""
+    ours, theirs = result["outcomes"], reference["outcomes"]
+    if list(ours) != list(theirs) or any(len(ours[k]) != len(theirs[k]) for k in ours):
+        raise ValueError(f"unpaired validation results: sets {[(k, len(v)) for k, v in ours.items()]} against the "
+                         f"reference's {[(k, len(v)) for k, v in theirs.items()]}")
+    return sum(int(r == 1 and o == 0) for k in ours for o, r in zip(ours[k], theirs[k], strict=True))
+
+
+def score(result: dict, selection=None) -> tuple[float, float]:
+    """The order of validation results (larger is better). ``selection`` None or ``rule: survived``
+    (:class:`~laddermill_gym.control.rl_phases.Selection`): more episodes survived, then a smaller RMS lateral
+    excursion. ``rule: paired``: episodes survived minus ``selection.penalty`` x ``result["lost_to_reference"]``
+    (:func:`lost_to_reference`), then the smaller RMS."""
+    if selection is None or selection.rule == "survived":
+        return result["survived"], -result["rms_lateral_m"]
+    return result["survived"] - selection.penalty * result["lost_to_reference"], -result["rms_lateral_m"]
 
 
 class TrainingPhases:
@@ -87,19 +109,39 @@ class TrainingPhases:
         ctrl = SB3Controller(self.model, *((vn.obs_rms.mean, vn.obs_rms.var, vn.clip_obs, vn.epsilon)
                                            if vn is not None else ()))
         res = validate(ctrl, self.cfg.env_id, self.cfg.carried_env_kwargs(), self.cfg.validation)
-        selected = self.best_val is None or score(res) > score(self.best_val)
+        sel = self.cfg.validation.selection
+        if sel.rule == "paired":
+            res["lost_to_reference"] = lost_to_reference(res, self.reference_result())
+        selected = self.best_val is None or score(res, sel) > score(self.best_val, sel)
         if selected:
             self.best_val = res
             self._save_best(vn)
         self.val_rows = getattr(self, "val_rows", [])
+        shown = {k: v for k, v in res.items() if k != "outcomes"}
+        shown.setdefault("lost_to_reference", "")
         self.val_rows.append(dict(steps=self.num_timesteps, minutes=round((time.perf_counter() - self.t0) / 60, 3),
-                                  **res, selected=int(selected)))
+                                  **shown, score=score(res, sel)[0], selected=int(selected)))
         with open(self.out / "validation.csv", "w", newline="") as fh:
             w = csv.DictWriter(fh, fieldnames=list(VALIDATION_FIELDS))
             w.writeheader()
             w.writerows(self.val_rows)
         self.pbar.write(f"validation at {self.num_timesteps} steps: {res['survived']}/{res['episodes']} survived "
-                        f"{res['per_set']}, RMS lateral {res['rms_lateral_m']:.2f} m{' (kept)' if selected else ''}")
+                        f"{res['per_set']}, RMS lateral {res['rms_lateral_m']:.2f} m"
+                        + (f", {res['lost_to_reference']} lost that {sel.reference} holds" if sel.rule == "paired"
+                           else "") + (" (kept)" if selected else ""))
+
+    def reference_result(self) -> dict:
+        """The paired rule's reference controller on the validation sets, flown once per run (same seeds)."""
+        if getattr(self, "_reference", None) is None:
+            from laddermill_gym.control.factory import make_controller
+
+            cfg = self.cfg
+            kw = cfg.carried_env_kwargs()
+            self._reference = validate(make_controller(cfg.validation.selection.reference, cfg.env_id, kw),
+                                       cfg.env_id, kw, cfg.validation)
+            self.pbar.write(f"reference {cfg.validation.selection.reference}: {self._reference['survived']}/"
+                            f"{self._reference['episodes']} survived {self._reference['per_set']}")
+        return self._reference
 
     def _phases(self) -> None:
         warm = self.cfg.critic_warmup
