@@ -20,7 +20,7 @@ def scalar_affine(x, w, b):
         vals = []
         for m, wm in enumerate(w.tolist()):
             acc = float(b[m])
-            for wi, xi in zip(wm, row):
+            for wi, xi in zip(wm, row, strict=True):
                 acc = acc + wi * xi
             vals.append(acc)
         out.append(vals)
@@ -67,9 +67,10 @@ def test_sb3_linear_actor_matches_torch_to_float32_rounding_and_clips():
     from laddermill_gym.control.exact_actor import sb3_linear_actor
     from laddermill_gym.control.sb3_policy import SB3Controller
 
+    torch = pytest.importorskip("torch")
     model = _ppo(dict(pi=[], vf=[8]))
-    with __import__("torch").no_grad():
-        model.policy.action_net.weight.copy_(__import__("torch").tensor([[1.5, -0.7, 0.3]]))  # some beyond [-2, 2]
+    with torch.no_grad():
+        model.policy.action_net.weight.copy_(torch.tensor([[1.5, -0.7, 0.3]]))  # some actions beyond [-2, 2]
     actor = sb3_linear_actor(model.policy)
     assert actor is not None
     obs = np.random.default_rng(3).uniform(-1, 1, size=(64, 3)) * np.array([1.0, 1.0, 8.0])
