@@ -152,23 +152,25 @@ CONTROLLERS = Covered(
         'learning rate 1e-4 took the LQR-started policy down to 7 / 12 (its critic explained under 15 % of the '
         "return's variance), and 1e-5 for 10 minutes to 9 / 12.",
         # switch_controllers and paired_survival (200 episodes)
-        'Why that one episode does not rank the two: handed over between them at several times ( ), the LQR '
-        'flying first and the policy after survives with the hand-over at 20 s and 21.5 s and fails at 10, 18, '
-        '21, 22 s (22.25 to 23.25 s) and 22.5 s (45.10 s); the policy first and the LQR after fails at every one '
-        'of those times (22.20 to 23.00 s). The outcome flips with the hand-over time in no order: neither the '
-        'state the policy leaves nor its recovery is what loses the episode; it is a knife edge. Nor is it the '
-        "saturation: both clip alike (the LQR clips its action to [-1, 1], ; SB3's deterministic PPO action is "
-        'the Gaussian mean clipped to the action box, no squashing). On 200 held-out NTM-IB fields (seeds 5000 to'
-        ' 5199, used by no selection; ) the LQR survives 70 and the shipped policy 79: both 45, only the LQR 25, '
-        'only the policy 34, neither 96 (exact sign test of the discordant pairs, p = 0.298): no clear '
-        'difference. On 2026-11-29 the same command printed 88 for the policy (both 45, only the LQR 25, only the'
-        " policy 43, neither 87; p = 0.0385), and that session's code (420c907) prints 79 today: the code did not"
-        " change it. The policy's deterministic action is a float32 matrix product in torch, whose last bits "
-        "depend on the CPU's kernels (this machine: MKL, AVX512) and even on the batch size (one observation "
-        'alone against 512 at once: up to 4.8e-7 apart); the LQR (float64, our compiled code) prints 70 both '
-        'times. On knife-edge episodes such bits decide survival, so the held-out count is reproducible on one '
-        "machine, not across machines. The comparisons below against the policy's 88 were made on the machine of "
-        '2026-11-29.',
+        'Why that one episode does not rank the two: handed over between them at several times ( ), the LQR f'
+        'lying first and the policy after survives with the hand-over at 20 s and 21.5 s and fails at 10, 18,'
+        ' 21, 22 s (22.25 to 23.25 s) and 22.5 s (44.80 s); the policy first and the LQR after fails at every'
+        ' one of those times (22.20 to 23.00 s). The outcome flips with the hand-over time in no order: neith'
+        'er the state the policy leaves nor its recovery is what loses the episode; it is a knife edge. Nor i'
+        "s it the saturation: both clip alike (the LQR clips its action to [-1, 1], ; SB3's deterministic PPO"
+        ' action is the Gaussian mean clipped to the action box, no squashing). On 200 held-out NTM-IB fields'
+        ' (seeds 5000 to 5199, used by no selection; ) the LQR survives 70 and the shipped policy 84: both 45'
+        ', only the LQR 25, only the policy 39, neither 91 (exact sign test of the discordant pairs, p = 0.10'
+        "3): no clear difference. The policy's count no longer depends on the CPU's matrix kernels or the bat"
+        'ch size: a policy loaded from disk whose actor is linear (the shipped and ) acts in float64 with a f'
+        "ixed order of summation ( ; the shared per-wing actor of and likewise), where SB3's own is a float32"
+        " matrix product in torch whose last bits depend on the CPU's kernels (MKL, AVX512 here) and on the b"
+        'atch size (one observation alone against 512 at once: up to 4.8e-7 apart). Through torch the same co'
+        'mmand printed 79 for the policy on this machine (both 45, only the LQR 25, only the policy 34, neith'
+        "er 96; p = 0.298) and 88 on 2026-11-29's (only the policy 43, neither 87; p = 0.0385), the LQR (floa"
+        't64, our compiled code) 70 each time: on knife-edge episodes such bits decide survival. The comparis'
+        "ons below against the policy's 88 were made through torch on the machine of 2026-11-29. The training"
+        "'s own validations (and ) fly the policy through torch, as it trains.",
         # reselect over two training seeds, the IA training run (55 min)
         'Selecting on more turbulence did not change the count. validates on 184 drawn episodes (96 NTM-IB and 48'
         ' NTM-IA fields, 24 light Dryden, 16 steps and gusts); flies every checkpoint of the two training seeds '

@@ -6,6 +6,12 @@ Training (``laddermill train``) writes a run folder with the model (``model.zip`
 (:mod:`laddermill_gym.control.zoo_run`).
 :class:`SB3Controller` applies the same normalisation before the policy, so evaluation sees raw
 environment observations exactly like the open-loop and LQR controllers.
+
+A policy loaded from disk (:meth:`SB3Controller.load`) whose actor is linear (``net_arch: {pi: []}``: the shipped
+``ppo_tethered_wing`` and ``ppo_rotorcraft``) gives its deterministic action in float64 with a fixed order of
+summation (:mod:`laddermill_gym.control.exact_actor`): the same bits on any CPU and for any batch size, where torch's
+float32 product differs in the last bits between machines. The training's own validations use torch (the policy as
+it trains); ``exact=False`` gives that path for a loaded policy too.
 """
 
 from __future__ import annotations
@@ -27,6 +33,9 @@ class SB3Controller:
     obs_mean, obs_var : ndarray (obs_dim,), optional
         Normalisation statistics: the policy sees clip((obs - mean) / sqrt(var + eps), -clip_obs, clip_obs).
     clip_obs, epsilon : as in SB3's ``VecNormalize``.
+    exact : bool
+        Deterministic actions of a linear actor in float64, summed in a fixed order (:mod:`exact_actor
+        <laddermill_gym.control.exact_actor>`); other policies, and stochastic actions, always through torch.
 
     Attributes
     ----------
@@ -40,25 +49,29 @@ class SB3Controller:
     trained_env: str | None = None
 
     def __init__(self, model, obs_mean: np.ndarray | None = None, obs_var: np.ndarray | None = None,
-                 clip_obs: float = 10.0, epsilon: float = 1e-8):
+                 clip_obs: float = 10.0, epsilon: float = 1e-8, exact: bool = False):
+        from laddermill_gym.control.exact_actor import sb3_linear_actor
+
         self.model = model
+        self.linear = sb3_linear_actor(model.policy) if exact else None
         self.obs_mean = None if obs_mean is None else np.asarray(obs_mean, dtype=np.float64)
         self.obs_std = None if obs_var is None else np.sqrt(np.asarray(obs_var, dtype=np.float64) + epsilon)
         self.clip_obs = float(clip_obs)
 
     @classmethod
-    def from_vecnormalize(cls, model, vecnormalize) -> SB3Controller:
+    def from_vecnormalize(cls, model, vecnormalize, exact: bool = False) -> SB3Controller:
         """``model`` with the observation statistics of an SB3 ``VecNormalize`` (None, or one that does not
         normalise observations: none)."""
         if vecnormalize is None or not getattr(vecnormalize, "norm_obs", True):
-            return cls(model)
+            return cls(model, exact=exact)
         return cls(model, vecnormalize.obs_rms.mean, vecnormalize.obs_rms.var, vecnormalize.clip_obs,
-                   vecnormalize.epsilon)
+                   vecnormalize.epsilon, exact=exact)
 
     @classmethod
-    def load(cls, path: str | Path, best: bool = True) -> SB3Controller:
+    def load(cls, path: str | Path, best: bool = True, exact: bool = True) -> SB3Controller:
         """Load from a training run folder (``best_model.zip`` if present and ``best``, else ``model.zip``)
-        or from a model file, with its normalisation statistics next to it if there are any.
+        or from a model file, with its normalisation statistics next to it if there are any; ``exact``: a linear
+        actor's deterministic actions in float64, fixed order (the class's ``exact``).
 
         An rl-zoo3 log folder (``logs/<algo>/<env name>_<n>``, or a model file in one) is read by
         :func:`~laddermill_gym.control.zoo_run.read_zoo_run`: algorithm from its ``args.yml``, statistics from
@@ -68,7 +81,7 @@ class SB3Controller:
 
         path = Path(path)
         if find_zoo_run(path) is not None:
-            return cls.load_zoo(path)
+            return cls.load_zoo(path, exact)
         import stable_baselines3 as sb3
 
         if path.is_dir():
@@ -83,12 +96,12 @@ class SB3Controller:
             raise FileNotFoundError(f"{path}: no such model file or run folder")
         model = _load_model(sb3, model_file, folder / "algorithm.txt")
         norm = folder / ("best_vecnormalize.pkl" if model_file.name == "best_model.zip" else "vecnormalize.pkl")
-        ctrl = cls.from_vecnormalize(model, load_vecnormalize(norm) if norm.is_file() else None)
+        ctrl = cls.from_vecnormalize(model, load_vecnormalize(norm) if norm.is_file() else None, exact)
         ctrl.source, ctrl.trained_env = model_file, _trained_env(folder / "config.yaml")
         return ctrl
 
     @classmethod
-    def load_zoo(cls, path: str | Path) -> SB3Controller:
+    def load_zoo(cls, path: str | Path, exact: bool = True) -> SB3Controller:
         """Load an rl-zoo3 run folder or a model file in one (:func:`~laddermill_gym.control.zoo_run.read_zoo_run`).
         The schedules pickled in the model (rl-zoo3's own classes) are replaced by constants, as
         ``rl_zoo3.enjoy`` does: evaluation does not train, and rl_zoo3 need not be installed."""
@@ -98,7 +111,8 @@ class SB3Controller:
         algo = zoo_algorithm_class(run.algo, run.folder)
         constants = {"learning_rate": 0.0, "lr_schedule": lambda _: 0.0, "clip_range": lambda _: 0.0}
         model = algo.load(run.model_file, device="cpu", custom_objects=constants)
-        ctrl = cls.from_vecnormalize(model, None if run.vecnormalize is None else load_vecnormalize(run.vecnormalize))
+        ctrl = cls.from_vecnormalize(model, None if run.vecnormalize is None else load_vecnormalize(run.vecnormalize),
+                                     exact)
         ctrl.source, ctrl.trained_env = run.model_file, run.env_id
         return ctrl
 
@@ -121,6 +135,10 @@ class SB3Controller:
 
     def normalize(self, observation: np.ndarray) -> np.ndarray:
         """The observation as the policy saw it in training (float32); refuses one of another size."""
+        return self.normalize64(observation).astype(np.float32)
+
+    def normalize64(self, observation: np.ndarray) -> np.ndarray:
+        """:meth:`normalize` before the cast to float32 (the exact path's input)."""
         obs = np.asarray(observation, dtype=np.float64)
         expected = self.model.observation_space.shape
         if obs.shape[-len(expected):] != expected:
@@ -128,12 +146,17 @@ class SB3Controller:
                              f"(trained on {self.trained_env or 'an unnamed env'}), got {obs.shape}: another "
                              "env, or other env arguments (n_wings, observation options)")
         if self.obs_mean is None:
-            return obs.astype(np.float32)
-        return np.clip((obs - self.obs_mean) / self.obs_std, -self.clip_obs, self.clip_obs).astype(np.float32)
+            return obs
+        return np.clip((obs - self.obs_mean) / self.obs_std, -self.clip_obs, self.clip_obs)
 
     def predict(self, observation: np.ndarray, state: Any = None, episode_start: np.ndarray | None = None,
                 deterministic: bool = False) -> tuple[np.ndarray, Any]:
-        """Actions for batched (n_envs, obs_dim) or single (obs_dim,) raw observations."""
+        """Actions for batched (n_envs, obs_dim) or single (obs_dim,) raw observations (float64 from the exact
+        path, else SB3's float32)."""
+        if deterministic and self.linear is not None:
+            x = self.normalize64(observation)
+            act = self.linear.actions(x.reshape(-1, x.shape[-1]))
+            return (act[0] if x.ndim == 1 else act), state
         return self.model.predict(self.normalize(observation), state, episode_start, deterministic)
 
 

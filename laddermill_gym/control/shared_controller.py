@@ -9,10 +9,12 @@ features, ``linear_actor.npz``: that map's arrays exported from ``model.zip`` (`
 :class:`SharedController` is what both evaluators share: the single-agent observation (B, D) -> every slot's local
 observation (``WingAgents.local_observations``, the multi-agent env's own mapping) -> the actor -> the joint action
 (B, n m_a) in slot order, and the checks that refuse another env, agent count or observation size (naming the
-file). :class:`LinearActorController` evaluates the exported actor in numpy (float32, as SB3 does): no torch, so the
-README's first command (installed without the ``rl`` extra) flies the shipped policy; ``SharedPolicyController``
-(``shared_policy.py``) runs the SB3 model itself. tests/test_linear_actor.py checks that both give the same actions
-(to float32 rounding) and the features against loops written from the formula.
+file). :class:`LinearActorController` evaluates the exported actor in numpy (the features in float32, as SB3 does;
+their product with the weights in float64, summed in a fixed order by
+:func:`~laddermill_gym.control.exact_actor.affine_fixed_order`, so the actions have the same bits on every CPU): no
+torch, so the README's first command (installed without the ``rl`` extra) flies the shipped policy;
+``SharedPolicyController`` (``shared_policy.py``) runs the SB3 model itself. tests/test_linear_actor.py checks that
+both give the same actions (to float32 rounding) and the features against loops written from the formula.
 
 Why our own evaluator rather than ONNX or TorchScript: the actor is one matrix product of features that need the
 slot's trim and a hat function of its position; a 60-line numpy evaluator has no dependency at all, where an ONNX
@@ -29,6 +31,7 @@ from typing import Any
 import numpy as np
 import yaml
 
+from laddermill_gym.control.exact_actor import affine_fixed_order
 from laddermill_gym.envs.observation import OBS_INDEX
 from laddermill_gym.multiagent.agents import AGENT_KINDS, WingAgents, build_task
 
@@ -143,7 +146,8 @@ class SharedController(ABC):
 
 class LinearActor:
     """The exported linear actor: mean action = W (h(position) (outer) [z, 1]) + b on local observations, z the
-    scaled lateral deviations of the 2k + 1 wings seen (``GainScheduledExtractor``'s arithmetic, in float32)."""
+    scaled lateral deviations of the 2k + 1 wings seen (``GainScheduledExtractor``'s arithmetic, in float32); the
+    product W features + b in float64, fixed order (the same bits on every CPU)."""
 
     def __init__(self, arrays: dict[str, np.ndarray], source: Path):
         self.source = source
@@ -202,8 +206,8 @@ class LinearActor:
         return (h[:, :, None] * z[:, None, :]).reshape(N, -1)
 
     def mean(self, obs: np.ndarray) -> np.ndarray:
-        """(N, m_a) float32 mean actions of local observations (N, d) (before any clip)."""
-        return self.features(obs) @ self.weight.T + self.bias
+        """(N, m_a) float64 mean actions of local observations (N, d) (before any clip)."""
+        return affine_fixed_order(self.features(obs), self.weight, self.bias)
 
 
 class LinearActorController(SharedController):
