@@ -8,9 +8,44 @@ from __future__ import annotations
 from docsite.ledger_kinds import Covered
 from docsite.ledger_papers import MEIJAARD_CHECKS
 
+F = "{meijaard_v1[files][%s]}"
+#: The claims panel and the direction step's ends against the files the study writes (docsite.study_figures.
+#: meijaard_files); the fixed-step runs past the wing data are chaotic: their ends move with the last bits of any
+#: kernel change, and these checks then name them.
+FILES_CHECKS = (
+    (r"the loop is (\d+) m wide on average for a top ([\d,]+) m above the station \(width / height ([\d.]+)\)",
+     (F % "width", "~" + F % "top", F % "ratio")),
+    (r"\| (\d+)-(\d+) m at 1 m/s; (\d+)-(\d+) m at 5 m/s",
+     tuple(F % k for k in ("w1_lo", "w1_hi", "w5_lo", "w5_hi"))),
+    (r"1 m/s: ([\d.]+) kN in element (\d+); 5 m/s: ([\d.]+) kN in element (\d+); both at ([\d.]+) of the loop's "
+     r"height",
+     tuple(F % k for k in ("T1", "element1", "T5", "element5", "height1"))),
+    (r"period means ([-\d,]+) to ([\d,]+) kW over the last (\d+) periods \(mean ([\d.]+) kW\)",
+     ("~" + F % "mean_lo5", "~" + F % "mean_hi5", F % "periods5", F % "mean5")),
+    (r"slot 40's yaw changes by up to (\d+) deg before the physical end at ([\d.]+) s, and ([\d,]+) deg \(tumbling\) "
+     r"over ([\d.]+) s",
+     (F % "yaw", F % "yaw_end", "~" + F % "tumble_deg", F % "tumble_s")),
+    (r"\*\*physical end at ([\d.]+) s\*\* \(wings ([\d-]+) outside the aerodynamic data for 2 s; wing (\d+): beta "
+     r"([\d.]+) deg since ([\d.]+) s\)",
+     tuple(F % k for k in ("end", "end_wings", "end_wing", "end_beta", "end_since"))),
+    (r"numerical breakdown at ([\d.]+) s \(RK4 10 ms, no end criterion: (wings? [\d, -]+) over the 300 m/s speed "
+     r"guard and (wings? [\d, -]+) over the 100 rad/s rate guard\)",
+     tuple(F % f"rk4_10ms][{k}" for k in ("t", "speed", "rate"))),
+    (r"RK4 10 ms breaks down at ([\d.]+) s, RK4 2\.5 ms \(judged on height and overload only, neither of which held\) "
+     r"at ([\d.]+) s \((wings? [\d, -]+) over the 300 m/s speed guard and (wings? [\d, -]+) over the 100 rad/s rate "
+     r"guard\)",
+     (F % "rk4_10ms][t", F % "rk4_2_5ms][t", F % "rk4_2_5ms][speed", F % "rk4_2_5ms][rate")),
+    (r"a smaller step goes longer \(([\d.]+) s -> ([\d.]+) s\)", (F % "rk4_10ms][t", F % "rk4_2_5ms][t")),
+    (r"2026-11-29; ([\d.]+) s and ([\d,]+) deg at \w+, 2026-11-30, when the 10 ms run's breakdown also moved, from "
+     r"25\.8 s to ([\d.]+) s\)", (F % "rk4_2_5ms][t", "~" + F % "tumble_deg", F % "rk4_10ms][t")),
+    (r"some wing leaves the data's sideslip at ([\d.]+) s and its alpha at ([\d.]+) s, slot 40 its sideslip at "
+     r"([\d.]+) s",
+     tuple(F % k for k in ("beta_any", "alpha_any", "beta_slot"))),
+)
+
 MEIJAARD = Covered(
     groups=("meijaard_v1",),
-    checks=MEIJAARD_CHECKS,
+    checks=MEIJAARD_CHECKS + FILES_CHECKS,
     given=(
         '# Meijaard, Ockels & Schwab (1999): the laddermill',
         'Schwab, *Modelling of the dynamic behaviour of a laddermill, a novel concept to exploit wind energy*, '
@@ -22,14 +57,23 @@ MEIJAARD = Covered(
         " motion, then applies the paper's 0.01 rad wind-direction step and follows the open-loop divergence to "
         'its end.',
         'A scene made later for 5 m/s (a tail schedule) is run with or .',
-        'What it printed on 2026-11-29 at a5550e0, re-run at 014c04d with the same lines but for the chaotic 2.5 '
-        'ms run of Fig.',
+        'What it printed on 2026-11-29 at a5550e0, re-run at 014c04d and on 2026-11-30 at faa2ebd with the same '
+        'lines but for the chaotic fixed-step runs of Fig.',
+        # the chaotic run's earlier ends, dated with their commits (today's are checked)
+        "That 2.5 ms run, past the wing data's range, is chaotic: its end moves with the last bits of any kernel "
+        'change (157.5 s and 3,559 deg at a5550e0, 189.5 s and 3,504 deg at 014c04d, 2026-11-29;',
+        "2026-11-30, when the 10 ms run's breakdown also moved, from 25.8 s to",
+        # the paper's words and the runs' settings in the Fig. 8 rows
+        '8 | node 40 "yaws over a large angle" |', '8 | "the calculations break down after some 40 seconds" |',
+        'the same with RK4 at 10 ms and 2.5 ms and with ROS34PW2 (rtol 1e-4);',
+        '8 | "with a smaller step size, the simulation could be continued longer" |',
+        '8 | "the angles of attack, the side-slip angle ...', "the paper's ~40 s breakdown has no physical counterpart",
+        'so only "longer than at 10 ms" is a finding.',
         '8 (scene , periodic tolerance 1e-3):',
         '6 | "for low cable velocities, the ascending and descending part are almost parallel" | at 1 m/s '
         '(periodic at 715 s)',
-        '6 | "for larger cable velocities, the loop widens" | 280-288 m at 1 m/s;',
-        '7 | "the tensile force is smallest near the top" | 1 m/s: 3.9 kN in element 50; 5 m/s: 25.5 kN in '
-        'element 49;',
+        '6 | "for larger cable velocities, the loop widens" |',
+        '7 | "the tensile force is smallest near the top" |',
         '7 | power ~ (T_first - T_last)',
         '7 | "of the order of 200 kW" (read: at least 150 kW, periodic)',
         '2 m/s only',
@@ -79,26 +123,10 @@ MEIJAARD = Covered(
         "times the cable's breaking load. DP5(4)",
     ),
     not_rerun=(
-        # python -m laddermill_gym.studies.mill.meijaard (92 s with its searches saved): its claims panel and direction-
-        # step lines, which the page group (power.csv) does not parse
-        'the loop is 281 m wide on average for a top 3,421 m above the station (width / height 0.082)',
-        "both at 0.99 of the loop's height | yes",
+        # python -m laddermill_gym.studies.mill.meijaard (92 s with its searches saved): its printed lines that the
+        # group (power.csv, claims.csv, breakdown.csv) does not read
         '82.1 kW at 1 m/s; **152.9 kW at 2 m/s** (3D: 152.9 kW); 5 m/s not periodic:',
-        '488.8 kW in the last period, period means -1,139 to 846 kW over the last 108 periods (mean 245.8 kW)',
-        '8 | node 40 "yaws over a large angle" | slot 40\'s yaw changes by up to 83 deg before the physical end at'
-        ' 6.4 s, and 3,504 deg (tumbling)',
-        'over 189.5 s when the wing data are trusted beyond their range | yes',
-        '8 | "the calculations break down after some 40 seconds" | **physical end at 6.40 s** (wings 8-15 outside'
-        ' the aerodynamic data for 2 s; wing 8:',
-        'beta 38.8 deg since 4.40 s), the same with RK4 at 10 ms and 2.5 ms and with ROS34PW2 (rtol 1e-4);',
-        'numerical breakdown at 25.8 s (RK4 10 ms, no end criterion:',
-        'wing 0, just inserted, over the 300 m/s guard)',
-        '8 | "with a smaller step size, the simulation could be continued longer" | RK4 10 ms breaks down at 25.8'
-        ' s, RK4 2.5 ms (judged on height and overload only, neither of which held)',
-        'at 189.5 s (wing 17 over the 300 m/s and 100 rad/s guards)',
-        '8 | "the angles of attack, the side-slip angle ...',
-        'are no longer accurate" | some wing leaves the data\'s sideslip at 4.4 s and its alpha at 5.9 s, slot 40 '
-        'its sideslip at 4.9 s | yes',
+        '488.8 kW in the last period,',
         'The undisturbed 3D periodic motion meets none of the end criteria over a period (no wing outside the '
         'aerodynamic data, lowest wing CG 57.3 m, peak tension 0.285 of the breaking load).',
         '6 and 7 panels show the shape at the end of the 3,053 s search and the tensions of its last period, and '
@@ -108,12 +136,6 @@ MEIJAARD = Covered(
         'After the direction step the v1 mill leaves the range of its wing data sooner than v0 (6.4 s against 8.4'
         ' s), and not at slot 40 but at the wings in slots 8-15, low on the ascending leg (up to 39 deg of '
         'sideslip);',
-        "the paper's ~40 s breakdown has no physical counterpart in either model:",
-        "it is the fixed-step integrator's, and, as the paper says, a smaller step goes longer (25.8 s -> 189.5 "
-        's).',
-        "That 2.5 ms run, past the wing data's range, is chaotic:",
-        'its end moves with the last bits of any kernel change (157.5 s and 3,559 deg at a5550e0, 189.5 s and '
-        '3,504 deg at 014c04d, 2026-11-29), so only "longer than at 10 ms" is a finding.',
         # python -m laddermill_gym.studies.mill.meijaard --scene laddermill (LadderMill-v0's wing, 11 min): the v0
         # section
         'Every figure below is what it printed on 2026-11-29, first at eea39e0 (516 s, before the option)',

@@ -312,8 +312,8 @@ def _named(measured: dict) -> list[str]:
 def test_the_benchmarks_stable_steps_are_named_when_changed():
     """docs/benchmarks.md's stable-step row against ``laddermill bench`` (bisection: 0.0193 / 0.0249 s, as it printed
     on 2026-11-30) and ``laddermill stable-step`` (0.01901 / 0.02445 s) passes; a bisection of 0.0201 s is named."""
-    measured = {"checked_pages": ["benchmarks.md"],
-                "bench_stable_dt": {"tethered_wing": "0.0193", "ladder_chain": "0.0249"},
+    bench = {"tethered_wing": "0.0193", "ladder_chain": "0.0249"}
+    measured = {"checked_pages": ["benchmarks.md"], "bench_stable_dt": bench,
                 "stable_steps": {"tethered_wing": {"rk4": "0.01901"}, "ladder_chain": {"rk4": "0.02445"}}}
     assert _named(measured) == []
     measured["bench_stable_dt"] = {"tethered_wing": "0.0201", "ladder_chain": "0.0249"}
@@ -335,14 +335,10 @@ CROSSWIND_PRINTED = {
 def test_the_crosswind_cycle_table_is_named_when_changed():
     """docs/pumping.md's crosswind-cycle table and its cycle-1 phases against what ``pumping_cycle --cycles 2``
     printed on 2026-11-30 pass; a cycle-1 reel-in of 201 s and a cycle-0 power of 31712 W are each named."""
-    import copy
-
-    measured = {"checked_pages": ["pumping.md"], "pumping_crosswind": CROSSWIND_PRINTED}
-    assert [b for b in _named(measured) if "pumping_power_curve" not in b and "pumping_cycle_lqr" not in b] == []
-    other = copy.deepcopy(measured)
-    other["pumping_crosswind"]["c1"]["t_in_s"] = "201"
-    other["pumping_crosswind"]["c0"]["sim"] = "31712"
-    bad = [b for b in _named(other) if "pumping_power_curve" not in b and "pumping_cycle_lqr" not in b]
+    c0, c1 = CROSSWIND_PRINTED["c0"], CROSSWIND_PRINTED["c1"]
+    assert _named({"checked_pages": ["pumping.md"], "pumping_crosswind": CROSSWIND_PRINTED}) == []
+    bad = _named({"checked_pages": ["pumping.md"], "pumping_crosswind": {"c0": {**c0, "sim": "31712"},
+                                                                         "c1": {**c1, "t_in_s": "201"}}})
     assert len(bad) == 2 and any("201" in b for b in bad) and any("31712" in b for b in bad), bad
 
 
@@ -357,16 +353,15 @@ def test_the_gusts_v2_pumping_table_is_named_when_changed():
                 "cause": cause, "failure": "" if survived else "aerodynamic range exceeded",
                 "max_lateral_m": lateral, "energy_ratio": ratio}
 
-    lost = "t = 61.30 s: alpha = 14.2 deg, beta = -62.3 deg outside the aerodynamic range"
+    lost = "t = 61.30 s: alpha = 14.2 deg, beta = -62.3 deg outside the aerodynamic range"  # as gust-bench writes it
     rows = [row(0, True, 7.6, 1.30), row(1, True, 10.2, 1.141), row(2, False, 12.0, 0.9, 61.3, lost)]
     table = gust_table(rows)["lqr/NTM_IB"]
-    assert (table["survived"], table["ends"], table["lateral"], table["ratio"], table["beta"]) == (
-        "2/3", "61.3", "10.2", "1.141", "-62.3")
+    assert [table[k] for k in ("survived", "ends", "lateral", "ratio", "beta")] == ["2/3", "61.3", "10.2", "1.141",
+                                                                                    "-62.3"]
     full = {f"{c}/{s}": {"survived": "", "ends": "", "lateral": "", "ratio": ""} for c in ("open_loop", "lqr")
             for s in ("direction_step", "speed_step_20pct", "one_cos_4s", "one_cos_20s", "EOG_IA", "EDC_IA")}
     measured = {"checked_pages": ["wind.md"], "gusts_v2_pumping": {**full, "lqr/NTM_IB": table}}
-    ntm = [b for b in _named(measured) if "NTM_IB" in b or "61.3" in b]
-    assert ntm == [], ntm
+    assert [b for b in _named(measured) if "NTM_IB" in b or "61.3" in b] == []
     rows[1] = row(1, False, 10.2, 1.141, 58.0, lost)
     bad = [b for b in _named({**measured, "gusts_v2_pumping": {**full, "lqr/NTM_IB": gust_table(rows)["lqr/NTM_IB"]}})
            if "lqr | NTM_IB" in b]
@@ -388,7 +383,17 @@ def test_the_power_curve_rows_are_named_when_changed():
     # the reeling tether's (--reel-element-length 40) 10 m/s rows, not the element-count table's "| 10 |" row
     reel = dict(zip((*cells, "T_in", "model_T_in"), "45749 61111 0.75 110641 114497 53884 66255 12083 6420 -59 -3081 "
                     "6017 455".split(), strict=True))
-    measured = {"checked_pages": ["reeling_tether.md"], "reeling_power_curve": {"v10": reel}}
-    assert _named(measured) == []
+    assert _named(measured := {"checked_pages": ["reeling_tether.md"], "reeling_power_curve": {"v10": reel}}) == []
     bad = _named({**measured, "reeling_power_curve": {"v10": {**reel, "model_T_in": "456"}}})
     assert len(bad) == 1 and "456" in bad[0] and "reeling_tether.md" in bad[0], bad
+
+
+def test_the_meijaard_fixed_step_ends_are_named_when_changed():
+    """docs/paper_meijaard1999.md's fixed-step ends as the study wrote them on 2026-11-30 (breakdown.csv: 10 ms 35.7 s,
+    wing 10; 2.5 ms 84.7 s, wings 17-19, wing 17) pass; 2026-11-29's 25.8 s is named wherever it is quoted."""
+    ends = {"rk4_10ms": {"t": "35.7", "speed": "wing 10", "rate": "wing 10"}, "tumble_deg": "5572",
+            "rk4_2_5ms": {"t": "84.7", "speed": "wings 17-19", "rate": "wing 17"}}
+    page = {"checked_pages": ["paper_meijaard1999.md"]}
+    assert _named({**page, "meijaard_v1": {"files": ends}}) == []
+    bad = _named({**page, "meijaard_v1": {"files": {**ends, "rk4_10ms": {**ends["rk4_10ms"], "t": "25.8"}}}})
+    assert len(bad) == 4 and all("25.8" in b and "paper_meijaard1999.md" in b for b in bad), bad
