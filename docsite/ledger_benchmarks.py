@@ -1,8 +1,9 @@
 """The ledger entry (:mod:`docsite.page_ledger`) of docs/benchmarks.md: machine timings almost throughout (each
 dated on the page: a date or the commit measured, with the load where it was recorded; the undated ones dated
 from ``git log -S`` of README.md, where they were first written), the point-mass scene's size and explicit step
-checked against ``pointmass_benchmark``, the stable steps and the W-method accuracy table not re-run (their
-commands named), the settings and targets given."""
+checked against ``pointmass_benchmark``, the stable-step row against ``laddermill bench`` and ``laddermill
+stable-step``, the mill's stable steps and the W-method accuracy table not re-run (their commands named), the
+settings and targets given."""
 
 from __future__ import annotations
 

@@ -1,7 +1,8 @@
 """The ledger entry (:mod:`docsite.page_ledger`) of docs/paper_meijaard1999.md: the v1 table's powers, tensions,
-widths, periods and overloads checked against the study's power.csv (``meijaard_v1``); the paper's claims and
-figure numbers given; the claims panel's direction-step lines (which the group does not parse) and the v0 section
-(11 min) not re-run; figures that repeat checked ones or work a ratio from them derived."""
+widths, periods and overloads checked against the study's power.csv (``meijaard_v1``), its claims panel and the
+direction step's ends against claims.csv and breakdown.csv; the paper's claims and figure numbers given; the lines
+it only prints and the v0 section (11 min) not re-run; figures that repeat checked ones or work a ratio from them
+derived."""
 
 from __future__ import annotations
 

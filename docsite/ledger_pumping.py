@@ -1,7 +1,8 @@
 """The ledger entry (:mod:`docsite.page_ledger`) of docs/pumping.md: the LQR cycle's table and its static-kite and
 eqs. 10-14 ranges checked against ``pumping_cycle --controller lqr`` (25-35 s); the winch, envs' and crosswind
-controller's settings given; the crosswind cycle, the power curve, the evaluation tables, the PPO run and the
-turbulence hours not re-run (their commands named); ratios worked from checked figures derived."""
+controller's settings given; the crosswind cycle (``pumping_crosswind``) and the power curve (``pumping_power_curve``)
+checked against their commands; the evaluation tables, the PPO run and the turbulence hours not re-run (their
+commands named); ratios worked from checked figures derived."""
 
 from __future__ import annotations
 

@@ -1,7 +1,8 @@
 """The ledger entry (:mod:`docsite.page_ledger`) of docs/reeling_tether.md: the element-count convergence table
 checked against ``tether_convergence`` (2-5 minutes); the model's rules and settings given; its closed forms
-derived; the 200-500 m runs, the model comparison, the reeling power curve (about 6 minutes) and the tests'
-figures not re-run (their commands named)."""
+derived; the reeling power curve and its phase split checked against ``power_curve --reel-element-length 40``
+(``reeling_power_curve``, 211 s at a load of 8); the 200-500 m runs, the model comparison and the tests' figures not
+re-run (their commands named)."""
 
 from __future__ import annotations
 

@@ -1,6 +1,7 @@
 """The ledger entry (:mod:`docsite.page_ledger`) of docs/wind.md: the standards' constants against the code that holds
 them, the worked check values reworked in closed form (:mod:`docsite.wind_figures`), the standards' formulas given,
-the gust-benchmark tables not re-run (their commands and costs as the page gives them)."""
+the gusts-v2 tables checked against gust-bench (``gusts_v2_pumping``, ``gusts_v2_mill``), the gusts-v1 first results
+not re-run (their commands and costs as the page gives them)."""
 
 from __future__ import annotations
 
