@@ -60,7 +60,7 @@ __all__ = ["ActionError", "DirectionStep", "OneMinusCosineGust", "RandomPerturba
 
 #: the public names of the systems' modules, imported on first use (PEP 562): ``import laddermill_gym`` registers
 #: the ids without importing any env, so a process that makes one env pays only for that env's modules (the
-#: warm start, issue 32 point 1: the mill's and the pumping kite's modules and scipy's solvers cost about 0.4 s)
+#: warm start, issue 32 point 1: the mill's and the pumping kite's modules and the scipy solver these import)
 _LAZY = {
     **dict.fromkeys(("DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule"),
                     "laddermill_gym.atmosphere.disturbances"),
