@@ -52,27 +52,31 @@ import importlib
 import inspect
 from collections.abc import Mapping
 
-from laddermill_gym.atmosphere.disturbances import DirectionStep, OneMinusCosineGust, RandomPerturbation, Schedule
-from laddermill_gym.envs.actions import ActionError
-from laddermill_gym.envs.laddermill.env import LadderMillEnv, LadderMillVectorEnv
-from laddermill_gym.envs.pumping.env import PumpingKiteEnv, PumpingKiteVectorEnv
-from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv, RotorcraftVectorEnv
-from laddermill_gym.envs.task import FAILURES, RewardConfig, TerminationConfig, WingTask
-from laddermill_gym.envs.wing_env import WingEnv, WingVectorEnv
-
 __all__ = ["ActionError", "DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule", "FAILURES",
            "RewardConfig", "TerminationConfig", "WingTask", "WingEnv", "WingVectorEnv", "RotorcraftEnv",
            "RotorcraftVectorEnv", "LadderMillEnv", "LadderMillVectorEnv", "PumpingKiteEnv", "PumpingKiteVectorEnv",
            "PointMassEnv", "PointMassVectorEnv", "ENV_IDS", "ENTRY_POINTS", "register_envs", "task_class",
            "env_arguments", "merge_arguments", "registered_arguments"]
 
-_LAZY = {"PointMassEnv": "laddermill_gym.envs.pointmass.env",
-         "PointMassVectorEnv": "laddermill_gym.envs.pointmass.env"}
+#: the public names of the systems' modules, imported on first use (PEP 562): ``import laddermill_gym`` registers
+#: the ids without importing any env, so a process that makes one env pays only for that env's modules (the
+#: warm start, issue 32 point 1: the mill's and the pumping kite's modules and the scipy solver these import)
+_LAZY = {
+    **dict.fromkeys(("DirectionStep", "OneMinusCosineGust", "RandomPerturbation", "Schedule"),
+                    "laddermill_gym.atmosphere.disturbances"),
+    "ActionError": "laddermill_gym.envs.actions",
+    **dict.fromkeys(("FAILURES", "RewardConfig", "TerminationConfig", "WingTask"), "laddermill_gym.envs.task"),
+    **dict.fromkeys(("WingEnv", "WingVectorEnv"), "laddermill_gym.envs.wing_env"),
+    **dict.fromkeys(("RotorcraftEnv", "RotorcraftVectorEnv"), "laddermill_gym.envs.rotorcraft.env"),
+    **dict.fromkeys(("LadderMillEnv", "LadderMillVectorEnv"), "laddermill_gym.envs.laddermill.env"),
+    **dict.fromkeys(("PumpingKiteEnv", "PumpingKiteVectorEnv"), "laddermill_gym.envs.pumping.env"),
+    **dict.fromkeys(("PointMassEnv", "PointMassVectorEnv"), "laddermill_gym.envs.pointmass.env"),
+}
 
 
 def __getattr__(name: str):
-    """The point-mass envs are imported on first use: importing the package (and so any rigid scene) must not load
-    the point-mass kernels (a scene pays only for what it uses)."""
+    """The names of :data:`_LAZY` are imported on first use: importing the package (and so any env) must not load
+    the other systems' modules and kernels (a scene pays only for what it uses)."""
     if name in _LAZY:
         return getattr(importlib.import_module(_LAZY[name]), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -18,7 +18,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 from laddermill_gym.kernels.action_pass import clip_count, grouped_controls
 from laddermill_gym.kernels.contract import CTRL_ELEVATOR
@@ -150,6 +149,7 @@ class ElevatorFromAlpha:
     """
 
     def __init__(self, wing_type: WingType, alpha_centre: float):
+        from scipy.interpolate import CubicSpline
         grid = np.radians(np.arange(-30.0, 30.0 + 1e-9, 0.05))
         spline = CubicSpline(wing_type.aero.alpha, wing_type.aero.values, bc_type="periodic", axis=0)
         c = spline(grid)

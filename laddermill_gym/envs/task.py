@@ -19,6 +19,7 @@ from laddermill_gym.envs import kernel_warmup
 from laddermill_gym.envs.actions import ActionMap, clip_actions, resolve_groups
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds, wing_lateral_offsets
 from laddermill_gym.envs.physics_step import jacobian_settings, physics_scene_options, stable_physics_step
+from laddermill_gym.envs.start_cache import WING_SOURCES, cached_start
 from laddermill_gym.envs.task_base import (
     TaskCore,
     default_parallel,
@@ -77,12 +78,12 @@ WARMUP_TARGET = "laddermill_gym.envs.task_warmup:compile_wing"
 def scene_trim(scene: str, options: tuple) -> tuple[Scene, np.ndarray, np.ndarray]:
     """(scene, x_trim, u_trim) of a scene name or path with ``load_scene`` overrides ``options`` (a sorted
     tuple of (key, value) pairs); cached, because every copy of a sync vector env would otherwise trim
-    the same scene again."""
+    the same scene again, and on disk for the next process (``envs/start_cache.py``)."""
     sc = load_scene(scene, **options_kwargs(options))
     if not isinstance(sc, Scene):  # fidelity 'pointmass': no tails, the attitude is the action
         raise ValueError(f"scene {scene!r} is at the point-mass fidelity: use laddermill_gym.envs.pointmass.env."
                          "PointMassEnv, whose actions command the kites' attitude")
-    x, u = sc.initial_state()
+    x, u = cached_start("wing_start", sc.name, (sc,), WING_SOURCES, sc.initial_state, skip=("file",))
     x.setflags(write=False)
     u.setflags(write=False)
     return sc, x, u

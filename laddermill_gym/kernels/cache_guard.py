@@ -39,16 +39,21 @@ _IMPORT = r"^\s*(?:from\s+{0}((?:\.\w+)*)\s+import\s+(\([^)]*\)|[^\n]*)|import\s
 _PACKAGE = Path(__file__).resolve().parent.parent
 
 
-def _module_file(root: Path, dotted: str) -> Path | None:
-    """The file of package module ``dotted`` (relative to ``root``), a module or a package's ``__init__``."""
-    base = root.joinpath(*dotted.split("."))
-    for candidate in (base.with_suffix(".py"), base / "__init__.py"):
-        if candidate.is_file():
-            return candidate
-    return None
+def _module_index(root: Path, paths) -> dict[str, Path]:
+    """Dotted module name (relative to ``root``) -> file, of the package's ``paths``: a module ``a/b.py`` is
+    ``a.b``, a package ``a/b/__init__.py`` is ``a.b`` too unless ``a/b.py`` exists (that one is found first). A
+    lookup here replaces a filesystem test per imported name (about 2,000 of them; 20 ms of every start)."""
+    index: dict[str, Path] = {}
+    for path in paths:
+        parts = path.relative_to(root).parts
+        package = parts[-1] == "__init__.py"
+        dotted = ".".join(parts[:-1] if package else (*parts[:-1], parts[-1][:-3]))
+        if dotted and (not package or dotted not in index):
+            index[dotted] = path
+    return index
 
 
-def _imported_files(root: Path, match: re.Match) -> list[Path]:
+def _imported_files(index: dict[str, Path], match: re.Match) -> list[Path]:
     """The package files one import statement reads: the module named after ``from`` and every imported name that
     is a submodule of it (``from pkg.kernels import contract``), or the module of ``import pkg.x.y``."""
     if match.group(3) is not None:
@@ -57,12 +62,13 @@ def _imported_files(root: Path, match: re.Match) -> list[Path]:
         base = match.group(1).lstrip(".")
         names = re.findall(r"\w+", match.group(2).split("#")[0])
         dotted = [base] + [f"{base}.{name}" if base else name for name in names]
-    return [f for f in (_module_file(root, d) for d in dotted if d) if f is not None]
+    return [index[d] for d in dotted if d in index]
 
 
 def kernel_sources(root: Path = _PACKAGE) -> list[Path]:
     """The package's files (sorted) that define cached kernels, closed under the package imports they make."""
     texts = {p: p.read_text(encoding="utf-8", errors="replace") for p in root.rglob("*.py")}
+    index = _module_index(root, texts)
     imports = re.compile(_IMPORT.format(re.escape(root.name)), re.M)
     todo = [p for p, text in texts.items() if "cache=True" in text]
     found: set[Path] = set()
@@ -72,7 +78,7 @@ def kernel_sources(root: Path = _PACKAGE) -> list[Path]:
             continue
         found.add(path)
         for match in imports.finditer(texts.get(path, "")):
-            todo.extend(_imported_files(root, match))
+            todo.extend(_imported_files(index, match))
     return sorted(found)
 
 

@@ -7,7 +7,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import fsolve
 
 from laddermill_gym.kernels.contract import WF_DIR_HEIGHT, WF_DIR_INF
 from laddermill_gym.model.packing import wind_fields
@@ -87,6 +86,7 @@ def rest_layout(scene, elevators):
     two ground points: shooting on the tension vector at the start. Forces and positions are iterated to a
     fixed point (the forces depend on height through the wind profile). Also returns the tension
     vector (x, z) [N] at the lower end of each piece, (n_pieces, 2)."""
+    from scipy.optimize import fsolve
     a = scene.assembly
     n = a.n_wings
     A = np.asarray(scene.ground_points[scene.start], float)
@@ -178,6 +178,7 @@ def piece_shape(A, B, l0, EA: float, mu: float, g: float, T0, air=None, iteratio
     is shot (MINPACK hybrd) to end at B, and the loads (cable aerodynamics depend on the shape) are iterated
     ``iterations`` times. y runs linearly from A to B. None if the shooting misses B by more than 1e-9 of the
     piece (the caller keeps its own guess)."""
+    from scipy.optimize import fsolve
     A, B = np.asarray(A, float), np.asarray(B, float)
     l0 = np.asarray(l0, float)
     m = l0.size

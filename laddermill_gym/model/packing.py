@@ -3,14 +3,17 @@ the kernels' workspace. Also finds the block elimination order (the tree the cab
 
 from __future__ import annotations
 
+import hashlib
+from pathlib import Path
+
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 from laddermill_gym.atmosphere.field import pack_wind_field
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.contract import KModel, KWork
 from laddermill_gym.kernels.moving_cable import MovingCable2D, MovingCable3D
 from laddermill_gym.kernels.rigid.kinds import RIGID_2D, RIGID_3D, WING
+from laddermill_gym.model import disk_cache
 from laddermill_gym.model.params import AERO_COLUMNS, END_NODE, END_WING, Assembly
 from laddermill_gym.model.reel import is_reel, reel_kind
 from laddermill_gym.model.station import pack_station
@@ -77,10 +80,35 @@ def elimination_tree(asm: Assembly) -> tuple[np.ndarray, np.ndarray, np.ndarray]
     return np.asarray(order, dtype=np.int64), parent, echild
 
 
+def table_spline(alpha: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """scipy's periodic cubic-spline coefficients of one aero table (``CubicSpline(alpha, values, bc_type=
+    "periodic", axis=0).c``, shape (4, n_int, n_col)): read from the on-disk cache (``model/disk_cache.py``, folder
+    ``aero_splines/``) when there, else computed and stored, so a warm start neither imports scipy.interpolate
+    (about a quarter of a second) nor solves the spline. Keyed by the table's exact values, scipy's version,
+    :func:`~laddermill_gym.model.disk_cache.platform_text` (numpy, the CPU) and this file's source: the same
+    bits as computing it."""
+    from importlib.metadata import version
+
+    h = hashlib.sha256(f"aero_spline; format 1; scipy {version('scipy')}; {disk_cache.platform_text()}; "
+                       f"source {hashlib.sha256(Path(__file__).read_bytes()).hexdigest()};".encode())
+    disk_cache.feed(h, np.asarray(alpha, dtype=float))
+    disk_cache.feed(h, np.asarray(values, dtype=float))
+    key = h.hexdigest()
+    path = disk_cache.entry_path("aero_spline", "table", key)
+    data = disk_cache.read_entry(path, key)
+    if data is not None and set(data) == {"c"}:
+        return data["c"]
+    from scipy.interpolate import CubicSpline
+
+    c = CubicSpline(alpha, values, bc_type="periodic", axis=0).c
+    disk_cache.write_entry(path, key, {"c": c})
+    return c
+
+
 def spline_coefficients(asm: Assembly) -> tuple[np.ndarray, float, float]:
-    """Periodic cubic-spline coefficients of every wing type's table: array (n_types, n_int, 4, n_col),
-    grid start [rad] and spacing [rad]. All types must share one uniform grid; a type without a table
-    (``aero`` None) gets zeros."""
+    """Periodic cubic-spline coefficients of every wing type's table (:func:`table_spline`): array (n_types,
+    n_int, 4, n_col), grid start [rad] and spacing [rad]. All types must share one uniform grid; a type without a
+    table (``aero`` None) gets zeros."""
     types = asm.wing_types
     tabled = [wt for wt in types if wt.aero is not None]
     if not tabled:  # no wings, or bodies without a table (the rotorcraft): a zero table, never read
@@ -94,8 +122,7 @@ def spline_coefficients(asm: Assembly) -> tuple[np.ndarray, float, float]:
         a = wt.aero.alpha
         if a.shape != grid.shape or not np.allclose(a, grid, rtol=0, atol=1e-12):
             raise ValueError(f"wing type {wt.name!r}: aero table alpha grid differs from {tabled[0].name!r}")
-        sp = CubicSpline(a, wt.aero.values, bc_type="periodic", axis=0)
-        out.append(np.ascontiguousarray(np.transpose(sp.c, (1, 0, 2))))
+        out.append(np.ascontiguousarray(np.transpose(table_spline(a, wt.aero.values), (1, 0, 2))))
     da = float(grid[1] - grid[0])
     return np.ascontiguousarray(np.stack(out)), float(grid[0]), da
 

@@ -22,7 +22,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq, root
 
 from laddermill_gym.kernels.contract import DOF_B3, DOF_N3, N3_POS, N3_SIZE
 from laddermill_gym.model.builders import ElementList
@@ -238,6 +237,7 @@ def _symmetric_equilibrium(sim, u, x0) -> tuple[np.ndarray, float]:
     removes the nearly free sideways drift of craft and tethers that makes the full Jacobian ill-conditioned
     (condition number ~1e7). Returns (z, |full residual|): the caller checks that the full residual vanishes,
     which also catches a scene that is not symmetric."""
+    from scipy.optimize import root
     z0 = pack_unknowns(sim, x0)
     E, free = _mirror_expansion(sim.layout, z0.size)
 
@@ -336,6 +336,7 @@ class Craft:
         or, where that drives a retreating blade tip past the blade-incidence limit (Roberts: 13 deg), the
         collective that puts the worse tip exactly at the limit (stepped down by ``step``, then Brent's method).
         Raises RuntimeError if the craft cannot be trimmed within the collective limits."""
+        from scipy.optimize import brentq
         lim = self.config.blade_incidence_limit
         cache: dict[float, np.ndarray] = {}
 

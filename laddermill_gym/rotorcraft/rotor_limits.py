@@ -8,7 +8,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from laddermill_gym.rotorcraft import rotor_kernels as _k
 from laddermill_gym.rotorcraft.rotor_aero import RotorState, state_from_kernel
@@ -58,6 +57,7 @@ def autorotation_angle(params: RotorParams, mu: float, theta0: float) -> float:
     0.2..89 deg is scanned in 0.5 deg steps for the first change of C_Q from + to -, then refined by Brent's
     method to 1e-12 rad. Raises RotorSolveError when there is none.
     """
+    from scipy.optimize import brentq
     p = check_params(params).packed()
     mu, theta0 = check_mu(mu), check_theta(theta0)
     out = np.empty(_k.N_OUT)
@@ -85,6 +85,7 @@ def collective_at_limit(params: RotorParams, mu: float, alpha_c: float,
 
 
 def _collective_at_limit(p, mu, alpha_c, limit, out) -> float:
+    from scipy.optimize import brentq
     def excess(theta0):
         _k.rotor_state(p, mu, alpha_c, theta0, INFLOW_TOL, INFLOW_MAX_ITER, out)
         return out[_k.O_TIP_AOA] - limit
@@ -127,6 +128,7 @@ def best_power_within_limit(params: RotorParams, mu: float, alpha_c: float,
     and the best interior sample refined by bounded Brent minimisation (1e-10 rad); the state at the limit
     is returned when the limit itself is best.
     """
+    from scipy.optimize import minimize_scalar
     p = check_params(params).packed()
     mu, alpha_c, limit = check_mu(mu), check_alpha(alpha_c), check_limit(limit)
     span = check_number("span", span, 0.0, math.pi / 2, lo_open=True)
@@ -157,6 +159,7 @@ def min_autorotation_angle(params: RotorParams, mu: float,
     Minimises :func:`autorotation_angle` over theta0 in theta_range (a 17-point scan, then bounded Brent,
     1e-9 rad): the least incidence at which the craft stays up without power from the ground.
     """
+    from scipy.optimize import minimize_scalar
     check_params(params)
     mu = check_mu(mu)
     lo, hi = (check_theta(t) for t in theta_range)
@@ -194,6 +197,7 @@ def autorotation_angle_at_limit(params: RotorParams, mu: float, limit: float = B
     Roberts, section 5: "C_p = 0 at alpha_c = 22.5 deg when mu = 0.1". The first change of C_p from - to +
     on a 0.5 deg scan of 0.2..89 deg, refined by Brent's method to 1e-10 rad.
     """
+    from scipy.optimize import brentq
     p = check_params(params).packed()
     mu, limit = check_mu(mu), check_limit(limit)
     out = np.empty(_k.N_OUT)
@@ -212,6 +216,7 @@ def solidity_for_autorotation(params: RotorParams, mu: float, alpha_c: float,
                               sigma_range: tuple[float, float] = (0.01, 0.3)) -> float:
     """Solidity sigma [-] that puts :func:`autorotation_angle_at_limit` at alpha_c [rad] (other blade data
     from params). Brent's method on sigma_range; raises RotorSolveError when alpha_c is not bracketed."""
+    from scipy.optimize import brentq
     check_params(params)
     mu, alpha_c, limit = check_mu(mu), check_alpha(alpha_c), check_limit(limit)
 

@@ -27,7 +27,6 @@ import warnings
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from laddermill_gym.kernels import integrate as KI
 
@@ -68,6 +67,7 @@ def stability_function(method: str, z: complex | np.ndarray) -> np.ndarray:
 def ray_limit(method: str, angle: float) -> float:
     """Largest r with |R(r e^{i angle})| <= 1 on [0, r] (angle in (pi/2, 3 pi/2): the left half-plane; for angles
     towards the right half-plane the imaginary-axis limit, see the module text)."""
+    from scipy.optimize import brentq
     angle = math.atan2(math.sin(angle), math.cos(angle))
     if abs(angle) <= math.pi / 2:
         angle = math.copysign(math.pi / 2, angle if angle != 0 else 1.0)

@@ -6,7 +6,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import brentq, root
 
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.model.states import block_view, euler_from_quaternion, quaternion_from_euler
@@ -77,6 +76,7 @@ def _newton(resid, z0, tol, jac=None):
     """Root of resid from z0: MINPACK hybrd first; where the cable starts near slack (a soft, strongly
     nonlinear start) Levenberg-Marquardt gets into the basin and hybrd polishes. ``jac``: the Jacobian (callable;
     default MINPACK's forward differences). Returns (z, |residual|, msg)."""
+    from scipy.optimize import root
     sol = root(resid, z0, method="hybr", jac=jac, options={"xtol": tol})
     r = float(np.linalg.norm(resid(sol.x)))
     if sol.success or r < 1e-9:
@@ -273,6 +273,8 @@ def pitch_trim_alpha(wing_type, elevator: float, dynamic_pressure: float | None 
     moment about its cable attachment point, the point where the resultant cable force acts: aerodynamic
     force at the reference point, aerodynamic moment, and (if ``dynamic_pressure`` [Pa] is given) the weight
     at the CG. A first guess for layouts, searched on the attached-flow branch (-10..25 deg)."""
+    from scipy.optimize import brentq
+
     from laddermill_gym.model.params import AERO_INDEX
 
     sp = table_spline(wing_type.aero)

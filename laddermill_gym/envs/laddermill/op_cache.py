@@ -2,9 +2,9 @@
 running the in-plane mill for 1,000-1,400 simulated seconds (30-100 s of CPU), which every new process repeated.
 Like numba's kernel cache, the result is kept on disk and read back by later processes.
 
-Where: ``$LADDERMILL_CACHE_DIR`` when set (:data:`CACHE_VARIABLE`), else ``$XDG_CACHE_HOME/laddermill_gym``, else
-``~/.cache/laddermill_gym``; the entries are in its ``operating_points/`` folder, one ``.npz`` file each (a few
-hundred kB), and may be deleted at any time. ``LADDERMILL_CACHE_DIR=off`` (:data:`OFF`) switches the cache off.
+The folder, the entry format and its checks are ``model/disk_cache.py``'s (``$LADDERMILL_CACHE_DIR``, else
+``~/.cache/laddermill_gym``; ``off`` switches the cache off); the entries are in its ``operating_points/`` folder,
+one ``.npz`` file each (a few hundred kB).
 
 Keyed by everything the result depends on (:func:`entry_key`): the in-plane scene as loaded (every field of the
 :class:`~laddermill_gym.ladder.rigid_scene.Scene` but its file's path: wings, cable, station, wind, initial
@@ -13,31 +13,29 @@ settings, integrator), the settling settings, the package version, the source of
 (its name and features: a kernel's fused multiply-adds differ between CPUs). A changed input is a new key, so a
 stale entry is never looked at.
 
-Stored: the exact float64 arrays and scalars (``np.savez``, no pickle), so a start read back is the same bits as a
-recomputed one. Written atomically (a temporary file in the same folder, flushed to disk, then renamed). An entry
-is trusted only when it reads back whole, holds its own key (the full key, not only the file name's prefix) and
-its payload's SHA-256 matches; anything else is recomputed and overwritten. A folder that cannot be written
-gives one warning and the computation goes on uncached.
+Stored: the exact float64 arrays and scalars, so a start read back is the same bits as a recomputed one.
 """
 
 from __future__ import annotations
 
 import hashlib
-import os
-import sys
-import tempfile
-import warnings
-from dataclasses import fields, is_dataclass
-from enum import Enum
 from functools import lru_cache
 from pathlib import Path
 
-import numpy as np
+from laddermill_gym.model.disk_cache import (  # noqa: F401  (the cache's public names, as before, from here)
+    CACHE_VARIABLE,
+    OFF,
+    cache_dir,
+    entry_path,
+    feed,
+    platform_text,
+    read_entry,
+    write_entry,
+)
 
-#: the environment variable naming the cache folder (or ``off``)
-CACHE_VARIABLE = "LADDERMILL_CACHE_DIR"
-#: the value of :data:`CACHE_VARIABLE` that switches the cache off
-OFF = "off"
+__all__ = ["CACHE_VARIABLE", "OFF", "SOURCE_DIRS", "SOURCE_FILES", "FORMAT", "cache_dir", "source_digest",
+           "entry_key", "entry_path", "read_entry", "write_entry"]
+
 #: the package's folders whose source the operating point's computation runs (the scene readers, packing,
 #: simulator, kernels and the wind); every module it imports lies in these or :data:`SOURCE_FILES`
 #: (tests/test_op_cache.py checks it in a fresh process)
@@ -49,24 +47,15 @@ FORMAT = 1
 
 #: the package's folder (source paths are relative to it)
 PACKAGE = Path(__file__).resolve().parents[2]
-_WARNED: set = set()
 
 
-def cache_dir() -> Path | None:
-    """The cache folder (module doc), or None when :data:`CACHE_VARIABLE` is ``off``."""
-    env = os.environ.get(CACHE_VARIABLE)
-    if env:
-        return None if env.strip().lower() == OFF else Path(env).expanduser()
-    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-    return Path(base) / "laddermill_gym"
-
-
-@lru_cache(maxsize=1)
-def source_digest() -> str:
-    """SHA-256 of the source files of the computation (path relative to the package, then content), in order."""
+@lru_cache(maxsize=4)
+def source_digest(dirs: tuple = SOURCE_DIRS, files: tuple = SOURCE_FILES) -> str:
+    """SHA-256 of the source files of a computation (path relative to the package, then content), in order: the
+    package's folders ``dirs`` and single files ``files`` (default: the operating point's)."""
     h = hashlib.sha256()
-    files = [PACKAGE / f for f in SOURCE_FILES]
-    for d in SOURCE_DIRS:
+    files = [PACKAGE / f for f in files]
+    for d in dirs:
         files += sorted((PACKAGE / d).rglob("*.py"))
     for f in files:
         h.update(f.relative_to(PACKAGE).as_posix().encode() + b"\0")
@@ -74,125 +63,14 @@ def source_digest() -> str:
     return h.hexdigest()
 
 
-def _feed(h, obj, skip: tuple = ()) -> None:
-    """Feed ``obj`` into the hash ``h`` canonically: type tags, dataclass fields by name (those named in ``skip``
-    left out at this level), sequences in order, mappings sorted by key, floats by their exact hex, arrays by
-    dtype, shape and bytes. TypeError for anything else (then the entry is not cached)."""
-    if obj is None or isinstance(obj, (bool, int, str, Path, Enum)):
-        h.update(f"{type(obj).__name__}:{obj!r};".encode())
-    elif isinstance(obj, (float, np.floating)):
-        h.update(f"f:{float(obj).hex()};".encode())
-    elif isinstance(obj, np.integer):
-        h.update(f"i:{int(obj)};".encode())
-    elif isinstance(obj, np.ndarray):
-        if obj.dtype == object:
-            raise TypeError("an object array")
-        a = np.ascontiguousarray(obj)
-        h.update(f"a:{a.dtype.str}:{a.shape};".encode() + a.tobytes())
-    elif is_dataclass(obj) and not isinstance(obj, type):
-        h.update(f"d:{type(obj).__module__}.{type(obj).__qualname__}(".encode())
-        for f in fields(obj):
-            if f.name not in skip:
-                h.update(f"{f.name}=".encode())
-                _feed(h, getattr(obj, f.name))
-        h.update(b");")
-    elif isinstance(obj, (tuple, list)):
-        h.update(f"s{len(obj)}(".encode())
-        for v in obj:
-            _feed(h, v)
-        h.update(b");")
-    elif isinstance(obj, dict):
-        h.update(f"m{len(obj)}(".encode())
-        for k in sorted(obj, key=repr):
-            _feed(h, k)
-            _feed(h, obj[k])
-        h.update(b");")
-    else:
-        raise TypeError(f"cannot fingerprint a {type(obj).__module__}.{type(obj).__qualname__}")
-
-
-def _platform() -> str:
-    """numba, numpy, Python versions and the host CPU numba compiles for (name and features)."""
-    from importlib.metadata import PackageNotFoundError, version
-
-    import llvmlite.binding as llvm
-    import numba
-
-    try:  # the installed distribution's (the source's __version__ is in the hashed __init__.py too)
-        ours = version("laddermill_gym")
-    except PackageNotFoundError:
-        ours = "not installed"
-    return (f"laddermill_gym {ours}; numba {numba.__version__}; numpy {np.__version__}; python "
-            f"{sys.version_info[:3]}; cpu {llvm.get_host_cpu_name()} {llvm.get_host_cpu_features().flatten()}")
-
-
-def entry_key(kind: str, *inputs, skip: tuple = ("file",)) -> str:
+def entry_key(kind: str, *inputs, skip: tuple = ("file",), sources: tuple = (SOURCE_DIRS, SOURCE_FILES)) -> str:
     """The hex SHA-256 key of an entry of ``kind`` computed from ``inputs`` (dataclasses, arrays, numbers; fields
-    named in ``skip`` left out of a dataclass at the top level), with :data:`FORMAT`, :func:`_platform` and
-    :func:`source_digest`. TypeError when an input cannot be fingerprinted."""
-    h = hashlib.sha256(f"{kind}; format {FORMAT}; {_platform()}; source {source_digest()};".encode())
+    named in ``skip`` left out of a dataclass at the top level), with :data:`FORMAT`, ``disk_cache.platform_text``
+    and :func:`source_digest` of ``sources`` ((folders, files) of the computation; default the operating point's).
+    TypeError when an input cannot be fingerprinted."""
+    h = hashlib.sha256(f"{kind}; format {FORMAT}; {platform_text()}; source {source_digest(*sources)};".encode())
     for obj in inputs:
-        _feed(h, obj, skip)
+        feed(h, obj, skip)
     return h.hexdigest()
 
-
-def _payload_digest(arrays: dict) -> str:
-    h = hashlib.sha256()
-    for name in sorted(arrays):
-        _feed(h, name)
-        _feed(h, np.asarray(arrays[name]))
-    return h.hexdigest()
-
-
-def entry_path(kind: str, label: str, key: str) -> Path | None:
-    """The file of an entry: ``<cache>/<kind>s/<label>-<key[:24]>.npz`` (``label`` made file-safe); None when the
-    cache is off."""
-    root = cache_dir()
-    if root is None:
-        return None
-    safe = "".join(c if c.isalnum() or c in "-_." else "_" for c in label)[-60:] or "entry"
-    return root / f"{kind}s" / f"{safe}-{key[:24]}.npz"
-
-
-def read_entry(path: Path | None, key: str) -> dict | None:
-    """The arrays of the entry at ``path`` (name -> numpy array, scalars as 0-d arrays) if it is whole and holds
-    ``key`` and a matching payload digest; None otherwise (missing, unreadable, corrupt or another key's)."""
-    if path is None or not path.is_file():
-        return None
-    try:
-        with np.load(path, allow_pickle=False) as z:
-            data = {k: z[k] for k in z.files}
-    except Exception:  # a truncated or garbled file: numpy and zipfile raise many kinds; recompute it
-        return None
-    stored_key, digest = data.pop("__key__", None), data.pop("__digest__", None)
-    if stored_key is None or digest is None or str(stored_key) != key or str(digest) != _payload_digest(data):
-        return None
-    return data
-
-
-def write_entry(path: Path | None, key: str, arrays: dict) -> bool:
-    """Write ``arrays`` (name -> array or scalar) with ``key`` and their digest atomically to ``path``; True when
-    written. A folder that cannot be written gives one RuntimeWarning naming it and False."""
-    if path is None:
-        return False
-    data = {k: np.asarray(v) for k, v in arrays.items()}
-    tmp = None
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.stem + ".", suffix=".tmp")
-        with os.fdopen(fd, "wb") as fh:
-            np.savez(fh, __key__=np.asarray(key), __digest__=np.asarray(_payload_digest(data)), **data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-        return True
-    except OSError as err:
-        if tmp is not None and os.path.exists(tmp):
-            os.unlink(tmp)
-        if str(path.parent) not in _WARNED:
-            _WARNED.add(str(path.parent))
-            warnings.warn(f"{CACHE_VARIABLE}: cannot write the cache entry {path} ({err}); computing without "
-                          f"the on-disk cache (set {CACHE_VARIABLE} to a writable folder, or to '{OFF}')",
-                          RuntimeWarning, stacklevel=3)
-        return False
 

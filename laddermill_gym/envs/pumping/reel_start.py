@@ -18,7 +18,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import fsolve
 
 from laddermill_gym.kernels import contract as C
 
@@ -39,6 +38,7 @@ def solve_catenary(span: float, rise: float, length: float, w: float, ea: float)
     """(H, V) [N] of the elastic catenary of unstretched ``length`` [m] whose upper end lies ``span`` [m] across
     and ``rise`` [m] above its lower end (w [N/m], ea [N]). Raises ValueError where no catenary fits (the ends
     farther apart than the tether stretched by its weight allows)."""
+    from scipy.optimize import fsolve
     if not (span > 0 and length > 0 and w > 0 and ea > 0):
         raise ValueError(f"solve_catenary: span {span} m, length {length} m, w {w} N/m and EA {ea} N must be > 0")
 

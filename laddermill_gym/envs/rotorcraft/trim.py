@@ -9,6 +9,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from laddermill_gym.envs.start_cache import CRAFT_SOURCES, cached_start
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT, CraftConfig, load_craft_config
 from laddermill_gym.rotorcraft.craft import Craft, load_craft
 
@@ -59,10 +60,11 @@ def craft_trim(craft: str = DEFAULT_CRAFT, wind_speed: float | None = None, coll
     """(craft, x_trim (n_state,), u_trim (2,) [rad]) for a craft name or path, wind speed v0 [m/s] (None: the
     config's), trim collective [rad] (None: the config's) and physics step [s] (None: the config's).
 
-    Cached on the arguments (a trim takes about 0.5 s); the returned arrays are read-only."""
+    Cached on the arguments (a trim takes about 0.5 s) and on disk for the next process (``envs/start_cache.py``);
+    the returned arrays are read-only."""
     c, u = untrimmed_craft(craft, wind_speed, collective, physics_dt)
     try:
-        x = c.trim(u[0])
+        x, _ = cached_start("craft_start", c.config.name, (c, u), CRAFT_SOURCES, lambda: (c.trim(u[0]), u))
     except RuntimeError as err:
         raise ValueError(f"wind_speed = {wind_speed!r} m/s, collective = {collective!r} rad: {err}") from None
     x.setflags(write=False)
