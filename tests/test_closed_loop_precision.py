@@ -87,3 +87,20 @@ def test_bad_controller_names_raise():
         wp.main(["tethered_wing", "--controller", "pid", "--quiet"])
     with pytest.raises(ValueError, match="pumping_kite"):
         wp.main(["pumping_kite", "--controller", "lqr", "--quiet"])
+
+
+def test_kept_matrix_rows():
+    """``--jacobian-every 4``: rows "METHOD/j4" beside the every-step rows, on the same step grid, with other last
+    bits and, at the 0.05 s control period, within the controller tolerances of the DP5(4) / DOP853 reference."""
+    assert wp.case_settings("ros2/j4", 0.05) == ("ros2", dict(method="ros2", breakpoints="inside", dt=0.05,
+                                                                jacobian_every=4))
+    assert wp.case_settings("rk4-all", 0.01) == ("rk4", dict(method="rk4", breakpoints="all", dt=0.01))
+    res = wp.run_scene("tethered_wing", forcings=("step",), duration=1.0, n_samples=4, repeats=1, n_dt=2,
+                       progress=False, controllers=("lqr",), jacobian_every=(1, 4))
+    rows = {(r["method"], r["dt_s"]): r for r in res["rows"]}
+    kept, every = rows[("ros34pw2/j4", 0.05)], rows[("ros34pw2", 0.05)]
+    assert {m for m, _ in rows} >= {"ros2/j4", "ros2t/j4", "ros34pw2/j4"}
+    assert kept["status"] == every["status"] == "ok" and kept["meets_controller"]
+    assert 0.0 < kept["err_max_pos_m"] != every["err_max_pos_m"]
+    with pytest.raises(ValueError, match="--jacobian-every = 0"):
+        wp.main(["tethered_wing", "--jacobian-every", "0", "--quiet"])

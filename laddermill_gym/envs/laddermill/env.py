@@ -85,7 +85,9 @@ STATION_TABLE
     physics_dt [s] (the physics' fixed-step method, "rk4", "ros2" or "ros34pw2", and its step instead of the
     scene's RK4 at 10 ms; a Rosenbrock-W method steps once per control period by default: ``physics_step=
     "ros34pw2"`` stays within 1e-3 of the mill's extent of the registered step and runs about twice as fast,
-    ``envs/physics_step.py``; the operating point and the spaces are the id's either way).
+    ``envs/physics_step.py``; the operating point and the spaces are the id's either way) and jacobian_every
+    (physics steps per iteration matrix of a W-method step; default 1, every step, the registered bits; k > 1 keeps
+    it for k steps, fresh on each episode's first step: an opt-in speed option with other last bits).
 
     ## Version History
 

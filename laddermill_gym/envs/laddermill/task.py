@@ -43,7 +43,7 @@ from laddermill_gym.envs.laddermill.settings import (
     TerminationConfig,
 )
 from laddermill_gym.envs.observation import wing_lateral_offsets
-from laddermill_gym.envs.physics_step import env_physics_settings
+from laddermill_gym.envs.physics_step import env_physics_settings, jacobian_settings
 from laddermill_gym.envs.task import config_from
 from laddermill_gym.envs.task_base import TaskCore, clip_observations, substeps_per_period
 from laddermill_gym.kernels.contract import B3_QUAT, B3_SIZE, N_CONTROLS, SX_ENERGY, SX_MOVED, SX_SPEED
@@ -75,7 +75,10 @@ class MillTask(TaskCore):
     """B copies of the moving-cable laddermill as an RL task (arguments: :class:`LadderMillEnv
     <laddermill_gym.envs.laddermill.env.LadderMillEnv>`; ``n_copies`` = B, ``parallel``: numba's thread pool,
     default from 2 copies on for the mill's thousand-odd states, ``task_base.default_parallel``; ``physics_step``,
-    ``physics_dt``: the physics' fixed-step method and step instead of the scene's, ``envs/physics_step.py``).
+    ``physics_dt``: the physics' fixed-step method and step instead of the scene's, ``envs/physics_step.py``;
+    ``jacobian_every``: physics steps per iteration matrix of a W-method step, default 1 = every step, the
+    registered bits; k > 1 keeps it for k steps, fresh on each episode's first step: same order, other last bits,
+    an opt-in speed option, ``envs/physics_step.py`` ``jacobian_settings``).
 
     Attributes (shapes with B copies, n slots): ``obs`` (B, 15 n + 4) clipped observations, ``raw_obs`` the same
     unclipped, ``aux`` (B, N_AUX) kernel read-outs, ``power`` (B,) electrical generator power [W], ``op`` the
@@ -99,7 +102,7 @@ class MillTask(TaskCore):
                  operating_point: OperatingPoint | None = None, settle=None, initial_noise=None,
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
                  parallel: bool | None = None, authority: float = 1.0, physics_step: str | None = None,
-                 physics_dt: float | None = None):
+                 physics_dt: float | None = None, jacobian_every: int = 1):
         task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "operating_point", "__class__")}
         B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
                                    initial_noise)
@@ -113,6 +116,7 @@ class MillTask(TaskCore):
         dt = sc.settings.dt  # the observation bounds' (the id's spaces whatever the physics step)
         # the physics step: the scene's, or physics_step / physics_dt (the operating point is the scene's either way)
         settings = env_physics_settings(sc.settings, physics_step, physics_dt, self.control_dt)
+        settings = jacobian_settings(settings, jacobian_every)  # 1: equal to the settings above (same bits)
         self.n_substeps = substeps_per_period(sc.name, settings, self.control_dt, control_dt)
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
         self.op, warmup = self._operating_point_warmup(operating_point, str(scene), options, task_kwargs)

@@ -11,7 +11,8 @@ kink) the scene is run over ``--time`` seconds by
   to 1e-8 (``W_TOLERANCES``);
 * the linearly implicit Rosenbrock-W methods (``ros2``, ``ros34pw2``; any other fixed-step method the simulator
   lists in ``INTEGRATOR_METHODS``) on the steps period / k, k = 1, 2, 3, 4, 6, 8, 12, 16 (period = the time between
-  samples), which reach far beyond RK4's limit.
+  samples), which reach far beyond RK4's limit; with ``--jacobian-every K ...`` also with their iteration matrix
+  kept over K steps (``IntegratorSettings.jacobian_every``; rows "METHOD/jK", e.g. ``ros2/j4``).
 
 Errors are against a reference: our DP5(4) at rtol = atol = 1e-12 and scipy's DOP853 (an independent
 implementation) at 1e-12, both stepping onto the kinks; their difference is reported (``reference_agreement``)
@@ -128,10 +129,25 @@ def integration_only(once, clock: dict):
     return run
 
 
+def case_settings(label: str, value: float) -> tuple[str, dict]:
+    """(method, integrator settings changes) of a run labelled ``METHOD[-BREAKPOINTS][/jK]`` at step or tolerance
+    ``value``: ``rk4-all`` RK4 with breakpoints "all", ``ros2/j4`` ros2 with its iteration matrix kept 4 steps."""
+    name, _, every = label.partition("/j")
+    method, _, mode = name.partition("-")
+    kw = dict(method=method, breakpoints=mode or "inside")
+    if method not in ADAPTIVE_METHODS:
+        kw["dt"] = value
+    if every:
+        kw["jacobian_every"] = int(every)
+    return method, kw
+
+
 def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, repeats: int, dt_stable: float,
-              n_dt: int, bar=None, fb: Feedback | None = None) -> tuple[list[dict], dict]:
+              n_dt: int, bar=None, fb: Feedback | None = None, jacobian_every=(1,)) -> tuple[list[dict], dict]:
     """All methods on one forcing, open loop or (``fb``, ``closed_loop.py``) closed by a feedback held over its
-    control period, which then replaces the sample period in the step grids: (rows, reference summary)."""
+    control period, which then replaces the sample period in the step grids: (rows, reference summary). Each
+    ``jacobian_every`` k > 1 adds the fixed-step W-methods with their iteration matrix kept k steps (rows
+    "METHOD/jK")."""
     x0, wind = forcing_setup(base, forcing, duration)
     times = np.linspace(0.0, duration, n_samples + 1)
 
@@ -162,12 +178,11 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
     for other in ADAPTIVE_METHODS:
         if other != "dp54":
             cases += [(other, tol) for tol in W_TOLERANCES]
+    cases += [(f"{other}/j{k}", period / d) for k in jacobian_every if k != 1 for other in FIXED_STEP_METHODS
+              if other != "rk4" for d in W_STEP_DIVISORS]
     rows = []
     for label, value in cases:
-        method, _, mode = label.partition("-")
-        kw = dict(method=method, breakpoints=mode or "inside")
-        if method not in ADAPTIVE_METHODS:
-            kw["dt"] = value
+        method, kw = case_settings(label, value)
 
         last = {}  # the states of the latest timed run: the controller quantities are read from them afterwards
 
@@ -189,10 +204,11 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
 
 
 def run_scene(scene: str, forcings=FORCINGS, duration: float = 5.0, n_samples: int = 20, repeats: int = 3,
-              n_dt: int = 7, progress: bool = True, controllers=("none",)) -> dict:
+              n_dt: int = 7, progress: bool = True, controllers=("none",), jacobian_every=(1,)) -> dict:
     """The study on one scene: {"scene", "dt_stable_s", "references": {forcing: ...}, "rows": [...]}; with the
     controller ``lqr`` among ``controllers`` each forcing is also run closed loop (``closed_loop.py``), its rows
-    and reference under "FORCING+lqr", and the design's wall time is ``lqr_design_s``."""
+    and reference under "FORCING+lqr", and the design's wall time is ``lqr_design_s``; ``jacobian_every``: see
+    :func:`run_cases`."""
     import numba
 
     from laddermill_gym.sim.stable_step import estimate_stable_step
@@ -202,14 +218,15 @@ def run_scene(scene: str, forcings=FORCINGS, duration: float = 5.0, n_samples: i
     est = estimate_stable_step(base, "rk4")
     out = {"scene": scene, "duration_s": duration, "samples": n_samples, "repeats": repeats,
            "dt_stable_s": est.dt_max, "limiting_eigenvalue": [est.eigenvalue.real, est.eigenvalue.imag],
-           "references": {}, "rows": []}
+           "jacobian_every": list(jacobian_every), "references": {}, "rows": []}
     fbs = {c: design_feedback(scene, base, c) for c in controllers}
     if fbs.get("lqr") is not None:
         out.update(lqr_design_s=fbs["lqr"].design_s, lqr_config=fbs["lqr"].config, control_period_s=fbs["lqr"].period)
     labels = [f if c == "none" else f"{f}+{c}" for c in controllers for f in forcings]
     return run_forcings(out, labels, f"work-precision {scene}", progress,
                         lambda lab, bar: run_cases(base, lab.partition("+")[0], duration, n_samples, repeats,
-                                                   est.dt_max, n_dt, bar, fbs[lab.partition("+")[2] or "none"]))
+                                                   est.dt_max, n_dt, bar, fbs[lab.partition("+")[2] or "none"],
+                                                   jacobian_every))
 
 
 def add_parser(sub) -> argparse.ArgumentParser:
@@ -222,6 +239,9 @@ def add_parser(sub) -> argparse.ArgumentParser:
     p.add_argument("--controller", nargs="+", choices=CONTROLLERS, default=["none"],
                    help="none: open loop (default); lqr: also closed by the scene's lateral LQR at its control "
                    "period, zero-order hold (studies/numerics/closed_loop.py); 'none lqr': both in one run")
+    p.add_argument("--jacobian-every", nargs="+", type=int, default=[1], metavar="K",
+                   help="also run the fixed-step W-methods with their iteration matrix kept K steps (rows "
+                   "METHOD/jK; 1: built every step, the rows always run; default 1)")
     p.add_argument("--time", type=float, default=5.0, help="simulated time per run [s] (default 5)")
     p.add_argument("--samples", type=int, default=20, help="times in the RMS error (default 20)")
     p.add_argument("--repeats", type=int, default=3, help="timed repeats per run, median taken (default 3)")
@@ -243,6 +263,8 @@ def _cmd(args) -> int:
     check_number("--element-length", args.element_length, low=0, unit="m")
     for name, v, lo in (("--samples", args.samples, 1), ("--repeats", args.repeats, 1), ("--n-dt", args.n_dt, 1)):
         check_number(name, v, low=lo, high=1000, integer=True, strict=False)
+    for k in args.jacobian_every:
+        check_number("--jacobian-every", k, low=1, high=1000, integer=True, strict=False)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     for scene in args.scene:
@@ -255,7 +277,7 @@ def _cmd(args) -> int:
                                                 args.element_length, not args.quiet)
         else:
             res = run_scene(scene, args.forcing, args.time, args.samples, args.repeats, args.n_dt, not args.quiet,
-                            args.controller)
+                            args.controller, tuple(dict.fromkeys(args.jacobian_every)))
         stem = out / Path(scene).stem
         save_rows(res, stem.with_suffix(".csv"))
         stem.with_suffix(".json").write_text(json.dumps(res, indent=1, default=float))
