@@ -134,4 +134,4 @@ def test_the_reuse_study_times_only_steps_flown():
     sim = Simulator(task.scene.assembly, task.x_trim, task.scene.settings, task.u_trim)
     args = (sim.model, sim.work, sim.limits, sim.controls + 0.01, sim.state.copy())
     with pytest.raises(RuntimeError, match="rk4 at 0.00625 s failed"):
-        study._positions(args, "rk4", task.scene.settings.dt / 8, 1, 200.0, 0.5)
+        study.wing_positions(args, "rk4", task.scene.settings.dt / 8, 1, 200.0, 0.5)

@@ -30,7 +30,7 @@ def _least_cpu(f, rounds: int = 7) -> float:
     return best
 
 
-def _positions(sim_args, method: str, dt: float, every: int, t_end: float, sample: float) -> np.ndarray:
+def wing_positions(sim_args, method: str, dt: float, every: int, t_end: float, sample: float) -> np.ndarray:
     """Wing positions (n_samples, 3) [m] every ``sample`` s of a run of ``t_end`` s."""
     from laddermill_gym.kernels.integrate import rk4_advance
     from laddermill_gym.kernels.rigid.rosenbrock import ROS34PW2, w_advance, with_jacobian_reuse
@@ -64,8 +64,8 @@ def reuse_table(env_id: str, every, steps: int, t_end: float, fine: int, offset:
     dt = task.scene.settings.dt
     sim = Simulator(task.scene.assembly, task.x_trim, task.scene.settings, task.u_trim)
     args = (sim.model, sim.work, sim.limits, sim.controls + offset, sim.state.copy())
-    ref = _positions(args, "rk4", dt / fine, 1, t_end, 0.5)
-    ref2 = _positions(args, "rk4", dt / (2 * fine), 1, t_end, 0.5)
+    ref = wing_positions(args, "rk4", dt / fine, 1, t_end, 0.5)
+    ref2 = wing_positions(args, "rk4", dt / (2 * fine), 1, t_end, 0.5)
     rows = []
     for k in every:
         M, W, lim, u, x0 = args
@@ -78,7 +78,7 @@ def reuse_table(env_id: str, every, steps: int, t_end: float, fine: int, offset:
                 raise RuntimeError(f"jacobian_every {k}: the timed run failed with status {status} after {done} of "
                                    f"{steps} steps ({done * dt:g} s): time fewer --steps")
 
-        err = np.abs(_positions(args, "w", dt, k, t_end, 0.5) - ref2).max()
+        err = np.abs(wing_positions(args, "w", dt, k, t_end, 0.5) - ref2).max()
         rows.append({"every": k, "cpu_per_step": _least_cpu(run) / steps, "error": float(err),
                      "reference_error": float(np.abs(ref - ref2).max()), "dt": dt})
     return rows
