@@ -59,10 +59,11 @@ NUMERICS = Covered(
     not_rerun=(  # measured by the studies and tests the page names (tests/test_*.py, work_precision, the stress suite)
         # the kept iteration matrix (jacobian_every; studies.numerics.jacobian_reuse, 2026-11-30)
         "(opt-in: , the wing and rotorcraft envs' ; default 1, the registered ids' bits)",
-        "error ratio per halving above 6 with the matrix kept 3 and 8 steps", "a 50 ms step cost 4.66 us of CPU every "
-        "step, 4.01 us kept 2, 3.71 us kept 4, 3.57 us kept 8 (-14, -20, -23 %); over 60 s the largest position error "
-        "against RK4 at 50/128 ms was 3.44, 3.60, 3.96, 4.84 m",
-        "The registered ids keep k = 1.", "2026-11-30, load 3.3-3.4", "With k > 1",
+        "error ratio per halving above 6 with the matrix kept 3 and 8 steps", "a 50 ms step cost 7.28 us of CPU every "
+        "step, 6.20 us kept 2, 5.71 us kept 4, 5.47 us kept 8 (-15, -22, -25 %; the 4.66 / 4.01 / 3.71 / 3.57 us "
+        "printed before timed 4000 steps, of which the wing flies about 2550 before", "over 60 s the largest position "
+        "error against RK4 at 50/128 ms was 3.44, 3.60, 3.96, 4.84 m",
+        "The registered ids keep k = 1.", "1000 steps timed; 2026-11-30 03:33, load 7.4-7.8", "With k > 1",
         "still a W-method of order 3",
         "controls 0.01 off the trim",
         "(about -5 +- 119i 1/s on", "unstable at 0.05 s on the chain", "with it, at 0.2 s.", "(3.6x softer",

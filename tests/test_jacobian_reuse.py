@@ -105,3 +105,33 @@ def test_the_env_argument_is_checked_by_name():
         jacobian_settings(w, 0)
     with pytest.raises(ValueError, match=r"jacobian_every = 2: only a W-method .*'rk4'"):
         jacobian_settings(IntegratorSettings(method="rk4", dt=0.01), 2)
+
+
+def test_the_reuse_study_times_only_steps_flown():
+    """The study's CPU per step is a time over steps flown: a timed run whose wing leaves the flight envelope
+    returns early from the kernel, and its time over the steps asked for read 4.6 us against 7.1 us per step flown
+    (2026-11-30). 4000 steps of 50 ms with every control 0.01 off the trim (200 s) are refused, naming the step;
+    the independent check that the wing does leave the envelope within them is classic RK4 at an eighth of the
+    step from the same start, which fails too. 100 steps (5 s) are timed."""
+    import numba
+
+    from laddermill_gym.studies.numerics import jacobian_reuse as study
+
+    threads = numba.get_num_threads()
+    try:
+        rows = study.reuse_table("laddermill_gym/TetheredWing-v0", [1], steps=100, t_end=1.0, fine=1, offset=0.01)
+        assert rows[0]["cpu_per_step"] > 0.0
+        with pytest.raises(RuntimeError, match=r"jacobian_every 1: the timed run failed with status \d after \d+ of "
+                                               r"4000 steps"):
+            study.reuse_table("laddermill_gym/TetheredWing-v0", [1], steps=4000, t_end=1.0, fine=1, offset=0.01)
+    finally:
+        numba.set_num_threads(threads)
+    import gymnasium as gym
+
+    from laddermill_gym.sim.simulator import Simulator
+
+    task = gym.make("laddermill_gym/TetheredWing-v0").unwrapped.task
+    sim = Simulator(task.scene.assembly, task.x_trim, task.scene.settings, task.u_trim)
+    args = (sim.model, sim.work, sim.limits, sim.controls + 0.01, sim.state.copy())
+    with pytest.raises(RuntimeError, match="rk4 at 0.00625 s failed"):
+        study.wing_positions(args, "rk4", task.scene.settings.dt / 8, 1, 200.0, 0.5)

@@ -28,6 +28,7 @@ _CHECK: dict[type, object] = {}
 _LOADS: dict[type, object] = {}
 _ENDS: dict[type, tuple] = {}
 _ASSEMBLE: dict[type, object] = {}
+_TENSIONS: dict[type, object] = {}
 
 
 class _TypedOnly:
@@ -83,6 +84,14 @@ def register_assemble(marker: type, assemble) -> None:
     _ASSEMBLE[marker] = assemble
 
 
+def register_tensions(marker: type, tensions) -> None:
+    """Register what an observation reads of a state of a model kind without its right-hand side:
+    ``tensions(kind, t, x, u, dx, M, W) -> status`` writes the element tensions into W.tension and the rotations into
+    W.Rw, bit for bit as the kind's right-hand side leaves them. A kind without one is observed through its
+    right-hand side (:func:`model_tensions`)."""
+    _TENSIONS[marker] = tensions
+
+
 def has_assemble(kind) -> bool:
     """Whether the model kind ``kind`` (a marker instance) registered an assembly (Python side)."""
     return type(kind) in _ASSEMBLE
@@ -129,6 +138,13 @@ def model_assemble(kind, t, x, u, dx, M, W):
     raise NotImplementedError("model_assemble is resolved inside numba kernels")
 
 
+def model_tensions(kind, t, x, u, dx, M, W):
+    """Element tensions (W.tension) and rotations (W.Rw) of model kind ``kind`` at (t, x): its registered
+    tensions (:func:`register_tensions`), else its right-hand side (into dx; status 1 for a singular mass
+    matrix). Jitted code only."""
+    raise NotImplementedError("model_tensions is resolved inside numba kernels")
+
+
 def body_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
     """External loads on rigid body k from its vehicle (jitted code only)."""
     raise NotImplementedError("body_loads is resolved inside numba kernels")
@@ -160,6 +176,16 @@ def _model_check(kind, x, M, limits):
 def _model_assemble(kind, t, x, u, dx, M, W):
     impl = _lookup(_ASSEMBLE, kind, "model kind assembly (a linearly implicit integrator)")
     return lambda kind, t, x, u, dx, M, W: impl(kind, t, x, u, dx, M, W)
+
+
+@inline_overload(model_tensions)
+def _model_tensions(kind, t, x, u, dx, M, W):
+    cls = getattr(kind, "instance_class", None)
+    if cls in _TENSIONS:
+        impl = _TENSIONS[cls]
+        return lambda kind, t, x, u, dx, M, W: impl(kind, t, x, u, dx, M, W)
+    rhs = _lookup(_RHS, kind, "model kind right-hand side")
+    return lambda kind, t, x, u, dx, M, W: rhs(kind, t, x, u, dx, M, W)
 
 
 @inline_overload(body_loads)

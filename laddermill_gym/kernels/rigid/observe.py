@@ -1,7 +1,9 @@
 """Batched stepping and observation for the environments: one parallel pass over the copies advances each by
 n RK4 steps and then writes its wing observations and the quantities the rewards and terminations need;
 :func:`observe_state` observes one state with the same code (the task's trim, and
-``control.base.observe`` on a ``Simulator``). This is the only implementation of the wing observation.
+``control.base.observe`` on a ``Simulator``). This is the only implementation of the wing observation. The step
+kernels read a state's tensions and rotations through ``kernels.dispatch.model_tensions`` (no wing aerodynamics, no
+solve; ``observe_state`` runs the whole right-hand side: the same bits, tests/test_observation_tensions.py).
 
 Observation layout per wing (15 floats, ``laddermill_gym/envs/observation.py`` documents it with units):
 CG offset from the nominal position (3), global CG velocity (3), 3-2-1 Euler angles (3), body rates (3),
@@ -36,6 +38,7 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes 
     TM_DT,
     TM_T0,
 )
+from laddermill_gym.kernels.dispatch import model_tensions
 from laddermill_gym.kernels.integrate import rhs
 from laddermill_gym.kernels.wind import modulation, wind_point
 
@@ -49,6 +52,23 @@ def _observe_one(t, x, u, dx, M, W, nominal, below, ground, obs, aux):
     side once for the tensions). Returns OK or SINGULAR."""
     if rhs(t, x, u, dx, M, W) != 0:
         return SINGULAR
+    _observe_rows(t, x, M, W, nominal, below, ground, obs, aux)
+    return OK
+
+
+# the step kernels' observation: the tensions and rotations without the whole right-hand side where the kind has
+# them (kernels/rigid/kinds.py rigid3d_tensions: the same bits, a third of the time), else the right-hand side
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def _observe_stepped(t, x, u, dx, M, W, nominal, below, ground, obs, aux):
+    if model_tensions(M.kind, t, x, u, dx, M, W) != 0:
+        return SINGULAR
+    _observe_rows(t, x, M, W, nominal, below, ground, obs, aux)
+    return OK
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
+def _observe_rows(t, x, M, W, nominal, below, ground, obs, aux):
+    """``obs`` and ``aux`` of the state x from the tensions W.tension and rotations W.Rw left at it."""
     nw = M.wtype.size
     s, d, _, _ = modulation(t, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
     ten = W.tension
@@ -83,7 +103,6 @@ def _observe_one(t, x, u, dx, M, W, nominal, below, ground, obs, aux):
     aux[AUX_GROUND_START] = ten[ground[0]] if ground[0] >= 0 else 0.0
     aux[AUX_GROUND_END] = ten[ground[1]] if ground[1] >= 0 else 0.0
     aux[AUX_MIN_ALTITUDE] = zmin
-    return OK
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
@@ -110,7 +129,7 @@ def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits,
                        ground, obs, aux, status, done):
     run, st, dn, Mb, Wb = advance_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks)
     if run:
-        ost = _observe_one(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, nominal, below, ground, obs[b], aux[b])
+        ost = _observe_stepped(t[b] + dn * dt, X[b], U[b], DX[b], Mb, Wb, nominal, below, ground, obs[b], aux[b])
         st = st if st != OK else ost
     status[b] = st
     done[b] = dn
