@@ -107,6 +107,15 @@ def test_the_env_argument_is_checked_by_name():
         jacobian_settings(IntegratorSettings(method="rk4", dt=0.01), 2)
 
 
+@pytest.mark.parametrize("bad", [True, 1.0])
+def test_the_wing_env_refuses_values_equal_to_one_that_are_not_integers(bad):
+    """True == 1 and 1.0 == 1 in Python: the env must still refuse them (naming the value), not take the default."""
+    from laddermill_gym.envs.task import WingTask
+
+    with pytest.raises(ValueError, match=f"jacobian_every = {bad!r}: must be an integer"):
+        WingTask(1, jacobian_every=bad)
+
+
 def test_the_reuse_study_times_only_steps_flown():
     """The study's CPU per step is a time over steps flown: a timed run whose wing leaves the flight envelope
     returns early from the kernel, and its time over the steps asked for read 4.6 us against 7.1 us per step flown

@@ -135,7 +135,8 @@ class CraftTask(TaskCore):
         cfg = self.craft.config
         self.n_substeps = whole_multiple(self.control_dt, cfg.settings.dt, control_dt)
         # the W step's iteration matrix kept for jacobian_every physics steps (1: every step, the registered bits)
-        self._settings = cfg.settings if jacobian_every == 1 else jacobian_settings(cfg.settings, jacobian_every)
+        self._settings = (cfg.settings if type(jacobian_every) is int and jacobian_every == 1  # True, 1.0: refused
+                          else jacobian_settings(cfg.settings, jacobian_every))
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
         self._build_batch(B, parallel)
         if warmup is not None:  # before the first kernel call: load what it compiled from numba's cache
