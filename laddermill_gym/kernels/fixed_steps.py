@@ -51,11 +51,12 @@ def advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
 # The chosen integrator's own Python function is the implementation (compiled with the integrators' flags), not a
 # lambda that calls its dispatcher: a lambda is one more compiled layer that numba links the whole integrator into
 # and optimises again, about 6 s of a cold start (issue 32); rk4_advance takes (and ignores) ``tableau`` for this.
-# cache=True: the dispatcher numba makes for the overload keeps its machine code on disk like every kernel (without
-# it, each process and each caller of other flags that compiled advance_breaks compiled the integrator again). It
-# shares the integrator's own cache entries (the same function, flags and signature: the same code).
+# Not cache=True: the overload's dispatcher would save its machine code under the integrator's own cache index (the
+# same function and signature), and the integrator's @njit dispatcher, called from Python, then loaded the overload's
+# entry and crashed (a segmentation fault in tests/test_controller_errors.py's W step timing, 2026-11-30): each
+# process that compiles advance_breaks compiles the integrator again instead (issue 32 point 1).
 @overload(advance_fixed, strict=False, jit_options={"error_model": "numpy", "fastmath": {"contract", "nsz", "arcp"},
-                                                    "_nrt": False, "cache": True})
+                                                    "_nrt": False})
 def _advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
     if isinstance(tableau, types.NoneType):
         return rk4_advance.py_func
