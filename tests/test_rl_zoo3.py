@@ -174,9 +174,12 @@ def test_run_folder_records_the_recipes_settings(ppo_run):
 @pytest.mark.parametrize("algo", ["ppo", "sac"])
 def test_harness_acts_as_rl_zoo3_does(algo, request):
     """The harness loads the run's algorithm (the issue: SAC loaded as PPO) and its statistics (the issue:
-    silently dropped): same actions as rl-zoo3's model behind rl-zoo3's VecNormalize, along 40 steps."""
+    silently dropped): same actions as rl-zoo3's model behind rl-zoo3's VecNormalize, along 40 steps: the same bits
+    through torch (``exact=False``, as rl-zoo3 acts), and to float32 rounding from the default float64 path of a
+    linear actor (control/exact_actor.py)."""
     run = request.getfixturevalue(f"{algo}_run")
-    ctrl = SB3Controller.load(run)
+    ctrl = SB3Controller.load(run, exact=False)
+    exact = SB3Controller.load(run)
     env, model = zoo_oracle(run, algo)
     assert type(ctrl.model) is type(model) and type(model).__name__ == algo.upper()
     obs = env.reset()
@@ -185,6 +188,7 @@ def test_harness_acts_as_rl_zoo3_does(algo, request):
         raw = env.get_original_obs()
         got, _ = ctrl.predict(raw, deterministic=True)
         np.testing.assert_array_equal(got, want)
+        np.testing.assert_allclose(exact.predict(raw, deterministic=True)[0], want, rtol=1e-5, atol=1e-7)
         obs, *_ = env.step(want)
     bare, _ = SB3Controller(ctrl.model).predict(raw, deterministic=True)
     assert np.abs(bare - got).max() > 1e-3  # the statistics matter: dropping them changes the actions
@@ -256,11 +260,14 @@ def test_unnormalised_run_loads_without_statistics(ppo_run, tmp_path):
     run = _copy(ppo_run, tmp_path)
     _rewrite(run / NAME / "config.yml", normalize="dict(norm_obs=False, norm_reward=True)")
     (run / NAME / "vecnormalize.pkl").unlink()
-    ctrl = SB3Controller.load(run / "best_model.zip")
+    ctrl = SB3Controller.load(run / "best_model.zip", exact=False)
     assert ctrl.obs_mean is None
     obs = np.linspace(-1.0, 1.0, 15)
     want, _ = ctrl.model.predict(obs.astype(np.float32), deterministic=True)
     np.testing.assert_array_equal(ctrl.predict(obs, deterministic=True)[0], want)
+    exact = SB3Controller.load(run / "best_model.zip")  # the linear actor in float64 (control/exact_actor.py)
+    assert exact.obs_mean is None
+    np.testing.assert_allclose(exact.predict(obs, deterministic=True)[0], want, rtol=1e-5, atol=1e-7)
 
 
 def test_wrapper_fills_in_our_defaults(monkeypatch):
