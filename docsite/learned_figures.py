@@ -11,8 +11,10 @@ from docsite.paper_figures import run_command
 def gain_locality() -> dict:
     """``python -m laddermill_gym.harness.gain_locality`` (about 5 minutes under load): per slot distance 0-10 the
     mean and largest dimensionless block norm and the share of the gain (``rows``, as printed), the means' range over
-    6-10 (``far``: "lo-hi"), the share beyond 10, the band's spectral radii ("k0".."k4" as printed; ``tail``: the one
-    value bands 6, 8 and all print, or "differ") and the own-slot norms every 5th slot (``own``, as printed)."""
+    6-10 (``far``: "lo-hi") and their
+    printed shares' sum (``far_share``), the share beyond 10, the band's spectral radii ("k0".."k4" as printed;
+    ``tail``: the one value bands 6, 8 and all print, or "differ") and the own-slot norms every 5th slot (``own``, as
+    printed)."""
     argv = ["laddermill_gym.harness.gain_locality"]
     out = run_command(argv, 1800)
     rows = [dict(zip(("mean", "largest", "share"), m.groups(), strict=True))
@@ -27,5 +29,6 @@ def gain_locality() -> dict:
     far = [r["mean"] for r in rows[6:]]
     tail = {v for k, v in bands.items() if int(k) >= 6}
     return {"rows": rows, "far": f"{min(far, key=float)}-{max(far, key=float)}", "beyond": beyond.group(1),
+            "far_share": f"{sum(float(r['share']) for r in rows[6:]):.3f}",
             "bands": {f"k{k}": v for k, v in bands.items()}, "tail": tail.pop() if len(tail) == 1 else "differ",
             "own": own.group(1)}

@@ -7,7 +7,7 @@ settings and targets given."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, Printed
 
 BENCHMARKS = Covered(
     groups=('pointmass_benchmark', 'bench_stable_dt', 'stable_steps'),
@@ -252,32 +252,35 @@ BENCHMARKS = Covered(
     derived=(
         '1,020 x 1.6 x 2 = 3,260 for the chain and 800 x 1.9 x 2 = 3,040 for the mill',
     ),
-    not_rerun=(
-        # python -m laddermill_gym.studies.mill.mill_benchmark (the same run)
-        '| largest stable RK4 dt (in-plane disturbance, against DP5; eigenvalue estimate) | 0.0177 s (error at '
-        '0.01 s: 1.2 mm); 0.0122 s just after a transfer',
-        "The bisection's in-plane disturbance later in the period misses the short first element's axial mode "
-        "right after a transfer (-30 +- 240i 1/s), which the eigenvalue estimate finds; the scene's step is "
-        "therefore 10 ms, no longer the chain's 12.5 ms. From a lateral disturbance the 3D mill diverges within a"
-        ' second and DP5(4) stalls on a wing flying sideways (reported as such, not hung).',
-        # python -m laddermill_gym.studies.pointmass.pointmass_benchmark (its accuracy line; minutes)
-        'implicit against explicit over 0.2 s: 3.0e-3 m at dt 0.01 s, first order.',
-        # physics_step_accuracy (LadderChain-v0, LadderMill-v2; minutes each); its CPU column: 2026-11-29, load 5.7-6.0
-        'LadderChain-v0 (3612.8 m) | registered: RK4 4 x 12.5 ms | 0.188 m | 5.2e-5 | 373 steps/s | | | : 1 x 50 '
-        'ms | 1.158 m | 3.2e-4 | 597 steps/s (1.6x) | | | : 1 x 50 ms | 1.628 m | 4.5e-4 | 786 steps/s (2.1x) | |'
-        ' LadderMill-v2 (3477.4 m) | registered: RK4 5 x 10 ms | 3.2e-5 m | 9.1e-9 | 391 steps/s | | | : 1 x 50 '
-        'ms | 2.4 mm | 7.0e-7 | 731 steps/s (1.9x) | | | : 1 x 50 ms | 6.4 cm | 1.9e-5 | 1,091 steps/s (2.8x)',
-        # the same study with --time 40
-        'ROS34PW2 is the step of choice: within 1e-3 of the extent on both ( holds it), third order, and in the '
-        'same run over 40 s ( ) it follows the mill through its loss of lateral stability as the reference does: '
-        "the episode ends after 322 periods against the reference's 321 (16.15 and 16.10 s), within 2.6 cm "
-        '(7.5e-6 of the extent) until then; ROS2 ends it after 317 (15.9 s), and ROS2 at 17-50 ms diverges in the'
-        " mill's apex whip in the work-precision study (docs/work_precision.md). ROS2 is cheaper again and also "
-        "within 1e-3 over 10 s. Neither follows the open-loop chain's apex whip: over 40 s they end the episode "
-        "after 223 (ROS34PW2) and 221 (ROS2) periods against the reference's 245, 5.2-5.4 m (1.4-1.5e-3 of the "
-        'extent) off just before; where an agent keeps the chain flying this does not arise, and a final policy '
-        'is best evaluated with the registered step.',
-        # the operating point's periodic search (minutes)
-        'running the in-plane mill for 975-1,380 simulated seconds',
+    printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('mill_benchmark', (
+            '| largest stable RK4 dt (in-plane disturbance, against DP5; eigenvalue estimate) | 0.0177 s (error at '
+            '0.01 s: 1.2 mm); 0.0122 s just after a transfer',
+            "The bisection's in-plane disturbance later in the period misses the short first element's axial mode "
+            "right after a transfer (-30 +- 240i 1/s), which the eigenvalue estimate finds; the scene's step is "
+            "therefore 10 ms, no longer the chain's 12.5 ms. From a lateral disturbance the 3D mill diverges within "
+            'a second and DP5(4) stalls on a wing flying sideways (reported as such, not hung).',
+            'running the in-plane mill for 975-1,380 simulated seconds',
+        )),
+        Printed('pointmass_accuracy', (
+            'implicit against explicit over 0.2 s: 3.0e-3 m at dt 0.01 s, first order.',
+        )),
+        Printed('step_accuracy_10', (
+            'LadderChain-v0 (3612.8 m) | registered: RK4 4 x 12.5 ms | 0.188 m | 5.2e-5 | 373 steps/s | | | : 1 x 50 '
+            'ms | 1.158 m | 3.2e-4 | 597 steps/s (1.6x) | | | : 1 x 50 ms | 1.628 m | 4.5e-4 | 786 steps/s (2.1x) | '
+            '| LadderMill-v2 (3477.4 m) | registered: RK4 5 x 10 ms | 3.2e-5 m | 9.1e-9 | 391 steps/s | | | : 1 x 50 '
+            'ms | 2.4 mm | 7.0e-7 | 731 steps/s (1.9x) | | | : 1 x 50 ms | 6.4 cm | 1.9e-5 | 1,091 steps/s (2.8x)',
+        )),
+        Printed('step_accuracy_40', (
+            'ROS34PW2 is the step of choice: within 1e-3 of the extent on both ( holds it), third order, and in the '
+            'same run over 40 s ( ) it follows the mill through its loss of lateral stability as the reference does: '
+            "the episode ends after 322 periods against the reference's 321 (16.15 and 16.10 s), within 2.6 cm "
+            '(7.5e-6 of the extent) until then; ROS2 ends it after 317 (15.9 s), and ROS2 at 17-50 ms diverges in '
+            "the mill's apex whip in the work-precision study (docs/work_precision.md). ROS2 is cheaper again and "
+            "also within 1e-3 over 10 s. Neither follows the open-loop chain's apex whip: over 40 s they end the "
+            "episode after 223 (ROS34PW2) and 221 (ROS2) periods against the reference's 245, 5.2-5.4 m (1.4-1.5e-3 "
+            'of the extent) off just before; where an agent keeps the chain flying this does not arise, and a final '
+            'policy is best evaluated with the registered step.',
+        )),
     ),
 )

@@ -4,7 +4,7 @@ the CPU costs timings as the page dates them; the bounds worked from them derive
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, Printed
 
 WORK_PRECISION_CLOSED_LOOP = Covered(
     given=(
@@ -64,45 +64,47 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
         'Only then is 5x within reach, and only on the mill.',
         'below the 4.3x bound with a free Jacobian above.',
     ),
-    not_rerun=(
-        # NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision ladder_chain / laddermill
-        # --forcing step --controller none lqr --time 10 --samples 50 (12 and 17 min) and
-        # tests/test_closed_loop_precision.py
-        'After the direction step the chain\'s and the mill\'s slow lateral modes are unstable (up to 6.4 1/s, "The'
-        ' apex whip\'s modes" there), so any integrator\'s local error grows by itself, and what separates the '
-        'methods is how much error each step adds to those modes.',
-        "At the scene's own integrator the wing paths agree to 8e-17 m and 3.5e-18 rad on the tethered wing (2 "
-        's). On the chain (4 s, slow test)',
+    printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('wp_closed_loop', (
+            "After the direction step the chain's and the mill's slow lateral modes are unstable (up to 6.4 1/s, "
+            '"The apex whip\'s modes" there), so any integrator\'s local error grows by itself, and what separates '
+            'the methods is how much error each step adds to those modes.',
+            '|---|---|---|---|---|---|---| | ladder_chain | 0.0222 s | ROS34PW2 0.0667 s: **1.42x** (ros2t 1.13x)',
+            '0.01667 s | 0.05 s: **2.14x** | 0.05 s: **2.23x** | 0.05 s: 1.36x',
+            'laddermill | 0.01538 s | ros2t 0.01667 s: **0.84x** (ROS34PW2 0.52x)',
+            '0.0125 s | 0.05 s: **2.89x** | 0.05 s: **2.77x** | 0.05 s: 1.78x',
+            '1.37x on the chain and 1.74x on the mill.',
+            '**5x is not met closed loop either:',
+            '2.2x on the chain and 2.9x on the mill.** Closed loop, accuracy is no longer what binds.',
+            'Every W-method meets the tolerances at its largest step, 0.05 s, with room to spare.',
+            'On the chain ROS34PW2 at 0.05 s is 2.5e-4 m and 3.1e-4 rad off, and ros2t is 3.1e-4 m off.',
+            'On the mill ros2t is 1.9e-4 m off and 0.07 % in power.',
+            'The RK4 baseline meets them by orders of magnitude (3e-8 m on the chain).',
+            'A ros2 or ros2t step costs 1.3-1.4 RK4 steps, and a ROS34PW2 step about 2.2.',
+            '- On the chain RK4 at 0.025 s, 2 steps per period and just beyond the stable-step estimate of 0.02445 '
+            's, runs to the end but misses the tolerances:',
+            '4.6 % in tension and 0.075 rad in attitude (a growing cable mode).',
+            '- On the mill RK4 at 0.0167 s breaks down at 0.33 s.',
+        )),
+        Printed('wp_chain_kept_matrix', (
+            '| ros2 | 2.24x | 2.79x | 3.53x | **3.93x** | | ros2t | 2.32x | 2.94x | 3.58x | 3.82x |',
+            '| ROS34PW2 | 1.46x | 1.79x | 1.93x | 1.98x |',
+            'Every kept-matrix run still meets the tolerances with room: at most 2.0e-3 m in lateral offset (ros2, '
+            'as every step), 3.0e-4 rad in attitude and 1.2e-4 in tension.',
+            '**5x is not met on the chain: 3.9x at best**,',
+        )),
+        Printed('wp_mill_kept_matrix', (
+            '| ros2 | 3.02x | 3.77x | 4.28x | 2.62x (0.025 s) | | ros2t | 3.01x | 3.77x | 4.32x | **4.70x** |',
+            '| ROS34PW2 | 1.91x | 2.13x | 2.39x | 2.45x |',
+            'On the mill the kept matrix costs accuracy in the generator power: ros2 kept 8 at 0.05 s is 2.0e-2 off '
+            'in power and misses the 1 % (hence its 0.025 s), ros2 kept 4 is 8.5e-3 off, ros2t kept 8 1.7e-3.',
+            '**5x is not met on the mill either: 4.7x at best** (ros2t kept 8), below the 5.7x bound.',
+        )),
+    ),
+    not_rerun=(  # tests/test_closed_loop_precision.py's agreements (a test's assertions, not a printed figure)
+        "At the scene's own integrator the wing paths agree to 8e-17 m and 3.5e-18 rad on the tethered wing (2 s). "
+        'On the chain (4 s, slow test)',
         'they agree to 5e-12 m and 1.3e-12 rad.',
         'The closed-loop references agree to 1.3e-9 (chain) and 2.4e-9 (mill) in the scaled state.',
-        '|---|---|---|---|---|---|---| | ladder_chain | 0.0222 s | ROS34PW2 0.0667 s: **1.42x** (ros2t 1.13x)',
-        '0.01667 s | 0.05 s: **2.14x** | 0.05 s: **2.23x** | 0.05 s: 1.36x',
-        'laddermill | 0.01538 s | ros2t 0.01667 s: **0.84x** (ROS34PW2 0.52x)',
-        '0.0125 s | 0.05 s: **2.89x** | 0.05 s: **2.77x** | 0.05 s: 1.78x',
-        '1.37x on the chain and 1.74x on the mill.',
-        '**5x is not met closed loop either:',
-        '2.2x on the chain and 2.9x on the mill.** Closed loop, accuracy is no longer what binds.',
-        'Every W-method meets the tolerances at its largest step, 0.05 s, with room to spare.',
-        'On the chain ROS34PW2 at 0.05 s is 2.5e-4 m and 3.1e-4 rad off, and ros2t is 3.1e-4 m off.',
-        'On the mill ros2t is 1.9e-4 m off and 0.07 % in power.',
-        'The RK4 baseline meets them by orders of magnitude (3e-8 m on the chain).',
-        'A ros2 or ros2t step costs 1.3-1.4 RK4 steps, and a ROS34PW2 step about 2.2.',
-        '- On the chain RK4 at 0.025 s, 2 steps per period and just beyond the stable-step estimate of 0.02445 s,'
-        ' runs to the end but misses the tolerances:',
-        '4.6 % in tension and 0.075 rad in attitude (a growing cable mode).',
-        '- On the mill RK4 at 0.0167 s breaks down at 0.33 s.',
-        # NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision ladder_chain --forcing step
-        # --controller lqr --jacobian-every 1 2 4 8 --time 5 --samples 25 --n-dt 3 (8 min)
-        '| ros2 | 2.24x | 2.79x | 3.53x | **3.93x** | | ros2t | 2.32x | 2.94x | 3.58x | 3.82x |',
-        '| ROS34PW2 | 1.46x | 1.79x | 1.93x | 1.98x |',
-        'Every kept-matrix run still meets the tolerances with room: at most 2.0e-3 m in lateral offset (ros2, as '
-        'every step), 3.0e-4 rad in attitude and 1.2e-4 in tension.',
-        '**5x is not met on the chain: 3.9x at best**,',
-        # ... laddermill --forcing step --controller lqr --jacobian-every 1 2 4 8 --time 5 --samples 25 --n-dt 3
-        '| ros2 | 3.02x | 3.77x | 4.28x | 2.62x (0.025 s) | | ros2t | 3.01x | 3.77x | 4.32x | **4.70x** |',
-        '| ROS34PW2 | 1.91x | 2.13x | 2.39x | 2.45x |',
-        'On the mill the kept matrix costs accuracy in the generator power: ros2 kept 8 at 0.05 s is 2.0e-2 off in '
-        'power and misses the 1 % (hence its 0.025 s), ros2 kept 4 is 8.5e-3 off, ros2t kept 8 1.7e-3.',
-        '**5x is not met on the mill either: 4.7x at best** (ros2t kept 8), below the 5.7x bound.',
     ),
 )

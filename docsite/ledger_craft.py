@@ -243,21 +243,20 @@ ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (
         '- **Agreement with oracles.md.** Read as the least incidence at which the craft can stay up unpowered '
         '(the best collective), 22.5 deg needs sigma = 0.075.',
     ),
-    not_rerun=(
-        # tests/test_rotor*.py (the blade-element oracle, seconds; not a page group)
-        'a typical solve takes about 25.',
-        '- at the peak of the mu = 0.1 curve (alpha_c = 52.5 deg, lam = 0.095), the tip is at 13 deg but the '
-        'largest angle over x >= 0.5 is 21.1 deg (at x = 0.5, psi = 257 deg);',
-        '- at alpha_c = 22.5 deg the largest angle is 13.8 deg over x >= 0.5, 13.3 deg over x >= 0.7, and 20 deg '
-        'at x = 0.2.',
-        'The two agree within 2e-5 at mu = 0.002, alpha_c = 89 deg, and within 1e-4 at mu = 0.005, alpha_c = 85 '
-        'deg.',
-        'about -56 deg at mu = 0.1, alpha_c = 85 deg.',
-        'It gives C_T, C_H, a0, a1 and b1 equal to the closed forms to 1e-9 relative.',
-        'Relative to |lam C_T| + |mu C_H| + sigma delta (1 + 3 mu^2)/8, the difference is at most 0.8 % at mu = '
-        '0.1, 1.1 % at mu = 0.2 and 1.7 % at mu = 0.3.',
-        # rotor_chart's collective scan at mu = 0.1 (seconds; its table is checked above, these two figures not)
+    not_rerun=(  # tests/test_rotor*.py (the blade-element oracle; assertions, not printed figures)
+        # rotor_chart's collective scan at mu = 0.1 and alpha_c = 22.5 deg: in its CSV, not printed (its table is
+        # checked above)
         'At mu = 0.1 and alpha_c = 22.5 deg, the best collective within the limit is 4.7 deg, with C_p = 0.059;',
         'at the limit, 9.8 deg gives C_p = 0.',
+        'a typical solve takes about 25.',
+        '- at the peak of the mu = 0.1 curve (alpha_c = 52.5 deg, lam = 0.095), the tip is at 13 deg but the largest '
+        'angle over x >= 0.5 is 21.1 deg (at x = 0.5, psi = 257 deg);',
+        '- at alpha_c = 22.5 deg the largest angle is 13.8 deg over x >= 0.5, 13.3 deg over x >= 0.7, and 20 deg at '
+        'x = 0.2.',
+        'The two agree within 2e-5 at mu = 0.002, alpha_c = 89 deg, and within 1e-4 at mu = 0.005, alpha_c = 85 deg.',
+        'about -56 deg at mu = 0.1, alpha_c = 85 deg.',
+        'It gives C_T, C_H, a0, a1 and b1 equal to the closed forms to 1e-9 relative.',
+        'Relative to |lam C_T| + |mu C_H| + sigma delta (1 + 3 mu^2)/8, the difference is at most 0.8 % at mu = 0.1, '
+        '1.1 % at mu = 0.2 and 1.7 % at mu = 0.3.',
     ),
 )

@@ -4,7 +4,7 @@ results against ``rotor_design``, its inputs against the configs and its hand ar
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, History, Printed
 
 RDS = "{rotor_design[%s]}"
 RP = "{rotor_design[prose][%s]}"
@@ -36,6 +36,22 @@ STUDY_CHECKS = (  # the study's printed output and prose against rotor_design (5
                                                   RP % "30kft][sensitivity][solidity")))
     + tuple((rf"{label}: ([\d.]+) / ([\d.]+) m/s", (RP % f"15kft][sensitivity][{key}",
                                                     RP % f"30kft][sensitivity][{key}")) for label, key in SENS))
+
+SC = "{rotor_design[scan][%s]}"
+SCAN_CHECKS = (  # worked from the study's scan and sensitivity lines (docsite.rotor_figures.scan_figures)
+    (r"With no limit at all, 3\.13 MW would come ([\d.]+) m/s earlier at 15,000 ft", (SC % "15kft][earlier",)),
+    (r"(\d+ and \d+) m/s are the best, within about (\d+) % of each other\. Below (\d+) m/s",
+     (SC % "15kft][best", SC % "15kft][apart_pct", SC % "15kft][low_best")),
+    (r"the power drops by (\d+) % at 160 m/s, so (\d+) m/s keeps a margin\. - \*\*30,000 ft: (\d+) m/s\*\*",
+     (SC % "15kft][drop160_pct", SC % "15kft][design_tip", SC % "30kft][design_tip")),
+    (r"Below (\d+) m/s the craft cannot hold 30,000 ft on 30 deg tethers at 33 m/s at all",
+     (SC % "30kft][lowest_tip",)),
+    (r"They cover the study's collectives \(([-\d.]+\.\.[-\d.]+) deg at 15,000 ft, ([-\d.]+\.\.[-\d.]+) deg at "
+     r"30,000 ft\)", (SC % "15kft][theta", SC % "30kft][theta")),
+    (r"From 24 m/s on, each tether is within (\d+-\d+) % of its allowed tension", (SC % "30kft][short_pct",)),
+    (r"At 30,000 ft the air is ([\d.]+) times as dense and the tethers weigh ([\d.]+) t\. The rated wind is "
+     r"therefore about (\d+) m/s higher", ("{rotor_design[scan][rho_ratio]}", "{rotor_design[scan][tethers_t]}",
+                           "{rotor_design[scan][rated_gap]}")))
 
 DW, DC = "{design_data[worked][%s]}", "{design_data[config][%s]}"
 DESIGN_CHECKS = (
@@ -93,8 +109,13 @@ DESIGN_CHECKS = (
      (DC % "15kft][collective", DC % "30kft][collective")))
 ROTOR_DESIGN = Covered(  # the study above (rotor_design) and its inputs (design_data), every other number listed
     groups=("rotor_design", "design_data"),
-    checks=STUDY_CHECKS + DESIGN_CHECKS,
+    checks=STUDY_CHECKS + DESIGN_CHECKS + SCAN_CHECKS,
     given=(
+        # the rating and the altitudes around the checked rated winds, required C_p and sensitivity winds
+        "Our drives are rated for 3.13 MW (mass estimate), so the craft's peak equals Roberts' 3.13 MW at both "
+        'altitudes, and these are its rated winds.', '30 m/s at 30,000 ft.',
+        '- What moves the rated wind is anything that lets the craft fly at a larger incidence or lift more '
+        '(sensitivity table, wind for 3.13 MW):',
         '# Twin 35 m rotorcraft at 15,000 ft and 30,000 ft: steady design study',
         'Roberts (sec. 6 and Table 1)',
         'sizes a twin-rotor craft with 35 m rotors for 15,000 ft and 30,000 ft and quotes a peak output of 3.13 '
@@ -225,18 +246,27 @@ ROTOR_DESIGN = Covered(  # the study above (rotor_design) and its inputs (design
         'With our craft that needs winds above about 25 m/s at 15,000 ft and about 32 m/s at 30,000 ft for much '
         'of the time.',
     ),
+    printed=(  # the page group rotor_design's whole output (docsite.printed_numbers: each number printed)
+        Printed("rotor_design", (
+            '**No limit caps the power inside 5-45 m/s.** The power rises to the top of the range:',
+            '- At 15,000 ft the tethers reach their allowed tension at 22 m/s (1.96 MW).',
+            '- At 30,000 ft the blade limit and the lift bind throughout.',
+            '**Why 3.13 MW needs such strong winds.**',
+            'Its disk must stay inclined only about 30-35 deg to the wind to lift itself and the tethers on 30 deg '
+            'cables.',
+            '24.4 m/s at 15,000 ft (no change at 30,000 ft).',
+            "- Roberts' other solidity reading, sigma = 0.075 ( ), is worse: 26.6 / 33.8 m/s.",
+            'and the craft needs a 230 m/s tip speed to stay up at all.')),
+    ),
+    history=(
+        History("2026-11-29", "laddermill_gym.rotorcraft.trim of the 35 m craft configs with the tether attachments at "
+                "CG height", "a trial of the craft configs before the attachments were moved (c0907b8)", (
+                    "with the attachments at CG height, the rotors' 100 kN m pitch-up moment at the design pose left "
+                    'no equilibrium near it, and the trim did not converge.',)),
+    ),
     not_rerun=(
-        # rotor_design's printed lines, where the checks above do not already cover them (its sensitivity, scan and
-        # summary figures)
-        'With no limit at all, 3.13 MW would come 1.2 m/s earlier at 15,000 ft (sensitivity table).',
-        '170 and 180 m/s are the best, within about 2 % of each other.',
-        'Below 170 m/s the thrust at the blade limit falls short and the power drops by 16 % at 160 m/s, so 180 '
-        'm/s keeps a margin. - **30,000 ft: 230 m/s** (13.143 rad/s).',
-        'Below 210 m/s the craft cannot hold 30,000 ft on 30 deg tethers at 33 m/s at all.',
-        "They cover the study's collectives (-0.4..8.4 deg at 15,000 ft, 4.1..11.5 deg at 30,000 ft).",
-        "With the attachments at CG height, the rotors' 100 kN m pitch-up moment at the design pose left no "
-        'equilibrium near it, and the trim did not converge.',
-        # the simulator's trim of the two craft configs (tests/test_rotor_design.py's trim; not a page group)
+        # the simulator's trim of the two craft configs (tests/test_rotor_design.py's trim: a test's assertions, no
+        # command prints them)
         'craft altitude [m] | 5160 | 8669',
         'pitch = incidence [deg] | 26.5 | 29.8',
         'electrical power [MW] | 2.57 | 3.01',
@@ -244,25 +274,5 @@ ROTOR_DESIGN = Covered(  # the study above (rotor_design) and its inputs (design
         'tether tension at the craft [kN] | 72 | 85',
         'The 15,000 ft craft trims 590 m above the design altitude, where it meets 28.6 m/s.',
         'the altitude is within 15 % of the design;',
-        '**No limit caps the power inside 5-45 m/s.** The power rises to the top of the range:',
-        '- At 15,000 ft the tethers reach their allowed tension at 22 m/s (1.96 MW).',
-        '- At 30,000 ft the blade limit and the lift bind throughout.',
-        'From 24 m/s on, each tether is within 2-4 % of its allowed tension but never reaches it.',
-        '**3.13 MW is reached at 25.6 m/s at 15,000 ft and at 32.5 m/s at 30,000 ft.** Our drives are rated for '
-        "3.13 MW (mass estimate), so the craft's peak equals Roberts' 3.13 MW at both altitudes, and these are "
-        'its rated winds.',
-        '**Why 3.13 MW needs such strong winds.**',
-        'The required C_p is 0.555 at 20 m/s and 0.284 at 25 m/s at 15,000 ft, and 0.478 at 25 m/s and 0.277 at '
-        '30 m/s at 30,000 ft.',
-        'Its disk must stay inclined only about 30-35 deg to the wind to lift itself and the tethers on 30 deg '
-        'cables.',
-        '- What moves the rated wind is anything that lets the craft fly at a larger incidence or lift more '
-        '(sensitivity table, wind for 3.13 MW): - no profile drag: 23.9 / 30.3 m/s; - weightless tethers: 24.2 / '
-        '29.0 m/s; - tethers at 20 deg: 24.2 / 31.7 m/s; - craft mass x0.7: 24.8 / 31.0 m/s; - no stress limit:',
-        '24.4 m/s at 15,000 ft (no change at 30,000 ft).',
-        "- Roberts' other solidity reading, sigma = 0.075 ( ), is worse: 26.6 / 33.8 m/s.",
-        '- At 30,000 ft the air is 0.59 times as dense and the tethers weigh 12.6 t.',
-        'The rated wind is therefore about 7 m/s higher, and the craft needs a 230 m/s tip speed to stay up at '
-        'all.',
     ),
 )

@@ -3,7 +3,7 @@ the model, scale-out, rl-zoo3."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, History
 
 INDEX = Covered(given=("Schwab (1999)", "Schwab 1999", "Figs. 6-8", "Ockels 2007", "5 km string at 1 cm",
                        "Lansdorp et al. 2008", "his Fig. 3, eq. (6), the 35 m design", "after its 0.01 rad"))
@@ -77,14 +77,18 @@ RL_ZOO3 = Covered(
            "(4 x 256 steps, 4 gradient steps per 4 transitions)", "(64 x 64)", "the 200,000-step run above",
            "200,000 steps are a demonstration", "the README's PPO took 12 M steps", "(20 frames/s, 640 x 480",
            "moviepy 2.x", "(11 frames at 20 frames/s come out as 10)",
-           "For the 200,000-step run it printed (two 300 s episodes of the 0.01 rad step)", "rl-zoo3 (2.x)",
+           "For the 200,000-step run it printed (two 300 s episodes of the 0.01 rad step;", "rl-zoo3 (2.x)",
            "PPO (4096 steps) and SAC (200 steps)", "along 40 steps, and the same return of a 2 s episode"),
     timings=("165 MB of the 270 MB added", "wall time per 1000 env steps, median), on this project's 2-core machine "
              "while the other engineers' jobs kept its load average at 2.7 to 5.9",
              "| 5 | 0.124 (0.085 to 0.137) | 1.59 (0.59 to 4.39) | 12.9x |",
              "| 7 | 0.094 (0.076 to 0.119) | 0.90 (0.46 to 6.03) | 9.6x |",
              "| 3 | 3.98 (2.68 to 13.9) | 239 (189 to 262) | 60x |", "The issue reported 4.7x"),
-    not_rerun=("(25 s of the 60 s episodes",  # an rl-zoo3 training run of 200,000 steps, not shipped
-               "laddermill_gym-TetheredWing-v0_1 933.89 32.2 49.8734 7563.6"),
+    history=(History("2026-11-24", "python -m rl_zoo3.train --algo ppo --env laddermill_gym/TetheredWing-v0 "
+                     "--gym-packages laddermill_gym -n 200000 (the page's command), then laddermill evaluate "
+                     "--controllers lqr runs/zoo/ppo/"
+                     "laddermill_gym-TetheredWing-v0_1 --episodes 2", "an rl-zoo3 PPO run of 200,000 steps, not "
+                     "kept (1fe468f)", ("(25 s of the 60 s episodes",
+                                        "laddermill_gym-TetheredWing-v0_1 933.89 32.2 49.8734 7563.6")),),
 )
 

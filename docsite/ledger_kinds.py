@@ -1,5 +1,6 @@
 """The kinds of a docs page's ledger entry (:mod:`docsite.page_ledger`): a covered page and a page not yet
-covered.
+covered, and two kinds of a covered page's snippets: :class:`Printed` (every number a command prints: re-run by its
+group) and :class:`History` (figures of a dated training run that is not kept: a record, marked so on the page).
 """
 
 from __future__ import annotations
@@ -15,6 +16,33 @@ class Covered:
     timings: tuple = ()
     derived: tuple = ()
     not_rerun: tuple = field(default=())
+    printed: tuple = ()  # Printed entries
+    history: tuple = ()  # History entries
+
+
+@dataclass(frozen=True)
+class Printed:
+    """Snippets each of whose numbers ``group``'s command prints (:mod:`docsite.printed_numbers` compares them by
+    value at the digits the page quotes). ``group`` is a page group (:data:`docsite.page_figures.GROUPS`, whose
+    figures carry the command's output under ``"printed"``) or a long group (:data:`docsite.long_figures.LONG`, run
+    only by ``python -m docsite.readme_figures --long NAME``)."""
+
+    group: str
+    snippets: tuple
+
+
+@dataclass(frozen=True)
+class History:
+    """Figures of a run that is not kept (a training run, a run of earlier code): their numbers depend on the CPU,
+    the run and the code of the day, so they are a dated record, not re-run. ``date`` (ISO, the run's day, from git
+    log or the config's comment) must appear in the paragraph of every snippet on the page, or in the paragraph just
+    before its table (tests/test_page_history.py); ``command``: what made the figures; ``run``: which run (its
+    config, seed, length)."""
+
+    date: str
+    command: str
+    run: str
+    snippets: tuple
 
 
 @dataclass(frozen=True)

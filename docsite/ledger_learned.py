@@ -5,7 +5,7 @@ figures not re-run; the durations timings as the page dates them."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, History, Printed
 from docsite.ledger_studies import LEARNED_MILL_CHECKS
 
 CC, MV = "~{chain_controllers[%s]}", "~{mill_v1_controllers[lqr][%s]}"
@@ -18,7 +18,8 @@ LEARNED_MILL = Covered(
         (r"\| 0 of 5 \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| aerodynamic range exceeded \|",
          (CC % "lqr][length", CC % "lqr][dy", CC % "lqr][power_kW", CC % "lqr][return")),
         (r"\| LQR \| 5 of 5 \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| - \|",
-         (MV % "length", MV % "dy", MV % "power_kW", MV % "return"))),
+         (MV % "length", MV % "dy", MV % "power_kW", MV % "return")),
+        (r"\| 6-10 \| [\d.]+-[\d.]+ \| \| ([\d.]+) together \|", ("{gain_locality[far_share]}",))),
     given=(
         'Issue 31 point 2 asks for one policy, shared by every wing, trained with one command from a YAML config '
         "in at most two hours on the 2-core machine, that holds for 300 s after the paper's 0.01 rad direction "
@@ -60,7 +61,7 @@ LEARNED_MILL = Covered(
         ' step at 1 s) for 300 s;',
         'the registered scenario is deterministic, seeds 0-4 fly the same episode, as the 5-seed evaluation below'
         ' shows.)',
-        '(seed 0)',
+        '(seed 0;',
         'phase, step | held 300 s | length [s] | mean power [kW] | max abs dy [m] | gain error vs LQR band | R^2 '
         'rudder, aileron | |---|---|---|---|---|---|---| | LQR (teacher)',
         "(The gain error of round 4 was not printed: the run's log lost it; a rerun prints it.)",
@@ -78,11 +79,11 @@ LEARNED_MILL = Covered(
         '--teacher lqr_ladder_chain_central --n-basis 101 --k 4 --episodes 1 --episode-time 300 --no-lqr',
         'k = 4 and n_basis = 101 (per-wing gains).',
         '**Training** ( , one core: torch threads 1, NUMBA_NUM_THREADS=1)',
-        'printed and its (every row flown 300 s on the registered scenario, seed 0):',
+        'and its (every row flown 300 s on the registered scenario, seed 0):',
         'phase, step | held 300 s | mean power [kW] | max abs dy [m] | gain error vs LQR band | R^2 elevator, '
         'rudder, aileron | |---|---|---|---|---|---| | centralised LQR (teacher)',
         'On the chain every DAgger round holds from the first (on the mill round 1 did not):',
-        'selection by the excursion kept round 4.',
+        'selection by the excursion kept round 4 (',
         'controller | held 300 s | length [s] | max abs dy [m] | mean power [kW] | return | failures | '
         '|---|---|---|---|---|---|---| | shared policy ( , shipped as )',
         'Shipped as (380 kB with ): ;',
@@ -127,6 +128,7 @@ LEARNED_MILL = Covered(
         'control steps of 4 mills:',
         '161,600 labelled slot samples)',
         'plus its 60 s evaluation 2-3 minutes.',
+        '(1 min 4 s for both, its design included).', '(33 s).',
     ),
     derived=(
         # read off the checked gain-locality tables
@@ -137,71 +139,62 @@ LEARNED_MILL = Covered(
         "where the LQR's least stable mode lies, so one set of weights for every slot needs the slot's position "
         'as an input:',
     ),
-    not_rerun=(
-        # laddermill_gym.harness.gain_locality's lines the group does not parse (5 minutes)
-        '0.038 together',
-        'gives a spectral radius of 1.03978 for k = 4 with 21 nodes, 1.00650 with 26, 1.01052 with 51, and '
-        '0.99842 only with 101 nodes (one per slot: every slot its own gains;',
-        'relative gain error 0.226, 0.176, 0.127, 0.063).',
-        # the training log's gain-error and R^2 columns (the held / length / power / dy columns are checked against
-        # training_curve.csv); the teacher's and the earlier runs' logs
-        '1 of 1 | 300 | 154.026 | 0.0948',
-        '0 of 1 | 163.0 | 154.867 | 39.4 | 0.3995 | 0.9986, 0.9955',
-        'DAgger 2 | 1 of 1 | 300 | 154.026 | 0.0943 | 0.3300 | 0.9984, 0.9919',
-        'DAgger 3 | 1 of 1 | 300 | 154.026 | 0.0943 | 0.3294 | 0.9983, 0.9901',
-        'DAgger 4 (kept: )',
-        '1 of 1 | 300 | 154.026 | 0.0940',
-        'The same recipe with a 64-64 critic (an earlier run, stopped in round 4)',
-        'printed the same rounds 1-3 to four digits:',
-        # laddermill evaluate --episodes 5 --episode-time 300 of the shipped policies and their LQRs (12 min each), and
-        # the 0.1 rad runs; the earlier attempts' evaluations and training logs
-        "5 of 5 | 300.0 | 0.0940 | 154.026 (100.0 % of the LQR's)",
-        '6039.23 | -',
-        'LQR | 5 of 5 | 300.0 | 0.0948 | 154.026 | 6039.22 | -',
-        'the shared policy fails at 11.6 s (aerodynamic range exceeded, max |dy| 43.03 m, 171.5 kW), exactly as '
-        'the LQR does (11.6 s, 42.62 m, 171.6 kW):',
-        'The fitted gains stay 33 % (Frobenius)',
-        "away from the LQR's band-4 gain, yet the closed loop flies the LQR's episode:",
-        'Noise on the flown actions is what changed the outcome against the earlier attempt below (same rounds '
-        'without noise, 21 nodes: 81.9 s).',
-        'it fails 9.0 s after the step (aerodynamic range exceeded, max |dy| 34.62 m, 234.1 kW), earlier than the'
-        ' open loop (12.2 s, 52.15 m).',
-        'printed 300.0 s, 0.0803 m, 237885.9 W (1 min 4 s for both, its design included).',
-        "With a smooth schedule, (a node every 5 wings), the projection's relative gain error is 0.2126 and the "
-        'flight fails: (33 s).',
-        '1 of 1 | 237.886 | 0.0803',
-        '1 of 1 | 237.509 | 0.0829 | 0.1428 | 1.0, 0.9981, 0.9836',
-        'DAgger 2 | 1 of 1 | 237.577 | 0.0823 | 0.1252 | 1.0, 0.9977, 0.9775',
-        'DAgger 3 | 1 of 1 | 237.594 | 0.0837 | 0.1210 | 1.0, 0.9976, 0.9755',
-        'DAgger 4 (kept: )',
-        '1 of 1 | 237.588 | 0.0813 | 0.1218 | 1.0, 0.9977, 0.9751',
-        "the fitted gains are 12-14 % from the LQR's band-4 gain (the mill's 33 %).",
-        "PPO raised the power by 0.6 % (the per-wing reward's power term)",
-        "5 of 5 | 300.0 | 0.0813 | 237.588 (99.9 % of the LQR's)",
-        '5990.46 | -',
-        'centralised LQR | 5 of 5 | 300.0 | 0.0803 | 237.886 | 5997.98 | -',
-        '0 of 5 | 9.0 | 34.62 | 234.138 | 120.56 | aerodynamic range exceeded',
-        'unlike the mill, the chain is held by both, the shared policy 300 s, max |dy| 0.8103 m, 236.273 kW, the '
-        'LQR 300 s, 0.8052 m, 237.510 kW.',
-        '5 | 60.0 | 160.91 | 3.12 | 0.9973, 0.9804',
-        '2 | 5 | 60.0 | 162.24 | 2.02 | 0.9941, 0.9983',
-        '3 | 5 | 60.0 | 162.06 | 2.99 | 0.9896, 0.9980',
-        '4 | 5 | 60.0 | 157.76 | 0.675 | 0.9883, 0.9967',
-        '5 | 0 | 15.35 | 171.05 | 88.6 | 0.9952, 0.9980',
-        '6 | 0 | 15.15 | 171.46 | 73.9 | 0.9868, 0.9800',
-        "The fits explain 98-99.8 % of the LQR's actions, yet the gains they imply are not the LQR's:",
-        "the gain of round 1 differs from the LQR's by 44 % (Frobenius norm), and its closed loop on the LQR's "
-        "design model has spectral radius 1.03308 (the LQR's 0.99842).",
-        'the rounds flown by the learner change the data and the fit, not always for the better (rounds 5 and 6).',
-        '5 of 5 | 300 | 0.0948 | 154.0',
-        'shared policy, DAgger round 4 | 0 of 5 | 81.9 | 53.6 | 155.9 | aerodynamic range exceeded',
-        'The clone holds the mill 14 times longer than the open loop (6.15 s)',
-        '300 s, max abs dy 0.397 m, 154.03 kW (now a command: , below).',
-        'the lateral deviations under the LQR are a few centimetres, so the ridge shrank the fitted gains about '
-        "20x below the LQR's;",
-        'the clone failed 6.55 s into the episode, as the open loop does.',
-        'after round 1 the clone held 5/5 seeds for 60 s (162.2 kW, max |dy| 3.03 m);',
-        'round 2, flown by the learner, visited states where the LQR saturates, the linear fit of the saturated '
-        'labels lowered the gains and the excursion grew to 12.2 m.',
+    printed=(  # long groups (docsite/long_figures.py): python -m docsite.readme_figures --long NAME
+        Printed("mill_claim", ("5 of 5 | 300.0 | 0.0940 | 154.026 (100.0 % of the LQR's)", '6039.23 | -',
+                               'LQR | 5 of 5 | 300.0 | 0.0948 | 154.026 | 6039.22 | -')),
+        Printed("mill_step_01", ('the shared policy fails at 11.6 s (aerodynamic range exceeded, max |dy| 43.03 m, '
+                                 '171.5 kW), exactly as the LQR does (11.6 s, 42.62 m, 171.6 kW):',)),
+        Printed("chain_central_lqr", ('printed 300.0 s, 0.0803 m, 237885.9 W',)),
+        Printed("chain_fit_21", ("With a smooth schedule, (a node every 5 wings), the projection's relative gain "
+                                 'error is 0.2126 and the flight fails:',)),
+        Printed("chain_claim", ("5 of 5 | 300.0 | 0.0813 | 237.588 (99.9 % of the LQR's)", '5990.46 | -',
+                                'centralised LQR | 5 of 5 | 300.0 | 0.0803 | 237.886 | 5997.98 | -')),
+        Printed("chain_step_01", ('unlike the mill, the chain is held by both, the shared policy 300 s, max |dy| '
+                                  '0.8103 m, 236.273 kW, the LQR 300 s, 0.8052 m, 237.510 kW.',)),
+    ),
+    history=(
+        History("2026-11-29", "a script on the saved LQR design (harness.gain_locality's band projection; not a "
+                "command)", "the locality study's projections on 21, 26, 51 and 101 nodes (7b57af8)",
+                ('gives a spectral radius of 1.03978 for k = 4 with 21 nodes, 1.00650 with 26, 1.01052 with 51, and '
+                 '0.99842 only with 101 nodes (one per slot: every slot its own gains;',
+                 'relative gain error 0.226, 0.176, 0.127, 0.063).')),
+        History("2026-11-29", "laddermill train ppo_mill_v1 --seed 0 --out runs/ppo_mill_v1_e",
+                "ppo_mill's training run (22.48 min, one core; shipped; b3c3fb4): its log's gain-error and R^2 "
+                "columns (the other columns are checked against the shipped training_curve.csv)",
+                ('1 of 1 | 300 | 154.026 | 0.0948', '0 of 1 | 163.0 | 154.867 | 39.4 | 0.3995 | 0.9986, 0.9955',
+                 'DAgger 2 | 1 of 1 | 300 | 154.026 | 0.0943 | 0.3300 | 0.9984, 0.9919',
+                 'DAgger 3 | 1 of 1 | 300 | 154.026 | 0.0943 | 0.3294 | 0.9983, 0.9901', 'DAgger 4 (kept: )',
+                 '1 of 1 | 300 | 154.026 | 0.0940', 'The same recipe with a 64-64 critic (an earlier run, stopped in '
+                 'round 4)', 'printed the same rounds 1-3 to four digits:', 'The fitted gains stay 33 % (Frobenius)',
+                 "away from the LQR's band-4 gain, yet the closed loop flies the LQR's episode:",
+                 'Noise on the flown actions is what changed the outcome against the earlier attempt below (same '
+                 'rounds without noise, 21 nodes: 81.9 s).')),
+        History("2026-11-29", "laddermill train ppo_chain_v0 --seed 0 --out runs/ppo_chain_v0",
+                "ppo_chain's training run (15.55 min, one core; shipped; 1b5590c): its log's gain-error and R^2 "
+                "columns", ('1 of 1 | 237.886 | 0.0803', '1 of 1 | 237.509 | 0.0829 | 0.1428 | 1.0, 0.9981, 0.9836',
+                            'DAgger 2 | 1 of 1 | 237.577 | 0.0823 | 0.1252 | 1.0, 0.9977, 0.9775',
+                            'DAgger 3 | 1 of 1 | 237.594 | 0.0837 | 0.1210 | 1.0, 0.9976, 0.9755',
+                            'DAgger 4 (kept: )', '1 of 1 | 237.588 | 0.0813 | 0.1218 | 1.0, 0.9977, 0.9751',
+                            "the fitted gains are 12-14 % from the LQR's band-4 gain (the mill's 33 %).",
+                            "PPO raised the power by 0.6 % (the per-wing reward's power term)")),
+        History("2026-11-29", "laddermill train ppo_mill_v1 (the config of c2989b5 before 8213990) and laddermill "
+                "evaluate of its round 4; the ridge and clipped-label trials", "the first, smooth-schedule attempt "
+                "(not kept; 7b57af8)",
+                ('5 | 60.0 | 160.91 | 3.12 | 0.9973, 0.9804', '2 | 5 | 60.0 | 162.24 | 2.02 | 0.9941, 0.9983',
+                 '3 | 5 | 60.0 | 162.06 | 2.99 | 0.9896, 0.9980', '4 | 5 | 60.0 | 157.76 | 0.675 | 0.9883, 0.9967',
+                 '5 | 0 | 15.35 | 171.05 | 88.6 | 0.9952, 0.9980', '6 | 0 | 15.15 | 171.46 | 73.9 | 0.9868, 0.9800',
+                 "The fits explain 98-99.8 % of the LQR's actions, yet the gains they imply are not the LQR's:",
+                 "the gain of round 1 differs from the LQR's by 44 % (Frobenius norm), and its closed loop on the "
+                 "LQR's design model has spectral radius 1.03308 (the LQR's 0.99842).",
+                 'the rounds flown by the learner change the data and the fit, not always for the better (rounds 5 '
+                 'and 6).', '5 of 5 | 300 | 0.0948 | 154.0',
+                 'shared policy, DAgger round 4 | 0 of 5 | 81.9 | 53.6 | 155.9 | aerodynamic range exceeded',
+                 'The clone holds the mill 14 times longer than the open loop (6.15 s)',
+                 '300 s, max abs dy 0.397 m, 154.03 kW (now a command: , below).',
+                 'the lateral deviations under the LQR are a few centimetres, so the ridge shrank the fitted gains '
+                 "about 20x below the LQR's;", 'the clone failed 6.55 s into the episode, as the open loop does.',
+                 'after round 1 the clone held 5/5 seeds for 60 s (162.2 kW, max |dy| 3.03 m);',
+                 'round 2, flown by the learner, visited states where the LQR saturates, the linear fit of the '
+                 'saturated labels lowered the gains and the excursion grew to 12.2 m.')),
     ),
 )

@@ -6,7 +6,7 @@ derived."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, Printed
 from docsite.ledger_papers import MEIJAARD_CHECKS
 
 F = "{meijaard_v1[files][%s]}"
@@ -103,6 +103,9 @@ MEIJAARD = Covered(
         '![Fig. 8: after the 0.01 rad wind-direction step]',
     ),
     timings=(
+        # the v0 run's dates, commits and durations as the page gives them
+        'Every figure below is what it printed on 2026-11-29, first at eea39e0 (516 s, before the option)',
+        'and again, unchanged, at dce7b14 (656 s), which also printed the claims panel below:',
         # the study's durations as the page dates them (2026-11-29, its commits)
         '(677 s on a loaded 2-core machine;',
         'is a 75 s version with short searches, the v0 reproduction below).',
@@ -123,60 +126,58 @@ MEIJAARD = Covered(
         " third of the paper's power and is not periodic at 5 m/s, where its descending leg also pulls up to 1.9 "
         "times the cable's breaking load. DP5(4)",
     ),
-    not_rerun=(
-        # python -m laddermill_gym.studies.mill.meijaard (92 s with its searches saved): its printed lines that the
-        # group (power.csv, claims.csv, breakdown.csv) does not read
-        '82.1 kW at 1 m/s; **152.9 kW at 2 m/s** (3D: 152.9 kW); 5 m/s not periodic:',
-        '488.8 kW in the last period,',
-        'The undisturbed 3D periodic motion meets none of the end criteria over a period (no wing outside the '
-        'aerodynamic data, lowest wing CG 57.3 m, peak tension 0.285 of the breaking load).',
-        '6 and 7 panels show the shape at the end of the 3,053 s search and the tensions of its last period, and '
-        'say so;',
-        "The 5 m/s search also passes the cable's breaking load in the transient from rest (element 0 at 392.6 s,"
-        ' 1.01 times it;',
-        'After the direction step the v1 mill leaves the range of its wing data sooner than v0 (6.4 s against 8.4'
-        ' s), and not at slot 40 but at the wings in slots 8-15, low on the ascending leg (up to 39 deg of '
-        'sideslip);',
-        # python -m laddermill_gym.studies.mill.meijaard --scene laddermill (LadderMill-v0's wing, 11 min): the v0
-        # section
-        'Every figure below is what it printed on 2026-11-29, first at eea39e0 (516 s, before the option)',
-        'and again, unchanged, at dce7b14 (656 s), which also printed the claims panel below:',
-        "6-8's shapes and tensions, a third of the power, and a smaller step going only a little longer (43.5 s "
-        '-> 45.2 s).',
-        'V_c = 1 m/s | periodic (Fig. 6)',
-        'periodic after 645 s, loop 295 m wide',
-        'V_c = 5 m/s | periodic, wider loop | **not periodic** within 3053 s; loop 455-694 m wide;',
-        'period-mean power -3.2 to +1.9 MW',
-        '5.5 kN (1 m/s), 10.5 kN (2 m/s)',
-        'V_c | "of the order of 200 kW", not optimised | 36.3 kW (1 m/s), 66.7 kW (2 m/s, 2D), 66.0 kW (3D)',
-        '| 2D vs 3D | "almost identical" | 66.7 vs 66.0 kW, tensions within 0.5 kN',
-        'not discussed | peak tension 0.33 (1 m/s) and 0.58 (2 m/s) x the breaking load; **5 m/s:',
-        'overload** at t = 43.0 s (element 99, 553.5 kN), peak 1.9 x',
-        'direction step, node/slot 40 | yaws over a large angle | yaws over several turns (Fig. 8)',
-        '| end of the divergence | computation breaks down after ~40 s;',
-        'a smaller step goes longer | **physical end at 8.40 s**:',
-        'wings 17-24 outside the aerodynamic data for 2 s (wing 17: beta 37 deg since 6.40 s);',
-        'the same with RK4 at 10 ms and 2.5 ms and ROS34PW2 (rtol 1e-4)',
-        'after ~40 s | RK4 10 ms:',
-        '43.5 s (wing 87 over the 300 m/s guard);',
-        'RK4 2.5 ms, judged on height and overload only:',
-        "45.2 s (wing 5's rate 16.7 -> 104 rad/s in one step), no wing below half a span (lowest CG 55.9 m), peak"
-        ' tension 0.42 x the breaking load',
-        'outside the aerodynamic data | yes | sideslip beyond 21 deg at 6.4 s (some wing), 6.5 s (slot 40);',
-        'angle of attack at 7.5 s (some wing)',
-        'for 2 s without a break (five times the longest spell outside it in the undisturbed periodic motion over'
-        ' one period, 0.40 s, by the wing just inserted;',
-        'there no criterion holds, the lowest wing CG is 57.9 m and the peak tension 0.314 of the breaking load),'
-        " a wing CG below half a span (a tip at the ground, LadderMill's ), or a cable element above its breaking"
-        ' load.',
-        "The aerodynamic criterion ends it at 8.40 s after the step, naming wings 17-24, with RK4 at the scene's "
-        '10 ms, at 2.5 ms and with the error-controlled ROS34PW2 alike:',
-        'Trusting them anyway (the run judged on height and overload only), no wing CG comes below 55.9 m and no '
-        'element above 0.42 of its breaking load before the integrator breaks down at 45.2 s;',
-        'at 10 ms with no criterion at all it breaks down at 43.5 s, and the two step sizes part long before '
-        '(Fig. 8):',
-        'the breakdowns, near the paper\'s "some 40 seconds", are a separate, numerical outcome (the speed and '
-        'rate guards trip at wings far from slot 40, in one step), which the study names as such and never reads '
-        'as physics.',
+    printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('meijaard_v1_printed', (
+            '82.1 kW at 1 m/s; **152.9 kW at 2 m/s** (3D: 152.9 kW); 5 m/s not periodic:',
+            '488.8 kW in the last period,',
+            'The undisturbed 3D periodic motion meets none of the end criteria over a period (no wing outside the '
+            'aerodynamic data, lowest wing CG 57.3 m, peak tension 0.285 of the breaking load).',
+            '6 and 7 panels show the shape at the end of the 3,053 s search and the tensions of its last period, and '
+            'say so;',
+            "The 5 m/s search also passes the cable's breaking load in the transient from rest (element 0 at 392.6 "
+            's, 1.01 times it;',
+            'After the direction step the v1 mill leaves the range of its wing data sooner than v0 (6.4 s against '
+            '8.4 s), and not at slot 40 but at the wings in slots 8-15, low on the ascending leg (up to 39 deg of '
+            'sideslip);',
+        )),
+        Printed('meijaard_v0', (
+            "6-8's shapes and tensions, a third of the power, and a smaller step going only a little longer (43.5 s "
+            '-> 45.2 s).',
+            'V_c = 1 m/s | periodic (Fig. 6)',
+            'periodic after 645 s, loop 295 m wide',
+            'V_c = 5 m/s | periodic, wider loop | **not periodic** within 3053 s; loop 455-694 m wide;',
+            'period-mean power -3.2 to +1.9 MW',
+            '5.5 kN (1 m/s), 10.5 kN (2 m/s)',
+            'V_c | "of the order of 200 kW", not optimised | 36.3 kW (1 m/s), 66.7 kW (2 m/s, 2D), 66.0 kW (3D)',
+            '| 2D vs 3D | "almost identical" | 66.7 vs 66.0 kW, tensions within 0.5 kN',
+            'not discussed | peak tension 0.33 (1 m/s) and 0.58 (2 m/s) x the breaking load; **5 m/s:',
+            'overload** at t = 43.0 s (element 99, 553.5 kN), peak 1.9 x',
+            'direction step, node/slot 40 | yaws over a large angle | yaws over several turns (Fig. 8)',
+            '| end of the divergence | computation breaks down after ~40 s;',
+            'a smaller step goes longer | **physical end at 8.40 s**:',
+            'wings 17-24 outside the aerodynamic data for 2 s (wing 17: beta 37 deg since 6.40 s);',
+            'the same with RK4 at 10 ms and 2.5 ms and ROS34PW2 (rtol 1e-4)',
+            'after ~40 s | RK4 10 ms:',
+            '43.5 s (wing 87 over the 300 m/s guard);',
+            'RK4 2.5 ms, judged on height and overload only:',
+            "45.2 s (wing 5's rate 16.7 -> 104 rad/s in one step), no wing below half a span (lowest CG 55.9 m), "
+            'peak tension 0.42 x the breaking load',
+            'outside the aerodynamic data | yes | sideslip beyond 21 deg at 6.4 s (some wing), 6.5 s (slot 40);',
+            'angle of attack at 7.5 s (some wing)',
+            'for 2 s without a break (five times the longest spell outside it in the undisturbed periodic motion '
+            'over one period, 0.40 s, by the wing just inserted;',
+            'there no criterion holds, the lowest wing CG is 57.9 m and the peak tension 0.314 of the breaking '
+            "load), a wing CG below half a span (a tip at the ground, LadderMill's ), or a cable element above its "
+            'breaking load.',
+            "The aerodynamic criterion ends it at 8.40 s after the step, naming wings 17-24, with RK4 at the scene's "
+            '10 ms, at 2.5 ms and with the error-controlled ROS34PW2 alike:',
+            'Trusting them anyway (the run judged on height and overload only), no wing CG comes below 55.9 m and no '
+            'element above 0.42 of its breaking load before the integrator breaks down at 45.2 s;',
+            'at 10 ms with no criterion at all it breaks down at 43.5 s, and the two step sizes part long before '
+            '(Fig. 8):',
+            'the breakdowns, near the paper\'s "some 40 seconds", are a separate, numerical outcome (the speed and '
+            'rate guards trip at wings far from slot 40, in one step), which the study names as such and never reads '
+            'as physics.',
+        )),
     ),
 )

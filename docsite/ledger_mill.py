@@ -5,7 +5,7 @@ LQR's check over the period and the v1 mill's powers (:mod:`docsite.mill_figures
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, History, Printed
 
 IN, PE, LQ = "{insertion_study[%s]}", "{mill_periodic_2d[%s]}", "{mill_lqr_check[%s]}"
 N = r"([\d.]+)"
@@ -69,14 +69,25 @@ MOVING_CABLE = Covered(
     # tail-setting and small-mill runs (1500-4000
     # s), the 2D / 3D comparison (tests/test_moving_cable_modes.py), the LQR's per-phase table and its 300 s run, the 3D
     # direction step of the meijaard study
-    not_rerun=("-30 +- 240i 1/s, limit 0.01223 s", "element tensions within 4 N of 160 kN,",
- "not settle within 1500-4000 s",
-               "between -90 and +66 deg at t = 300 s, pitch rates up to 3.5 rad/s) and the mean power per period "
-               "swings between -100 and +280 kW. At -2 deg it settles with 24 kW",
-               "agree to 4e-8 m in every wing position over 100 s (2 transfers) and 2e-8 m over 200 s",
-               "no periodic motion within 1500 s",
-               "within 0.08 m for 300 s (8 transfers) where the open loop leaves the aerodynamic range at 8.7 s",
-               "ends physically 6.4 s after the step"),
+    printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('mill_v0_paper_step', (
+            'within 0.08 m for 300 s (8 transfers) where the open loop leaves the aerodynamic range at 8.7 s',
+        )),
+        Printed('meijaard_v1_printed', (
+            'ends physically 6.4 s after the step',
+        )),
+    ),
+    not_rerun=(  # runs the page figures do not repeat and no command prints: the stable-step estimate at the 3D
+        # periodic state, the tail-setting and small-mill runs (1500-4000 s), the 2D / 3D comparison
+        # (tests/test_moving_cable_modes.py)
+        '-30 +- 240i 1/s, limit 0.01223 s',
+        'element tensions within 4 N of 160 kN,',
+        'not settle within 1500-4000 s',
+        'between -90 and +66 deg at t = 300 s, pitch rates up to 3.5 rad/s) and the mean power per period swings '
+        'between -100 and +280 kW. At -2 deg it settles with 24 kW',
+        'agree to 4e-8 m in every wing position over 100 s (2 transfers) and 2e-8 m over 200 s',
+        'no periodic motion within 1500 s',
+    ),
 )
 
 FEATURES = Covered(  # a summary of the other pages: their groups check what it repeats
@@ -176,40 +187,48 @@ FEATURES = Covered(  # a summary of the other pages: their groups check what it 
         'and sampled at every wing and cable node, the alpha-rate term included (4.4 MB for the 3.5 km chain over'
         ' 600 s);',
     ),
+    printed=(  # long groups (docsite/long_figures.py)
+        Printed("mill_v0_paper_step", ("Open loop with the paper's 0.01 rad direction step the loop diverges "
+                                       'laterally and the episode ends at 8.7 s (beta 61 deg near the top).',
+                                       'holds it for 300 s through every disturbance of the harness '
+                                       '([controllers.md]).')),
+        Printed("pointmass_fidelity", ("against the rigid the tensions agree within 1 % once each kite is pitched "
+                                       "to the rigid wing's lift ( ).",)),
+        Printed("gusts_v1_tethered_wing", ('|---|---|---|---|---| | TetheredWing-v0 | 7 / 12 | 11 / 12 (Dryden '
+                                           'moderate lost on every seed)',
+                                           '10 / 12 ( , 40 min with a critic warm-up and validation:',
+                                           'NTM IB seed 0 and Dryden moderate lost)')),
+        Printed("gusts_v1_ladder_chain", ('| LadderChain-v0 | 2 / 9 | 2 / 9 (turbulence brings the 101-wing chain '
+                                          'down under both)',)),
+        Printed("gusts_v1_rotorcraft", ('Rotorcraft-v0 | 3 / 9 | 8 / 9 (turbulence survived on every seed)',
+                                        '8 / 9 ( :')),
+        Printed("gusts_v1_laddermill", ('| LadderMill-v0 | 2 / 7 | 5 / 7', 'no controller keeps the mill through '
+                                        'turbulence or EWS beyond 15 s (its lowest slots fail by sideslip).')),
+        Printed("gusts_v1_pumping_kite", ("the pumping kite's LQR survives every discrete event and 2 of 3 NTM "
+                                          'seeds, open loop only the speed step and the EOG;',)),
+        Printed("wp_podgaets", ('the implicit one 9x faster at 1e-3);',)),
+        Printed("stress_all", ('all 128 cases pass;',)),
+        Printed("wp_chain", ('On the 101-wing chain 10 s after a direction step, ROS34PW2 at 0.2 s runs 465x real '
+                             "time on one thread within 1.9e-4 of the chain's extent, 4.2x faster than the fastest "
+                             'RK4 run within 1e-3 (the rotorcraft 9.7-12.6x, the mill over 5 s 6.1x with ROS34PW2 '
+                             'and 9.8x with ROS2, over 10 s 3.4x with the error-controlled at rtol 3e-3).',)),
+    ),
+    history=(
+        History("2026-11-24", "laddermill train of the PPO configs of the day (from random weights, 11 min each), "
+                "then laddermill gust-bench --suite gusts-v1 --env ID --controllers open_loop lqr runs/ppo_...",
+                "the unshipped PPO runs of 2026-11-24 (f1d21dd, 30708d3) and TetheredWing-v0's row at RK4 50 ms",
+                ('6 / 12 (it flies about 90 m to the side, where it pulls more)', '5 / 9 (the same with RK4 at 2 ms)',
+                 'with RK4 at 50 ms it read 3 / 12, 8 / 12, 6 / 12:')),
+        History("2026-11-29", "laddermill train with configs/agents/ppo_tethered_wing.yaml from random weights",
+                "the wing's PPO runs without the LQR start (832ef5a)",
+                ('from random weights PPO did not stabilise the wing in that budget, and with a larger learning rate '
+                 'and no critic warm-up it drifts away from the LQR (7 / 12;',)),
+    ),
     not_rerun=(
-        # controllers.md's LadderMill-v0 table (not re-run there either)
-        "Open loop with the paper's 0.01 rad direction step the loop diverges laterally and the episode ends at "
-        '8.7 s (beta 61 deg near the top).',
-        'holds it for 300 s through every disturbance of the harness ([controllers.md]).',
-        "against the rigid the tensions agree within 1 % once each kite is pitched to the rigid wing's lift ( ).",
-        # laddermill gust-bench --suite gusts-v1 per env (minutes each; README's --policies group re-runs the shipped
-        # policies' counts against README)
-        '|---|---|---|---|---| | TetheredWing-v0 | 7 / 12 | 11 / 12 (Dryden moderate lost on every seed)',
-        '6 / 12 (it flies about 90 m to the side, where it pulls more)',
-        '10 / 12 ( , 40 min with a critic warm-up and validation:',
-        'NTM IB seed 0 and Dryden moderate lost)',
-        '| LadderChain-v0 | 2 / 9 | 2 / 9 (turbulence brings the 101-wing chain down under both)',
-        'Rotorcraft-v0 | 3 / 9 | 8 / 9 (turbulence survived on every seed)',
-        '5 / 9 (the same with RK4 at 2 ms)',
-        '8 / 9 ( :',
-        '| LadderMill-v0 | 2 / 7 | 5 / 7',
-        'with RK4 at 50 ms it read 3 / 12, 8 / 12, 6 / 12:',
-        'from random weights PPO did not stabilise the wing in that budget, and with a larger learning rate and '
-        'no critic warm-up it drifts away from the LQR (7 / 12).',
-        "the pumping kite's LQR survives every discrete event and 2 of 3 NTM seeds, open loop only the speed step"
-        ' and the EOG;',
-        'no controller keeps the mill through turbulence or EWS beyond 15 s (its lowest slots fail by sideslip).',
-        # docs/work_precision.md's studies (listed there)
-        'the implicit one 9x faster at 1e-3);',
-        'all 128 cases pass;',
+        # tests/test_breakpoints.py (its assertion, not a printed figure)
         'error 3.5e-8 against 1.0e-5 without).',
-        'On the 101-wing chain 10 s after a direction step, ROS34PW2 at 0.2 s runs 465x real time on one thread '
-        "within 1.9e-4 of the chain's extent, 4.2x faster than the fastest RK4 run within 1e-3 (the rotorcraft "
-        '9.7-12.6x, the mill over 5 s 6.1x with ROS34PW2 and 9.8x with ROS2, over 10 s 3.4x with the '
-        'error-controlled at rtol 3e-3).',
-        # the in-plane periodic run (mill_periodic_2d prints the power and time only)
-        'the smallest tension (10.5 kN)',
-        # the point-mass chain's settling run
-        '(base tension 178.7 kN)',
+        # no command prints these: the in-plane periodic run's smallest tension (mill_periodic_2d prints the power and
+        # time only) and the point-mass chain's settled base tension (envs/__init__.py's comment)
+        'the smallest tension (10.5 kN)', '(base tension 178.7 kN)',
     ),
 )

@@ -5,7 +5,7 @@ re-run (their commands named)."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, History, Printed
 from docsite.ledger_studies import v2_rows
 
 MILL_FAST = Covered(
@@ -81,127 +81,152 @@ MILL_FAST = Covered(
         'at 1 and 2 m/s it delivers less than v1 (82.1 and 152.9 kW), because the descending wings now fly at C_L'
         " 0.91 against v1's 0.61 (the lower setting slackens the descending leg on the way to 5 m/s, above);",
     ),
-    not_rerun=(
-        # python -m laddermill_gym.studies.mill.fast_mill case / step runs and exploratory scripts (minutes each; the v2
-        # table at 1-5 m/s is the page group fast_mill_v2, the rest not)
-        'At V_c = 5 m/s neither wing reaches a periodic motion (60 deg at -6 / -1 deg:',
-        "period means from -1.0 MW to +0.7 MW over the last four periods before 1,555 s with the paper's "
-        'insertion rule, from -134 to +546 kW before 855 s with the cable rule; -6 / -3 deg is no better).',
-        'is still not periodic 1,200 s later (period means from -446 to +603 kW over the last six periods before '
-        "t = 2,849 s, the last period's largest tension 244.9 kN).",
-        'Taken to 4 m/s the same way it is not periodic either (period means from -315 to +1,058 kW before t = '
-        '2,855 s);',
-        'to 3 m/s it is ([wing data], "After a step of the wind or the cable speed").',
-        "The v1 mill's periodic range at the paper's wind is therefore V_c <= 3 m/s.",
-        'the loop drifts downwind, slackens and relaxes.** takes the v1 mill from its periodic motion at 2 m/s to'
-        ' 4 m/s over 100 s and prints, every 25 s, tensions and the downwind position x of seven slots (x falls '
-        'as the loop leans downwind, the wind blows to -x):',
-        'the loop leans downwind, slowly and steadily (slot 40 from -830 to -1,393 m, t - t1 = 25 to 350 s), '
-        'every tension falls with it, until the descending leg goes slack in its middle and lower part (the '
-        'smallest tension 3.2 kN at element 68 at 225 s, then 0.0-0.4 kN at elements 60-96;',
-        'the first element down from 122 to 22 kN) and wings tumble;',
-        'the collapse ends in a tension spike (309 kN at 350 s)',
-        'The earlier reading of a record at 5 m/s (the near-top descending wings driving the cable)',
-        'before it the top tension holds at 11-18 kN and no element is slack. Our reading of the lean:',
-        '-8 / -0.5 (v1)',
-        'rest, 5 m/s | a quiet phase of a few periods, then the drift;',
-        '-6 / -0.5, -6 / -3, -4 / -2, -8 / -4, -8 / -2 | rest, 5 m/s | the same cycle;',
-        'at -8 / -4 the period means are mostly negative (the descending leg pulls too much)',
-        '| -8 / +2 (descending trim alpha 0.9 deg)',
-        'rest, 2 m/s then ramped | slack already at 2 m/s:',
-        '-4 / -0.5 | 2 m/s, to 4 m/s | the same drift, a little slower at first',
-        'slots 51-62 at -8 or at +2;',
-        'slots 76-100 at -4 | rest, 2 m/s then ramped | not periodic even at 2 m/s',
-        'slots 51-57 at -4 (the rule below), switched on 150 s before the ramp | 2 m/s, to 4 m/s | after the '
-        'transient of the change, bounded for the rest of the run, not periodic (the top wobbles)',
-        '| slots 51-57 at -4 | 2 m/s, to 5 m/s | quiet for some periods, then the drift returns: relaxation '
-        'cycles',
-        'slots 51-60 at -5;',
-        'slots 51-55 at -6 | 2 m/s, to 5 m/s | worse: slack within a few periods',
-        "the rule's own transient does not die out in 400 s:",
-        'smallest tension 0.0-1.2 kN in 7 of 16 intervals, the first element 21-291 kN.',
-        'A lift held per wing (elevators set every 0.1 s for C_L |a|^2 at its value at rest in the local wind; '
-        'exploratory)',
-        'slackens the descending leg during the ramp from 2 m/s:',
-        # the trims and the near-top rule's runs (fast_mill trim / case; slow tests)
-        'With 7 slots at -4 deg (trim alpha 9.65 deg, against 4.76 deg at -0.5 deg: , the wing at rest in 10 m/s)',
-        '|---|---|---|---|---|---|---| | 4 | off (the v1 scene)',
-        'no | 59.5 .. 319.7 | 0.33 ..',
-        '1.07 | 5.6 / 139.4 | cable overload at t = 375.66 s (peak 1.09 x the breaking load)',
-        '| 4 | 7 slots at -4 deg | no | 221.5 .. 282.6 | 0.08 ..',
-        '0.30 | 12.4 / 159.2 | no overload (peak 0.974 x)',
-        '| 5 | off (the v1 scene)',
-        'no | -597.5 .. 586.7 | 0.96 ..',
-        '2.83 | 4.8 / 343.8 | cable overload at t = 392.55 s (peak 1.01 x)',
-        '| 5 | 7 slots at -4 deg | no | 195.0 .. 544.0 | 0.19 ..',
-        '0.88 | 16.6 / 186.6 | cable overload at t = 358.39 s (peak 1.05 x)',
-        '| 5 | 12 slots at -4; 7 at -6; 5 at -6; 7 at -5; 9 at -6 deg | no | -404.3 .. 474.2; -17.9 .. 402.7; '
-        '89.3 .. 430.5; -138.1 .. 381.2; -873.7 .. 746.1 | 1.21 .. 2.76; 0.19 .. 1.06; 0.14 .. 1.10; 0.62 .. '
-        '1.81; 0.77 .. 2.76 | 2.6 / 302.7; 12.8 / 186.2; 13.8 / 187.1; 20.7 / 297.9;',
-        '0.9 / 294.0 | no overload (peaks 0.93, 0.872, 0.834, 0.728, 0.811 x)',
-        'At 4 m/s the rule keeps the mill taut and under the breaking load, with more power, and bounded ( : last'
-        ' 10 periods 205.2 ..',
-        '284.1 kW, shape change 0.11 ..',
-        '0.24 l0, tensions 14.0-183.7 kN at t = 3,042.5 s), but neither speed becomes periodic:',
-        "the v1 wing's descending trim falls by 0.3 deg per m/s, 5.48 to 4.38 deg from 8 to 12 m/s, the same at "
-        '-0.5 deg).',
-        'the v1 wing (CG 0.75 m, neutral point 0.97 m behind P) is close to the bound:',
-        'its descending trim falls 0.25 deg per m/s.',
-        'At C_L 0.61 (elevator 3.35 deg)',
-        "the descending trim falls 0.98 deg per m/s at 10 m/s ( ), at the scene's 2.5 deg (C_L 0.91)",
-        "0.75 deg per m/s, three times v1's. The choices:",
-        "the pod can go no further aft than the tail (4.8 m behind v1's CG), and a smaller h raises the slope (as"
-        ' 1 / k)',
-        "The quasi-static leg check of the printout's last rows (a wing in the wind 10 m/s -+ V_c) is crude:",
-        'the median ascending wing met 9-11 m/s of air at 5 m/s, not 5 m/s.',
-        '1.3 / 3.35 (descending C_L 0.61)',
-        '30 s | 5 | ground contact at t = 365.0 s (wings tumbling from the ramp on)',
-        '| 1.3 / 3.35 | 30 s | 2 | ground contact at t = 272.9 s, cable overload at 262.6 s',
-        "1.3 / 3.35 | 500 s | 5 | ground contact at t = 663.1 s, the last period's smallest tension 0.0 kN (an "
-        'exploratory run printing tensions every 40 s:',
-        "calm up to 4.4 m/s, then the descending leg's lowest element slack)",
-        '| 1.3 / 2.5 (the scene)',
-        "30 s | 5 | ground contact at t = 396.0 s (the ascending leg's first element slack: period-mean T_first "
-        '3.0 kN)',
-        '| 1.3 / 2.5 (the scene)',
-        '30 s | 2 | not periodic in 1,500 s (last 10 period means -78.4 .. 733.8 kW);',
-        'cable overload at t = 441.0 s, peak 1.74 x the breaking load',
-        '1.3 / 2.5 (the scene)',
-        '| 1.3 / 2.5 (the scene)',
-        "200 s (the scene's own ramp, only changed)",
-        '5 | periodic at t = 1,822.0 s, 323.9 kW, tensions of the last period 22.9-163.6 kN, search peak 0.377 x '
-        'the limit ( )',
-        # fast_mill step runs, the 3D runs from the in-plane periodic state and the v2 LQR check (minutes each)
-        'from the periodic motion at 2 m/s, t = 940.0 s, the step over 1 s):',
-        'the wind 8 -> 9 m/s brings the v2 mill to a new periodic motion at t = 1,535.0 s with 133.2 kW and '
-        "tensions of the period 8.5-197.6 kN (the transient's peak, 0.412 of the breaking load = 216 kN, passes "
-        '210 kN);',
-        'the cable speed 2 -> 3 m/s to one at t = 1,966.8 s with 168.7 kW (168.6 kW from rest, above) and '
-        '12.6-158.6 kN.',
-        'the in-plane periodic state at t = 1,790 s embedded, , then run in 3D)',
-        'the 5 m/s mill is periodic at t = 1,916 s with 324.4 kW and tensions of 22.9-163.6 kN (no lateral '
-        'disturbance:',
-        'At 1 and 2 m/s ( , , same command)',
-        'the 3D mill is periodic at t = 960.0 s with 45.9 kW and tensions of 3.9-153.0 kN (in plane periodic at '
-        '680.0 s), and at t = 1,080.0 s with 102.2 kW and 8.1-157.1 kN (in plane at 940.0 s):',
-        ".** The 2 m/s mill is registered as LadderMill-v2 (envs/laddermill/env_v2.py: scene , v1's ;",
-        "its operating point is found from rest through the scene's own 200 s ramp with the default settle, "
-        'periodic at t = 975 s, 102.2 kW).',
-        "After the paper's 0.01 rad direction step at t = 1 s the open-loop mill leaves the aerodynamic data as "
-        "v1's does, but later:",
-        "at 16.85, 16.20 and 15.65 s at 1, 2 and 5 m/s (a wing near the loop's top at beta above 60 deg; v1: "
-        'about 7 s).',
-        "The centralised lateral LQR with v1's weights and period-mean design "
-        "(configs/agents/lqr_laddermill_v2.yaml), designed on each mill's own orbit, holds all three for 300 s ( "
-        ", the scene's ramp set to 100 V_c s at 1 and 5 m/s):",
-        "V_c [m/s] | open-loop growth [1/s] | frozen closed loop max abs(z), 8 phases | period's transition "
-        'matrix radius | open loop ends [s] | LQR: 300 s, largest abs(dy)',
-        '|---|---|---|---|---|---|---| | 1 | 0.411 | 0.9872 | 0.0000 | 16.85 (slot 58)',
-        '0.088 | 45.95 (45.95)',
-        '| 2 | 0.422 | 0.9882 | 0.0001 | 16.20 (slot 59)',
-        '0.089 | 102.80 (102.2)',
-        '| 5 | 0.453 | 0.9928 | 0.1068 | 15.65 (slot 69)',
-        '0.086 | 324.39 (323.9)',
-        'Random actions at after the step last a median 17.58 s over 10 seeds at 2 m/s (v1: 6.75 s).',
+    printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('fast_mill_drift', (
+            'the loop drifts downwind, slackens and relaxes.** takes the v1 mill from its periodic motion at 2 m/s '
+            'to 4 m/s over 100 s and prints, every 25 s, tensions and the downwind position x of seven slots (x '
+            'falls as the loop leans downwind, the wind blows to -x):',
+            'the loop leans downwind, slowly and steadily (slot 40 from -830 to -1,393 m, t - t1 = 25 to 350 s), '
+            'every tension falls with it, until the descending leg goes slack in its middle and lower part (the '
+            'smallest tension 3.2 kN at element 68 at 225 s, then 0.0-0.4 kN at elements 60-96;',
+            'the first element down from 122 to 22 kN) and wings tumble;',
+            'the collapse ends in a tension spike (309 kN at 350 s)',
+            'before it the top tension holds at 11-18 kN and no element is slack. Our reading of the lean:',
+        )),
+        Printed('fast_mill_top_rule', (
+            'With 7 slots at -4 deg (trim alpha 9.65 deg, against 4.76 deg at -0.5 deg: , the wing at rest in 10 '
+            'm/s)',
+            '|---|---|---|---|---|---|---| | 4 | off (the v1 scene)',
+            'no | 59.5 .. 319.7 | 0.33 ..',
+            '1.07 | 5.6 / 139.4 | cable overload at t = 375.66 s (peak 1.09 x the breaking load)',
+            '| 4 | 7 slots at -4 deg | no | 221.5 .. 282.6 | 0.08 ..',
+            '0.30 | 12.4 / 159.2 | no overload (peak 0.974 x)',
+            '| 5 | off (the v1 scene)',
+            'no | -597.5 .. 586.7 | 0.96 ..',
+            '2.83 | 4.8 / 343.8 | cable overload at t = 392.55 s (peak 1.01 x)',
+            '| 5 | 7 slots at -4 deg | no | 195.0 .. 544.0 | 0.19 ..',
+            '0.88 | 16.6 / 186.6 | cable overload at t = 358.39 s (peak 1.05 x)',
+            'At 4 m/s the rule keeps the mill taut and under the breaking load, with more power, and bounded ( : '
+            'last 10 periods 205.2 ..',
+            '284.1 kW, shape change 0.11 ..',
+            '0.24 l0, tensions 14.0-183.7 kN at t = 3,042.5 s), but neither speed becomes periodic:',
+        )),
+        Printed('trim_slope', (
+            "the v1 wing's descending trim falls by 0.3 deg per m/s, 5.48 to 4.38 deg from 8 to 12 m/s, the same at "
+            '-0.5 deg).',
+            'the v1 wing (CG 0.75 m, neutral point 0.97 m behind P) is close to the bound:',
+            'its descending trim falls 0.25 deg per m/s.',
+            "The quasi-static leg check of the printout's last rows (a wing in the wind 10 m/s -+ V_c) is crude:",
+        )),
+        Printed('trim_slope_v2', (
+            'At C_L 0.61 (elevator 3.35 deg)',
+            "the descending trim falls 0.98 deg per m/s at 10 m/s ( ), at the scene's 2.5 deg (C_L 0.91)",
+            "0.75 deg per m/s, three times v1's. The choices:",
+            "the pod can go no further aft than the tail (4.8 m behind v1's CG), and a smaller h raises the slope "
+            '(as 1 / k)',
+        )),
+        Printed('fast_mill_v2_5_ramp200', (
+            "200 s (the scene's own ramp, only changed)",
+            '5 | periodic at t = 1,822.0 s, 323.9 kW, tensions of the last period 22.9-163.6 kN, search peak 0.377 x '
+            'the limit ( )',
+        )),
+        Printed('fast_mill_v2_step', (
+            'from the periodic motion at 2 m/s, t = 940.0 s, the step over 1 s):',
+            'the wind 8 -> 9 m/s brings the v2 mill to a new periodic motion at t = 1,535.0 s with 133.2 kW and '
+            "tensions of the period 8.5-197.6 kN (the transient's peak, 0.412 of the breaking load = 216 kN, passes "
+            '210 kN);',
+            'the cable speed 2 -> 3 m/s to one at t = 1,966.8 s with 168.7 kW (168.6 kW from rest, above) and '
+            '12.6-158.6 kN.',
+        )),
+        Printed('fast_mill_v2_3d', (
+            'the in-plane periodic state at t = 1,790 s embedded, , then run in 3D)',
+            'the 5 m/s mill is periodic at t = 1,916 s with 324.4 kW and tensions of 22.9-163.6 kN (no lateral '
+            'disturbance:',
+            'At 1 and 2 m/s ( , , same command)',
+            'the 3D mill is periodic at t = 960.0 s with 45.9 kW and tensions of 3.9-153.0 kN (in plane periodic at '
+            '680.0 s), and at t = 1,080.0 s with 102.2 kW and 8.1-157.1 kN (in plane at 940.0 s):',
+        )),
+        Printed('mill_v2_lqr', (
+            ".** The 2 m/s mill is registered as LadderMill-v2 (envs/laddermill/env_v2.py: scene , v1's ;",
+            "its operating point is found from rest through the scene's own 200 s ramp with the default settle, "
+            'periodic at t = 975 s, 102.2 kW).',
+            "After the paper's 0.01 rad direction step at t = 1 s the open-loop mill leaves the aerodynamic data as "
+            "v1's does, but later:",
+            "at 16.85, 16.20 and 15.65 s at 1, 2 and 5 m/s (a wing near the loop's top at beta above 60 deg; v1: "
+            'about 7 s).',
+            "The centralised lateral LQR with v1's weights and period-mean design "
+            "(configs/agents/lqr_laddermill_v2.yaml), designed on each mill's own orbit, holds all three for 300 s ( "
+            ", the scene's ramp set to 100 V_c s at 1 and 5 m/s):",
+            "V_c [m/s] | open-loop growth [1/s] | frozen closed loop max abs(z), 8 phases | period's transition "
+            'matrix radius | open loop ends [s] | LQR: 300 s, largest abs(dy)',
+            '|---|---|---|---|---|---|---| | 1 | 0.411 | 0.9872 | 0.0000 | 16.85 (slot 58)',
+            '0.088 | 45.95 (45.95)',
+            '| 2 | 0.422 | 0.9882 | 0.0001 | 16.20 (slot 59)',
+            '0.089 | 102.80 (102.2)',
+            '| 5 | 0.453 | 0.9928 | 0.1068 | 15.65 (slot 69)',
+            '0.086 | 324.39 (323.9)',
+            'Random actions at after the step last a median 17.58 s over 10 seeds at 2 m/s (v1: 6.75 s).',
+        )),
+    ),
+    history=(
+        History('2026-11-29', "python -m laddermill_gym.studies.mill.fast_mill case / drift with the v1 wing's "
+                "trial attachments, "
+                'elevators, insertion rules and near-top rules, and exploratory scripts (fb84e85, 3a39680, 2ef6ab9)',
+                "the v1 wing's trials at 4-5 m/s (not kept)", (
+            'At V_c = 5 m/s neither wing reaches a periodic motion (60 deg at -6 / -1 deg:',
+            "period means from -1.0 MW to +0.7 MW over the last four periods before 1,555 s with the paper's "
+            'insertion rule, from -134 to +546 kW before 855 s with the cable rule; -6 / -3 deg is no better).',
+            'is still not periodic 1,200 s later (period means from -446 to +603 kW over the last six periods before '
+            "t = 2,849 s, the last period's largest tension 244.9 kN).",
+            'Taken to 4 m/s the same way it is not periodic either (period means from -315 to +1,058 kW before t = '
+            '2,855 s);',
+            'to 3 m/s it is ([wing data], "After a step of the wind or the cable speed").',
+            "The v1 mill's periodic range at the paper's wind is therefore V_c <= 3 m/s.",
+            'The earlier reading of a record at 5 m/s (the near-top descending wings driving the cable)',
+            '-8 / -0.5 (v1)',
+            'rest, 5 m/s | a quiet phase of a few periods, then the drift;',
+            '-6 / -0.5, -6 / -3, -4 / -2, -8 / -4, -8 / -2 | rest, 5 m/s | the same cycle;',
+            'at -8 / -4 the period means are mostly negative (the descending leg pulls too much)',
+            '| -8 / +2 (descending trim alpha 0.9 deg)',
+            'rest, 2 m/s then ramped | slack already at 2 m/s:',
+            '-4 / -0.5 | 2 m/s, to 4 m/s | the same drift, a little slower at first',
+            'slots 51-62 at -8 or at +2;',
+            'slots 76-100 at -4 | rest, 2 m/s then ramped | not periodic even at 2 m/s',
+            'slots 51-57 at -4 (the rule below), switched on 150 s before the ramp | 2 m/s, to 4 m/s | after the '
+            'transient of the change, bounded for the rest of the run, not periodic (the top wobbles)',
+            '| slots 51-57 at -4 | 2 m/s, to 5 m/s | quiet for some periods, then the drift returns: relaxation '
+            'cycles',
+            'slots 51-60 at -5;',
+            'slots 51-55 at -6 | 2 m/s, to 5 m/s | worse: slack within a few periods',
+            "the rule's own transient does not die out in 400 s:",
+            'smallest tension 0.0-1.2 kN in 7 of 16 intervals, the first element 21-291 kN.',
+            'A lift held per wing (elevators set every 0.1 s for C_L |a|^2 at its value at rest in the local wind; '
+            'exploratory)',
+            'slackens the descending leg during the ramp from 2 m/s:',
+            '| 5 | 12 slots at -4; 7 at -6; 5 at -6; 7 at -5; 9 at -6 deg | no | -404.3 .. 474.2; -17.9 .. 402.7; '
+            '89.3 .. 430.5; -138.1 .. 381.2; -873.7 .. 746.1 | 1.21 .. 2.76; 0.19 .. 1.06; 0.14 .. 1.10; 0.62 .. '
+            '1.81; 0.77 .. 2.76 | 2.6 / 302.7; 12.8 / 186.2; 13.8 / 187.1; 20.7 / 297.9;',
+            '0.9 / 294.0 | no overload (peaks 0.93, 0.872, 0.834, 0.728, 0.811 x)',
+            'the median ascending wing met 9-11 m/s of air at 5 m/s, not 5 m/s.',
+        )),
+        History('2026-11-29', 'python -m laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2 with the '
+                'elevators and '
+                'ramps of each row (3161f01)',
+                "the v2 wing's start trials", (
+            '1.3 / 3.35 (descending C_L 0.61)',
+            '30 s | 5 | ground contact at t = 365.0 s (wings tumbling from the ramp on)',
+            '| 1.3 / 3.35 | 30 s | 2 | ground contact at t = 272.9 s, cable overload at 262.6 s',
+            "1.3 / 3.35 | 500 s | 5 | ground contact at t = 663.1 s, the last period's smallest tension 0.0 kN (an "
+            'exploratory run printing tensions every 40 s:',
+            "calm up to 4.4 m/s, then the descending leg's lowest element slack)",
+            '| 1.3 / 2.5 (the scene)',
+            "30 s | 5 | ground contact at t = 396.0 s (the ascending leg's first element slack: period-mean T_first "
+            '3.0 kN)',
+            '| 1.3 / 2.5 (the scene)',
+            '30 s | 2 | not periodic in 1,500 s (last 10 period means -78.4 .. 733.8 kW);',
+            'cable overload at t = 441.0 s, peak 1.74 x the breaking load',
+            '1.3 / 2.5 (the scene)',
+            '| 1.3 / 2.5 (the scene)',
+        )),
     ),
 )

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, History, Printed
 
 RD = r"(\d+\.\d) m/s at 15,000 ft and at (\d+\.\d) m/s at 30,000 ft"
 ROBERTS = Covered(
@@ -33,7 +33,11 @@ PODGAETS = Covered(
            "| 5 km at 1 cm with 100 kites in 82 MB", "steps at the kites' 10 ms", "on the 5 km string"),
     timings=("the process peaks at 216 MB with numba's cache warm", "0.18x real time on one thread on the 2-core "
              "machine", "8.7x real time at 1 m, 335x at 70 m", "measured on this project's 2-core machine"),
-    not_rerun=("tensions within 1 % of the rigid",),  # pointmass_fidelity
+    printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('pointmass_fidelity', (
+            'tensions within 1 % of the rigid',
+        )),
+    ),  # pointmass_fidelity
 )
 
 
@@ -106,10 +110,18 @@ LANSDORP = Covered(
            "Delta L = 200 m", "eqs. 1-14 (and", "eq. 9, is", "eq. 9 gives", "eqs. 10-14 fed",
            "(reel-in at 5 m/s, not 16.7; a 10 m/s wind; one tether element)",
            "(400 s, the registered 0.01 rad direction step;", "| 400 s |", "the 240 m drum"),
-    timings=("optimised in 1.3-2.7 s (median of 5;", "15 min):", "| PPO (15 min) |"),
+    timings=("optimised in 1.3-2.7 s (median of 5;", "15 min;", "| PPO (15 min) |"),
     derived=("needs 1.8 MW while flying",),  # 1 MW / 0.566 of the time
     # a PPO run of `laddermill train configs/agents/ppo_pumping_kite.yaml` (15 min; not shipped) and its 1200 s run
-    not_rerun=("| 232005 | 400 s | 336.5 m | 29.1 kW |", "(9.1 kW mean over 1200 s against the LQR cycle's 1.8 kW)"),
+    history=(
+        History('2026-11-24', 'laddermill train --config configs/agents/ppo_pumping_kite.yaml (15 min), then '
+                'laddermill evaluate '
+                '--env laddermill_gym/PumpingKite-v0',
+                'the PumpingKite-v0 PPO run, not kept (492976c)', (
+            '| 232005 | 400 s | 336.5 m | 29.1 kW |',
+            "(9.1 kW mean over 1200 s against the LQR cycle's 1.8 kW)",
+        )),
+    ),
 )
 
 T1 = r"\| {} \| {} \| ([\d.]+){} \| ([\d.]+) \|"

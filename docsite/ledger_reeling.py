@@ -6,7 +6,7 @@ re-run (their commands named)."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, History, Printed
 from docsite.ledger_papers import REELING_CHECKS
 from docsite.ledger_pumping import curve_checks
 
@@ -46,7 +46,7 @@ REELING = Covered(
         '**The time step.** A taut chain of elements of length l with consistent mass has its highest axial mode '
         'at omega_max = (2 / l) sqrt(3 EA / mu)',
         'stiffness 4 EA / l against mass mu l / 3):',
-        'A first version (5 ms, the drum element down to 0.25 l_n)',
+        'A first version (5 ms, the drum element down to 0.25 l_n;',
         'picks the largest of 5, 2.5, 2, 1, 0.5 ms with omega_max dt <= 2:',
         '2.5 ms at 40 and 60 m, 2 ms at 30 m, 5 ms at 100 m; the config sets .',
         'in crosswind flight at 50 kN the full EA / l acts.)',
@@ -103,46 +103,56 @@ REELING = Covered(
         'and a longer cycle (276 against 219 s;',
         "The static cycle's 1.9 kW on the single element ([the pumping page])",
     ),
-    not_rerun=(
-        # runs of earlier code (a first version, an earlier controller), as they printed
-        'did not stop at 40 m but flew a different cycle (14.8 kW, alpha 6.2 deg, against 45.7 kW now) and failed'
-        ' at 30 m.',
-        "an earlier run, before the crosswind controller's change of 0db432c, printed 44575 / 45515 / 45672 / "
-        '45745 W).',
-        # laddermill pumping-cycle --reel-element-length 40 --cycles 2 (minutes; not a page group)
-        'Against Schmehl\'s model at the simulated operating point (docs/pumping.md, "Power curve"), prints 45719 '
-        'W simulated against 61063 W matched on the third cycle:',
-        '0.75, where the single element gives 0.64 at this wind (10 m/s).',
-        # the 200-500 m reeling runs (2.5 minutes each; not a page group)
-        'the tether between 191 and 521 m, **5 to 13 elements of 40 m at every length**, 49982 W on the third '
-        'cycle (the single 200 m element: 34567 W); no node touched the ground.',
-        'up to 4 nodes on the ground at once, in 33 % of the control steps, the first at t = 173.5 s in the first'
-        ' reel-in (where the 3-element chain used to stop). It makes no power:',
+    printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('reeling_cycle_40', (
+            'Against Schmehl\'s model at the simulated operating point (docs/pumping.md, "Power curve"), prints '
+            '45719 W simulated against 61063 W matched on the third cycle:',
+            '0.75, where the single element gives 0.64 at this wind (10 m/s).',
+        )),
+        Printed('tether_200', (
+            'the tether between 191 and 521 m, **5 to 13 elements of 40 m at every length**, 49982 W on the third '
+            'cycle (the single 200 m element: 34567 W); no node touched the ground.',
+        )),
+        Printed('reeling_power_curve_printed', (
+            '**Within 30 % at 10 to 20 m/s** (seven winds;',
+            ', slow, checks 10, 12 and 14 m/s), not at 8 m/s (0.68).',
+            "The single element's 0.64 at 10 m/s becomes 0.75 on the reeling tether:",
+            "**The reel-out tension** is the largest share: 0.78-0.85 of the model's.",
+            'the drum and the wing feel the same tension within 1.2 % (wing / drum 0.999-1.012:',
+            "the 40 m elements' weight and drag take almost nothing of it in crosswind flight);",
+            "the aerodynamic force at the flown airspeed, 1/2 rho S C_R <v_a^2> at the mean alpha's C_R, is 6-7 % "
+            "above the tension at the wing (gravity and the turns' inertia take that);",
+            "and it is itself 0.84-0.91 of the model's tension (10 m/s:",
+            "57719 against 66255 N), so the wing flies a mean squared airspeed of 0.84-0.91 of the model's (at the "
+            'same C_R):',
+            "Which of the course's parts takes how much is not yet measured. 2. **The reel-in tension**:",
+            "the hang near the zenith pulls 4.4-16.7 kN while the model's depowered kite at the simulated reel-in "
+            'elevation pulls 0-5.2 kN. 3. **Within the phases** (eqs.',
+            '10-14 on the simulated means less the simulated power)',
+            "and **the model's transitions** (its cycle time's transition phases, which the simulated cycle, 4-5 % "
+            'shorter, does not spend)',
+            "are smaller and of the other sign: they favour the simulation. 4. **Loyd's bound**:",
+        )),
+    ),
+    history=(
+        History('2026-11-29', 'laddermill pumping-cycle --reel-element-length 40 --cycles 2 at 1cc497c and before '
+                '0db432c',
+                'runs of earlier code (a first version of the reeling tether; the crosswind controller before '
+                '0db432c)', (
+            'did not stop at 40 m but flew a different cycle (14.8 kW, alpha 6.2 deg, against 45.7 kW now) and '
+            'failed at 30 m.',
+            "an earlier run, before the crosswind controller's change of 0db432c, printed 44575 / 45515 / 45672 / "
+            '45745 W).',
+        )),
+    ),
+    not_rerun=(  # tests/test_reel_tether.py's assertions (a test, not a printed figure) and the static LQR cycle
+        # on the reeling tether (a Python session, no command)
+        'up to 4 nodes on the ground at once, in 33 % of the control steps, the first at t = 173.5 s in the first '
+        'reel-in (where the 3-element chain used to stop). It makes no power:',
         '-4631 W and -2488 W over its first two cycles (reel-out tension 131 and 346 N:',
         'the static wing holds up little of 300-500 m of tether, which lies on the ground near the winch).',
-        # tests/test_reel_tether.py's figures
-        'a hanging tether of 5 and 10 sag-corrected elements between two fixed points against the elastic '
-        'catenary (horizontal tension within 0.67 % and 0.99 % at 5 elements, 0.17 % and 0.26 % at 10: second '
-        "order); the stable step's omega_max; bad fields named.",
-        # python -m laddermill_gym.studies.pumping.power_curve --reel-element-length 40 (about 6 minutes at a load of 7;
-        # not a page group)
-        '**Within 30 % at 10 to 20 m/s** (seven winds;',
-        ', slow, checks 10, 12 and 14 m/s), not at 8 m/s (0.68).',
-        "The single element's 0.64 at 10 m/s becomes 0.75 on the reeling tether:",
-        "**The reel-out tension** is the largest share: 0.78-0.85 of the model's.",
-        'the drum and the wing feel the same tension within 1.2 % (wing / drum 0.999-1.012:',
-        "the 40 m elements' weight and drag take almost nothing of it in crosswind flight);",
-        "the aerodynamic force at the flown airspeed, 1/2 rho S C_R <v_a^2> at the mean alpha's C_R, is 6-7 % "
-        "above the tension at the wing (gravity and the turns' inertia take that);",
-        "and it is itself 0.84-0.91 of the model's tension (10 m/s:",
-        "57719 against 66255 N), so the wing flies a mean squared airspeed of 0.84-0.91 of the model's (at the "
-        'same C_R):',
-        "Which of the course's parts takes how much is not yet measured. 2. **The reel-in tension**:",
-        "the hang near the zenith pulls 4.4-16.7 kN while the model's depowered kite at the simulated reel-in "
-        'elevation pulls 0-5.2 kN. 3. **Within the phases** (eqs.',
-        '10-14 on the simulated means less the simulated power)',
-        "and **the model's transitions** (its cycle time's transition phases, which the simulated cycle, 4-5 % "
-        'shorter, does not spend)',
-        "are smaller and of the other sign: they favour the simulation. 4. **Loyd's bound**:",
+        'a hanging tether of 5 and 10 sag-corrected elements between two fixed points against the elastic catenary '
+        '(horizontal tension within 0.67 % and 0.99 % at 5 elements, 0.17 % and 0.26 % at 10: second order); the '
+        "stable step's omega_max; bad fields named.",
     ),
 )

@@ -5,7 +5,7 @@ not re-run (their commands and costs as the page gives them)."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, History, Printed
 
 W, C = "{wind_data[worked][%s]}", "{wind_data[code][%s]}"
 #: The PumpingKite-v0 rows of the gusts-v2 table (laddermill gust-bench --suite gusts-v2 --env
@@ -110,24 +110,35 @@ WIND = Covered(
              " without 1.29 (1.015 vs 1.311 ms per step, load about 3) before the fade-in slot, 1.18 and 1.11 after it"
              " in two runs at a higher load (2.5 vs 3.0 ms, 2.2 vs 2.5 ms). Drawing the field at a reset takes 3-16 "
              "ms.", "--out runs/gust_bench_v2/pumping # 16 s", "--out runs/gust_bench_v2/mill # 2 min 50 s"),
-    not_rerun=(  # laddermill gust-bench (gusts-v1 per env: minutes each; gusts-v2 as the page gives: 16 s, 2 min 50 s)
-        "(the open-loop and LQR chains then leave the aerodynamic tables within 0.2-5 s)",
-        "| TetheredWing-v0 | 3 / 12 (speed step, EOG, EWS) | 8 / 12 (+ direction step, ramp, both 1-cos, EDC); Dryden "
-        "light on 2 of 3 seeds | ECD (72 deg in 10 s), NTM IB and Dryden moderate end both | | LadderChain-v0 | 2 / 9 "
-        "(speed step, EOG) | 2 / 9 | in turbulence both leave the aerodynamic tables after 7-11 s (after 0.2-5 s "
-        "without the fade-in) | | Rotorcraft-v0 | 3 / 8 (speed step, EOG, EWS) | 7 / 8 (all but ECD; NTM IB and "
-        "Dryden moderate on every seed) | | | LadderMill-v0 | 2 / 7 (speed step, EOG) | 5 / 7 (fails ECD and the "
-        "random perturbation) |",
-        "The loop spans 50 m (the stations) to 3440 m and p . e -100 to 689 m:",
-        "(until the LQR-controlled mill fails, near 7 s)",
-        "(lateral excursions of 7.6-10.2 m, 14-30 % more energy from the gusts) and loses the third to sideslip at 61 "
-        "s.", "(0 m lateral)",
-        "(slots 0-23, 58-1612 m at the operating point), by sideslip beyond 60 deg",
-        "lateral offsets of only 1-3 m; open loop, slot 0 (just above the veered station) rolls at 3 rad/s after 1 s "
-        "in a faded-in lateral gust of 0.04 m/s (NTM seed 0)", "delays the failure to 5-8 s, when the fade-in has "
-        "brought the field to 50-90 % of its strength", "takes up to 10.9 m/s off the wind at the bottom of the loop "
-        "(58 m, where the scene's wind is 8 m/s) and adds as much at the top (3438 m): the last wings before the "
-        "hauled station (slots 99-100, 129-199 m) leave the aerodynamic range 7-10 s after",
-        # the Gaussian speed factor's failure rates: measured when it was replaced (its code is gone)
-        "made 1.1 % of resets fail at speed_std 0.25 (9 % at 0.3, 93 % at 0.5)"),
+    printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('gusts_v1_all', (
+            '(the open-loop and LQR chains then leave the aerodynamic tables within 0.2-5 s)',
+            '| TetheredWing-v0 | 3 / 12 (speed step, EOG, EWS) | 8 / 12 (+ direction step, ramp, both 1-cos, EDC); '
+            'Dryden light on 2 of 3 seeds | ECD (72 deg in 10 s), NTM IB and Dryden moderate end both | | '
+            'LadderChain-v0 | 2 / 9 (speed step, EOG) | 2 / 9 | in turbulence both leave the aerodynamic tables '
+            'after 7-11 s (after 0.2-5 s without the fade-in) | | Rotorcraft-v0 | 3 / 8 (speed step, EOG, EWS) | 7 / '
+            '8 (all but ECD; NTM IB and Dryden moderate on every seed) | | | LadderMill-v0 | 2 / 7 (speed step, EOG) '
+            '| 5 / 7 (fails ECD and the random perturbation) |',
+        )),
+        Printed('gusts_v2_mill_printed', (
+            'The loop spans 50 m (the stations) to 3440 m and p . e -100 to 689 m:',
+            '(until the LQR-controlled mill fails, near 7 s)',
+            '(lateral excursions of 7.6-10.2 m, 14-30 % more energy from the gusts) and loses the third to sideslip '
+            'at 61 s.',
+            '(0 m lateral)',
+            '(slots 0-23, 58-1612 m at the operating point), by sideslip beyond 60 deg',
+            'lateral offsets of only 1-3 m; open loop, slot 0 (just above the veered station) rolls at 3 rad/s after '
+            '1 s in a faded-in lateral gust of 0.04 m/s (NTM seed 0)',
+            'delays the failure to 5-8 s, when the fade-in has brought the field to 50-90 % of its strength',
+            "takes up to 10.9 m/s off the wind at the bottom of the loop (58 m, where the scene's wind is 8 m/s) and "
+            'adds as much at the top (3438 m): the last wings before the hauled station (slots 99-100, 129-199 m) '
+            'leave the aerodynamic range 7-10 s after',
+        )),
+    ),
+    history=(
+        History('2026-11-24', 'gymnasium resets of the envs with the Gaussian speed factor (its code is gone)',
+                'the failure rates measured when the speed factor was replaced', (
+            'made 1.1 % of resets fail at speed_std 0.25 (9 % at 0.3, 93 % at 0.5)',
+        )),
+    ),
 )

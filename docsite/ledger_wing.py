@@ -5,7 +5,7 @@ the v1 steps and power curve and the surface curves' figures derive_wing does no
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, History, Printed
 
 N = r"(-?[\d.]+)"
 D = "~{derive_wing[deriv][%s][1]}"  # a derivative at 7 deg
@@ -123,7 +123,7 @@ GIVEN = (
     "elevation", "along a 30-50 deg line", "even then alpha = 7 deg", "within its +-15 deg limits", "near 7 deg",
     "(the v1 wing, issue 30)", "V_c = 2 m/s is periodic", "elevator -1 deg", "At 0 deg", "CG 0.75 m behind the main",
     "over 70 m", "2 T / l0", "on a 1.5 m lever", "(1.5 m at 80 deg below body x:", "(60 deg below body x: x = 0.75 m, "
-    "the same 1.5 m from the CG,", "steady 10 m/s wind", "(V_c = 2 m/s, 101 wings,",
+    "the same 1.5 m from the CG,", "steady 10 m/s wind", "V_c = 2 m/s, 101 wings,",
     "| 80 deg (v0) | -4 / -1 | paper |",
     "| 80 deg (v0) | -4 / 0 | paper |", "| 90 deg | -4 / -1 | paper |", "| 70 deg | -4 / -1 | paper |",
     "| 60 deg | -6 / -1 | paper |", "| 60 deg | -6 / -1 | cable |", "| 60 deg | -8 / -1 | cable |",
@@ -149,29 +149,64 @@ DERIVED = (
     "the neutral point lies 0.48 m behind P", "puts it 0.97 m behind P", "C_L 0.61 (the issue's estimate for 200 kW at "
     "2 m/s was 0.6)", "than the v0 wing at C_L 1.00", "kite trim C_L 1.00", "(142 - 65) kN x 2 m/s = 154 kW",
     "1.07 times it", "(40 kN of tension difference)")
-#: figures no page group re-runs: the in-plane runs of the whole mill (run_to_periodic, 10-40 minutes each), the v1
-#: steps (python -m pytest -m slow -s tests/test_mill_v1.py -k step: over an hour), the v1 power curve (its command on
-#: the page: hours), the surface-curve figures derive_wing does not print
+#: figures no command re-runs: the surface-curve figures derive_wing does not print, the v1 scene's in-plane runs
+#: from a Python session (run_to_periodic on the scene at 1 and 2 m/s, 2D and 3D; 10-40 minutes each, no command)
 NOT_RERUN = (
-    "The resulting wing-alone C_L,max is 1.22 at 14.5 deg", "(wing alone 1.22 at 14.5 deg)", "| CYp, CYr | -0.12, "
-    "0.14 |", "in stability axes Cnda = -0.029", "boom cross-flow adds 0.016 sin^2 alpha",
-    "pull 82 % of what the ascending one pulls and the mill deliver 66 kW", "(C_L 0.85)", "falls to 0 at t = 160 s",
-    "| periodic, 66.2 kW", "| not periodic: last period -365 kW at 365 s, period means -365..+387 kW |",
-    "| not periodic: -180 kW at 575 s,", "| 88.9 kW at 575 s, shape still changing 3.4e-2 l0 per period |",
-    "| 128.3 kW at 470 s, shape changing 4.4e-2 l0 per period |", "| 124.0 kW, shape change 1.7e-3 l0 at 855 s |",
-    "| 135.3 kW, shape change below 1e-3 l0 at 890 and 925 s, peak tension 151 kN |", "| periodic at 1,345 s, 152.9 "
-    "kW, tensions of the period up to 149 kN", "periodic at 715 s with 82.1 kW (v0: 36 kW), peak tension 148 kN",
-    "In 3D", "2D periodic state at 2 m/s embedded", "periodic at t = 1,485 s with the same 152.9 kW and a largest "
-    "tension of 149.5 kN", "delivers 152.9 kW", "stays below 149 kN", "at t = 397 s", "peaks at 561.6 kN",
-    "at 5 m/s", "(up to 390 kN) exceed 210 kN",
-    "at t = 2,010 s with 202.3 kW and tensions of the period up to 197.7 kN",
-    "at t = 2,348.5 s with 212.8 kW and tensions up to 153.3 kN",
-    "| 8 | 0.5 | yes | 42.3 | 42.3 | 148.5 | 150.4 | | 8 | 1 | yes | 82.1 | 82.1 | 147.6 | 153.6 | | 8 | 2 | yes | "
-    "152.9 | 152.9 | 149.5 | 561.6 | | 8 | 3 | no | 214.6 | 214.6 | 154.0 | 477.1 | | 8 | 4 | no | 167.1 | 167.1 | "
-    "165.6 | 571.3 | | 8 | 5 | no | 586.7 | 586.6 | 327.7 | 527.8 | | 8 | 6 | no | 460.5 | 460.6 | 257.8 | 613.6 | | "
-    "6 | 2 | no | -62.9 | -62.9 | 209.4 | 575.6 | | 6 | 3 | no | 64.4 | 64.4 | 96.6 | 223.6 | | 10 | 2 | yes | 228.5 "
-    "| 228.5 | 222.0 | 240.7 | | 10 | 3 | yes | 321.4 | 321.4 | 221.0 | 265.7 |",
-    "settles at 0.5-2 m/s only (at 3 m/s it does settle when reached by the step from 2 m/s, above), at 6 m/s wind "
-    "not at all, and at 10 m/s the period's largest tension passes 210 kN", "at V0 = 6 or 10 m/s", "is 2 m/s (152.9 "
-    "kW)", "**At 4-5 m/s**", "at 1 to 5 m/s (323.9 kW at 5 m/s)")
-WING_DATA = Covered(groups=("derive_wing",), checks=CHECKS, given=GIVEN, derived=DERIVED, not_rerun=NOT_RERUN)
+    'The resulting wing-alone C_L,max is 1.22 at 14.5 deg',
+    '(wing alone 1.22 at 14.5 deg)',
+    '| CYp, CYr | -0.12, 0.14 |',
+    'in stability axes Cnda = -0.029',
+    'boom cross-flow adds 0.016 sin^2 alpha',
+    'pull 82 % of what the ascending one pulls and the mill deliver 66 kW',
+    '(C_L 0.85)',
+    'falls to 0 at t = 160 s',
+    'periodic at 715 s with 82.1 kW (v0: 36 kW), peak tension 148 kN',
+    'In 3D',
+    '2D periodic state at 2 m/s embedded',
+    'periodic at t = 1,485 s with the same 152.9 kW and a largest tension of 149.5 kN',
+    'delivers 152.9 kW',
+    'stays below 149 kN',
+    'at t = 397 s',
+    'peaks at 561.6 kN',
+    'at 5 m/s',
+    '(up to 390 kN) exceed 210 kN',
+)
+#: the long groups (python -m docsite.readme_figures --long NAME): the v1 steps (the slow test prints both) and the v1
+#: power curve (the page's command, hours)
+PRINTED = (
+    Printed("mill_v1_steps", (
+        'at t = 2,010 s with 202.3 kW and tensions of the period up to 197.7 kN',
+        'at t = 2,348.5 s with 212.8 kW and tensions up to 153.3 kN',
+    )),
+    Printed("power_curve_v1", (
+        '| 8 | 0.5 | yes | 42.3 | 42.3 | 148.5 | 150.4 | | 8 | 1 | yes | 82.1 | 82.1 | 147.6 | 153.6 | | 8 | 2 | yes '
+        '| 152.9 | 152.9 | 149.5 | 561.6 | | 8 | 3 | no | 214.6 | 214.6 | 154.0 | 477.1 | | 8 | 4 | no | 167.1 | '
+        '167.1 | 165.6 | 571.3 | | 8 | 5 | no | 586.7 | 586.6 | 327.7 | 527.8 | | 8 | 6 | no | 460.5 | 460.6 | 257.8 '
+        '| 613.6 | | 6 | 2 | no | -62.9 | -62.9 | 209.4 | 575.6 | | 6 | 3 | no | 64.4 | 64.4 | 96.6 | 223.6 | | 10 | '
+        '2 | yes | 228.5 | 228.5 | 222.0 | 240.7 | | 10 | 3 | yes | 321.4 | 321.4 | 221.0 | 265.7 |',
+        'settles at 0.5-2 m/s only (at 3 m/s it does settle when reached by the step from 2 m/s, above), at 6 m/s '
+        "wind not at all, and at 10 m/s the period's largest tension passes 210 kN",
+        'at V0 = 6 or 10 m/s',
+        'is 2 m/s (152.9 kW)',
+        '**At 4-5 m/s**',
+        'at 1 to 5 m/s (323.9 kW at 5 m/s)',
+    )),
+)
+#: the attachment trials' in-plane runs (a Python session with overrides, 2026-11-29, fb84e85)
+HISTORY = (
+    History("2026-11-29", "run_to_periodic(load_scene('laddermill', dimension=2, overrides=...).simulator(), "
+            "shape_tol=1e-3, power_tol=1e-3) per attachment, elevators and insertion rule",
+            "the v1 wing's attachment trials (fb84e85)", (
+                '| periodic, 66.2 kW',
+                '| not periodic: last period -365 kW at 365 s, period means -365..+387 kW |',
+                '| not periodic: -180 kW at 575 s,',
+                '| 88.9 kW at 575 s, shape still changing 3.4e-2 l0 per period |',
+                '| 128.3 kW at 470 s, shape changing 4.4e-2 l0 per period |',
+                '| 124.0 kW, shape change 1.7e-3 l0 at 855 s |',
+                '| 135.3 kW, shape change below 1e-3 l0 at 890 and 925 s, peak tension 151 kN |',
+                '| periodic at 1,345 s, 152.9 kW, tensions of the period up to 149 kN',
+            )),
+)
+
+WING_DATA = Covered(groups=("derive_wing",), checks=CHECKS, given=GIVEN, derived=DERIVED, not_rerun=NOT_RERUN,
+                    printed=PRINTED, history=HISTORY)

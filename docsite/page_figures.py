@@ -42,9 +42,10 @@ from docsite.page_numbers import prose, unaccounted
 from docsite.paper_figures import printed_match, run_command
 from docsite.pointmass_figures import pointmass_data
 from docsite.precision_figures import PRECISION_GROUPS
+from docsite.printed_numbers import printed_differences
 from docsite.pumping_figures import PUMPING_GROUPS
 from docsite.rotor_chart_figures import rotor_chart
-from docsite.rotor_figures import parse_rotor_design
+from docsite.rotor_figures import parse_rotor_design, scan_figures
 from docsite.study_figures import STUDY_GROUPS, meijaard_files
 from docsite.wind_figures import wind_data
 from docsite.wing_figures import derive_wing
@@ -61,8 +62,9 @@ def _search(pattern: str, text: str, argv: list[str]) -> re.Match:
 def rotor_design() -> dict:
     """Roberts' 35 m design at 15,000 and 30,000 ft: the wind of the 3.13 MW rating [m/s], its incidence alpha_c
     [deg] and the ideal C_p at that incidence; ``printed``: its whole output up to the files it wrote (whitespace
-    flattened, as docs/rotorcraft_design.md quotes it); ``prose``: the figures its prose quotes
-    (:func:`docsite.rotor_figures.parse_rotor_design`)."""
+    flattened, as docs/rotorcraft_design.md quotes it); ``prose`` and ``scan``: the figures its prose quotes
+    and works from its scan (:func:`docsite.rotor_figures.parse_rotor_design`,
+    :func:`docsite.rotor_figures.scan_figures`)."""
     with tempfile.TemporaryDirectory() as tmp:
         argv = [STUDY + "rotorcraft.rotor_design", "--out", tmp]
         out = run_command(argv, 600)
@@ -74,7 +76,7 @@ def rotor_design() -> dict:
         found[alt.replace(",000", "kft")] = {"wind": m.group(1), "alpha_c": float(m.group(2)),
                                        "ideal_cp": float(ideal.group(1))}
     found["printed"] = " ".join(out.split("\nwrote ")[0].split())  # all it prints before the files it wrote
-    found["prose"] = parse_rotor_design(out)
+    found["prose"], found["scan"] = parse_rotor_design(out), scan_figures(out)
     return found
 
 
@@ -315,7 +317,15 @@ def pages_differences(measured: dict) -> list[str]:
                 continue
             if len(m.groups()) != len(want) or not all(_agrees(q, w) for q, w in zip(m.groups(), want, strict=True)):
                 bad.append(f"docs/{name}: '{m.group(0)}' quotes {m.groups()}; its command prints {want}")
+        bad += printed_differences(name, getattr(LEDGER[name], "printed", ()), measured)
     return bad
+
+
+def long_differences(long: dict) -> list[str]:
+    """Every Printed snippet of a long group in ``long`` (``figures["long"]``: {group: {"printed": output}}) that
+    quotes a number its command did not print; [] when all agree or nothing was run."""
+    return [line for name, entry in LEDGER.items()
+            for line in printed_differences(name, getattr(entry, "printed", ()), long)]
 
 
 def _agrees(quoted: str | None, want: str) -> bool:
@@ -354,9 +364,12 @@ def coverage() -> dict[str, dict]:
             continue
         checks = [c for c, _ in entry.checks if re.search(c, prose(page.read_text()))]
         stale = [c for c, _ in entry.checks if not re.search(c, flat)]
-        snippets = [*entry.given, *entry.timings, *entry.derived, *entry.not_rerun]
+        printed = [s for p in entry.printed for s in p.snippets]
+        history = [s for h in entry.history for s in (*h.snippets, h.date)]  # a record's date marks it on the page
+        snippets = [*entry.given, *entry.timings, *entry.derived, *entry.not_rerun, *printed, *history]
         loose, missing = unaccounted(page, checks, snippets)
         report[page.name] = {"status": "covered", "loose": loose, "stale": stale + missing,
                              **{k: len(getattr(entry, k)) for k in ("checks", "given", "timings", "derived",
-                                                                    "not_rerun")}}
+                                                                    "not_rerun")},
+                             "printed": len(printed), "history": sum(len(h.snippets) for h in entry.history)}
     return report

@@ -118,5 +118,12 @@ def tether_convergence() -> dict:
 
 
 #: This module's page groups (merged into docsite.page_figures.GROUPS).
-PUMPING_GROUPS = {"site_tables": site_tables, "pumping_cycle_lqr": pumping_cycle_lqr,
+def site_sweeps() -> dict:
+    """``laddermill site --sweeps`` (the tables and Figs. 14-18's sweeps; 4 min 7 s wall, 92 s CPU at nice 15 and a load
+    of 4-6, 2026-11-30): {"printed": its whole output}, for docs/quasisteady.md's Printed snippets."""
+    with tempfile.TemporaryDirectory() as tmp:
+        return {"printed": run_command(["laddermill_gym.cli", "site", "--sweeps", "--out", tmp], 1800)}
+
+
+PUMPING_GROUPS = {"site_tables": site_tables, "site_sweeps": site_sweeps, "pumping_cycle_lqr": pumping_cycle_lqr,
                   "pumping_evaluate": pumping_evaluate, "tether_convergence": tether_convergence}

@@ -21,6 +21,8 @@
 * with ``--pages [PAGE ...]`` (:mod:`docsite.page_figures`): the checked numbers of the docs pages the ledger
   (:mod:`docsite.page_ledger`) covers, each group's command re-run once (``--skip-readme --pages NAME`` re-runs one
   page alone);
+* with ``--long NAME ...`` (:mod:`docsite.long_figures`; ``--long --list`` lists them with their commands): the
+  long tier, commands of minutes to an hour behind the pages' :class:`~docsite.ledger_kinds.Printed` snippets;
 * with ``--pictures [NAME ...]`` (:mod:`docsite.pictures`): every embedded picture drawn again into docs/figures/
   (printing which changed);
 
@@ -278,9 +280,18 @@ def main(argv: list[str] | None = None) -> int:
                    "(docsite/page_ledger.py; no name: every page with checks)")
     p.add_argument("--pictures", nargs="*", metavar="NAME", help="also draw the embedded pictures again into "
                    "docs/figures/ (docsite/pictures.py; no name: every command but the training runs)")
+    p.add_argument("--long", nargs="*", metavar="NAME", help="also the long tier's commands (docsite/long_figures.py; "
+                   "minutes to an hour each, outside the slow set): their output against the pages' Printed snippets")
+    p.add_argument("--list", action="store_true", help="with --long: list the long groups and their commands, run "
+                   "nothing")
     p.add_argument("--skip-readme", action="store_true", help="leave out README's own groups and checks (re-run "
                    "--pages or --pictures alone)")
     args = p.parse_args(argv)
+    if args.list:
+        from docsite.long_figures import listing
+
+        print(listing())
+        return 0
     out = Path(args.out)
     if args.check_only:
         figures = json.loads(out.read_text())
@@ -290,6 +301,10 @@ def main(argv: list[str] | None = None) -> int:
             from docsite.page_figures import measure_pages
 
             figures.update(measure_pages(args.pages, have=figures, more={"main_job": main_job}))
+        if args.long:
+            from docsite.long_figures import measure_long
+
+            figures.update(measure_long(args.long))
         out.parent.mkdir(parents=True, exist_ok=True)
         out.write_text(json.dumps(figures, indent=1))
         print(f"wrote {out}")
@@ -298,9 +313,10 @@ def main(argv: list[str] | None = None) -> int:
 
         changed = {k: v for k, v in regenerate(args.pictures or None).items() if v != "same"}
         print(f"pictures changed: {changed or 'none'}")
-    from docsite.page_figures import pages_differences
+    from docsite.page_figures import long_differences, pages_differences
 
-    bad = ([] if args.skip_readme else differences(figures)) + pages_differences(figures.get("pages", {}))
+    bad = (([] if args.skip_readme else differences(figures)) + pages_differences(figures.get("pages", {}))
+           + long_differences(figures.get("long", {})))
     for line in bad:
         print(f"stale: {line}")
     print("every checked figure is what its command prints" if not bad else f"{len(bad)} stale figures")

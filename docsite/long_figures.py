@@ -1,0 +1,225 @@
+"""The long tier of the page figures: the commands behind page numbers that take too long for the slow test set
+(minutes to an hour each on the shared 2-core machine), each re-runnable on its own.
+
+``python -m docsite.readme_figures --long --list`` lists them (name, the command as a user types it, its cost and
+its page); ``python -m docsite.readme_figures --skip-readme --long NAME [NAME ...]`` runs those commands in fresh
+processes, writes their whole printed output into the JSON under ``"long"`` and compares every
+:class:`docsite.ledger_kinds.Printed` snippet of that group with it (:mod:`docsite.printed_numbers`: each quoted
+number must be among the printed ones, by value at the quoted digits). Neither the default run nor the slow test
+runs them. A long group's snippets are the ones the ledgers listed as not re-run until 2026-11-30.
+"""
+
+from __future__ import annotations
+
+import os
+import shlex
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+WP = "NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision"
+CENTRAL = "lqr:configs/agents/lqr_ladder_chain_central.yaml"
+
+
+@dataclass(frozen=True)
+class Long:
+    """A long group: the command (as typed; a leading ``NAME=VALUE`` sets the environment, ``laddermill`` is the
+    package's CLI; several joined by `` && `` run in turn, their outputs concatenated), what it cost when last run,
+    and the page its figures are on."""
+
+    command: str
+    cost: str
+    page: str
+
+
+def _gusts(env: str, page: str, policy: str = "") -> Long:
+    return Long(f"laddermill gust-bench --suite gusts-v1 --env laddermill_gym/{env} --controllers open_loop lqr"
+                + (f" {policy}" if policy else ""), "minutes (7-12 scenarios x 3 seeds)", page)
+
+
+#: Every long group: name -> its command.
+LONG = {
+    # learned_mill.md: the shipped shared policies beside their LQRs (laddermill evaluate)
+    "mill_claim": Long("laddermill evaluate --env laddermill_gym/LadderMill-v1 --controllers ppo_mill lqr "
+                       "--episodes 5 --episode-time 300", "about 12 min", "learned_mill.md"),
+    "mill_step_01": Long("laddermill evaluate --env laddermill_gym/LadderMill-v1 --scenario step_0.1 --controllers "
+                         "ppo_mill lqr --episodes 1 --episode-time 300", "about 3 min", "learned_mill.md"),
+    "chain_central_lqr": Long("laddermill evaluate --env laddermill_gym/LadderChain-v0 --controllers "
+                              f"{CENTRAL} open_loop --episodes 1 --episode-time 300", "about 1 min",
+                              "learned_mill.md"),
+    "chain_fit_21": Long("python -m laddermill_gym.harness.shared_fit --env laddermill_gym/LadderChain-v0 --teacher "
+                         "lqr_ladder_chain_central --n-basis 21 --k 4 --episodes 1 --episode-time 300 --no-lqr",
+                         "about 1 min", "learned_mill.md"),
+    "chain_claim": Long(f"laddermill evaluate --env laddermill_gym/LadderChain-v0 --controllers ppo_chain {CENTRAL} "
+                        "lqr --episodes 5 --episode-time 300", "about 13 min", "learned_mill.md"),
+    "chain_step_01": Long("laddermill evaluate --env laddermill_gym/LadderChain-v0 --scenario step_0.1 --controllers "
+                          f"ppo_chain {CENTRAL} --episodes 1 --episode-time 300", "about 3 min", "learned_mill.md"),
+    # gusts-v1 per env (features.md's scorecard table, wind.md's)
+    "gusts_v1_tethered_wing": _gusts("TetheredWing-v0", "features.md, wind.md", "ppo_tethered_wing"),
+    "gusts_v1_ladder_chain": _gusts("LadderChain-v0", "features.md, wind.md"),
+    "gusts_v1_rotorcraft": _gusts("Rotorcraft-v0", "features.md, wind.md", "ppo_rotorcraft"),
+    "gusts_v1_laddermill": _gusts("LadderMill-v0", "features.md, wind.md"),
+    "gusts_v1_pumping_kite": _gusts("PumpingKite-v0", "features.md"),
+    "pointmass_fidelity": Long("python -m laddermill_gym.studies.pointmass.pointmass_fidelity", "minutes",
+                               "features.md, paper_podgaets2007.md"),
+    # pumping.md: the scripted cycle's deviations (each about 30 s), the power curve's prose, PumpingKite-v0 / v1
+    **{name: Long(f"python -m laddermill_gym.studies.pumping.pumping_cycle --controller lqr --cycles 2{option}",
+                  "about 30 s", "pumping.md")
+       for name, option in (("pumping_reel_in_16_7", " --reel-in-speed 16.7"), ("pumping_alpha_in_m3",
+                            " --alpha-in-deg -3"), ("pumping_cycle_lqr_2", ""), ("pumping_no_lqr", " --no-lqr"))},
+    "pumping_power_curve_printed": Long("python -m laddermill_gym.studies.pumping.power_curve", "3.5 min",
+                                        "pumping.md"),
+    "gusts_v3_pumping_v1": Long("laddermill gust-bench --suite gusts-v3 --env laddermill_gym/PumpingKite-v1 "
+                                "--controllers crosswind", "minutes", "pumping.md"),
+    "pumping_v0_eval_1200": Long("laddermill evaluate --env laddermill_gym/PumpingKite-v0 --controllers crosswind lqr "
+                                 "--episodes 1 --episode-time 1200", "minutes", "pumping.md"),
+    "pumping_v1_eval": Long("laddermill evaluate --env laddermill_gym/PumpingKite-v1 --controllers crosswind lqr "
+                            "--episodes 2", "minutes", "pumping.md"),
+    # reeling_tether.md
+    "reeling_cycle_40": Long("laddermill pumping-cycle --reel-element-length 40 --cycles 2", "minutes",
+                             "reeling_tether.md"),
+    "tether_200": Long("python -m laddermill_gym.studies.pumping.tether_convergence --start-length 200 --lengths 200 "
+                       "40 --out results/tether_200", "2.5 min", "reeling_tether.md"),
+    "reeling_power_curve_printed": Long("python -m laddermill_gym.studies.pumping.power_curve --reel-element-length 40",
+                                        "6 min", "reeling_tether.md"),
+    # power_curve.md: the six runs of 2026-11-29 (60 min on one core together), then their replay (2 s)
+    **{f"power_curve_{name}": Long(f"laddermill power-curve --workers 1 {args}--out results/power_curve_{name}",
+                                   cost, "power_curve.md")
+       for name, args, cost in (("v2", "--tail-rule scene --wind-speeds 2 5 ", "28 min"),
+                                ("v2_refine", "--speeds --winds 4 6 --wind-speeds 0.5 1 3 4 ", "15 min"),
+                                ("v2_depower", "--tail-rule depower --speeds --winds 10 12 14 --wind-speeds 2 3 5 ",
+                                 "5 min"),
+                                ("v2_depower6", "--tail-rule depower --speeds --winds 10 12 14 --wind-speeds 6 ",
+                                 "4 min"),
+                                ("v2_depower8", "--tail-rule depower --speeds --winds 12 14 --wind-speeds 7 8 ",
+                                 "6 min"),
+                                ("v2_depower10", "--tail-rule depower --speeds --winds 14 --wind-speeds 9 10 ",
+                                 "3 min"))},
+    "power_curve_replay": Long("laddermill power-curve --replay " + " ".join(
+        f"results/power_curve_{n}/power_curve.json" for n in ("v2", "v2_refine", "v2_depower", "v2_depower6",
+                                                               "v2_depower8", "v2_depower10"))
+        + " --out results/power_curve_replay", "2 s after the six power_curve_v2* groups", "power_curve.md"),
+    "trim_slope": Long("python -m laddermill_gym.studies.mill.trim_slope", "seconds", "power_curve.md"),
+    # wind.md
+    "gusts_v1_all": Long("laddermill gust-bench --suite gusts-v1 --controllers open_loop lqr", "about an hour",
+                         "wind.md"),
+    "gusts_v2_mill_printed": Long("laddermill gust-bench --suite gusts-v2 --env laddermill_gym/LadderMill-v0 "
+                                  "--scenarios EWS_IA NTM_IB dryden_light dryden_moderate --controllers open_loop lqr",
+                                  "25 min at nice 15", "wind.md"),
+    # the work-precision studies (make work-precision; docs/work_precision*.md)
+    "wp_closed_loop": Long(f"{WP} ladder_chain --forcing step --controller none lqr --time 10 --samples 50 && {WP} "
+                           "laddermill --forcing step --controller none lqr --time 10 --samples 50", "29 min",
+                           "work_precision_closed_loop.md"),
+    "wp_chain_kept_matrix": Long(f"{WP} ladder_chain --forcing step --controller lqr --jacobian-every 1 2 4 8 --time 5 "
+                                 "--samples 25 --n-dt 3", "8 min", "work_precision_closed_loop.md"),
+    "wp_mill_kept_matrix": Long(f"{WP} laddermill --forcing step --controller lqr --jacobian-every 1 2 4 8 --time 5 "
+                                "--samples 25 --n-dt 3", "4 min", "work_precision_closed_loop.md"),
+    "wp_chain": Long(f"{WP} ladder_chain --time 10 --samples 50", "6-9 min", "work_precision.md"),
+    "wp_small_scenes": Long(f"{WP} tethered_wing roberts_flying_model laddermill --time 5 --samples 25",
+                            "about 7 min", "work_precision.md"),
+    "wp_podgaets": Long(f"{WP} podgaets_5km --time 10 --samples 50", "minutes", "work_precision.md"),
+    "wp_rk4_scenes": Long(f"{WP} pumping_kite roberts_35m_15kft roberts_35m_30kft --forcing step --time 5 "
+                          "--samples 25", "minutes", "work_precision.md"),
+    "stress_tethered_wing": Long("laddermill stress tethered_wing", "minutes", "work_precision.md"),
+    "work_precision_all": Long(" && ".join((f"{WP} ladder_chain --time 10 --samples 50",
+                                            f"{WP} tethered_wing roberts_flying_model laddermill --time 5 --samples 25",
+                                            f"{WP} podgaets_5km --time 10 --samples 50",
+                                            f"{WP} pumping_kite roberts_35m_15kft roberts_35m_30kft --forcing step "
+                                            "--time 5 --samples 25")), "about 15 min (make work-precision)",
+                               "work_precision.md"),
+    "wp_controller_measure": Long(" && ".join(
+        f"{WP} {scene} --forcing step --time {t} --samples {n}" for scene, t, n in (
+            ("ladder_chain", 10, 50), ("laddermill", 10, 50), ("laddermill", 5, 25), ("ladder_chain", 5, 25))),
+        "22 min", "work_precision.md"),
+    "whip_spectrum": Long(" && ".join(
+        f"NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.whip_spectrum {scene} --at {at} --top 4 "
+        f"--methods ros34pw2:0.0666666666666667 ros2t:0.0666666666666667 rk4:{rk4}" for scene, at, rk4 in (
+            ("ladder_chain", "6 8", "0.0222222222222222"), ("laddermill", "6 7.6", "0.0153846153846154"))),
+        "11 min", "work_precision.md"),
+    "w_step_cost": Long("python -m laddermill_gym.studies.numerics.w_step_cost ladder_chain laddermill --dt-w 0.0667 "
+                        "--dt-rk4 0.01", "minutes", "work_precision.md"),
+    "stress_all": Long("laddermill stress tethered_wing ladder_chain roberts_flying_model laddermill",
+                       "5.5 min (2026-11-24) to an hour", "work_precision.md"),
+    # benchmarks.md
+    "mill_benchmark": Long("python -m laddermill_gym.studies.mill.mill_benchmark", "minutes", "benchmarks.md"),
+    "pointmass_accuracy": Long("python -m laddermill_gym.studies.pointmass.pointmass_benchmark", "minutes",
+                               "benchmarks.md"),
+    **{f"step_accuracy_{t}": Long(" && ".join(
+        f"NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.benchmarks.physics_step_accuracy laddermill_gym/{env} "
+        f"--time {t} --steps ros34pw2 ros2" for env in ("LadderChain-v0", "LadderMill-v2")), "minutes each",
+        "benchmarks.md") for t in (10, 40)},
+    # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
+    "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "over an hour",
+                          "wing_data.md"),
+    "power_curve_v1": Long("laddermill power-curve --scene laddermill_v1 --ramp scene --speeds 0.5 1 2 3 4 5 6 "
+                           "--winds 6 10 --wind-speeds 2 3 --max-time 1400 --workers 2", "hours", "wing_data.md"),
+    # mill_fast.md: fast_mill's drift, the near-top rule (1,500 s from rest each), trim_slope, the v2 mill's runs
+    "fast_mill_drift": Long("python -m laddermill_gym.studies.mill.fast_mill drift --speed 4 --time 400", "minutes",
+                            "mill_fast.md"),
+    "fast_mill_top_rule": Long(" && ".join(
+        f"python -m laddermill_gym.studies.mill.fast_mill case --speed {v}{rule}" for v in (4, 5)
+        for rule in ("", " --top-slots 7 --top-deg -4")), "minutes each", "mill_fast.md"),
+    "trim_slope_v2": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v2 --elevators 1.3 3.35",
+                          "seconds", "mill_fast.md"),
+    "fast_mill_v2_5_ramp200": Long("python -m laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2 "
+                                   "--speed 5 --start-ramp 200 --max-time 3000", "minutes", "mill_fast.md"),
+    "fast_mill_v2_step": Long(" && ".join(
+        f"python -m laddermill_gym.studies.mill.fast_mill step --scene laddermill_v2 --speed 2 {step}"
+        for step in ("--wind-factor 1.125", "--new-speed 3")), "minutes each", "mill_fast.md"),
+    "fast_mill_v2_3d": Long(" && ".join(
+        f"python -m laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2 --dimension 3 --speed {v} "
+        f"--start-ramp {100 * v} --max-time 3000" for v in (5, 1, 2)), "minutes each", "mill_fast.md"),
+    "mill_v2_lqr": Long("python -m pytest -m slow -s tests/test_laddermill_v2.py", "about an hour", "mill_fast.md"),
+    # the mill pages
+    "meijaard_v0": Long("python -m laddermill_gym.studies.mill.meijaard --scene laddermill --out results/meijaard_v0",
+                        "11 min", "paper_meijaard1999.md"),
+    "meijaard_v1_printed": Long("python -m laddermill_gym.studies.mill.meijaard --out results/meijaard_v1 "
+                                "--no-progress", "92 s with its searches saved, 11 min without",
+                                "paper_meijaard1999.md"),
+    **{f"mill_v0_{scenario}": Long("laddermill evaluate --env laddermill_gym/LadderMill-v0 --controllers open_loop "
+                                   f"lqr --episodes 1 --episode-time 300 --scenario {scenario}", "minutes",
+                                   "features.md, controllers.md")
+       for scenario in ("paper_step", "step_minus_0.05", "step_0.1", "gust")},
+}
+
+
+def argv_env(command: str) -> tuple[list[str], dict]:
+    """(the argument list of ``python -m`` for ``command``, its environment): ``laddermill ...`` is
+    ``laddermill_gym.cli ...``, a leading ``NAME=VALUE`` goes into the environment."""
+    words, env = shlex.split(command), dict(os.environ)
+    while words and "=" in words[0] and not words[0].startswith("-"):
+        name, _, value = words.pop(0).partition("=")
+        env[name] = value
+    if words[:2] == ["python", "-m"]:
+        return words[2:], env
+    if words and words[0] == "laddermill":
+        return ["laddermill_gym.cli", *words[1:]], env
+    raise ValueError(f"docsite/long_figures.py: a long group's command must start with 'python -m' or 'laddermill', "
+                     f"not {command!r}")
+
+
+def listing() -> str:
+    """One line per long group: its name, cost, page and command."""
+    return "\n".join(f"{name} ({g.cost}; {g.page}):\n    {g.command}" for name, g in LONG.items())
+
+
+def measure_long(names: list[str]) -> dict:
+    """{"long": {name: {"printed": stdout, "exit": its status, "seconds": wall}}} for the named groups (ValueError
+    naming an unknown one); a command exits 1 where its study reports a failed case, so its output still counts."""
+    unknown = [n for n in names if n not in LONG]
+    if unknown:
+        raise ValueError(f"--long: no long group {unknown} in docsite/long_figures.py; see --long --list")
+    found = {}
+    for name in names:
+        t0, printed, status = time.perf_counter(), [], []
+        for command in LONG[name].command.split(" && "):
+            argv, env = argv_env(command)
+            proc = subprocess.run([sys.executable, "-m", *argv], cwd=ROOT, env=env, capture_output=True, text=True)
+            printed.append(proc.stdout)
+            status.append(proc.returncode)
+        found[name] = {"printed": "\n".join(printed), "exit": status, "seconds": round(time.perf_counter() - t0)}
+        print(f"{name}: exit {status}, {found[name]['seconds']} s", flush=True)
+    return {"long": found}

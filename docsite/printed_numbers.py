@@ -1,0 +1,82 @@
+"""Compare a page's quoted numbers with a command's whole printed output, by value.
+
+A :class:`docsite.ledger_kinds.Printed` snippet agrees with an output when each number the page quotes in it
+(:data:`docsite.page_numbers.NUMBER`: thousands commas and a ratio's ``x`` dropped) equals some number the output
+prints, to within half a unit of the quoted digits plus half a unit of the printed ones (a printed 0.1145 is 0.114
+or 0.115 quoted; 25.64 is 25.6), or a thousandth or a thousand times it (a page's kW of a printed W, its MW of a
+printed kW), read in the snippet's order among nearby printed numbers (:func:`missing`). This is looser than a check
+(it does not say *which* printed number is meant), so it is used for a command's free-text lines that no parser
+reads: a changed figure that no nearby printed figure matches is named.
+"""
+
+from __future__ import annotations
+
+import re
+
+from docsite.page_numbers import NUMBER, prose
+
+WINDOW = 80  # printed numbers a snippet's figures may spread over (a table row of a wide study prints ~20)
+
+# a printed numeral, also one glued to a unit or letter ("1.2mm", "-30+240j"): the output side is read loosely
+PRINTED = re.compile(r"[-+]?\d[\d,]*(?:\.\d+)?(?:e[-+]?\d+)?")
+
+
+def value(text: str) -> float:
+    """A numeral as the page or a command writes it ("1,555", "8.7x", "3.2e-4") as a float."""
+    return float(text.replace(",", "").rstrip("x"))
+
+
+def unit(text: str) -> float:
+    """One unit of the last digit ``text`` writes: 0.01 for 0.30, 1e5 for 2.16e7, 1 for 1,555."""
+    mantissa, _, exponent = text.replace(",", "").rstrip("x").lower().partition("e")
+    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+    return 10.0 ** ((int(exponent) if exponent else 0) - decimals)
+
+
+def numerals(text: str) -> list[str]:
+    """The numerals of ``text`` (flattened as a page is)."""
+    flat = prose(text)
+    return [flat[a:b] for a, b in (m.span() for m in NUMBER.finditer(flat))]
+
+
+def missing(snippet: str, output: str) -> list[str]:
+    """The numbers of ``snippet`` that ``output`` does not print (by value at the quoted and printed digits, or a
+    thousandth or a thousand times it), read in order: each number must come after the one before it within
+    :data:`WINDOW` printed numbers of the first (so a sentence's figures must be printed near one another, as one
+    line or table prints them); the start that leaves the fewest unmatched is taken."""
+    printed = [(value(t), unit(t)) for t in PRINTED.findall(output)]
+    quoted = [(q, value(q), unit(q)) for q in numerals(snippet)]
+
+    def hit(i: int, q: float, u: float) -> bool:
+        p, pu = printed[i]
+        return any(abs(f * p - q) <= 0.5 * (u + f * pu) + 1e-12 * max(1.0, abs(q)) for f in (1.0, 1e-3, 1e3))
+
+    best = [text for text, _, _ in quoted]
+    for start in range(len(printed)):
+        lost, pos = [], start
+        for text, q, u in quoted:
+            found = next((i for i in range(pos, min(start + WINDOW, len(printed))) if hit(i, q, u)), None)
+            if found is None:
+                lost.append(text)
+            else:
+                pos = found + 1
+        if len(lost) < len(best):
+            best = lost
+        if not best:
+            break
+    return best
+
+
+def printed_differences(page: str, entries: tuple, measured: dict) -> list[str]:
+    """Each Printed snippet of ``page`` (docs file name) whose group was measured (its figures in ``measured``, the
+    output under ``"printed"``) and quotes a number the output does not print; [] when all agree."""
+    bad = []
+    for entry in entries:
+        figures = measured.get(entry.group)
+        if not isinstance(figures, dict) or "printed" not in figures:
+            continue
+        for snippet in entry.snippets:
+            lost = missing(snippet, figures["printed"])
+            if lost:
+                bad.append(f"docs/{page}: {entry.group} printed none of {lost} in {snippet!r}")
+    return bad
