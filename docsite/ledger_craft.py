@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import re
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, History
 
 CS = "~{craft_stability[%s]}"
 SCAN = (7, 10, 13, 16, 18, 19, 20, 21, 22)  # [m/s] the page's columns of the wind scan
@@ -69,12 +69,16 @@ ROTORCRAFT_DERIVED = (
     "has pitch 25.6 deg, tether tensions of 129 N (each rear) and 195 N (front), and 1.6 kW electrical power",
     "Its modes are -0.19 +- 0.84j and -3.7 +- 5.4j 1/s", "a period of 12.6 s", "roll (about 0.03 rad per m) and yaw "
     "(about 0.043 rad per m)", "That happens above 12.8 m/s", "above 12.8 m/s, which")
-ROTORCRAFT_NOT_RERUN = (  # runs of the study on modified configs (fin areas, tether spacings) and beyond its scan
-    "| fins 0 / 0.05 / **0.15** / 0.4 m^2 | 0.115 / 0.110 /", "/ 0.168 |",
-    "| rear tethers at y = +-1.0 m | 0.134 | fails at 5.6 s (saturates at 5 deg) |",
-    "| rear tethers at y = +-2.0 m | 0.099 | fails at 5.7 s (saturates at 5 deg) |",
-    "Above about 23 m/s the blade-limited collective falls below -3 deg. There a fast mode (30 rad/s) goes unstable "
-    "(growth +0.25 1/s at 25 m/s)")
+#: runs of craft_stability on modified configs (fin areas, tether spacings) and beyond its wind scan (9eab8c7)
+ROTORCRAFT_HISTORY = (History(
+    "2026-11-23", "python -m laddermill_gym.studies.rotorcraft.craft_stability on copies of the craft config with the "
+    "fin area and the rear tethers' spacing changed, and at 23-25 m/s", "the craft's design trials (9eab8c7)", (
+        "| fins 0 / 0.05 / **0.15** / 0.4 m^2 | 0.115 / 0.110 /", "/ 0.168 |",
+        "| rear tethers at y = +-1.0 m | 0.134 | fails at 5.6 s (saturates at 5 deg) |",
+        "| rear tethers at y = +-2.0 m | 0.099 | fails at 5.7 s (saturates at 5 deg) |",
+        "- Above about 23 m/s (", "the blade-limited collective falls below -3 deg. There a fast mode (30 rad/s) "
+        "goes unstable (growth +0.25 "
+        "1/s at 25 m/s)")),)
 ROTORCRAFT = Covered(
     groups=("craft_stability", "craft_data"),
     checks=CRAFT_DATA_CHECKS + ((r"\*\*The critical wind speed is (\d+\.\d\d) m/s\*\*", (CS % "critical",)),
@@ -96,7 +100,7 @@ ROTORCRAFT = Covered(
             (r"\| growth \[1/s\] \| " + " \\| ".join([r"([-+\d.]+)"] * 9),
              tuple(CS % f"scan][v{v}][growth" for v in SCAN))),
     given=ROTORCRAFT_GIVEN, timings=("(14 s on the shared 2-core machine at a load of 5, 2026-11-29)",),
-    derived=ROTORCRAFT_DERIVED, not_rerun=ROTORCRAFT_NOT_RERUN)
+    derived=ROTORCRAFT_DERIVED, history=ROTORCRAFT_HISTORY)
 
 RC = "~{rotor_chart[%s]}"
 ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (2-25 s); the model's formulas

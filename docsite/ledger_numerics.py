@@ -5,7 +5,7 @@ reproducibility figures (from studies and tests that no page group re-runs) list
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, Printed
 
 G = "{numerics_data[%s]}"
 NUMERICS = Covered(
@@ -15,6 +15,11 @@ NUMERICS = Covered(
             (r"approaching (\d) and (\d) from below", (G % "ratio_ros2", G % "ratio_ros34pw2")),
             (r"1e-6 m/s\^2 at omega\^2 = 7e5 s\^-2 is ([\d.e-]+) m", (G % "node_offset",))),
     given=(  # the equations and methods as published, the solvers' settings, counts of unknowns
+        # the option's settings
+        "(opt-in: , the wing and rotorcraft envs' ; default 1, the registered ids' bits)",
+        'The registered ids keep k = 1.',
+        'With k > 1',
+        'still a W-method of order 3',
         "Eq. (25) of Meijaard", "6 velocity unknowns per wing", "3 per free cable node", "6 x 6 blocks",
         "a precomputed 6 x 6 shape times m_e/3", "f(s) = s^3 - s0 s^2 - c", "c = EA eps_p/l0 >= 0",
         "when c > 0 (f(0) = -c < 0", "The start value of eq. (21), max(s0, c^(1/3))", "inflection point s0/3",
@@ -41,6 +46,12 @@ NUMERICS = Covered(
         "J = [[0, A], [M^-1 K P, M^-1 C]]", "(|h lambda| >> 1)", "below 1/|lambda|", "With n > 1", "with 1 / V_xz",
         "(DP5(4) and ROS34PW2)", "reaches 3.5 km"),
     timings=(  # one thread, medians on the shared 2-core machine (the page gives no date: measured when written)
+        # the kept matrix's CPU per step (jacobian_reuse, 2026-11-30 03:33, load 7.4-7.8; the 4000-step
+        # figures were the study's measuring error, corrected in c-batchgap)
+        'a 50 ms step cost 7.28 us of CPU every step, 6.20 us kept 2, 5.71 us kept 4, 5.47 us kept 8 (-15, -22, -25 '
+        '%; the 4.66 / 4.01 / 3.71 / 3.57 us printed before timed 4000 steps, of which the wing flies about 2550 '
+        'before',
+        '1000 steps timed; 2026-11-30 03:33, load 7.4-7.8',
         "On the mill a ROS34PW2 step went from 432 to 399 us; the rest of it is the three stage right-hand sides (50 us"
         " each,", "(85 us) and the cable's (15 us)", "assembly 31 us, full right-hand side 53 us, cable Jacobian "
         "15 us, "
@@ -56,37 +67,54 @@ NUMERICS = Covered(
     derived=(  # worked by hand from the page's own inputs
         "omega^2 ~ 1e6 s^-2, a wing's pendulum g / L ~ 0.1 s^-2", "outweigh the wing rows 1e7 to one",
         "some 200 ulps of a 50 m coordinate", "(ratio 4: O(1/n^2);", "as h^0.4 under", "n^-1.4"),
-    not_rerun=(  # measured by the studies and tests the page names (tests/test_*.py, work_precision, the stress suite)
-        # the kept iteration matrix (jacobian_every; studies.numerics.jacobian_reuse, 2026-11-30)
-        "(opt-in: , the wing and rotorcraft envs' ; default 1, the registered ids' bits)",
-        "error ratio per halving above 6 with the matrix kept 3 and 8 steps", "a 50 ms step cost 7.28 us of CPU every "
-        "step, 6.20 us kept 2, 5.71 us kept 4, 5.47 us kept 8 (-15, -22, -25 %; the 4.66 / 4.01 / 3.71 / 3.57 us "
-        "printed before timed 4000 steps, of which the wing flies about 2550 before", "over 60 s the largest position "
-        "error against RK4 at 50/128 ms was 3.44, 3.60, 3.96, 4.84 m",
-        "The registered ids keep k = 1.", "1000 steps timed; 2026-11-30 03:33, load 7.4-7.8", "With k > 1",
-        "still a W-method of order 3",
-        "controls 0.01 off the trim",
-        "(about -5 +- 119i 1/s on", "unstable at 0.05 s on the chain", "with it, at 0.2 s.", "(3.6x softer",
-        "error at 0.05 s halves (0.028 against 0.058 m), but its largest stable step falls from 0.2 to 0.1 s (the apex "
-        "wings diverge at 7.8 s)", "broke the mill down at 0.2 s", "to 2.4e-5", "ROS34PW2 at 0.2 s 5.9x RK4 on the mill"
-        " over 5 s", "ros2 2.9, 3.1, 3.4 and ros34pw2 6.1, 6.8, 7.3", "-24 1/s, a 0.11 s limit,", "-122 1/s, 0.023 s, "
-        "after a 5x wind step), and RK4 past it grows the state about 30-fold per step",
-        "(the golden runs against 16b454f: 9.8e-11 on the chain, 2.1e-12 on the wing,",
+    printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('jacobian_reuse', (
+            'error ratio per halving above 6 with the matrix kept 3 and 8 steps',
+            'over 60 s the largest position error against RK4 at 50/128 ms was 3.44, 3.60, 3.96, 4.84 m',
+        )),
+    ),
+    not_rerun=(  # measured by the tests the page names (tests/test_*.py: assertions, not printed) and exploratory
+        # runs of the numerics' design (the golden runs' comparisons, the trims' residuals, the chain's modes)
+        'controls 0.01 off the trim',
+        '(about -5 +- 119i 1/s on',
+        'unstable at 0.05 s on the chain',
+        'with it, at 0.2 s.',
+        '(3.6x softer',
+        'error at 0.05 s halves (0.028 against 0.058 m), but its largest stable step falls from 0.2 to 0.1 s (the '
+        'apex wings diverge at 7.8 s)',
+        'broke the mill down at 0.2 s',
+        'to 2.4e-5',
+        'ROS34PW2 at 0.2 s 5.9x RK4 on the mill over 5 s',
+        'ros2 2.9, 3.1, 3.4 and ros34pw2 6.1, 6.8, 7.3',
+        '-24 1/s, a 0.11 s limit,',
+        '-122 1/s, 0.023 s, after a 5x wind step), and RK4 past it grows the state about 30-fold per step',
+        '(the golden runs against 16b454f: 9.8e-11 on the chain, 2.1e-12 on the wing,',
         "(the rising leg, stretched by 160 kN against the falling leg's 40 kN, is 20 m longer)",
-        "(alpha about 13.7 deg)", "(alpha about 5.4 deg).** At +2 deg (alpha about 2.9 deg)", "within 15 s (the same "
-        "growth at dt = 0.01, 0.005 and 0.0025 s,", "to 1e-10 and the in-plane 3D run still equals the 2D run to 1e-9",
-        "from the 8th control step on", "(from step 16)", "16b454f's by up to 1.1e-10 relative over 0.5 s (the "
-        "in-plane "
-        "chain's equilibrium by 8.5e-13 at the start,", "(chains 0.9-1.2e-10, single wing and rotorcraft 1.2-2.3e-12;",
-        "to 1e-12 normwise relative (measured at most 4.6e-14)", "(half of each neighbouring element, 2.5 kg at "
-        "12.5 m) "
-        "against an element stiffness EA / l0 of 1.7e6 N/m", "at n = 8 (RMS 0.105 m/s^2), and the trim stalls at n = 4 "
-        "and 8 with the angle of attack off by 0.008 rad", "at n = 4 the measure's own round-off", "is 2.5e-7 m/s^2",
-        "(100-230 N against 160 kN at the ground)", "(apex wing 115 N and 580 N m out of balance at n = 8; Newton "
-        "stalls "
-        "at 0.13 m/s^2)", "(1.5e-8 |z|, 0.05 mm)", "stop at 1e-5 m/s^2", "by a factor 2", "4.7e-8 m/s^2",
-        "within 3.6e-4, 8.6e-5, 2.1e-5 m", "(slope -2.0), H and V at the station within 4e-3 / n^2",
-        "moves by 1.10, 0.17, 0.041, 0.010 m", "lies 1.35 m from the limit", "at t = 0.3836 s (wing 46 at -74 deg "
-        "sideslip)", "-4.5e6 rad/s^2 at the last accepted state and 3.9e9 with the other sign 1e-4 s later",
-        "removed, -129 rad/s^2"),
+        '(alpha about 13.7 deg)',
+        '(alpha about 5.4 deg).** At +2 deg (alpha about 2.9 deg)',
+        'within 15 s (the same growth at dt = 0.01, 0.005 and 0.0025 s,',
+        'to 1e-10 and the in-plane 3D run still equals the 2D run to 1e-9',
+        'from the 8th control step on',
+        '(from step 16)',
+        "16b454f's by up to 1.1e-10 relative over 0.5 s (the in-plane chain's equilibrium by 8.5e-13 at the start,",
+        '(chains 0.9-1.2e-10, single wing and rotorcraft 1.2-2.3e-12;',
+        'to 1e-12 normwise relative (measured at most 4.6e-14)',
+        '(half of each neighbouring element, 2.5 kg at 12.5 m) against an element stiffness EA / l0 of 1.7e6 N/m',
+        'at n = 8 (RMS 0.105 m/s^2), and the trim stalls at n = 4 and 8 with the angle of attack off by 0.008 rad',
+        "at n = 4 the measure's own round-off",
+        'is 2.5e-7 m/s^2',
+        '(100-230 N against 160 kN at the ground)',
+        '(apex wing 115 N and 580 N m out of balance at n = 8; Newton stalls at 0.13 m/s^2)',
+        '(1.5e-8 |z|, 0.05 mm)',
+        'stop at 1e-5 m/s^2',
+        'by a factor 2',
+        '4.7e-8 m/s^2',
+        'within 3.6e-4, 8.6e-5, 2.1e-5 m',
+        '(slope -2.0), H and V at the station within 4e-3 / n^2',
+        'moves by 1.10, 0.17, 0.041, 0.010 m',
+        'lies 1.35 m from the limit',
+        'at t = 0.3836 s (wing 46 at -74 deg sideslip)',
+        '-4.5e6 rad/s^2 at the last accepted state and 3.9e9 with the other sign 1e-4 s later',
+        'removed, -129 rad/s^2',
+    ),
 )

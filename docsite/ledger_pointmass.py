@@ -4,7 +4,7 @@ closed forms against :mod:`docsite.pointmass_figures`)."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, Printed
 
 PM = "{pointmass_mill[%s]}"
 RIGID = tuple(PM % f"rigid][{k}" for k in ("power_kW", "first_kN", "last_kN", "min_kN", "min_element", "t"))
@@ -164,27 +164,47 @@ PM_TIMINGS = (
     "An end chunk costs 54 ns per node", "a middle one 90 ns", "take 1.70 and 1.72 ms at 100,000 nodes",
     "1.16x for P = 3, 1.26x for 4, 1.59x for 8, 1.70x for 16", "24 to 57 s on the shared two-core machine",
     "take 0.02 s", "which costs about three minutes", "takes about 3 min", "so end chunks are 5/3 the size")
-#: figures of the studies and tests the page names (pointmass_fidelity, tests/test_pointmass_*.py), no group re-runs
+#: figures the pointmass_benchmark (the full run: its held arrays and accuracy lines) and pointmass_fidelity studies
+#: print: long groups (python -m docsite.readme_figures --long NAME)
+PM_PRINTED = (
+    Printed("pointmass_accuracy", (
+        'state 24.00 MB, workspace 4.19 MB, parameters 0.50 MB, **28.69 MB** in all on 2 threads (29.41 MB with room '
+        'for 16 chunks;',
+        'holds 28.69 MB on 2 threads, 29.41 MB with a workspace for 16 chunks, 35.17 MB for 128',
+        '(speeds over 1000 m/s within seconds at 256 elements)',
+        'over 0.2 s from the quasi-static start (10,000 elements, explicit dt 1.56e-6 s, the kites move up to 3 cm): '
+        'largest kite-position difference 3.0e-3 m at dt = 0.01 s, 3.2e-4 m at 1e-3 s, 3.3e-5 m at 1e-4 s',
+    )),
+    Printed("pointmass_fidelity", (
+        'within 0.1 kN',
+        'first piece 161.0 kN (rigid) vs 178.9 kN (point mass, +11 %); last piece 71.8 vs 67.3 kN (-6 %)',
+        "-9.6 % and +4.4 % of the wing's C_L",
+        'within 0.9 % (first piece) and 0.01 % (last)',
+        'up to 44 m (70 m with matched lift) on a 3.6 km high loop',
+        'falls to 0.1-0.2 kN',
+        'within about 10 s and stays (node speeds 1e-10 m/s after 120 s)',
+    )),
+)
+#: figures of the tests the page names (tests/test_pointmass_*.py: assertions, not printed) and the env's settling
 PM_NOT_RERUN = (
-    "state 24.00 MB, workspace 4.19 MB, parameters 0.50 MB, **28.69 MB** in all on 2 threads (29.41 MB with room "
-    "for 16 "
-    "chunks;", "holds 28.69 MB on 2 threads, 29.41 MB with a workspace for 16 chunks, 35.17 MB for 128",
-    "(speeds over 1000 m/s within seconds at 256 elements)", "by 2.5e-11 of the largest velocity (0.087 m/s) and 9e-13 "
-    "m in position; 50 steps at 1,000 nodes by up to 3.1e-11 of the largest velocity and 4.5e-13 m", "to 3.4e-15",
-    "(condition number 3.3e5)", "backward error of 3e-12 to 5.5e-12, against solve_banded's 7e-17", "agree to 1.5e-7",
-    "at 20,000 nodes (5 steps, 1 and 2 threads) and within 2.8e-17 m/s in 36 of 1,000 nodes",
-    "over 0.2 s from the quasi-static start (10,000 elements, explicit dt 1.56e-6 s, the kites move up to 3 cm): "
-    "largest kite-position difference 3.0e-3 m at dt = 0.01 s, 3.2e-4 m at 1e-3 s, 3.3e-5 m at 1e-4 s",
-    "within 0.1 kN", "first piece 161.0 kN (rigid) vs 178.9 kN (point mass, +11 %); last piece 71.8 vs 67.3 kN (-6 %)",
-    "-9.6 % and +4.4 % of the wing's C_L", "within 0.9 % (first piece) and 0.01 % (last)", "up to 44 m (70 m with "
-    "matched lift) on a 3.6 km high loop", "falls to 0.1-0.2 kN", "within about 10 s and stays (node speeds 1e-10 m/s "
-    "after 120 s)", "doubles every 6.2 s", "(H = 651.998593 N) with the oracle's -1.4e-3 and -8.9e-5 relative "
-    "errors at "
-    "16 and 64 elements (second order) and to 1e-6 at 1 cm (11,000 elements)", "settled 600 s from the rigid "
-    "equilibrium, base tension 178.7 kN against 178.9 kN", "return 1456", "up to 6.9 m sideways", "t0 = 1135 s",
-    "102.6 kW (the converged point-mass motion gives 82.4 kW", "converged motion's 82.4 kW",
-    "its backward error is 5e-12 against LAPACK's 7e-17")
-
+    'by 2.5e-11 of the largest velocity (0.087 m/s) and 9e-13 m in position; 50 steps at 1,000 nodes by up to '
+    '3.1e-11 of the largest velocity and 4.5e-13 m',
+    'to 3.4e-15',
+    '(condition number 3.3e5)',
+    "backward error of 3e-12 to 5.5e-12, against solve_banded's 7e-17",
+    'agree to 1.5e-7',
+    'at 20,000 nodes (5 steps, 1 and 2 threads) and within 2.8e-17 m/s in 36 of 1,000 nodes',
+    'doubles every 6.2 s',
+    "(H = 651.998593 N) with the oracle's -1.4e-3 and -8.9e-5 relative errors at 16 and 64 elements (second order) "
+    'and to 1e-6 at 1 cm (11,000 elements)',
+    'settled 600 s from the rigid equilibrium, base tension 178.7 kN against 178.9 kN',
+    'return 1456',
+    'up to 6.9 m sideways',
+    't0 = 1135 s',
+    '102.6 kW (the converged point-mass motion gives 82.4 kW',
+    "converged motion's 82.4 kW",
+    "its backward error is 5e-12 against LAPACK's 7e-17",
+)
 
 PMD = "{pointmass_data[%s]}"  # docs/pointmass.md's closed forms
 POINTMASS = Covered(
@@ -205,5 +225,5 @@ POINTMASS = Covered(
             (r"Every kite is pitched to 6 deg \(C_L ([\d.]+), C_L/C_D ([\d.]+)\)", (PMD % "cl6", PMD % "ld6")),
             (r"the kite moves ([\d.]+) m sideways, the wind's turn of its 14\.3 m", (PMD % "sideways_m",)),
             (r"l0 / c = ([\d.]+) ms", (PMD % "wave_dt_70m_ms",))),
-    given=PM_GIVEN, timings=PM_TIMINGS, derived=PM_DERIVED, not_rerun=PM_NOT_RERUN,
+    given=PM_GIVEN, timings=PM_TIMINGS, derived=PM_DERIVED, not_rerun=PM_NOT_RERUN, printed=PM_PRINTED,
 )

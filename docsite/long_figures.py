@@ -141,6 +141,8 @@ LONG = {
         "11 min", "work_precision.md"),
     "w_step_cost": Long("python -m laddermill_gym.studies.numerics.w_step_cost ladder_chain laddermill --dt-w 0.0667 "
                         "--dt-rk4 0.01", "minutes", "work_precision.md"),
+    "jacobian_reuse": Long("python -m laddermill_gym.studies.numerics.jacobian_reuse --every 1 2 4 8", "minutes",
+                           "numerics.md"),
     "stress_all": Long("laddermill stress tethered_wing ladder_chain roberts_flying_model laddermill",
                        "5.5 min (2026-11-24) to an hour", "work_precision.md"),
     # benchmarks.md

@@ -19,7 +19,8 @@ minutes at 13; :mod:`docsite.mill_figures`), ``gain_locality`` 780 s at a load o
 ``design_data``, ``wind_data``, ``numerics_data``, ``pointmass_data`` 0 s, ``derive_wing`` 4 s; at a load of 5-7
 (2026-11-29): ``precision_data`` 0 s, ``stable_steps`` 19-65 s, ``wing_controllers`` 13 s, ``chain_controllers``
 133 s, ``mill_v1_controllers`` 223 s,
-``simulate_laddermill_half`` 267 s: every page about 70 minutes at a load of 13 (about 40 on a quieter machine).
+``simulate_laddermill_half`` 267 s: every page about 70 minutes at a load of 13 (about 40 on a quieter machine);
+``site_sweeps`` (``laddermill site --sweeps``) 247 s wall at nice 15, load 4-6 (2026-11-30).
 """
 
 from __future__ import annotations

@@ -17,8 +17,15 @@ A covered page's entries:
   dated measurements, each with its machine and load on the page, not compared;
 * ``derived``: snippets whose numbers are worked by hand from checked ones or read off a picture (no command
   prints them): listed so that a reader of this file sees them;
-* ``not_rerun``: snippets whose numbers a command prints that the page figures do not re-run (too long for the
-  slow set): the gap, stated.
+* ``printed``: :class:`~docsite.ledger_kinds.Printed` entries, snippets each of whose numbers a group's command
+  prints (compared by value, in order, with its whole output: :mod:`docsite.printed_numbers`); the group is a page
+  group (re-run with the page) or a long group (:mod:`docsite.long_figures`: minutes to hours, re-run only by
+  ``python -m docsite.readme_figures --long NAME``; ``--long --list`` names them with their commands);
+* ``history``: :class:`~docsite.ledger_kinds.History` records, figures of dated runs that are not kept (training runs,
+  runs of earlier code, trials on modified configs): each names its date, command and run, and the page marks the
+  snippet's paragraph, caption or section with that date (:mod:`docsite.page_history`, tests/test_page_history.py);
+* ``not_rerun``: snippets whose numbers no command prints (a test's assertion, a Python session's, a count inside a
+  fit): the gap, stated.
 """
 
 from __future__ import annotations

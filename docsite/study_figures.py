@@ -10,6 +10,9 @@ what it prints or writes.
 * ``pumping_power_curve`` and ``reeling_power_curve``: ``python -m laddermill_gym.studies.pumping.power_curve
   [--reel-element-length 40]`` (3.5 and 6 minutes at a load of 7), their printed tables, docs/pumping.md and
   docs/reeling_tether.md;
+* ``rotorcraft_evaluate``: ``laddermill evaluate --env laddermill_gym/Rotorcraft-v0 --controllers open_loop lqr
+  --episodes 1`` (8 s), its rows, docs/controllers.md's trimmed craft (1.6 kW) and its PPO paragraph's LQR and open
+  loop;
 * ``gusts_v2_pumping``: ``laddermill gust-bench --suite gusts-v2 --env laddermill_gym/PumpingKite-v0 --controllers
   open_loop lqr`` (16 s) and the LadderMill-v0 grid scenarios (2 min 50 s), their summaries per controller and
   scenario, docs/wind.md.
@@ -234,8 +237,26 @@ def _wings(numbers: list[str]) -> str:
     return f"wings {w[0]}-{w[-1]}" if w == list(range(w[0], w[-1] + 1)) else "wings " + ", ".join(map(str, w))
 
 
+def rotorcraft_evaluate() -> dict:
+    """``laddermill evaluate --env laddermill_gym/Rotorcraft-v0 --controllers open_loop lqr --episodes 1`` (8 s): per
+    controller its printed row (return, length [s], max |dy| [m], power [W], failures) and the power in kW as the
+    page rounds it (1 decimal); the LQR holds the trim collective, so its power is the trimmed craft's
+    (docs/controllers.md, "Rotorcraft-v0")."""
+    with tempfile.TemporaryDirectory() as tmp:
+        argv = [CLI, "evaluate", "--env", "laddermill_gym/Rotorcraft-v0", "--controllers", "open_loop", "lqr",
+                "--episodes", "1", "--out", tmp]
+        out = run_command(argv, 900)
+    rows = {}
+    for label in ("open_loop", "lqr"):
+        m = printed_match(rf"^{label} +(\S+) +(\S+) +(\S+) +(\S+) +(.*)$", out, f"python -m {' '.join(argv)}")
+        rows[label] = dict(zip(("return", "length", "dy", "power", "failures"), m.groups(), strict=True))
+        rows[label]["power_kW"] = f"{float(m.group(4)) / 1e3:.1f}"
+    return rows
+
+
 #: This module's page groups (merged into docsite.page_figures.GROUPS).
 STUDY_GROUPS = {"bench_stable_dt": bench_stable_dt, "pumping_crosswind": pumping_crosswind,
                 "pumping_power_curve": power_curve,
                 "reeling_power_curve": lambda: power_curve("40"),
-                "gusts_v2_pumping": gusts_v2_pumping, "gusts_v2_mill": gusts_v2_mill}
+                "gusts_v2_pumping": gusts_v2_pumping, "gusts_v2_mill": gusts_v2_mill,
+                "rotorcraft_evaluate": rotorcraft_evaluate}
