@@ -39,6 +39,7 @@ PUMPING = Covered(
     groups=("pumping_cycle_lqr", "pumping_crosswind", "pumping_power_curve"),
     checks=PUMPING_CHECKS + CROSSWIND_CHECKS,
     given=(
+        '(re-run 2026-11-30;',  # the date of the deviation's re-run
         '# The dynamic pumping kite (Lansdorp et al. 2008, issue part 4)',
         "the winch's parameters (the moving cable's with the first fraction 1), the strict reader of the section,"
         ' the packing; picks the kind. - , , :',
@@ -166,6 +167,8 @@ PUMPING = Covered(
         'about 4.5 minutes per hour on the shared 2-core machine at a load of 6-7).',
     ),
     derived=(
+        # the tether's share worked by hand (its mass per length times the hanging length)
+        'and of 90-160 kg of tether, which take 1 kN of the 3 kN aerodynamic force. 3. **Eqs.',
         # read off reeling_tether.md's convergence table (tether_convergence checks it) and the checked crosswind
         # table: about 4 times
         '**the crosswind cycle makes 31.3 kW on the single element and 44.6-45.7 kW on 3 to 10 elements** (which '
@@ -182,7 +185,7 @@ PUMPING = Covered(
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         Printed('pumping_reel_in_16_7', (
-            'mean reel-in tension 35 kN, net -46 kW over the second cycle.',
+            'mean reel-in tension 29.5 kN, net -43.5 kW over the second cycle',
         )),
         Printed('pumping_alpha_in_m3', (
             'the wing dives to the ground during the first reel-in (t = 180 s).',
@@ -190,10 +193,10 @@ PUMPING = Covered(
         Printed('pumping_cycle_lqr_2', (
             "The reel-in elevator balances the tethered wing's pitching moment about its attachment at alpha_in ( , "
             '+2.53 deg);',
-            "the reel-out elevator is the scene's trim at 8 deg (-0.52 deg).",
+
             'With the LQR the lateral offset stays below 6 m through three cycles.',
             'it leaves out the weight of the wing (530 N)',
-            'and of 90-160 kg of tether, which take 1 kN of the 3 kN aerodynamic force. 3. **Eqs.',
+
             'within reel-out the tension and the speed rise together (the wing swings down from high elevation after '
             'each reel-in, drum tension up to 10 kN mid reel-out), so the mean of T V exceeds the product of the '
             'means.',
@@ -232,6 +235,10 @@ PUMPING = Covered(
         )),
     ),
     history=(
+        History('2026-11-24', 'python -m laddermill_gym.studies.pumping.pumping_cycle --controller lqr --cycles 2 '
+                '--reel-in-speed 16.7', 'the deviation as first written (492976c), before later changes of the cycle', (
+            'printed 35 kN and -46 kW:',
+        )),
         History('2026-11-29', 'laddermill pumping-cycle --elements N (2, 3, 4), the code of 78cc615',
                 'the fixed-element tether trials, replaced by the reeling tether', (
             'with 2 elements the mean power halved, with 3 the lowest node reached the ground during the first '
@@ -310,6 +317,8 @@ PUMPING = Covered(
     ),
     not_rerun=(  # tests/test_pumping_v1.py's slow hour in NTM turbulence asserts survival; its figures are the
         # diagnosis script's, which no command prints
+        # the scene's reel-out trim (sim.statics.pitch_trim_alpha in a Python session; no command prints it)
+        "the reel-out elevator is the scene's trim at 8 deg (-0.52 deg).",
         "over seed 1's hour the largest alpha is 59.3 deg (seed 0:",
         '40.7 deg), against the 60.8 deg at which seed 0 used to fail, and some entries still start on a slack '
         'tether (least drum tension in an entry 57 N in seed 0, 159 N in seed 1).',

@@ -164,8 +164,9 @@ LONG = {
     "fast_mill_top_rule": Long(" && ".join(
         f"python -m laddermill_gym.studies.mill.fast_mill case --speed {v}{rule}" for v in (4, 5)
         for rule in ("", " --top-slots 7 --top-deg -4")), "minutes each", "mill_fast.md"),
-    "trim_slope_v2": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v2 --elevators 1.3 3.35",
-                          "seconds", "mill_fast.md"),
+    "trim_slope_v2": Long("python -m laddermill_gym.studies.mill.trim_slope && python -m "
+                          "laddermill_gym.studies.mill.trim_slope --variants v2 --elevators 1.3 3.35", "seconds",
+                          "mill_fast.md"),
     "fast_mill_v2_5_ramp200": Long("python -m laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2 "
                                    "--speed 5 --start-ramp 200 --max-time 3000", "minutes", "mill_fast.md"),
     "fast_mill_v2_step": Long(" && ".join(
@@ -209,19 +210,22 @@ def listing() -> str:
 
 
 def measure_long(names: list[str]) -> dict:
-    """{"long": {name: {"printed": stdout, "exit": its status, "seconds": wall}}} for the named groups (ValueError
-    naming an unknown one); a command exits 1 where its study reports a failed case, so its output still counts."""
+    """{"long": {name: {"printed": stdout, "exit": statuses, "stderr": each failed command's stderr tail, "seconds":
+    wall}}} for the named groups (ValueError naming an unknown one); a command exits 1 where its study reports a
+    failed case (a wing on the ground), so its output still counts."""
     unknown = [n for n in names if n not in LONG]
     if unknown:
         raise ValueError(f"--long: no long group {unknown} in docsite/long_figures.py; see --long --list")
     found = {}
     for name in names:
-        t0, printed, status = time.perf_counter(), [], []
+        t0, printed, status, errors = time.perf_counter(), [], [], []
         for command in LONG[name].command.split(" && "):
             argv, env = argv_env(command)
             proc = subprocess.run([sys.executable, "-m", *argv], cwd=ROOT, env=env, capture_output=True, text=True)
             printed.append(proc.stdout)
             status.append(proc.returncode)
-        found[name] = {"printed": "\n".join(printed), "exit": status, "seconds": round(time.perf_counter() - t0)}
+            errors.append(proc.stderr[-2000:] if proc.returncode else "")
+        found[name] = {"printed": "\n".join(printed), "exit": status, "stderr": errors,
+                       "seconds": round(time.perf_counter() - t0)}
         print(f"{name}: exit {status}, {found[name]['seconds']} s", flush=True)
     return {"long": found}

@@ -4,7 +4,7 @@ A :class:`docsite.ledger_kinds.Printed` snippet agrees with an output when each 
 (:data:`docsite.page_numbers.NUMBER`: thousands commas and a ratio's ``x`` dropped) equals some number the output
 prints, to within half a unit of the quoted digits plus half a unit of the printed ones (a printed 0.1145 is 0.114
 or 0.115 quoted; 25.64 is 25.6), or a thousandth or a thousand times it (a page's kW of a printed W, its MW of a
-printed kW), read in the snippet's order among nearby printed numbers (:func:`missing`). This is looser than a check
+printed kW), by magnitude, all within a few lines of output (:func:`missing`). This is looser than a check
 (it does not say *which* printed number is meant), so it is used for a command's free-text lines that no parser
 reads: a changed figure that no nearby printed figure matches is named.
 """
@@ -15,7 +15,7 @@ import re
 
 from docsite.page_numbers import NUMBER, prose
 
-WINDOW = 80  # printed numbers a snippet's figures may spread over (a table row of a wide study prints ~20)
+WINDOW = 60  # printed numbers a snippet's figures may spread over (a table row of a wide study prints ~20)
 
 # a printed numeral, also one glued to a unit or letter ("1.2mm", "-30+240j"): the output side is read loosely
 PRINTED = re.compile(r"[-+]?\d[\d,]*(?:\.\d+)?(?:e[-+]?\d+)?")
@@ -40,26 +40,28 @@ def numerals(text: str) -> list[str]:
 
 
 def missing(snippet: str, output: str) -> list[str]:
-    """The numbers of ``snippet`` that ``output`` does not print (by value at the quoted and printed digits, or a
-    thousandth or a thousand times it), read in order: each number must come after the one before it within
-    :data:`WINDOW` printed numbers of the first (so a sentence's figures must be printed near one another, as one
-    line or table prints them); the start that leaves the fewest unmatched is taken."""
-    printed = [(value(t), unit(t)) for t in PRINTED.findall(output)]
-    quoted = [(q, value(q), unit(q)) for q in numerals(snippet)]
+    """The numbers of ``snippet`` that ``output`` does not print near one another: each quoted number must equal (by
+    magnitude, at the quoted and printed digits, or a thousandth or a thousand times it: a page's "falls by 0.25" of a
+    printed -0.252, its 1.8 MJ of a printed 1813 kJ) a distinct printed number within one window of :data:`WINDOW`
+    consecutive printed numbers (a sentence's figures come from a few lines of output, in any order); the window that
+    leaves the fewest unmatched is taken."""
+    printed = [(abs(value(t)), unit(t)) for t in PRINTED.findall(output)]
+    quoted = [(q, abs(value(q)), unit(q)) for q in numerals(snippet)]
 
     def hit(i: int, q: float, u: float) -> bool:
         p, pu = printed[i]
-        return any(abs(f * p - q) <= 0.5 * (u + f * pu) + 1e-12 * max(1.0, abs(q)) for f in (1.0, 1e-3, 1e3))
+        return any(abs(f * p - q) <= 0.5 * (u + f * pu) + 1e-12 * max(1.0, q) for f in (1.0, 1e-3, 1e3))
 
     best = [text for text, _, _ in quoted]
-    for start in range(len(printed)):
-        lost, pos = [], start
+    for start in range(max(1, len(printed) - WINDOW + 1)):
+        used, lost = set(), []
         for text, q, u in quoted:
-            found = next((i for i in range(pos, min(start + WINDOW, len(printed))) if hit(i, q, u)), None)
+            found = next((i for i in range(start, min(start + WINDOW, len(printed))) if i not in used
+                          and hit(i, q, u)), None)
             if found is None:
                 lost.append(text)
             else:
-                pos = found + 1
+                used.add(found)
         if len(lost) < len(best):
             best = lost
         if not best:

@@ -287,6 +287,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--skip-readme", action="store_true", help="leave out README's own groups and checks (re-run "
                    "--pages or --pictures alone)")
     args = p.parse_args(argv)
+    if args.long == [] and not args.list:
+        p.error("--long needs the names of long groups (each runs minutes to hours); --long --list names them")
     if args.list:
         from docsite.long_figures import listing
 

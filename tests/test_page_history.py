@@ -56,12 +56,15 @@ def test_a_history_snippet_without_its_date_is_named(tmp_path):
 
 
 def test_the_printed_comparison_names_a_changed_figure():
-    """Quoted numbers against a command's output, by value at the quoted and printed digits and in order (worked by
-    hand)."""
+    """Quoted numbers against a command's output, by magnitude at the quoted and printed digits, near one another
+    (worked by hand)."""
     out = "3.13 MW at 25.64 m/s: C_p 0.1145; ppo_chain 5990.46 300.0 0.8103 236273.0 -"
     assert missing("3.13 MW is reached at 25.6 m/s", out) == []
     assert missing("C_p 0.114", out) == [] and missing("C_p 0.115", out) == []
-    assert missing("C_p 0.1145 at 25.64", out) == ["25.64"]  # read in order: 25.64 is printed before 0.1145
+    far = "3.13 at 25.64 " + " ".join(str(k) for k in range(200, 270)) + " C_p 0.1145"
+    assert missing("25.64 and 0.1145", far) == ["0.1145"]  # more than a window of printed numbers apart
+    assert missing("1.8 MJ in 138 s, 404 m", "t = 137.95 s: 1813 kJ, |dy| 404.2 m") == []  # any order, kJ as MJ
+    assert missing("falls by 0.25 deg per m/s", "-0.252 | -0.252") == []  # the page's magnitude of a slope
     assert missing("C_p 0.113", out) == ["0.113"]
     assert missing("25.7 m/s", out) == ["25.7"]
     assert missing("max |dy| 0.8103 m, 236.273 kW", out) == []  # the page's kW of a printed W
