@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 
-from docsite.ledger_kinds import Covered
+from docsite.ledger_kinds import Covered, History
 
 
 def _curve_rows(policy: str, labels: tuple, length: bool) -> tuple:
@@ -121,9 +121,11 @@ LATERAL = Covered(
              "(about 0.014 1/m x v0)", "shorter than about 11 m", "growing from 0.01 rad to about 1 rad at 0.111 1/s "
              "takes ln(100)/0.111 = 41 s", "2.7 times the largest", "about 1/6 of what",
              "a continuous equivalent of -0.89 1/s"),  # ln|z| / 0.05 s of the checked |z|
-    # explored while choosing the sweep ranges (not in the tool's ranges)
-    not_rerun=("trims failed at x = -1, -1.5, -2, -3 m and at +3 m", "Trims failed at 4.5 m/s and below (4.8 m/s",
-               "Trims failed for 600 m"),
+    # explored while choosing the sweep ranges (outside the tool's ranges: lateral_study prints no row for them)
+    history=(History("2026-11-23", "python -m laddermill_gym.studies.lateral.lateral_study with wider sweep ranges",
+                     "the trials that chose the sweep ranges (da759e2)",
+                     ("trims failed at x = -1, -1.5, -2, -3 m and at +3 m",
+                      "Trims failed at 4.5 m/s and below (4.8 m/s", "Trims failed for 600 m")),),
 )
 
 def v2_rows() -> tuple:
