@@ -28,16 +28,26 @@ CENTRAL = "lqr:configs/agents/lqr_ladder_chain_central.yaml"
 class Long:
     """A long group: the command (as typed; a leading ``NAME=VALUE`` sets the environment, ``laddermill`` is the
     package's CLI; several joined by `` && `` run in turn, their outputs concatenated), what it cost when last run,
-    and the page its figures are on."""
+    the page its figures are on, and the files it writes whose figures the page quotes (a gust bench's CSV)."""
 
     command: str
     cost: str
     page: str
+    reads: tuple = ()  # files (from the repository root) the command writes whose text counts as printed
+
+
+def _bench(suite: str, env: str, controllers: str, page: str, cost: str = "minutes") -> Long:
+    """``laddermill gust-bench`` of one env into results/long/<suite>_<env>: it prints only its files' names, so its
+    CSV (energy [J], lateral excursions [m], end times [s] per controller, scenario and seed) is what is compared."""
+    out = f"results/long/{suite}_{env}"
+    env_arg = f" --env laddermill_gym/{env}" if env != "all" else ""
+    return Long(f"laddermill gust-bench --suite {suite}{env_arg} --controllers {controllers} --out {out}", cost, page,
+                (f"{out}/gust_bench.csv",))
 
 
 def _gusts(env: str, page: str, policy: str = "") -> Long:
-    return Long(f"laddermill gust-bench --suite gusts-v1 --env laddermill_gym/{env} --controllers open_loop lqr"
-                + (f" {policy}" if policy else ""), "minutes (7-12 scenarios x 3 seeds)", page)
+    return _bench("gusts-v1", env, "open_loop lqr" + (f" {policy}" if policy else ""), page,
+                  "minutes (7-12 scenarios x 3 seeds)")
 
 
 #: Every long group: name -> its command.
@@ -72,8 +82,7 @@ LONG = {
                             " --alpha-in-deg -3"), ("pumping_cycle_lqr_2", ""), ("pumping_no_lqr", " --no-lqr"))},
     "pumping_power_curve_printed": Long("python -m laddermill_gym.studies.pumping.power_curve", "3.5 min",
                                         "pumping.md"),
-    "gusts_v3_pumping_v1": Long("laddermill gust-bench --suite gusts-v3 --env laddermill_gym/PumpingKite-v1 "
-                                "--controllers crosswind", "minutes", "pumping.md"),
+    "gusts_v3_pumping_v1": _bench("gusts-v3", "PumpingKite-v1", "crosswind lqr", "pumping.md", "about 4 min"),
     "pumping_v0_eval_1200": Long("laddermill evaluate --env laddermill_gym/PumpingKite-v0 --controllers crosswind lqr "
                                  "--episodes 1 --episode-time 1200", "minutes", "pumping.md"),
     "pumping_v1_eval": Long("laddermill evaluate --env laddermill_gym/PumpingKite-v1 --controllers crosswind lqr "
@@ -104,11 +113,9 @@ LONG = {
         + " --out results/power_curve_replay", "2 s after the six power_curve_v2* groups", "power_curve.md"),
     "trim_slope": Long("python -m laddermill_gym.studies.mill.trim_slope", "seconds", "power_curve.md"),
     # wind.md
-    "gusts_v1_all": Long("laddermill gust-bench --suite gusts-v1 --controllers open_loop lqr", "about an hour",
-                         "wind.md"),
-    "gusts_v2_mill_printed": Long("laddermill gust-bench --suite gusts-v2 --env laddermill_gym/LadderMill-v0 "
-                                  "--scenarios EWS_IA NTM_IB dryden_light dryden_moderate --controllers open_loop lqr",
-                                  "25 min at nice 15", "wind.md"),
+    "gusts_v1_all": _bench("gusts-v1", "all", "open_loop lqr", "wind.md", "about an hour"),
+    "gusts_v2_mill_printed": _bench("gusts-v2", "LadderMill-v0", "open_loop lqr --scenarios EWS_IA NTM_IB "
+                                    "dryden_light dryden_moderate", "wind.md", "25 min at nice 15"),
     # the work-precision studies (make work-precision; docs/work_precision*.md)
     "wp_closed_loop": Long(f"{WP} ladder_chain --forcing step --controller none lqr --time 10 --samples 50 && {WP} "
                            "laddermill --forcing step --controller none lqr --time 10 --samples 50", "29 min",
@@ -225,6 +232,7 @@ def measure_long(names: list[str]) -> dict:
             printed.append(proc.stdout)
             status.append(proc.returncode)
             errors.append(proc.stderr[-2000:] if proc.returncode else "")
+        printed += [(ROOT / path).read_text() for path in LONG[name].reads if (ROOT / path).exists()]
         found[name] = {"printed": "\n".join(printed), "exit": status, "stderr": errors,
                        "seconds": round(time.perf_counter() - t0)}
         print(f"{name}: exit {status}, {found[name]['seconds']} s", flush=True)

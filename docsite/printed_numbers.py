@@ -41,16 +41,16 @@ def numerals(text: str) -> list[str]:
 
 def missing(snippet: str, output: str) -> list[str]:
     """The numbers of ``snippet`` that ``output`` does not print near one another: each quoted number must equal (by
-    magnitude, at the quoted and printed digits, or a thousandth or a thousand times it: a page's "falls by 0.25" of a
-    printed -0.252, its 1.8 MJ of a printed 1813 kJ) a distinct printed number within one window of :data:`WINDOW`
-    consecutive printed numbers (a sentence's figures come from a few lines of output, in any order); the window that
-    leaves the fewest unmatched is taken."""
+    magnitude, at the quoted and printed digits, or a thousandth, a thousand times or a millionth of it: a page's
+    "falls by 0.25" of a printed -0.252, its 1.8 MJ of a printed 1813 kJ or 1813000 J) a distinct printed number
+    within one window of :data:`WINDOW` consecutive printed numbers (a sentence's figures come from a few lines of
+    output, in any order); the window that leaves the fewest unmatched is taken."""
     printed = [(abs(value(t)), unit(t)) for t in PRINTED.findall(output)]
     quoted = [(q, abs(value(q)), unit(q)) for q in numerals(snippet)]
 
     def hit(i: int, q: float, u: float) -> bool:
         p, pu = printed[i]
-        return any(abs(f * p - q) <= 0.5 * (u + f * pu) + 1e-12 * max(1.0, q) for f in (1.0, 1e-3, 1e3))
+        return any(abs(f * p - q) <= 0.5 * (u + f * pu) + 1e-12 * max(1.0, q) for f in (1.0, 1e-3, 1e3, 1e-6))
 
     best = [text for text, _, _ in quoted]
     for start in range(max(1, len(printed) - WINDOW + 1)):
