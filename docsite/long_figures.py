@@ -193,6 +193,17 @@ LONG = {
                                    f"lqr --episodes 1 --episode-time 300 --scenario {scenario}", "minutes",
                                    "features.md, controllers.md")
        for scenario in ("paper_step", "step_minus_0.05", "step_0.1", "gust")},
+    # controllers.md: the mills' period checks, the hand-over at NTM_IB seed 0, the shipped policy held out
+    "lqr_laddermill": Long("laddermill lqr --config configs/agents/lqr_laddermill.yaml", "minutes", "controllers.md"),
+    "lqr_laddermill_v1": Long("laddermill lqr --config configs/agents/lqr_laddermill_v1.yaml", "minutes",
+                              "controllers.md"),
+    "switch_ntm_ib_0": Long("python -m laddermill_gym.studies.gusts.switch_controllers --scenario NTM_IB --seed 0 "
+                            "--controllers lqr ppo_tethered_wing --times 10 18 20 21 21.5 22 22.5", "minutes",
+                            "controllers.md"),
+    "paired_survival_shipped": Long("python -m laddermill_gym.harness.paired_survival --config "
+                                    "configs/agents/ppo_tethered_wing_severe.yaml --set ntm_ib --episodes 200 --seed "
+                                    "5000 --controllers lqr ppo_tethered_wing", "an hour or more (400 episodes)",
+                                    "controllers.md"),
 }
 
 
