@@ -90,3 +90,41 @@ def test_warmed_up_start_compiles_no_step_kernel_and_gives_the_same_bits(tmp_pat
     assert not any("step_observe" in n for n in warm["names"]["make"])  # loaded from the second process's cache
     assert warm["names"]["after"] == []  # nothing compiled at the reset and the steps
     assert warm["bits"] == own["bits"]
+
+
+
+#: a fresh process, warm-up off (each kernel compiled in it): make, reset and step the env (the task's keyword
+#: arguments recorded where it would start the warm-up), then the warm-up's list of the step kernel's callees
+#: (envs/task_warmup.py) for them; prints each listed dispatcher's number of signatures before and after the list
+AHEAD = """import json, os
+os.environ[%r] = "off"
+import gymnasium, numpy as np
+from laddermill_gym.envs import kernel_warmup, task_warmup
+got = []
+kernel_warmup.start = lambda target, kwargs, *a, **k: got.append(kwargs)
+env = gymnasium.make(%r)
+env.reset(seed=0)
+env.step(np.zeros(env.action_space.shape, dtype=env.action_space.dtype))
+calls = getattr(task_warmup, %r)(got[0])
+calls = calls[0] + calls[1] if isinstance(calls, tuple) else calls
+before = [len(d.signatures) for d, _ in calls]
+done = task_warmup.compile_ahead(calls)
+print(json.dumps({"names": [d.py_func.__qualname__ for d, _ in calls], "done": done, "before": before,
+                  "after": [len(d.signatures) for d, _ in calls]}))
+"""
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("env_id, lister", [("laddermill_gym/TetheredWing-v0", "wing_calls"),
+                                            ("laddermill_gym/Rotorcraft-v0", "craft_calls")])
+def test_the_callees_compiled_ahead_are_the_step_kernels_own(tmp_path, env_id, lister):
+    # oracle: numba's own typing of the step kernel, compiled first in the same process: a listed callee whose
+    # argument types differ from those the kernel passes gets a signature of its own from the list
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "numba"), LADDERMILL_CACHE_DIR=str(tmp_path / "ops"))
+    r = subprocess.run([sys.executable, "-c", AHEAD % (kernel_warmup.SWITCH, env_id, lister)], env=env,
+                       capture_output=True, text=True, check=True)
+    out = json.loads(r.stdout.strip().splitlines()[-1])
+    assert out["done"] == len(out["names"]) >= 9  # the W step's own callees at least
+    assert {"add_body_jacobian", "add_cable_stiffness", "tree_factor", "rigid3d_check"} <= set(out["names"])
+    assert out["after"] == out["before"]  # no new specialisation: each is the one the step kernel compiled
+    assert min(out["before"]) >= 1

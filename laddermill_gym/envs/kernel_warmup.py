@@ -14,6 +14,14 @@ from its cache as in any warm start: the same machine code, so the same bits as 
 is keyed by the signature, the source and the CPU; a signature the second process did not compile is compiled
 here as before).
 
+The wing and craft targets (``envs/task_warmup.py``) compile the step kernel's callees first, in the order the
+step kernel's compile reaches them, from their argument types (``dispatcher.compile``, nothing run). The wing env
+starts two processes: the second takes that list from its other end, so the two share it through numba's cache (a
+callee compiled by one is loaded by the other; at most the one both reach together is compiled twice) while this
+process solves the trim; without it the first process compiled the whole step tree alone while this one waited.
+The craft's target leaves out the right-hand side's kernels, which this process compiles for its trim with the
+same types: the step kernel's compile then loads them from the cache instead of compiling them again.
+
 This moves CPU seconds to the other core; it removes none: the wall time shrinks only when a second core is free
 (docs/benchmarks.md, "Cold start"). ``LADDERMILL_KERNEL_WARMUP=off`` (:data:`SWITCH`) switches it off for every
 env; it is also off when numba's JIT is disabled, when the kernels are already compiled in this process or (for

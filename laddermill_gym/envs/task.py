@@ -72,6 +72,8 @@ FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state, spe
 _STATUS_TEXT = status_texts("speed or rate limit")
 #: what the kernel warm-up's second process calls with the task's arguments (envs/task_warmup.py)
 WARMUP_TARGET = "laddermill_gym.envs.task_warmup:compile_wing"
+#: the third process's, beside it: the step kernel's callees from the other end (envs/task_warmup.py)
+WARMUP_TAIL_TARGET = "laddermill_gym.envs.task_warmup:compile_wing_tail"
 
 
 @lru_cache(maxsize=16)
@@ -155,7 +157,9 @@ class WingTask(TaskCore):
                  parallel: bool | None = None, physics_step: str | None = None, jacobian_every: int = 1):
         task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
         # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py)
-        warmup = kernel_warmup.start(WARMUP_TARGET, task_kwargs, (step_observe_batch, step_observe_serial), True)
+        kernels = (step_observe_batch, step_observe_serial)
+        warmups = [kernel_warmup.start(target, task_kwargs, kernels, True)
+                   for target in (WARMUP_TARGET, WARMUP_TAIL_TARGET)]
         for name, v in (("control_dt", control_dt), ("episode_time", episode_time), ("wind_dt", wind_dt)):
             positive(name, v, "s")
         options = physics_scene_options(scene_options, physics_step, physics_dt, control_dt)
@@ -201,8 +205,9 @@ class WingTask(TaskCore):
         self._nsteps = np.zeros(B, dtype=np.int64)
         self.steps = np.zeros(B, dtype=np.int64)
         self.obs_low, self.obs_high = observation_bounds(sc)
-        if warmup is not None:  # before the first kernel call: load what it compiled from numba's cache
-            warmup.wait()
+        for warmup in warmups:  # before the first kernel call: load what they compiled from numba's cache
+            if warmup is not None:
+                warmup.wait()
         # trim observation: nominal alpha per wing and the reference power
         one = WingTask._observe_state(self, x_trim, u_trim)
         alpha_trim = one[0].reshape(nw, N_OBS_PER_WING)[:, OBS_INDEX["alpha"]]

@@ -12,9 +12,17 @@ too."""
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 
-__all__ = ["compile_wing", "compile_craft", "stand_in_wing_trim", "stand_in_craft_trim"]
+#: the longest wait of the craft's warm-up for the first process's trim to compile the right-hand side [s] (a cold
+#: trim compiles it in about 12 s of CPU; past the wait, or when the trim was on disk and compiled nothing, this
+#: process compiles it itself)
+TRIM_WAIT_S = 20.0
+
+__all__ = ["TRIM_WAIT_S", "await_on_disk", "compile_ahead", "compile_craft", "compile_wing", "compile_wing_tail",
+           "craft_calls", "stand_in_craft_trim", "stand_in_wing_trim", "step_callees", "wing_calls"]
 
 
 def stand_in_wing_trim(scene: str, options: tuple):
@@ -45,6 +53,75 @@ def stand_in_craft_trim(craft: str, wind_speed=None, collective=None, physics_dt
     return c, x, u
 
 
+class _Captured(Exception):
+    """Raised by the stand-in step kernel once it holds the arguments of the task's first call."""
+
+
+def _step_arguments(module, names: tuple, build):
+    """The arguments of the first step-kernel call of the task ``build()`` makes, with the kernels ``names`` of
+    ``module`` (the attributes the task reads) replaced by a stand-in that records them and stops the
+    constructor; restored after. None when the constructor ends otherwise."""
+    saved = {n: getattr(module, n) for n in names}
+    got = {}
+
+    def stand_in(*args):
+        got["args"] = args
+        raise _Captured
+
+    for n in names:
+        setattr(module, n, stand_in)
+    try:
+        build()
+    except _Captured:
+        pass
+    except ValueError:
+        return None
+    finally:
+        for n, k in saved.items():
+            setattr(module, n, k)
+    return got.get("args")
+
+
+def step_callees(args) -> list:
+    """The kernels the step-and-observe kernel called with ``args`` compiles as callees, as (dispatcher, arguments)
+    pairs in the order its compile reaches them (``kernels/rigid/rosenbrock.w_step_calls``,
+    ``kernels/rigid/kinds.rigid3d_calls``), with the arguments of copy 0 (``kernels/batch.copy_views``);
+    empty for a model that is not rigid 3D or a scene that steps with RK4 (its few callees compile in seconds)."""
+    from laddermill_gym.kernels.batch import row_or_none
+    from laddermill_gym.kernels.contract import KWork
+    from laddermill_gym.kernels.fixed_steps import model_with_air
+    from laddermill_gym.kernels.rigid.kinds import Rigid3D, rigid3d_calls
+    from laddermill_gym.kernels.rigid.rosenbrock import w_step_calls
+
+    t, X, U, dt, _, M, kind, vehicle, WB, AB, limits, tableau, _, DX = args[:14]
+    if tableau is None or not isinstance(kind, Rigid3D):
+        return []
+    Mb = model_with_air.py_func(kind, vehicle, M, AB.tmod[0], AB.ms[0], AB.md[0], row_or_none(AB.gp, 0),
+                                row_or_none(AB.gv, 0))
+    Wb = KWork._make(getattr(WB, f)[0] for f in KWork._fields)
+    t0, dt = float(t[0]), float(dt)
+    kinds = rigid3d_calls(t0, X[0], U[0], Wb.k5, Mb, Wb, limits)  # the W step's derivative scratch: W.k5
+    w = w_step_calls(t0, X[0], U[0], dt, Mb, Wb, tableau)
+    observed = rigid3d_calls(t0, X[0], U[0], DX[0], Mb, Wb, limits)  # the observation's: the kernel's DX row
+    return [kinds["assemble"], *w[:4], kinds["rhs"], *w[4:], kinds["check"], observed["tensions"]]
+
+
+def compile_ahead(calls) -> int:
+    """Compile (or load from numba's on-disk cache) each (dispatcher, arguments) of ``calls`` for the arguments'
+    types, in order, running none; a pair that does not compile is skipped (the step kernel then compiles what it
+    needs). Returns how many compiled or loaded."""
+    from numba import typeof
+
+    done = 0
+    for disp, a in calls:
+        try:
+            disp.compile(tuple(typeof(v) for v in a))
+            done += 1
+        except Exception:  # noqa: BLE001 (a warm-up only saves time; the step kernel compiles what is missing)
+            continue
+    return done
+
+
 def _build_and_step(cls, task_kwargs: dict) -> None:
     """Build ``cls(**task_kwargs)``, then reset every copy and take one step with the zero action; a ValueError
     of the constructor (the stand-in's read-outs) ends it."""
@@ -57,18 +134,85 @@ def _build_and_step(cls, task_kwargs: dict) -> None:
     task.step(np.zeros((B, task.n_actions)))
 
 
-def compile_wing(task_kwargs: dict) -> None:
-    """The wing task's kernels, compiled around :func:`stand_in_wing_trim` (this process's ``scene_trim`` replaced)."""
+def wing_calls(task_kwargs: dict) -> list:
+    """:func:`step_callees` of ``WingTask(**task_kwargs)``, its arguments taken from a task built around
+    :func:`stand_in_wing_trim` (``scene_trim`` restored after)."""
     from laddermill_gym.envs import task as wing_task
 
+    trim, wing_task.scene_trim = wing_task.scene_trim, stand_in_wing_trim
+    try:
+        args = _step_arguments(wing_task, ("step_observe_serial", "step_observe_batch"),
+                               lambda: wing_task.WingTask(**task_kwargs))
+    finally:
+        wing_task.scene_trim = trim
+    return [] if args is None else step_callees(args)
+
+
+def craft_calls(task_kwargs: dict) -> tuple[list, list]:
+    """:func:`step_callees` of ``CraftTask(**task_kwargs)`` (not the observation's: the craft observes through its
+    right-hand side), taken from a task built around :func:`stand_in_craft_trim` (``craft_trim`` restored after),
+    split into (those the craft's trim does not compile, those it does with the same types: the assembly and the
+    right-hand side, and the bodies' load Jacobian, whose compile needs the craft's loads that the assembly
+    compiles)."""
+    from laddermill_gym.envs.rotorcraft import task as craft_task
+    from laddermill_gym.kernels.rigid.body_jacobian import add_body_jacobian
+    from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
+
+    trim, craft_task.craft_trim = craft_task.craft_trim, stand_in_craft_trim
+    try:
+        args = _step_arguments(craft_task, ("craft_step_observe_serial", "craft_step_observe_batch"),
+                               lambda: craft_task.CraftTask(**task_kwargs))
+    finally:
+        craft_task.craft_trim = trim
+    calls = [] if args is None else step_callees(args)[:-1]
+    trims = (assemble3d, rhs3d, add_body_jacobian)
+    return [c for c in calls if c[0] not in trims], [c for c in calls if c[0] in trims]
+
+
+def await_on_disk(calls, limit_s: float) -> bool:
+    """Wait, at most ``limit_s`` [s], until numba's on-disk cache holds every (dispatcher, arguments) of ``calls``
+    for the arguments' types (another process compiling them); True when it does."""
+    from numba import typeof
+
+    left = [(d, tuple(typeof(v) for v in a)) for d, a in calls]
+    end = time.monotonic() + limit_s
+    while left:
+        left = [(d, sig) for d, sig in left if d._cache.load_overload(sig, d.targetctx) is None]
+        if not left or time.monotonic() >= end:
+            break
+        time.sleep(0.2)
+    return not left
+
+
+def compile_wing(task_kwargs: dict) -> None:
+    """The wing task's kernels, compiled around :func:`stand_in_wing_trim` (this process's ``scene_trim`` replaced):
+    the step kernel's callees first, in the order its compile reaches them (:func:`wing_calls`; a second process,
+    :func:`compile_wing_tail`, takes them from the other end), then the task's own kernels."""
+    from laddermill_gym.envs import task as wing_task
+
+    compile_ahead(wing_calls(task_kwargs))
     wing_task.scene_trim = stand_in_wing_trim
     _build_and_step(wing_task.WingTask, task_kwargs)
 
 
+def compile_wing_tail(task_kwargs: dict) -> None:
+    """The wing step kernel's callees (:func:`wing_calls`) from the last to the first, in a process beside
+    :func:`compile_wing`'s: each compiles those the other has not written to numba's cache yet, so the two share
+    them (at most the one both reach together is compiled twice) while the first process solves the trim."""
+    compile_ahead(wing_calls(task_kwargs)[::-1])
+
+
 def compile_craft(task_kwargs: dict) -> None:
     """The craft task's kernels, compiled around :func:`stand_in_craft_trim` (this process's ``craft_trim``
-    replaced)."""
+    replaced): first the step kernel's callees that the first process's trim does not compile
+    (:func:`craft_calls`), then a wait (at most :data:`TRIM_WAIT_S`) until that trim has written the assembly (and
+    with it the craft's loads) to numba's cache, then the rest of the callees, which load what the trim compiled
+    instead of compiling it a second time, then the task's own kernels."""
     from laddermill_gym.envs.rotorcraft import task as craft_task
 
+    own, trims = craft_calls(task_kwargs)
+    compile_ahead(own)
+    await_on_disk(trims[:1], TRIM_WAIT_S)  # the assembly, with the craft's loads
+    compile_ahead(trims)
     craft_task.craft_trim = stand_in_craft_trim
     _build_and_step(craft_task.CraftTask, task_kwargs)

@@ -103,6 +103,19 @@ def rigid3d_tensions(kind, t, x, u, dx, M, W):
     return 0
 
 
+def rigid3d_calls(t, x, u, dx, M, W, limits) -> dict:
+    """The kernels a rigid 3D model compiles for the integrators and the step kernels' observation, as (dispatcher,
+    arguments) pairs with the numba types those pass (t [s], state x, controls u, derivative scratch dx, model M
+    with its markers, workspace W, limits): ``assemble`` and ``rhs`` (:func:`rigid3d_assemble`,
+    :func:`rigid3d_rhs`), ``check`` (:func:`rigid3d_check`) and ``tensions`` (:func:`rigid3d_tensions`). For the
+    kernel warm-up (``envs/task_warmup.py``, issue 32): ``dispatcher.compile`` of the arguments' types compiles
+    the specialisation the step kernel calls, without running it."""
+    return {"assemble": (assemble3d, (t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)),
+            "rhs": (rhs3d, (t, W.xt, u, dx, M, W, M.sag, M.caero, M.vehicle)),
+            "check": (rigid3d_check, (M.kind, x, M, limits)),
+            "tensions": (assemble3d, (t, x, u, dx, M, W, M.sag, M.caero, NO_LOADS))}
+
+
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def rigid2d_rhs(kind, t, x, u, dx, M, W):
     return rhs2d(t, x, u, dx, M, W, M.sag, M.caero)

@@ -105,7 +105,9 @@ def _add_mass(A, nb1, T1, nb2, T2, m):
             A[i, j] += m * (T1[0, i] * T2[0, j] + T1[1, i] * T2[1, j] + T1[2, i] * T2[2, j])
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+# inlined (the callers' flags): called with the literal ends 0 and 1, it compiled once per literal, twice per
+# right-hand side (issue 32)
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always")
 def add_const_mass(D, blk, nb, ekd, e, end, m):
     """D[blk] += m T^T T, with T^T T of the element end precomputed (it does not depend on the rotation)."""
     for i in range(nb):

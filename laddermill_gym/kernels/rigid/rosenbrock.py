@@ -295,6 +295,26 @@ def w_step(t, x, u, dt, M, W, tableau):
     return OK
 
 
+def w_step_calls(t, x, u, dt, M, W, tableau) -> list:
+    """The kernels :func:`w_step` compiles as callees of its own (its model kind's assembly, right-hand side and
+    check aside: the kind lists those, e.g. ``kernels/rigid/kinds.rigid3d_calls``), in the order it calls them, as
+    (dispatcher, arguments) pairs whose Python values have the numba types w_step passes at (t [s], x, u, dt [s])
+    with the model M and workspace W of one copy: ``dispatcher.compile`` of their types compiles (or loads) the
+    same specialisation the step kernel uses, without running it (the kernel warm-up, ``envs/task_warmup.py``,
+    issue 32). Keep it in step with :func:`w_step`: a pair that differs only costs a compile nothing uses."""
+    gh = float(tableau[0][0]) * float(dt)
+    xp, r = W.xp, W.k6
+    return [(copy_blocks, (W.D, W.U, W.Dm, W.Um, M.order, M.bsz)),
+            (add_body_jacobian, (t, xp, u, M, W, gh, gh * gh)),
+            (add_cable_stiffness, (t, xp, M, W, gh, gh * gh)),
+            (tree_factor, (W.Ds, W.Us, W.Yw, W.pivw, M.order, M.parent, M.bsz)),
+            (_mass_times, (W.Dm, W.Um, r, W.bv, M)),
+            (add_stiffness_force, (xp, r, M, W, gh)),
+            (add_body_force, (xp, r, M, W, gh)),
+            (tree_solve_factored, (W.Ds, W.Us, W.Yw, W.pivw, W.bv, M.order, M.parent, M.bsz)),
+            (_stage_increment, (xp, r, W.k1, M, W, gh))]
+
+
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def w_advance(t, x, u, dt, n, M, W, limits, tableau):
     """Advance x in place by n steps of size dt [s] of the Rosenbrock-W method ``tableau`` (e.g. :data:`ROS2`:
