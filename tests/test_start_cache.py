@@ -20,7 +20,7 @@ from scipy.interpolate import CubicSpline
 import laddermill_gym  # noqa: F401  (registers the ids)
 from laddermill_gym.envs import start_cache
 from laddermill_gym.envs.laddermill import op_cache
-from laddermill_gym.envs.rotorcraft.trim import craft_trim, untrimmed_craft
+from laddermill_gym.envs.rotorcraft.trim import craft_trim, trim_on_disk, untrimmed_craft
 from laddermill_gym.envs.task import scene_trim
 from laddermill_gym.ladder.scene import load_scene, options_key, options_kwargs
 from laddermill_gym.model import disk_cache
@@ -71,7 +71,9 @@ def test_the_wing_start_read_back_is_the_recomputation_bit_for_bit(cache):
 def test_the_craft_start_read_back_is_the_recomputation_bit_for_bit(cache):
     c, u = untrimmed_craft("roberts_flying_model")
     x_ref = c.trim(u[0])
+    assert not trim_on_disk("roberts_flying_model")  # what the kernel warm-up asks: nothing stored yet
     _, x1, u1 = craft_trim("roberts_flying_model")
+    assert trim_on_disk("roberts_flying_model") and not trim_on_disk("roberts_flying_model", wind_speed=9.0)
     craft_trim.cache_clear()
     _, x2, u2 = craft_trim("roberts_flying_model")
     assert len(list((cache / "craft_starts").glob("*.npz"))) == 1

@@ -21,7 +21,7 @@ import numpy as np
 
 from laddermill_gym.envs.laddermill import op_cache
 
-__all__ = ["WING_SOURCES", "CRAFT_SOURCES", "cached_start"]
+__all__ = ["WING_SOURCES", "CRAFT_SOURCES", "cached_start", "start_on_disk"]
 
 #: (folders, files) of the package whose source the wing's start runs: the scene readers, packing, the simulator,
 #: statics and kernels (tests/test_start_cache.py checks the modules it imports lie in these)
@@ -48,3 +48,14 @@ def cached_start(kind: str, label: str, inputs: tuple, sources: tuple, compute, 
     x, u = compute()
     op_cache.write_entry(path, key, {"x": np.asarray(x, dtype=np.float64), "u": np.asarray(u, dtype=np.float64)})
     return x, u
+
+
+def start_on_disk(kind: str, label: str, inputs: tuple, sources: tuple, skip: tuple = ()) -> bool:
+    """Whether :func:`cached_start` with these arguments would read its entry (whole, under its key) and compute
+    nothing; False when the cache is off or an input cannot be fingerprinted."""
+    try:
+        key = op_cache.entry_key(kind, *inputs, skip=skip, sources=sources)
+    except TypeError:
+        return False
+    data = op_cache.read_entry(op_cache.entry_path(kind, label, key), key)
+    return data is not None and set(data) == {"x", "u"}

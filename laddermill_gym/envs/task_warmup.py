@@ -148,17 +148,25 @@ def wing_calls(task_kwargs: dict) -> list:
     return [] if args is None else step_callees(args)
 
 
-def craft_calls(task_kwargs: dict) -> tuple[list, list]:
+def craft_calls(task_kwargs: dict) -> tuple[list, list, bool]:
     """:func:`step_callees` of ``CraftTask(**task_kwargs)`` (not the observation's: the craft observes through its
     right-hand side), taken from a task built around :func:`stand_in_craft_trim` (``craft_trim`` restored after),
     split into (those the craft's trim does not compile, those it does with the same types: the assembly and the
     right-hand side, and the bodies' load Jacobian, whose compile needs the craft's loads that the assembly
-    compiles)."""
+    compiles), and whether the first process reads its trim from the on-disk start cache
+    (:func:`~laddermill_gym.envs.rotorcraft.trim.trim_on_disk`: it then compiles none of them)."""
     from laddermill_gym.envs.rotorcraft import task as craft_task
+    from laddermill_gym.envs.rotorcraft.trim import trim_on_disk
     from laddermill_gym.kernels.rigid.body_jacobian import add_body_jacobian
     from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
 
-    trim, craft_task.craft_trim = craft_task.craft_trim, stand_in_craft_trim
+    asked = []
+
+    def recording_stand_in(*args, **kwargs):
+        asked.append((args, kwargs))
+        return stand_in_craft_trim(*args, **kwargs)
+
+    trim, craft_task.craft_trim = craft_task.craft_trim, recording_stand_in
     try:
         args = _step_arguments(craft_task, ("craft_step_observe_serial", "craft_step_observe_batch"),
                                lambda: craft_task.CraftTask(**task_kwargs))
@@ -166,7 +174,8 @@ def craft_calls(task_kwargs: dict) -> tuple[list, list]:
         craft_task.craft_trim = trim
     calls = [] if args is None else step_callees(args)[:-1]
     trims = (assemble3d, rhs3d, add_body_jacobian)
-    return [c for c in calls if c[0] not in trims], [c for c in calls if c[0] in trims]
+    on_disk = bool(asked) and trim_on_disk(*asked[0][0], **asked[0][1])
+    return [c for c in calls if c[0] not in trims], [c for c in calls if c[0] in trims], on_disk
 
 
 def await_on_disk(calls, limit_s: float) -> bool:
@@ -207,12 +216,14 @@ def compile_craft(task_kwargs: dict) -> None:
     replaced): first the step kernel's callees that the first process's trim does not compile
     (:func:`craft_calls`), then a wait (at most :data:`TRIM_WAIT_S`) until that trim has written the assembly (and
     with it the craft's loads) to numba's cache, then the rest of the callees, which load what the trim compiled
-    instead of compiling it a second time, then the task's own kernels."""
+    instead of compiling it a second time, then the task's own kernels. When the first process reads its trim
+    from the start cache it compiles none of them, and this one compiles them all without waiting."""
     from laddermill_gym.envs.rotorcraft import task as craft_task
 
-    own, trims = craft_calls(task_kwargs)
+    own, trims, trim_read = craft_calls(task_kwargs)
     compile_ahead(own)
-    await_on_disk(trims[:1], TRIM_WAIT_S)  # the assembly, with the craft's loads
+    if not trim_read:
+        await_on_disk(trims[:1], TRIM_WAIT_S)  # the assembly, with the craft's loads
     compile_ahead(trims)
     craft_task.craft_trim = stand_in_craft_trim
     _build_and_step(craft_task.CraftTask, task_kwargs)

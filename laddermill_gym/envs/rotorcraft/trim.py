@@ -9,11 +9,12 @@ from functools import lru_cache
 
 import numpy as np
 
-from laddermill_gym.envs.start_cache import CRAFT_SOURCES, cached_start
+from laddermill_gym.envs.start_cache import CRAFT_SOURCES, cached_start, start_on_disk
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT, CraftConfig, load_craft_config
 from laddermill_gym.rotorcraft.craft import Craft, load_craft
 
-__all__ = ["craft_config", "control_ranges", "trim_controls", "untrimmed_craft", "craft_trim", "trim_action"]
+__all__ = ["craft_config", "control_ranges", "trim_controls", "untrimmed_craft", "craft_trim", "trim_on_disk",
+           "trim_action"]
 
 
 @lru_cache(maxsize=8)
@@ -70,6 +71,14 @@ def craft_trim(craft: str = DEFAULT_CRAFT, wind_speed: float | None = None, coll
     x.setflags(write=False)
     u.setflags(write=False)
     return c, x, u
+
+
+def trim_on_disk(craft: str = DEFAULT_CRAFT, wind_speed: float | None = None, collective: float | None = None,
+                 physics_dt: float | None = None) -> bool:
+    """Whether :func:`craft_trim` with these arguments reads its trim from the on-disk start cache (and so compiles
+    no kernel of its own): the kernel warm-up's craft target (``envs/task_warmup.py``) then has nothing to wait for."""
+    c, u = untrimmed_craft(craft, wind_speed, collective, physics_dt)
+    return start_on_disk("craft_start", c.config.name, (c, u), CRAFT_SOURCES)
 
 
 def trim_action(craft: str = DEFAULT_CRAFT, collective: float | None = None) -> np.ndarray:
