@@ -2,12 +2,15 @@
 
 Why (issue 32 point 3): numba's default threading layer on Linux is OpenMP (GNU libgomp). By default libgomp's
 workers spin-wait at the end of a parallel region and between regions before they sleep. The env step calls one
-parallel kernel per control period with Python work around it, so on this 2-core machine, under load from other
+parallel kernel per control period with Python work around it, so on this 2-core machine, shared with other
 processes, the spinning worker takes a core from the thread that still has copies to step (or from the Python
-step). LadderChain-v0 at 8 copies with ``physics_step="ros34pw2"``, ``jacobian_every=4``, two threads, runs alternated
-at load 6.7-7.2 (CPU ms per vector step, wall env steps/s): libgomp's default 8.9 ms / 297 and 8.7 ms / 309;
-``OMP_WAIT_POLICY=passive`` 4.6 ms / 556; numba's ``workqueue`` layer 4.4 ms / 612; one thread 4.6 ms. The spin
-doubled the CPU of a step and halved its rate, and so hid every saving in the kernel (``jacobian_every``).
+step). ``laddermill bench-envs --envs LadderChain-v0 LadderMill-v2 --copies 8`` (two threads), three runs each
+alternated with the variable removed again after the import (libgomp's default), load 1.4-5.0, medians of CPU ms
+per env step (the process's CPU over its steps): LadderChain-v0 1.96 -> 1.29, with ``physics_step="ros34pw2"``
+0.94 -> 0.66; LadderMill-v2 2.04 -> 1.59, with ROS34PW2 1.07 -> 0.75; env steps/s 477 -> 494, 708 -> 1,008,
+340 -> 426, 673 -> 909. The spin also hid the saving of a kept Jacobian: LadderChain-v0 with ROS34PW2 (8 copies,
+two threads) at ``jacobian_every`` 1 / 4 ran 747 / 749 env steps/s before and 1,096 / 1,231 after (medians of
+three alternated runs, load 3.5).
 
 :func:`passive_openmp_wait` sets ``OMP_WAIT_POLICY=passive`` at ``import laddermill_gym``, before numba's OpenMP
 pool is started (libgomp reads it when it is loaded), unless the variable is already set: a user who wants the
