@@ -13,6 +13,10 @@ from laddermill_gym.kernels import cache_guard as _cache_guard
 
 _cache_guard.guard()  # before any kernel runs: numba's entries compiled from other sources are removed
 
+from laddermill_gym.kernels import thread_wait as _thread_wait  # noqa: E402
+
+_thread_wait.passive_openmp_wait()  # before numba's OpenMP pool starts: its workers sleep, not spin (issue 32)
+
 from laddermill_gym.model.params import AERO_COLUMNS  # noqa: E402, Assembly, WindParams, WingType
 from laddermill_gym.sim.simulator import IntegratorSettings, SimulationError, Simulator  # noqa: E402
 
