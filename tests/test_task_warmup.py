@@ -11,6 +11,7 @@ import json
 import os
 import subprocess
 import sys
+import warnings
 
 import numpy as np
 import pytest
@@ -128,3 +129,33 @@ def test_the_callees_compiled_ahead_are_the_step_kernels_own(tmp_path, env_id, l
     assert {"add_body_jacobian", "add_cable_stiffness", "tree_factor", "rigid3d_check"} <= set(out["names"])
     assert out["after"] == out["before"]  # no new specialisation: each is the one the step kernel compiled
     assert min(out["before"]) >= 1
+
+
+def _sleeper(procs: list):
+    """A warm-up whose process sleeps a minute (it stands for a compile in progress)."""
+    procs.append(subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"]))
+    return kernel_warmup.Warmup(procs[-1])
+
+
+def test_a_failed_construction_stops_its_warm_ups(monkeypatch):
+    # oracle: the operating system's view of the child processes (poll() gives an exit status once one is reaped)
+    from laddermill_gym.envs import task as wing_task
+    from laddermill_gym.envs.rotorcraft import task as craft_task
+
+    procs = []
+    monkeypatch.setattr(kernel_warmup, "start", lambda *a, **k: _sleeper(procs))
+    with pytest.raises(ValueError, match="physics_step = 'nope'"):
+        wing_task.WingTask(physics_step="nope")
+    with pytest.raises(ValueError, match="no_such_craft"):
+        craft_task.CraftTask(craft="no_such_craft")
+    assert len(procs) == 3 and all(p.poll() is not None for p in procs)  # the wing's two, the craft's one
+
+
+def test_a_failed_warm_up_is_named_in_a_warning():
+    failed = kernel_warmup.Warmup(subprocess.Popen([sys.executable, "-c", "raise SystemExit(3)"]))
+    with pytest.warns(RuntimeWarning, match="exited with code 3"):
+        assert failed.wait() == 3
+    fine = kernel_warmup.Warmup(subprocess.Popen([sys.executable, "-c", "pass"]))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert fine.wait() == 0 and fine.wait() == 0  # idempotent, silent

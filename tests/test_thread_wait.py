@@ -91,6 +91,7 @@ def test_libgomp_runs_under_the_policy(given, imported, reported):
         assert f"GOMP_SPINCOUNT = '{reported[1]}'" in out.stderr
 
 
+@pytest.mark.slow  # two fresh processes that compile the wing's batch kernels (about a minute)
 def test_a_vector_env_steps_to_the_same_bits_whatever_the_policy():
     digests = {p: _run(_STEPS, p).stdout.strip().splitlines()[-1] for p in (None, "active")}
     assert len(digests[None]) == 64 and digests[None] == digests["active"]

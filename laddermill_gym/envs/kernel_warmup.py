@@ -31,13 +31,15 @@ costs its time: this process then compiles what it still needs.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import pickle
 import select
 import subprocess
 import sys
+import warnings
 
-__all__ = ["SWITCH", "CHILD_MODULE", "Warmup", "enabled", "on_disk", "start"]
+__all__ = ["SWITCH", "CHILD_MODULE", "Warmup", "enabled", "on_disk", "start", "stopped_on_error"]
 
 #: the environment variable that switches the warm-up off (value ``off``)
 SWITCH = "LADDERMILL_KERNEL_WARMUP"
@@ -70,7 +72,8 @@ class Warmup:
         return False
 
     def wait(self) -> int | None:
-        """Wait for the process; its exit code (None if it had to be stopped)."""
+        """Wait for the process; its exit code (None if it had to be stopped). A process that failed or was stopped
+        costs only its time (this process compiles what it still needs) and is named in a RuntimeWarning."""
         if self.returncode is None and self.proc is not None:
             try:
                 self.returncode = self.proc.wait(timeout=WAIT_LIMIT_S)
@@ -80,7 +83,34 @@ class Warmup:
             if self.proc.stdout is not None:
                 self.proc.stdout.close()
             self.proc = None
+            if self.returncode != 0:
+                why = (f"was stopped after {WAIT_LIMIT_S:.0f} s" if self.returncode is None
+                       else f"exited with code {self.returncode}")
+                warnings.warn(f"the kernel warm-up process ({CHILD_MODULE}) {why}; this process compiles the "
+                              f"kernels it still needs ({SWITCH}=off skips the warm-up)", RuntimeWarning, stacklevel=2)
         return self.returncode
+
+    def stop(self) -> None:
+        """Stop the process now and reap it (its caller failed before needing it); idempotent."""
+        if self.proc is not None:
+            self.proc.kill()
+            self.proc.wait()
+            if self.proc.stdout is not None:
+                self.proc.stdout.close()
+            self.proc = None
+
+
+@contextlib.contextmanager
+def stopped_on_error(warmups):
+    """Run the block; if it raises, stop every warm-up of ``warmups`` (:class:`Warmup` or None) first, so a task
+    whose construction fails (a bad argument, a trim that does not converge) leaves no process compiling behind."""
+    try:
+        yield
+    except BaseException:
+        for warmup in warmups:
+            if warmup is not None:
+                warmup.stop()
+        raise
 
 
 def enabled(kernels) -> bool:

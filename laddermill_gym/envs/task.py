@@ -156,55 +156,56 @@ class WingTask(TaskCore):
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
                  parallel: bool | None = None, physics_step: str | None = None, jacobian_every: int = 1):
         task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
+        for name, v in (("control_dt", control_dt), ("episode_time", episode_time), ("wind_dt", wind_dt)):
+            positive(name, v, "s")
         # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py)
         kernels = (step_observe_batch, step_observe_serial)
         warmups = [kernel_warmup.start(target, task_kwargs, kernels, True)
                    for target in (WARMUP_TARGET, WARMUP_TAIL_TARGET)]
-        for name, v in (("control_dt", control_dt), ("episode_time", episode_time), ("wind_dt", wind_dt)):
-            positive(name, v, "s")
-        options = physics_scene_options(scene_options, physics_step, physics_dt, control_dt)
-        sc, x_trim, u_trim = scene_trim(str(scene), options_key(options))
-        asm = sc.assembly
-        if asm.dim != 3:
-            raise ValueError(f"scene {sc.name}: the environments need a 3D scene (dimension = {asm.dim})")
-        substeps_per_period(sc.name, sc.settings, control_dt)
-        self.disturbances = env_disturbances(disturbances)
-        self.scene, x_trim, u_trim, self.physics_step_note = _stable_step_scene(
-            str(scene), options, (sc, x_trim, u_trim), control_dt, self.disturbances, episode_time, wind_dt)
-        sc, asm = self.scene, self.scene.assembly
-        settings = (sc.settings if type(jacobian_every) is int and jacobian_every == 1  # True, 1.0: refused below
-                    else jacobian_settings(sc.settings, jacobian_every))
-        self.n_substeps = int(round(control_dt / sc.settings.dt))
-        self.control_dt = float(control_dt)
-        self.episode_time = float(episode_time)
-        self.n_steps_max = int(round(episode_time / control_dt))
-        self.wind_dt = float(wind_dt)
-        geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid
-        self.reward_config = config_from(reward, RewardConfig, "reward")
-        self.termination_config = config_from(termination, TerminationConfig, "termination")
-        self.x_trim, self.u_trim = x_trim, u_trim
-        nw = asm.n_wings
-        self.n_wings = nw
-        self.n_copies = int(n_copies)
-        self.parallel = default_parallel(self.n_copies, asm.state_size, parallel)
-        self._kernel = step_observe_batch if self.parallel else step_observe_serial
-        n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
-        self.batch = BatchSimulator(asm, self.n_copies, settings, n_modulation=max(2, n_mod),
-                                    n_grid=0 if geom is None else geom.floats)
-        B = self.n_copies
-        self.nominal = np.ascontiguousarray(x_trim[: B3_SIZE * nw].reshape(nw, B3_SIZE)[:, B3_POS: B3_POS + 3])
-        lay = sc.layout
-        self.below = np.array([lay.piece_elements[k][-1] for k in range(nw)], dtype=np.int64)
-        two_ended = sc.end is not None
-        self.ground = np.array([lay.piece_elements[0][0], lay.piece_elements[-1][-1] if two_ended else -1],
-                               dtype=np.int64)
-        self.obs_dim = N_OBS_PER_WING * nw
-        self.obs = np.zeros((B, self.obs_dim))
-        self.aux = np.zeros((B, N_AUX))
-        self._dx = np.zeros((B, asm.state_size))
-        self._nsteps = np.zeros(B, dtype=np.int64)
-        self.steps = np.zeros(B, dtype=np.int64)
-        self.obs_low, self.obs_high = observation_bounds(sc)
+        with kernel_warmup.stopped_on_error(warmups):  # a failed construction leaves no warm-up running
+            options = physics_scene_options(scene_options, physics_step, physics_dt, control_dt)
+            sc, x_trim, u_trim = scene_trim(str(scene), options_key(options))
+            asm = sc.assembly
+            if asm.dim != 3:
+                raise ValueError(f"scene {sc.name}: the environments need a 3D scene (dimension = {asm.dim})")
+            substeps_per_period(sc.name, sc.settings, control_dt)
+            self.disturbances = env_disturbances(disturbances)
+            self.scene, x_trim, u_trim, self.physics_step_note = _stable_step_scene(
+                str(scene), options, (sc, x_trim, u_trim), control_dt, self.disturbances, episode_time, wind_dt)
+            sc, asm = self.scene, self.scene.assembly
+            settings = (sc.settings if type(jacobian_every) is int and jacobian_every == 1  # True, 1.0: refused below
+                        else jacobian_settings(sc.settings, jacobian_every))
+            self.n_substeps = int(round(control_dt / sc.settings.dt))
+            self.control_dt = float(control_dt)
+            self.episode_time = float(episode_time)
+            self.n_steps_max = int(round(episode_time / control_dt))
+            self.wind_dt = float(wind_dt)
+            geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid
+            self.reward_config = config_from(reward, RewardConfig, "reward")
+            self.termination_config = config_from(termination, TerminationConfig, "termination")
+            self.x_trim, self.u_trim = x_trim, u_trim
+            nw = asm.n_wings
+            self.n_wings = nw
+            self.n_copies = int(n_copies)
+            self.parallel = default_parallel(self.n_copies, asm.state_size, parallel)
+            self._kernel = step_observe_batch if self.parallel else step_observe_serial
+            n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
+            self.batch = BatchSimulator(asm, self.n_copies, settings, n_modulation=max(2, n_mod),
+                                        n_grid=0 if geom is None else geom.floats)
+            B = self.n_copies
+            self.nominal = np.ascontiguousarray(x_trim[: B3_SIZE * nw].reshape(nw, B3_SIZE)[:, B3_POS: B3_POS + 3])
+            lay = sc.layout
+            self.below = np.array([lay.piece_elements[k][-1] for k in range(nw)], dtype=np.int64)
+            two_ended = sc.end is not None
+            self.ground = np.array([lay.piece_elements[0][0], lay.piece_elements[-1][-1] if two_ended else -1],
+                                   dtype=np.int64)
+            self.obs_dim = N_OBS_PER_WING * nw
+            self.obs = np.zeros((B, self.obs_dim))
+            self.aux = np.zeros((B, N_AUX))
+            self._dx = np.zeros((B, asm.state_size))
+            self._nsteps = np.zeros(B, dtype=np.int64)
+            self.steps = np.zeros(B, dtype=np.int64)
+            self.obs_low, self.obs_high = observation_bounds(sc)
         for warmup in warmups:  # before the first kernel call: load what they compiled from numba's cache
             if warmup is not None:
                 warmup.wait()

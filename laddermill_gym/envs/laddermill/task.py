@@ -120,40 +120,41 @@ class MillTask(TaskCore):
         self.n_substeps = substeps_per_period(sc.name, settings, self.control_dt, control_dt)
         self.n_steps_max = int(round(self.episode_time / self.control_dt))
         self.op, warmup = self._operating_point_warmup(operating_point, str(scene), options, task_kwargs)
-        rp = self.reward_config.reference_power_W
-        self.p_ref = self.op.reference_power_W if rp is None else float(rp)
-        self.generator_torque = bool(generator_torque)
-        self.cable_speed_command = bool(cable_speed_command)
-        asm = self._assembly()
-        self.n_wings = n = asm.n_wings
-        self._make_batch(B, asm, settings, parallel, (step_observe_batch, step_observe_serial))
-        self.loop_points = loop_points(self.op, asm)
-        check_turbulence_cover(self.disturbances, self.loop_points)
-        self.xoff = asm.body_state_size
-        lay = sc.layout
-        self.below = np.array([lay.piece_elements[k][-1] for k in range(n)], dtype=np.int64)
-        self.ground = np.array([lay.piece_elements[0][0], lay.piece_elements[-1][-1]], dtype=np.int64)
-        self._zero_nominal = np.zeros((n, 3))  # the kernel writes absolute positions; offsets: _compose
-        self.actions = SlotActionMap(asm, resolve_slot_groups(groups, n, n_bands), surfaces, self.u_op,
-                                     self.station_half_range, authority)
-        self.n_actions = self.actions.n_actions
-        self.obs_dim = N_OBS_PER_SLOT * n + N_STATION_OBS
-        self.slot_obs = np.zeros((B, N_OBS_PER_SLOT * n))
-        self.raw_obs = np.zeros((B, self.obs_dim))
-        self.obs = np.zeros((B, self.obs_dim))
-        self.aux = np.zeros((B, N_AUX))
-        self.power = np.zeros(B)
-        self.mechanical_power = np.zeros(B)
-        self.cable_speed = np.zeros(B)
-        self.energy_start = np.zeros(B)
-        self.last_action = np.zeros((B, self.n_actions))
-        max_speed = asm.station.piece_length / dt
-        self.obs_low, self.obs_high = mill_observation_bounds(sc, max_speed)
-        self._limits()
-        self._rotation_op = rotations_from_quaternions(
-            self.op.state[: B3_SIZE * n].reshape(n, B3_SIZE)[:, B3_QUAT: B3_QUAT + 4])
-        self.batch.states[:] = self.op.state
-        self.batch.controls[:] = self.u_op
+        with kernel_warmup.stopped_on_error((warmup,)):  # a failed construction leaves no warm-up running
+            rp = self.reward_config.reference_power_W
+            self.p_ref = self.op.reference_power_W if rp is None else float(rp)
+            self.generator_torque = bool(generator_torque)
+            self.cable_speed_command = bool(cable_speed_command)
+            asm = self._assembly()
+            self.n_wings = n = asm.n_wings
+            self._make_batch(B, asm, settings, parallel, (step_observe_batch, step_observe_serial))
+            self.loop_points = loop_points(self.op, asm)
+            check_turbulence_cover(self.disturbances, self.loop_points)
+            self.xoff = asm.body_state_size
+            lay = sc.layout
+            self.below = np.array([lay.piece_elements[k][-1] for k in range(n)], dtype=np.int64)
+            self.ground = np.array([lay.piece_elements[0][0], lay.piece_elements[-1][-1]], dtype=np.int64)
+            self._zero_nominal = np.zeros((n, 3))  # the kernel writes absolute positions; offsets: _compose
+            self.actions = SlotActionMap(asm, resolve_slot_groups(groups, n, n_bands), surfaces, self.u_op,
+                                         self.station_half_range, authority)
+            self.n_actions = self.actions.n_actions
+            self.obs_dim = N_OBS_PER_SLOT * n + N_STATION_OBS
+            self.slot_obs = np.zeros((B, N_OBS_PER_SLOT * n))
+            self.raw_obs = np.zeros((B, self.obs_dim))
+            self.obs = np.zeros((B, self.obs_dim))
+            self.aux = np.zeros((B, N_AUX))
+            self.power = np.zeros(B)
+            self.mechanical_power = np.zeros(B)
+            self.cable_speed = np.zeros(B)
+            self.energy_start = np.zeros(B)
+            self.last_action = np.zeros((B, self.n_actions))
+            max_speed = asm.station.piece_length / dt
+            self.obs_low, self.obs_high = mill_observation_bounds(sc, max_speed)
+            self._limits()
+            self._rotation_op = rotations_from_quaternions(
+                self.op.state[: B3_SIZE * n].reshape(n, B3_SIZE)[:, B3_QUAT: B3_QUAT + 4])
+            self.batch.states[:] = self.op.state
+            self.batch.controls[:] = self.u_op
         if warmup is not None:  # before the first kernel call: load what it compiled from numba's cache
             warmup.wait()
 
@@ -170,6 +171,9 @@ class MillTask(TaskCore):
         SEARCH_HOOK[0] = lambda sc, opts: kernel_warmup.before_search(warmup, sc, opts)
         try:
             return self._operating_point(given, scene, options), warmup
+        except BaseException:
+            warmup.stop()  # the search failed: nothing will wait for the kernels
+            raise
         finally:
             SEARCH_HOOK[0] = None
 

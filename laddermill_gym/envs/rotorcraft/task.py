@@ -125,20 +125,21 @@ class CraftTask(TaskCore):
         # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py)
         warmup = kernel_warmup.start(WARMUP_TARGET, task_kwargs,
                                      (craft_step_observe_batch, craft_step_observe_serial), True)
-        B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
-                                   initial_noise)
-        if wind_speed is not None:
-            wind_speed = positive("wind_speed", wind_speed, "m/s")
-        if physics_dt is not None:
-            physics_dt = positive("physics_dt", physics_dt, "s")
-        self.craft, self.x_trim, self.u_trim = craft_trim(str(craft), wind_speed, collective, physics_dt)
-        cfg = self.craft.config
-        self.n_substeps = whole_multiple(self.control_dt, cfg.settings.dt, control_dt)
-        # the W step's iteration matrix kept for jacobian_every physics steps (1: every step, the registered bits)
-        self._settings = (cfg.settings if type(jacobian_every) is int and jacobian_every == 1  # True, 1.0: refused
-                          else jacobian_settings(cfg.settings, jacobian_every))
-        self.n_steps_max = int(round(self.episode_time / self.control_dt))
-        self._build_batch(B, parallel)
+        with kernel_warmup.stopped_on_error((warmup,)):  # a failed construction leaves no warm-up running
+            B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
+                                       initial_noise)
+            if wind_speed is not None:
+                wind_speed = positive("wind_speed", wind_speed, "m/s")
+            if physics_dt is not None:
+                physics_dt = positive("physics_dt", physics_dt, "s")
+            self.craft, self.x_trim, self.u_trim = craft_trim(str(craft), wind_speed, collective, physics_dt)
+            cfg = self.craft.config
+            self.n_substeps = whole_multiple(self.control_dt, cfg.settings.dt, control_dt)
+            # the W step's iteration matrix kept for jacobian_every physics steps (1: every step, the registered bits)
+            self._settings = (cfg.settings if type(jacobian_every) is int and jacobian_every == 1  # True, 1.0: refused
+                              else jacobian_settings(cfg.settings, jacobian_every))
+            self.n_steps_max = int(round(self.episode_time / self.control_dt))
+            self._build_batch(B, parallel)
         if warmup is not None:  # before the first kernel call: load what it compiled from numba's cache
             warmup.wait()
         self._references()
