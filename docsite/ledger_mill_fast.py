@@ -86,7 +86,9 @@ MILL_FAST = Covered(
             'the loop drifts downwind, slackens and relaxes.** takes the v1 mill from its periodic motion at 2 m/s '
             'to 4 m/s over 100 s and prints, every 25 s, tensions and the downwind position x of seven slots (x '
             'falls as the loop leans downwind, the wind blows to -x):',
-            'the loop leans downwind, slowly and steadily (slot 40 from -830 to -1,393 m, t - t1 = 25 to 350 s), '
+            # the sentence's figures are 13 rows (over 200 printed numbers) apart: one snippet per row's figures
+            'the loop leans downwind, slowly and steadily (slot 40 from -830', 'to -1,393 m,', 't - t1 = 25',
+            'to 350 s),',
             'every tension falls with it, until the descending leg goes slack in its middle and lower part (the '
             'smallest tension 3.2 kN at element 68 at 225 s, then 0.0-0.4 kN at elements 60-96;',
             'the first element down from 122 to 22 kN) and wings tumble;',
