@@ -153,9 +153,7 @@ def next_kink(tc, te, t, dt, j, tmod, ms, md):
     return te
 
 
-# _nrt=False (it allocates nothing): no reference counting of the ~60 arrays of the model and workspace it
-# passes on, less code for numba to lower and LLVM to optimise at a cold start (issue 32); the same bits
-@njit(cache=True, error_model="numpy", _nrt=False)
+@njit(cache=True, error_model="numpy")
 def advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks):
     """n fixed steps of dt [s] from t [s] (RK4 when ``tableau`` is None, else that Rosenbrock-W method) stepping
     onto the modulation's kinks as ``breaks`` says (``BREAKS_*``). Runs of plain steps go through

@@ -110,9 +110,7 @@ def craft_step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limi
                                  tether_end, obs, aux, status, done)
 
 
-# _nrt=False (it allocates nothing): no reference counting of the ~60 arrays of the model and workspace it
-# passes on, less code for numba to lower and LLVM to optimise at a cold start (issue 32); the same bits
-@njit(cache=True, error_model="numpy", _nrt=False)
+@njit(cache=True, error_model="numpy")
 def craft_step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
                               tether_end, obs, aux, status, done):
     """:func:`craft_step_observe_batch` on one thread: for single environments and small batches, where starting
