@@ -237,6 +237,8 @@ def measure_long(names: list[str]) -> dict:
     found = {}
     for name in names:
         t0, printed, status, errors = time.perf_counter(), [], [], []
+        for path in LONG[name].reads:  # a file an earlier run left must not stand in for this run's
+            (ROOT / path).unlink(missing_ok=True)
         for command in LONG[name].command.split(" && "):
             argv, env = argv_env(command)
             proc = subprocess.run([sys.executable, "-m", *argv], cwd=ROOT, env=env, capture_output=True, text=True)
@@ -244,6 +246,7 @@ def measure_long(names: list[str]) -> dict:
             status.append(proc.returncode)
             errors.append(proc.stderr[-2000:] if proc.returncode else "")
         printed += [(ROOT / path).read_text() for path in LONG[name].reads if (ROOT / path).exists()]
+        errors += [f"{path}: not written" for path in LONG[name].reads if not (ROOT / path).exists()]
         found[name] = {"printed": "\n".join(printed), "exit": status, "stderr": errors,
                        "seconds": round(time.perf_counter() - t0)}
         print(f"{name}: exit {status}, {found[name]['seconds']} s", flush=True)

@@ -324,9 +324,13 @@ def pages_differences(measured: dict) -> list[str]:
 
 def long_differences(long: dict) -> list[str]:
     """Every Printed snippet of a long group in ``long`` (``figures["long"]``: {group: {"printed": output}}) that
-    quotes a number its command did not print; [] when all agree or nothing was run."""
-    return [line for name, entry in LEDGER.items()
-            for line in printed_differences(name, getattr(entry, "printed", ()), long)]
+    quotes a number its command did not print, and every group whose command crashed (an exit other than 0, or 1
+    for a study reporting a failed case) or did not write a file it reads; [] when all agree or nothing was run."""
+    failed = [f"--long {name}: exit {g['exit']}, {[e for e in g.get('stderr', ()) if e]}"
+              for name, g in long.items() if any(code not in (0, 1) for code in g.get("exit", ()))
+              or any(str(e).endswith(": not written") for e in g.get("stderr", ()))]
+    return failed + [line for name, entry in LEDGER.items()
+                     for line in printed_differences(name, getattr(entry, "printed", ()), long)]
 
 
 def _agrees(quoted: str | None, want: str) -> bool:

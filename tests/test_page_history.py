@@ -105,3 +105,14 @@ def test_a_long_run_names_a_changed_figure():
     bad = long_differences({"chain_step_01": {"printed": good.replace("0.8103", "0.9103")}})
     assert len(bad) == 1 and "learned_mill.md" in bad[0] and "0.8103" in bad[0]
     assert long_differences({}) == []
+
+
+def test_a_crashed_or_silent_long_run_is_named_not_compared(tmp_path):
+    """A command that crashed (exit 2: an argument error; a numba TypingError exits 1 with no output) or did not
+    write the file the group reads is named whatever the page says; a study's exit 1 with its output counts."""
+    good = "ppo_chain 6000.1 300.0 0.8103 236273.0 -\nlqr:central 6001.2 300.0 0.8052 237510.0 -"
+    assert long_differences({"chain_step_01": {"printed": good, "exit": [1], "stderr": [""]}}) == []
+    crashed = long_differences({"chain_step_01": {"printed": good, "exit": [2], "stderr": ["usage: ..."]}})
+    assert len(crashed) == 1 and "chain_step_01" in crashed[0] and "exit [2]" in crashed[0]
+    unwritten = {"printed": "", "exit": [1], "stderr": ["", "results/long/x/gust_bench.csv: not written"]}
+    assert any("not written" in line for line in long_differences({"gusts_v1_rotorcraft": unwritten}))
