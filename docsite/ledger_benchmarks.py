@@ -157,9 +157,10 @@ BENCHMARKS = Covered(
         '146.3 s wall, 109.7 s CPU, 74 functions; warm 86.1 s wall, 47.6 s CPU: its operating point, computed in '
         'every process and cached nowhere, was most of it (now kept on disk: "LadderMill: the operating point on '
         'disk" below).',
-        'Paired again later on a quieter machine (load 2-3), the first line of (one cold start each, c5200bb then'
-        ' d5da070): TetheredWing-v0 67.0 -> 56.7 s CPU (69.6 -> 57.4 s wall), 92 -> 67 functions compiled; '
-        'Rotorcraft-v0 67.4 -> 52.6 s CPU (75.0 -> 80.2 s wall, the load rising), 96 -> 73 functions.',
+        "On 2026-11-30 the warm-ups compile the step kernel's callees ahead (the wing's in two processes, from both "
+        'ends of the list: ). , caches empty, cfa815b and the final code alternated twice (load 1.3-1.6): '
+        "TetheredWing-v0 39.7 / 38.0 -> 33.0 / 33.8 s wall (warm-ups' CPU 37.9 / 36.9 -> 39.0 / 39.1 s), "
+        'Rotorcraft-v0 32.7 / 34.1 -> 29.0 / 28.9 s; warm 0.89-1.02 s. 20 s is still not met.',
         "The 20 s target is not met, and not reachable this way. numba links every callee's code into each "
         'separately compiled function and optimises and generates code for all of it again, so the cost follows '
         'the number of nested entry points times the size of what they hold. One cold TetheredWing-v0 start '
