@@ -28,6 +28,9 @@ import torch
 from stable_baselines3.common.policies import ActorCriticPolicy
 from torch import nn
 
+from laddermill_gym.control.lqr_base import lqr_base_actions, register_lqr_base, set_lqr_base
+from laddermill_gym.control.residual_sac import ResidualSACPolicy
+
 __all__ = ["ResidualPolicy", "POLICIES", "policy_class"]
 
 
@@ -49,10 +52,8 @@ class ResidualPolicy(ActorCriticPolicy):
     def _build(self, lr_schedule) -> None:
         super()._build(lr_schedule)
         n_obs, n_act = self.observation_space.shape[0], self.action_space.shape[0]
-        f64, nw = dict(dtype=torch.float64), n_act // 3  # 3 controls per wing (model.params.N_CONTROLS)
-        self.register_buffer("lqr_gains", torch.zeros((nw, 2, 6), **f64))  # LQRController's arguments
-        for name, width in (("lqr_u_trim", 3), ("lqr_trim_attitude", 2), ("lqr_mid", 3), ("lqr_half_range", 3)):
-            self.register_buffer(name, torch.ones((nw, width), **f64))
+        f64 = dict(dtype=torch.float64)
+        register_lqr_base(self, n_act)  # the LQR's arguments, float64 buffers (control/lqr_base.py)
         self.register_buffer("obs_mean", torch.zeros(n_obs, **f64))
         self.register_buffer("obs_std", torch.ones(n_obs, **f64))
         self.register_buffer("clip_obs", torch.tensor(100.0, **f64))  # [-] as warm_start.CLIP_OBS (set there)
@@ -81,15 +82,7 @@ class ResidualPolicy(ActorCriticPolicy):
 
     def _lqr(self, raw: torch.Tensor) -> torch.Tensor:
         """The LQR's unclipped float64 actions of raw observations, by the LQR's code (no gradient)."""
-        from laddermill_gym.control.base import actions_from_controls
-        from laddermill_gym.control.lqr import LQRController
-
-        arrays = [getattr(self, f"lqr_{n}").cpu().numpy() for n in ("gains", "u_trim", "trim_attitude", "mid",
-                                                                     "half_range")]
-        ctrl = LQRController(*arrays, action_dtype=np.float64)
-        obs = raw.detach().cpu().numpy()
-        a = actions_from_controls(ctrl.controls(obs), ctrl.mid, ctrl.half_range).reshape(len(obs), -1)
-        return torch.as_tensor(a, dtype=torch.float64)
+        return lqr_base_actions(self, raw)
 
     def forward(self, obs: torch.Tensor, deterministic: bool = False):
         raw, z = self._normalised(obs)
@@ -116,23 +109,17 @@ class ResidualPolicy(ActorCriticPolicy):
         """The fixed base, an :class:`~laddermill_gym.control.lqr.LQRController` ``lqr`` (its gains, trim and
         ranges), and the normalisation of the residual's and the critic's input (mean, variance of the raw
         observation, clip). ValueError for another controller or another number of wings."""
-        from laddermill_gym.control.lqr import LQRController
-
-        if not isinstance(lqr, LQRController) or lqr.gains.shape != tuple(self.lqr_gains.shape):
-            raise ValueError(f"ResidualPolicy.set_base: needs the LQRController of {self.lqr_gains.shape[0]} "
-                             f"wing(s) (gains {tuple(self.lqr_gains.shape)}), got {type(lqr).__name__} "
-                             f"{getattr(getattr(lqr, 'gains', None), 'shape', '')}")
+        set_lqr_base(self, lqr, "ResidualPolicy")
         with torch.no_grad():
-            for name, value in (("lqr_gains", lqr.gains), ("lqr_u_trim", lqr.u_trim),
-                                ("lqr_trim_attitude", lqr.trim_attitude), ("lqr_mid", lqr.mid),
-                                ("lqr_half_range", lqr.half_range), ("obs_mean", obs_mean),
+            for name, value in (("obs_mean", obs_mean),
                                 ("obs_std", np.sqrt(np.asarray(obs_var, dtype=np.float64) + 1e-8)),
                                 ("clip_obs", clip_obs)):
                 getattr(self, name).copy_(torch.as_tensor(np.asarray(value, dtype=np.float64)))
 
 
-#: Policy names a training config's ``policy`` may give: SB3's default and this module's.
-POLICIES = {"MlpPolicy": "MlpPolicy", "ResidualPolicy": ResidualPolicy}
+#: Policy names a training config's ``policy`` may give: SB3's default, this module's (PPO) and SAC's residual
+#: policy (control/residual_sac.py).
+POLICIES = {"MlpPolicy": "MlpPolicy", "ResidualPolicy": ResidualPolicy, "ResidualSACPolicy": ResidualSACPolicy}
 
 
 def policy_class(name: str):

@@ -82,7 +82,8 @@ class RLConfig:
     hyperparameters : keyword arguments of the SB3 algorithm
     policy_kwargs : SB3 ``policy_kwargs`` (e.g. net_arch, log_std_init)
     init_from : None, or a controller spec (``lqr``, ``lqr:<config>``) the linear actor of a PPO policy starts at
-    policy : ``MlpPolicy`` (SB3's) or ``ResidualPolicy`` (control/residual_policy.py: the controller plus a residual)
+    policy : ``MlpPolicy`` (SB3's), ``ResidualPolicy`` (control/residual_policy.py: the controller plus a residual,
+        PPO) or ``ResidualSACPolicy`` (control/residual_sac.py: the same for SAC)
         (:mod:`laddermill_gym.control.warm_start`; the observation statistics are then held fixed)
     critic_warmup, validation : None, or the optional phases of :mod:`laddermill_gym.control.rl_phases`
     """
@@ -225,8 +226,8 @@ def _read_policy_kwargs(s: Section, algo: str, policy_name: str = "MlpPolicy") -
     else:
         from stable_baselines3.common.policies import ActorCriticPolicy as policy
     known = set(inspect.signature(policy).parameters) - {"observation_space", "action_space", "lr_schedule"}
-    if policy_name == "ResidualPolicy":
-        known.add("residual_limit")  # control/residual_policy.py's own argument
+    if policy_name in ("ResidualPolicy", "ResidualSACPolicy"):
+        known.add("residual_limit")  # control/residual_policy.py's and residual_sac.py's own argument
     for key, value in raw.items():
         if key not in known:
             raise pk.error(key, value, f"not an argument of {policy.__name__} (known: {sorted(known)})")
@@ -346,7 +347,7 @@ def load_rl_config(path: str | Path) -> RLConfig:
                                      why="each evaluation runs them all")
     ev.done()
     hyper = _read_hyperparameters(s, algo, n_envs, cfg["total_timesteps"])
-    cfg["policy"] = s.text("policy", "MlpPolicy", choices=("MlpPolicy", "ResidualPolicy"))
+    cfg["policy"] = s.text("policy", "MlpPolicy", choices=("MlpPolicy", "ResidualPolicy", "ResidualSACPolicy"))
     pk = _read_policy_kwargs(s, algo, cfg["policy"])
     init_from = read_init_from(s, algo, pk, cfg["normalize_observations"], cfg["policy"])
     phases = dict(critic_warmup=read_critic_warmup(s, init_from), validation=read_validation(s))

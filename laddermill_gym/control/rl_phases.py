@@ -23,8 +23,8 @@ from typing import Any
 from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_dict
 from laddermill_gym.model.configio import ConfigError, Section
 
-__all__ = ["check_disturbances", "DISTURBANCE_BOUNDS", "GRID_EXTENT", "CriticWarmup", "ValidationSet", "Validation",
-           "Selection", "read_init_from", "read_critic_warmup", "read_validation"]
+__all__ = ["check_disturbances", "DISTURBANCE_BOUNDS", "GRID_EXTENT", "RESIDUAL_ALGORITHM", "CriticWarmup",
+           "ValidationSet", "Validation", "Selection", "read_init_from", "read_critic_warmup", "read_validation"]
 
 
 @dataclass(frozen=True)
@@ -114,22 +114,29 @@ def check_disturbances(s: Section) -> list:
     return list(disturbances)
 
 
+#: The residual policies (the controller plus a learned residual) and the algorithm each is written for:
+#: control/residual_policy.py (PPO), control/residual_sac.py (SAC)
+RESIDUAL_ALGORITHM = {"ResidualPolicy": "PPO", "ResidualSACPolicy": "SAC"}
+
+
 def read_init_from(s: Section, algo: str, policy_kwargs: dict, normalized: bool,
                    policy: str = "MlpPolicy") -> str | None:
     """``init_from``: absent, or ``lqr`` / ``lqr:<config>`` for a PPO with a linear actor (``net_arch.pi: []``)
     and normalised observations (control/warm_start.py), or for a PPO with ``policy: ResidualPolicy`` and raw
-    observations (``normalize_observations: false``: the policy normalises; control/residual_policy.py)."""
+    observations (``normalize_observations: false``: the policy normalises; control/residual_policy.py), or for a
+    SAC with ``policy: ResidualSACPolicy`` and raw observations (control/residual_sac.py)."""
     spec = s.raw("init_from", None)
     if spec is None:
-        if policy == "ResidualPolicy":
+        if policy in RESIDUAL_ALGORITHM:
             raise s.error("policy", policy, "needs init_from (the controller the residual is added to)")
         return None
     if not (isinstance(spec, str) and (spec == "lqr" or spec.startswith("lqr:"))):
         raise s.error("init_from", spec, "must be 'lqr' or 'lqr:<config>' (the controller the actor starts at)")
-    if policy == "ResidualPolicy":
-        if algo != "PPO" or normalized:
-            raise s.error("init_from", spec, f"with policy: ResidualPolicy needs algorithm: PPO (got {algo}) and "
-                          f"normalize_observations: false (got {normalized}): the policy normalises itself")
+    if policy in RESIDUAL_ALGORITHM:
+        if algo != RESIDUAL_ALGORITHM[policy] or normalized:
+            raise s.error("init_from", spec, f"with policy: {policy} needs algorithm: {RESIDUAL_ALGORITHM[policy]} "
+                          f"(got {algo}) and normalize_observations: false (got {normalized}): the policy "
+                          f"normalises itself")
         return spec
     arch = policy_kwargs.get("net_arch")
     if algo != "PPO" or not normalized or not (isinstance(arch, dict) and arch.get("pi") == []):

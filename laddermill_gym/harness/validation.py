@@ -28,13 +28,14 @@ VALIDATION_FIELDS = ("steps", "minutes", "survived", "episodes", "rms_lateral_m"
 
 def freeze_actor(model, frozen: bool) -> None:
     """Make the actor of ``model`` (an SB3 PPO: ``policy.action_net``, ``policy.log_std`` and, when it has hidden
-    layers, ``mlp_extractor.policy_net``) need no gradient (``frozen``) or need one again."""
+    layers, ``mlp_extractor.policy_net``; a residual policy: its ``actor_parameters()``, SAC's included) need no
+    gradient (``frozen``) or need one again."""
     policy = model.policy
-    params = list(policy.action_net.parameters()) + list(policy.mlp_extractor.policy_net.parameters())
-    if hasattr(policy, "actor_parameters"):  # control/residual_policy.py: its skip layer too
+    if hasattr(policy, "actor_parameters"):  # control/residual_policy.py (its skip layer too), residual_sac.py
         params = policy.actor_parameters()
-    elif hasattr(policy, "log_std"):
-        params.append(policy.log_std)
+    else:
+        params = list(policy.action_net.parameters()) + list(policy.mlp_extractor.policy_net.parameters())
+        params += [policy.log_std] if hasattr(policy, "log_std") else []
     for p in params:
         p.requires_grad_(not frozen)
 

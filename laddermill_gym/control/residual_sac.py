@@ -1,0 +1,165 @@
+"""A SAC policy whose actor starts exactly at a fixed linear controller (``policy: ResidualSACPolicy``).
+
+SAC's actor draws a pre-squash action u ~ N(mean(o), exp(log_std(o))^2) and acts a = tanh(u) (SB3's
+``SquashedDiagGaussianDistribution``; its deterministic action is tanh(mean)). Here
+
+mean(o) = atanh(clip(a_lqr(o), -1 + EPS, 1 - EPS))  +  r(z),   r(z) = skip(z) + mu(mlp(z)),
+z = clip((o - m) / s, -CLIP_OBS, CLIP_OBS)
+
+* a_lqr(o) is the LQR's unclipped action of the RAW observation, by the LQR's own code on float64 buffers
+  (:mod:`laddermill_gym.control.lqr_base`, shared with PPO's
+  :class:`~laddermill_gym.control.residual_policy.ResidualPolicy`), never trained. Clipping it to +-(1 - EPS) is the
+  LQR's own clip to [-1, 1] (EPS = :data:`BASE_EPS` keeps atanh finite); the atanh, the residual's sum and the tanh
+  are done in float64, so at r = 0 the deterministic action is tanh(atanh(a)) = a to float64 rounding (about
+  1e-16), then cast to float32 as the env's Box: the LQR's float32 action, a saturated control included
+  (1 - EPS rounds to 1.0 in float32);
+* skip (a linear layer) and mu (SB3's last actor layer after ``net_arch`` hidden layers) see the normalised
+  observation z (statistics of the LQR's rollouts, held in the policy's features extractor, so no
+  ``VecNormalize``) and start at zero: the untrained actor's mean is the LQR's, exactly;
+* with ``policy_kwargs.residual_limit: L`` (0 < L <= 2) the residual passes through L tanh(r / L), as
+  :class:`~laddermill_gym.control.residual_policy.ResidualPolicy`'s: still exactly 0 at the start, slope 1 there,
+  and |mean - atanh(a_lqr)| <= L; tanh is 1-Lipschitz, so the deterministic action stays within L of the LQR's
+  (a fraction L of each control's half range);
+* log_std(o) is SB3's linear layer with its weights zeroed and its bias ``log_std_init`` (``policy_kwargs``): the
+  start's exploration noise is exp(log_std_init) in the pre-squash space, the same everywhere;
+* the critics (SB3's ``ContinuousCritic``, ``n_critics`` and their targets) see z and the action.
+
+SB3 rescales actions between the policy's [-1, 1] and the action space's bounds; the environments' action space
+is [-1, 1] itself, where that map is the identity, so :class:`ResidualSACPolicy` skips it (SB3's float32
+arithmetic -1 + (a + 1) would round the action by up to 6e-8) and refuses another action space.
+
+A limit of the construction (inherent in SAC's squashing): where the LQR saturates a control, the pre-squash mean
+is atanh(1 - EPS) = 10.7 and the action's slope in r is 1 - a^2 = 2e-9, so the residual cannot pull a saturated
+control back quickly; it acts where the LQR is inside its range.
+
+The buffers are part of the state dict: SB3's zip format saves them and ``SAC.load`` imports this class by name.
+:func:`~laddermill_gym.control.warm_start.start_residual` sets them (``init_from: lqr`` with
+``policy: ResidualSACPolicy``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import torch
+from gymnasium import spaces
+from stable_baselines3.common.torch_layers import BaseFeaturesExtractor
+from stable_baselines3.sac.policies import LOG_STD_MAX, LOG_STD_MIN, Actor, SACPolicy
+from torch import nn
+
+from laddermill_gym.control.lqr_base import lqr_base_actions, register_lqr_base, set_lqr_base
+
+__all__ = ["ResidualSACPolicy", "ResidualActor", "NormalisedObservation", "BASE_EPS"]
+
+#: [-] the base action's margin from the clip before atanh: atanh(1 - 2^-30) = 10.7; 1 - 2^-30 rounds to 1.0 in
+#: float32 (anything below 2^-25 does), so a saturated LQR control is reproduced exactly
+BASE_EPS = 2.0 ** -30
+
+
+class NormalisedObservation(BaseFeaturesExtractor):
+    """z = clip((o - m) / s, -c, c) in float64, returned as float32 (features of the actor's residual and the
+    critics): m, s (obs_dim,) and c held as float64 buffers (set by :meth:`ResidualSACPolicy.set_base`)."""
+
+    def __init__(self, observation_space: spaces.Box) -> None:
+        super().__init__(observation_space, int(observation_space.shape[0]))
+        n, f64 = int(observation_space.shape[0]), dict(dtype=torch.float64)
+        self.register_buffer("obs_mean", torch.zeros(n, **f64))
+        self.register_buffer("obs_std", torch.ones(n, **f64))
+        self.register_buffer("clip_obs", torch.tensor(100.0, **f64))  # [-] as warm_start.CLIP_OBS (set there)
+
+    def forward(self, obs: torch.Tensor) -> torch.Tensor:
+        z = (obs.to(torch.float64) - self.obs_mean) / self.obs_std
+        return z.clamp(-self.clip_obs, self.clip_obs).to(torch.float32)
+
+    def set_statistics(self, mean: np.ndarray, var: np.ndarray, clip_obs: float) -> None:
+        """Mean and variance (obs_dim,) of the raw observation and the clip [-] of the normalised one."""
+        with torch.no_grad():
+            self.obs_mean.copy_(torch.as_tensor(np.asarray(mean, dtype=np.float64)))
+            self.obs_std.copy_(torch.as_tensor(np.sqrt(np.asarray(var, dtype=np.float64) + 1e-8)))
+            self.clip_obs.fill_(float(clip_obs))
+
+
+class ResidualActor(Actor):
+    """SB3's SAC ``Actor`` whose pre-squash mean is the LQR's atanh-ed action plus a zero-started residual
+    (module docstring). Needs SB3's unstructured noise (``use_sde: false``)."""
+
+    def __init__(self, *args, residual_limit: float | None = None, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.residual_limit = residual_limit
+        if self.use_sde:
+            raise ValueError("ResidualSACPolicy: use_sde must be false (the residual actor uses SAC's own noise)")
+        n_obs, n_act = self.observation_space.shape[0], self.action_space.shape[0]
+        register_lqr_base(self, n_act)
+        self.skip_net = nn.Linear(n_obs, n_act)
+        for layer in (self.skip_net, self.mu):
+            nn.init.zeros_(layer.weight)
+            nn.init.zeros_(layer.bias)
+        nn.init.zeros_(self.log_std.weight)
+        nn.init.constant_(self.log_std.bias, self.log_std_init)
+
+    def get_action_dist_params(self, obs: torch.Tensor):
+        """(pre-squash mean (N, n_act) float64, log std (N, n_act) float64, {}) of raw observations ``obs``."""
+        z = self.extract_features(obs, self.features_extractor)
+        latent = self.latent_pi(z)
+        residual = (self.mu(latent) + self.skip_net(z)).to(torch.float64)
+        if self.residual_limit is not None:  # L tanh(r / L): within +-L, tanh(0) = 0 exactly
+            residual = self.residual_limit * torch.tanh(residual / self.residual_limit)
+        base = lqr_base_actions(self, obs.to(torch.float64)).clamp(-1.0 + BASE_EPS, 1.0 - BASE_EPS)
+        log_std = torch.clamp(self.log_std(latent), LOG_STD_MIN, LOG_STD_MAX).to(torch.float64)
+        return torch.atanh(base) + residual, log_std, {}
+
+    def forward(self, obs: torch.Tensor, deterministic: bool = False) -> torch.Tensor:
+        return super().forward(obs, deterministic).to(torch.float32)
+
+    def action_log_prob(self, obs: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+        actions, log_prob = super().action_log_prob(obs)
+        return actions.to(torch.float32), log_prob.to(torch.float32)
+
+    def actor_parameters(self) -> list:
+        """The trained parameters of the actor (the critic warm-up freezes them)."""
+        return list(self.parameters())
+
+
+class ResidualSACPolicy(SACPolicy):
+    """SB3 ``SACPolicy`` with :class:`ResidualActor` and :class:`NormalisedObservation` features for the actor's
+    residual and the critics. Needs a Box observation space and the action space [-1, 1]^n."""
+
+    def __init__(self, observation_space, action_space, lr_schedule, residual_limit: float | None = None,
+                 **kwargs) -> None:
+        number = isinstance(residual_limit, (int, float)) and not isinstance(residual_limit, bool)
+        if residual_limit is not None and not (number and 0.0 < residual_limit <= 2.0):
+            raise ValueError(f"ResidualSACPolicy: residual_limit {residual_limit!r} must be a number in (0, 2] "
+                             f"(a bound of the pre-squash residual, so of the action's change) or None (no bound)")
+        self.residual_limit = None if residual_limit is None else float(residual_limit)
+        low, high = np.asarray(action_space.low), np.asarray(action_space.high)
+        if not (np.all(low == -1.0) and np.all(high == 1.0)):
+            raise ValueError(f"ResidualSACPolicy: needs the action space [-1, 1]^n (the LQR's normalised actions), "
+                             f"got low {low.min()}..{low.max()}, high {high.min()}..{high.max()}")
+        kwargs.setdefault("features_extractor_class", NormalisedObservation)
+        super().__init__(observation_space, action_space, lr_schedule, **kwargs)
+
+    def _get_constructor_parameters(self) -> dict:
+        return {**super()._get_constructor_parameters(), "residual_limit": self.residual_limit}
+
+    def make_actor(self, features_extractor=None) -> ResidualActor:
+        kwargs = self._update_features_extractor(self.actor_kwargs, features_extractor)
+        return ResidualActor(**kwargs, residual_limit=self.residual_limit).to(self.device)
+
+    def scale_action(self, action: np.ndarray) -> np.ndarray:
+        """The identity: the action space is [-1, 1] (checked at construction), SB3's map is the identity there."""
+        return action
+
+    def unscale_action(self, scaled_action: np.ndarray) -> np.ndarray:
+        """The identity (see :meth:`scale_action`)."""
+        return scaled_action
+
+    def actor_parameters(self) -> list:
+        """The actor's trained parameters (mean, residual, noise): the critic warm-up freezes them."""
+        return self.actor.actor_parameters()
+
+    def set_base(self, lqr, obs_mean: np.ndarray, obs_var: np.ndarray, clip_obs: float) -> None:
+        """The fixed base, an :class:`~laddermill_gym.control.lqr.LQRController` ``lqr``, and the normalisation
+        (mean, variance (obs_dim,) of the raw observation, clip [-]) of the actor's and the critics' inputs.
+        ValueError for another controller or another number of wings."""
+        set_lqr_base(self.actor, lqr, "ResidualSACPolicy")
+        for net in (self.actor, self.critic, self.critic_target):
+            net.features_extractor.set_statistics(obs_mean, obs_var, clip_obs)
