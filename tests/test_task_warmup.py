@@ -9,8 +9,10 @@ from __future__ import annotations
 
 import json
 import os
+import pickle
 import subprocess
 import sys
+import time
 import warnings
 
 import numpy as np
@@ -144,11 +146,66 @@ def test_a_failed_construction_stops_its_warm_ups(monkeypatch):
 
     procs = []
     monkeypatch.setattr(kernel_warmup, "start", lambda *a, **k: _sleeper(procs))
-    with pytest.raises(ValueError, match="physics_step = 'nope'"):
-        wing_task.WingTask(physics_step="nope")
+    with pytest.raises(ValueError, match="no_such_scene"):
+        wing_task.WingTask(scene="no_such_scene", physics_step="ros34pw2")
     with pytest.raises(ValueError, match="no_such_craft"):
         craft_task.CraftTask(craft="no_such_craft")
     assert len(procs) == 3 and all(p.poll() is not None for p in procs)  # the wing's two, the craft's one
+
+
+def test_the_tail_warm_up_starts_for_a_w_method_step_only(monkeypatch):
+    # oracle: task_warmup.step_callees lists no callee for an RK4 step, so a third process could compile nothing
+    from laddermill_gym.envs import task as wing_task
+
+    targets = []
+
+    def record(target, *args, **kwargs):
+        targets.append(target)
+        return None
+
+    monkeypatch.setattr(kernel_warmup, "start", record)
+    for step in ("ros34pw2", "rk4"):
+        with pytest.raises(ValueError, match="no_such_scene"):
+            wing_task.WingTask(scene="no_such_scene", physics_step=step)
+    assert targets == [wing_task.WARMUP_TARGET, wing_task.WARMUP_TAIL_TARGET, wing_task.WARMUP_TARGET]
+
+
+def test_one_warm_up_per_task_and_cache_at_a_time(monkeypatch, tmp_path):
+    # oracle: the operating system's flock, asked from other processes while the warm-up runs and after it ended
+    (tmp_path / "sleeper_target.py").write_text("import time\ndef run(kwargs):\n    time.sleep(kwargs['s'])\n")
+    monkeypatch.setenv("PYTHONPATH", os.pathsep.join([str(tmp_path), os.environ.get("PYTHONPATH", "")]))
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path / "numba"))
+    task = ("sleeper_target:run", {"s": 30.0})
+    payload = pickle.dumps(task)
+    ask = f"from laddermill_gym.envs.kernel_warmup import claim; print(claim({payload!r}) is None)"
+
+    def refused_elsewhere(**env) -> bool:
+        out = subprocess.run([sys.executable, "-c", ask], capture_output=True, text=True, env=dict(os.environ, **env))
+        return out.stdout.strip() == "True"
+
+    held = kernel_warmup.claim(payload)
+    assert held is not None and held >= 0 and kernel_warmup.claim(payload) is None  # a second claimant refused
+    assert kernel_warmup.start(*task, (FakeKernel([]),)) is None  # a warm-up of that task is running
+    os.close(held)
+    assert not refused_elsewhere()  # released with the descriptor
+    warmup = kernel_warmup.start(*task, (FakeKernel([]),))
+    assert warmup is not None and warmup.proc.poll() is None
+    assert refused_elsewhere() and kernel_warmup.start(*task, (FakeKernel([]),)) is None  # held by the child
+    assert not refused_elsewhere(NUMBA_CACHE_DIR=str(tmp_path / "other"))  # another cache: its own warm-up
+    warmup.stop()
+    assert not refused_elsewhere()  # released when the child ended
+
+
+def test_the_warm_ups_started_together_share_one_deadline(monkeypatch):
+    monkeypatch.setattr(kernel_warmup, "WAIT_LIMIT_S", 2.0)
+    procs = [subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"]) for _ in range(2)]
+    warmups = [kernel_warmup.Warmup(p) for p in procs]
+    began = time.monotonic()
+    with pytest.warns(RuntimeWarning, match="stopped 2 s after its start"):
+        for w in warmups:
+            assert w.wait() is None
+    assert time.monotonic() - began < 3.5  # one limit for both, not one each (4 s)
+    assert all(p.poll() is not None for p in procs)
 
 
 def test_a_failed_warm_up_is_named_in_a_warning():

@@ -16,9 +16,10 @@ here as before).
 
 The wing and craft targets (``envs/task_warmup.py``) compile the step kernel's callees first, in the order the
 step kernel's compile reaches them, from their argument types (``dispatcher.compile``, nothing run). The wing env
-starts two processes: the second takes that list from its other end, so the two share it through numba's cache (a
-callee compiled by one is loaded by the other; at most the one both reach together is compiled twice) while this
-process solves the trim; without it the first process compiled the whole step tree alone while this one waited.
+with a W-method step starts two processes (an RK4 step has no such list): the second takes that list from its
+other end, so the two share it through numba's cache (a callee compiled by one is loaded by the other; at most the
+one both reach together is compiled twice) while this process solves the trim; without it the first process
+compiled the whole step tree alone while this one waited.
 The craft's target leaves out the right-hand side's kernels, which this process compiles for its trim with the
 same types: the step kernel's compile then loads them from the cache instead of compiling them again.
 
@@ -26,44 +27,56 @@ This moves CPU seconds to the other core; it removes none: the wall time shrinks
 (docs/benchmarks.md, "Cold start"). ``LADDERMILL_KERNEL_WARMUP=off`` (:data:`SWITCH`) switches it off for every
 env; it is also off when numba's JIT is disabled, when the kernels are already compiled in this process or (for
 :func:`start` with ``cached_check``) already in numba's on-disk cache. Any failure of the second process only
-costs its time: this process then compiles what it still needs.
+costs its time: this process then compiles what it still needs. Env processes started together (an
+``AsyncVectorEnv``'s) start one warm-up per task and cache, not one each (:func:`claim`: a file lock the warm-up
+process holds while it runs); the others compile what they need themselves, as without a warm-up.
 """
 
 from __future__ import annotations
 
 import contextlib
+import hashlib
 import os
 import pickle
 import select
 import subprocess
 import sys
+import tempfile
+import time
 import warnings
 
-__all__ = ["SWITCH", "CHILD_MODULE", "Warmup", "enabled", "on_disk", "start", "stopped_on_error"]
+__all__ = ["SWITCH", "CHILD_MODULE", "Warmup", "claim", "enabled", "on_disk", "start", "stopped_on_error"]
 
 #: the environment variable that switches the warm-up off (value ``off``)
 SWITCH = "LADDERMILL_KERNEL_WARMUP"
 #: the module the second process runs (``python -m``)
 CHILD_MODULE = "laddermill_gym.envs.warmup_run"
-#: the longest wait for the second process [s] (a cold compile takes 30-80 s of CPU on a loaded machine; past this
-#: it is stopped and this process compiles what it still needs)
+#: the longest wait for the second process [s], counted from its start (a cold compile takes 30-80 s of CPU on a
+#: loaded machine; past this it is stopped and this process compiles what it still needs). The warm-ups a task
+#: starts together share it: waiting for two costs at most this, not twice it.
 WAIT_LIMIT_S = 900.0
 
 
 class Warmup:
-    """A running warm-up process; :meth:`wait` (idempotent) waits for it, at most :data:`WAIT_LIMIT_S`."""
+    """A running warm-up process; :meth:`wait` (idempotent) waits for it, until :data:`WAIT_LIMIT_S` after its
+    start."""
 
     def __init__(self, proc: subprocess.Popen):
         self.proc = proc
         self.returncode: int | None = None
+        self.deadline = time.monotonic() + WAIT_LIMIT_S  # [s] on the monotonic clock
+
+    def _left(self) -> float:
+        """Seconds left until :attr:`deadline` (0 past it)."""
+        return max(0.0, self.deadline - time.monotonic())
 
     def wait_for(self, line: str) -> bool:
-        """Wait (at most :data:`WAIT_LIMIT_S`) until the process prints ``line`` on its standard output (started
+        """Wait (until :attr:`deadline`) until the process prints ``line`` on its standard output (started
         with ``signals``); False when it ended, was waited for or closed its output first."""
         out = None if self.proc is None else self.proc.stdout
         if out is None:
             return False
-        while select.select([out], [], [], WAIT_LIMIT_S)[0]:
+        while select.select([out], [], [], self._left())[0]:
             got = out.readline()
             if not got:
                 return False
@@ -76,7 +89,7 @@ class Warmup:
         costs only its time (this process compiles what it still needs) and is named in a RuntimeWarning."""
         if self.returncode is None and self.proc is not None:
             try:
-                self.returncode = self.proc.wait(timeout=WAIT_LIMIT_S)
+                self.returncode = self.proc.wait(timeout=self._left())
             except subprocess.TimeoutExpired:
                 self.proc.kill()
                 self.proc.wait()
@@ -84,7 +97,7 @@ class Warmup:
                 self.proc.stdout.close()
             self.proc = None
             if self.returncode != 0:
-                why = (f"was stopped after {WAIT_LIMIT_S:.0f} s" if self.returncode is None
+                why = (f"was stopped {WAIT_LIMIT_S:.0f} s after its start" if self.returncode is None
                        else f"exited with code {self.returncode}")
                 warnings.warn(f"the kernel warm-up process ({CHILD_MODULE}) {why}; this process compiles the "
                               f"kernels it still needs ({SWITCH}=off skips the warm-up)", RuntimeWarning, stacklevel=2)
@@ -136,21 +149,54 @@ def on_disk(kernels) -> bool:
     return False
 
 
+def claim(payload: bytes) -> int | None:
+    """An open file descriptor holding an exclusive lock (``flock``) on a file named for ``payload`` and
+    ``NUMBA_CACHE_DIR`` in the temporary directory; None when another process holds it (a warm-up of the same task
+    into the same cache is running: several env processes started together, e.g. by an ``AsyncVectorEnv``, start
+    one, not one each). -1 where there is no ``flock`` (not POSIX) or the file cannot be opened: no lock."""
+    try:
+        import fcntl
+    except ImportError:
+        return -1
+    key = hashlib.sha256(payload + os.environ.get("NUMBA_CACHE_DIR", "").encode()).hexdigest()[:20]
+    user = os.getuid() if hasattr(os, "getuid") else 0
+    try:
+        fd = os.open(os.path.join(tempfile.gettempdir(), f"laddermill-warmup-{user}-{key}.lock"),
+                     os.O_RDWR | os.O_CREAT, 0o600)
+    except OSError:
+        return -1
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        os.close(fd)
+        return None
+    return fd
+
+
 def start(target: str, task_kwargs: dict, kernels, cached_check: bool = False,
           signals: bool = False) -> Warmup | None:
     """Launch the warm-up process that calls ``target`` (``"module:function"``, a function of one dict) with
     ``task_kwargs`` when :func:`enabled` (and, with ``cached_check``, ``kernels`` are not :func:`on_disk`); None
-    when not (or when the arguments do not pickle). With ``signals`` its standard output is a pipe the target
-    prints lines on (:meth:`Warmup.wait_for`); else it is discarded."""
+    when not, when the arguments do not pickle, or when a warm-up of the same target and arguments is running
+    (:func:`claim`: the process holds the lock until it ends). With ``signals`` its standard output is a pipe the
+    target prints lines on (:meth:`Warmup.wait_for`); else it is discarded."""
     if not enabled(kernels) or (cached_check and on_disk(kernels)):
         return None
     try:
         payload = pickle.dumps((str(target), dict(task_kwargs)))
     except Exception:  # an argument that does not pickle: compile here as before
         return None
-    proc = subprocess.Popen([sys.executable, "-m", CHILD_MODULE], stdin=subprocess.PIPE,
-                            stdout=subprocess.PIPE if signals else subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL, env=dict(os.environ))
+    lock = claim(payload)
+    if lock is None:
+        return None
+    try:
+        proc = subprocess.Popen([sys.executable, "-m", CHILD_MODULE], stdin=subprocess.PIPE,
+                                stdout=subprocess.PIPE if signals else subprocess.DEVNULL,
+                                stderr=subprocess.DEVNULL, env=dict(os.environ),
+                                pass_fds=() if lock < 0 else (lock,))
+    finally:
+        if lock >= 0:
+            os.close(lock)  # the child's inherited descriptor holds the lock until it ends
     try:
         proc.stdin.write(payload)
         proc.stdin.close()

@@ -62,6 +62,7 @@ from laddermill_gym.kernels.task_rewards import (
 from laddermill_gym.ladder.scene import Scene, load_scene, options_key, options_kwargs
 from laddermill_gym.model.packing import make_workspace
 from laddermill_gym.sim.batch import BatchSimulator
+from laddermill_gym.sim.breakpoints import W_METHODS
 from laddermill_gym.sim.stable_step import UnstableStepWarning
 
 __all__ = ["RewardConfig", "TerminationConfig", "WingTask", "FAILURES", "scene_trim"]
@@ -158,12 +159,13 @@ class WingTask(TaskCore):
         task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
         for name, v in (("control_dt", control_dt), ("episode_time", episode_time), ("wind_dt", wind_dt)):
             positive(name, v, "s")
-        # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py)
+        options = physics_scene_options(scene_options, physics_step, physics_dt, control_dt)
+        # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py); a third
+        # shares the W method's callees (an RK4 step has none worth a process: task_warmup.step_callees)
         kernels = (step_observe_batch, step_observe_serial)
-        warmups = [kernel_warmup.start(target, task_kwargs, kernels, True)
-                   for target in (WARMUP_TARGET, WARMUP_TAIL_TARGET)]
+        targets = (WARMUP_TARGET, WARMUP_TAIL_TARGET) if options.get("method") in W_METHODS else (WARMUP_TARGET,)
+        warmups = [kernel_warmup.start(target, task_kwargs, kernels, True) for target in targets]
         with kernel_warmup.stopped_on_error(warmups):  # a failed construction leaves no warm-up running
-            options = physics_scene_options(scene_options, physics_step, physics_dt, control_dt)
             sc, x_trim, u_trim = scene_trim(str(scene), options_key(options))
             asm = sc.assembly
             if asm.dim != 3:

@@ -57,11 +57,12 @@ class _Captured(Exception):
     """Raised by the stand-in step kernel once it holds the arguments of the task's first call."""
 
 
-def _step_arguments(module, names: tuple, build):
+def _step_arguments(module, names: tuple, build, trim: tuple):
     """The arguments of the first step-kernel call of the task ``build()`` makes, with the kernels ``names`` of
     ``module`` (the attributes the task reads) replaced by a stand-in that records them and stops the
-    constructor; restored after. None when the constructor ends otherwise."""
-    saved = {n: getattr(module, n) for n in names}
+    constructor, and ``trim`` = (name, function): the module's trim function replaced by a stand-in trim; all
+    restored after. None when the constructor ends otherwise."""
+    saved = {n: getattr(module, n) for n in (*names, trim[0])}
     got = {}
 
     def stand_in(*args):
@@ -70,6 +71,7 @@ def _step_arguments(module, names: tuple, build):
 
     for n in names:
         setattr(module, n, stand_in)
+    setattr(module, trim[0], trim[1])
     try:
         build()
     except _Captured:
@@ -139,12 +141,8 @@ def wing_calls(task_kwargs: dict) -> list:
     :func:`stand_in_wing_trim` (``scene_trim`` restored after)."""
     from laddermill_gym.envs import task as wing_task
 
-    trim, wing_task.scene_trim = wing_task.scene_trim, stand_in_wing_trim
-    try:
-        args = _step_arguments(wing_task, ("step_observe_serial", "step_observe_batch"),
-                               lambda: wing_task.WingTask(**task_kwargs))
-    finally:
-        wing_task.scene_trim = trim
+    args = _step_arguments(wing_task, ("step_observe_serial", "step_observe_batch"),
+                           lambda: wing_task.WingTask(**task_kwargs), ("scene_trim", stand_in_wing_trim))
     return [] if args is None else step_callees(args)
 
 
@@ -166,12 +164,8 @@ def craft_calls(task_kwargs: dict) -> tuple[list, list, bool]:
         asked.append((args, kwargs))
         return stand_in_craft_trim(*args, **kwargs)
 
-    trim, craft_task.craft_trim = craft_task.craft_trim, recording_stand_in
-    try:
-        args = _step_arguments(craft_task, ("craft_step_observe_serial", "craft_step_observe_batch"),
-                               lambda: craft_task.CraftTask(**task_kwargs))
-    finally:
-        craft_task.craft_trim = trim
+    args = _step_arguments(craft_task, ("craft_step_observe_serial", "craft_step_observe_batch"),
+                           lambda: craft_task.CraftTask(**task_kwargs), ("craft_trim", recording_stand_in))
     calls = [] if args is None else step_callees(args)[:-1]
     trims = (assemble3d, rhs3d, add_body_jacobian)
     on_disk = bool(asked) and trim_on_disk(*asked[0][0], **asked[0][1])

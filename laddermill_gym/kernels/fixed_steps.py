@@ -153,6 +153,8 @@ def next_kink(tc, te, t, dt, j, tmod, ms, md):
     return te
 
 
+# Keeps numba's runtime (no _nrt=False): with a gust grid the step takes row_or_none(AB.gp, b), an array view that
+# needs it (TetheredWing-v0 under turbulence failed to compile without it; tried and reverted twice: c2dd978, 45dd361)
 @njit(cache=True, error_model="numpy")
 def advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks):
     """n fixed steps of dt [s] from t [s] (RK4 when ``tableau`` is None, else that Rosenbrock-W method) stepping

@@ -110,6 +110,8 @@ def craft_step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limi
                                  tether_end, obs, aux, status, done)
 
 
+# Keeps numba's runtime (no _nrt=False): with a gust grid the step takes row_or_none(AB.gp, b), an array view that
+# needs it (TetheredWing-v0 under turbulence failed to compile without it; tried and reverted twice: c2dd978, 45dd361)
 @njit(cache=True, error_model="numpy")
 def craft_step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
                               tether_end, obs, aux, status, done):
