@@ -20,6 +20,8 @@ BENCHMARKS = Covered(
             (r"Voigt damping to ([\d.e-]+) s steps", ("{pointmass_benchmark[explicit_dt]}",))),
     given=(
         'wings / nodes / elements / states | 1 / 1 / 2 / 19 | 101 / 0 / 102 / 1313',
+        # the accuracy table's physics steps (the envs' registered steps and the command's --steps)
+        'registered: RK4 4 x 12.5 ms', 'registered: RK4 5 x 10 ms', ': 1 x 50 ms |',
         'Targets: chain at least 30x real time, kernels at least 50x the reference, cost linear within 25 %, warm'
         ' start-up at most 3 s.',
         'The moving-cable laddermill (same run, ; timed after the cable is at 2 m/s, against the fixed chain with'
@@ -55,6 +57,10 @@ BENCHMARKS = Covered(
         '### TetheredWing-v0 and Rotorcraft-v0: the step kernel compiled beside the trim (issue 32 point 1)',
     ),
     timings=(  # each dated on the page (date or commit, machine, load where recorded)
+        # the accuracy table's CPU column, on the loaded machine the page describes below it (step_accuracy_10 on
+        # 2026-11-30 at load 1-3: 754, 1,338, 2,023 and 575, 1,100, 1,440 steps/s)
+        '| 373 steps/s |', '| 597 steps/s (1.6x) |', '| 786 steps/s (2.1x) |', '| 391 steps/s |',
+        '| 731 steps/s (1.9x) |', '| 1,091 steps/s (2.8x) |',
         # dated by git log -S of README.md (eb9be00, 904b335, 30708d3, 3950f04); the load was not recorded then
         "on this project's 2-core machine, one thread, medians of repeated runs; the numpy reference is timed in "
         'the same run (2026-11-24, eb9be00; the load was not recorded).',
@@ -252,6 +258,7 @@ BENCHMARKS = Covered(
     ),
     derived=(
         '1,020 x 1.6 x 2 = 3,260 for the chain and 800 x 1.9 x 2 = 3,040 for the mill',
+        '| 6.4 cm |',  # the accuracy table's ROS2 error on the mill: step_accuracy_10 prints 0.06437 m
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         Printed('mill_benchmark', (
@@ -266,11 +273,9 @@ BENCHMARKS = Covered(
         Printed('pointmass_accuracy', (
             'implicit against explicit over 0.2 s: 3.0e-3 m at dt 0.01 s, first order.',
         )),
-        Printed('step_accuracy_10', (
-            'LadderChain-v0 (3612.8 m) | registered: RK4 4 x 12.5 ms | 0.188 m | 5.2e-5 | 373 steps/s | | | : 1 x 50 '
-            'ms | 1.158 m | 3.2e-4 | 597 steps/s (1.6x) | | | : 1 x 50 ms | 1.628 m | 4.5e-4 | 786 steps/s (2.1x) | '
-            '| LadderMill-v2 (3477.4 m) | registered: RK4 5 x 10 ms | 3.2e-5 m | 9.1e-9 | 391 steps/s | | | : 1 x 50 '
-            'ms | 2.4 mm | 7.0e-7 | 731 steps/s (1.9x) | | | : 1 x 50 ms | 6.4 cm | 1.9e-5 | 1,091 steps/s (2.8x)',
+        Printed('step_accuracy_10', (  # the accuracy table's extents and errors (its steps given, its CPU timings)
+            'LadderChain-v0 (3612.8 m)', '| 0.188 m | 5.2e-5 |', '| 1.158 m | 3.2e-4 |', '| 1.628 m | 4.5e-4 |',
+            'LadderMill-v2 (3477.4 m)', '| 3.2e-5 m | 9.1e-9 |', '| 2.4 mm | 7.0e-7 |', '| 1.9e-5 |',
         )),
         Printed('step_accuracy_40', (
             'ROS34PW2 is the step of choice: within 1e-3 of the extent on both ( holds it), third order, and in the '

@@ -44,7 +44,12 @@ CONTROLLERS = Covered(
              tuple(f"{{mill_v1_controllers[open_loop][{k}]}}"
                    for k in ("return", "length", "dy", "power", "failures"))),
             (r"\| LQR \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| - \|",
-             tuple(f"{{mill_v1_controllers[lqr][{k}]}}" for k in ("return", "length", "dy", "power")))),
+             tuple(f"{{mill_v1_controllers[lqr][{k}]}}" for k in ("return", "length", "dy", "power"))),
+            # the shipped policies' gusts-v1 scorecards, exact (long groups gusts_v1_<env>: gust_bench.json's summary)
+            (r"Rotorcraft-v0 (\d+ / \d+) \(the LQR (\d+ / \d+), open loop (\d+ / \d+)\),",
+             tuple(f"{{gusts_v1_rotorcraft[scorecard][{c}]}}" for c in ("ppo_rotorcraft", "lqr", "open_loop"))),
+            (r"TetheredWing-v0 (\d+ / \d+) \(the LQR (\d+ / \d+), open loop (\d+ / \d+)\)\.",
+             tuple(f"{{gusts_v1_tethered_wing[scorecard][{c}]}}" for c in ("ppo_tethered_wing", "lqr", "open_loop")))),
     given=(
         "All numbers below come from (the commands are in the Makefile), on this project's 2-core machine. The "
         'return is the sum of the per-step rewards of the registered environment (about 1 per step at the trim '
@@ -124,8 +129,6 @@ CONTROLLERS = Covered(
         Printed('lqr_laddermill_v1', ('prints |z| at most 0.99909 at phases 0.125-0.875, 1.02093 just after the '
                                     "transfer, and the period's transition matrix radius 0.1667 with the transfer "
                                     '(0.3293 without).',)),
-        Printed('gusts_v1_rotorcraft', ('Rotorcraft-v0 8 / 9 (the LQR 8 / 9, open loop 3 / 9),',)),
-        Printed('gusts_v1_tethered_wing', ('TetheredWing-v0 10 / 12 (the LQR 11 / 12, open loop 7 / 12).',)),
         Printed('switch_ntm_ib_0', ('Why that one episode does not rank the two: handed over between them at several '
                                   'times ( ), the LQR flying first and the policy after survives with the hand-over '
                                   'at 20 s and 21.5 s and fails at 10, 18, 21, 22 s (22.25 to 23.25 s) and 22.5 s '

@@ -49,6 +49,7 @@ MEIJAARD = Covered(
     checks=MEIJAARD_CHECKS + FILES_CHECKS,
     given=(
         '# Meijaard, Ockels & Schwab (1999): the laddermill',
+        '6 and 7 panels',  # the paper's figure numbers
         'Schwab, *Modelling of the dynamic behaviour of a laddermill, a novel concept to exploit wind energy*, '
         'Proceedings of the Third International Symposium on Cable Dynamics, 1999, pp. 229-234.',
         '1-3, rigid wings, the truss cable element with sag correction, the moving cable through the ground '
@@ -132,8 +133,7 @@ MEIJAARD = Covered(
             '488.8 kW in the last period,',
             'The undisturbed 3D periodic motion meets none of the end criteria over a period (no wing outside the '
             'aerodynamic data, lowest wing CG 57.3 m, peak tension 0.285 of the breaking load).',
-            '6 and 7 panels show the shape at the end of the 3,053 s search and the tensions of its last period, and '
-            'say so;',
+            'show the shape at the end of the 3,053 s search and the tensions of its last period, and say so;',
             "The 5 m/s search also passes the cable's breaking load in the transient from rest (element 0 at 392.6 "
             's, 1.01 times it;',
             'After the direction step the v1 mill leaves the range of its wing data sooner than v0 (6.4 s against '

@@ -13,6 +13,9 @@ MILL_FAST = Covered(
     checks=v2_rows(),
     given=(
         '# The mill at 4-5 m/s:',
+        # the horizontal tail's x in wing_data.md's mass build-up (-4.81 m about v1's CG; derive_wing's, checked there)
+        "the pod can go no further aft than the tail (4.8 m behind v1's CG), and a smaller h raises the slope "
+        '(as 1 / k)',
         'Issue 30 asks for the in-plane mill periodic at V_c = 1, 2 and 5 m/s.',
         'does it up to 2 m/s (3 m/s by a step);',
         'this page is what it does at 4-5 m/s, what was tried, and the v2 wing that solves it.',
@@ -91,7 +94,8 @@ MILL_FAST = Covered(
             'to 350 s),',
             'every tension falls with it, until the descending leg goes slack in its middle and lower part (the '
             'smallest tension 3.2 kN at element 68 at 225 s, then 0.0-0.4 kN at elements 60-96;',
-            'the first element down from 122 to 22 kN) and wings tumble;',
+            # the 122 kN and 22 kN rows (t - t1 = 25 and 300 s) are 176 printed numbers apart: one snippet each
+            'the first element down from 122', 'to 22 kN) and wings tumble;',
             'the collapse ends in a tension spike (309 kN at 350 s)',
             'before it the top tension holds at 11-18 kN and no element is slack. Our reading of the lean:',
         )),
@@ -124,8 +128,6 @@ MILL_FAST = Covered(
             'At C_L 0.61 (elevator 3.35 deg)',
             "the descending trim falls 0.98 deg per m/s at 10 m/s ( ), at the scene's 2.5 deg (C_L 0.91)",
             "0.75 deg per m/s, three times v1's. The choices:",
-            "the pod can go no further aft than the tail (4.8 m behind v1's CG), and a smaller h raises the slope "
-            '(as 1 / k)',
         )),
         Printed('fast_mill_v2_5_ramp200', (
             "200 s (the scene's own ramp, only changed)",

@@ -168,6 +168,24 @@ PUMPING = Covered(
         'about 4.5 minutes per hour on the shared 2-core machine at a load of 6-7).',
     ),
     derived=(
+        # ratios of the power curves' printed columns (python -m laddermill_gym.studies.pumping.power_curve, --long
+        # pumping_power_curve_printed, 2026-11-30): sim W / matched W at 14-20 m/s 85574 / 121913, 119875 / 167873,
+        # 155842 / 217322, 199118 / 280067 (0.70 and above: within 30 %); T_out / matched T_out 29314 / 43041 =
+        # 0.681 to 68468 / 95291 = 0.719; the aerodynamic force over T_out 1.071-1.080 and over the model's tension
+        # 31663 / 43041 = 0.736 to 73336 / 95291 = 0.770; on the reeling tether (--long reeling_power_curve_printed)
+        # the aerodynamic force over the model's tension 35849 / 42457 = 0.844 to 146818 / 162195 = 0.905
+        "**On the single element, within 30 % of Schmehl's model at the simulated operating point only at 14-20 "
+        'm/s** (ratios 0.702, 0.714, 0.717, 0.711 in :',
+        "the simulated reel-out tension is 0.68-0.72 of the model's,",
+        "The aerodynamic force at the flown airspeed is 7-8 % above the tension and 0.74-0.77 of the model's "
+        'tension:',
+        'the wing flies a smaller apparent wind than on the reeling tether (0.84-0.91 there), which points at '
+        "the single element's tether (its drag and shape) as well as the course. 3.",
+        # a bound on the LQR cycle's max |dy| column (laddermill pumping-cycle --controller lqr: 3.90 and 5.27 m
+        # over the first two cycles, --long pumping_cycle_lqr_2, 2026-11-30)
+        'With the LQR the lateral offset stays below 6 m through three cycles.',
+        # the wing's weight: 54 kg (configs/wings/meijaard_wing.yaml) x 9.81 m/s^2 = 529.7 N
+        'it leaves out the weight of the wing (530 N)',
         # the tether's share worked by hand (its mass per length times the hanging length)
         'and of 90-160 kg of tether, which take 1 kN of the 3 kN aerodynamic force. 3. **Eqs.',
         # read off reeling_tether.md's convergence table (tether_convergence checks it) and the checked crosswind
@@ -192,12 +210,6 @@ PUMPING = Covered(
             'the wing dives to the ground during the first reel-in (t = 180 s).',
         )),
         Printed('pumping_cycle_lqr_2', (
-            "The reel-in elevator balances the tethered wing's pitching moment about its attachment at alpha_in ( , "
-            '+2.53 deg);',
-
-            'With the LQR the lateral offset stays below 6 m through three cycles.',
-            'it leaves out the weight of the wing (530 N)',
-
             'within reel-out the tension and the speed rise together (the wing swings down from high elevation after '
             'each reel-in, drum tension up to 10 kN mid reel-out), so the mean of T V exceeds the product of the '
             'means.',
@@ -207,16 +219,11 @@ PUMPING = Covered(
             'and hits the ground at t = 138 s.',
         )),
         Printed('pumping_power_curve_printed', (
-            "**On the single element, within 30 % of Schmehl's model at the simulated operating point only at 14-20 "
-            'm/s** (ratios 0.702, 0.714, 0.717, 0.711 in :',
             'just inside), not at 8-12 m/s (0.57-0.67).',
+            "the reel-in tension 3.0-15.2 kN against the model's 0.2-7.2 kN,",
+        )),
+        Printed('reeling_power_curve_printed', (  # the reeling tether's sim / matched column
             'the ratio is 0.75-0.86 at 10-20 m/s. 2.',
-            "the simulated reel-out tension is 0.68-0.72 of the model's, the reel-in tension 3.0-15.2 kN against the "
-            "model's 0.2-7.2 kN, the simulated cycle 3-4 % shorter.",
-            "The aerodynamic force at the flown airspeed is 7-8 % above the tension and 0.74-0.77 of the model's "
-            'tension:',
-            'the wing flies a smaller apparent wind than on the reeling tether (0.84-0.91 there), which points at '
-            "the single element's tether (its drag and shape) as well as the course. 3.",
             "the same cycle is 0.75-0.86 of Schmehl's model at its operating point at 10-20 m/s (0.68 at 8 m/s),",
         )),
         Printed('gusts_v3_pumping_v1', (
@@ -317,8 +324,14 @@ PUMPING = Covered(
     ),
     not_rerun=(  # tests/test_pumping_v1.py's slow hour in NTM turbulence asserts survival; its figures are the
         # diagnosis script's, which no command prints
-        # the scene's reel-out trim (sim.statics.pitch_trim_alpha in a Python session; no command prints it)
+        # the scene's reel-out trim and the reel-in elevator (sim.statics.pitch_trim_alpha in a Python session; no
+        # command prints them)
         "the reel-out elevator is the scene's trim at 8 deg (-0.52 deg).",
+        "The reel-in elevator balances the tethered wing's pitching moment about its attachment at alpha_in ( , "
+        '+2.53 deg);',
+        # the cycle times' ratio: power_curve writes the simulated and the model's cycle times into its JSON (--out),
+        # it prints neither
+        'the simulated cycle 3-4 % shorter.',
         "over seed 1's hour the largest alpha is 59.3 deg (seed 0:",
         '40.7 deg), against the 60.8 deg at which seed 0 used to fail, and some entries still start on a slack '
         'tether (least drum tension in an entry 57 N in seed 0, 159 N in seed 1).',

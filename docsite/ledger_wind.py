@@ -18,6 +18,14 @@ GUSTS_V2_CHECKS = tuple(
     for ctrl in ("open_loop", "lqr") for scen in PUMPING_SCENARIOS) + (
     (r"61\.3 s: beta ([-\d.]+) deg \(seed 2\)", ("{gusts_v2_pumping[lqr/NTM_IB][beta]}",)),)
 
+ON = r"(\d+ / \d+)"
+#: The gusts-v1 table: each env's scorecard, open loop and LQR, exact (long groups gusts_v1_<env>: gust_bench.json)
+GUSTS_V1_CHECKS = tuple(
+    (rf"\| {env} \| {ON} [^|]*\| {ON}", (f"{{gusts_v1_{group}[scorecard][open_loop]}}",
+                                       f"{{gusts_v1_{group}[scorecard][lqr]}}"))
+    for env, group in (("TetheredWing-v0", "tethered_wing"), ("LadderChain-v0", "ladder_chain"),
+                       ("Rotorcraft-v0", "rotorcraft"), ("LadderMill-v0", "laddermill")))
+
 #: The LadderMill-v0 rows of the gusts-v2 table (laddermill gust-bench --suite gusts-v2 --env
 #: laddermill_gym/LadderMill-v0 --scenarios EWS_IA NTM_IB dryden_light dryden_moderate --controllers open_loop lqr,
 #: 2 min 50 s): per failed seed, the angles the page names (the page rounds the printed time and angles).
@@ -43,7 +51,7 @@ def mill_row(ctrl: str, scen: str, angles: tuple) -> tuple:
 GUSTS_V2_CHECKS += tuple(mill_row(c, s, a) for (c, s), a in MILL_ROWS.items())
 WIND = Covered(
     groups=("wind_data", "gusts_v2_pumping", "gusts_v2_mill"),
-    checks=GUSTS_V2_CHECKS + (
+    checks=GUSTS_V2_CHECKS + GUSTS_V1_CHECKS + (
             (r"Check values \(class IA, 10 m/s, D = 10 m\): EOG V_gust = ([\d.]+) m/s, peak ([\d.]+) m/s at ([\d.]+) "
              r"s; EDC theta_e = ([\d.]+) deg", tuple(W % k for k in ("v_gust", "peak", "t_peak", "theta_e"))),
             (r"(\d+) x (\d+) x 3 floats = ([\d.]+) MB \(([\d,]+) bytes\)",
@@ -96,7 +104,8 @@ WIND = Covered(
            "s = exp(q z - q^2 / 2), q^2 = ln(1 + speed_std^2)", "mean 1,", "runs 300 ten-minute episodes per value up "
            "to 2.0.", '"step": 0.02}', '"heights": [0, 300]}', "(to within 10 % of the largest deviation from the "
            "final value, at least 1 mm; nan when not settled in the last 10 % of the episode)",
-           "First results (60 s episodes, turbulence faded in over 10 s;", "+20 % speed step, 1-cosine gusts of 4 s "
+           "Results (60 s episodes, turbulence faded in over 10 s;", "ECD (72 deg in 10 s)", "re-run on 2026-11-30;",
+           "+20 % speed step, 1-cosine gusts of 4 s "
            "and 20 s,", "at the reel-out trim's 296.3 m and the scene's 10.39 m/s there (D = the 20 m span)",
            "NTM IB turbulence on a grid 0-600 m high and 50 m upwind to 600 m downwind of the winch (the tether is at "
            "most 540 m). Episodes of 200 s: one pumping cycle (190.5 s from the trim,",
@@ -111,15 +120,7 @@ WIND = Covered(
              " in two runs at a higher load (2.5 vs 3.0 ms, 2.2 vs 2.5 ms). Drawing the field at a reset takes 3-16 "
              "ms.", "--out runs/gust_bench_v2/pumping # 16 s", "--out runs/gust_bench_v2/mill # 2 min 50 s"),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
-        Printed('gusts_v1_all', (
-            '(the open-loop and LQR chains then leave the aerodynamic tables within 0.2-5 s)',
-            '| TetheredWing-v0 | 3 / 12 (speed step, EOG, EWS) | 8 / 12 (+ direction step, ramp, both 1-cos, EDC); '
-            'Dryden light on 2 of 3 seeds | ECD (72 deg in 10 s), NTM IB and Dryden moderate end both | | '
-            'LadderChain-v0 | 2 / 9 (speed step, EOG) | 2 / 9 | in turbulence both leave the aerodynamic tables '
-            'after 7-11 s (after 0.2-5 s without the fade-in) | | Rotorcraft-v0 | 3 / 8 (speed step, EOG, EWS) | 7 / '
-            '8 (all but ECD; NTM IB and Dryden moderate on every seed) | | | LadderMill-v0 | 2 / 7 (speed step, EOG) '
-            '| 5 / 7 (fails ECD and the random perturbation) |',
-        )),
+        Printed('gusts_v1_ladder_chain', ('in turbulence both leave the aerodynamic tables after 7-11 s',)),
         Printed('gusts_v2_mill_printed', (
             'The loop spans 50 m (the stations) to 3440 m and p . e -100 to 689 m:',
             '(until the LQR-controlled mill fails, near 7 s)',
@@ -136,6 +137,14 @@ WIND = Covered(
         )),
     ),
     history=(
+        History('2026-11-24', 'laddermill gust-bench --suite gusts-v1 --env ID --controllers open_loop lqr (ee8a806; '
+                'the fade-in came with 34c3c4d the same day)', "the first gusts-v1 runs: TetheredWing-v0 at RK4 50 ms, "
+                "Rotorcraft-v0 on the suite's eight scenarios of the day, turbulence at full strength from t = 0", (
+            'before the fade-in, the open-loop and LQR chains then left the aerodynamic tables within 0.2-5 s)',
+            'read 3 / 12 and 8 / 12 for TetheredWing-v0 at RK4 50 ms and 3 / 8 and 7 / 8 for Rotorcraft-v0, then on '
+            'eight scenarios):',
+            '(after 0.2-5 s without the fade-in)',
+        )),
         History('2026-11-24', 'gymnasium resets of the envs with the Gaussian speed factor (its code is gone)',
                 'the failure rates measured when the speed factor was replaced', (
             'made 1.1 % of resets fail at speed_std 0.25 (9 % at 0.3, 93 % at 0.5)',

@@ -19,6 +19,8 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
+from docsite.gust_scorecards import scorecards
+
 ROOT = Path(__file__).resolve().parent.parent
 WP = "NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision"
 CENTRAL = "lqr:configs/agents/lqr_ladder_chain_central.yaml"
@@ -40,7 +42,7 @@ def _bench(suite: str, env: str, controllers: str, page: str, cost: str = "minut
     """``laddermill gust-bench`` of one env into results/long/<suite>_<env>: it prints only its files' names, so its
     CSV (energy [J], lateral excursions [m], end times [s] per controller, scenario and seed) is what is compared."""
     out = f"results/long/{suite}_{env}"
-    env_arg = f" --env laddermill_gym/{env}" if env != "all" else ""
+    env_arg = f" --env laddermill_gym/{env}"
     return Long(f"laddermill gust-bench --suite {suite}{env_arg} --controllers {controllers} --out {out}", cost, page,
                 (f"{out}/gust_bench.csv",))
 
@@ -67,7 +69,7 @@ LONG = {
                         "lqr --episodes 5 --episode-time 300", "about 13 min", "learned_mill.md"),
     "chain_step_01": Long("laddermill evaluate --env laddermill_gym/LadderChain-v0 --scenario step_0.1 --controllers "
                           f"ppo_chain {CENTRAL} --episodes 1 --episode-time 300", "about 3 min", "learned_mill.md"),
-    # gusts-v1 per env (features.md's scorecard table, wind.md's)
+    # gusts-v1 per env (features.md's scorecard table, wind.md's, controllers.md's shipped policies)
     "gusts_v1_tethered_wing": _gusts("TetheredWing-v0", "features.md, wind.md", "ppo_tethered_wing"),
     "gusts_v1_ladder_chain": _gusts("LadderChain-v0", "features.md, wind.md"),
     "gusts_v1_rotorcraft": _gusts("Rotorcraft-v0", "features.md, wind.md", "ppo_rotorcraft"),
@@ -113,7 +115,6 @@ LONG = {
         + " --out results/power_curve_replay", "2 s after the six power_curve_v2* groups", "power_curve.md"),
     "trim_slope": Long("python -m laddermill_gym.studies.mill.trim_slope", "seconds", "power_curve.md"),
     # wind.md
-    "gusts_v1_all": _bench("gusts-v1", "all", "open_loop lqr", "wind.md", "about an hour"),
     "gusts_v2_mill_printed": _bench("gusts-v2", "LadderMill-v0", "open_loop lqr --scenarios EWS_IA NTM_IB "
                                     "dryden_light dryden_moderate", "wind.md", "25 min at nice 15"),
     # the work-precision studies (make work-precision; docs/work_precision*.md)
@@ -197,9 +198,10 @@ LONG = {
     "lqr_laddermill": Long("laddermill lqr --config configs/agents/lqr_laddermill.yaml", "minutes", "controllers.md"),
     "lqr_laddermill_v1": Long("laddermill lqr --config configs/agents/lqr_laddermill_v1.yaml", "minutes",
                               "controllers.md"),
-    "switch_ntm_ib_0": Long("python -m laddermill_gym.studies.gusts.switch_controllers --scenario NTM_IB --seed 0 "
-                            "--controllers lqr ppo_tethered_wing --times 10 18 20 21 21.5 22 22.5", "minutes",
-                            "controllers.md"),
+    "switch_ntm_ib_0": Long(" && ".join(  # each order of the hand-over (the page quotes both)
+        "python -m laddermill_gym.studies.gusts.switch_controllers --scenario NTM_IB --seed 0 --controllers "
+        f"{pair} --times 10 18 20 21 21.5 22 22.5" for pair in ("lqr ppo_tethered_wing", "ppo_tethered_wing lqr")),
+        "seconds each", "controllers.md"),
     "paired_survival_shipped": Long("python -m laddermill_gym.harness.paired_survival --config "
                                     "configs/agents/ppo_tethered_wing_severe.yaml --set ntm_ib --episodes 200 --seed "
                                     "5000 --controllers lqr ppo_tethered_wing", "an hour or more (400 episodes)",
@@ -227,10 +229,22 @@ def listing() -> str:
     return "\n".join(f"{name} ({g.cost}; {g.page}):\n    {g.command}" for name, g in LONG.items())
 
 
+def _parsed(reads: tuple) -> dict:
+    """The figures the pages check from a long group's files: a gust bench's scorecard and lost seeds, from the
+    ``gust_bench.json`` beside its CSV (:func:`docsite.gust_scorecards.scorecards`); {} when none was written."""
+    found = {}
+    for path in reads:
+        summary = (ROOT / path).with_name("gust_bench.json")
+        if path.endswith("gust_bench.csv") and summary.exists():
+            found.update(scorecards(summary))
+    return found
+
+
 def measure_long(names: list[str]) -> dict:
     """{"long": {name: {"printed": stdout, "exit": statuses, "stderr": each failed command's stderr tail, "seconds":
-    wall}}} for the named groups (ValueError naming an unknown one); a command exits 1 where its study reports a
-    failed case (a wing on the ground), so its output still counts."""
+    wall, and a gust bench's "scorecard" and "lost_seeds" (:func:`_parsed`)}}} for the named groups (ValueError
+    naming an unknown one); a command exits 1 where its study reports a failed case (a wing on the ground), so its
+    output still counts."""
     unknown = [n for n in names if n not in LONG]
     if unknown:
         raise ValueError(f"--long: no long group {unknown} in docsite/long_figures.py; see --long --list")
@@ -239,6 +253,8 @@ def measure_long(names: list[str]) -> dict:
         t0, printed, status, errors = time.perf_counter(), [], [], []
         for path in LONG[name].reads:  # a file an earlier run left must not stand in for this run's
             (ROOT / path).unlink(missing_ok=True)
+            if path.endswith("gust_bench.csv"):  # and the summary whose scorecard the pages check
+                (ROOT / path).with_name("gust_bench.json").unlink(missing_ok=True)
         for command in LONG[name].command.split(" && "):
             argv, env = argv_env(command)
             proc = subprocess.run([sys.executable, "-m", *argv], cwd=ROOT, env=env, capture_output=True, text=True)
@@ -248,6 +264,6 @@ def measure_long(names: list[str]) -> dict:
         printed += [(ROOT / path).read_text() for path in LONG[name].reads if (ROOT / path).exists()]
         errors += [f"{path}: not written" for path in LONG[name].reads if not (ROOT / path).exists()]
         found[name] = {"printed": "\n".join(printed), "exit": status, "stderr": errors,
-                       "seconds": round(time.perf_counter() - t0)}
+                       "seconds": round(time.perf_counter() - t0), **_parsed(LONG[name].reads)}
         print(f"{name}: exit {status}, {found[name]['seconds']} s", flush=True)
     return {"long": found}

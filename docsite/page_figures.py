@@ -36,6 +36,7 @@ from docsite.config_figures import cable_dyneema, craft_data
 from docsite.controllers_figures import CONTROLLER_GROUPS
 from docsite.design_figures import design_data
 from docsite.learned_figures import gain_locality
+from docsite.long_checks import long_check_differences, long_groups
 from docsite.mill_figures import MILL_GROUPS
 from docsite.numerics_figures import numerics_data
 from docsite.page_ledger import LEDGER, Covered
@@ -43,7 +44,7 @@ from docsite.page_numbers import prose, unaccounted
 from docsite.paper_figures import printed_match, run_command
 from docsite.pointmass_figures import pointmass_data
 from docsite.precision_figures import PRECISION_GROUPS
-from docsite.printed_numbers import printed_differences
+from docsite.printed_numbers import printed_differences, template_agrees
 from docsite.pumping_figures import PUMPING_GROUPS
 from docsite.rotor_chart_figures import rotor_chart
 from docsite.rotor_figures import parse_rotor_design, scan_figures
@@ -307,6 +308,8 @@ def pages_differences(measured: dict) -> list[str]:
     for name in measured.get("checked_pages", []):
         flat = " ".join((DOCS / name).read_text().split())
         for pattern, templates in LEDGER[name].checks:
+            if long_groups(templates):  # compared by --long (docsite/long_checks.py)
+                continue
             m = re.search(pattern, flat)
             if m is None:
                 bad.append(f"docs/{name}: no text matches the check {pattern!r}")
@@ -316,7 +319,8 @@ def pages_differences(measured: dict) -> list[str]:
             except (KeyError, IndexError) as e:
                 bad.append(f"docs/{name}: '{m.group(0)}': its command printed no {e} (see the group's docstring)")
                 continue
-            if len(m.groups()) != len(want) or not all(_agrees(q, w) for q, w in zip(m.groups(), want, strict=True)):
+            if len(m.groups()) != len(want) or not all(template_agrees(q, w) for q, w in
+                                                       zip(m.groups(), want, strict=True)):
                 bad.append(f"docs/{name}: '{m.group(0)}' quotes {m.groups()}; its command prints {want}")
         bad += printed_differences(name, getattr(LEDGER[name], "printed", ()), measured)
     return bad
@@ -324,35 +328,16 @@ def pages_differences(measured: dict) -> list[str]:
 
 def long_differences(long: dict) -> list[str]:
     """Every Printed snippet of a long group in ``long`` (``figures["long"]``: {group: {"printed": output}}) that
-    quotes a number its command did not print, and every group whose command crashed (an exit other than 0, or 1
-    for a study reporting a failed case) or did not write a file it reads; [] when all agree or nothing was run."""
+    quotes a number its command did not print, every check naming a long group that ran whose quoted text is not
+    what its files give (:func:`docsite.long_checks.long_check_differences`: the gust scorecards), and every group
+    whose command crashed (an exit other than 0, or 1 for a study reporting a failed case) or did not write a file
+    it reads; [] when all agree or nothing was run."""
     failed = [f"--long {name}: exit {g['exit']}, {[e for e in g.get('stderr', ()) if e]}"
               for name, g in long.items() if any(code not in (0, 1) for code in g.get("exit", ()))
               or any(str(e).endswith(": not written") for e in g.get("stderr", ()))]
-    return failed + [line for name, entry in LEDGER.items()
-                     for line in printed_differences(name, getattr(entry, "printed", ()), long)]
-
-
-def _agrees(quoted: str | None, want: str) -> bool:
-    """A template's text equals the quoted one; a template marked ``~`` is the printed value, which the page may
-    round: it agrees when the two differ by at most half a unit of the quoted digits plus half a unit of the printed
-    ones (a printed 0.1145 is 0.114 or 0.115 quoted; 2.16e7's unit is 1e5);
-    an optional group the page leaves out agrees."""
-    if not want.startswith("~"):
-        return quoted == want
-    if quoted is None:
-        return True
-    try:
-        return abs(float(quoted.replace(",", "")) - float(want[1:])) <= 0.5 * (_unit(quoted) + _unit(want[1:])) + 1e-12
-    except ValueError:  # a figure the command did not print (no failure where the page quotes one)
-        return False
-
-
-def _unit(text: str) -> float:
-    """One unit of the last digit ``text`` writes: 0.01 for 0.30, 1e5 for 2.16e7, 1e-3 for 1e-3."""
-    mantissa, _, exponent = text.lower().partition("e")
-    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
-    return 10.0 ** ((int(exponent) if exponent else 0) - decimals)
+    printed = [line for name, entry in LEDGER.items()
+               for line in printed_differences(name, getattr(entry, "printed", ()), long)]
+    return failed + long_check_differences(long) + printed
 
 
 def coverage() -> dict[str, dict]:

@@ -1,27 +1,30 @@
 """Compare a page's quoted numbers with a command's whole printed output, by value.
 
 A :class:`docsite.ledger_kinds.Printed` snippet agrees with an output when each number the page quotes in it
-(:data:`docsite.page_numbers.NUMBER`: thousands commas and a ratio's ``x`` dropped) equals some number the output
-prints, to within half a unit of the quoted digits plus half a unit of the printed ones (a printed 0.1145 is 0.114
-or 0.115 quoted; 25.64 is 25.6), or a thousandth or a thousand times it (a page's kW of a printed W, its MW of a
-printed kW), by magnitude, all within a few lines of output (:func:`missing`). This is looser than a check
-(it does not say *which* printed number is meant), so it is used for a command's free-text lines that no parser
-reads: a changed figure that no nearby printed figure matches is named.
+(:data:`docsite.page_numbers.NUMBER`: thousands commas and a ratio's ``x`` dropped) is some number the output prints
+rounded to the quoted digits (:func:`rounds_to`; a printed 0.1145 is 0.114 or 0.115 quoted, 25.64 is 25.6, a
+printed 10 is 10, never 11), or a thousandth, a thousand times or a millionth of one (a page's kW of a printed W,
+its MW of a printed kW, its MJ of a printed J), all within a few lines of output (:func:`missing`). Signs: a
+quoted number the page writes with a sign ("-43.5 kW", "+0.7752") must have that sign printed; one it writes
+without compares magnitudes (the page's "falls by 0.25" of a printed -0.252, "a drop of 46 kW"). This is looser
+than a check (it does not say *which* printed number is meant), so it is used for a command's free-text lines that
+no parser reads: a changed figure that no nearby printed figure matches is named. Small integers (a gust
+scorecard's "8 / 9") would still find a match in almost any long output: such figures are checks of a parsed file
+instead (:mod:`docsite.gust_scorecards`).
 
-Known to be too loose (the session review of 2026-11-30; issue 33 stays open on it): a printed number with no finer
-digits than the quoted one matches it one unit away (a printed 10 matches a quoted 11), signs are not compared, a
-printed 0 (from "LadderMill-v0") matches any quoted number below 0.5, and small integers (a gust scorecard's "8 / 9")
-find a match in almost any long output. A stricter rule (exact equality where the printed digits are no finer)
-flags about 25 snippets that quote ratios or criteria no command prints; they are to become derived or given
-entries, and the scorecards exact checks, before the rule changes.
+Until 2026-11-30 the rule was looser: two numbers agreed when they differed by half a unit of the quoted digits plus
+half a unit of the printed ones, so a printed 10 matched a quoted 11 and a printed 0 (of "LadderMill-v0") any quoted
+number below 0.5; signs were never compared.
 """
 
 from __future__ import annotations
 
 import re
+from bisect import bisect_left
 
 from docsite.page_numbers import NUMBER, prose
 
+SCALES = (1.0, 1e-3, 1e3, 1e-6)  # a page's figure in the printed unit, or in kilo- / milli- / mega- of it
 WINDOW = 60  # printed numbers a snippet's figures may spread over (a table row of a wide study prints ~20)
 
 # a printed numeral, also one glued to a unit or letter ("1.2mm", "-30+240j"): the output side is read loosely
@@ -40,6 +43,38 @@ def unit(text: str) -> float:
     return 10.0 ** ((int(exponent) if exponent else 0) - decimals)
 
 
+def rounds_to(p: float, pu: float, q: float, u: float) -> bool:
+    """Whether a printed value ``p`` (one unit of its last digit ``pu``) rounded to the digits of a quoted ``q``
+    (unit ``u``) is ``q``: where the printed digits are no finer (``pu >= u``) the two must be equal; where they are
+    finer, ``p`` within half a quoted unit of ``q`` (a tie, 0.1145 to 0.114 or 0.115, either way). Equalities hold
+    to 1e-12 relative (binary floats of decimal numerals)."""
+    slack = 1e-12 * max(abs(p), abs(q), u)
+    if pu >= u * (1.0 - 1e-9):
+        return abs(p - q) <= slack
+    return abs(p - q) <= 0.5 * u + slack
+
+
+def agrees(quoted: str, printed: str) -> bool:
+    """Whether the numeral ``printed`` (as a command writes it: "0.1145", "2.16e7", "1,555") rounded to the digits
+    of ``quoted`` (as a page writes it) is ``quoted``, signs compared (:func:`rounds_to`)."""
+    return rounds_to(value(printed), unit(printed), value(quoted), unit(quoted))
+
+
+def template_agrees(quoted: str | None, want: str) -> bool:
+    """A check's quoted text against its filled template ``want``: equal text, or for a template marked ``~`` (the
+    printed value, which the page may round) :func:`agrees`; an optional group the page leaves out (None) agrees
+    with a ``~`` template, and a ``~`` template that is no number (a figure the command did not print) agrees with
+    nothing."""
+    if not want.startswith("~"):
+        return quoted == want
+    if quoted is None:
+        return True
+    try:
+        return agrees(quoted, want[1:])
+    except ValueError:
+        return False
+
+
 def numerals(text: str) -> list[str]:
     """The numerals of ``text`` (flattened as a page is)."""
     flat = prose(text)
@@ -47,33 +82,54 @@ def numerals(text: str) -> list[str]:
 
 
 def missing(snippet: str, output: str) -> list[str]:
-    """The numbers of ``snippet`` that ``output`` does not print near one another: each quoted number must equal (by
-    magnitude, at the quoted and printed digits, or a thousandth, a thousand times or a millionth of it: a page's
-    "falls by 0.25" of a printed -0.252, its 1.8 MJ of a printed 1813 kJ or 1813000 J) a distinct printed number
-    within one window of :data:`WINDOW` consecutive printed numbers (a sentence's figures come from a few lines of
-    output, in any order); the window that leaves the fewest unmatched is taken."""
-    printed = [(abs(value(t)), unit(t)) for t in PRINTED.findall(output)]
-    quoted = [(q, abs(value(q)), unit(q)) for q in numerals(snippet)]
-
-    def hit(i: int, q: float, u: float) -> bool:
-        p, pu = printed[i]
-        return any(abs(f * p - q) <= 0.5 * (u + f * pu) + 1e-12 * max(1.0, q) for f in (1.0, 1e-3, 1e3, 1e-6))
-
-    best = [text for text, _, _ in quoted]
-    for start in range(max(1, len(printed) - WINDOW + 1)):
-        used, lost = set(), []
-        for text, q, u in quoted:
-            found = next((i for i in range(start, min(start + WINDOW, len(printed))) if i not in used
-                          and hit(i, q, u)), None)
-            if found is None:
-                lost.append(text)
-            else:
-                used.add(found)
+    """The numbers of ``snippet`` that ``output`` does not print near one another: each quoted number must be a
+    distinct printed number rounded to the quoted digits (:func:`rounds_to`), or a thousandth, a thousand times or
+    a millionth of it (its 1.8 MJ of a printed 1813 kJ or 1813000 J), by magnitude where the page writes no sign
+    (its "falls by 0.25" of a printed -0.252), within one window of :data:`WINDOW` consecutive printed numbers (a
+    sentence's figures come from a few lines of output, in any order); the window that leaves the fewest unmatched
+    is taken."""
+    printed = [(value(t), unit(t)) for t in PRINTED.findall(output)]
+    quoted = numerals(snippet)
+    hits = [[i for i, (p, pu) in enumerate(printed) if _hit(p, pu, text)] for text in quoted]
+    best = list(quoted)
+    for start in sorted({i for found in hits for i in found}):  # a best window can start at a matched number
+        near = [found[bisect_left(found, start):bisect_left(found, start + WINDOW)] for found in hits]
+        matched = _matching(near)
+        lost = [text for k, text in enumerate(quoted) if k not in matched]
         if len(lost) < len(best):
             best = lost
         if not best:
             break
     return best
+
+
+def _hit(p: float, pu: float, text: str) -> bool:
+    """Whether a printed value ``p`` (unit ``pu``) or a thousandth, thousand times or millionth of it is the quoted
+    numeral ``text``, by magnitude where ``text`` has no sign."""
+    q, u = value(text), unit(text)
+    if text[0] not in "+-":  # no sign on the page: magnitudes
+        p, q = abs(p), abs(q)
+    return any(rounds_to(f * p, f * pu, q, u) for f in SCALES)
+
+
+def _matching(candidates: list[list[int]]) -> set[int]:
+    """The quoted numbers (indices into ``candidates``, each a list of printed indices it may be) that a largest
+    one-to-one assignment to printed numbers covers (augmenting paths: a quoted 0.01 that a printed 8.7e-3 would
+    match no longer takes the 8.7 a later quoted 8.7 needs)."""
+    owner: dict[int, int] = {}
+
+    def assign(k: int, seen: set) -> bool:
+        for i in candidates[k]:
+            if i not in seen:
+                seen.add(i)
+                if i not in owner or assign(owner[i], seen):
+                    owner[i] = k
+                    return True
+        return False
+
+    for k in range(len(candidates)):
+        assign(k, set())
+    return set(owner.values())
 
 
 def printed_differences(page: str, entries: tuple, measured: dict) -> list[str]:

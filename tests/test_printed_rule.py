@@ -1,0 +1,74 @@
+"""The rule that compares a page's quoted number with a command's printed one (issue 33, point 6): the printed value
+rounded to the quoted digits must be the quoted value (docsite/printed_numbers.py), for Printed snippets and for a
+check's ``~`` template (docsite/page_figures.py).
+
+Oracles: numbers rounded by hand (0.1145 rounds to 0.114 or 0.115 as a tie, 25.64 to 25.6, 1813 kJ to 1.8 MJ; 10 is
+never 11, 25 never 25.4, 0 never 0.3). Each case below named "loose" was accepted by the rule used until 2026-11-30
+(half a quoted unit plus half a printed unit, magnitudes only): :func:`loose_agrees` restates that rule so each test
+shows the case on which the two differ.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from docsite.page_figures import pages_differences  # noqa: E402
+from docsite.printed_numbers import agrees, missing, unit, value  # noqa: E402
+
+
+def loose_agrees(quoted: str, printed: str) -> bool:
+    """The rule used until 2026-11-30, restated: magnitudes within half a quoted plus half a printed unit."""
+    return abs(abs(value(quoted)) - abs(value(printed))) <= 0.5 * (unit(quoted) + unit(printed)) + 1e-12
+
+
+NEAR_MISSES = (("11", "10"), ("0.115", "0.116"), ("25.4", "25"), ("0.3", "0"), ("1.1", "1.0"), ("-0.25", "0.252"),
+               ("+2.53", "-2.53"))
+ROUNDINGS = (("0.114", "0.1145"), ("0.115", "0.1145"), ("25.6", "25.64"), ("25.0", "25"), ("0.30", "0.3"),
+             ("-0.25", "-0.252"), ("1,555", "1555.0"), ("8.7x", "8.70"), ("2.16e7", "21640000.0"), ("0", "0.3"))
+
+
+def test_a_near_miss_is_not_a_rounding():
+    """A printed number with no finer digits than the quoted one must equal it; a signed quote needs its sign."""
+    for quoted, printed in NEAR_MISSES:
+        assert not agrees(quoted, printed), (quoted, printed)
+        assert loose_agrees(quoted, printed), (quoted, printed)  # the old rule let each through
+
+
+def test_a_rounding_agrees_under_both_rules():
+    for quoted, printed in ROUNDINGS:
+        assert agrees(quoted, printed), (quoted, printed)
+        assert loose_agrees(quoted, printed), (quoted, printed)
+    assert not agrees("0.113", "0.1145") and not agrees("25.7", "25.64")  # more than half a quoted unit away
+
+
+def test_a_printed_snippet_is_compared_by_rounding():
+    """The review's cases (2026-11-30): a scorecard one survival away, a quoted 0.3 against the 0 of
+    "LadderMill-v0", a sign the page writes; a slope's magnitude and a kJ read as MJ still agree."""
+    assert missing("survives 11/12", "lqr 10/12") == ["11"]
+    assert missing("0.3 m", "LadderMill-v0 lqr") == ["0.3"]
+    assert missing("a change of -0.25 deg", "slope 0.252") == ["-0.25"]
+    assert missing("falls by 0.25 deg per m/s", "-0.252 | -0.252") == []
+    assert missing("1.8 MJ in 138 s", "t = 137.95 s: 1813 kJ") == []
+    assert missing("C_p 0.114 and 0.115", "C_p 0.1145, 0.1145") == []
+    assert missing("25.6 m/s", "25.64 m/s") == [] and missing("25.6 m/s", "25.66 m/s") == ["25.6"]
+
+
+def test_each_quoted_number_takes_its_own_printed_one():
+    """A quoted 0.01 may read a printed 8.7 as 8.7e-3 or the printed 0.0104 after it; the 8.7 the page also quotes
+    must still find its own (a largest one-to-one assignment, not each quoted number's first match in turn)."""
+    assert missing("a 0.01 m offset, the end at 8.7 s", "end 8.7 s, offset 0.0104 m") == []
+    assert missing("8.7 s and 8.7 s", "open_loop 8.7 s") == ["8.7"]
+
+
+def test_a_check_template_is_compared_by_rounding():
+    """power_curve.md quotes fast_mill case's 45.9 kW at 1 m/s: a printed 45.94 passes, a printed 46.0 (one quoted
+    unit away, its digits no finer: accepted by the old rule) is named."""
+    powers = (45.9, 102.2, 168.6, 244.0, 323.9)
+    for p1, named in ((45.94, False), (45.9, False), (46.0, True)):
+        printed = {f"v{v}": {"P": p} for v, p in zip(range(1, 6), (p1, *powers[1:]), strict=True)}
+        bad = pages_differences({"checked_pages": ["power_curve.md"], "fast_mill_v2": printed})
+        assert bool(bad) == named and all(str(p1) in b for b in bad), (p1, bad)
