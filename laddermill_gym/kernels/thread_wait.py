@@ -12,6 +12,17 @@ per env step (the process's CPU over its steps): LadderChain-v0 1.96 -> 1.29, wi
 two threads) at ``jacobian_every`` 1 / 4 ran 747 / 749 env steps/s before and 1,096 / 1,231 after (medians of
 three alternated runs, load 3.5).
 
+The cost (issue 32 point 5): with both cores free the spin wins at mid batch sizes. ``laddermill bench-envs --quick
+--envs TetheredWing-v0 --copies 64``, load 0.1-1.5, alternated twice: 167,299 / 157,997 env steps/s with
+``OMP_WAIT_POLICY=active`` against 143,009 / 143,465 passive (-11 %); at 512 copies and one copy they tie. A short
+spin before the sleep (``GOMP_SPINCOUNT=10000``, libgomp's own default is 300,000) recovered that on the quiet
+machine (165,000 / 162,000) but loses on a loaded one: the same command beside a training run (load 3.8-4.5), three
+alternated rounds, passive against passive with ``GOMP_SPINCOUNT=10000``: TetheredWing-v0 at 64 copies 64,051 /
+54,855 / 47,588 against 39,417 / 47,478 / 43,796; LadderChain-v0 at 8 copies (``--envs LadderChain-v0 --copies 8``)
+479 / 486 / 530 against 492 / 503 / 493, its ROS34PW2 row 1,012 / 1,020 / 1,052 against 892 / 944 / 946. On the
+shared machines this package is run on, the passive wait stays the default; a user with a core per thread sets
+``OMP_WAIT_POLICY=active`` (or ``GOMP_SPINCOUNT``) before the import.
+
 :func:`passive_openmp_wait` sets ``OMP_WAIT_POLICY=passive`` at ``import laddermill_gym``, before numba's OpenMP
 pool is started (libgomp reads it when it is loaded), unless the variable is already set: a user who wants the
 spin (a quiet machine with a core per thread) sets ``OMP_WAIT_POLICY=active`` (or any value) before the import.
