@@ -126,7 +126,8 @@ MILL_FAST = Covered(
         )),
         Printed('trim_slope_v2', (
             'At C_L 0.61 (elevator 3.35 deg)',
-            "the descending trim falls 0.98 deg per m/s at 10 m/s ( ), at the scene's 2.5 deg (C_L 0.91)",
+            # the 3.35 deg table (the second command) and the scene's 2.5 deg one (the first) are far apart
+            'the descending trim falls 0.98 deg per m/s at 10 m/s', "at the scene's 2.5 deg (C_L 0.91)",
             "0.75 deg per m/s, three times v1's. The choices:",
         )),
         Printed('fast_mill_v2_5_ramp200', (

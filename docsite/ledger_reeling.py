@@ -97,6 +97,7 @@ REELING = Covered(
         # 0.781 to 137860 / 162195 = 0.850; wing / drum 0.999-1.012 (within 1.2 %); the aerodynamic force over the
         # wing's tension 1.062-1.068 and over the model's tension 35849 / 42457 = 0.844 to 146818 / 162195 = 0.905
         '**Within 30 % at 10 to 20 m/s** (seven winds;',
+        '0.75, where the single element gives',  # the reeling cycle's 45719 / 61063 W above
         "**The reel-out tension** is the largest share: 0.78-0.85 of the model's.",
         'the drum and the wing feel the same tension within 1.2 %',
         "the aerodynamic force at the flown airspeed, 1/2 rho S C_R <v_a^2> at the mean alpha's C_R, is 6-7 % "
@@ -120,7 +121,9 @@ REELING = Covered(
         Printed('reeling_cycle_40', (
             'Against Schmehl\'s model at the simulated operating point (docs/pumping.md, "Power curve"), prints '
             '45719 W simulated against 61063 W matched on the third cycle:',
-            '0.75, where the single element gives 0.64 at this wind (10 m/s).',
+        )),
+        Printed('pumping_power_curve_printed', (  # the single element's sim / matched at 10 m/s
+            '0.63 at this wind (10 m/s;', "The single element's 0.63 at 10 m/s",
         )),
         Printed('tether_200', (
             'the tether between 193 and 521 m, **5 to 13 elements of 40 m at every length**, 49058 W on the third '
@@ -128,7 +131,7 @@ REELING = Covered(
         )),
         Printed('reeling_power_curve_printed', (
             ', slow, checks 10, 12 and 14 m/s), not at 8 m/s (0.68).',
-            "The single element's 0.64 at 10 m/s becomes 0.75 on the reeling tether:",
+            'becomes 0.75 on the reeling tether:',
             '(wing / drum 0.999-1.012:',
             '57719 against 66255 N),',
             "Which of the course's parts takes how much is not yet measured. 2. **The reel-in tension**:",
@@ -141,6 +144,10 @@ REELING = Covered(
         )),
     ),
     history=(
+        History('2026-11-29', 'python -m laddermill_gym.studies.pumping.power_curve (pumping.md\'s table at 763ea12: '
+                '31262 / 49117 W at 10 m/s)', "the single-element power curve as pumping.md quoted it on 2026-11-29 "
+                "(pumping.md's table has since moved to 31711 / 50033 W: 0.63; the change not bisected)",
+                ('0.64 as written on 2026-11-29',)),
         History('2026-11-29', 'python -m laddermill_gym.studies.pumping.tether_convergence --start-length 200 '
                 '--lengths 200 40', 'the 200-500 m run as first written (78cc615), before the crosswind controller '
                 'changed (0db432c, e1ce3ac)', ('bisected: 191-521 m, 49982 W and 34567 W.)',)),

@@ -74,7 +74,6 @@ LONG = {
     "gusts_v1_ladder_chain": _gusts("LadderChain-v0", "features.md, wind.md"),
     "gusts_v1_rotorcraft": _gusts("Rotorcraft-v0", "features.md, wind.md", "ppo_rotorcraft"),
     "gusts_v1_laddermill": _gusts("LadderMill-v0", "features.md, wind.md"),
-    "gusts_v1_pumping_kite": _gusts("PumpingKite-v0", "features.md"),
     "pointmass_fidelity": Long("python -m laddermill_gym.studies.pointmass.pointmass_fidelity", "minutes",
                                "features.md, paper_podgaets2007.md"),
     # pumping.md: the scripted cycle's deviations (each about 30 s), the power curve's prose, PumpingKite-v0 / v1
@@ -177,6 +176,11 @@ LONG = {
                           "mill_fast.md"),
     "fast_mill_v2_5_ramp200": Long("python -m laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2 "
                                    "--speed 5 --start-ramp 200 --max-time 3000", "minutes", "mill_fast.md"),
+    "fast_mill_v2_start_trials": Long(" && ".join(  # the v2 scene's start table: elevators, ramp from rest, V_c
+        f"python -m laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2{elevators} --start-ramp {ramp} "
+        f"--speed {v}" for elevators, ramp, v in ((" --elevators 1.3 3.35", 30, 5), (" --elevators 1.3 3.35", 30, 2),
+                                                  (" --elevators 1.3 3.35", 500, 5), ("", 30, 5), ("", 30, 2))),
+        "minutes each", "mill_fast.md"),
     "fast_mill_v2_step": Long(" && ".join(
         f"python -m laddermill_gym.studies.mill.fast_mill step --scene laddermill_v2 --speed 2 {step}"
         for step in ("--wind-factor 1.125", "--new-speed 3")), "minutes each", "mill_fast.md"),

@@ -150,8 +150,9 @@ def gusts_v2_mill() -> dict:
 
 
 def gust_table(rows: list[dict]) -> dict:
-    """The wind page's table cells of gust-bench ``rows`` (one per controller, scenario and seed), and the sideslip
-    [deg] each failed seed's cause names (``beta``: ", "-joined, "" when none)."""
+    """The wind page's table cells of gust-bench ``rows`` (one per controller, scenario and seed: seeds survived
+    "k/n", and k and n alone as ``kept`` and ``seeds``), and the sideslip [deg] each failed seed's cause names
+    (``beta``: ", "-joined, "" when none)."""
     import numpy as np
 
     groups: dict[str, list[dict]] = {}
@@ -162,7 +163,8 @@ def gust_table(rows: list[dict]) -> dict:
         ratio = np.array([np.nan if r["energy_ratio"] is None else r["energy_ratio"] for r in rs], dtype=float)
         lateral = float(np.median([r["max_lateral_m"] for r in rs]))
         failed = [r for r in rs if not r["survived"]]
-        found[key] = {"survived": f"{len(rs) - len(failed)}/{len(rs)}",
+        found[key] = {"survived": f"{len(rs) - len(failed)}/{len(rs)}", "kept": str(len(rs) - len(failed)),
+                      "seeds": str(len(rs)),
                       "ends": ", ".join(f"{r['t_end_s']:.1f}" for r in failed) or "-",
                       "causes": [r["cause"] for r in failed], "failures": [r["failure"] for r in failed],
                       "beta": ", ".join(m.group(1) for r in failed if (m := re.search(r"beta = ([-\d.]+) deg",

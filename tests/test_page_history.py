@@ -56,8 +56,8 @@ def test_a_history_snippet_without_its_date_is_named(tmp_path):
 
 
 def test_the_printed_comparison_names_a_changed_figure():
-    """Quoted numbers against a command's output, by magnitude at the quoted and printed digits, near one another
-    (worked by hand)."""
+    """Quoted numbers against a command's output: the printed value rounded to the quoted digits, by magnitude where
+    the page writes no sign, near one another (worked by hand; the rule's own cases: tests/test_printed_rule.py)."""
     out = "3.13 MW at 25.64 m/s: C_p 0.1145; ppo_chain 5990.46 300.0 0.8103 236273.0 -"
     assert missing("3.13 MW is reached at 25.6 m/s", out) == []
     assert missing("C_p 0.114", out) == [] and missing("C_p 0.115", out) == []
