@@ -10,7 +10,8 @@ A covered page's entries:
 
 * ``checks``: (a regular expression over the page's flattened text, its groups' expected texts as ``str.format``
   templates over the measured figures, ``{group[key]...}``): the groups are re-run and compared exactly, to the
-  printed digits;
+  printed digits (a ``~`` template: the printed value rounded to the quoted digits); a check whose template names a
+  long group (a gust scorecard) is compared by ``--long`` (:mod:`docsite.long_checks`);
 * ``given``: snippets whose numbers are inputs (a command's settings, a scene's size), the papers' own figures,
   equation and figure numbers, dates and versions: nothing to re-run;
 * ``timings``: snippets whose numbers are machine timings (durations, real-time factors, memory of a process):
@@ -18,7 +19,8 @@ A covered page's entries:
 * ``derived``: snippets whose numbers are worked by hand from checked ones or read off a picture (no command
   prints them): listed so that a reader of this file sees them;
 * ``printed``: :class:`~docsite.ledger_kinds.Printed` entries, snippets each of whose numbers a group's command
-  prints (compared by value, in order, with its whole output: :mod:`docsite.printed_numbers`); the group is a page
+  prints (the printed value rounded to the quoted digits, near one another in its whole output:
+  :mod:`docsite.printed_numbers`); the group is a page
   group (re-run with the page) or a long group (:mod:`docsite.long_figures`: minutes to hours, re-run only by
   ``python -m docsite.readme_figures --long NAME``; ``--long --list`` names them with their commands);
 * ``history``: :class:`~docsite.ledger_kinds.History` records, figures of dated runs that are not kept (training runs,
