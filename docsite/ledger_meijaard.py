@@ -136,11 +136,13 @@ MEIJAARD = Covered(
             'show the shape at the end of the 3,053 s search and the tensions of its last period, and say so;',
             "The 5 m/s search also passes the cable's breaking load in the transient from rest (element 0 at 392.6 "
             's, 1.01 times it;',
-            'After the direction step the v1 mill leaves the range of its wing data sooner than v0 (6.4 s against '
-            '8.4 s), and not at slot 40 but at the wings in slots 8-15, low on the ascending leg (up to 39 deg of '
+            'After the direction step the v1 mill leaves the range of its wing data sooner than v0 (6.4 s against',
+            # v0's time is the v0 study's (below)
+            '), and not at slot 40 but at the wings in slots 8-15, low on the ascending leg (up to 39 deg of '
             'sideslip);',
         )),
         Printed('meijaard_v0', (
+            '8.4 s)',
             "6-8's shapes and tensions, a third of the power, and a smaller step going only a little longer (43.5 s "
             '-> 45.2 s).',
             'V_c = 1 m/s | periodic (Fig. 6)',
