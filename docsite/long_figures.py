@@ -24,6 +24,7 @@ from docsite.gust_scorecards import scorecards
 ROOT = Path(__file__).resolve().parent.parent
 WP = "NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision"
 CENTRAL = "lqr:configs/agents/lqr_ladder_chain_central.yaml"
+STEEP = " --elevators 1.3 3.35 --elevation 70"  # mill_fast.md: at 3.35 deg the rest layout needs a 70 deg first guess
 
 
 @dataclass(frozen=True)
@@ -178,8 +179,8 @@ LONG = {
                                    "--speed 5 --start-ramp 200 --max-time 3000", "minutes", "mill_fast.md"),
     "fast_mill_v2_start_trials": Long(" && ".join(  # the v2 scene's start table: elevators, ramp from rest, V_c
         f"python -m laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2{elevators} --start-ramp {ramp} "
-        f"--speed {v}" for elevators, ramp, v in ((" --elevators 1.3 3.35", 30, 5), (" --elevators 1.3 3.35", 30, 2),
-                                                  (" --elevators 1.3 3.35", 500, 5), ("", 30, 5), ("", 30, 2))),
+        f"--speed {v}" for elevators, ramp, v in ((STEEP, 30, 5), (STEEP, 30, 2), (STEEP, 500, 5), ("", 30, 5),
+                                                  ("", 30, 2))),
         "minutes each", "mill_fast.md"),
     "fast_mill_v2_step": Long(" && ".join(
         f"python -m laddermill_gym.studies.mill.fast_mill step --scene laddermill_v2 --speed 2 {step}"
