@@ -80,9 +80,6 @@ WORK_PRECISION = Covered(
         'ros34pw2:0.0666666666666667 ros2t:0.0666666666666667 rk4:0.0153846153846154 # 7 min',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
-        Printed('stress_tethered_wing', (
-            'a +30 % gust makes RK4 at 0.0179 s (0.94 of the estimate at rest) diverge at t = 1.6 s',
-        )),
         Printed('stress_all', (
             '| 0.01922 |',
             '| 0.02458 |',
@@ -308,7 +305,11 @@ WORK_PRECISION = Covered(
             'steps gains at most 2.5x (above).',
         )),
     ),
-    not_rerun=(  # tests/test_breakpoints.py, tests/test_batch_breakpoints.py and tests/test_stable_step.py
+    not_rerun=(
+        # a gust run of 2026-11-24 (ec22606): laddermill stress tethered_wing prints no +30 % gust case (its run of
+        # 2026-11-30, --long stress_tethered_wing: the estimate at rest 0.01901 s, no gust at RK4 0.0179 s)
+        'a +30 % gust makes RK4 at 0.0179 s (0.94 of the estimate at rest) diverge at t = 1.6 s',
+        # tests/test_breakpoints.py, tests/test_batch_breakpoints.py and tests/test_stable_step.py
         # (assertions, not printed figures); the message format named
         "DP5(4): a step ends on it); each piece runs with its own segment's straight line, so the stage at its end "
         'sees the left-hand slope. Steps with no kink inside run exactly as before (bit for bit: the golden '
