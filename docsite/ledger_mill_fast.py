@@ -13,6 +13,8 @@ MILL_FAST = Covered(
     checks=v2_rows(),
     given=(
         '# The mill at 4-5 m/s:',
+        # the start table's scene elevators and the periodic search's length (fast_mill case --max-time's default)
+        '| 1.3 / 2.5 (the scene)', 'not periodic in 1,500 s',
         # the horizontal tail's x in wing_data.md's mass build-up (-4.81 m about v1's CG; derive_wing's, checked there)
         "the pod can go no further aft than the tail (4.8 m behind v1's CG), and a smaller h raises the slope "
         '(as 1 / k)',
@@ -133,6 +135,16 @@ MILL_FAST = Covered(
             'the descending trim falls 0.98 deg per m/s at 10 m/s', "at the scene's 2.5 deg (C_L 0.91)",
             "0.75 deg per m/s, three times v1's. The choices:",
         )),
+        Printed('fast_mill_v2_start_trials', (  # the v2 scene's start table, one command per row
+            '| 30 s | 5 | ground contact at t = 365.0 s (wings tumbling from the ramp on)',
+            '| 1.3 / 3.35 | 30 s | 2 | ground contact at t = 272.9 s, cable overload at 262.6 s',
+            "1.3 / 3.35 | 500 s | 5 | ground contact at t = 663.1 s, the last period's smallest tension 0.0 kN",
+            "30 s | 5 | ground contact at t = 396.0 s (the ascending leg's first element slack: period-mean T_first "
+            '3.0 kN)',
+            '30 s | 2 |', '(last 10 period means -78.4 .. 733.8 kW);',
+            'cable overload at t = 441.0 s, peak 1.74 x the breaking load',
+        )),
+        Printed('trim_slope_v2', ('1.3 / 3.35 (descending C_L 0.61)',)),
         Printed('fast_mill_v2_5_ramp200', (
             "200 s (the scene's own ramp, only changed)",
             '5 | periodic at t = 1,822.0 s, 323.9 kW, tensions of the last period 22.9-163.6 kN, search peak 0.377 x '
@@ -215,24 +227,11 @@ MILL_FAST = Covered(
             '0.9 / 294.0 | no overload (peaks 0.93, 0.872, 0.834, 0.728, 0.811 x)',
             'the median ascending wing met 9-11 m/s of air at 5 m/s, not 5 m/s.',
         )),
-        History('2026-11-29', 'python -m laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2 with the '
-                'elevators and '
-                'ramps of each row (3161f01)',
-                "the v2 wing's start trials", (
-            '1.3 / 3.35 (descending C_L 0.61)',
-            '30 s | 5 | ground contact at t = 365.0 s (wings tumbling from the ramp on)',
-            '| 1.3 / 3.35 | 30 s | 2 | ground contact at t = 272.9 s, cable overload at 262.6 s',
-            "1.3 / 3.35 | 500 s | 5 | ground contact at t = 663.1 s, the last period's smallest tension 0.0 kN (an "
-            'exploratory run printing tensions every 40 s:',
+        History('2026-11-29', 'an exploratory script printing the v2 mill\'s tensions every 40 s during its 500 s ramp '
+                '(3161f01; the table\'s rows are fast_mill case, --long fast_mill_v2_start_trials)',
+                "an exploratory run of the v2 wing's start (not kept)", (
+            '(an exploratory run printing tensions every 40 s:',
             "calm up to 4.4 m/s, then the descending leg's lowest element slack)",
-            '| 1.3 / 2.5 (the scene)',
-            "30 s | 5 | ground contact at t = 396.0 s (the ascending leg's first element slack: period-mean T_first "
-            '3.0 kN)',
-            '| 1.3 / 2.5 (the scene)',
-            '30 s | 2 | not periodic in 1,500 s (last 10 period means -78.4 .. 733.8 kW);',
-            'cable overload at t = 441.0 s, peak 1.74 x the breaking load',
-            '1.3 / 2.5 (the scene)',
-            '| 1.3 / 2.5 (the scene)',
         )),
     ),
 )
