@@ -175,25 +175,32 @@ def test_one_warm_up_per_task_and_cache_at_a_time(monkeypatch, tmp_path):
     (tmp_path / "sleeper_target.py").write_text("import time\ndef run(kwargs):\n    time.sleep(kwargs['s'])\n")
     monkeypatch.setenv("PYTHONPATH", os.pathsep.join([str(tmp_path), os.environ.get("PYTHONPATH", "")]))
     monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path / "numba"))
-    task = ("sleeper_target:run", {"s": 30.0})
+    task = ("sleeper_target:run", {"s": 3.0})
     payload = pickle.dumps(task)
-    ask = f"from laddermill_gym.envs.kernel_warmup import claim; print(claim({payload!r}) is None)"
+    ask = f"from laddermill_gym.envs.kernel_warmup import claim; print(claim({payload!r})[0] is None)"
 
     def refused_elsewhere(**env) -> bool:
         out = subprocess.run([sys.executable, "-c", ask], capture_output=True, text=True, env=dict(os.environ, **env))
         return out.stdout.strip() == "True"
 
-    held = kernel_warmup.claim(payload)
-    assert held is not None and held >= 0 and kernel_warmup.claim(payload) is None  # a second claimant refused
-    assert kernel_warmup.start(*task, (FakeKernel([]),)) is None  # a warm-up of that task is running
+    held, path = kernel_warmup.claim(payload)
+    assert held is not None and held >= 0 and kernel_warmup.claim(payload) == (None, path)  # a second one refused
+    peer = kernel_warmup.start(*task, (FakeKernel([]),))
+    assert isinstance(peer, kernel_warmup.PeerWarmup) and peer.proc is None  # no process of its own
     os.close(held)
-    assert not refused_elsewhere()  # released with the descriptor
+    assert not refused_elsewhere() and peer.wait() == 0  # released with the descriptor: the peer's wait ends
+    began = time.monotonic()
     warmup = kernel_warmup.start(*task, (FakeKernel([]),))
-    assert warmup is not None and warmup.proc.poll() is None
-    assert refused_elsewhere() and kernel_warmup.start(*task, (FakeKernel([]),)) is None  # held by the child
+    assert isinstance(warmup, kernel_warmup.Warmup) and warmup.proc.poll() is None
+    assert refused_elsewhere()  # held by the child
     assert not refused_elsewhere(NUMBA_CACHE_DIR=str(tmp_path / "other"))  # another cache: its own warm-up
+    peer = kernel_warmup.start(*task, (FakeKernel([]),))
+    assert isinstance(peer, kernel_warmup.PeerWarmup) and peer.wait() == 0
+    assert time.monotonic() - began >= 2.5 and warmup.proc.poll() == 0  # it waited for the child's 3 s sleep to end
+    assert warmup.wait() == 0 and not refused_elsewhere()  # released when the child ended
+    warmup = kernel_warmup.start(*task, (FakeKernel([]),))
     warmup.stop()
-    assert not refused_elsewhere()  # released when the child ended
+    assert not refused_elsewhere()  # a stopped child releases it too
 
 
 def test_the_warm_ups_started_together_share_one_deadline(monkeypatch):
@@ -206,6 +213,11 @@ def test_the_warm_ups_started_together_share_one_deadline(monkeypatch):
             assert w.wait() is None
     assert time.monotonic() - began < 3.5  # one limit for both, not one each (4 s)
     assert all(p.poll() is not None for p in procs)
+    monkeypatch.setattr(kernel_warmup, "WAIT_LIMIT_S", 0.5)
+    held, path = kernel_warmup.claim(pickle.dumps(("m:f", {"deadline": 1})))
+    with pytest.warns(RuntimeWarning, match="still ran 0 s after this process's start"):
+        assert kernel_warmup.PeerWarmup(path).wait() is None  # the other warm-up outlived the limit
+    os.close(held)
 
 
 def test_a_failed_warm_up_is_named_in_a_warning():

@@ -29,7 +29,8 @@ env; it is also off when numba's JIT is disabled, when the kernels are already c
 :func:`start` with ``cached_check``) already in numba's on-disk cache. Any failure of the second process only
 costs its time: this process then compiles what it still needs. Env processes started together (an
 ``AsyncVectorEnv``'s) start one warm-up per task and cache, not one each (:func:`claim`: a file lock the warm-up
-process holds while it runs); the others compile what they need themselves, as without a warm-up.
+process holds while it runs); the others solve their starting points meanwhile, then wait for it to end
+(:class:`PeerWarmup`) and load what it compiled.
 """
 
 from __future__ import annotations
@@ -45,7 +46,7 @@ import tempfile
 import time
 import warnings
 
-__all__ = ["SWITCH", "CHILD_MODULE", "Warmup", "claim", "enabled", "on_disk", "start", "stopped_on_error"]
+__all__ = ["SWITCH", "CHILD_MODULE", "PeerWarmup", "Warmup", "claim", "enabled", "on_disk", "start", "stopped_on_error"]
 
 #: the environment variable that switches the warm-up off (value ``off``)
 SWITCH = "LADDERMILL_KERNEL_WARMUP"
@@ -149,46 +150,95 @@ def on_disk(kernels) -> bool:
     return False
 
 
-def claim(payload: bytes) -> int | None:
-    """An open file descriptor holding an exclusive lock (``flock``) on a file named for ``payload`` and
-    ``NUMBA_CACHE_DIR`` in the temporary directory; None when another process holds it (a warm-up of the same task
-    into the same cache is running: several env processes started together, e.g. by an ``AsyncVectorEnv``, start
-    one, not one each). -1 where there is no ``flock`` (not POSIX) or the file cannot be opened: no lock."""
+class PeerWarmup:
+    """A warm-up of the same task into the same numba cache that another process runs (:func:`claim` refused this
+    one): :meth:`wait` waits, until :attr:`deadline`, for that process to end (its lock released), so that this
+    process then loads what it compiled instead of compiling it a second time beside it. Same interface as
+    :class:`Warmup`."""
+
+    def __init__(self, path: str):
+        self.path = path
+        self.proc = None
+        self.returncode: int | None = None
+        self.deadline = time.monotonic() + WAIT_LIMIT_S  # [s] on the monotonic clock
+
+    def wait_for(self, line: str) -> bool:
+        """False: another process's output is not read (this process compiles what it needs before the wait)."""
+        return False
+
+    def wait(self) -> int | None:
+        """Wait for the other process's warm-up to end; 0 when it did, None when the deadline passed first (named in
+        a RuntimeWarning; this process then compiles what it still needs). Idempotent."""
+        if self.returncode is None and self.path is not None:
+            import fcntl
+
+            fd = os.open(self.path, os.O_RDWR | os.O_CREAT, 0o600)
+            try:
+                while True:
+                    try:
+                        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+                        self.returncode = 0
+                        break
+                    except OSError:
+                        if time.monotonic() >= self.deadline:
+                            break
+                        time.sleep(0.2)
+            finally:
+                os.close(fd)  # releases the lock if taken
+            if self.returncode is None:
+                warnings.warn(f"another process's kernel warm-up ({self.path}) still ran {WAIT_LIMIT_S:.0f} s after "
+                              f"this process's start; this process compiles the kernels it still needs",
+                              RuntimeWarning, stacklevel=2)
+            self.path = None
+        return self.returncode
+
+    def stop(self) -> None:
+        """Nothing to stop (the other process's warm-up serves its own env); stops waiting."""
+        self.path = None
+
+
+def claim(payload: bytes) -> tuple[int | None, str | None]:
+    """(descriptor, path): an open file descriptor holding an exclusive lock (``flock``) on the file ``path`` named
+    for ``payload`` and ``NUMBA_CACHE_DIR`` in the temporary directory, or descriptor None when another process
+    holds it (a warm-up of the same task into the same cache is running: several env processes started together,
+    e.g. by an ``AsyncVectorEnv``, start one, not one each). (-1, None) where there is no ``flock`` (not POSIX) or
+    the file cannot be opened: no lock."""
     try:
         import fcntl
     except ImportError:
-        return -1
+        return -1, None
     key = hashlib.sha256(payload + os.environ.get("NUMBA_CACHE_DIR", "").encode()).hexdigest()[:20]
     user = os.getuid() if hasattr(os, "getuid") else 0
+    path = os.path.join(tempfile.gettempdir(), f"laddermill-warmup-{user}-{key}.lock")
     try:
-        fd = os.open(os.path.join(tempfile.gettempdir(), f"laddermill-warmup-{user}-{key}.lock"),
-                     os.O_RDWR | os.O_CREAT, 0o600)
+        fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o600)
     except OSError:
-        return -1
+        return -1, None
     try:
         fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except OSError:
         os.close(fd)
-        return None
-    return fd
+        return None, path
+    return fd, path
 
 
 def start(target: str, task_kwargs: dict, kernels, cached_check: bool = False,
-          signals: bool = False) -> Warmup | None:
+          signals: bool = False) -> Warmup | PeerWarmup | None:
     """Launch the warm-up process that calls ``target`` (``"module:function"``, a function of one dict) with
     ``task_kwargs`` when :func:`enabled` (and, with ``cached_check``, ``kernels`` are not :func:`on_disk`); None
-    when not, when the arguments do not pickle, or when a warm-up of the same target and arguments is running
-    (:func:`claim`: the process holds the lock until it ends). With ``signals`` its standard output is a pipe the
-    target prints lines on (:meth:`Warmup.wait_for`); else it is discarded."""
+    when not or when the arguments do not pickle; a :class:`PeerWarmup` (which waits for it) when a warm-up of the
+    same target and arguments into the same cache runs in another process (:func:`claim`: the warm-up process holds
+    the lock until it ends). With ``signals`` its standard output is a pipe the target prints lines on
+    (:meth:`Warmup.wait_for`); else it is discarded."""
     if not enabled(kernels) or (cached_check and on_disk(kernels)):
         return None
     try:
         payload = pickle.dumps((str(target), dict(task_kwargs)))
     except Exception:  # an argument that does not pickle: compile here as before
         return None
-    lock = claim(payload)
+    lock, path = claim(payload)
     if lock is None:
-        return None
+        return PeerWarmup(path)
     try:
         proc = subprocess.Popen([sys.executable, "-m", CHILD_MODULE], stdin=subprocess.PIPE,
                                 stdout=subprocess.PIPE if signals else subprocess.DEVNULL,
