@@ -318,5 +318,27 @@ CONTROLLERS = Covered(
                  'the two seeds of L = 0.2 under the paired rule, seed 0 gave a learned policy that loses one '
                  'gusts-v1 scenario the LQR holds and seed 1 gave none: every checkpoint of seed 1 gave up more of '
                  "the LQR's validation survivals (16 to 27) than the one selected in seed 0 (10).",)),
+        # SAC from the LQR start
+        History('2026-11-30',
+                'laddermill train configs/agents/sac_tethered_wing_residual.yaml --seed 0 (6734c1e); laddermill '
+                'gust-bench --suite gusts-v1 ... --controllers lqr RUN; python -m '
+                'laddermill_gym.harness.paired_survival ... --controllers lqr RUN',
+                "the residual SAC's run of 650,008 steps in 40.29 min, not kept",
+                ("Nor did SAC from the LQR start (run of 2026-11-30). ( , ) makes SAC's pre-squash mean atanh of the "
+                 "LQR's own action (clipped 2^-30 inside the range, the float64 base shares with ) plus a residual "
+                 "started at zero and bounded to 0.2 tanh(r / 0.2); the atanh, the sum and SAC's tanh are done in "
+                 "float64 and SB3's action rescaling (the identity on [-1, 1], rounded in float32) is skipped, so the "
+                 'untrained policy acts as the LQR bit for bit, saturated controls included ( , the LQR of as the '
+                 "oracle, through SB3's zip). The environment, training disturbances and 184-episode paired selection "
+                 "(P = 2, the LQR as reference) are the bounded paired config's; SAC's own settings (critics alone for "
+                 'the first 80,000 steps, then learning rate 3e-5 for both, fixed entropy weight 0.001, initial noise '
+                 'exp(-2.5), 4 gradient steps per 8 transitions, seed 0) were fixed before it was trained or scored. '
+                 '(650,008 steps in 40.29 min on one core at a load of 3.4 to 8.5) validated 78 / 184 at the start and '
+                 'at 50,008 steps (the warm-up), then 40 to 81, but every checkpoint after the warm-up lost 23 to 47 '
+                 "episodes the LQR holds (paired scores -54 to 35 against the start's 78; the best, 350,008 steps, "
+                 "survived 81 and lost 23): it kept its start, the LQR bit for bit (gusts-v1 11 / 12 with the LQR's "
+                 'peak lateral excursion in all 18 episodes, difference 0.0 m; held-out 70 / 200, both 70, p = 1), '
+                 "which is no learned policy. Its checkpoints gave up more of the LQR's validation survivals than any "
+                 "PPO residual's (10 to 27).",)),
     ),
 )
