@@ -100,9 +100,10 @@ def warm_start(model, vecnormalize, controller, raw_venv, n_steps: int) -> dict:
 
 
 def start_residual(model, controller, raw_venv, n_steps: int) -> dict:
-    """Set ``model``'s ``ResidualPolicy`` (control/residual_policy.py) base at ``controller`` (the LQR) and its
-    normalisation at the statistics of ``n_steps`` steps of ``raw_venv`` under the controller (variance x
-    :data:`VAR_INFLATION`, clip :data:`CLIP_OBS`, as :func:`warm_start`). Returns the largest gain."""
+    """Set ``model``'s ``ResidualPolicy`` (control/residual_policy.py, PPO) or ``ResidualSACPolicy``
+    (control/residual_sac.py, SAC) base at ``controller`` (the LQR) and its normalisation at the statistics of
+    ``n_steps`` steps of ``raw_venv`` under the controller (variance x :data:`VAR_INFLATION`, clip
+    :data:`CLIP_OBS`, as :func:`warm_start`). Returns the largest gain."""
     mean, var, _ = observation_statistics(controller, raw_venv, n_steps)
     model.policy.set_base(controller, mean, VAR_INFLATION * var, CLIP_OBS)
     return dict(max_gain=float(np.abs(controller.gains).max()))
@@ -114,6 +115,7 @@ def start_from(cfg, model, vecnormalize) -> dict:
     from laddermill_gym.control.factory import make_controller
 
     ctrl = make_controller(cfg.init_from, cfg.env_id, cfg.carried_env_kwargs())
-    if hasattr(model.policy, "set_base"):  # a ResidualPolicy: raw observations, ``vecnormalize`` is the env itself
+    if hasattr(model.policy, "set_base"):  # a residual policy (PPO or SAC): raw observations, ``vecnormalize`` is
+        # the env itself
         return start_residual(model, ctrl, vecnormalize.venv, INIT_STEPS)
     return warm_start(model, vecnormalize, ctrl, vecnormalize.venv, INIT_STEPS)
