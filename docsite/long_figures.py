@@ -174,6 +174,8 @@ LONG = {
     "fast_mill_top_rule": Long(" && ".join(
         f"python -m laddermill_gym.studies.mill.fast_mill case --speed {v}{rule}" for v in (4, 5)
         for rule in ("", " --top-slots 7 --top-deg -4")), "minutes each", "mill_fast.md"),
+    "fast_mill_top_rule_3000": Long("python -m laddermill_gym.studies.mill.fast_mill case --speed 4 --top-slots 7 "
+                                    "--top-deg -4 --max-time 3000", "minutes", "mill_fast.md"),
     "trim_slope_v2": Long("python -m laddermill_gym.studies.mill.trim_slope && python -m "
                           "laddermill_gym.studies.mill.trim_slope --variants v2 --elevators 1.3 3.35", "seconds",
                           "mill_fast.md"),
