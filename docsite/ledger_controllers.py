@@ -93,6 +93,8 @@ CONTROLLERS = Covered(
         '(re-running them means training again, 25 min)',
     ),
     derived=(
+        # tanh(atanh(a) + 0.2) - a at a = 0 and 0.9 (the residual SAC's bound before the squash; closed form)
+        "the action can move by tanh(0.2) = 0.197 where the LQR acts 0, by 0.032 where it acts 0.9 and by nothing",
         # 2 pi / 0.268 and ln 2 / 0.111
         'a 23 s oscillation doubling every 6.2 s',
         # 2 pi / 0.497 rad/s, craft_stability's frequency at 10 m/s

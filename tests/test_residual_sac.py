@@ -153,6 +153,12 @@ def test_wrong_base_and_action_space_raise(started):
         ResidualSACPolicy(obs_space, spaces.Box(-2.0, 2.0, (3,), np.float32), lambda _: 1e-3)
     with pytest.raises(ValueError, match="residual_limit"):
         ResidualSACPolicy(obs_space, model.action_space, lambda _: 1e-3, residual_limit=3.0)
+    with pytest.raises(ValueError, match="flat Box action space"):
+        ResidualSACPolicy(obs_space, spaces.Discrete(3), lambda _: 1e-3)
+    with pytest.raises(ValueError, match="flat Box observation space"):
+        ResidualSACPolicy(spaces.Dict({"o": obs_space}), model.action_space, lambda _: 1e-3)
+    with pytest.raises(ValueError, match="4 actions is not 3 controls per wing"):
+        ResidualSACPolicy(obs_space, spaces.Box(-1.0, 1.0, (4,), np.float32), lambda _: 1e-3)
     with pytest.raises(ValueError, match="use_sde"):
         ResidualSACPolicy(obs_space, model.action_space, lambda _: 1e-3, use_sde=True)
     assert policy_class("ResidualSACPolicy") is ResidualSACPolicy

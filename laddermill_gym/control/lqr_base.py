@@ -23,6 +23,9 @@ BASE_BUFFERS = (("lqr_u_trim", 3), ("lqr_trim_attitude", 2), ("lqr_mid", 3), ("l
 def register_lqr_base(module: torch.nn.Module, n_actions: int) -> None:
     """Register the base's float64 buffers on ``module`` for ``n_actions`` actions (3 controls per wing,
     model.params.N_CONTROLS); gains zero and the rest one until :func:`set_lqr_base`."""
+    if n_actions <= 0 or n_actions % 3:
+        raise ValueError(f"{type(module).__name__}: {n_actions} actions is not 3 controls per wing (the LQR base "
+                         f"needs the wing envs' per-wing action groups, model.params.N_CONTROLS)")
     f64, nw = dict(dtype=torch.float64), n_actions // 3
     module.register_buffer("lqr_gains", torch.zeros((nw, 2, 6), **f64))  # LQRController's arguments
     for name, width in BASE_BUFFERS:
@@ -40,7 +43,7 @@ def lqr_base_actions(module: torch.nn.Module, raw: torch.Tensor) -> torch.Tensor
     ctrl = LQRController(*arrays, action_dtype=np.float64)
     obs = raw.detach().cpu().numpy()
     a = actions_from_controls(ctrl.controls(obs), ctrl.mid, ctrl.half_range).reshape(len(obs), -1)
-    return torch.as_tensor(a, dtype=torch.float64)
+    return torch.as_tensor(a, dtype=torch.float64, device=raw.device)
 
 
 def set_lqr_base(module: torch.nn.Module, lqr, owner: str) -> None:

@@ -130,6 +130,9 @@ class ResidualSACPolicy(SACPolicy):
             raise ValueError(f"ResidualSACPolicy: residual_limit {residual_limit!r} must be a number in (0, 2] "
                              f"(a bound of the pre-squash residual, so of the action's change) or None (no bound)")
         self.residual_limit = None if residual_limit is None else float(residual_limit)
+        for name, space in (("observation", observation_space), ("action", action_space)):
+            if not isinstance(space, spaces.Box) or len(space.shape) != 1:
+                raise ValueError(f"ResidualSACPolicy: needs a flat Box {name} space (the wing envs'), got {space}")
         low, high = np.asarray(action_space.low), np.asarray(action_space.high)
         if not (np.all(low == -1.0) and np.all(high == 1.0)):
             raise ValueError(f"ResidualSACPolicy: needs the action space [-1, 1]^n (the LQR's normalised actions), "
