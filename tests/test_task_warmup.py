@@ -13,6 +13,7 @@ import pickle
 import subprocess
 import sys
 import time
+import types
 import warnings
 
 import numpy as np
@@ -170,40 +171,67 @@ def test_the_tail_warm_up_starts_for_a_w_method_step_only(monkeypatch):
     assert targets == [wing_task.WARMUP_TARGET, wing_task.WARMUP_TAIL_TARGET, wing_task.WARMUP_TARGET]
 
 
+class CachedKernel(FakeKernel):
+    """A dispatcher stand-in with numba's cache directory (``_cache._cache_path``), as numba's dispatchers have."""
+
+    def __init__(self, directory):
+        super().__init__([])
+        self._cache = types.SimpleNamespace(_cache_path=str(directory))
+
+
 def test_one_warm_up_per_task_and_cache_at_a_time(monkeypatch, tmp_path):
     # oracle: the operating system's flock, asked from other processes while the warm-up runs and after it ended
     (tmp_path / "sleeper_target.py").write_text("import time\ndef run(kwargs):\n    time.sleep(kwargs['s'])\n")
     monkeypatch.setenv("PYTHONPATH", os.pathsep.join([str(tmp_path), os.environ.get("PYTHONPATH", "")]))
-    monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path / "numba"))
-    task = ("sleeper_target:run", {"s": 3.0})
-    payload = pickle.dumps(task)
-    ask = f"from laddermill_gym.envs.kernel_warmup import claim; print(claim({payload!r})[0] is None)"
+    task, cache = ("sleeper_target:run", {"s": 3.0}), tmp_path / "numba"
+    payload, kernels = pickle.dumps(task), (CachedKernel(cache),)
+    assert kernel_warmup.cache_directory(kernels) == str(cache)
 
-    def refused_elsewhere(**env) -> bool:
-        out = subprocess.run([sys.executable, "-c", ask], capture_output=True, text=True, env=dict(os.environ, **env))
-        return out.stdout.strip() == "True"
+    def refused_elsewhere(directory=cache) -> bool:
+        ask = (f"from laddermill_gym.envs.kernel_warmup import claim; "
+               f"print(claim({payload!r}, {str(directory)!r})[0] is None)")
+        return subprocess.run([sys.executable, "-c", ask], capture_output=True, text=True).stdout.strip() == "True"
 
-    held, path = kernel_warmup.claim(payload)
-    assert held is not None and held >= 0 and kernel_warmup.claim(payload) == (None, path)  # a second one refused
-    peer = kernel_warmup.start(*task, (FakeKernel([]),))
+    held, path = kernel_warmup.claim(payload, str(cache))
+    assert held >= 0 and os.path.dirname(path) == str(cache)  # the lock file beside the cache it guards
+    assert kernel_warmup.claim(payload, str(cache)) == (None, path)  # a second claimant refused
+    peer = kernel_warmup.start(*task, kernels)
     assert isinstance(peer, kernel_warmup.PeerWarmup) and peer.proc is None  # no process of its own
     os.close(held)
     assert not refused_elsewhere() and peer.wait() == 0  # released with the descriptor: the peer's wait ends
     began = time.monotonic()
-    warmup = kernel_warmup.start(*task, (FakeKernel([]),))
+    warmup = kernel_warmup.start(*task, kernels)
     assert isinstance(warmup, kernel_warmup.Warmup) and warmup.proc.poll() is None
     assert refused_elsewhere()  # held by the child
-    assert not refused_elsewhere(NUMBA_CACHE_DIR=str(tmp_path / "other"))  # another cache: its own warm-up
-    peer = kernel_warmup.start(*task, (FakeKernel([]),))
+    assert not refused_elsewhere(tmp_path / "other")  # another cache: its own warm-up
+    peer = kernel_warmup.start(*task, kernels)
     assert isinstance(peer, kernel_warmup.PeerWarmup) and peer.wait() == 0
     assert time.monotonic() - began >= 2.5 and warmup.proc.poll() == 0  # it waited for the child's 3 s sleep to end
     assert warmup.wait() == 0 and not refused_elsewhere()  # released when the child ended
-    warmup = kernel_warmup.start(*task, (FakeKernel([]),))
+    warmup = kernel_warmup.start(*task, kernels)
     warmup.stop()
     assert not refused_elsewhere()  # a stopped child releases it too
+    assert kernel_warmup.claim(payload, None) == (-1, None)  # no cache directory: no lock
 
 
-def test_the_warm_ups_started_together_share_one_deadline(monkeypatch):
+def test_a_file_system_without_flock_means_no_lock_not_a_wait(monkeypatch, tmp_path):
+    # oracle: the errno a file system without flock gives (NFS without lockd: ENOLCK), raised by flock itself
+    import errno
+    import fcntl
+
+    def no_flock(fd, op):
+        raise OSError(errno.ENOLCK, os.strerror(errno.ENOLCK))
+
+    monkeypatch.setattr(fcntl, "flock", no_flock)
+    assert kernel_warmup.claim(b"task", str(tmp_path)) == (-1, None)
+    monkeypatch.setattr(kernel_warmup, "WAIT_LIMIT_S", 30.0)
+    began = time.monotonic()
+    with pytest.warns(RuntimeWarning, match="cannot be waited for"):
+        assert kernel_warmup.PeerWarmup(str(tmp_path / "a.lock")).wait() is None
+    assert time.monotonic() - began < 5.0  # at once, not after the 30 s limit
+
+
+def test_the_warm_ups_started_together_share_one_deadline(monkeypatch, tmp_path):
     monkeypatch.setattr(kernel_warmup, "WAIT_LIMIT_S", 2.0)
     procs = [subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"]) for _ in range(2)]
     warmups = [kernel_warmup.Warmup(p) for p in procs]
@@ -214,8 +242,8 @@ def test_the_warm_ups_started_together_share_one_deadline(monkeypatch):
     assert time.monotonic() - began < 3.5  # one limit for both, not one each (4 s)
     assert all(p.poll() is not None for p in procs)
     monkeypatch.setattr(kernel_warmup, "WAIT_LIMIT_S", 0.5)
-    held, path = kernel_warmup.claim(pickle.dumps(("m:f", {"deadline": 1})))
-    with pytest.warns(RuntimeWarning, match="still ran 0 s after this process's start"):
+    held, path = kernel_warmup.claim(pickle.dumps(("m:f", {"deadline": 1})), str(tmp_path))
+    with pytest.warns(RuntimeWarning, match="still ran 0 s after this env's construction began"):
         assert kernel_warmup.PeerWarmup(path).wait() is None  # the other warm-up outlived the limit
     os.close(held)
 

@@ -27,10 +27,12 @@ This moves CPU seconds to the other core; it removes none: the wall time shrinks
 (docs/benchmarks.md, "Cold start"). ``LADDERMILL_KERNEL_WARMUP=off`` (:data:`SWITCH`) switches it off for every
 env; it is also off when numba's JIT is disabled, when the kernels are already compiled in this process or (for
 :func:`start` with ``cached_check``) already in numba's on-disk cache. Any failure of the second process only
-costs its time: this process then compiles what it still needs. Env processes started together (an
-``AsyncVectorEnv``'s) start one warm-up per task and cache, not one each (:func:`claim`: a file lock the warm-up
-process holds while it runs); the others solve their starting points meanwhile, then wait for it to end
-(:class:`PeerWarmup`) and load what it compiled.
+costs its time: this process then compiles what it still needs. Env processes started together (SB3's
+``SubprocVecEnv``'s, Ray workers') start one warm-up per task and numba cache, not one each (:func:`claim`: a file
+lock in the cache's directory that the warm-up process holds while it runs); the others solve their starting points
+meanwhile, then wait for it to end (:class:`PeerWarmup`) and load what it compiled. The wing's third process is
+chosen from the env's arguments (``physics_step``, ``scene_options``): a scene file of one's own whose integrator is
+a W method gets the two-process warm-up.
 """
 
 from __future__ import annotations
@@ -42,11 +44,11 @@ import pickle
 import select
 import subprocess
 import sys
-import tempfile
 import time
 import warnings
 
-__all__ = ["SWITCH", "CHILD_MODULE", "PeerWarmup", "Warmup", "claim", "enabled", "on_disk", "start", "stopped_on_error"]
+__all__ = ["SWITCH", "CHILD_MODULE", "PeerWarmup", "Warmup", "cache_directory", "claim", "enabled", "on_disk",
+           "start", "stopped_on_error"]
 
 #: the environment variable that switches the warm-up off (value ``off``)
 SWITCH = "LADDERMILL_KERNEL_WARMUP"
@@ -154,7 +156,8 @@ class PeerWarmup:
     """A warm-up of the same task into the same numba cache that another process runs (:func:`claim` refused this
     one): :meth:`wait` waits, until :attr:`deadline`, for that process to end (its lock released), so that this
     process then loads what it compiled instead of compiling it a second time beside it. Same interface as
-    :class:`Warmup`."""
+    :class:`Warmup`; what it does not do: read the other process's output (:meth:`wait_for` is False at once, so
+    the mill's peer compiles the static equilibrium's kernel itself unless the other process has cached it)."""
 
     def __init__(self, path: str):
         self.path = path
@@ -167,28 +170,36 @@ class PeerWarmup:
         return False
 
     def wait(self) -> int | None:
-        """Wait for the other process's warm-up to end; 0 when it did, None when the deadline passed first (named in
-        a RuntimeWarning; this process then compiles what it still needs). Idempotent."""
+        """Wait for the other process's warm-up to end; 0 when it did, None when the deadline passed first or the
+        lock cannot be asked (named in a RuntimeWarning; this process then compiles what it still needs).
+        Idempotent."""
         if self.returncode is None and self.path is not None:
             import fcntl
 
-            fd = os.open(self.path, os.O_RDWR | os.O_CREAT, 0o600)
+            why = f"still ran {WAIT_LIMIT_S:.0f} s after this env's construction began"
             try:
-                while True:
+                fd = os.open(self.path, os.O_RDWR | os.O_CREAT, 0o600)
+            except OSError as e:
+                fd, why = -1, f"cannot be waited for ({e})"
+            try:
+                while fd >= 0:
                     try:
                         fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
                         self.returncode = 0
                         break
-                    except OSError:
+                    except BlockingIOError:  # still held
                         if time.monotonic() >= self.deadline:
                             break
                         time.sleep(0.2)
+                    except OSError as e:  # a file system without flock: no use waiting
+                        why = f"cannot be waited for ({e})"
+                        break
             finally:
-                os.close(fd)  # releases the lock if taken
+                if fd >= 0:
+                    os.close(fd)  # releases the lock if taken
             if self.returncode is None:
-                warnings.warn(f"another process's kernel warm-up ({self.path}) still ran {WAIT_LIMIT_S:.0f} s after "
-                              f"this process's start; this process compiles the kernels it still needs",
-                              RuntimeWarning, stacklevel=2)
+                warnings.warn(f"another process's kernel warm-up ({self.path}) {why}; this process compiles the "
+                              f"kernels it still needs", RuntimeWarning, stacklevel=2)
             self.path = None
         return self.returncode
 
@@ -197,28 +208,44 @@ class PeerWarmup:
         self.path = None
 
 
-def claim(payload: bytes) -> tuple[int | None, str | None]:
+def cache_directory(kernels) -> str | None:
+    """The directory numba's on-disk cache of the first of ``kernels`` (dispatchers) uses (``NUMBA_CACHE_DIR``'s
+    subfolder, the source's ``__pycache__`` or numba's user-wide fallback), or None when it has none."""
+    for k in kernels:
+        path = getattr(getattr(k, "_cache", None), "_cache_path", None)
+        if isinstance(path, str) and path:
+            return path
+    return None
+
+
+def claim(payload: bytes, directory: str | None) -> tuple[int | None, str | None]:
     """(descriptor, path): an open file descriptor holding an exclusive lock (``flock``) on the file ``path`` named
-    for ``payload`` and ``NUMBA_CACHE_DIR`` in the temporary directory, or descriptor None when another process
-    holds it (a warm-up of the same task into the same cache is running: several env processes started together,
-    e.g. by an ``AsyncVectorEnv``, start one, not one each). (-1, None) where there is no ``flock`` (not POSIX) or
-    the file cannot be opened: no lock."""
+    for ``payload`` in ``directory`` (numba's cache directory of the task's kernels, :func:`cache_directory`: the
+    same task into the same cache shares one file; the file stays beside the cache it guards), or descriptor None
+    when another process holds it (a warm-up of the same task into the same cache is running: several env
+    processes started together, e.g. by SB3's ``SubprocVecEnv``, start one, not one each). (-1, None), no lock,
+    where there is no directory, no ``flock`` (not POSIX), the file cannot be opened or the file system refuses
+    ``flock``."""
     try:
         import fcntl
     except ImportError:
         return -1, None
-    key = hashlib.sha256(payload + os.environ.get("NUMBA_CACHE_DIR", "").encode()).hexdigest()[:20]
-    user = os.getuid() if hasattr(os, "getuid") else 0
-    path = os.path.join(tempfile.gettempdir(), f"laddermill-warmup-{user}-{key}.lock")
+    if directory is None:
+        return -1, None
+    path = os.path.join(directory, f"laddermill-warmup-{hashlib.sha256(payload).hexdigest()[:20]}.lock")
     try:
+        os.makedirs(directory, exist_ok=True)
         fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o600)
     except OSError:
         return -1, None
     try:
         fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-    except OSError:
+    except BlockingIOError:  # held by another process
         os.close(fd)
         return None, path
+    except OSError:  # ENOLCK, ENOSYS: a file system without flock
+        os.close(fd)
+        return -1, None
     return fd, path
 
 
@@ -236,7 +263,7 @@ def start(target: str, task_kwargs: dict, kernels, cached_check: bool = False,
         payload = pickle.dumps((str(target), dict(task_kwargs)))
     except Exception:  # an argument that does not pickle: compile here as before
         return None
-    lock, path = claim(payload)
+    lock, path = claim(payload, cache_directory(kernels))
     if lock is None:
         return PeerWarmup(path)
     try:
