@@ -11,7 +11,8 @@ import yaml
 
 pytest.importorskip("stable_baselines3")
 
-from laddermill_gym.control.residual_policy import ResidualPolicy, policy_class  # noqa: E402
+from laddermill_gym.control.policy_names import policy_class  # noqa: E402
+from laddermill_gym.control.residual_policy import ResidualPolicy  # noqa: E402
 from laddermill_gym.control.rl_config import load_rl_config  # noqa: E402
 from laddermill_gym.control.warm_start import start_residual  # noqa: E402
 from laddermill_gym.model.configio import ConfigError  # noqa: E402

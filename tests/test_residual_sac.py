@@ -12,7 +12,7 @@ import yaml
 
 pytest.importorskip("stable_baselines3")
 
-from laddermill_gym.control.residual_policy import policy_class  # noqa: E402
+from laddermill_gym.control.policy_names import policy_class  # noqa: E402
 from laddermill_gym.control.residual_sac import ResidualSACPolicy  # noqa: E402
 from laddermill_gym.control.rl_config import load_rl_config  # noqa: E402
 from laddermill_gym.control.warm_start import start_residual  # noqa: E402

@@ -29,9 +29,8 @@ from stable_baselines3.common.policies import ActorCriticPolicy
 from torch import nn
 
 from laddermill_gym.control.lqr_base import lqr_base_actions, register_lqr_base, set_lqr_base
-from laddermill_gym.control.residual_sac import ResidualSACPolicy
 
-__all__ = ["ResidualPolicy", "POLICIES", "policy_class"]
+__all__ = ["ResidualPolicy"]
 
 
 class ResidualPolicy(ActorCriticPolicy):
@@ -115,15 +114,3 @@ class ResidualPolicy(ActorCriticPolicy):
                                 ("obs_std", np.sqrt(np.asarray(obs_var, dtype=np.float64) + 1e-8)),
                                 ("clip_obs", clip_obs)):
                 getattr(self, name).copy_(torch.as_tensor(np.asarray(value, dtype=np.float64)))
-
-
-#: Policy names a training config's ``policy`` may give: SB3's default, this module's (PPO) and SAC's residual
-#: policy (control/residual_sac.py).
-POLICIES = {"MlpPolicy": "MlpPolicy", "ResidualPolicy": ResidualPolicy, "ResidualSACPolicy": ResidualSACPolicy}
-
-
-def policy_class(name: str):
-    """The policy (an SB3 alias or class) of a config's ``policy`` ``name``; ValueError naming the known ones."""
-    if name not in POLICIES:
-        raise ValueError(f"policy {name!r}: not one of {sorted(POLICIES)}")
-    return POLICIES[name]

@@ -205,7 +205,7 @@ def train(cfg: RLConfig, out: Path, threads: int | None = None) -> dict:
         venv = VecNormalize(venv, norm_obs=True, norm_reward=False, clip_obs=10.0)
     eval_env = evaluation_env(cfg)
     algo = getattr(sb3, cfg.algorithm)
-    from laddermill_gym.control.residual_policy import policy_class
+    from laddermill_gym.control.policy_names import policy_class
 
     model = algo(policy_class(cfg.policy), venv, seed=cfg.seed, policy_kwargs=cfg.policy_kwargs or None,
                  tensorboard_log=str(out / "tb"), verbose=0, device="cpu", **cfg.hyperparameters)
