@@ -33,6 +33,11 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
         'numba thread.',
     ),
     timings=(
+        # the chain's kept-matrix CPU speed-ups (the run committed in f45b8d3; --long wp_chain_kept_matrix on
+        # 2026-11-30 at load 1-2 printed ros2 2.31 / 2.96 / 3.46 / 3.71x, ros2t 2.30 / 2.97 / 3.47 / 3.79x, ROS34PW2
+        # 1.49 / 1.72 / 1.89 / 1.98x)
+        '| ros2 | 2.24x | 2.79x | 3.53x | **3.93x** | | ros2t | 2.32x | 2.94x | 3.58x | 3.82x |',
+        '| ROS34PW2 | 1.46x | 1.79x | 1.93x | 1.98x |', '**5x is not met on the chain: 3.9x at best**,',
         # the mill's kept-matrix CPU speed-ups (the run committed in f45b8d3; --long wp_mill_kept_matrix on
         # 2026-11-30 at load 1-7 printed ros2 3.12 / 3.97 / 4.62 / 2.25x, ros2t 3.15 / 3.94 / 4.62 / 5.03x, ROS34PW2
         # 2.00 / 2.33 / 2.52 / 2.63x: ros2t kept 8 above 5x in that run)
@@ -94,11 +99,8 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
             '- On the mill RK4 at 0.0167 s breaks down at 0.33 s.',
         )),
         Printed('wp_chain_kept_matrix', (
-            '| ros2 | 2.24x | 2.79x | 3.53x | **3.93x** | | ros2t | 2.32x | 2.94x | 3.58x | 3.82x |',
-            '| ROS34PW2 | 1.46x | 1.79x | 1.93x | 1.98x |',
             'Every kept-matrix run still meets the tolerances with room: at most 2.0e-3 m in lateral offset (ros2, '
             'as every step), 3.0e-4 rad in attitude and 1.2e-4 in tension.',
-            '**5x is not met on the chain: 3.9x at best**,',
         )),
         Printed('wp_mill_kept_matrix', (  # its full table and its table of the fastest runs are far apart
             'On the mill the kept matrix costs accuracy in the generator power: ros2 kept 8 at 0.05 s is 2.0e-2 off '
