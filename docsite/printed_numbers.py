@@ -27,8 +27,9 @@ from docsite.page_numbers import NUMBER, prose
 SCALES = (1.0, 1e-3, 1e3, 1e-6)  # a page's figure in the printed unit, or in kilo- / milli- / mega- of it
 WINDOW = 60  # printed numbers a snippet's figures may spread over (a table row of a wide study prints ~20)
 
-# a printed numeral, also one glued to a unit or letter ("1.2mm", "-30+240j"): the output side is read loosely
-PRINTED = re.compile(r"[-+]?\d[\d,]*(?:\.\d+)?(?:e[-+]?\d+)?")
+# a printed numeral, also one glued to a unit or letter ("1.2mm", "-30+240j"): the output side is read loosely;
+# thousands commas only between groups of exactly three digits ("1,555", "12,000,000"), so "[1,2]" is 1 and 2
+PRINTED = re.compile(r"[-+]?(?:\d{1,3}(?:,\d{3})+(?!\d)|\d+)(?:\.\d+)?(?:e[-+]?\d+)?")
 
 
 def value(text: str) -> float:

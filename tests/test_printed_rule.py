@@ -57,6 +57,14 @@ def test_a_printed_snippet_is_compared_by_rounding():
     assert missing("25.6 m/s", "25.64 m/s") == [] and missing("25.6 m/s", "25.66 m/s") == ["25.6"]
 
 
+def test_thousands_commas_group_three_digits_only():
+    """The review's case (2026-11-30): a printed "1,2" (a list, a pair) is 1 and 2, not 12; "1,555" and
+    "8,679,440" are one number each."""
+    assert missing("12 of them", "pair 1,2") == ["12"]
+    assert missing("1 and 2", "[1,2]") == []
+    assert missing("1,555 and 8,679,440 steps", "1,555 rows, 8,679,440 steps") == []
+
+
 def test_each_quoted_number_takes_its_own_printed_one():
     """A quoted 0.01 may read a printed 8.7 as 8.7e-3 or the printed 0.0104 after it; the 8.7 the page also quotes
     must still find its own (a largest one-to-one assignment, not each quoted number's first match in turn)."""
