@@ -18,6 +18,24 @@ DOCS = Path(__file__).resolve().parent.parent / "laddermill_gym" / "docs"
 FIELD = re.compile(r"\{([\w.]+)\[")  # a template's group name
 
 
+def check_difference(name: str, flat: str, pattern: str, templates: tuple, figures: dict,
+                     words: tuple[str, str]) -> str | None:
+    """What is wrong with one check of page ``name`` (its text ``flat``, whitespace flattened): no text matches
+    ``pattern``; ``figures`` lack a field a template names (``words[0] + field``, e.g. "its command printed no
+    {field} (...)"); or the quoted groups are not what the templates give (``words[1] + figures``); None when it
+    agrees."""
+    m = re.search(pattern, flat)
+    if m is None:
+        return f"docs/{name}: no text matches the check {pattern!r}"
+    try:
+        want = tuple(t.format(**figures) for t in templates)
+    except (KeyError, IndexError) as e:
+        return f"docs/{name}: '{m.group(0)}': {words[0].format(e)}"
+    if len(m.groups()) != len(want) or not all(template_agrees(q, w) for q, w in zip(m.groups(), want, strict=True)):
+        return f"docs/{name}: '{m.group(0)}' quotes {m.groups()}; {words[1]} {want}"
+    return None
+
+
 def long_groups(templates: tuple) -> set[str]:
     """The long groups a check's templates name (empty for a check of page groups)."""
     return {g for t in templates for g in FIELD.findall(t)} & set(LONG)
@@ -34,16 +52,9 @@ def long_check_differences(long: dict) -> list[str]:
             if not groups or not groups <= set(long):
                 continue
             flat = flat or " ".join((DOCS / name).read_text().split())
-            m = re.search(pattern, flat)
-            if m is None:
-                bad.append(f"docs/{name}: no text matches the check {pattern!r}")
-                continue
-            try:
-                want = tuple(t.format(**long) for t in templates)
-            except (KeyError, IndexError) as e:
-                bad.append(f"docs/{name}: '{m.group(0)}': --long {sorted(groups)} gave no {e} (did it crash?)")
-                continue
-            if len(m.groups()) != len(want) or not all(template_agrees(q, w) for q, w in
-                                                       zip(m.groups(), want, strict=True)):
-                bad.append(f"docs/{name}: '{m.group(0)}' quotes {m.groups()}; --long {sorted(groups)} gives {want}")
+            wrong = check_difference(name, flat, pattern, templates, long,
+                                     (f"--long {sorted(groups)} gave no {{}} (did it crash?)",
+                                      f"--long {sorted(groups)} gives"))
+            if wrong:
+                bad.append(wrong)
     return bad

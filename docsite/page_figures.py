@@ -36,7 +36,7 @@ from docsite.config_figures import cable_dyneema, craft_data
 from docsite.controllers_figures import CONTROLLER_GROUPS
 from docsite.design_figures import design_data
 from docsite.learned_figures import gain_locality
-from docsite.long_checks import long_check_differences, long_groups
+from docsite.long_checks import check_difference, long_check_differences, long_groups
 from docsite.mill_figures import MILL_GROUPS
 from docsite.numerics_figures import numerics_data
 from docsite.page_ledger import LEDGER, Covered
@@ -44,7 +44,7 @@ from docsite.page_numbers import prose, unaccounted
 from docsite.paper_figures import printed_match, run_command
 from docsite.pointmass_figures import pointmass_data
 from docsite.precision_figures import PRECISION_GROUPS
-from docsite.printed_numbers import printed_differences, template_agrees
+from docsite.printed_numbers import printed_differences
 from docsite.pumping_figures import PUMPING_GROUPS
 from docsite.rotor_chart_figures import rotor_chart
 from docsite.rotor_figures import parse_rotor_design, scan_figures
@@ -310,18 +310,10 @@ def pages_differences(measured: dict) -> list[str]:
         for pattern, templates in LEDGER[name].checks:
             if long_groups(templates):  # compared by --long (docsite/long_checks.py)
                 continue
-            m = re.search(pattern, flat)
-            if m is None:
-                bad.append(f"docs/{name}: no text matches the check {pattern!r}")
-                continue
-            try:
-                want = tuple(t.format(**measured) for t in templates)
-            except (KeyError, IndexError) as e:
-                bad.append(f"docs/{name}: '{m.group(0)}': its command printed no {e} (see the group's docstring)")
-                continue
-            if len(m.groups()) != len(want) or not all(template_agrees(q, w) for q, w in
-                                                       zip(m.groups(), want, strict=True)):
-                bad.append(f"docs/{name}: '{m.group(0)}' quotes {m.groups()}; its command prints {want}")
+            wrong = check_difference(name, flat, pattern, templates, measured,
+                                     ("its command printed no {} (see the group's docstring)", "its command prints"))
+            if wrong:
+                bad.append(wrong)
         bad += printed_differences(name, getattr(LEDGER[name], "printed", ()), measured)
     return bad
 

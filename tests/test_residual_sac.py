@@ -17,6 +17,7 @@ from laddermill_gym.control.residual_sac import ResidualSACPolicy  # noqa: E402
 from laddermill_gym.control.rl_config import load_rl_config  # noqa: E402
 from laddermill_gym.control.warm_start import start_residual  # noqa: E402
 from laddermill_gym.model.configio import ConfigError  # noqa: E402
+from tests.lqr_observations import lqr_observations  # noqa: E402
 
 ENV_ID = "laddermill_gym/TetheredWing-v0"
 CONFIG = "configs/agents/sac_tethered_wing_residual.yaml"
@@ -44,18 +45,7 @@ def started():
     model, bounded = sac_model(venv), sac_model(venv, residual_limit=LIMIT)
     for m in (model, bounded):
         start_residual(m, lqr, venv, 50)
-    env = gym.make(ENV_ID)
-    obs, _ = env.reset(seed=0)
-    rng = np.random.default_rng(1)
-    rows = []
-    for _ in range(100):
-        rows.append(obs)
-        obs, _, term, trunc, _ = env.step(lqr.predict(obs)[0])
-        assert not (term or trunc)
-    rows = np.array(rows)
-    # far from trim as well: deviations of 3 to 300 of the rollout's standard deviations, controls at the clip
-    far = [rows[::4] + rng.normal(size=rows[::4].shape) * k * rows.std(axis=0) for k in (3.0, 30.0, 300.0)]
-    return model, bounded, lqr, np.concatenate([rows, *far]).astype(np.float32)
+    return model, bounded, lqr, lqr_observations(lqr, ENV_ID)
 
 
 @pytest.mark.parametrize("which", [0, 1])
