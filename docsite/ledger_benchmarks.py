@@ -9,6 +9,20 @@ from __future__ import annotations
 
 from docsite.ledger_kinds import Covered, Printed
 
+SA10, SA40 = "{step_accuracy_10[%s]}", "~{step_accuracy_40[LadderMill-v2][%s]}"
+#: the accuracy runs' figures worked from their printed lines (docsite/printed_ratios.py, compared by --long
+#: step_accuracy_10 / step_accuracy_40; until 2026-11-30 derived entries): the mill's ROS2 error 0.06437 m in cm; the
+#: 40 s run's ends, (periods + 1) x the 50 ms control period, and the mill's ROS34PW2 error 0.02623 m in cm; the 1e-3
+#: bound: the next power of ten above the steps' printed shares over 10 s (3.2e-4, 4.5e-4 and 7.0e-7, 1.9e-5)
+STEP_CHECKS = (
+    (r"50 ms \| (\d+\.\d+) cm \|", ("~" + SA10 % "LadderMill-v2][ros2][cm",)),
+    (r"\((\d+\.\d+) and (\d+\.\d+) s\), within (\d+\.\d+) cm", (SA40 % "ros34pw2][end_s", SA40 % "reference][end_s",
+                                                                 SA40 % "ros34pw2][cm")),
+    (r"ROS2 ends it after \d+ \((\d+\.\d+) s\)", (SA40 % "ros2][end_s",)),
+    (r"ROS34PW2 is the step of choice: within (1e-\d) of the extent on both", (SA10 % "share_bound][ros34pw2",)),
+    (r"ROS2 is cheaper again and also within (1e-\d) over 10 s", (SA10 % "share_bound][ros2",)),
+)
+
 BENCHMARKS = Covered(
     groups=('pointmass_benchmark', 'bench_stable_dt', 'stable_steps'),
     checks=((r"largest stable RK4 dt \(bisection against DP5; eigenvalue estimate\) \| ([\d.]+) s; ([\d.]+) s \| "
@@ -17,7 +31,8 @@ BENCHMARKS = Covered(
               "{bench_stable_dt[ladder_chain]}", "~{stable_steps[ladder_chain][rk4]}")),
             (r"at 1 cm \(([\d,]+) elements\)\. The simulation holds ([\d.]+) MB of arrays on two threads",
              ("{pointmass_benchmark[elements]}", "{pointmass_benchmark[held_MB]}")),
-            (r"Voigt damping to ([\d.e-]+) s steps", ("{pointmass_benchmark[explicit_dt]}",))),
+            (r"Voigt damping to ([\d.e-]+) s steps", ("{pointmass_benchmark[explicit_dt]}",)),
+            *STEP_CHECKS),
     given=(
         'wings / nodes / elements / states | 1 / 1 / 2 / 19 | 101 / 0 / 102 / 1313',
         # the accuracy table's physics steps (the envs' registered steps and the command's --steps)
@@ -262,13 +277,6 @@ BENCHMARKS = Covered(
     ),
     derived=(
         '1,020 x 1.6 x 2 = 3,260 for the chain and 800 x 1.9 x 2 = 3,040 for the mill',
-        '| 6.4 cm |',  # the accuracy table's ROS2 error on the mill: step_accuracy_10 prints 0.06437 m
-        # the 40 s run (step_accuracy_40, 2026-11-30): the ends are (periods + 1) x the 50 ms control period, the
-        # mill's ROS34PW2 error 0.02623 m in cm; the 1e-3 criterion against the printed shares (3.2e-4, 4.5e-4 and
-        # 7.0e-7, 1.9e-5 over 10 s)
-        '(16.15 and 16.10 s), within 2.6 cm', '(15.9 s),',
-        'ROS34PW2 is the step of choice: within 1e-3 of the extent on both ( holds it), third order,',
-        'ROS2 is cheaper again and also within 1e-3 over 10 s.',
     ),
     not_rerun=(
         # the eigenvalue estimate just after a transfer (moving_cable.md's, likewise not re-run) and the operating

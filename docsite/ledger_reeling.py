@@ -17,10 +17,27 @@ CURVE_CHECKS = curve_checks("reeling_power_curve", WINDS) + tuple(
     (rf"\| {v} \| (-?\d+) \| (-?\d+) \| (-?\d+) \| (-?\d+) \| (\d+) / (\d+) \|",
      tuple(f"{{reeling_power_curve[v{v}][{k}]}}" for k in ("out", "in", "within", "transitions", "T_in", "model_T_in")))
     for v in WINDS)
+#: the page's ratios and ranges of the reeling power curve's printed columns and of the reeling cycle's third cycle
+#: (docsite/printed_ratios.py, compared by --long reeling_power_curve_printed / reeling_cycle_40; until 2026-11-30
+#: derived entries): sim / matched >= 0.7 at 10-20 m/s; T_out / matched T_out 0.781-0.850; wing / drum within 1.24 %;
+#: the aerodynamic force over the wing's tension 6.2-6.8 % above, over the model's 0.844-0.905
+RC = "reeling_power_curve_printed"
+RATIO_CHECKS = (
+    (r"\*\*Within 30 % at (\d+) to (\d+) m/s\*\*", (f"{{{RC}[within30][lo]}}", f"{{{RC}[within30][hi]}}")),
+    (r"on the third cycle: (\d\.\d+), where the single element gives", ("~{reeling_cycle_40[last_ratio]}",)),
+    (r"is the largest share: (\d\.\d+)-(\d\.\d+) of the model's", (f"~{{{RC}[tension_model][lo]}}",
+                                                                    f"~{{{RC}[tension_model][hi]}}")),
+    (r"the drum and the wing feel the same tension within (\d+\.\d+) %", (f"~{{{RC}[wing_drum_pct]}}",)),
+    (r"1/2 rho S C_R <v_a\^2> at the mean alpha's C_R, is (\d+)-(\d+) % above the tension at the wing",
+     (f"~{{{RC}[aero_above_pct][lo]}}", f"~{{{RC}[aero_above_pct][hi]}}")),
+    *((rf"{head} (\d\.\d+)-(\d\.\d+) of the model's{tail}", (f"~{{{RC}[aero_model][lo]}}",
+                                                                f"~{{{RC}[aero_model][hi]}}"))
+      for head, tail in (("and it is itself", r" tension \(10 m/s:"), ("a mean squared airspeed of", ""))),
+)
 
 REELING = Covered(
     groups=("tether_convergence", "reeling_power_curve"),
-    checks=REELING_CHECKS + CURVE_CHECKS,
+    checks=REELING_CHECKS + CURVE_CHECKS + RATIO_CHECKS,
     given=(
         '(Re-run 2026-11-30; as first written on',  # the re-run's date
         "the 40 m elements' weight and drag take almost nothing of it in crosswind flight);",  # the element length
@@ -92,18 +109,6 @@ REELING = Covered(
         '(about 6 minutes on the shared 2-core machine at a load of 7):',
     ),
     derived=(
-        # ratios of the reeling power curve's printed columns (--long reeling_power_curve_printed, 2026-11-30): sim W
-        # / matched W 0.75-0.86 at 10-20 m/s (0.70 and above: within 30 %); T_out / matched T_out 33145 / 42457 =
-        # 0.781 to 137860 / 162195 = 0.850; wing / drum 0.999-1.012 (within 1.2 %); the aerodynamic force over the
-        # wing's tension 1.062-1.068 and over the model's tension 35849 / 42457 = 0.844 to 146818 / 162195 = 0.905
-        '**Within 30 % at 10 to 20 m/s** (seven winds;',
-        '0.75, where the single element gives',  # the reeling cycle's 45719 / 61063 W above
-        "**The reel-out tension** is the largest share: 0.78-0.85 of the model's.",
-        'the drum and the wing feel the same tension within 1.2 %',
-        "the aerodynamic force at the flown airspeed, 1/2 rho S C_R <v_a^2> at the mean alpha's C_R, is 6-7 % "
-        "above the tension at the wing (gravity and the turns' inertia take that);",
-        "and it is itself 0.84-0.91 of the model's tension (10 m/s:",
-        "so the wing flies a mean squared airspeed of 0.84-0.91 of the model's (at the same C_R):",
         # closed forms worked from the page's inputs, or from the checked table
         'the node above it oscillates at sqrt(3 EA / (mu l_d l_n)) = 735 rad/s at 10 m of 40 m.',
         '735 rad/s at 40 m of the 25 mm tether (EA 2.16e7 N, 0.3 kg/m).',

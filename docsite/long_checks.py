@@ -1,8 +1,9 @@
 """Checks of the docs pages whose figures a long group gives (:data:`docsite.long_figures.LONG`): a check of
 :data:`docsite.page_ledger.LEDGER` whose templates name a long group (``{gusts_v1_rotorcraft[scorecard][lqr]}``) is
 compared only when that group ran (``python -m docsite.readme_figures --skip-readme --long NAME``), against the
-figures parsed from the files the group reads (:func:`docsite.gust_scorecards.scorecards`); ``--pages`` leaves it
-out. Compared as a page check is (:func:`docsite.printed_numbers.template_agrees`).
+figures parsed from the files the group reads (:func:`docsite.gust_scorecards.scorecards`) and the ratios, ranges
+and bounds worked from its printed columns (:mod:`docsite.printed_ratios`); ``--pages`` leaves it out. Compared as a
+page check is (:func:`docsite.printed_numbers.template_agrees`).
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from pathlib import Path
 from docsite.long_figures import LONG
 from docsite.page_ledger import LEDGER
 from docsite.printed_numbers import template_agrees
+from docsite.printed_ratios import with_ratios
 
 DOCS = Path(__file__).resolve().parent.parent / "laddermill_gym" / "docs"
 FIELD = re.compile(r"\{([\w.]+)\[")  # a template's group name
@@ -43,8 +45,9 @@ def long_groups(templates: tuple) -> set[str]:
 
 def long_check_differences(long: dict) -> list[str]:
     """Every check that names a long group in ``long`` ({group: figures}, as ``measure_long`` returns them under
-    "long") whose quoted text is not what the group's files give; [] when all agree or none ran."""
-    bad = []
+    "long") whose quoted text is not what the group's files give, or what :mod:`docsite.printed_ratios` works from its
+    printed output; [] when all agree or none ran."""
+    long, bad = with_ratios(long), []
     for name, entry in LEDGER.items():
         flat = None
         for pattern, templates in entry.checks:

@@ -86,7 +86,8 @@ def pointmass_mill() -> dict:
     a load of 13): the rigid run's periodic
     time [s], mean power, first and last element's and smallest mean tension [kN] and its element; per element
     length ("l70", "l1") the nodes, whether its search converged, where [s], its mean power [kW], the first and last
-    element's and the smallest mean tension [kN] and the slot above it, as printed."""
+    element's and the smallest mean tension [kN] and the slot above it, as printed; ``vs_rigid``: the page's ratios
+    of these (:func:`vs_rigid`)."""
     argv = [STUDY + "pointmass.pointmass_mill"]
     out = run_command(argv, 3600, threads=1)
     m = _need(r"^rigid \(one element per piece, RK4 dt [\d.]+ s\): periodic at t = (\d+) s, mean power ([\d.]+) kW, "
@@ -103,7 +104,21 @@ def pointmass_mill() -> dict:
         found[f"l{m.group(1)}"] = dict(zip(keys, m.groups()[1:], strict=True))
     if "l70" not in found or "l1" not in found:
         raise RuntimeError(f"python -m {argv[0]} printed no periodic search for 70 m or 1 m elements:\n{out[-3000:]}")
-    return found
+    return {**found, "vs_rigid": vs_rigid(found)}
+
+
+def vs_rigid(found: dict) -> dict:
+    """docs/pointmass_mill.md's ratios of :func:`pointmass_mill`'s printed figures: per element length ("l70", "l1")
+    its mean power, first, last and smallest mean tension over the rigid mill's, less 1 [%]; ``resolution``: the 1 m
+    string's power less the 70 m one's [kW] and over it, less 1 [%] (``kW``, ``pct``), and the smaller and larger
+    change of the end tensions [kN] (``ends_lo``, ``ends_hi``)."""
+    keys = {"power_pct": "power_kW", "first_pct": "first_kN", "last_pct": "last_kN", "min_pct": "min_kN"}
+    rigid, l70, l1 = ({k: float(v) for k, v in found[n].items() if k in keys.values()} for n in ("rigid", "l70", "l1"))
+    ratios = {n: {k: (m[v] / rigid[v] - 1.0) * 100.0 for k, v in keys.items()} for n, m in (("l70", l70), ("l1", l1))}
+    ends = sorted(abs(l1[k] - l70[k]) for k in ("first_kN", "last_kN"))
+    return {**ratios, "resolution": {"kW": l1["power_kW"] - l70["power_kW"],
+                                     "pct": (l1["power_kW"] / l70["power_kW"] - 1.0) * 100.0,
+                                     "ends_lo": ends[0], "ends_hi": ends[1]}}
 
 
 #: This module's page groups (merged into docsite.page_figures.GROUPS).

@@ -4,6 +4,7 @@ parsed from what it prints."""
 
 from __future__ import annotations
 
+import math
 import re
 import tempfile
 
@@ -56,7 +57,8 @@ def pumping_cycle_lqr() -> dict:
     25 s): per cycle the simulated mean power, Lansdorp's eqs. 1-14 and Schmehl's model at the cycle's
     parameters, the static-kite form of eq. 9 and eqs. 10-14 fed the simulated tension and speed [W] (``rows``); and
     each one's range over the cycles after the first in kW as the page rounds it ("lo-hi", or one figure when both
-    round alike; ``static_all``, ``fed_all``: over every cycle)."""
+    round alike; ``static_all``, ``fed_all``: over every cycle); ``dy_bound``: the next whole metre above the largest
+    max |dy| of every cycle (the page's "stays below 6 m")."""
     argv = ["laddermill_gym.cli", "pumping-cycle", "--cycles", "3", "--controller", "lqr"]
     out = run_command(argv, 1800)
     _need(r"^ *cycle +T_c s +sim W +matched W +m\. T_out N +Lansdorp W +Schmehl W +static W +eq10-14 fed W ", out, argv)
@@ -72,7 +74,12 @@ def pumping_cycle_lqr() -> dict:
 
     return {"rows": rows, "sim": kw("sim", 1), "lansdorp": kw("lansdorp", 0), "schmehl": kw("schmehl", 0),
             "static": kw("static", 1), "fed": kw("fed", 2), "static_all": kw("static", 1, 0),
-            "fed_all": kw("fed", 2, 0)}
+            "fed_all": kw("fed", 2, 0), "dy_bound": dy_bound(rows)}
+
+
+def dy_bound(rows: list[dict]) -> str:
+    """The next whole metre above the largest ``max_dy`` [m] of the cycle ``rows`` (the page's "below 6 m")."""
+    return str(math.floor(max(float(r["max_dy"]) for r in rows)) + 1)
 
 
 def pumping_evaluate() -> dict:

@@ -1,0 +1,151 @@
+"""The pages' ratios, ranges and bounds worked from a long group's printed columns (docsite/printed_ratios.py; the
+review's #15, 2026-11-30: until then ``derived`` entries that no run re-checked) are checks: a changed run fails them.
+
+Oracles: the commands' printed lines as they ran on 2026-11-30 (docs/reeling_tether.md's and docs/pumping.md's power
+curve tables are the same numbers), the ratios worked by hand from them (33145 / 42457 = 0.781, 33557 / 33145 = 1.0124,
+(322 + 1) x 50 ms = 16.15 s, 0.412 x 525 kN = 216.3 kN), and one printed cell changed by hand, which must be named on
+the page that quotes the figure.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from docsite.long_checks import long_check_differences  # noqa: E402
+from docsite.mill_figures import vs_rigid  # noqa: E402
+from docsite.page_figures import pages_differences  # noqa: E402
+from docsite.printed_ratios import power_curve_ratios, step_accuracy  # noqa: E402
+
+HEAD = "v0 m/s    sim W matched W sim/matched  Schmehl W  Lansdorp W  T_out N matched T_out N  failure\n"
+NO_TRIM = "   4.0      nan       nan         nan        nan         nan      nan             nan  no trim: (...)\n"
+SPLIT = ("matched - simulated by phase [W] (loss_split): ...; T_in simulated / model [N]\n"
+         "   8.0  8058  4452  568  -1928  4355 /  0\n")
+PULLS = "reel-out tension [N]: drum, at the wing (wing / drum), 1/2 rho S C_R <v_a^2> at the flown airspeed, model\n"
+# python -m laddermill_gym.studies.pumping.power_curve --reel-element-length 40 (2026-11-30): v, sim, matched, ratio,
+# Schmehl, Lansdorp, T_out, matched T_out; then v, drum, wing, (wing / drum), aerodynamic force, model
+REELING_CURVE = ((8, 23660, 34809, 0.68, 61335, 64678, 33145, 42457),
+                 (10, 45749, 61111, 0.75, 110641, 114497, 53884, 66255),
+                 (12, 78427, 98429, 0.80, 177755, 182637, 79659, 95382),
+                 (14, 122104, 146438, 0.83, 260601, 266679, 108554, 128003),
+                 (16, 171357, 200914, 0.85, 358922, 366487, 137860, 162195),
+                 (18, 228524, 267113, 0.86, 488641, 498258, 168311, 200753),
+                 (20, 272706, 326744, 0.83, 628449, 639862, 190551, 231045))
+REELING_PULLS = ((8, 33145, 33557, 1.012, 35849, 42457), (10, 53884, 54207, 1.006, 57719, 66255),
+                 (12, 79659, 79877, 1.003, 85122, 95382), (14, 108554, 108655, 1.001, 115685, 128003),
+                 (16, 137860, 137848, 1.000, 146818, 162195), (18, 168311, 168169, 0.999, 178539, 200753),
+                 (20, 190551, 190339, 0.999, 202697, 231045))
+
+
+def _printed(curve: tuple, pulls: tuple) -> str:
+    rows = "".join(f"{r[0]:6.1f} " + " ".join(f"{x:10}" for x in r[1:]) + "\n" for r in curve)
+    tensions = "".join(f"{p[0]:6.1f} {p[1]:8} {p[2]:8} ({p[3]:.3f}) {p[4]:8} {p[5]:8}\n" for p in pulls)
+    return HEAD + NO_TRIM + rows + SPLIT + PULLS + tensions
+
+
+def test_the_power_curve_ratios_are_worked_from_its_printed_columns():
+    found = power_curve_ratios(_printed(REELING_CURVE, REELING_PULLS))
+    assert found["within30"] == {"lo": "10", "hi": "20", "ratios": "0.749, 0.797, 0.834, 0.853, 0.856, 0.835"}
+    assert round(found["tension_model"]["lo"], 4) == 0.7807 and round(found["tension_model"]["hi"], 4) == 0.8500
+    assert round(found["wing_drum_pct"], 2) == 1.24  # 33557 / 33145
+    assert round(found["aero_above_pct"]["lo"], 2) == 6.17 and round(found["aero_above_pct"]["hi"], 2) == 6.83
+    assert round(found["aero_model"]["lo"], 4) == 0.8444 and round(found["aero_model"]["hi"], 4) == 0.9052
+    assert power_curve_ratios("no table here") == {}
+
+
+def test_a_changed_power_curve_is_named_on_the_pages_that_work_from_it():
+    """As printed, reeling_tether.md's and pumping.md's ratios of the reeling curve agree; a drum tension at 8 m/s
+    of 31145 N (wing / drum 1.077, T_out / model 0.734) is named for "within 1.2 %" and "0.78-0.85"; 12 m/s below
+    0.7 of the model (sim 68000 W) breaks "Within 30 % at 10 to 20 m/s"."""
+    group = "reeling_power_curve_printed"
+    assert long_check_differences({group: {"printed": _printed(REELING_CURVE, REELING_PULLS)}}) == []
+    curve = ((8, 23660, 34809, 0.68, 61335, 64678, 31145, 42457), *REELING_CURVE[1:])
+    pulls = ((8, 31145, 33557, 1.077, 35849, 42457), *REELING_PULLS[1:])
+    bad = long_check_differences({group: {"printed": _printed(curve, pulls)}})
+    assert len(bad) == 2 and all(b.startswith("docs/reeling_tether.md") for b in bad), bad
+    assert any("within 1.2 %" in b for b in bad) and any("0.78-0.85" in b for b in bad)
+    gap = (*REELING_CURVE[:2], (12, 68000, 98429, 0.69, 177755, 182637, 79659, 95382), *REELING_CURVE[3:])
+    bad = long_check_differences({group: {"printed": _printed(gap, REELING_PULLS)}})
+    assert [b.split(" quotes ")[1] for b in bad] == ["('10', '20'); --long ['reeling_power_curve_printed'] gives "
+                                                    "('winds 10, 14, 16, 18, 20', 'winds 10, 14, 16, 18, 20')"]
+
+
+STEPS_10 = """laddermill_gym/LadderMill-v2: 10 s, extent 3477.4 m; reference RK4 at 0.0025 s ran 200 periods
+  registered: largest position error 3.179e-05 m = 9.14e-09 of the extent over 200 periods; CPU 0.35 s
+  ros34pw2  : largest position error 0.002439 m = 7.01e-07 of the extent over 200 periods; CPU 0.18 s
+  ros2      : largest position error 0.06437 m = 1.85e-05 of the extent over 200 periods; CPU 0.14 s
+laddermill_gym/LadderChain-v0: 10 s, extent 3612.8 m; reference RK4 at 0.003125 s ran 200 periods
+  ros34pw2  : largest position error 1.158 m = 0.00032 of the extent over 200 periods; CPU 0.15 s
+  ros2      : largest position error 1.628 m = 0.00045 of the extent over 200 periods; CPU 0.10 s
+"""
+STEPS_40 = """laddermill_gym/LadderMill-v2: 40 s, extent 3477.4 m; reference RK4 at 0.0025 s ran 321 periods
+  ros34pw2  : largest position error 0.02623 m = 7.54e-06 of the extent over 322 periods; CPU 0.31 s
+  ros2      : largest position error 0.2567 m = 7.38e-05 of the extent over 317 periods; CPU 0.24 s
+"""
+
+
+def test_the_step_accuracy_figures_are_worked_from_its_printed_lines():
+    """benchmarks.md: the mill's ROS2 error 6.4 cm; the ends (periods + 1) x 50 ms, 16.15, 16.10 and 15.9 s; 2.6 cm;
+    both steps within 1e-3 of the extent over 10 s. A ROS34PW2 that ends one period earlier, or a chain error of
+    0.0012 of the extent, is named."""
+    found = step_accuracy(STEPS_40)
+    assert found["LadderMill-v2"]["ros34pw2"]["end_s"] == 16.15 and found["LadderMill-v2"]["reference"]["end_s"] == 16.1
+    assert step_accuracy(STEPS_10)["share_bound"] == {"registered": "1e-8", "ros34pw2": "1e-3", "ros2": "1e-3"}
+    long = {"step_accuracy_10": {"printed": STEPS_10}, "step_accuracy_40": {"printed": STEPS_40}}
+    assert long_check_differences(long) == []
+    early = {**long, "step_accuracy_40": {"printed": STEPS_40.replace("over 322 periods", "over 321 periods")}}
+    assert ["16.15" in b for b in long_check_differences(early)] == [True]
+    loose = {**long, "step_accuracy_10": {"printed": STEPS_10.replace("0.00032 of", "0.0012 of")}}
+    assert ["ROS34PW2 is the step of choice" in b and "'1e-2'" in b for b in long_check_differences(loose)] == [True]
+
+
+def test_the_fidelity_travel_and_peak_figures_are_named_when_changed():
+    """pointmass.md's +11 % / -6 % (178.9 / 161.0, 67.3 / 71.8) and 3 cm (0.0302 m); mill_fast.md's 216 kN (0.412 x
+    525 kN)."""
+    fidelity = ("tension: first piece rigid 161.0 kN, point mass 178.9 kN; last piece 71.8 / 67.3 kN; smallest 0.2 / "
+                "0.1 kN")
+    long = {"pointmass_fidelity": {"printed": fidelity},
+            "pointmass_accuracy": {"printed": "(10000 elements, kites travel up to 0.0302 m):"},
+            "fast_mill_v2_step": {"printed": "after V_c 2 -> 2 m/s, wind x 1.125 at t = 940.0 s: ...; no cable overload"
+                                             " (peak tension 0.412 x the limit); largest tension 197.6 kN"}}
+    assert long_check_differences(long) == []
+    changed = {"pointmass_fidelity": {"printed": fidelity.replace("178.9", "180.9")},
+               "pointmass_accuracy": {"printed": "(10000 elements, kites travel up to 0.0352 m):"},
+               "fast_mill_v2_step": {"printed": long["fast_mill_v2_step"]["printed"].replace("0.412", "0.420")}}
+    bad = long_check_differences(changed)
+    assert sorted(b.split(":")[0] for b in bad) == ["docs/mill_fast.md", "docs/pointmass.md", "docs/pointmass.md"], bad
+
+
+def test_the_point_mass_mills_ratios_are_worked_from_its_table():
+    """pointmass_mill.md's 25 % to 33 % more power, 10-11 % and 6 % (first, last), 5 % (smallest), 6 kW (7 %) and
+    1-2 kN, from the table's printed figures; a 1 m string at 92.2 kW (+39 %, 12 kW) is named."""
+    rigid = {"power_kW": "66.1", "first_kN": "160.0", "last_kN": "126.9", "min_kN": "10.5", "min_element": "50",
+             "t": "1135"}
+    l70 = {"nodes": "102", "state": "converged", "t": "1590", "power_kW": "82.4", "first_kN": "175.8",
+           "last_kN": "134.6", "min_kN": "11.0", "min_slot": "50"}
+    l1 = {**l70, "nodes": "7071", "t": "1555", "power_kW": "88.2", "first_kN": "178.0", "last_kN": "133.9"}
+
+    def differences(power_1m: str) -> list[str]:
+        found = {"rigid": rigid, "l70": l70, "l1": {**l1, "power_kW": power_1m}}
+        measured = {"checked_pages": ["pointmass_mill.md"], "pointmass_mill": {**found, "vs_rigid": vs_rigid(found)}}
+        return [b for b in pages_differences(measured) if "more power" in b or "adds" in b]
+
+    assert differences("88.2") == []
+    assert len(differences("92.2")) == 2
+
+
+def test_the_lqr_cycles_offset_bound_is_named_when_crossed():
+    """pumping.md's "stays below 6 m through three cycles": the next whole metre above the largest printed max |dy|
+    (5.27 m on 2026-11-30); a run whose largest is 6.2 m gives 7 and is named."""
+    from docsite.pumping_figures import CYCLE_COLUMNS, dy_bound
+
+    def bound(dys: tuple) -> list[str]:
+        rows = [dict(zip(CYCLE_COLUMNS, ("0",) * 13 + (dy,), strict=True)) for dy in dys]
+        measured = {"checked_pages": ["pumping.md"], "pumping_cycle_lqr": {"rows": rows, "dy_bound": dy_bound(rows)}}
+        return [b for b in pages_differences(measured) if "stays below" in b]
+
+    assert bound(("3.90", "5.27", "4.8")) == []
+    assert len(bound(("3.90", "6.2", "4.8"))) == 1
