@@ -301,7 +301,7 @@ BENCHMARKS = Covered(
         Printed('step_accuracy_40', (
             "the episode ends after 322 periods against the reference's 321", '(7.5e-6 of the extent) until then;',
             'ROS2 ends it after 317', "over 40 s they end the episode after 223 (ROS34PW2) and 221 (ROS2) periods "
-            "against the reference's 245, 5.2-5.4 m (1.4-1.5e-3 of the extent) off just before;",
+            "against the reference's 245, 5.2-5.4 m (1.4e-3 and 1.5e-3 of the extent) off just before;",
         )),
     ),
 )

@@ -6,7 +6,7 @@ timings under the page's date."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered, Printed
+from docsite.ledger_kinds import Covered, History, Printed
 from docsite.precision_figures import SCENES
 
 P, S = "{precision_data[%s]}", "{stable_steps[%s][%s]}"
@@ -23,6 +23,7 @@ WORK_PRECISION = Covered(
               for scene, after in zip(SCENES, ("\\| ladder_chain", "\\| roberts_flying_model", "\\| laddermill",
                                                "The estimate holds"), strict=True))),
     given=(
+        '(re-run on 2026-11-30;',  # --long wp_podgaets's day
         'up to 200 states, the 20 largest in magnitude',
         'The pumping kite and the two 35 m crafts ( , 2026-11-24) keep RK4:',  # the scenes and the run's date
         'the first h with |R(h lambda)| > 1,',
@@ -69,8 +70,8 @@ WORK_PRECISION = Covered(
     timings=(
         # real-time factors and speed-ups of the run of 2026-11-24 (the table's caption): --long wp_podgaets
         # printed 141.8x / 1424.0x / 10.04x for smooth on 2026-11-30 at a load of 1.3-2.0, a timing, not a figure
-        '(2026-11-24): | scene (T) | forcing | explicit | implicit | |---|---|---|---| | podgaets_5km, 200 nodes '
-        '(10 s) | smooth | 168x (0.00294 s) | **1502x (0.05 s; 8.94)** | | | step | 170x (0.00294 s) | **1588x '
+        'The run of 2026-11-24: | scene (T) | forcing | explicit | implicit | |---|---|---|---| | podgaets_5km, 200 '
+        'nodes (10 s) | smooth | 168x (0.00294 s) | **1502x (0.05 s; 8.94)** | | | step | 170x (0.00294 s) | **1588x '
         '(0.05 s; 9.36)** | | | gust | 172x (0.00294 s) | **1592x (0.05 s; 9.23)**',
         # the page's blanket date (the first work-precision runs, ec22606) and machine
         'Figures below were measured on a shared 2-core machine (from 2026-11-24; four other engineers running at'
@@ -222,11 +223,12 @@ WORK_PRECISION = Covered(
         )),
         Printed('wp_podgaets', (
             'stable below l0 / c = 2.95 ms',
-            'which agree to 3.4e-8',
+            'which agree to 3.3e-8',
         )),
         Printed('wp_rk4_scenes', (
-            "it is the fastest within 1e-3 on all three (the crafts' slow modes, RK4's stable step 1.8 and 2.3 s, put "
-            "the grid's largest step, 0.2 s, within 2e-10 of the extent;", 'on the pumping kite, stable to 0.092 s '
+            # the crafts' stable steps are printed a table apart (1.813 s, 2.319 s), more than a window
+            "it is the fastest within 1e-3 on all three (the crafts' slow modes, RK4's stable step 1.8", 'and 2.3 s,',
+            "put the grid's largest step, 0.2 s, within 2e-10 of the extent;", 'on the pumping kite, stable to 0.092 s '
             'at the start,',
         )),
         Printed('wp_controller_measure', (
@@ -334,4 +336,8 @@ WORK_PRECISION = Covered(
         'x [m] is nan (state entry 13)") instead of through the derivative it spoils; the failure diagnosis names '
         'the fastest cable node (an injected 1e12 m/s node speed was reported through the wing it dragged along).',
     ),
+    history=(History('2026-11-24', 'NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision '
+                     'podgaets_5km --time 10 --samples 50', "the point-mass string's first work-precision run "
+                     "(c447a36); --long wp_podgaets printed 3.3e-08 on 2026-11-30 (not bisected)",
+                     ('3.4e-8 as written on 2026-11-24',)),),
 )

@@ -39,6 +39,7 @@ REELING = Covered(
     groups=("tether_convergence", "reeling_power_curve"),
     checks=REELING_CHECKS + CURVE_CHECKS + RATIO_CHECKS,
     given=(
+        '3. **Within the phases** (eqs.',  # a list's number
         '(Re-run 2026-11-30; as first written on',  # the re-run's date
         "the 40 m elements' weight and drag take almost nothing of it in crosswind flight);",  # the element length
         '# The reeling tether of the pumping kite (issue 29 point 2)',
@@ -141,7 +142,7 @@ REELING = Covered(
             '57719 against 66255 N),',
             "Which of the course's parts takes how much is not yet measured. 2. **The reel-in tension**:",
             "the hang near the zenith pulls 4.4-16.7 kN while the model's depowered kite at the simulated reel-in "
-            'elevation pulls 0-5.2 kN. 3. **Within the phases** (eqs.',
+            'elevation pulls 0-5.2 kN.',
             '10-14 on the simulated means less the simulated power)',
             "and **the model's transitions** (its cycle time's transition phases, which the simulated cycle,",
             'does not spend)',

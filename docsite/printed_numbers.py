@@ -3,8 +3,9 @@
 A :class:`docsite.ledger_kinds.Printed` snippet agrees with an output when each number the page quotes in it
 (:data:`docsite.page_numbers.NUMBER`: thousands commas and a ratio's ``x`` dropped) is some number the output prints
 rounded to the quoted digits (:func:`rounds_to`; a printed 0.1145 is 0.114 or 0.115 quoted, 25.64 is 25.6, a
-printed 10 is 10, never 11), or a thousandth, a thousand times or a millionth of one (a page's kW of a printed W,
-its MW of a printed kW, its MJ of a printed J), all within a few lines of output (:func:`missing`). Signs: a
+printed 10 is 10, never 11), or, where the page writes a unit with a prefix after it (:data:`PREFIXED`: "10 kW",
+"1.8 MJ", "2.4 mm"), a thousandth, a thousand times or a millionth of one (a page's kW of a printed W, its MW of a
+printed kW, its MJ of a printed J), all within a few lines of output (:func:`missing`). Signs: a
 quoted number the page writes with a sign ("-43.5 kW", "+0.7752") must have that sign printed; one it writes
 without compares magnitudes (the page's "falls by 0.25" of a printed -0.252, "a drop of 46 kW"). This is looser
 than a check (it does not say *which* printed number is meant), so it is used for a command's free-text lines that
@@ -14,7 +15,8 @@ instead (:mod:`docsite.gust_scorecards`).
 
 Until 2026-11-30 the rule was looser: two numbers agreed when they differed by half a unit of the quoted digits plus
 half a unit of the printed ones, so a printed 10 matched a quoted 11 and a printed 0 (of "LadderMill-v0") any quoted
-number below 0.5; signs were never compared.
+number below 0.5; signs were never compared. Until 2026-11-30 (the review's #18) any quoted number could also be a
+thousandth, a thousand times or a millionth of a printed one, so a bare "10" matched a printed 0.0104.
 """
 
 from __future__ import annotations
@@ -25,6 +27,12 @@ from bisect import bisect_left
 from docsite.page_numbers import NUMBER, prose
 
 SCALES = (1.0, 1e-3, 1e3, 1e-6)  # a page's figure in the printed unit, or in kilo- / milli- / mega- of it
+# a unit with an SI prefix written after a quoted number ("10 kW", "1.8 MJ", "2.4 mm", "0.39 ms", "4.4 MB"): only
+# such a number may be a printed one in another prefix's unit; "m" alone (metres), "min", "mph" are not prefixed
+PREFIXED = re.compile(r" ?[kMGmuµn](?:Wh|W|J|N|Pa|Hz|B|V|A|s|m|g|t)(?![A-Za-z])")
+# the further numbers of a range or list that shares the unit written after its last one ("3.0-15.2 kN", "-3.2 to
+# +1.9 MW", "14.9, 11.9 and 14.8 MJ")
+SHARED = re.compile(r"(?:-| to | and |, and |, | or | / )[-+]?\d[\d,]*(?:\.\d+)?(?:e[-+]?\d+)?(?![\w.])")
 WINDOW = 60  # printed numbers a snippet's figures may spread over (a table row of a wide study prints ~20)
 
 # a printed numeral, also one glued to a unit or letter ("1.2mm", "-30+240j"): the output side is read loosely;
@@ -84,14 +92,19 @@ def numerals(text: str) -> list[str]:
 
 def missing(snippet: str, output: str) -> list[str]:
     """The numbers of ``snippet`` that ``output`` does not print near one another: each quoted number must be a
-    distinct printed number rounded to the quoted digits (:func:`rounds_to`), or a thousandth, a thousand times or
-    a millionth of it (its 1.8 MJ of a printed 1813 kJ or 1813000 J), by magnitude where the page writes no sign
+    distinct printed number rounded to the quoted digits (:func:`rounds_to`), or where a prefixed unit follows it
+    (:data:`PREFIXED`) a thousandth, a thousand times or a millionth of it (its 1.8 MJ of a printed 1813 kJ or
+    1813000 J), by magnitude where the page writes no sign
     (its "falls by 0.25" of a printed -0.252), within one window of :data:`WINDOW` consecutive printed numbers (a
     sentence's figures come from a few lines of output, in any order); the window that leaves the fewest unmatched
     is taken."""
     printed = [(value(t), unit(t)) for t in PRINTED.findall(output)]
-    quoted = numerals(snippet)
-    hits = [[i for i, (p, pu) in enumerate(printed) if _hit(p, pu, text)] for text in quoted]
+    flat = prose(snippet)
+    spans = [m.span() for m in NUMBER.finditer(flat)]
+    quoted = [flat[a:b] for a, b in spans]
+    scaled = [PREFIXED.match(flat, _unit_at(flat, b)) is not None for _, b in spans]
+    hits = [[i for i, (p, pu) in enumerate(printed) if _hit(p, pu, text, scale)]
+            for text, scale in zip(quoted, scaled, strict=True)]
     best = list(quoted)
     for start in sorted({i for found in hits for i in found}):  # a best window can start at a matched number
         near = [found[bisect_left(found, start):bisect_left(found, start + WINDOW)] for found in hits]
@@ -104,13 +117,24 @@ def missing(snippet: str, output: str) -> list[str]:
     return best
 
 
-def _hit(p: float, pu: float, text: str) -> bool:
-    """Whether a printed value ``p`` (unit ``pu``) or a thousandth, thousand times or millionth of it is the quoted
-    numeral ``text``, by magnitude where ``text`` has no sign."""
+def _unit_at(flat: str, end: int) -> int:
+    """Where the unit of the number ending at ``end`` in ``flat`` starts: after the range or list it begins
+    (:data:`SHARED`), if any."""
+    m = SHARED.match(flat, end)
+    while m:
+        end = m.end()
+        m = SHARED.match(flat, end)
+    return end
+
+
+def _hit(p: float, pu: float, text: str, scaled: bool) -> bool:
+    """Whether a printed value ``p`` (unit ``pu``) is the quoted numeral ``text``, or, where the page writes a prefixed
+    unit after it (``scaled``), a thousandth, thousand times or millionth of it is; by magnitude where ``text`` has
+    no sign."""
     q, u = value(text), unit(text)
     if text[0] not in "+-":  # no sign on the page: magnitudes
         p, q = abs(p), abs(q)
-    return any(rounds_to(f * p, f * pu, q, u) for f in SCALES)
+    return any(rounds_to(f * p, f * pu, q, u) for f in (SCALES if scaled else SCALES[:1]))
 
 
 def _matching(candidates: list[list[int]]) -> set[int]:

@@ -10,6 +10,7 @@ shows the case on which the two differ.
 
 from __future__ import annotations
 
+import re
 import sys
 from pathlib import Path
 
@@ -80,3 +81,40 @@ def test_a_check_template_is_compared_by_rounding():
         printed = {f"v{v}": {"P": p} for v, p in zip(range(1, 6), (p1, *powers[1:]), strict=True)}
         bad = pages_differences({"checked_pages": ["power_curve.md"], "fast_mill_v2": printed})
         assert bool(bad) == named and all(str(p1) in b for b in bad), (p1, bad)
+
+
+PODGAETS = """-- step: references (scipy_dop853 at 1e-10 and scipy_rk45 at 1e-11) agree to 3.3e-08
+   implicit    0.01000 -     0.034    291.8   3.11e-02  1.41e-02  7.41e-03  9.77e-03"""
+
+
+def _old_scaling(monkeypatch):
+    """The rule used until 2026-11-30 (the review's #18), restated: every quoted number may be a thousandth, a
+    thousand times or a millionth of a printed one, whatever follows it."""
+    import docsite.printed_numbers as pn
+
+    monkeypatch.setattr(pn, "PREFIXED", re.compile(""))
+
+
+def test_a_bare_number_is_not_a_printed_one_in_another_unit(monkeypatch):
+    """A quoted "10" is neither a printed 0.0104 (x 1e3) nor a printed 10412 (x 1e-3); work_precision.md's "agree to
+    3.4e-8" (2026-11-24) is not the 0.034 s wall time of the run that prints "agree to 3.3e-08" (2026-11-30): each
+    was accepted under the old rule."""
+    cases = (("10 of them", "share 0.0104"), ("10 of them", "power 10412 W"), ("which agree to 3.4e-8", PODGAETS))
+    for snippet, output in cases:
+        assert missing(snippet, output) == [snippet.split()[-1] if "agree" in snippet else "10"], snippet
+    _old_scaling(monkeypatch)
+    for snippet, output in cases:
+        assert missing(snippet, output) == [], snippet
+
+
+def test_a_prefixed_unit_still_reads_a_printed_one_in_another_unit():
+    """"10 kW" of a printed 10412 W, "2.4 mm" of 0.002439 m, "1.8 MJ" of 1813 kJ; a range or list shares the unit
+    written after its last number ("3.0-15.2 kN" of 3012 and 15200 N, "-3.2 to +1.9 MW" of -3200 and 1900 kW,
+    "14.9, 11.9 and 14.8 MJ"); metres, minutes and a percentage are no prefix."""
+    assert missing("10 kW", "power 10412 W") == [] and missing("2.4 mm", "error 0.002439 m") == []
+    assert missing("1.8 MJ in 138 s", "t = 137.95 s: 1813 kJ") == []
+    assert missing("pulls 3.0-15.2 kN", "tension 3012 N, 15200 N") == []
+    assert missing("period-mean power -3.2 to +1.9 MW", "means -3200 kW ... +1900 kW") == []
+    assert missing("NTM_IB seeds 0-2 14.9, 11.9 and 14.8 MJ", "seeds 0 1 2: 14.9e6 11.9e6 14.8e6 J") == []
+    for snippet in ("10 m", "10 min", "10 %", "10 mph"):
+        assert missing(snippet, "value 0.0104 and 10412") == ["10"], snippet
