@@ -21,8 +21,14 @@ GUSTS_V1_TABLE = (
      (SC % ("ladder_chain", "open_loop"), SC % ("ladder_chain", "lqr"))),
     (rf"\| Rotorcraft-v0 \| {ON} \| {ON} \(turbulence survived on every seed\)",
      (SC % ("rotorcraft", "open_loop"), SC % ("rotorcraft", "lqr"))),
-    (rf"{ON}(?= \((?:`ppo_rotorcraft`| ): ECD IA lost, as by the LQR\))", (SC % ("rotorcraft", "ppo_rotorcraft"),)),
+    (rf"{ON}(?= \((?:`ppo_rotorcraft`| ): ECD lost, as by the LQR\))", (SC % ("rotorcraft", "ppo_rotorcraft"),)),
     (rf"\| LadderMill-v0 \| {ON} \| {ON} \|", (SC % ("laddermill", "open_loop"), SC % ("laddermill", "lqr"))),
+    # the scenarios the notes name, as sets of gust_bench.json's scenario ids (docsite/gust_scorecards.py)
+    (r"11 / 12 \((Dryden moderate) lost on every seed\)", ("@{gusts_v1_tethered_wing[lost_every_seed][lqr]}",)),
+    (r"critic warm-up and validation: (NTM IB seed \d+ and Dryden moderate) lost\)",
+     ("@{gusts_v1_tethered_wing[lost][ppo_tethered_wing]}",)),
+    (r"(?=(ECD) lost)(ECD) lost, as by the LQR\)", ("@{gusts_v1_rotorcraft[lost][ppo_rotorcraft]}",
+                                                   "@{gusts_v1_rotorcraft[lost][lqr]}")),
 )
 RG = "{pointmass_mill[rigid][%s]}"
 MOVING_CABLE = Covered(

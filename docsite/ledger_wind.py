@@ -24,7 +24,17 @@ GUSTS_V1_CHECKS = tuple(
     (rf"\| {env} \| {ON} [^|]*\| {ON}", (f"{{gusts_v1_{group}[scorecard][open_loop]}}",
                                        f"{{gusts_v1_{group}[scorecard][lqr]}}"))
     for env, group in (("TetheredWing-v0", "tethered_wing"), ("LadderChain-v0", "ladder_chain"),
-                       ("Rotorcraft-v0", "rotorcraft"), ("LadderMill-v0", "laddermill")))
+                       ("Rotorcraft-v0", "rotorcraft"), ("LadderMill-v0", "laddermill"))) + tuple(
+    # its notes' scenarios, as sets of gust_bench.json's scenario ids (docsite/gust_scorecards.py): the open loop's
+    # held on every seed, the LQR's held beyond them, not held, lost by both
+    (rf"\| {env} \| \d+ / \d+ \(([^|]*)\) \|", (f"@{{gusts_v1_{group}[held][open_loop]}}",))
+    for env, group in (("TetheredWing-v0", "tethered_wing"), ("LadderChain-v0", "ladder_chain"),
+                       ("Rotorcraft-v0", "rotorcraft"), ("LadderMill-v0", "laddermill"))) + (
+    (r"\| TetheredWing-v0 \| [^|]*\| \d+ / \d+ \(\+ ([^|]*)\) \| ([^|]*) ends both \|",
+     ("@{gusts_v1_tethered_wing[held_beyond][lqr]}", "@{gusts_v1_tethered_wing[lost_by_both]}")),
+    (r"\| 8 / 9 \(all but ([^;|]*);", ("@{gusts_v1_rotorcraft[lost][lqr]}",)),
+    (r"\| \d+ / \d+ \(fails ([^|)]*)\) \|", ("@{gusts_v1_laddermill[lost][lqr]}",)),
+)
 
 #: The LadderMill-v0 rows of the gusts-v2 table (laddermill gust-bench --suite gusts-v2 --env
 #: laddermill_gym/LadderMill-v0 --scenarios EWS_IA NTM_IB dryden_light dryden_moderate --controllers open_loop lqr,

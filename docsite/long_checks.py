@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from docsite.gust_scorecards import scenario_key
 from docsite.long_figures import LONG
 from docsite.page_ledger import LEDGER
 from docsite.printed_numbers import template_agrees
@@ -33,9 +34,18 @@ def check_difference(name: str, flat: str, pattern: str, templates: tuple, figur
         want = tuple(t.format(**figures) for t in templates)
     except (KeyError, IndexError) as e:
         return f"docs/{name}: '{m.group(0)}': {words[0].format(e)}"
-    if len(m.groups()) != len(want) or not all(template_agrees(q, w) for q, w in zip(m.groups(), want, strict=True)):
+    if len(m.groups()) != len(want) or not all(_agrees(q, w) for q, w in zip(m.groups(), want, strict=True)):
         return f"docs/{name}: '{m.group(0)}' quotes {m.groups()}; {words[1]} {want}"
     return None
+
+
+def _agrees(quoted: str | None, want: str) -> bool:
+    """A quoted text against its filled template: a template marked ``@`` is a gust bench's set of scenario ids, which
+    the quoted list of names must name (:func:`docsite.gust_scorecards.scenario_key`); else
+    :func:`docsite.printed_numbers.template_agrees`."""
+    if want.startswith("@"):
+        return quoted is not None and scenario_key(quoted) == want[1:]
+    return template_agrees(quoted, want)
 
 
 def long_groups(templates: tuple) -> set[str]:

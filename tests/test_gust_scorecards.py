@@ -57,9 +57,18 @@ def test_a_file_of_several_envs_or_no_summary_is_named(tmp_path):
 
 
 def _long(rotor: dict, wing: dict) -> dict:
-    return {"gusts_v1_rotorcraft": {"printed": "", "scorecard": rotor},
-            "gusts_v1_tethered_wing": {"printed": "", "scorecard": wing,
+    """The two groups' figures, their scenario sets as gust-bench wrote them on 2026-11-30 (the pages' lists)."""
+    return {"gusts_v1_rotorcraft": {"printed": "", "scorecard": rotor, **ROTOR_SETS},
+            "gusts_v1_tethered_wing": {"printed": "", "scorecard": wing, **WING_SETS,
                                        "lost_seeds": {"ppo_tethered_wing": {"NTM_IB": "0"}}}}
+
+
+ROTOR_SETS = {"held": {"open_loop": "EOG_IA, EWS_IA, speed_step_20pct"},
+              "lost": {"lqr": "ECD_IA", "ppo_rotorcraft": "ECD_IA"}}
+WING_SETS = {"held": {"open_loop": "EOG_IA, EWS_IA, direction_ramp_0.1, direction_step, one_cos_20s, one_cos_4s, "
+                                   "speed_step_20pct"},
+             "held_beyond": {"lqr": "ECD_IA, EDC_IA, NTM_IB, dryden_light"}, "lost_by_both": "dryden_moderate",
+             "lost_every_seed": {"lqr": "dryden_moderate"}, "lost": {"ppo_tethered_wing": "NTM_IB, dryden_moderate"}}
 
 
 ROTOR = {"open_loop": "3 / 9", "lqr": "8 / 9", "ppo_rotorcraft": "8 / 9"}
@@ -86,4 +95,56 @@ def test_a_long_check_waits_for_its_group():
     assert [b for b in pages_differences({"checked_pages": ["features.md", "controllers.md"]})
             if "gusts_v1" in b] == []
     crashed = long_check_differences({"gusts_v1_rotorcraft": {"printed": ""}})
-    assert crashed and all("gave no 'scorecard'" in b for b in crashed)
+    assert crashed and all("gave no '" in b for b in crashed) and any("gave no 'scorecard'" in b for b in crashed)
+
+
+TW_SCENARIOS = ("direction_step", "speed_step_20pct", "direction_ramp_0.1", "one_cos_4s", "one_cos_20s", "EOG_IA",
+                "EDC_IA", "ECD_IA", "EWS_IA", "NTM_IB", "dryden_light", "dryden_moderate")
+OPEN_HELD = {"direction_step", "speed_step_20pct", "direction_ramp_0.1", "one_cos_4s", "one_cos_20s", "EOG_IA",
+             "EWS_IA"}  # wind.md: "direction step, speed step, ramp, 1-cos 4 s, 1-cos 20 s, EOG, EWS"
+
+
+def _wing_bench(path: Path, open_held: set = OPEN_HELD, moderate_lqr: tuple = (False, False, False)) -> dict:
+    """A hand-written TetheredWing-v0 gust_bench.json, three seeds a scenario: the open loop holds ``open_held``;
+    the LQR all but Dryden moderate (its seeds ``moderate_lqr``); the policy all but NTM IB seed 0 and Dryden
+    moderate. Returns the long groups' figures as --long gives them."""
+    seeds = {"open_loop": {s: (s in open_held,) * 3 for s in TW_SCENARIOS},
+             "lqr": {**{s: (True,) * 3 for s in TW_SCENARIOS}, "dryden_moderate": moderate_lqr},
+             "ppo_tethered_wing": {**{s: (True,) * 3 for s in TW_SCENARIOS}, "NTM_IB": (False, True, True),
+                                   "dryden_moderate": (False,) * 3}}
+    env = "laddermill_gym/TetheredWing-v0"
+    rows = [{"env": env, "controller": c, "scenario": s, "seed": k, "survived": ok}
+            for c, by in seeds.items() for s, oks in by.items() for k, ok in enumerate(oks)]
+    summary = [{"env": env, "controller": c, "scenario": s, "n": 3, "survived": sum(oks) / 3}
+               for c, by in seeds.items() for s, oks in by.items()]
+    path.write_text(json.dumps({"suite": "gusts-v1", "rows": rows, "summary": summary}))
+    return {"gusts_v1_tethered_wing": {"printed": "", **scorecards(path)}}
+
+
+def test_the_pages_scenario_names_are_one_to_one_with_the_suites_ids():
+    """Oracle: configs/benchmarks/gusts-v1.yaml's scenario names, every env's."""
+    import yaml
+
+    from docsite.gust_scorecards import SCENARIO_NAMES, scenario_key
+
+    suite = yaml.safe_load((ROOT / "configs" / "benchmarks" / "gusts-v1.yaml").read_text())
+    ids = {s["name"] for env in suite["envs"].values() for s in env["scenarios"]}
+    assert len(set(SCENARIO_NAMES.values())) == len(SCENARIO_NAMES) and set(SCENARIO_NAMES.values()) == ids
+    assert scenario_key("EDC, ECD (72 deg in 10 s), NTM IB, Dryden light") == "ECD_IA, EDC_IA, NTM_IB, dryden_light"
+    assert scenario_key("NTM IB seed 0 and Dryden moderate") == "NTM_IB, dryden_moderate"
+    assert scenario_key("ECD and the random perturbation") == "ECD_IA, random_perturbation"
+    assert scenario_key("the steps, the ramp") == "unknown scenario name 'steps'"
+
+
+def test_a_scenario_moved_between_held_and_lost_is_named(tmp_path):
+    """The hand-written bench agrees with wind.md's, features.md's and controllers.md's tethered-wing lists; the open
+    loop holding EDC instead of EWS (7 / 12 still) is named on wind.md's list and its LQR's "+ ..." list; the LQR
+    surviving one seed of Dryden moderate (11 / 12 still) is named on features.md's "lost on every seed"."""
+    assert long_check_differences(_wing_bench(tmp_path / "a.json")) == []
+    swapped = OPEN_HELD - {"EWS_IA"} | {"EDC_IA"}
+    bad = long_check_differences(_wing_bench(tmp_path / "b.json", open_held=swapped))
+    assert len(bad) == 2 and all(b.startswith("docs/wind.md") for b in bad), bad
+    assert any("'@EDC_IA, EOG_IA, " in b for b in bad) and any("'@ECD_IA, EWS_IA, NTM_IB, dryden_light'" in b
+                                                                 for b in bad)
+    bad = long_check_differences(_wing_bench(tmp_path / "c.json", moderate_lqr=(False, True, False)))
+    assert ["docs/features.md" in b and "lost on every seed" in b for b in bad] == [True], bad
