@@ -45,6 +45,7 @@ from docsite.paper_figures import printed_match, run_command
 from docsite.pointmass_figures import pointmass_data
 from docsite.precision_figures import PRECISION_GROUPS
 from docsite.printed_numbers import printed_differences
+from docsite.printed_ratios import craft_ratios
 from docsite.pumping_figures import PUMPING_GROUPS
 from docsite.rotor_chart_figures import rotor_chart
 from docsite.rotor_figures import parse_rotor_design, scan_figures
@@ -160,7 +161,8 @@ def craft_stability() -> dict:
     LQR's gain and discrete closed-loop max |z|, and per direction step (0.01, 0.1 rad) open loop and LQR: the
     failure time [s] ("" when none), the largest |y| [m] and |dtheta| [deg]; eq. (6)'s M, D, K (eq6_M...: row by
     row) and beta at 10 m/s, the largest relative error against the Jacobian [%], and the wind scan (per "vN":
-    collective [deg], growth [1/s], frequency [rad/s])."""
+    collective [deg], growth [1/s], frequency [rad/s]); and the pages' figures worked from these
+    (:func:`docsite.printed_ratios.craft_ratios`)."""
     with tempfile.TemporaryDirectory() as tmp:
         argv = [STUDY + "rotorcraft.craft_stability", "--out", tmp]
         out = run_command(argv, 900)
@@ -180,7 +182,7 @@ def craft_stability() -> dict:
     for who, step, fail, y, dtheta in re.findall(row, out, re.M):
         found[f"{'lqr' if 'LQR' in who else 'open'}_{step.replace('.', '')}"] = {
             "fail": fail, "y": float(y), "dtheta": float(dtheta)}
-    return found
+    return craft_ratios(found)
 
 
 def fast_mill_v2() -> dict:

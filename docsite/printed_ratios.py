@@ -128,6 +128,18 @@ def kite_travel(printed: str) -> dict:
     return {"kites_cm": float(m.group(1)) * 100.0} if m else {}
 
 
+def craft_ratios(found: dict) -> dict:
+    """``craft_stability``'s parsed figures (:func:`docsite.page_figures.craft_stability`) with the pages' figures
+    worked from them: the 10 m/s mode's period 2 pi / frequency [s] (``period_v10``), the largest relative error's
+    next whole percent ("1" for 0.998 %; ``rel_error_bound``), and per run its failure after the 1 s direction step
+    [s] (``after_step``, "" without a failure)."""
+    runs = {k: {**v, "after_step": float(v["fail"]) - 1.0 if v.get("fail") else ""}
+            for k, v in found.items() if k.startswith(("open_", "lqr_"))}
+    v10 = found.get("scan", {}).get("v10")
+    return {**found, **runs, "period_v10": 2 * math.pi / v10["frequency"] if v10 else "",
+            "rel_error_bound": str(math.ceil(found["rel_error_pct"]))}
+
+
 #: long group -> the function of its printed output whose figures its pages' checks name.
 RATIOS = {"reeling_power_curve_printed": power_curve_ratios, "pumping_power_curve_printed": power_curve_ratios,
           "reeling_cycle_40": cycle_ratio, "step_accuracy_10": step_accuracy, "step_accuracy_40": step_accuracy,

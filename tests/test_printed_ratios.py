@@ -149,3 +149,36 @@ def test_the_lqr_cycles_offset_bound_is_named_when_crossed():
 
     assert bound(("3.90", "5.27", "4.8")) == []
     assert len(bound(("3.90", "6.2", "4.8"))) == 1
+
+
+def test_the_mills_gust_bound_is_the_latest_failure():
+    """features.md's "no controller keeps the mill through turbulence or EWS beyond 15 s": every seed of the gusts-v2
+    mill bench lost, the last at 14.8 s (2026-11-30); a last loss at 15.3 s, or a seed that survives, is named."""
+    from docsite.study_figures import end_bound
+
+    def named(rows: list[dict]) -> list[str]:
+        measured = {"checked_pages": ["features.md"], "gusts_v2_mill": {"end_bound": end_bound(rows)}}
+        return [b for b in pages_differences(measured) if "beyond" in b]
+
+    lost = [{"survived": False, "t_end_s": t} for t in (3.2, 14.8, 9.95)]
+    assert end_bound(lost) == "15" and named(lost) == []
+    assert len(named([*lost, {"survived": False, "t_end_s": 15.3}])) == 1
+    assert named([*lost, {"survived": True, "t_end_s": 60.0}])[0].endswith("('a seed survived',)")
+
+
+def test_the_crafts_period_error_bound_and_failure_are_worked_from_its_figures():
+    """controllers.md's and rotorcraft.md's "a period of 12.6 s" (2 pi / 0.497 rad/s), "to 1 %" (0.998 % on
+    2026-11-30) and "(32 s after the step)" (33.0 s less the 1 s of the step); a frequency of 0.52 rad/s (12.1 s), an
+    error of 1.2 % and a failure at 34.0 s are named."""
+    from docsite.printed_ratios import craft_ratios
+
+    def named(frequency: float, error: float, fail: str) -> list[str]:
+        found = craft_ratios({"scan": {"v10": {"growth": 0.1267, "frequency": frequency}}, "rel_error_pct": error,
+                              "open_01": {"fail": fail, "y": 47.4, "dtheta": 0.0}})
+        measured = {"checked_pages": ["controllers.md", "rotorcraft.md"], "craft_stability": found}
+        return [b for b in pages_differences(measured) if any(w in b for w in ("a period of", "Jacobian to",
+                                                                                "after the step"))]
+
+    assert craft_ratios({"rel_error_pct": 0.998, "open_01": {"fail": "33.0"}})["open_01"]["after_step"] == 32.0
+    assert named(0.497, 0.998, "33.0") == []
+    assert len(named(0.52, 0.998, "33.0")) == 2 and len(named(0.497, 1.2, "34.0")) == 2
