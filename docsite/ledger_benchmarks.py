@@ -68,7 +68,11 @@ BENCHMARKS = Covered(
         's; the open-loop action plus seeded uniform noise of 0.3 every period), as a share of the extent (the '
         'largest distance of a point from the origin), and the CPU cost of one copy on one thread ( , and the '
         'same for ; the CPU columns on the loaded machine, below):',
-        'The 3,000 steps/s target',
+        # the new section's heading, settings and the command's labels and episode lengths
+        'The fastest step within 1e-3: 3,000 steps/s at 8 copies (2026-11-30)',
+        'is kept for 4 steps', 'LadderChain-v0: error, share of the extent, periods of 200',
+        'Kept 8 steps, the matrix ends both episodes early', 'and ROS2T kept 4 the chain', 'runs both through within 1e-3',
+        'Over 40 s ( )', '(its 101-wing rows now measure too)',
         '### LadderMill: the operating point on disk (issue 32 point 1)',
         'The key is a SHA-256 of everything',
         'and a matching SHA-256 of its payload',
@@ -116,24 +120,8 @@ BENCHMARKS = Covered(
         'LadderMill-v0 (101 wings, moving cable; 2026-11-23, 3950f04): 894 steps/s with one copy and 964 with '
         'eight (SyncVectorEnv 867 and 861), one thread, measured at the earlier 12.5 ms physics step (four RK4 '
         "steps per control period); at today's 10 ms (five) expect about a fifth fewer.",
-        'Throughput, before (the registered step on one thread: the default at 8 copies until now) and after (the'
-        ' pool; the pool and ROS34PW2) in the same run, SyncVectorEnv as the baseline ( , 2026-11-29; "cpu": this'
-        " process's CPU seconds per wall second):",
-        'LadderChain-v0, 1 | 241 steps/s, 1.1x (cpu 0.40) | 177, 0.8x (0.40) | 389, 1.7x (0.40) | 226 (0.39) | | '
-        'LadderChain-v0, 8 | 271, 1.2x (0.40) | 196, 0.8x (0.40) | 325, 1.4x (0.40) | 236 (0.40) | | '
-        'LadderMill-v2, 1 | 267, 1.2x (0.61) | 204, 0.9x (0.56) | 395, 1.8x (0.50) | 223 (0.50) | | '
-        'LadderMill-v2, 8 | 205, 1.6x (0.50) | 191, 1.4x (0.50) | 274, 2.1x (0.49) | 132 (0.50)',
-        "(One copy never uses the pool: the first two columns are the same env there, 177 and 241 the run's "
-        'noise.)',
-        'The machine was shared with four other jobs (two trainings, a sweep, numba compiles; load average '
-        '5.7-6.0 on 2 cores), and its scheduler gives every session an equal share (autogroups): the benchmark '
-        'got 0.4-0.6 of one core',
-        'ROS34PW2 once per period costs the chain 1.6x and the mill 1.9x less CPU than the registered RK4 (the '
-        "study's CPU clock, one copy). On the quiet machine of the earlier rows (LadderChain-v0 1,020 steps/s at "
-        "8 copies on one thread; LadderMill-v0 964 at 12.5 ms, about 800 at today's 10 ms), that cost and two "
-        'threads (at most 2x; copies of about a millisecond each, four per thread)',
-        'The same command on a quieter machine (2026-11-29 12:53 UTC, load average 1-2: one light job beside it),'
-        ' where the pool got both cores ("cpu" 1.9-2.0):',
+        'Throughput on the pool, SyncVectorEnv as the baseline ( ) on a quieter machine (2026-11-29 12:53 UTC, '
+        'load average 1-2: one light job beside it), where the pool got both cores ("cpu" 1.9-2.0):',
         'env, copies | native (pool from 2 copies) | one thread | pool and | SyncVectorEnv | '
         '|---|---|---|---|---| | LadderChain-v0, 1 | 433 steps/s, 1.0x (cpu 1.00) | 526, 1.2x (1.00) | 975, 2.2x '
         '(1.00) | 443 (1.00) | | LadderChain-v0, 8 | 964, 1.5x (1.99) | 610, 0.9x (1.00) | **1,517**, 2.4x (2.00)'
@@ -154,21 +142,26 @@ BENCHMARKS = Covered(
         "0.23 s between two threads over 50 vector steps (0.19 / 0.18 s with numba's workqueue layer, whose "
         'workers do not spin; LadderMill-v1 0.45 / 0.44 s over 60), and checks that 16 copies of a small v2 mill '
         "share their ROS34PW2 steps between both threads and that the mill's results are bit for bit the same on "
-        'one thread, two threads and the serial kernel. on 2026-11-29 after a CI run, with a training run on one '
-        'core and other helpers\' tests beside it (load average 3.2 at the start, 5.7 at the end: "cpu" 0.5-0.7, '
-        "so the rates are this process's share of the machine, not its speed):",
-        'env, 8 copies | native (pool) | one thread | pool and | SyncVectorEnv | |---|---|---|---|---| | '
-        'LadderChain-v0 | 335 steps/s (cpu 0.66, threads 1.96) | 409 (0.70, 1.00) | 457 (0.66, 1.98) | 327 (0.64)'
-        ' | | LadderMill-v1 | 158 (0.49, 1.99) | 166 (0.47, 1.00) | 250 (0.49, 2.00) | 132 (0.50)',
-        'Both pools share the work evenly ("threads" 1.96-2.00, ROS34PW2 included); on a machine where the '
-        'process gets half a core, two threads cannot go faster than one (the one-thread rows are as fast or '
-        'faster). The same command on a quiet machine (2026-11-29 16:47 UTC, load 0.8, 29 s):',
+        'one thread, two threads and the serial kernel. on a quiet machine (2026-11-29 16:47 UTC, load 0.8, 29 s):',
         'env, 8 copies | native (pool) | one thread | pool and | SyncVectorEnv | |---|---|---|---|---| | '
         'LadderChain-v0 | 1,309 steps/s (cpu 1.99, threads 1.99) | 699 (1.00, 1.00) | **1,522** (1.99, 1.99) | '
         '623 (1.00) | | LadderMill-v1 | 731 (1.98, 1.99) | 413 (1.00, 1.00) | **1,569**, 4.9x the SyncVectorEnv '
         '(1.99, 1.99) | 318 (1.00)',
-        "Both cores busy, the mill's ROS34PW2 step included; the 3,000 steps/s target is **not met** (about half "
-        "of it): what remains is the cost of one copy's physics step.",
+        "Both cores busy, the mill's ROS34PW2 step included; the 3,000 steps/s target was **not met** there (about "
+        "half of it): what remained was the cost of one copy's physics step.",
+        # the fastest step's section (2026-11-30, quiet machine): one copy's CPU rates of the accuracy runs, the
+        # throughput table's three runs and their medians
+        "at 2,692 and 1,655 steps/s on one copy's thread against ROS34PW2's 1,421 and 1,055 in the same runs (quiet "
+        "machine).",
+        'three runs, 2026-11-30 12:29-12:30 UTC, load 0.75-0.93 (nothing else running):',
+        'env, 8 copies | registered step (pool) | one thread | | | SyncVectorEnv | |---|---|---|---|---|---| | '
+        'LadderChain-v0 | 1,658 / 1,644 / 1,596 | 869 / 879 / 820 | 3,107 / 3,159 / 3,096 | **6,584** / 6,631 / '
+        '6,374 | 810 / 808 / 761 | | LadderMill-v2 | 1,280 / 1,283 / 1,276 | 671 / 669 / 675 | 2,556 / 2,694 / '
+        '2,690 | **4,505** / 4,854 / 4,912 | 554 / 574 / 577',
+        "The target is **met** with the fastest step within 1e-3 as the envs' physics step: medians 6,584 (the "
+        'chain) and 4,854 (LadderMill-v2) env steps/s at 8 copies, both cores busy ("threads" 1.82-1.86 and '
+        '1.69-1.75). The registered RK4 steps stay at 1,644 and 1,280; ROS34PW2 alone reads 3,107 and 2,690, twice '
+        "the chain's 1,522 of 2026-11-29 16:47",
         '( runs it for these two and LadderMill-v0): make + reset + one step in a fresh process, cold with a new '
         'empty , warm from the cache that run left (median of 3). This 2-core machine was shared with four other '
         'jobs (load average 4-6), so wall seconds are 2-3x the CPU seconds; compare the CPU seconds. On '
@@ -276,7 +269,6 @@ BENCHMARKS = Covered(
         "(cold, no warm-up): 62.3 s CPU against 60.8 s, a 200-step rollout's bits changed: rejected.",
     ),
     derived=(
-        '1,020 x 1.6 x 2 = 3,260 for the chain and 800 x 1.9 x 2 = 3,040 for the mill',
     ),
     not_rerun=(
         # the eigenvalue estimate just after a transfer (moving_cable.md's, likewise not re-run) and the operating
@@ -297,6 +289,14 @@ BENCHMARKS = Covered(
         Printed('step_accuracy_10', (  # the accuracy table's extents and errors (its steps given, its CPU timings)
             'LadderChain-v0 (3612.8 m)', '| 0.188 m | 5.2e-5 |', '| 1.158 m | 3.2e-4 |', '| 1.628 m | 4.5e-4 |',
             'LadderMill-v2 (3477.4 m)', '| 3.2e-5 m | 9.1e-9 |', '| 2.4 mm | 7.0e-7 |', '| 1.9e-5 |',
+        )),
+        Printed('fast_step_accuracy_10', (  # the fastest step's table (labels and steps given)
+            '| 1.554 m, 4.3e-4, 200 | 0.0672 m, 1.93e-5, 200 |', '| 2.119 m, 5.86e-4, 190 | 0.131 m, 3.78e-5, 200 |',
+            '| 2.537 m, 7.02e-4, 167 | 0.298 m, 8.56e-5, 20 |', '| 2.175 m, 6.02e-4, 184 | 0.0939 m, 2.7e-5, 7 |',
+        )),
+        Printed('fast_step_accuracy_40', (
+            "it ends the open-loop chain's whip after 244 periods against the reference's 245 (ROS34PW2 223), 15.35 m "
+            '(4.25e-3 of the extent) off just before, and the mill after 320 against 321, 0.47 m off.',
         )),
         Printed('step_accuracy_40', (
             "the episode ends after 322 periods against the reference's 321", '(7.5e-6 of the extent) until then;',

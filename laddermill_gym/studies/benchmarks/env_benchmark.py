@@ -114,9 +114,12 @@ def _th(threads: float | None) -> str:
 
 
 #: the further native envs of the 101-wing envs' rows (issue 32 point 3): the registered step on one thread (the
-#: default at 8 copies before the 101-wing models stepped on the thread pool from 2 copies) and one ROS34PW2 step
-#: per control period (``physics_step``, ``envs/physics_step.py``), both measured in the same run
-FAST_101 = {"one-thread": {"parallel": False}, "ros34pw2": {"physics_step": "ros34pw2"}}
+#: default at 8 copies before the 101-wing models stepped on the thread pool from 2 copies), one ROS34PW2 step
+#: per control period (``physics_step``, ``envs/physics_step.py``) and one ROS2 step per period with its iteration
+#: matrix kept for 4 steps (``jacobian_every``: the fastest step within 1e-3 of the extent that runs the whole
+#: short episode on the chain and on LadderMill-v2, docs/benchmarks.md), all measured in the same run
+FAST_101 = {"one-thread": {"parallel": False}, "ros34pw2": {"physics_step": "ros34pw2"},
+            "ros2:4": {"physics_step": "ros2", "jacobian_every": 4}}
 #: the 101-wing envs' options: copy-steps per repeat (about a second of native stepping at 8 copies) and the variants
 _OPTS_101 = {"quick": True, "budget": 5e4, "variants": FAST_101}
 

@@ -3,7 +3,8 @@ a short episode of seeded actions (the open-loop action plus uniform noise, the 
 CG and cable nodes' positions after every control period, against RK4 at a quarter of the registered step (the
 reference). Prints the extent (the largest distance of a point from the origin over the reference run) and, per
 physics step, the largest position error [m], as a share of the extent, and its CPU time and rate on this process's
-thread (one copy, so one thread). tests/test_fast_physics_step.py holds the 1e-3 bound for ``physics_step=
+thread (one copy, so one thread). A label ``METHOD:K`` (``ros2t:8``) keeps the W-method's iteration matrix for K
+steps (the env argument ``jacobian_every``). tests/test_fast_physics_step.py holds the 1e-3 bound for ``physics_step=
 "ros34pw2"``.
 
 Command: ``python -m laddermill_gym.studies.benchmarks.physics_step_accuracy laddermill_gym/LadderChain-v0
@@ -63,6 +64,20 @@ def episode(env_id: str, n_periods: int, **kwargs) -> tuple[np.ndarray, float]:
     return np.array(out), cpu
 
 
+def step_arguments(label: str) -> dict:
+    """The env arguments of a physics-step label: "registered" (none), a ``physics_step`` value ("ros2t"), or one
+    with the W-method's iteration matrix kept for k steps ("ros2t:8": ``jacobian_every`` = 8). ValueError naming
+    the label otherwise."""
+    if label == "registered":
+        return {}
+    method, sep, every = label.partition(":")
+    if not sep:
+        return {"physics_step": method}
+    if not every.isdigit() or int(every) < 1:
+        raise ValueError(f"physics step {label!r}: write METHOD or METHOD:K with K >= 1 steps per Jacobian")
+    return {"physics_step": method, "jacobian_every": int(every)}
+
+
 def compare(env_id: str, episode_time: float, steps=("ros34pw2",), echo=print, **kwargs) -> dict:
     """The study: {"extent": m, "periods": control periods asked, label: {"error_m", "share", "periods",
     "cpu_s"}} for the registered step ("registered") and each ``physics_step`` of ``steps`` (once per control
@@ -75,7 +90,7 @@ def compare(env_id: str, episode_time: float, steps=("ros34pw2",), echo=print, *
          f"ran {len(ref) - 1} periods")
     res = {"extent": extent, "periods": n}
     for label in ("registered", *steps):
-        P, cpu = episode(env_id, n, **({} if label == "registered" else {"physics_step": label}), **kwargs)
+        P, cpu = episode(env_id, n, **step_arguments(label), **kwargs)
         m = min(len(P), len(ref))
         err = float(np.max(np.linalg.norm(P[:m] - ref[:m], axis=2)))
         res[label] = {"error_m": err, "share": err / extent, "periods": len(P) - 1, "cpu_s": cpu}
@@ -88,7 +103,9 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("env_id", choices=sorted(REGISTERED_DT))
     p.add_argument("--time", type=float, default=10.0, help="episode time [s] (default 10)")
-    p.add_argument("--steps", nargs="+", default=["ros34pw2", "ros2"], help="physics_step values compared")
+    p.add_argument("--steps", nargs="+", default=["ros34pw2", "ros2"],
+                   help="physics_step values compared; METHOD:K keeps a W-method's iteration matrix K steps "
+                        "(jacobian_every), e.g. ros2:4")
     args = p.parse_args(argv)
     compare(args.env_id, args.time, tuple(args.steps))
     return 0
