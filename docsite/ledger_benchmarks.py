@@ -244,7 +244,8 @@ BENCHMARKS = Covered(
         'caches empty, three rounds alternated with the code before (2026-11-30, load 2.4-7): first process 52.9 / '
         '54.5 / 54.0 -> 48.0 / 48.6 / 48.7 s CPU, second 29-31 -> 38-40 s; wall 207.8 / 210.2 / 128.6 -> 216.9 / '
         '184.3 / 133.3 s (no gain under load). Quiet (02:17, load 0.6-1.2), one pair: 49.7 -> **45.7 s** wall (CPU '
-        '48.9 + 25.1 -> 44.8 + 32.9 s): 60 s met that night.',
+        '48.9 + 25.1 -> 44.8 + 32.9 s): 60 s met that night; again on 2026-11-30 12:14-12:22 (load 0.3-1.5, three '
+        'cold starts): 41.9 / 43.5 / 41.9 s (CPU 41.0-41.3 + 31.2-32.3 s).',
         "(c27a42a, load 0.5-3): 60.8 s CPU, 69 functions; the step kernel's nest 45.9 s (own CPU: 10.3, 6.8, 5.4,"
         " its callees 23.2), the static start's in-plane right-hand side 11.1 s, the read-outs at the first step "
         '1.6 s. The same second process now serves every env ( , ): the wing and craft tasks start it first thing'
