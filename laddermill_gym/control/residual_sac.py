@@ -32,12 +32,31 @@ A limit of the construction (inherent in SAC's squashing): where the LQR saturat
 is atanh(1 - EPS) = 10.7 and the action's slope in r is 1 - a^2 = 2e-9, so the residual cannot pull a saturated
 control back quickly; it acts where the LQR is inside its range.
 
+**The residual after the squash** (``policy_kwargs.residual_after_squash: true``, with ``residual_limit: L``; the
+default false is the construction above, bit for bit). SAC's squashed action is the residual's alone and the LQR is
+added after it:
+
+u = tanh(r(z) + std(o) eps)  (deterministic u = tanh(r(z))),   a = clip(a_lqr(o) + L u, -1, 1)
+
+with r(z) = skip(z) + mu(mlp(z)) zero-started as above (unbounded: u is within +-1, so L u within +-L). The
+untrained deterministic u is tanh(0) = 0 and a = clip(a_lqr(o), -1, 1) in float64, the LQR's own clipped action bit
+for bit; a moves by up to L wherever the LQR acts, a saturated control included (where a_lqr >= 1 a negative u
+pulls it back to 1 - L): the authority the construction above lacks there, as PPO's
+:class:`~laddermill_gym.control.residual_policy.ResidualPolicy` (whose bound also acts on the action). The actor's
+``forward`` and ``action_log_prob`` return a, so SB3's replay buffer (``SAC.collect_rollouts`` stores ``predict``'s
+output; the action scaling is the identity) and the critics in ``SAC.train`` see the action the env gets. The
+log-probability is u's (SB3's squashed Gaussian) minus n_act log L: a = a_lqr + L u is a shift by a constant of u
+and a scale by the constant L, whose Jacobian is L^n_act; the clip's mass at +-1 is ignored, as SB3 ignores the
+squash's own boundary (the gradient through a clipped component is zero).
+
 The buffers are part of the state dict: SB3's zip format saves them and ``SAC.load`` imports this class by name.
 :func:`~laddermill_gym.control.warm_start.start_residual` sets them (``init_from: lqr`` with
 ``policy: ResidualSACPolicy``).
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 import torch
@@ -82,9 +101,11 @@ class ResidualActor(Actor):
     """SB3's SAC ``Actor`` whose pre-squash mean is the LQR's atanh-ed action plus a zero-started residual
     (module docstring). Needs SB3's unstructured noise (``use_sde: false``)."""
 
-    def __init__(self, *args, residual_limit: float | None = None, **kwargs) -> None:
+    def __init__(self, *args, residual_limit: float | None = None, residual_after_squash: bool = False,
+                 **kwargs) -> None:
         super().__init__(*args, **kwargs)
         self.residual_limit = residual_limit
+        self.residual_after_squash = residual_after_squash
         if self.use_sde:
             raise ValueError("ResidualSACPolicy: use_sde must be false (the residual actor uses SAC's own noise)")
         n_obs, n_act = self.observation_space.shape[0], self.action_space.shape[0]
@@ -97,22 +118,37 @@ class ResidualActor(Actor):
         nn.init.constant_(self.log_std.bias, self.log_std_init)
 
     def get_action_dist_params(self, obs: torch.Tensor):
-        """(pre-squash mean (N, n_act) float64, log std (N, n_act) float64, {}) of raw observations ``obs``."""
+        """(pre-squash mean (N, n_act) float64, log std (N, n_act) float64, {}) of raw observations ``obs``: the
+        LQR's atanh-ed action plus the residual, or the residual alone after the squash (module docstring)."""
         z = self.extract_features(obs, self.features_extractor)
         latent = self.latent_pi(z)
         residual = (self.mu(latent) + self.skip_net(z)).to(torch.float64)
+        log_std = torch.clamp(self.log_std(latent), LOG_STD_MIN, LOG_STD_MAX).to(torch.float64)
+        if self.residual_after_squash:  # u = tanh(r + std eps): the LQR is added after it (after_squash)
+            return residual, log_std, {}
         if self.residual_limit is not None:  # L tanh(r / L): within +-L, tanh(0) = 0 exactly
             residual = self.residual_limit * torch.tanh(residual / self.residual_limit)
         base = lqr_base_actions(self, obs.to(torch.float64)).clamp(-1.0 + BASE_EPS, 1.0 - BASE_EPS)
-        log_std = torch.clamp(self.log_std(latent), LOG_STD_MIN, LOG_STD_MAX).to(torch.float64)
         return torch.atanh(base) + residual, log_std, {}
 
+    def after_squash(self, obs: torch.Tensor, squashed: torch.Tensor) -> torch.Tensor:
+        """The env action clip(a_lqr(obs) + L u, -1, 1) (N, n_act) float64 of SAC's squashed residual action u
+        ``squashed`` (N, n_act) and raw observations ``obs``, or u itself without ``residual_after_squash``."""
+        if not self.residual_after_squash:
+            return squashed
+        base = lqr_base_actions(self, obs.to(torch.float64))
+        return (base + self.residual_limit * squashed.to(torch.float64)).clamp(-1.0, 1.0)
+
     def forward(self, obs: torch.Tensor, deterministic: bool = False) -> torch.Tensor:
-        return super().forward(obs, deterministic).to(torch.float32)
+        return self.after_squash(obs, super().forward(obs, deterministic)).to(torch.float32)
 
     def action_log_prob(self, obs: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+        """(env actions (N, n_act), their log-probabilities (N,)), float32: after the squash, u's log-probability
+        minus n_act log L (the scale L's Jacobian; the clip's mass at the bounds is ignored)."""
         actions, log_prob = super().action_log_prob(obs)
-        return actions.to(torch.float32), log_prob.to(torch.float32)
+        if self.residual_after_squash:
+            log_prob = log_prob - actions.shape[1] * math.log(self.residual_limit)
+        return self.after_squash(obs, actions).to(torch.float32), log_prob.to(torch.float32)
 
     def actor_parameters(self) -> list:
         """The trained parameters of the actor (the critic warm-up freezes them)."""
@@ -124,12 +160,19 @@ class ResidualSACPolicy(SACPolicy):
     residual and the critics. Needs a Box observation space and the action space [-1, 1]^n."""
 
     def __init__(self, observation_space, action_space, lr_schedule, residual_limit: float | None = None,
-                 **kwargs) -> None:
+                 residual_after_squash: bool = False, **kwargs) -> None:
         number = isinstance(residual_limit, (int, float)) and not isinstance(residual_limit, bool)
         if residual_limit is not None and not (number and 0.0 < residual_limit <= 2.0):
             raise ValueError(f"ResidualSACPolicy: residual_limit {residual_limit!r} must be a number in (0, 2] "
                              f"(a bound of the pre-squash residual, so of the action's change) or None (no bound)")
+        if not isinstance(residual_after_squash, bool):
+            raise ValueError(f"ResidualSACPolicy: residual_after_squash {residual_after_squash!r} must be true or "
+                             f"false")
+        if residual_after_squash and residual_limit is None:
+            raise ValueError("ResidualSACPolicy: residual_after_squash needs residual_limit L (the env action is "
+                             "clip(a_lqr + L u, -1, 1), u SAC's squashed action)")
         self.residual_limit = None if residual_limit is None else float(residual_limit)
+        self.residual_after_squash = residual_after_squash
         for name, space in (("observation", observation_space), ("action", action_space)):
             if not isinstance(space, spaces.Box) or len(space.shape) != 1:
                 raise ValueError(f"ResidualSACPolicy: needs a flat Box {name} space (the wing envs'), got {space}")
@@ -141,11 +184,13 @@ class ResidualSACPolicy(SACPolicy):
         super().__init__(observation_space, action_space, lr_schedule, **kwargs)
 
     def _get_constructor_parameters(self) -> dict:
-        return {**super()._get_constructor_parameters(), "residual_limit": self.residual_limit}
+        return {**super()._get_constructor_parameters(), "residual_limit": self.residual_limit,
+                "residual_after_squash": self.residual_after_squash}
 
     def make_actor(self, features_extractor=None) -> ResidualActor:
         kwargs = self._update_features_extractor(self.actor_kwargs, features_extractor)
-        return ResidualActor(**kwargs, residual_limit=self.residual_limit).to(self.device)
+        return ResidualActor(**kwargs, residual_limit=self.residual_limit,
+                             residual_after_squash=self.residual_after_squash).to(self.device)
 
     def scale_action(self, action: np.ndarray) -> np.ndarray:
         """The identity: the action space is [-1, 1] (checked at construction), SB3's map is the identity there."""
