@@ -23,6 +23,9 @@ WORK_PRECISION = Covered(
               for scene, after in zip(SCENES, ("\\| ladder_chain", "\\| roberts_flying_model", "\\| laddermill",
                                                "The estimate holds"), strict=True))),
     given=(
+        # whip_spectrum's step forcing and its methods' steps (the commands' inputs)
+        'The reading above (the W-methods damp lightly damped cable modes) is wrong. runs the step forcing (10 s)',
+        'ROS34PW2 0.0667 s: error, damped part, slow part | 0.0667 s | RK4 (0.0222 / 0.0154 s) |',
         '(re-run on 2026-11-30;',  # --long wp_podgaets's day
         'up to 200 states, the 20 largest in magnitude',
         'The pumping kite and the two 35 m crafts ( , 2026-11-24) keep RK4:',  # the scenes and the run's date
@@ -64,6 +67,10 @@ WORK_PRECISION = Covered(
         'failure code fails the case).',
     ),
     derived=(
+        # readings over whip_spectrum's printed shares (each scene's modes by share, |exp(h l)| and |R(h l)| to 4
+        # digits): no one printed figure
+        'The damped modes hold under 1 % of the error; the largest shares are in slow (|lambda| < 0.25 1/s, '
+        'mostly unstable) or resolved modes, where |R| = |exp(h lambda)| to 4 digits for ROS34PW2 and RK4 alike:',
         # the page's reading of wp_rk4_scenes' printed CPU costs on the pumping kite (a bound, no printed figure)
         'RK4 and the W-methods are within 10 % of one another).',
     ),
@@ -281,36 +288,37 @@ WORK_PRECISION = Covered(
             'not through the uncontrolled apex whip of a 10 s open-loop run, where RK4 at its stable step is already '
             '70 (tension) to 1,700 (lateral offset) times more accurate than the tolerances ask.',
         )),
+        # split to the printed lines they come from (--long whip_spectrum, 2026-11-30, 63 s: every cell as written)
         Printed('whip_spectrum', (
-            'The reading above (the W-methods damp lightly damped cable modes) is wrong. runs the step forcing (10 '
-            's) by RK4 at 2 ms to each time , forms the full Jacobian (central differences, LAPACK ), writes each '
-            "run's error in its eigenvectors and prints the part of the wings' lateral error in the modes the method "
-            'damps (|R(h lambda)| < 0.9 |exp(h lambda)|) and with |lambda| < 1 1/s (a badly conditioned basis: parts '
-            'can exceed the whole):',
-            'ROS34PW2 0.0667 s: error, damped part, slow part | 0.0667 s | RK4 (0.0222 / 0.0154 s) | '
-            '|---|---|---|---| | ladder_chain, 6 s (100, 0.550 1/s) | 0.0046 m, 3.5e-6, 0.0014 (168 of 1313 damped) '
-            '| 0.0019 m, 0, 0.0046 | 2.6e-7 m, 6.7e-9, 2.5e-7 | | ladder_chain, 8 s (99, 0.157 1/s) | 0.032 m, '
-            '1.1e-4, 0.019 | 0.081 m, 0, 0.066 | 1.3e-6 m, 6.9e-8, 9.9e-7 | | laddermill, 7.6 s (92, 6.405 1/s) | '
-            '0.031 m, 6.2e-5, 0.041 | 0.0115 m, 0, 0.038 | 4.7e-4 m, 9.8e-9, 4.6e-4',
-            'The damped modes hold under 1 % of the error; the largest shares are in slow (|lambda| < 0.25 1/s, '
-            'mostly unstable) or resolved modes, where |R| = |exp(h lambda)| to 4 digits for ROS34PW2 and RK4 alike: '
-            'what separates the methods is the local error each step puts into the unstable modes, which the whip '
-            "amplifies (the mill's 6.4 1/s mode gets 0.70 of exp(z) from ROS34PW2 at 0.2 s).",
-            '**Keeping the unresolved oscillations does not help.** , ROS2 at gamma = 1/4 (order 2 for any J, '
-            '|R(iy)| = 1; tests/test_rosenbrock.py), in the 10 s studies (commands above; chain 15 min, mill 21 min, '
-            'side by side, load 8-13):',
-            'ladder_chain: 0.0222 s | 0.0667 s (1.6e-3, 9.4e-5, 0.098 m, 4.4e-3 rad): **1.45x** | 0.0333 s (2.2e-3, '
-            '9.3e-5, 0.049 m, 3.6e-3 rad): 1.24x | 1e-4: 0.77x | | laddermill: 0.0154 s | 0.0167 s (1.1e-3, 2.5e-4, '
-            '0.026 m, 4.6e-3 rad): 0.77x | 0.0167 s (1.9e-3, 4.8e-4, 0.092 m, 5.9e-3 rad): **1.31x** | 1e-4: 1.04x',
-            '( : chain 0.025 s, 0.75x; mill none.) leads on the mill only as its two stages cost less than an RK4 '
-            'step; on the chain at 0.0667 s it is 0.47 m off (ROS34PW2 0.098, ROS2 0.33), from 0.025 to 0.0125 s '
-            '0.020, 0.0089, 0.0051 m (order 2.0). ROS3Pw and ROS34PW3 (Rang & Angermann 2005, R(inf) = 0.73, 0.63) '
-            'damp more (|R(4i)| 0.79, 0.70 against 0.61): not added. **5x through the whip is not reached**: the '
-            'bound is the local error in the slow unstable modes, not the stability function; a Jacobian reused over '
-            'steps gains at most 2.5x (above).',
+            "by RK4 at 2 ms to each time , forms the full Jacobian (central differences, LAPACK ), writes each run's "
+            "error in its eigenvectors and prints the part of the wings' lateral error in the modes the method damps "
+            "(|R(h lambda)| < 0.9 |exp(h lambda)|) and with |lambda| < 1 1/s (a badly conditioned basis: parts can "
+            'exceed the whole):',
+            'ladder_chain, 6 s (100, 0.550 1/s) | 0.0046 m, 3.5e-6, 0.0014 (168 of 1313 damped)',
+            '| 0.0019 m, 0, 0.0046 |', '| 2.6e-7 m, 6.7e-9, 2.5e-7 |',
+            'ladder_chain, 8 s (99, 0.157 1/s) | 0.032 m, 1.1e-4, 0.019', '| 0.081 m, 0, 0.066 |',
+            '| 1.3e-6 m, 6.9e-8, 9.9e-7 |', 'laddermill, 7.6 s (92, 6.405 1/s) | 0.031 m, 6.2e-5, 0.041',
+            '| 0.0115 m, 0, 0.038 |', '| 4.7e-4 m, 9.8e-9, 4.6e-4', "(the mill's 6.4 1/s mode",
         )),
     ),
     not_rerun=(
+        # not whip_spectrum's output (until 2026-11-30 listed under its group, which printed none of them): its
+        # ROS34PW2 runs at 0.0667 s only, the 0.2 s share came from a run with --methods ros34pw2:0.2; the ros2t /
+        # ros34pw2a table and its paragraph are the 10 s work-precision studies' errors and CPU speed-ups (the
+        # commands of --long wp_controller_measure, 22 min, not yet run)
+        'gets 0.70 of exp(z) from ROS34PW2 at 0.2 s).',
+        '**Keeping the unresolved oscillations does not help.** , ROS2 at gamma = 1/4 (order 2 for any J, '
+        '|R(iy)| = 1; tests/test_rosenbrock.py), in the 10 s studies (commands above; chain 15 min, mill 21 min, '
+        'side by side, load 8-13):',
+        'ladder_chain: 0.0222 s | 0.0667 s (1.6e-3, 9.4e-5, 0.098 m, 4.4e-3 rad): **1.45x** | 0.0333 s (2.2e-3, '
+        '9.3e-5, 0.049 m, 3.6e-3 rad): 1.24x | 1e-4: 0.77x | | laddermill: 0.0154 s | 0.0167 s (1.1e-3, 2.5e-4, '
+        '0.026 m, 4.6e-3 rad): 0.77x | 0.0167 s (1.9e-3, 4.8e-4, 0.092 m, 5.9e-3 rad): **1.31x** | 1e-4: 1.04x',
+        '( : chain 0.025 s, 0.75x; mill none.) leads on the mill only as its two stages cost less than an RK4 '
+        'step; on the chain at 0.0667 s it is 0.47 m off (ROS34PW2 0.098, ROS2 0.33), from 0.025 to 0.0125 s '
+        '0.020, 0.0089, 0.0051 m (order 2.0). ROS3Pw and ROS34PW3 (Rang & Angermann 2005, R(inf) = 0.73, 0.63) '
+        'damp more (|R(4i)| 0.79, 0.70 against 0.61): not added. **5x through the whip is not reached**: the '
+        'bound is the local error in the slow unstable modes, not the stability function; a Jacobian reused over '
+        'steps gains at most 2.5x (above).',
         # a gust run of 2026-11-24 (ec22606): laddermill stress tethered_wing prints no +30 % gust case (its run of
         # 2026-11-30, --long stress_tethered_wing: the estimate at rest 0.01901 s, no gust at RK4 0.0179 s)
         'a +30 % gust makes RK4 at 0.0179 s (0.94 of the estimate at rest) diverge at t = 1.6 s',
