@@ -130,6 +130,7 @@ FEATURES = Covered(  # a summary of the other pages: their groups check what it 
             (r"LQR survives every discrete event and (\d+) of (\d+) NTM seeds",  # gusts-v2, as wind.md's table
              ("{gusts_v2_pumping[lqr/NTM_IB][kept]}", "{gusts_v2_pumping[lqr/NTM_IB][seeds]}"))),
     given=(
+        'On the 101-wing chain 10 s after a direction step, ROS34PW2 at 0.2 s',  # wp_chain's scene, forcing, step
         '1999, eqs.',
         '1-25;',
         'rigid bodies with unit-quaternion attitude (3-2-1 Euler angles on request), quasi-steady aerodynamics, '
@@ -201,6 +202,11 @@ FEATURES = Covered(  # a summary of the other pages: their groups check what it 
     ),
     timings=(
         # dated on docs/benchmarks.md and the pages they summarise
+        # work_precision.md's tables' CPU figures (the runs of 2026-11-24): --long wp_chain printed 342.9x real time
+        # and 4.22x for the chain on 2026-11-30 (nice 15, load 1-2)
+        'runs 465x real time on one thread', '4.2x faster than the fastest RK4 run within 1e-3 (the rotorcraft '
+        '9.7-12.6x, the mill over 5 s 6.1x with ROS34PW2 and 9.8x with ROS2, over 10 s 3.4x with the error-controlled '
+        'at rtol 3e-3).',
         'from its periodic stationary operating point, found in plane once per process (about 20-30 s)',
         'trains through the same harness (20 min:',
         '8.7x real time at 1 m and 335x at 70 m on one thread ( );',
@@ -226,10 +232,9 @@ FEATURES = Covered(  # a summary of the other pages: their groups check what it 
                                        "to the rigid wing's lift ( ).",)),
         Printed("wp_podgaets", ('the implicit one 9x faster at 1e-3);',)),
         Printed("stress_all", ('all 128 cases pass;',)),
-        Printed("wp_chain", ('On the 101-wing chain 10 s after a direction step, ROS34PW2 at 0.2 s runs 465x real '
-                             "time on one thread within 1.9e-4 of the chain's extent, 4.2x faster than the fastest "
-                             'RK4 run within 1e-3 (the rotorcraft 9.7-12.6x, the mill over 5 s 6.1x with ROS34PW2 '
-                             'and 9.8x with ROS2, over 10 s 3.4x with the error-controlled at rtol 3e-3).',)),
+        # --long wp_chain (first run 2026-11-30, nice 15, load 1-2, 375 s): the step forcing's ROS34PW2 at 0.2 s
+        # within 1.90e-04 of the extent, as written; its speeds are CPU timings (below)
+        Printed("wp_chain", ("within 1.9e-4 of the chain's extent,",)),
     ),
     history=(
         History("2026-11-24", "laddermill train of the PPO configs of the day (from random weights, 11 min each), "
