@@ -19,6 +19,10 @@ GETTING_STARTED = Covered(
             (DEMO_ROW.format("lqr", "(ran to the end)"), tuple(f"{{main_job[lqr][{i}]}}" for i in range(4))),
             (DEMO_ROW.format("ppo_mill", "(ran to the end)"), tuple(f"{{main_job[ppo_mill][{i}]}}" for i in range(4))),
             (r"\((\d+\.\d+) s simulated, the step at 1 s\)", ("{simulate_laddermill[simulated]}",)),
+            # the span less the step's 1 s (until 2026-11-30 derived entries)
+            (r"the run stops about (\d+) s after the step \(", ("~{simulate_laddermill[after_1s]}",)),
+            (r"last state before the run stops, about (\d+) s after a 0\.01 rad",
+             ("~{simulate_laddermill[after_1s]}",)),
             (r"wings (\d+)-(\d+) beyond the (\d+) m/s speed guard",
              ("{simulate_laddermill[first_wing]}", "{simulate_laddermill[last_wing]}", "{simulate_laddermill[guard]}")),
             (r"at the start \((0\.\d{4}) s, above the scene's (0\.\d+) s\)",
@@ -34,7 +38,7 @@ GETTING_STARTED = Covered(
              "(base install, numba's and the operating-point caches empty, load 1, 2026-11-29 evening)",
              "2 min 47 s (the demo 140 s of it", "(about 30 s of compute)", "(about a minute, plus numba's",
              "(about 35 minutes on a 2-core machine from a fresh clone, 31 of them"),
-    derived=("stops about 20 s after the step", "stops, about 20 s after", "(period about 20 s: zero crossings of "
+    derived=("(period about 20 s: zero crossings of "
              "the lateral position 9-12 s apart; the linear model's 23 s)", "dive after about 52 s"),
 )
 

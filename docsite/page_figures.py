@@ -84,14 +84,16 @@ def rotor_design() -> dict:
 
 
 def simulate(scene_args: list[str]) -> dict:
-    """``laddermill simulate SCENE_ARGS``: its RK4 step and estimated stable step [s], the simulated span [s], and
-    how the run stopped (the first and last wing over the speed guard, or the ground contact's time and height)."""
+    """``laddermill simulate SCENE_ARGS``: its RK4 step and estimated stable step [s], the simulated span [s] (and
+    after a step at 1 s, ``after_1s``), and how the run stopped (the first and last wing over the speed guard, or
+    the ground contact's time and height)."""
     with tempfile.TemporaryDirectory() as tmp:
         argv = ["laddermill_gym.cli", "simulate", *scene_args, "--out", tmp]
         out = run_command(argv, 1800)
     step = _search(r"^RK4 step ([\d.]+) s; estimated stability limit at the start ([\d.e-]+) s", out, argv)
     found = {"dt": step.group(1), "stable_step": float(step.group(2)),
              "simulated": _search(r"^simulated ([\d.]+) s in", out, argv).group(1)}
+    found["after_1s"] = float(found["simulated"]) - 1.0
     periodic = re.search(r"periodic motion converged at t = [\d.]+ s \(period [\d.]+ s\): mean generator power "
                          r"([\d.]+) kW", out)
     if periodic:

@@ -182,3 +182,14 @@ def test_the_crafts_period_error_bound_and_failure_are_worked_from_its_figures()
     assert craft_ratios({"rel_error_pct": 0.998, "open_01": {"fail": "33.0"}})["open_01"]["after_step"] == 32.0
     assert named(0.497, 0.998, "33.0") == []
     assert len(named(0.52, 0.998, "33.0")) == 2 and len(named(0.497, 1.2, "34.0")) == 2
+
+
+def test_the_mills_run_after_the_step_is_named_when_changed():
+    """getting_started.md's "stops about 20 s after the step (21.45 s simulated, the step at 1 s)" and its picture's
+    caption: simulate's span less the step's 1 s (20.45 s); a span of 22.65 s (21.65 s after) is named twice."""
+    def named(span: str) -> list[str]:
+        measured = {"checked_pages": ["getting_started.md"],
+                    "simulate_laddermill": {"simulated": span, "after_1s": float(span) - 1.0}}
+        return [b for b in pages_differences(measured) if "s after" in b and "printed no" not in b]
+
+    assert named("21.45") == [] and len(named("22.65")) == 2
