@@ -342,5 +342,31 @@ CONTROLLERS = Covered(
                  'peak lateral excursion in all 18 episodes, difference 0.0 m; held-out 70 / 200, both 70, p = 1), '
                  "which is no learned policy. Its checkpoints gave up more of the LQR's validation survivals than any "
                  "PPO residual's (10 to 27).",)),
+        # the residual after the squash
+        History('2026-11-30',
+                'laddermill train configs/agents/sac_tethered_wing_residual_after.yaml --seed 0 (8bf9629); laddermill '
+                'gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 --controllers lqr RUN',
+                "the after-squash residual SAC's run of 754,592 steps in 30.16 min, not kept",
+                ("The residual after the squash gave a learned policy, but not the LQR's gusts-v1 count (run of "
+                 "2026-11-30). ( , ) adds the LQR after SAC's squash: the env action is clip(a_lqr + L u, -1, 1), u = "
+                 "tanh(r(z) + std eps) SAC's squashed action of the zero-started residual, L = 0.2, so the untrained "
+                 "deterministic action is the LQR's clipped action bit for bit and every control, a saturated one "
+                 "included, can move by up to 0.2. The replay buffer and the critics get that action; the actor's "
+                 "log-probability is u's minus 3 log 0.2, the clip's mass at the bounds ignored as SB3 ignores the "
+                 "squash's own boundary ( : the LQR of as the oracle through SB3's zip, a saturated control moved, the "
+                 "log-density against torch.distributions). Every other setting is the previous SAC run's but the "
+                 "training time (30 min), fixed and committed before it was trained or scored; so the start's action "
+                 "noise is 0.2 x 0.08 = 0.016 of the half range, a fifth of the previous run's. (754,592 steps in "
+                 '30.16 min on one core at a load of 0.6 to 2.4) validated 78 / 184 at the start and at 50,008 steps '
+                 '(the warm-up), 34 at 100,008 steps (56 lost that the LQR holds), then 70 to 123. The paired rule '
+                 "kept 700,008 steps: 123 / 184 survived (NTM-IB 62 against the LQR's 33, NTM-IA 24 against 15, light "
+                 "Dryden 21 against 14, gusts 16 as 16), 11 lost that the LQR holds, score 101 against the start's 78. "
+                 "Scored once on gusts-v1 ( ): 10 / 12 against the LQR's 11 / 12. It loses NTM_IB, which the LQR holds "
+                 'on all three seeds (seed 0 at 23.60 s, near 23 s as every residual run so far, and seed 2 at 39.55 '
+                 's; it holds seed 1), and dryden_moderate on every seed as the LQR does, later (22.40, 53.50, 57.85 s '
+                 'against 21.45, 32.15, 18.90 s); it holds the ten others, with larger excursions in the quiet ones '
+                 "(direction_step 0.24 m against 0.059 m: the learned residual is not zero at trim). The validation's "
+                 "gain (45 more of its episodes survived) did not carry over to gusts-v1's three NTM_IB fields: issue "
+                 '31 point 4 is not met by this run. No held-out run was made (time).',)),
     ),
 )
