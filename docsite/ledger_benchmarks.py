@@ -71,7 +71,8 @@ BENCHMARKS = Covered(
         # the new section's heading, settings and the command's labels and episode lengths
         'The fastest step within 1e-3: 3,000 steps/s at 8 copies (2026-11-30)',
         'is kept for 4 steps', 'LadderChain-v0: error, share of the extent, periods of 200',
-        'Kept 8 steps, the matrix ends both episodes early', 'and ROS2T kept 4 the chain', 'runs both through within 1e-3',
+        'Kept 8 steps, the matrix ends both episodes early', 'and ROS2T kept 4 the chain',
+        'runs both through within 1e-3',
         'Over 40 s ( )', '(its 101-wing rows now measure too)',
         '### LadderMill: the operating point on disk (issue 32 point 1)',
         'The key is a SHA-256 of everything',
