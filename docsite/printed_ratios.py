@@ -140,11 +140,26 @@ def craft_ratios(found: dict) -> dict:
             "rel_error_bound": str(math.ceil(found["rel_error_pct"]))}
 
 
+def evaluate_rows(printed: str, episodes: int, reference: str) -> dict:
+    """``laddermill evaluate``'s summary rows (controller, return, length [s], max |dy| [m], power [W], failures): per
+    controller its power [kW] (``power_kW``), the episodes held of the ``episodes`` run ("5 of 5" where it prints no
+    failure, else its failures; ``held``) and its power over the ``reference`` row's [%] (``pct``)."""
+    rows = {m.group(1): (float(m.group(2)), m.group(3).strip()) for m in re.finditer(
+        r"^(\S+) +-?[\d.]+ +[\d.]+ +[\d.]+ +(-?[\d.]+) +(.+)$", printed, re.M)}
+    if reference not in rows:
+        return {}
+    return {name: {"power_kW": watts / 1e3, "pct": 100.0 * watts / rows[reference][0],
+                   "held": f"{episodes} of {episodes}" if failures == "-" else failures}
+            for name, (watts, failures) in rows.items()}
+
+
 #: long group -> the function of its printed output whose figures its pages' checks name.
 RATIOS = {"reeling_power_curve_printed": power_curve_ratios, "pumping_power_curve_printed": power_curve_ratios,
           "reeling_cycle_40": cycle_ratio, "step_accuracy_10": step_accuracy, "step_accuracy_40": step_accuracy,
           "fast_mill_v2_step": mill_step_peak, "pointmass_fidelity": fidelity_ratios,
-          "pointmass_accuracy": kite_travel}
+          "pointmass_accuracy": kite_travel,
+          "mill_claim": lambda out: evaluate_rows(out, 5, "lqr"),  # --episodes 5
+          "chain_claim": lambda out: evaluate_rows(out, 5, "lqr:lqr_ladder_chain_central")}
 
 
 def with_ratios(long: dict) -> dict:

@@ -193,3 +193,23 @@ def test_the_mills_run_after_the_step_is_named_when_changed():
         return [b for b in pages_differences(measured) if "s after" in b and "printed no" not in b]
 
     assert named("21.45") == [] and len(named("22.65")) == 2
+
+
+CLAIM = """controller                       return  length [s]  max |dy| [m]  power [W]  failures
+ppo_mill                        6039.23       300.0        0.0940   154025.9  -
+lqr                             6039.22       300.0        0.0948   154025.9  -
+"""
+
+
+def test_the_claims_rows_are_worked_from_evaluates_table():
+    """learned_mill.md's "5 of 5 | 300.0 | 0.0940 | 154.026 (100.0 % of the LQR's)" (laddermill evaluate --episodes 5,
+    2026-11-30): 154025.9 W is 154.026 kW, 100.0 % of the LQR's; a failure, or 153925.9 W (99.94 %), is named."""
+    from docsite.printed_ratios import evaluate_rows
+
+    rows = evaluate_rows(CLAIM, 5, "lqr")
+    assert rows["ppo_mill"]["held"] == "5 of 5" and round(rows["ppo_mill"]["power_kW"], 4) == 154.0259
+    assert evaluate_rows(CLAIM, 5, "lqr:lqr_ladder_chain_central") == {}
+    assert long_check_differences({"mill_claim": {"printed": CLAIM}}) == []
+    worse = CLAIM.replace("154025.9  -\nlqr", "153925.9  1 x aerodynamic range exceeded\nlqr")
+    bad = long_check_differences({"mill_claim": {"printed": worse}})
+    assert len(bad) == 1 and "'1 x aerodynamic range exceeded'" in bad[0] and "~99.93" in bad[0], bad
