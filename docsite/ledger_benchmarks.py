@@ -70,10 +70,10 @@ BENCHMARKS = Covered(
         'same for ; the CPU columns on the loaded machine, below):',
         # the new section's heading, settings and the command's labels and episode lengths
         'The fastest step within 1e-3: 3,000 steps/s at 8 copies (2026-11-30)',
-        'is kept for 4 steps', 'LadderChain-v0: error, share of the extent, periods of 200',
-        'Kept 8 steps, the matrix ends both episodes early', 'and ROS2T kept 4 the chain',
-        'runs both through within 1e-3',
-        'Over 40 s ( )', '(its 101-wing rows now measure too)',
+        'is kept for 4 steps', "The target is **met** with the fastest step within 1e-3 as the envs' physics step",
+        'the largest position error as a share of the extent (periods run, of 200):',
+        'on the mill alone K = 5 and 6 do too, 4 % faster on one copy', 'One seeded action sequence per env',
+        'runs both envs through within 1e-3', 'Over 40 s ( )', '(its 101-wing rows now measure too)',
         '### LadderMill: the operating point on disk (issue 32 point 1)',
         'The key is a SHA-256 of everything',
         'and a matching SHA-256 of its payload',
@@ -148,21 +148,18 @@ BENCHMARKS = Covered(
         'LadderChain-v0 | 1,309 steps/s (cpu 1.99, threads 1.99) | 699 (1.00, 1.00) | **1,522** (1.99, 1.99) | '
         '623 (1.00) | | LadderMill-v1 | 731 (1.98, 1.99) | 413 (1.00, 1.00) | **1,569**, 4.9x the SyncVectorEnv '
         '(1.99, 1.99) | 318 (1.00)',
-        "Both cores busy, the mill's ROS34PW2 step included; the 3,000 steps/s target was **not met** there (about "
-        "half of it): what remained was the cost of one copy's physics step.",
+        'Both cores busy, ROS34PW2 included; the 3,000 steps/s target was **not met** there (about half of it).',
         # the fastest step's section (2026-11-30, quiet machine): one copy's CPU rates of the accuracy runs, the
         # throughput table's three runs and their medians
-        "at 2,692 and 1,655 steps/s on one copy's thread against ROS34PW2's 1,421 and 1,055 in the same runs (quiet "
-        "machine).",
+        "One copy's thread in the same runs (load 2.4-2.6): 2,208 and 1,458 steps/s against ROS34PW2's 1,279 and 940.",
         'three runs, 2026-11-30 12:29-12:30 UTC, load 0.75-0.93 (nothing else running):',
         'env, 8 copies | registered step (pool) | one thread | | | SyncVectorEnv | |---|---|---|---|---|---| | '
         'LadderChain-v0 | 1,658 / 1,644 / 1,596 | 869 / 879 / 820 | 3,107 / 3,159 / 3,096 | **6,584** / 6,631 / '
         '6,374 | 810 / 808 / 761 | | LadderMill-v2 | 1,280 / 1,283 / 1,276 | 671 / 669 / 675 | 2,556 / 2,694 / '
-        '2,690 | **4,505** / 4,854 / 4,912 | 554 / 574 / 577',
-        "The target is **met** with the fastest step within 1e-3 as the envs' physics step: medians 6,584 (the "
-        'chain) and 4,854 (LadderMill-v2) env steps/s at 8 copies, both cores busy ("threads" 1.82-1.86 and '
-        '1.69-1.75). The registered RK4 steps stay at 1,644 and 1,280; ROS34PW2 alone reads 3,107 and 2,690, twice '
-        "the chain's 1,522 of 2026-11-29 16:47",
+        '2,690 | 4,505 / **4,854** / 4,912 | 554 / 574 / 577',
+        "dynamics do not change): medians 6,584 (the chain) and 4,854 (LadderMill-v2) env steps/s at 8 copies, both "
+        'cores busy ("threads" 1.82-1.86 and 1.69-1.75). The registered RK4 steps stay at 1,644 and 1,280; ROS34PW2 '
+        "alone reads 3,107 and 2,690, twice the chain's 1,522 of 2026-11-29 16:47",
         '( runs it for these two and LadderMill-v0): make + reset + one step in a fresh process, cold with a new '
         'empty , warm from the cache that run left (median of 3). This 2-core machine was shared with four other '
         'jobs (load average 4-6), so wall seconds are 2-3x the CPU seconds; compare the CPU seconds. On '
@@ -293,8 +290,10 @@ BENCHMARKS = Covered(
             'LadderMill-v2 (3477.4 m)', '| 3.2e-5 m | 9.1e-9 |', '| 2.4 mm | 7.0e-7 |', '| 1.9e-5 |',
         )),
         Printed('fast_step_accuracy_10', (  # the fastest step's table (labels and steps given)
-            '| 1.554 m, 4.3e-4, 200 | 0.0672 m, 1.93e-5, 200 |', '| 2.119 m, 5.86e-4, 190 | 0.131 m, 3.78e-5, 200 |',
-            '| 2.537 m, 7.02e-4, 167 | 0.298 m, 8.56e-5, 20 |', '| 2.175 m, 6.02e-4, 184 | 0.0939 m, 2.7e-5, 7 |',
+            'LadderChain-v0 | 3.2e-4 (200) | 4.3e-4 (200) | 1.04e-3 (200) | 5.66e-4 (185) | 5.93e-4 (175) | 7.02e-4 '
+            '(167) | 5.86e-4 (190) | 6.02e-4 (184)',
+            'LadderMill-v2 | 7.01e-7 (200) | 1.93e-5 (200) | 5.59e-5 (200) | 8.44e-5 (200) | 9.14e-5 (19) | 8.56e-5 '
+            '(20) | 3.78e-5 (200) | 2.7e-5 (7)',
         )),
         Printed('fast_step_accuracy_40', (
             "it ends the open-loop chain's whip after 244 periods against the reference's 245 (ROS34PW2 223), 15.35 m "

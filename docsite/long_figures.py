@@ -167,7 +167,8 @@ LONG = {
     **{f"fast_step_accuracy_{t}": Long(" && ".join(
         f"NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.benchmarks.physics_step_accuracy laddermill_gym/{env} "
         f"--time {t} --steps {steps}" for env in ("LadderChain-v0", "LadderMill-v2")), "about a minute",
-        "benchmarks.md") for t, steps in ((10, "ros2:4 ros2t:4 ros2:8 ros2t:8"), (40, "ros34pw2 ros2 ros2:4"))},
+        "benchmarks.md") for t, steps in ((10, "ros34pw2 ros2:4 ros2:5 ros2:6 ros2:7 ros2:8 ros2t:4 ros2t:8"),
+                                          (40, "ros34pw2 ros2 ros2:4"))},
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "over an hour",
                           "wing_data.md"),

@@ -32,8 +32,8 @@ EPISODE_S = 10.0
 
 
 #: the fastest step within 1e-3 of the extent over EPISODE_S on both envs that runs the whole episode (one ROS2
-#: step per period, its iteration matrix kept 4 steps; docs/benchmarks.md: ros2t:4 is as fast, ros2:8 and ros2t:8
-#: end the episode early)
+#: step per period, its iteration matrix kept 4 steps; docs/benchmarks.md: on the chain ros2:5 leaves the bound,
+#: ros2:6-8, ros2t:4 and ros2t:8 end the episode early)
 FASTEST = "ros2:4"
 
 

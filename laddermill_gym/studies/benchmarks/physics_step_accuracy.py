@@ -4,8 +4,9 @@ CG and cable nodes' positions after every control period, against RK4 at a quart
 reference). Prints the extent (the largest distance of a point from the origin over the reference run) and, per
 physics step, the largest position error [m], as a share of the extent, and its CPU time and rate on this process's
 thread (one copy, so one thread). A label ``METHOD:K`` (``ros2t:8``) keeps the W-method's iteration matrix for K
-steps (the env argument ``jacobian_every``). tests/test_fast_physics_step.py holds the 1e-3 bound for ``physics_step=
-"ros34pw2"``.
+steps (the env argument ``jacobian_every``; not ``whip_spectrum --methods``' METHOD:DT, a step size).
+tests/test_fast_physics_step.py holds the 1e-3 bound for ``physics_step="ros34pw2"`` and for ``"ros2"`` with
+``jacobian_every=4``.
 
 Command: ``python -m laddermill_gym.studies.benchmarks.physics_step_accuracy laddermill_gym/LadderChain-v0
 --time 10 --steps ros34pw2 ros2`` (seconds per run; LadderMill-v2's operating point first, 100-140 s).
