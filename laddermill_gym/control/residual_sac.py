@@ -40,9 +40,12 @@ u = tanh(r(z) + std(o) eps)  (deterministic u = tanh(r(z))),   a = clip(a_lqr(o)
 
 with r(z) = skip(z) + mu(mlp(z)) zero-started as above (unbounded: u is within +-1, so L u within +-L). The
 untrained deterministic u is tanh(0) = 0 and a = clip(a_lqr(o), -1, 1) in float64, the LQR's own clipped action bit
-for bit; a moves by up to L wherever the LQR acts, a saturated control included (where a_lqr >= 1 a negative u
-pulls it back to 1 - L): the authority the construction above lacks there, as PPO's
-:class:`~laddermill_gym.control.residual_policy.ResidualPolicy` (whose bound also acts on the action). The actor's
+for bit; a moves by up to L where the LQR's unclipped action is within 1 + L, a saturated control included (where
+1 <= a_lqr < 1 + L a negative u pulls it below 1): authority the construction above lacks at |a| = 1, as PPO's
+:class:`~laddermill_gym.control.residual_policy.ResidualPolicy` (whose bound also acts on the action). Where
+|a_lqr| > 1 + L (the LQR's unclipped action in strong turbulence often is) the clip absorbs any u: no authority
+there either. Clipping the base first, clip(clip(a_lqr) + L u), would keep the exact start and give the authority
+everywhere (not tried: the runs of 2026-11-30 used this form). The actor's
 ``forward`` and ``action_log_prob`` return a, so SB3's replay buffer (``SAC.collect_rollouts`` stores ``predict``'s
 output; the action scaling is the identity) and the critics in ``SAC.train`` see the action the env gets. The
 log-probability is u's (SB3's squashed Gaussian) minus n_act log L: a = a_lqr + L u is a shift by a constant of u
