@@ -203,3 +203,39 @@ def test_bad_arguments_and_config_name_the_field(started, tmp_path):
         with pytest.raises(ConfigError, match="residual_after_squash") as err:
             load_rl_config(path)
         assert "bad.yaml" in str(err.value)
+
+
+def test_a_clipped_base_gives_authority_beyond_1_plus_l(started, restore, tmp_path):
+    """``residual_base_clipped``: a = clip(clip(a_lqr) + L u); where |a_lqr| >= 1 + L (the LQR's unclipped action by
+    its own code) a residual bias -2 sign(a_lqr) gives |a| = 1 - L tanh(2); the unclipped base (the runs' form)
+    leaves those controls at +-1. Untrained, both act as the LQR bit for bit."""
+    after, _, lqr, obs, venv = started
+    clipped = sac_model(venv, residual_limit=LIMIT, residual_after_squash=True, residual_base_clipped=True)
+    start_residual(clipped, lqr, venv, 50)
+    lqr.reset_clip_count()
+    assert np.array_equal(clipped.predict(obs, deterministic=True)[0], lqr.predict(obs)[0])
+    a_lqr = unclipped(lqr, obs)
+    rows = np.flatnonzero((np.abs(a_lqr) >= 1.0 + LIMIT).any(axis=1))
+    assert len(rows) >= 3
+    for i in rows[:3]:
+        far = np.abs(a_lqr[i]) >= 1.0 + LIMIT
+        got = []
+        for model in (clipped, after):
+            set_residual(model.policy.actor, 0.0, -2.0 * np.sign(a_lqr[i]))
+            got.append(model.predict(obs[i][None], deterministic=True)[0][0].astype(np.float64))
+        np.testing.assert_allclose(np.abs(got[0][far]), 1.0 - LIMIT * np.tanh(2.0), atol=1e-7)
+        assert np.all(np.abs(got[1][far]) == 1.0)  # the unclipped base: the clip absorbs the residual
+    with pytest.raises(ValueError, match="residual_base_clipped True must be true or false, and true only with"):
+        ResidualSACPolicy(after.observation_space, after.action_space, lambda _: 1e-3, residual_limit=0.2,
+                          residual_base_clipped=True)
+    data = yaml.safe_load(open(CONFIG))
+    for value, ok in ((True, True), ("yes", False)):
+        path = tmp_path / "clipped.yaml"
+        kwargs = {**data["policy_kwargs"], "residual_base_clipped": value}
+        path.write_text(yaml.safe_dump({**data, "policy_kwargs": kwargs}))
+        if ok:
+            assert load_rl_config(path).policy_kwargs["residual_base_clipped"] is True
+        else:
+            with pytest.raises(ConfigError, match="residual_base_clipped") as err:
+                load_rl_config(path)
+            assert "clipped.yaml" in str(err.value)

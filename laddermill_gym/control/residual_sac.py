@@ -44,8 +44,9 @@ for bit; a moves by up to L where the LQR's unclipped action is within 1 + L, a 
 1 <= a_lqr < 1 + L a negative u pulls it below 1): authority the construction above lacks at |a| = 1, as PPO's
 :class:`~laddermill_gym.control.residual_policy.ResidualPolicy` (whose bound also acts on the action). Where
 |a_lqr| > 1 + L (the LQR's unclipped action in strong turbulence often is) the clip absorbs any u: no authority
-there either. Clipping the base first, clip(clip(a_lqr) + L u), would keep the exact start and give the authority
-everywhere (not tried: the runs of 2026-11-30 used this form). The actor's
+there either. ``policy_kwargs.residual_base_clipped: true`` clips the base first, a = clip(clip(a_lqr, -1, 1) + L u,
+-1, 1): the same exact start (clip is idempotent) and the authority L on every control whatever the LQR's action
+(default false: the form the runs of 2026-11-30 trained with, bit for bit). The actor's
 ``forward`` and ``action_log_prob`` return a, so SB3's replay buffer (``SAC.collect_rollouts`` stores ``predict``'s
 output; the action scaling is the identity) and the critics in ``SAC.train`` see the action the env gets. The
 log-probability is u's (SB3's squashed Gaussian) minus n_act log L: a = a_lqr + L u is a shift by a constant of u
@@ -105,10 +106,11 @@ class ResidualActor(Actor):
     (module docstring). Needs SB3's unstructured noise (``use_sde: false``)."""
 
     def __init__(self, *args, residual_limit: float | None = None, residual_after_squash: bool = False,
-                 **kwargs) -> None:
+                 residual_base_clipped: bool = False, **kwargs) -> None:
         super().__init__(*args, **kwargs)
         self.residual_limit = residual_limit
         self.residual_after_squash = residual_after_squash
+        self.residual_base_clipped = residual_base_clipped
         if self.use_sde:
             raise ValueError("ResidualSACPolicy: use_sde must be false (the residual actor uses SAC's own noise)")
         n_obs, n_act = self.observation_space.shape[0], self.action_space.shape[0]
@@ -136,10 +138,13 @@ class ResidualActor(Actor):
 
     def after_squash(self, obs: torch.Tensor, squashed: torch.Tensor) -> torch.Tensor:
         """The env action clip(a_lqr(obs) + L u, -1, 1) (N, n_act) float64 of SAC's squashed residual action u
-        ``squashed`` (N, n_act) and raw observations ``obs``, or u itself without ``residual_after_squash``."""
+        ``squashed`` (N, n_act) and raw observations ``obs`` (a_lqr clipped to [-1, 1] first with
+        ``residual_base_clipped``), or u itself without ``residual_after_squash``."""
         if not self.residual_after_squash:
             return squashed
         base = lqr_base_actions(self, obs.to(torch.float64))
+        if self.residual_base_clipped:
+            base = base.clamp(-1.0, 1.0)
         return (base + self.residual_limit * squashed.to(torch.float64)).clamp(-1.0, 1.0)
 
     def forward(self, obs: torch.Tensor, deterministic: bool = False) -> torch.Tensor:
@@ -163,7 +168,7 @@ class ResidualSACPolicy(SACPolicy):
     residual and the critics. Needs a Box observation space and the action space [-1, 1]^n."""
 
     def __init__(self, observation_space, action_space, lr_schedule, residual_limit: float | None = None,
-                 residual_after_squash: bool = False, **kwargs) -> None:
+                 residual_after_squash: bool = False, residual_base_clipped: bool = False, **kwargs) -> None:
         number = isinstance(residual_limit, (int, float)) and not isinstance(residual_limit, bool)
         if residual_limit is not None and not (number and 0.0 < residual_limit <= 2.0):
             raise ValueError(f"ResidualSACPolicy: residual_limit {residual_limit!r} must be a number in (0, 2] "
@@ -174,8 +179,13 @@ class ResidualSACPolicy(SACPolicy):
         if residual_after_squash and residual_limit is None:
             raise ValueError("ResidualSACPolicy: residual_after_squash needs residual_limit L (the env action is "
                              "clip(a_lqr + L u, -1, 1), u SAC's squashed action)")
+        if not isinstance(residual_base_clipped, bool) or (residual_base_clipped and not residual_after_squash):
+            raise ValueError(f"ResidualSACPolicy: residual_base_clipped {residual_base_clipped!r} must be true or "
+                             f"false, and true only with residual_after_squash (it clips the LQR's action before L u "
+                             f"is added)")
         self.residual_limit = None if residual_limit is None else float(residual_limit)
         self.residual_after_squash = residual_after_squash
+        self.residual_base_clipped = residual_base_clipped
         for name, space in (("observation", observation_space), ("action", action_space)):
             if not isinstance(space, spaces.Box) or len(space.shape) != 1:
                 raise ValueError(f"ResidualSACPolicy: needs a flat Box {name} space (the wing envs'), got {space}")
@@ -188,12 +198,14 @@ class ResidualSACPolicy(SACPolicy):
 
     def _get_constructor_parameters(self) -> dict:
         return {**super()._get_constructor_parameters(), "residual_limit": self.residual_limit,
-                "residual_after_squash": self.residual_after_squash}
+                "residual_after_squash": self.residual_after_squash,
+                "residual_base_clipped": self.residual_base_clipped}
 
     def make_actor(self, features_extractor=None) -> ResidualActor:
         kwargs = self._update_features_extractor(self.actor_kwargs, features_extractor)
         return ResidualActor(**kwargs, residual_limit=self.residual_limit,
-                             residual_after_squash=self.residual_after_squash).to(self.device)
+                             residual_after_squash=self.residual_after_squash,
+                             residual_base_clipped=self.residual_base_clipped).to(self.device)
 
     def scale_action(self, action: np.ndarray) -> np.ndarray:
         """The identity: the action space is [-1, 1] (checked at construction), SB3's map is the identity there."""

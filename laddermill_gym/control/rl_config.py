@@ -230,6 +230,7 @@ def _read_policy_kwargs(s: Section, algo: str, policy_name: str = "MlpPolicy") -
         known.add("residual_limit")  # control/residual_policy.py's and residual_sac.py's own argument
     if policy_name == "ResidualSACPolicy":
         known.add("residual_after_squash")  # control/residual_sac.py's flag: the LQR added after SAC's squash
+        known.add("residual_base_clipped")  # and its flag: the LQR's action clipped before that
     for key, value in raw.items():
         if key not in known:
             raise pk.error(key, value, f"not an argument of {policy.__name__} (known: {sorted(known)})")
@@ -245,7 +246,8 @@ def _read_policy_kwargs(s: Section, algo: str, policy_name: str = "MlpPolicy") -
             pk.number(key, **POLICY_NUMBERS[key])
         elif key.endswith("_class") or key == "activation_fn":
             raise pk.error(key, value, "a Python class: set it in Python (stable_baselines3), not in a config")
-        elif key == "residual_after_squash" or isinstance(inspect.signature(policy).parameters[key].default, bool):
+        elif key in ("residual_after_squash", "residual_base_clipped") or isinstance(
+                inspect.signature(policy).parameters[key].default, bool):
             pk.flag(key)
     return dict(raw)
 
