@@ -11,9 +11,15 @@ from docsite.precision_figures import SCENES
 
 P, S = "{precision_data[%s]}", "{stable_steps[%s][%s]}"
 
+#: --long stress_all's summary and its failed case's end (docsite/printed_ratios.py's stress_counts; 2026-11-30:
+#: 127 passed, 1 failed, the mill under bang-bang controls at 5.46 s)
+STRESS_CHECKS = ((r"re-run on 2026-11-30: \*\*(\d+) pass, (\d+) fail\*\*, the mill under bang-bang controls at t = "
+                  r"([\d.]+) s", ("{stress_all[passed]}", "{stress_all[failed]}",
+                                   "~{stress_all[fail_t][laddermill/bang-bang controls]}")),)
+
 WORK_PRECISION = Covered(
     groups=('precision_data', 'stable_steps'),
-    checks=((r"RK4: ([\d.]+) on the negative real axis, 2 sqrt 2 = ([\d.]+) on the imaginary axis; "
+    checks=STRESS_CHECKS + ((r"RK4: ([\d.]+) on the negative real axis, 2 sqrt 2 = ([\d.]+) on the imaginary axis; "
              r"DP5\(4\): ([\d.]+) on the real axis but only ([\d.]+) on the imaginary axis",
              tuple(P % k for k in ("rk4_real", "rk4_imag", "dp5_real", "dp5_imag"))),
             *((rf"\| {scene} \| (\d+) \| ([-\d.]+) \+- ([\d.]+)i \| ([\d.]+) \|",
@@ -23,6 +29,7 @@ WORK_PRECISION = Covered(
               for scene, after in zip(SCENES, ("\\| ladder_chain", "\\| roberts_flying_model", "\\| laddermill",
                                                "The estimate holds"), strict=True))),
     given=(
+        'Result of the full run (four scenes, 1 h held, 10,000 episodes per env; ), re-run on',
         # whip_spectrum's step forcing and its methods' steps (the commands' inputs)
         'The reading above (the W-methods damp lightly damped cable modes) is wrong. runs the step forcing (10 s)',
         'ROS34PW2 0.0667 s: error, damped part, slow part | 0.0667 s | RK4 (0.0222 / 0.0154 s) |',
@@ -98,61 +105,6 @@ WORK_PRECISION = Covered(
             '| 0.02458 |',
             '| 0.00626 |',
             '| 0.0161 |',
-            'Result of the full run (all four scenes, 1 h held, 10,000 episodes per env; 5.5 min on the shared '
-            'machine, 2026-11-24; the table is ): **128 pass, 0 fail** (the previous run: 127 pass, 1 fails). The '
-            'run with the LQR holds of the wing scenes took 6.5 min.',
-            "(6) LQR** ( : the differential collective dtheta = -K (y, phi, y', p) every 50 ms from the simulator's "
-            'state, ; the collective at the trim). The craft is open-loop unstable at its trim (+0.127 +- 0.497i '
-            '1/s, finite differences of the 31-state right-hand side; rotorcraft.md): held at its open-loop '
-            'equilibrium controls, as the previous run did, roundoff (kinetic energy 1e-25 to 5e-24 J for 1900-3400 '
-            's) grows into a ground contact (node 2) at 3511 s with its own ROS34PW2 at 50 ms, at 2255 s with RK4 at '
-            '5 ms and at 1960 s with ROS34PW2 at 10 ms: the physics, not the integrator. With the LQR the hour '
-            'completes: height drift -7e-15 m, tension drift -3e-12 N, kinetic energy 1.5e-24 J in the first tenth '
-            "and 2.2e-24 J in the last. - **The tethered wing and the chain are held by their envs' lateral LQR** ( "
-            ", designed on the scene itself, applied every 50 ms to the env observation of the simulator's state, ): "
-            'tethered wing height drift -6e-13 m, tension drift -1.6e-9 N, kinetic energy 4.5e-20 J -> 9.7e-24 J; '
-            "chain height drift 4.6e-9 m, tension drift 2.7e-4 N, kinetic energy 3.0e-11 J -> 1.6e-17 J (the LQR's "
-            "design trim and the scene's equilibrium differ in the last digits; the loop settles them). The mill, "
-            "stable at its operating point, is held at its equilibrium controls (its LQR needs the env's periodic "
-            'operating point); the column says which. - Fixed by this run: the RK4 injections on the rotorcraft ran '
-            "at the craft's own 50 ms step (eight times RK4's limit) and raised before any injection; they now run "
-            "at half RK4's estimate. The elements cases on and at 8 elements per piece failed at load, where the "
-            "loader refuses the scene's step (beyond twice the stiffest element's closed-form bound); a refusal now "
-            'counts as detected, the case finds the equilibrium below the bound and runs at half the estimate, for '
-            "at most 20,000 steps (the mill's RK4 limit at 8 elements is 2.8 us). The mill under bang-bang controls "
-            'now runs its 20 s (below). Before: 96 pass, 4 fail.',
-            '- Largest stable step of the linearly implicit methods (added this session; the same bisection and '
-            "test, 4 s from the disturbed start, between RK4's estimated limit and 64 times it, capped at a quarter "
-            "of the horizon; ): ladder_chain ROS2 0.33 s (13.6x RK4's limit), ROS34PW2 stable at the cap 1 s (41x); "
-            'roberts_flying_model both stable at the cap 0.40 s (64x); laddermill ROS2 0.42 s (27x), ROS34PW2 stable '
-            'at the cap 0.99 s (64x) since the station column (before: 0.19 s, 12.6x and 0.10 s, 6.6x); '
-            'tethered_wing both at the cap 0.5 s (26x, 2 s horizon). Injections with ROS34PW2 are reported like '
-            "RK4's. - Largest stable RK4 step by bisection / estimate: tethered wing 0.01922 / 0.01901 s, chain "
-            "0.02458 / 0.02445 s (the README's 0.025 s is past it), craft 0.00626 / 0.00619 s, mill 0.0161 / 0.0154 "
-            "s (ratios 1.005 to 1.044). DP5(4)'s mean step at rtol 1e-6 is 0.98-0.99 of its estimated limit on every "
-            'scene. - 1 h held (before the LQR holds, at their equilibrium controls): tethered wing and chain stay '
-            'at their equilibrium to roundoff (drift of the mean height below 1e-11 m, of the tension below 1e-7 N; '
-            'no disturbance is applied, so this checks long-run stability of the integration, not of a controller); '
-            'the mill, started at rest with its cable moving, settles (height +0.045 m, tension -8.3 kN, kinetic '
-            'energy 1.1e5 J to 1.2e4 J). - Winds 0 to 40 m/s, wind to zero and back, the unloading gust, random '
-            'controls: every scene runs 20 s or ends in a documented ground contact (the craft below 10 m/s and '
-            'under bang-bang or random controls). - Injections: all 40 (NaN, inf, 1e12 in wing and node positions, '
-            'quaternions, velocities, rates; RK4 and DP5(4); four scenes) raise a SimulationError naming the time, '
-            'the body and a quantity; none escapes. - Env episodes: TetheredWing-v0 10,048 episodes (all to the 5 s '
-            'limit), Rotorcraft-v0 10,000 (8,154 to the limit, 1,846 "attitude out of range" under random actions), '
-            'no integration or inflow failure. - Fixed since: with 8 elements per piece no scene found its initial '
-            'state (the static / trim Newton did not converge from straight chords with a badly scaled residual); '
-            "now each piece's nodes start on their discrete catenary and Newton solves for forces (docs/numerics.md, "
-            '"Initial states with several elements per piece"), and the case passes on (its 5 ms step is flagged '
-            'above the estimated 1.35 ms limit for 8 elements; the run at half the estimate holds). The mill under '
-            'bang-bang controls on all 101 wings, which failed at t = 3.9 s in that run, was a step past the loaded '
-            "stability limit, not a physical manoeuvre: at the scene's present 10 ms step (12.5 ms then, beyond "
-            "RK4's 12.2 ms limit right after a transfer) it runs the 20 s, and so it does at 2.5 ms ( with ' "
-            'bang-bang schedule, this session). The error-controlled methods stop on it at 0.3836 s, and DP5(4) '
-            'alike: there wing 46 has tumbled to -74 deg sideslip and its alpha-rate terms make the mass matrix '
-            'singular (its pitch acceleration passes through a pole: -4.5e6 rad/s^2 at the last accepted state, '
-            '3.9e9 with the other sign 1e-4 s later, -129 with the two alpha-rate columns removed). No step size '
-            'resolves a pole; RK4 at 10 ms steps over it without evaluating it.',
         )),
         Printed('work_precision_all', (
             'their agreement (1e-11 to 2e-7 in the scaled state)',
@@ -302,6 +254,61 @@ WORK_PRECISION = Covered(
         )),
     ),
     not_rerun=(
+        # the stress runs' narrative of 2026-11-24 (this session's side runs: RK4 at 5 ms, ROS34PW2 at 10 ms, the
+        # counts before and after its fixes): --long stress_all (2026-11-30, 517 s) prints its own case lines, few
+        # of these figures (until then listed as its Printed snippets, which it printed none of)
+            "(6) LQR** ( : the differential collective dtheta = -K (y, phi, y', p) every 50 ms from the simulator's "
+            'state, ; the collective at the trim). The craft is open-loop unstable at its trim (+0.127 +- 0.497i '
+            '1/s, finite differences of the 31-state right-hand side; rotorcraft.md): held at its open-loop '
+            'equilibrium controls, as the previous run did, roundoff (kinetic energy 1e-25 to 5e-24 J for 1900-3400 '
+            's) grows into a ground contact (node 2) at 3511 s with its own ROS34PW2 at 50 ms, at 2255 s with RK4 at '
+            '5 ms and at 1960 s with ROS34PW2 at 10 ms: the physics, not the integrator. With the LQR the hour '
+            'completes: height drift -7e-15 m, tension drift -3e-12 N, kinetic energy 1.5e-24 J in the first tenth '
+            "and 2.2e-24 J in the last. - **The tethered wing and the chain are held by their envs' lateral LQR** ( "
+            ", designed on the scene itself, applied every 50 ms to the env observation of the simulator's state, ): "
+            'tethered wing height drift -6e-13 m, tension drift -1.6e-9 N, kinetic energy 4.5e-20 J -> 9.7e-24 J; '
+            "chain height drift 4.6e-9 m, tension drift 2.7e-4 N, kinetic energy 3.0e-11 J -> 1.6e-17 J (the LQR's "
+            "design trim and the scene's equilibrium differ in the last digits; the loop settles them). The mill, "
+            "stable at its operating point, is held at its equilibrium controls (its LQR needs the env's periodic "
+            'operating point); the column says which. - Fixed by this run: the RK4 injections on the rotorcraft ran '
+            "at the craft's own 50 ms step (eight times RK4's limit) and raised before any injection; they now run "
+            "at half RK4's estimate. The elements cases on and at 8 elements per piece failed at load, where the "
+            "loader refuses the scene's step (beyond twice the stiffest element's closed-form bound); a refusal now "
+            'counts as detected, the case finds the equilibrium below the bound and runs at half the estimate, for '
+            "at most 20,000 steps (the mill's RK4 limit at 8 elements is 2.8 us). The mill under bang-bang controls "
+            'ran its 20 s then (below). Before: 96 pass, 4 fail.',
+            '- Largest stable step of the linearly implicit methods (added this session; the same bisection and '
+            "test, 4 s from the disturbed start, between RK4's estimated limit and 64 times it, capped at a quarter "
+            "of the horizon; ): ladder_chain ROS2 0.33 s (13.6x RK4's limit), ROS34PW2 stable at the cap 1 s (41x); "
+            'roberts_flying_model both stable at the cap 0.40 s (64x); laddermill ROS2 0.42 s (27x), ROS34PW2 stable '
+            'at the cap 0.99 s (64x) since the station column (before: 0.19 s, 12.6x and 0.10 s, 6.6x); '
+            'tethered_wing both at the cap 0.5 s (26x, 2 s horizon). Injections with ROS34PW2 are reported like '
+            "RK4's. - Largest stable RK4 step by bisection / estimate: tethered wing 0.01922 / 0.01901 s, chain "
+            "0.02458 / 0.02445 s (the README's 0.025 s is past it), craft 0.00626 / 0.00619 s, mill 0.0161 / 0.0154 "
+            "s (ratios 1.005 to 1.044). DP5(4)'s mean step at rtol 1e-6 is 0.98-0.99 of its estimated limit on every "
+            'scene. - 1 h held (before the LQR holds, at their equilibrium controls): tethered wing and chain stay '
+            'at their equilibrium to roundoff (drift of the mean height below 1e-11 m, of the tension below 1e-7 N; '
+            'no disturbance is applied, so this checks long-run stability of the integration, not of a controller); '
+            'the mill, started at rest with its cable moving, settles (height +0.045 m, tension -8.3 kN, kinetic '
+            'energy 1.1e5 J to 1.2e4 J). - Winds 0 to 40 m/s, wind to zero and back, the unloading gust, random '
+            'controls: every scene runs 20 s or ends in a documented ground contact (the craft below 10 m/s and '
+            'under bang-bang or random controls). - Injections: all 40 (NaN, inf, 1e12 in wing and node positions, '
+            'quaternions, velocities, rates; RK4 and DP5(4); four scenes) raise a SimulationError naming the time, '
+            'the body and a quantity; none escapes. - Env episodes: TetheredWing-v0 10,048 episodes (all to the 5 s '
+            'limit), Rotorcraft-v0 10,000 (8,154 to the limit, 1,846 "attitude out of range" under random actions), '
+            'no integration or inflow failure. - Fixed since: with 8 elements per piece no scene found its initial '
+            'state (the static / trim Newton did not converge from straight chords with a badly scaled residual); '
+            "now each piece's nodes start on their discrete catenary and Newton solves for forces (docs/numerics.md, "
+            '"Initial states with several elements per piece"), and the case passes on (its 5 ms step is flagged '
+            'above the estimated 1.35 ms limit for 8 elements; the run at half the estimate holds). The mill under '
+            'bang-bang controls on all 101 wings, which failed at t = 3.9 s in that run, was a step past the loaded '
+            "stability limit, not a physical manoeuvre: at the scene's present 10 ms step (12.5 ms then, beyond "
+            "RK4's 12.2 ms limit right after a transfer) it runs the 20 s, and so it does at 2.5 ms ( with ' "
+            'bang-bang schedule, this session). The error-controlled methods stop on it at 0.3836 s, and DP5(4) '
+            'alike: there wing 46 has tumbled to -74 deg sideslip and its alpha-rate terms make the mass matrix '
+            'singular (its pitch acceleration passes through a pole: -4.5e6 rad/s^2 at the last accepted state, '
+            '3.9e9 with the other sign 1e-4 s later, -129 with the two alpha-rate columns removed). No step size '
+            'resolves a pole; RK4 at 10 ms steps over it without evaluating it.',
         # not whip_spectrum's output (until 2026-11-30 listed under its group, which printed none of them): its
         # ROS34PW2 runs at 0.0667 s only, the 0.2 s share came from a run with --methods ros34pw2:0.2; the ros2t /
         # ros34pw2a table and its paragraph are the 10 s work-precision studies' errors and CPU speed-ups (the
@@ -344,7 +351,11 @@ WORK_PRECISION = Covered(
         'x [m] is nan (state entry 13)") instead of through the derivative it spoils; the failure diagnosis names '
         'the fastest cable node (an injected 1e12 m/s node speed was reported through the wing it dragged along).',
     ),
-    history=(History('2026-11-24', 'NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision '
+    history=(History('2026-11-24', 'laddermill stress tethered_wing ladder_chain roberts_flying_model laddermill',
+                     'the full stress run of 2026-11-24 (ec22606 and after)',
+                     ('As written on 2026-11-24 (5.5 min; 6.5 min with the LQR holds): 128 pass, 0 fail (the run '
+                      'before: 127 pass, 1 fails).',)),
+             History('2026-11-24', 'NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision '
                      'podgaets_5km --time 10 --samples 50', "the point-mass string's first work-precision run "
                      "(c447a36); --long wp_podgaets printed 3.3e-08 on 2026-11-30 (not bisected)",
                      ('3.4e-8 as written on 2026-11-24',)),),

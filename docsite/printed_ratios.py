@@ -140,6 +140,18 @@ def craft_ratios(found: dict) -> dict:
             "rel_error_bound": str(math.ceil(found["rel_error_pct"]))}
 
 
+def stress_counts(printed: str) -> dict:
+    """``laddermill stress``'s summary ("127 passed, 1 failed") and its FAIL lines' scene, case and end [s]:
+    ``passed``, ``failed``, ``total`` and ``fail_t`` ({"laddermill/bang-bang controls": 5.46})."""
+    m = re.search(r"^(\d+) passed, (\d+) failed$", printed, re.M)
+    if m is None:
+        return {}
+    ends = {f"{a}/{b.strip()}": float(t) for a, b, t in re.findall(
+        r"^FAIL +(\S+) +(.+?) {2,}failed: .*\n +t_end_s=([\d.]+)", printed, re.M)}
+    return {"passed": m.group(1), "failed": m.group(2), "total": str(int(m.group(1)) + int(m.group(2))),
+            "fail_t": ends}
+
+
 def evaluate_rows(printed: str, episodes: int, reference: str) -> dict:
     """``laddermill evaluate``'s summary rows (controller, return, length [s], max |dy| [m], power [W], failures): per
     controller its power [kW] (``power_kW``), the episodes held of the ``episodes`` run ("5 of 5" where it prints no
@@ -158,7 +170,7 @@ RATIOS = {"reeling_power_curve_printed": power_curve_ratios, "pumping_power_curv
           "reeling_cycle_40": cycle_ratio, "step_accuracy_10": step_accuracy, "step_accuracy_40": step_accuracy,
           "fast_mill_v2_step": mill_step_peak, "pointmass_fidelity": fidelity_ratios,
           "pointmass_accuracy": kite_travel,
-          "mill_claim": lambda out: evaluate_rows(out, 5, "lqr"),  # --episodes 5
+          "stress_all": stress_counts, "mill_claim": lambda out: evaluate_rows(out, 5, "lqr"),  # --episodes 5
           "chain_claim": lambda out: evaluate_rows(out, 5, "lqr:lqr_ladder_chain_central")}
 
 

@@ -213,3 +213,25 @@ def test_the_claims_rows_are_worked_from_evaluates_table():
     worse = CLAIM.replace("154025.9  -\nlqr", "153925.9  1 x aerodynamic range exceeded\nlqr")
     bad = long_check_differences({"mill_claim": {"printed": worse}})
     assert len(bad) == 1 and "'1 x aerodynamic range exceeded'" in bad[0] and "~99.93" in bad[0], bad
+
+
+STRESS = """PASS  laddermill             random controls              ok
+      t_end_s=20, min_wing_height_m=58.34, max_tension_N=1.634e+05, max_kinetic_energy_J=5.742e+05
+FAIL  laddermill             bang-bang controls           failed: integration failed at t = 5.46 s (speed or rate limit)
+      t_end_s=5.46, min_wing_height_m=54.94, max_tension_N=1.808e+05, max_kinetic_energy_J=4.25e+06
+
+127 passed, 1 failed
+"""
+
+
+def test_the_stress_runs_counts_are_its_summary():
+    """work_precision.md's and features.md's counts as laddermill stress printed them on 2026-11-30 (127 passed, 1
+    failed: the mill under bang-bang controls at 5.46 s); the 2026-11-24 run's 128 passed, 0 failed is named on both."""
+    from docsite.printed_ratios import stress_counts
+
+    assert stress_counts(STRESS) == {"passed": "127", "failed": "1", "total": "128",
+                                     "fail_t": {"laddermill/bang-bang controls": 5.46}}
+    assert long_check_differences({"stress_all": {"printed": STRESS}}) == []
+    old = STRESS.replace("FAIL", "PASS").replace("127 passed, 1 failed", "128 passed, 0 failed")
+    bad = long_check_differences({"stress_all": {"printed": old}})
+    assert sorted(b.split(":")[0] for b in bad) == ["docs/features.md", "docs/work_precision.md"], bad
