@@ -82,33 +82,9 @@ WORK_PRECISION = Covered(
         'RK4 and the W-methods are within 10 % of one another).',
     ),
     timings=(
-        # real-time factors and speed-ups of the run of 2026-11-24 (the table's caption): --long wp_podgaets
-        # printed 141.8x / 1424.0x / 10.04x for smooth on 2026-11-30 at a load of 1.3-2.0, a timing, not a figure
-        'The run of 2026-11-24: | scene (T) | forcing | explicit | implicit | |---|---|---|---| | podgaets_5km, 200 '
-        'nodes (10 s) | smooth | 168x (0.00294 s) | **1502x (0.05 s; 8.94)** | | | step | 170x (0.00294 s) | **1588x '
-        '(0.05 s; 9.36)** | | | gust | 172x (0.00294 s) | **1592x (0.05 s; 9.23)**',
-        # the page's blanket date (the first work-precision runs, ec22606) and machine
-        'Figures below were measured on a shared 2-core machine (from 2026-11-24; four other engineers running at'
-        ' the same time, load not recorded): compare ratios within one run, not absolute times.',
-        'It costs one Jacobian (5 ms on the tethered wing, 34 ms on the chain with ARPACK, 41 ms on the mill)',
-        '(about 15 minutes).',
-        # the commands' durations as written
-        '--samples 25 --out results/work_precision --samples 50 --out /tmp/wp_mill10 # 2 min; figure: '
-        'work_precision_laddermill_10s.png --out results/work_precision # 1 min; the point-mass string, below',
-        '--samples 50 # 6 min --samples 50 # 9 min --samples 25 # 4 min --samples 25 # 3 min',
-        '--methods ros34pw2:0.0666666666666667 ros2t:0.0666666666666667 rk4:0.0222222222222222 # 4 min --methods '
-        'ros34pw2:0.0666666666666667 ros2t:0.0666666666666667 rk4:0.0153846153846154 # 7 min',
-    ),
-    printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
-        Printed('stress_all', (
-            '| 0.01922 |',
-            '| 0.02458 |',
-            '| 0.00626 |',
-            '| 0.0161 |',
-        )),
-        Printed('work_precision_all', (
-            'their agreement (1e-11 to 2e-7 in the scaled state)',
-            '3613 m for the chain, 101 m for the tethered wing',
+        # the work-precision table and its reading: real-time factors and CPU speed-ups of the runs of 2026-11-24
+        # (until 2026-11-30 listed as --long work_precision_all's Printed snippets; its first run, nice 15, load 3,
+        # 722 s, printed e.g. the chain's ros2 at 0.1 s 272.9x real time, 3.57x RK4, ros34pw2 at 0.2 s 332.9x, 4.35x)
             'forcing | RK4 | DP5(4) | ros2 | ros34pw2 | ros34pw2a | |---|---|---|---|---|---|---| | ladder_chain (10 '
             's) | step | 110x (0.0222 s) | 47x (0.42) | 394x (0.1 s; 3.57) | **465x (0.2 s; 4.22)** | 445x (1e-2; '
             '4.04) | | | smooth | 112x (0.0222 s) | 49x (0.43) | fails | fails | 27x (1e-4; 0.24) | | | gust | 108x '
@@ -179,6 +155,32 @@ WORK_PRECISION = Covered(
             "near 1e-2 at every step (the cable's axial vibration, damped rather than carried, as with the "
             'W-methods), against 1e-4 to 6e-4 for the explicit runs. - **Breakpoints matter on non-smooth forcing.** '
             'Chain, direction step, same steps: 6.0e-5 m against 0.11 m at 0.0222 s.',
+        # real-time factors and speed-ups of the run of 2026-11-24 (the table's caption): --long wp_podgaets
+        # printed 141.8x / 1424.0x / 10.04x for smooth on 2026-11-30 at a load of 1.3-2.0, a timing, not a figure
+        'The run of 2026-11-24: | scene (T) | forcing | explicit | implicit | |---|---|---|---| | podgaets_5km, 200 '
+        'nodes (10 s) | smooth | 168x (0.00294 s) | **1502x (0.05 s; 8.94)** | | | step | 170x (0.00294 s) | **1588x '
+        '(0.05 s; 9.36)** | | | gust | 172x (0.00294 s) | **1592x (0.05 s; 9.23)**',
+        # the page's blanket date (the first work-precision runs, ec22606) and machine
+        'Figures below were measured on a shared 2-core machine (from 2026-11-24; four other engineers running at'
+        ' the same time, load not recorded): compare ratios within one run, not absolute times.',
+        'It costs one Jacobian (5 ms on the tethered wing, 34 ms on the chain with ARPACK, 41 ms on the mill)',
+        '(about 15 minutes).',
+        # the commands' durations as written
+        '--samples 25 --out results/work_precision --samples 50 --out /tmp/wp_mill10 # 2 min; figure: '
+        'work_precision_laddermill_10s.png --out results/work_precision # 1 min; the point-mass string, below',
+        '--samples 50 # 6 min --samples 50 # 9 min --samples 25 # 4 min --samples 25 # 3 min',
+        '--methods ros34pw2:0.0666666666666667 ros2t:0.0666666666666667 rk4:0.0222222222222222 # 4 min --methods '
+        'ros34pw2:0.0666666666666667 ros2t:0.0666666666666667 rk4:0.0153846153846154 # 7 min',
+    ),
+    printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('stress_all', (
+            '| 0.01922 |',
+            '| 0.02458 |',
+            '| 0.00626 |',
+            '| 0.0161 |',
+        )),
+        Printed('work_precision_all', (
+            'their agreement (1e-11 to 2e-7 in the scaled state)',
         )),
         Printed('wp_podgaets', (
             'stable below l0 / c = 2.95 ms',
@@ -254,6 +256,9 @@ WORK_PRECISION = Covered(
         )),
     ),
     not_rerun=(
+        # the scenes' extents: the work-precision studies do not print them (physics_step_accuracy prints the chain's
+        # 3612.8 m, --long step_accuracy_10)
+            '3613 m for the chain, 101 m for the tethered wing',
         # the stress runs' narrative of 2026-11-24 (this session's side runs: RK4 at 5 ms, ROS34PW2 at 10 ms, the
         # counts before and after its fixes): --long stress_all (2026-11-30, 517 s) prints its own case lines, few
         # of these figures (until then listed as its Printed snippets, which it printed none of)
