@@ -69,13 +69,13 @@ def power_curve_ratios(printed: str) -> dict:
 def cycle_ratio(printed: str) -> dict:
     """``pumping-cycle``'s table (cycle, T_c, sim W, matched W, ...): its last cycle's sim / matched
     (``last_ratio``)."""
-    rows = [line.split() for line in printed.splitlines() if re.match(r"^ +\d+ +[\d.]+ +\d+ +\d+ ", line)]
+    rows = [line.split() for line in printed.splitlines() if re.match(r"^ +\d+ +[\d.]+ +-?\d+ +-?\d+ ", line)]
     return {"last_ratio": float(rows[-1][2]) / float(rows[-1][3])} if rows else {}
 
 
 STEP_HEAD = re.compile(r"^laddermill_gym/(\S+): [\d.]+ s, extent [\d.]+ m; reference RK4 at [\d.]+ s ran (\d+) periods",
                        re.M)
-STEP_ROW = re.compile(r"^ +(\w+) *: largest position error ([\d.e+-]+) m = ([\d.e+-]+) of the extent over (\d+) "
+STEP_ROW = re.compile(r"^ +([\w:]+) *: largest position error ([\d.e+-]+) m = ([\d.e+-]+) of the extent over (\d+) "
                       r"periods", re.M)
 
 
@@ -95,7 +95,8 @@ def step_accuracy(printed: str) -> dict:
                                                                                 * CONTROL_PERIOD_S, 9)}
             shares.setdefault(m.group(1), []).append(float(m.group(3)))
     if found:
-        found["share_bound"] = {s: f"1e{math.ceil(math.log10(max(v)))}" for s, v in shares.items()}
+        found["share_bound"] = {s: f"1e{math.ceil(math.log10(max(v)))}" if max(v) > 0.0 else "0"
+                                for s, v in shares.items()}
     return found
 
 
