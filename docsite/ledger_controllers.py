@@ -379,5 +379,20 @@ CONTROLLERS = Covered(
                  '31 point 4 is not met by this run. On the 200 held-out NTM-IB fields ( ) it survives 132 against '
                  "the LQR's 70 (both 55, only the LQR 15, only the policy 77, neither 53; p = 3.26e-11), the most of "
                  'any policy here.',)),
+        History('2026-11-30',
+                'laddermill train configs/agents/sac_tethered_wing_residual_after.yaml --seed 1 (f658f64); laddermill '
+                'train configs/agents/sac_tethered_wing_residual_after_clipped.yaml --seed 0 (29d574c); laddermill '
+                'gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 --controllers lqr RUN',
+                "the after-squash residual SAC's seed 1 and the clipped base's seed 0, about 30 min each, not kept",
+                ("Nor did a second seed or the clipped base (runs of 2026-11-30). Both were fixed and committed before "
+                 "they were trained, with the rule between the seeds (the higher paired validation score). (518,768 "
+                 "steps in 30.17 min on one core at a load of about 3, beside the next run) validated 78 / 184 at the "
+                 "start and the warm-up, then 22 to 93 with 21 to 58 lost that the LQR holds (paired scores at most 51 "
+                 "against 78): it kept its start, the LQR bit for bit (gusts-v1 11 / 12 with the LQR's peak lateral "
+                 "excursion in all 12 scenarios), so seed 0's policy (score 101) stays the construction's candidate, "
+                 "at 10 / 12. ( , otherwise the same; seed 0; 581,856 steps in 30.16 min beside seed 1) validated 25 "
+                 "to 94 after the warm-up with 19 to 57 lost that the LQR holds (paired scores at most 56): it kept "
+                 "its start too (gusts-v1 11 / 12, the LQR's excursions). Two of the three after-squash runs found no "
+                 "checkpoint that loses fewer than 19 of the LQR's validation survivals; seed 0's lost 11.",)),
     ),
 )
