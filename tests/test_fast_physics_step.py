@@ -23,6 +23,7 @@ from laddermill_gym.envs.task_base import default_parallel
 from laddermill_gym.sim.simulator import IntegratorSettings
 from laddermill_gym.studies.benchmarks.env_benchmark import thread_cpu_seconds, threads_working
 from laddermill_gym.studies.benchmarks.physics_step_accuracy import compare, step_arguments
+from laddermill_gym.studies.benchmarks.physics_step_accuracy import main as accuracy_main
 
 CHAIN = "laddermill_gym/LadderChain-v0"
 MILL = "laddermill_gym/LadderMill-v2"
@@ -173,6 +174,10 @@ def test_physics_step_arguments():
     for bad in ("ros2:0", "ros2:x", "ros2:"):
         with pytest.raises(ValueError, match="METHOD:K"):
             step_arguments(bad)
+    with pytest.raises(ValueError, match="physics_step = 'ros9'"):  # named before the reference run
+        compare(CHAIN, 1.0, ("ros2:4", "ros9:4"))
+    with pytest.raises(SystemExit):
+        accuracy_main([CHAIN, "--steps", "ros2:x"])
 
 
 def test_threads_working_counts_the_threads_worth_of_work():

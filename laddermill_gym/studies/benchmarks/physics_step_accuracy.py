@@ -23,6 +23,7 @@ import numpy as np
 
 import laddermill_gym.envs  # noqa: F401 (registers the ids)
 from laddermill_gym.control.factory import make_controller
+from laddermill_gym.envs.physics_step import check_physics_step
 from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, N3_POS, N3_SIZE
 
 #: amplitude [-] of the uniform noise added to the open-loop action every control period (seeded; the mill's
@@ -79,11 +80,21 @@ def step_arguments(label: str) -> dict:
     return {"physics_step": method, "jacobian_every": int(every)}
 
 
+def check_labels(steps) -> None:
+    """ValueError naming the first label of ``steps`` that :func:`step_arguments` refuses or whose method is not a
+    fixed-step method of the envs (``envs/physics_step.check_physics_step``): before the reference run, not after."""
+    for label in steps:
+        step_arguments(label)
+        if label != "registered":
+            check_physics_step(label.partition(":")[0])
+
+
 def compare(env_id: str, episode_time: float, steps=("ros34pw2",), echo=print, **kwargs) -> dict:
     """The study: {"extent": m, "periods": control periods asked, label: {"error_m", "share", "periods",
     "cpu_s"}} for the registered step ("registered") and each ``physics_step`` of ``steps`` (once per control
     period), against RK4 at a quarter of the registered step; ``kwargs`` go to every env (e.g. the operating
     point)."""
+    check_labels(steps)
     n = int(round(episode_time / 0.05))
     ref, _ = episode(env_id, n, physics_step="rk4", physics_dt=REGISTERED_DT[env_id] / 4, **kwargs)
     extent = float(np.max(np.linalg.norm(ref, axis=2)))
@@ -108,6 +119,10 @@ def main(argv=None) -> int:
                    help="physics_step values compared; METHOD:K keeps a W-method's iteration matrix K steps "
                         "(jacobian_every), e.g. ros2:4")
     args = p.parse_args(argv)
+    try:
+        check_labels(args.steps)
+    except ValueError as err:
+        p.error(f"--steps: {err}")
     compare(args.env_id, args.time, tuple(args.steps))
     return 0
 
