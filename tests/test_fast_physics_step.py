@@ -176,6 +176,8 @@ def test_physics_step_arguments():
             step_arguments(bad)
     with pytest.raises(ValueError, match="physics_step = 'ros9'"):  # named before the reference run
         compare(CHAIN, 1.0, ("ros2:4", "ros9:4"))
+    with pytest.raises(ValueError, match="jacobian_every = 4: only a W-method"):  # rk4 has no matrix to keep
+        compare(CHAIN, 1.0, ("ros2:4", "rk4:4"))
     with pytest.raises(SystemExit):
         accuracy_main([CHAIN, "--steps", "ros2:x"])
 

@@ -23,8 +23,9 @@ import numpy as np
 
 import laddermill_gym.envs  # noqa: F401 (registers the ids)
 from laddermill_gym.control.factory import make_controller
-from laddermill_gym.envs.physics_step import check_physics_step
+from laddermill_gym.envs.physics_step import check_physics_step, jacobian_settings
 from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, N3_POS, N3_SIZE
+from laddermill_gym.sim.simulator import IntegratorSettings
 
 #: amplitude [-] of the uniform noise added to the open-loop action every control period (seeded; the mill's
 #: random actions at full amplitude end a median episode at 17.6 s, docs of LadderMill-v2)
@@ -81,12 +82,15 @@ def step_arguments(label: str) -> dict:
 
 
 def check_labels(steps) -> None:
-    """ValueError naming the first label of ``steps`` that :func:`step_arguments` refuses or whose method is not a
-    fixed-step method of the envs (``envs/physics_step.check_physics_step``): before the reference run, not after."""
+    """ValueError naming the first label of ``steps`` that :func:`step_arguments` refuses, whose method is not a
+    fixed-step method of the envs (``envs/physics_step.check_physics_step``) or that keeps the matrix of a method
+    that is not a W-method (``jacobian_settings``' rule): before the reference run, not after."""
     for label in steps:
-        step_arguments(label)
+        args = step_arguments(label)
         if label != "registered":
-            check_physics_step(label.partition(":")[0])
+            check_physics_step(args["physics_step"])
+            jacobian_settings(IntegratorSettings(method=args["physics_step"], dt=0.05),
+                              args.get("jacobian_every", 1))
 
 
 def compare(env_id: str, episode_time: float, steps=("ros34pw2",), echo=print, **kwargs) -> dict:
