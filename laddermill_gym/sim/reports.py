@@ -155,19 +155,29 @@ def state_problems(sim, x: np.ndarray) -> list[str]:
     return quaternion_problems(sim, x) + _limit_culprits(sim, x)
 
 
-def _rk4_trial(sim, h: float) -> np.ndarray | None:
-    """One classic RK4 step of h [s] from the current state in Python with the kernels' right-hand side and no
-    check at all (to see which entry turns non-finite); None if the mass matrix is singular on the way."""
+def _rk4_stages(sim, h: float) -> list[tuple[float, np.ndarray, np.ndarray]]:
+    """[(c, stage state, its derivative)] of one classic RK4 step of h [s] from the current state, in Python with
+    the kernels' right-hand side and no check at all; it ends early where the mass matrix is singular."""
     x0, u, t = sim.state, sim.controls, sim.t
-    ks, xt = [], x0
-    for c, a in ((0.0, 0.0), (0.5, 0.5), (0.5, 0.5), (1.0, 1.0)):
-        if ks:
-            xt = x0 + a * h * ks[-1]
+    out, xt = [], x0
+    for c in (0.0, 0.5, 0.5, 1.0):
+        if out:
+            xt = x0 + c * h * out[-1][2]
         k = np.zeros_like(x0)
         if _rhs_kernel(t + c * h, xt, u, k, sim.model, sim.work) != 0:
-            return None
-        ks.append(k)
-    return x0 + h / 6.0 * (ks[0] + 2.0 * (ks[1] + ks[2]) + ks[3])
+            break
+        out.append((c, xt, k))
+    return out
+
+
+def _rk4_trial(sim, h: float) -> np.ndarray | None:
+    """One classic RK4 step of h [s] from the current state (:func:`_rk4_stages`, to see which entry turns
+    non-finite); None if the mass matrix is singular on the way."""
+    st = _rk4_stages(sim, h)
+    if len(st) < 4:
+        return None
+    k = [s[2] for s in st]
+    return sim.state + h / 6.0 * (k[0] + 2.0 * (k[1] + k[2]) + k[3])
 
 
 def diagnose(sim) -> str:
@@ -224,6 +234,12 @@ def alpha_rate_cause(sim, dx: np.ndarray, i: int) -> str:
     ``i`` (the largest derivative ``dx``) is a wing's acceleration above ``ALPHA_RATE_CHECK`` and the same state
     without those two columns gives ``ALPHA_RATE_FACTOR`` times less, say so, with the wing's angle of attack
     and sideslip; else ''."""
+    return _alpha_rate_text(sim, float(sim.t), sim.state, dx, i, "")
+
+
+def _alpha_rate_text(sim, t: float, x: np.ndarray, dx: np.ndarray, i: int, where: str) -> str:
+    """:func:`alpha_rate_cause`'s test for the state x at t [s] (its derivative dx, entry i); ``where`` names a
+    state inside a step (the angles are the step's start's)."""
     a = sim.assembly
     if not (a.n_wings and i < a.n_wings * a.wing_state_size and abs(dx[i]) > ALPHA_RATE_CHECK):
         return ""
@@ -237,14 +253,36 @@ def alpha_rate_cause(sim, dx: np.ndarray, i: int) -> str:
         return ""
     ac[:, :, :, cols] = 0.0
     dx0 = np.zeros(sim.n_state)
-    if _rhs_kernel(float(sim.t), sim.state, sim.controls, dx0, sim.model._replace(ac=ac), sim.work) != 0:
+    if _rhs_kernel(t, x, sim.controls, dx0, sim.model._replace(ac=ac), sim.work) != 0:
         return ""
     if not abs(dx0[i]) * ALPHA_RATE_FACTOR < abs(dx[i]):
         return ""
     al, be = np.degrees(sim.wing_alpha_beta()[k])
-    return (f"wing {k} (angle of attack {al:.3g} deg, sideslip {be:.3g} deg): its alpha-rate terms make the mass "
-            f"matrix nearly singular ({sim.state_name(i)} derivative {dx0[i]:.3g} without them), a limit of the "
-            "quasi-steady alpha-rate model at large sideslip, not of the step size (docs/numerics.md)")
+    at = f" at the step's start, {where}" if where else ""
+    return (f"wing {k} (angle of attack {al:.3g} deg, sideslip {be:.3g} deg{at}): its alpha-rate terms make the "
+            f"mass matrix nearly singular ({sim.state_name(i)} derivative {dx[i]:.3g}, {dx0[i]:.3g} without them), "
+            "a limit of the quasi-steady alpha-rate model at large sideslip, not of the step size (docs/numerics.md)")
+
+
+def step_alpha_rate_cause(sim, h: float) -> str:
+    """:func:`alpha_rate_cause` for the states inside the failed step of h [s] from the last good state: the
+    stages of a classic RK4 step (``_rk4_stages``; the fixed step's own stages when the method is RK4, a probe of
+    the step otherwise), each tested at its largest wing acceleration. A fixed step that lands a stage next to
+    the pole throws the wing to a speed or rate no physics gives; the report then names the pole, not only the
+    limit. The first stage that shows it, else ''."""
+    a = sim.assembly
+    n = a.n_wings * a.wing_state_size
+    if not n:
+        return ""
+    vel = B3_VEL if a.dim == 3 else B2_U
+    acc = np.zeros(n, dtype=bool)
+    acc.reshape(a.n_wings, a.wing_state_size)[:, vel:] = True
+    for c, x, dx in _rk4_stages(sim, h)[1:]:
+        mag = np.where(acc & np.isfinite(dx[:n]), np.abs(dx[:n]), -1.0)
+        text = _alpha_rate_text(sim, sim.t + c * h, x, dx, int(np.argmax(mag)), f"its stage at t + {c:g} h")
+        if text:
+            return text
+    return ""
 
 
 def failure_message(sim, status: int, h: float) -> str:
@@ -261,6 +299,9 @@ def failure_message(sim, status: int, h: float) -> str:
         bad = np.flatnonzero(~np.isfinite(x)) if x is not None else np.zeros(0, dtype=int)
         culprit = [f"{sim.state_name(int(bad[0]))} non-finite"] if bad.size else []
     what = f"; in the step to t = {sim.t + h:.6g} s: {', '.join(culprit[:_MAX_NAMED])}" if culprit else ""
+    if status in (LIMIT, NONFINITE) and np.all(np.isfinite(sim.state)):
+        cause = step_alpha_rate_cause(sim, h)
+        what += f"; {cause}" if cause else ""
     kind = _KIND.get(status, f"status {status}").format(method=_ADAPTIVE_NAME.get(sim.settings.method, "DP5(4)"))
     where = "last good state" if np.all(np.isfinite(sim.state)) else "the state"
     return f"integration failed at t = {sim.t:.6g} s ({kind}){what}; {where}: {sim.diagnose()}"

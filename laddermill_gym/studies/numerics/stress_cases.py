@@ -3,7 +3,8 @@
 
 Outcomes: "ok" (ran to the end); "terminated: ..." for a documented physical termination (a wing or free node at
 the ground with ``ground_contact`` "stop", raised as a SimulationError naming the time, body and height; or a
-wing whose alpha-rate terms make the mass matrix singular at large sideslip, ``sim/reports.alpha_rate_cause``); "failed:
+wing whose alpha-rate terms make the mass matrix singular at large sideslip, in the last good state or in a stage of
+the failed step, ``sim/reports.alpha_rate_cause`` and ``step_alpha_rate_cause``); "failed:
 ..." for a numerical breakdown (non-finite state, speed or rate limit, singular mass matrix, DP5(4) step
 collapse or budget), which is a failure of the case unless the case provokes it on purpose (injections).
 """
@@ -51,7 +52,8 @@ def outcome(err: Exception | None) -> tuple[str, bool]:
     if "ground" in text and ("height" in text or "contact" in text):
         return f"terminated: {text[:150]}", True
     if "alpha-rate terms make the mass matrix nearly singular" in text:  # sim/reports.alpha_rate_cause
-        return f"terminated (limit of the quasi-steady model): {text.split('; wing ')[-1][:150]}", True
+        cause = [part for part in text.split("; ") if "alpha-rate terms make" in part][0]
+        return f"terminated (limit of the quasi-steady model): {cause[:150]}", True
     return f"failed: {text[:150]}", False
 
 
