@@ -6,6 +6,7 @@ timings under the page's date."""
 
 from __future__ import annotations
 
+from docsite import ledger_controller_measure as controller_measure
 from docsite.ledger_kinds import Covered, History, Printed
 from docsite.precision_figures import SCENES
 
@@ -29,6 +30,7 @@ WORK_PRECISION = Covered(
               for scene, after in zip(SCENES, ("\\| ladder_chain", "\\| roberts_flying_model", "\\| laddermill",
                                                "The estimate holds"), strict=True))),
     given=(
+        *controller_measure.GIVEN,  # the controller-measure section (docsite/ledger_controller_measure.py)
         'Result of the full run (four scenes, 1 h held, 10,000 episodes per env; ), re-run on',
         # whip_spectrum's step forcing and its methods' steps (the commands' inputs)
         'The reading above (the W-methods damp lightly damped cable modes) is wrong. runs the step forcing (10 s)',
@@ -74,6 +76,7 @@ WORK_PRECISION = Covered(
         'failure code fails the case).',
     ),
     derived=(
+        *controller_measure.DERIVED,  # the controller-measure section (docsite/ledger_controller_measure.py)
         # readings over whip_spectrum's printed shares (each scene's modes by share, |exp(h l)| and |R(h l)| to 4
         # digits): no one printed figure
         'The damped modes hold under 1 % of the error; the largest shares are in slow (|lambda| < 0.25 1/s, '
@@ -82,6 +85,7 @@ WORK_PRECISION = Covered(
         'RK4 and the W-methods are within 10 % of one another).',
     ),
     timings=(
+        *controller_measure.TIMINGS,  # the controller-measure section (docsite/ledger_controller_measure.py)
         # the work-precision table and its reading: real-time factors and CPU speed-ups of the runs of 2026-11-24
         # (until 2026-11-30 listed as --long work_precision_all's Printed snippets; its first run, nice 15, load 3,
         # 722 s, printed e.g. the chain's ros2 at 0.1 s 272.9x real time, 3.57x RK4, ros34pw2 at 0.2 s 332.9x, 4.35x)
@@ -192,56 +196,7 @@ WORK_PRECISION = Covered(
             "put the grid's largest step, 0.2 s, within 2e-10 of the extent;", 'on the pumping kite, stable to 0.092 s '
             'at the start,',
         )),
-        Printed('wp_controller_measure', (
-            'The 1e-3-of-the-extent measure above allows 3.6 m on the chain. Every run now also carries the errors '
-            'of what the envs observe or are rewarded by, read from its state at the output times ( ): the element '
-            "tensions and the generator power (the station's mechanical power on the mill; on the chain the envs' "
-            'reward power, the tension difference of the two ground elements times a constant reel speed, which '
-            "cancels), each as the largest error over the largest reference value of the run; the wings' lateral CG "
-            'offsets [m] and their 3-2-1 Euler angles [rad], largest over wings and times. The table of runs prints '
-            'them ( , , , ) and : yes when they are within 1 %, 1 %, 0.1 m and 0.01 rad; the summary then gives, per '
-            'method, the run that meets them in the least CPU time and its speed-up over the fastest RK4 run that '
-            'meets them (whose step it names), in CPU time (one numba thread, the least of 3 repeats) and in wall '
-            'time. The two references agree to 2e-9 m in the lateral offsets and 6e-11 in tension and power. Runs of '
-            '2026-11-29 (load 6-10 on the two cores: between the identical and runs the wall time differs by up to '
-            '1.8x, the CPU time by up to 8 %; quote the CPU ratios):',
-            'ladder_chain (10 s) | 0.0222 s (1.4e-4, 4.6e-6, 6.0e-5 m, 6.3e-5 rad) | 0.0667 s | 1.6e-3, 9.4e-5, '
-            '**0.098 m**, 4.4e-3 rad | **1.69x** | 1e-4: 0.89x | | ladder_chain (5 s) | 0.0222 s (3.6e-6, 7.6e-6, '
-            '4.2e-7 m, 1.7e-6 rad) | **0.2 s** | 3.1e-4, 7.9e-5, 0.016 m, 5.9e-4 rad | **5.39x** (wall 6.48x) | '
-            '3e-3: 4.86x | | laddermill (10 s) | 0.0154 s (5.3e-5, 7.3e-5, 1.8e-4 m, 3.1e-5 rad) | 0.0167 s | '
-            '1.1e-3, 2.5e-4, 0.026 m, 4.6e-3 rad | **0.52x** | 1e-4: 0.56x | | laddermill (5 s) | 0.0154 s (1.7e-5, '
-            '2.8e-5, 1.2e-6 m, 9.3e-7 rad) | **0.2 s** | 1.3e-3, 1.7e-4, 0.027 m, 2.1e-3 rad | **5.80x** (wall '
-            '5.57x) | 1e-2: 5.39x',
-            '**5x is met by the controller measure over 5 s, before the apex whip, on the chain (5.39x) and on the '
-            'mill (5.80x), both with ROS34PW2 at 0.2 s; not over 10 s, through the whip: the chain 1.69x, the mill '
-            '0.52x.** By the position measure the same runs give ROS34PW2 at 0.2 s 4.92x RK4 on the chain and 5.80x '
-            'on the mill over 5 s (CPU times of ; wall 7.99x, 5.57x). The 10 s runs of 2026-11-29 (below): chain '
-            '1.45x, mill 0.77x.',
-            '- **What binds is the lateral offset (and the attitude) in the apex whip, not the tensions or the '
-            'power.** On the chain ROS34PW2 at 0.2 s is within 2.8 % in tension and 0.14 % in power, but 0.34 m and '
-            '0.029 rad off; at 0.1 s 0.29 % and 0.02 %, but 0.25 m (its final-time position error, 0.26 m, is about '
-            "the largest: the error grows through the apex wings' whip at the end of the run). From 0.05 to 0.0125 s "
-            'the lateral error falls at an observed order of 1.3-1.7, not 3 (not from damped cable modes: below, '
-            '"The apex whip\'s modes"). On the mill over 10 s the whip is stronger (33 m/s): ROS34PW2 at 0.1 and 0.2 '
-            's diverges (t = 7.7-7.8 s), at 0.0667 s it is 1.7 m and 0.088 rad off, and only from 0.0167 s (about '
-            "RK4's own step) does it meet the tolerances. Over the first 5 s of the mill, before the whip, every "
-            'ROS34PW2 step from 0.0125 to 0.2 s meets them (0.027 m and 2.1e-3 rad at 0.2 s), and so on the chain '
-            '(0.016 m and 5.9e-4 rad at 0.2 s; ROS2 from 0.05 s). - **A Jacobian reused over steps cannot close the '
-            'gap.** A W-method keeps its order with any Jacobian, so the iteration matrix could be built every k '
-            'steps. What that can save at most is measured by (CPU per step, one thread, the least of 5 repeats): '
-            '"ladder_chain: CPU per step ROS34PW2 0.612 ms, RK4 0.313 ms (1.96 RK4 steps); one right-hand side 0.086 '
-            'ms; body Jacobian 0.126 ms (21%), cable Jacobian 0.038 ms (6%), factorisation 0.032 ms (5%); W step '
-            'without them 1.33 RK4 steps" and "laddermill: ... ROS34PW2 0.649 ms, RK4 0.325 ms (2.00 RK4 steps); ... '
-            'body Jacobian 0.134 ms (21%), cable Jacobian 0.034 ms (5%), factorisation 0.028 ms (4%); W step without '
-            'them 1.40 RK4 steps". The rest of a W step is its assembly and three right-hand sides (an RK4 step\'s '
-            "four) and the four eliminations. With a Jacobian that costs nothing, the chain's 0.0667 s run would be "
-            "at most 1.69 x 1.96 / 1.33 = 2.5x RK4, the mill's 10 s run at 0.0167 s at most 0.52 x 2.00 / 1.40 = "
-            '0.74x; a cheaper factorisation (5 %) gains less. Not implemented for that reason. - So the W-methods '
-            "pay where the motion a controller sees is slow next to the cable's modes (the chain and the mill before "
-            'the whip, 5.4x and 5.8x; the tethered wing and the rotorcraft, whose envs step ROS34PW2 at 50 ms), and '
-            'not through the uncontrolled apex whip of a 10 s open-loop run, where RK4 at its stable step is already '
-            '70 (tension) to 1,700 (lateral offset) times more accurate than the tolerances ask.',
-        )),
+        controller_measure.PRINTED,  # docsite/ledger_controller_measure.py
         # split to the printed lines they come from (--long whip_spectrum, 2026-11-30, 63 s: every cell as written)
         Printed('whip_spectrum', (
             "by RK4 at 2 ms to each time , forms the full Jacobian (central differences, LAPACK ), writes each run's "
@@ -314,23 +269,7 @@ WORK_PRECISION = Covered(
             'singular (its pitch acceleration passes through a pole: -4.5e6 rad/s^2 at the last accepted state, '
             '3.9e9 with the other sign 1e-4 s later, -129 with the two alpha-rate columns removed). No step size '
             'resolves a pole; RK4 at 10 ms steps over it without evaluating it.',
-        # not whip_spectrum's output (until 2026-11-30 listed under its group, which printed none of them): its
-        # ROS34PW2 runs at 0.0667 s only, the 0.2 s share came from a run with --methods ros34pw2:0.2; the ros2t /
-        # ros34pw2a table and its paragraph are the 10 s work-precision studies' errors and CPU speed-ups (the
-        # commands of --long wp_controller_measure, 22 min, not yet run)
-        'gets 0.70 of exp(z) from ROS34PW2 at 0.2 s).',
-        '**Keeping the unresolved oscillations does not help.** , ROS2 at gamma = 1/4 (order 2 for any J, '
-        '|R(iy)| = 1; tests/test_rosenbrock.py), in the 10 s studies (commands above; chain 15 min, mill 21 min, '
-        'side by side, load 8-13):',
-        'ladder_chain: 0.0222 s | 0.0667 s (1.6e-3, 9.4e-5, 0.098 m, 4.4e-3 rad): **1.45x** | 0.0333 s (2.2e-3, '
-        '9.3e-5, 0.049 m, 3.6e-3 rad): 1.24x | 1e-4: 0.77x | | laddermill: 0.0154 s | 0.0167 s (1.1e-3, 2.5e-4, '
-        '0.026 m, 4.6e-3 rad): 0.77x | 0.0167 s (1.9e-3, 4.8e-4, 0.092 m, 5.9e-3 rad): **1.31x** | 1e-4: 1.04x',
-        '( : chain 0.025 s, 0.75x; mill none.) leads on the mill only as its two stages cost less than an RK4 '
-        'step; on the chain at 0.0667 s it is 0.47 m off (ROS34PW2 0.098, ROS2 0.33), from 0.025 to 0.0125 s '
-        '0.020, 0.0089, 0.0051 m (order 2.0). ROS3Pw and ROS34PW3 (Rang & Angermann 2005, R(inf) = 0.73, 0.63) '
-        'damp more (|R(4i)| 0.79, 0.70 against 0.61): not added. **5x through the whip is not reached**: the '
-        'bound is the local error in the slow unstable modes, not the stability function; a Jacobian reused over '
-        'steps gains at most 2.5x (above).',
+        *controller_measure.NOT_RERUN,  # the 33 m/s whip, the 0.2 s share, ROS3Pw / ROS34PW3 (their comments)
         # a gust run of 2026-11-24 (ec22606): laddermill stress tethered_wing prints no +30 % gust case (its run of
         # 2026-11-30, --long stress_tethered_wing: the estimate at rest 0.01901 s, no gust at RK4 0.0179 s)
         'a +30 % gust makes RK4 at 0.0179 s (0.94 of the estimate at rest) diverge at t = 1.6 s',

@@ -5,7 +5,8 @@ A :class:`docsite.ledger_kinds.Printed` snippet agrees with an output when each 
 rounded to the quoted digits (:func:`rounds_to`; a printed 0.1145 is 0.114 or 0.115 quoted, 25.64 is 25.6, a
 printed 10 is 10, never 11), or, where the page writes a unit with a prefix after it (:data:`PREFIXED`: "10 kW",
 "1.8 MJ", "2.4 mm"), a thousandth, a thousand times or a millionth of one (a page's kW of a printed W, its MW of a
-printed kW, its MJ of a printed J), all within a few lines of output (:func:`missing`). Signs: a
+printed kW, its MJ of a printed J), or, where the page writes a percent sign after it (:data:`PERCENT`: "2.8 %"), a
+hundred times one (a printed fraction 2.8e-02), all within a few lines of output (:func:`missing`). Signs: a
 quoted number the page writes with a sign ("-43.5 kW", "+0.7752") must have that sign printed; one it writes
 without compares magnitudes (the page's "falls by 0.25" of a printed -0.252, "a drop of 46 kW"). This is looser
 than a check (it does not say *which* printed number is meant), so it is used for a command's free-text lines that
@@ -32,6 +33,10 @@ SCALES = (1.0, 1e-3, 1e3, 1e-6)  # a page's figure in the printed unit, or in ki
 PREFIXED = re.compile(r" ?[kMGmuµn](?:Wh|W|J|N|Pa|Hz|B|V|A|s|m|g|t)(?![A-Za-z])")
 # the further numbers of a range or list that shares the unit written after its last one ("3.0-15.2 kN", "-3.2 to
 # +1.9 MW", "14.9, 11.9 and 14.8 MJ")
+# a percent sign written after a quoted number (or after the range or list it begins): a hundredth of it may be printed
+# (the work-precision tables print relative errors as fractions, "2.8e-02", that the page quotes as "2.8 %")
+PERCENT = re.compile(r" ?%")
+PERCENT_SCALES = (1.0, 100.0)
 SHARED = re.compile(r"(?:-| to | and |, and |, | or | / )[-+]?\d[\d,]*(?:\.\d+)?(?:e[-+]?\d+)?(?![\w.])")
 WINDOW = 60  # printed numbers a snippet's figures may spread over (a table row of a wide study prints ~20)
 
@@ -102,9 +107,9 @@ def missing(snippet: str, output: str) -> list[str]:
     flat = prose(snippet)
     spans = [m.span() for m in NUMBER.finditer(flat)]
     quoted = [flat[a:b] for a, b in spans]
-    scaled = [PREFIXED.match(flat, _unit_at(flat, b)) is not None for _, b in spans]
-    hits = [[i for i, (p, pu) in enumerate(printed) if _hit(p, pu, text, scale)]
-            for text, scale in zip(quoted, scaled, strict=True)]
+    scales = [_scales(flat, _unit_at(flat, b)) for _, b in spans]
+    hits = [[i for i, (p, pu) in enumerate(printed) if _hit(p, pu, text, factors)]
+            for text, factors in zip(quoted, scales, strict=True)]
     best = list(quoted)
     for start in sorted({i for found in hits for i in found}):  # a best window can start at a matched number
         near = [found[bisect_left(found, start):bisect_left(found, start + WINDOW)] for found in hits]
@@ -127,14 +132,22 @@ def _unit_at(flat: str, end: int) -> int:
     return end
 
 
-def _hit(p: float, pu: float, text: str, scaled: bool) -> bool:
-    """Whether a printed value ``p`` (unit ``pu``) is the quoted numeral ``text``, or, where the page writes a prefixed
-    unit after it (``scaled``), a thousandth, thousand times or millionth of it is; by magnitude where ``text`` has
-    no sign."""
+def _scales(flat: str, at: int) -> tuple[float, ...]:
+    """The factors a printed value may be multiplied by to be the quoted number whose unit starts at ``at`` in
+    ``flat``: :data:`SCALES` after a prefixed unit, :data:`PERCENT_SCALES` after a percent sign, else 1 alone."""
+    if PREFIXED.match(flat, at):
+        return SCALES
+    return PERCENT_SCALES if PERCENT.match(flat, at) else SCALES[:1]
+
+
+def _hit(p: float, pu: float, text: str, factors: tuple[float, ...]) -> bool:
+    """Whether a printed value ``p`` (unit ``pu``) times one of ``factors`` (:func:`_scales`: 1, or a thousandth,
+    thousand times or millionth after a prefixed unit, or a hundred times before a percent sign) is the quoted
+    numeral ``text``; by magnitude where ``text`` has no sign."""
     q, u = value(text), unit(text)
     if text[0] not in "+-":  # no sign on the page: magnitudes
         p, q = abs(p), abs(q)
-    return any(rounds_to(f * p, f * pu, q, u) for f in (SCALES if scaled else SCALES[:1]))
+    return any(rounds_to(f * p, f * pu, q, u) for f in factors)
 
 
 def _matching(candidates: list[list[int]]) -> set[int]:
