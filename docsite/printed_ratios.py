@@ -143,14 +143,17 @@ def craft_ratios(found: dict) -> dict:
 
 def stress_counts(printed: str) -> dict:
     """``laddermill stress``'s summary ("127 passed, 1 failed") and its FAIL lines' scene, case and end [s]:
-    ``passed``, ``failed``, ``total`` and ``fail_t`` ({"laddermill/bang-bang controls": 5.46})."""
+    ``passed``, ``failed``, ``total``, ``fail_t`` ({"laddermill/bang-bang controls": 5.46}) and ``end_t`` (every case's
+    end [s], passed or failed, by the same key)."""
     m = re.search(r"^(\d+) passed, (\d+) failed$", printed, re.M)
     if m is None:
         return {}
     ends = {f"{a}/{b.strip()}": float(t) for a, b, t in re.findall(
         r"^FAIL +(\S+) +(.+?) {2,}failed: .*\n +t_end_s=([\d.]+)", printed, re.M)}
+    every = {f"{a}/{b.strip()}": float(t) for a, b, t in re.findall(
+        r"^(?:PASS|FAIL) +(\S+) +(.+?) {2,}\S.*\n +t_end_s=([\d.]+)", printed, re.M)}
     return {"passed": m.group(1), "failed": m.group(2), "total": str(int(m.group(1)) + int(m.group(2))),
-            "fail_t": ends}
+            "fail_t": ends, "end_t": every}
 
 
 def evaluate_rows(printed: str, episodes: int, reference: str) -> dict:

@@ -217,21 +217,27 @@ def test_the_claims_rows_are_worked_from_evaluates_table():
 
 STRESS = """PASS  laddermill             random controls              ok
       t_end_s=20, min_wing_height_m=58.34, max_tension_N=1.634e+05, max_kinetic_energy_J=5.742e+05
-FAIL  laddermill             bang-bang controls           failed: integration failed at t = 5.46 s (speed or rate limit)
+PASS  laddermill             bang-bang controls           terminated (limit of the quasi-steady model): wing 12 (angle
       t_end_s=5.46, min_wing_height_m=54.94, max_tension_N=1.808e+05, max_kinetic_energy_J=4.25e+06
 
-127 passed, 1 failed
+128 passed, 0 failed
 """
 
 
 def test_the_stress_runs_counts_are_its_summary():
-    """work_precision.md's and features.md's counts as laddermill stress printed them on 2026-11-30 (127 passed, 1
-    failed: the mill under bang-bang controls at 5.46 s); the 2026-11-24 run's 128 passed, 0 failed is named on both."""
+    """work_precision.md's and features.md's counts as laddermill stress printed them on 2026-11-30 after c576da4
+    (128 passed, 0 failed: the mill under bang-bang controls ends at 5.46 s at a limit of the quasi-steady model);
+    the day's first run (127 passed, 1 failed: that case a failure) fails both pages' checks."""
     from docsite.printed_ratios import stress_counts
 
-    assert stress_counts(STRESS) == {"passed": "127", "failed": "1", "total": "128",
-                                     "fail_t": {"laddermill/bang-bang controls": 5.46}}
+    assert stress_counts(STRESS) == {"passed": "128", "failed": "0", "total": "128", "fail_t": {},
+                                     "end_t": {"laddermill/random controls": 20.0,
+                                               "laddermill/bang-bang controls": 5.46}}
     assert long_check_differences({"stress_all": {"printed": STRESS}}) == []
-    old = STRESS.replace("FAIL", "PASS").replace("127 passed, 1 failed", "128 passed, 0 failed")
+    old = STRESS.replace("PASS  laddermill             bang-bang controls           terminated (limit of the "
+                         "quasi-steady model): wing 12 (angle", "FAIL  laddermill             bang-bang controls    "
+                         "       failed: integration failed at t = 5.46 s (speed or rate limit)")
+    old = old.replace("128 passed, 0 failed", "127 passed, 1 failed")
+    assert stress_counts(old)["fail_t"] == {"laddermill/bang-bang controls": 5.46}
     bad = long_check_differences({"stress_all": {"printed": old}})
     assert sorted(b.split(":")[0] for b in bad) == ["docs/features.md", "docs/work_precision.md"], bad
