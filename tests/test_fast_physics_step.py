@@ -22,7 +22,7 @@ from laddermill_gym.envs.physics_step import env_physics_settings, physics_scene
 from laddermill_gym.envs.task_base import default_parallel
 from laddermill_gym.sim.simulator import IntegratorSettings
 from laddermill_gym.studies.benchmarks.env_benchmark import thread_cpu_seconds, threads_working
-from laddermill_gym.studies.benchmarks.physics_step_accuracy import compare, step_arguments
+from laddermill_gym.studies.benchmarks.physics_step_accuracy import closed_loop, compare, step_arguments
 from laddermill_gym.studies.benchmarks.physics_step_accuracy import main as accuracy_main
 
 CHAIN = "laddermill_gym/LadderChain-v0"
@@ -64,6 +64,20 @@ def test_mill_v2_fast_steps_within_1e_3_of_the_extent():
     assert e["registered"] < 1e-6 * e["extent"]  # measured 3.2e-5 m
     assert e["ros34pw2"] < 1e-3 * e["extent"]  # measured 2.4 mm (7e-7 of the extent)
     assert e[FASTEST] < 1e-3 * e["extent"]  # measured 6.7 cm (1.9e-5 of the extent)
+
+
+def test_the_chain_lqr_sees_the_same_run_with_the_fast_step():
+    """What a controller sees: the chain's centralised LQR (configs/agents/lqr_ladder_chain_central.yaml) on the
+    registered scenario with :data:`FASTEST` against the registered RK4 (the oracle, an explicit integrator at a
+    quarter of the control period): the whole episode, the mean power within 1e-4 (relative) and the largest lateral
+    offset within 1 mm (measured over 20 s: -5.5e-7 and -7e-9 m; over 300 s the same, docs/benchmarks.md)."""
+    res = closed_loop(CHAIN, "lqr:configs/agents/lqr_ladder_chain_central.yaml", EPISODE_S, (FASTEST,),
+                      echo=lambda *a: None)
+    ref, fast = res["registered"], res[FASTEST]
+    assert ref["length_s"] == pytest.approx(EPISODE_S) and fast["length_s"] == pytest.approx(EPISODE_S)
+    assert abs(fast["power_W"] - ref["power_W"]) < 1e-4 * ref["power_W"]
+    assert abs(fast["max_lateral_m"] - ref["max_lateral_m"]) < 1e-3
+    assert 0.05 < ref["max_lateral_m"] < 0.2  # the step's response, not a still chain (0.0803 m)
 
 
 #: a small mill on LadderMill-v2's wing (11 wings, 30 s of settling: its fallback start, about a second; 11 wings

@@ -10,6 +10,10 @@ tests/test_fast_physics_step.py holds the 1e-3 bound for ``physics_step="ros34pw
 
 Command: ``python -m laddermill_gym.studies.benchmarks.physics_step_accuracy laddermill_gym/LadderChain-v0
 --time 10 --steps ros34pw2 ros2`` (seconds per run; LadderMill-v2's operating point first, 100-140 s).
+``--controller SPEC`` (a harness controller: ``lqr``, ``lqr:PATH``, a run folder) runs it closed loop instead, as
+``laddermill evaluate`` does (seed 0, the registered scenario, ``--time`` seconds): per physics step the episode's
+length, mean power and largest lateral offset, and their differences from the registered step's
+(:func:`closed_loop`).
 """
 
 from __future__ import annotations
@@ -115,6 +119,37 @@ def compare(env_id: str, episode_time: float, steps=("ros34pw2",), echo=print, *
     return res
 
 
+def closed_loop(env_id: str, spec: str, episode_time: float, steps=("ros2:4",), echo=print) -> dict:
+    """The controller ``spec`` on one seeded episode (seed 0, the registered scenario) of ``episode_time`` [s] with
+    the registered physics step and each of ``steps``: {label: {"length_s", "power_W", "max_lateral_m",
+    "wall_s"}}, printed with each step's differences from the registered step's (power relative, offset in m)."""
+    from pathlib import Path
+    from tempfile import TemporaryDirectory
+
+    from laddermill_gym.harness.evaluate import evaluate
+
+    check_labels(steps)
+    res = {}
+    with TemporaryDirectory() as out:
+        for label in ("registered", *steps):
+            t0 = time.perf_counter()
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # LadderMill-v1 'out of date' and the like
+                r = next(iter(evaluate(env_id, [spec], 1, {"episode_time": episode_time, **step_arguments(label)},
+                                       Path(out), progress=False).values()))
+            res[label] = {"length_s": float(r.lengths_s[0]), "power_W": float(r.mean_power_W[0]),
+                          "max_lateral_m": float(r.max_lateral_m.max()), "wall_s": time.perf_counter() - t0}
+    ref = res["registered"]
+    echo(f"{env_id}, {spec}, {episode_time:g} s (seed 0):")
+    for label, v in res.items():
+        diff = "" if label == "registered" else (
+            f"; against the registered step: power {(v['power_W'] - ref['power_W']) / ref['power_W']:+.2e} "
+            f"(relative), largest offset {v['max_lateral_m'] - ref['max_lateral_m']:+.2e} m")
+        echo(f"  {label:10s}: ran {v['length_s']:g} s, mean power {v['power_W'] / 1e3:.3f} kW, largest lateral "
+             f"offset {v['max_lateral_m']:.5f} m, wall {v['wall_s']:.1f} s{diff}")
+    return res
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("env_id", choices=sorted(REGISTERED_DT))
@@ -122,12 +157,17 @@ def main(argv=None) -> int:
     p.add_argument("--steps", nargs="+", default=["ros34pw2", "ros2"],
                    help="physics_step values compared; METHOD:K keeps a W-method's iteration matrix K steps "
                         "(jacobian_every), e.g. ros2:4")
+    p.add_argument("--controller", metavar="SPEC", help="run this harness controller closed loop instead (lqr, "
+                   "lqr:PATH, a run folder; laddermill evaluate's specs): each step's length, power and lateral offset")
     args = p.parse_args(argv)
     try:
         check_labels(args.steps)
     except ValueError as err:
         p.error(f"--steps: {err}")
-    compare(args.env_id, args.time, tuple(args.steps))
+    if args.controller:
+        closed_loop(args.env_id, args.controller, args.time, tuple(args.steps))
+    else:
+        compare(args.env_id, args.time, tuple(args.steps))
     return 0
 
 
