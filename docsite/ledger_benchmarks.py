@@ -299,6 +299,11 @@ BENCHMARKS = Covered(
             "it ends the open-loop chain's whip after 244 periods against the reference's 245 (ROS34PW2 223), 15.35 m "
             '(4.25e-3 of the extent) off just before, and the mill after 320 against 321, 0.47 m off.',
         )),
+        Printed('fast_step_closed_loop', (  # the LQRs' runs with ros2:4 against the registered step's
+            "seed 0): both LQRs hold 300 s with",
+            "lateral offset -6.69e-09 (relative) and -1.49e-08 m from RK4's, the mill's -9.09e-04 and -9.16e-06 m "
+            '(102.702 kW against 102.795 kW).',
+        )),
         Printed('step_accuracy_40', (
             "the episode ends after 322 periods against the reference's 321", '(7.5e-6 of the extent) until then;',
             'ROS2 ends it after 317', "over 40 s they end the episode after 223 (ROS34PW2) and 221 (ROS2) periods "

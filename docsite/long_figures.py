@@ -116,7 +116,9 @@ LONG = {
     "trim_slope": Long("python -m laddermill_gym.studies.mill.trim_slope", "seconds", "power_curve.md"),
     # wind.md
     "gusts_v2_mill_printed": _bench("gusts-v2", "LadderMill-v0", "open_loop lqr --scenarios EWS_IA NTM_IB "
-                                    "dryden_light dryden_moderate", "wind.md", "25 min at nice 15"),
+                                    "dryden_light dryden_moderate", "wind.md", "7 min at nice 15"),
+    # the pumping kite's prose beside its gusts-v2 table (the table itself: the slow set's page group gusts_v2_pumping)
+    "gusts_v2_pumping_printed": _bench("gusts-v2", "PumpingKite-v0", "open_loop lqr", "wind.md", "16 s"),
     # the work-precision studies (make work-precision; docs/work_precision*.md)
     "wp_closed_loop": Long(f"{WP} ladder_chain --forcing step --controller none lqr --time 10 --samples 50 && {WP} "
                            "laddermill --forcing step --controller none lqr --time 10 --samples 50", "29 min",
@@ -141,7 +143,7 @@ LONG = {
     "wp_controller_measure": Long(" && ".join(
         f"{WP} {scene} --forcing step --time {t} --samples {n}" for scene, t, n in (
             ("ladder_chain", 10, 50), ("laddermill", 10, 50), ("laddermill", 5, 25), ("ladder_chain", 5, 25))),
-        "22 min", "work_precision.md"),
+        "10 min at nice 15", "work_precision.md"),
     "whip_spectrum": Long(" && ".join(
         f"NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.whip_spectrum {scene} --at {at} --top 4 "
         f"--methods ros34pw2:0.0666666666666667 ros2t:0.0666666666666667 rk4:{rk4}" for scene, at, rk4 in (
@@ -169,6 +171,12 @@ LONG = {
         f"--time {t} --steps {steps}" for env in ("LadderChain-v0", "LadderMill-v2")), "about a minute",
         "benchmarks.md") for t, steps in ((10, "ros34pw2 ros2:4 ros2:5 ros2:6 ros2:7 ros2:8 ros2t:4 ros2t:8"),
                                           (40, "ros34pw2 ros2 ros2:4"))},
+    # the fastest step closed loop: each env's LQR over 300 s with the registered step and ros2:4
+    "fast_step_closed_loop": Long(" && ".join(
+        f"python -m laddermill_gym.studies.benchmarks.physics_step_accuracy laddermill_gym/{env} --controller {spec} "
+        "--time 300 --steps ros2:4" for env, spec in (
+            ("LadderChain-v0", "lqr:configs/agents/lqr_ladder_chain_central.yaml"), ("LadderMill-v2", "lqr"))),
+        "about 3 min (2026-11-30)", "benchmarks.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "over an hour",
                           "wing_data.md"),
