@@ -33,6 +33,18 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
         'numba thread.',
     ),
     timings=(
+        # the table's CPU speed-ups and step costs (the run of f45b8d3, 2026-11-30 00:27). --long wp_closed_loop on
+        # 2026-11-30 (load 3-3.7) printed open loop ROS34PW2 1.54x (ros2t 1.24x), mill ros2t 0.84x (ROS34PW2 0.52x);
+        # closed loop ros2 / ros2t / ROS34PW2 2.40 / 2.33 / 1.53x (chain), 2.98 / 2.96 / 1.89x (mill); ros34pw2a 1.48x
+        # at 1e-4, 1.83x at 1e-3 (the same runs as 1e-2): the page's re-run paragraph
+        '**1.42x** (ros2t 1.13x) |', '**2.14x** | 0.05 s: **2.23x** | 0.05 s: 1.36x |', '**0.84x** (ROS34PW2 0.52x) |',
+        '**2.89x** | 0.05 s: **2.77x** | 0.05 s: 1.78x |', '1.37x on the chain and 1.74x on the mill.',
+        '**5x is not met closed loop either: 2.2x on the chain and 2.9x on the mill.** Closed loop, accuracy is no '
+        'longer what binds.',
+        'A ros2 or ros2t step costs 1.3-1.4 RK4 steps, and a ROS34PW2 step about 2.2.',
+        'Re-run on 2026-11-30 ( , 965 s at nice 15, load 3-3.7): every step and error above as written; the CPU '
+        'speed-ups in the table\'s order 1.54x (ros2t 1.24x), 2.40x, 2.33x, 1.53x and 0.84x (ROS34PW2 0.52x), 2.98x, '
+        '2.96x, 1.89x; 1.48x and 1.83x, listed at 1e-4 and 1e-3, which give the same runs as 1e-2 there.',
         # the chain's kept-matrix CPU speed-ups (the run committed in f45b8d3; --long wp_chain_kept_matrix on
         # 2026-11-30 at load 1-2 printed ros2 2.31 / 2.96 / 3.46 / 3.71x, ros2t 2.30 / 2.97 / 3.47 / 3.79x, ROS34PW2
         # 1.49 / 1.72 / 1.89 / 1.98x)
@@ -77,26 +89,21 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
         'below the 4.3x bound with a free Jacobian above.',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # --long wp_closed_loop (2026-11-30, 965 s, nice 15, load 3-3.7): every step and error as written
         Printed('wp_closed_loop', (
-            "After the direction step the chain's and the mill's slow lateral modes are unstable (up to 6.4 1/s, "
-            '"The apex whip\'s modes" there), so any integrator\'s local error grows by itself, and what separates '
-            'the methods is how much error each step adds to those modes.',
-            '|---|---|---|---|---|---|---| | ladder_chain | 0.0222 s | ROS34PW2 0.0667 s: **1.42x** (ros2t 1.13x)',
-            '0.01667 s | 0.05 s: **2.14x** | 0.05 s: **2.23x** | 0.05 s: 1.36x',
-            'laddermill | 0.01538 s | ros2t 0.01667 s: **0.84x** (ROS34PW2 0.52x)',
-            '0.0125 s | 0.05 s: **2.89x** | 0.05 s: **2.77x** | 0.05 s: 1.78x',
-            '1.37x on the chain and 1.74x on the mill.',
-            '**5x is not met closed loop either:',
-            '2.2x on the chain and 2.9x on the mill.** Closed loop, accuracy is no longer what binds.',
+            '| ladder_chain | 0.0222 s | ROS34PW2 0.0667 s:', '| 0.01667 s | 0.05 s:',
+            '| laddermill | 0.01538 s | ros2t 0.01667 s:', '| 0.0125 s | 0.05 s:',
             'Every W-method meets the tolerances at its largest step, 0.05 s, with room to spare.',
             'On the chain ROS34PW2 at 0.05 s is 2.5e-4 m and 3.1e-4 rad off, and ros2t is 3.1e-4 m off.',
             'On the mill ros2t is 1.9e-4 m off and 0.07 % in power.',
             'The RK4 baseline meets them by orders of magnitude (3e-8 m on the chain).',
-            'A ros2 or ros2t step costs 1.3-1.4 RK4 steps, and a ROS34PW2 step about 2.2.',
-            '- On the chain RK4 at 0.025 s, 2 steps per period and just beyond the stable-step estimate of 0.02445 '
-            's, runs to the end but misses the tolerances:',
-            '4.6 % in tension and 0.075 rad in attitude (a growing cable mode).',
-            '- On the mill RK4 at 0.0167 s breaks down at 0.33 s.',
+            'the stable-step estimate of 0.02445 s,',
+        )),
+        # the mill's fastest unstable mode (whip_spectrum prints 6.405 1/s; until 2026-11-30 under wp_closed_loop)
+        Printed('whip_spectrum', (
+            "After the direction step the chain's and the mill's slow lateral modes are unstable (up to 6.4 1/s, "
+            '"The apex whip\'s modes" there), so any integrator\'s local error grows by itself, and what separates '
+            'the methods is how much error each step adds to those modes.',
         )),
         Printed('wp_chain_kept_matrix', (
             'Every kept-matrix run still meets the tolerances with room: at most 2.0e-3 m in lateral offset (ros2, '
@@ -107,7 +114,13 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
             'in power', '(hence its 0.025 s), ros2 kept 4 is 8.5e-3 off, ros2t kept 8 1.7e-3.',
         )),
     ),
-    not_rerun=(  # tests/test_closed_loop_precision.py's agreements (a test's assertions, not a printed figure)
+    not_rerun=(
+        # one-off runs beside the study (the page: "a one-off script"): its closed-loop grid starts at 3 RK4 steps per
+        # period on the chain (0.01667 s) and 4 on the mill (0.0125 s), so no command prints these
+        '- On the chain RK4 at 0.025 s, 2 steps per period and just beyond', 'runs to the end but misses the '
+        'tolerances: 4.6 % in tension and 0.075 rad in attitude (a growing cable mode).',
+        '- On the mill RK4 at 0.0167 s breaks down at 0.33 s.',
+        # tests/test_closed_loop_precision.py's agreements (a test's assertions, not a printed figure)
         "At the scene's own integrator the wing paths agree to 8e-17 m and 3.5e-18 rad on the tethered wing (2 s). "
         'On the chain (4 s, slow test)',
         'they agree to 5e-12 m and 1.3e-12 rad.',
