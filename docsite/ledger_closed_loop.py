@@ -1,6 +1,8 @@
 """The ledger entry (:mod:`docsite.page_ledger`) of docs/work_precision_closed_loop.md (merged 2026-11-30): the
-closed-loop work-precision runs (12-17 min each) not re-run, their commands named; the loop's settings given;
-the CPU costs timings as the page dates them; the bounds worked from them derived."""
+closed-loop work-precision runs' steps and errors Printed snippets of their long groups (``--long wp_closed_loop``,
+``wp_chain_kept_matrix``, ``wp_mill_kept_matrix``; first run 2026-11-30); the loop's settings given; the CPU costs
+and speed-ups timings as the page dates them; the bounds worked from them derived; one-off runs beside the study and
+a test's assertions not re-run."""
 
 from __future__ import annotations
 

@@ -1,8 +1,9 @@
 """The ledger entry (:mod:`docsite.page_ledger`) of docs/work_precision.md: RK4's and DP5(4)'s stability limits
 worked from their tableaux and the stable-step table against ``laddermill stable-step`` for its four scenes
-(:mod:`docsite.precision_figures`); the work-precision, controller-measure, whip-spectrum and stress studies not
-re-run (about 15 minutes to an hour each; their commands named); the methods' settings given; the durations
-timings under the page's date."""
+(:mod:`docsite.precision_figures`); the work-precision, controller-measure (:mod:`docsite.ledger_controller_measure`),
+whip-spectrum and stress studies' printed figures Printed snippets of their long groups (``python -m
+docsite.readme_figures --long NAME``, each run once on 2026-11-30); the methods' settings given; the CPU speed-ups and
+durations timings under the page's dates; what no command prints not re-run, each with its reason."""
 
 from __future__ import annotations
 

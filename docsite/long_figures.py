@@ -121,8 +121,8 @@ LONG = {
     "gusts_v2_pumping_printed": _bench("gusts-v2", "PumpingKite-v0", "open_loop lqr", "wind.md", "16 s"),
     # the work-precision studies (make work-precision; docs/work_precision*.md)
     "wp_closed_loop": Long(f"{WP} ladder_chain --forcing step --controller none lqr --time 10 --samples 50 && {WP} "
-                           "laddermill --forcing step --controller none lqr --time 10 --samples 50", "16 min at nice 15",
-                           "work_precision_closed_loop.md"),
+                           "laddermill --forcing step --controller none lqr --time 10 --samples 50",
+                           "16 min at nice 15", "work_precision_closed_loop.md"),
     "wp_chain_kept_matrix": Long(f"{WP} ladder_chain --forcing step --controller lqr --jacobian-every 1 2 4 8 --time 5 "
                                  "--samples 25 --n-dt 3", "8 min", "work_precision_closed_loop.md"),
     "wp_mill_kept_matrix": Long(f"{WP} laddermill --forcing step --controller lqr --jacobian-every 1 2 4 8 --time 5 "
