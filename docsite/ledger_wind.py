@@ -136,7 +136,10 @@ WIND = Covered(
         Printed('gusts_v1_ladder_chain', ('in turbulence both leave the aerodynamic tables after 7-11 s',)),
         # the mill's failures in the gust bench's CSV (--long gusts_v2_mill_printed, 2026-11-30, 392 s: as written)
         Printed('gusts_v2_mill_printed', (
-            '(until the LQR-controlled mill fails, near 7 s)', '(slots 0-23,', 'lateral offsets of only 1-3 m;',
+            '(until the LQR-controlled mill fails, near 7 s)', '(slots 0-23,',
+            # the failed seeds' largest lateral excursions (max_lateral_m; the open loop's at 6.1-8.25 s beyond 3 m)
+            'lateral offsets of only 1-3 m (largest excursions 0.8-3.2 m;',
+            "6.4-18.6 m in the open loop's three later failures);",
             'delays the failure to 5-8 s,',
         )),
         # the pumping kite's held NTM_IB seeds and in-plane events (until 2026-11-30 listed under the mill's group,
