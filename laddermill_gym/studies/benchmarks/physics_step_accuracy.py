@@ -10,10 +10,9 @@ tests/test_fast_physics_step.py holds the 1e-3 bound for ``physics_step="ros34pw
 
 Command: ``python -m laddermill_gym.studies.benchmarks.physics_step_accuracy laddermill_gym/LadderChain-v0
 --time 10 --steps ros34pw2 ros2`` (seconds per run; LadderMill-v2's operating point first, 100-140 s).
-``--controller SPEC`` (a harness controller: ``lqr``, ``lqr:PATH``, a run folder) runs it closed loop instead, as
-``laddermill evaluate`` does (seed 0, the registered scenario, ``--time`` seconds): per physics step the episode's
-length, mean power and largest lateral offset, and their differences from the registered step's
-(:func:`closed_loop`).
+``--controller SPEC`` (a harness controller: ``lqr``, ``lqr:PATH``, a run folder) runs it closed loop instead (seed
+0, the paper's 0.01 rad direction step at 1 s, ``--time`` seconds): per physics step the episode's length, mean
+power and largest lateral offset, and their differences from the registered step's (:func:`closed_loop`).
 """
 
 from __future__ import annotations
@@ -119,26 +118,29 @@ def compare(env_id: str, episode_time: float, steps=("ros34pw2",), echo=print, *
     return res
 
 
-def closed_loop(env_id: str, spec: str, episode_time: float, steps=("ros2:4",), echo=print) -> dict:
-    """The controller ``spec`` on one seeded episode (seed 0, the registered scenario) of ``episode_time`` [s] with
-    the registered physics step and each of ``steps``: {label: {"length_s", "power_W", "max_lateral_m",
-    "wall_s"}}, printed with each step's differences from the registered step's (power relative, offset in m)."""
-    from pathlib import Path
-    from tempfile import TemporaryDirectory
+#: the closed-loop runs' disturbance: the paper's 0.01 rad wind-direction step at t = 1 s [rad], [s]
+PAPER_STEP = {"type": "DirectionStep", "step": 0.01, "time": 1.0}
 
-    from laddermill_gym.harness.evaluate import evaluate
+
+def closed_loop(env_id: str, spec: str, episode_time: float, steps=("ros2:4",), echo=print) -> dict:
+    """The controller ``spec`` (``make_controller``'s specs) on one episode (seed 0) of ``episode_time`` [s] with
+    the paper's step (:data:`PAPER_STEP`), with the registered physics step and each of ``steps``:
+    {label: {"length_s", "power_W" (mean over the episode), "max_lateral_m" (largest |lateral offset| of any
+    wing), "wall_s"}}, printed with each step's differences from the registered step's (power relative, offset
+    in m). The episodes are the gust benchmark's (``gusts/gust_bench.run_episodes``)."""
+    from laddermill_gym.studies.gusts.gust_bench import run_episodes
 
     check_labels(steps)
     res = {}
-    with TemporaryDirectory() as out:
-        for label in ("registered", *steps):
-            t0 = time.perf_counter()
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")  # LadderMill-v1 'out of date' and the like
-                r = next(iter(evaluate(env_id, [spec], 1, {"episode_time": episode_time, **step_arguments(label)},
-                                       Path(out), progress=False).values()))
-            res[label] = {"length_s": float(r.lengths_s[0]), "power_W": float(r.mean_power_W[0]),
-                          "max_lateral_m": float(r.max_lateral_m.max()), "wall_s": time.perf_counter() - t0}
+    for label in ("registered", *steps):
+        t0 = time.perf_counter()
+        kw = step_arguments(label)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # LadderMill-v1 'out of date' and the like
+            rec = run_episodes(make_controller(spec, env_id, kw), env_id, kw, [0], episode_time, [PAPER_STEP])
+        res[label] = {"length_s": float(rec["t_end"][0]),
+                      "power_W": float(rec["energy_J"][0] / (rec["steps"][0] * rec["control_dt"])),
+                      "max_lateral_m": float(np.nanmax(rec["lateral"])), "wall_s": time.perf_counter() - t0}
     ref = res["registered"]
     echo(f"{env_id}, {spec}, {episode_time:g} s (seed 0):")
     for label, v in res.items():
