@@ -1,9 +1,11 @@
 """The ledger entry (:mod:`docsite.page_ledger`) of docs/power_curve.md: the rules' settings given; the 1-5 m/s
 powers at 8 m/s checked against ``fast_mill case`` (``fast_mill_v2``, the same cases); every other measured
-figure from the six ``laddermill power-curve`` runs of 2026-11-29 (60 min on one core), not re-run: their JSONs
-(results/power_curve_v2*/power_curve.json, which ``--table`` and ``--replay`` read) are untracked, so the
-printed blocks (text fences, outside the quoted numbers) and the prose quoting them cannot be replayed from a
-clean checkout; the runs' durations are timings dated on the page. No test compares the page with a replay."""
+figure from the six ``laddermill power-curve`` runs of 2026-11-29 (60 min on one core), re-run by the long groups
+power_curve_v2* (``python -m docsite.readme_figures --skip-readme --long NAME``; their JSONs, which ``--table`` and
+``--replay`` read, are untracked): each run's printed block (a text fence, outside the quoted numbers) is compared
+line for line with its group's output (:mod:`docsite.printed_blocks`), the prose quoting them with the replay's
+(``power_curve_replay``, after all six). Runs of 2026-11-30: power_curve_v2_depower10 (181 s, nice 15, load 3.1-3.3)
+printed its block as written. The runs' durations are timings dated on the page."""
 
 from __future__ import annotations
 

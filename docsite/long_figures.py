@@ -31,12 +31,15 @@ STEEP = " --elevators 1.3 3.35 --elevation 70"  # mill_fast.md: at 3.35 deg the 
 class Long:
     """A long group: the command (as typed; a leading ``NAME=VALUE`` sets the environment, ``laddermill`` is the
     package's CLI; several joined by `` && `` run in turn, their outputs concatenated), what it cost when last run,
-    the page its figures are on, and the files it writes whose figures the page quotes (a gust bench's CSV)."""
+    the page its figures are on, the files it writes whose figures the page quotes (a gust bench's CSV), and the
+    ``$`` commands of the page's ``text`` blocks that show its output (:mod:`docsite.printed_blocks`; none: a block
+    of the command itself, where the page has one)."""
 
     command: str
     cost: str
     page: str
     reads: tuple = ()  # files (from the repository root) the command writes whose text counts as printed
+    shows: tuple = ()  # $ lines of the page's text blocks that are this command's printed output, line for line
 
 
 def _bench(suite: str, env: str, controllers: str, page: str, cost: str = "minutes") -> Long:
@@ -51,6 +54,15 @@ def _bench(suite: str, env: str, controllers: str, page: str, cost: str = "minut
 def _gusts(env: str, page: str, policy: str = "") -> Long:
     return _bench("gusts-v1", env, "open_loop lqr" + (f" {policy}" if policy else ""), page,
                   "minutes (7-12 scenarios x 3 seeds)")
+
+
+def _table_of(name: str) -> tuple:
+    """The ``$`` line of power_curve.md's block that shows run ``name``'s table: for v2 and v2_refine the table
+    printed again from the run's JSON (``--table``; the runs themselves printed an earlier format), else none (the
+    block of the command itself)."""
+    out = f"results/power_curve_{name}"
+    shown = f"laddermill power-curve --table {out}/power_curve.json --out {out}"
+    return (shown,) if name in ("v2", "v2_refine") else ()
 
 
 #: Every long group: name -> its command.
@@ -98,7 +110,7 @@ LONG = {
                                         "6 min", "reeling_tether.md"),
     # power_curve.md: the six runs of 2026-11-29 (60 min on one core together), then their replay (2 s)
     **{f"power_curve_{name}": Long(f"laddermill power-curve --workers 1 {args}--out results/power_curve_{name}",
-                                   cost, "power_curve.md")
+                                   cost, "power_curve.md", shows=_table_of(name))
        for name, args, cost in (("v2", "--tail-rule scene --wind-speeds 2 5 ", "28 min"),
                                 ("v2_refine", "--speeds --winds 4 6 --wind-speeds 0.5 1 3 4 ", "15 min"),
                                 ("v2_depower", "--tail-rule depower --speeds --winds 10 12 14 --wind-speeds 2 3 5 ",

@@ -44,6 +44,7 @@ from docsite.page_numbers import prose, unaccounted
 from docsite.paper_figures import printed_match, run_command
 from docsite.pointmass_figures import pointmass_data
 from docsite.precision_figures import PRECISION_GROUPS
+from docsite.printed_blocks import block_differences
 from docsite.printed_numbers import printed_differences
 from docsite.printed_ratios import craft_ratios
 from docsite.pumping_figures import PUMPING_GROUPS
@@ -325,7 +326,9 @@ def pages_differences(measured: dict) -> list[str]:
 def long_differences(long: dict) -> list[str]:
     """Every Printed snippet of a long group in ``long`` (``figures["long"]``: {group: {"printed": output}}) that
     quotes a number its command did not print, every check naming a long group that ran whose quoted text is not
-    what its files give (:func:`docsite.long_checks.long_check_differences`: the gust scorecards), and every group
+    what its files give (:func:`docsite.long_checks.long_check_differences`: the gust scorecards), every text block
+    of its page that shows its output and differs from it (:func:`docsite.printed_blocks.block_differences`), and
+    every group
     whose command crashed (an exit other than 0, or 1 for a study reporting a failed case) or did not write a file
     it reads; [] when all agree or nothing was run."""
     failed = [f"--long {name}: exit {g['exit']}, {[e for e in g.get('stderr', ()) if e]}"
@@ -333,7 +336,7 @@ def long_differences(long: dict) -> list[str]:
               or any(str(e).endswith(": not written") for e in g.get("stderr", ()))]
     printed = [line for name, entry in LEDGER.items()
                for line in printed_differences(name, getattr(entry, "printed", ()), long)]
-    return failed + long_check_differences(long) + printed
+    return failed + long_check_differences(long) + block_differences(long) + printed
 
 
 def coverage() -> dict[str, dict]:
