@@ -82,8 +82,9 @@ POWER_CURVE = Covered(
         'cell of the V0 4 m/s, V_c 5 m/s row, whose ramp broke down before any period, where the command now '
         'prints ; every number is the same):',
         "**The refinement** at 4 and 6 m/s, where the grid's best was at its lower edge or missing because the "
-        'wings came down: (8 cases, 14 min 59 s on one core, same load); the block is its table printed again '
-        "from the run's JSON ( : the same numbers; the header and elevator columns in today's format):",
+        "wings came down: (then with the default tail rule ; today add , which its block's header names; 8 "
+        "cases, 14 min 59 s on one core, same load); the block is its table printed again from the run's JSON ( "
+        ": the same numbers; the header and elevator columns in today's format):",
         "**Above the paper's wind, depowered** ( , the rule above): the 10-14 m/s rows again, V_c 2, 3, 5 m/s, "
         "then 6 m/s, where the best lay at the grid's upper edge (9 cases in 5 min 2 s, 3 cases in 3 min 42 s, "
         'one core, the same machine on 2026-11-29 at load average 3-4):',

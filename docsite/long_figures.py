@@ -112,7 +112,8 @@ LONG = {
     **{f"power_curve_{name}": Long(f"laddermill power-curve --workers 1 {args}--out results/power_curve_{name}",
                                    cost, "power_curve.md", shows=_table_of(name))
        for name, args, cost in (("v2", "--tail-rule scene --wind-speeds 2 5 ", "28 min"),
-                                ("v2_refine", "--speeds --winds 4 6 --wind-speeds 0.5 1 3 4 ", "15 min"),
+                                ("v2_refine", "--tail-rule scene --speeds --winds 4 6 --wind-speeds 0.5 1 3 4 ",
+                                 "15 min"),
                                 ("v2_depower", "--tail-rule depower --speeds --winds 10 12 14 --wind-speeds 2 3 5 ",
                                  "5 min"),
                                 ("v2_depower6", "--tail-rule depower --speeds --winds 10 12 14 --wind-speeds 6 ",
