@@ -4,8 +4,9 @@ figure from the six ``laddermill power-curve`` runs of 2026-11-29 (60 min on one
 power_curve_v2* (``python -m docsite.readme_figures --skip-readme --long NAME``; their JSONs, which ``--table`` and
 ``--replay`` read, are untracked): each run's printed block (a text fence, outside the quoted numbers) is compared
 line for line with its group's output (:mod:`docsite.printed_blocks`), the prose quoting them with the replay's
-(``power_curve_replay``, after all six). Runs of 2026-11-30: power_curve_v2_depower10 (181 s, nice 15, load 3.1-3.3)
-printed its block as written. The runs' durations are timings dated on the page."""
+(``power_curve_replay``, after all six). Runs of 2026-11-30 (nice 15), each printing its block as written:
+power_curve_v2_depower10 (181 s, load 3.1-3.3), power_curve_v2_depower6 (154 s, load 2.6-3.2). The runs'
+durations are timings dated on the page."""
 
 from __future__ import annotations
 
