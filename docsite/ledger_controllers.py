@@ -7,6 +7,7 @@ entries of long groups (:mod:`docsite.long_figures`); the PPO runs (not kept) as
 from __future__ import annotations
 
 from docsite.ledger_kinds import Covered, History, Printed
+from docsite.ledger_residual_sac import RESIDUAL_SAC_NOISE
 
 LS = "{lateral_study[eigenvalues][%d][%d]}"
 W, C, CS = "~{wing_controllers[%s]}", "~{chain_controllers[%s]}", "~{craft_stability[%s]}"
@@ -394,5 +395,6 @@ CONTROLLERS = Covered(
                  "to 94 after the warm-up with 19 to 57 lost that the LQR holds (paired scores at most 56): it kept "
                  "its start too (gusts-v1 11 / 12, the LQR's excursions). Two of the three after-squash runs found no "
                  "checkpoint that loses fewer than 19 of the LQR's validation survivals; seed 0's lost 11.",)),
+        *RESIDUAL_SAC_NOISE,
     ),
 )
