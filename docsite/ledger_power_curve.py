@@ -6,8 +6,9 @@ power_curve_v2* (``python -m docsite.readme_figures --skip-readme --long NAME``;
 line for line with its group's output (:mod:`docsite.printed_blocks`), the prose quoting them with the replay's
 (``power_curve_replay``, after all six). Runs of 2026-11-30 (nice 15), each printing its block as written:
 power_curve_v2_depower10 (181 s, load 3.1-3.3), power_curve_v2_depower6 (154 s, load 2.6-3.2),
-power_curve_v2_depower (221 s, load 2.0-3.1), power_curve_v2_depower8 (171 s, load 2.2-3.0). The runs' durations
-are timings dated on the page."""
+power_curve_v2_depower (221 s, load 2.0-3.1), power_curve_v2_depower8 (171 s, load 2.2-3.0), power_curve_v2_refine
+(304 s, load 1.5-3.4; with ``--tail-rule scene``, which its block's header names). The runs' durations are timings
+dated on the page (2026-11-29's)."""
 
 from __future__ import annotations
 
