@@ -194,6 +194,8 @@ def test_physics_step_arguments():
         compare(CHAIN, 1.0, ("ros2:4", "rk4:4"))
     with pytest.raises(SystemExit):
         accuracy_main([CHAIN, "--steps", "ros2:x"])
+    with pytest.raises(SystemExit):  # a controller spec that is none: a usage error naming it
+        accuracy_main([CHAIN, "--controller", "no_such_controller", "--time", "1"])
 
 
 def test_threads_working_counts_the_threads_worth_of_work():

@@ -167,7 +167,10 @@ def main(argv=None) -> int:
     except ValueError as err:
         p.error(f"--steps: {err}")
     if args.controller:
-        closed_loop(args.env_id, args.controller, args.time, tuple(args.steps))
+        try:
+            closed_loop(args.env_id, args.controller, args.time, tuple(args.steps))
+        except ValueError as err:  # a spec make_controller refuses, named with its value
+            p.error(f"--controller: {err}")
     else:
         compare(args.env_id, args.time, tuple(args.steps))
     return 0
