@@ -109,10 +109,10 @@ LONG = {
     "reeling_power_curve_printed": Long("python -m laddermill_gym.studies.pumping.power_curve --reel-element-length 40",
                                         "6 min", "reeling_tether.md"),
     # power_curve.md: the six runs of 2026-11-29 (60 min on one core together), then their replay (2 s); costs as
-    # measured on 2026-11-30 at nice 15, load 2-3.5 (28 min: v2's of 2026-11-29)
+    # measured on 2026-11-30 at nice 15, load 1.5-3.5
     **{f"power_curve_{name}": Long(f"laddermill power-curve --workers 1 {args}--out results/power_curve_{name}",
                                    cost, "power_curve.md", shows=_table_of(name))
-       for name, args, cost in (("v2", "--tail-rule scene --wind-speeds 2 5 ", "28 min"),
+       for name, args, cost in (("v2", "--tail-rule scene --wind-speeds 2 5 ", "8.2 min"),
                                 ("v2_refine", "--tail-rule scene --speeds --winds 4 6 --wind-speeds 0.5 1 3 4 ",
                                  "5 min"),
                                 ("v2_depower", "--tail-rule depower --speeds --winds 10 12 14 --wind-speeds 2 3 5 ",
