@@ -8,15 +8,26 @@ line for line with its group's output (:mod:`docsite.printed_blocks`), the prose
 power_curve_v2_depower10 (181 s, load 3.1-3.3), power_curve_v2_depower6 (154 s, load 2.6-3.2),
 power_curve_v2_depower (221 s, load 2.0-3.1), power_curve_v2_depower8 (171 s, load 2.2-3.0), power_curve_v2_refine
 (304 s, load 1.5-3.4; with ``--tail-rule scene``, which its block's header names), power_curve_v2 (490 s, load
-2.1-3.3), then power_curve_replay (2 s): its block as written, line for line, but its Printed snippets below fail
-``missing``'s window (60 printed numbers) and name numbers it does not print: see the comment there. The runs'
-durations are timings dated on the page (2026-11-29's)."""
+2.1-3.3), then power_curve_replay (2 s): its block as written, line for line; its five Printed snippets, which it
+did not print (rows of other runs, numbers spread over more rows than ``missing``'s window), split and remapped (the
+comment at ``printed``), with power_curve_runs (9 s) for the six runs' own rows and CSVs. The runs' durations are
+timings dated on the page (2026-11-29's)."""
 
 from __future__ import annotations
 
 from docsite.ledger_kinds import Covered, History, Printed
 
 FM = "~{fast_mill_v2[v%d][P]}"  # the 1-5 m/s rows are mill_fast.md's in-plane table (same cases)
+
+# power_curve_replay's pieces no group prints: the search setting (--max-time 1,500 s) and the scene's or the
+# paper's figures (the v2 descending trim C_L 0.91, 101 wings of 20 m span, the wind's shear 0.0016 1/s, Figs. 6-7)
+GIVEN_REPLAY = (
+    'Figs. 6-7 at 1', 'The strip is a loose bound for a laddermill: 101 wings',
+    'the v2 descending wings fly at C_L 0.91 (chosen so the descending leg stays taut on the way',
+    '20 m span fly in one 20 m wide', 'since above h0 the wind is V0 + 0.0016 1/s (h - h0)',
+    '6 m/s not periodic in 1,500 s (406.6 kW',
+    'At 6 m/s the search ends unconverged after 1,500 s with a small residual oscillation (406.6 kW',
+)
 
 POWER_CURVE = Covered(
     groups=('fast_mill_v2',),
@@ -25,7 +36,7 @@ POWER_CURVE = Covered(
             (r"\| 8 \| 5 \(grid 0\.5-6\) \| ([\d.]+) \|", (FM % 5,)),
             (r"crosses 200 kW between 3 m/s \(([\d.]+) kW\) and 4 m/s \(([\d.]+) kW\); at the paper's two speeds it "
              r"gives ([\d.]+) kW \(1 m/s", (FM % 3, FM % 4, FM % 1))),
-    given=(
+    given=GIVEN_REPLAY + (
         'Issue 30 point 3 asks what a wind-energy user asks first: the mean electrical power against the cable '
         "speed V_c at the paper's wind, and the best V_c and its power against the wind speed. One command, ( ), "
         "writes , and ; with its defaults it runs the whole curve (the paper's wind's V_c grid and an adaptive "
@@ -101,95 +112,120 @@ POWER_CURVE = Covered(
         Printed('trim_slope', (
             'prints C_L,trim at 8 m/s: 1.30 ascending, 1.10 descending)',
         )),
-        # --long power_curve_replay (2026-11-30) names all five snippets below (--check-only on its JSON): a mapping
-        # problem, not a stale figure (its printed block is as written). Split at "; ", " | ", ", " and checked
-        # against the six runs' outputs together, what is left unmatched: the scene-elevator rows are only in
-        # power_curve_v2's output (the replay and the merged --table drop them); numbers worked by hand (P / V_c
-        # 43.2-64.8 kN, 1.6 times, 1.8 %, the elevator changes 1.45-1.90 / 0.51-0.73 deg, 50-60 kN); the paper's and
-        # the scene's (Figs. 6-7, 101 wings of 20 m, 0.0016 1/s); in the runs' power_curve.csv, which no group reads
-        # (the period-mean tensions 150.7-161.7 / 107.5-96.9 kN: t_first_kN, t_last_kN; the strip's 3.3 km:
-        # h_low_m, h_high_m); not printed by these runs (the trim C_L 0.61, 0.83, 0.58, 0.42, 0.91, 23 deg, 0.7;
-        # the v1 mill's 82.1, 152.9 kW, wing_data.md's); the walk's counts 32 and 11; numbers spread over more
-        # rows than the window (66.7, 90.4, 353.2, the header's 1,500 s). Not remapped yet (D6, 2026-11-30).
+        # --long power_curve_replay (2026-11-30) named all five snippets it held before (a mapping problem, not a stale
+        # figure: its block is as written): they were split at sentences, cells, "; ", ", " and "to / and / against /
+        # of" (2026-11-30), adjacent pieces of one group joined again, and each piece put where its numbers are
+        # printed: the replay's
+        # rows; power_curve_runs's (the six runs' tables and CSVs: the scene-elevator rows the replay drops, the
+        # refinement's breakdowns, the period-mean tensions, the strip's heights); the rest given, derived (worked by
+        # hand) or not_rerun below, with the arithmetic or what would print them.
         Printed('power_curve_replay', (
-            'The elevators it gives (printed per row): 2.75 / 3.01 deg at 10 m/s, 3.08 / 3.16 at 12, 3.20 / 3.23 at '
-            "14 (ascending / descending). The v2 wing's trim is steep in the elevator (C_L 1.30 to 0.61 from 1.3 to "
-            '4 deg at 8 m/s), and above 5-7 deg (by the wind) the attached-flow trim is lost (a post-stall trim near '
-            '23 deg, C_L about 0.7)',
-            'which on the rows below try V_c 2, 3, 5, 1, 0.5 at 4 m/s (nothing operates); 2, 3, 5, 4 at 6 m/s; 2, 3, '
-            '5, 6 at 10 m/s; 2, 3, 5, 6, 7 at 12 m/s; 2, 3, 5, 6, 7, 8, 9 at 14 m/s.',
-            'Of the 43 cases computed, the walk uses 32; the 11 it does not need: the six 10-14 m/s rows with the '
-            "scene's elevators, V_c 4 m/s at 4 m/s, 0.5 and 1 m/s at 6 m/s (the best, 3 m/s, is not the lowest "
-            'tried), 8 m/s at 12 m/s and 10 m/s at 14 m/s (each climb ends at the first case that does not operate).',
+            'which on the rows below try V_c 2, 3, 5, 1, 0.5 at 4 m/s (nothing operates); 2, 3, 5, 4 at 6 m/s',
+            '2, 3, 5, 6 at 10 m/s', '2, 3, 5, 6, 7 at 12 m/s', '2, 3, 5, 6, 7', '8, 9 at 14 m/s.',
+            'Of the 43 cases computed',
+            'V_c 4 m/s at 4 m/s, 0.5 and 1 m/s at 6 m/s (the best, 3 m/s, is not the lowest tried), 8 m/s at 12 '
+            'm/s and 10 m/s at 14 m/s (each climb ends at the first case that does not operate).',
             "**All runs together**: with several JSON files merges their rows (a later run's case replacing an "
-            "earlier one's, so the 10-14 m/s rows are the depower rule's; below 8 m/s the rule is the scene's) and "
-            "draws their figure (not the one above, which is the replay's); its best-per-wind lines (the whole table "
-            'is the rows quoted in this section):',
+            "earlier one's, so the 10-14 m/s rows are the depower rule's; below 8 m/s the rule is the scene's) "
+            "and draws their figure (not the one above, which is the replay's); its best-per-wind lines (the "
+            'whole table is the rows quoted in this section):',
             'V0 at 50 m [m/s] | best V_c within the limit [m/s] | its power [kW] | what the six runs found (every '
             'case computed; the adaptive search needs the subset listed above; above 8 m/s the depower rule) | '
-            '|---|---|---|---| | 4 | none | - | the wings come down at every V_c: ground contact at t = 860.44, '
-            '874.64, 493.75, 471.49, 448.26 s (V_c 0.5, 1, 2, 3, 4 m/s) and during the ramp at 449.03 s (5 m/s); on '
-            'the way down the tension reaches 456.0 kN | | 6 | 3 | 105.8 | periodic at 0.5, 1, 2, 3 m/s (11.2, 24.6, '
-            '59.2, 105.8 kW); 4 m/s not periodic in 1,500 s (165.5 kW, within the limit); 5 m/s ground contact at t '
-            "= 959.95 s (wing 2), the search's peak tension 438.4 kN on the way | | 8 | 5 (grid 0.5-6) | 323.9 | "
-            'periodic at 0.5-5 m/s, every tension below 210 kN; 6 m/s not periodic in 1,500 s (406.6 kW, within the '
-            'limit) | | 10 (depower) | 5 | 375.3 | elevators 2.75 / 3.01 deg; periodic at 2, 3, 5 m/s (90.4, 169.0, '
-            '375.3 kW), every tension below 153.8 kN (at rest 124.5 kN); 6 m/s not periodic in 1,500 s (491.7 kW, '
-            'within the limit). Scene elevators: periodic but over the limit (217.7, 223.9 kN at 2, 5 m/s; at rest '
-            '211.3 kN) | | 12 (depower) | 6 | 501.3 | elevators 3.08 / 3.16 deg; periodic at 2, 3, 5, 6 m/s (78.5, '
-            '156.4, 372.9, 501.3 kW), tensions below 150.5 kN (at rest 114.6 kN); 7 m/s not periodic (633.8 kW, '
-            'within the limit); 8 m/s ground contact at t = 1679.72 s (wing 96), peak 445.9 kN on the way. Scene '
-            'elevators: over the limit (285.5, 290.7 kN) | | 14 (depower) | 8 | 763.6 | elevators 3.20 / 3.23 deg; '
-            'periodic at 2, 3, 5, 6, 7, 8 m/s (66.7, 140.4, 353.2, 483.7, 622.5, 763.6 kW), tensions below 157.3 kN '
-            '(at rest 109.2 kN); 9 m/s not periodic in 1,500 s (812.3 kW, within the limit), 10 m/s ground contact '
-            'at t = 1780.88 s (wing 94). Scene elevators: over the limit (361.2, 365.6 kN)',
-            "- **Power grows with V_c over the whole periodic range** at the paper's wind: 21.6, 45.9, 102.2, 168.6, "
-            '244.0, 323.9 kW at 0.5-5 m/s. The period-mean tension difference grows with it, P / V_c = 43.2, 45.9, '
-            "51.1, 56.2, 61.0, 64.8 kN (the paper: the loop widens with V_c), the first element's period mean rising "
-            "from 150.7 to 161.7 kN and the last's falling from 107.5 to 96.9 kN; the largest tension, the first "
-            "element's, barely moves (151.9 to 163.5 kN: the ascending leg's pull at the ground, set by the wind). "
-            'The 1-5 m/s rows are the in-plane table of [mill_fast.md] to the printed digits (same cases, same '
-            'ramp). At 6 m/s the search ends unconverged after 1,500 s with a small residual oscillation (406.6 kW, '
-            "tensions within the limit); the best V_c at the paper's wind therefore sits at the edge of the periodic "
-            'range, 5 m/s: the curve has no interior optimum below 6 m/s. - **The paper\'s "of the order of 200 '
-            'kW"** (one figure, for "the considered case with a moderate wind", Figs. 6-7 at 1 and 5 m/s, "not '
-            'optimized for a maximal energy yield"). The v2 curve crosses 200 kW between 3 m/s (168.6 kW) and 4 m/s '
-            "(244.0 kW); at the paper's two speeds it gives 45.9 kW (1 m/s, under a quarter of the paper's figure) "
-            "and 323.9 kW (5 m/s, 1.6 times it). The paper's figure fits 5 m/s far better, as the issue's hand "
-            'estimate said (200 kW needs a tension difference of 40 kN at 5 m/s; the v2 mill pulls 64.8 kN). Why '
-            'ours differs: the tail settings, CG and attachment are our own design (the paper leaves them open); the '
-            'v2 descending wings fly at C_L 0.91 (chosen so the descending leg stays taut on the way to 5 m/s), '
-            'which lowers the tension difference at low V_c (the v1 mill gives 82.1 and 152.9 kW at 1 and 2 m/s with '
-            "its descending C_L 0.61 but is not periodic above 3 m/s). - **The paper's relation holds**: P equals "
-            "(T_first - T_last) V_c from the period-mean tensions to the printed digit in every row (the generator's "
-            'power is that product at every instant; the check is that the period means and the integrated energy '
-            "agree), and every power is far below the Betz bound of the loop's strip (at most 1.8 %: 406.6 of 22,753 "
-            'kW at V_c 6 m/s; 1.4 % at 5 m/s). The strip is a loose bound for a laddermill: 101 wings of 20 m span '
-            "fly in one 20 m wide, 3.3 km high strip, and each takes only its share of the wind's momentum. - **Low "
-            'wind is a physical end**: at V0 = 4 m/s the rest state exists (51.8 kN) but the moving mill does not '
-            'hold itself up at any V_c from 0.5 to 5 m/s: wings reach the ground (ground contact, a reported '
-            'breakdown, not a numerical one), after 860 s at 0.5 m/s, during the ramp at 5 m/s. At 6 m/s the mill is '
-            'periodic up to 3 m/s (105.8 kW, the best of that wind), still within the limit but not periodic at 4 '
-            'm/s, and comes down at 5 m/s. The periodic range in V_c widens with the wind: up to 3 m/s at 6 m/s, 5 '
-            'm/s at 8 m/s, and with the depower rule 5, 6 and 8 m/s at 10, 12 and 14 m/s. - **High wind, '
-            "depowered**: with the scene's elevators the mill at rest already pulls more than 210 kN at the ground "
-            'from V0 = 10 m/s (211.3 kN, 356.8 kN at 14 m/s: slower than V0^2, since above h0 the wind is V0 + '
-            '0.0016 1/s (h - h0), whose second part does not scale with V0), and every periodic case there is over '
-            'the limit. The depower rule raises the ascending elevator by 1.45-1.90 deg (1.3 to 2.75-3.20 deg) and '
-            "the descending one by 0.51-0.73 deg (2.5 to 3.01-3.23 deg), which lowers the ascending wings' trim C_L "
-            'from 1.30 to 0.83 / 0.58 / 0.42 at 10 / 12 / 14 m/s (the closed-form targets 1.30 (8 / V0)^2, checked '
-            "in tests/test_power_curve_mill.py): the rest state's largest tension falls to 124.5 / 114.6 / 109.2 kN, "
+            '|---|---|---|---| | 4 | none | -',
+            'the wings come down at every V_c: ground contact at t = 860.44, 874.64, 493.75, 471.49',
+            '1, 2, 3, 4 m/s) and during the ramp at 449.03 s (5 m/s)',
+            'on the way down the tension reaches 456.0 kN | | 6 | 3 | 105.8 | periodic at 0.5, 1, 2',
+            '59.2, 105.8 kW)', '4 m/s not periodic in 1,500 s (165.5 kW, within the limit)',
+            '| 8 | 5 (grid 0.5-6) | 323.9',
+            'within the limit) | | 10 (depower) | 5 | 375.3 | elevators 2.75 / 3.01 deg; periodic at 2, 3, 5 m/s '
+            '(90.4, 169.0, 375.3 kW), every tension below 153.8 kN (at rest 124.5 kN)',
+            '| 12 (depower) | 6 | 501.3 | elevators 3.08 / 3.16 deg; periodic at 2, 3, 5, 6 m/s (78.5, 156.4, '
+            '372.9, 501.3 kW), tensions below 150.5 kN (at rest 114.6 kN)',
+            '7 m/s not periodic (633.8 kW, within the limit)',
+            '| 14 (depower) | 8 | 763.6 | elevators 3.20 / 3.23 deg; periodic at 2, 3, 5',
+            '6, 7, 8 m/s (66.7, 140.4, 353.2, 483.7, 622.5, 763.6 kW)', 'tensions below 157.3 kN (at rest 109.2 kN)',
+            "- **Power grows with V_c over the whole periodic range** at the paper's wind: 21.6, 45.9, 102.2, "
+            '168.6, 244.0',
+            '323.9 kW at 0.5-5 m/s. The period-mean tension difference grows with it', '45.9',
+            "the largest tension, the first element's, barely moves (151.9",
+            "163.5 kN: the ascending leg's pull at the ground, set by the wind). The 1-5 m/s rows are the "
+            'in-plane table of [mill_fast.md] to the printed digits (same cases, same ramp).',
+            "tensions within the limit); the best V_c at the paper's wind therefore sits at the edge of the "
+            'periodic range, 5 m/s: the curve has no interior optimum below 6 m/s. - **The paper\'s "of the order '
+            'of 200 kW"** (one figure, for "the considered case with a moderate wind"',
+            '5 m/s, "not optimized for a maximal energy yield"). The v2 curve crosses 200 kW between 3 m/s (168.6 '
+            "kW) and 4 m/s (244.0 kW); at the paper's two speeds it gives 45.9 kW (1 m/s, under a quarter of the "
+            "paper's figure)",
+            'and 323.9 kW (5 m/s', '5 m/s)', '22,753 kW at V_c 6 m/s',
+            "and each takes only its share of the wind's momentum. - **Low wind is a physical end**: at V0 = 4 "
+            'm/s the rest state exists (51.8 kN) but the moving mill does not hold itself up at any V_c from 0.5 '
+            'to 5 m/s: wings reach the ground (ground contact, a reported breakdown, not a numerical one)',
+            'after 860 s at 0.5 m/s, during the ramp at 5 m/s. At 6 m/s the mill is periodic up to 3 m/s (105.8 '
+            'kW, the best of that wind), still within the limit but not periodic at 4 m/s, and comes down at 5 '
+            'm/s. The periodic range in V_c widens with the wind: up to 3 m/s at 6 m/s, 5 m/s at 8 m/s, and with '
+            'the depower rule 5, 6 and 8 m/s at 10, 12 and 14 m/s. - **High wind',
             "below the paper's wind's 151.6 kN (the high wings, in a wind that grows less than V0, are depowered "
-            'more than they gain), and every depowered case that stayed up is within the limit (largest search peak '
-            '160.4 kN). The mill is periodic over a wider V_c range the stronger the wind (up to 5, 6, 8 m/s at 10, '
-            '12, 14 m/s), and the best power grows with the wind (375.3, 501.3, 763.6 kW) because the faster cable '
-            'the stronger wind allows more than makes up for the depowered wings: at a given V_c the depowered mill '
-            'gives less than at 8 m/s (V_c 2 m/s: 90.4, 78.5, 66.7 kW against 102.2; 5 m/s: 375.3, 372.9, 353.2 '
-            "against 323.9). The rule keeps the paper's wind's load, not the cable's limit: it leaves 50-60 kN of "
+            'more than they gain)',
+            'and every depowered case that stayed up is within the limit (largest search peak 160.4 kN).',
+            'The mill is periodic over a wider V_c range the stronger the wind (up to 5, 6, 8 m/s at 10, 12, 14 '
+            'm/s), and the best power grows with the wind (375.3, 501.3, 763.6 kW)',
+            '78.5, 66.7 kW', '102.2', '5 m/s: 375.3, 372.9', '353.2',
+            "323.9). The rule keeps the paper's wind's load",
             'the 210 kN unused, so a rule that depowers less (a smaller ascending exponent) would give more power '
-            'within the limit; that is the next step (at 14 m/s the periodic range ends between 8 and 9 m/s, so the '
-            'best V_c found there is not a grid edge).',
+            'within the limit',
+            'that is the next step (at 14 m/s the periodic range ends between 8 and 9 m/s, so the best V_c found '
+            'there is not a grid edge).',
+            'because the faster cable the stronger wind allows more than makes up for the depowered wings: at a '
+            'given V_c the depowered mill gives less than at 8 m/s',
+            '(V_c 2 m/s: 90.4',
         )),
+        Printed('power_curve_runs', (
+            'The elevators it gives (printed per row): 2.75 / 3.01 deg at 10 m/s, 3.08 / 3.16 at 12, 3.20 / 3.23 '
+            'at 14 (ascending / descending).',
+            '448.26 s (V_c 0.5', '3 m/s (11.2, 24.6',
+            "5 m/s ground contact at t = 959.95 s (wing 2), the search's peak tension 438.4 kN on the way",
+            'periodic at 0.5-5 m/s, every tension below 210 kN',
+            '6 m/s not periodic in 1,500 s (491.7 kW, within the limit).',
+            'Scene elevators: periodic but over the limit (217.7, 223.9 kN at 2, 5 m/s; at rest 211.3 kN)',
+            '8 m/s ground contact at t = 1679.72 s (wing 96), peak 445.9 kN on the way.',
+            'Scene elevators: over the limit (285.5, 290.7 kN)',
+            '9 m/s not periodic in 1,500 s (812.3 kW, within the limit), 10 m/s ground contact at t = 1780.88 s '
+            '(wing 94).',
+            'Scene elevators: over the limit (361.2, 365.6 kN)', '56.2',
+            "the first element's period mean rising from 150.7", '161.7 kN', "the last's falling from 107.5",
+            '96.9 kN', '3.3 km high strip',
+            "depowered**: with the scene's elevators the mill at rest already pulls more than 210 kN at the "
+            'ground from V0 = 10 m/s (211.3 kN',
+            '356.8 kN at 14 m/s: slower than V0^2', '2.75-3.20 deg)', '3.01-3.23 deg)',
+            "checked in tests/test_power_curve_mill.py): the rest state's largest tension falls to 124.5 / 114.6 "
+            '/ 109.2 kN',
+        )),
+    ),
+    # worked by hand from the replay's rows: 32 rows printed, 43 - 32 = 11; P / V_c of the 8 m/s rows (21.6 / 0.5,
+    # 102.2 / 2, 244.0 / 4, 323.9 / 5 kN); 323.9 / 200 = 1.6; 406.6 / 22,753 = 1.8 %, 323.9 / 23,247 = 1.4 %; the
+    # elevators' changes 2.75 - 1.3 = 1.45 to 3.20 - 1.3 = 1.90 and 3.01 - 2.5 = 0.51 to 3.23 - 2.5 = 0.73 deg; 210 kN
+    # less the depowered peaks 150.5-160.4 kN = 50-60 kN; 200 kW / 5 m/s = 40 kN
+    derived=(
+        'the walk uses 32', "the 11 it does not need: the six 10-14 m/s rows with the scene's elevators",
+        'P / V_c = 43.2', '51.1', '61.0', '64.8 kN (the paper: the loop widens with V_c)', '1.6 times it).',
+        'the v2 mill pulls 64.8 kN).', "the loop's strip (at most 1.8 %: 406.6", '1.4 % at 5 m/s).',
+        'The depower rule raises the ascending elevator by 1.45-1.90 deg (1.3',
+        'and the descending one by 0.51-0.73 deg (2.5', "not the cable's limit: it leaves 50-60 kN",
+        "The paper's figure fits 5 m/s far better, as the issue's hand estimate said (200 kW needs a tension "
+        'difference of 40 kN at 5 m/s',
+    ),
+    # the trim's C_L against the elevator (1.30 to 0.61 from 1.3 to 4 deg, the attached branch lost above 5-7 deg, a
+    # post-stall trim near 23 deg, C_L 0.7) and the depowered trim C_L 0.83 / 0.58 / 0.42: tail_schedule's trim
+    # solution, asserted in tests/test_power_curve_mill.py, printed by no group; the v1 mill's 82.1 / 152.9 kW and
+    # descending C_L 0.61: wing_data.md's v1 power curve (long group power_curve_v1, hours)
+    not_rerun=(
+        "The v2 wing's trim is steep in the elevator (C_L 1.30", '0.61 from 1.3',
+        '4 deg at 8 m/s), and above 5-7 deg (by the wind)',
+        'the attached-flow trim is lost (a post-stall trim near 23 deg', 'C_L about 0.7)',
+        "which lowers the ascending wings' trim C_L from 1.30",
+        '0.83 / 0.58 / 0.42 at 10 / 12 / 14 m/s (the closed-form targets 1.30 (8 / V0)^2',
+        'which lowers the tension difference at low V_c (the v1 mill gives 82.1', '152.9 kW at 1',
+        '2 m/s with its descending C_L 0.61 but is not periodic above 3 m/s).',
     ),
     history=(
         History('2026-11-29', 'laddermill power-curve cases with the trial tail rules (n = 1, 1.75; the chain layout)',

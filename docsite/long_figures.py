@@ -65,6 +65,8 @@ def _table_of(name: str) -> tuple:
     return (shown,) if name in ("v2", "v2_refine") else ()
 
 
+RUNS = ("v2", "v2_refine", "v2_depower", "v2_depower6", "v2_depower8", "v2_depower10")  # power_curve.md's six runs
+
 #: Every long group: name -> its command.
 LONG = {
     # learned_mill.md: the shipped shared policies beside their LQRs (laddermill evaluate)
@@ -127,6 +129,13 @@ LONG = {
         f"results/power_curve_{n}/power_curve.json" for n in ("v2", "v2_refine", "v2_depower", "v2_depower6",
                                                                "v2_depower8", "v2_depower10"))
         + " --out results/power_curve_replay", "2 s after the six power_curve_v2* groups", "power_curve.md"),
+    # the six runs' rows printed again from their JSONs (2 s each), with their CSVs (the period-mean tensions
+    # t_first_kN / t_last_kN and the strip's heights, which the table does not print): the scene-elevator rows the
+    # replay drops, the refinement's breakdowns
+    "power_curve_runs": Long(" && ".join(
+        f"laddermill power-curve --table results/power_curve_{n}/power_curve.json --out results/power_curve_{n}"
+        for n in RUNS), "15 s after the six power_curve_v2* groups", "power_curve.md",
+        tuple(f"results/power_curve_{n}/power_curve.csv" for n in RUNS)),
     "trim_slope": Long("python -m laddermill_gym.studies.mill.trim_slope", "seconds", "power_curve.md"),
     # wind.md
     "gusts_v2_mill_printed": _bench("gusts-v2", "LadderMill-v0", "open_loop lqr --scenarios EWS_IA NTM_IB "
