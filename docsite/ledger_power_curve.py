@@ -20,10 +20,9 @@ from docsite.ledger_kinds import Covered, History, Printed
 FM = "~{fast_mill_v2[v%d][P]}"  # the 1-5 m/s rows are mill_fast.md's in-plane table (same cases)
 
 # power_curve_replay's pieces no group prints: the search setting (--max-time 1,500 s) and the scene's or the
-# paper's figures (the v2 descending trim C_L 0.91, 101 wings of 20 m span, the wind's shear 0.0016 1/s, Figs. 6-7)
+# paper's figures (101 wings of 20 m span, the wind's shear 0.0016 1/s, Figs. 6-7)
 GIVEN_REPLAY = (
     'Figs. 6-7 at 1', 'The strip is a loose bound for a laddermill: 101 wings',
-    'the v2 descending wings fly at C_L 0.91 (chosen so the descending leg stays taut on the way',
     '20 m span fly in one 20 m wide', 'since above h0 the wind is V0 + 0.0016 1/s (h - h0)',
     '6 m/s not periodic in 1,500 s (406.6 kW',
     'At 6 m/s the search ends unconverged after 1,500 s with a small residual oscillation (406.6 kW',
@@ -111,6 +110,8 @@ POWER_CURVE = Covered(
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         Printed('trim_slope', (
             'prints C_L,trim at 8 m/s: 1.30 ascending, 1.10 descending)',
+            # the v2 descending trim at 10 m/s air speed (V_c 2 m/s in the paper's wind): its table's 6.78/0.91
+            'the v2 descending wings fly at C_L 0.91 (chosen so the descending leg stays taut on the way',
         )),
         # --long power_curve_replay (2026-11-30) named all five snippets it held before (a mapping problem, not a stale
         # figure: its block is as written): they were split at sentences, cells, "; ", ", " and "to / and / against /
@@ -216,8 +217,9 @@ POWER_CURVE = Covered(
     ),
     # the trim's C_L against the elevator (1.30 to 0.61 from 1.3 to 4 deg, the attached branch lost above 5-7 deg, a
     # post-stall trim near 23 deg, C_L 0.7) and the depowered trim C_L 0.83 / 0.58 / 0.42: tail_schedule's trim
-    # solution, asserted in tests/test_power_curve_mill.py, printed by no group; the v1 mill's 82.1 / 152.9 kW and
-    # descending C_L 0.61: wing_data.md's v1 power curve (long group power_curve_v1, hours)
+    # solution, asserted in tests/test_power_curve_mill.py; trim_slope (run 2026-11-30, 1 s) prints the trim per
+    # air speed at the scene's elevators only, so its 0.61 (v1's) or 1.30 matching these would be by chance; the v1
+    # mill's 82.1 / 152.9 kW and descending C_L 0.61: wing_data.md's v1 power curve (long group power_curve_v1, hours)
     not_rerun=(
         "The v2 wing's trim is steep in the elevator (C_L 1.30", '0.61 from 1.3',
         '4 deg at 8 m/s), and above 5-7 deg (by the wind)',
