@@ -106,6 +106,11 @@ POWER_CURVE = Covered(
         'At 12 and 14 m/s the best was again at the upper edge, 6 m/s: V_c 7 and 8 m/s there (4 cases, 6 min 3 s,'
         ' same load):',
         'and at 14 m/s, where 8 m/s was still the best, 9 and 10 m/s (2 cases, 2 min 56 s, same load):',
+        # the re-run of 2026-11-30 (D6), dated on the page
+        '**Re-run on 2026-11-30**: each of the six commands (the long groups of , which compare each block above '
+        'with what its command prints, line for line) printed its block as written, and the replay its own; at '
+        'nice 15 on the shared 2-core machine (load average 1.5-3.5) they took 490, 304, 221, 154, 171 and 181 s '
+        '(v2, the refinement, depower, depower6, depower8, depower10).',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         Printed('trim_slope', (

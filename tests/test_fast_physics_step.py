@@ -70,7 +70,8 @@ def test_the_chain_lqr_sees_the_same_run_with_the_fast_step():
     """What a controller sees: the chain's centralised LQR (configs/agents/lqr_ladder_chain_central.yaml) on the
     registered scenario with :data:`FASTEST` against the registered RK4 (the oracle, an explicit integrator at a
     quarter of the control period): the whole episode, the mean power within 1e-4 (relative) and the largest lateral
-    offset within 1 mm (measured over 20 s: -5.5e-7 and -7e-9 m; over 300 s the same, docs/benchmarks.md)."""
+    offset within 1 mm (measured over these 10 s: -2.36e-7 and -1.04e-6 m; over 300 s -6.69e-9 and -1.49e-8 m,
+    docs/benchmarks.md; the mill's 300 s, -9.09e-4 and -9.16e-6 m, is --long fast_step_closed_loop's)."""
     res = closed_loop(CHAIN, "lqr:configs/agents/lqr_ladder_chain_central.yaml", EPISODE_S, (FASTEST,),
                       echo=lambda *a: None)
     ref, fast = res["registered"], res[FASTEST]
