@@ -134,7 +134,7 @@ LONG = {
     # replay drops, the refinement's breakdowns
     "power_curve_runs": Long(" && ".join(
         f"laddermill power-curve --table results/power_curve_{n}/power_curve.json --out results/power_curve_{n}"
-        for n in RUNS), "15 s after the six power_curve_v2* groups", "power_curve.md",
+        for n in RUNS), "9 s after the six power_curve_v2* groups", "power_curve.md",
         tuple(f"results/power_curve_{n}/power_curve.csv" for n in RUNS)),
     "trim_slope": Long("python -m laddermill_gym.studies.mill.trim_slope", "seconds", "power_curve.md"),
     # wind.md
