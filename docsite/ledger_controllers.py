@@ -395,6 +395,5 @@ CONTROLLERS = Covered(
                  "to 94 after the warm-up with 19 to 57 lost that the LQR holds (paired scores at most 56): it kept "
                  "its start too (gusts-v1 11 / 12, the LQR's excursions). Two of the three after-squash runs found no "
                  "checkpoint that loses fewer than 19 of the LQR's validation survivals; seed 0's lost 11.",)),
-        *RESIDUAL_SAC_NOISE,
-    ),
+        *RESIDUAL_SAC_NOISE),
 )
