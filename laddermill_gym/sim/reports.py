@@ -270,16 +270,14 @@ def step_alpha_rate_cause(sim, h: float) -> str:
     inside the step and its last accepted state shows a wing's alpha-rate pole, the trajectory itself meets the pole
     there, and a fixed step that lands a stage next to it throws the wing to a speed or rate no physics gives. Then
     the pole is named with the time the re-run reached; else '' (the failure stays the step's)."""
-    if _limit_culprits(sim, sim.state):  # a state already past the limits (an injected 1e12): no physics to follow
+    a = sim.assembly
+    n = a.n_wings * a.wing_state_size
+    if not n or _limit_culprits(sim, sim.state):  # no wing, or a state already past the limits (an injected 1e12)
         return ""
     x = sim.state.copy()
     status, _, _, _, t = dp54_advance(sim.t, sim.t + h, x, sim.controls, h / 8.0, POLE_RTOL, POLE_ATOL, sim.model,
                                       sim.work, relaxed_limits(sim.limits), POLE_MAX_STEPS)
     if status in (OK, BUDGET) or not np.all(np.isfinite(x)):
-        return ""
-    a = sim.assembly
-    n = a.n_wings * a.wing_state_size
-    if not n:
         return ""
     dx = np.zeros(sim.n_state)
     if _rhs_kernel(float(t), x, sim.controls, dx, sim.model, sim.work) != 0:

@@ -3,7 +3,7 @@
 
 Outcomes: "ok" (ran to the end); "terminated: ..." for a documented physical termination (a wing or free node at
 the ground with ``ground_contact`` "stop", raised as a SimulationError naming the time, body and height; or a
-wing whose alpha-rate terms make the mass matrix singular at large sideslip, in the last good state or in a stage of
+wing whose alpha-rate terms make the mass matrix singular at large sideslip, in the last good state or met inside
 the failed step, ``sim/reports.alpha_rate_cause`` and ``step_alpha_rate_cause``); "failed:
 ..." for a numerical breakdown (non-finite state, speed or rate limit, singular mass matrix, DP5(4) step
 collapse or budget), which is a failure of the case unless the case provokes it on purpose (injections).
