@@ -6,7 +6,8 @@ rounded to the quoted digits (:func:`rounds_to`; a printed 0.1145 is 0.114 or 0.
 printed 10 is 10, never 11), or, where the page writes a unit with a prefix after it (:data:`PREFIXED`: "10 kW",
 "1.8 MJ", "2.4 mm"), a thousandth, a thousand times or a millionth of one (a page's kW of a printed W, its MW of a
 printed kW, its MJ of a printed J), or, where the page writes a percent sign after it (:data:`PERCENT`: "2.8 %"), a
-hundred times one (a printed fraction 2.8e-02), all within a few lines of output (:func:`missing`). Signs: a
+hundred times a printed fraction (2.8e-02) or a printed percent itself (:func:`percent_marks`: "2.8 %", or a cell of
+a column headed [%]), never the other way round, all within a few lines of output (:func:`missing`). Signs: a
 quoted number the page writes with a sign ("-43.5 kW", "+0.7752") must have that sign printed; one it writes
 without compares magnitudes (the page's "falls by 0.25" of a printed -0.252, "a drop of 46 kW"). This is looser
 than a check (it does not say *which* printed number is meant), so it is used for a command's free-text lines that
@@ -17,7 +18,9 @@ instead (:mod:`docsite.gust_scorecards`).
 Until 2026-11-30 the rule was looser: two numbers agreed when they differed by half a unit of the quoted digits plus
 half a unit of the printed ones, so a printed 10 matched a quoted 11 and a printed 0 (of "LadderMill-v0") any quoted
 number below 0.5; signs were never compared. Until 2026-11-30 (the review's #18) any quoted number could also be a
-thousandth, a thousand times or a millionth of a printed one, so a bare "10" matched a printed 0.0104.
+thousandth, a thousand times or a millionth of a printed one, so a bare "10" matched a printed 0.0104. Until
+2026-11-30 (the review's open item) a quoted percent could be any printed number or a hundred times it, so "2.8 %"
+matched a printed fraction 2.8 (280 %) and a printed 0.028 % (tests/test_printed_rule.py).
 """
 
 from __future__ import annotations
@@ -36,7 +39,7 @@ PREFIXED = re.compile(r" ?[kMGmuµn](?:Wh|W|J|N|Pa|Hz|B|V|A|s|m|g|t)(?![A-Za-z])
 # a percent sign written after a quoted number (or after the range or list it begins): a hundredth of it may be printed
 # (the work-precision tables print relative errors as fractions, "2.8e-02", that the page quotes as "2.8 %")
 PERCENT = re.compile(r" ?%")
-PERCENT_SCALES = (1.0, 100.0)
+PERCENT_SCALES = (1.0, 100.0)  # a printed percent as it is (:func:`percent_marks`), a printed fraction times 100
 SHARED = re.compile(r"(?:-| to | and |, and |, | or | / )[-+]?\d[\d,]*(?:\.\d+)?(?:e[-+]?\d+)?(?![\w.])")
 WINDOW = 60  # printed numbers a snippet's figures may spread over (a table row of a wide study prints ~20)
 
@@ -103,12 +106,15 @@ def missing(snippet: str, output: str) -> list[str]:
     (its "falls by 0.25" of a printed -0.252), within one window of :data:`WINDOW` consecutive printed numbers (a
     sentence's figures come from a few lines of output, in any order); the window that leaves the fewest unmatched
     is taken."""
-    printed = [(value(t), unit(t)) for t in PRINTED.findall(output)]
+    matches = list(PRINTED.finditer(output))
+    printed = [(value(m.group()), unit(m.group())) for m in matches]
+    marks = percent_marks(output, matches)
     flat = prose(snippet)
     spans = [m.span() for m in NUMBER.finditer(flat)]
     quoted = [flat[a:b] for a, b in spans]
     scales = [_scales(flat, _unit_at(flat, b)) for _, b in spans]
-    hits = [[i for i, (p, pu) in enumerate(printed) if _hit(p, pu, text, factors)]
+    hits = [[i for i, (p, pu) in enumerate(printed)
+             if _hit(p, pu, text, _percent(factors, marks[i]))]
             for text, factors in zip(quoted, scales, strict=True)]
     best = list(quoted)
     for start in sorted({i for found in hits for i in found}):  # a best window can start at a matched number
@@ -138,6 +144,40 @@ def _scales(flat: str, at: int) -> tuple[float, ...]:
     if PREFIXED.match(flat, at):
         return SCALES
     return PERCENT_SCALES if PERCENT.match(flat, at) else SCALES[:1]
+
+
+def percent_marks(output: str, found: list[re.Match]) -> list[bool]:
+    """Per printed numeral (``found``: :data:`PRINTED`'s matches in ``output``) whether the output marks it a
+    percent: a percent sign right after it ("-9.6 %", "2.8%"), or a cell of a Markdown table's body ("| 46.7 |")
+    whose header cell in the same column has one ("| capacity factor [%] |"). Any other printed number is read as a
+    fraction by a quoted percent."""
+    header: dict[int, list[str]] = {}  # a table body row's line start -> its table's header cells
+    cells: list[str] = []
+    start = 0
+    for line in output.split("\n"):  # line starts as rfind("\n") finds them below (not splitlines: "\r")
+        row = line.strip()
+        if not row.startswith("|"):
+            cells = []
+        elif not cells:
+            cells = row.split("|")
+        else:
+            header[start] = cells
+        start += len(line) + 1
+    marks = []
+    for m in found:
+        line = output.rfind("\n", 0, m.start()) + 1
+        column = output.count("|", line, m.start())
+        head = header.get(line, [])
+        marks.append(bool(PERCENT.match(output, m.end())) or (column < len(head) and "%" in head[column]))
+    return marks
+
+
+def _percent(factors: tuple[float, ...], marked: bool) -> tuple[float, ...]:
+    """``factors`` for one printed number: after a quoted percent (:data:`PERCENT_SCALES`) 1 for a printed percent
+    (``marked``, :func:`percent_marks`) and 100 for a printed fraction, never both; other factors as they are."""
+    if factors is not PERCENT_SCALES:
+        return factors
+    return PERCENT_SCALES[:1] if marked else PERCENT_SCALES[1:]
 
 
 def _hit(p: float, pu: float, text: str, factors: tuple[float, ...]) -> bool:

@@ -131,3 +131,26 @@ def test_a_percent_is_a_hundred_times_a_printed_fraction():
     assert missing("within 2.7 % in tension and 0.15 % in power", row) == ["2.7", "0.15"]
     assert missing("a share of 0.14 in power", row) == ["0.14"]
     assert missing("10 %", "value 0.104") == [] and missing("10 %", "value 0.0104") == ["10"]
+
+
+CAPACITY = """| machine | rated [MW] | height [m] | mean power [MW] | capacity factor [%] | energy [GWh/yr] |
+|---|---|---|---|---|---|
+| laddermill table2 (f <= 1/2) * | 2.30 | 400 | 1.074 | 46.7 | 9.41 |
+| E-70/2300 (windpowerlib) | 2.30 | 80 | 0.387 | 16.8 | 3.40 |"""
+
+
+def test_a_percent_is_never_a_printed_number_a_hundred_times_off():
+    """The review's open item (2026-11-30): a quoted "2.8 %" may be a printed fraction (2.8e-02) or a printed
+    percent (2.8 %, or 46.7 in a table column headed [%]), never a printed fraction 2.8 (280 %) nor a printed
+    percent 0.028 % (each a hundred times off by hand; the rule before this test accepted both, scaling any printed
+    number by 1 or 100). A bare printed number is a fraction; one with a percent sign after it, or in a column
+    whose header says [%], is a percent."""
+    assert missing("within 2.8 % in tension", "tension 2.8e+00 power 1.4e-03") == ["2.8"]
+    assert missing("0.07 % in power", "power 7.0e-02") == ["0.07"]
+    assert missing("within 2.8 % in tension", "relative -0.028 %") == ["2.8"]
+    assert missing("within 2.8 % in tension", "tension 2.8e-02") == []
+    assert missing("-9.6 % and +4.4 % of the wing's C_L", "ascending -9.6 %, descending 4.4 %") == []
+    assert missing("-9.6 % and +4.4 % of the wing's C_L", "ascending -9.6e-02, descending 4.4e-02") == []
+    assert missing("46.7 % against 16.8 %", CAPACITY) == []
+    assert missing("1.074 % against 0.387 %", CAPACITY) == ["1.074", "0.387"]  # the [MW] column's, not [%]
+    assert missing("a mean of 1.074 MW", CAPACITY) == []  # a number without a percent sign reads any column
