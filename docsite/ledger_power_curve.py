@@ -128,7 +128,6 @@ POWER_CURVE = Covered(
         Printed('power_curve_replay', (
             'which on the rows below try V_c 2, 3, 5, 1, 0.5 at 4 m/s (nothing operates); 2, 3, 5, 4 at 6 m/s',
             '2, 3, 5, 6 at 10 m/s', '2, 3, 5, 6, 7 at 12 m/s', '2, 3, 5, 6, 7', '8, 9 at 14 m/s.',
-            'Of the 43 cases computed',
             'V_c 4 m/s at 4 m/s, 0.5 and 1 m/s at 6 m/s (the best, 3 m/s, is not the lowest tried), 8 m/s at 12 '
             'm/s and 10 m/s at 14 m/s (each climb ends at the first case that does not operate).',
             "**All runs together**: with several JSON files merges their rows (a later run's case replacing an "
@@ -152,7 +151,10 @@ POWER_CURVE = Covered(
             '6, 7, 8 m/s (66.7, 140.4, 353.2, 483.7, 622.5, 763.6 kW)', 'tensions below 157.3 kN (at rest 109.2 kN)',
             "- **Power grows with V_c over the whole periodic range** at the paper's wind: 21.6, 45.9, 102.2, "
             '168.6, 244.0',
-            '323.9 kW at 0.5-5 m/s. The period-mean tension difference grows with it', '45.9',
+            '323.9 kW at 0.5-5 m/s. The period-mean tension difference grows with it',
+            # P / V_c at V_c 1 m/s: the V0 8, V_c 1 row's P [kW] (and (T1-Tn)V_c), 45.9 kW / 1 m/s = 45.9 kN (audit
+            # 2026-11-30: the right row; the same number only because V_c is 1 m/s)
+            '45.9',
             "the largest tension, the first element's, barely moves (151.9",
             "163.5 kN: the ascending leg's pull at the ground, set by the wind). The 1-5 m/s rows are the "
             'in-plane table of [mill_fast.md] to the printed digits (same cases, same ramp).',
@@ -197,9 +199,11 @@ POWER_CURVE = Covered(
             'Scene elevators: over the limit (285.5, 290.7 kN)',
             '9 m/s not periodic in 1,500 s (812.3 kW, within the limit), 10 m/s ground contact at t = 1780.88 s '
             '(wing 94).',
-            'Scene elevators: over the limit (361.2, 365.6 kN)', '56.2',
+            'Scene elevators: over the limit (361.2, 365.6 kN)',
+            # the CSVs' t_first_kN / t_last_kN of the V0 8 m/s rows at V_c 0.5 and 5 m/s (audit 2026-11-30: right
+            # rows and columns)
             "the first element's period mean rising from 150.7", '161.7 kN', "the last's falling from 107.5",
-            '96.9 kN', '3.3 km high strip',
+            '96.9 kN',
             "depowered**: with the scene's elevators the mill at rest already pulls more than 210 kN at the "
             'ground from V0 = 10 m/s (211.3 kN',
             '356.8 kN at 14 m/s: slower than V0^2', '2.75-3.20 deg)', '3.01-3.23 deg)',
@@ -210,10 +214,16 @@ POWER_CURVE = Covered(
     # worked by hand from the replay's rows: 32 rows printed, 43 - 32 = 11; P / V_c of the 8 m/s rows (21.6 / 0.5,
     # 102.2 / 2, 244.0 / 4, 323.9 / 5 kN); 323.9 / 200 = 1.6; 406.6 / 22,753 = 1.8 %, 323.9 / 23,247 = 1.4 %; the
     # elevators' changes 2.75 - 1.3 = 1.45 to 3.20 - 1.3 = 1.90 and 3.01 - 2.5 = 0.51 to 3.23 - 2.5 = 0.73 deg; 210 kN
-    # less the depowered peaks 150.5-160.4 kN = 50-60 kN; 200 kW / 5 m/s = 40 kN
+    # less the depowered peaks 150.5-160.4 kN = 50-60 kN; 200 kW / 5 m/s = 40 kN. Audit of the short pieces
+    # (2026-11-30), each Printed until then and matched by chance: 43 = 17 + 8 + 9 + 3 + 4 + 2, the rows of
+    # power_curve_runs's six tables (the replay's -42.5 kW read as 43); 56.2 = 168.6 / 3 kN, P / V_c at V_c 3 m/s (the
+    # CSV's t_first_kN - t_last_kN there, 155.50 - 99.29 = 56.21; a CSV h_low_m of 56.207 m at V0 14 m/s had matched);
+    # the strip's height, h_high_m - h_low_m of the 8 m/s CSV rows, 3.47 km at V_c 0.5 m/s to 3.18 km at 6 m/s, 3.33
+    # and 3.28 km at 3 and 4 m/s: about 3.3 km (a CSV h_high_m of 3,332 m had matched)
     derived=(
         'the walk uses 32', "the 11 it does not need: the six 10-14 m/s rows with the scene's elevators",
-        'P / V_c = 43.2', '51.1', '61.0', '64.8 kN (the paper: the loop widens with V_c)', '1.6 times it).',
+        'P / V_c = 43.2', '51.1', '56.2', '61.0', '64.8 kN (the paper: the loop widens with V_c)', '1.6 times it).',
+        'Of the 43 cases computed', '3.3 km high strip',
         'the v2 mill pulls 64.8 kN).', "the loop's strip (at most 1.8 %: 406.6", '1.4 % at 5 m/s).',
         'The depower rule raises the ascending elevator by 1.45-1.90 deg (1.3',
         'and the descending one by 0.51-0.73 deg (2.5', "not the cable's limit: it leaves 50-60 kN",
