@@ -15,6 +15,7 @@ figure across that step fails the check, though the page's bound may still hold.
 
 from __future__ import annotations
 
+import csv
 import math
 import re
 from pathlib import Path
@@ -169,11 +170,25 @@ def evaluate_rows(printed: str, episodes: int, reference: str) -> dict:
             for name, (watts, failures) in rows.items()}
 
 
+def bench_energy(printed: str) -> dict:
+    """``laddermill gust-bench``'s CSV as printed (its header ``env,controller,scenario,seed,...,energy_J,...``): per
+    controller and "scenario/seed" ("direction_step/0") the episode's energy [MJ] (``energy_MJ``)."""
+    lines = printed.splitlines()
+    head = next((line.split(",") for line in lines if line.startswith("env,controller,scenario,seed,")), None)
+    if head is None or "energy_J" not in head:
+        return {}
+    k, found = head.index("energy_J"), {}
+    for cells in csv.reader(line for line in lines if line.startswith("laddermill_gym/")):
+        if len(cells) == len(head):
+            found.setdefault(cells[1], {})[f"{cells[2]}/{cells[3]}"] = float(cells[k]) / 1e6
+    return {"energy_MJ": found} if found else {}
+
+
 #: long group -> the function of its printed output whose figures its pages' checks name.
 RATIOS = {"reeling_power_curve_printed": power_curve_ratios, "pumping_power_curve_printed": power_curve_ratios,
           "reeling_cycle_40": cycle_ratio, "step_accuracy_10": step_accuracy, "step_accuracy_40": step_accuracy,
           "fast_mill_v2_step": mill_step_peak, "pointmass_fidelity": fidelity_ratios,
-          "pointmass_accuracy": kite_travel,
+          "pointmass_accuracy": kite_travel, "gusts_v3_pumping_v1": bench_energy,
           "stress_all": stress_counts, "mill_claim": lambda out: evaluate_rows(out, 5, "lqr"),  # --episodes 5
           "chain_claim": lambda out: evaluate_rows(out, 5, "lqr:lqr_ladder_chain_central")}
 
