@@ -1,7 +1,8 @@
 """The ledger entry (:mod:`docsite.page_ledger`) of docs/mill_fast.md: the in-plane v2 table at 1-5 m/s checked
 against ``fast_mill case`` (one run per speed); the wings' and rules' settings given; closed forms and repeated
-checked figures derived; the v1 drift and elevator trials, the 3D rows, the steps and the v2 LQR check not
-re-run (their commands named)."""
+checked figures derived; the v1 drift, the near-top rules, the trims, the start trials, the steps, the 3D rows and
+the v2 LQR check Printed entries of their long groups (--long mill_v2_lqr first run 2026-11-30: 330 s at nice 15,
+load 0.4-3.3, every figure as written); the trial runs of 2026-11-29 dated records."""
 
 from __future__ import annotations
 
@@ -67,8 +68,18 @@ MILL_FAST = Covered(
         "The v2 mill's power curve (0.5-6 m/s, and the best V_c per wind): , [Power curve].",
         "The rows of the start table above are (at 3.35 deg the rest layout's shooting stalls from v1's first "
         'guess, 60 deg).',
+        # LadderMill-v2's registration (envs/laddermill/env_v2.py), its scene's ramp (configs/scenes/laddermill_v2.yaml
+        # speed_times_s [0, 200] s), the paper's step and the ramp tests/test_laddermill_v2.py sets at 1 and 5 m/s
+        ".** The 2 m/s mill is registered as LadderMill-v2 (envs/laddermill/env_v2.py: scene , v1's ;",
+        "its operating point is found from rest through the scene's own 200 s ramp with the default settle,",
+        "After the paper's 0.01 rad direction step at t = 1 s the open-loop mill leaves the aerodynamic data as "
+        "v1's does, but later:",
+        "the scene's ramp set to 100 V_c s at 1 and 5 m/s):",
     ),
     not_rerun=(
+        # v1's open-loop end after the paper's step and random-actions median: printed by python -m pytest -m slow -s
+        # tests/test_laddermill_v1.py (its LQR and random-action tests; no long group runs it)
+        'v1: about 7 s).', '(v1: 6.75 s).',
         # the trims at -4 and -0.5 deg: sim.statics.pitch_trim_alpha in a Python session (the page gives the call);
         # fast_mill prints neither
         'With 7 slots at -4 deg (trim alpha 9.65 deg, against 4.76 deg at -0.5 deg: , the wing at rest in 10 m/s)',
@@ -172,17 +183,14 @@ MILL_FAST = Covered(
             'the 3D mill is periodic at t = 960.0 s with 45.9 kW and tensions of 3.9-153.0 kN (in plane periodic at '
             '680.0 s), and at t = 1,080.0 s with 102.2 kW and 8.1-157.1 kN (in plane at 940.0 s):',
         )),
+        # --long mill_v2_lqr (2026-11-30, 330 s) named three pieces it does not print: the settings (the scene's 200 s
+        # ramp, the test's 100 V_c s ramp, with the paper's 0.01 rad step, which had matched a pytest duration's
+        # 0.005 by chance) are given, v1's figures not_rerun
         Printed('mill_v2_lqr', (
-            ".** The 2 m/s mill is registered as LadderMill-v2 (envs/laddermill/env_v2.py: scene , v1's ;",
-            "its operating point is found from rest through the scene's own 200 s ramp with the default settle, "
             'periodic at t = 975 s, 102.2 kW).',
-            "After the paper's 0.01 rad direction step at t = 1 s the open-loop mill leaves the aerodynamic data as "
-            "v1's does, but later:",
-            "at 16.85, 16.20 and 15.65 s at 1, 2 and 5 m/s (a wing near the loop's top at beta above 60 deg; v1: "
-            'about 7 s).',
+            "at 16.85, 16.20 and 15.65 s at 1, 2 and 5 m/s (a wing near the loop's top at beta above 60 deg;",
             "The centralised lateral LQR with v1's weights and period-mean design "
-            "(configs/agents/lqr_laddermill_v2.yaml), designed on each mill's own orbit, holds all three for 300 s ( "
-            ", the scene's ramp set to 100 V_c s at 1 and 5 m/s):",
+            "(configs/agents/lqr_laddermill_v2.yaml), designed on each mill's own orbit, holds all three for 300 s (",
             "V_c [m/s] | open-loop growth [1/s] | frozen closed loop max abs(z), 8 phases | period's transition "
             'matrix radius | open loop ends [s] | LQR: 300 s, largest abs(dy)',
             '|---|---|---|---|---|---|---| | 1 | 0.411 | 0.9872 | 0.0000 | 16.85 (slot 58)',
@@ -191,7 +199,7 @@ MILL_FAST = Covered(
             '0.089 | 102.80 (102.2)',
             '| 5 | 0.453 | 0.9928 | 0.1068 | 15.65 (slot 69)',
             '0.086 | 324.39 (323.9)',
-            'Random actions at after the step last a median 17.58 s over 10 seeds at 2 m/s (v1: 6.75 s).',
+            'Random actions at after the step last a median 17.58 s over 10 seeds at 2 m/s',
         )),
     ),
     history=(

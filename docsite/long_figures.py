@@ -230,7 +230,7 @@ LONG = {
     "fast_mill_v2_3d": Long(" && ".join(
         f"python -m laddermill_gym.studies.mill.fast_mill case --scene laddermill_v2 --dimension 3 --speed {v} "
         f"--start-ramp {100 * v} --max-time 3000" for v in (5, 1, 2)), "minutes each", "mill_fast.md"),
-    "mill_v2_lqr": Long("python -m pytest -m slow -s tests/test_laddermill_v2.py", "about an hour", "mill_fast.md"),
+    "mill_v2_lqr": Long("python -m pytest -m slow -s tests/test_laddermill_v2.py", "5.5 min", "mill_fast.md"),
     # the mill pages
     "meijaard_v0": Long("python -m laddermill_gym.studies.mill.meijaard --scene laddermill --out results/meijaard_v0",
                         "11 min", "paper_meijaard1999.md"),
