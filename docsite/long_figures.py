@@ -202,7 +202,7 @@ LONG = {
             ("LadderChain-v0", "lqr:configs/agents/lqr_ladder_chain_central.yaml"), ("LadderMill-v2", "lqr"))),
         "about 3 min (2026-11-30)", "benchmarks.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
-    "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "over an hour",
+    "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),
     "power_curve_v1": Long("laddermill power-curve --scene laddermill_v1 --ramp scene --speeds 0.5 1 2 3 4 5 6 "
                            "--winds 6 10 --wind-speeds 2 3 --max-time 1400 --workers 2", "hours", "wing_data.md"),
