@@ -204,8 +204,11 @@ LONG = {
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),
-    "power_curve_v1": Long("laddermill power-curve --scene laddermill_v1 --ramp scene --speeds 0.5 1 2 3 4 5 6 "
-                           "--winds 6 10 --wind-speeds 2 3 --max-time 1400 --workers 2", "hours", "wing_data.md"),
+    # --tail-rule scene: the page's run (2026-11-29) flew the scene's elevators at every wind, the then default; today's
+    # default (depower) changes the 10 m/s rows' elevators (first run 2026-11-30 without it: 130.9 / 194.0 kW there)
+    "power_curve_v1": Long("laddermill power-curve --scene laddermill_v1 --ramp scene --tail-rule scene --speeds 0.5 1 "
+                           "2 3 4 5 6 --winds 6 10 --wind-speeds 2 3 --max-time 1400 --workers 2", "7 min",
+                           "wing_data.md"),
     # mill_fast.md: fast_mill's drift, the near-top rule (1,500 s from rest each), trim_slope, the v2 mill's runs
     "fast_mill_drift": Long("python -m laddermill_gym.studies.mill.fast_mill drift --speed 4 --time 400", "minutes",
                             "mill_fast.md"),
