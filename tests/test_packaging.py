@@ -75,7 +75,7 @@ _WHEEL_SCRIPT = textwrap.dedent("""
     out["envs"] = {}
     # the laddermill's default start costs ~20 s (its periodic motion); an 11-wing mill settled for 50 s will do here
     small = {f"laddermill_gym/LadderMill-v{v}": {"scene_options": {"n_wings": 11}, "settle": {"max_time": 50.0}}
-             for v in (0, 1, 2)}
+             for v in (0, 1, 2, 3)}
     for env_id in ENV_IDS:
         env = gym.make(env_id, **small.get(env_id, {}))
         obs, _ = env.reset(seed=0)

@@ -256,10 +256,13 @@ class TaskCore:
 
     def snapshot(self) -> dict:
         """Copies of everything an episode in progress depends on: the batch's states, controls, times and air,
-        the step counters and last actions (the pickled env's state)."""
+        the step counters and last actions (the pickled env's state), and the kernels' workspace where a W-method
+        keeps its iteration matrix over steps (``jacobian_every`` > 1: the next steps solve with the held one)."""
         b = self.batch
+        held = getattr(b.settings, "jacobian_every", 1) > 1
         return {"arrays": (b.states.copy(), b.controls.copy(), b.t.copy(), self.steps.copy(), self.last_action.copy()),
-                "air": tuple(None if a is None else a.copy() for a in b.air)}
+                "air": tuple(None if a is None else a.copy() for a in b.air),
+                "work": tuple(a.copy() for a in b.work) if held else None}
 
     def restore(self, snap: dict) -> None:
         """Put a :meth:`snapshot` back (the caller observes afterwards)."""
@@ -268,6 +271,8 @@ class TaskCore:
         for mine, saved in zip(b.air, snap["air"], strict=True):
             if mine is not None:
                 mine[:] = saved
+        for mine, saved in zip(b.work, snap.get("work") or (), strict=False):
+            mine[:] = saved
 
     def _snapshot_simulator(self, make, b: int, **reset_kwargs):
         """``make(assembly, state, settings, controls)`` at copy ``b``'s state, time [s], controls and air: a

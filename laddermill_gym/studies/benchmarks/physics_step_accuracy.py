@@ -33,10 +33,12 @@ from laddermill_gym.sim.simulator import IntegratorSettings
 #: amplitude [-] of the uniform noise added to the open-loop action every control period (seeded; the mill's
 #: random actions at full amplitude end a median episode at 17.6 s, docs of LadderMill-v2)
 ACTION_NOISE = 0.3
-#: the registered physics steps [s] of the 101-wing envs' scenes (configs/scenes/ladder_chain.yaml: RK4 12.5 ms,
-#: laddermill*.yaml: RK4 10 ms)
+#: the RK4 steps [s] of the 101-wing envs' scenes (configs/scenes/ladder_chain.yaml: RK4 12.5 ms, laddermill*.yaml:
+#: RK4 10 ms): the registered physics step of every id but LadderChain-v1 and LadderMill-v3, which register ROS2
+#: (``ros2:4``) on the same scenes; the reference is RK4 at a quarter of it
 REGISTERED_DT = {"laddermill_gym/LadderChain-v0": 0.0125, "laddermill_gym/LadderMill-v0": 0.01,
-                 "laddermill_gym/LadderMill-v1": 0.01, "laddermill_gym/LadderMill-v2": 0.01}
+                 "laddermill_gym/LadderMill-v1": 0.01, "laddermill_gym/LadderMill-v2": 0.01,
+                 "laddermill_gym/LadderChain-v1": 0.0125, "laddermill_gym/LadderMill-v3": 0.01}
 
 
 def positions(task) -> np.ndarray:
@@ -71,14 +73,14 @@ def episode(env_id: str, n_periods: int, **kwargs) -> tuple[np.ndarray, float]:
 
 
 def step_arguments(label: str) -> dict:
-    """The env arguments of a physics-step label: "registered" (none), a ``physics_step`` value ("ros2t"), or one
-    with the W-method's iteration matrix kept for k steps ("ros2t:8": ``jacobian_every`` = 8). ValueError naming
-    the label otherwise."""
+    """The env arguments of a physics-step label: "registered" (none), a ``physics_step`` value ("ros2t", its
+    matrix formed every step: ``jacobian_every`` = 1, whatever the id registers), or one with the W-method's
+    iteration matrix kept for k steps ("ros2t:8": ``jacobian_every`` = 8). ValueError naming the label otherwise."""
     if label == "registered":
         return {}
     method, sep, every = label.partition(":")
     if not sep:
-        return {"physics_step": method}
+        return {"physics_step": method, "jacobian_every": 1}
     if not every.isdigit() or int(every) < 1:
         raise ValueError(f"physics step {label!r}: write METHOD or METHOD:K with K >= 1 steps per Jacobian")
     return {"physics_step": method, "jacobian_every": int(every)}
@@ -103,7 +105,7 @@ def compare(env_id: str, episode_time: float, steps=("ros34pw2",), echo=print, *
     point)."""
     check_labels(steps)
     n = int(round(episode_time / 0.05))
-    ref, _ = episode(env_id, n, physics_step="rk4", physics_dt=REGISTERED_DT[env_id] / 4, **kwargs)
+    ref, _ = episode(env_id, n, physics_step="rk4", jacobian_every=1, physics_dt=REGISTERED_DT[env_id] / 4, **kwargs)
     extent = float(np.max(np.linalg.norm(ref, axis=2)))
     echo(f"{env_id}: {episode_time:g} s, extent {extent:.1f} m; reference RK4 at {REGISTERED_DT[env_id] / 4:g} s "
          f"ran {len(ref) - 1} periods")
