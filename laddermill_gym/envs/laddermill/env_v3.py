@@ -33,8 +33,13 @@ class LadderMillV3Env(LadderMillV2Env):
     with 11 wings (from their fallback start) the largest tension grows to 3.7 MN within 0.4 s even under zero
     actions, with 21 wings under random actions of half amplitude two of four seeds end on the breaking load within
     a second, where ``jacobian_every=1`` (or 2) and RK4 run the 5 s through; 41 wings run (checked 2026-11-30 with
-    the small cases of tests/env_cases.py). Give a smaller mill ``jacobian_every=1``. LadderChain-v1's held matrix
-    ran 2, 5, 11 and 101 wings under random actions of full amplitude for 10 s.
+    the small cases of tests/env_cases.py). Give a smaller mill ``jacobian_every=1``. What goes wrong is the
+    station's first element, whose rest length moves with the cable (``kernels/rigid/cable_jacobian.py``): on the
+    11-wing mill under zero actions its tension reads 17.4, 13.8, 7.4 kN over the steps that reuse the matrix where
+    the matrix formed every step gives 21.4, 22.0, 21.7 kN, and the swing grows after each rebuild (0.5 kN at 0.3 s,
+    then the breaking load); on 41 wings, with three to four times the tension, the same drift stays a few kN.
+    LadderChain-v1's held matrix (no moving ends) ran 2, 5, 11 and 101 wings under random actions of full amplitude
+    for 10 s.
     Many copies: ``gymnasium.make_vec(id, n, vectorization_mode="vector_entry_point")``.
 
     ## Action Space
