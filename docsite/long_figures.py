@@ -201,6 +201,13 @@ LONG = {
         "--time 300 --steps ros2:4" for env, spec in (
             ("LadderChain-v0", "lqr:configs/agents/lqr_ladder_chain_central.yaml"), ("LadderMill-v2", "lqr"))),
         "about 3 min (2026-11-30)", "benchmarks.md"),
+    # numerics.md: tests whose measured values are printed beside their assertions (pytest -s; 2026-11-30, nice 15)
+    "initial_elements_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_initial_elements.py -k '
+                                   '"catenary or converges"', "5-14 s", "numerics.md"),
+    "moving_end_jacobian_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_moving_end_jacobian.py '
+                                      '-k finite_differences', "17 s", "numerics.md"),
+    "alpha_rate_pole_test": Long('python -m pytest -m "slow or not slow" -s tests/test_alpha_rate_limit.py -k '
+                                 'names_the_alpha', "26 s", "numerics.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),

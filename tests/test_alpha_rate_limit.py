@@ -69,6 +69,7 @@ def test_the_report_names_the_alpha_rate_terms(failed):
     assert "step size collapsed" in msg and "alpha-rate terms make the mass matrix nearly singular" in msg, msg
     k = int(msg.split("; wing ")[-1].split(" ")[0])
     al, be = np.degrees(sim.wing_alpha_beta()[k])
+    print(f"stopped at t = {sim.t:.4f} s: wing {k} at alpha {al:.3f} deg, sideslip {be:.3f} deg")
     assert abs(be) > 60.0, (k, al, be)  # flow along the span: outside the model's small-sideslip range
     x, t = sim.state.copy(), sim.t
     dx = sim.rhs(t, x)
@@ -80,9 +81,11 @@ def test_the_report_names_the_alpha_rate_terms(failed):
         dx0 = sim.rhs(t, x)
     finally:
         ac[:] = keep
+    print(f"pitch acceleration {dx[q]:.3g} rad/s^2, without the alpha-rate columns {dx0[q]:.3g} rad/s^2")
     assert abs(dx[q]) > 1e4 * abs(dx0[q]), (dx[q], dx0[q])
     # across the pole: a few microseconds further along the trajectory the acceleration has the other sign
     later = sim.rhs(t + 1e-4, x + 1e-4 * dx)
+    print(f"1e-4 s later: {later[q]:.3g} rad/s^2")
     assert np.sign(later[q]) != np.sign(dx[q]) or abs(later[q]) > 10 * abs(dx[q]), (dx[q], later[q])
 
 

@@ -132,9 +132,11 @@ def test_equals_16b454f(name):
     ref = GOLDEN[name]
     xs = _trajectory(name)
     assert xs.shape == ref.shape
+    print(f"{name}: normwise relative difference {normwise(xs, ref):.3g}")
     assert normwise(xs, ref) <= NORMWISE_RTOL, f"{name}: normwise relative difference {normwise(xs, ref):.3g}"
     floor = max(componentwise(_trajectory(name, seed), xs) for seed in _FLOOR_SEEDS)
     assert floor > 0.0  # the start moves by one ulp and the run follows it
     err = componentwise(xs, ref)
+    print(f"{name}: componentwise difference {err:.3g}, one-ulp floor {floor:.3g}")
     assert err <= FLOOR_FACTOR * max(floor, NORMWISE_RTOL), (
         f"{name}: componentwise difference {err:.3g}, {err / floor:.2f} times the one-ulp floor {floor:.3g}")

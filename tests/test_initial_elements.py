@@ -37,6 +37,8 @@ def _check_at_rest(sim):
     """Every body's acceleration below 1e-4 m/s^2 (rad/s^2), the mass-weighted RMS below 1e-6 m/s^2 (the
     solver's acceptance, sim/statics.py), and every body's unbalanced force below 1e-8 of the largest tension."""
     acc = accelerations(sim, sim.rhs(0.0, sim.state, sim.controls))
+    print(f"{sim.assembly.n_wings} wings, {sim.assembly.n_nodes} nodes: largest acceleration "
+          f"{np.max(np.abs(acc)):.2g}, mass-weighted RMS {rest_acceleration(sim, acc):.2g} m/s^2")
     assert np.max(np.abs(acc)) < 1e-4, np.max(np.abs(acc))
     assert rest_acceleration(sim, acc) < 1e-6
     force = mass_scales(sim) * acc
@@ -94,9 +96,12 @@ def test_nodes_on_the_elastic_catenary():
     V within 5e-3 / n^2 relative (measured C = 1.0e-3 for H, 3.4e-3 to 3.8e-3 for V at n = 2 to 16)."""
     errs = {n: _piece_against_catenary(n) for n in (2, 4, 8)}
     for n, (dev, eh, ev) in errs.items():
+        print(f"n = {n}: nodes within {dev:.3g} m of the catenary; H, V errors {eh:.3g}, {ev:.3g} (times n^2: "
+              f"{eh * n**2:.3g}, {ev * n**2:.3g})")
         assert dev < 2e-3 / n**2, (n, dev)
         assert abs(eh) < 5e-3 / n**2 and abs(ev) < 5e-3 / n**2, (n, eh, ev)
     slope = np.polyfit(np.log([2, 4, 8]), np.log([errs[n][0] for n in (2, 4, 8)]), 1)[0]
+    print(f"slope {slope:.3f}")
     assert -2.2 < slope < -1.8, slope
 
 
@@ -136,9 +141,12 @@ def test_wing_converges_to_the_one_element_state_within_its_discretisation_error
         reaction[n] = _station_reaction(a, sim.tensions()[0], far)
     for q, order, tol in ((pos, 2.0, 2.0), (reaction, 1.4, 50.0)):  # [m], [N]
         ratio = np.linalg.norm(q[2] - q[4]) / np.linalg.norm(q[4] - q[8])
+        print(f"moves by {np.linalg.norm(q[2] - q[1]):.3g}, {np.linalg.norm(q[4] - q[2]):.3g}, "
+              f"{np.linalg.norm(q[8] - q[4]):.3g} from n = 1 to 8, ratio {ratio:.3g}")
         assert abs(np.log2(ratio) - order) < 0.15, ratio
         limit = q[8] + (q[8] - q[4]) / (2.0**order - 1.0)  # Richardson
         C = np.linalg.norm(q[1] - limit)
+        print(f"the one-element state {C:.3g} from the limit")
         assert C < tol
         for n in (2, 4, 8):
             assert np.linalg.norm(q[n] - q[1]) <= C
