@@ -208,6 +208,10 @@ LONG = {
                                       '-k finite_differences', "17 s", "numerics.md"),
     "alpha_rate_pole_test": Long('python -m pytest -m "slow or not slow" -s tests/test_alpha_rate_limit.py -k '
                                  'names_the_alpha', "26 s", "numerics.md"),
+    # pointmass.md: the chunked solver's agreements and the catenary oracle (tests printing what they assert)
+    "pointmass_solver_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_pointmass_threads.py '
+                                   'tests/test_pointmass_oracles.py -k "backward or chunks_match or second_order"',
+                                   "4-16 s", "pointmass.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),

@@ -102,6 +102,7 @@ def test_partitioned_solve_matches_banded_solver(n, end_fixed, segment):
     for P in PARTS:
         got = _solve_parts(s, pos, tension, 0.1, rhs, P, segment)
         err = np.abs(got - ref).max() / np.abs(ref).max()
+        print(f"n = {n}, P = {P}: {err:.2g} of the largest component")
         assert err < 1e-13, (P, err)
 
 
@@ -121,10 +122,14 @@ def test_stiff_string_backward_error():
     rhs = rng.standard_normal(3 * s.n_nodes)
     ab = _banded(s, pos, tension, 0.01)
     ref = solve_banded((5, 5), ab, rhs)
+    print(f"solve_banded's backward error {_backward_error(ab, ref, rhs):.2g}")
     assert _backward_error(ab, ref, rhs) < 1e-15
     one = _solve_parts(s, pos, tension, 0.01, rhs, 1, 128)
     for P in PARTS:
         got = _solve_parts(s, pos, tension, 0.01, rhs, P, 128)
+        print(f"P = {P}: backward error {_backward_error(ab, got, rhs):.3g}, against P = 1 "
+              f"{np.abs(got - one).max() / np.abs(one).max():.2g}, against solve_banded "
+              f"{np.abs(got - ref).max() / np.abs(ref).max():.2g}")
         assert _backward_error(ab, got, rhs) < 1e-10, P
         assert np.abs(got - one).max() / np.abs(one).max() < 1e-6
         assert np.abs(got - ref).max() / np.abs(ref).max() < 1e-6
@@ -175,6 +180,7 @@ def test_implicit_steps_on_chunks_match_one_chunk():
         got = _run_parts(sc, x0, u, P, 50).reshape(-1, N3_SIZE)
         dp = np.abs(got[:, :3] - one[:, :3]).max() / np.abs(one[:, :3]).max()
         dv = np.abs(got[:, 3:] - one[:, 3:]).max() / np.abs(one[:, 3:]).max()
+        print(f"P = {P}: positions {dp:.2g} of the largest, velocities {dv:.2g} of the largest")
         assert dp < 1e-12 and dv < 1e-10, (P, dp, dv)
     # a workspace for more chunks than used changes nothing
     assert np.array_equal(_run_parts(sc, x0, u, 4, 5), _run_parts(sc, x0, u, 4, 5, capacity=16))
