@@ -230,6 +230,7 @@ FEATURES = Covered(  # a summary of the other pages: their groups check what it 
         ' 600 s);',
     ),
     printed=(  # long groups (docsite/long_figures.py)
+        Printed("breakpoint_tests", ('error 3.5e-8 against 1.0e-5 without).',)),  # the batch copy's (test prints)
         Printed("mill_v0_paper_step", ('the loop diverges laterally and the episode ends at 8.7 s',
                                        'holds it for 300 s through every disturbance of the harness '
                                        '([controllers.md]).')),
@@ -254,8 +255,6 @@ FEATURES = Covered(  # a summary of the other pages: their groups check what it 
     not_rerun=(
         # the mill's sideslip at the open-loop end: laddermill evaluate prints the time and cause, not the angle
         '(beta 61 deg near the top)',
-        # tests/test_breakpoints.py (its assertion, not a printed figure)
-        'error 3.5e-8 against 1.0e-5 without).',
         # no command prints these: the in-plane periodic run's smallest tension (mill_periodic_2d prints the power and
         # time only) and the point-mass chain's settled base tension (envs/__init__.py's comment)
         'the smallest tension (10.5 kN)', '(base tension 178.7 kN)',

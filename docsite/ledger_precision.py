@@ -78,6 +78,9 @@ WORK_PRECISION = Covered(
         'written into wing and node states mid-run, with RK4 and DP5(4); 10,000 reset-and-run episodes with '
         "random actions of TetheredWing-v0 and Rotorcraft-v0 (an end by the env's integration or rotor-inflow "
         'failure code fails the case).',
+        # tests/test_breakpoints.py's setting (its printed errors: breakpoint_tests below)
+        "RK4's error across the CLI's 1 ms direction ramp ( , tethered wing, 0.05 rad, DOP853 reference run piece by "
+        'piece):',
     ),
     derived=(
         *controller_measure.DERIVED,  # the controller-measure section (docsite/ledger_controller_measure.py)
@@ -213,6 +216,11 @@ WORK_PRECISION = Covered(
             '| 1.3e-6 m, 6.9e-8, 9.9e-7 |', 'laddermill, 7.6 s (92, 6.405 1/s) | 0.031 m, 6.2e-5, 0.041',
             '| 0.0115 m, 0, 0.038 |', '| 4.7e-4 m, 9.8e-9, 4.6e-4', "(the mill's 6.4 1/s mode",
         )),
+        Printed('breakpoint_tests', (  # tests/test_breakpoints.py, test_batch_breakpoints.py print what they assert
+            '3.5e-8 from DOP853 against 1.0e-5 unsplit, and fourth order on a gust on the step grid with ).',
+            '3.5e-8 at dt 5 ms with against 1.0e-5 with ,',
+            'against none. On a gust sampled on the step grid, gives the ratio 16.3 per halving and 5.4.',
+        )),
     ),
     not_rerun=(
         # the scenes' extents: the work-precision studies do not print them (physics_step_accuracy prints the chain's
@@ -288,11 +296,9 @@ WORK_PRECISION = Covered(
         '(chain) relative).',
         'The fixed-step methods split their steps in one compiled stepper ( , ) that the single simulator, the and '
         "the envs' step-and-observe kernels all run, each copy on its own wind's kinks, so an env whose is not a "
-        'multiple of its physics step is split like a single run (bit for bit: ; a batch copy across the 1 ms ramp: '
-        '3.5e-8 from DOP853 against 1.0e-5 unsplit, and fourth order on a gust on the step grid with ).',
-        "RK4's error across the CLI's 1 ms direction ramp ( , tethered wing, 0.05 rad, DOP853 reference run piece by "
-        'piece): 3.5e-8 at dt 5 ms with against 1.0e-5 with , and fourth order (ratios 20.7, 22.3 per halving) '
-        'against none. On a gust sampled on the step grid, gives the ratio 16.3 per halving and 5.4.',
+        'multiple of its physics step is split like a single run (bit for bit: ; a batch copy across the 1 ms ramp:',
+        # breakpoint_tests prints the ratios 20.8, 23.7 today: not the page's
+        'and fourth order (ratios 20.7, 22.3 per halving)',
         'at dt = 0.025 s gives "dt = 0.025 s is above the estimated stability limit of RK4 at this state, 0.02445 s '
         '(eigenvalue -5.092+118.6j 1/s)',
         'Fixed on the way: a non-finite state entry is now named as such (time, body, quantity: "t = 0.05 s: node 0 '

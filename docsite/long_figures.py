@@ -212,6 +212,11 @@ LONG = {
     "pointmass_solver_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_pointmass_threads.py '
                                    'tests/test_pointmass_oracles.py -k "backward or chunks_match or second_order"',
                                    "4-16 s", "pointmass.md"),
+    # work_precision.md, features.md: RK4 across a wind kink, split and unsplit (the batched case alone compiles for
+    # minutes, so it is left out)
+    "breakpoint_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_breakpoints.py '
+                             'tests/test_batch_breakpoints.py -k "across_a_ramp or (aligned_kinks and single) or '
+                             'splits_a_step"', "4 s", "work_precision.md, features.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),
