@@ -217,6 +217,9 @@ LONG = {
     "breakpoint_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_breakpoints.py '
                              'tests/test_batch_breakpoints.py -k "across_a_ramp or (aligned_kinks and single) or '
                              'splits_a_step"', "4 s", "work_precision.md, features.md"),
+    # rotor.md: the closed forms' C_Q against the blade-element integration (the test prints each case's difference)
+    "rotor_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_rotor.py -k "closed_forms_against or '
+                        'near_axial"', "3 s", "rotor.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),

@@ -132,6 +132,8 @@ def test_ideal_rotor_variant_reaches_the_actuator_disk_in_near_axial_flow(mu, al
     alpha = alpha_deg * DEG
     res = minimize_scalar(lambda t: -rotor_coefficients(params, mu, alpha, t).cp, bounds=(-1.2, 0.5),
                           method="bounded", options={"xatol": 1e-10})
+    print(f"mu = {mu}, alpha_c = {alpha_deg} deg: C_p {-res.fun:.8f} against the ideal "
+          f"{ideal_power_coefficient(alpha):.8f}, difference {abs(-res.fun - ideal_power_coefficient(alpha)):.2g}")
     assert -res.fun == pytest.approx(ideal_power_coefficient(alpha), abs=tol)
     if alpha_deg == 89.0:
         assert -res.fun == pytest.approx(16.0 / 27.0, abs=1e-3)
@@ -165,6 +167,8 @@ def test_closed_forms_against_blade_element(mu, alpha_deg, theta_deg, cq_rel, id
     assert (st.a0, st.a1, st.b1) == pytest.approx((a0, a1, b1), rel=1e-9)
     profile = params.sigma * params.delta * (1.0 + 3.0 * mu**2) / 8.0
     scale = abs(st.lam * st.ct) + abs(mu * st.ch) + profile
+    print(f"mu = {mu}, alpha_c = {alpha_deg} deg, collective {theta_deg} deg: C_Q differs by "
+          f"{100 * abs(st.cq - cq) / scale:.2f} % of the terms")
     assert abs(st.cq - cq) <= cq_rel * scale
     # and the energy identity itself, term by term
     assert st.cq == pytest.approx(profile - st.lam * st.ct - mu * st.ch, rel=1e-12, abs=1e-15)

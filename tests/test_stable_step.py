@@ -82,5 +82,6 @@ def test_a_scene_past_its_stable_step_warns_when_its_simulator_is_made(monkeypat
     with warnings.catch_warnings():
         warnings.simplefilter("error", ss.UnstableStepWarning)
         load_scene("ladder_chain").simulator()
-    with pytest.warns(ss.UnstableStepWarning, match=r"dt = 0\.025 s .* 0\.024\d* s"):
+    with pytest.warns(ss.UnstableStepWarning, match=r"dt = 0\.025 s .* 0\.024\d* s") as record:
         load_scene("ladder_chain", dt=0.025).simulator()
+    print(record[0].message)
