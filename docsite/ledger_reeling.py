@@ -124,6 +124,11 @@ REELING = Covered(
         "The static cycle's 1.9 kW on the single element ([the pumping page])",
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # tests/test_reel_tether.py prints the two cases' errors beside its assertion
+        Printed("reel_tether_tests", (
+            'a hanging tether of 5 and 10 sag-corrected elements between two fixed points against the elastic '
+            'catenary (horizontal tension within 0.67 % and 0.99 % at 5 elements, 0.17 % and 0.26 % at 10: second '
+            "order); the stable step's omega_max; bad fields named.",)),
         Printed('reeling_cycle_40', (
             'Against Schmehl\'s model at the simulated operating point (docs/pumping.md, "Power curve"), prints '
             '45719 W simulated against 61063 W matched on the third cycle:',
@@ -176,8 +181,5 @@ REELING = Covered(
         'reel-in (where the 3-element chain used to stop). It makes no power:',
         '-4631 W and -2488 W over its first two cycles (reel-out tension 131 and 346 N:',
         'the static wing holds up little of 300-500 m of tether, which lies on the ground near the winch).',
-        'a hanging tether of 5 and 10 sag-corrected elements between two fixed points against the elastic catenary '
-        '(horizontal tension within 0.67 % and 0.99 % at 5 elements, 0.17 % and 0.26 % at 10: second order); the '
-        "stable step's omega_max; bad fields named.",
     ),
 )

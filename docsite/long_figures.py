@@ -220,6 +220,9 @@ LONG = {
     # rotor.md: the closed forms' C_Q against the blade-element integration (the test prints each case's difference)
     "rotor_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_rotor.py -k "closed_forms_against or '
                         'near_axial"', "3 s", "rotor.md"),
+    # reeling_tether.md: the hanging tether of 5 and 10 elements against the elastic catenary
+    "reel_tether_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_reel_tether.py -k hanging_tether',
+                              "2 s", "reeling_tether.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),

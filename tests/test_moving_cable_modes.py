@@ -34,6 +34,9 @@ def test_in_plane_mode_agrees_with_3d():
     a2.step(n_steps=n)
     a3.step(n_steps=n)
     assert a2.transfers() == a3.transfers() == 2  # 30 m in the ramp + 140 m
+    print(f"2D against 3D over {a3.t:g} s ({a3.transfers()} transfers): wing positions within "
+          f"{np.abs(a2.wing_positions() - a3.wing_positions()).max():.2g} m, generator energy within "
+          f"{abs(a2.generator_energy() / a3.generator_energy() - 1.0):.2g} relative")
     np.testing.assert_allclose(a2.wing_positions(), a3.wing_positions(), rtol=0, atol=1e-6)
     assert a2.generator_energy() == pytest.approx(a3.generator_energy(), rel=1e-8)
 
