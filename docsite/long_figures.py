@@ -223,6 +223,8 @@ LONG = {
     # reeling_tether.md: the hanging tether of 5 and 10 elements against the elastic catenary
     "reel_tether_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_reel_tether.py -k hanging_tether',
                               "2 s", "reeling_tether.md"),
+    # numerics.md: the one-element tethered wing's stable RK4 step at its trimmed start
+    "stable_step_wing_1": Long("laddermill stable-step tethered_wing --elements-per-piece 1", "3 s", "numerics.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),
