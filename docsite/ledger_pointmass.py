@@ -184,6 +184,8 @@ PM_PRINTED = (
         'up to 44 m (70 m with matched lift) on a 3.6 km high loop',
         'falls to 0.1-0.2 kN',
     )),
+    # PointMassChain-v0 open loop over 120 s: "open_loop 1455.64 120.0 6.9404 ..." (return, length, max |dy| [m])
+    Printed("pointmass_chain_open_loop", ('return 1456', 'up to 6.9 m sideways')),
     Printed("pointmass_solver_tests", (  # tests/test_pointmass_threads.py and _oracles.py print what they assert
         'by up to 3.1e-11 of the largest velocity', 'backward error of 3e-12 to 5.5e-12,',
         'its backward error is 5e-12',
@@ -212,8 +214,6 @@ PM_NOT_RERUN = (
     'doubles every 6.2 s',
     'and to 1e-6 at 1 cm (11,000 elements)',  # test_catenary_at_one_centimetre's bound (its measured value unprinted)
     'settled 600 s from the rigid equilibrium, base tension 178.7 kN against 178.9 kN',
-    'return 1456',
-    'up to 6.9 m sideways',
     't0 = 1135 s',
     '102.6 kW (the converged point-mass motion gives 82.4 kW',
     "converged motion's 82.4 kW",

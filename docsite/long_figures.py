@@ -225,6 +225,10 @@ LONG = {
                               "2 s", "reeling_tether.md"),
     # numerics.md: the one-element tethered wing's stable RK4 step at its trimmed start
     "stable_step_wing_1": Long("laddermill stable-step tethered_wing --elements-per-piece 1", "3 s", "numerics.md"),
+    # pointmass.md: PointMassChain-v0 open loop through the direction step
+    "pointmass_chain_open_loop": Long("laddermill evaluate --env laddermill_gym/PointMassChain-v0 --controllers "
+                                      "open_loop --episodes 1 --episode-time 120 --out "
+                                      "results/long/pointmass_chain_open_loop", "5 s", "pointmass.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),
