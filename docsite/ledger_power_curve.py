@@ -113,6 +113,12 @@ POWER_CURVE = Covered(
         '(v2, the refinement, depower, depower6, depower8, depower10).',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # tests/test_power_curve_mill.py -k depower_rule_trims prints each trim C_L, its target and C_L at 8 m/s and the
+        # scene's elevators (1.2961 ascending)
+        Printed('depower_rule_tests', (
+            "The v2 wing's trim is steep in the elevator (C_L 1.30",
+            "which lowers the ascending wings' trim C_L from 1.30",
+            '0.83 / 0.58 / 0.42 at 10 / 12 / 14 m/s (the closed-form targets 1.30 (8 / V0)^2')),
         # the v1 mill's rows at V_c 1 and 2 m/s (wing_data.md's v1 power curve)
         Printed('power_curve_v1', ('which lowers the tension difference at low V_c (the v1 mill gives 82.1',
                                    '152.9 kW at 1')),
@@ -233,17 +239,15 @@ POWER_CURVE = Covered(
         "The paper's figure fits 5 m/s far better, as the issue's hand estimate said (200 kW needs a tension "
         'difference of 40 kN at 5 m/s',
     ),
-    # the trim's C_L against the elevator (1.30 to 0.61 from 1.3 to 4 deg, the attached branch lost above 5-7 deg, a
-    # post-stall trim near 23 deg, C_L 0.7) and the depowered trim C_L 0.83 / 0.58 / 0.42: tail_schedule's trim
-    # solution, asserted in tests/test_power_curve_mill.py; trim_slope (run 2026-11-30, 1 s) prints the trim per
-    # air speed at the scene's elevators only, so its 0.61 (v1's) or 1.30 matching these would be by chance; the v1
-    # mill's descending C_L 0.61 (its 82.1 / 152.9 kW: power_curve_v1, below)
+    # the trim's C_L against the elevator (0.61 at 4 deg, the attached branch lost above 5-7 deg, a post-stall trim
+    # near 23 deg, C_L 0.7): tail_schedule's trim solution, no test prints them (its 1.30 and the depowered C_L:
+    # depower_rule_tests, above); trim_slope (run 2026-11-30, 1 s) prints the trim per air speed at the scene's
+    # elevators only, so its 0.61 (v1's) or 1.30 matching these would be by chance; the v1
+    # mill's descending C_L 0.61 (its 82.1 / 152.9 kW: power_curve_v1, above)
     not_rerun=(
-        "The v2 wing's trim is steep in the elevator (C_L 1.30", '0.61 from 1.3',
+        '0.61 from 1.3',
         '4 deg at 8 m/s), and above 5-7 deg (by the wind)',
         'the attached-flow trim is lost (a post-stall trim near 23 deg', 'C_L about 0.7)',
-        "which lowers the ascending wings' trim C_L from 1.30",
-        '0.83 / 0.58 / 0.42 at 10 / 12 / 14 m/s (the closed-form targets 1.30 (8 / V0)^2',
         '2 m/s with its descending C_L 0.61 but is not periodic above 3 m/s).',
     ),
     history=(

@@ -229,6 +229,9 @@ LONG = {
     "pointmass_chain_open_loop": Long("laddermill evaluate --env laddermill_gym/PointMassChain-v0 --controllers "
                                       "open_loop --episodes 1 --episode-time 120 --out "
                                       "results/long/pointmass_chain_open_loop", "5 s", "pointmass.md"),
+    # power_curve.md: the depower rule's trims against their closed-form targets
+    "depower_rule_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_power_curve_mill.py -k '
+                               'depower_rule_trims', "2 s", "power_curve.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),

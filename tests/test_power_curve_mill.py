@@ -145,6 +145,9 @@ def test_depower_rule_trims_the_scaled_lift_coefficient(v0):
     for d_deg, scene_deg, n in zip(got, (ini["elevator_up_deg"], ini["elevator_down_deg"]), (2, 1.75), strict=True):
         d, ds = math.radians(d_deg), math.radians(scene_deg)
         target = _table_cl(wing, _trim_alpha(wing, ds, 8.0), ds) * (8.0 / v0) ** n
+        print(f"V0 {v0:g} m/s, n = {n:g}: trim C_L {_table_cl(wing, _trim_alpha(wing, d, v0), d):.4f} at elevator "
+              f"{d_deg:.2f} deg, target {target:.4f} = C_L at 8 m/s "
+              f"{_table_cl(wing, _trim_alpha(wing, ds, 8.0), ds):.4f} x (8 / V0)^{n:g}")
         assert _table_cl(wing, _trim_alpha(wing, d, v0), d) == pytest.approx(target, abs=1e-6)
         assert d_deg > scene_deg
 
