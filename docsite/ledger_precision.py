@@ -78,7 +78,10 @@ WORK_PRECISION = Covered(
         'written into wing and node states mid-run, with RK4 and DP5(4); 10,000 reset-and-run episodes with '
         "random actions of TetheredWing-v0 and Rotorcraft-v0 (an end by the env's integration or rotor-inflow "
         'failure code fails the case).',
-        # tests/test_breakpoints.py's setting (its printed errors: breakpoint_tests below)
+        # tests/test_breakpoints.py's setting, the 1 ms ramp (its printed errors: breakpoint_tests below)
+        'The fixed-step methods split their steps in one compiled stepper ( , ) that the single simulator, the and '
+        "the envs' step-and-observe kernels all run, each copy on its own wind's kinks, so an env whose is not a "
+        'multiple of its physics step is split like a single run (bit for bit: ; a batch copy across the 1 ms ramp:',
         "RK4's error across the CLI's 1 ms direction ramp ( , tethered wing, 0.05 rad, DOP853 reference run piece by "
         'piece):',
     ),
@@ -216,6 +219,8 @@ WORK_PRECISION = Covered(
             '| 1.3e-6 m, 6.9e-8, 9.9e-7 |', 'laddermill, 7.6 s (92, 6.405 1/s) | 0.031 m, 6.2e-5, 0.041',
             '| 0.0115 m, 0, 0.038 |', '| 4.7e-4 m, 9.8e-9, 4.6e-4', "(the mill's 6.4 1/s mode",
         )),
+        # physics_step_accuracy: "LadderChain-v0: 10 s, extent 3612.8 m" (a body's largest distance from the origin)
+        Printed('step_accuracy_10', ('3613 m for the chain,',)),
         Printed('breakpoint_tests', (  # tests/test_breakpoints.py, test_batch_breakpoints.py print what they assert
             '3.5e-8 from DOP853 against 1.0e-5 unsplit, and fourth order on a gust on the step grid with ).',
             '3.5e-8 at dt 5 ms with against 1.0e-5 with ,',
@@ -223,9 +228,8 @@ WORK_PRECISION = Covered(
         )),
     ),
     not_rerun=(
-        # the scenes' extents: the work-precision studies do not print them (physics_step_accuracy prints the chain's
-        # 3612.8 m, --long step_accuracy_10)
-            '3613 m for the chain, 101 m for the tethered wing',
+        # the tethered wing's extent: no command prints it (the chain's: step_accuracy_10, above)
+            '101 m for the tethered wing',
         # the stress runs' narrative of 2026-11-24 (this session's side runs: RK4 at 5 ms, ROS34PW2 at 10 ms, the
         # counts before and after its fixes): --long stress_all (2026-11-30, 517 s) prints its own case lines, few
         # of these figures (until then listed as its Printed snippets, which it printed none of)
@@ -294,9 +298,6 @@ WORK_PRECISION = Covered(
         "kernel's grid gives the *next* segment's slope at a grid point, and time roundoff decides which side a "
         'stage lands on. Changes such runs (the golden direction-step cases by 1.2e-6 (tethered wing) and 7.4e-5 '
         '(chain) relative).',
-        'The fixed-step methods split their steps in one compiled stepper ( , ) that the single simulator, the and '
-        "the envs' step-and-observe kernels all run, each copy on its own wind's kinks, so an env whose is not a "
-        'multiple of its physics step is split like a single run (bit for bit: ; a batch copy across the 1 ms ramp:',
         # breakpoint_tests prints the ratios 20.8, 23.7 today: not the page's
         'and fourth order (ratios 20.7, 22.3 per halving)',
         # tests/test_stable_step.py -s -k past_its_stable prints "(eigenvalue -5.093+118.6j 1/s)" today: not -5.092
