@@ -110,6 +110,11 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
             '"The apex whip\'s modes" there), so any integrator\'s local error grows by itself, and what separates '
             'the methods is how much error each step adds to those modes.',
         )),
+        # tests/test_closed_loop_precision.py prints both agreements beside its assertions
+        Printed('closed_loop_rollout_tests', (
+            "At the scene's own integrator the wing paths agree to 8e-17 m and 3.5e-18 rad on the tethered wing (2 s). "
+            'On the chain (4 s, slow test)', 'they agree to 5e-12 m and 1.3e-12 rad.',
+        )),
         Printed('wp_chain_kept_matrix', (
             'Every kept-matrix run still meets the tolerances with room: at most 2.0e-3 m in lateral offset (ros2, '
             'as every step), 3.0e-4 rad in attitude and 1.2e-4 in tension.',
@@ -125,9 +130,5 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
         '- On the chain RK4 at 0.025 s, 2 steps per period and just beyond', 'runs to the end but misses the '
         'tolerances: 4.6 % in tension and 0.075 rad in attitude (a growing cable mode).',
         '- On the mill RK4 at 0.0167 s breaks down at 0.33 s.',
-        # tests/test_closed_loop_precision.py's agreements (a test's assertions, not a printed figure)
-        "At the scene's own integrator the wing paths agree to 8e-17 m and 3.5e-18 rad on the tethered wing (2 s). "
-        'On the chain (4 s, slow test)',
-        'they agree to 5e-12 m and 1.3e-12 rad.',
     ),
 )

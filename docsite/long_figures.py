@@ -232,6 +232,9 @@ LONG = {
     # power_curve.md: the depower rule's trims against their closed-form targets
     "depower_rule_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_power_curve_mill.py -k '
                                'depower_rule_trims', "2 s", "power_curve.md"),
+    # work_precision_closed_loop.md: the study's closed loop against the harness rollout (tethered wing, chain)
+    "closed_loop_rollout_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_closed_loop_precision.py '
+                                      '-k harness_rollout', "25 s", "work_precision_closed_loop.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),

@@ -52,6 +52,7 @@ def _compare_with_rollout(scene: str, duration: float, n_samples: int) -> tuple[
 
 def test_closed_loop_is_the_harness_rollout_tethered_wing():
     dp, de, lateral = _compare_with_rollout("tethered_wing", 2.0, 4)
+    print(f"tethered wing (2 s): wing paths within {dp:.2g} m and {de:.2g} rad of the harness rollout")
     assert lateral > 0.05  # the step moved the wing: the comparison is not of two rest states
     assert dp < 1e-9 and de < 1e-11, (dp, de)
 
@@ -59,6 +60,7 @@ def test_closed_loop_is_the_harness_rollout_tethered_wing():
 @pytest.mark.slow
 def test_closed_loop_is_the_harness_rollout_chain():
     dp, de, lateral = _compare_with_rollout("ladder_chain", 4.0, 4)
+    print(f"chain (4 s): wing paths within {dp:.2g} m and {de:.2g} rad of the harness rollout")
     assert lateral > 0.01
     assert dp < 1e-8 and de < 1e-10, (dp, de)
 
