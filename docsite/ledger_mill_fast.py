@@ -77,9 +77,9 @@ MILL_FAST = Covered(
         "the scene's ramp set to 100 V_c s at 1 and 5 m/s):",
     ),
     not_rerun=(
-        # v1's open-loop end after the paper's step and random-actions median: printed by python -m pytest -m slow -s
-        # tests/test_laddermill_v1.py (its LQR and random-action tests; no long group runs it)
-        'v1: about 7 s).', '(v1: 6.75 s).',
+        # v1's open-loop end after the paper's step: printed by python -m pytest -m slow -s tests/test_laddermill_v1.py
+        # -k lqr_holds (300 s of the 101-wing mill; no long group runs it)
+        'v1: about 7 s).',
         # the trims at -4 and -0.5 deg: sim.statics.pitch_trim_alpha in a Python session (the page gives the call);
         # fast_mill prints neither
         'With 7 slots at -4 deg (trim alpha 9.65 deg, against 4.76 deg at -0.5 deg: , the wing at rest in 10 m/s)',
@@ -109,6 +109,8 @@ MILL_FAST = Covered(
         " 0.91 against v1's 0.61 (the lower setting slackens the descending leg on the way to 5 m/s, above);",
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # tests/test_laddermill_v1.py -k random_actions prints the median over its 10 seeds
+        Printed('mill_v1_random_actions', ('(v1: 6.75 s).',)),
         Printed('fast_mill_drift', (
             'the loop drifts downwind, slackens and relaxes.** takes the v1 mill from its periodic motion at 2 m/s '
             'to 4 m/s over 100 s and prints, every 25 s, tensions and the downwind position x of seven slots (x '

@@ -235,6 +235,9 @@ LONG = {
     # work_precision_closed_loop.md: the study's closed loop against the harness rollout (tethered wing, chain)
     "closed_loop_rollout_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_closed_loop_precision.py '
                                       '-k harness_rollout', "25 s", "work_precision_closed_loop.md"),
+    # mill_fast.md: LadderMill-v1 under random actions after the paper's step (the test prints the median of 10 seeds)
+    "mill_v1_random_actions": Long('python -m pytest -m "slow or not slow" -s tests/test_laddermill_v1.py -k '
+                                   'random_actions', "35 s", "mill_fast.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),
