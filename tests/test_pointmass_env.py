@@ -41,6 +41,7 @@ def test_settled_chain_start_against_the_fidelity_study():
     # the registered env settles the 70 m string from the rigid equilibrium for 600 s
     e = PointMassEnv(**chain_kwargs())
     obs, _ = e.reset(seed=0)
+    print(f"settled base tension {obs[-2] / 1e3:.2f} kN")
     assert obs[-2] == pytest.approx(178.9e3, rel=0.01)
     vel = obs[: 7 * 101].reshape(101, 7)[:, 3:6]
     assert np.abs(vel).max() < 0.1  # at rest [m/s]
