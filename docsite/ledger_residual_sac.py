@@ -5,7 +5,8 @@ from __future__ import annotations
 
 from docsite.ledger_kinds import History
 
-#: the clipped base with a larger initial noise (log_std_init -0.9), seeds 0 and 1
+#: the clipped base with a larger initial noise (log_std_init -0.9), seeds 0 and 1; then a middle noise
+#: (log_std_init -1.6) with twice the critic warm-up (160,000 steps), seeds 0 and 1
 RESIDUAL_SAC_NOISE = (
     History('2026-11-30',
             'laddermill train configs/agents/sac_tethered_wing_residual_after_noise.yaml --seed 0 and --seed 1 '
@@ -27,5 +28,28 @@ RESIDUAL_SAC_NOISE = (
                 "policy. Four after-squash runs besides seed 0's found no checkpoint that loses fewer than 17 of the "
                 "LQR's validation survivals (seed 0's kept one lost 11): its policy (score 101, gusts-v1 10 / 12) "
                 'stays the candidate, and issue 31 point 4 is not met.',
+            )),
+    History('2026-11-30',
+            'laddermill train configs/agents/sac_tethered_wing_residual_after_warmup.yaml --seed 0 and --seed 1 '
+            '(55a36ec); laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 --controllers '
+            'lqr RUN',
+            "the middle-noise, longer-warm-up clipped-base residual SAC's seeds 0 and 1, about 30 min each, not kept",
+            (
+                'Nor did a middle noise with a longer critic warm-up (runs of 2026-11-30). is the larger-noise config '
+                'with two lines changed: (action noise 0.2 x exp(-1.6) = 0.040 of the half range, half the '
+                "larger-noise run's, 2.5 times the clipped run's) and (80,000 gradient steps of the critics alone, "
+                "twice as many), so that the actor's first steps follow critics fitted to the started policy's "
+                'neighbourhood. Seed 0, then seed 1 if time allowed, and the rule between them (the higher best '
+                'paired validation score; a run that keeps its start has none) were fixed and committed before either '
+                'was trained. (477,176 steps in 30.19 min on one core at a load of 1.1 to 4.5) validated 78 / 184 at '
+                'the start and through the warm-up (150,008 steps), then 50 to 78 with 25 to 42 lost that the LQR '
+                'holds (paired scores -34 to 25; 60 and 40 lost at 200,008 steps, the first check after the warm-up); '
+                'seed 1 (550,008 steps in 30.23 min at a load of 1.8 to 4.1) 30 to 61 with 33 to 51 lost (scores -72 '
+                "to -5). Both kept their starts, the LQR bit for bit (gusts-v1 11 / 12 with the LQR's peak lateral "
+                'excursion and end time in all 18 episodes; dryden_moderate lost on its three seeds at 21.45, 32.15 '
+                'and 18.90 s, as by the LQR): no learned policy. The longer warm-up did not stop the fall: both seeds '
+                "lost 40 or more of the LQR's validation survivals at the first check after it, as the larger-noise "
+                "run's seed 0 did after its shorter one. Seed 0 of the after-squash config (score 101, gusts-v1 10 / "
+                '12) stays the candidate, and issue 31 point 4 is not met.',
             )),
 )
