@@ -70,8 +70,13 @@ BENCHMARKS = Covered(
         'same for ; the CPU columns on the loaded machine, below):',
         # the new section's heading, settings and the command's labels and episode lengths
         'The fastest step within 1e-3: 3,000 steps/s at 8 copies (2026-11-30)',
-        'is kept for 4 steps', "The target is **met** with the fastest step within 1e-3 as the physics step",
-        "Mills of 11 or 21 wings: LadderMill-v3's page",  # wing counts of the small cases (tests/env_cases.py)
+        'is kept for 4 steps', "The target is **met** with (bold), **but that step moves the rewards**",
+        # the reward and power comparison (the lead's script of 2026-11-30, 200 periods, seed 3; what
+        # tests/test_fast_ids.py::test_mill_v3_rewards_and_power_as_close_as_v2s checks) and the review's 5 m/s case
+        "(10 s, actions of 0.3 amplitude, seed 3, against RK4 at a quarter step, 2026-11-30): the mill's mean power "
+        "111.19 kW against 113.44 (-2.0 %; largest reward error 0.177, RK4's 0.0065); it ends the mill at 5 m/s on the "
+        "breaking load; every W step at 50 ms gives the chain a mean reward of 0.519-0.522 against 0.546.",
+        "(0.0052, 113.44 kW; )", "3,000 unbiased: **not shown**",
         'the largest position error as a share of the extent (periods run, of 200):',
         'on the mill alone K = 5 and 6 do too, 4 % faster on one copy', 'One seeded action sequence per env',
         'runs both envs through within 1e-3', 'Over 40 s ( )', '(its 101-wing rows now measure too)',
@@ -158,11 +163,8 @@ BENCHMARKS = Covered(
         'LadderChain-v0 | 1,658 / 1,644 / 1,596 | 869 / 879 / 820 | 3,107 / 3,159 / 3,096 | **6,584** / 6,631 / '
         '6,374 | 810 / 808 / 761 | | LadderMill-v2 | 1,280 / 1,283 / 1,276 | 671 / 669 / 675 | 2,556 / 2,694 / '
         '2,690 | 4,505 / **4,854** / 4,912 | 554 / 574 / 577',
-        'registered since 2026-11-30 as and : medians 6,584 (the chain) and 4,854 (LadderMill-v2) env steps/s at 8 '
-        'copies, both cores busy ("threads" 1.82-1.86 and 1.69-1.75), against RK4\'s 1,644 and 1,280.',
-        # the new ids in one run with the old (lead, 2026-11-30 18:49 UTC, load 3.3-4.1; as printed)
-        '2026-11-30 18:49 UTC, load 3.3-4.1, "cpu" 0.66): LadderChain-v1 2,193 (v0\'s 2,190, RK4 553), LadderMill-v3 '
-        "1,616 (v2's 1,622, RK4 421).",
+        # LadderMill-v3 and v2 in one run (lead, 2026-11-30 19:21 UTC, load 2.8-3.3; as printed)
+        "(load 3): 1,275 against v2's 664.",
         '( runs it for these two and LadderMill-v0): make + reset + one step in a fresh process, cold with a new '
         'empty , warm from the cache that run left (median of 3). This 2-core machine was shared with four other '
         'jobs (load average 4-6), so wall seconds are 2-3x the CPU seconds; compare the CPU seconds. On '

@@ -17,7 +17,7 @@ NUMERICS = Covered(
     given=(  # the equations and methods as published, the solvers' settings, counts of unknowns
         'against RK4 at 50/128 ms',  # jacobian_reuse's reference step (an input, printed as 0.05 s / 128)
         # the option's settings
-        "( , the wing, mill and rotorcraft envs' ; default 1; LadderChain-v1 and LadderMill-v3 register 4)",
+        "(opt-in: , the wing and rotorcraft envs' ; default 1, the registered ids' bits)",
         'The registered ids keep k = 1.',
         'With k > 1',
         'still a W-method of order 3',

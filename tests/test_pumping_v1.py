@@ -148,10 +148,8 @@ def test_gusts_v3_is_v2_plus_pumping_kite_v1():
     from laddermill_gym.studies.gusts.gust_suite import load_suite
 
     v2, v3 = load_suite("gusts-v2"), load_suite("gusts-v3")
-    # gusts-v3 was fixed before LadderMill-v1..v3 and LadderChain-v1 existed (a suite is never changed; a later version
-    # adds envs)
-    later = {"laddermill_gym/LadderMill-v1", "laddermill_gym/LadderMill-v2", "laddermill_gym/LadderMill-v3",
-             "laddermill_gym/LadderChain-v1"}
+    # gusts-v3 was fixed before LadderMill-v1..v3 existed (a suite is never changed, a later version adds envs)
+    later = {"laddermill_gym/LadderMill-v1", "laddermill_gym/LadderMill-v2", "laddermill_gym/LadderMill-v3"}
     assert v3.version == 3 and set(v3.envs) == set(ENV_IDS) - later == set(v2.envs) | {V1}
     for env_id in v2.envs:
         assert v3.envs[env_id] == v2.envs[env_id], env_id

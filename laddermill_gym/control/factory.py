@@ -35,9 +35,8 @@ DEFAULT_LQR_CONFIGS: dict[str, Path] = {
     "laddermill_gym/LadderMill-v0": CONFIG_DIR / "agents" / "lqr_laddermill.yaml",
     "laddermill_gym/LadderMill-v1": CONFIG_DIR / "agents" / "lqr_laddermill_v1.yaml",
     "laddermill_gym/LadderMill-v2": CONFIG_DIR / "agents" / "lqr_laddermill_v2.yaml",
-    # the same scenes as LadderMill-v2 and LadderChain-v0 (their ids differ in the physics step only)
+    # LadderMill-v2's scene (the ids differ in the physics step only)
     "laddermill_gym/LadderMill-v3": CONFIG_DIR / "agents" / "lqr_laddermill_v2.yaml",
-    "laddermill_gym/LadderChain-v1": CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml",
 }
 
 

@@ -21,8 +21,9 @@ envs once per control period, within 1e-3 of the chain's and the mill's extent o
 registered step over a short episode (tests/test_fast_physics_step.py) and about twice as fast as the registered
 RK4 (docs/benchmarks.md, "Environment throughput"); ``physics_step="ros2", jacobian_every=4`` (one ROS2 step per
 period, its iteration matrix kept 4 steps) is the fastest step within that bound that runs the short episode
-through on both (about 4x the registered step at 8 copies; kept 8 steps it ends the episode early):
-``laddermill_gym/LadderChain-v1`` and ``LadderMill-v3`` register it.
+through on both (about 4x the registered step at 8 copies; kept 8 steps it ends the episode early), but it biases
+the mill's power (-2 % over 10 s) and is unstable in harder cases (docs/benchmarks.md); ``laddermill_gym/LadderMill-v3``
+registers ``physics_step="ros2"`` with the matrix formed every step.
 """
 
 from __future__ import annotations

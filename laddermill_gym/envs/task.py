@@ -140,8 +140,8 @@ class WingTask(TaskCore):
     reward, termination : dict or RewardConfig / TerminationConfig
     jacobian_every : int
         Physics steps per iteration matrix of a W-method step (default 1: built every step); k > 1 keeps it for k
-        steps (``kernels/rigid/rosenbrock.py`` ``with_jacobian_reuse``: same order, other last bits; a speed option
-        that LadderChain-v1 registers with ``physics_step="ros2"``, k = 4, docs/benchmarks.md).
+        steps (``kernels/rigid/rosenbrock.py`` ``with_jacobian_reuse``: same order, other last bits; an opt-in
+        speed option, docs/benchmarks.md).
     parallel : bool, optional
         Step the copies on numba's thread pool (default: from 32 copies on, from 2 for a scene of 500 states or
         more: ``task_base.default_parallel``); small batches of a small model run faster on one thread.

@@ -74,9 +74,6 @@ OBS_TABLE
 
     ## Version History
 
-    * v1 (LadderChain only): a new id, ``laddermill_gym/LadderChain-v1``
-      (:class:`~laddermill_gym.envs.chain_v1.LadderChainV1Env`): ``physics_step="ros2", jacobian_every=4``; this id
-      keeps its step, dynamics, spaces and rewards.
     * v0: initial version.
     """
 

@@ -87,12 +87,12 @@ STATION_TABLE
     "ros34pw2"`` stays within 1e-3 of the mill's extent of the registered step and runs about twice as fast,
     ``envs/physics_step.py``; the operating point and the spaces are the id's either way) and jacobian_every
     (physics steps per iteration matrix of a W-method step; default 1, every step; k > 1 keeps it for k steps,
-    fresh on each episode's first step: a speed option with other last bits, registered by LadderMill-v3, k = 4).
+    fresh on each episode's first step: an opt-in speed option with other last bits).
 
     ## Version History
 
     * v3: a new id, ``laddermill_gym/LadderMill-v3`` (:class:`~laddermill_gym.envs.laddermill.env_v3.LadderMillV3Env`):
-      v2 with ``physics_step="ros2", jacobian_every=4``.
+      v2 with ``physics_step="ros2"``.
     * v2: a new id, ``laddermill_gym/LadderMill-v2`` (:class:`~laddermill_gym.envs.laddermill.env_v2.LadderMillV2Env`):
       the v2 wing (scene ``laddermill_v2``, periodic in plane at 1-5 m/s, 102.2 kW at 2 m/s) and ``authority=0.2``.
     * v1: a new id, ``laddermill_gym/LadderMill-v1`` (:class:`~laddermill_gym.envs.laddermill.env_v1.LadderMillV1Env`):

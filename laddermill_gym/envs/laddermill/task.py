@@ -77,8 +77,8 @@ class MillTask(TaskCore):
     default from 2 copies on for the mill's thousand-odd states, ``task_base.default_parallel``; ``physics_step``,
     ``physics_dt``: the physics' fixed-step method and step instead of the scene's, ``envs/physics_step.py``;
     ``jacobian_every``: physics steps per iteration matrix of a W-method step, default 1 = every step; k > 1 keeps
-    it for k steps, fresh on each episode's first step: same order, other last bits, a speed option LadderMill-v3
-    registers with k = 4, ``envs/physics_step.py`` ``jacobian_settings``).
+    it for k steps, fresh on each episode's first step: same order, other last bits, an opt-in speed option,
+    ``envs/physics_step.py`` ``jacobian_settings``).
 
     Attributes (shapes with B copies, n slots): ``obs`` (B, 15 n + 4) clipped observations, ``raw_obs`` the same
     unclipped, ``aux`` (B, N_AUX) kernel read-outs, ``power`` (B,) electrical generator power [W], ``op`` the

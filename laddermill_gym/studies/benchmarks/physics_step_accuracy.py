@@ -34,11 +34,11 @@ from laddermill_gym.sim.simulator import IntegratorSettings
 #: random actions at full amplitude end a median episode at 17.6 s, docs of LadderMill-v2)
 ACTION_NOISE = 0.3
 #: the RK4 steps [s] of the 101-wing envs' scenes (configs/scenes/ladder_chain.yaml: RK4 12.5 ms, laddermill*.yaml:
-#: RK4 10 ms): the registered physics step of every id but LadderChain-v1 and LadderMill-v3, which register ROS2
-#: (``ros2:4``) on the same scenes; the reference is RK4 at a quarter of it
+#: RK4 10 ms): the registered physics step of every id but LadderMill-v3, which registers ROS2 on v2's scene; the
+#: reference is RK4 at a quarter of it
 REGISTERED_DT = {"laddermill_gym/LadderChain-v0": 0.0125, "laddermill_gym/LadderMill-v0": 0.01,
                  "laddermill_gym/LadderMill-v1": 0.01, "laddermill_gym/LadderMill-v2": 0.01,
-                 "laddermill_gym/LadderChain-v1": 0.0125, "laddermill_gym/LadderMill-v3": 0.01}
+                 "laddermill_gym/LadderMill-v3": 0.01}
 
 
 def positions(task) -> np.ndarray:
