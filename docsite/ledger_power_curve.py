@@ -231,7 +231,9 @@ POWER_CURVE = Covered(
     # and 3.28 km at 3 and 4 m/s: about 3.3 km (a CSV h_high_m of 3,332 m had matched)
     derived=(
         'the walk uses 32', "the 11 it does not need: the six 10-14 m/s rows with the scene's elevators",
-        'P / V_c = 43.2', '51.1', '56.2', '61.0', '64.8 kN (the paper: the loop widens with V_c)', '1.6 times it).',
+        # 43.3 = 21.6305 / 0.5 kW / (m/s) from the replay CSV (T_first - T_last = 150.732 - 107.471 = 43.26; the page
+        # read 43.2, from the rounded 21.6, until the review of 2026-11-30)
+        'P / V_c = 43.3', '51.1', '56.2', '61.0', '64.8 kN (the paper: the loop widens with V_c)', '1.6 times it).',
         'Of the 43 cases computed', '3.3 km high strip',
         'the v2 mill pulls 64.8 kN).', "the loop's strip (at most 1.8 %: 406.6", '1.4 % at 5 m/s).',
         'The depower rule raises the ascending elevator by 1.45-1.90 deg (1.3',
