@@ -5,7 +5,7 @@ reproducibility figures (from studies and tests that no page group re-runs) list
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered, Printed
+from docsite.ledger_kinds import Covered, History, Printed
 
 G = "{numerics_data[%s]}"
 NUMERICS = Covered(
@@ -67,7 +67,7 @@ NUMERICS = Covered(
         "unknowns)"),
     derived=(  # worked by hand from the page's own inputs
         "omega^2 ~ 1e6 s^-2, a wing's pendulum g / L ~ 0.1 s^-2", "outweigh the wing rows 1e7 to one",
-        "some 200 ulps of a 50 m coordinate", "(ratio 4: O(1/n^2);", "as h^0.4 under", "n^-1.4",
+        "some 200 ulps of a 50 m coordinate", ": O(1/n^2);", "as h^0.4 under", "n^-1.4",
         # the largest |H, V error| x n^2 that initial_elements_tests prints (3.82e-3, V at n = 8), rounded up
         "H and V at the station within 4e-3 / n^2"),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
@@ -80,8 +80,11 @@ NUMERICS = Covered(
         # tests printing their measured values beside the assertions (pytest -s)
         Printed('moving_end_jacobian_tests', ('to 2.4e-5',)),
         Printed('initial_elements_tests', ('within 3.6e-4, 8.6e-5, 2.1e-5 m', '(slope -2.0)',
-                                           'lies 1.35 m from the limit')),
-        Printed('alpha_rate_pole_test', ('at t = 0.3836 s (wing 46',)),
+                                           'lies 1.35 m from the limit',
+                                           'moves by 1.12, 0.175, 0.0421 m from n = 1 to 8 (ratio 4.16')),
+        Printed('alpha_rate_pole_test', ('at t = 0.3836 s (wing 46', 'at -74.5 deg sideslip)',
+                                         'is 3.73e9 rad/s^2 at the last accepted state and -3.06e11, with the other '
+                                         'sign, 1e-4 s later', 'removed, -127 rad/s^2')),
         # the one-element wing at its trimmed start: "rk4: largest stable step 0.1141 s (... -24.4 + 0i 1/s)"
         Printed('stable_step_wing_1', ('-24 1/s, a 0.11 s limit,',)),
     ),
@@ -121,13 +124,13 @@ NUMERICS = Covered(
         'stop at 1e-5 m/s^2',
         'by a factor 2',
         '4.7e-8 m/s^2',  # test_initial_elements.py -s -k at_rest prints 5.1e-8 (ladder_chain, n = 8) today
-        # initial_elements_tests prints 1.12, 0.175, 0.0421 m today (n = 1 to 8; the test has no n = 16): the page's
-        # 1.10 and 0.041 are not today's; a docs change for whoever owns the page
-        'moves by 1.10, 0.17, 0.041, 0.010 m',
-        # alpha_rate_pole_test prints sideslip -74.502 deg (-75 rounded), and at the stop 3.73e9 rad/s^2, 1e-4 s later
-        # -3.06e11, without the alpha-rate columns -127: not the page's figures (from another evaluation of the pole)
-        'at -74 deg sideslip)',
-        '-4.5e6 rad/s^2 at the last accepted state and 3.9e9 with the other sign 1e-4 s later',
-        'removed, -129 rad/s^2',
+    ),
+    history=(  # the page's earlier figures, replaced by today's printed ones (issue 33 point 6, 2026-11-30)
+        History('2026-11-24', 'pytest -s tests/test_initial_elements.py (569de48)',
+                'the converging wing from n = 1 to 16 elements per piece (the test today stops at n = 8)',
+                ('2026-11-24 quoted 1.10, 0.17, 0.041, 0.010 m from n = 1 to 16',)),
+        History('2026-11-24', 'the failed ros34pw2 run of the 101-wing mill under bang-bang controls (9f0397d)',
+                "the pole's accelerations from another evaluation than today's test's",
+                ('(2026-11-24, another evaluation of the pole: -74 deg, -4.5e6, 3.9e9, -129 rad/s^2)',)),
     ),
 )
