@@ -76,7 +76,7 @@ BENCHMARKS = Covered(
         "(10 s, actions of 0.3 amplitude, seed 3, against RK4 at a quarter step, 2026-11-30): the mill's mean power "
         "111.19 kW against 113.44 (-2.0 %; largest reward error 0.177, RK4's 0.0065); it ends the mill at 5 m/s on the "
         "breaking load; every W step at 50 ms gives the chain a mean reward of 0.519-0.522 against 0.546.",
-        "(0.0052, 113.44 kW; )", "3,000 unbiased: **not shown**",
+        "(0.0052, 113.44 kW; )", "**Met on the mill**",
         'the largest position error as a share of the extent (periods run, of 200):',
         'on the mill alone K = 5 and 6 do too, 4 % faster on one copy', 'One seeded action sequence per env',
         'runs both envs through within 1e-3', 'Over 40 s ( )', '(its 101-wing rows now measure too)',
@@ -163,8 +163,8 @@ BENCHMARKS = Covered(
         'LadderChain-v0 | 1,658 / 1,644 / 1,596 | 869 / 879 / 820 | 3,107 / 3,159 / 3,096 | **6,584** / 6,631 / '
         '6,374 | 810 / 808 / 761 | | LadderMill-v2 | 1,280 / 1,283 / 1,276 | 671 / 669 / 675 | 2,556 / 2,694 / '
         '2,690 | 4,505 / **4,854** / 4,912 | 554 / 574 / 577',
-        # LadderMill-v3 and v2 in one run (lead, 2026-11-30 19:21 UTC, load 2.8-3.3; as printed)
-        "(load 3): 1,275 against v2's 664.",
+        # LadderMill-v3's three runs (lead, 2026-11-30 19:29 UTC, load 0.9-1.4; as printed; the first run's "cpu" 1.00)
+        '3 runs (19:29 UTC, load 0.9-1.4): 2,003 (one core), **3,628**, 3,593;',
         '( runs it for these two and LadderMill-v0): make + reset + one step in a fresh process, cold with a new '
         'empty , warm from the cache that run left (median of 3). This 2-core machine was shared with four other '
         'jobs (load average 4-6), so wall seconds are 2-3x the CPU seconds; compare the CPU seconds. On '
