@@ -225,6 +225,7 @@ WORK_PRECISION = Covered(
             '3.5e-8 from DOP853 against 1.0e-5 unsplit, and fourth order on a gust on the step grid with ).',
             '3.5e-8 at dt 5 ms with against 1.0e-5 with ,',
             'against none. On a gust sampled on the step grid, gives the ratio 16.3 per halving and 5.4.',
+            'and fourth order (ratios 20.8, 23.7 per halving;',
         )),
     ),
     not_rerun=(
@@ -298,11 +299,10 @@ WORK_PRECISION = Covered(
         "kernel's grid gives the *next* segment's slope at a grid point, and time roundoff decides which side a "
         'stage lands on. Changes such runs (the golden direction-step cases by 1.2e-6 (tethered wing) and 7.4e-5 '
         '(chain) relative).',
-        # breakpoint_tests prints the ratios 20.8, 23.7 today: not the page's
-        'and fourth order (ratios 20.7, 22.3 per halving)',
-        # tests/test_stable_step.py -s -k past_its_stable prints "(eigenvalue -5.093+118.6j 1/s)" today: not -5.092
+        # tests/test_stable_step.py -s -k past_its_stable prints "(eigenvalue -5.093+118.6j 1/s)" (2026-11-30; the
+        # page's -5.092 of 2026-11-24 corrected, issue 33 point 6): no long group runs that test
         'at dt = 0.025 s gives "dt = 0.025 s is above the estimated stability limit of RK4 at this state, 0.02445 s '
-        '(eigenvalue -5.092+118.6j 1/s)',
+        '(eigenvalue -5.093+118.6j 1/s)',
         'Fixed on the way: a non-finite state entry is now named as such (time, body, quantity: "t = 0.05 s: node 0 '
         'x [m] is nan (state entry 13)") instead of through the derivative it spoils; the failure diagnosis names '
         'the fastest cable node (an injected 1e12 m/s node speed was reported through the wing it dragged along).',
@@ -317,5 +317,8 @@ WORK_PRECISION = Covered(
              History('2026-11-24', 'NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision '
                      'podgaets_5km --time 10 --samples 50', "the point-mass string's first work-precision run "
                      "(c447a36); --long wp_podgaets printed 3.3e-08 on 2026-11-30 (not bisected)",
-                     ('3.4e-8 as written on 2026-11-24',)),),
+                     ('3.4e-8 as written on 2026-11-24',)),
+             # the kink test's ratios before today's printed ones (issue 33 point 6, 2026-11-30)
+             History('2026-11-24', 'pytest -s tests/test_breakpoints.py -k across_a_ramp (ec22606)',
+                     'the 1 ms ramp case as first measured', ('20.7, 22.3 on 2026-11-24)',)),),
 )
