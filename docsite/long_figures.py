@@ -201,6 +201,8 @@ LONG = {
         "--time 300 --steps ros2:4" for env, spec in (
             ("LadderChain-v0", "lqr:configs/agents/lqr_ladder_chain_central.yaml"), ("LadderMill-v2", "lqr"))),
         "about 3 min (2026-11-30)", "benchmarks.md"),
+    "fast_step_rewards": Long('python -m pytest -m slow -s tests/test_fast_ids.py -k rewards',
+                              "about 2 min (2026-11-30)", "benchmarks.md"),
     # numerics.md: tests whose measured values are printed beside their assertions (pytest -s; 2026-11-30, nice 15)
     "initial_elements_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_initial_elements.py -k '
                                    '"catenary or converges"', "5-14 s", "numerics.md"),
