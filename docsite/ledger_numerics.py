@@ -127,7 +127,9 @@ NUMERICS = Covered(
         '(1.5e-8 |z|, 0.05 mm)',
         'stop at 1e-5 m/s^2',
         'by a factor 2',
-        '4.7e-8 m/s^2',  # test_initial_elements.py -s -k at_rest prints 5.1e-8 (ladder_chain, n = 8) today
+        # pytest -s tests/test_initial_elements.py -k at_rest prints the RMS 5.1e-8 (ladder_chain, n = 4: 306 nodes)
+        # and 2.4e-7 (n = 8: 714 nodes), run by helper D8 on 2026-11-30 19:04-19:11 (438 s: no long group runs it)
+        'a mass-weighted RMS of 5.1e-8 m/s^2 at n = 4 and 2.4e-7 at n = 8 ( , 2026-11-30;',
     ),
     history=(  # the page's earlier figures, replaced by today's printed ones (issue 33 point 6, 2026-11-30)
         History('2026-11-24', 'pytest -s tests/test_initial_elements.py (569de48)',
@@ -139,5 +141,7 @@ NUMERICS = Covered(
         History('2026-11-24', 'pytest -s tests/test_golden_trajectories.py (42b5686, 6943b61, e9de291)',
                 'the golden runs against 16b454f as first measured',
                 ('2026-11-24: 9.8e-11 and 2.1e-12)', '(2026-11-24: 1.1e-10;', '4.6e-14 on 2026-11-24)')),
+        History('2026-11-24', 'the scaled solve of ladder_chain (569de48)',
+                'the first polished start, its n not recorded', ('4.7e-8 m/s^2 as written on 2026-11-24',)),
     ),
 )
