@@ -120,3 +120,20 @@ def test_the_chains_w_steps_at_50_ms_bias_its_rewards():
           f"{r_rk4.mean():.4f}, " + ", ".join(f"{k} {v:.4f}" for k, v in means.items()))
     assert abs(r_rk4.mean() - r_ref.mean()) < 1e-3
     assert all(v < r_ref.mean() - 0.01 for v in means.values())
+
+
+@pytest.mark.slow
+def test_ros2s_chain_rewards_converge_slowly_where_ros34pw2s_do():
+    """Where the chain's bias comes from: the largest per-step reward error against RK4 at 3.125 ms as the W step
+    shrinks from 50 to 6.25 ms. ROS34PW2 (built to keep its order on stiff problems, Rang & Angermann 2005)
+    converges: below 0.01 at 6.25 ms (measured 0.127, 0.039, 0.0044 at 50, 12.5, 6.25 ms). ROS2 stays near its 50 ms
+    error (0.144, 0.134, 0.126), consistent with the order reduction of a W-method without that property on the stiff
+    axial cable modes, whose strains set the tensions and so the ends' pull, the chain's power."""
+    chain = "laddermill_gym/LadderChain-v0"
+    _, r_ref, _, _ = rollout(chain, 200, physics_step="rk4", physics_dt=0.003125)
+    err = {(m, dt): np.max(np.abs(rollout(chain, 200, physics_step=m, physics_dt=dt)[1] - r_ref))
+           for m in ("ros2", "ros34pw2") for dt in (0.05, 0.0125, 0.00625)}
+    print("\nLadderChain-v0, largest reward error against RK4 at 3.125 ms: " + ", ".join(
+        f"{m} at {dt * 1e3:g} ms {e:.4f}" for (m, dt), e in err.items()))
+    assert err[("ros34pw2", 0.00625)] < 0.01 < err[("ros34pw2", 0.05)]
+    assert err[("ros2", 0.00625)] > 0.5 * err[("ros2", 0.05)]
