@@ -15,6 +15,10 @@ NUMERICS = Covered(
             (r"approaching (\d) and (\d) from below", (G % "ratio_ros2", G % "ratio_ros34pw2")),
             (r"1e-6 m/s\^2 at omega\^2 = 7e5 s\^-2 is ([\d.e-]+) m", (G % "node_offset",))),
     given=(  # the equations and methods as published, the solvers' settings, counts of unknowns
+        # the chain's reward check: its settings and step sizes (tests/test_fast_ids.py)
+        "**What an agent is given: the chain's rewards** (2026-11-30; , )", 'Over 200 control periods of actions of 0.3 '
+        'amplitude on LadderChain-v0, the largest per-step reward error against RK4 at 3.125 ms',
+        'at 50, 12.5, 6.25 ms)', 'within 1e-3 of the extent: far below ROS2\'s order 2', 'So every W step at 50 ms',
         'against RK4 at 50/128 ms',  # jacobian_reuse's reference step (an input, printed as 0.05 s / 128)
         # the option's settings
         "(opt-in: , the wing and rotorcraft envs' ; default 1, the registered ids' bits)",
@@ -71,6 +75,10 @@ NUMERICS = Covered(
         # the largest |H, V error| x n^2 that initial_elements_tests prints (3.82e-3, V at n = 8), rounded up
         "H and V at the station within 4e-3 / n^2"),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('fast_step_rewards', (  # the slow test's printed errors (its settings given)
+            'shrinks with the ROS34PW2 step (0.1269, 0.0390, 0.0044 at',
+            "but hardly with ROS2's (0.1443, 0.1336, 0.1259)",
+        )),
         Printed('jacobian_reuse', (
             'error ratio per halving above 6 with the matrix kept 3 and 8 steps',
             'over 60 s the largest position error', 'was 3.44, 3.60, 3.96, 4.84 m',
