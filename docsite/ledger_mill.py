@@ -92,6 +92,8 @@ MOVING_CABLE = Covered(
     # s), the 2D / 3D comparison (tests/test_moving_cable_modes.py), the LQR's per-phase table and its 300 s run, the 3D
     # direction step of the meijaard study
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # tests/test_moving_cable_modes.py -s -k in_plane (the page's 4e-8 m of 2026-11-23 a History record)
+        Printed('test_figures_quick', ('agree to 9.7e-9 m in every wing position over 100 s (2 transfers)',)),
         Printed('mill_v0_paper_step', (
             'within 0.08 m for 300 s', 'where the open loop leaves the aerodynamic range at 8.7 s',
         )),
@@ -107,9 +109,6 @@ MOVING_CABLE = Covered(
         'not settle within 1500-4000 s',
         'between -90 and +66 deg at t = 300 s, pitch rates up to 3.5 rad/s) and the mean power per period swings '
         'between -100 and +280 kW. At -2 deg it settles with 24 kW',
-        # tests/test_moving_cable_modes.py -s -k in_plane prints 9.7e-9 m over 100 s (2026-11-30, issue 33 point 6;
-        # the page's 4e-8 m of 2026-11-23 corrected): no long group runs that test
-        'agree to 9.7e-9 m in every wing position over 100 s (2 transfers)',
         'no periodic motion within 1500 s',
     ),
     # the first 2D / 3D comparison, before today's printed 9.7e-9 m (issue 33 point 6, 2026-11-30)
@@ -236,6 +235,8 @@ FEATURES = Covered(  # a summary of the other pages: their groups check what it 
         ' 600 s);',
     ),
     printed=(  # long groups (docsite/long_figures.py)
+        # tests/test_pointmass_env.py -s -k settled_chain: 178.51 kN (the page's 178.7 kN until 2026-11-30)
+        Printed('test_figures_quick', ('(base tension 178.5 kN)',)),
         Printed("breakpoint_tests", ('error 3.5e-8 against 1.0e-5 without).',)),  # the batch copy's (test prints)
         Printed("mill_v0_paper_step", ('the loop diverges laterally and the episode ends at 8.7 s',
                                        'holds it for 300 s through every disturbance of the harness '
@@ -263,8 +264,6 @@ FEATURES = Covered(  # a summary of the other pages: their groups check what it 
         '(beta 61 deg near the top)',
         # no command prints these: the in-plane periodic run's smallest tension (mill_periodic_2d prints the power and
         # time only) and the point-mass chain's settled base tension (envs/__init__.py's comment)
-        # (tests/test_pointmass_env.py -s -k settled_chain prints the base tension, 178.51 kN on 2026-11-30: the
-        # page's 178.7 kN corrected, issue 33 point 6; no long group runs that test)
-        'the smallest tension (10.5 kN)', '(base tension 178.5 kN)',
+        'the smallest tension (10.5 kN)',
     ),
 )

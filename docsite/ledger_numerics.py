@@ -16,8 +16,9 @@ NUMERICS = Covered(
             (r"1e-6 m/s\^2 at omega\^2 = 7e5 s\^-2 is ([\d.e-]+) m", (G % "node_offset",))),
     given=(  # the equations and methods as published, the solvers' settings, counts of unknowns
         # the chain's reward check: its settings and step sizes (tests/test_fast_ids.py)
-        "**What an agent is given: the chain's rewards** (2026-11-30; , )", 'Over 200 control periods of actions of 0.3 '
-        'amplitude on LadderChain-v0, the largest per-step reward error against RK4 at 3.125 ms',
+        "**What an agent is given: the chain's rewards** (2026-11-30; , )",
+        'Over 200 control periods of actions of 0.3 amplitude on LadderChain-v0, the largest per-step reward error '
+        'against RK4 at 3.125 ms',
         'at 50, 12.5, 6.25 ms)', 'within 1e-3 of the extent: far below ROS2\'s order 2', 'So every W step at 50 ms',
         'against RK4 at 50/128 ms',  # jacobian_reuse's reference step (an input, printed as 0.05 s / 128)
         # the option's settings
@@ -75,6 +76,7 @@ NUMERICS = Covered(
         # the largest |H, V error| x n^2 that initial_elements_tests prints (3.82e-3, V at n = 8), rounded up
         "H and V at the station within 4e-3 / n^2"),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('test_figures_quick', ("today's code by 1.01e-10 and 1.51e-10", '(measured at most 5.1e-14;')),
         Printed('fast_step_rewards', (  # the slow test's printed errors (its settings given)
             'shrinks with the ROS34PW2 step (0.1269, 0.0390, 0.0044 at',
             "but hardly with ROS2's (0.1443, 0.1336, 0.1259)",
@@ -114,8 +116,6 @@ NUMERICS = Covered(
         # of 2026-11-24 corrected, kept as History): no long group runs that test
         '(the golden runs against 16b454f: 1.72e-10 on the chain, 2.73e-12 on the wing,',
         'by up to 1.72e-10 relative over 0.5 s, the in-plane chain\'s by 1.83e-10',
-        'today\'s code by 1.01e-10 and 1.51e-10',
-        '(measured at most 5.1e-14;',
         "(the rising leg, stretched by 160 kN against the falling leg's 40 kN, is 20 m longer)",
         '(alpha about 13.7 deg)',
         '(alpha about 5.4 deg).** At +2 deg (alpha about 2.9 deg)',

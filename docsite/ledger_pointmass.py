@@ -186,6 +186,7 @@ PM_PRINTED = (
     )),
     # PointMassChain-v0 open loop over 120 s: "open_loop 1455.64 120.0 6.9404 ..." (return, length, max |dy| [m])
     Printed("pointmass_chain_open_loop", ('return 1456', 'up to 6.9 m sideways')),
+    Printed("test_figures_quick", ('to 3.2e-15',)),  # -k banded's largest (n = 5003, P = 7)
     Printed("pointmass_solver_tests", (  # tests/test_pointmass_threads.py and _oracles.py print what they assert
         'by up to 3.1e-11 of the largest velocity', 'backward error of 3e-12 to 5.5e-12,',
         'its backward error is 5e-12', "against solve_banded's 4.8e-17", "against LAPACK's 4.8e-17",
@@ -205,9 +206,6 @@ PM_NOT_RERUN = (
     'within about 10 s and stays (node speeds 1e-10 m/s after 120 s)',  # a settling run no command prints
     'by 2.5e-11 of the largest velocity (0.087 m/s) and 9e-13 m in position;',
     'and 4.5e-13 m',  # pointmass_solver_tests prints the positions relative (up to 9e-17 of the largest)
-    # pytest -s tests/test_pointmass_threads.py -k banded prints at most 3.2e-15 (n = 5003; 2026-11-30, issue 33
-    # point 6): no long group runs that test
-    'to 3.2e-15',
     '(condition number 3.3e5)',
     'at 20,000 nodes (5 steps, 1 and 2 threads) and within 2.8e-17 m/s in 36 of 1,000 nodes',
     'doubles every 6.2 s',

@@ -34,6 +34,7 @@ WORK_PRECISION = Covered(
               for scene, after in zip(SCENES, ("\\| ladder_chain", "\\| roberts_flying_model", "\\| laddermill",
                                                "The estimate holds"), strict=True))),
     given=(
+        'at dt = 0.025 s gives "dt = 0.025 s',  # the stable-step test's step (its message Printed)
         *controller_measure.GIVEN,  # the controller-measure section (docsite/ledger_controller_measure.py)
         'Result of the full run (four scenes, 1 h held, 10,000 episodes per env; ), re-run on',
         # whip_spectrum's step forcing and its methods' steps (the commands' inputs)
@@ -187,6 +188,10 @@ WORK_PRECISION = Covered(
         'ros34pw2:0.0666666666666667 ros2t:0.0666666666666667 rk4:0.0153846153846154 # 7 min',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # tests/test_stable_step.py -k past_its_stable's message (-5.092 until 2026-11-30); its step is given
+        Printed('test_figures_quick', (
+            'is above the estimated stability limit of RK4 at this state, 0.02445 s (eigenvalue -5.093+118.6j 1/s)',
+        )),
         Printed('stress_all', (
             '| 0.01922 |',
             '| 0.02458 |',
@@ -299,10 +304,6 @@ WORK_PRECISION = Covered(
         "kernel's grid gives the *next* segment's slope at a grid point, and time roundoff decides which side a "
         'stage lands on. Changes such runs (the golden direction-step cases by 1.2e-6 (tethered wing) and 7.4e-5 '
         '(chain) relative).',
-        # tests/test_stable_step.py -s -k past_its_stable prints "(eigenvalue -5.093+118.6j 1/s)" (2026-11-30; the
-        # page's -5.092 of 2026-11-24 corrected, issue 33 point 6): no long group runs that test
-        'at dt = 0.025 s gives "dt = 0.025 s is above the estimated stability limit of RK4 at this state, 0.02445 s '
-        '(eigenvalue -5.093+118.6j 1/s)',
         'Fixed on the way: a non-finite state entry is now named as such (time, body, quantity: "t = 0.05 s: node 0 '
         'x [m] is nan (state entry 13)") instead of through the derivative it spoils; the failure diagnosis names '
         'the fastest cable node (an injected 1e12 m/s node speed was reported through the wing it dragged along).',

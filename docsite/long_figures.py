@@ -201,6 +201,12 @@ LONG = {
         "--time 300 --steps ros2:4" for env, spec in (
             ("LadderChain-v0", "lqr:configs/agents/lqr_ladder_chain_central.yaml"), ("LadderMill-v2", "lqr"))),
         "about 3 min (2026-11-30)", "benchmarks.md"),
+    # tests whose printed values D9 put on the pages (2026-11-30; 2-6 s each, about 20 s in all)
+    "test_figures_quick": Long(" && ".join('python -m pytest -m "slow or not slow" -s ' + t for t in (
+        "tests/test_golden_trajectories.py", "tests/test_pointmass_threads.py -k banded",
+        "tests/test_pointmass_env.py -k settled_chain", "tests/test_stable_step.py -k past_its_stable",
+        "tests/test_moving_cable_modes.py -k in_plane")), "about 20 s (2026-11-30)",
+        "numerics.md, pointmass.md, work_precision.md, moving_cable.md, features.md"),
     "fast_step_rewards": Long('python -m pytest -m slow -s tests/test_fast_ids.py -k rewards',
                               "about 2 min (2026-11-30)", "benchmarks.md"),
     # numerics.md: tests whose measured values are printed beside their assertions (pytest -s; 2026-11-30, nice 15)
