@@ -160,7 +160,7 @@ BENCHMARKS = Covered(
         '6,374 | 810 / 808 / 761 | | LadderMill-v2 | 1,280 / 1,283 / 1,276 | 671 / 669 / 675 | 2,556 / 2,694 / '
         '2,690 | 4,505 / **4,854** / 4,912 | 554 / 574 / 577',
         # LadderMill-v3's three runs (lead, 2026-11-30 19:29 UTC, load 0.9-1.4; as printed; the first run's "cpu" 1.00)
-        '3 runs (19:29 UTC, load 0.9-1.4): 2,003 (one core), **3,628**, 3,593;',
+        '3 runs (19:29 UTC, load 0.9-1.4): 2,003 (one core), 3,628, **3,593** (median);',
         '( runs it for these two and LadderMill-v0): make + reset + one step in a fresh process, cold with a new '
         'empty , warm from the cache that run left (median of 3). This 2-core machine was shared with four other '
         'jobs (load average 4-6), so wall seconds are 2-3x the CPU seconds; compare the CPU seconds. On '

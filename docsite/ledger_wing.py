@@ -213,7 +213,7 @@ HISTORY = (
                 '| 128.3 kW at 470 s, shape changing 4.4e-2 l0 per period |',
                 '| 124.0 kW, shape change 1.7e-3 l0 at 855 s |',
                 '| 135.3 kW, shape change below 1e-3 l0 at 890 and 925 s, peak tension 151 kN |',
-                '| periodic at 1,345 s, 152.9 kW, tensions of the period up to 149 kN',
+                '| periodic at 1,345 s, 152.9 kW, tensions of the period up to 149.5 kN',
             )),
 )
 

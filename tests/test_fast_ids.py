@@ -124,11 +124,11 @@ def test_the_chains_w_steps_at_50_ms_bias_its_rewards():
 
 @pytest.mark.slow
 def test_ros2s_chain_rewards_converge_slowly_where_ros34pw2s_do():
-    """Where the chain's bias comes from: the largest per-step reward error against RK4 at 3.125 ms as the W step
+    """How the chain's reward error behaves: the largest per-step reward error against RK4 at 3.125 ms as the W step
     shrinks from 50 to 6.25 ms. ROS34PW2 (built to keep its order on stiff problems, Rang & Angermann 2005)
     converges: below 0.01 at 6.25 ms (measured 0.127, 0.039, 0.0044 at 50, 12.5, 6.25 ms). ROS2 stays near its 50 ms
-    error (0.144, 0.134, 0.126), consistent with the order reduction of a W-method without that property on the stiff
-    axial cable modes, whose strains set the tensions and so the ends' pull, the chain's power."""
+    error (0.144, 0.134, 0.126; a review found it converging only below 1 ms, the error mostly in the lateral penalty
+    of the open-loop chain's growing sideways motion; the cause is not established)."""
     chain = "laddermill_gym/LadderChain-v0"
     _, r_ref, _, _ = rollout(chain, 200, physics_step="rk4", physics_dt=0.003125)
     err = {(m, dt): np.max(np.abs(rollout(chain, 200, physics_step=m, physics_dt=dt)[1] - r_ref))

@@ -110,8 +110,9 @@ ENV_IDS: dict[str, dict] = {
                                          authority=0.2),
     # issue 32 point 3: v2 with one ROS2 step per control period: over 10 s of seeded actions its rewards and power
     # are as close to RK4 at a quarter of v2's step as v2's RK4 (largest reward error 0.0052 against 0.0065); the
-    # matrix kept 4 periods (faster) biased the power by -2 % and was unstable at 5 m/s (docs/benchmarks.md;
-    # tests/test_fast_ids.py). No chain id: every W step at 50 ms biased the chain's mean reward by 4-5 %.
+    # matrix kept 4 periods (faster) biased the power by -2 % (docs/benchmarks.md; tests/test_fast_ids.py) and ended
+    # the mill at 5 m/s on the breaking load in the review's runs of 2026-11-30. No chain id: every W step at 50 ms
+    # lowered the chain's open-loop mean reward by 4-5 %.
     "laddermill_gym/LadderMill-v3": dict(scene="laddermill_v2", control_dt=0.05, episode_time=120.0,
                                          authority=0.2, physics_step="ros2"),
     "laddermill_gym/PumpingKite-v0": dict(config="pumping_kite", control_dt=0.05, episode_time=400.0),

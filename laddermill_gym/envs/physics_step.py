@@ -22,8 +22,8 @@ registered step over a short episode (tests/test_fast_physics_step.py) and about
 RK4 (docs/benchmarks.md, "Environment throughput"); ``physics_step="ros2", jacobian_every=4`` (one ROS2 step per
 period, its iteration matrix kept 4 steps) is the fastest step within that bound that runs the short episode
 through on both (about 4x the registered step at 8 copies; kept 8 steps it ends the episode early), but it biases
-the mill's power (-2 % over 10 s) and is unstable in harder cases (docs/benchmarks.md); ``laddermill_gym/LadderMill-v3``
-registers ``physics_step="ros2"`` with the matrix formed every step.
+the mill's power (-2 % over 10 s, docs/benchmarks.md) and broke the mill at 5 m/s in a review's runs;
+``laddermill_gym/LadderMill-v3`` registers ``physics_step="ros2"`` with the matrix formed every step.
 """
 
 from __future__ import annotations

@@ -13,7 +13,7 @@ __all__ = ["LadderMillV3Env", "LadderMillV3VectorEnv"]
 
 
 class LadderMillV3Env(LadderMillV2Env):
-    """LadderMill-v2 on one ROS2 step per control period: about 3x faster, its rewards as close to RK4's as v2's.
+    """LadderMill-v2 on one ROS2 step per control period: faster, its rewards as close to RK4's as v2's.
 
     ## Description
 
@@ -23,12 +23,13 @@ class LadderMillV3Env(LadderMillV2Env):
     50 ms control period, where v2 takes five RK4 steps of 10 ms. Judged against RK4 at 2.5 ms over 10 s of seeded
     actions of 0.3 amplitude after the step (2026-11-30; tests/test_fast_ids.py, slow): the largest reward error
     0.0052 (v2's RK4: 0.0065), the mean generator power 113.44 kW as the reference's, the positions within 1e-3 of
-    the loop's extent. On 8 copies on two threads it stepped 3,628 and 3,593 env steps/s (two runs at load 0.9-1.4,
-    issue 32's 3,000 met; v2's RK4 1,280 on a quiet machine; ``laddermill bench-envs --quick --envs LadderMill-v2
-    LadderMill-v3 --copies 8``, docs/benchmarks.md). The faster
+    the loop's extent. On 8 copies on two threads it stepped a median 3,593 env steps/s over three runs at load
+    0.9-1.4 (issue 32's 3,000 met; v2's RK4: 1,280 on a quiet machine in another run, so about 2.8x; ``laddermill
+    bench-envs --quick --envs LadderMill-v2 LadderMill-v3 --copies 8``, docs/benchmarks.md). The faster
     ``jacobian_every=4`` (the matrix kept 4 periods) is not registered: it biased the mean power by -2 % with a
-    sawtooth of period 4 in the reward, and ended the mill at 5 m/s and on mills of 11 or 21 wings on the breaking
-    load, from the station's first element, whose rest length moves with the cable (docs/benchmarks.md). The
+    sawtooth of period 4 in the reward (docs/benchmarks.md), and in runs of 2026-11-30 without a command of their own
+    (the review's scripts) it ended the mill at 5 m/s and mills of 11 or 21 wings on the breaking load, from the
+    station's first element, whose rest length moves with the cable. The
     operating point is v2's (found with the scene's own integrator and cached alike). Many copies:
     ``gymnasium.make_vec(id, n, vectorization_mode="vector_entry_point")``.
 
