@@ -16,30 +16,18 @@ import shlex
 import subprocess
 import sys
 import time
-from dataclasses import dataclass
 from pathlib import Path
 
 from docsite.gust_scorecards import scorecards
+from docsite.long_group import Long
+from docsite.long_tests_craft import CRAFT_TESTS
+from docsite.long_tests_numerics import NUMERICS_TESTS
+from docsite.long_tests_strings import STRING_TESTS
 
 ROOT = Path(__file__).resolve().parent.parent
 WP = "NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision"
 CENTRAL = "lqr:configs/agents/lqr_ladder_chain_central.yaml"
 STEEP = " --elevators 1.3 3.35 --elevation 70"  # mill_fast.md: at 3.35 deg the rest layout needs a 70 deg first guess
-
-
-@dataclass(frozen=True)
-class Long:
-    """A long group: the command (as typed; a leading ``NAME=VALUE`` sets the environment, ``laddermill`` is the
-    package's CLI; several joined by `` && `` run in turn, their outputs concatenated), what it cost when last run,
-    the page its figures are on, the files it writes whose figures the page quotes (a gust bench's CSV), and the
-    ``$`` commands of the page's ``text`` blocks that show its output (:mod:`docsite.printed_blocks`; none: a block
-    of the command itself, where the page has one)."""
-
-    command: str
-    cost: str
-    page: str
-    reads: tuple = ()  # files (from the repository root) the command writes whose text counts as printed
-    shows: tuple = ()  # $ lines of the page's text blocks that are this command's printed output, line for line
 
 
 def _bench(suite: str, env: str, controllers: str, page: str, cost: str = "minutes") -> Long:
@@ -209,46 +197,6 @@ LONG = {
         "numerics.md, pointmass.md, work_precision.md, moving_cable.md, features.md"),
     "fast_step_rewards": Long('python -m pytest -m slow -s tests/test_fast_ids.py -k rewards',
                               "about 2 min (2026-11-30)", "benchmarks.md"),
-    # numerics.md: tests whose measured values are printed beside their assertions (pytest -s; 2026-11-30, nice 15)
-    "initial_elements_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_initial_elements.py -k '
-                                   '"catenary or converges"', "5-14 s", "numerics.md"),
-    "moving_end_jacobian_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_moving_end_jacobian.py '
-                                      '-k finite_differences', "17 s", "numerics.md"),
-    "alpha_rate_pole_test": Long('python -m pytest -m "slow or not slow" -s tests/test_alpha_rate_limit.py -k '
-                                 'names_the_alpha', "26 s", "numerics.md"),
-    # pointmass.md: the chunked solver's agreements and the catenary oracle (tests printing what they assert)
-    "pointmass_solver_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_pointmass_threads.py '
-                                   'tests/test_pointmass_oracles.py -k "backward or chunks_match or second_order"',
-                                   "4-16 s", "pointmass.md"),
-    # work_precision.md, features.md: RK4 across a wind kink, split and unsplit (the batched case alone compiles for
-    # minutes, so it is left out)
-    "breakpoint_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_breakpoints.py '
-                             'tests/test_batch_breakpoints.py -k "across_a_ramp or (aligned_kinks and single) or '
-                             'splits_a_step"', "4 s", "work_precision.md, features.md"),
-    # rotor.md: the closed forms' C_Q against the blade-element integration (the test prints each case's difference)
-    "rotor_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_rotor.py -k "closed_forms_against or '
-                        'near_axial"', "3 s", "rotor.md"),
-    # reeling_tether.md: the hanging tether of 5 and 10 elements against the elastic catenary
-    "reel_tether_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_reel_tether.py -k hanging_tether',
-                              "2 s", "reeling_tether.md"),
-    # numerics.md: the one-element tethered wing's stable RK4 step at its trimmed start
-    "stable_step_wing_1": Long("laddermill stable-step tethered_wing --elements-per-piece 1", "3 s", "numerics.md"),
-    # pointmass.md: PointMassChain-v0 open loop through the direction step
-    "pointmass_chain_open_loop": Long("laddermill evaluate --env laddermill_gym/PointMassChain-v0 --controllers "
-                                      "open_loop --episodes 1 --episode-time 120 --out "
-                                      "results/long/pointmass_chain_open_loop", "5 s", "pointmass.md"),
-    # power_curve.md: the depower rule's trims against their closed-form targets
-    "depower_rule_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_power_curve_mill.py -k '
-                               'depower_rule_trims', "2 s", "power_curve.md"),
-    # work_precision_closed_loop.md: the study's closed loop against the harness rollout (tethered wing, chain)
-    "closed_loop_rollout_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_closed_loop_precision.py '
-                                      '-k harness_rollout', "25 s", "work_precision_closed_loop.md"),
-    # mill_fast.md: LadderMill-v1 under random actions after the paper's step (the test prints the median of 10 seeds)
-    "mill_v1_random_actions": Long('python -m pytest -m "slow or not slow" -s tests/test_laddermill_v1.py -k '
-                                   'random_actions', "35 s", "mill_fast.md"),
-    # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
-    "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
-                          "wing_data.md"),
     # --tail-rule scene: the page's run (2026-11-29) flew the scene's elevators at every wind, the then default; today's
     # default (depower) changes the 10 m/s rows' elevators (first run 2026-11-30 without it: 130.9 / 194.0 kW there)
     "power_curve_v1": Long("laddermill power-curve --scene laddermill_v1 --ramp scene --tail-rule scene --speeds 0.5 1 "
@@ -301,6 +249,7 @@ LONG = {
                                     "configs/agents/ppo_tethered_wing_severe.yaml --set ntm_ib --episodes 200 --seed "
                                     "5000 --controllers lqr ppo_tethered_wing", "25 s (400 episodes of 60 s)",
                                     "controllers.md"),
+    **NUMERICS_TESTS, **STRING_TESTS, **CRAFT_TESTS,
 }
 
 

@@ -1,0 +1,27 @@
+"""Long groups (:data:`docsite.long_figures.LONG`) for numerics.md, work_precision.md and
+work_precision_closed_loop.md: mostly tests that print the values they assert (``pytest -s``), each quick enough to
+run on its own, so that a quoted number has a command that prints it."""
+
+from __future__ import annotations
+
+from docsite.long_group import Long
+
+NUMERICS_TESTS = {
+    # numerics.md: tests whose measured values are printed beside their assertions (pytest -s; 2026-11-30, nice 15)
+    "initial_elements_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_initial_elements.py -k '
+                                   '"catenary or converges"', "5-14 s", "numerics.md"),
+    "moving_end_jacobian_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_moving_end_jacobian.py '
+                                      '-k finite_differences', "17 s", "numerics.md"),
+    "alpha_rate_pole_test": Long('python -m pytest -m "slow or not slow" -s tests/test_alpha_rate_limit.py -k '
+                                 'names_the_alpha', "26 s", "numerics.md"),
+    # work_precision.md, features.md: RK4 across a wind kink, split and unsplit (the batched case alone compiles for
+    # minutes, so it is left out)
+    "breakpoint_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_breakpoints.py '
+                             'tests/test_batch_breakpoints.py -k "across_a_ramp or (aligned_kinks and single) or '
+                             'splits_a_step"', "4 s", "work_precision.md, features.md"),
+    # numerics.md: the one-element tethered wing's stable RK4 step at its trimmed start
+    "stable_step_wing_1": Long("laddermill stable-step tethered_wing --elements-per-piece 1", "3 s", "numerics.md"),
+    # work_precision_closed_loop.md: the study's closed loop against the harness rollout (tethered wing, chain)
+    "closed_loop_rollout_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_closed_loop_precision.py '
+                                      '-k harness_rollout', "25 s", "work_precision_closed_loop.md"),
+}
