@@ -53,6 +53,16 @@ log-probability is u's (SB3's squashed Gaussian) minus n_act log L: a = a_lqr + 
 and a scale by the constant L, whose Jacobian is L^n_act; the clip's mass at +-1 is ignored, as SB3 ignores the
 squash's own boundary (the gradient through a clipped component is zero).
 
+**A slower actor** (``policy_kwargs.optimizer_kwargs.actor_lr_scale: s``, 0 < s <= 1; absent, the default, leaves
+the optimisers as SB3 builds them, bit for bit). The actor's optimiser steps at s times the learning rate SB3 sets
+(its schedule, or the critic warm-up's) and the critics' at the rate itself: a pre-step hook multiplies each
+parameter group's rate by s and a post-step hook restores it, so SB3's ``_update_learning_rate`` and the saved
+state see the unscaled rate. Adam's step is linear in its rate (lr m_hat / (sqrt(v_hat) + eps)), so every actor
+step is s times the one at the critics' rate: the two-timescale order of actor-critic methods (the actor slower than
+its critic), so that the critics follow the moving policy's values. It is an optimiser setting, carried in
+``optimizer_kwargs`` (the config reader passes that mapping through) and removed from the keyword arguments the
+optimiser class gets.
+
 The buffers are part of the state dict: SB3's zip format saves them and ``SAC.load`` imports this class by name.
 :func:`~laddermill_gym.control.warm_start.start_residual` sets them (``init_from: lqr`` with
 ``policy: ResidualSACPolicy``).
@@ -71,11 +81,30 @@ from torch import nn
 
 from laddermill_gym.control.lqr_base import lqr_base_actions, register_lqr_base, set_lqr_base
 
-__all__ = ["ResidualSACPolicy", "ResidualActor", "NormalisedObservation", "BASE_EPS"]
+__all__ = ["ResidualSACPolicy", "ResidualActor", "NormalisedObservation", "BASE_EPS", "scale_steps"]
 
 #: [-] the base action's margin from the clip before atanh: atanh(1 - 2^-30) = 10.7; 1 - 2^-30 rounds to 1.0 in
 #: float32 (anything below 2^-25 does), so a saturated LQR control is reproduced exactly
 BASE_EPS = 2.0 ** -30
+
+
+def scale_steps(optimizer: torch.optim.Optimizer, scale: float) -> None:
+    """Make every ``step`` of ``optimizer`` use ``scale`` [-] times each parameter group's learning rate: the rate is
+    multiplied before the step and restored after it (torch's step hooks), so a schedule that sets the rate between
+    steps, and the optimiser's saved state, see the unscaled one."""
+    saved: list[float] = []
+
+    def before(opt, _args, _kwargs) -> None:
+        saved[:] = [group["lr"] for group in opt.param_groups]
+        for group in opt.param_groups:
+            group["lr"] = group["lr"] * scale
+
+    def after(opt, _args, _kwargs) -> None:
+        for group, rate in zip(opt.param_groups, saved, strict=True):
+            group["lr"] = rate
+
+    optimizer.register_step_pre_hook(before)
+    optimizer.register_step_post_hook(after)
 
 
 class NormalisedObservation(BaseFeaturesExtractor):
@@ -194,10 +223,24 @@ class ResidualSACPolicy(SACPolicy):
             raise ValueError(f"ResidualSACPolicy: needs the action space [-1, 1]^n (the LQR's normalised actions), "
                              f"got low {low.min()}..{low.max()}, high {high.min()}..{high.max()}")
         kwargs.setdefault("features_extractor_class", NormalisedObservation)
+        optimizer_kwargs = dict(kwargs.get("optimizer_kwargs") or {})
+        self.actor_lr_scale = optimizer_kwargs.pop("actor_lr_scale", None)
+        if self.actor_lr_scale is not None:
+            scale = self.actor_lr_scale
+            if isinstance(scale, bool) or not isinstance(scale, (int, float)) or not 0.0 < scale <= 1.0:
+                raise ValueError(f"ResidualSACPolicy: optimizer_kwargs.actor_lr_scale {scale!r} must be a number in "
+                                 f"(0, 1] (the actor's learning rate as a fraction of the critics')")
+            self.actor_lr_scale = float(scale)
+            kwargs["optimizer_kwargs"] = optimizer_kwargs
         super().__init__(observation_space, action_space, lr_schedule, **kwargs)
+        if self.actor_lr_scale is not None:
+            scale_steps(self.actor.optimizer, self.actor_lr_scale)
 
     def _get_constructor_parameters(self) -> dict:
-        return {**super()._get_constructor_parameters(), "residual_limit": self.residual_limit,
+        params = super()._get_constructor_parameters()
+        if self.actor_lr_scale is not None:  # SAC.load rebuilds the slower actor's optimiser
+            params["optimizer_kwargs"] = {**params["optimizer_kwargs"], "actor_lr_scale": self.actor_lr_scale}
+        return {**params, "residual_limit": self.residual_limit,
                 "residual_after_squash": self.residual_after_squash,
                 "residual_base_clipped": self.residual_base_clipped}
 
