@@ -245,6 +245,9 @@ ROTOR_DESIGN = Covered(  # the study above (rotor_design) and its inputs (design
         'and 67 %.',
         'With our craft that needs winds above about 25 m/s at 15,000 ft and about 32 m/s at 30,000 ft for much '
         'of the time.',
+        # craft_trim_tests prints the 15,000 ft craft's trim at 5160 m, +588 m from the design 4572 m: the page's
+        # 590 is 5160 - 4572 = 588 rounded to two figures (15,000 ft: the config's name)
+        'The 15,000 ft craft trims 590 m above the design altitude,',
     ),
     printed=(  # the page group rotor_design's whole output (docsite.printed_numbers: each number printed)
         Printed("rotor_design", (
@@ -256,7 +259,19 @@ ROTOR_DESIGN = Covered(  # the study above (rotor_design) and its inputs (design
             'cables.',
             '24.4 m/s at 15,000 ft (no change at 30,000 ft).',
             "- Roberts' other solidity reading, sigma = 0.075 ( ), is worse: 26.6 / 33.8 m/s.",
-            'and the craft needs a 230 m/s tip speed to stay up at all.')),
+            'and the craft needs a 230 m/s tip speed to stay up at all.',
+            # the study's P at the design winds: its rows 26 m/s (3.238 MW, 15,000 ft) and 33 m/s (3.257 MW, 30,000
+            # ft), seven rows apart, so one snippet each (were not_rerun)
+            "study's optimum at the design wind [MW] | 3.24", '3.26 | | tether tension')),
+        # tests/test_craft.py -s -k 35m_crafts_trim prints each craft's trim beside what it asserts (altitude within
+        # 15 % of the design, C_p below the ideal at the trimmed incidence): 5160 / 8669 m, 26.46 / 29.84 deg,
+        # 2.566 / 3.011 MW, 28.63 m/s at the 15,000 ft craft (were not_rerun: no command printed them)
+        Printed("craft_trim_tests", (
+            'craft altitude [m] | 5160 | 8669',
+            'pitch = incidence [deg] | 26.5 | 29.8',
+            'electrical power [MW] | 2.57 | 3.01',
+            'where it meets 28.6 m/s.',
+            'the altitude is within 15 % of the design;')),
     ),
     history=(
         History("2026-11-29", "laddermill_gym.rotorcraft.trim of the 35 m craft configs with the tether attachments at "
@@ -265,14 +280,8 @@ ROTOR_DESIGN = Covered(  # the study above (rotor_design) and its inputs (design
                     'no equilibrium near it, and the trim did not converge.',)),
     ),
     not_rerun=(
-        # the simulator's trim of the two craft configs (tests/test_rotor_design.py's trim: a test's assertions, no
-        # command prints them)
-        'craft altitude [m] | 5160 | 8669',
-        'pitch = incidence [deg] | 26.5 | 29.8',
-        'electrical power [MW] | 2.57 | 3.01',
-        "study's optimum at the design wind [MW] | 3.24 | 3.26",
+        # the trimmed crafts' tether tension: tests/test_craft.py's trim test neither asserts nor prints it, and no
+        # command prints the craft simulator's trim
         'tether tension at the craft [kN] | 72 | 85',
-        'The 15,000 ft craft trims 590 m above the design altitude, where it meets 28.6 m/s.',
-        'the altitude is within 15 % of the design;',
     ),
 )

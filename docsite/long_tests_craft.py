@@ -7,13 +7,17 @@ from __future__ import annotations
 from docsite.long_group import Long
 
 CRAFT_TESTS = {
-    # rotor.md: the closed forms' C_Q against the blade-element integration (the test prints each case's difference)
+    # rotor.md: the closed forms against the blade-element integration, the ideal variant against the actuator disk
+    # and the best collective within the blade limit against a scan (each test prints its differences)
     "rotor_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_rotor.py -k "closed_forms_against or '
-                        'near_axial"', "3 s", "rotor.md"),
+                        'near_axial or best_power_within"', "3 s", "rotor.md"),
     # reeling_tether.md: the hanging tether of 5 and 10 elements against the elastic catenary
     "reel_tether_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_reel_tether.py -k hanging_tether',
                               "2 s", "reeling_tether.md"),
     # power_curve.md: the depower rule's trims against their closed-form targets
     "depower_rule_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_power_curve_mill.py -k '
                                'depower_rule_trims', "2 s", "power_curve.md"),
+    # rotorcraft_design.md: Roberts' 35 m crafts trimmed in the simulator (altitude, incidence, power, the wind met)
+    "craft_trim_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_craft.py -k 35m_crafts_trim',
+                             "7 s", "rotorcraft_design.md"),
 }

@@ -133,7 +133,8 @@ def test_ideal_rotor_variant_reaches_the_actuator_disk_in_near_axial_flow(mu, al
     res = minimize_scalar(lambda t: -rotor_coefficients(params, mu, alpha, t).cp, bounds=(-1.2, 0.5),
                           method="bounded", options={"xatol": 1e-10})
     print(f"mu = {mu}, alpha_c = {alpha_deg} deg: C_p {-res.fun:.8f} against the ideal "
-          f"{ideal_power_coefficient(alpha):.8f}, difference {abs(-res.fun - ideal_power_coefficient(alpha)):.2g}")
+          f"{ideal_power_coefficient(alpha):.8f}, difference {abs(-res.fun - ideal_power_coefficient(alpha)):.2g} "
+          f"(tolerance {tol:g})")
     assert -res.fun == pytest.approx(ideal_power_coefficient(alpha), abs=tol)
     if alpha_deg == 89.0:
         assert -res.fun == pytest.approx(16.0 / 27.0, abs=1e-3)
@@ -162,13 +163,16 @@ def test_closed_forms_against_blade_element(mu, alpha_deg, theta_deg, cq_rel, id
     assert st.converged
     ct, ch, cq, a0, a1, b1 = blade_element(params.sigma, params.a, params.delta, params.B, params.gamma,
                                            mu, st.lam, st.theta0)
-    assert st.ct == pytest.approx(ct, rel=1e-9)
-    assert st.ch == pytest.approx(ch, rel=1e-9)
-    assert (st.a0, st.a1, st.b1) == pytest.approx((a0, a1, b1), rel=1e-9)
+    worst = max(abs(mine / theirs - 1.0) for mine, theirs in zip((st.ct, st.ch, st.a0, st.a1, st.b1),
+                                                                   (ct, ch, a0, a1, b1), strict=True))
     profile = params.sigma * params.delta * (1.0 + 3.0 * mu**2) / 8.0
     scale = abs(st.lam * st.ct) + abs(mu * st.ch) + profile
     print(f"mu = {mu}, alpha_c = {alpha_deg} deg, collective {theta_deg} deg: C_Q differs by "
-          f"{100 * abs(st.cq - cq) / scale:.2f} % of the terms")
+          f"{100 * abs(st.cq - cq) / scale:.2f} % of the terms; thrust, H-force and flapping by at most "
+          f"{worst:.1e} relative (tolerance 1e-9)")
+    assert st.ct == pytest.approx(ct, rel=1e-9)
+    assert st.ch == pytest.approx(ch, rel=1e-9)
+    assert (st.a0, st.a1, st.b1) == pytest.approx((a0, a1, b1), rel=1e-9)
     assert abs(st.cq - cq) <= cq_rel * scale
     # and the energy identity itself, term by term
     assert st.cq == pytest.approx(profile - st.lam * st.ct - mu * st.ch, rel=1e-12, abs=1e-15)
@@ -288,6 +292,9 @@ def test_best_power_within_limit_against_collective_scan(mu, alpha_deg, at_limit
     best = rotor.best_power_within_limit(params, mu, alpha_deg * DEG)
     thetas = limit_state.theta0 - np.radians(np.arange(0.0, 20.0, 0.01))
     cps = np.array([rotor_coefficients(params, mu, alpha_deg * DEG, t).cp for t in thetas])
+    print(f"mu = {mu}, alpha_c = {alpha_deg} deg: best collective within the limit {math.degrees(best.theta0):.2f} "
+          f"deg, C_p {best.cp:.4f} (scan {cps.max():.4f}); at the limit {math.degrees(limit_state.theta0):.2f} deg, "
+          f"C_p {limit_state.cp:.4f}")
     assert best.cp == pytest.approx(cps.max(), rel=1e-6, abs=1e-9)
     assert best.cp >= cps.max() - 1e-12
     assert best.tip_aoa <= 13.0 * DEG + 1e-12
