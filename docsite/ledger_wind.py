@@ -133,6 +133,9 @@ WIND = Covered(
              " in two runs at a higher load (2.5 vs 3.0 ms, 2.2 vs 2.5 ms). Drawing the field at a reset takes 3-16 "
              "ms.", "--out runs/gust_bench_v2/pumping # 16 s", "--out runs/gust_bench_v2/mill # 2 min 50 s"),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # MillTask.loop_extent() at LadderMill-v0's operating point, which tests/test_gusts_v2.py's slow grid test
+        # checks against the NTM grid and prints (-s) (was not_rerun)
+        Printed('mill_loop_extent_test', ('The loop spans 50 m (the stations) to 3440 m and p . e -100 to 689 m:',)),
         Printed('gusts_v1_ladder_chain', ('in turbulence both leave the aerodynamic tables after 7-11 s',)),
         # the mill's failures in the gust bench's CSV (--long gusts_v2_mill_printed, 2026-11-30, 392 s: as written)
         Printed('gusts_v2_mill_printed', (
@@ -158,8 +161,6 @@ WIND = Covered(
         'when the fade-in has brought the field to 50-90 % of its strength',
     ),
     not_rerun=(
-        # MillTask.loop_extent() (tests/test_gusts_v2.py checks that the grid covers it; no command prints it)
-        'The loop spans 50 m (the stations) to 3440 m and p . e -100 to 689 m:',
         # the slots' heights at the operating point, the EWS's shear at the loop's lowest and highest wings and the
         # scene's wind there, and slot 0's roll in NTM seed 0: worked in the gusts-v2 session (2026-11-2x); no
         # command prints them (the gust bench prints the failures' slots and times, checked above)

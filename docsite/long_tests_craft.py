@@ -20,4 +20,8 @@ CRAFT_TESTS = {
     # rotorcraft_design.md: Roberts' 35 m crafts trimmed in the simulator (altitude, incidence, power, the wind met)
     "craft_trim_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_craft.py -k 35m_crafts_trim',
                              "7 s", "rotorcraft_design.md"),
+    # wind.md: LadderMill-v0's loop extent against the NTM_IB grid (the slow test flies the scenario to the mill's
+    # failure first: 224 s and 123 s at a load of 5-7, 2026-11-30)
+    "mill_loop_extent_test": Long('python -m pytest -m "slow or not slow" -s tests/test_gusts_v2.py -k '
+                                  'grid_covers_every_point', "2-4 min", "wind.md"),
 }

@@ -154,6 +154,9 @@ def test_mill_turbulence_grid_covers_every_point_over_the_episode():
     env.reset(seed=[0])
     lo, hi, h_lo, h_hi, u = _grid_bounds(env.task)
     ext = env.task.loop_extent()
+    print(f"LadderMill-v0's loop at its operating point: heights {ext.heights[0]:.1f} to {ext.heights[1]:.1f} m, "
+          f"p . e {ext.along_wind[0]:.1f} to {ext.along_wind[1]:.1f} m; the grid {h_lo:.0f} to {h_hi:.0f} m high, "
+          f"{lo:.0f} to {hi:.0f} m along the wind")
     assert lo <= ext.along_wind[0] - u * s.duration and ext.along_wind[1] <= hi
     assert h_lo <= ext.heights[0] and ext.heights[1] <= h_hi
     env.close()
