@@ -1,7 +1,7 @@
 """The ledger entry (:mod:`docsite.page_ledger`) of docs/pumping.md: the LQR cycle's table and its static-kite and
 eqs. 10-14 ranges checked against ``pumping_cycle --controller lqr`` (25-35 s); the winch, envs' and crosswind
 controller's settings given; the crosswind cycle (``pumping_crosswind``) and the power curve (``pumping_power_curve``)
-checked against their commands; the evaluation tables, the PPO run and the turbulence hours not re-run (their
+checked against their commands; the evaluation tables, the PPO run and seed 1's turbulence hour not re-run (their
 commands named); ratios worked from checked figures derived."""
 
 from __future__ import annotations
@@ -66,6 +66,12 @@ PUMPING = Covered(
     groups=("pumping_cycle_lqr", "pumping_crosswind", "pumping_power_curve"),
     checks=PUMPING_CHECKS + CROSSWIND_CHECKS + RATIO_CHECKS,
     given=(
+        # the scene's reel-out angle of attack (configs/scenes/pumping_kite.yaml alpha_deg 8.0)
+        "the reel-out elevator is the scene's trim at 8 deg",
+        # the slow hour's settings (tests/test_pumping_v1.py: NTM IB at 10.39 m/s, seed 0) and the versions
+        "**Turbulence.** Under IEC NTM class IB turbulence at the start height's 10.39 m/s (gusts-v2's NTM_IB of v0 "
+        'made an hour long), the crosswind controller flies v1 for the whole hour with no flight failure and no '
+        'numerical failure ( , slow, seed 0):',
         # a list's number; pumping_v1_eval's seeds (--episodes 2) and scenario
         'at 10-20 m/s. 2. **The difference', "seeds 0-1, v1's registered scenario):",
         'within 30 % where the single element is not;',  # the criterion
@@ -216,6 +222,13 @@ PUMPING = Covered(
         "About 16 times the static cycle's 1.9 kW;",
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # tests/test_pumping_cycle.py -s prints the elevators it asserts (were not_rerun: a Python session's)
+        Printed('pumping_elevator_tests', (
+            '(-0.52 deg).',
+            "The reel-in elevator balances the tethered wing's pitching moment about its attachment at alpha_in ( , "
+            '+2.53 deg);')),
+        # tests/test_pumping_v1.py's slow hour prints the cycles and the net energy it asserts (was not_rerun)
+        Printed('pumping_ntm_hour_test', ('14 cycles, 124.4 MJ net (34.6 kW),',)),
         Printed('pumping_reel_in_16_7', (
             'mean reel-in tension 29.5 kN, net -43.5 kW over the second cycle',
         )),
@@ -332,21 +345,14 @@ PUMPING = Covered(
     ),
     not_rerun=(  # tests/test_pumping_v1.py's slow hour in NTM turbulence asserts survival; its figures are the
         # diagnosis script's, which no command prints
-        # the scene's reel-out trim and the reel-in elevator (sim.statics.pitch_trim_alpha in a Python session; no
-        # command prints them)
-        "the reel-out elevator is the scene's trim at 8 deg (-0.52 deg).",
-        "The reel-in elevator balances the tethered wing's pitching moment about its attachment at alpha_in ( , "
-        '+2.53 deg);',
         # the cycle times' ratio: power_curve writes the simulated and the model's cycle times into its JSON (--out),
         # it prints neither
         'the simulated cycle 3-4 % shorter.',
         "over seed 1's hour the largest alpha is 59.3 deg (seed 0:",
         '40.7 deg), against the 60.8 deg at which seed 0 used to fail, and some entries still start on a slack '
         'tether (least drum tension in an entry 57 N in seed 0, 159 N in seed 1).',
-        "**Turbulence.** Under IEC NTM class IB turbulence at the start height's 10.39 m/s (gusts-v2's NTM_IB of v0 "
-        'made an hour long), the crosswind controller flies v1 for the whole hour with no flight failure and no '
-        'numerical failure ( , slow, seed 0):',
-        '14 cycles, 124.4 MJ net (34.6 kW), 4 recoveries; seed 1:',
+        # the recoveries are counted by the diagnosis script, not by the test (which prints cycles and energy)
+        '4 recoveries; seed 1:',
         "14 cycles, 120.9 MJ, 6 recoveries (the script of the diagnosis is the test's loop with a log of phase, "
         'alpha, beta, elevation, tension and airspeed per step;',
     ),

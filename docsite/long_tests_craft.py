@@ -24,4 +24,10 @@ CRAFT_TESTS = {
     # failure first: 224 s and 123 s at a load of 5-7, 2026-11-30)
     "mill_loop_extent_test": Long('python -m pytest -m "slow or not slow" -s tests/test_gusts_v2.py -k '
                                   'grid_covers_every_point', "2-4 min", "wind.md"),
+    # pumping.md: the scene's reel-out trim elevator and the reel-in elevator (moment balance at alpha_in)
+    "pumping_elevator_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_pumping_cycle.py -k '
+                                   '"phases_from or reel_in_elevator"', "10 s", "pumping.md"),
+    # pumping.md: PumpingKite-v1's hour of crosswind cycles under NTM IB turbulence, seed 0 (the slow test)
+    "pumping_ntm_hour_test": Long('python -m pytest -m slow -s tests/test_pumping_v1.py -k an_hour_of_crosswind',
+                                  "121 s (load 5, 2026-11-30)", "pumping.md"),
 }

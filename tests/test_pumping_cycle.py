@@ -50,6 +50,8 @@ def test_phases_from_observations(task):
     assert v_out[8] == 0.0  # a wind blowing towards the winch never commands reel-in during reel-out
     u = ctl.controls(obs)
     np.testing.assert_allclose(u[phase == PHASE_IN, 3], -5.0)
+    print(f"reel-out elevator (the scene's trim) {math.degrees(task.u_trim[0]):+.2f} deg, reel-in elevator "
+          f"{math.degrees(ctl.u_in[0]):+.2f} deg")
     np.testing.assert_allclose(u[phase == PHASE_OUT, 0], task.u_trim[0])
     np.testing.assert_allclose(u[phase != PHASE_OUT, 0], ctl.u_in[0])
     a, _ = ctl.predict(obs)
@@ -62,6 +64,7 @@ def test_reel_in_elevator_balances_the_pitching_moment(task):
     wt = task.scene.assembly.wing(0)
     alpha = task.pumping.cycle.alpha_in
     e = reel_in_elevator(wt, alpha)
+    print(f"reel-in elevator at alpha_in {math.degrees(alpha):.1f} deg: {math.degrees(e):+.2f} deg")
     c = table_spline(wt.aero)(alpha)
     k = AERO_INDEX
     cl = c[k["CL"]] + c[k["CLde"]] * e
