@@ -273,7 +273,9 @@ BENCHMARKS = Covered(
     ),
     not_rerun=(
         # the eigenvalue estimate just after a transfer (moving_cable.md's, likewise not re-run) and the operating
-        # point's search lengths of the three mills: laddermill bench prints neither
+        # point's search lengths of the three mills: laddermill bench prints neither; `laddermill stable-step
+        # laddermill` estimates at the scene's start only (0.01542 s, -15.44 +- 190i 1/s on 2026-11-30), no command
+        # at a transfer; the search length is OperatingPoint.t_settle_s, in its note but printed by no command
         '0.0122 s just after a transfer',
         "The bisection's in-plane disturbance later in the period misses the short first element's axial mode "
         "right after a transfer (-30 +- 240i 1/s), which the eigenvalue estimate finds;",

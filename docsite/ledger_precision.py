@@ -35,6 +35,7 @@ WORK_PRECISION = Covered(
                                                "The estimate holds"), strict=True))),
     given=(
         'at dt = 0.025 s gives "dt = 0.025 s',  # the stable-step test's step (its message Printed)
+        'an injected 1e12 m/s node speed',  # stress_cases.INJECTIONS' "node velocity 1e12 m/s"
         *controller_measure.GIVEN,  # the controller-measure section (docsite/ledger_controller_measure.py)
         'Result of the full run (four scenes, 1 h held, 10,000 episodes per env; ), re-run on',
         # whip_spectrum's step forcing and its methods' steps (the commands' inputs)
@@ -188,6 +189,13 @@ WORK_PRECISION = Covered(
         'ros34pw2:0.0666666666666667 ros2t:0.0666666666666667 rk4:0.0153846153846154 # 7 min',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # tests/test_stress.py -s -k injections_are_reported prints the report it holds, "integration failed at t =
+        # 0.05 s (non-finite state); the state: node 0 x [m] is nan (state entry 13): a non-finite state" (the
+        # simulator's own message inside the stress row's wording); the injected 1e12 m/s is an input (given)
+        Printed('stress_injection_test', (
+            'Fixed on the way: a non-finite state entry is now named as such (time, body, quantity: "t = 0.05 s: '
+            'node 0 x [m] is nan (state entry 13)")',
+        )),
         # tests/test_stable_step.py -k past_its_stable's message (-5.092 until 2026-11-30); its step is given
         Printed('test_figures_quick', (
             'is above the estimated stability limit of RK4 at this state, 0.02445 s (eigenvalue -5.093+118.6j 1/s)',
@@ -304,9 +312,6 @@ WORK_PRECISION = Covered(
         "kernel's grid gives the *next* segment's slope at a grid point, and time roundoff decides which side a "
         'stage lands on. Changes such runs (the golden direction-step cases by 1.2e-6 (tethered wing) and 7.4e-5 '
         '(chain) relative).',
-        'Fixed on the way: a non-finite state entry is now named as such (time, body, quantity: "t = 0.05 s: node 0 '
-        'x [m] is nan (state entry 13)") instead of through the derivative it spoils; the failure diagnosis names '
-        'the fastest cable node (an injected 1e12 m/s node speed was reported through the wing it dragged along).',
     ),
     history=(History('2026-11-24', 'laddermill stress tethered_wing ladder_chain roberts_flying_model laddermill',
                      'the full stress run of 2026-11-24 (ec22606 and after)',

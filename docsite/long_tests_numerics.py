@@ -12,8 +12,19 @@ NUMERICS_TESTS = {
                                    '"catenary or converges"', "5-14 s", "numerics.md"),
     "moving_end_jacobian_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_moving_end_jacobian.py '
                                       '-k finite_differences', "17 s", "numerics.md"),
+    # the polished starts of ladder_chain at n = 2, 4, 8 (their mass-weighted RMS; n = 8 alone about 155 s)
+    "initial_elements_at_rest": Long('python -m pytest -m "slow or not slow" -s tests/test_initial_elements.py -k '
+                                     '"at_rest and ladder_chain"', "175-319 s (2026-11-30, nice 15, load 1-6)",
+                                     "numerics.md"),
+    # TetheredWing-v0 on RK4 through a 5x wind step: the env's warning names the estimate and its eigenvalue
+    "rk4_wind_step_test": Long('python -m pytest -m "slow or not slow" -s tests/test_env_substeps.py -k '
+                               'rk4_past_its_stable', "27 s (2026-11-30, nice 15, load 6)", "numerics.md"),
     "alpha_rate_pole_test": Long('python -m pytest -m "slow or not slow" -s tests/test_alpha_rate_limit.py -k '
                                  'names_the_alpha', "26 s", "numerics.md"),
+    # work_precision.md: the stress suite's injection report on the tethered wing (the small version's test)
+    "stress_injection_test": Long('python -m pytest -m "slow or not slow" -s tests/test_stress.py -k '
+                                  'injections_are_reported', "16 s (2026-11-30, nice 15, load 5)",
+                                  "work_precision.md"),
     # work_precision.md, features.md: RK4 across a wind kink, split and unsplit (the batched case alone compiles for
     # minutes, so it is left out)
     "breakpoint_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_breakpoints.py '

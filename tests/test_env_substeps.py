@@ -104,8 +104,10 @@ def test_rk4_past_its_stable_step_in_the_strongest_wind_steps_finer(monkeypatch)
     n, info = _run(kept, ctrl, 400)
     assert n < 40 and "outside the aerodynamic range" in info["failure_reason"]
     monkeypatch.undo()
-    with pytest.warns(UnstableStepWarning, match=r"physics_dt = 0.05 s .*\(speed factor 5\): stepping at 0.01667 s"):
+    named = r"physics_dt = 0.05 s .*\(speed factor 5\): stepping at 0.01667 s"
+    with pytest.warns(UnstableStepWarning, match=named) as seen:
         env = gym.make(TW, disturbances=STEP5X, episode_time=20.0, scene_options=RK4)
+    print(next(w.message for w in seen if "speed factor" in str(w.message)))  # the estimate and eigenvalue (pytest -s)
     assert env.unwrapped.task.scene.settings.dt == pytest.approx(0.05 / 3)
     assert _run(env, ctrl, 400)[0] == 400
 
