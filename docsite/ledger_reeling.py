@@ -39,6 +39,10 @@ REELING = Covered(
     groups=("tether_convergence", "reeling_power_curve"),
     checks=REELING_CHECKS + CURVE_CHECKS + RATIO_CHECKS,
     given=(
+        # the static cycle's tether: the 300 m start and Delta L 200 m (configs/pumping/pumping_kite_reeling.yaml);
+        # the re-run's date
+        'the static wing holds up little of 300-500 m of tether,',
+        'which lies on the ground near the winch; , re-run 2026-11-30;',
         '3. **Within the phases** (eqs.',  # a list's number
         '(Re-run 2026-11-30; as first written on',  # the re-run's date
         "the 40 m elements' weight and drag take almost nothing of it in crosswind flight);",  # the element length
@@ -124,6 +128,10 @@ REELING = Covered(
         "The static cycle's 1.9 kW on the single element ([the pumping page])",
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # the static LQR cycle on the reeling tether: pumping-cycle's table prints each cycle's sim W (-4631, -2487)
+        # and mean reel-out tension (131, 346 N) (were not_rerun: a Python session's; its -2488 W is History)
+        Printed('reeling_lqr_cycle', (
+            '-4631 W and -2487 W over its first two cycles (reel-out tension 131 and 346 N:',)),
         # tests/test_reel_tether.py prints the two cases' errors beside its assertion
         Printed("reel_tether_tests", (
             'a hanging tether of 5 and 10 sag-corrected elements between two fixed points against the elastic '
@@ -162,6 +170,10 @@ REELING = Covered(
         History('2026-11-29', 'python -m laddermill_gym.studies.pumping.tether_convergence --start-length 200 '
                 '--lengths 200 40', 'the 200-500 m run as first written (78cc615), before the crosswind controller '
                 'changed (0db432c, e1ce3ac)', ('bisected: 191-521 m, 49982 W and 34567 W.)',)),
+        History('2026-11-29', 'PumpingTask(config="pumping_kite_reeling") and PumpingCycleController with the lateral '
+                'LQR in a Python session, three cycles (df64aed)', 'the static LQR cycle on the reeling tether as '
+                'first written (re-run 2026-11-30 by reeling_lqr_cycle: -2487 W)',
+                ('-2488 W in the session of 2026-11-29)',)),
         History('2026-11-29', 'laddermill pumping-cycle --reel-element-length 40 --cycles 2 at 1cc497c and before '
                 '0db432c',
                 'runs of earlier code (a first version of the reeling tether; the crosswind controller before '
@@ -175,11 +187,9 @@ REELING = Covered(
     not_rerun=(
         # the cycle times' ratio: power_curve writes both cycle times into its JSON (--out), it prints neither
         '4-5 % shorter,',
-        # tests/test_reel_tether.py's assertions (a test, not a printed figure) and the static LQR cycle
-        # on the reeling tether (a Python session, no command)
+        # the static LQR cycle's ground contacts on the reeling tether (a Python session of 2026-11-29 with a
+        # count per step; pumping-cycle prints no ground contacts)
         'up to 4 nodes on the ground at once, in 33 % of the control steps, the first at t = 173.5 s in the first '
         'reel-in (where the 3-element chain used to stop). It makes no power:',
-        '-4631 W and -2488 W over its first two cycles (reel-out tension 131 and 346 N:',
-        'the static wing holds up little of 300-500 m of tether, which lies on the ground near the winch).',
     ),
 )

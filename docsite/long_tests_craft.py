@@ -30,4 +30,8 @@ CRAFT_TESTS = {
     # pumping.md: PumpingKite-v1's hour of crosswind cycles under NTM IB turbulence, seed 0 (the slow test)
     "pumping_ntm_hour_test": Long('python -m pytest -m slow -s tests/test_pumping_v1.py -k an_hour_of_crosswind',
                                   "121 s (load 5, 2026-11-30)", "pumping.md"),
+    # reeling_tether.md: the static LQR-assisted cycle on the reeling tether (its first two cycles' power and
+    # reel-out tension)
+    "reeling_lqr_cycle": Long("laddermill pumping-cycle --config pumping_kite_reeling --controller lqr --cycles 2",
+                              "25-80 s (load 3-5, 2026-11-30)", "reeling_tether.md"),
 }
