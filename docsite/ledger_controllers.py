@@ -14,7 +14,7 @@ W, C, CS = "~{wing_controllers[%s]}", "~{chain_controllers[%s]}", "~{craft_stabi
 
 CONTROLLERS = Covered(
     groups=('wing_controllers', 'chain_controllers', 'mill_v1_controllers', 'lateral_study', 'craft_stability',
-            'rotorcraft_evaluate'),
+            'rotorcraft_evaluate', 'simulate_laddermill'),
     checks=((r"open-loop lateral modes ([\d.]+) \+- ([\d.]+)j 1/s", ("~" + LS % (3, 0), "~" + LS % (3, 1))),
             (r"a slow real mode at ([\d.]+) 1/s", ("~" + LS % (5, 0),)),
             (r"wide swings \(([\d.]+) m to the side\)", (W % "open_loop][dy",)),
@@ -35,6 +35,8 @@ CONTROLLERS = Covered(
             (r"closed loop max \|z\| = ([\d.]+)\) holds every wing within ([\d.]+) m for the (\d+) s",
              (C % "central_z", C % "central][dy", C % "central][length")),
             (r"The trimmed craft makes ([\d.]+) kW\.", ("{rotorcraft_evaluate[lqr][power_kW]}",)),
+            # LadderMill-v0's start: the periodic motion simulate --start periodic finds (66.1 kW; was not_rerun)
+            (r"from the periodic operating point, (\d+) kW;", ("~{simulate_laddermill[periodic_kW]}",)),
             (r"grows at ([\d.]+) 1/s, a period", (CS % "scan][v10][growth",)),
             (r"critical wind speed of ([\d.]+) m/s", (CS % "critical",)),
             # worked from craft_stability's printed lines (until 2026-11-30 derived entries): 2 pi / the 10 m/s
@@ -111,8 +113,6 @@ CONTROLLERS = Covered(
         ' 1 s):',
     ),
     not_rerun=(
-        # the periodic operating point's mean power (docs/moving_cable.md's); no command of this page prints it
-        '66 kW; four disturbances; (and , , ), after :',
         # the transfer_phase design of the v1 mill (a config variant the repository does not keep) and its
         # episode: no command of the repository prints them
         "No LQR command reaches the v1 authority's bound (clipped fraction 0). v0's design, the gain on the lateral "
