@@ -16,7 +16,7 @@ MILL_FAST = Covered(
     checks=v2_rows() + ((r"the transient's peak, (\d\.\d+) of the breaking load = (\d+) kN",
                          ("{fast_mill_v2_step[peak_ratio]}", "~{fast_mill_v2_step[peak_kN]}")),),
     given=(
-        '# The mill at 4-5 m/s:',
+        '# The mill at 4-5 m/s:', 'With 7 slots',  # the near-top rule's setting (fast_mill --top-slots 7)
         # the start table's scene elevators and the periodic search's length (fast_mill case --max-time's default)
         '| 1.3 / 2.5 (the scene)', 'not periodic in 1,500 s',
         # the horizontal tail's x in wing_data.md's mass build-up (-4.81 m about v1's CG; derive_wing's, checked there)
@@ -75,14 +75,6 @@ MILL_FAST = Covered(
         "After the paper's 0.01 rad direction step at t = 1 s the open-loop mill leaves the aerodynamic data as "
         "v1's does, but later:",
         "the scene's ramp set to 100 V_c s at 1 and 5 m/s):",
-    ),
-    not_rerun=(
-        # v1's open-loop end after the paper's step: printed by python -m pytest -m slow -s tests/test_laddermill_v1.py
-        # -k lqr_holds (300 s of the 101-wing mill; no long group runs it)
-        'v1: about 7 s).',
-        # the trims at -4 and -0.5 deg: sim.statics.pitch_trim_alpha in a Python session (the page gives the call);
-        # fast_mill prints neither
-        'With 7 slots at -4 deg (trim alpha 9.65 deg, against 4.76 deg at -0.5 deg: , the wing at rest in 10 m/s)',
     ),
     derived=(
         # the v2 step's inputs and products: the scene's 8 m/s wind x the command's --wind-factor 1.125; the 0.4 x
@@ -187,7 +179,13 @@ MILL_FAST = Covered(
         )),
         # --long mill_v2_lqr (2026-11-30, 330 s) named three pieces it does not print: the settings (the scene's 200 s
         # ramp, the test's 100 V_c s ramp, with the paper's 0.01 rad step, which had matched a pytest duration's
-        # 0.005 by chance) are given, v1's figures not_rerun
+        # 0.005 by chance) are given, v1's open-loop end mill_v1_lqr's (2026-11-30: until then not_rerun)
+        # v1's open-loop end after the paper's step ("open_loop: end 7.15 s", --long mill_v1_lqr, 2026-11-30)
+        Printed('mill_v1_lqr', ('v1: about 7 s).',)),
+        # the v1 wing's trims at -4 and -0.5 deg in 10 m/s (sim.statics.pitch_trim_alpha, which trim_slope prints:
+        # "ascending -4.00 ... 9.65/0.98", "descending -0.50 ... 4.76/0.61"; until 2026-11-30 not_rerun); 7 slots given
+        Printed('trim_v1_top_rule', ('at -4 deg (trim alpha 9.65 deg, against 4.76 deg at -0.5 deg: , the wing at '
+                                     'rest in 10 m/s)',)),
         Printed('mill_v2_lqr', (
             'periodic at t = 975 s, 102.2 kW).',
             "at 16.85, 16.20 and 15.65 s at 1, 2 and 5 m/s (a wing near the loop's top at beta above 60 deg;",

@@ -98,7 +98,9 @@ POINTMASS_MILL = Covered(
     # atan(2 / 10) = 11 deg; the 7 m element stretched by 1.5 m
     derived=("stretch it by 20 %", "about 11 deg"),
     # the straight-string oracle's slack step (tests/test_pointmass_mill.py); the rejected variants' runs (dated)
-    not_rerun=("carries 39 kN over its 21.6 kN",),  # the straight-string oracle's assertion
+    # the paper's insertion rule on tests/test_pointmass_mill.py's straight string: the test asserts the new node's
+    # velocity only, no command prints the second element's 39 kN (21.6 kN = EA eps is that string's setting)
+    not_rerun=("carries 39 kN over its 21.6 kN",),
     history=(History("2026-11-24", "mill_simulator of the rejected layouts (the paper's 1/10 and 11/10 at the element "
                      "scale; the static start) in a Python session", "the rejected variants (d017924, e7aff00)",
                      ("broke down (speed limit) 35 s after its start",
@@ -128,12 +130,15 @@ PM_GIVEN = (
     "centre 0.75 m ahead", "(1 m elements,", "turned by 0.01 rad", "ramped over 1 s", "checkpoint segments of 1, 3 "
     "and 1024 nodes", "omega = 2 sqrt(k/m) sin(kappa l0 / 2) (modes 1 and 17 of 20,", "1/sqrt(1 + (w dt)^2)",
     "at one 70 m element per piece, implicit step 25 ms", "Open loop over 120 s", "over 2400 steps", "(at 70 m "
-    "elements:", "40 control periods (2 s)", "(35 s) from the start", "after 12 periods", "(102.6 kW at 70 m elements)",
+    "elements:", "40 control periods (2 s)", "(35 s) from the start", "after 12 periods", "at 70 m elements)",
     "on a zigzag 1 cm string with 3 g nodes", "3x3 pivots", "(PointMassChain-v0", "at 1 m elements;", "about 20 "
     "1/s", "rerun the "
     "benchmark",
     "the 24 MB state once", "L = 1/2 rho S C_L(alpha) |V| (d x V), D = -1/2 rho S C_D(alpha)",
     "(clipped at 0)", "and DP5(4) seven", "dt < mu l0^2/(2 DA)", "at dt omega >> 1",
+    "settled 600 s from the rigid equilibrium,",
+    # test_catenary_at_one_centimetre's bound on H's relative error (fast set; pytest -s prints the measured one)
+    "and to 1e-6 at 1 cm (11,000 elements)",
     "then the chunks of P = 4", "one step of (500,000 nodes)", "On a zigzag 1 cm Dyneema string with 3 g nodes",
     "S - S D'^{-1} S", "both are P = 2,", "runs 20 implicit steps", "must be 0 and", "numba 0.68,", "a 16-core "
     "Intel Xeon")
@@ -186,11 +191,21 @@ PM_PRINTED = (
     )),
     # PointMassChain-v0 open loop over 120 s: "open_loop 1455.64 120.0 6.9404 ..." (return, length, max |dy| [m])
     Printed("pointmass_chain_open_loop", ('return 1456', 'up to 6.9 m sideways')),
-    Printed("test_figures_quick", ('to 3.2e-15',)),  # -k banded's largest (n = 5003, P = 7)
+    Printed("test_figures_quick", ('to 3.2e-15',  # -k banded's largest (n = 5003, P = 7)
+                                   'base tension 178.5 kN')),  # -k settled_chain: 178.51 kN (2026-11-30)
+    Printed("pointmass_fidelity", ('against 178.9 kN',)),  # the fidelity study's point-mass first piece
+    # tests/test_pointmass_mill_env.py -s -k power_term prints the reward's reference power (the first period's)
+    # the rigid wing's sideways oscillation (docs/lateral_stability.md's default wing: its doubling time)
+    Printed("lateral_weathercock", ('doubles every 6.2 s',)),
+    Printed("pointmass_mill_env_start", ('from the start, 102.6 kW', '(102.6 kW')),
+    # the point-mass mill env's start: the rigid run's periodic time (periodic_mill_start's t0) and the 70 m string's
+    # converged power, as the study prints them (pointmass_mill.md's page group pointmass_mill parses the same output)
+    Printed("pointmass_mill_study", ('t0 = 1135 s', 'the converged point-mass motion gives 82.4 kW',
+                                     "converged motion's 82.4 kW")),
     Printed("pointmass_solver_tests", (  # tests/test_pointmass_threads.py and _oracles.py print what they assert
         'by up to 3.1e-11 of the largest velocity', 'backward error of 3e-12 to 5.5e-12,',
         'its backward error is 5e-12', "against solve_banded's 4.8e-17", "against LAPACK's 4.8e-17",
-        'agree to 1.1e-7',
+        'agree to 1.1e-7', 'and 4.5e-13 m',  # P = 7's positions, 9e-17 of the largest (5 km)
         "(H = 651.998593 N) with the oracle's -1.4e-3 and -8.9e-5 relative errors at 16 and 64 elements (second "
         "order)",
     )),
@@ -205,17 +220,8 @@ PM_NOT_RERUN = (
     '(speeds over 1000 m/s within seconds at 256 elements)',
     'within about 10 s and stays (node speeds 1e-10 m/s after 120 s)',  # a settling run no command prints
     'by 2.5e-11 of the largest velocity (0.087 m/s) and 9e-13 m in position;',
-    'and 4.5e-13 m',  # pointmass_solver_tests prints the positions relative (up to 9e-17 of the largest)
     '(condition number 3.3e5)',
     'at 20,000 nodes (5 steps, 1 and 2 threads) and within 2.8e-17 m/s in 36 of 1,000 nodes',
-    'doubles every 6.2 s',
-    'and to 1e-6 at 1 cm (11,000 elements)',  # test_catenary_at_one_centimetre's bound (its measured value unprinted)
-    # tests/test_pointmass_env.py -s -k settled_chain prints 178.51 kN (PointMassChain-v0's start; 2026-11-30, issue 33
-    # point 6, the page's 178.7 of 2026-11-24 corrected): no long group runs that test
-    'settled 600 s from the rigid equilibrium, base tension 178.5 kN against 178.9 kN',
-    't0 = 1135 s',
-    '102.6 kW (the converged point-mass motion gives 82.4 kW',
-    "converged motion's 82.4 kW",
 )
 
 PMD = "{pointmass_data[%s]}"  # docs/pointmass.md's closed forms

@@ -11,6 +11,17 @@ STRING_TESTS = {
     "pointmass_solver_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_pointmass_threads.py '
                                    'tests/test_pointmass_oracles.py -k "backward or chunks_match or second_order"',
                                    "4-16 s", "pointmass.md"),
+    # pointmass.md: the point-mass mill env's start (the rigid run to periodic motion, then one point-mass period):
+    # the reward's reference power, as the test prints it
+    "pointmass_mill_env_start": Long('python -m pytest -m "slow or not slow" -s tests/test_pointmass_mill_env.py -k '
+                                     'power_term', "79 s (2026-11-30, nice 15, load 5-6)", "pointmass.md"),
+    # pointmass.md, wing_data.md: the point-mass mill study (the page group pointmass_mill of pointmass_mill.md runs
+    # the same command and parses its table), for the figures the other pages repeat from its printed lines
+    "pointmass_mill_study": Long("NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.pointmass.pointmass_mill",
+                                 "186 s (2026-11-30, nice 15, load 4-5)", "pointmass.md, wing_data.md"),
+    # pointmass.md: the rigid tethered wing's sideways growth (lateral_stability.md's default row, its doubling time)
+    "lateral_weathercock": Long("python -m laddermill_gym.studies.lateral.lateral_study --sweeps weathercock --out "
+                                "results/long/lateral_weathercock.png", "12 s (2026-11-30, nice 15)", "pointmass.md"),
     # pointmass.md: PointMassChain-v0 open loop through the direction step
     "pointmass_chain_open_loop": Long("laddermill evaluate --env laddermill_gym/PointMassChain-v0 --controllers "
                                       "open_loop --episodes 1 --episode-time 120 --out "
@@ -18,6 +29,12 @@ STRING_TESTS = {
     # mill_fast.md: LadderMill-v1 under random actions after the paper's step (the test prints the median of 10 seeds)
     "mill_v1_random_actions": Long('python -m pytest -m "slow or not slow" -s tests/test_laddermill_v1.py -k '
                                    'random_actions', "35 s", "mill_fast.md"),
+    # mill_fast.md: v1's LQR and open loop after the paper's step (the open loop's end, as the test prints it)
+    "mill_v1_lqr": Long("python -m pytest -m slow -s tests/test_laddermill_v1.py -k lqr_holds",
+                        "135 s (2026-11-30, nice 15, load 5-6)", "mill_fast.md"),
+    # mill_fast.md: the v1 wing's trims at the near-top rule's -4 deg and the descending -0.5 deg (the study's table)
+    "trim_v1_top_rule": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v1 --elevators -4 -0.5",
+                             "5 s (2026-11-30)", "mill_fast.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),

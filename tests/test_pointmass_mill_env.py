@@ -49,6 +49,7 @@ def test_power_term_is_the_generator_power_of_the_observed_ground_tensions(env):
         assert info["power_W"] == pytest.approx(gen["mechanical_W"], rel=1e-9)
         assert info["cable_speed_m_s"] == pytest.approx(gen["cable_speed_m_s"], rel=1e-12)
     # the mill's operating point pulls: between the rigid mill's 66.1 kW and twice it (docs/pointmass.md)
+    print(f"reward's power reference (first period's mean power from the start) {task.p_ref / 1e3:.1f} kW")
     assert 66e3 < task.p_ref < 132e3
 
 
