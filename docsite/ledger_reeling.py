@@ -114,6 +114,9 @@ REELING = Covered(
         '(about 6 minutes on the shared 2-core machine at a load of 7):',
     ),
     derived=(
+        # 1 - t_cycle / schmehl_matched_cycle_s over the rows of --long reeling_power_curve_json's JSON (8-20 m/s):
+        # 1 - 249.95 / 263.80 = 5.3 % at 8 m/s ... 1 - 142.85 / 148.66 = 3.9 % at 20 m/s
+        '4-5 % shorter,',
         # closed forms worked from the page's inputs, or from the checked table
         'the node above it oscillates at sqrt(3 EA / (mu l_d l_n)) = 735 rad/s at 10 m of 40 m.',
         '735 rad/s at 40 m of the 25 mm tether (EA 2.16e7 N, 0.3 kg/m).',
@@ -185,8 +188,6 @@ REELING = Covered(
         )),
     ),
     not_rerun=(
-        # the cycle times' ratio: power_curve writes both cycle times into its JSON (--out), it prints neither
-        '4-5 % shorter,',
         # the static LQR cycle's ground contacts on the reeling tether (a Python session of 2026-11-29 with a
         # count per step; pumping-cycle prints no ground contacts)
         'up to 4 nodes on the ground at once, in 33 % of the control steps, the first at t = 173.5 s in the first '

@@ -34,4 +34,13 @@ CRAFT_TESTS = {
     # reel-out tension)
     "reeling_lqr_cycle": Long("laddermill pumping-cycle --config pumping_kite_reeling --controller lqr --cycles 2",
                               "25-80 s (load 3-5, 2026-11-30)", "reeling_tether.md"),
+    # pumping.md, reeling_tether.md: the power curves with their JSON (each row's simulated cycle time t_cycle and
+    # the matched model's schmehl_matched_cycle_s, whose ratio the pages quote; the runs print neither)
+    "pumping_power_curve_json": Long("python -m laddermill_gym.studies.pumping.power_curve --out "
+                                     "results/long/pumping_power_curve", "117 s (load 5, 2026-11-30)", "pumping.md",
+                                     ("results/long/pumping_power_curve/pumping_power_curve.json",)),
+    "reeling_power_curve_json": Long("python -m laddermill_gym.studies.pumping.power_curve --reel-element-length 40 "
+                                     "--out results/long/reeling_power_curve", "128 s (load 5, 2026-11-30)",
+                                     "reeling_tether.md",
+                                     ("results/long/reeling_power_curve/pumping_power_curve.json",)),
 }
