@@ -36,6 +36,7 @@ POWER_CURVE = Covered(
             (r"crosses 200 kW between 3 m/s \(([\d.]+) kW\) and 4 m/s \(([\d.]+) kW\); at the paper's two speeds it "
              r"gives ([\d.]+) kW \(1 m/s", (FM % 3, FM % 4, FM % 1))),
     given=GIVEN_REPLAY + (
+        '2 m/s with its',  # the v1 mill's V_c 2 m/s: a --speeds setting of power_curve_v1 (its 152.9 kW: Printed)
         'Issue 30 point 3 asks what a wind-energy user asks first: the mean electrical power against the cable '
         "speed V_c at the paper's wind, and the best V_c and its power against the wind speed. One command, ( ), "
         "writes , and ; with its defaults it runs the whole curve (the paper's wind's V_c grid and an adaptive "
@@ -126,6 +127,9 @@ POWER_CURVE = Covered(
             'prints C_L,trim at 8 m/s: 1.30 ascending, 1.10 descending)',
             # the v2 descending trim at 10 m/s air speed (V_c 2 m/s in the paper's wind): its table's 6.78/0.91
             'the v2 descending wings fly at C_L 0.91 (chosen so the descending leg stays taut on the way',
+            # the v1 mill's descending trim at the same 10 m/s air speed (V_c 2 m/s at V0 8 m/s): its v1 table's
+            # 4.76/0.61 at the scene's -0.50 deg (was not_rerun)
+            'with its descending C_L 0.61',
         )),
         # --long power_curve_replay (2026-11-30) named all five snippets it held before (a mapping problem, not a stale
         # figure: its block is as written): they were split at sentences, cells, "; ", ", " and "to / and / against /
@@ -244,13 +248,13 @@ POWER_CURVE = Covered(
     # the trim's C_L against the elevator (0.61 at 4 deg, the attached branch lost above 5-7 deg, a post-stall trim
     # near 23 deg, C_L 0.7): tail_schedule's trim solution, no test prints them (its 1.30 and the depowered C_L:
     # depower_rule_tests, above); trim_slope (run 2026-11-30, 1 s) prints the trim per air speed at the scene's
-    # elevators only, so its 0.61 (v1's) or 1.30 matching these would be by chance; the v1
-    # mill's descending C_L 0.61 (its 82.1 / 152.9 kW: power_curve_v1, above)
+    # elevators only, so its 0.61 (v1's) or 1.30 matching these would be by chance; the v1 mill not periodic above
+    # 3 m/s: wing_data.md's step from 2 to 3 m/s and its 4-5 m/s runs, which no group here re-runs
     not_rerun=(
         '0.61 from 1.3',
         '4 deg at 8 m/s), and above 5-7 deg (by the wind)',
         'the attached-flow trim is lost (a post-stall trim near 23 deg', 'C_L about 0.7)',
-        '2 m/s with its descending C_L 0.61 but is not periodic above 3 m/s).',
+        'but is not periodic above 3 m/s).',
     ),
     history=(
         History('2026-11-29', 'laddermill power-curve cases with the trial tail rules (n = 1, 1.75; the chain layout)',
