@@ -253,13 +253,12 @@ ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (
     not_rerun=(  # tests/test_rotor*.py (the blade-element oracle; assertions, not printed figures)
         # the inflow solver's evaluations per solve: no test or command prints them (test_inflow_satisfies_glauert
         # asserts only that they stay under the cap)
+        # (tests/test_rotor.py's six inflow cases took 13-31 in a Python session of 2026-11-30, median 20)
         'a typical solve takes about 25.',
-        '- at the peak of the mu = 0.1 curve (alpha_c = 52.5 deg, lam = 0.095), the tip is at 13 deg but the largest '
-        'angle over x >= 0.5 is 21.1 deg (at x = 0.5, psi = 257 deg);',
+        # section_aoa over the disk (a Python session): no test or command evaluates these angles
+        'the tip is at 13 deg but the largest angle over x >= 0.5 is 21.1 deg (at x = 0.5, psi = 257 deg);',
         '- at alpha_c = 22.5 deg the largest angle is 13.8 deg over x >= 0.5, 13.3 deg over x >= 0.7, and 20 deg at '
         'x = 0.2.',
-        # the collective at the limit at mu = 0.1, alpha_c = 85 deg: no test flies that point
-        'about -56 deg at mu = 0.1, alpha_c = 85 deg.',
         'and 1.7 % at mu = 0.3.',  # no case of tests/test_rotor.py flies mu = 0.3
     ),
     printed=(  # tests/test_rotor.py -s prints C_Q's difference per case (0.75 % and 1.09 % the largest at 0.1, 0.2)
@@ -275,5 +274,9 @@ ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (
                                 'At mu = 0.1 and alpha_c = 22.5 deg, the best collective within the limit is 4.7 '
                                 'deg, with C_p = 0.059;',
                                 'at the limit, 9.8 deg gives C_p = 0.')),
+        # the chart's CSV (--long rotor_chart_csv): the row 'limit,0.1,85,...' has theta0 -56.50 deg, the row
+        # 'limit,0.1,52.5,...' (the mu = 0.1 peak) lam 0.0955 (were not_rerun)
+        Printed('rotor_chart_csv', ('about -56 deg at mu = 0.1, alpha_c = 85 deg.',
+                                    '- at the peak of the mu = 0.1 curve (alpha_c = 52.5 deg, lam = 0.095),')),
     ),
 )

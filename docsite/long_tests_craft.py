@@ -43,4 +43,8 @@ CRAFT_TESTS = {
                                      "--out results/long/reeling_power_curve", "128 s (load 5, 2026-11-30)",
                                      "reeling_tether.md",
                                      ("results/long/reeling_power_curve/pumping_power_curve.json",)),
+    # rotor.md: Roberts' Fig. 3 chart with its CSV (per mu and alpha_c: C_p, the collective, C_T, C_H, C_Q, lam, nu)
+    "rotor_chart_csv": Long("python -m laddermill_gym.studies.rotorcraft.rotor_chart --out "
+                            "results/long/rotor_chart/chart.png --csv results/long/rotor_chart/chart.csv", "5 s",
+                            "rotor.md", ("results/long/rotor_chart/chart.csv",)),
 }
