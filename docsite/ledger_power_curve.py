@@ -131,6 +131,11 @@ POWER_CURVE = Covered(
             # 4.76/0.61 at the scene's -0.50 deg (was not_rerun)
             'with its descending C_L 0.61',
         )),
+        # trim_slope --variants v2 at the elevators 1.3 / 4 deg (8 m/s: 11.43/1.30 and 3.28/0.61) and 7 / 8 deg
+        # (post-stall trims 22.3-23.8 deg, C_L 0.71-0.76); were not_rerun
+        Printed('trim_slope_v2_elevators', ('0.61 from 1.3', '4 deg at 8 m/s),',
+                                            'the attached-flow trim is lost (a post-stall trim near 23 deg',
+                                            'C_L about 0.7)')),
         # --long power_curve_replay (2026-11-30) named all five snippets it held before (a mapping problem, not a stale
         # figure: its block is as written): they were split at sentences, cells, "; ", ", " and "to / and / against /
         # of" (2026-11-30), adjacent pieces of one group joined again, and each piece put where its numbers are
@@ -250,10 +255,10 @@ POWER_CURVE = Covered(
     # depower_rule_tests, above); trim_slope (run 2026-11-30, 1 s) prints the trim per air speed at the scene's
     # elevators only, so its 0.61 (v1's) or 1.30 matching these would be by chance; the v1 mill not periodic above
     # 3 m/s: wing_data.md's step from 2 to 3 m/s and its 4-5 m/s runs, which no group here re-runs
+    # (the trim's C_L against the elevator: now Printed by --long trim_slope_v2_elevators, above; the elevator
+    # range 5-7 deg over which the attached trim is lost depends on the wind and no command prints that bound)
     not_rerun=(
-        '0.61 from 1.3',
-        '4 deg at 8 m/s), and above 5-7 deg (by the wind)',
-        'the attached-flow trim is lost (a post-stall trim near 23 deg', 'C_L about 0.7)',
+        'and above 5-7 deg (by the wind)',
         'but is not periodic above 3 m/s).',
     ),
     history=(

@@ -47,4 +47,8 @@ CRAFT_TESTS = {
     "rotor_chart_csv": Long("python -m laddermill_gym.studies.rotorcraft.rotor_chart --out "
                             "results/long/rotor_chart/chart.png --csv results/long/rotor_chart/chart.csv", "5 s",
                             "rotor.md", ("results/long/rotor_chart/chart.csv",)),
+    # power_curve.md: the v2 wing's trim against the elevator (attached at 1.3 and 4 deg, post-stall at 7 and 8)
+    "trim_slope_v2_elevators": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v2 --elevators 1.3 4 "
+                                    "&& python -m laddermill_gym.studies.mill.trim_slope --variants v2 --elevators 7 8",
+                                    "6 s", "power_curve.md"),
 }
