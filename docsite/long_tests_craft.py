@@ -1,6 +1,7 @@
 """Long groups (:data:`docsite.long_figures.LONG`) for the craft and wind pages (rotor, rotor design, pumping,
 power curve, wind, reeling tether, benchmarks, controllers, quasi-steady): mostly tests that print the values they
-assert (``pytest -s``), each quick enough to run on its own, so that a quoted number has a command that prints it."""
+assert (``pytest -s``), and a few study commands whose printed lines or written CSV / JSON (``reads``) hold a
+quoted number, each quick enough to run on its own, so that a quoted number has a command that prints it."""
 
 from __future__ import annotations
 
