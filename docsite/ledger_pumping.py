@@ -346,8 +346,8 @@ PUMPING = Covered(
             'at 24, 29, 132 and 30 m in seed 0)',
         )),
     ),
-    not_rerun=(  # tests/test_pumping_v1.py's slow hour in NTM turbulence asserts survival; its figures are the
-        # diagnosis script's, which no command prints
+    not_rerun=(  # tests/test_pumping_v1.py's slow hour (seed 0 only) prints its cycles and energy (Printed above);
+        # the alphas, the slack entries, the recoveries and seed 1's hour are the diagnosis script's, no command's
         "over seed 1's hour the largest alpha is 59.3 deg (seed 0:",
         '40.7 deg), against the 60.8 deg at which seed 0 used to fail, and some entries still start on a slack '
         'tether (least drum tension in an entry 57 N in seed 0, 159 N in seed 1).',
