@@ -203,7 +203,7 @@ PUMPING = Covered(
         'about 4.5 minutes per hour on the shared 2-core machine at a load of 6-7).',
     ),
     derived=(
-        # 1 - t_cycle / schmehl_matched_cycle_s over the rows of --long pumping_power_curve_json's JSON (8-20 m/s):
+        # 1 - t_cycle / schmehl_matched_cycle_s over the rows of --long pumping_power_curve_printed's JSON (8-20 m/s):
         # 1 - 331.45 / 344.96 = 3.9 % at 8 m/s ... 1 - 178.55 / 184.76 = 3.4 % at 20, at most 4.1 % (10 m/s)
         'the simulated cycle 3-4 % shorter.',
         # the wing's weight: 54 kg (configs/wings/meijaard_wing.yaml) x 9.81 m/s^2 = 529.7 N

@@ -114,7 +114,7 @@ REELING = Covered(
         '(about 6 minutes on the shared 2-core machine at a load of 7):',
     ),
     derived=(
-        # 1 - t_cycle / schmehl_matched_cycle_s over the rows of --long reeling_power_curve_json's JSON (8-20 m/s):
+        # 1 - t_cycle / schmehl_matched_cycle_s over the rows of --long reeling_power_curve_printed's JSON (8-20 m/s):
         # 1 - 249.95 / 263.80 = 5.3 % at 8 m/s ... 1 - 142.85 / 148.66 = 3.9 % at 20 m/s
         '4-5 % shorter,',
         # closed forms worked from the page's inputs, or from the checked table

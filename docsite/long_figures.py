@@ -84,8 +84,10 @@ LONG = {
                   "about 30 s", "pumping.md")
        for name, option in (("pumping_reel_in_16_7", " --reel-in-speed 16.7"), ("pumping_alpha_in_m3",
                             " --alpha-in-deg -3"), ("pumping_cycle_lqr_2", ""), ("pumping_no_lqr", " --no-lqr"))},
-    "pumping_power_curve_printed": Long("python -m laddermill_gym.studies.pumping.power_curve", "3.5 min",
-                                        "pumping.md"),
+    # the JSON it writes holds the cycle times the pages' derived ratios use (t_cycle / schmehl_matched_cycle_s)
+    "pumping_power_curve_printed": Long("python -m laddermill_gym.studies.pumping.power_curve --out "
+                                        "results/long/pumping_power_curve", "2-3.5 min", "pumping.md",
+                                        ("results/long/pumping_power_curve/pumping_power_curve.json",)),
     "gusts_v3_pumping_v1": _bench("gusts-v3", "PumpingKite-v1", "crosswind lqr", "pumping.md", "about 4 min"),
     "pumping_v0_eval_1200": Long("laddermill evaluate --env laddermill_gym/PumpingKite-v0 --controllers crosswind lqr "
                                  "--episodes 1 --episode-time 1200", "minutes", "pumping.md"),
@@ -96,8 +98,9 @@ LONG = {
                              "reeling_tether.md"),
     "tether_200": Long("python -m laddermill_gym.studies.pumping.tether_convergence --start-length 200 --lengths 200 "
                        "40 --out results/tether_200", "2.5 min", "reeling_tether.md"),
-    "reeling_power_curve_printed": Long("python -m laddermill_gym.studies.pumping.power_curve --reel-element-length 40",
-                                        "6 min", "reeling_tether.md"),
+    "reeling_power_curve_printed": Long("python -m laddermill_gym.studies.pumping.power_curve --reel-element-length 40 "
+                                        "--out results/long/reeling_power_curve", "2-6 min", "reeling_tether.md",
+                                        ("results/long/reeling_power_curve/pumping_power_curve.json",)),
     # power_curve.md: the six runs of 2026-11-29 (60 min on one core together), then their replay (2 s); costs as
     # measured on 2026-11-30 at nice 15, load 1.5-3.5
     **{f"power_curve_{name}": Long(f"laddermill power-curve --workers 1 {args}--out results/power_curve_{name}",
@@ -229,10 +232,10 @@ LONG = {
     "mill_v2_lqr": Long("python -m pytest -m slow -s tests/test_laddermill_v2.py", "5.5 min", "mill_fast.md"),
     # the mill pages
     "meijaard_v0": Long("python -m laddermill_gym.studies.mill.meijaard --scene laddermill --out results/meijaard_v0",
-                        "11 min", "paper_meijaard1999.md"),
+                        "11 min", "paper_meijaard1999.md, wing_data.md"),
     "meijaard_v1_printed": Long("python -m laddermill_gym.studies.mill.meijaard --out results/meijaard_v1 "
                                 "--no-progress", "92 s with its searches saved, 11 min without",
-                                "paper_meijaard1999.md"),
+                                "paper_meijaard1999.md, wing_data.md"),
     **{f"mill_v0_{scenario}": Long("laddermill evaluate --env laddermill_gym/LadderMill-v0 --controllers open_loop "
                                    f"lqr --episodes 1 --episode-time 300 --scenario {scenario}", "minutes",
                                    "features.md, controllers.md")

@@ -9,9 +9,10 @@ from docsite.long_group import Long
 
 CRAFT_TESTS = {
     # rotor.md: the closed forms against the blade-element integration, the ideal variant against the actuator disk
-    # and the best collective within the blade limit against a scan (each test prints its differences)
+    # and the best collective within the blade limit against a scan (each test prints its differences), the inflow
+    # solver's residual evaluations per solve
     "rotor_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_rotor.py -k "closed_forms_against or '
-                        'near_axial or best_power_within"', "3 s", "rotor.md"),
+                        'near_axial or best_power_within or inflow_satisfies"', "3 s", "rotor.md"),
     # reeling_tether.md: the hanging tether of 5 and 10 elements against the elastic catenary
     "reel_tether_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_reel_tether.py -k hanging_tether',
                               "2 s", "reeling_tether.md"),
@@ -35,15 +36,6 @@ CRAFT_TESTS = {
     # reel-out tension)
     "reeling_lqr_cycle": Long("laddermill pumping-cycle --config pumping_kite_reeling --controller lqr --cycles 2",
                               "25-80 s (load 3-5, 2026-11-30)", "reeling_tether.md"),
-    # pumping.md, reeling_tether.md: the power curves with their JSON (each row's simulated cycle time t_cycle and
-    # the matched model's schmehl_matched_cycle_s, whose ratio the pages quote; the runs print neither)
-    "pumping_power_curve_json": Long("python -m laddermill_gym.studies.pumping.power_curve --out "
-                                     "results/long/pumping_power_curve", "117 s (load 5, 2026-11-30)", "pumping.md",
-                                     ("results/long/pumping_power_curve/pumping_power_curve.json",)),
-    "reeling_power_curve_json": Long("python -m laddermill_gym.studies.pumping.power_curve --reel-element-length 40 "
-                                     "--out results/long/reeling_power_curve", "128 s (load 5, 2026-11-30)",
-                                     "reeling_tether.md",
-                                     ("results/long/reeling_power_curve/pumping_power_curve.json",)),
     # rotor.md: Roberts' Fig. 3 chart with its CSV (per mu and alpha_c: C_p, the collective, C_T, C_H, C_Q, lam, nu)
     "rotor_chart_csv": Long("python -m laddermill_gym.studies.rotorcraft.rotor_chart --out "
                             "results/long/rotor_chart/chart.png --csv results/long/rotor_chart/chart.csv", "5 s",
