@@ -161,6 +161,7 @@ ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (
         'Convergence is declared when |f| <= tol (1 + |lam_inf|)',
         'or the bracket is narrower than tol (1 + |lam|), with tol = 1e-13.',
         'Evaluations are capped at 300 ( );',
+        '( , re-run 2026-11-30)',  # the inflow test's re-run date
         'mu must be > 0, because at mu = 0 the residual is singular at lam = 0;',
         'The hover limit is therefore tested at mu = 1e-6, where lam = -nu and nu = sqrt(C_T/2) to 1e-6.',
         '3 "at a blade incidence limit of 13 deg" and says no more.',
@@ -233,6 +234,8 @@ ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (
         'The command takes about 2 s.',
     ),
     derived=(
+        # the median of the inflow test's six printed counts (13, 17, 18, 21, 21, 31): (18 + 21) / 2 = 19.5
+        'their median 19.5',
         # C_p of the ideal cubic at 1 deg, worked by hand
         '- As alpha_c -> 0, u <= s -> 0, so C_p -> 0. C_p(1 deg) = 3.1e-4.',
         # read off the chart's picture
@@ -251,10 +254,6 @@ ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (
         '(the best collective), 22.5 deg needs sigma = 0.075.',
     ),
     not_rerun=(  # tests/test_rotor*.py (the blade-element oracle; assertions, not printed figures)
-        # the inflow solver's evaluations per solve: no test or command prints them (test_inflow_satisfies_glauert
-        # asserts only that they stay under the cap)
-        # (tests/test_rotor.py's six inflow cases took 13-31 in a Python session of 2026-11-30, median 20)
-        'a typical solve takes about 25.',
         # section_aoa over the disk (a Python session): no test or command evaluates these angles
         'the tip is at 13 deg but the largest angle over x >= 0.5 is 21.1 deg (at x = 0.5, psi = 257 deg);',
         '- at alpha_c = 22.5 deg the largest angle is 13.8 deg over x >= 0.5, 13.3 deg over x >= 0.7, and 20 deg at '
@@ -273,10 +272,16 @@ ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (
                                 # limit 9.83 deg, C_p -0.0002 (were not_rerun: rotor_chart writes them to its CSV)
                                 'At mu = 0.1 and alpha_c = 22.5 deg, the best collective within the limit is 4.7 '
                                 'deg, with C_p = 0.059;',
-                                'at the limit, 9.8 deg gives C_p = 0.')),
+                                'at the limit, 9.8 deg gives C_p = 0.',
+                                # inflow_satisfies prints each of its six solves' residual evaluations (31, 21, 21,
+                                # 17, 13, 18; 2026-11-30) beside the cap it asserts (was 'about 25': History)
+                                'take 13 to 31 residual evaluations,')),
         # the chart's CSV (--long rotor_chart_csv): the row 'limit,0.1,85,...' has theta0 -56.50 deg, the row
         # 'limit,0.1,52.5,...' (the mu = 0.1 peak) lam 0.0955 (were not_rerun)
         Printed('rotor_chart_csv', ('about -56 deg at mu = 0.1, alpha_c = 85 deg.',
                                     '- at the peak of the mu = 0.1 curve (alpha_c = 52.5 deg, lam = 0.095),')),
     ),
+    history=(History('2026-11-23', 'rotor.solve_inflow in a Python session (bfb741c)', 'the inflow solver as first '
+                     'written (re-run 2026-11-30 by rotor_tests: 13 to 31)',
+                     ('(about 25 as first written on 2026-11-23)',)),),
 )

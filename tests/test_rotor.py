@@ -206,6 +206,7 @@ def test_inflow_satisfies_glauert_and_eq2(mu, alpha_deg, theta_deg):
     eq. 2 returns the incidence it was solved at."""
     params = RotorParams(sigma=0.07, **ORACLE_PARAMS)
     sol = solve_inflow(params, mu, alpha_deg * DEG, theta_deg * DEG)
+    print(f"inflow at mu {mu}, alpha_c {alpha_deg}, theta0 {theta_deg} deg: {sol.iterations} residual evaluations")
     assert sol.converged and sol.iterations < rotor.INFLOW_MAX_ITER
     b = params.B
     ct = 0.5 * params.sigma * params.a * (theta_deg * DEG * (b**3 / 3 + b * mu**2 / 2) + sol.lam * b**2 / 2)
