@@ -253,6 +253,8 @@ def test_35m_crafts_trim_below_the_ideal_power_coefficient(name, alt):
     print(f"{name}: trims at {-z:.0f} m ({-z - alt:+.0f} m from the design {alt:.0f} m, "
           f"{100 * abs(-z - alt) / alt:.1f} % of it, within 15 %), wind {wind:.2f} m/s, pitch = incidence "
           f"{math.degrees(alpha_c):.2f} deg, electrical power {sim.electrical_power() / 1e6:.3f} MW, C_p {cp:.4f} "
-          f"(ideal {ideal_power_coefficient(alpha_c):.4f}, the study's optimum there {best.cp:.4f})")
+          f"(ideal {ideal_power_coefficient(alpha_c):.4f}, the study's optimum there {best.cp:.4f}); tether "
+          f"tension at the craft (rear right, rear left, front) {np.round(sim.tether_tensions() / 1e3, 2)} kN "
+          "(printed, not asserted)")
     assert 0.0 < cp < ideal_power_coefficient(alpha_c)
     assert 0.5 * best.cp < cp < 1.02 * best.cp
