@@ -1,7 +1,8 @@
 """The ledger entry (:mod:`docsite.page_ledger`) of docs/wing_data.md: its key numbers, mass build-up, trims on the
 cable and pitch check about the attachment against ``derive_wing --check`` (:mod:`docsite.wing_figures`, about 4 s);
 the paper's data and the chosen constants given; the figures worked by hand listed; the in-plane runs of the mill,
-the v1 steps and power curve and the surface curves' figures derive_wing does not print listed as not re-run."""
+the v1 steps and power curve Printed by long groups; the in-plane trial runs no command repeats listed as not
+re-run."""
 
 from __future__ import annotations
 
@@ -41,6 +42,9 @@ CHECKS = (
     (rf"\| CYb, Cnb, Clb \| {N}, {N}, {N} /rad", (D % "CYb", D % "Cnb", D % "Clb")),
     (rf"\| Clp, Cnp, Clr, Cnr \| {N}, {N}, {N}, {N} \|", (D % "Clp", D % "Cnp", D % "Clr", D % "Cnr")),
     (rf"\| Clda, Cnda \| {N}, {N} \(body", (D % "Clda", D % "Cnda")),
+    # the side-force rate derivatives and the aileron's yaw in stability axes (printed since 2026-11-30)
+    (rf"\| CYp, CYr \| {N}, {N} \|", (D % "CYp", D % "CYr")),
+    (rf"in stability axes Cnda = {N}, adverse yaw", (D % "Cnda_stability",)),
     (rf"\| CYdr, Cndr, Cldr \| {N}, {N}, {N} /rad", (D % "CYdr", D % "Cndr", D % "Cldr")),
     *[(rf"\| {label} \| {N} \| {N} \| {N} \|", (MASS % (part, 0), MASS % (part, 1), MASS % (part, 2)))
       for label, part in ((r"main wing \(0\.70 kg/m\^2; CG at 40 % chord\)", "main wing"),
@@ -153,21 +157,13 @@ DERIVED = (
     "(about 18-24 deg and -14..-20 deg)",  # the CSV
     "the neutral point lies 0.48 m behind P", "puts it 0.97 m behind P", "C_L 0.61 (the issue's estimate for 200 kW at "
     "2 m/s was 0.6)", "than the v0 wing at C_L 1.00", "kite trim C_L 1.00", "(142 - 65) kN x 2 m/s = 154 kW",
-    "(40 kN of tension difference)", "at 5 m/s")  # the issue's estimate: 200 kW / 40 kN
-#: figures no command re-runs: the surface-curve figures derive_wing does not print, the v1 scene's in-plane runs
-#: from a Python session (run_to_periodic on the scene at 1 and 2 m/s, 2D and 3D; 10-40 minutes each, no command)
+    "(40 kN of tension difference)", "at 5 m/s",  # the issue's estimate: 200 kW / 40 kN
+    "(79 %;")  # the rigid run's last / first element, 126.9 / 160.0 kN (pointmass_mill_study, Printed below)
+#: figures no command re-runs: the v0 mill's runs at a descending elevator of 0 deg and the v1 mill's trial runs at
+#: 5 m/s (Python sessions of 2026-11-29, run_to_periodic with overrides; no command)
 NOT_RERUN = (
-    'The resulting wing-alone C_L,max is 1.22 at 14.5 deg',
-    '(wing alone 1.22 at 14.5 deg)',
-    '| CYp, CYr | -0.12, 0.14 |',
-    'in stability axes Cnda = -0.029',
-    'boom cross-flow adds 0.016 sin^2 alpha',
-    'pull 82 % of what the ascending one pulls',  # not the rigid run's last / first element (126.9 / 160.0 kN)
     '(C_L 0.85)',
     'falls to 0 at t = 160 s',
-    # the 3D run's largest tension: its CSV (results/meijaard_v1/power.csv) holds 0.2847 x 525 kN = 149.49 kN, the
-    # study prints 0.285 x (149.6 kN); the 149.5 kN is the 2D period's (power_curve_v1)
-    'and a largest tension of 149.5 kN',
     # at 5 m/s: the trial runs of 2026-11-29 (fb84e85: period tensions up to 350 kN first element, 388 kN last), not
     # kept; today power_curve_v1 prints a last period's T_max of 327.7 kN and a peak of 527.8 kN, the v1 study 1.01 x
     # the breaking load: no command prints 390 kN
@@ -206,13 +202,28 @@ PRINTED = (
     # the v0 mill's power at 1 m/s: the v0 study prints 36.3 kW (docs/paper_meijaard1999.md's table, Printed there)
     Printed("meijaard_v0", ('(v0: 36 kW)',)),
     # the v0 mill's power at 2 m/s in plane: the rigid run of the point-mass mill study (moving_cable.md's 66.1 kW)
-    Printed("pointmass_mill_study", ('and the mill deliver 66 kW',)),
+    # and its ground elements' period-mean tensions ("first element 160.0 kN, last 126.9 kN"; until 2026-11-30 the
+    # page said the descending leg pulls 82 % of the ascending one's pull, a figure no recorded run gives: History)
+    Printed("pointmass_mill_study", ('and the mill delivers 66 kW', "127 kN against the ascending one's 160 kN")),
+    # derive_wing --check's line the page group does not parse: "wing alone (main wing's 3-D curve): C_L,max = 1.220
+    # at alpha = 14.45 deg; boom cross-flow drag 0.0163 sin^2 alpha" (2026-11-30; until then not_rerun)
+    Printed("derive_wing_printed", ('The resulting wing-alone C_L,max is 1.22 at 14.5 deg',
+                                    '(wing alone 1.22 at 14.5 deg)', 'boom cross-flow adds 0.016 sin^2 alpha')),
     # the v1 study's 3D case at 2 m/s ("3D V_c=2: periodic, t = 1485 s; mean power 152.9 kW"; --long, 60 s with its
     # searches saved, 2026-11-30, nice 15, load 5.7)
-    Printed("meijaard_v1_printed", ('periodic at t = 1,485 s with the same 152.9 kW',)),
+    # and its peak tension ("(peak tension 0.285 x the breaking load)"; until 2026-11-30 the page quoted "a largest
+    # tension of 149.5 kN", the study's CSV's 0.2847 x 525 kN, which the study prints as 0.285 x)
+    Printed("meijaard_v1_printed", ('periodic at t = 1,485 s with the same 152.9 kW',
+                                    'and a peak tension over its search of 0.285 x the breaking load')),
 )
-#: the attachment trials' in-plane runs (a Python session with overrides, 2026-11-29, fb84e85)
+#: the attachment trials' in-plane runs (a Python session with overrides, 2026-11-29, fb84e85); figures of the page
+#: that no recorded run gives and that today's commands print otherwise (issue 33 point 6, 2026-11-30)
 HISTORY = (
+    History("2026-11-22", "not recorded (596e2f4's page: the table's Clda, Cnda at 7 deg turned to stability axes by "
+            "hand; derive_wing --check prints Cnda_stability -0.0283 at 7 deg today)", "the wing table of 596e2f4",
+            ("-0.029 as written on 2026-11-22",)),
+    History("2026-11-29", "not recorded (fb84e85's design study; the rigid run prints its ground elements' 160.0 and "
+            "126.9 kN today, 79 %)", "the v0 mill at V_c = 2 m/s, elevators -4 / -1 deg", ('"pull 82 %"',)),
     History("2026-11-29", "run_to_periodic(load_scene('laddermill', dimension=2, overrides=...).simulator(), "
             "shape_tol=1e-3, power_tol=1e-3) per attachment, elevators and insertion rule",
             "the v1 wing's attachment trials (fb84e85)", (

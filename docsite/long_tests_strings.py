@@ -7,10 +7,15 @@ from __future__ import annotations
 from docsite.long_group import Long
 
 STRING_TESTS = {
+    # wing_data.md: derive_wing --check's lines that its page group does not parse (the wing-alone C_L,max, the booms'
+    # cross-flow drag), its table written under results/long
+    "derive_wing_printed": Long("python -m laddermill_gym.derivations.derive_wing --check --out-dir "
+                                "results/long/derive_wing", "6 s (2026-11-30, nice 15, load 4-5)", "wing_data.md"),
     # pointmass.md: the chunked solver's agreements and the catenary oracle (tests printing what they assert)
     "pointmass_solver_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_pointmass_threads.py '
-                                   'tests/test_pointmass_oracles.py -k "backward or chunks_match or second_order"',
-                                   "4-16 s", "pointmass.md"),
+                                   'tests/test_pointmass_oracles.py -k "backward or chunks_match or second_order or '
+                                   'one_centimetre"', "4-16 s (with the 1 cm catenary's 4 s, 2026-11-30)",
+                                   "pointmass.md"),
     # pointmass.md: the point-mass mill env's start (the rigid run to periodic motion, then one point-mass period):
     # the reward's reference power, as the test prints it
     "pointmass_mill_env_start": Long('python -m pytest -m "slow or not slow" -s tests/test_pointmass_mill_env.py -k '

@@ -188,6 +188,23 @@ def design_incidence(target_deg=TRIM_ALPHA_DEG):
     return brentq(f, np.radians(-10), np.radians(10))
 
 
+def print_quoted_extras(tm: TableModel, wing: Wing) -> None:
+    """Print figures docs/wing_data.md quotes beside the design checks (printing only): the side-force rate
+    derivatives CYp, CYr and the aileron's yaw in stability axes (Cn cos alpha - Cl sin alpha, per rad) at 0/7/14/30/90
+    deg in the derivative lines' format, the main wing's own 3-D curve's C_L,max and its alpha (no tail, no dihedral),
+    and the booms' cross-flow drag coefficient (times sin^2 alpha, referred to S_W)."""
+    angles = np.radians([0.0, 7.0, 14.0, 30.0, 90.0])
+    for name in ("CYp", "CYr"):
+        print(f"  {name:5s} at 0/7/14/30/90 deg: " + " ".join(f"{tm.col(a, name):8.4f}" for a in angles))
+    stab = [tm.col(a, "Cnda") * np.cos(a) - tm.col(a, "Clda") * np.sin(a) for a in angles]
+    print("  Cnda_stability at 0/7/14/30/90 deg: " + " ".join(f"{v:8.4f}" for v in stab))
+    al = np.radians(np.arange(-10, 30.01, 0.05))
+    cl = wing.pw(al)[0]
+    i = int(np.argmax(cl))
+    print(f"wing alone (main wing's 3-D curve): C_L,max = {cl[i]:.3f} at alpha = {np.degrees(al[i]):.2f} deg; boom "
+          f"cross-flow drag {wing.cd_cross:.4f} sin^2 alpha")
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out-dir", default="configs/wings")
@@ -234,6 +251,7 @@ def main(argv=None):
     if args.check:
         tm = TableModel(a_deg, rows, wing.r_ref)
         run_checks(tm, wing, ELEVATOR_LIMITS, VARIANTS[args.variant][0])
+        print_quoted_extras(tm, wing)
         print_design_study(tm, {k: (att, {"ascending": np.radians(up), "descending": np.radians(dn)})
                                 for k, (att, (up, dn)) in VARIANTS.items()})
 
