@@ -22,6 +22,24 @@ STRESS_CHECKS = ((r"re-run on 2026-11-30: \*\*(\d+) pass, (\d+) fail\*\*; the mi
                  (r"On 2026-11-30 the run at the scene's step ended at ([\d.]+) s instead",
                   ("~{stress_all[end_t][laddermill/bang-bang controls]}",)))
 
+#: --long stress_all's case rows (2026-11-30, 1217 s at nice 15, load 4.5-6.4): the holds' drifts and energies,
+#: the bisected steps beside the estimates, the env episodes' ends; each snippet within one scene's rows
+STRESS_PRINTED = (
+    'With the LQR the hour completes: height drift 7.105e-15 m, tension drift 1.904e-11 N, kinetic energy 1.482e-24 '
+    'J in the first tenth and 4.154e-24 J in the last',
+    'tethered wing height drift -6e-13 m, tension drift -1.6e-9 N, kinetic energy 4.5e-20 J -> 9.7e-24 J;',
+    'chain height drift 4.6e-9 m, tension drift 2.7e-4 N, kinetic energy 3.0e-11 J -> 1.713e-17 J',
+    "ladder_chain ROS2 0.3471 s (14.2x RK4's limit;", ', ROS34PW2 stable at the cap 1 s (41x);',
+    'roberts_flying_model both stable at the cap 0.40 s (64x);',
+    'laddermill ROS2 0.42 s (27x), ROS34PW2 stable at the cap 0.99 s (64x)',
+    'tethered wing 0.01922 / 0.01901 s,', 'chain 0.02458 / 0.02445 s', 'craft 0.00626 / 0.00619 s,',
+    'mill 0.0161 / 0.0154 s',
+    'the mill, started at rest with its cable moving, settles (height +0.045 m, tension -8.3 kN, kinetic energy '
+    '1.1e5 J to 1.2e4 J).',
+    '- Env episodes: TetheredWing-v0 10,048 episodes (all to the 5 s limit), Rotorcraft-v0 10,000 (8,154 to the '
+    'limit, 1,846',
+)
+
 WORK_PRECISION = Covered(
     groups=('precision_data', 'stable_steps'),
     checks=STRESS_CHECKS + ((r"RK4: ([\d.]+) on the negative real axis, 2 sqrt 2 = ([\d.]+) on the imaginary axis; "
@@ -36,6 +54,12 @@ WORK_PRECISION = Covered(
     given=(
         'at dt = 0.025 s gives "dt = 0.025 s',  # the stable-step test's step (its message Printed)
         'an injected 1e12 m/s node speed',  # stress_cases.INJECTIONS' "node velocity 1e12 m/s"
+        # the stress cases' settings (stress_cases.stable_step_rows; the holds' control period), README's chain step
+        '- Largest stable step of the linearly implicit methods (added this session; the same bisection and test, 4 s '
+        "from the disturbed start, between RK4's estimated limit and 64 times it, capped at a quarter of the "
+        'horizon; ):', '2 s horizon).', "(the README's 0.025 s is past it)",
+        "- **The tethered wing and the chain are held by their envs' lateral LQR** ( , designed on the scene itself, "
+        "applied every 50 ms to the env observation of the simulator's state, ):",
         *controller_measure.GIVEN,  # the controller-measure section (docsite/ledger_controller_measure.py)
         'Result of the full run (four scenes, 1 h held, 10,000 episodes per env; ), re-run on',
         # whip_spectrum's step forcing and its methods' steps (the commands' inputs)
@@ -88,6 +112,10 @@ WORK_PRECISION = Covered(
         'piece):',
     ),
     derived=(
+        # the least and largest of --long stress_all's four printed ratios: bisection / estimate 1.011, 1.005, 1.011,
+        # 1.044; DP5(4)'s mean step / its estimate 0.9837, 0.9779, 0.974, 0.9865 (rtol 1e-6: the case's setting)
+        '(ratios 1.005 to 1.044)',
+        "DP5(4)'s mean step at rtol 1e-6 is 0.974-0.9865 of its estimated limit on every scene",
         *controller_measure.DERIVED,  # the controller-measure section (docsite/ledger_controller_measure.py)
         # readings over whip_spectrum's printed shares (each scene's modes by share, |exp(h l)| and |R(h l)| to 4
         # digits): no one printed figure
@@ -189,10 +217,22 @@ WORK_PRECISION = Covered(
         'ros34pw2:0.0666666666666667 ros2t:0.0666666666666667 rk4:0.0153846153846154 # 7 min',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('stress_all', STRESS_PRINTED),
+        # tests/test_stress.py -s -k bisection_agrees: stable_step_rows('tethered_wing', horizon=2.0, iters=5)
+        # prints "stable at the bracket's top, 0.5 s", ratio_to_rk4_limit 26.29 (the horizon given)
+        Printed('stress_quick_tests', ('tethered_wing both at the cap 0.5 s (26x,',)),
+        # tests/test_alpha_rate_limit.py -s -k names_the_alpha: "stopped at t = 0.3836 s: wing 46 at ... sideslip
+        # -74.502 deg", "3.73e+09 rad/s^2, without the alpha-rate columns -127", "1e-4 s later: -3.06e+11"
+        Printed('alpha_rate_pole_test', (
+            'The error-controlled methods stop on it at 0.3836 s, and DP5(4) alike: there wing 46 has tumbled to '
+            '-74.5 deg sideslip',
+            'passes through a pole: 3.73e9 rad/s^2 at the last accepted state, -3.06e11 with the other sign 1e-4 s '
+            'later, -127 with the two alpha-rate columns removed;',
+        )),
         # tests/test_stress.py -s -k injections_are_reported prints the report it holds, "integration failed at t =
         # 0.05 s (non-finite state); the state: node 0 x [m] is nan (state entry 13): a non-finite state" (the
         # simulator's own message inside the stress row's wording); the injected 1e12 m/s is an input (given)
-        Printed('stress_injection_test', (
+        Printed('stress_quick_tests', (
             'Fixed on the way: a non-finite state entry is now named as such (time, body, quantity: "t = 0.05 s: '
             'node 0 x [m] is nan (state entry 13)")',
         )),
@@ -245,60 +285,33 @@ WORK_PRECISION = Covered(
         # the tethered wing's extent: no command prints it (the chain's: step_accuracy_10, above)
             '101 m for the tethered wing',
         # the stress runs' narrative of 2026-11-24 (this session's side runs: RK4 at 5 ms, ROS34PW2 at 10 ms, the
-        # counts before and after its fixes): --long stress_all (2026-11-30, 517 s) prints its own case lines, few
-        # of these figures (until then listed as its Printed snippets, which it printed none of)
-            "(6) LQR** ( : the differential collective dtheta = -K (y, phi, y', p) every 50 ms from the simulator's "
-            'state, ; the collective at the trim). The craft is open-loop unstable at its trim (+0.127 +- 0.497i '
-            '1/s, finite differences of the 31-state right-hand side; rotorcraft.md): held at its open-loop '
-            'equilibrium controls, as the previous run did, roundoff (kinetic energy 1e-25 to 5e-24 J for 1900-3400 '
-            's) grows into a ground contact (node 2) at 3511 s with its own ROS34PW2 at 50 ms, at 2255 s with RK4 at '
-            '5 ms and at 1960 s with ROS34PW2 at 10 ms: the physics, not the integrator. With the LQR the hour '
-            'completes: height drift -7e-15 m, tension drift -3e-12 N, kinetic energy 1.5e-24 J in the first tenth '
-            "and 2.2e-24 J in the last. - **The tethered wing and the chain are held by their envs' lateral LQR** ( "
-            ", designed on the scene itself, applied every 50 ms to the env observation of the simulator's state, ): "
-            'tethered wing height drift -6e-13 m, tension drift -1.6e-9 N, kinetic energy 4.5e-20 J -> 9.7e-24 J; '
-            "chain height drift 4.6e-9 m, tension drift 2.7e-4 N, kinetic energy 3.0e-11 J -> 1.6e-17 J (the LQR's "
-            "design trim and the scene's equilibrium differ in the last digits; the loop settles them). The mill, "
-            "stable at its operating point, is held at its equilibrium controls (its LQR needs the env's periodic "
-            'operating point); the column says which. - Fixed by this run: the RK4 injections on the rotorcraft ran '
-            "at the craft's own 50 ms step (eight times RK4's limit) and raised before any injection; they now run "
-            "at half RK4's estimate. The elements cases on and at 8 elements per piece failed at load, where the "
-            "loader refuses the scene's step (beyond twice the stiffest element's closed-form bound); a refusal now "
-            'counts as detected, the case finds the equilibrium below the bound and runs at half the estimate, for '
-            "at most 20,000 steps (the mill's RK4 limit at 8 elements is 2.8 us). The mill under bang-bang controls "
-            'ran its 20 s then (below). Before: 96 pass, 4 fail.',
-            '- Largest stable step of the linearly implicit methods (added this session; the same bisection and '
-            "test, 4 s from the disturbed start, between RK4's estimated limit and 64 times it, capped at a quarter "
-            "of the horizon; ): ladder_chain ROS2 0.33 s (13.6x RK4's limit), ROS34PW2 stable at the cap 1 s (41x); "
-            'roberts_flying_model both stable at the cap 0.40 s (64x); laddermill ROS2 0.42 s (27x), ROS34PW2 stable '
-            'at the cap 0.99 s (64x) since the station column (before: 0.19 s, 12.6x and 0.10 s, 6.6x); '
-            'tethered_wing both at the cap 0.5 s (26x, 2 s horizon). Injections with ROS34PW2 are reported like '
-            "RK4's. - Largest stable RK4 step by bisection / estimate: tethered wing 0.01922 / 0.01901 s, chain "
-            "0.02458 / 0.02445 s (the README's 0.025 s is past it), craft 0.00626 / 0.00619 s, mill 0.0161 / 0.0154 "
-            "s (ratios 1.005 to 1.044). DP5(4)'s mean step at rtol 1e-6 is 0.98-0.99 of its estimated limit on every "
-            'scene. - 1 h held (before the LQR holds, at their equilibrium controls): tethered wing and chain stay '
-            'at their equilibrium to roundoff (drift of the mean height below 1e-11 m, of the tension below 1e-7 N; '
-            'no disturbance is applied, so this checks long-run stability of the integration, not of a controller); '
-            'the mill, started at rest with its cable moving, settles (height +0.045 m, tension -8.3 kN, kinetic '
-            'energy 1.1e5 J to 1.2e4 J). - Winds 0 to 40 m/s, wind to zero and back, the unloading gust, random '
-            'controls: every scene runs 20 s or ends in a documented ground contact (the craft below 10 m/s and '
-            'under bang-bang or random controls). - Injections: all 40 (NaN, inf, 1e12 in wing and node positions, '
-            'quaternions, velocities, rates; RK4 and DP5(4); four scenes) raise a SimulationError naming the time, '
-            'the body and a quantity; none escapes. - Env episodes: TetheredWing-v0 10,048 episodes (all to the 5 s '
-            'limit), Rotorcraft-v0 10,000 (8,154 to the limit, 1,846 "attitude out of range" under random actions), '
-            'no integration or inflow failure. - Fixed since: with 8 elements per piece no scene found its initial '
-            'state (the static / trim Newton did not converge from straight chords with a badly scaled residual); '
-            "now each piece's nodes start on their discrete catenary and Newton solves for forces (docs/numerics.md, "
-            '"Initial states with several elements per piece"), and the case passes on (its 5 ms step is flagged '
-            'above the estimated 1.35 ms limit for 8 elements; the run at half the estimate holds). The mill under '
-            'bang-bang controls on all 101 wings, which failed at t = 3.9 s in that run, was a step past the loaded '
-            "stability limit, not a physical manoeuvre: at the scene's present 10 ms step (12.5 ms then, beyond "
-            "RK4's 12.2 ms limit right after a transfer) it runs the 20 s, and so it does at 2.5 ms ( with ' "
-            'bang-bang schedule, this session). The error-controlled methods stop on it at 0.3836 s, and DP5(4) '
-            'alike: there wing 46 has tumbled to -74 deg sideslip and its alpha-rate terms make the mass matrix '
-            'singular (its pitch acceleration passes through a pole: -4.5e6 rad/s^2 at the last accepted state, '
-            '3.9e9 with the other sign 1e-4 s later, -129 with the two alpha-rate columns removed). No step size '
-            'resolves a pole; RK4 at 10 ms steps over it without evaluating it.',
+        # counts before and after its fixes, the holds before the LQRs, the wind and injection cases' summaries):
+        # --long stress_all prints its own case rows (its figures that are on the page: STRESS_PRINTED, below)
+        "(6) LQR** ( : the differential collective dtheta = -K (y, phi, y', p) every 50 ms from the simulator's "
+        'state, ; the collective at the trim). The craft is open-loop unstable at its trim (+0.127 +- 0.497i 1/s, '
+        'finite differences of the 31-state right-hand side; rotorcraft.md): held at its open-loop equilibrium '
+        'controls, as the previous run did, roundoff (kinetic energy 1e-25 to 5e-24 J for 1900-3400 s) grows into a '
+        'ground contact (node 2) at 3511 s with its own ROS34PW2 at 50 ms, at 2255 s with RK4 at 5 ms and at 1960 s '
+        'with ROS34PW2 at 10 ms: the physics, not the integrator.',
+        "- Fixed by this run: the RK4 injections on the rotorcraft ran at the craft's own 50 ms step (eight times "
+        "RK4's limit) and raised before any injection; they now run at half RK4's estimate. The elements cases on "
+        "and at 8 elements per piece failed at load, where the loader refuses the scene's step (beyond twice the "
+        "stiffest element's closed-form bound); a refusal now counts as detected, the case finds the equilibrium "
+        "below the bound and runs at half the estimate, for at most 20,000 steps (the mill's RK4 limit at 8 "
+        "elements is 2.8 us). The mill under bang-bang controls ran its 20 s then (below). Before: 96 pass, 4 fail.",
+        'since the station column (before: 0.19 s, 12.6x and 0.10 s, 6.6x);',
+        '- 1 h held (before the LQR holds, at their equilibrium controls): tethered wing and chain stay at their '
+        'equilibrium to roundoff (drift of the mean height below 1e-11 m, of the tension below 1e-7 N;',
+        '- Winds 0 to 40 m/s, wind to zero and back, the unloading gust, random controls: every scene runs 20 s or '
+        'ends in a documented ground contact (the craft below 10 m/s and under bang-bang or random controls). - '
+        'Injections: all 40 (NaN, inf, 1e12 in wing and node positions, quaternions, velocities, rates; RK4 and '
+        'DP5(4); four scenes)',
+        '- Fixed since: with 8 elements per piece no scene found its initial state',
+        '(its 5 ms step is flagged above the estimated 1.35 ms limit for 8 elements; the run at half the estimate '
+        'holds). The mill under bang-bang controls on all 101 wings, which failed at t = 3.9 s in that run, was a '
+        "step past the loaded stability limit, not a physical manoeuvre: at the scene's present 10 ms step (12.5 ms "
+        "then, beyond RK4's 12.2 ms limit right after a transfer) it runs the 20 s, and so it does at 2.5 ms",
+        'RK4 at 10 ms steps over it without evaluating it.',
         *controller_measure.NOT_RERUN,  # the 33 m/s whip, the 0.2 s share, ROS3Pw / ROS34PW3 (their comments)
         # a gust run of 2026-11-24 (ec22606): laddermill stress tethered_wing prints no +30 % gust case (its run of
         # 2026-11-30, --long stress_tethered_wing: the estimate at rest 0.01901 s, no gust at RK4 0.0179 s)
@@ -313,7 +326,15 @@ WORK_PRECISION = Covered(
         'stage lands on. Changes such runs (the golden direction-step cases by 1.2e-6 (tethered wing) and 7.4e-5 '
         '(chain) relative).',
     ),
-    history=(History('2026-11-24', 'laddermill stress tethered_wing ladder_chain roberts_flying_model laddermill',
+    history=(History('2026-11-24', 'laddermill stress tethered_wing ladder_chain roberts_flying_model laddermill '
+                     '(c36a6ae, ec22606, e6bbf77, a314800)', "the stress runs' figures before --long stress_all's "
+                     'run of 2026-11-30 (issue 33 point 6)',
+                     ('(2026-11-24: -7e-15 m, -3e-12 N, 1.5e-24 and 2.2e-24 J).', '(2026-11-24: 1.6e-17 J;',
+                      '2026-11-24: 0.33 s, 13.6x)', '(2026-11-24: 0.98-0.99).')),
+             History('2026-11-24', 'the failed ros34pw2 run of the 101-wing mill under bang-bang controls (9f0397d)',
+                     "the pole's accelerations from another evaluation than today's alpha_rate_pole_test's",
+                     ('2026-11-24, another evaluation: -74 deg, -4.5e6, 3.9e9, -129).',)),
+             History('2026-11-24', 'laddermill stress tethered_wing ladder_chain roberts_flying_model laddermill',
                      'the full stress run of 2026-11-24 (ec22606 and after)',
                      ('As written on 2026-11-24 (5.5 min; 6.5 min with the LQR holds): 128 pass, 0 fail (the run '
                       'before: 127 pass, 1 fails).',)),

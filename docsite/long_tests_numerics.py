@@ -21,10 +21,11 @@ NUMERICS_TESTS = {
                                'rk4_past_its_stable', "27 s (2026-11-30, nice 15, load 6)", "numerics.md"),
     "alpha_rate_pole_test": Long('python -m pytest -m "slow or not slow" -s tests/test_alpha_rate_limit.py -k '
                                  'names_the_alpha', "26 s", "numerics.md"),
-    # work_precision.md: the stress suite's injection report on the tethered wing (the small version's test)
-    "stress_injection_test": Long('python -m pytest -m "slow or not slow" -s tests/test_stress.py -k '
-                                  'injections_are_reported', "16 s (2026-11-30, nice 15, load 5)",
-                                  "work_precision.md"),
+    # work_precision.md: the stress suite's small version on the tethered wing (2 s horizon, 5 bisections) and its
+    # injection report
+    "stress_quick_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_stress.py -k '
+                               '"injections_are_reported or bisection_agrees"', "16 s (2026-11-30, nice 15, load 5)",
+                               "work_precision.md"),
     # work_precision.md, features.md: RK4 across a wind kink, split and unsplit (the batched case alone compiles for
     # minutes, so it is left out)
     "breakpoint_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_breakpoints.py '
