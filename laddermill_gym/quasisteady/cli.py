@@ -63,6 +63,10 @@ def _run_case(case, spec, wind, out, quiet):
     if not quiet:
         print(f"  {case.name} on {spec}: {r.states} states, {r.evaluations} inner solves, {r.wall_time:.2f} s, "
               f"feasible {r.feasible}")
+        means = ", ".join(f"{lab} mean {np.sum(ev.weight[ok] * P) / ev.weight[ok].sum() / 1e6:.3f} MW"
+                          for lab, (P, _) in runs.items())
+        print(f"  {case.name} design run through {_eval_spec(spec)} (figs. 19-20): {means}"
+              + "".join(f"; {note}" for note in ev.notes))
     return r, ev, w_ev[ok], ev.weight[ok], files
 
 
