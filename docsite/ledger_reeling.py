@@ -189,7 +189,9 @@ REELING = Covered(
     ),
     not_rerun=(
         # the static LQR cycle's ground contacts on the reeling tether (a Python session of 2026-11-29 with a
-        # count per step; pumping-cycle prints no ground contacts)
+        # count per step; pumping-cycle prints no ground contacts: its run_cycles records none without a probe, and
+        # tether_convergence, whose probe counts them, flies the crosswind controller, not this cycle; checked
+        # 2026-11-30)
         'up to 4 nodes on the ground at once, in 33 % of the control steps, the first at t = 173.5 s in the first '
         'reel-in (where the 3-element chain used to stop). It makes no power:',
     ),

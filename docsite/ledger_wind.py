@@ -163,7 +163,9 @@ WIND = Covered(
     not_rerun=(
         # the slots' heights at the operating point, the EWS's shear at the loop's lowest and highest wings and the
         # scene's wind there, and slot 0's roll in NTM seed 0: worked in the gusts-v2 session (2026-11-2x); no
-        # command prints them (the gust bench prints the failures' slots and times, checked above)
+        # command prints them (the gust bench prints the failures' slots and times, checked above;
+        # tests/test_gusts_v2.py prints the loop path's extent, 50.0 to 3439.8 m, not the slots' heights, and no test
+        # evaluates the EWS's shear at a wing or a slot's roll rate; checked 2026-11-30)
         '58-1612 m at the operating point),',
         'open loop, slot 0 (just above the veered station) rolls at 3 rad/s after 1 s in a faded-in lateral gust of '
         '0.04 m/s (NTM seed 0)',
