@@ -37,7 +37,7 @@ NUMERICS = Covered(
         "the body's 6 velocities and 3 small rotations", "(9 extra evaluations per body and step)",
         "(10 s, 0.1 rad direction step; position error against DP5(4) at 1e-10)", "h gamma lambda = 1",
         "(l_p / 10 after a transfer)", "l0 = l_p / 10 + s", "at wing 0", "U_t,i = h gamma (1 + sum_j c_ij U_t,j / h)",
-        "(2 s, disturbed start)", "from 0.04 to 0.005 s", "omega_max of about 2 sqrt(k/m)", "-4 DA/(mu l^2)",
+        "(2 s, disturbed start)", "omega_max of about 2 sqrt(k/m)", "-4 DA/(mu l^2)",
         "falls like 1/n", "DP5(4) reference", "below 0.9 of it", "rerun at dt / 4, then dt / 16",
         "0 or 1, C_N0 = C_T0 = 0", "3 unknowns per wing and 2 per node", "1. **Layout.**", "C_N0 sin^3 a_c + C_T0",
         "L (1 + T/EA)", "w_perp^2 L^3 / (24 T^2)", "2. **Newton.**", "in-plane (2D) model", "the 2D equilibrium is the "
@@ -98,6 +98,10 @@ NUMERICS = Covered(
         # tests/test_env_substeps.py -s -k rk4_past_its_stable: the env's warning, "RK4's estimated stable step
         # 0.0228 s (eigenvalue -122.1 + 0i 1/s) ... (speed factor 5)"
         Printed('rk4_wind_step_test', ('-122 1/s, 0.023 s, after a 5x wind step)',)),
+        # tests/test_rosenbrock.py -s -k observed_order: "ros2: ... at 0.01, 0.005 s: ratio per halving 3.96",
+        # "ros34pw2: ... 7.32" (the page's 3.4 of 2026-11-24 corrected, issue 33 point 6)
+        Printed('rosenbrock_order_test', ('the error ratio per halving from 0.01 to 0.005 s is 3.96 for ros2 and 7.32 '
+                                          'for ros34pw2',)),
         Printed('fast_step_rewards', (  # the slow test's printed errors (its settings given)
             'shrinks with the ROS34PW2 step (0.1269, 0.0390, 0.0044 at',
             "but hardly with ROS2's (0.1443, 0.1336, 0.1259)",
@@ -130,9 +134,6 @@ NUMERICS = Covered(
         'error at 0.05 s halves (0.028 against 0.058 m), but its largest stable step falls from 0.2 to 0.1 s (the '
         'apex wings diverge at 7.8 s)',
         'broke the mill down at 0.2 s',
-        # tests/test_rosenbrock.py's docstring: the test itself halves once (0.01 -> 0.005 s), so no command prints the
-        # series from 0.04 s
-        'ros2 2.9, 3.1, 3.4 and ros34pw2 6.1, 6.8, 7.3',
         # the 5x wind step's eigenvalue and step are Printed (rk4_wind_step_test); no command prints the growth
         'and RK4 past it grows the state about 30-fold per step',
         "(the rising leg, stretched by 160 kN against the falling leg's 40 kN, is 20 m longer)",
@@ -156,6 +157,9 @@ NUMERICS = Covered(
         'by a factor 2',
     ),
     history=(  # the page's earlier figures, replaced by today's printed ones (issue 33 point 6, 2026-11-30)
+        History('2026-11-24', 'the series beside tests/test_rosenbrock.py (e770ec3; the test halves once, from 0.01 s)',
+                'the tethered wing over 2 s from 0.04 to 0.005 s, as first measured',
+                ('2026-11-24, from 0.04 s: ros2 2.9, 3.1, 3.4 and ros34pw2 6.1, 6.8, 7.3)',)),
         History('2026-11-24', 'pytest -s tests/test_initial_elements.py (569de48)',
                 'the converging wing from n = 1 to 16 elements per piece (the test today stops at n = 8)',
                 ('2026-11-24 quoted 1.10, 0.17, 0.041, 0.010 m from n = 1 to 16',)),

@@ -19,6 +19,10 @@ NUMERICS_TESTS = {
     # TetheredWing-v0 on RK4 through a 5x wind step: the env's warning names the estimate and its eigenvalue
     "rk4_wind_step_test": Long('python -m pytest -m "slow or not slow" -s tests/test_env_substeps.py -k '
                                'rk4_past_its_stable', "27 s (2026-11-30, nice 15, load 6)", "numerics.md"),
+    # the observed order of ros2, ros2t, ros34pw2 on the tethered wing, one halving from 0.01 s
+    "rosenbrock_order_test": Long('python -m pytest -m "slow or not slow" -s tests/test_rosenbrock.py -k '
+                                  'observed_order_on_the_tethered_wing', "6 s (2026-11-30, nice 15, load 5)",
+                                  "numerics.md"),
     "alpha_rate_pole_test": Long('python -m pytest -m "slow or not slow" -s tests/test_alpha_rate_limit.py -k '
                                  'names_the_alpha', "26 s", "numerics.md"),
     # work_precision.md: the stress suite's small version on the tethered wing (2 s horizon, 5 bisections) and its
