@@ -127,7 +127,8 @@ NUMERICS = Covered(
         # the review's scripts of 2026-11-30 (/tmp/r2/conv3.py: ros2 0.0146 at 0.78 ms, ros2t 0.0255 / 0.0019 at 12.5 /
         # 3.125 ms); no command of the package prints them
         'show ROS2 converging only below 1 ms and ROS2T from 12.5 ms;',
-        # runs of the numerics' design (the golden runs' comparisons, the trims' residuals, the chain's modes)
+        # runs of the numerics' design with variants the code no longer has (without the body Jacobian, the implicit
+        # sag derivative, the moving end left explicit): no command of today's package can run them
         'unstable at 0.05 s on the chain',
         'with it, at 0.2 s.',
         '(3.6x softer',
@@ -136,6 +137,7 @@ NUMERICS = Covered(
         'broke the mill down at 0.2 s',
         # the 5x wind step's eigenvalue and step are Printed (rk4_wind_step_test); no command prints the growth
         'and RK4 past it grows the state about 30-fold per step',
+        # the layout's design runs (ends a few metres apart, other elevators): settings no scene or test has now
         "(the rising leg, stretched by 160 kN against the falling leg's 40 kN, is 20 m longer)",
         '(alpha about 13.7 deg)',
         '(alpha about 5.4 deg).** At +2 deg (alpha about 2.9 deg)',
@@ -149,6 +151,8 @@ NUMERICS = Covered(
         # worked by hand, but dyneema_25mm.yaml's 0.3 kg/m gives 3.75 kg at 12.5 m (EA 2.16e7 N / 12.5 m = 1.7e6
         # N/m holds): reported to the lead (issue 33 point 6, 2026-11-30), not derived while it disagrees
         '(half of each neighbouring element, 2.5 kg at 12.5 m) against an element stiffness EA / l0 of 1.7e6 N/m',
+        # issue 13's diagnosis (569de48): the unscaled solve from straight chords, the layout's guess at n = 8,
+        # MINPACK's relative steps, the one-ulp perturbation of the measure: one-off runs no test or command prints
         'at n = 8 (RMS 0.105 m/s^2), and the trim stalls at n = 4 and 8 with the angle of attack off by 0.008 rad',
         'is 2.5e-7 m/s^2',
         '(100-230 N against 160 kN at the ground)',

@@ -58,6 +58,8 @@ WORK_PRECISION = Covered(
         '- Largest stable step of the linearly implicit methods (added this session; the same bisection and test, 4 s '
         "from the disturbed start, between RK4's estimated limit and 64 times it, capped at a quarter of the "
         'horizon; ):', '2 s horizon).', "(the README's 0.025 s is past it)",
+        # stress.wind_rows' winds and the cases' 20 s
+        '- Winds 0 to 40 m/s, wind to zero and back, the unloading gust, random controls: every scene runs 20 s or',
         "- **The tethered wing and the chain are held by their envs' lateral LQR** ( , designed on the scene itself, "
         "applied every 50 ms to the env observation of the simulator's state, ):",
         *controller_measure.GIVEN,  # the controller-measure section (docsite/ledger_controller_measure.py)
@@ -115,6 +117,12 @@ WORK_PRECISION = Covered(
         # the least and largest of --long stress_all's four printed ratios: bisection / estimate 1.011, 1.005, 1.011,
         # 1.044; DP5(4)'s mean step / its estimate 0.9837, 0.9779, 0.974, 0.9865 (rtol 1e-6: the case's setting)
         '(ratios 1.005 to 1.044)',
+        # read off --long stress_all's rows (2026-11-30): roberts_flying_model's winds 0 and 5 m/s, bang-bang and
+        # random controls end in ground contact, its 10 m/s and above and every other scene's cases run; 60 injection
+        # rows, 40 of them with method rk4 or dp54 (the other 20 ros34pw2)
+        'ends in a documented ground contact (the craft below 10 m/s and under bang-bang or random controls).',
+        '- Injections: all 40 (NaN, inf, 1e12 in wing and node positions, quaternions, velocities, rates; RK4 and '
+        'DP5(4); four scenes)',
         "DP5(4)'s mean step at rtol 1e-6 is 0.974-0.9865 of its estimated limit on every scene",
         *controller_measure.DERIVED,  # the controller-measure section (docsite/ledger_controller_measure.py)
         # readings over whip_spectrum's printed shares (each scene's modes by share, |exp(h l)| and |R(h l)| to 4
@@ -302,10 +310,6 @@ WORK_PRECISION = Covered(
         'since the station column (before: 0.19 s, 12.6x and 0.10 s, 6.6x);',
         '- 1 h held (before the LQR holds, at their equilibrium controls): tethered wing and chain stay at their '
         'equilibrium to roundoff (drift of the mean height below 1e-11 m, of the tension below 1e-7 N;',
-        '- Winds 0 to 40 m/s, wind to zero and back, the unloading gust, random controls: every scene runs 20 s or '
-        'ends in a documented ground contact (the craft below 10 m/s and under bang-bang or random controls). - '
-        'Injections: all 40 (NaN, inf, 1e12 in wing and node positions, quaternions, velocities, rates; RK4 and '
-        'DP5(4); four scenes)',
         '- Fixed since: with 8 elements per piece no scene found its initial state',
         '(its 5 ms step is flagged above the estimated 1.35 ms limit for 8 elements; the run at half the estimate '
         'holds). The mill under bang-bang controls on all 101 wings, which failed at t = 3.9 s in that run, was a '
