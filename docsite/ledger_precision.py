@@ -34,6 +34,10 @@ STRESS_PRINTED = (
     'laddermill ROS2 0.42 s (27x), ROS34PW2 stable at the cap 0.99 s (64x)',
     'tethered wing 0.01922 / 0.01901 s,', 'chain 0.02458 / 0.02445 s', 'craft 0.00626 / 0.00619 s,',
     'mill 0.0161 / 0.0154 s',
+    # the elements cases: tethered_wing at 8 "dt_scene_s=0.005, dt_estimate_s=0.001353, scene_dt_flagged=True",
+    # laddermill at 8 "dt_estimate_s=2.846e-06"
+    '(its 5 ms step is flagged above the estimated 1.35 ms limit for 8 elements;',
+    "(the mill's RK4 limit at 8 elements is 2.8 us).",
     'the mill, started at rest with its cable moving, settles (height +0.045 m, tension -8.3 kN, kinetic energy '
     '1.1e5 J to 1.2e4 J).',
     '- Env episodes: TetheredWing-v0 10,048 episodes (all to the 5 s limit), Rotorcraft-v0 10,000 (8,154 to the '
@@ -58,7 +62,8 @@ WORK_PRECISION = Covered(
         '- Largest stable step of the linearly implicit methods (added this session; the same bisection and test, 4 s '
         "from the disturbed start, between RK4's estimated limit and 64 times it, capped at a quarter of the "
         'horizon; ):', '2 s horizon).', "(the README's 0.025 s is past it)",
-        # stress.wind_rows' winds and the cases' 20 s
+        # stress.wind_rows' winds and the cases' 20 s; stress.ELEMENT_RUN_STEPS
+        'for at most 20,000 steps',
         '- Winds 0 to 40 m/s, wind to zero and back, the unloading gust, random controls: every scene runs 20 s or',
         "- **The tethered wing and the chain are held by their envs' lateral LQR** ( , designed on the scene itself, "
         "applied every 50 ms to the env observation of the simulator's state, ):",
@@ -305,14 +310,13 @@ WORK_PRECISION = Covered(
         "RK4's limit) and raised before any injection; they now run at half RK4's estimate. The elements cases on "
         "and at 8 elements per piece failed at load, where the loader refuses the scene's step (beyond twice the "
         "stiffest element's closed-form bound); a refusal now counts as detected, the case finds the equilibrium "
-        "below the bound and runs at half the estimate, for at most 20,000 steps (the mill's RK4 limit at 8 "
-        "elements is 2.8 us). The mill under bang-bang controls ran its 20 s then (below). Before: 96 pass, 4 fail.",
+        "below the bound and runs at half the estimate,",
+        'The mill under bang-bang controls ran its 20 s then (below). Before: 96 pass, 4 fail.',
         'since the station column (before: 0.19 s, 12.6x and 0.10 s, 6.6x);',
         '- 1 h held (before the LQR holds, at their equilibrium controls): tethered wing and chain stay at their '
         'equilibrium to roundoff (drift of the mean height below 1e-11 m, of the tension below 1e-7 N;',
         '- Fixed since: with 8 elements per piece no scene found its initial state',
-        '(its 5 ms step is flagged above the estimated 1.35 ms limit for 8 elements; the run at half the estimate '
-        'holds). The mill under bang-bang controls on all 101 wings, which failed at t = 3.9 s in that run, was a '
+        'The mill under bang-bang controls on all 101 wings, which failed at t = 3.9 s in that run, was a '
         "step past the loaded stability limit, not a physical manoeuvre: at the scene's present 10 ms step (12.5 ms "
         "then, beyond RK4's 12.2 ms limit right after a transfer) it runs the 20 s, and so it does at 2.5 ms",
         'RK4 at 10 ms steps over it without evaluating it.',
