@@ -78,6 +78,9 @@ NUMERICS = Covered(
         "difference Jacobians of 507, 915 and 1731 "
         "unknowns)"),
     derived=(  # worked by hand from the page's own inputs
+        # dyneema_25mm.yaml: 0.3 kg/m x 12.5 m (the tethered wing's 100 m piece at n = 8) = 3.75 kg (half of each of
+        # two elements); EA 2.16e7 N / 12.5 m = 1.73e6 N/m (the page said 2.5 kg until 2026-11-30: worked by hand)
+        '(half of each neighbouring element, 3.75 kg at 12.5 m) against an element stiffness EA / l0 of 1.7e6 N/m',
         # benchmarks.md's closed-loop chain with ros2:4: power -6.69e-09 (relative), offset -1.49e-08 m
         "Closed loop the chain's LQR sees within 1e-8 of RK4",
         "omega^2 ~ 1e6 s^-2, a wing's pendulum g / L ~ 0.1 s^-2", "outweigh the wing rows 1e7 to one",
@@ -148,9 +151,6 @@ NUMERICS = Covered(
         # 16b454f's own one-ulp floors: tests/data/ulp_floor_16b454f.py runs only on a checkout of that commit
         # (PYTHONPATH=/tmp/old), not on today's package; the start's difference is inside the test's componentwise max
         'by 0.9-1.2e-10 on the chains', '(single wing and rotorcraft 1.2-2.3e-12;',
-        # worked by hand, but dyneema_25mm.yaml's 0.3 kg/m gives 3.75 kg at 12.5 m (EA 2.16e7 N / 12.5 m = 1.7e6
-        # N/m holds): reported to the lead (issue 33 point 6, 2026-11-30), not derived while it disagrees
-        '(half of each neighbouring element, 2.5 kg at 12.5 m) against an element stiffness EA / l0 of 1.7e6 N/m',
         # issue 13's diagnosis (569de48): the unscaled solve from straight chords, the layout's guess at n = 8,
         # MINPACK's relative steps, the one-ulp perturbation of the measure: one-off runs no test or command prints
         'at n = 8 (RMS 0.105 m/s^2), and the trim stalls at n = 4 and 8 with the angle of attack off by 0.008 rad',

@@ -169,7 +169,8 @@ LONG = {
     "jacobian_reuse": Long("python -m laddermill_gym.studies.numerics.jacobian_reuse --every 1 2 4 8", "minutes",
                            "numerics.md"),
     "stress_all": Long("laddermill stress tethered_wing ladder_chain roberts_flying_model laddermill",
-                       "5.5 min (2026-11-24) to an hour", "work_precision.md"),
+                       "5.5 min (2026-11-24) to 20 min (1217 s "
+                       "at nice 15, load 4.5-6.4, 2026-11-30)", "work_precision.md"),
     # benchmarks.md
     # the mill's part of laddermill bench (studies/mill/mill_benchmark.py has no command of its own: run alone it
     # printed nothing, 2026-11-30); the two scenes' part comes with it
