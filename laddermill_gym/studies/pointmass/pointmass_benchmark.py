@@ -21,6 +21,7 @@ import numpy as np
 from tqdm import tqdm
 
 from laddermill_gym.ladder.pointmass_scene import load_pointmass_scene
+from laddermill_gym.model.pointmass import held_bytes, make_work
 from laddermill_gym.sim.pointmass import PointMassSimulator, explicit_stable_dt
 from laddermill_gym.studies.commands import run_subcommand
 
@@ -146,6 +147,8 @@ def run_pointmass_benchmark(quick: bool = False, json_path: str | None = None) -
     print(f"\npoint-mass fidelity, scene {SCENE}: {sc.string.n_elements} elements, {sc.string.n_kites} kites")
     print("held arrays [MB]: " + ", ".join(f"{k} {v / 1e6:.2f}" for k, v in held.items())
           + "   (budget 40 MB; Podgaets & Ockels: 82 MB for the whole program)")
+    room = {p: held_bytes(sim.M, make_work(sc.string, parts=p), sim.x, sim.u)["total"] / 1e6 for p in (16, 128)}
+    print("held in all with a workspace for 16 / 128 chunks [MB]: " + " / ".join(f"{v:.2f}" for v in room.values()))
     print(f"peak resident memory of a process that runs the scene: {peak:.0f} MB (Python, numpy, scipy, numba with "
           "its compiled code, the quasi-static start's temporaries)")
     print(f"\n{'elements':>9} {'method':>9} {'thr':>4} {'dt [s]':>10} {'step [ms]':>10} {'ns/elem':>8} "
