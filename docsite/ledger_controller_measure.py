@@ -111,8 +111,13 @@ NOT_RERUN = (
     # not whip_spectrum's output: its ROS34PW2 runs at 0.0667 s only; whip_spectrum --methods ros34pw2:0.2 would
     # print the share (until 2026-11-30 listed under its group, which printed none of it)
     'gets 0.70 of exp(z) from ROS34PW2 at 0.2 s).',
-    # no command prints them: R(inf) of ROS3Pw and ROS34PW3 from Rang & Angermann 2005, |R(4i)| of the three worked
-    # by hand from their coefficients (not added to the package)
-    'ROS3Pw and ROS34PW3 (Rang & Angermann 2005, R(inf) = 0.73, 0.63) damp more (|R(4i)| 0.79, 0.70 against 0.61): '
-    'not added.',
 )
+
+#: the stability functions R(z) = 1 + z b^T (I - z B)^-1 1 of ROS3Pw and ROS34PW3 (Rang & Angermann 2005's tables)
+#: and of the shipped ROS34PW2 (its tableau), as tests/test_stability_functions.py -s -k damping_figures prints them:
+#: "Rang & Angermann 2005's R(inf): ROS3Pw -0.732, ROS34PW3 -0.630 (|R(inf)| 0.732, 0.630); |R(4i)|: ROS3Pw
+#: 0.785, ROS34PW3 0.697, ROS34PW2 0.611" (until 2026-11-30 not_rerun, worked by hand; the page wrote R(inf) for
+#: |R(inf)|)
+STABILITY = Printed('stability_functions_test', (
+    'ROS3Pw and ROS34PW3 (Rang & Angermann 2005, |R(inf)| = 0.73, 0.63) damp more (|R(4i)| 0.79, 0.70 against 0.61): '
+    'not added.',))

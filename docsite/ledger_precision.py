@@ -273,6 +273,7 @@ WORK_PRECISION = Covered(
             'at the start,',
         )),
         controller_measure.PRINTED,  # docsite/ledger_controller_measure.py
+        controller_measure.STABILITY,  # |R(inf)|, |R(4i)|: tests/test_stability_functions.py
         # split to the printed lines they come from (--long whip_spectrum, 2026-11-30, 63 s: every cell as written)
         Printed('whip_spectrum', (
             "by RK4 at 2 ms to each time , forms the full Jacobian (central differences, LAPACK ), writes each run's "
@@ -320,7 +321,7 @@ WORK_PRECISION = Covered(
         "step past the loaded stability limit, not a physical manoeuvre: at the scene's present 10 ms step (12.5 ms "
         "then, beyond RK4's 12.2 ms limit right after a transfer) it runs the 20 s, and so it does at 2.5 ms",
         'RK4 at 10 ms steps over it without evaluating it.',
-        *controller_measure.NOT_RERUN,  # the 33 m/s whip, the 0.2 s share, ROS3Pw / ROS34PW3 (their comments)
+        *controller_measure.NOT_RERUN,  # the 33 m/s whip, the 0.2 s share (their comments)
         # a gust run of 2026-11-24 (ec22606): laddermill stress tethered_wing prints no +30 % gust case (its run of
         # 2026-11-30, --long stress_tethered_wing: the estimate at rest 0.01901 s, no gust at RK4 0.0179 s)
         'a +30 % gust makes RK4 at 0.0179 s (0.94 of the estimate at rest) diverge at t = 1.6 s',

@@ -40,4 +40,7 @@ NUMERICS_TESTS = {
     # work_precision_closed_loop.md: the study's closed loop against the harness rollout (tethered wing, chain)
     "closed_loop_rollout_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_closed_loop_precision.py '
                                       '-k harness_rollout', "25 s", "work_precision_closed_loop.md"),
+    # work_precision.md: the stability functions of ROS3Pw, ROS34PW3 (Rang & Angermann 2005) and the shipped tableaux
+    "stability_functions_test": Long('python -m pytest -m "slow or not slow" -s tests/test_stability_functions.py -k '
+                                     'damping_figures', "2 s (2026-11-30, nice 15)", "work_precision.md"),
 }
