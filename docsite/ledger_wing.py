@@ -162,7 +162,6 @@ DERIVED = (
 #: figures no command re-runs: the v0 mill's runs at a descending elevator of 0 deg and the v1 mill's trial runs at
 #: 5 m/s (Python sessions of 2026-11-29, run_to_periodic with overrides; no command)
 NOT_RERUN = (
-    '(C_L 0.85)',
     'falls to 0 at t = 160 s',
     # at 5 m/s: the trial runs of 2026-11-29 (fb84e85: period tensions up to 350 kN first element, 388 kN last), not
     # kept; today power_curve_v1 prints a last period's T_max of 327.7 kN and a peak of 527.8 kN, the v1 study 1.01 x
@@ -205,10 +204,12 @@ PRINTED = (
     # and its ground elements' period-mean tensions ("first element 160.0 kN, last 126.9 kN"; until 2026-11-30 the
     # page said the descending leg pulls 82 % of the ascending one's pull, a figure no recorded run gives: History)
     Printed("pointmass_mill_study", ('and the mill delivers 66 kW', "127 kN against the ascending one's 160 kN")),
-    # derive_wing --check's line the page group does not parse: "wing alone (main wing's 3-D curve): C_L,max = 1.220
-    # at alpha = 14.45 deg; boom cross-flow drag 0.0163 sin^2 alpha" (2026-11-30; until then not_rerun)
+    # derive_wing --check's lines the page group does not parse: "wing alone (main wing's 3-D curve): C_L,max = 1.220
+    # at alpha = 14.45 deg; boom cross-flow drag 0.0163 sin^2 alpha", "v0 attachment at elevator 0 deg (steady 10
+    # m/s): trim alpha 7.00 deg, C_L 0.849" (2026-11-30; until then not_rerun)
     Printed("derive_wing_printed", ('The resulting wing-alone C_L,max is 1.22 at 14.5 deg',
-                                    '(wing alone 1.22 at 14.5 deg)', 'boom cross-flow adds 0.016 sin^2 alpha')),
+                                    '(wing alone 1.22 at 14.5 deg)', 'boom cross-flow adds 0.016 sin^2 alpha',
+                                    '(C_L 0.85)')),
     # the v1 study's 3D case at 2 m/s ("3D V_c=2: periodic, t = 1485 s; mean power 152.9 kW"; --long, 60 s with its
     # searches saved, 2026-11-30, nice 15, load 5.7)
     # and its peak tension ("(peak tension 0.285 x the breaking load)"; until 2026-11-30 the page quoted "a largest

@@ -7,8 +7,14 @@ from __future__ import annotations
 from docsite.long_group import Long
 
 STRING_TESTS = {
+    # moving_cable.md: the stable-step estimate at the 3D periodic state just after a transfer (simulate prints it at
+    # its start: "RK4 step 0.01 s; estimated stability limit at the start ... (eigenvalue ... 1/s)")
+    "simulate_laddermill_periodic": Long("laddermill simulate laddermill --start periodic --time 1 --quiet --out "
+                                         "results/long/simulate_laddermill",
+                                         "52 s (2026-11-30, nice 15, load 3-5; its periodic start cached)",
+                                         "moving_cable.md"),
     # wing_data.md: derive_wing --check's lines that its page group does not parse (the wing-alone C_L,max, the booms'
-    # cross-flow drag), its table written under results/long
+    # cross-flow drag, the v0 wing's C_L at elevator 0), its table written under results/long
     "derive_wing_printed": Long("python -m laddermill_gym.derivations.derive_wing --check --out-dir "
                                 "results/long/derive_wing", "6 s (2026-11-30, nice 15, load 4-5)", "wing_data.md"),
     # pointmass.md: the chunked solver's agreements and the catenary oracle (tests printing what they assert)

@@ -30,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
-from laddermill_gym.derivations.pitch_stability import print_design_study
+from laddermill_gym.derivations.pitch_stability import pitch_mode, print_design_study
 from laddermill_gym.derivations.wing_checks import (
     TableModel,
     attachment_vector,
@@ -192,7 +192,8 @@ def print_quoted_extras(tm: TableModel, wing: Wing) -> None:
     """Print figures docs/wing_data.md quotes beside the design checks (printing only): the side-force rate
     derivatives CYp, CYr and the aileron's yaw in stability axes (Cn cos alpha - Cl sin alpha, per rad) at 0/7/14/30/90
     deg in the derivative lines' format, the main wing's own 3-D curve's C_L,max and its alpha (no tail, no dihedral),
-    and the booms' cross-flow drag coefficient (times sin^2 alpha, referred to S_W)."""
+    the booms' cross-flow drag coefficient (times sin^2 alpha, referred to S_W) and the v0 wing's trim and C_L on the
+    cable at elevator 0 (:func:`pitch_mode`)."""
     angles = np.radians([0.0, 7.0, 14.0, 30.0, 90.0])
     for name in ("CYp", "CYr"):
         print(f"  {name:5s} at 0/7/14/30/90 deg: " + " ".join(f"{tm.col(a, name):8.4f}" for a in angles))
@@ -203,6 +204,8 @@ def print_quoted_extras(tm: TableModel, wing: Wing) -> None:
     i = int(np.argmax(cl))
     print(f"wing alone (main wing's 3-D curve): C_L,max = {cl[i]:.3f} at alpha = {np.degrees(al[i]):.2f} deg; boom "
           f"cross-flow drag {wing.cd_cross:.4f} sin^2 alpha")
+    zero = pitch_mode(tm, 0.0, ATT_ANGLE)  # the v0 wing on the cable at elevator 0 (the pitch check's trim)
+    print(f"v0 attachment at elevator 0 deg (steady 10 m/s): trim alpha {zero[0]:.2f} deg, C_L {zero[1]:.3f}")
 
 
 def main(argv=None):
