@@ -321,7 +321,7 @@ WORK_PRECISION = Covered(
         "step past the loaded stability limit, not a physical manoeuvre: at the scene's present 10 ms step (12.5 ms "
         "then, beyond RK4's 12.2 ms limit right after a transfer) it runs the 20 s, and so it does at 2.5 ms",
         'RK4 at 10 ms steps over it without evaluating it.',
-        *controller_measure.NOT_RERUN,  # the 33 m/s whip, the 0.2 s share (their comments)
+        *controller_measure.NOT_RERUN,  # the 33 m/s whip (its comment)
         # a gust run of 2026-11-24 (ec22606): laddermill stress tethered_wing prints no +30 % gust case (its run of
         # 2026-11-30, --long stress_tethered_wing: the estimate at rest 0.01901 s, no gust at RK4 0.0179 s)
         'a +30 % gust makes RK4 at 0.0179 s (0.94 of the estimate at rest) diverge at t = 1.6 s',
@@ -340,6 +340,9 @@ WORK_PRECISION = Covered(
                      'run of 2026-11-30 (issue 33 point 6)',
                      ('(2026-11-24: -7e-15 m, -3e-12 N, 1.5e-24 and 2.2e-24 J).', '(2026-11-24: 1.6e-17 J;',
                       '2026-11-24: 0.33 s, 13.6x)', '(2026-11-24: 0.98-0.99).')),
+             History('2026-11-29', "whip_spectrum.factor('ros34pw2', 0.2 s x 6.405 1/s) (6e68f22)",
+                     "the mill's fastest unstable mode at 7.6 s, its real part alone (z = 1.28)",
+                     ("0.70 as written on 2026-11-29 is its real part's alone).",)),
              History('2026-11-24', 'the failed ros34pw2 run of the 101-wing mill under bang-bang controls (9f0397d)',
                      "the pole's accelerations from another evaluation than today's alpha_rate_pole_test's",
                      ('2026-11-24, another evaluation: -74 deg, -4.5e6, 3.9e9, -129).',)),

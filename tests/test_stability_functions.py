@@ -107,3 +107,20 @@ def test_the_pages_damping_figures():
     assert round(abs(r_inf["ros3pw"]), 2) == 0.73 and round(abs(r_inf["ros34pw3"]), 2) == 0.63
     assert [round(r_4i[k], 2) for k in ("ros3pw", "ros34pw3", "ros34pw2")] == [0.79, 0.70, 0.61]
     assert r_4i["ros2t"] == pytest.approx(1.0, abs=1e-12)
+
+
+def test_the_whip_modes_damping_figure():
+    """work_precision.md: the mill's fastest unstable mode at 7.6 s, 6.405 +- 7.82i 1/s as ``python -m
+    laddermill_gym.studies.numerics.whip_spectrum laddermill --at 7.6 --top 2000 --methods ros34pw2:0.2`` prints it
+    (with R/exp 0.850; 2026-11-30), gets 0.85 of |exp(z)| from ROS34PW2 at 0.2 s; 0.70 (the page until 2026-11-30)
+    is its real part's alone, z = 1.281. The study's own evaluation (W_METHODS, stability_function_w) agrees."""
+    from laddermill_gym.studies.numerics.whip_spectrum import W_METHODS, stability_function_w
+
+    lam, h = 6.405 + 7.82j, 0.2  # 1/s, s
+    share = abs(stability(TABLEAUX["ros34pw2"], h * lam)) / abs(np.exp(h * lam))
+    real = abs(stability(TABLEAUX["ros34pw2"], h * lam.real)) / np.exp(h * lam.real)
+    print(f"\nthe mill's mode at 7.6 s growing at {lam.real:.1f} 1/s, lambda = {lam.real} +- {lam.imag}i 1/s; "
+          f"ROS34PW2 at {h} s: |R(z)| / |exp(z)| {share:.3f} (its real part alone, z = {h * lam.real:.3f}: {real:.3f})")
+    study = float(np.abs(stability_function_w(W_METHODS["ros34pw2"], np.array([h * lam])))[0])
+    assert study == pytest.approx(abs(stability(TABLEAUX["ros34pw2"], h * lam)), rel=1e-12)
+    assert round(share, 2) == 0.85 and round(real, 2) == 0.70
