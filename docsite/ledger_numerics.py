@@ -126,33 +126,18 @@ NUMERICS = Covered(
         # the one-element wing at its trimmed start: "rk4: largest stable step 0.1141 s (... -24.4 + 0i 1/s)"
         Printed('stable_step_wing_1', ('-24 1/s, a 0.11 s limit,',)),
     ),
-    not_rerun=(  # measured by the tests the page names (tests/test_*.py: assertions, not printed) and exploratory
-        # the review's scripts of 2026-11-30 (/tmp/r2/conv3.py: ros2 0.0146 at 0.78 ms, ros2t 0.0255 / 0.0019 at 12.5 /
-        # 3.125 ms); no command of the package prints them
-        'show ROS2 converging only below 1 ms and ROS2T from 12.5 ms;',
-        # runs of the numerics' design with variants the code no longer has (without the body Jacobian, the implicit
-        # sag derivative, the moving end left explicit): no command of today's package can run them
-        'unstable at 0.05 s on the chain',
-        'with it, at 0.2 s.',
-        '(3.6x softer',
-        'error at 0.05 s halves (0.028 against 0.058 m), but its largest stable step falls from 0.2 to 0.1 s (the '
-        'apex wings diverge at 7.8 s)',
-        'broke the mill down at 0.2 s',
+    not_rerun=(  # exploratory runs no command prints (the review's script and the design runs of variants the code
+        # no longer has are History records below)
         # the 5x wind step's eigenvalue and step are Printed (rk4_wind_step_test); no command prints the growth
         'and RK4 past it grows the state about 30-fold per step',
-        # the layout's design runs (ends a few metres apart, other elevators): settings no scene or test has now
-        "(the rising leg, stretched by 160 kN against the falling leg's 40 kN, is 20 m longer)",
+        # the layout's design runs with other elevators (+2 deg); the 13.7 / 5.4 deg are the scene's trim at today's
+        # elevators, which today's code could print (no command does)
         '(alpha about 13.7 deg)',
         '(alpha about 5.4 deg).** At +2 deg (alpha about 2.9 deg)',
         'within 15 s (the same growth at dt = 0.01, 0.005 and 0.0025 s,',
-        # (test_cache_reproducibility's elimination runs with flags switched off: not the shipped kernels)
-        '(from step 16)',
-        "the in-plane chain's equilibrium by 8.5e-13 at the start,",
-        # 16b454f's own one-ulp floors: tests/data/ulp_floor_16b454f.py runs only on a checkout of that commit
-        # (PYTHONPATH=/tmp/old), not on today's package; the start's difference is inside the test's componentwise max
-        'by 0.9-1.2e-10 on the chains', '(single wing and rotorcraft 1.2-2.3e-12;',
-        # issue 13's diagnosis (569de48): the unscaled solve from straight chords, the layout's guess at n = 8,
-        # MINPACK's relative steps, the one-ulp perturbation of the measure: one-off runs no test or command prints
+        # issue 13's diagnosis (569de48, 2026-11-24): the unscaled solve (scaled=False), the layout's guess, MINPACK's
+        # relative steps and the one-ulp round-off of the measure are options today's package still has, so not
+        # History; no test or command prints them (a script of the diagnosis would)
         'at n = 8 (RMS 0.105 m/s^2), and the trim stalls at n = 4 and 8 with the angle of attack off by 0.008 rad',
         'is 2.5e-7 m/s^2',
         '(100-230 N against 160 kN at the ground)',
@@ -175,5 +160,24 @@ NUMERICS = Covered(
                 ('2026-11-24: 9.8e-11 and 2.1e-12)', '(2026-11-24: 1.1e-10;', '4.6e-14 on 2026-11-24)')),
         History('2026-11-24', 'the scaled solve of ladder_chain (569de48)',
                 'the first polished start, its n not recorded', ('4.7e-8 m/s^2 as written on 2026-11-24',)),
+        History('2026-11-30', "the review R2's /tmp/r2/conv3.py (not kept; aef5b41)",
+                'LadderChain-v0 open loop: ros2 0.0146 at 0.78 ms, ros2t 0.0255 / 0.0019 at 12.5 / 3.125 ms',
+                ('show ROS2 converging only below 1 ms and ROS2T from 12.5 ms;',)),
+        History('2026-11-24', "the W-methods' design runs on ladder_chain (e770ec3; 10 s, 0.1 rad direction step)",
+                'variants the code no longer has: ros2 without the body Jacobian, the implicit sag derivative',
+                ('unstable at 0.05 s on the chain', 'met explicitly); with it, at 0.2 s', '(3.6x softer',
+                 'error at 0.05 s halves (0.028 against 0.058 m), but its largest stable step falls from 0.2 to 0.1 s '
+                 '(the apex wings diverge at 7.8 s)')),
+        History('2026-11-24', 'the mill\'s W-method runs before the station column (03bc65a)',
+                'the moving end left explicit (the code no longer has it)', ('broke the mill down at 0.2 s',)),
+        History('2026-11-22', "the layout's grid search for ladder_chain (596e2f4)",
+                'ground points a few metres apart (no scene has them now)',
+                ("(the rising leg, stretched by 160 kN against the falling leg's 40 kN, is 20 m longer)",)),
+        History('2026-11-24', 'tests/test_cache_reproducibility.py by elimination, fastmath flags off (6943b61)',
+                'kernels with contract / reassoc switched off, not the shipped ones; the golden in-plane start then',
+                ('(from step 16)', "the in-plane chain's equilibrium by 8.5e-13 at the start,")),
+        History('2026-11-24', 'tests/data/ulp_floor_16b454f.py on a checkout of 16b454f (e9de291)',
+                "16b454f's own output with its start moved by one ulp per entry (earlier code)",
+                ('by 0.9-1.2e-10 on the chains', '(single wing and rotorcraft 1.2-2.3e-12;')),
     ),
 )
