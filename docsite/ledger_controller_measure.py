@@ -104,12 +104,6 @@ DERIVED = (
     '(order 2.0)',
 )
 
-NOT_RERUN = (
-    # the reference's fastest wing at 10 s (33 m/s, the work-precision reading above): no command prints a wing's
-    # speed (a side measurement of 2026-11-29)
-    'On the mill over 10 s the whip is stronger (33 m/s):',
-)
-
 #: the stability functions R(z) = 1 + z b^T (I - z B)^-1 1 of ROS3Pw and ROS34PW3 (Rang & Angermann 2005's tables)
 #: and of the shipped ROS34PW2 (its tableau), as tests/test_stability_functions.py -s -k damping_figures prints them:
 #: "Rang & Angermann 2005's R(inf): ROS3Pw -0.732, ROS34PW3 -0.630 (|R(inf)| 0.732, 0.630); |R(4i)|: ROS3Pw

@@ -126,24 +126,9 @@ NUMERICS = Covered(
         # the one-element wing at its trimmed start: "rk4: largest stable step 0.1141 s (... -24.4 + 0i 1/s)"
         Printed('stable_step_wing_1', ('-24 1/s, a 0.11 s limit,',)),
     ),
-    not_rerun=(  # exploratory runs no command prints (the review's script and the design runs of variants the code
-        # no longer has are History records below)
-        # the 5x wind step's eigenvalue and step are Printed (rk4_wind_step_test); no command prints the growth
-        'and RK4 past it grows the state about 30-fold per step',
-        # the layout's design runs with other elevators (+2 deg); the 13.7 / 5.4 deg are the scene's trim at today's
-        # elevators, which today's code could print (no command does)
+    not_rerun=(  # the scene's trim at today's elevators: today's code could print it (no command does)
         '(alpha about 13.7 deg)',
         '(alpha about 5.4 deg).** At +2 deg (alpha about 2.9 deg)',
-        'within 15 s (the same growth at dt = 0.01, 0.005 and 0.0025 s,',
-        # issue 13's diagnosis (569de48, 2026-11-24): the unscaled solve (scaled=False), the layout's guess, MINPACK's
-        # relative steps and the one-ulp round-off of the measure are options today's package still has, so not
-        # History; no test or command prints them (a script of the diagnosis would)
-        'at n = 8 (RMS 0.105 m/s^2), and the trim stalls at n = 4 and 8 with the angle of attack off by 0.008 rad',
-        'is 2.5e-7 m/s^2',
-        '(100-230 N against 160 kN at the ground)',
-        '(apex wing 115 N and 580 N m out of balance at n = 8; Newton stalls at 0.13 m/s^2)',
-        'stop at 1e-5 m/s^2',
-        'by a factor 2',
     ),
     history=(  # the page's earlier figures, replaced by today's printed ones (issue 33 point 6, 2026-11-30)
         History('2026-11-24', 'the series beside tests/test_rosenbrock.py (e770ec3; the test halves once, from 0.01 s)',
@@ -179,5 +164,17 @@ NUMERICS = Covered(
         History('2026-11-24', 'tests/data/ulp_floor_16b454f.py on a checkout of 16b454f (e9de291)',
                 "16b454f's own output with its start moved by one ulp per entry (earlier code)",
                 ('by 0.9-1.2e-10 on the chains', '(single wing and rotorcraft 1.2-2.3e-12;')),
+        History('2026-11-24', "an RK4 run of TetheredWing-v0 past its stable step after a 5x wind step (9a9cc8d)",
+                "a one-off diagnosis (the env's warning names the limit: --long rk4_wind_step_test)",
+                ('and RK4 past it grows the state about 30-fold per step',)),
+        History('2026-11-22', "the layout's trial of +2 deg falling elevators at three steps (596e2f4)",
+                'elevators no scene has now', ('within 15 s (the same growth at dt = 0.01, 0.005 and 0.0025 s,',)),
+        History('2026-11-24', "issue 13's diagnosis of the initial states (569de48)",
+                "one-off runs of the unscaled solve from straight chords, the layout's guess at n = 8, MINPACK's "
+                "relative steps and the measure's one-ulp round-off",
+                ('at n = 8 (RMS 0.105 m/s^2), and the trim stalls at n = 4 and 8 with the angle of attack off by 0.008 '
+                 'rad', 'is 2.5e-7 m/s^2', '(100-230 N against 160 kN at the ground)',
+                 '(apex wing 115 N and 580 N m out of balance at n = 8; Newton stalls at 0.13 m/s^2)',
+                 'stop at 1e-5 m/s^2', 'by a factor 2')),
     ),
 )

@@ -307,25 +307,11 @@ WORK_PRECISION = Covered(
         'controls, as the previous run did, roundoff (kinetic energy 1e-25 to 5e-24 J for 1900-3400 s) grows into a '
         'ground contact (node 2) at 3511 s with its own ROS34PW2 at 50 ms, at 2255 s with RK4 at 5 ms and at 1960 s '
         'with ROS34PW2 at 10 ms: the physics, not the integrator.',
-        "- Fixed by this run: the RK4 injections on the rotorcraft ran at the craft's own 50 ms step (eight times "
-        "RK4's limit) and raised before any injection; they now run at half RK4's estimate. The elements cases on "
-        "and at 8 elements per piece failed at load, where the loader refuses the scene's step (beyond twice the "
-        "stiffest element's closed-form bound); a refusal now counts as detected, the case finds the equilibrium "
-        "below the bound and runs at half the estimate,",
-        'The mill under bang-bang controls ran its 20 s then (below). Before: 96 pass, 4 fail.',
-        'since the station column (before: 0.19 s, 12.6x and 0.10 s, 6.6x);',
-        '- 1 h held (before the LQR holds, at their equilibrium controls): tethered wing and chain stay at their '
-        'equilibrium to roundoff (drift of the mean height below 1e-11 m, of the tension below 1e-7 N;',
-        '- Fixed since: with 8 elements per piece no scene found its initial state',
         'The mill under bang-bang controls on all 101 wings, which failed at t = 3.9 s in that run, was a '
         "step past the loaded stability limit, not a physical manoeuvre: at the scene's present 10 ms step (12.5 ms "
         "then, beyond RK4's 12.2 ms limit right after a transfer) it runs the 20 s, and so it does at 2.5 ms",
         'RK4 at 10 ms steps over it without evaluating it.',
-        *controller_measure.NOT_RERUN,  # the 33 m/s whip (its comment)
-        # a gust run of 2026-11-24 (ec22606): laddermill stress tethered_wing prints no +30 % gust case (its run of
-        # 2026-11-30, --long stress_tethered_wing: the estimate at rest 0.01901 s, no gust at RK4 0.0179 s)
-        'a +30 % gust makes RK4 at 0.0179 s (0.94 of the estimate at rest) diverge at t = 1.6 s',
-        # tests/test_breakpoints.py, tests/test_batch_breakpoints.py and tests/test_stable_step.py
+                # tests/test_breakpoints.py, tests/test_batch_breakpoints.py and tests/test_stable_step.py
         # (assertions, not printed figures); the message format named
         "DP5(4): a step ends on it); each piece runs with its own segment's straight line, so the stage at its end "
         'sees the left-hand slope. Steps with no kink inside run exactly as before (bit for bit: the golden '
@@ -340,6 +326,34 @@ WORK_PRECISION = Covered(
                      'run of 2026-11-30 (issue 33 point 6)',
                      ('(2026-11-24: -7e-15 m, -3e-12 N, 1.5e-24 and 2.2e-24 J).', '(2026-11-24: 1.6e-17 J;',
                       '2026-11-24: 0.33 s, 13.6x)', '(2026-11-24: 0.98-0.99).')),
+             # runs that are not kept: earlier code's stress runs and side runs (issue 33 point 6, dated on the page)
+             History('2026-11-24', 'laddermill stress on the four scenes before the fixes (5c6f0b4, ec22606)',
+                     "earlier code's stress run: injections at the craft's 50 ms step, elements cases refused at load",
+                     ("- Fixed by this run (2026-11-24, 5c6f0b4): the RK4 injections on the rotorcraft ran at the "
+                      "craft's own 50 ms step (eight times RK4's limit) and raised before any injection; they now run "
+                      "at half RK4's estimate. The elements cases on and at 8 elements per piece failed at load, where "
+                      "the loader refuses the scene's step (beyond twice the stiffest element's closed-form bound); a "
+                      "refusal now counts as detected, the case finds the equilibrium below the bound and runs at "
+                      "half the estimate,",
+                      'The mill under bang-bang controls ran its 20 s then (below). Before: 96 pass, 4 fail.')),
+             History('2026-11-24', 'laddermill stress laddermill, stable-step rows before the station column (9382869)',
+                     "the mill's W-methods before the moving end's Jacobian column (earlier code)",
+                     ('since the station column (before: 0.19 s, 12.6x and 0.10 s, 6.6x);',)),
+             History('2026-11-24', 'laddermill stress, 1 h held at the equilibrium controls (a314800)',
+                     'the holds before the LQR holds (the stress suite now holds by LQR)',
+                     ('- 1 h held (before the LQR holds, at their equilibrium controls; 2026-11-24, a314800): tethered '
+                      'wing and chain stay at their equilibrium to roundoff (drift of the mean height below 1e-11 m, '
+                      'of the tension below 1e-7 N;',)),
+             History('2026-11-24', 'laddermill stress at 8 elements per piece before the catenary start (50ea5bc)',
+                     "earlier code's initial states from straight chords",
+                     ('- Fixed since: with 8 elements per piece no scene found its initial state',)),
+             History('2026-11-24', 'a gust run of the tethered wing on RK4 (ec22606; not kept: laddermill stress '
+                     'tethered_wing has no +30 % gust case, --long stress_tethered_wing of 2026-11-30 no gust at '
+                     'RK4 0.0179 s)', 'TetheredWing scene, +30 % gust, RK4 at 0.0179 s',
+                     ('a +30 % gust makes RK4 at 0.0179 s (0.94 of the estimate at rest) diverge at t = 1.6 s',)),
+             History('2026-11-29', 'a side measurement of the DP5(4) reference on the mill over 10 s (0d6b39c)',
+                     "the fastest wing's speed in the apex whip; no command prints a wing's speed",
+                     ('On the mill over 10 s the whip is stronger (33 m/s; 2026-11-29, 0d6b39c):',)),
              History('2026-11-29', "whip_spectrum.factor('ros34pw2', 0.2 s x 6.405 1/s) (6e68f22)",
                      "the mill's fastest unstable mode at 7.6 s, its real part alone (z = 1.28)",
                      ("0.70 as written on 2026-11-29 is its real part's alone).",)),
