@@ -6,7 +6,7 @@ a test's assertions not re-run."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered, Printed
+from docsite.ledger_kinds import Covered, History, Printed
 
 WORK_PRECISION_CLOSED_LOOP = Covered(
     given=(
@@ -126,12 +126,12 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
             'in power', '(hence its 0.025 s), ros2 kept 4 is 8.5e-3 off, ros2t kept 8 1.7e-3.',
         )),
     ),
-    not_rerun=(
-        # one-off runs beside the study (the page: "a one-off script"; their steps, 0.05 s / 2 and / 3, given): its
-        # closed-loop grid starts at 3 RK4 steps per period on the chain (0.01667 s) and 4 on the mill (0.0125 s), so
-        # no command prints these
-        'runs to the end but misses the tolerances: 4.6 % in tension and 0.075 rad in attitude (a growing cable '
-        'mode).',
-        'breaks down at 0.33 s.',
+    history=(  # one-off runs beside the study (the page: "a one-off script"; their steps, 0.05 s / 2 and / 3, given):
+        # the study's closed-loop grid starts at 3 RK4 steps per period on the chain (0.01667 s) and 4 on the mill
+        # (0.0125 s), so no command prints these
+        History('2026-11-30', 'a one-off script of the closed loop with RK4 at 2 / 3 steps per period (f45b8d3)',
+                'ladder_chain at 0.025 s and laddermill at 0.0167 s under the LQR, 10 s',
+                ('runs to the end but misses the tolerances: 4.6 % in tension and 0.075 rad in attitude (a growing '
+                 'cable mode;', 'breaks down at 0.33 s (2026-11-30, f45b8d3).')),
     ),
 )
