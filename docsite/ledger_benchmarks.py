@@ -272,16 +272,17 @@ BENCHMARKS = Covered(
         '(-2.0 %;',  # 111.19 / 113.44 - 1 = -1.98 %
     ),
     not_rerun=(
-        # the eigenvalue estimate just after a transfer (moving_cable.md's, likewise not re-run) and the operating
-        # point's search lengths of the three mills: laddermill bench prints neither; `laddermill stable-step
-        # laddermill` estimates at the scene's start only (0.01542 s, -15.44 +- 190i 1/s on 2026-11-30), no command
-        # at a transfer; the search length is OperatingPoint.t_settle_s, in its note but printed by no command
-        '0.0122 s just after a transfer',
-        "The bisection's in-plane disturbance later in the period misses the short first element's axial mode "
-        "right after a transfer (-30 +- 240i 1/s), which the eigenvalue estimate finds;",
+        # the operating point's search lengths of the three mills: OperatingPoint.t_settle_s, in its note but
+        # printed by no command (laddermill bench prints none)
         'running the in-plane mill for 975-1,380 simulated seconds',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # laddermill stable-step laddermill --after-transfer (2026-11-30): "after the first wing transfer, at t = 50.00
+        # s: rk4: largest stable step 0.01224 s (set by the eigenvalue -30.47 +- 239.8i 1/s)" (were not_rerun)
+        Printed('stable_step_mill_transfer', (
+            '0.0122 s just after a transfer',
+            "The bisection's in-plane disturbance later in the period misses the short first element's axial mode "
+            "right after a transfer (-30 +- 240i 1/s), which the eigenvalue estimate finds;")),
         Printed('fast_step_rewards', (  # the slow tests' printed figures; -2.0 % = 111.19 / 113.44 - 1
             "the mill's mean power 111.19 kW against 113.44", "largest reward error 0.177, RK4's 0.0065)",
             'a mean reward of 0.5185-0.5216 against 0.5458', '(0.0052, 113.44 kW)',

@@ -37,6 +37,9 @@ NUMERICS_TESTS = {
                              'splits_a_step"', "4 s", "work_precision.md, features.md"),
     # numerics.md: the one-element tethered wing's stable RK4 step at its trimmed start
     "stable_step_wing_1": Long("laddermill stable-step tethered_wing --elements-per-piece 1", "3 s", "numerics.md"),
+    # benchmarks.md: the mill's stable RK4 step just after its first wing transfer (5000 RK4 steps to t = 50 s)
+    "stable_step_mill_transfer": Long("laddermill stable-step laddermill --after-transfer",
+                                      "5 s (2026-11-30, nice 15)", "benchmarks.md"),
     # work_precision_closed_loop.md: the study's closed loop against the harness rollout (tethered wing, chain)
     "closed_loop_rollout_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_closed_loop_precision.py '
                                       '-k harness_rollout', "25 s", "work_precision_closed_loop.md"),

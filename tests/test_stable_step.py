@@ -85,3 +85,23 @@ def test_a_scene_past_its_stable_step_warns_when_its_simulator_is_made(monkeypat
     with pytest.warns(ss.UnstableStepWarning, match=r"dt = 0\.025 s .* 0\.024\d* s") as record:
         load_scene("ladder_chain", dt=0.025).simulator()
     print(record[0].message)
+
+
+@pytest.mark.slow
+def test_after_the_first_transfer_the_short_first_element_sets_a_smaller_step(capsys):
+    """``laddermill stable-step laddermill --after-transfer``: the scene is stepped at its own RK4 step to the first
+    wing transfer (the station's count changes in the last step taken), where the station's first element is at its
+    shortest (l_p / 10, docs/numerics.md) and so at its stiffest (EA / l0): the limiting mode is faster and the stable
+    step smaller than at the start (docs/benchmarks.md: 0.0122 s against 0.0154 s, -30 +- 240i 1/s)."""
+    sim = build_simulator("laddermill")
+    start = ss.estimate_stable_step(sim, "rk4")
+    t = ss.step_to_first_transfer(sim)
+    assert sim.transfers() == 1 and t == pytest.approx(sim.t)
+    assert round(t / sim.settings.dt) == pytest.approx(t / sim.settings.dt, abs=1e-6)  # whole steps of the scene's dt
+    after = ss.estimate_stable_step(sim, "rk4")
+    print(f"\nladdermill at the start: {start}\nafter the first transfer (t = {t:.2f} s): {after}")
+    assert after.dt_max < 0.9 * start.dt_max and abs(after.eigenvalue) > abs(start.eigenvalue)
+    with pytest.raises(ValueError, match="--after-transfer: .*no moving cable"):
+        ss.step_to_first_transfer(build_simulator("tethered_wing"))
+    assert ss.main(["laddermill", "--after-transfer"]) == 0
+    assert f"after the first wing transfer, at t = {t:.2f} s" in capsys.readouterr().out

@@ -1,5 +1,7 @@
 """``laddermill stable-step SCENE``: the largest stable step of the explicit methods (RK4, DP5(4)) of a scene from the
-eigenvalues of its Jacobian at the initial state. The estimate itself lives in ``sim/stable_step.py``."""
+eigenvalues of its Jacobian at the initial state, or (``--after-transfer``, a moving cable) right after the first wing
+transfer, when the station's first element is shortest and stiffest. The estimate itself lives in
+``sim/stable_step.py``."""
 
 from __future__ import annotations
 
@@ -24,6 +26,9 @@ def add_parser(sub) -> argparse.ArgumentParser:
     p = sub.add_parser("stable-step", help="estimate the largest stable explicit step of a scene")
     p.add_argument("scene", help="scene name or YAML path, or 'roberts_flying_model' (the rotorcraft)")
     p.add_argument("--elements-per-piece", type=int, default=None, help="override the scene's cable division")
+    p.add_argument("--after-transfer", action="store_true",
+                   help="step the scene at its own method and step until its first wing transfer (a moving cable: "
+                        "the mill's first comes after some 50 s, 5000 RK4 steps) and estimate there")
     p.set_defaults(func=_cmd)
     return p
 
@@ -35,9 +40,28 @@ def _cmd(args) -> int:
     check_number("--elements-per-piece", args.elements_per_piece, low=1, integer=True, strict=False)
     sim = build_simulator(args.scene, elements_per_piece=args.elements_per_piece)
     print(f"{args.scene}: {sim.n_state} states, dt {sim.settings.dt:g} s")
+    if args.after_transfer:
+        t = step_to_first_transfer(sim)
+        print(f"  after the first wing transfer, at t = {t:.2f} s:")
     for m in ("rk4", "dp54"):
         print("  " + str(estimate_stable_step(sim, m)))
     return 0
+
+
+def step_to_first_transfer(sim, t_max: float = 300.0) -> float:
+    """Step ``sim`` (a scene with a moving cable) at its own method and step until the station's transfer count
+    first changes; return that time [s]. Raises ValueError naming the scene's state when none comes by ``t_max``
+    [s] or the scene has no station."""
+    try:
+        start = sim.transfers()
+    except ValueError as err:  # the simulator names a scene without a station
+        raise ValueError(f"--after-transfer: {err}") from None
+    while sim.transfers() == start:
+        if sim.t >= t_max:
+            raise ValueError(f"--after-transfer: no wing transfer by t = {sim.t:.1f} s (cable speed "
+                             f"{sim.cable_speed():g} m/s)")
+        sim.step()
+    return float(sim.t)
 
 
 def main(argv=None) -> int:
