@@ -6,7 +6,8 @@ from __future__ import annotations
 from docsite.ledger_kinds import History
 
 #: the clipped base with a larger initial noise (log_std_init -0.9), seeds 0 and 1; then a middle noise
-#: (log_std_init -1.6) with twice the critic warm-up (160,000 steps), seeds 0 and 1
+#: (log_std_init -1.6) with twice the critic warm-up (160,000 steps), seeds 0 and 1; then that config with the actor at
+#: a tenth of the critics' learning rate (actor_lr_scale 0.1), seeds 0 and 1
 RESIDUAL_SAC_NOISE = (
     History('2026-11-30',
             'laddermill train configs/agents/sac_tethered_wing_residual_after_noise.yaml --seed 0 and --seed 1 '
@@ -51,5 +52,30 @@ RESIDUAL_SAC_NOISE = (
                 "lost 40 or more of the LQR's validation survivals at the first check after it, as the larger-noise "
                 "run's seed 0 did after its shorter one. Seed 0 of the after-squash config (score 101, gusts-v1 10 / "
                 '12) stays the candidate, and issue 31 point 4 is not met.',
+            )),
+    History('2026-11-30',
+            'laddermill train configs/agents/sac_tethered_wing_residual_slow_actor.yaml --seed 0 and --seed 1 '
+            '(8fcd24b); laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 --controllers '
+            'lqr RUN',
+            "the slower-actor (actor_lr_scale 0.1) clipped-base residual SAC's seeds 0 and 1, about 30 min each, not "
+            'kept',
+            (
+                'Nor did an actor slower than its critics (runs of 2026-11-30). is the middle-noise, longer-warm-up '
+                "config with one line added, ( , default off): the actor's Adam steps at a tenth of the critics' "
+                'learning rate (3e-6 against 3e-5 after the warm-up), the two-timescale order of actor-critic '
+                "learning, so that the critics follow the moving policy's values and the validations sample its path "
+                'from the LQR ten times more finely. Seed 0, then seed 1 if time allowed, and the rule between them '
+                '(the higher best paired validation score; a run that keeps its start has none) were fixed and '
+                'committed before either was trained. (277,440 steps in 30.63 min on one core at a load of 3.9 to '
+                '5.6) validated 78 / 184 at the start and through the warm-up (150,008 steps), then 59 with 30 lost '
+                'that the LQR holds at 200,008 steps (paired score -1), 86 with 26 lost at 250,008 (score 34) and 67 '
+                'with 30 lost at the end (score 7); seed 1 (512,808 steps in 30.21 min at a load of 1.1 to 5.4) 75 '
+                'with 22 lost at 200,008 (score 31), then 37 to 64 with 29 to 51 lost (scores -65 to 6). Both kept '
+                "their starts, the LQR bit for bit (gusts-v1 11 / 12 with the LQR's peak lateral excursion and end "
+                'time in all 18 episodes; dryden_moderate lost on its three seeds at 21.45, 32.15 and 18.90 s, as by '
+                "the LQR): no learned policy. A tenth of the actor's rate did not stop the fall: the first check "
+                "after the warm-up lost 30 and 22 of the LQR's validation survivals (40 and 51 at the full rate). "
+                'Seed 0 of the after-squash config (score 101, gusts-v1 10 / 12) stays the candidate, and issue 31 '
+                'point 4 is not met.',
             )),
 )
