@@ -178,16 +178,16 @@ BENCHMARKS = Covered(
         'ends of the list: ). , caches empty, cfa815b and the final code alternated twice (load 1.3-1.6): '
         "TetheredWing-v0 39.7 / 38.0 -> 33.0 / 33.8 s wall (warm-ups' CPU 37.9 / 36.9 -> 39.0 / 39.1 s), "
         'Rotorcraft-v0 32.7 / 34.1 -> 29.0 / 28.9 s; warm 0.89-1.02 s. 20 s is still not met.',
-        "The 20 s target is not met, and not reachable this way. numba links every callee's code into each "
-        'separately compiled function and optimises and generates code for all of it again, so the cost follows '
-        'the number of nested entry points times the size of what they hold. One cold TetheredWing-v0 start '
+        'The 20 s target is not met, and not reachable this way. One cold TetheredWing-v0 start '
         'profiled by CPU seconds of its own ( , at 47a8b53, 71.8 s CPU): the step-and-observe kernel 10.9 s, the '
         '3D assembly 7.6 s, 6.1 s, the W method 5.9 s, the in-plane right-hand side of the static start 4.1 s '
-        '(plus its entry 2.0 s), then the Jacobian parts 1-3 s each. The step kernel, and the W method have '
-        'different compiler flags (fastmath contraction in the kernels, none in the step bookkeeping), so '
-        'inlining one into another would change results in the last bit. What would reach 20 s: an ahead-of-time '
-        'compiled and shipped kernel set, or fewer nested layers with the flags made equal (a new env version, '
-        'since its results change in the last bit).',
+        '(plus its entry 2.0 s), then the Jacobian parts 1-3 s each. Fewer layers do not help (tried 2026-11-30, '
+        'branch , not merged): inlined into the wing\'s and craft\'s step kernels kept the bits (reset + 200 random '
+        'steps) but TetheredWing-v0 took 50.5 / 47.9 -> 54.1 / 50.5 s CPU and Rotorcraft-v0 40.8 -> 40.4 s (startup '
+        'command, warm-up off, caches empty, alternated, load 2.5-3.2): re-linking a callee costs little, each '
+        "function's own compile is the cost (the observation inlined cost 8.9 s against 2.6 s compiled alone). What "
+        'would reach 20 s: kernels compiled ahead of time and shipped, or fewer and smaller compiled functions (a new '
+        'env version if the last bits change).',
         "The warm start misses 1 s. In the table the after-run's warm starts ran under more load; right after, "
         "twice, from the same tree's cache: 1.30 / 1.23 s CPU (2.46 / 2.31 s wall) for TetheredWing-v0, 1.23 / "
         '1.32 s CPU (2.11 / 2.38 s wall) for Rotorcraft-v0, as before these changes. Most of it is importing the '
@@ -282,7 +282,8 @@ BENCHMARKS = Covered(
         Printed('stable_step_mill_transfer', (
             '0.0122 s just after a transfer',
             "The bisection's in-plane disturbance later in the period misses the short first element's axial mode "
-            "right after a transfer (-30 +- 240i 1/s), which the eigenvalue estimate finds;")),
+            "right after a transfer (-30 +- 240i 1/s), which the eigenvalue estimate finds (",
+            "at the first transfer, t = 50 s, 0.01224 s); the scene's step")),
         Printed('fast_step_rewards', (  # the slow tests' printed figures; -2.0 % = 111.19 / 113.44 - 1
             "the mill's mean power 111.19 kW against 113.44", "largest reward error 0.177, RK4's 0.0065)",
             'a mean reward of 0.5185-0.5216 against 0.5458', '(0.0052, 113.44 kW)',

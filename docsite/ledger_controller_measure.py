@@ -107,14 +107,15 @@ DERIVED = (
 #: the stability functions R(z) = 1 + z b^T (I - z B)^-1 1 of ROS3Pw and ROS34PW3 (Rang & Angermann 2005's tables)
 #: and of the shipped ROS34PW2 (its tableau), as tests/test_stability_functions.py -s -k damping_figures prints them:
 #: "Rang & Angermann 2005's R(inf): ROS3Pw -0.732, ROS34PW3 -0.630 (|R(inf)| 0.732, 0.630); |R(4i)|: ROS3Pw
-#: 0.785, ROS34PW3 0.697, ROS34PW2 0.611" (until 2026-11-30 not_rerun, worked by hand; the page wrote R(inf) for
-#: |R(inf)|)
+#: 0.785, ROS34PW3 0.697, ROS34PW2 0.611" and ros2t's 1.000 (until 2026-11-30 not_rerun, worked by hand; the page
+#: wrote R(inf) for |R(inf)|)
 STABILITY = Printed('stability_functions_test', (
-    'ROS3Pw and ROS34PW3 (Rang & Angermann 2005, |R(inf)| = 0.73, 0.63) damp more (|R(4i)| 0.79, 0.70 against 0.61): '
-    'not added.',
-    # the mill's fastest unstable mode at 7.6 s as whip_spectrum laddermill --at 7.6 --top 2000 --methods
-    # ros34pw2:0.2 prints it (6.405 -7.82i ... R/exp 0.850; 2026-11-30, 14 s; the share far from the run's head in
-    # its output): the test prints "the mill's mode at 7.6 s growing at 6.4 1/s, lambda = 6.405 +- 7.82i 1/s;
-    # ROS34PW2 at 0.2 s: |R(z)| / |exp(z)| 0.850 (its real part alone, z = 1.281: 0.696)";
-    # the page's 0.70 of 2026-11-29 was the real part's (History)
-    "(the mill's 6.4 1/s mode, 6.405 +- 7.82i 1/s, gets 0.85 of |exp(z)| from ROS34PW2 at 0.2 s;",))
+    'ROS3Pw and ROS34PW3 (Rang & Angermann 2005, |R(inf)| = 0.73, 0.63) damp more than ros2t and less than ROS34PW2 '
+    '(|R(4i)| 0.79, 0.70 against 1 and 0.61): not added.',))
+#: the mill's fastest unstable mode at 7.6 s as whip_spectrum laddermill --at 7.6 --top 2000 --methods ros34pw2:0.2
+#: prints it ("6.405 +-7.82i ... 0.850"; 2026-11-30, 14 s); tests/test_stability_functions.py checks the study's
+#: stability_function_w on it against its own evaluation; the page's 0.70 of 2026-11-29 was the real part's (History)
+WHIP_MODE = Printed('whip_mode_mill', (
+    "(the mill's 6.4 1/s mode, 6.405 +- 7.82i 1/s, gets 0.85 of |exp(z)|",))
+#: the command's setting (--methods ros34pw2:0.2), printed only at the head of its output, far from the mode's row
+WHIP_MODE_STEP = "|exp(z)| from ROS34PW2 at 0.2 s;"

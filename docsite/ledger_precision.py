@@ -38,8 +38,8 @@ STRESS_PRINTED = (
     # laddermill at 8 "dt_estimate_s=2.846e-06"
     '(its 5 ms step is flagged above the estimated 1.35 ms limit for 8 elements;',
     "(the mill's RK4 limit at 8 elements is 2.8 us).",
-    'the mill, started at rest with its cable moving, settles (height +0.045 m, tension -8.3 kN, kinetic energy '
-    '1.1e5 J to 1.2e4 J).',
+    'the mill, started at rest with its cable moving, settles (height +0.045 m, tension -8.3 kN, kinetic',
+    'energy 1.1e5 J to 1.2e4 J).',
     '- Env episodes: TetheredWing-v0 10,048 episodes (all to the 5 s limit), Rotorcraft-v0 10,000 (8,154 to the '
     'limit, 1,846',
 )
@@ -56,6 +56,7 @@ WORK_PRECISION = Covered(
               for scene, after in zip(SCENES, ("\\| ladder_chain", "\\| roberts_flying_model", "\\| laddermill",
                                                "The estimate holds"), strict=True))),
     given=(
+        controller_measure.WHIP_MODE_STEP,  # whip_mode_mill's --methods ros34pw2:0.2
         'at dt = 0.025 s gives "dt = 0.025 s',  # the stable-step test's step (its message Printed)
         'an injected 1e12 m/s node speed',  # stress_cases.INJECTIONS' "node velocity 1e12 m/s"
         # the stress cases' settings (stress_cases.stable_step_rows; the holds' control period), README's chain step
@@ -89,7 +90,7 @@ WORK_PRECISION = Covered(
         'the least of the same 3 runs',
         'is at most 1e-3 of the extent',
         'The fastest run within 1e-3 of the extent, as a multiple of real time (2026-11-24; speed-up over the '
-        'fastest such RK4 run in the same study; for the tolerance; the shared machine was loaded by other jobs, '
+        'fastest such RK4 run in the same study; for the tolerance; the shared machine was loaded, '
         'so compare within a row):',
         # the pictures' names
         '![ladder_chain] ![tethered_wing] ![roberts_flying_model] ![laddermill] ![laddermill, 10 s] '
@@ -274,6 +275,7 @@ WORK_PRECISION = Covered(
         )),
         controller_measure.PRINTED,  # docsite/ledger_controller_measure.py
         controller_measure.STABILITY,  # |R(inf)|, |R(4i)|: tests/test_stability_functions.py
+        controller_measure.WHIP_MODE,  # the mill's mode at 7.6 s: whip_spectrum --top 2000
         # split to the printed lines they come from (--long whip_spectrum, 2026-11-30, 63 s: every cell as written)
         Printed('whip_spectrum', (
             "by RK4 at 2 ms to each time , forms the full Jacobian (central differences, LAPACK ), writes each run's "

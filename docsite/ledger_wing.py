@@ -158,7 +158,7 @@ DERIVED = (
     "the neutral point lies 0.48 m behind P", "puts it 0.97 m behind P", "C_L 0.61 (the issue's estimate for 200 kW at "
     "2 m/s was 0.6)", "than the v0 wing at C_L 1.00", "kite trim C_L 1.00", "(142 - 65) kN x 2 m/s = 154 kW",
     "(40 kN of tension difference)", "at 5 m/s",  # the issue's estimate: 200 kW / 40 kN
-    "(79 %;")  # the rigid run's last / first element, 126.9 / 160.0 kN (pointmass_mill_study, Printed below)
+    "(79 %)")  # the rigid run's last / first element, 126.9 / 160.0 kN (pointmass_mill_study, Printed below)
 #: figures no command re-runs: the v0 mill's runs at a descending elevator of 0 deg and the v1 mill's trial runs at
 #: 5 m/s (Python sessions of 2026-11-29, run_to_periodic with overrides; no command)
 NOT_RERUN = (
@@ -202,7 +202,7 @@ PRINTED = (
     Printed("meijaard_v0", ('(v0: 36 kW)',)),
     # the v0 mill's power at 2 m/s in plane: the rigid run of the point-mass mill study (moving_cable.md's 66.1 kW)
     # and its ground elements' period-mean tensions ("first element 160.0 kN, last 126.9 kN"; until 2026-11-30 the
-    # page said the descending leg pulls 82 % of the ascending one's pull, a figure no recorded run gives: History)
+    # page said the descending leg pulls 82 % of the ascending one's pull, a figure no recorded run gives; dropped)
     Printed("pointmass_mill_study", ('and the mill delivers 66 kW', "127 kN against the ascending one's 160 kN")),
     # derive_wing --check's lines the page group does not parse: "wing alone (main wing's 3-D curve): C_L,max = 1.220
     # at alpha = 14.45 deg; boom cross-flow drag 0.0163 sin^2 alpha", "v0 attachment at elevator 0 deg (steady 10
@@ -220,11 +220,6 @@ PRINTED = (
 #: the attachment trials' in-plane runs (a Python session with overrides, 2026-11-29, fb84e85); figures of the page
 #: that no recorded run gives and that today's commands print otherwise (issue 33 point 6, 2026-11-30)
 HISTORY = (
-    History("2026-11-22", "not recorded (596e2f4's page: the table's Clda, Cnda at 7 deg turned to stability axes by "
-            "hand; derive_wing --check prints Cnda_stability -0.0283 at 7 deg today)", "the wing table of 596e2f4",
-            ("-0.029 as written on 2026-11-22",)),
-    History("2026-11-29", "not recorded (fb84e85's design study; the rigid run prints its ground elements' 160.0 and "
-            "126.9 kN today, 79 %)", "the v0 mill at V_c = 2 m/s, elevators -4 / -1 deg", ('"pull 82 %"',)),
     History("2026-11-29", "run_to_periodic(load_scene('laddermill', dimension=2, overrides=...).simulator(), "
             "shape_tol=1e-3, power_tol=1e-3) per attachment, elevators and insertion rule",
             "the v1 wing's attachment trials (fb84e85)", (

@@ -47,4 +47,9 @@ NUMERICS_TESTS = {
     "stability_functions_test": Long('python -m pytest -m "slow or not slow" -s tests/test_stability_functions.py -k '
                                      '"damping_figures or whip_mode"', "4 s (2026-11-30, nice 15)",
                                      "work_precision.md"),
+    # work_precision.md: the mill's fastest unstable mode at 7.6 s and ROS34PW2's |R| / |exp| at 0.2 s on it (the
+    # study's whole spectrum: --top 2000)
+    "whip_mode_mill": Long("NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.whip_spectrum laddermill "
+                           "--at 7.6 --top 2000 --methods ros34pw2:0.2", "14 s (2026-11-30, load 2.6)",
+                           "work_precision.md"),
 }

@@ -19,7 +19,7 @@ from laddermill_gym.sim.stable_step import (  # noqa: F401  (re-exported: the st
     ray_limit,
     stability_function,
 )
-from laddermill_gym.studies.commands import check_number, run_subcommand
+from laddermill_gym.studies.commands import UsageError, check_number, run_subcommand
 
 
 def add_parser(sub) -> argparse.ArgumentParser:
@@ -51,14 +51,14 @@ def _cmd(args) -> int:
 def step_to_first_transfer(sim, t_max: float = 300.0) -> float:
     """Step ``sim`` (a scene with a moving cable) at its own method and step until the station's transfer count
     first changes; return that time [s]. Raises ValueError naming the scene's state when none comes by ``t_max``
-    [s] or the scene has no station."""
+    [s] or the scene has no station (a UsageError: the command prints it as one line)."""
     try:
         start = sim.transfers()
     except ValueError as err:  # the simulator names a scene without a station
-        raise ValueError(f"--after-transfer: {err}") from None
+        raise UsageError(f"--after-transfer: {err}") from None
     while sim.transfers() == start:
         if sim.t >= t_max:
-            raise ValueError(f"--after-transfer: no wing transfer by t = {sim.t:.1f} s (cable speed "
+            raise UsageError(f"--after-transfer: no wing transfer by t = {sim.t:.1f} s (cable speed "
                              f"{sim.cable_speed():g} m/s)")
         sim.step()
     return float(sim.t)
