@@ -71,8 +71,9 @@ class PeriodicResult:
         return f"no cable overload (peak tension {self.peak_tension_ratio:.3g} x the limit)"
 
 
-def _advance_to_transfer(sim: Simulator, max_steps: int) -> None:
-    """Step until the transfer count changes (the state is then just after a transfer)."""
+def advance_to_transfer(sim: Simulator, max_steps: int) -> None:
+    """Step until the transfer count changes (the state is then just after a transfer); RuntimeError naming the
+    time and the cable speed when none comes within ``max_steps``, ValueError for a scene without a station."""
     n0 = sim.transfers()
     for _ in range(max_steps):
         sim.step()
@@ -136,7 +137,7 @@ def run_to_periodic(sim: Simulator, shape_tol: float = 1e-2, power_tol: float = 
         raise ValueError(f"cable speed V_c = {v!r} m/s at t = {sim.t} s: the periodic motion needs V_c > 0")
     period = st.piece_length / v
     per_steps = int(np.ceil(2 * period / sim.settings.dt))
-    _advance_to_transfer(sim, per_steps)
+    advance_to_transfer(sim, per_steps)
     bar = None
     if progress:
         from tqdm import tqdm

@@ -6,6 +6,7 @@ transfer, when the station's first element is shortest and stiffest. The estimat
 from __future__ import annotations
 
 import argparse
+import math
 
 from laddermill_gym.sim.stable_step import (  # noqa: F401  (re-exported: the studies' and tests' names)
     DENSE_MAX,
@@ -52,15 +53,12 @@ def step_to_first_transfer(sim, t_max: float = 300.0) -> float:
     """Step ``sim`` (a scene with a moving cable) at its own method and step until the station's transfer count
     first changes; return that time [s]. Raises ValueError naming the scene's state when none comes by ``t_max``
     [s] or the scene has no station (a UsageError: the command prints it as one line)."""
+    from laddermill_gym.ladder.periodic import advance_to_transfer
+
     try:
-        start = sim.transfers()
-    except ValueError as err:  # the simulator names a scene without a station
+        advance_to_transfer(sim, int(math.ceil((t_max - sim.t) / sim.settings.dt)))
+    except (ValueError, RuntimeError) as err:  # no station; no transfer within t_max
         raise UsageError(f"--after-transfer: {err}") from None
-    while sim.transfers() == start:
-        if sim.t >= t_max:
-            raise UsageError(f"--after-transfer: no wing transfer by t = {sim.t:.1f} s (cable speed "
-                             f"{sim.cable_speed():g} m/s)")
-        sim.step()
     return float(sim.t)
 
 
