@@ -253,17 +253,6 @@ ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (
         '- **Agreement with oracles.md.** Read as the least incidence at which the craft can stay up unpowered '
         '(the best collective), 22.5 deg needs sigma = 0.075.',
     ),
-    not_rerun=(  # tests/test_rotor*.py (the blade-element oracle; assertions, not printed figures)
-        # section_aoa over the disk (a Python session): no test or command evaluates these angles (rotor_kernels'
-        # section_aoa is called by none; the blade check is tip_incidence, x = 1, psi = 270 deg; checked 2026-11-30)
-        'the tip is at 13 deg but the largest angle over x >= 0.5 is 21.1 deg (at x = 0.5, psi = 257 deg);',
-        '- at alpha_c = 22.5 deg the largest angle is 13.8 deg over x >= 0.5, 13.3 deg over x >= 0.7, and 20 deg at '
-        'x = 0.2.',
-        # no case of tests/test_rotor.py's blade-element comparison flies mu = 0.3 (its docstring quotes the 1.7 %),
-        # and a new case would change what it asserts; rotor_chart's CSV stops at mu = 0.2 and holds no torque
-        # integral
-        'and 1.7 % at mu = 0.3.',
-    ),
     printed=(  # tests/test_rotor.py -s prints C_Q's difference per case (0.75 % and 1.09 % the largest at 0.1, 0.2)
         Printed('rotor_tests', ('at most 0.8 % at mu = 0.1, 1.1 % at mu = 0.2',
                                 # near_axial prints each case's difference (5.8e-6, 2e-5) beside its tolerance
@@ -282,6 +271,16 @@ ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (
                                 'take 13 to 31 residual evaluations,')),
         # the chart's CSV (--long rotor_chart_csv): the row 'limit,0.1,85,...' has theta0 -56.50 deg, the row
         # 'limit,0.1,52.5,...' (the mu = 0.1 peak) lam 0.0955 (were not_rerun)
+        # tests/test_rotor_disk.py -s: section_aoa's largest angles at mu = 0.1 at the chart's tip limit (were
+        # not_rerun: a Python session's; re-run 2026-12-01 as written) and the blade-element torque at mu = 0.3 at
+        # test_rotor.py's incidences and collectives (largest 1.32 %; until 2026-12-01 the page said 1.7 %, a session's
+        # figure of no recorded case)
+        Printed('rotor_disk_tests', (
+            'the tip is at 13 deg but the largest angle over x >= 0.5 is 21.1 deg (at x = 0.5, psi = 257 deg);',
+            '- at alpha_c = 22.5 deg the largest angle is 13.8 deg over x >= 0.5, 13.3 deg over x >= 0.7, and 20 deg '
+            'at x = 0.2.',
+            'and 1.3 % at mu = 0.3',
+        )),
         Printed('rotor_chart_csv', ('about -56 deg at mu = 0.1, alpha_c = 85 deg.',
                                     '- at the peak of the mu = 0.1 curve (alpha_c = 52.5 deg, lam = 0.095),')),
     ),

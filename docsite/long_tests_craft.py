@@ -13,6 +13,9 @@ CRAFT_TESTS = {
     # solver's residual evaluations per solve
     "rotor_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_rotor.py -k "closed_forms_against or '
                         'near_axial or best_power_within or inflow_satisfies"', "3 s", "rotor.md"),
+    # rotor.md: section_aoa over the disk against the blade's vector geometry (the largest angles at the chart's
+    # tip limit) and the blade-element torque at mu = 0.3 (each test prints what it compares)
+    "rotor_disk_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_rotor_disk.py', "4 s", "rotor.md"),
     # reeling_tether.md: the hanging tether of 5 and 10 elements against the elastic catenary
     "reel_tether_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_reel_tether.py -k hanging_tether',
                               "2 s", "reeling_tether.md"),
