@@ -125,10 +125,10 @@ NUMERICS = Covered(
                                          'sign, 1e-4 s later', 'removed, -127 rad/s^2')),
         # the one-element wing at its trimmed start: "rk4: largest stable step 0.1141 s (... -24.4 + 0i 1/s)"
         Printed('stable_step_wing_1', ('-24 1/s, a 0.11 s limit,',)),
-    ),
-    not_rerun=(  # the scene's trim at today's elevators: today's code could print it (no command does)
-        '(alpha about 13.7 deg)',
-        '(alpha about 5.4 deg).** At +2 deg (alpha about 2.9 deg)',
+        # the v0 wing's trims at rest at the chain's elevators, 8 m/s: "-4.00 ... 13.64/1.28", "+1.00 ... 5.36/0.72",
+        # "+2.00 ... 2.87/0.50" (were not_rerun; the page's 13.7 deg, the 2026-11-22 layout's, is today's 13.6)
+        Printed('trim_chain_wing', ('(trim alpha 13.6 deg at 8 m/s)', '(alpha 5.4 deg).**',
+                                    'At +2 deg (alpha 2.9 deg)')),
     ),
     history=(  # the page's earlier figures, replaced by today's printed ones (issue 33 point 6, 2026-11-30)
         History('2026-11-24', 'the series beside tests/test_rosenbrock.py (e770ec3; the test halves once, from 0.01 s)',

@@ -37,6 +37,10 @@ NUMERICS_TESTS = {
                              'splits_a_step"', "4 s", "work_precision.md, features.md"),
     # numerics.md: the one-element tethered wing's stable RK4 step at its trimmed start
     "stable_step_wing_1": Long("laddermill stable-step tethered_wing --elements-per-piece 1", "3 s", "numerics.md"),
+    # numerics.md: the chain's v0 wing trimmed at rest at ladder_chain's elevators -4 / +1 deg, and at +2 deg falling
+    "trim_chain_wing": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v0 && python -m "
+                            "laddermill_gym.studies.mill.trim_slope --variants v0 --elevators -4 2", "2 s (2026-12-01)",
+                            "numerics.md"),
     # benchmarks.md: the mill's stable RK4 step just after its first wing transfer (5000 RK4 steps to t = 50 s)
     "stable_step_mill_transfer": Long("laddermill stable-step laddermill --after-transfer",
                                       "5 s (2026-11-30, nice 15)", "benchmarks.md"),

@@ -19,7 +19,7 @@ from laddermill_gym.studies.mill.trim_slope import (
 )
 
 
-@pytest.mark.parametrize("variant", ["v1", "v2"])
+@pytest.mark.parametrize("variant", ["v0", "v1", "v2"])
 @pytest.mark.parametrize("leg", [0, 1])
 @pytest.mark.parametrize("speed", [8.0, 10.0, 15.0])
 def test_closed_form_slope_matches_the_trims(variant, leg, speed):
@@ -29,7 +29,7 @@ def test_closed_form_slope_matches_the_trims(variant, leg, speed):
     assert closed_form_slope(wing, de, speed) == pytest.approx(fd, rel=2e-3, abs=1e-6)
 
 
-@pytest.mark.parametrize("variant", ["v1", "v2"])
+@pytest.mark.parametrize("variant", ["v0", "v1", "v2"])
 def test_moment_vanishes_at_the_simulator_trim_and_is_stable(variant):
     """Our moment about P vanishes at the statics' trim (two implementations), and falls with alpha there."""
     wing, els = load(variant)

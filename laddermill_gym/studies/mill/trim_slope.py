@@ -18,9 +18,10 @@ i.e. W m_w = L h + W z_P C_L / C_L,alpha: the CG must lie L / W times as far beh
 (3.8 at C_L 0.61 and 10 m/s for the 54 kg wing), which no airframe stable in free flight (CG ahead of its neutral
 point) can do: the v1 wing's slope, -0.25 deg per m/s, is near that bound. The v2 wing moves the CG 0.86 m aft.
 
-``python -m laddermill_gym.studies.mill.trim_slope`` prints, for the v1 and v2 wings at their scenes' elevators: the
-trim alpha and C_L at air speeds 6-18 m/s, the slope at 10 m/s from the trims (``sim.statics.pitch_trim_alpha``)
-and in closed form, the geometry (m_w, h, the free-flight margin), and each leg's trim at the air speed
+``python -m laddermill_gym.studies.mill.trim_slope`` prints, for the v1 and v2 wings at their scenes' elevators
+(``--variants v0``: the v0 wing at ``ladder_chain``'s, docs/numerics.md; elevators with their sign): the trim alpha
+and C_L at air speeds 6-18 m/s, the slope at 10 m/s from the trims (``sim.statics.pitch_trim_alpha``) and in closed
+form, the geometry (m_w, h, the free-flight margin), and each leg's trim at the air speed
 10 m/s -+ V_c for V_c = 1, 2, 5 m/s (ascending wings meet the wind less the cable speed, descending ones more).
 """
 
@@ -42,7 +43,10 @@ SPEEDS = (6.0, 8.0, 10.0, 12.0, 15.0, 18.0)  # [m/s] air speeds of the printed t
 CABLE_SPEEDS = (1.0, 2.0, 5.0)  # [m/s] the paper's cable speeds (issue 30 point 1)
 NEUTRAL_POINT_BEHIND_AC = 0.97  # [m] the airframe's neutral point behind the main wing's ac (docs/wing_data.md, "Key
 #                                 numbers": 0.22 m behind v1's CG, which lies 0.75 m behind the ac)
-WINGS = {"v1": ("meijaard_wing_v1.yaml", "laddermill_v1.yaml"), "v2": ("meijaard_wing_v2.yaml", "laddermill_v2.yaml")}
+WINGS = {"v1": ("meijaard_wing_v1.yaml", "laddermill_v1.yaml"), "v2": ("meijaard_wing_v2.yaml", "laddermill_v2.yaml"),
+         # the v0 wing of the chain at rest (ladder_chain, docs/numerics.md's elevators), printed only when asked
+         "v0": ("meijaard_wing.yaml", "ladder_chain.yaml")}
+DEFAULT_VARIANTS = ("v1", "v2")  # the mill's wings (the command's default)
 
 
 def load(variant: str):
@@ -113,7 +117,7 @@ def report(variant: str, elevators_deg=None) -> None:
             a = trim(wing, de, v)
             cells.append(f"{math.degrees(a):5.2f}/{lift_coefficient(wing, a, de):4.2f}")
         num = (trim(wing, de, V_REF + 0.05) - trim(wing, de, V_REF - 0.05)) / 0.1
-        print(f"  {leg:11s} {math.degrees(de):6.2f}    " + "  ".join(cells)
+        print(f"  {leg:11s} {math.degrees(de):+6.2f}    " + "  ".join(cells)
               + f"    {math.degrees(num):6.3f} | {math.degrees(closed_form_slope(wing, de, V_REF)):6.3f}")
     print("  (cells: trim alpha [deg] / C_L)")
     for vc in CABLE_SPEEDS:
@@ -128,7 +132,8 @@ def report(variant: str, elevators_deg=None) -> None:
 
 def main(argv=None) -> int:
     p = Parser(prog="python -m laddermill_gym.studies.mill.trim_slope", description=__doc__.splitlines()[0])
-    p.add_argument("--variants", nargs="+", choices=sorted(WINGS), default=sorted(WINGS))
+    p.add_argument("--variants", nargs="+", choices=sorted(WINGS), default=list(DEFAULT_VARIANTS),
+                   help="v1, v2: the mill's wings (default); v0: the chain's wing at ladder_chain's elevators")
     p.add_argument("--elevators", type=float, nargs=2, default=None,
                    help="ascending, descending elevators [deg] instead of the scenes'")
     a = p.parse_args(argv)
