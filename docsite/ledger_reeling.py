@@ -39,6 +39,8 @@ REELING = Covered(
     groups=("tether_convergence", "reeling_power_curve"),
     checks=REELING_CHECKS + CURVE_CHECKS + RATIO_CHECKS,
     given=(
+        # the element count of the tether's first version (78cc615, 2026-11-29), which stopped near that time
+        '(where the 3-element chain used to stop;',
         # the static cycle's tether: the 300 m start and Delta L 200 m (configs/pumping/pumping_kite_reeling.yaml);
         # the re-run's date
         'the static wing holds up little of 300-500 m of tether,',
@@ -134,7 +136,13 @@ REELING = Covered(
         # the static LQR cycle on the reeling tether: pumping-cycle's table prints each cycle's sim W (-4631, -2487)
         # and mean reel-out tension (131, 346 N) (were not_rerun: a Python session's; its -2488 W is History)
         Printed('reeling_lqr_cycle', (
-            '-4631 W and -2487 W over its first two cycles (reel-out tension 131 and 346 N:',)),
+            '-4631 W and -2487 W over its first two cycles (reel-out tension 131 and 346 N:',
+            # its ground-contact line (pumping-cycle prints it for a reeling tether since 2026-12-01; until then
+            # not_rerun, a Python session's of 2026-11-29 that put the first contact "in the first reel-in"): "up to
+            # 4 nodes on the ground at once, in 32.7 % of the 9440 control steps; the first at t = 173.45 s, 5.05 s
+            # into the reel_out phase of cycle 2"
+            'up to 4 nodes on the ground at once, in 33 % of the control steps, the first at t = 173.45 s, 5.05 s '
+            'into the second reel-out, just after the first reel-in',)),
         # tests/test_reel_tether.py prints the two cases' errors beside its assertion
         Printed("reel_tether_tests", (
             'a hanging tether of 5 and 10 sag-corrected elements between two fixed points against the elastic '
@@ -186,13 +194,5 @@ REELING = Covered(
             "an earlier run, before the crosswind controller's change of 0db432c, printed 44575 / 45515 / 45672 / "
             '45745 W).',
         )),
-    ),
-    not_rerun=(
-        # the static LQR cycle's ground contacts on the reeling tether (a Python session of 2026-11-29 with a
-        # count per step; pumping-cycle prints no ground contacts: its run_cycles records none without a probe, and
-        # tether_convergence, whose probe counts them, flies the crosswind controller, not this cycle; checked
-        # 2026-11-30)
-        'up to 4 nodes on the ground at once, in 33 % of the control steps, the first at t = 173.5 s in the first '
-        'reel-in (where the 3-element chain used to stop). It makes no power:',
     ),
 )

@@ -20,7 +20,7 @@ from laddermill_gym.envs.pumping.observation import N_OBS, WINCH_OBS_INDEX
 from laddermill_gym.envs.pumping.task import PumpingTask
 from laddermill_gym.model.params import AERO_INDEX
 from laddermill_gym.sim.statics import table_spline
-from laddermill_gym.studies.pumping.pumping_cycle import cycle_stats, quasi_steady, run_cycles
+from laddermill_gym.studies.pumping.pumping_cycle import contact_summary, cycle_stats, quasi_steady, run_cycles
 
 
 @pytest.fixture(scope="module")
@@ -107,3 +107,16 @@ def test_cycle_against_quasi_steady_equations():
     e = eta * c["tension_out"] * c["reeled"] - c["tension_in"] * c["reeled"] / eta
     assert q["eqs10_14_fed_W"] == pytest.approx(e / (c["reeled"] / c["speed_out"] + c["reeled"] / c["speed_in"]))
     assert q["lansdorp_W"] > 10 * c["power"]
+
+
+def test_contact_summary_of_a_hand_made_record():
+    """pumping-cycle's ground-contact line (a reeling tether) against a record built by hand: steps at 0.5 s, a
+    reel-out, a reel-in ending at t = 2.0 s, contacts (0, 0, 0, 0, 0, 2, 3, 0) from t = 3.0 s, 1.0 s into the second
+    reel-out: 3 at most, 2 of 8 steps (25.0 %); none at all is said so."""
+    ph = np.array([PHASE_OUT, PHASE_OUT, PHASE_IN, PHASE_IN, PHASE_OUT, PHASE_OUT, PHASE_OUT, PHASE_OUT])
+    rec = {"t": 0.5 * np.arange(1, 9), "phase": ph, "contacts": np.array([0, 0, 0, 0, 0, 2, 3, 0], float)}
+    line = contact_summary(rec, ("reel_out", "depower", "reel_in"))
+    assert line == ("ground contacts: up to 3 nodes on the ground at once, in 25.0 % of the 8 control steps; the "
+                    "first at t = 3.00 s, 1.00 s into the reel_out phase of cycle 2 (cycle 1: from the start to the "
+                    "end of the first reel-in)")
+    assert "no tether node" in contact_summary({**rec, "contacts": np.zeros(8)}, ("reel_out", "depower", "reel_in"))

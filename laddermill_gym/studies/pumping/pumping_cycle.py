@@ -29,6 +29,7 @@ from laddermill_gym.control.pumping_cycle import PHASE_IN, PHASE_OUT, PumpingCyc
 from laddermill_gym.envs.observation import OBS_INDEX
 from laddermill_gym.envs.pumping.task import PumpingTask
 from laddermill_gym.model.params import AERO_INDEX
+from laddermill_gym.model.reel import ground_contacts, is_reel
 from laddermill_gym.quasisteady import lansdorp, schmehl
 from laddermill_gym.quasisteady.lansdorp import PumpingParams
 from laddermill_gym.quasisteady.schmehl import SchmehlParams
@@ -189,8 +190,9 @@ def _run(args) -> int:
     if changes:
         task.pumping = dataclasses.replace(task.pumping, cycle=dataclasses.replace(task.pumping.cycle, **changes))
     ctl, names, title = _controller(task, args)
+    reeling = is_reel(task.batch.assembly.station)
     try:
-        rec = run_cycles(task, ctl, args.cycles + 1)
+        rec = run_cycles(task, ctl, args.cycles + 1, probe=_contacts_probe if reeling else None)
     except RuntimeError as err:
         print(err)
         return 1
@@ -207,6 +209,8 @@ def _run(args) -> int:
               f"{q['schmehl_W']:10.0f} "
               f"{q['static_kite_W']:9.0f} {q['eqs10_14_fed_W']:13.0f} {c['tension_out']:8.0f} {c['speed_out']:6.2f} "
               f"{c['tension_in']:7.0f} {math.degrees(c['alpha']):6.2f} {c['max_dy']:7.2f}")
+    if reeling:
+        print(contact_summary(rec, names))
     if args.out is not None:
         args.out.mkdir(parents=True, exist_ok=True)
         (args.out / "pumping_cycle.json").write_text(json.dumps(rows, indent=1))
@@ -214,6 +218,29 @@ def _run(args) -> int:
         for path in cycle_figures(rec, task.control_dt, names, PHASE_IN, title, args.out):
             print(path)
     return 0
+
+
+def _contacts_probe(task: PumpingTask) -> dict[str, float]:
+    """Tether nodes on the ground in copy 0 now (a reeling tether's, ``model/reel.ground_contacts``)."""
+    return {"contacts": float(ground_contacts(task.batch.assembly, task.batch.states[0]))}
+
+
+def contact_summary(rec: dict[str, np.ndarray], names) -> str:
+    """A line on the ground contacts of a run recorded with the contact probe: the most nodes on the ground at once,
+    the share of the control steps with any, and the first such step's time, phase (``names[phase]``) and cycle
+    (1 + the reel-ins ended before it)."""
+    on = rec["contacts"] > 0
+    if not on.any():
+        return f"ground contacts: no tether node touched the ground in {on.size} control steps"
+    i = int(np.argmax(on))
+    ph = rec["phase"][: i + 1]
+    cycle = 1 + int(np.sum((ph[1:] != PHASE_IN) & (ph[:-1] == PHASE_IN)))
+    changes = np.flatnonzero(ph[1:] != ph[:-1])
+    since = rec["t"][changes[-1]] if changes.size else 0.0  # the end of the step before the phase began
+    return (f"ground contacts: up to {int(rec['contacts'].max())} nodes on the ground at once, in "
+            f"{100.0 * on.mean():.1f} % of the {on.size} control steps; the first at t = {rec['t'][i]:.2f} s, "
+            f"{rec['t'][i] - since:.2f} s into the {names[int(ph[-1])]} phase of cycle {cycle} (cycle 1: from the "
+            f"start to the end of the first reel-in)")
 
 
 def _controller(task: PumpingTask, args):
