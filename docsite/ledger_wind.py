@@ -136,6 +136,19 @@ WIND = Covered(
         # MillTask.loop_extent() at LadderMill-v0's operating point, which tests/test_gusts_v2.py's slow grid test
         # checks against the NTM grid and prints (-s) (was not_rerun)
         Printed('mill_loop_extent_test', ('The loop spans 50 m (the stations) to 3440 m and p . e -100 to 689 m:',)),
+        # tests/test_mill_gust_slots.py -s (--long mill_gust_slots_tests, 2026-12-01, as written): the slots'
+        # heights at the operating point (slot 0 57.9 m, slot 23 1611.8 m, slots 99-100 199.4 / 129.0 m, the top
+        # 3437.9 m), the EWS_IA grid's peak rows -+10.867 m/s at 58.0 / 3438.0 m (IEC eq. 26 in the test) and the
+        # scene's 8.013 m/s at 58 m, slot 0's largest roll rate in NTM_IB seed 0's first second (2.995 rad/s at
+        # 0.95 s, lateral gust 0.038 m/s); were not_rerun (figures of the gusts-v2 session; until 2026-12-01 the page
+        # said "after 1 s" of the roll, whose peak is at 0.95 s: now "within 1 s")
+        Printed('mill_gust_slots_tests', (
+            '58-1612 m at the operating point),',
+            'open loop, slot 0 (just above the veered station) rolls at 3 rad/s within 1 s in a faded-in lateral gust '
+            'of 0.04 m/s (NTM seed 0)',
+            "takes up to 10.9 m/s off the wind at the bottom of the loop (58 m, where the scene's wind is 8 m/s) and "
+            'adds as much at the top (3438 m):', '129-199 m)',
+        )),
         Printed('gusts_v1_ladder_chain', ('in turbulence both leave the aerodynamic tables after 7-11 s',)),
         # the mill's failures in the gust bench's CSV (--long gusts_v2_mill_printed, 2026-11-30, 392 s: as written)
         Printed('gusts_v2_mill_printed', (
@@ -159,18 +172,6 @@ WIND = Covered(
         'by sideslip beyond 60 deg', 'leave the aerodynamic range 7-10 s after',
         # the fade-in's closed form 0.5 (1 - cos(pi t / 10 s)) at the LQR's failures, 5 and 8 s: 0.50, 0.90
         'when the fade-in has brought the field to 50-90 % of its strength',
-    ),
-    not_rerun=(
-        # the slots' heights at the operating point, the EWS's shear at the loop's lowest and highest wings and the
-        # scene's wind there, and slot 0's roll in NTM seed 0: worked in the gusts-v2 session (2026-11-2x); no
-        # command prints them (the gust bench prints the failures' slots and times, checked above;
-        # tests/test_gusts_v2.py prints the loop path's extent, 50.0 to 3439.8 m, not the slots' heights, and no test
-        # evaluates the EWS's shear at a wing or a slot's roll rate; checked 2026-11-30)
-        '58-1612 m at the operating point),',
-        'open loop, slot 0 (just above the veered station) rolls at 3 rad/s after 1 s in a faded-in lateral gust of '
-        '0.04 m/s (NTM seed 0)',
-        "takes up to 10.9 m/s off the wind at the bottom of the loop (58 m, where the scene's wind is 8 m/s) and adds "
-        'as much at the top (3438 m):', '129-199 m)',
     ),
     history=(
         History('2026-11-24', 'laddermill gust-bench --suite gusts-v1 --env ID --controllers open_loop lqr (ee8a806; '

@@ -29,6 +29,10 @@ CRAFT_TESTS = {
     # failure first: 224 s and 123 s at a load of 5-7, 2026-11-30)
     "mill_loop_extent_test": Long('python -m pytest -m "slow or not slow" -s tests/test_gusts_v2.py -k '
                                   'grid_covers_every_point', "2-4 min", "wind.md"),
+    # wind.md: LadderMill-v0's slot heights at the operating point, the EWS_IA grid's rows against IEC eq. 26, and
+    # slot 0's roll in the open loop's first second of NTM_IB seed 0 (two 1 s runs; about 2 min with compiling)
+    "mill_gust_slots_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_mill_gust_slots.py',
+                                  "12 s-2 min", "wind.md"),
     # pumping.md: the scene's reel-out trim elevator and the reel-in elevator (moment balance at alpha_in)
     "pumping_elevator_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_pumping_cycle.py -k '
                                    '"phases_from or reel_in_elevator"', "10 s", "pumping.md"),
