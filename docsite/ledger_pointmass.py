@@ -97,10 +97,10 @@ POINTMASS_MILL = Covered(
     ),
     # atan(2 / 10) = 11 deg; the 7 m element stretched by 1.5 m
     derived=("stretch it by 20 %", "about 11 deg"),
-    # the straight-string oracle's slack step (tests/test_pointmass_mill.py); the rejected variants' runs (dated)
-    # the paper's insertion rule on tests/test_pointmass_mill.py's straight string: the test asserts the new node's
-    # velocity only, no command prints the second element's 39 kN (21.6 kN = EA eps is that string's setting)
-    not_rerun=("carries 39 kN over its 21.6 kN",),
+    # the paper's insertion rule on tests/test_pointmass_mill.py's straight string: the test prints the first two
+    # elements' tensions just after the transfer, "element 1 39.3 kN over the steady 21.6 kN" (21.6 kN = EA eps,
+    # that string's setting; until 2026-12-01 not_rerun); the rejected variants' runs (dated)
+    printed=(Printed("pointmass_insertion_test", ("carries 39 kN over its 21.6 kN",)),),
     history=(History("2026-11-24", "mill_simulator of the rejected layouts (the paper's 1/10 and 11/10 at the element "
                      "scale; the static start) in a Python session", "the rejected variants (d017924, e7aff00)",
                      ("broke down (speed limit) 35 s after its start",
@@ -141,7 +141,7 @@ PM_GIVEN = (
     "within the test's bound of 1e-6",
     "then the chunks of P = 4", "one step of (500,000 nodes)", "On a zigzag 1 cm Dyneema string with 3 g nodes",
     "S - S D'^{-1} S", "both are P = 2,", "runs 20 implicit steps", "must be 0 and", "numba 0.68,", "a 16-core "
-    "Intel Xeon")
+    "Intel Xeon", ", settled 60 s)")
 #: worked by hand from the page's inputs: 4 x 24 MB; 24 + 4 + 24 MB; sqrt(195 kN / 0.3 kg/m); 1 cm / 800 m/s
 PM_DERIVED = ("RK4 would hold four stage vectors (96 MB)", "another 24 MB: 52 MB in all", "about 800 m/s",
               "would bind dt near 1e-5 s")
@@ -206,9 +206,17 @@ PM_PRINTED = (
     # converged power, as the study prints them (pointmass_mill.md's page group pointmass_mill parses the same output)
     Printed("pointmass_mill_study", ('t0 = 1135 s', 'the converged point-mass motion gives 82.4 kW',
                                      "converged motion's 82.4 kW")),
+    # -k backward: "condition number 3.3e+05" (eigvals_banded of the zigzag string's matrix, 2026-12-01)
+    Printed("pointmass_solver_tests", ('(condition number 3.3e5)',)),
+    # tests/test_pointmass_threads.py -k 500000_nodes: "P = 2 against P = 1 at 500,000 nodes: velocities 2.5e-11 of
+    # the largest (0.087 m/s), positions 9.1e-13 m" (the same for P = 8 and 16; 2026-12-01)
+    Printed("pointmass_roundoff_500k", ('by 2.5e-11 of the largest velocity (0.087 m/s) and 9e-13 m in position;',)),
+    # tests/test_pointmass_lateral.py (2026-12-01; the page's "within about 10 s" and "1e-10 m/s" until then)
+    Printed("pointmass_lateral_test", ('overshooting by 28 % 7.4 s after the step, within 10 % of it from 10.6 s and 1 '
+                                       '% from 25.1 s, and stays (node speeds 8.7e-11 m/s after 120 s;',)),
     Printed("pointmass_solver_tests", (  # tests/test_pointmass_threads.py and _oracles.py print what they assert
         'by up to 3.1e-11 of the largest velocity', 'backward error of 3e-12 to 5.5e-12,',
-        'its backward error is 5e-12', "against solve_banded's 4.8e-17", "against LAPACK's 4.8e-17",
+        'its backward error is 5e-12', "against solve_banded's 7e-17", "against LAPACK's 7e-17",
         'agree to 1.1e-7', 'and 4.5e-13 m',  # P = 7's positions, 9e-17 of the largest (5 km)
         # -k one_centimetre: "1 cm (11,000 elements): relative error of H -3e-09" (2026-11-30)
         'and -3e-9 at 1 cm (11,000 elements)',
@@ -216,14 +224,18 @@ PM_PRINTED = (
         "order)",
     )),
 )
-#: figures of the tests the page names (tests/test_pointmass_*.py: assertions, not printed) and the env's settling
-PM_NOT_RERUN = (
-    # the explicit scheme's blow-up at 256 elements: the benchmark prints its 10,000-element runs only
-    '(speeds over 1000 m/s within seconds at 256 elements)',
-    'within about 10 s and stays (node speeds 1e-10 m/s after 120 s)',  # a settling run no command prints
-    'by 2.5e-11 of the largest velocity (0.087 m/s) and 9e-13 m in position;',
-    '(condition number 3.3e5)',
-    'at 20,000 nodes (5 steps, 1 and 2 threads) and within 2.8e-17 m/s in 36 of 1,000 nodes',
+#: figures of runs the repository no longer makes (issue 33 point 6: until 2026-12-01 not_rerun)
+PM_HISTORY = (
+    # the implicit step with slack elements left out of its matrix: a variant tried while the method was written
+    # (before a0790b0) and not kept; the page's text of it is b136f3d's
+    History("2026-11-24", "the catenary relaxation of a 256-element string with the implicit step's slack elements "
+            "dropped from the matrix (a variant of a0790b0's kernel, not committed)",
+            "the rejected slack-element variant", ("(speeds over 1000 m/s within seconds at 256 elements,",)),
+    # the two-sided elimination of b84856b against the partitioned one of f5e25de, both P = 2 on 1 and 2 threads
+    History("2026-11-24", "the implicit step of b84856b (two-sided elimination) and of f5e25de (partitioned) on the "
+            "same starts, NUMBA_NUM_THREADS 1 and 2 (8f8b734's before/after table)",
+            "the partitioned elimination's before/after comparison",
+            ("at 20,000 nodes (5 steps, 1 and 2 threads) and within 2.8e-17 m/s in 36 of 1,000 nodes",)),
 )
 
 PMD = "{pointmass_data[%s]}"  # docs/pointmass.md's closed forms
@@ -250,9 +262,9 @@ POINTMASS = Covered(
             (r"\(point mass, ([-+]\d+) %\); last piece [\d.]+ vs [\d.]+ kN \(([-+]\d+) %\)",
              ("~{pointmass_fidelity[first_pct]}", "~{pointmass_fidelity[last_pct]}")),
             (r"the kites move up to (\d+) cm\)", ("~{pointmass_accuracy[kites_cm]}",))),
-    given=PM_GIVEN, timings=PM_TIMINGS, derived=PM_DERIVED, not_rerun=PM_NOT_RERUN, printed=PM_PRINTED,
+    given=PM_GIVEN, timings=PM_TIMINGS, derived=PM_DERIVED, printed=PM_PRINTED,
     # the solver's agreements the page quoted before today's printed ones (issue 33 point 6, 2026-11-30)
-    history=(History("2026-11-24", "pytest tests/test_pointmass_threads.py (8f8b734)",
+    history=PM_HISTORY + (History("2026-11-24", "pytest tests/test_pointmass_threads.py (8f8b734)",
                      "the random and zigzag strings' agreements as first measured",
                      ("(2026-11-24: 3.4e-15)", "2026-11-24: 7e-17 and 1.5e-7)")),
              History("2026-11-24", "PointMassChain-v0's settled start (a92a31d)",

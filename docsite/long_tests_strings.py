@@ -46,6 +46,22 @@ STRING_TESTS = {
     # mill_fast.md: the v1 wing's trims at the near-top rule's -4 deg and the descending -0.5 deg (the study's table)
     "trim_v1_top_rule": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v1 --elevators -4 -0.5",
                              "5 s (2026-11-30)", "mill_fast.md"),
+    # pointmass.md: one step of podgaets_5km at 500,000 nodes on P = 2, 8, 16 chunks against one chunk (roundoff of the
+    # elimination order; the test prints it); most of the cost is the partitioned kernels' compile
+    "pointmass_roundoff_500k": Long('python -m pytest -m slow -s tests/test_pointmass_threads.py -k 500000_nodes',
+                                    "10 s, 222 s with a cold compile (2026-12-01, nice 15)", "pointmass.md"),
+    # pointmass.md: the point-mass tethered wing after the 0.01 rad direction step (offset, overshoot, settling, node
+    # speeds at 120 s)
+    "pointmass_lateral_test": Long('python -m pytest -m "slow or not slow" -s tests/test_pointmass_lateral.py',
+                                   "7 s (2026-12-01, nice 15)", "pointmass.md"),
+    # pointmass_mill.md: the first two elements' tensions just after a transfer on the straight string, the paper's
+    # insertion rule against the cable's
+    "pointmass_insertion_test": Long('python -m pytest -m "slow or not slow" -s tests/test_pointmass_mill.py -k '
+                                     'insertion_rule', "3 s (2026-12-01)", "pointmass_mill.md"),
+    # controllers.md: the shipped tethered-wing policy's actions, one observation alone against 512 at once, through
+    # torch (float32) and the fixed-order float64 actor
+    "exact_actor_batch_test": Long('python -m pytest -m "slow or not slow" -s tests/test_exact_actor.py -k '
+                                   'one_observation', "5 s (2026-12-01)", "controllers.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),

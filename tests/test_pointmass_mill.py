@@ -73,6 +73,15 @@ def test_insertion_rule_of_the_new_node(insertion):
     u = 2.0 * 1.001 if insertion == "cable" else 0.0
     assert sim.velocities[0, 0] == pytest.approx(u + f * (v1 - u), rel=1e-9)
     assert (abs(sim.velocities[0, 0] - 2.002) < 1e-6) == (insertion == "cable")
+    # the first two elements' tensions just after the transfer against the steady EA eps: the paper's slow node
+    # leaves element 0 slack and stretches element 1
+    t0, t1, steady = sim.tensions()[0], sim.tensions()[1], EA * 1e-3
+    print(f"insertion {insertion}: element 0 {t0 / 1e3:.3g} kN, element 1 {(t1 - steady) / 1e3:.3g} kN over the "
+          f"steady {steady / 1e3:.3g} kN")
+    if insertion == "cable":
+        assert t0 == pytest.approx(steady, rel=1e-7) and t1 == pytest.approx(steady, rel=1e-7)
+    else:
+        assert t0 == 0.0 and t1 > 1.5 * steady
 
 
 def test_steady_pay_out_explicit():

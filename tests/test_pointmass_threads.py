@@ -10,7 +10,7 @@ import sys
 
 import numpy as np
 import pytest
-from scipy.linalg import solve_banded
+from scipy.linalg import eigvals_banded, solve_banded
 
 from laddermill_gym.kernels.contract import N3_SIZE, N3_VEL
 from laddermill_gym.kernels.pointmass.implicit import implicit_advance_parts
@@ -121,6 +121,9 @@ def test_stiff_string_backward_error():
     tension = rng.uniform(0.0, 2e5, s.n_elements)
     rhs = rng.standard_normal(3 * s.n_nodes)
     ab = _banded(s, pos, tension, 0.01)
+    eig = eigvals_banded(ab[:6], lower=False)  # symmetric: its upper band is rows 0-5 of the full band storage
+    print(f"condition number {eig.max() / eig.min():.2g} (eigenvalues {eig.min():.3g} to {eig.max():.3g} kg)")
+    assert eig.min() > 0 and 1e5 < eig.max() / eig.min() < 1e6  # positive definite, the docstring's 3.3e5
     ref = solve_banded((5, 5), ab, rhs)
     print(f"solve_banded's backward error {_backward_error(ab, ref, rhs):.2g}")
     assert _backward_error(ab, ref, rhs) < 1e-15
@@ -185,6 +188,24 @@ def test_implicit_steps_on_chunks_match_one_chunk():
         assert dp < 1e-12 and dv < 1e-10, (P, dp, dv)
     # a workspace for more chunks than used changes nothing
     assert np.array_equal(_run_parts(sc, x0, u, 4, 5), _run_parts(sc, x0, u, 4, 5, capacity=16))
+
+
+@pytest.mark.slow
+def test_one_step_at_500000_nodes_between_chunk_counts():
+    """podgaets_5km at its 1 cm (500,000 nodes), one step of 0.01 s from the quasi-static start on P = 2, 8 and 16
+    chunks against one chunk: velocities within 1e-10 of the largest velocity and positions within 1e-11 m
+    (measured 2.5e-11 of 0.087 m/s and 9.1e-13 m, the elimination order's roundoff)."""
+    sc, x0, u = _podgaets(0.01)
+    assert sc.string.n_nodes == 500_000
+    one = _run_parts(sc, x0, u, 1, 1, capacity=16).reshape(-1, N3_SIZE)
+    vmax = np.abs(one[:, 3:]).max()
+    for P in (2, 8, 16):
+        got = _run_parts(sc, x0, u, P, 1, capacity=16).reshape(-1, N3_SIZE)
+        dv = np.abs(got[:, 3:] - one[:, 3:]).max() / vmax
+        dp = np.abs(got[:, :3] - one[:, :3]).max()
+        print(f"P = {P} against P = 1 at 500,000 nodes: velocities {dv:.2g} of the largest ({vmax:.2g} m/s), "
+              f"positions {dp:.2g} m")
+        assert 0 < dv < 1e-10 and dp < 1e-11, (P, dv, dp)
 
 
 _PROBE = """
