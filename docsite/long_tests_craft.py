@@ -33,6 +33,10 @@ CRAFT_TESTS = {
     # slot 0's roll in the open loop's first second of NTM_IB seed 0 (two 1 s runs; about 2 min with compiling)
     "mill_gust_slots_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_mill_gust_slots.py',
                                   "12 s-2 min", "wind.md"),
+    # wing_data.md: the v0 mill in plane at descending elevators 0 and -1 deg, 170 s each from rest (the last
+    # element's tension: slack at 0 deg near 160 s, taut at -1 deg)
+    "mill_v0_slack_test": Long('python -m pytest -m "slow or not slow" -s tests/test_mill_v0_slack.py', "75 s (load 5)",
+                               "wing_data.md"),
     # pumping.md: the scene's reel-out trim elevator and the reel-in elevator (moment balance at alpha_in)
     "pumping_elevator_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_pumping_cycle.py -k '
                                    '"phases_from or reel_in_elevator"', "10 s", "pumping.md"),
