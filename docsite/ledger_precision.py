@@ -44,8 +44,14 @@ STRESS_PRINTED = (
     'limit, 1,846',
 )
 
+#: the craft's open-loop mode at its trim, as craft_stability's 10 m/s scan row prints it
+CRAFT_MODE_CHECK = ((r"The craft is open-loop unstable at its trim \(\+([\d.]+) \+- ([\d.]+)i 1/s",
+                     ("~{craft_stability[scan][v10][growth]}", "~{craft_stability[scan][v10][frequency]}")),)
+
 WORK_PRECISION = Covered(
-    groups=('precision_data', 'stable_steps'),
+    # craft_stability: the craft's lateral mode at 10 m/s in the stress section (its scan's "growth +0.1267 1/s
+    # frequency 0.497 rad/s"; until 2026-12-01 in a not_rerun snippet)
+    groups=('precision_data', 'stable_steps', 'craft_stability'),
     checks=STRESS_CHECKS + ((r"RK4: ([\d.]+) on the negative real axis, 2 sqrt 2 = ([\d.]+) on the imaginary axis; "
              r"DP5\(4\): ([\d.]+) on the real axis but only ([\d.]+) on the imaginary axis",
              tuple(P % k for k in ("rk4_real", "rk4_imag", "dp5_real", "dp5_imag"))),
@@ -54,8 +60,12 @@ WORK_PRECISION = Covered(
               for scene in SCENES),
             *((rf"(?<= )([\d.]+) \| ([\d.]+) \| {after}", ("~" + S % (scene, "dp5"), S % (scene, "dt")))
               for scene, after in zip(SCENES, ("\\| ladder_chain", "\\| roberts_flying_model", "\\| laddermill",
-                                               "The estimate holds"), strict=True))),
+                                               "The estimate holds"), strict=True))) + CRAFT_MODE_CHECK,
     given=(
+        'DP5(4): a step ends on it);',  # the breakpoints table: a method's name
+        # the craft's hold: eq. (6) (Roberts'), the holder's control period, the craft's state size (rotorcraft.md)
+        "(6) LQR** ( : the differential collective dtheta = -K (y, phi, y', p) every 50 ms from the simulator's "
+        'state, ; the collective at the trim).', 'finite differences of the 31-state right-hand side; rotorcraft.md):',
         controller_measure.WHIP_MODE_STEP,  # whip_mode_mill's --methods ros34pw2:0.2
         'at dt = 0.025 s gives "dt = 0.025 s',  # the stable-step test's step (its message Printed)
         'an injected 1e12 m/s node speed',  # stress_cases.INJECTIONS' "node velocity 1e12 m/s"
@@ -232,6 +242,16 @@ WORK_PRECISION = Covered(
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         Printed('stress_all', STRESS_PRINTED),
+        # the tethered wing's extent: work-precision prints each reference's (2026-12-01; until then not_rerun; the
+        # chain's 3613 m: step_accuracy_10, above)
+        Printed('wp_tethered_wing_extent', ('101 m for the tethered wing',)),
+        # breakpoints "all" against "inside" on the golden runs: "componentwise 1.2e-06" (tethered wing), "7.4e-05"
+        # (chain), each nearer DP5(4) at 1e-10 (2026-12-01; until then not_rerun, the test had no print)
+        Printed('breakpoints_golden_test', (
+            'Changes such runs, toward a tight DP5(4) run (the golden direction-step cases by 1.2e-6 (tethered wing) '
+            'and 7.4e-5 (chain) componentwise relative; ).',)),
+        # the mill's RK4 limit just after a transfer: "at t = 50.00 s: rk4: largest stable step 0.01224 s"
+        Printed('stable_step_mill_transfer', ("beyond RK4's 12.2 ms limit right after a transfer)",)),
         # tests/test_stress.py -s -k bisection_agrees: stable_step_rows('tethered_wing', horizon=2.0, iters=5)
         # prints "stable at the bracket's top, 0.5 s", ratio_to_rk4_limit 26.29 (the horizon given)
         Printed('stress_quick_tests', ('tethered_wing both at the cap 0.5 s (26x,',)),
@@ -297,38 +317,30 @@ WORK_PRECISION = Covered(
             'and fourth order (ratios 20.8, 23.7 per halving;',
         )),
     ),
-    not_rerun=(
-        # the tethered wing's extent: no command prints it (the chain's: step_accuracy_10, above)
-            '101 m for the tethered wing',
-        # the stress runs' narrative of 2026-11-24 (this session's side runs: RK4 at 5 ms, ROS34PW2 at 10 ms, the
-        # counts before and after its fixes, the holds before the LQRs, the wind and injection cases' summaries):
-        # --long stress_all prints its own case rows (its figures that are on the page: STRESS_PRINTED, below)
-        "(6) LQR** ( : the differential collective dtheta = -K (y, phi, y', p) every 50 ms from the simulator's "
-        'state, ; the collective at the trim). The craft is open-loop unstable at its trim (+0.127 +- 0.497i 1/s, '
-        'finite differences of the 31-state right-hand side; rotorcraft.md): held at its open-loop equilibrium '
-        'controls, as the previous run did, roundoff (kinetic energy 1e-25 to 5e-24 J for 1900-3400 s) grows into a '
-        'ground contact (node 2) at 3511 s with its own ROS34PW2 at 50 ms, at 2255 s with RK4 at 5 ms and at 1960 s '
-        'with ROS34PW2 at 10 ms: the physics, not the integrator.',
-        'The mill under bang-bang controls on all 101 wings, which failed at t = 3.9 s in that run, was a '
-        "step past the loaded stability limit, not a physical manoeuvre: at the scene's present 10 ms step (12.5 ms "
-        "then, beyond RK4's 12.2 ms limit right after a transfer) it runs the 20 s, and so it does at 2.5 ms",
-        'RK4 at 10 ms steps over it without evaluating it.',
-                # tests/test_breakpoints.py, tests/test_batch_breakpoints.py and tests/test_stable_step.py
-        # (assertions, not printed figures); the message format named
-        "DP5(4): a step ends on it); each piece runs with its own segment's straight line, so the stage at its end "
-        'sees the left-hand slope. Steps with no kink inside run exactly as before (bit for bit: the golden '
-        "trajectories pass). | | | also a step that only ends or starts on a kink runs with its own segment's line. "
-        'Needed when the kink grid is aligned with the steps (a disturbance sampled on the control grid): the '
-        "kernel's grid gives the *next* segment's slope at a grid point, and time roundoff decides which side a "
-        'stage lands on. Changes such runs (the golden direction-step cases by 1.2e-6 (tethered wing) and 7.4e-5 '
-        '(chain) relative).',
-    ),
     history=(History('2026-11-24', 'laddermill stress tethered_wing ladder_chain roberts_flying_model laddermill '
                      '(c36a6ae, ec22606, e6bbf77, a314800)', "the stress runs' figures before --long stress_all's "
                      'run of 2026-11-30 (issue 33 point 6)',
                      ('(2026-11-24: -7e-15 m, -3e-12 N, 1.5e-24 and 2.2e-24 J).', '(2026-11-24: 1.6e-17 J;',
                       '2026-11-24: 0.33 s, 13.6x)', '(2026-11-24: 0.98-0.99).')),
              # runs that are not kept: earlier code's stress runs and side runs (issue 33 point 6, dated on the page)
+             # the rotorcraft's hour at its open-loop equilibrium controls and the two side runs beside it (until
+             # 2026-12-01 not_rerun; the stress suite holds the craft by its LQR since, so no command repeats them)
+             History('2026-11-24', 'laddermill stress roberts_flying_model with the hour held at the equilibrium '
+                     'controls, and the same hour with RK4 at 5 ms and ROS34PW2 at 10 ms (5c6f0b4)',
+                     "the craft's open-loop hour (earlier code's holder)",
+                     ('held at its open-loop equilibrium controls, as the run of 2026-11-24 did (5c6f0b4), roundoff '
+                      '(kinetic energy 1e-25 to 5e-24 J for 1900-3400 s) grows into a ground contact (node 2) at 3511 '
+                      's with its own ROS34PW2 at 50 ms, at 2255 s with RK4 at 5 ms and at 1960 s with ROS34PW2 at 10 '
+                      'ms: the physics, not the integrator.',)),
+             # the mill's bang-bang case before and after the 10 ms step (d612dc8, 9f0397d); today's run at 10 ms
+             # ends at a pole inside the step (the page says so: stress_all's check); until 2026-12-01 not_rerun
+             History('2026-11-24', 'laddermill stress laddermill at the 12.5 ms step, then stress_cases.run_for with '
+                     "stress.control_rows' bang-bang schedule at 10 and 2.5 ms (d612dc8, 9f0397d)",
+                     "the mill's bang-bang runs of 2026-11-24 (earlier code)",
+                     ('The mill under bang-bang controls on all 101 wings, which failed at t = 3.9 s in that run, was '
+                      "a step past the loaded stability limit, not a physical manoeuvre: at the scene's present 10 ms "
+                      'step (12.5 ms then,', 'it ran the 20 s on 2026-11-24, and so it did at 2.5 ms',
+                      'RK4 at 10 ms stepped over it on 2026-11-24 without evaluating it.')),
              History('2026-11-24', 'laddermill stress on the four scenes before the fixes (5c6f0b4, ec22606)',
                      "earlier code's stress run: injections at the craft's 50 ms step, elements cases refused at load",
                      ("- Fixed by this run (2026-11-24, 5c6f0b4): the RK4 injections on the rotorcraft ran at the "

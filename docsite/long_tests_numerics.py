@@ -41,9 +41,23 @@ NUMERICS_TESTS = {
     "trim_chain_wing": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v0 && python -m "
                             "laddermill_gym.studies.mill.trim_slope --variants v0 --elevators -4 2", "2 s (2026-12-01)",
                             "numerics.md"),
+    # benchmarks.md: the operating point's search lengths of LadderMill-v0, v1, v2 (OperatingPoint.t_settle_s)
+    "operating_point_settle_test": Long(
+        'python -m pytest -m "slow or not slow" -s tests/test_operating_point_settle.py',
+        "537 s with a cold operating-point cache (2026-12-01, nice 15, load 4-5); seconds from a warm one",
+        "benchmarks.md"),
+    # work_precision.md: breakpoints "all" on the golden direction-step runs, against "inside" and a tight DP5(4)
+    "breakpoints_golden_test": Long('python -m pytest -m "slow or not slow" -s tests/test_breakpoints_golden.py',
+                                    "21 s, 162 s compiling (2026-12-01, nice 15, load 4-5)", "work_precision.md"),
+    # work_precision.md: the tethered wing's extent, the scale of the relative position errors (each forcing's
+    # reference; the extent does not depend on the timing repeats)
+    "wp_tethered_wing_extent": Long(
+        "NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision tethered_wing --time 5 "
+        "--samples 25 --repeats 1 --quiet --out results/long/wp_tethered_wing", "103 s (2026-12-01, nice 15)",
+        "work_precision.md"),
     # benchmarks.md: the mill's stable RK4 step just after its first wing transfer (5000 RK4 steps to t = 50 s)
     "stable_step_mill_transfer": Long("laddermill stable-step laddermill --after-transfer",
-                                      "5 s (2026-11-30, nice 15)", "benchmarks.md"),
+                                      "5 s (2026-11-30, nice 15)", "benchmarks.md, work_precision.md"),
     # work_precision_closed_loop.md: the study's closed loop against the harness rollout (tethered wing, chain)
     "closed_loop_rollout_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_closed_loop_precision.py '
                                       '-k harness_rollout', "25 s", "work_precision_closed_loop.md"),

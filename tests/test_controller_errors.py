@@ -101,11 +101,14 @@ def test_study_rows_carry_the_controller_errors():
     assert {r["method"] for r in rows} >= {"rk4", "ros34pw2", "ros34pw2a"}
     for r in rows:  # the wing's y error is one component of its CG's position error
         assert r["err_lateral_m"] <= r["err_max_pos_m"] * (1 + 1e-12) + 1e-15
+        if r["err_max_pos_m"] > 0:  # the printed extent is the scale of each run's relative position error
+            assert r["err_max_pos_m"] / r["err_max_pos_rel"] == pytest.approx(ref["extent_m"], rel=1e-12)
     assert any(r["meets_controller"] for r in rows if r["method"] == "rk4")
     lines = []
     print_summary(res, echo=lines.append)
     assert any("meeting the controller tolerances" in s for s in lines)
     assert any("x rk4 at " in s for s in lines)
+    assert any(s.endswith(f"; extent {ref['extent_m']:.1f} m") for s in lines)
 
 
 def test_w_step_cost_parts_within_the_step():

@@ -164,6 +164,7 @@ def run_cases(base: Simulator, forcing: str, duration: float, n_samples: int, re
     ev = with_settings(base, state=x0, wind=wind, method="dp54")  # reads the controller quantities of a state
     qr = controller_quantities(ev, times, xr)
     ref = {"dp54_rtol": REF_TOL, "scipy_dop853_rtol": REF_TOL, "reference_agreement_state": agree,
+           "extent_m": float(np.max(np.linalg.norm(pr, axis=2))),  # the errors' scale (precision.errors)
            **{f"{k}_reference_agreement": v for k, v in controller_errors(controller_quantities(ev, times, xs2), qr)
               .items() if k != "meets_controller"}}
     period = duration / n_samples if fb is None else fb.period

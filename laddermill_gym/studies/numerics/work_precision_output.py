@@ -99,7 +99,8 @@ def print_summary(res: dict, echo=print) -> None:
     for f, ref in res["references"].items():
         names = " and ".join(f"{k[:-5]} at {v:g}" for k, v in ref.items() if k.endswith("_rtol"))
         echo(f"-- {f}: references ({names}) agree to {ref['reference_agreement_state']:.1e}"
-             + "".join(f", {k[4:-20]} {v:.1e}" for k, v in ref.items() if k.endswith("_reference_agreement")))
+             + "".join(f", {k[4:-20]} {v:.1e}" for k, v in ref.items() if k.endswith("_reference_agreement"))
+             + (f"; extent {ref['extent_m']:.1f} m" if "extent_m" in ref else ""))
         echo(f"   {'method':9s} {'dt [s]':>9s} {'tol':>7s} {'wall [s]':>9s} {'x real':>8s} {'pos T [m]':>10s} "
              f"{'pos RMS':>9s} {'state T':>9s} {'state RMS':>9s}" + _CONTROLLER_HEAD)
         for r in (r for r in res["rows"] if r["forcing"] == f):
