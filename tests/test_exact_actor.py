@@ -117,3 +117,28 @@ def test_the_shipped_single_craft_policies_run_exact():
         np.testing.assert_allclose(got, want, rtol=0, atol=1e-5)
         alone = np.array([exact.predict(o, deterministic=True)[0] for o in obs])
         assert np.array_equal(alone, got)
+
+
+def test_torch_actions_of_one_observation_against_a_batch():
+    """The shipped tethered-wing policy on 512 observations drawn about its normalisation: each observation alone
+    against all 512 at once. The fixed-order float64 actor gives the same bits either way; SB3's torch predict agrees
+    to float32 rounding only (its last bits depend on the CPU's kernels and the batch size). Prints both
+    differences and the CPU's torch kernels."""
+    torch = pytest.importorskip("torch")
+    from laddermill_gym.control.sb3_policy import SB3Controller
+    from laddermill_gym.control.shipped_policies import shipped_policy_path
+
+    exact = SB3Controller.load(shipped_policy_path("ppo_tethered_wing"))
+    torch_ctrl = SB3Controller.load(shipped_policy_path("ppo_tethered_wing"), exact=False)
+    dim = exact.model.observation_space.shape[0]
+    obs = exact.obs_mean + np.random.default_rng(1).normal(size=(512, dim)) * exact.obs_std
+    apart = {}
+    for name, ctrl in (("float64 fixed order", exact), ("torch float32", torch_ctrl)):
+        batch = ctrl.predict(obs, deterministic=True)[0]
+        alone = np.array([ctrl.predict(o, deterministic=True)[0] for o in obs]).reshape(batch.shape)
+        apart[name] = float(np.abs(alone - batch).max())
+    print(f"one observation alone against 512 at once: torch float32 up to {apart['torch float32']:.2g} apart, "
+          f"float64 fixed order {apart['float64 fixed order']:.2g} (torch {torch.__version__}, CPU capability "
+          f"{torch.backends.cpu.get_cpu_capability()}, MKL {torch.backends.mkl.is_available()})")
+    assert apart["float64 fixed order"] == 0.0
+    assert apart["torch float32"] < 1e-5

@@ -184,9 +184,41 @@ def test_lqr_holds_v1_for_300_s_after_the_paper_step(mill):
             if term or trunc:
                 break
         results[spec] = (info["t"], worst, term, float(np.mean(power)))
+        if spec == "lqr":  # the share of its commands beyond v1's authority (clipped to it)
+            print(f"lqr: clipped fraction {ctrl.n_clipped / ctrl.n_actions:.3g} ({ctrl.n_clipped} of "
+                  f"{ctrl.n_actions} action entries)")
         print(f"{spec}: end {info['t']:.2f} s {info.get('failure_reason', '')}, largest |dy| {worst:.3f} m, mean "
               f"power {np.mean(power) / 1e3:.2f} kW")
     assert results["open_loop"][2] and results["open_loop"][0] < 15.0
     t, worst, term, power = results["lqr"]
     assert not term and t >= 300.0 - 1e-6 and worst < 0.5
     assert power == pytest.approx(mill.operating_point.power_W, rel=0.05)
+
+
+@pytest.mark.slow
+def test_transfer_phase_design_does_not_hold_v1(mill):
+    """v0's design model (the lateral model just after a transfer) with v1's config otherwise: stable at the design
+    phase only (frozen closed loop |z| > 1 at another phase, the period's transition matrix radius > 1), and its
+    episode on LadderMill-v0 given the v1 scene (full authority) after the 0.01 rad step at 1 s ends within 300 s.
+    Prints the phases' |z|, the radius and the episode's end (docs/controllers.md's record of the v1 mill)."""
+    import dataclasses
+
+    from laddermill_gym.control.factory import DEFAULT_LQR_CONFIGS
+    from laddermill_gym.control.lqr_config import load_lqr_config
+    from laddermill_gym.control.mill_lqr import design_mill_lqr
+
+    config = dataclasses.replace(load_lqr_config(DEFAULT_LQR_CONFIGS[LM1]), design_model="transfer_phase")
+    kw = {"scene": "laddermill_v1", "episode_time": 300.0, "operating_point": mill.operating_point}
+    env = make(LM0, **kw)
+    design = design_mill_lqr(config, env.task)
+    print(f"\ntransfer_phase on v1: frozen |z| {np.round(design.frozen_radius, 4).tolist()} at phases "
+          f"{np.round(design.phases, 3).tolist()}; the period's transition matrix radius {design.monodromy_radius:.2g}")
+    assert design.frozen_radius[0] < 1.0 < design.frozen_radius[1:].max() and design.monodromy_radius > 1.0
+    ctrl = design.controller(env.task)
+    obs, _ = env.reset(seed=0)
+    while True:
+        obs, _, term, trunc, info = env.step(ctrl.predict(obs)[0])
+        if term or trunc:
+            break
+    print(f"transfer_phase on v1, LadderMill-v0 episode: end {info['t']:.2f} s {info.get('failure_reason', '')}")
+    assert term and info["t"] < 300.0
