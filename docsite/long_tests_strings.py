@@ -65,16 +65,16 @@ STRING_TESTS = {
     # controllers.md: v0's design model (just after a transfer) on the v1 mill, its phases' |z|, the period's radius
     # and its LadderMill-v0 episode on the v1 scene (the test's operating point about 100 s of it)
     "mill_v1_transfer_phase": Long('python -m pytest -m slow -s tests/test_laddermill_v1.py -k transfer_phase_design',
-                                   "about 15 min (2026-12-01, nice 15, load 6)", "controllers.md"),
+                                   "547 s (2026-12-01, nice 15, load 6)", "controllers.md"),
     # features.md: LadderMill-v0's open loop after the paper step, the env's failure sentence (the wing, its beta)
     "mill_open_loop_end_test": Long('python -m pytest -m slow -s tests/test_mill_open_loop_end.py',
-                                    "minutes (the operating point)", "features.md"),
+                                    "11 s, its operating point cached (2026-12-01)", "features.md"),
     # moving_cable.md: the 2D mill's periodic motion at 10 and 5 ms (the period-mean tensions' largest difference)
     "mill_half_step_test": Long('python -m pytest -m slow -s tests/test_mill_periodic_variants.py -k halving',
-                                "5-15 min (two runs to periodic motion)", "moving_cable.md"),
+                                "658 s (2026-12-01, nice 15, load 6)", "moving_cable.md"),
     # moving_cable.md: the default settings on 11 and 21 wings, 1500 s of search each
     "mill_small_test": Long('python -m pytest -m slow -s tests/test_mill_periodic_variants.py -k small_mills',
-                            "minutes", "moving_cable.md"),
+                            "192 s (2026-12-01, nice 15, load 6)", "moving_cable.md"),
     # wing_data.md: the v1 mill's steps (the slow test prints both) and its power curve
     "mill_v1_steps": Long("python -m pytest -m slow -s tests/test_mill_v1.py -k step", "3 min",
                           "wing_data.md"),
