@@ -112,17 +112,15 @@ CONTROLLERS = Covered(
         "**LadderMill-v1** (the v1 wing, 152.9 kW at 2 m/s; actions at by default): (the paper's 0.01 rad step at"
         ' 1 s):',
     ),
-    not_rerun=(
-        # the v1 LQR's clipped fraction over its 300 s episode: tests/test_laddermill_v1.py -k lqr_holds prints it
-        # since 2026-12-01 (--long mill_v1_lqr), not yet re-run
-        "No LQR command reaches the v1 authority's bound (clipped fraction 0).",
-    ),
     printed=(  # page and long groups (docsite/long_figures.py)
         Printed('mill_v0_paper_step', ('151, 8.7 s, 35.6 m (75.5 kW) | **6091, 300 s, 0.08 m** (67.2 kW) |',)),
         Printed('mill_v0_step_minus_0.05', ('109, 6.9 s, 36.7 m (72.7 kW) | **6046, 300 s, 0.40 m** (67.1 kW) |',)),
         Printed('mill_v0_step_0.1', ('93, 6.1 s, 34.0 m (70.6 kW) | **5907, 300 s, 0.80 m** (66.8 kW) |',)),
         Printed('mill_v0_gust', ('360, 12.6 s, 31.8 m (105.1 kW) | **6211, 300 s, 0.46 m** (68.5 kW) |',)),
         Printed('lqr_laddermill', ('(spectral radius 0.099;',)),
+        # tests/test_laddermill_v1.py -k lqr_holds: "lqr: clipped fraction 0 (0 of 1818000 action entries)" over its
+        # 300 s after the paper step (--long mill_v1_lqr, 421 s, 2026-12-01; until then not_rerun)
+        Printed('mill_v1_lqr', ("No LQR command reaches the v1 authority's bound (clipped fraction 0).",)),
         # tests/test_laddermill_v1.py -k transfer_phase_design: the v1 config with design_model transfer_phase (the
         # config's own comment names the copy), "frozen |z| [0.9984, 1.115, ...]; the period's transition matrix
         # radius 4.5e+20" and "end 24.85 s t = 24.85 s: slot 49 alpha = 13.0 deg, beta = -63.9 deg" (2026-12-01;

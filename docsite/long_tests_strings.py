@@ -42,7 +42,7 @@ STRING_TESTS = {
                                    'random_actions', "35 s", "mill_fast.md"),
     # mill_fast.md: v1's LQR and open loop after the paper's step (the open loop's end, as the test prints it)
     "mill_v1_lqr": Long("python -m pytest -m slow -s tests/test_laddermill_v1.py -k lqr_holds",
-                        "135 s (2026-11-30, nice 15, load 5-6)", "mill_fast.md"),
+                        "135-421 s (2026-11-30, 2026-12-01; nice 15, load 5-6)", "mill_fast.md"),
     # mill_fast.md: the v1 wing's trims at the near-top rule's -4 deg and the descending -0.5 deg (the study's table)
     "trim_v1_top_rule": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v1 --elevators -4 -0.5",
                              "5 s (2026-11-30)", "mill_fast.md"),
