@@ -108,6 +108,9 @@ CONTROLLERS = Covered(
         "the action can move by tanh(0.2) = 0.197 where the LQR acts 0, by 0.032 where it acts 0.9 and by nothing",
         # 2 pi / 0.268 and ln 2 / 0.111
         'a 23 s oscillation doubling every 6.2 s',
+        # mill_v1_transfer_phase prints |z| at the 8 phases 0.0-0.875 (0.9984 at the transfer's 0.0, 1.0757 to 1.115
+        # at the others): 8 - 1 (until 2026-12-01 matched only by a number of pytest's header)
+        '7 other phases,',
         # the v1 mill's 2 m/s power, checked on docs/paper_meijaard1999.md
         "**LadderMill-v1** (the v1 wing, 152.9 kW at 2 m/s; actions at by default): (the paper's 0.01 rad step at"
         ' 1 s):',
@@ -127,7 +130,8 @@ CONTROLLERS = Covered(
         # until then not_rerun, the page's "about 4e20" then)
         Printed('mill_v1_transfer_phase', (
             "v0's design, the gain on the lateral model just after a transfer, does not hold this mill: it is stable "
-            "at that phase only (frozen closed loop |z| up to 1.115 at the 7 other phases, the period's transition "
+            "at that phase only (frozen closed loop |z| up to 1.115 at the",
+            "other phases, the period's transition "
             'matrix radius about 4.5e20: of the v1 config with ), and its episode (LadderMill-v0 given ) ended at t = '
             '24.85 s, slot 49 at beta -63.9 deg.',)),
         Printed('lqr_laddermill_v1', ('prints |z| at most 0.99909 at phases 0.125-0.875, 1.02093 just after the '

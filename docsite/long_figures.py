@@ -6,7 +6,8 @@ its page); ``python -m docsite.readme_figures --skip-readme --long NAME [NAME ..
 processes, writes their whole printed output into the JSON under ``"long"`` and compares every
 :class:`docsite.ledger_kinds.Printed` snippet of that group with it (:mod:`docsite.printed_numbers`: each quoted
 number must be among the printed ones, by value at the quoted digits). The default run leaves them out; in the slow
-set each is a test of its own (tests/test_long_tier.py, marked ``slow`` and ``long``). A long group's snippets are the ones the ledgers listed as not re-run until 2026-11-30.
+set each is a test of its own (tests/test_long_tier.py, marked ``slow`` and ``long``). A long group's snippets are
+the ones the ledgers listed as not re-run until 2026-11-30.
 """
 
 from __future__ import annotations

@@ -46,6 +46,12 @@ WINDOW = 60  # printed numbers a snippet's figures may spread over (a table row 
 # a printed numeral, also one glued to a unit or letter ("1.2mm", "-30+240j"): the output side is read loosely;
 # thousands commas only between groups of exactly three digits ("1,555", "12,000,000"), so "[1,2]" is 1 and 2
 PRINTED = re.compile(r"[-+]?(?:\d{1,3}(?:,\d{3})+(?!\d)|\d+)(?:\.\d+)?(?:e[-+]?\d+)?")
+# pytest's framing of a ``pytest -s`` group's output (:func:`own_output`): banners and header lines, the sections
+# whose lines are pytest's (durations, warnings, short summary), a test file's path before the first printed line
+PYTEST_FRAME = re.compile(r"=+( .* =+)?|platform .*|rootdir: .*|configfile: .*|plugins: .*|cachedir: .*|"
+                          r"collect(ed|ing) .*")
+PYTEST_SECTION = re.compile(r"=+ (slowest \d+ durations|warnings summary|short test summary info) =+")
+PYTEST_FILE = re.compile(r"^tests/[\w/]+\.py ")
 
 
 def value(text: str) -> float:
@@ -98,6 +104,26 @@ def numerals(text: str) -> list[str]:
     return [flat[a:b] for a, b in (m.span() for m in NUMBER.finditer(flat))]
 
 
+def own_output(output: str) -> str:
+    """``output`` without pytest's own framing where a group runs ``pytest -s``: the session header (its platform
+    line's versions, "platformdirs-4.14.9"), the counts, the durations and warnings sections and the test file's path
+    that starts the first printed line ("tests/test_gusts_v2.py "), whose numbers would otherwise stand in for a
+    figure the test did not print (a quoted "4 N" found in a plugin's version, 2026-12-01); other output as it is."""
+    if "test session starts" not in output:
+        return output
+    kept, skipping = [], False
+    for line in output.splitlines():
+        bare = line.strip()
+        if PYTEST_SECTION.fullmatch(bare):
+            skipping = True
+        elif bare.startswith("=") and bare.endswith("="):
+            skipping = False
+        if skipping or PYTEST_FRAME.fullmatch(bare):
+            continue
+        kept.append(PYTEST_FILE.sub("", line))
+    return "\n".join(kept)
+
+
 def missing(snippet: str, output: str) -> list[str]:
     """The numbers of ``snippet`` that ``output`` does not print near one another: each quoted number must be a
     distinct printed number rounded to the quoted digits (:func:`rounds_to`), or where a prefixed unit follows it
@@ -106,6 +132,7 @@ def missing(snippet: str, output: str) -> list[str]:
     (its "falls by 0.25" of a printed -0.252), within one window of :data:`WINDOW` consecutive printed numbers (a
     sentence's figures come from a few lines of output, in any order); the window that leaves the fewest unmatched
     is taken."""
+    output = own_output(output)
     matches = list(PRINTED.finditer(output))
     printed = [(value(m.group()), unit(m.group())) for m in matches]
     marks = percent_marks(output, matches)

@@ -281,7 +281,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--pictures", nargs="*", metavar="NAME", help="also draw the embedded pictures again into "
                    "docs/figures/ (docsite/pictures.py; no name: every command but the training runs)")
     p.add_argument("--long", nargs="*", metavar="NAME", help="also the long tier's commands (docsite/long_figures.py; "
-                   "minutes to an hour each; the slow set runs them too: tests/test_long_tier.py): their output against the pages' Printed snippets")
+                   "minutes to an hour each; the slow set runs them too: tests/test_long_tier.py): their output "
+                   "against the pages' Printed snippets")
     p.add_argument("--list", action="store_true", help="with --long: list the long groups and their commands, run "
                    "nothing")
     p.add_argument("--skip-readme", action="store_true", help="leave out README's own groups and checks (re-run "

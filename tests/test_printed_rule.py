@@ -154,3 +154,33 @@ def test_a_percent_is_never_a_printed_number_a_hundred_times_off():
     assert missing("46.7 % against 16.8 %", CAPACITY) == []
     assert missing("1.074 % against 0.387 %", CAPACITY) == ["1.074", "0.387"]  # the [MW] column's, not [%]
     assert missing("a mean of 1.074 MW", CAPACITY) == []  # a number without a percent sign reads any column
+
+
+PYTEST_RUN = """============================= test session starts ==============================
+platform linux -- Python 3.11.7, pytest-9.2.0, pluggy-1.7.0
+rootdir: /work/main
+plugins: platformdirs-4.14.9, anyio-4.16.0
+collected 9 items / 8 deselected / 1 selected
+
+tests/test_gusts_v2.py period-mean tensions within 14.6 N of 160.0 kN
+.
+=============================== warnings summary ===============================
+tests/test_gusts_v2.py::test_x
+  /venv/site-packages/gymnasium/envs/registration.py:511: DeprecationWarning: LadderMill-v1 is out of date
+-- Docs: https://docs.pytest.org/en/stable/how-to/capture-warnings.html
+============================= slowest 25 durations =============================
+297.34s setup    tests/test_gusts_v2.py::test_x
+=========== 1 passed, 8 deselected, 2 warnings in 547.16s (0:09:07) ============
+"""
+
+
+def test_pytest_framing_is_not_a_printed_figure():
+    """A ``pytest -s`` group's output: only what the test printed counts (2026-12-01: a quoted "4 N" was found in
+    the header's "platformdirs-4.14.9", where the test printed 14.6 N); the header, counts, warnings, durations and
+    the test file's path ("test_gusts_v2") are pytest's. Hand-made output of the same shape as the oracle."""
+    assert missing("within 15 N of 160 kN", PYTEST_RUN) == []
+    assert missing("within 4 N of 160 kN", PYTEST_RUN) == ["4"]
+    for framing in ("3.11", "9.2", "511", "2", "547.16", "297.34", "9", "8"):
+        assert missing(f"a figure {framing}", PYTEST_RUN) == [framing], framing
+    plain = "collected 9 items\nplatformdirs-4.14.9"  # no pytest session: another command's output, as it is
+    assert missing("9 and 4", plain) == []
