@@ -7,7 +7,8 @@ from docsite.ledger_kinds import History
 
 #: the clipped base with a larger initial noise (log_std_init -0.9), seeds 0 and 1; then a middle noise
 #: (log_std_init -1.6) with twice the critic warm-up (160,000 steps), seeds 0 and 1; then that config with the actor at
-#: a tenth of the critics' learning rate (actor_lr_scale 0.1), seeds 0 and 1
+#: a tenth of the critics' learning rate (actor_lr_scale 0.1), seeds 0 and 1; then the after-squash config with a
+#: small bound (residual_limit 0.05), seed 0
 RESIDUAL_SAC_NOISE = (
     History('2026-11-30',
             'laddermill train configs/agents/sac_tethered_wing_residual_after_noise.yaml --seed 0 and --seed 1 '
@@ -77,5 +78,24 @@ RESIDUAL_SAC_NOISE = (
                 "after the warm-up lost 30 and 22 of the LQR's validation survivals (40 and 51 at the full rate). "
                 'Seed 0 of the after-squash config (score 101, gusts-v1 10 / 12) stays the candidate, and issue 31 '
                 'point 4 is not met.',
+            )),
+    History('2026-12-01',
+            'laddermill train configs/agents/sac_tethered_wing_residual_small.yaml --seed 0 --torch-threads 1 '
+            '(0ac4d21); laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 --controllers '
+            'lqr RUN',
+            "the small-bound (L = 0.05) after-squash residual SAC's seed 0, 40 min; its folder "
+            'runs/sac_tethered_wing_residual_small_seed0 stayed on the machine, not committed',
+            (
+                'Nor did a small bound (run of 2026-12-01). is the after-squash config with instead of 0.2, (-2.5 + '
+                "ln 4: the action's noise stays 0.016 of the half range) and 40 min: no control moves more than 0.05 "
+                "of its half range from the LQR's. Seed 0 and the paired rule were fixed and committed before it was "
+                'trained. (300,008 steps in 40.35 min on one core at a load of 4.1 to 6.9) validated 77 / 184 at the '
+                'start and the warm-up, then 71 to 84 with 21 to 27 lost that the LQR holds (paired scores 17 to 42): '
+                "it kept its start, the LQR bit for bit (on gusts-v1 the LQR's end time and peak lateral excursion in "
+                'all 18 episodes): no learned policy. A quarter of the bound did not stop the fall: at 100,008 steps, '
+                "the first check after the warm-up, moves of at most 0.05 lost 23 of the LQR's survivals (56 at L = "
+                '0.2) and gained 28. This machine (an AMD EPYC without AVX-512) gives the LQR itself other bits: 77 / '
+                '184 on the validation (NTM-IB 34, NTM-IA 13 against 33 and 15) and 10 / 12 on gusts-v1 (NTM_IB seed '
+                '0 lost at 42.05 s; dryden_moderate at 21.45, 32.15 and 18.90 s).',
             )),
 )
