@@ -235,7 +235,7 @@ PUMPING = Covered(
         # tests/test_pumping_v1.py's slow hour: on 2026-12-01 it fails (pytest prints the failure text; exit 1),
         # seed 0 at 3199.70 s; its 2026-11-30 figures a History record below
         Printed('pumping_ntm_hour_test', (
-            'ending at t = 3199.70 s by sideslip (alpha = 12.1 deg, beta = 62.2 deg);',)),
+            'ending at t = 3199.70 s by sideslip (alpha = 12.1 deg, beta = 62.2 deg),',)),
         Printed('pumping_reel_in_16_7', (
             'mean reel-in tension 29.5 kN, net -43.5 kW over the second cycle',
         )),
@@ -275,7 +275,7 @@ PUMPING = Covered(
         # recoveries, alphas, entry tensions; a per-step log the test's loop does not keep; not_rerun until
         # 2026-12-01, when a new test printing them fails likewise at 3199.70 s in seed 0)
         History('2026-11-30', 'python -m pytest -m slow -s tests/test_pumping_v1.py -k an_hour_of_crosswind',
-                "the slow test's hour, seed 0, before a change not yet traced",
+                "the slow test's hour, seed 0 (the env, controller and kernels unchanged since: another machine)",
                 ('14 cycles, 124.4 MJ net (34.6 kW),',)),
         History('2026-11-29', "the slow test's loop (tests/test_pumping_v1.py) with a per-step log of phase, alpha, "
                 'beta, elevation, tension and airspeed, seeds 0 and 1, on the crosswind controller of 8b7d20f',
