@@ -122,7 +122,11 @@ POWER_CURVE = Covered(
             '0.83 / 0.58 / 0.42 at 10 / 12 / 14 m/s (the closed-form targets 1.30 (8 / V0)^2')),
         # the v1 mill's rows at V_c 1 and 2 m/s (wing_data.md's v1 power curve)
         Printed('power_curve_v1', ('which lowers the tension difference at low V_c (the v1 mill gives 82.1',
-                                   '152.9 kW at 1')),
+                                   '152.9 kW at 1',
+                                   # its V0 8 rows at V_c 3, 4, 5, 6 m/s: "periodic False" (2026-12-01; until then
+                                   # not_rerun as "not periodic above 3 m/s", which the 3 m/s row, not periodic from
+                                   # rest, did not say; wing_data.md: periodic there when stepped up from 2 m/s)
+                                   'but from rest is not periodic at 3 m/s and above).')),
         Printed('trim_slope', (
             'prints C_L,trim at 8 m/s: 1.30 ascending, 1.10 descending)',
             # the v2 descending trim at 10 m/s air speed (V_c 2 m/s in the paper's wind): its table's 6.78/0.91
@@ -250,16 +254,15 @@ POWER_CURVE = Covered(
         "The paper's figure fits 5 m/s far better, as the issue's hand estimate said (200 kW needs a tension "
         'difference of 40 kN at 5 m/s',
     ),
-    # the trim's C_L against the elevator (0.61 at 4 deg, the attached branch lost above 5-7 deg, a post-stall trim
-    # near 23 deg, C_L 0.7): tail_schedule's trim solution, no test prints them (its 1.30 and the depowered C_L:
-    # depower_rule_tests, above); trim_slope (run 2026-11-30, 1 s) prints the trim per air speed at the scene's
-    # elevators only, so its 0.61 (v1's) or 1.30 matching these would be by chance; the v1 mill not periodic above
-    # 3 m/s: wing_data.md's step from 2 to 3 m/s and its 4-5 m/s runs, which no group here re-runs
-    # (the trim's C_L against the elevator: now Printed by --long trim_slope_v2_elevators, above; the elevator
-    # range 5-7 deg over which the attached trim is lost depends on the wind and no command prints that bound)
+    # the elevator range over which the attached trim is lost: no command prints it, and it is not one bound.
+    # Measured 2026-12-01 (a Python session with trim_slope's functions on the v2 wing, 6-18 m/s): the attached root
+    # of the moment about the attachment does not vanish as the elevator grows; it moves to negative lift and below
+    # -10 deg, the lower end of sim.statics.pitch_trim_alpha's search, which then returns its grid point of least
+    # |moment| (22.5 deg at 8-18 m/s, no root there) from 5.65-6.9 deg of elevator by the air speed; a true pair of
+    # post-stall roots (21.4 / 23.5 deg at 8 m/s and 7 deg: trim_slope_v2_elevators' trims) comes only higher. Which
+    # of these is "lost" is a wording choice to make on the page before a command can print the bound.
     not_rerun=(
         'and above 5-7 deg (by the wind)',
-        'but is not periodic above 3 m/s).',
     ),
     history=(
         History('2026-11-29', 'laddermill power-curve cases with the trial tail rules (n = 1, 1.75; the chain layout)',
