@@ -56,7 +56,9 @@ CONTROLLERS = Covered(
             # the shipped policies' gusts-v1 scorecards, exact (long groups gusts_v1_<env>: gust_bench.json's summary)
             (r"Rotorcraft-v0 (\d+ / \d+) \(the LQR (\d+ / \d+), open loop (\d+ / \d+)\),",
              tuple(f"{{gusts_v1_rotorcraft[scorecard][{c}]}}" for c in ("ppo_rotorcraft", "lqr", "open_loop"))),
-            (r"TetheredWing-v0 (\d+ / \d+) \(the LQR (\d+ / \d+), open loop (\d+ / \d+)\)\.",
+            # the LQR's count of today's CPU (2026-12-01, AVX2; its 11 / 12 of 2026-11-30's AVX-512 CPU: History)
+            (r"TetheredWing-v0 (\d+ / \d+) \(the LQR (\d+ / \d+) on 2026-12-01's AVX2 CPU, [^;]*; open loop "
+             r"(\d+ / \d+)\)\.",
              tuple(f"{{gusts_v1_tethered_wing[scorecard][{c}]}}" for c in ("ppo_tethered_wing", "lqr", "open_loop")))),
     given=(
         "All numbers below come from (the commands are in the Makefile), on this project's 2-core machine. The "
@@ -157,6 +159,12 @@ CONTROLLERS = Covered(
         History('2026-11-30', "a Python session: the shipped ppo_tethered_wing's SB3 predict on one observation "
                 'alone and on 512 at once (fe300dd)', 'the torch float32 actions on the AVX512 machine of 2026-11-30',
                 ('against 512 at once: up to 4.8e-7 apart with MKL on AVX512, 2026-11-30;',)),
+        # the LQR's gusts-v1 count on the CPU of 2026-11-30 (AVX-512, znver4): it held NTM_IB seed 0, which it loses on
+        # 2026-12-01's (AVX2, znver3; --long gusts_v1_tethered_wing, the check above): numba compiles for the host CPU
+        History('2026-11-30', 'laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 '
+                '--controllers open_loop lqr ppo_tethered_wing (--long gusts_v1_tethered_wing, b7a1fc3)',
+                "the LQR's 18 episodes on 2026-11-30's AVX-512 CPU, not kept",
+                ("11 / 12 on 2026-11-30's AVX-512 one;",)),
         # TetheredWing-v0's PPO rows and scenario table
         History('2026-11-23',
                 'laddermill train configs/agents/ppo_tethered_wing.yaml, then laddermill evaluate --controllers lqr '
