@@ -51,6 +51,9 @@ PRINTED = re.compile(r"[-+]?(?:\d{1,3}(?:,\d{3})+(?!\d)|\d+)(?:\.\d+)?(?:e[-+]?\
 PYTEST_FRAME = re.compile(r"=+( .* =+)?|platform .*|rootdir: .*|configfile: .*|plugins: .*|cachedir: .*|"
                           r"collect(ed|ing) .*")
 PYTEST_SECTION = re.compile(r"=+ (slowest \d+ durations|warnings summary|short test summary info) =+")
+# a failed test's report (the FAILURES section): its source lines and locations are pytest's; only its "E   " lines
+# (the assertion's message, which the test wrote) count
+PYTEST_FAILURES = re.compile(r"=+ FAILURES =+")
 PYTEST_FILE = re.compile(r"^tests/[\w/]+\.py ")
 
 
@@ -106,21 +109,23 @@ def numerals(text: str) -> list[str]:
 
 def own_output(output: str) -> str:
     """``output`` without pytest's own framing where a group runs ``pytest -s``: the session header (its platform
-    line's versions, "platformdirs-4.14.9"), the counts, the durations and warnings sections and the test file's path
-    that starts the first printed line ("tests/test_gusts_v2.py "), whose numbers would otherwise stand in for a
-    figure the test did not print (a quoted "4 N" found in a plugin's version, 2026-12-01); other output as it is."""
+    line's versions, "platformdirs-4.14.9"), the counts, the durations and warnings sections, the test file's path
+    that starts the first printed line ("tests/test_gusts_v2.py ") and a failed test's report but for its "E " lines
+    (the assertion's message), whose numbers would otherwise stand in for a figure the test did not print (a quoted
+    "4 N" found in a plugin's version, 2026-12-01); other output as it is."""
     if "test session starts" not in output:
         return output
-    kept, skipping = [], False
+    kept, skipping, failures = [], False, False
     for line in output.splitlines():
         bare = line.strip()
-        if PYTEST_SECTION.fullmatch(bare):
-            skipping = True
+        if PYTEST_SECTION.fullmatch(bare) or PYTEST_FAILURES.fullmatch(bare):
+            skipping, failures = True, PYTEST_FAILURES.fullmatch(bare) is not None
         elif bare.startswith("=") and bare.endswith("="):
-            skipping = False
-        if skipping or PYTEST_FRAME.fullmatch(bare):
-            continue
-        kept.append(PYTEST_FILE.sub("", line))
+            skipping = failures = False
+        if failures and line.startswith("E  "):
+            kept.append(line[1:])
+        elif not (skipping or PYTEST_FRAME.fullmatch(bare)):
+            kept.append(PYTEST_FILE.sub("", line))
     return "\n".join(kept)
 
 

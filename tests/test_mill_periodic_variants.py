@@ -1,7 +1,9 @@
 """The in-plane mill's run to periodic motion (ladder/periodic.py) at the scene's 10 ms step against half of it,
 and on small mills (docs/moving_cable.md: "Halving the step changes nothing in the periodic motion", "Small mills
-wander"). Oracle for the step: the run at 5 ms, RK4's error falling 16-fold per halving; for the small mills, the
-search's own criteria (shape and power repeating to 1e-3 per period for two periods)."""
+wander"). Oracle for the step: the run at 5 ms (RK4's own error falls about 16-fold per halving, so what is left
+between the two runs is mostly the search's: both stop when shape and power repeat to 1e-3 per period, and the
+bound of 1e-4 of the base tension, 16 N, is of that size); for the small mills, the search's own criteria (shape and
+power repeating to 1e-3 per period for two periods)."""
 
 import numpy as np
 import pytest

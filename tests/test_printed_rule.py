@@ -182,5 +182,12 @@ def test_pytest_framing_is_not_a_printed_figure():
     assert missing("within 4 N of 160 kN", PYTEST_RUN) == ["4"]
     for framing in ("3.11", "9.2", "511", "2", "547.16", "297.34", "9", "8"):
         assert missing(f"a figure {framing}", PYTEST_RUN) == [framing], framing
+    banner = "=" * 35
+    failed = PYTEST_RUN.replace("=========== 1 passed", f"{banner} FAILURES {banner}\n_____ test_x _____\n"
+                                "    for _ in range(72000):\n>       assert not term, text(0)\n"
+                                "E       AssertionError: t = 3199.70 s: beta = 62.2 deg\ntests/test_x.py:134: "
+                                "AssertionError\n=========== 1 failed")
+    assert missing("ends at t = 3199.70 s, beta 62.2 deg", failed) == []
+    assert missing("72000 steps", failed) == ["72000"] and missing("line 134", failed) == ["134"]
     plain = "collected 9 items\nplatformdirs-4.14.9"  # no pytest session: another command's output, as it is
     assert missing("9 and 4", plain) == []
