@@ -139,14 +139,19 @@ CONTROLLERS = Covered(
         Printed('lqr_laddermill_v1', ('prints |z| at most 0.99909 at phases 0.125-0.875, 1.02093 just after the '
                                     "transfer, and the period's transition matrix radius 0.1667 with the transfer "
                                     '(0.3293 without).',)),
+        # re-run 2026-12-01 on this AMD EPYC (AVX2): the hand-over at 22.5 s now survives (44.80 s on 2026-11-30's
+        # AVX-512 CPU), the held-out counts 72 / 82 (70 / 84 there): History records below
         Printed('switch_ntm_ib_0', ('Why that one episode does not rank the two: handed over between them at several '
                                   'times ( ), the LQR flying first and the policy after survives with the hand-over '
-                                  'at 20 s and 21.5 s and fails at 10, 18, 21, 22 s (22.25 to 23.25 s) and 22.5 s '
-                                  '(44.80 s); the policy first and the LQR after fails at every one of those times '
-                                  '(22.20 to 23.00 s).',)),
-        Printed('paired_survival_shipped', ('the LQR survives 70 and the shipped policy 84: both 45, only the LQR 25, '
-                                          'only the policy 39, neither 91 (exact sign test of the discordant pairs, p'
-                                          ' = 0.103): no clear difference.',)),
+                                  'at 20, 21.5 and 22.5 s and fails at 10, 18, 21 and 22 s (22.25 to 23.25 s); the '
+                                  'policy first and the LQR after fails at every one of those times (22.20 to 23.00 '
+                                  's).',)),
+        Printed('paired_survival_shipped', ('the LQR survives 72 and the shipped policy 82: both 45, only the LQR 27, '
+                                          'only the policy 37, neither 91 (exact sign test of the discordant pairs, p'
+                                          ' = 0.26): no clear difference.',)),
+        # gust_bench.csv's NTM_IB seed 0 rows (2026-12-01, AVX2): the policy's "t = 22.95 s", the LQR's "t = 42.05 s"
+        Printed('gusts_v1_tethered_wing', ("It loses gusts-v1's NTM_IB seed 0 at 22.95 s;",
+                                         'on this CPU the LQR loses it as well, at 42.05 s')),
         Printed('mill_claim', ('mill 0.0940 m, 154.0 kW;',)),
         # tests/test_exact_actor.py -k one_observation: "one observation alone against 512 at once: torch float32 up to
         # 1.4e-06 apart, float64 fixed order 0 (... CPU capability AVX2, MKL True)" (2026-12-01; until then not_rerun)
@@ -165,6 +170,17 @@ CONTROLLERS = Covered(
                 '--controllers open_loop lqr ppo_tethered_wing (--long gusts_v1_tethered_wing, b7a1fc3)',
                 "the LQR's 18 episodes on 2026-11-30's AVX-512 CPU, not kept",
                 ("11 / 12 on 2026-11-30's AVX-512 one;",)),
+        # the hand-over and the held-out counts on that CPU (--long switch_ntm_ib_0 and paired_survival_shipped until
+        # 2026-12-01, when this AVX2 CPU printed the Printed entries above)
+        History('2026-11-30', 'python -m laddermill_gym.studies.gusts.switch_controllers --scenario NTM_IB --seed 0 '
+                '--controllers lqr ppo_tethered_wing --times 10 18 20 21 21.5 22 22.5 (0dc3b47)',
+                "the hand-over runs on 2026-11-30's AVX-512 CPU, not kept",
+                ("On 2026-11-30's AVX512 CPU the hand-over at 22.5 s failed (44.80 s).",)),
+        History('2026-11-30', 'python -m laddermill_gym.harness.paired_survival --config '
+                'configs/agents/ppo_tethered_wing_severe.yaml --set ntm_ib --episodes 200 --seed 5000 --controllers '
+                'lqr ppo_tethered_wing (0dc3b47)',
+                "the 400 held-out episodes on 2026-11-30's AVX-512 CPU, not kept",
+                ("On 2026-11-30's AVX512 CPU it printed 70 and 84 (only the LQR 25, only the policy 39, p = 0.103).",)),
         # TetheredWing-v0's PPO rows and scenario table
         History('2026-11-23',
                 'laddermill train configs/agents/ppo_tethered_wing.yaml, then laddermill evaluate --controllers lqr '
@@ -225,18 +241,18 @@ CONTROLLERS = Covered(
                  'the training disturbances, and every 200,000 steps a **validation** on 64 drawn episodes (NTM-IB '
                  "and light-Dryden fields, drawn steps and gusts; seeds 1000 and up, none of gusts-v1's) keeps the "
                  'policy that survives the most as . gusts-v1 is never used to select: it is the test. The kept '
-                 'policy survives 48 of the 64 validation episodes (the LQR 42, the previous 10-minute policy 33), '
-                 "and gusts-v1's NTM_IB seed 0 is where it still loses to the LQR. That scenario is chaotic for the "
-                 'LQR itself: Gaussian action noise of 1e-5 crashes it in one of three draws, and the LQR-started '
-                 'policy, equal to the LQR up to float32 rounding (6e-6 in the action), crashes there as well. Across'
-                 ' drawn NTM-IB fields the LQR survives about half (12 of 24), and scaling its gains by 0.7 to 2 does'
-                 ' not change that, so three fixed seeds per turbulence scenario decide a count of 11 or 10 largely '
-                 "by chance. Flown side by side on NTM_IB seed 0, the shipped policy's actions stay within 0.02-0.08 "
-                 "of the LQR's until, at 22 s, a gust saturates the rudder and aileron of both (|a| = 1; the LQR "
-                 "holds the elevator at trim, and the policy's elevator gains stay at most 0.0145 per normalised "
-                 "observation against 34.6 for rudder and aileron) and rolls both wings past 0.86 rad; the LQR's "
-                 "recovers from 0.99 rad, the policy's does not (22.95 s). A second training seed ( , validation 48 /"
-                 ' 64 as well) also scores 10 / 12 and loses the same episode at 23.10 s, the same way. Before these '
+                 'policy survives 48 of the 64 validation episodes (the LQR 42, the previous 10-minute policy 33).',
+                 "(it held it on 2026-11-29 and on 2026-11-30's AVX512 CPU). That scenario is chaotic for the LQR "
+                 'itself: Gaussian action noise of 1e-5 crashed it in one of three draws, and the LQR-started policy,'
+                 ' equal to the LQR up to float32 rounding (6e-6 in the action), crashed there as well. Across drawn '
+                 'NTM-IB fields the LQR survived about half (12 of 24), and scaling its gains by 0.7 to 2 did not '
+                 'change that, so three fixed seeds per turbulence scenario decide a count of 11 or 10 largely by '
+                 "chance. Flown side by side on NTM_IB seed 0, the shipped policy's actions stayed within 0.02-0.08 of"
+                 " the LQR's until, at 22 s, a gust saturated the rudder and aileron of both (|a| = 1; the LQR holds "
+                 "the elevator at trim, and the policy's elevator gains stay at most 0.0145 per normalised "
+                 "observation against 34.6 for rudder and aileron) and rolled both wings past 0.86 rad; the LQR's "
+                 "recovered from 0.99 rad, the policy's did not (22.95 s). A second training seed ( , validation 48 /"
+                 ' 64 as well) also scored 10 / 12 and lost the same episode at 23.10 s, the same way. Before these '
                  'phases, PPO at learning rate 1e-4 took the LQR-started policy down to 7 / 12 (its critic explained '
                  "under 15 % of the return's variance), and 1e-5 for 10 minutes to 9 / 12.",)),
         # the held-out counts through torch
@@ -244,13 +260,12 @@ CONTROLLERS = Covered(
                 'python -m laddermill_gym.harness.paired_survival --config '
                 'configs/agents/ppo_tethered_wing_severe.yaml --set ntm_ib --episodes 200 --seed 5000 --controllers '
                 'lqr ppo_tethered_wing, the policy flown through torch (242407d; before control/exact_actor.py)',
-                "the shipped policy's actions through SB3's float32 predict, on this machine and on 2026-11-29's",
-                ('Through torch the same command printed 79 for the policy on this machine (both 45, only the LQR 25,'
-                 " only the policy 34, neither 96; p = 0.298) and 88 on 2026-11-29's (only the policy 43, neither 87;"
-                 ' p = 0.0385), the LQR (float64, our compiled code) 70 each time: on knife-edge episodes such bits '
-                 "decide survival. The comparisons below against the policy's 88 were made through torch on the "
-                 "machine of 2026-11-29. The training's own validations (and ) fly the policy through torch, as it "
-                 'trains.',)),
+                "the shipped policy's actions through SB3's float32 predict, on 2026-11-30's machine and 2026-11-29's",
+                ("Through torch the same command printed 79 for the policy on 2026-11-30's machine (both 45, only the "
+                 "LQR 25, only the policy 34, neither 96; p = 0.298) and 88 on 2026-11-29's (only the policy 43, "
+                 'neither 87; p = 0.0385), the LQR 70 on both: on knife-edge episodes such bits decide survival. The '
+                 "comparisons below against its 88 were made so. The training's own validations (and ) fly the policy"
+                 ' through torch, as it trains.',)),
         # selection on more turbulence, the NTM-IA run
         History('2026-11-29',
                 'python -m laddermill_gym.harness.reselect ... --runs RUN...; laddermill train '
