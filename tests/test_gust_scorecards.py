@@ -60,10 +60,12 @@ def test_a_file_of_several_envs_or_no_summary_is_named(tmp_path):
 def _long(rotor: dict, wing: dict) -> dict:
     """The two groups' figures, their scenario sets as gust-bench wrote them (the pages' lists)."""
     return {"gusts_v1_rotorcraft": {"printed": "", "scorecard": rotor, **ROTOR_SETS},
-            "gusts_v1_tethered_wing": {"printed": "", "scorecard": wing, **WING_SETS,
+            "gusts_v1_tethered_wing": {"printed": WING_CSV, "scorecard": wing, **WING_SETS,
                                        "lost_seeds": {"ppo_tethered_wing": {"NTM_IB": "0"}, "lqr": {"NTM_IB": "0"}}}}
 
 
+# the NTM_IB seed 0 rows of gust_bench.csv that controllers.md quotes (controller, scenario, seed, survived, t_end_s)
+WING_CSV = "ppo_tethered_wing,NTM_IB,0,False,22.95\nlqr,NTM_IB,0,False,42.05\n"
 ROTOR_SETS = {"held": {"open_loop": "EOG_IA, EWS_IA, speed_step_20pct"},
               "lost": {"lqr": "ECD_IA", "ppo_rotorcraft": "ECD_IA"}}
 WING_SETS = {"held": {"open_loop": "EOG_IA, EWS_IA, direction_ramp_0.1, direction_step, one_cos_20s, one_cos_4s, "
