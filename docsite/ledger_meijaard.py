@@ -6,10 +6,11 @@ derived."""
 
 from __future__ import annotations
 
-from docsite.ledger_kinds import Covered, Printed
+from docsite.ledger_kinds import Covered, History, Printed
 from docsite.ledger_papers import MEIJAARD_CHECKS
 
 F = "{meijaard_v1[files][%s]}"
+WINGS = r"(no wing|wings? [\d, -]+)"  # the wings over a guard as docsite.study_figures._wings names them
 #: The claims panel and the direction step's ends against the files the study writes (docsite.study_figures.
 #: meijaard_files); the fixed-step runs past the wing data are chaotic: their ends move with the last bits of any
 #: kernel change, and these checks then name them.
@@ -18,9 +19,9 @@ FILES_CHECKS = (
      (F % "width", "~" + F % "top", F % "ratio")),
     (r"\| (\d+)-(\d+) m at 1 m/s; (\d+)-(\d+) m at 5 m/s",
      tuple(F % k for k in ("w1_lo", "w1_hi", "w5_lo", "w5_hi"))),
-    (r"1 m/s: ([\d.]+) kN in element (\d+); 5 m/s: ([\d.]+) kN in element (\d+); both at ([\d.]+) of the loop's "
-     r"height",
-     tuple(F % k for k in ("T1", "element1", "T5", "element5", "height1"))),
+    (r"1 m/s: ([\d.]+) kN in element (\d+); 5 m/s: ([\d.]+) kN in element (\d+); at ([\d.]+) and ([\d.]+) of the "
+     r"loop's height",
+     tuple(F % k for k in ("T1", "element1", "T5", "element5", "height1", "height5"))),
     (r"period means ([-\d,]+) to ([\d,]+) kW over the last (\d+) periods \(mean ([\d.]+) kW\)",
      ("~" + F % "mean_lo5", "~" + F % "mean_hi5", F % "periods5", F % "mean5")),
     (r"slot 40's yaw changes by up to (\d+) deg before the physical end at ([\d.]+) s, and ([\d,]+) deg \(tumbling\) "
@@ -29,16 +30,15 @@ FILES_CHECKS = (
     (r"\*\*physical end at ([\d.]+) s\*\* \(wings ([\d-]+) outside the aerodynamic data for 2 s; wing (\d+): beta "
      r"([\d.]+) deg since ([\d.]+) s\)",
      tuple(F % k for k in ("end", "end_wings", "end_wing", "end_beta", "end_since"))),
-    (r"numerical breakdown at ([\d.]+) s \(RK4 10 ms, no end criterion: (wings? [\d, -]+) over the 300 m/s speed "
-     r"guard and (wings? [\d, -]+) over the 100 rad/s rate guard\)",
+    (r"numerical breakdown at ([\d.]+) s \(RK4 10 ms, no end criterion: "
+     rf"{WINGS} over the 300 m/s speed guard and {WINGS} over the 100 rad/s rate guard\)",
      tuple(F % f"rk4_10ms][{k}" for k in ("t", "speed", "rate"))),
     (r"RK4 10 ms breaks down at ([\d.]+) s, RK4 2\.5 ms \(judged on height and overload only, neither of which held\) "
-     r"at ([\d.]+) s \((wings? [\d, -]+) over the 300 m/s speed guard and (wings? [\d, -]+) over the 100 rad/s rate "
-     r"guard\)",
+     rf"at ([\d.]+) s \({WINGS} over the 300 m/s speed guard and {WINGS} over the 100 rad/s rate guard\)",
      (F % "rk4_10ms][t", F % "rk4_2_5ms][t", F % "rk4_2_5ms][speed", F % "rk4_2_5ms][rate")),
     (r"a smaller step goes longer \(([\d.]+) s -> ([\d.]+) s\)", (F % "rk4_10ms][t", F % "rk4_2_5ms][t")),
-    (r"2026-11-29; ([\d.]+) s and ([\d,]+) deg at \w+, 2026-11-30, when the 10 ms run's breakdown also moved, from "
-     r"25\.8 s to ([\d.]+) s\)", (F % "rk4_2_5ms][t", "~" + F % "tumble_deg", F % "rk4_10ms][t")),
+    (r"35\.7 s; ([\d.]+) s and ([\d,]+) deg on 2026-12-01's CPU \(AVX2\), the 10 ms run's at ([\d.]+) s\)",
+     (F % "rk4_2_5ms][t", "~" + F % "tumble_deg", F % "rk4_10ms][t")),
     (r"some wing leaves the data's sideslip at ([\d.]+) s and its alpha at ([\d.]+) s, slot 40 its sideslip at "
      r"([\d.]+) s",
      tuple(F % k for k in ("beta_any", "alpha_any", "beta_slot"))),
@@ -59,8 +59,12 @@ MEIJAARD = Covered(
         " motion, then applies the paper's 0.01 rad wind-direction step and follows the open-loop divergence to "
         'its end.',
         'A scene made later for 5 m/s (a tail schedule) is run with or .',
-        'What it printed on 2026-11-29 at a5550e0, re-run at 014c04d and on 2026-11-30 at faa2ebd with the same '
-        'lines but for the chaotic fixed-step runs of Fig.',
+        'What it printed on 2026-11-29 at a5550e0, re-run at 014c04d, on 2026-11-30 at faa2ebd and on 2026-12-01 '
+        "(AMD EPYC, AVX2) with the same lines but for the chaotic runs (the 5 m/s search, Fig. 8's fixed-step runs "
+        "past the data), given here as 2026-12-01's run prints them",
+        # the CPUs of the two days (the chaotic runs' figures depend on the CPU numba compiles the simulator for)
+        "numba compiles the simulator for the host CPU's instructions (AVX-512 on 2026-11-30, AVX2 on 2026-12-01), "
+        "so these chaotic runs' figures and the 5 m/s search's differ from one machine to the next;",
         # the chaotic run's earlier ends, dated with their commits (today's are checked)
         "That 2.5 ms run, past the wing data's range, is chaotic: its end moves with the last bits of any kernel "
         'change (157.5 s and 3,559 deg at a5550e0, 189.5 s and 3,504 deg at 014c04d, 2026-11-29;',
@@ -70,15 +74,15 @@ MEIJAARD = Covered(
         'the same with RK4 at 10 ms and 2.5 ms and with ROS34PW2 (rtol 1e-4);',
         '8 | "with a smaller step size, the simulation could be continued longer" |',
         '8 | "the angles of attack, the side-slip angle ...', "the paper's ~40 s breakdown has no physical counterpart",
-        'so only "longer than at 10 ms" is a finding.',
-        '8 (scene , periodic tolerance 1e-3):',
+        'only "longer than at 10 ms" is a finding.',
+        'them (scene , periodic tolerance 1e-3):', "On 2026-12-01's CPU the 5 m/s",
         '6 | "for low cable velocities, the ascending and descending part are almost parallel" | at 1 m/s '
         '(periodic at 715 s)',
         '6 | "for larger cable velocities, the loop widens" |',
         '7 | "the tensile force is smallest near the top" |',
         '7 | power ~ (T_first - T_last)',
         '7 | "of the order of 200 kW" (read: at least 150 kW, periodic)',
-        '2 m/s only',
+        '2 m/s only', "(5 m/s not periodic) | 1 m/s only |",
         '"widens" compares the smallest width sampled over 140 s at 5 m/s with the largest at 1 m/s; "a fair '
         'estimate" is 3 %;',
         '"large angle" is more than the fins\' stall sideslip, 21 deg.',
@@ -115,27 +119,39 @@ MEIJAARD = Covered(
     ),
     derived=(
         # repeats the checked tensions and powers (or works a ratio from them)
-        '7 | "which value increases as the loop widens" | 3.9 kN at 1 m/s -> 25.5 kN at 5 m/s | yes',
-        'x 2 = 152.9 kW, generator 152.9 kW; 5 m/s: 488.7 vs 488.8 kW (0.02 %)',
+        '7 | "which value increases as the loop widens" | 3.9 kN at 1 m/s -> 9.2 kN at 5 m/s | yes',
+        # (317.412 - 317.308) / 317.41 = 0.03 %
+        'x 2 = 152.9 kW, generator 152.9 kW; 5 m/s: 317.3 vs 317.4 kW (0.03 %)',
         'a narrow loop at 1 m/s (281 m wide for a 3.4 km height), the smallest tension at the top, the power '
         'equal to (T_first - T_last)',
         "V_c, and 153 kW at 2 m/s, of the paper's order.",
         'the v2 wing of that page is periodic there, 323.9 kW), so its Fig.',
-        "they still widen the loop and raise the top tension as the paper says, but the last period's 488.8 kW is"
-        ' one sample of period means that swing from -1.1 MW to +0.8 MW.',
+        # -1,150.8 and 1,101.5 kW (checked in the table) in MW
+        "they still widen the loop and raise the smallest tension as the paper says (though here not at the top), "
+        "but the last period's 317.4 kW is one sample of period means that swing from -1.2 MW to +1.1 MW.",
         'Our wing data and tail settings are our own (the paper gives neither), and with them the mill delivers a'
         " third of the paper's power and is not periodic at 5 m/s, where its descending leg also pulls up to 1.9 "
         "times the cable's breaking load. DP5(4)",
     ),
+    history=(
+        History("2026-11-30", "python -m laddermill_gym.studies.mill.meijaard --out results/meijaard_v1 (faa2ebd)",
+                "the v1 study on 2026-11-30's AVX-512 CPU, not kept (its chaotic runs end differently on 2026-12-01's "
+                "AVX2 CPU)",
+                ("on 2026-11-30's AVX-512 CPU the 5 m/s search passed it (element 0 at 392.6 s, 1.01 times), the 2 m/s"
+                 " one at 397.1 s (1.07 times), and the 5 m/s search's last period gave 488.8 kW with its smallest "
+                 "tension at the top (25.5 kN in element 49).",
+                 "84.7 s and 5,572 deg at faa2ebd, 2026-11-30, when the 10 ms run's breakdown also moved, from 25.8 s "
+                 "to 35.7 s;")),
+    ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         Printed('meijaard_v1_printed', (
             '82.1 kW at 1 m/s; **152.9 kW at 2 m/s** (3D: 152.9 kW); 5 m/s not periodic:',
-            '488.8 kW in the last period,',
+            '317.4 kW in the last period,',
             'The undisturbed 3D periodic motion meets none of the end criteria over a period (no wing outside the '
             'aerodynamic data, lowest wing CG 57.3 m, peak tension 0.285 of the breaking load).',
             'show the shape at the end of the 3,053 s search and the tensions of its last period, and say so;',
-            "The 5 m/s search also passes the cable's breaking load in the transient from rest (element 0 at 392.6 "
-            's, 1.01 times it;',
+            # 2026-12-01's run (AMD EPYC, AVX2): the 5 m/s search's peak, 0.931 x
+            "search stays below the cable's breaking load (peak 0.93 times it)",
             'After the direction step the v1 mill leaves the range of its wing data sooner than v0 (6.4 s against',
             # v0's time is the v0 study's (below)
             '), and not at slot 40 but at the wings in slots 8-15, low on the ascending leg (up to 39 deg of '

@@ -60,9 +60,9 @@ MEIJAARD_CHECKS = (  # the checks of docsite/ledger_meijaard.py's entry
             (r"period means ([-\d,.]+) to ([\d,.]+) kW over the last (\d+) periods \(mean ([\d.]+) kW\)",
              (MJ % "2D_5][late_power_min_kW", MJ % "2D_5][late_power_max_kW", MJ % "2D_5][late_periods",
               MJ % "2D_5][late_power_mean_kW")),
-            (r"element 0 at ([\d.]+) s, ([\d.]+) times it; at 2 m/s at ([\d.]+) s, ([\d.]+) times",
-             (MJ % "2D_5][overload_s", MJ % "2D_5][peak_tension_ratio", MJ % "2D_2][overload_s",
-              MJ % "2D_2][peak_tension_ratio")),
+            (r"search stays below the cable's breaking load \(peak ([\d.]+) times it\) and the 2 m/s one passes it in "
+             r"the transient from rest \(element 0 at ([\d.]+) s, ([\d.]+) times it\)",
+             (MJ % "2D_5][peak_tension_ratio", MJ % "2D_2][overload_s", MJ % "2D_2][peak_tension_ratio")),
             (r"peak tension ([\d.]+) of the breaking load", (MJ % "3D_2][peak_tension_ratio",))))
 
 

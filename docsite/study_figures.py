@@ -241,8 +241,10 @@ def meijaard_files(folder: Path) -> dict:
 
 
 def _wings(numbers: list[str]) -> str:
-    """Wing numbers as the page names them: "wing 10", "wings 17-19" (a run), "wings 3, 7"."""
+    """Wing numbers as the page names them: "wing 10", "wings 17-19" (a run), "wings 3, 7", "no wing"."""
     w = sorted({int(n) for n in numbers})
+    if not w:  # the run's message names no wing for this limit (a run that ends by speed alone)
+        return "no wing"
     if len(w) == 1:
         return f"wing {w[0]}"
     return f"wings {w[0]}-{w[-1]}" if w == list(range(w[0], w[-1] + 1)) else "wings " + ", ".join(map(str, w))

@@ -389,10 +389,11 @@ def test_the_power_curve_rows_are_named_when_changed():
 
 
 def test_the_meijaard_fixed_step_ends_are_named_when_changed():
-    """docs/paper_meijaard1999.md's fixed-step ends as the study wrote them on 2026-11-30 (breakdown.csv: 10 ms 35.7 s,
-    wing 10; 2.5 ms 84.7 s, wings 17-19, wing 17) pass; 2026-11-29's 25.8 s is named wherever it is quoted."""
-    ends = {"rk4_10ms": {"t": "35.7", "speed": "wing 10", "rate": "wing 10"}, "tumble_deg": "5572",
-            "rk4_2_5ms": {"t": "84.7", "speed": "wings 17-19", "rate": "wing 17"}}
+    """docs/paper_meijaard1999.md's fixed-step ends as the study wrote them on 2026-12-01's AVX2 CPU (breakdown.csv:
+    10 ms 24.0 s, wings 6-9 over the speed guard, none over the rate guard; 2.5 ms 67.9 s, wing 54 over the rate guard
+    only) pass; 2026-11-29's 25.8 s is named wherever it is quoted."""
+    ends = {"rk4_10ms": {"t": "24.0", "speed": "wings 6-9", "rate": "no wing"}, "tumble_deg": "4268",
+            "rk4_2_5ms": {"t": "67.9", "speed": "no wing", "rate": "wing 54"}}
     page = {"checked_pages": ["paper_meijaard1999.md"]}
     assert _named({**page, "meijaard_v1": {"files": ends}}) == []
     bad = _named({**page, "meijaard_v1": {"files": {**ends, "rk4_10ms": {**ends["rk4_10ms"], "t": "25.8"}}}})
