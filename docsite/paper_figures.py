@@ -134,9 +134,12 @@ def papers_differences(papers: dict, readme: str) -> list[str]:
     want, bad = [], []
     (per1, p1), (per2, p2) = papers["meijaard_v1"]["1"], papers["meijaard_v1"]["2"]
     want.append((f"periodic at 1 and 2 m/s ({p1:.1f}, {p2:.0f} kW", per1 and per2))
-    claims = papers["meijaard_claims"]
-    for words in ("the loop widens with V_c", "the smallest tension at the top"):
-        want.append((words, len(claims) == 3 and all(agrees == "yes" for _, agrees in claims)))
+    claims = dict(papers["meijaard_claims"])  # {the paper's claim (per V_c): "yes" / "no"}
+    want.append(("the loop widens with V_c", claims.get("the loop widens with V_c (1 -> 5 m/s)") == "yes"))
+    at1, at5 = (claims.get(f"tension smallest near the top (V_c = {v} m/s)") for v in (1, 5))
+    # the 5 m/s search is chaotic: its claim depends on the CPU (no on 2026-12-01's AVX2, yes on AVX-512 CPUs)
+    top = "the smallest tension at the top" + ("," if at5 == "yes" else " (at 1 m/s; not in")
+    want.append((top, at1 == "yes" and at5 in ("yes", "no")))
     periodic5, p5 = papers["v2_at_5"]
     want.append((f"({p5:.1f} kW at 5 m/s;", periodic5))
     if "v2_at_2" in papers:  # README's env table: the v1 and v2 rows' powers, rounded to the kW
