@@ -2,7 +2,7 @@
 .PHONY: test slow lint bench simulate figures gust-bench work-precision docs readme-figures
 
 test:
-	python -m pytest -q
+	python -m pytest -n 2 -q
 
 slow:
 	python -m pytest -q -m slow

@@ -156,7 +156,10 @@ def test_the_mill_w_step_is_shared_by_the_pool_threads():
     finally:
         numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
     assert used[0] > 0.3, used  # enough work to read clock ticks (10 ms each)
-    assert used[1] > 0.5 * used[0], used  # the second thread did about half the work
+    # If a share p of the main thread's work is the parallel loop over copies, the second thread does half of it:
+    # used[1] / used[0] = p / (2 - p). A step that runs on one thread gives about 0; 0.25 means p > 0.4. The
+    # measured ratio is 0.46-0.50 (p about 0.65: the Python step and the serial parts stay on the main thread)
+    assert used[1] > 0.25 * used[0], used
 
 
 def test_default_parallel_from_two_copies_for_the_large_models():

@@ -56,9 +56,11 @@ def test_pyproject_lists_every_package():
 #: Run inside the wheel's install, from a folder outside the repository; prints one JSON line.
 _WHEEL_SCRIPT = textwrap.dedent("""
     import json
+    import sys
 
     import gymnasium as gym
     import numpy as np
+    from gymnasium.envs.registration import load_env_creator
 
     import laddermill_gym
     from laddermill_gym.envs import ENV_IDS
@@ -76,7 +78,10 @@ _WHEEL_SCRIPT = textwrap.dedent("""
     # the laddermill's default start costs ~20 s (its periodic motion); an 11-wing mill settled for 50 s will do here
     small = {f"laddermill_gym/LadderMill-v{v}": {"scene_options": {"n_wings": 11}, "settle": {"max_time": 50.0}}
              for v in (0, 1, 2, 3)}
-    for env_id in ENV_IDS:
+    # every id's entry point imports from the wheel; the ids named on the command line ("all": every id) are made,
+    # reset and stepped (each family compiles its kernels anew in the empty cache: about 30 s each)
+    out["entry_points"] = {env_id: load_env_creator(gym.spec(env_id).entry_point).__module__ for env_id in ENV_IDS}
+    for env_id in ENV_IDS if sys.argv[1:] == ["all"] else sys.argv[1:]:
         env = gym.make(env_id, **small.get(env_id, {}))
         obs, _ = env.reset(seed=0)
         env.action_space.seed(0)
@@ -168,14 +173,19 @@ def test_wheel_holds_the_sources_and_configs(wheel_site):
     assert policies <= names, f"wheel policies: missing {sorted(policies - names)}"  # model, actor, stats, README
 
 
-def test_wheel_runs_outside_the_repository(wheel_site, tmp_path):
+@pytest.mark.parametrize("made", [pytest.param(["laddermill_gym/TetheredWing-v0"], id="one-env"),
+                                  pytest.param(["all"], id="every-env", marks=pytest.mark.slow)])
+def test_wheel_runs_outside_the_repository(wheel_site, tmp_path, made):
+    """The wheel's install, from a folder outside the repository, with an empty numba cache: a simulation, every
+    env id's entry point, the envs ``made`` (one family by default; ``-m slow``: every id), the command line and
+    a short SB3 run."""
     _, site = wheel_site
     work = tmp_path / "elsewhere"
     work.mkdir()
     (work / "check_wheel.py").write_text(_WHEEL_SCRIPT, encoding="utf-8")
     env = {**os.environ, "PYTHONPATH": str(site), "NUMBA_CACHE_DIR": str(tmp_path / "numba_cache"),
            "MPLBACKEND": "Agg", "PYTHONDONTWRITEBYTECODE": "1"}
-    proc = _run([sys.executable, "check_wheel.py"], "the wheel's smoke run", cwd=work, env=env, timeout=600)
+    proc = _run([sys.executable, "check_wheel.py", *made], "the wheel's smoke run", cwd=work, env=env, timeout=600)
     lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("RESULT ")]
     assert lines, f"no RESULT line\n--- stdout ---\n{proc.stdout[-4000:]}\n--- stderr ---\n{proc.stderr[-8000:]}"
     out = json.loads(lines[-1][len("RESULT "):])
@@ -189,7 +199,12 @@ def test_wheel_runs_outside_the_repository(wheel_site, tmp_path):
     assert in_site(out["scene_file"]) and in_site(out["craft"]["file"])
     assert out["scenes"] == sorted(p.stem for p in (ROOT / "configs" / "scenes").glob("*.yaml"))
     assert out["sim"]["finite"] and out["sim"]["moved"] and out["sim"]["t"] > 0
-    assert set(out["envs"]) == set(laddermill_gym.envs.ENV_IDS)
+    import gymnasium as gym
+    from gymnasium.envs.registration import load_env_creator
+
+    assert out["entry_points"] == {env_id: load_env_creator(gym.spec(env_id).entry_point).__module__
+                                   for env_id in laddermill_gym.envs.ENV_IDS}  # the same modules as in the tree
+    assert set(out["envs"]) == (set(laddermill_gym.envs.ENV_IDS) if made == ["all"] else set(made))
     for env_id, r in out["envs"].items():
         assert r["finite"], f"{env_id}: observation not finite"
         assert r["module"].startswith("laddermill_gym."), r
