@@ -7,7 +7,6 @@ the same compiled ``kernels/fixed_steps.advance_breaks`` a single simulator uses
 agree bit for bit.
 """
 
-import numpy as np
 from numba import njit, prange, types
 from numba.extending import overload
 
@@ -76,19 +75,13 @@ def fixed_batch(t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, tablea
     ``vehicle`` markers passed separately (:func:`detach_markers`). Writes status (B,) (integrate.py's codes)
     and done (B,) (steps completed before a failure).
     """
-    for b in prange(X.shape[0]):
-        _advance_called(np.int64(b), t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, tableau, breaks, status,
-                        done)
-
-
-# the loop body called, not inlined, with an int64 index: kernels/rigid/observe.py's _step_observe_called says why
-@njit(cache=True, error_model="numpy")
-def _advance_called(b, t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, tableau, breaks, status, done):
-    if active[b] == 0:
-        status[b] = OK
-        done[b] = 0
-        return
-    Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
-    st, dn, _, _ = advance_breaks(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau, breaks)
-    status[b] = st
-    done[b] = dn
+    nb = X.shape[0]
+    for b in prange(nb):
+        if active[b] == 0:
+            status[b] = OK
+            done[b] = 0
+            continue
+        Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
+        st, dn, _, _ = advance_breaks(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau, breaks)
+        status[b] = st
+        done[b] = dn

@@ -16,7 +16,6 @@ tether tensions [N] and retreating-tip incidences [rad]. The references of the r
 
 import math
 
-import numpy as np
 from numba import njit, prange
 
 from laddermill_gym.kernels import contract as C
@@ -107,16 +106,8 @@ def craft_step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limi
     (steps completed). A copy whose integration fails is left at its last good state and observed there.
     """
     for b in prange(X.shape[0]):
-        _craft_step_observe_called(np.int64(b), t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks,
-                                   DX, ref, tether_end, obs, aux, status, done)
-
-
-# the loop body called, not inlined, with an int64 index: kernels/rigid/observe.py's _step_observe_called says why
-@njit(cache=True, error_model="numpy")
-def _craft_step_observe_called(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
-                               tether_end, obs, aux, status, done):
-    _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
-                             tether_end, obs, aux, status, done)
+        _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
+                                 tether_end, obs, aux, status, done)
 
 
 # Keeps numba's runtime (no _nrt=False): with a gust grid the step takes row_or_none(AB.gp, b), an array view that

@@ -12,7 +12,6 @@ angle of attack, sideslip, tension of the element below the wing. 3D scenes only
 
 import math
 
-import numpy as np
 from numba import njit, prange
 
 from laddermill_gym.kernels.batch import advance_copy
@@ -152,19 +151,8 @@ def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, ta
     (steps completed). A copy whose integration fails is left at its last good state and observed there.
     """
     for b in prange(X.shape[0]):
-        _step_observe_called(np.int64(b), t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX,
-                             nominal, below, ground, obs, aux, status, done)
-
-
-# The parallel kernel's loop body, compiled as a function of its own and called, not inlined: numba's parallel
-# lowering outlines the loop body and LLVM optimises it as one function, which with the whole step inlined took
-# 64-109 s of the cold compile (22 s called; issue 32). The index comes as int64 (prange's is uint64), the type
-# the serial kernel passes. The code per copy is the same: batch copies equal single runs bit for bit.
-@njit(cache=True, error_model="numpy", fastmath=_FM)
-def _step_observe_called(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below,
-                         ground, obs, aux, status, done):
-    _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal,
-                       below, ground, obs, aux, status, done)
+        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal,
+                           below, ground, obs, aux, status, done)
 
 
 # Keeps numba's runtime (no _nrt=False): with a gust grid the step takes row_or_none(AB.gp, b), an array view that
