@@ -37,7 +37,7 @@ GETTING_STARTED = Covered(
     timings=("113 s on the 2-core machine with numba's cache filled (2026-11-29)",
              "(base install, numba's and the operating-point caches empty, load 1, 2026-11-29 evening)",
              "2 min 47 s (the demo 140 s of it", "(about 30 s of compute)", "(about a minute, plus numba's",
-             "about 16 minutes on a 2-core machine from a fresh clone on\n2026-12-01"),
+             "16-20 minutes on a 2-core machine from a fresh clone on\n2026-12-01"),
     derived=("(period about 20 s: zero crossings of "
              "the lateral position 9-12 s apart; the linear model's 23 s)", "dive after about 52 s"),
 )
