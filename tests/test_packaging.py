@@ -18,8 +18,10 @@ import tomllib
 import zipfile
 from pathlib import Path
 
+import gymnasium as gym
 import pytest
 import yaml
+from gymnasium.envs.registration import load_env_creator
 
 import laddermill_gym
 from laddermill_gym.model.configio import ConfigError
@@ -199,9 +201,6 @@ def test_wheel_runs_outside_the_repository(wheel_site, tmp_path, made):
     assert in_site(out["scene_file"]) and in_site(out["craft"]["file"])
     assert out["scenes"] == sorted(p.stem for p in (ROOT / "configs" / "scenes").glob("*.yaml"))
     assert out["sim"]["finite"] and out["sim"]["moved"] and out["sim"]["t"] > 0
-    import gymnasium as gym
-    from gymnasium.envs.registration import load_env_creator
-
     assert out["entry_points"] == {env_id: load_env_creator(gym.spec(env_id).entry_point).__module__
                                    for env_id in laddermill_gym.envs.ENV_IDS}  # the same modules as in the tree
     assert set(out["envs"]) == (set(laddermill_gym.envs.ENV_IDS) if made == ["all"] else set(made))
