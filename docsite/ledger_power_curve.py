@@ -138,8 +138,13 @@ POWER_CURVE = Covered(
         # trim_slope --variants v2 at the elevators 1.3 / 4 deg (8 m/s: 11.43/1.30 and 3.28/0.61) and 7 / 8 deg
         # (post-stall trims 22.3-23.8 deg, C_L 0.71-0.76); were not_rerun
         Printed('trim_slope_v2_elevators', ('0.61 from 1.3', '4 deg at 8 m/s),',
-                                            'the attached-flow trim is lost (a post-stall trim near 23 deg',
-                                            'C_L about 0.7)')),
+                                            'a post-stall trim near 23 deg (C_L about 0.7)')),
+        # where the attached trim is lost, per air speed 6-18 m/s (2026-12-01; until then not_rerun as "above 5-7 deg
+        # (by the wind)", which no command printed: the attached root leaves the search at -10 deg, and a post-stall
+        # root comes only at higher elevators; between, pitch_trim_alpha returns its grid point of least moment)
+        Printed('trim_lost_v2', ('4.54-6.64 deg (18 to 6 m/s of air speed)', 'falls to -10 deg',
+                                 '(C_L -0.69 to -0.63;', 'exists from 5.66-8.31 deg (8 to 18 m/s;',
+                                 'none up to 12 deg at 6 m/s)')),
         # --long power_curve_replay (2026-11-30) named all five snippets it held before (a mapping problem, not a stale
         # figure: its block is as written): they were split at sentences, cells, "; ", ", " and "to / and / against /
         # of" (2026-11-30), adjacent pieces of one group joined again, and each piece put where its numbers are
@@ -253,16 +258,6 @@ POWER_CURVE = Covered(
         'and the descending one by 0.51-0.73 deg (2.5', "not the cable's limit: it leaves 50-60 kN",
         "The paper's figure fits 5 m/s far better, as the issue's hand estimate said (200 kW needs a tension "
         'difference of 40 kN at 5 m/s',
-    ),
-    # the elevator range over which the attached trim is lost: no command prints it, and it is not one bound.
-    # Measured 2026-12-01 (a Python session with trim_slope's functions on the v2 wing, 6-18 m/s): the attached root
-    # of the moment about the attachment does not vanish as the elevator grows; it moves to negative lift and below
-    # -10 deg, the lower end of sim.statics.pitch_trim_alpha's search, which then returns its grid point of least
-    # |moment| (22.5 deg at 8-18 m/s, no root there) from 5.65-6.9 deg of elevator by the air speed; a true pair of
-    # post-stall roots (21.4 / 23.5 deg at 8 m/s and 7 deg: trim_slope_v2_elevators' trims) comes only higher. Which
-    # of these is "lost" is a wording choice to make on the page before a command can print the bound.
-    not_rerun=(
-        'and above 5-7 deg (by the wind)',
     ),
     history=(
         History('2026-11-29', 'laddermill power-curve cases with the trial tail rules (n = 1, 1.75; the chain layout)',

@@ -55,4 +55,7 @@ CRAFT_TESTS = {
     "trim_slope_v2_elevators": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v2 --elevators 1.3 4 "
                                     "&& python -m laddermill_gym.studies.mill.trim_slope --variants v2 --elevators 7 8",
                                     "6 s", "power_curve.md"),
+    # where the v2 wing's attached trim is lost, per air speed (power_curve.md)
+    "trim_lost_v2": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v2 --lost", "1 s (2026-12-01)",
+                         "power_curve.md"),
 }

@@ -8,12 +8,15 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from laddermill_gym.studies.mill.trim_slope import (
     closed_form_slope,
     geometry,
     load,
+    lost_bounds,
+    main,
     moment_about_attachment,
     trim,
 )
@@ -67,3 +70,39 @@ def test_v2_mass_properties_are_v1_with_the_pod_moved():
     g = geometry(v2)
     assert g["np_behind_P"] == pytest.approx(0.20, abs=1e-3)
     assert math.hypot(v2.attachment[0], v2.attachment[2]) == pytest.approx(1.5, abs=1e-3)  # the paper's 1.5 m
+
+
+def _stable_roots_deg(wing, elevator, speed, lo_deg, hi_deg):
+    """Brute force, independent of pitch_trim_alpha's grid and brentq: the angles [deg] in (lo, hi) where the moment
+    about the attachment crosses from nose-up to nose-down, on a 0.005 deg grid."""
+    grid = np.arange(lo_deg, hi_deg, 0.005)
+    m = np.array([moment_about_attachment(wing, math.radians(a), elevator, speed) for a in grid])
+    return grid[:-1][(m[:-1] > 0) & (m[1:] <= 0)]
+
+
+@pytest.mark.parametrize("speed", [6.0, 10.0, 18.0])
+def test_where_the_v2_attached_trim_is_lost_brackets_the_moments_roots(speed):
+    """``lost_bounds`` bisects pitch_trim_alpha's answers; a scan of the moment itself brackets each bound: a stable
+    attached root in (-10, 15) deg just below ``attached_up_to`` and none just above; a stable post-stall root in
+    (15, 25) deg just above ``post_stall_from`` and none just below (6 m/s: none up to 12 deg)."""
+    wing, _ = load("v2")
+    b = lost_bounds(wing, speed)
+    e, a, cl = b["attached_up_to"]
+    d = math.radians(0.02)
+    assert len(_stable_roots_deg(wing, e - d, speed, -10.0, 15.0)) == 1
+    assert len(_stable_roots_deg(wing, e + d, speed, -10.0, 15.0)) == 0
+    assert math.degrees(a) == pytest.approx(-10.0, abs=0.02) and cl < 0.0  # it leaves through the search's lower end
+    if speed == 6.0:
+        assert b["post_stall_from"] is None
+        assert len(_stable_roots_deg(wing, math.radians(12.0), speed, 15.0, 25.0)) == 0
+    else:
+        e, a, _ = b["post_stall_from"]
+        assert len(_stable_roots_deg(wing, e + d, speed, 15.0, 25.0)) >= 1
+        assert len(_stable_roots_deg(wing, e - d, speed, 15.0, 25.0)) == 0
+        assert 15.0 < math.degrees(a) < 25.0
+
+
+def test_lost_rejects_elevators(capsys):
+    with pytest.raises(SystemExit):
+        main(["--variants", "v2", "--lost", "--elevators", "1", "2"])
+    assert "--lost searches the elevators itself" in capsys.readouterr().err

@@ -23,6 +23,7 @@ point) can do: the v1 wing's slope, -0.25 deg per m/s, is near that bound. The v
 and C_L at air speeds 6-18 m/s, the slope at 10 m/s from the trims (``sim.statics.pitch_trim_alpha``) and in closed
 form, the geometry (m_w, h, the free-flight margin), and each leg's trim at the air speed
 10 m/s -+ V_c for V_c = 1, 2, 5 m/s (ascending wings meet the wind less the cable speed, descending ones more).
+``--lost`` prints instead, per air speed, the elevators at which the attached-flow trim is lost (:func:`lost_bounds`).
 """
 
 from __future__ import annotations
@@ -101,6 +102,72 @@ def geometry(wing) -> dict:
             "np_behind_cg": float(-x_np)}
 
 
+LOST_SEARCH_DEG = (0.0, 12.0)  # [deg] elevators searched by lost_bounds (v2's scene: +1.3 / +2.5 deg)
+STALL_DEG = 15.0  # [deg] a trim above this angle of attack is post-stall (the v2 table's C_L peaks near 12 deg)
+
+
+def trim_kind(wing, elevator: float, speed: float) -> tuple[str, float]:
+    """("attached" | "post-stall" | "none", alpha [rad]) of :func:`trim`'s answer: a root of M_P (to 1e-6 of q S c)
+    below :data:`STALL_DEG` and above the search's lower end (-10 deg), a root above it, or no root (pitch_trim_alpha
+    then returns its grid point of least moment)."""
+    a = trim(wing, elevator, speed)
+    qsc = 0.5 * RHO * speed**2 * wing.area * wing.chord
+    if abs(moment_about_attachment(wing, a, elevator, speed)) > 1e-6 * qsc:
+        return "none", a
+    if a > math.radians(STALL_DEG):
+        return "post-stall", a
+    return ("attached" if a > math.radians(-9.999) else "none"), a
+
+
+def _bisect(pred, lo: float, hi: float, tol: float = math.radians(1e-3)) -> float:
+    """The elevator [rad] where ``pred`` turns from False (at lo) to True (at hi), to ``tol``."""
+    while hi - lo > tol:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if pred(mid) else (mid, hi)
+    return hi
+
+
+def lost_bounds(wing, speed: float) -> dict:
+    """Where the attached trim is lost at air speed ``speed`` [m/s], elevators [rad] bisected in
+    :data:`LOST_SEARCH_DEG`: ``attached_up_to``, the largest elevator with an attached trim (above it the attached
+    root's alpha falls below -10 deg, out of the search), and ``post_stall_from``, the smallest with a post-stall
+    root (None: none in the range), each with its trim alpha [rad] and C_L."""
+    lo, hi = (math.radians(e) for e in LOST_SEARCH_DEG)
+    if trim_kind(wing, lo, speed)[0] != "attached" or trim_kind(wing, hi, speed)[0] == "attached":
+        raise ValueError(f"{wing.name} at {speed} m/s: the attached trim is not lost between {LOST_SEARCH_DEG} deg")
+    up = _bisect(lambda e: trim_kind(wing, e, speed)[0] != "attached", lo, hi)
+    up -= math.radians(1e-3)  # the last attached elevator of the bracket
+    post = None
+    if trim_kind(wing, hi, speed)[0] == "post-stall":
+        post = _bisect(lambda e: trim_kind(wing, e, speed)[0] == "post-stall", up, hi)
+    out = {}
+    for key, e in (("attached_up_to", up), ("post_stall_from", post)):
+        if e is not None:
+            a = trim(wing, e, speed)
+            out[key] = (e, a, lift_coefficient(wing, a, e))
+        else:
+            out[key] = None
+    return out
+
+
+def report_lost(variant: str) -> None:
+    wing, _ = load(variant)
+    print(f"{variant} ({wing.name}): where the attached trim is lost (pitch_trim_alpha, search -10..25 deg; elevators "
+          f"bisected to 0.001 deg in {LOST_SEARCH_DEG[0]:g}..{LOST_SEARCH_DEG[1]:g} deg; post-stall above "
+          f"{STALL_DEG:g} deg)")
+    for v in SPEEDS:
+        b = lost_bounds(wing, v)
+        e, a, cl = b["attached_up_to"]
+        text = (f"  {v:4.0f} m/s: attached up to {math.degrees(e):5.2f} deg (alpha {math.degrees(a):6.2f} deg, "
+                f"C_L {cl:5.2f}); ")
+        if b["post_stall_from"] is None:
+            text += f"no post-stall trim up to {LOST_SEARCH_DEG[1]:g} deg"
+        else:
+            e, a, cl = b["post_stall_from"]
+            text += f"post-stall trim from {math.degrees(e):5.2f} deg (alpha {math.degrees(a):5.2f} deg, C_L {cl:4.2f})"
+        print(text)
+
+
 def report(variant: str, elevators_deg=None) -> None:
     wing, (up, down) = load(variant)
     if elevators_deg is not None:
@@ -136,13 +203,19 @@ def main(argv=None) -> int:
                    help="v1, v2: the mill's wings (default); v0: the chain's wing at ladder_chain's elevators")
     p.add_argument("--elevators", type=float, nargs=2, default=None,
                    help="ascending, descending elevators [deg] instead of the scenes'")
+    p.add_argument("--lost", action="store_true",
+                   help="print where the attached trim is lost instead, per air speed (the elevator range searched: "
+                        f"{LOST_SEARCH_DEG[0]:g}..{LOST_SEARCH_DEG[1]:g} deg)")
     a = p.parse_args(argv)
+    if a.lost and a.elevators is not None:
+        p.error("--lost searches the elevators itself: leave out --elevators")
     for v in a.variants:
-        report(v, a.elevators)
+        report_lost(v) if a.lost else report(v, a.elevators)
     return 0
 
 
-__all__ = ["closed_form_slope", "geometry", "load", "moment_about_attachment", "trim", "weight_lever"]
+__all__ = ["closed_form_slope", "geometry", "load", "lost_bounds", "moment_about_attachment", "trim", "trim_kind",
+           "weight_lever"]
 
 if __name__ == "__main__":
     np.set_printoptions(precision=4)
