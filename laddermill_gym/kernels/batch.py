@@ -23,15 +23,34 @@ def detach_markers(M: KModel) -> tuple[KModel, object, object]:
 
 
 def row_or_none(a, b):
-    """Row ``b`` of the array ``a``, or None when ``a`` is None (resolved when numba compiles)."""
+    """Row ``b`` of the array ``a``, or None when ``a`` is None (Python only: the task's warm-up builds copy 0's
+    model with it; compiled code uses :func:`copy_air_model`)."""
     return None if a is None else a[b]
 
 
-@overload(row_or_none, inline="always")
-def _row_or_none(a, b):
-    if isinstance(a, types.NoneType):
-        return lambda a, b: None
-    return lambda a, b: a[b]
+def copy_air_model(kind, vehicle, M, AB, b):
+    """The shared model ``M`` (markers ``kind`` and ``vehicle``) with copy ``b``'s air: row b of each array of the
+    batched :class:`~laddermill_gym.kernels.contract.KAir` AB (the gust grid's header and samples: None when AB's are
+    None). Jitted code only: an overload per gust grid type, so the kernels that inline it need not return a bare
+    array view from a function, which numba forbids without its runtime (``_nrt=False``, below)."""
+    raise NotImplementedError("copy_air_model is resolved inside numba kernels")
+
+
+@overload(copy_air_model, inline="always")
+def _copy_air_model(kind, vehicle, M, AB, b):
+    gp_none = isinstance(AB.types[AB.fields.index("gp")], types.NoneType)
+    gv_none = isinstance(AB.types[AB.fields.index("gv")], types.NoneType)
+    if gp_none and gv_none:
+        return lambda kind, vehicle, M, AB, b: model_with_air(kind, vehicle, M, AB.tmod[b], AB.ms[b], AB.md[b], None,
+                                                              None)
+    if gp_none:
+        return lambda kind, vehicle, M, AB, b: model_with_air(kind, vehicle, M, AB.tmod[b], AB.ms[b], AB.md[b], None,
+                                                              AB.gv[b])
+    if gv_none:
+        return lambda kind, vehicle, M, AB, b: model_with_air(kind, vehicle, M, AB.tmod[b], AB.ms[b], AB.md[b],
+                                                              AB.gp[b], None)
+    return lambda kind, vehicle, M, AB, b: model_with_air(kind, vehicle, M, AB.tmod[b], AB.ms[b], AB.md[b], AB.gp[b],
+                                                          AB.gv[b])
 
 
 @njit(cache=True, inline="always")  # inlined: no separate compile of its 60 array arguments (issue 32)
@@ -39,8 +58,7 @@ def copy_views(b, M, kind, vehicle, WB, AB):
     """(model, workspace) of copy ``b``: the shared model (markers ``kind`` and ``vehicle``) with that copy's air
     (row b of the batched :class:`~laddermill_gym.kernels.contract.KAir` AB: wind modulation and gust grid), and
     views of the copy's rows of the batched workspace WB (no copies made)."""
-    Mb = model_with_air(kind, vehicle, M, AB.tmod[b], AB.ms[b], AB.md[b], row_or_none(AB.gp, b),
-                        row_or_none(AB.gv, b))
+    Mb = copy_air_model(kind, vehicle, M, AB, b)
     Wb = KWork(WB.D[b], WB.U[b], WB.Y[b], WB.piv[b], WB.bv[b], WB.Rw[b], WB.tension[b], WB.Tr[b],
                WB.Ts[b], WB.er[b], WB.es[b], WB.coef[b], WB.aout[b], WB.vout[b], WB.vscratch[b], WB.k1[b],
                WB.k2[b], WB.k3[b], WB.k4[b], WB.k5[b], WB.k6[b], WB.k7[b], WB.xt[b], WB.xp[b], WB.Dm[b], WB.Um[b],

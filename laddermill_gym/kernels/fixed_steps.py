@@ -153,9 +153,11 @@ def next_kink(tc, te, t, dt, j, tmod, ms, md):
     return te
 
 
-# Keeps numba's runtime (no _nrt=False): with a gust grid the step takes row_or_none(AB.gp, b), an array view that
-# needs it (TetheredWing-v0 under turbulence failed to compile without it; tried and reverted twice: c2dd978, 45dd361)
-@njit(cache=True, error_model="numpy")
+# Without numba's runtime (_nrt=False): no reference counting of the per-copy array views (about 60 per copy and
+# step; 7-8 % of TetheredWing-v0's vector step went to the atomic counts, issue 32). The copy's gust grid rows come
+# through kernels/batch.copy_air_model, not a function that returns a view (numba forbids that without its runtime:
+# c2dd978, 45dd361 had reverted this for it).
+@njit(cache=True, error_model="numpy", _nrt=False)
 def advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks):
     """n fixed steps of dt [s] from t [s] (RK4 when ``tableau`` is None, else that Rosenbrock-W method) stepping
     onto the modulation's kinks as ``breaks`` says (``BREAKS_*``). Runs of plain steps go through

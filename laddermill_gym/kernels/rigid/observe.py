@@ -155,9 +155,11 @@ def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, ta
                            below, ground, obs, aux, status, done)
 
 
-# Keeps numba's runtime (no _nrt=False): with a gust grid the step takes row_or_none(AB.gp, b), an array view that
-# needs it (TetheredWing-v0 under turbulence failed to compile without it; tried and reverted twice: c2dd978, 45dd361)
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+# Without numba's runtime (_nrt=False): no reference counting of the per-copy array views (about 60 per copy and
+# step; 7-8 % of TetheredWing-v0's vector step went to the atomic counts, issue 32). The copy's gust grid rows come
+# through kernels/batch.copy_air_model, not a function that returns a view (numba forbids that without its runtime:
+# c2dd978, 45dd361 had reverted this for it).
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below,
                         ground, obs, aux, status, done):
     """:func:`step_observe_batch` on one thread: for single environments and small batches, where starting
