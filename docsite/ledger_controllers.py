@@ -7,6 +7,7 @@ entries of long groups (:mod:`docsite.long_figures`); the PPO runs (not kept) as
 
 from __future__ import annotations
 
+from docsite.host_cpu import CPU
 from docsite.ledger_controllers_history import CONTROLLERS_HISTORY
 from docsite.ledger_kinds import Covered, Printed
 
@@ -57,11 +58,13 @@ CONTROLLERS = Covered(
             # the shipped policies' gusts-v1 scorecards, exact (long groups gusts_v1_<env>: gust_bench.json's summary)
             (r"Rotorcraft-v0 (\d+ / \d+) \(the LQR (\d+ / \d+), open loop (\d+ / \d+)\),",
              tuple(f"{{gusts_v1_rotorcraft[scorecard][{c}]}}" for c in ("ppo_rotorcraft", "lqr", "open_loop"))),
-            # the LQR's count of today's CPU (2026-12-01, AVX2; its 11 / 12 of 2026-11-30's AVX-512 CPU: History)
-            (r"TetheredWing-v0 (\d+ / \d+) \(the LQR (\d+ / \d+) on 2026-12-01's AVX2 CPU, [^;]*; open loop "
+            # the LQR's count, quoted per CPU (docsite/host_cpu.py): the figure of the CPU the group ran on
+            (rf"TetheredWing-v0 (\d+ / \d+) \(the LQR [^;]*?(\d+ / \d+) on {CPU} \([^)]*\)[^;]*; open loop "
              r"(\d+ / \d+)\)\.",
              tuple(f"{{gusts_v1_tethered_wing[scorecard][{c}]}}" for c in ("ppo_tethered_wing", "lqr", "open_loop")))),
     given=(
+        # the CPUs' names and the days each was this project's machine (docsite/host_cpu.py)
+        'the AMD EPYC with AVX512 of 2026-11-30 and 2026-12-02, znver3, the AVX2 one of 2026-12-01).',
         "All numbers below come from (the commands are in the Makefile), on this project's 2-core machine. The "
         'return is the sum of the per-step rewards of the registered environment (about 1 per step at the trim '
         'power with no penalty; 6000 steps in 300 s).',
@@ -147,12 +150,16 @@ CONTROLLERS = Covered(
                                   'at 20, 21.5 and 22.5 s and fails at 10, 18, 21 and 22 s (22.25 to 23.25 s); the '
                                   'policy first and the LQR after fails at every one of those times (22.20 to 23.00 '
                                   's).',)),
-        Printed('paired_survival_shipped', ('the LQR survives 72 and the shipped policy 82: both 45, only the LQR 27, '
-                                          'only the policy 37, neither 91 (exact sign test of the discordant pairs, p'
-                                          ' = 0.26): no clear difference.',)),
-        # gust_bench.csv's NTM_IB seed 0 rows (2026-12-01, AVX2): the policy's "t = 22.95 s", the LQR's "t = 42.05 s"
-        Printed('gusts_v1_tethered_wing', ("It loses gusts-v1's NTM_IB seed 0 at 22.95 s;",
-                                         'on this CPU the LQR loses it as well, at 42.05 s')),
+        # the held-out counts per CPU (docsite/host_cpu.py; znver4: 2026-11-30 and 2026-12-02, znver3: 2026-12-01)
+        Printed('paired_survival_shipped', ('the LQR survives 70 and the shipped policy 84: both 45, only the LQR 25, '
+                                          'only the policy 39, neither 91 (exact sign test of the discordant pairs, '
+                                          'p = 0.103)',), cpu="znver4"),
+        Printed('paired_survival_shipped', ('72 and 82 (only the LQR 27, only the policy 37, p = 0.26)',),
+                cpu="znver3"),
+        # gust_bench.csv's NTM_IB seed 0 rows: the policy's "t = 22.95 s" (znver3 and znver4), the LQR's "t = 42.05 s"
+        # (znver3, 2026-12-01; it holds it on znver4)
+        Printed('gusts_v1_tethered_wing', ("It loses gusts-v1's NTM_IB seed 0 at 22.95 s;",)),
+        Printed('gusts_v1_tethered_wing', ('loses it at 42.05 s on znver3.',), cpu="znver3"),
         Printed('mill_claim', ('mill 0.0940 m, 154.0 kW;',)),
         # tests/test_exact_actor.py -k one_observation: "one observation alone against 512 at once: torch float32 up to
         # 1.4e-06 apart, float64 fixed order 0 (... CPU capability AVX2, MKL True)" (2026-12-01; until then not_rerun)

@@ -11,23 +11,12 @@ CONTROLLERS_HISTORY = (
     History('2026-11-30', "a Python session: the shipped ppo_tethered_wing's SB3 predict on one observation "
             'alone and on 512 at once (fe300dd)', 'the torch float32 actions on the AVX512 machine of 2026-11-30',
             ('against 512 at once: up to 4.8e-7 apart with MKL on AVX512, 2026-11-30;',)),
-    # the LQR's gusts-v1 count on the CPU of 2026-11-30 (AVX-512, znver4): it held NTM_IB seed 0, which it loses on
-    # 2026-12-01's (AVX2, znver3; --long gusts_v1_tethered_wing, the check above): numba compiles for the host CPU
-    History('2026-11-30', 'laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 '
-            '--controllers open_loop lqr ppo_tethered_wing (--long gusts_v1_tethered_wing, b7a1fc3)',
-            "the LQR's 18 episodes on 2026-11-30's AVX-512 CPU, not kept",
-            ("11 / 12 on 2026-11-30's AVX-512 one;",)),
-    # the hand-over and the held-out counts on that CPU (--long switch_ntm_ib_0 and paired_survival_shipped until
-    # 2026-12-01, when this AVX2 CPU printed the Printed entries above)
+    # the hand-over on 2026-11-30's CPU (znver4) with the code of that day (--long switch_ntm_ib_0 until 2026-12-01;
+    # on 2026-12-02 the same CPU kind printed the Printed entry, as znver3 did on 2026-12-01)
     History('2026-11-30', 'python -m laddermill_gym.studies.gusts.switch_controllers --scenario NTM_IB --seed 0 '
             '--controllers lqr ppo_tethered_wing --times 10 18 20 21 21.5 22 22.5 (0dc3b47)',
             "the hand-over runs on 2026-11-30's AVX-512 CPU, not kept",
-            ("On 2026-11-30's AVX512 CPU the hand-over at 22.5 s failed (44.80 s).",)),
-    History('2026-11-30', 'python -m laddermill_gym.harness.paired_survival --config '
-            'configs/agents/ppo_tethered_wing_severe.yaml --set ntm_ib --episodes 200 --seed 5000 --controllers '
-            'lqr ppo_tethered_wing (0dc3b47)',
-            "the 400 held-out episodes on 2026-11-30's AVX-512 CPU, not kept",
-            ("On 2026-11-30's AVX512 CPU it printed 70 and 84 (only the LQR 25, only the policy 39, p = 0.103).",)),
+            ("On 2026-11-30's AVX512 CPU, with the code of that day, the hand-over at 22.5 s failed (44.80 s).",)),
     # TetheredWing-v0's PPO rows and scenario table
     History('2026-11-23',
             'laddermill train configs/agents/ppo_tethered_wing.yaml, then laddermill evaluate --controllers lqr '
@@ -89,7 +78,7 @@ CONTROLLERS_HISTORY = (
              "and light-Dryden fields, drawn steps and gusts; seeds 1000 and up, none of gusts-v1's) keeps the "
              'policy that survives the most as . gusts-v1 is never used to select: it is the test. The kept '
              'policy survives 48 of the 64 validation episodes (the LQR 42, the previous 10-minute policy 33).',
-             "(it held it on 2026-11-29 and on 2026-11-30's AVX512 CPU). That scenario is chaotic for the LQR "
+             "That scenario is chaotic for the LQR "
              'itself: Gaussian action noise of 1e-5 crashed it in one of three draws, and the LQR-started policy,'
              ' equal to the LQR up to float32 rounding (6e-6 in the action), crashed there as well. Across drawn '
              'NTM-IB fields the LQR survived about half (12 of 24), and scaling its gains by 0.7 to 2 did not '

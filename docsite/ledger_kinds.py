@@ -25,10 +25,13 @@ class Printed:
     """Snippets each of whose numbers ``group``'s command prints (:mod:`docsite.printed_numbers` compares them by
     value at the digits the page quotes). ``group`` is a page group (:data:`docsite.page_figures.GROUPS`, whose
     figures carry the command's output under ``"printed"``) or a long group (:data:`docsite.long_figures.LONG`, run
-    only by ``python -m docsite.readme_figures --long NAME``)."""
+    only by ``python -m docsite.readme_figures --long NAME``). ``cpu``: the LLVM name of the CPU whose run printed
+    them (:mod:`docsite.host_cpu`), for figures that move with the CPU numba compiles for: compared only when the
+    group ran on that CPU; "" for figures every CPU prints."""
 
     group: str
     snippets: tuple
+    cpu: str = ""
 
 
 @dataclass(frozen=True)

@@ -63,6 +63,7 @@ WORK_PRECISION = Covered(
                                                "The estimate holds"), strict=True))) + CRAFT_MODE_CHECK,
     given=(
         'DP5(4): a step ends on it);',  # the breakpoints table: a method's name
+        'and DP5(4) alike:',  # the pole's paragraph: the same name
         # the craft's hold: eq. (6) (Roberts'), the holder's control period, the craft's state size (rotorcraft.md)
         "(6) LQR** ( : the differential collective dtheta = -K (y, phi, y', p) every 50 ms from the simulator's "
         'state, ; the collective at the trim).', 'finite differences of the 31-state right-hand side; rotorcraft.md):',
@@ -258,8 +259,8 @@ WORK_PRECISION = Covered(
         # tests/test_alpha_rate_limit.py -s -k names_the_alpha: "stopped at t = 0.3836 s: wing 46 at ... sideslip
         # -74.502 deg", "3.73e+09 rad/s^2, without the alpha-rate columns -127", "1e-4 s later: -3.06e+11"
         Printed('alpha_rate_pole_test', (
-            'The error-controlled methods stop on it at 0.3836 s, and DP5(4) alike: there wing 46 has tumbled to '
-            '-74.5 deg sideslip',
+            # "DP5(4)" is the method's name, not a figure (the page's `given`)
+            'The error-controlled methods stop on it at 0.3836 s,', 'there wing 46 has tumbled to -74.5 deg sideslip',
             'passes through a pole: 3.73e9 rad/s^2 at the last accepted state, -3.06e11 with the other sign 1e-4 s '
             'later, -127 with the two alpha-rate columns removed;',
         )),

@@ -5,6 +5,7 @@ not re-run (their commands and costs as the page gives them)."""
 
 from __future__ import annotations
 
+from docsite.host_cpu import CPU
 from docsite.ledger_kinds import Covered, History, Printed
 
 W, C = "{wind_data[worked][%s]}", "{wind_data[code][%s]}"
@@ -23,18 +24,19 @@ ON = r"(\d+ / \d+)"
 GUSTS_V1_CHECKS = tuple(
     (rf"\| {env} \| {ON} [^|]*\| {ON}", (f"{{gusts_v1_{group}[scorecard][open_loop]}}",
                                        f"{{gusts_v1_{group}[scorecard][lqr]}}"))
-    for env, group in (("TetheredWing-v0", "tethered_wing"), ("LadderChain-v0", "ladder_chain"),
-                       ("Rotorcraft-v0", "rotorcraft"), ("LadderMill-v0", "laddermill"))) + tuple(
+    for env, group in (("LadderChain-v0", "ladder_chain"), ("Rotorcraft-v0", "rotorcraft"),
+                       ("LadderMill-v0", "laddermill"))) + tuple(
     # its notes' scenarios, as sets of gust_bench.json's scenario ids (docsite/gust_scorecards.py): the open loop's
     # held on every seed, the LQR's held beyond them, not held, lost by both
     (rf"\| {env} \| \d+ / \d+ \(([^|]*)\) \|", (f"@{{gusts_v1_{group}[held][open_loop]}}",))
     for env, group in (("TetheredWing-v0", "tethered_wing"), ("LadderChain-v0", "ladder_chain"),
                        ("Rotorcraft-v0", "rotorcraft"), ("LadderMill-v0", "laddermill"))) + (
-    # the LQR's NTM IB seed lost on 2026-12-01's CPU (AVX2); its 11 / 12 of 2026-11-30's AVX-512 CPU: History below
-    (r"\| TetheredWing-v0 \| [^|]*\| \d+ / \d+ \(\+ ([^;|]*); [^|]*\) \| ([^|]*) end both \|",
-     ("@{gusts_v1_tethered_wing[held_beyond][lqr]}", "@{gusts_v1_tethered_wing[lost_by_both]}")),
-    (r"Dryden light; NTM IB seed (\d+) lost on 2026-12-01's CPU",
-     ("{gusts_v1_tethered_wing[lost_seeds][lqr][NTM_IB]}",)),
+    # TetheredWing-v0's LQR count, what it holds beyond the open loop and what ends both, quoted per CPU
+    # (docsite/host_cpu.py): those of the CPU the group ran on
+    (rf"\| TetheredWing-v0 \| {ON} ", ("{gusts_v1_tethered_wing[scorecard][open_loop]}",)),
+    (rf"\| TetheredWing-v0 \| [^|]*\| [^|]*?{ON} on {CPU} \(AVX\w+; \+ ([^)]*)\)[^|]*",
+     ("{gusts_v1_tethered_wing[scorecard][lqr]}", "@{gusts_v1_tethered_wing[held_beyond][lqr]}")),
+    (rf"ends both: [^|]*?on {CPU} \(AVX\w+\) ([^;|]*?) ?(?:;|\|)", ("@{gusts_v1_tethered_wing[lost_by_both]}",)),
     (r"\| 8 / 9 \(all but ([^;|]*);", ("@{gusts_v1_rotorcraft[lost][lqr]}",)),
     (r"\| \d+ / \d+ \(fails ([^|)]*)\) \|", ("@{gusts_v1_laddermill[lost][lqr]}",)),
 )
@@ -120,8 +122,8 @@ WIND = Covered(
            "s = exp(q z - q^2 / 2), q^2 = ln(1 + speed_std^2)", "mean 1,", "runs 300 ten-minute episodes per value up "
            "to 2.0.", '"step": 0.02}', '"heights": [0, 300]}', "(to within 10 % of the largest deviation from the "
            "final value, at least 1 mm; nan when not settled in the last 10 % of the episode)",
-           "Results (60 s episodes, turbulence faded in over 10 s;", "ECD (72 deg in 10 s)",
-           "re-run on 2026-11-30, TetheredWing-v0's on 2026-12-01;",
+           "Results (60 s episodes, turbulence faded in over 10 s;", "the ECD turns 72 deg in 10 s",
+           "re-run on 2026-11-30, TetheredWing-v0's on 2026-12-01 (znver3) and 2026-12-02 (znver4);",
            "+20 % speed step, 1-cosine gusts of 4 s "
            "and 20 s,", "at the reel-out trim's 296.3 m and the scene's 10.39 m/s there (D = the 20 m span)",
            "NTM IB turbulence on a grid 0-600 m high and 50 m upwind to 600 m downwind of the winch (the tether is at "
@@ -186,11 +188,6 @@ WIND = Covered(
             'eight scenarios):',
             '(after 0.2-5 s without the fade-in)',
         )),
-        # the LQR's TetheredWing-v0 count on 2026-11-30's CPU (AVX-512, znver4): it held NTM IB seed 0, lost at
-        # 42.05 s on 2026-12-01's (AVX2, znver3; --long gusts_v1_tethered_wing, the table's checks above)
-        History('2026-11-30', 'laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 '
-                '--controllers open_loop lqr ppo_tethered_wing (--long gusts_v1_tethered_wing, b7a1fc3)',
-                "the LQR's 18 episodes on 2026-11-30's AVX-512 CPU, not kept", ("one: 11 / 12)",)),
         History('2026-11-24', 'gymnasium resets of the envs with the Gaussian speed factor (its code is gone)',
                 'the failure rates measured when the speed factor was replaced', (
             'made 1.1 % of resets fail at speed_std 0.25 (9 % at 0.3, 93 % at 0.5)',

@@ -12,6 +12,7 @@ import re
 from pathlib import Path
 
 from docsite.gust_scorecards import scenario_key
+from docsite.host_cpu import host_cpu, is_keyed, keyed
 from docsite.long_figures import LONG
 from docsite.page_ledger import LEDGER
 from docsite.printed_numbers import template_agrees
@@ -22,12 +23,20 @@ FIELD = re.compile(r"\{([\w.]+)\[")  # a template's group name
 
 
 def check_difference(name: str, flat: str, pattern: str, templates: tuple, figures: dict,
-                     words: tuple[str, str]) -> str | None:
+                     words: tuple[str, str], cpu: str | None = None) -> str | None:
     """What is wrong with one check of page ``name`` (its text ``flat``, whitespace flattened): no text matches
-    ``pattern``; ``figures`` lack a field a template names (``words[0] + field``, e.g. "its command printed no
-    {field} (...)"); or the quoted groups are not what the templates give (``words[1] + figures``); None when it
-    agrees."""
-    m = re.search(pattern, flat)
+    ``pattern`` (a pattern quoting a figure per CPU, :mod:`docsite.host_cpu`, is compared at ``cpu``'s figure,
+    default this process's CPU); ``figures`` lack a field a template names (``words[0] + field``, e.g. "its command
+    printed no {field} (...)"); or the quoted groups are not what the templates give (``words[1] + figures``); None
+    when it agrees."""
+    if is_keyed(pattern):
+        cpu = cpu or host_cpu()
+        m = re.search(keyed(pattern, cpu), flat)
+        if m is None:
+            return f"docs/{name}: quotes no figure for this CPU ({cpu}, the CPU numba compiled for) in the check " \
+                   f"{pattern!r}"
+    else:
+        m = re.search(pattern, flat)
     if m is None:
         return f"docs/{name}: no text matches the check {pattern!r}"
     try:
@@ -65,9 +74,13 @@ def long_check_differences(long: dict) -> list[str]:
             if not groups or not groups <= set(long):
                 continue
             flat = flat or " ".join((DOCS / name).read_text().split())
+            cpus = {long[g].get("cpu") for g in groups} - {None}
+            if len(cpus) > 1:
+                bad.append(f"docs/{name}: the check {pattern!r} joins groups run on different CPUs {sorted(cpus)}")
+                continue
             wrong = check_difference(name, flat, pattern, templates, long,
                                      (f"--long {sorted(groups)} gave no {{}} (did it crash?)",
-                                      f"--long {sorted(groups)} gives"))
+                                      f"--long {sorted(groups)} gives"), next(iter(cpus), None))
             if wrong:
                 bad.append(wrong)
     return bad

@@ -20,6 +20,7 @@ import time
 from pathlib import Path
 
 from docsite.gust_scorecards import scorecards
+from docsite.host_cpu import host_cpu
 from docsite.long_group import Long
 from docsite.long_tests_craft import CRAFT_TESTS
 from docsite.long_tests_numerics import NUMERICS_TESTS
@@ -291,9 +292,9 @@ def _parsed(reads: tuple) -> dict:
 
 def measure_long(names: list[str]) -> dict:
     """{"long": {name: {"printed": stdout, "exit": statuses, "stderr": each failed command's stderr tail, "seconds":
-    wall, and a gust bench's "scorecard" and "lost_seeds" (:func:`_parsed`)}}} for the named groups (ValueError
-    naming an unknown one); a command exits 1 where its study reports a failed case (a wing on the ground), so its
-    output still counts."""
+    wall, "cpu": the CPU numba compiled for (:func:`docsite.host_cpu.host_cpu`), and a gust bench's "scorecard" and
+    "lost_seeds" (:func:`_parsed`)}}} for the named groups (ValueError naming an unknown one); a command exits 1
+    where its study reports a failed case (a wing on the ground), so its output still counts."""
     unknown = [n for n in names if n not in LONG]
     if unknown:
         raise ValueError(f"--long: no long group {unknown} in docsite/long_figures.py; see --long --list")
@@ -313,6 +314,7 @@ def measure_long(names: list[str]) -> dict:
         printed += [(ROOT / path).read_text() for path in LONG[name].reads if (ROOT / path).exists()]
         errors += [f"{path}: not written" for path in LONG[name].reads if not (ROOT / path).exists()]
         found[name] = {"printed": "\n".join(printed), "exit": status, "stderr": errors,
-                       "seconds": round(time.perf_counter() - t0), **_parsed(LONG[name].reads)}
+                       "seconds": round(time.perf_counter() - t0), "cpu": host_cpu(env),
+                       **_parsed(LONG[name].reads)}
         print(f"{name}: exit {status}, {found[name]['seconds']} s", flush=True)
     return {"long": found}

@@ -35,6 +35,7 @@ from tqdm import tqdm
 from docsite.config_figures import cable_dyneema, craft_data
 from docsite.controllers_figures import CONTROLLER_GROUPS
 from docsite.design_figures import design_data
+from docsite.host_cpu import keyed
 from docsite.learned_figures import gain_locality
 from docsite.long_checks import check_difference, long_check_differences, long_groups
 from docsite.mill_figures import MILL_GROUPS
@@ -351,8 +352,8 @@ def coverage() -> dict[str, dict]:
                                  "reason": getattr(entry, "reason", ""), "checks": len(getattr(entry, "checks", ())),
                                  "stale": [c for c, _ in getattr(entry, "checks", ()) if not re.search(c, flat)]}
             continue
-        checks = [c for c, _ in entry.checks if re.search(c, prose(page.read_text()))]
-        stale = [c for c, _ in entry.checks if not re.search(c, flat)]
+        checks = [keyed(c, None) for c, _ in entry.checks if re.search(keyed(c, None), prose(page.read_text()))]
+        stale = [c for c, _ in entry.checks if not re.search(keyed(c, None), flat)]
         printed = [s for p in entry.printed for s in p.snippets]
         history = [s for h in entry.history for s in (*h.snippets, h.date)]  # a record's date marks it on the page
         snippets = [*entry.given, *entry.timings, *entry.derived, *entry.not_rerun, *printed, *history]

@@ -244,11 +244,14 @@ def _matching(candidates: list[list[int]]) -> set[int]:
 
 def printed_differences(page: str, entries: tuple, measured: dict) -> list[str]:
     """Each Printed snippet of ``page`` (docs file name) whose group was measured (its figures in ``measured``, the
-    output under ``"printed"``) and quotes a number the output does not print; [] when all agree."""
+    output under ``"printed"``) and quotes a number the output does not print; [] when all agree. An entry of one
+    CPU (``Printed.cpu``) is compared only with a run on that CPU (the group's ``"cpu"``)."""
     bad = []
     for entry in entries:
         figures = measured.get(entry.group)
         if not isinstance(figures, dict) or "printed" not in figures:
+            continue
+        if getattr(entry, "cpu", "") and entry.cpu != figures.get("cpu"):
             continue
         for snippet in entry.snippets:
             lost = missing(snippet, figures["printed"])

@@ -44,6 +44,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from docsite.host_cpu import host_cpu
+
 ROOT = Path(__file__).resolve().parent.parent
 README = ROOT / "README.md"
 CONTROLLERS = ROOT / "laddermill_gym" / "docs" / "controllers.md"
@@ -127,12 +129,17 @@ def wing_held_out() -> dict:
 
 
 def held_out_differences(figures: dict, readme: str) -> list[str]:
-    """README's held-out sentence against ``figures["wing_held_out"]``; [] when it agrees or was not measured."""
+    """README's held-out sentence against ``figures["wing_held_out"]``, at the figures of the CPU they were measured
+    on (``figures["cpu"]``; the counts are knife edges, :mod:`docsite.host_cpu`): "the wing policy survives P, the LQR
+    L (sign test p = X) on CPU" or "; P and L (p = X) on CPU"; [] when it agrees or was not measured."""
     if "wing_held_out" not in figures:
         return []
     lqr, policy, p = figures["wing_held_out"]
-    quoted = f"the wing policy survives {policy}, the LQR {lqr} (sign test p = {p})"
-    return [] if quoted in readme else [f"README lacks '{quoted}' (paired_survival {HELD_OUT})"]
+    cpu = figures.get("cpu") or host_cpu()
+    quoted = (f"the wing policy survives {policy}, the LQR {lqr} (sign test p = {p}) on {cpu}",
+              f"; {policy} and {lqr} (p = {p}) on {cpu}")
+    return [] if any(q in readme for q in quoted) else [f"README lacks '{quoted[0]}' or '{quoted[1]}' (paired_survival "
+                                                        f"{HELD_OUT})"]
 
 
 #: README's shared-policy rows: ``laddermill evaluate --env ID --controllers POLICY LQR --episodes 1 --episode-time
@@ -199,6 +206,7 @@ def measure(policies: bool = False, papers: bool = False) -> dict:
 
     return {**main_job(), **env_sizes(), **tethered_wing_rows(),
             **({**policy_scorecards(), **mill_policy_row(), **wing_held_out()} if policies else {}),
+            "cpu": host_cpu(),
             **(measure_papers() if papers else {})}
 
 
@@ -249,22 +257,26 @@ def differences(figures: dict) -> list[str]:
     from docsite.paper_figures import papers_differences
 
     text = README.read_text()
-    return (bad + policy_differences(figures.get("policy_scorecards", {}), text)
+    return (bad + policy_differences(figures.get("policy_scorecards", {}), text, figures.get("cpu") or host_cpu())
             + mill_policy_differences(figures, readme) + held_out_differences(figures, readme)
             + papers_differences(figures.get("papers", {}), readme))
 
 
-def policy_differences(cards: dict, readme: str) -> list[str]:
-    """README's table of the shipped policies against ``cards`` ({policy: [won, the LQR's, scenarios]}): each row
-    must read "survive gusts-v1's scenarios won / n | LQR / n"; [] when every row agrees or nothing was measured."""
+def policy_differences(cards: dict, readme: str, cpu: str) -> list[str]:
+    """README's table of the shipped policies against ``cards`` ({policy: [won, the LQR's, scenarios]}) measured on
+    CPU ``cpu``: each row must read "survive gusts-v1's scenarios won / n | LQR / n", the LQR's cell either one count
+    or one per CPU ("11 / 12 on znver4, 10 / 12 on znver3", :mod:`docsite.host_cpu`: then ``cpu``'s is compared);
+    [] when every row agrees or nothing was measured."""
     bad = []
     for name, (won, lqr, n) in cards.items():
-        row = rf"^\| `{re.escape(name)}` \|.*\| survive gusts-v1's scenarios (\d+) / (\d+) \| (\d+) / (\d+) \|$"
+        row = rf"^\| `{re.escape(name)}` \|.*\| survive gusts-v1's scenarios (\d+) / (\d+) \| ([^|]*) \|$"
         m = re.search(row, readme, re.M)
-        quoted = m and [int(g) for g in m.groups()]
+        cell = m and (re.fullmatch(r"(\d+) / (\d+)", m.group(3))
+                      or re.search(rf"(\d+) / (\d+) on {re.escape(cpu)}\b", m.group(3)))
+        quoted = m and cell and [int(m.group(1)), int(m.group(2)), *map(int, cell.groups())]
         if quoted != [won, n, lqr, n]:
-            bad.append(f"README's shipped-policy table: {name} survives {won} / {n} of gusts-v1 (the LQR {lqr} / {n}); "
-                       f"the table's row says {m.group(0) if m else 'nothing'}")
+            bad.append(f"README's shipped-policy table: {name} survives {won} / {n} of gusts-v1 (the LQR {lqr} / {n} "
+                       f"on {cpu}); the table's row says {m.group(0) if m else 'nothing'}")
     return bad
 
 

@@ -161,18 +161,38 @@ def test_readme_figures_are_what_their_commands_print(tmp_path):
 
 
 def test_the_policy_table_check_names_a_changed_scorecard():
-    """The check of README's shipped-policy table: the quoted scorecards pass, any other count is named."""
+    """The check of README's shipped-policy table: the quoted scorecards pass, any other count is named; an LQR cell
+    quoted per CPU is compared at the measuring CPU's count, and a CPU it does not name fails."""
     sys.path.insert(0, str(ROOT))
     from docsite.readme_figures import policy_differences
 
     readme = ("| `ppo_tethered_wing` | TetheredWing-v0 | PPO | survive gusts-v1's scenarios 10 / 12 | 11 / 12 |\n"
               "| `ppo_rotorcraft` | Rotorcraft-v0 | PPO | survive gusts-v1's scenarios 8 / 9 | 8 / 9 |\n")
     good = {"ppo_rotorcraft": [8, 8, 9], "ppo_tethered_wing": [10, 11, 12]}
-    assert policy_differences(good, readme) == []
-    assert policy_differences({}, readme) == []
-    bad = policy_differences({**good, "ppo_tethered_wing": [10, 12, 12]}, readme)
-    assert len(bad) == 1 and "ppo_tethered_wing survives 10 / 12 of gusts-v1 (the LQR 12 / 12)" in bad[0]
-    assert len(policy_differences({"ppo_chain": [1, 1, 1]}, readme)) == 1
+    assert policy_differences(good, readme, "znver4") == []
+    assert policy_differences({}, readme, "znver4") == []
+    bad = policy_differences({**good, "ppo_tethered_wing": [10, 12, 12]}, readme, "znver4")
+    assert len(bad) == 1 and "ppo_tethered_wing survives 10 / 12 of gusts-v1 (the LQR 12 / 12 on znver4)" in bad[0]
+    assert len(policy_differences({"ppo_chain": [1, 1, 1]}, readme, "znver4")) == 1
+    keyed = readme.replace("| 11 / 12 |", "| 11 / 12 on znver4, 10 / 12 on znver3 |")
+    assert policy_differences(good, keyed, "znver4") == []
+    assert policy_differences({**good, "ppo_tethered_wing": [10, 10, 12]}, keyed, "znver3") == []
+    assert len(policy_differences(good, keyed, "znver3")) == 1  # znver3's LQR held 10, not 11
+    assert len(policy_differences(good, keyed, "skylake-avx512")) == 1  # no count quoted for that CPU
+
+
+def test_the_held_out_check_reads_the_measuring_cpus_counts():
+    """README's held-out sentence, quoted per CPU (worked by hand): each CPU's counts pass on that CPU only."""
+    sys.path.insert(0, str(ROOT))
+    from docsite.readme_figures import held_out_differences
+
+    readme = ("the wing policy survives 84, the LQR 70 (sign test p = 0.1034) on znver4; 82 and 72 (p = 0.2604) on "
+              "znver3: no clear difference.")
+    assert held_out_differences({"wing_held_out": [70, 84, "0.1034"], "cpu": "znver4"}, readme) == []
+    assert held_out_differences({"wing_held_out": [72, 82, "0.2604"], "cpu": "znver3"}, readme) == []
+    assert len(held_out_differences({"wing_held_out": [72, 82, "0.2604"], "cpu": "znver4"}, readme)) == 1
+    assert len(held_out_differences({"wing_held_out": [70, 84, "0.1034"], "cpu": "znver5"}, readme)) == 1
+    assert held_out_differences({"cpu": "znver4"}, readme) == []
 
 
 def test_the_mill_policy_check_names_a_changed_figure():

@@ -60,7 +60,7 @@ def test_a_file_of_several_envs_or_no_summary_is_named(tmp_path):
 def _long(rotor: dict, wing: dict) -> dict:
     """The two groups' figures, their scenario sets as gust-bench wrote them (the pages' lists)."""
     return {"gusts_v1_rotorcraft": {"printed": "", "scorecard": rotor, **ROTOR_SETS},
-            "gusts_v1_tethered_wing": {"printed": WING_CSV, "scorecard": wing, **WING_SETS,
+            "gusts_v1_tethered_wing": {"printed": WING_CSV, "scorecard": wing, **WING_SETS, "cpu": "znver3",
                                        "lost_seeds": {"ppo_tethered_wing": {"NTM_IB": "0"}, "lqr": {"NTM_IB": "0"}}}}
 
 
@@ -76,7 +76,7 @@ WING_SETS = {"held": {"open_loop": "EOG_IA, EWS_IA, direction_ramp_0.1, directio
 
 
 ROTOR = {"open_loop": "3 / 9", "lqr": "8 / 9", "ppo_rotorcraft": "8 / 9"}
-WING = {"open_loop": "7 / 12", "lqr": "10 / 12", "ppo_tethered_wing": "10 / 12"}  # 2026-12-01, AVX2
+WING = {"open_loop": "7 / 12", "lqr": "10 / 12", "ppo_tethered_wing": "10 / 12"}  # 2026-12-01, AVX2 (znver3)
 
 
 def test_the_pages_scorecards_are_checked_exactly():
@@ -110,7 +110,8 @@ OPEN_HELD = {"direction_step", "speed_step_20pct", "direction_ramp_0.1", "one_co
 
 def _wing_bench(path: Path, open_held: set = OPEN_HELD, moderate_lqr: tuple = (False, False, False)) -> dict:
     """A hand-written TetheredWing-v0 gust_bench.json, three seeds a scenario: the open loop holds ``open_held``;
-    the LQR all but NTM IB seed 0 and Dryden moderate (its seeds ``moderate_lqr``), as on 2026-12-01's AVX2 CPU; the
+    the LQR all but NTM IB seed 0 and Dryden moderate (its seeds ``moderate_lqr``), as on 2026-12-01's AVX2 CPU
+    (znver3, so the pages' znver3 figures are compared: docsite/host_cpu.py); the
     policy all but NTM IB seed 0 and Dryden moderate. Returns the long groups' figures as --long gives them."""
     seeds = {"open_loop": {s: (s in open_held,) * 3 for s in TW_SCENARIOS},
              "lqr": {**{s: (True,) * 3 for s in TW_SCENARIOS}, "NTM_IB": (False, True, True),
@@ -123,7 +124,7 @@ def _wing_bench(path: Path, open_held: set = OPEN_HELD, moderate_lqr: tuple = (F
     summary = [{"env": env, "controller": c, "scenario": s, "n": 3, "survived": sum(oks) / 3}
                for c, by in seeds.items() for s, oks in by.items()]
     path.write_text(json.dumps({"suite": "gusts-v1", "rows": rows, "summary": summary}))
-    return {"gusts_v1_tethered_wing": {"printed": "", **scorecards(path)}}
+    return {"gusts_v1_tethered_wing": {"printed": "", "cpu": "znver3", **scorecards(path)}}
 
 
 def test_the_pages_scenario_names_are_one_to_one_with_the_suites_ids():
@@ -144,12 +145,12 @@ def test_the_pages_scenario_names_are_one_to_one_with_the_suites_ids():
 def test_a_scenario_moved_between_held_and_lost_is_named(tmp_path):
     """The hand-written bench agrees with wind.md's, features.md's and controllers.md's tethered-wing lists; the open
     loop holding EDC instead of EWS (7 / 12 still) is named on wind.md's list and its LQR's "+ ..." list; the LQR
-    surviving one seed of Dryden moderate (10 / 12 still) is named on features.md's "Dryden moderate (every
-    seed)"."""
+    surviving one seed of Dryden moderate (10 / 12 still) is named on features.md's "Dryden moderate on every
+    seed"."""
     assert long_check_differences(_wing_bench(tmp_path / "a.json")) == []
     swapped = OPEN_HELD - {"EWS_IA"} | {"EDC_IA"}
     bad = long_check_differences(_wing_bench(tmp_path / "b.json", open_held=swapped))
     assert len(bad) == 2 and all(b.startswith("docs/wind.md") for b in bad), bad
     assert any("'@EDC_IA, EOG_IA, " in b for b in bad) and any("'@ECD_IA, EWS_IA, dryden_light'" in b for b in bad)
     bad = long_check_differences(_wing_bench(tmp_path / "c.json", moderate_lqr=(False, True, False)))
-    assert ["docs/features.md" in b and "(every seed)" in b for b in bad] == [True], bad
+    assert ["docs/features.md" in b and "on every seed" in b for b in bad] == [True], bad

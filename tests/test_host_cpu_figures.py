@@ -1,0 +1,67 @@
+"""Figures quoted per CPU (docsite/host_cpu.py): knife-edge episodes end differently on the CPUs numba compiles for,
+so a page quotes one figure per CPU and the checks compare the one of the CPU the command ran on.
+
+Oracles: numba's own code generator (the CPU name it compiles for); hand-written pages whose figures per CPU are
+written out by hand; the checks' regular expressions as the ledger writes them.
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from docsite.host_cpu import ANY_CPU, CPU, host_cpu, is_keyed, keyed  # noqa: E402
+from docsite.ledger_kinds import Printed  # noqa: E402
+from docsite.long_checks import check_difference  # noqa: E402
+from docsite.printed_numbers import printed_differences  # noqa: E402
+
+PAGE = ("TetheredWing-v0 10 / 12 (the LQR 11 / 12 on znver4 (AVX512), 10 / 12 on znver3 (AVX2); open loop 7 / 12). "
+        "The LQR holds it on znver4 and loses it at 42.05 s on znver3.")
+CHECK = (rf"TetheredWing-v0 (\d+ / \d+) \(the LQR [^;]*?(\d+ / \d+) on {CPU} \([^)]*\)[^;]*; open loop "
+         r"(\d+ / \d+)\)\.")
+TEMPLATES = ("{g[ppo]}", "{g[lqr]}", "{g[open]}")
+WORDS = ("printed no {}", "prints")
+
+
+def test_the_host_cpu_is_the_one_numba_compiles_for():
+    from numba.core.registry import cpu_target
+
+    assert host_cpu() == cpu_target.target_context.codegen()._get_host_cpu_name()
+    assert host_cpu({"NUMBA_CPU_NAME": "generic"}) == "generic"
+
+
+def test_a_keyed_pattern_takes_the_cpus_name_or_any():
+    assert is_keyed(CHECK) and not is_keyed(r"(\d+ / \d+)")
+    assert keyed("on " + CPU, "skylake-avx512") == r"on skylake\-avx512"
+    assert keyed("on " + CPU, None) == "on " + ANY_CPU
+    # with any CPU the check covers both figures of the page (the page coverage's use)
+    assert re.search(keyed(CHECK, None), PAGE).group(0).endswith("open loop 7 / 12).")
+
+
+def test_each_cpu_is_compared_at_its_own_figure():
+    znver4 = {"g": {"ppo": "10 / 12", "lqr": "11 / 12", "open": "7 / 12"}}
+    znver3 = {"g": {"ppo": "10 / 12", "lqr": "10 / 12", "open": "7 / 12"}}
+    assert check_difference("p.md", PAGE, CHECK, TEMPLATES, znver4, WORDS, "znver4") is None
+    assert check_difference("p.md", PAGE, CHECK, TEMPLATES, znver3, WORDS, "znver3") is None
+    wrong = check_difference("p.md", PAGE, CHECK, TEMPLATES, znver4, WORDS, "znver3")
+    assert wrong == ("docs/p.md: 'TetheredWing-v0 10 / 12 (the LQR 11 / 12 on znver4 (AVX512), 10 / 12 on znver3 "
+                     "(AVX2); open loop 7 / 12).' quotes ('10 / 12', '10 / 12', '7 / 12'); prints ('10 / 12', "
+                     "'11 / 12', '7 / 12')")
+    unknown = check_difference("p.md", PAGE, CHECK, TEMPLATES, znver4, WORDS, "znver5")
+    assert unknown.startswith("docs/p.md: quotes no figure for this CPU (znver5, the CPU numba compiled for)")
+
+
+def test_a_printed_snippet_of_one_cpu_is_compared_on_that_cpu_only():
+    entries = (Printed("g", ("loses it at 42.05 s on znver3.",), cpu="znver3"),
+               Printed("g", ("TetheredWing-v0 10 / 12",)))
+    on4 = {"g": {"printed": "ppo_tethered_wing NTM_IB 0 22.95\n10 / 12", "cpu": "znver4"}}
+    on3 = {"g": {"printed": "lqr NTM_IB 0 42.05\n10 / 12", "cpu": "znver3"}}
+    assert printed_differences("p.md", entries, on4) == []  # znver4 prints no 42.05: not its figure
+    assert printed_differences("p.md", entries, on3) == []
+    lost = {"g": {"printed": "lqr NTM_IB 0 41.00\n10 / 12", "cpu": "znver3"}}
+    assert printed_differences("p.md", entries, lost) == [
+        "docs/p.md: g printed none of ['42.05'] in 'loses it at 42.05 s on znver3.'"]
