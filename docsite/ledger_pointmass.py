@@ -208,15 +208,23 @@ PM_PRINTED = (
                                      "converged motion's 82.4 kW")),
     # -k backward: "condition number 3.3e+05" (eigvals_banded of the zigzag string's matrix, 2026-12-01)
     Printed("pointmass_solver_tests", ('(condition number 3.3e5)',)),
+    # scipy's solve_banded (LAPACK) on the zigzag string, per CPU: "solve_banded's backward error 4.8e-17" on znver4
+    # (2026-12-02), 7e-17 on znver3 (2026-12-01)
+    Printed("pointmass_solver_tests", ("against solve_banded's 4.8e-17 on znver4",
+                                       "against LAPACK's 4.8e-17 on znver4"), cpu="znver4"),
+    Printed("pointmass_solver_tests", ('(7e-17 on znver3)',), cpu="znver3"),
     # tests/test_pointmass_threads.py -k 500000_nodes: "P = 2 against P = 1 at 500,000 nodes: velocities 2.5e-11 of
     # the largest (0.087 m/s), positions 9.1e-13 m" (the same for P = 8 and 16; 2026-12-01)
-    Printed("pointmass_roundoff_500k", ('by 2.5e-11 of the largest velocity (0.087 m/s) and 9e-13 m in position;',)),
+    # per CPU (docsite/host_cpu.py): 2.5e-11 on znver3 (2026-12-01), 2.1e-11 on znver4 (2026-12-02)
+    Printed("pointmass_roundoff_500k", ('of the largest velocity (0.087 m/s) and 9e-13 m in position;',)),
+    Printed("pointmass_roundoff_500k", ('by 2.1e-11 on znver4',), cpu="znver4"),
+    Printed("pointmass_roundoff_500k", ('(2.5e-11 on znver3:',), cpu="znver3"),
     # tests/test_pointmass_lateral.py (2026-12-01; the page's "within about 10 s" and "1e-10 m/s" until then)
     Printed("pointmass_lateral_test", ('overshooting by 28 % 7.4 s after the step, within 10 % of it from 10.6 s and 1 '
                                        '% from 25.1 s, and stays (node speeds 8.7e-11 m/s after 120 s;',)),
     Printed("pointmass_solver_tests", (  # tests/test_pointmass_threads.py and _oracles.py print what they assert
         'by up to 3.1e-11 of the largest velocity', 'backward error of 3e-12 to 5.5e-12,',
-        'its backward error is 5e-12', "against solve_banded's 7e-17", "against LAPACK's 7e-17",
+        'its backward error is 5e-12',
         'agree to 1.1e-7', 'and 4.5e-13 m',  # P = 7's positions, 9e-17 of the largest (5 km)
         # -k one_centimetre: "1 cm (11,000 elements): relative error of H -3e-09" (2026-11-30)
         'and -3e-9 at 1 cm (11,000 elements)',
