@@ -40,3 +40,15 @@ def keyed(pattern: str, cpu: str | None) -> str:
 def is_keyed(pattern: str) -> bool:
     """Whether a check's pattern quotes a figure per CPU."""
     return CPU in pattern
+
+
+def only_on(cpu: str) -> str:
+    """A regular-expression comment that marks a check as one CPU's (prefix it to the pattern; ``re`` ignores it):
+    for a table of that CPU's chaotic runs, whose other CPUs' figures the page gives beside it."""
+    return f"(?#cpu={cpu})"
+
+
+def check_cpu(pattern: str) -> str | None:
+    """The CPU a pattern marked by :func:`only_on` belongs to; None for a check of every CPU."""
+    m = re.match(r"\(\?#cpu=([\w-]+)\)", pattern)
+    return m.group(1) if m else None

@@ -7,7 +7,7 @@ derived."""
 from __future__ import annotations
 
 from docsite.ledger_kinds import Covered, History, Printed
-from docsite.ledger_papers import MEIJAARD_CHECKS
+from docsite.ledger_papers import MEIJAARD_CHECKS, Z3
 
 F = "{meijaard_v1[files][%s]}"
 WINGS = r"(no wing|wings? [\d, -]+)"  # the wings over a guard as docsite.study_figures._wings names them
@@ -17,27 +17,27 @@ WINGS = r"(no wing|wings? [\d, -]+)"  # the wings over a guard as docsite.study_
 FILES_CHECKS = (
     (r"the loop is (\d+) m wide on average for a top ([\d,]+) m above the station \(width / height ([\d.]+)\)",
      (F % "width", "~" + F % "top", F % "ratio")),
-    (r"\| (\d+)-(\d+) m at 1 m/s; (\d+)-(\d+) m at 5 m/s",
+    (Z3 + r"\| (\d+)-(\d+) m at 1 m/s; (\d+)-(\d+) m at 5 m/s",
      tuple(F % k for k in ("w1_lo", "w1_hi", "w5_lo", "w5_hi"))),
-    (r"1 m/s: ([\d.]+) kN in element (\d+); 5 m/s: ([\d.]+) kN in element (\d+); at ([\d.]+) and ([\d.]+) of the "
+    (Z3 + r"1 m/s: ([\d.]+) kN in element (\d+); 5 m/s: ([\d.]+) kN in element (\d+); at ([\d.]+) and ([\d.]+) of the "
      r"loop's height",
      tuple(F % k for k in ("T1", "element1", "T5", "element5", "height1", "height5"))),
-    (r"period means ([-\d,]+) to ([\d,]+) kW over the last (\d+) periods \(mean ([\d.]+) kW\)",
+    (Z3 + r"period means ([-\d,]+) to ([\d,]+) kW over the last (\d+) periods \(mean ([\d.]+) kW\)",
      ("~" + F % "mean_lo5", "~" + F % "mean_hi5", F % "periods5", F % "mean5")),
-    (r"slot 40's yaw changes by up to (\d+) deg before the physical end at ([\d.]+) s, and ([\d,]+) deg \(tumbling\) "
-     r"over ([\d.]+) s",
+    (Z3 + r"slot 40's yaw changes by up to (\d+) deg before the physical end at ([\d.]+) s, and ([\d,]+) deg "
+     r"\(tumbling\) over ([\d.]+) s",
      (F % "yaw", F % "yaw_end", "~" + F % "tumble_deg", F % "tumble_s")),
     (r"\*\*physical end at ([\d.]+) s\*\* \(wings ([\d-]+) outside the aerodynamic data for 2 s; wing (\d+): beta "
      r"([\d.]+) deg since ([\d.]+) s\)",
      tuple(F % k for k in ("end", "end_wings", "end_wing", "end_beta", "end_since"))),
-    (r"numerical breakdown at ([\d.]+) s \(RK4 10 ms, no end criterion: "
+    (Z3 + r"numerical breakdown at ([\d.]+) s \(RK4 10 ms, no end criterion: "
      rf"{WINGS} over the 300 m/s speed guard and {WINGS} over the 100 rad/s rate guard\)",
      tuple(F % f"rk4_10ms][{k}" for k in ("t", "speed", "rate"))),
-    (r"RK4 10 ms breaks down at ([\d.]+) s, RK4 2\.5 ms \(judged on height and overload only, neither of which held\) "
-     rf"at ([\d.]+) s \({WINGS} over the 300 m/s speed guard and {WINGS} over the 100 rad/s rate guard\)",
+    (Z3 + r"RK4 10 ms breaks down at ([\d.]+) s, RK4 2\.5 ms \(judged on height and overload only, neither of which "
+     rf"held\) at ([\d.]+) s \({WINGS} over the 300 m/s speed guard and {WINGS} over the 100 rad/s rate guard\)",
      (F % "rk4_10ms][t", F % "rk4_2_5ms][t", F % "rk4_2_5ms][speed", F % "rk4_2_5ms][rate")),
-    (r"a smaller step goes longer \(([\d.]+) s -> ([\d.]+) s\)", (F % "rk4_10ms][t", F % "rk4_2_5ms][t")),
-    (r"35\.7 s; ([\d.]+) s and ([\d,]+) deg on 2026-12-01's CPU \(AVX2\), the 10 ms run's at ([\d.]+) s\)",
+    (Z3 + r"a smaller step goes longer \(([\d.]+) s -> ([\d.]+) s\)", (F % "rk4_10ms][t", F % "rk4_2_5ms][t")),
+    (Z3 + r"35\.7 s; ([\d.]+) s and ([\d,]+) deg on 2026-12-01's CPU \(AVX2\), the 10 ms run's at ([\d.]+) s\)",
      (F % "rk4_2_5ms][t", "~" + F % "tumble_deg", F % "rk4_10ms][t")),
     (r"some wing leaves the data's sideslip at ([\d.]+) s and its alpha at ([\d.]+) s, slot 40 its sideslip at "
      r"([\d.]+) s",
@@ -61,7 +61,8 @@ MEIJAARD = Covered(
         'A scene made later for 5 m/s (a tail schedule) is run with or .',
         'What it printed on 2026-11-29 at a5550e0, re-run at 014c04d, on 2026-11-30 at faa2ebd and on 2026-12-01 '
         "(AMD EPYC, AVX2) with the same lines but for the chaotic runs (the 5 m/s search, Fig. 8's fixed-step runs "
-        "past the data), given here as 2026-12-01's run prints them",
+        "past the data), given here as 2026-12-01's run prints them, on znver3 (an AMD EPYC with AVX2), znver4's (with "
+        "AVX512, 2026-11-30 and 2026-12-02) below the table",
         # the CPUs of the two days (the chaotic runs' figures depend on the CPU numba compiles the simulator for)
         "numba compiles the simulator for the host CPU's instructions (AVX-512 on 2026-11-30, AVX2 on 2026-12-01), "
         "so these chaotic runs' figures and the 5 m/s search's differ from one machine to the next;",
@@ -75,7 +76,8 @@ MEIJAARD = Covered(
         '8 | "with a smaller step size, the simulation could be continued longer" |',
         '8 | "the angles of attack, the side-slip angle ...', "the paper's ~40 s breakdown has no physical counterpart",
         'only "longer than at 10 ms" is a finding.',
-        'them (scene , periodic tolerance 1e-3):', "On 2026-12-01's CPU the 5 m/s",
+        'the table (scene , periodic tolerance 1e-3):', 'At 5 m/s: loop width',  # znver4's paragraph: the speed
+        '"near the top" holds at 5 m/s too;', "On znver3 (2026-12-01) the 5 m/s",
         '6 | "for low cable velocities, the ascending and descending part are almost parallel" | at 1 m/s '
         '(periodic at 715 s)',
         '6 | "for larger cable velocities, the loop widens" |',
@@ -128,7 +130,7 @@ MEIJAARD = Covered(
         'the v2 wing of that page is periodic there, 323.9 kW), so its Fig.',
         # -1,150.8 and 1,101.5 kW (checked in the table) in MW
         "they still widen the loop and raise the smallest tension as the paper says (though here not at the top), "
-        "but the last period's 317.4 kW is one sample of period means that swing from -1.2 MW to +1.1 MW.",
+        "but the last period's 317.4 kW (znver3) is one sample of period means that swing from -1.2 MW to +1.1 MW.",
         'Our wing data and tail settings are our own (the paper gives neither), and with them the mill delivers a'
         " third of the paper's power and is not periodic at 5 m/s, where its descending leg also pulls up to 1.9 "
         "times the cable's breaking load. DP5(4)",
@@ -137,21 +139,29 @@ MEIJAARD = Covered(
         History("2026-11-30", "python -m laddermill_gym.studies.mill.meijaard --out results/meijaard_v1 (faa2ebd)",
                 "the v1 study on 2026-11-30's AVX-512 CPU, not kept (its chaotic runs end differently on 2026-12-01's "
                 "AVX2 CPU)",
-                ("on 2026-11-30's AVX-512 CPU the 5 m/s search passed it (element 0 at 392.6 s, 1.01 times), the 2 m/s"
-                 " one at 397.1 s (1.07 times), and the 5 m/s search's last period gave 488.8 kW with its smallest "
-                 "tension at the top (25.5 kN in element 49).",
-                 "84.7 s and 5,572 deg at faa2ebd, 2026-11-30, when the 10 ms run's breakdown also moved, from 25.8 s "
-                 "to 35.7 s;")),
+                ("84.7 s and 5,572 deg at faa2ebd, 2026-11-30, when the 10 ms run's breakdown also moved, from 25.8 s "
+                 "to 35.7 s;",)),
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        # the chaotic runs per CPU (docsite/host_cpu.py): znver3's in the table (2026-12-01), znver4's beside it
+        # (2026-11-30 at faa2ebd and 2026-12-02 print the same)
+        Printed('meijaard_v1_printed', ('317.4 kW in the last period,',
+                                        "search stays below the cable's breaking load (peak 0.93 times it)"),
+                cpu="znver3"),
+        Printed('meijaard_v1_printed', (
+            'loop width 280-288 m at 1 m/s; 577-759 m at 5 m/s; smallest mean tension 25.5 kN in element 49, at 0.99 '
+            "of the loop's height,",
+            '(202.6 - 104.9) kN x 5 m/s = 488.7 kW; generator 488.8 kW; the last 108 period means -1139 to 846 kW, '
+            'mean 245.8 kW.',
+            'RK4 dt = 10 ms, no end criterion: numerical breakdown at 35.7 s; RK4 dt/4 = 2.5 ms, aerodynamic range not '
+            'judged: numerical breakdown at 84.7 s, slot 40 tumbling through 5,572 deg.',
+            'on znver4 the 5 m/s search passes it (element 0 at 392.55 s, 1.01 times it), the 2 m/s one at 397.05 s '
+            '(1.07 times it).'), cpu="znver4"),
         Printed('meijaard_v1_printed', (
             '82.1 kW at 1 m/s; **152.9 kW at 2 m/s** (3D: 152.9 kW); 5 m/s not periodic:',
-            '317.4 kW in the last period,',
             'The undisturbed 3D periodic motion meets none of the end criteria over a period (no wing outside the '
             'aerodynamic data, lowest wing CG 57.3 m, peak tension 0.285 of the breaking load).',
             'show the shape at the end of the 3,053 s search and the tensions of its last period, and say so;',
-            # 2026-12-01's run (AMD EPYC, AVX2): the 5 m/s search's peak, 0.931 x
-            "search stays below the cable's breaking load (peak 0.93 times it)",
             'After the direction step the v1 mill leaves the range of its wing data sooner than v0 (6.4 s against',
             # v0's time is the v0 study's (below)
             '), and not at slot 40 but at the wings in slots 8-15, low on the ascending leg (up to 39 deg of '

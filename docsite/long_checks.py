@@ -12,7 +12,7 @@ import re
 from pathlib import Path
 
 from docsite.gust_scorecards import scenario_key
-from docsite.host_cpu import host_cpu, is_keyed, keyed
+from docsite.host_cpu import check_cpu, host_cpu, is_keyed, keyed
 from docsite.long_figures import LONG
 from docsite.page_ledger import LEDGER
 from docsite.printed_numbers import template_agrees
@@ -29,6 +29,8 @@ def check_difference(name: str, flat: str, pattern: str, templates: tuple, figur
     default this process's CPU); ``figures`` lack a field a template names (``words[0] + field``, e.g. "its command
     printed no {field} (...)"); or the quoted groups are not what the templates give (``words[1] + figures``); None
     when it agrees."""
+    if check_cpu(pattern) not in (None, cpu or host_cpu()):
+        return None  # another CPU's figure (docsite/host_cpu.py): compared on that CPU
     if is_keyed(pattern):
         cpu = cpu or host_cpu()
         m = re.search(keyed(pattern, cpu), flat)

@@ -35,7 +35,7 @@ from tqdm import tqdm
 from docsite.config_figures import cable_dyneema, craft_data
 from docsite.controllers_figures import CONTROLLER_GROUPS
 from docsite.design_figures import design_data
-from docsite.host_cpu import keyed
+from docsite.host_cpu import host_cpu, keyed
 from docsite.learned_figures import gain_locality
 from docsite.long_checks import check_difference, long_check_differences, long_groups
 from docsite.mill_figures import MILL_GROUPS
@@ -276,7 +276,8 @@ GROUPS = {"rotor_design": rotor_design, "training_curves": training_curves, "lat
 def measure_pages(pages: list[str] | None = None, have: dict | None = None, more: dict | None = None) -> dict:
     """{"pages": {group: figures}} for the groups the ``pages`` (default: every page with checks) need; groups already
     in ``have`` (README's figures measured in the same run, e.g. ``main_job``) are not run again; ``more``: further
-    group functions (README's, from :mod:`docsite.readme_figures`: {name: function returning {name: figures}})."""
+    group functions (README's, from :mod:`docsite.readme_figures`: {name: function returning {name: figures}}); with
+    "cpu", the CPU numba compiled for (:mod:`docsite.host_cpu`)."""
     chosen = _pages(pages)
     needed = sorted({g for name in chosen for g in LEDGER[name].groups})
     have, more, measured, seconds = dict(have or {}), dict(more or {}), {}, {}
@@ -293,7 +294,7 @@ def measure_pages(pages: list[str] | None = None, have: dict | None = None, more
             measured.update(more[group]())
         seconds[group] = round(time.perf_counter() - t0)
         tqdm.write(f"{group}: {seconds[group]} s")
-    return {"pages": {**measured, "seconds": seconds, "checked_pages": chosen}}
+    return {"pages": {**measured, "seconds": seconds, "checked_pages": chosen, "cpu": host_cpu()}}
 
 
 def _pages(pages: list[str] | None) -> list[str]:
@@ -317,7 +318,8 @@ def pages_differences(measured: dict) -> list[str]:
             if long_groups(templates):  # compared by --long (docsite/long_checks.py)
                 continue
             wrong = check_difference(name, flat, pattern, templates, measured,
-                                     ("its command printed no {} (see the group's docstring)", "its command prints"))
+                                     ("its command printed no {} (see the group's docstring)", "its command prints"),
+                                     measured.get("cpu"))
             if wrong:
                 bad.append(wrong)
         bad += printed_differences(name, getattr(LEDGER[name], "printed", ()), measured)

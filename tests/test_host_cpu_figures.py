@@ -65,3 +65,17 @@ def test_a_printed_snippet_of_one_cpu_is_compared_on_that_cpu_only():
     lost = {"g": {"printed": "lqr NTM_IB 0 41.00\n10 / 12", "cpu": "znver3"}}
     assert printed_differences("p.md", entries, lost) == [
         "docs/p.md: g printed none of ['42.05'] in 'loses it at 42.05 s on znver3.'"]
+
+
+def test_a_check_marked_for_one_cpu_is_compared_on_that_cpu_only():
+    """A table of one CPU's chaotic runs (``only_on``): re ignores the mark, the check skips other CPUs."""
+    from docsite.host_cpu import check_cpu, only_on
+
+    pattern = only_on("znver3") + r"breaks down at ([\d.]+) s"
+    page = "RK4 10 ms breaks down at 24.0 s"
+    assert check_cpu(pattern) == "znver3" and check_cpu(CHECK) is None
+    assert re.search(pattern, page).group(1) == "24.0"
+    znver4 = {"g": {"t": "35.7"}}
+    assert check_difference("p.md", page, pattern, ("{g[t]}",), znver4, WORDS, "znver4") is None  # not its table
+    wrong = check_difference("p.md", page, pattern, ("{g[t]}",), znver4, WORDS, "znver3")
+    assert wrong == "docs/p.md: 'breaks down at 24.0 s' quotes ('24.0',); prints ('35.7',)"

@@ -389,12 +389,12 @@ def test_the_power_curve_rows_are_named_when_changed():
 
 
 def test_the_meijaard_fixed_step_ends_are_named_when_changed():
-    """docs/paper_meijaard1999.md's fixed-step ends as the study wrote them on 2026-12-01's AVX2 CPU (breakdown.csv:
-    10 ms 24.0 s, wings 6-9 over the speed guard, none over the rate guard; 2.5 ms 67.9 s, wing 54 over the rate guard
-    only) pass; 2026-11-29's 25.8 s is named wherever it is quoted."""
+    """paper_meijaard1999.md's fixed-step ends as znver3 wrote them (2026-12-01, breakdown.csv: 10 ms 24.0 s, wings 6-9
+    over the speed guard, none over the rate guard; 2.5 ms 67.9 s, wing 54 over the rate guard only) pass; 2026-11-29's
+    25.8 s is named wherever it is quoted (the table is znver3's: tests/test_host_cpu_figures.py)."""
     ends = {"rk4_10ms": {"t": "24.0", "speed": "wings 6-9", "rate": "no wing"}, "tumble_deg": "4268",
             "rk4_2_5ms": {"t": "67.9", "speed": "no wing", "rate": "wing 54"}}
-    page = {"checked_pages": ["paper_meijaard1999.md"]}
+    page = {"checked_pages": ["paper_meijaard1999.md"], "cpu": "znver3"}
     assert _named({**page, "meijaard_v1": {"files": ends}}) == []
     bad = _named({**page, "meijaard_v1": {"files": {**ends, "rk4_10ms": {**ends["rk4_10ms"], "t": "25.8"}}}})
     assert len(bad) == 4 and all("25.8" in b and "paper_meijaard1999.md" in b for b in bad), bad
