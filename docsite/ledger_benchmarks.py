@@ -309,8 +309,8 @@ BENCHMARKS = Covered(
         )),
         Printed('fast_step_closed_loop', (  # the LQRs' runs with ros2:4 against the registered step's
             "seed 0): both LQRs hold 300 s with",
-            "lateral offset -6.69e-09 (relative) and -1.49e-08 m from RK4's, the mill's -9.09e-04 and -9.16e-06 m "
-            '(102.702 kW against 102.795 kW).',
+            "lateral offset -6.69e-09 (relative) and -1.49e-08 m from RK4's, the mill's -9.16e-04 and -9.21e-06 m "
+            '(102.701 kW against 102.795 kW).',  # 70e387a, 2026-12-02 (36fe05f printed -9.09e-04, -9.16e-06, 102.702)
         )),
         Printed('step_accuracy_40', (
             "the episode ends after 322 periods against the reference's 321", '(7.5e-6 of the extent) until then;',
