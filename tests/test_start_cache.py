@@ -161,3 +161,48 @@ def test_a_warm_fresh_process_imports_no_solver_and_no_other_system(tmp_path, en
     banned = ("scipy.optimize", "scipy.interpolate", "laddermill_gym.envs.laddermill.env",
               "laddermill_gym.envs.pumping", "laddermill_gym.envs.pointmass", "laddermill_gym.ladder.initial")
     assert not [m for m in warm if m.startswith(banned)], env_id
+
+
+#: what a fresh process prints: a digest of numpy's exp and of scipy's Riccati solution (LAPACK on OpenBLAS), and of
+#: the cache's platform text
+KERNEL_PROBE = """import hashlib
+import numpy as np
+import scipy.linalg as sl
+from laddermill_gym.model.disk_cache import platform_text
+r = np.random.default_rng(0)
+x, A, B = r.uniform(0.1, 5.0, 4096), r.normal(size=(12, 12)), r.normal(size=(12, 3))
+P = sl.solve_continuous_are(A, B, np.eye(12), np.eye(3))
+bits = hashlib.sha256(np.exp(-x).tobytes() + P.tobytes()).hexdigest()
+print(bits, hashlib.sha256(platform_text().encode()).hexdigest())
+"""
+
+
+def _kernel_probe(changes: dict) -> tuple[str, str]:
+    keep = {k: v for k, v in os.environ.items() if k not in disk_cache.KERNEL_VARIABLES}
+    out = subprocess.run([sys.executable, "-c", KERNEL_PROBE], env={**keep, **changes}, capture_output=True,
+                         text=True, check=True)
+    bits, key = out.stdout.split()
+    return bits, key
+
+
+def test_the_key_follows_the_kernels_numpy_and_openblas_choose():
+    """numpy's SIMD loops and OpenBLAS's kernels, chosen when they load, move the last bits of exp and of a Riccati
+    solution (the oracle: two fresh processes' results compared bit for bit), so a start computed under one choice
+    must not be read under another: wherever the bits differ, so does the cache's platform text. Same settings, same
+    bits and key."""
+    import llvmlite.binding as ll
+
+    base = _kernel_probe({"OPENBLAS_CORETYPE": "Haswell"})
+    assert _kernel_probe({"OPENBLAS_CORETYPE": "Haswell"}) == base
+    others = [{"OPENBLAS_CORETYPE": "Haswell", "NPY_DISABLE_CPU_FEATURES": "X86_V4 AVX512_ICL AVX512_SPR"}]
+    avx512 = bool(ll.get_host_cpu_features().get("avx512f"))
+    if avx512:
+        others.append({"OPENBLAS_CORETYPE": "SkylakeX"})
+    moved = 0
+    for changes in others:
+        bits, key = _kernel_probe(changes)
+        if bits != base[0]:
+            moved += 1
+            assert key != base[1], f"{changes}: other bits under the same cache key"
+    if avx512:  # on such a CPU both choices move the bits (AMD EPYC, 2026-12-02)
+        assert moved == len(others)

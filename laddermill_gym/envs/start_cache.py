@@ -8,9 +8,10 @@ loading of the right-hand side's kernels from numba's cache. Like the mill's ope
 start finds it in ``$LADDERMILL_CACHE_DIR/wing_starts/`` or ``craft_starts/`` (``LADDERMILL_CACHE_DIR=off``
 switches it off) and skips the search.
 
-Keyed by everything the start depends on: the scene as loaded (every field but its file's path) or the craft as
-built (config, assembly, tether layout) and its trim controls, the package version, the source of the code that
-computes it (:data:`WING_SOURCES`, :data:`CRAFT_SOURCES`), the numba, numpy and Python versions and the CPU.
+Keyed by everything the start depends on: the scene as loaded (every field but its file's path) or the craft as built
+(config, assembly, tether layout) and its trim controls, the package version, the source of the code that computes it
+(:data:`WING_SOURCES`, :data:`CRAFT_SOURCES`), the versions, the CPU and the kernels numpy and OpenBLAS choose
+(``disk_cache.platform_text``).
 Stored as the exact float64 arrays, so a start read back is the same bits as a recomputed one; an entry that does
 not read back whole under its own key is recomputed and overwritten.
 """

@@ -7,10 +7,10 @@ Where: ``$LADDERMILL_CACHE_DIR`` when set (:data:`CACHE_VARIABLE`), else ``$XDG_
 ``LADDERMILL_CACHE_DIR=off`` (:data:`OFF`) switches the cache off.
 
 An entry's key is a SHA-256 its user computes from everything the result depends on (:func:`feed` fingerprints
-dataclasses, arrays and numbers canonically; :func:`platform_text` names the versions and the CPU). Stored: the
-exact arrays and scalars (``np.savez``, no pickle), written atomically (a temporary file in the same folder,
-flushed to disk, then renamed). An entry is trusted only when it reads back whole, holds its own key (the full
-key, not only the file name's prefix) and its payload's SHA-256 matches; anything else is recomputed and
+dataclasses, arrays and numbers canonically; :func:`platform_text` names the versions, the CPU and the kernels numpy and
+OpenBLAS choose). Stored: the exact arrays and scalars (``np.savez``, no pickle), written atomically (a temporary file
+in the same folder, flushed to disk, then renamed). An entry is trusted only when it reads back whole, holds its own key
+(the full key, not only the file name's prefix) and its payload's SHA-256 matches; anything else is recomputed and
 overwritten. A folder that cannot be written gives one warning and the computation goes on uncached.
 """
 
@@ -27,6 +27,8 @@ from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
+
+from laddermill_gym.model.machine import KERNEL_VARIABLES, numpy_simd_level
 
 __all__ = ["CACHE_VARIABLE", "OFF", "cache_dir", "feed", "platform_text", "payload_digest", "entry_path",
            "read_entry", "write_entry"]
@@ -86,7 +88,9 @@ def feed(h, obj, skip: tuple = ()) -> None:
 
 @lru_cache(maxsize=1)
 def platform_text() -> str:
-    """numba, numpy, Python versions and the host CPU numba compiles for (name and features)."""
+    """numba, numpy, scipy and Python versions, the host CPU numba compiles for (name and features), numpy's SIMD
+    level and the variables that choose numpy's and OpenBLAS's kernels (:data:`KERNEL_VARIABLES`): everything on
+    one machine that moves a start's last bits."""
     from importlib.metadata import PackageNotFoundError, version
 
     import llvmlite.binding as llvm
@@ -96,8 +100,10 @@ def platform_text() -> str:
         ours = version("laddermill_gym")
     except PackageNotFoundError:
         ours = "not installed"
-    return (f"laddermill_gym {ours}; numba {numba.__version__}; numpy {np.__version__}; python "
-            f"{sys.version_info[:3]}; cpu {llvm.get_host_cpu_name()} {llvm.get_host_cpu_features().flatten()}")
+    kernels = ", ".join(f"{k}={os.environ.get(k, '')}" for k in KERNEL_VARIABLES)
+    return (f"laddermill_gym {ours}; numba {numba.__version__}; numpy {np.__version__}; scipy {version('scipy')}; "
+            f"python {sys.version_info[:3]}; cpu {llvm.get_host_cpu_name()} {llvm.get_host_cpu_features().flatten()}; "
+            f"numpy simd {numpy_simd_level()}; {kernels}")
 
 
 def payload_digest(arrays: dict) -> str:

@@ -7,11 +7,11 @@ The folder, the entry format and its checks are ``model/disk_cache.py``'s (``$LA
 one ``.npz`` file each (a few hundred kB).
 
 Keyed by everything the result depends on (:func:`entry_key`): the in-plane scene as loaded (every field of the
-:class:`~laddermill_gym.ladder.rigid_scene.Scene` but its file's path: wings, cable, station, wind, initial
-settings, integrator), the settling settings, the package version, the source of the code that computes it
-(:data:`SOURCE_DIRS`, :data:`SOURCE_FILES`), the numba, numpy and Python versions and the CPU numba compiles for
-(its name and features: a kernel's fused multiply-adds differ between CPUs). A changed input is a new key, so a
-stale entry is never looked at.
+:class:`~laddermill_gym.ladder.rigid_scene.Scene` but its file's path: wings, cable, station, wind, initial settings,
+integrator), the settling settings, the package version, the source of the code that computes it (:data:`SOURCE_DIRS`,
+:data:`SOURCE_FILES`), the numba, numpy, scipy and Python versions, the CPU numba compiles for and the kernels numpy and
+OpenBLAS choose (``disk_cache.platform_text``: their last bits differ between machines). A changed input is a new key,
+so a stale entry is never looked at.
 
 Stored: the exact float64 arrays and scalars, so a start read back is the same bits as a recomputed one.
 """
