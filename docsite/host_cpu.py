@@ -1,34 +1,54 @@
-"""Figures that depend on the CPU numba compiles the simulator for.
+"""Figures that depend on the machine: the numeric profile a run's last bits come from.
 
-numba compiles the kernels for the host's CPU (LLVM's name for it: ``znver4`` for an AMD EPYC with AVX-512,
-``znver3`` for one with AVX2), so the last bits of a step differ between CPU kinds, and a knife-edge episode (a
-turbulent gust-bench episode that ends or survives by a hair) can end differently. A page quotes such a figure
-once per CPU, each followed by ``on NAME``, and the ledger's check carries :data:`CPU` where the name goes: the
-check compares only the figure of the CPU its command ran on (recorded with each group's figures as ``"cpu"``),
-and a page that quotes no figure for that CPU fails it, naming the CPU. Figures of the other kinds stay on the
-page, checked when the tier runs there.
+A knife-edge episode (a turbulent gust-bench episode that ends or survives by a hair) can end differently on
+another machine: not through the code numba generates, but through the kernels numpy and OpenBLAS choose by the
+CPU when they load (``laddermill_gym/model/machine.py``: numpy's SIMD level, OpenBLAS's kernels).
+
+A *profile* is that pair. The pages name a profile by the LLVM CPU name of the machine it was first measured on
+(:data:`PROFILES`): ``znver4`` (an AMD EPYC with AVX-512 whose OpenBLAS chose SkylakeX kernels; 2026-11-30 and
+2026-12-02 before 07:00) and ``znver3`` (an AMD EPYC with AVX2; 2026-12-01); any other profile is named by its
+parts, e.g. ``AVX512_ICL/Haswell`` (the ``znver5`` EPYC of 2026-12-02 07:00, whose environment sets
+``OPENBLAS_CORETYPE=Haswell``). A page quotes such a figure once per profile, each followed by ``on NAME``, and
+the ledger's check carries :data:`CPU` where the name goes: the check compares only the figure of the profile its
+command ran on (recorded with each group's figures as ``"cpu"``), and a page that quotes no figure for that profile
+fails it, naming it. A machine with AVX-512 runs either profile: ``python -m docsite.host_cpu --env znver3`` prints the
+environment that selects its kernels; ``eval "export $(python -m docsite.host_cpu --env znver3)"`` sets it before Python
+starts (numpy and OpenBLAS read it once, at load).
 """
 
 from __future__ import annotations
 
+import argparse
 import os
 import re
+import shlex
 
-#: The place of the CPU's name in a ledger check's regular expression (``rf"the LQR (\\d+ / \\d+) on {CPU}"``).
+from laddermill_gym.model.machine import KERNEL_ENV, kernel_profile
+
+#: The place of the profile's name in a ledger check's regular expression (``rf"the LQR (\\d+ / \\d+) on {CPU}"``).
 CPU = "<host-cpu>"
-#: What :data:`CPU` matches when a check is not compared (the page coverage): any LLVM CPU name.
-ANY_CPU = r"[a-z][\w-]*"
+#: What :data:`CPU` matches when a check is not compared (the page coverage): any profile name.
+ANY_CPU = r"[A-Za-z][\w/-]*"
+
+#: the profiles the pages quote, by their names there: (numpy's SIMD level, OpenBLAS's kernel class)
+PROFILES = {"znver4": ("AVX512_ICL", "SkylakeX"), "znver3": ("X86_V3", "Haswell")}
+#: the environment that selects a profile's kernels on a machine with AVX-512
+PROFILE_ENV = {name: KERNEL_ENV[profile] for name, profile in PROFILES.items()}
 
 
 def host_cpu(env: dict | None = None) -> str:
-    """The CPU name numba compiles for in a process with environment ``env`` (default: this one's):
-    ``NUMBA_CPU_NAME`` when set, else LLVM's name of the host CPU."""
-    name = (os.environ if env is None else env).get("NUMBA_CPU_NAME", "")
-    if name:
-        return name
-    import llvmlite.binding as llvm
+    """The name of the numeric profile of a process with environment ``env`` (default: this process, as numpy
+    and OpenBLAS loaded here): a :data:`PROFILES` name, else ``LEVEL/KERNELS``. With ``env``, measured in a fresh
+    Python of that environment (numpy and OpenBLAS choose at load)."""
+    if env is not None:
+        import subprocess
+        import sys
 
-    return llvm.get_host_cpu_name()
+        out = subprocess.run([sys.executable, "-m", "docsite.host_cpu"], env=env, capture_output=True, text=True,
+                             check=True, cwd=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+        return out.stdout.strip()
+    profile = kernel_profile()
+    return next((name for name, p in PROFILES.items() if p == profile), "/".join(profile))
 
 
 def keyed(pattern: str, cpu: str | None) -> str:
@@ -38,17 +58,33 @@ def keyed(pattern: str, cpu: str | None) -> str:
 
 
 def is_keyed(pattern: str) -> bool:
-    """Whether a check's pattern quotes a figure per CPU."""
+    """Whether a check's pattern quotes a figure per profile."""
     return CPU in pattern
 
 
 def only_on(cpu: str) -> str:
-    """A regular-expression comment that marks a check as one CPU's (prefix it to the pattern; ``re`` ignores it):
-    for a table of that CPU's chaotic runs, whose other CPUs' figures the page gives beside it."""
+    """A regular-expression comment that marks a check as one profile's (prefix it to the pattern; ``re`` ignores
+    it): for a table of that profile's chaotic runs, whose other profiles' figures the page gives beside it."""
     return f"(?#cpu={cpu})"
 
 
 def check_cpu(pattern: str) -> str | None:
-    """The CPU a pattern marked by :func:`only_on` belongs to; None for a check of every CPU."""
-    m = re.match(r"\(\?#cpu=([\w-]+)\)", pattern)
+    """The profile a pattern marked by :func:`only_on` belongs to; None for a check of every profile."""
+    m = re.match(r"\(\?#cpu=([\w/-]+)\)", pattern)
     return m.group(1) if m else None
+
+
+def main(argv=None) -> None:
+    p = argparse.ArgumentParser(prog="python -m docsite.host_cpu",
+                                description="Print this process's numeric profile, or (--env) the environment "
+                                            "that selects a profile's kernels on a machine with AVX-512.")
+    p.add_argument("--env", choices=sorted(PROFILE_ENV), help="print NAME=VALUE for this profile")
+    args = p.parse_args(argv)
+    if args.env:
+        print(" ".join(f"{k}={shlex.quote(v)}" for k, v in PROFILE_ENV[args.env].items()))
+    else:
+        print(host_cpu())
+
+
+if __name__ == "__main__":
+    main()

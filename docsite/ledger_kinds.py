@@ -25,9 +25,9 @@ class Printed:
     """Snippets each of whose numbers ``group``'s command prints (:mod:`docsite.printed_numbers` compares them by
     value at the digits the page quotes). ``group`` is a page group (:data:`docsite.page_figures.GROUPS`, whose
     figures carry the command's output under ``"printed"``) or a long group (:data:`docsite.long_figures.LONG`, run
-    only by ``python -m docsite.readme_figures --long NAME``). ``cpu``: the LLVM name of the CPU whose run printed
-    them (:mod:`docsite.host_cpu`), for figures that move with the CPU numba compiles for: compared only when the
-    group ran on that CPU; "" for figures every CPU prints."""
+    only by ``python -m docsite.readme_figures --long NAME``). ``cpu``: the numeric profile whose run printed them
+    (:mod:`docsite.host_cpu`: numpy's SIMD loops and OpenBLAS's kernels), for figures that move with it: compared
+    only when the group ran on that profile; "" for figures every profile prints."""
 
     group: str
     snippets: tuple

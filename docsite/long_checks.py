@@ -25,17 +25,17 @@ FIELD = re.compile(r"\{([\w.]+)\[")  # a template's group name
 def check_difference(name: str, flat: str, pattern: str, templates: tuple, figures: dict,
                      words: tuple[str, str], cpu: str | None = None) -> str | None:
     """What is wrong with one check of page ``name`` (its text ``flat``, whitespace flattened): no text matches
-    ``pattern`` (a pattern quoting a figure per CPU, :mod:`docsite.host_cpu`, is compared at ``cpu``'s figure,
-    default this process's CPU); ``figures`` lack a field a template names (``words[0] + field``, e.g. "its command
-    printed no {field} (...)"); or the quoted groups are not what the templates give (``words[1] + figures``); None
-    when it agrees."""
+    ``pattern`` (a pattern quoting a figure per numeric profile, :mod:`docsite.host_cpu`, is compared at ``cpu``'s
+    figure, default this process's profile); ``figures`` lack a field a template names (``words[0] + field``, e.g. "its
+    command printed no {field} (...)"); or the quoted groups are not what the templates give (``words[1] + figures``);
+    None when it agrees."""
     if check_cpu(pattern) not in (None, cpu or host_cpu()):
-        return None  # another CPU's figure (docsite/host_cpu.py): compared on that CPU
+        return None  # another profile's figure (docsite/host_cpu.py): compared on that profile
     if is_keyed(pattern):
         cpu = cpu or host_cpu()
         m = re.search(keyed(pattern, cpu), flat)
         if m is None:
-            return f"docs/{name}: quotes no figure for this CPU ({cpu}, the CPU numba compiled for) in the check " \
+            return f"docs/{name}: quotes no figure for this profile ({cpu}, docsite/host_cpu.py) in the check " \
                    f"{pattern!r}"
     else:
         m = re.search(pattern, flat)
@@ -78,7 +78,7 @@ def long_check_differences(long: dict) -> list[str]:
             flat = flat or " ".join((DOCS / name).read_text().split())
             cpus = {long[g].get("cpu") for g in groups} - {None}
             if len(cpus) > 1:
-                bad.append(f"docs/{name}: the check {pattern!r} joins groups run on different CPUs {sorted(cpus)}")
+                bad.append(f"docs/{name}: the check {pattern!r} joins groups run on different profiles {sorted(cpus)}")
                 continue
             wrong = check_difference(name, flat, pattern, templates, long,
                                      (f"--long {sorted(groups)} gave no {{}} (did it crash?)",

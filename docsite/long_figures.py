@@ -251,6 +251,10 @@ LONG = {
         "python -m laddermill_gym.studies.gusts.switch_controllers --scenario NTM_IB --seed 0 --controllers "
         f"{pair} --times 10 18 20 21 21.5 22 22.5" for pair in ("lqr ppo_tethered_wing", "ppo_tethered_wing lqr")),
         "seconds each", "controllers.md"),
+    # numerics.md's Bits and machines: one knife-edge episode under each setting that may move the bits (needs a CPU
+    # with AVX-512 for its SkylakeX row; 7 min 16 s on 2026-12-02)
+    "machine_bits": Long("python -m laddermill_gym.studies.numerics.machine_bits", "7 min (a CPU with AVX-512)",
+                         "numerics.md"),
     "paired_survival_shipped": Long("python -m laddermill_gym.harness.paired_survival --config "
                                     "configs/agents/ppo_tethered_wing_severe.yaml --set ntm_ib --episodes 200 --seed "
                                     "5000 --controllers lqr ppo_tethered_wing", "25 s (400 episodes of 60 s)",
@@ -292,8 +296,8 @@ def _parsed(reads: tuple) -> dict:
 
 def measure_long(names: list[str]) -> dict:
     """{"long": {name: {"printed": stdout, "exit": statuses, "stderr": each failed command's stderr tail, "seconds":
-    wall, "cpu": the CPU numba compiled for (:func:`docsite.host_cpu.host_cpu`), and a gust bench's "scorecard" and
-    "lost_seeds" (:func:`_parsed`)}}} for the named groups (ValueError naming an unknown one); a command exits 1
+    wall, "cpu": the numeric profile of its commands (:func:`docsite.host_cpu.host_cpu`), and a gust bench's "scorecard"
+    and "lost_seeds" (:func:`_parsed`)}}} for the named groups (ValueError naming an unknown one); a command exits 1
     where its study reports a failed case (a wing on the ground), so its output still counts."""
     unknown = [n for n in names if n not in LONG]
     if unknown:

@@ -277,7 +277,7 @@ def measure_pages(pages: list[str] | None = None, have: dict | None = None, more
     """{"pages": {group: figures}} for the groups the ``pages`` (default: every page with checks) need; groups already
     in ``have`` (README's figures measured in the same run, e.g. ``main_job``) are not run again; ``more``: further
     group functions (README's, from :mod:`docsite.readme_figures`: {name: function returning {name: figures}}); with
-    "cpu", the CPU numba compiled for (:mod:`docsite.host_cpu`)."""
+    "cpu", the numeric profile (:mod:`docsite.host_cpu`)."""
     chosen = _pages(pages)
     needed = sorted({g for name in chosen for g in LEDGER[name].groups})
     have, more, measured, seconds = dict(have or {}), dict(more or {}), {}, {}

@@ -245,7 +245,7 @@ def _matching(candidates: list[list[int]]) -> set[int]:
 def printed_differences(page: str, entries: tuple, measured: dict) -> list[str]:
     """Each Printed snippet of ``page`` (docs file name) whose group was measured (its figures in ``measured``, the
     output under ``"printed"``) and quotes a number the output does not print; [] when all agree. An entry of one
-    CPU (``Printed.cpu``) is compared only with a run on that CPU (the group's ``"cpu"``)."""
+    profile (``Printed.cpu``) is compared only with a run on that profile (the group's ``"cpu"``)."""
     bad = []
     for entry in entries:
         figures = measured.get(entry.group)

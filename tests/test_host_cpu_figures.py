@@ -1,15 +1,20 @@
-"""Figures quoted per CPU (docsite/host_cpu.py): knife-edge episodes end differently on the CPUs numba compiles for,
-so a page quotes one figure per CPU and the checks compare the one of the CPU the command ran on.
+"""Figures quoted per numeric profile (docsite/host_cpu.py): knife-edge episodes end differently where numpy's SIMD
+loops or OpenBLAS's kernels differ, so a page quotes one figure per profile and the checks compare the one of the
+profile the command ran on.
 
-Oracles: numba's own code generator (the CPU name it compiles for); hand-written pages whose figures per CPU are
-written out by hand; the checks' regular expressions as the ledger writes them.
+Oracles: the profiles' environments (numpy's AVX-512 targets switched off by name, OpenBLAS's kernels named), and
+OpenBLAS's own answer read through ctypes; hand-written pages whose figures per profile are written out by hand; the
+checks' regular expressions as the ledger writes them.
 """
 
 from __future__ import annotations
 
+import os
 import re
 import sys
 from pathlib import Path
+
+import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
@@ -27,11 +32,40 @@ TEMPLATES = ("{g[ppo]}", "{g[lqr]}", "{g[open]}")
 WORDS = ("printed no {}", "prints")
 
 
-def test_the_host_cpu_is_the_one_numba_compiles_for():
-    from numba.core.registry import cpu_target
+def _openblas_corename() -> str:
+    """OpenBLAS's own name of its kernels (``openblas_get_corename`` of scipy's bundled library, through ctypes)."""
+    import ctypes
+    import glob
 
-    assert host_cpu() == cpu_target.target_context.codegen()._get_host_cpu_name()
-    assert host_cpu({"NUMBA_CPU_NAME": "generic"}) == "generic"
+    import scipy
+
+    libs = glob.glob(str(Path(scipy.__file__).parent.parent / "scipy.libs" / "*openblas*"))
+    if not libs:
+        pytest.skip("scipy without its bundled OpenBLAS")
+    lib = ctypes.CDLL(libs[0])
+    for name in ("scipy_openblas_get_corename", "openblas_get_corename", "scipy_openblas_get_corename64_"):
+        if hasattr(lib, name):
+            fn = getattr(lib, name)
+            fn.restype = ctypes.c_char_p
+            return fn().decode()
+    pytest.skip("no corename function in scipy's OpenBLAS")
+
+
+def test_the_profile_is_numpys_simd_level_and_openblas_kernels():
+    from docsite.host_cpu import PROFILE_ENV
+    from laddermill_gym.model.machine import SAME_KERNELS, blas_kernels
+    from laddermill_gym.model.machine import numpy_simd_level as numpy_level
+
+    assert blas_kernels() == SAME_KERNELS.get(_openblas_corename(), _openblas_corename())
+    name = host_cpu()
+    assert name in ("znver4", "znver3") or name == f"{numpy_level()}/{blas_kernels()}"
+    # the AVX2 profile's environment selects it on any x86-64 with AVX2; AVX-512's only where the CPU has it
+    env = {**os.environ, **PROFILE_ENV["znver3"]}
+    assert host_cpu(env) == "znver3"
+    assert host_cpu({**env, "OPENBLAS_CORETYPE": "Zen"}) == "znver3"  # Zen's kernels are Haswell's
+    if numpy_level().startswith("AVX512"):
+        assert host_cpu({**os.environ, **PROFILE_ENV["znver4"]}) == "znver4"
+        assert host_cpu({**os.environ, "OPENBLAS_CORETYPE": "Haswell"}) == f"{numpy_level()}/Haswell"
 
 
 def test_a_keyed_pattern_takes_the_cpus_name_or_any():
@@ -52,7 +86,7 @@ def test_each_cpu_is_compared_at_its_own_figure():
                      "(AVX2); open loop 7 / 12).' quotes ('10 / 12', '10 / 12', '7 / 12'); prints ('10 / 12', "
                      "'11 / 12', '7 / 12')")
     unknown = check_difference("p.md", PAGE, CHECK, TEMPLATES, znver4, WORDS, "znver5")
-    assert unknown.startswith("docs/p.md: quotes no figure for this CPU (znver5, the CPU numba compiled for)")
+    assert unknown.startswith("docs/p.md: quotes no figure for this profile (znver5, docsite/host_cpu.py)")
 
 
 def test_a_printed_snippet_of_one_cpu_is_compared_on_that_cpu_only():
