@@ -63,8 +63,10 @@ CONTROLLERS = Covered(
              r"(\d+ / \d+)\)\.",
              tuple(f"{{gusts_v1_tethered_wing[scorecard][{c}]}}" for c in ("ppo_tethered_wing", "lqr", "open_loop")))),
     given=(
-        # the CPUs' names and the days each was this project's machine (docsite/host_cpu.py)
-        'the AMD EPYC with AVX512 of 2026-11-30 and 2026-12-02, znver3, the AVX2 one of 2026-12-01).',
+        # the profiles' names and the days each was this project's machine (docsite/host_cpu.py)
+        "znver4 names numpy's AVX-512 loops with OpenBLAS's SkylakeX kernels (the AMD EPYC of 2026-11-30 and "
+        "2026-12-02 before 07:00), znver3 AVX2 loops with Haswell kernels (the AMD EPYC with AVX2 of 2026-12-01); "
+        "one AVX-512 machine computes either (2026-12-02).",
         "All numbers below come from (the commands are in the Makefile), on this project's 2-core machine. The "
         'return is the sum of the per-step rewards of the registered environment (about 1 per step at the trim '
         'power with no penalty; 6000 steps in 300 s).',

@@ -63,9 +63,9 @@ MEIJAARD = Covered(
         "(AMD EPYC, AVX2) with the same lines but for the chaotic runs (the 5 m/s search, Fig. 8's fixed-step runs "
         "past the data), given here as 2026-12-01's run prints them, on znver3 (an AMD EPYC with AVX2), znver4's (with "
         "AVX512, 2026-11-30 and 2026-12-02) below the table",
-        # the CPUs of the two days (the chaotic runs' figures depend on the CPU numba compiles the simulator for)
-        "numba compiles the simulator for the host CPU's instructions (AVX-512 on 2026-11-30, AVX2 on 2026-12-01), "
-        "so these chaotic runs' figures and the 5 m/s search's differ from one machine to the next;",
+        # the machines of the two days (the chaotic runs' figures depend on the kernels numpy and OpenBLAS pick)
+        "an AMD EPYC with AVX-512 on 2026-11-30, one with AVX2 on 2026-12-01: where numpy's and OpenBLAS's kernels "
+        "differ,", "so these chaotic runs' figures and the 5 m/s search's differ from one machine to the next;",
         # the chaotic run's earlier ends, dated with their commits (today's are checked)
         "That 2.5 ms run, past the wing data's range, is chaotic: its end moves with the last bits of any kernel "
         'change (157.5 s and 3,559 deg at a5550e0, 189.5 s and 3,504 deg at 014c04d, 2026-11-29;',

@@ -57,7 +57,14 @@ NUMERICS = Covered(
         # bounds the fast set's tests assert, not measurements: tests/test_kernels_vs_reference.py (err < 1e-10
         # against the numpy reference; the in-plane kernel against the 3D one to 1e-9), the issue's 1e-12 normwise
         # bound of tests/test_golden_trajectories.py
-        'to 1e-10 and the in-plane 3D run still equals the 2D run to 1e-9', 'to 1e-12 normwise relative'),
+        'to 1e-10 and the in-plane 3D run still equals the 2D run to 1e-9', 'to 1e-12 normwise relative',
+        # Bits and machines: the machine, the profiles' names and days (docsite/host_cpu.py, 2026-12-02)
+        "What differs was measured on 2026-12-02 (an AMD EPYC with AVX-512, LLVM's", "has the AVX-512 code's bits",
+        "LLVM's generic x86-64, which has no fused multiply-add,",
+        "These are the bits of the AMD EPYC with AVX2 of 2026-12-01", "this machine prints its 200-field held-out",
+        "With numpy's AVX-512 loops these are the bits of the AMD EPYC of 2026-11-30",
+        "on a CPU with AVX-512), and the start caches", "read the trim an AVX-512 process had stored",
+        "This machine's own profile (AVX-512 loops, Haswell kernels: its environment"),
     timings=(  # one thread, medians on the shared 2-core machine (the page gives no date: measured when written)
         # the kept matrix's CPU per step (jacobian_reuse, 2026-11-30 03:33, load 7.4-7.8; the 4000-step
         # figures were the study's measuring error, corrected in c-batchgap)
@@ -89,7 +96,8 @@ NUMERICS = Covered(
         "H and V at the station within 4e-3 / n^2",
         # MINPACK hybrd's forward differences with scipy's default epsfcn (machine epsilon): a relative step of
         # sqrt(2.2e-16) = 1.5e-8; at the chain's 3.5 km (given) 1.49e-8 x 3500 m = 5.2e-5 m = 0.05 mm
-        '(1.5e-8 |z|, 0.05 mm)'),
+        '(1.5e-8 |z|, 0.05 mm)',
+        'needs a CPU with AVX-512 for the last row, about 7 minutes)'),  # machine_bits, 2026-12-02 (7 min 16 s)
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         Printed('test_figures_quick', ("today's code by 1.01e-10 and 1.51e-10", '(measured at most 5.1e-14;',
                                        # the componentwise differences (tethered_wing, ladder_chain, _2d)
@@ -129,8 +137,18 @@ NUMERICS = Covered(
         # "+2.00 ... 2.87/0.50" (were not_rerun; the page's 13.7 deg, the 2026-11-22 layout's, is today's 13.6)
         Printed('trim_chain_wing', ('(trim alpha 13.6 deg at 8 m/s)', '(alpha 5.4 deg).**',
                                     'At +2 deg (alpha 2.9 deg)')),
+        # Bits and machines: the study's rows, and the held-out counts each profile prints (docsite/host_cpu.py)
+        Printed('machine_bits', ("(seed 0's largest excursion 80.14 m against 48.38 m)",
+                                 "numpy's AVX2 loops lose seed 0 at 42.05 s",
+                                 "OpenBLAS's SkylakeX kernels give 64.83 m")),
+        Printed('paired_survival_shipped', ('counts again (the policy 82, the LQR 72;',), cpu="znver3"),
+        Printed('paired_survival_shipped', ('held-out counts again (84 and 70)',), cpu="znver4"),
     ),
     history=(  # the page's earlier figures, replaced by today's printed ones (issue 33 point 6, 2026-11-30)
+        History('2026-12-02', "laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 "
+                "--controllers lqr --scenarios NTM_IB under NPY_DISABLE_CPU_FEATURES='X86_V4 AVX512_ICL' (b0d09ba)",
+                'the start cache filled by a process with AVX-512 loops, before the key carried the kernels',
+                ("Until 2026-12-02 they did not: a process with numpy's AVX2 loops", 'lost seed 0 at 45.40 s,')),
         History('2026-11-24', 'the series beside tests/test_rosenbrock.py (e770ec3; the test halves once, from 0.01 s)',
                 'the tethered wing over 2 s from 0.04 to 0.005 s, as first measured',
                 ('2026-11-24, from 0.04 s: ros2 2.9, 3.1, 3.4 and ros34pw2 6.1, 6.8, 7.3)',)),
