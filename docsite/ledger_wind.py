@@ -90,7 +90,9 @@ WIND = Covered(
             (r"V_cg = (\d+) m/s, T = (\d+) s", (C % "ecd_v_cg", C % "ecd_t")),
             (r"beta = ([\d.]+), T = (\d+) s \(vertical shear\)", (C % "ews_beta", C % "ews_t")),
             (r"\(1 \+ \(([\d.]+) L Omega\)\^2\)\^\(5/6\)", (C % "vk_a",))),
-    given=("(Meijaard et al. 1999 eqs. 1-3)", "(cos a, sin a, 0)",  # the standards' formulas and clauses
+    given=(  # the profiles' names (docsite/host_cpu.py; numerics.md, Bits and machines)
+           "znver4 names numpy's AVX-512 loops with OpenBLAS's SkylakeX kernels",
+           "(Meijaard et al. 1999 eqs. 1-3)", "(cos a, sin a, 0)",  # the standards' formulas and clauses
            "sigma_1 = I_ref (0.75 V_hub + 5.6 m/s) | Kaimal: f S_k / sigma_k^2 = (4 f L_k / V_hub) / (1 + 6 f L_k / "
            "V_hub)^(5/3)", "| IEC 61400-1 ed. 3, 6.3.1.3 (eqs. 5, 11), Annex B Table B.1 |",
            "sigma_1 = c I_ref (0.072 (V_ave/c + 3)(V_hub/c - 4) + 10), c = 2 m/s, V_ave = 0.2 V_ref | Kaimal | as NTM "
