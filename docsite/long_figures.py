@@ -254,7 +254,7 @@ LONG = {
     # numerics.md's Bits and machines: one knife-edge episode under each setting that may move the bits (needs a CPU
     # with AVX-512 for its SkylakeX row; 7 min 16 s on 2026-12-02)
     "machine_bits": Long("python -m laddermill_gym.studies.numerics.machine_bits", "7 min (a CPU with AVX-512)",
-                         "numerics.md"),
+                         "numerics.md", avx512=True),
     "paired_survival_shipped": Long("python -m laddermill_gym.harness.paired_survival --config "
                                     "configs/agents/ppo_tethered_wing_severe.yaml --set ntm_ib --episodes 200 --seed "
                                     "5000 --controllers lqr ppo_tethered_wing", "25 s (400 episodes of 60 s)",

@@ -19,3 +19,4 @@ class Long:
     page: str
     reads: tuple = ()  # files (from the repository root) the command writes whose text counts as printed
     shows: tuple = ()  # $ lines of the page's text blocks that are this command's printed output, line for line
+    avx512: bool = False  # prints what the page shows only on a CPU with AVX-512 (its test is skipped elsewhere)
