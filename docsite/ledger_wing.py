@@ -94,6 +94,8 @@ CHECKS = (
 #: the paper's data, the chosen constants (each a named constant of derivations/wing_parameters.py with its source),
 #: the formulas and their sources, the counts of the method
 GIVEN = (
+    # the two profiles' runs of mill_v1_steps, both printed on one AVX-512 machine (numerics.md, Bits and machines)
+    "this AVX-512 machine prints both with their settings, 2026-12-02)",
     "Meijaard, Ockels & Schwab (1999)", "S = 54 m^2, b = 20 m, m = 54 kg, |CG - aerodynamic centre of the main wing| "
     "= 0.75 m, |CG - cable attachment| = 1.5 m, booms 5 m long", "t/c = 0.14, a0 = 6.0 /rad", "alpha0 = -3 deg, Cm0 = "
     "-0.07", "| dihedral | 3 deg |", "Ch. 4, dihedral guidelines (unswept mid wing 2-4 deg)", "| 0.75 m **ahead** of",
