@@ -65,6 +65,8 @@ def test_the_profile_is_numpys_simd_level_and_openblas_kernels():
     assert host_cpu({**env, "OPENBLAS_CORETYPE": "Zen"}) == "znver3"  # Zen's kernels are Haswell's
     if numpy_level().startswith("AVX512"):
         assert host_cpu({**os.environ, **PROFILE_ENV["znver4"]}) == "znver4"
+        # a profile's settings override another's (a shell that selected znver3 first)
+        assert host_cpu({**os.environ, **PROFILE_ENV["znver3"], **PROFILE_ENV["znver4"]}) == "znver4"
         assert host_cpu({**os.environ, "OPENBLAS_CORETYPE": "Haswell"}) == f"{numpy_level()}/Haswell"
 
 

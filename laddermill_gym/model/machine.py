@@ -26,11 +26,11 @@ KERNEL_VARIABLES = ("NPY_DISABLE_CPU_FEATURES", "NPY_ENABLE_CPU_FEATURES", "OPEN
 #: SkylakeX's (the LQR's gusts-v1 NTM_IB seed-0 episode gave the same bits with either name of each pair, 2026-12-02)
 SAME_KERNELS = {"Zen": "Haswell", "Cooperlake": "SkylakeX"}
 #: the environment that selects a profile's kernels (numpy level, OpenBLAS kernels) on a machine with AVX-512: numpy's
-#: targets above AVX2 switched off, OpenBLAS's kernels named
+#: targets above AVX2 switched off (or none: an empty value), OpenBLAS's kernels named
 KERNEL_ENV = {("X86_V3", "Haswell"): {"NPY_DISABLE_CPU_FEATURES": "X86_V4 AVX512_ICL AVX512_SPR",
                                       "OPENBLAS_CORETYPE": "Haswell"},
-              ("AVX512_ICL", "Haswell"): {"OPENBLAS_CORETYPE": "Haswell"},
-              ("AVX512_ICL", "SkylakeX"): {"OPENBLAS_CORETYPE": "SkylakeX"}}
+              ("AVX512_ICL", "Haswell"): {"NPY_DISABLE_CPU_FEATURES": "", "OPENBLAS_CORETYPE": "Haswell"},
+              ("AVX512_ICL", "SkylakeX"): {"NPY_DISABLE_CPU_FEATURES": "", "OPENBLAS_CORETYPE": "SkylakeX"}}
 
 
 def numpy_simd_level() -> str:
