@@ -14,11 +14,9 @@ from docsite.ledger_kinds import Printed
 PRINTED = Printed('wp_controller_measure', (
     'yes when they are within 1 %, 1 %, 0.1 m and 0.01 rad;',  # the summary's head prints the tolerances
     'The two references agree to 2e-9 m in the lateral offsets',  # the largest of the four runs' (1.6e-09)
-    'and 6e-11 in tension and power.',  # the largest of the four runs' (5.7e-11)
     # the controller table's rows: RK4's and ROS34PW2's fastest runs meeting the tolerances, their errors
     '0.0222 s (1.4e-4, 4.6e-6, 6.0e-5 m, 6.3e-5 rad) | 0.0667 s | 1.6e-3, 9.4e-5, **0.098 m**, 4.4e-3 rad |',
     '0.0222 s (3.6e-6, 7.6e-6, 4.2e-7 m, 1.7e-6 rad) | **0.2 s** | 3.1e-4, 7.9e-5, 0.016 m, 5.9e-4 rad |',
-    '0.0154 s (5.3e-5, 7.3e-5, 1.8e-4 m, 3.1e-5 rad) | 0.0167 s | 1.1e-3, 2.5e-4, 0.026 m, 4.6e-3 rad |',
     '0.0154 s (1.7e-5, 2.8e-5, 1.2e-6 m, 9.3e-7 rad) | **0.2 s** | 1.3e-3, 1.7e-4, 0.027 m, 2.1e-3 rad |',
     # the reading's errors, from the table of runs (relative errors printed as fractions, quoted in %)
     'On the chain ROS34PW2 at 0.2 s is within 2.8 % in tension and 0.14 % in power, but 0.34 m and 0.029 rad off; '
@@ -30,14 +28,25 @@ PRINTED = Printed('wp_controller_measure', (
     # the ros2t / ros34pw2a table (the review's #10): the 10 s runs' steps and errors
     'ladder_chain: 0.0222 s | 0.0667 s (1.6e-3, 9.4e-5, 0.098 m, 4.4e-3 rad):',
     '| 0.0333 s (2.2e-3, 9.3e-5, 0.049 m, 3.6e-3 rad):',
-    'laddermill: 0.0154 s | 0.0167 s (1.1e-3, 2.5e-4, 0.026 m, 4.6e-3 rad):',
     '| 0.0167 s (1.9e-3, 4.8e-4, 0.092 m, 5.9e-3 rad):',
     '( : chain 0.025 s,',
     'on the chain at 0.0667 s it is 0.47 m off', '(ROS34PW2 0.098,', 'ROS2 0.33),',
     'from 0.025 to 0.0125 s 0.020, 0.0089, 0.0051 m',
 ))
 
+#: the figures whose last digit moves with the numeric profile (docsite/host_cpu.py): the references' agreement and
+#: the mill's 10 s ROS34PW2 power error, znver4's (2026-11-30; printed again with its settings on 2026-12-02) and
+#: this project's AMD EPYC's own (AVX512_ICL/Haswell, 2026-12-02)
+PER_PROFILE = (
+    Printed('wp_controller_measure', (
+        'and 6e-11 in tension and power on znver4', '2.5e-4 on znver4',
+        '0.0154 s (5.3e-5, 7.3e-5, 1.8e-4 m, 3.1e-5 rad) | 0.0167 s | 1.1e-3, 2.5e-4, 0.026 m, 4.6e-3 rad |',
+        'laddermill: 0.0154 s | 0.0167 s (1.1e-3, 2.5e-4, 0.026 m, 4.6e-3 rad):'), cpu="znver4"),
+    Printed('wp_controller_measure', ('(5e-11 on AVX512_ICL/Haswell,', 'and 2.6e-4 there,'), cpu="AVX512_ICL/Haswell"),
+)
+
 GIVEN = (
+    '2026-12-02: these last digits,',  # the day the two profiles' runs were compared
     'their 3-2-1 Euler angles', '(one numba thread, the least of 3 repeats)',  # the study's measure and --repeats
     # the runs' scenes and durations (the commands' --time)
     'ladder_chain (10 s) |', 'ladder_chain (5 s) |', 'laddermill (10 s) |', 'laddermill (5 s) |',

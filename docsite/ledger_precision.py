@@ -38,7 +38,7 @@ STRESS_PRINTED = (
     # laddermill at 8 "dt_estimate_s=2.846e-06"
     '(its 5 ms step is flagged above the estimated 1.35 ms limit for 8 elements;',
     "(the mill's RK4 limit at 8 elements is 2.8 us).",
-    'the mill, started at rest with its cable moving, settles (height +0.045 m, tension -8.3 kN, kinetic',
+    'the mill, from rest with its cable moving, settles (height +0.045 m, tension -8.3 kN, kinetic',
     'energy 1.1e5 J to 1.2e4 J).',
     '- Env episodes: TetheredWing-v0 10,048 episodes (all to the 5 s limit), Rotorcraft-v0 10,000 (8,154 to the '
     'limit, 1,846',
@@ -295,6 +295,7 @@ WORK_PRECISION = Covered(
             'at the start,',
         )),
         controller_measure.PRINTED,  # docsite/ledger_controller_measure.py
+        *controller_measure.PER_PROFILE,  # the same group's figures per numeric profile (docsite/host_cpu.py)
         controller_measure.STABILITY,  # |R(inf)|, |R(4i)|: tests/test_stability_functions.py
         controller_measure.WHIP_MODE,  # the mill's mode at 7.6 s: whip_spectrum --top 2000
         # split to the printed lines they come from (--long whip_spectrum, 2026-11-30, 63 s: every cell as written)
