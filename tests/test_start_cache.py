@@ -24,6 +24,7 @@ from laddermill_gym.envs.rotorcraft.trim import craft_trim, trim_on_disk, untrim
 from laddermill_gym.envs.task import scene_trim
 from laddermill_gym.ladder.scene import load_scene, options_key, options_kwargs
 from laddermill_gym.model import disk_cache
+from laddermill_gym.model.machine import ABOVE_AVX2
 from laddermill_gym.model.packing import table_spline
 
 WING = ("tethered_wing", options_key({"elements_per_piece": 1, "method": "ros34pw2"}))
@@ -194,7 +195,7 @@ def test_the_key_follows_the_kernels_numpy_and_openblas_choose():
 
     base = _kernel_probe({"OPENBLAS_CORETYPE": "Haswell"})
     assert _kernel_probe({"OPENBLAS_CORETYPE": "Haswell"}) == base
-    others = [{"OPENBLAS_CORETYPE": "Haswell", "NPY_DISABLE_CPU_FEATURES": "X86_V4 AVX512_ICL AVX512_SPR"}]
+    others = [{"OPENBLAS_CORETYPE": "Haswell", "NPY_DISABLE_CPU_FEATURES": ABOVE_AVX2}]
     avx512 = bool(ll.get_host_cpu_features().get("avx512f"))
     if avx512:
         others.append({"OPENBLAS_CORETYPE": "SkylakeX"})

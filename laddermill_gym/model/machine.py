@@ -18,16 +18,19 @@ another would (:data:`KERNEL_ENV`).
 
 from __future__ import annotations
 
-__all__ = ["KERNEL_VARIABLES", "KERNEL_ENV", "SAME_KERNELS", "numpy_simd_level", "blas_kernels", "kernel_profile"]
+__all__ = ["ABOVE_AVX2", "KERNEL_VARIABLES", "KERNEL_ENV", "SAME_KERNELS", "numpy_simd_level", "blas_kernels",
+           "kernel_profile"]
 
 #: the environment variables that change which kernels numpy and OpenBLAS run on the same CPU
 KERNEL_VARIABLES = ("NPY_DISABLE_CPU_FEATURES", "NPY_ENABLE_CPU_FEATURES", "OPENBLAS_CORETYPE")
 #: OpenBLAS kernel names that compute as another's: its Zen target builds on the Haswell kernels, Cooperlake on
 #: SkylakeX's (the LQR's gusts-v1 NTM_IB seed-0 episode gave the same bits with either name of each pair, 2026-12-02)
 SAME_KERNELS = {"Zen": "Haswell", "Cooperlake": "SkylakeX"}
+#: numpy's dispatch targets above AVX2 (``NPY_DISABLE_CPU_FEATURES`` with these runs its AVX2 loops)
+ABOVE_AVX2 = "X86_V4 AVX512_ICL AVX512_SPR"
 #: the environment that selects a profile's kernels (numpy level, OpenBLAS kernels) on a machine with AVX-512: numpy's
 #: targets above AVX2 switched off (or none: an empty value), OpenBLAS's kernels named
-KERNEL_ENV = {("X86_V3", "Haswell"): {"NPY_DISABLE_CPU_FEATURES": "X86_V4 AVX512_ICL AVX512_SPR",
+KERNEL_ENV = {("X86_V3", "Haswell"): {"NPY_DISABLE_CPU_FEATURES": ABOVE_AVX2,
                                       "OPENBLAS_CORETYPE": "Haswell"},
               ("AVX512_ICL", "Haswell"): {"NPY_DISABLE_CPU_FEATURES": "", "OPENBLAS_CORETYPE": "Haswell"},
               ("AVX512_ICL", "SkylakeX"): {"NPY_DISABLE_CPU_FEATURES": "", "OPENBLAS_CORETYPE": "SkylakeX"}}

@@ -32,7 +32,7 @@ from pathlib import Path
 
 from tqdm import tqdm
 
-from laddermill_gym.model.machine import KERNEL_VARIABLES
+from laddermill_gym.model.machine import ABOVE_AVX2, KERNEL_VARIABLES
 
 #: what a process of the study prints first: the CPU numba compiles for, numpy's SIMD level, OpenBLAS's kernels
 PROFILE_CODE = ("from laddermill_gym.model.machine import kernel_profile; import numba.core.config as c; "
@@ -56,7 +56,7 @@ def variants() -> dict[str, dict | None]:
     return {"reference": base,
             "numba AVX2": {**base, "NUMBA_CPU_NAME": "haswell", "NUMBA_CPU_FEATURES": avx2_features()},
             "numba generic": {**base, "NUMBA_CPU_NAME": "generic"},
-            "numpy AVX2": {**base, "NPY_DISABLE_CPU_FEATURES": "X86_V4 AVX512_ICL AVX512_SPR"},
+            "numpy AVX2": {**base, "NPY_DISABLE_CPU_FEATURES": ABOVE_AVX2},
             "OpenBLAS SkylakeX": {"OPENBLAS_CORETYPE": "SkylakeX"} if avx512 else None}
 
 
