@@ -256,3 +256,45 @@ def test_a_failed_warm_up_is_named_in_a_warning():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert fine.wait() == 0 and fine.wait() == 0  # idempotent, silent
+
+
+def test_on_two_cores_the_trim_waits_for_the_callees_line_not_the_end(monkeypatch):
+    # oracle: the child processes themselves: each prints (or not) and then sleeps a minute, so a wait that returns
+    # while the child still runs cannot have waited for its end
+    def child(code):
+        return kernel_warmup.Warmup(subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE))
+
+    line = f"print('other output'); print({kernel_warmup.CALLEES_DONE!r}, flush=True); import time; time.sleep(60)"
+    silent = "import time; time.sleep(60)"
+    monkeypatch.setattr(kernel_warmup, "usable_cores", lambda: 2)
+    ws = [child(line), child(line), None, kernel_warmup.PeerWarmup(None)]
+    try:
+        kernel_warmup.await_callees(ws)
+        assert all(w.proc.poll() is None for w in ws[:2])  # both lines read, neither child waited for
+        monkeypatch.setattr(kernel_warmup, "usable_cores", lambda: kernel_warmup.SHARED_CORES)
+        ws.append(child(silent))
+        kernel_warmup.await_callees(ws[-1:])  # cores enough: no wait for a line that never comes
+        assert ws[-1].proc.poll() is None
+    finally:
+        for w in ws:
+            if w is not None:
+                w.stop()
+
+
+def test_the_wing_warm_ups_print_the_line_and_only_a_w_method_waits_for_it(monkeypatch, capsys):
+    # oracle: what the warm-up functions print, and the arguments the task hands kernel_warmup (recorded)
+    from laddermill_gym.envs import task as wing_task
+    from laddermill_gym.envs import task_warmup
+
+    monkeypatch.setattr(task_warmup, "wing_calls", lambda kwargs: [])
+    monkeypatch.setattr(task_warmup, "_build_and_step", lambda cls, kwargs: print("built"))
+    task_warmup.compile_wing_tail({})
+    task_warmup.compile_wing({})
+    assert capsys.readouterr().out.split("\n") == [kernel_warmup.CALLEES_DONE, kernel_warmup.CALLEES_DONE, "built", ""]
+    started, awaited = [], []
+    monkeypatch.setattr(kernel_warmup, "start", lambda target, kw, kernels, check, signals: started.append(signals))
+    monkeypatch.setattr(kernel_warmup, "await_callees", lambda ws: awaited.append(len(ws)))
+    for step in ("ros34pw2", "rk4"):
+        with pytest.raises(ValueError, match="no_such_scene"):
+            wing_task.WingTask(scene="no_such_scene", physics_step=step)
+    assert started == [True, True, False] and awaited == [2, 1]

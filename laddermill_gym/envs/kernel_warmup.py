@@ -19,12 +19,15 @@ step kernel's compile reaches them, from their argument types (``dispatcher.comp
 with a W-method step starts two processes (an RK4 step has no such list): the second takes that list from its
 other end, so the two share it through numba's cache (a callee compiled by one is loaded by the other; at most the
 one both reach together is compiled twice) while this process solves the trim; without it the first process
-compiled the whole step tree alone while this one waited.
+compiled the whole step tree alone while this one waited. Each prints :data:`CALLEES_DONE` when its share is done;
+on a machine with fewer than three cores this process waits for both lines before its trim (:func:`await_callees`),
+so that the trim's compile runs beside the step kernel's own, whose nested layers compile one after the other on
+one core, instead of slowing the callees that all three processes would otherwise share two cores for.
 The craft's target leaves out the right-hand side's kernels, which this process compiles for its trim with the
 same types: the step kernel's compile then loads them from the cache instead of compiling them again.
 
 This moves CPU seconds to the other core; it removes none: the wall time shrinks only when a second core is free
-(docs/benchmarks.md, "Cold start"). ``LADDERMILL_KERNEL_WARMUP=off`` (:data:`SWITCH`) switches it off for every
+(docs/cold_start.md). ``LADDERMILL_KERNEL_WARMUP=off`` (:data:`SWITCH`) switches it off for every
 env; it is also off when numba's JIT is disabled, when the kernels are already compiled in this process or (for
 :func:`start` with ``cached_check``) already in numba's on-disk cache. Any failure of the second process only
 costs its time: this process then compiles what it still needs. Env processes started together (SB3's
@@ -47,8 +50,8 @@ import sys
 import time
 import warnings
 
-__all__ = ["SWITCH", "CHILD_MODULE", "PeerWarmup", "Warmup", "cache_directory", "claim", "enabled", "on_disk",
-           "start", "stopped_on_error"]
+__all__ = ["SWITCH", "CALLEES_DONE", "CHILD_MODULE", "PeerWarmup", "Warmup", "await_callees", "cache_directory",
+           "claim", "enabled", "on_disk", "start", "stopped_on_error", "usable_cores"]
 
 #: the environment variable that switches the warm-up off (value ``off``)
 SWITCH = "LADDERMILL_KERNEL_WARMUP"
@@ -58,6 +61,12 @@ CHILD_MODULE = "laddermill_gym.envs.warmup_run"
 #: loaded machine; past this it is stopped and this process compiles what it still needs). The warm-ups a task
 #: starts together share it: waiting for two costs at most this, not twice it.
 WAIT_LIMIT_S = 900.0
+#: the line a wing warm-up process prints once its share of the step kernel's callees is in numba's cache
+#: (``envs/task_warmup.py``; :func:`await_callees`)
+CALLEES_DONE = "callees compiled"
+#: below this many usable cores the first process waits for the callees before compiling its own kernels
+#: (:func:`await_callees`)
+SHARED_CORES = 3
 
 
 class Warmup:
@@ -68,6 +77,7 @@ class Warmup:
         self.proc = proc
         self.returncode: int | None = None
         self.deadline = time.monotonic() + WAIT_LIMIT_S  # [s] on the monotonic clock
+        self._unread = b""  # what the process printed after the last line :meth:`wait_for` found
 
     def _left(self) -> float:
         """Seconds left until :attr:`deadline` (0 past it)."""
@@ -75,17 +85,24 @@ class Warmup:
 
     def wait_for(self, line: str) -> bool:
         """Wait (until :attr:`deadline`) until the process prints ``line`` on its standard output (started
-        with ``signals``); False when it ended, was waited for or closed its output first."""
+        with ``signals``); False when it ended, was waited for or closed its output first. Reads the pipe's
+        descriptor itself (``os.read``), keeping what follows the line for the next call: a buffered ``readline``
+        after ``select`` would hold a second line in its buffer, unseen by ``select``, until the process ends."""
         out = None if self.proc is None else self.proc.stdout
         if out is None:
             return False
-        while select.select([out], [], [], self._left())[0]:
-            got = out.readline()
-            if not got:
+        want = line.encode()
+        while True:
+            while b"\n" in self._unread:
+                got, self._unread = self._unread.split(b"\n", 1)
+                if got.strip() == want:
+                    return True
+            if not select.select([out], [], [], self._left())[0]:
                 return False
-            if got.decode(errors="replace").strip() == line:
-                return True
-        return False
+            chunk = os.read(out.fileno(), 65536)
+            if not chunk:
+                return False
+            self._unread += chunk
 
     def wait(self) -> int | None:
         """Wait for the process; its exit code (None if it had to be stopped). A process that failed or was stopped
@@ -114,6 +131,32 @@ class Warmup:
             if self.proc.stdout is not None:
                 self.proc.stdout.close()
             self.proc = None
+
+
+def usable_cores() -> int:
+    """The cores this process may run on (its CPU affinity where the system tells it, else ``os.cpu_count``)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
+def await_callees(warmups) -> None:
+    """With fewer than :data:`SHARED_CORES` usable cores, wait until every warm-up process of ``warmups`` (started
+    with ``signals``) has printed :data:`CALLEES_DONE` (or ended; a :class:`PeerWarmup` or None is not waited for).
+
+    The wing's cold start with a W-method step (issue 32 point 1): two warm-up processes compile the step kernel's
+    callees, then one of them compiles the step kernel itself, whose compile waits on each callee in turn and so
+    runs on one core; this process compiles the in-plane kernels of its trim. On two cores three compiling
+    processes share them, and the step kernel's chain, which decides when the env can step, starts only once
+    the callees are done: called before the trim, this makes the trim's compile run beside that chain on the core
+    it leaves free instead of slowing the callees. Where there are cores enough for all three it returns at once.
+    The same kernels are compiled, in other processes or at other times: the same machine code, the same bits."""
+    if usable_cores() >= SHARED_CORES:
+        return
+    for warmup in warmups:
+        if isinstance(warmup, Warmup):
+            warmup.wait_for(CALLEES_DONE)
 
 
 @contextlib.contextmanager

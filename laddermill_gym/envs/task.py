@@ -164,8 +164,10 @@ class WingTask(TaskCore):
         # shares the W method's callees (an RK4 step has none worth a process: task_warmup.step_callees)
         kernels = (step_observe_batch, step_observe_serial)
         targets = (WARMUP_TARGET, WARMUP_TAIL_TARGET) if options.get("method") in W_METHODS else (WARMUP_TARGET,)
-        warmups = [kernel_warmup.start(target, task_kwargs, kernels, True) for target in targets]
+        two = len(targets) > 1  # they print when their callees are done (the trim may wait for that)
+        warmups = [kernel_warmup.start(target, task_kwargs, kernels, True, two) for target in targets]
         with kernel_warmup.stopped_on_error(warmups):  # a failed construction leaves no warm-up running
+            kernel_warmup.await_callees(warmups)  # on two cores: the trim's compile beside the step kernel's
             sc, x_trim, u_trim = scene_trim(str(scene), options_key(options))
             asm = sc.assembly
             if asm.dim != 3:

@@ -16,6 +16,8 @@ import time
 
 import numpy as np
 
+from laddermill_gym.envs.kernel_warmup import CALLEES_DONE
+
 #: the longest wait of the craft's warm-up for the first process's trim to compile the right-hand side [s] (a cold
 #: trim compiles it in about 12 s of CPU; past the wait, or when the trim was on disk and compiled nothing, this
 #: process compiles it itself)
@@ -194,6 +196,7 @@ def compile_wing(task_kwargs: dict) -> None:
     from laddermill_gym.envs import task as wing_task
 
     compile_ahead(wing_calls(task_kwargs))
+    print(CALLEES_DONE, flush=True)  # the first process may compile its trim now (kernel_warmup.await_callees)
     wing_task.scene_trim = stand_in_wing_trim
     _build_and_step(wing_task.WingTask, task_kwargs)
 
@@ -203,6 +206,7 @@ def compile_wing_tail(task_kwargs: dict) -> None:
     :func:`compile_wing`'s: each compiles those the other has not written to numba's cache yet, so the two share
     them (at most the one both reach together is compiled twice) while the first process solves the trim."""
     compile_ahead(wing_calls(task_kwargs)[::-1])
+    print(CALLEES_DONE, flush=True)
 
 
 def compile_craft(task_kwargs: dict) -> None:
