@@ -38,3 +38,36 @@ def test_cli_quick_startup_runs(capsys, monkeypatch):
     monkeypatch.setattr(startup, "QUICK_ENVS", (ENV,))
     assert cli_main(["bench", "--startup", "--quick"]) == 0
     assert "0 functions compiled" in capsys.readouterr().out
+
+
+def test_the_compile_trace_records_each_top_level_compile_once(tmp_path):
+    # oracle: the script below compiles a kernel that calls another (the callee compiled inside the caller's
+    # compile), then a third function at the top level; numba's cache is off, so each compiles in this process
+    import json
+    import subprocess
+    import sys
+
+    from laddermill_gym.envs import compile_trace
+
+    script = f"""
+from numba import njit
+from laddermill_gym.envs import compile_trace
+compile_trace.record({str(tmp_path)!r}, "a.b:c")
+@njit
+def inner(x):
+    return x + 1.0
+@njit
+def outer(x):
+    return inner(x) * 2.0
+@njit
+def alone(x):
+    return x - 1.0
+print(outer(1.0), alone(1.0))
+"""
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["4.0", "0.0"]
+    (trace,) = compile_trace.read(str(tmp_path))
+    assert trace["label"] == "a.b:c" and json.loads((tmp_path / f"{trace['pid']}.json").read_text()) == trace
+    names = [r["name"].rpartition(".")[2] for r in trace["rows"]]
+    assert names == ["outer", "alone"]  # inner compiled inside outer: not a row of its own
+    assert all(r["start"] <= r["end"] for r in trace["rows"]) and trace["rows"][0]["end"] <= trace["rows"][1]["start"]

@@ -22,11 +22,15 @@ def main() -> int:
     import os
     import warnings
 
+    from laddermill_gym.envs import compile_trace
     from laddermill_gym.envs.kernel_warmup import SWITCH
 
     os.environ[SWITCH] = "off"  # the tasks it builds start no warm-up of their own
     warnings.simplefilter("ignore")
-    run(*pickle.loads(sys.stdin.buffer.read()))
+    target, task_kwargs = pickle.loads(sys.stdin.buffer.read())
+    if os.environ.get(compile_trace.VARIABLE):  # the start-up profile's timeline (envs/compile_trace.py)
+        compile_trace.record(os.environ[compile_trace.VARIABLE], target)
+    run(target, task_kwargs)
     return 0
 
 

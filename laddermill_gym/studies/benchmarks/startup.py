@@ -9,7 +9,8 @@ included) and from the inside (the imports to the first step); the child
 also counts the functions numba compiled (``numba.core.event``), so a warm start that compiles anything shows it.
 ``--profile`` (``python -m laddermill_gym.studies.benchmarks.startup --profile --envs ID``) takes one cold start
 with every compile timed (:data:`PROFILE_CHILD`) and prints where the seconds go, phase by phase (make, which
-computes the mill's operating point, reset, step) and function by function.
+computes the mill's operating point, reset, step) and function by function, then a timeline of what each process
+compiled when: the process itself and its kernel warm-up processes (``envs/compile_trace.py``).
 Machines are shared and noisy: the warm start is the median of a few runs; compare cold starts taken in the same
 period. The targets are issue 32's: TetheredWing-v0 and Rotorcraft-v0 at most 20 s cold and 1 s warm,
 LadderMill-v0 (its operating point included) at most 60 s cold.
@@ -26,6 +27,7 @@ import sys
 import tempfile
 import time
 
+from laddermill_gym.envs import compile_trace
 from laddermill_gym.envs.laddermill.op_cache import CACHE_VARIABLE
 
 #: env id -> (cold target [s], warm target [s] or None): issue 32, point 1
@@ -78,6 +80,7 @@ print(json.dumps({{"inside_s": seconds, "cpu_s": use.ru_utime + use.ru_stime, "c
 #: on one thread: CPU seconds are what a loaded machine does not inflate), and the phase (make, reset, step)
 PROFILE_CHILD = """import time
 t0 = time.perf_counter()
+epoch0 = time.time()
 import json
 from numba.core import event
 stack, rows, phase = [], [], ["import"]
@@ -86,6 +89,7 @@ class Tree(event.Listener):
         f = ev.data["dispatcher"].py_func
         row = {{"name": f.__module__ + "." + f.__qualname__, "depth": len(stack), "phase": phase[0],
                "start": time.perf_counter(), "inner": 0.0, "cpu_start": time.process_time(), "cpu_inner": 0.0}}
+        row["at"] = time.time()
         rows.append(row)
         stack.append(row)
     def on_end(self, ev):
@@ -119,7 +123,7 @@ import resource
 use = resource.getrusage(resource.RUSAGE_SELF)
 kids = resource.getrusage(resource.RUSAGE_CHILDREN)
 print(json.dumps({{"inside_s": seconds, "cpu_s": use.ru_utime + use.ru_stime, "rows": rows, "phases": phases,
-                  "cpu_children_s": kids.ru_utime + kids.ru_stime}}))
+                  "cpu_children_s": kids.ru_utime + kids.ru_stime, "epoch0": epoch0}}))
 """
 
 
@@ -127,7 +131,10 @@ def profile(env_id: str, top: int = 25, echo=print) -> dict:
     """One cold start of ``env_id`` (new, empty numba and operating-point caches) with every compile timed: prints
     the functions with the most seconds of their own and the seconds per phase; returns the child's figures."""
     with tempfile.TemporaryDirectory(prefix="laddermill_numba_") as tmp:
-        res = run_child(env_id, tmp, PROFILE_CHILD)
+        trace = os.path.join(tmp, "compile_trace")
+        os.makedirs(trace)
+        res = run_child(env_id, tmp, PROFILE_CHILD, {compile_trace.VARIABLE: trace})
+        res["warmups"] = compile_trace.read(trace)
     rows = res["rows"]
     cpu = res["phases"]
     echo(f"== compile profile {env_id}: cold start {res['wall_s']:.1f} s (inside {res['inside_s']:.1f} s, CPU "
@@ -141,15 +148,35 @@ def profile(env_id: str, top: int = 25, echo=print) -> dict:
     for r in sorted(rows, key=lambda r: -r["self_cpu_s"])[:top]:
         echo(f"  {r['self_cpu_s']:12.2f} {r['total_cpu_s']:13.2f} {r['self_s']:13.2f}  {r['phase']:5s}  {r['name']} "
              f"({r['depth']})")
+    timeline(res, echo)
     return res
 
 
-def run_child(env_id: str, cache_dir: str | None, child: str = CHILD) -> dict:
+def timeline(res: dict, echo=print) -> None:
+    """Print when each process of a profiled cold start compiled its top-level functions (their callees inside),
+    in seconds from the start-up's first line: the process itself (its rows of nesting depth 0) and each kernel
+    warm-up process (``envs/compile_trace.py``), so the seconds a core waits show."""
+    t0 = res["epoch0"]
+    procs = [("this process", [{"name": r["name"], "start": r["at"], "end": r["at"] + r["total_s"]}
+                               for r in res["rows"] if r["depth"] == 0])]
+    procs += [(f"warm-up {t['label'].rpartition(':')[2]} (pid {t['pid']})", t["rows"]) for t in res["warmups"]]
+    echo("  timeline [s from the start]: top-level compiles of each process (callees inside)")
+    for label, rows in procs:
+        if not rows:
+            continue
+        busy = sum(r["end"] - r["start"] for r in rows)
+        echo(f"    {label}: {rows[0]['start'] - t0:.1f} to {rows[-1]['end'] - t0:.1f}, compiling {busy:.1f} s")
+        for r in rows:
+            if r["end"] - r["start"] >= 0.5:
+                echo(f"      {r['start'] - t0:6.1f} -> {r['end'] - t0:6.1f}  {r['name']}")
+
+
+def run_child(env_id: str, cache_dir: str | None, child: str = CHILD, extra_env: dict | None = None) -> dict:
     """One start-up of ``env_id`` in a fresh subprocess with ``NUMBA_CACHE_DIR`` = ``cache_dir`` and the mill's
     operating-point cache (``LADDERMILL_CACHE_DIR``, ``envs/laddermill/op_cache.py``) in its ``laddermill``
-    sub-folder (None: this process's environment as it is): the child's figures plus ``wall_s``, the subprocess's
-    wall time [s]."""
-    env = dict(os.environ)
+    sub-folder (None: this process's environment as it is), and ``extra_env`` set: the child's figures plus
+    ``wall_s``, the subprocess's wall time [s]."""
+    env = dict(os.environ, **(extra_env or {}))
     if cache_dir is not None:
         env["NUMBA_CACHE_DIR"] = cache_dir
         env[CACHE_VARIABLE] = os.path.join(cache_dir, "laddermill")
