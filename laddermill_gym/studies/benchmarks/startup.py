@@ -252,7 +252,8 @@ def main(argv=None) -> int:
     p.add_argument("--quick", action="store_true", help="warm starts only, from the current numba cache")
     p.add_argument("--envs", nargs="*", default=None, help="env ids (default: the three with targets)")
     p.add_argument("--profile", action="store_true",
-                   help="one cold start per env with the seconds numba spends compiling each function")
+                   help="one cold start per env with the seconds numba spends compiling each function and a "
+                        "timeline of what each process (the kernel warm-ups too) compiled when")
     args = p.parse_args(argv)
     if args.profile:
         for env_id in args.envs or QUICK_ENVS:
