@@ -288,6 +288,7 @@ def test_the_wing_warm_ups_print_the_line_and_only_a_w_method_waits_for_it(monke
 
     monkeypatch.setattr(task_warmup, "wing_calls", lambda kwargs: [])
     monkeypatch.setattr(task_warmup, "_build_and_step", lambda cls, kwargs: print("built"))
+    monkeypatch.setattr(wing_task, "scene_trim", wing_task.scene_trim)  # compile_wing swaps in its stand-in: restored
     task_warmup.compile_wing_tail({})
     task_warmup.compile_wing({})
     assert capsys.readouterr().out.split("\n") == [kernel_warmup.CALLEES_DONE, kernel_warmup.CALLEES_DONE, "built", ""]
@@ -298,3 +299,11 @@ def test_the_wing_warm_ups_print_the_line_and_only_a_w_method_waits_for_it(monke
         with pytest.raises(ValueError, match="no_such_scene"):
             wing_task.WingTask(scene="no_such_scene", physics_step=step)
     assert started == [True, True, False] and awaited == [2, 1]
+
+
+def test_the_trim_is_the_real_one_after_the_warm_up_tests():
+    # oracle: the module's own function object; a test above that runs compile_wing in this process must leave it
+    from laddermill_gym.envs import task as wing_task
+    from laddermill_gym.envs import task_warmup
+
+    assert wing_task.scene_trim is not task_warmup.stand_in_wing_trim and wing_task.scene_trim is scene_trim
