@@ -67,7 +67,8 @@ NUMERICS = Covered(
         "These are the bits of the AMD EPYC with AVX2 of 2026-12-01", "this machine prints its 200-field held-out",
         "With numpy's AVX-512 loops these are the bits of the AMD EPYC of 2026-11-30",
         "on a CPU with AVX-512), and the start caches", "read the trim an AVX-512 process had stored",
-        "This machine's own profile (AVX-512 loops, Haswell kernels: its environment"),
+        "This machine's own profile (AVX-512 loops, Haswell kernels: its environment",
+        "(znver4 where it has AVX-512, znver3 on any with AVX2;"),
     timings=(  # one thread, medians on the shared 2-core machine (the page gives no date: measured when written)
         # the kept matrix's CPU per step (jacobian_reuse, 2026-11-30 03:33, load 7.4-7.8; the 4000-step
         # figures were the study's measuring error, corrected in c-batchgap)

@@ -20,7 +20,7 @@ import time
 from pathlib import Path
 
 from docsite.gust_scorecards import scorecards
-from docsite.host_cpu import host_cpu
+from docsite.host_cpu import host_cpu, quoted_profile
 from docsite.long_group import Long
 from docsite.long_tests_craft import CRAFT_TESTS
 from docsite.long_tests_numerics import NUMERICS_TESTS
@@ -263,10 +263,11 @@ LONG = {
 }
 
 
-def argv_env(command: str) -> tuple[list[str], dict]:
-    """(the argument list of ``python -m`` for ``command``, its environment): ``laddermill ...`` is
-    ``laddermill_gym.cli ...``, a leading ``NAME=VALUE`` goes into the environment."""
-    words, env = shlex.split(command), dict(os.environ)
+def argv_env(command: str, settings: dict | None = None) -> tuple[list[str], dict]:
+    """(the argument list of ``python -m`` for ``command``, its environment: this process's with ``settings``
+    added): ``laddermill ...`` is ``laddermill_gym.cli ...``, a leading ``NAME=VALUE`` goes into the environment
+    (over ``settings``)."""
+    words, env = shlex.split(command), {**os.environ, **(settings or {})}
     while words and "=" in words[0] and not words[0].startswith("-"):
         name, _, value = words.pop(0).partition("=")
         env[name] = value
@@ -298,10 +299,16 @@ def measure_long(names: list[str]) -> dict:
     """{"long": {name: {"printed": stdout, "exit": statuses, "stderr": each failed command's stderr tail, "seconds":
     wall, "cpu": the numeric profile of its commands (:func:`docsite.host_cpu.host_cpu`), and a gust bench's "scorecard"
     and "lost_seeds" (:func:`_parsed`)}}} for the named groups (ValueError naming an unknown one); a command exits 1
-    where its study reports a failed case (a wing on the ground), so its output still counts."""
+    where its study reports a failed case (a wing on the ground), so its output still counts. On a machine whose
+    numeric profile no page quotes, the commands run under one it can select (:func:`docsite.host_cpu.quoted_profile`).
+    """
     unknown = [n for n in names if n not in LONG]
     if unknown:
         raise ValueError(f"--long: no long group {unknown} in docsite/long_figures.py; see --long --list")
+    profile, settings = quoted_profile()
+    if settings:
+        print(f"this machine's numeric profile ({host_cpu()}) is not one the pages quote: the long groups run under "
+              f"{profile}'s kernels ({settings}; docsite/host_cpu.py)", flush=True)
     found = {}
     for name in names:
         t0, printed, status, errors = time.perf_counter(), [], [], []
@@ -310,7 +317,7 @@ def measure_long(names: list[str]) -> dict:
             if path.endswith("gust_bench.csv"):  # and the summary whose scorecard the pages check
                 (ROOT / path).with_name("gust_bench.json").unlink(missing_ok=True)
         for command in LONG[name].command.split(" && "):
-            argv, env = argv_env(command)
+            argv, env = argv_env(command, settings)
             proc = subprocess.run([sys.executable, "-m", *argv], cwd=ROOT, env=env, capture_output=True, text=True)
             printed.append(proc.stdout)
             status.append(proc.returncode)

@@ -115,3 +115,54 @@ def test_a_check_marked_for_one_cpu_is_compared_on_that_cpu_only():
     assert check_difference("p.md", page, pattern, ("{g[t]}",), znver4, WORDS, "znver4") is None  # not its table
     wrong = check_difference("p.md", page, pattern, ("{g[t]}",), znver4, WORDS, "znver3")
     assert wrong == "docs/p.md: 'breaks down at 24.0 s' quotes ('24.0',); prints ('35.7',)"
+
+
+def test_a_profile_the_cpu_cannot_run_is_named_not_a_crash():
+    """The AVX-512 profile's settings on a CPU without AVX-512: OpenBLAS's SkylakeX kernels die of SIGILL in the
+    fresh process; host_cpu names the settings and the cause, selects says no. Where the CPU has AVX-512 both quoted
+    profiles are selected."""
+    import llvmlite.binding as ll
+
+    from docsite.host_cpu import PROFILE_ENV, selects
+
+    assert selects("znver3")  # any x86-64 with AVX2
+    if ll.get_host_cpu_features().get("avx512f"):
+        assert selects("znver4")
+        return
+    assert not selects("znver4")
+    with pytest.raises(RuntimeError, match=r"'OPENBLAS_CORETYPE': 'SkylakeX'.*died of SIGILL: this CPU lacks"):
+        host_cpu({**os.environ, **PROFILE_ENV["znver4"]})
+
+
+def test_a_machine_of_an_unquoted_profile_measures_under_a_quoted_one():
+    """A process whose OpenBLAS runs its Nehalem kernels (a profile no page quotes) is told to run the pages'
+    commands under the first quoted profile the CPU selects, and a fresh process under those settings is of that
+    profile (oracle: the profile it reports); under a quoted profile nothing is added."""
+    import json
+    import subprocess
+
+    from docsite.host_cpu import PROFILE_ENV, PROFILES
+
+    code = "import json; from docsite.host_cpu import quoted_profile; print(json.dumps(quoted_profile()))"
+
+    def asked(env):
+        out = subprocess.run([sys.executable, "-c", code], env=env, cwd=ROOT, capture_output=True, text=True,
+                             check=True)
+        return json.loads(out.stdout)
+
+    unquoted = {**os.environ, "OPENBLAS_CORETYPE": "Nehalem"}
+    assert host_cpu(unquoted).endswith("/Nehalem")
+    name, settings = asked(unquoted)
+    assert name in PROFILES and settings == PROFILE_ENV[name]
+    assert host_cpu({**unquoted, **settings}) == name
+    assert asked({**os.environ, **PROFILE_ENV["znver3"]}) == ["znver3", {}]
+
+
+def test_a_long_groups_own_settings_win_over_the_profiles():
+    """A long group's command that names a kernel setting itself keeps it (the machine_bits study's runs)."""
+    from docsite.long_figures import argv_env
+
+    argv, env = argv_env("OPENBLAS_CORETYPE=Zen python -m laddermill_gym.cli bench",
+                         {"OPENBLAS_CORETYPE": "Haswell", "NPY_DISABLE_CPU_FEATURES": "AVX512_ICL"})
+    assert argv == ["laddermill_gym.cli", "bench"]
+    assert env["OPENBLAS_CORETYPE"] == "Zen" and env["NPY_DISABLE_CPU_FEATURES"] == "AVX512_ICL"

@@ -16,7 +16,7 @@ import pytest
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from docsite.page_figures import coverage, measure_pages, pages_differences  # noqa: E402
+from docsite.page_figures import coverage, pages_differences  # noqa: E402
 from docsite.page_ledger import LEDGER  # noqa: E402
 from docsite.page_numbers import numbers, prose  # noqa: E402
 from docsite.pictures import PICTURES, drawn, embedded  # noqa: E402
@@ -72,15 +72,15 @@ def test_the_page_check_names_a_changed_figure():
 
 
 @pytest.mark.slow
-def test_the_covered_pages_figures_are_what_their_commands_print():
+def test_the_covered_pages_figures_are_what_their_commands_print(tmp_path, capsys):
     """``python -m docsite.readme_figures --skip-readme --pages``: every page's checks re-run (the groups of
     docsite/page_figures.py: 28 groups in 22 minutes on the 2-core machine with one thread at a load of 1-2.4,
     about 70 at a load of 13, 2026-11-29; six groups added later that night about 11 minutes more at a load of 4-6;
     each group's cost is in that module's docstring)."""
-    from docsite.readme_figures import main_job
+    from docsite.readme_figures import main
 
-    measured = measure_pages(more={"main_job": main_job})["pages"]
-    assert not pages_differences(measured), pages_differences(measured)
+    status = main(["--skip-readme", "--pages", "--out", str(tmp_path / "pages.json")])  # under a quoted profile
+    assert status == 0, capsys.readouterr().out[-6000:]
 
 
 def test_the_training_tables_are_the_shipped_training_curves():
