@@ -149,6 +149,25 @@ COLD_START = Covered(
         "kernel's chain on one (14 s), about 27 s here. Inlining into the step kernel, tried again (2026-12-02): the "
         "same bits (400 random steps of the single env, and gusts-v1's NTM_IB, EOG_IA and ECD_IA under the LQR, "
         'hashed) and no gain (warm-up off, 62.8 s CPU against 60.9 s), as on 2026-11-30.',
+        # the same code on the evening's slower AVX2 machine (bench --startup, --profile, two tries not kept)
+        '## The same code on a slower machine (2026-12-02 evening)',
+        "The evening's machine was another 2-core AMD EPYC, with AVX2 only (numpy's AVX2 loops, OpenBLAS's Haswell "
+        'kernels: the znver3 profile) and about half as fast at compiling. at ba5f8e6 (18:27-18:31, load 1.2-1.5): '
+        'TetheredWing-v0 64.8 s cold, 2.06 s warm; Rotorcraft-v0 62.0 s, 2.27 s; LadderMill-v0 89.0 s, 2.06 s, so the'
+        " mill's 60 s and the 1 s warm start are not met there either. Its timeline ( , 17:43): the callees done at "
+        "28-29 s, the step kernel's chain 29.2 to 52.0 s, the trim 30.3 to 40.4 s beside it, the read-outs to 54.3 s;"
+        " with the warm-up off, 100.4 s (the chain's own compiles: 11.6 s, 9.5 s, 7.7 s). The warm start's 1.5 s "
+        "inside the process is mostly imports: numba's checks for BLAS when it loads, which imports (0.28 s with what"
+        ' it pulls in), numba itself 0.35 s, gymnasium 0.22 s ( ).',
+        'Tried, not kept, both alternated with the code before (e6b027c) with the caches empty: the second warm-up '
+        "compiling the observation's callee and then the read-outs (the actions' pass and clip, the reward's read-"
+        'outs, from a task built around a stand-in step kernel) after its share of the callees, so that the chain '
+        'starts earlier and its process ends with it: one pair (18:11-18:14) 59.1 -> 67.1 s; its timeline showed the '
+        "chain starting at 28.3 s all the same (the second warm-up's right-hand side compiled the assembly's nested "
+        "callees a second time beside the first's). The read-outs alone moved there: the step kernel's process then "
+        'ends with the chain (60.5 s, nothing after), but three alternations (18:17-18:25) gave 59.8 / 69.0 / 61.8 s '
+        "before and 67.2 / 61.1 / 66.3 s after: the 2 s it moves is within this machine's scatter (the chain's own "
+        'compile took 23 to 30 s from run to run).',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         # the operating point's search lengths (OperatingPoint.t_settle_s): "LadderMill-v0 (laddermill): search ran
