@@ -57,6 +57,7 @@ BENCHMARKS = Covered(
         'counts above NUMBA_NUM_THREADS or the cpu count are left out with a note) and prints steps/s and the '
         'speed-up over the first count.',
         '### The 101-wing envs on both cores, one W-method step per control period (issue 32 point 3)',
+        '### Where a single-craft copy-step goes (issue 32 point 2, 2026-12-03)',
         '- **Both cores across copies.** A task of 500 states or more (the 101-wing chain, 1313; the mills) steps'
         " its copies on numba's thread pool from 2 copies on ( ; the single-wing envs keep the pool from 32 "
         "copies); the same kernel over copies as the batch kernels, so each copy's arithmetic is the same on one "
@@ -154,6 +155,32 @@ BENCHMARKS = Covered(
         'LadderChain-v0 | 1,658 / 1,644 / 1,596 | 869 / 879 / 820 | 3,107 / 3,159 / 3,096 | **6,584** / 6,631 / '
         '6,374 | 810 / 808 / 761 | | LadderMill-v2 | 1,280 / 1,283 / 1,276 | 671 / 669 / 675 | 2,556 / 2,694 / '
         '2,690 | 4,505 / **4,854** / 4,912 | 554 / 574 / 577',
+        # the single-craft copy-step's parts (env_step_cost, 2026-12-03, a6edb17, AVX2 EPYC, load 0.7-1.0); derived:
+        # 0.86 + 3.68 = 4.54, 3.12 + 13.08 = 16.20; 12.32 / 12.86 = 96 %, 37.56 / 38.05 = 99 %; Jacobians and linear
+        # algebra (2.07 + 0.67 + 0.15 + 0.49) / 12.86 = 26 %, (7.28 + 1.48 + 0.78 + 1.30) / 38.05 = 28 %
+        "(4 min) times each part of the compiled step in a compiled loop over one copy of the env's own "
+        'batch, so no Python dispatch enters a part ( calls each part from Python: about 10 us each, most of '
+        'a one-wing part), and the whole vector step and its kernel per copy at 512 copies, all on one numba '
+        'thread (CPU time, least of 5 rounds). Run on 2026-12-03 (a6edb17, a 2-core AVX2 EPYC, load 0.7-1.0),'
+        ' in us per copy and control period:',
+        '| part | TetheredWing-v0 | Rotorcraft-v0 | |---|---|---| | vector step | 12.86 | 38.05 | | step '
+        'kernel | 12.32 | 37.56 | | ROS34PW2 step | 8.41 | 31.08 | | its assembly, 3 right-hand sides | 0.86,'
+        ' 3.68 | 3.12, 13.08 | | its body and cable Jacobians | 2.07, 0.67 | 7.28, 1.48 | | its '
+        'factorisation, 4 eliminations | 0.15, 0.49 | 0.78, 1.30 | | the observation after it | 1.38 | 5.07 |'
+        ' | rest of the kernel | 2.53 | 1.41 | | Python and numpy (actions, rewards, infos) | 0.54 | 0.49 |',
+        "The rest of the kernel is its own work (the wind's kinks, the copy's views) and what the parts, "
+        "timed on one copy's state again and again, do not pay over 512 different copies (caches, branch "
+        'predictors). 400,000 env steps/s on two threads that share the copies perfectly allow 5.00 us of one'
+        " thread per copy-step, 0.39 of today's; 150,000 allow the rotorcraft 13.33 us, 0.35 of today's. The "
+        'four model evaluations of a ROS34PW2 step (one assembly, three right-hand sides) alone cost 4.54 us '
+        "of the wing's 5.00 and 16.20 us of the rotorcraft's 13.33: with the Jacobians, the linear algebra, "
+        "the observation, the kernel's own work and Python free, the wing would just fit and the rotorcraft "
+        'not. So point 2 cannot be met by trimming around the physics (the step kernel is 96-99 % of the '
+        'vector step, the Jacobians and linear algebra 26-28 %): it needs fewer model evaluations per control'
+        ' period (one ROS2 step makes two; a kept iteration matrix, in docs/numerics.md, saves the Jacobians '
+        "on most steps) and a right-hand side itself about half as costly. Either moves the registered ids' "
+        "bits, on which the gust scorecards and the shipped policies' figures are measured: a new id's work, "
+        "not TetheredWing-v0's or Rotorcraft-v0's.",
         # LadderMill-v3's three runs (lead, 2026-11-30 19:29 UTC, load 0.9-1.4; as printed; the first run's "cpu" 1.00)
         '3 runs (19:29 UTC, load 0.9-1.4): 2,003 (one core), 3,628, **3,593** (median);',
     ),
