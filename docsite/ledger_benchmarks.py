@@ -58,6 +58,8 @@ BENCHMARKS = Covered(
         'speed-up over the first count.',
         '### The 101-wing envs on both cores, one W-method step per control period (issue 32 point 3)',
         '### Where a single-craft copy-step goes (issue 32 point 2, 2026-12-03)',
+        "No many-core machine was lent for point 2's thread scaling; the same rows give its model.",
+        "the wing's 12x needs its Python and numpy work per vector step halved as well.",
         '- **Both cores across copies.** A task of 500 states or more (the 101-wing chain, 1313; the mills) steps'
         " its copies on numba's thread pool from 2 copies on ( ; the single-wing envs keep the pool from 32 "
         "copies); the same kernel over copies as the batch kernels, so each copy's arithmetic is the same on one "
@@ -186,6 +188,11 @@ BENCHMARKS = Covered(
     ),
     derived=(
         '(-2.0 %;',  # 111.19 / 113.44 - 1 = -1.98 %
+        # the single-craft thread-scaling model from the copy-step table's rows (env_step_cost prints it since):
+        # 0.54 / 12.86 = 0.0420, 0.49 / 38.05 = 0.0129; 1 / (s + (1 - s) / 16) = 9.82, 13.41; 12x: s <= 1/45 = 2.2 %
+        'their share of the step (0.54 / 12.86 = 4.2 % for the wing, 0.49 / 38.05 = 1.3 % for the rotorcraft) bounds '
+        'the speed-up on 16 threads to 1 / (s + (1 - s) / 16): 9.8x and 13.4x (the study prints it; 12x needs s at '
+        'most 2.2 %).',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         # laddermill stable-step laddermill --after-transfer (2026-11-30): "after the first wing transfer, at t = 50.00

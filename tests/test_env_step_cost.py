@@ -46,6 +46,8 @@ def test_the_table_is_the_parts_arithmetic():
         line = next(ln for ln in text.splitlines() if name in ln)
         assert f" {value} us" in line, line
     assert "one thread: 83,333 env steps/s; two threads sharing perfectly: 166,667" in text
+    # Amdahl with the serial share 1 / 12: 1 / (1/12 + (11/12) / 16) = 7.11; 12x at 16 threads: s <= 1/45 = 2.2 %
+    assert "Python and numpy's 8.3% of the step (not parallel) bound the speed-up on 16 threads to 7.1x" in text
     assert "needs at most 5.00 us per copy-step (0.42 of today's; the W step alone is 1.80x that)" in text
 
 

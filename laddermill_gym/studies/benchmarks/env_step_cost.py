@@ -200,8 +200,10 @@ def part_costs(env_id: str, n_copies: int = 512, periods: int = 40, loops: int =
 
 
 def table(env_id: str, c: dict[str, float], n_copies: int, target: float | None) -> str:
-    """The printed breakdown [us per copy and control period] with each line's share of the vector step, and the
-    one-thread cost that ``target`` env steps/s on two perfectly shared threads would allow."""
+    """The printed breakdown [us per copy and control period] with each line's share of the vector step, the bound
+    that the serial Python share puts on the speed-up on 16 threads (Amdahl: 1 / (s + (1 - s) / 16); memory
+    bandwidth and the thread pool's own cost come on top), and the one-thread cost that ``target`` env steps/s on
+    two perfectly shared threads would allow."""
     s = int(c["stages"])
     parts = {"assembly": c["assembly"], f"{s - 1} right-hand sides": (s - 1) * c["rhs"],
              "body Jacobian": c["body_jacobian"], "cable Jacobian": c["cable_jacobian"],
@@ -216,6 +218,9 @@ def table(env_id: str, c: dict[str, float], n_copies: int, target: float | None)
     lines += [f"  {name:<42s} {v * 1e6:7.2f} us  {v / c['step']:6.1%}" for name, v in rows]
     lines.append(f"  one thread: {1.0 / c['step']:,.0f} env steps/s; two threads sharing perfectly: "
                  f"{2.0 / c['step']:,.0f}")
+    py = (c["step"] - c["kernel"]) / c["step"]
+    lines.append(f"  Python and numpy's {py:.1%} of the step (not parallel) bound the speed-up on 16 threads to "
+                 f"{1.0 / (py + (1.0 - py) / 16.0):.1f}x (Amdahl; 12x needs at most 2.2 %)")
     if target:
         allow = 2.0 / target
         lines.append(f"  {target:,.0f} env steps/s on two threads needs at most {allow * 1e6:.2f} us per copy-step "
