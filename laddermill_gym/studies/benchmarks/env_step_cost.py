@@ -45,9 +45,10 @@ PARTS = ("w_step", "assembly", "rhs", "body_jacobian", "cable_jacobian", "factor
 # One loop per part, on copy 0, restarting from the saved state x0 where the part changes the state. The bodies are
 # inlined into two sets of loops, with the fastmath flags of the wing step kernels and without (the rotorcraft's):
 # the step's callees are inlined into each loop as into the env's kernel, so each loop compiles them as it does.
-# The W step is w_advance's one step (with its state check), the callee the env's kernel runs: w_step inlined
-# straight into a loop that also builds the copy's views gave wrong states (2026-12-03; not a path the envs take),
-# which tests/test_env_step_cost.py would catch.
+# The W step is w_advance's one step (with its state check), the callee the env's kernel runs. w_step inlined into
+# the same function as copy_views (both inline="always") gave wrong states, while w_step inlined into a function
+# that takes the views as arguments (as w_advance does) gave the env's (2026-12-03): numba's inlining of the two
+# together, not a path the envs take; tests/test_env_step_cost.py would catch it here.
 @njit(cache=True, error_model="numpy", inline="always")
 def _w_steps(n, t, x0, X, U, dt, M, kind, vehicle, WB, AB, limits, tableau):
     Mb, Wb = copy_views(0, M, kind, vehicle, WB, AB)
