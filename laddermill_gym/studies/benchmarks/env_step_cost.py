@@ -36,6 +36,7 @@ from laddermill_gym.kernels.rigid.blocks import copy_blocks, tree_factor, tree_s
 from laddermill_gym.kernels.rigid.body_jacobian import add_body_jacobian
 from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness
 from laddermill_gym.kernels.rigid.rosenbrock import w_advance
+from laddermill_gym.studies.cpu_time import least_cpu
 
 _FM = {"contract", "nsz", "arcp"}
 #: the parts timed in compiled loops, in the order of the printed table
@@ -125,17 +126,6 @@ def loops_for(kernel) -> tuple:
     return _w_steps_plain, _parts_plain
 
 
-def _least(f, rounds: int) -> float:
-    """The least CPU time [s] of ``rounds`` calls of ``f`` (after one warm call that compiles or loads it)."""
-    f()
-    best = np.inf
-    for _ in range(rounds):
-        t0 = time.process_time()
-        f()
-        best = min(best, time.process_time() - t0)
-    return best
-
-
 def part_costs(env_id: str, n_copies: int = 512, periods: int = 40, loops: int = 5000,
                rounds: int = 5) -> dict[str, float]:
     """CPU seconds of one thread per copy and control period of ``env_id``'s native vector env at ``n_copies``
@@ -186,16 +176,16 @@ def part_costs(env_id: str, n_copies: int = 512, periods: int = 40, loops: int =
             kernel(*observe_args)
 
     out = {"step": min(steps), "kernel": min(kern), "stages": float(b.tableau[4].size),
-           "observe": _least(observe, rounds) / (periods * n_copies)}
+           "observe": least_cpu(observe, rounds) / (periods * n_copies)}
     w_steps, parts = loops_for(kernel)
     args = (float(b.t[0]), b.states[0].copy(), b.states, b.controls, b.settings.dt, *b.detached, b.work, b.air,
             b.limits, b.tableau)
-    out["w_step"] = _least(lambda: w_steps(loops, *args), rounds) / loops
+    out["w_step"] = least_cpu(lambda: w_steps(loops, *args), rounds) / loops
     bv0 = np.empty_like(b.work.bv[0])  # scratch: the loops run without numba's runtime (no allocation, no reference
     # counting of the ~40 arrays each call passes: with it, the parts timed alone cost up to 20 % more)
     for which, name in enumerate(PARTS[1:], start=1):
         w_steps(1, *args)  # the part's workspace as a W step from x0 leaves it
-        out[name] = _least(lambda: parts(which, loops, args[0], args[1], bv0, *args[2:]), rounds) / loops
+        out[name] = least_cpu(lambda: parts(which, loops, args[0], args[1], bv0, *args[2:]), rounds) / loops
     env.close()
     return out
 

@@ -14,20 +14,10 @@ beside, from a run at twice that), from the env's trim with every control moved 
 from __future__ import annotations
 
 import argparse
-import time
 
 import numpy as np
 
-
-def _least_cpu(f, rounds: int = 7) -> float:
-    """The least CPU time [s] of ``rounds`` calls of ``f`` (after one warm call)."""
-    f()
-    best = np.inf
-    for _ in range(rounds):
-        t0 = time.process_time()
-        f()
-        best = min(best, time.process_time() - t0)
-    return best
+from laddermill_gym.studies.cpu_time import least_cpu
 
 
 def wing_positions(sim_args, method: str, dt: float, every: int, t_end: float, sample: float) -> np.ndarray:
@@ -79,7 +69,7 @@ def reuse_table(env_id: str, every, steps: int, t_end: float, fine: int, offset:
                                    f"{steps} steps ({done * dt:g} s): time fewer --steps")
 
         err = np.abs(wing_positions(args, "w", dt, k, t_end, 0.5) - ref2).max()
-        rows.append({"every": k, "cpu_per_step": _least_cpu(run) / steps, "error": float(err),
+        rows.append({"every": k, "cpu_per_step": least_cpu(run) / steps, "error": float(err),
                      "reference_error": float(np.abs(ref - ref2).max()), "dt": dt})
     return rows
 
