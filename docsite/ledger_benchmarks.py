@@ -60,12 +60,14 @@ BENCHMARKS = Covered(
         '### Where a single-craft copy-step goes (issue 32 point 2, 2026-12-03)',
         "No many-core machine was lent for point 2's thread scaling; the same rows give its model.",
         "the wing's 12x needs its Python and numpy work per vector step halved as well.",
-        '- **Both cores across copies.** A task of 500 states or more (the 101-wing chain, 1313; the mills) steps'
-        " its copies on numba's thread pool from 2 copies on ( ; the single-wing envs keep the pool from 32 "
-        "copies); the same kernel over copies as the batch kernels, so each copy's arithmetic is the same on one "
-        'thread, two threads or the serial kernel (bit for bit, ). keeps one thread. - **The env argument ** ( ):'
-        ' steps the physics with one linearly implicit ROS34PW2 step per 50 ms control period instead of the '
-        'registered RK4 (LadderChain-v0 four steps of 12.5 ms, the mills five of 10 ms); and (with [s]) too.',
+        '- **Both cores across copies.** A task of 500 states or more (the 101-wing chain, 1313; the mills) steps '
+        "its copies on several threads from 2 copies on ( ; the single-wing envs from 32 copies), so each copy's "
+        'arithmetic is the same on one thread or two (bit for bit, ). Until 2026-12-03 the threads were a numba '
+        "kernel over copies; since then the single env's kernel runs on ranges of copies ( , [cold start]). keeps "
+        'one thread. - **The env argument ** ( ): steps the physics with one linearly implicit ROS34PW2 step per 50'
+        ' ms control period instead of the registered RK4 (LadderChain-v0 four steps of 12.5 ms, the mills five of '
+        "10 ms); and (with [s]) too. The operating point, spaces and rewards are the id's. Default: the registered "
+        'step ( ).',
         'Accuracy, against an independent reference, RK4 at a quarter of the registered step: the largest '
         "position error of the wings' CGs and cable nodes over a 10 s episode (the 0.01 rad direction step at 1 "
         's; the open-loop action plus seeded uniform noise of 0.3 every period), as a share of the extent (the '

@@ -168,6 +168,33 @@ COLD_START = Covered(
         'ends with the chain (60.5 s, nothing after), but three alternations (18:17-18:25) gave 59.8 / 69.0 / 61.8 s '
         "before and 67.2 / 61.1 / 66.3 s after: the 2 s it moves is within this machine's scatter (the chain's own "
         'compile took 23 to 30 s from run to run).',
+        # the vector envs' prange kernel replaced by the single env's kernel on threads (2026-12-03)
+        '## The vector envs: no second step kernel (2026-12-03)',
+        'The native vector envs ( , what an RL run steps) used to run a kernel of their own from 32 copies on (2 for '
+        "the 101-wing scenes): a numba loop around the same copy step as the single env's kernel. Compiling it cost "
+        'more than everything else together. After a single TetheredWing-v0 had compiled its kernels in the same '
+        "process (warm-up off, 2-core AVX2 EPYC, load about 1), the vector env's first reset and step at 64 copies "
+        "took 165 s of CPU, 165.0 of them in that one kernel: numba's parallel lowering analyses the inlined step and"
+        ' LLVM optimises and emits it five times over (the loop body, its gufunc, two wrappers, the kernel), 24,000 '
+        "instructions each time. Rotorcraft-v0's took 216 s and PumpingKite-v0's 225 s (in a process that had made "
+        'the single env first).',
+        "Now the vector envs have no kernel of their own: they call the single env's (compiled ) on contiguous ranges"
+        " of copies from a few Python threads, as many as numba's thread count ( ; the kernel takes the range as its "
+        "last two arguments). Making the vector env after the single env compiles nothing ( counts numba's compiles),"
+        " and every copy is the single env's arithmetic: the threaded vector env now equals single envs bit for bit ("
+        " , ; the prange kernel's last bits depended on what the process had compiled before, and those tests allowed"
+        ' 1e-6). TetheredWing-v0, Rotorcraft-v0 and PumpingKite-v0 give the same hashes of 400 steps of the single '
+        'env and 50 of a 64-copy vector env as before.',
+        '(new: times of N copies), caches empty, 2026-12-03 08:26-08:34 on the 2-core AVX2 EPYC (load 1-2), the new '
+        'code then 0a1ac39 (warm-up on, its default):',
+        '| make_vec (64 copies) + reset + one step | 0a1ac39 (prange kernel) | now | |---|---|---| | cold: wall [s] |'
+        ' 221.9 | **45.5** | | cold: CPU of the process + its warm-ups [s] | 12.2 + 242.7 | 10.5 + 65.1 | | warm: '
+        'wall [s] | 1.80 | 1.63 |',
+        "The threads cost nothing in throughput. TetheredWing-v0's native vector env at 512 copies, zero actions, 40 "
+        "steps after 5, on 1 and 2 numba threads three times per process, the two codes' processes alternated three "
+        'times (08:34-08:49, load 1-2; a script, not a package command): 0a1ac39 median 79,778 steps/s on one thread '
+        "and 147,655 on two, now 81,113 and 152,395. So the 20 s target for is as before, but an RL run's first "
+        "vector step no longer waits minutes more than a single env's: 45.5 s here against 221.9 s.",
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         # the operating point's search lengths (OperatingPoint.t_settle_s): "LadderMill-v0 (laddermill): search ran

@@ -5,6 +5,7 @@ counted in the child) and reads the cache this process names."""
 
 import gymnasium
 import numpy as np
+import pytest
 
 import laddermill_gym  # noqa: F401
 from laddermill_gym.cli import main as cli_main
@@ -71,3 +72,20 @@ print(outer(1.0), alone(1.0))
     names = [r["name"].rpartition(".")[2] for r in trace["rows"]]
     assert names == ["outer", "alone"]  # inner compiled inside outer: not a row of its own
     assert all(r["start"] <= r["end"] for r in trace["rows"]) and trace["rows"][0]["end"] <= trace["rows"][1]["start"]
+
+
+def test_a_warm_vector_start_compiles_nothing_beyond_the_single_env(capsys):
+    """``--copies``: the child makes the native vector env; after this process filled the cache with the single
+    env's kernels only, the vector env's start must compile nothing (it runs the single env's kernel on threads)."""
+    _fill_cache()
+    res = startup.run_startup(quick=True, envs=[ENV], copies=40)
+    assert res[ENV]["copies"] == 40 and res[ENV]["warm"]["compiled"] == 0, res
+    assert "make_vec (40 copies) + reset + one step" in capsys.readouterr().out
+
+
+def test_bad_copy_counts_are_refused_before_any_run():
+    for bad in (0, -3, 2.5, True):
+        with pytest.raises(ValueError, match="copies"):
+            startup.run_startup(quick=True, envs=[ENV], copies=bad)
+    with pytest.raises(SystemExit):
+        startup.main(["--copies", "0"])

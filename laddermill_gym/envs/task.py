@@ -17,6 +17,7 @@ from laddermill_gym.atmosphere.disturbances import grid_geometry, sample_wind_fi
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
 from laddermill_gym.envs import kernel_warmup
 from laddermill_gym.envs.actions import ActionMap, clip_actions, resolve_groups
+from laddermill_gym.envs.copy_threads import CopyThreads
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX, observation_bounds, wing_lateral_offsets
 from laddermill_gym.envs.physics_step import jacobian_settings, physics_scene_options, stable_physics_step
 from laddermill_gym.envs.start_cache import WING_SOURCES, cached_start
@@ -45,7 +46,6 @@ from laddermill_gym.kernels.rigid.observe import (
     AUX_MIN_ALTITUDE,
     N_AUX,
     observe_state,
-    step_observe_batch,
     step_observe_serial,
 )
 from laddermill_gym.kernels.task_rewards import (
@@ -143,7 +143,7 @@ class WingTask(TaskCore):
         steps (``kernels/rigid/rosenbrock.py`` ``with_jacobian_reuse``: same order, other last bits; an opt-in
         speed option, docs/benchmarks.md).
     parallel : bool, optional
-        Step the copies on numba's thread pool (default: from 32 copies on, from 2 for a scene of 500 states or
+        Step the copies on threads (default: from 32 copies on, from 2 for a scene of 500 states or
         more: ``task_base.default_parallel``); small batches of a small model run faster on one thread.
     """
 
@@ -162,7 +162,7 @@ class WingTask(TaskCore):
         options = physics_scene_options(scene_options, physics_step, physics_dt, control_dt)
         # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py); a third
         # shares the W method's callees (an RK4 step has none worth a process: task_warmup.step_callees)
-        kernels = (step_observe_batch, step_observe_serial)
+        kernels = (step_observe_serial,)
         targets = (WARMUP_TARGET, WARMUP_TAIL_TARGET) if options.get("method") in W_METHODS else (WARMUP_TARGET,)
         two = len(targets) > 1  # they print when their callees are done (the trim may wait for that)
         warmups = [kernel_warmup.start(target, task_kwargs, kernels, True, two) for target in targets]
@@ -192,7 +192,7 @@ class WingTask(TaskCore):
             self.n_wings = nw
             self.n_copies = int(n_copies)
             self.parallel = default_parallel(self.n_copies, asm.state_size, parallel)
-            self._kernel = step_observe_batch if self.parallel else step_observe_serial
+            self._kernel = CopyThreads(step_observe_serial, self.n_copies, self.parallel)
             n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
             self.batch = BatchSimulator(asm, self.n_copies, settings, n_modulation=max(2, n_mod),
                                         n_grid=0 if geom is None else geom.floats)

@@ -25,6 +25,7 @@ import numpy as np
 
 from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
 from laddermill_gym.atmosphere.disturbances import DirectionStep, grid_geometry, sample_wind_field
+from laddermill_gym.envs.copy_threads import CopyThreads
 from laddermill_gym.envs.task_settings import config_from
 from laddermill_gym.kernels.contract import B3_RATE, B3_SIZE, B3_VEL
 from laddermill_gym.model.configio import load_yaml_text
@@ -34,10 +35,10 @@ from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS
 __all__ = ["TaskCore", "positive", "check_copies", "substeps_per_period", "clip_observations", "add_wing_noise",
            "default_parallel"]
 
-#: copies from which a task steps on numba's thread pool by default [-]: below it starting the pool costs more than
+#: copies from which a task steps on several threads by default [-]: below it starting the pool costs more than
 #: it saves for a small model (TetheredWing-v0 at 8 copies: 43,500 steps/s on one thread, docs/benchmarks.md)
 PARALLEL_COPIES = 32
-#: state size [-] from which a task steps on the thread pool from 2 copies on: a copy of the 101-wing chain
+#: state size [-] from which a task steps on several threads from 2 copies on: a copy of the 101-wing chain
 #: (1313 states) or mill costs about a millisecond per control period, a thousand times the pool's start
 #: (issue 32 point 3, docs/benchmarks.md); the single-wing models (under 100 states) keep PARALLEL_COPIES
 PARALLEL_STATE_SIZE = 500
@@ -109,7 +110,7 @@ def add_wing_noise(x: np.ndarray, rotations: np.ndarray, noise, rng: np.random.G
 
 
 def default_parallel(n_copies: int, state_size: int, parallel) -> bool:
-    """Whether B = ``n_copies`` copies of a model of ``state_size`` states step on numba's thread pool:
+    """Whether B = ``n_copies`` copies of a model of ``state_size`` states step on threads:
     ``parallel`` when given, else from :data:`PARALLEL_COPIES` copies on, or from 2 for a model of at least
     :data:`PARALLEL_STATE_SIZE` states. Each copy's arithmetic is the same either way (bit for bit)."""
     if parallel is not None:
@@ -163,15 +164,15 @@ class TaskCore:
         self.alpha_lo, self.alpha_hi = np.radians(tc.alpha_range_deg)
         self.beta_max = math.radians(tc.max_abs_beta_deg)
 
-    def _make_batch(self, n_copies: int, assembly, settings, parallel, kernels, **batch_kwargs) -> None:
-        """``n_copies`` (B), ``parallel`` (numba's thread pool; None: :func:`default_parallel`), ``_kernel`` (the
-        first of the (parallel, serial) ``kernels`` when parallel, else the second), the
+    def _make_batch(self, n_copies: int, assembly, settings, parallel, kernel, **batch_kwargs) -> None:
+        """``n_copies`` (B), ``parallel`` (several threads; None: :func:`default_parallel`), ``_kernel`` (the step
+        ``kernel`` on the copies, on numba's thread count when parallel: :class:`~.copy_threads.CopyThreads`), the
         :class:`~laddermill_gym.sim.batch.BatchSimulator` ``batch`` of ``assembly`` with a wind modulation sampled
         every ``wind_dt`` over ``episode_time`` and room for the gust grid of a spatial disturbance (turbulence)
         of ``disturbances`` (``batch_kwargs``: a vehicle's), and the step scratch ``_dx``, ``_nsteps``, ``steps``."""
         B = self.n_copies = n_copies
         self.parallel = default_parallel(B, assembly.state_size, parallel)
-        self._kernel = kernels[0] if self.parallel else kernels[1]
+        self._kernel = CopyThreads(kernel, B, self.parallel)
         n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
         geom = grid_geometry(self.disturbances, self.episode_time)
         self.batch = BatchSimulator(assembly, B, settings, n_modulation=max(2, n_mod),

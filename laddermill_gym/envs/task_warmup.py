@@ -143,7 +143,7 @@ def wing_calls(task_kwargs: dict) -> list:
     :func:`stand_in_wing_trim` (``scene_trim`` restored after)."""
     from laddermill_gym.envs import task as wing_task
 
-    args = _step_arguments(wing_task, ("step_observe_serial", "step_observe_batch"),
+    args = _step_arguments(wing_task, ("step_observe_serial",),
                            lambda: wing_task.WingTask(**task_kwargs), ("scene_trim", stand_in_wing_trim))
     return [] if args is None else step_callees(args)
 
@@ -166,7 +166,7 @@ def craft_calls(task_kwargs: dict) -> tuple[list, list, bool]:
         asked.append((args, kwargs))
         return stand_in_craft_trim(*args, **kwargs)
 
-    args = _step_arguments(craft_task, ("craft_step_observe_serial", "craft_step_observe_batch"),
+    args = _step_arguments(craft_task, ("craft_step_observe_serial",),
                            lambda: craft_task.CraftTask(**task_kwargs), ("craft_trim", recording_stand_in))
     calls = [] if args is None else step_callees(args)[:-1]
     trims = (assemble3d, rhs3d, add_body_jacobian)

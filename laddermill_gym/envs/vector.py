@@ -44,7 +44,7 @@ class TaskVectorEnv(VectorEnv):
     ``task_class``.
 
     Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: ``render()`` returns one frame per copy; None only
-    where the task does not render), ``autoreset_mode``, ``parallel`` (numba thread pool; default from 32 copies
+    where the task does not render), ``autoreset_mode``, ``parallel`` (threads; default from 32 copies
     on, from 2 for a model of 500 states or more: ``task_base.default_parallel``) and the task's arguments; others
     raise ValueError naming them. ``info`` holds the task's info arrays, each with its ``_name`` mask, and
     ``failure_name`` / ``failure_reason`` per copy; a copy reset in the call holds its reset info instead (``t`` =
@@ -213,6 +213,9 @@ class TaskVectorEnv(VectorEnv):
         if self._renderer is not None:
             self._renderer.close()
             self._renderer = None
+        kernel = getattr(self.task, "_kernel", None)
+        if hasattr(kernel, "close"):  # the copies' threads (envs/copy_threads.py)
+            kernel.close()
 
 
 def _single_dtype(v: np.ndarray):

@@ -89,7 +89,7 @@ class WingVectorEnv(TaskVectorEnv):
     :data:`laddermill_gym.envs.task.FAILURES`), each with its ``_name`` mask.
 
     Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: one frame per copy), ``autoreset_mode`` ("NextStep",
-    "SameStep" or "Disabled"), ``parallel`` (numba thread pool; default from 32 copies on, from 2 for the 101-wing
+    "SameStep" or "Disabled"), ``parallel`` (threads; default from 32 copies on, from 2 for the 101-wing
     chain) and the :class:`~laddermill_gym.envs.task.WingTask` arguments.
     """
 

@@ -16,7 +16,7 @@ tether tensions [N] and retreating-tip incidences [rad]. The references of the r
 
 import math
 
-from numba import njit, prange
+from numba import njit
 
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.batch import advance_copy
@@ -78,7 +78,7 @@ def _observe_craft(t, x, u, dx, M, W, cp, ref, tether_end, obs, aux):
     return status
 
 
-# inlined into both kernels (same flags): the step-and-observe kernel is compiled once, not twice (issue 32)
+# inlined into the step kernel (the same flags)
 @njit(cache=True, error_model="numpy", inline="always")
 def _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
                              tether_end, obs, aux, status, done):
@@ -90,35 +90,26 @@ def _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, l
     done[b] = dn
 
 
-@njit(cache=True, error_model="numpy", parallel=True)
-def craft_step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
-                             tether_end, obs, aux, status, done):
-    """Advance copy b by nsteps[b] fixed steps of dt [s] (``tableau`` and ``breaks`` as in
-    ``kernels/rigid/observe.step_observe_batch``), then observe it (nsteps[b] = 0: observe only; < 0: skip
-    the copy). Parallel over the copies (numba prange).
+# Without numba's runtime (_nrt=False): no reference counting of the per-copy array views (about 60 per copy and
+# step; 7-8 % of TetheredWing-v0's vector step went to the atomic counts, issue 32). The copy's gust grid rows come
+# through kernels/batch.copy_air_model, not a function that returns a view (numba forbids that without its runtime:
+# c2dd978, 45dd361 had reverted this for it). nogil: the vector envs run it on several threads, each on its own range
+# of copies (envs/copy_threads.py), instead of a numba prange kernel that compiled the step a second time.
+@njit(cache=True, error_model="numpy", _nrt=False, nogil=True)
+def craft_step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
+                              tether_end, obs, aux, status, done, first, last):
+    """Advance copies b = first, ..., last - 1 by nsteps[b] fixed steps of dt [s] (``tableau`` and ``breaks`` as in
+    ``kernels/rigid/observe.step_observe_serial``), then observe each (nsteps[b] = 0: observe only; < 0: skip the
+    copy), on the calling thread (``envs/copy_threads.CopyThreads`` splits the copies over threads).
 
     t (B,) [s] is each copy's time before the steps (not advanced here); X (B, n_state), U (B, 2) [rad]
     (collective, differential); M the packed craft model without its markers, passed as ``kind`` and
     ``vehicle`` (``kernels.batch.detach_markers``); WB a KWork with a leading batch axis; AB the copies' air, a
     KAir with a leading copy axis (the batch's ``air``: wind modulation and gust grid); limits (LIM_SIZE,);
-    DX (B, n_state) scratch; ref (REF_SIZE,) references; tether_end (3,)
-    int64. Writes obs (B, N_CRAFT_OBS), aux (B, N_CRAFT_AUX), status (B,) (integrate.py's codes) and done (B,)
-    (steps completed). A copy whose integration fails is left at its last good state and observed there.
+    DX (B, n_state) scratch; ref (REF_SIZE,) references; tether_end (3,) int64. Writes rows first..last-1 of obs
+    (B, N_CRAFT_OBS), aux (B, N_CRAFT_AUX), status (B,) (integrate.py's codes) and done (B,) (steps completed). A
+    copy whose integration fails is left at its last good state and observed there.
     """
-    for b in prange(X.shape[0]):
-        _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
-                                 tether_end, obs, aux, status, done)
-
-
-# Without numba's runtime (_nrt=False): no reference counting of the per-copy array views (about 60 per copy and
-# step; 7-8 % of TetheredWing-v0's vector step went to the atomic counts, issue 32). The copy's gust grid rows come
-# through kernels/batch.copy_air_model, not a function that returns a view (numba forbids that without its runtime:
-# c2dd978, 45dd361 had reverted this for it).
-@njit(cache=True, error_model="numpy", _nrt=False)
-def craft_step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
-                              tether_end, obs, aux, status, done):
-    """:func:`craft_step_observe_batch` on one thread: for single environments and small batches, where starting
-    the thread pool costs more than it saves."""
-    for b in range(X.shape[0]):
+    for b in range(first, last):
         _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
                                  tether_end, obs, aux, status, done)

@@ -120,7 +120,7 @@ class LadderMillVectorEnv(TaskVectorEnv):
     ``lateral_offsets(obs)``: dy [m] per slot (num_envs, n).
 
     Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: one frame per copy), ``autoreset_mode``,
-    ``parallel`` (numba thread pool; default from 2 copies on: ``task_base.default_parallel``) and the arguments of
+    ``parallel`` (threads; default from 2 copies on: ``task_base.default_parallel``) and the arguments of
     the single env; others raise ValueError.
     """
 

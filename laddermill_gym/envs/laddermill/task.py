@@ -51,7 +51,6 @@ from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
     AUX_GROUND_START,
     N_AUX,
-    step_observe_batch,
     step_observe_serial,
 )
 from laddermill_gym.ladder.scene import options_key
@@ -73,7 +72,7 @@ def _scene_options(scene_options) -> tuple:
 
 class MillTask(TaskCore):
     """B copies of the moving-cable laddermill as an RL task (arguments: :class:`LadderMillEnv
-    <laddermill_gym.envs.laddermill.env.LadderMillEnv>`; ``n_copies`` = B, ``parallel``: numba's thread pool,
+    <laddermill_gym.envs.laddermill.env.LadderMillEnv>`; ``n_copies`` = B, ``parallel``: threads,
     default from 2 copies on for the mill's thousand-odd states, ``task_base.default_parallel``; ``physics_step``,
     ``physics_dt``: the physics' fixed-step method and step instead of the scene's, ``envs/physics_step.py``;
     ``jacobian_every``: physics steps per iteration matrix of a W-method step, default 1 = every step; k > 1 keeps
@@ -127,7 +126,7 @@ class MillTask(TaskCore):
             self.cable_speed_command = bool(cable_speed_command)
             asm = self._assembly()
             self.n_wings = n = asm.n_wings
-            self._make_batch(B, asm, settings, parallel, (step_observe_batch, step_observe_serial))
+            self._make_batch(B, asm, settings, parallel, step_observe_serial)
             self.loop_points = loop_points(self.op, asm)
             check_turbulence_cover(self.disturbances, self.loop_points)
             self.xoff = asm.body_state_size
@@ -165,7 +164,7 @@ class MillTask(TaskCore):
         while this one compiles the search's (``SEARCH_HOOK``), then this task's 3D step kernels."""
         warmup = None
         if given is None and operating_point_pending(scene, options, self.settle):
-            warmup = kernel_warmup.start(task_kwargs, (step_observe_batch, step_observe_serial))
+            warmup = kernel_warmup.start(task_kwargs, (step_observe_serial,))
         if warmup is None:
             return self._operating_point(given, scene, options), None
         SEARCH_HOOK[0] = lambda sc, opts: kernel_warmup.before_search(warmup, sc, opts)

@@ -52,7 +52,7 @@ from laddermill_gym.kernels.contract import (
 from laddermill_gym.kernels.task_rewards import N_ARGS, N_TERMS, TERM_KEYS, clip_rows, craft_readout, shaped_terms
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
 from laddermill_gym.rotorcraft.craft import TETHER_NAMES, CraftSimulator
-from laddermill_gym.rotorcraft.craft_observe import CRAFT_BODY, craft_step_observe_batch, craft_step_observe_serial
+from laddermill_gym.rotorcraft.craft_observe import CRAFT_BODY, craft_step_observe_serial
 from laddermill_gym.sim.reports import ground_stop_text
 
 __all__ = ["CraftTask", "CRAFT_FAILURES", "CraftScene"]
@@ -124,7 +124,7 @@ class CraftTask(TaskCore):
         task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
         # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py)
         warmup = kernel_warmup.start(WARMUP_TARGET, task_kwargs,
-                                     (craft_step_observe_batch, craft_step_observe_serial), True)
+                                     (craft_step_observe_serial,), True)
         with kernel_warmup.stopped_on_error((warmup,)):  # a failed construction leaves no warm-up running
             B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
                                        initial_noise)
@@ -164,7 +164,7 @@ class CraftTask(TaskCore):
         self.sim = CraftSimulator(c.config, c.assembly, c.layout, self.x_trim, self.u_trim)
         self.scene = CraftScene(c.assembly, c.config.name)
         self._make_batch(B, c.assembly, self._settings, parallel,
-                         (craft_step_observe_batch, craft_step_observe_serial), vehicle=self.sim.make_vehicle(),
+                         craft_step_observe_serial, vehicle=self.sim.make_vehicle(),
                          n_controls=self.sim.n_controls, vehicle_sizes=self.sim.vehicle_sizes())
         self.batch.states[:] = self.x_trim
         self.batch.controls[:] = self.u_trim

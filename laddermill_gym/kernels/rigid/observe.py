@@ -1,4 +1,4 @@
-"""Batched stepping and observation for the environments: one parallel pass over the copies advances each by
+"""Batched stepping and observation for the environments: one pass over a range of copies advances each by
 n RK4 steps and then writes its wing observations and the quantities the rewards and terminations need;
 :func:`observe_state` observes one state with the same code (the task's trim, and
 ``control.base.observe`` on a ``Simulator``). This is the only implementation of the wing observation. The step
@@ -12,7 +12,7 @@ angle of attack, sideslip, tension of the element below the wing. 3D scenes only
 
 import math
 
-from numba import njit, prange
+from numba import njit
 
 from laddermill_gym.kernels.batch import advance_copy
 from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes of this module)
@@ -123,7 +123,7 @@ def observe_state(t, x, u, M, W, nominal, below, ground, obs, aux):
     return _observe_one(t, x, u, W.k1, M, W, nominal, below, ground, obs, aux)
 
 
-# inlined into both kernels (same flags): the step-and-observe kernel is compiled once, not twice (issue 32)
+# inlined into the step kernel (the same flags)
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always")
 def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below,
                        ground, obs, aux, status, done):
@@ -135,35 +135,29 @@ def _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits,
     done[b] = dn
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, parallel=True)
-def step_observe_batch(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below,
-                       ground, obs, aux, status, done):
-    """Advance copy b by nsteps[b] steps of the fixed-step method (RK4 when ``tableau`` is None, else that
-    Rosenbrock-W method; steps meet the kinks of the copy's wind as ``breaks`` says, ``kernels/fixed_steps.py``),
-    then observe it (nsteps[b] = 0: observe only; < 0: skip the copy). Parallel over the copies (numba prange).
-
-    t (B,) [s] is each copy's time before the steps (not advanced here); X (B, n_state), U (B, n_controls);
-    per-copy air AB (a ``KAir`` of arrays with a leading copy axis: wind modulation and gust grid); WB a KWork
-    with a leading batch axis; DX (B,
-    n_state) scratch; nominal (n_wings, 3) [m]; below (n_wings,) element below each wing; ground (2,) ground
-    elements (start, end; -1 if none). M comes without its markers, passed as ``kind`` and ``vehicle``
-    (``kernels.batch.detach_markers``). Writes obs (B, 15 n_wings), aux (B, N_AUX), status (B,) and done (B,)
-    (steps completed). A copy whose integration fails is left at its last good state and observed there.
-    """
-    for b in prange(X.shape[0]):
-        _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal,
-                           below, ground, obs, aux, status, done)
-
-
 # Without numba's runtime (_nrt=False): no reference counting of the per-copy array views (about 60 per copy and
 # step; 7-8 % of TetheredWing-v0's vector step went to the atomic counts, issue 32). The copy's gust grid rows come
 # through kernels/batch.copy_air_model, not a function that returns a view (numba forbids that without its runtime:
-# c2dd978, 45dd361 had reverted this for it).
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+# c2dd978, 45dd361 had reverted this for it). nogil: the vector envs run it on several threads at once, each on its
+# own range of copies (envs/copy_threads.py). A numba prange kernel around the same copy step took 165 s of CPU to
+# compile on top of this one (its parallel lowering re-analyses and re-optimises the whole inlined step); the
+# vector envs now run the kernel the single env compiled.
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, nogil=True)
 def step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below,
-                        ground, obs, aux, status, done):
-    """:func:`step_observe_batch` on one thread: for single environments and small batches, where starting
-    the thread pool costs more than it saves (and on a loaded machine waits for a descheduled thread)."""
-    for b in range(X.shape[0]):
+                        ground, obs, aux, status, done, first, last):
+    """Advance copies b = first, ..., last - 1 by nsteps[b] steps of the fixed-step method (RK4 when ``tableau`` is
+    None, else that Rosenbrock-W method; steps meet the kinks of the copy's wind as ``breaks`` says,
+    ``kernels/fixed_steps.py``), then observe each (nsteps[b] = 0: observe only; < 0: skip the copy), on the
+    calling thread (``envs/copy_threads.CopyThreads`` splits the copies over threads).
+
+    t (B,) [s] is each copy's time before the steps (not advanced here); X (B, n_state), U (B, n_controls);
+    per-copy air AB (a ``KAir`` of arrays with a leading copy axis: wind modulation and gust grid); WB a KWork
+    with a leading batch axis; DX (B, n_state) scratch; nominal (n_wings, 3) [m]; below (n_wings,) element below
+    each wing; ground (2,) ground elements (start, end; -1 if none). M comes without its markers, passed as
+    ``kind`` and ``vehicle`` (``kernels.batch.detach_markers``). Writes rows first..last-1 of obs (B, 15 n_wings),
+    aux (B, N_AUX), status (B,) and done (B,) (steps completed). A copy whose integration fails is left at its last
+    good state and observed there.
+    """
+    for b in range(first, last):
         _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal,
                            below, ground, obs, aux, status, done)

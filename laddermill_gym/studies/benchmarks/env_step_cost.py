@@ -119,9 +119,10 @@ def _parts_plain(which, n, t, x0, bv0, X, U, dt, M, kind, vehicle, WB, AB, limit
 
 def loops_for(kernel) -> tuple:
     """(W-step loop, parts loop) compiled with the fastmath flags of the env's step ``kernel`` (a numba
-    dispatcher): the wing kernels' or the rotorcraft's (none). The W-step loop takes (n, t [s], x0, X, U, dt [s],
-    model, kind, vehicle, batched workspace, batched air, limits, tableau) and leaves in X[0] one W step from x0."""
-    if kernel.targetoptions.get("fastmath"):
+    dispatcher, or the task's ``CopyThreads`` around it): the wing kernels' or the rotorcraft's (none). The W-step
+    loop takes (n, t [s], x0, X, U, dt [s], model, kind, vehicle, batched workspace, batched air, limits, tableau)
+    and leaves in X[0] one W step from x0."""
+    if getattr(kernel, "kernel", kernel).targetoptions.get("fastmath"):
         return _w_steps_fm, _parts_fm
     return _w_steps_plain, _parts_plain
 

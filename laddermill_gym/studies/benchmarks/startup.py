@@ -42,9 +42,10 @@ QUICK_ENVS = ("laddermill_gym/TetheredWing-v0", "laddermill_gym/Rotorcraft-v0")
 WARM_REPEATS = 3
 
 
-#: what the fresh process runs (``python -c``), its clock started before any import: make + reset (seed 0) + one
-#: step with the zero action; prints the seconds, the process's CPU time (user + system: less sensitive than the
-#: wall time to other work on a shared machine), the number of functions numba compiled and the cache it used
+#: what the fresh process runs (``python -c``), its clock started before any import: make (``{make}``: the single
+#: env, or the native vector env of ``--copies``, :func:`make_call`) + reset (seed 0) + one step with the zero
+#: action; prints the seconds, the process's CPU time (user + system: less sensitive than the wall time to other
+#: work on a shared machine), the number of functions numba compiled and the cache it used
 CHILD = """import time
 t0 = time.perf_counter()
 import json
@@ -59,7 +60,7 @@ event.register("numba:compile", Count())
 import gymnasium
 import numpy as np
 import laddermill_gym
-env = gymnasium.make({env_id!r})
+env = {make}
 env.reset(seed=0)
 env.step(np.zeros(env.action_space.shape, dtype=env.action_space.dtype))
 seconds = time.perf_counter() - t0
@@ -171,16 +172,27 @@ def timeline(res: dict, echo=print) -> None:
                 echo(f"      {r['start'] - t0:6.1f} -> {r['end'] - t0:6.1f}  {r['name']}")
 
 
-def run_child(env_id: str, cache_dir: str | None, child: str = CHILD, extra_env: dict | None = None) -> dict:
-    """One start-up of ``env_id`` in a fresh subprocess with ``NUMBA_CACHE_DIR`` = ``cache_dir`` and the mill's
-    operating-point cache (``LADDERMILL_CACHE_DIR``, ``envs/laddermill/op_cache.py``) in its ``laddermill``
-    sub-folder (None: this process's environment as it is), and ``extra_env`` set: the child's figures plus
-    ``wall_s``, the subprocess's wall time [s]."""
+def make_call(env_id: str, copies: int | None = None) -> str:
+    """The Python expression that makes ``env_id``: ``gymnasium.make``, or with ``copies`` its native vector env of
+    that many copies (``gymnasium.make_vec``, ``vector_entry_point``: the one an RL run steps)."""
+    if copies is None:
+        return f"gymnasium.make({env_id!r})"
+    if isinstance(copies, bool) or not isinstance(copies, int) or copies < 1:
+        raise ValueError(f"copies = {copies!r}: must be a whole number >= 1")
+    return f"gymnasium.make_vec({env_id!r}, {copies}, vectorization_mode='vector_entry_point')"
+
+
+def run_child(env_id: str, cache_dir: str | None, child: str = CHILD, extra_env: dict | None = None,
+              copies: int | None = None) -> dict:
+    """One start-up of ``env_id`` (with ``copies``: its native vector env, :func:`make_call`) in a fresh subprocess
+    with ``NUMBA_CACHE_DIR`` = ``cache_dir`` and the mill's operating-point cache (``LADDERMILL_CACHE_DIR``,
+    ``envs/laddermill/op_cache.py``) in its ``laddermill`` sub-folder (None: this process's environment as it is),
+    and ``extra_env`` set: the child's figures plus ``wall_s``, the subprocess's wall time [s]."""
     env = dict(os.environ, **(extra_env or {}))
     if cache_dir is not None:
         env["NUMBA_CACHE_DIR"] = cache_dir
         env[CACHE_VARIABLE] = os.path.join(cache_dir, "laddermill")
-    cmd = [sys.executable, "-c", child.format(env_id=env_id)]
+    cmd = [sys.executable, "-c", child.format(env_id=env_id, make=make_call(env_id, copies))]
     t0 = time.perf_counter()
     r = subprocess.run(cmd, env=env, capture_output=True, text=True)
     wall = time.perf_counter() - t0
@@ -191,15 +203,16 @@ def run_child(env_id: str, cache_dir: str | None, child: str = CHILD, extra_env:
     return out
 
 
-def measure(env_id: str, cold: bool = True, warm_repeats: int = WARM_REPEATS) -> dict:
+def measure(env_id: str, cold: bool = True, warm_repeats: int = WARM_REPEATS, copies: int | None = None) -> dict:
     """Cold start (new, empty numba and operating-point caches) and the median of ``warm_repeats`` warm starts from
-    the caches it left; with ``cold`` False, warm starts only, from the caches this process's environment names."""
-    res: dict = {"env": env_id}
+    the caches it left; with ``cold`` False, warm starts only, from the caches this process's environment names;
+    ``copies``: of the native vector env (:func:`make_call`)."""
+    res: dict = {"env": env_id, "copies": copies}
     with tempfile.TemporaryDirectory(prefix="laddermill_numba_") as tmp:
         cache = tmp if cold else None
         if cold:
-            res["cold"] = run_child(env_id, cache)
-        runs = [run_child(env_id, cache) for _ in range(warm_repeats)]
+            res["cold"] = run_child(env_id, cache, copies=copies)
+        runs = [run_child(env_id, cache, copies=copies) for _ in range(warm_repeats)]
     res["warm"] = {"wall_s": statistics.median(r["wall_s"] for r in runs),
                    "inside_s": statistics.median(r["inside_s"] for r in runs),
                    "cpu_s": statistics.median(r["cpu_s"] for r in runs),
@@ -223,7 +236,9 @@ def _verdict(seconds: float, target: float | None) -> str:
 def report(res: dict, echo=print) -> None:
     """Print one env's figures."""
     cold_t, warm_t = TARGETS.get(res["env"], (None, None))
-    echo(f"== start-up {res['env']}: make + reset + one step in a fresh process")
+    copies = res.get("copies")
+    made = "make" if copies is None else f"make_vec ({copies} copies)"
+    echo(f"== start-up {res['env']}: {made} + reset + one step in a fresh process")
     if "cold" in res:
         c = res["cold"]
         echo(f"  cold (empty caches)       {c['wall_s']:7.1f} s  (inside {c['inside_s']:.1f} s, "
@@ -234,15 +249,17 @@ def report(res: dict, echo=print) -> None:
          f"{w['compiled']} functions compiled, median of {w['runs']}) {_verdict(w['wall_s'], warm_t)}")
 
 
-def run_startup(quick: bool = False, envs=None, echo=print) -> dict:
+def run_startup(quick: bool = False, envs=None, echo=print, copies: int | None = None) -> dict:
     """``laddermill bench --startup``: cold and warm start of each of ``envs`` (default: the three of
-    :data:`TARGETS`); ``quick``: warm starts only, once each, of :data:`QUICK_ENVS`, from the current cache."""
+    :data:`TARGETS`); ``quick``: warm starts only, once each, of :data:`QUICK_ENVS`, from the current cache;
+    ``copies``: of the native vector envs of that many copies instead of the single envs."""
+    make_call("", copies)  # a bad count is refused before any run
     envs = list(envs or (QUICK_ENVS if quick else TARGETS))
     out = {}
     for env_id in envs:
         echo(f"timing the start-up of {env_id} {'(warm only)' if quick else '(cold, then warm)'} ...")
         sys.stdout.flush()
-        out[env_id] = measure(env_id, cold=not quick, warm_repeats=1 if quick else WARM_REPEATS)
+        out[env_id] = measure(env_id, cold=not quick, warm_repeats=1 if quick else WARM_REPEATS, copies=copies)
         report(out[env_id], echo)
     return out
 
@@ -254,12 +271,16 @@ def main(argv=None) -> int:
     p.add_argument("--profile", action="store_true",
                    help="one cold start per env with the seconds numba spends compiling each function and a "
                         "timeline of what each process (the kernel warm-ups too) compiled when")
+    p.add_argument("--copies", type=int, default=None,
+                   help="time the native vector env of this many copies (gymnasium.make_vec) instead of the single env")
     args = p.parse_args(argv)
+    if args.copies is not None and args.copies < 1:
+        p.error(f"--copies {args.copies}: must be at least 1")
     if args.profile:
         for env_id in args.envs or QUICK_ENVS:
             profile(env_id)
         return 0
-    run_startup(args.quick, args.envs)
+    run_startup(args.quick, args.envs, copies=args.copies)
     return 0
 
 

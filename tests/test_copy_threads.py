@@ -1,0 +1,108 @@
+"""envs/copy_threads.py: the vector envs' copies split over threads. The oracle for the split is a plain loop over
+the copies; for the envs, the single env (the same kernel on one copy): every copy of a threaded native vector env
+must equal a single env bit for bit, and making that vector env after the single env compiles nothing."""
+
+import pickle
+
+import gymnasium as gym
+import numba
+import numpy as np
+import pytest
+from numba import njit
+from numba.core import event
+
+import laddermill_gym  # noqa: F401 (registers the ids)
+from laddermill_gym.envs.copy_threads import CopyThreads, copy_ranges
+
+
+@njit(nogil=True, cache=False)
+def _square_rows(x, out, first, last):
+    for b in range(first, last):
+        if x[b, 0] < 0.0:
+            raise ValueError("negative")
+        for j in range(x.shape[1]):
+            out[b, j] = x[b, j] * x[b, j] + b
+
+
+@pytest.mark.parametrize("n, k", [(1, 4), (5, 2), (7, 3), (8, 8), (3, 16), (512, 2)])
+def test_ranges_cover_every_copy_once_in_order(n, k):
+    r = copy_ranges(n, k)
+    assert len(r) == min(n, k)
+    assert r[0][0] == 0 and r[-1][1] == n
+    assert all(a[1] == b[0] for a, b in zip(r, r[1:], strict=False))  # contiguous, in order
+    sizes = [b - a for a, b in r]
+    assert min(sizes) >= 1 and max(sizes) - min(sizes) <= 1
+
+
+@pytest.mark.parametrize("parallel", [False, True])
+def test_the_runner_gives_the_plain_loop_on_every_thread_count(parallel):
+    x = np.random.default_rng(0).uniform(0, 2, size=(37, 5))
+    expected = x * x + np.arange(37)[:, None]  # the plain loop, by hand
+    run = CopyThreads(_square_rows, 37, parallel)
+    for threads in range(1, min(4, numba.config.NUMBA_NUM_THREADS) + 1):
+        numba.set_num_threads(threads)
+        try:
+            out = np.full_like(x, np.nan)
+            run(x, out)
+            np.testing.assert_array_equal(out, expected)
+        finally:
+            numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
+    run.close()
+
+
+def test_an_error_in_any_range_is_raised_after_all_ranges_end():
+    x = np.ones((6, 2))
+    x[5, 0] = -1.0  # the last range: another thread when there are two
+    run = CopyThreads(_square_rows, 6, True)
+    out = np.zeros_like(x)
+    with pytest.raises(ValueError, match="negative"):
+        run(x, out)
+    assert np.all(out[:3] == 1.0 + np.arange(3)[:, None])  # the first range ran to its end
+    copy = pickle.loads(pickle.dumps(run))  # the pool's threads are not pickled; the copy starts its own
+    x[5, 0] = 1.0
+    copy(x, out)
+    np.testing.assert_array_equal(out, 1.0 + np.arange(6)[:, None] * np.ones((1, 2)))
+    run.close()
+    copy.close()
+
+
+@pytest.mark.parametrize("env_id", ["laddermill_gym/TetheredWing-v0", "laddermill_gym/Rotorcraft-v0"])
+def test_a_threaded_vector_env_is_the_single_envs_bit_for_bit_and_compiles_nothing(env_id):
+    n, steps = 5, 12
+    rng = np.random.default_rng(3)
+    acts = rng.uniform(-0.5, 0.5, size=(steps, n, gym.make(env_id).action_space.shape[0])).astype(np.float32)
+    singles = []
+    for i in range(n):
+        e = gym.make(env_id)
+        o, _ = e.reset(seed=20 + i)
+        rows = [o]
+        for a in acts[:, i]:
+            rows.append(e.step(a)[0])
+        singles.append(np.array(rows))
+    compiled = []
+
+    class Count(event.Listener):
+        def on_start(self, ev):
+            compiled.append(ev.data["dispatcher"].py_func.__qualname__)
+
+        def on_end(self, ev):
+            pass
+
+    listener = Count()
+    event.register("numba:compile", listener)
+    try:
+        threads = min(2, numba.config.NUMBA_NUM_THREADS)
+        numba.set_num_threads(threads)
+        vec = gym.make_vec(env_id, n, vectorization_mode="vector_entry_point", parallel=True)
+        o, _ = vec.reset(seed=20)
+        hist = [o]
+        for a in acts:
+            hist.append(vec.step(a)[0])
+        vec.close()
+    finally:
+        event.unregister("numba:compile", listener)
+        numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
+    assert compiled == []  # the single env's kernels serve the threaded vector env
+    hist = np.array(hist)
+    for i in range(n):
+        np.testing.assert_array_equal(hist[:, i], singles[i])
