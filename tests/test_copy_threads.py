@@ -50,6 +50,24 @@ def test_the_runner_gives_the_plain_loop_on_every_thread_count(parallel):
     run.close()
 
 
+def test_ranges_keep_right_when_the_arguments_change_type():
+    """The other ranges call the entry point the dispatcher chose on an earlier call only while the arguments have
+    its types; arrays of another dtype, layout or writeability must go through the dispatcher (a wrong entry point
+    would read them as float64 C arrays)."""
+    run = CopyThreads(_square_rows, 9, True)
+    x = np.random.default_rng(1).uniform(0, 2, size=(9, 3))
+    cases = [x, x, np.arange(27, dtype=np.int64).reshape(9, 3), np.asfortranarray(x), x[:, ::-1], x.astype(np.float32)]
+    ro = x.copy()
+    ro.setflags(write=False)
+    cases += [ro, x]
+    for xi in cases:
+        for _ in range(2):  # the second call of each may take the kept entry point
+            out = np.zeros((9, 3), dtype=np.float64)
+            run(xi, out)
+            np.testing.assert_array_equal(out, (xi * xi).astype(np.float64) + np.arange(9)[:, None])
+    run.close()
+
+
 def test_an_error_in_any_range_is_raised_after_all_ranges_end():
     x = np.ones((6, 2))
     x[5, 0] = -1.0  # the last range: another thread when there are two

@@ -9,6 +9,13 @@ vector envs give the single env's bits whatever the thread count.
 
 The thread count is numba's (``numba.get_num_threads()``, as ``numba.set_num_threads`` and ``NUMBA_NUM_THREADS``
 set it), read at each call, so the existing controls of a run's parallelism keep working.
+
+Each range is a call from Python, and a numba dispatcher types every argument before it releases the GIL: about
+12-18 us for the wing kernel's 21 arguments (two model namedtuples of some 100 arrays), one after another across
+the threads. So only the calling thread goes through the dispatcher; the other ranges call the compiled entry
+point it chose (about 3 us), but only when every argument is the object of that typed call or a float or array of
+the same numba type (dtype, dimensions, layout, writeable, alignment): otherwise every range goes through the
+dispatcher, and the next call's types are kept.
 """
 
 from __future__ import annotations
@@ -16,6 +23,7 @@ from __future__ import annotations
 from concurrent.futures import ThreadPoolExecutor
 
 import numba
+import numpy as np
 
 __all__ = ["CopyThreads", "copy_ranges"]
 
@@ -46,6 +54,7 @@ class CopyThreads:
         self.parallel = bool(parallel)
         self._pool = None
         self._pool_size = 0
+        self._typed = None  # (arguments, keys, entry point) of the last call typed by the dispatcher
 
     def __call__(self, *args) -> None:
         n = numba.get_num_threads() if self.parallel else 1
@@ -53,19 +62,39 @@ class CopyThreads:
         if len(ranges) == 1:
             self.kernel(*args, 0, self.n_copies)
             return
+        keys = [_type_key(a) for a in args]
+        entry = self._entry_point(args, keys)
         pool = self._workers(len(ranges) - 1)
-        futures = [pool.submit(self.kernel, *args, first, last) for first, last in ranges[1:]]
+        futures = [pool.submit(entry, *args, first, last) for first, last in ranges[1:]]
         error = None
         try:
-            self.kernel(*args, *ranges[0])
+            self.kernel(*args, *ranges[0])  # typed by the dispatcher (compiled on a first call)
         except BaseException as e:  # noqa: BLE001 (raised below, once the other ranges have ended)
             error = e
+        if entry is self.kernel and error is None:
+            self._remember(args, keys)
         for f in futures:
             e = f.exception()
             if error is None and e is not None:
                 error = e
         if error is not None:
             raise error
+
+    def _entry_point(self, args, keys):
+        """The compiled entry point of the last call typed by the dispatcher when ``args`` have its types (the same
+        objects, or floats and arrays of the same numba type: ``keys``, :func:`_type_key`), else the dispatcher."""
+        t = self._typed
+        if t is not None and len(t[0]) == len(args) and all(
+                k == kb if k is not None else a is b for a, b, k, kb in zip(args, t[0], keys, t[1], strict=True)):
+            return t[2]
+        return self.kernel
+
+    def _remember(self, args, keys) -> None:
+        """Keep the entry point of the specialisation the dispatcher just ran for ``args`` (typed once here, about
+        a millisecond; None when none matches)."""
+        sig = tuple(numba.typeof(a) for a in (*args, 0, 0))
+        compiled = self.kernel.overloads.get(sig)
+        self._typed = None if compiled is None else (args, keys, compiled.entry_point)
 
     def _workers(self, n: int) -> ThreadPoolExecutor:
         if self._pool is None or self._pool_size < n:
@@ -83,5 +112,16 @@ class CopyThreads:
 
     def __getstate__(self) -> dict:  # threads do not pickle: a copy starts its own pool when it needs one
         state = dict(self.__dict__)
-        state["_pool"], state["_pool_size"] = None, 0
+        state["_pool"], state["_pool_size"], state["_typed"] = None, 0, None
         return state
+
+
+def _type_key(a):
+    """What numba's type of ``a`` depends on, for a float or an array (None for anything else: those must be the
+    very object of the typed call)."""
+    if type(a) is float:
+        return float
+    if type(a) is np.ndarray:
+        f = a.flags
+        return a.dtype, a.ndim, f.c_contiguous, f.f_contiguous, f.writeable, f.aligned
+    return None
