@@ -180,21 +180,26 @@ COLD_START = Covered(
         'the single env first).',
         "Now the vector envs have no kernel of their own: they call the single env's (compiled ) on contiguous ranges"
         " of copies from a few Python threads, as many as numba's thread count ( ; the kernel takes the range as its "
-        "last two arguments). Making the vector env after the single env compiles nothing ( counts numba's compiles),"
-        " and every copy is the single env's arithmetic: the threaded vector env now equals single envs bit for bit ("
-        " , ; the prange kernel's last bits depended on what the process had compiled before, and those tests allowed"
-        ' 1e-6). TetheredWing-v0, Rotorcraft-v0 and PumpingKite-v0 give the same hashes of 400 steps of the single '
-        'env and 50 of a 64-copy vector env as before.',
-        '(new: times of N copies), caches empty, 2026-12-03 08:26-08:34 on the 2-core AVX2 EPYC (load 1-2), the new '
-        'code then 0a1ac39 (warm-up on, its default):',
-        '| make_vec (64 copies) + reset + one step | 0a1ac39 (prange kernel) | now | |---|---|---| | cold: wall [s] |'
-        ' 221.9 | **45.5** | | cold: CPU of the process + its warm-ups [s] | 12.2 + 242.7 | 10.5 + 65.1 | | warm: '
-        'wall [s] | 1.80 | 1.63 |',
+        "last two arguments; only the calling thread's range goes through numba's dispatcher, which types the 21 "
+        'arguments under the GIL in 12-18 us, the others call the compiled entry point it chose for the same argument'
+        ' types, 2-3 us, so that many threads do not queue for the GIL). Making the vector env after the single env '
+        "compiles nothing ( counts numba's compiles), and every copy is the single env's arithmetic: the threaded "
+        "vector env now equals single envs bit for bit ( , ; the prange kernel's last bits depended on what the "
+        'process had compiled before, and those tests allowed 1e-6). TetheredWing-v0, Rotorcraft-v0 and '
+        'PumpingKite-v0 give the same hashes of 400 steps of the single env and 50 of a 64-copy vector env as before.',
+        '(new: times of N copies), caches empty, on the 2-core AVX2 EPYC (load 1-2), the new code then 0a1ac39 (warm-'
+        "up on, its default): TetheredWing-v0 2026-12-03 08:26-08:34, Rotorcraft-v0 08:50-08:58 (at d7ed9e0's parent:"
+        ' the same kernels):',
+        '| make_vec (64 copies) + reset + one step | TetheredWing-v0 0a1ac39 (prange) | now | Rotorcraft-v0 0a1ac39 |'
+        ' now | |---|---|---|---|---| | cold: wall [s] | 221.9 | **45.5** | 219.8 | **43.3** | | cold: CPU of the '
+        'process + its warm-ups [s] | 12.2 + 242.7 | 10.5 + 65.1 | 18.9 + 199.7 | 17.8 + 40.5 | | warm: wall [s] | '
+        '1.80 | 1.63 | 1.73 | 1.45 |',
         "The threads cost nothing in throughput. TetheredWing-v0's native vector env at 512 copies, zero actions, 40 "
         "steps after 5, on 1 and 2 numba threads three times per process, the two codes' processes alternated three "
-        'times (08:34-08:49, load 1-2; a script, not a package command): 0a1ac39 median 79,778 steps/s on one thread '
+        'times (08:34-08:45, load 1-2; a script, not a package command): 0a1ac39 median 79,778 steps/s on one thread '
         "and 147,655 on two, now 81,113 and 152,395. So the 20 s target for is as before, but an RL run's first "
-        "vector step no longer waits minutes more than a single env's: 45.5 s here against 221.9 s.",
+        "vector step no longer waits minutes more than a single env's: 45.5 s and 43.3 s here against 221.9 s and "
+        '219.8 s.',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         # the operating point's search lengths (OperatingPoint.t_settle_s): "LadderMill-v0 (laddermill): search ran
