@@ -2,6 +2,7 @@
 the copies; for the envs, the single env (the same kernel on one copy): every copy of a threaded native vector env
 must equal a single env bit for bit, and making that vector env after the single env compiles nothing."""
 
+import multiprocessing
 import pickle
 
 import gymnasium as gym
@@ -82,6 +83,33 @@ def test_an_error_in_any_range_is_raised_after_all_ranges_end():
     np.testing.assert_array_equal(out, 1.0 + np.arange(6)[:, None] * np.ones((1, 2)))
     run.close()
     copy.close()
+
+
+def _run_in_child(run, x, queue):
+    out = np.zeros_like(x)
+    run(x, out)
+    queue.put(out)
+
+
+@pytest.mark.skipif("fork" not in multiprocessing.get_all_start_methods(), reason="needs the fork start method")
+def test_a_forked_process_starts_its_own_threads():
+    """A runner whose pool the parent started is copied by ``fork`` without the pool's threads; the child's call
+    must start its own rather than wait for ever on the parent's (the oracle: the plain loop, by hand)."""
+    x = np.random.default_rng(2).uniform(0, 1, size=(8, 2))
+    run = CopyThreads(_square_rows, 8, True)
+    run(x, np.zeros_like(x))  # the parent's pool started (on two or more threads)
+    ctx = multiprocessing.get_context("fork")
+    queue = ctx.Queue()
+    child = ctx.Process(target=_run_in_child, args=(run, x, queue))
+    child.start()
+    try:
+        out = queue.get(timeout=60)
+    finally:
+        child.join(timeout=10)
+        if child.is_alive():
+            child.kill()
+    np.testing.assert_array_equal(out, x * x + np.arange(8)[:, None])
+    run.close()
 
 
 @pytest.mark.parametrize("env_id", ["laddermill_gym/TetheredWing-v0", "laddermill_gym/Rotorcraft-v0"])

@@ -20,6 +20,7 @@ dispatcher, and the next call's types are kept.
 
 from __future__ import annotations
 
+import os
 from concurrent.futures import ThreadPoolExecutor
 
 import numba
@@ -54,6 +55,7 @@ class CopyThreads:
         self.parallel = bool(parallel)
         self._pool = None
         self._pool_size = 0
+        self._pool_pid = 0
         self._typed = None  # (arguments, keys, entry point) of the last call typed by the dispatcher
 
     def __call__(self, *args) -> None:
@@ -97,18 +99,22 @@ class CopyThreads:
         self._typed = None if compiled is None else (args, keys, compiled.entry_point)
 
     def _workers(self, n: int) -> ThreadPoolExecutor:
+        """A pool of at least ``n`` threads of this process: a pool inherited through ``fork`` has no threads in
+        the child (its work would wait for ever), so a child starts its own."""
+        if self._pool is not None and self._pool_pid != os.getpid():
+            self._pool, self._pool_size = None, 0  # the parent's: nothing to shut down here
         if self._pool is None or self._pool_size < n:
             if self._pool is not None:
                 self._pool.shutdown(wait=True)
             self._pool = ThreadPoolExecutor(max_workers=n, thread_name_prefix="laddermill-copies")
-            self._pool_size = n
+            self._pool_size, self._pool_pid = n, os.getpid()
         return self._pool
 
     def close(self) -> None:
         """Stop the pool's threads (a later call starts them again)."""
-        if self._pool is not None:
+        if self._pool is not None and self._pool_pid == os.getpid():
             self._pool.shutdown(wait=True)
-            self._pool, self._pool_size = None, 0
+        self._pool, self._pool_size = None, 0
 
     def __getstate__(self) -> dict:  # threads do not pickle: a copy starts its own pool when it needs one
         state = dict(self.__dict__)
