@@ -52,6 +52,26 @@ def test_the_in_plane_stand_ins_reach_their_kernels_without_raising():
     assert {"Rigid2D", "MovingCable2D"} <= kinds, kinds  # the static equilibrium's cable and the moving cable
 
 
+def test_the_search_driver_is_compiled_for_the_search_without_a_step(monkeypatch):
+    """The fixed-step driver is compiled for exactly the types the search's steps pass (the oracle: numba's own
+    dispatch of a real step adds no signature) and the stand-in is not stepped (a failed stand-in step's report
+    compiled DP5(4), which the search never runs: about 4.5 s of CPU on the first process's path)."""
+    from laddermill_gym.kernels.fixed_steps import advance_breaks
+    from laddermill_gym.sim.simulator import Simulator
+
+    def no_step(self, *args, **kwargs):
+        raise AssertionError("compile_in_plane stepped the stand-in simulator")
+
+    with monkeypatch.context() as m:
+        m.setattr(Simulator, "step", no_step)
+        kernel_warmup.compile_in_plane("laddermill", OPTIONS)
+    compiled = set(advance_breaks.signatures)
+    assert compiled
+    sim = mill_scene("laddermill", OPTIONS, 2).simulator()
+    sim.step(n_steps=3)
+    assert sim.t > 0.0 and set(advance_breaks.signatures) == compiled
+
+
 def test_the_first_process_waits_for_the_statics_line_not_for_any_output():
     def child(code):
         return kernel_warmup.Warmup(subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE))

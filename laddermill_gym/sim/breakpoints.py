@@ -102,15 +102,22 @@ def fixed_tableau(settings):
     return with_jacobian_reuse(tableau, settings.jacobian_every)
 
 
+def fixed_pieces_call(sim, n: int) -> tuple:
+    """(kernel, arguments) of :func:`fixed_pieces`' one kernel call for n steps on ``sim``: the kernel warm-ups
+    compile it for these arguments' types without running a step (``envs/laddermill/kernel_warmup.py``)."""
+    s = sim.settings
+    return advance_breaks, (sim.t, sim.state, sim.controls, s.dt, n, sim.model, sim.work, sim.limits,
+                            fixed_tableau(s), breaks_mode(s))
+
+
 def fixed_pieces(sim, n: int):
     """n steps of ``sim.settings.dt`` of its fixed-step method (RK4 or a Rosenbrock-W method) on ``sim`` (a
     ``Simulator``), a step that holds a kink split at it, each piece with its segment's modulation
     (``kernels/fixed_steps.advance_breaks``, the batched kernels' own stepper); advances ``sim.t`` and
     ``sim.state``. Returns (status, size of the failed step [s]); on a failure the state and time are those before
     the failed step (or piece)."""
-    s = sim.settings
-    status, _, t, h = advance_breaks(sim.t, sim.state, sim.controls, s.dt, n, sim.model, sim.work, sim.limits,
-                                     fixed_tableau(s), breaks_mode(s))
+    kernel, args = fixed_pieces_call(sim, n)
+    status, _, t, h = kernel(*args)
     sim.t = t
     return status, h
 

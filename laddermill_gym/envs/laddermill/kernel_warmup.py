@@ -80,14 +80,27 @@ def _discard_failures(*calls) -> None:
 def compile_in_plane(scene: str, options: tuple) -> None:
     """Compile the kernels the operating point's search calls on the in-plane ``scene`` with ``options`` (the
     moving cable's right-hand side and fixed-step driver), on a zero stand-in state in a simulator of its own: numba
-    compiles for the argument types; what they compute on the stand-in is discarded."""
+    compiles for the argument types; what the right-hand side computes on the stand-in is discarded.
+
+    The fixed-step driver is compiled for the types of the search's call (``sim/breakpoints.fixed_pieces_call``)
+    without stepping: a step from the stand-in fails, and the failure's report compiled DP5(4) (about 4.5 s of
+    CPU on the first process's path, 2026-12-03) for nothing the search runs. An error-controlled in-plane
+    method is still compiled by a step."""
+    from numba import typeof
+
     from laddermill_gym.envs.laddermill.operating_point import mill_scene
+    from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, fixed_pieces_call
     from laddermill_gym.sim.simulator import Simulator
 
     sc2 = mill_scene(scene, options, 2)
     x = np.zeros(sc2.assembly.state_size)
     sim = Simulator(sc2.assembly, x, sc2.settings)
-    _discard_failures(lambda: sim.rhs(0.0, x), sim.step)
+    _discard_failures(lambda: sim.rhs(0.0, x))
+    if sc2.settings.method in FIXED_STEP_METHODS:
+        kernel, args = fixed_pieces_call(sim, 1)
+        kernel.compile(tuple(typeof(v) for v in args))
+    else:
+        _discard_failures(sim.step)
 
 
 def compile_statics(scene: str, options: tuple) -> None:
