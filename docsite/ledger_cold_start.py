@@ -16,6 +16,7 @@ COLD_START = Covered(
         'and a matching SHA-256 of its payload',
         '## LadderMill: the 3D kernels compiled beside the operating point (issue 32 point 1)',
         '## TetheredWing-v0 and Rotorcraft-v0: the step kernel compiled beside the trim (issue 32 point 1)',
+        "## LadderMill: no DP5(4) compiled for a stand-in's failed step (2026-12-03)",
     ),
     timings=(  # each dated on the page (date or commit, machine, load where recorded)
         '( runs it for these two and LadderMill-v0): make + reset + one step in a fresh process, cold with a new '
@@ -200,6 +201,24 @@ COLD_START = Covered(
         "and 147,655 on two, now 81,113 and 152,395. So the 20 s target for is as before, but an RL run's first "
         "vector step no longer waits minutes more than a single env's: 45.5 s and 43.3 s here against 221.9 s and "
         '219.8 s.',
+        'On the 2-core AVX2 EPYC (the znver3 profile) a cold LadderMill-v0 start took 62.9 s, over the 60 s '
+        'target. Its timeline ( , 10:19, load 0.3: 63.3 s) showed the first process compiling three functions '
+        "before the periodic search: the moving cable's in-plane right-hand side (1.3 to 15.3 s), the "
+        "fixed-step driver (15.4 to 25.0 s) and DP5(4)'s (25.0 to 29.7 s). The search itself runs RK4 only. "
+        'DP5(4) came from , which compiled the driver by stepping a zero stand-in state: that step fails, and '
+        "the failure's report ( ) integrates the failed step again with DP5(4). Now the driver is compiled "
+        "for the argument types of the search's own call ( , which calls too) and nothing is stepped. checks "
+        'that the stand-in is not stepped and that a real step of the search then adds no signature to the '
+        "driver (numba's own dispatch as the oracle); it fails on the code before.",
+        ', both caches empty, the new code and 4f728cb alternated twice (10:25-10:30, load 0.8-1.6):',
+        '| LadderMill-v0, make + reset + one step | new | 4f728cb | |---|---|---| | cold: wall [s] | **60.0 / '
+        '56.0** | 62.9 / 71.1 | | cold: CPU of the first process [s] (functions compiled in it) | 59.2 (44) / '
+        '55.2 (45) | 62.1 (48) / 70.3 (48) | | warm: wall [s] (median of 3) | 1.35 / 1.63 | 1.42 / 1.64 |',
+        "after (10:33, load 1.0): 58.8 s, the first process's compiles end at 26.7 s. The same bits: in a "
+        'fresh process with empty caches, reset (seed 0) and 40 random steps of LadderMill-v0 hash to the '
+        "same SHA-256 with both codes. The first process's path is now its two in-plane compiles (about 25 s) "
+        'and the periodic search (about 32 s of RK4 on one thread), so on this machine the 60 s target is met '
+        'only when both cores are free.',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         # the operating point's search lengths (OperatingPoint.t_settle_s): "LadderMill-v0 (laddermill): search ran
