@@ -86,9 +86,8 @@ def compile_in_plane(scene: str, options: tuple) -> None:
     without stepping: a step from the stand-in fails, and the failure's report compiled DP5(4) (about 4.5 s of
     CPU on the first process's path, 2026-12-03) for nothing the search runs. An error-controlled in-plane
     method is still compiled by a step."""
-    from numba import typeof
-
     from laddermill_gym.envs.laddermill.operating_point import mill_scene
+    from laddermill_gym.envs.task_warmup import compile_ahead
     from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, fixed_pieces_call
     from laddermill_gym.sim.simulator import Simulator
 
@@ -97,8 +96,7 @@ def compile_in_plane(scene: str, options: tuple) -> None:
     sim = Simulator(sc2.assembly, x, sc2.settings)
     _discard_failures(lambda: sim.rhs(0.0, x))
     if sc2.settings.method in FIXED_STEP_METHODS:
-        kernel, args = fixed_pieces_call(sim, 1)
-        kernel.compile(tuple(typeof(v) for v in args))
+        compile_ahead([fixed_pieces_call(sim, 1)])
     else:
         _discard_failures(sim.step)
 
