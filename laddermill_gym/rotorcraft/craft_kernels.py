@@ -24,6 +24,7 @@ from collections import namedtuple
 
 from numba import njit
 
+from laddermill_gym.kernels.callee_jit import callee_njit
 from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
     B3_POS,
     B3_RATE,
@@ -86,7 +87,7 @@ from laddermill_gym.rotorcraft.rotor_kernels import (
 SPIN = (1.0, -1.0)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@callee_njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def _air_at(x, o, R, px, py, pz, t, M, s_mod, d_mod):
     """Air velocity relative to the body point (px, py, pz) [m] in body axes [m/s], and the density there."""
     vx, vy, vz = x[o + B3_VEL], x[o + B3_VEL + 1], x[o + B3_VEL + 2]
@@ -141,7 +142,7 @@ def _rotor(cp, rp, scratch, ax, ay, az, rho, theta0, out, k):
     return hforce * ux, hforce * uy, -thrust, torque
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@callee_njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def craft_loads(x, o, R, u, t, M, s_mod, d_mod, craft):
     """Aerodynamic and generator loads on the craft (body o of state x, rotation R) into craft[2][0:6], in the
     wind of the packed model M at time t [s] (speed factor s_mod, direction offset d_mod, its gust grid).

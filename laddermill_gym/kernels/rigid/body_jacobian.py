@@ -17,8 +17,8 @@ one 12.5 ms step at t = 8 s although RK4 follows them at 11 ms). Met explicitly,
 that resolves it.
 """
 
-from numba import njit
 
+from laddermill_gym.kernels.callee_jit import callee_njit
 from laddermill_gym.kernels.contract import B3_QUAT, B3_SIZE, B3_VEL, GL_GRAVITY, TF_MASS, TM_DT, TM_T0
 from laddermill_gym.kernels.dispatch import body_loads
 from laddermill_gym.kernels.wind import modulation
@@ -28,7 +28,7 @@ _FM = {"contract", "nsz", "arcp"}
 DIFF_REL = 1.5e-8
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _loads(k, t, x, R, u, M, W, mods):
     """The vehicle's loads on body k at state x with rotation R (6 values, body axes)."""
     o = B3_SIZE * k + B3_VEL
@@ -37,7 +37,7 @@ def _loads(k, t, x, R, u, M, W, mods):
     return body_loads(M.vehicle, k, t, x, R, u, M, W, W.Y[0], env)  # Y[0]: scratch for the apparent mass
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def add_body_jacobian(t, x, u, M, W, gh, gh2):
     """Subtract gh dL/dv + gh2 dL/dtheta from each body's diagonal block W.D[k] (L its loads: the vehicle's and
     gravity, body axes; v its 6 velocities; theta a small rotation in body axes [rad]) and keep dL/dtheta in
@@ -98,7 +98,7 @@ def add_body_jacobian(t, x, u, M, W, gh, gh2):
                 Dk[i, 3 + j] -= gh2 * kb[i, j]
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def add_body_force(xn, rx, M, W, fac):
     """W.bv[k] += fac dL/dtheta dtheta for every body, dtheta = 2 vec(conj(q) dq) [rad] the small rotation of the
     state increment rx at the state xn (quaternion increment dq = rx's quaternion entries)."""

@@ -31,6 +31,7 @@ import math
 
 from numba import njit
 
+from laddermill_gym.kernels.callee_jit import callee_njit
 from laddermill_gym.kernels.contract import (
     B3_POS,
     B3_QUAT,
@@ -65,7 +66,7 @@ def _add_t_g_t(A, n1, T1, n2, T2, G, sign):
             A[i, j] += sign * (g0 * T2[0, j] + g1 * T2[1, j] + g2 * T2[2, j])
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _element_ends(e, x, M, W, nw):
     """Element e's ends at x with the rotations W.Rn: (end kinds and indices kr, ir, ks, is_, their block sizes nr,
     ns, the vector from r to s (lx, ly, lz) [m] and its length [m]); the ends' maps in W.Tr, W.Ts, W.er, W.es."""
@@ -77,7 +78,7 @@ def _element_ends(e, x, M, W, nw):
     return kr, ir, ks, is_, nr, ns, lx, ly, lz, math.sqrt(lx * lx + ly * ly + lz * lz)
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def add_cable_stiffness(t, x, M, W, gh, gh2):
     """Add to the blocks W.D, W.U (holding the mass matrix at t, x) the cable's gh C + gh2 K terms of the iteration
     matrix, gh = h gamma [s] and gh2 = (h gamma)^2 [s^2], and store each element's K_e in W.ke (slots ``KE_*``).
@@ -127,7 +128,7 @@ def add_cable_stiffness(t, x, M, W, gh, gh2):
                 _add_lever_turn(W, is_, M.ea[e, 1], -sig * ux, -sig * uy, -sig * uz, gh2)
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _add_lever_turn(W, k, a, fx, fy, fz, gh2):
     """The change of a body's generalised cable force Q = (R^T F, a x R^T F) when the body turns by a small dtheta
     (body axes) under a fixed global force F at its attachment a: R^T F gains F_b x dtheta, so dQ/dtheta =
@@ -175,7 +176,7 @@ def _end_displacement(kind, idx, att, xn, rx, Rn, nw):
     return 0.0, 0.0, 0.0
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _add_end_pull(W, br, nr, bs, ns, fx, fy, fz):
     """W.bv[br] += T_r^T F and W.bv[bs] -= T_s^T F for a change F (global) of an element's pull on its end r, with
     the ends' maps in W.Tr, W.Ts (a block index < 0: a fixed end, nothing to add)."""
@@ -187,7 +188,7 @@ def _add_end_pull(W, br, nr, bs, ns, fx, fy, fz):
             W.bv[bs, j] -= W.Ts[0, j] * fx + W.Ts[1, j] * fy + W.Ts[2, j] * fz
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def add_stiffness_force(xn, rx, M, W, fac):
     """W.bv += fac (dQ/dq) P rx: the generalised forces of the elements' stiffness K_e (W.ke, from
     :func:`add_cable_stiffness` at xn) for the state increment rx (positions and quaternions; P maps it to

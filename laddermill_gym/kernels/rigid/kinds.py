@@ -12,6 +12,7 @@ import numpy as np
 from numba import njit
 
 from laddermill_gym.kernels import contract as C
+from laddermill_gym.kernels.callee_jit import callee_njit
 from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_tensions, register_vehicle
 from laddermill_gym.kernels.rigid.aero import wing_aero
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
@@ -159,7 +160,7 @@ def check_wings3d(x, nw, vmax2, wmax2, hg):
     return C.OK
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def rigid3d_check(kind, x, M, limits):
     """Renormalise every body's quaternion and check speeds [m/s] and rates [rad/s] against ``limits``, and the
     heights -z [m] of the body CGs and free nodes against the ground height ``limits[LIM_GROUND]`` (GROUND at or

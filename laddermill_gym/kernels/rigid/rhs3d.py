@@ -17,6 +17,7 @@ import math
 from numba import njit
 
 from laddermill_gym.kernels.cable import aero_load
+from laddermill_gym.kernels.callee_jit import callee_njit
 from laddermill_gym.kernels.contract import (
     B3_POS,
     B3_QUAT,
@@ -129,7 +130,7 @@ def block_of(kind, idx, nw):
 # by comments) instead of passing a dozen values through calls; the golden-trajectory test pins its arithmetic.
 # _nrt=False: it allocates nothing, and without numba's reference counting the arrays of the packed model and
 # workspace handed to the inlined body-loads plug-in cost no atomic increments (chain right-hand side 118 -> 55 us).
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def assemble3d(t, x, u, dx, M, W, sag, caero, vehicle):
     """Assemble eq. (25) at time t, state x, controls u: the position and quaternion rates into dx, the mass
     matrix blocks into W.D (diagonal) and W.U (to the parent block), the generalised forces into W.bv, element
@@ -283,7 +284,7 @@ def assemble3d(t, x, u, dx, M, W, sag, caero, vehicle):
 
 # _nrt=False and the split from assemble3d as above: the linearly implicit integrator (kernels/rigid/rosenbrock.py)
 # assembles the same blocks without solving them.
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def rhs3d(t, x, u, dx, M, W, sag, caero, vehicle):
     """State derivative dx of the 3D model at time t, state x, controls u (the vehicle's, per body).
 

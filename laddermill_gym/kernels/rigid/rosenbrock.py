@@ -37,6 +37,7 @@ import numpy as np
 from numba import njit
 from numba.extending import overload
 
+from laddermill_gym.kernels.callee_jit import callee_njit
 from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attributes of this module)
     B3_POS,
     B3_QUAT,
@@ -109,7 +110,7 @@ def _vel_offset(c, nw):
     return B3_SIZE * nw + N3_SIZE * (c - nw) + N3_VEL
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _mass_times(Dm, Um, r, bv, M):
     """bv = M r_v: the block matrix (Dm, Um) times the velocity entries of the state-shaped vector r."""
     nw = M.wtype.size
@@ -141,7 +142,7 @@ def _mass_times(Dm, Um, r, bv, M):
                 bv[p, j] += s
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _stage_increment(xn, r, Ui, M, W, gh):
     """U_i from the solved block velocities W.bv: velocities as solved, positions and quaternions
     gh (r_x + A U_v) with A at the step's start (rotations W.Rn, quaternions of xn), other entries gh r."""
