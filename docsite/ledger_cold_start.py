@@ -222,6 +222,52 @@ COLD_START = Covered(
         'after (11:19-11:22, load 0.0 at its start): TetheredWing-v0 41.2 s cold, 1.33 s warm; Rotorcraft-v0 '
         "39.3 s, 1.51 s; LadderMill-v0 62.7 s, 1.73 s. The mill's cold starts of the day with the new code were "
         '56.0 to 62.7 s: on this machine the 60 s target is met in some runs, not in all.',
+        # kernels without a CPython wrapper (callee_jit), the chain's linking cost (2026-12-03 afternoon)
+        '## Kernels compiled without a CPython wrapper (2026-12-03, afternoon)',
+        'numba compiles every function with a CPython wrapper, the code that unboxes each argument from a Python '
+        'object so that Python can call it. For the rigid-body kernels, whose model and workspace arguments are '
+        'namedtuples of some 50 arrays, that wrapper is a large function, and LLVM optimised and emitted it with '
+        "every kernel although only compiled code calls most of them. numba's own timings ( , each compile result's )"
+        ' over a cold TetheredWing-v0 make + reset + one step in one process (warm-up off, caches empty; a /tmp '
+        "script, not a package command): the wrappers' function passes took 6.8 s of 76.1 s of CPU (12:44, load about"
+        " 0.5; 's 0.54 s against 0.61 s for its own), 7.2 s and 5.8 s of 77.0 s and 67.4 s in two more (12:50-12:55, "
+        'load 0.5-1.0). Now compiles 15 kernels that only compiled code calls (the 3D assembly and right-hand side, '
+        "the bodies' loads and load Jacobian, the cable's stiffness and its parts, the W step's stage increment and "
+        "mass product, the post-step check, the craft's loads and air) with numba's ; a call from Python (a test, a "
+        "timing study) goes through a small jitted entry built on the first such call. The kernels' and their "
+        "callers' machine code is what gave: TetheredWing-v0 (reset and 200 random steps; 40 copies, 20 steps), "
+        'Rotorcraft-v0 (100; 40 copies, 20), LadderChain-v0 (20), LadderMill-v0 (20) and LadderMill-v3 (10) hash to '
+        'the same SHA-256 as at 1473b0f, each in a fresh process with empty caches. checks the missing wrapper '
+        'against a plain of the same function, and the results from compiled code and from Python against the Python '
+        'function.',
+        "The same one-process runs after, alternated with those: 63.5 s and 62.0 s of CPU, the wrappers' passes 1.6 s"
+        ' (those of the kernels Python calls). , caches empty, the new code and 1473b0f alternated twice '
+        '(13:16-13:23, load 0.9-1.5):',
+        '| make + reset + one step | TetheredWing-v0 new | 1473b0f | Rotorcraft-v0 new | 1473b0f | '
+        '|---|---|---|---|---| | cold: wall [s] | 45.2 / 51.7 | 50.6 / 44.7 | **41.7 / 44.9** | 55.3 / 56.9 | | cold:'
+        ' CPU of the process + its warm-ups [s] | 10.1 + 60.4 / 12.6 + 71.9 | 11.1 + 72.0 / 10.5 + 63.5 | 17.6 + 39.8'
+        ' / 18.7 + 43.0 | 20.6 + 53.3 / 23.3 + 54.9 | | warm: wall [s] (median of 3) | 1.73 / 1.63 | 1.55 / 1.81 | '
+        '1.69 / 1.87 | 1.99 / 2.02 |',
+        "Rotorcraft-v0 gains about 12 s (its one warm-up compiles the callees one after the other). TetheredWing-v0's"
+        " wall time moved within this machine's scatter: its two warm-ups share the callees, and its end is set by "
+        "the step kernel's chain. In its timelines ( , 13:24-13:27, alternated twice) the chain started at 20.4 / "
+        '23.3 s against 24.1 / 24.5 s and took 25.8 / 25.5 s against 28.3 / 22.6 s. LadderMill-v0 (13:28-13:34, '
+        'alternated twice): 75.6 / 74.7 s against 77.4 / 72.2 s; its path is the in-plane compiles and the periodic '
+        "search, which this does not touch. This machine compiled more slowly than in the morning: the mill's cold "
+        'start at 1473b0f took 72.2-77.4 s here against 56.0-62.7 s then.',
+        'after (13:34-13:38, load 0.8 at its start): TetheredWing-v0 48.5 s cold, 2.07 s warm; Rotorcraft-v0 47.1 s, '
+        '1.96 s; LadderMill-v0 73.1 s, 1.56 s.',
+        "**What the chain costs is linking.** numba links each callee's optimised module into its caller's and runs "
+        "LLVM's module passes and code generation over the whole again ( ). With every callee cached, a jitted "
+        'function whose one statement calls compiled in 3.23 s (module passes 2.24 s, code generation 1.31 s), more '
+        "than itself then (2.62 s). In the 76.1 s one-process run above the chain's three layers spent 5.71 + 3.50 s "
+        '( ), 3.21 + 1.76 s ( ) and 2.74 + 1.53 s ( ) in module passes and code generation, against 1.55, 0.60 and '
+        '1.87 s in their own function passes. This corrects the reading of 2026-11-30 above ("re-linking a callee '
+        'costs little"), which came from inlining : that removes a layer\'s link but makes the caller\'s own function '
+        'larger. The lever left for the chain is a call that does not link: the lower layers compiled on their own '
+        "and called through their addresses, passed in by the task, which numba's public API does not offer for its "
+        'own calling convention. Not attempted: every caller of the fixed-step driver (the single, batched and env '
+        'kernels) would take the address, and each change is to be checked bit for bit.',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         # the operating point's search lengths (OperatingPoint.t_settle_s): "LadderMill-v0 (laddermill): search ran
