@@ -66,15 +66,18 @@ def test_keyword_only_parameters_are_refused_when_called_from_python():
 
 
 def test_the_rigid_kernels_callees_have_no_cpython_wrapper():
-    """The kernels that only compiled code calls in a W step and a right-hand side (the cold start's list in
+    """The kernels that only compiled code calls in a W step and the right-hand sides (the cold start's list in
     docs/cold_start.md) are compiled so, and cached on disk."""
-    from laddermill_gym.kernels.rigid import body_jacobian, cable_jacobian, kinds, rhs3d, rosenbrock
+    from laddermill_gym.kernels import moving_cable
+    from laddermill_gym.kernels.rigid import body_jacobian, cable_jacobian, kinds, rhs2d, rhs3d, rosenbrock
     from laddermill_gym.rotorcraft import craft_kernels
 
-    found = {d.py_func.__name__: d for m in (rhs3d, body_jacobian, cable_jacobian, rosenbrock, kinds, craft_kernels)
-             for d in vars(m).values() if isinstance(d, CalleeDispatcher)}
-    assert set(found) == {"assemble3d", "rhs3d", "add_body_jacobian", "add_body_force", "_loads", "add_cable_stiffness",
-                          "add_stiffness_force", "_element_ends", "_add_lever_turn", "_add_end_pull", "_stage_increment",
-                          "_mass_times", "rigid3d_check", "craft_loads", "_air_at"}
+    modules = (rhs3d, rhs2d, body_jacobian, cable_jacobian, rosenbrock, kinds, craft_kernels, moving_cable)
+    found = {d.py_func.__name__: d for m in modules for d in vars(m).values() if isinstance(d, CalleeDispatcher)}
+    assert set(found) == {
+        "assemble3d", "rhs3d", "add_body_jacobian", "add_body_force", "_loads", "add_cable_stiffness",
+        "add_stiffness_force", "_element_ends", "_add_lever_turn", "_add_end_pull", "_stage_increment", "_mass_times",
+        "rigid3d_check", "craft_loads", "_air_at", "rhs2d", "rigid2d_check", "station3d_rhs", "station2d_rhs",
+        "mill3d_check", "mill2d_check", "transfer_2d"}
     assert all(d.targetoptions["no_cpython_wrapper"] for d in found.values())
     assert all(type(d._cache).__name__ == "FunctionCache" for d in found.values())  # cache=True

@@ -30,6 +30,7 @@ from collections import namedtuple
 from numba import njit
 
 from laddermill_gym.kernels import contract as C
+from laddermill_gym.kernels.callee_jit import callee_njit
 from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_moving_ends
 from laddermill_gym.kernels.rigid.kinds import rigid2d_check, rigid3d_check
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
@@ -69,7 +70,7 @@ def veered_minus_hauled(tension):
 
 # The right-hand sides of every station kind (the moving cable, the winch: kernels/winch.py registers these too):
 # the rigid model's, then the station block driven by the kind's registered drive (kernels/station.py).
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def station3d_rhs(kind, t, x, u, dx, M, W):
     status = rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
     station_rates(kind.station, t, x, u, dx, station_drive(kind, W.tension))
@@ -83,7 +84,7 @@ def station3d_assemble(kind, t, x, u, dx, M, W):
     return 0
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def station2d_rhs(kind, t, x, u, dx, M, W):
     status = rhs2d(t, x, u, dx, M, W, M.sag, M.caero)
     station_rates(kind.station, t, x, u, dx, station_drive(kind, W.tension))
@@ -182,7 +183,7 @@ def transfer_3d(sp, x, M, up):
         x[o + C.B3_RATE + i] = 0.0
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def transfer_2d(sp, x, M, up):
     """One wing transfer in an in-plane state (see :func:`transfer_3d`)."""
     e, nb, end, f, l0 = _split(sp, x, M, up)
@@ -239,7 +240,7 @@ def _book(sp, x, d, status):
     return C.LIMIT if _transfers_due(sp, x, C.OK) != 0 else C.OK
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def mill3d_check(kind, x, M, limits):
     """The rigid check, then at most one wing transfer; LIMIT if the cable moved more than one piece in a step."""
     status = rigid3d_check(kind, x, M, limits)
@@ -249,7 +250,7 @@ def mill3d_check(kind, x, M, limits):
     return _book(kind.station, x, d, status)
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def mill2d_check(kind, x, M, limits):
     """The in-plane rigid check, then at most one wing transfer (see :func:`mill3d_check`)."""
     status = rigid2d_check(kind, x, M, limits)

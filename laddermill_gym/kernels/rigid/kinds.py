@@ -181,7 +181,7 @@ def rigid3d_check(kind, x, M, limits):
     return C.OK
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+@callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def rigid2d_check(kind, x, M, limits):
     """Check in-plane speeds [m/s] and pitch rates [rad/s] against ``limits``, and the heights -z [m] of the body
     CGs and free nodes against the ground height ``limits[LIM_GROUND]`` (GROUND at or below it)."""

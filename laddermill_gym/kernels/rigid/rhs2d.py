@@ -12,6 +12,7 @@ from numba import njit
 
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.cable import aero_load
+from laddermill_gym.kernels.callee_jit import callee_njit
 from laddermill_gym.kernels.dispatch import elongation_rate, rest_length
 from laddermill_gym.kernels.rigid.aero import wing_aero_long
 from laddermill_gym.kernels.rigid.blocks import tree_solve
@@ -69,7 +70,7 @@ def _add_mass2(A, nb1, T1, nb2, T2, m):
 # One function of more than 80 lines on purpose: it is the hot loop of every scene, and each element's end
 # kinematics, loads and tension stay in local scalars across its three phases (bodies, nodes, elements, marked
 # by comments) instead of passing a dozen values through calls; the golden-trajectory test pins its arithmetic.
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@callee_njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
 def rhs2d(t, x, u, dx, M, W, sag, caero):
     """State derivative of the in-plane model (see rhs3d.rhs3d for the arguments). Returns 0 or 1."""
     nw = M.wtype.size
