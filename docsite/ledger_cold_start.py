@@ -255,8 +255,16 @@ COLD_START = Covered(
         'alternated twice): 75.6 / 74.7 s against 77.4 / 72.2 s; its path is the in-plane compiles and the periodic '
         "search, which this does not touch. This machine compiled more slowly than in the morning: the mill's cold "
         'start at 1473b0f took 72.2-77.4 s here against 56.0-62.7 s then.',
-        'after (13:34-13:38, load 0.8 at its start): TetheredWing-v0 48.5 s cold, 2.07 s warm; Rotorcraft-v0 47.1 s, '
-        '1.96 s; LadderMill-v0 73.1 s, 1.56 s.',
+        'Seven more kernels then (7cf0472), for the mill: in a cold LadderMill-v0 in one process (132.5 s of CPU) the'
+        " wrappers' function passes took 8.0 s, among them the in-plane right-hand side 's (0.62 and 0.83 s, two "
+        "signatures) and the moving cable's ( 0.70 s, 0.52 s); these, the in-plane check, the moving cable's checks "
+        'and its in-plane transfer are now compiled without one (the same hashes: TetheredWing-v0, LadderChain-v0, '
+        'LadderMill-v0, -v1 and -v3 against the kernels before). LadderMill-v0 cold, alternated twice with the code '
+        "before (14:10-14:16, load 0.8-1.5): 72.4 / 72.2 s against 72.5 / 72.5 s, the warm-up's CPU 52.4 / 49.9 s "
+        "against 55.1 / 52.3 s: its wall time does not move (the first process, its operating point's in-plane "
+        'compiles and search, sets it).',
+        'after the first fifteen (13:34-13:38, load 0.8 at its start): TetheredWing-v0 48.5 s cold, 2.07 s warm; '
+        'Rotorcraft-v0 47.1 s, 1.96 s; LadderMill-v0 73.1 s, 1.56 s.',
         "**What the chain costs is linking.** numba links each callee's optimised module into its caller's and runs "
         "LLVM's module passes and code generation over the whole again ( ). With every callee cached, a jitted "
         'function whose one statement calls compiled in 3.23 s (module passes 2.24 s, code generation 1.31 s), more '
