@@ -4,7 +4,8 @@ numba compiles every ``@njit`` function with a CPython wrapper, the code that un
 objects, even when only compiled code calls it. For the rigid-body kernels, whose arguments are the model and
 workspace namedtuples of some 50 arrays, that wrapper is a large function: LLVM optimises and emits it with the
 kernel (0.2-0.6 s each on this 2-core machine) and again inside every caller that links the kernel, where it is
-dropped unused. A cold TetheredWing-v0 start compiles 13 such kernels (issue 32 point 1, docs/cold_start.md).
+dropped unused. 22 kernels use it: the rigid, in-plane, moving-cable and craft right-hand sides, their checks
+and parts, and the W step's (issue 32 point 1, docs/cold_start.md).
 
 A kernel decorated with :func:`callee_njit` is compiled with numba's ``no_cpython_wrapper`` option; the machine
 code of the kernel itself, and of every kernel that calls it, is what ``@njit`` gives. Called from Python (a test,
