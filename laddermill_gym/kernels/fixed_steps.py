@@ -17,9 +17,10 @@ plain fixed-step kernels run them (bit for bit).
 import math
 
 from numba import njit, types
-from numba.extending import overload
 
 from laddermill_gym.kernels.contract import OK, TM_DT, TM_T0, KModel
+from laddermill_gym.kernels.dispatch import inline_overload
+from laddermill_gym.kernels.far_call import far_call
 from laddermill_gym.kernels.integrate import rk4_advance
 from laddermill_gym.kernels.rigid.rosenbrock import w_advance
 from laddermill_gym.kernels.wind import modulation
@@ -48,19 +49,20 @@ def advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
     raise NotImplementedError("advance_fixed is resolved inside numba kernels")
 
 
-# The chosen integrator's own Python function is the implementation (compiled with the integrators' flags), not a
-# lambda that calls its dispatcher: a lambda is one more compiled layer that numba links the whole integrator into
-# and optimises again, about 6 s of a cold start (issue 32); rk4_advance takes (and ignores) ``tableau`` for this.
-# Not cache=True: the overload's dispatcher would save its machine code under the integrator's own cache index (the
-# same function and signature), and the integrator's @njit dispatcher, called from Python, then loaded the overload's
-# entry and crashed (a segmentation fault in tests/test_controller_errors.py's W step timing, 2026-11-30): each
-# process that compiles advance_breaks compiles the integrator again instead (issue 32 point 1).
-@overload(advance_fixed, strict=False, jit_options={"error_model": "numpy", "fastmath": {"contract", "nsz", "arcp"},
-                                                    "_nrt": False})
+# The chosen integrator is called through its compiled address (kernels/far_call.py): its own cached dispatcher,
+# compiled on its own, not linked into advance_breaks (numba optimised and emitted the whole integrator again in
+# every caller, issue 32 point 1). An earlier version took the integrator's Python function as the overload's
+# implementation, compiled (not cached: it crashed when it shared the integrator's cache index, 2026-11-30) in each
+# process that compiled advance_breaks. rk4_advance takes (and ignores) ``tableau`` for this.
+_RK4_FAR = far_call(rk4_advance, types.UniTuple(types.int64, 2))
+_W_FAR = far_call(w_advance, types.UniTuple(types.int64, 2))
+
+
+@inline_overload(advance_fixed)
 def _advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
     if isinstance(tableau, types.NoneType):
-        return rk4_advance.py_func
-    return w_advance.py_func
+        return lambda t, x, u, dt, n, M, W, limits, tableau: _RK4_FAR(t, x, u, dt, n, M, W, limits, tableau)
+    return lambda t, x, u, dt, n, M, W, limits, tableau: _W_FAR(t, x, u, dt, n, M, W, limits, tableau)
 
 
 # The kink helpers below are inlined into advance_breaks (numba IR; about 4 s of a cold start as six compiles of

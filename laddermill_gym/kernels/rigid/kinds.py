@@ -9,11 +9,12 @@ import math
 from collections import namedtuple
 
 import numpy as np
-from numba import njit
+from numba import njit, types
 
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.callee_jit import callee_njit
 from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_tensions, register_vehicle
+from laddermill_gym.kernels.far_call import far_call
 from laddermill_gym.kernels.rigid.aero import wing_aero
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
 from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
@@ -78,14 +79,18 @@ def wing_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
 # The three wrappers below are inlined (no arithmetic of their own, callers with the same flags): numba links a
 # compiled function's every callee into its library and optimises it all again, so each wrapper compiled on its own
 # cost seconds of a cold start for nothing (issue 32).
+_rhs3d_far = far_call(rhs3d, types.int64)
+_assemble3d_far = far_call(assemble3d, types.none)
+
+
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def rigid3d_rhs(kind, t, x, u, dx, M, W):
-    return rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+    return _rhs3d_far(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def rigid3d_assemble(kind, t, x, u, dx, M, W):
-    assemble3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+    _assemble3d_far(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
     return 0
 
 
@@ -100,7 +105,7 @@ def no_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
 # states) and skips the wings' aerodynamics, about two thirds of an observation (issue 32 point 2)
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def rigid3d_tensions(kind, t, x, u, dx, M, W):
-    assemble3d(t, x, u, dx, M, W, M.sag, M.caero, NO_LOADS)
+    _assemble3d_far(t, x, u, dx, M, W, M.sag, M.caero, NO_LOADS)
     return 0
 
 
@@ -204,7 +209,7 @@ def rigid2d_check(kind, x, M, limits):
     return C.OK
 
 
-register_kind(Rigid3D, rigid3d_rhs, rigid3d_check)
+register_kind(Rigid3D, rigid3d_rhs, far_call(rigid3d_check, types.int64))
 register_kind(Rigid2D, rigid2d_rhs, rigid2d_check)
 register_assemble(Rigid3D, rigid3d_assemble)
 register_tensions(Rigid3D, rigid3d_tensions)
