@@ -86,16 +86,19 @@ def _step_arguments(module, names: tuple, build, trim: tuple):
     return got.get("args")
 
 
-def step_callees(args) -> list:
-    """The kernels the step-and-observe kernel called with ``args`` compiles as callees, as (dispatcher, arguments)
-    pairs in the order its compile reaches them (``kernels/rigid/rosenbrock.w_step_calls``,
-    ``kernels/rigid/kinds.rigid3d_calls``), with the arguments of copy 0 (``kernels/batch.copy_views``);
-    empty for a model that is not rigid 3D or a scene that steps with RK4 (its few callees compile in seconds)."""
+def step_callees(args, observe: bool = True) -> list:
+    """The kernels the step-and-observe kernel called with ``args`` calls (through their addresses,
+    ``kernels/far_call.py``) or links, as (dispatcher, arguments) pairs (``kernels/rigid/rosenbrock.w_step_calls``,
+    ``kernels/rigid/kinds.rigid3d_calls``) with the arguments of copy 0 (``kernels/batch.copy_views``): the
+    assembly first, the fixed-step driver and the W method's loop (each compiled on its own now) last, the
+    observation's tensions (``observe``) before those; empty for a model that is not rigid 3D or a scene that
+    steps with RK4 (its few callees compile in seconds). :func:`compile_wing` compiles them from the first,
+    :func:`compile_wing_tail` from the last."""
     from laddermill_gym.kernels.batch import row_or_none
     from laddermill_gym.kernels.contract import KWork
-    from laddermill_gym.kernels.fixed_steps import model_with_air
+    from laddermill_gym.kernels.fixed_steps import advance_breaks, model_with_air
     from laddermill_gym.kernels.rigid.kinds import Rigid3D, rigid3d_calls
-    from laddermill_gym.kernels.rigid.rosenbrock import w_step_calls
+    from laddermill_gym.kernels.rigid.rosenbrock import w_advance, w_step_calls
 
     t, X, U, dt, _, M, kind, vehicle, WB, AB, limits, tableau, _, DX = args[:14]
     if tableau is None or not isinstance(kind, Rigid3D):
@@ -107,7 +110,11 @@ def step_callees(args) -> list:
     kinds = rigid3d_calls(t0, X[0], U[0], Wb.k5, Mb, Wb, limits)  # the W step's derivative scratch: W.k5
     w = w_step_calls(t0, X[0], U[0], dt, Mb, Wb, tableau)
     observed = rigid3d_calls(t0, X[0], U[0], DX[0], Mb, Wb, limits)  # the observation's: the kernel's DX row
-    return [kinds["assemble"], *w[:4], kinds["rhs"], *w[4:], kinds["check"], observed["tensions"]]
+    n, breaks = args[4][0], args[12]
+    chain = [(w_advance, (t0, X[0], U[0], dt, n, Mb, Wb, limits, tableau)),
+             (advance_breaks, (t0, X[0], U[0], dt, n, Mb, Wb, limits, tableau, breaks))]
+    return [kinds["assemble"], *w[:4], kinds["rhs"], *w[4:], kinds["check"],
+            *([observed["tensions"]] if observe else []), *chain]
 
 
 def compile_ahead(calls) -> int:
@@ -168,7 +175,7 @@ def craft_calls(task_kwargs: dict) -> tuple[list, list, bool]:
 
     args = _step_arguments(craft_task, ("craft_step_observe_serial",),
                            lambda: craft_task.CraftTask(**task_kwargs), ("craft_trim", recording_stand_in))
-    calls = [] if args is None else step_callees(args)[:-1]
+    calls = [] if args is None else step_callees(args, observe=False)
     trims = (assemble3d, rhs3d, add_body_jacobian)
     on_disk = bool(asked) and trim_on_disk(*asked[0][0], **asked[0][1])
     return [c for c in calls if c[0] not in trims], [c for c in calls if c[0] in trims], on_disk
