@@ -80,10 +80,10 @@ def advance_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, table
     return n >= 0, st, dn, Mb, Wb
 
 
-# nogil: the integrator and the model's kernels are called through their addresses, resolved on the first call in
-# Python (kernels/far_call.py); a worker thread of the parallel loop that asked while this thread held the GIL
-# would wait for ever. advance_breaks itself stays linked: called through its address from the env step kernels
-# it changed 3 of 800 rewards of a 40-copy TetheredWing-v0 by 7e-15 to 1e-10 (cause not found; issue 32 point 1).
+# nogil: the integrator is called through its address, resolved on the first call in Python (kernels/far_call.py);
+# a worker thread of the parallel loop that asked while this thread held the GIL would wait for ever. advance_breaks
+# itself stays linked: called through its address from the env step kernels, it changed 3 of 800 rewards of a
+# 40-copy TetheredWing-v0 by 7e-15 to 1e-10 (cause not found; issue 32 point 1).
 @njit(cache=True, error_model="numpy", parallel=True, nogil=True)
 def fixed_batch(t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, tableau, breaks, status, done):
     """Advance the states X (B, n_state) in place by n fixed steps of size dt with controls U (B, n_controls): RK4

@@ -2,10 +2,12 @@
 
 Why (issue 32 point 1, docs/cold_start.md): numba links every callee's optimised module into its caller's library
 and runs LLVM's module passes and code generation over the whole again, in every layer of a call chain. The step
-kernel's chain (step kernel -> fixed-step driver -> W step -> right-hand side, Jacobian, ...) re-processed the
-same callee tree three times, about 18 s of a 63 s cold start's CPU on the 2-core machine, and no layer could
-start compiling before the one below it had finished. A call made through this module's function compiles as an
-indirect call: the caller's library holds its own code only, and the caller compiles without the callee.
+kernel's chain (step kernel -> fixed-step driver -> W method's loop -> right-hand side, Jacobian, ...) emitted the
+same callee tree three times, and no layer could start compiling before the one below it had finished. A call made
+through this module's function compiles as an indirect call: the caller's library holds its own code only, and the
+caller compiles without the callee. Used where a call is rare and its callee large: the integrators under the
+fixed-step driver (``kernels/fixed_steps.py``, one call per run of steps) and the observation's element loop
+(``kernels/rigid/kinds.py``, one call per env step).
 
 How: ``f_far = far_call(f, restype)`` (``f`` a numba dispatcher defined at module level, ``restype`` the numba type
 it returns, stated because the caller no longer compiles it) is an intrinsic with ``f``'s parameters. At a call
@@ -17,11 +19,15 @@ specialisation a linked call would have used, checks the return type and stores 
 later call loads the cell and calls through it with numba's own calling convention (its status and exception
 propagate as from a linked call). So callers cache on disk as usual: nothing process-specific is compiled in.
 
-What it costs: one load and a predictable branch per call, and LLVM cannot inline ``f`` into the caller (which
-also means the caller's arithmetic is the callee's as compiled on its own: the same bits as linked unless LLVM had
-inlined it; each use here is checked by hashing the envs' trajectories against the linked code). A failure to
+What it costs: one load and a predictable branch per call, and every argument passed as numba passes it, each
+namedtuple field by field (the model and workspace: some 500 values), where LLVM drops a linked callee's unused
+ones or inlines it. So it is for calls that are rare beside their callee's work: called by address, the W step's
+23 calls of its parts per step cost TetheredWing-v0's and Rotorcraft-v0's vector envs 5-17 % of their steps/s at
+512 copies (2026-12-03), and they stay linked. The caller's arithmetic is the callee's as compiled on its own: the same bits as linked unless LLVM had
+inlined it; each use here is checked by hashing the envs' trajectories against the linked code. A failure to
 resolve (``f`` does not compile for the types, or returns another type) prints its traceback to stderr and raises
-``RuntimeError`` from the caller; it never calls a null address.
+``RuntimeError`` from the caller; it never calls a null address. A kernel with parallel loops that reaches a call
+by address must be ``nogil``: its worker threads may ask the resolver, which takes the GIL.
 """
 
 from __future__ import annotations

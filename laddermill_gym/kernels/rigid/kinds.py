@@ -76,21 +76,24 @@ def wing_loads(vehicle, k, t, x, R, u, M, W, Dk, env):
             ao[C.AO_MOMENT + 2])
 
 
-# The three wrappers below are inlined (no arithmetic of their own, callers with the same flags): numba links a
-# compiled function's every callee into its library and optimises it all again, so each wrapper compiled on its own
-# cost seconds of a cold start for nothing (issue 32).
-_rhs3d_far = far_call(rhs3d, types.int64)
+# the observation's element loop (once per env step) called through its address, not linked into the step kernel
+# (kernels/far_call.py, issue 32 point 1); the integrators' calls stay linked: a call by address passes every field
+# of the model and workspace namedtuples (some 500 values), which LLVM strips from a linked callee's unused ones,
+# and 23 such calls per W step cost the wing's and the craft's vector envs 5-17 % of their steps/s at 512 copies
 _assemble3d_far = far_call(assemble3d, types.none)
 
 
+# The three wrappers below are inlined (no arithmetic of their own, callers with the same flags): numba links a
+# compiled function's every callee into its library and optimises it all again, so each wrapper compiled on its own
+# cost seconds of a cold start for nothing (issue 32).
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def rigid3d_rhs(kind, t, x, u, dx, M, W):
-    return _rhs3d_far(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+    return rhs3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def rigid3d_assemble(kind, t, x, u, dx, M, W):
-    _assemble3d_far(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+    assemble3d(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
     return 0
 
 
@@ -209,7 +212,7 @@ def rigid2d_check(kind, x, M, limits):
     return C.OK
 
 
-register_kind(Rigid3D, rigid3d_rhs, far_call(rigid3d_check, types.int64))
+register_kind(Rigid3D, rigid3d_rhs, rigid3d_check)
 register_kind(Rigid2D, rigid2d_rhs, rigid2d_check)
 register_assemble(Rigid3D, rigid3d_assemble)
 register_tensions(Rigid3D, rigid3d_tensions)

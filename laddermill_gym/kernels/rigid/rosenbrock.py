@@ -34,7 +34,7 @@ Status codes as ``kernels/integrate.py``; on a failure the state is left at the 
 import math
 
 import numpy as np
-from numba import njit, types
+from numba import njit
 from numba.extending import overload
 
 from laddermill_gym.kernels.callee_jit import callee_njit
@@ -50,7 +50,6 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
     SINGULAR,
 )
 from laddermill_gym.kernels.dispatch import model_assemble, model_check, model_rhs
-from laddermill_gym.kernels.far_call import far_call
 from laddermill_gym.kernels.rigid.blocks import copy_blocks, tree_factor, tree_solve_factored
 from laddermill_gym.kernels.rigid.body_jacobian import add_body_force, add_body_jacobian
 from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness, add_stiffness_force, moving_end_force
@@ -173,14 +172,6 @@ def _stage_increment(xn, r, Ui, M, W, gh):
             Ui[o + N3_POS + i] += gh * W.bv[b, i]
 
 
-# called through their addresses, not linked (kernels/far_call.py, issue 32 point 1)
-_body_jacobian_far = far_call(add_body_jacobian, types.none)
-_cable_stiffness_far = far_call(add_cable_stiffness, types.none)
-_mass_times_far = far_call(_mass_times, types.none)
-_stiffness_force_far = far_call(add_stiffness_force, types.none)
-_body_force_far = far_call(add_body_force, types.none)
-_stage_increment_far = far_call(_stage_increment, types.none)
-
 #: a held iteration matrix serves steps whose h gamma is within this fraction of its own [-] (rounding of a step
 #: size recomputed from times, not a change of step)
 REUSE_RTOL = 1e-9
@@ -226,8 +217,8 @@ def _iteration_matrix(t, xp, u, dt, M, W, gh, every):
         if abs(W.wjac[0] - gh) <= REUSE_RTOL * gh and int(math.floor(t / dt + 0.5)) % every != 0:
             return True
         W.wjac[0] = 0.0
-    _body_jacobian_far(t, xp, u, M, W, gh, gh * gh)
-    _cable_stiffness_far(t, xp, M, W, gh, gh * gh)
+    add_body_jacobian(t, xp, u, M, W, gh, gh * gh)
+    add_cable_stiffness(t, xp, M, W, gh, gh * gh)
     copy_blocks(W.D, W.U, W.Ds, W.Us, M.order, M.bsz)
     if not tree_factor(W.Ds, W.Us, W.Yw, W.pivw, M.order, M.parent, M.bsz):  # once: the stages share it
         return False
@@ -282,9 +273,9 @@ def w_step(t, x, u, dt, M, W, tableau):
                 for j in range(st):
                     acc += (c[st, j] / dt) * stages[j][i]
                 r[i] = acc
-            _mass_times_far(W.Dm, W.Um, r, W.bv, M)
-        _stiffness_force_far(xp, r, M, W, gh)
-        _body_force_far(xp, r, M, W, gh)
+            _mass_times(W.Dm, W.Um, r, W.bv, M)
+        add_stiffness_force(xp, r, M, W, gh)
+        add_body_force(xp, r, M, W, gh)
         moving_end_force(M.kind, t, xp, r, rt, M, W, gh)
         if st == 0:
             ut0 = gh * rt
@@ -296,7 +287,7 @@ def w_step(t, x, u, dt, M, W, tableau):
             for i in range(6):
                 W.bv[b, i] *= gh
         tree_solve_factored(W.Ds, W.Us, W.Yw, W.pivw, W.bv, M.order, M.parent, M.bsz)
-        _stage_increment_far(xp, r, stages[st], M, W, gh)
+        _stage_increment(xp, r, stages[st], M, W, gh)
     for i in range(ns):
         acc = xp[i]
         for j in range(s):
