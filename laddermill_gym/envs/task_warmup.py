@@ -93,7 +93,8 @@ def step_callees(args, observe: bool = True) -> list:
     assembly first, the fixed-step driver and the W method's loop (each compiled on its own now) last, the
     observation's tensions (``observe``) before those; empty for a model that is not rigid 3D or a scene that
     steps with RK4 (its few callees compile in seconds). :func:`compile_wing` compiles them from the first,
-    :func:`compile_wing_tail` from the last."""
+    :func:`compile_wing_tail` from the last but one; the W method's loop, which links the W step's parts, comes
+    last in both."""
     from laddermill_gym.kernels.batch import row_or_none
     from laddermill_gym.kernels.contract import KWork
     from laddermill_gym.kernels.fixed_steps import advance_breaks, model_with_air
@@ -111,8 +112,8 @@ def step_callees(args, observe: bool = True) -> list:
     w = w_step_calls(t0, X[0], U[0], dt, Mb, Wb, tableau)
     observed = rigid3d_calls(t0, X[0], U[0], DX[0], Mb, Wb, limits)  # the observation's: the kernel's DX row
     n, breaks = args[4][0], args[12]
-    chain = [(w_advance, (t0, X[0], U[0], dt, n, Mb, Wb, limits, tableau)),
-             (advance_breaks, (t0, X[0], U[0], dt, n, Mb, Wb, limits, tableau, breaks))]
+    chain = [(advance_breaks, (t0, X[0], U[0], dt, n, Mb, Wb, limits, tableau, breaks)),
+             (w_advance, (t0, X[0], U[0], dt, n, Mb, Wb, limits, tableau))]
     return [kinds["assemble"], *w[:4], kinds["rhs"], *w[4:], kinds["check"],
             *([observed["tensions"]] if observe else []), *chain]
 
@@ -160,12 +161,14 @@ def craft_calls(task_kwargs: dict) -> tuple[list, list, bool]:
     right-hand side), taken from a task built around :func:`stand_in_craft_trim` (``craft_trim`` restored after),
     split into (those the craft's trim does not compile, those it does with the same types: the assembly and the
     right-hand side, and the bodies' load Jacobian, whose compile needs the craft's loads that the assembly
-    compiles), and whether the first process reads its trim from the on-disk start cache
-    (:func:`~laddermill_gym.envs.rotorcraft.trim.trim_on_disk`: it then compiles none of them)."""
+    compiles; then the W method's loop, which links them), and whether the first process reads its trim from the
+    on-disk start cache (:func:`~laddermill_gym.envs.rotorcraft.trim.trim_on_disk`: it then compiles none of
+    them)."""
     from laddermill_gym.envs.rotorcraft import task as craft_task
     from laddermill_gym.envs.rotorcraft.trim import trim_on_disk
     from laddermill_gym.kernels.rigid.body_jacobian import add_body_jacobian
     from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
+    from laddermill_gym.kernels.rigid.rosenbrock import w_advance
 
     asked = []
 
@@ -176,7 +179,7 @@ def craft_calls(task_kwargs: dict) -> tuple[list, list, bool]:
     args = _step_arguments(craft_task, ("craft_step_observe_serial",),
                            lambda: craft_task.CraftTask(**task_kwargs), ("craft_trim", recording_stand_in))
     calls = [] if args is None else step_callees(args, observe=False)
-    trims = (assemble3d, rhs3d, add_body_jacobian)
+    trims = (assemble3d, rhs3d, add_body_jacobian, w_advance)  # the W method's loop links the first three
     on_disk = bool(asked) and trim_on_disk(*asked[0][0], **asked[0][1])
     return [c for c in calls if c[0] not in trims], [c for c in calls if c[0] in trims], on_disk
 
@@ -209,10 +212,12 @@ def compile_wing(task_kwargs: dict) -> None:
 
 
 def compile_wing_tail(task_kwargs: dict) -> None:
-    """The wing step kernel's callees (:func:`wing_calls`) from the last to the first, in a process beside
+    """The wing step kernel's callees (:func:`wing_calls`) from the last but one to the first, then the last (the W
+    method's loop, which links the others), in a process beside
     :func:`compile_wing`'s: each compiles those the other has not written to numba's cache yet, so the two share
     them (at most the one both reach together is compiled twice) while the first process solves the trim."""
-    compile_ahead(wing_calls(task_kwargs)[::-1])
+    calls = wing_calls(task_kwargs)
+    compile_ahead(calls[-2::-1] + calls[-1:])  # the W method's loop last: it links the others
     print(CALLEES_DONE, flush=True)
 
 

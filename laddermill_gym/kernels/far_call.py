@@ -23,11 +23,12 @@ What it costs: one load and a predictable branch per call, and every argument pa
 namedtuple field by field (the model and workspace: some 500 values), where LLVM drops a linked callee's unused
 ones or inlines it. So it is for calls that are rare beside their callee's work: called by address, the W step's
 23 calls of its parts per step cost TetheredWing-v0's and Rotorcraft-v0's vector envs 5-17 % of their steps/s at
-512 copies (2026-12-03), and they stay linked. The caller's arithmetic is the callee's as compiled on its own: the same bits as linked unless LLVM had
-inlined it; each use here is checked by hashing the envs' trajectories against the linked code. A failure to
-resolve (``f`` does not compile for the types, or returns another type) prints its traceback to stderr and raises
-``RuntimeError`` from the caller; it never calls a null address. A kernel with parallel loops that reaches a call
-by address must be ``nogil``: its worker threads may ask the resolver, which takes the GIL.
+512 copies (2026-12-03), and they stay linked. The caller's arithmetic is the callee's as compiled on its own:
+the same bits as linked unless LLVM had inlined it; each use here is checked by hashing the envs' trajectories
+against the linked code. A failure to resolve (``f`` does not compile for the types, or returns another type)
+prints its traceback to stderr and raises ``RuntimeError`` from the caller; it never calls a null address. A kernel
+with parallel loops that reaches a call by address must be ``nogil``: its worker threads may ask the resolver,
+which takes the GIL.
 """
 
 from __future__ import annotations
