@@ -271,15 +271,32 @@ COLD_START = Covered(
         "than itself then (2.62 s). In the 76.1 s one-process run above the chain's three layers spent 5.71 + 3.50 s "
         '( ), 3.21 + 1.76 s ( ) and 2.74 + 1.53 s ( ) in module passes and code generation, against 1.55, 0.60 and '
         '1.87 s in their own function passes. This corrects the reading of 2026-11-30 above ("re-linking a callee '
-        'costs little"), which came from inlining : that removes a layer\'s link but makes the caller\'s own function '
-        'larger. The lever left for the chain is a call that does not link: the lower layers compiled on their own '
-        "and called through their addresses, passed in by the task. numba's API has no such call for its own calling "
-        "convention (its first-class functions link the callee too), but a small intrinsic makes it from numba's and "
-        "the callee's compiled address: with every callee cached, a one-call function calling so compiled in 0.88 s "
-        'against 2.98 s for the same function linked, and wrote the same derivative bits (13:50, a /tmp script). Not '
-        'done this session: every caller of the fixed-step driver (the single, batched and env kernels) would take '
-        "the address, the callee's return type would be stated instead of inferred, and each change is to be checked "
-        'bit for bit and for speed (a linked callee can be inlined, one called by address cannot).',
+        'costs little"), which came from inlining . The lever left is a call that does not link (numba\'s first-class '
+        "functions link the callee too): an intrinsic on numba's calling the callee's compiled address; a one-call "
+        'function calling so compiled in 0.88 s against 2.98 s linked, with the same derivative bits (13:50, a /tmp '
+        'script; every callee cached). Done the same evening: next section.',
+        '## Kernels called through their addresses (2026-12-03, evening)',
+        "is that call: the call site's pointer cell is filled on the first call by a C callback that compiles for the"
+        " call's types (or loads it from numba's cache); the caller caches as before ( : results as linked, a fresh "
+        'process, exceptions, a wrong return type, six threads at once).',
+        "Tried first: all under the step kernels by address (the W step's parts, the 3D kind's assembly, right-hand "
+        'side and check, the integrator, the fixed-step driver): cold TetheredWing-v0 49.9 / 47.7 s against 71.2 / '
+        '67.9 s, Rotorcraft-v0 51.7 / 48.0 s against 66.8 / 68.8 s (startup command, alternated, 17:13-17:22, load '
+        '1.3-1.6). But the driver by address changed 3 of 800 rewards of a 40-copy TetheredWing-v0 by 7e-15 to 1e-10 '
+        '(cause not found), and a call by address passes every field of the model and workspace (some 500 values; '
+        "LLVM drops a linked callee's unused ones): the W step's 23 calls per step so made gave 60,532 / 64,054 "
+        'steps/s against 72,745 at 512 TetheredWing-v0 copies, 24,564 / 26,906 against 28,212 for Rotorcraft-v0 ( , '
+        '17:26-17:29, load 1.2-1.6). So only rare calls go by address now: the integrator under the driver, the '
+        "observation's element loop. Same bits against c763a66 (fresh processes, empty caches): TetheredWing-v0 (200 "
+        'steps; 40 copies, 20), Rotorcraft-v0 (100; 40 copies, 20), LadderChain-v0 (20), LadderMill-v0 (20), -v3 '
+        '(10). The same bench-envs, 17:53-17:57, one run each: TetheredWing-v0 44,607 / 74,188 steps/s at 64 / 512 '
+        'copies against 47,393 / 73,858, Rotorcraft-v0 19,736 / 26,999 against 19,868 / 28,361.',
+        '| make + reset + one step, 17:43-17:53 (load 1.4-2.0), alternated twice | new (9976157) | c763a66 | '
+        '|---|---|---| | TetheredWing-v0 cold / warm [s] | **61.6 / 61.8** / 2.91 / 2.99 | 71.9 / 68.7 / 2.70 / 2.52 '
+        '| | Rotorcraft-v0 cold / warm [s] | **59.6 / 59.5** / 2.93 / 2.94 | 65.2 / 64.9 / 2.86 / 2.90 |',
+        'About 9 s and 6 s less cold (a slow hour: c763a66 took 48 s at 13:34), less than the first try: the W '
+        "method's loop links its parts again. The wing's warm start is about 0.3 s longer (two more cache entries to "
+        'load).',
     ),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
         # the operating point's search lengths (OperatingPoint.t_settle_s): "LadderMill-v0 (laddermill): search ran
