@@ -19,7 +19,7 @@ import warnings
 import numpy as np
 import pytest
 
-from laddermill_gym.envs import kernel_warmup
+from laddermill_gym.envs import compile_trace, kernel_warmup
 from laddermill_gym.envs.rotorcraft.trim import craft_trim
 from laddermill_gym.envs.task import scene_trim
 from laddermill_gym.envs.task_warmup import stand_in_craft_trim, stand_in_wing_trim
@@ -78,9 +78,12 @@ print(json.dumps({"names": names, "bits": np.concatenate([np.ravel(o) for o in o
 """
 
 
-def fresh(tmp, env_id: str, warmup: bool) -> dict:
+def fresh(tmp, env_id: str, warmup: bool, trace=None) -> dict:
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp / "numba"), LADDERMILL_CACHE_DIR=str(tmp / "ops"))
     env[kernel_warmup.SWITCH] = "on" if warmup else "off"
+    if trace is not None:  # the warm-up processes' top-level compiles (envs/compile_trace.py)
+        os.makedirs(trace, exist_ok=True)
+        env[compile_trace.VARIABLE] = str(trace)
     r = subprocess.run([sys.executable, "-c", CHILD % (env_id,)], env=env, capture_output=True, text=True, check=True)
     return json.loads(r.stdout.strip().splitlines()[-1])
 
@@ -89,11 +92,17 @@ def fresh(tmp, env_id: str, warmup: bool) -> dict:
 @pytest.mark.parametrize("env_id", ["laddermill_gym/TetheredWing-v0", "laddermill_gym/Rotorcraft-v0"])
 def test_warmed_up_start_compiles_no_step_kernel_and_gives_the_same_bits(tmp_path, env_id):
     own = fresh(tmp_path / "own", env_id, warmup=False)
-    warm = fresh(tmp_path / "warm", env_id, warmup=True)
+    warm = fresh(tmp_path / "warm", env_id, warmup=True, trace=tmp_path / "trace")
     assert any("step_observe" in n for n in own["names"]["make"])  # the oracle compiled the step kernel itself
     assert not any("step_observe" in n for n in warm["names"]["make"])  # loaded from the second process's cache
     assert warm["names"]["after"] == []  # nothing compiled at the reset and the steps
     assert warm["bits"] == own["bits"]
+    # the W method's loop compiled once over all the processes (numba's compile events in each): by the craft's
+    # first process after its trim, by the wing's tail warm-up after its share
+    loops = {t["label"].rsplit(":", 1)[-1]: sum(r["name"].endswith(".w_advance") for r in t["rows"])
+             for t in compile_trace.read(tmp_path / "trace")}
+    loops["first"] = warm["names"]["make"].count("w_advance")
+    assert sum(loops.values()) == 1 and loops[("first" if "Rotorcraft" in env_id else "compile_wing_tail")] == 1
 
 
 
@@ -288,7 +297,7 @@ def test_the_wing_warm_ups_print_the_line_and_only_a_w_method_waits_for_it(monke
     from laddermill_gym.envs import task_warmup
 
     monkeypatch.setattr(task_warmup, "wing_calls", lambda kwargs: [])
-    monkeypatch.setattr(task_warmup, "_build_and_step", lambda cls, kwargs: print("built"))
+    monkeypatch.setattr(task_warmup, "_build_and_step", lambda cls, kwargs, loop=(): print("built"))
     monkeypatch.setattr(wing_task, "scene_trim", wing_task.scene_trim)  # compile_wing swaps in its stand-in: restored
     task_warmup.compile_wing_tail({})
     task_warmup.compile_wing({})

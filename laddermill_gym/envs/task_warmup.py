@@ -12,19 +12,22 @@ too."""
 
 from __future__ import annotations
 
-import time
-
 import numpy as np
 
 from laddermill_gym.envs.kernel_warmup import CALLEES_DONE
+from laddermill_gym.envs.step_callees import await_on_disk, compile_ahead, step_callees
 
 #: the longest wait of the craft's warm-up for the first process's trim to compile the right-hand side [s] (a cold
 #: trim compiles it in about 12 s of CPU; past the wait, or when the trim was on disk and compiled nothing, this
 #: process compiles it itself)
 TRIM_WAIT_S = 20.0
+#: the longest wait of a warm-up, before its first step, for the process that compiles the W method's loop (the
+#: wing's tail warm-up, the craft's first process) to write it to numba's cache [s] (it compiles in 5-7 s of CPU
+#: on a quiet machine; past the wait this process compiles it itself)
+LOOP_WAIT_S = 60.0
 
-__all__ = ["TRIM_WAIT_S", "await_on_disk", "compile_ahead", "compile_craft", "compile_wing", "compile_wing_tail",
-           "craft_calls", "stand_in_craft_trim", "stand_in_wing_trim", "step_callees", "wing_calls"]
+__all__ = ["LOOP_WAIT_S", "TRIM_WAIT_S", "compile_craft", "compile_wing", "compile_wing_tail", "craft_calls",
+           "stand_in_craft_trim", "stand_in_wing_trim", "wing_calls"]
 
 
 def stand_in_wing_trim(scene: str, options: tuple):
@@ -86,63 +89,19 @@ def _step_arguments(module, names: tuple, build, trim: tuple):
     return got.get("args")
 
 
-def step_callees(args, observe: bool = True) -> list:
-    """The kernels the step-and-observe kernel called with ``args`` calls (through their addresses,
-    ``kernels/far_call.py``) or links, as (dispatcher, arguments) pairs (``kernels/rigid/rosenbrock.w_step_calls``,
-    ``kernels/rigid/kinds.rigid3d_calls``) with the arguments of copy 0 (``kernels/batch.copy_views``): the
-    assembly first, the fixed-step driver and the W method's loop (each compiled on its own now) last, the
-    observation's tensions (``observe``) before those; empty for a model that is not rigid 3D or a scene that
-    steps with RK4 (its few callees compile in seconds). :func:`compile_wing` compiles them from the first,
-    :func:`compile_wing_tail` from the last but one; the W method's loop, which links the W step's parts, comes
-    last in both."""
-    from laddermill_gym.kernels.batch import row_or_none
-    from laddermill_gym.kernels.contract import KWork
-    from laddermill_gym.kernels.fixed_steps import advance_breaks, model_with_air
-    from laddermill_gym.kernels.rigid.kinds import Rigid3D, rigid3d_calls
-    from laddermill_gym.kernels.rigid.rosenbrock import w_advance, w_step_calls
-
-    t, X, U, dt, _, M, kind, vehicle, WB, AB, limits, tableau, _, DX = args[:14]
-    if tableau is None or not isinstance(kind, Rigid3D):
-        return []
-    Mb = model_with_air.py_func(kind, vehicle, M, AB.tmod[0], AB.ms[0], AB.md[0], row_or_none(AB.gp, 0),
-                                row_or_none(AB.gv, 0))
-    Wb = KWork._make(getattr(WB, f)[0] for f in KWork._fields)
-    t0, dt = float(t[0]), float(dt)
-    kinds = rigid3d_calls(t0, X[0], U[0], Wb.k5, Mb, Wb, limits)  # the W step's derivative scratch: W.k5
-    w = w_step_calls(t0, X[0], U[0], dt, Mb, Wb, tableau)
-    observed = rigid3d_calls(t0, X[0], U[0], DX[0], Mb, Wb, limits)  # the observation's: the kernel's DX row
-    n, breaks = args[4][0], args[12]
-    chain = [(advance_breaks, (t0, X[0], U[0], dt, n, Mb, Wb, limits, tableau, breaks)),
-             (w_advance, (t0, X[0], U[0], dt, n, Mb, Wb, limits, tableau))]
-    return [kinds["assemble"], *w[:4], kinds["rhs"], *w[4:], kinds["check"],
-            *([observed["tensions"]] if observe else []), *chain]
-
-
-def compile_ahead(calls) -> int:
-    """Compile (or load from numba's on-disk cache) each (dispatcher, arguments) of ``calls`` for the arguments'
-    types, in order, running none; a pair that does not compile is skipped (the step kernel then compiles what it
-    needs). Returns how many compiled or loaded."""
-    from numba import typeof
-
-    done = 0
-    for disp, a in calls:
-        try:
-            disp.compile(tuple(typeof(v) for v in a))
-            done += 1
-        except Exception:  # noqa: BLE001 (a warm-up only saves time; the step kernel compiles what is missing)
-            continue
-    return done
-
-
-def _build_and_step(cls, task_kwargs: dict) -> None:
+def _build_and_step(cls, task_kwargs: dict, loop=()) -> None:
     """Build ``cls(**task_kwargs)``, then reset every copy and take one step with the zero action; a ValueError
-    of the constructor (the stand-in's read-outs) ends it."""
+    of the constructor (the stand-in's read-outs) ends it. Before the step (whose fixed-step driver calls the W
+    method's loop through its address, compiling it where it is not cached), wait at most :data:`LOOP_WAIT_S`
+    for ``loop`` (the loop's (dispatcher, arguments), compiled by another process) on disk."""
     try:
         task = cls(**task_kwargs)
     except ValueError:
         return
     B = task.n_copies
     task.reset(np.ones(B, dtype=bool), [np.random.default_rng(0) for _ in range(B)])
+    if loop:
+        await_on_disk(loop, LOOP_WAIT_S)
     task.step(np.zeros((B, task.n_actions)))
 
 
@@ -184,56 +143,49 @@ def craft_calls(task_kwargs: dict) -> tuple[list, list, bool]:
     return [c for c in calls if c[0] not in trims], [c for c in calls if c[0] in trims], on_disk
 
 
-def await_on_disk(calls, limit_s: float) -> bool:
-    """Wait, at most ``limit_s`` [s], until numba's on-disk cache holds every (dispatcher, arguments) of ``calls``
-    for the arguments' types (another process compiling them); True when it does."""
-    from numba import typeof
-
-    left = [(d, tuple(typeof(v) for v in a)) for d, a in calls]
-    end = time.monotonic() + limit_s
-    while left:
-        left = [(d, sig) for d, sig in left if d._cache.load_overload(sig, d.targetctx) is None]
-        if not left or time.monotonic() >= end:
-            break
-        time.sleep(0.2)
-    return not left
-
-
 def compile_wing(task_kwargs: dict) -> None:
     """The wing task's kernels, compiled around :func:`stand_in_wing_trim` (this process's ``scene_trim`` replaced):
     the step kernel's callees first, in the order its compile reaches them (:func:`wing_calls`; a second process,
-    :func:`compile_wing_tail`, takes them from the other end), then the task's own kernels."""
+    :func:`compile_wing_tail`, takes them from the other end), but the last, the W method's loop, which the other
+    compiles; then the task's own kernels, its first step after the loop is on disk."""
     from laddermill_gym.envs import task as wing_task
 
-    compile_ahead(wing_calls(task_kwargs))
+    calls = wing_calls(task_kwargs)
+    compile_ahead(calls[:-1])
     print(CALLEES_DONE, flush=True)  # the first process may compile its trim now (kernel_warmup.await_callees)
     wing_task.scene_trim = stand_in_wing_trim
-    _build_and_step(wing_task.WingTask, task_kwargs)
+    _build_and_step(wing_task.WingTask, task_kwargs, calls[-1:])
 
 
 def compile_wing_tail(task_kwargs: dict) -> None:
-    """The wing step kernel's callees (:func:`wing_calls`) from the last but one to the first, then the last (the W
-    method's loop, which links the others), in a process beside
+    """The wing step kernel's callees (:func:`wing_calls`) from the last but one to the first, in a process beside
     :func:`compile_wing`'s: each compiles those the other has not written to numba's cache yet, so the two share
-    them (at most the one both reach together is compiled twice) while the first process solves the trim."""
+    them (at most the one both reach together is compiled twice) while the first process solves the trim; then,
+    after its line, the last (the W method's loop, which links the others), beside the other's step kernel and the
+    first process's trim (compiled in both, it cost each 5 s of CPU)."""
     calls = wing_calls(task_kwargs)
-    compile_ahead(calls[-2::-1] + calls[-1:])  # the W method's loop last: it links the others
+    compile_ahead(calls[-2::-1])
     print(CALLEES_DONE, flush=True)
+    compile_ahead(calls[-1:])  # the W method's loop last: it links the others
 
 
 def compile_craft(task_kwargs: dict) -> None:
     """The craft task's kernels, compiled around :func:`stand_in_craft_trim` (this process's ``craft_trim``
     replaced): first the step kernel's callees that the first process's trim does not compile
     (:func:`craft_calls`), then a wait (at most :data:`TRIM_WAIT_S`) until that trim has written the assembly (and
-    with it the craft's loads) to numba's cache, then the rest of the callees, which load what the trim compiled
-    instead of compiling it a second time, then the task's own kernels. When the first process reads its trim
-    from the start cache it compiles none of them, and this one compiles them all without waiting."""
+    with it the craft's loads) to numba's cache, then the rest of the callees but the W method's loop, which load
+    what the trim compiled instead of compiling it a second time; then :data:`CALLEES_DONE`, on which the first
+    process compiles the loop (:func:`w_loop_call`) while this one compiles the task's own kernels, its first step
+    after the loop is on disk. When the first process reads its trim from the start cache it compiles none of
+    them, and this one compiles them all without waiting."""
     from laddermill_gym.envs.rotorcraft import task as craft_task
+    from laddermill_gym.kernels.rigid.rosenbrock import w_advance
 
     own, trims, trim_read = craft_calls(task_kwargs)
     compile_ahead(own)
     if not trim_read:
         await_on_disk(trims[:1], TRIM_WAIT_S)  # the assembly, with the craft's loads
-    compile_ahead(trims)
+    compile_ahead([c for c in trims if c[0] is not w_advance])
+    print(CALLEES_DONE, flush=True)  # the first process compiles the W method's loop now
     craft_task.craft_trim = stand_in_craft_trim
-    _build_and_step(craft_task.CraftTask, task_kwargs)
+    _build_and_step(craft_task.CraftTask, task_kwargs, [c for c in trims if c[0] is w_advance])

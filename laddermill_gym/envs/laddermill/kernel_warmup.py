@@ -87,7 +87,7 @@ def compile_in_plane(scene: str, options: tuple) -> None:
     CPU on the first process's path, 2026-12-03) for nothing the search runs. An error-controlled in-plane
     method is still compiled by a step."""
     from laddermill_gym.envs.laddermill.operating_point import mill_scene
-    from laddermill_gym.envs.task_warmup import compile_ahead
+    from laddermill_gym.envs.step_callees import compile_ahead
     from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, fixed_pieces_call
     from laddermill_gym.sim.simulator import Simulator
 

@@ -25,6 +25,7 @@ from laddermill_gym.envs.rotorcraft.settings import (
     RotorcraftTerminationConfig,
 )
 from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim
+from laddermill_gym.envs.step_callees import compile_ahead, w_loop_call
 from laddermill_gym.envs.task_base import TaskCore, positive, whole_multiple
 from laddermill_gym.kernels.action_pass import affine_controls
 from laddermill_gym.kernels.contract import (
@@ -124,7 +125,7 @@ class CraftTask(TaskCore):
         task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
         # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py)
         warmup = kernel_warmup.start(WARMUP_TARGET, task_kwargs,
-                                     (craft_step_observe_serial,), True)
+                                     (craft_step_observe_serial,), True, True)
         with kernel_warmup.stopped_on_error((warmup,)):  # a failed construction leaves no warm-up running
             B = self._common_arguments(n_copies, control_dt, episode_time, wind_dt, disturbances, reward, termination,
                                        initial_noise)
@@ -140,6 +141,9 @@ class CraftTask(TaskCore):
                               else jacobian_settings(cfg.settings, jacobian_every))
             self.n_steps_max = int(round(self.episode_time / self.control_dt))
             self._build_batch(B, parallel)
+            if isinstance(warmup, kernel_warmup.Warmup) and warmup.wait_for(kernel_warmup.CALLEES_DONE):
+                # the W method's loop compiled here, beside the warm-up's step kernel (envs/step_callees.py)
+                compile_ahead(w_loop_call(self.batch, self._dx))
         if warmup is not None:  # before the first kernel call: load what it compiled from numba's cache
             warmup.wait()
         self._references()
