@@ -297,7 +297,7 @@ def test_the_wing_warm_ups_print_the_line_and_only_a_w_method_waits_for_it(monke
     from laddermill_gym.envs import task_warmup
 
     monkeypatch.setattr(task_warmup, "wing_calls", lambda kwargs: [])
-    monkeypatch.setattr(task_warmup, "_build_and_step", lambda cls, kwargs, loop=(): print("built"))
+    monkeypatch.setattr(task_warmup, "_build_and_step", lambda cls, kwargs: print("built"))
     monkeypatch.setattr(wing_task, "scene_trim", wing_task.scene_trim)  # compile_wing swaps in its stand-in: restored
     task_warmup.compile_wing_tail({})
     task_warmup.compile_wing({})

@@ -21,12 +21,8 @@ from laddermill_gym.envs.step_callees import await_on_disk, compile_ahead, step_
 #: trim compiles it in about 12 s of CPU; past the wait, or when the trim was on disk and compiled nothing, this
 #: process compiles it itself)
 TRIM_WAIT_S = 20.0
-#: the longest wait of a warm-up, before its first step, for the process that compiles the W method's loop (the
-#: wing's tail warm-up, the craft's first process) to write it to numba's cache [s] (it compiles in 5-7 s of CPU
-#: on a quiet machine; past the wait this process compiles it itself)
-LOOP_WAIT_S = 60.0
 
-__all__ = ["LOOP_WAIT_S", "TRIM_WAIT_S", "compile_craft", "compile_wing", "compile_wing_tail", "craft_calls",
+__all__ = ["TRIM_WAIT_S", "compile_craft", "compile_wing", "compile_wing_tail", "craft_calls",
            "stand_in_craft_trim", "stand_in_wing_trim", "wing_calls"]
 
 
@@ -89,20 +85,18 @@ def _step_arguments(module, names: tuple, build, trim: tuple):
     return got.get("args")
 
 
-def _build_and_step(cls, task_kwargs: dict, loop=()) -> None:
-    """Build ``cls(**task_kwargs)``, then reset every copy and take one step with the zero action; a ValueError
-    of the constructor (the stand-in's read-outs) ends it. Before the step (whose fixed-step driver calls the W
-    method's loop through its address, compiling it where it is not cached), wait at most :data:`LOOP_WAIT_S`
-    for ``loop`` (the loop's (dispatcher, arguments), compiled by another process) on disk."""
+def _build_and_step(cls, task_kwargs: dict) -> None:
+    """Build ``cls(**task_kwargs)``, then reset every copy and take one step with the zero action in which no copy
+    is selected (``mask`` all False: the read-outs and the action map compile, no physics step runs, so the W
+    method's loop, which the step kernel calls through its address and another process compiles, is not asked
+    for here); a ValueError of the constructor (the stand-in's read-outs) ends it."""
     try:
         task = cls(**task_kwargs)
     except ValueError:
         return
     B = task.n_copies
     task.reset(np.ones(B, dtype=bool), [np.random.default_rng(0) for _ in range(B)])
-    if loop:
-        await_on_disk(loop, LOOP_WAIT_S)
-    task.step(np.zeros((B, task.n_actions)))
+    task.step(np.zeros((B, task.n_actions)), np.zeros(B, dtype=bool))
 
 
 def wing_calls(task_kwargs: dict) -> list:
@@ -147,14 +141,14 @@ def compile_wing(task_kwargs: dict) -> None:
     """The wing task's kernels, compiled around :func:`stand_in_wing_trim` (this process's ``scene_trim`` replaced):
     the step kernel's callees first, in the order its compile reaches them (:func:`wing_calls`; a second process,
     :func:`compile_wing_tail`, takes them from the other end), but the last, the W method's loop, which the other
-    compiles; then the task's own kernels, its first step after the loop is on disk."""
+    compiles; then the task's own kernels."""
     from laddermill_gym.envs import task as wing_task
 
     calls = wing_calls(task_kwargs)
     compile_ahead(calls[:-1])
     print(CALLEES_DONE, flush=True)  # the first process may compile its trim now (kernel_warmup.await_callees)
     wing_task.scene_trim = stand_in_wing_trim
-    _build_and_step(wing_task.WingTask, task_kwargs, calls[-1:])
+    _build_and_step(wing_task.WingTask, task_kwargs)
 
 
 def compile_wing_tail(task_kwargs: dict) -> None:
@@ -175,8 +169,8 @@ def compile_craft(task_kwargs: dict) -> None:
     (:func:`craft_calls`), then a wait (at most :data:`TRIM_WAIT_S`) until that trim has written the assembly (and
     with it the craft's loads) to numba's cache, then the rest of the callees but the W method's loop, which load
     what the trim compiled instead of compiling it a second time; then :data:`CALLEES_DONE`, on which the first
-    process compiles the loop (:func:`w_loop_call`) while this one compiles the task's own kernels, its first step
-    after the loop is on disk. When the first process reads its trim from the start cache it compiles none of
+    process compiles the loop (:func:`~laddermill_gym.envs.step_callees.w_loop_call`) while this one compiles the
+    task's own kernels. When the first process reads its trim from the start cache it compiles none of
     them, and this one compiles them all without waiting."""
     from laddermill_gym.envs.rotorcraft import task as craft_task
     from laddermill_gym.kernels.rigid.rosenbrock import w_advance
@@ -188,4 +182,4 @@ def compile_craft(task_kwargs: dict) -> None:
     compile_ahead([c for c in trims if c[0] is not w_advance])
     print(CALLEES_DONE, flush=True)  # the first process compiles the W method's loop now
     craft_task.craft_trim = stand_in_craft_trim
-    _build_and_step(craft_task.CraftTask, task_kwargs, [c for c in trims if c[0] is w_advance])
+    _build_and_step(craft_task.CraftTask, task_kwargs)
