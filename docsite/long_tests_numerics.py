@@ -41,11 +41,11 @@ NUMERICS_TESTS = {
     "trim_chain_wing": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v0 && python -m "
                             "laddermill_gym.studies.mill.trim_slope --variants v0 --elevators -4 2", "2 s (2026-12-01)",
                             "numerics.md"),
-    # cold_start.md: the operating point's search lengths of LadderMill-v0, v1, v2 (OperatingPoint.t_settle_s)
+    # cold_start_mill.md: the operating point's search lengths of LadderMill-v0, v1, v2 (OperatingPoint.t_settle_s)
     "operating_point_settle_test": Long(
         'python -m pytest -m "slow or not slow" -s tests/test_operating_point_settle.py',
         "537 s with a cold operating-point cache (2026-12-01, nice 15, load 4-5); seconds from a warm one",
-        "cold_start.md"),
+        "cold_start_mill.md"),
     # work_precision.md: breakpoints "all" on the golden direction-step runs, against "inside" and a tight DP5(4)
     "breakpoints_golden_test": Long('python -m pytest -m "slow or not slow" -s tests/test_breakpoints_golden.py',
                                     "21 s, 162 s compiling (2026-12-01, nice 15, load 4-5)", "work_precision.md"),

@@ -35,6 +35,7 @@ from __future__ import annotations
 from docsite.ledger_benchmarks import BENCHMARKS
 from docsite.ledger_closed_loop import WORK_PRECISION_CLOSED_LOOP
 from docsite.ledger_cold_start import COLD_START
+from docsite.ledger_cold_start_mill import COLD_START_MILL
 from docsite.ledger_controllers import CONTROLLERS
 from docsite.ledger_craft import ROTOR, ROTORCRAFT
 from docsite.ledger_data import CABLE_DATA
@@ -72,6 +73,7 @@ LEDGER = {
     "benchmarks.md": BENCHMARKS,
     "cable_data.md": CABLE_DATA,
     "cold_start.md": COLD_START,
+    "cold_start_mill.md": COLD_START_MILL,
     "controllers.md": CONTROLLERS,
     "features.md": FEATURES,
     "lateral_stability.md": LATERAL,

@@ -167,19 +167,21 @@ def compile_craft(task_kwargs: dict) -> None:
     """The craft task's kernels, compiled around :func:`stand_in_craft_trim` (this process's ``craft_trim``
     replaced): first the step kernel's callees that the first process's trim does not compile
     (:func:`craft_calls`), then a wait (at most :data:`TRIM_WAIT_S`) until that trim has written the assembly (and
-    with it the craft's loads) to numba's cache, then the rest of the callees but the W method's loop, which load
-    what the trim compiled instead of compiling it a second time; then :data:`CALLEES_DONE`, on which the first
-    process compiles the loop (:func:`~laddermill_gym.envs.step_callees.w_loop_call`) while this one compiles the
-    task's own kernels. When the first process reads its trim from the start cache it compiles none of
-    them, and this one compiles them all without waiting."""
+    with it the craft's loads) to numba's cache, then the rest of the step kernel's callees (the assembly and the
+    right-hand side), which load what the trim compiled instead of compiling it a second time; then
+    :data:`CALLEES_DONE`, on which the first process compiles the W method's loop
+    (:func:`~laddermill_gym.envs.step_callees.w_loop_call`; with it the bodies' load Jacobian, which only the loop
+    links) while this one compiles the task's own kernels. When the first process reads its trim from the start
+    cache it compiles none of them, and this one compiles them all without waiting."""
     from laddermill_gym.envs.rotorcraft import task as craft_task
+    from laddermill_gym.kernels.rigid.body_jacobian import add_body_jacobian
     from laddermill_gym.kernels.rigid.rosenbrock import w_advance
 
     own, trims, trim_read = craft_calls(task_kwargs)
     compile_ahead(own)
     if not trim_read:
         await_on_disk(trims[:1], TRIM_WAIT_S)  # the assembly, with the craft's loads
-    compile_ahead([c for c in trims if c[0] is not w_advance])
-    print(CALLEES_DONE, flush=True)  # the first process compiles the W method's loop now
+    compile_ahead([c for c in trims if c[0] not in (add_body_jacobian, w_advance)])  # the step kernel's
+    print(CALLEES_DONE, flush=True)  # the first process compiles the W method's loop (and its load Jacobian) now
     craft_task.craft_trim = stand_in_craft_trim
     _build_and_step(craft_task.CraftTask, task_kwargs)
