@@ -219,5 +219,42 @@ COLD_START = Covered(
         'About 9 s and 6 s less cold (a slow hour: c763a66 took 48 s at 13:34), less than the first try: the W '
         "method's loop links its parts again. The wing's warm start is about 0.3 s longer (two more cache entries to "
         'load).',
+        # one compile of the W method's loop (2026-12-03, night): timelines, alternated runs, the warm start's exit
+        "## One compile of the W method's loop, beside the step kernel (2026-12-03, night)",
+        "This session's machine was the 2-core AMD EPYC with AVX-512 ( : znver4). Its timelines (19:15-19:25,"
+        " load about 0.5) showed the W method's loop ( , which links the W step's parts) compiled twice in a "
+        'TetheredWing-v0 cold start, by both warm-ups at the same time (15.1 to 20.5 s, some 5.3 s of CPU '
+        "each, since both lists ended with it), and Rotorcraft-v0's one warm-up compiling the loop and then "
+        'the step kernel one after the other (14.6 to 21.0 and 21.1 to 27.6 s) while the first process, its '
+        "trim done at 13.0 s, waited. Now one process compiles the loop, beside the step kernel: the wing's "
+        "tail warm-up after it prints its line (so the trim no longer waits for the loop either), the craft's"
+        " first process after its trim and its warm-up's line, with the bodies' load Jacobian, which only the"
+        " loop links ( , the loop's call built from the batch's own arrays). The warm-ups compile the read-"
+        'outs with a step that selects no copy, so no physics step runs there and only the process that '
+        "compiles the loop asks for it. The slow counts the loop's compiles over every process of a cold "
+        "start (numba's compile events in each, ): one, in the named process (two for the wing before); with "
+        'and without the warm-ups, a reset and 8 random steps are the same bits (15 passed).',
+        '| make + reset + one step, 20:02-20:09 (load 1.5-1.9), alternated three times | new (c01562c) | '
+        '07285c3 | |---|---|---| | TetheredWing-v0 cold [s] | **22.6 / 24.6 / 24.6** | 30.9 / 25.2 / 30.4 | |'
+        ' TetheredWing-v0 cold: CPU of the process + its warm-ups [s] | 7.0 + 36.2 / 7.2 + 39.8 / 7.7 + 39.1 '
+        '| 9.2 + 49.4 / 6.5 + 41.8 / 7.6 + 51.0 | | Rotorcraft-v0 cold [s] | **19.5 / 20.0 / 20.1** | 26.4 / '
+        '24.0 / 27.3 | | Rotorcraft-v0 cold: CPU of the process + its warm-up [s] | 18.9 + 18.0 / 19.3 + 18.1'
+        ' / 19.3 + 18.5 | 11.9 + 25.1 / 11.2 + 22.8 / 13.0 + 25.8 | | warm [s] (median of 3): '
+        'TetheredWing-v0, Rotorcraft-v0 | 1.04-1.32, 1.21-1.25 | 1.15-1.50, 1.11-1.46 |',
+        'Timelines after ( , 20:09, load about 1.5): Rotorcraft-v0 22.3 s, the trim 1.1 to 13.1 s and the '
+        'loop 13.2 to 21.4 s in the first process, the step kernel 12.8 to 18.4 s and the read-outs to 19.8 s'
+        " in the warm-up; TetheredWing-v0 29.0 s, both warm-ups' lines at about 17.5 s, then the trim (18.7 "
+        "to 28.4 s) beside the tail's loop (17.2 to 25.5 s) and the other's step kernel and read-outs (17.7 "
+        "to 26.2 s). **Rotorcraft-v0's 20 s is met in one of these three runs** (19.5 s; 20.0 and 20.1 s in "
+        'the others): each of its two processes now compiles about 18-19 s of CPU, one after the other on its'
+        " own core, so little is left to move. **TetheredWing-v0's is not**: its processes compile 43-47 s of"
+        " CPU (the trim's in-plane kernels, which the craft's trim does not need, and the observation's own "
+        "assembly among it), at least 22 s on two cores. The warm start's time inside the process was 0.8-1.0"
+        " s; most of the rest is the interpreter's exit: the same make + reset + step in a script (warm "
+        'caches, 20:10, three runs each) took 1.07-1.61 s from the outside when it ended normally and '
+        '0.97-1.25 s when it ended with , 0.03-0.04 s more than its own clock.',
+        'after (20:10, load about 1.5): TetheredWing-v0 29.3 s cold, 1.35 s warm; Rotorcraft-v0 19.9 s, 1.23 '
+        "s; LadderMill-v0 48.9 s, 0.99 s ([cold start: LadderMill]). The wing's cold starts of the night ran "
+        'from 22.6 to 29.3 s.',
     ),
 )
