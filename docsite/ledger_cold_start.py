@@ -256,5 +256,13 @@ COLD_START = Covered(
         'after (20:10, load about 1.5): TetheredWing-v0 29.3 s cold, 1.35 s warm; Rotorcraft-v0 19.9 s, 1.23 '
         "s; LadderMill-v0 48.9 s, 0.99 s ([cold start: LadderMill]). The wing's cold starts of the night ran "
         'from 22.6 to 29.3 s.',
+        'The two wing warm-ups still met at the 3D right-hand side and compiled it side by side (13.6 to 17.1'
+        ' s and 15.8 to 17.6 s in the 20:09 timeline). Now each compile of their lists holds a file lock '
+        "named for the function and its types beside numba's cache, and a callee whose lock the other process"
+        ' holds is left to it ( ; : a held lock leaves the dispatcher without the signature, where the '
+        "unshared call compiles it). The timeline after ( , 20:15): the wing's warm-up went on to the step "
+        'kernel at 13.0 s while the tail compiled (10.8 to 14.6 s); 24.5 s. Alternated with 9f7e804, '
+        'TetheredWing-v0 only (20:15-20:19, load 1.4-2.1): 26.0 / 23.4 / 27.2 s against 24.6 / 31.5 / 29.4 s,'
+        " one code's CPU moving by 13 s from run to run: within the hour's scatter.",
     ),
 )

@@ -317,3 +317,33 @@ def test_the_trim_is_the_real_one_after_the_warm_up_tests():
     from laddermill_gym.envs import task_warmup
 
     assert wing_task.scene_trim is not task_warmup.stand_in_wing_trim and wing_task.scene_trim is scene_trim
+
+
+def test_a_shared_compile_ahead_leaves_a_callee_that_another_process_compiles(tmp_path, monkeypatch):
+    # oracle: the dispatcher's own list of compiled signatures, and a lock held through the operating system (flock
+    # on a second open file description conflicts as another process's would)
+    import numba
+
+    from laddermill_gym.envs.step_callees import compile_ahead
+
+    def plus_one(x):
+        return x + 1.0
+
+    def fresh_kernel():
+        return numba.njit(plus_one)
+
+    monkeypatch.setattr(kernel_warmup, "cache_directory", lambda kernels: str(tmp_path))
+    f = fresh_kernel()
+    payload = f"{plus_one.__module__}.{plus_one.__qualname__}{(numba.typeof(1.0),)}".encode()
+    held, _ = kernel_warmup.claim(payload, str(tmp_path))
+    assert held is not None and held >= 0
+    try:
+        assert compile_ahead([(f, (1.0,))], shared=True) == 0 and f.signatures == []  # left to the holder
+        g = fresh_kernel()
+        assert compile_ahead([(g, (1.0,))]) == 1 and len(g.signatures) == 1  # not shared: compiled all the same
+    finally:
+        os.close(held)
+    assert compile_ahead([(f, (1.0,))], shared=True) == 1 and len(f.signatures) == 1
+    again, _ = kernel_warmup.claim(payload, str(tmp_path))  # released after the compile
+    assert again is not None and again >= 0
+    os.close(again)

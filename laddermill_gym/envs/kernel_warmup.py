@@ -17,8 +17,9 @@ here as before).
 The wing and craft targets (``envs/task_warmup.py``) compile the step kernel's callees first, in the order the
 step kernel's compile reaches them, from their argument types (``dispatcher.compile``, nothing run). The wing env
 with a W-method step starts two processes (an RK4 step has no such list): the second takes that list from its
-other end, so the two share it through numba's cache (a callee compiled by one is loaded by the other; at most the
-one both reach together is compiled twice) while this process solves the trim; without it the first process
+other end, so the two share it through numba's cache (a callee compiled by one is loaded by the other; the one they
+reach together is compiled by the first to claim it, ``step_callees.compile_ahead(shared=True)``) while this process
+solves the trim; without it the first process
 compiled the whole step tree alone while this one waited. Each prints :data:`CALLEES_DONE` when its share is done;
 on a machine with fewer than three cores this process waits for both lines before its trim (:func:`await_callees`),
 so that the trim's compile runs beside the step kernel's own, whose nested layers compile one after the other on

@@ -46,19 +46,37 @@ def step_callees(args, observe: bool = True) -> list:
             *([observed["tensions"]] if observe else []), *chain]
 
 
-def compile_ahead(calls) -> int:
+def compile_ahead(calls, shared: bool = False) -> int:
     """Compile (or load from numba's on-disk cache) each (dispatcher, arguments) of ``calls`` for the arguments'
     types, in order, running none; a pair that does not compile is skipped (the step kernel then compiles what it
-    needs). Returns how many compiled or loaded."""
+    needs). With ``shared`` (the wing's two warm-ups, which take one list from both ends), each compile holds a
+    file lock named for the function and its types beside numba's cache (``kernel_warmup.claim``) and a pair whose
+    lock another process holds is skipped: that process is compiling it and writes it to the cache, where they
+    met the two compiled the same callee side by side before (2-4 s of CPU). Returns how many compiled or
+    loaded."""
+    import os
+
     from numba import typeof
+
+    from laddermill_gym.envs.kernel_warmup import cache_directory, claim
 
     done = 0
     for disp, a in calls:
+        sig = tuple(typeof(v) for v in a)
+        lock = -1
+        if shared:
+            f = disp.py_func
+            lock, _ = claim(f"{f.__module__}.{f.__qualname__}{sig}".encode(), cache_directory((disp,)))
+            if lock is None:  # another process compiles it now
+                continue
         try:
-            disp.compile(tuple(typeof(v) for v in a))
+            disp.compile(sig)
             done += 1
         except Exception:  # noqa: BLE001 (a warm-up only saves time; the step kernel compiles what is missing)
             continue
+        finally:
+            if lock >= 0:
+                os.close(lock)  # releases the lock
     return done
 
 

@@ -145,7 +145,7 @@ def compile_wing(task_kwargs: dict) -> None:
     from laddermill_gym.envs import task as wing_task
 
     calls = wing_calls(task_kwargs)
-    compile_ahead(calls[:-1])
+    compile_ahead(calls[:-1], shared=True)  # a callee the tail is compiling now is left to it
     print(CALLEES_DONE, flush=True)  # the first process may compile its trim now (kernel_warmup.await_callees)
     wing_task.scene_trim = stand_in_wing_trim
     _build_and_step(wing_task.WingTask, task_kwargs)
@@ -154,11 +154,12 @@ def compile_wing(task_kwargs: dict) -> None:
 def compile_wing_tail(task_kwargs: dict) -> None:
     """The wing step kernel's callees (:func:`wing_calls`) from the last but one to the first, in a process beside
     :func:`compile_wing`'s: each compiles those the other has not written to numba's cache yet, so the two share
-    them (at most the one both reach together is compiled twice) while the first process solves the trim; then,
+    them (the one both reach together is left to the process that claimed it first:
+    ``compile_ahead(shared=True)``) while the first process solves the trim; then,
     after its line, the last (the W method's loop, which links the others), beside the other's step kernel and the
     first process's trim (compiled in both, it cost each 5 s of CPU)."""
     calls = wing_calls(task_kwargs)
-    compile_ahead(calls[-2::-1])
+    compile_ahead(calls[-2::-1], shared=True)
     print(CALLEES_DONE, flush=True)
     compile_ahead(calls[-1:])  # the W method's loop last: it links the others
 
