@@ -324,6 +324,7 @@ def test_a_shared_compile_ahead_leaves_a_callee_that_another_process_compiles(tm
     # on a second open file description conflicts as another process's would)
     import numba
 
+    from laddermill_gym.envs import step_callees
     from laddermill_gym.envs.step_callees import compile_ahead
 
     def plus_one(x):
@@ -332,7 +333,7 @@ def test_a_shared_compile_ahead_leaves_a_callee_that_another_process_compiles(tm
     def fresh_kernel():
         return numba.njit(plus_one)
 
-    monkeypatch.setattr(kernel_warmup, "cache_directory", lambda kernels: str(tmp_path))
+    monkeypatch.setattr(step_callees, "cache_directory", lambda kernels: str(tmp_path))
     f = fresh_kernel()
     payload = f"{plus_one.__module__}.{plus_one.__qualname__}{(numba.typeof(1.0),)}".encode()
     held, _ = kernel_warmup.claim(payload, str(tmp_path))

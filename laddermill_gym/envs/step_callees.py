@@ -5,9 +5,12 @@ without running anything. Kernel-level only: nothing here imports an env or a ta
 
 from __future__ import annotations
 
+import os
 import time
 
 import numpy as np
+
+from laddermill_gym.envs.kernel_warmup import cache_directory, claim
 
 __all__ = ["await_on_disk", "compile_ahead", "step_callees", "w_loop_call"]
 
@@ -54,11 +57,7 @@ def compile_ahead(calls, shared: bool = False) -> int:
     lock another process holds is skipped: that process is compiling it and writes it to the cache, where they
     met the two compiled the same callee side by side before (2-4 s of CPU). Returns how many compiled or
     loaded."""
-    import os
-
     from numba import typeof
-
-    from laddermill_gym.envs.kernel_warmup import cache_directory, claim
 
     done = 0
     for disp, a in calls:
@@ -103,7 +102,5 @@ def w_loop_call(batch, dx) -> list:
     of the step kernel, instead of the warm-up compiling both one after the other."""
     from laddermill_gym.kernels.rigid.rosenbrock import w_advance
 
-    b = batch
-    args = (b.t, b.states, b.controls, b.settings.dt, np.ones(len(b.t), dtype=np.int64), *b.detached, b.work, b.air,
-            b.limits, b.tableau, b.breaks, dx)
+    args = batch.kernel_head(batch.settings.dt, np.ones(len(batch.t), dtype=np.int64), dx)
     return [c for c in step_callees(args, observe=False) if c[0] is w_advance]

@@ -187,8 +187,7 @@ class TaskCore:
         the wing observations relative to ``nominal`` (n, 3) [m] into ``obs`` and the read-outs into ``aux``."""
         b = self.batch
         b.advance(nsteps, lambda dt, ns: self._kernel(
-            b.t, b.states, b.controls, dt, ns, *b.detached, b.work, b.air, b.limits, b.tableau, b.breaks,
-            self._dx, nominal, self.below, self.ground, obs, self.aux, b.status, b.done))
+            *b.kernel_head(dt, ns, self._dx), nominal, self.below, self.ground, obs, self.aux, b.status, b.done))
 
     def _start_copies(self, idx: np.ndarray) -> None:
         """Zero the step counters of the copies ``idx`` and observe them without stepping (the end of a reset)."""

@@ -153,6 +153,14 @@ class BatchSimulator:
         self.t += self.done * self.settings.dt
         return self.status
 
+    def kernel_head(self, dt: float, nsteps: np.ndarray, dx: np.ndarray) -> tuple:
+        """The leading arguments of the env step-and-observe kernels (``kernels/rigid/observe.py``, the craft's):
+        times, states, controls, the step ``dt`` [s], the steps per copy ``nsteps`` (B,), the model, workspace, air,
+        limits, tableau and breakpoints, and the derivative scratch ``dx`` (B, state size); each task appends its own
+        observation arrays. One place for their order, which ``envs/step_callees.py`` reads."""
+        return (self.t, self.states, self.controls, dt, nsteps, *self.detached, self.work, self.air, self.limits,
+                self.tableau, self.breaks, dx)
+
     def advance(self, nsteps: np.ndarray, kernel_pass) -> int:
         """Run ``kernel_pass(dt, nsteps)`` (a step kernel over the copies: copy b advances nsteps[b] steps of dt [s],
         0 only observes, < 0 skips it) and advance the copies' times. A copy that fails numerically

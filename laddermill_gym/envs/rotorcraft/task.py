@@ -210,8 +210,7 @@ class CraftTask(TaskCore):
         """Advance copy b by nsteps[b] RK4 steps (0: observe only, < 0: skip) and write raw_obs and aux."""
         b = self.batch
         b.advance(nsteps, lambda dt, ns: self._kernel(
-            b.t, b.states, b.controls, dt, ns, *b.detached, b.work, b.air, b.limits, b.tableau, b.breaks,
-            self._dx, self.ref, self.tether_end, self.raw_obs, self.aux, b.status, b.done))
+            *b.kernel_head(dt, ns, self._dx), self.ref, self.tether_end, self.raw_obs, self.aux, b.status, b.done))
 
     def _run(self, nsteps: np.ndarray) -> None:
         """:meth:`_kernel_pass`, then the clipped observations."""
