@@ -29,7 +29,9 @@ def test_quick_startup_is_warm_and_compiles_nothing(capsys):
     from numba.core.config import CACHE_DIR
 
     assert warm["cache_dir"] == CACHE_DIR
-    assert 0.0 < warm["inside_s"] < warm["wall_s"] < 60.0
+    # the launch-to-step clock holds the interpreter's start beside what the child timed itself, and the process
+    # outlives its step (its output is printed after it)
+    assert 0.0 < warm["inside_s"] < warm["first_step_s"] < warm["wall_s"] < 60.0
     out = capsys.readouterr().out
     assert f"== start-up {ENV}" in out and "warm (caches filled)" in out and "cold" not in out.split("==")[1]
 
