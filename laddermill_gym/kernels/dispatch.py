@@ -29,6 +29,7 @@ _LOADS: dict[type, object] = {}
 _ENDS: dict[type, tuple] = {}
 _ASSEMBLE: dict[type, object] = {}
 _TENSIONS: dict[type, object] = {}
+_RHS_FAR: dict[type, object] = {}
 
 
 class _TypedOnly:
@@ -92,6 +93,15 @@ def register_tensions(marker: type, tensions) -> None:
     _TENSIONS[marker] = tensions
 
 
+def register_rhs_far(marker: type, rhs_far) -> None:
+    """Register a model kind's right-hand side called through its compiled address (``kernels/far_call.py``):
+    ``rhs_far(kind, t, x, u, dx, M, W) -> status``, the registered ``rhs`` (:func:`register_kind`) with its large
+    callee not linked. :func:`model_rhs_entry` uses it: the right-hand side that Python calls (the static
+    equilibria and trims) then compiles as a small function instead of linking the kind's whole right-hand side
+    again (issue 32 point 1)."""
+    _RHS_FAR[marker] = rhs_far
+
+
 def has_assemble(kind) -> bool:
     """Whether the model kind ``kind`` (a marker instance) registered an assembly (Python side)."""
     return type(kind) in _ASSEMBLE
@@ -126,6 +136,12 @@ def _lookup(table: dict, typ, what: str):
 def model_rhs(kind, t, x, u, dx, M, W):
     """State derivative of model kind ``kind`` (jitted code only)."""
     raise NotImplementedError("model_rhs is resolved inside numba kernels")
+
+
+def model_rhs_entry(kind, t, x, u, dx, M, W):
+    """:func:`model_rhs` for a kernel that Python calls: the kind's right-hand side through its address where it
+    registered one (:func:`register_rhs_far`), else linked (jitted code only)."""
+    raise NotImplementedError("model_rhs_entry is resolved inside numba kernels")
 
 
 def model_check(kind, x, M, limits):
@@ -163,6 +179,13 @@ def elongation_rate(kind, e, t, x, M, ln, l0, ld):
 @inline_overload(model_rhs)
 def _model_rhs(kind, t, x, u, dx, M, W):
     impl = _lookup(_RHS, kind, "model kind right-hand side")
+    return lambda kind, t, x, u, dx, M, W: impl(kind, t, x, u, dx, M, W)
+
+
+@inline_overload(model_rhs_entry)
+def _model_rhs_entry(kind, t, x, u, dx, M, W):
+    cls = getattr(kind, "instance_class", None)
+    impl = _RHS_FAR[cls] if cls in _RHS_FAR else _lookup(_RHS, kind, "model kind right-hand side")
     return lambda kind, t, x, u, dx, M, W: impl(kind, t, x, u, dx, M, W)
 
 

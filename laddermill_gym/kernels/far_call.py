@@ -6,8 +6,9 @@ kernel's chain (step kernel -> fixed-step driver -> W method's loop -> right-han
 same callee tree three times, and no layer could start compiling before the one below it had finished. A call made
 through this module's function compiles as an indirect call: the caller's library holds its own code only, and the
 caller compiles without the callee. Used where a call is rare and its callee large: the integrators under the
-fixed-step driver (``kernels/fixed_steps.py``, one call per run of steps) and the observation's element loop
-(``kernels/rigid/kinds.py``, one call per env step).
+fixed-step driver (``kernels/fixed_steps.py``, one call per run of steps), the observation's element loop
+(``kernels/rigid/kinds.py``, one call per env step) and the rigid kinds' right-hand sides under the entry Python
+calls (``kernels/integrate.rhs_entry``: the static equilibria and trims).
 
 How: ``f_far = far_call(f, restype)`` (``f`` a numba dispatcher defined at module level, ``restype`` the numba type
 it returns, stated because the caller no longer compiles it) is an intrinsic with ``f``'s parameters. At a call

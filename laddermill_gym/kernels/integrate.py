@@ -19,7 +19,7 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
     SINGULAR,
     STALLED,
 )
-from laddermill_gym.kernels.dispatch import model_check, model_rhs
+from laddermill_gym.kernels.dispatch import model_check, model_rhs, model_rhs_entry
 
 #: DP5(4) gives up (STALLED) when its step falls below this fraction of max(1 s, |t|): the error control is then
 #: chasing a discontinuity or a stiff blow-up and would spin for ever.
@@ -38,6 +38,16 @@ def rhs(t, x, u, dx, M, W):
     """State derivative of the packed model M (its kind chooses the right-hand side at compile time).
     Returns 0, or 1 if the mass matrix is singular."""
     return model_rhs(M.kind, t, x, u, dx, M, W)
+
+
+# What Python calls (``Simulator.rhs``, the static equilibria and trims, the reports): the same derivative as rhs,
+# the kind's right-hand side reached through its compiled address where the kind registered that (the rigid kinds,
+# kernels/rigid/kinds.py), so that this entry compiles without linking the whole right-hand side again (issue 32)
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
+def rhs_entry(t, x, u, dx, M, W):
+    """:func:`rhs` for calls from Python: the state derivative of the packed model M into dx; 0, or 1 if the mass
+    matrix is singular."""
+    return model_rhs_entry(M.kind, t, x, u, dx, M, W)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False, inline="always")

@@ -36,7 +36,7 @@ from laddermill_gym.kernels.contract import (
     STALLED,
 )
 from laddermill_gym.kernels.integrate import dp54_advance
-from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
+from laddermill_gym.kernels.integrate import rhs_entry as _rhs_kernel
 from laddermill_gym.model.params import AERO_INDEX
 
 #: Ground-contact modes of ``IntegratorSettings.ground_contact``.

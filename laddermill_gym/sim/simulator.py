@@ -16,7 +16,7 @@ from laddermill_gym.kernels.contract import (
     OK,
 )
 from laddermill_gym.kernels.dispatch import has_assemble
-from laddermill_gym.kernels.integrate import rhs as _rhs_kernel
+from laddermill_gym.kernels.integrate import rhs_entry as _rhs_kernel
 from laddermill_gym.kernels.rigid.kinds import WING
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly

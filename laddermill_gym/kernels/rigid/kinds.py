@@ -13,7 +13,13 @@ from numba import njit, types
 
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.callee_jit import callee_njit
-from laddermill_gym.kernels.dispatch import register_assemble, register_kind, register_tensions, register_vehicle
+from laddermill_gym.kernels.dispatch import (
+    register_assemble,
+    register_kind,
+    register_rhs_far,
+    register_tensions,
+    register_vehicle,
+)
 from laddermill_gym.kernels.far_call import far_call
 from laddermill_gym.kernels.rigid.aero import wing_aero
 from laddermill_gym.kernels.rigid.rhs2d import rhs2d
@@ -130,6 +136,24 @@ def rigid2d_rhs(kind, t, x, u, dx, M, W):
     return rhs2d(t, x, u, dx, M, W, M.sag, M.caero)
 
 
+# The right-hand sides that Python calls (``integrate.rhs_entry``: the static equilibria and trims, thousands of
+# calls, each some microseconds of Python around it) reach rhs3d and rhs2d through their addresses: the entry then
+# compiles as a small function of its own instead of linking the whole right-hand side once more (the step kernels
+# link rhs3d anyway; a cold TetheredWing-v0's trim compiled its entry's link of rhs2d in 1.7 s of CPU, issue 32)
+_rhs3d_far = far_call(rhs3d, types.int64)
+_rhs2d_far = far_call(rhs2d, types.int64)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
+def rigid3d_rhs_far(kind, t, x, u, dx, M, W):
+    return _rhs3d_far(t, x, u, dx, M, W, M.sag, M.caero, M.vehicle)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
+def rigid2d_rhs_far(kind, t, x, u, dx, M, W):
+    return _rhs2d_far(t, x, u, dx, M, W, M.sag, M.caero)
+
+
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _all_finite(x):
     for i in range(x.size):
@@ -214,6 +238,8 @@ def rigid2d_check(kind, x, M, limits):
 
 register_kind(Rigid3D, rigid3d_rhs, rigid3d_check)
 register_kind(Rigid2D, rigid2d_rhs, rigid2d_check)
+register_rhs_far(Rigid3D, rigid3d_rhs_far)
+register_rhs_far(Rigid2D, rigid2d_rhs_far)
 register_assemble(Rigid3D, rigid3d_assemble)
 register_tensions(Rigid3D, rigid3d_tensions)
 register_vehicle(WingVehicle, wing_loads)
