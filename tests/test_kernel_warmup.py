@@ -44,11 +44,11 @@ def test_the_stand_in_point_builds_the_task_and_resets():
 
 
 def test_the_in_plane_stand_ins_reach_their_kernels_without_raising():
-    from laddermill_gym.kernels.integrate import rhs
+    from laddermill_gym.kernels.integrate import rhs_entry  # what Simulator.rhs calls
 
     kernel_warmup.compile_statics("laddermill", OPTIONS)
     kernel_warmup.compile_in_plane("laddermill", OPTIONS)
-    kinds = {str(sig[4].types[0]).split("(")[0] for sig in rhs.signatures}  # (t, x, u, dx, model, work): kind
+    kinds = {str(sig[4].types[0]).split("(")[0] for sig in rhs_entry.signatures}  # (t, x, u, dx, model, work): kind
     assert {"Rigid2D", "MovingCable2D"} <= kinds, kinds  # the static equilibrium's cable and the moving cable
 
 

@@ -153,7 +153,7 @@ TRACE = """
 import sys, warnings
 warnings.simplefilter("ignore")
 from laddermill_gym.envs.laddermill.operating_point import SettleConfig, compute_operating_point, mill_scene
-# numba's cache index of a kernel the craft shares (kernels/integrate.rhs) unpickles the craft's types, importing
+# numba's cache index of a kernel the craft shares (kernels/integrate.rhs_entry) unpickles the craft's types, importing
 # the rotorcraft's modules (none of their code runs in the computation); imported before the trace, as the
 # package's import did before the envs' classes became lazy
 import laddermill_gym.rotorcraft.craft_kernels
