@@ -124,7 +124,7 @@ class Count(event.Listener):
     def on_start(self, ev):
         count[phase[0]] += 1
         f = ev.data["dispatcher"].py_func
-        integrate_rhs = f.__module__.endswith("kernels.integrate") and f.__name__ == "rhs"
+        integrate_rhs = f.__module__.endswith("kernels.integrate") and f.__name__ == "rhs_entry"  # Simulator.rhs
         if integrate_rhs and str(ev.data["args"][4].types[0]).startswith("Rigid2D("):  # (t, x, u, dx, model, work)
             count["statics"] += 1  # the static equilibrium's right-hand side (the cable without the station)
     def on_end(self, ev):
