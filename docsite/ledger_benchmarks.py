@@ -83,6 +83,11 @@ BENCHMARKS = Covered(
         'runs both envs through within 1e-3', 'Over 40 s ( )', '(its 101-wing rows now measure too)',
     ),
     timings=(  # each dated on the page (date or commit, machine, load where recorded)
+        # the chain at 8 copies re-measured against the code of 2026-11-30 (2026-12-04)
+        'On 2026-12-04 (the 2-core AVX-512 EPYC) the same 8 copies ran slower than the figures above: printed '
+        '1,415 / 1,169 / 1,242 steps/s for the registered step at 86aab88 and 1,089 / 1,458 / 1,116 at 11cffdc '
+        '(the code of the 2026-11-30 runs above), alternated (17:15-17:23, load 0-1.1): no regression, the '
+        'machine and hour of 2026-11-30 were faster.',
         # the accuracy table's CPU column, on the loaded machine the page describes below it (step_accuracy_10 on
         # 2026-11-30 at load 1-3: 754, 1,338, 2,023 and 575, 1,100, 1,440 steps/s)
         '| 373 steps/s |', '| 597 steps/s (1.6x) |', '| 786 steps/s (2.1x) |', '| 391 steps/s |',
