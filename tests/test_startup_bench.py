@@ -91,3 +91,32 @@ def test_bad_copy_counts_are_refused_before_any_run():
             startup.run_startup(quick=True, envs=[ENV], copies=bad)
     with pytest.raises(SystemExit):
         startup.main(["--copies", "0"])
+
+
+def test_several_cold_starts_each_from_empty_caches_give_their_median_and_range(monkeypatch, capsys):
+    """``cold_runs``: the child is replaced by a recorder of the caches it is given and of made-up clocks; the
+    oracle is the arithmetic done here on those numbers (median, range) and the folders each run received."""
+    firsts = iter([30.0, 20.0, 25.0, 1.0, 3.0, 2.0])  # three cold starts, then three warm ones
+    seen = []
+
+    def fake_child(env_id, cache_dir, copies=None):
+        seen.append(cache_dir)
+        t = next(firsts)
+        return {"first_step_s": t, "wall_s": t + 0.5, "inside_s": t - 0.1, "cpu_s": 2 * t, "compiled": int(t),
+                "cache_dir": str(cache_dir)}
+
+    monkeypatch.setattr(startup, "run_child", fake_child)
+    res = startup.run_startup(envs=[ENV], cold_runs=3)[ENV]
+    cold, warm = res["cold"], res["warm"]
+    assert len(set(seen[:3])) == 3 and all(seen[:3])  # a new cache folder per cold start
+    assert seen[3:] == [seen[2]] * 3  # the warm starts read the last cold start's caches
+    assert cold["first_step_s"] == 25.0 and cold["all_s"] == [30.0, 20.0, 25.0] and cold["runs"] == 3
+    assert cold["cpu_s"] == 50.0 and cold["compiled"] == 30
+    assert warm["first_step_s"] == 2.0 and warm["runs"] == 3
+    out = capsys.readouterr().out
+    assert "25.0 s" in out and "median of 3: 20.0-30.0 s" in out
+    for bad in (0, -1, 1.5, True):
+        with pytest.raises(ValueError, match="cold_runs"):
+            startup.run_startup(envs=[ENV], cold_runs=bad)
+    with pytest.raises(SystemExit):
+        startup.main(["--cold-runs", "0"])

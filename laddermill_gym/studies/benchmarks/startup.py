@@ -14,9 +14,10 @@ also counts the functions numba compiled (``numba.core.event``), so a warm start
 with every compile timed (:data:`PROFILE_CHILD`) and prints where the seconds go, phase by phase (make, which
 computes the mill's operating point, reset, step) and function by function, then a timeline of what each process
 compiled when: the process itself and its kernel warm-up processes (``envs/compile_trace.py``).
-Machines are shared and noisy: the warm start is the median of a few runs; compare cold starts taken in the same
-period. The targets are issue 32's: TetheredWing-v0 and Rotorcraft-v0 at most 20 s cold and 1 s warm,
-LadderMill-v0 (its operating point included) at most 60 s cold.
+Machines are shared and noisy: the warm start is the median of a few runs; ``--cold-runs N`` takes N cold starts,
+each from empty caches, and prints their median and range; compare cold starts taken in the same period. The
+targets are issue 32's: TetheredWing-v0 and Rotorcraft-v0 at most 20 s cold and 1 s warm, LadderMill-v0 (its
+operating point included) at most 60 s cold.
 """
 
 from __future__ import annotations
@@ -210,22 +211,37 @@ def run_child(env_id: str, cache_dir: str | None, child: str = CHILD, extra_env:
     return out
 
 
-def measure(env_id: str, cold: bool = True, warm_repeats: int = WARM_REPEATS, copies: int | None = None) -> dict:
-    """Cold start (new, empty numba and operating-point caches) and the median of ``warm_repeats`` warm starts from
-    the caches it left; with ``cold`` False, warm starts only, from the caches this process's environment names;
-    ``copies``: of the native vector env (:func:`make_call`)."""
+def measure(env_id: str, cold: bool = True, warm_repeats: int = WARM_REPEATS, copies: int | None = None,
+            cold_runs: int = 1) -> dict:
+    """Cold starts (each with new, empty numba and operating-point caches; ``cold_runs`` of them, summarised by
+    :func:`summarise`) and the median of ``warm_repeats`` warm starts from the caches the last one left; with ``cold``
+    False, warm starts only, from the caches this process's environment names; ``copies``: of the native vector env
+    (:func:`make_call`)."""
     res: dict = {"env": env_id, "copies": copies}
-    with tempfile.TemporaryDirectory(prefix="laddermill_numba_") as tmp:
-        cache = tmp if cold else None
-        if cold:
-            res["cold"] = run_child(env_id, cache, copies=copies)
-        runs = [run_child(env_id, cache, copies=copies) for _ in range(warm_repeats)]
-    res["warm"] = {"first_step_s": statistics.median(r["first_step_s"] for r in runs),
-                   "wall_s": statistics.median(r["wall_s"] for r in runs),
-                   "inside_s": statistics.median(r["inside_s"] for r in runs),
-                   "cpu_s": statistics.median(r["cpu_s"] for r in runs),
-                   "compiled": max(r["compiled"] for r in runs), "runs": len(runs), "cache_dir": runs[0]["cache_dir"]}
+    n = cold_runs if cold else 1
+    colds, runs = [], []
+    for i in range(n):
+        with tempfile.TemporaryDirectory(prefix="laddermill_numba_") as tmp:
+            cache = tmp if cold else None
+            if cold:
+                colds.append(run_child(env_id, cache, copies=copies))
+            if i == n - 1:  # the warm starts read the caches the last cold start left
+                runs = [run_child(env_id, cache, copies=copies) for _ in range(warm_repeats)]
+    if colds:
+        res["cold"] = summarise(colds)
+    res["warm"] = summarise(runs)
     return res
+
+
+def summarise(runs: list[dict]) -> dict:
+    """One row for several starts: the median of each clock and CPU figure (``cpu_children_s`` where the runs
+    report it), the most functions any compiled, how many runs, the launch-to-step seconds of each (``all_s``) and
+    the first run's cache folder."""
+    out = {k: statistics.median(r.get(k, 0.0) for r in runs)
+           for k in ("first_step_s", "wall_s", "inside_s", "cpu_s", "cpu_children_s")}
+    out.update(compiled=max(r["compiled"] for r in runs), runs=len(runs), all_s=[r["first_step_s"] for r in runs],
+               cache_dir=runs[0]["cache_dir"])
+    return out
 
 
 def _children(res: dict) -> str:
@@ -251,26 +267,32 @@ def report(res: dict, echo=print) -> None:
     echo(f"== start-up {res['env']}: {made} + reset + one step in a fresh process, from its launch to the step done")
     if "cold" in res:
         c = res["cold"]
+        several = f", median of {c['runs']}: {min(c['all_s']):.1f}-{max(c['all_s']):.1f} s" if c["runs"] > 1 else ""
         echo(f"  cold (empty caches)       {c['first_step_s']:7.1f} s  (process {c['wall_s']:.1f} s, inside "
-             f"{c['inside_s']:.1f} s, CPU {c['cpu_s']:.1f} s{_children(c)}, {c['compiled']} functions compiled) "
-             f"{_verdict(c['first_step_s'], cold_t)}")
+             f"{c['inside_s']:.1f} s, CPU {c['cpu_s']:.1f} s{_children(c)}, {c['compiled']} functions compiled"
+             f"{several}) {_verdict(c['first_step_s'], cold_t)}")
     w = res["warm"]
     echo(f"  warm (caches filled)      {w['first_step_s']:7.2f} s  (process {w['wall_s']:.2f} s, inside "
          f"{w['inside_s']:.2f} s, CPU {w['cpu_s']:.2f} s, {w['compiled']} functions compiled, median of {w['runs']}) "
          f"{_verdict(w['first_step_s'], warm_t)}")
 
 
-def run_startup(quick: bool = False, envs=None, echo=print, copies: int | None = None) -> dict:
+def run_startup(quick: bool = False, envs=None, echo=print, copies: int | None = None, cold_runs: int = 1) -> dict:
     """``laddermill bench --startup``: cold and warm start of each of ``envs`` (default: the three of
     :data:`TARGETS`); ``quick``: warm starts only, once each, of :data:`QUICK_ENVS`, from the current cache;
-    ``copies``: of the native vector envs of that many copies instead of the single envs."""
+    ``copies``: of the native vector envs of that many copies instead of the single envs; ``cold_runs``: cold
+    starts per env, each from empty caches, their median printed with their range (a shared machine's cold starts
+    scatter by seconds)."""
     make_call("", copies)  # a bad count is refused before any run
+    if isinstance(cold_runs, bool) or not isinstance(cold_runs, int) or cold_runs < 1:
+        raise ValueError(f"cold_runs={cold_runs!r}: a whole number of cold starts, at least 1")
     envs = list(envs or (QUICK_ENVS if quick else TARGETS))
     out = {}
     for env_id in envs:
         echo(f"timing the start-up of {env_id} {'(warm only)' if quick else '(cold, then warm)'} ...")
         sys.stdout.flush()
-        out[env_id] = measure(env_id, cold=not quick, warm_repeats=1 if quick else WARM_REPEATS, copies=copies)
+        out[env_id] = measure(env_id, cold=not quick, warm_repeats=1 if quick else WARM_REPEATS, copies=copies,
+                              cold_runs=cold_runs)
         report(out[env_id], echo)
     return out
 
@@ -284,14 +306,18 @@ def main(argv=None) -> int:
                         "timeline of what each process (the kernel warm-ups too) compiled when")
     p.add_argument("--copies", type=int, default=None,
                    help="time the native vector env of this many copies (gymnasium.make_vec) instead of the single env")
+    p.add_argument("--cold-runs", type=int, default=1,
+                   help="cold starts per env, each from empty caches: their median and range are printed")
     args = p.parse_args(argv)
     if args.copies is not None and args.copies < 1:
         p.error(f"--copies {args.copies}: must be at least 1")
+    if args.cold_runs < 1:
+        p.error(f"--cold-runs {args.cold_runs}: must be at least 1")
     if args.profile:
         for env_id in args.envs or QUICK_ENVS:
             profile(env_id)
         return 0
-    run_startup(args.quick, args.envs, copies=args.copies)
+    run_startup(args.quick, args.envs, copies=args.copies, cold_runs=args.cold_runs)
     return 0
 
 
