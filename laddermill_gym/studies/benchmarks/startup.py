@@ -7,7 +7,7 @@ and operating point loaded from them).
 Each measurement is its own subprocess (``python -c`` :data:`CHILD`), timed three ways: from its launch to its first
 step done (the wall clock the child reads after the step against the one read before the launch: the interpreter's
 start, the imports, make, reset and step; what the targets judge), the whole process (its interpreter's shutdown
-too, which in a warm start is about a fifth of a second of CPython collecting the objects numba's typing registries
+too, which in a warm start is about a quarter of a second of CPython collecting the objects numba's typing registries
 made) and from the inside (the imports to the first step); the child
 also counts the functions numba compiled (``numba.core.event``), so a warm start that compiles anything shows it.
 ``--profile`` (``python -m laddermill_gym.studies.benchmarks.startup --profile --envs ID``) takes one cold start
