@@ -1,6 +1,7 @@
 """envs/copy_threads.py: the vector envs' copies split over threads. The oracle for the split is a plain loop over
 the copies; for the envs, the single env (the same kernel on one copy): every copy of a threaded native vector env
-must equal a single env bit for bit, and making that vector env after the single env compiles nothing."""
+must equal a single env bit for bit, through numba's threads (the kernel's launcher) and through Python's (a process
+forked after GNU OpenMP), and making that vector env after the single env compiles only the launcher's loop."""
 
 import multiprocessing
 import pickle
@@ -14,6 +15,7 @@ from numba.core import event
 
 import laddermill_gym  # noqa: F401 (registers the ids)
 from laddermill_gym.envs.copy_threads import CopyThreads, copy_ranges
+from laddermill_gym.kernels import fork_state
 
 
 @njit(nogil=True, cache=False)
@@ -23,6 +25,12 @@ def _square_rows(x, out, first, last):
             raise ValueError("negative")
         for j in range(x.shape[1]):
             out[b, j] = x[b, j] * x[b, j] + b
+
+
+@njit(nogil=True, parallel=True, cache=False)
+def _square_rows_launcher(bounds, x, out):
+    for r in numba.prange(bounds.shape[0]):
+        _square_rows(x, out, bounds[r, 0], bounds[r, 1])
 
 
 @pytest.mark.parametrize("n, k", [(1, 4), (5, 2), (7, 3), (8, 8), (3, 16), (512, 2)])
@@ -48,6 +56,35 @@ def test_the_runner_gives_the_plain_loop_on_every_thread_count(parallel):
             np.testing.assert_array_equal(out, expected)
         finally:
             numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
+    run.close()
+
+
+def test_the_launcher_runs_the_ranges_unless_forked_after_gnu_openmp(monkeypatch):
+    """With a launcher, the ranges go to it (numba's threads) as one (n_ranges, 2) array; in a process forked after
+    GNU OpenMP started (kernels/fork_state.py), to Python's threads; the plain loop's rows either way."""
+    threads = min(2, numba.config.NUMBA_NUM_THREADS)
+    if threads < 2:
+        pytest.skip("needs two numba threads")
+    x = np.random.default_rng(4).uniform(0, 2, size=(11, 3))
+    expected = x * x + np.arange(11)[:, None]
+    seen = []
+
+    def launcher(bounds, *args):
+        seen.append(bounds.copy())
+        _square_rows_launcher(bounds, *args)
+
+    run = CopyThreads(_square_rows, 11, True, launcher)
+    numba.set_num_threads(threads)
+    try:
+        for forked in (False, True):
+            monkeypatch.setattr(fork_state, "FORKED_AFTER_GNU_OPENMP", forked)
+            out = np.full_like(x, np.nan)
+            run(x, out)
+            np.testing.assert_array_equal(out, expected)
+    finally:
+        numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
+    assert len(seen) == 1  # the forked process's call went to the Python threads
+    np.testing.assert_array_equal(seen[0], np.array(copy_ranges(11, threads)))
     run.close()
 
 
@@ -112,8 +149,13 @@ def test_a_forked_process_starts_its_own_threads():
     run.close()
 
 
-@pytest.mark.parametrize("env_id", ["laddermill_gym/TetheredWing-v0", "laddermill_gym/Rotorcraft-v0"])
-def test_a_threaded_vector_env_is_the_single_envs_bit_for_bit_and_compiles_nothing(env_id):
+#: the launcher of each env's step kernel (numba's threads), the one thing its threaded vector env compiles
+_LAUNCHERS = {"laddermill_gym/TetheredWing-v0": "launch_step_observe",
+              "laddermill_gym/Rotorcraft-v0": "launch_craft_step_observe"}
+
+
+@pytest.mark.parametrize("env_id", sorted(_LAUNCHERS))
+def test_a_threaded_vector_env_is_the_single_envs_bit_for_bit_and_compiles_only_its_launcher(env_id, monkeypatch):
     n, steps = 5, 12
     rng = np.random.default_rng(3)
     acts = rng.uniform(-0.5, 0.5, size=(steps, n, gym.make(env_id).action_space.shape[0])).astype(np.float32)
@@ -134,21 +176,32 @@ def test_a_threaded_vector_env_is_the_single_envs_bit_for_bit_and_compiles_nothi
         def on_end(self, ev):
             pass
 
-    listener = Count()
-    event.register("numba:compile", listener)
-    try:
-        threads = min(2, numba.config.NUMBA_NUM_THREADS)
-        numba.set_num_threads(threads)
+    def rollout():
         vec = gym.make_vec(env_id, n, vectorization_mode="vector_entry_point", parallel=True)
         o, _ = vec.reset(seed=20)
         hist = [o]
         for a in acts:
             hist.append(vec.step(a)[0])
         vec.close()
+        return np.array(hist)
+
+    listener = Count()
+    threads = min(2, numba.config.NUMBA_NUM_THREADS)
+    event.register("numba:compile", listener)
+    try:
+        numba.set_num_threads(threads)
+        via_numba = rollout()
     finally:
         event.unregister("numba:compile", listener)
         numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
-    assert compiled == []  # the single env's kernels serve the threaded vector env
-    hist = np.array(hist)
-    for i in range(n):
-        np.testing.assert_array_equal(hist[:, i], singles[i])
+    # the single env's kernels serve the threaded vector env; on two threads, its launcher's loop is compiled once
+    assert set(compiled) <= {_LAUNCHERS[env_id]}
+    monkeypatch.setattr(fork_state, "FORKED_AFTER_GNU_OPENMP", True)  # as in a process forked after GNU OpenMP
+    numba.set_num_threads(threads)
+    try:
+        via_python = rollout()
+    finally:
+        numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
+    for hist in (via_numba, via_python):
+        for i in range(n):
+            np.testing.assert_array_equal(hist[:, i], singles[i])

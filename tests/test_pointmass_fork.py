@@ -19,6 +19,7 @@ import numba
 import numpy as np
 import pytest
 
+from laddermill_gym.kernels import fork_state
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL
 from laddermill_gym.kernels.pointmass.explicit import CHUNK, explicit_advance, explicit_advance_serial
 from laddermill_gym.kernels.pointmass.implicit import implicit_advance, implicit_advance_serial
@@ -120,7 +121,7 @@ def test_async_fork_after_the_parent_started_numbas_threads():
 def test_parallel_kernels_in_a_fork_after_gnu_openmp_say_what_to_do(monkeypatch):
     """A string long enough for two threads still needs the pool: in such a fork, a clear error, not numba's
     SIGTERM; the serial kernels run."""
-    monkeypatch.setattr(sim_pointmass, "_FORKED_AFTER_GNU_OPENMP", True)
+    monkeypatch.setattr(fork_state, "FORKED_AFTER_GNU_OPENMP", True)
     assert sim_pointmass.run_on_threads(1, lambda v: v + 1, None, 1) == 2
     with pytest.raises(RuntimeError, match=r"forked.*GNU OpenMP.*forkserver"):
         sim_pointmass.run_on_threads(2, None, lambda v: v, 1)

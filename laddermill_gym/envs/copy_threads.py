@@ -1,21 +1,27 @@
-"""The vector envs' copies on several threads: one compiled step kernel (``nogil``) called on contiguous ranges of
-copies from a small pool of Python threads (issue 32).
+"""The vector envs' copies on several threads: the single env's compiled step kernel (``nogil``) run on
+contiguous ranges of copies, one range per thread (issue 32).
 
-Why not numba's ``prange``: a prange kernel around the copy step compiled the whole step a second time, and its
-parallel lowering analyses and optimises the inlined step five times over (the loop body, its gufunc and its two
-wrappers): 165 s of CPU for TetheredWing-v0's on a 2-core AVX2 machine, on top of the single env's 55 s. Calling the
-single env's kernel on ranges of copies compiles nothing more, and each copy's arithmetic is that kernel's, so the
-vector envs give the single env's bits whatever the thread count.
+Two ways to run the ranges, the same bits either way (each copy's arithmetic is the kernel's own):
+
+- **numba's thread pool** (the kernel's *launcher*, ``launch_step_observe`` beside each step kernel): a ``prange``
+  loop over the ranges that calls the kernel through its address (``kernels/far_call.py``), so it compiles only the
+  loop, not the step again. A prange kernel that linked the copy step took 165 s of CPU to compile on a 2-core
+  AVX2 machine (its parallel lowering re-analyses and re-optimises the whole inlined step five times over).
+- **a pool of Python threads**, for a kernel without a launcher and in a process forked from one whose numba
+  threads run on GNU OpenMP (not fork-safe: numba would end the process at the first parallel loop,
+  ``kernels/fork_state.py``). Each range is then a future and two handovers of the GIL: on a 16-core virtual
+  machine (2026-12-04) TetheredWing-v0 at 512 copies ran 1.84x faster on 16 threads than on one (0.93x on two),
+  so the launcher is the default.
 
 The thread count is numba's (``numba.get_num_threads()``, as ``numba.set_num_threads`` and ``NUMBA_NUM_THREADS``
 set it), read at each call, so the existing controls of a run's parallelism keep working.
 
-Each range is a call from Python, and a numba dispatcher types every argument before it releases the GIL: about
-12-18 us for the wing kernel's 21 arguments (two model namedtuples of some 100 arrays), one after another across
-the threads. So only the calling thread goes through the dispatcher; the other ranges call the compiled entry
-point it chose (about 3 us), but only when every argument is the object of that typed call or a float or array of
-the same numba type (dtype, dimensions, layout, writeable, alignment): otherwise every range goes through the
-dispatcher, and the next call's types are kept.
+On the Python threads, each range is a call from Python, and a numba dispatcher types every argument before it
+releases the GIL: about 12-18 us for the wing kernel's 21 arguments (two model namedtuples of some 100 arrays), one
+after another across the threads. So only the calling thread goes through the dispatcher; the other ranges call the
+compiled entry point it chose (about 3 us), but only when every argument is the object of that typed call or a
+float or array of the same numba type (dtype, dimensions, layout, writeable, alignment): otherwise every range goes
+through the dispatcher, and the next call's types are kept.
 """
 
 from __future__ import annotations
@@ -25,6 +31,8 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numba
 import numpy as np
+
+from laddermill_gym.kernels.fork_state import forked_after_gnu_openmp
 
 __all__ = ["CopyThreads", "copy_ranges"]
 
@@ -45,12 +53,16 @@ def copy_ranges(n_copies: int, n_threads: int) -> list[tuple[int, int]]:
 class CopyThreads:
     """Callable as the step kernel it wraps: ``runner(*args)`` runs ``kernel(*args, first, last)`` on the copies
     0..``n_copies``-1, in one call when ``parallel`` is False (or numba's thread count is 1), else on
-    ``numba.get_num_threads()`` ranges (:func:`copy_ranges`), one in the calling thread and the others on a pool of
-    threads kept for the next call. The kernel must release the GIL (``nogil=True``) and write only its copies'
-    rows. An exception in any range is raised here after all ranges have ended."""
+    ``numba.get_num_threads()`` ranges (:func:`copy_ranges`): through ``launcher(bounds, *args)`` (numba's threads;
+    ``bounds`` (n_ranges, 2) int64) where one is given and numba's pool can run in this process, else one range in
+    the calling thread and the others on a pool of Python threads kept for the next call. The kernel must release
+    the GIL (``nogil=True``) and write only its copies' rows. An exception in any range is raised here after all
+    ranges have ended."""
 
-    def __init__(self, kernel, n_copies: int, parallel: bool):
+    def __init__(self, kernel, n_copies: int, parallel: bool, launcher=None):
         self.kernel = kernel
+        self.launcher = launcher
+        self._bounds: dict[int, np.ndarray] = {}  # thread count -> the launcher's ranges
         self.n_copies = int(n_copies)
         self.parallel = bool(parallel)
         self._pool = None
@@ -63,6 +75,12 @@ class CopyThreads:
         ranges = copy_ranges(self.n_copies, n)
         if len(ranges) == 1:
             self.kernel(*args, 0, self.n_copies)
+            return
+        if self.launcher is not None and not forked_after_gnu_openmp():
+            bounds = self._bounds.get(len(ranges))
+            if bounds is None:
+                bounds = self._bounds[len(ranges)] = np.array(ranges, dtype=np.int64)
+            self.launcher(bounds, *args)
             return
         keys = [_type_key(a) for a in args]
         entry = self._entry_point(args, keys)

@@ -45,6 +45,7 @@ from laddermill_gym.kernels.rigid.observe import (
     AUX_MAX_TENSION,
     AUX_MIN_ALTITUDE,
     N_AUX,
+    launch_step_observe,
     observe_state,
     step_observe_serial,
 )
@@ -192,7 +193,7 @@ class WingTask(TaskCore):
             self.n_wings = nw
             self.n_copies = int(n_copies)
             self.parallel = default_parallel(self.n_copies, asm.state_size, parallel)
-            self._kernel = CopyThreads(step_observe_serial, self.n_copies, self.parallel)
+            self._kernel = CopyThreads(step_observe_serial, self.n_copies, self.parallel, launch_step_observe)
             n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
             self.batch = BatchSimulator(asm, self.n_copies, settings, n_modulation=max(2, n_mod),
                                         n_grid=0 if geom is None else geom.floats)

@@ -164,15 +164,16 @@ class TaskCore:
         self.alpha_lo, self.alpha_hi = np.radians(tc.alpha_range_deg)
         self.beta_max = math.radians(tc.max_abs_beta_deg)
 
-    def _make_batch(self, n_copies: int, assembly, settings, parallel, kernel, **batch_kwargs) -> None:
+    def _make_batch(self, n_copies: int, assembly, settings, parallel, kernel, launcher, **batch_kwargs) -> None:
         """``n_copies`` (B), ``parallel`` (several threads; None: :func:`default_parallel`), ``_kernel`` (the step
-        ``kernel`` on the copies, on numba's thread count when parallel: :class:`~.copy_threads.CopyThreads`), the
-        :class:`~laddermill_gym.sim.batch.BatchSimulator` ``batch`` of ``assembly`` with a wind modulation sampled
-        every ``wind_dt`` over ``episode_time`` and room for the gust grid of a spatial disturbance (turbulence)
-        of ``disturbances`` (``batch_kwargs``: a vehicle's), and the step scratch ``_dx``, ``_nsteps``, ``steps``."""
+        ``kernel`` on the copies, on numba's thread count when parallel: :class:`~.copy_threads.CopyThreads` with the
+        kernel's ``launcher``), the :class:`~laddermill_gym.sim.batch.BatchSimulator` ``batch`` of ``assembly`` with
+        a wind modulation sampled every ``wind_dt`` over ``episode_time`` and room for the gust grid of a spatial
+        disturbance (turbulence) of ``disturbances`` (``batch_kwargs``: a vehicle's), and the step scratch ``_dx``,
+        ``_nsteps``, ``steps``."""
         B = self.n_copies = n_copies
         self.parallel = default_parallel(B, assembly.state_size, parallel)
-        self._kernel = CopyThreads(kernel, B, self.parallel)
+        self._kernel = CopyThreads(kernel, B, self.parallel, launcher)
         n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
         geom = grid_geometry(self.disturbances, self.episode_time)
         self.batch = BatchSimulator(assembly, B, settings, n_modulation=max(2, n_mod),

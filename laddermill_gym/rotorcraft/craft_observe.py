@@ -16,10 +16,11 @@ tether tensions [N] and retreating-tip incidences [rad]. The references of the r
 
 import math
 
-from numba import njit
+from numba import njit, prange, types
 
 from laddermill_gym.kernels import contract as C
 from laddermill_gym.kernels.batch import advance_copy
+from laddermill_gym.kernels.far_call import far_call
 from laddermill_gym.kernels.integrate import rhs
 from laddermill_gym.rotorcraft.rotor_kernels import STATUS_OK
 
@@ -113,3 +114,18 @@ def craft_step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, lim
     for b in range(first, last):
         _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
                                  tether_end, obs, aux, status, done)
+
+
+_STEP_FAR = far_call(craft_step_observe_serial, types.none)
+
+
+# The vector envs' launcher on several threads, as kernels/rigid/observe.launch_step_observe: numba's thread pool
+# runs the ranges, each calling the kernel above through its address (the same bits on any thread count).
+@njit(cache=True, parallel=True, nogil=True)
+def launch_craft_step_observe(bounds, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
+                              tether_end, obs, aux, status, done):
+    """:func:`craft_step_observe_serial` on the copy ranges ``bounds`` (n_ranges, 2) int64 of (first, last) rows,
+    the ranges in parallel on numba's threads; the other arguments are the kernel's, without its first and last."""
+    for r in prange(bounds.shape[0]):
+        _STEP_FAR(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref, tether_end, obs,
+                  aux, status, done, bounds[r, 0], bounds[r, 1])

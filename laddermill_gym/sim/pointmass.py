@@ -9,13 +9,11 @@ RK4 / DP5(4), which at 500,000 nodes would alone take 7 x 24 MB.
 
 from __future__ import annotations
 
-import os
-import sys
-
 import numba
 import numpy as np
 from tqdm import tqdm
 
+from laddermill_gym.kernels import fork_state
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL, PM_OK, PP_DA, PP_EA, PP_L0, PP_MU
 from laddermill_gym.kernels.pointmass.explicit import (
     CHUNK,
@@ -35,31 +33,11 @@ class PointMassError(RuntimeError):
     """A step failed (non-finite state, speed limit, ground); the message names the status and the time."""
 
 
-#: True in a process forked after numba started its threads on GNU OpenMP (set by :func:`_note_fork`)
-_FORKED_AFTER_GNU_OPENMP = False
-
-
-def _note_fork() -> None:
-    """In a forked child: note whether the parent's numba threads run on GNU OpenMP, which is not fork-safe (numba
-    ends such a child with SIGTERM at its first parallel loop)."""
-    global _FORKED_AFTER_GNU_OPENMP
-    try:
-        layer = numba.threading_layer()
-    except ValueError:  # numba's threads not started: the child starts its own
-        return
-    omp = sys.modules.get("numba.np.ufunc.omppool")
-    if layer == "omp" and getattr(omp, "openmp_vendor", "GNU") == "GNU":
-        _FORKED_AFTER_GNU_OPENMP = True
-
-
-os.register_at_fork(after_in_child=_note_fork)
-
-
 def check_fork_safe() -> None:
     """RuntimeError saying what to do, in a process forked from one whose numba threads run on GNU OpenMP (where
     numba would end the process at the first parallel loop); called before the parallel point-mass kernels (the
     serial ones, which strings of at most ``CHUNK`` nodes run, need no thread pool and run in such a process)."""
-    if _FORKED_AFTER_GNU_OPENMP:
+    if fork_state.forked_after_gnu_openmp():
         raise RuntimeError(
             "the point-mass kernels cannot run in this process on more than one thread: it was forked "
             "(multiprocessing's 'fork' start method, AsyncVectorEnv's default on Linux) from a process whose numba "

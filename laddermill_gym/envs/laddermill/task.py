@@ -51,6 +51,7 @@ from laddermill_gym.kernels.rigid.observe import (
     AUX_GROUND_END,
     AUX_GROUND_START,
     N_AUX,
+    launch_step_observe,
     step_observe_serial,
 )
 from laddermill_gym.ladder.scene import options_key
@@ -126,7 +127,7 @@ class MillTask(TaskCore):
             self.cable_speed_command = bool(cable_speed_command)
             asm = self._assembly()
             self.n_wings = n = asm.n_wings
-            self._make_batch(B, asm, settings, parallel, step_observe_serial)
+            self._make_batch(B, asm, settings, parallel, step_observe_serial, launch_step_observe)
             self.loop_points = loop_points(self.op, asm)
             check_turbulence_cover(self.disturbances, self.loop_points)
             self.xoff = asm.body_state_size

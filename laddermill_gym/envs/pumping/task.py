@@ -26,7 +26,12 @@ from laddermill_gym.envs.pumping.settings import (
 from laddermill_gym.envs.pumping.winch_scene import PumpingScene, WinchSimulator, electrical_energy, load_pumping
 from laddermill_gym.envs.task_base import TaskCore, clip_observations, substeps_per_period
 from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, N_CONTROLS, SX_ENERGY, SX_MOVED, SX_SPEED, TM_DT, TM_T0
-from laddermill_gym.kernels.rigid.observe import AUX_GROUND_START, N_AUX, step_observe_serial
+from laddermill_gym.kernels.rigid.observe import (
+    AUX_GROUND_START,
+    N_AUX,
+    launch_step_observe,
+    step_observe_serial,
+)
 from laddermill_gym.kernels.wind import modulation, wind_point
 from laddermill_gym.ladder.scene import options_key, options_kwargs
 from laddermill_gym.model.states import rotations_from_quaternions
@@ -78,7 +83,7 @@ class PumpingTask(TaskCore):
         asm = self.pumping.assembly
         self.winch = asm.station
         self.n_wings = 1
-        self._make_batch(B, asm, sc.settings, parallel, step_observe_serial)
+        self._make_batch(B, asm, sc.settings, parallel, step_observe_serial, launch_step_observe)
         self.xoff = asm.body_state_size
         self.nominal = np.array(x0[B3_POS: B3_POS + 3], dtype=float).reshape(1, 3)
         self.below = np.array([sc.layout.piece_elements[0][-1]], dtype=np.int64)

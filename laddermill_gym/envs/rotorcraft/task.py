@@ -53,7 +53,11 @@ from laddermill_gym.kernels.contract import (
 from laddermill_gym.kernels.task_rewards import N_ARGS, N_TERMS, TERM_KEYS, clip_rows, craft_readout, shaped_terms
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT
 from laddermill_gym.rotorcraft.craft import TETHER_NAMES, CraftSimulator
-from laddermill_gym.rotorcraft.craft_observe import CRAFT_BODY, craft_step_observe_serial
+from laddermill_gym.rotorcraft.craft_observe import (
+    CRAFT_BODY,
+    craft_step_observe_serial,
+    launch_craft_step_observe,
+)
 from laddermill_gym.sim.reports import ground_stop_text
 
 __all__ = ["CraftTask", "CRAFT_FAILURES", "CraftScene"]
@@ -168,7 +172,7 @@ class CraftTask(TaskCore):
         self.sim = CraftSimulator(c.config, c.assembly, c.layout, self.x_trim, self.u_trim)
         self.scene = CraftScene(c.assembly, c.config.name)
         self._make_batch(B, c.assembly, self._settings, parallel,
-                         craft_step_observe_serial, vehicle=self.sim.make_vehicle(),
+                         craft_step_observe_serial, launch_craft_step_observe, vehicle=self.sim.make_vehicle(),
                          n_controls=self.sim.n_controls, vehicle_sizes=self.sim.vehicle_sizes())
         self.batch.states[:] = self.x_trim
         self.batch.controls[:] = self.u_trim

@@ -12,7 +12,7 @@ angle of attack, sideslip, tension of the element below the wing. 3D scenes only
 
 import math
 
-from numba import njit
+from numba import njit, prange, types
 
 from laddermill_gym.kernels.batch import advance_copy
 from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes of this module)
@@ -39,6 +39,7 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (read as attributes 
     TM_T0,
 )
 from laddermill_gym.kernels.dispatch import model_tensions
+from laddermill_gym.kernels.far_call import far_call
 from laddermill_gym.kernels.integrate import rhs
 from laddermill_gym.kernels.wind import modulation, wind_point
 
@@ -161,3 +162,19 @@ def step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, t
     for b in range(first, last):
         _step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal,
                            below, ground, obs, aux, status, done)
+
+
+_STEP_FAR = far_call(step_observe_serial, types.none)
+
+
+# The vector envs' launcher on several threads: numba's thread pool runs the ranges, each calling the kernel above
+# through its address (kernels/far_call.py), so this compiles only the loop (about 3-7 s) and each copy's arithmetic
+# is the kernel's own: the same bits on any thread count (envs/copy_threads.py says why not Python threads).
+@njit(cache=True, parallel=True, nogil=True)
+def launch_step_observe(bounds, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal,
+                        below, ground, obs, aux, status, done):
+    """:func:`step_observe_serial` on the copy ranges ``bounds`` (n_ranges, 2) int64 of (first, last) rows, the
+    ranges in parallel on numba's threads; the other arguments are the kernel's, without its first and last."""
+    for r in prange(bounds.shape[0]):
+        _STEP_FAR(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal, below, ground,
+                  obs, aux, status, done, bounds[r, 0], bounds[r, 1])
