@@ -223,9 +223,11 @@ def thread_scaling(thread_counts, envs=None, copies: int = 512, quick: bool = Fa
     """Steps/s of the native vector env of each env in ``envs`` (default TetheredWing-v0 and Rotorcraft-v0) at
     ``copies`` copies for each numba thread count of ``thread_counts`` (``numba.set_num_threads`` in this process;
     a count above the pool's size, NUMBA_NUM_THREADS or the cpu count, is left out with a note), and the speed-up
-    over the first count; then the serial share of a step on one thread (:func:`serial_share`) and Amdahl's bound it
-    puts on the speed-up at 16 threads (the issue's many-core target; a machine's memory bandwidth and the copies'
-    imbalance lower it further)."""
+    over the first count; on two threads or more also the same env with its copies on Python threads instead of
+    numba's (``envs/copy_threads.py``: what a process forked after GNU OpenMP runs; the vector envs' only way until
+    2026-12-04), measured right after it; then the serial share of a step on one thread (:func:`serial_share`) and
+    Amdahl's bound it puts on the speed-up at 16 threads (the issue's many-core target; a machine's memory
+    bandwidth and the copies' imbalance lower it further)."""
     import numba
 
     pool = numba.config.NUMBA_NUM_THREADS
@@ -240,14 +242,27 @@ def thread_scaling(thread_counts, envs=None, copies: int = 512, quick: bool = Fa
         from laddermill_gym.control.factory import make_controller
 
         act = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
+        runner = native.task._kernel
+        launcher = getattr(runner, "launcher", None)
         echo(f"{env_id} at {copies} copies:")
         rows = []
+        n_steps = max(5, int((2e5 if quick else 1e6) / copies) // 10)  # the bench_vector budget per repeat
         for k in counts:
             numba.set_num_threads(k)
-            n_steps = max(5, int((2e5 if quick else 1e6) / copies) // 10)  # the bench_vector budget per repeat
             rate, _, _ = _steps_per_second(native, act, n_steps, 3 if quick else 5)
-            rows.append({"threads": k, "steps_per_s": rate, "speedup": rate / rows[0]["steps_per_s"] if rows else 1.0})
-            echo(f"  {k:3d} threads: {rate:12,.0f} steps/s   speed-up {rows[-1]['speedup']:5.2f}x")
+            row = {"threads": k, "steps_per_s": rate, "speedup": rate / rows[0]["steps_per_s"] if rows else 1.0}
+            text = f"  {k:3d} threads: {rate:12,.0f} steps/s   speed-up {row['speedup']:5.2f}x"
+            if launcher is not None and k > 1:
+                runner.launcher = None  # the copies on Python threads
+                try:
+                    py_rate, _, _ = _steps_per_second(native, act, n_steps, 3 if quick else 5)
+                finally:
+                    runner.launcher = launcher
+                row["python_threads_steps_per_s"] = py_rate
+                row["python_threads_speedup"] = py_rate / rows[0]["steps_per_s"]
+                text += f"   (Python threads {py_rate:12,.0f}, {row['python_threads_speedup']:5.2f}x)"
+            rows.append(row)
+            echo(text)
         numba.set_num_threads(1)
         share = serial_share(native, act, n_steps)
         bound = 1.0 / (share + (1.0 - share) / 16)
