@@ -144,6 +144,47 @@ def test_the_callees_compiled_ahead_are_the_step_kernels_own(tmp_path, env_id, l
     assert min(out["before"]) >= 1
 
 
+@pytest.mark.parametrize("env_id, lister", [("laddermill_gym/TetheredWing-v0", "wing_calls"),
+                                            ("laddermill_gym/Rotorcraft-v0", "craft_calls")])
+def test_a_threaded_tasks_callees_are_listed_as_a_single_ones(monkeypatch, env_id, lister):
+    """A vector env's copies on numba's threads reach the step kernel through its launcher: the warm-up must still
+    find the kernel's arguments (oracle: the single env's list; an empty list would leave every callee, the W
+    method's loop too, to the first process's first step)."""
+    import gymnasium as gym
+    import numba
+
+    from laddermill_gym.envs import task_warmup
+
+    if numba.config.NUMBA_NUM_THREADS < 2:
+        pytest.skip("needs two numba threads")
+    got = []
+
+    class Stop(Exception):
+        pass
+
+    def start(target, kwargs, *args, **kw):
+        got.append(kwargs)
+        raise Stop
+
+    monkeypatch.setattr(kernel_warmup, "start", start)
+    with pytest.raises(Stop):
+        gym.make(env_id)
+    monkeypatch.setattr(kernel_warmup, "start", lambda *args, **kw: None)  # the listers build the task again
+
+    def names(calls):
+        calls = calls[0] + calls[1] if isinstance(calls, tuple) else calls
+        return [d.py_func.__qualname__ for d, _ in calls]
+
+    numba.set_num_threads(2)
+    try:
+        one = names(getattr(task_warmup, lister)(got[0]))
+        many = names(getattr(task_warmup, lister)(dict(got[0], n_copies=64, parallel=True)))
+    finally:
+        numba.set_num_threads(numba.config.NUMBA_NUM_THREADS)
+    assert len(one) >= 9 and "w_advance" in one
+    assert many == one
+
+
 def _sleeper(procs: list):
     """A warm-up whose process sleeps a minute (it stands for a compile in progress)."""
     procs.append(subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"]))

@@ -60,9 +60,10 @@ class _Captured(Exception):
 
 def _step_arguments(module, names: tuple, build, trim: tuple):
     """The arguments of the first step-kernel call of the task ``build()`` makes, with the kernels ``names`` of
-    ``module`` (the attributes the task reads) replaced by a stand-in that records them and stops the
-    constructor, and ``trim`` = (name, function): the module's trim function replaced by a stand-in trim; all
-    restored after. None when the constructor ends otherwise."""
+    ``module`` (the attributes the task reads: the step kernel, then its launcher on numba's threads, whose first
+    argument, the copy ranges, is dropped) replaced by a stand-in that records them and stops the constructor, and
+    ``trim`` = (name, function): the module's trim function replaced by a stand-in trim; all restored after. None
+    when the constructor ends otherwise."""
     saved = {n: getattr(module, n) for n in (*names, trim[0])}
     got = {}
 
@@ -70,8 +71,12 @@ def _step_arguments(module, names: tuple, build, trim: tuple):
         got["args"] = args
         raise _Captured
 
-    for n in names:
-        setattr(module, n, stand_in)
+    def launcher_stand_in(bounds, *args):
+        got["args"] = (*args, int(bounds[0, 0]), int(bounds[0, 1]))
+        raise _Captured
+
+    for i, n in enumerate(names):
+        setattr(module, n, stand_in if i == 0 else launcher_stand_in)
     setattr(module, trim[0], trim[1])
     try:
         build()
@@ -104,7 +109,7 @@ def wing_calls(task_kwargs: dict) -> list:
     :func:`stand_in_wing_trim` (``scene_trim`` restored after)."""
     from laddermill_gym.envs import task as wing_task
 
-    args = _step_arguments(wing_task, ("step_observe_serial",),
+    args = _step_arguments(wing_task, ("step_observe_serial", "launch_step_observe"),
                            lambda: wing_task.WingTask(**task_kwargs), ("scene_trim", stand_in_wing_trim))
     return [] if args is None else step_callees(args)
 
@@ -129,7 +134,7 @@ def craft_calls(task_kwargs: dict) -> tuple[list, list, bool]:
         asked.append((args, kwargs))
         return stand_in_craft_trim(*args, **kwargs)
 
-    args = _step_arguments(craft_task, ("craft_step_observe_serial",),
+    args = _step_arguments(craft_task, ("craft_step_observe_serial", "launch_craft_step_observe"),
                            lambda: craft_task.CraftTask(**task_kwargs), ("craft_trim", recording_stand_in))
     calls = [] if args is None else step_callees(args, observe=False)
     trims = (assemble3d, rhs3d, add_body_jacobian, w_advance)  # the W method's loop links the first three
