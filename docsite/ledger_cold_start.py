@@ -122,15 +122,20 @@ COLD_START = Covered(
         ' LLVM optimises and emits it five times over (the loop body, its gufunc, two wrappers, the kernel), 24,000 '
         "instructions each time. Rotorcraft-v0's took 216 s and PumpingKite-v0's 225 s (in a process that had made "
         'the single env first).',
-        "Now the vector envs have no kernel of their own: they call the single env's (compiled ) on contiguous ranges"
-        " of copies from a few Python threads, as many as numba's thread count ( ; the kernel takes the range as its "
-        "last two arguments; only the calling thread's range goes through numba's dispatcher, which types the 21 "
-        'arguments under the GIL in 12-18 us, the others call the compiled entry point it chose for the same argument'
-        ' types, 2-3 us, so that many threads do not queue for the GIL). Making the vector env after the single env '
-        "compiles nothing ( counts numba's compiles), and every copy is the single env's arithmetic: the threaded "
-        "vector env now equals single envs bit for bit ( , ; the prange kernel's last bits depended on what the "
-        'process had compiled before, and those tests allowed 1e-6). TetheredWing-v0, Rotorcraft-v0 and '
-        'PumpingKite-v0 give the same hashes of 400 steps of the single env and 50 of a 64-copy vector env as before.',
+        "Now the vector envs have no kernel of their own: they call the single env's (compiled ) on contiguous "
+        "ranges of copies, as many as numba's thread count ( ; the kernel takes the range as its last two "
+        "arguments). Until 2026-12-04 the ranges ran on a few Python threads (only the calling thread's range "
+        "went through numba's dispatcher, which types the 21 arguments under the GIL in 12-18 us, the others "
+        "called the compiled entry point it chose, 2-3 us); since then numba's pool runs them through a launcher "
+        'beside each step kernel, a prange loop over the ranges that calls the kernel by its address ( ), and the '
+        'Python threads only in a process forked after GNU OpenMP ([benchmarks] has the 16-core figures that led '
+        'there). The launcher is all a threaded vector env compiles after the single env: 7.0 s for '
+        "TetheredWing-v0's and 6.9 s for Rotorcraft-v0's on this 2-core AVX-512 machine (2026-12-04, empty "
+        'cache), LLVM working through the some 500 values the kernel takes, then loaded from the cache ( counts '
+        "numba's compiles). Every copy is the single env's arithmetic: the threaded vector env equals single envs "
+        "bit for bit on either way ( , , ; the former prange kernel's last bits depended on what the process had "
+        'compiled before, and those tests allowed 1e-6). TetheredWing-v0, Rotorcraft-v0 and PumpingKite-v0 give '
+        'the same hashes of 400 steps of the single env and 50 of a 64-copy vector env as before.',
         '(new: times of N copies), caches empty, on the 2-core AVX2 EPYC (load 1-2), the new code then 0a1ac39 (warm-'
         "up on, its default): TetheredWing-v0 2026-12-03 08:26-08:34, Rotorcraft-v0 08:50-08:58 (at d7ed9e0's parent:"
         ' the same kernels):',
