@@ -136,6 +136,11 @@ COLD_START = Covered(
         "bit for bit on either way ( , , ; the former prange kernel's last bits depended on what the process had "
         'compiled before, and those tests allowed 1e-6). TetheredWing-v0, Rotorcraft-v0 and PumpingKite-v0 give '
         'the same hashes of 400 steps of the single env and 50 of a 64-copy vector env as before.',
+        "The warm-ups first missed the launcher: they find the step kernel's arguments by a stand-in for it, "
+        "which the launcher bypassed, so they listed no callees, and the vector env's first step compiled the W "
+        "method's loop itself. , caches empty, on this 2-core AVX-512 machine (2026-12-04, one run each): "
+        'TetheredWing-v0 60.5 s with the launcher and that miss (33.0 s of CPU in the first process), 33.8 s once '
+        'the stand-in covers the launcher too (6.6 s; ), Rotorcraft-v0 32.2 s and 24.3 s; warm 0.91 s and 0.90 s.',
         '(new: times of N copies), caches empty, on the 2-core AVX2 EPYC (load 1-2), the new code then 0a1ac39 (warm-'
         "up on, its default): TetheredWing-v0 2026-12-03 08:26-08:34, Rotorcraft-v0 08:50-08:58 (at d7ed9e0's parent:"
         ' the same kernels):',
