@@ -23,6 +23,10 @@ NUMERICS_TESTS = {
     "rosenbrock_order_test": Long('python -m pytest -m "slow or not slow" -s tests/test_rosenbrock.py -k '
                                   'observed_order_on_the_tethered_wing', "6 s (2026-11-30, nice 15, load 5)",
                                   "numerics.md"),
+    # ROS2's order reduction: the chain's in-plane errors over one period, and Prothero-Robinson's problem
+    "ros2_order_reduction": Long('python -m pytest -m "slow or not slow" -s tests/test_fast_ids.py -k order_one && '
+                                 'python -m pytest -s tests/test_rosenbrock.py -k stiff_coupling', "about 40 s",
+                                 "numerics.md"),
     "alpha_rate_pole_test": Long('python -m pytest -m "slow or not slow" -s tests/test_alpha_rate_limit.py -k '
                                  'names_the_alpha', "26 s", "numerics.md"),
     # work_precision.md: the stress suite's small version on the tethered wing (2 s horizon, 5 bisections) and its

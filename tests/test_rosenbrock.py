@@ -278,3 +278,38 @@ def test_ros2t_keeps_the_amplitude_of_unresolved_oscillations():
     # computing it agree to a few units in the last place of 1 (4.4e-16 with OpenBLAS's Haswell kernels, 2026-12-02)
     np.testing.assert_allclose(stability_function_w(ROS34PW2, 1j * y), r34, rtol=1e-12, atol=1e-14)
     assert abs(r34[2]) < 0.62 and abs(r34[-1]) < 1e-3
+
+
+def _prothero_robinson_errors(tableau, jacobian_with_time_column: bool, lam=-1.0e4):
+    """Errors at t = 1 s of the transformed form on Prothero & Robinson's (1974) stiff test y' = lam (y - sin t) +
+    cos t (exact solution y = sin t) at h = 50 ms halved four times. The kernels' W leaves the right-hand side's time
+    derivative out (a W-method's J may); with ``jacobian_with_time_column`` the problem is autonomised (t a state)
+    and J is its exact Jacobian, time column included."""
+    gamma, al, a, c, m, _ = tableau
+    f = lambda z: np.array([lam * (z[0] - np.sin(z[1])) + np.cos(z[1]), 1.0])  # noqa: E731
+    errs = []
+    for n in (20, 40, 80, 160, 320):
+        h, z = 1.0 / n, np.zeros(2)
+        for _ in range(n):
+            J = np.array([[lam, -lam * np.cos(z[1]) - np.sin(z[1]) if jacobian_with_time_column else 0.0], [0, 0]])
+            W, U = np.eye(2) / (gamma[0] * h) - J, np.zeros((m.size, 2))
+            for i in range(m.size):
+                U[i] = np.linalg.solve(W, f(z + a[i] @ U) + (c[i] @ U) / h)
+            z = z + m @ U
+        errs.append(abs(z[0] - np.sin(z[1])))
+    return np.array(errs)
+
+
+def test_ros2_loses_an_order_on_a_stiff_problem_whose_w_misses_a_stiff_coupling():
+    """Why ROS2's chain errors hardly shrink from 50 to 3 ms (docs/numerics.md): with the stiff coupling left out of
+    J, ROS2 converges at order 1 on Prothero & Robinson's problem (|h lam| 500 to 31), 25 times less accurate at 50 ms
+    than with it, where it has its order 2; ROS34PW2, built for W-matrices (Rang & Angermann 2005), keeps order 2 and
+    errors below 1e-8 either way. Oracle: the closed-form solution."""
+    slope = lambda e: np.log2(e[:-1] / e[1:])  # noqa: E731
+    ros2_w, ros2_j = _prothero_robinson_errors(ROS2, False), _prothero_robinson_errors(ROS2, True)
+    print(f"\nProthero-Robinson, lam = -1e4, h = 50 ms / 2^k: ROS2 without the coupling {ros2_w}, with it {ros2_j}")
+    assert np.all(np.abs(slope(ros2_w) - 1.0) < 0.1) and ros2_w[0] > 1e-2
+    assert np.all(np.abs(slope(ros2_j) - 2.0) < 0.15) and ros2_w[0] > 20 * ros2_j[0]
+    for coupled in (False, True):
+        e = _prothero_robinson_errors(ROS34PW2, coupled)
+        assert np.all(slope(e) > 1.9) and e.max() < 1e-8
