@@ -149,7 +149,8 @@ def held_out_differences(figures: dict, readme: str) -> list[str]:
 #: seed flies the same episode, docs/learned_mill.md): policy -> (env id, the LQR it is set beside, the words before
 #: the LQR's figures in its row).
 SHARED_ROWS = {"ppo_mill": ("laddermill_gym/LadderMill-v1", "lqr", ""),
-               "ppo_chain": ("laddermill_gym/LadderChain-v0", "lqr:lqr_ladder_chain_central", "centralised ")}
+               "ppo_chain": ("laddermill_gym/LadderChain-v0", "lqr:lqr_ladder_chain_central", "centralised "),
+               "ppo_mill_v3": ("laddermill_gym/LadderMill-v3", "lqr", "")}
 SHARED_EPISODES, SHARED_EPISODE_S = 1, 301.0
 
 

@@ -89,10 +89,10 @@ def test_shipped_policy_names():
     from laddermill_gym.studies.commands import UsageError, check_controllers
 
     with pytest.raises(ValueError, match=r"'ppo_nothing': not a shipped policy \(shipped: ppo_chain, ppo_mill, "
-                                         r"ppo_rotorcraft"):
+                                         r"ppo_mill_v3, ppo_rotorcraft"):
         shipped_policy_path("ppo_nothing")
     with pytest.raises(ValueError, match=r"'ppo_nothing': not 'open_loop'.*shipped policy \(ppo_chain, ppo_mill, "
-                                         r"ppo_rotorcraft"):
+                                         r"ppo_mill_v3, ppo_rotorcraft"):
         make_controller("ppo_nothing", TW)
     check_controllers(list(SHIPPED_POLICIES))
     with pytest.raises(UsageError, match=r"'ppo_nothing'.*a shipped policy"):

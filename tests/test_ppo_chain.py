@@ -139,3 +139,15 @@ def test_chain_training_config_names_its_teacher(tmp_path):
         with pytest.raises(ValueError, match=needle) as err:
             load_shared_config(bad)
         assert "bad.yaml" in str(err.value)
+
+
+def test_mill_v3_training_config_names_its_teacher_and_neighbours():
+    """ppo_mill_v3 learns from LadderMill-v3's default LQR design (control/factory.py) with k = 8 neighbours, the
+    smallest band whose projected LQR gain held 300 s with margin (docs: the policy's README)."""
+    from laddermill_gym.control.factory import DEFAULT_LQR_CONFIGS
+    from laddermill_gym.harness.shared_config import load_shared_config
+
+    cfg = load_shared_config("ppo_mill_v3")
+    assert cfg.env_id == "laddermill_gym/LadderMill-v3" and cfg.time_limit_minutes <= 120
+    assert cfg.teacher_config == DEFAULT_LQR_CONFIGS["laddermill_gym/LadderMill-v3"]
+    assert make_controller("ppo_mill_v3", "laddermill_gym/LadderMill-v3").act_dim == 3 * 101  # every slot's surfaces

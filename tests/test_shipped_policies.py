@@ -35,8 +35,12 @@ def test_shipped_files_are_small_and_named_by_their_config(name):
 EXPERT = {"ppo_chain": f"lqr:{CONFIG_DIR / 'agents' / 'lqr_ladder_chain_central.yaml'}"}
 
 
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.slow) if n in ("ppo_mill", "ppo_chain") else n
-                                  for n in sorted(SHIPPED_POLICIES)])  # the 101-wing LQR designs: minutes
+#: the 101-wing policies: their LQR designs take minutes
+SLOW = ("ppo_mill", "ppo_chain", "ppo_mill_v3")
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.slow) if n in SLOW else n
+                                  for n in sorted(SHIPPED_POLICIES)])
 def test_shipped_policy_flies_the_registered_scenario(name):
     import gymnasium as gym
 

@@ -5,7 +5,8 @@ them without training: ``make_controller("ppo_tethered_wing", "laddermill_gym/Te
 Each folder is a trimmed training run folder (``laddermill train <config> --seed <seed>``): ``model.zip`` (the
 SB3 model), ``vecnormalize.pkl`` (its observation statistics), ``config.yaml`` (the training config, which names
 the env), ``algorithm.txt`` and ``README.md`` (the command and seed that reproduce it, and its scores). A shared
-per-wing policy of the mill (``ppo_mill``: ``laddermill train ppo_mill_v1``) has ``shared_policy.yaml`` instead of
+per-wing policy of the mill (``ppo_mill``: ``laddermill train ppo_mill_v1``; ``ppo_mill_v3``: ``laddermill train
+ppo_mill_v3``) has ``shared_policy.yaml`` instead of
 ``vecnormalize.pkl`` (its actor scales its inputs by fixed Bryson scales), its config is ``ppo_mill_v1.yaml``, and
 ``linear_actor.npz`` (its linear actor exported from ``model.zip``) lets it run without torch
 (``control/shared_controller.py``).
@@ -26,6 +27,7 @@ SHIPPED_POLICIES: dict[str, str] = {
     "ppo_rotorcraft": "laddermill_gym/Rotorcraft-v0",
     "ppo_mill": "laddermill_gym/LadderMill-v1",  # a shared per-wing policy (shared_policy.yaml, no vecnormalize.pkl)
     "ppo_chain": "laddermill_gym/LadderChain-v0",  # shared per-wing too (laddermill train ppo_chain_v0)
+    "ppo_mill_v3": "laddermill_gym/LadderMill-v3",  # the newest mill id's (laddermill train ppo_mill_v3)
 }
 
 
