@@ -22,9 +22,14 @@ NUMERICS = Covered(
         'against RK4 at 50/128 ms',  # jacobian_reuse's reference step (an input, printed as 0.05 s / 128)
         # ROS2's order reduction (2026-12-05): the steps and reference of tests/test_fast_ids.py -k order_one, and the
         # orders tests/test_rosenbrock.py -k stiff_coupling asserts (its bounds, not measured figures)
-        "The cause (2026-12-05) is ROS2's order reduction", 'against RK4 at 50/256 ms', 'at 12.5 ms to only',
-        'at 3.125 ms, about order 1, where ROS34PW2 at 3.125 ms', 'ROS2 has order 1 and with it order 2',
-        'Rang & Angermann (2005)', 'keeps order 2 either way',
+        'against RK4 at 50/256 ms', 'at 12.5 ms to only', 'at 3.125 ms, about order 1, where ROS34PW2 at 3.125 ms',
+        'Rang & Angermann (2005)', 'order 1 without it, 2 with it;', 'order 2 either way',
+        # its correction (tests/test_chain_pitch_modes.py): the day, the paper, the steps (50 ms / 1, 4, 16, 64, 256)
+        # and the orders it names; "order 3": ROS34PW2's published order
+        'The cause (corrected later on 2026-12-05;', 'from Verwer et al. (1999) with', 'at 50, 12.5 and 3.125 ms',
+        'A step of 12.5 ms does not resolve', '3.125 ms only partly', 'and its order 2 shows below 1 ms',
+        'over the halvings from 3.125 to 0.78 and 0.195 ms', 'ROS34PW2, of order 3', 'Any step near 50 ms',
+        'which RK4 at 12.5 ms',
         # the option's settings
         "(opt-in: , the wing and rotorcraft envs' ; default 1, the registered ids' bits)",
         'The registered ids keep k = 1.',
@@ -128,6 +133,10 @@ NUMERICS = Covered(
         )),
         Printed('ros2_order_reduction', ('fall from 3.09e-02 m/s (vx), 2.70e-02 rad/s (q) and 92.3 N',
                                          '6.30e-03, 8.04e-03 and 30.1', 'is off by 2.29e-05, 3.45e-05 and 0.387')),
+        Printed('chain_pitch_modes', ('(largest state error 7.25e-02, 2.44e-02 and', '8.00e-03 at 50',
+                                      "against the kernel's 7.22e-02, 3.43e-02 and 8.04e-03)",
+                                      'modes, 111-119 rad/s with damping ratios 0.037-0.043',
+                                      '(h |lambda| = 1.48)', '(error ratios 10.5 and 16.0')),
         Printed('jacobian_reuse', (
             'over 60 s the largest position error', 'was 3.44, 3.60, 3.96, 4.84 m',
         )),

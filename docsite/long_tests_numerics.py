@@ -27,6 +27,9 @@ NUMERICS_TESTS = {
     "ros2_order_reduction": Long('python -m pytest -m "slow or not slow" -s tests/test_fast_ids.py -k order_one && '
                                  'python -m pytest -s tests/test_rosenbrock.py -k stiff_coupling', "about 40 s",
                                  "numerics.md"),
+    # the correction: ROS2 with the dense Jacobian, the chain's fastest modes (tests/test_chain_pitch_modes.py)
+    "chain_pitch_modes": Long('python -m pytest -m "slow or not slow" -s tests/test_chain_pitch_modes.py',
+                              "about 15 s", "numerics.md"),
     "alpha_rate_pole_test": Long('python -m pytest -m "slow or not slow" -s tests/test_alpha_rate_limit.py -k '
                                  'names_the_alpha', "26 s", "numerics.md"),
     # work_precision.md: the stress suite's small version on the tethered wing (2 s horizon, 5 bisections) and its

@@ -141,12 +141,12 @@ def test_ros2s_chain_rewards_converge_slowly_where_ros34pw2s_do():
 
 @pytest.mark.slow
 def test_ros2s_in_plane_error_on_the_chain_shrinks_at_order_one():
-    """The cause of ROS2's slow convergence on the chain: over one control period from the start (the same actions)
-    its in-plane errors (vx, q, the tensions) against RK4 at 50/256 ms shrink at about order 1 from 12.5 to 3.125 ms
-    (measured 2026-12-05: 4.9x and 3.4x for vx and q, 3.1x for the tensions) where ROS34PW2's are 78-275 times smaller
-    at 3.125 ms: a Rosenbrock-W method's order reduction on a stiff problem whose W misses a stiff coupling, which
-    ROS34PW2 is built to avoid (tests/test_rosenbrock.py, Prothero-Robinson: ROS2 order 1 there, 2 with the coupling in
-    J). So a finer ROS2 step buys little on the chain (docs/numerics.md)."""
+    """ROS2's slow convergence on the chain: over one control period from the start (the same actions) its in-plane
+    errors (vx, q, the tensions) against RK4 at 50/256 ms shrink at about order 1 from 12.5 to 3.125 ms (measured
+    2026-12-05: 4.9x and 3.4x for vx and q, 3.1x for the tensions) where ROS34PW2's are 78-275 times smaller at 3.125
+    ms. So a finer ROS2 step buys little on the chain. Why (tests/test_chain_pitch_modes.py): ROS2 with the dense
+    Jacobian does the same; the chain's lightly damped wing pitch modes near 119 rad/s leave ROS2 pre-asymptotic down
+    to about 1 ms (docs/numerics.md)."""
     from laddermill_gym.envs.observation import OBS_INDEX
 
     chain = "laddermill_gym/LadderChain-v0"

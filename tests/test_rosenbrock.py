@@ -301,10 +301,11 @@ def _prothero_robinson_errors(tableau, jacobian_with_time_column: bool, lam=-1.0
 
 
 def test_ros2_loses_an_order_on_a_stiff_problem_whose_w_misses_a_stiff_coupling():
-    """Why ROS2's chain errors hardly shrink from 50 to 3 ms (docs/numerics.md): with the stiff coupling left out of
-    J, ROS2 converges at order 1 on Prothero & Robinson's problem (|h lam| 500 to 31), 25 times less accurate at 50 ms
-    than with it, where it has its order 2; ROS34PW2, built for W-matrices (Rang & Angermann 2005), keeps order 2 and
-    errors below 1e-8 either way. Oracle: the closed-form solution."""
+    """What a stiff time coupling left out of J costs (docs/numerics.md; why the mill's moving end puts its time column
+    into J; not the cause on the fixed chain, whose right-hand side does not depend on time:
+    tests/test_chain_pitch_modes.py): without it ROS2 converges at order 1 on Prothero & Robinson's problem (|h lam|
+    500 to 31), 25 times less accurate at 50 ms than with it, where it has its order 2; ROS34PW2, built for W-matrices
+    (Rang & Angermann 2005), keeps order 2 and errors below 1e-8 either way. Oracle: the closed-form solution."""
     slope = lambda e: np.log2(e[:-1] / e[1:])  # noqa: E731
     ros2_w, ros2_j = _prothero_robinson_errors(ROS2, False), _prothero_robinson_errors(ROS2, True)
     print(f"\nProthero-Robinson, lam = -1e4, h = 50 ms / 2^k: ROS2 without the coupling {ros2_w}, with it {ros2_j}")
