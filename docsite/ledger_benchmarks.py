@@ -201,9 +201,10 @@ BENCHMARKS = Covered(
         ' 3.68 | 3.12, 13.08 | | its body and cable Jacobians | 2.07, 0.67 | 7.28, 1.48 | | its '
         'factorisation, 4 eliminations | 0.15, 0.49 | 0.78, 1.30 | | the observation after it | 1.38 | 5.07 |'
         ' | rest of the kernel | 2.53 | 1.41 | | Python and numpy (actions, rewards, infos) | 0.54 | 0.49 |',
-        "The rest of the kernel is its own work (the wind's kinks, the copy's views) and what the parts, "
-        "timed on one copy's state again and again, do not pay over 512 different copies (caches, branch "
-        'predictors). 400,000 env steps/s on two threads that share the copies perfectly allow 5.00 us of one'
+        "The rest of the kernel was read then as its own work (the wind's kinks, the copy's views) and what the "
+        "parts, timed on one copy's state again and again, do not pay over 512 different copies (caches, branch "
+        "predictors); it was mostly the W step's own cost in the kernel's call (corrected in the next section). "
+        '400,000 env steps/s on two threads that share the copies perfectly allow 5.00 us of one'
         " thread per copy-step, 0.39 of today's; 150,000 allow the rotorcraft 13.33 us, 0.35 of today's. The "
         'four model evaluations of a ROS34PW2 step (one assembly, three right-hand sides) alone cost 4.54 us '
         "of the wing's 5.00 and 16.20 us of the rotorcraft's 13.33: with the Jacobians, the linear algebra, "
@@ -214,6 +215,34 @@ BENCHMARKS = Covered(
         "on most steps) and a right-hand side itself about half as costly. Either moves the registered ids' "
         "bits, on which the gust scorecards and the shipped policies' figures are measured: a new id's work, "
         "not TetheredWing-v0's or Rotorcraft-v0's.",
+        # the W step compiled without its loop (2026-12-05, znver5): the A/B timings, the bench-envs runs, env_step_cost
+        '### The W step compiled without its loop (issue 32 point 2, 2026-12-05)',
+        'The rest of the kernel in the table above was mostly the W step itself. The study timed the step in '
+        'a loop of its own, where numba linked with n = 1 and LLVM compiled the inlined step as straight-line'
+        " code; the env's kernel calls through its address ( ), compiled on its own with the step inside its "
+        "loop over n, and LLVM compiled that step worse. Timed on TetheredWing-v0's 512 copies, one step "
+        'each, one thread (znver5, 2026-12-05): 10.3 us per step through , 6.8 us with linked and n = 1 a '
+        'constant, 10.1 us linked with n a variable, 0.34 us for a call by address of a function that does '
+        'nothing with the same arguments. is now a loop that calls , the step compiled on its own as '
+        'straight-line code, through its address: 7.5 us per step, the same bits (the states of all 512 '
+        "copies; SHA-256 of TetheredWing-v0's, Rotorcraft-v0's and LadderMill-v3's single and vector episodes"
+        ' under seeded actions, before and after). The loop itself compiles in a fraction of a second; '
+        "compiles what did, and the warm-ups name it instead ( ). RK4's loop showed no such effect "
+        "(LadderChain-v0's four steps per period: 785 against 784 us).",
+        ', the code before (a84603c, a worktree) and after alternated twice (2026-12-05 07:16-07:17, load '
+        '1.2-1.3, znver5), steps/s:',
+        '| env, copies | before | after | |---|---|---| | TetheredWing-v0, 64 | 136,989 / 144,346 | 185,820 /'
+        ' 186,021 | | TetheredWing-v0, 512 | 178,154 / 179,376 | **252,359** / 246,330 | | Rotorcraft-v0, 64 '
+        '| 73,605 / 70,605 | 73,956 / 71,576 | | Rotorcraft-v0, 512 | 81,910 / 79,339 | 82,497 / 81,800 |',
+        'TetheredWing-v0 gains 1.39x; the craft, whose step is 20.5 us of heavier physics, and LadderMill-v3 '
+        '(5,035 before, 5,255 after at 8 copies) gain nothing measurable. now times the step through as the '
+        "kernel calls it (2026-12-05 07:14, one thread): TetheredWing-v0's vector step 7.79 us per copy (W "
+        'step 6.90, of which the assembly 0.66, three right-hand sides 2.70, the body Jacobian 1.28, the '
+        'cable Jacobian 0.50; observation 0.58; rest of the kernel 0.20; Python and numpy 0.11), '
+        "Rotorcraft-v0's 24.17 us (W step 20.51; observation 3.08; rest 0.23; Python 0.36). 400,000 and "
+        "150,000 steps/s on two threads need 5.00 and 13.33 us: **not met** (0.64 and 0.55 of today's). The "
+        'conclusion above stands: fewer model evaluations per period and a cheaper right-hand side, a new '
+        "id's work.",
         # LadderMill-v3's three runs (lead, 2026-11-30 19:29 UTC, load 0.9-1.4; as printed; the first run's "cpu" 1.00)
         '3 runs (19:29 UTC, load 0.9-1.4): 2,003 (one core), 3,628, **3,593** (median);',
     ),

@@ -19,18 +19,18 @@ def step_callees(args, observe: bool = True) -> list:
     """The kernels the step-and-observe kernel called with ``args`` calls (through their addresses,
     ``kernels/far_call.py``) or links, as (dispatcher, arguments) pairs (``kernels/rigid/rosenbrock.w_step_calls``,
     ``kernels/rigid/kinds.rigid3d_calls``) with the arguments of copy 0 (``kernels/batch.copy_views``): the
-    assembly first, the fixed-step driver and the W method's loop (each compiled on its own now) last, the
-    observation's tensions (``observe``) before those; empty for a model that is not rigid 3D or a scene that
+    assembly first, the fixed-step driver, the W method's loop and its step (``w_advance_one``, which links the W
+    step's parts; each compiled on its own now) last, the observation's tensions (``observe``) before those; empty for a model that is not rigid 3D or a scene that
     steps with RK4 (its few callees compile in seconds). The wing's warm-ups
     (:func:`~laddermill_gym.envs.task_warmup.compile_wing`, ``compile_wing_tail``) compile them from either end; the
-    W method's loop, which links the W step's parts again, is left to one process: the wing's tail compiles it
+    W method's step, which links the W step's parts again, is left to one process: the wing's tail compiles it
     after its share, the craft's first process after its trim
     (:func:`w_loop_call`)."""
     from laddermill_gym.kernels.batch import row_or_none
     from laddermill_gym.kernels.contract import KWork
     from laddermill_gym.kernels.fixed_steps import advance_breaks, model_with_air
     from laddermill_gym.kernels.rigid.kinds import Rigid3D, rigid3d_calls
-    from laddermill_gym.kernels.rigid.rosenbrock import w_advance, w_step_calls
+    from laddermill_gym.kernels.rigid.rosenbrock import w_advance, w_advance_one, w_step_calls
 
     t, X, U, dt, _, M, kind, vehicle, WB, AB, limits, tableau, _, DX = args[:14]
     if tableau is None or not isinstance(kind, Rigid3D):
@@ -44,7 +44,8 @@ def step_callees(args, observe: bool = True) -> list:
     observed = rigid3d_calls(t0, X[0], U[0], DX[0], Mb, Wb, limits)  # the observation's: the kernel's DX row
     n, breaks = args[4][0], args[12]
     chain = [(advance_breaks, (t0, X[0], U[0], dt, n, Mb, Wb, limits, tableau, breaks)),
-             (w_advance, (t0, X[0], U[0], dt, n, Mb, Wb, limits, tableau))]
+             (w_advance, (t0, X[0], U[0], dt, n, Mb, Wb, limits, tableau)),
+             (w_advance_one, (t0, X[0], U[0], dt, Mb, Wb, limits, tableau))]
     return [kinds["assemble"], *w[:4], kinds["rhs"], *w[4:], kinds["check"],
             *([observed["tensions"]] if observe else []), *chain]
 
@@ -95,12 +96,13 @@ def await_on_disk(calls, limit_s: float) -> bool:
 
 
 def w_loop_call(batch, dx) -> list:
-    """The W method's loop as :func:`step_callees` lists it, a one-element list (dispatcher, arguments), for the
+    """The W method's step (``w_advance_one``, the heavy compile under the loop) as :func:`step_callees` lists it, a
+    one-element list (dispatcher, arguments), for the
     step kernel's arguments from ``batch`` (:class:`~laddermill_gym.sim.batch.BatchSimulator`) and its derivative
     scratch ``dx`` (B, state size); empty where the step has no such loop (RK4, a model that is not rigid 3D). The
     craft's first process compiles it after its trim (``envs/rotorcraft/task.py``), beside its warm-up's compile
     of the step kernel, instead of the warm-up compiling both one after the other."""
-    from laddermill_gym.kernels.rigid.rosenbrock import w_advance
+    from laddermill_gym.kernels.rigid.rosenbrock import w_advance_one
 
     args = batch.kernel_head(batch.settings.dt, np.ones(len(batch.t), dtype=np.int64), dx)
-    return [c for c in step_callees(args, observe=False) if c[0] is w_advance]
+    return [c for c in step_callees(args, observe=False) if c[0] is w_advance_one]

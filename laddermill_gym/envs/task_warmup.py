@@ -126,7 +126,7 @@ def craft_calls(task_kwargs: dict) -> tuple[list, list, bool]:
     from laddermill_gym.envs.rotorcraft.trim import trim_on_disk
     from laddermill_gym.kernels.rigid.body_jacobian import add_body_jacobian
     from laddermill_gym.kernels.rigid.rhs3d import assemble3d, rhs3d
-    from laddermill_gym.kernels.rigid.rosenbrock import w_advance
+    from laddermill_gym.kernels.rigid.rosenbrock import w_advance_one
 
     asked = []
 
@@ -137,7 +137,7 @@ def craft_calls(task_kwargs: dict) -> tuple[list, list, bool]:
     args = _step_arguments(craft_task, ("craft_step_observe_serial", "launch_craft_step_observe"),
                            lambda: craft_task.CraftTask(**task_kwargs), ("craft_trim", recording_stand_in))
     calls = [] if args is None else step_callees(args, observe=False)
-    trims = (assemble3d, rhs3d, add_body_jacobian, w_advance)  # the W method's loop links the first three
+    trims = (assemble3d, rhs3d, add_body_jacobian, w_advance_one)  # the W method's step links the first three
     on_disk = bool(asked) and trim_on_disk(*asked[0][0], **asked[0][1])
     return [c for c in calls if c[0] not in trims], [c for c in calls if c[0] in trims], on_disk
 
@@ -181,13 +181,13 @@ def compile_craft(task_kwargs: dict) -> None:
     cache it compiles none of them, and this one compiles them all without waiting."""
     from laddermill_gym.envs.rotorcraft import task as craft_task
     from laddermill_gym.kernels.rigid.body_jacobian import add_body_jacobian
-    from laddermill_gym.kernels.rigid.rosenbrock import w_advance
+    from laddermill_gym.kernels.rigid.rosenbrock import w_advance_one
 
     own, trims, trim_read = craft_calls(task_kwargs)
     compile_ahead(own)
     if not trim_read:
         await_on_disk(trims[:1], TRIM_WAIT_S)  # the assembly, with the craft's loads
-    compile_ahead([c for c in trims if c[0] not in (add_body_jacobian, w_advance)])  # the step kernel's
+    compile_ahead([c for c in trims if c[0] not in (add_body_jacobian, w_advance_one)])  # the step kernel's
     print(CALLEES_DONE, flush=True)  # the first process compiles the W method's loop (and its load Jacobian) now
     craft_task.craft_trim = stand_in_craft_trim
     _build_and_step(craft_task.CraftTask, task_kwargs)
