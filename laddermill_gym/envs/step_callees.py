@@ -20,8 +20,9 @@ def step_callees(args, observe: bool = True) -> list:
     ``kernels/far_call.py``) or links, as (dispatcher, arguments) pairs (``kernels/rigid/rosenbrock.w_step_calls``,
     ``kernels/rigid/kinds.rigid3d_calls``) with the arguments of copy 0 (``kernels/batch.copy_views``): the
     assembly first, the fixed-step driver, the W method's loop and its step (``w_advance_one``, which links the W
-    step's parts; each compiled on its own now) last, the observation's tensions (``observe``) before those; empty for a model that is not rigid 3D or a scene that
-    steps with RK4 (its few callees compile in seconds). The wing's warm-ups
+    step's parts; each compiled on its own now) last, the observation's tensions (``observe``) before those; empty
+    for a model that is not rigid 3D or a scene that steps with RK4 (its few callees compile in seconds). The wing's
+    warm-ups
     (:func:`~laddermill_gym.envs.task_warmup.compile_wing`, ``compile_wing_tail``) compile them from either end; the
     W method's step, which links the W step's parts again, is left to one process: the wing's tail compiles it
     after its share, the craft's first process after its trim
