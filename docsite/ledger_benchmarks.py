@@ -234,11 +234,13 @@ BENCHMARKS = Covered(
         '| env, copies | before | after | |---|---|---| | TetheredWing-v0, 64 | 136,989 / 144,346 | 185,820 /'
         ' 186,021 | | TetheredWing-v0, 512 | 178,154 / 179,376 | **252,359** / 246,330 | | Rotorcraft-v0, 64 '
         '| 73,605 / 70,605 | 73,956 / 71,576 | | Rotorcraft-v0, 512 | 81,910 / 79,339 | 82,497 / 81,800 |',
-        'TetheredWing-v0 gains 1.39x; the craft, whose step is 20.5 us of heavier physics, and LadderMill-v3 '
-        '(5,035 before, 5,255 after at 8 copies) gain nothing measurable. now times the step through as the '
-        "kernel calls it (2026-12-05 07:14, one thread): TetheredWing-v0's vector step 7.79 us per copy (W "
-        'step 6.90, of which the assembly 0.66, three right-hand sides 2.70, the body Jacobian 1.28, the '
-        'cable Jacobian 0.50; observation 0.58; rest of the kernel 0.20; Python and numpy 0.11), '
+        "The whole quick run after (07:15, load about 1; README's figures): TetheredWing-v0 21,781 / 83,140 /"
+        ' 192,337 / 249,499 steps/s at 1 / 8 / 64 / 512 copies, Rotorcraft-v0 15,866 / 37,896 / 74,368 at 1 /'
+        ' 16 / 64. TetheredWing-v0 gains 1.39x; the craft, whose step is 20.5 us of heavier physics, and '
+        'LadderMill-v3 (5,035 before, 5,255 after at 8 copies) gain nothing measurable. now times the step '
+        "through as the kernel calls it (2026-12-05 07:14, one thread): TetheredWing-v0's vector step 7.79 us"
+        ' per copy (W step 6.90, of which the assembly 0.66, three right-hand sides 2.70, the body Jacobian '
+        '1.28, the cable Jacobian 0.50; observation 0.58; rest of the kernel 0.20; Python and numpy 0.11), '
         "Rotorcraft-v0's 24.17 us (W step 20.51; observation 3.08; rest 0.23; Python 0.36). 400,000 and "
         "150,000 steps/s on two threads need 5.00 and 13.33 us: **not met** (0.64 and 0.55 of today's). The "
         'conclusion above stands: fewer model evaluations per period and a cheaper right-hand side, a new '
