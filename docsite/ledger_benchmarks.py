@@ -245,6 +245,14 @@ BENCHMARKS = Covered(
         "150,000 steps/s on two threads need 5.00 and 13.33 us: **not met** (0.64 and 0.55 of today's). The "
         'conclusion above stands: fewer model evaluations per period and a cheaper right-hand side, a new '
         "id's work.",
+        "Three of the stage's small parts, , and , each called three or four times per step with the model "
+        "and workspace (some 500 values per call), are now inlined into the step (numba's ). (07:40-07:44, "
+        'one run each): the W step 7.09 -> 6.30 us for the wing, 22.12 -> 20.32 us for the craft; inlining '
+        "too made the craft's step 23.94-26.57 us, so it stays linked. Same bits (the hashes above). "
+        'Alternated five times with the code before it (07:45-07:46, load 1.2-1.6, ): TetheredWing-v0 a '
+        'median 245,752 against 231,802 steps/s (241,083-255,528 and 225,242-243,187), Rotorcraft-v0 77,812 '
+        'against 75,178 (75,542-81,923 and 71,528-76,048): 6 % and 3.5 %. Cold starts alike ( , 07:48-07:50: '
+        '16.8 and 13.7 s against 16.6 and 13.6 s).',
         # LadderMill-v3's three runs (lead, 2026-11-30 19:29 UTC, load 0.9-1.4; as printed; the first run's "cpu" 1.00)
         '3 runs (19:29 UTC, load 0.9-1.4): 2,003 (one core), 3,628, **3,593** (median);',
     ),

@@ -188,6 +188,7 @@ def _add_end_pull(W, br, nr, bs, ns, fx, fy, fz):
             W.bv[bs, j] -= W.Ts[0, j] * fx + W.Ts[1, j] * fy + W.Ts[2, j] * fz
 
 
+# not inlined into the W step: inlined, it made Rotorcraft-v0's step 8-20 % slower (2026-12-05)
 @callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def add_stiffness_force(xn, rx, M, W, fac):
     """W.bv += fac (dQ/dq) P rx: the generalised forces of the elements' stiffness K_e (W.ke, from
