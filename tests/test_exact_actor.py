@@ -38,6 +38,28 @@ def test_fixed_order_equals_the_scalar_loop_bit_for_bit():
     assert np.array_equal(got, want)
 
 
+def test_zeros_signed_zeros_and_non_finite_weights_give_the_scalar_loops_bits():
+    """The compiled loop skips a zero input's term only where it cannot change the sum: the oracle's bits with
+    mostly zero inputs (as the shared policies' features are), zero and negative-zero biases and inputs, a zero
+    sum reached by cancellation, and an infinite weight met by a zero input (NaN)."""
+    rng = np.random.default_rng(3)
+    x = rng.normal(size=(40, 30)) * (rng.uniform(size=(40, 30)) < 0.1)
+    x[rng.uniform(size=x.shape) < 0.3] = -0.0
+    x[0, :] = 0.0
+    x[1, :] = -0.0
+    x[2, :2] = (1.0, 1.0)  # with w[:, 0] = -w[:, 1] below: the sum cancels to +0 on the way
+    w = rng.normal(size=(4, 30))
+    w[:, 1] = -w[:, 0]
+    b = np.array([0.0, -0.0, 1.5, -0.0])
+    got = affine_fixed_order(x, w, b)
+    want = scalar_affine(x, w, b)
+    assert np.array_equal(got, want) and np.array_equal(np.signbit(got), np.signbit(want))
+    w[2, 5] = np.inf
+    got, want = affine_fixed_order(x, w, b), scalar_affine(x, w, b)
+    assert np.isnan(got[0, 2]) and np.array_equal(got, want, equal_nan=True)
+    assert np.array_equal(np.signbit(got), np.signbit(want))
+
+
 def test_a_row_gives_the_same_bits_alone_and_in_any_batch():
     rng = np.random.default_rng(11)
     x = rng.normal(size=(512, 19))
