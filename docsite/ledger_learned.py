@@ -37,6 +37,8 @@ LEARNED_MILL = Covered(
          (MV % "length", MV % "dy", MV % "power_kW", MV % "return")),
         (r"\| 6-10 \| [\d.]+-[\d.]+ \| \| ([\d.]+) together \|", ("{gain_locality[far_share]}",))),
     given=(
+        # ppo_mill_v3's section: the issue's words, the training log's held column (every row 1 of 1)
+        "(issue 31 asks for training on the newest mill id)", "held 300 s in every DAgger round and every PPO",
         'Issue 31 point 2 asks for one policy, shared by every wing, trained with one command from a YAML config '
         "in at most two hours on the 2-core machine, that holds for 300 s after the paper's 0.01 rad direction "
         "step on at least 4 of 5 seeds with at least 90 % of the LQR's mean power (LQR on v1:",
@@ -147,6 +149,7 @@ LEARNED_MILL = Covered(
         '(1 min 4 s for both, its design included).', '(33 s).',
     ),
     derived=(
+        "300 s at 100.0 % of the LQR's power",  # ppo_mill_v3's claim: 102794.2 / 102793.1 W = 100.001 %
         "(a node every 5 wings)",  # --n-basis 21 nodes over the chain's 101 wings: 100 / 20 = 5 wings apart
         # read off the checked gain-locality tables
         'Cut to a band of +-k slots, the gain still stabilises the model it was designed on for k >= 4 (k = 3 is '
@@ -163,10 +166,24 @@ LEARNED_MILL = Covered(
         Printed("chain_central_lqr", ('printed 300.0 s, 0.0803 m, 237885.9 W',)),
         Printed("chain_fit_21", ("the projection's relative gain error is 0.2126 and the flight fails:",)),
         Printed("chain_claim", ("| 300.0 | 0.0813 |", '5990.46 | -', '| 300.0 | 0.0803 |', '5997.98 | -')),
+        Printed("mill_v3_claim", ('printed ppo_mill_v3 6025.16 300.0 0.0888 102794.2 - and lqr 6025.10 300.0 0.0888 '
+                                  '102793.1 -',), cpu="znver4"),
         Printed("chain_step_01", ('unlike the mill, the chain is held by both, the shared policy 300 s, max |dy| '
                                   '0.8103 m, 236.273 kW, the LQR 300 s, 0.8052 m, 237.510 kW.',)),
     ),
     history=(
+        History("2026-12-05", "python -m laddermill_gym.harness.shared_fit --env laddermill_gym/LadderMill-v3 --k "
+                "K --episodes 1; NUMBA_NUM_THREADS=1 laddermill train ppo_mill_v3 --seed 0; laddermill evaluate "
+                "(timed)",
+                "ppo_mill_v3's design runs, training run (shipped; 8c40fff) and the evaluation's timings",
+                ('fails at 135.1 s with k = 4 and holds 300 s with k = 6 (max |dy| 0.30 m) and k = 8 (0.13 m); with '
+                 "k = 4, v1's four DAgger rounds ended 26-63 s after the step. The config uses k = 8 and 8 DAgger "
+                 "rounds.",
+                 '(2026-12-05, 12.1 min on one core)', "(102.2-102.6 kW against the rounds' 102.79), so selection kept "
+                 "DAgger's round 8:", 'and 5 episodes on 2026-12-05 printed the same)',
+                 "This Zen 5 machine's own profile printed 6025.14, 102793.7 and 6025.14, 102793.8 (2026-12-05 "
+                 "08:00, 59 s).", '(101 wings, 10,403 features each) takes about 4 ms; before its sum was compiled '
+                 '(2026-12-05 07:54) it took 24 ms, and the same command 2 min 51 s.')),
         History("2026-11-29", "a script on the saved LQR design (harness.gain_locality's band projection; not a "
                 "command)", "the locality study's projections on 21, 26, 51 and 101 nodes (7b57af8)",
                 ('gives a spectral radius of 1.03978 for k = 4 with 21 nodes, 1.00650 with 26, 1.01052 with 51, and '

@@ -72,6 +72,8 @@ LONG = {
                          "about 1 min", "learned_mill.md"),
     "chain_claim": Long(f"laddermill evaluate --env laddermill_gym/LadderChain-v0 --controllers ppo_chain {CENTRAL} "
                         "lqr --episodes 5 --episode-time 300", "about 13 min", "learned_mill.md"),
+    "mill_v3_claim": Long("laddermill evaluate --env laddermill_gym/LadderMill-v3 --controllers ppo_mill_v3 lqr "
+                          "--episodes 1 --episode-time 300", "about 1 min", "learned_mill.md"),
     "chain_step_01": Long("laddermill evaluate --env laddermill_gym/LadderChain-v0 --scenario step_0.1 --controllers "
                           f"ppo_chain {CENTRAL} --episodes 1 --episode-time 300", "about 3 min", "learned_mill.md"),
     # gusts-v1 per env (features.md's scorecard table, wind.md's, controllers.md's shipped policies)
