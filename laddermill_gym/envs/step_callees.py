@@ -21,12 +21,10 @@ def step_callees(args, observe: bool = True) -> list:
     ``kernels/rigid/kinds.rigid3d_calls``) with the arguments of copy 0 (``kernels/batch.copy_views``): the
     assembly first, the fixed-step driver, the W method's loop and its step (``w_advance_one``, which links the W
     step's parts; each compiled on its own now) last, the observation's tensions (``observe``) before those; empty
-    for a model that is not rigid 3D or a scene that steps with RK4 (its few callees compile in seconds). The wing's
-    warm-ups
-    (:func:`~laddermill_gym.envs.task_warmup.compile_wing`, ``compile_wing_tail``) compile them from either end; the
-    W method's step, which links the W step's parts again, is left to one process: the wing's tail compiles it
-    after its share, the craft's first process after its trim
-    (:func:`w_loop_call`)."""
+    for a model that is not rigid 3D or a scene that steps with RK4 (its few callees compile in seconds). The
+    wing's warm-ups (:func:`~laddermill_gym.envs.task_warmup.compile_wing`, ``compile_wing_tail``) compile them
+    from either end; the W method's step, which links the W step's parts again, is left to one process: the wing's
+    tail compiles it after its share, the craft's first process after its trim (:func:`w_loop_call`)."""
     from laddermill_gym.kernels.batch import row_or_none
     from laddermill_gym.kernels.contract import KWork
     from laddermill_gym.kernels.fixed_steps import advance_breaks, model_with_air

@@ -188,6 +188,6 @@ def compile_craft(task_kwargs: dict) -> None:
     if not trim_read:
         await_on_disk(trims[:1], TRIM_WAIT_S)  # the assembly, with the craft's loads
     compile_ahead([c for c in trims if c[0] not in (add_body_jacobian, w_advance_one)])  # the step kernel's
-    print(CALLEES_DONE, flush=True)  # the first process compiles the W method's loop (and its load Jacobian) now
+    print(CALLEES_DONE, flush=True)  # the first process compiles the W method's step (and its load Jacobian) now
     craft_task.craft_trim = stand_in_craft_trim
     _build_and_step(craft_task.CraftTask, task_kwargs)

@@ -111,8 +111,8 @@ def _vel_offset(c, nw):
     return B3_SIZE * nw + N3_SIZE * (c - nw) + N3_VEL
 
 
-# inlined into the W step (numba IR; called 3-4 times per step, each call passed the model and workspace,
-# some 500 values: inlining three such parts cut TetheredWing-v0's step from 7.1 to 6.3 us, 2026-12-05)
+# inlined into the W step (numba IR; called 3-4 times per step): inlining three such parts cut TetheredWing-v0's
+# step from 7.1 to 6.3 us (2026-12-05; a slimmer argument list for add_stiffness_force instead gained nothing)
 @callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def _mass_times(Dm, Um, r, bv, M):
     """bv = M r_v: the block matrix (Dm, Um) times the velocity entries of the state-shaped vector r."""
@@ -145,8 +145,8 @@ def _mass_times(Dm, Um, r, bv, M):
                 bv[p, j] += s
 
 
-# inlined into the W step (numba IR; called 3-4 times per step, each call passed the model and workspace,
-# some 500 values: inlining three such parts cut TetheredWing-v0's step from 7.1 to 6.3 us, 2026-12-05)
+# inlined into the W step (numba IR; called 3-4 times per step): inlining three such parts cut TetheredWing-v0's
+# step from 7.1 to 6.3 us (2026-12-05; a slimmer argument list for add_stiffness_force instead gained nothing)
 @callee_njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False, inline="always")
 def _stage_increment(xn, r, Ui, M, W, gh):
     """U_i from the solved block velocities W.bv: velocities as solved, positions and quaternions
