@@ -101,6 +101,40 @@ def copy_blocks(Ds, Us, Dd, Ud, order, bsz):
                 Ud[c, i, j] = Us[c, i, j]
 
 
+# The rows of the 6 x 6 solves below are held as 6-tuples of floats: values, not memory, so LLVM keeps them in
+# registers and vectorises the row operations, which it did not do for the same loops over the arrays (it cannot tell
+# that D, U and Y do not overlap). Each entry goes through the same operations in the same order as in those loops
+# (the same fused multiply-adds), so the results are the same bits: the chain's factorisation 16.8 -> 9.9 us
+# (issue 32 point 3).
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+def _row(A, c, i):
+    """Row i of block c of A as a 6-tuple."""
+    return A[c, i, 0], A[c, i, 1], A[c, i, 2], A[c, i, 3], A[c, i, 4], A[c, i, 5]
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+def _set_row(A, c, i, r):
+    """Row i of block c of A = the 6-tuple r."""
+    A[c, i, 0] = r[0]
+    A[c, i, 1] = r[1]
+    A[c, i, 2] = r[2]
+    A[c, i, 3] = r[3]
+    A[c, i, 4] = r[4]
+    A[c, i, 5] = r[5]
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+def _less(r, f, y):
+    """The 6-tuple r - f y (entrywise, f a scalar)."""
+    return r[0] - f * y[0], r[1] - f * y[1], r[2] - f * y[2], r[3] - f * y[3], r[4] - f * y[4], r[5] - f * y[5]
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+def _times(r, s):
+    """The 6-tuple s r."""
+    return r[0] * s, r[1] * s, r[2] * s, r[3] * s, r[4] * s, r[5] * s
+
+
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _factor6(D, U, Y, c, p):
     """:func:`eliminate6` without a right-hand side: D[c] into its unit-lower / upper factors in place, Y[c] =
@@ -112,27 +146,33 @@ def _factor6(D, U, Y, c, p):
             D[c, i, k] = f
             for j in range(k + 1, 6):
                 D[c, i, j] -= f * D[c, k, j]
+    d0, d1, d2, d3, d4, d5 = _row(D, c, 0), _row(D, c, 1), _row(D, c, 2), _row(D, c, 3), _row(D, c, 4), _row(D, c, 5)
+    # Y rows: forward substitution with the unit-lower factor, then back substitution with the upper one
+    y0 = _row(U, c, 0)
+    y1 = _less(_row(U, c, 1), d1[0], y0)
+    y2 = _less(_less(_row(U, c, 2), d2[0], y0), d2[1], y1)
+    y3 = _less(_less(_less(_row(U, c, 3), d3[0], y0), d3[1], y1), d3[2], y2)
+    y4 = _less(_less(_less(_less(_row(U, c, 4), d4[0], y0), d4[1], y1), d4[2], y2), d4[3], y3)
+    y5 = _less(_less(_less(_less(_less(_row(U, c, 5), d5[0], y0), d5[1], y1), d5[2], y2), d5[3], y3), d5[4], y4)
+    y5 = _times(y5, 1.0 / d5[5])
+    y4 = _times(_less(y4, d4[5], y5), 1.0 / d4[4])
+    y3 = _times(_less(_less(y3, d3[4], y4), d3[5], y5), 1.0 / d3[3])
+    y2 = _times(_less(_less(_less(y2, d2[3], y3), d2[4], y4), d2[5], y5), 1.0 / d2[2])
+    y1 = _times(_less(_less(_less(_less(y1, d1[2], y2), d1[3], y3), d1[4], y4), d1[5], y5), 1.0 / d1[1])
+    y0 = _times(_less(_less(_less(_less(_less(y0, d0[1], y1), d0[2], y2), d0[3], y3), d0[4], y4), d0[5], y5),
+                1.0 / d0[0])
+    _set_row(Y, c, 0, y0)
+    _set_row(Y, c, 1, y1)
+    _set_row(Y, c, 2, y2)
+    _set_row(Y, c, 3, y3)
+    _set_row(Y, c, 4, y4)
+    _set_row(Y, c, 5, y5)
+    # Schur complement, row by row of D[p]: the sum over k in order 0..5 as before
     for i in range(6):
-        for j in range(6):
-            Y[c, i, j] = U[c, i, j]
-    for i in range(1, 6):
-        for j in range(i):
-            f = D[c, i, j]
-            for q in range(6):
-                Y[c, i, q] -= f * Y[c, j, q]
-    for i in range(5, -1, -1):
-        for j in range(i + 1, 6):
-            f = D[c, i, j]
-            for q in range(6):
-                Y[c, i, q] -= f * Y[c, j, q]
-        inv = 1.0 / D[c, i, i]
-        for q in range(6):
-            Y[c, i, q] *= inv
-    for k in range(6):
-        for i in range(6):
-            f = U[c, k, i]
-            for j in range(6):
-                D[p, i, j] -= f * Y[c, k, j]
+        r = _less(_row(D, p, i), U[c, 0, i], y0)
+        r = _less(_less(_less(_less(_less(r, U[c, 1, i], y1), U[c, 2, i], y2), U[c, 3, i], y3), U[c, 4, i], y4),
+                  U[c, 5, i], y5)
+        _set_row(D, p, i, r)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
@@ -147,10 +187,10 @@ def _solve6(D, U, bv, c, p):
             bv[c, i] -= D[c, i, j] * bv[c, j]
         inv = 1.0 / D[c, i, i]
         bv[c, i] *= inv
+    r = bv[p, 0], bv[p, 1], bv[p, 2], bv[p, 3], bv[p, 4], bv[p, 5]
     for k in range(6):
-        bk = bv[c, k]
-        for i in range(6):
-            bv[p, i] -= U[c, k, i] * bk
+        r = _less(r, bv[c, k], _row(U, c, k))
+    bv[p, 0], bv[p, 1], bv[p, 2], bv[p, 3], bv[p, 4], bv[p, 5] = r
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
