@@ -1,5 +1,6 @@
 """Where one copy's control period goes in the single-craft envs' vector step (issue 32 point 2): ``python -m
-laddermill_gym.studies.benchmarks.env_step_cost laddermill_gym/TetheredWing-v0 laddermill_gym/Rotorcraft-v0``.
+laddermill_gym.studies.benchmarks.env_step_cost laddermill_gym/TetheredWing-v0 laddermill_gym/Rotorcraft-v0``;
+the 101-wing chain's model on one W step: ``... laddermill_gym/LadderChain-v0 --physics-step ros34pw2 --copies 8``.
 
 Each part of the compiled step is timed in a compiled loop over one copy of the env's own batch (its model, wind,
 workspace and a state it reached by flying the trim action), so no Python dispatch enters a part's time (the
@@ -128,25 +129,28 @@ def loops_for(kernel) -> tuple:
 
 
 def part_costs(env_id: str, n_copies: int = 512, periods: int = 40, loops: int = 5000,
-               rounds: int = 5) -> dict[str, float]:
+               rounds: int = 5, physics_step: str | None = None) -> dict[str, float]:
     """CPU seconds of one thread per copy and control period of ``env_id``'s native vector env at ``n_copies``
     copies: each part of :data:`PARTS` per call (copy 0), "kernel" (the env's step kernel over all copies, per copy),
     "observe" (the same kernel observing without a step: the observation and the kernel's per-copy work) and "step"
     (the vector ``step``, per copy); "stages" is the W method's stage count. ``periods`` vector steps per round for
-    the last three, ``loops`` calls per round for the parts. ValueError naming the env for one whose control period
+    the last three, ``loops`` calls per round for the parts; ``physics_step``: the env argument (None: the id's
+    registered step; ``"ros34pw2"`` times a 101-wing env on one W step per period, the model's own cost of a
+    right-hand side, a factorisation and an elimination). ValueError naming the env for one whose control period
     is not one W step."""
     import gymnasium as gym
     import numba
 
     numba.set_num_threads(1)
-    env = gym.make_vec(env_id, num_envs=n_copies, vectorization_mode="vector_entry_point")
+    kwargs = {} if physics_step is None else {"physics_step": physics_step}
+    env = gym.make_vec(env_id, num_envs=n_copies, vectorization_mode="vector_entry_point", **kwargs)
     task = env.unwrapped.task
     b = task.batch
     if b.tableau is None or task.n_substeps != 1:
         env.close()
         raise ValueError(f"{env_id}: {task.n_substeps} {'RK4' if b.tableau is None else 'W'} step(s) per control "
                          "period; this study times the envs whose control period is one W step (TetheredWing-v0, "
-                         "Rotorcraft-v0)")
+                         "Rotorcraft-v0; another id with --physics-step ros34pw2)")
     action = np.zeros((n_copies, task.n_actions))
     env.reset(seed=0)
     kernel, captured, spent = task._kernel, [], [0.0]
@@ -230,12 +234,14 @@ def main(argv=None) -> int:
     p.add_argument("envs", nargs="+", help="env ids whose control period is one W step")
     p.add_argument("--copies", type=int, default=512, help="copies of the native vector env (default 512)")
     p.add_argument("--rounds", type=int, default=5, help="rounds; the least is kept (default 5)")
+    p.add_argument("--physics-step", choices=("ros34pw2", "ros2"),
+                   help="the env argument physics_step (default: the registered step), e.g. ros34pw2 for the chain")
     args = p.parse_args(argv)
     if args.copies < 1 or args.rounds < 1:
         p.error(f"--copies {args.copies}, --rounds {args.rounds}: both must be at least 1")
     for env_id in args.envs:
         try:
-            c = part_costs(env_id, n_copies=args.copies, rounds=args.rounds)
+            c = part_costs(env_id, n_copies=args.copies, rounds=args.rounds, physics_step=args.physics_step)
         except ValueError as exc:
             p.error(str(exc))
         print(table(env_id, c, args.copies, TARGETS.get(env_id)), flush=True)
