@@ -58,6 +58,14 @@ BENCHMARKS = Covered(
         'speed-up over the first count.',
         '### The 101-wing envs on both cores, one W-method step per control period (issue 32 point 3)',
         '### Where a single-craft copy-step goes (issue 32 point 2, 2026-12-03)',
+        '### LadderChain-v1: three RK4 steps per control period, 3,000 steps/s at 8 copies (2026-12-05)',
+        "that divides the 50 ms period within the env's stability margin (0.9 x RK4's estimated stable step",
+        'two steps of 25 ms are past it', 'Over 10 s of the study\'s seeded actions', "so is v0's 12.5 ms)",
+        'against RK4 at 3.125 ms', 'ROS34PW2 at 50 ms', 'over 200 periods of actions of 0.3 amplitude',
+        'holds the rows of its 6 x 6 solves (the coupling blocks Y = D^-1 U,',
+        '(SHA-256 of seeded single and vector episodes',
+        'the code before (2db3288, a worktree with this study file)',
+        '| env, copies | before | after |', 'three runs (12:35 UTC, right after): | env, 8 copies |',
         '### Thread scaling on a 16-core machine (issue 32 point 2, 2026-12-04)',
         "the wing's 12x needs its Python and numpy work per vector step halved as well.",
         '- **Both cores across copies.** A task of 500 states or more (the 101-wing chain, 1313; the mills) steps '
@@ -255,9 +263,29 @@ BENCHMARKS = Covered(
         '16.8 and 13.7 s against 16.6 and 13.6 s).',
         # LadderMill-v3's three runs (lead, 2026-11-30 19:29 UTC, load 0.9-1.4; as printed; the first run's "cpu" 1.00)
         '3 runs (19:29 UTC, load 0.9-1.4): 2,003 (one core), 3,628, **3,593** (median);',
+        # LadderChain-v1's section (2026-12-05, znver5): env_step_cost's parts and bench-envs, before (2db3288) / after
+        'alternated twice ( ; 12:34-12:35 UTC, load 1.1-1.3, znver5): factorisation 15.73 / 15.72 -> 9.94 / 10.32 us, '
+        'three right-hand sides 144.09 / 143.66 -> 123.73 / 123.59 us, the W step 369.20 / 371.32 -> 341.83 / 344.17 '
+        'us.',
+        'the code before and after alternated three times (12:32-12:34 UTC, load 1.1-1.3, znver5; , then ), steps/s:',
+        '| LadderChain-v0, 8 | 2,236 / 2,167 / 2,398 | 2,581 / 2,595 / 2,705 | | LadderMill-v3, 8 | 5,601 / 5,042 / '
+        '5,458 | 5,340 / 5,645 / 5,862 | | TetheredWing-v0, 512 | 249,262 / 259,640 / 246,284 | 278,118 / 200,573 / '
+        '262,129 | | Rotorcraft-v0, 512 | 85,548 / 80,513 / 87,082 | 61,795 / 81,680 / 83,515 |',
+        'The two low "after" figures came with a lower "cpu" (1.77 and 1.74 against 1.91-1.97); five more alternated '
+        'runs of the single-craft envs (12:35-12:36, load 0.9-1.0) give Rotorcraft-v0 a median of 82,536 before and '
+        '82,570 after, TetheredWing-v0 260,610 and 266,158.',
+        '| LadderChain-v0 | 2,668 / 2,703 / 2,380 | 1,441 / 1,429 / 1,237 | 1,298 / 1,349 / 1,155 | | LadderChain-v1 | '
+        '**3,343** / 3,375 / 3,049 | 1,878 / 1,865 / 1,606 | 1,649 / 1,703 / 1,483 |',
+        '**Met on the chain** (median 3,343 steps/s,',
+        'alternated twice (12:37-12:38 UTC, load 0.3-0.8): the right-hand side 46.52 / 46.91 -> 40.23 / 40.11 us, the '
+        'RK4 step 185.98 / 186.40 -> 163.50 / 159.56 us; the tethered wing\'s right-hand side 1.85 / 1.75 -> 1.84 / '
+        '1.74 us.',
     ),
     derived=(
         '(-2.0 %;',  # 111.19 / 113.44 - 1 = -1.98 %
+        # LadderChain-v1's medians: 2,595 / 2,236 = 1.16; 3,343 / 2,668 = 1.25; RK4's estimated stable step at the
+        # chain's equilibrium, the stable_steps group's ladder_chain rk4 (0.0246 s) in ms
+        'The chain gains 16 % (medians)', '1.25x v0 in the same runs)', "at the chain's equilibrium, 24.6 ms:",
         # the single-craft thread-scaling model from the copy-step table's rows (env_step_cost prints it since):
         # 0.54 / 12.86 = 0.0420, 0.49 / 38.05 = 0.0129; 1 / (s + (1 - s) / 16) = 9.82, 13.41; 12x: s <= 1/45 = 2.2 %
         'their share of the step (0.54 / 12.86 = 4.2 % for the wing, 0.49 / 38.05 = 1.3 % for the rotorcraft) bounds '
@@ -275,6 +303,11 @@ BENCHMARKS = Covered(
         Printed('fast_step_rewards', (  # the slow tests' printed figures; -2.0 % = 111.19 / 113.44 - 1
             "the mill's mean power 111.19 kW against 113.44", "largest reward error 0.177, RK4's 0.0065)",
             'a mean reward of 0.5185-0.5216 against 0.5458', '(0.0052, 113.44 kW)',
+        )),
+        Printed('chain_v1_figures', (  # LadderChain-v1's accuracy study and its slow reward test
+            'is 0.4508 m, 0.000125 of the 3612.8 m extent (v0\'s RK4 0.188 m;', '1.158 m). What an agent is given,',
+            'the largest reward error 0.0041 (v0\'s RK4 0.0016) and the mean reward 0.5458 as the reference\'s, where '
+            'one ROS34PW2 step per period gives 0.5216.',
         )),
         Printed('mill_benchmark', (
             '| largest stable RK4 dt (in-plane disturbance, against DP5; eigenvalue estimate) | 0.0177 s (error at '

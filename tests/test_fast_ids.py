@@ -108,10 +108,10 @@ CHAIN_STEPS = {"ros34pw2": dict(physics_step="ros34pw2"), "ros2": dict(physics_s
 
 @pytest.mark.slow
 def test_the_chains_w_steps_at_50_ms_bias_its_rewards():
-    """Why no fast chain id is registered: on LadderChain-v0 (the same 200 periods of actions) every W step once per
-    control period gives a mean reward at least 0.01 below RK4 at 3.125 ms (measured 0.5185-0.5216 against 0.5458),
-    where the registered RK4 at 12.5 ms is within 1e-3 of it. If a W step stops doing so, docs/benchmarks.md and the
-    README are to be updated."""
+    """Why no W-step chain id is registered (LadderChain-v1 registers RK4 at 1/60 s): on LadderChain-v0 (the same 200
+    periods of actions) every W step once per control period gives a mean reward at least 0.01 below RK4 at 3.125
+    ms (measured 0.5185-0.5216 against 0.5458), where the registered RK4 at 12.5 ms is within 1e-3 of it. If a W
+    step stops doing so, docs/benchmarks.md and the README are to be updated."""
     chain = "laddermill_gym/LadderChain-v0"
     _, r_ref, _, _ = rollout(chain, 200, physics_step="rk4", physics_dt=0.003125)
     _, r_rk4, _, _ = rollout(chain, 200)

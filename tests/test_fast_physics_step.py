@@ -187,8 +187,8 @@ def test_physics_step_arguments():
         gym.make(CHAIN, physics_step="dp54")
     # the study's labels (physics_step_accuracy --steps)
     assert step_arguments("registered") == {}
-    assert step_arguments("ros34pw2") == {"physics_step": "ros34pw2", "jacobian_every": 1}
-    assert step_arguments("ros2:4") == {"physics_step": "ros2", "jacobian_every": 4}
+    assert step_arguments("ros34pw2") == {"physics_step": "ros34pw2", "physics_dt": None, "jacobian_every": 1}
+    assert step_arguments("ros2:4") == {"physics_step": "ros2", "physics_dt": None, "jacobian_every": 4}
     for bad in ("ros2:0", "ros2:x", "ros2:"):
         with pytest.raises(ValueError, match="METHOD:K"):
             step_arguments(bad)

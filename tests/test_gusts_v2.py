@@ -44,7 +44,8 @@ def test_v2_loads_with_every_registered_env():
     assert V2.version == 2 and set(V2.envs) == set(ENV_IDS) - {"laddermill_gym/PumpingKite-v1",
                                                                "laddermill_gym/LadderMill-v1",
                                                                "laddermill_gym/LadderMill-v2",
-                                                               "laddermill_gym/LadderMill-v3"}
+                                                               "laddermill_gym/LadderMill-v3",
+                                                               "laddermill_gym/LadderChain-v1"}
     for _, scenarios in V2.envs.values():
         assert all(sc.duration > sc.start for sc in scenarios)
     names = {s.name for s in V2.envs[LM][1]}

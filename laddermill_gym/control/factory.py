@@ -32,6 +32,8 @@ __all__ = ["make_controller", "DEFAULT_LQR_CONFIGS"]
 DEFAULT_LQR_CONFIGS: dict[str, Path] = {
     "laddermill_gym/TetheredWing-v0": CONFIG_DIR / "agents" / "lqr_tethered_wing.yaml",
     "laddermill_gym/LadderChain-v0": CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml",
+    # LadderChain-v0's scene (the ids differ in the physics step only)
+    "laddermill_gym/LadderChain-v1": CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml",
     "laddermill_gym/LadderMill-v0": CONFIG_DIR / "agents" / "lqr_laddermill.yaml",
     "laddermill_gym/LadderMill-v1": CONFIG_DIR / "agents" / "lqr_laddermill_v1.yaml",
     "laddermill_gym/LadderMill-v2": CONFIG_DIR / "agents" / "lqr_laddermill_v2.yaml",

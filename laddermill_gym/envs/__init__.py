@@ -8,6 +8,9 @@ Registered on ``import laddermill_gym``:
   0.01 rad direction step at 1 s);
 * ``laddermill_gym/LadderChain-v0``: the paper's 101-wing chain between two ground points (scene
   ``ladder_chain``, its own RK4 step, 20 Hz control, 120 s episodes), per-wing actions by default;
+* ``laddermill_gym/LadderChain-v1``: LadderChain-v0 stepped by three RK4 steps of 1/60 s per control period instead
+  of four of 12.5 ms (its rewards as close to RK4 at a quarter of v0's step; docs/benchmarks.md),
+  :class:`~laddermill_gym.envs.ladder_chain_v1.LadderChainV1Env`;
 * ``laddermill_gym/LadderMill-v0``: the paper's laddermill, 101 wings on the endless cable moving through the
   ground generator (scene ``laddermill``, 20 Hz control of the tails by slot, 120 s episodes from the periodic
   stationary motion, the 0.01 rad direction step at 1 s), :class:`~laddermill_gym.envs.laddermill.env.LadderMillEnv`;
@@ -96,6 +99,13 @@ ENV_IDS: dict[str, dict] = {
                                            physics_dt=0.05, control_dt=0.05, episode_time=300.0),
     "laddermill_gym/LadderChain-v0": dict(scene="ladder_chain", control_dt=0.05, episode_time=120.0,
                                           groups="per_wing"),
+    # issue 32 point 3: v0 on three RK4 steps per control period, physics_dt 0.05 / 3 s = 1/60 s: the longest RK4
+    # step dividing the 50 ms period within ENV_STEP_MARGIN (0.9) of RK4's estimated stable step at the chain's
+    # equilibrium (24.6 ms; 25 ms is past it, envs/physics_step.py). Over 10 s of seeded actions its largest reward
+    # error against RK4 at 3.125 ms is 0.0041 (v0's 0.0016), its mean reward the reference's; every W step once per
+    # period lowered the mean reward by 4-5 % (docs/benchmarks.md; tests/test_chain_v1.py)
+    "laddermill_gym/LadderChain-v1": dict(scene="ladder_chain", control_dt=0.05, episode_time=120.0,
+                                          groups="per_wing", physics_step="rk4", physics_dt=0.05 / 3),
     "laddermill_gym/Rotorcraft-v0": dict(craft="roberts_flying_model", control_dt=0.05, episode_time=120.0),
     "laddermill_gym/LadderMill-v0": dict(scene="laddermill", control_dt=0.05, episode_time=120.0),
     # issue 30's v1 wing (scene laddermill_v1: periodic in plane at 2 m/s, 152.9 kW) and issue 31 point 3's
@@ -111,8 +121,8 @@ ENV_IDS: dict[str, dict] = {
     # issue 32 point 3: v2 with one ROS2 step per control period: over 10 s of seeded actions its rewards and power
     # are as close to RK4 at a quarter of v2's step as v2's RK4 (largest reward error 0.0052 against 0.0065); the
     # matrix kept 4 periods (faster) biased the power by -2 % (docs/benchmarks.md; tests/test_fast_ids.py) and ended
-    # the mill at 5 m/s on the breaking load in the review's runs of 2026-11-30. No chain id: every W step at 50 ms
-    # lowered the chain's open-loop mean reward by 4-5 %.
+    # the mill at 5 m/s on the breaking load in the review's runs of 2026-11-30. No W-step chain id: every W step at
+    # 50 ms lowered the chain's open-loop mean reward by 4-5 % (LadderChain-v1 registers RK4 at 1/60 s instead).
     "laddermill_gym/LadderMill-v3": dict(scene="laddermill_v2", control_dt=0.05, episode_time=120.0,
                                          authority=0.2, physics_step="ros2"),
     "laddermill_gym/PumpingKite-v0": dict(config="pumping_kite", control_dt=0.05, episode_time=400.0),
@@ -136,6 +146,9 @@ _WING = ("laddermill_gym.envs.wing_env:WingEnv", "laddermill_gym.envs.wing_env:W
 ENTRY_POINTS: dict[str, tuple[str, str, str]] = {
     "laddermill_gym/TetheredWing-v0": _WING,
     "laddermill_gym/LadderChain-v0": _WING,
+    "laddermill_gym/LadderChain-v1": ("laddermill_gym.envs.ladder_chain_v1:LadderChainV1Env",
+                                      "laddermill_gym.envs.ladder_chain_v1:LadderChainV1VectorEnv",
+                                      "laddermill_gym.envs.task:WingTask"),
     "laddermill_gym/Rotorcraft-v0": ("laddermill_gym.envs.rotorcraft.env:RotorcraftEnv",
                                      "laddermill_gym.envs.rotorcraft.env:RotorcraftVectorEnv",
                                      "laddermill_gym.envs.rotorcraft.task:CraftTask"),

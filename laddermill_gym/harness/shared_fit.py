@@ -121,7 +121,8 @@ def main(argv: list[str] | None = None) -> int:
 
     p = Parser(prog="python -m laddermill_gym.harness.shared_fit", description=__doc__.split("\n\n")[0])
     p.add_argument("--env", default="laddermill_gym/LadderMill-v1",
-                   choices=[f"laddermill_gym/LadderMill-v{v}" for v in (1, 2, 3)] + ["laddermill_gym/LadderChain-v0"])
+                   choices=[f"laddermill_gym/LadderMill-v{v}" for v in (1, 2, 3)]
+                   + [f"laddermill_gym/LadderChain-v{v}" for v in (0, 1)])
     p.add_argument("--teacher", help="the LQR config (file or shipped name; default: the env's default design)")
     p.add_argument("--n-basis", type=int, default=101, help="hat functions of the position (101: one per slot)")
     p.add_argument("--k", type=int, default=4, help="neighbours each side")

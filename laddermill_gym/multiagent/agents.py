@@ -47,12 +47,14 @@ LM, LC, PMC = "laddermill_gym/LadderMill-v0", "laddermill_gym/LadderChain-v0", "
 LM1 = "laddermill_gym/LadderMill-v1"  # v0's task and layout with the v1 wing and authority 0.2
 LM2 = "laddermill_gym/LadderMill-v2"  # v0's task and layout with the v2 wing and authority 0.2
 LM3 = "laddermill_gym/LadderMill-v3"  # v2's task and layout with one ROS2 step per control period
+LC1 = "laddermill_gym/LadderChain-v1"  # v0's task and layout with three RK4 steps of 1/60 s per control period
 #: The ids with a per-wing interface and what their agents are.
-AGENT_KINDS: dict[str, str] = {LM: "slot", LM1: "slot", LM2: "slot", LM3: "slot", LC: "wing", PMC: "kite"}
+AGENT_KINDS: dict[str, str] = {LM: "slot", LM1: "slot", LM2: "slot", LM3: "slot", LC: "wing", LC1: "wing",
+                                PMC: "kite"}
 MULTIAGENT_IDS: tuple[str, ...] = tuple(AGENT_KINDS)
 #: The single-agent argument that selects the per-wing actions, and its per-wing value, per id.
 _PER_WING_GROUPS = {LM: "per_slot", LM1: "per_slot", LM2: "per_slot", LM3: "per_slot", LC: "per_wing",
-                    PMC: "per_kite"}
+                    LC1: "per_wing", PMC: "per_kite"}
 #: Bound of the chains' power ratio entry [-] (the mill's comes from its observation bounds: the same 1e3).
 POWER_RATIO_BOUND = 1e3
 #: The mill's station entries an agent sees, in order.

@@ -122,7 +122,8 @@ FAST_101 = {"one-thread": {"parallel": False}, "ros34pw2": {"physics_step": "ros
             "ros2": {"physics_step": "ros2"}, "ros2:4": {"physics_step": "ros2", "jacobian_every": 4}}
 #: the 101-wing envs' options: copy-steps per repeat (about a second of native stepping at 8 copies) and the variants
 _OPTS_101 = {"quick": True, "budget": 5e4, "variants": FAST_101}
-#: the id that registers a W step (LadderMill-v3): its registered step on one thread too
+#: the ids that register a faster step (LadderMill-v3: ROS2, LadderChain-v1: RK4 at 1/60 s): their registered step
+#: on one thread too
 _OPTS_FAST = {"quick": True, "budget": 5e4, "variants": {"one-thread": {"parallel": False}}}
 
 
@@ -131,6 +132,8 @@ ENVS: dict[str, tuple] = {
     "TetheredWing-v0": ("laddermill_gym/TetheredWing-v0", "20 Hz control", (1, 8, 64, 512), {}),
     "LadderChain-v0": ("laddermill_gym/LadderChain-v0", "101 wings, four RK4 steps of 12.5 ms per 20 Hz period", (1, 8),
                        _OPTS_101),
+    "LadderChain-v1": ("laddermill_gym/LadderChain-v1",
+                       "LadderChain-v0 with three RK4 steps of 1/60 s per 20 Hz period", (1, 8), _OPTS_FAST),
     "Rotorcraft-v0": ("laddermill_gym/Rotorcraft-v0", "one ROS34PW2 step of 50 ms per 20 Hz control period",
                       (1, 16, 64), {"budget": 5e4}),
     "LadderMill-v0": ("laddermill_gym/LadderMill-v0", "101 wings on the moving cable, 20 Hz control", (1, 8),
@@ -149,7 +152,7 @@ ENVS: dict[str, tuple] = {
 #: the result keys of the JSON file (as before the options came)
 _KEYS = {"TetheredWing-v0": "tethered_wing", "LadderChain-v0": "ladder_chain", "Rotorcraft-v0": "rotorcraft",
          "LadderMill-v0": "laddermill", "PointMassChain-v0": "pointmass_chain", "LadderMill-v2": "laddermill_v2",
-         "LadderMill-v1": "laddermill_v1", "LadderMill-v3": "laddermill_v3"}
+         "LadderMill-v1": "laddermill_v1", "LadderMill-v3": "laddermill_v3", "LadderChain-v1": "ladder_chain_v1"}
 
 
 def run_env_benchmark(quick: bool = False, json_path: str | None = None, echo=print, envs=None,

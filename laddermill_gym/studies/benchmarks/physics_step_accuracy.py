@@ -34,11 +34,11 @@ from laddermill_gym.sim.simulator import IntegratorSettings
 #: random actions at full amplitude end a median episode at 17.6 s, docs of LadderMill-v2)
 ACTION_NOISE = 0.3
 #: the RK4 steps [s] of the 101-wing envs' scenes (configs/scenes/ladder_chain.yaml: RK4 12.5 ms, laddermill*.yaml:
-#: RK4 10 ms): the registered physics step of every id but LadderMill-v3, which registers ROS2 on v2's scene; the
-#: reference is RK4 at a quarter of it
-REGISTERED_DT = {"laddermill_gym/LadderChain-v0": 0.0125, "laddermill_gym/LadderMill-v0": 0.01,
-                 "laddermill_gym/LadderMill-v1": 0.01, "laddermill_gym/LadderMill-v2": 0.01,
-                 "laddermill_gym/LadderMill-v3": 0.01}
+#: RK4 10 ms): the registered physics step of every id but LadderMill-v3, which registers ROS2 on v2's scene, and
+#: LadderChain-v1, RK4 at 1/60 s on v0's; the reference is RK4 at a quarter of it
+REGISTERED_DT = {"laddermill_gym/LadderChain-v0": 0.0125, "laddermill_gym/LadderChain-v1": 0.0125,
+                 "laddermill_gym/LadderMill-v0": 0.01, "laddermill_gym/LadderMill-v1": 0.01,
+                 "laddermill_gym/LadderMill-v2": 0.01, "laddermill_gym/LadderMill-v3": 0.01}
 
 
 def positions(task) -> np.ndarray:
@@ -75,15 +75,17 @@ def episode(env_id: str, n_periods: int, **kwargs) -> tuple[np.ndarray, float]:
 def step_arguments(label: str) -> dict:
     """The env arguments of a physics-step label: "registered" (none), a ``physics_step`` value ("ros2t", its
     matrix formed every step: ``jacobian_every`` = 1, whatever the id registers), or one with the W-method's
-    iteration matrix kept for k steps ("ros2t:8": ``jacobian_every`` = 8). ValueError naming the label otherwise."""
+    iteration matrix kept for k steps ("ros2t:8": ``jacobian_every`` = 8). A label's step is the method's default
+    whatever the id registers (``physics_dt`` None: one step per control period for a W-method, the scene's step
+    for RK4; LadderChain-v1's "rk4" is LadderChain-v0's step). ValueError naming the label otherwise."""
     if label == "registered":
         return {}
     method, sep, every = label.partition(":")
     if not sep:
-        return {"physics_step": method, "jacobian_every": 1}
+        return {"physics_step": method, "physics_dt": None, "jacobian_every": 1}
     if not every.isdigit() or int(every) < 1:
         raise ValueError(f"physics step {label!r}: write METHOD or METHOD:K with K >= 1 steps per Jacobian")
-    return {"physics_step": method, "jacobian_every": int(every)}
+    return {"physics_step": method, "physics_dt": None, "jacobian_every": int(every)}
 
 
 def check_labels(steps) -> None:
