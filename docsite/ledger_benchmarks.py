@@ -308,6 +308,7 @@ BENCHMARKS = Covered(
             'is 0.4508 m, 0.000125 of the 3612.8 m extent (v0\'s RK4 0.188 m;', '1.158 m). What an agent is given,',
             'the largest reward error 0.0041 (v0\'s RK4 0.0016) and the mean reward 0.5458 as the reference\'s, where '
             'one ROS34PW2 step per period gives 0.5216.',
+            'holds v1 for 120 s with a return of 2399.17, a largest lateral offset of 0.0803 m and 237.9 kW,',
         )),
         Printed('mill_benchmark', (
             '| largest stable RK4 dt (in-plane disturbance, against DP5; eigenvalue estimate) | 0.0177 s (error at '

@@ -203,10 +203,13 @@ LONG = {
         "tests/test_pointmass_env.py -k settled_chain", "tests/test_stable_step.py -k past_its_stable",
         "tests/test_moving_cable_modes.py -k in_plane")), "about 20 s (2026-11-30)",
         "numerics.md, pointmass.md, work_precision.md, moving_cable.md, features.md"),
-    # benchmarks.md's LadderChain-v1 section: its accuracy study (v0's RK4 and ROS34PW2 beside it) and reward test
+    # benchmarks.md's LadderChain-v1 section: its accuracy study (v0's RK4 and ROS34PW2 beside it), reward test, LQR
     "chain_v1_figures": Long("NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.benchmarks.physics_step_accuracy "
                              "laddermill_gym/LadderChain-v1 --time 10 --steps rk4 ros34pw2 && python -m pytest -m slow "
-                             "-s tests/test_chain_v1.py -k rewards", "about 40 s (2026-12-05)", "benchmarks.md"),
+                             "-s tests/test_chain_v1.py -k rewards && laddermill evaluate --env "
+                             "laddermill_gym/LadderChain-v1 --controllers "
+                             "lqr:configs/agents/lqr_ladder_chain_central.yaml --episodes 1 --episode-time 120 "
+                             "--out results/long/chain_v1_lqr", "about 15 s (2026-12-05)", "benchmarks.md"),
     "fast_step_rewards": Long('python -m pytest -m slow -s tests/test_fast_ids.py -k rewards',
                               "about 2 min (2026-11-30)", "benchmarks.md"),
     # --tail-rule scene: the page's run (2026-11-29) flew the scene's elevators at every wind, the then default; today's
