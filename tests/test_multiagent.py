@@ -14,14 +14,14 @@ import pytest
 from laddermill_gym.envs.laddermill.observation import STATION_OBS_INDEX
 from laddermill_gym.envs.observation import OBS_INDEX
 from laddermill_gym.kernels.contract import PKO_OFFSET, PKO_SIZE
-from tests.env_cases import CASES, LC, LM, PMC, case_kwargs, make_single
+from tests.env_cases import CASES, LC, LC1, LM, PMC, case_kwargs, make_single
 
 pettingzoo_test = pytest.importorskip("pettingzoo.test", reason="the multiagent extra (PettingZoo) is not installed")
 from laddermill_gym.multiagent import parallel_env  # noqa: E402  (needs PettingZoo)
 
-IDS = [LM, LC, PMC]
+IDS = [LM, LC, LC1, PMC]
 #: per id: entries per wing block, action entries per agent, shared entries
-SIZES = {LM: (15, 3, 3), LC: (15, 3, 1), PMC: (PKO_SIZE, 2, 1)}
+SIZES = {LM: (15, 3, 3), LC: (15, 3, 1), LC1: (15, 3, 1), PMC: (PKO_SIZE, 2, 1)}
 
 
 def make(env_id: str, k: int = 1, **kw):
@@ -42,7 +42,7 @@ def test_agents_and_spaces(env_id, k):
     env, single = make(env_id, k), make_single(env_id)
     m, m_a, g = SIZES[env_id]
     n = single.task.n_wings
-    kind = {LM: "slot", LC: "wing", PMC: "kite"}[env_id]
+    kind = {LM: "slot", LC: "wing", LC1: "wing", PMC: "kite"}[env_id]
     assert env.possible_agents == [f"{kind}_{i}" for i in range(n)]
     assert single.action_space.shape == (n * m_a,)  # the single env's per-wing action, split over the agents
     for a in env.possible_agents:
@@ -84,7 +84,7 @@ def local_terms(env_id: str, single, obs: np.ndarray, a: np.ndarray) -> dict[str
     out = {"reward_lateral": -rc.lateral_weight * (1.0 - np.exp(-(dy / t.lateral_scale) ** 2))}
     out["reward_rates"] = (np.zeros(t.n_wings) if env_id == PMC else -rc.rate_weight * (1.0 - np.exp(
         -(o[:, OBS_INDEX["p"]] ** 2 + o[:, OBS_INDEX["r"]] ** 2) / rc.rate_scale ** 2)))
-    nominal = np.zeros(a.size) if env_id != LC else t.actions.nominal_action
+    nominal = np.zeros(a.size) if env_id not in (LC, LC1) else t.actions.nominal_action
     out["reward_effort"] = -rc.effort_weight * (1.0 - np.exp(-np.mean(
         (np.clip(a, -1, 1) - nominal.reshape(a.shape)) ** 2, axis=1)))
     return out
