@@ -104,15 +104,18 @@ def copy_blocks(Ds, Us, Dd, Ud, order, bsz):
 # The rows of the 6 x 6 solves below are held as 6-tuples of floats: values, not memory, so LLVM keeps them in
 # registers and vectorises the row operations, which it did not do for the same loops over the arrays (it cannot tell
 # that D, U and Y do not overlap). Each entry goes through the same operations in the same order as in those loops
-# (the same fused multiply-adds), so the results are the same bits: the chain's factorisation 16.8 -> 9.9 us
-# (issue 32 point 3).
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+# (the same fused multiply-adds), so D and the right-hand side are the same bits (Y, which no result reads but
+# through the Schur complement, can differ in the sign of a zero: nsz): the chain's factorisation 15.7 -> 9.9 us
+# (issue 32 point 3). The price is compile time: _factor6 1.2 s against 0.5 s cold (the helpers left to LLVM's
+# inliner: numba's inline="always" took 1.5 s for the same code; a loop over Y's columns on scalars compiled in 0.8 s
+# but factored in 11.9 us against 10.5, LLVM keeping it scalar).
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _row(A, c, i):
     """Row i of block c of A as a 6-tuple."""
     return A[c, i, 0], A[c, i, 1], A[c, i, 2], A[c, i, 3], A[c, i, 4], A[c, i, 5]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _set_row(A, c, i, r):
     """Row i of block c of A = the 6-tuple r."""
     A[c, i, 0] = r[0]
@@ -123,13 +126,13 @@ def _set_row(A, c, i, r):
     A[c, i, 5] = r[5]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _less(r, f, y):
     """The 6-tuple r - f y (entrywise, f a scalar)."""
     return r[0] - f * y[0], r[1] - f * y[1], r[2] - f * y[2], r[3] - f * y[3], r[4] - f * y[4], r[5] - f * y[5]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, inline="always", _nrt=False)
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _times(r, s):
     """The 6-tuple s r."""
     return r[0] * s, r[1] * s, r[2] * s, r[3] * s, r[4] * s, r[5] * s
