@@ -15,6 +15,13 @@ COLD_START = Covered(
         '## TetheredWing-v0 and Rotorcraft-v0: the step kernel compiled beside the trim (issue 32 point 1)',
     ),
     timings=(  # each dated on the page (date or commit, machine, load where recorded)
+        # the tree solve's tuples (2026-12-05 afternoon, znver5): _factor6's compile (a /tmp script's timing of the
+        # function alone, empty cache) and the startup study alternated with 2db3288
+        'compile slower: 1.2 s against 0.5 s. The code before (2db3288) and after alternated three times ( , '
+        '13:14-13:19 UTC, load 1.0-1.8), cold: TetheredWing-v0 14.2 / 15.0 / 14.3 s before, 15.2 / 16.2 / 15.0 s '
+        'after; Rotorcraft-v0 12.3 / 12.9 / 12.6 s, 12.8 / 13.6 / 12.3 s; LadderChain-v0 14.3 / 15.1 / 14.2 s, 15.3 / '
+        '15.6 / 14.6 s.',
+        'for a chain right-hand side 14 % cheaper on every step.',
         '( runs it for these two and LadderMill-v0): make + reset + one step in a fresh process, cold with a new '
         'empty , warm from the cache that run left (median of 3). This 2-core machine was shared with four other '
         'jobs (load average 4-6), so wall seconds are 2-3x the CPU seconds; compare the CPU seconds. On '
