@@ -359,7 +359,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="only the envs' start-up: make + reset + step in fresh processes, cold (empty numba and "
                         "operating-point caches) and warm; with --quick warm only, from the current caches")
     e = _benchmark_parser(sub, "bench-envs", "env steps/s: native batched vector env vs SyncVectorEnv", cmd_bench_envs)
-    e.add_argument("--envs", nargs="+", default=None, help="only these envs, e.g. TetheredWing-v0 (default: all seven)")
+    e.add_argument("--envs", nargs="+", default=None, help="only these envs, e.g. TetheredWing-v0 (default: all)")
     e.add_argument("--copies", nargs="+", type=int, default=None, help="these copy counts for every env named")
     e.add_argument("--threads", nargs="+", type=int, default=None, help="thread scaling at the largest --copies (512)")
     c = sub.add_parser("scenes", help="list the scenes")

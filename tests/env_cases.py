@@ -17,7 +17,7 @@ TW, LC, RC = "laddermill_gym/TetheredWing-v0", "laddermill_gym/LadderChain-v0", 
 LM, PK, PMC = "laddermill_gym/LadderMill-v0", "laddermill_gym/PumpingKite-v0", "laddermill_gym/PointMassChain-v0"
 PK1, LM1 = "laddermill_gym/PumpingKite-v1", "laddermill_gym/LadderMill-v1"
 LM2, LM3 = "laddermill_gym/LadderMill-v2", "laddermill_gym/LadderMill-v3"
-LC1 = "laddermill_gym/LadderChain-v1"
+LC1, TW1 = "laddermill_gym/LadderChain-v1", "laddermill_gym/TetheredWing-v1"
 #: the small mill of tests/test_laddermill_env.py (11 wings, short settling) and alpha / beta ranges that never end it
 MILL = dict(scene="laddermill", scene_options={"n_wings": 11}, settle={"max_time": 100.0}, control_dt=0.05,
             termination={"alpha_range_deg": (-180.0, 180.0), "max_abs_beta_deg": 90.0})
@@ -26,6 +26,9 @@ MILL = dict(scene="laddermill", scene_options={"n_wings": 11}, settle={"max_time
 CASES = {
     TW: (dict(ENV_IDS[TW], episode_time=20.0, disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.05),
                                                             DirectionStep(step=(-0.1, 0.1))]), 0.3, 40),
+    # TetheredWing-v1's registered defaults (v0's with two RK4 steps of 25 ms per period)
+    TW1: (dict(ENV_IDS[TW1], episode_time=20.0, disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.05),
+                                                              DirectionStep(step=(-0.1, 0.1))]), 0.3, 40),
     LC: (dict(ENV_IDS[LC], scene_options={"n_wings": 5}, episode_time=20.0,
               disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.05)]), 0.1, 20),
     # LadderChain-v1's registered defaults (v0's with three RK4 steps of 1/60 s per period) on LC's 5 wings

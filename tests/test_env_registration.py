@@ -16,12 +16,14 @@ import numpy as np
 import pytest
 
 from laddermill_gym.envs import ENV_IDS, merge_arguments, registered_arguments
-from tests.env_cases import IDS, LC, LC1, LM, LM1, LM2, LM3, PK, PK1, PMC, RC, TW, case_kwargs
+from tests.env_cases import IDS, LC, LC1, LM, LM1, LM2, LM3, PK, PK1, PMC, RC, TW, TW1, case_kwargs
 
 #: per id: (argument, the caller's dict, the dict the env must be built with)
 MERGES = {
     TW: ("scene_options", {"overrides": {"wind": {"v0": 10.0}}},
          {"elements_per_piece": 1, "method": "ros34pw2", "overrides": {"wind": {"v0": 10.0}}}),
+    TW1: ("scene_options", {"overrides": {"wind": {"v0": 10.0}}},
+          {"elements_per_piece": 1, "method": "rk4", "overrides": {"wind": {"v0": 10.0}}}),
     PMC: ("scene_options", {"overrides": {"wind": {"v0": 10.0}}},
           {"element_length": 70.0, "method": "implicit", "dt": 0.025, "overrides": {"wind": {"v0": 10.0}}}),
     LC: ("scene_options", {"n_wings": 5, "overrides": {"wind": {"v0": 10.0}}},

@@ -31,6 +31,8 @@ __all__ = ["make_controller", "DEFAULT_LQR_CONFIGS"]
 #: LQR design per registered environment (the design's scene and model must be the environment's)
 DEFAULT_LQR_CONFIGS: dict[str, Path] = {
     "laddermill_gym/TetheredWing-v0": CONFIG_DIR / "agents" / "lqr_tethered_wing.yaml",
+    # TetheredWing-v0's scene (the ids differ in the physics step only)
+    "laddermill_gym/TetheredWing-v1": CONFIG_DIR / "agents" / "lqr_tethered_wing.yaml",
     "laddermill_gym/LadderChain-v0": CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml",
     # LadderChain-v0's scene (the ids differ in the physics step only)
     "laddermill_gym/LadderChain-v1": CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml",

@@ -21,6 +21,8 @@ from typing import Any
 
 import numpy as np
 
+from laddermill_gym.envs import same_task
+
 __all__ = ["SB3Controller"]
 
 
@@ -117,8 +119,9 @@ class SB3Controller:
         return ctrl
 
     def check_env(self, env_id: str) -> None:
-        """Refuse a policy trained on another env id than ``env_id`` (when its run folder names one)."""
-        if self.trained_env is not None and self.trained_env != env_id:
+        """Refuse a policy trained on another env id than ``env_id`` (when its run folder names one), unless the
+        two are the same task on other physics steps (``envs.same_task``: TetheredWing-v0 and v1)."""
+        if self.trained_env is not None and not same_task(self.trained_env, env_id):
             raise ValueError(f"{self.source}: trained on {self.trained_env}, not {env_id}; evaluate it on "
                              f"{self.trained_env} or train one for {env_id}")
 

@@ -32,6 +32,7 @@ import numpy as np
 import yaml
 
 from laddermill_gym.control.exact_actor import affine_fixed_order
+from laddermill_gym.envs import same_task
 from laddermill_gym.envs.observation import OBS_INDEX
 from laddermill_gym.multiagent.agents import AGENT_KINDS, WingAgents, build_task
 
@@ -81,7 +82,7 @@ def build_view(meta: dict, source: Path, env_id: str | None, env_kwargs: dict | 
     """The agents of the env the policy runs on (``env_id``, default the training's, with ``env_kwargs``, default
     the training's); ValueError naming ``source`` for another env or one without a per-wing interface."""
     env = env_id or str(meta["env"])
-    if env != meta["env"]:
+    if not same_task(env, str(meta["env"])):
         raise ValueError(f"{source}: trained on {meta['env']}, not {env}; evaluate it on {meta['env']} or "
                          f"train one for {env}")
     if env not in AGENT_KINDS:
@@ -114,7 +115,7 @@ class SharedController(ABC):
         """Refuse an env id, agent count or local observation size other than the training's (ValueError naming
         the model file and what does not match)."""
         m, v = self.meta, self.view
-        if env_id != m["env"]:
+        if not same_task(env_id, str(m["env"])):
             raise ValueError(f"{self.source}: trained on {m['env']}, not {env_id}; evaluate it on {m['env']} or "
                              f"train one for {env_id}")
         if v.n_agents != int(m["n_agents"]):

@@ -9,6 +9,9 @@ pairs (McNemar's exact test: under "equally robust" each discordant pair goes ei
 
     python -m laddermill_gym.harness.paired_survival --config configs/agents/ppo_tethered_wing_severe.yaml \\
         --set ntm_ib --episodes 200 --seed 5000 --controllers lqr ppo_tethered_wing
+
+``--env laddermill_gym/TetheredWing-v1`` flies the same episodes on another id of the config's task (another physics
+step, ``envs.same_task``).
 """
 
 from __future__ import annotations
@@ -33,12 +36,15 @@ def sign_test(only_first: int, only_second: int) -> float:
     return min(1.0, 2.0 * tail)
 
 
-def paired_survival(config: str, set_name: str, episodes: int, seed: int, controllers: list[str]) -> dict:
+def paired_survival(config: str, set_name: str, episodes: int, seed: int, controllers: list[str],
+                    env_id: str | None = None) -> dict:
     """Survival (bool array per controller, episode i seeded ``seed + i``) of two ``controllers`` (factory specs)
     on ``episodes`` episodes of the validation set ``set_name`` of ``config``, with the pair counts and
-    :func:`sign_test`'s p-value."""
+    :func:`sign_test`'s p-value; on ``env_id`` (None: the config's env; else an id of the same task,
+    ``envs.same_task``, ValueError naming both otherwise)."""
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.rl_config import load_rl_config
+    from laddermill_gym.envs import same_task
     from laddermill_gym.studies.gusts.gust_bench import run_episodes
 
     if len(controllers) != 2:
@@ -47,11 +53,14 @@ def paired_survival(config: str, set_name: str, episodes: int, seed: int, contro
     sets = {} if cfg.validation is None else {s.name: s for s in cfg.validation.sets}
     if set_name not in sets:
         raise ValueError(f"{config}: validation set {set_name!r} not found (sets: {sorted(sets)})")
+    env = cfg.env_id if env_id is None else env_id
+    if not same_task(env, cfg.env_id):
+        raise ValueError(f"env_id = {env!r}: not the task of {config} ({cfg.env_id}) on another physics step")
     kw = cfg.carried_env_kwargs()
     seeds = list(range(seed, seed + episodes))
     alive = {}
     for spec in controllers:
-        rec = run_episodes(make_controller(spec, cfg.env_id, kw), cfg.env_id, kw, seeds,
+        rec = run_episodes(make_controller(spec, env, kw), env, kw, seeds,
                            cfg.validation.episode_time, sets[set_name].disturbances)
         alive[spec] = np.asarray(rec["failure"]) == 0
     a, b = (alive[c] for c in controllers)
@@ -67,8 +76,13 @@ def main(argv: list[str] | None = None) -> None:
     p.add_argument("--episodes", type=int, default=200, help="episodes (fields) [-]")
     p.add_argument("--seed", type=int, default=5000, help="first episode seed (held out from every selection)")
     p.add_argument("--controllers", nargs=2, required=True, help="two controller specs (lqr, ppo_tethered_wing)")
+    p.add_argument("--env", default=None, help="an id of the config's task on another physics step (default: the "
+                   "config's env)")
     a = p.parse_args(argv)
-    r = paired_survival(a.config, a.set, a.episodes, a.seed, a.controllers)
+    try:
+        r = paired_survival(a.config, a.set, a.episodes, a.seed, a.controllers, a.env)
+    except ValueError as err:
+        p.error(str(err))
     first, second = a.controllers
     for c in a.controllers:
         print(f"{c}: survives {int(r['alive'][c].sum())}/{a.episodes}")

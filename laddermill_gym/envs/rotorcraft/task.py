@@ -17,7 +17,7 @@ import numpy as np
 from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.envs import kernel_warmup
 from laddermill_gym.envs.actions import clip_actions
-from laddermill_gym.envs.physics_step import jacobian_settings
+from laddermill_gym.envs.physics_step import env_physics_settings, jacobian_settings
 from laddermill_gym.envs.rotorcraft.observation import OBS_Y, craft_observation_bounds
 from laddermill_gym.envs.rotorcraft.settings import (
     InitialNoise,
@@ -89,7 +89,7 @@ class CraftTask(TaskCore):
     control_dt : float
         Control period [s]; the action is held over it; a whole multiple of the physics step.
     physics_dt : float, optional
-        RK4 step [s] (default: the config's).
+        Physics step [s] (default: the config's; with ``physics_step`` a W-method, the control period).
     episode_time : float
         Episode length [s]; ``truncated`` when it is reached.
     disturbances : sequence of Disturbance or their config dicts
@@ -99,6 +99,10 @@ class CraftTask(TaskCore):
     initial_noise, reward, termination : dict or InitialNoise / RotorcraftRewardConfig / RotorcraftTerminationConfig
     parallel : bool, optional
         Step the copies on numba's thread pool (default: when B >= 32).
+    physics_step : str, optional
+        The integrator (``"ros2"``, ``"ros2t"``, ``"ros34pw2"``, ``"rk4"``; ``envs/physics_step.py``) instead of the
+        config's (None, the default: ROS34PW2 at 50 ms for ``roberts_flying_model``). ``"rk4"`` needs ``physics_dt``:
+        the craft's RK4 is stable below about 5.9 ms (configs/rotorcraft/roberts_flying_model.yaml).
     jacobian_every : int
         Physics steps per iteration matrix of the W step (default 1: every step, the registered bits; k > 1 keeps
         it k steps, ``kernels/rigid/rosenbrock.py`` ``with_jacobian_reuse``: same order, other last bits).
@@ -125,7 +129,8 @@ class CraftTask(TaskCore):
     def __init__(self, n_copies: int = 1, craft: str = DEFAULT_CRAFT, wind_speed: float | None = None,
                  collective: float | None = None, control_dt: float = 0.05, physics_dt: float | None = None,
                  episode_time: float = 120.0, disturbances=None, wind_dt: float = 0.1, initial_noise=None,
-                 reward=None, termination=None, parallel: bool | None = None, jacobian_every: int = 1):
+                 reward=None, termination=None, parallel: bool | None = None, physics_step: str | None = None,
+                 jacobian_every: int = 1):
         task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
         # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py)
         warmup = kernel_warmup.start(WARMUP_TARGET, task_kwargs,
@@ -137,12 +142,17 @@ class CraftTask(TaskCore):
                 wind_speed = positive("wind_speed", wind_speed, "m/s")
             if physics_dt is not None:
                 physics_dt = positive("physics_dt", physics_dt, "s")
+            if physics_step == "rk4" and physics_dt is None:
+                raise ValueError("physics_step = 'rk4' needs physics_dt: the craft's RK4 is stable below about "
+                                 "5.9 ms, not at the config's 50 ms step (configs/rotorcraft/)")
             self.craft, self.x_trim, self.u_trim = craft_trim(str(craft), wind_speed, collective, physics_dt)
             cfg = self.craft.config
-            self.n_substeps = whole_multiple(self.control_dt, cfg.settings.dt, control_dt)
+            # physics_step: another integrator, one step per control period for a W-method (None: the config's)
+            settings = env_physics_settings(cfg.settings, physics_step, physics_dt, self.control_dt)
+            self.n_substeps = whole_multiple(self.control_dt, settings.dt, control_dt)
             # the W step's iteration matrix kept for jacobian_every physics steps (1: every step, the registered bits)
-            self._settings = (cfg.settings if type(jacobian_every) is int and jacobian_every == 1  # True, 1.0: refused
-                              else jacobian_settings(cfg.settings, jacobian_every))
+            self._settings = (settings if type(jacobian_every) is int and jacobian_every == 1  # True, 1.0: refused
+                              else jacobian_settings(settings, jacobian_every))
             self.n_steps_max = int(round(self.episode_time / self.control_dt))
             self._build_batch(B, parallel)
             if isinstance(warmup, kernel_warmup.Warmup) and warmup.wait_for(kernel_warmup.CALLEES_DONE):

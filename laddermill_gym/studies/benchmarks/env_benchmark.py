@@ -130,6 +130,8 @@ _OPTS_FAST = {"quick": True, "budget": 5e4, "variants": {"one-thread": {"paralle
 #: the envs of the benchmark: short name -> (env id, what it is, copy counts, SyncVectorEnv-budget options)
 ENVS: dict[str, tuple] = {
     "TetheredWing-v0": ("laddermill_gym/TetheredWing-v0", "20 Hz control", (1, 8, 64, 512), {}),
+    "TetheredWing-v1": ("laddermill_gym/TetheredWing-v1",
+                        "TetheredWing-v0 with two RK4 steps of 25 ms per 20 Hz period", (1, 8, 64, 512), {}),
     "LadderChain-v0": ("laddermill_gym/LadderChain-v0", "101 wings, four RK4 steps of 12.5 ms per 20 Hz period", (1, 8),
                        _OPTS_101),
     "LadderChain-v1": ("laddermill_gym/LadderChain-v1",
@@ -152,7 +154,8 @@ ENVS: dict[str, tuple] = {
 #: the result keys of the JSON file (as before the options came)
 _KEYS = {"TetheredWing-v0": "tethered_wing", "LadderChain-v0": "ladder_chain", "Rotorcraft-v0": "rotorcraft",
          "LadderMill-v0": "laddermill", "PointMassChain-v0": "pointmass_chain", "LadderMill-v2": "laddermill_v2",
-         "LadderMill-v1": "laddermill_v1", "LadderMill-v3": "laddermill_v3", "LadderChain-v1": "ladder_chain_v1"}
+         "LadderMill-v1": "laddermill_v1", "LadderMill-v3": "laddermill_v3", "LadderChain-v1": "ladder_chain_v1",
+         "TetheredWing-v1": "tethered_wing_v1"}
 
 
 def run_env_benchmark(quick: bool = False, json_path: str | None = None, echo=print, envs=None,
