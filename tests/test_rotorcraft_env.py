@@ -161,11 +161,29 @@ def test_time_limit_truncates():
     ({"initial_noise": {"roll_rate": -1.0}}, "initial_noise.roll_rate = -1.0"),
     ({"disturbances": [{"type": "Nope"}]}, "disturbances[0].type = 'Nope'"),
     ({"render_mode": "movie"}, "render_mode = 'movie'"),
+    ({"physics_step": "euler"}, "physics_step = 'euler'"),
+    ({"physics_step": "rk4"}, "physics_step = 'rk4' needs physics_dt"),
 ])
 def test_bad_arguments_raise_naming_them(kw, words):
     with pytest.raises(ValueError) as err:
         RotorcraftEnv(**short(**kw))
     assert words in str(err.value)
+
+
+def test_physics_step_swaps_the_configs_integrator():
+    """``physics_step`` replaces the config's ROS34PW2 step (one W step per control period, or RK4 at the given
+    step); the trim and spaces stay the config's."""
+    base = RotorcraftEnv(**short())
+    for kw, want in (({"physics_step": "ros2"}, ("ros2", 0.05, 1)),
+                     ({"physics_step": "rk4", "physics_dt": 0.005}, ("rk4", 0.005, 10)),
+                     ({"physics_step": "ros2", "jacobian_every": 4}, ("ros2", 0.05, 1))):
+        env = RotorcraftEnv(**short(**kw))
+        s = env.unwrapped.task._settings
+        assert (s.method, s.dt, env.unwrapped.task.n_substeps) == want
+        assert s.jacobian_every == kw.get("jacobian_every", 1)
+        np.testing.assert_array_equal(env.unwrapped.task.x_trim, base.unwrapped.task.x_trim)
+        env.close()
+    base.close()
 
 
 def test_bad_action_shape_raises():
