@@ -23,7 +23,7 @@ MERGES = {
     TW: ("scene_options", {"overrides": {"wind": {"v0": 10.0}}},
          {"elements_per_piece": 1, "method": "ros34pw2", "overrides": {"wind": {"v0": 10.0}}}),
     TW1: ("scene_options", {"overrides": {"wind": {"v0": 10.0}}},
-          {"elements_per_piece": 1, "method": "rk4", "overrides": {"wind": {"v0": 10.0}}}),
+          {"elements_per_piece": 1, "overrides": {"wind": {"v0": 10.0}}}),
     PMC: ("scene_options", {"overrides": {"wind": {"v0": 10.0}}},
           {"element_length": 70.0, "method": "implicit", "dt": 0.025, "overrides": {"wind": {"v0": 10.0}}}),
     LC: ("scene_options", {"n_wings": 5, "overrides": {"wind": {"v0": 10.0}}},

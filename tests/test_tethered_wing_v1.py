@@ -22,7 +22,7 @@ from laddermill_gym.kernels.contract import B3_POS
 
 V0, V1 = "laddermill_gym/TetheredWing-v0", "laddermill_gym/TetheredWing-v1"
 #: the reference: RK4 at an eighth of v1's step [s]
-REFERENCE = {"scene_options": {"method": "rk4"}, "physics_dt": 0.003125}
+REFERENCE = {"physics_dt": 0.003125}
 
 
 def _make(env_id: str, **kwargs):
@@ -63,8 +63,12 @@ def test_v1_is_v0_on_two_rk4_steps_per_period():
     finally:
         v0.close()
         v1.close()
-    assert {k: v for k, v in ENV_IDS[V1].items() if k not in ("scene_options", "physics_dt")} == \
+    assert {k: v for k, v in ENV_IDS[V1].items() if k not in ("scene_options", "physics_step", "physics_dt")} == \
         {k: v for k, v in ENV_IDS[V0].items() if k not in ("scene_options", "physics_dt")}
+    v0_step = _make(V1, physics_step="ros34pw2", physics_dt=None)  # v1 stepped as v0
+    s = v0_step.task.scene.settings
+    assert (s.method, s.dt, v0_step.task.n_substeps) == ("ros34pw2", 0.05, 1)
+    v0_step.close()
 
 
 def test_v1_rewards_and_positions_follow_a_finer_rk4_where_v0s_step_does_not():
@@ -122,8 +126,7 @@ def test_v1_scorecard_loses_what_the_reference_step_loses():
     suite = load_suite("gusts-v4")
     rows = run_suite(suite, [V1], ["lqr", "ppo_tethered_wing"], progress=False)
     kwargs, scenarios = suite.envs[V1]
-    fine = dataclasses.replace(suite, envs={V1: ({**kwargs, "scene_options": {"method": "rk4"}, "physics_dt": 0.00625},
-                                                 scenarios)})
+    fine = dataclasses.replace(suite, envs={V1: ({**kwargs, "physics_dt": 0.00625}, scenarios)})
     ref = run_suite(fine, [V1], ["lqr", "ppo_tethered_wing"], progress=False)
 
     def lost(rs):

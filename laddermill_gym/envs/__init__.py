@@ -105,9 +105,8 @@ ENV_IDS: dict[str, dict] = {
     # LQR's and the shipped policy's lost episodes are the reference's (v0's step changes them); RK4's estimated
     # stable step at the trim is 0.11 s, and the env steps finer in stronger wind (envs/physics_step.py).
     # About v0's cost: 2 x 4 right-hand sides against ROS34PW2's 4 and two Jacobians (docs/controllers.md)
-    "laddermill_gym/TetheredWing-v1": dict(scene="tethered_wing",
-                                           scene_options={"elements_per_piece": 1, "method": "rk4"},
-                                           physics_dt=0.025, control_dt=0.05, episode_time=300.0),
+    "laddermill_gym/TetheredWing-v1": dict(scene="tethered_wing", scene_options={"elements_per_piece": 1},
+                                           physics_step="rk4", physics_dt=0.025, control_dt=0.05, episode_time=300.0),
     "laddermill_gym/LadderChain-v0": dict(scene="ladder_chain", control_dt=0.05, episode_time=120.0,
                                           groups="per_wing"),
     # issue 32 point 3: v0 on three RK4 steps per control period, physics_dt 0.05 / 3 s = 1/60 s: the longest RK4

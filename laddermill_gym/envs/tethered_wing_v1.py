@@ -1,7 +1,7 @@
 """``laddermill_gym/TetheredWing-v1``: TetheredWing-v0 stepped by two RK4 steps of 25 ms per control period instead of
 one ROS34PW2 step of 50 ms (issue 31 point 4). The same scene, trim, task, observations, actions and rewards as
 ``TetheredWing-v0`` (:class:`~laddermill_gym.envs.task.WingTask`); what differs is registered with the id
-(``envs.ENV_IDS``): ``scene_options={"method": "rk4"}, physics_dt=0.025``. These classes carry the id's own page
+(``envs.ENV_IDS``): ``physics_step="rk4", physics_dt=0.025``. These classes carry the id's own page
 (docstring) and version history."""
 
 from __future__ import annotations
@@ -55,8 +55,8 @@ class TetheredWingV1Env(WingEnv):
     ## Arguments
 
     TetheredWing-v0's (:class:`~laddermill_gym.envs.wing_env.WingEnv`); registered: scene ``tethered_wing``,
-    scene_options ``{"elements_per_piece": 1, "method": "rk4"}``, physics_dt 0.025 s, control_dt 0.05 s,
-    episode_time 300 s. ``scene_options={"method": "ros34pw2"}, physics_dt=0.05`` steps it as TetheredWing-v0.
+    scene_options ``{"elements_per_piece": 1}``, physics_step ``"rk4"``, physics_dt 0.025 s, control_dt 0.05 s,
+    episode_time 300 s. ``physics_step="ros34pw2", physics_dt=None`` steps it as TetheredWing-v0.
 
     ## Version History
 

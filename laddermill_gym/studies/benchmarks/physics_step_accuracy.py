@@ -35,8 +35,11 @@ from laddermill_gym.sim.simulator import IntegratorSettings
 ACTION_NOISE = 0.3
 #: the RK4 steps [s] of the 101-wing envs' scenes (configs/scenes/ladder_chain.yaml: RK4 12.5 ms, laddermill*.yaml:
 #: RK4 10 ms): the registered physics step of every id but LadderMill-v3, which registers ROS2 on v2's scene, and
-#: LadderChain-v1, RK4 at 1/60 s on v0's; the reference is RK4 at a quarter of it
-REGISTERED_DT = {"laddermill_gym/LadderChain-v0": 0.0125, "laddermill_gym/LadderChain-v1": 0.0125,
+#: LadderChain-v1, RK4 at 1/60 s on v0's; the reference is RK4 at a quarter of it. TetheredWing-v1 (RK4 at 25 ms):
+#: 12.5 ms, so its reference is RK4 at 3.125 ms, as the chain's (the wing's RK4 is stable to about 0.11 s at the
+#: trim). Not TetheredWing-v0, whose scene options name its method (ROS34PW2): its step is v1's ``ros34pw2`` label.
+REGISTERED_DT = {"laddermill_gym/TetheredWing-v1": 0.0125,
+                 "laddermill_gym/LadderChain-v0": 0.0125, "laddermill_gym/LadderChain-v1": 0.0125,
                  "laddermill_gym/LadderMill-v0": 0.01, "laddermill_gym/LadderMill-v1": 0.01,
                  "laddermill_gym/LadderMill-v2": 0.01, "laddermill_gym/LadderMill-v3": 0.01}
 
@@ -49,9 +52,10 @@ def positions(task) -> np.ndarray:
     return np.vstack([bodies, nodes])
 
 
-def episode(env_id: str, n_periods: int, **kwargs) -> tuple[np.ndarray, float]:
-    """(positions (periods run + 1, points, 3) [m], CPU time of the steps [s]) of one copy over ``n_periods``
-    control periods of the seeded actions; stops early (shorter array) at the end of the episode."""
+def episode(env_id: str, n_periods: int, **kwargs) -> tuple[np.ndarray, float, np.ndarray]:
+    """(positions (periods run + 1, points, 3) [m], CPU time of the steps [s], rewards (periods run,) [-]) of one
+    copy over ``n_periods`` control periods of the seeded actions; stops early (shorter arrays) at the end of the
+    episode (the last reward, the ending step's, left out)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # LadderMill-v1 'out of date' and the like
         env = gym.make_vec(env_id, num_envs=1, vectorization_mode="vector_entry_point", **kwargs)
@@ -59,17 +63,19 @@ def episode(env_id: str, n_periods: int, **kwargs) -> tuple[np.ndarray, float]:
     a0 = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
     rng = np.random.default_rng(1)
     out = [positions(env.task)]
+    rewards = []
     cpu = 0.0
     for _ in range(n_periods):
         a = np.clip(a0 + ACTION_NOISE * rng.uniform(-1.0, 1.0, a0.shape), -1.0, 1.0).astype(np.float32)
         t0 = time.process_time()
-        _, _, terminated, truncated, _ = env.step(a)
+        _, r, terminated, truncated, _ = env.step(a)
         cpu += time.process_time() - t0
         if terminated.any() or truncated.any():
             break
         out.append(positions(env.task))
+        rewards.append(float(r[0]))
     env.close()
-    return np.array(out), cpu
+    return np.array(out), cpu, np.array(rewards)
 
 
 def step_arguments(label: str) -> dict:
@@ -107,18 +113,23 @@ def compare(env_id: str, episode_time: float, steps=("ros34pw2",), echo=print, *
     point)."""
     check_labels(steps)
     n = int(round(episode_time / 0.05))
-    ref, _ = episode(env_id, n, physics_step="rk4", jacobian_every=1, physics_dt=REGISTERED_DT[env_id] / 4, **kwargs)
+    ref, _, r_ref = episode(env_id, n, physics_step="rk4", jacobian_every=1, physics_dt=REGISTERED_DT[env_id] / 4,
+                            **kwargs)
     extent = float(np.max(np.linalg.norm(ref, axis=2)))
     echo(f"{env_id}: {episode_time:g} s, extent {extent:.1f} m; reference RK4 at {REGISTERED_DT[env_id] / 4:g} s "
-         f"ran {len(ref) - 1} periods")
+         f"ran {len(ref) - 1} periods, mean reward {np.mean(r_ref):.4f}")
     res = {"extent": extent, "periods": n}
     for label in ("registered", *steps):
-        P, cpu = episode(env_id, n, **step_arguments(label), **kwargs)
+        P, cpu, r = episode(env_id, n, **step_arguments(label), **kwargs)
         m = min(len(P), len(ref))
         err = float(np.max(np.linalg.norm(P[:m] - ref[:m], axis=2)))
-        res[label] = {"error_m": err, "share": err / extent, "periods": len(P) - 1, "cpu_s": cpu}
+        k = min(len(r), len(r_ref))
+        r_err = float(np.max(np.abs(r[:k] - r_ref[:k]))) if k else float("nan")
+        res[label] = {"error_m": err, "share": err / extent, "periods": len(P) - 1, "cpu_s": cpu,
+                      "reward_error": r_err, "mean_reward": float(np.mean(r)) if len(r) else float("nan")}
         echo(f"  {label:10s}: largest position error {err:.4g} m = {err / extent:.3g} of the extent over "
-             f"{len(P) - 1} periods; CPU {cpu:.2f} s ({(len(P) - 1) / cpu:,.0f} steps/s, one copy)")
+             f"{len(P) - 1} periods; largest reward error {r_err:.4g}, mean reward {res[label]['mean_reward']:.4f}; "
+             f"CPU {cpu:.2f} s ({(len(P) - 1) / cpu:,.0f} steps/s, one copy)")
     return res
 
 
