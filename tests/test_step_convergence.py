@@ -1,0 +1,36 @@
+"""The scorecard-against-step study (``studies/gusts/step_convergence.py``): its step labels and the comparison of
+lost episodes, on hand-made rows (the oracle: the rows' own survived flags and end times)."""
+
+from __future__ import annotations
+
+import pytest
+
+from laddermill_gym.studies.gusts.step_convergence import _count, _lost_scenarios, lost_episodes, main, parse_step
+
+
+def test_step_labels_are_method_and_step():
+    assert parse_step("rk4:0.025") == {"physics_step": "rk4", "physics_dt": 0.025, "jacobian_every": 1}
+    assert parse_step("ros34pw2:0.05")["physics_step"] == "ros34pw2"
+    for bad in ("rk4", "rk4:", "rk4:-1", "rk4:zero", "rk4:nan"):
+        with pytest.raises(ValueError, match=r"METHOD:DT"):
+            parse_step(bad)
+    with pytest.raises(ValueError, match=r"physics_step = 'euler'"):
+        parse_step("euler:0.01")
+
+
+def test_lost_episodes_and_counts_from_rows():
+    rows = [dict(controller="lqr", scenario="a", seed=0, survived=True, t_end_s=60.0),
+            dict(controller="lqr", scenario="a", seed=1, survived=False, t_end_s=31.25),
+            dict(controller="lqr", scenario="b", seed=0, survived=True, t_end_s=60.0),
+            dict(controller="pi", scenario="a", seed=0, survived=True, t_end_s=60.0),
+            dict(controller="pi", scenario="b", seed=0, survived=False, t_end_s=12.5)]
+    lost = lost_episodes(rows)
+    assert lost == {("lqr", "a", 1): 31.25, ("pi", "b", 0): 12.5}
+    assert _lost_scenarios(lost) == {("lqr", "a"), ("pi", "b")}
+    assert _count(rows, "lqr") == (1, 2) and _count(rows, "pi") == (1, 2)
+
+
+def test_command_line_refuses_a_bad_step_before_running(capsys):
+    with pytest.raises(SystemExit):
+        main(["--steps", "rk4:0.0125", "rk4"])
+    assert "physics step 'rk4': write METHOD:DT" in capsys.readouterr().err
