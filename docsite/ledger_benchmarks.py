@@ -59,6 +59,9 @@ BENCHMARKS = Covered(
         '### The 101-wing envs on both cores, one W-method step per control period (issue 32 point 3)',
         '### Where a single-craft copy-step goes (issue 32 point 2, 2026-12-03)',
         '### LadderChain-v1: three RK4 steps per control period, 3,000 steps/s at 8 copies (2026-12-05)',
+        # the pointer to scorecard_physics_step.md's section (its ledger checks the figures): targets and labels
+        '(2026-12-05): every wing step past 400,000 steps/s changes the scenarios the LQR loses; the rotorcraft passes '
+        "150,000 with ROS2 and its matrix kept 4 steps, its LQR's lost episode ending later.",
         "that divides the 50 ms period within the env's stability margin (0.9 x RK4's estimated stable step",
         'two steps of 25 ms are past it', 'Over 10 s of the study\'s seeded actions', "so is v0's 12.5 ms)",
         'against RK4 at 3.125 ms', 'ROS34PW2 at 50 ms', 'over 200 periods of actions of 0.3 amplitude',

@@ -63,6 +63,7 @@ CONTROLLERS = Covered(
              r"(\d+ / \d+)\)\.",
              tuple(f"{{gusts_v1_tethered_wing[scorecard][{c}]}}" for c in ("ppo_tethered_wing", "lqr", "open_loop")))),
     given=(
+        'on **TetheredWing-v1** (two RK4 steps of 25 ms)',  # the id's registered step
         # the profiles' names and the days each was this project's machine (docsite/host_cpu.py)
         "znver4 names numpy's AVX-512 loops with OpenBLAS's SkylakeX kernels (the AMD EPYC of 2026-11-30 and "
         "2026-12-02 before 07:00), znver3 AVX2 loops with Haswell kernels (the AMD EPYC with AVX2 of 2026-12-01); "

@@ -29,6 +29,8 @@ from docsite.long_tests_strings import STRING_TESTS
 ROOT = Path(__file__).resolve().parent.parent
 WP = "NUMBA_NUM_THREADS=1 python -m laddermill_gym.studies.numerics.work_precision"
 CENTRAL = "lqr:configs/agents/lqr_ladder_chain_central.yaml"
+STEPS = "python -m laddermill_gym.studies.gusts.step_convergence"
+ACCURACY = "python -m laddermill_gym.studies.benchmarks.physics_step_accuracy laddermill_gym/TetheredWing-v1"
 STEEP = " --elevators 1.3 3.35 --elevation 70"  # mill_fast.md: at 3.35 deg the rest layout needs a 70 deg first guess
 
 
@@ -210,6 +212,21 @@ LONG = {
                              "laddermill_gym/LadderChain-v1 --controllers "
                              "lqr:configs/agents/lqr_ladder_chain_central.yaml --episodes 1 --episode-time 120 "
                              "--out results/long/chain_v1_lqr", "about 15 s (2026-12-05)", "benchmarks.md"),
+    # scorecard_physics_step.md: the scorecard against the step (TetheredWing-v1, then the rotorcraft), the wing's
+    # accuracy open and closed loop, and the held-out fields on TetheredWing-v1
+    "scorecard_step": Long(
+        f"{STEPS} --suite gusts-v4 --env laddermill_gym/TetheredWing-v1 --controllers lqr ppo_tethered_wing "
+        "--steps rk4:0.003125 rk4:0.0125 rk4:0.025 rk4:0.05 ros34pw2:0.00625 ros34pw2:0.0125 ros34pw2:0.05 "
+        f"ros2:0.05 && {STEPS} --suite gusts-v1 --env laddermill_gym/Rotorcraft-v0 --controllers lqr ppo_rotorcraft "
+        f"--steps rk4:0.0015625 ros34pw2:0.05 && NUMBA_NUM_THREADS=1 {ACCURACY} --time 10 --steps ros34pw2 ros2 && "
+        f"{ACCURACY} --time 60 --steps ros34pw2 ros2 --controller lqr && python -m "
+        "laddermill_gym.harness.paired_survival --config configs/agents/ppo_tethered_wing_severe.yaml --set ntm_ib "
+        "--episodes 200 --seed 5000 --controllers lqr ppo_tethered_wing --env laddermill_gym/TetheredWing-v1",
+        "about 2 min (2026-12-05)", "scorecard_physics_step.md"),
+    "craft_step_options": Long("python -m laddermill_gym.studies.benchmarks.craft_step_options --quick",
+                               "about 1 min (2026-12-05)", "scorecard_physics_step.md"),
+    "gusts_v4_tethered_wing_v1": _bench("gusts-v4", "TetheredWing-v1", "lqr ppo_tethered_wing",
+                                        "scorecard_physics_step.md", "about 10 s (2026-12-05)"),
     "fast_step_rewards": Long('python -m pytest -m slow -s tests/test_fast_ids.py -k rewards',
                               "about 2 min (2026-11-30)", "benchmarks.md"),
     # --tail-rule scene: the page's run (2026-11-29) flew the scene's elevators at every wind, the then default; today's

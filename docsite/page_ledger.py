@@ -54,6 +54,7 @@ from docsite.ledger_precision import WORK_PRECISION
 from docsite.ledger_pumping import PUMPING
 from docsite.ledger_quasisteady import QUASISTEADY
 from docsite.ledger_reeling import REELING
+from docsite.ledger_scorecard_step import SCORECARD_STEP
 from docsite.ledger_studies import LATERAL
 from docsite.ledger_wind import WIND
 from docsite.ledger_wing import WING_DATA
@@ -75,6 +76,7 @@ LEDGER = {
     "cold_start.md": COLD_START,
     "cold_start_mill.md": COLD_START_MILL,
     "controllers.md": CONTROLLERS,
+    "scorecard_physics_step.md": SCORECARD_STEP,
     "features.md": FEATURES,
     "lateral_stability.md": LATERAL,
     "learned_mill.md": LEARNED_MILL,

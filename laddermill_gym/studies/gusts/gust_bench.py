@@ -29,8 +29,8 @@ from laddermill_gym.studies.commands import Command, UsageError, check_controlle
 from laddermill_gym.studies.gusts.gust_suite import Scenario, Suite, load_suite
 from laddermill_gym.studies.parallel import add_arguments, check_arguments, run_tasks
 
-__all__ = ["run_episodes", "episode_metrics", "episodes_task", "warmup_tasks", "run_suite", "write_outputs",
-           "add_parser", "main"]
+__all__ = ["controller_label", "run_episodes", "episode_metrics", "episodes_task", "warmup_tasks", "run_suite",
+           "write_outputs", "add_parser", "main"]
 
 #: A copy counts as settled when its largest lateral excursion stays below this share of its peak after the
 #: disturbance's start (a 10 % band; chosen: the lateral motion of these systems is lightly damped).
@@ -157,7 +157,9 @@ def episode_metrics(rec: dict, ref_energy: np.ndarray, scenario: Scenario, names
     return rows
 
 
-def _controller_label(spec: str) -> str:
+def controller_label(spec: str) -> str:
+    """The label of a controller spec in the rows: ``lqr:<config stem>``, a run folder's name, a model file's
+    ``folder/stem``, or the spec itself."""
     if spec.startswith("lqr:"):
         return "lqr:" + Path(spec[4:]).stem
     p = Path(spec)
@@ -266,7 +268,7 @@ def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool
     for (env_id, _, spec, s), (i_ref, i_run) in zip(jobs, runs, strict=True):
         rec = results[i_run]
         for row in episode_metrics(rec, results[i_ref]["energy_J"], s, rec["failure_names"]):
-            rows.append({"env": env_id, "controller": _controller_label(spec), **row})
+            rows.append({"env": env_id, "controller": controller_label(spec), **row})
     return rows
 
 

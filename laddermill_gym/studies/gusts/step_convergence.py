@@ -2,7 +2,8 @@
 
 A turbulent gust-bench episode can end or survive by a hair (docs/controllers.md), and an integrator's error moves
 such an episode as the machine's last bits do. This flies a suite's scenarios of one env id with each physics step of
-``--steps`` (``METHOD:DT``: the env's ``physics_step`` and ``physics_dt`` [s]; the first is the reference, so give the
+``--steps`` (``METHOD:DT``: the env's ``physics_step`` and ``physics_dt`` [s], ``METHOD:DT:K`` with the W-method's
+matrix kept K steps, ``jacobian_every``; the first is the reference, so give the
 finest first) and prints, per step and controller, the scenarios survived on every seed and the episodes lost (with
 the time they ended), and against the reference whether the same episodes are lost and how far apart their ends are.
 A step whose scorecard is the reference's within a fraction of a second decides nothing by its own error.
@@ -21,22 +22,29 @@ import argparse
 import dataclasses
 
 from laddermill_gym.envs.physics_step import check_physics_step
+from laddermill_gym.sim.breakpoints import W_METHODS
 
-__all__ = ["parse_step", "lost_episodes", "scorecards", "main"]
+__all__ = ["parse_step", "lost_episodes", "lost_scenarios", "survived_count", "scorecards", "main"]
 
 
 def parse_step(label: str) -> dict:
-    """The env arguments of ``METHOD:DT`` (``rk4:0.025``): ``physics_step`` and ``physics_dt`` [s], ``jacobian_every``
-    1. ValueError naming the label for another form, an unknown method or a step that is not a number > 0."""
-    method, sep, dt = label.partition(":")
+    """The env arguments of ``METHOD:DT`` (``rk4:0.025``) or ``METHOD:DT:K`` (``ros2:0.05:4``): ``physics_step``,
+    ``physics_dt`` [s] and ``jacobian_every`` (K, a W-method's iteration matrix kept K steps; default 1). ValueError
+    naming the label for another form, an unknown method, a step that is not a number > 0 or a K below 1."""
+    method, _, rest = label.partition(":")
+    dt, _, every = rest.partition(":")
     try:
         step = float(dt)
     except ValueError:
         step = -1.0
-    if not sep or not step > 0.0:
-        raise ValueError(f"physics step {label!r}: write METHOD:DT, DT the step in s > 0 (rk4:0.025)")
+    if not step > 0.0 or (every and not (every.isdigit() and int(every) >= 1)):
+        raise ValueError(f"physics step {label!r}: write METHOD:DT or METHOD:DT:K, DT the step in s > 0 and K >= 1 "
+                         "steps per Jacobian (rk4:0.025, ros2:0.05:4)")
     check_physics_step(method)
-    return {"physics_step": method, "physics_dt": step, "jacobian_every": 1}
+    k = int(every) if every else 1
+    if k > 1 and method not in W_METHODS:
+        raise ValueError(f"physics step {label!r}: only a W-method keeps its Jacobian ({', '.join(W_METHODS)})")
+    return {"physics_step": method, "physics_dt": step, "jacobian_every": k}
 
 
 def lost_episodes(rows: list[dict]) -> dict:
@@ -44,12 +52,12 @@ def lost_episodes(rows: list[dict]) -> dict:
     return {(r["controller"], r["scenario"], int(r["seed"])): float(r["t_end_s"]) for r in rows if not r["survived"]}
 
 
-def _lost_scenarios(lost: dict) -> set:
+def lost_scenarios(lost: dict) -> set:
     """{(controller, scenario)} of :func:`lost_episodes`' keys: the scenarios a controller does not survive."""
     return {(c, s) for c, s, _ in lost}
 
 
-def _count(rows: list[dict], controller: str) -> tuple[int, int]:
+def survived_count(rows: list[dict], controller: str) -> tuple[int, int]:
     """(scenarios survived on every seed, scenarios) of one controller's rows."""
     by: dict[str, bool] = {}
     for r in rows:
@@ -63,7 +71,7 @@ def scorecards(suite_name: str, env_id: str, controllers, steps, echo=print) -> 
     "largest_shift_s"}} of the suite's scenarios of ``env_id`` on each physics step of ``steps`` (the first the
     reference), printed as it goes: whether every controller loses the reference's scenarios, whether the same
     episodes end, and the largest difference of the end times of episodes lost on both [s]."""
-    from laddermill_gym.studies.gusts.gust_bench import _controller_label, run_suite
+    from laddermill_gym.studies.gusts.gust_bench import controller_label, run_suite
     from laddermill_gym.studies.gusts.gust_suite import load_suite
 
     step_args = {label: parse_step(label) for label in steps}
@@ -71,7 +79,7 @@ def scorecards(suite_name: str, env_id: str, controllers, steps, echo=print) -> 
     if env_id not in suite.envs:
         raise ValueError(f"env = {env_id!r}: not in suite {suite.name} ({', '.join(sorted(suite.envs))})")
     kwargs, scenarios = suite.envs[env_id]
-    labels = [_controller_label(c) for c in controllers]
+    labels = [controller_label(c) for c in controllers]
     echo(f"{suite.name}, {env_id}: {len(scenarios)} scenarios; reference step {steps[0]}")
     out, ref = {}, None
     for label, args in step_args.items():
@@ -81,8 +89,8 @@ def scorecards(suite_name: str, env_id: str, controllers, steps, echo=print) -> 
         ref = lost if ref is None else ref
         common = set(lost) & set(ref)
         shift = max((abs(lost[k] - ref[k]) for k in common), default=0.0)
-        res = {"rows": rows, "counts": {c: _count(rows, c) for c in labels},
-               "same_scenarios": _lost_scenarios(lost) == _lost_scenarios(ref), "same_lost": set(lost) == set(ref),
+        res = {"rows": rows, "counts": {c: survived_count(rows, c) for c in labels},
+               "same_scenarios": lost_scenarios(lost) == lost_scenarios(ref), "same_lost": set(lost) == set(ref),
                "largest_shift_s": shift}
         out[label] = res
         echo(f"  {label}:")
@@ -105,7 +113,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--suite", default="gusts-v4", help="suite name in configs/benchmarks/ or a YAML path")
     p.add_argument("--env", default="laddermill_gym/TetheredWing-v1", help="one env id of the suite")
     p.add_argument("--controllers", nargs="+", default=["lqr"], help="controller specs (lqr, ppo_tethered_wing)")
-    p.add_argument("--steps", nargs="+", required=True, help="METHOD:DT physics steps, the reference (finest) first")
+    p.add_argument("--steps", nargs="+", required=True,
+                   help="METHOD:DT or METHOD:DT:K physics steps, the reference (finest) first")
     a = p.parse_args(argv)
     try:
         for label in a.steps:
