@@ -43,3 +43,46 @@ def test_compiled_and_cached_kernels_give_the_same_bits(tmp_path):
     a, b = np.load(tmp_path / "compiled.npy"), np.load(tmp_path / "cached.npy")
     assert a.shape == b.shape and len(a) > 20
     np.testing.assert_array_equal(a, b)
+
+
+_WING = textwrap.dedent("""
+    import sys
+    import warnings
+    import gymnasium as gym
+    import numpy as np
+    import laddermill_gym
+    warnings.simplefilter("ignore")
+    env = gym.make("laddermill_gym/TetheredWing-v0")
+    obs, _ = env.reset(seed=5)
+    rng = np.random.default_rng(2)
+    out = [obs]
+    for _ in range(200):
+        obs, _, term, trunc, _ = env.step((0.3 * rng.uniform(-1, 1, env.action_space.shape)).astype(np.float32))
+        out.append(obs)
+        if term or trunc:
+            break
+    np.save(sys.argv[1], np.array(out))
+""")
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="known (2026-12-05): the step kernel compiled beside in-process callees (kernel "
+                   "warm-up off) lets LLVM inline them and fuses other multiply-adds than the one compiled against "
+                   "callees loaded from numba's cache (the warm-up's path); docs/numerics.md, 'Bits and machines'")
+def test_warmup_on_and_off_give_the_same_bits(tmp_path):
+    """TetheredWing-v0 rolled out in two fresh processes, each with an empty numba cache and no start cache: one with
+    the kernel warm-up (the default: the step kernel compiled in a second process against callees it loads from the
+    cache), one with ``LADDERMILL_KERNEL_WARMUP=off`` (everything compiled in this process). The brief asks for the same
+    bits whatever the cache's state; today they part (strict xfail: this test fails once they agree, so remove the
+    mark then)."""
+    script = tmp_path / "wing.py"
+    script.write_text(_WING)
+    for name, switch in (("on", "on"), ("off", "off")):
+        env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / f"cache_{name}"), "PYTHONDONTWRITEBYTECODE": "1",
+               "LADDERMILL_KERNEL_WARMUP": switch, "LADDERMILL_CACHE_DIR": "off"}
+        proc = subprocess.run([sys.executable, str(script), str(tmp_path / f"{name}.npy")], env=env,
+                              capture_output=True, text=True, timeout=900)
+        assert proc.returncode == 0, proc.stderr[-4000:]
+    a, b = np.load(tmp_path / "on.npy"), np.load(tmp_path / "off.npy")
+    assert a.shape == b.shape and len(a) > 100
+    np.testing.assert_array_equal(a, b)
