@@ -31,16 +31,27 @@ _SCRIPT = textwrap.dedent("""
 """)
 
 
-@pytest.mark.slow
-def test_compiled_and_cached_kernels_give_the_same_bits(tmp_path):
+def _rollouts(tmp_path, source: str, runs: dict) -> dict:
+    """{name: the observations (steps + 1, obs_dim) the script ``source`` saved} of one fresh process per entry of
+    ``runs`` (name -> the environment variables it adds), in order; each process must succeed."""
     script = tmp_path / "roll.py"
-    script.write_text(_SCRIPT)
-    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "cache"), "PYTHONDONTWRITEBYTECODE": "1"}
-    for name in ("compiled", "cached"):  # the first fills the empty cache, the second loads from it
+    script.write_text(source)
+    out = {}
+    for name, extra in runs.items():
+        env = {**os.environ, "PYTHONDONTWRITEBYTECODE": "1", **extra}
         proc = subprocess.run([sys.executable, str(script), str(tmp_path / f"{name}.npy")], env=env,
                               capture_output=True, text=True, timeout=900)
         assert proc.returncode == 0, proc.stderr[-4000:]
-    a, b = np.load(tmp_path / "compiled.npy"), np.load(tmp_path / "cached.npy")
+        out[name] = np.load(tmp_path / f"{name}.npy")
+    return out
+
+
+@pytest.mark.slow
+def test_compiled_and_cached_kernels_give_the_same_bits(tmp_path):
+    cache = {"NUMBA_CACHE_DIR": str(tmp_path / "cache")}
+    # the first fills the empty cache, the second loads from it
+    r = _rollouts(tmp_path, _SCRIPT, {"compiled": cache, "cached": cache})
+    a, b = r["compiled"], r["cached"]
     assert a.shape == b.shape and len(a) > 20
     np.testing.assert_array_equal(a, b)
 
@@ -75,14 +86,8 @@ def test_warmup_on_and_off_give_the_same_bits(tmp_path):
     cache), one with ``LADDERMILL_KERNEL_WARMUP=off`` (everything compiled in this process). The brief asks for the same
     bits whatever the cache's state; today they part (strict xfail: this test fails once they agree, so remove the
     mark then)."""
-    script = tmp_path / "wing.py"
-    script.write_text(_WING)
-    for name, switch in (("on", "on"), ("off", "off")):
-        env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / f"cache_{name}"), "PYTHONDONTWRITEBYTECODE": "1",
-               "LADDERMILL_KERNEL_WARMUP": switch, "LADDERMILL_CACHE_DIR": "off"}
-        proc = subprocess.run([sys.executable, str(script), str(tmp_path / f"{name}.npy")], env=env,
-                              capture_output=True, text=True, timeout=900)
-        assert proc.returncode == 0, proc.stderr[-4000:]
-    a, b = np.load(tmp_path / "on.npy"), np.load(tmp_path / "off.npy")
+    r = _rollouts(tmp_path, _WING, {name: {"NUMBA_CACHE_DIR": str(tmp_path / f"cache_{name}"), "LADDERMILL_CACHE_DIR":
+                                          "off", "LADDERMILL_KERNEL_WARMUP": name} for name in ("on", "off")})
+    a, b = r["on"], r["off"]
     assert a.shape == b.shape and len(a) > 100
     np.testing.assert_array_equal(a, b)
