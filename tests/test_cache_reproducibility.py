@@ -77,9 +77,8 @@ _WING = textwrap.dedent("""
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="known (2026-12-05): the step kernel compiled beside in-process callees (kernel "
-                   "warm-up off) lets LLVM inline them and fuses other multiply-adds than the one compiled against "
-                   "callees loaded from numba's cache (the warm-up's path); docs/numerics.md, 'Bits and machines'")
+@pytest.mark.xfail(strict=True, reason="known (2026-12-05), cause not found: the kernel warm-up on and off compile the "
+                   "W step to other machine code (docs/numerics.md, 'Bits and machines')")
 def test_warmup_on_and_off_give_the_same_bits(tmp_path):
     """TetheredWing-v0 rolled out in two fresh processes, each with an empty numba cache and no start cache: one with
     the kernel warm-up (the default: the step kernel compiled in a second process against callees it loads from the
