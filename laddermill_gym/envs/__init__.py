@@ -7,8 +7,8 @@ Registered on ``import laddermill_gym``:
   element, one linearly implicit ROS34PW2 step of 0.05 s per 20 Hz control period, 300 s episodes, the paper's
   0.01 rad direction step at 1 s);
 * ``laddermill_gym/TetheredWing-v1``: TetheredWing-v0 stepped by two RK4 steps of 25 ms per control period instead
-  of one ROS34PW2 step of 50 ms (its rewards within 3e-4 of RK4 at 3.125 ms, v0's 0.056; docs/controllers.md),
-  :class:`~laddermill_gym.envs.tethered_wing_v1.TetheredWingV1Env`;
+  of one ROS34PW2 step of 50 ms (its rewards within 3e-4 of RK4 at 3.125 ms, v0's 0.056;
+  docs/scorecard_physics_step.md), :class:`~laddermill_gym.envs.tethered_wing_v1.TetheredWingV1Env`;
 * ``laddermill_gym/LadderChain-v0``: the paper's 101-wing chain between two ground points (scene
   ``ladder_chain``, its own RK4 step, 20 Hz control, 120 s episodes), per-wing actions by default;
 * ``laddermill_gym/LadderChain-v1``: LadderChain-v0 stepped by three RK4 steps of 1/60 s per control period instead
@@ -104,7 +104,7 @@ ENV_IDS: dict[str, dict] = {
     # reward error against RK4 at 3.125 ms is 0.00027 (v0's ROS34PW2 at 50 ms: 0.056), and on the gust suite the
     # LQR's and the shipped policy's lost episodes are the reference's (v0's step changes them); RK4's estimated
     # stable step at the trim is 0.11 s, and the env steps finer in stronger wind (envs/physics_step.py).
-    # About v0's cost: 2 x 4 right-hand sides against ROS34PW2's 4 and two Jacobians (docs/controllers.md)
+    # About v0's cost: 2 x 4 right-hand sides against ROS34PW2's 4 and two Jacobians (docs/scorecard_physics_step.md)
     "laddermill_gym/TetheredWing-v1": dict(scene="tethered_wing", scene_options={"elements_per_piece": 1},
                                            physics_step="rk4", physics_dt=0.025, control_dt=0.05, episode_time=300.0),
     "laddermill_gym/LadderChain-v0": dict(scene="ladder_chain", control_dt=0.05, episode_time=120.0,

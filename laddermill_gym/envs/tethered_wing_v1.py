@@ -20,14 +20,14 @@ class TetheredWingV1Env(WingEnv):
     Ockels & Schwab 1999; the 0.01 rad wind-direction step at t = 1 s), stepped by two RK4 steps of 25 ms per 50 ms
     control period where v0 takes one linearly implicit ROS34PW2 step of 50 ms. Why: v0's step damps and shifts the
     wing's fast pitch and heave response, and in turbulence that decides knife-edge episodes. Judged against RK4
-    at 3.125 ms (docs/controllers.md, "TetheredWing-v1"; 2026-12-05): over 10 s of seeded actions of 0.3
+    at 3.125 ms (docs/scorecard_physics_step.md; 2026-12-05): over 10 s of seeded actions of 0.3
     amplitude the largest reward error is 0.00027 (v0's 0.056) and the largest position error 0.06 mm (v0's 10 mm);
     on gusts-v4's TetheredWing scenarios the LQR and the shipped ``ppo_tethered_wing`` lose the same episodes as
     on the reference, within 0.15 s, where v0's step changes which the LQR loses. The cost per control period is
-    v0's (about 280,000 env steps/s at 512 copies on two threads against v0's 265,000; ``laddermill bench-envs
-    --envs TetheredWing-v0 TetheredWing-v1 --copies 512``). Stronger wind shortens RK4's stable step: the env
-    checks it in the strongest wind of its disturbances and steps finer where needed, with a warning
-    (``envs/physics_step.py``).
+    v0's (a median of 279,017 env steps/s at 512 copies on two threads against v0's 261,537 in the same runs;
+    ``laddermill bench-envs --quick --envs TetheredWing-v0 TetheredWing-v1 --copies 512``). Stronger wind shortens
+    RK4's stable step: the env checks it in the strongest wind of its disturbances and steps finer where needed, with
+    a warning (``envs/physics_step.py``).
 
     ## Action Space
 
