@@ -60,7 +60,7 @@ def affine_fixed_order(x: np.ndarray, weight: np.ndarray, bias: np.ndarray) -> n
 # a signed zero, which leaves a non-zero sum as it is: such a term is skipped unless the sum is zero (where the sign
 # of the result depends on it) or a weight is not finite (inf * 0 is NaN), so the bits are the column-by-column
 # sum's (tests/test_exact_actor.py: the scalar loop as the oracle).
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, _nrt=True, fastmath=False, error_model="python")
 def _affine_in_order(x, w, b, finite_w, out):
     n_rows, n_cols = x.shape
     n_out = w.shape[0]

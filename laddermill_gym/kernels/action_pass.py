@@ -11,7 +11,7 @@ fastmath (a fused multiply-add would change last bits), so the controls are bit 
 from numba import njit
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def clip_count(a, out, n_clipped):
     """out (B, n) float64 = ``a`` (B, n) clipped to [-1, 1], n_clipped (B,) the entries with |a| > 1 per row.
     Returns -1, or the flat index of the first non-finite entry (out is then incomplete)."""
@@ -30,7 +30,7 @@ def clip_count(a, out, n_clipped):
     return -1
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def grouped_controls(a, group_of, mid, half, lo, hi, sel, controls, last_action):
     """For every copy b with sel[b]: controls[b, 3 k + j] = clip(mid[k, j] + a[b, 3 g(k) + j] half[k, j], lo[k, j],
     hi[k, j]) for each wing k of group g(k) = group_of[k] and control j, and last_action[b] = a[b] (a already
@@ -50,7 +50,7 @@ def grouped_controls(a, group_of, mid, half, lo, hi, sel, controls, last_action)
             last_action[b, i] = a[b, i]
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def affine_controls(a, mid, half, sel, controls, last_action):
     """For every copy b with sel[b]: controls[b] = mid + a[b] half (no clip: a within [-1, 1] keeps the controls
     within [mid - half, mid + half]) and last_action[b] = a[b]. Copies outside ``sel`` are untouched."""

@@ -4,14 +4,15 @@ parallel over copies.
 Every copy shares the scene's packed model except its wind modulation (speed factor and direction offset
 series, so each copy can see its own gust) and owns one slice of a batched workspace. The per-copy work is
 the same compiled ``kernels/fixed_steps.advance_breaks`` a single simulator uses, so a batch copy and a single run
-agree bit for bit.
+agree bit for bit. The env step kernels step a copy with :func:`advance_copy` (``fixed_steps.advance_breaks_for``:
+the RK4 driver compiled with the kernels' fastmath flags).
 """
 
 from numba import njit, prange, types
 from numba.extending import overload
 
 from laddermill_gym.kernels.contract import OK, KModel, KWork
-from laddermill_gym.kernels.fixed_steps import advance_breaks, model_with_air
+from laddermill_gym.kernels.fixed_steps import advance_breaks, advance_breaks_for, model_with_air
 
 
 def detach_markers(M: KModel) -> tuple[KModel, object, object]:
@@ -69,14 +70,14 @@ def copy_views(b, M, kind, vehicle, WB, AB):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def advance_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks):
-    """Advance copy b by nsteps[b] fixed steps of dt [s] (:func:`~laddermill_gym.kernels.fixed_steps.advance_breaks`;
-    0: none) from its time t[b] [s], as the step-and-observe kernels do before observing it. Returns (whether the
+    """Advance copy b by nsteps[b] fixed steps of dt [s] (``kernels/fixed_steps.advance_breaks_for``; 0: none) from
+    its time t[b] [s], as the step-and-observe kernels do before observing it. Returns (whether the
     copy runs: False for nsteps[b] < 0, status, steps done, its model, its workspace: :func:`copy_views`)."""
     Mb, Wb = copy_views(b, M, kind, vehicle, WB, AB)
     n = nsteps[b]
     st, dn = OK, 0
     if n > 0:
-        st, dn, _, _ = advance_breaks(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau, breaks)
+        st, dn, _, _ = advance_breaks_for(t[b], X[b], U[b], dt, n, Mb, Wb, limits, tableau, breaks)
     return n >= 0, st, dn, Mb, Wb
 
 
@@ -84,7 +85,7 @@ def advance_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, table
 # a worker thread of the parallel loop that asked while this thread held the GIL would wait for ever. advance_breaks
 # itself stays linked: called through its address from the env step kernels, it changed 3 of 800 rewards of a
 # 40-copy TetheredWing-v0 by 7e-15 to 1e-10 (cause not found; issue 32 point 1).
-@njit(cache=True, error_model="numpy", parallel=True, nogil=True)
+@njit(cache=True, error_model="numpy", parallel=True, nogil=True, _nrt=True, fastmath=False)
 def fixed_batch(t, X, U, dt, n, M, kind, vehicle, WB, AB, active, limits, tableau, breaks, status, done):
     """Advance the states X (B, n_state) in place by n fixed steps of size dt with controls U (B, n_controls): RK4
     (``tableau`` None) or a Rosenbrock-W method (its tableau, ``kernels/rigid/rosenbrock.py``), stepping onto the

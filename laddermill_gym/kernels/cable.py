@@ -11,7 +11,7 @@ SAG_TOL = 1e-13
 SAG_MAX_ITER = 60
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def tension_plain(EA, DA, l0, eps, eps_dot):
     """Tension-only Hookean truss with Voigt damping [N]: zero when slack or when pushing."""
     if eps <= 0.0:
@@ -20,7 +20,7 @@ def tension_plain(EA, DA, l0, eps, eps_dot):
     return max(0.0, s)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def tension_sag(EA, DA, l0, eps, eps_dot, eps_p):
     """Sag-corrected tension [N]: the positive root of s^3 - s0 s^2 - EA eps_p/l0 (eqs. 19-22).
 
@@ -44,7 +44,7 @@ def tension_sag(EA, DA, l0, eps, eps_dot, eps_p):
     return s
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def lateral_elongation(length, ex, ey, ez, prx, pry, prz, psx, psy, psz):
     """eps_p of eq. (18) [m N^2]: loads per length at r and s (global), made lateral to e."""
     dr = prx * ex + pry * ey + prz * ez
@@ -57,7 +57,7 @@ def lateral_elongation(length, ex, ey, ez, prx, pry, prz, psx, psy, psz):
     return length * length * length * ((aa + bb) / 90.0 + 7.0 / 360.0 * ab)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def aero_load(ux, uy, uz, ex, ey, ez, rho, d, cn0, ct0):
     """Aerodynamic load per unit length [N/m] on a cable with tangent e in relative air velocity u.
 

@@ -65,10 +65,10 @@ def _advance_fixed(t, x, u, dt, n, M, W, limits, tableau):
     return lambda t, x, u, dt, n, M, W, limits, tableau: _W_FAR(t, x, u, dt, n, M, W, limits, tableau)
 
 
-# The kink helpers below are inlined into advance_breaks (numba IR; about 4 s of a cold start as six compiles of
-# their own, issue 32). They have no fastmath, like advance_breaks, whose numpy error model only differs from theirs
-# on a division by zero, which their guards (dt_w > 0, the step dt > 0) exclude; called from Python
-# (sim/breakpoints.py) they compile on their own as before.
+# The kink helpers below are inlined into the drivers (numba IR; about 4 s of a cold start as six compiles of
+# their own, issue 32) and compiled with each driver's options (advance_breaks: no fastmath flags); the drivers'
+# numpy error model only differs from theirs on a division by zero, which their guards (dt_w > 0, the step dt > 0)
+# exclude; called from Python (sim/breakpoints.py) they compile on their own as before.
 @njit(cache=True, inline="always")
 def is_kink(k, ms, md):
     """Whether the slope of the modulation (speed factor ms or direction offset md, (n_mod,)) changes at grid
@@ -159,8 +159,8 @@ def next_kink(tc, te, t, dt, j, tmod, ms, md):
 # step; 7-8 % of TetheredWing-v0's vector step went to the atomic counts, issue 32). The copy's gust grid rows come
 # through kernels/batch.copy_air_model, not a function that returns a view (numba forbids that without its runtime:
 # c2dd978, 45dd361 had reverted this for it).
-@njit(cache=True, error_model="numpy", _nrt=False)
-def advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks):
+@njit(cache=True, inline="always")
+def _advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks):
     """n fixed steps of dt [s] from t [s] (RK4 when ``tableau`` is None, else that Rosenbrock-W method) stepping
     onto the modulation's kinks as ``breaks`` says (``BREAKS_*``). Runs of plain steps go through
     :func:`advance_fixed` in one call, a step that needs its segments' lines piece by piece (one call site of the
@@ -206,3 +206,46 @@ def advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks):
             if st != OK:
                 return st, done, tc, dt
     return OK, done, tc, dt
+
+
+# Two compiles of the driver above, their options stated (tests/test_kernel_flags.py): numba gives a function that
+# leaves fastmath unset the options of the compile in progress when it is first needed, and keeps that compile. So
+# before 2026-12-06 the driver's code depended on which process compiled what first (docs/numerics.md, "Bits and
+# machines"). Each keeps the options its callers gave it in a default cold start (the envs' figures were made so):
+# none for the single simulator and the rigid kinds' W-step kernels, the step kernels' flags for the others.
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath=False)
+def advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks):
+    """n fixed steps of dt [s] from t [s] (RK4 when ``tableau`` is None, else that Rosenbrock-W method) stepping
+    onto the modulation's kinks as ``breaks`` says (``BREAKS_*``). Runs of plain steps go through
+    :func:`advance_fixed` in one call, a step that needs its segments' lines piece by piece (one call site of the
+    integrator, so the compiled code holds it once). Returns (status, whole steps done, time of the state [s], size
+    of the failed step or piece [s], or dt); on a failure the state is that at the returned time. Compiled without
+    fastmath flags: the single simulator's driver and the rigid kinds' Rosenbrock-W step kernels'."""
+    return _advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks)
+
+
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract", "nsz", "arcp"})
+def advance_breaks_contract(t, x, u, dt, n, M, W, limits, tableau, breaks):
+    """:func:`advance_breaks` compiled with the kernels' fastmath flags (``contract``: fused multiply-adds in the
+    step times): the other step kernels' driver (:func:`advance_breaks_for`)."""
+    return _advance_breaks(t, x, u, dt, n, M, W, limits, tableau, breaks)
+
+
+def advance_breaks_for(t, x, u, dt, n, M, W, limits, tableau, breaks):
+    """The step kernels' driver, chosen by the arguments' types when numba compiles: :func:`advance_breaks` for a
+    Rosenbrock-W method (``tableau`` not None) on the rigid 3D kind (the wing, the chain, the rotorcraft), whose driver
+    the kernel warm-up compiled from Python (``envs/step_callees.py``), else :func:`advance_breaks_contract` (RK4,
+    and the W method on the mill's moving cable: compiled inside the step kernel). Jitted code only."""
+    raise NotImplementedError("advance_breaks_for is resolved inside numba kernels")
+
+
+@inline_overload(advance_breaks_for)
+def _advance_breaks_for(t, x, u, dt, n, M, W, limits, tableau, breaks):
+    from laddermill_gym.kernels.rigid.kinds import Rigid3D
+
+    kind = dict(zip(M.fields, M.types, strict=True))["kind"]
+    if isinstance(tableau, types.NoneType) or getattr(kind, "instance_class", None) is not Rigid3D:
+        return lambda t, x, u, dt, n, M, W, limits, tableau, breaks: advance_breaks_contract(
+            t, x, u, dt, n, M, W, limits, tableau, breaks)
+    return lambda t, x, u, dt, n, M, W, limits, tableau, breaks: advance_breaks(
+        t, x, u, dt, n, M, W, limits, tableau, breaks)

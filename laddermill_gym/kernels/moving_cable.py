@@ -91,7 +91,7 @@ def station2d_rhs(kind, t, x, u, dx, M, W):
     return status
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _rotation(q0, q1, q2, q3):
     """Rotation matrix (body -> global) of a quaternion as a row-major 9-tuple (the post-step check has no
     workspace; :func:`~laddermill_gym.kernels.small.quat_rotation` writes the same matrix into an array)."""

@@ -5,7 +5,7 @@ import math
 from numba import njit
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def quat_rotation(q0, q1, q2, q3, R):
     """Write the rotation matrix of the normalised quaternion (q0 scalar) into R (3x3, body -> global)."""
     n = math.sqrt(q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
@@ -21,7 +21,7 @@ def quat_rotation(q0, q1, q2, q3, R):
     R[2, 2] = a * a - b * b - c * c + d * d
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def lu_factor(A, piv, n):
     """In-place LU factorisation with partial pivoting of the leading n x n part of A (n <= 6).
 
@@ -51,7 +51,7 @@ def lu_factor(A, piv, n):
     return True
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def lu_solve_vec(LU, piv, n, b):
     """Solve (LU) x = b in place for the leading n entries of the 1-D array b."""
     for k in range(n):
@@ -72,7 +72,7 @@ def lu_solve_vec(LU, piv, n, b):
         b[i] = s / LU[i, i]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def lu_solve_cols(LU, piv, n, B, m):
     """Solve (LU) X = B in place for the leading n x m part of the 2-D array B (rows swept together)."""
     for k in range(n):

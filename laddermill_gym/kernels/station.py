@@ -26,7 +26,7 @@ _FM = {"contract", "nsz", "arcp"}
 _DRIVE: dict[type, object] = {}
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def scheduled_speed(sp, t):
     """The schedule's cable speed V_c(t) [m/s] and its rate [m/s^2] (piecewise linear, held outside)."""
     n = int(sp[C.SP_NSCHED])
@@ -42,7 +42,7 @@ def scheduled_speed(sp, t):
     return sp[ov + k] + a * (t - sp[ot + k]), a
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def cable_speed(sp, t, x):
     """Cable speed V_c [m/s] at time t [s] in state x: the state (drum, commanded) or the schedule."""
     if sp[C.SP_MODE] != C.MODE_PRESCRIBED:
@@ -56,7 +56,7 @@ def first_rest_length(sp, x):
     return sp[C.SP_PIECE] * sp[C.SP_F_FIRST] + x[int(sp[C.SP_XOFF]) + C.SX_MOVED]
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def station_rates(sp, t, x, u, dx, drive):
     """The station block of dx: ds/dt = V, the drum's acceleration (or the schedule's rate or the speed lag) and
     the mechanical power at the drum [W] (into the energy); ``drive`` [N] is the tension on the drum."""

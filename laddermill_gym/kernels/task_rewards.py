@@ -63,7 +63,7 @@ _DEG = 180.0 / math.pi
 SEQUENTIAL_SUM = 8
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=True, fastmath=False, error_model="python")
 def wing_readout(obs, aux, status, a, nominal_action, nw, v_reel, power_weight, p_ref, lateral_scale, rate_scale2,
                  limits, means_given, power, p_term, neg_args, failure):
     """Per copy b of the wing task: ``power`` [W] (ground tension difference x reel speed ``v_reel`` [m/s]),
@@ -107,7 +107,7 @@ def wing_readout(obs, aux, status, a, nominal_action, nw, v_reel, power_weight, 
         failure[b] = code
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=True, fastmath=False, error_model="python")
 def craft_readout(raw, aux, status, a, trim_action, v_ref, limits, power, p_term, neg_args, failure, tip):
     """Per copy b of the rotorcraft task (``envs.rotorcraft.task``; its 2 actions, under
     :data:`SEQUENTIAL_SUM`): ``power`` [W] (0 where not finite), ``p_term`` = power_weight power / p_ref,
@@ -161,7 +161,7 @@ def _finite(v):
     return v
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=True, fastmath=False, error_model="python")
 def clip_rows(raw, low, high, out):
     """``out`` = ``raw`` (B, n) clipped to [low, high] (n,), a non-finite entry replaced by the bound on its side
     (nan: the upper), as ``envs.task_base.clip_observations`` does with numpy."""
@@ -174,7 +174,7 @@ def clip_rows(raw, low, high, out):
             out[b, i] = m if m < high[i] else high[i]
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=True, fastmath=False, error_model="python")
 def shaped_terms(p_term, e_args, failure, steps, weights, n_steps_max, terms, reward, terminated, truncated):
     """The shaped reward of every copy from ``p_term`` (B,), ``e_args`` (3, B) = expm1 of the negated arguments
     (numpy's), the failure codes and step counters (B,): terms (5, B) = (p_term, -w_y S_lat, -w_w S_rates,

@@ -49,7 +49,7 @@ from laddermill_gym.kernels.contract import (
 )
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def modulation(t, t0, dt, ms, md):
     """Speed factor, direction offset and their time derivatives at time t (linear interpolation,
     held constant outside the sample grid). Returns (s, delta, s_dot, delta_dot)."""
@@ -72,7 +72,7 @@ def modulation(t, t0, dt, ms, md):
     return s, d, (ms[k + 1] - ms[k]) / dt, (md[k + 1] - md[k]) / dt
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def profile(h, wf):
     """Wind speed V_w(h) [m/s] and its height derivative [1/s] (eq. 1)."""
     v0, h0, v1, ex = wf[WF_V0], wf[WF_H0], wf[WF_V1], wf[WF_EXPONENT]
@@ -84,7 +84,7 @@ def profile(h, wf):
     return v0 + v1 * (h - h0), v1
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def direction(h, wf):
     """Wind direction phi_s(h) [rad] and its height derivative [rad/m] (eq. 2)."""
     pinf, hs = wf[WF_DIR_INF], wf[WF_DIR_HEIGHT]
@@ -94,7 +94,7 @@ def direction(h, wf):
     return pinf * (1.0 - ex), pinf * ex / hs
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def density(h, wf):
     """Air density [kg/m^3] at altitude h [m] (eq. 3 or ISA troposphere)."""
     if wf[WF_DENSITY_MODEL] == DENSITY_BAROMETRIC:
@@ -105,7 +105,7 @@ def density(h, wf):
     return wf[WF_RHO0] * base ** 4.2559
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def wind_at(z, wf, s, d):
     """Wind velocity (global, m/s) at height h = -z with speed factor s and direction offset d."""
     h = -z
@@ -115,7 +115,7 @@ def wind_at(z, wf, s, d):
     return -s * v * math.cos(a), -s * v * math.sin(a), 0.0
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def wind_rate(z, zdot, wf, s, d, sdot, ddot):
     """Time derivative of the wind (global) seen by a point at height -z moving with vertical rate zdot."""
     h = -z
@@ -132,7 +132,7 @@ def wind_rate(z, zdot, wf, s, d, sdot, ddot):
     return wx, wy, 0.0
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _cell(u, n):
     """Cell index k, fraction f in it and whether u lies inside the grid (0 <= u <= n - 1); held at the edges.
     A NaN u (a non-finite state) gives cell 0, never a NaN index."""
@@ -144,7 +144,7 @@ def _cell(u, n):
     return k, u - k, True
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _grid_cell(xi, h, gp):
     """The cell of (xi, h) [m]: flat offsets of its four corners' first component (k00, k10, k01, k11), the
     fractions (a along xi, b along h) and whether xi and h lie inside the grid (else held at the edge). A grid
@@ -158,7 +158,7 @@ def _grid_cell(xi, h, gp):
             a, b, in_x, in_h)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, c):
     """Component c of the gust grid in the cell of :func:`_grid_cell` by bilinear interpolation, and its
     derivatives along xi and h [1/s] (zero across a held edge)."""
@@ -172,7 +172,7 @@ def _grid_sample(k00, k10, k01, k11, a, b, in_x, in_h, gp, gv, c):
     return f, dfx, dfh
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _fade(t, tf):
     """The grid's fade-in factor r(t) = 0.5 (1 - cos(pi t / T_f)) on 0 <= t < T_f (0 before, 1 after; 1 for
     T_f = 0) and its time derivative [1/s]."""
@@ -184,7 +184,7 @@ def _fade(t, tf):
     return 0.5 * (1.0 - math.cos(c * t)), 0.5 * c * math.sin(c * t)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def gust_at(x, y, z, t, gp, gv):
     """Gust velocity (global, m/s) of the frozen grid at the point (x, y, z) [m] and time t [s] (times the
     fade-in factor)."""
@@ -200,7 +200,7 @@ def gust_at(x, y, z, t, gp, gv):
     return r * (u * ex - v * ey), r * (u * ey + v * ex), -r * w
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def gust_rate(x, y, z, vx, vy, vz, t, gp, gv):
     """Time derivative (global, m/s^2) of the gust seen by a point at (x, y, z) [m] moving with the global
     velocity (vx, vy, vz) [m/s]: r (dg/dxi (v . e - U) + dg/dh (-vz)) + r' g, r the fade-in factor."""
@@ -221,7 +221,7 @@ def gust_rate(x, y, z, vx, vy, vz, t, gp, gv):
     return du * ex - dv * ey, du * ey + dv * ex, -dw
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def wind_point(x, y, z, t, wf, s, d, gp, gv):
     """Wind velocity (global, m/s) at the point (x, y, z) [m] and time t [s]: the profile with speed factor s
     and direction offset d (:func:`wind_at`) plus the frozen gust grid (``gp``, ``gv``; both None for none: the
@@ -233,7 +233,7 @@ def wind_point(x, y, z, t, wf, s, d, gp, gv):
     return wx + gx, wy + gy, wz + gz
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def wind_point_rate(x, y, z, vx, vy, vz, t, wf, s, d, sdot, ddot, gp, gv):
     """Time derivative (global, m/s^2) of the wind seen by a point at (x, y, z) [m] moving with the global
     velocity (vx, vy, vz) [m/s] (:func:`wind_rate` plus :func:`gust_rate`); the alpha-rate term uses it."""

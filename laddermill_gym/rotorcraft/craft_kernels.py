@@ -87,7 +87,7 @@ from laddermill_gym.rotorcraft.rotor_kernels import (
 SPIN = (1.0, -1.0)
 
 
-@callee_njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@callee_njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _air_at(x, o, R, px, py, pz, t, M, s_mod, d_mod):
     """Air velocity relative to the body point (px, py, pz) [m] in body axes [m/s], and the density there."""
     vx, vy, vz = x[o + B3_VEL], x[o + B3_VEL + 1], x[o + B3_VEL + 2]
@@ -102,7 +102,7 @@ def _air_at(x, o, R, px, py, pz, t, M, s_mod, d_mod):
     return ax, ay, az, density(-zg, M.wf)
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _rotor(cp, rp, scratch, ax, ay, az, rho, theta0, out, k):
     """One rotor in the relative air velocity (ax, ay, az) [m/s, body axes] at its hub.
 
@@ -142,7 +142,7 @@ def _rotor(cp, rp, scratch, ax, ay, az, rho, theta0, out, k):
     return hforce * ux, hforce * uy, -thrust, torque
 
 
-@callee_njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@callee_njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def craft_loads(x, o, R, u, t, M, s_mod, d_mod, craft):
     """Aerodynamic and generator loads on the craft (body o of state x, rotation R) into craft[2][0:6], in the
     wind of the packed model M at time t [s] (speed factor s_mod, direction offset d_mod, its gust grid).

@@ -96,7 +96,7 @@ def _craft_step_observe_copy(b, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, l
 # through kernels/batch.copy_air_model, not a function that returns a view (numba forbids that without its runtime:
 # c2dd978, 45dd361 had reverted this for it). nogil: the vector envs run it on several threads, each on its own range
 # of copies (envs/copy_threads.py), instead of a numba prange kernel that compiled the step a second time.
-@njit(cache=True, error_model="numpy", _nrt=False, nogil=True)
+@njit(cache=True, error_model="numpy", _nrt=False, nogil=True, fastmath=False)
 def craft_step_observe_serial(t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
                               tether_end, obs, aux, status, done, first, last):
     """Advance copies b = first, ..., last - 1 by nsteps[b] fixed steps of dt [s] (``tableau`` and ``breaks`` as in
@@ -121,7 +121,7 @@ _STEP_FAR = far_call(craft_step_observe_serial, types.none)
 
 # The vector envs' launcher on several threads, as kernels/rigid/observe.launch_step_observe: numba's thread pool
 # runs the ranges, each calling the kernel above through its address (the same bits on any thread count).
-@njit(cache=True, parallel=True, nogil=True)
+@njit(cache=True, parallel=True, nogil=True, _nrt=True, fastmath=False, error_model="python")
 def launch_craft_step_observe(bounds, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, ref,
                               tether_end, obs, aux, status, done):
     """:func:`craft_step_observe_serial` on the copy ranges ``bounds`` (n_ranges, 2) int64 of (first, last) rows,

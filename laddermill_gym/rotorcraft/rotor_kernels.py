@@ -47,7 +47,7 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
 )
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def thrust_coefficient(sigma, a, tip_loss, mu, lam, theta0):
     """C_T of an untwisted rotor (Roberts eq. 1; Gessow & Myers), about the control axis.
 
@@ -58,7 +58,7 @@ def thrust_coefficient(sigma, a, tip_loss, mu, lam, theta0):
     return 0.5 * sigma * a * (theta0 * (b * b * b / 3.0 + 0.5 * b * mu * mu) + 0.5 * lam * b * b)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def coning_angle(gamma, mu, lam, theta0):
     """Coning a0 [rad] of a centrally hinged blade, blade weight neglected (Gessow & Myers, B = 1).
 
@@ -67,7 +67,7 @@ def coning_angle(gamma, mu, lam, theta0):
     return 0.125 * gamma * (theta0 * (1.0 + mu * mu) + 4.0 * lam / 3.0)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def longitudinal_flapping(mu, lam, theta0):
     """Longitudinal flapping a1 [rad] (blade flapped up over the upwind side when positive; B = 1).
 
@@ -76,13 +76,13 @@ def longitudinal_flapping(mu, lam, theta0):
     return 2.0 * mu * (4.0 * theta0 / 3.0 + lam) / (1.0 - 0.5 * mu * mu)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def lateral_flapping(mu, a0):
     """Lateral flapping b1 [rad] (B = 1): b1 = (4/3) mu a0 / (1 + mu^2/2)."""
     return 4.0 * mu * a0 / (3.0 * (1.0 + 0.5 * mu * mu))
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def h_force_coefficient(sigma, a, delta, tip_loss, mu, lam, theta0, a0, a1, b1):
     """C_H, the in-plane force along the downwind direction (Gessow & Myers; oracles.md).
 
@@ -97,7 +97,7 @@ def h_force_coefficient(sigma, a, delta, tip_loss, mu, lam, theta0, a0, a1, b1):
     return sigma * (0.25 * delta * mu + 0.5 * a * lift)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def torque_coefficient(sigma, delta, mu, lam, ct, ch):
     """C_Q from the energy identity: C_Q = sigma delta (1 + 3 mu^2)/8 - lam C_T - mu C_H.
 
@@ -106,7 +106,7 @@ def torque_coefficient(sigma, delta, mu, lam, ct, ch):
     return 0.125 * sigma * delta * (1.0 + 3.0 * mu * mu) - lam * ct - mu * ch
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def glauert_inflow(ct, mu, lam):
     """Glauert's induced-velocity ratio nu = C_T / (2 sqrt(mu^2 + lam^2)); inf when mu = lam = 0."""
     r = math.sqrt(mu * mu + lam * lam)
@@ -115,7 +115,7 @@ def glauert_inflow(ct, mu, lam):
     return ct / (2.0 * r)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def power_coefficient(cq, mu, alpha_c):
     """Windmill power coefficient C_p = P / (rho pi R^2 V^3 / 2) of one rotor (Roberts eq. 4).
 
@@ -125,7 +125,7 @@ def power_coefficient(cq, mu, alpha_c):
     return -2.0 * cq * k * k * k
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def craft_incidence(mu, lam, ct):
     """Craft incidence alpha_c [rad] from Roberts eq. 2: tan(alpha_c) = lam/mu + C_T / (2 mu sqrt(mu^2 + lam^2)).
 
@@ -135,7 +135,7 @@ def craft_incidence(mu, lam, ct):
     return math.atan2(lam + glauert_inflow(ct, mu, lam), mu)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def cable_angle(thrust_ratio, h_ratio, alpha_c):
     """Equilibrium cable angle beta [rad] above the horizontal (Roberts eq. 3), massless cables.
 
@@ -149,7 +149,7 @@ def cable_angle(thrust_ratio, h_ratio, alpha_c):
     return math.atan2(thrust_ratio * ca - h_ratio * sa - 1.0, thrust_ratio * sa + h_ratio * ca)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def section_aoa(theta0, mu, lam, a0, a1, b1, x, psi):
     """Blade-section angle of attack [rad] at radius x = r/R and azimuth psi [rad], small angles.
 
@@ -166,7 +166,7 @@ def section_aoa(theta0, mu, lam, a0, a1, b1, x, psi):
     return theta0 + up / ut
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def tip_incidence(theta0, mu, lam, a1):
     """Angle of attack [rad] of the retreating blade tip (x = 1, psi = 270 deg), the blade-incidence check.
 
@@ -175,7 +175,7 @@ def tip_incidence(theta0, mu, lam, a1):
     return theta0 + (lam + a1) / (1.0 - mu)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def _inflow_residual(c0, c1, mu, lam_inf, lam):
     """f(lam) = lam - lam_inf + nu(lam) with C_T = c0 + c1 lam, and df/dlam."""
     r2 = mu * mu + lam * lam
@@ -189,7 +189,7 @@ def _inflow_residual(c0, c1, mu, lam_inf, lam):
     return f, df
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def _inflow_bracket(c0, c1, mu, lam_inf, f0, n_eval, max_iter):
     """Bracket search of :func:`solve_inflow`: from lam_inf (residual f0) in the direction that reduces |f|, steps
     growing by 1.25 until f changes sign. Returns (found, x0, f0, x1, f1, n_eval): the last two points and their
@@ -215,7 +215,7 @@ def _inflow_bracket(c0, c1, mu, lam_inf, f0, n_eval, max_iter):
     return found, x0, f0, x1, f1, n_eval
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def _inflow_refine(c0, c1, mu, lam_inf, x0, f0, x1, f1, n_eval, max_iter, tol, ftol):
     """Root of the inflow residual in the bracket (x0, x1) of :func:`_inflow_bracket`: Newton steps that fall back
     to bisection when they leave the bracket. Returns (lam, status, n_eval)."""
@@ -251,7 +251,7 @@ def _inflow_refine(c0, c1, mu, lam_inf, x0, f0, x1, f1, n_eval, max_iter, tol, f
     return lam, status, n_eval
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def solve_inflow(p, mu, lam_inf, theta0, tol, max_iter, out):
     """Inflow ratio lam consistent with C_T: lam = lam_inf - C_T(lam) / (2 sqrt(mu^2 + lam^2)).
 
@@ -297,7 +297,7 @@ def solve_inflow(p, mu, lam_inf, theta0, tol, max_iter, out):
     out[O_STATUS] = status
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def rotor_state(p, mu, alpha_c, theta0, tol, max_iter, out):
     """Trimmed rotor at advance ratio mu, craft incidence alpha_c [rad] and collective theta0 [rad].
 
@@ -333,13 +333,13 @@ def rotor_state(p, mu, alpha_c, theta0, tol, max_iter, out):
     out[O_CP] = power_coefficient(cq, mu, alpha_c)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def _ideal_cubic(w, s, c2):
     """g(w) = 3 w^3 - 2 s w^2 + 2 c^2 w - s c^2 (zero where d C_p/dw = 0 for the actuator disk)."""
     return ((3.0 * w - 2.0 * s) * w + 2.0 * c2) * w - s * c2
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def ideal_through_flow(alpha_c):
     """Normal through-flow w = (V sin(alpha_c) - v)/V [-] of the best actuator disk at incidence alpha_c [rad].
 
@@ -366,7 +366,7 @@ def ideal_through_flow(alpha_c):
     return 0.5 * (lo + hi)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def ideal_power_coefficient(alpha_c):
     """Ideal (no profile drag) windmill C_p [-] of an actuator disk at incidence alpha_c [rad], Glauert inflow.
 

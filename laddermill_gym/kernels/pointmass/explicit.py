@@ -46,7 +46,7 @@ def _tension_chunk(x, M, tension, damped, e0, e1):
         tension[e] = element_tension(x, e, par, damped)
 
 
-@njit(cache=True, error_model="numpy", parallel=True)
+@njit(cache=True, error_model="numpy", parallel=True, _nrt=True, fastmath=False)
 def tensions(x, M, tension, damped):
     """Write every element's tension [N] into ``tension`` (n_e,), with Voigt damping when ``damped``."""
     ne = n_elements(M.par)
@@ -76,7 +76,7 @@ def _move_chunk(x, dt, par, j0, j1):
     return st
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=True, fastmath=False, error_model="python")
 def _worst(bad_nf, bad_v, bad_g):
     """The status of a move from the counts of chunks that ended non-finite, over the speed limit, on the ground."""
     if bad_nf > 0:
@@ -88,7 +88,7 @@ def _worst(bad_nf, bad_v, bad_g):
     return PM_OK
 
 
-@njit(cache=True, error_model="numpy", parallel=True)
+@njit(cache=True, error_model="numpy", parallel=True, _nrt=True, fastmath=False)
 def move_and_check(x, dt, par):
     """x += dt v for every node (parallel); returns a status: non-finite, speed limit, ground (h <= h_g)."""
     n = int(par[PP_N])
@@ -113,14 +113,14 @@ def _kick_chunk(t, x, u, dt, M, tension, s, d, j0, j1):
         x[o + 2] += h * fz
 
 
-@njit(cache=True, error_model="numpy", parallel=True)
+@njit(cache=True, error_model="numpy", parallel=True, _nrt=True, fastmath=False)
 def _kick(t, x, u, dt, M, tension, s, d):
     n = int(M.par[PP_N])
     for c in prange((n + CHUNK - 1) // CHUNK):
         _kick_chunk(t, x, u, dt, M, tension, s, d, c * CHUNK, min(n, (c + 1) * CHUNK))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def explicit_advance(t, x, u, dt, nsteps, M, W):
     """Advance the state x (6 n,) in place by ``nsteps`` symplectic Euler steps of dt [s] from time t [s] with
     the kites' commanded attitude u (n_k * 3,) [rad]. Returns (status, steps done)."""
@@ -139,7 +139,7 @@ def explicit_advance(t, x, u, dt, nsteps, M, W):
 # loop, so a process that only runs these never starts numba's thread pool (GNU OpenMP's is not fork-safe: a
 # process forked from one that started it cannot run a parallel loop; issue 34 item 11). Same bits as the parallel
 # kernels on any thread count (each chunk's arithmetic is independent of the others).
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def tensions_serial(x, M, tension, damped):
     """:func:`tensions` on the calling thread."""
     ne = n_elements(M.par)
@@ -147,7 +147,7 @@ def tensions_serial(x, M, tension, damped):
         _tension_chunk(x, M, tension, damped, c * CHUNK, min(ne, (c + 1) * CHUNK))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def move_and_check_serial(x, dt, par):
     """:func:`move_and_check` on the calling thread."""
     n = int(par[PP_N])
@@ -160,7 +160,7 @@ def move_and_check_serial(x, dt, par):
     return _worst(bad_nf, bad_v, bad_g)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def explicit_advance_serial(t, x, u, dt, nsteps, M, W):
     """:func:`explicit_advance` on the calling thread (no parallel loop)."""
     n = int(M.par[PP_N])
@@ -186,7 +186,7 @@ def _accel_chunk(t, x, u, M, tension, out, s, d, j0, j1):
         out[3 * j + 2] = fz / m
 
 
-@njit(cache=True, error_model="numpy", parallel=True)
+@njit(cache=True, error_model="numpy", parallel=True, _nrt=True, fastmath=False)
 def accelerations(t, x, u, M, tension, out):
     """Accelerations [m/s^2] of every node (3 n,) with Voigt tensions: the right-hand side of the string
     (the tests' reference integrations use it)."""

@@ -58,7 +58,7 @@ def _assemble_chunk(t, x, u, dt, M, tension, s, d, j0, j1):
         x[o + 2] = m * x[o + 2] + dt * fz
 
 
-@njit(cache=True, error_model="numpy", parallel=True)
+@njit(cache=True, error_model="numpy", parallel=True, _nrt=True, fastmath=False)
 def _assemble(t, x, u, dt, M, tension, s, d):
     """r_j = m_j v_j + dt (F_ext + F_elastic) in place in the velocities (parallel over nodes)."""
     n = int(M.par[PP_N])
@@ -66,7 +66,7 @@ def _assemble(t, x, u, dt, M, tension, s, d):
         _assemble_chunk(t, x, u, dt, M, tension, s, d, c * CHUNK, min(n, (c + 1) * CHUNK))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def implicit_advance_parts(t, x, u, dt, nsteps, M, W, parts):
     """:func:`implicit_advance` with the elimination on ``parts`` chunks (``partitioned_solve``; at least 1)."""
     P = max(1, parts)
@@ -82,7 +82,7 @@ def implicit_advance_parts(t, x, u, dt, nsteps, M, W, parts):
     return PM_OK, nsteps
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def implicit_advance(t, x, u, dt, nsteps, M, W):
     """Advance the state x (6 n,) in place by ``nsteps`` linearly implicit Euler steps of dt [s] from time t
     [s], kites' attitude u (n_k * 3,) [rad]. ``W.tension`` holds the elastic tensions at the start of the last
@@ -92,7 +92,7 @@ def implicit_advance(t, x, u, dt, nsteps, M, W):
     return implicit_advance_parts(t, x, u, dt, nsteps, M, W, solver_parts(n, _iget_num_threads(), W.mid.shape[0]))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def implicit_advance_serial(t, x, u, dt, nsteps, M, W):
     """:func:`implicit_advance` on the calling thread, the elimination on the chunks of one thread
     (``solver_parts(n, 1, ...)``): no parallel loop, so numba's thread pool is never started (a fork of the

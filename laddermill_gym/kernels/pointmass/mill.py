@@ -56,7 +56,7 @@ _FM = {"contract", "nsz", "arcp"}
 
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def schedule_speed(sp, t):
     """V_c(t) [m/s] of the piecewise-linear schedule, held constant outside it (the rigid mill's
     ``kernels/station.scheduled_speed``, without the rate)."""
@@ -72,7 +72,7 @@ def schedule_speed(sp, t):
     return sp[ov + k] + (sp[ov + k + 1] - sp[ov + k]) / (sp[ot + k + 1] - sp[ot + k]) * (t - sp[ot + k])
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def set_ends(par, sp, s, v):
     """The end elements' unstretched lengths a + s, b - s [m] and their rates +-V_c [m/s] into ``par``."""
     le = sp[SP_PIECE]
@@ -82,13 +82,13 @@ def set_ends(par, sp, s, v):
     par[PP_RATE_LAST] = -v
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def end_tensions(x, M):
     """Tensions [N] of the first and the last element (Voigt damping on the material strain rate included)."""
     return element_tension(x, 0, M.par, True), element_tension(x, int(M.par[PP_N]), M.par, True)
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _pay_out_kick(x, M, dt):
     """The end elements' terms of the implicit step that their changing rest length adds, as a force on nodes 0
     and n-1 added to their velocities as dt F / m before the step (r = m v + dt F in the step: the same equation):
@@ -118,13 +118,13 @@ def _pay_out_kick(x, M, dt):
         x[o + 2] += h * tz
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _move_node(x, src, dst):
     for i in range(N3_SIZE):
         x[N3_SIZE * dst + i] = x[N3_SIZE * src + i]
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _sheave_velocity(x, e, par, sp, v, l0):
     """Velocity [m/s] of the cable material passing the ground point of end element e (unstretched length l0 [m]
     now): V_c (l / l0) along the element (node e - 1 -> node e), the pay-out at the element's strain; zero with
@@ -134,7 +134,7 @@ def _sheave_velocity(x, e, par, sp, v, l0):
     return w * tx, w * ty, w * tz
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _new_node(x, j, par, g, f, src, ux, uy, uz):
     """Node j at the fraction f of the way from the ground point par[g:g+3] to node ``src``; its velocity
     interpolated the same way between the material velocity at the ground point (ux, uy, uz) and node src's."""
@@ -145,7 +145,7 @@ def _new_node(x, j, par, g, f, src, ux, uy, uz):
         x[o + N3_VEL + i] = u[i] + f * (x[q + N3_VEL + i] - u[i])
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def transfer_up(x, M, sp, s, v):
     """The cable has moved one element forwards (s >= l_e) at V_c = v [m/s]: node n-1 leaves, nodes and kite flags
     move up one index, a node enters at 0. Returns +1 if a kite went round the station, else 0."""
@@ -176,7 +176,7 @@ def transfer_up(x, M, sp, s, v):
     return 0
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def transfer_down(x, M, sp, s, v):
     """The cable has moved backwards past a node (s < 0) at V_c = v < 0: node 0 leaves, nodes and kite flags move
     down one index, a node enters at n-1 on the last element. Returns -1 if a kite went round the station, else 0."""
@@ -206,7 +206,7 @@ def transfer_down(x, M, sp, s, v):
     return 0
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _transfer(x, M, sp, sx):
     """At most one node transfer for the cable moved; PM_LIMIT if the cable moved more than one element."""
     s = sx[SX_MOVED]
@@ -223,7 +223,7 @@ def _transfer(x, M, sp, sx):
     return PM_LIMIT if (s >= le or s < 0.0) else PM_OK
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def mill_before(t, x, M, sp, sx, dt, implicit):
     """Before a step at t [s]: the end elements' lengths from s and V_c(t), their start-of-step tensions, and
     (``implicit``) the pay-out terms of :func:`_pay_out_kick`. Returns (T_first [N], T_last [N], V_c [m/s])."""
@@ -235,7 +235,7 @@ def mill_before(t, x, M, sp, sx, dt, implicit):
     return t0, tn, v
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def mill_after(t, x, M, sp, sx, dt, t0, tn, v, status):
     """After the string's step from t [s]: the generator power (T_first - T_last) V_c [W] of the step's start into
     the energy, s += the schedule's pay-out over the step (trapezoid, exact for a linear piece), V_c(t + dt), then
@@ -250,7 +250,7 @@ def mill_after(t, x, M, sp, sx, dt, t0, tn, v, status):
     return status
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def node_masses(M, out):
     """Lumped mass [kg] of every free node (n,) into ``out`` (the kernels' own ``node_mass``)."""
     for j in range(out.size):

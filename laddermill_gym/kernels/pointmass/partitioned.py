@@ -272,7 +272,7 @@ def _reduce(x, tension, M, dt, n, P, mid):
         x[o], x[o + 1], x[o + 2] = zx, zy, zz
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def _eliminate_part(x, tension, M, dt, W, n, P, c):
     """Chunk c's forward pass of :func:`partitioned_solve` (the first and last chunks: a one-direction sweep; a
     middle chunk: its bottom block read and its spike eliminated)."""
@@ -288,7 +288,7 @@ def _eliminate_part(x, tension, M, dt, W, n, P, c):
         _sweep_spike(x, tension, M, dt, lo, hi - lo, ck, W.mid[c], seg)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def _back_part(x, tension, M, dt, W, n, P, c):
     """Chunk c's back substitution of :func:`partitioned_solve`, from the separators' solution in ``W.mid``."""
     seg = W.seg.shape[1]
@@ -309,14 +309,14 @@ def _back_part(x, tension, M, dt, W, n, P, c):
             _back_spike(x, tension, M, dt, lo, hi - lo, ck, W.seg[c], zx, zy, zz, wx, wy, wz)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=True, fastmath=False, error_model="python")
 def clamp_parts(n, P, W):
     """The number of chunks :func:`partitioned_solve` uses: P clamped to the workspace's capacity and to
     (n + 1) // 2."""
     return max(1, min(P, W.mid.shape[0], W.seg.shape[0], (n + 1) // 2))
 
 
-@njit(cache=True, error_model="numpy", parallel=True)
+@njit(cache=True, error_model="numpy", parallel=True, _nrt=True, fastmath=False)
 def partitioned_solve(x, tension, M, dt, W, P):
     """Solve the step's block-tridiagonal system in place of the right-hand side in the velocities of x (6 n,)
     on P chunks (clamped to the workspace's capacity and to (n + 1) // 2): the chunks' eliminations and back
@@ -332,7 +332,7 @@ def partitioned_solve(x, tension, M, dt, W, P):
         _back_part(x, tension, M, dt, W, n, P, c)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
 def partitioned_solve_serial(x, tension, M, dt, W, P):
     """:func:`partitioned_solve` on the calling thread (no parallel loop: numba's thread pool is not started;
     the same chunks in order, the same bits)."""

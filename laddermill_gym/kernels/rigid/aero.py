@@ -53,7 +53,7 @@ from laddermill_gym.kernels.contract import (  # noqa: F401 (also read as attrib
 )
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def spline_eval(ac, k, alpha, a0, da, out):
     """Evaluate all table columns of wing type k at alpha [rad] into out (float64[N_COLUMNS])."""
     n_int = ac.shape[1]
@@ -71,7 +71,7 @@ def spline_eval(ac, k, alpha, a0, da, out):
         out[j] = ((ac[k, i, 0, j] * x + ac[k, i, 1, j]) * x + ac[k, i, 2, j]) * x + ac[k, i, 3, j]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def wing_aero(k, tf, ac, a0, da, rho, ua, va, wa, p, q, r, de, dr, dal, ad0, coef, out):
     """Aerodynamic force and moment about the CG, body axes, for one wing.
 
@@ -131,7 +131,7 @@ def wing_aero(k, tf, ac, a0, da, rho, ua, va, wa, p, q, r, de, dr, dal, ad0, coe
 
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def wing_aero_long(k, tf, ac, a0, da, rho, ua, wa, q, de, ad0, coef, out):
     """In-plane aerodynamics: only the longitudinal columns are evaluated.
 

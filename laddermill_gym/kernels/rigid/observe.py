@@ -106,7 +106,7 @@ def _observe_rows(t, x, M, W, nominal, below, ground, obs, aux):
     aux[AUX_MIN_ALTITUDE] = zmin
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FM)
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def observe_state(t, x, u, M, W, nominal, below, ground, obs, aux):
     """Observation of one 3D state: the single-state entry point of the kernel the batched envs use.
 
@@ -170,7 +170,7 @@ _STEP_FAR = far_call(step_observe_serial, types.none)
 # The vector envs' launcher on several threads: numba's thread pool runs the ranges, each calling the kernel above
 # through its address (kernels/far_call.py), so this compiles only the loop (about 3-7 s) and each copy's arithmetic
 # is the kernel's own: the same bits on any thread count (envs/copy_threads.py says why not Python threads).
-@njit(cache=True, parallel=True, nogil=True)
+@njit(cache=True, parallel=True, nogil=True, _nrt=True, fastmath=False, error_model="python")
 def launch_step_observe(bounds, t, X, U, dt, nsteps, M, kind, vehicle, WB, AB, limits, tableau, breaks, DX, nominal,
                         below, ground, obs, aux, status, done):
     """:func:`step_observe_serial` on the copy ranges ``bounds`` (n_ranges, 2) int64 of (first, last) rows, the

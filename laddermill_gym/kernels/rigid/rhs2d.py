@@ -21,7 +21,7 @@ from laddermill_gym.kernels.rigid.rhs3d import add_const_mass, block_of
 from laddermill_gym.kernels.wind import density, modulation, wind_point, wind_point_rate
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _end_kinematics2(kind, idx, att, x, fixed, nw, T, ev):
     """In-plane version of rhs3d.end_kinematics: ev = (x, z, x', z', ax, az), T is 2 x nb."""
     if kind == C.END_WING:
@@ -54,13 +54,13 @@ def _end_kinematics2(kind, idx, att, x, fixed, nw, T, ev):
     return 0
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _add_end_force2(bv, blk, nb, T, fx, fz):
     for j in range(nb):
         bv[blk, j] += T[0, j] * fx + T[1, j] * fz
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _add_mass2(A, nb1, T1, nb2, T2, m):
     for i in range(nb1):
         for j in range(nb2):
@@ -70,7 +70,7 @@ def _add_mass2(A, nb1, T1, nb2, T2, m):
 # One function of more than 80 lines on purpose: it is the hot loop of every scene, and each element's end
 # kinematics, loads and tension stay in local scalars across its three phases (bodies, nodes, elements, marked
 # by comments) instead of passing a dozen values through calls; the golden-trajectory test pins its arithmetic.
-@callee_njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@callee_njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def rhs2d(t, x, u, dx, M, W, sag, caero):
     """State derivative of the in-plane model (see rhs3d.rhs3d for the arguments). Returns 0 or 1."""
     nw = M.wtype.size

@@ -49,7 +49,7 @@ from laddermill_gym.kernels.small import quat_rotation
 from laddermill_gym.kernels.wind import density, modulation, wind_point
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def end_kinematics(kind, idx, att, x, Rw, fixed, nw, T, ev):
     """Position ev[0:3], velocity ev[3:6] and velocity-quadratic acceleration ev[6:9] (global) of an
     element end, and its 3 x nb velocity transformation T (eq. 13). Returns the block size (0: fixed)."""
@@ -91,14 +91,14 @@ def end_kinematics(kind, idx, att, x, Rw, fixed, nw, T, ev):
     return 0
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _add_end_force(bv, blk, nb, T, fx, fy, fz):
     """Generalised force T^T F of a global force F at an element end."""
     for j in range(nb):
         bv[blk, j] += T[0, j] * fx + T[1, j] * fy + T[2, j] * fz
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def _add_mass(A, nb1, T1, nb2, T2, m):
     """A[:nb1, :nb2] += m T1^T T2."""
     for i in range(nb1):
@@ -116,7 +116,7 @@ def add_const_mass(D, blk, nb, ekd, e, end, m):
             D[blk, i, j] += m * ekd[e, end, i, j]
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"})
+@njit(cache=True, error_model="numpy", fastmath={"contract", "nsz", "arcp"}, _nrt=False)
 def block_of(kind, idx, nw):
     if kind == END_WING:
         return idx

@@ -26,7 +26,7 @@ from laddermill_gym.kernels.integrate import rk4_advance
 from laddermill_gym.sim.simulator import SimulationError, Simulator
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=True, fastmath=False, error_model="python")
 def _rhs_loop(n, t, x, u, dx, M, W):
     s = 0
     for _ in range(n):

@@ -106,13 +106,13 @@ def _parts_fm(which, n, t, x0, bv0, X, U, dt, M, kind, vehicle, WB, AB, limits, 
     _parts(which, n, t, x0, bv0, X, U, dt, M, kind, vehicle, WB, AB, limits, tableau)
 
 
-@njit(cache=True, error_model="numpy", _nrt=False)
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath=False)
 def _w_steps_plain(n, t, x0, X, U, dt, M, kind, vehicle, WB, AB, limits, tableau):
     """:func:`_w_steps_fm` without fastmath (the rotorcraft's kernels' flags)."""
     _w_steps(n, t, x0, X, U, dt, M, kind, vehicle, WB, AB, limits, tableau)
 
 
-@njit(cache=True, error_model="numpy", _nrt=False)
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath=False)
 def _parts_plain(which, n, t, x0, bv0, X, U, dt, M, kind, vehicle, WB, AB, limits, tableau):
     """:func:`_parts_fm` without fastmath (the rotorcraft's kernels' flags)."""
     _parts(which, n, t, x0, bv0, X, U, dt, M, kind, vehicle, WB, AB, limits, tableau)

@@ -81,7 +81,7 @@ class OperatingPoint:
     binding: str
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=True, fastmath=False, error_model="python")
 def _scan(p, mu, alpha, thetas, c, res):
     """Power and constraint margins over collectives thetas [rad] at advance ratio mu and incidence alpha [rad].
 
