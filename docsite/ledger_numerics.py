@@ -15,7 +15,8 @@ NUMERICS = Covered(
             (r"approaching (\d) and (\d) from below", (G % "ratio_ros2", G % "ratio_ros34pw2")),
             (r"1e-6 m/s\^2 at omega\^2 = 7e5 s\^-2 is ([\d.e-]+) m", (G % "node_offset",))),
     given=(  # the equations and methods as published, the solvers' settings, counts of unknowns
-        "agree whatever the state of numba's cache (found 2026-12-05).",  # the day the warm-up's bits were found
+        "Until 2026-12-06 the last did not",  # the day the warm-up's bits were fixed (their cause found)
+        "and its 3-copy vector env's",  # the test's copy count (tests/test_cache_reproducibility.py)
         # the chain's reward check: its settings and step sizes (tests/test_fast_ids.py)
         "**What an agent is given: the chain's rewards** (2026-11-30; , )",
         'Over 200 control periods of actions of 0.3 amplitude on LadderChain-v0, open loop, the largest per-step '

@@ -72,19 +72,22 @@ _WING = textwrap.dedent("""
         out.append(obs)
         if term or trunc:
             break
+    venv = gym.make_vec("laddermill_gym/TetheredWing-v0", num_envs=3, vectorization_mode="vector_entry_point")
+    obs, _ = venv.reset(seed=11)
+    for _ in range(40):  # the vector env's step kernel: the one that parted on 2026-12-05
+        obs, *_ = venv.step((0.3 * rng.uniform(-1, 1, venv.action_space.shape)).astype(np.float32))
+        out.extend(obs)
     np.save(sys.argv[1], np.array(out))
 """)
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="known (2026-12-05), cause not found: the kernel warm-up on and off compile the "
-                   "W step to other machine code (docs/numerics.md, 'Bits and machines')")
 def test_warmup_on_and_off_give_the_same_bits(tmp_path):
-    """TetheredWing-v0 rolled out in two fresh processes, each with an empty numba cache and no start cache: one with
-    the kernel warm-up (the default: the step kernel compiled in a second process against callees it loads from the
-    cache), one with ``LADDERMILL_KERNEL_WARMUP=off`` (everything compiled in this process). The brief asks for the same
-    bits whatever the cache's state; today they part (strict xfail: this test fails once they agree, so remove the
-    mark then)."""
+    """TetheredWing-v0 rolled out, single and as a 3-copy vector env, in two fresh processes, each with an empty numba
+    cache and no start cache: one with the kernel warm-up (the default: the step kernel compiled in a second process
+    against callees it loads from the cache), one with ``LADDERMILL_KERNEL_WARMUP=off`` (everything compiled in this
+    process). Until 2026-12-06 they parted: a kernel that left numba's inherited options unset compiled with those of
+    whichever caller needed it first (tests/test_kernel_flags.py; docs/numerics.md, "Bits and machines")."""
     r = _rollouts(tmp_path, _WING, {name: {"NUMBA_CACHE_DIR": str(tmp_path / f"cache_{name}"), "LADDERMILL_CACHE_DIR":
                                           "off", "LADDERMILL_KERNEL_WARMUP": name} for name in ("on", "off")})
     a, b = r["on"], r["off"]
