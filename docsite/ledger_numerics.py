@@ -42,7 +42,9 @@ NUMERICS = Covered(
         "when c > 0 (f(0) = -c < 0", "The start value of eq. (21), max(s0, c^(1/3))", "inflection point s0/3",
         "For s0 > 0", "-s0 c^(2/3)", "for s0 <= 0", "below 1e-13 of the iterate (60 steps at most;", "With c = 0",
         "max(s0, 0)", "Dormand-Prince 5(4)", "step factor 0.9 err^(-1/5) clipped to [0.2, 5]", "sect. IV.7; Steihaug & "
-        "Wolfbrandt 1979)", "(Verwer, Spee, Blom & Hundsdorfer 1999, SIAM J. Sci. Comput. 20): 2 stages, order 2, "
+        "Wolfbrandt 1979)", "one-stage method (s = 1, gamma = 1): (I - h J) U = h f,", "Order 1 for any J, L-stable "
+        "with R(z) = 1/(1 - z)", "order 1 for any J, R(z))", "caps every step at 0.05 s",
+        "(Verwer, Spee, Blom & Hundsdorfer 1999, SIAM J. Sci. Comput. 20): 2 stages, order 2, "
         "gamma = 1 + 1/sqrt 2,", "at gamma = 1/4, order 2 for any J, A-stable with R(z) = ((1 + z/4)/(1 - z/4))^2",
         "(|R(iy)| = 1)", "(Rang & Angermann 2005, BIT 45): 4 stages, order 3,", "transformed form (7.4')",
         "the small rotation 2 vec(conj(q) dq)", "(h gamma)^2 K", "1. the cable", "2. the bodies' own loads",

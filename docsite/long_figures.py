@@ -148,6 +148,10 @@ LONG = {
                                  "--samples 25 --n-dt 3", "8 min", "work_precision_closed_loop.md"),
     "wp_mill_kept_matrix": Long(f"{WP} laddermill --forcing step --controller lqr --jacobian-every 1 2 4 8 --time 5 "
                                 "--samples 25 --n-dt 3", "4 min", "work_precision_closed_loop.md"),
+    # every control period sampled, ros1 among the methods (2026-12-06)
+    "wp_every_period": Long(" && ".join(
+        f"{WP} {scene} --forcing step --controller lqr --jacobian-every 1 2 4 8 --time 10 --samples 200 --n-dt 3"
+        for scene in ("ladder_chain", "laddermill")), "11 min", "work_precision_closed_loop.md"),
     "wp_chain": Long(f"{WP} ladder_chain --time 10 --samples 50", "6-9 min", "work_precision.md"),
     "wp_small_scenes": Long(f"{WP} tethered_wing roberts_flying_model laddermill --time 5 --samples 25",
                             "about 7 min", "work_precision.md"),

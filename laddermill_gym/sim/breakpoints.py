@@ -30,11 +30,11 @@ from laddermill_gym.kernels.fixed_steps import (
     is_kink,
 )
 from laddermill_gym.kernels.integrate import dp54_advance
-from laddermill_gym.kernels.rigid.rosenbrock import ROS2, ROS2T, ROS34PW2, with_jacobian_reuse
+from laddermill_gym.kernels.rigid.rosenbrock import ROS1, ROS2, ROS2T, ROS34PW2, with_jacobian_reuse
 from laddermill_gym.kernels.rigid.rosenbrock_adaptive import w_adaptive
 
 #: Tableaux of the fixed-step linearly implicit (Rosenbrock-W) methods by name (``kernels/rigid/rosenbrock.py``)
-W_METHODS = {"ros2": ROS2, "ros2t": ROS2T, "ros34pw2": ROS34PW2}
+W_METHODS = {"ros1": ROS1, "ros2": ROS2, "ros2t": ROS2T, "ros34pw2": ROS34PW2}
 #: The error-controlled Rosenbrock-W methods: (tableau, order of the embedded method)
 W_ADAPTIVE = {"ros34pw2a": (ROS34PW2, 2)}
 #: Integrators a simulator runs: fixed-step classical Runge-Kutta, adaptive Dormand-Prince 5(4) and the fixed-step

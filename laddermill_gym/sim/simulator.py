@@ -52,9 +52,10 @@ STEP_MAX_STEPS, ADVANCE_MAX_STEPS = 10_000_000, 100_000_000
 class IntegratorSettings:
     """Integrator choice and safety limits.
 
-    method : "rk4" (fixed step dt [s]), "dp54" (adaptive, rtol/atol), "ros2" / "ros2t" / "ros34pw2" (linearly
-    implicit Rosenbrock-W of order 2 / 2 / 3, fixed step dt [s] not limited by the cable's axial modes; 3D rigid models;
-    docs/numerics.md) or "ros34pw2a" (ROS34PW2 with error control, rtol/atol: the step is chosen by accuracy).
+    method : "rk4" (fixed step dt [s]), "dp54" (adaptive, rtol/atol), "ros1" / "ros2" / "ros2t" / "ros34pw2"
+    (linearly implicit Rosenbrock-W of order 1 / 2 / 2 / 3, fixed step dt [s] not limited by the cable's axial
+    modes; 3D rigid models; docs/numerics.md) or "ros34pw2a" (ROS34PW2 with error control, rtol/atol: the step is
+    chosen by accuracy).
     max_speed [m/s], max_rate [rad/s]: a state beyond these is reported as exploding.
     ground_height [m]: height h = -z of the ground (global z points down).
     ground_contact : what a wing CG or free cable node at h <= ground_height after a step does: "stop" (the run
@@ -83,7 +84,7 @@ class IntegratorSettings:
         k = self.jacobian_every
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 1:
             raise ValueError(f"IntegratorSettings.jacobian_every = {k!r}: must be an integer >= 1 (steps per Jacobian)")
-        if k != 1 and self.method not in ("ros2", "ros2t", "ros34pw2"):
+        if k != 1 and self.method not in W_METHODS:
             raise ValueError(f"IntegratorSettings.jacobian_every = {k!r}: only the fixed-step W-methods reuse a "
                              f"Jacobian (method = {self.method!r})")
         if self.breakpoints not in BREAKPOINT_MODES:

@@ -100,9 +100,9 @@ class CraftTask(TaskCore):
     parallel : bool, optional
         Step the copies on numba's thread pool (default: when B >= 32).
     physics_step : str, optional
-        The integrator (``"ros2"``, ``"ros2t"``, ``"ros34pw2"``, ``"rk4"``; ``envs/physics_step.py``) instead of the
-        config's (None, the default: ROS34PW2 at 50 ms for ``roberts_flying_model``). ``"rk4"`` needs ``physics_dt``:
-        the craft's RK4 is stable below about 5.9 ms (configs/rotorcraft/roberts_flying_model.yaml).
+        The integrator (``"ros1"``, ``"ros2"``, ``"ros2t"``, ``"ros34pw2"``, ``"rk4"``; ``envs/physics_step.py``)
+        instead of the config's (None, the default: ROS34PW2 at 50 ms for ``roberts_flying_model``). ``"rk4"`` needs
+        ``physics_dt``: the craft's RK4 is stable below about 5.9 ms (configs/rotorcraft/roberts_flying_model.yaml).
     jacobian_every : int
         Physics steps per iteration matrix of the W step (default 1: every step, the registered bits; k > 1 keeps
         it k steps, ``kernels/rigid/rosenbrock.py`` ``with_jacobian_reuse``: same order, other last bits).

@@ -21,6 +21,8 @@ one O(N) elimination. Entries of the state outside the blocks (the moving cable'
 
 Methods:
 
+* ``ros1``: the linearly implicit Euler method (s = 1, gamma = 1): order 1 for any J, L-stable for the exact one;
+  one assembly and one elimination per step.
 * ``ros2``: Verwer, Spee, Blom & Hundsdorfer (1999), SIAM J. Sci. Comput. 20(4), gamma = 1 + 1/sqrt(2): order 2
   for any J, L-stable for the exact one; two stages (one assembly, one right-hand side, two eliminations).
 * ``ros2t``: the same with gamma = 1/4: order 2 for any J, A-stable and |R(iy)| = 1 for the exact one (not
@@ -89,6 +91,11 @@ ROS2 = transformed_tableau(_G2, np.array([[0.0, 0.0], [1.0, 0.0]]), np.array([[0
 #: Through the apex whip it is no better than ROS34PW2 (docs/work_precision.md, "The apex whip's modes").
 ROS2T = transformed_tableau(0.25, np.array([[0.0, 0.0], [1.0, 0.0]]), np.array([[0.0, 0.0], [-0.5, 0.0]]),
                             np.array([0.5, 0.5]), np.array([1.0, 0.0]))
+#: ROS1 (``ros1``), the linearly implicit Euler method (Rosenbrock's one-stage method: Hairer & Wanner II, IV.7,
+#: (7.4') with s = 1, gamma = 1): (I - h J) U = h f(t, y0), y1 = y0 + U. Order 1 for any J (a W-method: its one
+#: order condition b1 = 1 holds whatever J), L-stable for the exact one (R(z) = 1 / (1 - z)); one assembly, no
+#: further right-hand side, one elimination per step. No embedded method (mhat = 0: fixed steps only).
+ROS1 = transformed_tableau(1.0, np.zeros((1, 1)), np.zeros((1, 1)), np.array([1.0]), np.array([0.0]))
 #: ROS34PW2 (Rang & Angermann 2005, BIT 45, table 4.2): 4 stages, order 3 for any J (a W-method), stiffly
 #: accurate and L-stable for the exact one; embedded method of order 2.
 _G34 = 0.435866521508459

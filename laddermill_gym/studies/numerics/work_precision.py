@@ -244,7 +244,10 @@ def add_parser(sub) -> argparse.ArgumentParser:
                    help="also run the fixed-step W-methods with their iteration matrix kept K steps (rows "
                    "METHOD/jK; 1: built every step, the rows always run; default 1)")
     p.add_argument("--time", type=float, default=5.0, help="simulated time per run [s] (default 5)")
-    p.add_argument("--samples", type=int, default=20, help="times in the RMS error (default 20)")
+    p.add_argument("--samples", type=int, default=20,
+                   help="output times: the RMS error and the controller errors are read there (default 20); closed "
+                   "loop, --time / --samples = the control period reads every period (coarser samples can miss the "
+                   "swing of a kept matrix: docs/work_precision_closed_loop.md)")
     p.add_argument("--repeats", type=int, default=3, help="timed repeats per run, median taken (default 3)")
     p.add_argument("--n-dt", type=int, default=7, help="RK4 steps on the grid (halving every two; default 7)")
     p.add_argument("--element-length", type=float, default=25.0,
