@@ -172,5 +172,13 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
                 'ladder_chain at 0.025 s and laddermill at 0.0167 s under the LQR, 10 s',
                 ('runs to the end but misses the tolerances: 4.6 % in tension and 0.075 rad in attitude (a growing '
                  'cable mode;', 'breaks down at 0.33 s (2026-11-30, f45b8d3).')),
+        # the mill's pay-out under ros1 (/tmp script: the closed loop of the study, states at 10 s against DP5(4) at
+        # 1e-10); h a t / 2 = 0.05 x (2 / 30) x 10 / 2 = 0.0167 m worked from the scene's schedule
+        History('2026-12-06', 'a one-off run of the mill closed loop with ros1 and ros2 (0bff11b)',
+                'laddermill under the LQR, 10 s, the station state at the end against DP5(4) at 1e-10',
+                ('(ds/dt = V(t), on the schedule\'s ramp of 2/30 m/s^2) by explicit Euler, and s lags by h a t / 2: '
+                 '1.7 cm at 10 s.', 'A one-off run of the same closed loop (2026-12-06, 0bff11b) found s off by '
+                 '1.66e-2 m at 0.05 s and 8.3e-3 m at 0.025 s, where ROS2 is exact to 2e-15 m.',
+                 "The first element's rest length, 7 m plus s,")),
     ),
 )
