@@ -1,5 +1,6 @@
-"""ROS1, the linearly implicit Euler method (``ros1``): tableau, order for any Jacobian, stability function, the
-compiled step on a scene, its iteration matrix kept over steps.
+"""ROS1, the linearly implicit Euler method (``ros1``): tableau, order for any Jacobian, stability function,
+its iteration matrix kept over steps (the compiled step's order on the tethered wing and batch copies against
+single runs: tests/test_rosenbrock.py).
 
 Oracles: the method's closed form y1 = y0 + (I - h J)^-1 h f(t0, y0) (Hairer & Wanner, Solving ODEs II, IV.7 with
 s = 1, gamma = 1) evaluated with numpy; scipy's DOP853 on a small ODE; R(z) = 1 / (1 - z) for y' = lambda y; our DP5(4)
@@ -7,13 +8,10 @@ at tight tolerances on the tethered wing (itself checked against scipy's DOP853 
 """
 
 import numpy as np
-import pytest
 from scipy.integrate import solve_ivp
 
 from laddermill_gym.kernels.rigid.rosenbrock import ROS1
-from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, W_METHODS
-from laddermill_gym.sim.simulator import IntegratorSettings
 from laddermill_gym.studies.numerics.scenes import build_simulator, with_settings
 
 
@@ -69,40 +67,6 @@ def test_stability_function_is_one_over_one_minus_z():
     # at z = -1e8 the formula's 1 + z / (1 - z) cancels terms of size 1: a few units in the last place of 1
     np.testing.assert_allclose(stability_function_w(ROS1, zs), 1.0 / (1.0 - zs), rtol=1e-12, atol=1e-14)
     assert np.all(np.abs(stability_function_w(ROS1, 1j * np.array([0.1, 1.0, 10.0]))) < 1.0)
-
-
-def test_observed_order_on_the_tethered_wing():
-    """The compiled ROS1 step on the tethered wing (cable, aerodynamics, the bodies' load Jacobian): halving a step of
-    2.5 ms halves the wing position error (order 1; measured ratio printed, pytest -s)."""
-    base = build_simulator("tethered_wing")
-    rng = np.random.default_rng(0)
-    x0 = base.initial_state.copy()
-    x0[7 + 1] += 0.2 * rng.normal()
-    x0[10] += 0.02 * rng.normal()
-    ref = with_settings(base, state=x0, method="dp54")
-    ref.advance_to(2.0, rtol=1e-12, atol=1e-12)
-    errs = []
-    for h in (0.0025, 0.00125):
-        sim = with_settings(base, state=x0, method="ros1", dt=h)
-        sim.step(n_steps=int(round(2.0 / h)))
-        errs.append(np.max(np.abs(sim.wing_positions() - ref.wing_positions())))
-    print(f"ros1: wing position errors {errs[0]:.3g}, {errs[1]:.3g} m: ratio per halving {errs[0] / errs[1]:.3g}")
-    assert 1.7 < errs[0] / errs[1] < 2.3, errs
-
-
-@pytest.mark.parametrize("every", [1, 4])
-def test_batch_copies_equal_single_runs_bit_for_bit(every):
-    settings = IntegratorSettings(method="ros1", dt=0.05, jacobian_every=every)
-    base = build_simulator("tethered_wing", method="ros1", dt=0.05, jacobian_every=every)
-    batch = BatchSimulator(base.assembly, 2, settings)
-    batch.states[:] = base.initial_state
-    batch.controls[:] = base.initial_controls
-    batch.controls[1, 0] += 0.01  # a different elevator on copy 1
-    batch.step(40)
-    for b in range(2):
-        sim = with_settings(base, controls=batch.controls[b])
-        sim.step(n_steps=40)
-        assert np.array_equal(sim.state, batch.states[b])
 
 
 def test_a_kept_iteration_matrix_stays_first_order_close():
