@@ -183,6 +183,8 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
                 ('(ds/dt = V(t), on the schedule\'s ramp of 2/30 m/s^2) by explicit Euler, and s lags by h a t / 2: '
                  '1.7 cm at 10 s.', 'A one-off run of the same closed loop (2026-12-06, 0bff11b) found s off by '
                  '1.66e-2 m at 0.05 s and 8.3e-3 m at 0.025 s, where ROS2 is exact to 2e-15 m.',
-                 "The first element's rest length, 7 m plus s,")),
+                 "The first element's rest length, 7 m plus s,", 'Two one-off checks did not isolate it.',
+                 "moves the power by 116 %:", 'A schedule held at 0.667 m/s from the start',
+                 'leaves even RK4 at 0.0125 s 1.3 % off in power.')),
     ),
 )
