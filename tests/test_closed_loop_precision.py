@@ -101,7 +101,7 @@ def test_kept_matrix_rows():
                        progress=False, controllers=("lqr",), jacobian_every=(1, 4))
     rows = {(r["method"], r["dt_s"]): r for r in res["rows"]}
     kept, every = rows[("ros34pw2/j4", 0.05)], rows[("ros34pw2", 0.05)]
-    assert {m for m, _ in rows} >= {"ros2/j4", "ros2t/j4", "ros34pw2/j4"}
+    assert {m for m, _ in rows} >= {"ros1/j4", "ros2/j4", "ros2t/j4", "ros34pw2/j4"}
     assert kept["status"] == every["status"] == "ok" and kept["meets_controller"]
     assert 0.0 < kept["err_max_pos_m"] != every["err_max_pos_m"]
     with pytest.raises(ValueError, match="--jacobian-every = 0"):

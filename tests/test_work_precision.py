@@ -57,7 +57,7 @@ def test_command_writes_outputs(tmp_path):
                     "--n-dt", "2", "--out", str(tmp_path), "--quiet"]) == 0
     with open(tmp_path / "tethered_wing.csv", newline="") as fh:
         rows = list(csv.DictReader(fh))
-    assert {r["method"] for r in rows} == {"rk4", "dp54", "ros2", "ros2t", "ros34pw2", "ros34pw2a"}
+    assert {r["method"] for r in rows} == {"rk4", "dp54", "ros1", "ros2", "ros2t", "ros34pw2", "ros34pw2a"}
     assert all(r["err_max_pos_rel"] != "" for r in rows if r["status"] == "ok")
     assert json.loads((tmp_path / "tethered_wing.json").read_text())["scene"] == "tethered_wing"
     assert (tmp_path / "tethered_wing.png").stat().st_size > 1000
