@@ -176,15 +176,23 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
                 'ladder_chain at 0.025 s and laddermill at 0.0167 s under the LQR, 10 s',
                 ('runs to the end but misses the tolerances: 4.6 % in tension and 0.075 rad in attitude (a growing '
                  'cable mode;', 'breaks down at 0.33 s (2026-11-30, f45b8d3).')),
-        # the mill's pay-out under ros1 (/tmp script: the closed loop of the study, states at 10 s against DP5(4) at
-        # 1e-10); h a t / 2 = 0.05 x (2 / 30) x 10 / 2 = 0.0167 m worked from the scene's schedule
-        History('2026-12-06', 'a one-off run of the mill closed loop with ros1 and ros2 (0bff11b)',
-                'laddermill under the LQR, 10 s, the station state at the end against DP5(4) at 1e-10',
-                ('(ds/dt = V(t), on the schedule\'s ramp of 2/30 m/s^2) by explicit Euler, and s lags by h a t / 2: '
-                 '1.7 cm at 10 s.', 'A one-off run of the same closed loop (2026-12-06, 0bff11b) found s off by '
-                 '1.66e-2 m at 0.05 s and 8.3e-3 m at 0.025 s, where ROS2 is exact to 2e-15 m.',
-                 "The first element's rest length, 7 m plus s,", 'Two one-off checks did not isolate it.',
-                 "moves the power by 116 %:", 'A schedule held at 0.667 m/s from the start',
-                 'leaves even RK4 at 0.0125 s 1.3 % off in power.')),
+        # the mill's pay-out under ros1 (/tmp scripts: the closed loop of the study, states against DP5(4) at 1e-10,
+        # errors at every control period); h a t / 2 = 0.05 x (2 / 30) x 10 / 2 = 0.0167 m from the scene's schedule
+        History('2026-12-06', 'one-off runs of the mill closed loop with ros1 and ros2 (0bff11b)',
+                'laddermill under the LQR, 10 s: the station state at the end; ros1 with s reset to t^2 / 30 after '
+                'every step; s swapped afterwards; a schedule held at 0.667 m/s',
+                ('Most of it comes from the station\'s pay-out.', '(ds/dt = V(t), on the schedule\'s ramp of 2/30 '
+                 'm/s^2) by explicit Euler, and s lags by h a t / 2: 1.7 cm at 10 s.',
+                 "The first element's rest length, 7 m plus s,",
+                 'One-off runs of the same closed loop (2026-12-06, 0bff11b) found s off by 1.66e-2 m at 0.05 s and '
+                 '8.3e-3 m at 0.025 s, where ROS2 is exact to 2e-15 m.',
+                 'With s set to its exact value t^2 / 30 after every step (a script, not an option), at 0.05 s is '
+                 '0.32 % off in power instead of 1.16 %, and at 0.025 s 0.049 %; its other errors barely move (1.5e-3 '
+                 'in tension, 6.9e-3 m, 6.1e-4 rad).',
+                 "moves the power by 116 %,", 'a schedule held at 0.667 m/s from the start,',
+                 'leaves even RK4 at 0.0125 s 1.3 % off in power.',
+                 'With s exact and the matrix kept 2 steps it is 0.90 % off in power; kept 4 2.2 % and kept 8 4.8 %',
+                 "would meet the mill's tolerances at 0.05 s every step (3.7x) and kept 2 steps (5.4x, by the CPU "
+                 'time of the run above; narrowly).')),
     ),
 )
