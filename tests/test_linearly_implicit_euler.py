@@ -13,25 +13,7 @@ from scipy.integrate import solve_ivp
 from laddermill_gym.kernels.rigid.rosenbrock import ROS1
 from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, W_METHODS
 from laddermill_gym.studies.numerics.scenes import build_simulator, with_settings
-
-
-def pendulum(t, y):
-    """A damped, forced pendulum: nonlinear and non-autonomous."""
-    return np.array([y[1], -np.sin(y[0]) - 0.1 * y[1] + 0.3 * np.cos(1.3 * t)])
-
-
-def pendulum_jac(t, y):
-    return np.array([[0.0, 1.0], [-np.cos(y[0]), -0.1]])
-
-
-def transformed_step(t, y, h, tableau, J):
-    """One step of the transformed form (7.4') with ``tableau``, the form the kernels use."""
-    gamma, al, a, c, m, _ = tableau
-    W = np.eye(y.size) / (gamma[0] * h) - J
-    U = np.zeros((m.size, y.size))
-    for i in range(m.size):
-        U[i] = np.linalg.solve(W, pendulum(t + al[i] * h, y + a[i] @ U) + (c[i] @ U) / h)
-    return y + m @ U
+from tests.test_rosenbrock import pendulum, pendulum_jac, transformed_step
 
 
 def test_ros1_is_registered_as_a_fixed_step_w_method():
