@@ -21,8 +21,8 @@ one O(N) elimination. Entries of the state outside the blocks (the moving cable'
 
 Methods:
 
-* ``ros1``: the linearly implicit Euler method (s = 1, gamma = 1): order 1 for any J, L-stable for the exact one;
-  one assembly and one elimination per step.
+* ``ros1``: the linearly implicit Euler method (s = 1, gamma = 1), its stage at the step's mid-time: order 1 for
+  any J, L-stable for the exact one; one assembly and one elimination per step.
 * ``ros2``: Verwer, Spee, Blom & Hundsdorfer (1999), SIAM J. Sci. Comput. 20(4), gamma = 1 + 1/sqrt(2): order 2
   for any J, L-stable for the exact one; two stages (one assembly, one right-hand side, two eliminations).
 * ``ros2t``: the same with gamma = 1/4: order 2 for any J, A-stable and |R(iy)| = 1 for the exact one (not
@@ -92,10 +92,15 @@ ROS2 = transformed_tableau(_G2, np.array([[0.0, 0.0], [1.0, 0.0]]), np.array([[0
 ROS2T = transformed_tableau(0.25, np.array([[0.0, 0.0], [1.0, 0.0]]), np.array([[0.0, 0.0], [-0.5, 0.0]]),
                             np.array([0.5, 0.5]), np.array([1.0, 0.0]))
 #: ROS1 (``ros1``), the linearly implicit Euler method (Rosenbrock's one-stage method: Hairer & Wanner II, IV.7,
-#: (7.4') with s = 1, gamma = 1): (I - h J) U = h f(t, y0), y1 = y0 + U. Order 1 for any J (a W-method: its one
-#: order condition b1 = 1 holds whatever J), L-stable for the exact one (R(z) = 1 / (1 - z)); one assembly, no
-#: further right-hand side, one elimination per step. No embedded method (mhat = 0: fixed steps only).
+#: (7.4') with s = 1, gamma = 1), its right-hand side taken at the step's middle: (I - h J) U = h f(t + h/2, y0),
+#: y1 = y0 + U, with J the state Jacobian only (no f_t column). Order 1 for any J (a W-method: y(t + h) - y1 =
+#: h^2 (f_y / 2 - J) f + O(h^3), whatever J), L-stable for the exact one (R(z) = 1 / (1 - z)); one assembly, no
+#: further right-hand side, one elimination per step. The mid-time makes the h^2 f_t part of the local error vanish:
+#: a rate that depends on time alone (the station's scheduled pay-out, ds/dt = V(t)) is integrated by the midpoint
+#: rule, exact on the schedule's linear pieces, where f(t, y0) was explicit Euler and lagged the mill's ramp by
+#: h a t / 2 (docs/work_precision_closed_loop.md). No embedded method (mhat = 0: fixed steps only).
 ROS1 = transformed_tableau(1.0, np.zeros((1, 1)), np.zeros((1, 1)), np.array([1.0]), np.array([0.0]))
+ROS1 = (ROS1[0], np.array([0.5])) + ROS1[2:]
 #: ROS34PW2 (Rang & Angermann 2005, BIT 45, table 4.2): 4 stages, order 3 for any J (a W-method), stiffly
 #: accurate and L-stable for the exact one; embedded method of order 2.
 _G34 = 0.435866521508459
@@ -253,7 +258,8 @@ def w_step(t, x, u, dt, M, W, tableau):
     nbk = M.order.size
     for i in range(ns):
         xp[i] = x[i]
-    if model_assemble(M.kind, t, x, u, f, M, W) != 0:
+    # the first stage's time: t for every method whose alpha_1 is 0, the step's middle for ros1 (ROS1 below)
+    if model_assemble(M.kind, t + alpha[0] * dt, x, u, f, M, W) != 0:
         return SINGULAR
     copy_blocks(W.D, W.U, W.Dm, W.Um, M.order, M.bsz)
     for k in range(W.Rw.shape[0]):
@@ -264,7 +270,9 @@ def w_step(t, x, u, dt, M, W, tableau):
         return SINGULAR
     ut0, ut1, ut2 = 0.0, 0.0, 0.0  # the stages' time increments (the autonomised time's entries of U_i)
     for st in range(s):
-        rt = 1.0
+        # the time column's weight: 1 (autonomised time), 0 for a first stage taken at a later time (ros1's
+        # mid-time stage has its time derivative from the midpoint instead: no h^2 f_t term)
+        rt = 1.0 if st > 0 or alpha[0] == 0.0 else 0.0
         for j in range(st):
             rt += (c[st, j] / dt) * (ut0 if j == 0 else (ut1 if j == 1 else ut2))
         if st == 0:
