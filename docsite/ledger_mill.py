@@ -228,7 +228,7 @@ FEATURES = Covered(  # a summary of the other pages: their groups check what it 
         'the 0.01 rad direction step at 1 s; reward', "Open loop with the paper's 0.01 rad direction step",
         'At 2 m/s it is periodic with',
         "the rigid mill's 66.1 kW (no tail",
-        'The one-stage (linearly implicit Euler, order 1)',  # the method's published order
+        "The one-stage (linearly implicit Euler at the step's mid-time, order 1)",  # the method's published order
     ),
     timings=(
         # dated on docs/benchmarks.md and the pages they summarise
@@ -238,8 +238,8 @@ FEATURES = Covered(  # a summary of the other pages: their groups check what it 
         '9.7-12.6x, the mill over 5 s 6.1x with ROS34PW2 and 9.8x with ROS2, over 10 s 3.4x with the error-controlled '
         'at rtol 3e-3).',
         # work_precision_closed_loop.md's every-period runs (2026-12-06, --long wp_every_period)
-        'with its matrix kept 8 steps, it meets the controller tolerances on the chain 6.30x faster than RK4 in CPU '
-        'time, on the mill 4.61x',
+        'under the LQR it meets the controller tolerances on the chain 6.10x faster than RK4 in CPU time (its matrix '
+        'kept 8 steps), on the mill 5.34x (kept 2)',
         'from its periodic stationary operating point, found in plane once per process (about 20-30 s)',
         'trains through the same harness (20 min:',
         '8.7x real time at 1 m and 335x at 70 m on one thread ( );',
