@@ -110,6 +110,9 @@ WORK_PRECISION_CLOSED_LOOP = Covered(
         '**On the mill 5x is met closed loop too: with its matrix kept 2 steps, 5.34x** at 0.05 s.',
         'the same ros2t kept 8 run was within 1 %, at 4.70x.',
         '2026-12-06 05:18-05:29, 644 s, nothing else running; CPU times are the measure):',
+        # the same study on the mill with --jacobian-every 1 2 --repeats 7 (2026-12-06 06:13-06:24, one thread)
+        "The mill's rows again with each run's CPU time the least of 7 (", ', otherwise the command above; 2026-12-06 '
+        '06:13-06:24, nothing else running):', 'kept 2 at 0.05 s 5.18x (wall 5.03x), every step 3.73x.',
         # the kept-matrix runs (2026-11-30 04:05-04:13, one thread)
         'one thread, load 5.5-9:',
         '# 8 min',
