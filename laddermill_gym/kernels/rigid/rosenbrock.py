@@ -258,7 +258,7 @@ def w_step(t, x, u, dt, M, W, tableau):
     nbk = M.order.size
     for i in range(ns):
         xp[i] = x[i]
-    # the first stage's time: t for every method whose alpha_1 is 0, the step's middle for ros1 (ROS1 below)
+    # the first stage's time: t for every method whose alpha_1 is 0, the step's middle for ros1 (ROS1 above)
     if model_assemble(M.kind, t + alpha[0] * dt, x, u, f, M, W) != 0:
         return SINGULAR
     copy_blocks(W.D, W.U, W.Dm, W.Um, M.order, M.bsz)
