@@ -60,11 +60,13 @@ from laddermill_gym.kernels.rigid.cable_jacobian import add_cable_stiffness, add
 _FM = {"contract", "nsz", "arcp"}
 
 
-def transformed_tableau(gamma: float, alpha: np.ndarray, gam: np.ndarray, b: np.ndarray, bhat: np.ndarray):
+def transformed_tableau(gamma: float, alpha: np.ndarray, gam: np.ndarray, b: np.ndarray, bhat: np.ndarray,
+                        stage_times: np.ndarray | None = None):
     """(gamma (1,), stage times alpha_i (s,), a (s, s), c (s, s), m (s,), mhat (s,)) of the transformed form (Hairer &
     Wanner (7.4')) from a method's published coefficients: alpha (s, s) strictly lower, gam (s, s) strictly lower
     (gamma on the diagonal implied), weights b (s,) and the embedded method's bhat (s,). With G = gam + gamma I:
-    a = alpha G^-1, c = diag(1/gamma) - G^-1, m = b G^-1, mhat = bhat G^-1."""
+    a = alpha G^-1, c = diag(1/gamma) - G^-1, m = b G^-1, mhat = bhat G^-1. The stage times are alpha's row sums
+    unless ``stage_times`` (s,) is given (``ros1``'s mid-time stage)."""
     s = b.size
     G = np.tril(gam, -1) + gamma * np.eye(s)
     Gi = np.linalg.inv(G)
@@ -72,7 +74,8 @@ def transformed_tableau(gamma: float, alpha: np.ndarray, gam: np.ndarray, b: np.
     c = np.tril(np.eye(s) / gamma - Gi, -1)
     # gamma as a one-element array: numba's parallel (prange) lowering passes a tuple argument to its worker
     # function element by element and accepts arrays, not scalars, inside it (a float there crashed the compiler)
-    return (np.array([float(gamma)]), np.tril(alpha, -1).sum(axis=1), np.ascontiguousarray(np.tril(a, -1)),
+    times = np.tril(alpha, -1).sum(axis=1) if stage_times is None else np.array(stage_times, dtype=float)
+    return (np.array([float(gamma)]), times, np.ascontiguousarray(np.tril(a, -1)),
             np.ascontiguousarray(c), np.ascontiguousarray(b @ Gi), np.ascontiguousarray(bhat @ Gi))
 
 
@@ -99,8 +102,8 @@ ROS2T = transformed_tableau(0.25, np.array([[0.0, 0.0], [1.0, 0.0]]), np.array([
 #: a rate that depends on time alone (the station's scheduled pay-out, ds/dt = V(t)) is integrated by the midpoint
 #: rule, exact on the schedule's linear pieces, where f(t, y0) was explicit Euler and lagged the mill's ramp by
 #: h a t / 2 (docs/work_precision_closed_loop.md). No embedded method (mhat = 0: fixed steps only).
-ROS1 = transformed_tableau(1.0, np.zeros((1, 1)), np.zeros((1, 1)), np.array([1.0]), np.array([0.0]))
-ROS1 = (ROS1[0], np.array([0.5])) + ROS1[2:]
+ROS1 = transformed_tableau(1.0, np.zeros((1, 1)), np.zeros((1, 1)), np.array([1.0]), np.array([0.0]),
+                           stage_times=np.array([0.5]))
 #: ROS34PW2 (Rang & Angermann 2005, BIT 45, table 4.2): 4 stages, order 3 for any J (a W-method), stiffly
 #: accurate and L-stable for the exact one; embedded method of order 2.
 _G34 = 0.435866521508459
