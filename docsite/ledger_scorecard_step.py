@@ -51,6 +51,14 @@ SCORECARD_STEP = Covered(
         'three runs (2026-12-05 17:27 UTC, load 1.4, two threads), 279,017 / 280,821 / 278,013 env steps/s against '
         "v0's 269,347 / 252,452 / 261,537 in the same runs. Its cold start took 13.6 s and its warm start 0.64 s ( , "
         '2026-12-05).',
+        # the bit-preserving right-hand side attempts (2026-12-06, znver4): perf's libm share, the stack stores
+        # counted in w_advance_one's machine code, env_step_cost alternated with a worktree (one thread)
+        "keeping v0's bits (2026-12-06, AMD EPYC, znver4).", "vector env at 512 copies on one thread put 11 % of the "
+        "process's samples (its start included) in libm (sincos 5.3 %, atan2 2.6 %, pow 1.5 %, exp 1.1 %)",
+        'holds about 1,500 stack stores for '
+        'them per step (about 0.25 us at two stores per cycle; the 450 that inlining removes,',
+        "gave the wing's vector step 7.59 / 7.72 / 7.29 us per copy against 7.55 / 7.58 / 7.81 before, the "
+        "rotorcraft's 27.20 / 26.11 / 25.86 against 25.88 / 25.49 / 25.24; not kept.",
     ),
     derived=(
         '(h lambda = -0.6 at the trim)',  # -24 1/s x 0.025 s
