@@ -10,6 +10,8 @@ bit for bit (tests/test_rotorcraft_vector.py checks it), as the wing environment
 
 from __future__ import annotations
 
+import dataclasses
+import warnings
 from collections import namedtuple
 
 import numpy as np
@@ -17,7 +19,7 @@ import numpy as np
 from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.envs import kernel_warmup
 from laddermill_gym.envs.actions import clip_actions
-from laddermill_gym.envs.physics_step import env_physics_settings, jacobian_settings
+from laddermill_gym.envs.physics_step import env_physics_settings, jacobian_settings, stable_rk4_step
 from laddermill_gym.envs.rotorcraft.observation import OBS_Y, craft_observation_bounds
 from laddermill_gym.envs.rotorcraft.settings import (
     InitialNoise,
@@ -59,6 +61,7 @@ from laddermill_gym.rotorcraft.craft_observe import (
     launch_craft_step_observe,
 )
 from laddermill_gym.sim.reports import ground_stop_text
+from laddermill_gym.sim.stable_step import UnstableStepWarning
 
 __all__ = ["CraftTask", "CRAFT_FAILURES", "CraftScene"]
 
@@ -102,7 +105,10 @@ class CraftTask(TaskCore):
     physics_step : str, optional
         The integrator (``"ros1"``, ``"ros2"``, ``"ros2t"``, ``"ros34pw2"``, ``"rk4"``; ``envs/physics_step.py``)
         instead of the config's (None, the default: ROS34PW2 at 50 ms for ``roberts_flying_model``). ``"rk4"`` needs
-        ``physics_dt``: the craft's RK4 is stable below about 5.9 ms (configs/rotorcraft/roberts_flying_model.yaml).
+        ``physics_dt``: the craft's RK4 is stable below about 5.9 ms (configs/rotorcraft/roberts_flying_model.yaml); a
+        ``physics_dt`` past ``ENV_STEP_MARGIN`` of its stable step estimated at the trim in the strongest wind of the
+        disturbances is replaced by the largest whole fraction of the control period below it, with an
+        UnstableStepWarning (``envs/physics_step.py``; the note in ``physics_step_note``), as in the wing envs.
     jacobian_every : int
         Physics steps per iteration matrix of the W step (default 1: every step, the registered bits; k > 1 keeps
         it k steps, ``kernels/rigid/rosenbrock.py`` ``with_jacobian_reuse``: same order, other last bits).
@@ -149,6 +155,14 @@ class CraftTask(TaskCore):
             cfg = self.craft.config
             # physics_step: another integrator, one step per control period for a W-method (None: the config's)
             settings = env_physics_settings(cfg.settings, physics_step, physics_dt, self.control_dt)
+            self.physics_step_note = ""
+            if settings.method == "rk4":  # past RK4's stable step (about 6 ms): finer, with a warning, as the wings
+                probe = CraftSimulator(cfg, self.craft.assembly, self.craft.layout, self.x_trim, self.u_trim)
+                dt, self.physics_step_note = stable_rk4_step(probe, settings.dt, self.control_dt, self.disturbances,
+                                                             self.episode_time, self.wind_dt)
+                if self.physics_step_note:
+                    warnings.warn(f"{self.env_name}: {self.physics_step_note}", UnstableStepWarning, stacklevel=2)
+                    settings = dataclasses.replace(settings, dt=dt)
             self.n_substeps = whole_multiple(self.control_dt, settings.dt, control_dt)
             # the W step's iteration matrix kept for jacobian_every physics steps (1: every step, the registered bits)
             self._settings = (settings if type(jacobian_every) is int and jacobian_every == 1  # True, 1.0: refused
