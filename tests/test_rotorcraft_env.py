@@ -206,7 +206,7 @@ def test_open_loop_controller_holds_trim():
     np.testing.assert_allclose(make_controller("open_loop", RC).predict(obs)[0], env.trim_action)
 
 
-def _jacobian_eigenvalues(env):
+def jacobian_eigenvalues(env):
     """Eigenvalues of d(rhs)/dx at the trim by central differences on the simulator's rhs."""
     sim, x, u = env.sim, np.array(env.x_trim), np.array(env.u_trim)
     n = x.size
@@ -226,7 +226,7 @@ def test_open_loop_lateral_instability_matches_linear_growth_rate():
     numerical Jacobian within 25 % and 15 %."""
     env = RotorcraftEnv(**dict(ENV_IDS[RC], episode_time=60.0))
     assert env.craft.config.wind.v0 == 10.0
-    ev = _jacobian_eigenvalues(env)
+    ev = jacobian_eigenvalues(env)
     lam = ev[np.argmax(ev.real)]
     assert lam.real > 0 and abs(lam.imag) > 0.1  # one unstable oscillatory mode
     assert np.sum(ev.real > 1e-6) == 2  # ... and only that pair

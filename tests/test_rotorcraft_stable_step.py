@@ -15,6 +15,7 @@ import pytest
 import laddermill_gym  # noqa: F401  (registers the ids)
 from laddermill_gym.envs.physics_step import ENV_STEP_MARGIN
 from laddermill_gym.sim.stable_step import UnstableStepWarning
+from tests.test_rotorcraft_env import jacobian_eigenvalues
 
 RC = "laddermill_gym/Rotorcraft-v0"
 
@@ -39,17 +40,9 @@ def _rk4_limit(lam: complex) -> float:
 
 
 def _stable_step(task) -> float:
-    """RK4's stable step [s] at the task's trim from a central-difference Jacobian of its simulator's rhs."""
-    sim, x, u = task.sim, np.array(task.x_trim), np.array(task.u_trim)
-    n = x.size
-    J = np.empty((n, n))
-    for i in range(n):
-        h = 1e-6 * max(1.0, abs(x[i]))
-        e = np.zeros(n)
-        e[i] = h
-        J[:, i] = (sim.rhs(0.0, x + e, u) - sim.rhs(0.0, x - e, u)) / (2.0 * h)
-    lam = np.linalg.eigvals(J)
-    return min(_rk4_limit(complex(v)) for v in lam if abs(v) > 1e-9)
+    """RK4's stable step [s] at the task's trim from the eigenvalues of a central-difference Jacobian of its
+    simulator's rhs (``tests/test_rotorcraft_env.py``)."""
+    return min(_rk4_limit(complex(v)) for v in jacobian_eigenvalues(task) if abs(v) > 1e-9)
 
 
 def _episode(env, periods=200):
