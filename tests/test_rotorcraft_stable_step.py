@@ -92,3 +92,9 @@ def test_a_step_within_the_limit_is_kept():
     task = env.unwrapped.task
     assert (task.batch.settings.dt, task.n_substeps, task.physics_step_note) == (0.005, 10, "")
     env.close()
+
+
+def test_a_step_that_does_not_divide_the_period_is_refused_before_any_refinement():
+    """As in the wing envs: the step asked for must divide the control period, past RK4's limit or not."""
+    with pytest.raises(ValueError, match="not a whole multiple of the physics step 0.03 s"):
+        gym.make(RC, physics_step="rk4", physics_dt=0.03)

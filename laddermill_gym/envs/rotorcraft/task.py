@@ -156,6 +156,7 @@ class CraftTask(TaskCore):
             # physics_step: another integrator, one step per control period for a W-method (None: the config's)
             settings = env_physics_settings(cfg.settings, physics_step, physics_dt, self.control_dt)
             self.physics_step_note = ""
+            self.n_substeps = whole_multiple(self.control_dt, settings.dt, control_dt)  # the step asked for divides
             if settings.method == "rk4":  # past RK4's stable step (about 6 ms): finer, with a warning, as the wings
                 probe = CraftSimulator(cfg, self.craft.assembly, self.craft.layout, self.x_trim, self.u_trim)
                 dt, self.physics_step_note = stable_rk4_step(probe, settings.dt, self.control_dt, self.disturbances,
