@@ -11,11 +11,14 @@ PointMassBatch`: one kernel call per copy and control period, not one call for a
 from __future__ import annotations
 
 import functools
+import math
+import warnings
 
 import numpy as np
 
 from laddermill_gym.atmosphere.disturbances import sample_wind_field
 from laddermill_gym.envs.actions import clip_actions
+from laddermill_gym.envs.physics_step import ENV_STEP_MARGIN
 from laddermill_gym.envs.pointmass.batch import (
     POINTMASS_FAILURES,
     PointMassBatch,
@@ -39,7 +42,8 @@ from laddermill_gym.kernels.contract import (
     PU_SIZE,
 )
 from laddermill_gym.ladder.scene import load_scene
-from laddermill_gym.sim.pointmass import STATUS_TEXT
+from laddermill_gym.sim.pointmass import STATUS_TEXT, explicit_stable_dt
+from laddermill_gym.sim.stable_step import UnstableStepWarning
 
 __all__ = ["PointMassTask", "OBS_PER_KITE"]
 
@@ -50,10 +54,40 @@ OBS_PER_KITE = PKO_SIZE
 
 
 @functools.lru_cache(maxsize=8)
+def _scene(scene: str, options):
+    """``scene`` loaded at the point-mass fidelity with the ``load_scene`` options ``options``
+    (:func:`~laddermill_gym.envs.pointmass.batch.freeze`)."""
+    return load_scene(scene, fidelity="pointmass", **thaw(options))
+
+
 def _has_station(scene: str, options) -> bool:
-    """Whether ``scene`` with the ``load_scene`` options ``options`` (:func:`~laddermill_gym.envs.pointmass.batch.
-    freeze`) is a moving cable (has a station)."""
-    return load_scene(scene, fidelity="pointmass", **thaw(options)).station is not None
+    """Whether ``scene`` with the frozen ``load_scene`` options ``options`` is a moving cable (has a station)."""
+    return _scene(scene, options).station is not None
+
+
+def _stable_options(scene: str, options, control_dt: float, control_dt_shown):
+    """``options`` (frozen ``load_scene`` options) unchanged, unless the scene's step ``method`` is ``"explicit"`` and
+    its ``dt`` is past ``ENV_STEP_MARGIN`` of the string's closed-form stable step
+    (:func:`~laddermill_gym.sim.pointmass.explicit_stable_dt`, min(l0 / c, mu l0^2 / (2 DA))): then with ``dt`` the
+    largest whole fraction of the control period below it, and an UnstableStepWarning naming both (as the wing envs
+    do for RK4, ``envs/physics_step.py``; past it a run "stopped: speed limit exceeded" within a period). ValueError
+    unless the scene's step divides ``control_dt`` [s]."""
+    sc = _scene(scene, options)
+    n = int(round(control_dt / sc.dt))
+    if n < 1 or abs(n * sc.dt - control_dt) > 1e-9 * control_dt:
+        raise ValueError(f"control_dt = {control_dt_shown!r}: must be a whole number of scene steps ({sc.dt} s)")
+    if sc.method != "explicit":
+        return options
+    stable = explicit_stable_dt(sc.string)
+    limit = ENV_STEP_MARGIN * stable
+    if sc.dt <= limit:
+        return options
+    n = max(1, math.ceil(control_dt / limit - 1e-9))
+    warnings.warn(f"scene {sc.name}: dt = {sc.dt:g} s is above {ENV_STEP_MARGIN:g} x the explicit step's stable "
+                  f"step {stable:.4g} s (min(l0 / c, mu l0^2 / (2 DA)) of {sc.string.element_length:g} m elements): "
+                  f"stepping at {control_dt / n:.4g} s, {n} steps per control period", UnstableStepWarning,
+                  stacklevel=3)
+    return freeze({**thaw(options), "dt": control_dt / n})
 
 
 class PointMassTask(TaskCore):
@@ -87,7 +121,8 @@ class PointMassTask(TaskCore):
         self.breaking_factor = positive("breaking_factor", breaking_factor, "(-)")
         self.disturbances = env_disturbances(disturbances)
         self.reward_config = rc = config_from(reward, RewardConfig, "reward")
-        options = freeze({"element_length": 1.0, **(scene_options or {})})
+        options = _stable_options(str(scene), freeze({"element_length": 1.0, **(scene_options or {})}),
+                                  self.control_dt, control_dt)
         self.mill = None
         if _has_station(str(scene), options):
             if settle_time > 0:
