@@ -15,6 +15,7 @@ NUMERICS = Covered(
             (r"approaching (\d) and (\d) from below", (G % "ratio_ros2", G % "ratio_ros34pw2")),
             (r"1e-6 m/s\^2 at omega\^2 = 7e5 s\^-2 is ([\d.e-]+) m", (G % "node_offset",))),
     given=(  # the equations and methods as published, the solvers' settings, counts of unknowns
+        "the string's closed-form limit min(l0 / c, mu l0^2 / (2 DA))",  # sim/pointmass.explicit_stable_dt
         "Until 2026-12-06 the last did not",  # the day the warm-up's bits were fixed (their cause found)
         "and its 3-copy vector env's",  # the test's copy count (tests/test_cache_reproducibility.py)
         # the chain's reward check: its settings and step sizes (tests/test_fast_ids.py)
@@ -161,6 +162,9 @@ NUMERICS = Covered(
                                          'sign, 1e-4 s later', 'removed, -127 rad/s^2')),
         # the one-element wing at its trimmed start: "rk4: largest stable step 0.1141 s (... -24.4 + 0i 1/s)"
         Printed('stable_step_wing_1', ('-24 1/s, a 0.11 s limit,',)),
+        # "rk4: largest stable step 0.00619 s (set by the eigenvalue -110.7 +- 457.1i 1/s)"
+        Printed('stable_step_rotorcraft', ("(its tethers' mode, -110.7 +- 457.1i 1/s at the trim, limits RK4 to "
+                                           '0.00619 s)',)),
         # the v0 wing's trims at rest at the chain's elevators, 8 m/s: "-4.00 ... 13.64/1.28", "+1.00 ... 5.36/0.72",
         # "+2.00 ... 2.87/0.50" (were not_rerun; the page's 13.7 deg, the 2026-11-22 layout's, is today's 13.6)
         Printed('trim_chain_wing', ('(trim alpha 13.6 deg at 8 m/s)', '(alpha 5.4 deg).**',

@@ -44,6 +44,8 @@ NUMERICS_TESTS = {
                              'splits_a_step"', "4 s", "work_precision.md, features.md"),
     # numerics.md: the one-element tethered wing's stable RK4 step at its trimmed start
     "stable_step_wing_1": Long("laddermill stable-step tethered_wing --elements-per-piece 1", "3 s", "numerics.md"),
+    # numerics.md: the rotorcraft's stable RK4 step at its trim (its tethers' mode; 2026-12-06, 3 s)
+    "stable_step_rotorcraft": Long("laddermill stable-step roberts_flying_model", "3 s", "numerics.md"),
     # numerics.md: the chain's v0 wing trimmed at rest at ladder_chain's elevators -4 / +1 deg, and at +2 deg falling
     "trim_chain_wing": Long("python -m laddermill_gym.studies.mill.trim_slope --variants v0 && python -m "
                             "laddermill_gym.studies.mill.trim_slope --variants v0 --elevators -4 2", "2 s (2026-12-01)",
