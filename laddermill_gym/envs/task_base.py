@@ -79,6 +79,17 @@ def substeps_per_period(scene_name: str, settings, control_dt: float, control_dt
     return whole_multiple(control_dt, settings.dt, control_dt if control_dt_given is None else control_dt_given)
 
 
+def episode_periods(episode_time: float, control_dt: float) -> int:
+    """Control periods in an episode of ``episode_time`` [s] at ``control_dt`` [s]; ValueError naming both unless it
+    is a whole number, at least 1, to 1e-9 (before, the fraction was rounded away: an episode of 0.07 s at a 50 ms
+    period ended after 0.05 s)."""
+    n = int(round(episode_time / control_dt))
+    if n < 1 or abs(n * control_dt - episode_time) > 1e-9 * episode_time:
+        raise ValueError(f"episode_time = {episode_time!r} s is not a whole number of control periods (control_dt = "
+                         f"{control_dt!r} s: {episode_time / control_dt:.6g} periods)")
+    return n
+
+
 def whole_multiple(control_dt: float, dt: float, shown) -> int:
     """round(control_dt / dt); ValueError naming ``shown`` unless control_dt [s] is a whole multiple of dt [s]."""
     n = int(round(control_dt / dt))
@@ -149,10 +160,12 @@ class TaskCore:
         return B
 
     def _episode_times(self, control_dt, episode_time, wind_dt) -> None:
-        """control_dt, episode_time and wind_dt [s], each checked to be a finite number > 0."""
+        """control_dt, episode_time and wind_dt [s], each checked to be a finite number > 0, episode_time a whole
+        number of control periods (``n_steps_max``, :func:`episode_periods`)."""
         self.control_dt = positive("control_dt", control_dt, "s")
         self.episode_time = positive("episode_time", episode_time, "s")
         self.wind_dt = positive("wind_dt", wind_dt, "s")
+        self.n_steps_max = episode_periods(self.episode_time, self.control_dt)
 
     def _wing_limits(self, scene, span: float) -> None:
         """The reward's lateral scale [m] and the termination limits of a wing scene: lowest CG altitude [m]

@@ -118,7 +118,6 @@ class MillTask(TaskCore):
         settings = env_physics_settings(sc.settings, physics_step, physics_dt, self.control_dt)
         settings = jacobian_settings(settings, jacobian_every)  # 1: equal to the settings above (same bits)
         self.n_substeps = substeps_per_period(sc.name, settings, self.control_dt, control_dt)
-        self.n_steps_max = int(round(self.episode_time / self.control_dt))
         self.op, warmup = self._operating_point_warmup(operating_point, str(scene), options, task_kwargs)
         with kernel_warmup.stopped_on_error((warmup,)):  # a failed construction leaves no warm-up running
             rp = self.reward_config.reference_power_W

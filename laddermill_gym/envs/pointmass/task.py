@@ -141,7 +141,6 @@ class PointMassTask(TaskCore):
         self.n_substeps = int(round(self.control_dt / sc.dt))
         if self.n_substeps < 1 or abs(self.n_substeps * sc.dt - self.control_dt) > 1e-9 * self.control_dt:
             raise ValueError(f"control_dt = {control_dt!r}: must be a whole number of scene steps ({sc.dt} s)")
-        self.n_steps_max = int(round(self.episode_time / self.control_dt))
         self.n_copies = B
         self.n_wings = s.n_kites
         self.groups = groups

@@ -78,7 +78,6 @@ class PumpingTask(TaskCore):
         self.pumping, x0, u0 = pumping_start(str(config), options_key(options))
         self.scene = sc = self.pumping.scene
         self.n_substeps = substeps_per_period(sc.name, sc.settings, self.control_dt, control_dt)
-        self.n_steps_max = int(round(self.episode_time / self.control_dt))
         self.x_trim, self.u_trim = x0, u0
         asm = self.pumping.assembly
         self.winch = asm.station

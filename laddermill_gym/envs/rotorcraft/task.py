@@ -168,7 +168,6 @@ class CraftTask(TaskCore):
             # the W step's iteration matrix kept for jacobian_every physics steps (1: every step, the registered bits)
             self._settings = (settings if type(jacobian_every) is int and jacobian_every == 1  # True, 1.0: refused
                               else jacobian_settings(settings, jacobian_every))
-            self.n_steps_max = int(round(self.episode_time / self.control_dt))
             self._build_batch(B, parallel)
             if isinstance(warmup, kernel_warmup.Warmup) and warmup.wait_for(kernel_warmup.CALLEES_DONE):
                 # the W method's loop compiled here, beside the warm-up's step kernel (envs/step_callees.py)

@@ -1,0 +1,41 @@
+"""An episode is a whole number of control periods: ``episode_time`` that is not is refused, naming both, in every env
+family (``envs/task_base.episode_periods``). Before, the fraction was rounded away without a word: ``episode_time =
+0.07`` at the 50 ms period ended the episode after 0.05 s, and 10.01 after 10 s."""
+
+from __future__ import annotations
+
+import warnings
+
+import gymnasium as gym
+import numpy as np
+import pytest
+
+import laddermill_gym  # noqa: F401  (registers the ids)
+from laddermill_gym.envs.task_base import episode_periods
+
+FAMILIES = ["laddermill_gym/TetheredWing-v1", "laddermill_gym/Rotorcraft-v0", "laddermill_gym/PointMassChain-v0",
+            "laddermill_gym/LadderMill-v3", "laddermill_gym/PumpingKite-v1"]
+
+
+@pytest.mark.parametrize("env_id", FAMILIES)
+@pytest.mark.parametrize("episode_time", [0.07, 10.01])
+def test_a_fraction_of_a_period_is_refused(env_id, episode_time):
+    with pytest.raises(ValueError, match=rf"episode_time = {episode_time} s is not a whole number of control periods "
+                                         r"\(control_dt = 0.05 s: "):
+        gym.make(env_id, episode_time=episode_time)
+
+
+def test_a_whole_number_of_periods_is_the_episode():
+    """The episode ends, truncated, at the time asked for (sums of decimal times included)."""
+    assert episode_periods(0.1 + 0.2, 0.05) == 6  # 0.30000000000000004 s
+    assert episode_periods(61.0, 0.05) == 1220
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        env = gym.make("laddermill_gym/TetheredWing-v1", episode_time=0.25)
+    env.reset(seed=0)
+    action = np.zeros(env.action_space.shape, dtype=np.float32)  # 0.25 s of the zero action
+    for k in range(5):
+        _, _, term, trunc, info = env.step(action)
+        assert not term and trunc == (k == 4)
+    assert info["t"] == pytest.approx(0.25, abs=1e-12)
+    env.close()
