@@ -56,3 +56,13 @@ def test_outputs_hold_the_recorded_series(runs, tmp_path):
 def test_the_default_set_flies_the_shipped_policy_of_the_env():
     assert demo.default_controllers("laddermill_gym/LadderMill-v1") == ["open_loop", "lqr", "ppo_mill"]
     assert demo.default_controllers("laddermill_gym/LadderMill-v0") == ["open_loop", "lqr"]
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--time", "12.34"], "--time = 12.34: the step at 1 s plus it must be a whole number of control periods (0.05 s)"),
+    (["--env", "laddermill_gym/TetheredWing-v1"], "--env 'laddermill_gym/TetheredWing-v1': not a mill id"),
+])
+def test_bad_arguments_are_refused_before_any_run(argv, message, capsys):
+    with pytest.raises(SystemExit):
+        demo.main(argv)
+    assert message in capsys.readouterr().err

@@ -39,3 +39,18 @@ def test_a_whole_number_of_periods_is_the_episode():
         assert not term and trunc == (k == 4)
     assert info["t"] == pytest.approx(0.25, abs=1e-12)
     env.close()
+
+
+def test_a_training_config_names_its_file_and_field(tmp_path):
+    """A config's episode length is checked when the config loads, before any env is built."""
+    from laddermill_gym.control.rl_config import load_rl_config
+    from laddermill_gym.model.configio import CONFIG_DIR, ConfigError
+
+    text = (CONFIG_DIR / "agents" / "ppo_tethered_wing.yaml").read_text()
+    assert "\n  episode_time: " in text
+    path = tmp_path / "bad.yaml"
+    path.write_text(text.replace("\n  episode_time: ", "\n  episode_time: 10.01 #", 1))
+    with pytest.raises(ConfigError, match=r"field 'env_kwargs.episode_time' = 10.01: episode_time = 10.01 s is not a "
+                                          r"whole number of control periods") as err:
+        load_rl_config(path)
+    assert str(path) in str(err.value)

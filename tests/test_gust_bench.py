@@ -57,6 +57,10 @@ def test_shipped_suite_loads_with_every_env():
     (("seeds: [0, 1], disturbances: []", "seeds: [0, 0], disturbances: []"), "seeds"),
     (("type: DirectionStep, step: 0.05", "type: DirectionStep, stepp: 0.05"), r"disturbances\[1\].stepp"),
     (("env_kwargs: {}", "env_kwargs: {episode_time: 3.0}"), "episode_time"),
+    (("start: 0.0, duration: 3.0", "start: 0.0, duration: 3.01"),
+     r"'envs.laddermill_gym/TetheredWing-v0.scenarios\[0\].duration' = 3.01 s: episode_time = 3.01 s is not a whole "
+     r"number of control periods \(control_dt = 0.05 s: 60.2 periods\)"),
+    (("env_kwargs: {}", "env_kwargs: {control_dt: 0.4}"), r"scenarios\[0\].duration' = 3.0 s: .*\(control_dt = 0.4 s"),
 ])
 def test_bad_suites_name_file_and_field(tmp_path, edit, text):
     path = tmp_path / "bad.yaml"

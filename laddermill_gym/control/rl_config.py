@@ -18,7 +18,7 @@ from laddermill_gym.control.rl_phases import (
     read_init_from,
     read_validation,
 )
-from laddermill_gym.envs import ENV_IDS, env_arguments, task_class
+from laddermill_gym.envs import ENV_IDS, env_arguments, episode_argument_error, task_class
 from laddermill_gym.envs.rotorcraft.task import CraftTask
 from laddermill_gym.envs.task import WingTask
 from laddermill_gym.model.configio import ConfigError, Section, find_config, read_yaml
@@ -316,6 +316,11 @@ def _check_env_kwargs(s: Section, env_id: str, kwargs: dict) -> None:
             find_config(files[key], ek.text(key), f"{s.file}: field 'env_kwargs.{key}'")
         elif key in choices and not isinstance(value, list):
             ek.text(key, choices=choices[key])
+    if "episode_time" in kwargs or "control_dt" in kwargs:  # an episode is a whole number of control periods
+        why = episode_argument_error(env_id, kwargs)
+        if why:
+            key = "episode_time" if "episode_time" in kwargs else "control_dt"
+            raise ConfigError(f"{s.file}: field 'env_kwargs.{key}' = {kwargs[key]!r}: {why}")
 
 
 def load_rl_config(path: str | Path) -> RLConfig:

@@ -240,6 +240,22 @@ def registered_arguments(env_id: str, kwargs: Mapping | None = None) -> dict:
     return merge_arguments(copy.deepcopy(ENV_IDS[env_id]), kwargs or {})
 
 
+def episode_argument_error(env_id: str, kwargs: Mapping | None = None) -> str:
+    """Why ``gymnasium.make(env_id, **kwargs)`` would refuse its episode length ('' if it would not): ``episode_time``
+    not a whole number of ``control_dt`` (each the argument, else the registered value, else the task's default;
+    ``envs/task_base.episode_periods``). Lets a config or suite name its own file and field before building."""
+    from laddermill_gym.envs.task_base import episode_periods
+
+    args = registered_arguments(env_id, kwargs)
+    params = inspect.signature(task_class(env_id)).parameters
+    times = [float(args.get(k, params[k].default)) for k in ("episode_time", "control_dt")]
+    try:
+        episode_periods(*times)
+    except (TypeError, ValueError) as err:
+        return str(err)
+    return ""
+
+
 def register_envs() -> None:
     """Register :data:`ENV_IDS` with Gymnasium (idempotent), each id's entry points those of
     ``envs/registration.py`` (its classes of :data:`ENTRY_POINTS` built from :func:`registered_arguments`).

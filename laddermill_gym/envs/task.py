@@ -161,7 +161,7 @@ class WingTask(TaskCore):
         task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
         for name, v in (("control_dt", control_dt), ("episode_time", episode_time), ("wind_dt", wind_dt)):
             positive(name, v, "s")
-        episode_periods(float(episode_time), float(control_dt))  # before any warm-up starts
+        self.n_steps_max = episode_periods(float(episode_time), float(control_dt))  # before any warm-up starts
         options = physics_scene_options(scene_options, physics_step, physics_dt, control_dt)
         # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py); a third
         # shares the W method's callees (an RK4 step has none worth a process: task_warmup.step_callees)
@@ -185,7 +185,6 @@ class WingTask(TaskCore):
             self.n_substeps = int(round(control_dt / sc.settings.dt))
             self.control_dt = float(control_dt)
             self.episode_time = float(episode_time)
-            self.n_steps_max = episode_periods(self.episode_time, self.control_dt)
             self.wind_dt = float(wind_dt)
             geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid
             self.reward_config = config_from(reward, RewardConfig, "reward")

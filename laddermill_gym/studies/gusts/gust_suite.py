@@ -63,7 +63,7 @@ def _scenario(sec: Section) -> Scenario:
 def load_suite(name_or_path: str | Path) -> Suite:
     """The suite ``configs/benchmarks/<name>.yaml`` (or a YAML path), checked: known environment ids, the
     environments' arguments, unique scenario names, valid disturbances."""
-    from laddermill_gym.envs import ENV_IDS, env_arguments
+    from laddermill_gym.envs import ENV_IDS, env_arguments, episode_argument_error
 
     path = find_config("benchmarks", name_or_path, "suite")
     top = read_yaml(path)
@@ -86,6 +86,10 @@ def load_suite(name_or_path: str | Path) -> Suite:
         sec.done()
         scenarios = tuple(_scenario(Section(s, path, f"envs.{env_id}.scenarios[{i}]"))
                           for i, s in enumerate(scen_list))
+        for i, sc in enumerate(scenarios):  # an episode is a whole number of control periods (the env refuses it)
+            why = episode_argument_error(env_id, dict(kw.data, episode_time=sc.duration))
+            if why:
+                raise ConfigError(f"{path}: field 'envs.{env_id}.scenarios[{i}].duration' = {sc.duration!r} s: {why}")
         names = [s.name for s in scenarios]
         if len(set(names)) != len(names):
             raise sec.error("scenarios", names, "scenario names must be unique")

@@ -206,6 +206,24 @@ def _arguments(p) -> None:
     p.add_argument("--no-progress", action="store_true", help="no progress bars")
 
 
+def _whole_periods(env_id: str, duration: float) -> None:
+    """UsageError naming ``--time`` unless the episode (the step time plus ``duration`` [s]) is a whole number of the
+    env's control periods (``envs/task_base.episode_periods``)."""
+    import inspect
+
+    from laddermill_gym.envs import ENV_IDS
+    from laddermill_gym.envs.task import WingTask
+    from laddermill_gym.envs.task_base import episode_periods
+
+    default = inspect.signature(WingTask).parameters["control_dt"].default  # the mill ids are wing tasks
+    control_dt = float(ENV_IDS[env_id].get("control_dt", default))
+    try:
+        episode_periods(float(duration) + STEP_TIME, control_dt)
+    except ValueError:
+        raise UsageError(f"--time = {duration!r}: the step at {STEP_TIME:g} s plus it must be a whole number of "
+                         f"control periods ({control_dt:g} s)") from None
+
+
 def main(argv: list[str] | None = None) -> int:
     p = Parser(prog="laddermill demo", description=__doc__.split("\n\n")[0])
     _arguments(p)
@@ -216,6 +234,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.env not in ENV_IDS or "LadderMill" not in args.env:
             raise UsageError(f"--env {args.env!r}: not a mill id ({', '.join(i for i in ENV_IDS if 'Mill-' in i)})")
         check_number("--time", args.time, low=0, high=3600, unit="s")
+        _whole_periods(args.env, args.time)
         args.controllers = args.controllers or default_controllers(args.env)
         check_controllers(args.controllers)
     except UsageError as err:
