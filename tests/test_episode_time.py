@@ -54,3 +54,21 @@ def test_a_training_config_names_its_file_and_field(tmp_path):
                                           r"whole number of control periods") as err:
         load_rl_config(path)
     assert str(path) in str(err.value)
+
+
+@pytest.mark.parametrize("env_id", ["laddermill_gym/TetheredWing-v1", "laddermill_gym/Rotorcraft-v0",
+                                    "laddermill_gym/PointMassChain-v0"])
+def test_a_disturbance_after_the_episode_is_named(env_id):
+    """A disturbance whose earliest onset is at or after the episode's end never acts: a warning names it (one that
+    may start within the episode is silent)."""
+    late = [{"type": "DirectionStep", "step": 0.01, "time": 2.0},
+            {"type": "OneMinusCosineGust", "amplitude": 0.1, "duration": 1.0, "time": [0.5, 3.0]},
+            {"type": "OneMinusCosineGust", "amplitude": 0.1, "duration": 1.0, "time": [1.0, 3.0]}]
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        gym.make(env_id, episode_time=1.0, disturbances=late, **({"settle_time": 0.0} if "PointMass" in env_id else {}))
+    named = [str(w.message) for w in caught if "never acts" in str(w.message)]
+    assert named == ["disturbances[0] (DirectionStep, time = 2.0 s) starts at or after the episode's end "
+                     "(episode_time = 1.0 s): it never acts",
+                     "disturbances[2] (OneMinusCosineGust, time = (1.0, 3.0) s) starts at or after the episode's end "
+                     "(episode_time = 1.0 s): it never acts"]

@@ -176,7 +176,7 @@ class WingTask(TaskCore):
             if asm.dim != 3:
                 raise ValueError(f"scene {sc.name}: the environments need a 3D scene (dimension = {asm.dim})")
             substeps_per_period(sc.name, sc.settings, control_dt)
-            self.disturbances = env_disturbances(disturbances)
+            self.disturbances = env_disturbances(disturbances, float(episode_time))
             self.scene, x_trim, u_trim, self.physics_step_note = _stable_step_scene(
                 str(scene), options, (sc, x_trim, u_trim), control_dt, self.disturbances, episode_time, wind_dt)
             sc, asm = self.scene, self.scene.assembly

@@ -18,6 +18,7 @@ A task holds B copies of one system and answers the protocol those three use:
 from __future__ import annotations
 
 import math
+import warnings
 from functools import reduce
 from operator import add
 
@@ -51,15 +52,25 @@ def positive(name: str, v, unit: str) -> float:
     return float(v)
 
 
-def env_disturbances(value) -> tuple:
+def env_disturbances(value, episode_time: float | None = None) -> tuple:
     """An env's ``disturbances=`` argument as disturbances (``atmosphere.disturbance_spec.parse_disturbances``; None:
     the paper's direction step), YAML text read with the package's loader (YAML 1.2 floats such as ``1e-2`` as
-    numbers, a key given twice refused; ConfigError naming ``disturbances``)."""
+    numbers, a key given twice refused; ConfigError naming ``disturbances``). With ``episode_time`` [s], a
+    UserWarning names each one whose onset ``time`` (its earliest, for a drawn range) is at or after the episode's
+    end: it never acts."""
     if isinstance(value, str):
         value = load_yaml_text(value, "disturbances")
         if value is None:
             raise ValueError("disturbances = '': empty YAML text; give None for the default direction step")
-    return parse_disturbances(value, (DirectionStep(),))
+    out = parse_disturbances(value, (DirectionStep(),))
+    for i, d in enumerate(out if episode_time is not None else ()):
+        onset = getattr(d, "time", None)
+        first = min(onset) if isinstance(onset, (tuple, list)) else onset
+        if first is not None and first >= episode_time:
+            warnings.warn(f"disturbances[{i}] ({type(d).__name__}, time = {onset!r} s) starts at or after the "
+                          f"episode's end (episode_time = {episode_time!r} s): it never acts", UserWarning,
+                          stacklevel=3)
+    return out
 
 
 def check_copies(n_copies) -> int:
@@ -153,7 +164,7 @@ class TaskCore:
         ``termination_class``, ``noise_class``: None, an instance or a dict of its fields)."""
         B = check_copies(n_copies)
         self._episode_times(control_dt, episode_time, wind_dt)
-        self.disturbances = env_disturbances(disturbances)
+        self.disturbances = env_disturbances(disturbances, self.episode_time)
         self.reward_config = config_from(reward, self.reward_class, "reward")
         self.termination_config = config_from(termination, self.termination_class, "termination")
         self.initial_noise = config_from(initial_noise, self.noise_class, "initial_noise")

@@ -119,7 +119,7 @@ class PointMassTask(TaskCore):
                                   positive("roll_range_deg", roll_range_deg, "deg")])
         self.min_altitude = float(min_altitude)
         self.breaking_factor = positive("breaking_factor", breaking_factor, "(-)")
-        self.disturbances = env_disturbances(disturbances)
+        self.disturbances = env_disturbances(disturbances, self.episode_time)
         self.reward_config = rc = config_from(reward, RewardConfig, "reward")
         options = _stable_options(str(scene), freeze({"element_length": 1.0, **(scene_options or {})}),
                                   self.control_dt, control_dt)
