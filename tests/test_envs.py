@@ -145,6 +145,19 @@ def test_bad_actions_and_order():
     assert info["n_clipped"] == 2  # clipped to the box, and counted
 
 
+@pytest.mark.parametrize("env_id", ["laddermill_gym/TetheredWing-v1", "laddermill_gym/Rotorcraft-v0"])
+def test_reset_options_the_env_would_ignore_are_refused(env_id):
+    """The single envs take no reset options: one given (a typo, or a setting that belongs to gymnasium.make) is
+    refused by name instead of being ignored; an empty mapping or None is a plain reset."""
+    env = gym.make(env_id)
+    with pytest.raises(ValueError, match=rf"options = {{'disturbances': \[\]}}: {env_id} takes no reset options"):
+        env.reset(seed=0, options={"disturbances": []})
+    for options in ({}, None):
+        obs, _ = env.reset(seed=0, options=options)
+        assert obs.shape == env.observation_space.shape
+    env.close()
+
+
 def test_alpha_mode_servo_lag_and_achieved_alpha():
     """action_mode='alpha': the servo state follows the first-order lag in closed form,
     alpha_k = cmd + (alpha_0 - cmd) exp(-k dt / tau), and the wing settles near the commanded angle of attack
