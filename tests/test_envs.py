@@ -156,6 +156,12 @@ def test_reset_options_the_env_would_ignore_are_refused(env_id):
         obs, _ = env.reset(seed=0, options=options)
         assert obs.shape == env.observation_space.shape
     env.close()
+    venv = gym.make_vec(env_id, num_envs=2, vectorization_mode="vector_entry_point")
+    with pytest.raises(ValueError, match=r"options \['disturbances'\]: the vector env takes only 'reset_mask'"):
+        venv.reset(seed=0, options={"disturbances": [], "reset_mask": np.array([True, True])})
+    obs, _ = venv.reset(seed=0, options={"reset_mask": np.array([True, False])})
+    assert obs.shape == venv.observation_space.shape
+    venv.close()
 
 
 def test_alpha_mode_servo_lag_and_achieved_alpha():

@@ -15,6 +15,7 @@ import gymnasium as gym
 import numpy as np
 import pytest
 
+from laddermill_gym.envs.task_base import LateDisturbanceWarning
 from tests.env_cases import IDS, PMC, case_kwargs
 
 MODES = ("sync", "async", "vector_entry_point")
@@ -90,6 +91,7 @@ def test_no_gymnasium_warning_and_float32_spaces(env_id):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         warnings.simplefilter("error", UserWarning)  # Gymnasium's checker warns with UserWarning
+        warnings.simplefilter("ignore", LateDisturbanceWarning)  # the cases' direction step at 1 s: after 0.2 s
         env = gym.make(env_id, **_tiny(env_id))
         env.reset(seed=0)
         env.step(env.action_space.sample())

@@ -52,12 +52,16 @@ def positive(name: str, v, unit: str) -> float:
     return float(v)
 
 
+class LateDisturbanceWarning(UserWarning):
+    """A disturbance of an env starts at or after the end of its episode: it never acts (:func:`env_disturbances`)."""
+
+
 def env_disturbances(value, episode_time: float | None = None) -> tuple:
     """An env's ``disturbances=`` argument as disturbances (``atmosphere.disturbance_spec.parse_disturbances``; None:
     the paper's direction step), YAML text read with the package's loader (YAML 1.2 floats such as ``1e-2`` as
     numbers, a key given twice refused; ConfigError naming ``disturbances``). With ``episode_time`` [s], a
-    UserWarning names each one whose onset ``time`` (its earliest, for a drawn range) is at or after the episode's
-    end: it never acts."""
+    :class:`LateDisturbanceWarning` names each one whose onset ``time`` (its earliest, for a drawn range) is at or
+    after the episode's end: it never acts."""
     if isinstance(value, str):
         value = load_yaml_text(value, "disturbances")
         if value is None:
@@ -68,8 +72,8 @@ def env_disturbances(value, episode_time: float | None = None) -> tuple:
         first = min(onset) if isinstance(onset, (tuple, list)) else onset
         if first is not None and first >= episode_time:
             warnings.warn(f"disturbances[{i}] ({type(d).__name__}, time = {onset!r} s) starts at or after the "
-                          f"episode's end (episode_time = {episode_time!r} s): it never acts", UserWarning,
-                          stacklevel=3)
+                          f"episode's end (episode_time = {episode_time!r} s): it never acts",
+                          LateDisturbanceWarning, stacklevel=3)
     return out
 
 

@@ -93,7 +93,12 @@ class TaskVectorEnv(VectorEnv):
     # ------------------------------------------------------------------ resets
     def _reset_mask(self, options: dict | None) -> np.ndarray:
         """``options["reset_mask"]`` checked as SyncVectorEnv checks it (a (num_envs,) bool numpy array with a True
-        entry; TypeError or ValueError otherwise), or every copy."""
+        entry; TypeError or ValueError otherwise), or every copy. Any other option is refused by name (the single
+        envs take none: ``task_env.py``)."""
+        other = sorted(set(options or {}) - {"reset_mask"})
+        if other:
+            raise ValueError(f"options {other}: the vector env takes only 'reset_mask' (set disturbances, "
+                             "episode_time and the like with gymnasium.make_vec)")
         if not options or "reset_mask" not in options:
             return np.ones(self.num_envs, bool)
         mask = options["reset_mask"]
