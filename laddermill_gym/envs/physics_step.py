@@ -70,6 +70,12 @@ def stable_physics_step(scene, x: np.ndarray, u: np.ndarray, control_dt: float, 
                            wind_dt)
 
 
+def periods_below(control_dt: float, limit: float) -> int:
+    """The fewest steps n per control period of ``control_dt`` [s] with control_dt / n at most ``limit`` [s]: the
+    finer step an env takes in place of one past its stability limit (RK4 here, the point-mass explicit step)."""
+    return max(1, math.ceil(control_dt / limit - 1e-9))
+
+
 def stable_rk4_step(sim, dt: float, control_dt: float, disturbances, episode_time: float,
                     wind_dt: float) -> tuple[float, str]:
     """(physics step [s], reason) for RK4 at ``dt`` [s]: ``dt`` (reason '') if it is within ``ENV_STEP_MARGIN`` of
@@ -83,7 +89,7 @@ def stable_rk4_step(sim, dt: float, control_dt: float, disturbances, episode_tim
     limit = ENV_STEP_MARGIN * est.dt_max
     if dt <= limit:
         return dt, ""
-    n = max(1, math.ceil(control_dt / limit - 1e-9))
+    n = periods_below(control_dt, limit)
     step = control_dt / n
     lam = est.eigenvalue
     return step, (f"physics_dt = {dt:g} s is above {ENV_STEP_MARGIN:g} x RK4's estimated stable step "
