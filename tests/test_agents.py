@@ -5,6 +5,7 @@ episode ends against the native vector env, and ``agents.evaluate`` on open loop
 from __future__ import annotations
 
 import csv
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -18,7 +19,7 @@ PPO_CONFIG = "configs/agents/ppo_tethered_wing.yaml"
 
 
 def _small_config(tmp_path, **changes):
-    data = yaml.safe_load(open(PPO_CONFIG))
+    data = yaml.safe_load(Path(PPO_CONFIG).read_text())
     data.update(n_envs=4, total_timesteps=512, time_limit_minutes=2.0, checkpoint_every=256,
                 eval={"every": 256, "episodes": 2})
     data["env_kwargs"]["episode_time"] = 5.0
@@ -57,7 +58,7 @@ def test_sac_config_trains_a_few_hundred_steps(tmp_path, monkeypatch):
     from laddermill_gym.control.rl_config import load_rl_config
     from laddermill_gym.harness.train import train
 
-    data = yaml.safe_load(open("configs/agents/sac_tethered_wing.yaml"))
+    data = yaml.safe_load(Path("configs/agents/sac_tethered_wing.yaml").read_text())
     data.update(n_envs=2, total_timesteps=300, checkpoint_every=200, eval={"every": 200, "episodes": 1})
     data["hyperparameters"].update(learning_starts=100, batch_size=32, gradient_steps=1)
     data["env_kwargs"]["episode_time"] = 3.0
@@ -115,7 +116,7 @@ def test_evaluate_writes_tables_and_figure(tmp_path):
     out = tmp_path / "eval"
     assert main(["--env", TW, "--controllers", "open_loop", "lqr", "--episodes", "2", "--episode-time", "30",
                  "--direction-step", "0.05", "--out", str(out)]) == 0
-    rows = list(csv.DictReader(open(out / "summary.csv")))
+    rows = list(csv.DictReader(Path(out / "summary.csv").read_text().splitlines()))
     assert [r["controller"] for r in rows] == ["open_loop", "open_loop", "lqr", "lqr"]
     lat = {r["controller"]: float(r["max_lateral_m"]) for r in rows}
     assert lat["lqr"] < 0.2 * lat["open_loop"]
@@ -141,7 +142,7 @@ def test_laddermill_ppo_config_trains_a_few_steps(tmp_path, monkeypatch):
     from laddermill_gym.harness.train import train
 
     mill = "laddermill_gym/LadderMill-v0"
-    data = yaml.safe_load(open("configs/agents/ppo_laddermill.yaml"))
+    data = yaml.safe_load(Path("configs/agents/ppo_laddermill.yaml").read_text())
     data.update(n_envs=2, total_timesteps=128, checkpoint_every=64, eval={"every": 64, "episodes": 1})
     data["env_kwargs"].update(episode_time=1.0, scene_options={"n_wings": 11}, settle={"max_time": 100.0},
                               termination={"alpha_range_deg": [-180.0, 180.0], "max_abs_beta_deg": 90.0})

@@ -6,6 +6,7 @@ loop and LQR."""
 from __future__ import annotations
 
 import csv
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -20,7 +21,7 @@ PPO_CONFIG = "configs/agents/ppo_rotorcraft.yaml"
 
 
 def _small_config(tmp_path, env_kwargs=None, **changes):
-    data = yaml.safe_load(open(PPO_CONFIG))
+    data = yaml.safe_load(Path(PPO_CONFIG).read_text())
     data.update(n_envs=2, total_timesteps=256, time_limit_minutes=2.0, checkpoint_every=128,
                 eval={"every": 128, "episodes": 2})
     data["env_kwargs"]["episode_time"] = 2.0
@@ -44,7 +45,7 @@ def test_rl_config_checks_the_craft_arguments(tmp_path):
     for key in ("action_mode", "scene", "disturbances", "episode_tim"):  # wing arguments, sections, typos
         with pytest.raises(ConfigError, match=rf"env_kwargs\.{key}.*Rotorcraft-v0"):
             load_rl_config(_small_config(tmp_path, env_kwargs={key: 1.0}))
-    wing = yaml.safe_load(open("configs/agents/ppo_tethered_wing.yaml"))
+    wing = yaml.safe_load(Path("configs/agents/ppo_tethered_wing.yaml").read_text())
     wing["env_kwargs"]["craft"] = "roberts_flying_model"
     p = tmp_path / "wing.yaml"
     p.write_text(yaml.safe_dump(wing))
@@ -111,7 +112,7 @@ def test_evaluate_open_loop_and_lqr_on_the_craft(tmp_path):
     out = tmp_path / "eval"
     assert main(["--env", RC, "--controllers", "open_loop", "lqr", "--episodes", "2", "--episode-time", "5",
                  "--scenario", "step_0.1", "--out", str(out)]) == 0
-    rows = list(csv.DictReader(open(out / "summary.csv")))
+    rows = list(csv.DictReader(Path(out / "summary.csv").read_text().splitlines()))
     assert [r["controller"] for r in rows] == ["open_loop", "open_loop", "lqr", "lqr"]
     assert all(float(r["length_s"]) == pytest.approx(5.0) and r["failure"] == "" for r in rows)
     assert all(float(r["return"]) == pytest.approx(100.0, rel=0.05) for r in rows)  # about 1 per step

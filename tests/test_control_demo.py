@@ -6,6 +6,7 @@ run's end is the env's own termination (its failure name and reason), and the to
 """
 
 import csv
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -45,7 +46,7 @@ def test_outputs_hold_the_recorded_series(runs, tmp_path):
     with Image.open(gif) as im:
         h, w = runs[0].frames[0].shape[:2]
         assert im.size == (2 * w, h) and im.n_frames == max(len(r.frames) for r in runs)
-    rows = list(csv.DictReader(open(path)))
+    rows = list(csv.DictReader(Path(path).read_text().splitlines()))
     for r in runs:
         mine = [x for x in rows if x["controller"] == r.label]
         assert len(mine) == len(r.t_s)

@@ -6,6 +6,7 @@ selection sections are named (file, field, value)."""
 from __future__ import annotations
 
 import csv
+from pathlib import Path
 
 import pytest
 import yaml
@@ -82,7 +83,7 @@ def _phases(tmp_path, monkeypatch, selection, sequence):
     for step in range(len(sequence)):
         phases.num_timesteps = step
         phases.validate()
-    rows = list(csv.DictReader(open(tmp_path / "validation.csv")))
+    rows = list(csv.DictReader(Path(tmp_path / "validation.csv").read_text().splitlines()))
     return [int(r["selected"]) for r in rows], flown, saved, rows
 
 
@@ -121,7 +122,7 @@ def test_reselect_ranks_by_the_paired_rule(tmp_path, monkeypatch):
     monkeypatch.setattr(rs, "_load", lambda model_file, _stats: model_file.stem)
     monkeypatch.setattr(hv, "validate", lambda ctrl, *_a: dict(table[ctrl] if ctrl in table else REF))
     for sel, best in ((None, "run/step_2"), ({"rule": "paired", "penalty": 2.0}, "run/step_4")):
-        raw = yaml.safe_load(open(CONFIG))
+        raw = yaml.safe_load(Path(CONFIG).read_text())
         raw["validation"].pop("selection")
         if sel is not None:
             raw["validation"]["selection"] = sel
@@ -143,7 +144,7 @@ def test_reselect_ranks_by_the_paired_rule(tmp_path, monkeypatch):
     ("paired", r"validation\.selection must be a mapping"),
 ])
 def test_bad_selection_is_named(tmp_path, selection, match):
-    raw = yaml.safe_load(open(CONFIG))
+    raw = yaml.safe_load(Path(CONFIG).read_text())
     raw["validation"]["selection"] = selection
     p = tmp_path / "bad.yaml"
     p.write_text(yaml.safe_dump(raw))

@@ -2,6 +2,7 @@
 harness/paired_survival.py (two controllers on the same drawn episodes)."""
 
 import shutil
+from pathlib import Path
 
 import pytest
 import yaml
@@ -40,7 +41,7 @@ def test_reselect_matches_the_shipped_loader(tmp_path):
     from laddermill_gym.control.sb3_policy import SB3Controller
     from laddermill_gym.harness.validation import validate
 
-    raw = yaml.safe_load(open(CONFIG))
+    raw = yaml.safe_load(Path(CONFIG).read_text())
     raw["validation"]["episode_time"] = 3.0
     raw["validation"]["sets"] = {"ntm_ib": dict(raw["validation"]["sets"]["ntm_ib"], episodes=2),
                                  "gusts": dict(raw["validation"]["sets"]["gusts"], episodes=2)}

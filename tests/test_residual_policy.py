@@ -5,6 +5,8 @@ configs and a wrong base name what is wrong."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 import yaml
@@ -90,7 +92,7 @@ def test_set_base_refuses_another_controller(started):
 def test_config_checks(tmp_path):
     cfg = load_rl_config(CONFIG)
     assert cfg.policy == "ResidualPolicy" and cfg.init_from == "lqr" and not cfg.normalize_observations
-    data = yaml.safe_load(open(CONFIG))
+    data = yaml.safe_load(Path(CONFIG).read_text())
     for change, field in ((dict(normalize_observations=True), "init_from"), (dict(init_from=None), "policy"),
                           (dict(policy="CnnPolicy"), "policy")):
         bad = {**data, **change}
@@ -170,7 +172,7 @@ def test_the_bound_holds_for_any_weights(started, bounded):
 
 @pytest.mark.parametrize("value", [0.0, -0.1, 2.5, "tight", True, float("nan")])
 def test_bad_residual_limit_names_field_and_value(tmp_path, value):
-    data = yaml.safe_load(open(CONFIG))
+    data = yaml.safe_load(Path(CONFIG).read_text())
     data["policy_kwargs"]["residual_limit"] = value
     path = tmp_path / "bad.yaml"
     path.write_text(yaml.safe_dump(data))
@@ -182,7 +184,7 @@ def test_bad_residual_limit_names_field_and_value(tmp_path, value):
 
 
 def test_residual_limit_needs_the_residual_policy(tmp_path):
-    data = yaml.safe_load(open("configs/agents/ppo_tethered_wing.yaml"))
+    data = yaml.safe_load(Path("configs/agents/ppo_tethered_wing.yaml").read_text())
     data.setdefault("policy_kwargs", {})["residual_limit"] = 0.2
     path = tmp_path / "bad.yaml"
     path.write_text(yaml.safe_dump(data))

@@ -6,6 +6,8 @@ and bad configs name what is wrong."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 import yaml
@@ -159,7 +161,7 @@ def test_config_checks(tmp_path):
     assert (cfg.algorithm, cfg.policy, cfg.init_from, cfg.normalize_observations) == ("SAC", "ResidualSACPolicy",
                                                                                        "lqr", False)
     assert cfg.policy_kwargs["residual_limit"] == LIMIT and cfg.validation.selection.rule == "paired"
-    data = yaml.safe_load(open(CONFIG))
+    data = yaml.safe_load(Path(CONFIG).read_text())
     for change, field in ((dict(normalize_observations=True), "init_from"), (dict(init_from=None), "policy"),
                           (dict(algorithm="PPO", hyperparameters={}), "init_from")):
         bad = {**data, **change}

@@ -9,6 +9,7 @@ buffer after a short ``SAC.learn``."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -188,8 +189,8 @@ def test_bad_arguments_and_config_name_the_field(started, tmp_path):
         ResidualSACPolicy(obs_space, act_space, lambda _: 1e-3, residual_limit=0.2, residual_after_squash="yes")
     cfg = load_rl_config(CONFIG)
     assert cfg.policy_kwargs["residual_after_squash"] is True and cfg.policy_kwargs["residual_limit"] == LIMIT
-    previous = yaml.safe_load(open("configs/agents/sac_tethered_wing_residual.yaml"))
-    data = yaml.safe_load(open(CONFIG))
+    previous = yaml.safe_load(Path("configs/agents/sac_tethered_wing_residual.yaml").read_text())
+    data = yaml.safe_load(Path(CONFIG).read_text())
     changed = {k for k in set(data) | set(previous) if data.get(k) != previous.get(k)}
     assert changed == {"time_limit_minutes", "policy_kwargs"}  # every other setting as the previous run's
     assert {k for k in data["policy_kwargs"] if data["policy_kwargs"][k] != previous["policy_kwargs"].get(k)} == {
@@ -228,7 +229,7 @@ def test_a_clipped_base_gives_authority_beyond_1_plus_l(started, restore, tmp_pa
     with pytest.raises(ValueError, match="residual_base_clipped True must be true or false, and true only with"):
         ResidualSACPolicy(after.observation_space, after.action_space, lambda _: 1e-3, residual_limit=0.2,
                           residual_base_clipped=True)
-    data = yaml.safe_load(open(CONFIG))
+    data = yaml.safe_load(Path(CONFIG).read_text())
     for value, ok in ((True, True), ("yes", False)):
         path = tmp_path / "clipped.yaml"
         kwargs = {**data["policy_kwargs"], "residual_base_clipped": value}

@@ -7,6 +7,7 @@ scorecard); bad phase sections are named."""
 from __future__ import annotations
 
 import copy
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -101,7 +102,7 @@ def test_the_shipped_config_reads_its_phases():
                       "sets": {"a": {"episodes": 2, "disturbances": [{"type": "Nope"}]}}}), r"Nope"),
 ])
 def test_bad_phases_are_named(tmp_path, change, match):
-    data = yaml.safe_load(open(TW_CONFIG))
+    data = yaml.safe_load(Path(TW_CONFIG).read_text())
     data.update(change)
     data = {k: v for k, v in data.items() if v is not None}
     p = tmp_path / "bad.yaml"

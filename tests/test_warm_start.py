@@ -4,6 +4,8 @@ observations of an LQR rollout (the LQR controller itself as the oracle), and ba
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 import yaml
@@ -39,7 +41,7 @@ def test_affine_map_recovers_a_known_affine_controller():
 
 def small_ppo_config(tmp_path, n_epochs: int = 1, **changes):
     """ppo_rotorcraft.yaml cut to a few hundred steps on 2 copies (``changes`` replace top-level fields); its path."""
-    data = yaml.safe_load(open(RC_CONFIG))
+    data = yaml.safe_load(Path(RC_CONFIG).read_text())
     data.update(n_envs=2, total_timesteps=512, time_limit_minutes=1.0, checkpoint_every=256,
                 eval={"every": 256, "episodes": 1})
     data["hyperparameters"].update(n_steps=64, batch_size=64, n_epochs=n_epochs)

@@ -266,7 +266,8 @@ def main(argv: list[str] | None = None) -> int:
     if args.replot:
         if args.out is None or not (args.out / "evaluations.csv").is_file():
             p.error("--replot needs --out RUN_FOLDER with an evaluations.csv")
-        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(args.out / "evaluations.csv"))]
+        lines = (args.out / "evaluations.csv").read_text().splitlines()
+        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(lines)]
         refs = reference_returns(cfg, evaluation_env(cfg))
         print(f"wrote {plot_curve(args.out, rows, refs)}; references {refs}")
         return 0

@@ -130,7 +130,8 @@ def read_entry(path: Path | None, key: str) -> dict | None:
     if path is None or not path.is_file():
         return None
     try:
-        with np.load(path, allow_pickle=False) as z:
+        # numpy leaves the file open when it is not a zip archive; the file opened here is closed either way
+        with open(path, "rb") as fh, np.load(fh, allow_pickle=False) as z:
             data = {k: z[k] for k in z.files}
     except Exception:  # a truncated or garbled file: numpy and zipfile raise many kinds; recompute it
         return None

@@ -35,7 +35,7 @@ class Handover:
 
 def scenario(env_id: str, name: str, suite: str | Path = SUITE) -> dict:
     """The scenario ``name`` of ``env_id`` in the suite file (ValueError naming the file and the names)."""
-    data = yaml.safe_load(open(suite))
+    data = yaml.safe_load(Path(suite).read_text())
     found = {s["name"]: s for s in data["envs"].get(env_id, {}).get("scenarios", [])}
     if name not in found:
         raise ValueError(f"{suite}: no scenario {name!r} for {env_id} (scenarios: {sorted(found)})")
