@@ -74,7 +74,8 @@ WIND = Covered(
              r"s; EDC theta_e = ([\d.]+) deg", tuple(W % k for k in ("v_gust", "peak", "t_peak", "theta_e"))),
             (r"(\d+) x (\d+) x 3 floats = ([\d.]+) MB \(([\d,]+) bytes\)",
              tuple(W % k for k in ("n_xi", "n_h", "mb", "bytes"))),
-            (r"\(L_1 = (\d+) m IEC, (\d+) m MIL above 600 m\)", (W % "l1", W % "mil_scale_m")),
+            (r"\(L_1 = (\d+) m IEC; (\d+) m Dryden and (\d+) m von Karman MIL above 600 m\)",
+             (W % "l1", W % "mil_scale_m", W % "mil_scale_vk_m")),
             (r"over 20 m at f -> 0 is exp\(-12 x 0\.12 x 20 m / (\d+) m\) = ([\d.]+)\)",
              (W % "l1", W % "coherence_20m")),
             (r"\(1\.2\^3 = ([\d.]+) for", (W % "cube",)),
@@ -85,6 +86,7 @@ WIND = Covered(
             (r"L_k = ([\d., ]+?) Lambda_1; Lambda_1 = ([\d.]+) z_hub \(z_hub <= 60 m\), (\d+) m above",
              (C % "kaimal", C % "lambda1_low", C % "lambda1_high")),
             (r"(\d+) ft above 2000 ft", (C % "mil_scale_ft",)),
+            (r"above 2000 ft L = (\d+) ft", (C % "mil_scale_vk_ft",)),
             (r"T = ([\d.]+) s; V_gust = min", (C % "eog_t",)),
             (r"\(1 - cos\(pi t / T\)\), T = (\d+) s, theta_e", (C % "edc_t",)),
             (r"V_cg = (\d+) m/s, T = (\d+) s", (C % "ecd_v_cg", C % "ecd_t")),
@@ -103,7 +105,8 @@ WIND = Covered(
            "L_w = h, L_u = L_v = h / (0.177 + 0.000823 h)^1.2 (ft);",
            "| MIL-F-8785C 3.7.2 (Fig. 7 for the table); MIL-HDBK-1797 4.9.1 appendix |",
            "Phi_u = sigma^2 (2L/pi) / (1 + (1.339 L Omega)^2)^(5/6); Phi_v,w = sigma^2 (L/pi)(1 + (8/3)(1.339 L "
-           "Omega)^2) / (1 + (1.339 L Omega)^2)^(11/6) | as Dryden | MIL-F-8785C 3.7.2.1",
+           "Omega)^2) / (1 + (1.339 L Omega)^2)^(11/6) | as Dryden below 2000 ft; above 2000 ft L =",
+           "| MIL-F-8785C 3.7.2.1",
            "(A+, ed. 4); IEC 61400-1 ed. 3 Table 1.", "IEC 61400-1 ed. 3 eq. B.4, Coh(r, f) = exp(-12 sqrt((f r / "
            "V_hub)^2 + (0.12 r / L_c)^2)), L_c = 8.1 Lambda_1 for u", "S(kappa) dkappa / 2",
            "(IEC's sigma is the 10-minute standard deviation)", "rho_j X_(j-1) + sqrt(1 - rho_j^2)",

@@ -25,6 +25,7 @@ def code_constants() -> dict:
             "i_ref_plus": f"{i_ref['A+']:.2f}", "w20": "{:g} / {:g} / {:g}".format(*w20.values()),
             "kaimal": "{:g}, {:g}, {:g}".format(*tm.KAIMAL_SCALE), "lambda1_low": f"{tm.iec_lambda1(10.0) / 10.0:g}",
             "lambda1_high": f"{tm.iec_lambda1(1000.0):g}", "mil_scale_ft": f"{tm.MIL_HIGH_SCALE_FT:g}",
+            "mil_scale_vk_ft": f"{tm.MIL_HIGH_SCALE_VK_FT:g}",
             "eog_t": f"{ig.EOG_T:g}", "edc_t": f"{ig.EDC_T:g}", "ecd_t": f"{ig.ECD_T:g}",
             "ecd_v_cg": f"{ig.ECD_V_CG:g}", "ews_t": f"{ig.EWS_T:g}", "ews_beta": f"{ig.EWS_BETA:g}",
             "vk_a": f"{tm.VK_A:g}"}
@@ -56,9 +57,10 @@ def field_memory(span: float = 4500.0, u: float = 13.5, duration: float = 600.0,
 
 def wind_data() -> dict:
     """``code``: :func:`code_constants`; ``worked``: the closed forms (:func:`eog_edc`, :func:`field_memory`, the
-    IEC u scale L_1 = 8.1 x 42 m [m], the MIL high-altitude scale 1750 ft [m], the IEC u coherence over 20 m at
-    f -> 0, exp(-12 x 0.12 x 20 / L_1), and 1.2^3)."""
+    IEC u scale L_1 = 8.1 x 42 m [m], the MIL high-altitude scales 1750 ft (Dryden) and 2500 ft (von Karman)
+    [m], the IEC u coherence over 20 m at f -> 0, exp(-12 x 0.12 x 20 / L_1), and 1.2^3)."""
     l1 = 8.1 * 42.0
     worked = {**eog_edc(), **field_memory(), "l1": f"{l1:.0f}", "mil_scale_m": f"{1750.0 * FT:.0f}",
+              "mil_scale_vk_m": f"{2500.0 * FT:.0f}",
               "coherence_20m": f"{math.exp(-12.0 * 0.12 * 20.0 / l1):.2f}", "cube": f"{1.2 ** 3:.2f}"}
     return {"code": code_constants(), "worked": worked}

@@ -44,6 +44,16 @@ def test_eog_is_limited_by_the_extreme_wind_near_v_e1():
     assert v[0] == pytest.approx(40.0 + 0.74 * 1.35 * (0.8 * 1.4 * 37.5 - 40.0), rel=1e-12)
 
 
+def test_edc_change_is_limited_to_180_degrees():
+    """IEC 61400-1 ed. 3 6.3.2.4 limits theta_e to +-180 deg; 4 atan(x) passes it where x > 1 (V_hub of 0.8 m/s in
+    class IA: sigma_1 = 0.16 (0.6 + 5.6) = 0.992 m/s)."""
+    kw = dict(IA10, wind_speed=0.8)
+    x = 0.16 * (0.75 * 0.8 + 5.6) / (0.8 * (1.0 + 0.1 * 10.0 / LAMBDA1))
+    assert 4.0 * math.atan(x) > math.pi  # the unlimited formula would turn the wind past 180 deg
+    d = EDC(time=0.0, **kw).sample(np.array([3.0, 6.0, 20.0]), RNG(0))[1]
+    np.testing.assert_allclose(d, [0.5 * math.pi, math.pi, math.pi], rtol=1e-12)
+
+
 def test_edc_check_value_and_shape():
     theta_e = 4.0 * math.atan(SIGMA1 / (10.0 * (1.0 + 0.1 * 10.0 / LAMBDA1)))
     assert math.degrees(theta_e) == pytest.approx(46.3, abs=0.05)
@@ -94,6 +104,7 @@ def test_step_and_ramp():
 @pytest.mark.parametrize("cls, kw, text", [
     (EOG, dict(wind_class="IVA"), "EOG.wind_class"),
     (EOG, dict(wind_speed=0.5), "EOG.wind_speed"),  # the gust's dip would reverse the wind
+    (EOG, dict(wind_class="IIIA", wind_speed=45.0), "EOG.wind_speed = 45.0: above V_e1 = 42 m/s"),
     (EDC, dict(sign=2), "EDC.sign"),
     (EWS, dict(diameter=-1.0), "EWS.diameter"),
     (SpeedStep, dict(step=-1.5), "SpeedStep.step"),
@@ -102,3 +113,17 @@ def test_step_and_ramp():
 def test_bad_parameters_name_the_field(cls, kw, text):
     with pytest.raises(ValueError, match=text):
         cls(**kw)
+
+
+def test_grids_that_cannot_be_shared_are_named():
+    """One gust grid is advected and faded in as a whole: an EWS (no fade-in) beside turbulence faded in over 10 s,
+    or a gust advected at another speed, is refused naming both disturbances."""
+    from laddermill_gym.atmosphere.disturbances import grid_geometry
+    from laddermill_gym.atmosphere.turbulence import Turbulence
+
+    with pytest.raises(ValueError, match=r"disturbances\[0\] \(Turbulence: .*fade_in 10 s\) and disturbances\[2\] "
+                                         r"\(EWS: .*no fade-in\)"):
+        grid_geometry([Turbulence(fade_in=10.0), SpeedStep(), EWS(**IA10)], 30.0)
+    with pytest.raises(ValueError, match=r"disturbances\[1\] \(EWS: advected at 12 m/s"):
+        grid_geometry([EWS(**IA10), EWS(**dict(IA10, wind_speed=12.0))], 30.0)
+    assert grid_geometry([Turbulence(wind_speed=10.0), EWS(**IA10)], 30.0) is not None

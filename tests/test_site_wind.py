@@ -49,6 +49,19 @@ def test_profiles_csv_units_grid_and_interpolation(tmp_path):
         w.at(400.0)
 
 
+def test_a_profiles_own_lowest_height_reads_its_value(tmp_path):
+    """On a grid height a state reads its own value, even where the height is its profile's lowest (linear
+    interpolation from the cell below gave 0 x NaN = NaN there)."""
+    p = tmp_path / "profiles.csv"
+    p.write_text("time,height [m],speed [m/s]\nA,0,5\nA,50,7.5\nA,100,10\nB,50,7\nB,100,9.5\nB,150,12\n")
+    w = read_profiles_csv(p, grid_step=50.0)
+    np.testing.assert_array_equal(w.heights, [0.0, 50.0, 100.0, 150.0])
+    np.testing.assert_array_equal(w.at(50.0), [7.5, 7.0])
+    np.testing.assert_array_equal(w.at(150.0)[1], 12.0)
+    assert np.isnan(w.at(150.0)[0]) and np.isnan(w.at(25.0)[1])  # outside a profile: no data
+    assert w.at(75.0) == pytest.approx([8.75, 8.25], rel=1e-12)
+
+
 def test_profiles_csv_gzip_and_semicolons(tmp_path):
     p = tmp_path / "p.csv.gz"
     with gzip.open(p, "wt") as fh:
@@ -180,6 +193,14 @@ def test_two_heights_bad_value_named(tmp_path):
     p.write_text("variable_name,wind_speed,wind_speed\nheight,10,80\n2010-01-01 00:00:00,3,5\n2010-01-01 01:00:00,"
                  "x,5\n")
     with pytest.raises(SiteWindError, match=r"line 4, field 'wind_speed' at 10 m = 'x'"):
+        read_two_heights(p)
+
+
+@pytest.mark.parametrize("heights", ["10,10", "0,80", "-10,80"])
+def test_two_heights_that_cannot_give_a_power_law_named(tmp_path, heights):
+    p = tmp_path / "weather.csv"
+    p.write_text(f"variable_name,wind_speed,wind_speed\nheight,{heights}\n2010-01-01 00:00:00,3,5\n")
+    with pytest.raises(SiteWindError, match=r"weather.csv: line 2, field 'height' = .*must be finite, > 0 and differ"):
         read_two_heights(p)
 
 

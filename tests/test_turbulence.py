@@ -23,7 +23,8 @@ from laddermill_gym.atmosphere.turbulence import Turbulence
 from laddermill_gym.kernels.wind import gust_at
 
 FT = 0.3048
-L_HIGH = 1750 * FT  # MIL-F-8785C scale above 2000 ft [m]
+L_HIGH = 1750 * FT  # MIL-F-8785C 3.7.2.1: Dryden scale above 2000 ft [m]
+L_HIGH_VK = 2500 * FT  # MIL-F-8785C 3.7.2.1: von Karman scale above 2000 ft [m]
 
 
 def fields(turb: Turbulence, t_end: float, n: int, seed0: int = 0):
@@ -114,17 +115,32 @@ def test_von_karman_longitudinal_autocorrelation_and_integral_scale():
                       along_wind=(0.0, 1.0), dxi=10.0)
     u = fields(turb, 3000.0, 80, seed0=100)[:, :, 0, 0]
     s2 = u.var(axis=1).mean()
-    a = 1.339 * L_HIGH
+    a = 1.339 * L_HIGH_VK
 
     def rho(r):
         return 2.0 ** (2.0 / 3.0) / gamma(1.0 / 3.0) * (r / a) ** (1.0 / 3.0) * kv(1.0 / 3.0, r / a)
 
     lags = np.array([2, 10, 40, 100])
     np.testing.assert_allclose(circular_autocorrelation(u, lags) / s2, rho(lags * turb.dxi), atol=0.05)
-    m = int(3 * L_HIGH / turb.dxi)
+    m = int(3 * L_HIGH_VK / turb.dxi)
     est = circular_autocorrelation(u, np.arange(m + 1)) / s2
     integral = turb.dxi * (est.sum() - 0.5 * (est[0] + est[-1]))
     assert integral == pytest.approx(quad(rho, 1e-12, m * turb.dxi)[0], rel=0.1)
+
+
+def test_mil_high_altitude_scales_per_form():
+    """MIL-F-8785C 3.7.2.1 above 2000 ft: L_u = L_v = L_w = 1750 ft for the Dryden form, 2500 ft for von Karman's;
+    below 1000 ft both forms share the low-altitude scales."""
+    from laddermill_gym.atmosphere.turbulence_models import mil_intensity_scale
+
+    h = np.array([100.0, 2500.0 * FT])
+    (_, dryden) = mil_intensity_scale(h, "light")
+    (_, vk) = mil_intensity_scale(h, "light", model="VonKarman")
+    for k in range(3):
+        assert dryden[k][1] == pytest.approx(L_HIGH, rel=1e-12) and vk[k][1] == pytest.approx(L_HIGH_VK, rel=1e-12)
+        assert dryden[k][0] == vk[k][0]
+    with pytest.raises(ValueError, match="model = 'NTM'"):
+        mil_intensity_scale(h, "light", model="NTM")
 
 
 def test_mil_low_altitude_intensities():

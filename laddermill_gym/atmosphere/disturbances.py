@@ -193,8 +193,25 @@ def sample_modulation(disturbances, t_end: float, spacing: float,
 def grid_geometry(disturbances, t_end: float) -> GridGeometry | None:
     """The nodes of the one gust grid that :func:`sample_wind_field` gives for ``disturbances`` over an episode
     of t_end [s] (None when none is spatial): what a ``BatchSimulator`` must hold (``n_grid`` = its
-    ``floats``). Raises ValueError if the spatial disturbances cannot share a grid."""
-    return union_geometry([d.grid_geometry(t_end) for d in disturbances])
+    ``floats``). Raises ValueError naming the first two spatial disturbances that cannot share a grid (another
+    advection speed, heading or fade-in: one grid moves and fades as a whole)."""
+    geoms = [d.grid_geometry(t_end) for d in disturbances]
+    spatial = [i for i, g in enumerate(geoms) if g is not None]
+    for i in spatial[1:]:
+        a, b = geoms[spatial[0]], geoms[i]
+        if math.isclose(a.advection, b.advection) and math.isclose(a.heading, b.heading) and a.fade_in == b.fade_in:
+            continue
+        raise ValueError(f"{_grid_name(disturbances, spatial[0], a)} and {_grid_name(disturbances, i, b)} cannot share "
+                         "one gust grid, which is advected, turned and faded in as a whole: give them the same "
+                         "wind_speed and heading, and the same fade_in (0 where one has no fade_in field)")
+    return union_geometry(geoms)
+
+
+def _grid_name(disturbances, i: int, g: GridGeometry) -> str:
+    d = disturbances[i]
+    fade = f"fade_in {g.fade_in:g} s" if hasattr(d, "fade_in") else "no fade-in"
+    return (f"disturbances[{i}] ({type(d).__name__}: advected at {g.advection:g} m/s, heading {g.heading:g} rad, "
+            f"{fade})")
 
 
 def sample_wind_field(disturbances, t_end: float, spacing: float, rng: np.random.Generator) -> WindField:

@@ -64,9 +64,10 @@ def eog_speed(tau: np.ndarray, wind_class: str, v_hub: float, diameter: float, h
 
 def edc_direction(tau: np.ndarray, wind_class: str, v_hub: float, diameter: float, hub_height: float) -> np.ndarray:
     """EDC direction change [rad] (eqs. 21-22): theta_e = 4 atan(sigma_1 / (V_hub (1 + 0.1 D / Lambda_1))),
-    theta = 0.5 theta_e (1 - cos(pi tau / T)) for 0 <= tau <= T, theta_e after."""
+    limited to 180 deg as the standard limits it (reached below about 1 m/s), theta = 0.5 theta_e (1 - cos(pi tau /
+    T)) for 0 <= tau <= T, theta_e after."""
     s1 = tm.iec_sigma1(wind_class, v_hub, "NTM")
-    theta_e = 4.0 * math.atan(s1 / (v_hub * (1.0 + 0.1 * diameter / tm.iec_lambda1(hub_height))))
+    theta_e = min(4.0 * math.atan(s1 / (v_hub * (1.0 + 0.1 * diameter / tm.iec_lambda1(hub_height)))), math.pi)
     x = np.clip(tau / EDC_T, 0.0, 1.0)
     return 0.5 * theta_e * (1.0 - np.cos(math.pi * x))
 
@@ -112,6 +113,11 @@ class EOG(_IEC):
 
     def __post_init__(self):
         super().__post_init__()
+        v_e1 = 0.8 * 1.4 * tm.parse_wind_class(self.wind_class)[0]
+        if self.wind_speed > v_e1:  # the standard's V_hub stops at cut-out, below V_e1
+            raise ValueError(f"EOG.wind_speed = {self.wind_speed!r}: above V_e1 = {v_e1:g} m/s of class "
+                             f"{self.wind_class} (0.8 x 1.4 V_ref), where eq. 16's 1.35 (V_e1 - V_hub) turns the "
+                             "gust over")
         x = np.linspace(0.0, EOG_T, 4001)
         vmin = float(eog_speed(x, self.wind_class, self.wind_speed, self.diameter, self.hub_height).min())
         if vmin < 0.0:

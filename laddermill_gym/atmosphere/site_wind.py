@@ -77,6 +77,8 @@ class SiteWind:
             raise ValueError(f"height {h:g} m outside the data's {hs[0]:g}-{hs[-1]:g} m ({self.source})")
         j = int(np.clip(np.searchsorted(hs, h) - 1, 0, hs.size - 2))
         t = (h - hs[j]) / (hs[j + 1] - hs[j])
+        if t == 0.0 or t == 1.0:  # on a grid height: its own values (0 x NaN below a profile's start is NaN)
+            return self.speed[:, j + int(t)].copy()
         return (1.0 - t) * self.speed[:, j] + t * self.speed[:, j + 1]
 
     def is_extrapolated(self, h: float) -> bool:

@@ -7,6 +7,7 @@ Wyoming archive over the network only; pandas would read the CSVs but not name f
 from __future__ import annotations
 
 import csv
+import math
 import re
 from datetime import datetime
 from pathlib import Path
@@ -182,6 +183,9 @@ def read_two_heights(path: Path | str, top: float = 1000.0, step: float = 10.0,
         h1, h2 = sorted(float(rows[1][k]) for k in cols)
     except ValueError:
         raise SiteWindError(f"{path}: line 2, field 'height': not numbers {[rows[1][k] for k in cols]}") from None
+    if not 0.0 < h1 < h2 < math.inf:
+        raise SiteWindError(f"{path}: line 2, field 'height' = {[rows[1][k] for k in cols]}: the two wind_speed "
+                            "heights must be finite, > 0 and differ (the power law above takes ln(h2 / h1))")
     c1, c2 = (cols if float(rows[1][cols[0]]) == h1 else cols[::-1])
     v = np.empty((len(rows) - 2, 2))
     for k, row in enumerate(rows[2:]):

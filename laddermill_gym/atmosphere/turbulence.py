@@ -90,8 +90,8 @@ def turbulence_spectra(model: str, kappa: np.ndarray, h: np.ndarray, wind_class:
             out.append((s, np.full(h.size, sig), dec))
         return out
     spec = tm.dryden_spectrum if model == "Dryden" else tm.von_karman_spectrum
-    (sigs, scales) = tm.mil_intensity_scale(h, severity, w20)
-    _, mid_scales = tm.mil_intensity_scale(mid, severity, w20)
+    (sigs, scales) = tm.mil_intensity_scale(h, severity, w20, model)
+    _, mid_scales = tm.mil_intensity_scale(mid, severity, w20, model)
     for k in range(3):
         s = np.stack([spec(kappa, sigs[k][j], scales[k][j], k == 0) for j in range(h.size)], axis=1)
         dec = np.zeros((kappa.size, mid.size))

@@ -7,8 +7,8 @@
 * MIL-F-8785C (1980) section 3.7.2 / MIL-HDBK-1797 (1997) section 4.9.1 (appendix): Dryden and von Karman
   spectra in space, the low-altitude intensities and scales (below 1000 ft, from the wind at 20 ft: light
   15 kt, moderate 30 kt, severe 45 kt), the medium / high-altitude intensities from the probability of
-  exceedance table (above 2000 ft, scale 1750 ft for von Karman; 1750 ft is also used here for Dryden, the
-  value MIL-HDBK-1797 gives for both forms), linear interpolation between 1000 and 2000 ft.
+  exceedance table (above 2000 ft; isotropic scales of 1750 ft for the Dryden form and 2500 ft for the von Karman
+  form, MIL-F-8785C 3.7.2.1), linear interpolation between 1000 and 2000 ft.
 
 All spectra are one-sided in the spatial frequency kappa [cycles/m] along the mean wind: the variance is
 the integral of S(kappa) over kappa in (0, inf). A frozen field advected at U gives the temporal spectrum
@@ -44,7 +44,9 @@ MIL_HIGH_SIGMA_FTPS = {
     "moderate": np.array([8.6, 9.6, 10.6, 10.1, 8.0, 6.6, 5.0, 4.2, 2.7, 0.0, 0.0, 0.0]),
     "severe": np.array([15.6, 17.6, 23.0, 23.6, 22.1, 20.0, 16.0, 15.1, 12.1, 7.9, 6.2, 5.1]),
 }
+#: MIL-F-8785C 3.7.2.1: the isotropic scale L_u = L_v = L_w [ft] above 2000 ft, Dryden form and von Karman form
 MIL_HIGH_SCALE_FT = 1750.0
+MIL_HIGH_SCALE_VK_FT = 2500.0
 VK_A = 1.339  # von Karman's constant: the scale factor of L in the spectra (MIL-F-8785C)
 
 
@@ -112,14 +114,19 @@ def iec_coherence_decay(kappa: np.ndarray, length_c: float) -> np.ndarray:
     return 12.0 * np.sqrt(kappa ** 2 + (0.12 / length_c) ** 2)
 
 
-def mil_intensity_scale(h: np.ndarray, severity: str, w20: float | None = None):
+def mil_intensity_scale(h: np.ndarray, severity: str, w20: float | None = None, model: str = "Dryden"):
     """MIL-F-8785C intensities (sigma_u, sigma_v, sigma_w) [m/s] and scales (L_u, L_v, L_w) [m] at heights
-    h [m] (arrays of h's shape). Below 1000 ft: L_w = h, L_u = L_v = h / (0.177 + 0.000823 h)^1.2, sigma_w =
-    0.1 W_20, sigma_u = sigma_v = sigma_w / (0.177 + 0.000823 h)^0.4 (h in ft; W_20 [m/s] from the severity
-    unless given); above 2000 ft: isotropic, L = 1750 ft, sigma from the exceedance table; linear between.
-    Heights below 10 ft are taken as 10 ft (the low-altitude model's lower limit)."""
+    h [m] (arrays of h's shape) for the spectral form ``model`` ("Dryden" or "VonKarman"). Below 1000 ft: L_w =
+    h, L_u = L_v = h / (0.177 + 0.000823 h)^1.2, sigma_w = 0.1 W_20, sigma_u = sigma_v = sigma_w / (0.177 +
+    0.000823 h)^0.4 (h in ft; W_20 [m/s] from the severity unless given), both forms; above 2000 ft: isotropic,
+    L = 1750 ft (Dryden) or 2500 ft (von Karman), sigma from the exceedance table; linear between. Heights below
+    10 ft are taken as 10 ft (the low-altitude model's lower limit)."""
     if severity not in MIL_W20_KT:
         raise ValueError(f"severity = {severity!r}: must be one of {sorted(MIL_W20_KT)}")
+    scales = {"Dryden": MIL_HIGH_SCALE_FT, "VonKarman": MIL_HIGH_SCALE_VK_FT}
+    if model not in scales:
+        raise ValueError(f"model = {model!r}: the MIL scales are those of {sorted(scales)}")
+    high_scale = scales[model]
     w20_ftps = (MIL_W20_KT[severity] * KNOT if w20 is None else float(w20)) / FT
     hf = np.maximum(np.asarray(h, dtype=float) / FT, 10.0)
 
@@ -132,7 +139,7 @@ def mil_intensity_scale(h: np.ndarray, severity: str, w20: float | None = None):
 
     def high(x):
         s = np.interp(x, MIL_HIGH_ALT_FT, MIL_HIGH_SIGMA_FTPS[severity])
-        return (s, s, s), (np.full_like(x, MIL_HIGH_SCALE_FT),) * 3
+        return (s, s, s), (np.full_like(x, high_scale),) * 3
 
     lo_s, lo_l = low(np.minimum(hf, 1000.0))
     hi_s, hi_l = high(np.maximum(hf, 2000.0))
