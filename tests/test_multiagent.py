@@ -157,6 +157,23 @@ def test_bad_actions_are_named_and_move_nothing():
     assert env.task.batch.t[0] > t0[0]
 
 
+def test_reset_options_and_bad_seeds_are_refused_by_name():
+    """Options the envs would ignore (the disturbances are construction arguments) and seeds that are not integers
+    >= 0 raise, naming them, in the ParallelEnv and the SB3 adapter (before, both dropped or truncated them)."""
+    env = make(LC)
+    with pytest.raises(ValueError, match="options = \\{'disturbances': \\[\\]\\}.*takes no reset options"):
+        env.reset(seed=0, options={"disturbances": []})
+    env.reset(seed=0, options={})  # an empty mapping is no option
+    venv = shared_policy_vec_env(LC, 2, k=1, seed=5, **case_kwargs(LC))
+    with pytest.raises(ValueError, match="options = \\{'episode_time': 1.0\\}"):
+        venv.set_options({"episode_time": 1.0})
+    venv.set_options(None)
+    for seed in (1.5, "3", True, -1):
+        with pytest.raises(ValueError, match=f"seed = {seed!r}: must be an integer >= 0"):
+            venv.seed(seed)
+    assert venv.seed(np.int64(7))[:venv.n_agents] == [7] * venv.n_agents
+
+
 def shared_policy_vec_env(*args, **kw):
     """The SB3 adapter, skipping the test without the rl extra (SB3)."""
     pytest.importorskip("stable_baselines3", reason="the rl extra (SB3) is not installed")

@@ -34,7 +34,7 @@ from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS
 
 __all__ = ["TaskCore", "positive", "check_copies", "substeps_per_period", "clip_observations", "add_wing_noise",
-           "default_parallel"]
+           "default_parallel", "refuse_reset_options"]
 
 #: copies from which a task steps on several threads by default [-]: below it starting the pool costs more than
 #: it saves for a small model (TetheredWing-v0 at 8 copies: 43,500 steps/s on one thread, docs/benchmarks.md)
@@ -82,6 +82,15 @@ def check_copies(n_copies) -> int:
     if isinstance(n_copies, bool) or int(n_copies) != n_copies or n_copies < 1:
         raise ValueError(f"n_copies = {n_copies!r}: must be a positive integer")
     return int(n_copies)
+
+
+def refuse_reset_options(options, name: str, where: str = "gymnasium.make") -> None:
+    """ValueError naming ``options`` and the env ``name`` unless ``options`` is None or empty: the envs take their
+    disturbances, episode length and the like as arguments (of ``where``), and one that ignored an option would
+    reset with its own settings without a word."""
+    if options:
+        raise ValueError(f"options = {options!r}: {name} takes no reset options (set disturbances, episode_time and "
+                         f"the like with {where})")
 
 
 def substeps_per_period(scene_name: str, settings, control_dt: float, control_dt_given=None) -> int:

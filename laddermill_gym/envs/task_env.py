@@ -22,6 +22,7 @@ import numpy as np
 
 from laddermill_gym.envs.actions import single_action
 from laddermill_gym.envs.render import TaskRendering
+from laddermill_gym.envs.task_base import refuse_reset_options
 
 __all__ = ["TaskEnv", "task_arguments", "check_task_arguments", "check_render_mode"]
 
@@ -97,10 +98,7 @@ class TaskEnv(TaskRendering, gym.Env):
 
     # ------------------------------------------------------------------ Gymnasium API
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
-        if options:  # an option this env would ignore (its settings are gym.make's arguments) is refused
-            name = self.spec.id if self.spec is not None else type(self).__name__
-            raise ValueError(f"options = {options!r}: {name} takes no reset options (set disturbances, episode_time "
-                             "and the like with gymnasium.make)")
+        refuse_reset_options(options, self.spec.id if self.spec is not None else type(self).__name__)
         super().reset(seed=seed)
         self.task.reset(np.ones(1, bool), [self.np_random])
         self._needs_reset = False

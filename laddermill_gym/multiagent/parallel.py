@@ -11,6 +11,7 @@ import numpy as np
 from pettingzoo import ParallelEnv
 
 from laddermill_gym.envs.actions import ActionError, action_array
+from laddermill_gym.envs.task_base import refuse_reset_options
 from laddermill_gym.multiagent.agents import WingAgents, build_task, check_k
 
 __all__ = ["WingParallelEnv", "parallel_env"]
@@ -68,7 +69,8 @@ class WingParallelEnv(ParallelEnv):
     def reset(self, seed: int | None = None, options: dict | None = None):
         """A new episode (``seed``: a new generator, the one ``gymnasium.make(env_id).reset(seed=seed)`` builds;
         None: keep drawing from the last). Returns (observations, infos) of every agent; the infos hold ``t`` = 0
-        and the task's reset info (reference power [W] ...)."""
+        and the task's reset info (reference power [W] ...). ``options``: none taken (ValueError naming them)."""
+        refuse_reset_options(options, f"parallel_env({self.env_id!r})", "parallel_env's arguments")
         if seed is not None or self._rng is None:
             self._rng = gym.utils.seeding.np_random(seed)[0]
         self.task.reset(np.ones(1, bool), [self._rng])

@@ -18,6 +18,7 @@ import numpy as np
 from stable_baselines3.common.vec_env import VecEnv
 
 from laddermill_gym.envs.actions import action_array
+from laddermill_gym.envs.task_base import refuse_reset_options
 from laddermill_gym.multiagent.agents import WingAgents, build_task, check_k
 
 __all__ = ["SharedPolicyVecEnv", "shared_policy_vec_env"]
@@ -49,8 +50,17 @@ class SharedPolicyVecEnv(VecEnv):
         returns the B n seeds SB3 expects (agent i of copy b: ``seed + b``)."""
         if seed is None:
             seed = int(np.random.randint(0, 2 ** 32 - 1, dtype=np.uint32))
+        elif isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+            raise ValueError(f"seed = {seed!r}: must be an integer >= 0 (copy b draws from seed + b)")
         self._copy_seeds = [int(seed) + b for b in range(self.n_copies)]
         return [s for s in self._copy_seeds for _ in range(self.n_agents)]
+
+    def set_options(self, options: list[dict] | dict | None = None) -> None:
+        """Refuses any non-empty options (ValueError naming them): the copies take no reset options, and SB3's
+        ``reset`` would otherwise drop them without a word."""
+        for opt in (options if isinstance(options, list) else [options]):
+            refuse_reset_options(opt, "the shared-policy vector env", "shared_policy_vec_env's arguments")
+        super().set_options(options)
 
     def _observations(self) -> np.ndarray:
         return self.view.observations().reshape(self.num_envs, self.view.obs_dim)
