@@ -18,7 +18,7 @@ import numpy as np
 from laddermill_gym.control.base import batch_observations
 from laddermill_gym.control.lqr import DiscreteLQR, bryson_weights, discrete_lqr
 from laddermill_gym.kernels.contract import CU_COLLECTIVE, CU_DIFFERENTIAL, CU_SIZE
-from laddermill_gym.model.configio import CONFIG_DIR, read_yaml
+from laddermill_gym.model.configio import CONFIG_DIR, find_config, read_yaml
 from laddermill_gym.rotorcraft.roll_lateral import RollLateralModel, derive_roll_lateral, lateral_state
 
 DEFAULT_CRAFT_LQR = CONFIG_DIR / "agents" / "lqr_rotorcraft.yaml"
@@ -40,7 +40,9 @@ class CraftLQRConfig:
 
 
 def load_craft_lqr_config(path: str | Path = DEFAULT_CRAFT_LQR) -> CraftLQRConfig:
-    """Read a craft LQR YAML strictly (unknown keys or non-positive limits raise ConfigError naming them)."""
+    """Read a craft LQR YAML (``path``: a file or the bare name of a shipped one, ``lqr_rotorcraft``) strictly
+    (unknown keys or non-positive limits raise ConfigError naming them)."""
+    path = find_config("agents", path, "config")
     s = read_yaml(path)
     craft = s.text("craft")
     v = s.number("wind_speed", positive=True)

@@ -205,9 +205,11 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
         raise ValueError(f"controller = {spec!r}: not 'open_loop', 'lqr', 'lqr:<config>', a shipped policy "
                          f"({', '.join(sorted(SHIPPED_POLICIES))}) or an existing model path")
     from laddermill_gym.control.shared_controller import LinearActorController, is_shared_run
+    from laddermill_gym.control.trained_settings import check_trained_settings
 
+    own = {k: v for k, v in kw.items() if k != "parallel"}
+    check_trained_settings(path, env_id, own)  # spaces can match an env whose actions mean other things
     if is_shared_run(path):  # a shared per-wing policy (laddermill train ppo_mill_v1)
-        own = {k: v for k, v in kw.items() if k != "parallel"}
         if LinearActorController.available(path):  # its linear actor exported: numpy, no torch
             return LinearActorController.load(path, env_id, own)
         from laddermill_gym.control.shared_policy import SharedPolicyController
@@ -217,6 +219,6 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
 
     ctrl = SB3Controller.load(path)
     ctrl.check_env(env_id)
-    task = task_class(env_id)(1, **{k: v for k, v in kw.items() if k != "parallel"})
+    task = task_class(env_id)(1, **own)
     ctrl.check_spaces(task.obs.shape[-1], task.n_actions, env_id)
     return ctrl

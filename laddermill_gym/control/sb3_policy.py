@@ -93,11 +93,11 @@ class SB3Controller:
                 raise FileNotFoundError(f"{path}: no model.zip or best_model.zip (is it a training run folder?)")
             model_file, folder = files[0], path
         elif path.is_file():
-            model_file, folder = path, path.parent
+            model_file, folder = path, run_folder(path)
         else:
             raise FileNotFoundError(f"{path}: no such model file or run folder")
         model = _load_model(sb3, model_file, folder / "algorithm.txt")
-        norm = folder / ("best_vecnormalize.pkl" if model_file.name == "best_model.zip" else "vecnormalize.pkl")
+        norm = statistics_file(model_file, folder)
         ctrl = cls.from_vecnormalize(model, load_vecnormalize(norm) if norm.is_file() else None, exact)
         ctrl.source, ctrl.trained_env = model_file, _trained_env(folder / "config.yaml")
         return ctrl
@@ -163,6 +163,35 @@ class SB3Controller:
         return self.model.predict(self.normalize(observation), state, episode_start, deterministic)
 
 
+def run_folder(model_file: Path) -> Path:
+    """The training run folder of a model file: its own folder, or for a checkpoint (``RUN/checkpoints/*.zip`` of
+    ``laddermill train``) the run folder above, which holds its config, algorithm and statistics."""
+    folder = model_file.parent
+    up = folder.parent
+    if folder.name == "checkpoints" and any((up / f).is_file() for f in ("config.yaml", "shared_policy.yaml")):
+        return up
+    return folder
+
+
+def statistics_file(model_file: Path, run: Path) -> Path:
+    """The observation statistics that go with ``model_file`` of the run folder ``run`` (the path may not exist:
+    no normalisation): ``best_vecnormalize.pkl`` for the best model, ``checkpoints/step_<n>_vecnormalize.pkl``
+    for a checkpoint (saved with it since 2026-12-06; for an older run's checkpoint, whose own were not saved, the
+    run's last ``vecnormalize.pkl`` with a warning, as ``harness/reselect.py`` flies them), else
+    ``vecnormalize.pkl``."""
+    import warnings
+
+    if model_file.parent != run:  # a checkpoint
+        own = model_file.with_name(model_file.stem + "_vecnormalize.pkl")
+        last = run / "vecnormalize.pkl"
+        if not own.is_file() and last.is_file():
+            warnings.warn(f"{model_file}: its observation statistics were not saved with it; using the run's last, "
+                          f"{last} (the policy saw slightly other ones when it was saved)", UserWarning, stacklevel=3)
+            return last
+        return own
+    return run / ("best_vecnormalize.pkl" if model_file.name == "best_model.zip" else "vecnormalize.pkl")
+
+
 def _trained_env(config: Path) -> str | None:
     """The ``env`` of a training run's ``config.yaml`` (None when there is no such file or field)."""
     if not config.is_file():
@@ -181,10 +210,11 @@ def _load_model(sb3, model_file: Path, meta: Path):
     """The SB3 model in ``model_file`` with the algorithm ``meta`` (algorithm.txt) names. Without that file it
     loads as PPO (what the first run folders held); a model that is not a PPO one then raises naming both files.
     An algorithm of sb3-contrib (TQC, ...) needs that package; another name raises naming ``meta``."""
+    check_model_file(model_file)
     if not meta.is_file():
         try:
             return sb3.PPO.load(model_file, device="cpu")
-        except (KeyError, ValueError, RuntimeError, TypeError, AttributeError) as err:
+        except LOAD_ERRORS as err:
             raise ValueError(f"{model_file}: does not load as PPO ({type(err).__name__}: {err}) and {meta} is "
                              "missing: write the algorithm it was trained with (PPO, SAC, ...) into that file"
                              ) from None
@@ -199,7 +229,28 @@ def _load_model(sb3, model_file: Path, meta: Path):
         if cls is None:
             needs = "" if sb3_contrib is not None else " (nor an sb3-contrib one: that package is not installed)"
             raise ValueError(f"{meta}: unknown algorithm {algo!r}: not one of stable_baselines3's{needs}")
+    return load_as(cls, model_file, meta)
+
+
+#: What SB3's ``load`` raises for a file that is not a model of that algorithm (AssertionError: a zip without
+#: SB3's data, "No data found in the saved file")
+LOAD_ERRORS = (KeyError, ValueError, RuntimeError, TypeError, AttributeError, AssertionError)
+
+
+def check_model_file(model_file: Path) -> None:
+    """ValueError naming ``model_file`` unless it is a zip archive (what every SB3 model file is)."""
+    import zipfile
+
+    if not zipfile.is_zipfile(model_file):
+        raise ValueError(f"{model_file}: not a zip archive, so not a Stable-Baselines3 model file")
+
+
+def load_as(cls, model_file: Path, named_in: Path):
+    """``cls.load(model_file)`` (an SB3 algorithm class that ``named_in`` names), on the CPU; ValueError naming the
+    file, the algorithm and ``named_in`` when the file does not load as one."""
+    check_model_file(model_file)
     try:
         return cls.load(model_file, device="cpu")
-    except (KeyError, ValueError, RuntimeError, TypeError, AttributeError) as err:
-        raise ValueError(f"{model_file}: does not load as {algo} ({meta}): {type(err).__name__}: {err}") from None
+    except LOAD_ERRORS as err:
+        raise ValueError(f"{model_file}: does not load as {cls.__name__} ({named_in}): {type(err).__name__}: "
+                         f"{err}") from None

@@ -72,9 +72,12 @@ def read_shared_meta(path: Path) -> dict[str, Any]:
 
 
 def is_shared_run(path: str | Path) -> bool:
-    """Whether ``path`` is a shared-policy run folder or a model file in one."""
+    """Whether ``path`` is a shared-policy run folder or a model file in one (a checkpoint in its
+    ``checkpoints/`` included)."""
+    from laddermill_gym.control.sb3_policy import run_folder
+
     path = Path(path)
-    folder = path if path.is_dir() else path.parent
+    folder = path if path.is_dir() else run_folder(path)
     return (folder / SHARED_POLICY_FILE).is_file()
 
 
@@ -223,8 +226,11 @@ class LinearActorController(SharedController):
 
     @staticmethod
     def available(path: str | Path) -> bool:
-        """Whether the run folder (or the model file in it) ``path`` holds an exported linear actor."""
+        """Whether ``path``, a run folder or its ``model.zip``, has an exported linear actor. The actor is
+        ``model.zip``'s: another model file of the folder (``last_model.zip``, ``bc_model.zip``) has none."""
         path = Path(path)
+        if not (path.is_dir() or path.name == "model.zip"):
+            return False
         return ((path if path.is_dir() else path.parent) / LINEAR_ACTOR_FILE).is_file()
 
     @classmethod
@@ -234,8 +240,11 @@ class LinearActorController(SharedController):
         checked against ``env_id`` / ``env_kwargs`` (default: the training's) before anything runs."""
         path = Path(path)
         folder = path if path.is_dir() else path.parent
-        meta = read_shared_meta(folder / SHARED_POLICY_FILE)
         npz = folder / LINEAR_ACTOR_FILE
+        if not (path.is_dir() or path.name == "model.zip"):
+            raise ValueError(f"{path}: {npz} is the actor of {folder / 'model.zip'}, not of this file; run this "
+                             "one with SharedPolicyController (torch)")
+        meta = read_shared_meta(folder / SHARED_POLICY_FILE)
         if not npz.is_file():
             raise FileNotFoundError(f"{npz}: no such file (export it from {folder / 'model.zip'}: python -m "
                                     "laddermill_gym.control.shared_policy --export <model.zip>)")

@@ -24,6 +24,7 @@ import numpy as np
 import torch as th
 from stable_baselines3.common.torch_layers import BaseFeaturesExtractor
 
+from laddermill_gym.control.sb3_policy import load_as, run_folder
 from laddermill_gym.control.shared_controller import (
     LATERAL_FIELDS,
     LINEAR_ACTOR_FILE,
@@ -120,7 +121,7 @@ class SharedPolicyController(SharedController):
         import stable_baselines3 as sb3
 
         path = Path(path)
-        folder = path if path.is_dir() else path.parent
+        folder = path if path.is_dir() else run_folder(path)  # a checkpoint's: the run folder above
         meta_file = folder / SHARED_POLICY_FILE
         meta = read_shared_meta(meta_file)
         model_file = folder / "model.zip" if path.is_dir() else path
@@ -131,7 +132,7 @@ class SharedPolicyController(SharedController):
         if not hasattr(sb3, algo):
             raise ValueError(f"{meta_file}: algorithm = {algo!r} is not a Stable-Baselines3 algorithm")
         view = build_view(meta, model_file, env_id, env_kwargs)
-        ctrl = cls(getattr(sb3, algo).load(model_file, device="cpu"), view, model_file, meta)
+        ctrl = cls(load_as(getattr(sb3, algo), model_file, meta_file), view, model_file, meta)
         ctrl.check_env(env_id or str(meta["env"]))
         return ctrl
 

@@ -36,8 +36,9 @@ def candidates(run: Path) -> list[tuple[str, Path, Path]]:
     run = Path(run)
     found = []
     ckpts = sorted((run / "checkpoints").glob("step_*.zip"), key=lambda p: int(_STEP.search(p.name).group(1)))
-    for p in ckpts:
-        found.append((f"{run.name}/{p.stem}", p, run / "vecnormalize.pkl"))
+    for p in ckpts:  # the statistics saved with the checkpoint; a run from before 2026-12-06 saved only its last
+        own = p.with_name(p.stem + "_vecnormalize.pkl")
+        found.append((f"{run.name}/{p.stem}", p, own if own.is_file() else run / "vecnormalize.pkl"))
     for name, stats in (("best_model.zip", "best_vecnormalize.pkl"), ("model.zip", "vecnormalize.pkl")):
         if (run / name).is_file():
             found.append((f"{run.name}/{Path(name).stem}", run / name, run / stats))

@@ -105,6 +105,8 @@ def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm, stop=None):
                 self.next_eval = self.num_timesteps + cfg.eval_every
             if self.num_timesteps >= self.next_ckpt:
                 self.model.save(out / "checkpoints" / f"step_{self.num_timesteps}.zip")
+                if (vn := self._vecnorm()) is not None:  # the statistics the checkpoint acts with
+                    vn.save(str(out / "checkpoints" / f"step_{self.num_timesteps}_vecnormalize.pkl"))
                 self.next_ckpt += cfg.checkpoint_every
             if stop is not None and stop.requested:
                 return False
