@@ -192,8 +192,9 @@ def statistics_file(model_file: Path, run: Path) -> Path:
     return run / ("best_vecnormalize.pkl" if model_file.name == "best_model.zip" else "vecnormalize.pkl")
 
 
-def _trained_env(config: Path) -> str | None:
-    """The ``env`` of a training run's ``config.yaml`` (None when there is no such file or field)."""
+def read_run_config(config: Path) -> dict | None:
+    """A training run's ``config.yaml`` as a mapping (None when there is no such file, or it holds no mapping);
+    ValueError naming the file when it is not YAML."""
     if not config.is_file():
         return None
     import yaml
@@ -202,7 +203,12 @@ def _trained_env(config: Path) -> str | None:
         data = yaml.safe_load(config.read_text())
     except yaml.YAMLError as err:
         raise ValueError(f"{config}: not readable YAML ({err})") from None
-    env = data.get("env") if isinstance(data, dict) else None
+    return data if isinstance(data, dict) else None
+
+
+def _trained_env(config: Path) -> str | None:
+    """The ``env`` of a training run's ``config.yaml`` (None when there is no such file or field)."""
+    env = (read_run_config(config) or {}).get("env")
     return str(env) if env is not None else None
 
 

@@ -14,8 +14,6 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from laddermill_gym.envs import ENV_IDS, registered_arguments, same_task
 
 __all__ = ["training_settings", "check_trained_settings"]
@@ -38,7 +36,7 @@ def training_settings(path: str | Path) -> tuple[Path, str, dict[str, Any]] | No
     """(file that says so, env id, env arguments) the policy at ``path`` (a run folder or a model file in one) was
     trained with: a shared policy's ``shared_policy.yaml``, an rl-zoo3 run's arguments, a ``laddermill train`` run's
     ``config.yaml``; None when its folder records none (a bare model file)."""
-    from laddermill_gym.control.sb3_policy import run_folder
+    from laddermill_gym.control.sb3_policy import read_run_config, run_folder
     from laddermill_gym.control.shared_controller import SHARED_POLICY_FILE, read_shared_meta
     from laddermill_gym.control.zoo_run import find_zoo_run, read_zoo_run
 
@@ -51,14 +49,9 @@ def training_settings(path: str | Path) -> tuple[Path, str, dict[str, Any]] | No
         meta = read_shared_meta(folder / SHARED_POLICY_FILE)
         return folder / SHARED_POLICY_FILE, str(meta["env"]), dict(meta.get("env_kwargs") or {})
     config = folder / "config.yaml"
-    if not config.is_file():
-        return None
-    try:
-        data = yaml.safe_load(config.read_text())
-    except yaml.YAMLError as err:
-        raise ValueError(f"{config}: not readable YAML ({err})") from None
-    if not isinstance(data, dict) or data.get("env") not in ENV_IDS:
-        return None  # not a training run's config: the policy's own checks name what they miss
+    data = read_run_config(config)
+    if data is None or data.get("env") not in ENV_IDS:
+        return None  # no training run's config: the policy's own checks name what they miss
     return config, str(data["env"]), dict(data.get("env_kwargs") or {})
 
 
