@@ -28,6 +28,10 @@ from laddermill_gym.envs import ENV_IDS
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX
 from laddermill_gym.envs.task import FAILURES
 from laddermill_gym.studies.commands import Parser, UsageError, check_controllers, check_number
+from laddermill_gym.studies.controller_specs import build_controllers, policy_env_kwargs
+
+__all__ = ["SCENARIOS", "EpisodeResults", "run_episodes", "write_tables", "plot_results", "controller_label",
+           "check_env_kwargs", "vector_env", "policy_env_kwargs", "build_controllers", "evaluate", "main"]
 
 #: Named evaluation scenarios (disturbance lists); "paper_step" is the registered default of the environments
 SCENARIOS = {
@@ -203,46 +207,18 @@ def vector_env(env_id: str, n: int, env_kwargs: dict):
     return gym.make_vec(env_id, num_envs=n, vectorization_mode="vector_entry_point", **kw)
 
 
-def policy_env_kwargs(spec: str, env_id: str | None = None) -> dict:
-    """The control settings a trained policy was trained with (the ``CARRIED_KWARGS`` of the ``config.yaml`` in its
-    run folder, or of the ``env_kwargs`` of an rl-zoo3 run: action groups, surfaces, model), so that its evaluation
-    env has the policy's action and observation layout; {} for a controller that is not a run folder or a model file
-    in one. An rl-zoo3 run trained on another environment than ``env_id`` raises ValueError naming both."""
-    from laddermill_gym.control.rl_config import CARRIED_KWARGS, env_family, load_rl_config
-    from laddermill_gym.control.zoo_run import find_zoo_run, read_zoo_run
-
-    path = Path(spec)
-    if path.exists() and find_zoo_run(path) is not None:
-        run = read_zoo_run(path)
-        if run.env_id not in ENV_IDS:
-            raise ValueError(f"{run.folder}: an rl-zoo3 run on {run.env_id!r}, not a laddermill_gym environment")
-        if env_id is not None and run.env_id != env_id:
-            raise ValueError(f"{run.folder}: an rl-zoo3 run on {run.env_id!r}, evaluated on {env_id!r} (--env)")
-        keys = CARRIED_KWARGS[env_family(run.env_id)]
-        return {k: v for k, v in run.env_kwargs.items() if k in keys}
-    folder = path if path.is_dir() else path.parent
-    if not (path.exists() and (folder / "config.yaml").is_file()):
-        return {}
-    from laddermill_gym.control.shared_controller import SHARED_POLICY_FILE
-
-    if (folder / SHARED_POLICY_FILE).is_file():  # a shared per-wing policy: its own description holds the env's
-        import yaml  # control settings (laddermill train ppo_mill_v1; its config.yaml is not an SB3 run's)
-
-        meta = yaml.safe_load((folder / SHARED_POLICY_FILE).read_text())
-        return dict(meta.get("env_kwargs") or {}) if isinstance(meta, dict) else {}
-    return load_rl_config(folder / "config.yaml").carried_env_kwargs()
-
-
 def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dict, out: Path,
-             progress: bool = True) -> dict[str, EpisodeResults]:
+             progress: bool = True, built: dict | None = None) -> dict[str, EpisodeResults]:
     """Run every controller spec on ``episodes`` seeded episodes (seeds 0 .. episodes - 1) of ``env_id`` with
-    arguments ``env_kwargs`` (episode_time [s], disturbances) and write the tables into ``out``."""
-    from laddermill_gym.control.factory import make_controller
-
+    arguments ``env_kwargs`` (episode_time [s], disturbances) and write the tables into ``out``. Every controller is
+    built (:func:`build_controllers`, each on ``env_kwargs`` with its policy's settings) before the first episode,
+    so a spec the environment refuses raises (ValueError, FileNotFoundError) before any runs; ``built``: those
+    already built by :func:`build_controllers` for these arguments (the command line builds them first)."""
+    if built is None:
+        built = build_controllers(controllers, env_id, env_kwargs)
     results = {}
     for spec in controllers:
-        kw = dict(env_kwargs, **policy_env_kwargs(spec, env_id))
-        ctrl = make_controller(spec, env_id, kw)
+        ctrl, kw = built[spec]
         env = vector_env(env_id, episodes, kw)
         results[controller_label(spec)] = run_episodes(ctrl, env, progress=progress)
         env.close()
@@ -286,7 +262,9 @@ def main(argv: list[str] | None = None) -> int:
         check_env_kwargs(args.env, env_kwargs)
     except ValueError as err:
         raise UsageError(str(err)) from None
-    results = evaluate(args.env, args.controllers, args.episodes, env_kwargs, out)
+    # every controller built and checked against the env before any episode: a refused one is one line, exit 2
+    built = build_controllers(args.controllers, args.env, env_kwargs, option="--controllers")
+    results = evaluate(args.env, args.controllers, args.episodes, env_kwargs, out, built=built)
     fig = plot_results(out, results, f"{args.env}: {args.episodes} episode(s), lateral offset (episode 0)")
     print(f"{'controller':<28} {'return':>10} {'length [s]':>11} {'max |dy| [m]':>13} {'power [W]':>10}  failures")
     for spec, res in results.items():

@@ -26,11 +26,12 @@ from pathlib import Path
 import numpy as np
 
 from laddermill_gym.studies.commands import Command, UsageError, check_controllers
+from laddermill_gym.studies.controller_specs import build_controllers, policy_env_kwargs
 from laddermill_gym.studies.gusts.gust_suite import Scenario, Suite, load_suite
 from laddermill_gym.studies.parallel import add_arguments, check_arguments, run_tasks
 
-__all__ = ["controller_label", "run_episodes", "episode_metrics", "episodes_task", "warmup_tasks", "run_suite",
-           "write_outputs", "add_parser", "main"]
+__all__ = ["controller_label", "run_episodes", "episode_metrics", "built_controller", "build_suite_controllers",
+           "episodes_task", "warmup_tasks", "run_suite", "write_outputs", "add_parser", "main"]
 
 #: A copy counts as settled when its largest lateral excursion stays below this share of its peak after the
 #: disturbance's start (a 10 % band; chosen: the lateral motion of these systems is lightly damped).
@@ -166,19 +167,9 @@ def controller_label(spec: str) -> str:
     return (f"{p.parent.name}/{p.stem}" if p.is_file() else p.name) if p.exists() else spec
 
 
-def _policy_kwargs(spec: str) -> dict:
-    """The action / observation layout a trained policy's run folder carries (its ``config.yaml``); {} else."""
-    path = Path(spec)
-    folder = path if path.is_dir() else path.parent
-    if not (path.exists() and (folder / "config.yaml").is_file()):
-        return {}
-    from laddermill_gym.control.rl_config import load_rl_config
-
-    return load_rl_config(folder / "config.yaml").carried_env_kwargs()
-
-
 def _jobs(suite: Suite, env_ids, controllers, scenarios) -> list[tuple]:
-    """(env_id, env_kwargs with the policy's layout, controller spec, scenario) in the benchmark's order."""
+    """(env_id, env_kwargs with the policy's control settings (:func:`policy_env_kwargs`), controller spec,
+    scenario) in the benchmark's order."""
     env_ids = list(env_ids) or list(suite.envs)
     for e in env_ids:
         if e not in suite.envs:
@@ -187,7 +178,9 @@ def _jobs(suite: Suite, env_ids, controllers, scenarios) -> list[tuple]:
     for env_id in env_ids:
         env_kwargs, scen = suite.envs[env_id]
         chosen = [s for s in scen if not scenarios or s.name in scenarios]
-        jobs += [(env_id, dict(env_kwargs, **_policy_kwargs(spec)), spec, s) for spec in controllers for s in chosen]
+        for spec in controllers:
+            kw = dict(env_kwargs, **policy_env_kwargs(spec, env_id))
+            jobs += [(env_id, kw, spec, s) for s in chosen]
     return jobs
 
 
@@ -198,15 +191,16 @@ def _absolute(spec: str) -> str:
     return prefix + str(Path(name).resolve()) if Path(name).exists() else spec
 
 
-def warmup_tasks(suite: Suite, env_ids, controllers, scenarios=None) -> list[tuple]:
+def warmup_tasks(suite: Suite, env_ids, controllers, scenarios=None, forget: bool = True) -> list[tuple]:
     """What a worker runs once before its first task (:mod:`laddermill_gym.studies.parallel`): per environment
     and controller a WARMUP_S episode without disturbance and, if a chosen scenario has a gust grid, one with
     the first such scenario's disturbances (numba compiles the grid-free and the grid code apart). This builds
-    the worker's controllers and compiles, or loads from numba's cache, every kernel the tasks reach."""
+    the worker's controllers and compiles, or loads from numba's cache, every kernel the tasks reach; first
+    (``forget``) it drops the process's built controllers (:func:`forget_controllers`)."""
     from laddermill_gym.atmosphere.disturbance_spec import parse_disturbances
     from laddermill_gym.atmosphere.disturbances import grid_geometry
 
-    tasks: list[tuple] = [(forget_controllers, {})]
+    tasks: list[tuple] = [(forget_controllers, {})] if forget else []
     seen = set()
     for env_id, kw, spec, s in _jobs(suite, env_ids, controllers, scenarios):
         spatial = grid_geometry(parse_disturbances(list(s.disturbances)), s.duration) is not None
@@ -231,27 +225,50 @@ def forget_controllers() -> None:
     _CONTROLLERS.clear()
 
 
-def episodes_task(env_id: str, env_kwargs: dict, spec: str, seeds, duration: float, disturbances) -> dict:
-    """A picklable task: :func:`run_episodes` of the controller ``spec`` (built once per process and copied for
-    every task, so a controller with internal state starts each task alike, whichever worker runs it)."""
-    import copy
-
+def built_controller(spec: str, env_id: str, env_kwargs: dict):
+    """The controller ``spec`` for ``env_id`` with ``env_kwargs`` (:func:`~laddermill_gym.control.factory.
+    make_controller`), built once per process (kept until :func:`forget_controllers`)."""
     from laddermill_gym.control.factory import make_controller
 
     key = (env_id, spec, repr(sorted(env_kwargs.items())))
     if key not in _CONTROLLERS:
         _CONTROLLERS[key] = make_controller(spec, env_id, env_kwargs)
-    return run_episodes(copy.deepcopy(_CONTROLLERS[key]), env_id, env_kwargs, seeds, duration, disturbances)
+    return _CONTROLLERS[key]
+
+
+def build_suite_controllers(suite: Suite, env_ids, controllers, scenarios=None, option: str | None = None) -> None:
+    """Build every controller spec for every environment with a chosen scenario (as :func:`run_suite` chooses
+    them) into this process's cache, emptied first (:func:`forget_controllers`), as the tasks will use them
+    (:func:`built_controller`: absolute paths, the policy's control settings over the suite's env kwargs): a spec
+    an environment refuses raises now, before any episode
+    (:func:`~laddermill_gym.studies.controller_specs.build_controllers`; with ``option`` a one-line UsageError)."""
+    forget_controllers()
+    for env_id in list(env_ids) or list(suite.envs):
+        env_kwargs, scen = suite.envs[env_id]
+        if any(not scenarios or s.name in scenarios for s in scen):
+            build_controllers(controllers, env_id, env_kwargs, option=option,
+                              build=lambda spec, e, kw: built_controller(_absolute(spec), e, kw))
+
+
+def episodes_task(env_id: str, env_kwargs: dict, spec: str, seeds, duration: float, disturbances) -> dict:
+    """A picklable task: :func:`run_episodes` of the controller ``spec`` (built once per process and copied for
+    every task, so a controller with internal state starts each task alike, whichever worker runs it)."""
+    import copy
+
+    ctrl = built_controller(spec, env_id, env_kwargs)
+    return run_episodes(copy.deepcopy(ctrl), env_id, env_kwargs, seeds, duration, disturbances)
 
 
 def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool = True, workers: int = 0,
-              ray: str | None = None) -> list[dict]:
+              ray: str | None = None, built: bool = False) -> list[dict]:
     """Every controller spec on every scenario of the chosen environments (all of the suite's if ``env_ids`` is
     empty; scenario names filtered by ``scenarios``); rows as :func:`episode_metrics` plus env and controller.
 
     The episode sets (each scenario's, and each undisturbed reference once per env, controller, duration and
     seeds) are independent tasks run by :func:`laddermill_gym.studies.parallel.run_tasks`: serially
-    (``workers=0``), in ``workers`` local processes or on Ray (``ray``); the rows are the same either way."""
+    (``workers=0``), in ``workers`` local processes or on Ray (``ray``); the rows are the same either way.
+    ``built``: the controllers were just built in this process (:func:`build_suite_controllers`), so a serial run
+    uses them as they are instead of forgetting and building them again."""
     jobs = _jobs(suite, env_ids, controllers, scenarios)
     tasks, refs, runs = [], {}, []
     for env_id, kw, spec, s in jobs:
@@ -262,8 +279,9 @@ def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool
             tasks.append((episodes_task, dict(base, disturbances=())))
         runs.append((refs[ref_key], len(tasks)))
         tasks.append((episodes_task, dict(base, disturbances=s.disturbances)))
-    results = run_tasks(tasks, workers=workers, ray=ray, warmup=warmup_tasks(suite, env_ids, controllers, scenarios),
-                        desc=f"gust-bench {suite.name}", unit="episode set", progress=progress)
+    warmup = warmup_tasks(suite, env_ids, controllers, scenarios, forget=not (built and not workers and ray is None))
+    results = run_tasks(tasks, workers=workers, ray=ray, warmup=warmup, desc=f"gust-bench {suite.name}",
+                        unit="episode set", progress=progress)
     rows = []
     for (env_id, _, spec, s), (i_ref, i_run) in zip(jobs, runs, strict=True):
         rec = results[i_run]
@@ -329,7 +347,12 @@ def _run(args) -> int:
     unknown = sorted(set(args.scenarios) - names)
     if unknown:
         raise UsageError(f"--scenarios {unknown}: not scenarios of suite {suite.name} ({', '.join(sorted(names))})")
-    rows = run_suite(suite, args.env, args.controllers, args.scenarios, workers=args.workers, ray=args.ray)
+    # every controller built and checked against each env before any episode (a refused one: one line, exit 2).
+    # Serially (--workers 0) the tasks then use these very controllers, at no extra cost; with --workers or --ray
+    # each worker builds its own again, so this is a one-time extra cost there, paid for the early, clean error.
+    build_suite_controllers(suite, args.env, args.controllers, args.scenarios, option="--controllers")
+    rows = run_suite(suite, args.env, args.controllers, args.scenarios, workers=args.workers, ray=args.ray,
+                     built=True)
     out = args.out or Path("results") / "gust_bench" / suite.name
     for path in write_outputs(rows, suite, out):
         print(path)

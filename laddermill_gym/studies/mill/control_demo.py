@@ -24,6 +24,7 @@ import numpy as np
 from tqdm import tqdm
 
 from laddermill_gym.studies.commands import Parser, UsageError, check_controllers, check_number
+from laddermill_gym.studies.controller_specs import build_controllers
 
 __all__ = ["DEFAULT_ENV", "STEP", "STEP_TIME", "ControlRun", "default_controllers", "run_demo", "plot_demo",
            "write_gif", "main"]
@@ -99,29 +100,44 @@ def default_controllers(env_id: str) -> list[str]:
         sb3 or LinearActorController.available(POLICY_DIR / name))]
 
 
-def run_demo(env_id: str = DEFAULT_ENV, controllers=("open_loop", "lqr"), duration: float = 60.0,
-             env_kwargs: dict | None = None, frames_per_s: float = 1.0, progress: bool = True) -> list[ControlRun]:
-    """Run each controller spec (:func:`~laddermill_gym.control.factory.make_controller`) on ``env_id`` from its
-    operating point through the paper's step for ``duration`` [s] after it; ``frames_per_s`` GIF frames per
-    simulated second (0: none). ``env_kwargs`` override the env's arguments (``scene_options`` for a smaller mill)."""
+def _make_env(env_id: str, kw: dict):
     import warnings
 
     import gymnasium as gym
 
-    from laddermill_gym.atmosphere.disturbances import DirectionStep
-    from laddermill_gym.control.factory import make_controller
-
-    kw = dict(env_kwargs or {}, episode_time=float(duration) + STEP_TIME,
-              disturbances=[DirectionStep(step=STEP, time=STEP_TIME)])
     with warnings.catch_warnings():  # Gymnasium calls v1 "out of date" once v2 exists; here both are designs
         warnings.filterwarnings("ignore", message=".*is out of date", category=DeprecationWarning)
-        env = gym.make_vec(env_id, 1, vectorization_mode="vector_entry_point", **kw)
-    every = max(1, int(round(1.0 / (frames_per_s * env.task.control_dt)))) if frames_per_s > 0 else None
+        return gym.make_vec(env_id, 1, vectorization_mode="vector_entry_point", **kw)
+
+
+def run_demo(env_id: str = DEFAULT_ENV, controllers=("open_loop", "lqr"), duration: float = 60.0,
+             env_kwargs: dict | None = None, frames_per_s: float = 1.0, progress: bool = True,
+             built: dict | None = None) -> list[ControlRun]:
+    """Run each controller spec (:func:`~laddermill_gym.control.factory.make_controller`) on ``env_id`` from its
+    operating point through the paper's step for ``duration`` [s] after it; ``frames_per_s`` GIF frames per
+    simulated second (0: none). ``env_kwargs`` override the env's arguments (``scene_options`` for a smaller mill).
+    Every controller is built first (:func:`~laddermill_gym.studies.controller_specs.build_controllers`: a spec the
+    env refuses raises before any mill is built or flown), each on ``env_kwargs`` with its trained policy's control
+    settings (action groups, bands) over them, and flies an env with those settings: one env per distinct set,
+    shared by the controllers that carry none (open loop, the LQR, the shipped policies). ``built``: the controllers
+    already built by ``build_controllers(controllers, env_id, env_kwargs)`` (the command line builds them first)."""
+    from laddermill_gym.atmosphere.disturbances import DirectionStep
+
+    if built is None:
+        built = build_controllers(controllers, env_id, env_kwargs)
+    episode = dict(episode_time=float(duration) + STEP_TIME, disturbances=[DirectionStep(step=STEP, time=STEP_TIME)])
+    envs: dict[str, object] = {}
     runs = []
     for spec in controllers:
-        controller = make_controller(spec, env_id, dict(env_kwargs or {}))
+        controller, kw = built[spec]
+        key = repr(sorted(kw.items()))
+        if key not in envs:
+            envs[key] = _make_env(env_id, dict(kw, **episode))
+        env = envs[key]
+        every = max(1, int(round(1.0 / (frames_per_s * env.task.control_dt)))) if frames_per_s > 0 else None
         runs.append(_run_one(env, controller, spec if len(spec) < 24 else Path(spec).name, every, progress))
-    env.close()
+    for env in envs.values():
+        env.close()
     return runs
 
 
@@ -237,11 +253,13 @@ def main(argv: list[str] | None = None) -> int:
         _whole_periods(args.env, args.time)
         args.controllers = args.controllers or default_controllers(args.env)
         check_controllers(args.controllers)
+        t0 = time.perf_counter()
+        # every controller built and checked against the env before any mill is flown (a refused one: one line)
+        built = build_controllers(args.controllers, args.env, option="--controllers")
     except UsageError as err:
         p.error(str(err))
-    t0 = time.perf_counter()
     runs = run_demo(args.env, args.controllers, args.time, frames_per_s=0.0 if args.no_gif else 1.0,
-                    progress=not args.no_progress)
+                    progress=not args.no_progress, built=built)
     args.out.mkdir(parents=True, exist_ok=True)
     print(f"{args.env}: the paper's {STEP} rad wind-direction step at t = {STEP_TIME:g} s, from the periodic "
           "operating point")
