@@ -4,6 +4,7 @@ actions and rewards: :mod:`laddermill_gym.multiagent.agents`."""
 
 from __future__ import annotations
 
+import warnings
 from typing import Any
 
 import gymnasium as gym
@@ -11,7 +12,6 @@ import numpy as np
 from pettingzoo import ParallelEnv
 
 from laddermill_gym.envs.actions import ActionError, action_array
-from laddermill_gym.envs.task_base import refuse_reset_options
 from laddermill_gym.multiagent.agents import WingAgents, build_task, check_k
 
 __all__ = ["WingParallelEnv", "parallel_env"]
@@ -69,8 +69,12 @@ class WingParallelEnv(ParallelEnv):
     def reset(self, seed: int | None = None, options: dict | None = None):
         """A new episode (``seed``: a new generator, the one ``gymnasium.make(env_id).reset(seed=seed)`` builds;
         None: keep drawing from the last). Returns (observations, infos) of every agent; the infos hold ``t`` = 0
-        and the task's reset info (reference power [W] ...). ``options``: none taken (ValueError naming them)."""
-        refuse_reset_options(options, f"parallel_env({self.env_id!r})", "parallel_env's arguments")
+        and the task's reset info (reference power [W] ...). ``options``: none taken; a non-empty mapping is named in
+        a UserWarning and ignored (PettingZoo's API test resets with ``{"options": 1}`` and expects no error)."""
+        if options:
+            warnings.warn(f"options = {options!r}: parallel_env({self.env_id!r}) takes no reset options and ignores "
+                          "them (set disturbances, episode_time and the like with parallel_env's arguments)",
+                          UserWarning, stacklevel=2)
         if seed is not None or self._rng is None:
             self._rng = gym.utils.seeding.np_random(seed)[0]
         self.task.reset(np.ones(1, bool), [self._rng])
