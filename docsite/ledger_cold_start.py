@@ -13,15 +13,10 @@ COLD_START = Covered(
         "Issue 32 point 1's targets: TetheredWing-v0 and Rotorcraft-v0 at most 20 s cold and 1 s warm, "
         "LadderMill-v0 at most 60 s cold.",
         '## TetheredWing-v0 and Rotorcraft-v0: the step kernel compiled beside the trim (issue 32 point 1)',
+        # the link to the later machines' page
+        "The same code on other machines and days, from 2026-12-05 on:",
     ),
     timings=(  # each dated on the page (date or commit, machine, load where recorded)
-        # the tree solve's tuples (2026-12-05 afternoon, znver5): _factor6's compile (a /tmp script's timing of the
-        # function alone, empty cache) and the startup study alternated with 2db3288
-        'compile slower: 1.2 s against 0.5 s. The code before (2db3288) and after alternated three times ( , '
-        '13:14-13:19 UTC, load 1.0-1.8), cold: TetheredWing-v0 14.2 / 15.0 / 14.3 s before, 15.2 / 16.2 / 15.0 s '
-        'after; Rotorcraft-v0 12.3 / 12.9 / 12.6 s, 12.8 / 13.6 / 12.3 s; LadderChain-v0 14.3 / 15.1 / 14.2 s, 15.3 / '
-        '15.6 / 14.6 s.',
-        'for a chain right-hand side 14 % cheaper on every step.',
         '( runs it for these two and LadderMill-v0): make + reset + one step in a fresh process, cold with a new '
         'empty , warm from the cache that run left (median of 3). This 2-core machine was shared with four other '
         'jobs (load average 4-6), so wall seconds are 2-3x the CPU seconds; compare the CPU seconds. On '
@@ -320,19 +315,5 @@ COLD_START = Covered(
         '(new) takes N cold starts, each from empty caches, and prints their median and range: (17:49-17:52, load '
         '1.3-1.7) printed TetheredWing-v0 22.4 s cold (22.3-22.4 s), 0.94 s warm; Rotorcraft-v0 17.7 s (15.9-21.7 '
         's), 1.23 s warm.',
-        # the faster machine and the W step on its own (2026-12-05, znver5): bench --startup, startup --cold-runs, A/B
-        '## On a faster machine; the W step on its own (2026-12-05)',
-        "This session's 2-core AMD EPYC is a Zen 5 ( : znver5, the AVX512_ICL/Haswell profile) and compiles "
-        'faster than the Zen 4 above. (07:29-07:30, load about 1.5): TetheredWing-v0 13.5 s cold, 0.55 s '
-        'warm; Rotorcraft-v0 11.6 s, 0.60 s; LadderMill-v0 29.6 s, 0.59 s. (07:30-07:32, load 1.0-1.8): '
-        'TetheredWing-v0 15.3 s (15.1-15.5 s), 0.66 s warm; Rotorcraft-v0 12.9 s (12.8-13.1 s), 0.62 s warm. '
-        "**Point 1's targets are met on this machine**, with the wing's warm-ups still compiling 25 s of CPU;"
-        ' on the Zen 4 of 2026-12-04 the wing was not (21-26 s).',
-        "The W method's loop now calls its step, , through its address (docs/benchmarks.md: the step runs "
-        'faster compiled on its own). The heavy compile moved from to , and the warm-ups name it ( ); checks '
-        "that it is compiled once over all the processes, by the wing's tail warm-up and by the craft's first"
-        ' process after its trim. The code before and after, alternated ( , 07:21-07:24, load 1.0-1.8): '
-        'TetheredWing-v0 14.9 / 15.7 s before, 15.2 / 13.9 s after; Rotorcraft-v0 11.9 / 11.3 s before, 12.9 '
-        '/ 12.2 s after: no change beyond the scatter.',
     ),
 )

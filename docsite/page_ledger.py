@@ -35,6 +35,7 @@ from __future__ import annotations
 from docsite.ledger_benchmarks import BENCHMARKS
 from docsite.ledger_closed_loop import WORK_PRECISION_CLOSED_LOOP
 from docsite.ledger_cold_start import COLD_START
+from docsite.ledger_cold_start_machines import COLD_START_MACHINES
 from docsite.ledger_cold_start_mill import COLD_START_MILL
 from docsite.ledger_controllers import CONTROLLERS
 from docsite.ledger_craft import ROTOR, ROTORCRAFT
@@ -75,6 +76,7 @@ LEDGER = {
     "cable_data.md": CABLE_DATA,
     "cold_start.md": COLD_START,
     "cold_start_mill.md": COLD_START_MILL,
+    "cold_start_machines.md": COLD_START_MACHINES,
     "controllers.md": CONTROLLERS,
     "scorecard_physics_step.md": SCORECARD_STEP,
     "features.md": FEATURES,
