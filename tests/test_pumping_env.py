@@ -170,3 +170,29 @@ def test_bad_arguments_are_named():
         PumpingKiteEnv(bogus=1)
     with pytest.raises(ValueError, match="reward.*reference_power"):
         PumpingKiteEnv(reward={"reference_power": -1.0})
+
+
+def test_power_terms_sum_to_the_episodes_energy_when_a_failure_cuts_a_period_short():
+    """The reward's power term is the period's electrical energy over P_ref control_dt (settings.py), so an
+    episode's power terms sum to its net electrical energy over P_ref control_dt, the period a failure cuts short
+    included (it divided by the time flown, counting that period's energy up to n_substeps times over). The oracle
+    is the task's own energy of each period, summed."""
+    import gymnasium as gym
+
+    env = gym.make("laddermill_gym/PumpingKite-v0")
+    task = env.unwrapped.task
+    rng = np.random.default_rng(0)
+    cut_short = 0
+    for seed in range(4):
+        env.reset(seed=seed)
+        energy = terms = 0.0
+        while True:
+            _, _, terminated, truncated, info = env.step(rng.uniform(-1, 1, 4))
+            energy += task.electrical_energy[0]
+            terms += info["reward_power"] * task.reward_config.reference_power * task.control_dt
+            if terminated or truncated:
+                break
+        cut_short += int(task.batch.done[0] < task.n_substeps)
+        assert terms == pytest.approx(energy, rel=1e-9, abs=1e-6)
+        assert info["power_W"] * task.control_dt == pytest.approx(task.electrical_energy[0], rel=1e-12)
+    assert cut_short >= 1  # the case this checks happened (seed 3: 5 of 10 steps)

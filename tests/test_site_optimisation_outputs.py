@@ -59,3 +59,45 @@ def test_site_command_writes_tables_and_figures(tmp_path):
         assert r["design"]["h"] / np.cos(r["design"]["theta"]) >= 500.0 * (1 - 1e-6)      # eq. 18
         assert r["mean_tension_N"] <= r["F_max_N"] * (1 + 1e-9)                             # eq. 17 on average
     assert len(list(out.glob("*.png"))) >= 5
+
+
+def test_figs_19_20_mean_is_the_time_mean(tmp_path, capsys):
+    """The Figs. 19-20 mean is sum_i p_i P_i, as eq. 16's P-bar: on Cabauw's clusters, whose bins cover 56.6 % of
+    the time, the rest counts as no power (dividing by the weights' sum printed 1.78x the time mean). The oracle:
+    the per-state powers of the printed design, averaged here with the time shares."""
+    from laddermill_gym.quasisteady.site_data import load_wind
+    from laddermill_gym.quasisteady.site_optimise import TABLE2, operate
+    from laddermill_gym.quasisteady.site_problem import Design
+
+    out = tmp_path / "site"
+    assert main(["--wind", "cabauw", "--case", "table2", "--no-turbine", "--out", str(out)]) == 0
+    line = next(s for s in capsys.readouterr().out.splitlines() if "figs. 19-20" in s)
+    printed = [float(line.split(f"{lab} mean ")[1].split(" MW")[0]) for lab in ("1/3", "1/2")]
+    design = Design(**json.loads((out / "results.json").read_text())["table2/cabauw"]["design"])
+    ev = load_wind("cabauw")
+    w = ev.at(design.h)
+    ok = np.isfinite(w)
+    for got, f in zip(printed, (1 / 3, 0.5), strict=True):
+        P = operate(TABLE2, design, w[ok], f)[0]
+        assert got == pytest.approx(np.sum(ev.weight[ok] * P) / 1e6, abs=6e-4)
+        assert 0.5 < ev.weight.sum() < 0.6 and got < 0.7 * np.sum(ev.weight[ok] * P) / ev.weight[ok].sum() / 1e6
+
+
+@pytest.mark.parametrize("args, needle", [
+    (["--wind", "LOW", "--no-turbine"], "heights 10-40 m .* lie outside table1's altitude bounds 50-1000 m"),
+    (["--wind", "cabauw", "--case", "table2", "--hub-height", "1000"], "--hub-height = 1000 m: outside the heights"),
+    (["--out", "FILE"], "--out '.*afile': cannot make the folder"),
+])
+def test_inputs_the_site_cannot_use_are_named_before_any_run(tmp_path, capsys, args, needle):
+    low = tmp_path / "low.csv"
+    low.write_text("time,height [m],speed [m/s]\nA,10,5\nA,40,7\n")
+    (tmp_path / "afile").write_text("")
+    args = [str(low) if a == "LOW" else str(tmp_path / "afile") if a == "FILE" else a for a in args]
+    if "--out" not in args:
+        args += ["--out", str(tmp_path / "out")]
+    with pytest.raises(SystemExit) as exc:
+        main(args)
+    assert exc.value.code == 2
+    import re
+
+    assert re.search(needle, capsys.readouterr().err)

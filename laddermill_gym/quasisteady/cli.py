@@ -63,8 +63,8 @@ def _run_case(case, spec, wind, out, quiet):
     if not quiet:
         print(f"  {case.name} on {spec}: {r.states} states, {r.evaluations} inner solves, {r.wall_time:.2f} s, "
               f"feasible {r.feasible}")
-        means = ", ".join(f"{lab} mean {np.sum(ev.weight[ok] * P) / ev.weight[ok].sum() / 1e6:.3f} MW"
-                          for lab, (P, _) in runs.items())
+        # the time mean (eq. 16's P-bar): time outside the data, and states without data at h, count as no power
+        means = ", ".join(f"{lab} mean {np.sum(ev.weight[ok] * P) / 1e6:.3f} MW" for lab, (P, _) in runs.items())
         print(f"  {case.name} design run through {_eval_spec(spec)} (figs. 19-20): {means}"
               + "".join(f"; {note}" for note in ev.notes))
     return r, ev, w_ev[ok], ev.weight[ok], files
@@ -83,9 +83,32 @@ def _turbine(case, r, spec, w_ev, p_ev, ev, hub, turbine, out):
     return [lm, ty], path, float(np.max(P))
 
 
+def _fail(message: str):
+    print(f"laddermill site: error: {message}", file=sys.stderr)
+    raise SystemExit(2)
+
+
+def _check_heights(spec: str, wind, cases, args) -> None:
+    """Exit 2 naming the option unless every case's altitude bounds meet the data's heights and the turbine's hub
+    lies within the evaluation data's (checked before any optimisation runs)."""
+    for cname in args.case:
+        lo, hi = cases[cname].h_bounds
+        if max(lo, wind.heights[0]) > min(hi, wind.heights[-1]):
+            _fail(f"--wind {spec!r}: heights {wind.heights[0]:g}-{wind.heights[-1]:g} m ({wind.source}) lie outside "
+                  f"{cname}'s altitude bounds {lo:g}-{hi:g} m")
+    if not args.no_turbine:
+        ev = load_wind(_eval_spec(spec))
+        if not ev.heights[0] <= args.hub_height <= ev.heights[-1]:
+            _fail(f"--hub-height = {args.hub_height:g} m: outside the heights {ev.heights[0]:g}-{ev.heights[-1]:g} m "
+                  f"of {_eval_spec(spec)} ({ev.source}), where the turbine is evaluated")
+
+
 def run(args) -> int:
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as err:
+        _fail(f"--out {args.out!r}: cannot make the folder ({err})")
     base = {"table1": dataclasses.replace(TABLE1, k1=args.k1, power_target=args.power_mw * 1e6),
             "table2": dataclasses.replace(TABLE2, power_target=args.power_mw * 1e6)}
     tables, record, files, yields = {c: {} for c in args.case}, {}, [], []
@@ -93,8 +116,8 @@ def run(args) -> int:
         try:
             wind = load_wind(spec, args.format)
         except (SiteWindError, ValueError) as err:
-            print(f"laddermill site: error: --wind {spec!r}: {err}", file=sys.stderr)
-            raise SystemExit(2) from None
+            _fail(f"--wind {spec!r}: {err}")
+        _check_heights(spec, wind, base, args)
         print(f"{spec}: {wind.n} wind states, {wind.heights[0]:g}-{wind.heights[-1]:g} m ({wind.source})")
         for cname in args.case:
             case = base[cname]

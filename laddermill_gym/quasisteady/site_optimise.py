@@ -52,6 +52,9 @@ def _usable(wind: SiteWind, h: float):
 def _bounds(case: SiteCase, wind: SiteWind):
     lo_h = max(case.h_bounds[0], float(wind.heights[0]))
     hi_h = min(case.h_bounds[1], float(wind.heights[-1]))
+    if lo_h > hi_h:
+        raise ValueError(f"{wind.source}: heights {wind.heights[0]:g}-{wind.heights[-1]:g} m outside the altitude "
+                         f"bounds {case.h_bounds[0]:g}-{case.h_bounds[1]:g} m")
     return [(lo_h, hi_h), case.theta_bounds, case.d_bounds, case.S_bounds]
 
 

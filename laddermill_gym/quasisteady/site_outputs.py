@@ -76,10 +76,11 @@ def plot_design(r: SiteResult, weight: np.ndarray, labels, path: Path, title: st
 
 
 def plot_operation(runs: dict[str, tuple[np.ndarray, np.ndarray]], weight, path: Path, title: str) -> Path:
-    """Figs. 19-20: histograms of power and C_L of a fixed design, one row per reeling-factor bound."""
+    """Figs. 19-20: histograms of power and C_L of a fixed design, one row per reeling-factor bound; the mean in
+    each title is the time mean, sum_i p_i P_i (time the weights do not cover counts as no power)."""
     fig, ax = plt.subplots(len(runs), 2, figsize=(10, 3.2 * len(runs)), squeeze=False)
     for i, (label, (P, cl)) in enumerate(runs.items()):
-        mean = np.sum(weight * P) / weight.sum()
+        mean = np.sum(weight * P)
         _hist(ax[i, 0], P / 1e6, weight, 30, f"useful power [MW], {label}: mean {mean / 1e6:.2f} MW")
         _hist(ax[i, 1], cl, weight, np.linspace(0, 1.2, 25), f"kite C_L, {label}")
     fig.suptitle(title)

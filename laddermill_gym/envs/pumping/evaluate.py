@@ -40,7 +40,9 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
     b = task.batch
     o = task.raw_obs
     lat, rates, failure = wing_terms(task, o[:, None, :])
-    elapsed = np.maximum(b.done, 1) * b.settings.dt
+    # per control period, as the reward is documented, also in a period a failure cut short (the energy of its
+    # steps done; dividing by their time counted it up to n_substeps times over: fixed 2026-12-06)
+    elapsed = task.control_dt
     power = np.where(np.isfinite(task.electrical_energy), task.electrical_energy / elapsed, 0.0)
     reward, terminated, truncated, info = task.shaped_reward(power, task.reward_config.reference_power, lat, rates,
                                                              None, failure)
