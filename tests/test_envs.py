@@ -128,6 +128,11 @@ def test_ladder_chain_env_steps_with_grouped_actions():
     (dict(reward={"lateral_weight": -1.0}), "lateral_weight"),
     (dict(termination={"alpha_range_deg": (10.0, -10.0)}), "alpha_range_deg"),
     (dict(control_dt=0.07), "control_dt"),
+    # a string compared with a number raised a bare TypeError; n_copies was dropped (one copy built)
+    (dict(termination={"breaking_factor": "x"}), "termination.breaking_factor = 'x'"),
+    (dict(termination={"max_abs_beta_deg": -1.0}), "termination.max_abs_beta_deg = -1.0"),
+    (dict(termination={"min_altitude": float("nan")}), "termination.min_altitude = nan"),
+    (dict(n_copies=5), "n_copies = 5: a single env has one copy"),
 ])
 def test_bad_arguments_name_the_field(kwargs, field):
     with pytest.raises(ValueError, match=field):

@@ -196,3 +196,18 @@ def test_power_terms_sum_to_the_episodes_energy_when_a_failure_cuts_a_period_sho
         assert terms == pytest.approx(energy, rel=1e-9, abs=1e-6)
         assert info["power_W"] * task.control_dt == pytest.approx(task.electrical_energy[0], rel=1e-12)
     assert cut_short >= 1  # the case this checks happened (seed 3: 5 of 10 steps)
+
+
+@pytest.mark.parametrize("env_id, kwargs, needle", [
+    ("laddermill_gym/PumpingKite-v0", {"termination": {"breaking_factor": "x"}}, "termination.breaking_factor = 'x'"),
+    ("laddermill_gym/Rotorcraft-v0", {"n_copies": 5}, "n_copies = 5: a single env has one copy"),
+    ("laddermill_gym/PointMassChain-v0", {"min_altitude": float("nan")}, "min_altitude = nan: must be a finite"),
+    ("laddermill_gym/PointMassChain-v0", {"min_altitude": "x"}, "min_altitude = 'x': must be a finite"),
+])
+def test_arguments_that_were_dropped_or_untyped_are_named(env_id, kwargs, needle):
+    """Before: n_copies was dropped, a NaN min_altitude switched the termination off, and a string breaking factor
+    raised a bare TypeError."""
+    import gymnasium as gym
+
+    with pytest.raises(ValueError, match=re.escape(needle)):
+        gym.make(env_id, **kwargs)

@@ -74,7 +74,10 @@ class TaskEnv(TaskRendering, gym.Env):
 
     def __init__(self, render_mode: str | None = None, **task_kwargs):
         check_render_mode(render_mode, self.metadata["render_modes"], self.task_class.env_name)
-        task_kwargs.pop("n_copies", None)
+        if "n_copies" in task_kwargs:  # was dropped without a word: the env built one copy
+            n = task_kwargs["n_copies"]
+            raise ValueError(f"n_copies = {n!r}: a single env has one copy; for copies use gymnasium.make_vec(id, "
+                             f"num_envs={n!r}, vectorization_mode='vector_entry_point')")
         task_kwargs.pop("max_episode_steps", None)
         check_task_arguments(self.task_class, task_kwargs, vector=False)
         single = {"parallel": False} if "parallel" in task_arguments(self.task_class, True) else {}

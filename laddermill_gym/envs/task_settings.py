@@ -64,8 +64,12 @@ class FailureLimits:
     breaking_factor: float = 1.0
 
     def __post_init__(self):
-        if self.min_altitude is not None and not math.isfinite(self.min_altitude):
-            raise ValueError(f"termination.min_altitude = {self.min_altitude!r}: must be finite")
+        if self.min_altitude is not None and (isinstance(self.min_altitude, bool) or not (
+                isinstance(self.min_altitude, (int, float)) and math.isfinite(self.min_altitude))):
+            raise ValueError(f"termination.min_altitude = {self.min_altitude!r}: must be a finite number [m]")
+        v = self.breaking_factor
+        if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            raise ValueError(f"termination.breaking_factor = {v!r}: must be a finite number > 0")
 
     def check_range(self, name: str) -> None:
         """ValueError naming ``termination.name`` unless that field is a finite (low, high) pair with low < high."""
@@ -133,11 +137,11 @@ class TerminationConfig(FailureLimits):
     max_abs_beta_deg: float = 60.0
 
     def __post_init__(self):
+        super().__post_init__()  # min_altitude and breaking_factor, named
         self.check_range("alpha_range_deg")
-        if not (self.max_abs_beta_deg > 0 and self.breaking_factor > 0):
-            raise ValueError(f"termination: max_abs_beta_deg = {self.max_abs_beta_deg!r} and breaking_factor = "
-                             f"{self.breaking_factor!r} must be > 0")
-        super().__post_init__()
+        v = self.max_abs_beta_deg
+        if isinstance(v, bool) or not (isinstance(v, (int, float)) and v > 0):
+            raise ValueError(f"termination.max_abs_beta_deg = {v!r}: must be a number > 0")
 
 
 def config_from(value, cls, name: str):

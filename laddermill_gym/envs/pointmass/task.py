@@ -116,6 +116,9 @@ class PointMassTask(TaskCore):
             raise ValueError(f"groups = {groups!r}: must be 'all' or 'per_kite'")
         self.ranges = np.radians([positive("pitch_range_deg", pitch_range_deg, "deg"),
                                   positive("roll_range_deg", roll_range_deg, "deg")])
+        if isinstance(min_altitude, bool) or not (isinstance(min_altitude, (int, float))
+                                                  and np.isfinite(min_altitude)):
+            raise ValueError(f"min_altitude = {min_altitude!r}: must be a finite number [m] (NaN never terminated)")
         self.min_altitude = float(min_altitude)
         self.breaking_factor = positive("breaking_factor", breaking_factor, "(-)")
         self.disturbances = env_disturbances(disturbances, self.episode_time)

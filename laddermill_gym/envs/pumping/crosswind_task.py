@@ -37,7 +37,7 @@ class CrosswindRewardConfig(PumpingRewardConfig):
     Defaults: ``reference_power`` P_ref = 10 kW (the crosswind cycle's order, docs/pumping.md), ``lateral_weight``
     0 (crosswind flight leaves the wind plane by design), ``sideslip_weight`` w_b = 0.1, ``sideslip_scale``
     beta_s = 0.35 rad (20 deg), ``tension_weight`` w_T = 1, ``tension_allowed`` a = 0.4 (the controller's 200 kN
-    set-point is 0.38 F_b), ``tension_scale`` c = 0.1, ``failure_penalty`` 2e5 (1e9 J at P_ref dt = 500 J: more
+    set-point is 0.38 F_b), ``tension_scale`` c = 0.1, ``failure_penalty`` 2e5 (1e8 J at P_ref dt = 500 J: more
     than the 60 MJ a 600 s episode at 100 kW makes)."""
 
     lateral_weight: float = 0.0
