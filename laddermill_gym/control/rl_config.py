@@ -5,6 +5,7 @@ file, the field and the value) into a frozen :class:`RLConfig`, and turned into 
 from __future__ import annotations
 
 import inspect
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -173,6 +174,13 @@ HYPERPARAMETERS: dict[str, dict] = {
 }
 
 
+def _is_number(text: str) -> bool:
+    try:
+        return math.isfinite(float(text))
+    except ValueError:
+        return False
+
+
 def _read_hyperparameters(s: Section, algo: str, n_envs: int, total: int) -> dict:
     """The ``hyperparameters`` mapping, each name an argument of the SB3 algorithm and each number of
     :data:`HYPERPARAMETERS` within its bounds; a PPO minibatch within a rollout, a SAC one within the buffer,
@@ -190,9 +198,13 @@ def _read_hyperparameters(s: Section, algo: str, n_envs: int, total: int) -> dic
             raise hp.error(key, value, f"not an argument of {algo} (known: {sorted(known)})")
         if rule == "flag":
             out[key] = hp.flag(key)
-        elif rule is None or (value is None and rule.get("optional")) or (
-                rule.get("auto") and isinstance(value, str) and value.split("_")[0] == "auto"):
+        elif rule is None or (value is None and rule.get("optional")):
             out[key] = hp.raw(key)
+        elif rule.get("auto") and isinstance(value, str):  # SAC's "auto" or "auto_<initial value>"
+            head, _, tail = value.partition("_")
+            if algo != "SAC" or head != "auto" or (tail and not _is_number(tail)):
+                raise hp.error(key, value, "'auto' (or 'auto_<number>', its initial value) is SAC's only")
+            out[key] = value
         else:
             out[key] = hp.number(key, **{k: v for k, v in rule.items() if k not in ("optional", "auto")})
     limits = (("batch_size", out.get("n_steps", 2048) * n_envs, "a rollout (n_steps x n_envs)") if algo == "PPO"
@@ -236,6 +248,13 @@ def _read_policy_kwargs(s: Section, algo: str, policy_name: str = "MlpPolicy") -
             raise pk.error(key, value, f"not an argument of {policy.__name__} (known: {sorted(known)})")
         if key == "net_arch":
             layers = value if isinstance(value, dict) else {"": value}
+            parts = {"pi", "qf"} if algo == "SAC" else {"pi", "vf"}  # SB3 ignores any other (a typo: no critic)
+            for part in layers:
+                if part and part not in parts:
+                    raise pk.error(f"net_arch.{part}", layers[part], f"not a part of {algo}'s networks "
+                                   f"({', '.join(sorted(parts))})")
+            if isinstance(value, dict) and algo == "SAC" and set(layers) != parts:
+                raise pk.error("net_arch", value, "SAC's mapping needs both pi and qf")
             for part, sizes in layers.items():  # a part of a mapping may be [] (pi: []: a linear actor)
                 if not (isinstance(sizes, list) and (sizes or part) and all(
                         isinstance(n, int) and not isinstance(n, bool) and 1 <= n <= 4096 for n in sizes)):

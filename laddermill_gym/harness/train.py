@@ -24,7 +24,6 @@ from __future__ import annotations
 import csv
 import dataclasses
 import os
-import shutil
 import sys
 import time
 from pathlib import Path
@@ -190,6 +189,29 @@ def torch_threads(requested: int | None = None) -> int:
     return n
 
 
+#: the config fields the command line overrides: (field, option)
+OVERRIDES = (("seed", "--seed"), ("total_timesteps", "--timesteps"), ("time_limit_minutes", "--minutes"),
+             ("n_envs", "--n-envs"))
+
+
+def saved_config(cfg: RLConfig) -> str:
+    """The config file's text with the command line's overrides written in (each top-level line ``field: value``
+    replaced, or added), so that the run folder's config.yaml is what was trained."""
+    import re
+
+    text = Path(cfg.file).read_text()
+    original = load_rl_config(cfg.file)
+    for field, option in OVERRIDES:
+        value = getattr(cfg, field)
+        if value == getattr(original, field):
+            continue
+        line = f"{field}: {value!r}  # laddermill train {option} {value!r} (the file said {getattr(original, field)!r})"
+        text, n = re.subn(rf"^{field}:[^\n]*$", line, text, count=1, flags=re.M)
+        if n == 0:
+            text = text.rstrip("\n") + "\n" + line + "\n"
+    return text
+
+
 def train(cfg: RLConfig, out: Path, threads: int | None = None) -> dict:
     """Train according to ``cfg`` into the folder ``out`` with ``threads`` torch threads (None:
     :func:`torch_threads`); returns a summary dict."""
@@ -198,9 +220,13 @@ def train(cfg: RLConfig, out: Path, threads: int | None = None) -> dict:
     from stable_baselines3.common.vec_env import VecMonitor, VecNormalize
 
     torch.set_num_threads(torch_threads(threads))
+    held = [f for f in ("config.yaml", "model.zip", "best_model.zip", "evaluations.csv") if (out / f).exists()]
+    if held:  # a second run there would mix its files with the first's (statistics included)
+        raise FileExistsError(f"{out}: holds a training run already ({', '.join(held)}); give another --out or "
+                              "delete it")
     out.mkdir(parents=True, exist_ok=True)
     (out / "checkpoints").mkdir(exist_ok=True)
-    shutil.copyfile(cfg.file, out / "config.yaml")
+    (out / "config.yaml").write_text(saved_config(cfg))
     (out / "algorithm.txt").write_text(cfg.algorithm + "\n")
     venv = VecMonitor(training_env(cfg))
     if cfg.normalize_observations:
@@ -221,9 +247,11 @@ def train(cfg: RLConfig, out: Path, threads: int | None = None) -> dict:
                         "abort)") as stop):
         cb = make_callback(cfg, out, eval_env, pbar, stop)
         model.learn(total_timesteps=cfg.total_timesteps, callback=cb, tb_log_name=cfg.algorithm)
-        if not stop.requested:
-            cb.evaluate()
-            if cfg.validation is not None:
+        if not stop.requested:  # the final model, unless the callback has just evaluated it (a time limit)
+            if not cb.rows or cb.rows[-1]["steps"] != model.num_timesteps:
+                cb.evaluate()
+            validated = getattr(cb, "val_rows", None)
+            if cfg.validation is not None and not (validated and validated[-1]["steps"] == model.num_timesteps):
                 cb.validate()
     minutes = (time.perf_counter() - t0) / 60
     model.save(out / "model.zip")
@@ -273,18 +301,23 @@ def main(argv: list[str] | None = None) -> int:
         refs = reference_returns(cfg, evaluation_env(cfg))
         print(f"wrote {plot_curve(args.out, rows, refs)}; references {refs}")
         return 0
-    over = {k: v for k, v in (("seed", args.seed), ("total_timesteps", args.timesteps),
-                              ("time_limit_minutes", args.minutes), ("n_envs", args.n_envs)) if v is not None}
-    for k, v in over.items():
-        check_number(f"--{k.replace('_', '-')}", v, low=0, strict=k != "seed", integer=k != "time_limit_minutes",
-                     high=2 ** 32 - 1 if k == "seed" else 4096 if k == "n_envs" else None)
+    given = {"seed": args.seed, "total_timesteps": args.timesteps, "time_limit_minutes": args.minutes,
+             "n_envs": args.n_envs}
+    over = {k: given[k] for k, _ in OVERRIDES if given[k] is not None}
+    for k, option in OVERRIDES:
+        if k in over:
+            check_number(option, over[k], low=0, strict=k != "seed", integer=k != "time_limit_minutes",
+                         high=2 ** 32 - 1 if k == "seed" else 4096 if k == "n_envs" else None)
     cfg = dataclasses.replace(cfg, **over)
     try:
         threads = torch_threads(args.torch_threads)
     except ValueError as err:
         p.error(str(err))
     out = args.out or Path("runs") / f"{Path(args.config).stem}_seed{cfg.seed}"
-    summary = train(cfg, out, threads)
+    try:
+        summary = train(cfg, out, threads)
+    except FileExistsError as err:
+        p.error(f"--out {str(out)!r}: {err}")
     if summary.get("interrupted"):
         print(f"laddermill train: interrupted (Ctrl-C) after {summary['steps']} steps: saved {out / 'model.zip'} "
               f"(and the evaluations so far) (exit status 130)", file=sys.stderr)
