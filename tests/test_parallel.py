@@ -127,17 +127,26 @@ def test_bad_parallel_options_exit_2_naming_the_option(argv, text, capsys):
     assert err.value.code == 2 and text in capsys.readouterr().err
 
 
-def test_ray_without_ray_installed_and_bad_training_options_exit_2(monkeypatch, capsys):
+def test_ray_without_ray_installed_and_bad_training_options_exit_2(monkeypatch, capsys, tmp_path):
     from laddermill_gym.harness import train_seeds
+
+    (tmp_path / "ppo_tethered_wing_seed3").mkdir()
+    (tmp_path / "ppo_tethered_wing_seed3" / "config.yaml").write_text("an earlier run\n")
 
     monkeypatch.setitem(sys.modules, "ray", None)  # import ray now raises ImportError
     with pytest.raises(SystemExit) as err:
         gb.main(["--suite", "gusts-v1", "--ray", "auto"])
     assert err.value.code == 2 and 'pip install "laddermill_gym[ray]"' in capsys.readouterr().err
     for argv, text in ((["--seeds", "0", "0"], "--seeds [0, 0]: must be distinct"),
-                       (["--seeds", "0", "--timesteps", "0"], "--timesteps = 0: must be > 0")):
+                       (["--seeds", "0", "--timesteps", "0"], "--timesteps = 0: must be a whole number > 0"),
+                       # a seed numpy refuses (the first seed trained, then the pool failed on a traceback), and a
+                       # NaN time limit (it passed "<= 0" and trained two steps)
+                       (["--seeds", "0", "4294967296"], "--seeds [0, 4294967296]: must be distinct whole numbers "
+                                                         "0 .. 2**32 - 1"),
+                       (["--seeds", "3", "--minutes", "nan"], "--minutes = nan: must be a finite number > 0"),
+                       (["--seeds", "3"], "the run folders")):
         with pytest.raises(SystemExit) as err:
-            train_seeds.main(["configs/agents/ppo_tethered_wing.yaml", *argv])
+            train_seeds.main(["configs/agents/ppo_tethered_wing.yaml", "--out-root", str(tmp_path), *argv])
         assert err.value.code == 2 and text in capsys.readouterr().err
 
 

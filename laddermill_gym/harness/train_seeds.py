@@ -20,7 +20,7 @@ import dataclasses
 import sys
 from pathlib import Path
 
-from laddermill_gym.studies.commands import Command
+from laddermill_gym.studies.commands import Command, UsageError, check_number
 from laddermill_gym.studies.parallel import Pool, add_arguments, check_arguments
 
 __all__ = ["train_task", "warm_envs", "train_seeds", "add_parser", "main"]
@@ -90,15 +90,26 @@ def _fail(prog: str, msg: str) -> None:
 
 def _run(args, prog: str = PROG) -> int:
     check_arguments(args, prog)
-    if len(set(args.seeds)) != len(args.seeds) or min(args.seeds) < 0:
-        _fail(prog, f"--seeds {args.seeds}: must be distinct whole numbers >= 0")
+    if len(set(args.seeds)) != len(args.seeds) or min(args.seeds) < 0 or max(args.seeds) > 2 ** 32 - 1:
+        _fail(prog, f"--seeds {args.seeds}: must be distinct whole numbers 0 .. 2**32 - 1")  # numpy's seed range
     given = (("timesteps", "total_timesteps", args.timesteps), ("minutes", "time_limit_minutes", args.minutes),
              ("n-envs", "n_envs", args.n_envs))
-    for option, _, v in given:
-        if v is not None and v <= 0:
-            _fail(prog, f"--{option} = {v}: must be > 0")
+    for option, _, v in given:  # finite (a NaN time limit passed "v <= 0" and trained two steps)
+        try:
+            check_number(f"--{option}", v, low=0, integer=option != "minutes")
+        except UsageError as err:
+            _fail(prog, str(err))
     over = {field: v for _, field, v in given if v is not None}
+    from laddermill_gym.harness.shared_config import is_shared_config
+
+    if is_shared_config(args.config):
+        _fail(prog, f"config {args.config!r}: a shared per-wing policy's config; train-seeds runs laddermill train's "
+                    "configs (train it with laddermill train CONFIG --seed S)")
     _config(args.config, over)  # a bad config fails here, before any worker starts
+    folders = [args.out_root / f"{Path(args.config).stem}_seed{s}" for s in args.seeds]
+    held = [str(f) for f in folders if (f / "config.yaml").exists() or (f / "model.zip").exists()]
+    if held:  # laddermill train refuses a folder holding a run; here before any seed trains
+        _fail(prog, f"--out-root {str(args.out_root)!r}: the run folders {held} exist already")
     for s in train_seeds(args.config, args.seeds, args.out_root, over, args.workers, args.ray):
         print(f"seed {s['seed']}: {s['steps']} steps in {s['minutes']} min; evaluation return best "
               f"{s['best_eval_return']:.2f}, last {s['last_eval_return']:.2f}; run folder {s['out']}")
