@@ -130,7 +130,7 @@ def test_bad_policy_input_is_named(tmp_path):
 
 def test_training_config_is_checked(tmp_path):
     from laddermill_gym.harness.shared_config import is_shared_config, load_shared_config
-    from laddermill_gym.model.configio import CONFIG_DIR
+    from laddermill_gym.model.configio import CONFIG_DIR, ConfigError
 
     cfg = load_shared_config("ppo_mill_v1")
     assert cfg.env_id == LM1 and cfg.k >= 0 and cfg.time_limit_minutes <= 120
@@ -140,11 +140,15 @@ def test_training_config_is_checked(tmp_path):
                              ("gamma: 0.99 ", "gama: 0.99 ", "gama"),
                              ("time_limit_minutes: 110.0", "time_limit_minutes: 300.0", "time_limit_minutes"),
                              ("episode_time: 60.0      # [s] training", "episode_tme: 60.0      # [s] training",
-                              "episode_tme")):
+                              "episode_tme"),
+                             # values laddermill train's configs check, each a traceback once the mill was built
+                             ("learning_rate: 3.0e-5", "learning_rate: -1.0", "'ppo.hyperparameters.learning_rate'"),
+                             ("episode_time: 60.0 ", "episode_time: -5.0 ", "'env_kwargs.episode_time' = -5.0"),
+                             ("  - type: ", "  - type: Bogus\n    was: ", r"'disturbances\[0\]'")):
         bad = tmp_path / "bad.yaml"
         assert old in text
         bad.write_text(text.replace(old, new, 1))
-        with pytest.raises(ValueError, match=needle) as err:
+        with pytest.raises(ConfigError, match=needle) as err:
             load_shared_config(bad)
         assert "bad.yaml" in str(err.value)
 

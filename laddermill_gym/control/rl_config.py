@@ -181,14 +181,15 @@ def _is_number(text: str) -> bool:
         return False
 
 
-def _read_hyperparameters(s: Section, algo: str, n_envs: int, total: int) -> dict:
+def read_hyperparameters(s: Section, algo: str, n_envs: int | None, total: int | None) -> dict:
     """The ``hyperparameters`` mapping, each name an argument of the SB3 algorithm and each number of
     :data:`HYPERPARAMETERS` within its bounds; a PPO minibatch within a rollout, a SAC one within the buffer,
-    ``learning_starts`` within ``total_timesteps``."""
+    ``learning_starts`` within ``total_timesteps`` (left out where ``n_envs`` / ``total`` is None: a trainer that
+    sizes them itself, the shared per-wing policy's)."""
     raw = s.raw("hyperparameters", {}) or {}
     if not isinstance(raw, dict):
         raise s.error("hyperparameters", raw, "must be a mapping")
-    hp = Section(raw, s.file, "hyperparameters")
+    hp = Section(raw, s.file, f"{s.path}.hyperparameters" if s.path else "hyperparameters")
     known = set(inspect.signature(_algorithm_class(algo)).parameters) - {"policy", "env", "seed", "policy_kwargs",
                                                                          "tensorboard_log", "verbose", "device"}
     out = {}
@@ -207,11 +208,12 @@ def _read_hyperparameters(s: Section, algo: str, n_envs: int, total: int) -> dic
             out[key] = value
         else:
             out[key] = hp.number(key, **{k: v for k, v in rule.items() if k not in ("optional", "auto")})
-    limits = (("batch_size", out.get("n_steps", 2048) * n_envs, "a rollout (n_steps x n_envs)") if algo == "PPO"
+    rollout = None if n_envs is None else out.get("n_steps", 2048) * n_envs
+    limits = (("batch_size", rollout, "a rollout (n_steps x n_envs)") if algo == "PPO"
               else ("batch_size", out.get("buffer_size", 10**6), "the replay buffer (buffer_size)"),
               ("learning_starts", total, "total_timesteps"), ("train_freq", total, "total_timesteps"))
     for key, most, what in limits:
-        if key in out and out[key] > most:
+        if key in out and most is not None and out[key] > most:
             raise hp.error(key, out[key], f"must be at most {most} ({what})")
     return out
 
@@ -293,7 +295,7 @@ _SETTINGS = {"reward": "reward_class", "termination": "termination_class", "init
              "settle": "SettleConfig", "drum": "DrumConfig", "speed": "SpeedCommandConfig"}
 
 
-def _check_env_kwargs(s: Section, env_id: str, kwargs: dict) -> None:
+def check_env_kwargs(s: Section, env_id: str, kwargs: dict) -> None:
     """ConfigError naming ``env_kwargs.NAME`` (and its value) for an argument the task would refuse or one beyond
     :data:`ENV_KWARG_BOUNDS`: its type against the task's default (flag, number, text), its settings mapping
     (``reward``, ``termination``, ...) through the task's own dataclass, and the named choices and files; checked
@@ -359,7 +361,7 @@ def load_rl_config(path: str | Path) -> RLConfig:
         if key not in known:
             raise s.error(f"env_kwargs.{key}", env_kwargs[key],
                           f"unknown argument of {env_id} (known: {', '.join(known)})")
-    _check_env_kwargs(s, env_id, env_kwargs)
+    check_env_kwargs(s, env_id, env_kwargs)
     disturbances = check_disturbances(s)
     cfg = dict(
         algorithm=algo, env_id=env_id, n_envs=n_envs, env_kwargs=dict(env_kwargs), disturbances=disturbances,
@@ -374,7 +376,7 @@ def load_rl_config(path: str | Path) -> RLConfig:
     cfg["eval_episodes"] = ev.number("episodes", integer=True, positive=True, high=1000,
                                      why="each evaluation runs them all")
     ev.done()
-    hyper = _read_hyperparameters(s, algo, n_envs, cfg["total_timesteps"])
+    hyper = read_hyperparameters(s, algo, n_envs, cfg["total_timesteps"])
     cfg["policy"] = s.text("policy", "MlpPolicy", choices=("MlpPolicy", "ResidualPolicy", "ResidualSACPolicy"))
     pk = _read_policy_kwargs(s, algo, cfg["policy"])
     init_from = read_init_from(s, algo, pk, cfg["normalize_observations"], cfg["policy"])

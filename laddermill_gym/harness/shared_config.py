@@ -9,6 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_dict
+from laddermill_gym.control.rl_config import check_env_kwargs, read_hyperparameters
 from laddermill_gym.envs import env_arguments
 from laddermill_gym.model.configio import find_config, read_yaml
 from laddermill_gym.multiagent.agents import AGENT_KINDS
@@ -79,11 +80,15 @@ def load_shared_config(path: str | Path) -> SharedTrainConfig:
         if key not in known or key in ("disturbances", "groups"):
             raise s.error(f"env_kwargs.{key}", env_kwargs[key], f"not an argument a per-wing training may set "
                           f"(known: {', '.join(a for a in known if a not in ('disturbances', 'groups'))})")
+    check_env_kwargs(s, env_id, env_kwargs)  # values, as laddermill train's configs (episode_time -5 passed)
     dist = s.raw("disturbances", []) or []
     if not isinstance(dist, list):
         raise s.error("disturbances", dist, "must be a list of mappings")
     for i, d in enumerate(dist):
-        disturbance_from_dict(d, f"{path}: disturbances[{i}]")
+        try:
+            disturbance_from_dict(d, f"{path}: disturbances[{i}]")
+        except ValueError as err:  # a traceback on the command line before
+            raise s.error(f"disturbances[{i}]", d, str(err)) from None
     teacher = s.raw("teacher", None)
     if teacher is not None and not isinstance(teacher, str):
         raise s.error("teacher", teacher, "must be an LQR config's file or shipped name (configs/agents)")
@@ -113,10 +118,9 @@ def load_shared_config(path: str | Path) -> SharedTrainConfig:
                                            for v in vf):
         raise ppo.error("value_net", vf, "must be a list of hidden layer widths (integers 1-1024)")
     cfg["value_net"] = tuple(vf)
-    hyper = ppo.raw("hyperparameters", {}) or {}
-    if not isinstance(hyper, dict):
-        raise ppo.error("hyperparameters", hyper, "must be a mapping of PPO's keyword arguments")
-    cfg["hyperparameters"] = dict(hyper)
+    # names and values as laddermill train's configs check them (a learning rate of -1 or a text batch size
+    # passed and failed in SB3 once the mill was built); the rollout's size is the trainer's (agents x copies)
+    cfg["hyperparameters"] = read_hyperparameters(ppo, "PPO", None, None)
     ppo.done()
     ev = s.section("eval")
     cfg.update(eval_episodes=ev.number("episodes", integer=True, positive=True, high=64),
@@ -124,14 +128,4 @@ def load_shared_config(path: str | Path) -> SharedTrainConfig:
                eval_every=ev.number("every", integer=True, positive=True))
     ev.done()
     s.done()
-    import inspect
-
-    from stable_baselines3 import PPO
-
-    allowed = set(inspect.signature(PPO.__init__).parameters) - {"self", "policy", "env", "policy_kwargs",
-                                                                  "seed", "device", "tensorboard_log", "verbose"}
-    for key in cfg["hyperparameters"]:
-        if key not in allowed:
-            raise ValueError(f"{path}: ppo.hyperparameters.{key} = {cfg['hyperparameters'][key]!r}: not an argument "
-                             f"of PPO (known: {', '.join(sorted(allowed))})")
     return SharedTrainConfig(file=Path(path), **cfg)
