@@ -82,7 +82,11 @@ def test_rl_config_errors_name_the_field(tmp_path):
                            ({"disturbances": [{"type": "Tornado"}]}, "disturbances"),
                            # SAC's only (PPO crashed at its first update); a typo'd part SB3 ignored (no critic)
                            ({"hyperparameters": {"ent_coef": "auto"}}, "hyperparameters.ent_coef"),
-                           ({"policy_kwargs": {"net_arch": {"pi": [64], "qf": [64]}}}, "net_arch.qf")):
+                           ({"policy_kwargs": {"net_arch": {"pi": [64], "qf": [64]}}}, "net_arch.qf"),
+                           # SB3's PPO asserts it; a validation episode of a fraction of periods failed at the first
+                           ({"hyperparameters": {"batch_size": 1}}, "hyperparameters.batch_size"),
+                           ({"validation": {**yaml.safe_load(Path(PPO_CONFIG).read_text())["validation"],
+                                            "episode_time": 5.03}}, "validation.episode_time")):
         with pytest.raises(ConfigError, match=field.replace(".", r"\.")):
             load_rl_config(_small_config(tmp_path, **changes))
 
@@ -201,6 +205,12 @@ def test_a_run_folder_holds_one_run_with_the_config_it_trained(tmp_path, capsys)
     saved.write_text(saved_config(cfg))
     back = load_rl_config(saved)
     assert (back.seed, back.n_envs, back.time_limit_minutes, back.total_timesteps) == (7, 2, 0.5, 512)
+    with pytest.raises(SystemExit) as exc:  # n_envs 1 makes a rollout of 64 steps, below the minibatch of 64 x 2
+        main([str(_small_config(tmp_path, hyperparameters={"n_steps": 64, "batch_size": 128})), "--n-envs", "1",
+              "--out", str(tmp_path / "other")])
+    err = capsys.readouterr().err
+    assert exc.value.code == 2 and "--n-envs 1" in err
+    assert "'hyperparameters.batch_size' = 128: must be at most 64" in err
     run = tmp_path / "run"
     run.mkdir()
     (run / "config.yaml").write_text("from an earlier run\n")

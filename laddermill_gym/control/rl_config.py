@@ -215,6 +215,8 @@ def read_hyperparameters(s: Section, algo: str, n_envs: int | None, total: int |
     for key, most, what in limits:
         if key in out and most is not None and out[key] > most:
             raise hp.error(key, out[key], f"must be at most {most} ({what})")
+    if algo == "PPO" and out.get("batch_size", 64) < 2:  # SB3's PPO asserts it (its advantages are normalised)
+        raise hp.error("batch_size", out["batch_size"], "must be at least 2 (PPO normalises a minibatch's advantages)")
     return out
 
 
@@ -381,5 +383,10 @@ def load_rl_config(path: str | Path) -> RLConfig:
     pk = _read_policy_kwargs(s, algo, cfg["policy"])
     init_from = read_init_from(s, algo, pk, cfg["normalize_observations"], cfg["policy"])
     phases = dict(critic_warmup=read_critic_warmup(s, init_from), validation=read_validation(s))
+    val = phases["validation"]
+    if val is not None:  # its episodes fly the training's control period: a whole number of them (else at once)
+        why = episode_argument_error(env_id, dict(cfg["env_kwargs"], episode_time=val.episode_time))
+        if why:
+            raise ConfigError(f"{s.file}: field 'validation.episode_time' = {val.episode_time!r}: {why}")
     s.done()
     return RLConfig(file=Path(path), hyperparameters=hyper, policy_kwargs=pk, init_from=init_from, **phases, **cfg)

@@ -31,7 +31,8 @@ from pathlib import Path
 import numpy as np
 from tqdm import tqdm
 
-from laddermill_gym.control.rl_config import RLConfig, load_rl_config
+from laddermill_gym.control.rl_config import RLConfig, load_rl_config, read_hyperparameters
+from laddermill_gym.model.configio import ConfigError, Section
 from laddermill_gym.sim.interrupt import stop_requests
 from laddermill_gym.studies.commands import Parser, check_number
 
@@ -309,6 +310,12 @@ def main(argv: list[str] | None = None) -> int:
             check_number(option, over[k], low=0, strict=k != "seed", integer=k != "time_limit_minutes",
                          high=2 ** 32 - 1 if k == "seed" else 4096 if k == "n_envs" else None)
     cfg = dataclasses.replace(cfg, **over)
+    if over:  # the config's limits that depend on them (a minibatch within a rollout of n_steps x n_envs, ...)
+        try:
+            read_hyperparameters(Section({"hyperparameters": dict(cfg.hyperparameters)}, cfg.file), cfg.algorithm,
+                                 cfg.n_envs, cfg.total_timesteps)
+        except ConfigError as err:
+            p.error(f"{err}, with {' '.join(f'{o} {over[k]}' for k, o in OVERRIDES if k in over)}")
     try:
         threads = torch_threads(args.torch_threads)
     except ValueError as err:
