@@ -86,7 +86,13 @@ def test_rl_config_errors_name_the_field(tmp_path):
                            # SB3's PPO asserts it; a validation episode of a fraction of periods failed at the first
                            ({"hyperparameters": {"batch_size": 1}}, "hyperparameters.batch_size"),
                            ({"validation": {**yaml.safe_load(Path(PPO_CONFIG).read_text())["validation"],
-                                            "episode_time": 5.03}}, "validation.episode_time")):
+                                            "episode_time": 5.03}}, "validation.episode_time"),
+                           # each a traceback in torch, SB3 or load_scene before
+                           ({"policy_kwargs": {"optimizer_kwargs": {"epss": 1e-5}}}, "optimizer_kwargs.epss"),
+                           ({"policy_kwargs": {"features_extractor_kwargs": {"x": 1}}},
+                            "features_extractor_kwargs.x"),
+                           ({"env_kwargs": {"scene_options": {"bogus": 1}}}, "env_kwargs.scene_options.bogus"),
+                           ({"env_kwargs": {"physics_dt": 0.03}}, "env_kwargs.physics_dt")):
         with pytest.raises(ConfigError, match=field.replace(".", r"\.")):
             load_rl_config(_small_config(tmp_path, **changes))
 

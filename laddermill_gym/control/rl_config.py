@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_dict
+from laddermill_gym.control.rl_env_kwargs import check_env_kwargs, env_family
 from laddermill_gym.control.rl_phases import (
     CriticWarmup,
     Validation,
@@ -19,7 +20,7 @@ from laddermill_gym.control.rl_phases import (
     read_init_from,
     read_validation,
 )
-from laddermill_gym.envs import ENV_IDS, env_arguments, episode_argument_error, task_class
+from laddermill_gym.envs import ENV_IDS, env_arguments, episode_argument_error
 from laddermill_gym.envs.rotorcraft.task import CraftTask
 from laddermill_gym.envs.task import WingTask
 from laddermill_gym.model.configio import ConfigError, Section, find_config, read_yaml
@@ -41,15 +42,6 @@ CARRIED_KWARGS: dict[str, tuple[str, ...]] = {
     "pumping": ("config", "scene_options", "control_dt"),
     "pointmass": ("scene", "scene_options", "control_dt", "groups", "pitch_range_deg", "roll_range_deg"),
 }
-
-
-def env_family(env_id: str) -> str:
-    """'craft' (Rotorcraft-v0), 'mill' (the moving-cable LadderMill-v0), 'pumping' (PumpingKite-v0), 'pointmass'
-    (PointMassChain-v0) or 'wing' (the fixed-cable wing scenes)."""
-    if "craft" in ENV_IDS[env_id]:
-        return "craft"
-    name = task_class(env_id).__name__
-    return {"MillTask": "mill", "PumpingTask": "pumping", "PointMassTask": "pointmass"}.get(name, "wing")
 
 
 def env_kwargs_known(env_id: str) -> tuple[str, ...]:
@@ -269,81 +261,29 @@ def _read_policy_kwargs(s: Section, algo: str, policy_name: str = "MlpPolicy") -
             pk.number(key, **POLICY_NUMBERS[key])
         elif key.endswith("_class") or key == "activation_fn":
             raise pk.error(key, value, "a Python class: set it in Python (stable_baselines3), not in a config")
+        elif key in ("optimizer_kwargs", "features_extractor_kwargs"):  # passed to the default classes' __init__
+            own = {"actor_lr_scale"} if policy_name == "ResidualSACPolicy" and key == "optimizer_kwargs" else set()
+            _check_class_kwargs(pk, key, value, policy, own)  # residual_sac.py's own: the actor's slower rate
         elif key in ("residual_after_squash", "residual_base_clipped") or isinstance(
                 inspect.signature(policy).parameters[key].default, bool):
             pk.flag(key)
     return dict(raw)
 
 
-#: Upper bounds of the env arguments a config sets, beyond the envs' own checks (finite, > 0): (bound, why).
-ENV_KWARG_BOUNDS: dict[str, tuple[float, str]] = {
-    "episode_time": (86400.0, "s: a day of flight per episode"),
-    "control_dt": (10.0, "s: a control period longer than the wings' fastest motion"),
-    "physics_dt": (1.0, "s: as a scene's integrator.dt"),
-    "wind_dt": (60.0, "s: the sampling of the disturbances' time histories"),
-    "settle_time": (3600.0, "s: an hour of settling per episode"),
-    "n_bands": (50.0, "bands per leg: the mill's 101 wings make 50 per leg"),
-}
-#: Upper bounds of the fields of the settings mappings (``initial_noise``: standard deviations): (bound, why).
-SETTINGS_BOUNDS: dict[str, tuple[float, str]] = {
-    "power_weight": (100.0, "a power term up to 100 times the other terms' weights"),
-    "lateral_velocity": (150.0, "m/s: the fastest wind (ladder/bounds.py)"),
-    "roll_rate": (100.0, "rad/s: the scenes' exploding-state guard max_rate"),
-    "yaw_rate": (100.0, "rad/s: the scenes' exploding-state guard max_rate"),
-    "pitch_rate": (100.0, "rad/s: the scenes' exploding-state guard max_rate"),
-}
-#: The settings dataclasses of env arguments given as mappings, by argument: (module of the task, class name).
-_SETTINGS = {"reward": "reward_class", "termination": "termination_class", "initial_noise": "noise_class",
-             "settle": "SettleConfig", "drum": "DrumConfig", "speed": "SpeedCommandConfig"}
-
-
-def check_env_kwargs(s: Section, env_id: str, kwargs: dict) -> None:
-    """ConfigError naming ``env_kwargs.NAME`` (and its value) for an argument the task would refuse or one beyond
-    :data:`ENV_KWARG_BOUNDS`: its type against the task's default (flag, number, text), its settings mapping
-    (``reward``, ``termination``, ...) through the task's own dataclass, and the named choices and files; checked
-    without building the environment."""
-    import sys
-
-    from laddermill_gym.envs.actions import ACTION_MODES, GROUPINGS
-    from laddermill_gym.envs.laddermill.actions import SLOT_GROUPINGS
-    from laddermill_gym.envs.task_settings import RewardConfig, TerminationConfig, config_from
-
-    task = task_class(env_id)
-    params = inspect.signature(task).parameters
-    ek = Section(kwargs, s.file, "env_kwargs")
-    choices = {"action_mode": ACTION_MODES, "groups": SLOT_GROUPINGS if env_family(env_id) == "mill" else GROUPINGS}
-    files = {"scene": "scenes", "craft": "rotorcraft", "config": "pumping"}
-    for key, value in kwargs.items():
-        default = params[key].default if key in params else None
-        if key in _SETTINGS and (isinstance(value, dict) or value is None):
-            name = _SETTINGS[key]
-            cls = getattr(task, name, None) if name.endswith("_class") else getattr(sys.modules[task.__module__],
-                                                                                    name, None)
-            cls = cls or {"reward": RewardConfig, "termination": TerminationConfig}.get(key)
-            try:
-                if cls is not None:
-                    config_from(value, cls, f"env_kwargs.{key}")
-            except (TypeError, ValueError) as err:
-                raise ConfigError(f"{s.file}: field 'env_kwargs.{key}' = {value!r}: {err}") from None
-            sub = Section(value or {}, s.file, f"env_kwargs.{key}")
-            for name in set(sub.data) & set(SETTINGS_BOUNDS):
-                sub.number(name, nonneg=True, high=SETTINGS_BOUNDS[name][0], why=SETTINGS_BOUNDS[name][1])
-        elif isinstance(default, bool):
-            ek.flag(key)
-        elif isinstance(default, (int, float)) or key in ENV_KWARG_BOUNDS:
-            if value is not None or default is not None:
-                high, why = ENV_KWARG_BOUNDS.get(key, (None, ""))
-                ek.number(key, integer=isinstance(default, int), positive=bool(default) or key in ENV_KWARG_BOUNDS,
-                          nonneg=True, high=high, why=why)
-        elif key in files and value is not None:
-            find_config(files[key], ek.text(key), f"{s.file}: field 'env_kwargs.{key}'")
-        elif key in choices and not isinstance(value, list):
-            ek.text(key, choices=choices[key])
-    if "episode_time" in kwargs or "control_dt" in kwargs:  # an episode is a whole number of control periods
-        why = episode_argument_error(env_id, kwargs)
-        if why:
-            key = "episode_time" if "episode_time" in kwargs else "control_dt"
-            raise ConfigError(f"{s.file}: field 'env_kwargs.{key}' = {kwargs[key]!r}: {why}")
+def _check_class_kwargs(pk: Section, key: str, value, policy, own: set[str] = frozenset()) -> None:
+    """ConfigError naming ``policy_kwargs.KEY`` unless ``value`` is a mapping (or None) of arguments of the class it
+    goes to: the policy's default optimizer (Adam) or features extractor (a typo failed in torch or SB3 on a
+    traceback)."""
+    if value is None:
+        return
+    if not isinstance(value, dict):
+        raise pk.error(key, value, "must be a mapping of keyword arguments")
+    cls = inspect.signature(policy).parameters[key.replace("_kwargs", "_class")].default
+    known = (set(inspect.signature(cls).parameters) - {"self", "params", "observation_space"}) | set(own)
+    for name in value:
+        if name not in known:
+            raise pk.error(f"{key}.{name}", value[name], f"not an argument of {cls.__name__} (known: "
+                           f"{sorted(known)})")
 
 
 def load_rl_config(path: str | Path) -> RLConfig:
