@@ -274,7 +274,9 @@ class PointMassTask(TaskCore):
         dy = kites[:, :, 1] - self.nominal[:, 1]
         terminated = failure > 0
         info = {"reward_power": rc.power_weight * power / self.p_ref,
-                "reward_lateral": -rc.lateral_weight * -np.expm1(-np.mean((dy / self.lateral_scale) ** 2, axis=1)),
+                # a non-finite state (a failure) counts as the full penalty, as the shared reward counts it
+                "reward_lateral": -rc.lateral_weight * -np.expm1(-np.nan_to_num(
+                    np.mean((dy / self.lateral_scale) ** 2, axis=1), nan=np.inf)),
                 "reward_rates": np.zeros(self.n_copies),
                 "reward_effort": -rc.effort_weight * -np.expm1(-np.mean(a ** 2, axis=1)),
                 "reward_failure": -rc.failure_penalty * terminated}

@@ -316,12 +316,21 @@ class CraftTask(TaskCore):
         sim.reset(state=bt.states[b], t=float(bt.t[b]), controls=bt.controls[b], check=False)
         return sim
 
+    def _diagnosis(self, b: int) -> str:
+        """The simulator's diagnosis of copy ``b``'s state; for a state that is not finite (the simulator refuses
+        one) its first non-finite entry."""
+        x = self.batch.states[b]
+        bad = np.flatnonzero(~np.isfinite(x))
+        if bad.size:
+            return f"state[{int(bad[0])}] = {x[bad[0]]} is not finite ({bad.size} entries)"
+        return self.simulator(b).diagnose()
+
     def failure_text(self, b: int, code: int) -> str:
         """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0."""
         t = float(self.batch.t[b])
         if code in (1, 2) and self.batch.status[b] != OK:
             kind = _STATUS_TEXT.get(int(self.batch.status[b]), f"status {int(self.batch.status[b])}")
-            error = f"integration failed at t = {t:.6g} s ({kind}); {self.simulator(b).diagnose()}"
+            error = f"integration failed at t = {t:.6g} s ({kind}); {self._diagnosis(b)}"
             if code == 2:
                 return f"t = {t:.2f} s: a rotor's Glauert inflow did not converge ({error})"
             return f"t = {t:.2f} s: {error}"
