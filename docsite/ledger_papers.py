@@ -98,7 +98,8 @@ LANSDORP = Covered(
         tuple(ST % f"weather2010][{k}" for k in ("kite_cf", "turbine_cf", "turbine", "altitude_m"))
         + tuple(ST % f"cabauw][{k}" for k in ("kite_cf", "turbine_cf", "turbine"))),
        (r"with the lateral LQR: ([\d.-]+) kW per cycle after the first \(which starts from the trim\), against "
-        r"([\d-]+) kW from Lansdorp's eqs\. 1-14", (PC % "sim", PC % "lansdorp")),
+        r"([\d-]+) kW from Lansdorp's eqs\. 1-14 and ([\d-]+) kW from Schmehl's model",
+        (PC % "sim", PC % "lansdorp", PC % "schmehl")),
        (r"the static-kite form of eq\. 9 gives ([\d.-]+) kW; eqs\. 10-14 fed the simulated mean tension and speed "
         r"([\d.-]+) kW\)", (PC % "static", PC % "fed")))
     + _evaluate_rows(),
@@ -109,7 +110,7 @@ LANSDORP = Covered(
            "design 2 comes close, and design 1 (Table 1) climbs to the 600 m cap", "so a 1 MW mean",
            "The paper's \"over 50 % against 22 %\"", "![Table 2 design",
            "(Figs. 10-13)", "(Lansdorp et al. 2008, simulated)", "on a 300 m tether", "(efficiency 0.92 each way)",
-           "Delta L = 200 m", "eqs. 1-14 (and", "eq. 9, is", "eq. 9 gives", "eqs. 10-14 fed",
+           "Delta L = 200 m", "eq. 9, is", "eq. 9 gives", "eqs. 10-14 fed",
            "(reel-in at 5 m/s, not 16.7; a 10 m/s wind; one tether element)",
            "(400 s, the registered 0.01 rad direction step;", "| 400 s |", "the 240 m drum"),
     timings=("optimised in 1.3-2.7 s (median of 5;", "15 min;", "| PPO (15 min) |"),
@@ -146,7 +147,10 @@ QUASISTEADY_CHECKS = (  # the checks of docsite/ledger_quasisteady.py's entry
        (r"comes close: ([\d.]+) % against ([\d.]+) %\.", (ST % "weather2010][kite_cf", ST % "weather2010][turbine_cf")),
        (r"f <= 1/2 gives ([\d.]+) MW, with peaks of ([\d.]+) MW", ("~" + KR % ("weather2010", 2),
                                                                   "~" + ST % "weather2010][peak_MW")),
-       (r"\(peak ([\d.]+) MW for a ([\d.]+) MW mean\)", ("~" + ST % "cabauw][peak_MW", "~" + KR % ("cabauw", 2)))))
+       (r"\(peak ([\d.]+) MW for a ([\d.]+) MW mean\)", ("~" + ST % "cabauw][peak_MW", "~" + KR % ("cabauw", 2))),
+       (r"the Schmehl model gives ([\d.]+)-([\d.]+) of Lansdorp's power at 8-25 m/s and ([\d.]+) at 6 m/s\. Below "
+        r"([\d.]+) m/s it gives none", (ST % "cabauw][models_lo", ST % "cabauw][models_hi", ST % "cabauw][models_6",
+                                        ST % "cabauw][models_from"))))
 
 CYCLE_ROW = r"\| {} \| ([\d.]+) \| " + r"(\d+) \| " * 6 + r"([\d.]+) \| (\d+) \| ([\d.]+) \|"
 CYCLE_KEYS = ("t_cycle", "sim", "lansdorp", "schmehl", "static", "fed", "tension_out", "speed_out", "tension_in",

@@ -50,9 +50,14 @@ QUASISTEADY = Covered(
         'tether.',
         'The mass is the kite, at 0.6 kg/m^2 (our assumption, about that of a leading-edge-inflatable kite with '
         'its control unit), plus half of the tether mass.',
-        'The traction power is averaged over 8 course angles of a circle at phi = 0.',
+        'The traction phase flies a loop of 8 course angles at phi = 0, even in chi.',
+        'it, 1/lambda (our derivation).',
+        'With weight, the reel-out power stays below the massless zeta_max at every wind.',
+        'Until 2026-12-07 the model averaged the 8 courses with equal weights, and a course the kite could not fly '
+        'counted as zero tension.',
+        'the kite, at 0.6 kg/m^2 with half its tether, cannot climb through the top of its loop.',
+        'prints the ratios): for the Table 2 design at Cabauw,',
         '/ 3 optimum and the zeta_max value are found by a scalar optimiser.',
-        "At 4-6 m/s the kite's weight and the transition time are large compared with the small traction force.",
         '## Site optimisation (eqs. 16-20)',
         'T_i = c_i g(C_L), with c_i = rho S w_e,i^2 / 2.',
         "So choosing the C_L's is choosing the tensions T_i in [T(C_L = 0), min(T(C_L,max), F_max)]. Maximising P"
@@ -144,8 +149,6 @@ QUASISTEADY = Covered(
         # coverage (100 % less the bins' share); k1 = 100 is the sweep's input
         'C_L 1.05-1.08 against 1.01, d 29-38 mm against 32 mm, S 196-227 m^2 against 169 m^2, and the angle at '
         'its 57 deg bound for the 2010 data.',
-        "for the Table 2 design at Cabauw, the Schmehl model gives 4-5 % less power than Lansdorp's between 8 and 18 "
-        'm/s, 5-6 % above 18 m/s, and 7-14 % at 4-6 m/s.',
         'Time outside the data (43.4 % for the Cabauw bins)',
         'With k1 = 100 N/m^2 our kite grows and its mean C_L falls.',
         '- The kite area has its minimum near a 60-65 deg cable angle, which the paper also found ("an optimal kite '

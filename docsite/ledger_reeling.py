@@ -150,23 +150,23 @@ REELING = Covered(
             "order); the stable step's omega_max; bad fields named.",)),
         Printed('reeling_cycle_40', (
             'Against Schmehl\'s model at the simulated operating point (docs/pumping.md, "Power curve"), prints '
-            '45719 W simulated against 61063 W matched on the third cycle:',
+            '45719 W simulated against 56746 W matched on the third cycle:',
         )),
         Printed('pumping_power_curve_printed', (  # the single element's sim / matched at 10 m/s
-            '0.63 at this wind (10 m/s;', "The single element's 0.63 at 10 m/s",
+            '0.68 at this wind (10 m/s).', "The single element's 0.68 at 10 m/s",
         )),
         Printed('tether_200', (
             'the tether between 193 and 521 m, **5 to 13 elements of 40 m at every length**, 49058 W on the third '
             'cycle (the single 200 m element: 33881 W); no node touched the ground.',
         )),
         Printed('reeling_power_curve_printed', (
-            ', slow, checks 10, 12 and 14 m/s), not at 8 m/s (0.68).',
-            'becomes 0.75 on the reeling tether:',
+            'becomes 0.81 on the reeling tether:',
+            ', slow, checks 10, 12 and 14 m/s).',
             '(wing / drum 0.999-1.012:',
-            '57719 against 66255 N),',
+            '56256 against 61585 N),',
             "Which of the course's parts takes how much is not yet measured. 2. **The reel-in tension**:",
             "the hang near the zenith pulls 4.4-16.7 kN while the model's depowered kite at the simulated reel-in "
-            'elevation pulls 0-5.2 kN.',
+            'elevation pulls 0-5.0 kN.',
             '10-14 on the simulated means less the simulated power)',
             "and **the model's transitions** (its cycle time's transition phases, which the simulated cycle,",
             'does not spend)',
@@ -174,10 +174,6 @@ REELING = Covered(
         )),
     ),
     history=(
-        History('2026-11-29', 'python -m laddermill_gym.studies.pumping.power_curve (pumping.md\'s table at 763ea12: '
-                '31262 / 49117 W at 10 m/s)', "the single-element power curve as pumping.md quoted it on 2026-11-29 "
-                "(pumping.md's table has since moved to 31711 / 50033 W: 0.63; the change not bisected)",
-                ('0.64 as written on 2026-11-29',)),
         History('2026-11-29', 'python -m laddermill_gym.studies.pumping.tether_convergence --start-length 200 '
                 '--lengths 200 40', 'the 200-500 m run as first written (78cc615), before the crosswind controller '
                 'changed (0db432c, e1ce3ac)', ('bisected: 191-521 m, 49982 W and 34567 W.)',)),

@@ -49,6 +49,14 @@ def site_tables() -> dict:
         found[source].update(kite_row=kite[1:], turbine_row=turbine[1:], kite_cf=kite[4], turbine_cf=turbine[4],
                              turbine=turbine[0].split(" ")[0])
         found[source]["peak_MW"] = _need(rf"\(data: {source}; laddermill peak ([\d.]+) MW", out, argv).group(1)
+    # the models' line of Table 2's design on Cabauw: Schmehl / Lansdorp at 4, 6, 8, 12, 16, 20, 25 m/s, and the
+    # lowest wind of Schmehl's flown loop; models_lo / models_hi: the least and largest ratio at 8-25 m/s
+    m = _need(r"table2 design on cabauw, models_cabauw\.png: .* m/s: ([\d. ]+); Schmehl's loop flown from ([\d.]+) m/s",
+              out, argv)
+    ratios = m.group(1).split()
+    strong = sorted(ratios[2:], key=float)
+    found["cabauw"].update(models_4=ratios[0], models_6=ratios[1], models_lo=strong[0], models_hi=strong[-1],
+                           models_from=m.group(2))
     return found
 
 

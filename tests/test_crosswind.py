@@ -161,3 +161,18 @@ def test_cycle_power_within_30_percent_of_schmehl_at_its_operating_point(wind):
     assert shares == pytest.approx(r["schmehl_matched_W"] - r["power"], rel=1e-9)
     loyd = 4 / 27 * 0.5 * r["rho"] * r["wing_area_m2"] * r["cl"] * (r["cl"] / r["cd"]) ** 2 * r["wind"] ** 3
     assert r["e_out"] / r["t_out"] < loyd, (r["e_out"] / r["t_out"], loyd)
+
+
+def test_power_curve_exit_status_tells_a_failure_from_a_wind_without_trim(tmp_path, monkeypatch):
+    """A wind too weak for the static start is a physical limit, reported and drawn (exit 0: the docs' picture
+    command runs the default winds 4-20 m/s, and 4 and 6 m/s have no trim); a cycle that fails exits 1."""
+    import json
+
+    from laddermill_gym.studies.pumping import power_curve
+
+    assert power_curve.main(["--winds", "4", "--out", str(tmp_path)]) == 0
+    (row,) = json.loads((tmp_path / "pumping_power_curve.json").read_text())
+    assert row["failed"].startswith("no trim") and (tmp_path / "pumping_power_curve.png").is_file()
+    failed = {"v0": 9.0, "failed": "t = 12.00 s: ground contact", **{k: math.nan for k in power_curve._KEYS}}
+    monkeypatch.setattr(power_curve, "curve_point", lambda wind, length=None: failed)
+    assert power_curve.main(["--winds", "9"]) == 1

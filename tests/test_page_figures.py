@@ -321,20 +321,20 @@ def test_the_benchmarks_stable_steps_are_named_when_changed():
     assert len(bad) == 1 and "0.0201" in bad[0] and "benchmarks.md" in bad[0], bad
 
 
-#: pumping_cycle's crosswind table as it printed on 2026-11-30 (cycles 0 and 1; then each cycle's phases).
+#: pumping_cycle's crosswind table as it printed on 2026-12-07 (cycles 0 and 1; then each cycle's phases).
 CROSSWIND_COLUMNS = ("t_cycle", "sim", "matched", "matched_tension", "lansdorp", "schmehl", "static", "fed",
                      "tension_out", "speed_out", "tension_in", "alpha", "max_dy")
 CROSSWIND_PRINTED = {
-    "c0": dict(zip(CROSSWIND_COLUMNS, "270.4 31711 50033 66737 114703 110810 3471 32609 47128 2.78 5185 8.48 "
+    "c0": dict(zip(CROSSWIND_COLUMNS, "270.4 31711 46518 62081 111807 104339 3383 32609 47128 2.78 5185 8.48 "
                    "129.89".split(), strict=True)),
-    "c1": {**dict(zip(CROSSWIND_COLUMNS, "276.2 31440 49711 67513 115592 111672 3480 32259 47606 2.77 5282 8.52 "
+    "c1": {**dict(zip(CROSSWIND_COLUMNS, "276.2 31440 46266 62867 112682 105198 3392 32259 47606 2.77 5282 8.52 "
                       "128.53".split(), strict=True)),
            "t_out_s": "85", "energy_out_MJ": "11.2", "t_in_s": "192", "speed_in": "1.2"}}
 
 
 def test_the_crosswind_cycle_table_is_named_when_changed():
     """docs/pumping.md's crosswind-cycle table and its cycle-1 phases against what ``pumping_cycle --cycles 2``
-    printed on 2026-11-30 pass; a cycle-1 reel-in of 201 s and a cycle-0 power of 31712 W are each named."""
+    printed on 2026-12-07 pass; a cycle-1 reel-in of 201 s and a cycle-0 power of 31712 W are each named."""
     c0, c1 = CROSSWIND_PRINTED["c0"], CROSSWIND_PRINTED["c1"]
     assert _named({"checked_pages": ["pumping.md"], "pumping_crosswind": CROSSWIND_PRINTED}) == []
     bad = _named({"checked_pages": ["pumping.md"], "pumping_crosswind": {"c0": {**c0, "sim": "31712"},
@@ -370,22 +370,22 @@ def test_the_gusts_v2_pumping_table_is_named_when_changed():
 
 def test_the_power_curve_rows_are_named_when_changed():
     """docs/pumping.md's 10 m/s power-curve row and phase split, and its 4 m/s "no trim", and docs/reeling_tether.md's
-    10 m/s rows, against what ``power_curve`` (and with ``--reel-element-length 40``) printed on 2026-11-30 pass; a
-    Lansdorp power of 114704 W and a model reel-in tension of 456 N are each named, once."""
+    10 m/s rows, against what ``power_curve`` (and with ``--reel-element-length 40``) printed on 2026-12-07 pass; a
+    Lansdorp power of 111808 W and a model reel-in tension of 425 N are each named, once."""
     cells = ("sim", "matched", "ratio", "nominal", "lansdorp", "T_out", "matched_T_out", "out", "in", "within",
              "transitions")
-    v10 = dict(zip(cells, "31711 50033 0.63 110810 114703 47128 66737 15595 3976 897 -2147".split(), strict=True))
+    v10 = dict(zip(cells, "31711 46518 0.68 104339 111807 47128 62081 11892 4014 897 -1997".split(), strict=True))
     curve = {"v10": v10, "v4": {"failure": "no trim: iterations.); the wind (wind.v0 = 4 m/s"}}
     measured = {"checked_pages": ["pumping.md"], "pumping_power_curve": curve}
     assert _named(measured) == []
-    bad = _named({**measured, "pumping_power_curve": {**curve, "v10": {**v10, "lansdorp": "114704"}}})
-    assert len(bad) == 1 and "114704" in bad[0] and "pumping.md" in bad[0], bad
+    bad = _named({**measured, "pumping_power_curve": {**curve, "v10": {**v10, "lansdorp": "111808"}}})
+    assert len(bad) == 1 and "111808" in bad[0] and "pumping.md" in bad[0], bad
     # the reeling tether's (--reel-element-length 40) 10 m/s rows, not the element-count table's "| 10 |" row
-    reel = dict(zip((*cells, "T_in", "model_T_in"), "45749 61111 0.75 110641 114497 53884 66255 12083 6420 -59 -3081 "
-                    "6017 455".split(), strict=True))
+    reel = dict(zip((*cells, "T_in", "model_T_in"), "45749 56803 0.81 104165 111594 53884 61585 7522 6455 -59 -2864 "
+                    "6017 424".split(), strict=True))
     assert _named(measured := {"checked_pages": ["reeling_tether.md"], "reeling_power_curve": {"v10": reel}}) == []
-    bad = _named({**measured, "reeling_power_curve": {"v10": {**reel, "model_T_in": "456"}}})
-    assert len(bad) == 1 and "456" in bad[0] and "reeling_tether.md" in bad[0], bad
+    bad = _named({**measured, "reeling_power_curve": {"v10": {**reel, "model_T_in": "425"}}})
+    assert len(bad) == 1 and "425" in bad[0] and "reeling_tether.md" in bad[0], bad
 
 
 def test_the_meijaard_fixed_step_ends_are_named_when_changed():

@@ -109,6 +109,25 @@ def test_cycle_against_quasi_steady_equations():
     assert q["lansdorp_W"] > 10 * c["power"]
 
 
+def test_quasi_steady_models_use_the_air_density_at_the_cycle_altitude(task):
+    """The wing flies in the scene's barometric air (Meijaard eq. 3: rho0 exp(-h / H_b), configs/scenes/
+    pumping_kite.yaml: 1.225 kg/m^3, 8400 m); the models compared with it get the density at the cycle's mean
+    altitude: Lansdorp's eq. 9 tension by hand at a hand-made cycle's parameters."""
+    c = dict(wind=9.0, altitude=400.0, theta=math.radians(60.0), alpha=math.radians(6.0), reeled=150.0,
+             speed_in=5.0, speed_out=2.0, azimuth_rms=0.3, elevation_in=math.radians(70.0), tension_out=9e3,
+             tension_in=1e3)
+    q = quasi_steady(c, task)
+    wing = task.scene.assembly.wing(0)
+    coef = table_spline(wing.aero)(c["alpha"])
+    cl, cd = float(coef[AERO_INDEX["CL"]]), float(coef[AERO_INDEX["CD"]])
+    L = c["altitude"] / math.cos(c["theta"])
+    cdt = cd + task.scene.cable.diameter * L * 1.2 / (4.0 * wing.area)  # eq. 6, C_Dc 1.2 (PumpingParams)
+    w_e = c["wind"] * math.sin(c["theta"]) * (1.0 - task.pumping.cycle.reel_out_factor)
+    rho = 1.225 * math.exp(-400.0 / 8400.0)
+    eq9 = 0.5 * rho * wing.area * (cl * cl + cdt * cdt) ** 1.5 / (cdt * cdt) * w_e * w_e
+    assert q["lansdorp_tension_N"] == pytest.approx(eq9, rel=1e-12)
+
+
 def test_contact_summary_of_a_hand_made_record():
     """pumping-cycle's ground-contact line (a reeling tether) against a record built by hand: steps at 0.5 s, a
     reel-out, a reel-in ending at t = 2.0 s, contacts (0, 0, 0, 0, 0, 2, 3, 0) from t = 3.0 s, 1.0 s into the second

@@ -147,3 +147,59 @@ def test_models_agree_where_their_assumptions_meet():
     b = schmehl.cycle_power(w, 300.0, theta, 0.02, 100.0, 1.0, 0.08, qs=qs)
     assert b.tension_out == pytest.approx(a.tension_out, rel=1e-9)
     assert b.power_out == pytest.approx(a.power_out, rel=1e-9)
+
+
+def test_loop_mean_is_the_time_mean_of_a_flown_loop():
+    # a loop flown at a constant turn per arc length: d chi / dt = lambda(chi) v_w / r, integrated in time with
+    # solve_ivp to chi = 2 pi; the loop's mean tether force is (integral of F dt) / T and its mean speed 2 pi r / T
+    from scipy.integrate import solve_ivp
+
+    V, h, theta, d, S, cl, cd = np.array([7.0]), 300.0, np.radians(60.0), 0.02, 100.0, 1.0, 0.08
+    qs = schmehl.SchmehlParams(n_course=256)
+    L = lansdorp.cable_length(h, theta)
+    share = lansdorp.cable_drag_share(d, L, S, 1.2)
+    mass = qs.kite_mass_per_area * S + qs.tether_mass_share * 970.0 * np.pi * d * d / 4.0 * L
+    beta, f = 0.5 * np.pi - theta, 1.0 / 3.0
+
+    def course(chi):
+        F, lam = schmehl.traction(V, beta, f, S, cl, cd + share, mass, RHO, 0.0, chi)
+        return F[0], lam[0]
+
+    def rhs(t, y):
+        F, lam = course(y[0])
+        return [lam * V[0], F]
+
+    done = lambda t, y: y[0] - 2.0 * np.pi  # noqa: E731
+    done.terminal = True
+    sol = solve_ivp(rhs, (0.0, 1e3), [0.0, 0.0], events=done, rtol=1e-11, atol=1e-9)
+    T_loop = sol.t_events[0][0]
+    forces = [course(c)[0] for c in np.linspace(0.0, 2.0 * np.pi, 9)]
+    assert max(forces) > 1.2 * min(forces)  # the weight makes the courses differ: the weighting matters here
+    r = schmehl.cycle_power(V, h, theta, d, S, cl, cd, qs=qs)
+    assert r.tension_out[0] == pytest.approx(sol.y_events[0][0][1] / T_loop, rel=1e-7)
+    assert r.kite_speed[0] == pytest.approx(2.0 * np.pi / T_loop, rel=1e-7)
+
+
+@pytest.mark.parametrize("mass_per_area", [0.6, 3.0])
+@pytest.mark.parametrize("f", [0.1, 0.2, 1.0 / 3.0])
+def test_traction_power_with_weight_below_the_massless_optimum(mass_per_area, f):
+    # the weight can only cost: over the loop the reel-out power stays below the closed-form massless optimum
+    # zeta_max P_w (oracles.md) at every wind; below the wind that carries the kite round the loop it is 0
+    w, h, theta, d, S, cl, cd = np.linspace(0.5, 25.0, 99), 300.0, np.radians(60.0), 0.02, 100.0, 1.0, 0.08
+    r = schmehl.cycle_power(w, h, theta, d, S, cl, cd, qs=schmehl.SchmehlParams(kite_mass_per_area=mass_per_area),
+                            reel_out_factor=f)
+    cdt = cd + lansdorp.cable_drag_share(d, lansdorp.cable_length(h, theta), S, 1.2)
+    zeta_max = 4 / 27 * np.hypot(cl, cdt) * (1 + (cl / cdt) ** 2) * np.cos(0.5 * np.pi - theta) ** 3
+    assert np.all(r.power_out <= zeta_max * 0.5 * RHO * S * w**3)
+    assert r.power[0] == 0.0 and r.energy[0] == 0.0 and np.isinf(r.time_cycle[0])
+    assert r.power[-1] > 0.0
+
+
+def test_a_loop_with_a_course_the_kite_cannot_fly_gives_no_power():
+    # a heavy kite in light wind: it can dive (chi = pi) but not climb (chi = 0), so the loop never closes
+    V, beta, f, S, cl, cd, m = np.array([4.0]), np.radians(30.0), 1.0 / 3.0, 100.0, 1.0, 0.1, 300.0
+    up, _ = schmehl.traction(V, beta, f, S, cl, cd, m, RHO, 0.0, 0.0)
+    down, _ = schmehl.traction(V, beta, f, S, cl, cd, m, RHO, 0.0, np.pi)
+    assert np.isnan(up[0]) and down[0] > 0.0
+    force, lam, flyable = schmehl.pattern_mean(np.array([up, down]), np.array([[0.5], [2.0]]))
+    assert not flyable[0] and force[0] == 0.0 and lam[0] == 0.0

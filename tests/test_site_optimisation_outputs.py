@@ -101,3 +101,16 @@ def test_inputs_the_site_cannot_use_are_named_before_any_run(tmp_path, capsys, a
     import re
 
     assert re.search(needle, capsys.readouterr().err)
+
+
+def test_models_line_names_the_ratios_and_the_first_flown_wind():
+    """``laddermill site``'s models line on hand-made curves: Schmehl half of Lansdorp where its loop flies (from
+    5.5 m/s), none below; a Lansdorp power of 0 gives n/a, not a division by zero."""
+    from laddermill_gym.quasisteady.site_outputs import model_ratio_text
+
+    speeds = np.linspace(3.0, 25.0, 45)
+    lans = np.where(speeds < 3.2, 0.0, 2.0 * speeds)
+    curves = {"Lansdorp et al. 2008": lans, "Schmehl / van der Vlugt": np.where(speeds >= 5.5, speeds, 0.0)}
+    text = model_ratio_text(curves, speeds, at=(3.0, 4.0, 6.0, 25.0))
+    assert text == ("Schmehl's best power / Lansdorp's at 3, 4, 6, 25 m/s: n/a 0.00 0.50 0.50; Schmehl's loop flown "
+                    "from 5.5 m/s (3-25 m/s)")

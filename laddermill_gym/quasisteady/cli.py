@@ -131,9 +131,11 @@ def run(args) -> int:
                                          "inner_solves": r.evaluations, "states": r.states}
             if cname == args.case[-1]:
                 speeds = np.linspace(3.0, 25.0, 45)
-                files.append(so.plot_models(so.model_power_curves(case, r.design, speeds), speeds,
-                                            out / f"models_{_tag(spec)}.png",
+                curves = so.model_power_curves(case, r.design, speeds)
+                files.append(so.plot_models(curves, speeds, out / f"models_{_tag(spec)}.png",
                                             f"{cname} design on {spec}: Lansdorp vs Schmehl quasi-steady model"))
+                if not args.quiet:
+                    print(f"  {cname} design on {spec}, models_{_tag(spec)}.png: {so.model_ratio_text(curves, speeds)}")
                 if not args.no_turbine:
                     ys, path, peak = _turbine(case, r, spec, w_ev, p_ev, ev, args.hub_height, args.turbine, out)
                     yields.append((spec, ys, peak))

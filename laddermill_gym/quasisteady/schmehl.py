@@ -40,7 +40,7 @@ class SchmehlParams:
     #: [-] share of the tether mass lumped at the kite (half: a straight tether hinged at the ground)
     tether_mass_share: float = 0.5
     azimuth: float = 0.0                # [rad] phi of the traction pattern's centre
-    n_course: int = 8                   # [-] course angles chi averaged over the pattern (uniform on a circle)
+    n_course: int = 8                   # [-] course angles chi of the loop (even in chi), time-weighted
     #: [rad] elevation during reel-in (our choice; the transition raises the kite from beta_out to it)
     retraction_elevation: float = np.radians(60.0)
     cl_max: float = 1.2                 # [-] largest C_L while reeling in (Lansdorp et al. 2008, section V)
@@ -71,7 +71,9 @@ def _solve_kappa(E, R):
 
 
 def traction(w, beta, f, S, cl, cd_total, mass, rho, azimuth, chi):
-    """Traction phase at one course angle: (tether force [N], tangential speed ratio lambda [-]), arrays (n,)."""
+    """Traction phase at one course angle: (tether force [N], tangential speed ratio lambda [-]), arrays (n,).
+    Both are NaN where the kite cannot fly that course: the weight exceeds what the apparent wind can carry, the
+    tether would go slack (force <= 0) or the kite would not move along it (lambda <= 0)."""
     E = cl / cd_total
     b = np.cos(beta) * np.cos(azimuth)
     a = -np.sin(beta) * np.cos(azimuth) * np.cos(chi) - np.sin(azimuth) * np.sin(chi)
@@ -82,8 +84,22 @@ def traction(w, beta, f, S, cl, cd_total, mass, rho, azimuth, chi):
     drag = q_r * (1.0 + kappa * kappa) * S * cd_total
     force = drag * (E * kappa + 1.0) / np.sqrt(1.0 + kappa * kappa) - mass * GRAVITY * np.sin(beta)
     lam = a + np.sqrt(np.maximum(a * a + b * b - 1.0 + kappa * kappa * (b - f) ** 2, 0.0))
-    ok = np.isfinite(kappa) & (force > 0)
-    return np.where(ok, force, 0.0), np.where(ok, lam, 0.0)
+    ok = np.isfinite(kappa) & (force > 0) & (lam > 0)
+    return np.where(ok, force, np.nan), np.where(ok, lam, np.nan)
+
+
+def pattern_mean(force, lam):
+    """Time mean of the tether force [N] and of lambda [-] over a loop of courses ``force``, ``lam`` (shape
+    (n_course, n)) spaced evenly in course angle: the loop's arc length is even in chi, so the time on each course
+    is proportional to 1 / lambda (our derivation; lambda's mean is the harmonic one). Where any course cannot be
+    flown (NaN) the loop cannot be closed: both are 0 and the third result, ``flyable`` (bool, (n,)), is False."""
+    flyable = np.all(np.isfinite(force) & np.isfinite(lam), axis=0)
+    dwell = np.where(flyable, 1.0 / np.where(flyable, lam, 1.0), 0.0)     # time per unit arc length x v_w
+    total = np.sum(dwell, axis=0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        f_mean = np.where(flyable, np.sum(np.where(flyable, force, 0.0) * dwell, axis=0) / total, 0.0)
+        lam_mean = np.where(flyable, force.shape[0] / total, 0.0)
+    return f_mean, lam_mean, flyable
 
 
 def retraction(w, beta, v_in, S, cd_extra, mass, rho, qs: SchmehlParams):
@@ -115,7 +131,10 @@ def cycle_power(w, h, theta, d, S, cl, cd, params: PumpingParams | None = None, 
                 reel_out_rule: str = "wind", qs: SchmehlParams | None = None) -> CycleResult:
     """Schmehl / van der Vlugt pumping cycle, same arguments and result as ``lansdorp.cycle_power`` (the cable
     angle ``theta`` from the vertical sets the traction elevation beta = 90 deg - theta and the tether length
-    L = h / cos(theta)); the wind ``w`` [m/s] (shape (n,)) is taken at the kite for all three phases."""
+    L = h / cos(theta)); the wind ``w`` [m/s] (shape (n,)) is taken at the kite for all three phases. The
+    traction tension and kite speed are time means over the loop of ``qs.n_course`` courses (``pattern_mean``);
+    where a course of the loop cannot be flown the cycle never completes: power and energy 0, cycle time inf,
+    tension and kite speed 0 (as ``lansdorp.cycle`` treats a reel-in speed of 0)."""
     params = PumpingParams() if params is None else params
     qs = SchmehlParams() if qs is None else qs
     w = np.asarray(w, dtype=float)
@@ -128,8 +147,7 @@ def cycle_power(w, h, theta, d, S, cl, cd, params: PumpingParams | None = None, 
     f = reel_out_factor * (np.sin(theta) if reel_out_rule == "radial" else 1.0)
     chis = 2.0 * np.pi * (np.arange(qs.n_course) + 0.5) / qs.n_course if qs.n_course > 1 else np.array([0.5 * np.pi])
     per_course = [traction(w, beta, f, S, cl, cd_total, mass, params.rho, qs.azimuth, c) for c in chis]
-    T_out = np.mean([fc[0] for fc in per_course], axis=0)
-    lam = np.mean([fc[1] for fc in per_course], axis=0)
+    T_out, lam, flyable = pattern_mean(np.array([fc[0] for fc in per_course]), np.array([fc[1] for fc in per_course]))
     v_out = f * w
     beta_in = max(float(qs.retraction_elevation), float(beta))
     T_in, _, _ = retraction(w, beta_in, params.reel_in_speed, S, share, mass, params.rho, qs)
@@ -140,6 +158,6 @@ def cycle_power(w, h, theta, d, S, cl, cd, params: PumpingParams | None = None, 
     E_t = cl / cd_total
     lam_t = a + np.sqrt(np.maximum(a * a + b * b - 1.0 + E_t * E_t * b * b, 0.0))
     with np.errstate(divide="ignore", invalid="ignore"):
-        t_trans = np.where(lam_t * w > 0, L * (beta_in - beta) / (lam_t * w), np.inf)
+        t_trans = np.where((lam_t * w > 0) & flyable, L * (beta_in - beta) / (lam_t * w), np.inf)
     p_out, p_in, t_c, energy, power = cycle(T_out, v_out, params, tension_in=T_in, time_extra=t_trans)
     return CycleResult(T_out, T_in, np.broadcast_to(v_out, w.shape), p_out, p_in, t_c, energy, power, lam * w)

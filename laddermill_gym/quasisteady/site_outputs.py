@@ -149,6 +149,18 @@ def model_power_curves(case, design, speeds):
     return out
 
 
+def model_ratio_text(curves, speeds, at=(4.0, 6.0, 8.0, 12.0, 16.0, 20.0, 25.0)) -> str:
+    """One line for ``model_power_curves``' result: Schmehl's best power over Lansdorp's at the winds ``at`` [m/s]
+    (points of ``speeds``) and the lowest wind where Schmehl's kite can fly its whole loop (power above 0)."""
+    lans, sch = curves["Lansdorp et al. 2008"], curves["Schmehl / van der Vlugt"]
+    idx = [int(np.argmin(np.abs(speeds - v))) for v in at]
+    ratios = " ".join(f"{sch[i] / lans[i]:.2f}" if lans[i] > 0 else "n/a" for i in idx)
+    flown = speeds[sch > 0]
+    start = f"from {flown[0]:g} m/s" if flown.size else "at none of them"
+    return (f"Schmehl's best power / Lansdorp's at {', '.join(f'{speeds[i]:g}' for i in idx)} m/s: {ratios}; "
+            f"Schmehl's loop flown {start} ({speeds[0]:g}-{speeds[-1]:g} m/s)")
+
+
 def plot_models(curves, speeds, path: Path, title: str) -> Path:
     fig, ax = plt.subplots(figsize=(7, 4))
     for name, P in curves.items():

@@ -33,6 +33,7 @@ from laddermill_gym.model.reel import ground_contacts, is_reel
 from laddermill_gym.quasisteady import lansdorp, schmehl
 from laddermill_gym.quasisteady.lansdorp import PumpingParams
 from laddermill_gym.quasisteady.schmehl import SchmehlParams
+from laddermill_gym.reference.wind import air_density
 from laddermill_gym.sim.statics import table_spline
 from laddermill_gym.studies.commands import Command, check_number
 from laddermill_gym.studies.pumping.cycle_figures import cycle_figures
@@ -114,7 +115,7 @@ def quasi_steady(c: dict[str, float], task: PumpingTask) -> dict[str, float]:
     coef = table_spline(wing.aero)(c["alpha"])
     cl, cd = float(coef[AERO_INDEX["CL"]]), float(coef[AERO_INDEX["CD"]])
     d, S, cyc = task.scene.cable.diameter, wing.area, ps.cycle
-    rho = task.scene.assembly.wind.rho0
+    rho = air_density(task.scene.assembly.wind, c["altitude"])  # at the cycle's mean altitude, as the wing sees it
     params = PumpingParams(rho=rho, eta=ps.winch.efficiency, reel_length=cyc.reel_length,
                            reel_in_speed=cyc.reel_in_speed)
     w, h, th = np.array([c["wind"]]), c["altitude"], c["theta"]
