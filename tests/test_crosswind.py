@@ -173,6 +173,7 @@ def test_power_curve_exit_status_tells_a_failure_from_a_wind_without_trim(tmp_pa
     assert power_curve.main(["--winds", "4", "--out", str(tmp_path)]) == 0
     (row,) = json.loads((tmp_path / "pumping_power_curve.json").read_text())
     assert row["failed"].startswith("no trim") and (tmp_path / "pumping_power_curve.png").is_file()
-    failed = {"v0": 9.0, "failed": "t = 12.00 s: ground contact", **{k: math.nan for k in power_curve._KEYS}}
+    keys = ("power", "schmehl_matched_W", "lansdorp_W", "schmehl_W", "tension_out", "schmehl_matched_tension_N")
+    failed = {"v0": 9.0, "failed": "t = 12.00 s: ground contact", **{k: math.nan for k in keys}}
     monkeypatch.setattr(power_curve, "curve_point", lambda wind, length=None: failed)
     assert power_curve.main(["--winds", "9"]) == 1
