@@ -212,6 +212,18 @@ def test_power_term_is_the_generators_power(torque):
     assert terms == pytest.approx(float(np.sum([info[k] for k in info if k.startswith("reward_")])))
 
 
+def test_torque_action_unit_is_the_operating_points_whatever_the_rewards_reference():
+    """The drum torque per unit action is r P_op / (eta V_c) (DrumConfig) with P_op the operating point's reference
+    power: a reward normalised by another power (``reward.reference_power_W``) leaves the actions' meaning alone."""
+    a = LadderMillEnv(**small(disturbances=[], termination=WIDE, generator_torque=True)).task
+    b = LadderMillEnv(**small(disturbances=[], termination=WIDE, generator_torque=True,
+                              reward={"reference_power_W": 1e5})).task
+    st = a.scene.assembly.station
+    expect = a.drum.radius * a.op.reference_power_W / (st.efficiency * a.op.cable_speed)
+    assert a.torque_half_range == pytest.approx(expect, rel=1e-12) and b.torque_half_range == a.torque_half_range
+    assert b.p_ref == 1e5 != a.p_ref
+
+
 def test_cable_speed_command_action():
     """With cable_speed_command the last action sets the commanded speed V_op + a V_op; the cable speed follows the
     first-order lag V_cmd + (V_op - V_cmd) exp(-t / tau) (closed form, tau = 1 s) and the power term is
@@ -315,3 +327,24 @@ def test_actions_by_slot_and_the_open_loop_baseline():
     assert bands.action_space.shape == (4 * 3,)
 
 
+
+
+def test_a_physics_dt_past_rk4s_stable_step_is_refined_with_a_warning():
+    """The small mill's RK4 at 50 ms (the control period) is past its stable step at the operating point (its
+    estimate: about 12 ms for the default mill): the env warns, naming the step, and steps finer; the scene's own
+    step is kept without a word, so the registered ids' bits stay."""
+    import warnings as w
+
+    from laddermill_gym.sim.stable_step import UnstableStepWarning
+
+    with pytest.warns(UnstableStepWarning, match=r"physics_dt = 0\.05 s is above .* stable step"):
+        env = LadderMillEnv(**small(disturbances=[], termination=WIDE, physics_step="rk4", physics_dt=0.05))
+    assert env.task.n_substeps > 1 and "physics_dt = 0.05 s" in env.task.physics_step_note
+    with w.catch_warnings():
+        w.simplefilter("error", UnstableStepWarning)
+        plain = LadderMillEnv(**small(disturbances=[], termination=WIDE))
+    assert plain.task.physics_step_note == ""
+    obs, _ = env.reset(seed=0)
+    for _ in range(20):  # 1 s at the refined step: no blow-up read as a wing's failure
+        obs, _, terminated, _, info = env.step(np.zeros(env.action_space.shape, np.float32))
+        assert not terminated, info["failure_reason"]

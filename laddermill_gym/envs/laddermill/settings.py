@@ -47,7 +47,8 @@ class DrumConfig:
 
     radius [m], inertia [kg m^2] (drum and generator rotor): J / r^2 = 1000 kg by default, a fifth of the wings'
     mass of the default mill; torque_half_range [N m]: the torque per unit normalised action (default: the
-    operating point's torque r P_ref / (efficiency V_c)), so a = -1 gives (about) no torque and a = +1 twice the
+    operating point's torque r P_ref / (efficiency V_c), P_ref the operating point's power, whatever the reward's
+    reference_power_W), so a = -1 gives (about) no torque and a = +1 twice the
     operating point's.
     """
 

@@ -10,6 +10,7 @@ same arithmetic per copy).
 from __future__ import annotations
 
 import dataclasses
+import warnings
 
 import numpy as np
 
@@ -43,7 +44,7 @@ from laddermill_gym.envs.laddermill.settings import (
     TerminationConfig,
 )
 from laddermill_gym.envs.observation import wing_lateral_offsets
-from laddermill_gym.envs.physics_step import env_physics_settings, jacobian_settings
+from laddermill_gym.envs.physics_step import env_physics_settings, jacobian_settings, stable_rk4_step
 from laddermill_gym.envs.task import config_from
 from laddermill_gym.envs.task_base import TaskCore, clip_observations, substeps_per_period
 from laddermill_gym.kernels.contract import B3_QUAT, B3_SIZE, N_CONTROLS, SX_ENERGY, SX_MOVED, SX_SPEED
@@ -58,6 +59,7 @@ from laddermill_gym.ladder.scene import options_key
 from laddermill_gym.model.params import CONTROL_NAMES
 from laddermill_gym.model.states import rotations_from_quaternions
 from laddermill_gym.sim.simulator import Simulator
+from laddermill_gym.sim.stable_step import UnstableStepWarning
 
 __all__ = ["MillTask"]
 
@@ -75,7 +77,8 @@ class MillTask(TaskCore):
     """B copies of the moving-cable laddermill as an RL task (arguments: :class:`LadderMillEnv
     <laddermill_gym.envs.laddermill.env.LadderMillEnv>`; ``n_copies`` = B, ``parallel``: threads,
     default from 2 copies on for the mill's thousand-odd states, ``task_base.default_parallel``; ``physics_step``,
-    ``physics_dt``: the physics' fixed-step method and step instead of the scene's, ``envs/physics_step.py``;
+    ``physics_dt``: the physics' fixed-step method and step instead of the scene's, ``envs/physics_step.py``; an RK4
+    ``physics_dt`` past the step's stability estimate at the operating point is refined, with an UnstableStepWarning;
     ``jacobian_every``: physics steps per iteration matrix of a W-method step, default 1 = every step; k > 1 keeps
     it for k steps, fresh on each episode's first step: same order, other last bits, an opt-in speed option,
     ``envs/physics_step.py`` ``jacobian_settings``).
@@ -126,6 +129,7 @@ class MillTask(TaskCore):
             self.cable_speed_command = bool(cable_speed_command)
             asm = self._assembly()
             self.n_wings = n = asm.n_wings
+            settings = self._stable_step(asm, settings, physics_dt, control_dt)
             self._make_batch(B, asm, settings, parallel, step_observe_serial, launch_step_observe)
             self.loop_points = loop_points(self.op, asm)
             check_turbulence_cover(self.disturbances, self.loop_points)
@@ -189,6 +193,24 @@ class MillTask(TaskCore):
                              f"fit scene {sc.name} with {n} wings (state ({size},), controls ({N_CONTROLS * n},))")
         return given
 
+    def _stable_step(self, asm, settings, physics_dt, control_dt):
+        """``settings``, or for an RK4 ``physics_dt`` the caller chose past ``ENV_STEP_MARGIN`` of RK4's estimated
+        stable step at the operating point (in the strongest wind of the disturbances) the finer step of
+        ``envs/physics_step.stable_rk4_step``, with an UnstableStepWarning (the note in ``physics_step_note``), as
+        the wing envs do; a blow-up of a step past it read as a wing's failure. The registered steps are kept."""
+        self.physics_step_note = ""
+        if physics_dt is None or settings.method != "rk4":
+            return settings
+        probe = Simulator(asm, self.op.state, settings, self.u_op)
+        dt, self.physics_step_note = stable_rk4_step(probe, settings.dt, self.control_dt, self.disturbances,
+                                                     self.episode_time, self.wind_dt)
+        if not self.physics_step_note:
+            return settings
+        warnings.warn(f"{self.env_name}: {self.physics_step_note}", UnstableStepWarning, stacklevel=4)
+        settings = dataclasses.replace(settings, dt=dt)
+        self.n_substeps = substeps_per_period(self.scene.name, settings, self.control_dt, control_dt)
+        return settings
+
     def _assembly(self):
         """The scene's assembly with the station at the operating point's constant cable speed: a prescribed
         schedule held at V_c, or (``generator_torque``) a drum starting at V_c whose torque is the last control.
@@ -200,7 +222,7 @@ class MillTask(TaskCore):
         v = op.cable_speed
         self.torque_op = d.radius * op.mechanical_power_W / v  # the drum's torque that balances the mean pull
         self.torque_half_range = (d.torque_half_range if d.torque_half_range is not None
-                                  else d.radius * self.p_ref / (st.efficiency * v))
+                                  else d.radius * op.reference_power_W / (st.efficiency * v))
         if self.generator_torque:
             q_lo, q_hi = self.torque_op - self.torque_half_range, self.torque_op + self.torque_half_range
             station = dataclasses.replace(st, mode="drum", speed_times=(0.0,), speed_values=(v,),
