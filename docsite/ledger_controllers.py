@@ -63,6 +63,7 @@ CONTROLLERS = Covered(
              r"(\d+ / \d+)\)\.",
              tuple(f"{{gusts_v1_tethered_wing[scorecard][{c}]}}" for c in ("ppo_tethered_wing", "lqr", "open_loop")))),
     given=(
+        "past the rotor's 13 deg incidence limit,",  # configs/rotors/roberts_rotor.yaml (Roberts sec. 4)
         'on **TetheredWing-v1** (two RK4 steps of 25 ms)',  # the id's registered step
         # the profiles' names and the days each was this project's machine (docsite/host_cpu.py)
         "znver4 names numpy's AVX-512 loops with OpenBLAS's SkylakeX kernels (the AMD EPYC of 2026-11-30 and "

@@ -44,6 +44,9 @@ CRAFT_DATA_CHECKS = (
      (CS % "scan][v10][growth",)))
 
 ROTORCRAFT_GIVEN = (  # the paper's sections and equations, the model's choices and the study's settings
+    # Rotorcraft-v1: the rotor's blade-incidence limit and the craft's collective limit (their config files)
+    "Roberts limits the incidence to 13 deg,", "collective held at the 15 deg limit nearly doubles",
+    "tip's incidence past 13 deg at the trim collective",
     "his eq. (6). This", "flying model, eq. (6) and", "The 35 m design", ": eq. (6).", "the core's 13-number state",
     "(Roberts eq. 1 and", "Roberts sec. 3;", "P = 0.95 sum(-Q Omega) when generating (divided by 0.95 when motoring) | "
     "Roberts sec. 6", "Side force 1/2 rho", "| 1/2 rho C_D A", "Meijaard et al. 1999", "the 13 deg blade-incidence "
@@ -71,6 +74,14 @@ ROTORCRAFT_DERIVED = (
     "(about 0.043 rad per m)", "That happens above 12.8 m/s", "above 12.8 m/s, which")
 #: runs of craft_stability on modified configs (fin areas, tether spacings) and beyond its wind scan (9eab8c7)
 ROTORCRAFT_HISTORY = (History(
+    "2026-12-07", "laddermill train configs/agents/ppo_rotorcraft_v1.yaml --seed 0 --out RUN; laddermill gust-bench "
+    "--suite gusts-v5 --env laddermill_gym/Rotorcraft-v1 --controllers lqr RUN/model.zip; laddermill evaluate --env "
+    "laddermill_gym/Rotorcraft-v1 --controllers lqr RUN/model.zip; the policy's mean collective and a 600 s episode's "
+    "altitude in a Python session", "the v1 PPO run, not kept (seed 0, 3.0 M steps)", (
+        "3.0 M steps in 6.3 min) survives 7 / 9 of the scenarios, but by flying low.",
+        "It holds the collective near -1 deg and makes 735 W against the LQR's 1608 W.",
+        "It sinks from 20 m to 13 m within a minute and touches the ground at 515 s of a 600 s episode.",
+        "issue 31 point 4).")), History(
     "2026-11-23", "python -m laddermill_gym.studies.rotorcraft.craft_stability on copies of the craft config with the "
     "fin area and the rear tethers' spacing changed, and at 23-25 m/s", "the craft's design trials (9eab8c7)", (
         "| fins 0 / 0.05 / **0.15** / 0.4 m^2 | 0.115 / 0.110 /", "/ 0.168 |",
@@ -99,7 +110,13 @@ ROTORCRAFT = Covered(
             (r"\| collective \[deg\] \| " + " \\| ".join([r"([-\d.]+)"] * 9),
              tuple(CS % f"scan][v{v}][collective" for v in SCAN)),
             (r"\| growth \[1/s\] \| " + " \\| ".join([r"([-+\d.]+)"] * 9),
-             tuple(CS % f"scan][v{v}][growth" for v in SCAN))),
+             tuple(CS % f"scan][v{v}][growth" for v in SCAN)),
+            # Rotorcraft-v1's gusts-v5 scorecard beside v0's gusts-v1 one, exact (long groups: gust_bench.json)
+            (r"On gusts-v5 the LQR survives (\d+ / \d+) scenarios, the shipped policy (\d+ / \d+) and the open loop "
+             r"(\d+ / \d+)\. On v0 the LQR survives (\d+ / \d+) of the same scenarios\. The LQR loses the ([^.]*?) "
+             r"scenarios, every episode",
+             tuple(f"{{gusts_v5_rotorcraft_v1[scorecard][{c}]}}" for c in ("lqr", "ppo_rotorcraft", "open_loop"))
+             + ("{gusts_v1_rotorcraft[scorecard][lqr]}", "@{gusts_v5_rotorcraft_v1[lost][lqr]}"))),
     given=ROTORCRAFT_GIVEN, timings=("(14 s on the shared 2-core machine at a load of 5, 2026-11-29)",),
     derived=ROTORCRAFT_DERIVED, history=ROTORCRAFT_HISTORY)
 

@@ -18,6 +18,7 @@ LM, PK, PMC = "laddermill_gym/LadderMill-v0", "laddermill_gym/PumpingKite-v0", "
 PK1, LM1 = "laddermill_gym/PumpingKite-v1", "laddermill_gym/LadderMill-v1"
 LM2, LM3 = "laddermill_gym/LadderMill-v2", "laddermill_gym/LadderMill-v3"
 LC1, TW1 = "laddermill_gym/LadderChain-v1", "laddermill_gym/TetheredWing-v1"
+RC1 = "laddermill_gym/Rotorcraft-v1"
 #: the small mill of tests/test_laddermill_env.py (11 wings, short settling) and alpha / beta ranges that never end it
 MILL = dict(scene="laddermill", scene_options={"n_wings": 11}, settle={"max_time": 100.0}, control_dt=0.05,
             termination={"alpha_range_deg": (-180.0, 180.0), "max_abs_beta_deg": 90.0})
@@ -37,6 +38,12 @@ CASES = {
     RC: (dict(ENV_IDS[RC], episode_time=10.0, disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.05),
                                                             DirectionStep(step=(-0.05, 0.05))],
               initial_noise={"roll_rate": 0.02, "lateral_velocity": 0.1}), 0.5, 40),
+    # Rotorcraft-v1's registered defaults (v0's with the blade-incidence limit ending the episode)
+    # (smaller actions and speed changes than v0's: the trim's tip is at 10.1 deg of the 13 deg limit, and random
+    # collectives of 0.5 or speed changes of 10 % pass it within the rollout)
+    RC1: (dict(ENV_IDS[RC1], episode_time=10.0, disturbances=[RandomPerturbation(speed_std=0.02, direction_std=0.05),
+                                                              DirectionStep(step=(-0.05, 0.05))],
+               initial_noise={"roll_rate": 0.02, "lateral_velocity": 0.1}), 0.05, 40),
     LM: (dict(MILL, episode_time=5.0, disturbances=[RandomPerturbation(speed_std=0.1, direction_std=0.01),
                                                     DirectionStep(step=(-0.01, 0.01))],
               initial_noise={"lateral_velocity": 0.05, "roll_rate": 0.01}), 0.1, 20),

@@ -190,7 +190,13 @@ def test_lateral_state_reads_back_a_perturbation(design):
 def test_bad_craft_config(tmp_path):
     src = load_craft_config().file.read_text()
     cases = [(r"^mass: \S+", "mass: -3.0", "mass"), (r"^hub_spacing: \S+", "hub_spacing: 3.0", "hub_spacing"),
-             (r"^  elements: \S+", "  elements: 0", "tethers.elements")]
+             (r"^  elements: \S+", "  elements: 0", "tethers.elements"),
+             # reachable blade pitches past the rotor model's |pitch| < 90 deg (rotor.check_theta)
+             (r"^collective_limits_deg: \S+ \S+", "collective_limits_deg: [-5.0, 150.0]", "collective_limits_deg"),
+             (r"^differential_limits_deg: \S+ \S+", "differential_limits_deg: [-120.0, 120.0]",
+              "differential_limits_deg"),
+             # principal moments 0.1, 48.4, 53.8 (about): 48.5 < 53.8, no rigid body (Jxx + Jyy >= Jzz)
+             (r"^inertia: \[48\.4, 6\.9,", "inertia: [48.4, 0.1,", "inertia")]
     for old, new, field in cases:
         p = tmp_path / "craft.yaml"
         text = re.sub(old, new, src, count=1, flags=re.M)

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from laddermill_gym.envs import ENV_IDS, merge_arguments, registered_arguments
-from tests.env_cases import IDS, LC, LC1, LM, LM1, LM2, LM3, PK, PK1, PMC, RC, TW, TW1, case_kwargs
+from tests.env_cases import IDS, LC, LC1, LM, LM1, LM2, LM3, PK, PK1, PMC, RC, RC1, TW, TW1, case_kwargs
 
 #: per id: (argument, the caller's dict, the dict the env must be built with)
 MERGES = {
@@ -31,6 +31,7 @@ MERGES = {
     LC1: ("scene_options", {"n_wings": 5, "overrides": {"wind": {"v0": 10.0}}},
           {"n_wings": 5, "overrides": {"wind": {"v0": 10.0}}}),
     RC: ("reward", {"power_weight": 0.5}, {"power_weight": 0.5}),
+    RC1: ("termination", {"max_abs_roll_deg": 45.0}, {"blade_stall": True, "max_abs_roll_deg": 45.0}),
     LM: ("termination", {"alpha_range_deg": (-180.0, 180.0), "max_abs_beta_deg": 90.0},
          {"alpha_range_deg": (-180.0, 180.0), "max_abs_beta_deg": 90.0}),
     LM1: ("termination", {"alpha_range_deg": (-180.0, 180.0), "max_abs_beta_deg": 90.0},

@@ -45,7 +45,8 @@ def test_shipped_suite_loads_with_every_env():
                                                              "laddermill_gym/LadderMill-v2",
                                                              "laddermill_gym/LadderMill-v3",
                                                              "laddermill_gym/LadderChain-v1",
-                                                             "laddermill_gym/TetheredWing-v1"}
+                                                             "laddermill_gym/TetheredWing-v1",
+                                                             "laddermill_gym/Rotorcraft-v1"}
     for _, scenarios in s.envs.values():
         assert all(sc.duration > sc.start for sc in scenarios)
 

@@ -46,7 +46,8 @@ def test_v2_loads_with_every_registered_env():
                                                                "laddermill_gym/LadderMill-v2",
                                                                "laddermill_gym/LadderMill-v3",
                                                                "laddermill_gym/LadderChain-v1",
-                                                               "laddermill_gym/TetheredWing-v1"}
+                                                               "laddermill_gym/TetheredWing-v1",
+                                                               "laddermill_gym/Rotorcraft-v1"}
     for _, scenarios in V2.envs.values():
         assert all(sc.duration > sc.start for sc in scenarios)
     names = {s.name for s in V2.envs[LM][1]}

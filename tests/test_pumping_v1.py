@@ -142,9 +142,9 @@ def test_an_hour_of_crosswind_cycles_under_ntm_turbulence():
 
 
 def test_gusts_v3_is_v2_plus_pumping_kite_v1():
-    """gusts-v3 holds every registered id but LadderMill-v1 to -v3, LadderChain-v1 and TetheredWing-v1 (registered
-    later); its other envs are gusts-v2's unchanged; PumpingKite-v1's scenarios are PumpingKite-v0's of gusts-v2
-    (names, starts, disturbances) with 300 s episodes (one crosswind cycle)."""
+    """gusts-v3 holds every registered id but LadderMill-v1 to -v3, LadderChain-v1, TetheredWing-v1 and
+    Rotorcraft-v1 (registered later); its other envs are gusts-v2's unchanged; PumpingKite-v1's scenarios are
+    PumpingKite-v0's of gusts-v2 (names, starts, disturbances) with 300 s episodes (one crosswind cycle)."""
     from laddermill_gym.envs import ENV_IDS
     from laddermill_gym.studies.gusts.gust_suite import load_suite
 
@@ -152,7 +152,7 @@ def test_gusts_v3_is_v2_plus_pumping_kite_v1():
     # gusts-v3 was fixed before LadderMill-v1..v3 and LadderChain-v1 existed (a suite is never changed, a later
     # version adds envs)
     later = {"laddermill_gym/LadderMill-v1", "laddermill_gym/LadderMill-v2", "laddermill_gym/LadderMill-v3",
-             "laddermill_gym/LadderChain-v1", "laddermill_gym/TetheredWing-v1"}
+             "laddermill_gym/LadderChain-v1", "laddermill_gym/TetheredWing-v1", "laddermill_gym/Rotorcraft-v1"}
     assert v3.version == 3 and set(v3.envs) == set(ENV_IDS) - later == set(v2.envs) | {V1}
     for env_id in v2.envs:
         assert v3.envs[env_id] == v2.envs[env_id], env_id

@@ -253,3 +253,24 @@ def test_open_loop_lateral_instability_matches_linear_growth_rate():
     assert abs(sigma - lam.real) < 0.25 * lam.real, (sigma, lam)
     half_period = np.mean(np.diff(ts[ext][: np.count_nonzero(lin) + 1]))
     assert abs(half_period - math.pi / abs(lam.imag)) < 0.15 * math.pi / abs(lam.imag), (half_period, lam)
+
+
+def test_blade_pitch_observations_cover_asymmetric_differential_limits(tmp_path):
+    """Differential limits [-8, 2] deg: each rotor's pitch (collective +- differential) reaches -13 to 23 deg; the
+    observation's bounds cover it, so the pitches observed at the corner actions are the simulator's, unclipped."""
+    from laddermill_gym.envs.rotorcraft.observation import CRAFT_OBS_INDEX
+    from laddermill_gym.rotorcraft.config import load_craft_config
+
+    src = load_craft_config().file
+    text = src.read_text().replace("differential_limits_deg: [-5.0, 5.0]", "differential_limits_deg: [-8.0, 2.0]")
+    craft = tmp_path / "asymmetric.yaml"
+    craft.write_text(text.replace("../", str(src.parent.parent) + "/"))
+    env = gym.make("laddermill_gym/Rotorcraft-v0", craft=str(craft), episode_time=1.0).unwrapped
+    lo, hi = np.degrees(env.observation_space.low), np.degrees(env.observation_space.high)
+    idx = [CRAFT_OBS_INDEX[k] for k in CRAFT_OBS_INDEX if "pitch" in k]
+    assert len(idx) == 2 and np.allclose(lo[idx], -13.0, atol=1e-4) and np.allclose(hi[idx], 23.0, atol=1e-4)
+    for a in ([-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]):
+        env.reset(seed=0)
+        obs, *_ = env.step(np.array(a, np.float32))
+        pitch = env.task.simulator(0).rotor_outputs()["pitch_rad"]
+        np.testing.assert_allclose(np.sort(obs[idx]), np.sort(pitch.astype(np.float32)), rtol=1e-6)

@@ -40,7 +40,10 @@ Registered on ``import laddermill_gym``:
   the 0.01 rad direction step at 1 s), :class:`~laddermill_gym.envs.pointmass.env.PointMassEnv`;
 * ``laddermill_gym/Rotorcraft-v0``: Roberts' tethered twin-rotor craft (configs/rotorcraft/, its config's step:
   one ROS34PW2 step of 50 ms, 20 Hz control of collective and differential collective, 120 s episodes, a 0.01 rad
-  direction step at 1 s), :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`.
+  direction step at 1 s), :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`;
+* ``laddermill_gym/Rotorcraft-v1``: v0 whose episode also ends when a retreating blade tip passes the craft's 13 deg
+  blade-incidence limit (the rotor model's lift is linear, without stall: past it the model overstates the power),
+  :class:`~laddermill_gym.envs.rotorcraft.env_v1.RotorcraftV1Env`.
 
 Every environment has a native batched ``vector_entry_point`` (:class:`~laddermill_gym.envs.wing_env.WingVectorEnv`,
 :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftVectorEnv`): one compiled kernel steps all copies,
@@ -117,6 +120,11 @@ ENV_IDS: dict[str, dict] = {
     "laddermill_gym/LadderChain-v1": dict(scene="ladder_chain", control_dt=0.05, episode_time=120.0,
                                           groups="per_wing", physics_step="rk4", physics_dt=0.05 / 3),
     "laddermill_gym/Rotorcraft-v0": dict(craft="roberts_flying_model", control_dt=0.05, episode_time=120.0),
+    # v0 with the rotor model's validity as a termination: a retreating blade tip past the craft's 13 deg
+    # blade-incidence limit (Roberts; configs/rotors/) ends the episode. v0's linear, stall-free lift paid a policy
+    # for flying past it (the shipped PPO policy spends a third of its steps there; docs/rotorcraft.md)
+    "laddermill_gym/Rotorcraft-v1": dict(craft="roberts_flying_model", control_dt=0.05, episode_time=120.0,
+                                         termination={"blade_stall": True}),
     "laddermill_gym/LadderMill-v0": dict(scene="laddermill", control_dt=0.05, episode_time=120.0),
     # issue 30's v1 wing (scene laddermill_v1: periodic in plane at 2 m/s, 152.9 kW) and issue 31 point 3's
     # learnable default: authority 0.2 [-] of each surface's half range per unit action (random actions survive a
@@ -165,6 +173,9 @@ ENTRY_POINTS: dict[str, tuple[str, str, str]] = {
     "laddermill_gym/Rotorcraft-v0": ("laddermill_gym.envs.rotorcraft.env:RotorcraftEnv",
                                      "laddermill_gym.envs.rotorcraft.env:RotorcraftVectorEnv",
                                      "laddermill_gym.envs.rotorcraft.task:CraftTask"),
+    "laddermill_gym/Rotorcraft-v1": ("laddermill_gym.envs.rotorcraft.env_v1:RotorcraftV1Env",
+                                     "laddermill_gym.envs.rotorcraft.env_v1:RotorcraftV1VectorEnv",
+                                     "laddermill_gym.envs.rotorcraft.task:CraftTask"),
     "laddermill_gym/LadderMill-v0": ("laddermill_gym.envs.laddermill.env:LadderMillEnv",
                                      "laddermill_gym.envs.laddermill.env:LadderMillVectorEnv",
                                      "laddermill_gym.envs.laddermill.task:MillTask"),
@@ -189,10 +200,12 @@ ENTRY_POINTS: dict[str, tuple[str, str, str]] = {
 }
 
 
-#: ids that step another id's task on another physics step (scene, start, spaces and rewards the same) -> that id: a
-#: policy trained on one of them runs on the other (``control/sb3_policy.py``, ``control/shared_controller.py``)
+#: ids that step another id's task on another physics step (scene, start, spaces and rewards the same), or end its
+#: episodes by a further limit (Rotorcraft-v1: the blade incidence) -> that id: a policy trained on one of them runs
+#: on the other (``control/sb3_policy.py``, ``control/shared_controller.py``)
 PHYSICS_STEP_OF: dict[str, str] = {"laddermill_gym/TetheredWing-v1": "laddermill_gym/TetheredWing-v0",
-                                   "laddermill_gym/LadderChain-v1": "laddermill_gym/LadderChain-v0"}
+                                   "laddermill_gym/LadderChain-v1": "laddermill_gym/LadderChain-v0",
+                                   "laddermill_gym/Rotorcraft-v1": "laddermill_gym/Rotorcraft-v0"}
 
 
 def same_task(a: str, b: str) -> bool:

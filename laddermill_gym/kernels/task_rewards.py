@@ -113,9 +113,10 @@ def craft_readout(raw, aux, status, a, trim_action, v_ref, limits, power, p_term
     :data:`SEQUENTIAL_SUM`): ``power`` [W] (0 where not finite), ``p_term`` = power_weight power / p_ref,
     ``neg_args`` (3, B) as :func:`wing_readout` (nan observations taken as 0, +-inf as the largest float, as
     ``np.nan_to_num``), the failure code of ``CRAFT_FAILURES`` (5 attitude, 4 tension, 3 altitude, 2 inflow,
-    integration 1 or 2, 3 ground contact; a later one wins) and ``tip`` the larger retreating-tip incidence [rad]
-    (nan if either is). ``v_ref`` = (power_weight, p_ref [W], lateral_scale [m], rate_scale^2 [rad^2/s^2]);
-    ``limits`` = (max |roll|, pitch low, pitch high, max |yaw| [deg], breaking tension [N], min altitude [m])."""
+    integration 1 or 2, 3 ground contact; a later one wins; 6, a blade tip past its incidence limit, the first) and
+    ``tip`` the larger retreating-tip incidence [rad] (nan if either is). ``v_ref`` = (power_weight, p_ref [W],
+    lateral_scale [m], rate_scale^2 [rad^2/s^2]); ``limits`` = (max |roll|, pitch low, pitch high, max |yaw| [deg],
+    breaking tension [N], min altitude [m], blade-incidence limit [rad], inf for none)."""
     power_weight, p_ref, lateral_scale, rate_scale2 = v_ref[0], v_ref[1], v_ref[2], v_ref[3]
     na = a.shape[1]
     for b in range(raw.shape[0]):
@@ -133,7 +134,9 @@ def craft_readout(raw, aux, status, a, trim_action, v_ref, limits, power, p_term
             effort += d * d
         neg_args[ARG_EFFORT, b] = -(effort / na)
         phi, theta, psi = raw[b, CO_EULER] * _DEG, raw[b, CO_EULER + 1] * _DEG, raw[b, CO_EULER + 2] * _DEG
-        code = 0
+        t0, t1 = aux[b, CA_TIP_AOA], aux[b, CA_TIP_AOA + 1]
+        tip[b] = math.nan if (t0 != t0 or t1 != t1) else max(t0, t1)
+        code = 6 if tip[b] > limits[6] else 0
         if abs(phi) > limits[0] or not (limits[1] <= theta and theta <= limits[2]) or abs(psi) > limits[3]:
             code = 5
         if aux[b, CA_MAX_TENSION] > limits[4]:
@@ -145,8 +148,6 @@ def craft_readout(raw, aux, status, a, trim_action, v_ref, limits, power, p_term
         if status[b] != OK:
             code = 3 if status[b] == GROUND else (1 if aux[b, CA_INFLOW_OK] == 1.0 else 2)
         failure[b] = code
-        t0, t1 = aux[b, CA_TIP_AOA], aux[b, CA_TIP_AOA + 1]
-        tip[b] = math.nan if (t0 != t0 or t1 != t1) else max(t0, t1)
 
 
 @njit(cache=True, inline="always")

@@ -113,6 +113,10 @@ def load_craft_config(name_or_path: str | Path = DEFAULT_CRAFT) -> CraftConfig:
     J = s.vector("inertia", 4)
     if np.any(J[:3] <= 0) or J[0] * J[2] - J[3] ** 2 <= 0:
         raise s.error("inertia", list(J), "Jxx, Jyy, Jzz must be > 0 and Jxx Jzz - Jxz^2 > 0")
+    principal = np.linalg.eigvalsh(np.array([[J[0], 0.0, -J[3]], [0.0, J[1], 0.0], [-J[3], 0.0, J[2]]]))
+    if principal[0] + principal[1] < principal[2] * (1.0 - 1e-12):  # a rigid body's: each <= the sum of the others
+        raise s.error("inertia", list(J), f"principal moments {principal.round(6).tolist()}: the largest exceeds the "
+                      "sum of the other two, which no rigid body has")
     t = s.section("tethers")
     tethers = TetherSpec(
         cable=load_cable(config_path("cables", t.text("cable"), path.parent)), length=t.number("length", positive=True),
@@ -162,6 +166,11 @@ def load_craft_config(name_or_path: str | Path = DEFAULT_CRAFT) -> CraftConfig:
         raise ConfigError(f"{path}: field 'hub_spacing' = {cfg.hub_spacing!r}: the disks overlap "
                           f"(must be >= 2 rotor_radius = {2 * cfg.rotor_radius})")
     lo, hi = cfg.collective_limits
+    d_lo, d_hi = cfg.differential_limits
+    reach = np.degrees([lo + min(d_lo, -d_hi), hi + max(d_hi, -d_lo)])  # each rotor's pitch: collective -+ differential
+    if not (-90.0 < reach[0] and reach[1] < 90.0):
+        raise ConfigError(f"{path}: fields 'collective_limits_deg' and 'differential_limits_deg' reach blade pitches "
+                          f"of {reach[0]:.4g} to {reach[1]:.4g} deg: the rotor model takes |pitch| < 90 deg")
     if not lo <= collective <= hi:
         raise ConfigError(f"{path}: field 'initial.collective_deg' = {math.degrees(collective)!r}: outside "
                           f"collective_limits_deg {np.degrees(cfg.collective_limits).tolist()}")

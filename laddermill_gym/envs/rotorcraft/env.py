@@ -101,7 +101,8 @@ OBS_TABLE
     ``info["failure_reason"]`` with the time and the quantity): integration breakdown (non-finite state, speed
     or rate limit), a rotor's inflow not converging, the CG below ``termination.min_altitude``, a tether element
     over ``breaking_factor`` x its breaking load, or the attitude outside the termination ranges (roll beyond
-    60 deg by default). ``truncated`` only when ``episode_time`` is reached.
+    60 deg by default); with ``termination.blade_stall`` (Rotorcraft-v1's default) also a retreating blade tip
+    past the rotor's blade-incidence limit. ``truncated`` only when ``episode_time`` is reached.
 
     ## Arguments
 
@@ -127,6 +128,8 @@ OBS_TABLE
 
     ## Version History
 
+    * v1: the blade-incidence limit ends an episode (``laddermill_gym/Rotorcraft-v1``,
+      :class:`~laddermill_gym.envs.rotorcraft.env_v1.RotorcraftV1Env`).
     * v0: initial version.
     """
 

@@ -84,8 +84,9 @@ def craft_observation_bounds(cfg: CraftConfig, tether_lengths: np.ndarray,
     vmax, wmax = cfg.settings.max_speed, cfg.settings.max_rate
     tmax = 100.0 * cfg.tethers.cable.breaking_load / float(np.min(tension_trim))
     hp = 0.5 * math.pi
-    pmin = cfg.collective_limits[0] - cfg.differential_limits[1]
-    pmax = cfg.collective_limits[1] + cfg.differential_limits[1]
+    d_lo, d_hi = cfg.differential_limits  # a rotor's pitch is the collective plus or minus the differential
+    pmin = cfg.collective_limits[0] + min(d_lo, -d_hi)
+    pmax = cfg.collective_limits[1] + max(d_hi, -d_lo)
     high = np.zeros(N_CRAFT_OBS)
     low = np.zeros(N_CRAFT_OBS)
     for start, value in ((CO_OFFSET, reach), (CO_VELOCITY, vmax), (CO_RATES, wmax)):

@@ -49,11 +49,16 @@ class RotorcraftTerminationConfig(FailureLimits):
     breaking_factor [-]: a tether fails when an element's tension exceeds this times its breaking load.
     max_abs_roll_deg [deg], pitch_range_deg [deg], max_abs_yaw_deg [deg]: attitude far from the operating
     range of the quasi-steady rotor model (the trim pitch of the default craft is about 25 deg).
+    blade_stall [bool]: end the episode when a retreating blade tip's incidence passes the craft's
+    ``blade_incidence_limit`` (Roberts: 13 deg, configs/rotors/). The rotor model's lift is linear in the
+    incidence, without stall, so past the limit it overstates thrust and power, and a policy is paid for leaving
+    the model's validity (docs/rotorcraft.md). False (Rotorcraft-v0): not checked; True: Rotorcraft-v1's default.
     """
 
     max_abs_roll_deg: float = 60.0
     pitch_range_deg: tuple[float, float] = (-20.0, 80.0)
     max_abs_yaw_deg: float = 90.0
+    blade_stall: bool = False
 
     def __post_init__(self):
         self.check_range("pitch_range_deg")
@@ -61,6 +66,8 @@ class RotorcraftTerminationConfig(FailureLimits):
             v = getattr(self, name)
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
                 raise ValueError(f"termination.{name} = {v!r}: must be a finite number > 0")
+        if not isinstance(self.blade_stall, bool):
+            raise ValueError(f"termination.blade_stall = {self.blade_stall!r}: must be true or false")
         super().__post_init__()
 
 

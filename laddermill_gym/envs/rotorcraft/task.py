@@ -26,7 +26,7 @@ from laddermill_gym.envs.rotorcraft.settings import (
     RotorcraftRewardConfig,
     RotorcraftTerminationConfig,
 )
-from laddermill_gym.envs.rotorcraft.trim import control_ranges, craft_trim
+from laddermill_gym.envs.rotorcraft.trim import check_trim_incidence, control_ranges, craft_trim
 from laddermill_gym.envs.step_callees import compile_ahead, w_loop_call
 from laddermill_gym.envs.task_base import TaskCore, positive, whole_multiple
 from laddermill_gym.kernels.action_pass import affine_controls
@@ -68,10 +68,12 @@ __all__ = ["CraftTask", "CRAFT_FAILURES", "CraftScene"]
 #: Termination causes (code -> name); 0: still flying.
 CRAFT_FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state, speed or rate limit)",
                                   2: "rotor inflow failed", 3: "ground contact", 4: "tether over its breaking load",
-                                  5: "attitude out of range"}
+                                  5: "attitude out of range", 6: "blade incidence past its limit"}
 #: what the kernel warm-up's second process calls with the task's arguments (envs/task_warmup.py)
 WARMUP_TARGET = "laddermill_gym.envs.task_warmup:compile_craft"
 _STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit exceeded"}
+
+
 #: What the scene renderer reads of a task's scene: the built assembly and a name.
 CraftScene = namedtuple("CraftScene", ["assembly", "name"])
 
@@ -180,6 +182,10 @@ class CraftTask(TaskCore):
         span = cfg.hub_spacing + 2.0 * cfg.rotor_radius
         self.min_altitude = tc.min_altitude if tc.min_altitude is not None else 0.5 * span
         self.breaking_tension = tc.breaking_factor * cfg.tethers.cable.breaking_load
+        # the trim's larger retreating-tip incidence [rad], checked against the rotor model's blade-incidence limit
+        self.trim_tip_incidence = check_trim_incidence(self.craft, self.sim, self.x_trim, tc.blade_stall,
+                                                       f"{craft} at wind_speed = {wind_speed!r} m/s, collective = "
+                                                       f"{collective!r} rad")
         self.obs_low, self.obs_high = craft_observation_bounds(cfg, self.craft.layout.lengths, self.tension_trim)
         self.mid, self.half = control_ranges(cfg)
         self.trim_action = ((self.u_trim - self.mid) / self.half).astype(np.float32)
@@ -285,6 +291,7 @@ class CraftTask(TaskCore):
         neg_args = np.empty((N_ARGS, B))
         craft_readout(self.raw_obs, aux, self.batch.status, a, self._trim_action64, self._v_ref, self._limits, power,
                       p_term, neg_args, failure, tip)
+        self.tip_incidence = tip
         terms = np.empty((N_TERMS, B))
         reward, terminated, truncated = np.empty(B), np.empty(B, dtype=bool), np.empty(B, dtype=bool)
         shaped_terms(p_term, np.expm1(neg_args), failure, self.steps, self._weights, self.n_steps_max, terms, reward,
@@ -297,12 +304,14 @@ class CraftTask(TaskCore):
 
     def _reward_constants(self) -> None:
         """The compiled read-out's constants: (power weight, p_ref [W], lateral scale [m], rate_scale^2
-        [rad^2/s^2]), limits (max |roll|, pitch range, max |yaw| [deg], breaking tension [N], min altitude [m]),
+        [rad^2/s^2]), limits (max |roll|, pitch range, max |yaw| [deg], breaking tension [N], min altitude [m],
+        blade-incidence limit [rad]: inf without ``termination.blade_stall``),
         weights (w_y, w_w, w_u, failure penalty) and the trim action as float64."""
         rc, tc = self.reward_config, self.termination_config
         self._v_ref = np.array([rc.power_weight, self.p_ref, self.lateral_scale, rc.rate_scale ** 2], dtype=float)
         self._limits = np.array([tc.max_abs_roll_deg, *tc.pitch_range_deg, tc.max_abs_yaw_deg, self.breaking_tension,
-                                 self.min_altitude], dtype=float)
+                                 self.min_altitude,
+                                 self.craft.config.blade_incidence_limit if tc.blade_stall else np.inf], dtype=float)
         self._weights = np.array([rc.lateral_weight, rc.rate_weight, rc.effort_weight, rc.failure_penalty], float)
         self._trim_action64 = self.trim_action.astype(float)
 
@@ -347,6 +356,10 @@ class CraftTask(TaskCore):
             which = next(TETHER_NAMES[i] for i, els in enumerate(self.craft.layout.tether_elements) if e in els)
             return (f"t = {t:.2f} s: {which} tether tension {self.aux[b, CA_MAX_TENSION]:.4g} N over "
                     f"{self.breaking_tension:.4g} N")
+        if code == 6:
+            limit = np.degrees(self.craft.config.blade_incidence_limit)
+            return (f"t = {t:.2f} s: a retreating blade tip at {np.degrees(self.tip_incidence[b]):.2f} deg incidence, "
+                    f"past the rotor model's {limit:.3g} deg blade-incidence limit (its lift is linear, without stall)")
         if code == 5:
             tc = self.termination_config
             phi, theta, psi = np.degrees(self.raw_obs[b, CO_EULER: CO_EULER + 3])

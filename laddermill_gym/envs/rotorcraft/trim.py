@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import warnings
 from functools import lru_cache
 
 import numpy as np
@@ -88,3 +89,27 @@ def trim_action(craft: str = DEFAULT_CRAFT, collective: float | None = None) -> 
     cfg = craft_config(str(craft))
     mid, half = control_ranges(cfg)
     return ((trim_controls(cfg, collective) - mid) / half).astype(np.float32)
+
+
+class BladeLimitWarning(UserWarning):
+    """A rotorcraft env's trim puts a retreating blade tip past the rotor model's blade-incidence limit."""
+
+
+def check_trim_incidence(craft: Craft, sim, x_trim: np.ndarray, blade_stall: bool, where: str) -> float:
+    """The larger retreating-tip incidence [rad] of ``sim`` (a CraftSimulator at the trim ``x_trim``) against the
+    craft's blade-incidence limit (Roberts: 13 deg): past it, ValueError with ``blade_stall`` (such an episode would
+    end at once), a :class:`BladeLimitWarning` without; both name ``where`` and the blade-limited collective
+    (``Craft.operating_collective``)."""
+    tip, limit = float(np.max(sim.rotor_outputs()["tip_incidence_rad"])), craft.config.blade_incidence_limit
+    if tip <= limit:
+        return tip
+    try:
+        hint = f"collective <= {craft.operating_collective(x_trim)[0]:.5g} rad (the blade-limited schedule)"
+    except RuntimeError as err:
+        hint = f"no collective within the limits holds it ({err})"
+    text = (f"{where}: the trim puts a retreating blade tip at {math.degrees(tip):.1f} deg incidence, past the "
+            f"{math.degrees(limit):.3g} deg limit of the rotor model; pass {hint}")
+    if blade_stall:
+        raise ValueError(text + " (termination.blade_stall would end the episode at once)")
+    warnings.warn(text, BladeLimitWarning, stacklevel=4)
+    return tip

@@ -1,0 +1,64 @@
+"""``laddermill_gym/Rotorcraft-v1``: Rotorcraft-v0 whose episode also ends when a retreating blade tip passes the
+rotor's blade-incidence limit. The same craft, trim, task, observations, actions and rewards as ``Rotorcraft-v0``
+(:class:`~laddermill_gym.envs.rotorcraft.task.CraftTask`); what differs is registered with the id
+(``envs.ENV_IDS``): ``termination={"blade_stall": True}``. These classes carry the id's own page (docstring) and
+version history."""
+
+from __future__ import annotations
+
+from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv, RotorcraftVectorEnv
+
+__all__ = ["RotorcraftV1Env", "RotorcraftV1VectorEnv"]
+
+
+class RotorcraftV1Env(RotorcraftEnv):
+    """Roberts' tethered twin-rotor craft, its episode ended where the rotor model leaves its validity.
+
+    ## Description
+
+    Rotorcraft-v0's craft and task (Roberts' flying model at 10 m/s, the 0.01 rad wind-direction step at t = 1 s),
+    with one more physical limit: a control period that ends with a retreating blade tip past the rotor's
+    blade-incidence limit (Roberts sec. 4: 13 deg; ``configs/rotors/roberts_rotor.yaml``) ends the episode. The rotor
+    model's lift is linear in the incidence, without stall, so past the limit it overstates the thrust and the power:
+    on v0 the LQR with its collective at the 15 deg limit nearly doubles its return. On v0's gust scenarios (gusts-v5)
+    every episode the LQR loses on v1 ends on this limit (docs/rotorcraft.md).
+
+    ## Action Space
+
+    Rotorcraft-v0's: Box [-1, 1]^2 float32, collective and differential collective over their half ranges.
+
+    ## Observation Space
+
+    Rotorcraft-v0's: Box (19,) float32.
+
+    ## Rewards
+
+    Rotorcraft-v0's: r = P / P_ref - w_y S(dy) - w_w S(rates) - w_u S(effort) - failure_penalty [terminated], P the
+    craft's net electrical power; every term is in ``info``, with ``max_tip_incidence_rad``.
+
+    ## Starting State
+
+    Rotorcraft-v0's trim. A ``wind_speed`` whose trim at the given (or the config's) collective puts a tip past the
+    limit is refused, naming the blade-limited collective to pass instead.
+
+    ## Episode End
+
+    Rotorcraft-v0's, and ``terminated`` with ``info["failure_name"]`` "blade incidence past its limit" (the tip's
+    incidence in ``info["failure_reason"]``); ``truncated`` at ``episode_time`` (120 s).
+
+    ## Arguments
+
+    Rotorcraft-v0's (:class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`); registered: craft
+    ``roberts_flying_model``, control_dt 0.05 s, episode_time 120 s, termination ``{"blade_stall": True}``.
+    ``termination={"blade_stall": False}`` makes it Rotorcraft-v0.
+
+    ## Version History
+
+    * v1: the blade-incidence limit ends an episode; craft, spaces and rewards as v0.
+    * v0: initial version (``laddermill_gym/Rotorcraft-v0``, unchanged).
+    """
+
+
+class RotorcraftV1VectorEnv(RotorcraftVectorEnv):
+    """``num_envs`` copies of :class:`RotorcraftV1Env` in one batch (Rotorcraft-v0's
+    :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftVectorEnv` with Rotorcraft-v1's registered defaults)."""
