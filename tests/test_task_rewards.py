@@ -141,9 +141,11 @@ def test_craft_readout_is_the_numpy_reward():
     steps = rng.integers(2390, 2410, B)
     max_roll, pitch, max_yaw, breaking, min_alt, lat_scale, rate_scale, p_ref = 60.0, (-80.0, 30.0), 90.0, 1.8e4, 5.0, \
         1.5, 0.5, 3e3
-    # the numpy code of before (CraftTask._failures and _evaluate)
+    tip_limit = 1.5e4  # [rad] a quarter of the drawn tip incidences pass it (Rotorcraft-v1's blade limit; v0: inf)
+    # the numpy code of before (CraftTask._failures and _evaluate), with v1's blade limit the weakest cause
     phi, theta, psi = np.degrees(raw[:, CO_EULER: CO_EULER + 3]).T
-    failure = np.zeros(B, dtype=np.int64)
+    tip_ref = np.max(aux[:, CA_TIP_AOA: CA_TIP_AOA + 2], axis=1)
+    failure = np.where(tip_ref > tip_limit, 6, 0).astype(np.int64)
     failure[(np.abs(phi) > max_roll) | ~((pitch[0] <= theta) & (theta <= pitch[1])) | (np.abs(psi) > max_yaw)] = 5
     failure[aux[:, CA_MAX_TENSION] > breaking] = 4
     failure[aux[:, CA_ALTITUDE] < min_alt] = 3
@@ -158,15 +160,14 @@ def test_craft_readout_is_the_numpy_reward():
     power = np.where(np.isfinite(aux[:, CA_POWER]), aux[:, CA_POWER], 0.0)
     ref = _shaped(power, p_ref, np.nan_to_num(lat, nan=np.inf), np.nan_to_num(rates, nan=np.inf), effort, failure,
                   steps, 2400)
-    tip_ref = np.max(aux[:, CA_TIP_AOA: CA_TIP_AOA + 2], axis=1)
     # the kernels
     got_power, p_term, got_failure, tip = np.empty(B), np.empty(B), np.empty(B, np.int64), np.empty(B)
     neg_args = np.empty((N_ARGS, B))
     craft_readout(raw, aux, status, a, trim.astype(float), np.array([W["power"], p_ref, lat_scale, rate_scale ** 2]),
-                  np.array([max_roll, *pitch, max_yaw, breaking, min_alt]), got_power, p_term, neg_args, got_failure,
-                  tip)
+                  np.array([max_roll, *pitch, max_yaw, breaking, min_alt, tip_limit]), got_power, p_term, neg_args,
+                  got_failure, tip)
     assert _same(got_power, power) and _same(got_failure, failure) and _same(tip, tip_ref)
-    assert set(failure.tolist()) >= {0, 1, 2, 3, 4, 5}
+    assert set(failure.tolist()) >= {0, 1, 2, 3, 4, 5, 6}
     _check(ref, _compiled_terms(p_term, neg_args, got_failure, steps, 2400))
 
 
