@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from laddermill_gym.studies.commands import Parser, UsageError, check_number
+from laddermill_gym.studies.commands import Parser, UsageError, check_number, run_guarded, writable_folder
 
 
 def _scene_from_args(args):
@@ -53,22 +53,6 @@ def _positive(name: str, value, allow_none: bool = False, integer: bool = False)
     check_number(name, value, low=1 if integer else 0, strict=not integer, integer=integer)
 
 
-def _writable_folder(path: str) -> Path:
-    """The output folder, created now (so a bad path fails before any simulation); UsageError if it is a file or
-    cannot be written."""
-    out = Path(path)
-    if out.exists() and not out.is_dir():
-        raise UsageError(f"--out = {path!r}: is a file, not a folder")
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-        probe = out / ".laddermill_write_test"
-        probe.write_bytes(b"")
-        probe.unlink()
-    except OSError as err:
-        raise UsageError(f"--out = {path!r}: cannot write there ({err.strerror or err})") from None
-    return out
-
-
 def _check_simulate_args(args) -> Path:
     """Refuse bad numbers before any work (one line naming the option, the value and what is allowed); returns the
     output folder, created and checked writable."""
@@ -84,7 +68,7 @@ def _check_simulate_args(args) -> Path:
         raise UsageError(f"--step-time = {args.step_time!r}: must be >= 0 s")
     if args.sample_dt > args.time:
         raise UsageError(f"--sample-dt = {args.sample_dt!r} s: must not exceed --time = {args.time!r} s")
-    return _writable_folder(args.out)
+    return writable_folder(args.out)
 
 
 def _simulate_setup(args):
@@ -105,6 +89,13 @@ def _simulate_setup(args):
         raise UsageError(f"--time = {args.time!r} s: {err}") from None
     if warning:
         print(f"warning: {warning}", file=sys.stderr)
+    if args.direction_step and not args.step_time < args.time:
+        raise UsageError(f"--step-time = {args.step_time:g} s: the direction step would come at or after the end of "
+                         f"the run (--time = {args.time:g} s) and never act")
+    per = max(1, int(round(args.sample_dt / scene.settings.dt)))
+    if abs(per * scene.settings.dt - args.sample_dt) > 1e-9 * args.sample_dt:
+        print(f"warning: --sample-dt = {args.sample_dt:g} s is not a whole number of physics steps of "
+              f"{scene.settings.dt:g} s: recording every {per * scene.settings.dt:g} s", file=sys.stderr)
     x0, u0, t_start = _start(scene, args)
     asm = scene.assembly
     if args.direction_step:
@@ -213,19 +204,25 @@ def _flag_lines(rec) -> list[str]:
 def _check_json(args) -> None:
     """UsageError for a ``--json`` file whose folder does not exist or cannot be written (found before the run)."""
     if args.json is not None:
+        if Path(args.json).is_dir():
+            raise UsageError(f"--json = {args.json!r}: is a folder, not a file")
         folder = Path(args.json).parent
         if not folder.is_dir():
             raise UsageError(f"--json = {args.json!r}: no such folder {str(folder)!r}")
-        _writable_folder(str(folder))
+        writable_folder(str(folder))
 
 
 def cmd_bench(args) -> int:
     from laddermill_gym.studies.benchmarks.benchmark import run_benchmark
     from laddermill_gym.studies.mill.mill_benchmark import bench_mill
-    from laddermill_gym.studies.numerics.scenes import check_scene_names
+    from laddermill_gym.studies.numerics.scenes import check_scene_names, refuse_scene_kinds
 
     _check_json(args)
     if args.startup:  # issue 32 point 1: cold and warm start of the envs in fresh processes
+        given = [o for o, v in (("--scenes", args.scenes), ("--no-mill", args.no_mill),
+                                ("--no-pointmass", args.no_pointmass)) if v]
+        if given:
+            raise UsageError(f"--startup measures the envs' start-up alone: {', '.join(given)} would be ignored")
         from laddermill_gym.studies.benchmarks.startup import run_startup
 
         res = run_startup(quick=args.quick)
@@ -234,6 +231,9 @@ def cmd_bench(args) -> int:
             print(f"wrote {args.json}")
         return 0
     check_scene_names(args.scenes or [], "--scenes", crafts=False)
+    refuse_scene_kinds(args.scenes or [], "--scenes", {
+        "pointmass": "the point-mass part of this command measures the 5 km string (--no-pointmass leaves it out)",
+        "moving": "the mill part of this command measures it (--no-mill leaves it out)"})
 
     res = run_benchmark(quick=args.quick, scenes=args.scenes)
     if not args.no_mill:
@@ -365,24 +365,6 @@ def build_parser() -> argparse.ArgumentParser:
     c = sub.add_parser("scenes", help="list the scenes")
     c.set_defaults(func=cmd_scenes)
     return p
-
-
-def run_guarded(name: str, run) -> int:
-    """The exit status of ``run()``, the command ``laddermill name``: bad input (UsageError, ConfigError) one line
-    on stderr and 2; a start state or setting the simulator refuses (SimulationError) one line and 3; Ctrl-C one line
-    and 130 (a command that keeps its partial results says so itself)."""
-    from laddermill_gym.model.configio import ConfigError
-    from laddermill_gym.sim.simulator import SimulationError
-
-    try:
-        return int(run() or 0)
-    except (UsageError, ConfigError, SimulationError) as err:  # bad input: one line, no traceback
-        text = " ".join(line.strip() for line in str(err).splitlines() if line.strip())
-        print(f"laddermill {name}: error: {text}", file=sys.stderr)
-        return 3 if isinstance(err, SimulationError) else 2
-    except KeyboardInterrupt:
-        print(f"laddermill {name}: interrupted (Ctrl-C)", file=sys.stderr)
-        return 130
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -12,7 +12,7 @@ Examples
 >>> from laddermill_gym.rotorcraft.craft import load_craft
 >>> craft = load_craft("roberts_flying_model")
 >>> sim = craft.simulator()                  # trimmed in the config's wind
->>> sim.step(n_steps=500)                    # 1 s at dt = 2 ms
+>>> sim.step(n_steps=20)                     # 1 s at the config's 50 ms step (ROS34PW2)
 >>> round(sim.electrical_power() / 1e3, 2)   # kW   # doctest: +SKIP
 """
 

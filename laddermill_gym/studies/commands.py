@@ -1,8 +1,9 @@
 """A command's parser written once for its two ways of running: as a subcommand of ``laddermill`` (on an argparse
 subparsers object) and as a program of its own (``main(argv)``: ``laddermill NAME`` forwards to it, and
-``python -m`` runs it); the one-line argparse errors (:class:`Parser`) and option checks (:func:`check_number`,
-:func:`check_controllers`, :class:`UsageError`) every command uses. Plain argparse; of the package only the
-configs' lookup (``model.configio``, inside :func:`check_controllers`)."""
+``python -m`` runs it); the one-line argparse errors (:class:`Parser`), option checks (:func:`check_number`,
+:func:`check_controllers`, :func:`writable_folder`, :class:`UsageError`) and the guard that turns bad input into one
+line and exit status 2 (:func:`run_guarded`) every command uses. Plain argparse; of the package only the configs'
+lookup (``model.configio``) and the simulator's refusal (``sim.simulator.SimulationError``), imported where used."""
 
 from __future__ import annotations
 
@@ -44,6 +45,42 @@ def check_number(name: str, value, *, low: float | None = None, high: float | No
                 f"<= {_plain(high)}" if high is not None else ""]
         raise UsageError(f"{name} = {value!r}: must be {kind} {' and '.join(x for x in span if x)}".rstrip()
                          + (f" {unit}" if unit else ""))
+
+
+def writable_folder(path, option: str = "--out"):
+    """The output folder ``path``, created now (so that a bad path fails before any simulation); UsageError naming
+    ``option`` if it is a file or cannot be written."""
+    from pathlib import Path
+
+    out = Path(path)
+    if out.exists() and not out.is_dir():
+        raise UsageError(f"{option} = {str(path)!r}: is a file, not a folder")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        probe = out / ".laddermill_write_test"
+        probe.write_bytes(b"")
+        probe.unlink()
+    except OSError as err:
+        raise UsageError(f"{option} = {str(path)!r}: cannot write there ({err.strerror or err})") from None
+    return out
+
+
+def run_guarded(name: str, run) -> int:
+    """The exit status of ``run()``, the command ``laddermill name``: bad input (UsageError, ConfigError) one line
+    on stderr and 2; a start state or setting the simulator refuses (SimulationError) one line and 3; Ctrl-C one line
+    and 130 (a command that keeps its partial results says so itself)."""
+    from laddermill_gym.model.configio import ConfigError
+    from laddermill_gym.sim.simulator import SimulationError
+
+    try:
+        return int(run() or 0)
+    except (UsageError, ConfigError, SimulationError) as err:  # bad input: one line, no traceback
+        text = " ".join(line.strip() for line in str(err).splitlines() if line.strip())
+        print(f"laddermill {name}: error: {text}", file=sys.stderr)
+        return 3 if isinstance(err, SimulationError) else 2
+    except KeyboardInterrupt:
+        print(f"laddermill {name}: interrupted (Ctrl-C)", file=sys.stderr)
+        return 130
 
 
 def check_controllers(specs, option: str = "--controllers") -> None:
@@ -91,17 +128,19 @@ class Command:
         return p
 
     def main(self, argv: list[str] | None = None) -> int:
-        """Parse ``argv`` (None: the process' arguments) with a parser of its own, ``laddermill NAME``, and run."""
+        """Parse ``argv`` (None: the process' arguments) with a parser of its own, ``laddermill NAME``, and run
+        (:func:`run_guarded`: bad input one line and exit status 2, as ``laddermill NAME``)."""
         p = Parser(prog=f"laddermill {self.name}", description=self.description)
         self.arguments(p)
-        return self.run(p.parse_args(argv))
+        args = p.parse_args(argv)
+        return run_guarded(self.name, lambda: self.run(args))
 
 
 def run_subcommand(add_parser: Callable, name: str, argv: list[str] | None = None, prog: str = "laddermill",
                    dest: str = "cmd"):
     """Parse ``argv`` (None: the process' arguments) as ``prog name ARGV`` with the parser ``add_parser(sub)``
-    puts on a subparsers object, and return what its ``func`` returns."""
+    puts on a subparsers object, and return what its ``func`` returns (:func:`run_guarded`)."""
     parser = Parser(prog=prog)
     add_parser(parser.add_subparsers(dest=dest, required=True))
     args = parser.parse_args([name, *(sys.argv[1:] if argv is None else argv)])
-    return args.func(args)
+    return run_guarded(name, lambda: args.func(args))

@@ -44,8 +44,8 @@ class RotorcraftEnv(TaskEnv):
     side in a frame with vertical fins, on three tethers (two rear, one forward), generating electricity while
     its rotors carry it (Roberts, "Tethered rotorcraft as a means of electricity generation at high altitude",
     sec. 2, 3 and 7). Below a critical wind speed the craft has a coupled roll / lateral translation
-    instability (Roberts sec. 7): at the default 10 m/s an oscillatory roll / lateral / yaw mode (period of
-    some 15 s) grows until the craft crashes with its trim controls held; in stronger wind it is stable
+    instability (Roberts sec. 7): at the default 10 m/s an oscillatory roll / lateral / yaw mode (period
+    12.6 s) grows until the craft crashes with its trim controls held; in stronger wind it is stable
     (growth rate and period: the unstable eigenvalue of the linearisation at the trim, which
     tests/test_rotorcraft_env.py checks against the open-loop rollout). Roberts stabilises it with the
     differential collective pitch. The task: produce power while holding the craft

@@ -195,6 +195,11 @@ def bench_envs_command(args) -> int:
     if not args.threads:
         run_env_benchmark(quick=args.quick, json_path=args.json, envs=args.envs, copies=args.copies)
         return 0
+    import numba
+
+    if min(args.threads) > numba.config.NUMBA_NUM_THREADS:  # every count left out: nothing would be measured
+        raise UsageError(f"--threads {args.threads}: every count is above the pool's "
+                         f"{numba.config.NUMBA_NUM_THREADS} threads (NUMBA_NUM_THREADS or the cpu count)")
     res = thread_scaling(args.threads, envs=args.envs, copies=max(args.copies or [512]), quick=args.quick)
     if args.json:
         Path(args.json).write_text(json.dumps(res, indent=2))

@@ -25,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-from laddermill_gym.studies.commands import Command, UsageError, check_controllers
+from laddermill_gym.studies.commands import Command, UsageError, check_controllers, writable_folder
 from laddermill_gym.studies.controller_specs import build_controllers, policy_env_kwargs
 from laddermill_gym.studies.gusts.gust_suite import Scenario, Suite, load_suite
 from laddermill_gym.studies.parallel import add_arguments, check_arguments, run_tasks
@@ -169,7 +169,14 @@ def controller_label(spec: str) -> str:
 
 def _jobs(suite: Suite, env_ids, controllers, scenarios) -> list[tuple]:
     """(env_id, env_kwargs with the policy's control settings (:func:`policy_env_kwargs`), controller spec,
-    scenario) in the benchmark's order."""
+    scenario) in the benchmark's order; UsageError for an env the suite lacks, a scenario an env named in
+    ``env_ids`` lacks (with every env of the suite: a scenario is run where it is), or a controller or env named
+    twice (its rows would count twice in the summary)."""
+    named = bool(env_ids)
+    for option, names in (("--env", env_ids), ("--controllers", controllers)):
+        twice = sorted({n for n in names if list(names).count(n) > 1})
+        if twice:
+            raise UsageError(f"{option} {twice}: named twice")
     env_ids = list(env_ids) or list(suite.envs)
     for e in env_ids:
         if e not in suite.envs:
@@ -177,6 +184,10 @@ def _jobs(suite: Suite, env_ids, controllers, scenarios) -> list[tuple]:
     jobs = []
     for env_id in env_ids:
         env_kwargs, scen = suite.envs[env_id]
+        missing = sorted(set(scenarios or ()) - {s.name for s in scen})
+        if missing and named:
+            raise UsageError(f"--scenarios {missing}: not scenarios of {env_id} in suite {suite.name} "
+                             f"({', '.join(s.name for s in scen)})")
         chosen = [s for s in scen if not scenarios or s.name in scenarios]
         for spec in controllers:
             kw = dict(env_kwargs, **policy_env_kwargs(spec, env_id))
@@ -350,10 +361,10 @@ def _run(args) -> int:
     # every controller built and checked against each env before any episode (a refused one: one line, exit 2).
     # Serially (--workers 0) the tasks then use these very controllers, at no extra cost; with --workers or --ray
     # each worker builds its own again, so this is a one-time extra cost there, paid for the early, clean error.
+    out = writable_folder(args.out or Path("results") / "gust_bench" / suite.name)  # before any episode
     build_suite_controllers(suite, args.env, args.controllers, args.scenarios, option="--controllers")
     rows = run_suite(suite, args.env, args.controllers, args.scenarios, workers=args.workers, ray=args.ray,
                      built=True)
-    out = args.out or Path("results") / "gust_bench" / suite.name
     for path in write_outputs(rows, suite, out):
         print(path)
     return 0

@@ -79,12 +79,19 @@ def scorecards(suite_name: str, env_id: str, controllers, steps, echo=print) -> 
     if env_id not in suite.envs:
         raise ValueError(f"env = {env_id!r}: not in suite {suite.name} ({', '.join(sorted(suite.envs))})")
     kwargs, scenarios = suite.envs[env_id]
+    longest = max(s.duration for s in scenarios)
+    for label, args in step_args.items():  # a step too fine to finish is named before any episode
+        from laddermill_gym.sim.recording import check_step_count
+
+        note = check_step_count(args["physics_dt"], longest, f"--steps {label}: the step")
+        if note:
+            echo(f"warning: {note}")
     labels = [controller_label(c) for c in controllers]
     echo(f"{suite.name}, {env_id}: {len(scenarios)} scenarios; reference step {steps[0]}")
     out, ref = {}, None
     for label, args in step_args.items():
         one = dataclasses.replace(suite, envs={env_id: ({**kwargs, **args}, scenarios)})
-        rows = run_suite(one, [env_id], list(controllers), progress=False)
+        rows = run_suite(one, [env_id], list(controllers), progress=True)
         lost = lost_episodes(rows)
         ref = lost if ref is None else ref
         common = set(lost) & set(ref)

@@ -12,6 +12,7 @@ in no order, the episode is on a knife edge (chaotic), and one seed of it does n
 from __future__ import annotations
 
 import argparse
+import math
 from pathlib import Path
 
 import yaml
@@ -69,6 +70,9 @@ def main(argv: list[str] | None = None) -> None:
     p.add_argument("--controllers", nargs=2, required=True, help="first (flies up to the time) and second")
     p.add_argument("--times", nargs="+", type=float, required=True, help="hand-over times [s]")
     a = p.parse_args(argv)
+    bad = [t for t in a.times if not (math.isfinite(t) and t >= 0.0)]
+    if bad:  # before the controllers are built
+        p.error(f"--times {bad[0]!r}: each hand-over time must be a finite number >= 0 s")
     first, second = a.controllers
     for t, code, t_end in handover_outcomes(a.env, a.scenario, a.seed, a.controllers, a.times):
         print(f"{first} -> {second} at {t:g} s: " + ("survives" if code == 0 else f"fails at {t_end:.2f} s"))

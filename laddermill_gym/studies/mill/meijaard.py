@@ -338,8 +338,16 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--no-progress", action="store_true", help="no tqdm bars")
     args = ap.parse_args(argv)
     cfg = dataclasses.replace(QUICK if args.quick else Config(), progress=not args.no_progress, scene=args.scene)
-    load_scene(cfg.scene, dimension=2)  # a clear error for an unknown scene before any run
-    args.out.mkdir(parents=True, exist_ok=True)
+    from laddermill_gym.model.configio import ConfigError
+    from laddermill_gym.studies.commands import UsageError, writable_folder
+
+    try:  # an unknown scene, one without a moving cable (a point-mass one has no assembly) and a bad --out: one line
+        if getattr(getattr(load_scene(cfg.scene, dimension=2), "assembly", None), "station", None) is None:
+            raise UsageError(f"--scene {cfg.scene!r}: no moving cable through a station (the study's periodic "
+                             "searches need a mill's: laddermill, laddermill_v1, laddermill_v2)")
+        writable_folder(args.out)
+    except (UsageError, ConfigError) as err:
+        ap.error(str(err))
     if args.fresh:
         for f in (args.out / "states").glob("*.npz"):
             f.unlink()

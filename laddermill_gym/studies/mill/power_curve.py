@@ -43,7 +43,7 @@ from pathlib import Path
 import numpy as np
 
 from laddermill_gym.studies import parallel
-from laddermill_gym.studies.commands import Parser, UsageError, check_number
+from laddermill_gym.studies.commands import Parser, UsageError, check_number, writable_folder
 from laddermill_gym.studies.mill import vc_search
 from laddermill_gym.studies.mill.tail_schedule import RULES, tail_rule
 
@@ -183,10 +183,11 @@ def _flat(results: list) -> list[dict]:
     return [r for res in results for r in (res if isinstance(res, list) else [res])]
 
 
-def run(cfg: Config, workers: int = 0, progress: bool = True) -> tuple[list[dict], list[dict]]:
-    """Both sweeps, winds in parallel (``workers``), the cases of one wind's search in sequence; returns (rows, best
-    per wind over every row: the paper's wind included)."""
-    rows = _flat(parallel.run_tasks(tasks(cfg), workers=workers, desc="power curve", unit="task", progress=progress))
+def run(cfg: Config, workers: int = 0, progress: bool = True, ray: str | None = None) -> tuple[list[dict], list[dict]]:
+    """Both sweeps, winds in parallel (``workers`` local processes, or on Ray at ``ray``), the cases of one wind's
+    search in sequence; returns (rows, best per wind over every row: the paper's wind included)."""
+    rows = _flat(parallel.run_tasks(tasks(cfg), workers=workers, ray=ray, desc="power curve", unit="task",
+                                    progress=progress))
     return rows, best_per_wind(rows)
 
 
@@ -370,6 +371,7 @@ def main(argv=None) -> int:
     parallel.check_arguments(args, p.prog)
     try:
         cfg = _config(args)
+        writable_folder(args.out)  # a bad folder named before the cases, not after them
     except UsageError as err:
         p.error(str(err))
     if args.table is not None:  # the rows of an earlier run, printed and drawn again
@@ -383,7 +385,7 @@ def main(argv=None) -> int:
             print(f"{p.prog} --replay: {err}", file=sys.stderr)
             return 1
     else:
-        rows, best = run(cfg, workers=args.workers)
+        rows, best = run(cfg, workers=args.workers, ray=args.ray)
     print_table(cfg, rows, best)
     for path in write(Path(args.out), cfg, rows, best):
         print(f"wrote {path}")

@@ -209,6 +209,8 @@ def main(argv=None) -> int:
     a = p.parse_args(argv)
     if a.lost and a.elevators is not None:
         p.error("--lost searches the elevators itself: leave out --elevators")
+    if a.elevators is not None and not all(abs(e) < 90.0 for e in a.elevators):  # NaN too: a table of nan before
+        p.error(f"--elevators = {a.elevators}: each must be a finite angle within +-90 deg")
     for v in a.variants:
         report_lost(v) if a.lost else report(v, a.elevators)
     return 0

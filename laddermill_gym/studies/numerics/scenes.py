@@ -32,6 +32,25 @@ def check_scene_names(names, option: str = "scene", crafts: bool = True) -> None
             raise UsageError(f"{err}" + (f"; or a rotorcraft: {', '.join(CRAFT_NAMES)}" if crafts else "")) from None
 
 
+def refuse_scene_kinds(names, option: str, elsewhere: dict[str, str]) -> None:
+    """UsageError naming ``option`` and the first of ``names`` (scene names or files, already checked to exist) of a
+    kind the command does not measure: ``"pointmass"`` (a point-mass scene, its fidelity's ``wing: pointmass``) or
+    ``"moving"`` (a moving cable through a station, the mill), the keys of ``elsewhere``, each with where the kind
+    is measured instead. Reads the scene files only (no scene is built)."""
+    from laddermill_gym.model.configio import find_config, load_yaml_text
+
+    for name in names:
+        if name in CRAFT_NAMES:
+            continue
+        path = find_config("scenes", name, option)
+        data = load_yaml_text(path.read_text(encoding="utf-8"), str(path)) or {}
+        kind = ("pointmass" if (data.get("fidelity") or {}).get("wing") == "pointmass"
+                else "moving" if "station" in data else "")
+        if kind in elsewhere:
+            what = "a point-mass scene" if kind == "pointmass" else "a moving-cable scene (the mill)"
+            raise UsageError(f"{option} {name!r}: {what}, which this command does not measure; {elsewhere[kind]}")
+
+
 def build_simulator(name: str, elements_per_piece: int | None = None, **settings) -> Simulator:
     """A simulator of scene (or craft config) ``name`` at its initial equilibrium, with integrator ``settings``
     replaced (``dt``, ``method``, ``breakpoints``, ...). ``elements_per_piece`` re-divides a scene's cable."""

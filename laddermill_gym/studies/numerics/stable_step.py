@@ -35,9 +35,11 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def _cmd(args) -> int:
-    from laddermill_gym.studies.numerics.scenes import build_simulator, check_scene_names
+    from laddermill_gym.studies.numerics.scenes import build_simulator, check_scene_names, refuse_scene_kinds
 
     check_scene_names([args.scene])
+    refuse_scene_kinds([args.scene], "scene", {"pointmass": "the point-mass string's explicit step limit is "
+                                                            "l0 / c (sim/pointmass.py explicit_stable_dt)"})
     check_number("--elements-per-piece", args.elements_per_piece, low=1, integer=True, strict=False)
     sim = build_simulator(args.scene, elements_per_piece=args.elements_per_piece)
     print(f"{args.scene}: {sim.n_state} states, dt {sim.settings.dt:g} s")

@@ -26,7 +26,6 @@ import json
 import math
 import sys
 import warnings
-from pathlib import Path
 
 import numpy as np
 
@@ -34,7 +33,7 @@ from laddermill_gym.kernels.contract import N_CONTROLS
 from laddermill_gym.model.configio import ConfigError
 from laddermill_gym.sim.simulator import SimulationError
 from laddermill_gym.sim.stable_step import UnstableStepWarning, estimate_stable_step
-from laddermill_gym.studies.commands import UsageError, check_number, run_subcommand
+from laddermill_gym.studies.commands import UsageError, check_number, run_subcommand, writable_folder
 from laddermill_gym.studies.numerics import stress_cases as sc
 from laddermill_gym.studies.numerics.scenes import CRAFT_NAMES, DEFAULT_SCENES, build_simulator, with_settings
 
@@ -333,6 +332,7 @@ def check_options(args) -> int:
 
 def _cmd(args) -> int:
     episodes = check_options(args)
+    out = writable_folder(args.out)  # a bad folder named before the episodes, not after them
     rows: list[dict] = []
     interrupted = False
     try:
@@ -340,8 +340,6 @@ def _cmd(args) -> int:
     except KeyboardInterrupt:
         interrupted = True
     print_table(rows)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     keys = list(dict.fromkeys(k for r in rows for k in r))
     with open(out / "stress.csv", "w", newline="", encoding="utf-8") as fh:
         w = csv.DictWriter(fh, fieldnames=keys)

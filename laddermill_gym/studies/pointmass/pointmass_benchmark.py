@@ -178,7 +178,16 @@ def run_pointmass_benchmark(quick: bool = False, json_path: str | None = None) -
 
 def _run(args) -> int:
     if args.scaling:
-        rows = thread_scaling(tuple(args.scaling))
+        import numba
+
+        from laddermill_gym.studies.commands import UsageError
+
+        pool = numba.config.NUMBA_NUM_THREADS  # a count above it would run on the pool's threads, mislabelled
+        bad = [k for k in args.scaling if not 1 <= k <= pool]
+        if bad:
+            raise UsageError(f"--scaling {bad[0]}: must be a thread count from 1 to the pool's {pool} "
+                             "(NUMBA_NUM_THREADS or the cpu count)")
+        rows = thread_scaling(tuple(dict.fromkeys(args.scaling)))
         if args.json:
             with open(args.json, "w", encoding="utf-8") as fh:
                 json.dump(rows, fh, indent=1)
@@ -199,9 +208,8 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
-    run_subcommand(add_parser, "bench-pointmass", argv,
-                   prog="python -m laddermill_gym.studies.pointmass.pointmass_benchmark", dest="command")
-    return 0
+    return run_subcommand(add_parser, "bench-pointmass", argv,
+                          prog="python -m laddermill_gym.studies.pointmass.pointmass_benchmark", dest="command")
 
 
 if __name__ == "__main__":
