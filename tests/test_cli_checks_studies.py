@@ -103,6 +103,7 @@ def test_step_convergence_refuses_a_step_that_would_not_finish(capsys):
 
 def test_mill_power_curve_sends_its_cases_to_ray_when_asked(monkeypatch, tmp_path):
     """``laddermill power-curve --ray ADDRESS`` ran its cases locally: the address never reached the task runner."""
+    pytest.importorskip("ray")  # the option is refused without Ray (an extra)
     from laddermill_gym.studies import parallel
     from laddermill_gym.studies.mill import power_curve
 

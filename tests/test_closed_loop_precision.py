@@ -77,7 +77,7 @@ def test_closed_loop_rows_and_references():
     assert any(r["meets_controller"] for r in closed if r["method"] == "rk4" and r["status"] == "ok")
 
 
-def test_bad_controller_names_raise():
+def test_bad_controller_names_raise(capsys):
     with pytest.raises(ValueError, match="'pid'"):
         cl.check_controller("pid")
     base = build_simulator("tethered_wing")
@@ -87,11 +87,11 @@ def test_bad_controller_names_raise():
         cl.design_feedback("rotorcraft_x", base, "lqr")
     with pytest.raises(SystemExit):
         wp.main(["tethered_wing", "--controller", "pid", "--quiet"])
-    with pytest.raises(ValueError, match="pumping_kite"):
-        wp.main(["pumping_kite", "--controller", "lqr", "--quiet"])
+    assert wp.main(["pumping_kite", "--controller", "lqr", "--quiet"]) == 2  # one line, as laddermill's
+    assert "pumping_kite" in capsys.readouterr().err
 
 
-def test_kept_matrix_rows():
+def test_kept_matrix_rows(capsys):
     """``--jacobian-every 4``: rows "METHOD/j4" beside the every-step rows, on the same step grid, with other last
     bits and, at the 0.05 s control period, within the controller tolerances of the DP5(4) / DOP853 reference."""
     assert wp.case_settings("ros2/j4", 0.05) == ("ros2", dict(method="ros2", breakpoints="inside", dt=0.05,
@@ -104,5 +104,5 @@ def test_kept_matrix_rows():
     assert {m for m, _ in rows} >= {"ros1/j4", "ros2/j4", "ros2t/j4", "ros34pw2/j4"}
     assert kept["status"] == every["status"] == "ok" and kept["meets_controller"]
     assert 0.0 < kept["err_max_pos_m"] != every["err_max_pos_m"]
-    with pytest.raises(ValueError, match="--jacobian-every = 0"):
-        wp.main(["tethered_wing", "--jacobian-every", "0", "--quiet"])
+    assert wp.main(["tethered_wing", "--jacobian-every", "0", "--quiet"]) == 2
+    assert "--jacobian-every = 0" in capsys.readouterr().err

@@ -56,8 +56,10 @@ def _same(a, b) -> bool:
 
 
 def _shaped(power, p_ref, lat, rates, effort, failure, steps, n_max):
-    """The numpy shaped reward of before (``TaskCore.shaped_reward``'s arithmetic)."""
+    """The numpy shaped reward (``TaskCore.shaped_reward``'s arithmetic: a nan argument, a state gone non-finite, counts
+    as the full penalty; the wing kernels' reward was nan there until 2026-12-07)."""
     terminated = failure != 0
+    lat, rates = np.nan_to_num(lat, nan=np.inf), np.nan_to_num(rates, nan=np.inf)
     terms = {"reward_power": W["power"] * power / p_ref, "reward_lateral": -W["lateral"] * -np.expm1(-lat),
              "reward_rates": -W["rates"] * -np.expm1(-rates), "reward_effort": -W["effort"] * -np.expm1(-effort),
              "reward_failure": -W["penalty"] * terminated}

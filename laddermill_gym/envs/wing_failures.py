@@ -14,7 +14,8 @@ from laddermill_gym.kernels.contract import GROUND, LIMIT, NONFINITE, OK, SINGUL
 from laddermill_gym.kernels.rigid.observe import AUX_MAX_TENSION, AUX_MIN_ALTITUDE
 from laddermill_gym.sim.reports import ground_stop_text
 
-__all__ = ["status_texts", "shared_failure_text", "aero_range_text", "wing_failure_text", "wing_terms"]
+__all__ = ["status_texts", "shared_failure_text", "aero_range_text", "wing_failure_text", "wing_terms",
+           "integration_diagnosis"]
 
 
 def wing_terms(task, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -43,6 +44,26 @@ def status_texts(limit_text: str) -> dict[int, str]:
     return {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: limit_text}
 
 
+def integration_diagnosis(task, b: int) -> str:
+    """Where copy ``b``'s integration broke down: its first non-finite state entry by name (wing, node or station
+    quantity; the simulator refuses such a state, so a finite stand-in names it), else the simulator's diagnosis of
+    its state (``sim.reports.diagnose``: the fastest wing and node, the largest rate and tension)."""
+    from laddermill_gym.sim.simulator import Simulator
+
+    bt = task.batch
+    x = bt.states[b]
+    bad = np.flatnonzero(~np.isfinite(x))
+    try:
+        if bad.size:
+            i = int(bad[0])
+            names = Simulator(bt.assembly, np.nan_to_num(x), bt.settings, bt.controls[b])
+            return f"{names.state_name(i)} = {x[i]} (state entry {i}; {bad.size} entries not finite)"
+        sim = task.simulator(b) if hasattr(task, "simulator") else task._snapshot_simulator(Simulator, b, check=False)
+        return sim.diagnose()
+    except (ValueError, RuntimeError, AttributeError, IndexError) as err:  # the read-out must not hide the failure
+        return f"no diagnosis of the state ({type(err).__name__}: {err})"
+
+
 def shared_failure_text(task, b: int, code: int, statuses: dict[int, str]) -> str | None:
     """The sentence for copy ``b``'s failure ``code`` where the wing families word it alike: "" for 0, the
     integrator's status for 1, a ground stop of the integrator for 2, the cable's tension [N] for 3; None where the
@@ -52,7 +73,8 @@ def shared_failure_text(task, b: int, code: int, statuses: dict[int, str]) -> st
     bt = task.batch
     t = float(bt.t[b])
     if code == 1:
-        return f"t = {t:.2f} s: integration failed ({statuses.get(int(bt.status[b]), 'unknown')})"
+        return (f"t = {t:.2f} s: integration failed ({statuses.get(int(bt.status[b]), 'unknown')}); "
+                f"{integration_diagnosis(task, b)}")
     if code == 2 and bt.status[b] == GROUND:
         return f"t = {t:.2f} s: {ground_stop_text(bt.assembly, bt.states[b], bt.settings.ground_height)}"
     if code == 3:

@@ -179,15 +179,17 @@ def clip_rows(raw, low, high, out):
 def shaped_terms(p_term, e_args, failure, steps, weights, n_steps_max, terms, reward, terminated, truncated):
     """The shaped reward of every copy from ``p_term`` (B,), ``e_args`` (3, B) = expm1 of the negated arguments
     (numpy's), the failure codes and step counters (B,): terms (5, B) = (p_term, -w_y S_lat, -w_w S_rates,
-    -w_u S_effort, -failure_penalty [terminated]) with S = -e_args, ``reward`` their sum in that order,
+    -w_u S_effort, -failure_penalty [terminated]) with S = -e_args (1, the full penalty, where an argument is nan:
+    a state gone non-finite, as ``TaskCore.shaped_reward`` counts it), ``reward`` their sum in that order,
     ``terminated`` (failure != 0), ``truncated`` (steps >= n_steps_max and not terminated). ``weights`` =
     (w_y, w_w, w_u, failure_penalty) as numpy multiplied them: (-w) (-e) for each saturating term."""
     wl, wr, we, pen = weights[0], weights[1], weights[2], weights[3]
     for b in range(p_term.shape[0]):
         term = failure[b] != 0
         t0 = p_term[b]
-        t1 = -wl * -e_args[ARG_LATERAL, b]
-        t2 = -wr * -e_args[ARG_RATES, b]
+        e_lat, e_rates = e_args[ARG_LATERAL, b], e_args[ARG_RATES, b]
+        t1 = -wl * -(e_lat if e_lat == e_lat else -1.0)
+        t2 = -wr * -(e_rates if e_rates == e_rates else -1.0)
         t3 = -we * -e_args[ARG_EFFORT, b]
         t4 = -pen * (1.0 if term else 0.0)
         terms[TERM_POWER, b], terms[TERM_LATERAL, b], terms[TERM_RATES, b] = t0, t1, t2

@@ -169,14 +169,9 @@ def controller_label(spec: str) -> str:
 
 def _jobs(suite: Suite, env_ids, controllers, scenarios) -> list[tuple]:
     """(env_id, env_kwargs with the policy's control settings (:func:`policy_env_kwargs`), controller spec,
-    scenario) in the benchmark's order; UsageError for an env the suite lacks, a scenario an env named in
-    ``env_ids`` lacks (with every env of the suite: a scenario is run where it is), or a controller or env named
-    twice (its rows would count twice in the summary)."""
+    scenario) in the benchmark's order; UsageError for an env the suite lacks or a scenario an env named in
+    ``env_ids`` lacks (with every env of the suite: a scenario is run where it is)."""
     named = bool(env_ids)
-    for option, names in (("--env", env_ids), ("--controllers", controllers)):
-        twice = sorted({n for n in names if list(names).count(n) > 1})
-        if twice:
-            raise UsageError(f"{option} {twice}: named twice")
     env_ids = list(env_ids) or list(suite.envs)
     for e in env_ids:
         if e not in suite.envs:
@@ -352,6 +347,10 @@ def _arguments(p: argparse.ArgumentParser) -> None:
 def _run(args) -> int:
     check_arguments(args, "laddermill gust-bench")
     check_controllers(args.controllers)
+    for option, names in (("--env", args.env), ("--controllers", args.controllers)):
+        twice = sorted({n for n in names if names.count(n) > 1})
+        if twice:  # its rows would count twice in the summary
+            raise UsageError(f"{option} {twice}: named twice")
     suite = load_suite(args.suite)
     _jobs(suite, args.env, [], args.scenarios)  # an unknown --env before any run
     names = {s.name for _, scen in suite.envs.values() for s in scen}
@@ -361,8 +360,8 @@ def _run(args) -> int:
     # every controller built and checked against each env before any episode (a refused one: one line, exit 2).
     # Serially (--workers 0) the tasks then use these very controllers, at no extra cost; with --workers or --ray
     # each worker builds its own again, so this is a one-time extra cost there, paid for the early, clean error.
-    out = writable_folder(args.out or Path("results") / "gust_bench" / suite.name)  # before any episode
     build_suite_controllers(suite, args.env, args.controllers, args.scenarios, option="--controllers")
+    out = writable_folder(args.out or Path("results") / "gust_bench" / suite.name)  # before any episode
     rows = run_suite(suite, args.env, args.controllers, args.scenarios, workers=args.workers, ray=args.ray,
                      built=True)
     for path in write_outputs(rows, suite, out):
