@@ -28,6 +28,7 @@ from laddermill_gym.envs.task_base import (
     episode_periods,
     positive,
     substeps_per_period,
+    warn_coarse_wind,
 )
 
 # the settings dataclasses live in task_settings.py; imported here, where every env has always found them
@@ -159,8 +160,8 @@ class WingTask(TaskCore):
                  disturbances=None, wind_dt: float = 0.1, reward=None, termination=None,
                  parallel: bool | None = None, physics_step: str | None = None, jacobian_every: int = 1):
         task_kwargs = {k: v for k, v in locals().items() if k not in ("self", "__class__")}
-        for name, v in (("control_dt", control_dt), ("episode_time", episode_time), ("wind_dt", wind_dt)):
-            positive(name, v, "s")
+        control_dt, episode_time, wind_dt = (positive(name, v, "s") for name, v in (
+            ("control_dt", control_dt), ("episode_time", episode_time), ("wind_dt", wind_dt)))
         self.n_steps_max = episode_periods(float(episode_time), float(control_dt))  # before any warm-up starts
         options = physics_scene_options(scene_options, physics_step, physics_dt, control_dt)
         # the step kernel compiled in a second process while the trim is solved (envs/kernel_warmup.py); a third
@@ -177,6 +178,7 @@ class WingTask(TaskCore):
                 raise ValueError(f"scene {sc.name}: the environments need a 3D scene (dimension = {asm.dim})")
             substeps_per_period(sc.name, sc.settings, control_dt)
             self.disturbances = env_disturbances(disturbances, float(episode_time))
+            warn_coarse_wind(self.disturbances, wind_dt, episode_time)
             self.scene, x_trim, u_trim, self.physics_step_note = _stable_step_scene(
                 str(scene), options, (sc, x_trim, u_trim), control_dt, self.disturbances, episode_time, wind_dt)
             sc, asm = self.scene, self.scene.assembly

@@ -18,6 +18,7 @@ A task holds B copies of one system and answers the protocol those three use:
 from __future__ import annotations
 
 import math
+import numbers
 import warnings
 from functools import reduce
 from operator import add
@@ -46,10 +47,26 @@ PARALLEL_STATE_SIZE = 500
 
 
 def positive(name: str, v, unit: str) -> float:
-    """``v`` as a float; ValueError naming ``name``, the value and the ``unit`` unless it is a finite number > 0."""
-    if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+    """``v`` as a float; ValueError naming ``name``, the value and the ``unit`` unless it is a finite real number > 0
+    (Python's or numpy's: ``np.int64(300)`` from ``np.arange`` and ``np.float32`` pass; a bool does not)."""
+    if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Real):
+        raise ValueError(f"{name} = {v!r}: must be a number (a finite number > 0 {unit}), not {type(v).__name__}")
+    if not (math.isfinite(v) and v > 0):
         raise ValueError(f"{name} = {v!r}: must be a finite number > 0 {unit}")
     return float(v)
+
+
+class CoarseWindWarning(UserWarning):
+    """An env's wind is sampled (``wind_dt``) more coarsely than its episode is long: its disturbances barely act."""
+
+
+def warn_coarse_wind(disturbances, wind_dt: float, episode_time: float) -> None:
+    """A :class:`CoarseWindWarning` when ``disturbances`` act on a wind sampled every ``wind_dt`` [s] longer than
+    the episode (``episode_time`` [s]): ``wind_dt = 1000`` all but removed the paper's direction step, silently."""
+    if disturbances and wind_dt > episode_time:
+        warnings.warn(f"wind_dt = {wind_dt:g} s is longer than the episode (episode_time = {episode_time:g} s): the "
+                      "wind modulation is sampled every wind_dt, so a disturbance is smeared over wind_dt and barely "
+                      "acts", CoarseWindWarning, stacklevel=5)
 
 
 class LateDisturbanceWarning(UserWarning):
@@ -178,6 +195,7 @@ class TaskCore:
         B = check_copies(n_copies)
         self._episode_times(control_dt, episode_time, wind_dt)
         self.disturbances = env_disturbances(disturbances, self.episode_time)
+        warn_coarse_wind(self.disturbances, self.wind_dt, self.episode_time)
         self.reward_config = config_from(reward, self.reward_class, "reward")
         self.termination_config = config_from(termination, self.termination_class, "termination")
         self.initial_noise = config_from(initial_noise, self.noise_class, "initial_noise")

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import numbers
 import warnings
 from functools import lru_cache
 
@@ -39,7 +40,9 @@ def trim_controls(cfg: CraftConfig, collective: float | None) -> np.ndarray:
     (2,); ValueError names ``collective`` outside the config's collective limits."""
     th = cfg.initial_collective if collective is None else collective
     lo, hi = cfg.collective_limits
-    if not (isinstance(th, (int, float)) and math.isfinite(th) and lo <= th <= hi):
+    if isinstance(th, (bool, np.bool_)) or not isinstance(th, numbers.Real):  # numpy's scalars are real numbers too
+        raise ValueError(f"collective = {th!r}: must be a number [rad], not {type(th).__name__}")
+    if not (math.isfinite(th) and lo <= th <= hi):
         raise ValueError(f"collective = {th!r} rad: must lie in the craft's collective_limits [{lo:.4g}, {hi:.4g}] rad")
     return np.array([float(th), 0.0])
 

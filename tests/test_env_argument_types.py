@@ -1,0 +1,45 @@
+"""Env arguments as a researcher's sweep passes them: numpy's scalars (``np.arange`` gives ``np.int64``,
+``np.float32`` arrays give ``np.float32``) are numbers and were refused as "must be a finite number > 0" (review of
+2026-12-07); a bool or a string is named as a type problem. A wind sampled more coarsely than the episode is long
+smears its disturbances away without a word (``wind_dt = 1000``): it warns."""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import gymnasium as gym
+import numpy as np
+import pytest
+
+import laddermill_gym  # noqa: F401  (registers the ids)
+from laddermill_gym.envs.task_base import CoarseWindWarning
+
+TW, RC = "laddermill_gym/TetheredWing-v0", "laddermill_gym/Rotorcraft-v0"
+
+
+def test_numpy_scalars_are_numbers():
+    env = gym.make(TW, episode_time=np.int64(3), wind_dt=np.float32(0.5)).unwrapped
+    assert env.task.episode_time == 3.0 and type(env.task.episode_time) is float and env.task.n_steps_max == 60
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)  # Gymnasium: Rotorcraft-v0 is out of date
+        craft = gym.make(RC, collective=np.float32(math.radians(4.0)), episode_time=np.int64(1)).unwrapped
+    assert craft.task.u_trim[0] == pytest.approx(math.radians(4.0), rel=1e-6)
+
+
+@pytest.mark.parametrize("kwargs, says", [
+    (dict(episode_time=True), r"episode_time = True: must be a number .* not bool"),
+    (dict(control_dt="0.05"), r"control_dt = '0.05': must be a number .* not str"),
+    (dict(episode_time=np.float64("nan")), r"episode_time = np.float64\(nan\): must be a finite number > 0"),
+])
+def test_other_types_are_named_as_types(kwargs, says):
+    with pytest.raises(ValueError, match=says):
+        gym.make(TW, **kwargs)
+
+
+def test_a_wind_sampled_more_coarsely_than_the_episode_warns():
+    with pytest.warns(CoarseWindWarning, match=r"wind_dt = 1000 s is longer than the episode \(episode_time = 20 s\)"):
+        gym.make(TW, episode_time=20.0, wind_dt=1000.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", CoarseWindWarning)
+        gym.make(TW, episode_time=20.0, wind_dt=1000.0, disturbances=[])  # nothing to smear: no warning
