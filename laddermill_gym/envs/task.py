@@ -28,7 +28,6 @@ from laddermill_gym.envs.task_base import (
     episode_periods,
     positive,
     substeps_per_period,
-    warn_coarse_wind,
 )
 
 # the settings dataclasses live in task_settings.py; imported here, where every env has always found them
@@ -177,8 +176,7 @@ class WingTask(TaskCore):
             if asm.dim != 3:
                 raise ValueError(f"scene {sc.name}: the environments need a 3D scene (dimension = {asm.dim})")
             substeps_per_period(sc.name, sc.settings, control_dt)
-            self.disturbances = env_disturbances(disturbances, float(episode_time))
-            warn_coarse_wind(self.disturbances, wind_dt, episode_time)
+            self.disturbances = env_disturbances(disturbances, float(episode_time), wind_dt)
             self.scene, x_trim, u_trim, self.physics_step_note = _stable_step_scene(
                 str(scene), options, (sc, x_trim, u_trim), control_dt, self.disturbances, episode_time, wind_dt)
             sc, asm = self.scene, self.scene.assembly

@@ -66,19 +66,19 @@ def warn_coarse_wind(disturbances, wind_dt: float, episode_time: float) -> None:
     if disturbances and wind_dt > episode_time:
         warnings.warn(f"wind_dt = {wind_dt:g} s is longer than the episode (episode_time = {episode_time:g} s): the "
                       "wind modulation is sampled every wind_dt, so a disturbance is smeared over wind_dt and barely "
-                      "acts", CoarseWindWarning, stacklevel=5)
+                      "acts", CoarseWindWarning, stacklevel=6)
 
 
 class LateDisturbanceWarning(UserWarning):
     """A disturbance of an env starts at or after the end of its episode: it never acts (:func:`env_disturbances`)."""
 
 
-def env_disturbances(value, episode_time: float | None = None) -> tuple:
+def env_disturbances(value, episode_time: float | None = None, wind_dt: float | None = None) -> tuple:
     """An env's ``disturbances=`` argument as disturbances (``atmosphere.disturbance_spec.parse_disturbances``; None:
     the paper's direction step), YAML text read with the package's loader (YAML 1.2 floats such as ``1e-2`` as
     numbers, a key given twice refused; ConfigError naming ``disturbances``). With ``episode_time`` [s], a
     :class:`LateDisturbanceWarning` names each one whose onset ``time`` (its earliest, for a drawn range) is at or
-    after the episode's end: it never acts."""
+    after the episode's end: it never acts; with ``wind_dt`` [s] too, :func:`warn_coarse_wind`."""
     if isinstance(value, str):
         value = load_yaml_text(value, "disturbances")
         if value is None:
@@ -91,6 +91,8 @@ def env_disturbances(value, episode_time: float | None = None) -> tuple:
             warnings.warn(f"disturbances[{i}] ({type(d).__name__}, time = {onset!r} s) starts at or after the "
                           f"episode's end (episode_time = {episode_time!r} s): it never acts",
                           LateDisturbanceWarning, stacklevel=3)
+    if wind_dt is not None and episode_time is not None:
+        warn_coarse_wind(out, wind_dt, episode_time)
     return out
 
 
@@ -194,8 +196,7 @@ class TaskCore:
         ``termination_class``, ``noise_class``: None, an instance or a dict of its fields)."""
         B = check_copies(n_copies)
         self._episode_times(control_dt, episode_time, wind_dt)
-        self.disturbances = env_disturbances(disturbances, self.episode_time)
-        warn_coarse_wind(self.disturbances, self.wind_dt, self.episode_time)
+        self.disturbances = env_disturbances(disturbances, self.episode_time, self.wind_dt)
         self.reward_config = config_from(reward, self.reward_class, "reward")
         self.termination_config = config_from(termination, self.termination_class, "termination")
         self.initial_noise = config_from(initial_noise, self.noise_class, "initial_noise")

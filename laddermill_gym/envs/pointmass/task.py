@@ -121,7 +121,7 @@ class PointMassTask(TaskCore):
             raise ValueError(f"min_altitude = {min_altitude!r}: must be a finite number [m] (NaN never terminated)")
         self.min_altitude = float(min_altitude)
         self.breaking_factor = positive("breaking_factor", breaking_factor, "(-)")
-        self.disturbances = env_disturbances(disturbances, self.episode_time)
+        self.disturbances = env_disturbances(disturbances, self.episode_time, self.wind_dt)
         self.reward_config = rc = config_from(reward, RewardConfig, "reward")
         options = _stable_options(str(scene), freeze({"element_length": 1.0, **(scene_options or {})}),
                                   self.control_dt, control_dt)
