@@ -151,3 +151,16 @@ def test_wing_env_points_to_the_point_mass_env():
 
     with pytest.raises(ValueError, match="PointMassEnv"):
         WingEnv(scene="tethered_wing", scene_options={"fidelity": "pointmass", "element_length": 1.0})
+
+
+@pytest.mark.slow
+def test_a_moving_cable_whose_step_reverses_the_power_is_refused():
+    """PointMassChain-v0 on the 11-wing mill keeps the registered implicit step of 25 ms, at which the moving cable's
+    operating point generates a negative mean power (about -53 kW; about -190 kW at 101 wings, +108 kW at 5 ms: review
+    of 2026-12-07). It was refused by a message that asked for ``reward.reference_power_W``, and with one given it ran
+    on the reversed power. It is now refused naming the step, whatever the reward (21 s on the 2-core machine)."""
+    for reward in (None, {"reference_power_W": 1e5}):
+        with pytest.raises(ValueError, match=r"mean generator power of -[\d.]+ kW at the implicit point-mass step of "
+                                             r"0\.025 s.* scene_options=\{'dt': 0\.005\}"):
+            gym.make("laddermill_gym/PointMassChain-v0", scene="laddermill", scene_options={"n_wings": 11},
+                     settle_time=0.0, reward=reward)

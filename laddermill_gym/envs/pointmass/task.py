@@ -168,6 +168,13 @@ class PointMassTask(TaskCore):
             self.batch.controls[:] = self.u_trim
             self.batch.tension[:] = start_tension  # the start's (memoised): building the env runs no kernel
             start_power = float(self._power(self.batch.tension[:1])[0])
+        if self.mill is not None and not start_power > 0:  # numerical, not physical: a coarse implicit step
+            raise ValueError(
+                f"scene {sc.name} ({sc.file}): the moving cable's operating point has a mean generator power of "
+                f"{start_power / 1e3:.4g} kW at the {sc.method} point-mass step of {sc.dt:g} s. The implicit step of "
+                "the moving cable loses the power's sign at coarse steps (the end element's growing rest length, "
+                "docs/pointmass_mill.md: that page's mill runs at 10 ms); pass a finer step, scene_options={'dt': "
+                "0.005}, or the explicit method; reward.reference_power_W would only hide it")
         self.p_ref = rc.reference_power_W or start_power
         if not self.p_ref > 0:
             raise ValueError(f"scene {sc.name} ({sc.file}): the start gives no positive reference power "
