@@ -98,6 +98,12 @@ def test_same_episodes_for_every_controller_and_metrics_against_a_plain_rollout(
     assert [p.name for p in paths] == ["gust_bench.csv", "gust_bench.json", "scorecard_TetheredWing-v0.png"]
     data = json.loads(paths[1].read_text())
     assert data["suite"] == "tiny" and len(data["rows"]) == 8 and len(data["summary"]) == 2
+    # the physics the figures came from: the env's arguments (registered ones merged with the suite's), the code
+    from laddermill_gym import __version__
+    from laddermill_gym.envs import registered_arguments
+
+    assert data["env_arguments"] == json.loads(json.dumps({TW: registered_arguments(TW, {})}))
+    assert data["package_version"] == __version__ and len(data["source_digest"]) == 16
 
 
 def test_settling_time_of_an_exponential_decay():

@@ -296,9 +296,23 @@ def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool
     return rows
 
 
+def run_provenance(suite: Suite, env_ids) -> dict:
+    """What a run's figures depend on beside the suite's scenarios: per env the arguments it was built with (the
+    registered ones merged with the suite's, ``envs.registered_arguments``: scene, physics step, control period),
+    the package's version and a digest of its source (``studies.parallel.source_digest``). A suite fixes its
+    scenarios; the physics is the env id's, so a result is read with the arguments it ran on."""
+    from laddermill_gym import __version__
+    from laddermill_gym.envs import registered_arguments
+    from laddermill_gym.studies.parallel import source_digest
+
+    return {"package_version": __version__, "source_digest": source_digest(),
+            "env_arguments": {e: registered_arguments(e, suite.envs[e][0]) for e in env_ids}}
+
+
 def write_outputs(rows: list[dict], suite: Suite, out: Path) -> list[Path]:
     """``gust_bench.csv`` (one row per env, controller, scenario and seed), ``gust_bench.json`` (the suite, the
-    rows and per-(env, controller, scenario) summaries) and ``scorecard_<env>.png``; returns the paths."""
+    provenance of :func:`run_provenance`, the rows and per-(env, controller, scenario) summaries) and
+    ``scorecard_<env>.png``; returns the paths."""
     out.mkdir(parents=True, exist_ok=True)
     paths = [out / "gust_bench.csv", out / "gust_bench.json"]
     with open(paths[0], "w", newline="") as f:
@@ -307,7 +321,8 @@ def write_outputs(rows: list[dict], suite: Suite, out: Path) -> list[Path]:
         w.writerows(rows)
     summary = summarise(rows)
     with open(paths[1], "w") as f:
-        json.dump({"suite": suite.name, "version": suite.version, "file": str(suite.path), "rows": rows,
+        json.dump({"suite": suite.name, "version": suite.version, "file": str(suite.path),
+                   **run_provenance(suite, dict.fromkeys(r["env"] for r in rows)), "rows": rows,
                    "summary": summary}, f, indent=1, default=lambda x: None if x != x else x)
     from laddermill_gym.studies.gusts.gust_scorecard import plot_scorecard
 
