@@ -43,3 +43,31 @@ def test_a_wind_sampled_more_coarsely_than_the_episode_warns():
     with warnings.catch_warnings():
         warnings.simplefilter("error", CoarseWindWarning)
         gym.make(TW, episode_time=20.0, wind_dt=1000.0, disturbances=[])  # nothing to smear: no warning
+
+
+PMC = "laddermill_gym/PointMassChain-v0"
+
+
+@pytest.mark.parametrize("env_id, kwargs, says", [
+    # the point-mass chain's step was never checked: ZeroDivisionError, "cannot convert float NaN to integer", a
+    # negative one blamed on control_dt; an infinite settle time overflowed in the simulator
+    (PMC, dict(scene_options={"dt": 0.0}), r"its step dt = 0\.0 s .* must be a finite number > 0"),
+    (PMC, dict(scene_options={"dt": float("nan")}), r"its step dt = nan s"),
+    (PMC, dict(scene_options={"dt": -0.025}), r"its step dt = -0\.025 s"),
+    (PMC, dict(settle_time=float("inf")), r"settle_time = inf: must be a finite number >= 0 s"),
+    # a range that is not a pair: a bare "not enough values to unpack"
+    (TW, dict(termination={"alpha_range_deg": (-30.0,)}), r"termination.alpha_range_deg = \(-30\.0,\): need a pair"),
+])
+def test_steps_settle_times_and_ranges_are_named(env_id, kwargs, says):
+    with pytest.raises(ValueError, match=says):
+        gym.make(env_id, **kwargs)
+
+
+@pytest.mark.parametrize("kwargs, says", [
+    (dict(generator_torque="no"), r"generator_torque = 'no': must be True or False"),  # was a torque action
+    (dict(drum={"radius": 2.0}), r"drum = \{'radius': 2\.0\}: its settings apply only with generator_torque=True"),
+    (dict(speed={"half_range": 1.0}), r"its settings apply only with cable_speed_command=True"),
+])
+def test_mill_station_settings_without_their_action_are_refused(kwargs, says):
+    with pytest.raises(ValueError, match=says):
+        gym.make("laddermill_gym/LadderMill-v0", scene_options={"n_wings": 11}, settle={"max_time": 100.0}, **kwargs)

@@ -73,9 +73,14 @@ class FailureLimits:
 
     def check_range(self, name: str) -> None:
         """ValueError naming ``termination.name`` unless that field is a finite (low, high) pair with low < high."""
-        lo, hi = getattr(self, name)
-        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-            raise ValueError(f"termination.{name} = {getattr(self, name)!r}: need finite low < high")
+        pair = getattr(self, name)
+        try:
+            lo, hi = pair
+            ok = math.isfinite(lo) and math.isfinite(hi) and lo < hi
+        except (TypeError, ValueError):  # not a pair of numbers: ("-30",), 5, ("a", "b")
+            ok = False
+        if not ok:
+            raise ValueError(f"termination.{name} = {pair!r}: need a pair (low, high) of finite numbers, low < high")
 
 
 @dataclass(frozen=True)

@@ -112,6 +112,12 @@ class MillTask(TaskCore):
         self.settle = config_from(settle, SettleConfig, "settle")
         self.drum = config_from(drum, DrumConfig, "drum")
         self.speed = config_from(speed, SpeedCommandConfig, "speed")
+        for name, flag, its in (("generator_torque", generator_torque, ("drum", drum)),
+                                ("cable_speed_command", cable_speed_command, ("speed", speed))):
+            if not isinstance(flag, (bool, np.bool_)):  # 'no' was truthy: a torque action nobody asked for
+                raise ValueError(f"{name} = {flag!r}: must be True or False")
+            if its[1] is not None and not flag:
+                raise ValueError(f"{its[0]} = {its[1]!r}: its settings apply only with {name}=True, which is off")
         if generator_torque and cable_speed_command:
             raise ValueError("generator_torque and cable_speed_command: choose one station action")
         options = _scene_options(scene_options)

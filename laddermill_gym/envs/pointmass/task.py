@@ -11,6 +11,8 @@ PointMassBatch`: one kernel call per copy and control period, not one call for a
 from __future__ import annotations
 
 import functools
+import math
+import numbers
 import warnings
 
 import numpy as np
@@ -72,6 +74,9 @@ def _stable_options(scene: str, options, control_dt: float, control_dt_shown):
     do for RK4, ``envs/physics_step.py``; past it a run "stopped: speed limit exceeded" within a period). ValueError
     unless the scene's step divides ``control_dt`` [s]."""
     sc = _scene(scene, options)
+    if isinstance(sc.dt, bool) or not (isinstance(sc.dt, numbers.Real) and math.isfinite(sc.dt) and sc.dt > 0):
+        raise ValueError(f"scene {scene}: its step dt = {sc.dt!r} s (scene_options or the file's integrator.dt) must "
+                         "be a finite number > 0")
     n = int(round(control_dt / sc.dt))
     if n < 1 or abs(n * sc.dt - control_dt) > 1e-9 * control_dt:
         raise ValueError(f"control_dt = {control_dt_shown!r}: must be a whole number of scene steps ({sc.dt} s)")
@@ -110,8 +115,9 @@ class PointMassTask(TaskCore):
                  breaking_factor: float = 1.0):
         B = check_copies(n_copies)
         self._episode_times(control_dt, episode_time, wind_dt)
-        if isinstance(settle_time, bool) or not (isinstance(settle_time, (int, float)) and settle_time >= 0):
-            raise ValueError(f"settle_time = {settle_time!r}: must be a number >= 0 s")
+        if isinstance(settle_time, bool) or not (isinstance(settle_time, numbers.Real) and math.isfinite(settle_time)
+                                                 and settle_time >= 0):
+            raise ValueError(f"settle_time = {settle_time!r}: must be a finite number >= 0 s")
         if groups not in ("all", "per_kite"):
             raise ValueError(f"groups = {groups!r}: must be 'all' or 'per_kite'")
         self.ranges = np.radians([positive("pitch_range_deg", pitch_range_deg, "deg"),
