@@ -19,9 +19,13 @@ DEFAULT_SCENES = ("tethered_wing", "ladder_chain", "roberts_flying_model", "ladd
 
 def check_scene_names(names, option: str = "scene", crafts: bool = True) -> None:
     """UsageError naming ``option`` and the first of ``names`` that is neither a rotorcraft config name
-    (:data:`CRAFT_NAMES`, with ``crafts``) nor a scene file (a path or a shipped name): checked before a study
-    starts."""
+    (:data:`CRAFT_NAMES`, with ``crafts``) nor a scene file (a path or a shipped name), or a name given twice (its
+    rows would be measured and printed twice): checked before a study starts."""
     from laddermill_gym.model.configio import ConfigError, find_config
+
+    twice = sorted({n for n in names if list(names).count(n) > 1})
+    if twice:
+        raise UsageError(f"{option} {twice}: named twice")
 
     for name in names:
         if crafts and name in CRAFT_NAMES:
