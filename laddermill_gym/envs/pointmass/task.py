@@ -66,6 +66,18 @@ def _has_station(scene: str, options) -> bool:
     return _scene(scene, options).station is not None
 
 
+def _check_mill_power(sc, start_power: float, moving: bool) -> None:
+    """ValueError for a moving cable (``moving``) whose operating point's mean generator power ``start_power`` [W] is
+    not positive at the scene ``sc``'s point-mass step: numerical, not physical (a coarse implicit step)."""
+    if moving and not start_power > 0:
+        raise ValueError(
+            f"scene {sc.name} ({sc.file}): the moving cable's operating point has a mean generator power of "
+            f"{start_power / 1e3:.4g} kW at the {sc.method} point-mass step of {sc.dt:g} s. The implicit step of "
+            "the moving cable loses the power's sign at coarse steps (the end element's growing rest length, "
+            "docs/pointmass_mill.md: that page's mill runs at 10 ms); pass a finer step, scene_options={'dt': "
+            "0.005}, or the explicit method; reward.reference_power_W would only hide it")
+
+
 def _stable_options(scene: str, options, control_dt: float, control_dt_shown):
     """``options`` (frozen ``load_scene`` options) unchanged, unless the scene's step ``method`` is ``"explicit"`` and
     its ``dt`` is past ``ENV_STEP_MARGIN`` of the string's closed-form stable step
@@ -174,13 +186,7 @@ class PointMassTask(TaskCore):
             self.batch.controls[:] = self.u_trim
             self.batch.tension[:] = start_tension  # the start's (memoised): building the env runs no kernel
             start_power = float(self._power(self.batch.tension[:1])[0])
-        if self.mill is not None and not start_power > 0:  # numerical, not physical: a coarse implicit step
-            raise ValueError(
-                f"scene {sc.name} ({sc.file}): the moving cable's operating point has a mean generator power of "
-                f"{start_power / 1e3:.4g} kW at the {sc.method} point-mass step of {sc.dt:g} s. The implicit step of "
-                "the moving cable loses the power's sign at coarse steps (the end element's growing rest length, "
-                "docs/pointmass_mill.md: that page's mill runs at 10 ms); pass a finer step, scene_options={'dt': "
-                "0.005}, or the explicit method; reward.reference_power_W would only hide it")
+        _check_mill_power(sc, start_power, self.mill is not None)
         self.p_ref = rc.reference_power_W or start_power
         if not self.p_ref > 0:
             raise ValueError(f"scene {sc.name} ({sc.file}): the start gives no positive reference power "
