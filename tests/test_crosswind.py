@@ -85,6 +85,19 @@ def test_bad_configs_are_refused_naming_the_field(change, field):
         check_against_scene(dataclasses.replace(cfg, **parts), 300.0, 5.25e5, 10.0, (-16.7, 10.0))
 
 
+def test_a_reel_length_the_drum_does_not_hold_is_refused(tmp_path):
+    """PumpingKite-v1's drum holds Delta L + 2 overruns = 240 m (envs/pumping/task.py ``max_paid_out``); a 250 m
+    reel-out built and then stayed in reel-out for good, the winch stopped at the full drum (review of 2026-12-07)."""
+    text = load_crosswind_config().file.read_text()
+    assert "reel_length: 200.0" in text
+    long = tmp_path / "long.yaml"
+    long.write_text(text.replace("reel_length: 200.0", "reel_length: 250.0", 1))
+    task = PumpingTask(1, episode_time=10.0)
+    assert task.max_paid_out == 240.0
+    with pytest.raises(ConfigError, match=r"long.yaml: field 'phases.reel_length' = 250: the drum holds 240 m"):
+        make_controller(f"crosswind:{long}", "laddermill_gym/PumpingKite-v1")
+
+
 def test_bad_yaml_names_file_field_and_value(tmp_path):
     text = (load_crosswind_config().file.read_text()).replace("shape: figure_eight", "shape: spiral")
     bad = tmp_path / "bad.yaml"

@@ -90,7 +90,7 @@ class CrosswindController:
         cfg = config if isinstance(config, CrosswindConfig) else load_crosswind_config(config)
         sc = task.scene
         check_against_scene(cfg, float(np.sum(sc.assembly.elements.l0)), sc.cable.breaking_load,
-                            task.min_altitude, task.winch.speed_limits)
+                            task.min_altitude, task.winch.speed_limits, getattr(task, "max_paid_out", None))
         self.config, self.dt, self.lqr = cfg, float(task.control_dt), lqr
         self.guidance = PathGuidance(cfg.path)
         self.park = window_point(np.array([cfg.path.azimuth]), np.array([cfg.phases.park_elevation]))

@@ -139,11 +139,12 @@ def load_crosswind_config(name_or_path: str | Path = DEFAULT_CROSSWIND_CONFIG) -
 
 
 def check_against_scene(cfg: CrosswindConfig, tether_length: float, breaking_load: float, min_altitude: float,
-                        winch_speed_limits: tuple[float, float]) -> None:
+                        winch_speed_limits: tuple[float, float], drum_capacity: float | None = None) -> None:
     """Refuse (ConfigError naming the file, field and value) a path that leaves the wind window (elevation outside
     (0, 90) deg, azimuth beyond +-90 deg), a path whose lowest point on the tether's shortest length
     ``tether_length`` [m] is below ``min_altitude`` [m], a tension set-point at or above the tether's
-    ``breaking_load`` [N], a reel-in speed beyond the winch's reel-in limit."""
+    ``breaking_load`` [N], a reel-in speed beyond the winch's reel-in limit, a reel length the drum does not hold
+    (``drum_capacity`` [m], the env's ``max_paid_out``: the controller would wait in reel-out for good)."""
     f = cfg.file
     lo, hi, az_lo, az_hi = cfg.path.extent()
     if hi >= math.pi / 2 or lo <= 0.0:
@@ -162,6 +163,9 @@ def check_against_scene(cfg: CrosswindConfig, tether_length: float, breaking_loa
     if cfg.winch.max_tension >= breaking_load:
         raise ConfigError(f"{f}: field 'winch.max_tension' = {cfg.winch.max_tension:g}: at or above the tether's "
                           f"breaking load {breaking_load:g} N")
+    if drum_capacity is not None and cfg.phases.reel_length >= drum_capacity:
+        raise ConfigError(f"{f}: field 'phases.reel_length' = {cfg.phases.reel_length:g}: the drum holds "
+                          f"{drum_capacity:g} m (the env's max_paid_out), so the reel-out would never end")
     if cfg.winch.reel_in_speed > -winch_speed_limits[0] + 1e-12:
         raise ConfigError(f"{f}: field 'winch.reel_in_speed' = {cfg.winch.reel_in_speed:g}: beyond the winch's reel-in "
                           f"limit {-winch_speed_limits[0]:g} m/s")
