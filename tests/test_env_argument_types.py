@@ -71,3 +71,16 @@ def test_steps_settle_times_and_ranges_are_named(env_id, kwargs, says):
 def test_mill_station_settings_without_their_action_are_refused(kwargs, says):
     with pytest.raises(ValueError, match=says):
         gym.make("laddermill_gym/LadderMill-v0", scene_options={"n_wings": 11}, settle={"max_time": 100.0}, **kwargs)
+
+
+@pytest.mark.parametrize("env_id, kwargs, says", [
+    # the start's CG is at 296.3 m: every episode ended at t = 0.05 s "ground contact" (review of 2026-12-07)
+    ("laddermill_gym/PumpingKite-v1", dict(termination={"min_altitude": 1e6}),
+     r"termination.min_altitude = 1e\+06 m: at or above the start's CG altitude 296\.\d\d m"),
+    # past a = breaking_factor the episode has ended on the breaking load: reward_tension was always 0
+    ("laddermill_gym/PumpingKite-v1", dict(reward={"tension_allowed": 5.0}),
+     r"reward.tension_allowed = 5: at or above termination.breaking_factor = 1"),
+])
+def test_pumping_settings_that_cannot_act_are_refused(env_id, kwargs, says):
+    with pytest.raises(ValueError, match=says):
+        gym.make(env_id, **kwargs)

@@ -68,6 +68,10 @@ class CrosswindTask(PumpingTask):
                  wind_dt: float = 0.1, reward=None, termination=None, parallel: bool | None = None):
         super().__init__(n_copies, config, scene_options, control_dt, episode_time, initial_noise, disturbances,
                          wind_dt, reward, termination, parallel)
+        allowed, breaking = self.reward_config.tension_allowed, self.termination_config.breaking_factor
+        if allowed >= breaking:  # a tension that high has ended the episode already: the penalty would never act
+            raise ValueError(f"reward.tension_allowed = {allowed:g}: at or above termination.breaking_factor = "
+                             f"{breaking:g}, so the tension penalty could never act")
         B = self.n_copies
         self.obs_dim = N_CROSSWIND_OBS
         self.raw_obs = np.zeros((B, N_CROSSWIND_OBS))

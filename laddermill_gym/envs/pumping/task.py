@@ -102,6 +102,10 @@ class PumpingTask(TaskCore):
         #: drum capacity [m]: a commanded winch pays out no further than Delta L + 2 depower overruns
         self.max_paid_out = cyc.reel_length + 2.0 * cyc.depower_overrun
         self._wing_limits(sc, asm.wing(0).span)
+        start = -float(x0[B3_POS + 2])  # [m] the start's CG altitude
+        if self.min_altitude >= start:
+            raise ValueError(f"termination.min_altitude = {self.min_altitude:g} m: at or above the start's CG altitude "
+                             f"{start:.2f} m, so every episode would end on its first step")
         self._rotation0 = rotations_from_quaternions(x0[B3_QUAT: B3_QUAT + 4].reshape(1, 4))
         self.batch.states[:] = x0
         self.batch.controls[:] = u0
