@@ -72,8 +72,6 @@ CRAFT_FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite stat
 #: what the kernel warm-up's second process calls with the task's arguments (envs/task_warmup.py)
 WARMUP_TARGET = "laddermill_gym.envs.task_warmup:compile_craft"
 _STATUS_TEXT = {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: "speed or rate limit exceeded"}
-
-
 #: What the scene renderer reads of a task's scene: the built assembly and a name.
 CraftScene = namedtuple("CraftScene", ["assembly", "name"])
 
