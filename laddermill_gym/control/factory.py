@@ -52,7 +52,9 @@ def _env_scene(env_kwargs: dict):
 
 
 def _craft_controller(spec: str, kw: dict) -> Controller:
-    """Open loop (trim collective, no differential) or the eq. (6) LQR for Rotorcraft-v0."""
+    """Rotorcraft-v0 and v1: open loop (trim collective, no differential), the eq. (6) LQR (``lqr``, ``lqr:<config>``)
+    or the LQR with the blade-tip guard on the collective (``lqr_guard``, ``lqr_guard:<config>``:
+    control/craft_tip_guard.py)."""
     from laddermill_gym.envs.rotorcraft import observation as ro
     from laddermill_gym.envs.rotorcraft import trim as rt
 
@@ -67,7 +69,14 @@ def _craft_controller(spec: str, kw: dict) -> Controller:
         load_craft_lqr_config,
     )
 
-    path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_CRAFT_LQR
+    guard = None
+    if spec == "lqr_guard" or spec.startswith("lqr_guard:"):
+        from laddermill_gym.control.craft_tip_guard import DEFAULT_TIP_GUARD, load_tip_guard_config
+
+        guard = load_tip_guard_config(spec[10:] if spec.startswith("lqr_guard:") else DEFAULT_TIP_GUARD)
+        path = guard.lqr
+    else:
+        path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_CRAFT_LQR
     cfg = load_craft_lqr_config(path)
     craft_cfg = rt.craft_config(str(kw["craft"]))
     wind = craft_cfg.wind.v0 if kw.get("wind_speed") is None else float(kw["wind_speed"])
@@ -78,7 +87,13 @@ def _craft_controller(spec: str, kw: dict) -> Controller:
     design = design_craft_lqr(cfg)
     mid, half = rt.control_ranges(craft_cfg)
     idx = (ro.OBS_Y, ro.OBS_PHI, ro.OBS_VY, ro.OBS_P)
-    return CraftLQRController(design.gain, idx, ro.N_CRAFT_OBS, design.u_trim[0], mid, half)
+    lqr = CraftLQRController(design.gain, idx, ro.N_CRAFT_OBS, design.u_trim[0], mid, half)
+    if guard is None:
+        return lqr
+    from laddermill_gym.control.craft_tip_guard import TipGuardController, linearise_tips
+
+    return TipGuardController(lqr, linearise_tips(design), guard.margin, craft_cfg.collective_limits,
+                              ro.CRAFT_OBS_INDEX)
 
 
 def _mill_controller(spec: str, kw: dict, env_id: str) -> Controller:
@@ -168,7 +183,7 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
     if env_id not in ENV_IDS:
         raise ValueError(f"env_id = {env_id!r}: must be one of {sorted(ENV_IDS)}")
     kw = registered_arguments(env_id, env_kwargs)  # as gymnasium.make merges them, key by key at every depth
-    if "craft" in kw and (spec == "open_loop" or spec == "lqr" or spec.startswith("lqr:")):
+    if "craft" in kw and (spec in ("open_loop", "lqr", "lqr_guard") or spec.startswith(("lqr:", "lqr_guard:"))):
         return _craft_controller(spec, kw)
     pumping = any(c.__name__ == "PumpingTask" for c in task_class(env_id).__mro__)  # v0's task and v1's
     if pumping and (spec in ("open_loop", "scripted", "lqr", "crosswind")
@@ -202,7 +217,8 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
 
     path = shipped_policy_path(spec) if spec in SHIPPED_POLICIES else Path(spec)
     if not path.exists():
-        raise ValueError(f"controller = {spec!r}: not 'open_loop', 'lqr', 'lqr:<config>', a shipped policy "
+        raise ValueError(f"controller = {spec!r}: not 'open_loop', 'lqr', 'lqr:<config>', 'lqr_guard' (rotorcraft "
+                         "envs), a shipped policy "
                          f"({', '.join(sorted(SHIPPED_POLICIES))}) or an existing model path")
     from laddermill_gym.control.shared_controller import LinearActorController, is_shared_run
     from laddermill_gym.control.trained_settings import check_trained_settings

@@ -177,8 +177,9 @@ def plot_results(out: Path, results: dict[str, EpisodeResults], title: str) -> P
 
 def controller_label(spec: str) -> str:
     """Short name of a controller spec for tables and legends."""
-    if spec.startswith("lqr:"):
-        return "lqr:" + Path(spec[4:]).stem
+    for prefix in ("lqr:", "lqr_guard:"):
+        if spec.startswith(prefix):
+            return prefix + Path(spec[len(prefix):]).stem
     path = Path(spec)
     if path.is_file():
         return f"{path.parent.name}/{path.stem}"

@@ -85,7 +85,8 @@ def run_guarded(name: str, run) -> int:
 
 def check_controllers(specs, option: str = "--controllers") -> None:
     """UsageError naming ``option`` and the first controller spec that is none of: ``open_loop``, ``lqr``,
-    ``lqr:CONFIG`` (an LQR config file or a shipped name, ``lqr_tethered_wing``), the pumping kite's ``scripted``,
+    ``lqr:CONFIG`` (an LQR config file or a shipped name, ``lqr_tethered_wing``), the rotorcraft's ``lqr_guard`` and
+    ``lqr_guard:CONFIG``, the pumping kite's ``scripted``,
     ``crosswind`` and ``crosswind:CONFIG``, a shipped policy's name (``ppo_tethered_wing``), an existing path (a
     training run folder, a model file, an rl-zoo3 log folder). Checked before any environment is built."""
     from pathlib import Path
@@ -94,16 +95,17 @@ def check_controllers(specs, option: str = "--controllers") -> None:
     from laddermill_gym.model.configio import ConfigError, find_config
 
     for spec in specs:
-        if spec in ("open_loop", "lqr", "scripted", "crosswind") or spec in SHIPPED_POLICIES or (
-                not spec.startswith(("lqr:", "crosswind:")) and Path(spec).exists()):
+        prefixed = ("lqr:", "lqr_guard:", "crosswind:")
+        if spec in ("open_loop", "lqr", "lqr_guard", "scripted", "crosswind") or spec in SHIPPED_POLICIES or (
+                not spec.startswith(prefixed) and Path(spec).exists()):
             continue
-        if spec.startswith(("lqr:", "crosswind:")):
+        if spec.startswith(prefixed):
             try:
                 find_config("agents", spec.split(":", 1)[1])
             except ConfigError as err:
                 raise UsageError(f"{option} {spec!r}: {err}") from None
             continue
-        raise UsageError(f"{option} {spec!r}: not open_loop, lqr, lqr:<config>, scripted, crosswind, "
+        raise UsageError(f"{option} {spec!r}: not open_loop, lqr, lqr:<config>, lqr_guard, scripted, crosswind, "
                          f"crosswind:<config>, a shipped policy ({', '.join(sorted(SHIPPED_POLICIES))}) or an "
                          "existing run folder, model file or rl-zoo3 log folder")
 
