@@ -65,6 +65,14 @@ ROTORCRAFT_GIVEN = (  # the paper's sections and equations, the model's choices 
     "Eq. (6), which keeps yaw", "## LQR on eq. (6)", "y 0.5 m, phi 3 deg, y' 0.5 m/s, p 10 deg/s and dtheta 5 deg",
     "the 20 Hz control", "at 10 m/s, half the critical speed, over 120 s", "| wind-direction step at 1 s | open loop "
     "| eq. (6) LQR |", "the tip exceeds 13 deg")
+# the blade-tip guard's section: its study's settings and seeds, the margin's rounding (10.5 = 13 - 2.5 deg) and
+# its tests' tolerances (tests/test_craft_tip_guard.py)
+GUARD_GIVEN = (
+    "with the eq. (6) LQR and lowers", "on 32 seeds each that gusts-v5 does not use (100-131)",
+    "whose predicted tip lies in 11-13 deg", "| median | 99 % | 99.9 % | largest |",
+    "The margin is the pooled 99.9 % quantile rounded up to a quarter degree: 2.5 deg, so the guard holds the tips "
+    "at 10.5 deg.", "the estimate off the trim, to 0.05 deg;", "in 30 % more wind, to 0.15 deg;",
+    "the 1-cos gust, which")
 # worked in a Python session with the craft's API (trim, linearisation, eigenvectors); no command of the package prints
 # them (the 10 m/s mode's period, 2 pi / 0.497, is a check of craft_stability since 2026-11-30)
 ROTORCRAFT_DERIVED = (
@@ -116,8 +124,17 @@ ROTORCRAFT = Covered(
              r"(\d+ / \d+)\. On v0 the LQR survives (\d+ / \d+) of the same scenarios\. The LQR loses the ([^.]*?) "
              r"scenarios, every episode",
              tuple(f"{{gusts_v5_rotorcraft_v1[scorecard][{c}]}}" for c in ("lqr", "ppo_rotorcraft", "open_loop"))
-             + ("{gusts_v1_rotorcraft[scorecard][lqr]}", "@{gusts_v5_rotorcraft_v1[lost][lqr]}"))),
-    given=ROTORCRAFT_GIVEN, timings=("(14 s on the shared 2-core machine at a load of 5, 2026-11-29)",),
+             + ("{gusts_v1_rotorcraft[scorecard][lqr]}", "@{gusts_v5_rotorcraft_v1[lost][lqr]}")),
+            # the blade-tip guard's gusts-v5 scorecard and the scenario it loses (long group: gust_bench.json)
+            (r"the LQR with the blade-tip guard survives (\d+ / \d+) \(",
+             ("{gusts_v5_rotorcraft_v1[scorecard][lqr_guard]}",)),
+            (r"On gusts-v5 it survives (\d+ / \d+) scenarios, against the LQR's (\d+ / \d+)\. It loses the ([^,]*?) "
+             r"scenario,", ("{gusts_v5_rotorcraft_v1[scorecard][lqr_guard]}",
+                           "{gusts_v5_rotorcraft_v1[scorecard][lqr]}", "@{gusts_v5_rotorcraft_v1[lost][lqr_guard]}"))),
+    printed=(Printed("tip_guard_margin", (  # its quantile table; the margin rounds the pooled 99.9 % up to 0.25 deg
+        "| NTM IB | 8319 | -0.12 | 1.29 | 1.81 | 2.12 |", "| Dryden moderate | 6710 | -0.14 | 2.07 | 2.43 | 3.27 |",
+        "| both | 15029 | -0.13 | 1.88 | 2.31 | 3.27 |")),),
+    given=ROTORCRAFT_GIVEN + GUARD_GIVEN, timings=("(14 s on the shared 2-core machine at a load of 5, 2026-11-29)",),
     derived=ROTORCRAFT_DERIVED, history=ROTORCRAFT_HISTORY)
 
 RC = "~{rotor_chart[%s]}"

@@ -44,7 +44,7 @@ ONLY = {
 #: studies/ and the layers below), as its ``__init__.py`` says; the shared modules import no topic.
 STUDIES = {
     "benchmarks": {"gusts"}, "mill": {"benchmarks"}, "gusts": set(), "lateral": set(), "numerics": set(),
-    "pointmass": set(), "pumping": set(), "rotorcraft": set(),
+    "pointmass": set(), "pumping": set(), "rotorcraft": {"gusts"},
 }
 #: A literal 3D rigid-body offset: ``13 * k`` or ``k * 13`` (not a number like 1e-13 * s).
 THIRTEEN = re.compile(r"(?<![\w.+-])13\s*\*\s*[A-Za-z_(]|[\w)\]]\s*\*\s*13(?![\w.])")
