@@ -146,7 +146,9 @@ def cmd_simulate(args) -> int:
     span = rec.t[-1] - rec.t[0]
     print(f"simulated {span:.2f} s in {wall:.2f} s wall ({span / max(wall, 1e-9):.1f}x real time)")
     if rec.error:
-        print(f"run stopped early: {rec.error}")
+        # a periodic start runs on the operating-point search's clock: say when that is from the run's own start
+        since = f" ({span:.2f} s after the run's start at t = {rec.t[0]:.6g} s)" if rec.t[0] != 0.0 else ""
+        print(f"run stopped early: {rec.error}{since}")
     for line in _flag_lines(rec):
         print(line)
     for f in files:

@@ -159,6 +159,30 @@ def test_cli_writes_what_it_has_and_prints_the_report(tmp_path, capsys):
     assert cli_main([*args, "--allow-breakdown"]) == 0
 
 
+def test_cli_gives_a_breakdown_time_from_the_runs_own_start(tmp_path, capsys, monkeypatch):
+    """A run started on another clock (``--start periodic`` starts where the operating-point search ended) says when
+    it broke down from its own start: the same breakdown as from t = 0, shifted by the start time."""
+    import laddermill_gym.cli as cli
+
+    args = ["simulate", "tethered_wing", "--dt", "0.025", "--time", "20", "--out", str(tmp_path), "--quiet"]
+    assert cli_main([*args, "--allow-breakdown"]) == 0
+    t_fail = float(re.search(r"simulated ([\d.]+) s in", capsys.readouterr().out).group(1))
+    start = cli._start
+
+    def later(scene, a):
+        x, u, _ = start(scene, a)
+        return x, u, 100.0
+
+    monkeypatch.setattr(cli, "_start", later)
+    assert cli_main([*args, "--allow-breakdown"]) == 0
+    out = capsys.readouterr().out
+    m = re.search(r"run stopped early: integration failed at t = ([\d.]+) s .*\(([\d.]+) s after the run's start at "
+                  r"t = 100 s\)", out)
+    assert m, out
+    assert float(m.group(2)) == pytest.approx(t_fail, abs=0.01)
+    assert float(m.group(1)) == pytest.approx(100.0 + t_fail, abs=0.1)
+
+
 def test_diagnose_names_a_fast_node_and_an_overflowing_quaternion():
     """diagnose() on states the right-hand side refuses or that hold a fast node: the report names the node and
     its speed (set by hand: the oracle), and an overflowing quaternion by wing and norm, instead of raising."""
