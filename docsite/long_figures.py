@@ -83,7 +83,8 @@ LONG = {
     "gusts_v1_ladder_chain": _gusts("LadderChain-v0", "features.md, wind.md"),
     "gusts_v1_rotorcraft": _gusts("Rotorcraft-v0", "features.md, wind.md", "ppo_rotorcraft"),
     # rotorcraft.md: Rotorcraft-v1 (the blade-incidence limit ends an episode) on v0's scenarios (gusts-v5)
-    "gusts_v5_rotorcraft_v1": _bench("gusts-v5", "Rotorcraft-v1", "open_loop lqr lqr_guard ppo_rotorcraft",
+    "gusts_v5_rotorcraft_v1": _bench("gusts-v5", "Rotorcraft-v1", "open_loop lqr lqr_guard "
+                                     "lqr_guard:lqr_tip_hold_rotorcraft ppo_rotorcraft",
                                      "rotorcraft.md", "minutes (9 scenarios x 1-3 seeds)"),
     # rotorcraft.md: the blade-tip guard's prediction error in turbulence, which sets its margin
     "tip_guard_margin": Long("python -m laddermill_gym.studies.rotorcraft.tip_guard_margin --episodes 32",

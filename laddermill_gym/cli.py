@@ -31,7 +31,7 @@ def _scene_from_args(args):
                       elements_per_piece=args.elements_per_piece, n_wings=args.n_wings, dt=args.dt)
 
 
-def _start(scene, args):
+def start_state(scene, args):
     """(state, controls, time [s]) the run starts from: the scene's initial state, or the periodic motion of a
     moving-cable scene (--start periodic)."""
     if args.start == "scene":
@@ -96,7 +96,7 @@ def _simulate_setup(args):
     if abs(per * scene.settings.dt - args.sample_dt) > 1e-9 * args.sample_dt:
         print(f"warning: --sample-dt = {args.sample_dt:g} s is not a whole number of physics steps of "
               f"{scene.settings.dt:g} s: recording every {per * scene.settings.dt:g} s", file=sys.stderr)
-    x0, u0, t_start = _start(scene, args)
+    x0, u0, t_start = start_state(scene, args)
     asm = scene.assembly
     if args.direction_step:
         # the paper's disturbance: a step in wind direction [rad] at --step-time after the start

@@ -72,6 +72,27 @@ def test_tip_estimate_matches_the_simulator_off_the_trim(guard):
     np.testing.assert_allclose(np.degrees(est), np.degrees(out["tip_incidence_rad"]), atol=0.05)
 
 
+def test_tip_estimate_from_the_envs_own_observation_matches_the_envs_tip():
+    """Rotorcraft-v0 (LQR flown) in a 20 % wind-speed step: the estimate from the env's observation (its thrust
+    references, pitches, attitude) against the larger retreating-tip incidence the env's kernel reports, at the trim
+    (to 1e-5 deg) and over the 10 s after the step (to 0.25 deg: the rise is not linear in the wind, 0.15 deg at
+    20 %)."""
+    import gymnasium as gym
+
+    env_id = "laddermill_gym/Rotorcraft-v0"
+    guard0, lqr = make_controller("lqr_guard", env_id, {}), make_controller("lqr", env_id, {})
+    env = gym.make(env_id, disturbances=[{"type": "SpeedStep", "step": 0.2, "time": 0.5}], episode_time=20.0)
+    obs, _ = env.reset(seed=0)
+    errors = []
+    for _ in range(210):
+        obs, _, _, _, info = env.step(lqr.predict(obs)[0])
+        errors.append(math.degrees(np.max(guard0.estimated_tips(obs[None])) - info["max_tip_incidence_rad"]))
+    env.close()
+    assert abs(errors[0]) < 1e-5
+    assert max(abs(e) for e in errors[10:]) < 0.25
+    assert max(abs(e) for e in errors[10:]) > 0.01  # the step moved the tips: 12.3 deg against 10.1
+
+
 def test_guard_collective_puts_the_tip_at_its_target_in_one_period(guard):
     """In 30 % more wind the trim collective puts the tips at 13.5 deg, past the limit; the guard's collective from that
     one observation, applied in the same air, puts the larger tip at limit - margin (0.15 deg: the linearisation)."""
@@ -83,6 +104,34 @@ def test_guard_collective_puts_the_tip_at_its_target_in_one_period(guard):
     after, _, _ = _simulated(guard, 1.3, np.zeros(12), u[0], u[1])
     target = guard.model.limit - guard.margin
     assert abs(math.degrees(np.max(after["tip_incidence_rad"]) - target)) < 0.15
+
+
+def test_guard_collective_counts_the_differential_on_the_rotor_it_raises(guard):
+    """With the craft 0.6 m off sideways the LQR commands a differential (0.9 deg); in 30 % more wind the guard's
+    collective less (right) or plus (left) that differential puts the larger tip at the target and the other below."""
+    ds = np.zeros(12)
+    ds[STATE_NAMES.index("dy")] = 0.6
+    coll = guard.lqr.collective
+    _, obs, _ = _simulated(guard, 1.3, ds, coll, 0.0)
+    u = guard.controls(obs)[0]
+    assert abs(math.degrees(u[1])) > 0.5  # the LQR's differential
+    after, _, _ = _simulated(guard, 1.3, ds, u[0], u[1])
+    tips = np.degrees(after["tip_incidence_rad"])
+    target = math.degrees(guard.model.limit - guard.margin)
+    assert abs(tips.max() - target) < 0.15 and tips.min() < target - 1.0
+
+
+def test_hold_mode_holds_the_mean_tip_at_the_trims():
+    """mode: hold in 30 % more wind: one period of its collective brings the rotors' mean tip back to the trim's
+    incidence (to 0.25 deg: the linearisation's error over a 3.4 deg move), where the trim collective leaves it 3.4 deg
+    above."""
+    hold = make_controller("lqr_guard:lqr_tip_hold_rotorcraft", V1, {})
+    assert hold.mode == "hold" and hold.margin == 0.0
+    out, obs, _ = _simulated(hold, 1.3, np.zeros(12), hold.lqr.collective, 0.0)
+    assert np.mean(out["tip_incidence_rad"]) - np.mean(hold.model.alpha0) > math.radians(3.0)
+    u = hold.controls(obs)[0]
+    after, _, _ = _simulated(hold, 1.3, np.zeros(12), u[0], u[1])
+    assert abs(math.degrees(np.mean(after["tip_incidence_rad"]) - np.mean(hold.model.alpha0))) < 0.25
 
 
 def test_guard_is_the_lqr_in_calm_air(guard):
@@ -117,6 +166,8 @@ def _write(tmp_path: Path, text: str) -> Path:
 
 
 @pytest.mark.parametrize("text, field", [
+    ("lqr: lqr_rotorcraft\nmode: hold\nmargin_deg: 1.0\n", "margin_deg"),
+    ("lqr: lqr_rotorcraft\nmode: clamp\nmargin_deg: 1.0\n", "mode"),
     ("lqr: lqr_rotorcraft\nmargin_deg: 6.0\n", "margin_deg"),
     ("lqr: lqr_rotorcraft\nmargin_deg: -1.0\n", "margin_deg"),
     ("lqr: no_such_lqr\nmargin_deg: 1.0\n", "no_such_lqr"),
@@ -142,3 +193,15 @@ def test_the_commands_accept_lqr_guard_and_refuse_a_missing_guard_config():
     check_controllers(["lqr_guard", "lqr_guard:lqr_guard_rotorcraft"])
     with pytest.raises(UsageError, match="--controllers 'lqr_guard:no_such_guard'"):
         check_controllers(["lqr_guard:no_such_guard"])
+
+
+def test_a_linear_actor_cannot_start_at_the_guard_in_limit_mode(tmp_path):
+    """init_from: lqr_guard:<limit-mode config> is refused when the training config is read (its min() is not affine:
+    the actor would start at the LQR); the hold mode is accepted."""
+    from laddermill_gym.control.rl_config import load_rl_config
+
+    src = (Path(__file__).resolve().parent.parent / "configs/agents/ppo_rotorcraft_v1_hold.yaml").read_text()
+    assert load_rl_config(_write(tmp_path, src)).init_from == "lqr_guard:lqr_tip_hold_rotorcraft"
+    bad = src.replace("init_from: lqr_guard:lqr_tip_hold_rotorcraft", "init_from: lqr_guard:lqr_guard_rotorcraft")
+    with pytest.raises(ConfigError, match="limit mode"):
+        load_rl_config(_write(tmp_path, bad))

@@ -167,13 +167,13 @@ def test_cli_gives_a_breakdown_time_from_the_runs_own_start(tmp_path, capsys, mo
     args = ["simulate", "tethered_wing", "--dt", "0.025", "--time", "20", "--out", str(tmp_path), "--quiet"]
     assert cli_main([*args, "--allow-breakdown"]) == 0
     t_fail = float(re.search(r"simulated ([\d.]+) s in", capsys.readouterr().out).group(1))
-    start = cli._start
+    start = cli.start_state
 
     def later(scene, a):
         x, u, _ = start(scene, a)
         return x, u, 100.0
 
-    monkeypatch.setattr(cli, "_start", later)
+    monkeypatch.setattr(cli, "start_state", later)
     assert cli_main([*args, "--allow-breakdown"]) == 0
     out = capsys.readouterr().out
     m = re.search(r"run stopped early: integration failed at t = ([\d.]+) s .*\(([\d.]+) s after the run's start at "

@@ -16,8 +16,15 @@ alpha at ``limit - margin`` in the present air is pitch + (limit - margin - alph
 least of the trim collective and, for each rotor, that pitch less the rotor's share of the differential
 (right: theta0 + dtheta, left: theta0 - dtheta), clipped to the craft's collective range. It acts a control period
 late, and the wind's direction and vertical part are not observed: the margin (``configs/agents/
-lqr_guard_rotorcraft.yaml``) covers both. At the trim the guard holds the trim collective, so an undisturbed
-episode is the LQR's.
+lqr_guard_rotorcraft.yaml``) covers both. Where the trim's tips lie below ``limit - margin`` (the default craft:
+10.1 deg against 13 - 2.5 deg), the guard leaves the trim collective alone near the trim, so an undisturbed episode
+is the LQR's.
+
+``mode: hold`` (configs/agents/lqr_tip_hold_rotorcraft.yaml) holds the rotors' mean tip incidence at the trim's
+instead, in gusts and lulls alike: the collective is the rotors' mean of pitch + (alpha_trim - alpha) / A_th, in which
+the differential cancels (so with a differential one tip lies above the trim's incidence, the other below). That law
+is affine in the observation (up to the actions' clip), so a PPO actor without hidden layers can start exactly at it
+(``init_from`` in a training config, control/warm_start.py).
 """
 
 from __future__ import annotations
@@ -48,23 +55,34 @@ ROTORS = (("thrust_right", "pitch_right", 1.0), ("thrust_left", "pitch_left", -1
 
 @dataclass(frozen=True)
 class TipGuardConfig:
-    """A guard: its file, the LQR config it flies the differential with, and the margin [rad] below the limit."""
+    """A guard: its file, the LQR config it flies the differential with, its mode ("limit": lower the collective
+    only past ``limit - margin``; "hold": hold the tips at the trim's incidence) and the margin [rad] below the limit
+    (0 in hold mode)."""
 
     file: Path
     lqr: Path
     margin: float
+    mode: str = "limit"
 
 
 def load_tip_guard_config(path: str | Path = DEFAULT_TIP_GUARD) -> TipGuardConfig:
     """Read a guard YAML (``path``: a file or a shipped config's bare name) strictly: unknown keys, a missing LQR
-    config or a margin outside [0, 5] deg raise ConfigError naming the file and the field."""
+    config, a mode other than limit or hold, or a margin outside [0, 5] deg (none in hold mode) raise ConfigError
+    naming the file and the field."""
     path = find_config("agents", path, "config")
     s = read_yaml(path)
     lqr = find_config("agents", s.text("lqr"), "lqr")
-    margin = s.number("margin_deg", low=0.0, high=5.0, why="past 5 deg the guard holds the trim collective down in "
-                      "calm air")
+    mode = s.text("mode", "limit", choices=("limit", "hold"))
+    if mode == "hold":
+        if s.has("margin_deg"):
+            raise s.error("margin_deg", s.raw("margin_deg"), "has no meaning with mode: hold (the tips are held at the "
+                          "trim's incidence)")
+        margin = 0.0
+    else:
+        margin = s.number("margin_deg", low=0.0, high=5.0, why="past 5 deg the guard holds the trim collective down "
+                          "in calm air")
     s.done()
-    return TipGuardConfig(Path(path), Path(lqr), math.radians(margin))
+    return TipGuardConfig(Path(path), Path(lqr), math.radians(margin), mode)
 
 
 @dataclass(frozen=True)
@@ -97,7 +115,8 @@ class TipModel:
 
 
 def observed_state(x: np.ndarray, o: int) -> np.ndarray:
-    """The 12 STATE_NAMES values of the body at state offset o (offsets relative to its own position)."""
+    """The 12 STATE_NAMES values, shape (12,), of the rigid body at offset o of the state x (n_state,): offsets 0
+    (relative to its own position), global velocity [m/s], 3-2-1 Euler angles [rad], body rates [rad/s]."""
     e = np.array(euler_from_quaternion(x[o + B3_QUAT:o + B3_QUAT + 4]))
     s = np.zeros(12)
     s[3:6] = rotation_from_euler(*e) @ x[o + B3_VEL:o + B3_VEL + 3]
@@ -107,7 +126,8 @@ def observed_state(x: np.ndarray, o: int) -> np.ndarray:
 
 
 def with_observed_state(x: np.ndarray, o: int, s: np.ndarray, s_trim: np.ndarray) -> np.ndarray:
-    """x with its body at offset o moved to the observed state s (offsets added to the trim position)."""
+    """A copy of x (n_state,) with the body at offset o moved to the observed state s (12,), STATE_NAMES order
+    (its offsets s[0:3] - s_trim[0:3] [m] added to the body's position in x)."""
     y = np.array(x, dtype=float)
     y[o + B3_POS:o + B3_POS + 3] += s[0:3] - s_trim[0:3]
     y[o + B3_QUAT:o + B3_QUAT + 4] = quaternion_from_euler(*s[6:9])
@@ -152,9 +172,21 @@ def linearise_tips(design: CraftLQRDesign) -> TipModel:
         d_state[:, j] = central(lambda h, e=step: outputs(s0 + h * e), _H_STATE[j])
     sim0.state[:], sim0.controls[:] = x0, u0
     t0 = base[:2]
+    where = f"{sim0.config.name} at {v0:g} m/s, collective {u0[CU_COLLECTIVE]:.6g} rad"
+    for name, values in (("thrust per unit wind factor", d_wind[:2]), ("tip incidence per rad of pitch", d_pitch[2:]),
+                         ("thrust per rad of pitch", d_pitch[:2])):
+        if not np.all(np.isfinite(values) & (values > 0.0)):
+            raise ValueError(f"linearise_tips: {where}: the rotors' {name} is {values.tolist()}, not positive: the "
+                             f"guard's estimate (thrust -> wind -> tip) and its collective law need it positive")
     return TipModel(alpha0=base[2:], g_wind=d_wind[:2] / t0, g_pitch=d_pitch[:2] / t0,
                     g_state=d_state[:2] / t0[:, None], a_wind=d_wind[2:], a_pitch=d_pitch[2:], a_state=d_state[2:],
                     s_trim=s0, pitch_trim=float(u0[CU_COLLECTIVE]), limit=float(sim0.config.blade_incidence_limit))
+
+
+def guard_controller(guard: TipGuardConfig, lqr: CraftLQRController, design: CraftLQRDesign, collective_limits,
+                     obs_index: dict) -> TipGuardController:
+    """The guard of config ``guard`` around ``lqr`` (the LQR of ``design``), linearised at the design's trim."""
+    return TipGuardController(lqr, linearise_tips(design), guard.margin, collective_limits, obs_index, guard.mode)
 
 
 class TipGuardController:
@@ -167,11 +199,17 @@ class TipGuardController:
     margin : float                target below the blade-incidence limit [rad]
     collective_limits : (2,)      the craft's collective range [rad]
     obs_index : dict              observation name -> index (the env's ``CRAFT_OBS_INDEX``)
+    mode : str                    "limit" or "hold" (module docstring)
     """
 
-    def __init__(self, lqr: CraftLQRController, model: TipModel, margin: float, collective_limits, obs_index: dict):
+    def __init__(self, lqr: CraftLQRController, model: TipModel, margin: float, collective_limits, obs_index: dict,
+                 mode: str = "limit"):
+        if mode not in ("limit", "hold"):
+            raise ValueError(f"TipGuardController: mode {mode!r} must be 'limit' or 'hold'")
         self.lqr = lqr
         self.model = model
+        self.mode = mode
+        self.action_dtype = lqr.action_dtype  # float64 when warm_start.affine_map probes the (hold) law
         self.margin = float(margin)
         self.collective_limits = tuple(float(v) for v in collective_limits)
         self.obs_dim = lqr.obs_dim
@@ -186,12 +224,18 @@ class TipGuardController:
         return self.model.tips(obs[:, self.thrust_index], obs[:, self.pitch_index], obs[:, self.state_index])
 
     def controls(self, observation: np.ndarray) -> np.ndarray:
-        """Controls (collective, differential) [rad], shape (n, 2), for observations (n, obs_dim)."""
+        """Controls (collective, differential) [rad], shape (n, 2), for observations (n, obs_dim), each within the
+        range the env applies."""
         obs = np.asarray(observation, float)
         u = self.lqr.controls(obs)
         lo, hi = self.lqr.mid[CU_DIFFERENTIAL] + np.array([-1.0, 1.0]) * self.lqr.half[CU_DIFFERENTIAL]
         diff = np.clip(u[:, CU_DIFFERENTIAL], lo, hi)  # the differential the env applies
+        u[:, CU_DIFFERENTIAL] = diff
         pitch = obs[:, self.pitch_index]
+        if self.mode == "hold":  # the differential cancels in the mean: affine in the observation
+            room = (self.model.alpha0 - self.estimated_tips(obs)) / self.model.a_pitch
+            u[:, CU_COLLECTIVE] = np.clip(np.mean(pitch + room, axis=1), *self.collective_limits)
+            return u
         room = (self.model.limit - self.margin - self.estimated_tips(obs)) / self.model.a_pitch
         allowed = np.min(pitch + room - self.signs * diff[:, None], axis=1)
         u[:, CU_COLLECTIVE] = np.clip(np.minimum(self.lqr.collective, allowed), *self.collective_limits)
@@ -201,5 +245,5 @@ class TipGuardController:
                 deterministic: bool = False) -> tuple[np.ndarray, Any]:
         """SB3's signature: actions in [-1, 1] (clipped: each control saturates at its limits)."""
         obs, single = batch_observations(observation, self.obs_dim)
-        a = np.clip((self.controls(obs) - self.lqr.mid) / self.lqr.half, -1.0, 1.0).astype(self.lqr.action_dtype)
+        a = np.clip((self.controls(obs) - self.lqr.mid) / self.lqr.half, -1.0, 1.0).astype(self.action_dtype)
         return (a[0] if single else a), state

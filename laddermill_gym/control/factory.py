@@ -78,22 +78,25 @@ def _craft_controller(spec: str, kw: dict) -> Controller:
     else:
         path = Path(spec[4:]) if spec.startswith("lqr:") else DEFAULT_CRAFT_LQR
     cfg = load_craft_lqr_config(path)
+    where = f"{guard.file} (its lqr: {path})" if guard is not None else str(path)
     craft_cfg = rt.craft_config(str(kw["craft"]))
     wind = craft_cfg.wind.v0 if kw.get("wind_speed") is None else float(kw["wind_speed"])
     for name, mine, env in (("craft", cfg.craft, kw["craft"]), ("wind_speed", cfg.wind_speed, wind),
                             ("control_period", cfg.control_period, kw["control_dt"])):
         if mine != env:
-            raise ValueError(f"{path}: {name} = {mine!r} differs from the environment's {env!r}")
+            raise ValueError(f"{where}: {name} = {mine!r} differs from the environment's {env!r}")
     design = design_craft_lqr(cfg)
+    if kw.get("collective") is not None and float(kw["collective"]) != design.u_trim[0]:
+        raise ValueError(f"{where}: the design trims at the craft's collective {design.u_trim[0]!r} rad, the "
+                         f"environment at collective = {kw['collective']!r} rad (the controller would hold its own)")
     mid, half = rt.control_ranges(craft_cfg)
     idx = (ro.OBS_Y, ro.OBS_PHI, ro.OBS_VY, ro.OBS_P)
     lqr = CraftLQRController(design.gain, idx, ro.N_CRAFT_OBS, design.u_trim[0], mid, half)
     if guard is None:
         return lqr
-    from laddermill_gym.control.craft_tip_guard import TipGuardController, linearise_tips
+    from laddermill_gym.control.craft_tip_guard import guard_controller
 
-    return TipGuardController(lqr, linearise_tips(design), guard.margin, craft_cfg.collective_limits,
-                              ro.CRAFT_OBS_INDEX)
+    return guard_controller(guard, lqr, design, craft_cfg.collective_limits, ro.CRAFT_OBS_INDEX)
 
 
 def _mill_controller(spec: str, kw: dict, env_id: str) -> Controller:

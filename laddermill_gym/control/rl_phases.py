@@ -121,7 +121,8 @@ RESIDUAL_ALGORITHM = {"ResidualPolicy": "PPO", "ResidualSACPolicy": "SAC"}
 
 def read_init_from(s: Section, algo: str, policy_kwargs: dict, normalized: bool,
                    policy: str = "MlpPolicy") -> str | None:
-    """``init_from``: absent, or ``lqr`` / ``lqr:<config>`` for a PPO with a linear actor (``net_arch.pi: []``)
+    """``init_from``: absent, or ``lqr`` / ``lqr:<config>`` (the rotorcraft: also ``lqr_guard:<config>`` in hold mode,
+    control/craft_tip_guard.py) for a PPO with a linear actor (``net_arch.pi: []``)
     and normalised observations (control/warm_start.py), or for a PPO with ``policy: ResidualPolicy`` and raw
     observations (``normalize_observations: false``: the policy normalises; control/residual_policy.py), or for a
     SAC with ``policy: ResidualSACPolicy`` and raw observations (control/residual_sac.py)."""
@@ -130,8 +131,19 @@ def read_init_from(s: Section, algo: str, policy_kwargs: dict, normalized: bool,
         if policy in RESIDUAL_ALGORITHM:
             raise s.error("policy", policy, "needs init_from (the controller the residual is added to)")
         return None
-    if not (isinstance(spec, str) and (spec == "lqr" or spec.startswith("lqr:"))):
-        raise s.error("init_from", spec, "must be 'lqr' or 'lqr:<config>' (the controller the actor starts at)")
+    guard = isinstance(spec, str) and spec.startswith("lqr_guard:")
+    if not (isinstance(spec, str) and (spec == "lqr" or spec.startswith("lqr:") or guard)):
+        raise s.error("init_from", spec, "must be 'lqr', 'lqr:<config>' or (the rotorcraft) 'lqr_guard:<config>' with "
+                      "mode: hold (the controller the actor starts at)")
+    if guard and policy in RESIDUAL_ALGORITHM:
+        raise s.error("init_from", spec, f"policy: {policy} adds its residual to an LQR's gains; a guard has none "
+                      "(start a linear actor at it: policy MlpPolicy, net_arch.pi: [])")
+    if guard:
+        from laddermill_gym.control.craft_tip_guard import load_tip_guard_config
+
+        if load_tip_guard_config(spec.split(":", 1)[1]).mode != "hold":
+            raise s.error("init_from", spec, "is the blade-tip guard in limit mode, whose min() is not affine in the "
+                          "observation (a linear actor would start at the LQR); start at a guard with mode: hold")
     if policy in RESIDUAL_ALGORITHM:
         if algo != RESIDUAL_ALGORITHM[policy] or normalized:
             raise s.error("init_from", spec, f"with policy: {policy} needs algorithm: {RESIDUAL_ALGORITHM[policy]} "
