@@ -83,6 +83,13 @@ ROTORCRAFT_DERIVED = (
     "(about 0.043 rad per m)", "That happens above 12.8 m/s", "above 12.8 m/s, which")
 #: runs of craft_stability on modified configs (fin areas, tether spacings) and beyond its wind scan (9eab8c7)
 ROTORCRAFT_HISTORY = (History(
+    "2026-12-07", "laddermill train configs/agents/ppo_rotorcraft_v1_hold.yaml --seed 0 --out RUN (its "
+    "validation.csv); laddermill evaluate --env laddermill_gym/Rotorcraft-v1 --controllers "
+    "RUN/checkpoints/step_600000.zip --episodes 1",
+    "the v1 PPO run from the hold mode, not kept (seed 0, 3.0 M steps)",
+    ("3.0 M steps in 9.3 min), left its start", "from the start's 37 of 48 to 0 of 48 within 200,000 steps after the "
+     "critic's 400,000,", "The policy at 600,000 steps lowers the collective: in the registered episode it makes "
+     "1439 W and touches the ground at 9.9 s.")), History(
     "2026-12-07", "laddermill train configs/agents/ppo_rotorcraft_v1.yaml --seed 0 --out RUN; laddermill gust-bench "
     "--suite gusts-v5 --env laddermill_gym/Rotorcraft-v1 --controllers lqr RUN/model.zip; laddermill evaluate --env "
     "laddermill_gym/Rotorcraft-v1 --controllers lqr RUN/model.zip; the policy's mean collective and a 600 s episode's "
