@@ -21,7 +21,9 @@ class RotorcraftV1Env(RotorcraftEnv):
     blade-incidence limit (Roberts sec. 4: 13 deg; ``configs/rotors/roberts_rotor.yaml``) ends the episode. The rotor
     model's lift is linear in the incidence, without stall, so past the limit it overstates the thrust and the power:
     on v0 the LQR with its collective at the 15 deg limit nearly doubles its return. On v0's gust scenarios (gusts-v5)
-    every episode the LQR loses on v1 ends on this limit (docs/rotorcraft.md).
+    every episode the LQR loses on v1 ends on this limit (docs/rotorcraft.md). The LQR with the blade-tip guard
+    (``make_controller("lqr_guard", "laddermill_gym/Rotorcraft-v1")``: control/craft_tip_guard.py) lowers the
+    collective in gusts before a tip reaches the limit.
 
     ## Action Space
 
