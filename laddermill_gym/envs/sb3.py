@@ -43,7 +43,10 @@ class TaskSB3VecEnv(VecEnv):
                                    dtype=np.float32)
         act_space = gym.spaces.Box(-1.0, 1.0, shape=(self.task.n_actions,), dtype=np.float32)
         super().__init__(int(task.n_copies), obs_space, act_space)
+        self.metadata = dict(self.metadata, render_fps=1.0 / task.control_dt)  # VecVideoRecorder's rate (30 without)
         self.failure_names = dict(getattr(task, "failure_names", FAILURES))
+        self._renderer = None
+        self._was_reset = False
         self._rngs = [np.random.default_rng() for _ in range(self.num_envs)]
         self._actions = np.zeros((self.num_envs, self.task.n_actions))
         self.render_mode = render_mode
@@ -53,6 +56,7 @@ class TaskSB3VecEnv(VecEnv):
             self._rngs = [gym.utils.seeding.np_random(s)[0] for s in self._seeds]
             self._reset_seeds()
         self.task.reset(np.ones(self.num_envs, bool), self._rngs)
+        self._was_reset = True
         return self.task.obs.astype(np.float32)
 
     def step_async(self, actions: np.ndarray) -> None:
@@ -80,7 +84,12 @@ class TaskSB3VecEnv(VecEnv):
         return obs, reward.astype(np.float32), done, infos
 
     def close(self) -> None:
-        pass
+        if self._renderer is not None:
+            self._renderer.close()
+            self._renderer = None
+        kernel = getattr(self.task, "_kernel", None)
+        if hasattr(kernel, "close"):  # the copies' threads (envs/copy_threads.py)
+            kernel.close()
 
     def get_attr(self, attr_name: str, indices=None) -> list[Any]:
         """``spec`` (the registered EnvSpec with this env's arguments), ``render_mode``, or an attribute of the
@@ -115,8 +124,13 @@ class TaskSB3VecEnv(VecEnv):
         return [False for _ in self._get_indices(indices)]
 
     def get_images(self):
-        r = self.task.renderer()
-        return [r.draw(i) for i in range(self.num_envs)]
+        """One RGB frame (H, W, 3) uint8 per copy (one figure, kept until :meth:`close`); ResetNeeded before the
+        first reset (the copies hold no state yet)."""
+        if not self._was_reset:
+            raise gym.error.ResetNeeded("get_images() before reset(): call reset() first")
+        if self._renderer is None:
+            self._renderer = self.task.renderer()
+        return [self._renderer.draw(i) for i in range(self.num_envs)]
 
 
 class WingSB3VecEnv(TaskSB3VecEnv):

@@ -85,7 +85,9 @@ class TaskEnv(TaskRendering, gym.Env):
         self._kwargs = self.task.env_kwargs(task_kwargs)
         self.render_mode = render_mode
         if self.metadata["render_modes"]:
-            self.metadata = dict(self.metadata, render_fps=int(round(1.0 / self.task.control_dt)))
+            # frames per second of simulated time: one frame per control period (a float, as Gymnasium allows:
+            # a rounded int was 0 for control periods of 2.5 s and more, and 3 for 0.3 s)
+            self.metadata = dict(self.metadata, render_fps=1.0 / self.task.control_dt)
         self.observation_space = gym.spaces.Box(self.task.obs_low.astype(np.float32),
                                                 self.task.obs_high.astype(np.float32), dtype=np.float32)
         self.action_space = gym.spaces.Box(-1.0, 1.0, shape=(self.task.n_actions,), dtype=np.float32)

@@ -71,8 +71,9 @@ class TaskVectorEnv(VectorEnv):
         self.failure_names = dict(task.failure_names)
         self.num_envs = int(task.n_copies)
         self.render_mode = render_mode
-        self.metadata = dict(self.metadata, autoreset_mode=mode, render_fps=int(round(1.0 / task.control_dt)))
+        self.metadata = dict(self.metadata, autoreset_mode=mode, render_fps=1.0 / task.control_dt)  # as the single env
         self.autoreset_mode = mode
+        self._was_reset = False
         self.single_observation_space = gym.spaces.Box(task.obs_low.astype(np.float32),
                                                        task.obs_high.astype(np.float32), dtype=np.float32)
         self.single_action_space = gym.spaces.Box(-1.0, 1.0, shape=(task.n_actions,), dtype=np.float32)
@@ -133,6 +134,7 @@ class TaskVectorEnv(VectorEnv):
         self._seed(seed, mask)
         self.task.reset(mask, self._rngs)
         self._autoreset[mask] = False
+        self._was_reset = True
         return self.task.obs.astype(np.float32), self._info(None, np.zeros(self.num_envs, bool), mask)
 
     # ------------------------------------------------------------------ steps
@@ -210,6 +212,8 @@ class TaskVectorEnv(VectorEnv):
         if self.render_mode != "rgb_array":
             gym.logger.warn("render() called without a render_mode; pass render_mode='rgb_array'")
             return None
+        if not self._was_reset:  # the copies hold no state yet (as gym.make's order check for the single env)
+            raise gym.error.ResetNeeded("render() before reset(): call reset() first")
         if self._renderer is None:
             self._renderer = self.task.renderer()
         return tuple(self._renderer.draw(i) for i in range(self.num_envs))

@@ -23,7 +23,8 @@ class WingParallelEnv(ParallelEnv):
     of the agents' actions equals ``gymnasium.make(env_id, **env_kwargs)``'s step of the concatenated action, seed
     for seed, bit for bit.
 
-    Parameters: ``env_id``, ``k`` (neighbours seen on each side, >= 0) and the env's arguments (its registered
+    Parameters: ``env_id``, ``k`` (neighbours seen on each side, >= 0), ``render_mode`` (None only: PettingZoo's
+    ``env_fn(render_mode=...)`` convention; the per-wing env does not render) and the env's arguments (its registered
     defaults merged with them; the actions must stay per wing). ``step(actions)`` takes a dict with exactly the live
     agents as keys, each a finite real array (m_a,) (entries outside [-1, 1] clipped); anything else raises
     ValueError naming the agent. All agents end together when the task's episode ends (``terminations`` on a
@@ -34,7 +35,10 @@ class WingParallelEnv(ParallelEnv):
 
     metadata = {"name": "laddermill_wings_v0", "render_modes": [], "is_parallelizable": True}
 
-    def __init__(self, env_id: str, k: int = 1, **env_kwargs):
+    def __init__(self, env_id: str, k: int = 1, render_mode: str | None = None, **env_kwargs):
+        if render_mode is not None:  # PettingZoo builds envs as env_fn(render_mode=...)
+            raise ValueError(f"render_mode = {render_mode!r}: the per-wing env does not render (render_modes: []); "
+                             f"render the single-agent env gymnasium.make({env_id!r}, render_mode='rgb_array')")
         self.env_id, k = env_id, check_k(k)
         self.view = view = WingAgents(build_task(env_id, 1, dict(env_kwargs)), env_id, k)
         self.task = view.task
@@ -132,9 +136,9 @@ class WingParallelEnv(ParallelEnv):
         pass
 
 
-def parallel_env(env_id: str, k: int = 1, **env_kwargs) -> WingParallelEnv:
+def parallel_env(env_id: str, k: int = 1, render_mode: str | None = None, **env_kwargs) -> WingParallelEnv:
     """The per-wing PettingZoo ``ParallelEnv`` of ``env_id`` (LadderMill-v0, LadderChain-v0, PointMassChain-v0),
     each agent seeing ``k`` neighbours on each side; ``env_kwargs`` as ``gymnasium.make(env_id, **env_kwargs)``
     takes them. ValueError names an unknown id, a negative ``k``, an argument the env does not take or actions
-    that are not per wing."""
-    return WingParallelEnv(env_id, k, **env_kwargs)
+    that are not per wing, and a ``render_mode`` other than None (the per-wing env does not render)."""
+    return WingParallelEnv(env_id, k, render_mode, **env_kwargs)
