@@ -64,7 +64,8 @@ def env_page(env_id: str) -> str:
     missing = [s for s in REQUIRED if s not in doc]
     if missing:
         raise ValueError(f"{single}: its docstring lacks {missing}, which the env page {env_id} needs")
-    summary, _, body = doc.partition("\n")
+    summary, _, body = doc.partition("\n\n")  # the first paragraph, however many lines it takes
+    summary = " ".join(summary.split())
     registered = ENV_IDS[env_id]
     params = [p for p in inspect.signature(task_class(env_id)).parameters.values()
               if p.name not in ("n_copies", "parallel")]
@@ -105,7 +106,7 @@ def index_page() -> str:
              "| id | what it simulates |", "|---|---|"]
     for env_id in ENV_IDS:
         doc = inspect.cleandoc(_class(ENTRY_POINTS[env_id][0]).__doc__ or "")
-        lines.append(f"| [`{env_id}`]({page_name(env_id)}.md) | {doc.splitlines()[0].strip()} |")
+        lines.append(f"| [`{env_id}`]({page_name(env_id)}.md) | {' '.join(doc.partition(chr(10) * 2)[0].split())} |")
     return "\n".join(lines) + "\n"
 
 

@@ -132,7 +132,7 @@ PUMPING = Covered(
         '10 a m/s for a > 0, 16.7 a m/s for a < 0). Observation:',
         "the wing's 15 entries (CG offset from the reel-out trim position)",
         "and the winch's speed, paid out, drum tension, along-tether wind and wind speed. Reward per 0.05 s:",
-        'net electrical energy / (1 kW x 0.05 s) - 0.1 S(dy / 15 m) - 0.1 S(rates) - 1e5 on a failure. Episodes:',
+        'net electrical energy / (1 kW x 0.05 s) - 0.1 S((dy / 15 m)^2) - 0.1 S(rates) - 1e5 on a failure. Episodes:',
         '400 s (about two scripted cycles), the 0.01 rad direction step at 1 s.',
         'The drum holds 240 m (Delta L + 2 overruns):',
         'beyond it reel-out commands are replaced by 0, so no policy gains by paying out for ever. The failure '
@@ -206,6 +206,10 @@ PUMPING = Covered(
         'about 4.5 minutes per hour on the shared 2-core machine at a load of 6-7).',
     ),
     derived=(
+        # PumpingKite-v1's failure penalty: 2e5 x P_ref dt (10 kW x 0.05 s = 500 J) = 1e8 J
+        "PumpingKite-v1's penalty is 100 MJ.",
+        # the registered episode's length (the env's episode_time), which PPO's run below flew
+        "exceed what controlled crosswind flight makes in 400 s (PPO's run below).",
         # 1 - t_cycle / schmehl_matched_cycle_s over the rows of --long pumping_power_curve_printed's JSON (8-20 m/s):
         # 1 - 331.45 / 344.96 = 3.9 % at 8 m/s ... 1 - 178.55 / 184.76 = 3.4 % at 20, at most 4.1 % (10 m/s)
         'the simulated cycle 3-4 % shorter.',
@@ -299,9 +303,9 @@ PUMPING = Covered(
         History('2026-11-24', "python -m laddermill_gym.studies.pumping.pumping_cycle with the cycle's first versions",
                 "first versions of the scripted cycle and of PumpingKite-v0's reward (492976c)", (
             'reeling in at once pulls the still-powered wing at 11 kN (seen in a first version',
-            'the wing left without lateral control makes 1.8 MJ in its 138 s of crosswind divergence, and with a '
-            'penalty of 100 a barely trained PPO policy preferred that dive to the stable cycle (seen in a first '
-            'run',
+            'the wing left without lateral control makes in its 138 s of crosswind divergence before the crash, 1.8 '
+            'MJ; with a penalty of 100 a barely trained PPO policy preferred that dive to the stable cycle (seen in a '
+            'first run',
         )),
         History('2026-11-24', 'laddermill train --config configs/agents/ppo_pumping_kite.yaml --out '
                 'runs/ppo_pumping_kite (15 '

@@ -11,6 +11,7 @@ import pytest
 from laddermill_gym.atmosphere.disturbance_spec import disturbance_from_dict
 from laddermill_gym.atmosphere.disturbances import (
     DirectionStep,
+    Disturbance,
     OneMinusCosineGust,
     RandomPerturbation,
     Schedule,
@@ -88,5 +89,14 @@ def test_bad_specs_name_the_field(spec, text):
 
 
 def test_negative_speed_is_refused():
+    """A 1-cosine lull past -1 is refused when it is made; a composition that still goes negative when sampled (a
+    user's own Disturbance) is refused by the sampler."""
+    with pytest.raises(ValueError, match=r"amplitude = -3\.0: every value must be >= -1"):
+        OneMinusCosineGust(amplitude=-3.0)
+
+    class Reversal(Disturbance):
+        def sample(self, t, rng):
+            return np.full_like(t, -0.5), np.zeros_like(t)
+
     with pytest.raises(ValueError, match="negative wind speed"):
-        sample_modulation([OneMinusCosineGust(amplitude=-3.0)], 20.0, 0.1, RNG(0))
+        sample_modulation([Reversal()], 20.0, 0.1, RNG(0))

@@ -110,6 +110,19 @@ def test_every_env_id_and_command_gets_its_page():
         assert f"usage: laddermill {name}" in commands[f"commands/{name}.md"], name
 
 
+def test_env_pages_give_each_summary_whole():
+    """A summary that runs over several docstring lines was cut at the first one on the env's page and in the index
+    ("... (one Meijaard wing on a 300 m tether on"), the rest left below the table (review of 2026-12-07)."""
+    sys.path.insert(0, str(ROOT))
+    from docsite.env_pages import env_pages
+
+    pages = dict(env_pages())
+    whole = "while the winch reels out under high lift and in at low lift."
+    assert whole in pages["envs/PumpingKite-v0.md"].split("| | |")[0]
+    row = next(line for line in pages["envs/index.md"].splitlines() if "PumpingKite-v0" in line)
+    assert whole in row
+
+
 def test_citation_file_names_the_package_and_the_four_papers():
     cff = yaml.safe_load((ROOT / "CITATION.cff").read_text())
     for key in ("cff-version", "message", "title", "authors"):

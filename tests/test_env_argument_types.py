@@ -84,3 +84,44 @@ def test_mill_station_settings_without_their_action_are_refused(kwargs, says):
 def test_pumping_settings_that_cannot_act_are_refused(env_id, kwargs, says):
     with pytest.raises(ValueError, match=says):
         gym.make(env_id, **kwargs)
+
+
+@pytest.mark.parametrize("disturbance, says", [
+    # a drawn amplitude below -1 was accepted and crashed 8 of 20 resets later ("negative wind speed factor"), a
+    # fixed one at the first reset; an inverted range or a non-bool sign only when drawn (review of 2026-12-07)
+    ({"type": "OneMinusCosineGust", "amplitude": [-2.5, 0.3], "time": 5.0},
+     r"OneMinusCosineGust.amplitude = \(-2\.5, 0\.3\): every value must be >= -1 \(the speed factor at the peak"),
+    ({"type": "OneMinusCosineGust", "amplitude": -3.0}, r"OneMinusCosineGust.amplitude = -3\.0: every value"),
+    ({"type": "OneMinusCosineGust", "duration": [0.0, 2.0]}, r"OneMinusCosineGust.duration = \(0\.0, 2\.0\): every "
+                                                             r"value must be > 0"),
+    ({"type": "DirectionStep", "step": [0.3, 0.1]}, r"DirectionStep.step = \(0\.3, 0\.1\): a range must be"),
+    ({"type": "DirectionStep", "random_sign": 1}, r"DirectionStep.random_sign = 1: must be true or false"),
+])
+def test_drawn_disturbance_ranges_are_checked_when_the_env_is_made(disturbance, says):
+    with pytest.raises(ValueError, match=says):
+        gym.make("laddermill_gym/PumpingKite-v1", disturbances=[disturbance])
+
+
+def test_a_range_reaching_minus_one_at_most_resets_on_every_seed():
+    env = gym.make("laddermill_gym/PumpingKite-v1", disturbances=[
+        {"type": "OneMinusCosineGust", "amplitude": [np.float32(-1.0), 0.3], "time": 5.0}])
+    for seed in range(20):
+        env.reset(seed=seed)
+
+
+def test_another_envs_reward_config_is_refused_not_half_ignored():
+    """PumpingKite-v1's reward (sideslip and tension terms) given to v0 was accepted and its extra terms dropped; as
+    a dict it was refused. numpy scalars in reward fields are numbers (np.float32 was refused, np.float64 passed)."""
+    from laddermill_gym.envs.pumping.crosswind_task import CrosswindRewardConfig
+
+    with pytest.raises(ValueError, match=r"a CrosswindRewardConfig, not this env's PumpingRewardConfig"):
+        gym.make("laddermill_gym/PumpingKite-v0", reward=CrosswindRewardConfig(sideslip_weight=5.0))
+    env = gym.make("laddermill_gym/PumpingKite-v0", reward={"reference_power": np.float32(1000.0)})
+    assert env.unwrapped.task.reward_config.reference_power == 1000.0
+
+
+@pytest.mark.parametrize("env_id", [TW, "laddermill_gym/PumpingKite-v0", PMC])
+def test_an_unknown_scene_option_is_named(env_id):
+    """It was a TypeError from inside load_scene ("unexpected keyword argument 'bogus'")."""
+    with pytest.raises(ValueError, match=r"scene_options\['bogus'\] = 1: not an option of load_scene \(known: "):
+        gym.make(env_id, scene_options={"bogus": 1})

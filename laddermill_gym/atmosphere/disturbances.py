@@ -19,6 +19,7 @@ can be written as plain data and read back (``atmosphere/disturbance_spec.py``, 
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -39,6 +40,24 @@ def _draw(value, rng: np.random.Generator, name: str) -> float:
     if not math.isfinite(v):
         raise ValueError(f"{name} = {value!r}: must be finite")
     return v
+
+
+def _check_range(value, name: str, low: float | None = None, strict: bool = False, why: str = "") -> None:
+    """ValueError naming ``name`` unless ``value`` is a finite number or a finite (low, high) pair with low <= high
+    whose every value is >= ``low`` (> with ``strict``): checked when the disturbance is made, not at the reset that
+    first draws a value past it."""
+    if isinstance(value, (tuple, list)):
+        if len(value) != 2 or not all(isinstance(v, numbers.Real) and not isinstance(v, bool) and math.isfinite(v)
+                                      for v in value) or value[0] > value[1]:
+            raise ValueError(f"{name} = {value!r}: a range must be a finite pair (low, high) with low <= high")
+        least = value[0]
+    elif isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value):
+        raise ValueError(f"{name} = {value!r}: must be a finite number or a (low, high) pair")
+    else:
+        least = value
+    if low is not None and (least < low or (strict and least == low)):
+        raise ValueError(f"{name} = {value!r}: every value must be {'>' if strict else '>='} {low:g}"
+                         + (f" ({why})" if why else ""))
 
 
 class Disturbance:
@@ -71,6 +90,12 @@ class DirectionStep(Disturbance):
     time: float | tuple[float, float] = 1.0
     random_sign: bool = False
 
+    def __post_init__(self):
+        _check_range(self.step, "DirectionStep.step")
+        _check_range(self.time, "DirectionStep.time")
+        if not isinstance(self.random_sign, bool):
+            raise ValueError(f"DirectionStep.random_sign = {self.random_sign!r}: must be true or false")
+
     def sample(self, t, rng):
         step = _draw(self.step, rng, "DirectionStep.step")
         t0 = _draw(self.time, rng, "DirectionStep.time")
@@ -92,6 +117,13 @@ class OneMinusCosineGust(Disturbance):
     duration: float | tuple[float, float] = 10.0
     time: float | tuple[float, float] = 5.0
     direction_amplitude: float | tuple[float, float] = 0.0
+
+    def __post_init__(self):
+        _check_range(self.amplitude, "OneMinusCosineGust.amplitude", low=-1.0,
+                     why="the speed factor at the peak, 1 + amplitude, would be negative")
+        _check_range(self.duration, "OneMinusCosineGust.duration", low=0.0, strict=True, why="[s]")
+        _check_range(self.time, "OneMinusCosineGust.time")
+        _check_range(self.direction_amplitude, "OneMinusCosineGust.direction_amplitude")
 
     def sample(self, t, rng):
         a = _draw(self.amplitude, rng, "OneMinusCosineGust.amplitude")

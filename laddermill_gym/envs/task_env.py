@@ -41,6 +41,25 @@ def check_task_arguments(task_class: type, kwargs: dict, vector: bool) -> None:
     if unknown:
         raise ValueError(f"{', '.join(f'{k} = {kwargs[k]!r}' for k in unknown)}: not arguments of "
                          f"{task_class.env_name} (known: {', '.join(allowed)})")
+    check_scene_options(kwargs.get("scene_options"))
+
+
+def check_scene_options(options) -> None:
+    """ValueError naming the entry unless ``scene_options`` is None or a dict of ``load_scene``'s keyword options
+    (an unknown key was a TypeError from deep inside the scene loader)."""
+    if options is None:
+        return
+    if not isinstance(options, dict):
+        raise ValueError(f"scene_options = {options!r}: must be a dict of load_scene options")
+    import inspect
+
+    from laddermill_gym.ladder.scene import load_scene
+
+    known = [p.name for p in inspect.signature(load_scene).parameters.values() if p.kind is p.KEYWORD_ONLY]
+    unknown = sorted(set(options) - set(known))
+    if unknown:
+        raise ValueError(f"{', '.join(f'scene_options[{k!r}] = {options[k]!r}' for k in unknown)}: not an option of "
+                         f"load_scene (known: {', '.join(known)})")
 
 
 def check_render_mode(render_mode, modes, env_name: str) -> None:

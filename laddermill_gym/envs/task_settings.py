@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import numbers
 from dataclasses import dataclass
 
 __all__ = ["RewardConfig", "TerminationConfig", "ShapedRewardConfig", "FailureLimits", "check_nonnegative_fields",
@@ -20,7 +21,7 @@ def check_nonnegative_fields(obj, section: str, optional: tuple[str, ...] = ()) 
         v = getattr(obj, f.name)
         if v is None and f.name in optional:
             continue
-        if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
+        if isinstance(v, bool) or not (isinstance(v, numbers.Real) and math.isfinite(v) and v >= 0):
             raise ValueError(f"{section}.{f.name} = {v!r}: must be a finite number >= 0")
 
 
@@ -65,10 +66,10 @@ class FailureLimits:
 
     def __post_init__(self):
         if self.min_altitude is not None and (isinstance(self.min_altitude, bool) or not (
-                isinstance(self.min_altitude, (int, float)) and math.isfinite(self.min_altitude))):
+                isinstance(self.min_altitude, numbers.Real) and math.isfinite(self.min_altitude))):
             raise ValueError(f"termination.min_altitude = {self.min_altitude!r}: must be a finite number [m]")
         v = self.breaking_factor
-        if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+        if isinstance(v, bool) or not (isinstance(v, numbers.Real) and math.isfinite(v) and v > 0):
             raise ValueError(f"termination.breaking_factor = {v!r}: must be a finite number > 0")
 
     def check_range(self, name: str) -> None:
@@ -145,7 +146,7 @@ class TerminationConfig(FailureLimits):
         super().__post_init__()  # min_altitude and breaking_factor, named
         self.check_range("alpha_range_deg")
         v = self.max_abs_beta_deg
-        if isinstance(v, bool) or not (isinstance(v, (int, float)) and v > 0):
+        if isinstance(v, bool) or not (isinstance(v, numbers.Real) and v > 0):
             raise ValueError(f"termination.max_abs_beta_deg = {v!r}: must be a number > 0")
 
 
@@ -154,8 +155,11 @@ def config_from(value, cls, name: str):
     its fields. Raises ValueError naming ``name`` and the unknown keys or the value."""
     if value is None:
         return cls()
-    if isinstance(value, cls):
+    if type(value) is cls:
         return value
+    if isinstance(value, cls):  # a family's extension (another env's reward): its extra fields would be ignored
+        raise ValueError(f"{name} = {value!r}: a {type(value).__name__}, not this env's {cls.__name__} (its extra "
+                         f"fields would be ignored); pass a {cls.__name__} or a dict of its fields")
     if isinstance(value, dict):
         known = {f.name for f in dataclasses.fields(cls)}
         bad = sorted(set(value) - known)

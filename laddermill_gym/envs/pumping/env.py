@@ -59,8 +59,9 @@ WINCH_TABLE
     r = E_el / (P_ref dt) - w_y S(dy) - w_w S(rates) - failure_penalty [terminated], S(x) = 1 - exp(-x): E_el the
     net electrical energy of the control period (eta times the drum's mechanical energy while generating, over eta
     while reeling in; eta = 0.92, Lansdorp eq. 13), P_ref = 1 kW, w_y = w_w = 0.1, failure_penalty 1e5 (5 MJ, more
-    than any energy flown before a crash) (:class:`~laddermill_gym.envs.pumping.settings.PumpingRewardConfig`). The
-    power terms of an episode sum to its net electrical energy over P_ref dt. Every term is in ``info``.
+    than the uncontrolled wing's dive makes before its crash, less than controlled crosswind flight makes in 400 s)
+    (:class:`~laddermill_gym.envs.pumping.settings.PumpingRewardConfig`). The power terms of an episode sum to its
+    net electrical energy over P_ref dt. Every term is in ``info``.
 
     ## Starting State
 

@@ -33,9 +33,10 @@ class PumpingRewardConfig(ShapedRewardConfig):
     * S(rates): x = (p^2 + r^2) / rate_scale^2, body roll and yaw rates [rad/s].
 
     ``failure_penalty`` [-] is subtracted once, in the step that ends an episode by a physical failure. Its default,
-    1e5, is 5 MJ at P_ref dt = 50 J: a lost wing costs more than any energy flown before a crash (the wing left
-    without lateral control diverges into crosswind flight and makes 1.8 MJ in the 138 s before it hits the ground,
-    docs/pumping.md), about ten times the LQR-assisted cycle's 400 s.
+    1e5, is 5 MJ at P_ref dt = 50 J: more than the wing left without lateral control makes before it hits the ground
+    (it diverges into crosswind flight and makes 1.8 MJ in 138 s, docs/pumping.md), about ten times the LQR-assisted
+    cycle's 400 s; but less than controlled crosswind flight makes in 400 s (PPO's 11.7 MJ), so a crosswind flight
+    that crashes late still ends with a positive return (PumpingKite-v1's penalty is 100 MJ).
     """
 
     lateral_weight: float = 0.1  # the other shared fields and their defaults: ShapedRewardConfig's
