@@ -13,7 +13,7 @@ from scipy.optimize import brentq, linprog, minimize, minimize_scalar
 
 from laddermill_gym.atmosphere.site_wind import SiteWind
 from laddermill_gym.quasisteady import lansdorp
-from laddermill_gym.quasisteady.site_optimise import TABLE1, TABLE2, operate, optimise
+from laddermill_gym.quasisteady.site_optimise import TABLE1, TABLE2, covered_heights, operate, optimise
 from laddermill_gym.quasisteady.site_problem import Design, best_fill, solve_states
 
 RNG = np.random.default_rng(7)
@@ -217,3 +217,28 @@ def test_optimum_is_feasible_whatever_the_rounding_of_the_starts(monkeypatch, ca
         assert r.design.length >= case.params.reel_length * case.params.min_length_ratio * (1 - 1e-6)
         ratios.append(r.solution.ratio)
     assert max(ratios) / min(ratios) - 1.0 < 1e-4, ratios
+
+
+def test_the_design_altitude_stays_where_every_state_has_data():
+    """Every second state without data above 200 m, the same wind where it has data: a state without data counted as
+    calm (no power) and the design moved to 158 m; now the altitude is bounded by 200 m, and the design is the one
+    the complete data give with the altitude bound at 200 m (the same problem stated through the case's bounds)."""
+    hs = np.array([0.0, 100.0, 200.0, 300.0, 600.0])
+    v = np.array([[5.0, 9.0, 10.0, 11.0, 12.5]] * 20) * np.linspace(0.9, 1.3, 20)[:, None]
+    full = SiteWind(hs, v, np.full(20, 1 / 20), tuple(f"2020-01-{i + 1:02d}" for i in range(20)))
+    cut = dataclasses.replace(full, speed=np.where((np.arange(20)[:, None] % 2 == 1) & (hs > 200.0), np.nan, v))
+    assert covered_heights(cut) == (0.0, 200.0) and covered_heights(full) == (0.0, 600.0)
+    got = optimise(TABLE2, cut)
+    want = optimise(dataclasses.replace(TABLE2, h_bounds=(TABLE2.h_bounds[0], 200.0)), full)
+    assert got.design.h <= 200.0 + 1e-9
+    for a, b in ((got.design.h, want.design.h), (got.design.S, want.design.S), (got.design.d, want.design.d)):
+        assert a == pytest.approx(b, rel=1e-6)
+
+
+def test_covered_heights_stop_at_the_first_gap_and_name_data_without_any():
+    hs = np.array([10.0, 50.0, 100.0, 200.0])
+    v = np.array([[5.0, 6.0, np.nan, 8.0], [5.0, 6.0, 7.0, 8.0]])
+    assert covered_heights(SiteWind(hs, v, np.array([0.5, 0.5]), ("a", "b"))) == (10.0, 50.0)
+    with pytest.raises(ValueError, match="no height at which every wind state has data"):
+        covered_heights(SiteWind(hs, np.array([[np.nan, 6.0, 7.0, 8.0], [5.0, np.nan, np.nan, np.nan]]),
+                                 np.array([0.5, 0.5]), ("a", "b"), source="gappy.csv"))

@@ -84,7 +84,8 @@ def test_figs_19_20_mean_is_the_time_mean(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("args, needle", [
-    (["--wind", "LOW", "--no-turbine"], "heights 10-40 m .* lie outside table1's altitude bounds 50-1000 m"),
+    (["--wind", "LOW", "--no-turbine"], "every state has data at 10-40 m only .* outside table1's altitude bounds "
+                                        "50-1000 m"),
     (["--wind", "cabauw", "--case", "table2", "--hub-height", "1000"], "--hub-height = 1000 m: outside the heights"),
     (["--out", "FILE"], "--out '.*afile': cannot make the folder"),
 ])
@@ -114,3 +115,44 @@ def test_models_line_names_the_ratios_and_the_first_flown_wind():
     text = model_ratio_text(curves, speeds, at=(3.0, 4.0, 6.0, 25.0))
     assert text == ("Schmehl's best power / Lansdorp's at 3, 4, 6, 25 m/s: n/a 0.00 0.50 0.50; Schmehl's loop flown "
                     "from 5.5 m/s (3-25 m/s)")
+
+
+def _profiles(tmp_path, days=28, speeds=(5.0, 14.0)) -> Path:
+    rng = np.random.default_rng(3)
+    lines = ["time,height [m],speed [m/s]"]
+    for day in range(1, days + 1):
+        v = rng.uniform(*speeds)
+        lines += [f"2021-02-{day:02d}T12:00,{h:g},{v * (h / 100) ** 0.2:.3f}" for h in (10.0, 100.0, 300.0, 600.0)]
+    wfile = tmp_path / "wind.csv"
+    wfile.write_text("\n".join(lines) + "\n")
+    return wfile
+
+
+def test_a_power_target_no_design_meets_is_marked_and_exits_1(tmp_path, capsys):
+    """100 MW from a few days of 5-14 m/s wind: the optimisation ends on its bounds. The table says the target is
+    missed (it showed the last design tried as a design), stderr says so and the exit status is 1 (it was 0)."""
+    out = tmp_path / "site"
+    code = main(["--wind", str(_profiles(tmp_path)), "--out", str(out), "--no-turbine", "--quiet", "--case", "table2",
+                 "--power-mw", "100"])
+    assert code == 1
+    assert "| Power target met (eq. 19) | - | | **NO** (infeasible) |" in (out / "tables.md").read_text()
+    assert "no design within the bounds delivers the 100 MW mean power for table2" in capsys.readouterr().err
+    assert not json.loads((out / "results.json").read_text())[f"table2/{tmp_path / 'wind.csv'}"]["feasible"]
+
+
+def test_the_evaluation_data_are_read_in_the_format_given(tmp_path, monkeypatch):
+    """--format reached the first read only: the design's evaluation (Figs. 19-20) and the hub-height check read the
+    file again with format detection, which failed on a Wyoming file whose title comes late."""
+    import laddermill_gym.quasisteady.cli as cli
+
+    formats = []
+    real = cli.load_wind
+
+    def spy(spec, fmt="auto"):
+        formats.append(fmt)
+        return real(spec, "auto")
+
+    monkeypatch.setattr(cli, "load_wind", spy)
+    assert main(["--wind", str(_profiles(tmp_path)), "--out", str(tmp_path / "o"), "--quiet", "--case", "table2",
+                 "--format", "csv", "--no-turbine"]) == 0
+    assert formats and set(formats) == {"csv"}

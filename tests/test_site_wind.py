@@ -196,6 +196,20 @@ def test_two_heights_bad_value_named(tmp_path):
         read_two_heights(p)
 
 
+def test_two_heights_blank_lines_are_skipped_and_lines_keep_their_numbers(tmp_path):
+    """A trailing blank line stopped the reader ("line 7, field 'wind_speed' at 10 m = '(missing)'"); a blank line
+    inside is skipped too, and a bad value after it is named by its line in the file."""
+    p = tmp_path / "weather.csv"
+    p.write_text("variable_name,wind_speed,wind_speed\nheight,10,80\n2010-01-01 00:00:00,3,5\n\n"
+                 "2010-01-01 01:00:00,4,6\n\n")
+    w = read_two_heights(p, top=100.0)
+    assert w.n == 2 and w.at(80.0).tolist() == [5.0, 6.0]
+    p.write_text("variable_name,wind_speed,wind_speed\nheight,10,80\n\n2010-01-01 00:00:00,3,5\n"
+                 "2010-01-01 01:00:00,x,5\n")
+    with pytest.raises(SiteWindError, match=r"line 5, field 'wind_speed' at 10 m = 'x'"):
+        read_two_heights(p)
+
+
 @pytest.mark.parametrize("heights", ["10,10", "0,80", "-10,80"])
 def test_two_heights_that_cannot_give_a_power_law_named(tmp_path, heights):
     p = tmp_path / "weather.csv"

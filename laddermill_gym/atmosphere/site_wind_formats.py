@@ -174,6 +174,10 @@ def read_two_heights(path: Path | str, top: float = 1000.0, step: float = 10.0,
     path = Path(path)
     with open_text(path) as fh:
         rows = list(csv.reader(fh))
+    # blank lines (a trailing newline left by an editor) carry no data: dropped, as the profiles CSV reader does;
+    # ``line`` keeps each remaining row's line number in the file for the messages
+    line = [i + 1 for i, row in enumerate(rows) if any(cell.strip() for cell in row)]
+    rows = [rows[i - 1] for i in line]
     if len(rows) < 3 or rows[0][0] != "variable_name" or rows[1][0] != "height":
         raise SiteWindError(f"{path}: line 1: expected the header rows 'variable_name,...' and 'height,...'")
     cols = [k for k, name in enumerate(rows[0]) if name == "wind_speed"]
@@ -194,10 +198,10 @@ def read_two_heights(path: Path | str, top: float = 1000.0, step: float = 10.0,
                 v[k, j] = float(row[c])
             except (ValueError, IndexError):
                 text = row[c] if c < len(row) else "(missing)"
-                raise SiteWindError(f"{path}: line {k + 3}, field 'wind_speed' at {(h1, h2)[j]:g} m = {text!r}: "
+                raise SiteWindError(f"{path}: line {line[k + 2]}, field 'wind_speed' at {(h1, h2)[j]:g} m = {text!r}: "
                                     f"not a number") from None
             if not (np.isfinite(v[k, j]) and v[k, j] >= 0):
-                raise SiteWindError(f"{path}: line {k + 3}, field 'wind_speed' at {(h1, h2)[j]:g} m = "
+                raise SiteWindError(f"{path}: line {line[k + 2]}, field 'wind_speed' at {(h1, h2)[j]:g} m = "
                                     f"{row[c]!r}: must be finite and >= 0")
     with np.errstate(divide="ignore", invalid="ignore"):
         raw = np.log(v[:, 1] / v[:, 0]) / np.log(h2 / h1)

@@ -17,7 +17,15 @@ from tqdm import tqdm
 from laddermill_gym.atmosphere.site_wind import SiteWindError
 from laddermill_gym.quasisteady import site_outputs as so
 from laddermill_gym.quasisteady.site_data import SHIPPED, load_wind
-from laddermill_gym.quasisteady.site_optimise import TABLE1, TABLE2, altitude_angle_grid, operate, optimise, sweep
+from laddermill_gym.quasisteady.site_optimise import (
+    TABLE1,
+    TABLE2,
+    altitude_angle_grid,
+    covered_heights,
+    operate,
+    optimise,
+    sweep,
+)
 
 SWEEPS = {  # Figs. 15-18: parameter, values, unit
     "kite_glide": (np.array([5.0, 7.0, 10.0, 13.0, 16.0]), "-"),
@@ -49,12 +57,12 @@ def _note(wind, r) -> str:
     return "; ".join(wind.notes)
 
 
-def _run_case(case, spec, wind, out, quiet):
+def _run_case(case, spec, wind, out, quiet, fmt="auto"):
     r = optimise(case, wind)
     stem = f"{case.name}_{_tag(spec)}"
     files = [so.plot_design(r, wind.weight, wind.labels, out / f"{stem}_figs10-13.png",
                             f"{case.name} on {spec}: h {r.design.h:.0f} m, S {r.design.S:.0f} m^2")]
-    ev = load_wind(_eval_spec(spec))
+    ev = _evaluation_wind(spec, fmt)
     w_ev = ev.at(r.design.h)
     ok = np.isfinite(w_ev)
     runs = {f"f <= {lab}": operate(case, r.design, w_ev[ok], fm)[:2] for lab, fm in (("1/3", 1 / 3), ("1/2", 0.5))}
@@ -83,6 +91,15 @@ def _turbine(case, r, spec, w_ev, p_ev, ev, hub, turbine, out):
     return [lm, ty], path, float(np.max(P))
 
 
+def _evaluation_wind(spec: str, fmt: str):
+    """The states a design is run through (:func:`_eval_spec`), read in the ``--format`` the user gave; exit 2
+    naming the data when they cannot be read."""
+    try:
+        return load_wind(_eval_spec(spec), fmt)
+    except (SiteWindError, ValueError) as err:
+        _fail(f"--wind {spec!r}: {err}")
+
+
 def _fail(message: str):
     print(f"laddermill site: error: {message}", file=sys.stderr)
     raise SystemExit(2)
@@ -91,13 +108,22 @@ def _fail(message: str):
 def _check_heights(spec: str, wind, cases, args) -> None:
     """Exit 2 naming the option unless every case's altitude bounds meet the data's heights and the turbine's hub
     lies within the evaluation data's (checked before any optimisation runs)."""
+    try:
+        bottom, top = covered_heights(wind)
+    except ValueError as err:
+        _fail(f"--wind {spec!r}: {err}")
     for cname in args.case:
         lo, hi = cases[cname].h_bounds
-        if max(lo, wind.heights[0]) > min(hi, wind.heights[-1]):
-            _fail(f"--wind {spec!r}: heights {wind.heights[0]:g}-{wind.heights[-1]:g} m ({wind.source}) lie outside "
-                  f"{cname}'s altitude bounds {lo:g}-{hi:g} m")
+        if max(lo, bottom) > min(hi, top):
+            _fail(f"--wind {spec!r}: every state has data at {bottom:g}-{top:g} m only (data heights "
+                  f"{wind.heights[0]:g}-{wind.heights[-1]:g} m, {wind.source}), outside {cname}'s altitude bounds "
+                  f"{lo:g}-{hi:g} m")
+    if (bottom, top) != (wind.heights[0], wind.heights[-1]):
+        print(f"note: --wind {spec!r}: not every state has data at {wind.heights[0]:g}-{wind.heights[-1]:g} m; the "
+              f"design altitude is kept within {bottom:g}-{top:g} m, where all have (elsewhere a state without data "
+              "would count as calm)", file=sys.stderr)
     if not args.no_turbine:
-        ev = load_wind(_eval_spec(spec))
+        ev = _evaluation_wind(spec, args.format)
         if not ev.heights[0] <= args.hub_height <= ev.heights[-1]:
             _fail(f"--hub-height = {args.hub_height:g} m: outside the heights {ev.heights[0]:g}-{ev.heights[-1]:g} m "
                   f"of {_eval_spec(spec)} ({ev.source}), where the turbine is evaluated")
@@ -121,7 +147,7 @@ def run(args) -> int:
         print(f"{spec}: {wind.n} wind states, {wind.heights[0]:g}-{wind.heights[-1]:g} m ({wind.source})")
         for cname in args.case:
             case = base[cname]
-            r, ev, w_ev, p_ev, f = _run_case(case, spec, wind, out, args.quiet)
+            r, ev, w_ev, p_ev, f = _run_case(case, spec, wind, out, args.quiet, args.format)
             files += f
             tables[cname][spec] = (r, wind.weight, _note(wind, r))
             record[f"{cname}/{spec}"] = {"design": dataclasses.asdict(r.design), "feasible": r.feasible,
@@ -158,6 +184,12 @@ def run(args) -> int:
     (out / "results.json").write_text(json.dumps(record, indent=1, default=float))
     print("\n".join(text))
     print("wrote", out / "tables.md", out / "results.json", *files, sep="\n  ")
+    missed = [f"{cname} on {spec}" for cname, res in tables.items() for spec, (r, _, _) in res.items()
+              if not r.feasible]
+    if missed:  # the tables show the last design tried, marked: not a design that meets the target
+        print(f"laddermill site: no design within the bounds delivers the {args.power_mw:g} MW mean power for "
+              f"{', '.join(missed)} (tables marked infeasible; exit status 1)", file=sys.stderr)
+        return 1
     return 0
 
 
@@ -165,7 +197,7 @@ def _sweeps(case, spec, wind, out, n_states, quiet):
     sub = wind.subset(slice(None, None, max(1, wind.n // n_states)))
     sub = dataclasses.replace(sub, weight=sub.weight / sub.weight.sum() * wind.weight.sum())
     hs, thetas = np.linspace(200.0, 600.0, 9), np.radians(np.linspace(45.0, 80.0, 8))
-    hs = hs[hs <= wind.heights[-1]]
+    hs = hs[hs <= covered_heights(wind)[1]]
     total = hs.size * thetas.size + sum(v.size for v, _ in SWEEPS.values())
     with tqdm(total=total, desc=f"sensitivity on {sub.n} states", disable=quiet) as bar:
         grid = altitude_angle_grid(case, sub, hs, thetas, bar)

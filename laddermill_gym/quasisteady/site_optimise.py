@@ -49,12 +49,27 @@ def _usable(wind: SiteWind, h: float):
     return np.where(ok, w, 0.0), np.where(ok, wind.weight, 0.0)
 
 
+def covered_heights(wind: SiteWind) -> tuple[float, float]:
+    """(lowest, highest) grid height [m] of the span in which every state with weight has data, from the lowest
+    such height up; ValueError naming the data when no height has data in every state. Outside it a state without
+    data would count as calm (no power) and bias the design against the heights the data miss."""
+    full = np.all(np.isfinite(wind.speed[wind.weight > 0]), axis=0)
+    if not full.any():
+        raise ValueError(f"{wind.source}: no height at which every wind state has data")
+    first = int(np.argmax(full))
+    gap = np.flatnonzero(~full[first:])
+    last = first + (int(gap[0]) - 1 if gap.size else full.size - 1 - first)
+    return float(wind.heights[first]), float(wind.heights[last])
+
+
 def _bounds(case: SiteCase, wind: SiteWind):
-    lo_h = max(case.h_bounds[0], float(wind.heights[0]))
-    hi_h = min(case.h_bounds[1], float(wind.heights[-1]))
+    bottom, top = covered_heights(wind)
+    lo_h = max(case.h_bounds[0], bottom)
+    hi_h = min(case.h_bounds[1], top)
     if lo_h > hi_h:
-        raise ValueError(f"{wind.source}: heights {wind.heights[0]:g}-{wind.heights[-1]:g} m outside the altitude "
-                         f"bounds {case.h_bounds[0]:g}-{case.h_bounds[1]:g} m")
+        raise ValueError(f"{wind.source}: every state has data at {bottom:g}-{top:g} m only (data heights "
+                         f"{wind.heights[0]:g}-{wind.heights[-1]:g} m), outside the altitude bounds "
+                         f"{case.h_bounds[0]:g}-{case.h_bounds[1]:g} m")
     return [(lo_h, hi_h), case.theta_bounds, case.d_bounds, case.S_bounds]
 
 

@@ -42,6 +42,7 @@ def table_markdown(case_name: str, results: dict[str, tuple[SiteResult, np.ndarr
              ("Mean power", "MW", lambda r: f"{r.solution.mean_power / 1e6:.3f}"),
              ("Mean tension", "kN", lambda r: f"{r.solution.mean_tension / 1e3:.1f}"),
              ("Cable strength F_max (eq. 15)", "kN", lambda r: f"{r.solution.f_max / 1e3:.1f}"),
+             ("Power target met (eq. 19)", "-", lambda r: "yes" if r.feasible else "**NO** (infeasible)"),
              ("Wind states", "-", lambda r: f"{r.states}"),
              ("Optimisation wall time", "s", lambda r: f"{r.wall_time:.2f}")]
     for name, unit, f in extra:

@@ -67,7 +67,8 @@ def nearest_turbine(rated_power: float) -> str:
 
 def turbine_yield(wind: SiteWind, turbine_type: str, hub_height: float) -> Yield:
     """Mean power of the windpowerlib turbine ``turbine_type`` at ``hub_height`` [m] over the wind states
-    (power curve without density correction: the data carry no density)."""
+    (power curve without density correction, at the curve's standard 1.225 kg/m^3, as the kite's side uses the
+    paper's 1.225 kg/m^3; the 2010 data carry pressure and temperature, the Cabauw clusters no density)."""
     _windpowerlib()
     import pandas as pd
     from windpowerlib import WindTurbine
