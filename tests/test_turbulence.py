@@ -190,6 +190,13 @@ def test_memory_of_a_field_for_the_3500_m_chain_over_600_s():
     ({"dxi": 0.0}, "Turbulence.dxi"),
     ({"wind_class": "IVA"}, "Turbulence.wind_class"),
     ({"model": "Dryden", "severity": "extreme"}, "Turbulence.severity"),
+    # fields the model does not read were accepted and ignored, even when invalid (review of 2026-12-07)
+    ({"model": "NTM", "severity": "extreme"}, "Turbulence.severity = 'extreme': must be one of"),
+    ({"model": "NTM", "severity": "severe"}, "Turbulence.severity = 'severe': model NTM does not use it"),
+    ({"model": "ETM", "w20": 10.0}, "Turbulence.w20 = 10.0: model ETM does not use it"),
+    ({"model": "Dryden", "wind_class": "ZZ"}, "Turbulence.wind_class"),
+    ({"model": "VonKarman", "wind_class": "IIB"}, "Turbulence.wind_class = 'IIB': model VonKarman does not use it"),
+    ({"model": "Dryden", "hub_height": 50.0}, "Turbulence.hub_height = 50.0: model Dryden does not use it"),
 ])
 def test_bad_parameters_name_the_field(kw, text):
     with pytest.raises(ValueError, match=text):

@@ -168,12 +168,17 @@ class Turbulence(Disturbance):
         _number("w20", self.w20, allow_none=True)
         object.__setattr__(self, "heights", _pair("heights", self.heights))
         object.__setattr__(self, "along_wind", _pair("along_wind", self.along_wind))
-        if self.model in ("NTM", "ETM"):
-            tm.parse_wind_class(self.wind_class, "Turbulence.wind_class")
-            if self.model == "ETM" and tm.iec_sigma1(self.wind_class, self.wind_speed, "ETM") <= 0:
-                raise ValueError(f"Turbulence.wind_speed = {self.wind_speed!r}: the ETM's sigma_1 is not positive")
-        elif self.severity not in tm.MIL_W20_KT:
+        tm.parse_wind_class(self.wind_class, "Turbulence.wind_class")  # checked whatever the model: a typo is named
+        if self.severity not in tm.MIL_W20_KT:
             raise ValueError(f"Turbulence.severity = {self.severity!r}: must be one of {sorted(tm.MIL_W20_KT)}")
+        iec = self.model in ("NTM", "ETM")
+        unused = (("severity", "moderate"), ("w20", None)) if iec else (("wind_class", "IA"), ("hub_height", 100.0))
+        for name, default in unused:  # a field the model does not read, given: it would be ignored without a word
+            if getattr(self, name) != default:
+                raise ValueError(f"Turbulence.{name} = {getattr(self, name)!r}: model {self.model} does not use it "
+                                 f"({'Dryden and VonKarman' if iec else 'NTM and ETM'} do); leave it out")
+        if self.model == "ETM" and tm.iec_sigma1(self.wind_class, self.wind_speed, "ETM") <= 0:
+            raise ValueError(f"Turbulence.wind_speed = {self.wind_speed!r}: the ETM's sigma_1 is not positive")
 
     def sample(self, t, rng):
         return np.ones_like(t), np.zeros_like(t)
