@@ -95,8 +95,10 @@ CONTROLLERS = Covered(
         "phases of the 35 s period and by the period's transition matrix with the transfer's own Jacobian",
         '; the reasoning is in [docs/moving_cable.md], "Lateral control").',
         "The v1 config ( ) keeps v0's weights and designs on the mean of the 8 phases' lateral models ( );",
-        'Four trained policies come with the package ( , 100-400 kB each, with the command and seed that reproduce '
-        "them in the folder's README): , , , , and the same names in and . The single-craft policies are PPO's linear"
+        # the shipped folders' sizes (laddermill_gym/policies/: ppo_rotorcraft 117 kB .. ppo_mill_v3 647 kB)
+        'Five trained policies come with the package ( , 100-650 kB each, with the command and seed that reproduce '
+        "them in the folder's README), each flown by on the id it was trained on: on , on , on , on , on ; and the "
+        "same names in and . The single-craft policies are PPO's linear"
         " actor started at the LQR's gains ( in / : the LQR controller's affine map, ), then trained under drawn "
         "disturbances of the gust suite's kinds (not its scenarios). On gusts-v1 ( , a scenario counted when every "
         'seed survives):',

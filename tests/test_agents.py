@@ -24,6 +24,7 @@ def _small_config(tmp_path, **changes):
                 eval={"every": 256, "episodes": 2})
     data["env_kwargs"]["episode_time"] = 5.0
     data["hyperparameters"].update(n_steps=64, batch_size=64, n_epochs=2)
+    data["critic_warmup"]["steps"] = 256  # below total_timesteps (the actor trains after it)
     data.update(changes)
     p = tmp_path / "ppo_small.yaml"
     p.write_text(yaml.safe_dump(data))

@@ -119,7 +119,7 @@ def test_reselect_ranks_by_the_paired_rule(tmp_path, monkeypatch):
         (run / "checkpoints" / f"{name}.zip").write_bytes(b"")
     (run / "vecnormalize.pkl").write_bytes(b"")
     monkeypatch.setattr(factory, "make_controller", lambda spec, *_a: spec)
-    monkeypatch.setattr(rs, "_load", lambda model_file, _stats: model_file.stem)
+    monkeypatch.setattr(rs, "load_candidate", lambda model_file, *_a: model_file.stem)
     monkeypatch.setattr(hv, "validate", lambda ctrl, *_a: dict(table[ctrl] if ctrl in table else REF))
     for sel, best in ((None, "run/step_2"), ({"rule": "paired", "penalty": 2.0}, "run/step_4")):
         raw = yaml.safe_load(Path(CONFIG).read_text())

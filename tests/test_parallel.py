@@ -169,10 +169,11 @@ def test_two_training_seeds_on_two_workers_give_the_serial_runs(tmp_path):
     from laddermill_gym.harness.train_seeds import train_seeds
 
     config = "configs/agents/ppo_tethered_wing.yaml"
-    over = {"total_timesteps": 512, "n_envs": 2, "eval_episodes": 2}
+    # one rollout of 4 x 256 steps, the config's minibatch of 1024; no critic warm-up (400,000 steps: beyond the run)
+    over = {"total_timesteps": 1024, "n_envs": 4, "eval_episodes": 2, "critic_warmup": None}
     runs = {w: train_seeds(config, [0, 1], tmp_path / f"w{w}", over, workers=w) for w in (0, 2)}
     for a, b in zip(runs[0], runs[2], strict=True):
-        assert a["seed"] == b["seed"] and a["steps"] == b["steps"] == 512
+        assert a["seed"] == b["seed"] and a["steps"] == b["steps"] == 1024
         assert a["best_eval_return"] == b["best_eval_return"] and a["last_eval_return"] == b["last_eval_return"]
         assert a["references"] == b["references"]
     assert runs[0][0]["last_eval_return"] != runs[0][1]["last_eval_return"]  # the seeds differ

@@ -80,7 +80,7 @@ def test_a_checkpoint_flies_with_its_runs_env_algorithm_and_statistics(wing_run)
 
 
 def test_a_policy_is_refused_where_its_actions_would_mean_other_things(wing_run):
-    for kw, what in (({"action_mode": "alpha"}, "action_mode = None.*has 'alpha'"),
+    for kw, what in (({"action_mode": "alpha"}, "action_mode = 'tail'.*has 'alpha'"),
                      ({"control_dt": 0.1}, "control_dt = 0.05.*has 0.1")):
         with pytest.raises(ValueError, match=rf"run/config\.yaml: trained with {what}"):
             make_controller(str(wing_run), TW, kw)

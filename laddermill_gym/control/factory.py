@@ -10,10 +10,10 @@
   (the LQR designs are the rigid wings');
 * a path to a training run folder or model file: a Stable-Baselines3 policy (``rl`` extra), refused when it was
   trained on another env or its observation or action size is not the env's;
-* ``ppo_tethered_wing``, ``ppo_rotorcraft``, ``ppo_mill``, ``ppo_chain``: the policies shipped with the package
-  (``control/shipped_policies.py``); a shared per-wing policy (``ppo_mill``, a ``laddermill train ppo_mill_v1``
-  run) runs from its exported ``linear_actor.npz`` when it has one (numpy only: no ``rl`` extra needed), else
-  from its SB3 model.
+* ``ppo_tethered_wing``, ``ppo_rotorcraft``, ``ppo_mill``, ``ppo_chain``, ``ppo_mill_v3``: the policies shipped
+  with the package (``control/shipped_policies.py``); a shared per-wing policy (``ppo_mill``, a ``laddermill train
+  ppo_mill_v1`` run, and ``ppo_chain``, ``ppo_mill_v3``) runs from its exported ``linear_actor.npz`` when it has one
+  (numpy only: no ``rl`` extra needed), else from its SB3 model (:func:`load_policy`).
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ from laddermill_gym.envs.task import scene_trim
 from laddermill_gym.ladder.scene import options_key
 from laddermill_gym.model.configio import CONFIG_DIR
 
-__all__ = ["make_controller", "DEFAULT_LQR_CONFIGS"]
+__all__ = ["make_controller", "load_policy", "DEFAULT_LQR_CONFIGS"]
 
 #: LQR design per registered environment (the design's scene and model must be the environment's)
 DEFAULT_LQR_CONFIGS: dict[str, Path] = {
@@ -223,10 +223,25 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
         raise ValueError(f"controller = {spec!r}: not 'open_loop', 'lqr', 'lqr:<config>', 'lqr_guard' (rotorcraft "
                          "envs), a shipped policy "
                          f"({', '.join(sorted(SHIPPED_POLICIES))}) or an existing model path")
+    return load_policy(path, env_id, env_kwargs)
+
+
+def load_policy(path: str | Path, env_id: str, env_kwargs: dict | None = None,
+                statistics: str | Path | None = None, exact: bool = True) -> Controller:
+    """The trained policy at ``path`` (a run folder or a model file) for ``env_id`` with argument overrides
+    ``env_kwargs``, refused (ValueError naming the file) where it was trained with other control settings
+    (:func:`~laddermill_gym.control.trained_settings.check_trained_settings`), on another env, or with other
+    observation or action sizes. A shared per-wing policy runs from its ``linear_actor.npz`` when it has one; an SB3
+    one (:meth:`~laddermill_gym.control.sb3_policy.SB3Controller.load`) with the observation statistics
+    ``statistics`` when given (a path that need not exist: none), else those saved with the model; ``exact``: its
+    linear actor's deterministic actions in float64, fixed order (False: through torch, as training validates)."""
     from laddermill_gym.control.shared_controller import LinearActorController, is_shared_run
     from laddermill_gym.control.trained_settings import check_trained_settings
 
-    own = {k: v for k, v in kw.items() if k != "parallel"}
+    if env_id not in ENV_IDS:
+        raise ValueError(f"env_id = {env_id!r}: must be one of {sorted(ENV_IDS)}")
+    path = Path(path)
+    own = {k: v for k, v in registered_arguments(env_id, env_kwargs).items() if k != "parallel"}
     check_trained_settings(path, env_id, own)  # spaces can match an env whose actions mean other things
     if is_shared_run(path):  # a shared per-wing policy (laddermill train ppo_mill_v1)
         if LinearActorController.available(path):  # its linear actor exported: numpy, no torch
@@ -236,7 +251,7 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
         return SharedPolicyController.load(path, env_id, own)
     from laddermill_gym.control.sb3_policy import SB3Controller
 
-    ctrl = SB3Controller.load(path)
+    ctrl = SB3Controller.load(path, exact=exact, statistics=statistics)
     ctrl.check_env(env_id)
     task = task_class(env_id)(1, **own)
     ctrl.check_spaces(task.obs.shape[-1], task.n_actions, env_id)

@@ -166,6 +166,37 @@ HYPERPARAMETERS: dict[str, dict] = {
 }
 
 
+#: SB3 algorithm arguments a config does not set: the trainer's own, the private ``_init_setup_model``, the
+#: ``*_class`` arguments and ``action_noise`` (Python objects) are left out of what it may set as well
+NOT_HYPERPARAMETERS = frozenset({"policy", "env", "seed", "policy_kwargs", "tensorboard_log", "verbose", "device",
+                                 "action_noise"})
+#: The arguments SB3's algorithms give their default buffer themselves (a ``*_buffer_kwargs`` entry may set the rest)
+BUFFER_SET_BY_SB3 = frozenset({"self", "buffer_size", "observation_space", "action_space", "device", "n_envs",
+                               "gamma", "gae_lambda", "optimize_memory_usage"})
+
+
+def _buffer_kwargs(hp: Section, key: str, value) -> dict:
+    """``replay_buffer_kwargs`` / ``rollout_buffer_kwargs``: a mapping (or None) of the default buffer's arguments
+    that SB3 does not set itself (ReplayBuffer: ``handle_timeout_termination``, a flag; RolloutBuffer: none);
+    ConfigError naming ``hyperparameters.KEY.NAME`` otherwise."""
+    from stable_baselines3.common.buffers import ReplayBuffer, RolloutBuffer
+
+    if value is None:
+        return {}
+    if not isinstance(value, dict):
+        raise hp.error(key, value, "must be a mapping of keyword arguments")
+    cls = ReplayBuffer if key == "replay_buffer_kwargs" else RolloutBuffer
+    known = sorted(set(inspect.signature(cls).parameters) - BUFFER_SET_BY_SB3)
+    sub = Section(value, hp.file, f"{hp.path}.{key}")
+    for name in value:
+        if name not in known:
+            raise sub.error(name, value[name], f"not an argument of {cls.__name__} a config may set (known: {known}; "
+                            "SB3 sets the others itself)")
+        if isinstance(inspect.signature(cls).parameters[name].default, bool):
+            sub.flag(name)
+    return dict(value)
+
+
 def _is_number(text: str) -> bool:
     try:
         return math.isfinite(float(text))
@@ -182,14 +213,18 @@ def read_hyperparameters(s: Section, algo: str, n_envs: int | None, total: int |
     if not isinstance(raw, dict):
         raise s.error("hyperparameters", raw, "must be a mapping")
     hp = Section(raw, s.file, f"{s.path}.hyperparameters" if s.path else "hyperparameters")
-    known = set(inspect.signature(_algorithm_class(algo)).parameters) - {"policy", "env", "seed", "policy_kwargs",
-                                                                         "tensorboard_log", "verbose", "device"}
+    known = {k for k in inspect.signature(_algorithm_class(algo)).parameters
+             if k not in NOT_HYPERPARAMETERS and not k.startswith("_") and not k.endswith("_class")}
     out = {}
     for key, value in raw.items():
         rule = HYPERPARAMETERS.get(key)
+        if key.endswith("_class") or key == "action_noise":
+            raise hp.error(key, value, "a Python object: set it in Python (stable_baselines3), not in a config")
         if key not in known:
-            raise hp.error(key, value, f"not an argument of {algo} (known: {sorted(known)})")
-        if rule == "flag":
+            raise hp.error(key, value, f"not an argument of {algo} a config may set (known: {sorted(known)})")
+        if key.endswith("_buffer_kwargs"):
+            out[key] = _buffer_kwargs(hp, key, value)
+        elif rule == "flag":
             out[key] = hp.flag(key)
         elif rule is None or (value is None and rule.get("optional")):
             out[key] = hp.raw(key)
@@ -207,6 +242,10 @@ def read_hyperparameters(s: Section, algo: str, n_envs: int | None, total: int |
     for key, most, what in limits:
         if key in out and most is not None and out[key] > most:
             raise hp.error(key, out[key], f"must be at most {most} ({what})")
+    if out.get("optimize_memory_usage") and (out.get("replay_buffer_kwargs") or {}).get(
+            "handle_timeout_termination", True):  # SB3's ReplayBuffer refuses the two together
+        raise hp.error("optimize_memory_usage", True, "needs replay_buffer_kwargs: {handle_timeout_termination: "
+                       "false} (SB3's ReplayBuffer does not support both)")
     if algo == "PPO" and out.get("batch_size", 64) < 2:  # SB3's PPO asserts it (its advantages are normalised)
         raise hp.error("batch_size", out["batch_size"], "must be at least 2 (PPO normalises a minibatch's advantages)")
     return out
@@ -321,8 +360,11 @@ def load_rl_config(path: str | Path) -> RLConfig:
     hyper = read_hyperparameters(s, algo, n_envs, cfg["total_timesteps"])
     cfg["policy"] = s.text("policy", "MlpPolicy", choices=("MlpPolicy", "ResidualPolicy", "ResidualSACPolicy"))
     pk = _read_policy_kwargs(s, algo, cfg["policy"])
+    if algo == "PPO" and pk.get("squash_output") and not hyper.get("use_sde"):  # SB3's ActorCriticPolicy asserts it
+        raise s.error("policy_kwargs.squash_output", pk["squash_output"], "needs hyperparameters.use_sde: true "
+                      "(SB3's PPO squashes only gSDE actions)")
     init_from = read_init_from(s, algo, pk, cfg["normalize_observations"], cfg["policy"])
-    phases = dict(critic_warmup=read_critic_warmup(s, init_from), validation=read_validation(s))
+    phases = dict(critic_warmup=read_critic_warmup(s, init_from, cfg["total_timesteps"]), validation=read_validation(s))
     val = phases["validation"]
     if val is not None:  # its episodes fly the training's control period: a whole number of them (else at once)
         why = episode_argument_error(env_id, dict(cfg["env_kwargs"], episode_time=val.episode_time))

@@ -157,9 +157,10 @@ def read_init_from(s: Section, algo: str, policy_kwargs: dict, normalized: bool,
     return spec
 
 
-def read_critic_warmup(s: Section, init_from: str | None) -> CriticWarmup | None:
+def read_critic_warmup(s: Section, init_from: str | None, total: int | None = None) -> CriticWarmup | None:
     """``critic_warmup`` (absent: none): ``steps`` [env steps] and ``learning_rate`` [-]; only with ``init_from``
-    (a critic learns the values of a policy worth keeping, not of random weights)."""
+    (a critic learns the values of a policy worth keeping, not of random weights), and ``steps`` below ``total``
+    (``total_timesteps``, when given: the actor trains after the warm-up)."""
     if not s.has("critic_warmup"):
         return None
     cw = s.section("critic_warmup")
@@ -167,6 +168,9 @@ def read_critic_warmup(s: Section, init_from: str | None) -> CriticWarmup | None
         raise s.error("critic_warmup", cw.data, "needs init_from (the actor it freezes is the started controller)")
     out = CriticWarmup(cw.number("steps", integer=True, positive=True, high=10**9, why="env steps"),
                        cw.number("learning_rate", positive=True, high=1.0, why="the optimiser's step"))
+    if total is not None and out.steps >= total:
+        raise cw.error("steps", out.steps, f"must be below total_timesteps = {total} (the actor trains only after "
+                       "the warm-up: it would never train)")
     cw.done()
     return out
 

@@ -70,10 +70,13 @@ class SB3Controller:
                    vecnormalize.epsilon, exact=exact)
 
     @classmethod
-    def load(cls, path: str | Path, best: bool = True, exact: bool = True) -> SB3Controller:
+    def load(cls, path: str | Path, best: bool = True, exact: bool = True,
+             statistics: str | Path | None = None) -> SB3Controller:
         """Load from a training run folder (``best_model.zip`` if present and ``best``, else ``model.zip``)
-        or from a model file, with its normalisation statistics next to it if there are any; ``exact``: a linear
-        actor's deterministic actions in float64, fixed order (the class's ``exact``).
+        or from a model file, with its normalisation statistics next to it if there are any (``statistics``: that
+        file instead, a path that need not exist: none); ``exact``: a linear actor's deterministic actions in
+        float64, fixed order (the class's ``exact``). Statistics that are not a ``VecNormalize`` or whose
+        observation shape is not the model's raise ValueError naming the file and both shapes.
 
         An rl-zoo3 log folder (``logs/<algo>/<env name>_<n>``, or a model file in one) is read by
         :func:`~laddermill_gym.control.zoo_run.read_zoo_run`: algorithm from its ``args.yml``, statistics from
@@ -97,8 +100,9 @@ class SB3Controller:
         else:
             raise FileNotFoundError(f"{path}: no such model file or run folder")
         model = _load_model(sb3, model_file, folder / "algorithm.txt")
-        norm = statistics_file(model_file, folder)
-        ctrl = cls.from_vecnormalize(model, load_vecnormalize(norm) if norm.is_file() else None, exact)
+        norm = statistics_file(model_file, folder) if statistics is None else Path(statistics)
+        ctrl = cls.from_vecnormalize(model, load_vecnormalize(norm, model, model_file) if norm.is_file() else None,
+                                     exact)
         ctrl.source, ctrl.trained_env = model_file, _trained_env(folder / "config.yaml")
         return ctrl
 
@@ -113,8 +117,8 @@ class SB3Controller:
         algo = zoo_algorithm_class(run.algo, run.folder)
         constants = {"learning_rate": 0.0, "lr_schedule": lambda _: 0.0, "clip_range": lambda _: 0.0}
         model = algo.load(run.model_file, device="cpu", custom_objects=constants)
-        ctrl = cls.from_vecnormalize(model, None if run.vecnormalize is None else load_vecnormalize(run.vecnormalize),
-                                     exact)
+        stats = None if run.vecnormalize is None else load_vecnormalize(run.vecnormalize, model, run.model_file)
+        ctrl = cls.from_vecnormalize(model, stats, exact)
         ctrl.source, ctrl.trained_env = run.model_file, run.env_id
         return ctrl
 
@@ -163,12 +167,17 @@ class SB3Controller:
         return self.model.predict(self.normalize(observation), state, episode_start, deterministic)
 
 
+#: Files ``laddermill train`` writes into a run folder, by which the folder above a ``checkpoints/`` is known as one
+RUN_MARKERS = ("config.yaml", "shared_policy.yaml", "algorithm.txt")
+
+
 def run_folder(model_file: Path) -> Path:
     """The training run folder of a model file: its own folder, or for a checkpoint (``RUN/checkpoints/*.zip`` of
-    ``laddermill train``) the run folder above, which holds its config, algorithm and statistics."""
+    ``laddermill train``, a folder holding one of :data:`RUN_MARKERS`) the run folder above, which holds its config,
+    algorithm and statistics."""
     folder = model_file.parent
     up = folder.parent
-    if folder.name == "checkpoints" and any((up / f).is_file() for f in ("config.yaml", "shared_policy.yaml")):
+    if folder.name == "checkpoints" and any((up / f).is_file() for f in RUN_MARKERS):
         return up
     return folder
 
@@ -215,7 +224,8 @@ def _trained_env(config: Path) -> str | None:
 def _load_model(sb3, model_file: Path, meta: Path):
     """The SB3 model in ``model_file`` with the algorithm ``meta`` (algorithm.txt) names. Without that file it
     loads as PPO (what the first run folders held); a model that is not a PPO one then raises naming both files.
-    An algorithm of sb3-contrib (TQC, ...) needs that package; another name raises naming ``meta``."""
+    An algorithm of sb3-contrib (TQC, ...) needs that package; a name that is not an algorithm's
+    (:func:`algorithm_class`) raises naming ``meta``."""
     check_model_file(model_file)
     if not meta.is_file():
         try:
@@ -224,18 +234,47 @@ def _load_model(sb3, model_file: Path, meta: Path):
             raise ValueError(f"{model_file}: does not load as PPO ({type(err).__name__}: {err}) and {meta} is "
                              "missing: write the algorithm it was trained with (PPO, SAC, ...) into that file"
                              ) from None
-    algo = meta.read_text().strip()
-    cls = getattr(sb3, algo, None)
-    if cls is None:
-        try:
-            import sb3_contrib
-        except ImportError:
-            sb3_contrib = None
-        cls = getattr(sb3_contrib, algo, None) if sb3_contrib is not None else None
-        if cls is None:
-            needs = "" if sb3_contrib is not None else " (nor an sb3-contrib one: that package is not installed)"
-            raise ValueError(f"{meta}: unknown algorithm {algo!r}: not one of stable_baselines3's{needs}")
-    return load_as(cls, model_file, meta)
+    return load_as(algorithm_class(meta.read_text().strip(), meta), model_file, meta)
+
+
+def _algorithm_modules() -> list:
+    """stable_baselines3 and, when installed, sb3_contrib."""
+    import stable_baselines3 as sb3
+
+    try:
+        import sb3_contrib
+    except ImportError:
+        return [sb3]
+    return [sb3, sb3_contrib]
+
+
+def algorithm_names() -> list[str]:
+    """The algorithm class names of stable_baselines3 (and sb3-contrib, when installed): PPO, SAC, TQC, ..."""
+    from stable_baselines3.common.base_class import BaseAlgorithm
+
+    return sorted({n for m in _algorithm_modules() for n in dir(m)
+                   if isinstance(getattr(m, n), type) and issubclass(getattr(m, n), BaseAlgorithm)})
+
+
+def algorithm_class(name: str, where: Path) -> type:
+    """The SB3 algorithm class that ``name`` (read from ``where``: ``algorithm.txt``, ``shared_policy.yaml``) names:
+    a class name of stable_baselines3 or sb3-contrib (``PPO``, ``TQC``), or rl-zoo3's lower-case name of one
+    (``ppo``, ``tqc``: :data:`~laddermill_gym.control.zoo_run.ZOO_ALGORITHMS`). ValueError naming ``where``, the
+    name and the known names otherwise (a module such as ``stable_baselines3.ppo`` is not an algorithm)."""
+    from stable_baselines3.common.base_class import BaseAlgorithm
+
+    from laddermill_gym.control.zoo_run import ZOO_ALGORITHMS, zoo_algorithm_class
+
+    for module in _algorithm_modules():
+        cls = getattr(module, name, None)
+        if isinstance(cls, type) and issubclass(cls, BaseAlgorithm):
+            return cls
+    if name in ZOO_ALGORITHMS or name == "ppo_lstm":
+        return zoo_algorithm_class(name, where)
+    contrib = "" if len(_algorithm_modules()) > 1 else " (sb3-contrib's are not: that package is not installed)"
+    raise ValueError(f"{where}: unknown algorithm {name!r}: not a stable_baselines3 or sb3-contrib algorithm class "
+                     f"({', '.join(algorithm_names())}) nor rl-zoo3's name of one ({', '.join(sorted(ZOO_ALGORITHMS))})"
+                     f"{contrib}")
 
 
 #: What SB3's ``load`` raises for a file that is not a model of that algorithm (AssertionError: a zip without

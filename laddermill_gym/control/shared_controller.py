@@ -124,7 +124,10 @@ class SharedController(ABC):
         if v.n_agents != int(m["n_agents"]):
             raise ValueError(f"{self.source}: trained with {m['n_agents']} agents (slots), the env has "
                              f"{v.n_agents} (n_wings or scene differ)")
-        if self.local_obs_dim() != v.obs_dim or int(m["obs_dim"]) != v.obs_dim:
+        if int(m["obs_dim"]) != self.local_obs_dim():  # the model's own size against what its run folder says
+            raise ValueError(f"{self.source}: takes local observations of {self.local_obs_dim()} entries, but its "
+                             f"{SHARED_POLICY_FILE} says obs_dim = {m['obs_dim']!r} (k = {m['k']})")
+        if self.local_obs_dim() != v.obs_dim:
             raise ValueError(f"{self.source}: local observations of ({self.local_obs_dim()},) entries (k = "
                              f"{m['k']}), the env gives {v.obs_dim}")
 

@@ -24,7 +24,7 @@ import numpy as np
 import torch as th
 from stable_baselines3.common.torch_layers import BaseFeaturesExtractor
 
-from laddermill_gym.control.sb3_policy import load_as, run_folder
+from laddermill_gym.control.sb3_policy import algorithm_class, load_as, run_folder
 from laddermill_gym.control.shared_controller import (
     LATERAL_FIELDS,
     LINEAR_ACTOR_FILE,
@@ -118,8 +118,6 @@ class SharedPolicyController(SharedController):
              ) -> SharedPolicyController:
         """Load the run folder (its ``model.zip``) or a model file ``path``; with ``env_id`` the policy is checked
         against that env (and ``env_kwargs``: the agents and observation size) before anything runs."""
-        import stable_baselines3 as sb3
-
         path = Path(path)
         folder = path if path.is_dir() else run_folder(path)  # a checkpoint's: the run folder above
         meta_file = folder / SHARED_POLICY_FILE
@@ -128,11 +126,9 @@ class SharedPolicyController(SharedController):
         if not model_file.is_file():
             raise FileNotFoundError(f"{model_file}: no such model file (the run folder {folder} has "
                                     f"{SHARED_POLICY_FILE} but no model.zip)")
-        algo = str(meta["algorithm"])
-        if not hasattr(sb3, algo):
-            raise ValueError(f"{meta_file}: algorithm = {algo!r} is not a Stable-Baselines3 algorithm")
+        algo = algorithm_class(str(meta["algorithm"]), meta_file)
         view = build_view(meta, model_file, env_id, env_kwargs)
-        ctrl = cls(load_as(getattr(sb3, algo), model_file, meta_file), view, model_file, meta)
+        ctrl = cls(load_as(algo, model_file, meta_file), view, model_file, meta)
         ctrl.check_env(env_id or str(meta["env"]))
         return ctrl
 

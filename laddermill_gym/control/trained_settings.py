@@ -14,9 +14,9 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from laddermill_gym.envs import ENV_IDS, registered_arguments, same_task
+from laddermill_gym.envs import ENV_IDS, registered_arguments, same_task, task_class
 
-__all__ = ["training_settings", "check_trained_settings"]
+__all__ = ["training_settings", "settings_of", "check_trained_settings"]
 
 #: settings the check leaves out: the physics step is the env's (TetheredWing-v0's policies fly v1), and so are
 #: the integrator's entries of ``scene_options`` (``load_scene``'s ``method`` and ``dt``: v0 registers its W method
@@ -26,10 +26,22 @@ PHYSICS_SCENE_OPTIONS = ("method", "dt")
 
 
 def _policy_part(key: str, value):
-    """``value`` of setting ``key`` without its physics-step entries."""
+    """``value`` of setting ``key`` without its physics-step entries (a tuple as the list a YAML file gives)."""
     if key == "scene_options" and isinstance(value, dict):
         return {k: v for k, v in value.items() if k not in PHYSICS_SCENE_OPTIONS}
-    return value
+    return list(value) if isinstance(value, tuple) else value
+
+
+def settings_of(env_id: str, env_kwargs: dict[str, Any], keys: list[str]) -> dict[str, Any]:
+    """The settings ``keys`` of ``env_id`` with ``env_kwargs``: the registered arguments merged as
+    ``gymnasium.make`` merges them, else the task class's own default (``action_mode`` 'tail' of a wing id registers
+    none), else None."""
+    import inspect
+
+    args = registered_arguments(env_id, env_kwargs)
+    params = inspect.signature(task_class(env_id)).parameters
+    defaults = {k: p.default for k, p in params.items() if p.default is not inspect.Parameter.empty}
+    return {k: _policy_part(k, args[k] if k in args else defaults.get(k)) for k in keys}
 
 
 def training_settings(path: str | Path) -> tuple[Path, str, dict[str, Any]] | None:
@@ -67,8 +79,7 @@ def check_trained_settings(path: str | Path, env_id: str, env_kwargs: dict[str, 
     if trained_env not in ENV_IDS or not same_task(trained_env, env_id):
         return  # another env: the policy's env check names it
     keys = [k for k in CARRIED_KWARGS[env_family(env_id)] if k not in PHYSICS_KEYS]
-    trained, here = ({k: _policy_part(k, args.get(k)) for k in keys} for args in (
-        registered_arguments(trained_env, trained_kwargs), registered_arguments(env_id, env_kwargs)))
+    trained, here = settings_of(trained_env, trained_kwargs, keys), settings_of(env_id, env_kwargs, keys)
     differ = [k for k in keys if trained[k] != here[k]]
     if differ:
         was = ", ".join(f"{k} = {trained[k]!r}" for k in differ)

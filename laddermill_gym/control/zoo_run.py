@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import yaml
 
 from laddermill_gym.model.configio import YAMLLoader
@@ -211,10 +212,38 @@ def read_zoo_run(path: str | Path) -> ZooRun:
     return ZooRun(folder, args["algo"], args["env"], model_file, stats, dict(env_kwargs or {}))
 
 
-def load_vecnormalize(path: Path):
-    """The pickled SB3 ``VecNormalize`` in ``path`` (its ``obs_rms``, ``clip_obs``, ``epsilon``, ``norm_obs``)."""
-    with open(path, "rb") as fh:
-        return pickle.load(fh)
+#: What unpickling a file that is not a pickle (a text file, a truncated or other file) raises
+UNPICKLE_ERRORS = (pickle.UnpicklingError, EOFError, ValueError, TypeError, AttributeError, ImportError, IndexError,
+                   KeyError)
+
+
+def load_vecnormalize(path: Path, model=None, model_file: Path | None = None):
+    """The pickled SB3 ``VecNormalize`` in ``path`` (its ``obs_rms``, ``clip_obs``, ``epsilon``, ``norm_obs``).
+
+    ValueError naming ``path`` when the file does not unpickle or holds something else than a ``VecNormalize``;
+    with ``model`` (the SB3 model the statistics go with, loaded from ``model_file``), also when normalised
+    observations of the statistics' shape (``obs_rms.mean``, (obs_dim,)) are not the model's observation shape
+    (statistics of another env or other env arguments), naming both shapes."""
+    from stable_baselines3.common.vec_env import VecNormalize
+
+    path = Path(path)
+    try:
+        with open(path, "rb") as fh:
+            stats = pickle.load(fh)
+    except UNPICKLE_ERRORS as err:
+        raise ValueError(f"{path}: not readable as pickled observation statistics (SB3's VecNormalize.save): "
+                         f"{type(err).__name__}: {err}") from None
+    if not isinstance(stats, VecNormalize):
+        raise ValueError(f"{path}: holds a {type(stats).__module__}.{type(stats).__name__}, not SB3's VecNormalize "
+                         "(the observation statistics VecNormalize.save writes)")
+    if model is not None and getattr(stats, "norm_obs", True):
+        shape = tuple(np.shape(getattr(stats.obs_rms, "mean", None)))
+        expected = tuple(model.observation_space.shape)
+        if shape != expected:
+            raise ValueError(f"{path}: observation statistics of shape {shape}, but the policy "
+                             f"{model_file or 'it goes with'} observes shape {expected}: the statistics of another "
+                             "env or of other env arguments (keep each model with its own vecnormalize.pkl)")
+    return stats
 
 
 # ------------------------------------------------------------------ the file's env_kwargs on rl-zoo3's command line

@@ -24,7 +24,7 @@ import re
 import time
 from pathlib import Path
 
-__all__ = ["candidates", "reselect", "main"]
+__all__ = ["candidates", "load_candidate", "reselect", "main"]
 
 _STEP = re.compile(r"step_(\d+)\.zip$")
 
@@ -52,17 +52,15 @@ def candidates(run: Path) -> list[tuple[str, Path, Path]]:
     return found
 
 
-def _load(model_file: Path, stats: Path):
-    import stable_baselines3 as sb3
+def load_candidate(model_file: Path, stats: Path, env_id: str, env_kwargs: dict):
+    """The policy in ``model_file`` with the observation statistics ``stats`` (a path that need not exist: none),
+    loaded and checked as ``make_controller`` loads a path (:func:`~laddermill_gym.control.factory.load_policy`):
+    the run's algorithm.txt, its statistics' shape, and ValueError naming the file for a policy trained on another
+    env than ``env_id``, with other control settings or other observation or action sizes. Its actions come through
+    torch, as the training's validations fly it (``exact=False``)."""
+    from laddermill_gym.control.factory import load_policy
 
-    from laddermill_gym.control.sb3_policy import SB3Controller
-    from laddermill_gym.control.zoo_run import load_vecnormalize
-
-    algo = (model_file.parent / "algorithm.txt") if (model_file.parent / "algorithm.txt").is_file() else \
-        (model_file.parent.parent / "algorithm.txt")
-    name = algo.read_text().strip() if algo.is_file() else "PPO"
-    model = getattr(sb3, name).load(model_file, device="cpu")
-    return SB3Controller.from_vecnormalize(model, load_vecnormalize(stats) if stats.is_file() else None)
+    return load_policy(model_file, env_id, env_kwargs, statistics=stats, exact=False)
 
 
 def _config_policy(config: Path) -> str | None:
@@ -93,14 +91,19 @@ def reselect(config: str | Path, runs: list[str | Path], reference: list[str] = 
     jobs = [(spec, None, None) for spec in reference]
     for run in runs:
         jobs += candidates(Path(run))
-    rows, results = [], {}
-    for label, model_file, stats in jobs:
+    loaded = []
+    for label, model_file, stats in jobs:  # every one loaded and checked before any flies (a bad file fails at once)
         t0 = time.process_time()
-        ctrl = make_controller(label, cfg.env_id, kw) if model_file is None else _load(model_file, stats)
+        ctrl = make_controller(label, cfg.env_id, kw) if model_file is None else \
+            load_candidate(model_file, stats, cfg.env_id, kw)
+        loaded.append((label, ctrl, model_file is None, time.process_time() - t0))
+    rows, results = [], {}
+    for label, ctrl, is_reference, load_s in loaded:
+        t0 = time.process_time() - load_s
         res = results[label] = validate(ctrl, cfg.env_id, kw, cfg.validation)
         rows.append(dict(label=label, survived=res["survived"], episodes=res["episodes"], per_set=res["per_set"],
                          rms_lateral_m=round(res["rms_lateral_m"], 3), cpu_s=round(time.process_time() - t0, 1),
-                         reference=int(model_file is None), selected=0))
+                         reference=int(is_reference), selected=0))
         log(f"{label}: {res['survived']}/{res['episodes']} {res['per_set']} RMS lateral "
             f"{res['rms_lateral_m']:.2f} m ({rows[-1]['cpu_s']} CPU s)")
     for r in rows:

@@ -3,7 +3,8 @@
     laddermill train configs/agents/ppo_tethered_wing.yaml [--out runs/ppo] [--seed 1]
                            [--timesteps N] [--minutes M] [--torch-threads T]
 
-The run folder gets: ``config.yaml`` (the config used), ``algorithm.txt``, TensorBoard logs (``tb/``),
+The run folder gets: ``config.yaml`` (the config used), ``algorithm.txt``, ``run.yaml`` (the command line, seed,
+torch threads and package versions: :mod:`~laddermill_gym.harness.run_record`), TensorBoard logs (``tb/``),
 checkpoints (``checkpoints/``), ``evaluations.csv`` (deterministic returns on the registered evaluation
 scenario, seeds 0 .. n - 1, against wall time and env steps), ``best_model.zip`` (best evaluation) with
 ``best_vecnormalize.pkl``, ``model.zip`` (last) with ``vecnormalize.pkl`` (observation statistics) and
@@ -34,7 +35,7 @@ from tqdm import tqdm
 from laddermill_gym.control.rl_config import RLConfig, load_rl_config, read_hyperparameters
 from laddermill_gym.model.configio import ConfigError, Section
 from laddermill_gym.sim.interrupt import stop_requests
-from laddermill_gym.studies.commands import Parser, check_number
+from laddermill_gym.studies.commands import Parser, UsageError, check_number
 
 
 def _evaluate(policy, env, n_episodes: int) -> tuple[np.ndarray, np.ndarray]:
@@ -213,35 +214,76 @@ def saved_config(cfg: RLConfig) -> str:
     return text
 
 
-def train(cfg: RLConfig, out: Path, threads: int | None = None) -> dict:
-    """Train according to ``cfg`` into the folder ``out`` with ``threads`` torch threads (None:
-    :func:`torch_threads`); returns a summary dict."""
+def build_model(cfg: RLConfig, out: Path):
+    """(model, training VecEnv, evaluation env) of ``cfg``: the SB3 algorithm on the training copies (normalised
+    when the config says), its actor started at ``init_from``; TensorBoard logs to go to ``out / tb``. Writes
+    nothing: a config that fails here leaves no run folder behind."""
     import stable_baselines3 as sb3
-    import torch
     from stable_baselines3.common.vec_env import VecMonitor, VecNormalize
 
-    torch.set_num_threads(torch_threads(threads))
-    held = [f for f in ("config.yaml", "model.zip", "best_model.zip", "evaluations.csv") if (out / f).exists()]
-    if held:  # a second run there would mix its files with the first's (statistics included)
-        raise FileExistsError(f"{out}: holds a training run already ({', '.join(held)}); give another --out or "
-                              "delete it")
-    out.mkdir(parents=True, exist_ok=True)
-    (out / "checkpoints").mkdir(exist_ok=True)
-    (out / "config.yaml").write_text(saved_config(cfg))
-    (out / "algorithm.txt").write_text(cfg.algorithm + "\n")
+    from laddermill_gym.control.policy_names import policy_class
+
     venv = VecMonitor(training_env(cfg))
     if cfg.normalize_observations:
         venv = VecNormalize(venv, norm_obs=True, norm_reward=False, clip_obs=10.0)
     eval_env = evaluation_env(cfg)
-    algo = getattr(sb3, cfg.algorithm)
-    from laddermill_gym.control.policy_names import policy_class
-
-    model = algo(policy_class(cfg.policy), venv, seed=cfg.seed, policy_kwargs=cfg.policy_kwargs or None,
-                 tensorboard_log=str(out / "tb"), verbose=0, device="cpu", **cfg.hyperparameters)
+    model = getattr(sb3, cfg.algorithm)(policy_class(cfg.policy), venv, seed=cfg.seed,
+                                        policy_kwargs=cfg.policy_kwargs or None, tensorboard_log=str(out / "tb"),
+                                        verbose=0, device="cpu", **cfg.hyperparameters)
     if cfg.init_from is not None:  # the linear actor started at the LQR (control/warm_start.py)
         from laddermill_gym.control.warm_start import start_from
 
         print(f"actor started at {cfg.init_from}: largest gain {start_from(cfg, model, venv)['max_gain']:.3g}")
+    return model, venv, eval_env
+
+
+#: files whose presence marks a folder as holding a training run already
+RUN_FILES = ("config.yaml", "run.yaml", "model.zip", "best_model.zip", "evaluations.csv")
+
+
+def apply_overrides(cfg: RLConfig, over: dict) -> RLConfig:
+    """``cfg`` with the command line's overrides ``over`` (fields of :data:`OVERRIDES` -> values), each checked:
+    ``--seed`` 0 .. 2**32 - 1, ``--n-envs`` 1 .. 4096, ``--timesteps`` a whole number > 0, ``--minutes`` > 0, and
+    the config's limits that depend on them (a PPO minibatch within a rollout of n_steps x n_envs, learning_starts
+    within total_timesteps, the critic warm-up below total_timesteps). UsageError naming the option and value."""
+    for k, option in OVERRIDES:
+        if k in over:
+            check_number(option, over[k], low=0, strict=k != "seed", integer=k != "time_limit_minutes",
+                         high=2 ** 32 - 1 if k == "seed" else 4096 if k == "n_envs" else None)
+    if not over:
+        return cfg
+    cfg = dataclasses.replace(cfg, **over)
+    given = " ".join(f"{o} {over[k]}" for k, o in OVERRIDES if k in over)
+    try:
+        read_hyperparameters(Section({"hyperparameters": dict(cfg.hyperparameters)}, cfg.file), cfg.algorithm,
+                             cfg.n_envs, cfg.total_timesteps)
+    except ConfigError as err:
+        raise UsageError(f"{err}, with {given}") from None
+    if cfg.critic_warmup is not None and cfg.critic_warmup.steps >= cfg.total_timesteps:
+        raise UsageError(f"{cfg.file}: field 'critic_warmup.steps' = {cfg.critic_warmup.steps} must be below "
+                         f"total_timesteps = {cfg.total_timesteps} (the actor would never train), with {given}")
+    return cfg
+
+
+def train(cfg: RLConfig, out: Path, threads: int | None = None, command: list[str] | None = None) -> dict:
+    """Train according to ``cfg`` into the folder ``out`` with ``threads`` torch threads (None:
+    :func:`torch_threads`); ``command``: the command line recorded in ``run.yaml`` (default ``sys.argv``). The
+    model is built before anything is written, so a config SB3 refuses leaves ``out`` free. Returns a summary dict."""
+    import torch
+
+    from laddermill_gym.harness.run_record import write_run_record
+
+    torch.set_num_threads(torch_threads(threads))
+    held = [f for f in RUN_FILES if (out / f).exists()]
+    if held:  # a second run there would mix its files with the first's (statistics included)
+        raise FileExistsError(f"{out}: holds a training run already ({', '.join(held)}); give another --out or "
+                              "delete it")
+    model, venv, eval_env = build_model(cfg, out)
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "checkpoints").mkdir(exist_ok=True)
+    (out / "config.yaml").write_text(saved_config(cfg))
+    (out / "algorithm.txt").write_text(cfg.algorithm + "\n")
+    write_run_record(out, cfg.seed, command)
     t0 = time.perf_counter()
     with (tqdm(total=cfg.total_timesteps, unit="step", desc=f"{cfg.algorithm} {cfg.env_id}", smoothing=0.05) as pbar,
           stop_requests("Ctrl-C: ending the training after the current step and saving the model (Ctrl-C again to "
@@ -304,18 +346,10 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     given = {"seed": args.seed, "total_timesteps": args.timesteps, "time_limit_minutes": args.minutes,
              "n_envs": args.n_envs}
-    over = {k: given[k] for k, _ in OVERRIDES if given[k] is not None}
-    for k, option in OVERRIDES:
-        if k in over:
-            check_number(option, over[k], low=0, strict=k != "seed", integer=k != "time_limit_minutes",
-                         high=2 ** 32 - 1 if k == "seed" else 4096 if k == "n_envs" else None)
-    cfg = dataclasses.replace(cfg, **over)
-    if over:  # the config's limits that depend on them (a minibatch within a rollout of n_steps x n_envs, ...)
-        try:
-            read_hyperparameters(Section({"hyperparameters": dict(cfg.hyperparameters)}, cfg.file), cfg.algorithm,
-                                 cfg.n_envs, cfg.total_timesteps)
-        except ConfigError as err:
-            p.error(f"{err}, with {' '.join(f'{o} {over[k]}' for k, o in OVERRIDES if k in over)}")
+    try:
+        cfg = apply_overrides(cfg, {k: given[k] for k, _ in OVERRIDES if given[k] is not None})
+    except UsageError as err:
+        p.error(str(err))
     try:
         threads = torch_threads(args.torch_threads)
     except ValueError as err:

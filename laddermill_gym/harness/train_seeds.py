@@ -20,7 +20,7 @@ import dataclasses
 import sys
 from pathlib import Path
 
-from laddermill_gym.studies.commands import Command, UsageError, check_number
+from laddermill_gym.studies.commands import Command, UsageError
 from laddermill_gym.studies.parallel import Pool, add_arguments, check_arguments
 
 __all__ = ["train_task", "warm_envs", "train_seeds", "add_parser", "main"]
@@ -29,9 +29,12 @@ PROG = "laddermill train-seeds"
 
 
 def _config(config: str, overrides: dict):
+    """The config with the overrides (RLConfig fields), checked as ``laddermill train`` checks its options
+    (:func:`~laddermill_gym.harness.train.apply_overrides`: UsageError naming the option)."""
     from laddermill_gym.control.rl_config import load_rl_config
+    from laddermill_gym.harness.train import apply_overrides
 
-    return dataclasses.replace(load_rl_config(config), **overrides)
+    return apply_overrides(load_rl_config(config), overrides)
 
 
 def warm_envs(config: str) -> None:
@@ -39,9 +42,10 @@ def warm_envs(config: str) -> None:
     or loads their kernels)."""
     import numpy as np
 
+    from laddermill_gym.control.rl_config import load_rl_config
     from laddermill_gym.harness.train import evaluation_env, training_env
 
-    cfg = _config(config, {"n_envs": 1})
+    cfg = dataclasses.replace(load_rl_config(config), n_envs=1)  # not a run: the rollout limits do not apply
     venv = training_env(cfg)
     venv.reset()
     venv.step(np.zeros((1, *venv.action_space.shape), dtype=np.float32))
@@ -52,23 +56,25 @@ def warm_envs(config: str) -> None:
     env.close()
 
 
-def train_task(config: str, seed: int, out: str, overrides: dict) -> dict:
-    """A picklable task: train ``config`` with ``seed`` and ``overrides`` (RLConfig fields) into ``out``;
-    returns :func:`~laddermill_gym.harness.train.train`'s summary with the seed and folder."""
+def train_task(config: str, seed: int, out: str, overrides: dict, command: list[str] | None = None) -> dict:
+    """A picklable task: train ``config`` with ``seed`` and ``overrides`` (RLConfig fields) into ``out``, recording
+    ``command`` (the caller's command line; default this process's ``sys.argv``) in its ``run.yaml``; returns
+    :func:`~laddermill_gym.harness.train.train`'s summary with the seed and folder."""
     from laddermill_gym.harness.train import train
 
-    summary = train(_config(config, dict(overrides, seed=int(seed))), Path(out))
+    summary = train(_config(config, dict(overrides, seed=int(seed))), Path(out), command=command)
     return dict(summary, seed=int(seed), out=str(out))
 
 
 def train_seeds(config: str, seeds, out_root: Path, overrides: dict, workers: int = 0,
                 ray: str | None = None) -> list[dict]:
-    """Train ``config`` once per seed (tasks in seed order); the summaries in that order."""
+    """Train ``config`` once per seed (tasks in seed order; each run folder's ``run.yaml`` records this process's
+    command line, not the worker's); the summaries in that order."""
     stem = Path(config).stem
     if Path(config).exists():  # Ray workers do not share the caller's working directory
         config = str(Path(config).resolve())
     tasks = [(train_task, dict(config=config, seed=int(s), out=str((out_root / f"{stem}_seed{s}").resolve()),
-                               overrides=dict(overrides))) for s in seeds]
+                               overrides=dict(overrides), command=list(sys.argv))) for s in seeds]
     with Pool(min(workers, len(tasks)), ray, warmup=[(warm_envs, {"config": config})]) as pool:
         return pool.run(tasks, desc=f"train {stem}", unit="seed")
 
@@ -94,20 +100,20 @@ def _run(args, prog: str = PROG) -> int:
         _fail(prog, f"--seeds {args.seeds}: must be distinct whole numbers 0 .. 2**32 - 1")  # numpy's seed range
     given = (("timesteps", "total_timesteps", args.timesteps), ("minutes", "time_limit_minutes", args.minutes),
              ("n-envs", "n_envs", args.n_envs))
-    for option, _, v in given:  # finite (a NaN time limit passed "v <= 0" and trained two steps)
-        try:
-            check_number(f"--{option}", v, low=0, integer=option != "minutes")
-        except UsageError as err:
-            _fail(prog, str(err))
     over = {field: v for _, field, v in given if v is not None}
     from laddermill_gym.harness.shared_config import is_shared_config
 
     if is_shared_config(args.config):
         _fail(prog, f"config {args.config!r}: a shared per-wing policy's config; train-seeds runs laddermill train's "
                     "configs (train it with laddermill train CONFIG --seed S)")
-    _config(args.config, over)  # a bad config fails here, before any worker starts
+    try:  # laddermill train's checks (a NaN time limit, --n-envs above 4096, a minibatch beyond the rollout ...)
+        _config(args.config, over)  # a bad config fails here, before any worker starts
+    except UsageError as err:
+        _fail(prog, str(err))
+    from laddermill_gym.harness.train import RUN_FILES
+
     folders = [args.out_root / f"{Path(args.config).stem}_seed{s}" for s in args.seeds]
-    held = [str(f) for f in folders if (f / "config.yaml").exists() or (f / "model.zip").exists()]
+    held = [str(f) for f in folders if any((f / name).exists() for name in RUN_FILES)]
     if held:  # laddermill train refuses a folder holding a run; here before any seed trains
         _fail(prog, f"--out-root {str(args.out_root)!r}: the run folders {held} exist already")
     for s in train_seeds(args.config, args.seeds, args.out_root, over, args.workers, args.ray):
