@@ -109,7 +109,11 @@ WIND = Covered(
            "| MIL-F-8785C 3.7.2.1",
            "(A+, ed. 4); IEC 61400-1 ed. 3 Table 1.", "IEC 61400-1 ed. 3 eq. B.4, Coh(r, f) = exp(-12 sqrt((f r / "
            "V_hub)^2 + (0.12 r / L_c)^2)), L_c = 8.1 Lambda_1 for u", "S(kappa) dkappa / 2",
-           "(IEC's sigma is the 10-minute standard deviation)", "rho_j X_(j-1) + sqrt(1 - rho_j^2)",
+           "(IEC's sigma is the 10-minute standard deviation; see below)", "rho_j X_(j-1) + sqrt(1 - rho_j^2)",
+           # the grid's length: gusts-v1's wing grid (its along_wind 200 m + 8.08 m/s x 60 s, rounded up to dxi),
+           # the IEC averaging time, the first wavenumber's definition
+           "700 m for the wing's 60 s scenarios, far shorter than the 10 minutes IEC's sigma stands for",
+           "wavenumber dkappa = 1 / (n_xi dxi)",
            "A 3.5 km field (147 rows x 240 columns x 3)", "pyconturb 2.7.4", "a 3.5 km x 8 km box at 10 m",
            "40 lines of numpy", "by 0.5 (1 - cos(pi t / T_f))", "at t = 0,", "gusts-v1 fades turbulence in over 10 s",
            "24 bytes per node: n_xi = (span + U T) / dxi + 3 (even), n_h = (h_top - h_bottom) / dh + 1",
@@ -144,6 +148,11 @@ WIND = Covered(
              " in two runs at a higher load (2.5 vs 3.0 ms, 2.2 vs 2.5 ms). Drawing the field at a reset takes 3-16 "
              "ms.", "--out runs/gust_bench_v2/pumping # 16 s", "--out runs/gust_bench_v2/mill # 2 min 50 s"),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed("turbulence_level", ("| TetheredWing-v0 | NTM IB | 700 | 0.49 | 2.03 | 0.45 |",
+                                     "| TetheredWing-v0 | Dryden moderate | 700 | 0.35-0.89 | 1.12-2.85 | 0.07-0.60 |",
+                                     "| LadderChain-v0 | NTM IB | 2100 | 0.71 | 1.41 | 0.23 |",
+                                     "| Rotorcraft-v0 | NTM IB | 740 | 0.59 | 1.71 | 0.37 |",
+                                     "| Rotorcraft-v0 | Dryden moderate | 740 | 0.42-0.92 | 1.09-2.41 | 0.06-0.53 |")),
         # MillTask.loop_extent() at LadderMill-v0's operating point, which tests/test_gusts_v2.py's slow grid test
         # checks against the NTM grid and prints (-s) (was not_rerun)
         Printed('mill_loop_extent_test', ('The loop spans 50 m (the stations) to 3440 m and p . e -100 to 689 m:',)),

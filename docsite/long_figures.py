@@ -86,6 +86,8 @@ LONG = {
     "gusts_v5_rotorcraft_v1": _bench("gusts-v5", "Rotorcraft-v1", "open_loop lqr lqr_guard "
                                      "lqr_guard:lqr_tip_hold_rotorcraft ppo_rotorcraft",
                                      "rotorcraft.md", "minutes (9 scenarios x 1-3 seeds)"),
+    # wind.md: how much of each turbulence model the gust suites' grids keep (closed forms, no draws)
+    "turbulence_level": Long("python -m laddermill_gym.studies.gusts.turbulence_level", "seconds", "wind.md"),
     # rotorcraft.md: the blade-tip guard's prediction error in turbulence, which sets its margin
     "tip_guard_margin": Long("python -m laddermill_gym.studies.rotorcraft.tip_guard_margin --episodes 32",
                              "seconds", "rotorcraft.md"),

@@ -235,3 +235,46 @@ def test_fade_in_scales_the_field_and_its_rate():
         rate = np.array(gust_rate(*(p0 + vel * t), *vel, t, gp, gv))
         np.testing.assert_allclose(rate, fd, rtol=1e-5, atol=1e-6)
         np.testing.assert_allclose(rate, ref_rate(wind, p0 + vel * t, vel, t), atol=1e-9)
+
+
+def test_low_band_is_the_kaimal_spectrums_closed_form_integral():
+    """The variance below kappa_max of S = 4 sigma^2 L / (1 + 6 kappa L)^(5/3) is sigma^2 (1 - (1 + 6 kappa_max
+    L)^(-2/3)) in closed form; the coherence decay at zero wavenumber is IEC's 12 x 0.12 / L_c."""
+    from laddermill_gym.atmosphere.turbulence import low_band
+
+    U, lam, K = 8.0, 42.0, 1.0 / 1400.0
+    sigma = 0.14 * (0.75 * U + 5.6)  # class B
+    h = np.array([90.0, 100.0, 110.0])
+    lows = low_band("NTM", K, h, "IB", U, 100.0, "moderate", None)
+    for (var, _), (ratio, scale) in zip(lows, ((1.0, 8.1), (0.8, 2.7), (0.5, 0.66)), strict=True):
+        L = scale * lam
+        np.testing.assert_allclose(var, (ratio * sigma) ** 2 * (1.0 - (1.0 + 6.0 * K * L) ** (-2.0 / 3.0)), rtol=1e-6)
+    np.testing.assert_allclose(lows[0][1], 12.0 * 0.12 / (8.1 * lam), rtol=1e-12)  # L_c = 8.1 Lambda_1 (eq. B.4)
+
+
+def test_offset_mode_keeps_the_spectrums_level_and_adds_the_low_band_as_row_offsets():
+    """On a 700 m grid (a gusts-v1 NTM scenario's) the default rescales the kept modes to sigma^2; "offset" keeps
+    them at S(kappa) dkappa (their closed-form sum) and adds the variance below the first mode as each row's mean
+    over the grid (the Fourier series has no mean mode), the rows' offsets correlated exp(-12 x 0.12 dh / L_c)."""
+    from laddermill_gym.atmosphere import turbulence_models as tm
+
+    kw = dict(model="NTM", wind_class="IB", wind_speed=8.0, hub_height=100.0, heights=(100.0, 140.0), dh=40.0,
+              along_wind=(-100.0, 100.0), dxi=10.0)
+    t_end = 60.0
+    offset = Turbulence(**kw, low_frequencies="offset")
+    g = offset.grid_geometry(t_end)
+    dk = 1.0 / (g.n_xi * g.dxi)
+    kappa = dk * np.arange(1, (g.n_xi + 1) // 2)
+    sigma, L = 0.14 * (0.75 * 8.0 + 5.6), 8.1 * 42.0
+    kept = float(np.sum(tm.kaimal_spectrum(kappa, sigma, L)) * dk)
+    low = sigma ** 2 * (1.0 - (1.0 + 6.0 * 0.5 * dk * L) ** (-2.0 / 3.0))
+    assert kept < 0.7 * sigma ** 2  # a short grid: the rescaling raised the kept modes by more than 1.4
+    u = fields(offset, t_end, 600)[..., 0]  # (600, n_xi, 2)
+    means = u.mean(axis=1)
+    assert means.var(axis=0) == pytest.approx(np.full(2, low), rel=0.15)
+    rho = np.corrcoef(means[:, 0], means[:, 1])[0, 1]
+    assert rho == pytest.approx(math.exp(-12.0 * 0.12 * 40.0 / L), abs=0.05)
+    assert (u - means[:, None, :]).var(axis=1).mean(axis=0) == pytest.approx(np.full(2, kept), rel=0.1)
+    rescaled = fields(Turbulence(**kw), t_end, 200)[..., 0]
+    assert rescaled.var(axis=1).mean(axis=0) == pytest.approx(np.full(2, sigma ** 2), rel=0.1)
+    assert np.abs(rescaled.mean(axis=1)).max() < 1e-9  # no offset in the default

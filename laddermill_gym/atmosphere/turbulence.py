@@ -8,11 +8,12 @@ Kaimal spectra, MIL-F-8785C Dryden and von Karman (light / moderate / severe, in
 height).
 
 Synthesis (:func:`synthesize`): per component and height a Gaussian series along xi with the model's
-spectrum (a sum of Fourier modes with complex normal amplitudes, the discrete spectrum scaled so the record's
-variance is sigma^2), correlated across heights with the exponential coherence Coh(r, kappa) = exp(-k(kappa) r)
-of IEC 61400-1 eq. B.4. An exponential coherence on a line is a Markov chain in height, so the correlated
-amplitudes follow exactly from a first-order recursion over the rows, X_j = rho_j X_(j-1) + sqrt(1 - rho_j^2)
-e_j, rho_j = exp(-k dh): O(n_f n_h) work and no Cholesky factorisation.
+spectrum (a sum of Fourier modes with complex normal amplitudes; by default the discrete spectrum scaled so the
+record's variance is sigma^2, else at the model's level plus a row offset for the variance below the first mode:
+``Turbulence.low_frequencies``), correlated across heights with the exponential coherence Coh(r, kappa) =
+exp(-k(kappa) r) of IEC 61400-1 eq. B.4. An exponential coherence on a line is a Markov chain in height, so the
+correlated amplitudes follow exactly from a first-order recursion over the rows, X_j = rho_j X_(j-1) + sqrt(1 -
+rho_j^2) e_j, rho_j = exp(-k dh): O(n_f n_h) work and no Cholesky factorisation.
 """
 
 from __future__ import annotations
@@ -26,13 +27,21 @@ from laddermill_gym.atmosphere import turbulence_models as tm
 from laddermill_gym.atmosphere.disturbances import Disturbance
 from laddermill_gym.atmosphere.field import GridGeometry, GustGrid
 
-__all__ = ["Turbulence", "TURBULENCE_MODELS", "synthesize", "turbulence_spectra"]
+__all__ = ["Turbulence", "TURBULENCE_MODELS", "LOW_FREQUENCY_MODES", "low_band", "synthesize", "turbulence_spectra"]
 
 TURBULENCE_MODELS = ("NTM", "ETM", "Dryden", "VonKarman")
+#: What a grid shorter than the turbulence's longest scales does with the variance below its first mode: "rescale"
+#: the modes it keeps so each row's record has the model's sigma^2 (the suites up to gusts-v5; on their grids this
+#: raises the kept spectrum 1.4-2.5 times, docs/wind.md), or keep them at the spectrum's own level and add the
+#: variance below the first mode as one random "offset" per row (coherent between rows as the spectrum at zero
+#: wavenumber).
+LOW_FREQUENCY_MODES = ("rescale", "offset")
+#: Points of the Simpson rule for the variance below the first mode (the spectra are smooth there)
+_LOW_BAND_POINTS = 129
 
 
 def synthesize(spectra: np.ndarray, sigma: np.ndarray, decay: np.ndarray, dh: float, dkappa: float,
-               n_xi: int, rng: np.random.Generator) -> np.ndarray:
+               n_xi: int, rng: np.random.Generator, rescale: bool = True, low=None) -> np.ndarray:
     """One component of a frozen field on n_xi columns x n_h rows.
 
     Parameters
@@ -50,7 +59,12 @@ def synthesize(spectra: np.ndarray, sigma: np.ndarray, decay: np.ndarray, dh: fl
     n_xi : int
         Record length (columns); n_f = ceil(n_xi / 2) - 1 (no mean, no Nyquist mode).
     rng : numpy Generator
-        Draws 2 n_f n_h standard normals.
+        Draws 2 n_f n_h standard normals (and n_h more with ``low``).
+    rescale : bool
+        Scale the discrete spectrum so each row's record has variance sigma^2 (else S(kappa) dkappa per mode).
+    low : (variance (n_h,), decay (n_h - 1,)) or None
+        The variance [m^2/s^2] below the first mode, added as one random offset per row whose rows are correlated
+        exp(-decay dh) (the coherence at zero wavenumber); None: nothing added.
 
     Returns
     -------
@@ -66,10 +80,31 @@ def synthesize(spectra: np.ndarray, sigma: np.ndarray, decay: np.ndarray, dh: fl
         r = rho[:, j - 1]
         x[:, j] = r * x[:, j - 1] + np.sqrt(1.0 - r * r) * e[:, j]
     var = spectra * dkappa  # variance per mode
-    var *= (sigma ** 2 / np.maximum(var.sum(axis=0), 1e-300))[None, :]
+    if rescale:
+        var *= (sigma ** 2 / np.maximum(var.sum(axis=0), 1e-300))[None, :]
     coef = np.zeros((n_xi // 2 + 1, n_h), dtype=complex)
     coef[1: n_f + 1] = np.sqrt(var / 2.0) * x * n_xi  # E|c|^2 = S dkappa / 2; irfft divides by n_xi
-    return np.fft.irfft(coef, n=n_xi, axis=0)
+    values = np.fft.irfft(coef, n=n_xi, axis=0)
+    if low is not None:
+        low_var, low_decay = low
+        z = rng.standard_normal(n_h)
+        offset = np.empty(n_h)
+        offset[0] = z[0]
+        for j in range(1, n_h):
+            r = math.exp(-low_decay[j - 1] * dh)
+            offset[j] = r * offset[j - 1] + math.sqrt(1.0 - r * r) * z[j]
+        values += (np.sqrt(low_var) * offset)[None, :]
+    return values
+
+
+def low_band(model: str, kappa_max: float, h: np.ndarray, *model_args) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Per component (u, v, w): the variance [m^2/s^2] of the spectrum between 0 and ``kappa_max`` [1/m] at each
+    height h (n_h,) (Simpson's rule on the model's own spectrum) and the coherence decay [1/m] between rows at zero
+    wavenumber (n_h - 1,). ``model_args``: as :func:`turbulence_spectra` after ``h``."""
+    from scipy.integrate import simpson
+
+    k = np.linspace(0.0, kappa_max, _LOW_BAND_POINTS)
+    return [(simpson(s, x=k, axis=0), dec[0]) for s, _, dec in turbulence_spectra(model, k, h, *model_args)]
 
 
 def turbulence_spectra(model: str, kappa: np.ndarray, h: np.ndarray, wind_class: str, wind_speed: float,
@@ -142,6 +177,10 @@ class Turbulence(Disturbance):
     fade_in : float
         Time [s] over which the field rises from 0 to full strength, 0.5 (1 - cos(pi t / fade_in)), so an
         episode starting from a state trimmed in steady wind does not meet the whole field at once (0: none).
+    low_frequencies : "rescale" or "offset"
+        The variance below the grid's first mode (:data:`LOW_FREQUENCY_MODES`): "rescale" (the default, the suites
+        up to gusts-v5) puts it into the kept modes, "offset" keeps the spectrum's level and adds it as one
+        random offset per row.
     """
 
     model: str = "NTM"
@@ -156,8 +195,12 @@ class Turbulence(Disturbance):
     dxi: float = 5.0
     heading: float = 0.0
     fade_in: float = 0.0
+    low_frequencies: str = "rescale"
 
     def __post_init__(self):
+        if self.low_frequencies not in LOW_FREQUENCY_MODES:
+            raise ValueError(f"Turbulence.low_frequencies = {self.low_frequencies!r}: must be one of "
+                             f"{list(LOW_FREQUENCY_MODES)}")
         if self.model not in TURBULENCE_MODELS:
             raise ValueError(f"Turbulence.model = {self.model!r}: must be one of {list(TURBULENCE_MODELS)}")
         for name in ("wind_speed", "hub_height", "dh", "dxi"):
@@ -199,7 +242,10 @@ class Turbulence(Disturbance):
         n_f = (g.n_xi + 1) // 2 - 1
         dkappa = 1.0 / (g.n_xi * g.dxi)
         kappa = dkappa * np.arange(1, n_f + 1)
-        comps = turbulence_spectra(self.model, kappa, h, self.wind_class, self.wind_speed, self.hub_height,
-                                   self.severity, self.w20)
-        values = np.stack([synthesize(s, sig, dec, g.dh, dkappa, g.n_xi, rng) for s, sig, dec in comps], axis=-1)
+        args = (self.wind_class, self.wind_speed, self.hub_height, self.severity, self.w20)
+        comps = turbulence_spectra(self.model, kappa, h, *args)
+        offset = self.low_frequencies == "offset"
+        lows = low_band(self.model, 0.5 * dkappa, h, *args) if offset else [None] * len(comps)
+        values = np.stack([synthesize(s, sig, dec, g.dh, dkappa, g.n_xi, rng, rescale=not offset, low=low)
+                           for (s, sig, dec), low in zip(comps, lows, strict=True)], axis=-1)
         return GustGrid(values, g.xi0, g.dxi, g.h0, g.dh, g.advection, g.heading, g.fade_in)
