@@ -278,3 +278,23 @@ def test_offset_mode_keeps_the_spectrums_level_and_adds_the_low_band_as_row_offs
     rescaled = fields(Turbulence(**kw), t_end, 200)[..., 0]
     assert rescaled.var(axis=1).mean(axis=0) == pytest.approx(np.full(2, sigma ** 2), rel=0.1)
     assert np.abs(rescaled.mean(axis=1)).max() < 1e-9  # no offset in the default
+
+
+@pytest.mark.parametrize("env_id, top", [("laddermill_gym/LadderChain-v0", 400.0),
+                                         ("laddermill_gym/Rotorcraft-v0", 20.0),
+                                         ("laddermill_gym/PumpingKite-v0", 250.0)])
+def test_a_grid_below_the_start_warns_naming_the_field(env_id, top):
+    """Turbulence's default grid (0-400 m) under the chain's wings (up to about 3.5 km) held the top row's gust for
+    every wing above it without a word (review of 2026-12-07); as for LadderMill's loop, a grid that does not cover
+    the start's bodies, nodes and anchors now warns, naming the field and the heights needed."""
+    import warnings
+
+    import gymnasium as gym
+
+    turb = {"type": "Turbulence", "model": "NTM", "wind_class": "IB", "wind_speed": 10.0, "hub_height": 100.0,
+            "heights": [0.0, top], "dh": 10.0, "along_wind": [-5000.0, 5000.0], "dxi": 20.0}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)  # Gymnasium: v0 ids out of date
+        with pytest.warns(RuntimeWarning, match=rf"disturbances\[0\]\.heights = \[0, {top:g}\] m does not cover the "
+                                                r"start's bodies and cable nodes \(-?[\d.]+ to [\d.]+ m\)"):
+            gym.make(env_id, disturbances=[turb], episode_time=10.0).close()

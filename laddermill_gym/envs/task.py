@@ -180,12 +180,11 @@ class WingTask(TaskCore):
             self.scene, x_trim, u_trim, self.physics_step_note = _stable_step_scene(
                 str(scene), options, (sc, x_trim, u_trim), control_dt, self.disturbances, episode_time, wind_dt)
             sc, asm = self.scene, self.scene.assembly
+            self._check_turbulence_cover(asm, x_trim)
             settings = (sc.settings if type(jacobian_every) is int and jacobian_every == 1  # True, 1.0: refused below
                         else jacobian_settings(sc.settings, jacobian_every))
             self.n_substeps = int(round(control_dt / sc.settings.dt))
-            self.control_dt = float(control_dt)
-            self.episode_time = float(episode_time)
-            self.wind_dt = float(wind_dt)
+            self.control_dt, self.episode_time, self.wind_dt = float(control_dt), float(episode_time), float(wind_dt)
             geom = grid_geometry(self.disturbances, self.episode_time)  # a spatial disturbance's gust grid
             self.reward_config = config_from(reward, RewardConfig, "reward")
             self.termination_config = config_from(termination, TerminationConfig, "termination")

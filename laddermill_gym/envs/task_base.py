@@ -220,6 +220,14 @@ class TaskCore:
         self.alpha_lo, self.alpha_hi = np.radians(tc.alpha_range_deg)
         self.beta_max = math.radians(tc.max_abs_beta_deg)
 
+    def _check_turbulence_cover(self, assembly, state) -> None:
+        """Warn (RuntimeWarning, naming the field and the range needed) for each turbulence disturbance whose grid
+        does not cover the start ``state``'s bodies, cable nodes and anchors: outside it the kernels hold the grid's
+        edge values, silently (an episode moves the points further; LadderMill checks its whole loop)."""
+        from laddermill_gym.envs.laddermill.gust_extent import START, check_turbulence_cover, start_points
+
+        check_turbulence_cover(self.disturbances, start_points(assembly, state), what=START)
+
     def _make_batch(self, n_copies: int, assembly, settings, parallel, kernel, launcher, **batch_kwargs) -> None:
         """``n_copies`` (B), ``parallel`` (several threads; None: :func:`default_parallel`), ``_kernel`` (the step
         ``kernel`` on the copies, on numba's thread count when parallel: :class:`~.copy_threads.CopyThreads` with the

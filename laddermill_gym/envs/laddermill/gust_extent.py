@@ -26,7 +26,8 @@ import numpy as np
 
 from laddermill_gym.kernels.contract import B3_POS, N3_POS
 
-__all__ = ["LoopExtent", "loop_points", "extent", "point_positions", "check_turbulence_cover"]
+__all__ = ["LoopExtent", "loop_points", "extent", "point_positions", "check_turbulence_cover", "start_points",
+           "LOOP", "START"]
 
 
 class LoopExtent(NamedTuple):
@@ -58,6 +59,13 @@ def loop_points(op, assembly) -> np.ndarray:
     return np.concatenate([orbit, at_op, np.asarray(assembly.fixed_points, dtype=float).reshape(-1, 3)])
 
 
+def start_points(assembly, state: np.ndarray) -> np.ndarray:
+    """Points (m, 3) [m] a scene's turbulence must cover at its start ``state`` (n_state,): every wing or body CG,
+    every free cable node and the fixed points (``assembly.fixed_points``, where the cable is anchored)."""
+    return np.concatenate([point_positions(assembly, state)[0],
+                           np.asarray(assembly.fixed_points, dtype=float).reshape(-1, 3)])
+
+
 def extent(points: np.ndarray, heading: float = 0.0) -> LoopExtent:
     """The :class:`LoopExtent` of ``points`` (m, 3) [m] for a grid of ``heading`` [rad]."""
     p = np.asarray(points, dtype=float).reshape(-1, 3)
@@ -70,10 +78,17 @@ def _uncovered(lo_hi: tuple[float, float], need: tuple[float, float]) -> bool:
     return lo_hi[0] > need[0] or lo_hi[1] < need[1]
 
 
-def check_turbulence_cover(disturbances, points: np.ndarray, where: str = "disturbances") -> list[str]:
+#: What the mill's points are, in the warning's text
+LOOP = "the laddermill's loop ({lo:.1f} to {hi:.1f} m: wings over a transfer period, cable nodes and ground stations)"
+#: What a single craft's or a chain's points are, in the warning's text (they start there; an episode moves them)
+START = "the start's bodies and cable nodes ({lo:.1f} to {hi:.1f} m)"
+
+
+def check_turbulence_cover(disturbances, points: np.ndarray, where: str = "disturbances",
+                           what: str = LOOP) -> list[str]:
     """Warn (RuntimeWarning) for each turbulence disturbance (one with ``heights``, ``along_wind`` and ``heading``)
     whose grid does not cover ``points`` (m, 3) [m]; returns the warning texts (empty: all covered). The text names
-    the disturbance, its field and value, and the range the loop needs."""
+    the disturbance, its field and value, and the range ``what`` (a format with ``lo``, ``hi`` [m]) needs."""
     texts = []
     for i, d in enumerate(disturbances):
         if not all(hasattr(d, f) for f in ("heights", "along_wind", "heading")):
@@ -81,9 +96,9 @@ def check_turbulence_cover(disturbances, points: np.ndarray, where: str = "distu
         need = extent(points, d.heading)
         for field, have, req in (("heights", d.heights, need.heights), ("along_wind", d.along_wind, need.along_wind)):
             if _uncovered(tuple(have), req):
-                texts.append(f"{where}[{i}].{field} = [{have[0]:g}, {have[1]:g}] m does not cover the laddermill's "
-                             f"loop ({req[0]:.1f} to {req[1]:.1f} m: wings over a transfer period, cable nodes and "
-                             "ground stations); outside the grid the edge values of the turbulence hold")
+                texts.append(f"{where}[{i}].{field} = [{have[0]:g}, {have[1]:g}] m does not cover "
+                             f"{what.format(lo=req[0], hi=req[1])}; outside the grid the edge values of the "
+                             "turbulence hold")
     for t in texts:
         warnings.warn(t, RuntimeWarning, stacklevel=3)
     return texts

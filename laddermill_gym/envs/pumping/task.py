@@ -80,6 +80,7 @@ class PumpingTask(TaskCore):
         self.n_substeps = substeps_per_period(sc.name, sc.settings, self.control_dt, control_dt)
         self.x_trim, self.u_trim = x0, u0
         asm = self.pumping.assembly
+        self._check_turbulence_cover(asm, x0)
         self.winch = asm.station
         self.n_wings = 1
         self._make_batch(B, asm, sc.settings, parallel, step_observe_serial, launch_step_observe)

@@ -204,6 +204,7 @@ class CraftTask(TaskCore):
                          n_controls=self.sim.n_controls, vehicle_sizes=self.sim.vehicle_sizes())
         self.batch.states[:] = self.x_trim
         self.batch.controls[:] = self.u_trim
+        self._check_turbulence_cover(c.assembly, self.x_trim)
         self.tether_end = np.array([els[-1] for els in c.layout.tether_elements], dtype=np.int64)
         self.raw_obs = np.zeros((B, N_CRAFT_OBS))
         self.obs = np.zeros((B, N_CRAFT_OBS))
