@@ -87,9 +87,7 @@ class TaskSB3VecEnv(VecEnv):
         if self._renderer is not None:
             self._renderer.close()
             self._renderer = None
-        kernel = getattr(self.task, "_kernel", None)
-        if hasattr(kernel, "close"):  # the copies' threads (envs/copy_threads.py)
-            kernel.close()
+        self.task.close_threads()
 
     def get_attr(self, attr_name: str, indices=None) -> list[Any]:
         """``spec`` (the registered EnvSpec with this env's arguments), ``render_mode``, or an attribute of the

@@ -220,6 +220,13 @@ class TaskCore:
         self.alpha_lo, self.alpha_hi = np.radians(tc.alpha_range_deg)
         self.beta_max = math.radians(tc.max_abs_beta_deg)
 
+    def close_threads(self) -> None:
+        """Shut the copies' thread pool, where the step kernel runs on one (envs/copy_threads.py); the envs and the
+        SB3 adapters call it when they close."""
+        kernel = getattr(self, "_kernel", None)
+        if hasattr(kernel, "close"):
+            kernel.close()
+
     def _check_turbulence_cover(self, assembly, state) -> None:
         """Warn (RuntimeWarning, naming the field and the range needed) for each turbulence disturbance whose grid
         does not cover the start ``state``'s bodies, cable nodes and anchors: outside it the kernels hold the grid's

@@ -222,9 +222,7 @@ class TaskVectorEnv(VectorEnv):
         if self._renderer is not None:
             self._renderer.close()
             self._renderer = None
-        kernel = getattr(self.task, "_kernel", None)
-        if hasattr(kernel, "close"):  # the copies' threads (envs/copy_threads.py)
-            kernel.close()
+        self.task.close_threads()
 
 
 def _single_dtype(v: np.ndarray):

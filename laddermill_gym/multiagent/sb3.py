@@ -98,9 +98,7 @@ class SharedPolicyVecEnv(VecEnv):
         return obs, reward.astype(np.float32), dones, infos
 
     def close(self) -> None:
-        kernel = getattr(self.task, "_kernel", None)
-        if hasattr(kernel, "close"):  # the copies' threads (envs/copy_threads.py), as the native vector env's close
-            kernel.close()
+        self.task.close_threads()  # the copies' threads, as the native vector env's close
 
     def get_attr(self, attr_name: str, indices=None) -> list[Any]:
         """``render_mode`` (None) or an attribute of the shared task (the same for every env)."""
