@@ -21,6 +21,17 @@ GUSTS_V2_CHECKS = tuple(
 
 ON = r"(\d+ / \d+)"
 #: The gusts-v1 table: each env's scorecard, open loop and LQR, exact (long groups gusts_v1_<env>: gust_bench.json)
+#: The gusts-v6 table (long groups gusts_v6_<env>: gust_bench.json): each row's counts and the lost scenarios
+GUSTS_V6_CHECKS = (
+    (rf"\| TetheredWing-v0 \(gusts-v6\) \| {ON} \| {ON} \| {ON} [^|]*\| \|",
+     tuple(f"{{gusts_v6_tethered_wing[scorecard][{c}]}}" for c in ("open_loop", "lqr", "ppo_tethered_wing"))),
+    (rf"\| Rotorcraft-v0 \(gusts-v6\) \| {ON} \| {ON} \| {ON} [^|]*\| \|",
+     tuple(f"{{gusts_v6_rotorcraft[scorecard][{c}]}}" for c in ("open_loop", "lqr", "ppo_rotorcraft"))),
+    (rf"\| Rotorcraft-v1 \(gusts-v6\) \| {ON} \| {ON} \| {ON} [^|]*\| {ON} \|",
+     tuple(f"{{gusts_v6_rotorcraft_v1[scorecard][{c}]}}" for c in ("open_loop", "lqr", "ppo_rotorcraft", "lqr_guard"))),
+    (r"On gusts-v6 the wing's LQR loses ([^:]*?), and the guard loses ([^:]*?): fields",
+     ("@{gusts_v6_tethered_wing[lost][lqr]}", "@{gusts_v6_rotorcraft_v1[lost][lqr_guard]}")),
+)
 GUSTS_V1_CHECKS = tuple(
     (rf"\| {env} \| {ON} [^|]*\| {ON}", (f"{{gusts_v1_{group}[scorecard][open_loop]}}",
                                        f"{{gusts_v1_{group}[scorecard][lqr]}}"))
@@ -69,7 +80,7 @@ GUSTS_V2_CHECKS += ((r"\(slots (\d+)-(\d+)(?=, 129-199 m\))", ("{gusts_v2_mill[l
                                                                 "{gusts_v2_mill[open_loop/EWS_IA][f0][slot]}")),)
 WIND = Covered(
     groups=("wind_data", "gusts_v2_pumping", "gusts_v2_mill"),
-    checks=GUSTS_V2_CHECKS + GUSTS_V1_CHECKS + (
+    checks=GUSTS_V2_CHECKS + GUSTS_V1_CHECKS + GUSTS_V6_CHECKS + (
             (r"Check values \(class IA, 10 m/s, D = 10 m\): EOG V_gust = ([\d.]+) m/s, peak ([\d.]+) m/s at ([\d.]+) "
              r"s; EDC theta_e = ([\d.]+) deg", tuple(W % k for k in ("v_gust", "peak", "t_peak", "theta_e"))),
             (r"(\d+) x (\d+) x 3 floats = ([\d.]+) MB \(([\d,]+) bytes\)",

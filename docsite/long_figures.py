@@ -86,6 +86,13 @@ LONG = {
     "gusts_v5_rotorcraft_v1": _bench("gusts-v5", "Rotorcraft-v1", "open_loop lqr lqr_guard "
                                      "lqr_guard:lqr_tip_hold_rotorcraft ppo_rotorcraft",
                                      "rotorcraft.md", "minutes (9 scenarios x 1-3 seeds)"),
+    # wind.md: gusts-v6 (every field with low_frequencies: offset) on the single craft
+    "gusts_v6_tethered_wing": _bench("gusts-v6", "TetheredWing-v0", "open_loop lqr ppo_tethered_wing", "wind.md",
+                                     "minutes (12 scenarios x 1-3 seeds)"),
+    "gusts_v6_rotorcraft": _bench("gusts-v6", "Rotorcraft-v0", "open_loop lqr ppo_rotorcraft", "wind.md",
+                                  "minutes (9 scenarios x 1-3 seeds)"),
+    "gusts_v6_rotorcraft_v1": _bench("gusts-v6", "Rotorcraft-v1", "open_loop lqr lqr_guard ppo_rotorcraft", "wind.md",
+                                     "minutes (9 scenarios x 1-3 seeds)"),
     # wind.md: how much of each turbulence model the gust suites' grids keep (closed forms, no draws)
     "turbulence_level": Long("python -m laddermill_gym.studies.gusts.turbulence_level", "seconds", "wind.md"),
     # rotorcraft.md: the blade-tip guard's prediction error in turbulence, which sets its margin
