@@ -282,7 +282,8 @@ def test_offset_mode_keeps_the_spectrums_level_and_adds_the_low_band_as_row_offs
 
 @pytest.mark.parametrize("env_id, top", [("laddermill_gym/LadderChain-v0", 400.0),
                                          ("laddermill_gym/Rotorcraft-v0", 20.0),
-                                         ("laddermill_gym/PumpingKite-v0", 250.0)])
+                                         ("laddermill_gym/PumpingKite-v0", 250.0),
+                                         ("laddermill_gym/PointMassChain-v0", 400.0)])
 def test_a_grid_below_the_start_warns_naming_the_field(env_id, top):
     """Turbulence's default grid (0-400 m) under the chain's wings (up to about 3.5 km) held the top row's gust for
     every wing above it without a word (review of 2026-12-07); as for LadderMill's loop, a grid that does not cover

@@ -19,6 +19,7 @@ import numpy as np
 
 from laddermill_gym.atmosphere.disturbances import sample_wind_field
 from laddermill_gym.envs.actions import clip_actions
+from laddermill_gym.envs.laddermill.gust_extent import START, check_turbulence_cover
 from laddermill_gym.envs.physics_step import ENV_STEP_MARGIN, periods_below
 from laddermill_gym.envs.pointmass.batch import (
     POINTMASS_FAILURES,
@@ -164,6 +165,7 @@ class PointMassTask(TaskCore):
         self.groups = groups
         self.kite_nodes = s.kite_nodes
         self.nominal = self.x_trim.reshape(-1, 6)[self.kite_nodes, :3].copy()
+        check_turbulence_cover(self.disturbances, self.x_trim.reshape(-1, 6)[:, :3], what=START)  # every node
         self.n_actions = 2 * (1 if groups == "all" else s.n_kites)
         self.trim_action = np.zeros(self.n_actions)
         self.n_ground = 1 + (s.end is not None)
