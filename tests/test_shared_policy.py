@@ -169,10 +169,19 @@ def test_training_smoke_writes_a_policy_that_evaluate_loads(tmp_path):
     cfg = tmp_path / "smoke.yaml"
     cfg.write_text(src)
     assert main([str(cfg), "--out", str(tmp_path / "run")]) == 0
-    for f in ("model.zip", "bc_model.zip", "training_curve.csv", "training_curve.png", "shared_policy.yaml"):
+    for f in ("model.zip", "bc_model.zip", "training_curve.csv", "training_curve.png", "shared_policy.yaml",
+              "run.yaml"):
         assert (tmp_path / "run" / f).is_file()
+    import yaml
+
+    record = yaml.safe_load((tmp_path / "run" / "run.yaml").read_text())  # how the run was made
+    assert record["seed"] == yaml.safe_load(src)["seed"] and "laddermill_gym" in record["versions"]
+    from laddermill_gym.control.shared_controller import LinearActorController
+
     ctrl = make_controller(str(tmp_path / "run"), LM1)
-    assert isinstance(ctrl, SharedPolicyController)
+    # the run exports its linear actor, which the factory flies without torch (else the SB3 policy)
+    assert isinstance(ctrl, LinearActorController if LinearActorController.available(tmp_path / "run")
+                      else SharedPolicyController)
 
 
 def test_teacher_labels_are_the_lqr_law_before_its_clip():

@@ -1,5 +1,5 @@
 """The record of how a training run was made: ``run.yaml`` in the run folder of ``laddermill train`` (and
-``laddermill train-seeds``).
+``laddermill train-seeds``, and the shared per-wing policy's ``harness/shared_train.py``).
 
 It holds the command line (``command``: ``sys.argv`` as a list of strings), the training seed (``seed``), torch's
 thread count (``torch_threads``) and the versions of the packages the result depends on (``versions``: laddermill_gym,

@@ -36,6 +36,7 @@ import numpy as np
 import yaml
 from tqdm import tqdm
 
+from laddermill_gym.harness.run_record import write_run_record
 from laddermill_gym.harness.shared_config import SharedTrainConfig, load_shared_config
 from laddermill_gym.harness.shared_fit import band_weights, bryson_scales
 from laddermill_gym.harness.shared_teacher import linear_teacher, make_teacher
@@ -243,6 +244,7 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
                                                                               "control_dt", "n_wings")},
                 config=str(cfg.file.name), seed=cfg.seed)
     (out / "shared_policy.yaml").write_text(yaml.safe_dump(meta, sort_keys=False))
+    write_run_record(out, cfg.seed)  # the command line, seed, torch threads and package versions
     pk = _policy_kwargs(cfg, view, teacher.trim_attitude, bryson_scales(cfg.env_id, cfg.teacher_config))
     model = PPO("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=pk, device="cpu", verbose=0,
                 **cfg.hyperparameters)
