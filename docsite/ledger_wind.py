@@ -30,10 +30,11 @@ GUSTS_V6_CHECKS = (
     (rf"\| Rotorcraft-v1 \(gusts-v6\) \| {ON} \| {ON} \| {ON} [^|]*\| {ON} \|",
      tuple(f"{{gusts_v6_rotorcraft_v1[scorecard][{c}]}}" for c in ("open_loop", "lqr", "ppo_rotorcraft", "lqr_guard"))),
     (rf"LadderChain-v0's open loop {ON} and LQR {ON}; PumpingKite-v0's open loop {ON} and LQR-assisted cycle {ON}; "
-     rf"PumpingKite-v1's crosswind controller {ON}\.",
+     rf"PumpingKite-v1's crosswind controller {ON}; LadderMill-v0's open loop {ON} and LQR {ON}\.",
      ("{gusts_v6_ladder_chain[scorecard][open_loop]}", "{gusts_v6_ladder_chain[scorecard][lqr]}",
       "{gusts_v6_pumping[scorecard][open_loop]}", "{gusts_v6_pumping[scorecard][lqr]}",
-      "{gusts_v6_pumping_v1[scorecard][crosswind]}")),
+      "{gusts_v6_pumping_v1[scorecard][crosswind]}", "{gusts_v6_laddermill[scorecard][open_loop]}",
+      "{gusts_v6_laddermill[scorecard][lqr]}")),
     (r"On gusts-v6 the wing's LQR loses ([^:]*?), and the guard loses ([^:]*?): fields",
      ("@{gusts_v6_tethered_wing[lost][lqr]}", "@{gusts_v6_rotorcraft_v1[lost][lqr_guard]}")),
 )

@@ -97,6 +97,7 @@ LONG = {
                                     "minutes (9 scenarios x 1-3 seeds)"),
     "gusts_v6_pumping": _bench("gusts-v6", "PumpingKite-v0", "open_loop lqr", "wind.md", "about a minute"),
     "gusts_v6_pumping_v1": _bench("gusts-v6", "PumpingKite-v1", "crosswind", "wind.md", "about a minute"),
+    "gusts_v6_laddermill": _bench("gusts-v6", "LadderMill-v0", "open_loop lqr", "wind.md", "minutes"),
     # wind.md: how much of each turbulence model the gust suites' grids keep (closed forms, no draws)
     "turbulence_level": Long("python -m laddermill_gym.studies.gusts.turbulence_level", "seconds", "wind.md"),
     # rotorcraft.md: the blade-tip guard's prediction error in turbulence, which sets its margin
