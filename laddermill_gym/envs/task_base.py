@@ -231,7 +231,7 @@ class TaskCore:
         """Warn (RuntimeWarning, naming the field and the range needed) for each turbulence disturbance whose grid
         does not cover the start ``state``'s bodies, cable nodes and anchors: outside it the kernels hold the grid's
         edge values, silently (an episode moves the points further; LadderMill checks its whole loop)."""
-        from laddermill_gym.envs.laddermill.gust_extent import START, check_turbulence_cover, start_points
+        from laddermill_gym.envs.gust_cover import START, check_turbulence_cover, start_points
 
         check_turbulence_cover(self.disturbances, start_points(assembly, state), what=START)
 

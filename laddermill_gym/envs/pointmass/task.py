@@ -19,7 +19,7 @@ import numpy as np
 
 from laddermill_gym.atmosphere.disturbances import sample_wind_field
 from laddermill_gym.envs.actions import clip_actions
-from laddermill_gym.envs.laddermill.gust_extent import START, check_turbulence_cover
+from laddermill_gym.envs.gust_cover import START, check_turbulence_cover
 from laddermill_gym.envs.physics_step import ENV_STEP_MARGIN, periods_below
 from laddermill_gym.envs.pointmass.batch import (
     POINTMASS_FAILURES,
