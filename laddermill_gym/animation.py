@@ -5,13 +5,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.animation import FuncAnimation, PillowWriter
+from matplotlib.cm import ScalarMappable
+from matplotlib.colors import Normalize
 
+from laddermill_gym.figure_files import subplots
 from laddermill_gym.plotting import draw_loop
 from laddermill_gym.sim.recording import Recording
 
@@ -30,13 +29,13 @@ def animate_loop(rec: Recording, asm, path: Path, max_frames: int = 120, fps: in
     n = len(rec.t)
     frames = np.unique(np.linspace(0, n - 1, min(n, max_frames)).round().astype(int))
     ten = rec.views["element_tension_N"] / 1e3
-    norm = plt.Normalize(float(ten.min()), float(max(ten.max(), ten.min() + 1e-9)))
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 5))
+    norm = Normalize(float(ten.min()), float(max(ten.max(), ten.min() + 1e-9)))
+    fig, (ax1, ax2) = subplots(1, 2, figsize=(11, 5))
     (xl, hl), (_, yl) = _limits(rec, 0, 2, -1.0), _limits(rec, 0, 1, 1.0)
     y_half = max(abs(yl[0]), abs(yl[1]), 0.05 * (xl[1] - xl[0]))
     ax1.set(xlim=xl, ylim=hl, xlabel="x (into the wind) [m]", ylabel="altitude h [m]", title="side view")
     ax2.set(xlim=xl, ylim=(-y_half, y_half), xlabel="x [m]", ylabel="y (east) [m]", title="top view (y stretched)")
-    fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap="viridis"), ax=[ax1, ax2], label="tension [kN]",
+    fig.colorbar(ScalarMappable(norm=norm, cmap="viridis"), ax=[ax1, ax2], label="tension [kN]",
                  shrink=0.8)
     text = fig.suptitle(title)
     state = {"arts": []}
@@ -61,5 +60,4 @@ def animate_loop(rec: Recording, asm, path: Path, max_frames: int = 120, fps: in
     FuncAnimation(fig, update, frames=len(frames), blit=False).save(path, writer=PillowWriter(fps=fps), dpi=70)
     if bar is not None:
         bar.close()
-    plt.close(fig)
     return path

@@ -4,22 +4,22 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.cm import ScalarMappable
+from matplotlib.colors import Normalize
 
+from laddermill_gym.figure_files import release, subplots
 from laddermill_gym.sim.recording import Recording
 
 
 def save_figure(fig, path, dpi: int = 120) -> Path:
-    """Lay out ``fig``, write it to ``path`` (creating the folder) and close it. Returns the path."""
+    """Lay out ``fig``, write it to ``path`` (creating the folder) and, when pyplot made it, close it in pyplot.
+    Returns the path."""
     path = Path(path)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=dpi)
-    plt.close(fig)
+    release(fig)
     return path
 
 
@@ -68,13 +68,13 @@ def plot_shape(rec: Recording, path: Path, title: str = "", asm=None) -> Path:
     """Side view (x, h) and top view (x, y) of wings and cable at the first sample (faint) and the last (the cable
     coloured by element tension [kN]). Without ``asm`` (the assembly, for the element connectivity) only the wings
     and nodes are drawn."""
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 5.5))
+    fig, (ax1, ax2) = subplots(1, 2, figsize=(12, 5.5))
     if asm is not None:
         ten = rec.views["element_tension_N"] / 1e3
-        norm = plt.Normalize(float(ten[-1].min()), float(max(ten[-1].max(), ten[-1].min() + 1e-9)))
+        norm = Normalize(float(ten[-1].min()), float(max(ten[-1].max(), ten[-1].min() + 1e-9)))
         draw_loop(ax1, ax2, asm, rec.views, 0, norm, faint=True)
         draw_loop(ax1, ax2, asm, rec.views, -1, norm)
-        sm = plt.cm.ScalarMappable(norm=norm, cmap="viridis")
+        sm = ScalarMappable(norm=norm, cmap="viridis")
         fig.colorbar(sm, ax=[ax1, ax2], label=f"element tension at t = {rec.t[-1]:.1f} s [kN]", shrink=0.8)
         for ax in (ax1, ax2):
             ax.autoscale_view()
@@ -96,7 +96,6 @@ def plot_shape(rec: Recording, path: Path, title: str = "", asm=None) -> Path:
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=110)
-    plt.close(fig)
     return path
 
 
@@ -104,7 +103,7 @@ def plot_generator(rec: Recording, path: Path, title: str = "") -> Path:
     """Generator power (mechanical and electrical) [kW], the first and last elements' tensions [kN], the cable
     speed [m/s] and the cable paid out [m] of a moving-cable recording."""
     v = rec.views
-    fig, axs = plt.subplots(2, 2, figsize=(12, 7), sharex=True)
+    fig, axs = subplots(2, 2, figsize=(12, 7), sharex=True)
     axs[0, 0].plot(rec.t, v["generator_power_W"] / 1e3, label="mechanical")
     axs[0, 0].plot(rec.t, v["generator_electrical_power_W"] / 1e3, "--", label="electrical")
     span = rec.t[-1] - rec.t[0]
@@ -132,7 +131,7 @@ def plot_histories(rec: Recording, path: Path, title: str = "", wings: list[int]
     """Lateral position, Euler angles, angle of attack and sideslip of selected wings, and element tensions."""
     nw = rec.views["wing_position_m"].shape[1]
     wings = wings if wings is not None else sorted({0, nw // 2, nw - 1})
-    fig, axs = plt.subplots(3, 2, figsize=(12, 9), sharex=True)
+    fig, axs = subplots(3, 2, figsize=(12, 9), sharex=True)
     t = rec.t
     names = ("roll phi", "pitch theta", "yaw psi")
     for k in wings:

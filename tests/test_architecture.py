@@ -20,6 +20,7 @@ PACKAGE = ROOT / "laddermill_gym"
 #: than its own. Equal ranks may import each other only one way (no cycle, checked separately).
 RANK = {
     "contract": -1, "configs": 0, "kernels": 0, "atmosphere": 0,  # configs: the shipped data (a namespace package)
+    "figure_files": 0,  # figures for files on their own Agg canvas; imports matplotlib only
     "model": 1,
     "reference": 2, "sim": 2,
     "ladder": 3, "rotorcraft": 3, "quasisteady": 3,
@@ -37,7 +38,7 @@ ONLY = {
     "model": {"contract", "kernels", "atmosphere", "configs"},
     "reference": {"contract", "model"},
     "sim": {"contract", "kernels", "atmosphere", "model"},
-    "quasisteady": {"contract", "model", "atmosphere", "configs"},
+    "quasisteady": {"contract", "model", "atmosphere", "configs", "figure_files"},
     "derivations": {"model"},
 }
 #: studies/ by topic (issue 28): the other topics each topic may import (beside the shared modules at the top of

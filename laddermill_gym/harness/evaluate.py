@@ -140,17 +140,13 @@ def write_tables(out: Path, results: dict[str, EpisodeResults]) -> None:
 def plot_results(out: Path, results: dict[str, EpisodeResults], title: str) -> Path:
     """Lateral offset against time (episode 0) per controller; for chains also the largest excursion of
     every wing over the episode."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    from laddermill_gym.figure_files import subplots
     from laddermill_gym.plotting import save_figure
 
     first = next(iter(results.values()))
     nw = first.lateral_m.shape[2]
     ncol = 1 if nw == 1 else 2
-    fig, axes = plt.subplots(1, ncol, figsize=(6.5 * ncol, 4), squeeze=False)
+    fig, axes = subplots(1, ncol, figsize=(6.5 * ncol, 4), squeeze=False)
     ax = axes[0, 0]
     for i, (name, res) in enumerate(results.items()):
         for k in range(nw):

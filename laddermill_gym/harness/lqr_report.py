@@ -85,16 +85,12 @@ def report_mill(cfg) -> str:
 
 
 def rollout_figure(scene, x, u, controllers: dict, t_end: float, step: float, period: float, out: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    from laddermill_gym.figure_files import subplots
     from laddermill_gym.plotting import save_figure
 
     out.mkdir(parents=True, exist_ok=True)
     runs = {name: run_direction_step(scene, x, u, c, t_end, period, step) for name, c in controllers.items()}
-    fig, ax = plt.subplots(figsize=(6.5, 4))
+    fig, ax = subplots(figsize=(6.5, 4))
     for name, r in runs.items():
         dy = r.positions[:, :, 1] - r.positions[0, :, 1]
         ax.plot(r.t, dy, lw=0.8, label=f"{name}" + (f" (stopped: {r.error[:40]})" if r.error else ""))

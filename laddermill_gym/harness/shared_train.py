@@ -200,14 +200,10 @@ def _ppo_callback(cfg: SharedTrainConfig, log, pbar, t_end: float):
 
 def plot_curve(out: Path, rows: list[dict], lqr: dict | None) -> Path:
     """Episodes held and mean power against wall time, the LQR's as dashed lines."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    from laddermill_gym.figure_files import subplots
     from laddermill_gym.plotting import save_figure
 
-    fig, (a1, a2) = plt.subplots(2, 1, figsize=(6.5, 6), sharex=True)
+    fig, (a1, a2) = subplots(2, 1, figsize=(6.5, 6), sharex=True)
     for phase, style in (("imitation", "o-"), ("ppo", "s-")):
         r = [x for x in rows if x["phase"] == phase]
         a1.plot([x["minutes"] for x in r], [x["mean_length_s"] for x in r], style, label=phase)

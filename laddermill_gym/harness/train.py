@@ -118,14 +118,10 @@ def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm, stop=None):
 
 def plot_curve(out: Path, rows: list[dict], reference: dict[str, float] | None = None) -> Path:
     """Evaluation return against wall time, with horizontal reference lines (e.g. LQR, open loop)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    from laddermill_gym.figure_files import subplots
     from laddermill_gym.plotting import save_figure
 
-    fig, ax = plt.subplots(figsize=(6.5, 4))
+    fig, ax = subplots(figsize=(6.5, 4))
     ax.plot([r["minutes"] for r in rows], [r["mean_return"] for r in rows], "o-", label="agent (deterministic)")
     for i, (name, value) in enumerate((reference or {}).items()):
         ax.axhline(value, ls="--", color=f"C{i + 1}", label=name)

@@ -86,13 +86,7 @@ def run_script(script: str, args: list[str], save: Path | None = None) -> None:
     rl-zoo3's scripts read ``sys.argv``, so it is set for the run and restored afterwards."""
     import laddermill_gym  # noqa: F401  (registers the environments)
 
-    if save is not None:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
-        plt.show = _saving_show(save)
+    restore = _save_shown_figures(save) if save is not None else None
     argv = sys.argv
     sys.argv = [SCRIPTS[script], *script_arguments(script, args)]
     try:
@@ -102,6 +96,25 @@ def run_script(script: str, args: list[str], save: Path | None = None) -> None:
             runpy.run_module(SCRIPTS[script], run_name="__main__", alter_sys=True)
     finally:
         sys.argv = argv
+        if restore is not None:
+            restore()
+
+
+def _save_shown_figures(save: Path):
+    """Point pyplot at Agg with ``show`` saving to ``save`` (rl-zoo3's plot scripts draw with pyplot and call
+    ``show``); returns the function that puts the caller's backend and ``show`` back."""
+    import matplotlib
+    import matplotlib.pyplot as plt
+
+    backend, show = matplotlib.get_backend(), plt.show
+    plt.switch_backend("Agg")
+    plt.show = _saving_show(save)
+
+    def restore() -> None:
+        plt.show = show
+        plt.switch_backend(backend)
+
+    return restore
 
 
 def add_parser(sub) -> argparse.ArgumentParser:

@@ -7,14 +7,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-from laddermill_gym.quasisteady import lansdorp, schmehl  # noqa: E402
-from laddermill_gym.quasisteady.site_optimise import PAPER, SiteResult  # noqa: E402
+from laddermill_gym.figure_files import subplots
+from laddermill_gym.quasisteady import lansdorp, schmehl
+from laddermill_gym.quasisteady.site_optimise import PAPER, SiteResult
 
 ROWS = (("Kite altitude", "m"), ("Cable angle", "deg"), ("Cable diameter", "mm"), ("Kite area", "m^2"),
         ("Average kite C_L", "-"))
@@ -60,7 +57,7 @@ def _hist(ax, x, w, bins, xlabel):
 def plot_design(r: SiteResult, weight: np.ndarray, labels, path: Path, title: str) -> Path:
     """Figs. 10-13: power per state (in data order), histograms of power, C_L and tension / F_max."""
     s = r.solution
-    fig, ax = plt.subplots(2, 2, figsize=(11, 7))
+    fig, ax = subplots(2, 2, figsize=(11, 7))
     ax[0, 0].plot(np.arange(s.power.size), s.power / 1e6, lw=0.6)
     ax[0, 0].axhline(s.mean_power / 1e6, color="k", ls="--", lw=0.8, label=f"mean {s.mean_power / 1e6:.2f} MW")
     ax[0, 0].set_xlabel(f"wind state ({labels[0]} ... {labels[-1]})")
@@ -72,14 +69,13 @@ def plot_design(r: SiteResult, weight: np.ndarray, labels, path: Path, title: st
     fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(path, dpi=90)
-    plt.close(fig)
     return path
 
 
 def plot_operation(runs: dict[str, tuple[np.ndarray, np.ndarray]], weight, path: Path, title: str) -> Path:
     """Figs. 19-20: histograms of power and C_L of a fixed design, one row per reeling-factor bound; the mean in
     each title is the time mean, sum_i p_i P_i (time the weights do not cover counts as no power)."""
-    fig, ax = plt.subplots(len(runs), 2, figsize=(10, 3.2 * len(runs)), squeeze=False)
+    fig, ax = subplots(len(runs), 2, figsize=(10, 3.2 * len(runs)), squeeze=False)
     for i, (label, (P, cl)) in enumerate(runs.items()):
         mean = np.sum(weight * P)
         _hist(ax[i, 0], P / 1e6, weight, 30, f"useful power [MW], {label}: mean {mean / 1e6:.2f} MW")
@@ -87,14 +83,13 @@ def plot_operation(runs: dict[str, tuple[np.ndarray, np.ndarray]], weight, path:
     fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(path, dpi=90)
-    plt.close(fig)
     return path
 
 
 def plot_sweeps(sweeps: dict[str, tuple[np.ndarray, list[SiteResult], str]], path: Path, title: str) -> Path:
     """Figs. 15-18: mean power per cost (relative to the sweep's best), kite area, cable diameter and altitude
     against the swept parameter."""
-    fig, ax = plt.subplots(4, len(sweeps), figsize=(3.4 * len(sweeps), 10), squeeze=False)
+    fig, ax = subplots(4, len(sweeps), figsize=(3.4 * len(sweeps), 10), squeeze=False)
     for j, (name, (values, res, unit)) in enumerate(sweeps.items()):
         ok = [r.feasible for r in res]
         ratio = np.array([r.solution.ratio for r in res])
@@ -108,7 +103,6 @@ def plot_sweeps(sweeps: dict[str, tuple[np.ndarray, list[SiteResult], str]], pat
     fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(path, dpi=90)
-    plt.close(fig)
     return path
 
 
@@ -121,7 +115,7 @@ def plot_altitude_angle(hs, thetas, grid, path: Path, title: str) -> Path:
     ratio = field(lambda r: r.solution.ratio)
     panels = ((ratio / np.nanmax(ratio), "power / cost [rel.]"), (field(lambda r: 1e3 * r.design.d), "d [mm]"),
               (field(lambda r: r.design.S), "S [m^2]"))
-    fig, ax = plt.subplots(1, 3, figsize=(14, 4))
+    fig, ax = subplots(1, 3, figsize=(14, 4))
     for a, (z, lab) in zip(ax, panels, strict=True):
         m = a.pcolormesh(np.degrees(thetas), hs, z, shading="nearest")
         fig.colorbar(m, ax=a, label=lab)
@@ -130,7 +124,6 @@ def plot_altitude_angle(hs, thetas, grid, path: Path, title: str) -> Path:
     fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(path, dpi=90)
-    plt.close(fig)
     return path
 
 
@@ -163,7 +156,7 @@ def model_ratio_text(curves, speeds, at=(4.0, 6.0, 8.0, 12.0, 16.0, 20.0, 25.0))
 
 
 def plot_models(curves, speeds, path: Path, title: str) -> Path:
-    fig, ax = plt.subplots(figsize=(7, 4))
+    fig, ax = subplots(figsize=(7, 4))
     for name, P in curves.items():
         ax.plot(speeds, P / 1e6, label=name)
     ax.set_xlabel("wind speed at the kite [m/s]")
@@ -172,12 +165,11 @@ def plot_models(curves, speeds, path: Path, title: str) -> Path:
     ax.set_title(title, fontsize=9)
     fig.tight_layout()
     fig.savefig(path, dpi=90)
-    plt.close(fig)
     return path
 
 
 def plot_yields(yields, path: Path, title: str) -> Path:
-    fig, ax = plt.subplots(figsize=(7, 3.5))
+    fig, ax = subplots(figsize=(7, 3.5))
     ax.barh([y.name for y in yields], [100 * y.capacity_factor for y in yields], color="tab:green")
     for i, y in enumerate(yields):
         ax.text(100 * y.capacity_factor + 0.5, i, f"{100 * y.capacity_factor:.1f} %", va="center")
@@ -185,5 +177,4 @@ def plot_yields(yields, path: Path, title: str) -> Path:
     ax.set_title(title, fontsize=9)
     fig.tight_layout()
     fig.savefig(path, dpi=90)
-    plt.close(fig)
     return path

@@ -23,10 +23,7 @@ def _cell_text(s: dict) -> str:
 
 def plot_scorecard(summary: list[dict], env_id: str, suite: str, path: Path) -> Path:
     """Write the scorecard of one environment's summary rows (``gust_bench.summarise``) to ``path`` (PNG)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from laddermill_gym.figure_files import subplots
 
     scenarios = list(dict.fromkeys(s["scenario"] for s in summary))
     controllers = list(dict.fromkeys(s["controller"] for s in summary))
@@ -34,7 +31,7 @@ def plot_scorecard(summary: list[dict], env_id: str, suite: str, path: Path) -> 
     cells = {(s["scenario"], s["controller"]): s for s in summary}
     for (sc, c), s in cells.items():
         grid[scenarios.index(sc), controllers.index(c)] = s["survived"]
-    fig, ax = plt.subplots(figsize=(2.2 + 2.0 * len(controllers), 1.0 + 0.75 * len(scenarios)))
+    fig, ax = subplots(figsize=(2.2 + 2.0 * len(controllers), 1.0 + 0.75 * len(scenarios)))
     im = ax.imshow(grid, cmap="RdYlGn", vmin=0.0, vmax=1.0, aspect="auto")
     for (sc, c), s in cells.items():
         ax.text(controllers.index(c), scenarios.index(sc), _cell_text(s), ha="center", va="center", fontsize=7)
@@ -45,5 +42,4 @@ def plot_scorecard(summary: list[dict], env_id: str, suite: str, path: Path) -> 
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=110)
-    plt.close(fig)
     return path

@@ -37,17 +37,13 @@ def format_table(results: list[SweepResult], crossings: dict[str, dict[str, list
 def plot_sweeps(results: list[SweepResult], out: Path) -> Path:
     """One panel per sweep: largest real part of the lateral eigenvalues [1/s] versus the parameter, with
     the zero line and the default value marked. Saved to ``out`` (png, pdf or svg)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    from laddermill_gym.figure_files import subplots
     from laddermill_gym.plotting import save_figure
 
     n = len(results)
     ncol = min(3, n)
     nrow = math.ceil(n / ncol)
-    fig, axes = plt.subplots(nrow, ncol, figsize=(4.2 * ncol, 3.3 * nrow), squeeze=False)
+    fig, axes = subplots(nrow, ncol, figsize=(4.2 * ncol, 3.3 * nrow), squeeze=False)
     for ax, res in zip(axes.flat, results, strict=False):
         x, y = res.values, res.max_real
         ax.axhline(0.0, color="k", lw=0.8)

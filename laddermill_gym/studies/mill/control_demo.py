@@ -144,12 +144,9 @@ def run_demo(env_id: str = DEFAULT_ENV, controllers=("open_loop", "lqr"), durati
 def plot_demo(runs: list[ControlRun], path: Path, title: str) -> Path:
     """``demo.png``: power and largest lateral excursion against the time since the step, and the loop from above
     at the end of each run."""
-    import matplotlib
+    from laddermill_gym.figure_files import new_figure
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig = plt.figure(figsize=(4.0 * max(2, len(runs)), 7.5))
+    fig = new_figure(figsize=(4.0 * max(2, len(runs)), 7.5))
     grid = fig.add_gridspec(2, max(2, len(runs)))
     ax_p, ax_y = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
     for i, r in enumerate(runs):  # dashed and dotted after the first: a run that flies as another stays visible
@@ -177,7 +174,6 @@ def plot_demo(runs: list[ControlRun], path: Path, title: str) -> Path:
     fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
-    plt.close(fig)
     return path
 
 

@@ -49,13 +49,10 @@ def save_rows(res: dict, path: Path) -> Path:
 def plot_work_precision(res: dict, path: Path) -> Path:
     """Wall time against error, log-log: one column per forcing, rows the final position error and the RMS
     state error; the references' agreement as a dotted line (errors below it are not resolved)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from laddermill_gym.figure_files import subplots
 
     forcings = list(res["references"])
-    fig, axes = plt.subplots(2, len(forcings), figsize=(3.6 * len(forcings), 6.0), squeeze=False)
+    fig, axes = subplots(2, len(forcings), figsize=(3.6 * len(forcings), 6.0), squeeze=False)
     for j, f in enumerate(forcings):
         rows = [r for r in res["rows"] if r["forcing"] == f and r["status"] == "ok"]
         for i, (key, label) in enumerate((("err_max_pos_rel", "largest position error / extent [-]"),
@@ -82,7 +79,6 @@ def plot_work_precision(res: dict, path: Path) -> Path:
                  f"{res['dt_stable_s']:.4g} s (estimate)", fontsize=9)
     fig.tight_layout()
     fig.savefig(path, dpi=80)
-    plt.close(fig)
     return path
 
 

@@ -38,15 +38,12 @@ def cycle_figures(rec: dict[str, np.ndarray], dt: float, names: tuple[str, ...],
                   out: Path) -> list[Path]:
     """Write ``pumping_window.png``, ``pumping_path3d.png`` and ``pumping_timeseries.png`` into ``out``; phase
     ``names`` by code, ``reel_in`` the reel-in phase's code (a cycle ends when it does)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from laddermill_gym.figure_files import new_figure, subplots
 
     az, el = window_angles(rec)
     sl = _last_cycle(rec, reel_in)
     paths = []
-    fig, ax = plt.subplots(figsize=(7, 4.5))
+    fig, ax = subplots(figsize=(7, 4.5))
     _by_phase(ax, np.degrees(az[sl]), np.degrees(el[sl]), rec["phase"][sl], names)
     ax.set_xlabel("azimuth [deg] (+: towards +y)")
     ax.set_ylabel("elevation [deg]")
@@ -56,9 +53,8 @@ def cycle_figures(rec: dict[str, np.ndarray], dt: float, names: tuple[str, ...],
     fig.tight_layout()
     paths.append(out / "pumping_window.png")
     fig.savefig(paths[-1], dpi=100)
-    plt.close(fig)
 
-    fig = plt.figure(figsize=(7, 6))
+    fig = new_figure(figsize=(7, 6))
     ax = fig.add_subplot(projection="3d")
     _by_phase(ax, -rec["x"][sl], rec["y"][sl], rec["phase"][sl], names, c=-rec["z"][sl])
     ax.plot([0.0], [0.0], [0.0], "k^")
@@ -70,9 +66,8 @@ def cycle_figures(rec: dict[str, np.ndarray], dt: float, names: tuple[str, ...],
     fig.tight_layout()
     paths.append(out / "pumping_path3d.png")
     fig.savefig(paths[-1], dpi=100)
-    plt.close(fig)
 
-    fig, axs = plt.subplots(4, 1, figsize=(8, 8), sharex=True)
+    fig, axs = subplots(4, 1, figsize=(8, 8), sharex=True)
     t = rec["t"]
     axs[0].plot(t, rec["tension"] / 1e3)
     axs[0].set_ylabel("drum tension [kN]")
@@ -87,5 +82,4 @@ def cycle_figures(rec: dict[str, np.ndarray], dt: float, names: tuple[str, ...],
     fig.tight_layout()
     paths.append(out / "pumping_timeseries.png")
     fig.savefig(paths[-1], dpi=100)
-    plt.close(fig)
     return paths

@@ -114,13 +114,10 @@ def loss_split(c: dict, q: dict, eta: float) -> dict[str, float]:
 
 
 def _figure(rows: list[dict], out: Path) -> Path:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from laddermill_gym.figure_files import subplots
 
     v = [r["v0"] for r in rows]
-    fig, ax = plt.subplots(figsize=(7, 4.5))
+    fig, ax = subplots(figsize=(7, 4.5))
     for key, label, style in (("power", "simulated (crosswind controller)", "ko-"),
                               ("schmehl_matched_W", "Schmehl at the simulated operating point", "bs--"),
                               ("schmehl_W", "Schmehl, nominal", "c^:"), ("lansdorp_W", "Lansdorp eqs. 1-14", "r.:")):
@@ -135,7 +132,6 @@ def _figure(rows: list[dict], out: Path) -> Path:
     fig.tight_layout()
     path = out / "pumping_power_curve.png"
     fig.savefig(path, dpi=100)
-    plt.close(fig)
     return path
 
 

@@ -150,14 +150,10 @@ def closed_loop_run(design, t_end: float = 120.0, controller: bool = True, step:
 
 
 def plot(scan_v, scan_rate, v_crit, runs, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    from laddermill_gym.figure_files import subplots
     from laddermill_gym.plotting import save_figure
 
-    fig, ax = plt.subplots(1, 3, figsize=(13, 3.8))
+    fig, ax = subplots(1, 3, figsize=(13, 3.8))
     ax[0].plot(scan_v, scan_rate, "o-")
     ax[0].axhline(0.0, color="k", lw=0.8)
     ax[0].axvline(v_crit, color="r", ls="--", label=f"critical {v_crit:.2f} m/s")

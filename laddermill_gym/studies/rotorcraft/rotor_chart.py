@@ -180,17 +180,15 @@ def plot_chart(path: Path, curves: list[LimitCurve], ideal_deg: np.ndarray, idea
     (dashed), the ideal curve, the Betz line and the autorotation points."""
     import matplotlib
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    from laddermill_gym.figure_files import subplots
     from laddermill_gym.plotting import save_figure
 
-    fig, ax = plt.subplots(figsize=(8.5, 6.0))
+    fig, ax = subplots(figsize=(8.5, 6.0))
     ax.plot(ideal_deg, ideal_cp, "k-", lw=2.2, label="ideal (actuator disk, no profile drag)")
     ax.axhline(16.0 / 27.0, color="0.4", ls="--", lw=0.9)
     ax.text(1.0, 16.0 / 27.0 + 0.008, "Betz 16/27", color="0.3", fontsize=8)
     ax.axhline(0.0, color="0.6", lw=0.8)
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    colors = matplotlib.rcParams["axes.prop_cycle"].by_key()["color"]
     for j, c in enumerate(curves):
         col = colors[j % len(colors)]
         ok = c.theta0_deg >= STRETCHED_THETA_DEG

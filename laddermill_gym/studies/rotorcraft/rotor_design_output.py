@@ -38,14 +38,10 @@ def write_csv(path: Path, studies: list[AltitudeStudy]) -> None:
 
 def plot_power_curves(path: Path, studies: list[AltitudeStudy]) -> None:
     """Electrical power against wind speed at both altitudes with Roberts' 3.13 MW and the stress-limit onset."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    from laddermill_gym.figure_files import subplots
     from laddermill_gym.plotting import save_figure
 
-    fig, ax = plt.subplots(figsize=(8.0, 5.2))
+    fig, ax = subplots(figsize=(8.0, 5.2))
     for st in studies:
         power = np.array([p.power / 1e6 if p is not None else np.nan for p in st.points])
         line, = ax.plot(st.winds, power, "-o", ms=3, lw=1.5, label=f"{st.altitude_ft:,} ft")
