@@ -28,7 +28,12 @@ _DRIVE: dict[type, object] = {}
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def scheduled_speed(sp, t):
-    """The schedule's cable speed V_c(t) [m/s] and its rate [m/s^2] (piecewise linear, held outside)."""
+    """The schedule's cable speed V_c(t) [m/s] and its rate [m/s^2] (piecewise linear, held outside).
+
+    At a knot the rate is the later piece's, and 0 at the first and the last knot, so an integrator's stage there
+    takes the held side: the state ``SX_SPEED`` of a prescribed station trails the schedule by a dt / 6 per such knot
+    on RK4 (a the ramp's slope; 1.1e-4 m/s on the scenes' 0-2 m/s ramp over 30 s at 10 ms), while the kernels'
+    tensions and the generator read the schedule itself. Kept: the registered mills' starts are computed with it."""
     n = int(sp[C.SP_NSCHED])
     ot, ov = C.SP_SCHED, C.SP_SCHED + n
     if n == 1 or not t > sp[ot]:

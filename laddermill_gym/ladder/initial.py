@@ -12,7 +12,7 @@ from laddermill_gym.ladder.layout import piece_nodes, rest_layout
 from laddermill_gym.model.builders import build_chain, chain_state
 from laddermill_gym.model.params import N_CONTROLS
 from laddermill_gym.model.states import euler_from_quaternion, planar_from_3d, planar_to_3d, rotation_from_euler
-from laddermill_gym.model.station import station_initial
+from laddermill_gym.model.station import station_initial, station_initial_controls
 from laddermill_gym.sim.simulator import Simulator
 from laddermill_gym.sim.statics import static_equilibrium, trim_alpha
 
@@ -62,11 +62,12 @@ def slot_elevators(ini, n: int, closed: bool) -> list[float]:
 def initial_state(scene) -> tuple[np.ndarray, np.ndarray]:
     """(state, controls) at the scene's initial equilibrium (see scene.InitialSpec). A moving cable starts from
     the equilibrium at rest with its first and last elements at their lengths after a transfer (the station
-    block of ``model/station.station_initial`` appended; its generator torque control, if any, 0)."""
+    block of ``model/station.station_initial`` appended, and its controls, ``station_initial_controls``: a commanded
+    station's initial speed, a drum's torque at 0 or the limit nearest it)."""
     if scene.assembly.station is not None:
         st = scene.assembly.station
         x, u = initial_state(scene.replace(assembly=dataclasses.replace(scene.assembly, station=None)))
-        return np.concatenate([x, station_initial(st)]), np.concatenate([u, np.zeros(st.n_controls)])
+        return np.concatenate([x, station_initial(st)]), np.concatenate([u, station_initial_controls(st)])
     a = scene.assembly
     n = a.n_wings
     ini = scene.initial

@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from laddermill_gym.model.station import electrical_power
 from laddermill_gym.sim.overload import BREAKING_FRACTION, Overload, OverloadWatch, tension_limits
 from laddermill_gym.sim.simulator import SimulationError, Simulator
 
@@ -31,7 +32,7 @@ class PeriodicResult:
     converged : both criteria held for ``confirm`` successive periods.
     period_s : l0 / V_c [s].  t_s : simulated time at the end [s].
     mean_power_W : mean mechanical generator power over the last period [W].
-    mean_electrical_power_W : the same times the station's efficiency [W].
+    mean_electrical_power_W : the same through the station's efficiency (``model/station.electrical_power``) [W].
     tension_mean_N, tension_min_N, tension_max_N : per element over the last period (n_elements,) [N].
     shape_m : wing CG positions at the last transfer (n_wings, 3) [m], slot order (slot 0 on the veered side).
     history : per period: time [s], mean power [W], shape change [-], power change [-].
@@ -179,7 +180,7 @@ def run_to_periodic(sim: Simulator, shape_tol: float = 1e-2, power_tol: float = 
         ten = np.array(ten if watch_every_period else _tensions_at(sim, ten, watch))
     p = history[-1]["mean_power_W"] if history else float("nan")
     return PeriodicResult(converged=breakdown is None and hits >= confirm, period_s=period, t_s=sim.t, mean_power_W=p,
-                          mean_electrical_power_W=st.efficiency * p, tension_mean_N=ten.mean(axis=0),
+                          mean_electrical_power_W=electrical_power(p, st.efficiency), tension_mean_N=ten.mean(axis=0),
                           tension_min_N=ten.min(axis=0), tension_max_N=ten.max(axis=0), shape_m=shape,
                           history=history, breakdown=breakdown, overload=watch.first,
                           peak_tension_ratio=watch.peak_ratio)

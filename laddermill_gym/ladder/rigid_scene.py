@@ -177,6 +177,18 @@ def _chain(s: Section):
     return ch, points, start, end, nw, piece, epp, station
 
 
+def _check_in_plane(path, direction_inf: float, wing_type) -> None:
+    """The in-plane mode (dimension 2) needs a wind whose direction does not turn and wings symmetric about their
+    plane: ConfigError naming the field and value that break it."""
+    bad = [f"wind.direction_inf_rad = {direction_inf:g} (must be 0: the wind direction may not turn)"] \
+        if direction_inf != 0.0 else []
+    bad += [f"the wing's {name} y = {v[1]:g} m (must be 0: wings symmetric about their plane)"
+            for name, v in (("attachment", wing_type.attachment), ("r_ref", wing_type.r_ref)) if abs(v[1]) > 0]
+    if bad:
+        raise ConfigError(f"{path}: the in-plane mode (dimension 2) needs a fixed wind direction and symmetric wings: "
+                          + "; ".join(bad))
+
+
 def _initial(ini: Section, limits: np.ndarray) -> InitialSpec:
     """The ``initial`` section (angles in the file in degrees, here in rad; bounds ``ladder/bounds.py``, the
     elevator angles within the wing's elevator limits ``limits`` (2,) [rad])."""
@@ -265,11 +277,14 @@ def read_rigid(s: Section, path: Path, *, dimension: int | None = None, sag: boo
     dim = dim if dimension is None else int(dimension)
     if dim not in (2, 3):
         raise ConfigError(f"{path}: field 'dimension' = {dim!r}: must be 2 or 3")
-    if dim == 2 and (wind.direction_inf != 0.0 or abs(wing_type.attachment[1]) > 0 or abs(wing_type.r_ref[1]) > 0):
-        raise ConfigError(f"{path}: the in-plane mode needs a fixed wind direction and symmetric wings")
+    if dim == 2:
+        _check_in_plane(path, wind.direction_inf, wing_type)
     sag_on = sag_on if sag is None else bool(sag)
     caero_on = caero_on if cable_aero is None else bool(cable_aero)
     epp = epp if elements_per_piece is None else int(elements_per_piece)
+    if station is not None and epp != 1:
+        raise ConfigError(f"{path}: elements_per_piece = {elements_per_piece!r} (override): a moving cable (station) "
+                          "needs one element per piece (Meijaard's boundary conditions)")
     nw = nw if n_wings is None else int(n_wings)
     if dt is not None or method is not None:
         settings = dataclasses.replace(settings, dt=settings.dt if dt is None else float(dt),

@@ -217,6 +217,13 @@ def read_station(s: Section, piece: float, insertion: str = "paper") -> StationP
     if mode == "commanded":
         kw.update(speed_time_constant=s.number("speed_time_constant", positive=True, high=3600.0, why="s"),
                   speed_limits=tuple(s.vector("speed_limits", 2)))
+        lo, hi = kw["speed_limits"]
+        if lo <= hi and not lo <= speeds[0] <= hi:
+            raise s.error("speed_m_s", speeds.tolist(), f"the commanded station starts at its first speed, which "
+                          f"must lie within speed_limits [{lo:g}, {hi:g}] m/s")
+    if mode != "prescribed" and speeds.size > 1:
+        raise s.error("speed_times_s", times.tolist(), f"a {mode} station takes only its initial speed "
+                      "(speed_m_s[0]); a schedule of several speeds needs mode: prescribed")
     s.done()
     try:
         return StationParams(**kw)

@@ -142,3 +142,24 @@ def station_initial(st: StationParams) -> np.ndarray:
     x = np.zeros(C.SX_SIZE)
     x[C.SX_SPEED] = st.speed(0.0) if st.mode == "prescribed" else float(st.speed_values[0])
     return x
+
+
+def station_initial_controls(st: StationParams) -> np.ndarray:
+    """The station's controls at the start, shape (``st.n_controls``,): a commanded station commands its initial speed
+    ``speed_values[0]`` [m/s] (the reader keeps it within ``speed_limits``); a drum's generator torque [N m] starts
+    at 0, or at the end of ``torque_limits`` nearest 0 when they exclude it; nothing for a prescribed schedule."""
+    if st.mode == "commanded":
+        return np.array([float(st.speed_values[0])])
+    if st.mode == "drum":
+        return np.array([min(max(0.0, st.torque_limits[0]), st.torque_limits[1])])
+    return np.zeros(0)
+
+
+def electrical_power(mechanical, efficiency: float):
+    """The generator's electrical power [W] from the mechanical power the cable delivers to it [W] (a float or an
+    array of any shape): ``efficiency`` times it while generating, divided by ``efficiency`` while motoring
+    (mechanical power below 0: the machine then draws more than it gives the cable). Applied to a mean over an
+    interval, exact while the mechanical power keeps its sign over it."""
+    if isinstance(mechanical, np.ndarray):
+        return np.where(mechanical >= 0.0, efficiency * mechanical, mechanical / efficiency)
+    return efficiency * mechanical if mechanical >= 0.0 else mechanical / efficiency

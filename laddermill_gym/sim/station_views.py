@@ -5,7 +5,8 @@ assembly has no station returns empty views and raises on the station read-outs.
 Sign convention: V_c > 0 when the cable leaves the station on the veered (first, ascending) side and returns on
 the hauled (last, descending) side; the generator's mechanical power P = (T_first - T_last) V_c with a prescribed
 or a commanded speed, (Q / r) V_c with a drum (Q the generator torque [N m], r the drum radius [m]); P > 0 is
-power delivered to the generator; the electrical power is the station's efficiency times P.
+power delivered to the generator; the electrical power is the station's efficiency times P while generating and
+P over the efficiency while motoring (P < 0; ``model/station.electrical_power``).
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from laddermill_gym.kernels.contract import SX_ENERGY, SX_MOVED, SX_SPEED, SX_TRANSFERS
+from laddermill_gym.model.station import electrical_power
 
 _STATION_NAMES = ("station moved [m]", "station transfers [-]", "station cable_speed [m/s]",
                   "station generator_energy [J]")
@@ -89,7 +91,7 @@ class StationViews:
         v = self.cable_speed()
         mech = float(self.controls[-1]) / st.drum_radius * v if st.mode == "drum" else dt * v
         return {"tension_difference_N": dt, "cable_speed_m_s": v, "mechanical_W": mech,
-                "electrical_W": st.efficiency * mech}
+                "electrical_W": electrical_power(mech, st.efficiency)}
 
     def station_views(self) -> dict[str, np.ndarray]:
         """Named station views for recordings (empty without a station)."""

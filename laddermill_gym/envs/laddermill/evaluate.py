@@ -11,6 +11,7 @@ from laddermill_gym.envs.laddermill.observation import N_OBS_PER_SLOT, OBS_INDEX
 from laddermill_gym.envs.wing_failures import status_texts, wing_failure_text, wing_terms
 from laddermill_gym.kernels.contract import B3_POS, B3_SIZE, SX_ENERGY, SX_TRANSFERS
 from laddermill_gym.kernels.rigid.observe import AUX_GROUND_END, AUX_GROUND_START, AUX_MAX_TENSION, AUX_MIN_ALTITUDE
+from laddermill_gym.model.station import electrical_power
 from laddermill_gym.sim.recording import ALPHA_RANGE_DEG, MAX_ABS_BETA_DEG
 
 __all__ = ["evaluate_copies", "failure_codes", "failure_text"]
@@ -54,7 +55,8 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
     alpha, beta = o[:, :, OBS_INDEX["alpha"]], o[:, :, OBS_INDEX["beta"]]
     out_of_band = (alpha < _BAND_LO) | (alpha > _BAND_HI) | (np.abs(beta) > _BAND_BETA)
     info.update(power_W=power, mechanical_power_W=task.mechanical_power.copy(),
-                mean_power_W=st.efficiency * (x[:, task.xoff + SX_ENERGY] - task.energy_start) / elapsed,
+                mean_power_W=electrical_power((x[:, task.xoff + SX_ENERGY] - task.energy_start) / elapsed,
+                                              st.efficiency),
                 cable_speed_m_s=task.cable_speed.copy(),
                 tension_difference_N=task.aux[:, AUX_GROUND_START] - task.aux[:, AUX_GROUND_END],
                 max_tension_N=task.aux[:, AUX_MAX_TENSION].copy(), min_altitude_m=task.aux[:, AUX_MIN_ALTITUDE].copy(),

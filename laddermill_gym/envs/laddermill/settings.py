@@ -24,8 +24,8 @@ class MillRewardConfig(RotorcraftRewardConfig):
     """Reward per control period: r = w_P P / P_ref - w_y S(dy) - w_w S(rates) - w_u S(effort) - failure_penalty.
 
     P [W] is the simulated generator's electrical power at the end of the control period: the station's
-    efficiency times (T_first - T_last) V_c with a prescribed cable speed, times (Q / r) V_c with a drum
-    (``sim.generator_power()``); P_ref [W] is the mean electrical power of the operating point's period
+    efficiency times the mechanical power (T_first - T_last) V_c with a prescribed cable speed, (Q / r) V_c with a
+    drum, and that power over the efficiency while it is negative (motoring; ``sim.generator_power()``); P_ref [W] is the mean electrical power of the operating point's period
     (:class:`~laddermill_gym.envs.laddermill.operating_point.OperatingPoint`), so the power term averages about 1
     over a period of the undisturbed operating point. S(x) = 1 - exp(-x) saturates (bounded below):
 

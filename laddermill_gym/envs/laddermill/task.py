@@ -58,6 +58,7 @@ from laddermill_gym.kernels.rigid.observe import (
 from laddermill_gym.ladder.scene import options_key
 from laddermill_gym.model.params import CONTROL_NAMES
 from laddermill_gym.model.states import rotations_from_quaternions
+from laddermill_gym.model.station import electrical_power
 from laddermill_gym.sim.simulator import Simulator
 from laddermill_gym.sim.stable_step import UnstableStepWarning
 
@@ -273,7 +274,7 @@ class MillTask(TaskCore):
             self.mechanical_power[:] = self.batch.controls[:, -1] / st.drum_radius * self.cable_speed
         else:
             self.mechanical_power[:] = dten * self.cable_speed
-        self.power[:] = st.efficiency * self.mechanical_power
+        self.power[:] = electrical_power(self.mechanical_power, st.efficiency)
         station = self.raw_obs[:, N_OBS_PER_SLOT * n:]
         station[:, STATION_OBS_INDEX["cable_speed"]] = self.cable_speed
         station[:, STATION_OBS_INDEX["cable_phase"]] = moved / st.piece_length
