@@ -228,7 +228,7 @@ BENCHMARKS = Covered(
         "not TetheredWing-v0's or Rotorcraft-v0's.",
         # LLVM's straight-line vectoriser tried (2026-12-07): a dated record of a hash comparison, not a timing
         '(the SHA-256 of their observations and rewards under seeded actions)',
-        'which hashed alike with an empty cache and a filled one (2026-12-07). It was not timed.',
+        'hashed differently; without it, alike with an empty cache and a filled one (2026-12-07). It was not timed.',
         # the W step compiled without its loop (2026-12-05, znver5): the A/B timings, the bench-envs runs, env_step_cost
         '### The W step compiled without its loop (issue 32 point 2, 2026-12-05)',
         'The rest of the kernel in the table above was mostly the W step itself. The study timed the step in '

@@ -63,7 +63,9 @@ MODEL = Covered(given=(  # the model's equations: their constants and the state 
     "w (3, body-frame", "free node j (6 floats at offset 13 n_w + 6 j): position (3, global), velocity (3, global)",
     "q' = 1/2 q (x) (0, w)", "per wing (6 dof) and the node velocity (3 dof)", "(C_L_de > 0, C_m_de < 0)",
     "(C_n_dr < 0, C_Y_dr > 0)", "C_l_da > 0)", "for 0 < h < h0 (n = 0.2)", "0 for h <= 0", "phi_inf (1 - exp",
-    "(1 - 2.2558e-5 h)", "if V < 1e-9", "V^2 / 2", "from -180 to 180 deg", "g = (-w_a, 0, u_a)", "the 6-vector",
+    "(1 - 2.2558e-5 h)", "if V < 1e-9", "V^2 / 2",
+    "at sideslip beta this model's lift and drag are 1/cos^2 beta times that build-up's: a choice kept for the "
+    "registered ids, found by a review of 2026-12-07)", "from -180 to 180 deg", "g = (-w_a, 0, u_a)", "the 6-vector",
     "(sin a, 0, -cos a) ; r_ref x (CLad (sin a, 0, -cos a)) + (0, c Cmad, 0)", "the node velocity, or 0",
     "(e = 0 if l < 1e-9)", "mu g (0, 0, 1)", "C_N0 = 1.1, C_T0 = 0.02", "F_r = l (2 f_r + f_s)/6",
     "F_s = l (f_r + 2 f_s)/6", "+ 7/360 p_r", "- EA eps_p/l0 = 0", "(EA eps_p/l0)^(1/3))", "below 1e-13 of s (at most "

@@ -177,6 +177,24 @@ def _chain(s: Section):
     return ch, points, start, end, nw, piece, epp, station
 
 
+def _check_apparent_mass(path, wing_type, rho0: float) -> None:
+    """The alpha-rate lift CLad adds rho S c / 4 CLad [kg] to the wing's mass along the lift direction (at zero
+    sideslip; 1 / cos(beta) times that at sideslip beta, which the step's failure report names): a table whose
+    smallest CLad makes that mass zero or negative at sea level's density ``rho0`` [kg/m^3] gives an indefinite mass
+    matrix. ConfigError naming the table, its smallest CLad and the angle of attack."""
+    if wing_type.aero is None:
+        return
+    clad = wing_type.aero.column("CLad")
+    k = int(np.argmin(clad))
+    added = rho0 * wing_type.area * wing_type.chord / 4.0 * clad[k]
+    if wing_type.mass + added <= 0.0:
+        least = -4.0 * wing_type.mass / (rho0 * wing_type.area * wing_type.chord)
+        raise ConfigError(f"{path}: wing table {wing_type.aero.source}: CLad = {clad[k]:.4g} at alpha = "
+                          f"{np.degrees(wing_type.aero.alpha[k]):.4g} deg adds {added:.4g} kg along the lift direction "
+                          f"to the wing's {wing_type.mass:g} kg at rho = {rho0:g} kg/m^3: the mass matrix is not "
+                          f"positive definite (CLad must stay above {least:.4g})")
+
+
 def _check_in_plane(path, direction_inf: float, wing_type) -> None:
     """The in-plane mode (dimension 2) needs a wind whose direction does not turn and wings symmetric about their
     plane: ConfigError naming the field and value that break it."""
@@ -263,6 +281,7 @@ def read_rigid(s: Section, path: Path, *, dimension: int | None = None, sag: boo
     gravity = s.number("gravity", positive=True, **BOUNDS["gravity"])
     wind = read_wind(s.section("wind"))
     wing_type, cable = read_parts(s, path)
+    _check_apparent_mass(path, wing_type, wind.rho0)
     ch, points, start, end, nw, piece, epp, station = _chain(s)
     fid = s.section("fidelity")
     fid.text("wing", "rigid", choices=FIDELITIES)

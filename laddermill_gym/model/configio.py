@@ -160,6 +160,11 @@ class Section:
 
     def vector(self, key: str, length: int | None = None, default: Any = ...) -> np.ndarray:
         v = self.raw(key, default)
+        items = v.ravel().tolist() if isinstance(v, np.ndarray) else v if isinstance(v, (list, tuple)) else []
+        for x in items:  # YAML's true / "0.2" are not numbers here either (np.asarray would take them as 1.0, 0.2)
+            if isinstance(x, (bool, np.bool_, str)):
+                raise self.error(key, v, "must be a list of numbers" + (" (YAML reads a quoted value as text)"
+                                                                        if isinstance(x, str) else ""))
         try:
             a = np.asarray(v, dtype=float)
         except (TypeError, ValueError):

@@ -25,7 +25,8 @@ class MillRewardConfig(RotorcraftRewardConfig):
 
     P [W] is the simulated generator's electrical power at the end of the control period: the station's
     efficiency times the mechanical power (T_first - T_last) V_c with a prescribed cable speed, (Q / r) V_c with a
-    drum, and that power over the efficiency while it is negative (motoring; ``sim.generator_power()``); P_ref [W] is the mean electrical power of the operating point's period
+    drum, and that power over the efficiency while it is negative (motoring; ``sim.generator_power()``); P_ref [W]
+    is the mean electrical power of the operating point's period
     (:class:`~laddermill_gym.envs.laddermill.operating_point.OperatingPoint`), so the power term averages about 1
     over a period of the undisturbed operating point. S(x) = 1 - exp(-x) saturates (bounded below):
 
