@@ -166,13 +166,14 @@ DERIVED = (
     "the neutral point lies 0.48 m behind P", "puts it 0.97 m behind P", "C_L 0.61 (the issue's estimate for 200 kW at "
     "2 m/s was 0.6)", "than the v0 wing at C_L 1.00", "kite trim C_L 1.00", "(142 - 65) kN x 2 m/s = 154 kW",
     "(40 kN of tension difference)", "at 5 m/s",  # the issue's estimate: 200 kW / 40 kN
-    "(79 %)",
+    "(79 %)",  # the rigid run's last / first element, 126.9 / 160.0 kN (pointmass_mill_study, Printed below)
     # a review of 2026-12-07: the shipped CSV's least CLad and its apparent mass, rho0 S c CLad / 4 with rho0 1.225,
     # S 54, c 2.7 (-0.627 x 44.65 = -28.0 kg), the load check's bound -4 m / (rho0 S c) = -216 / 178.6; the v2 CG shift
     # (mill_fast.md) and the rate columns' transfer (CLq 5.44 -> about 1.3, Cmq -10.5 -> about -8.4 at 7 deg)
-    "(the table's least, -0.63, lies near -18 deg)", "rho S c CLad/4 = -28 kg at sea level against the wing's m = 54 kg",
+    "(the table's least, -0.63, lies near -18 deg)",
+    "rho S c CLad/4 = -28 kg at sea level against the wing's m = 54 kg",
     "-4 m/(rho S c) = -1.21 for this wing). Found by a review (2026-12-07)", "whose CG lies 0.863 m further aft",
-    "(at 7 deg; the transfer CLq' = CLq - (2 dx/c) CLa)")  # the rigid run's last / first element, 126.9 / 160.0 kN (pointmass_mill_study, Printed below)
+    "(at 7 deg; the transfer CLq' = CLq - (2 dx/c) CLa)")
 #: the long groups (python -m docsite.readme_figures --long NAME): the v1 steps (the slow test prints both; first run
 #: 2026-11-30, 172 s at nice 15, load 2.9-3.0: as written; it also prints the start's cable overload at t = 397.05 s,
 #: "peak 1.07 x the limit", until then not_rerun and derived) and the v1 power curve (the page's command, 7 min)
