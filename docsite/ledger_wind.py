@@ -147,7 +147,8 @@ WIND = Covered(
            "T)),", "| 6.3.2.6 (eq. 26) |", "speed factor 1 + step at", "CS-25.341 shape", "z_hub +- D/2",
            "s = exp(q z - q^2 / 2), q^2 = ln(1 + speed_std^2)", "mean 1,", "runs 300 ten-minute episodes per value up "
            "to 2.0.", '"step": 0.02}', '"heights": [0, 300]}', "(to within 10 % of the largest deviation from the "
-           "final value, at least 1 mm; nan when not settled in the last 10 % of the episode)",
+           "final value, at least 1 mm; nan when not settled in the last 10 % of the episode, or still drifting "
+           "there:", "the suite file's SHA-256",
            "Results (60 s episodes, turbulence faded in over 10 s;", "the ECD turns 72 deg in 10 s",
            "re-run on 2026-11-30, TetheredWing-v0's on 2026-12-01 (znver3) and 2026-12-02 (znver4);",
            "+20 % speed step, 1-cosine gusts of 4 s "

@@ -25,7 +25,7 @@ ax[0, 0].plot([0, 1], [1, 0])
 written = [save_figure(fig, out / "a.png")]
 written.append(plot_curve(out, [{"minutes": 0.0, "mean_return": 1.0}, {"minutes": 1.0, "mean_return": 2.0}],
                           {"LQR": 1.5}))
-row = dict(survived=0.5, t_end_s=3.0, energy_ratio=0.9, max_lateral_m=0.1, peak_tension_ratio=0.8)
+row = dict(survived=0.5, t_end_s=3.0, t_fail_s=3.0, energy_ratio=0.9, max_lateral_m=0.1, peak_tension_ratio=0.8)
 written.append(plot_scorecard([dict(row, scenario="eog", controller="lqr")], "laddermill_gym/TetheredWing-v0",
                               "gusts-v6", out / "card.png"))
 import matplotlib.pyplot as plt

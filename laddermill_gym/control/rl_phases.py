@@ -7,8 +7,10 @@ strictly.
   frozen), at their own ``learning_rate``: PPO's first policy updates then use advantages of a critic that has
   learned the started policy's values, rather than of random weights;
 * ``validation``: every ``every`` env steps the deterministic policy flies ``episodes`` episodes of each named set
-  of DRAWN disturbances (seeds ``seed``, ``seed`` + 1, ...; a benchmark's own scripted scenarios and seeds are
-  never a validation set), and the policy that survives the most of them is kept as the run's ``best_model.zip``
+  of DRAWN disturbances (seeds ``seed``, ``seed`` + 1, ..., or from a set's own ``seed``; two sets of one
+  turbulence model on the same seeds fly the same fields, scaled, which the harness warns of; a benchmark's own
+  scripted scenarios and seeds are never a validation set), and the policy that survives the most of them is kept
+  as the run's ``best_model.zip``
   (:mod:`laddermill_gym.harness.validation`); its optional ``selection`` ranks them by episodes survived (the
   default, ``rule: survived``) or, ``rule: paired``, by episodes survived minus ``penalty`` x the episodes a
   ``reference`` controller (the LQR) survives and the policy loses, its outcomes flown once per run.
@@ -37,11 +39,13 @@ class CriticWarmup:
 
 @dataclass(frozen=True)
 class ValidationSet:
-    """``episodes`` episodes of the drawn ``disturbances`` (mappings as a config's ``disturbances``)."""
+    """``episodes`` episodes of the drawn ``disturbances`` (mappings as a config's ``disturbances``); ``seed``: the
+    set's first episode seed (None: the validation's ``seed``)."""
 
     name: str
     episodes: int
     disturbances: list[dict[str, Any]]
+    seed: int | None = None
 
 
 @dataclass(frozen=True)
@@ -177,7 +181,8 @@ def read_critic_warmup(s: Section, init_from: str | None, total: int | None = No
 
 def read_validation(s: Section) -> Validation | None:
     """``validation`` (absent: none): ``every`` [env steps], ``seed``, ``episode_time`` [s] and ``sets``, a
-    mapping of names to ``episodes`` and ``disturbances`` (checked as the training's)."""
+    mapping of names to ``episodes``, ``disturbances`` (checked as the training's) and an optional ``seed`` of the
+    set's own (its episodes seeded ``seed``, ``seed`` + 1, ...; absent: the validation's)."""
     if not s.has("validation"):
         return None
     v = s.section("validation")
@@ -191,11 +196,13 @@ def read_validation(s: Section) -> Validation | None:
     for name in raw:
         sec = Section(raw[name], s.file, f"validation.sets.{name}")
         episodes = sec.number("episodes", integer=True, positive=True, high=1000, why="each validation runs them")
+        own = sec.number("seed", integer=True, nonneg=True, high=2 ** 32 - 1, why="numpy's seed range") \
+            if sec.has("seed") else None
         dist = check_disturbances(sec)
         if not dist:
             raise sec.error("disturbances", dist, "must list at least one disturbance (drawn per episode)")
         sec.done()
-        sets.append(ValidationSet(str(name), episodes, dist))
+        sets.append(ValidationSet(str(name), episodes, dist, own))
     selection = read_selection(v)
     v.done()
     return Validation(every, seed, episode_time, tuple(sets), selection)

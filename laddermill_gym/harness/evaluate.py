@@ -10,7 +10,9 @@ SB3 training run (its best model) or model file (``<run>/model.zip`` for the las
 controller meets the same disturbances. Writes ``summary.csv`` (one row per controller and episode: return,
 length [s], failure, mean power [W], largest lateral excursion [m], share of clipped action entries),
 ``lateral.csv`` (controller, t, wing, lateral offset of episode 0) and ``lateral.png``. On Rotorcraft-v0 the
-"wing" is the craft (one lateral CG offset) and the failure names are the craft's.
+"wing" is the craft (one lateral CG offset) and the failure names are the craft's. No evaluation replaces another's
+tables unasked: an ``--out`` that holds them is refused (``--force`` replaces them), and without ``--out`` the tables
+go to ``results/<env name>``, or ``results/<env name>_2``, ``_3``, ... when that holds an earlier evaluation's.
 """
 
 from __future__ import annotations
@@ -28,10 +30,11 @@ from laddermill_gym.envs import ENV_IDS
 from laddermill_gym.envs.observation import N_OBS_PER_WING, OBS_INDEX
 from laddermill_gym.envs.task import FAILURES
 from laddermill_gym.studies.commands import Parser, UsageError, check_controllers, check_number
-from laddermill_gym.studies.controller_specs import build_controllers, policy_env_kwargs
+from laddermill_gym.studies.controller_specs import build_controllers, check_labels, controller_label, policy_env_kwargs
 
 __all__ = ["SCENARIOS", "EpisodeResults", "run_episodes", "write_tables", "plot_results", "controller_label",
-           "check_env_kwargs", "vector_env", "policy_env_kwargs", "build_controllers", "evaluate", "main"]
+           "check_env_kwargs", "vector_env", "policy_env_kwargs", "build_controllers", "evaluate", "output_folder",
+           "RESULT_FILES", "main"]
 
 #: Named evaluation scenarios (disturbance lists); "paper_step" is the registered default of the environments
 SCENARIOS = {
@@ -171,17 +174,6 @@ def plot_results(out: Path, results: dict[str, EpisodeResults], title: str) -> P
     return save_figure(fig, out / "lateral.png")
 
 
-def controller_label(spec: str) -> str:
-    """Short name of a controller spec for tables and legends."""
-    for prefix in ("lqr:", "lqr_guard:"):
-        if spec.startswith(prefix):
-            return prefix + Path(spec[len(prefix):]).stem
-    path = Path(spec)
-    if path.is_file():
-        return f"{path.parent.name}/{path.stem}"
-    return path.name if path.exists() else spec
-
-
 def check_env_kwargs(env_id: str, env_kwargs: dict) -> None:
     """ValueError naming an argument (and its value) that the registered environment ``env_id`` does not take,
     e.g. a scenario's ``disturbances`` or ``episode_time`` for an environment without them."""
@@ -209,8 +201,11 @@ def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dic
     """Run every controller spec on ``episodes`` seeded episodes (seeds 0 .. episodes - 1) of ``env_id`` with
     arguments ``env_kwargs`` (episode_time [s], disturbances) and write the tables into ``out``. Every controller is
     built (:func:`build_controllers`, each on ``env_kwargs`` with its policy's settings) before the first episode,
-    so a spec the environment refuses raises (ValueError, FileNotFoundError) before any runs; ``built``: those
-    already built by :func:`build_controllers` for these arguments (the command line builds them first)."""
+    so a spec the environment refuses raises (ValueError, FileNotFoundError) before any runs, and so do a spec named
+    twice and two specs of the same label (UsageError, :func:`~laddermill_gym.studies.controller_specs.check_labels`);
+    ``built``: those already built by :func:`build_controllers` for these arguments (the command line builds them
+    first)."""
+    check_labels(controllers)  # results are keyed by label: none may hide another
     if built is None:
         built = build_controllers(controllers, env_id, env_kwargs)
     results = {}
@@ -223,27 +218,61 @@ def evaluate(env_id: str, controllers: list[str], episodes: int, env_kwargs: dic
     return results
 
 
-def main(argv: list[str] | None = None) -> int:
-    p = Parser(prog="laddermill evaluate", description=__doc__.split("\n\n")[0])
+#: the files :func:`write_tables` and :func:`plot_results` write into a folder
+RESULT_FILES = ("summary.csv", "lateral.csv", "lateral.png")
+
+
+def _arguments(p: Parser) -> None:
     p.add_argument("--env", default="laddermill_gym/TetheredWing-v0", choices=sorted(ENV_IDS))
     p.add_argument("--controllers", nargs="+", default=["open_loop", "lqr"],
                    help="each one of: open_loop (trim controls held); lqr (the environment's default design in "
-                   "configs/agents/lqr_<scene>.yaml); lqr:PATH (an LQR config file); a training run folder "
-                   "(its best model, with its VecNormalize statistics), a model .zip file, or an rl-zoo3 log folder "
-                   "logs/<algo>/<env name>_<n> (its last model and statistics) (default: open_loop lqr)")
+                   "configs/agents/lqr_<scene>.yaml); lqr:PATH (an LQR config file); a shipped policy's name; a "
+                   "training run folder (its best model, with its VecNormalize statistics), a model .zip file, or an "
+                   "rl-zoo3 log folder logs/<algo>/<env name>_<n> (its last model and statistics); each named once, "
+                   "no two with the same label in the tables (default: open_loop lqr)")
     p.add_argument("--episodes", type=int, default=4, help="seeded episodes per controller (seeds 0..n-1)")
-    p.add_argument("--episode-time", type=float, help="[s] episode length (default: the environment's)")
+    p.add_argument("--episode-time", type=float, help="[s] episode length, a whole number of control periods "
+                   "(default: the environment's)")
     p.add_argument("--direction-step", type=float, help="[rad] wind-direction step at t = 1 s (default: the "
                    "environment's, 0.01 rad)")
     p.add_argument("--scenario", choices=sorted(SCENARIOS), help="a named disturbance: paper_step (0.01 rad "
                    "direction step at 1 s), step_minus_0.05, step_0.1, gust (1-cosine, +30 %% speed and 0.05 rad "
                    "direction over 10 s from t = 5 s)")
-    p.add_argument("--out", type=Path, help="output folder (default results/<env name>)")
-    args = p.parse_args(argv)
+    p.add_argument("--out", type=Path, help="output folder; one holding an evaluation's tables is refused unless "
+                   "--force (default results/<env name>, or results/<env name>_2, _3, ... when that holds one)")
+    p.add_argument("--force", action="store_true", help="replace the tables an earlier evaluation left in --out")
+
+
+def _held(folder: Path) -> list[str]:
+    """The evaluation's tables and figure (:data:`RESULT_FILES`) that ``folder`` holds."""
+    return [f for f in RESULT_FILES if (folder / f).exists()]
+
+
+def output_folder(out: Path | None, env_id: str, force: bool = False) -> Path:
+    """The folder an evaluation writes into, checked before any episode (not created): ``out`` (UsageError when it
+    is a file, or holds :data:`RESULT_FILES` and not ``force``), or by default ``results/<env name>``, or the first
+    of ``results/<env name>_2``, ``_3``, ... that holds none of them (``force``: ``results/<env name>`` always), so
+    that no evaluation silently replaces another's tables."""
+    if out is not None:
+        if out.exists() and not out.is_dir():
+            raise UsageError(f"--out = {str(out)!r}: is a file, not a folder")
+        if _held(out) and not force:
+            raise UsageError(f"--out = {str(out)!r}: holds an evaluation's tables already ({', '.join(_held(out))}); "
+                             "give another --out, or --force to replace them")
+        return out
+    base = Path("results") / env_id.split("/")[-1]
+    folder, k = base, 1
+    while not force and (_held(folder) or (folder.exists() and not folder.is_dir())):
+        k += 1
+        folder = base.with_name(f"{base.name}_{k}")
+    return folder
+
+
+def _env_kwargs(args, p: Parser) -> dict:
+    """The env arguments of the options (checked: UsageError naming the option)."""
     check_number("--episodes", args.episodes, low=1, high=4096, integer=True, strict=False)  # copies of one env
     check_number("--episode-time", args.episode_time, low=0, high=86400, unit="s")
     check_number("--direction-step", args.direction_step, low=-3.15, high=3.15, unit="rad")
-    check_controllers(args.controllers)
     env_kwargs = {}
     if args.episode_time is not None:
         env_kwargs["episode_time"] = args.episode_time
@@ -253,14 +282,41 @@ def main(argv: list[str] | None = None) -> int:
         env_kwargs["disturbances"] = [DirectionStep(step=args.direction_step)]
     if args.scenario is not None:
         env_kwargs["disturbances"] = SCENARIOS[args.scenario]
-    name = args.env.split("/")[-1]
-    out = args.out or Path("results") / name
     try:
         check_env_kwargs(args.env, env_kwargs)
     except ValueError as err:
         raise UsageError(str(err)) from None
+    return env_kwargs
+
+
+def _check_episodes(env_id: str, built: dict) -> None:
+    """UsageError naming ``--episode-time`` (and the controller whose settings make it so) for an episode that is
+    not a whole number of control periods (``envs.episode_argument_error``, as the suite reader applies it)."""
+    from laddermill_gym.envs import episode_argument_error
+
+    for spec, (_, kw) in built.items():
+        why = episode_argument_error(env_id, kw)
+        if why:
+            whose = f" with the control period of {spec!r}" if "control_dt" in policy_env_kwargs(spec, env_id) else ""
+            what = "the env's episode_time" if kw.get("episode_time") is None else "--episode-time = " \
+                f"{kw['episode_time']!r}"
+            raise UsageError(f"{what}{whose}: {why}")
+
+
+def main(argv: list[str] | None = None) -> int:
+    from laddermill_gym.studies.commands import writable_folder
+
+    p = Parser(prog="laddermill evaluate", description=__doc__.split("\n\n")[0])
+    _arguments(p)
+    args = p.parse_args(argv)
+    env_kwargs = _env_kwargs(args, p)
+    check_controllers(args.controllers)
+    check_labels(args.controllers)
+    out = output_folder(args.out, args.env, args.force)
     # every controller built and checked against the env before any episode: a refused one is one line, exit 2
     built = build_controllers(args.controllers, args.env, env_kwargs, option="--controllers")
+    _check_episodes(args.env, built)
+    out = writable_folder(out)  # created now, before any episode
     results = evaluate(args.env, args.controllers, args.episodes, env_kwargs, out, built=built)
     fig = plot_results(out, results, f"{args.env}: {args.episodes} episode(s), lateral offset (episode 0)")
     print(f"{'controller':<28} {'return':>10} {'length [s]':>11} {'max |dy| [m]':>13} {'power [W]':>10}  failures")
@@ -273,4 +329,6 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from laddermill_gym.studies.commands import run_guarded
+
+    sys.exit(run_guarded("evaluate", main))

@@ -16,7 +16,6 @@ step, ``envs.same_task``).
 
 from __future__ import annotations
 
-import argparse
 import math
 
 import numpy as np
@@ -56,12 +55,17 @@ def paired_survival(config: str, set_name: str, episodes: int, seed: int, contro
     env = cfg.env_id if env_id is None else env_id
     if not same_task(env, cfg.env_id):
         raise ValueError(f"env_id = {env!r}: not the task of {config} ({cfg.env_id}) on another physics step")
+    if not (isinstance(episodes, int) and episodes >= 1):
+        raise ValueError(f"episodes = {episodes!r}: must be a whole number >= 1")
+    if not (isinstance(seed, int) and 0 <= seed and seed + episodes - 1 <= 2 ** 32 - 1):
+        raise ValueError(f"seed = {seed!r}: the episodes' seeds {seed} .. {seed + episodes - 1} must lie in 0 .. "
+                         f"{2 ** 32 - 1} (numpy's seed range)")
     kw = cfg.carried_env_kwargs()
     seeds = list(range(seed, seed + episodes))
-    alive = {}
+    built = {spec: make_controller(spec, env, kw) for spec in controllers}  # both before any episode: a bad spec
+    alive = {}                                                               # fails at once
     for spec in controllers:
-        rec = run_episodes(make_controller(spec, env, kw), env, kw, seeds,
-                           cfg.validation.episode_time, sets[set_name].disturbances)
+        rec = run_episodes(built[spec], env, kw, seeds, cfg.validation.episode_time, sets[set_name].disturbances)
         alive[spec] = np.asarray(rec["failure"]) == 0
     a, b = (alive[c] for c in controllers)
     counts = dict(both=int(np.sum(a & b)), only_first=int(np.sum(a & ~b)), only_second=int(np.sum(~a & b)),
@@ -70,7 +74,9 @@ def paired_survival(config: str, set_name: str, episodes: int, seed: int, contro
 
 
 def main(argv: list[str] | None = None) -> None:
-    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    from laddermill_gym.studies.commands import Parser, UsageError, check_number
+
+    p = Parser(prog="python -m laddermill_gym.harness.paired_survival", description=__doc__.split("\n\n")[0])
     p.add_argument("--config", required=True, help="training config holding the validation set")
     p.add_argument("--set", required=True, help="validation set name (e.g. ntm_ib)")
     p.add_argument("--episodes", type=int, default=200, help="episodes (fields) [-]")
@@ -80,9 +86,13 @@ def main(argv: list[str] | None = None) -> None:
                    "config's env)")
     a = p.parse_args(argv)
     try:
+        check_number("--episodes", a.episodes, low=1, high=100000, integer=True, strict=False)
+        check_number("--seed", a.seed, low=0, high=2 ** 32 - a.episodes, integer=True, strict=False)
+        if a.controllers[0] == a.controllers[1]:
+            raise UsageError(f"--controllers {a.controllers}: the same controller twice")
         r = paired_survival(a.config, a.set, a.episodes, a.seed, a.controllers, a.env)
-    except ValueError as err:
-        p.error(str(err))
+    except (ValueError, OSError) as err:  # ConfigError and UsageError are ValueErrors; a missing file an OSError
+        p.error(str(err).replace("\n", " "))
     first, second = a.controllers
     for c in a.controllers:
         print(f"{c}: survives {int(r['alive'][c].sum())}/{a.episodes}")

@@ -11,9 +11,11 @@ x the episodes its reference controller (flown once, added to the references if 
     python -m laddermill_gym.harness.reselect --config configs/agents/ppo_tethered_wing_severe.yaml \\
         --runs runs/ppo_tethered_wing_seed0 --reference lqr --out results/reselect.csv
 
-A config whose ``validation.every`` equals its ``checkpoint_every`` selects, when trained, among the same steps, so
-the selected checkpoint is what ``laddermill train <config> --seed <s>`` keeps (the training is deterministic for
-a seed up to its time limit).
+Every policy a training validated is on disk as the checkpoint of its step (``checkpoints/step_<n>.zip``, saved at
+each validation, beside those of ``checkpoint_every``; an older run holds only the latter, which its validations,
+made ``n_envs`` steps later, did not fly), so flown on the training's own config this ranks a superset of the
+policies the training ranked, by the same score on the unrounded RMS: where its pick is a validated step, it is the
+one ``laddermill train <config> --seed <s>`` kept (the training is deterministic for a seed up to its time limit).
 """
 
 from __future__ import annotations
@@ -80,11 +82,12 @@ def reselect(config: str | Path, runs: list[str | Path], reference: list[str] = 
     rule, and ``score``). Written to ``out`` (CSV) when given."""
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.rl_config import load_rl_config
-    from laddermill_gym.harness.validation import lost_to_reference, score, validate
+    from laddermill_gym.harness.validation import lost_to_reference, score, validate, warn_shared_fields
 
     cfg = load_rl_config(config)
     if cfg.validation is None:
         raise ValueError(f"{config}: no validation section (the sets to select on)")
+    warn_shared_fields(cfg)
     kw = cfg.carried_env_kwargs()
     sel = cfg.validation.selection
     reference = list(reference) + ([sel.reference] if sel.rule == "paired" and sel.reference not in reference else [])
@@ -106,15 +109,16 @@ def reselect(config: str | Path, runs: list[str | Path], reference: list[str] = 
                          reference=int(is_reference), selected=0))
         log(f"{label}: {res['survived']}/{res['episodes']} {res['per_set']} RMS lateral "
             f"{res['rms_lateral_m']:.2f} m ({rows[-1]['cpu_s']} CPU s)")
+    ranked = {}  # label -> the result as scored: the raw RMS (the rows show it rounded), as the training ranks
     for r in rows:
         res = results[r["label"]]
         r["lost_to_reference"] = lost_to_reference(res, results[sel.reference]) if sel.rule == "paired" else ""
-        r["score"] = score(dict(res, rms_lateral_m=r["rms_lateral_m"], lost_to_reference=r["lost_to_reference"]),
-                           sel)[0]
+        ranked[r["label"]] = dict(res, lost_to_reference=r["lost_to_reference"])
+        r["score"] = score(ranked[r["label"]], sel)[0]
         r["selected"] = r.pop("selected")  # the last column
     policies = [r for r in rows if not r["reference"]]
-    if policies:
-        best = max(policies, key=lambda r: score(r, sel))
+    if policies:  # the first of equal scores, in step order: the training keeps a later one only if it is better
+        best = max(policies, key=lambda r: score(ranked[r["label"]], sel))
         best["selected"] = 1
         log(f"selected: {best['label']} ({best['survived']}/{best['episodes']}"
             + (f", {best['lost_to_reference']} lost that {sel.reference} holds, score {best['score']:g}"

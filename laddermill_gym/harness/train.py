@@ -98,6 +98,16 @@ def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm, stop=None):
             if vn is not None:
                 vn.save(str(out / "best_vecnormalize.pkl"))
 
+        def _save_checkpoint(self):
+            """The policy now as ``checkpoints/step_<n>.zip`` with the statistics it acts with (once per step n: a
+            validation saves the policy it validates, so every validated policy is a checkpoint reselect reads)."""
+            if self.num_timesteps == getattr(self, "checkpoint_step", None):
+                return
+            self.model.save(out / "checkpoints" / f"step_{self.num_timesteps}.zip")
+            if (vn := self._vecnorm()) is not None:  # the statistics the checkpoint acts with
+                vn.save(str(out / "checkpoints" / f"step_{self.num_timesteps}_vecnormalize.pkl"))
+            self.checkpoint_step = self.num_timesteps
+
         def _on_step(self) -> bool:
             pbar.update(self.num_timesteps - pbar.n)
             self._phases()
@@ -105,9 +115,7 @@ def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm, stop=None):
                 self.evaluate()
                 self.next_eval = self.num_timesteps + cfg.eval_every
             if self.num_timesteps >= self.next_ckpt:
-                self.model.save(out / "checkpoints" / f"step_{self.num_timesteps}.zip")
-                if (vn := self._vecnorm()) is not None:  # the statistics the checkpoint acts with
-                    vn.save(str(out / "checkpoints" / f"step_{self.num_timesteps}_vecnormalize.pkl"))
+                self._save_checkpoint()
                 self.next_ckpt += cfg.checkpoint_every
             if stop is not None and stop.requested:
                 return False

@@ -4,7 +4,9 @@
   (``log_std``) to need no gradient, so PPO's optimiser (Adam skips parameters without a gradient) updates the
   critic alone; the learning rate of that phase replaces the config's until it ends.
 * :func:`validate`: the deterministic policy on every validation set (``run_episodes`` of the gust benchmark: one
-  vector-env copy per episode, copy i seeded ``seed + i``), scored by the episodes survived, then by the smaller
+  vector-env copy per episode, copy i seeded ``seed + i``, ``seed`` the set's own or the validation's,
+  :func:`set_seeds`; sets of one turbulence model on shared seeds are warned of, :func:`warn_shared_fields`), each
+  validated policy first saved as the checkpoint of its step; scored by the episodes survived, then by the smaller
   RMS lateral excursion (:func:`score`); with ``selection.rule: paired`` by the episodes survived minus ``penalty``
   x the episodes the reference controller (flown once per run, same seeds) survives and the policy loses
   (:func:`lost_to_reference`), then the smaller RMS.
@@ -18,8 +20,8 @@ import time
 
 import numpy as np
 
-__all__ = ["TrainingPhases", "freeze_actor", "set_learning_rate", "validate", "score", "lost_to_reference",
-           "VALIDATION_FIELDS"]
+__all__ = ["TrainingPhases", "freeze_actor", "set_learning_rate", "validate", "set_seeds", "shared_fields",
+           "warn_shared_fields", "score", "lost_to_reference", "VALIDATION_FIELDS"]
 
 #: columns of a run's ``validation.csv``
 VALIDATION_FIELDS = ("steps", "minutes", "survived", "episodes", "rms_lateral_m", "per_set", "lost_to_reference",
@@ -56,7 +58,7 @@ def validate(controller, env_id: str, env_kwargs: dict, validation) -> dict:
 
     survived, episodes, sq, steps, per_set, outcomes = 0, 0, 0.0, 0, {}, {}
     for vs in validation.sets:
-        seeds = list(range(validation.seed, validation.seed + vs.episodes))
+        seeds = set_seeds(validation, vs)
         rec = run_episodes(controller, env_id, env_kwargs, seeds, validation.episode_time, vs.disturbances)
         alive = tuple(int(f == 0) for f in np.asarray(rec["failure"]))
         ok = sum(alive)
@@ -65,6 +67,45 @@ def validate(controller, env_id: str, env_kwargs: dict, validation) -> dict:
         sq, steps = sq + float(np.sum(rec["lateral_sq"])), steps + int(np.sum(rec["steps"]))
     return dict(survived=survived, episodes=episodes, rms_lateral_m=math.sqrt(sq / max(steps, 1)), per_set=per_set,
                 outcomes=outcomes)
+
+
+def set_seeds(validation, vs) -> list[int]:
+    """The episode seeds of the validation set ``vs``: from its own ``seed`` (None: the validation's), one per
+    episode."""
+    first = validation.seed if vs.seed is None else vs.seed
+    return list(range(first, first + vs.episodes))
+
+
+def _turbulence_models(vs) -> set[str]:
+    return {str(d.get("model")) for d in vs.disturbances if d.get("type") == "Turbulence"}
+
+
+def shared_fields(validation) -> list[tuple[str, str, str]]:
+    """(set, set, model) for every two validation sets with a turbulence of the same ``model`` whose episode seeds
+    overlap (:func:`set_seeds`): the same seed draws the same field of a model (NTM IA's is NTM IB's, scaled), so
+    those episodes test one field twice."""
+    out = []
+    sets = list(validation.sets)
+    for i, a in enumerate(sets):
+        for b in sets[i + 1:]:
+            if set(set_seeds(validation, a)) & set(set_seeds(validation, b)):
+                out += [(a.name, b.name, m) for m in sorted(_turbulence_models(a) & _turbulence_models(b))]
+    return out
+
+
+def warn_shared_fields(cfg) -> None:
+    """A UserWarning naming the config file (``cfg.file``) and the sets of :func:`shared_fields`, if any. The
+    selection is not changed (the shipped policies were selected so); a set's own ``seed`` separates them."""
+    import warnings
+
+    if cfg.validation is None:
+        return
+    shared = shared_fields(cfg.validation)
+    if shared:
+        pairs = "; ".join(f"{a} and {b} ({m})" for a, b, m in shared)
+        warnings.warn(f"{cfg.file}: validation sets {pairs} draw their turbulence with the same seeds, so they fly "
+                      "the same fields scaled; give one of each pair a seed of its own (validation.sets.<name>.seed) "
+                      "for other fields", UserWarning, stacklevel=2)
 
 
 def lost_to_reference(result: dict, reference: dict) -> int:
@@ -89,14 +130,16 @@ def score(result: dict, selection=None) -> tuple[float, float]:
 
 class TrainingPhases:
     """The phases as methods of the training's SB3 callback (which sets ``cfg``, ``out``, ``pbar`` and ``t0`` and
-    provides ``_vecnorm()`` and ``_save_best(vecnormalize)``): the critic warm-up from the first step, the
-    validations every ``validation.every`` steps (``validation.csv``; the best so far saved as the best model)."""
+    provides ``_vecnorm()``, ``_save_best(vecnormalize)`` and ``_save_checkpoint()``): the critic warm-up from the
+    first step, the validations every ``validation.every`` steps (``validation.csv``; each validated policy saved
+    as ``checkpoints/step_<n>.zip``, the best so far as the best model)."""
 
     best_val: dict | None = None
     next_val: int = 0
     actor_free: bool = False
 
     def _on_training_start(self) -> None:
+        warn_shared_fields(self.cfg)
         if self.cfg.critic_warmup is not None:  # the critic alone first (control/rl_phases.py)
             freeze_actor(self.model, True)
             self.saved_rate = (self.model.learning_rate, self.model.lr_schedule)
@@ -107,6 +150,7 @@ class TrainingPhases:
         from laddermill_gym.control.sb3_policy import SB3Controller
 
         vn = self._vecnorm()
+        self._save_checkpoint()  # the policy validated here, on disk as checkpoints/step_<n>.zip (reselect's)
         ctrl = SB3Controller(self.model, *((vn.obs_rms.mean, vn.obs_rms.var, vn.clip_obs, vn.epsilon)
                                            if vn is not None else ()))
         res = validate(ctrl, self.cfg.env_id, self.cfg.carried_env_kwargs(), self.cfg.validation)

@@ -1,8 +1,10 @@
 """Controller specs of the commands (``laddermill evaluate``, ``gust-bench``, ``demo``) against an environment: the
-control settings a trained policy carries (:func:`policy_env_kwargs`) and every spec built before any episode runs
+control settings a trained policy carries (:func:`policy_env_kwargs`), every spec built before any episode runs
 (:func:`build_controllers`; for a command, a spec the environment refuses is one line, ``--controllers 'SPEC':
-...``). A shared module of ``studies`` (any topic, and ``harness``, may import it); imports ``control`` and
-``envs``."""
+...``), the label of a spec in a command's results (:func:`controller_label`) and the refusal of specs named twice
+or labelled alike (:func:`check_labels`). A shipped policy's name (``ppo_tethered_wing``) is the shipped policy
+wherever it is read, as ``make_controller`` reads it, whatever the working directory holds. A shared module of
+``studies`` (any topic, and ``harness``, may import it); imports ``control`` and ``envs``."""
 
 from __future__ import annotations
 
@@ -12,7 +14,55 @@ from pathlib import Path
 from laddermill_gym.envs import ENV_IDS
 from laddermill_gym.studies.commands import UsageError
 
-__all__ = ["policy_env_kwargs", "build_controllers"]
+__all__ = ["policy_env_kwargs", "build_controllers", "controller_label", "check_labels", "spec_path"]
+
+#: the prefixes of a spec that names a config file: ``lqr:CONFIG``, ``lqr_guard:CONFIG``, ``crosswind:CONFIG``
+CONFIG_PREFIXES = ("lqr:", "lqr_guard:", "crosswind:")
+
+
+def spec_path(spec: str) -> Path | None:
+    """The policy folder or file a controller spec names, as ``make_controller`` reads it: a shipped policy's name
+    (``control.shipped_policies.SHIPPED_POLICIES``) is its package folder, before any path of that name in the
+    working directory; a spec with a config prefix (:data:`CONFIG_PREFIXES`) or one of the model-based names names
+    none (None); any other spec is a path (which need not exist)."""
+    from laddermill_gym.control.shipped_policies import POLICY_DIR, SHIPPED_POLICIES
+
+    if spec in SHIPPED_POLICIES:
+        return POLICY_DIR / spec
+    if spec.startswith(CONFIG_PREFIXES) or spec in ("open_loop", "lqr", "lqr_guard", "scripted", "crosswind"):
+        return None
+    return Path(spec)
+
+
+def controller_label(spec: str) -> str:
+    """The label of a controller spec in a command's tables, legends and rows: ``PREFIX:<config stem>`` for a spec
+    with a config prefix (``lqr:lqr_tethered_wing``), a shipped policy's name as it is, a run folder's name, a model
+    file's ``folder/stem``, or the spec itself."""
+    from laddermill_gym.control.shipped_policies import SHIPPED_POLICIES
+
+    for prefix in CONFIG_PREFIXES:
+        if spec.startswith(prefix):
+            return prefix + Path(spec[len(prefix):]).stem
+    path = Path(spec)
+    if spec in SHIPPED_POLICIES or not path.exists():
+        return spec
+    return f"{path.parent.name}/{path.stem}" if path.is_file() else path.name
+
+
+def check_labels(specs, option: str = "--controllers") -> None:
+    """UsageError naming ``option`` for a spec named twice, or for two specs whose results would carry the same label
+    (:func:`controller_label`; ``lqr:a/lqr_x.yaml`` and ``lqr:b/lqr_x.yaml``, run folders ``a/ppo`` and ``b/ppo``),
+    naming both specs and the label: a command keys its results by label, so one would hide or mix with the other."""
+    twice = sorted({s for s in specs if list(specs).count(s) > 1})
+    if twice:
+        raise UsageError(f"{option} {twice}: named twice")
+    seen: dict[str, str] = {}
+    for spec in specs:
+        label = controller_label(spec)
+        if label in seen:
+            raise UsageError(f"{option} {seen[label]!r} and {spec!r}: both would be labelled {label!r} in the results; "
+                             "name one by another path (a copy or a link of another name)")
+        seen[label] = spec
 
 
 def policy_env_kwargs(spec: str, env_id: str | None = None) -> dict:
@@ -26,7 +76,9 @@ def policy_env_kwargs(spec: str, env_id: str | None = None) -> dict:
     from laddermill_gym.control.zoo_run import find_zoo_run, read_zoo_run
     from laddermill_gym.envs import same_task
 
-    path = Path(spec)
+    path = spec_path(spec)
+    if path is None:
+        return {}
     if path.exists() and find_zoo_run(path) is not None:
         run = read_zoo_run(path)
         if run.env_id not in ENV_IDS:

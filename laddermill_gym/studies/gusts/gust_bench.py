@@ -10,34 +10,49 @@ environment, scenarios of a disturbance list, a duration and seeds; every contro
 and RMS lateral excursion [m], energy produced [J] and its ratio to the same controller's undisturbed run (same
 seed and duration, no disturbance), peak tension over its limit, settling time [s] and control effort (RMS of
 the action's deviation from the trim action). Writes ``gust_bench.csv``, ``gust_bench.json`` and a scorecard
-figure per environment into ``--out`` (default ``results/gust_bench/<suite>``). The episode sets run serially,
-on ``--workers`` local processes or on Ray (:mod:`laddermill_gym.studies.parallel`, docs/scale_out.md), with
-the same rows.
+figure per environment into ``--out`` (default ``results/gust_bench/<suite>``), merged into the results an earlier
+run of the same suite file, package version and source left there (a row per env, scenario, controller and seed;
+:mod:`laddermill_gym.studies.gusts.gust_results`); other results there are refused before any episode unless
+``--force`` replaces them. Two controllers of one label (:func:`controller_label`) are refused. The episode sets
+run serially, on ``--workers`` local processes or on Ray (:mod:`laddermill_gym.studies.parallel`,
+docs/scale_out.md), with the same rows.
 """
 
 from __future__ import annotations
 
 import argparse
-import csv
-import json
 import math
 from pathlib import Path
 
 import numpy as np
 
 from laddermill_gym.studies.commands import Command, UsageError, check_controllers, writable_folder
-from laddermill_gym.studies.controller_specs import build_controllers, policy_env_kwargs
+from laddermill_gym.studies.controller_specs import (
+    CONFIG_PREFIXES,
+    build_controllers,
+    check_labels,
+    controller_label,
+    policy_env_kwargs,
+    spec_path,
+)
+from laddermill_gym.studies.gusts.gust_results import earlier_rows, merge_rows, run_provenance, summarise, write_outputs
 from laddermill_gym.studies.gusts.gust_suite import Scenario, Suite, load_suite
 from laddermill_gym.studies.parallel import add_arguments, check_arguments, run_tasks
 
-__all__ = ["controller_label", "run_episodes", "episode_metrics", "built_controller", "build_suite_controllers",
-           "episodes_task", "warmup_tasks", "run_suite", "write_outputs", "add_parser", "main"]
+__all__ = ["controller_label", "absolute_spec", "run_episodes", "settling_time", "episode_metrics",
+           "built_controller", "build_suite_controllers", "episodes_task", "warmup_tasks", "run_suite",
+           "run_provenance", "summarise", "write_outputs", "add_parser", "main"]
 
-#: A copy counts as settled when its largest lateral excursion stays below this share of its peak after the
+#: The settling band's half width as a share of the excursion's largest deviation from its final value after the
 #: disturbance's start (a 10 % band; chosen: the lateral motion of these systems is lightly damped).
 SETTLE_BAND = 0.1
-#: Excursion changes below this [m] count as settled (a floor for disturbances that hardly move the system).
+#: The band's least half width [m] (a floor for disturbances that hardly move the system).
 SETTLE_FLOOR = 1e-3
+#: The tail whose mean is the final value: this share of the time from the disturbance's start to the end.
+SETTLE_TAIL = 0.1
+#: A settled tail is level: a least-squares line through it changes by at most this share of the band's half
+#: width across the tail (a steady drift, whose band grows with it, is not settled).
+SETTLE_LEVEL = 0.5
 
 
 def _lateral_fn(env, n: int, nw: int):
@@ -114,21 +129,28 @@ def run_episodes(controller, env_id: str, env_kwargs: dict, seeds, duration: flo
 
 
 def settling_time(series: np.ndarray, dt: float, start: float, duration: float) -> float:
-    """Time [s] from ``start`` until the excursion e(t) stays within a band of its final value (the mean over
-    the last 10 % of the episode, so a new equilibrium counts as settled); the band is SETTLE_BAND x the largest
-    deviation from the final value after ``start``, at least SETTLE_FLOOR. nan if e still leaves the band in
-    that last 10 % (not settled)."""
+    """Time [s] from ``start`` until the excursion e(t) (sampled every ``dt`` [s] from t = 0; nan after the end)
+    enters, for good, the band around its final value: the final value is the mean of e over the tail (the last
+    SETTLE_TAIL of the time from ``start`` to ``duration``, so a new equilibrium counts as settled), the band's half
+    width SETTLE_BAND x the largest deviation of e from the final value after ``start``, at least SETTLE_FLOOR. nan
+    (not settled) when e leaves the band in the tail, or when the tail is not level: a least-squares line through it
+    changes by more than SETTLE_LEVEL x the band's half width across the tail (a steady drift, whose own growth sets
+    the band, stays within it over the tail but has no final value)."""
     t = dt * np.arange(series.size)
     after = (t >= start) & np.isfinite(series)
     if not after.any():
         return math.nan
     ta, e = t[after], series[after]
-    tail = ta >= start + 0.9 * (duration - start)
+    tail = ta >= start + (1.0 - SETTLE_TAIL) * (duration - start)
     final = float(np.mean(e[tail])) if tail.any() else float(e[-1])
     d = np.abs(e - final)
     band = max(SETTLE_BAND * float(np.max(d)), SETTLE_FLOOR)
     if tail.any() and float(np.max(d[tail])) > band:
         return math.nan
+    if np.count_nonzero(tail) >= 2:
+        slope = np.polyfit(ta[tail] - ta[tail][0], e[tail], 1)[0]
+        if abs(slope) * float(ta[tail][-1] - ta[tail][0]) > SETTLE_LEVEL * band:
+            return math.nan
     above = np.flatnonzero(d > band)
     return float(ta[above[-1]] - start + dt) if above.size else 0.0
 
@@ -158,15 +180,6 @@ def episode_metrics(rec: dict, ref_energy: np.ndarray, scenario: Scenario, names
     return rows
 
 
-def controller_label(spec: str) -> str:
-    """The label of a controller spec in the rows: ``lqr:<config stem>``, a run folder's name, a model file's
-    ``folder/stem``, or the spec itself."""
-    if spec.startswith("lqr:"):
-        return "lqr:" + Path(spec[4:]).stem
-    p = Path(spec)
-    return (f"{p.parent.name}/{p.stem}" if p.is_file() else p.name) if p.exists() else spec
-
-
 def _jobs(suite: Suite, env_ids, controllers, scenarios) -> list[tuple]:
     """(env_id, env_kwargs with the policy's control settings (:func:`policy_env_kwargs`), controller spec,
     scenario) in the benchmark's order; UsageError for an env the suite lacks or a scenario an env named in
@@ -190,11 +203,20 @@ def _jobs(suite: Suite, env_ids, controllers, scenarios) -> list[tuple]:
     return jobs
 
 
-def _absolute(spec: str) -> str:
-    """``spec`` with a file or folder it names made absolute (workers on Ray do not share the caller's
-    working directory); other specs as they are."""
-    prefix, name = ("lqr:", spec[4:]) if spec.startswith("lqr:") else ("", spec)
-    return prefix + str(Path(name).resolve()) if Path(name).exists() else spec
+def absolute_spec(spec: str) -> str:
+    """``spec`` with the file or folder it names made absolute (workers on Ray do not share the caller's working
+    directory), resolved as ``make_controller`` resolves it: a shipped policy's name stays a name (the shipped policy,
+    whatever the working directory holds); a config after a prefix (``lqr:``, ``lqr_guard:``, ``crosswind:``) is
+    ``model.configio.config_path``'s file (a bare name, a path, the shipped file of a ``configs/...`` path); other
+    specs as they are."""
+    from laddermill_gym.model.configio import config_path
+
+    for prefix in CONFIG_PREFIXES:
+        if spec.startswith(prefix):
+            path = config_path("agents", spec[len(prefix):])
+            return prefix + str(path.resolve()) if path.is_file() else spec
+    path = spec_path(spec)
+    return str(path.resolve()) if path is not None and path.exists() and path == Path(spec) else spec
 
 
 def warmup_tasks(suite: Suite, env_ids, controllers, scenarios=None, forget: bool = True) -> list[tuple]:
@@ -214,8 +236,8 @@ def warmup_tasks(suite: Suite, env_ids, controllers, scenarios=None, forget: boo
             key = (env_id, spec, bool(dist))
             if key not in seen:
                 seen.add(key)
-                tasks.append((episodes_task, dict(env_id=env_id, env_kwargs=kw, spec=_absolute(spec), seeds=(0,),
-                                                  duration=WARMUP_S, disturbances=dist)))
+                tasks.append((episodes_task, dict(env_id=env_id, env_kwargs=kw, spec=absolute_spec(spec),
+                                                  seeds=(0,), duration=WARMUP_S, disturbances=dist)))
     return tasks
 
 
@@ -253,7 +275,7 @@ def build_suite_controllers(suite: Suite, env_ids, controllers, scenarios=None, 
         env_kwargs, scen = suite.envs[env_id]
         if any(not scenarios or s.name in scenarios for s in scen):
             build_controllers(controllers, env_id, env_kwargs, option=option,
-                              build=lambda spec, e, kw: built_controller(_absolute(spec), e, kw))
+                              build=lambda spec, e, kw: built_controller(absolute_spec(spec), e, kw))
 
 
 def episodes_task(env_id: str, env_kwargs: dict, spec: str, seeds, duration: float, disturbances) -> dict:
@@ -278,7 +300,7 @@ def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool
     jobs = _jobs(suite, env_ids, controllers, scenarios)
     tasks, refs, runs = [], {}, []
     for env_id, kw, spec, s in jobs:
-        base = dict(env_id=env_id, env_kwargs=kw, spec=_absolute(spec), seeds=s.seeds, duration=s.duration)
+        base = dict(env_id=env_id, env_kwargs=kw, spec=absolute_spec(spec), seeds=s.seeds, duration=s.duration)
         ref_key = (env_id, spec, repr(sorted(kw.items())), s.duration, s.seeds)
         if ref_key not in refs:
             refs[ref_key] = len(tasks)
@@ -296,90 +318,58 @@ def run_suite(suite: Suite, env_ids, controllers, scenarios=None, progress: bool
     return rows
 
 
-def run_provenance(suite: Suite, env_ids) -> dict:
-    """What a run's figures depend on beside the suite's scenarios: per env the arguments it was built with (the
-    registered ones merged with the suite's, ``envs.registered_arguments``: scene, physics step, control period),
-    the package's version and a digest of its source (``studies.parallel.source_digest``). A suite fixes its
-    scenarios; the physics is the env id's, so a result is read with the arguments it ran on."""
-    from laddermill_gym import __version__
-    from laddermill_gym.envs import registered_arguments
-    from laddermill_gym.studies.parallel import source_digest
-
-    return {"package_version": __version__, "source_digest": source_digest(),
-            "env_arguments": {e: registered_arguments(e, suite.envs[e][0]) for e in env_ids}}
-
-
-def write_outputs(rows: list[dict], suite: Suite, out: Path) -> list[Path]:
-    """``gust_bench.csv`` (one row per env, controller, scenario and seed), ``gust_bench.json`` (the suite, the
-    provenance of :func:`run_provenance`, the rows and per-(env, controller, scenario) summaries) and
-    ``scorecard_<env>.png``; returns the paths."""
-    out.mkdir(parents=True, exist_ok=True)
-    paths = [out / "gust_bench.csv", out / "gust_bench.json"]
-    with open(paths[0], "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    summary = summarise(rows)
-    with open(paths[1], "w") as f:
-        json.dump({"suite": suite.name, "version": suite.version, "file": str(suite.path),
-                   **run_provenance(suite, dict.fromkeys(r["env"] for r in rows)), "rows": rows,
-                   "summary": summary}, f, indent=1, default=lambda x: None if x != x else x)
-    from laddermill_gym.studies.gusts.gust_scorecard import plot_scorecard
-
-    for env_id in dict.fromkeys(r["env"] for r in rows):
-        paths.append(plot_scorecard([s for s in summary if s["env"] == env_id], env_id, suite.name,
-                                    out / f"scorecard_{env_id.split('/')[-1]}.png"))
-    return paths
-
-
-def summarise(rows: list[dict]) -> list[dict]:
-    """Per (env, controller, scenario): survival share, medians of the metrics over seeds (nan-aware)."""
-    groups: dict[tuple, list[dict]] = {}
-    for r in rows:
-        groups.setdefault((r["env"], r["controller"], r["scenario"]), []).append(r)
-    out = []
-    for (env_id, ctrl, scen), rs in groups.items():
-        s = {"env": env_id, "controller": ctrl, "scenario": scen, "n": len(rs),
-             "survived": sum(r["survived"] for r in rs) / len(rs)}
-        for k in ("t_end_s", "max_lateral_m", "rms_lateral_m", "energy_ratio", "peak_tension_ratio",
-                  "settling_time_s", "control_effort"):
-            v = np.array([r[k] for r in rs], dtype=float)
-            s[k] = float(np.nanmedian(v)) if np.isfinite(v).any() else math.nan
-        out.append(s)
-    return out
-
-
 def _arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--suite", default="gusts-v1", help="suite name in configs/benchmarks/ or a YAML path")
     p.add_argument("--env", nargs="*", default=[], help="environment ids (default: all of the suite's)")
     p.add_argument("--controllers", nargs="+", default=["open_loop"],
-                   help="open_loop, lqr, lqr:<config.yaml> or a training run folder / model file")
+                   help="open_loop, lqr, lqr:<config.yaml>, a shipped policy's name or a training run folder / model "
+                   "file; each named once, no two with the same label in the rows")
     p.add_argument("--scenarios", nargs="*", default=[], help="scenario names (default: all)")
-    p.add_argument("--out", type=Path, help="output folder (default results/gust_bench/<suite>)")
+    p.add_argument("--out", type=Path, help="output folder (default results/gust_bench/<suite>); the rows of a run "
+                   "merge into those an earlier run of the same suite, package version and source left there (a row "
+                   "per env, scenario, controller and seed, this run's replacing the same), other results are refused")
+    p.add_argument("--force", action="store_true", help="replace the results in --out instead of merging into them")
     add_arguments(p)
 
 
-def _run(args) -> int:
+def _check_options(args) -> Suite:
+    """The suite, after the options' checks that need no controller built (UsageError or ConfigError: one line)."""
     check_arguments(args, "laddermill gust-bench")
     check_controllers(args.controllers)
-    for option, names in (("--env", args.env), ("--controllers", args.controllers)):
-        twice = sorted({n for n in names if names.count(n) > 1})
-        if twice:  # its rows would count twice in the summary
-            raise UsageError(f"{option} {twice}: named twice")
+    if len(set(args.env)) != len(args.env):  # its rows would count twice in the summary
+        raise UsageError(f"--env {sorted({e for e in args.env if args.env.count(e) > 1})}: named twice")
+    check_labels(args.controllers)  # rows are keyed by label: two specs of one label would merge into one
     suite = load_suite(args.suite)
     _jobs(suite, args.env, [], args.scenarios)  # an unknown --env before any run
     names = {s.name for _, scen in suite.envs.values() for s in scen}
     unknown = sorted(set(args.scenarios) - names)
     if unknown:
         raise UsageError(f"--scenarios {unknown}: not scenarios of suite {suite.name} ({', '.join(sorted(names))})")
+    return suite
+
+
+def _run(args) -> int:
+    suite = _check_options(args)
+    out = args.out or Path("results") / "gust_bench" / suite.name
+    if out.exists() and not out.is_dir():
+        raise UsageError(f"--out = {str(out)!r}: is a file, not a folder")
+    earlier = earlier_rows(out, suite, args.env or list(suite.envs), args.force)  # refused before any episode
     # every controller built and checked against each env before any episode (a refused one: one line, exit 2).
     # Serially (--workers 0) the tasks then use these very controllers, at no extra cost; with --workers or --ray
     # each worker builds its own again, so this is a one-time extra cost there, paid for the early, clean error.
     build_suite_controllers(suite, args.env, args.controllers, args.scenarios, option="--controllers")
-    out = writable_folder(args.out or Path("results") / "gust_bench" / suite.name)  # before any episode
-    rows = run_suite(suite, args.env, args.controllers, args.scenarios, workers=args.workers, ray=args.ray,
-                     built=True)
-    for path in write_outputs(rows, suite, out):
+    out = writable_folder(out)  # before any episode
+    try:
+        rows = run_suite(suite, args.env, args.controllers, args.scenarios, workers=args.workers, ray=args.ray,
+                         built=True)
+    except ConnectionError as err:  # Ray's cluster not reached (ray.init): no episode has run
+        if args.ray is None:
+            raise
+        raise UsageError(f"--ray {args.ray!r}: {err}") from None
+    if args.force:  # the scorecards of envs the replaced results held
+        for old in out.glob("scorecard_*.png"):
+            old.unlink()
+    for path in write_outputs(merge_rows(earlier, rows), suite, out):
         print(path)
     return 0
 

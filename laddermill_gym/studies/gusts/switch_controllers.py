@@ -15,11 +15,10 @@ import argparse
 import math
 from pathlib import Path
 
-import yaml
+__all__ = ["Handover", "SUITE", "scenario", "handover_outcomes", "main"]
 
-__all__ = ["Handover", "scenario", "handover_outcomes", "main"]
-
-SUITE = Path(__file__).resolve().parents[3] / "configs" / "benchmarks" / "gusts-v1.yaml"
+#: the suite whose scenarios the hand-overs fly (a name of ``configs/benchmarks/``, read by ``gust_suite.load_suite``)
+SUITE = "gusts-v1"
 
 
 class Handover:
@@ -35,29 +34,45 @@ class Handover:
 
 
 def scenario(env_id: str, name: str, suite: str | Path = SUITE) -> dict:
-    """The scenario ``name`` of ``env_id`` in the suite file (ValueError naming the file and the names)."""
-    data = yaml.safe_load(Path(suite).read_text())
-    found = {s["name"]: s for s in data["envs"].get(env_id, {}).get("scenarios", [])}
+    """The scenario ``name`` of ``env_id`` in ``suite`` (a shipped suite's name or a YAML path, read and checked by
+    ``gust_suite.load_suite``) as a mapping (``name``, ``start``, ``duration``, ``seeds``, ``disturbances``) with
+    the suite's ``env_kwargs`` for the env; ValueError naming the suite and the names."""
+    from dataclasses import asdict
+
+    from laddermill_gym.studies.gusts.gust_suite import load_suite
+
+    s = load_suite(suite)
+    env_kwargs, scenarios = s.envs.get(env_id, ({}, ()))
+    found = {sc.name: sc for sc in scenarios}
     if name not in found:
-        raise ValueError(f"{suite}: no scenario {name!r} for {env_id} (scenarios: {sorted(found)})")
-    return found[name]
+        raise ValueError(f"{s.path}: no scenario {name!r} for {env_id} (scenarios: {sorted(found)})")
+    return dict(asdict(found[name]), env_kwargs=dict(env_kwargs))
 
 
-def handover_outcomes(env_id: str, name: str, seed: int, controllers: list[str], times: list[float]) -> list:
+def handover_outcomes(env_id: str, name: str, seed: int, controllers: list[str], times: list[float],
+                      suite: str | Path = SUITE) -> list:
     """(hand-over time [s], failure code, end time [s]) of ``controllers[0]`` handing over to ``controllers[1]``
-    at each of ``times`` on seed ``seed`` of the scenario ``name``."""
+    at each of ``times`` on seed ``seed`` of the scenario ``name`` of ``suite``. Both are built before any episode
+    as gust-bench builds them (``controller_specs.build_controllers``: the suite's env arguments with a policy's
+    control settings over them); ValueError when the two need different env arguments (one env flies both)."""
     import gymnasium as gym
 
-    from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.studies.controller_specs import build_controllers
     from laddermill_gym.studies.gusts.gust_bench import run_episodes
 
-    sc = scenario(env_id, name)
-    first, second = (make_controller(c, env_id, {}) for c in controllers)
-    dt = float(gym.make(env_id).unwrapped.task.control_dt)  # [s] the control period
+    sc = scenario(env_id, name, suite)
+    built = build_controllers(controllers, env_id, sc["env_kwargs"])
+    (first, kw), (second, kw2) = (built[c] for c in controllers)
+    if kw != kw2:
+        raise ValueError(f"controllers {controllers}: fly on different env arguments ({kw} and {kw2}); one episode "
+                         "needs one env")
+    env = gym.make(env_id, **kw)
+    dt = float(env.unwrapped.task.control_dt)  # [s] the control period
+    env.close()
     rows = []
     for t in times:
         steps = round(float(t) / dt)
-        rec = run_episodes(Handover(first, second, steps), env_id, {}, [seed], sc["duration"], sc["disturbances"])
+        rec = run_episodes(Handover(first, second, steps), env_id, kw, [seed], sc["duration"], sc["disturbances"])
         rows.append((float(t), int(rec["failure"][0]), float(rec["t_end"][0])))
     return rows
 
@@ -65,7 +80,9 @@ def handover_outcomes(env_id: str, name: str, seed: int, controllers: list[str],
 def main(argv: list[str] | None = None) -> None:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--env", default="laddermill_gym/TetheredWing-v0")
-    p.add_argument("--scenario", required=True, help="gusts-v1 scenario name")
+    p.add_argument("--suite", default=SUITE, help="suite name in configs/benchmarks/ or a YAML path (default: "
+                   "%(default)s)")
+    p.add_argument("--scenario", required=True, help="scenario name of the suite")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--controllers", nargs=2, required=True, help="first (flies up to the time) and second")
     p.add_argument("--times", nargs="+", type=float, required=True, help="hand-over times [s]")
@@ -74,7 +91,7 @@ def main(argv: list[str] | None = None) -> None:
     if bad:  # before the controllers are built
         p.error(f"--times {bad[0]!r}: each hand-over time must be a finite number >= 0 s")
     first, second = a.controllers
-    for t, code, t_end in handover_outcomes(a.env, a.scenario, a.seed, a.controllers, a.times):
+    for t, code, t_end in handover_outcomes(a.env, a.scenario, a.seed, a.controllers, a.times, a.suite):
         print(f"{first} -> {second} at {t:g} s: " + ("survives" if code == 0 else f"fails at {t_end:.2f} s"))
 
 

@@ -25,12 +25,13 @@ import numpy as np
 
 from laddermill_gym.control.base import actions_from_controls, control_ranges, controls_from_actions
 from laddermill_gym.control.linearize import LATERAL_INPUTS, lateral_indices, minimal_from_full
+from laddermill_gym.model.configio import CONFIG_DIR
 from laddermill_gym.model.params import N_CONTROLS
 from laddermill_gym.sim.simulator import ADAPTIVE_METHODS
 
 #: the controllers of ``--controller``: ``none`` the open loop (controls held at the start's), ``lqr`` the LQR
 CONTROLLERS = ("none", "lqr")
-_AGENTS = Path(__file__).resolve().parents[3] / "configs" / "agents"
+_AGENTS = CONFIG_DIR / "agents"  # the shipped configs, in a checkout and in an installed wheel alike
 #: the LQR config of each scene the closed loop runs on (the scene's file stem)
 LQR_CONFIGS = {"tethered_wing": _AGENTS / "lqr_tethered_wing.yaml",
                "ladder_chain": _AGENTS / "lqr_ladder_chain_central.yaml",
