@@ -81,7 +81,7 @@ def _job_kwargs(spec: str, env_id: str) -> list[dict]:
     """The env arguments of gust-bench's tasks for ``spec`` on ``env_id`` (its warm-up tasks, one per kernel
     variant; the benchmark's tasks take the same jobs)."""
     tasks = gb.warmup_tasks(load_suite("gusts-v1"), [env_id], [spec])
-    kws = [kw["env_kwargs"] for fn, kw in tasks if fn is gb.episodes_task]
+    kws = [kw["env_kwargs"] for fn, kw in tasks if fn is gb.warmup_episode]
     assert kws
     return kws
 

@@ -34,7 +34,7 @@ def test_a_shipped_policys_name_is_the_shipped_policy_whatever_the_working_direc
     assert gb.absolute_spec("ppo_tethered_wing") == "ppo_tethered_wing"  # a name: workers read the shipped one too
     assert controller_label("ppo_tethered_wing") == "ppo_tethered_wing"
     kws = [kw["env_kwargs"] for fn, kw in gb.warmup_tasks(gb.load_suite("gusts-v1"), [TW], ["ppo_tethered_wing"])
-           if fn is gb.episodes_task]
+           if fn is gb.warmup_episode]
     assert kws and all(kw == {} for kw in kws)
 
 
@@ -103,3 +103,22 @@ def test_the_closed_loop_study_finds_its_configs_in_the_package_data(tmp_path, m
     monkeypatch.setitem(sys.modules, name, fresh)  # the package's own module is put back after the test
     spec.loader.exec_module(fresh)
     assert {p.parent for p in fresh.LQR_CONFIGS.values()} == {wheel / "agents"}
+
+
+def test_the_warm_up_episodes_do_not_warn_of_a_disturbance_past_their_end():
+    import warnings
+
+    from laddermill_gym.envs.task_base import LateDisturbanceWarning
+
+    suite = gb.load_suite("gusts-v1")
+    tasks = [(fn, kw) for fn, kw in gb.warmup_tasks(suite, ["laddermill_gym/Rotorcraft-v0"], ["open_loop"])
+             if fn is gb.warmup_episode and kw["disturbances"]]
+    assert tasks and tasks[0][1]["duration"] < 5.0  # the grid scenario's gusts start later than the warm-up ends
+    fn, kw = tasks[0]
+    late = []
+    for run in (fn, gb.episodes_task):  # the warm-up, then the same short episode as a task of its own
+        with warnings.catch_warnings(record=True) as seen:
+            warnings.simplefilter("always")
+            run(**kw)
+        late.append([w for w in seen if issubclass(w.category, LateDisturbanceWarning)])
+    assert late[0] == [] and late[1] and "episode_time" in str(late[1][0].message)

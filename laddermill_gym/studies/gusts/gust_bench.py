@@ -40,8 +40,8 @@ from laddermill_gym.studies.gusts.gust_suite import Scenario, Suite, load_suite
 from laddermill_gym.studies.parallel import add_arguments, check_arguments, run_tasks
 
 __all__ = ["controller_label", "absolute_spec", "run_episodes", "settling_time", "episode_metrics",
-           "built_controller", "build_suite_controllers", "episodes_task", "warmup_tasks", "run_suite",
-           "run_provenance", "summarise", "write_outputs", "add_parser", "main"]
+           "built_controller", "build_suite_controllers", "episodes_task", "warmup_tasks", "warmup_episode",
+           "run_suite", "run_provenance", "summarise", "write_outputs", "add_parser", "main"]
 
 #: The settling band's half width as a share of the excursion's largest deviation from its final value after the
 #: disturbance's start (a 10 % band; chosen: the lateral motion of these systems is lightly damped).
@@ -236,9 +236,21 @@ def warmup_tasks(suite: Suite, env_ids, controllers, scenarios=None, forget: boo
             key = (env_id, spec, bool(dist))
             if key not in seen:
                 seen.add(key)
-                tasks.append((episodes_task, dict(env_id=env_id, env_kwargs=kw, spec=absolute_spec(spec),
-                                                  seeds=(0,), duration=WARMUP_S, disturbances=dist)))
+                tasks.append((warmup_episode, dict(env_id=env_id, env_kwargs=kw, spec=absolute_spec(spec),
+                                                   seeds=(0,), duration=WARMUP_S, disturbances=dist)))
     return tasks
+
+
+def warmup_episode(**task) -> dict:
+    """:func:`episodes_task` cut to the warm-up's length: a disturbance that starts after it is expected there, so
+    its LateDisturbanceWarning is not shown (the scenarios' own episodes warn as ever)."""
+    import warnings
+
+    from laddermill_gym.envs.task_base import LateDisturbanceWarning
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", LateDisturbanceWarning)
+        return episodes_task(**task)
 
 
 #: Length [s] of the warm-up episodes (several control steps of every environment).
