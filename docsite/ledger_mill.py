@@ -242,7 +242,7 @@ FEATURES = Covered(  # a summary of the other pages: their groups check what it 
         'kept 8 steps), on the mill 5.34x (kept 2)',
         'from its periodic stationary operating point, found in plane once per process (about 20-30 s)',
         'trains through the same harness (20 min:',
-        '8.7x real time at 1 m and 335x at 70 m on one thread ( );',
+        '7.5x real time at 1 m and 207x at 70 m on one thread ( );',  # pointmass_mill.md's run of 2026-12-07
         'the first build takes 30-60 s for the periodic start).',
         '40 minutes, the critic alone first, the kept policy chosen by survival on drawn validation episodes, '
         'never on gusts-v1):',

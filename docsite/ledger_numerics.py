@@ -15,7 +15,7 @@ NUMERICS = Covered(
             (r"approaching (\d) and (\d) from below", (G % "ratio_ros2", G % "ratio_ros34pw2")),
             (r"1e-6 m/s\^2 at omega\^2 = 7e5 s\^-2 is ([\d.e-]+) m", (G % "node_offset",))),
     given=(  # the equations and methods as published, the solvers' settings, counts of unknowns
-        "the string's closed-form limit min(l0 / c, mu l0^2 / (2 DA))",  # sim/pointmass.explicit_stable_dt
+        "the string's closed-form limit (the damped highest mode's, below l0 / c and mu l0^2 / (2 DA);",
         "Until 2026-12-06 the last did not",  # the day the warm-up's bits were fixed (their cause found)
         "and its 3-copy vector env's",  # the test's copy count (tests/test_cache_reproducibility.py)
         # the chain's reward check: its settings and step sizes (tests/test_fast_ids.py)

@@ -149,7 +149,8 @@ ENV_IDS: dict[str, dict] = {
     # ladder_chain at the point-mass fidelity. element_length 70 m: one element per 70 m piece, as LadderChain-v0
     # (elements_per_piece 1, Meijaard et al. 1999); its settled base tension 178.7 kN against 178.9 kN at 1 m
     # (docs/pointmass.md, "Between fidelities"). method implicit, dt 0.025 s: the explicit step must stay below
-    # l0/c = 8.25 ms (c = sqrt(EA/mu) = 8485 m/s, Dyneema 25 mm; sim.pointmass.explicit_stable_dt), 7 steps per
+    # 7.31 ms (l0/c = 8.25 ms, c = sqrt(EA/mu) = 8485 m/s, Dyneema 25 mm, less its damping;
+    # sim.pointmass.explicit_stable_dt), 7 steps per
     # 50 ms period; the implicit one ran 60 s from the rigid start at 0.05 s too (at 7 m elements it failed
     # there, 0.025 s held), 2 steps per period, kite positions within 0.5 m of 5 ms steps after 20 s. control_dt
     # 0.05 s (20 Hz) and episode_time 120 s: LadderChain-v0's. settle_time 600 s: from the rigid equilibrium the

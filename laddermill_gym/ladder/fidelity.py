@@ -3,7 +3,8 @@ same trim), and the comparison of the two static solutions (shape and tension al
 
 The point-mass kite sits at the rigid wing's CG with the wing's attitude (3-2-1 Euler angles) as its commanded
 attitude; the string's nodes start evenly spaced on the straight line between consecutive kites (or ground
-points), at rest. ``docs/pointmass.md`` ("Between fidelities") discusses the differences.
+points), at rest. The rigid model is read from the same file with the point-mass scene's overrides (without its
+``integrator`` section). ``docs/pointmass.md`` ("Between fidelities") discusses the differences.
 """
 
 from __future__ import annotations
@@ -12,11 +13,31 @@ import numpy as np
 
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, PU_SIZE
 from laddermill_gym.ladder.rigid_scene import load_rigid_scene
+from laddermill_gym.model.configio import ConfigError
+
+
+def rigid_overrides(overrides: dict | None) -> dict | None:
+    """A point-mass scene's nested ``overrides`` as the rigid reader takes them: without the ``integrator`` section
+    (the point-mass step, method and limits are not the rigid model's; its start runs at the file's own)."""
+    if not overrides:
+        return None
+    return {k: v for k, v in overrides.items() if k != "integrator"} or None
+
+
+def load_rigid_of(file, n_wings: int, overrides: dict | None):
+    """The scene ``file`` at the rigid fidelity with ``n_wings`` and the point-mass scene's ``overrides``
+    (:func:`rigid_overrides`); a ConfigError says that the point-mass start reads the file so."""
+    try:
+        return load_rigid_scene(file, n_wings=n_wings, overrides=rigid_overrides(overrides))
+    except ConfigError as err:
+        raise ConfigError(f"{err} (the point-mass start is the rigid model's of the same file with the same "
+                          "overrides, read at the rigid fidelity)") from None
 
 
 def rigid_static(pm_scene):
-    """(rigid simulator at the static equilibrium, rigid scene) of the file behind a point-mass scene."""
-    rigid = load_rigid_scene(pm_scene.file, n_wings=pm_scene.string.n_kites)
+    """(rigid simulator at the static equilibrium, rigid scene) of the file behind a point-mass scene, with its
+    overrides (``PointMassScene.overrides``)."""
+    rigid = load_rigid_of(pm_scene.file, pm_scene.string.n_kites, pm_scene.overrides)
     x, u = rigid.initial_state()
     return rigid.simulator(x, u), rigid
 

@@ -11,6 +11,7 @@ criteria.
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass, field
 from functools import lru_cache
 
@@ -151,16 +152,26 @@ def run_pointmass_periodic(sim, shape_tol: float = 1e-3, power_tol: float = 1e-3
         breakdown=breakdown)
 
 
-@lru_cache(maxsize=4)
-def rigid_periodic(file: str, n_wings: int):
-    """The rigid mill's periodic start of a scene file (``ladder/periodic.periodic_start``; about 30 s, once per
-    process): (rigid simulator at that state, its time [s], PeriodicResult)."""
-    from laddermill_gym.ladder.periodic import periodic_start
-    from laddermill_gym.ladder.rigid_scene import load_rigid_scene
+def rigid_periodic(file: str, n_wings: int, overrides: str = "null"):
+    """The rigid mill's periodic start of a scene file with the nested overrides ``overrides`` (canonical JSON:
+    :func:`overrides_key`; read by ``ladder.fidelity.load_rigid_of``) (``ladder/periodic.periodic_start``; about 30
+    s, once per process and key): (rigid simulator at that state, its time [s], PeriodicResult)."""
+    return _rigid_periodic(str(file), int(n_wings), overrides)
 
-    rigid = load_rigid_scene(file, n_wings=n_wings)
+
+@lru_cache(maxsize=4)
+def _rigid_periodic(file: str, n_wings: int, overrides: str):
+    from laddermill_gym.ladder.fidelity import load_rigid_of
+    from laddermill_gym.ladder.periodic import periodic_start
+
+    rigid = load_rigid_of(file, n_wings, json.loads(overrides))
     x, u, t, res = periodic_start(rigid, progress=False)
     return rigid.simulator(x, u), t, res
+
+
+def overrides_key(pm_scene) -> str:
+    """A point-mass scene's overrides as canonical JSON (sorted keys), :func:`rigid_periodic`'s cache key."""
+    return json.dumps(pm_scene.overrides, sort_keys=True)
 
 
 def periodic_mill_start(pm_scene):
@@ -172,7 +183,7 @@ def periodic_mill_start(pm_scene):
     from laddermill_gym.kernels.contract import SX_MOVED
     from laddermill_gym.model.pointmass_mill import station_state
 
-    sim, t0, res = rigid_periodic(str(pm_scene.file), pm_scene.string.n_kites)
+    sim, t0, res = rigid_periodic(str(pm_scene.file), pm_scene.string.n_kites, overrides_key(pm_scene))
     a = sim.assembly
     att = np.array([a.wing(k).attachment for k in range(a.n_wings)])
     rot = sim.wing_rotations()

@@ -5,7 +5,9 @@ scenes (``ladder/scene.py``); see configs/scenes/podgaets_5km.yaml for a comment
 
 from __future__ import annotations
 
+import dataclasses
 import math
+import numbers
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -29,7 +31,7 @@ from laddermill_gym.model.pointmass import PointMassKite, PointMassString, attit
 from laddermill_gym.model.pointmass_mill import PointMassStation, mill_layout, station_from_rigid
 from laddermill_gym.sim.breakpoints import INTEGRATOR_METHODS
 from laddermill_gym.sim.pointmass import METHODS, PointMassSimulator
-from laddermill_gym.sim.pointmass_mill import PointMassMillSimulator
+from laddermill_gym.sim.pointmass_mill import PointMassMillSimulator, check_pay_out_step
 
 
 @dataclass(frozen=True)
@@ -46,6 +48,9 @@ class PointMassScene:
     piece_length: float
     #: The moving cable's station (a scene with ``station:``, docs/pointmass.md "The moving cable"), else None.
     station: PointMassStation | None = None
+    #: ``load_scene``'s nested ``overrides`` merged into the file (None: none): the starts taken from the rigid
+    #: model read the file with them (``ladder/fidelity.py``, ``ladder/pointmass_mill.py``).
+    overrides: dict | None = None
 
     @property
     def n_wings(self) -> int:
@@ -87,9 +92,11 @@ class PointMassScene:
 
 
 def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: float | None = None,
-                   n_kites: int | None = None, dt: float | None = None, method: str | None = None) -> PointMassScene:
-    """Build a point-mass scene from a scene file already opened as ``s`` whose ``fidelity`` section ``fid``
-    says ``wing: pointmass`` (the caller has read ``name``-independent keys it owns)."""
+                   n_kites: int | None = None, dt: float | None = None, method: str | None = None,
+                   cable_aero: bool | None = None, overrides: dict | None = None) -> PointMassScene:
+    """Build a point-mass scene from a scene file already opened as ``s`` (with ``overrides`` merged in, kept on the
+    scene for the starts taken from the rigid model) whose ``fidelity`` section ``fid`` says ``wing: pointmass``
+    (the caller has read ``name``-independent keys it owns)."""
     name, desc = s.text("name"), s.text("description", "")
     if s.number("dimension", 3, integer=True) != 3:
         raise s.error("dimension", s.data.get("dimension"), "the point-mass fidelity is 3D only")
@@ -110,15 +117,9 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
     rigid_station = read_station(s.section("station"), piece, "cable") if s.has("station") else None
     if rigid_station is not None and end is None:
         raise ch.error("end", end, "a moving cable (station) needs two ground points (start and end)")
-    fid.raw("wing", None)
-    if element_length is None:
-        el = fid.number("element_length", positive=True)
-    else:
-        fid.raw("element_length", None)
-        el = float(element_length)
-    for key in ("sag", "cable_aero"):
-        fid.raw(key, None)  # the rigid fidelity's switches: the string needs no sag correction, drag always on
-    fid.done()
+    el, caero = _read_fidelity(fid, path, element_length, cable_aero)
+    if not caero:  # the rigid fidelity's switch of the cable's aerodynamics: no drag on the string
+        cable = dataclasses.replace(cable, cn0=0.0, ct0=0.0)
     ini = s.section("initial")
     pitch0 = ini.number("alpha_deg", 0.0, **BOUNDS["initial.alpha_deg"])  # a rigid scene's trim alpha: the pitch
     att = [math.radians(ini.number(k, d, **BOUNDS["attitude_deg"]))
@@ -126,18 +127,7 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
     for key in ("method", "elevation_deg", "elevator_up_deg", "elevator_down_deg", "top_slots", "elevator_top_deg"):
         ini.raw(key, None)  # the rigid fidelity's start: the point-mass start is quasi-static
     ini.done()
-    it = s.section("integrator")
-    meth = it.text("method", choices=METHODS + INTEGRATOR_METHODS)
-    meth = "implicit" if meth not in METHODS else meth  # a rigid scene's integrator: the implicit method
-    if method is not None and method not in METHODS:
-        raise ConfigError(f"{path}: method override {method!r}: the point-mass fidelity has {METHODS}")
-    step = it.number("dt", positive=True, **BOUNDS["integrator.dt"])
-    vmax = it.number("max_speed", 1000.0, positive=True, **BOUNDS["integrator.max_speed"])
-    hg = it.number("ground_height", 0.0, **BOUNDS["coordinate"])
-    contact = it.text("ground_contact", "stop", choices=("stop", "flag", "off"))
-    for key in ("max_rate", "rtol", "atol"):
-        it.raw(key, None)
-    it.done()
+    meth, step, vmax, hg = _read_integrator(s.section("integrator"), path, method, dt)
     s.done()
     nk = nk if n_kites is None else int(n_kites)
     check_cable_length(ch, piece, nk, end is not None, cable, gravity, n_kites is not None)
@@ -154,15 +144,66 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
         n_nodes, kite_nodes = lay.n_nodes, lay.kite_nodes
         try:
             station = station_from_rigid(rigid_station, lay, el)
+            check_pay_out_step(station, step)
         except ValueError as err:
             raise ConfigError(f"{path}: {err}") from None
     string = PointMassString(wind=wind, gravity=gravity, cable=cable, element_length=el, n_nodes=n_nodes,
                              anchor=points[start], end=None if end is None else points[end],
-                             kite=PointMassKite.from_wing(wing), kite_nodes=kite_nodes,
-                             ground_height=hg if contact == "stop" else -math.inf, max_speed=vmax)
+                             kite=PointMassKite.from_wing(wing), kite_nodes=kite_nodes, ground_height=hg,
+                             max_speed=vmax)
     return PointMassScene(name=name, file=path, description=desc, string=string,
-                          controls=attitude_controls(nk, *att), method=meth if method is None else method,
-                          dt=step if dt is None else float(dt), piece_length=piece, station=station)
+                          controls=attitude_controls(nk, *att), method=meth, dt=step, piece_length=piece,
+                          station=station, overrides=overrides or None)
+
+
+def _override(path: Path, key: str, value) -> float:
+    """The keyword override ``key`` = ``value`` as a float; ConfigError naming the file, the override and the value
+    unless it is a finite number > 0 (a step below the file's bound of 1 ns stays allowed: the explicit step of a
+    1 cm string is 0.69 ns)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not (math.isfinite(value) and value > 0):
+        raise ConfigError(f"{path}: {key} = {value!r} (override): must be a finite number > 0")
+    return float(value)
+
+
+def _read_fidelity(fid: Section, path: Path, element_length, cable_aero) -> tuple[float, bool]:
+    """(element length [m], cable aerodynamics on) from the ``fidelity`` section or their keyword overrides."""
+    fid.raw("wing", None)
+    if element_length is None:
+        el = fid.number("element_length", positive=True)
+    else:
+        fid.raw("element_length", None)
+        el = _override(path, "element_length", element_length)
+    fid.flag("sag", True)  # the rigid fidelity's sag correction: the string resolves its own sag
+    caero = fid.flag("cable_aero", True)
+    if cable_aero is not None:
+        if not isinstance(cable_aero, bool):
+            raise ConfigError(f"{path}: cable_aero = {cable_aero!r} (override): must be True or False")
+        caero = cable_aero
+    fid.done()
+    return el, caero
+
+
+def _read_integrator(it: Section, path: Path, method, dt) -> tuple[str, float, float, float]:
+    """(method, dt [s], max_speed [m/s], ground height [m]: -inf with ground_contact 'off') from the ``integrator``
+    section or the ``method`` and ``dt`` overrides."""
+    meth = it.text("method", choices=METHODS + INTEGRATOR_METHODS)
+    meth = "implicit" if meth not in METHODS else meth  # a rigid scene's integrator: the implicit method
+    if method is not None and method not in METHODS:
+        raise ConfigError(f"{path}: method override {method!r}: the point-mass fidelity has {METHODS}")
+    step = it.number("dt", positive=True, **BOUNDS["integrator.dt"])
+    if dt is not None:
+        step = _override(path, "dt", dt)
+    vmax = it.number("max_speed", 1000.0, positive=True, **BOUNDS["integrator.max_speed"])
+    hg = it.number("ground_height", 0.0, **BOUNDS["coordinate"])
+    contact = it.text("ground_contact", "stop", choices=("stop", "flag", "off"))
+    if contact == "flag":
+        raise it.error("ground_contact", contact, "the point-mass fidelity has 'stop' (a node at or below the ground "
+                                                  "stops the run) and 'off'; 'flag' (go on and report) is the rigid "
+                                                  "fidelity's")
+    for key in ("max_rate", "rtol", "atol"):
+        it.raw(key, None)
+    it.done()
+    return meth if method is None else method, step, vmax, hg if contact == "stop" else -math.inf
 
 
 def _check_nodes(fid: Section, ch: Section, path: Path, n_nodes: int, el: float, nk: int, el_override: bool,
@@ -180,12 +221,13 @@ def _check_nodes(fid: Section, ch: Section, path: Path, n_nodes: int, el: float,
 
 
 def load_pointmass_scene(path: str | Path, *, element_length: float | None = None, n_kites: int | None = None,
-                         dt: float | None = None, method: str | None = None) -> PointMassScene:
+                         dt: float | None = None, method: str | None = None, cable_aero: bool | None = None,
+                         overrides: dict | None = None) -> PointMassScene:
     """Load any scene file at the point-mass fidelity (``ladder.scene.load_scene(..., fidelity='pointmass')``).
     A rigid scene needs ``fidelity.element_length`` in its file or the ``element_length`` override [m]."""
-    file, s = open_scene(path, n_wings=n_kites)
+    file, s = open_scene(path, overrides, n_wings=n_kites)
     return read_pointmass(s, s.section("fidelity"), file, element_length=element_length, n_kites=n_kites, dt=dt,
-                          method=method)
+                          method=method, cable_aero=cable_aero, overrides=overrides)
 
 
 def _kite_net_force(string: PointMassString, M, p: np.ndarray, u: np.ndarray, k: int) -> np.ndarray:

@@ -38,6 +38,21 @@ def options_kwargs(key: tuple) -> dict:
     return {k: json.loads(v) if k == "overrides" and isinstance(v, str) else v for k, v in key}
 
 
+#: The rigid fidelity's keyword overrides that the point-mass string has nothing to apply to, and why.
+_RIGID_ONLY = {"dimension": "the point-mass fidelity is 3D only",
+               "sag": "the point-mass string has no sag correction to switch (its elements resolve the sag)",
+               "elements_per_piece": "the point-mass string's resolution is element_length [m]"}
+
+
+def _refuse_rigid_only(path: Path, **given) -> None:
+    """ConfigError naming a keyword override of the rigid fidelity that a point-mass scene would ignore (``dimension``
+    3 is the point-mass string's own and passes)."""
+    for key, value in given.items():
+        if value is not None and not (key == "dimension" and value == 3):
+            raise ConfigError(f"{path}: {key} = {value!r} (override): not at the point-mass fidelity: "
+                              f"{_RIGID_ONLY[key]}")
+
+
 def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: bool | None = None,
                cable_aero: bool | None = None, elements_per_piece: int | None = None,
                n_wings: int | None = None, dt: float | None = None, method: str | None = None,
@@ -46,8 +61,9 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
 
     The fidelity is the file's ``fidelity.wing`` ('rigid', the default, or 'pointmass') unless ``fidelity``
     overrides it; at 'pointmass' the result is a :class:`~laddermill_gym.ladder.pointmass_scene.PointMassScene`
-    (its string at ``fidelity.element_length`` or ``element_length`` [m]; ``n_wings``, ``dt`` and ``method``
-    ('explicit' or 'implicit') apply), and nothing of the rigid model is built.
+    (its string at ``fidelity.element_length`` or ``element_length`` [m]; ``n_wings``, ``dt``, ``method``
+    ('explicit' or 'implicit') and ``cable_aero`` (False: no drag on the string) apply; ``dimension`` other than 3,
+    ``sag`` and ``elements_per_piece`` are refused), and nothing of the rigid model is built.
 
     ``overrides``: a nested mapping merged into the file's fields before they are read, e.g.
     ``{"wind": {"v0": 10.0}, "chain": {"piece_length": 120.0}}`` (parameters as data); checked like the file, errors
@@ -60,8 +76,9 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
     if wing_fid == "pointmass":  # imported here: a rigid scene loads no point-mass code
         from laddermill_gym.ladder.pointmass_scene import read_pointmass
 
+        _refuse_rigid_only(path, dimension=dimension, sag=sag, elements_per_piece=elements_per_piece)
         return read_pointmass(s, s.section("fidelity"), path, element_length=element_length, n_kites=n_wings,
-                              dt=dt, method=method)
+                              dt=dt, method=method, cable_aero=cable_aero, overrides=overrides)
     try:
         return read_rigid(s, path, dimension=dimension, sag=sag, cable_aero=cable_aero,
                           elements_per_piece=elements_per_piece, n_wings=n_wings, dt=dt, method=method)

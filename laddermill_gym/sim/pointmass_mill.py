@@ -16,6 +16,7 @@ from laddermill_gym.kernels.contract import (
     SX_SPEED,
     SX_TRANSFERS,
 )
+from laddermill_gym.kernels.pointmass.implicit import mill_implicit_step, mill_implicit_step_serial
 from laddermill_gym.kernels.pointmass.mill import (
     MX_KITE_TRANSFERS,
     MX_SIZE,
@@ -27,7 +28,19 @@ from laddermill_gym.kernels.pointmass.mill import (
 )
 from laddermill_gym.model.pointmass import PointMassString
 from laddermill_gym.model.pointmass_mill import PointMassStation, pack_pm_station, station_state
+from laddermill_gym.model.station import electrical_power
 from laddermill_gym.sim.pointmass import PointMassSimulator
+
+
+def check_pay_out_step(station: PointMassStation, dt: float) -> None:
+    """ValueError when the schedule pays out an element or more in one step, max |V_c| dt >= l_e: a step transfers
+    at most one node (``kernels/pointmass/mill._transfer``)."""
+    vmax = float(np.max(np.abs(station.speed_values)))
+    if vmax * dt >= station.element_length:
+        raise ValueError(f"the moving cable pays out max |V_c| dt = {vmax:g} m/s x {dt:g} s = {vmax * dt:g} m "
+                         f"per step, not below element_length = {station.element_length:g} m (station.speed_values "
+                         f"up to {vmax:g} m/s, dt = {dt:g} s): a step transfers at most one node; take dt < "
+                         f"{station.element_length / vmax:g} s or longer elements")
 
 
 class PointMassMillSimulator(PointMassSimulator):
@@ -52,6 +65,7 @@ class PointMassMillSimulator(PointMassSimulator):
         if abs(station.element_length - string.element_length) > 1e-12 * string.element_length:
             raise ValueError(f"station.element_length = {station.element_length} m differs from the string's "
                              f"{string.element_length} m")
+        check_pay_out_step(station, dt)
         super().__init__(string, x0, controls, dt, method, t0, threads, copy)
         # the transfers rewrite the kite nodes and flags in place: never the string's own array
         self.M = self.M._replace(knode=self.M.knode.copy(), kflag=self.M.kflag.copy())
@@ -64,6 +78,7 @@ class PointMassMillSimulator(PointMassSimulator):
             raise ValueError(f"station_x moved = {self.sx[SX_MOVED]!r} m: must be in [0, l_e)")
         set_ends(self.M.par, self.sp, self.sx[SX_MOVED], station.speed(t0))
         self._string_advance = self._advance
+        self._mill_step = mill_implicit_step_serial if self.kernel_threads == 1 else mill_implicit_step
         self._advance = self._mill_advance
         self.slot_attitudes = None
         self._first_node = int(string.kite_nodes[0]) if string.n_kites else 0
@@ -89,15 +104,19 @@ class PointMassMillSimulator(PointMassSimulator):
             self.u[:] = u.ravel()
 
     def _mill_advance(self, t, x, u, dt, nsteps, M, W):
-        """Steps of the moving string: per step the station before, one step of the string's own kernel, the
-        station after (``kernels/pointmass/mill.py``; the string kernels' parallel loops are called from Python:
-        numba cannot cache a compiled caller of them). Returns (status, steps done)."""
+        """Steps of the moving string: per step the station before, one step of the string (explicit: the string's
+        own kernel; implicit: ``implicit.mill_implicit_step``, the string's step with the pay-out term on its
+        right-hand side), the station after (``kernels/pointmass/mill.py``; the string kernels' parallel loops are
+        called from Python: numba cannot cache a compiled caller of them). Returns (status, steps done)."""
         implicit = self.method == "implicit"
         for k in range(nsteps):
             tk = t + k * dt
             self._command_attitudes()
-            t0, tn, v = mill_before(tk, x, M, self.sp, self.sx, dt, implicit)
-            st, _ = self._string_advance(tk, x, u, dt, 1, M, W)
+            t0, tn, v = mill_before(tk, x, M, self.sp, self.sx)
+            if implicit:
+                st = self._mill_step(tk, x, u, dt, M, W)
+            else:
+                st, _ = self._string_advance(tk, x, u, dt, 1, M, W)
             st = mill_after(tk, x, M, self.sp, self.sx, dt, t0, tn, v, st)
             if st != 0:
                 return st, k + 1
@@ -131,7 +150,7 @@ class PointMassMillSimulator(PointMassSimulator):
         v = self.cable_speed()
         p = (t0 - tn) * v
         return {"tension_first_N": float(t0), "tension_last_N": float(tn), "cable_speed_m_s": v,
-                "mechanical_W": float(p), "electrical_W": float(self.station.efficiency * p)}
+                "mechanical_W": float(p), "electrical_W": float(electrical_power(float(p), self.station.efficiency))}
 
     @property
     def kite_nodes(self) -> np.ndarray:

@@ -71,13 +71,14 @@ class PointMassEnv(TaskEnv):
 
     ## Arguments
 
-    scene, scene_options (keyword overrides of ``load_scene``: ``element_length`` [m], default 1 m, ``dt`` [s],
-    ``method``, ``n_wings``; an ``"explicit"`` step past 0.9 of the string's stable step min(l0 / c, mu l0^2 / (2 DA))
-    is replaced by the largest whole fraction of the control period below it, with an UnstableStepWarning),
-    control_dt [s] (a whole number of the scene's steps), episode_time [s],
-    settle_time [s], groups, pitch_range_deg, roll_range_deg, disturbances, wind_dt [s], reward (RewardConfig or
-    dict), min_altitude [m], breaking_factor [-]; ``render_mode`` ("rgb_array" or "human": the string, its kites and
-    ground points in 3D, ``envs/pointmass/render.py``).
+    scene, scene_options (keyword overrides of ``load_scene``: ``element_length`` [m], default the file's
+    ``fidelity.element_length`` or else 1 m, ``dt`` [s], ``method``, ``n_wings``; an ``"explicit"`` step past 0.9 of
+    the string's stable step (``sim.pointmass.explicit_stable_dt``: (dt / t_c)^2 + dt / t_d < 1, t_c = l0 / c, t_d =
+    mu l0^2 / (2 DA)) is replaced by the largest whole fraction of the control period below it, with an
+    UnstableStepWarning), control_dt [s] (a whole number of the scene's steps), episode_time [s], settle_time [s],
+    groups, pitch_range_deg, roll_range_deg, disturbances, wind_dt [s], reward (RewardConfig or dict), min_altitude
+    [m], breaking_factor [-]; ``render_mode`` ("rgb_array" or "human": the string, its kites and ground points in 3D,
+    ``envs/pointmass/render.py``).
 
     ## Processes
 

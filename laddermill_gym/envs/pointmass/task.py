@@ -44,6 +44,7 @@ from laddermill_gym.kernels.contract import (
     PU_SIZE,
 )
 from laddermill_gym.ladder.scene import load_scene
+from laddermill_gym.ladder.scene_files import open_scene
 from laddermill_gym.sim.pointmass import STATUS_TEXT, explicit_stable_dt
 from laddermill_gym.sim.stable_step import UnstableStepWarning
 
@@ -62,34 +63,41 @@ def _scene(scene: str, options):
     return load_scene(scene, fidelity="pointmass", **thaw(options))
 
 
+def _with_resolution(scene: str, scene_options: dict | None) -> dict:
+    """``scene_options`` with ``element_length`` 1 m unless they or the scene file (with their ``overrides``) name
+    one: the file's own ``fidelity.element_length`` (``podgaets_5km``'s 1 cm) stands."""
+    options = dict(scene_options or {})
+    if "element_length" not in options:
+        _, s = open_scene(scene, options.get("overrides"))
+        fid = s.data.get("fidelity")
+        if not (isinstance(fid, dict) and fid.get("element_length") is not None):
+            options["element_length"] = 1.0
+    return options
+
+
 def _has_station(scene: str, options) -> bool:
     """Whether ``scene`` with the frozen ``load_scene`` options ``options`` is a moving cable (has a station)."""
     return _scene(scene, options).station is not None
 
 
-def _check_mill_power(sc, start_power: float, moving: bool) -> None:
-    """ValueError for a moving cable (``moving``) whose operating point's mean generator power ``start_power`` [W] is
-    not positive at the scene ``sc``'s point-mass step: numerical, not physical (a coarse implicit step)."""
-    if moving and not start_power > 0:
-        raise ValueError(
-            f"scene {sc.name} ({sc.file}): the moving cable's operating point has a mean generator power of "
-            f"{start_power / 1e3:.4g} kW at the {sc.method} point-mass step of {sc.dt:g} s. The implicit step of "
-            "the moving cable loses the power's sign at coarse steps (the end element's growing rest length, "
-            "docs/pointmass_mill.md: that page's mill runs at 10 ms); pass a finer step, scene_options={'dt': "
-            "0.005}, or the explicit method; reward.reference_power_W would only hide it")
+def _check_step(scene: str, dt) -> None:
+    if isinstance(dt, bool) or not (isinstance(dt, numbers.Real) and math.isfinite(dt) and dt > 0):
+        raise ValueError(f"scene {scene}: its step dt = {dt!r} s (scene_options or the file's integrator.dt) must be a "
+                         "finite number > 0")
 
 
 def _stable_options(scene: str, options, control_dt: float, control_dt_shown):
     """``options`` (frozen ``load_scene`` options) unchanged, unless the scene's step ``method`` is ``"explicit"`` and
     its ``dt`` is past ``ENV_STEP_MARGIN`` of the string's closed-form stable step
-    (:func:`~laddermill_gym.sim.pointmass.explicit_stable_dt`, min(l0 / c, mu l0^2 / (2 DA))): then with ``dt`` the
-    largest whole fraction of the control period below it, and an UnstableStepWarning naming both (as the wing envs
-    do for RK4, ``envs/physics_step.py``; past it a run "stopped: speed limit exceeded" within a period). ValueError
-    unless the scene's step divides ``control_dt`` [s]."""
+    (:func:`~laddermill_gym.sim.pointmass.explicit_stable_dt`, the root of (dt / t_c)^2 + dt / t_d = 1, t_c = l0 / c,
+    t_d = mu l0^2 / (2 DA)): then with ``dt`` the largest whole fraction of the control period below it, and an
+    UnstableStepWarning naming both (as the wing envs do for RK4, ``envs/physics_step.py``; past it a run "stopped:
+    speed limit exceeded" within a period). ValueError unless the scene's step (checked before the scene is loaded
+    when ``scene_options`` give it) is a finite number > 0 that divides ``control_dt`` [s]."""
+    if dict(options).get("dt") is not None:
+        _check_step(scene, dict(options)["dt"])
     sc = _scene(scene, options)
-    if isinstance(sc.dt, bool) or not (isinstance(sc.dt, numbers.Real) and math.isfinite(sc.dt) and sc.dt > 0):
-        raise ValueError(f"scene {scene}: its step dt = {sc.dt!r} s (scene_options or the file's integrator.dt) must "
-                         "be a finite number > 0")
+    _check_step(scene, sc.dt)
     n = int(round(control_dt / sc.dt))
     if n < 1 or abs(n * sc.dt - control_dt) > 1e-9 * control_dt:
         raise ValueError(f"control_dt = {control_dt_shown!r}: must be a whole number of scene steps ({sc.dt} s)")
@@ -101,7 +109,7 @@ def _stable_options(scene: str, options, control_dt: float, control_dt_shown):
         return options
     n = periods_below(control_dt, limit)
     warnings.warn(f"scene {sc.name}: dt = {sc.dt:g} s is above {ENV_STEP_MARGIN:g} x the explicit step's stable "
-                  f"step {stable:.4g} s (min(l0 / c, mu l0^2 / (2 DA)) of {sc.string.element_length:g} m elements): "
+                  f"step {stable:.4g} s ((dt / t_c)^2 + dt / t_d < 1 of {sc.string.element_length:g} m elements): "
                   f"stepping at {control_dt / n:.4g} s, {n} steps per control period", UnstableStepWarning,
                   stacklevel=3)
     return freeze({**thaw(options), "dt": control_dt / n})
@@ -142,8 +150,8 @@ class PointMassTask(TaskCore):
         self.breaking_factor = positive("breaking_factor", breaking_factor, "(-)")
         self.disturbances = env_disturbances(disturbances, self.episode_time, self.wind_dt)
         self.reward_config = rc = config_from(reward, RewardConfig, "reward")
-        options = _stable_options(str(scene), freeze({"element_length": 1.0, **(scene_options or {})}),
-                                  self.control_dt, control_dt)
+        options = _stable_options(str(scene), freeze(_with_resolution(str(scene), scene_options)), self.control_dt,
+                                  control_dt)
         self.mill = None
         if _has_station(str(scene), options):
             if settle_time > 0:
@@ -188,7 +196,6 @@ class PointMassTask(TaskCore):
             self.batch.controls[:] = self.u_trim
             self.batch.tension[:] = start_tension  # the start's (memoised): building the env runs no kernel
             start_power = float(self._power(self.batch.tension[:1])[0])
-        _check_mill_power(sc, start_power, self.mill is not None)
         self.p_ref = rc.reference_power_W or start_power
         if not self.p_ref > 0:
             raise ValueError(f"scene {sc.name} ({sc.file}): the start gives no positive reference power "

@@ -5,8 +5,9 @@ One step holds nothing but the state (6 n) and the element tensions (n_e): pass 
 writes the Voigt tensions from the old state, pass 2 (parallel over nodes) updates each node's velocity from
 them, its own velocity and the old positions, pass 3 (parallel over nodes) moves the nodes and checks them.
 An RK4 would hold four stage vectors (4 x 24 MB at 500,000 nodes) and not fit the 40 MB budget; symplectic
-Euler is second-order accurate in phase for the undamped string and stable for dt < l0 / c (c = sqrt(EA/mu))
-and, with Voigt damping, dt < mu l0^2 / (2 DA) (the real eigenvalue -4 DA / (mu l0^2); docs/pointmass.md).
+Euler is second-order accurate in phase for the undamped string and stable for dt < l0 / c (c = sqrt(EA/mu));
+with Voigt damping while (dt c / l0)^2 + dt 2 DA / (mu l0^2) < 1 (``sim.pointmass.explicit_stable_dt``,
+docs/pointmass.md).
 """
 
 import math

@@ -21,6 +21,11 @@ Memory: the right-hand side and the eliminated right-hand side overwrite the vel
 pivots (6 numbers each) are kept only at every ``seg``-th node (``W.ckpt``) and recomputed one segment at a time
 on the way back (``W.seg``): 6 (n / seg + P seg) numbers instead of 6 n, at the price of a second forward pass
 over the blocks (no right-hand side). The assembly and the move are parallel over chunks of nodes.
+
+The moving cable (``kernels/pointmass/mill.py``) steps with :func:`mill_implicit_step`: the same step with the end
+elements' pay-out term (``mill.pay_out_rhs``) added to the right-hand side of nodes 0 and n-1 after the assembly,
+M v + dt (F(x, v) + F_pay-out(x)), so that the kites' aerodynamics and the cable drag are taken at the state's
+velocity (docs/pointmass_mill.md). The fixed string's kernels are left as they were.
 """
 
 from numba import njit, prange
@@ -35,6 +40,7 @@ from laddermill_gym.kernels.pointmass.explicit import (
     tensions_serial,
 )
 from laddermill_gym.kernels.pointmass.forces import node_force, node_mass
+from laddermill_gym.kernels.pointmass.mill import pay_out_rhs
 from laddermill_gym.kernels.pointmass.partitioned import partitioned_solve, partitioned_solve_serial, solver_parts
 from laddermill_gym.kernels.wind import modulation
 
@@ -110,3 +116,32 @@ def implicit_advance_serial(t, x, u, dt, nsteps, M, W):
         if st != PM_OK:
             return st, k + 1
     return PM_OK, nsteps
+
+
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
+def mill_implicit_step(t, x, u, dt, M, W):
+    """One step of the moving string from t [s]: :func:`implicit_advance`'s step with the pay-out term
+    (``mill.pay_out_rhs``) added to the assembled right-hand side, the elimination on one chunk per thread of numba's
+    current count. Returns the status."""
+    n = int(M.par[PP_N])
+    P = max(1, solver_parts(n, _iget_num_threads(), W.mid.shape[0]))
+    s, d, _, _ = modulation(t, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
+    tensions(x, M, W.tension, False)
+    _assemble(t, x, u, dt, M, W.tension, s, d)
+    pay_out_rhs(x, M, dt)
+    partitioned_solve(x, W.tension, M, dt, W, P)
+    return move_and_check(x, dt, M.par)
+
+
+@njit(cache=True, error_model="numpy", _nrt=True, fastmath=False)
+def mill_implicit_step_serial(t, x, u, dt, M, W):
+    """:func:`mill_implicit_step` on the calling thread (no parallel loop, as :func:`implicit_advance_serial`)."""
+    n = int(M.par[PP_N])
+    P = solver_parts(n, 1, W.mid.shape[0])
+    s, d, _, _ = modulation(t, M.tmod[TM_T0], M.tmod[TM_DT], M.ms, M.md)
+    tensions_serial(x, M, W.tension, False)
+    for c in range((n + CHUNK - 1) // CHUNK):
+        _assemble_chunk(t, x, u, dt, M, W.tension, s, d, c * CHUNK, min(n, (c + 1) * CHUNK))
+    pay_out_rhs(x, M, dt)
+    partitioned_solve_serial(x, W.tension, M, dt, W, P)
+    return move_and_check_serial(x, dt, M.par)

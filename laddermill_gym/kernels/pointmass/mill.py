@@ -89,18 +89,21 @@ def end_tensions(x, M):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def _pay_out_kick(x, M, dt):
-    """The end elements' terms of the implicit step that their changing rest length adds, as a force on nodes 0
-    and n-1 added to their velocities as dt F / m before the step (r = m v + dt F in the step: the same equation):
+def pay_out_rhs(x, M, dt):
+    """The end elements' terms of the implicit step that their changing rest length adds, as forces F on nodes 0
+    and n-1, added as dt F to their right-hand sides r = m v + dt F_ext(x, v) once the step has assembled them
+    (``x``'s velocity slots hold r then; ``implicit.mill_implicit_step``):
 
     * the matrix damps the whole elongation rate DA l'/l0; the material strain rate subtracts (l/l0) dl0/dt;
     * the step takes the elastic force at its end, EA (l+ - l0+)/l0+, linearised about the start in l only; the
       rest length grows by dl0/dt dt within the step, which changes it by -EA (l/l0^2) dl0/dt dt.
 
-    Together a tension -(DA + dt EA) (l/l0) (dl0/dt) / l0 along the element. Without the second term a short first
-    element (0.1 l_e) resists the pay-out as if its rest length stood still and the cable near the veered ground
-    point goes slack (measured on a straight moving string: three slack elements, the rest at ten times the strain
-    the ground points impose)."""
+    Together a tension -(DA + dt EA) (l/l0) (dl0/dt) / l0 along the element (positions only: the assembly has not
+    moved them). Without the second term a short first element (0.1 l_e) resists the pay-out as if its rest length
+    stood still and the cable near the veered ground point goes slack (measured on a straight moving string: three
+    slack elements, the rest at ten times the strain the ground points impose). Until 2026-12-07 this was added to
+    the velocities as dt F / m before the assembly, so that the kites' aerodynamics, the cable drag and the
+    gravity of nodes 0 and n-1 were taken at a velocity kicked by 10-450 m/s (docs/pointmass_mill.md)."""
     par = M.par
     n = int(par[PP_N])
     for side in range(2):
@@ -111,7 +114,7 @@ def _pay_out_kick(x, M, dt):
         l0 = rest_length(e, par)
         tc = -(par[PP_DA] + dt * par[PP_EA]) * ln / l0 * rate / l0  # tension of the correction [N]
         sign = -1.0 if side == 0 else 1.0  # the element pulls its upper node down, its lower node up
-        h = sign * dt * tc / node_mass(j, M)
+        h = sign * dt * tc
         o = N3_SIZE * j + N3_VEL
         x[o] += h * tx
         x[o + 1] += h * ty
@@ -208,7 +211,8 @@ def transfer_down(x, M, sp, s, v):
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def _transfer(x, M, sp, sx):
-    """At most one node transfer for the cable moved; PM_LIMIT if the cable moved more than one element."""
+    """At most one node transfer for the cable moved; PM_LIMIT if the cable moved more than one element (which the
+    simulator refuses when it is built: max |V_c| dt >= l_e, ``sim/pointmass_mill.py``)."""
     s = sx[SX_MOVED]
     le = sp[SP_PIECE]
     if s >= le:
@@ -224,25 +228,43 @@ def _transfer(x, M, sp, sx):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
-def mill_before(t, x, M, sp, sx, dt, implicit):
-    """Before a step at t [s]: the end elements' lengths from s and V_c(t), their start-of-step tensions, and
-    (``implicit``) the pay-out terms of :func:`_pay_out_kick`. Returns (T_first [N], T_last [N], V_c [m/s])."""
+def mill_before(t, x, M, sp, sx):
+    """Before a step at t [s]: the end elements' lengths from s and V_c(t) and their start-of-step tensions (the
+    implicit step then adds :func:`pay_out_rhs` to its right-hand side). Returns (T_first [N], T_last [N], V_c
+    [m/s])."""
     v = schedule_speed(sp, t)
     set_ends(M.par, sp, sx[SX_MOVED], v)
     t0, tn = end_tensions(x, M)
-    if implicit:
-        _pay_out_kick(x, M, dt)
     return t0, tn, v
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
+def schedule_integral(sp, t, dt, v, v1):
+    """Cable paid out over [t, t + dt] [m]: the integral of the piecewise-linear schedule, exact (a trapezoid per
+    linear piece, split at the breakpoints inside the step; the trapezoid 0.5 dt (v + v1) when none is inside).
+    ``v``, ``v1``: V_c at t and t + dt [m/s]."""
+    n = int(sp[SP_NSCHED])
+    ot, ov = SP_SCHED, SP_SCHED + n
+    t1 = t + dt
+    total, a, va, split = 0.0, t, v, False
+    for k in range(n):
+        tk = sp[ot + k]
+        if t < tk < t1:
+            total += 0.5 * (tk - a) * (va + sp[ov + k])
+            a, va, split = tk, sp[ov + k], True
+    if not split:
+        return 0.5 * dt * (v + v1)
+    return total + 0.5 * (t1 - a) * (va + v1)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM, _nrt=False)
 def mill_after(t, x, M, sp, sx, dt, t0, tn, v, status):
     """After the string's step from t [s]: the generator power (T_first - T_last) V_c [W] of the step's start into
-    the energy, s += the schedule's pay-out over the step (trapezoid, exact for a linear piece), V_c(t + dt), then
+    the energy, s += the schedule's pay-out over the step (:func:`schedule_integral`, exact), V_c(t + dt), then
     (if the step went well) at most one node transfer, and the end lengths for the new s. Returns the status."""
     v1 = schedule_speed(sp, t + dt)
     sx[SX_ENERGY] += dt * (t0 - tn) * v
-    sx[SX_MOVED] += 0.5 * dt * (v + v1)
+    sx[SX_MOVED] += schedule_integral(sp, t, dt, v, v1)
     sx[SX_SPEED] = v1
     if status == PM_OK:
         status = _transfer(x, M, sp, sx)

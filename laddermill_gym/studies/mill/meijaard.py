@@ -342,9 +342,10 @@ def main(argv: list[str] | None = None) -> int:
     from laddermill_gym.studies.commands import UsageError, writable_folder
 
     try:  # an unknown scene, one without a moving cable (a point-mass one has no assembly) and a bad --out: one line
-        if getattr(getattr(load_scene(cfg.scene, dimension=2), "assembly", None), "station", None) is None:
+        if getattr(getattr(load_scene(cfg.scene), "assembly", None), "station", None) is None:
             raise UsageError(f"--scene {cfg.scene!r}: no moving cable through a station (the study's periodic "
                              "searches need a mill's: laddermill, laddermill_v1, laddermill_v2)")
+        load_scene(cfg.scene, dimension=2)  # the study's in-plane mill: a scene it cannot make is named here
         writable_folder(args.out)
     except (UsageError, ConfigError) as err:
         ap.error(str(err))

@@ -6,7 +6,8 @@ of them kites) runs T seconds from its quasi-static start under the forcings of 
 at 0.3037 T; ``gust``: the 1-cosine +30 % gust sampled every 0.1 s) by its two fixed-step methods:
 
 * ``explicit`` (symplectic Euler) on the steps period / m from its stability limit
-  (``sim/pointmass.explicit_stable_dt``: min(l0 / c, mu l0^2 / (2 DA))) down, halving every two;
+  (``sim/pointmass.explicit_stable_dt``: the symplectic Euler step's limit on the damped string's highest mode,
+  below l0 / c and mu l0^2 / (2 DA)) down, halving every two;
 * ``implicit`` (linearly implicit Euler, block-tridiagonal along the string, docs/pointmass.md) on the steps
   period / k, k = 1, 2, 4, 5, 10, 20, 40 (period: the time between samples), far beyond that limit.
 
