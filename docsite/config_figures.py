@@ -90,7 +90,7 @@ def craft_data() -> dict:
               **{f"J{k}": f"{v:.{2 if k == 'xz' else 1}f}" for k, v in j.items()},
               "rotor_speed": f"{10 * math.cos(math.radians(25)) / (0.15 * radius):.1f}",
               "fin_slope": f"{2 * math.pi * 1.5 / (2 + math.sqrt(1.5 ** 2 + 4)):.1f}",
-              "rk4_limit_ms": f"{2.78 / 473 * 1e3:.1f}", "clearance": f"{cfg['hub_spacing'] - 2 * radius:.1f}"}
+              "clearance": f"{cfg['hub_spacing'] - 2 * radius:.1f}"}
     inertia = dict(zip(("Jxx", "Jyy", "Jzz", "Jxz"), cfg["inertia"], strict=True))
     config = {"mass": f"{cfg['mass']:.1f}", "hub_height": f"{cfg['hub_height']:.2f}", "hub_x": f"{cfg['hub_x']:.2f}",
               "fin_x": f"{cfg['fin_x']:.2f}", "fin_z": f"{cfg['fin_z']:.2f}",

@@ -32,7 +32,6 @@ CRAFT_DATA_CHECKS = (
     (r"A ([\d.]+) mm Kevlar 49 line: EA = (\d+) kN, ([\d.]+) g/m, breaking load ([\d.]+) kN",
      (CC % "cable_mm", CC % "EA_kN", CC % "g_per_m", CC % "breaking_kN")),
     (r"The rear tethers are L_c = (\d+) m long", (CC % "tether_length",)),
-    (r"limit of 2\.78/473 = ([\d.]+) ms", (CW % "rk4_limit_ms",)),
     (r"Collective (-\d+) to (\d+) deg; differential \+-(\d+) deg\. The trim collective is (\d+) deg",
      (CC % "collective_min", CC % "collective_max", CC % "differential", CC % "trim_collective")),
     (r"design pose: pitch (\d+) deg and every tether at beta = (\d+) deg", (CC % "pitch", CC % "beta")),
@@ -55,10 +54,10 @@ ROTORCRAFT_GIVEN = (  # the paper's sections and equations, the model's choices 
     "| cross beam (4 m) | 4.0 | 0, 0, 0.3 |", "| boom (2.5 m) | 3.0 | -0.25, 0, 0.4 |", "| fins | 1.0 | -1.5, 0, 0.1 |",
     "| electronics, bridle | 2.0 | 0.2, 0, 0.7 |", "aspect ratio 1.5: 2 pi A / (2 + sqrt(A^2 + 4))",
     "4 m of 30 mm tube at C_D 1.2", "At 10 m/s that puts the retreating tip at 10 deg, inside the 13 deg limit",
-    "Roberts' Fig. 2", "With 4 elements the lightest nodes (80 g)", "at the 2 ms step", "With 2 elements",
-    "The 2 ms step", "Nonlinear runs at 2 ms", "At 10 m/s the trim", "## Eq. (6)", "+ C_T/(2 r) = 0",
-    "dc0/dtheta0 (1 - c1 / (2 r f_lam))", "beta = -2 s dT/dtheta0", "alpha = 0:", "At 10 m/s (SI units",
-    "-M^-1 K, -M^-1 D and M^-1 b", "(the issue asks for 5 %)", "which eq. (6) leaves out. Eq. (6) on its own",
+    "Roberts' Fig. 2", "With 4 elements the lightest nodes (80 g)", "At the 10 m/s trim", "At 10 m/s the trim",
+    "## Eq. (6)", "+ C_T/(2 r) = 0", "dc0/dtheta0 (1 - c1 / (2 r f_lam))", "beta = -2 s dT/dtheta0", "alpha = 0:",
+    "On that check model at 10 m/s (SI units", "-M^-1 K, -M^-1 D and M^-1 b", "(the issue asks for 5 %)",
+    "which eq. (6) leaves out.", "Eq. (6) of the default craft",
     "which eq. (6) freezes", "An LQR on eq. (6)", "collective: 4 deg, or lower where 4 deg would push the retreating "
     "tip past 13 deg", "(all 30 minimal coordinates)", "| v0 [m/s] | 7 | 10 | 13 | 16 | 18 | 19 | 20 | 21 | 22 |",
     "at 10 m/s and at 22 m/s, to 15 %", "measured at 10 m/s", "| eq. (6) LQR after a 0.1 rad direction step |",
@@ -77,9 +76,9 @@ GUARD_GIVEN = (
 # worked in a Python session with the craft's API (trim, linearisation, eigenvectors); no command of the package prints
 # them (the 10 m/s mode's period, 2 pi / 0.497, is a check of craft_stability since 2026-11-30)
 ROTORCRAFT_DERIVED = (
-    "eigenvalue of -1558 1/s", "the fastest eigenvalue is -473 1/s", "(60.9 m)",
+    "eigenvalue of -1558 1/s", "(60.9 m)",
     "has pitch 25.6 deg, tether tensions of 129 N (each rear) and 195 N (front), and 1.6 kW electrical power",
-    "Its modes are -0.19 +- 0.84j and -3.7 +- 5.4j 1/s", "roll (about 0.03 rad per m) and yaw "
+    "roll (about 0.03 rad per m) and yaw "
     "(about 0.043 rad per m)", "That happens above 12.8 m/s", "above 12.8 m/s, which")
 #: runs of craft_stability on modified configs (fin areas, tether spacings) and beyond its wind scan (9eab8c7)
 ROTORCRAFT_HISTORY = (History(
@@ -108,7 +107,8 @@ ROTORCRAFT_HISTORY = (History(
         "1/s at 25 m/s)")),)
 ROTORCRAFT = Covered(
     groups=("craft_stability", "craft_data"),
-    checks=CRAFT_DATA_CHECKS + ((r"\*\*The critical wind speed is (\d+\.\d\d) m/s\*\*", (CS % "critical",)),
+    checks=CRAFT_DATA_CHECKS + (
+            (r"\*\*The critical wind speed is (\d+\.\d\d) m/s\*\*", (CS % "critical",)),
             (r"\+- [\d.]+j 1/s, a period of ([\d.]+) s\)", (CS % "period_v10",)),  # 2 pi / the frequency
             (r"K = \((-[\d.]+), (-[\d.]+), (-[\d.]+), (-[\d.]+)\)", tuple(CS % f"K][{i}" for i in range(4))),
             (r"Closed loop on eq\. \(6\): max \|z\| = (\d\.\d+)", (CS % "z",)),
@@ -141,7 +141,14 @@ ROTORCRAFT = Covered(
                            "{gusts_v5_rotorcraft_v1[scorecard][lqr]}", "@{gusts_v5_rotorcraft_v1[lost][lqr_guard]}")),
             (r"On gusts-v5 it survives (\d+ / \d+) as well\.",
              ("{gusts_v5_rotorcraft_v1[scorecard][lqr_guard:lqr_tip_hold_rotorcraft]}",))),
-    printed=(Printed("tip_guard_margin", (  # its quantile table; the margin rounds the pooled 99.9 % up to 0.25 deg
+    printed=(Printed("craft_stable_step", (  # laddermill stable-step roberts_flying_model (work_precision.md's row too)
+        "at a step of 0.05 s", "the craft's fastest eigenvalue is -110.7 +- 457.1j 1/s",
+        "stable up to a step of 0.00619 s")),
+             Printed("craft_lqr", (  # laddermill lqr --config configs/agents/lqr_rotorcraft.yaml: the default craft
+        "M = [[20.17, 0], [0, 48.41]] D = [[7.08, 1.26], [1.26, 359.6]] K = [[15.02, -583.0], [0.00, 2100.2]] "
+        "(alpha, beta) = (0, -6912) per rad", "the thrust tilt's -583 N per rad",
+        "Its modes are -0.18 +- 0.84j and -3.7 +- 5.4j 1/s")),
+             Printed("tip_guard_margin", (  # its quantile table; the margin rounds the pooled 99.9 % up to 0.25 deg
         "| NTM IB | 46220 | -0.09 | 1.15 | 1.61 | 2.19 |", "| Dryden moderate | 42805 | -0.20 | 1.90 | 2.67 | 3.76 |",
         "| both | 89025 | -0.13 | 1.66 | 2.41 | 3.76 |",
         "below the guard's 10.5 deg target or above it (9.5-13 deg)")),),

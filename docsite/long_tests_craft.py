@@ -22,6 +22,10 @@ CRAFT_TESTS = {
     # power_curve.md: the depower rule's trims against their closed-form targets
     "depower_rule_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_power_curve_mill.py -k '
                                'depower_rule_trims', "2 s", "power_curve.md"),
+    # rotorcraft.md: the default craft's eq. (6) blocks at its 10 m/s trim, eq. (6)'s modes, the LQR gain
+    "craft_lqr": Long("laddermill lqr --config configs/agents/lqr_rotorcraft.yaml", "2 s", "rotorcraft.md"),
+    # rotorcraft.md: the config's step, the craft's fastest eigenvalue at its trim and RK4's stable step there
+    "craft_stable_step": Long("laddermill stable-step roberts_flying_model", "2 s", "rotorcraft.md"),
     # rotorcraft_design.md: Roberts' 35 m crafts trimmed in the simulator (altitude, incidence, power, the wind met)
     "craft_trim_tests": Long('python -m pytest -m "slow or not slow" -s tests/test_craft.py -k 35m_crafts_trim',
                              "7 s", "rotorcraft_design.md"),

@@ -1,4 +1,4 @@
-"""Rotor aerodynamics of Roberts' tethered rotorcraft (laddermill_gym/rotorcraft/rotor.py, kernels/rotor.py).
+"""Rotor aerodynamics of Roberts' tethered rotorcraft (laddermill_gym/rotorcraft/rotor.py, rotorcraft/rotor_kernels.py).
 
 Oracles (shared/design/oracles.md, "Tethered rotor"):
 

@@ -17,8 +17,10 @@ import numpy as np
 
 from laddermill_gym.control.base import batch_observations
 from laddermill_gym.control.lqr import DiscreteLQR, bryson_weights, discrete_lqr
+from laddermill_gym.control.lqr_config import CONTROL_PERIOD_BOUND, MAX_INPUT_BOUND, MAX_STATE_BOUNDS
 from laddermill_gym.kernels.contract import CU_COLLECTIVE, CU_DIFFERENTIAL, CU_SIZE
-from laddermill_gym.model.configio import CONFIG_DIR, find_config, read_yaml
+from laddermill_gym.ladder.bounds import BOUNDS
+from laddermill_gym.model.configio import CONFIG_DIR, config_path, find_config, read_yaml, shipped_names
 from laddermill_gym.rotorcraft.roll_lateral import RollLateralModel, derive_roll_lateral, lateral_state
 
 DEFAULT_CRAFT_LQR = CONFIG_DIR / "agents" / "lqr_rotorcraft.yaml"
@@ -40,18 +42,23 @@ class CraftLQRConfig:
 
 
 def load_craft_lqr_config(path: str | Path = DEFAULT_CRAFT_LQR) -> CraftLQRConfig:
-    """Read a craft LQR YAML (``path``: a file or the bare name of a shipped one, ``lqr_rotorcraft``) strictly
-    (unknown keys or non-positive limits raise ConfigError naming them)."""
+    """Read a craft LQR YAML (``path``: a file or the bare name of a shipped one, ``lqr_rotorcraft``) strictly:
+    unknown keys, a missing craft file, and non-positive or out-of-range values raise ConfigError naming the field
+    (the bounds and reasons of :func:`~laddermill_gym.control.lqr_config.load_lqr_config`; the wind's of a scene)."""
     path = find_config("agents", path, "config")
     s = read_yaml(path)
     craft = s.text("craft")
-    v = s.number("wind_speed", positive=True)
-    period = s.number("control_period", positive=True)
+    if not config_path("rotorcraft", craft).is_file():
+        raise s.error("craft", craft, "no such craft file (a bare name is one of the shipped crafts: "
+                                      f"{', '.join(shipped_names('rotorcraft'))})")
+    v = s.number("wind_speed", positive=True, **BOUNDS["wind.v0"])
+    period = s.number("control_period", positive=True, **CONTROL_PERIOD_BOUND)
     ms = s.section("max_state")
-    max_state = np.array([ms.number(k, positive=True) * scale for k, scale in _MAX_STATE_KEYS])
+    max_state = np.array([ms.number(k, positive=True, high=MAX_STATE_BOUNDS[k][0], why=MAX_STATE_BOUNDS[k][1])
+                          * scale for k, scale in _MAX_STATE_KEYS])
     ms.done()
     mi = s.section("max_input_deg")
-    max_input = math.radians(mi.number("differential", positive=True))
+    max_input = math.radians(mi.number("differential", positive=True, **MAX_INPUT_BOUND))
     mi.done()
     s.done()
     return CraftLQRConfig(Path(path), craft, v, period, max_state, max_input)

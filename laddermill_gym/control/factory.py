@@ -103,7 +103,8 @@ def _mill_controller(spec: str, kw: dict, env_id: str) -> Controller:
     """LadderMill-v0 and -v1: open loop (the zero normalised action, which holds the operating point's tail
     settings, the paper's fixed settings, and with a drum its generator torque; needs the scene only) or the lateral
     LQR (``control.mill_lqr``: centralised, on the env's own mill with the id's config of
-    :data:`DEFAULT_LQR_CONFIGS`; needs the operating point)."""
+    :data:`DEFAULT_LQR_CONFIGS`; needs the operating point), refused (ValueError naming the radius) when its closed
+    loop grows over the period (the transition matrix's spectral radius >= 1)."""
     if spec == "open_loop":
         import numpy as np
 
@@ -129,7 +130,13 @@ def _mill_controller(spec: str, kw: dict, env_id: str) -> Controller:
     path = Path(spec[4:]) if spec.startswith("lqr:") else default
     cfg = load_lqr_config(path)  # its weights, designed on the environment's own mill
     task = MillTask(1, **{k: v for k, v in kw.items() if k != "parallel"})
-    return design_mill_lqr(cfg, task).controller(task)
+    design = design_mill_lqr(cfg, task)
+    if not design.monodromy_radius < 1.0:  # Floquet: the closed loop grows over the period, transfer included
+        raise ValueError(f"{path}: its design on {env_id}'s mill does not hold the orbit: the closed loop's "
+                         f"transition matrix over the period has spectral radius {design.monodromy_radius:.3g} "
+                         f"(>= 1; frozen closed loop max |z| {design.frozen_radius.max():.4f} over "
+                         f"{design.phases.size} phases); laddermill lqr --config {path} prints the check")
+    return design.controller(task)
 
 
 def _pumping_controller(spec: str, kw: dict, task_cls: type) -> Controller:
@@ -182,7 +189,8 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
 
     Model-based controllers act on every wing (``action_mode="tail"``, ``groups="per_wing"``); other action
     layouts raise ValueError. An LQR takes its weights and control period from the config and is designed on the
-    environment's own scene (a custom scene file or ``scene_options`` overrides included)."""
+    environment's own scene (a custom scene file or ``scene_options`` overrides included); a single wing's tether of
+    several elements (cable nodes the env does not observe) and a mill design unstable over the period are refused."""
     if env_id not in ENV_IDS:
         raise ValueError(f"env_id = {env_id!r}: must be one of {sorted(ENV_IDS)}")
     kw = registered_arguments(env_id, env_kwargs)  # as gymnasium.make merges them, key by key at every depth
@@ -212,6 +220,10 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
         if cfg.control_period != kw["control_dt"]:
             raise ValueError(f"{path}: control_period = {cfg.control_period} s differs from the environment's "
                              f"control_dt = {kw['control_dt']} s")
+        if sc.assembly.n_wings == 1 and sc.assembly.n_nodes:  # the env observes the wing, not the tether's nodes
+            raise ValueError(f"controller {spec!r}: the environment's tether has {sc.assembly.n_nodes} cable nodes "
+                             "whose lateral states it does not observe; the single-wing LQR needs "
+                             "elements_per_piece = 1 (scene_options)")
         # the config gives the weights and the period; the design is made on the environment's own scene (a
         # custom file or overrides included)
         design = design_tethered_wing if sc.assembly.n_wings == 1 else design_ladder_chain

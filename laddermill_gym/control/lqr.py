@@ -78,7 +78,11 @@ __all__ = [
 # ------------------------------------------------------------------------------------ tethered wing
 @dataclass(frozen=True)
 class LateralDesign:
-    """The lateral LQR of a single tethered wing: trim, linearisation, lateral model and gain."""
+    """The lateral LQR of a single tethered wing: trim, linearisation, lateral model and gain.
+
+    ``A_lat``, ``B_lat``: the wing's own lateral model (6 states) the gain is designed on; ``full_closed_loop``: with
+    cable nodes along the tether (more than one element), the discrete closed-loop eigenvalues of the gain on the
+    full lateral model (the nodes' lateral states unobserved, zero gain), else None."""
 
     config: LQRConfig
     scene: Scene
@@ -89,6 +93,7 @@ class LateralDesign:
     B_lat: np.ndarray
     coupling: dict[str, float]
     lqr: DiscreteLQR
+    full_closed_loop: np.ndarray | None = None
 
     def controller(self, action_dtype=np.float32) -> LQRController:
         """The design's :class:`LQRController`."""
@@ -96,7 +101,37 @@ class LateralDesign:
 
 
 def _scene_for(config: LQRConfig, scene: Scene | None) -> Scene:
+    """``scene``, or the config's (its ``scene``, resolved against the config's folder by the loader)."""
     return scene if scene is not None else load_scene(config.scene, elements_per_piece=config.elements_per_piece)
+
+
+def _check_fixed_scene_fields(cfg: LQRConfig, single: bool) -> None:
+    """ValueError naming the config's file and field where a fixed scene's design (a single wing: ``single``, or a
+    chain) would ignore it: ``design_model`` other than the transfer phase (the mill's orbit only), ``structure:
+    centralised`` for one wing."""
+    if cfg.design_model != "transfer_phase":
+        raise ValueError(f"{cfg.file}: design_model = {cfg.design_model!r} is the moving-cable mill's "
+                         "(control.mill_lqr); a fixed scene's design has one trim: leave the field out")
+    if single and cfg.structure != "decentralised":
+        raise ValueError(f"{cfg.file}: structure = {cfg.structure!r}: a single wing's design is one gain on its own "
+                         "lateral model (the field is for chains and the mill): leave the field out")
+
+
+def _full_lateral_check(sc: Scene, lin: Linearization, K: np.ndarray, dt: float) -> np.ndarray:
+    """Discrete closed-loop eigenvalues of the wing's gain ``K`` (2, 6) on the full lateral model of ``lin`` (the
+    cable nodes' lateral states unobserved: zero gain), ZOH at ``dt``; ValueError when that loop is not stable (the
+    design on the wing's own block would hide it)."""
+    A, B, _, _ = lateral_subsystem(lin)
+    n_lat = len(LATERAL_STATE_NAMES)
+    sysd = control.c2d(control.ss(A, B, np.eye(A.shape[0]), np.zeros(B.shape)), dt, "zoh")
+    Kf = np.zeros((B.shape[1], A.shape[0]))
+    Kf[:, :n_lat] = K
+    eig = np.linalg.eigvals(np.asarray(sysd.A) - np.asarray(sysd.B) @ Kf)
+    if not np.max(np.abs(eig)) < 1.0:
+        raise ValueError(f"scene {sc.name}: the lateral model has {A.shape[0]} states, not 6: the tether's cable "
+                         f"nodes are not observed, and the wing's gain leaves the full lateral model unstable (max |z| "
+                         f"= {np.max(np.abs(eig)):.5f}); use elements_per_piece = 1")
+    return eig
 
 
 def design_tethered_wing(config: LQRConfig | str | Path = DEFAULT_CONFIG, scene: Scene | None = None,
@@ -108,8 +143,14 @@ def design_tethered_wing(config: LQRConfig | str | Path = DEFAULT_CONFIG, scene:
     config : LQRConfig or path of its YAML
     scene : Scene, optional      overrides the config's scene (e.g. a modified wing for a study)
     trim : (x, u), optional      a known trim of ``scene`` (found with ``scene.initial_state()`` otherwise)
+
+    A tether of more than one element adds its nodes' lateral states, which the controller does not observe: the gain
+    is designed on the wing's own lateral block and checked on the full lateral model (``full_closed_loop``);
+    ValueError when it does not hold it (:func:`_full_lateral_check`). The configs' loader and
+    :func:`~laddermill_gym.control.factory.make_controller` refuse such a tether outright.
     """
     cfg = config if isinstance(config, LQRConfig) else load_lqr_config(config)
+    _check_fixed_scene_fields(cfg, single=True)
     sc = _scene_for(cfg, scene)
     if sc.assembly.n_wings != 1:
         raise ValueError(f"design_tethered_wing: scene {sc.name} has {sc.assembly.n_wings} wings; "
@@ -119,13 +160,14 @@ def design_tethered_wing(config: LQRConfig | str | Path = DEFAULT_CONFIG, scene:
     lin = linearize(sim, x, u)
     A, B, _, _ = lateral_subsystem(lin)
     n_lat = len(LATERAL_STATE_NAMES)
-    if A.shape[0] != n_lat:
-        # cable nodes add lateral states the controller does not observe: design on the wing's own block
+    nodes = A.shape[0] != n_lat
+    if nodes:  # cable nodes add lateral states the controller does not observe: the wing's own block
         A, B = A[:n_lat, :n_lat], B[:n_lat]
     Q, R = bryson_weights(cfg.max_state, cfg.max_input)
     lqr = discrete_lqr(A, B, Q, R, cfg.control_period)
+    full = _full_lateral_check(sc, lin, lqr.K, cfg.control_period) if nodes else None
     return LateralDesign(config=cfg, scene=sc, x_trim=x, u_trim=u, linearization=lin, A_lat=A, B_lat=B,
-                         coupling=coupling_norms(lin), lqr=lqr)
+                         coupling=coupling_norms(lin), lqr=lqr, full_closed_loop=full)
 
 
 # ------------------------------------------------------------------------------------ chain
@@ -173,6 +215,7 @@ def design_ladder_chain(config: LQRConfig | str | Path = DEFAULT_CHAIN_CONFIG, s
     101 wings. Centralised: the Riccati equation of the full lateral model (606 states for 101 wings, about
     20 s), with block-diagonal Bryson weights."""
     cfg = config if isinstance(config, LQRConfig) else load_lqr_config(config)
+    _check_fixed_scene_fields(cfg, single=False)
     sc = _scene_for(cfg, scene)
     x, u = trim if trim is not None else sc.initial_state()
     sim = sc.simulator(x, u)
@@ -275,9 +318,14 @@ class LQRController:
 
     @classmethod
     def from_config(cls, path: str | Path = DEFAULT_CONFIG, action_dtype=np.float32) -> LQRController:
-        """Design from a config file (single wing or chain, chosen by the scene's number of wings)."""
+        """Design from a config file (single wing or chain, chosen by the scene's number of wings); ValueError for a
+        moving-cable mill, whose LQR is :func:`~laddermill_gym.control.mill_lqr.design_mill_lqr` on the env's task."""
         cfg = load_lqr_config(path)
-        sc = load_scene(cfg.scene, elements_per_piece=cfg.elements_per_piece)
+        sc = _scene_for(cfg, None)
+        if sc.assembly.station is not None:
+            raise ValueError(f"{cfg.file}: scene {cfg.scene} is a moving-cable mill: its lateral LQR is designed on "
+                             "an environment's orbit (control.mill_lqr.design_mill_lqr; make_controller('lqr:CONFIG', "
+                             "a LadderMill id); laddermill lqr --config CONFIG), not by LQRController.from_config")
         design = (design_tethered_wing(cfg, sc) if sc.assembly.n_wings == 1 else design_ladder_chain(cfg, sc))
         return design.controller(action_dtype)
 

@@ -40,6 +40,7 @@ from typing import Any
 import control
 import numpy as np
 
+from laddermill_gym.atmosphere.field import WindField
 from laddermill_gym.control.base import batch_observations
 from laddermill_gym.control.discrete_lqr import discrete_lqr
 from laddermill_gym.control.linearize import (
@@ -51,9 +52,9 @@ from laddermill_gym.control.linearize import (
     minimal_from_full,
     minimal_rhs,
 )
-from laddermill_gym.control.lqr_config import LQRConfig, bryson_weights
+from laddermill_gym.control.lqr_config import LATERAL_STATE_NAMES, LQRConfig, bryson_weights
 from laddermill_gym.envs.laddermill.observation import N_OBS_PER_SLOT, N_STATION_OBS, OBS_INDEX
-from laddermill_gym.kernels.contract import B3_QUAT, B3_SIZE, SX_MOVED
+from laddermill_gym.kernels.contract import B3_POS, B3_QUAT, B3_SIZE, SX_MOVED
 from laddermill_gym.kernels.moving_cable import transfer_3d
 from laddermill_gym.model.params import N_CONTROLS
 
@@ -98,20 +99,49 @@ def mill_lateral_model(sim, x: np.ndarray, u: np.ndarray, t: float = 0.0, eps: f
     return A, B
 
 
+#: [m, m/s, rad, rad/s] the largest lateral state (y, vy, phi, psi, p, r of any slot) of an in-plane orbit: round-off
+ORBIT_LATERAL_TOL = 1e-8
+
+
+def _left_plane(what: str, t: float, value: float) -> ValueError:
+    return ValueError(f"the mill's orbit left the x-z plane at t = {t:.2f} s: {what} = {value:.4g} (round-off is below "
+                      f"{ORBIT_LATERAL_TOL:g}); the lateral design needs the in-plane periodic orbit, recorded in a "
+                      "steady wind (no direction step or gusts)")
+
+
+def _check_in_plane(asm, states, t: float) -> None:
+    """ValueError when a recorded orbit state has left the x-z plane (a lateral state past round-off,
+    :data:`ORBIT_LATERAL_TOL`): the lateral design's reference values are zero only on the in-plane orbit."""
+    lat = lateral_indices(asm.n_wings, 0)
+    for x in states:
+        z = minimal_from_full(asm, x)[lat]
+        k = int(np.argmax(np.abs(z)))
+        if not abs(z[k]) <= ORBIT_LATERAL_TOL:
+            raise _left_plane(f"slot {k // _NLAT}'s {LATERAL_STATE_NAMES[k % _NLAT]}", t, z[k])
+
+
 def orbit_states(sim, n_phases: int) -> tuple[np.ndarray, np.ndarray]:
     """Step ``sim`` (just after a transfer, on the periodic orbit) through one period and return the states at
     the cable phases s / l0 = j / n_phases, j = 0 .. n_phases - 1 ((n_phases, n_state); the first is the start)
-    and the state just before the period's transfer ((n_state,)). RuntimeError if no transfer within two periods."""
+    and the state just before the period's transfer ((n_state,)). RuntimeError if no transfer within two periods;
+    ValueError as soon as a wing's lateral position, or at the end a recorded state's lateral coordinates, leave the
+    x-z plane (past round-off, :data:`ORBIT_LATERAL_TOL`: the simulator's wind must be steady, as
+    :func:`design_mill_lqr` sets it)."""
     asm = sim.assembly
     lp = asm.station.piece_length
     off = asm.body_state_size + SX_MOVED
+    ys = B3_SIZE * np.arange(asm.n_wings) + B3_POS + 1  # every wing's global y [m]
     n0 = sim.transfers()
     states, before = [sim.state.copy()], sim.state.copy()
     n_max = int(math.ceil(2.0 * lp / max(abs(sim.cable_speed()), 1e-9) / sim.settings.dt))
     for _ in range(n_max):
         prev = sim.state.copy()
         sim.step()
+        k = int(np.argmax(np.abs(sim.state[ys])))
+        if not abs(sim.state[ys[k]]) <= ORBIT_LATERAL_TOL:
+            raise _left_plane(f"slot {k}'s y", sim.t, sim.state[ys[k]])
         if sim.transfers() != n0:
+            _check_in_plane(asm, [*states, prev], sim.t)
             return np.array(states), prev
         if len(states) < n_phases and sim.state[off] >= len(states) * lp / n_phases:
             states.append(sim.state.copy())
@@ -193,16 +223,18 @@ def _full_gain(gains: np.ndarray) -> np.ndarray:
 
 
 def design_mill_lqr(config: LQRConfig, task, n_phases: int = 8, progress=None) -> MillLQRDesign:
-    """Design the lateral LQR of ``task``'s mill (a MillTask: its assembly, operating point and control period)
-    with Bryson's weights of ``config`` on its ``design_model`` (the operating point's phase just after a transfer,
-    or the mean of the phases' models), and check it at
-    ``n_phases`` phases of the orbit and over the period (see the module doc). ``progress``: a callable taking a
+    """Design the lateral LQR of ``task``'s mill (a MillTask: its assembly, operating point and control period; the
+    orbit is recorded in a steady wind, speed factor 1 and no direction offset or gust grid, whatever the task's
+    copy 0 drew at a reset) with Bryson's weights of ``config`` on its ``design_model`` (the operating point's
+    phase just after a transfer, or the mean of the phases' models), and check it at ``n_phases`` phases of the
+    orbit and over the period (see the module doc). ``progress``: a callable taking a
     line of text (e.g. ``print``), or None."""
     say = progress or (lambda _msg: None)
     if config.control_period != task.control_dt:
         raise ValueError(f"{config.file}: control_period = {config.control_period} s differs from the environment's "
                          f"control_dt = {task.control_dt} s")
     sim = task.simulator(0)
+    sim.set_wind(WindField())  # the orbit's own air: steady, whatever the task's copy drew at its reset
     sim.reset(state=np.array(task.op.state), t=0.0, controls=np.array(task.u_op))
     u = np.array(task.u_op)
     n = sim.assembly.n_wings

@@ -7,7 +7,8 @@ Prints the open-loop lateral eigenvalues of the linearised model, the gain, and 
 eigenvalues (stable when every |z| < 1). For a chain it prints the per-wing design summary and, with
 ``--full-check``, the eigenvalues of the decentralised gains on the full coupled lateral model. For the
 moving-cable mill (``configs/agents/lqr_laddermill.yaml``) it prints the check over the period
-(:mod:`laddermill_gym.control.mill_lqr`).
+(:mod:`laddermill_gym.control.mill_lqr`); for the rotorcraft (``configs/agents/lqr_rotorcraft.yaml``) eq. (6)'s blocks
+at the craft's trim, its modes, the gain and the closed loop (:mod:`laddermill_gym.control.craft_lqr`).
 ``--rollout T`` flies open loop and LQR for T seconds after the paper's wind-direction step on the nonlinear
 simulator and writes ``lqr_rollout.png`` and ``lqr_rollout.csv``.
 """
@@ -45,6 +46,10 @@ def report_single(design) -> str:
             np.array2string(lq.K, precision=4, suppress_small=True),
             f"closed-loop modes (discrete, ZOH at {lq.dt} s): max |z| = {np.max(np.abs(lq.closed_loop)):.5f}",
             mode_table(lq.closed_loop, lq.dt)]
+    full = design.full_closed_loop
+    if full is not None:  # a tether of several elements: the gain on the full lateral model, the nodes unobserved
+        rows.append(f"on the full lateral model ({full.size} states, the cable nodes' unobserved): max |z| = "
+                    f"{np.max(np.abs(full)):.5f}")
     return "\n".join(rows)
 
 
@@ -81,6 +86,37 @@ def report_mill(cfg) -> str:
     rows = [d.summary(), "  phase s/l0   open-loop growth [1/s]   frozen closed loop max |z|"]
     rows += [f"  {ph:9.3f}   {g:22.3f}   {z:26.5f}" for ph, g, z in
              zip(d.phases, d.open_loop_growth, d.frozen_radius, strict=True)]
+    return "\n".join(rows)
+
+
+def _is_craft_config(path) -> bool:
+    """Whether the LQR config at ``path`` (a file or a shipped name) is a rotorcraft's (``craft:``, eq. (6))."""
+    from laddermill_gym.model.configio import find_config, read_yaml
+
+    data = read_yaml(find_config("agents", path, "--config")).data
+    return isinstance(data, dict) and "craft" in data
+
+
+def report_craft(path) -> str:
+    """The craft's eq. (6) LQR (``control.craft_lqr``): the blocks M, D, K and (alpha, beta) of the config's craft at
+    its trim in the config's wind, eq. (6)'s modes, the gain and the discrete closed loop."""
+    from laddermill_gym.control.craft_lqr import design_craft_lqr
+
+    d = design_craft_lqr(path)
+    m, lq, cfg = d.model, d.lqr, d.config
+    tethers = d.sim.config.tethers
+
+    def block(a):  # rows as lists, 4 decimals
+        return str((np.round(np.asarray(a, dtype=float), 4) + 0.0).tolist())
+
+    rows = [f"craft {cfg.craft} at v0 = {cfg.wind_speed:g} m/s, collective {np.degrees(d.u_trim[0]):.2f} deg, "
+            f"{tethers.elements} elements per tether: eq. (6) (rows: force [N], moment [N m]; columns y, phi)",
+            f"   M = {block(m.M)}", f"   D = {block(m.D)}", f"   K = {block(m.K)}",
+            f"   (alpha, beta) = {block(m.b)} per rad",
+            "eq. (6)'s modes (continuous):", mode_table(lq.open_loop),
+            f"gain K (rad per unit state, columns (y, phi, vy, p)): {block(lq.K[0])}",
+            f"closed-loop modes (discrete, ZOH at {lq.dt} s): max |z| = {np.max(np.abs(lq.closed_loop)):.5f}",
+            mode_table(lq.closed_loop, lq.dt)]
     return "\n".join(rows)
 
 
@@ -122,6 +158,12 @@ def main(argv: list[str] | None = None) -> int:
     args = p.parse_args(argv)
     check_number("--rollout", args.rollout, low=0, high=86400, unit="s")
     check_number("--step", args.step, low=-3.15, high=3.15, unit="rad")
+    if _is_craft_config(args.config):
+        if args.rollout or args.full_check:
+            p.error("a rotorcraft's LQR: --rollout and --full-check are the wings'; fly it with laddermill evaluate "
+                    "--env laddermill_gym/Rotorcraft-v0 --controllers open_loop lqr")
+        print(report_craft(args.config))
+        return 0
     cfg = load_lqr_config(args.config)
     sc = load_scene(cfg.scene, elements_per_piece=cfg.elements_per_piece)
     if sc.assembly.station is not None:

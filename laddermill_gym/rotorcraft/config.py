@@ -105,6 +105,34 @@ def _limits(s, key):
     return np.radians(v)
 
 
+def _differential_limits(s) -> np.ndarray:
+    """The differential collective's limits [rad]: ordered, and holding 0 (the trim flies with none)."""
+    lim, deg = _limits(s, "differential_limits_deg"), s.vector("differential_limits_deg", 2)
+    if not deg[0] <= 0.0 <= deg[1]:
+        raise s.error("differential_limits_deg", list(deg), "must hold 0 (lower <= 0 <= upper): "
+                      "the trim and the zero action fly with no differential collective")
+    return lim
+
+
+def _read_tethers(t, path: Path) -> TetherSpec:
+    """The ``tethers`` section (cable files relative to the craft file's folder ``path.parent``), checked."""
+    tethers = TetherSpec(
+        cable=load_cable(config_path("cables", t.text("cable"), path.parent)), length=t.number("length", positive=True),
+        elevation=math.radians(t.number("elevation_deg", positive=True)),
+        design_pitch=math.radians(t.number("design_pitch_deg")),
+        attach_rear=t.vector("attach_rear", 3), attach_front=t.vector("attach_front", 3),
+        elements=t.number("elements", positive=True, integer=True))
+    t.done()
+    if not tethers.elevation < math.pi / 2:
+        raise t.error("elevation_deg", math.degrees(tethers.elevation), "must be below 90")
+    if not abs(tethers.design_pitch) < math.pi / 2:
+        raise t.error("design_pitch_deg", math.degrees(tethers.design_pitch), "must lie in (-90, 90) deg: the craft's "
+                      "pitch at its design pose, where the tethers are parallel (past 90 deg the rotors face down)")
+    if tethers.attach_rear[1] <= 0:
+        raise t.error("attach_rear", list(tethers.attach_rear), "y must be > 0 (the right rear tether)")
+    return tethers
+
+
 def load_craft_config(name_or_path: str | Path = DEFAULT_CRAFT) -> CraftConfig:
     """Read and validate a craft YAML (see configs/rotorcraft/roberts_flying_model.yaml for the fields)."""
     path = craft_path(name_or_path)
@@ -117,18 +145,7 @@ def load_craft_config(name_or_path: str | Path = DEFAULT_CRAFT) -> CraftConfig:
     if principal[0] + principal[1] < principal[2] * (1.0 - 1e-12):  # a rigid body's: each <= the sum of the others
         raise s.error("inertia", list(J), f"principal moments {principal.round(6).tolist()}: the largest exceeds the "
                       "sum of the other two, which no rigid body has")
-    t = s.section("tethers")
-    tethers = TetherSpec(
-        cable=load_cable(config_path("cables", t.text("cable"), path.parent)), length=t.number("length", positive=True),
-        elevation=math.radians(t.number("elevation_deg", positive=True)),
-        design_pitch=math.radians(t.number("design_pitch_deg")),
-        attach_rear=t.vector("attach_rear", 3), attach_front=t.vector("attach_front", 3),
-        elements=t.number("elements", positive=True, integer=True))
-    t.done()
-    if not tethers.elevation < math.pi / 2:
-        raise t.error("elevation_deg", math.degrees(tethers.elevation), "must be below 90")
-    if tethers.attach_rear[1] <= 0:
-        raise t.error("attach_rear", list(tethers.attach_rear), "y must be > 0 (the right rear tether)")
+    tethers = _read_tethers(s.section("tethers"), path)
     fid = s.section("fidelity")
     sag, cable_aero = fid.flag("sag"), fid.flag("cable_aero")
     fid.done()
@@ -158,7 +175,7 @@ def load_craft_config(name_or_path: str | Path = DEFAULT_CRAFT) -> CraftConfig:
         fin_area=s.number("fin_area", nonneg=True), fin_lift_slope=s.number("fin_lift_slope", nonneg=True),
         fin_x=s.number("fin_x"), fin_z=s.number("fin_z"), drag_area=s.number("drag_area", nonneg=True),
         electrical_efficiency=eta, collective_limits=_limits(s, "collective_limits_deg"),
-        differential_limits=_limits(s, "differential_limits_deg"), tethers=tethers,
+        differential_limits=_differential_limits(s), tethers=tethers,
         wind=read_wind(s.section("wind")), sag=sag, cable_aero=cable_aero, initial_collective=collective,
         settings=settings)
     s.done()

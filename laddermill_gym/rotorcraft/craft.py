@@ -2,7 +2,7 @@
 
 The craft is one rigid body (the core's 13-entry body state: position, quaternion, body velocity, body
 rates) held by three tethers made of the core's truss elements (sag correction, Voigt damping, cable
-aerodynamics and sub-element nodes as for the laddermill). Its loads come from ``kernels/craft.py``: two
+aerodynamics and sub-element nodes as for the laddermill). Its loads come from ``rotorcraft/craft_kernels.py``: two
 contra-rotating Gessow & Myers rotors side by side, fins and frame drag. The generators hold the rotor
 speed. Controls: collective pitch theta0 and differential collective dtheta [rad] (right rotor
 theta0 + dtheta, left theta0 - dtheta). Model and choices: ``laddermill_gym/docs/rotorcraft.md``.
@@ -117,7 +117,7 @@ def build_craft_assembly(cfg: CraftConfig) -> tuple[Assembly, CraftLayout]:
 
 
 def craft_parameters(cfg: CraftConfig) -> np.ndarray:
-    """The packed craft parameters ``cp`` of kernels/craft.py, shape (N_CP,)."""
+    """The packed craft parameters ``cp`` of rotorcraft/craft_kernels.py, shape (N_CP,)."""
     cp = np.zeros(_kc.N_CP)
     cp[_kc.C_RADIUS], cp[_kc.C_OMEGA] = cfg.rotor_radius, cfg.rotor_speed
     cp[_kc.C_HUB_X], cp[_kc.C_HUB_Y], cp[_kc.C_HUB_Z] = cfg.hub_x, 0.5 * cfg.hub_spacing, -cfg.hub_height
@@ -330,12 +330,12 @@ class Craft:
                            f"{self.config.wind.v0:.4g} m/s: no equilibrium found (|residual| = "
                            f"{residual:.3g} m/s^2); the rotors may not carry the craft")
 
-    def operating_collective(self, x_guess: np.ndarray | None = None, step: float = math.radians(0.5)
-                             ) -> tuple[float, np.ndarray]:
-        """Collective [rad] of the blade-limited operating schedule and its trim state: the config's collective,
-        or, where that drives a retreating blade tip past the blade-incidence limit (Roberts: 13 deg), the
-        collective that puts the worse tip exactly at the limit (stepped down by ``step``, then Brent's method).
-        Raises RuntimeError if the craft cannot be trimmed within the collective limits."""
+    def operating_collective(self, x_guess: np.ndarray | None = None, step: float = math.radians(0.5),
+                             start: float | None = None) -> tuple[float, np.ndarray]:
+        """Collective [rad] of the blade-limited operating schedule and its trim state: ``start`` (None: the config's
+        collective), or, where that drives a retreating blade tip past the blade-incidence limit (Roberts: 13 deg),
+        the collective that puts the worse tip exactly at the limit (stepped down from ``start`` by ``step``, then
+        Brent's method). Raises RuntimeError if the craft cannot be trimmed within the collective limits."""
         from scipy.optimize import brentq
         lim = self.config.blade_incidence_limit
         cache: dict[float, np.ndarray] = {}
@@ -348,7 +348,7 @@ class Craft:
             s = CraftSimulator(self.config, self.assembly, self.layout, x, np.array([th, 0.0]))
             return float(np.max(s.rotor_outputs()["tip_incidence_rad"])) - lim
 
-        th = self.config.initial_collective
+        th = self.config.initial_collective if start is None else float(start)
         if excess(th) <= 0.0:
             return th, cache[th]
         lo = th

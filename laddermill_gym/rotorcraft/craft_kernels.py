@@ -9,7 +9,7 @@ module. Model and sources: ``laddermill_gym/docs/rotorcraft.md``; rotor formulas
 workspace's ``vout`` and ``vscratch`` (one per batched copy):
 
 - ``cp[N_CP]``: craft parameters, indices C_* below (SI units, body axes x forward, y right, z down).
-- ``rp[rotor.N_PARAMS]``: blade parameters (sigma, a, delta, B, gamma) as in ``kernels/rotor.py``.
+- ``rp[rotor.N_PARAMS]``: blade parameters (sigma, a, delta, B, gamma) as in ``rotorcraft/rotor_kernels.py``.
 - ``cout[N_COUT]``: written on every call: body-frame force [N] (slots V_FORCE..+2) and moment [N m]
   (V_MOMENT..+2) on the craft, then per rotor r (right r = 0, left r = 1) the block at V_ROTOR + N_RO r: R_*
   indices.

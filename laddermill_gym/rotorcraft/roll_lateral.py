@@ -70,7 +70,7 @@ def _thrust_partials(rp, mu, lam, theta, rho, radius, omega):
     """Thrust T [N] derivatives: d/d(normal air speed) [N s/m], d/d(in-plane air speed) [N s/m], d/dtheta0 [N].
 
     Through the inflow equation f(lam) = lam - lam_inf + C_T / (2 r) = 0, C_T = c0(mu, theta0) + c1 lam,
-    r = sqrt(mu^2 + lam^2) (kernels/rotor.py solve_inflow)."""
+    r = sqrt(mu^2 + lam^2) (rotorcraft/rotor_kernels.py solve_inflow)."""
     sigma, a, B = rp[0], rp[1], rp[3]
     c1 = 0.25 * sigma * a * B * B
     ct = 0.5 * sigma * a * (theta * (B ** 3 / 3.0 + 0.5 * B * mu * mu) + 0.5 * lam * B * B)

@@ -1,4 +1,4 @@
-"""Rotor aerodynamics of Roberts' tethered twin-rotor craft: the Python layer over ``kernels/rotor.py``.
+"""Rotor aerodynamics of Roberts' tethered twin-rotor craft: the Python layer over ``rotorcraft/rotor_kernels.py``.
 
 Gessow & Myers' closed forms for an untwisted, centrally hinged rotor with uniform (Glauert) inflow, as
 Roberts uses them for his power-coefficient chart (his Fig. 3). All angles are in radians and all

@@ -25,10 +25,10 @@ from laddermill_gym.rotorcraft.rotor_params import (
 # ------------------------------------------------------------------------------------------- results
 @dataclass(frozen=True)
 class InflowSolution:
-    """Glauert inflow consistent with C_T (kernels.rotor.solve_inflow).
+    """Glauert inflow consistent with C_T (rotorcraft.rotor_kernels.solve_inflow).
 
     Attributes: lam (inflow ratio, > 0 up through the disk) [-], nu (induced-velocity ratio) [-], ct [-],
-    iterations (residual evaluations), status (kernels.rotor.STATUS_*), converged (status == STATUS_OK).
+    iterations (residual evaluations), status (rotorcraft.rotor_kernels.STATUS_*), converged (status == STATUS_OK).
     """
 
     lam: float
@@ -44,7 +44,7 @@ class InflowSolution:
 
 @dataclass(frozen=True)
 class RotorState:
-    """Rotor at (mu, alpha_c, theta0) with its consistent inflow (kernels.rotor.rotor_state).
+    """Rotor at (mu, alpha_c, theta0) with its consistent inflow (rotorcraft.rotor_kernels.rotor_state).
 
     Attributes
     ----------
@@ -162,7 +162,7 @@ def ideal_power_coefficient(alpha_c):
     """Ideal power coefficient [-] at incidence alpha_c [rad] (scalar or array; any shape).
 
     Actuator disk with Glauert inflow and no profile drag, best induced velocity: 16/27 at alpha_c = pi/2,
-    0 at alpha_c = 0 (kernels.rotor.ideal_power_coefficient).
+    0 at alpha_c = 0 (rotorcraft.rotor_kernels.ideal_power_coefficient).
     """
     arr = np.asarray(alpha_c, dtype=float)
     if not np.all(np.isfinite(arr)) or np.any(np.abs(arr) > 0.5 * math.pi + 1e-12):

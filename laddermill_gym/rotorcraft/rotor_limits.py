@@ -162,7 +162,13 @@ def min_autorotation_angle(params: RotorParams, mu: float,
     from scipy.optimize import minimize_scalar
     check_params(params)
     mu = check_mu(mu)
-    lo, hi = (check_theta(t) for t in theta_range)
+    if not (isinstance(theta_range, (tuple, list, np.ndarray)) and len(theta_range) == 2):
+        raise ValueError(f"argument 'theta_range' = {theta_range!r}: must be a pair (lowest, highest collective) [rad]")
+    lo, hi = (check_number("theta_range", t, -0.5 * math.pi, 0.5 * math.pi, lo_open=True, hi_open=True)
+              for t in theta_range)
+    if not lo < hi:
+        raise ValueError(f"argument 'theta_range' = {tuple(theta_range)!r}: its lower collective must be below its "
+                         "upper one [rad]")
 
     def angle(theta0):
         try:

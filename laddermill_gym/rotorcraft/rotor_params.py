@@ -21,7 +21,7 @@ DEFAULT_ROTOR_CONFIG = ROTOR_CONFIG_DIR / "roberts_rotor.yaml"
 #: Blade-incidence limit of Roberts' Fig. 3 (section 4: "a blade incidence limit of 13 deg") [rad].
 BLADE_INCIDENCE_LIMIT = math.radians(13.0)
 
-#: Tolerance and iteration cap of the inflow solver (see kernels.rotor.solve_inflow).
+#: Tolerance and iteration cap of the inflow solver (see rotorcraft.rotor_kernels.solve_inflow).
 INFLOW_TOL = 1e-13
 INFLOW_MAX_ITER = 300
 
@@ -89,7 +89,7 @@ class RotorParams:
             object.__setattr__(self, f.name, float(value))
 
     def packed(self) -> np.ndarray:
-        """The kernels' packed parameter array, float64[N_PARAMS] (kernels.rotor.P_* order)."""
+        """The kernels' packed parameter array, float64[N_PARAMS] (rotorcraft.rotor_kernels.P_* order)."""
         p = np.empty(_k.N_PARAMS)
         p[_k.P_SIGMA], p[_k.P_A], p[_k.P_DELTA], p[_k.P_B], p[_k.P_GAMMA] = (
             self.sigma, self.a, self.delta, self.B, self.gamma)

@@ -113,7 +113,7 @@ OBS_TABLE
     * ``physics_dt`` [s]: physics step (default: the config's, one ROS34PW2 step of 50 ms; with ``physics_step`` a
       W-method, the control period);
     * ``physics_step``: the integrator instead of the config's (``"ros1"``, ``"ros2"``, ``"ros2t"``, ``"ros34pw2"``, or
-      ``"rk4"`` with a ``physics_dt`` below its stability limit, about 5.9 ms; a step past it is replaced by a finer
+      ``"rk4"`` with a ``physics_dt`` below its stability limit, about 6.2 ms; a step past it is replaced by a finer
       one with an UnstableStepWarning; default None: the config's);
     * ``jacobian_every``: physics steps per iteration matrix of a W-method (default 1: every step);
     * ``episode_time`` [s]: episode length (default 120);

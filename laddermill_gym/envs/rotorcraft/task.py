@@ -105,10 +105,11 @@ class CraftTask(TaskCore):
     physics_step : str, optional
         The integrator (``"ros1"``, ``"ros2"``, ``"ros2t"``, ``"ros34pw2"``, ``"rk4"``; ``envs/physics_step.py``)
         instead of the config's (None, the default: ROS34PW2 at 50 ms for ``roberts_flying_model``). ``"rk4"`` needs
-        ``physics_dt``: the craft's RK4 is stable below about 5.9 ms (configs/rotorcraft/roberts_flying_model.yaml); a
-        ``physics_dt`` past ``ENV_STEP_MARGIN`` of its stable step estimated at the trim in the strongest wind of the
-        disturbances is replaced by the largest whole fraction of the control period below it, with an
-        UnstableStepWarning (``envs/physics_step.py``; the note in ``physics_step_note``), as in the wing envs.
+        ``physics_dt``: the craft's RK4 is stable below about 6.2 ms (``laddermill stable-step
+        roberts_flying_model``); a ``physics_dt`` past ``ENV_STEP_MARGIN`` of its stable step estimated at the trim in
+        the strongest wind of the disturbances is replaced by the largest whole fraction of the control period below
+        it, with an UnstableStepWarning (``envs/physics_step.py``; the note in ``physics_step_note``), as in the wing
+        envs.
     jacobian_every : int
         Physics steps per iteration matrix of the W step (default 1: every step, the registered bits; k > 1 keeps
         it k steps, ``kernels/rigid/rosenbrock.py`` ``with_jacobian_reuse``: same order, other last bits).
@@ -150,7 +151,8 @@ class CraftTask(TaskCore):
                 physics_dt = positive("physics_dt", physics_dt, "s")
             if physics_step == "rk4" and physics_dt is None:
                 raise ValueError("physics_step = 'rk4' needs physics_dt: the craft's RK4 is stable below about "
-                                 "5.9 ms, not at the config's 50 ms step (configs/rotorcraft/)")
+                                 "6.2 ms (laddermill stable-step roberts_flying_model), not at the config's 50 ms "
+                                 "step (configs/rotorcraft/)")
             self.craft, self.x_trim, self.u_trim = craft_trim(str(craft), wind_speed, collective, physics_dt)
             cfg = self.craft.config
             # physics_step: another integrator, one step per control period for a W-method (None: the config's)
@@ -182,8 +184,8 @@ class CraftTask(TaskCore):
         self.breaking_tension = tc.breaking_factor * cfg.tethers.cable.breaking_load
         # the trim's larger retreating-tip incidence [rad], checked against the rotor model's blade-incidence limit
         self.trim_tip_incidence = check_trim_incidence(self.craft, self.sim, self.x_trim, tc.blade_stall,
-                                                       f"{craft} at wind_speed = {wind_speed!r} m/s, collective = "
-                                                       f"{collective!r} rad")
+                                                       f"{craft} at wind_speed = {cfg.wind.v0!r} m/s, collective = "
+                                                       f"{float(self.u_trim[0])!r} rad")
         self.obs_low, self.obs_high = craft_observation_bounds(cfg, self.craft.layout.lengths, self.tension_trim)
         self.mid, self.half = control_ranges(cfg)
         self.trim_action = ((self.u_trim - self.mid) / self.half).astype(np.float32)
@@ -229,11 +231,15 @@ class CraftTask(TaskCore):
         self.tension_trim = aux[CA_TENSION: CA_TENSION + 3].copy()
         self.p_ref = float(aux[CA_POWER])
         cfg = self.craft.config
-        if not (self.p_ref > 0 and np.all(self.thrust_trim > 0) and np.all(self.tension_trim > 0)):
-            raise ValueError(f"craft {cfg.name} at wind_speed = {cfg.wind.v0!r} m/s: the trim gives no positive power "
-                             f"({self.p_ref:.4g} W), thrust {self.thrust_trim} N or tensions {self.tension_trim} N")
-        if self.reward_config.reference_power_W is not None:
+        if not (np.all(self.thrust_trim > 0) and np.all(self.tension_trim > 0)):  # the observation's ratios' references
+            raise ValueError(f"craft {cfg.name} at wind_speed = {cfg.wind.v0!r} m/s: the trim gives no positive thrust "
+                             f"{self.thrust_trim} N or tensions {self.tension_trim} N")
+        if self.reward_config.reference_power_W is not None:  # a fixed reference: the trim may take power (a hover)
             self.p_ref = float(self.reward_config.reference_power_W)
+        elif not self.p_ref > 0:  # the power reward's scale
+            raise ValueError(f"craft {cfg.name} at wind_speed = {cfg.wind.v0!r} m/s, collective = "
+                             f"{float(self.u_trim[0])!r} rad: the trim gives no positive power ({self.p_ref:.4g} W), "
+                             "which the reward takes as its reference; pass reward={'reference_power_W': P}")
         self.ref[REF_THRUST: REF_THRUST + 2] = self.thrust_trim
         self.ref[REF_TENSION: REF_TENSION + 3] = self.tension_trim
         self._kernel_pass(self._nsteps)
