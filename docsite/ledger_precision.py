@@ -224,11 +224,12 @@ WORK_PRECISION = Covered(
             "near 1e-2 at every step (the cable's axial vibration, damped rather than carried, as with the "
             'W-methods), against 1e-4 to 6e-4 for the explicit runs. - **Breakpoints matter on non-smooth forcing.** '
             'Chain, direction step, same steps: 6.0e-5 m against 0.11 m at 0.0222 s.',
-        # real-time factors and speed-ups of the run of 2026-11-24 (the table's caption): --long wp_podgaets
-        # printed 141.8x / 1424.0x / 10.04x for smooth on 2026-11-30 at a load of 1.3-2.0, a timing, not a figure
-        'The run of 2026-11-24: | scene (T) | forcing | explicit | implicit | |---|---|---|---| | podgaets_5km, 200 '
-        'nodes (10 s) | smooth | 168x (0.00294 s) | **1502x (0.05 s; 8.94)** | | | step | 170x (0.00294 s) | **1588x '
-        '(0.05 s; 9.36)** | | | gust | 172x (0.00294 s) | **1592x (0.05 s; 9.23)**',
+        # real-time factors and speed-ups of the run of 2026-12-07 (the table's caption; --long wp_podgaets, load about
+        # 2 beside other work): timings, not figures; the run of 2026-11-24's implicit speed-ups 8.94 / 9.36 / 9.23
+        'The run of 2026-12-07 (that of 2026-11-24 began at l0 / c, 0.00294 s, and gave the implicit 8.9-9.4x): '
+        '| scene (T) | forcing | explicit | implicit | |---|---|---|---| | podgaets_5km, '
+        '200 nodes (10 s) | smooth | 136x (0.00211 s) | **1710x (0.05 s; 12.60)** | | | step | 134x (0.00211 s) | '
+        '**1695x (0.05 s; 12.62)** | | | gust | 134x (0.00211 s) | **1667x (0.05 s; 12.43)**',
         # the page's blanket date (the first work-precision runs, ec22606) and machine
         'Figures below were measured on a shared 2-core machine (from 2026-11-24; four other engineers running at'
         ' the same time, load not recorded): compare ratios within one run, not absolute times.',
@@ -285,8 +286,8 @@ WORK_PRECISION = Covered(
             'their agreement (1e-11 to 2e-7 in the scaled state)',
         )),
         Printed('wp_podgaets', (
-            'stable below l0 / c = 2.95 ms',
-            'which agree to 3.3e-8',
+            'stable below 0.002111 s, its damped highest mode',
+            'agree to 3.3e-8',
         )),
         Printed('wp_rk4_scenes', (
             # the crafts' stable steps are printed a table apart (1.813 s, 2.319 s), more than a window
