@@ -47,10 +47,11 @@ def _package(tmp_path, callee_value):
     return pkg
 
 
-def _run(tmp_path, guarded):
+def _run(tmp_path, guarded, **env_vars):
     # no .pyc: Python's bytecode cache is keyed by the source's mtime in whole seconds and its size, so a callee
     # rewritten within the second of the first run (same size) would be read from the stale .pyc (CI saw it once)
-    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "NUMBA_CACHE_DIR": "", "PYTHONDONTWRITEBYTECODE": "1"}
+    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "NUMBA_CACHE_DIR": "", "PYTHONDONTWRITEBYTECODE": "1",
+           **env_vars}
     code = textwrap.dedent(RUN.format(root=str(tmp_path), guarded=guarded))
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, check=True)
     return float(out.stdout.strip().splitlines()[-1])
@@ -69,7 +70,7 @@ def test_a_changed_callee_is_recompiled_only_with_the_guard(tmp_path):
     assert _run(tmp_path, guarded=True) == 2.5
     assert _run(tmp_path, guarded=True) == 2.5  # the stamp now matches: entries kept and loaded
     stamps = list(pkg.glob("__pycache__/" + cache_guard.STAMP_NAME))
-    digest = cache_guard.sources_digest(cache_guard.kernel_sources(pkg), pkg)
+    digest = cache_guard.stamp_digest(cache_guard.kernel_sources(pkg), pkg)
     assert [s.read_text().strip() for s in stamps] == [digest]
     assert list(pkg.glob("__pycache__/*.nbi"))  # compiled entries kept beside the matching stamp
 
@@ -81,3 +82,16 @@ def test_unchanged_sources_keep_their_entries(tmp_path):
     assert entries
     assert cache_guard.guard(pkg) == []
     assert sorted(p.name for p in pkg.glob("__pycache__/*.nb*")) == entries
+
+
+def test_entries_compiled_at_another_optimisation_level_are_removed(tmp_path):
+    """numba's index keys an entry on its source, signature and CPU, not on ``NUMBA_OPT``: a process at another
+    level would load the other level's machine code (another bits' source, a review of 2026-12-07)."""
+    pkg = _package(tmp_path, 1.0)
+    assert _run(tmp_path, guarded=True) == 1.5
+    before = {p.name: p.stat().st_mtime_ns for p in pkg.glob("__pycache__/*.nbc")}
+    assert _run(tmp_path, guarded=True, NUMBA_OPT="0") == 1.5
+    after = {p.name: p.stat().st_mtime_ns for p in pkg.glob("__pycache__/*.nbc")}
+    assert before and after and all(after.get(k) != v for k, v in before.items())  # removed, compiled again at 0
+    stamp = (pkg / "__pycache__" / cache_guard.STAMP_NAME).read_text().strip()
+    assert stamp != cache_guard.stamp_digest(cache_guard.kernel_sources(pkg), pkg)  # this process's level: 3

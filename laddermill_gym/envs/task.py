@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 import warnings
-from functools import lru_cache
 
 import numpy as np
 
@@ -62,6 +61,7 @@ from laddermill_gym.kernels.task_rewards import (
     wing_readout,
 )
 from laddermill_gym.ladder.scene import Scene, load_scene, options_key, options_kwargs
+from laddermill_gym.model.input_cache import input_cache
 from laddermill_gym.model.packing import make_workspace
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.breakpoints import W_METHODS
@@ -79,7 +79,7 @@ WARMUP_TARGET = "laddermill_gym.envs.task_warmup:compile_wing"
 WARMUP_TAIL_TARGET = "laddermill_gym.envs.task_warmup:compile_wing_tail"
 
 
-@lru_cache(maxsize=16)
+@input_cache(maxsize=16)
 def scene_trim(scene: str, options: tuple) -> tuple[Scene, np.ndarray, np.ndarray]:
     """(scene, x_trim, u_trim) of a scene name or path with ``load_scene`` overrides ``options`` (a sorted
     tuple of (key, value) pairs); cached, because every copy of a sync vector env would otherwise trim

@@ -11,7 +11,8 @@ The brief asks for bit-identical results whatever the state of numba's cache, so
 1. :func:`kernel_sources` finds the package's files a compiled kernel can depend on: those that define cached
    kernels (``cache=True``) and, transitively, the package modules they import (callees, slot constants and
    parameters frozen into the machine code);
-2. :func:`sources_digest` hashes their paths and contents (SHA-256);
+2. :func:`sources_digest` hashes their paths and contents (SHA-256), with numba's settings that its own index
+   does not key on (:func:`codegen_settings`: the optimisation level);
 3. in the folder numba caches each of those files in (under ``NUMBA_CACHE_DIR``, else beside the source, else
    numba's user-wide folder: numba's order), a stamp file holds the digest the entries there were compiled under;
    where it differs, the folder's ``*.nbi`` / ``*.nbc`` files are removed first and the stamp is written after
@@ -29,7 +30,8 @@ import re
 import tempfile
 from pathlib import Path
 
-__all__ = ["STAMP_NAME", "SWITCH", "guard", "kernel_sources", "sources_digest", "cache_folders"]
+__all__ = ["STAMP_NAME", "SWITCH", "guard", "kernel_sources", "sources_digest", "stamp_digest",
+           "codegen_settings", "cache_folders"]
 
 #: the stamp file written into each cache folder
 STAMP_NAME = "laddermill_gym_sources.sha256"
@@ -92,6 +94,20 @@ def sources_digest(paths: list[Path], root: Path = _PACKAGE) -> str:
     return digest.hexdigest()
 
 
+def stamp_digest(paths: list[Path], root: Path = _PACKAGE) -> str:
+    """The stamp a cache folder's entries were compiled under: SHA-256 (hex) of :func:`sources_digest` and
+    :func:`codegen_settings`."""
+    return hashlib.sha256(f"{sources_digest(paths, root)} {codegen_settings()}".encode()).hexdigest()
+
+
+def codegen_settings() -> str:
+    """numba's code-generation settings that numba's own cache index does not key on (its optimisation level,
+    ``NUMBA_OPT``; the target CPU it keys itself): entries compiled under others are removed like stale sources."""
+    from numba.core import config
+
+    return f"opt {int(config.OPT)}"
+
+
 def _writable(folder: Path) -> bool:
     """Whether ``folder`` exists or can be made, and a file can be written in it (numba's own test)."""
     try:
@@ -151,7 +167,7 @@ def guard(root: Path = _PACKAGE) -> list[Path]:
     if os.environ.get(SWITCH, "").strip().lower() == "off":
         return []
     sources = kernel_sources(root)
-    digest = sources_digest(sources, root)
+    digest = stamp_digest(sources, root)
     removed = []
     for folder in cache_folders(sources):
         try:

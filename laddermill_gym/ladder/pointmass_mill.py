@@ -13,11 +13,11 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
-from functools import lru_cache
 
 import numpy as np
 
 from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL, PU_SIZE
+from laddermill_gym.model.input_cache import input_cache
 from laddermill_gym.sim.pointmass import PointMassError
 
 
@@ -159,7 +159,7 @@ def rigid_periodic(file: str, n_wings: int, overrides: str = "null"):
     return _rigid_periodic(str(file), int(n_wings), overrides)
 
 
-@lru_cache(maxsize=4)
+@input_cache(maxsize=4)
 def _rigid_periodic(file: str, n_wings: int, overrides: str):
     from laddermill_gym.ladder.fidelity import load_rigid_of
     from laddermill_gym.ladder.periodic import periodic_start

@@ -8,6 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from laddermill_gym.model.configio import ConfigError
+from laddermill_gym.model.input_cache import note_read
 from laddermill_gym.model.params import AERO_COLUMNS, AeroTable
 
 __all__ = ["load_aero_table"]
@@ -16,6 +17,7 @@ __all__ = ["load_aero_table"]
 def load_aero_table(path: Path) -> AeroTable:
     """Read a wing's coefficient table (CSV: alpha_deg and the AERO_COLUMNS, '#' comments); ConfigError naming the
     file, line and column of a bad entry."""
+    note_read(path)  # in-process caches check these bytes on a hit (model/input_cache.py)
     try:
         with open(path, encoding="utf-8") as fh:
             lines = [(i + 1, ln) for i, ln in enumerate(fh) if ln.strip() and not ln.lstrip().startswith("#")]

@@ -10,6 +10,8 @@ from typing import Any
 import numpy as np
 import yaml
 
+from laddermill_gym.model.input_cache import note_read
+
 
 class ConfigError(ValueError):
     """An invalid configuration file: the message names the file, the field and the value."""
@@ -237,5 +239,6 @@ def read_yaml(path: Path | str) -> Section:
     path = Path(path)
     if not path.is_file():
         raise ConfigError(f"{path}: no such file")
+    note_read(path)  # an in-process cache keyed on a file name checks these bytes on a hit (model/input_cache.py)
     data = load_yaml_text(path.read_text(encoding="utf-8"), str(path))
     return Section(data if data is not None else {}, path)

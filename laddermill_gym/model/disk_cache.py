@@ -88,13 +88,15 @@ def feed(h, obj, skip: tuple = ()) -> None:
 
 @lru_cache(maxsize=1)
 def platform_text() -> str:
-    """numba, numpy, scipy and Python versions, the host CPU numba compiles for (name and features), numpy's SIMD
-    level and the variables that choose numpy's and OpenBLAS's kernels (:data:`KERNEL_VARIABLES`): everything on
-    one machine that moves a start's last bits."""
+    """numba, numpy, scipy and Python versions, the host CPU, the target numba compiles for (``NUMBA_CPU_NAME`` and
+    ``NUMBA_CPU_FEATURES``, the host's when unset: ``generic`` has no fused multiply-add) and its optimisation level
+    (``NUMBA_OPT``), numpy's SIMD level and the variables that choose numpy's and OpenBLAS's kernels
+    (:data:`KERNEL_VARIABLES`): everything on one machine that moves a start's last bits."""
     from importlib.metadata import PackageNotFoundError, version
 
     import llvmlite.binding as llvm
     import numba
+    import numba.core.config as cfg
 
     try:  # the installed distribution's (the source's __version__ is in the hashed __init__.py too)
         ours = version("laddermill_gym")
@@ -103,6 +105,7 @@ def platform_text() -> str:
     kernels = ", ".join(f"{k}={os.environ.get(k, '')}" for k in KERNEL_VARIABLES)
     return (f"laddermill_gym {ours}; numba {numba.__version__}; numpy {np.__version__}; scipy {version('scipy')}; "
             f"python {sys.version_info[:3]}; cpu {llvm.get_host_cpu_name()} {llvm.get_host_cpu_features().flatten()}; "
+            f"numba target {cfg.CPU_NAME or 'host'} {cfg.CPU_FEATURES or 'host'}, opt {cfg.OPT}; "
             f"numpy simd {numpy_simd_level()}; {kernels}")
 
 

@@ -7,6 +7,8 @@ used as given (no clipping to ``control_limits``).
 
 from __future__ import annotations
 
+from collections import OrderedDict
+
 import numpy as np
 from scipy.interpolate import CubicSpline
 
@@ -16,16 +18,20 @@ from laddermill_gym.reference.wind import air_density, wind_rate, wind_velocity
 #: Airspeed below which a wing gets no aerodynamic load [m/s].
 AIRSPEED_EPS = 1e-9
 
-_SPLINES: dict[int, tuple[AeroTable, CubicSpline]] = {}
+_SPLINES: OrderedDict[int, tuple[AeroTable, CubicSpline]] = OrderedDict()
+_KEPT = 16  # the tables used last (each entry keeps its table, so an id is not reused while it is here)
 
 
 def _spline(table: AeroTable) -> CubicSpline:
-    """Periodic cubic spline of all table columns (cached per table object)."""
+    """Periodic cubic spline of all table columns (cached per table object, the 16 used last)."""
     entry = _SPLINES.get(id(table))
     if entry is None or entry[0] is not table:
         spline = CubicSpline(table.alpha, table.values, bc_type="periodic", axis=0)
         entry = (table, spline)
         _SPLINES[id(table)] = entry
+    _SPLINES.move_to_end(id(table))
+    while len(_SPLINES) > _KEPT:
+        _SPLINES.popitem(last=False)
     return entry[1]
 
 

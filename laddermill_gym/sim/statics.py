@@ -4,6 +4,7 @@ accelerations, and a quasi-static shooting layout that gives chains a good first
 from __future__ import annotations
 
 import math
+from collections import OrderedDict
 
 import numpy as np
 
@@ -252,11 +253,14 @@ def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float =
     return unpack_unknowns(sim, z[:-1]), u
 
 
-_SPLINES: dict = {}
+#: the splines of the tables used last, per table object (each entry keeps its table, so an id is not reused while
+#: it is here); at most SPLINES_KEPT, so that a sweep loading many scenes does not hold every table it met
+_SPLINES: OrderedDict = OrderedDict()
+SPLINES_KEPT = 16
 
 
 def table_spline(table):
-    """Periodic cubic spline of an aerodynamic table (cached per table object)."""
+    """Periodic cubic spline of an aerodynamic table (cached per table object, the SPLINES_KEPT used last)."""
     from scipy.interpolate import CubicSpline
 
     key = id(table)
@@ -264,6 +268,9 @@ def table_spline(table):
     if hit is None or hit[0] is not table:
         hit = (table, CubicSpline(table.alpha, table.values, bc_type="periodic", axis=0))
         _SPLINES[key] = hit
+    _SPLINES.move_to_end(key)
+    while len(_SPLINES) > SPLINES_KEPT:
+        _SPLINES.popitem(last=False)
     return hit[1]
 
 

@@ -27,7 +27,6 @@ import dataclasses
 import math
 import warnings
 from dataclasses import dataclass
-from functools import lru_cache
 
 import numpy as np
 
@@ -36,6 +35,7 @@ from laddermill_gym.kernels.contract import SX_ENERGY, SX_MOVED, SX_SIZE, SX_SPE
 from laddermill_gym.ladder.periodic import run_to_periodic
 from laddermill_gym.ladder.scene import Scene, load_scene, options_kwargs
 from laddermill_gym.model.configio import ConfigError
+from laddermill_gym.model.input_cache import input_cache
 from laddermill_gym.model.states import planar_to_3d
 from laddermill_gym.model.station import electrical_power
 
@@ -108,7 +108,7 @@ class OperatingPoint:
         return int(self.orbit_positions.shape[1])
 
 
-@lru_cache(maxsize=16)
+@input_cache(maxsize=16)
 def mill_scene(scene: str, options: tuple, dimension: int = 3) -> Scene:
     """The scene ``scene`` with ``load_scene`` overrides ``options`` (sorted (key, value) pairs) in ``dimension``
     (cached); ValueError unless it has a moving cable."""
@@ -257,7 +257,7 @@ def operating_point_pending(scene: str, options: tuple, settle: SettleConfig) ->
     return path is None or not path.exists()
 
 
-@lru_cache(maxsize=8)
+@input_cache(maxsize=8)
 def operating_point(scene: str, options: tuple, settle: SettleConfig) -> OperatingPoint:
     """:func:`compute_operating_point`, memoised per process on (scene, options, settle) and on disk across
     processes (:func:`cached_operating_point`); the warning of a non-converged point is given once per process."""

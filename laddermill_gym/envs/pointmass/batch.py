@@ -11,8 +11,6 @@ per control period.
 
 from __future__ import annotations
 
-import functools
-
 import numba
 import numpy as np
 
@@ -27,6 +25,7 @@ from laddermill_gym.kernels.pointmass.explicit import (
 from laddermill_gym.kernels.pointmass.implicit import implicit_advance, implicit_advance_serial
 from laddermill_gym.ladder.pointmass_scene import PointMassScene
 from laddermill_gym.ladder.scene import load_scene
+from laddermill_gym.model.input_cache import input_cache
 from laddermill_gym.model.memory import over_limit, pointmass_bytes
 from laddermill_gym.model.pointmass import make_work, pack
 from laddermill_gym.sim.pointmass import (
@@ -84,7 +83,7 @@ def thaw(value):
     return value
 
 
-@functools.lru_cache(maxsize=8)
+@input_cache(maxsize=8)
 def pointmass_start(scene: str, options,
                     settle_time: float) -> tuple[PointMassScene, np.ndarray, np.ndarray, np.ndarray]:
     """(scene at the point-mass fidelity, start state (6 n,), controls (3 n_k,) [rad], element tensions (n_e,) [N]

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import copy
 import dataclasses
-import functools
 
 import numba
 import numpy as np
@@ -23,6 +22,7 @@ from laddermill_gym.kernels.contract import N3_POS, N3_SIZE, N3_VEL, PU_SIZE, SX
 from laddermill_gym.kernels.pointmass.explicit import CHUNK
 from laddermill_gym.ladder.pointmass_scene import PointMassScene
 from laddermill_gym.ladder.scene import load_scene
+from laddermill_gym.model.input_cache import input_cache
 from laddermill_gym.sim.pointmass import PointMassError
 from laddermill_gym.sim.pointmass_mill import PointMassMillSimulator
 
@@ -44,7 +44,7 @@ class MillStart:
     period_s: float
 
 
-@functools.lru_cache(maxsize=4)
+@input_cache(maxsize=4)
 def mill_task_start(scene: str, options) -> tuple[PointMassScene, MillStart]:
     """(scene at the point-mass fidelity, :class:`MillStart`) of a moving-cable ``scene`` with ``load_scene``
     options ``options`` (a dict made hashable by ``batch.freeze``): the rigid mill's periodic operating point mapped

@@ -10,7 +10,6 @@ PointMassBatch`: one kernel call per copy and control period, not one call for a
 
 from __future__ import annotations
 
-import functools
 import math
 import numbers
 import warnings
@@ -45,6 +44,7 @@ from laddermill_gym.kernels.contract import (
 )
 from laddermill_gym.ladder.scene import load_scene
 from laddermill_gym.ladder.scene_files import open_scene
+from laddermill_gym.model.input_cache import input_cache
 from laddermill_gym.sim.pointmass import STATUS_TEXT, explicit_stable_dt
 from laddermill_gym.sim.stable_step import UnstableStepWarning
 
@@ -56,7 +56,7 @@ __all__ = ["PointMassTask", "OBS_PER_KITE"]
 OBS_PER_KITE = PKO_SIZE
 
 
-@functools.lru_cache(maxsize=8)
+@input_cache(maxsize=8)
 def _scene(scene: str, options):
     """``scene`` loaded at the point-mass fidelity with the ``load_scene`` options ``options``
     (:func:`~laddermill_gym.envs.pointmass.batch.freeze`)."""

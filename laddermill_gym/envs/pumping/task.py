@@ -8,8 +8,6 @@ A single environment is the task with B = 1, so single and vector environments r
 
 from __future__ import annotations
 
-import functools
-
 import numpy as np
 
 from laddermill_gym.envs.actions import clip_actions
@@ -34,12 +32,13 @@ from laddermill_gym.kernels.rigid.observe import (
 )
 from laddermill_gym.kernels.wind import modulation, wind_point
 from laddermill_gym.ladder.scene import options_key, options_kwargs
+from laddermill_gym.model.input_cache import input_cache
 from laddermill_gym.model.states import rotations_from_quaternions
 
 __all__ = ["PumpingTask", "pumping_start"]
 
 
-@functools.lru_cache(maxsize=8)
+@input_cache(maxsize=8)
 def pumping_start(config: str, options: tuple) -> tuple[PumpingScene, np.ndarray, np.ndarray]:
     """(pumping scene, initial state, initial controls) of a pumping config with ``load_scene`` overrides
     ``options`` (``ladder.scene.options_key``: sorted pairs, nested mappings as JSON), memoised per process (the

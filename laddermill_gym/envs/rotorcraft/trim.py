@@ -4,42 +4,31 @@ trim-holding action and open-loop controller."""
 from __future__ import annotations
 
 import dataclasses
-import hashlib
 import math
 import numbers
 import warnings
-from functools import lru_cache
 
 import numpy as np
 
 from laddermill_gym.envs.start_cache import CRAFT_SOURCES, cached_start, start_on_disk
 from laddermill_gym.kernels.contract import CU_COLLECTIVE
-from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT, CraftConfig, craft_path, load_craft_config
+from laddermill_gym.model.input_cache import input_cache
+from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT, CraftConfig, load_craft_config
 from laddermill_gym.rotorcraft.craft import Craft, load_craft
 
-__all__ = ["craft_file_key", "craft_config", "control_ranges", "trim_controls", "untrimmed_craft", "craft_trim",
+__all__ = ["craft_config", "control_ranges", "trim_controls", "untrimmed_craft", "craft_trim",
            "trim_on_disk", "trim_action"]
 
 
-def craft_file_key(craft: str) -> tuple:
-    """The in-process caches' key of a craft name or YAML path: the file's resolved path and the SHA-256 of its
-    contents, so that a file edited during a session is read again (the name alone where there is no such file:
-    the loader then names it)."""
-    try:
-        path = craft_path(craft).resolve()
-        return str(path), hashlib.sha256(path.read_bytes()).hexdigest()
-    except OSError:
-        return str(craft), None
-
-
 def craft_config(craft: str) -> CraftConfig:
-    """The craft config of a name in configs/rotorcraft/ or a YAML path (cached on the file's path and contents,
-    :func:`craft_file_key`); ValueError names ``craft``."""
-    return _craft_config(str(craft), craft_file_key(str(craft)))
+    """The craft config of a name in configs/rotorcraft/ or a YAML path, cached in this process while the files it
+    read (the craft's, its rotor's and its tethers' cable's YAML) hold the same bytes (``model/input_cache.py``);
+    ValueError names ``craft``."""
+    return _craft_config(str(craft))
 
 
-@lru_cache(maxsize=8)
-def _craft_config(craft: str, key: tuple) -> CraftConfig:
+@input_cache(maxsize=8)
+def _craft_config(craft: str) -> CraftConfig:
     try:
         return load_craft_config(craft)
     except ValueError as err:
@@ -82,14 +71,14 @@ def craft_trim(craft: str = DEFAULT_CRAFT, wind_speed: float | None = None, coll
     """(craft, x_trim (n_state,), u_trim (2,) [rad]) for a craft name or path, wind speed v0 [m/s] (None: the
     config's), trim collective [rad] (None: the config's) and physics step [s] (None: the config's).
 
-    Cached on the arguments and the craft file's path and contents (:func:`craft_file_key`: a trim takes about
-    0.5 s) and on disk for the next process (``envs/start_cache.py``); the returned arrays are read-only.
+    Cached on the arguments while the files the craft read hold the same bytes (``model/input_cache.py``: a trim
+    takes about 0.5 s) and on disk for the next process (``envs/start_cache.py``); the returned arrays are read-only.
     ``craft_trim.cache_clear()`` empties the in-process cache."""
-    return _craft_trim(str(craft), craft_file_key(str(craft)), wind_speed, collective, physics_dt)
+    return _craft_trim(str(craft), wind_speed, collective, physics_dt)
 
 
-@lru_cache(maxsize=16)
-def _craft_trim(craft: str, key: tuple, wind_speed, collective, physics_dt) -> tuple[Craft, np.ndarray, np.ndarray]:
+@input_cache(maxsize=16)
+def _craft_trim(craft: str, wind_speed, collective, physics_dt) -> tuple[Craft, np.ndarray, np.ndarray]:
     c, u = untrimmed_craft(craft, wind_speed, collective, physics_dt)
     try:
         x, _ = cached_start("craft_start", c.config.name, (c, u), CRAFT_SOURCES, lambda: (c.trim(u[0]), u))
