@@ -86,12 +86,15 @@ def test_unchanged_sources_keep_their_entries(tmp_path):
 
 def test_entries_compiled_at_another_optimisation_level_are_removed(tmp_path):
     """numba's index keys an entry on its source, signature and CPU, not on ``NUMBA_OPT``: a process at another
-    level would load the other level's machine code (another bits' source, a review of 2026-12-07)."""
+    level would load the other level's machine code (another bits' source, a review of 2026-12-07). Both runs cache
+    under their own ``NUMBA_CACHE_DIR``: the package's own guard runs at import too, and at another level it would
+    empty the shared cache of every other test."""
     pkg = _package(tmp_path, 1.0)
-    assert _run(tmp_path, guarded=True) == 1.5
-    before = {p.name: p.stat().st_mtime_ns for p in pkg.glob("__pycache__/*.nbc")}
-    assert _run(tmp_path, guarded=True, NUMBA_OPT="0") == 1.5
-    after = {p.name: p.stat().st_mtime_ns for p in pkg.glob("__pycache__/*.nbc")}
-    assert before and after and all(after.get(k) != v for k, v in before.items())  # removed, compiled again at 0
-    stamp = (pkg / "__pycache__" / cache_guard.STAMP_NAME).read_text().strip()
-    assert stamp != cache_guard.stamp_digest(cache_guard.kernel_sources(pkg), pkg)  # this process's level: 3
+    cache = tmp_path / "numba"
+    assert _run(tmp_path, guarded=True, NUMBA_CACHE_DIR=str(cache)) == 1.5
+    entries = [p for p in cache.rglob("*.nbc") if "pkgx" in str(p.parent)]
+    before = {p: p.stat().st_mtime_ns for p in entries}
+    assert _run(tmp_path, guarded=True, NUMBA_CACHE_DIR=str(cache), NUMBA_OPT="0") == 1.5
+    assert before and all(not p.exists() or p.stat().st_mtime_ns != t for p, t in before.items())  # removed
+    stamp = entries[0].parent / cache_guard.STAMP_NAME
+    assert stamp.read_text().strip() != cache_guard.stamp_digest(cache_guard.kernel_sources(pkg), pkg)  # level 3 here

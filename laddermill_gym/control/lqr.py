@@ -146,8 +146,8 @@ def design_tethered_wing(config: LQRConfig | str | Path = DEFAULT_CONFIG, scene:
 
     A tether of more than one element adds its nodes' lateral states, which the controller does not observe: the gain
     is designed on the wing's own lateral block and checked on the full lateral model (``full_closed_loop``);
-    ValueError when it does not hold it (:func:`_full_lateral_check`). The configs' loader and
-    :func:`~laddermill_gym.control.factory.make_controller` refuse such a tether outright.
+    ValueError when it does not hold it (:func:`_full_lateral_check`; ``make_controller`` designs through here). The
+    configs' loader refuses ``elements_per_piece`` > 1 in a single-wing config.
     """
     cfg = config if isinstance(config, LQRConfig) else load_lqr_config(config)
     _check_fixed_scene_fields(cfg, single=True)
