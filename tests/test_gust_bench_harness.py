@@ -243,3 +243,26 @@ def test_an_unreachable_ray_cluster_is_one_line(monkeypatch, capsys, tmp_path, s
     assert code == 2
     assert _one_line(capsys.readouterr().err) == ("laddermill gust-bench: error: --ray '10.255.255.1:6379': Failed to "
                                                   "connect to Ray cluster at 10.255.255.1:6379")
+
+
+def test_a_folder_of_results_flown_on_other_configs_is_refused(tmp_path, monkeypatch, capsys):
+    """Rows flown on an edited scene file do not merge with those flown before the edit (the merge compared the
+    Python sources only; a review of 2026-12-07): gust_bench.json's config_digest covers the files an env argument
+    names, and the package's configs."""
+    for part in ("scenes", "wings", "cables"):
+        shutil.copytree(CONFIG_DIR / part, tmp_path / part)
+    scene = tmp_path / "scenes" / "tethered_wing.yaml"
+    suite = tmp_path / "mine.yaml"
+    suite.write_text(SUITE.replace("env_kwargs: {}", f"env_kwargs: {{scene: {scene}}}", 1))
+    out = tmp_path / "bench"
+    _fake_run(monkeypatch, {TW: [_row(TW, "open_loop", 0), _row(TW, "open_loop", 1)]})
+    args = ["gust-bench", "--suite", str(suite), "--env", TW, "--controllers", "open_loop", "--out", str(out)]
+    assert cli_main(args) == 0
+    assert cli_main(args) == 0  # the same files: the rerun merges
+    first = _strict(out / "gust_bench.json")["config_digest"]
+    scene.write_text(scene.read_text() + "# edited\n")
+    monkeypatch.setattr(gb, "build_suite_controllers", _no_episode)
+    capsys.readouterr()
+    assert cli_main(args) == 2
+    assert "holds results of config_digest" in capsys.readouterr().err
+    assert _strict(out / "gust_bench.json")["config_digest"] == first  # nothing was written

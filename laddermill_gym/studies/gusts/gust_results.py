@@ -23,8 +23,8 @@ import numpy as np
 from laddermill_gym.studies.commands import UsageError
 from laddermill_gym.studies.gusts.gust_suite import Suite
 
-__all__ = ["RESULT_FILES", "SUMMARY_METRICS", "run_provenance", "summarise", "json_safe", "earlier_rows",
-           "merge_rows", "write_outputs"]
+__all__ = ["RESULT_FILES", "SUMMARY_METRICS", "run_provenance", "config_digest", "summarise", "json_safe",
+           "earlier_rows", "merge_rows", "write_outputs"]
 
 #: the files of a run's rows (the scorecards beside them are ``scorecard_<env>.png``)
 RESULT_FILES = ("gust_bench.csv", "gust_bench.json")
@@ -32,7 +32,7 @@ RESULT_FILES = ("gust_bench.csv", "gust_bench.json")
 SUMMARY_METRICS = ("t_end_s", "max_lateral_m", "rms_lateral_m", "energy_ratio", "peak_tension_ratio",
                    "settling_time_s", "control_effort")
 #: the fields of gust_bench.json that must agree for a run's rows to merge with a folder's
-_SAME = ("suite", "version", "suite_sha256", "package_version", "source_digest")
+_SAME = ("suite", "version", "suite_sha256", "package_version", "source_digest", "config_digest")
 
 
 def run_provenance(suite: Suite, env_ids) -> dict:
@@ -44,8 +44,40 @@ def run_provenance(suite: Suite, env_ids) -> dict:
     from laddermill_gym.envs import registered_arguments
     from laddermill_gym.studies.parallel import source_digest
 
+    arguments = {e: registered_arguments(e, suite.envs[e][0]) for e in env_ids}
     return {"suite_sha256": suite.sha256, "package_version": __version__, "source_digest": source_digest(),
-            "env_arguments": {e: registered_arguments(e, suite.envs[e][0]) for e in env_ids}}
+            "config_digest": config_digest(arguments), "env_arguments": arguments}
+
+
+def config_digest(env_arguments: dict) -> str:
+    """SHA-256 (hex) of the data the envs read beside the code: every file of the package's shipped configs (scenes,
+    wings and their tables, cables, crafts, rotors) and every existing file an env argument names by path (a scene
+    or craft of the user's; the files such a file names in turn are not followed)."""
+    import hashlib
+
+    from laddermill_gym.model.configio import CONFIG_DIR
+
+    files = sorted(f for f in Path(CONFIG_DIR).rglob("*") if f.is_file() and "__pycache__" not in f.parts)
+    named = sorted({str(v) for kw in env_arguments.values() for v in _values(kw)
+                    if isinstance(v, (str, Path)) and str(v).endswith((".yaml", ".yml", ".csv")) and Path(v).is_file()})
+    digest = hashlib.sha256()
+    for f in files:
+        digest.update(f.relative_to(CONFIG_DIR).as_posix().encode() + b"\0" + f.read_bytes())
+    for f in named:
+        digest.update(str(Path(f).resolve()).encode() + b"\0" + Path(f).read_bytes())
+    return digest.hexdigest()
+
+
+def _values(value):
+    """Every leaf value of nested mappings and sequences."""
+    if isinstance(value, dict):
+        for v in value.values():
+            yield from _values(v)
+    elif isinstance(value, (list, tuple)):
+        for v in value:
+            yield from _values(v)
+    else:
+        yield value
 
 
 def summarise(rows: list[dict]) -> list[dict]:
