@@ -97,3 +97,20 @@ def pytest_configure(config):
         folder = tempfile.mkdtemp(prefix="laddermill-tests-sb3-")
         os.environ["SB3_LOGDIR"] = folder
         config.add_cleanup(lambda: shutil.rmtree(folder, ignore_errors=True))
+
+
+#: LadderMill's arguments for an 11-wing mill (the fallback start after 100 s of settling: not periodic, so every
+#: lateral LQR designed on it grows over the period), short episodes
+SMALL_MILL = dict(scene="laddermill", scene_options={"n_wings": 11}, settle={"max_time": 100.0}, control_dt=0.05,
+                  episode_time=5.0)
+
+
+def small_mill_task():
+    """A one-copy ``MillTask`` of :data:`SMALL_MILL` (the not-periodic start's warning is not shown)."""
+    import warnings
+
+    from laddermill_gym.envs.laddermill.task import MillTask
+
+    with warnings.catch_warnings():  # said once per process, when the start is computed
+        warnings.simplefilter("ignore", RuntimeWarning)
+        return MillTask(1, **SMALL_MILL)

@@ -13,7 +13,6 @@ errors, for the craft config's bounds and messages; and the gain worked with sci
 from __future__ import annotations
 
 import dataclasses
-import warnings
 
 import numpy as np
 import pytest
@@ -35,11 +34,11 @@ from laddermill_gym.control.mill_lqr import design_mill_lqr, mill_lateral_model,
 from laddermill_gym.envs.laddermill.task import MillTask
 from laddermill_gym.ladder.scene import load_scene
 from laddermill_gym.model.configio import CONFIG_DIR, ConfigError
+from tests.conftest import SMALL_MILL, small_mill_task
 
 TW = "laddermill_gym/TetheredWing-v0"
-N = 11  # the small mill of tests/test_mill_lqr.py (not periodic: every design on it is unstable over the period)
-SMALL = dict(scene="laddermill", scene_options={"n_wings": N}, settle={"max_time": 100.0}, control_dt=0.05,
-             episode_time=5.0)
+SMALL = SMALL_MILL  # not periodic: every design on it is unstable over the period
+N = SMALL["scene_options"]["n_wings"]
 MILL_CONFIG = CONFIG_DIR / "agents" / "lqr_laddermill.yaml"
 
 
@@ -193,9 +192,7 @@ def test_the_craft_lqr_config_names_a_missing_craft_and_a_wind_beyond_any_measur
 # ------------------------------------------------------------------ the mill (L2, L4)
 @pytest.fixture(scope="module")
 def small_mill():
-    with warnings.catch_warnings():  # the small mill is not periodic (said once per process, when it is computed)
-        warnings.simplefilter("ignore", RuntimeWarning)
-        return MillTask(1, **SMALL)
+    return small_mill_task()
 
 
 def test_the_mill_orbit_is_recorded_in_a_steady_wind_after_a_reset(small_mill):

@@ -24,20 +24,16 @@ from laddermill_gym.envs.laddermill.task import MillTask
 from laddermill_gym.kernels.contract import SX_MOVED, SX_SIZE
 from laddermill_gym.model.configio import CONFIG_DIR
 from laddermill_gym.reference import reference_rhs
+from tests.conftest import SMALL_MILL, small_mill_task
 
-N = 11
-SMALL = dict(scene="laddermill", scene_options={"n_wings": N}, settle={"max_time": 100.0}, control_dt=0.05,
-             episode_time=5.0)
+SMALL = SMALL_MILL
+N = SMALL["scene_options"]["n_wings"]
 CONFIG = CONFIG_DIR / "agents" / "lqr_laddermill.yaml"
 
 
 @pytest.fixture(scope="module")
 def task():
-    import warnings
-
-    with warnings.catch_warnings():  # the small mill is not periodic (said once per process, when it is computed)
-        warnings.simplefilter("ignore", RuntimeWarning)
-        return MillTask(1, **SMALL)
+    return small_mill_task()
 
 
 def _at_rest(task):
