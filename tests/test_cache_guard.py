@@ -98,3 +98,82 @@ def test_entries_compiled_at_another_optimisation_level_are_removed(tmp_path):
     assert before and all(not p.exists() or p.stat().st_mtime_ns != t for p, t in before.items())  # removed
     stamp = entries[0].parent / cache_guard.STAMP_NAME
     assert stamp.read_text().strip() != cache_guard.stamp_digest(cache_guard.kernel_sources(pkg), pkg)  # level 3 here
+
+
+LONG_LIVED = """
+import sys
+from pathlib import Path
+sys.path.insert(0, {root!r})
+from laddermill_gym.kernels.cache_guard import guard
+guard(Path({root!r}) / "pkgx")
+from pkgx.caller import outer
+print("imported", flush=True)
+sys.stdin.readline()  # the test edits the callee and runs a process of the new sources meanwhile
+print(outer())
+"""
+
+
+def test_a_process_older_than_an_edit_does_not_serve_its_old_code(tmp_path):
+    """A process that imported the package before its callee was edited compiles the old code after a process of the
+    new sources has stamped the folder: numba alone (the index stamp is the caller file's mtime and size) would then
+    serve its old machine code to every later process. The index now carries the sources' digest of the process
+    that wrote it, so the later process recompiles (a review of 2026-12-07)."""
+    pkg = _package(tmp_path, 1.0)
+    env = {"PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "NUMBA_CACHE_DIR": "", "PYTHONDONTWRITEBYTECODE": "1"}
+    old = subprocess.Popen([sys.executable, "-c", textwrap.dedent(LONG_LIVED.format(root=str(tmp_path)))],
+                           stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    try:
+        assert old.stdout.readline().strip() == "imported"  # the old sources are loaded, nothing compiled yet
+        (pkg / "callee.py").write_text(CALLEE.format(2.0))
+        assert _run(tmp_path, guarded=True) == 2.5  # a process of the new sources stamps the folder and caches
+        out, err = old.communicate("go\n", timeout=120)
+    finally:
+        if old.poll() is None:
+            old.kill()
+    assert float(out.strip().splitlines()[-1]) == 1.5, err  # the old process runs (and caches) its old code
+    assert _run(tmp_path, guarded=True) == 2.5  # numba alone served 1.5 here
+    assert _run(tmp_path, guarded=True) == 2.5
+
+
+def test_the_locators_stamp_only_the_guarded_packages_files(tmp_path):
+    """numba's own locators keep every file outside a guarded package (a user's kernels are cached as numba does)."""
+    from numba.core import caching
+
+    cache_guard.install_locators()
+    classes = caching.CacheImpl._locator_classes
+    ours = [c for c in classes if c.__name__.startswith("ImportStamped")]
+    assert [c.__name__ for c in ours] == ["ImportStampedUserProvidedCacheLocator", "ImportStampedInTreeCacheLocator",
+                                          "ImportStampedUserWideCacheLocator"]
+    cache_guard.install_locators()
+    assert [c for c in caching.CacheImpl._locator_classes if c.__name__.startswith("ImportStamped")] == ours
+    outside = tmp_path / "user_kernels.py"
+    outside.write_text("def f():\n    return 1\n")
+    assert all(c.from_function(None, str(outside)) is None for c in ours)
+    from laddermill_gym.kernels import small
+
+    fn = small.quat_rotation.py_func
+    loc = next(c.from_function(fn, small.__file__) for c in ours if c.from_function(fn, small.__file__) is not None)
+    stamp = loc.get_source_stamp()
+    assert stamp[1] == cache_guard.stamp_digest(cache_guard.kernel_sources())
+    assert stamp[0] == caching.InTreeCacheLocator(fn, small.__file__).get_source_stamp()
+
+
+def test_disk_cache_entries_are_neither_read_nor_written_by_code_older_than_the_files(tmp_path, monkeypatch):
+    """model/disk_cache: a process whose package files changed since it imported them does not use the cache."""
+    import warnings
+
+    import numpy as np
+
+    from laddermill_gym.model import disk_cache
+
+    monkeypatch.setenv(disk_cache.CACHE_VARIABLE, str(tmp_path / "cache"))
+    path = disk_cache.entry_path("probe", "x", "k" * 64)
+    assert disk_cache.write_entry(path, "k" * 64, {"a": np.arange(3.0)})
+    assert disk_cache.read_entry(path, "k" * 64)["a"].tolist() == [0.0, 1.0, 2.0]
+    monkeypatch.setattr(cache_guard, "package_digest", lambda root=None: "another")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        assert disk_cache.read_entry(path, "k" * 64) is None
+        assert disk_cache.write_entry(path, "k" * 64, {"a": np.arange(4.0)}) is False
+    assert len(np.load(path)["a"]) == 3  # untouched
+    assert sum("changed since this process imported it" in str(w.message) for w in caught) <= 1

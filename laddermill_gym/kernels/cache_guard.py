@@ -16,7 +16,17 @@ The brief asks for bit-identical results whatever the state of numba's cache, so
 3. in the folder numba caches each of those files in (under ``NUMBA_CACHE_DIR``, else beside the source, else
    numba's user-wide folder: numba's order), a stamp file holds the digest the entries there were compiled under;
    where it differs, the folder's ``*.nbi`` / ``*.nbc`` files are removed first and the stamp is written after
-   (atomically), so a process never sees a new stamp beside old entries.
+   (atomically), so a process never sees a new stamp beside old entries;
+4. every index numba writes or reads for a file of the package carries that digest as this process computed it
+   (:func:`install_locators`: numba's cache locators, whose source stamp, the file's mtime and size, gets the digest
+   beside it). A process that imported the package before its sources were edited still compiles the old code; its
+   entries now carry the old digest, so a process of the new sources finds them stale instead of loading them (and
+   the other way round), though both share the folder and its stamp.
+
+The digests are taken when the guard runs, at ``import laddermill_gym``; a module of the package first imported after
+an edit runs the edited code under the digest taken before it (the package's kernel modules are imported with it).
+:func:`sources_as_imported` tells whether the package's files still hold the bytes they held then: the on-disk caches
+of starts and operating points (``model/disk_cache.py``) neither read nor write while they do not.
 
 A removed entry only costs its recompilation. A folder that cannot be written is left alone (numba does not cache
 there either). Switch off with ``LADDERMILL_CACHE_GUARD=off`` (then numba's own rules apply).
@@ -31,7 +41,7 @@ import tempfile
 from pathlib import Path
 
 __all__ = ["STAMP_NAME", "SWITCH", "guard", "kernel_sources", "sources_digest", "stamp_digest",
-           "codegen_settings", "cache_folders"]
+           "codegen_settings", "cache_folders", "package_digest", "sources_as_imported", "install_locators"]
 
 #: the stamp file written into each cache folder
 STAMP_NAME = "laddermill_gym_sources.sha256"
@@ -39,6 +49,10 @@ STAMP_NAME = "laddermill_gym_sources.sha256"
 SWITCH = "LADDERMILL_CACHE_GUARD"
 _IMPORT = r"^\s*(?:from\s+{0}((?:\.\w+)*)\s+import\s+(\([^)]*\)|[^\n]*)|import\s+{0}((?:\.\w+)+))"
 _PACKAGE = Path(__file__).resolve().parent.parent
+#: package root -> the stamp digest of its kernel sources when the guard ran in this process (numba's index stamps)
+_STAMPS: dict[Path, str] = {}
+#: package root -> :func:`package_digest` when the guard ran in this process
+_IMPORTED: dict[Path, str] = {}
 
 
 def _module_index(root: Path, paths) -> dict[str, Path]:
@@ -164,10 +178,14 @@ def _refresh(folder: Path, digest: str) -> bool:
 def guard(root: Path = _PACKAGE) -> list[Path]:
     """Apply the rule above once to the package at ``root``; the folders whose entries were removed (empty when
     switched off)."""
+    root = root.resolve()
+    _IMPORTED[root] = package_digest(root)
     if os.environ.get(SWITCH, "").strip().lower() == "off":
         return []
     sources = kernel_sources(root)
     digest = stamp_digest(sources, root)
+    _STAMPS[root] = digest
+    install_locators()
     removed = []
     for folder in cache_folders(sources):
         try:
@@ -176,3 +194,59 @@ def guard(root: Path = _PACKAGE) -> list[Path]:
         except OSError:  # a folder that vanished or cannot be written: numba cannot cache there either
             continue
     return removed
+
+
+def package_digest(root: Path = _PACKAGE) -> str:
+    """SHA-256 (hex) of every ``.py`` file of the package at ``root`` (sorted; path and bytes, as
+    :func:`sources_digest`)."""
+    return sources_digest(sorted(root.rglob("*.py")), root)
+
+
+def sources_as_imported(root: Path = _PACKAGE) -> bool:
+    """Whether the package's ``.py`` files hold the bytes they held when the guard ran in this process (at ``import
+    laddermill_gym``; True for a root the guard never ran on). About 8 ms: for the writes and reads of computed
+    entries, not per step."""
+    before = _IMPORTED.get(root.resolve())
+    return before is None or package_digest(root) == before
+
+
+def _root_of(py_file: str) -> Path | None:
+    """The guarded package root ``py_file`` lies in, if any."""
+    path = Path(py_file).resolve()
+    return next((root for root in _STAMPS if path.is_relative_to(root)), None)
+
+
+class _ImportStamp:
+    """numba cache-locator mixin for the guarded packages' files: the index's source stamp is numba's own (the
+    file's mtime and size) with the kernel sources' digest as the guard computed it in this process, so entries
+    compiled from other sources of the package (another process's, before or after an edit) read as stale. Files
+    outside the guarded packages are left to numba's own locators (``from_function`` returns None)."""
+
+    _root: Path | None = None
+
+    @classmethod
+    def from_function(cls, py_func, py_file):
+        root = _root_of(py_file)
+        if root is None:
+            return None
+        self = super().from_function(py_func, py_file)
+        if self is not None:
+            self._root = root
+        return self
+
+    def get_source_stamp(self):
+        return super().get_source_stamp(), _STAMPS[self._root]
+
+
+def install_locators() -> None:
+    """Put :class:`_ImportStamp` versions of numba's three file-backed locators (``NUMBA_CACHE_DIR``, beside the
+    source, user-wide: numba's order) before numba's own, once per process. numba reads its locator list when a
+    cached function is defined, so this runs before the package's kernels are imported. A list given by
+    ``NUMBA_CACHE_LOCATOR_CLASSES`` replaces numba's and this one: numba's own rules then apply."""
+    from numba.core import caching
+
+    classes = caching.CacheImpl._locator_classes
+    if any(issubclass(c, _ImportStamp) for c in classes):
+        return
+    bases = (caching.UserProvidedCacheLocator, caching.InTreeCacheLocator, caching.UserWideCacheLocator)
+    classes[:0] = [type(f"ImportStamped{b.__name__}", (_ImportStamp, b), {}) for b in bases]

@@ -11,7 +11,9 @@ dataclasses, arrays and numbers canonically; :func:`platform_text` names the ver
 OpenBLAS choose). Stored: the exact arrays and scalars (``np.savez``, no pickle), written atomically (a temporary file
 in the same folder, flushed to disk, then renamed). An entry is trusted only when it reads back whole, holds its own key
 (the full key, not only the file name's prefix) and its payload's SHA-256 matches; anything else is recomputed and
-overwritten. A folder that cannot be written gives one warning and the computation goes on uncached.
+overwritten. A folder that cannot be written gives one warning and the computation goes on uncached. A process
+whose package files changed since it imported the package (``kernels.cache_guard.sources_as_imported``: an edit or an
+install during a session) runs code the keys no longer describe: it neither reads nor writes entries (one warning).
 """
 
 from __future__ import annotations
@@ -28,6 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
+from laddermill_gym.kernels.cache_guard import sources_as_imported
 from laddermill_gym.model.machine import KERNEL_VARIABLES, numpy_simd_level
 
 __all__ = ["CACHE_VARIABLE", "OFF", "cache_dir", "feed", "platform_text", "payload_digest", "entry_path",
@@ -38,6 +41,18 @@ CACHE_VARIABLE = "LADDERMILL_CACHE_DIR"
 #: the value of :data:`CACHE_VARIABLE` that switches the cache off
 OFF = "off"
 _WARNED: set = set()
+_STALE = "the package's files changed since this process imported it"
+
+
+def _code_as_imported() -> bool:
+    """Whether this process's code is still the package's on disk (module doc); one warning the first time not."""
+    if sources_as_imported():
+        return True
+    if _STALE not in _WARNED:
+        _WARNED.add(_STALE)
+        warnings.warn(f"{_STALE}: its results are neither read from nor written to the on-disk cache "
+                      f"({cache_dir()}); start a new process to use it", RuntimeWarning, stacklevel=4)
+    return False
 
 
 def cache_dir() -> Path | None:
@@ -130,7 +145,7 @@ def entry_path(kind: str, label: str, key: str) -> Path | None:
 def read_entry(path: Path | None, key: str) -> dict | None:
     """The arrays of the entry at ``path`` (name -> numpy array, scalars as 0-d arrays) if it is whole and holds
     ``key`` and a matching payload digest; None otherwise (missing, unreadable, corrupt or another key's)."""
-    if path is None or not path.is_file():
+    if path is None or not path.is_file() or not _code_as_imported():
         return None
     try:
         # numpy leaves the file open when it is not a zip archive; the file opened here is closed either way
@@ -147,7 +162,7 @@ def read_entry(path: Path | None, key: str) -> dict | None:
 def write_entry(path: Path | None, key: str, arrays: dict) -> bool:
     """Write ``arrays`` (name -> array or scalar) with ``key`` and their digest atomically to ``path``; True when
     written. A folder that cannot be written gives one RuntimeWarning naming it and False."""
-    if path is None:
+    if path is None or not _code_as_imported():
         return False
     data = {k: np.asarray(v) for k, v in arrays.items()}
     tmp = None
