@@ -222,3 +222,25 @@ def test_one_shared_policy_trains_a_few_hundred_ppo_steps():
     assert model.num_timesteps == 2 * 32 * venv.num_envs  # 640 agent-steps over 2 rollouts
     action, _ = model.predict(venv.reset(), deterministic=True)
     assert action.shape == (venv.num_envs, 3) and np.all(np.abs(action) <= 1.0)
+
+
+def test_a_non_finite_state_costs_each_agent_the_full_penalty_as_the_single_env():
+    """The task's reward maps a non-finite lateral or rate argument to the full penalty (``shaped_reward``); the
+    per-agent terms did not (every agent's reward was NaN; the review of 2026-12-07)."""
+    env = parallel_env(LM, k=1, **case_kwargs(LM))
+    single = make_single(LM)
+    env.reset(seed=0)
+    single.reset(seed=0)
+    env.task.batch.states[0, :] = np.nan
+    single.task.batch.states[0, :] = np.nan
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        _, rewards, terminated, _, infos = env.step({a: np.zeros(3, np.float32) for a in env.agents})
+        _, r_single, t_single, _, i_single = single.step(np.zeros(single.action_space.shape, np.float32))
+    assert t_single and all(terminated.values())
+    assert np.isfinite(r_single) and all(np.isfinite(r) for r in rewards.values())
+    rc = single.unwrapped.task.reward_config
+    for a in env.possible_agents:
+        assert infos[a]["reward_lateral"] == pytest.approx(-rc.lateral_weight)  # S(nan) = 1, as i_single's
+        assert infos[a]["reward_rates"] == pytest.approx(-rc.rate_weight)
+    assert i_single["reward_lateral"] == pytest.approx(-rc.lateral_weight)

@@ -240,3 +240,53 @@ def test_lqr_band_projected_on_per_slot_gains_is_that_band():
     f = w.shape[1]
     np.testing.assert_allclose(head1[lqr.column[0], :f], w[:, :, 0].mean(axis=0), rtol=1e-12, atol=1e-12)
     assert err1 > 0.1
+
+
+def test_a_policy_of_other_surfaces_is_refused_by_name(tmp_path):
+    """The actor's commands per agent against the env's (a policy of three surfaces on a mill of two loaded and
+    failed in numpy's reshape; the review of 2026-12-07)."""
+    small_policy(tmp_path)
+    kw = {key: val for key, val in case_kwargs(LM1).items() if key != "disturbances"}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        with pytest.raises(ValueError, match=r"model\.zip: commands 3 surfaces per agent, the env's agents take 2"):
+            SharedPolicyController.load(tmp_path, LM1, dict(kw, surfaces=["rudder", "aileron"]))
+
+
+def test_a_run_records_and_the_check_compares_every_carried_setting(tmp_path):
+    """What a shared run writes into shared_policy.yaml is what the settings check compares (surfaces, settle and
+    authority were dropped or not compared: a policy flew at five times its authority unrefused)."""
+    import shutil
+
+    import yaml
+
+    from laddermill_gym.control.rl_config import carried_settings
+    from laddermill_gym.control.shipped_policies import shipped_policy_path
+    from laddermill_gym.control.trained_settings import check_trained_settings
+
+    kw = {"surfaces": ["rudder", "aileron"], "settle": {"max_time": 100.0}, "authority": 0.5, "episode_time": 60.0,
+          "initial_noise": {"roll_rate": 0.02}}
+    assert carried_settings(LM1, kw) == {k: kw[k] for k in ("surfaces", "settle", "authority")}
+    run = tmp_path / "ppo_mill"
+    shutil.copytree(shipped_policy_path("ppo_mill"), run)
+    check_trained_settings(run, LM1, {})  # as trained: LadderMill-v1's registered authority 0.2
+    with pytest.raises(ValueError, match=r"shared_policy\.yaml: trained with authority = 0\.2; .* has 1\.0"):
+        check_trained_settings(run, LM1, {"authority": 1.0})
+    meta = yaml.safe_load((run / "shared_policy.yaml").read_text())
+    meta["env_kwargs"] = carried_settings(LM1, kw)
+    (run / "shared_policy.yaml").write_text(yaml.safe_dump(meta))
+    check_trained_settings(run, LM1, kw)  # its own settings pass
+    with pytest.raises(ValueError, match=r"trained with surfaces = \['rudder', 'aileron'\]"):
+        check_trained_settings(run, LM1, {k: v for k, v in kw.items() if k != "surfaces"})
+
+
+def test_a_shared_config_for_the_point_mass_chain_is_refused_by_name(tmp_path):
+    from laddermill_gym.harness.shared_config import load_shared_config
+    from laddermill_gym.model.configio import CONFIG_DIR, ConfigError
+
+    text = (CONFIG_DIR / "agents" / "ppo_chain_v0.yaml").read_text()
+    bad = tmp_path / "pmc.yaml"
+    bad.write_text(text.replace("env: laddermill_gym/LadderChain-v0", "env: laddermill_gym/PointMassChain-v0", 1))
+    assert bad.read_text() != text
+    with pytest.raises(ConfigError, match=r"pmc\.yaml.*'env'.*PointMassChain-v0"):
+        load_shared_config(bad)

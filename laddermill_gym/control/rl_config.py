@@ -38,7 +38,7 @@ CARRIED_KWARGS: dict[str, tuple[str, ...]] = {
     "wing": ("action_mode", "groups", "control_dt", "physics_dt", "alpha_servo_tau", "scene_options"),
     "craft": ("craft", "collective", "control_dt", "physics_dt"),
     "mill": ("scene", "scene_options", "control_dt", "groups", "n_bands", "surfaces", "generator_torque", "drum",
-             "cable_speed_command", "speed", "operating_point", "settle"),
+             "cable_speed_command", "speed", "operating_point", "settle", "authority"),
     "pumping": ("config", "scene_options", "control_dt"),
     "pointmass": ("scene", "scene_options", "control_dt", "groups", "pitch_range_deg", "roll_range_deg"),
 }
@@ -126,8 +126,14 @@ class RLConfig:
 
     def carried_env_kwargs(self) -> dict[str, Any]:
         """The training's overrides of the arguments the evaluation takes over (:data:`CARRIED_KWARGS`)."""
-        keys = CARRIED_KWARGS[env_family(self.env_id)]
-        return {k: v for k, v in self.env_kwargs.items() if k in keys}
+        return carried_settings(self.env_id, self.env_kwargs)
+
+
+def carried_settings(env_id: str, env_kwargs: dict[str, Any]) -> dict[str, Any]:
+    """The entries of ``env_kwargs`` that an evaluation of a policy trained on ``env_id`` takes over
+    (:data:`CARRIED_KWARGS` of its family): what a run records for ``control.trained_settings`` to check."""
+    keys = CARRIED_KWARGS[env_family(env_id)]
+    return {k: v for k, v in env_kwargs.items() if k in keys}
 
 
 def _algorithm_class(name: str):

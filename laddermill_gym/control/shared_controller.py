@@ -114,9 +114,13 @@ class SharedController(ABC):
         """The local observation size the actor takes."""
         return int(self.meta["obs_dim"])
 
+    @abstractmethod
+    def actions_per_agent(self) -> int:
+        """The commands the actor gives each agent (its output size)."""
+
     def check_env(self, env_id: str) -> None:
-        """Refuse an env id, agent count or local observation size other than the training's (ValueError naming
-        the model file and what does not match)."""
+        """Refuse an env id, agent count, local observation size or commands per agent other than the training's
+        (ValueError naming the model file and what does not match)."""
         m, v = self.meta, self.view
         if not same_task(env_id, str(m["env"])):
             raise ValueError(f"{self.source}: trained on {m['env']}, not {env_id}; evaluate it on {m['env']} or "
@@ -130,6 +134,9 @@ class SharedController(ABC):
         if self.local_obs_dim() != v.obs_dim:
             raise ValueError(f"{self.source}: local observations of ({self.local_obs_dim()},) entries (k = "
                              f"{m['k']}), the env gives {v.obs_dim}")
+        if self.actions_per_agent() != v.act_dim:
+            raise ValueError(f"{self.source}: commands {self.actions_per_agent()} surfaces per agent, the env's "
+                             f"agents take {v.act_dim} (surfaces differ: {m.get('env_kwargs') or {}} in training)")
 
     def local(self, observation: np.ndarray) -> tuple[np.ndarray, bool]:
         obs = np.asarray(observation, dtype=np.float64)
@@ -226,6 +233,9 @@ class LinearActorController(SharedController):
 
     def actions(self, local: np.ndarray) -> np.ndarray:
         return self.actor.mean(local)
+
+    def actions_per_agent(self) -> int:
+        return int(self.actor.weight.shape[0])
 
     @staticmethod
     def available(path: str | Path) -> bool:

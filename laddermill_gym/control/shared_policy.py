@@ -113,6 +113,9 @@ class SharedPolicyController(SharedController):
     def local_obs_dim(self) -> int:
         return int(self.model.observation_space.shape[0])
 
+    def actions_per_agent(self) -> int:
+        return int(self.model.action_space.shape[0])
+
     @classmethod
     def load(cls, path: str | Path, env_id: str | None = None, env_kwargs: dict | None = None
              ) -> SharedPolicyController:

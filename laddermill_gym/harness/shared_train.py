@@ -36,6 +36,7 @@ import numpy as np
 import yaml
 from tqdm import tqdm
 
+from laddermill_gym.control.rl_config import carried_settings
 from laddermill_gym.harness.run_record import write_run_record
 from laddermill_gym.harness.shared_config import SharedTrainConfig, load_shared_config
 from laddermill_gym.harness.shared_fit import band_weights, bryson_scales
@@ -236,8 +237,7 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
     teacher = make_teacher(cfg.env_id, cfg.teacher_config,
                            {k: v for k, v in cfg.env_kwargs.items() if k != "initial_noise"})
     meta = dict(env=cfg.env_id, k=cfg.k, n_agents=view.n_agents, obs_dim=view.obs_dim, algorithm="PPO",
-                env_kwargs={k: v for k, v in cfg.env_kwargs.items() if k in ("scene", "scene_options", "authority",
-                                                                              "control_dt", "n_wings")},
+                env_kwargs=carried_settings(cfg.env_id, cfg.env_kwargs),
                 config=str(cfg.file.name), seed=cfg.seed)
     (out / "shared_policy.yaml").write_text(yaml.safe_dump(meta, sort_keys=False))
     write_run_record(out, cfg.seed)  # the command line, seed, torch threads and package versions

@@ -196,13 +196,14 @@ class WingAgents:
         B, n = t.n_copies, self.n_agents
         shared = np.broadcast_to((info["reward_power"] + info["reward_failure"])[:, None], (B, n))
         dy = t.lateral_offsets(t.obs if self.kind == "wing" else t.raw_obs)
-        lateral = -rc.lateral_weight * -np.expm1(-((dy / t.lateral_scale) ** 2))
+        # a non-finite observed state costs the full penalty, as in the task's own reward (``shaped_reward``)
+        lateral = -rc.lateral_weight * -np.expm1(-np.nan_to_num((dy / t.lateral_scale) ** 2, nan=np.inf))
         if self.kind == "kite":
             rates = np.zeros((B, n))
         else:
             o = (t.obs if self.kind == "wing" else t.raw_obs)[:, : n * self.block].reshape(B, n, self.block)
             w2 = o[:, :, OBS_INDEX["p"]] ** 2 + o[:, :, OBS_INDEX["r"]] ** 2
-            rates = -rc.rate_weight * -np.expm1(-w2 / rc.rate_scale ** 2)
+            rates = -rc.rate_weight * -np.expm1(-np.nan_to_num(w2 / rc.rate_scale ** 2, nan=np.inf))
         a = np.clip(np.asarray(per_agent, dtype=float).reshape(B, n, self.act_dim), -1.0, 1.0)
         effort = -rc.effort_weight * -np.expm1(-np.mean((a - self.nominal) ** 2, axis=2))
         return {"reward_shared": np.array(shared), "reward_lateral": lateral, "reward_rates": rates,
