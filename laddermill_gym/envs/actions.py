@@ -182,6 +182,21 @@ class ElevatorFromAlpha:
         """Angles of attack [rad] the map covers (low, high)."""
         return float(self.alpha_grid[0]), float(self.alpha_grid[-1])
 
+    def range_with_offset(self, offset: float, limits: tuple[float, float], centre: float) -> tuple[float, float]:
+        """Angles of attack [rad] (low, high) around ``centre`` on which the map plus a wing's own elevator
+        ``offset`` [rad] stays within its elevator ``limits`` [rad] (the grid point nearest ``centre`` always in:
+        there the sum is the wing's trim elevator)."""
+        e = self.elevator_grid + offset
+        ok = (e >= limits[0]) & (e <= limits[1])
+        i0 = int(np.argmin(np.abs(self.alpha_grid - centre)))
+        ok[i0] = True
+        i_lo, i_hi = i0, i0
+        while i_lo > 0 and ok[i_lo - 1]:
+            i_lo -= 1
+        while i_hi < ok.size - 1 and ok[i_hi + 1]:
+            i_hi += 1
+        return float(self.alpha_grid[i_lo]), float(self.alpha_grid[i_hi])
+
     def __call__(self, alpha):
         """Elevator angle(s) [rad] trimming the given angle(s) of attack [rad] (held at the range ends)."""
         return np.interp(alpha, self.alpha_grid, self.elevator_grid)
@@ -272,9 +287,12 @@ class ActionMap:
                     ti = int(assembly.wing_type_index[k])
                     if ti not in maps:
                         maps[ti] = ElevatorFromAlpha(assembly.wing(k), alpha_g)
-                    lo = max(lo, maps[ti].alpha_range[0])
-                    hi = min(hi, maps[ti].alpha_range[1])
                     self._elevator_offset[k] = u_eq[k, 0] - float(maps[ti](alpha_g))
+                    # the range on which the map plus this wing's offset needs no clip (the map's own range
+                    # alone let a = -1 ask for more than the elevator's limit: a silent clip)
+                    a_lo, a_hi = maps[ti].range_with_offset(self._elevator_offset[k],
+                                                            (self._lo[k, 0], self._hi[k, 0]), alpha_g)
+                    lo, hi = max(lo, a_lo), min(hi, a_hi)
                 self._alpha_lo[g], self._alpha_hi[g] = lo, hi
                 self._nominal_alpha[g] = alpha_g
                 nominal[g, 0] = (alpha_g - 0.5 * (lo + hi)) / (0.5 * (hi - lo))

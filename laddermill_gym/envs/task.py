@@ -22,6 +22,7 @@ from laddermill_gym.envs.physics_step import jacobian_settings, physics_scene_op
 from laddermill_gym.envs.start_cache import WING_SOURCES, cached_start
 from laddermill_gym.envs.task_base import (
     TaskCore,
+    check_copies,
     default_parallel,
     env_disturbances,
     episode_periods,
@@ -191,7 +192,7 @@ class WingTask(TaskCore):
             self.x_trim, self.u_trim = x_trim, u_trim
             nw = asm.n_wings
             self.n_wings = nw
-            self.n_copies = int(n_copies)
+            self.n_copies = check_copies(n_copies)
             self.parallel = default_parallel(self.n_copies, asm.state_size, parallel)
             self._kernel = CopyThreads(step_observe_serial, self.n_copies, self.parallel, launch_step_observe)
             n_mod = int(math.ceil(self.episode_time / self.wind_dt - 1e-9)) + 1
@@ -377,5 +378,5 @@ class WingTask(TaskCore):
         if code == 2:
             k = int(np.argmin(-(o[:, OBS_INDEX['dz']] + self.nominal[:, 2])))
             return (f"t = {self.batch.t[b]:.2f} s: ground contact, wing {k} CG at {self.aux[b, AUX_MIN_ALTITUDE]:.2f} "
-                    "m altitude")
+                    f"m altitude (< termination's min_altitude {self.min_altitude:.3g} m)")
         return aero_range_text(self, b, o, "wing")

@@ -96,10 +96,12 @@ def env_disturbances(value, episode_time: float | None = None, wind_dt: float | 
     return out
 
 
-def check_copies(n_copies) -> int:
-    """The number of copies B as an int; ValueError unless it is a positive integer."""
-    if isinstance(n_copies, bool) or int(n_copies) != n_copies or n_copies < 1:
-        raise ValueError(f"n_copies = {n_copies!r}: must be a positive integer")
+def check_copies(n_copies, name: str = "n_copies") -> int:
+    """The number of copies B as an int; ValueError naming ``name`` and the value unless it is a positive integer
+    (an int, or a float of integral value; not a bool, a string or None)."""
+    if (isinstance(n_copies, bool) or not isinstance(n_copies, (numbers.Integral, float)) or int(n_copies) != n_copies
+            or n_copies < 1):
+        raise ValueError(f"{name} = {n_copies!r}: must be a positive integer")
     return int(n_copies)
 
 

@@ -145,12 +145,15 @@ class TaskEnv(TaskRendering, gym.Env):
 
     # ------------------------------------------------------------------ pickling
     def __getstate__(self):
+        # the generator with its seed (Gymnasium's np_random_seed reseeds a generator whose seed is None) and the spec
         return {"kwargs": self._kwargs, "render_mode": self.render_mode, "np_random": self._np_random,
-                "task": self.task.snapshot(), "needs_reset": self._needs_reset}
+                "np_random_seed": self._np_random_seed, "spec": self.spec, "task": self.task.snapshot(),
+                "needs_reset": self._needs_reset}
 
     def __setstate__(self, state):
         self.__init__(render_mode=state["render_mode"], **state["kwargs"])
-        self._np_random = state["np_random"]
+        self._np_random, self._np_random_seed = state["np_random"], state["np_random_seed"]
+        self.spec = state["spec"]
         self.task.restore(state["task"])
         self._needs_reset = state["needs_reset"]
         if not self._needs_reset:

@@ -19,14 +19,14 @@ from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
 from laddermill_gym.envs.actions import action_array
+from laddermill_gym.envs.task_base import check_copies
 from laddermill_gym.envs.task_env import check_render_mode, check_task_arguments
 
 
 def check_vector_arguments(num_envs, render_mode, autoreset_mode, task_class) -> AutoresetMode:
     """Validate the vector-env arguments every task shares; returns the autoreset mode. Raises ValueError
     naming the argument and its value."""
-    if isinstance(num_envs, bool) or int(num_envs) != num_envs or num_envs < 1:
-        raise ValueError(f"num_envs = {num_envs!r}: must be a positive integer")
+    check_copies(num_envs, "num_envs")
     try:
         mode = AutoresetMode(autoreset_mode)
     except ValueError:
@@ -44,19 +44,22 @@ class TaskVectorEnv(VectorEnv):
     ``task_class``.
 
     Parameters: ``num_envs``, ``render_mode`` (``"rgb_array"``: ``render()`` returns one frame per copy; None only
-    where the task does not render), ``autoreset_mode``, ``parallel`` (threads; default from 32 copies
-    on, from 2 for a model of 500 states or more: ``task_base.default_parallel``) and the task's arguments; others
-    raise ValueError naming them. ``info`` holds the task's info arrays, each with its ``_name`` mask, and
-    ``failure_name`` / ``failure_reason`` per copy; a copy reset in the call holds its reset info instead (``t`` =
-    0 and the task's ``reset_info()``, e.g. ``reference_power_W``), as SyncVectorEnv gives.
+    where the task does not render), ``autoreset_mode``, ``parallel`` (threads; default from 32 copies on, from 2
+    for a model of 500 states or more: ``task_base.default_parallel``) and the task's arguments; others raise
+    ValueError naming them; ``max_episode_steps`` (Gymnasium's, which ``make_vec`` passes on) truncates an episode
+    at that many control periods if it comes before ``episode_time``. ``info`` holds the task's info arrays, each
+    with its ``_name`` mask, and ``failure_name`` / ``failure_reason`` per copy; a copy reset in the call holds its
+    reset info instead (``t`` = 0 and the task's ``reset_info()``, e.g. ``reference_power_W``), as SyncVectorEnv
+    gives.
 
     Copy i behaves exactly like the task's single env seeded with ``seed + i`` (bit for bit: same kernel, same
     arithmetic). Autoreset: ``autoreset_mode`` "NextStep" (Gymnasium's default: the step after an episode ends
     resets that copy, ignores its action and reports reward 0), "SameStep" (the reset observation is returned at
     once; the final observation and info are in ``info["final_obs"]``, ``info["final_info"]``) or "Disabled" (the
     caller resets ended copies with ``reset(options={"reset_mask": mask})``; stepping one before raises
-    RuntimeError). Actions: a finite real array (num_envs, n_actions); anything else raises
-    :class:`~laddermill_gym.envs.actions.ActionError` before any copy moves.
+    RuntimeError). A step before every copy's first reset raises ``gymnasium.error.ResetNeeded``. Actions: a finite
+    real array (num_envs, n_actions); anything else raises :class:`~laddermill_gym.envs.actions.ActionError` before
+    any copy moves.
     """
 
     task_class: type
@@ -65,21 +68,26 @@ class TaskVectorEnv(VectorEnv):
     def __init__(self, num_envs: int, render_mode: str | None = None,
                  autoreset_mode: AutoresetMode | str = AutoresetMode.NEXT_STEP, **task_kwargs):
         mode = check_vector_arguments(num_envs, render_mode, autoreset_mode, self.task_class)
-        task_kwargs.pop("max_episode_steps", None)
+        max_steps = task_kwargs.pop("max_episode_steps", None)
         check_task_arguments(self.task_class, task_kwargs, vector=True)
         self.task = task = self.task_class(int(num_envs), **task_kwargs)
+        if max_steps is not None:  # Gymnasium's step limit (the single env's TimeLimit wrapper), if shorter
+            task.n_steps_max = min(task.n_steps_max, check_copies(max_steps, "max_episode_steps"))
         self.failure_names = dict(task.failure_names)
         self.num_envs = int(task.n_copies)
         self.render_mode = render_mode
         self.metadata = dict(self.metadata, autoreset_mode=mode, render_fps=1.0 / task.control_dt)  # as the single env
         self.autoreset_mode = mode
         self._was_reset = False
+        self._ever_reset = np.zeros(int(num_envs), dtype=bool)
         self.single_observation_space = gym.spaces.Box(task.obs_low.astype(np.float32),
                                                        task.obs_high.astype(np.float32), dtype=np.float32)
         self.single_action_space = gym.spaces.Box(-1.0, 1.0, shape=(task.n_actions,), dtype=np.float32)
         self.observation_space = batch_space(self.single_observation_space, self.num_envs)
         self.action_space = batch_space(self.single_action_space, self.num_envs)
-        self._rngs = [np.random.default_rng() for _ in range(self.num_envs)]
+        # each copy's generator and its seed, as a single env draws them on first use (np_random_seed)
+        drawn = [gym.utils.seeding.np_random() for _ in range(self.num_envs)]
+        self._rngs, self._seeds = [g for g, _ in drawn], [s for _, s in drawn]
         self._autoreset = np.zeros(self.num_envs, dtype=bool)
         self._renderer = None
         self._no_failure = None
@@ -118,13 +126,22 @@ class TaskVectorEnv(VectorEnv):
         num_envs seeds; the same generator a single env builds in ``Env.reset(seed=s)``."""
         if seed is None:
             return
-        seeds = ([int(seed) + i for i in range(self.num_envs)] if isinstance(seed, (int, np.integer))
-                 else list(seed))
+        if isinstance(seed, (int, np.integer)) and not isinstance(seed, bool):
+            seeds = [int(seed) + i for i in range(self.num_envs)]
+        elif isinstance(seed, (list, tuple, np.ndarray)):
+            seeds = list(seed)
+        else:
+            raise ValueError(f"seed = {seed!r}: an int (copy i: seed + i), {self.num_envs} seeds or None")
         if len(seeds) != self.num_envs:
             raise ValueError(f"seed: expected an int or {self.num_envs} seeds, got {len(seeds)}")
         for i in np.flatnonzero(mask):
             if seeds[i] is not None:
-                self._rngs[i] = gym.utils.seeding.np_random(seeds[i])[0]
+                self._rngs[i], self._seeds[i] = gym.utils.seeding.np_random(seeds[i])
+
+    @property
+    def np_random_seed(self) -> tuple[int, ...]:
+        """The seed of each copy's generator (as ``SyncVectorEnv`` gives its envs' ``np_random_seed``)."""
+        return tuple(self._seeds)
 
     def reset(self, *, seed: int | list[int | None] | None = None, options: dict[str, Any] | None = None):
         """Reset the copies of ``options["reset_mask"]`` (default: every copy); ``seed`` an int (copy i gets
@@ -135,12 +152,16 @@ class TaskVectorEnv(VectorEnv):
         self.task.reset(mask, self._rngs)
         self._autoreset[mask] = False
         self._was_reset = True
+        self._ever_reset |= mask
         return self.task.obs.astype(np.float32), self._info(None, np.zeros(self.num_envs, bool), mask)
 
     # ------------------------------------------------------------------ steps
     def step(self, actions):
         """One control period of every copy (the autoreset mode says what a copy whose episode ended does)."""
         n = self.num_envs
+        if not self._ever_reset.all():  # those copies hold no state yet (SyncVectorEnv raises the same)
+            raise gym.error.ResetNeeded(f"step() before reset(): copies {np.flatnonzero(~self._ever_reset).tolist()} "
+                                        "were never reset; call reset() first")
         a = action_array(actions, (n, self.task.n_actions))
         mode = self.autoreset_mode
         if mode == AutoresetMode.DISABLED and self._autoreset.any():
