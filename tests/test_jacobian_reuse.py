@@ -144,3 +144,33 @@ def test_the_reuse_study_times_only_steps_flown():
     args = (sim.model, sim.work, sim.limits, sim.controls + 0.01, sim.state.copy())
     with pytest.raises(RuntimeError, match="rk4 at 0.00625 s failed"):
         study.wing_positions(args, "rk4", task.scene.settings.dt / 8, 1, 200.0, 0.5)
+
+
+def test_a_reset_or_a_new_wind_builds_the_matrix_again():
+    """A reset to a time that is not a multiple of ``every`` steps kept the matrix of the run before, so the same
+    reset and steps gave other states after another run (1.2e-3 apart; the review of 2026-12-07). Oracle: a fresh
+    simulator."""
+    import dataclasses
+
+    from laddermill_gym import load_scene
+
+    base = load_scene("tethered_wing").simulator()
+    s = dataclasses.replace(base.settings, method="ros2", dt=0.05, jacobian_every=4)
+    x0, u = base.initial_state.copy(), base.controls.copy()
+    u[0] += 0.02
+
+    def flown(sim):
+        sim.reset(x0, t=0.05, controls=u)
+        sim.step(n_steps=3)
+        return sim.state.copy()
+
+    want = flown(type(base)(base.assembly, x0, s, controls=u))
+    used = type(base)(base.assembly, x0, s, controls=u)
+    used.step(n_steps=40)
+    np.testing.assert_array_equal(flown(used), want)
+    used.step(n_steps=1)
+    used.set_wind(used.wind_field)
+    used.t = 0.05  # the same air, as set again: the next steps start from a new matrix
+    used.state[:] = x0
+    used.step(n_steps=3)
+    np.testing.assert_array_equal(used.state, want)

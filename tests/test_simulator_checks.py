@@ -109,3 +109,23 @@ def test_the_error_controlled_w_method_is_named_when_out_of_steps(wing, monkeypa
                     sim.initial_controls)
     with pytest.raises(SimulationError, match=r"ROS34PW2 \(error-controlled\) used up its budget of steps"):
         sim.advance_to(1.0)
+
+
+def test_a_run_of_no_steps_leaves_the_error_controlled_methods_a_step_to_take():
+    """``step(n_steps=0)`` stored a zero proposal: DP5(4) then spun through its budget of steps without moving and
+    ROS34PW2a reported a collapsed step (the review of 2026-12-07). Oracle: the same step(1) without the empty call."""
+    import dataclasses
+
+    from laddermill_gym import load_scene
+
+    base = load_scene("tethered_wing").simulator()
+    for method in ("dp54", "ros34pw2a"):
+        s = dataclasses.replace(base.settings, method=method, dt=0.01)
+        ref = type(base)(base.assembly, base.initial_state, s)
+        ref.step(n_steps=1)
+        sim = type(base)(base.assembly, base.initial_state, s)
+        sim.step(n_steps=0)
+        assert sim.t == 0.0
+        sim.step(n_steps=1)
+        assert sim.t == ref.t == 0.01
+        np.testing.assert_array_equal(sim.state, ref.state)

@@ -141,6 +141,7 @@ class BatchSimulator:
             raise ValueError(f"wind of copy {copy}: {err}") from None
         a = self.air
         a.tmod[copy], a.ms[copy], a.md[copy] = tmod, ms, md
+        self.work.wjac[copy, 0] = 0.0  # a held iteration matrix (jacobian_every > 1) was built in the former air
         if a.gv is not None:
             a.gp[copy], a.gv[copy] = gp, gv
 

@@ -219,6 +219,7 @@ class Simulator(BodyViews):
         self._h_next = None
         #: steps of the error-controlled methods ("dp54", "ros34pw2a") since the reset: [accepted, rejected]
         self.adaptive_steps = [0, 0]
+        self.work.wjac[0] = 0.0  # a held iteration matrix (jacobian_every > 1) belongs to the run before
         return self.state
 
     # ------------------------------------------------------------------ air
@@ -235,6 +236,7 @@ class Simulator(BodyViews):
         tmod, ms, md, gp, gv = pack_wind_field(field)
         self.model = self.model._replace(tmod=tmod, ms=ms, md=md, gp=gp, gv=gv)
         self.wind_field = field
+        self.work.wjac[0] = 0.0  # a held iteration matrix was built in the former air
 
     @property
     def breakpoint_times(self) -> np.ndarray:
@@ -311,10 +313,12 @@ class Simulator(BodyViews):
         """Integrate to t_end [s] with the settings' error-controlled method; (status, size of the last step tried
         [s]). On a failure the time is that of the last accepted step, where the state is left."""
         s = self.settings
+        if not t_end > self.t:  # step(n_steps=0): no step, and no proposal of a zero step for the next run (its
+            return OK, self._first_step()  # controller grew 0 to 0: DP5(4) spun through its budget of steps)
         status, h, t = adaptive_pieces(self, t_end, min(self._first_step(), t_end - self.t), s.rtol, s.atol,
                                        STEP_MAX_STEPS, s.method)
         self.t = t_end if status == OK else t
-        self._h_next = h if status == OK else None
+        self._h_next = h if status == OK and h > 0.0 else None
         return status, h
 
     def _first_step(self) -> float:
@@ -349,7 +353,7 @@ class Simulator(BodyViews):
             self._h_next = None
             self._raise(status, h)
         self.t = float(t_end)
-        self._h_next = h
+        self._h_next = h if h > 0.0 else None
         return self.state
 
     def _raise(self, status: int, h: float):

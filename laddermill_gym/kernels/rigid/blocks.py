@@ -47,8 +47,10 @@ def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
     """Solve the block system in place (solution in bv) by elimination children-first.
 
     D[c] diagonal blocks (may be unsymmetric), U[c] = M[c, parent[c]], M[parent[c], c] = U[c]^T.
-    Returns False if a diagonal block is singular (or, on the fast 6 x 6 path, has a non-positive or
-    non-finite pivot)."""
+    Returns False if a diagonal block off the fast 6 x 6 path is singular. The fast path (a wing's block under a
+    wing's, its diagonal positive) eliminates without pivoting and does not test its pivots: a singular or
+    indefinite block there gives non-finite values, which the step's check reports as a non-finite state (the
+    blocks are symmetric positive definite plus a small apparent-mass term, so it is not met in practice)."""
     nbk = order.size
     for ii in range(nbk):
         c = order[ii]
@@ -200,7 +202,8 @@ def _solve6(D, U, bv, c, p):
 def tree_factor(D, U, Y, piv, order, parent, bsz):
     """Factor the block system in place for repeated solves (:func:`tree_solve_factored`): the elimination of
     :func:`tree_solve` without a right-hand side. A block factored on the fast 6 x 6 path is marked piv[c, 0] = -1.
-    Returns False if a diagonal block is singular."""
+    Returns False if a diagonal block off the fast path is singular (the fast path tests no pivot: as
+    :func:`tree_solve`)."""
     for ii in range(order.size):
         c = order[ii]
         n = bsz[c]
