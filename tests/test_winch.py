@@ -131,3 +131,36 @@ def test_in_plane_winch_pays_out_the_closed_form():
     sim.step(u, 600)
     tau = ps.winch.speed_time_constant
     assert sim.cable_paid_out() == pytest.approx(2.5 * (sim.t - tau * (1 - math.exp(-sim.t / tau))), abs=1e-9)
+
+
+def test_a_simulator_names_the_winchs_reel_in_limit():
+    """The winch element reeled in below 5 % of its start length stops the run with the integrators' LIMIT status;
+    ``WinchSimulator``'s report named only the (unbroken) speed and rate limits (the review of 2026-12-07). The
+    element 2 cm above 15 m reeling in at 10 m/s passes 15 m within the 5 ms step: the report names the winch, a rest
+    length under 15 m and within 10.5 m/s x 5 ms of 15.02 m."""
+    import dataclasses
+    import re
+
+    from laddermill_gym.envs.pumping.winch_scene import WinchSimulator
+    from laddermill_gym.kernels.contract import B3_POS
+    from laddermill_gym.sim.simulator import SimulationError
+
+    ps = load_pumping()
+    x, u = ps.initial_state()
+    x = np.array(x, dtype=float)
+    asm = ps.assembly
+    xoff = asm.body_state_size
+    g = asm.fixed_points[0]
+    p = x[B3_POS: B3_POS + 3]
+    x[B3_POS: B3_POS + 3] = g + (p - g) * 15.02 / np.linalg.norm(p - g)
+    x[xoff + SX_MOVED] = 15.02 - 300.0
+    x[xoff + SX_SPEED] = -10.0
+    sim = WinchSimulator(asm, x, dataclasses.replace(ps.scene.settings, ground_contact="off"), u)
+    u = np.array(sim.controls)
+    u[-1] = -10.0
+    with pytest.raises(SimulationError) as err:
+        sim.step(u, n_steps=1)
+    m = re.search(r"winch reeled the tether's first element in to a rest length of ([0-9.]+) m .* below 5 % of its "
+                  r"start length 300 m \(15 m\)", str(err.value))
+    assert m, str(err.value)
+    assert 15.02 - 10.5 * sim.settings.dt < float(m.group(1)) < 15.0

@@ -302,6 +302,9 @@ def failure_message(sim, status: int, h: float) -> str:
     if status == LIMIT:
         trial = trial_state(sim, h)
         culprit = _limit_culprits(sim, trial[1]) if trial is not None else []
+        own = getattr(sim, "limit_cause", None)  # a model's physical limit of its own (the winch's reel-in end)
+        own = own(h) if callable(own) else None
+        culprit = culprit + [own] if own else culprit
     elif status == NONFINITE and np.all(np.isfinite(sim.state)):
         x = _rk4_trial(sim, h)
         bad = np.flatnonzero(~np.isfinite(x)) if x is not None else np.zeros(0, dtype=int)

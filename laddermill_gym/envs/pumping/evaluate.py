@@ -6,10 +6,10 @@ from __future__ import annotations
 import numpy as np
 
 from laddermill_gym.envs.pumping.observation import WINCH_OBS_INDEX
+from laddermill_gym.envs.pumping.winch_scene import unchecked_step, winch_limit_text
 from laddermill_gym.envs.wing_failures import status_texts, wing_failure_text, wing_terms
-from laddermill_gym.kernels.contract import LIMIT, SX_ENERGY, SX_MOVED, SX_SPEED
+from laddermill_gym.kernels.contract import LIMIT, SX_ENERGY
 from laddermill_gym.kernels.rigid.observe import AUX_MAX_TENSION, AUX_MIN_ALTITUDE
-from laddermill_gym.kernels.winch import MIN_FRACTION
 from laddermill_gym.model.reel import ground_contacts, is_reel, nodes_in_air
 from laddermill_gym.sim.batch import SUBSTEP_DIVISORS
 from laddermill_gym.sim.reports import state_problems, trial_state
@@ -79,27 +79,14 @@ def limit_text(task, b: int) -> str:
     h = sim.settings.dt / SUBSTEP_DIVISORS[-1]  # a LIMIT stands after the batch's last, finest retry
     trial = trial_state(sim, h)  # None: the winch check (or a breakdown) failed it too
     try:
-        x = trial[1] if trial is not None else _unchecked_step(sim, h)
+        x = trial[1] if trial is not None else unchecked_step(sim, h)
     except SimulationError:  # singular or non-finite on the way: no value to name
         return _LIMITS
     culprits = state_problems(sim, x)
     parts = [f"speed or rate limit: {', '.join(culprits[:4])}"] if culprits else []
-    w = task.winch
-    start = w.piece_length * w.first_fraction
-    rest = start + x[task.xoff + SX_MOVED]
-    if rest < MIN_FRACTION * w.piece_length:
-        parts.append(f"the winch reeled the tether's first element in to a rest length of {rest:.6g} m at t = "
-                     f"{sim.t + h:.6g} s, below {100 * MIN_FRACTION:g} % of its start length {start:.4g} m "
-                     f"({MIN_FRACTION * w.piece_length:.4g} m), winch speed {x[task.xoff + SX_SPEED]:.4g} m/s")
+    text = winch_limit_text(task.winch, sim.t + h, x, task.xoff)
+    if text is not None:
+        parts.append(text)
     return "; ".join(parts) if parts else _LIMITS
 
 
-def _unchecked_step(sim, h: float) -> np.ndarray:
-    """The state one classic RK4 step of h [s] after the simulator's, with no check at all (the right-hand side
-    ``sim.rhs``): where the failed step would have gone."""
-    x0, t = sim.state, sim.t
-    k1 = sim.rhs(t, x0)
-    k2 = sim.rhs(t + 0.5 * h, x0 + 0.5 * h * k1)
-    k3 = sim.rhs(t + 0.5 * h, x0 + 0.5 * h * k2)
-    k4 = sim.rhs(t + h, x0 + h * k3)
-    return x0 + h / 6.0 * (k1 + 2.0 * (k2 + k3) + k4)

@@ -19,7 +19,8 @@ from pathlib import Path
 import numpy as np
 
 from laddermill_gym.envs.pumping.reel_start import reel_state
-from laddermill_gym.kernels.contract import SX_MOVED
+from laddermill_gym.kernels.contract import SX_MOVED, SX_SPEED
+from laddermill_gym.kernels.winch import MIN_FRACTION
 from laddermill_gym.ladder.scene import Scene, load_scene
 from laddermill_gym.model.configio import ConfigError, config_path, read_yaml
 from laddermill_gym.model.reel import ReelSpec, ground_contacts, is_reel, read_reeling, with_reel
@@ -81,6 +82,19 @@ class WinchSimulator(Simulator):
         """Tether nodes on the ground now (a reeling tether, ``model.reel.ground_contacts``; 0 otherwise)."""
         return ground_contacts(self.assembly, self.state) if is_reel(self.assembly.station) else 0
 
+    def limit_cause(self, h: float) -> str | None:
+        """The winch's own limit, if the failed step of h [s] from the current state broke it (a physical end of
+        reeling in, reported by the integrator's LIMIT status as a speed or rate limit would be; ``sim.reports``
+        names it): :func:`winch_limit_text` of the step taken without any check (:func:`unchecked_step`); None
+        for a reeling tether (its limits are its nodes') or where the step cannot be evaluated."""
+        if is_reel(self.assembly.station):
+            return None
+        try:
+            x = unchecked_step(self, h)
+        except (ValueError, ArithmeticError):
+            return None
+        return winch_limit_text(self.assembly.station, self.t + h, x, self.assembly.body_state_size)
+
     def winch_power(self) -> dict[str, float]:
         """The winch now: tension of the tether at the drum T_0 [N], winch speed V [m/s] (> 0 reeling out),
         mechanical power at the drum [W] ((Q / r) V with a drum, T_0 V otherwise) and electrical power [W]
@@ -91,6 +105,30 @@ class WinchSimulator(Simulator):
         mech = float(self.controls[-1]) / st.drum_radius * v if st.mode == "drum" else t0 * v
         return {"tension_N": t0, "speed_m_s": v, "mechanical_W": mech,
                 "electrical_W": float(electrical_energy(mech, st.efficiency))}
+
+
+def unchecked_step(sim, h: float) -> np.ndarray:
+    """The state one classic RK4 step of h [s] after the simulator's, with no check at all (the right-hand side
+    ``sim.rhs``): where a failed step would have gone."""
+    x0, t = sim.state, sim.t
+    k1 = sim.rhs(t, x0)
+    k2 = sim.rhs(t + 0.5 * h, x0 + 0.5 * h * k1)
+    k3 = sim.rhs(t + 0.5 * h, x0 + 0.5 * h * k2)
+    k4 = sim.rhs(t + h, x0 + h * k3)
+    return x0 + h / 6.0 * (k1 + 2.0 * (k2 + k3) + k4)
+
+
+def winch_limit_text(winch: StationParams, t: float, x: np.ndarray, xoff: int) -> str | None:
+    """The sentence on a winch element reeled in below ``MIN_FRACTION`` of its start length (``kernels/winch.py``'s
+    physical limit) in the state x at time t [s] (station entries from ``xoff``), with the rest length [m] and the
+    winch speed [m/s]; None when it is not."""
+    start = winch.piece_length * winch.first_fraction
+    rest = start + x[xoff + SX_MOVED]
+    if not rest < MIN_FRACTION * winch.piece_length:
+        return None
+    return (f"the winch reeled the tether's first element in to a rest length of {rest:.6g} m at t = {t:.6g} s, "
+            f"below {100 * MIN_FRACTION:g} % of its start length {start:.4g} m ({MIN_FRACTION * winch.piece_length:.4g}"
+            f" m), winch speed {x[xoff + SX_SPEED]:.4g} m/s")
 
 
 @dataclass(frozen=True)
