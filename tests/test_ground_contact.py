@@ -103,6 +103,12 @@ def test_stop_at_the_closed_form_time_with_a_report(dim, body):
     assert float(m.group(4)) == pytest.approx(free_fall_height(H, n * DT), rel=1e-3, abs=1e-4)
     assert float(m.group(4)) <= hg
     assert f"ground height {hg:g} m" in str(err.value)
+    # the depth below a ground above 0, from the closed-form fall (the review of 2026-12-07: a height rounded to four
+    # digits could read above the ground)
+    depth = re.search(r"at height [-0-9.e+]+ m \(([-0-9.e+]+) m from the ground\)", str(err.value))
+    assert depth, str(err.value)
+    assert float(depth.group(1)) == pytest.approx(free_fall_height(H, n * DT) - hg, rel=1e-2, abs=1e-6)
+    assert float(depth.group(1)) <= 0.0
 
 
 def test_error_controlled_run_stops_in_the_step_that_reaches_the_ground():

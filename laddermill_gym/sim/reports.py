@@ -102,9 +102,9 @@ def ground_message(sim, h: float) -> str:
     heights = np.concatenate([wh, nh])
     at = np.flatnonzero(heights <= hg)
     at = at[np.argsort(heights[at])] if at.size else np.array([int(np.argmin(heights))])
-    # the depth below the ground as well: at four digits a height just below it read as above it (100.4 m against
-    # a ground at 100.384 m)
-    parts = [f"{names[i]} at height {heights[i]:.6g} m ({heights[i] - hg:.3g} m from the ground)"
+    # above a ground not at 0 the depth as well: at four digits a height just below it read as above it (100.4 m
+    # against a ground at 100.384 m); at 0 the height is the depth
+    parts = [f"{names[i]} at height {heights[i]:.4g} m" + (f" ({heights[i] - hg:.3g} m from the ground)" if hg else "")
              for i in at[:_MAX_NAMED]]
     more = f" and {at.size - _MAX_NAMED} more" if at.size > _MAX_NAMED else ""
     return (f"ground contact at t = {t:.6g} s: {', '.join(parts)}{more} (ground height {hg:g} m); the state is "
