@@ -135,3 +135,21 @@ def test_a_ground_contact_names_the_altitude_limit():
         _, _, terminated, _, info = env.step(np.zeros(3, np.float32))
     assert terminated and info["failure"] == 2
     assert "min_altitude 1e+03 m" in info["failure_reason"]
+
+
+def test_a_broken_cable_names_its_most_loaded_element():
+    """Failure 3 names the element whose tension broke the cable; oracle: the plain-numpy reference
+    implementation's tensions of the copy's state (``laddermill_gym.reference.element_tensions``)."""
+    from laddermill_gym.reference import element_tensions
+    from tests.env_cases import LC, case_kwargs
+
+    env = gym.make(LC, **dict(case_kwargs(LC), termination={"breaking_factor": 1e-6})).unwrapped
+    env.reset(seed=0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        _, _, terminated, _, info = env.step(np.zeros(env.action_space.shape, np.float32))
+    assert terminated and info["failure"] == 3
+    bt = env.task.batch
+    ref = element_tensions(bt.assembly, float(bt.t[0]), bt.states[0])
+    assert info["failure_reason"].endswith(f" in element {int(np.argmax(ref))}"), info["failure_reason"]
+    assert info["max_tension_N"] == pytest.approx(ref.max(), rel=1e-2)  # the tension named is that element's

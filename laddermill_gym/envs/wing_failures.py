@@ -78,8 +78,22 @@ def shared_failure_text(task, b: int, code: int, statuses: dict[int, str]) -> st
     if code == 2 and bt.status[b] == GROUND:
         return f"t = {t:.2f} s: {ground_stop_text(bt.assembly, bt.states[b], bt.settings.ground_height)}"
     if code == 3:
-        return f"t = {t:.2f} s: cable tension {task.aux[b, AUX_MAX_TENSION]:.4g} N over {task.breaking_tension:.4g} N"
+        return (f"t = {t:.2f} s: cable tension {task.aux[b, AUX_MAX_TENSION]:.4g} N over {task.breaking_tension:.4g} N"
+                f"{_strongest_element(task, b)}")
     return None
+
+
+def _strongest_element(task, b: int) -> str:
+    """" in element e" for the most loaded element of copy ``b``'s state (its tensions evaluated again by the
+    simulator of that state: the same element loop as the observation's), or "" where they cannot be."""
+    from laddermill_gym.sim.simulator import Simulator
+
+    try:
+        sim = task.simulator(b) if hasattr(task, "simulator") else task._snapshot_simulator(Simulator, b, check=False)
+        tensions = sim.tensions()
+    except (ValueError, RuntimeError, AttributeError, IndexError):  # the read-out must not hide the failure
+        return ""
+    return f" in element {int(np.argmax(tensions))}" if tensions.size else ""
 
 
 def wing_failure_text(task, b: int, code: int, statuses: dict[int, str], rows: np.ndarray, label: str | None,
