@@ -78,7 +78,6 @@ class TaskVectorEnv(VectorEnv):
         self.render_mode = render_mode
         self.metadata = dict(self.metadata, autoreset_mode=mode, render_fps=1.0 / task.control_dt)  # as the single env
         self.autoreset_mode = mode
-        self._was_reset = False
         self._ever_reset = np.zeros(int(num_envs), dtype=bool)
         self.single_observation_space = gym.spaces.Box(task.obs_low.astype(np.float32),
                                                        task.obs_high.astype(np.float32), dtype=np.float32)
@@ -151,7 +150,6 @@ class TaskVectorEnv(VectorEnv):
         self._seed(seed, mask)
         self.task.reset(mask, self._rngs)
         self._autoreset[mask] = False
-        self._was_reset = True
         self._ever_reset |= mask
         return self.task.obs.astype(np.float32), self._info(None, np.zeros(self.num_envs, bool), mask)
 
@@ -233,7 +231,7 @@ class TaskVectorEnv(VectorEnv):
         if self.render_mode != "rgb_array":
             gym.logger.warn("render() called without a render_mode; pass render_mode='rgb_array'")
             return None
-        if not self._was_reset:  # the copies hold no state yet (as gym.make's order check for the single env)
+        if not self._ever_reset.all():  # copies hold no state yet (as gym.make's order check for the single env)
             raise gym.error.ResetNeeded("render() before reset(): call reset() first")
         if self._renderer is None:
             self._renderer = self.task.renderer()

@@ -44,6 +44,13 @@ def status_texts(limit_text: str) -> dict[int, str]:
     return {SINGULAR: "singular mass matrix", NONFINITE: "non-finite state", LIMIT: limit_text}
 
 
+def copy_simulator(task, b: int):
+    """A simulator of copy ``b``'s state as it is (the family's own, else the task's snapshot, unchecked)."""
+    from laddermill_gym.sim.simulator import Simulator
+
+    return task.simulator(b) if hasattr(task, "simulator") else task._snapshot_simulator(Simulator, b, check=False)
+
+
 def integration_diagnosis(task, b: int) -> str:
     """Where copy ``b``'s integration broke down: its first non-finite state entry by name (wing, node or station
     quantity; the simulator refuses such a state, so a finite stand-in names it), else the simulator's diagnosis of
@@ -58,8 +65,7 @@ def integration_diagnosis(task, b: int) -> str:
             i = int(bad[0])
             names = Simulator(bt.assembly, np.nan_to_num(x), bt.settings, bt.controls[b])
             return f"{names.state_name(i)} = {x[i]} (state entry {i}; {bad.size} entries not finite)"
-        sim = task.simulator(b) if hasattr(task, "simulator") else task._snapshot_simulator(Simulator, b, check=False)
-        return sim.diagnose()
+        return copy_simulator(task, b).diagnose()
     except (ValueError, RuntimeError, AttributeError, IndexError) as err:  # the read-out must not hide the failure
         return f"no diagnosis of the state ({type(err).__name__}: {err})"
 
@@ -86,11 +92,8 @@ def shared_failure_text(task, b: int, code: int, statuses: dict[int, str]) -> st
 def _strongest_element(task, b: int) -> str:
     """" in element e" for the most loaded element of copy ``b``'s state (its tensions evaluated again by the
     simulator of that state: the same element loop as the observation's), or "" where they cannot be."""
-    from laddermill_gym.sim.simulator import Simulator
-
     try:
-        sim = task.simulator(b) if hasattr(task, "simulator") else task._snapshot_simulator(Simulator, b, check=False)
-        tensions = sim.tensions()
+        tensions = copy_simulator(task, b).tensions()
     except (ValueError, RuntimeError, AttributeError, IndexError):  # the read-out must not hide the failure
         return ""
     return f" in element {int(np.argmax(tensions))}" if tensions.size else ""

@@ -81,9 +81,16 @@ def _imported_files(index: dict[str, Path], match: re.Match) -> list[Path]:
     return [index[d] for d in dotted if d in index]
 
 
-def kernel_sources(root: Path = _PACKAGE) -> list[Path]:
-    """The package's files (sorted) that define cached kernels, closed under the package imports they make."""
-    texts = {p: p.read_text(encoding="utf-8", errors="replace") for p in root.rglob("*.py")}
+def _read_sources(root: Path) -> dict[Path, bytes]:
+    """The package's ``.py`` files at ``root`` and their bytes, sorted by path (read once per guard)."""
+    return {p: p.read_bytes() for p in sorted(root.rglob("*.py"))}
+
+
+def kernel_sources(root: Path = _PACKAGE, data: dict[Path, bytes] | None = None) -> list[Path]:
+    """The package's files (sorted) that define cached kernels, closed under the package imports they make
+    (``data``: the files' bytes as :func:`_read_sources` gives them, else read here)."""
+    data = _read_sources(root) if data is None else data
+    texts = {p: b.decode("utf-8", errors="replace") for p, b in data.items()}
     index = _module_index(root, texts)
     imports = re.compile(_IMPORT.format(re.escape(root.name)), re.M)
     todo = [p for p, text in texts.items() if "cache=True" in text]
@@ -98,20 +105,21 @@ def kernel_sources(root: Path = _PACKAGE) -> list[Path]:
     return sorted(found)
 
 
-def sources_digest(paths: list[Path], root: Path = _PACKAGE) -> str:
-    """SHA-256 (hex) of the files' paths relative to ``root`` and their bytes, in the given order."""
+def sources_digest(paths: list[Path], root: Path = _PACKAGE, data: dict[Path, bytes] | None = None) -> str:
+    """SHA-256 (hex) of the files' paths relative to ``root`` and their bytes (from ``data`` where it holds them),
+    in the given order."""
     digest = hashlib.sha256()
     for path in paths:
         digest.update(path.relative_to(root).as_posix().encode() + b"\0")
-        data = path.read_bytes()
-        digest.update(len(data).to_bytes(8, "little") + data)
+        data_ = data[path] if data is not None and path in data else path.read_bytes()
+        digest.update(len(data_).to_bytes(8, "little") + data_)
     return digest.hexdigest()
 
 
-def stamp_digest(paths: list[Path], root: Path = _PACKAGE) -> str:
+def stamp_digest(paths: list[Path], root: Path = _PACKAGE, data: dict[Path, bytes] | None = None) -> str:
     """The stamp a cache folder's entries were compiled under: SHA-256 (hex) of :func:`sources_digest` and
     :func:`codegen_settings`."""
-    return hashlib.sha256(f"{sources_digest(paths, root)} {codegen_settings()}".encode()).hexdigest()
+    return hashlib.sha256(f"{sources_digest(paths, root, data)} {codegen_settings()}".encode()).hexdigest()
 
 
 def codegen_settings() -> str:
@@ -179,11 +187,12 @@ def guard(root: Path = _PACKAGE) -> list[Path]:
     """Apply the rule above once to the package at ``root``; the folders whose entries were removed (empty when
     switched off)."""
     root = root.resolve()
-    _IMPORTED[root] = package_digest(root)
+    data = _read_sources(root)
+    _IMPORTED[root] = sources_digest(list(data), root, data)  # package_digest, from the same read
     if os.environ.get(SWITCH, "").strip().lower() == "off":
         return []
-    sources = kernel_sources(root)
-    digest = stamp_digest(sources, root)
+    sources = kernel_sources(root, data)
+    digest = stamp_digest(sources, root, data)
     _STAMPS[root] = digest
     install_locators()
     removed = []
