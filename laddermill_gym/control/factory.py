@@ -119,7 +119,8 @@ def _mill_controller(spec: str, kw: dict, env_id: str) -> Controller:
         options.pop("dimension", None)
         n = mill_scene(str(kw["scene"]), options_key(options), 3).assembly.n_wings
         n_act = action_count(n, kw.get("groups", "per_slot"), kw.get("n_bands", 4),
-                             kw.get("surfaces", CONTROL_NAMES), kw.get("generator_torque", False))
+                             kw.get("surfaces", CONTROL_NAMES), kw.get("generator_torque", False),
+                             kw.get("cable_speed_command", False))
         ctrl = OpenLoopController(np.zeros(n_act), np.zeros(n_act), np.ones(n_act))
         ctrl.obs_dim = N_OBS_PER_SLOT * n + N_STATION_OBS  # its default assumes the wing layout
         return ctrl

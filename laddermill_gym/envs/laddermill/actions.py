@@ -28,7 +28,8 @@ import numpy as np
 from laddermill_gym.envs.actions import ActionLayout, resolve_groups
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 
-__all__ = ["SLOT_GROUPINGS", "resolve_slot_groups", "action_count", "SlotActionMap"]
+__all__ = ["SLOT_GROUPINGS", "resolve_slot_groups", "action_count", "check_surfaces", "check_authority",
+           "SlotActionMap"]
 
 SLOT_GROUPINGS: tuple[str, ...] = ("per_slot", "all", "halves", "bands")
 
@@ -39,7 +40,8 @@ def resolve_slot_groups(groups, n_slots: int, n_bands: int = 4) -> tuple[tuple[i
     if isinstance(groups, str) and groups not in SLOT_GROUPINGS:
         raise ValueError(f"groups = {groups!r}: must be one of {SLOT_GROUPINGS} or a list of slot index lists")
     if groups == "bands":
-        if isinstance(n_bands, bool) or int(n_bands) != n_bands or not 1 <= n_bands <= n_slots // 2:
+        if (isinstance(n_bands, bool) or not isinstance(n_bands, (int, float, np.integer, np.floating))
+                or int(n_bands) != n_bands or not 1 <= n_bands <= n_slots // 2):
             raise ValueError(f"n_bands = {n_bands!r}: must be an integer in 1 .. n_slots // 2 = {n_slots // 2}")
         half = (n_slots + 1) // 2
         up = np.array_split(np.arange(half), int(n_bands))
@@ -49,9 +51,28 @@ def resolve_slot_groups(groups, n_slots: int, n_bands: int = 4) -> tuple[tuple[i
 
 
 def action_count(n_slots: int, groups="per_slot", n_bands: int = 4, surfaces=CONTROL_NAMES,
-                 generator_torque: bool = False) -> int:
-    """Number of action entries of a layout (without building the env or its operating point)."""
-    return len(resolve_slot_groups(groups, n_slots, n_bands)) * len(tuple(surfaces)) + int(bool(generator_torque))
+                 generator_torque: bool = False, cable_speed_command: bool = False) -> int:
+    """Number of action entries of a layout (without building the env or its operating point): one per group and
+    surface, and one for the station (the generator torque or the cable speed command) when either is on."""
+    station = bool(generator_torque) or bool(cable_speed_command)
+    return len(resolve_slot_groups(groups, n_slots, n_bands)) * len(check_surfaces(surfaces)) + int(station)
+
+
+def check_surfaces(surfaces) -> tuple[str, ...]:
+    """``surfaces`` as a tuple; ValueError naming it unless a non-empty subset of the tail surfaces without
+    repeats."""
+    surfaces = tuple(surfaces)
+    if not surfaces or len(set(surfaces)) != len(surfaces) or not set(surfaces) <= set(CONTROL_NAMES):
+        raise ValueError(f"surfaces = {surfaces!r}: a non-empty subset of {CONTROL_NAMES} without repeats")
+    return surfaces
+
+
+def check_authority(authority) -> float:
+    """``authority`` as a float; ValueError naming it unless a number in (0, 1]."""
+    if isinstance(authority, bool) or not isinstance(authority, (int, float)) or not 0.0 < authority <= 1.0:
+        raise ValueError(f"authority = {authority!r}: must be a number in (0, 1] (the share of each tail "
+                         "surface's half range one unit of action commands)")
+    return float(authority)
 
 
 class SlotActionMap:
@@ -71,12 +92,8 @@ class SlotActionMap:
 
     def __init__(self, assembly: Assembly, groups, surfaces, u_op: np.ndarray, torque_half_range: float | None,
                  authority: float = 1.0):
-        if isinstance(authority, bool) or not isinstance(authority, (int, float)) or not 0.0 < authority <= 1.0:
-            raise ValueError(f"authority = {authority!r}: must be a number in (0, 1] (the share of each tail "
-                             "surface's half range one unit of action commands)")
-        surfaces = tuple(surfaces)
-        if not surfaces or len(set(surfaces)) != len(surfaces) or not set(surfaces) <= set(CONTROL_NAMES):
-            raise ValueError(f"surfaces = {surfaces!r}: a non-empty subset of {CONTROL_NAMES} without repeats")
+        authority = check_authority(authority)
+        surfaces = check_surfaces(surfaces)
         self.surface_index = np.array(sorted(CONTROL_NAMES.index(s) for s in surfaces), dtype=np.int64)
         self.groups = tuple(tuple(g) for g in groups)
         n = assembly.n_wings

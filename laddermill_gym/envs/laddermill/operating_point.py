@@ -24,6 +24,7 @@ first element, stated in the note.
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import math
 import warnings
 from dataclasses import dataclass
@@ -31,16 +32,17 @@ from dataclasses import dataclass
 import numpy as np
 
 from laddermill_gym.envs.laddermill import op_cache
-from laddermill_gym.kernels.contract import SX_ENERGY, SX_MOVED, SX_SIZE, SX_SPEED, SX_TRANSFERS
+from laddermill_gym.kernels.contract import N_CONTROLS, SX_ENERGY, SX_MOVED, SX_SIZE, SX_SPEED, SX_TRANSFERS
 from laddermill_gym.ladder.periodic import run_to_periodic
 from laddermill_gym.ladder.scene import Scene, load_scene, options_kwargs
 from laddermill_gym.model.configio import ConfigError
+from laddermill_gym.model.disk_cache import feed
 from laddermill_gym.model.input_cache import input_cache
 from laddermill_gym.model.states import planar_to_3d
 from laddermill_gym.model.station import electrical_power
 
 __all__ = ["OperatingPoint", "SettleConfig", "compute_operating_point", "operating_point", "cached_operating_point",
-           "mill_scene", "nominal_positions", "operating_point_pending", "SEARCH_HOOK"]
+           "mill_scene", "scene_digest", "nominal_positions", "operating_point_pending", "SEARCH_HOOK"]
 
 #: a function (scene, options) that :func:`compute_operating_point` calls first, or None: LadderMill's kernel warm-up
 #: (``envs/laddermill/kernel_warmup.py``) compiles the search's kernels there while its second process compiles the
@@ -85,6 +87,8 @@ class OperatingPoint:
     orbit_positions : (m, n_wings, 3) CG positions per slot at those s [m] (y = 0: in plane).
     alpha_range_rad : (2,) smallest and largest angle of attack of any wing over the recorded period [rad].
     note : a sentence on how the point was found (convergence, settling time, reference power).
+    scene_digest : :func:`scene_digest` of the 3D scene it was found for ("" when the scene cannot be fingerprinted):
+    an env refuses a point of another scene, wing type, wind or station.
     """
 
     state: np.ndarray
@@ -102,6 +106,7 @@ class OperatingPoint:
     orbit_positions: np.ndarray
     alpha_range_rad: np.ndarray
     note: str
+    scene_digest: str
 
     @property
     def n_wings(self) -> int:
@@ -121,6 +126,38 @@ def mill_scene(scene: str, options: tuple, dimension: int = 3) -> Scene:
     if sc.assembly.station is None:
         raise ValueError(f"scene {sc.name!r}: LadderMill needs a scene with a moving cable (a 'station:' section)")
     return sc
+
+
+def scene_digest(sc: Scene) -> str:
+    """Hex SHA-256 of a scene as loaded (every field but its file's path: wings, cable, station, wind, initial
+    settings, integrator; ``model/disk_cache.feed``), or "" when a field cannot be fingerprinted."""
+    h = hashlib.sha256(b"laddermill operating point scene;")
+    try:
+        feed(h, sc, ("file",))
+    except TypeError:
+        return ""
+    return h.hexdigest()
+
+
+def _search_failure(sc2: Scene, options: tuple, what: str) -> ValueError:
+    """The error of an operating-point search that cannot give a start: the scene, its options and wind, and
+    ``what`` happened."""
+    a = sc2.assembly
+    opts = f", options {dict(options)}" if options else ""
+    return ValueError(f"LadderMill operating point of scene {sc2.name!r} ({a.n_wings} wings, wind v0 = {a.wind.v0:g} "
+                      f"m/s{opts}): {what}; no periodic start exists at these settings")
+
+
+def _check_rest_above_ground(sim, sc2: Scene, options: tuple) -> None:
+    """ValueError when a wing of the equilibrium at rest, the search's start, is at or below the ground (a wind
+    too weak to hold the chain up: the search would stop at its first step)."""
+    if sim.settings.ground_contact == "off":
+        return
+    height = -sim.wing_positions()[:, 2]
+    k = int(np.argmin(height))
+    if not height[k] > sim.settings.ground_height:
+        raise _search_failure(sc2, options, f"its equilibrium at rest has wing {k} at height {height[k]:.4g} m, "
+                                            f"at or below the ground ({sim.settings.ground_height:g} m)")
 
 
 def _record_period(sim, orbit_dt: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -154,14 +191,23 @@ def compute_operating_point(scene: str = "laddermill", options: tuple = (), sett
     if SEARCH_HOOK[0] is not None:  # LadderMill's kernel warm-up: the in-plane kernels compiled on two cores
         SEARCH_HOOK[0](scene, options)
     sim = sc2.simulator()
-    controls = sim.controls.copy()
-    # the tensions of the last period only (its mean tensions below; the same bits, a fifth less work per step)
-    res = run_to_periodic(sim, shape_tol=settle.shape_tol, power_tol=settle.power_tol, max_time=settle.max_time,
-                          progress=False, watch_every_period=False)
+    _check_rest_above_ground(sim, sc2, options)
+    controls = sim.controls[: N_CONTROLS * sc2.assembly.n_wings].copy()  # the tails' (not a drum's or commanded)
+    try:  # the tensions of the last period only (its mean tensions below; the same bits, a fifth less work per step)
+        res = run_to_periodic(sim, shape_tol=settle.shape_tol, power_tol=settle.power_tol, max_time=settle.max_time,
+                              progress=False, watch_every_period=False)
+    except RuntimeError as err:  # a breakdown (SimulationError) in the ramp, or no transfer: the cable not moving on
+        raise _search_failure(sc2, options, f"the in-plane mill found no periodic motion: {err}") from None
+    if res.breakdown is not None:
+        raise _search_failure(sc2, options, f"the in-plane mill broke down while looking for its periodic motion: "
+                                            f"{res.breakdown}")
     st = sc2.assembly.station
     e0 = sim.generator_energy()
     t0 = sim.t
-    moved, positions, alpha_range = _record_period(sim, settle.orbit_dt)
+    try:
+        moved, positions, alpha_range = _record_period(sim, settle.orbit_dt)
+    except RuntimeError as err:
+        raise _search_failure(sc2, options, f"the in-plane mill failed recording its period: {err}") from None
     mech = (sim.generator_energy() - e0) / (sim.t - t0)  # the recorded period's mean (energy integral, exact)
     v = sim.cable_speed()
     t_first, t_last = float(res.tension_mean_N[0]), float(res.tension_mean_N[-1])
@@ -192,7 +238,8 @@ def compute_operating_point(scene: str = "laddermill", options: tuple = (), sett
                         power_W=float(power), mechanical_power_W=float(mech), reference_power_W=float(p_ref),
                         tension_first_N=t_first, tension_last_N=t_last, converged=bool(res.converged),
                         t_settle_s=float(sim.t), orbit_moved=moved, orbit_positions=pos3,
-                        alpha_range_rad=alpha_range, note=note)
+                        alpha_range_rad=alpha_range, note=note,
+                        scene_digest=scene_digest(mill_scene(scene, options, 3)))
     if warn and not op.converged:
         warnings.warn(f"LadderMill operating point: {note}", RuntimeWarning, stacklevel=2)
     return op

@@ -16,7 +16,7 @@ import numpy as np
 
 from laddermill_gym.envs.actions import clip_actions
 from laddermill_gym.envs.laddermill import kernel_warmup
-from laddermill_gym.envs.laddermill.actions import SlotActionMap, resolve_slot_groups
+from laddermill_gym.envs.laddermill.actions import SlotActionMap, check_authority, check_surfaces, resolve_slot_groups
 from laddermill_gym.envs.laddermill.evaluate import evaluate_copies, failure_text
 from laddermill_gym.envs.laddermill.gust_extent import LoopExtent, check_turbulence_cover, extent, loop_points
 from laddermill_gym.envs.laddermill.observation import (
@@ -34,6 +34,7 @@ from laddermill_gym.envs.laddermill.operating_point import (
     nominal_positions,
     operating_point,
     operating_point_pending,
+    scene_digest,
 )
 from laddermill_gym.envs.laddermill.settings import (
     MILL_FAILURES,
@@ -123,6 +124,9 @@ class MillTask(TaskCore):
             raise ValueError("generator_torque and cable_speed_command: choose one station action")
         options = _scene_options(scene_options)
         self.scene = sc = mill_scene(str(scene), options, 3)
+        # the action settings are checked before the operating point's search (30-100 s for 101 wings)
+        slot_groups = resolve_slot_groups(groups, sc.assembly.n_wings, n_bands)
+        surfaces, authority = check_surfaces(surfaces), check_authority(authority)
         dt = sc.settings.dt  # the observation bounds' (the id's spaces whatever the physics step)
         # the physics step: the scene's, or physics_step / physics_dt (the operating point is the scene's either way)
         settings = env_physics_settings(sc.settings, physics_step, physics_dt, self.control_dt)
@@ -145,8 +149,7 @@ class MillTask(TaskCore):
             self.below = np.array([lay.piece_elements[k][-1] for k in range(n)], dtype=np.int64)
             self.ground = np.array([lay.piece_elements[0][0], lay.piece_elements[-1][-1]], dtype=np.int64)
             self._zero_nominal = np.zeros((n, 3))  # the kernel writes absolute positions; offsets: _compose
-            self.actions = SlotActionMap(asm, resolve_slot_groups(groups, n, n_bands), surfaces, self.u_op,
-                                         self.station_half_range, authority)
+            self.actions = SlotActionMap(asm, slot_groups, surfaces, self.u_op, self.station_half_range, authority)
             self.n_actions = self.actions.n_actions
             self.obs_dim = N_OBS_PER_SLOT * n + N_STATION_OBS
             self.slot_obs = np.zeros((B, N_OBS_PER_SLOT * n))
@@ -188,7 +191,8 @@ class MillTask(TaskCore):
             SEARCH_HOOK[0] = None
 
     def _operating_point(self, given, scene: str, options: tuple) -> OperatingPoint:
-        """The given operating point (checked against the scene) or the memoised one of (scene, options, settle)."""
+        """The given operating point (checked against the scene: its shapes, and its :func:`scene_digest` where
+        both have one) or the memoised one of (scene, options, settle)."""
         sc = self.scene
         if given is None:
             return operating_point(scene, options, self.settle)
@@ -198,6 +202,11 @@ class MillTask(TaskCore):
         if given.state.shape != (size,) or given.controls.shape != (N_CONTROLS * n,) or given.n_wings != n:
             raise ValueError(f"operating_point: state {given.state.shape} / controls {given.controls.shape} do not "
                              f"fit scene {sc.name} with {n} wings (state ({size},), controls ({N_CONTROLS * n},))")
+        digest = scene_digest(sc)
+        if digest and given.scene_digest and given.scene_digest != digest:
+            raise ValueError(f"operating_point: found for another scene, wing, wind or station than this env's "
+                             f"{sc.name!r} ({n} wings, wind v0 = {sc.assembly.wind.v0:g} m/s, options "
+                             f"{dict(options)}); the point's note: {given.note}")
         return given
 
     def _stable_step(self, asm, settings, physics_dt, control_dt):
@@ -279,7 +288,8 @@ class MillTask(TaskCore):
         station[:, STATION_OBS_INDEX["cable_speed"]] = self.cable_speed
         station[:, STATION_OBS_INDEX["cable_phase"]] = moved / st.piece_length
         station[:, STATION_OBS_INDEX["tension_difference"]] = dten
-        station[:, STATION_OBS_INDEX["power_ratio"]] = self.power / self.p_ref
+        # over the operating point's reference power, whatever the reward's normalisation
+        station[:, STATION_OBS_INDEX["power_ratio"]] = self.power / self.op.reference_power_W
         clip_observations(self.raw_obs, self.obs_low, self.obs_high, self.obs)
 
     # ------------------------------------------------------------------ episodes

@@ -21,7 +21,7 @@ def stand_in_point(scene, cable_speed: float):
     """An :class:`~laddermill_gym.envs.laddermill.operating_point.OperatingPoint` of the 3D ``scene``'s shapes for
     compiling only: the state zero but for unit quaternions, zero controls, ``cable_speed`` [m/s] > 0, unit powers
     and a two-sample orbit. Its values mean nothing and are never used for a result."""
-    from laddermill_gym.envs.laddermill.operating_point import OperatingPoint
+    from laddermill_gym.envs.laddermill.operating_point import OperatingPoint, scene_digest
     from laddermill_gym.kernels.contract import B3_QUAT, B3_SIZE, N_CONTROLS
 
     a = scene.assembly
@@ -34,7 +34,8 @@ def stand_in_point(scene, cable_speed: float):
         v.setflags(write=False)
     return OperatingPoint(cable_speed=cable_speed, period_s=l0 / cable_speed, power_W=1.0, mechanical_power_W=1.0,
                           reference_power_W=1.0, tension_first_N=1.0, tension_last_N=1.0, converged=True,
-                          t_settle_s=0.0, note="a stand-in for compiling the kernels (kernel_warmup.py)", **arrays)
+                          t_settle_s=0.0, note="a stand-in for compiling the kernels (kernel_warmup.py)",
+                          scene_digest=scene_digest(scene), **arrays)
 
 
 def compile_for(task_kwargs: dict) -> None:
