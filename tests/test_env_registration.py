@@ -98,7 +98,10 @@ def test_merge_arguments():
     defaults = {"a": 1, "d": {"x": 1, "y": {"p": 1, "q": 2}}, "e": {"k": 1}}
     given = {"a": 2, "d": {"y": {"q": 3}, "z": 4}, "e": None, "f": {"new": 1}}
     merged = merge_arguments(defaults, given)
-    assert merged == {"a": 2, "d": {"x": 1, "y": {"p": 1, "q": 3}, "z": 4}, "e": None, "f": {"new": 1}}
+    # None where the default is a dict keeps it (the envs read None as their defaults: Rotorcraft-v1's termination
+    # with None lost its blade limit); elsewhere None replaces, as any value
+    assert merged == {"a": 2, "d": {"x": 1, "y": {"p": 1, "q": 3}, "z": 4}, "e": {"k": 1}, "f": {"new": 1}}
+    assert merge_arguments({"a": 1}, {"a": None}) == {"a": None}
     assert defaults == {"a": 1, "d": {"x": 1, "y": {"p": 1, "q": 2}}, "e": {"k": 1}}  # inputs unchanged
     assert given == {"a": 2, "d": {"y": {"q": 3}, "z": 4}, "e": None, "f": {"new": 1}}
     out = registered_arguments(TW, {"scene_options": {"method": "rk4"}})

@@ -237,9 +237,13 @@ def env_arguments(env_id: str) -> tuple[str, ...]:
 
 def merge_arguments(defaults: Mapping, kwargs: Mapping) -> dict:
     """``defaults`` updated with ``kwargs`` (a new dict; neither is changed): where both hold a dict under the same
-    key, the two are merged the same way, at every depth; any other value in ``kwargs`` replaces the default."""
+    key, the two are merged the same way, at every depth; None where the default is a dict keeps the default (the
+    envs read None as "the defaults": ``termination=None`` on Rotorcraft-v1 dropped its ``blade_stall`` before); any
+    other value in ``kwargs`` replaces the default."""
     out = dict(defaults)
     for key, value in kwargs.items():
+        if value is None and isinstance(out.get(key), Mapping):
+            continue
         if isinstance(value, Mapping) and isinstance(out.get(key), Mapping):
             out[key] = merge_arguments(out[key], value)
         else:

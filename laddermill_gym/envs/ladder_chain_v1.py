@@ -2,7 +2,7 @@
 four of 12.5 ms (issue 32 point 3). The same scene, start, task, observations, actions and rewards as
 ``LadderChain-v0`` (:class:`~laddermill_gym.envs.task.WingTask`); what differs is registered with the id
 (``envs.ENV_IDS``): ``physics_step="rk4", physics_dt=1/60``. These classes carry the id's own page (docstring) and
-version history."""
+version history, and apply the id's registered defaults when built directly (``registered_id``)."""
 
 from __future__ import annotations
 
@@ -66,7 +66,11 @@ class LadderChainV1Env(WingEnv):
     * v0: initial version (``laddermill_gym/LadderChain-v0``, unchanged).
     """
 
+    registered_id = "laddermill_gym/LadderChain-v1"
+
 
 class LadderChainV1VectorEnv(WingVectorEnv):
     """``num_envs`` copies of :class:`LadderChainV1Env` in one batch (LadderChain-v0's
     :class:`~laddermill_gym.envs.wing_env.WingVectorEnv` with LadderChain-v1's registered defaults)."""
+
+    registered_id = "laddermill_gym/LadderChain-v1"

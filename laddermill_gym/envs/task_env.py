@@ -20,6 +20,7 @@ from typing import Any
 import gymnasium as gym
 import numpy as np
 
+from laddermill_gym.envs import registered_arguments
 from laddermill_gym.envs.actions import single_action
 from laddermill_gym.envs.render import TaskRendering
 from laddermill_gym.envs.task_base import refuse_reset_options
@@ -82,6 +83,9 @@ class TaskEnv(TaskRendering, gym.Env):
     """
 
     task_class: type
+    #: the id whose registered defaults the class itself applies (a versioned class: ``LadderMillV1Env()`` is
+    #: LadderMill-v1, as ``gymnasium.make`` builds it), or None (a family's class, shared by several ids)
+    registered_id: str | None = None
     metadata = {"render_modes": ["rgb_array", "human"], "render_fps": 20}
 
     def __init_subclass__(cls, **kwargs):
@@ -98,6 +102,8 @@ class TaskEnv(TaskRendering, gym.Env):
             raise ValueError(f"n_copies = {n!r}: a single env has one copy; for copies use gymnasium.make_vec(id, "
                              f"num_envs={n!r}, vectorization_mode='vector_entry_point')")
         task_kwargs.pop("max_episode_steps", None)
+        if self.registered_id is not None:
+            task_kwargs = registered_arguments(self.registered_id, task_kwargs)
         check_task_arguments(self.task_class, task_kwargs, vector=False)
         single = {"parallel": False} if "parallel" in task_arguments(self.task_class, True) else {}
         self.task = self.task_class(1, **single, **task_kwargs)

@@ -2,7 +2,7 @@
 one ROS34PW2 step of 50 ms (issue 31 point 4). The same scene, trim, task, observations, actions and rewards as
 ``TetheredWing-v0`` (:class:`~laddermill_gym.envs.task.WingTask`); what differs is registered with the id
 (``envs.ENV_IDS``): ``physics_step="rk4", physics_dt=0.025``. These classes carry the id's own page
-(docstring) and version history."""
+(docstring) and version history, and apply the id's registered defaults when built directly (``registered_id``)."""
 
 from __future__ import annotations
 
@@ -65,7 +65,11 @@ class TetheredWingV1Env(WingEnv):
     * v0: initial version (``laddermill_gym/TetheredWing-v0``, unchanged).
     """
 
+    registered_id = "laddermill_gym/TetheredWing-v1"
+
 
 class TetheredWingV1VectorEnv(WingVectorEnv):
     """``num_envs`` copies of :class:`TetheredWingV1Env` in one batch (TetheredWing-v0's
     :class:`~laddermill_gym.envs.wing_env.WingVectorEnv` with TetheredWing-v1's registered defaults)."""
+
+    registered_id = "laddermill_gym/TetheredWing-v1"

@@ -18,6 +18,7 @@ import numpy as np
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
+from laddermill_gym.envs import registered_arguments
 from laddermill_gym.envs.actions import action_array
 from laddermill_gym.envs.task_base import check_copies
 from laddermill_gym.envs.task_env import check_render_mode, check_task_arguments
@@ -63,12 +64,16 @@ class TaskVectorEnv(VectorEnv):
     """
 
     task_class: type
+    #: as the single env's (``envs/task_env.TaskEnv.registered_id``)
+    registered_id: str | None = None
     metadata = {"render_modes": ["rgb_array"], "render_fps": 20, "autoreset_mode": AutoresetMode.NEXT_STEP}
 
     def __init__(self, num_envs: int, render_mode: str | None = None,
                  autoreset_mode: AutoresetMode | str = AutoresetMode.NEXT_STEP, **task_kwargs):
         mode = check_vector_arguments(num_envs, render_mode, autoreset_mode, self.task_class)
         max_steps = task_kwargs.pop("max_episode_steps", None)
+        if self.registered_id is not None:
+            task_kwargs = registered_arguments(self.registered_id, task_kwargs)
         check_task_arguments(self.task_class, task_kwargs, vector=True)
         self.task = task = self.task_class(int(num_envs), **task_kwargs)
         if max_steps is not None:  # Gymnasium's step limit (the single env's TimeLimit wrapper), if shorter

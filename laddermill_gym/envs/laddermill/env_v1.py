@@ -2,7 +2,7 @@
 point 3). The same task, observations, actions and rewards as ``LadderMill-v0``
 (:class:`~laddermill_gym.envs.laddermill.task.MillTask`); what differs is registered with the id
 (``envs.ENV_IDS``): the scene ``laddermill_v1`` and ``authority=0.2``. These classes carry the id's own page
-(docstring) and version history."""
+(docstring) and version history, and apply the id's registered defaults when built directly (``registered_id``)."""
 
 from __future__ import annotations
 
@@ -97,10 +97,14 @@ STATION_TABLE
     * v0: initial version (``laddermill_gym/LadderMill-v0``, unchanged).
     """
 
+    registered_id = "laddermill_gym/LadderMill-v1"
+
 
 class LadderMillV1VectorEnv(LadderMillVectorEnv):
     """``num_envs`` copies of :class:`LadderMillV1Env` in one batch (LadderMill-v0's
     :class:`~laddermill_gym.envs.laddermill.env.LadderMillVectorEnv` with LadderMill-v1's registered defaults)."""
+
+    registered_id = "laddermill_gym/LadderMill-v1"
 
 
 LadderMillV1Env.__doc__ = (LadderMillV1Env.__doc__.replace("SLOT_TABLE", observation_table(SLOT_OBS_FIELDS, "15k + "))

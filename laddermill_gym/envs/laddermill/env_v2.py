@@ -2,7 +2,7 @@
 point 1 at 1-5 m/s). The same task, observations, actions and rewards as ``LadderMill-v0`` and ``-v1``
 (:class:`~laddermill_gym.envs.laddermill.task.MillTask`); what differs is registered with the id
 (``envs.ENV_IDS``): the scene ``laddermill_v2`` and ``authority=0.2`` (v1's). These classes carry the id's own page
-(docstring) and version history."""
+(docstring) and version history, and apply the id's registered defaults when built directly (``registered_id``)."""
 
 from __future__ import annotations
 
@@ -98,10 +98,14 @@ STATION_TABLE
     * v0: initial version (``laddermill_gym/LadderMill-v0``, unchanged).
     """
 
+    registered_id = "laddermill_gym/LadderMill-v2"
+
 
 class LadderMillV2VectorEnv(LadderMillVectorEnv):
     """``num_envs`` copies of :class:`LadderMillV2Env` in one batch (LadderMill-v0's
     :class:`~laddermill_gym.envs.laddermill.env.LadderMillVectorEnv` with LadderMill-v2's registered defaults)."""
+
+    registered_id = "laddermill_gym/LadderMill-v2"
 
 
 LadderMillV2Env.__doc__ = (LadderMillV2Env.__doc__.replace("SLOT_TABLE", observation_table(SLOT_OBS_FIELDS, "15k + "))

@@ -2,7 +2,7 @@
 32 point 3). The same scene, operating point, task, observations, actions and rewards as ``LadderMill-v2``
 (:class:`~laddermill_gym.envs.laddermill.task.MillTask`); what differs is registered with the id (``envs.ENV_IDS``):
 ``physics_step="ros2"`` instead of the scene's RK4 at 10 ms. These classes carry the id's own page (docstring) and
-version history."""
+version history, and apply the id's registered defaults when built directly (``registered_id``)."""
 
 from __future__ import annotations
 
@@ -71,7 +71,11 @@ class LadderMillV3Env(LadderMillV2Env):
     * v0: initial version (``laddermill_gym/LadderMill-v0``, unchanged).
     """
 
+    registered_id = "laddermill_gym/LadderMill-v3"
+
 
 class LadderMillV3VectorEnv(LadderMillVectorEnv):
     """``num_envs`` copies of :class:`LadderMillV3Env` in one batch (LadderMill-v0's
     :class:`~laddermill_gym.envs.laddermill.env.LadderMillVectorEnv` with LadderMill-v3's registered defaults)."""
+
+    registered_id = "laddermill_gym/LadderMill-v3"

@@ -2,13 +2,15 @@
 rotor's blade-incidence limit. The same craft, trim, task, observations, actions and rewards as ``Rotorcraft-v0``
 (:class:`~laddermill_gym.envs.rotorcraft.task.CraftTask`); what differs is registered with the id
 (``envs.ENV_IDS``): ``termination={"blade_stall": True}``. These classes carry the id's own page (docstring) and
-version history."""
+version history, and apply the id's registered defaults when built directly (``registered_id``)."""
 
 from __future__ import annotations
 
+import warnings
+
 from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv, RotorcraftVectorEnv
 
-__all__ = ["RotorcraftV1Env", "RotorcraftV1VectorEnv"]
+__all__ = ["RotorcraftV1Env", "RotorcraftV1VectorEnv", "warn_without_blade_limit"]
 
 
 class RotorcraftV1Env(RotorcraftEnv):
@@ -52,7 +54,8 @@ class RotorcraftV1Env(RotorcraftEnv):
 
     Rotorcraft-v0's (:class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftEnv`); registered: craft
     ``roberts_flying_model``, control_dt 0.05 s, episode_time 120 s, termination ``{"blade_stall": True}``.
-    ``termination={"blade_stall": False}`` makes it Rotorcraft-v0.
+    ``termination={"blade_stall": False}`` makes it Rotorcraft-v0, with a warning (so does a
+    ``RotorcraftTerminationConfig`` that leaves ``blade_stall`` at its False); ``termination=None`` is v1's.
 
     ## Version History
 
@@ -60,7 +63,27 @@ class RotorcraftV1Env(RotorcraftEnv):
     * v0: initial version (``laddermill_gym/Rotorcraft-v0``, unchanged).
     """
 
+    registered_id = "laddermill_gym/Rotorcraft-v1"
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        warn_without_blade_limit(self.task)
+
 
 class RotorcraftV1VectorEnv(RotorcraftVectorEnv):
     """``num_envs`` copies of :class:`RotorcraftV1Env` in one batch (Rotorcraft-v0's
     :class:`~laddermill_gym.envs.rotorcraft.env.RotorcraftVectorEnv` with Rotorcraft-v1's registered defaults)."""
+
+    registered_id = "laddermill_gym/Rotorcraft-v1"
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        warn_without_blade_limit(self.task)
+
+
+def warn_without_blade_limit(task) -> None:
+    """A UserWarning when the task's termination does not end episodes at the blade-incidence limit, Rotorcraft-v1's
+    one difference from Rotorcraft-v0 (a termination config built without ``blade_stall=True`` turns it off)."""
+    if not task.termination_config.blade_stall:
+        warnings.warn("Rotorcraft-v1 with termination.blade_stall off: the blade-incidence limit, v1's one difference "
+                      "from Rotorcraft-v0, does not end episodes", UserWarning, stacklevel=3)
