@@ -10,20 +10,28 @@ Every seed is one task of :mod:`laddermill_gym.studies.parallel` that calls
 (the numba warm-up). A run with a step budget (no ``--minutes``, or a limit it does not reach) gives the same
 run folder contents whichever way it ran; a time limit ends training at a step count that depends on the
 machine's speed. On a cluster the run folders are written on the node that trained the seed: give
-``--out-root`` a path on a file system every node shares. Prints one line per seed.
+``--out-root`` a path on a file system every node shares. Every worker reads the config in the caller's working
+directory (where it exists on the worker's node), so a relative path inside the config (``init_from:
+lqr:configs/agents/...``) names the caller's file there too. Prints one line per seed as it completes; a failed
+seed stops the start of others, lets the running ones finish, and is named with its run folder (exit status 1);
+Ctrl-C saves the running seeds' models and exits with 130.
 """
 
 from __future__ import annotations
 
 import argparse
 import dataclasses
+import os
 import sys
+import warnings
 from pathlib import Path
 
-from laddermill_gym.studies.commands import Command, UsageError
-from laddermill_gym.studies.parallel import Pool, add_arguments, check_arguments
+from tqdm import tqdm
 
-__all__ = ["train_task", "warm_envs", "train_seeds", "add_parser", "main"]
+from laddermill_gym.studies.commands import Command, UsageError, writable_folder
+from laddermill_gym.studies.parallel import Pool, TasksFailed, add_arguments, check_arguments
+
+__all__ = ["train_task", "warm_envs", "train_seeds", "TrainingInterrupted", "in_callers_folder", "add_parser", "main"]
 
 PROG = "laddermill train-seeds"
 
@@ -37,10 +45,28 @@ def _config(config: str, overrides: dict):
     return apply_overrides(load_rl_config(config), overrides)
 
 
-def warm_envs(config: str) -> None:
+class TrainingInterrupted(Exception):
+    """A seed's training stopped by Ctrl-C (its model saved): the batch stops, the command exits with 130."""
+
+
+def in_callers_folder(cwd: str | None) -> None:
+    """Change to the caller's working directory ``cwd`` (a Ray actor starts wherever ``ray start`` ran), where the
+    config's relative paths mean the caller's files; a RuntimeWarning where this node has no such folder."""
+    if cwd is None or os.getcwd() == cwd:
+        return
+    if Path(cwd).is_dir():
+        os.chdir(cwd)
+    else:
+        warnings.warn(f"the caller's working directory {cwd} is not on this node: relative paths in the config are "
+                      f"read from {os.getcwd()}", RuntimeWarning, stacklevel=2)
+
+
+def warm_envs(config: str, cwd: str | None = None) -> None:
     """The per-worker warm-up: build the config's training and evaluation envs and step each once (compiles
-    or loads their kernels)."""
+    or loads their kernels), in the caller's working directory ``cwd``."""
     import numpy as np
+
+    in_callers_folder(cwd)
 
     from laddermill_gym.control.rl_config import load_rl_config
     from laddermill_gym.harness.train import evaluation_env, training_env
@@ -56,27 +82,37 @@ def warm_envs(config: str) -> None:
     env.close()
 
 
-def train_task(config: str, seed: int, out: str, overrides: dict, command: list[str] | None = None) -> dict:
+def train_task(config: str, seed: int, out: str, overrides: dict, command: list[str] | None = None,
+               cwd: str | None = None) -> dict:
     """A picklable task: train ``config`` with ``seed`` and ``overrides`` (RLConfig fields) into ``out``, recording
-    ``command`` (the caller's command line; default this process's ``sys.argv``) in its ``run.yaml``; returns
-    :func:`~laddermill_gym.harness.train.train`'s summary with the seed and folder."""
+    ``command`` (the caller's command line; default this process's ``sys.argv``) in its ``run.yaml``, in the caller's
+    working directory ``cwd``; returns :func:`~laddermill_gym.harness.train.train`'s summary with the seed and
+    folder. TrainingInterrupted when Ctrl-C stopped it (the model saved)."""
     from laddermill_gym.harness.train import train
 
+    in_callers_folder(cwd)
     summary = train(_config(config, dict(overrides, seed=int(seed))), Path(out), command=command)
+    if summary.get("interrupted"):
+        raise TrainingInterrupted(f"stopped by Ctrl-C after {summary['steps']} steps, its model saved in {out}")
     return dict(summary, seed=int(seed), out=str(out))
 
 
 def train_seeds(config: str, seeds, out_root: Path, overrides: dict, workers: int = 0,
-                ray: str | None = None) -> list[dict]:
+                ray: str | None = None, on_result=None) -> list[dict]:
     """Train ``config`` once per seed (tasks in seed order; each run folder's ``run.yaml`` records this process's
-    command line, not the worker's); the summaries in that order."""
+    command line, not the worker's); the summaries in that order; ``on_result(summary)`` as each seed completes."""
     stem = Path(config).stem
     if Path(config).exists():  # Ray workers do not share the caller's working directory
         config = str(Path(config).resolve())
-    tasks = [(train_task, dict(config=config, seed=int(s), out=str((out_root / f"{stem}_seed{s}").resolve()),
-                               overrides=dict(overrides), command=list(sys.argv))) for s in seeds]
-    with Pool(min(workers, len(tasks)), ray, warmup=[(warm_envs, {"config": config})]) as pool:
-        return pool.run(tasks, desc=f"train {stem}", unit="seed")
+    cwd = os.getcwd()
+    outs = [str((out_root / f"{stem}_seed{s}").resolve()) for s in seeds]
+    tasks = [(train_task, dict(config=config, seed=int(s), out=o, overrides=dict(overrides), command=list(sys.argv),
+                               cwd=cwd)) for s, o in zip(seeds, outs, strict=True)]
+    labels = [f"seed {s} (run folder {o})" for s, o in zip(seeds, outs, strict=True)]
+    with Pool(min(workers, len(tasks)), ray, warmup=[(warm_envs, {"config": config, "cwd": cwd})],
+              cap=len(tasks)) as pool:
+        return pool.run(tasks, desc=f"train {stem}", unit="seed", labels=labels,
+                        on_result=None if on_result is None else lambda i, summary: on_result(summary))
 
 
 def _arguments(p: argparse.ArgumentParser) -> None:
@@ -116,9 +152,25 @@ def _run(args, prog: str = PROG) -> int:
     held = [str(f) for f in folders if any((f / name).exists() for name in RUN_FILES)]
     if held:  # laddermill train refuses a folder holding a run; here before any seed trains
         _fail(prog, f"--out-root {str(args.out_root)!r}: the run folders {held} exist already")
-    for s in train_seeds(args.config, args.seeds, args.out_root, over, args.workers, args.ray):
-        print(f"seed {s['seed']}: {s['steps']} steps in {s['minutes']} min; evaluation return best "
-              f"{s['best_eval_return']:.2f}, last {s['last_eval_return']:.2f}; run folder {s['out']}")
+    try:
+        writable_folder(args.out_root, "--out-root")
+    except UsageError as err:
+        _fail(prog, str(err))
+
+    def line(s: dict) -> None:
+        tqdm.write(f"seed {s['seed']}: {s['steps']} steps in {s['minutes']} min; evaluation return best "
+                   f"{s['best_eval_return']:.2f}, last {s['last_eval_return']:.2f}; run folder {s['out']}")
+
+    try:
+        train_seeds(args.config, args.seeds, args.out_root, over, args.workers, args.ray, on_result=line)
+    except ConnectionError as err:  # Ray's cluster not reached (ray.init): no seed has trained
+        _fail(prog, f"--ray {args.ray!r}: {err}")
+    except TasksFailed as err:  # the seeds that completed have had their line
+        if isinstance(err.__cause__, TrainingInterrupted):
+            print(f"{prog}: interrupted: {err}", file=sys.stderr)
+            return 130
+        print(f"{prog}: {err}", file=sys.stderr)
+        return 1
     return 0
 
 
@@ -130,4 +182,6 @@ main = COMMAND.main
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    from laddermill_gym.studies.commands import run_guarded
+
+    raise SystemExit(run_guarded("train-seeds", main))

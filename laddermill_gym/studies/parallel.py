@@ -41,8 +41,8 @@ from typing import Any
 
 from tqdm import tqdm
 
-__all__ = ["Task", "Pool", "run_tasks", "worker_report", "source_digest", "add_arguments", "check_arguments",
-           "RAY_HINT"]
+__all__ = ["Task", "Pool", "TasksFailed", "run_tasks", "worker_report", "source_digest", "add_arguments",
+           "check_arguments", "RAY_HINT"]
 
 #: One task: a module-level function and its keyword arguments (both picklable).
 Task = tuple[Callable[..., Any], dict]
@@ -123,10 +123,22 @@ def _warn(note: str) -> None:
         warnings.warn(note, RuntimeWarning, stacklevel=3)
 
 
-def _failed(index: int, task: Task, err: BaseException) -> RuntimeError:
+def _label(index: int, task: Task) -> str:
+    """A task's default name in a failure's report: its index, function and argument names."""
     fn, kw = task
-    return RuntimeError(f"task {index} ({fn.__module__}.{fn.__qualname__}, {sorted(kw)}) failed: "
-                        f"{type(err).__name__}: {err}")
+    return f"task {index} ({fn.__module__}.{fn.__qualname__}, {sorted(kw)})"
+
+
+class TasksFailed(RuntimeError):
+    """Tasks of a :meth:`Pool.run` batch failed (the message names each; the first one's exception is the cause)."""
+
+
+def _failed(failures: list, labels: list[str], done: int, total: int) -> TasksFailed:
+    """The error of a batch whose tasks ``failures`` ((index, exception), in the order they failed) failed; ``done``
+    of the ``total`` tasks completed."""
+    text = "; ".join(f"{labels[i]} failed: {type(err).__name__}: {err}" for i, err in failures)
+    return TasksFailed(f"{text} ({done} of {total} tasks completed; the others were not started)" if done < total
+                       - len(failures) else text)
 
 
 def _ray_module():
@@ -164,11 +176,16 @@ class Pool:
     warmup : sequence    tasks each worker runs once before its first task (serially: once, here)
     threads : int        numba threads per worker (default: this machine's cores / workers, at least 1; Ray
                          actors 1, their CPU share); serially numba's setting stays as it is
+    cap : int or None    at most this many Ray actors (the number of tasks: ``workers`` 0 with ``ray`` starts
+                         no more actors than there are tasks), None: no cap. More ``workers`` than the cluster has
+                         CPUs is refused (an actor beyond them would never start, and its tasks would wait forever).
     """
 
-    def __init__(self, workers: int = 0, ray: str | None = None, warmup=(), threads: int | None = None):
+    def __init__(self, workers: int = 0, ray: str | None = None, warmup=(), threads: int | None = None,
+                 cap: int | None = None):
         if not isinstance(workers, int) or isinstance(workers, bool) or workers < 0:
             raise ValueError(f"workers = {workers!r}: must be a whole number >= 0 (0: serial)")
+        self.cap = cap
         if threads is None and ray is not None:
             threads = 1
         elif threads is None and workers:
@@ -190,7 +207,15 @@ class Pool:
                 else:
                     self._ray.init(address=self.ray, logging_level="warning")
                 self._started_ray = True
-            n = self.workers or max(1, int(self._ray.cluster_resources().get("CPU", 1)))
+            cpus = int(self._ray.cluster_resources().get("CPU", 0))
+            if self.workers > cpus:  # an actor takes one CPU: those beyond the cluster's would never start
+                self.__exit__()
+                from laddermill_gym.studies.commands import UsageError
+
+                raise UsageError(f"--workers {self.workers}: the Ray cluster ({self.ray}) has {cpus} CPUs, one per "
+                                 "worker")
+            n = self.workers or max(1, cpus)
+            n = min(n, self.cap) if self.cap else n
             actor = self._ray.remote(num_cpus=1)(_RayWorker)
             self._actors = [actor.remote(*self._init) for _ in range(n)]
         elif self.workers:
@@ -208,56 +233,64 @@ class Pool:
         if self._started_ray:
             self._ray.shutdown()
 
-    def run(self, tasks, desc: str = "tasks", unit: str = "task", progress: bool = True) -> list:
+    def run(self, tasks, desc: str = "tasks", unit: str = "task", progress: bool = True, labels=None,
+            on_result: Callable[[int, Any], None] | None = None) -> list:
         """Run ``tasks`` (a sequence of :data:`Task`); their results in the order of ``tasks``, a progress bar
-        over completed tasks. Raises RuntimeError naming the task that failed (the batch's others cancelled)."""
+        over completed tasks; ``on_result(index, result)`` is called as each completes (a line per task that
+        stays on screen whatever the rest does). A failed task stops the start of new ones; the tasks running then
+        finish (and reach ``on_result``); then RuntimeError names every failed task by its ``labels`` entry
+        (default: index, function and argument names)."""
         tasks = [(fn, dict(kw)) for fn, kw in tasks]
+        labels = [_label(i, t) for i, t in enumerate(tasks)] if labels is None else [str(x) for x in labels]
         out: list = [None] * len(tasks)
+        failures, done = [], 0
         with tqdm(total=len(tasks), desc=desc, unit=unit, disable=not progress, smoothing=0.0) as bar:
-            for i, result, note in self._completed(tasks):
+            for i, result, note, err in self._completed(tasks):
+                if err is not None:
+                    failures.append((i, err))
+                    continue
                 _warn(note)
                 out[i] = result
+                done += 1
                 bar.update()
+                if on_result is not None:
+                    on_result(i, result)
+        if failures:
+            raise _failed(failures, labels, done, len(tasks)) from failures[0][1]
         return out
 
     def _completed(self, tasks):
-        """(index, result, note) of every task as it completes."""
-        if self._actors:
-            yield from self._ray_completed(tasks)
-        elif self._ex is not None:
-            futures = {self._ex.submit(_call, i, fn, kw): i for i, (fn, kw) in enumerate(tasks)}
-            for fut in cf.as_completed(futures):
-                try:
-                    yield fut.result()
-                except Exception as err:
-                    for f in futures:
-                        f.cancel()
-                    raise _failed(futures[fut], tasks[futures[fut]], err) from err
-        else:
+        """(index, result, note, None) of every task as it completes, (index, None, "", exception) of a failed one;
+        after a failure no task starts. Local processes and Ray actors get a task when one is free (so none waits
+        in a queue that a failure or Ctrl-C could not empty); serially, a failure ends the batch."""
+        if not (self._actors or self._ex is not None):
             for i, task in enumerate(tasks):
                 try:
-                    yield _call(i, *task)
+                    yield (*_call(i, *task), None)
                 except Exception as err:
-                    raise _failed(i, task, err) from err
-
-    def _ray_completed(self, tasks):
-        """Each actor takes the next task when it finishes one (its warm-up stays in its process)."""
-        ray, pending, queue = self._ray, {}, list(range(len(tasks)))[::-1]
-        for a in self._actors[:len(tasks)]:
-            i = queue.pop()
-            pending[a.call.remote(i, *tasks[i])] = (i, a)
-        while pending:
-            done, _ = ray.wait(list(pending), num_returns=1)
-            i, a = pending.pop(done[0])
-            try:
-                yield ray.get(done[0])
-            except Exception as err:
-                for ref in pending:
-                    ray.cancel(ref)
-                raise _failed(i, tasks[i], err) from err
-            if queue:
-                j = queue.pop()
-                pending[a.call.remote(j, *tasks[j])] = (j, a)
+                    yield i, None, "", err
+                    return
+            return
+        queue, running, failed = list(range(len(tasks)))[::-1], {}, False
+        free = list(self._actors) if self._actors else [None] * self.workers
+        while queue or running:
+            while queue and free and not failed:
+                i, slot = queue.pop(), free.pop()
+                ref = (slot.call.remote(i, *tasks[i]) if slot is not None else
+                       self._ex.submit(_call, i, *tasks[i]))
+                running[ref] = (i, slot)
+            if not running:
+                return
+            done = (self._ray.wait(list(running), num_returns=1)[0] if self._actors else
+                    cf.wait(running, return_when=cf.FIRST_COMPLETED)[0])
+            for ref in done:
+                i, slot = running.pop(ref)
+                free.append(slot)
+                try:
+                    yield (*(self._ray.get(ref) if self._actors else ref.result()), None)
+                except Exception as err:
+                    failed = True
+                    yield i, None, "", err
 
 
 def run_tasks(tasks, *, workers: int = 0, ray: str | None = None, warmup=(), threads: int | None = None,
@@ -270,7 +303,7 @@ def run_tasks(tasks, *, workers: int = 0, ray: str | None = None, warmup=(), thr
     if ray is None and workers > len(tasks):
         threads = threads or max(1, (os.cpu_count() or 1) // workers)
         workers = len(tasks)
-    with Pool(workers, ray, warmup, threads) as pool:
+    with Pool(workers, ray, warmup, threads, cap=len(tasks)) as pool:
         return pool.run(tasks, desc, unit, progress)
 
 
