@@ -38,7 +38,7 @@ def start_state(scene, args):
         x0, u0 = scene.initial_state()
         return x0, u0, 0.0
     if scene.assembly.station is None:
-        raise SystemExit(f"--start periodic needs a moving-cable scene (one with a station:), not {scene.name}")
+        raise UsageError(f"--start periodic needs a moving-cable scene (one with a station:), not {scene.name}")
     from laddermill_gym.ladder.periodic import periodic_start
 
     print("finding the periodic motion of the in-plane mill (the operating point) ...")
@@ -89,13 +89,20 @@ def _simulate_setup(args):
         raise UsageError(f"--time = {args.time!r} s: {err}") from None
     if warning:
         print(f"warning: {warning}", file=sys.stderr)
-    if args.direction_step and not args.step_time < args.time:
-        raise UsageError(f"--step-time = {args.step_time:g} s: the direction step would come at or after the end of "
-                         f"the run (--time = {args.time:g} s) and never act")
     per = max(1, int(round(args.sample_dt / scene.settings.dt)))
     if abs(per * scene.settings.dt - args.sample_dt) > 1e-9 * args.sample_dt:
         print(f"warning: --sample-dt = {args.sample_dt:g} s is not a whole number of physics steps of "
               f"{scene.settings.dt:g} s: recording every {per * scene.settings.dt:g} s", file=sys.stderr)
+    t_end = round(args.time / (per * scene.settings.dt)) * per * scene.settings.dt  # the recording's whole samples
+    if not t_end > 0:
+        raise UsageError(f"--time = {args.time:g} s: shorter than half a sample interval ({per * scene.settings.dt:g} "
+                         "s, --sample-dt): nothing would be simulated")
+    if abs(t_end - args.time) > 1e-9 * args.time:
+        print(f"warning: --time = {args.time:g} s is not a whole number of sample intervals of "
+              f"{per * scene.settings.dt:g} s (--sample-dt): simulating {t_end:g} s", file=sys.stderr)
+    if args.direction_step and not args.step_time < t_end:
+        raise UsageError(f"--step-time = {args.step_time:g} s: the direction step would come at or after the end of "
+                         f"the run ({t_end:g} s, --time {args.time:g} s) and never act")
     x0, u0, t_start = start_state(scene, args)
     asm = scene.assembly
     if args.direction_step:
@@ -110,6 +117,11 @@ def _simulate_setup(args):
             ground_height=g.ground_height if args.ground_height is None else args.ground_height))
     sim = scene.simulator(x0, u0)
     sim.reset(x0, t=t_start, controls=u0)
+    if sim.settings.ground_contact != "off":  # a start at or below the ground would end (or flag) at once
+        from laddermill_gym.sim.reports import start_below_ground
+
+        if below := start_below_ground(sim):
+            raise UsageError(below + (" (--ground-height)" if args.ground_height is not None else ""))
     return scene, sim
 
 
@@ -131,9 +143,9 @@ def cmd_simulate(args) -> int:
     rec = record(sim, args.time, args.sample_dt, progress=not args.quiet, interruptible=True)
     wall = time.perf_counter() - t1
     stem = out / scene.name
-    files = [rec.save_npz(stem.with_suffix(".npz"))]
+    files = [rec.save_npz(Path(f"{stem}.npz"))]  # not with_suffix: a scene named wing_v2.5 kept wing_v2
     if args.csv:
-        files.append(rec.save_csv(stem.with_suffix(".csv")))
+        files.append(rec.save_csv(Path(f"{stem}.csv")))
     title = f"{scene.name}: {asm.n_wings} wings, {rec.t[-1]:.1f} s"
     files.append(plot_shape(rec, Path(f"{stem}_shape.png"), title, asm=asm))
     files.append(plot_histories(rec, Path(f"{stem}_histories.png"), title))

@@ -114,7 +114,8 @@ def test_an_impossible_equilibrium_names_the_file_and_the_settings():
 def test_a_step_that_cannot_work_is_refused_at_load(scene, dt):
     """Oracle: the stiffest element's axial frequency, sqrt(EA / l0 (1/m_r + 1/m_s)), and RK4's 2.83 bound; a step
     over twice that bound is refused naming the field, while the scenes' own steps load."""
-    with pytest.raises(ConfigError, match=rf"field 'integrator.dt' = {dt!r} s cannot work with RK4"):
+    with pytest.raises(ConfigError, match=rf"field 'integrator.dt' = {dt!r} s with the overrides dt = {dt!r} cannot "
+                                          r"work with RK4"):  # the override named: the file's own step is another
         load_scene(scene, dt=dt)
     load_scene(scene)
 

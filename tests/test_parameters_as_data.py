@@ -36,7 +36,8 @@ def test_bad_overrides_name_the_field():
         gym.make(TW, scene_options={"elements_per_piece": 1, "overrides": {"wind": {"v0": -1.0}}})
     with pytest.raises(ConfigError, match=r"unknown field 'wind.speed'"):
         gym.make(TW, scene_options={"elements_per_piece": 1, "overrides": {"wind": {"speed": 9.0}}})
-    with pytest.raises(ConfigError, match=r"field 'integrator.dt' = 0.05 s cannot work with RK4"):
+    with pytest.raises(ConfigError, match=r"field 'integrator.dt' = 0.05 s with the overrides dt = 0.05, method = "
+                                          r"'rk4', elements_per_piece = 2 cannot work with RK4"):
         # two elements on RK4 at 50 ms (the registered options, one element on ROS34PW2, merge in unless replaced)
         gym.make(TW, scene_options={"elements_per_piece": 2, "method": "rk4", "overrides": {"wind": {"v0": 10.0}}})
 

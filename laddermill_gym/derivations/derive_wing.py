@@ -209,7 +209,7 @@ def print_quoted_extras(tm: TableModel, wing: Wing) -> None:
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--out-dir", default="configs/wings")
     ap.add_argument("--check", action="store_true", help="print the design checks")
     ap.add_argument("--variant", choices=sorted(VARIANTS), default="v0",

@@ -223,7 +223,9 @@ RESULT_FILES = ("summary.csv", "lateral.csv", "lateral.png")
 
 
 def _arguments(p: Parser) -> None:
-    p.add_argument("--env", default="laddermill_gym/TetheredWing-v0", choices=sorted(ENV_IDS))
+    p.add_argument("--env", default="laddermill_gym/TetheredWing-v0", choices=sorted(ENV_IDS), metavar="ID",
+                   help="a registered id (default laddermill_gym/TetheredWing-v0; a shipped policy's own id for it: "
+                        "--env laddermill_gym/LadderMill-v1 --controllers ppo_mill)")
     p.add_argument("--controllers", nargs="+", default=["open_loop", "lqr"],
                    help="each one of: open_loop (trim controls held); lqr (the environment's default design in "
                    "configs/agents/lqr_<scene>.yaml); lqr:PATH (an LQR config file); a shipped policy's name; a "

@@ -32,7 +32,7 @@ from laddermill_gym.control.lqr import (
 from laddermill_gym.control.open_loop import OpenLoopController
 from laddermill_gym.control.rollout import run_direction_step
 from laddermill_gym.ladder.scene import load_scene
-from laddermill_gym.studies.commands import Parser, check_number
+from laddermill_gym.studies.commands import Parser, check_number, run_guarded, writable_folder
 
 
 def report_single(design) -> str:
@@ -153,11 +153,17 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--config", default=str(DEFAULT_CONFIG), help="configs/agents/lqr_*.yaml")
     p.add_argument("--full-check", action="store_true", help="chain: close the loop on the full coupled model")
     p.add_argument("--rollout", type=float, metavar="T", help="[s] fly open loop and LQR on the simulator")
-    p.add_argument("--step", type=float, default=0.01, help="[rad] wind-direction step at 1 s (default 0.01)")
-    p.add_argument("--out", type=Path, default=Path("results") / "lqr")
+    p.add_argument("--step", type=float, default=None, help="[rad] with --rollout: wind-direction step at 1 s "
+                   "(default 0.01)")
+    p.add_argument("--out", type=Path, default=None, help="with --rollout: folder for lqr_rollout.png and .csv "
+                   "(default results/lqr)")
     args = p.parse_args(argv)
     check_number("--rollout", args.rollout, low=0, high=86400, unit="s")
     check_number("--step", args.step, low=-3.15, high=3.15, unit="rad")
+    if args.rollout is None and (args.step is not None or args.out is not None):
+        p.error(f"{'--step' if args.step is not None else '--out'} is --rollout's: without it nothing is flown")
+    args.step = 0.01 if args.step is None else args.step
+    args.out = Path("results") / "lqr" if args.out is None else args.out
     if _is_craft_config(args.config):
         if args.rollout or args.full_check:
             p.error("a rotorcraft's LQR: --rollout and --full-check are the wings'; fly it with laddermill evaluate "
@@ -173,6 +179,11 @@ def main(argv: list[str] | None = None) -> int:
         print(report_mill(cfg))
         return 0
     chain = sc.assembly.n_wings > 1
+    if args.full_check and not chain:
+        p.error(f"--full-check closes a chain's loop on its full coupled model; {args.config} designs one wing, whose "
+                "report is its full model's already")
+    if args.rollout:
+        writable_folder(args.out)  # a bad folder named before the design and the runs
     design = design_ladder_chain(cfg, sc) if chain else design_tethered_wing(cfg, sc)
     print(report_chain(design, args.full_check) if chain else report_single(design))
     if args.rollout:
@@ -185,4 +196,4 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(run_guarded("lqr", main))

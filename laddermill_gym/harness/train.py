@@ -35,7 +35,7 @@ from tqdm import tqdm
 from laddermill_gym.control.rl_config import RLConfig, load_rl_config, read_hyperparameters
 from laddermill_gym.model.configio import ConfigError, Section
 from laddermill_gym.sim.interrupt import stop_requests
-from laddermill_gym.studies.commands import Parser, UsageError, check_number
+from laddermill_gym.studies.commands import Parser, UsageError, check_number, writable_folder
 
 
 def _evaluate(policy, env, n_episodes: int) -> tuple[np.ndarray, np.ndarray]:
@@ -360,6 +360,10 @@ def main(argv: list[str] | None = None) -> int:
         p.error(str(err))
     out = args.out or Path("runs") / f"{Path(args.config).stem}_seed{cfg.seed}"
     try:
+        writable_folder(out)  # a bad folder named now, not after the model and its envs are built
+    except UsageError as err:
+        p.error(str(err))
+    try:
         summary = train(cfg, out, threads)
     except FileExistsError as err:
         p.error(f"--out {str(out)!r}: {err}")
@@ -376,4 +380,6 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from laddermill_gym.studies.commands import run_guarded
+
+    raise SystemExit(run_guarded("train", main))

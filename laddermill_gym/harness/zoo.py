@@ -161,4 +161,6 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from laddermill_gym.studies.commands import run_guarded
+
+    raise SystemExit(run_guarded("zoo", main))

@@ -125,11 +125,12 @@ class Scene:
         return dataclasses.replace(self, **changes)
 
 
-def _refuse_impossible_step(asm: Assembly, settings: IntegratorSettings, path: Path) -> None:
+def _refuse_impossible_step(asm: Assembly, settings: IntegratorSettings, path: Path, given: str = "") -> None:
     """ConfigError if an RK4 step is more than twice the stability bound of the stiffest cable element's axial
     oscillation, omega^2 = (EA / l0) (1/m_r + 1/m_s), the end masses lumped (a wing's or node's own mass plus half of
     each attached element's; a fixed end infinite) and RK4's bound on the imaginary axis omega dt = 2.83. A cheap,
-    geometry-only check against values that cannot work; the precise limit is ``laddermill stable-step``'s."""
+    geometry-only check against values that cannot work; the precise limit is ``laddermill stable-step``'s.
+    ``given``: the loader's overrides in effect (named in the error, where they and not the file set the step)."""
     e = asm.elements
     if settings.method != "rk4" or e.count == 0:
         return
@@ -149,10 +150,11 @@ def _refuse_impossible_step(asm: Assembly, settings: IntegratorSettings, path: P
     j = int(np.argmax(omega))
     bound = 2.83 / omega[j]
     if settings.dt > 2.0 * bound:
-        raise ConfigError(f"{path}: field 'integrator.dt' = {settings.dt!r} s cannot work with RK4: the stiffest cable "
-                          f"element ({j}, EA / l0 = {e.EA[j] / e.l0[j]:.3g} N/m) oscillates at {omega[j]:.4g} rad/s, "
-                          f"stable up to about {bound:.3g} s (refused above twice that; the precise limit: "
-                          "laddermill stable-step SCENE)")
+        with_given = f" with the overrides {given}" if given else ""
+        raise ConfigError(f"{path}: field 'integrator.dt' = {settings.dt!r} s{with_given} cannot work with RK4: the "
+                          f"stiffest cable element ({j}, EA / l0 = {e.EA[j] / e.l0[j]:.3g} N/m) oscillates at "
+                          f"{omega[j]:.4g} rad/s, stable up to about {bound:.3g} s (refused above twice that; the "
+                          "precise limit: laddermill stable-step SCENE)")
 
 
 def _chain(s: Section):
@@ -323,7 +325,9 @@ def read_rigid(s: Section, path: Path, *, dimension: int | None = None, sag: boo
                               dim=dim, sag=sag_on, cable_aero=caero_on, gravity=gravity)
     if station is not None:
         asm = dataclasses.replace(asm, station=station)
-    _refuse_impossible_step(asm, settings, path)
+    given = ", ".join(f"{k} = {v!r}" for k, v in (("dt", dt), ("method", method),
+                                                   ("elements_per_piece", elements_per_piece)) if v is not None)
+    _refuse_impossible_step(asm, settings, path, given)
     _check_step_override(path, dt)
     return Scene(name=name, file=path, description=desc, assembly=asm, layout=layout, cable=cable,
                  ground_points=points, start=start, end=end, piece_length=piece, initial=init, settings=settings)

@@ -95,7 +95,9 @@ class Section:
         self.file = str(file)
         self.path = path
         if not isinstance(data, dict):
-            raise ConfigError(f"{self.file}: {path or 'top level'} must be a mapping, got {data!r}")
+            shown = repr(data) if len(repr(data)) <= 80 else repr(data)[:77] + "..."  # not a whole wrong file
+            raise ConfigError(f"{self.file}: {path or 'top level'} must be a mapping, got {type(data).__name__} "
+                              f"{shown}")
         self.data = data
         self.used: set[str] = set()
 
@@ -240,5 +242,11 @@ def read_yaml(path: Path | str) -> Section:
     if not path.is_file():
         raise ConfigError(f"{path}: no such file")
     note_read(path)  # an in-process cache keyed on a file name checks these bytes on a hit (model/input_cache.py)
-    data = load_yaml_text(path.read_text(encoding="utf-8"), str(path))
+    try:
+        text = path.read_text(encoding="utf-8")
+    except UnicodeDecodeError as err:  # an image or another binary file given for a config
+        raise ConfigError(f"{path}: not a UTF-8 text YAML file (byte {err.start}: {err.reason})") from None
+    except OSError as err:
+        raise ConfigError(f"{path}: cannot be read ({err.strerror or err})") from None
+    data = load_yaml_text(text, str(path))
     return Section(data if data is not None else {}, path)

@@ -100,6 +100,21 @@ def _evaluation_wind(spec: str, fmt: str):
         _fail(f"--wind {spec!r}: {err}")
 
 
+def _check_turbine_type(name: str) -> None:
+    """Exit 2 naming ``--turbine`` unless windpowerlib's library has a power curve for the type ``name``."""
+    from laddermill_gym.quasisteady.turbine import turbine_library
+
+    try:
+        lib = turbine_library()
+    except ImportError as err:
+        _fail(f"--turbine {name!r}: {err} (or --no-turbine)")
+    known = set(lib[lib["has_power_curve"]]["turbine_type"])
+    if name not in known:
+        near = sorted(t for t in known if name.split("/")[0].lower() in t.lower())[:5]
+        _fail(f"--turbine {name!r}: not a windpowerlib turbine type with a power curve"
+              + (f" (of that maker: {', '.join(near)})" if near else " ('auto' picks the nearest rated power)"))
+
+
 def _fail(message: str):
     print(f"laddermill site: error: {message}", file=sys.stderr)
     raise SystemExit(2)
@@ -138,12 +153,16 @@ def run(args) -> int:
     base = {"table1": dataclasses.replace(TABLE1, k1=args.k1, power_target=args.power_mw * 1e6),
             "table2": dataclasses.replace(TABLE2, power_target=args.power_mw * 1e6)}
     tables, record, files, yields = {c: {} for c in args.case}, {}, [], []
-    for spec in args.wind:
+    if not args.no_turbine and args.turbine != "auto":
+        _check_turbine_type(args.turbine)
+    winds = {}
+    for spec in args.wind:  # every data set read and checked before the first optimisation
         try:
-            wind = load_wind(spec, args.format)
+            winds[spec] = load_wind(spec, args.format)
         except (SiteWindError, ValueError) as err:
             _fail(f"--wind {spec!r}: {err}")
-        _check_heights(spec, wind, base, args)
+        _check_heights(spec, winds[spec], base, args)
+    for spec, wind in winds.items():
         print(f"{spec}: {wind.n} wind states, {wind.heights[0]:g}-{wind.heights[-1]:g} m ({wind.source})")
         for cname in args.case:
             case = base[cname]

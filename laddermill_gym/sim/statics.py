@@ -234,9 +234,15 @@ def trim_alpha(sim, x_guess: np.ndarray, alpha: float, wing: int = 0, t: float =
         sim.t = t
         return s * np.concatenate([acc, [sim.wing_alpha_beta()[wing, 0] - alpha]])
 
+    def measure(z):  # the acceptance measure in REST_ACCELERATION's units: the worse of the two
+        f = resid(z) / s
+        return max(_unbalanced(sim, f[:-1], True), abs(f[-1]) * REST_ACCELERATION / TRIM_ALPHA_TOL)
+
     keep = sim.state.copy(), sim.t
     try:
         z, r, msg = _newton(resid, z0, 1e-12)
+        if scaled and measure(z) > REST_ACCELERATION:  # hybrd stopped short (a fine cable: 40 elements): polish
+            z, _ = _polish(resid, measure, z)
         f = resid(z) / s
     finally:
         sim.state[:], sim.t = keep

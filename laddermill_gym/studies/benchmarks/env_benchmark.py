@@ -193,7 +193,12 @@ def bench_envs_command(args) -> int:
     if unknown:
         raise UsageError(f"--envs = {unknown[0]!r}: not one of {', '.join(ENVS)}")
     if not args.threads:
-        run_env_benchmark(quick=args.quick, json_path=args.json, envs=args.envs, copies=args.copies)
+        try:
+            run_env_benchmark(quick=args.quick, json_path=args.json, envs=args.envs, copies=args.copies)
+        except ValueError as err:  # the batch's memory check (sim/batch.py) on a --copies count: no traceback
+            if not str(err).startswith("n_copies = "):
+                raise
+            raise UsageError(f"--copies {args.copies}: {err}") from None
         return 0
     import numba
 

@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 from tqdm import tqdm
 
-from laddermill_gym.studies.commands import Parser, UsageError, check_controllers, check_number
+from laddermill_gym.studies.commands import Parser, UsageError, check_controllers, check_number, writable_folder
 from laddermill_gym.studies.controller_specs import build_controllers
 
 __all__ = ["DEFAULT_ENV", "STEP", "STEP_TIME", "ControlRun", "default_controllers", "run_demo", "plot_demo",
@@ -252,11 +252,11 @@ def main(argv: list[str] | None = None) -> int:
         t0 = time.perf_counter()
         # every controller built and checked against the env before any mill is flown (a refused one: one line)
         built = build_controllers(args.controllers, args.env, option="--controllers")
+        writable_folder(args.out)  # a bad folder named now, not after the runs
     except UsageError as err:
         p.error(str(err))
     runs = run_demo(args.env, args.controllers, args.time, frames_per_s=0.0 if args.no_gif else 1.0,
                     progress=not args.no_progress, built=built)
-    args.out.mkdir(parents=True, exist_ok=True)
     print(f"{args.env}: the paper's {STEP} rad wind-direction step at t = {STEP_TIME:g} s, from the periodic "
           "operating point")
     print(f"{'controller':<16}{'flew after the step [s]':>24}{'mean power [kW]':>17}{'max |dy| [m]':>14}  end")

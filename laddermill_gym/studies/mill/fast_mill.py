@@ -132,7 +132,7 @@ def drift(speed: float, ramp: float, duration: float, every: float, top_slots: i
 
 
 def main(argv=None) -> int:
-    p = Parser(prog="python -m laddermill_gym.studies.mill.fast_mill", description=__doc__.splitlines()[0])
+    p = Parser(prog="python -m laddermill_gym.studies.mill.fast_mill", description=__doc__.split("\n\n")[0])
     p.add_argument("what", choices=("case", "drift", "step"))
     p.add_argument("--new-speed", type=float, default=None, help="step: cable speed after the step [m/s]")
     p.add_argument("--wind-factor", type=float, default=1.0, help="step: wind profile scaled by [-]")

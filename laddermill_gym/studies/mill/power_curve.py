@@ -45,6 +45,7 @@ import numpy as np
 from laddermill_gym.studies import parallel
 from laddermill_gym.studies.commands import Parser, UsageError, check_number, writable_folder
 from laddermill_gym.studies.mill import vc_search
+from laddermill_gym.studies.mill.power_curve_plot import plot_power_curve
 from laddermill_gym.studies.mill.tail_schedule import RULES, tail_rule
 
 SCENES = ("laddermill_v2", "laddermill_v1")  # the first: the default (periodic over the paper's 1-5 m/s)
@@ -216,51 +217,6 @@ def replay(cfg: Config, metas: list[dict], names: list[str]) -> tuple[list[dict]
     return rows, best_per_wind(rows)
 
 
-def _plot(path: Path, cfg: Config, rows: list[dict], best: list[dict]) -> None:
-    """Power against V_c at the paper's wind (left); the best power and V_c per wind (right)."""
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=(11, 4.2))
-    ax1, ax2 = fig.subplots(1, 2)
-    paper = [r for r in rows if r["v0_m_s"] == PAPER_V0 and r["v_c_m_s"] in cfg.speeds]
-    for sel, mk, lab in (([r for r in paper if r["periodic"]], "o-", "periodic"),
-                         ([r for r in paper if not r["periodic"] and not r["breakdown"]], "x",
-                          "not periodic (last period)")):
-        if sel:
-            ax1.plot([r["v_c_m_s"] for r in sel], [r["power_kW"] for r in sel], mk, label=lab)
-    broke = [r for r in paper if r["breakdown"]]
-    if broke:
-        ax1.plot([r["v_c_m_s"] for r in broke], [0.0] * len(broke), "v", color="C3", label="broke down (at 0)")
-    ax1.axhline(PAPER_POWER_W / 1e3, color="grey", ls="--", label="paper: of the order of 200 kW")
-    ax1.set(xlabel="cable speed V_c [m/s]", ylabel="mean electrical power [kW]",
-            title=f"{cfg.scene}, in plane, V0 = {PAPER_V0:g} m/s")
-    ax1.legend(fontsize=8)
-    okb = [b for b in best if b["power_kW"] is not None]
-    over = [r for r in rows if r["periodic"] and not r["within_limit"]]
-    if over:
-        ax2.plot([r["v0_m_s"] for r in over], [r["power_kW"] for r in over], "x", color="grey",
-                 label="periodic, tension over the limit")
-    ax2.plot([b["v0_m_s"] for b in okb], [b["power_kW"] for b in okb], "o-", color="C0", label="best within the limit")
-    none = [b["v0_m_s"] for b in best if b["power_kW"] is None]
-    if none:
-        ax2.plot(none, [0.0] * len(none), "v", color="C3", label="no periodic case within the limit")
-    ax2.legend(fontsize=8)
-    ax2.set(xlabel="wind speed V0 at 50 m [m/s]", ylabel="best mean power [kW]",
-            title=f"best V_c per wind ({_grid_text(cfg)}), tail rule '{cfg.tail}'")
-    ax3 = ax2.twinx()
-    ax3.plot([b["v0_m_s"] for b in okb], [b["best_v_c_m_s"] for b in okb], "s--", color="C1")
-    ax3.set_ylabel("best V_c [m/s]", color="C1")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-
-
-def _grid_text(cfg: Config) -> str:
-    """The search per wind in words: the adaptive rule or the fixed grid's range."""
-    if cfg.wind_speeds is None:
-        return "adaptive V_c search"
-    return f"V_c {min(cfg.wind_speeds):g}-{max(cfg.wind_speeds):g} m/s"
-
-
 def write(out: Path, cfg: Config, rows: list[dict], best: list[dict]) -> list[Path]:
     """CSV, JSON and PNG under ``out``; returns the paths."""
     out.mkdir(parents=True, exist_ok=True)
@@ -277,7 +233,7 @@ def write(out: Path, cfg: Config, rows: list[dict], best: list[dict]) -> list[Pa
                                      "(8 / V0)^2 ascending, (8 / V0)^1.75 descending (tail_rule)"}[cfg.tail],
             "rows": rows, "best_per_wind": best}
     paths[1].write_text(json.dumps(meta, indent=1), encoding="utf-8")
-    _plot(paths[2], cfg, rows, best)
+    plot_power_curve(paths[2], cfg, rows, best, PAPER_V0, PAPER_POWER_W)
     return paths
 
 
@@ -340,7 +296,7 @@ def merge_tables(metas: list[dict]) -> tuple[Config, list[dict]]:
 
 
 def main(argv=None) -> int:
-    p = Parser(prog="laddermill power-curve", description=__doc__.splitlines()[0])
+    p = Parser(prog="laddermill power-curve", description=__doc__.split("\n\n")[0])
     p.add_argument("--out", default="results/power_curve", help="output folder (CSV, JSON, PNG)")
     p.add_argument("--scene", choices=SCENES, default=SCENE,
                    help=f"the mill (default {SCENE}: periodic over the paper's 1-5 m/s; laddermill_v1: 0.5-2 m/s)")
@@ -370,17 +326,20 @@ def main(argv=None) -> int:
     args = p.parse_args(argv)
     parallel.check_arguments(args, p.prog)
     try:
+        if args.table is not None and args.replay is not None:
+            raise UsageError("--table and --replay: give one (--table redraws earlier runs, --replay walks a run "
+                             "over them)")
         cfg = _config(args)
         writable_folder(args.out)  # a bad folder named before the cases, not after them
+        earlier = _earlier_runs("--table" if args.table is not None else "--replay", args.table or args.replay or [])
     except UsageError as err:
         p.error(str(err))
     if args.table is not None:  # the rows of an earlier run, printed and drawn again
-        cfg, rows = merge_tables([json.loads(Path(f).read_text(encoding="utf-8")) for f in args.table])
+        cfg, rows = merge_tables(earlier)
         best = best_per_wind(rows)
     elif args.replay is not None:  # this run, its cases looked up in earlier runs
         try:
-            rows, best = replay(cfg, [json.loads(Path(f).read_text(encoding="utf-8")) for f in args.replay],
-                                args.replay)
+            rows, best = replay(cfg, earlier, args.replay)
         except vc_search.MissingCase as err:
             print(f"{p.prog} --replay: {err}", file=sys.stderr)
             return 1
@@ -390,6 +349,22 @@ def main(argv=None) -> int:
     for path in write(Path(args.out), cfg, rows, best):
         print(f"wrote {path}")
     return 0
+
+
+def _earlier_runs(option: str, files: list[str]) -> list[dict]:
+    """The earlier runs' ``power_curve.json`` contents; UsageError naming ``option`` and the file that is missing,
+    not JSON, or without the run's ``config`` and ``rows``."""
+    runs = []
+    for f in files:
+        try:
+            meta = json.loads(Path(f).read_text(encoding="utf-8"))
+        except (OSError, UnicodeDecodeError, json.JSONDecodeError) as err:
+            raise UsageError(f"{option} {f!r}: not a readable power_curve.json ({type(err).__name__}: {err})") from None
+        missing = [k for k in ("config", "rows") if not isinstance(meta, dict) or k not in meta]
+        if missing:
+            raise UsageError(f"{option} {f!r}: not a power_curve.json of this command (no {' or '.join(missing)})")
+        runs.append(meta)
+    return runs
 
 
 if __name__ == "__main__":

@@ -198,7 +198,7 @@ def report(variant: str, elevators_deg=None) -> None:
 
 
 def main(argv=None) -> int:
-    p = Parser(prog="python -m laddermill_gym.studies.mill.trim_slope", description=__doc__.splitlines()[0])
+    p = Parser(prog="python -m laddermill_gym.studies.mill.trim_slope", description=__doc__.split("\n\n")[0])
     p.add_argument("--variants", nargs="+", choices=sorted(WINGS), default=list(DEFAULT_VARIANTS),
                    help="v1, v2: the mill's wings (default); v0: the chain's wing at ladder_chain's elevators")
     p.add_argument("--elevators", type=float, nargs=2, default=None,

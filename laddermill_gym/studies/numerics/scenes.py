@@ -5,6 +5,7 @@ simulator at its initial equilibrium; and copies of a simulator with other integ
 from __future__ import annotations
 
 import dataclasses
+from pathlib import Path
 
 import numpy as np
 
@@ -26,6 +27,11 @@ def check_scene_names(names, option: str = "scene", crafts: bool = True) -> None
     twice = sorted({n for n in names if list(names).count(n) > 1})
     if twice:
         raise UsageError(f"{option} {twice}: named twice")
+    stems = [Path(str(n)).stem for n in names]  # the studies name their output files by the stem
+    same = sorted({str(n) for n, st in zip(names, stems, strict=True) if stems.count(st) > 1})
+    if same:
+        raise UsageError(f"{option} {same}: the same file name, so their output files would overwrite each other "
+                         "(copy one under another name)")
 
     for name in names:
         if crafts and name in CRAFT_NAMES:
@@ -55,9 +61,12 @@ def refuse_scene_kinds(names, option: str, elsewhere: dict[str, str]) -> None:
             raise UsageError(f"{option} {name!r}: {what}, which this command does not measure; {elsewhere[kind]}")
 
 
-def build_simulator(name: str, elements_per_piece: int | None = None, **settings) -> Simulator:
+def build_simulator(name: str, elements_per_piece: int | None = None, scene_method: str | None = None,
+                    **settings) -> Simulator:
     """A simulator of scene (or craft config) ``name`` at its initial equilibrium, with integrator ``settings``
-    replaced (``dt``, ``method``, ``breakpoints``, ...). ``elements_per_piece`` re-divides a scene's cable."""
+    replaced (``dt``, ``method``, ``breakpoints``, ...). ``elements_per_piece`` re-divides a scene's cable;
+    ``scene_method`` loads the scene with that method (a scene file's RK4 step too long for a finer cable is refused
+    at load, before ``settings`` could replace it)."""
     if name in CRAFT_NAMES:
         if elements_per_piece is not None:
             raise UsageError(f"{name}: elements_per_piece applies to scenes, not to the rotorcraft")
@@ -67,7 +76,7 @@ def build_simulator(name: str, elements_per_piece: int | None = None, **settings
     else:
         from laddermill_gym.ladder.scene import load_scene
 
-        sim = load_scene(name, elements_per_piece=elements_per_piece).simulator()
+        sim = load_scene(name, elements_per_piece=elements_per_piece, method=scene_method).simulator()
     return with_settings(sim, **settings) if settings else sim
 
 

@@ -41,7 +41,7 @@ from pathlib import Path
 import numpy as np
 
 from laddermill_gym.sim.simulator import ADAPTIVE_METHODS, FIXED_STEP_METHODS, SimulationError, Simulator
-from laddermill_gym.studies.commands import UsageError, check_number, run_subcommand
+from laddermill_gym.studies.commands import UsageError, check_number, run_subcommand, writable_folder
 from laddermill_gym.studies.numerics import pointmass_precision
 from laddermill_gym.studies.numerics.closed_loop import (
     CONTROLLERS,
@@ -269,8 +269,7 @@ def _cmd(args) -> int:
         check_number(name, v, low=lo, high=1000, integer=True, strict=False)
     for k in args.jacobian_every:
         check_number("--jacobian-every", k, low=1, high=1000, integer=True, strict=False)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = writable_folder(args.out)
     for scene in args.scene:
         if "lqr" in args.controller and Path(scene).stem not in LQR_CONFIGS:
             raise UsageError(f"--controller lqr: scene {scene!r} has no LQR design here (one of "
@@ -296,4 +295,6 @@ def main(argv=None) -> int:
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    from laddermill_gym.studies.commands import run_guarded
+
+    raise SystemExit(run_guarded("work-precision", main))

@@ -35,7 +35,7 @@ from laddermill_gym.quasisteady.lansdorp import PumpingParams
 from laddermill_gym.quasisteady.schmehl import SchmehlParams
 from laddermill_gym.reference.wind import air_density
 from laddermill_gym.sim.statics import table_spline
-from laddermill_gym.studies.commands import Command, check_number
+from laddermill_gym.studies.commands import Command, check_number, writable_folder
 from laddermill_gym.studies.pumping.cycle_figures import cycle_figures
 
 __all__ = ["run_cycles", "cycle_stats", "quasi_steady", "add_parser", "main"]
@@ -177,6 +177,8 @@ def _run(args) -> int:
     find_config("pumping", args.config, "--config")
     check_number("--wind", args.wind, low=0, high=60, unit="m/s")
     check_number("--reel-element-length", args.reel_element_length, low=1, high=1000, unit="m")
+    if args.out is not None:
+        writable_folder(args.out)  # a bad folder named now, not after the cycles
     options = {} if args.elements is None else {"elements_per_piece": args.elements}
     if args.reel_element_length is not None:
         options["reeling"] = {"element_length": args.reel_element_length}
@@ -213,7 +215,6 @@ def _run(args) -> int:
     if reeling:
         print(contact_summary(rec, names))
     if args.out is not None:
-        args.out.mkdir(parents=True, exist_ok=True)
         (args.out / "pumping_cycle.json").write_text(json.dumps(rows, indent=1))
         print(args.out / "pumping_cycle.json")
         for path in cycle_figures(rec, task.control_dt, names, PHASE_IN, title, args.out):

@@ -30,7 +30,7 @@ from laddermill_gym.control.pumping_cycle import lateral_lqr
 from laddermill_gym.envs.pumping.task import PumpingTask
 from laddermill_gym.envs.pumping.winch_scene import load_pumping
 from laddermill_gym.model.reel import ground_contacts, is_reel, nodes_in_air, stable_dt
-from laddermill_gym.studies.commands import Command, check_number
+from laddermill_gym.studies.commands import Command, check_number, writable_folder
 from laddermill_gym.studies.pumping.pumping_cycle import cycle_stats, run_cycles
 
 __all__ = ["tether_run", "add_parser", "main"]
@@ -100,14 +100,17 @@ def _run(args) -> int:
         check_number("--lengths", v, low=5, high=1000, unit="m")
     check_number("--cycles", args.cycles, low=1, high=100, integer=True, strict=False)
     check_number("--start-length", args.start_length, low=100, high=450, strict=False, unit="m")
-    rows = []
+    if args.out is not None:
+        writable_folder(args.out)  # a bad folder named now, not after the runs
+    rows, failed = [], []
     print(f"{'l_n m':>6} {'dt ms':>5} {'el. at start':>12} {'tether m':>9} {'el. min-max':>11} {'P W':>7} "
           f"{'T_out N':>8} {'v_out':>6} {'T_in N':>7} {'T_c s':>6} {'alpha':>6} {'on ground':>9} {'steps %':>7}")
     for ln in tqdm(args.lengths, unit="tether", leave=False):
         try:
             r = tether_run(ln, args.cycles, args.start_length)
         except RuntimeError as err:
-            print(f"{ln:6.0f} failed: {err}")
+            tqdm.write(f"{ln:6.0f} failed: {err}")
+            failed.append({"element_length_m": float(ln), "failure": str(err)})
             continue
         rows.append(r)
         tqdm.write(f"{r['element_length_m']:6.0f} {1e3 * r['dt_s']:5.1f} {r['elements_at_start']:12.1f} "
@@ -116,9 +119,12 @@ def _run(args) -> int:
                    f"{r['speed_out_m_s']:6.2f} {r['tension_in_N']:7.0f} {r['cycle_s']:6.1f} {r['alpha_deg']:6.2f} "
                    f"{r['contacts_max']:9d} {100 * r['contact_share']:7.1f}")
     if args.out is not None:
-        args.out.mkdir(parents=True, exist_ok=True)
-        (args.out / "tether_convergence.json").write_text(json.dumps(rows, indent=1))
+        (args.out / "tether_convergence.json").write_text(json.dumps(rows + failed, indent=1))
         print(args.out / "tether_convergence.json")
+    if failed:  # exit status 1, as pumping-cycle's for a failed run
+        print(f"{len(failed)} of {len(args.lengths)} tether runs failed: element lengths "
+              f"{', '.join(format(r['element_length_m'], 'g') for r in failed)} m")
+        return 1
     return 0
 
 

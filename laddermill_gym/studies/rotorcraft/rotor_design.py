@@ -106,7 +106,7 @@ def _print_table(studies: list[AltitudeStudy]) -> None:
 
 def main(argv: list[str] | None = None) -> list[AltitudeStudy]:
     """Command line: run the study at both altitudes, print the results, write the CSV and the PNG."""
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--out", default=str(DEFAULT_OUT), help="output folder (design_study.csv, power_curves.png)")
     out = Path(ap.parse_args(argv).out)
     t0 = time.perf_counter()
