@@ -108,3 +108,17 @@ def test_paired_survival_builds_both_controllers_before_either_flies(monkeypatch
         paired_survival(SEVERE, "ntm_ib", 2, 5000, ["open_loop", "bad"])
     with pytest.raises(ValueError, match="episodes = 0"):
         paired_survival(SEVERE, "ntm_ib", 0, 5000, ["open_loop", "lqr"])
+
+
+@pytest.mark.parametrize("argv, says", [
+    (["--env-config", '{"nosuch": 1}'], "nosuch = 1: not arguments of the wing env"),
+    (["--minibatch", "128", "--train-batch", "64"], "--minibatch 128: must not exceed --train-batch 64"),
+    (["--seed", "-1"], "--seed -1: must be >= 0"),
+])
+def test_rllib_train_refuses_bad_settings_before_ray_starts(capsys, argv, says):
+    """These reached RLlib: a 133-line log with the cause buried in a runner's traceback (a review of 2026-12-07)."""
+    from laddermill_gym.harness import rllib_train
+
+    with pytest.raises(SystemExit) as err:
+        rllib_train.main(argv)
+    assert err.value.code == 2 and says in capsys.readouterr().err

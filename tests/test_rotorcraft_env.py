@@ -274,3 +274,21 @@ def test_blade_pitch_observations_cover_asymmetric_differential_limits(tmp_path)
         obs, *_ = env.step(np.array(a, np.float32))
         pitch = env.task.simulator(0).rotor_outputs()["pitch_rad"]
         np.testing.assert_allclose(np.sort(obs[idx]), np.sort(pitch.astype(np.float32)), rtol=1e-6)
+
+
+def test_float32_periods_are_read_as_the_numbers_written():
+    """A control period or physics step from a float32 array (np.float32(0.05) is 0.0500000007) was refused as not
+    dividing the episode; it is read as its shortest decimal, so the env is the one built from the float64 value
+    (oracle: the same env from 0.05 and 0.025, the same observations after a step)."""
+    kw32 = dict(control_dt=np.float32(0.05), physics_dt=np.float32(0.025), episode_time=np.float32(120.0))
+    a, b = gym.make("laddermill_gym/Rotorcraft-v0", **kw32), gym.make("laddermill_gym/Rotorcraft-v0",
+                                                                       control_dt=0.05, physics_dt=0.025)
+    assert a.unwrapped.task.control_dt == 0.05 and a.unwrapped.task.n_steps_max == 2400
+    oa, ob = a.reset(seed=1)[0], b.reset(seed=1)[0]
+    act = np.array([0.3, -0.2], np.float32)
+    assert np.array_equal(oa, ob) and np.array_equal(a.step(act)[0], b.step(act)[0])
+
+
+def test_a_failed_trim_names_the_values_used_not_none():
+    with pytest.raises(ValueError, match=r"wind_speed = 10 m/s \(the config's\), collective = -0.0872 rad: craft trim"):
+        RotorcraftEnv(collective=-0.0872)

@@ -48,11 +48,15 @@ PARALLEL_STATE_SIZE = 500
 
 def positive(name: str, v, unit: str) -> float:
     """``v`` as a float; ValueError naming ``name``, the value and the ``unit`` unless it is a finite real number > 0
-    (Python's or numpy's: ``np.int64(300)`` from ``np.arange`` and ``np.float32`` pass; a bool does not)."""
+    (Python's or numpy's: ``np.int64(300)`` from ``np.arange`` and ``np.float32`` pass; a bool does not). A numpy
+    float narrower than float64 is read as the shortest decimal that gives it (``np.float32(0.05)`` as 0.05, not
+    0.0500000007: a control period read from a float32 array divides an episode as the number written does)."""
     if isinstance(v, (bool, np.bool_)) or not isinstance(v, numbers.Real):
         raise ValueError(f"{name} = {v!r}: must be a number (a finite number > 0 {unit}), not {type(v).__name__}")
     if not (math.isfinite(v) and v > 0):
         raise ValueError(f"{name} = {v!r}: must be a finite number > 0 {unit}")
+    if isinstance(v, np.floating) and np.dtype(type(v)).itemsize < 8:
+        return float(str(v))
     return float(v)
 
 

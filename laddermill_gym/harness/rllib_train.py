@@ -136,6 +136,14 @@ def main(argv: list[str] | None = None) -> int:
         p.error(f"--env-config {a.env_config!r}: must be a JSON object")
     if a.episode_time is not None:
         env_config["episode_time"] = a.episode_time
+    if a.seed < 0:
+        p.error(f"--seed {a.seed}: must be >= 0")
+    if a.minibatch > a.train_batch:
+        p.error(f"--minibatch {a.minibatch}: must not exceed --train-batch {a.train_batch}")
+    try:  # the env built here once: a bad --env-config named now, not in every runner's log after Ray started
+        make_env(a.env, env_config).close()
+    except (ValueError, TypeError) as err:
+        p.error(f"--env {a.env} with --env-config {json.dumps(env_config)}: {err}")
     try:
         config = ppo_config(a.env, env_config, a.how, a.env_runners, a.envs_per_runner, a.train_batch,
                             a.minibatch, a.epochs, seed=a.seed)
@@ -146,4 +154,6 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from laddermill_gym.studies.commands import run_guarded
+
+    sys.exit(run_guarded("rllib_train", main))

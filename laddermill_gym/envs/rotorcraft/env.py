@@ -84,7 +84,7 @@ OBS_TABLE
 
     ## Rewards
 
-    r = P / P_ref - w_y S((dy / y_s)^2) - w_w S((p^2 + r^2) / w_s^2) - w_u S(mean (a - a_trim)^2)
+    r = w_P P / P_ref - w_y S((dy / y_s)^2) - w_w S((p^2 + r^2) / w_s^2) - w_u S(mean (a - a_trim)^2)
     - failure_penalty [terminated], S(x) = 1 - exp(-x); P the net electrical power, P_ref its trim value
     (:class:`RotorcraftRewardConfig`). Every term is in ``info`` (``reward_power``, ``reward_lateral``,
     ``reward_rates``, ``reward_effort``, ``reward_failure``), and they sum to the reward.

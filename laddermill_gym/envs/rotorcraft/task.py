@@ -246,7 +246,8 @@ class CraftTask(TaskCore):
 
     # ------------------------------------------------------------------ kernel
     def _kernel_pass(self, nsteps: np.ndarray) -> None:
-        """Advance copy b by nsteps[b] RK4 steps (0: observe only, < 0: skip) and write raw_obs and aux."""
+        """Advance copy b by nsteps[b] physics steps (the env's method: ROS34PW2 by default; 0: observe only, < 0: skip)
+        and write raw_obs and aux."""
         b = self.batch
         b.advance(nsteps, lambda dt, ns: self._kernel(
             *b.kernel_head(dt, ns, self._dx), self.ref, self.tether_end, self.raw_obs, self.aux, b.status, b.done))

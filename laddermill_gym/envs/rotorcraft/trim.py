@@ -83,7 +83,10 @@ def _craft_trim(craft: str, wind_speed, collective, physics_dt) -> tuple[Craft, 
     try:
         x, _ = cached_start("craft_start", c.config.name, (c, u), CRAFT_SOURCES, lambda: (c.trim(u[0]), u))
     except RuntimeError as err:
-        raise ValueError(f"wind_speed = {wind_speed!r} m/s, collective = {collective!r} rad: {err}") from None
+        v_note = "" if wind_speed is not None else " (the config's)"  # the values used, not the None given
+        c_note = "" if collective is not None else " (the config's)"
+        raise ValueError(f"wind_speed = {c.config.wind.v0:g} m/s{v_note}, collective = {float(u[0]):.4g} rad{c_note}: "
+                         f"{err}") from None
     x.setflags(write=False)
     u.setflags(write=False)
     return c, x, u
