@@ -321,8 +321,11 @@ def nominal_positions(op: OperatingPoint, moved: np.ndarray) -> np.ndarray:
 
     The orbit is sampled every ``SettleConfig.orbit_dt`` up to the last sample before the transfer, so over the last
     sample's stretch of cable (0.5 m at 2 m/s and 0.25 s) the reference is held while the wings move on: there the
-    undisturbed mill's in-plane offsets reach about 0.4 m (under 0.1 m elsewhere; LadderMill-v0, one period, zero
-    action, found 2026-12-07). Kept, because the registered ids' observations are built on it."""
+    undisturbed mill's in-plane offsets reach 0.40 m on LadderMill-v0 and 0.51 m on v1 (median over the period 0.027
+    and 0.023 m; one period, zero action, 2026-12-07). At reset they are 0.049 and 0.044 m, since the start is the
+    recorded period's end and the orbit's first sample its start (the largest |dx|, |dz| of the slots' observations
+    over 700 zero-action steps of ``gymnasium.make(ID, disturbances=[])``). Kept, because the registered ids'
+    observations are built on it."""
     s = np.asarray(moved, dtype=float)
     grid = op.orbit_moved
     j = np.clip(np.searchsorted(grid, s, side="right") - 1, 0, grid.size - 2)
