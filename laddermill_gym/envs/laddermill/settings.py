@@ -51,6 +51,11 @@ class DrumConfig:
     operating point's torque r P_ref / (efficiency V_c), P_ref the operating point's power, whatever the reward's
     reference_power_W), so a = -1 gives (about) no torque and a = +1 twice the
     operating point's.
+
+    Time scale: the cable's speed answers a torque step dQ within (J / r^2) / (dQ / r) per m/s. At the defaults on
+    LadderMill-v1 a = +1 (dQ = 76 kN m) reverses the 2 m/s cable within one 50 ms control period (V_c = -0.97 m/s
+    after 0.05 s, a backward transfer after 0.10 s; a review of 2026-12-07): the torque's full range is as hard to
+    learn as the surfaces' full authority was. A larger ``inertia`` or a smaller ``torque_half_range`` slows it.
     """
 
     radius: float = 1.0
