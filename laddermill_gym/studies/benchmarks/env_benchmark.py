@@ -68,13 +68,14 @@ def _steps_per_second(env, action: np.ndarray, n_steps: int, repeats: int) -> tu
 
 def bench_vector(env_id: str, counts=(1, 8, 64, 512), quick: bool = False, echo=print,
                  budget: float = 1e6, variants: dict | None = None) -> list[dict]:
-    """Steps/s of the native vector env and of SyncVectorEnv for each number of copies. ``budget``: copy-steps
-    per repeat of the native env at the full setting (a fifth of it with ``quick``); the SyncVectorEnv runs 1 %
-    of it (at least 3 steps). ``variants``: label -> env arguments of further native envs measured in the same
-    run (e.g. the registered step on one thread, the step ``physics_step="ros34pw2"``), each with its ratio. Each
-    rate comes with its CPU share ("cpu": this process's CPU seconds per wall second, about the threads kept
-    busy; on a loaded machine well below them, so the wall rates are then the machine's share, not its speed) and
-    each native rate with the threads that shared its work ("threads": :func:`threads_working`, whatever the load)."""
+    """Steps/s of the native vector env and of SyncVectorEnv for each number of copies. ``budget``: ten times the
+    copy-steps of one repeat of the native env at the full setting (a fifth of it with ``quick``; each of the 3 or 5
+    repeats runs budget / 10 copy-steps, at least 5 steps); the SyncVectorEnv runs 1 % of it (at least 3 steps).
+    ``variants``: label -> env arguments of further native envs measured in the same run (e.g. the registered step
+    on one thread, the step ``physics_step="ros34pw2"``), each with its ratio. Each rate comes with its CPU share
+    ("cpu": this process's CPU seconds per wall second, about the threads kept busy; on a loaded machine well below
+    them, so the wall rates are then the machine's share, not its speed) and each native rate with the threads that
+    shared its work ("threads": :func:`threads_working`, whatever the load)."""
     from laddermill_gym.control.factory import make_controller
 
     kwargs = ENV_IDS[env_id]
@@ -151,6 +152,8 @@ ENVS: dict[str, tuple] = {
                           "101 point-mass kites, 2 implicit steps of 25 ms per 20 Hz period", (1, 8, 64),
                           {"budget": 5e4}),
 }
+#: the envs whose task steps its copies without numba's copy threads (``envs/copy_threads.py``): no --threads
+THREADLESS = ("PointMassChain-v0",)
 #: the result keys of the JSON file (as before the options came)
 _KEYS = {"TetheredWing-v0": "tethered_wing", "LadderChain-v0": "ladder_chain", "Rotorcraft-v0": "rotorcraft",
          "LadderMill-v0": "laddermill", "PointMassChain-v0": "pointmass_chain", "LadderMill-v2": "laddermill_v2",
@@ -192,6 +195,10 @@ def bench_envs_command(args) -> int:
     unknown = [e for e in args.envs or [] if e not in ENVS]
     if unknown:
         raise UsageError(f"--envs = {unknown[0]!r}: not one of {', '.join(ENVS)}")
+    unthreaded = [e for e in args.envs or [] if e in THREADLESS]
+    if args.threads and unthreaded:
+        raise UsageError(f"--threads with --envs {unthreaded[0]}: its task has no copies on numba's threads to "
+                         "scale (the point-mass string's threads are its solve's: docs/pointmass.md)")
     if not args.threads:
         try:
             run_env_benchmark(quick=args.quick, json_path=args.json, envs=args.envs, copies=args.copies)
@@ -258,6 +265,13 @@ def thread_scaling(thread_counts, envs=None, copies: int = 512, quick: bool = Fa
         from laddermill_gym.control.factory import make_controller
 
         act = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
+        if not getattr(native.task, "parallel", False):  # its copies on one thread whatever numba's count
+            from laddermill_gym.studies.commands import UsageError
+
+            native.close()
+            raise UsageError(f"--threads at --copies {copies}: {env_id} steps so few copies on one thread (its task "
+                             "takes several threads from envs/task_base.PARALLEL_COPIES copies, or 2 for a model of "
+                             "PARALLEL_STATE_SIZE states), so no thread count would change it")
         runner = native.task._kernel
         launcher = getattr(runner, "launcher", None)
         echo(f"{env_id} at {copies} copies:")

@@ -3,7 +3,7 @@ laddermill_gym.studies.benchmarks.env_step_cost laddermill_gym/TetheredWing-v0 l
 the 101-wing chain's model on one W step: ``... laddermill_gym/LadderChain-v0 --physics-step ros34pw2 --copies 8``.
 
 Each part of the compiled step is timed in a compiled loop over one copy of the env's own batch (its model, wind,
-workspace and a state it reached by flying the trim action), so no Python dispatch enters a part's time (the
+workspace and a state it reached under the zero action, a = 0), so no Python dispatch enters a part's time (the
 older ``studies/numerics/w_step_cost.py`` calls each part from Python: about 10 us each, most of a one-wing part):
 
 * the Rosenbrock-W step the env registers (ROS34PW2: one assembly, three right-hand sides, the body and cable

@@ -55,26 +55,30 @@ def _warmup(env_id: str) -> list:
                                                                  seeds=(0,), duration=gb.WARMUP_S, disturbances=()))]
 
 
-def _fresh(task, cache: str, warm: list) -> list[dict]:
-    """Two timed tasks in one fresh worker process whose numba cache is ``cache``."""
-    old = os.environ.get("NUMBA_CACHE_DIR")
-    os.environ["NUMBA_CACHE_DIR"] = cache
+def fresh_worker(task, cache: str, warm: list) -> list[dict]:
+    """Two timed tasks in one fresh worker process whose caches are under ``cache``: numba's
+    (``NUMBA_CACHE_DIR``) and the package's start cache (``LADDERMILL_CACHE_DIR``: trims, splines, operating
+    points), so that the first run in a new folder pays what a node without either pays."""
+    names = {"NUMBA_CACHE_DIR": cache, "LADDERMILL_CACHE_DIR": os.path.join(cache, "laddermill")}
+    old = {k: os.environ.get(k) for k in names}
+    os.environ.update(names)
     try:
         return run_tasks([(timed, dict(fn=task[0], kwargs=task[1]))] * 2, workers=1, warmup=warm, progress=False)
     finally:
-        if old is None:
-            del os.environ["NUMBA_CACHE_DIR"]
-        else:
-            os.environ["NUMBA_CACHE_DIR"] = old
+        for k, v in old.items():
+            if v is None:
+                del os.environ[k]
+            else:
+                os.environ[k] = v
 
 
 def per_worker_cost(env_id: str, duration: float, repeats: int) -> dict:
     """First and second task times [s] with a cold cache, a filled cache and after the warm-up (medians)."""
     task = _episode(env_id, duration)
     with tempfile.TemporaryDirectory(prefix="numba_cold_") as cache:
-        cold = _fresh(task, cache, [])
-        loads = [_fresh(task, cache, []) for _ in range(repeats)]
-        warms = [_fresh(task, cache, _warmup(env_id)) for _ in range(repeats)]
+        cold = fresh_worker(task, cache, [])
+        loads = [fresh_worker(task, cache, []) for _ in range(repeats)]
+        warms = [fresh_worker(task, cache, _warmup(env_id)) for _ in range(repeats)]
     med = statistics.median
     return {"cold_first_task_s": cold[0]["task_s"], "cold_second_task_s": cold[1]["task_s"],
             "cache_first_task_s": med(r[0]["task_s"] for r in loads),

@@ -18,6 +18,7 @@ power and largest lateral offset, and their differences from the registered step
 from __future__ import annotations
 
 import argparse
+import math
 import time
 import warnings
 
@@ -69,9 +70,9 @@ def episode(env_id: str, n_periods: int, **kwargs) -> tuple[np.ndarray, float, n
         a = np.clip(a0 + ACTION_NOISE * rng.uniform(-1.0, 1.0, a0.shape), -1.0, 1.0).astype(np.float32)
         t0 = time.process_time()
         _, r, terminated, truncated, _ = env.step(a)
-        cpu += time.process_time() - t0
-        if terminated.any() or truncated.any():
+        if terminated.any() or truncated.any():  # a period not kept: its CPU not counted with the kept ones
             break
+        cpu += time.process_time() - t0
         out.append(positions(env.task))
         rewards.append(float(r[0]))
     env.close()
@@ -177,6 +178,9 @@ def main(argv=None) -> int:
     p.add_argument("--controller", metavar="SPEC", help="run this harness controller closed loop instead (lqr, "
                    "lqr:PATH, a run folder; laddermill evaluate's specs): each step's length, power and lateral offset")
     args = p.parse_args(argv)
+    n = round(args.time / 0.05) if math.isfinite(args.time) else 0
+    if not (n >= 1 and abs(n * 0.05 - args.time) <= 1e-9 * args.time):  # not after the reference run
+        p.error(f"--time {args.time!r}: must be a whole number (>= 1) of the 0.05 s control period")
     try:
         check_labels(args.steps)
     except ValueError as err:

@@ -274,6 +274,16 @@ def _cmd(args) -> int:
         if "lqr" in args.controller and Path(scene).stem not in LQR_CONFIGS:
             raise UsageError(f"--controller lqr: scene {scene!r} has no LQR design here (one of "
                              f"{', '.join(LQR_CONFIGS)})")
+        if "lqr" in args.controller:  # checked now, not after the open-loop runs and the design
+            from laddermill_gym.control.lqr_config import load_lqr_config
+            from laddermill_gym.studies.numerics.closed_loop import periods_per_sample
+
+            period = load_lqr_config(LQR_CONFIGS[Path(scene).stem]).control_period
+            try:
+                periods_per_sample(np.array([0.0, args.time / args.samples]), period)
+            except ValueError as err:
+                raise UsageError(f"--controller lqr with --time {args.time:g} and --samples {args.samples}: {err}"
+                                 ) from None
     for scene in args.scene:
         if pointmass_precision.is_pointmass_scene(scene):
             res = pointmass_precision.run_scene(scene, args.forcing, args.time, args.samples, args.repeats,
@@ -282,9 +292,9 @@ def _cmd(args) -> int:
             res = run_scene(scene, args.forcing, args.time, args.samples, args.repeats, args.n_dt, not args.quiet,
                             args.controller, tuple(dict.fromkeys(args.jacobian_every)))
         stem = out / Path(scene).stem
-        save_rows(res, stem.with_suffix(".csv"))
-        stem.with_suffix(".json").write_text(json.dumps(res, indent=1, default=float))
-        plot_work_precision(res, stem.with_suffix(".png"))
+        save_rows(res, Path(f"{stem}.csv"))  # not with_suffix: a scene file named wing_v2.5 kept wing_v2
+        Path(f"{stem}.json").write_text(json.dumps(res, indent=1, default=float))
+        plot_work_precision(res, Path(f"{stem}.png"))
         print_summary(res)
         print(f"wrote {stem}.csv, .json, .png")
     return 0

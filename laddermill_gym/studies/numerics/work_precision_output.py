@@ -47,8 +47,9 @@ def save_rows(res: dict, path: Path) -> Path:
 
 
 def plot_work_precision(res: dict, path: Path) -> Path:
-    """Wall time against error, log-log: one column per forcing, rows the final position error and the RMS
-    state error; the references' agreement as a dotted line (errors below it are not resolved)."""
+    """Wall time against error, log-log: one column per forcing, rows the largest position error over the samples
+    (over the extent) and the RMS state error; the references' agreement as a dotted line (errors below it are not
+    resolved)."""
     from laddermill_gym.figure_files import subplots
 
     forcings = list(res["references"])
