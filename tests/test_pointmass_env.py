@@ -168,3 +168,35 @@ def test_the_moving_cable_at_the_registered_step_starts_with_a_positive_power():
         assert task.mill.mean_power_W > 0
         assert task.p_ref == (task.mill.mean_power_W if reward is None else 1e5)
         env.close()
+
+
+def _run_to_failure(action_pair, **kw):
+    env = gym.make("laddermill_gym/PointMassChain-v0", **kw)
+    env.reset(seed=0)
+    a = np.zeros(env.action_space.shape, np.float32)
+    a[0::2], a[1::2] = action_pair
+    for _ in range(2400):
+        _, _, term, trunc, info = env.step(a)
+        if term or trunc:
+            return env.unwrapped.task, info
+    raise AssertionError("no failure")
+
+
+def test_failure_reasons_name_the_kite_and_the_element():
+    """On a 101-node string "a kite" and "tension" did not say which (a review of 2026-12-07). Oracles: the
+    kites' positions and the elements' tensions at the end, read from the batch."""
+    task, info = _run_to_failure((-1.0, 0.0), pitch_range_deg=30.0)  # pitched down: a kite reaches 10 m
+    k = int(np.argmax(task.batch.kite_positions()[0, :, 2]))
+    assert info["failure"] == 2 and f"kite {k} at " in info["failure_reason"]
+    task, info = _run_to_failure((1.0, 0.0), pitch_range_deg=30.0)  # pitched up: the base element breaks
+    e = int(np.argmax(task.batch.tension[0]))
+    assert info["failure"] == 3 and f"element {e}'s tension" in info["failure_reason"]
+
+
+def test_min_altitude_takes_numpy_numbers_and_refuses_one_above_the_start():
+    env = gym.make("laddermill_gym/PointMassChain-v0", min_altitude=np.float32(10.0))
+    lowest = float(-np.max(env.unwrapped.task.nominal[:, 2]))
+    assert env.unwrapped.task.min_altitude == 10.0 and lowest > 100.0
+    with pytest.raises(ValueError, match=rf"min_altitude = 150 m: at or above the lowest kite's start altitude "
+                                         rf"{lowest:.4g} m"):
+        gym.make("laddermill_gym/PointMassChain-v0", min_altitude=150.0)

@@ -103,14 +103,15 @@ def test_ground_contact_terminates():
     assert r < -50
 
 
-def _limit_step(state_change, action):
-    """(info of the step, task) after ``state_change(task, x)`` edits copy 0's state at the start (then observed)."""
+def _limit_step(state_change, action, code: int = 1, name: str = "integration failed"):
+    """(info of the step, task) after ``state_change(task, x)`` edits copy 0's state at the start (then observed); the
+    step ends the episode with failure ``code`` whose name starts with ``name``."""
     env = PumpingKiteEnv(disturbances=[], termination={"alpha_range_deg": (-180.0, 180.0), "max_abs_beta_deg": 90.0})
     env.reset(seed=0)
     state_change(env.task, env.task.batch.states[0])
     env.task.observe()
     _, _, term, _, info = env.step(np.array(action, np.float32))
-    assert term and info["failure"] == 1 and info["failure_name"].startswith("integration failed")
+    assert term and info["failure"] == code and info["failure_name"].startswith(name), info["failure_name"]
     return info["failure_reason"], env.task
 
 
@@ -125,7 +126,9 @@ def test_limit_failure_names_the_winch_and_its_rest_length():
         x[task.xoff + SX_MOVED] = 15.02 - 300.0
         x[task.xoff + SX_SPEED] = -10.0
 
-    reason, task = _limit_step(reel_in_short, [0, 0, 0, -1.0])
+    # the winch's end stop is a physical end, code 5, not a numerical one (code 1 until 2026-12-07)
+    reason, task = _limit_step(reel_in_short, [0, 0, 0, -1.0], 5, "tether fully reeled in")
+    assert reason.split(": ", 1)[1].startswith("tether fully reeled in (the winch reeled")
     assert task.winch.piece_length == 300.0  # configs/scenes/pumping_kite.yaml: one 300 m tether element
     m = re.search(r"winch reeled the tether's first element in to a rest length of ([0-9.]+) m .* below 5 % of its "
                   r"start length 300 m \(15 m\), winch speed (-[0-9.]+) m/s", reason)

@@ -22,7 +22,13 @@ What it follows:
   section V), paying out faster above a tension set-point; reel-in at a set speed; elevator at the pitch balance
   of alpha_out / alpha_in (``control.pumping_cycle.reel_in_elevator``).
 
-Phases (``PHASE_NAMES``), per copy, kept between calls (reset where ``episode_start`` is true): reel_out (figure
+Its wind window is the scene's nominal wind's (along -x, as the env's observations): it does not follow a
+direction disturbance (gusts-v3's EDC turns the wind by 44.5 deg and holds it: the eights are then flown 45 deg off
+the new wind, and the entry's airspeed gate reads a wrong airspeed) nor a direction turning with height.
+
+Phases (``PHASE_NAMES``), per copy, kept between calls (reset where ``episode_start`` is true; a loop over a vector
+env that autoresets must pass ``episode_start`` = the previous step's terminated | truncated, as SB3's
+``evaluate_policy`` does, or a copy's next episode starts in the phase the last one ended in): reel_out (figure
 eights) -> retract (still powered, flying straight up out of the power zone to the park elevation, the winch
 still paying out) -> reel_in (depowered at alpha_in, held in the wind plane by the wing's lateral LQR, as the
 scripted cycle's reel-in, ``control/pumping_cycle.py``) -> entry (repowered, diving to the path, the winch keeping

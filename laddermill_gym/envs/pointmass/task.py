@@ -143,8 +143,8 @@ class PointMassTask(TaskCore):
             raise ValueError(f"groups = {groups!r}: must be 'all' or 'per_kite'")
         self.ranges = np.radians([positive("pitch_range_deg", pitch_range_deg, "deg"),
                                   positive("roll_range_deg", roll_range_deg, "deg")])
-        if isinstance(min_altitude, bool) or not (isinstance(min_altitude, (int, float))
-                                                  and np.isfinite(min_altitude)):
+        if isinstance(min_altitude, (bool, np.bool_)) or not (isinstance(min_altitude, numbers.Real)
+                                                              and np.isfinite(min_altitude)):
             raise ValueError(f"min_altitude = {min_altitude!r}: must be a finite number [m] (NaN never terminated)")
         self.min_altitude = float(min_altitude)
         self.breaking_factor = positive("breaking_factor", breaking_factor, "(-)")
@@ -173,6 +173,7 @@ class PointMassTask(TaskCore):
         self.groups = groups
         self.kite_nodes = s.kite_nodes
         self.nominal = self.x_trim.reshape(-1, 6)[self.kite_nodes, :3].copy()
+        self._check_min_altitude()
         check_turbulence_cover(self.disturbances, self.x_trim.reshape(-1, 6)[:, :3], what=START)  # every node
         self.n_actions = 2 * (1 if groups == "all" else s.n_kites)
         self.trim_action = np.zeros(self.n_actions)
@@ -205,6 +206,7 @@ class PointMassTask(TaskCore):
         self.steps = np.zeros(B, dtype=np.int64)
         self.last_action = np.zeros((B, self.n_actions))
         self._failure_value = np.zeros(B)
+        self._failure_where = np.zeros(B, dtype=np.int64)  # the kite or element named in the failure's text
         self._compose()
 
     # ------------------------------------------------------------------ read-outs
@@ -265,6 +267,14 @@ class PointMassTask(TaskCore):
         b.update_tensions(np.asarray(mask, bool))
         self._compose()
 
+    def _check_min_altitude(self) -> None:
+        """ValueError unless ``min_altitude`` is below the lowest kite's start altitude (every episode would end at
+        its first step)."""
+        lowest = float(-np.max(self.nominal[:, 2]))
+        if self.min_altitude >= lowest:
+            raise ValueError(f"min_altitude = {self.min_altitude:g} m: at or above the lowest kite's start altitude "
+                             f"{lowest:.4g} m")
+
     def _failures(self, sel: np.ndarray, low: np.ndarray, peak: np.ndarray) -> np.ndarray:
         """Failure codes (B,) (:data:`POINTMASS_FAILURES`) of the copies in ``sel``, given the lowest kite altitude
         ``low`` (B,) [m] and the largest tension ``peak`` (B,) [N]; ``_failure_value`` keeps the quantity."""
@@ -274,8 +284,10 @@ class PointMassTask(TaskCore):
                 code[i] = 2 if b.status[i] == PM_GROUND else 1
             elif low[i] < self.min_altitude:
                 code[i], self._failure_value[i] = 2, low[i]
+                self._failure_where[i] = int(np.argmax(b.kite_positions()[i, :, 2]))  # the lowest: largest z
             elif peak[i] > self.breaking_tension:
                 code[i], self._failure_value[i] = 3, peak[i]
+                self._failure_where[i] = int(np.argmax(b.tension[i]))
         return code
 
     def step(self, action: np.ndarray, mask: np.ndarray | None = None):
@@ -334,11 +346,26 @@ class PointMassTask(TaskCore):
         t = float(self.batch.t[b]) - (self.mill.t0 if self.mill is not None else 0.0)
         st = int(self.batch.status[b])
         if st != PM_OK:
-            return f"t = {t:.3f} s: the simulator stopped: {STATUS_TEXT.get(st, st)}"
+            return f"t = {t:.3f} s: the simulator stopped: {STATUS_TEXT.get(st, st)} ({self._stop_where(b)})"
+        k = int(self._failure_where[b])
         if code == 2:
-            return f"t = {t:.3f} s: a kite at {self._failure_value[b]:.3f} m, below min_altitude {self.min_altitude} m"
-        return (f"t = {t:.3f} s: tension {self._failure_value[b]:.6g} N over {self.breaking_factor} x the breaking "
-                f"load ({self.breaking_tension:.6g} N)")
+            return (f"t = {t:.3f} s: kite {k} at {self._failure_value[b]:.3f} m, below min_altitude "
+                    f"{self.min_altitude} m")
+        return (f"t = {t:.3f} s: element {k}'s tension {self._failure_value[b]:.6g} N over {self.breaking_factor} x "
+                f"the breaking load ({self.breaking_tension:.6g} N)")
+
+    def _stop_where(self, b: int) -> str:
+        """Where copy ``b``'s stopped state is worst: its first non-finite entry, else its fastest node [m/s] and
+        lowest node [m] (the string's nodes in order from the ground)."""
+        x = self.batch.states[b]
+        bad = np.flatnonzero(~np.isfinite(x))
+        if bad.size:  # the nodes' blocks in order (kernels/contract.py N3_*)
+            return f"node {int(bad[0]) // (x.size // self.batch.string.n_nodes)} not finite ({bad.size} state entries)"
+        nodes = np.arange(self.batch.string.n_nodes)
+        pos, vel = self.batch.positions(nodes)[b], self.batch.velocities(nodes)[b]
+        fast, low = int(np.argmax(np.linalg.norm(vel, axis=1))), int(np.argmax(pos[:, 2]))
+        return (f"fastest node {fast} at {np.linalg.norm(vel[fast]):.4g} m/s, lowest node {low} at "
+                f"{-pos[low, 2]:.4g} m")
 
     def lateral_offsets(self, obs: np.ndarray) -> np.ndarray:
         """Lateral offsets dy [m] (B, n_kites) of every kite of observations (B, 7 n_kites + n_ground)."""

@@ -16,7 +16,8 @@ __all__ = ["CROSSWIND_OBS_FIELDS", "CROSSWIND_OBS_INDEX", "N_CROSSWIND_OBS", "cr
 #: Entries after v0's, in order.
 CROSSWIND_OBS_FIELDS: tuple[ObsField, ...] = (
     ObsField("elevation", "rad", "elevation of the wing CG seen from the winch, beta"),
-    ObsField("azimuth", "rad", "azimuth of the wing CG from the wind's direction (+: towards +y), phi"),
+    # the wind window's frame is the scene's nominal wind (along -x): it does not turn with a direction disturbance
+    ObsField("azimuth", "rad", "azimuth of the wing CG from the nominal wind's direction -x (+: towards +y), phi"),
     ObsField("course_sin", "-", "sin of the course chi on the wind window (0 up, +pi/2 towards larger azimuth)"),
     ObsField("course_cos", "-", "cos of the course chi"),
     ObsField("bank", "rad", "bank of the lift against the tether, towards larger course, mu"),

@@ -38,7 +38,10 @@ class PumpingKiteEnv(TaskEnv):
     | 3 | winch command: commanded speed 10 a (a > 0) or 16.7 a (a < 0) | -16.7 | 10 | m/s |
 
     The drum holds Delta L + 2 depower overruns (240 m): beyond that a reel-out command is replaced by 0 (so no
-    policy gains by paying out for ever). a = 0 holds the reel-out trim with the winch stopped
+    policy gains by paying out for ever; checked at each control period's start, and the winch follows with its
+    0.5 s lag, so it stops at 240 m plus about V x 0.5 s: 245 m at 10 m/s; the replaced command is not counted in
+    ``n_clipped``). The elevator's trim is -0.52 deg, so a = +1 gives 14.48 deg and a below -0.965 meets the -15 deg
+    limit. a = 0 holds the reel-out trim with the winch stopped
     (:class:`~laddermill_gym.envs.pumping.actions.PumpingActionMap`; a drum winch takes a torque instead). Entries
     outside [-1, 1] are clipped and counted in ``info["n_clipped"]``.
 
@@ -72,9 +75,10 @@ WINCH_TABLE
     ## Episode End
 
     ``terminated`` on a physical failure (``info["failure"]``, ``info["failure_name"]``, ``info["failure_reason"]``):
-    integration breakdown (including the winch reeling in below 5 % of the tether's start length), the wing at the
-    ground or below ``termination.min_altitude``, the tether over ``breaking_factor`` x its breaking load, or alpha /
-    beta outside ``termination``. ``truncated`` at ``episode_time`` (default 400 s, about two cycles).
+    integration breakdown (1), the wing at the ground or below ``termination.min_altitude`` (2), the tether over
+    ``breaking_factor`` x its breaking load (3), alpha / beta outside ``termination`` (4), or the tether fully
+    reeled in, its first element under 5 % of its start length (5, the winch's end stop; reported as 1 before
+    2026-12-07). ``truncated`` at ``episode_time`` (default 400 s, about two cycles).
 
     ## Arguments
 

@@ -18,6 +18,8 @@ from laddermill_gym.sim.simulator import SimulationError
 __all__ = ["evaluate_copies", "failure_codes", "failure_text", "limit_text"]
 
 _LIMITS = "speed or rate limit, or the winch reeled in below 5 % of the tether's start length"
+#: the failure code of the winch's reel-in end stop (``settings.PUMPING_FAILURES``)
+REELED_IN = 5
 _STATUS_TEXT = status_texts(_LIMITS)
 
 
@@ -40,6 +42,10 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
     b = task.batch
     o = task.raw_obs
     lat, rates, failure = wing_terms(task, o[:, None, :])
+    for i in np.flatnonzero((failure == 1) & (b.status == LIMIT)):  # the reel-in end stop: a physical end
+        x, culprits, winch = _limit_step(task, int(i))
+        if winch is not None and not culprits:
+            failure[i] = REELED_IN
     # per control period, as the reward is documented, also in a period a failure cut short (the energy of its
     # steps done; dividing by their time counted it up to n_substeps times over: fixed 2026-12-06)
     elapsed = task.control_dt
@@ -62,10 +68,26 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
 
 def failure_text(task, b: int, code: int) -> str:
     """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0. A limit
-    of the integrator names the one that tripped, with its value (:func:`limit_text`)."""
+    of the integrator names the one that tripped, with its value (:func:`limit_text`); the reel-in end stop (code
+    5) the rest length and the winch speed."""
+    if code == REELED_IN:
+        return f"t = {float(task.batch.t[b]):.2f} s: tether fully reeled in ({limit_text(task, b)})"
     if code == 1 and task.batch.status[b] == LIMIT:
         return f"t = {float(task.batch.t[b]):.2f} s: integration failed ({limit_text(task, b)})"
     return wing_failure_text(task, b, code, _STATUS_TEXT, task.raw_obs[b: b + 1], None, "wing")
+
+
+def _limit_step(task, b: int):
+    """(the state after copy ``b``'s failed step, taken again without the checks that stopped it, or None; the
+    wings over the speed or rate limit there; the winch's reel-in sentence or None): see :func:`limit_text`."""
+    sim = task.simulator(b)
+    h = sim.settings.dt / SUBSTEP_DIVISORS[-1]  # a LIMIT stands after the batch's last, finest retry
+    trial = trial_state(sim, h)  # None: the winch check (or a breakdown) failed it too
+    try:
+        x = trial[1] if trial is not None else unchecked_step(sim, h)
+    except SimulationError:  # singular or non-finite on the way: no value to name
+        return None, [], None
+    return x, state_problems(sim, x), winch_limit_text(task.winch, sim.t + h, x, task.xoff)
 
 
 def limit_text(task, b: int) -> str:
@@ -75,16 +97,10 @@ def limit_text(task, b: int) -> str:
     ``sim.reports.trial_state``), or the winch element's rest length [m] under ``MIN_FRACTION`` of its start length
     (``kernels/winch.py``; the step again without any check, classic RK4 on the right-hand side) with the winch
     speed [m/s]; the family's words for LIMIT if the step shows neither."""
-    sim = task.simulator(b)
-    h = sim.settings.dt / SUBSTEP_DIVISORS[-1]  # a LIMIT stands after the batch's last, finest retry
-    trial = trial_state(sim, h)  # None: the winch check (or a breakdown) failed it too
-    try:
-        x = trial[1] if trial is not None else unchecked_step(sim, h)
-    except SimulationError:  # singular or non-finite on the way: no value to name
+    x, culprits, text = _limit_step(task, b)
+    if x is None:
         return _LIMITS
-    culprits = state_problems(sim, x)
     parts = [f"speed or rate limit: {', '.join(culprits[:4])}"] if culprits else []
-    text = winch_limit_text(task.winch, sim.t + h, x, task.xoff)
     if text is not None:
         parts.append(text)
     return "; ".join(parts) if parts else _LIMITS

@@ -12,10 +12,12 @@ from laddermill_gym.envs.task_settings import ShapedRewardConfig, TerminationCon
 __all__ = ["PumpingRewardConfig", "InitialNoise", "TerminationConfig", "PUMPING_FAILURES"]
 
 #: Termination causes (code -> name), the wing envs' codes; 0: still flying.
+#: 5, the winch's reel-in end stop (``kernels/winch.py``: the first element under 5 % of its start length), is a
+#: physical end, told apart from a numerical one (it was reported as 1 until 2026-12-07)
 PUMPING_FAILURES: dict[int, str] = {0: "", 1: "integration failed (non-finite state, speed or rate limit, singular "
-                                    "mass, or the winch reeled in below 5 % of the start length)",
-                                    2: "ground contact", 3: "cable over its breaking load",
-                                    4: "aerodynamic range exceeded"}
+                                    "mass)", 2: "ground contact", 3: "cable over its breaking load",
+                                    4: "aerodynamic range exceeded",
+                                    5: "tether fully reeled in (below 5 % of its start length)"}
 
 
 @dataclass(frozen=True)
