@@ -118,7 +118,7 @@ def test_a_binary_or_wrong_kind_config_is_named_in_one_line(tmp_path):
     text.write_text("\n".join(f"- item {i}" for i in range(200)))
     with pytest.raises(ConfigError, match=r"top level must be a mapping, got list \['item 0'") as err:
         read_yaml(text)
-    assert len(str(err.value)) < 200  # not the whole file
+    assert len(str(err.value).split("got list ", 1)[1]) <= 80  # the value cut short, not the whole file
 
 
 @pytest.mark.parametrize("argv, says", [
