@@ -149,11 +149,12 @@ def test_lqr_refuses_options_it_would_ignore(capsys, argv, says):
 
 
 def test_python_m_agents_gives_one_line_and_exit_2():
+    from pathlib import Path
+
     run = subprocess.run([sys.executable, "-m", "agents.evaluate", "--episodes", "0"], capture_output=True,
-                         text=True, timeout=120)
-    lines = [x for x in run.stderr.splitlines() if x.strip()]
-    assert run.returncode == 2 and lines == ["laddermill evaluate: error: --episodes = 0: must be a whole number >= 1 "
-                                             "and <= 4096"]
+                         text=True, timeout=120, cwd=Path(__file__).resolve().parents[1])  # agents/ is the repo's
+    assert run.returncode == 2 and "Traceback" not in run.stderr
+    assert "laddermill evaluate: error: --episodes = 0: must be a whole number >= 1 and <= 4096" in run.stderr
 
 
 def test_work_precision_refuses_two_scenes_of_one_file_name(tmp_path, capsys):
@@ -171,3 +172,10 @@ def test_stable_step_estimates_a_cable_too_fine_for_the_files_rk4_step(capsys):
     assert "rk4: largest stable step" in out
     limit = float(out.split("rk4: largest stable step ")[1].split(" s")[0])
     assert limit < 0.005 / 2  # the refusal's own bound: the file's step is more than twice RK4's limit
+
+
+def test_a_scenes_file_name_drops_only_a_yaml_suffix():
+    from laddermill_gym.studies.numerics.scenes import file_stem
+
+    assert [file_stem(n) for n in ("wing_v2.5", "dir/wing_v2.5.yaml", "tethered_wing", "x/y.yml")] == \
+        ["wing_v2.5", "wing_v2.5", "tethered_wing", "y"]

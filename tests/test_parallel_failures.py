@@ -82,6 +82,7 @@ class _FakeRay:
 def test_more_ray_workers_than_cluster_cpus_is_refused_and_the_pool_is_capped(monkeypatch):
     fake = _FakeRay(cpus=4)
     monkeypatch.setattr(parallel, "_ray_module", lambda: fake)
+    monkeypatch.setattr(parallel, "_init_worker", lambda *a: None)  # the stand-in actors run here: keep numba's threads
     with pytest.raises(UsageError, match=r"--workers 6: the Ray cluster \(auto\) has 4 CPUs"):
         parallel.Pool(6, "auto").__enter__()
     assert fake.actors == []
@@ -89,6 +90,8 @@ def test_more_ray_workers_than_cluster_cpus_is_refused_and_the_pool_is_capped(mo
         assert len(fake.actors) == 1
     with parallel.Pool(0, "auto"):
         assert len(fake.actors) == 1 + 4
+    with parallel.Pool(0, "auto", cap=0):  # no tasks: one actor, not one per CPU
+        assert len(fake.actors) == 1 + 4 + 1
 
 
 def test_a_worker_reads_relative_paths_in_the_callers_folder(tmp_path, monkeypatch):

@@ -200,3 +200,17 @@ def test_min_altitude_takes_numpy_numbers_and_refuses_one_above_the_start():
     with pytest.raises(ValueError, match=rf"min_altitude = 150 m: at or above the lowest kite's start altitude "
                                          rf"{lowest:.4g} m"):
         gym.make("laddermill_gym/PointMassChain-v0", min_altitude=150.0)
+
+
+def test_a_stopped_mill_copy_names_its_fastest_node():
+    """The moving-cable point-mass batch has no positions() read-out: naming a stopped copy's nodes from it crashed
+    the step (found by reading the change, 2026-12-07). Oracle: the node set 10 km/s fast by hand."""
+    from laddermill_gym.kernels.contract import N3_SIZE, N3_VEL
+
+    env = gym.make("laddermill_gym/PointMassChain-v0", scene="laddermill", scene_options={"n_wings": 11},
+                   settle_time=0.0)
+    env.reset(seed=0)
+    env.unwrapped.task.batch.states[0].reshape(-1, N3_SIZE)[5, N3_VEL + 1] = 1e4
+    _, _, term, _, info = env.step(np.zeros(env.action_space.shape, np.float32))
+    assert term and "the simulator stopped" in info["failure_reason"]
+    assert "fastest node 5 at" in info["failure_reason"], info["failure_reason"]

@@ -140,9 +140,11 @@ def main(argv: list[str] | None = None) -> int:
         p.error(f"--seed {a.seed}: must be >= 0")
     if a.minibatch > a.train_batch:
         p.error(f"--minibatch {a.minibatch}: must not exceed --train-batch {a.train_batch}")
+    import gymnasium as gym
+
     try:  # the env built here once: a bad --env-config named now, not in every runner's log after Ray started
         make_env(a.env, env_config).close()
-    except (ValueError, TypeError) as err:
+    except (ValueError, TypeError, gym.error.Error) as err:  # gymnasium's: an id it does not know
         p.error(f"--env {a.env} with --env-config {json.dumps(env_config)}: {err}")
     try:
         config = ppo_config(a.env, env_config, a.how, a.env_runners, a.envs_per_runner, a.train_batch,

@@ -13,8 +13,10 @@ machine's speed. On a cluster the run folders are written on the node that train
 ``--out-root`` a path on a file system every node shares. Every worker reads the config in the caller's working
 directory (where it exists on the worker's node), so a relative path inside the config (``init_from:
 lqr:configs/agents/...``) names the caller's file there too. Prints one line per seed as it completes; a failed
-seed stops the start of others, lets the running ones finish, and is named with its run folder (exit status 1);
-Ctrl-C saves the running seeds' models and exits with 130.
+seed stops the start of others, lets the running ones finish, and is named with its run folder (exit status 1).
+Ctrl-C serially saves the running seed's model and exits with 130; with ``--workers`` or ``--ray`` it stops the
+batch (exit status 130), and a running seed's save is not assured (Ray ends its actors, a broken process pool its
+workers).
 """
 
 from __future__ import annotations

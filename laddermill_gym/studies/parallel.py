@@ -129,6 +129,13 @@ def _label(index: int, task: Task) -> str:
     return f"task {index} ({fn.__module__}.{fn.__qualname__}, {sorted(kw)})"
 
 
+def _first_line(err: BaseException) -> str:
+    """An exception's message without a remote traceback (a Ray task's error carries the worker's)."""
+    cause = getattr(err, "cause", None)  # RayTaskError: the worker's own exception
+    lines = [x for x in str(cause if isinstance(cause, BaseException) else err).splitlines() if x.strip()]
+    return lines[0] if lines else ""
+
+
 class TasksFailed(RuntimeError):
     """Tasks of a :meth:`Pool.run` batch failed (the message names each; the first one's exception is the cause)."""
 
@@ -136,7 +143,7 @@ class TasksFailed(RuntimeError):
 def _failed(failures: list, labels: list[str], done: int, total: int) -> TasksFailed:
     """The error of a batch whose tasks ``failures`` ((index, exception), in the order they failed) failed; ``done``
     of the ``total`` tasks completed."""
-    text = "; ".join(f"{labels[i]} failed: {type(err).__name__}: {err}" for i, err in failures)
+    text = "; ".join(f"{labels[i]} failed: {type(err).__name__}: {_first_line(err)}" for i, err in failures)
     return TasksFailed(f"{text} ({done} of {total} tasks completed; the others were not started)" if done < total
                        - len(failures) else text)
 
@@ -215,7 +222,7 @@ class Pool:
                 raise UsageError(f"--workers {self.workers}: the Ray cluster ({self.ray}) has {cpus} CPUs, one per "
                                  "worker")
             n = self.workers or max(1, cpus)
-            n = min(n, self.cap) if self.cap else n
+            n = max(1, min(n, self.cap)) if self.cap is not None else n
             actor = self._ray.remote(num_cpus=1)(_RayWorker)
             self._actors = [actor.remote(*self._init) for _ in range(n)]
         elif self.workers:

@@ -32,6 +32,9 @@ from laddermill_gym.envs.pointmass.mill import PointMassMillBatch, mill_task_sta
 from laddermill_gym.envs.task import RewardConfig, config_from
 from laddermill_gym.envs.task_base import TaskCore, check_copies, clip_observations, env_disturbances, positive
 from laddermill_gym.kernels.contract import (
+    N3_POS,
+    N3_SIZE,
+    N3_VEL,
     PKO_OFFSET,
     PKO_SIZE,
     PKO_TENSION,
@@ -359,10 +362,10 @@ class PointMassTask(TaskCore):
         lowest node [m] (the string's nodes in order from the ground)."""
         x = self.batch.states[b]
         bad = np.flatnonzero(~np.isfinite(x))
-        if bad.size:  # the nodes' blocks in order (kernels/contract.py N3_*)
-            return f"node {int(bad[0]) // (x.size // self.batch.string.n_nodes)} not finite ({bad.size} state entries)"
-        nodes = np.arange(self.batch.string.n_nodes)
-        pos, vel = self.batch.positions(nodes)[b], self.batch.velocities(nodes)[b]
+        if bad.size:  # the nodes' blocks in order (kernels/contract.py N3_*), the fixed string's and the mill's
+            return f"node {int(bad[0]) // N3_SIZE} not finite ({bad.size} state entries)"
+        blocks = x.reshape(-1, N3_SIZE)
+        pos, vel = blocks[:, N3_POS: N3_POS + 3], blocks[:, N3_VEL: N3_VEL + 3]
         fast, low = int(np.argmax(np.linalg.norm(vel, axis=1))), int(np.argmax(pos[:, 2]))
         return (f"fastest node {fast} at {np.linalg.norm(vel[fast]):.4g} m/s, lowest node {low} at "
                 f"{-pos[low, 2]:.4g} m")

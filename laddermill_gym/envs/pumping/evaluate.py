@@ -25,8 +25,18 @@ _STATUS_TEXT = status_texts(_LIMITS)
 
 def failure_codes(task) -> np.ndarray:
     """Failure code (B,) of each copy at its observed state (0: flying; codes of ``PUMPING_FAILURES``); where several
-    apply, integration breakdown, then ground contact, cable overload, aerodynamic range."""
-    return wing_terms(task, task.raw_obs[:, None, :])[2]
+    apply, integration breakdown, then ground contact, cable overload, aerodynamic range; the winch's reel-in end
+    stop is 5, not a breakdown."""
+    return _with_reel_in(task, wing_terms(task, task.raw_obs[:, None, :])[2])
+
+
+def _with_reel_in(task, failure: np.ndarray) -> np.ndarray:
+    """``failure`` with code 5 where the integrator's LIMIT was the winch's reel-in end stop (a physical end)."""
+    for i in np.flatnonzero((failure == 1) & (task.batch.status == LIMIT)):
+        _, culprits, winch = _limit_step(task, int(i))
+        if winch is not None and not culprits:
+            failure[i] = REELED_IN
+    return failure
 
 
 def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
@@ -42,10 +52,7 @@ def evaluate_copies(task, a: np.ndarray, n_clipped: np.ndarray):
     b = task.batch
     o = task.raw_obs
     lat, rates, failure = wing_terms(task, o[:, None, :])
-    for i in np.flatnonzero((failure == 1) & (b.status == LIMIT)):  # the reel-in end stop: a physical end
-        x, culprits, winch = _limit_step(task, int(i))
-        if winch is not None and not culprits:
-            failure[i] = REELED_IN
+    failure = _with_reel_in(task, failure)  # the reel-in end stop: a physical end
     # per control period, as the reward is documented, also in a period a failure cut short (the energy of its
     # steps done; dividing by their time counted it up to n_substeps times over: fixed 2026-12-06)
     elapsed = task.control_dt

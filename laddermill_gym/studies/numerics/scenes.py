@@ -18,6 +18,13 @@ CRAFT_NAMES = ("roberts_flying_model", "roberts_35m_15kft", "roberts_35m_30kft")
 DEFAULT_SCENES = ("tethered_wing", "ladder_chain", "roberts_flying_model", "laddermill")
 
 
+def file_stem(name) -> str:
+    """A scene's name for its output files: the path's last part without a ``.yaml`` / ``.yml`` suffix only (a bare
+    name ``wing_v2.5`` keeps its dot)."""
+    last = Path(str(name)).name
+    return last.rsplit(".", 1)[0] if last.endswith((".yaml", ".yml")) else last
+
+
 def check_scene_names(names, option: str = "scene", crafts: bool = True) -> None:
     """UsageError naming ``option`` and the first of ``names`` that is neither a rotorcraft config name
     (:data:`CRAFT_NAMES`, with ``crafts``) nor a scene file (a path or a shipped name), or a name given twice (its
@@ -27,7 +34,7 @@ def check_scene_names(names, option: str = "scene", crafts: bool = True) -> None
     twice = sorted({n for n in names if list(names).count(n) > 1})
     if twice:
         raise UsageError(f"{option} {twice}: named twice")
-    stems = [Path(str(n)).stem for n in names]  # the studies name their output files by the stem
+    stems = [file_stem(n) for n in names]  # the studies name their output files by it
     same = sorted({str(n) for n, st in zip(names, stems, strict=True) if stems.count(st) > 1})
     if same:
         raise UsageError(f"{option} {same}: the same file name, so their output files would overwrite each other "

@@ -259,7 +259,7 @@ def add_parser(sub) -> argparse.ArgumentParser:
 
 
 def _cmd(args) -> int:
-    from laddermill_gym.studies.numerics.scenes import check_scene_names
+    from laddermill_gym.studies.numerics.scenes import check_scene_names, file_stem
     from laddermill_gym.studies.numerics.work_precision_output import plot_work_precision, print_summary, save_rows
 
     check_scene_names(args.scene)
@@ -291,7 +291,7 @@ def _cmd(args) -> int:
         else:
             res = run_scene(scene, args.forcing, args.time, args.samples, args.repeats, args.n_dt, not args.quiet,
                             args.controller, tuple(dict.fromkeys(args.jacobian_every)))
-        stem = out / Path(scene).stem
+        stem = out / file_stem(scene)  # a bare name wing_v2.5 keeps its dot
         save_rows(res, Path(f"{stem}.csv"))  # not with_suffix: a scene file named wing_v2.5 kept wing_v2
         Path(f"{stem}.json").write_text(json.dumps(res, indent=1, default=float))
         plot_work_precision(res, Path(f"{stem}.png"))
