@@ -265,7 +265,7 @@ def thread_scaling(thread_counts, envs=None, copies: int = 512, quick: bool = Fa
         from laddermill_gym.control.factory import make_controller
 
         act = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
-        if not getattr(native.task, "parallel", False):  # its copies on one thread whatever numba's count
+        if max(counts) > 1 and not getattr(native.task, "parallel", False):  # one thread whatever numba's count
             from laddermill_gym.studies.commands import UsageError
 
             native.close()
