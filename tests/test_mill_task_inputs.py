@@ -126,3 +126,12 @@ def test_the_power_ratio_observation_ignores_the_rewards_normalisation(small_env
     assert station[STATION_OBS_INDEX["power_ratio"]] == pytest.approx(env.task.power[0] / op.reference_power_W,
                                                                       rel=1e-6)
     assert env.task.p_ref == 1.0e5  # the reward keeps the given normalisation
+
+
+def test_explicit_slot_groups_are_refused_in_the_mills_words():
+    from laddermill_gym.envs.laddermill.actions import resolve_slot_groups
+
+    with pytest.raises(ValueError, match=r"every slot 0\.\.4 must appear in exactly one non-empty group"):
+        resolve_slot_groups([[0, 1], [1, 2]], 5)
+    with pytest.raises(ValueError, match=r"one of \('per_slot', 'all', 'halves', 'bands'\) or a list of slot index"):
+        resolve_slot_groups(5, 5)  # it named the wing env's 'per_wing' and "wing index lists"

@@ -103,12 +103,14 @@ def clip_actions(action, n_copies: int, n_actions: int) -> tuple[np.ndarray, np.
     raise AssertionError("clip_count found a non-finite entry that _finite did not")  # pragma: no cover
 
 
-def resolve_groups(groups, n_wings: int, two_ended: bool) -> tuple[tuple[int, ...], ...]:
+def resolve_groups(groups, n_wings: int, two_ended: bool, unit: str = "wing",
+                   names: tuple[str, ...] = GROUPINGS) -> tuple[tuple[int, ...], ...]:
     """Wing index groups from a grouping name or an explicit list of index lists.
 
     ``"per_wing"``: one group per wing; ``"all"``: one group; ``"halves"``: the ascending half
     (wings 0 .. ceil(n/2) - 1) and the descending half of a chain between two ground points. An explicit
-    list must hold every wing exactly once. Raises ValueError naming the field ``groups``.
+    list must hold every wing exactly once. Raises ValueError naming the field ``groups``, the groupings ``names``
+    and the indexed ``unit`` ("wing"; the mill's "slot") the caller offers.
     """
     if isinstance(groups, str):
         if groups == "per_wing":
@@ -121,14 +123,15 @@ def resolve_groups(groups, n_wings: int, two_ended: bool) -> tuple[tuple[int, ..
                                  f"(this scene has {n_wings} wing(s), {'two' if two_ended else 'one'} ground end)")
             half = (n_wings + 1) // 2
             return (tuple(range(half)), tuple(range(half, n_wings)))
-        raise ValueError(f"groups = {groups!r}: must be one of {GROUPINGS} or a list of wing index lists")
+        raise ValueError(f"groups = {groups!r}: must be one of {names} or a list of {unit} index lists")
     try:
         out = tuple(tuple(int(k) for k in g) for g in groups)
     except TypeError:
-        raise ValueError(f"groups = {groups!r}: must be one of {GROUPINGS} or a list of wing index lists") from None
+        raise ValueError(f"groups = {groups!r}: must be one of {names} or a list of {unit} index lists") from None
     flat = sorted(k for g in out for k in g)
     if any(len(g) == 0 for g in out) or flat != list(range(n_wings)):
-        raise ValueError(f"groups = {groups!r}: every wing 0..{n_wings - 1} must appear in exactly one non-empty group")
+        raise ValueError(f"groups = {groups!r}: every {unit} 0..{n_wings - 1} must appear in exactly one non-empty "
+                         "group")
     return out
 
 

@@ -47,7 +47,7 @@ def resolve_slot_groups(groups, n_slots: int, n_bands: int = 4) -> tuple[tuple[i
         up = np.array_split(np.arange(half), int(n_bands))
         down = np.array_split(np.arange(half, n_slots), int(n_bands))
         return tuple(tuple(int(k) for k in g) for g in (*up, *down))
-    return resolve_groups("per_wing" if groups == "per_slot" else groups, n_slots, True)
+    return resolve_groups("per_wing" if groups == "per_slot" else groups, n_slots, True, "slot", SLOT_GROUPINGS)
 
 
 def action_count(n_slots: int, groups="per_slot", n_bands: int = 4, surfaces=CONTROL_NAMES,
