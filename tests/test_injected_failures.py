@@ -37,8 +37,9 @@ def test_the_wing_families_name_the_entry_or_the_fastest_body(env_id, kwargs, wi
     into its velocity names wing k as the fastest, at that speed."""
     from laddermill_gym.kernels.contract import B3_SIZE
 
-    for entry, value, needle in ((10, np.nan, f"wing {wing} p [rad/s] = nan (state entry {wing * B3_SIZE + 10};"),
-                                 (7, 5000.0, f"fastest wing {wing}: speed 5000 m/s")):
+    unit = "slot" if "Mill" in env_id else "wing"  # the mill names its state's wings by slot (2026-12-07)
+    for entry, value, needle in ((10, np.nan, f"{unit} {wing} p [rad/s] = nan (state entry {wing * B3_SIZE + 10};"),
+                                 (7, 5000.0, f"fastest {unit} {wing}: speed 5000 m/s")):
         env = gym.make(env_id, **kwargs)
         env.reset(seed=0)
         zero = np.zeros(env.action_space.shape, np.float32)

@@ -135,3 +135,16 @@ def test_explicit_slot_groups_are_refused_in_the_mills_words():
         resolve_slot_groups([[0, 1], [1, 2]], 5)
     with pytest.raises(ValueError, match=r"one of \('per_slot', 'all', 'halves', 'bands'\) or a list of slot index"):
         resolve_slot_groups(5, 5)  # it named the wing env's 'per_wing' and "wing index lists"
+
+
+def test_a_mill_breakdown_names_the_slot(small_env):
+    """The simulator names a state entry by its wing index, which in the mill's state is the slot (wings move up a
+    slot at every transfer): the mill's failure text said "wing 3 u" beside its "slot" everywhere else."""
+    from laddermill_gym.kernels.contract import B3_SIZE, B3_VEL
+
+    env = _quiet(**SMALL, disturbances=[], operating_point=small_env.operating_point)
+    env.reset(seed=0)
+    env.unwrapped.task.batch.states[0, B3_SIZE * 3 + B3_VEL] = np.nan  # slot 3's forward speed
+    _, _, term, _, info = env.step(np.zeros(env.action_space.shape, np.float32))
+    assert term and info["failure"] == 1
+    assert "slot 3 u" in info["failure_reason"] and "wing 3" not in info["failure_reason"], info["failure_reason"]

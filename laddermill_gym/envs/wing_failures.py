@@ -6,6 +6,7 @@ LIMIT code and how it calls a wing ("wing k", "slot k", or the one wing)."""
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
@@ -70,23 +71,30 @@ def integration_diagnosis(task, b: int) -> str:
         return f"no diagnosis of the state ({type(err).__name__}: {err})"
 
 
-def shared_failure_text(task, b: int, code: int, statuses: dict[int, str]) -> str | None:
+def shared_failure_text(task, b: int, code: int, statuses: dict[int, str], unit: str = "wing") -> str | None:
     """The sentence for copy ``b``'s failure ``code`` where the wing families word it alike: "" for 0, the
     integrator's status for 1, a ground stop of the integrator for 2, the cable's tension [N] for 3; None where the
-    family words it (2 by altitude, 4)."""
+    family words it (2 by altitude, 4). ``unit``: what the family calls a wing's index (the mill: "slot", its state
+    held in slot order), used for the simulator's "wing k"."""
     if code == 0:
         return ""
     bt = task.batch
     t = float(bt.t[b])
     if code == 1:
         return (f"t = {t:.2f} s: integration failed ({statuses.get(int(bt.status[b]), 'unknown')}); "
-                f"{integration_diagnosis(task, b)}")
+                f"{_in_units(integration_diagnosis(task, b), unit)}")
     if code == 2 and bt.status[b] == GROUND:
-        return f"t = {t:.2f} s: {ground_stop_text(bt.assembly, bt.states[b], bt.settings.ground_height)}"
+        stop = ground_stop_text(bt.assembly, bt.states[b], bt.settings.ground_height)
+        return f"t = {t:.2f} s: {_in_units(stop, unit)}"
     if code == 3:
         return (f"t = {t:.2f} s: cable tension {task.aux[b, AUX_MAX_TENSION]:.4g} N over {task.breaking_tension:.4g} N"
                 f"{_strongest_element(task, b)}")
     return None
+
+
+def _in_units(text: str, unit: str) -> str:
+    """``text`` with the simulator's "wing k" as "``unit`` k"."""
+    return text if unit == "wing" else re.sub(r"\bwing (\d+)", rf"{unit} \1", text)
 
 
 def _strongest_element(task, b: int) -> str:
@@ -105,7 +113,7 @@ def wing_failure_text(task, b: int, code: int, statuses: dict[int, str], rows: n
     status (``statuses``), a ground stop of the integrator or the ``lowest`` wing's ("slot k", "wing") CG altitude
     [m] below ``min_altitude``, the cable's tension [N], or the worst wing of the observation ``rows`` (n, 15)
     outside the aerodynamic range (:func:`aero_range_text` with ``label``)."""
-    text = shared_failure_text(task, b, code, statuses)
+    text = shared_failure_text(task, b, code, statuses, label or "wing")
     if text is not None:
         return text
     if code == 2:
