@@ -111,28 +111,29 @@ def ground_message(sim, h: float) -> str:
             f"kept at t = {sim.t:.6g} s, the last one before the contact")
 
 
+def lowest_body(asm, x: np.ndarray) -> tuple[str, float]:
+    """("wing k" or "node j", its height [m]) of the lowest wing CG or free cable node of the state x."""
+    wh, nh = body_heights(asm, x)
+    h = np.concatenate([wh, nh])
+    i = int(np.argmin(h))
+    return (f"wing {i}" if i < wh.size else f"node {i - wh.size}"), float(h[i])
+
+
 def start_below_ground(sim) -> str:
     """"" when every wing CG and free cable node of ``sim``'s state is above its ground, else a sentence naming the
     lowest body, its height [m] and the ground's."""
-    wh, nh = body_heights(sim.assembly, sim.state)
-    h = np.concatenate([wh, nh])
-    if not h.size or h.min() > sim.settings.ground_height:
+    name, h = lowest_body(sim.assembly, sim.state)
+    if h > sim.settings.ground_height:
         return ""
-    i = int(np.argmin(h))
-    name = f"wing {i}" if i < wh.size else f"node {i - wh.size}"
-    return (f"the start has {name} at height {h[i]:.4g} m, at or below the ground at {sim.settings.ground_height:g} "
-            "m")
+    return f"the start has {name} at height {h:.4g} m, at or below the ground at {sim.settings.ground_height:g} m"
 
 
 def ground_stop_text(asm, x: np.ndarray, ground_height: float) -> str:
     """Why a batch copy in the state x (its last state above the ground) stopped with status GROUND: the ground
     height [m] and the lowest wing CG or free cable node, which reached it in the next step (the environments)."""
-    wh, nh = body_heights(asm, x)
-    names = [f"wing {k}" for k in range(wh.size)] + [f"node {j}" for j in range(nh.size)]
-    h = np.concatenate([wh, nh])
-    i = int(np.argmin(h))
+    name, h = lowest_body(asm, x)
     return (f"ground contact in the next physics step (ground height {ground_height:g} m); lowest body "
-            f"{names[i]} at {h[i]:.3g} m")
+            f"{name} at {h:.3g} m")
 
 
 def _limit_culprits(sim, x: np.ndarray) -> list[str]:

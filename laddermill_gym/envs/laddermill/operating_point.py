@@ -40,6 +40,7 @@ from laddermill_gym.model.disk_cache import feed
 from laddermill_gym.model.input_cache import input_cache
 from laddermill_gym.model.states import planar_to_3d
 from laddermill_gym.model.station import electrical_power
+from laddermill_gym.sim.reports import lowest_body
 
 __all__ = ["OperatingPoint", "SettleConfig", "compute_operating_point", "operating_point", "cached_operating_point",
            "mill_scene", "scene_digest", "nominal_positions", "operating_point_pending", "SEARCH_HOOK"]
@@ -153,10 +154,9 @@ def _check_rest_above_ground(sim, sc2: Scene, options: tuple) -> None:
     too weak to hold the chain up: the search would stop at its first step)."""
     if sim.settings.ground_contact == "off":
         return
-    height = -sim.wing_positions()[:, 2]
-    k = int(np.argmin(height))
-    if not height[k] > sim.settings.ground_height:
-        raise _search_failure(sc2, options, f"its equilibrium at rest has wing {k} at height {height[k]:.4g} m, "
+    name, height = lowest_body(sim.assembly, sim.state)
+    if not height > sim.settings.ground_height:
+        raise _search_failure(sc2, options, f"its equilibrium at rest has {name} at height {height:.4g} m, "
                                             f"at or below the ground ({sim.settings.ground_height:g} m)")
 
 
