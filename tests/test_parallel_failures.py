@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 
 from laddermill_gym.harness import train_seeds as ts
-from laddermill_gym.studies import parallel
+from laddermill_gym.studies import parallel, pool_workers
 from laddermill_gym.studies.commands import UsageError
 
 
@@ -61,7 +61,7 @@ class _FakeRay:
     def cluster_resources(self):
         return {"CPU": float(self.cpus)}
 
-    def remote(self, num_cpus=1):
+    def remote(self, num_cpus=1, max_concurrency=1):
         fake = self
 
         def wrap(cls):
@@ -82,7 +82,8 @@ class _FakeRay:
 def test_more_ray_workers_than_cluster_cpus_is_refused_and_the_pool_is_capped(monkeypatch):
     fake = _FakeRay(cpus=4)
     monkeypatch.setattr(parallel, "_ray_module", lambda: fake)
-    monkeypatch.setattr(parallel, "_init_worker", lambda *a: None)  # the stand-in actors run here: keep numba's threads
+    monkeypatch.setattr(pool_workers, "init_worker", lambda *a, **k: None)  # the stand-in actors run here: keep
+    # numba's threads and Ctrl-C
     with pytest.raises(UsageError, match=r"--workers 6: the Ray cluster \(auto\) has 4 CPUs"):
         parallel.Pool(6, "auto").__enter__()
     assert fake.actors == []

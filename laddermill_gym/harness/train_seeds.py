@@ -14,9 +14,9 @@ machine's speed. On a cluster the run folders are written on the node that train
 directory (where it exists on the worker's node), so a relative path inside the config (``init_from:
 lqr:configs/agents/...``) names the caller's file there too. Prints one line per seed as it completes; a failed
 seed stops the start of others, lets the running ones finish, and is named with its run folder (exit status 1).
-Ctrl-C serially saves the running seed's model and exits with 130; with ``--workers`` or ``--ray`` it stops the
-batch (exit status 130), and a running seed's save is not assured (Ray ends its actors, a broken process pool its
-workers).
+Ctrl-C saves the running seeds' models, starts no other seed and exits with 130, serially as with ``--workers`` or
+``--ray`` (there the workers ignore the terminal's Ctrl-C and the caller passes it on: ``studies/pool_workers``); a
+second Ctrl-C aborts without saving.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ from pathlib import Path
 from tqdm import tqdm
 
 from laddermill_gym.studies.commands import Command, UsageError, writable_folder
-from laddermill_gym.studies.parallel import Pool, TasksFailed, add_arguments, check_arguments
+from laddermill_gym.studies.parallel import Pool, TasksFailed, TasksInterrupted, add_arguments, check_arguments
 
 __all__ = ["train_task", "warm_envs", "train_seeds", "TrainingInterrupted", "in_callers_folder", "add_parser", "main"]
 
@@ -167,6 +167,9 @@ def _run(args, prog: str = PROG) -> int:
         train_seeds(args.config, args.seeds, args.out_root, over, args.workers, args.ray, on_result=line)
     except ConnectionError as err:  # Ray's cluster not reached (ray.init): no seed has trained
         _fail(prog, f"--ray {args.ray!r}: {err}")
+    except TasksInterrupted as err:  # Ctrl-C on workers: each running seed saved its model (or completed)
+        print(f"{prog}: interrupted: {err}", file=sys.stderr)
+        return 130
     except TasksFailed as err:  # the seeds that completed have had their line
         if isinstance(err.__cause__, TrainingInterrupted):
             print(f"{prog}: interrupted: {err}", file=sys.stderr)

@@ -78,8 +78,8 @@ def run_guarded(name: str, run) -> int:
         text = " ".join(line.strip() for line in str(err).splitlines() if line.strip())
         print(f"laddermill {name}: error: {text}", file=sys.stderr)
         return 3 if isinstance(err, SimulationError) else 2
-    except KeyboardInterrupt:
-        print(f"laddermill {name}: interrupted (Ctrl-C)", file=sys.stderr)
+    except KeyboardInterrupt as err:  # a batch on workers says what each task did (studies/parallel.TasksInterrupted)
+        print(f"laddermill {name}: interrupted (Ctrl-C)" + (f": {err}" if str(err) else ""), file=sys.stderr)
         return 130
 
 

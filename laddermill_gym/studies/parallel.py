@@ -17,7 +17,13 @@ Each worker therefore runs the caller's ``warmup`` tasks once, when it starts, b
 episode of every environment and controller the tasks use): the compile or cache load happens once per worker,
 never per task, and the worker's numba thread count is set to its share of the cores. A worker with another
 laddermill_gym, numba or numpy version than the caller refuses to start; one whose package source differs (a
-digest of its ``.py`` files: an edited file) is reported as a RuntimeWarning.
+digest of its ``.py`` files: an edited file) is reported as a RuntimeWarning. The worker side (and how a worker
+hears its caller's Ctrl-C instead of the terminal's) is :mod:`laddermill_gym.studies.pool_workers`.
+
+Ctrl-C. On workers the first Ctrl-C starts no new task and asks the running ones to stop: a training
+(``harness/train``) saves its model and returns, as it does serially; other tasks run to their end. Once they
+ended, :class:`TasksInterrupted` (a KeyboardInterrupt: exit status 130) names what each did. A second Ctrl-C aborts
+at once (the local workers end, Ray's actors are killed).
 Measured figures and the cluster set-up: ``laddermill_gym/docs/scale_out.md``.
 
     laddermill workers warm   # compile or load every gusts-v1 env's kernels; prints the time
@@ -27,96 +33,34 @@ from __future__ import annotations
 
 import argparse
 import concurrent.futures as cf
-import hashlib
 import multiprocessing
 import os
-import socket
 import sys
-import time
 import uuid
 import warnings
 from collections.abc import Callable
-from pathlib import Path
 from typing import Any
 
 from tqdm import tqdm
 
-__all__ = ["Task", "Pool", "TasksFailed", "run_tasks", "worker_report", "source_digest", "add_arguments",
-           "check_arguments", "RAY_HINT"]
+from laddermill_gym.sim.interrupt import children_ignore_interrupts, stop_requests
+from laddermill_gym.studies.pool_workers import (
+    RayWorker,
+    call_task,
+    init_worker,
+    source_digest,
+    versions,
+    worker_report,
+)
+
+__all__ = ["Task", "Pool", "TasksFailed", "TasksInterrupted", "STOP_MESSAGE", "run_tasks", "worker_report",
+           "source_digest", "add_arguments", "check_arguments", "RAY_HINT"]
 
 #: One task: a module-level function and its keyword arguments (both picklable).
 Task = tuple[Callable[..., Any], dict]
 
 #: What to install for ``--ray``.
 RAY_HINT = 'Ray is an optional extra: pip install "laddermill_gym[ray]" (or "ray[default]") on every node'
-
-# The state of this process as a worker: the run it warmed up for, how often it warmed up for that run and the
-# warm-up's wall time [s].
-_STATE: dict[str, Any] = {"run": None, "warmups": 0, "warmup_s": 0.0}
-
-
-def source_digest() -> str:
-    """SHA-256 (first 16 hex digits) over the relative paths and contents of the package's ``.py`` files: two
-    processes with the same digest run the same code (computed afresh at every call: about 15 ms; an edit
-    between the caller's start of a run and a worker's start is caught)."""
-    root = Path(__file__).resolve().parents[1]
-    h = hashlib.sha256()
-    for path in sorted(root.rglob("*.py")):
-        h.update(path.relative_to(root).as_posix().encode())
-        h.update(path.read_bytes())
-    return h.hexdigest()[:16]
-
-
-def _versions() -> dict[str, str]:
-    import numba
-    import numpy
-
-    import laddermill_gym
-
-    return {"laddermill_gym": laddermill_gym.__version__, "source": source_digest(), "numba": numba.__version__,
-            "numpy": numpy.__version__}
-
-
-def _init_worker(run_id: str, warmup: tuple, threads: int | None, versions: dict) -> None:
-    """Per-worker start: check the versions against the caller's, set numba's thread count, run the warm-up.
-
-    Another package version, numba or numpy raises RuntimeError; other package source (an edited file) only
-    leaves a note that the caller turns into a warning (a shared working tree changes under a run)."""
-    here = _versions()
-    bad = {k: (v, here.get(k)) for k, v in versions.items() if here.get(k) != v}
-    text = ", ".join(f"{k} {w!r} here, {v!r} at the caller" for k, (v, w) in bad.items())
-    where = f"worker on {socket.gethostname()} (pid {os.getpid()})"
-    if set(bad) - {"source"}:
-        raise RuntimeError(f"{where} runs other code than the caller: {text}; install the same laddermill_gym on "
-                           "every node")
-    if threads:
-        import numba
-
-        numba.set_num_threads(min(int(threads), numba.config.NUMBA_NUM_THREADS))
-    t0 = time.perf_counter()
-    for fn, kw in warmup:
-        fn(**kw)
-    if _STATE["run"] != run_id:
-        _STATE.update(run=run_id, warmups=0, warmup_s=0.0)
-    _STATE["warmups"] += 1
-    _STATE["warmup_s"] += time.perf_counter() - t0
-    _STATE["note"] = f"{where} runs other package source than the caller ({text})" if bad else ""
-
-
-def _call(index: int, fn: Callable, kwargs: dict) -> tuple[int, Any, str]:
-    """(index, the task's result, the worker's version note: given once, then "")."""
-    result = fn(**kwargs)
-    return index, result, _STATE.pop("note", "")
-
-
-def worker_report() -> dict:
-    """A task that describes the process running it: host, pid, run id, warm-ups done for that run and their
-    wall time [s], numba's thread count."""
-    import numba
-
-    return {"host": socket.gethostname(), "pid": os.getpid(), "run": _STATE["run"], "warmups": _STATE["warmups"],
-            "warmup_s": _STATE["warmup_s"], "numba_threads": numba.get_num_threads()}
-
 
 def _warn(note: str) -> None:
     if note:
@@ -129,21 +73,46 @@ def _label(index: int, task: Task) -> str:
     return f"task {index} ({fn.__module__}.{fn.__qualname__}, {sorted(kw)})"
 
 
+def _own(err: BaseException) -> BaseException:
+    """The task's own exception (a Ray task's error wraps the worker's as its ``cause``)."""
+    cause = getattr(err, "cause", None)
+    return cause if isinstance(cause, BaseException) else err
+
+
 def _first_line(err: BaseException) -> str:
-    """An exception's message without a remote traceback (a Ray task's error carries the worker's)."""
-    cause = getattr(err, "cause", None)  # RayTaskError: the worker's own exception
-    lines = [x for x in str(cause if isinstance(cause, BaseException) else err).splitlines() if x.strip()]
-    return lines[0] if lines else ""
+    """An exception's type and message without a remote traceback."""
+    lines = [x for x in str(_own(err)).splitlines() if x.strip()]
+    return f"{type(_own(err)).__name__}: {lines[0] if lines else ''}"
 
 
 class TasksFailed(RuntimeError):
     """Tasks of a :meth:`Pool.run` batch failed (the message names each; the first one's exception is the cause)."""
 
 
+class TasksInterrupted(KeyboardInterrupt):
+    """Ctrl-C stopped a :meth:`Pool.run` batch of local processes or Ray actors: no task started after it, the running
+    ones were asked to stop (a training saves its model) and ended; the message names what each task did."""
+
+
+#: What the caller prints at the first Ctrl-C of a batch on workers.
+STOP_MESSAGE = ("Ctrl-C: no new task starts; the running tasks are asked to stop (a training saves its model and "
+                "returns; other tasks run to their end). Ctrl-C again to abort them")
+
+
+def _interrupted(labels: list[str], outcomes: dict, total: int) -> TasksInterrupted:
+    """The error of a batch that Ctrl-C stopped: ``outcomes`` maps a task's index to None (completed) or its
+    exception (a stopped training's, or a failure)."""
+    ended = [f"{labels[i]}: {_first_line(err)}" for i, err in outcomes.items()
+             if err is not None]
+    text = f"stopped by Ctrl-C, {sum(e is None for e in outcomes.values())} of {total} tasks completed"
+    rest = "" if len(outcomes) == total else f"; {total - len(outcomes)} not started"
+    return TasksInterrupted("; ".join([text, *ended]) + rest)
+
+
 def _failed(failures: list, labels: list[str], done: int, total: int) -> TasksFailed:
     """The error of a batch whose tasks ``failures`` ((index, exception), in the order they failed) failed; ``done``
     of the ``total`` tasks completed."""
-    text = "; ".join(f"{labels[i]} failed: {type(err).__name__}: {_first_line(err)}" for i, err in failures)
+    text = "; ".join(f"{labels[i]} failed: {_first_line(err)}" for i, err in failures)
     return TasksFailed(f"{text} ({done} of {total} tasks completed; the others were not started)" if done < total
                        - len(failures) else text)
 
@@ -154,16 +123,6 @@ def _ray_module():
     except ImportError:
         raise RuntimeError(f"--ray: {RAY_HINT}") from None
     return ray
-
-
-class _RayWorker:
-    """The Ray actor: one worker process that warms up once (in ``__init__``) and then runs tasks."""
-
-    def __init__(self, *init_args):
-        _init_worker(*init_args)
-
-    def call(self, index: int, fn: Callable, kwargs: dict) -> tuple[int, Any, str]:
-        return _call(index, fn, kwargs)
 
 
 class Pool:
@@ -199,10 +158,11 @@ class Pool:
             threads = max(1, (os.cpu_count() or 1) // workers)
         self.workers, self.ray = workers, ray
         warm = tuple((fn, dict(kw)) for fn, kw in warmup)
-        self._init = (uuid.uuid4().hex, warm, threads if (workers or ray) else None, _versions())
+        self._init = (uuid.uuid4().hex, warm, threads if (workers or ray) else None, versions())
         self._ex = self._ray = None
         self._actors: list = []
         self._started_ray = False
+        self._events: tuple = ()
 
     def __enter__(self) -> Pool:
         if self.ray is not None:
@@ -223,16 +183,22 @@ class Pool:
                                  "worker")
             n = self.workers or max(1, cpus)
             n = max(1, min(n, self.cap)) if self.cap is not None else n
-            actor = self._ray.remote(num_cpus=1)(_RayWorker)
+            actor = self._ray.remote(num_cpus=1, max_concurrency=2)(RayWorker)  # a thread for stop() beside call()
             self._actors = [actor.remote(*self._init) for _ in range(n)]
         elif self.workers:
-            self._ex = cf.ProcessPoolExecutor(self.workers, mp_context=multiprocessing.get_context("spawn"),
-                                              initializer=_init_worker, initargs=self._init)
+            spawn = multiprocessing.get_context("spawn")
+            self._events = (spawn.Event(), spawn.Event())  # the caller's stop and abort (pool_workers)
+            self._ex = cf.ProcessPoolExecutor(self.workers, mp_context=spawn, initializer=init_worker,
+                                              initargs=(*self._init, self._events))
         else:
-            _init_worker(*self._init)
+            init_worker(*self._init)
         return self
 
-    def __exit__(self, *exc) -> None:
+    def __exit__(self, kind=None, *exc) -> None:
+        aborted = kind is not None and issubclass(kind, KeyboardInterrupt) and not issubclass(kind, TasksInterrupted)
+        if self._events and aborted:  # a second Ctrl-C (or one in the caller's own code): end the local workers
+            for event in self._events:
+                event.set()
         if self._ex is not None:
             self._ex.shutdown(wait=True, cancel_futures=True)
         for a in self._actors:
@@ -245,14 +211,20 @@ class Pool:
         """Run ``tasks`` (a sequence of :data:`Task`); their results in the order of ``tasks``, a progress bar
         over completed tasks; ``on_result(index, result)`` is called as each completes (a line per task that
         stays on screen whatever the rest does). A failed task stops the start of new ones; the tasks running then
-        finish (and reach ``on_result``); then RuntimeError names every failed task by its ``labels`` entry
-        (default: index, function and argument names)."""
+        finish (and reach ``on_result``); then TasksFailed names every failed task by its ``labels`` entry
+        (default: index, function and argument names). On local processes or Ray actors the first Ctrl-C stops the
+        start of new tasks and asks the running ones to stop (:data:`STOP_MESSAGE`); once they ended,
+        TasksInterrupted names each; a second Ctrl-C raises KeyboardInterrupt at once and ends the workers. Serially
+        Ctrl-C is the running task's (a training saves and raises; other tasks raise KeyboardInterrupt)."""
         tasks = [(fn, dict(kw)) for fn, kw in tasks]
         labels = [_label(i, t) for i, t in enumerate(tasks)] if labels is None else [str(x) for x in labels]
         out: list = [None] * len(tasks)
-        failures, done = [], 0
-        with tqdm(total=len(tasks), desc=desc, unit=unit, disable=not progress, smoothing=0.0) as bar:
-            for i, result, note, err in self._completed(tasks):
+        failures, done, outcomes = [], 0, {}
+        serial = not (self._actors or self._ex is not None)
+        with (tqdm(total=len(tasks), desc=desc, unit=unit, disable=not progress, smoothing=0.0) as bar,
+              stop_requests(None if serial else STOP_MESSAGE) as stop):
+            for i, result, note, err in self._completed(tasks, None if serial else stop):
+                outcomes[i] = err
                 if err is not None:
                     failures.append((i, err))
                     continue
@@ -262,34 +234,41 @@ class Pool:
                 bar.update()
                 if on_result is not None:
                     on_result(i, result)
+        if not serial and stop.requested:
+            raise _interrupted(labels, outcomes, len(tasks))
         if failures:
             raise _failed(failures, labels, done, len(tasks)) from failures[0][1]
         return out
 
-    def _completed(self, tasks):
+    def _completed(self, tasks, stop=None):
         """(index, result, note, None) of every task as it completes, (index, None, "", exception) of a failed one;
-        after a failure no task starts. Local processes and Ray actors get a task when one is free (so none waits
-        in a queue that a failure or Ctrl-C could not empty); serially, a failure ends the batch."""
-        if not (self._actors or self._ex is not None):
+        after a failure or a ``stop`` request (the caller's Ctrl-C: the running tasks are asked to stop) no task
+        starts. Local processes and Ray actors get a task when one is free (so none waits in a queue that a failure
+        or Ctrl-C could not empty); serially (``stop`` None), a failure ends the batch."""
+        if stop is None:
             for i, task in enumerate(tasks):
                 try:
-                    yield (*_call(i, *task), None)
+                    yield (*call_task(i, *task), None)
                 except Exception as err:
                     yield i, None, "", err
                     return
             return
-        queue, running, failed = list(range(len(tasks)))[::-1], {}, False
+        queue, running, failed, asked = list(range(len(tasks)))[::-1], {}, False, False
         free = list(self._actors) if self._actors else [None] * self.workers
         while queue or running:
-            while queue and free and not failed:
+            while queue and free and not failed and not stop.requested:
                 i, slot = queue.pop(), free.pop()
-                ref = (slot.call.remote(i, *tasks[i]) if slot is not None else
-                       self._ex.submit(_call, i, *tasks[i]))
+                with children_ignore_interrupts():  # a submit may start a local worker (interrupt.py)
+                    ref = (slot.call.remote(i, *tasks[i]) if slot is not None else
+                           self._ex.submit(call_task, i, *tasks[i]))
                 running[ref] = (i, slot)
+            if stop.requested and not asked:
+                asked = True
+                self._ask_to_stop([slot for _, slot in running.values()])
             if not running:
                 return
-            done = (self._ray.wait(list(running), num_returns=1)[0] if self._actors else
-                    cf.wait(running, return_when=cf.FIRST_COMPLETED)[0])
+            done = (self._ray.wait(list(running), num_returns=1, timeout=0.25)[0] if self._actors else
+                    cf.wait(running, timeout=0.25, return_when=cf.FIRST_COMPLETED)[0])  # a Ctrl-C noticed in 0.25 s
             for ref in done:
                 i, slot = running.pop(ref)
                 free.append(slot)
@@ -298,6 +277,15 @@ class Pool:
                 except Exception as err:
                     failed = True
                     yield i, None, "", err
+
+    def _ask_to_stop(self, busy: list) -> None:
+        """Pass the caller's Ctrl-C on to the workers as a stop: every local process (an idle one stops its next
+        task at once; none is given one), or the ``busy`` Ray actors."""
+        if self._events:
+            self._events[0].set()
+        for actor in busy:
+            if actor is not None:  # a local process's slot is None
+                actor.stop.remote()
 
 
 def run_tasks(tasks, *, workers: int = 0, ray: str | None = None, warmup=(), threads: int | None = None,
