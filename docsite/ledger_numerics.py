@@ -177,6 +177,11 @@ NUMERICS = Covered(
         Printed('paired_survival_shipped', ('held-out counts again (84 and 70)',), cpu="znver4"),
     ),
     history=(  # the page's earlier figures, replaced by today's printed ones (issue 33 point 6, 2026-11-30)
+        History('2026-12-07', "a review's scripts: the rigid J blocks against central differences of the assembled "
+                "forces (model_assemble), with sag and without", "the Jacobian review's repro scripts (4ddc82a)",
+                ('length too: a review of 2026-12-07 found 3.36 and 4.29 times the true d sigma / d l on the tethered '
+                 "wing's two elements, 693 times at ladder_chain's apex)",
+                 'stiffness blocks within 0.3 %, off-diagonal damping 3.9 %)')),
         History('2026-12-02', "laddermill gust-bench --suite gusts-v1 --env laddermill_gym/TetheredWing-v0 "
                 "--controllers lqr --scenarios NTM_IB under NPY_DISABLE_CPU_FEATURES='X86_V4 AVX512_ICL' (b0d09ba)",
                 'the start cache filled by a process with AVX-512 loops, before the key carried the kernels',

@@ -267,6 +267,17 @@ PM_HISTORY = (
     History("2026-11-24", "the catenary relaxation of a 256-element string with the implicit step's slack elements "
             "dropped from the matrix (a variant of a0790b0's kernel, not committed)",
             "the rejected slack-element variant", ("(speeds over 1000 m/s within seconds at 256 elements,",)),
+    # the slack element's damping in the implicit step's matrix, and the variant without it (a review's scripts)
+    History("2026-12-07", "a review's scripts on the implicit step: one step of a 10-element podgaets_5km string with "
+            "a slack element, and the moving mill's first period, with the slack element's damping dropped from "
+            "kernels/pointmass/blocks.py (not committed)",
+            "the slack-damping variant (4ddc82a's kernel and the variant)",
+            ("10-element string of the cable's data with one element at 0.9 l0 closing at 2 m/s",
+             "On the moving mill at 70 m elements", "power at 10 and 25 ms unchanged",
+             "differed from the model's by 2931 and 4193 N at 1 ms and 0.1 ms against the limit DA/l0 x 2 m/s = "
+             "4320 N.",
+             "made that difference 47 N at 0.01 ms", "at 0.1 s",
+             "it ran through with 129.76 kW against the explicit method's 110.28 kW")),
     # the two-sided elimination of b84856b against the partitioned one of f5e25de, both P = 2 on 1 and 2 threads
     History("2026-11-24", "the implicit step of b84856b (two-sided elimination) and of f5e25de (partitioned) on the "
             "same starts, NUMBA_NUM_THREADS 1 and 2 (8f8b734's before/after table)",

@@ -83,12 +83,17 @@ def test_every_step_is_the_registered_tableau():
     assert all(a is b for a, b in zip(kept[:6], ROS34PW2, strict=True))
 
 
-@pytest.mark.parametrize("bad", [0, -2, 2.5, True, "4"])
+@pytest.mark.parametrize("bad", [0, -2, 2.5, True, "4", 2 ** 63])  # 2**63: one past int64 (an OverflowError before)
 def test_bad_values_raise_naming_the_value(bad):
     with pytest.raises(ValueError, match=f"jacobian_every = {bad!r}"):
         IntegratorSettings(method="ros34pw2", dt=0.05, jacobian_every=bad)
     with pytest.raises(ValueError, match=f"jacobian_every = {bad!r}"):
         with_jacobian_reuse(ROS34PW2, bad)
+
+
+def test_the_largest_int64_is_taken():
+    assert IntegratorSettings(method="ros34pw2", dt=0.05, jacobian_every=2 ** 63 - 1).jacobian_every == 2 ** 63 - 1
+    assert int(with_jacobian_reuse(ROS34PW2, 2 ** 63 - 1)[6][0]) == 2 ** 63 - 1
 
 
 def test_a_method_without_a_jacobian_is_refused():

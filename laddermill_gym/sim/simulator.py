@@ -18,6 +18,7 @@ from laddermill_gym.kernels.contract import (
 from laddermill_gym.kernels.dispatch import has_assemble
 from laddermill_gym.kernels.integrate import rhs_entry as _rhs_kernel
 from laddermill_gym.kernels.rigid.kinds import WING
+from laddermill_gym.kernels.rigid.rosenbrock import JACOBIAN_EVERY_MAX
 from laddermill_gym.model.packing import make_workspace, pack_model
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 from laddermill_gym.sim.body_views import BodyViews
@@ -82,8 +83,9 @@ class IntegratorSettings:
 
     def __post_init__(self):
         k = self.jacobian_every
-        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 1:
-            raise ValueError(f"IntegratorSettings.jacobian_every = {k!r}: must be an integer >= 1 (steps per Jacobian)")
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 1 <= k <= JACOBIAN_EVERY_MAX:
+            raise ValueError(f"IntegratorSettings.jacobian_every = {k!r}: must be an integer from 1 to "
+                             f"{JACOBIAN_EVERY_MAX} (steps per Jacobian, an int64 in the kernels)")
         if k != 1 and self.method not in W_METHODS:
             raise ValueError(f"IntegratorSettings.jacobian_every = {k!r}: only the fixed-step W-methods reuse a "
                              f"Jacobian (method = {self.method!r})")

@@ -19,8 +19,9 @@ _FM = {"contract", "nsz", "arcp"}
 @njit(cache=True, error_model="numpy", fastmath=_FM, inline="always", _nrt=False)
 def _block(x, e, tension, par, dt):
     """S_e = a t t^T + b I of element e: returns (a, b, tx, ty, tz). Every element keeps its axial stiffness
-    and damping within the step (slack ones too: their start-of-step tension is 0, so they resist only the
-    change of length during the step); the geometric term b = dt^2 T/l only under tension."""
+    and damping within the step (slack ones too: their start-of-step tension is 0; the stiffness resists the change
+    of length during the step, a force that vanishes with dt, but the damping applies DA/l0 times the element's
+    rate whatever dt: docs/pointmass.md); the geometric term b = dt^2 T/l only under tension."""
     tx, ty, tz, ln = element_geometry(x, e, par)
     l0 = rest_length(e, par)
     b = dt * dt * tension[e] / ln if ln > 0.0 else 0.0

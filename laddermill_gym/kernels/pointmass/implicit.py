@@ -6,7 +6,7 @@ explicitly. One step solves
 
 with M the lumped node masses (diagonal), C and K the string's damping and tangent stiffness at the start of
 the step and F the elastic and external forces. Element e adds S_e = dt C_e + dt^2 K_e =
-a t t^T + b I (a = dt DA/l0 + dt^2 EA/l0 - b, b = dt^2 T/l; zero when slack) to the diagonal blocks of its two
+a t t^T + b I (a = dt DA/l0 + dt^2 EA/l0 - b, b = dt^2 T/l; b zero when slack) to the diagonal blocks of its two
 nodes and -S_e off the diagonal: a block-tridiagonal system with 3x3 blocks (``kernels/pointmass/blocks.py``),
 solved by block elimination along the string in O(n). Each pivot D'_j = D_j - S_j D'_{j-1}^{-1} S_j is
 symmetric positive definite (M > 0, S_e >= 0), so no pivoting is needed.

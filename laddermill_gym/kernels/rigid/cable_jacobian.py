@@ -16,7 +16,9 @@ with dsigma/dl = EA / l0 and dsigma/dl' = DA / l0, the plain truss's, used for e
   ladder_chain (10 s, direction step): with it, ROS34PW2's position error at 0.05 s halves (0.028 against 0.058 m),
   but its largest stable step falls from 0.2 s to 0.1 s (the wings at the chain's apex diverge at t = 7.8 s). The
   stiffer plain value damps the axial modes more and keeps the larger steps; we chose it.
-* A slack element contributes nothing (its true Jacobian); giving it EA / l0 as if taut changed nothing measurable
+* A slack element (zero tension) contributes nothing (its true Jacobian); with the sag correction an element shorter
+  than its rest length that carries a lateral load has a tension and counts as taut (docs/numerics.md: up to 693x
+  its true d sigma / d l at ladder_chain's apex). Giving a slack one EA / l0 as if taut changed nothing measurable
   on ladder_chain (the same errors and failures on the smooth and direction-step forcings). With an attachment
 point's velocity T v of its block's velocity v (eq. 13), the generalised forces Q = T^T F change by
 -T_r^T K_e T_r on the r-block's diagonal, +T_r^T K_e T_s off it, and likewise for s: the same sparsity as the mass
@@ -243,7 +245,8 @@ def _rate(kind, e, t, x, M, ln, l0):
 def add_moving_end_force(t, xn, r, rt, M, W, fac):
     """W.bv += fac dQ/dz (r_z, rt): the change of the elements' pull as their rest length and its rate move with
     the states outside the block tree (a station's pay-out and cable speed) and with time, along the stage
-    direction r (state-shaped; its non-block entries count) and rt (time), for the taut elements at xn.
+    direction r (state-shaped; its non-block entries count) and rt (time), for the taut elements at xn, with the
+    tensions in ``W.tension`` (from the second stage on the stage state's: docs/numerics.md).
 
     This is the Jacobian's column for those states and for time (the stage's time increment rt, H&W IV.7's
     gamma_i h f_t term). A W-method keeps its order without it; with it, a stiff element driven by a moving

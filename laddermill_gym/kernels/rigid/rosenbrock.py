@@ -197,6 +197,10 @@ def _stage_increment(xn, r, Ui, M, W, gh):
 REUSE_RTOL = 1e-9
 
 
+#: The most steps per iteration matrix: the kernels hold the count as an int64.
+JACOBIAN_EVERY_MAX = int(np.iinfo(np.int64).max)
+
+
 def with_jacobian_reuse(tableau, every: int):
     """``tableau`` (a transformed tableau above) whose W step keeps its iteration matrix for ``every`` steps: the
     bodies' load Jacobian, the cable's stiffness and the factorisation are rebuilt on the steps whose index
@@ -206,9 +210,10 @@ def with_jacobian_reuse(tableau, every: int):
     matrix S is M0 - h gamma C~ - (h gamma)^2 K~ for the held stiffness K~ and C~ = C_held + (M0 - M_held) /
     (h gamma), a Jacobian bounded as h -> 0 (Hairer & Wanner II, IV.7: a W-method's order conditions hold for any
     such J). ``every`` = 1 is the tableau itself (today's bits). ValueError naming the value unless an integer
-    >= 1."""
-    if isinstance(every, bool) or not isinstance(every, (int, np.integer)) or every < 1:
-        raise ValueError(f"jacobian_every = {every!r}: must be an integer >= 1 (steps per Jacobian)")
+    from 1 to :data:`JACOBIAN_EVERY_MAX`."""
+    if isinstance(every, bool) or not isinstance(every, (int, np.integer)) or not 1 <= every <= JACOBIAN_EVERY_MAX:
+        raise ValueError(f"jacobian_every = {every!r}: must be an integer from 1 to {JACOBIAN_EVERY_MAX} (steps per "
+                         "Jacobian, an int64 in the kernels)")
     if int(every) == 1:
         return tableau
     return tuple(tableau[:6]) + (np.array([int(every)], dtype=np.int64),)
