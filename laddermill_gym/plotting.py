@@ -23,6 +23,17 @@ def save_figure(fig, path, dpi: int = 120) -> Path:
     return path
 
 
+def tension_norm(values_kN: np.ndarray) -> Normalize:
+    """The colour scale of element tensions ``values_kN`` (any shape) [kN]: their range, widened to 1 % of the value
+    on each side (at least 0.01 kN) where they are all alike, so that the colour bar reads the value itself (a
+    range of 1e-9 kN printed only an offset label)."""
+    lo, hi = float(np.min(values_kN)), float(np.max(values_kN))
+    if hi - lo < 1e-6 * max(1.0, abs(hi)):
+        half = max(0.01 * abs(hi), 0.01)
+        lo, hi = lo - half, hi + half
+    return Normalize(lo, hi)
+
+
 def cable_segments(asm, wing_pos: np.ndarray, wing_euler: np.ndarray, node_pos: np.ndarray) -> np.ndarray:
     """End points of every cable element, shape (n_elements, 2, 3) [m] (global): ground points, free nodes, and
     wing attachment points (CG + R(euler) attachment) for the states of one sample (wing_pos (n_w, 3) [m],
@@ -68,10 +79,11 @@ def plot_shape(rec: Recording, path: Path, title: str = "", asm=None) -> Path:
     """Side view (x, h) and top view (x, y) of wings and cable at the first sample (faint) and the last (the cable
     coloured by element tension [kN]). Without ``asm`` (the assembly, for the element connectivity) only the wings
     and nodes are drawn."""
+    if len(rec.t) == 0:
+        raise ValueError(f"plot_shape: the recording has no samples (nothing to draw into {path})")
     fig, (ax1, ax2) = subplots(1, 2, figsize=(12, 5.5))
     if asm is not None:
-        ten = rec.views["element_tension_N"] / 1e3
-        norm = Normalize(float(ten[-1].min()), float(max(ten[-1].max(), ten[-1].min() + 1e-9)))
+        norm = tension_norm(rec.views["element_tension_N"][-1] / 1e3)
         draw_loop(ax1, ax2, asm, rec.views, 0, norm, faint=True)
         draw_loop(ax1, ax2, asm, rec.views, -1, norm)
         sm = ScalarMappable(norm=norm, cmap="viridis")
@@ -131,6 +143,9 @@ def plot_histories(rec: Recording, path: Path, title: str = "", wings: list[int]
     """Lateral position, Euler angles, angle of attack and sideslip of selected wings, and element tensions."""
     nw = rec.views["wing_position_m"].shape[1]
     wings = wings if wings is not None else sorted({0, nw // 2, nw - 1})
+    bad = [k for k in wings if not -nw <= k < nw]
+    if bad:
+        raise ValueError(f"plot_histories: wings {bad} do not exist (the recording has {nw} wings: 0 to {nw - 1})")
     fig, axs = subplots(3, 2, figsize=(12, 9), sharex=True)
     t = rec.t
     names = ("roll phi", "pitch theta", "yaw psi")

@@ -120,3 +120,43 @@ def test_mill_power_curve_sends_its_cases_to_ray_when_asked(monkeypatch, tmp_pat
     with pytest.raises(KeyboardInterrupt):
         power_curve.main(["--quick", "--ray", "local", "--out", str(tmp_path)])
     assert seen["ray"] == "local"
+
+
+@pytest.mark.parametrize("module, argv, says", [
+    ("rotorcraft.rotor_chart", ["--out", "{tmp}/chart.txt"], "the file must end in one of .png, .pdf, .svg"),
+    ("rotorcraft.rotor_chart", ["--out", "{file}/chart.png"], "its folder '{file}' is a file"),
+    ("rotorcraft.rotor_chart", ["--out", "{tmp}/c.png", "--csv", "{file}/c.csv"], "--csv = '{file}/c.csv'"),
+    ("lateral.lateral_study", ["--out", "{tmp}"], "the file must end in one of"),
+    ("rotorcraft.craft_stability", ["--out", "{file}"], "is a file, not a folder"),
+    ("pumping.power_curve", ["--winds", "8", "--out", "{file}"], "is a file, not a folder"),
+])
+def test_figure_studies_refuse_an_output_path_before_their_work(module, argv, says, tmp_path, a_file, monkeypatch):
+    """A review of 2026-12-07: these ended in a traceback (exit 1), the pumping power curve after flying every wind.
+    Run as ``python -m``: one line, exit 2, and no flight (its curve_point replaced by a recorder)."""
+    import importlib
+    import subprocess
+    import sys
+
+    fill = {"tmp": str(tmp_path), "file": str(a_file)}
+    argv = [a.format(**fill) for a in argv]
+    done = subprocess.run([sys.executable, "-m", f"laddermill_gym.studies.{module}", *argv], capture_output=True,
+                          text=True, timeout=300)
+    err = [line for line in done.stderr.splitlines() if line.strip()]
+    assert done.returncode == 2 and len(err) == 1 and says.format(**fill) in err[0], done.stderr[-2000:]
+    mod = importlib.import_module(f"laddermill_gym.studies.{module}")
+    if hasattr(mod, "curve_point"):
+        flown = []
+        monkeypatch.setattr(mod, "curve_point", lambda *a: flown.append(a))
+        with pytest.raises(Exception, match="is a file"):
+            mod.main(argv)
+        assert flown == []
+
+
+def test_figure_studies_do_not_write_into_the_package_by_default():
+    """rotor_chart and lateral_study wrote their figure over laddermill_gym/docs/figures/ relative to any working
+    folder (the docs' figures are drawn with an explicit --out: docsite/pictures.py)."""
+    from laddermill_gym.studies.lateral import lateral_study
+    from laddermill_gym.studies.rotorcraft import rotor_chart
+
+    for default in (rotor_chart.DEFAULT_OUT, lateral_study.DEFAULT_OUT):
+        assert "docs" not in default.parts and default.parts[0] == "results"

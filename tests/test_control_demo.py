@@ -45,7 +45,11 @@ def test_outputs_hold_the_recorded_series(runs, tmp_path):
     assert png.stat().st_size > 10_000
     with Image.open(gif) as im:
         h, w = runs[0].frames[0].shape[:2]
-        assert im.size == (2 * w, h) and im.n_frames == max(len(r.frames) for r in runs)
+        assert im.size == (2 * w, h + demo.LABEL_BAND_PX) and im.n_frames == max(len(r.frames) for r in runs)
+        band = np.asarray(im.convert("RGB"))[:demo.LABEL_BAND_PX]
+        for k in range(2):  # each panel's band holds its controller's name: dark text on white
+            panel = band[:, k * w:(k + 1) * w]
+            assert (panel < 100).any() and (panel > 200).mean() > 0.5
     rows = list(csv.DictReader(Path(path).read_text().splitlines()))
     for r in runs:
         mine = [x for x in rows if x["controller"] == r.label]

@@ -33,7 +33,7 @@ print(f"{scene.name}: {asm.n_wings} wing, {asm.state_size} states, RK4 at dt = {
 print(f"recorded {len(rec.t)} samples to t = {rec.t[-1]:.2f} s; stopped early: {rec.error}")
 print("views:", ", ".join(rec.views))
 
-pos = rec.views["wing_position_m"][:, 0]  # x north (downwind), y east, z down
+pos = rec.views["wing_position_m"][:, 0]  # x north (into the wind: the wing flies at x < 0), y east, z down
 tension = rec.views["element_tension_N"]
 print(f"largest lateral offset {np.abs(pos[:, 1]).max():.2f} m, tension {tension[:, 0].min() / 1e3:.2f}"
       f" to {tension[:, 0].max() / 1e3:.2f} kN")

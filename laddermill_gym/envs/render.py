@@ -69,6 +69,7 @@ class FigureRenderer:
 
                 logger.warn(f"render_mode='human': matplotlib backend {matplotlib.get_backend()!r} cannot open a "
                             "window; frames are drawn but not shown (set MPLBACKEND, e.g. TkAgg or QtAgg)")
+            self._was_interactive = plt.isinteractive()
             plt.ion()
             self.fig = plt.figure(figsize=(size_px[0] / 80, size_px[1] / 80), dpi=80)
             self._plt = plt
@@ -82,8 +83,12 @@ class FigureRenderer:
         return np.asarray(self.fig.canvas.buffer_rgba())[:, :, :3].copy()
 
     def close(self) -> None:
+        """Close the window; pyplot's interactive mode is left as the renderer found it."""
         if self._plt is not None:
             self._plt.close(self.fig)
+            if not self._was_interactive:
+                self._plt.ioff()
+            self._plt = None
 
 
 class SceneRenderer(FigureRenderer):
@@ -103,6 +108,15 @@ class SceneRenderer(FigureRenderer):
         lo, hi = pts.min(axis=0), pts.max(axis=0)
         pad = 0.15 * float(np.max(hi - lo)) + max(w.span for w in asm.wing_types)
         self.box = (lo - pad, hi + pad)
+        self.pad = pad
+
+    def follow(self, points: np.ndarray) -> None:
+        """Widen the view box (never narrow it: the view stays still while the bodies are inside) so that it holds
+        ``points`` (k, 3) [m] with the start's margin: a kite reeling out, a wing swinging wide stay in view."""
+        lo, hi = self.box
+        if np.all(points >= lo) and np.all(points <= hi):
+            return
+        self.box = (np.minimum(lo, points.min(axis=0) - self.pad), np.maximum(hi, points.max(axis=0) + self.pad))
 
     def draw(self, b: int = 0):
         """Redraw copy ``b``; returns the RGB frame (H, W, 3) uint8 (or None in interactive mode)."""
@@ -116,6 +130,7 @@ class SceneRenderer(FigureRenderer):
         self.draw_bodies(pos, rot, up)
         fp = self.asm.fixed_points * up
         ax.scatter(fp[:, 0], fp[:, 1], fp[:, 2], color="k", marker="^", s=30)
+        self.follow(np.vstack([pos, segments.reshape(-1, 3)]))
         set_view_box(ax, self.box)
         ax.set_title(f"{self.task.scene.name}  t = {self.task.batch.t[b]:6.2f} s")
         return self.frame()

@@ -65,6 +65,27 @@ def writable_folder(path, option: str = "--out"):
     return out
 
 
+def writable_file(path, option: str = "--out", suffixes: tuple = ()):
+    """The output file ``path``, checked now (so that a bad path fails before the work): its folder created and
+    written to (:func:`writable_folder`); UsageError naming ``option`` if it is a folder, or if ``suffixes`` are given
+    and it ends in none of them."""
+    from pathlib import Path
+
+    out = Path(path)
+    if suffixes and out.suffix.lower() not in suffixes:
+        raise UsageError(f"{option} = {str(path)!r}: the file must end in one of {', '.join(suffixes)}")
+    if out.is_dir():
+        raise UsageError(f"{option} = {str(path)!r}: is a folder; give a file name")
+    folder = out.parent
+    if folder.exists() and not folder.is_dir():
+        raise UsageError(f"{option} = {str(path)!r}: its folder {str(folder)!r} is a file")
+    try:
+        writable_folder(folder, option)
+    except UsageError:  # name the file given and its folder
+        raise UsageError(f"{option} = {str(path)!r}: cannot write into its folder {str(folder)!r}") from None
+    return out
+
+
 def run_guarded(name: str, run) -> int:
     """The exit status of ``run()``, the command ``laddermill name``: bad input (UsageError, ConfigError) one line
     on stderr and 2; a start state or setting the simulator refuses (SimulationError) one line and 3; Ctrl-C one line

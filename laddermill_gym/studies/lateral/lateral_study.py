@@ -35,6 +35,7 @@ import argparse
 import time
 from pathlib import Path
 
+from laddermill_gym.studies.commands import writable_file
 from laddermill_gym.studies.lateral.lateral_analysis import (
     SweepResult,
     VariantResult,
@@ -84,7 +85,7 @@ __all__ = [
     "main",
 ]
 
-DEFAULT_OUT = Path("laddermill_gym/docs/figures/lateral_study.png")
+DEFAULT_OUT = Path("results/lateral_study.png")  # the docs' figure: --out laddermill_gym/docs/figures/...
 _FIGURE_SUFFIXES = (".png", ".pdf", ".svg")
 
 
@@ -108,11 +109,7 @@ def main(argv: list[str] | None = None) -> list[SweepResult]:
     add_arguments(ap)
     args = ap.parse_args(argv)
     check_arguments(args, ap.prog)
-    out = Path(args.out)
-    if out.suffix.lower() not in _FIGURE_SUFFIXES:
-        raise ValueError(f"--out {args.out!r}: the figure file must end in one of {_FIGURE_SUFFIXES}")
-    if out.exists() and out.is_dir():
-        raise ValueError(f"--out {args.out!r} is a directory; give a file name")
+    out = writable_file(args.out, "--out", _FIGURE_SUFFIXES)
     names = _parse_sweeps(args.sweeps, list(SWEEP_NAMES))
     t0 = time.perf_counter()
     base = base_scene()
@@ -130,4 +127,6 @@ def main(argv: list[str] | None = None) -> list[SweepResult]:
 
 
 if __name__ == "__main__":
-    main()
+    from laddermill_gym.studies.commands import run_guarded
+
+    raise SystemExit(run_guarded("lateral_study", lambda: main() and 0))

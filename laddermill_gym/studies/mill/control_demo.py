@@ -181,16 +181,32 @@ def _short(text: str, n: int = 60) -> str:
     return text if len(text) <= n else text[: n - 3] + "..."
 
 
+#: Height of the GIF's label band above each run's frames [px].
+LABEL_BAND_PX = 22
+
+
+def _label_band(text: str, width: int) -> np.ndarray:
+    """A white band (LABEL_BAND_PX, width, 3) uint8 with ``text`` in black (PIL's default font)."""
+    from PIL import Image, ImageDraw
+
+    band = Image.new("RGB", (width, LABEL_BAND_PX), "white")
+    ImageDraw.Draw(band).text((6, 4), _short(text, max(8, width // 7)), fill="black")
+    return np.asarray(band)
+
+
 def write_gif(runs: list[ControlRun], path: Path, fps: int = 8) -> Path | None:
-    """``demo.gif``: the runs' frames side by side (a run that ended keeps its last frame); None without frames."""
+    """``demo.gif``: the runs' frames side by side, each under a band naming its controller (a run that ended keeps
+    its last frame); None without frames."""
     from PIL import Image
 
     if not all(r.frames for r in runs):
         return None
     n = max(len(r.frames) for r in runs)
+    bands = [_label_band(r.label, r.frames[0].shape[1]) for r in runs]
     images = []
     for i in range(n):
-        row = np.concatenate([r.frames[min(i, len(r.frames) - 1)] for r in runs], axis=1)
+        row = np.concatenate([np.concatenate([band, r.frames[min(i, len(r.frames) - 1)][..., :3]], axis=0)
+                              for band, r in zip(bands, runs, strict=True)], axis=1)
         images.append(Image.fromarray(row).convert("P", palette=Image.Palette.ADAPTIVE))
     images[0].save(path, save_all=True, append_images=images[1:], duration=int(1000 / fps), loop=0)
     return path

@@ -34,6 +34,7 @@ from laddermill_gym.quasisteady import lansdorp
 from laddermill_gym.quasisteady.lansdorp import PumpingParams
 from laddermill_gym.reference.wind import air_density
 from laddermill_gym.sim.statics import table_spline
+from laddermill_gym.studies.commands import writable_folder
 from laddermill_gym.studies.pumping.pumping_cycle import cycle_stats, quasi_steady, run_cycles
 
 __all__ = ["curve_point", "loss_split", "main"]
@@ -148,6 +149,8 @@ def main(argv=None) -> int:
         p.error(f"--winds = {args.winds}: each must be in (0, 60] m/s")
     if args.reel_element_length is not None and not 1.0 <= args.reel_element_length <= 1000.0:
         p.error(f"--reel-element-length = {args.reel_element_length}: must be in [1, 1000] m")
+    if args.out is not None:
+        writable_folder(args.out, "--out")  # before the minutes of flight, not after them
     rows = [curve_point(w, args.reel_element_length) for w in tqdm(args.winds, unit="wind")]
     print(f"{'v0 m/s':>6} {'sim W':>8} {'matched W':>9} {'sim/matched':>11} {'Schmehl W':>10} {'Lansdorp W':>11} "
           f"{'T_out N':>8} {'matched T_out N':>15}  failure")
@@ -177,4 +180,6 @@ def main(argv=None) -> int:
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    from laddermill_gym.studies.commands import run_guarded
+
+    raise SystemExit(run_guarded("pumping power_curve", main))

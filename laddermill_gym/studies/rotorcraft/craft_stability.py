@@ -31,6 +31,7 @@ from laddermill_gym.kernels.contract import B3_POS, CU_DIFFERENTIAL
 from laddermill_gym.rotorcraft.craft import Craft, CraftSimulator, load_craft
 from laddermill_gym.rotorcraft.roll_lateral import derive_roll_lateral, lateral_state, restricted_jacobian, sim_euler
 from laddermill_gym.sim.simulator import SimulationError
+from laddermill_gym.studies.commands import writable_folder
 
 
 def straight_tether_variant(craft: Craft) -> Craft:
@@ -174,7 +175,7 @@ def main(argv=None) -> dict:
     ap.add_argument("--out", type=Path, default=Path("runs/craft_stability"))
     ap.add_argument("--quick", action="store_true", help="coarser wind-speed scan, 60 s runs")
     args = ap.parse_args(argv)
-    args.out.mkdir(parents=True, exist_ok=True)
+    writable_folder(args.out, "--out")
     design = design_craft_lqr()
     craft = load_craft(design.config.craft)
     np.set_printoptions(precision=4, suppress=False, linewidth=120)
@@ -232,4 +233,6 @@ def main(argv=None) -> dict:
 
 
 if __name__ == "__main__":
-    main()
+    from laddermill_gym.studies.commands import run_guarded
+
+    raise SystemExit(run_guarded("craft_stability", lambda: main() and 0))

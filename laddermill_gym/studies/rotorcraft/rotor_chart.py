@@ -41,6 +41,7 @@ from laddermill_gym.rotorcraft.rotor import (
     min_autorotation_angle,
     solidity_for_autorotation,
 )
+from laddermill_gym.studies.commands import UsageError, writable_file
 
 __all__ = [
     "DEFAULT_CONFIG",
@@ -58,7 +59,7 @@ __all__ = [
 ]
 
 DEFAULT_CONFIG = DEFAULT_ROTOR_CONFIG
-DEFAULT_OUT = Path("laddermill_gym/docs/figures/rotor_power_chart.png")
+DEFAULT_OUT = Path("results/rotor_power_chart.png")  # the docs' figure: --out laddermill_gym/docs/figures/...
 DEFAULT_CSV = Path("results/rotor_power_chart.csv")
 #: Advance ratios drawn by default (mu = 0.1 is the paper's; the others are a choice, docs/rotor.md).
 DEFAULT_MUS: tuple[float, ...] = (0.05, 0.075, 0.1, 0.15, 0.2)
@@ -234,11 +235,9 @@ def main(argv: list[str] | None = None) -> list[LimitCurve]:
     ap.add_argument("--mu", default=",".join(f"{m:g}" for m in DEFAULT_MUS), help="comma-separated advance ratios")
     ap.add_argument("--step-deg", type=float, default=0.5, help="incidence grid spacing [deg]")
     args = ap.parse_args(argv)
-    out, csv_path = Path(args.out), Path(args.csv)
-    if out.suffix.lower() not in _FIGURE_SUFFIXES:
-        raise ValueError(f"--out {args.out!r}: the figure file must end in one of {_FIGURE_SUFFIXES}")
     if not 0.0 < args.step_deg <= 10.0:
-        raise ValueError(f"--step-deg {args.step_deg!r}: must lie in (0, 10]")
+        raise UsageError(f"--step-deg {args.step_deg!r}: must lie in (0, 10]")
+    out, csv_path = writable_file(args.out, "--out", _FIGURE_SUFFIXES), writable_file(args.csv, "--csv")
     mus = _parse_mus(args.mu)
     t0 = time.perf_counter()
     cfg = load_rotor_config(args.config)
@@ -303,4 +302,6 @@ def main(argv: list[str] | None = None) -> list[LimitCurve]:
 
 
 if __name__ == "__main__":
-    main()
+    from laddermill_gym.studies.commands import run_guarded
+
+    raise SystemExit(run_guarded("rotor_chart", lambda: main() and 0))

@@ -1,0 +1,88 @@
+"""What the figures and the render views show (a review of 2026-12-07).
+
+Before: the loop animation sized its view from the wings alone (one wing: a view 0.1 m wide, no cable, no ground
+point); a constant tension gave a colour bar 1e-9 kN wide that read only an offset; the env's 3D view stayed on the
+start's box while a kite reeled out of it; ``render_mode="human"`` left pyplot's interactive mode on after
+``close``; an empty recording or a wing that does not exist ended in numpy's IndexError. Oracles: the scene's own
+ground point and cable geometry, the recorded values, matplotlib's own state.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from laddermill_gym.animation import drawn_points
+from laddermill_gym.ladder.scene import load_scene
+from laddermill_gym.plotting import cable_segments, plot_histories, plot_shape, tension_norm
+from laddermill_gym.sim.recording import record
+
+
+@pytest.fixture(scope="module")
+def wing_run():
+    scene = load_scene("tethered_wing", elements_per_piece=1)
+    sim = scene.simulator()
+    return scene, record(sim, 0.5, 0.1, progress=False)
+
+
+def test_the_animation_view_holds_the_ground_point_and_the_whole_cable(wing_run):
+    scene, rec = wing_run
+    asm = scene.assembly
+    frames = np.arange(len(rec.t))
+    points = drawn_points(rec, asm, frames)
+    ground = asm.fixed_points[0]
+    assert np.any(np.all(np.isclose(points, ground), axis=1))  # the tether's ground end is drawn and in view
+    last = cable_segments(asm, rec.views["wing_position_m"][-1], rec.views["wing_euler_rad"][-1],
+                          rec.views["node_position_m"][-1]).reshape(-1, 3)
+    assert points.min(axis=0).tolist() <= last.min(axis=0).tolist()
+    span = np.ptp(points[:, 0])
+    assert span > 10.0  # the wing flies about 15 m downwind of its ground point; the wings alone spanned 0.1 m
+
+
+def test_a_constant_tension_gets_a_readable_colour_scale():
+    norm = tension_norm(np.full((3, 1), 2.24197632))
+    assert norm.vmin < 2.24197632 < norm.vmax
+    assert norm.vmax - norm.vmin == pytest.approx(0.02 * 2.24197632)
+    varied = tension_norm(np.array([[1.0, 3.5]]))
+    assert (varied.vmin, varied.vmax) == (1.0, 3.5)  # a real range is kept as it is
+
+
+def test_an_empty_recording_and_a_missing_wing_are_named(wing_run, tmp_path):
+    scene, rec = wing_run
+    import dataclasses
+
+    empty = dataclasses.replace(rec, t=rec.t[:0], views={k: v[:0] for k, v in rec.views.items()})
+    with pytest.raises(ValueError, match="plot_shape: the recording has no samples"):
+        plot_shape(empty, tmp_path / "shape.png", asm=scene.assembly)
+    with pytest.raises(ValueError, match=r"plot_histories: wings \[3\] do not exist \(the recording has 1 wings"):
+        plot_histories(rec, tmp_path / "h.png", wings=[3])
+
+
+def test_the_env_view_follows_a_body_that_leaves_it_and_human_mode_restores_pyplot():
+    import gymnasium as gym
+    import matplotlib.pyplot as plt
+
+    import laddermill_gym  # noqa: F401
+
+    env = gym.make("laddermill_gym/TetheredWing-v0", render_mode="rgb_array")
+    env.reset(seed=0)
+    frame = env.render()
+    assert frame.shape[2] == 3
+    env.close()
+    from laddermill_gym.envs.render import SceneRenderer
+
+    task = env.unwrapped.task
+    view = SceneRenderer(task)
+    lo, hi = (c.copy() for c in view.box)
+    view.follow(np.array([[0.5 * (lo[0] + hi[0]), 0.0, 0.5 * (lo[2] + hi[2])]]))  # inside: the view stays
+    assert np.array_equal(view.box[0], lo) and np.array_equal(view.box[1], hi)
+    far = np.array([[lo[0] - 400.0, 0.0, lo[2] - 100.0]])  # a kite 400 m further downwind, 100 m higher
+    view.follow(far)
+    assert np.all(view.box[0] <= far[0] - view.pad + 1e-9) and np.array_equal(view.box[1], hi)
+    assert view.draw().shape == frame.shape
+    view.close()
+    plt.ioff()
+    human = SceneRenderer(task, interactive=True)
+    assert plt.isinteractive()
+    human.close()
+    assert not plt.isinteractive()  # as the renderer found it
