@@ -117,7 +117,8 @@ ROTORCRAFT = Covered(
                                              CS % "lqr_001][dtheta")),
             (rf"\| 0\.1 rad \| fails at ([\d.]+) s \| holds, max {Y} ([\d.]+) m, max dtheta ([\d.]+) deg \|",
              (CS % "open_01][fail", CS % "lqr_01][y", CS % "lqr_01][dtheta")),
-            (r"M = \[\[([\d.]+), (0)\], \[(0), ([\d.]+)\]\] D = \[\[([\d.]+), ([\d.]+)\], \[([\d.]+), ([\d.]+)\]\] "
+            (r"them\): M = \[\[([\d.]+), (0)\], \[(0), ([\d.]+)\]\] "  # the check model's, not the default craft's
+             r"D = \[\[([\d.]+), ([\d.]+)\], \[([\d.]+), ([\d.]+)\]\] "
              r"K = \[\[([\d.]+), ([-\d.]+)\], \[([\d.]+), ([\d.]+)\]\] \(alpha, beta\) = \(0, ([-\d]+)\) per rad",
              tuple(CS % f"eq6_{m}][{i}" for m in "MDK" for i in range(4)) + (CS % "beta",)),
             (r"entry by entry to ([\d.]+) % at worst", (CS % "rel_error_pct",)),

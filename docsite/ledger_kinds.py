@@ -58,8 +58,14 @@ class NotYet:
     checks: tuple = ()
 
 
+#: A table row's end in a flattened page: no further cell after the last ``|`` (the next row begins ``| ``), so that a
+#: check of a short row does not match the first cells of a longer row of another table.
+ROW_END = r"(?! [^|\s]+ \|)"
+
+
 def row_check(head: str, group: str, keys: tuple) -> tuple:
-    """A check of one Markdown table row: ``head`` (a regular expression of its first cells, as the flattened page
-    writes them) followed by one cell per key, each compared exactly with ``{group[key]}`` (``group`` may index
-    deeper, ``pumping_crosswind[c0]``)."""
-    return (head + "".join(r" \| (\S+)" for _ in keys) + r" \|", tuple(f"{{{group}[{k}]}}" for k in keys))
+    """A check of one whole Markdown table row: ``head`` (a regular expression of its first cells, as the flattened
+    page writes them, at a row's start) followed by one cell per key and the row's end, each cell compared exactly
+    with ``{group[key]}`` (``group`` may index deeper, ``pumping_crosswind[c0]``)."""
+    return (r"(?<=\| )" + head + "".join(r" \| (\S+)" for _ in keys) + r" \|" + ROW_END,
+            tuple(f"{{{group}[{k}]}}" for k in keys))

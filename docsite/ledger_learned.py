@@ -211,7 +211,8 @@ LEARNED_MILL = Covered(
         History("2026-11-29", "laddermill train ppo_mill_v1 (the config of c2989b5 before 8213990) and laddermill "
                 "evaluate of its round 4; the ridge and clipped-label trials", "the first, smooth-schedule attempt "
                 "(not kept; 7b57af8)",
-                ('5 | 60.0 | 160.91 | 3.12 | 0.9973, 0.9804', '2 | 5 | 60.0 | 162.24 | 2.02 | 0.9941, 0.9983',
+                ('LQR (teacher) | 5 | 60.0 | 157.76 | 0.095 |',  # until 2026-12-07 counted by a gain-table check
+                 '5 | 60.0 | 160.91 | 3.12 | 0.9973, 0.9804', '2 | 5 | 60.0 | 162.24 | 2.02 | 0.9941, 0.9983',
                  '3 | 5 | 60.0 | 162.06 | 2.99 | 0.9896, 0.9980', '4 | 5 | 60.0 | 157.76 | 0.675 | 0.9883, 0.9967',
                  '5 | 0 | 15.35 | 171.05 | 88.6 | 0.9952, 0.9980', '6 | 0 | 15.15 | 171.46 | 73.9 | 0.9868, 0.9800',
                  "The fits explain 98-99.8 % of the LQR's actions, yet the gains they imply are not the LQR's:",

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import re
 
-from docsite.ledger_kinds import Covered, History
+from docsite.ledger_kinds import ROW_END, Covered, History
 
 
 def _curve_rows(policy: str, labels: tuple, length: bool) -> tuple:
@@ -24,7 +24,7 @@ def _curve_rows(policy: str, labels: tuple, length: bool) -> tuple:
 
 DAGGER = ("DAgger 1 (flies the LQR + noise)", "DAgger 2", "DAgger 3", "DAgger 4 (kept: `model.zip`)")
 GL = "{gain_locality[%s]}"
-GAIN_CHECKS = tuple((rf"\| {d} \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \|",
+GAIN_CHECKS = tuple((rf"(?<=\| )\| {d} \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \|{ROW_END}",
                      tuple(GL % f"rows][{d}][{k}" for k in ("mean", "largest", "share"))) for d in range(6)) + (
     (r"\| 6-10 \| ([\d.-]+) \|", (GL % "far",)), (r"\| beyond 10 \| \| \| ([\d.]+) \|", (GL % "beyond",)),
     (r"\| spectral radius of the design model's closed loop \| " + r"([\d.]+) \| " * 6,

@@ -13,8 +13,8 @@ W, C = "{wind_data[worked][%s]}", "{wind_data[code][%s]}"
 #: laddermill_gym/PumpingKite-v0 --controllers open_loop lqr, 16 s): survived seeds, the failed seeds' end times, the
 #: median largest lateral excursion [m] and energy ratio, as docsite.study_figures.gust_table writes them.
 PUMPING_SCENARIOS = ("direction_step", "speed_step_20pct", "one_cos_4s", "one_cos_20s", "EOG_IA", "EDC_IA", "NTM_IB")
-GUSTS_V2_CHECKS = tuple(
-    (rf"\| {ctrl} \| {scen} \| (\S+) \| (-|[\d.]+(?:, [\d.]+)*)[^|]*\| (\S+) \| (\S+) \|",
+GUSTS_V2_CHECKS = tuple(  # the failure cell never names a slot: the mill's rows below are not matched
+    (rf"\| {ctrl} \| {scen} \| (\S+) \| (-|[\d.]+(?:, [\d.]+)*)(?:(?!slot )[^|])*\| (\S+) \| (\S+) \|",
      tuple(f"{{gusts_v2_pumping[{ctrl}/{scen}][{k}]}}" for k in ("survived", "ends", "lateral", "ratio")))
     for ctrl in ("open_loop", "lqr") for scen in PUMPING_SCENARIOS) + (
     (r"61\.3 s: beta ([-\d.]+) deg \(seed 2\)", ("{gusts_v2_pumping[lqr/NTM_IB][beta]}",)),)

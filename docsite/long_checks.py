@@ -33,20 +33,21 @@ def check_difference(name: str, flat: str, pattern: str, templates: tuple, figur
         return None  # another profile's figure (docsite/host_cpu.py): compared on that profile
     if is_keyed(pattern):
         cpu = cpu or host_cpu()
-        m = re.search(keyed(pattern, cpu), flat)
-        if m is None:
+        found = list(re.finditer(keyed(pattern, cpu), flat))
+        if not found:
             return f"docs/{name}: quotes no figure for this profile ({cpu}, docsite/host_cpu.py) in the check " \
                    f"{pattern!r}"
     else:
-        m = re.search(pattern, flat)
-    if m is None:
+        found = list(re.finditer(pattern, flat))
+    if not found:
         return f"docs/{name}: no text matches the check {pattern!r}"
     try:
         want = tuple(t.format(**figures) for t in templates)
     except (KeyError, IndexError) as e:
-        return f"docs/{name}: '{m.group(0)}': {words[0].format(e)}"
-    if len(m.groups()) != len(want) or not all(_agrees(q, w) for q, w in zip(m.groups(), want, strict=True)):
-        return f"docs/{name}: '{m.group(0)}' quotes {m.groups()}; {words[1]} {want}"
+        return f"docs/{name}: '{found[0].group(0)}': {words[0].format(e)}"
+    for m in found:  # every place the page quotes it (the coverage counts each as accounted for)
+        if len(m.groups()) != len(want) or not all(_agrees(q, w) for q, w in zip(m.groups(), want, strict=True)):
+            return f"docs/{name}: '{m.group(0)}' quotes {m.groups()}; {words[1]} {want}"
     return None
 
 

@@ -154,6 +154,10 @@ LONG = {
         f"laddermill power-curve --table results/power_curve_{n}/power_curve.json --out results/power_curve_{n}"
         for n in RUNS), "9 s after the six power_curve_v2* groups", "power_curve.md",
         tuple(f"results/power_curve_{n}/power_curve.csv" for n in RUNS)),
+    # the six runs' rows merged (the page's "All runs together" block, compared line for line by printed_blocks)
+    "power_curve_merged": Long("laddermill power-curve --table " + " ".join(
+        f"results/power_curve_{n}/power_curve.json" for n in RUNS) + " --out results/power_curve_v2_all",
+        "2 s after the six power_curve_v2* groups", "power_curve.md"),
     "trim_slope": Long("python -m laddermill_gym.studies.mill.trim_slope", "seconds", "power_curve.md"),
     # wind.md
     "gusts_v2_mill_printed": _bench("gusts-v2", "LadderMill-v0", "open_loop lqr --scenarios EWS_IA NTM_IB "

@@ -42,16 +42,18 @@ def undated(page: Path, date: str, snippets: tuple) -> list[str]:
     paras = paragraphs(page.read_text())
     bad = []
     for snippet in snippets:
-        start = flat.find(" ".join(snippet.split()))
-        if start < 0:
+        text = " ".join(snippet.split())
+        starts = [m.start() for m in re.finditer(re.escape(text), flat)]
+        if not starts:
             bad.append(f"not on the page: {snippet!r}")
-            continue
-        end = start + len(" ".join(snippet.split()))
-        hit = [i for i, (a, b, _) in enumerate(paras) if a < end and start < b]
-        near = set(hit) | {i - 1 for i in hit if i > 0}  # the caption of a table or a printed block
-        near |= {max((j for j in range(i + 1) if paras[j][2].startswith("#")), default=i) for i in hit}
-        if not any(date in paras[i][2] for i in near):
-            bad.append(f"no {date} in its paragraph: {snippet!r}")
+        for k, start in enumerate(starts):  # every place it appears: a copy elsewhere needs its date too
+            end = start + len(text)
+            hit = [i for i, (a, b, _) in enumerate(paras) if a < end and start < b]
+            near = set(hit) | {i - 1 for i in hit if i > 0}  # the caption of a table or a printed block
+            near |= {max((j for j in range(i + 1) if paras[j][2].startswith("#")), default=i) for i in hit}
+            if not any(date in paras[i][2] for i in near):
+                where = f" (occurrence {k + 1} of {len(starts)})" if len(starts) > 1 else ""
+                bad.append(f"no {date} in its paragraph{where}: {snippet!r}")
     return bad
 
 

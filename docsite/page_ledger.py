@@ -65,7 +65,9 @@ __all__ = ["LEDGER", "Covered", "NotYet"]
 #: Every docs page: covered, or why not yet.
 LEDGER = {
     "about_docs.md": ABOUT_DOCS,
-    "architecture.md": Covered(),
+    # the page is ARCHITECTURE.md included whole; the coverage reads the page's own text, which is only the include
+    "architecture.md": NotYet("it includes ARCHITECTURE.md, whose figures (compile and CPU times, counts) the "
+                              "coverage does not read: no ledger accounts for them"),
     "command_line.md": Covered(given=("does about 40 s after the direction step",
                                       # the CLI's exit statuses (cli.run_guarded, cmd_simulate's --allow-breakdown)
                                       "with exit status 3 ( : 0,")),

@@ -101,12 +101,6 @@ def template_agrees(quoted: str | None, want: str) -> bool:
         return False
 
 
-def numerals(text: str) -> list[str]:
-    """The numerals of ``text`` (flattened as a page is)."""
-    flat = prose(text)
-    return [flat[a:b] for a, b in (m.span() for m in NUMBER.finditer(flat))]
-
-
 def own_output(output: str) -> str:
     """``output`` without pytest's own framing where a group runs ``pytest -s``: the session header (its platform
     line's versions, "platformdirs-4.14.9"), the counts, the durations and warnings sections, the test file's path

@@ -93,3 +93,4 @@ def test_long_differences_name_a_stale_block():
     printed = "\n".join(lines).replace("812.3", "900.0")
     bad = long_differences({"power_curve_v2_depower10": {"printed": printed, "exit": [1], "stderr": [""]}})
     assert any("812.3" in b and "900.0" in b for b in bad), bad
+
