@@ -32,7 +32,7 @@ from tqdm import tqdm
 ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "laddermill_gym" / "docs"
 FIGURES = DOCS / "figures"
-IMAGE = re.compile(r"!\[[^\]]*\]\(([^)\s]+)\)")
+IMAGE = re.compile(r"!\[[^\]]*\]\(([^)\s]+)\)|<img\s[^>]*src=[\"']([^\"']+)[\"']")  # Markdown's or HTML's
 WP = "NUMBA_NUM_THREADS=1 laddermill work-precision"  # docs/work_precision.md: one thread each (the Makefile's WP)
 
 
@@ -115,7 +115,7 @@ def embedded() -> dict[str, list[str]]:
     """{picture file name under docs/figures/: [the documents that embed it]} of README.md and every docs page."""
     found: dict[str, list[str]] = {}
     for doc in [ROOT / "README.md", *sorted(DOCS.rglob("*.md"))]:
-        for target in IMAGE.findall(doc.read_text()):
+        for target in (md or html for md, html in IMAGE.findall(doc.read_text())):
             path = (doc.parent / target).resolve()
             if path.parent == FIGURES.resolve():
                 found.setdefault(path.name, []).append(str(doc.relative_to(ROOT)))

@@ -1,8 +1,10 @@
 """What a docs page's check compares is what the coverage counts as checked (a review of 2026-12-07): a check compares
 every place its pattern matches, so each pattern must match exactly one place; and the output blocks, which the
-coverage leaves to the long groups, must each be a long group's output.
+coverage leaves to the long groups, must each be a long group's output. Every picture README or a page embeds (in
+Markdown or HTML) has the command that draws it, and that command's module and subcommand exist.
 
-Oracles: the page files themselves and the long groups' commands (docsite/long_figures.py).
+Oracles: the page files themselves, the long groups' commands (docsite/long_figures.py), the import system and the
+command line's own parser.
 """
 
 from __future__ import annotations
@@ -64,3 +66,45 @@ def test_every_text_block_with_figures_is_a_long_groups_output():
             bad += [f"{page.name}:{line}: no long group runs {x[2:]!r}" for x in lines
                     if x.startswith("$ ") and " ".join(x[2:].split()) not in wanted]
     assert not bad, bad
+
+
+def test_every_picture_command_names_a_module_and_subcommand_that_exist():
+    """docsite/pictures.py names the command that draws each picture; a command pointing at a module or a
+    ``laddermill`` subcommand that does not exist passed every test (a review of 2026-12-07; the long groups had this
+    check already: tests/test_page_history.py)."""
+    import argparse
+    import importlib.util
+
+    from docsite.long_figures import argv_env
+    from docsite.pictures import PICTURES
+    from laddermill_gym.cli import build_parser
+
+    subparsers = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    bad = []
+    for pic in PICTURES:
+        for command in pic.command.split(" && "):
+            argv, _ = argv_env(command.replace("{out}", "out"))
+            if importlib.util.find_spec(argv[0]) is None:
+                bad.append((pic.name, f"no module {argv[0]}"))
+            elif argv[0] == "laddermill_gym.cli" and argv[1] not in subparsers.choices:
+                bad.append((pic.name, f"no subcommand laddermill {argv[1]}"))
+    assert not bad, bad
+
+
+def test_pictures_embedded_as_html_are_found():
+    from docsite.pictures import IMAGE
+
+    page = 'text ![a](figures/a.png) and <img src="figures/b.png" width="40%"> and <img alt="c" src=\'figures/c.png\'>'
+    assert [md or html for md, html in IMAGE.findall(page)] == ["figures/a.png", "figures/b.png", "figures/c.png"]
+
+
+def test_every_embedded_picture_has_its_command():
+    """Each picture README or a docs page embeds is drawn by one command of docsite/pictures.py, and each picture
+    there is embedded somewhere (a new picture without a command, or a command for a dropped picture, fails)."""
+    from docsite.pictures import PICTURES, drawn, embedded
+
+    shown, made = embedded(), drawn()
+    assert set(shown) - set(made) == set(), {n: shown[n] for n in set(shown) - set(made)}
+    assert set(made) - set(shown) == set(), sorted(set(made) - set(shown))
+    assert len({p.name for p in PICTURES}) == len(PICTURES)
+    assert all(p.kind in ("quick", "long", "training") and "{out}" in p.command for p in PICTURES)
