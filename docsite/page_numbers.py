@@ -27,7 +27,9 @@ INDENTED = re.compile(rf"^(?: {{4}}|\t)+(?:\$ )?{COMMANDS}[^\n]*$", re.M)
 COMMAND_LINE = re.compile(rf"^ *(?:\$ )?{COMMANDS}[^\n]*$", re.M)  # in an unlabelled block: a command, not output
 CODE_SPAN = re.compile(r"(`+)(?!`).*?(?<!`)\1(?!`)", re.S)
 LINK_TARGET = re.compile(r"\]\([^)\s]*\)")
-NUMBER = re.compile(r"(?:(?<![\w.^/])[-+])?(?<![\w.^/])\d(?:[\d,]*\d)?(?:\.\d+)?(?:e[-+]?\d+)?x?(?!\w|\.\d|/[a-zA-Z])")
+UNIT = r"(?:kW|MW|GW|W|kN|N|ms|s|min|h|km|mm|cm|m|deg|rad|Hz|kg|MB|GB|kB|J|MJ|kJ|Wh|kWh)(?![\w.])"  # glued: 427kW
+NUMBER = re.compile(r"(?:(?<![\w.^/])[-+])?(?:(?<![\w.^/])|(?<=[^^]\d/))(?:\d(?:[\d,]*\d)?(?:\.\d+)?|(?<![\w.])\.\d+)"
+                    rf"(?:e[-+]?\d+)?x?(?=(?:{UNIT})|(?!\w|\.\d|/[a-zA-Z]))")
 
 
 def prose(text: str) -> str:
