@@ -120,3 +120,15 @@ def test_numbers_glued_to_a_unit_after_a_slash_or_without_a_leading_zero_are_quo
 
     assert found("427kW in 12ms, alpha=8.5deg, 11/12 held, .95 of it") == ["427", "12", "8.5", "11", "12", ".95"]
     assert found("1/s, m^2, R^2/6 and B^3/3, a 3D v1 wing at 20 m/s") == ["20"]
+
+
+def test_the_api_pages_quote_no_figures():
+    """docs/api/ holds the reference's intros (the reference itself is generated from the docstrings); the ledger covers
+    the top-level pages only, so a figure written here would be checked by nothing (a review of 2026-12-07). They
+    may cite a paper's year or an equation's number, listed here by hand."""
+    from docsite.page_numbers import numbers, prose
+
+    citations = {"quasisteady.md": ["2008"], "rotorcraft.md": ["6"]}  # Lansdorp et al. (2008); Roberts' eq. (6)
+    for page in sorted((ROOT / "laddermill_gym" / "docs" / "api").glob("*.md")):
+        flat = prose(page.read_text())
+        assert [flat[a:b] for a, b in numbers(flat)] == citations.get(page.name, []), page.name
