@@ -86,3 +86,19 @@ def test_the_env_view_follows_a_body_that_leaves_it_and_human_mode_restores_pypl
     assert plt.isinteractive()
     human.close()
     assert not plt.isinteractive()  # as the renderer found it
+
+
+@pytest.mark.parametrize("peak, scale", [(0.06, "linear"), (40.0, "symlog")])
+def test_the_lateral_figure_uses_a_log_scale_only_across_decades(peak, scale, tmp_path, monkeypatch):
+    """Offsets all under 0.1 m (a held wing) on symlog's linear band gave two odd ticks (2.89257e-3, -6.0744e-2)."""
+    from types import SimpleNamespace
+
+    import laddermill_gym.plotting as plotting
+    from laddermill_gym.harness.evaluate import plot_results
+
+    seen = {}
+    monkeypatch.setattr(plotting, "save_figure", lambda fig, path: seen.update(fig=fig) or path)
+    t = np.linspace(0.0, 10.0, 11)
+    res = SimpleNamespace(t=t, lateral_m=(peak * np.sin(t))[None, :, None], max_lateral_m=np.array([[peak]]))
+    plot_results(tmp_path, {"lqr": res}, "TetheredWing-v0")
+    assert seen["fig"].axes[0].get_yscale() == scale
