@@ -58,8 +58,9 @@ class NotYet:
     checks: tuple = ()
 
 
-#: A table row's end in a flattened page: no further cell after the last ``|`` (the next row begins ``| ``), so that a
-#: check of a short row does not match the first cells of a longer row of another table.
+#: A table row's end in a flattened page, roughly: no one-word cell after the last ``|`` (the next row begins ``| ``),
+#: so that a check of a short row does not match the first cells of a longer row of numbers; a next cell of several
+#: words or an empty one is not seen (tests/test_page_check_scope.py catches a check matching twice).
 ROW_END = r"(?! [^|\s]+ \|)"
 
 

@@ -55,21 +55,23 @@ import snooze
 
 def batch():
     with Pool(2) as pool:
-        pool.run([(snooze.snooze, dict(folder=sys.argv[1], name=n, seconds=float(sys.argv[2]))) for n in "abc"],
-                 progress=False, labels=["task a", "task b", "task c"])
+        names = sys.argv[3]
+        done = pool.run([(snooze.snooze, dict(folder=sys.argv[1], name=n, seconds=float(sys.argv[2]))) for n in names],
+                        progress=False, labels=[f"task {n}" for n in names])
+        print(" ".join(done))
 
 if __name__ == "__main__":  # a spawned worker imports this file as __mp_main__
     raise SystemExit(run_guarded("batch", batch))
 """
 
 
-def _batch(tmp_path: Path, seconds: float) -> subprocess.Popen:
+def _batch(tmp_path: Path, seconds: float, names: str = "abc") -> subprocess.Popen:
     (tmp_path / "snooze.py").write_text(SNOOZE)
     (tmp_path / "batch.py").write_text(BATCH)
     (tmp_path / "marks").mkdir()
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(tmp_path), os.environ.get("PYTHONPATH", "")]))
-    return subprocess.Popen([sys.executable, str(tmp_path / "batch.py"), str(tmp_path / "marks"), str(seconds)],
-                            start_new_session=True, env=env, stdout=subprocess.DEVNULL,
+    return subprocess.Popen([sys.executable, str(tmp_path / "batch.py"), str(tmp_path / "marks"), str(seconds), names],
+                            start_new_session=True, env=env, stdout=open(tmp_path / "stdout.txt", "w"),
                             stderr=open(tmp_path / "stderr.txt", "w"))
 
 
@@ -86,6 +88,36 @@ def test_a_first_ctrl_c_lets_running_tasks_end_and_starts_no_other(tmp_path):
     assert _marks(tmp_path) == ["a", "b"]  # c never started
     assert err.strip().endswith("laddermill batch: interrupted (Ctrl-C): stopped by Ctrl-C, 2 of 3 tasks completed; "
                                 "1 not started")
+
+
+def test_a_ctrl_c_after_the_last_task_started_keeps_every_result(tmp_path):
+    """Every task ran to its end: the batch returns their results (the first version threw them away)."""
+    proc = _batch(tmp_path, seconds=3.0, names="ab")
+    _wait_for(proc, lambda: len(_marks(tmp_path)) == 2, 120, tmp_path)
+    _ctrl_c(proc)
+    rc, err = _finish(proc, tmp_path)
+    assert rc == 0 and (tmp_path / "stdout.txt").read_text().split() == ["a", "b"], err[-2000:]
+
+
+def snooze_here(seconds: float) -> float:
+    time.sleep(seconds)
+    return seconds
+
+
+def test_serially_the_first_ctrl_c_interrupts_at_once():
+    """Serially Ctrl-C stays the running task's: a KeyboardInterrupt at once (a first version of the stop request
+    swallowed it and ran every task to its end)."""
+    import threading
+
+    from laddermill_gym.studies.parallel import run_tasks
+
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    t0 = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        run_tasks([(snooze_here, {"seconds": 1.0})] * 3, progress=False)
+    timer.join()
+    assert time.monotonic() - t0 < 1.0
 
 
 def test_a_second_ctrl_c_aborts_at_once_and_leaves_no_worker(tmp_path):

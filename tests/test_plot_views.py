@@ -59,28 +59,33 @@ def test_an_empty_recording_and_a_missing_wing_are_named(wing_run, tmp_path):
 
 
 def test_the_env_view_follows_a_body_that_leaves_it_and_human_mode_restores_pyplot():
+    """Through ``draw``: a wing moved 500 m downwind widens the box to hold it; a broken-down (NaN) state draws on the
+    box it has; the next episode (after a reset) starts on the start's box again."""
     import gymnasium as gym
     import matplotlib.pyplot as plt
 
     import laddermill_gym  # noqa: F401
+    from laddermill_gym.envs.render import SceneRenderer
 
     env = gym.make("laddermill_gym/TetheredWing-v0", render_mode="rgb_array")
     env.reset(seed=0)
     frame = env.render()
-    assert frame.shape[2] == 3
-    env.close()
-    from laddermill_gym.envs.render import SceneRenderer
-
     task = env.unwrapped.task
     view = SceneRenderer(task)
-    lo, hi = (c.copy() for c in view.box)
-    view.follow(np.array([[0.5 * (lo[0] + hi[0]), 0.0, 0.5 * (lo[2] + hi[2])]]))  # inside: the view stays
-    assert np.array_equal(view.box[0], lo) and np.array_equal(view.box[1], hi)
-    far = np.array([[lo[0] - 400.0, 0.0, lo[2] - 100.0]])  # a kite 400 m further downwind, 100 m higher
-    view.follow(far)
-    assert np.all(view.box[0] <= far[0] - view.pad + 1e-9) and np.array_equal(view.box[1], hi)
     assert view.draw().shape == frame.shape
+    start = tuple(c.copy() for c in view.box)
+    env.step(env.action_space.sample() * 0.0)
+    task.batch.states[0][:3] += np.array([-500.0, 0.0, 0.0])  # the wing's CG 500 m downwind (x < 0)
+    assert view.draw().shape == frame.shape
+    assert view.box[0][0] <= task.batch.states[0][0] - view.pad + 1e-9 and np.array_equal(view.box[1], start[1])
+    task.batch.t[0] += 0.05
+    task.batch.states[0][:3] = np.nan  # a breakdown's state: drawn, the box kept finite
+    assert view.draw().shape == frame.shape and np.all(np.isfinite(np.array(view.box)))
+    env.reset(seed=0)
+    view.draw()
+    assert all(np.array_equal(a, b) for a, b in zip(view.box, start, strict=True))
     view.close()
+    env.close()
     plt.ioff()
     human = SceneRenderer(task, interactive=True)
     assert plt.isinteractive()

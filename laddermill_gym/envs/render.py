@@ -107,12 +107,17 @@ class SceneRenderer(FigureRenderer):
         pts = np.vstack([task.nominal, nodes, asm.fixed_points])
         lo, hi = pts.min(axis=0), pts.max(axis=0)
         pad = 0.15 * float(np.max(hi - lo)) + max(w.span for w in asm.wing_types)
-        self.box = (lo - pad, hi + pad)
+        self.box = self.start_box = (lo - pad, hi + pad)
         self.pad = pad
+        self.drawn_t = -np.inf  # the time of the last frame drawn: an earlier one is a new episode's
 
     def follow(self, points: np.ndarray) -> None:
-        """Widen the view box (never narrow it: the view stays still while the bodies are inside) so that it holds
-        ``points`` (k, 3) [m] with the start's margin: a kite reeling out, a wing swinging wide stay in view."""
+        """Widen the view box (never narrow it within an episode: the view stays still while the bodies are inside)
+        so that it holds the finite ``points`` (k, 3) [m] with the start's margin: a kite reeling out, a wing swinging
+        wide stay in view (a broken-down state's non-finite points are left out)."""
+        points = points[np.all(np.isfinite(points), axis=1)]
+        if points.size == 0:
+            return
         lo, hi = self.box
         if np.all(points >= lo) and np.all(points <= hi):
             return
@@ -122,6 +127,10 @@ class SceneRenderer(FigureRenderer):
         """Redraw copy ``b``; returns the RGB frame (H, W, 3) uint8 (or None in interactive mode)."""
         ax = self.ax
         ax.cla()
+        t = float(self.task.batch.t[b])
+        if t <= self.drawn_t:  # a reset (or the same state again): the view starts from the start's box
+            self.box = self.start_box
+        self.drawn_t = t
         pos, rot, segments = scene_geometry(self.asm, self.task.batch.states[b])
         up = np.array([1.0, 1.0, -1.0])  # plot altitude = -z
         for p, q in segments:

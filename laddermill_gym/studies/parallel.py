@@ -22,8 +22,9 @@ hears its caller's Ctrl-C instead of the terminal's) is :mod:`laddermill_gym.stu
 
 Ctrl-C. On workers the first Ctrl-C starts no new task and asks the running ones to stop: a training
 (``harness/train``) saves its model and returns, as it does serially; other tasks run to their end. Once they
-ended, :class:`TasksInterrupted` (a KeyboardInterrupt: exit status 130) names what each did. A second Ctrl-C aborts
-at once (the local workers end, Ray's actors are killed).
+ended, :class:`TasksInterrupted` (a KeyboardInterrupt: exit status 130) names what each did (unless every task had
+completed: then their results are returned as usual). Serially Ctrl-C is the running task's, as before. A second
+Ctrl-C aborts at once (the local workers end, Ray's actors are killed).
 Measured figures and the cluster set-up: ``laddermill_gym/docs/scale_out.md``.
 
     laddermill workers warm   # compile or load every gusts-v1 env's kernels; prints the time
@@ -39,6 +40,7 @@ import sys
 import uuid
 import warnings
 from collections.abc import Callable
+from contextlib import nullcontext
 from typing import Any
 
 from tqdm import tqdm
@@ -221,8 +223,9 @@ class Pool:
         out: list = [None] * len(tasks)
         failures, done, outcomes = [], 0, {}
         serial = not (self._actors or self._ex is not None)
+        # on workers the first Ctrl-C is a stop request; serially it stays the running task's (a KeyboardInterrupt)
         with (tqdm(total=len(tasks), desc=desc, unit=unit, disable=not progress, smoothing=0.0) as bar,
-              stop_requests(None if serial else STOP_MESSAGE) as stop):
+              nullcontext() if serial else stop_requests(STOP_MESSAGE) as stop):
             for i, result, note, err in self._completed(tasks, None if serial else stop):
                 outcomes[i] = err
                 if err is not None:
@@ -234,8 +237,8 @@ class Pool:
                 bar.update()
                 if on_result is not None:
                     on_result(i, result)
-        if not serial and stop.requested:
-            raise _interrupted(labels, outcomes, len(tasks))
+        if not serial and stop.requested and (failures or len(outcomes) < len(tasks)):
+            raise _interrupted(labels, outcomes, len(tasks))  # (every task completed: their results stand)
         if failures:
             raise _failed(failures, labels, done, len(tasks)) from failures[0][1]
         return out
