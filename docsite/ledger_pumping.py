@@ -135,8 +135,11 @@ PUMPING = Covered(
         'net electrical energy / (1 kW x 0.05 s) - 0.1 S((dy / 15 m)^2) - 0.1 S(rates) - 1e5 on a failure. Episodes:',
         '400 s (about two scripted cycles), the 0.01 rad direction step at 1 s.',
         'The drum holds 240 m (Delta L + 2 overruns):',
-        'beyond it reel-out commands are replaced by 0, so no policy gains by paying out for ever. The failure '
-        'penalty (5 MJ)',
+        # the overrun: 240 m + V tau = 10 m/s x 0.5 s (the winch's speed limit and time constant; a review of
+        # 2026-12-07 measured 245.00 m holding a full reel-out)
+        'cut: 245 m from a full-speed reel-out).',
+        'beyond it reel-out commands are replaced by 0, so no policy gains by paying out for ever (the winch',
+        'The failure penalty (5 MJ)',
         '(400 s, the 0.01 rad direction step at 1 s;',
         'seeds 0-3, which give identical episodes here because the registered disturbance is deterministic);',
         '## Crosswind flight (issue 29)',

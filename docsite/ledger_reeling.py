@@ -174,6 +174,15 @@ REELING = Covered(
         )),
     ),
     history=(
+        History('2026-12-07', "a review's scripts: the crosswind cycle on the reeling tether through its splits and "
+                "merges (s4_cycle_switch.py, s5_split_transient.py, s6_merge.py) and a 100 m start reeled in at 5 m/s "
+                "at 2.5 and 1 ms (s7_short_drum.py)", 'the relabelling transients and the last element (4ddc82a)',
+                ('in crosswind reel-out at 2.95 m/s the drum tension fell by 1.2 kN (1.5 % to 4.5 %) at every split '
+                 'and rang for about 0.1 s, some 90 J per split against 11 MJ per reel-out.',
+                 'the drum tension fell by 15 % to 16 % at every reel-in merge and was back within 30 ms.',
+                 "0.5 l_n to the end stop at 0.05 l_n, and at 2.5 ms its mode passes RK4's limit below about 4.2 m of "
+                 '40 m elements (the drum tension rang between 15 N and 6 kN from 3.4 m on; at 1 ms it held within '
+                 "1192 to 1197 N: the same review's run of 2026-12-07, a 100 m start reeled in at 5 m/s).")),
         History('2026-11-29', 'python -m laddermill_gym.studies.pumping.tether_convergence --start-length 200 '
                 '--lengths 200 40', 'the 200-500 m run as first written (78cc615), before the crosswind controller '
                 'changed (0db432c, e1ce3ac)', ('bisected: 191-521 m, 49982 W and 34567 W.)',)),

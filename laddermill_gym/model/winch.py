@@ -64,6 +64,10 @@ def read_winch(s: Section, first_length: float) -> StationParams:
     elif mode == "commanded":
         kw.update(speed_time_constant=s.number("speed_time_constant", positive=True),
                   speed_limits=tuple(s.vector("speed_limits", 2)))
+        low, high = kw["speed_limits"]
+        if not low <= kw["initial_speed"] <= high:  # the first command is the initial speed: refused at the build
+            raise s.error("initial_speed_m_s", kw["initial_speed"], f"must lie within speed_limits [{low}, {high}] "
+                                                                      "m/s (the winch's first command)")
     else:
         kw.update(speed_times=tuple(s.vector("speed_times_s")), speed_values=tuple(s.vector("speed_m_s")))
     s.done()

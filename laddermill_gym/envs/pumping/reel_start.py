@@ -49,11 +49,16 @@ def solve_catenary(span: float, rise: float, length: float, w: float, ea: float)
 
     chord = math.hypot(span, rise)
     h0 = w * length * span / max(chord, 1e-9) * 2.0
-    q, _, ok, msg = fsolve(miss, [math.log(h0), w * length * rise / chord - 0.5 * w * length], full_output=True,
-                           xtol=1e-13)
-    if ok != 1 or max(abs(r) for r in miss(q)) > 1e-9:
-        raise ValueError(f"solve_catenary: no catenary of {length} m spans {span} m across and {rise} m up ({msg})")
-    return math.exp(q[0]), float(q[1])
+    # a sagging tether's guess first (the start's usual case, whose result it keeps), then tensions of 1 to 100 times
+    # the tether's weight along the chord (a short steep tether pulled by its wing: 4 times it on a 100 m start)
+    guesses = [[math.log(h0), w * length * rise / chord - 0.5 * w * length]]
+    guesses += [[math.log(k * w * length * max(span, 1e-9) / chord), k * w * length * rise / chord - 0.5 * w * length]
+                for k in (1.0, 3.0, 10.0, 30.0, 100.0)]
+    for guess in guesses:
+        q, _, ok, msg = fsolve(miss, guess, full_output=True, xtol=1e-13)
+        if ok == 1 and max(abs(r) for r in miss(q)) <= 1e-9:
+            return math.exp(q[0]), float(q[1])
+    raise ValueError(f"solve_catenary: no catenary of {length} m spans {span} m across and {rise} m up ({msg})")
 
 
 def reel_state(asm, wing_state: np.ndarray, station_block: np.ndarray) -> np.ndarray:

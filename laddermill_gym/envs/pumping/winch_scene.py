@@ -19,7 +19,8 @@ from pathlib import Path
 import numpy as np
 
 from laddermill_gym.envs.pumping.reel_start import reel_state
-from laddermill_gym.kernels.contract import SX_MOVED, SX_SPEED
+from laddermill_gym.kernels.contract import SX_MOVED, SX_SPEED, SX_TRANSFERS
+from laddermill_gym.kernels.reel import MIN_FRACTION as REEL_MIN_FRACTION
 from laddermill_gym.kernels.winch import MIN_FRACTION
 from laddermill_gym.ladder.scene import Scene, load_scene
 from laddermill_gym.model.configio import ConfigError, config_path, read_yaml
@@ -86,9 +87,7 @@ class WinchSimulator(Simulator):
         """The winch's own limit, if the failed step of h [s] from the current state broke it (a physical end of
         reeling in, reported by the integrator's LIMIT status as a speed or rate limit would be; ``sim.reports``
         names it): :func:`winch_limit_text` of the step taken without any check (:func:`unchecked_step`); None
-        for a reeling tether (its limits are its nodes') or where the step cannot be evaluated."""
-        if is_reel(self.assembly.station):
-            return None
+        where the step cannot be evaluated."""
         try:
             x = unchecked_step(self, h)
         except (ValueError, ArithmeticError):
@@ -121,7 +120,10 @@ def unchecked_step(sim, h: float) -> np.ndarray:
 def winch_limit_text(winch: StationParams, t: float, x: np.ndarray, xoff: int) -> str | None:
     """The sentence on a winch element reeled in below ``MIN_FRACTION`` of its start length (``kernels/winch.py``'s
     physical limit) in the state x at time t [s] (station entries from ``xoff``), with the rest length [m] and the
-    winch speed [m/s]; None when it is not."""
+    winch speed [m/s]; None when it is not. On a reeling tether (``kernels/reel.py``) its own end stop: the drum
+    element, with no node left in the air to merge, under its ``MIN_FRACTION`` of the element length."""
+    if is_reel(winch):
+        return reel_limit_text(winch, t, x, xoff)
     start = winch.piece_length * winch.first_fraction
     rest = start + x[xoff + SX_MOVED]
     if not rest < MIN_FRACTION * winch.piece_length:
@@ -129,6 +131,19 @@ def winch_limit_text(winch: StationParams, t: float, x: np.ndarray, xoff: int) -
     return (f"the winch reeled the tether's first element in to a rest length of {rest:.6g} m at t = {t:.6g} s, "
             f"below {100 * MIN_FRACTION:g} % of its start length {start:.4g} m ({MIN_FRACTION * winch.piece_length:.4g}"
             f" m), winch speed {x[xoff + SX_SPEED]:.4g} m/s")
+
+
+def reel_limit_text(winch, t: float, x: np.ndarray, xoff: int) -> str | None:
+    """The reeling tether's end stop (``kernels/reel.relabel``'s LIMIT) in the state x at time t [s]: the drum element
+    (rest length l_d = l_p + s - m l_n) under ``MIN_FRACTION`` of the element length l_n with only one node in the
+    air; None when it is not."""
+    ln, moved, m = winch.reel.element_length, x[xoff + SX_MOVED], x[xoff + SX_TRANSFERS]
+    rest = winch.piece_length + moved - m * ln
+    if winch.nodes_in_air + math.floor(m + 0.5) >= 2 or not rest < REEL_MIN_FRACTION * ln:
+        return None
+    return (f"the winch reeled the tether in to its last element: the drum element's rest length {rest:.6g} m at "
+            f"t = {t:.6g} s is below {100 * REEL_MIN_FRACTION:g} % of the element length {ln:.4g} m "
+            f"({REEL_MIN_FRACTION * ln:.4g} m), winch speed {x[xoff + SX_SPEED]:.4g} m/s")
 
 
 @dataclass(frozen=True)
