@@ -79,7 +79,8 @@ ROTORCRAFT_DERIVED = (
     "eigenvalue of -1558 1/s", "(60.9 m)",
     "has pitch 25.6 deg, tether tensions of 129 N (each rear) and 195 N (front), and 1.6 kW electrical power",
     "roll (about 0.03 rad per m) and yaw "
-    "(about 0.043 rad per m)", "That happens above 12.8 m/s", "above 12.8 m/s, which")
+    "(about 0.043 rad per m)", "That happens above 12.58 m/s",
+    "above 12.58 m/s, which")  # 12.8 until a review of 2026-12-07 (the tip incidence's root at 4 deg: 12.581 m/s)
 #: runs of craft_stability on modified configs (fin areas, tether spacings) and beyond its wind scan (9eab8c7)
 ROTORCRAFT_HISTORY = (History(
     "2026-12-07", "laddermill train configs/agents/ppo_rotorcraft_v1_hold.yaml --seed 0 --out RUN (its "
@@ -291,7 +292,7 @@ ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (
         # the median of the inflow test's six printed counts (13, 17, 18, 21, 21, 31): (18 + 21) / 2 = 19.5
         'their median 19.5',
         # C_p of the ideal cubic at 1 deg, worked by hand
-        '- As alpha_c -> 0, u <= s -> 0, so C_p -> 0. C_p(1 deg) = 3.1e-4.',
+        '- As alpha_c -> 0, u <= s -> 0, so C_p -> 0. C_p(1 deg) = 3.0e-4.',  # 3.05e-4 (3.1e-4 until 2026-12-07)
         # read off the chart's picture
         'a family whose left branches cross C_p = 0 between 3 and 61 deg and whose peaks fall from 0.54 to 0.16.',
         '- **Exception at low incidence and mu >= 0.15.** There the curves rise slightly above the ideal curve, '
@@ -340,5 +341,15 @@ ROTOR = Covered(  # the chart's table and findings checked against rotor_chart (
     ),
     history=(History('2026-11-23', 'rotor.solve_inflow in a Python session (bfb741c)', 'the inflow solver as first '
                      'written (re-run 2026-11-30 by rotor_tests: 13 to 31)',
-                     ('(about 25 as first written on 2026-11-23)',)),),
+                     ('(about 25 as first written on 2026-11-23)',)),
+             History('2026-12-07', "a review's scripts: the inflow roots on a fine grid of lam (scipy's brentq) "
+                     "against solve_inflow, and the chart's 13 deg curve's induction nu / lam_inf "
+                     "(f1_inflow_skips_root.py, f2_chart_high_induction.py)",
+                     'the inflow solver before the turn search (4ddc82a)',
+                     ('at mu = 0.0056, alpha_c = 87.5 deg and 6.1 deg collective the walk once returned the '
+                      'reversed-flow root, C_p -0.10 where 6.0 deg gave +0.36; a review of 2026-12-07)',
+                      'past its fold (6.15 deg in that case)', 'where nu / lam_inf passes about 0.4 to 0.5',
+                      "on the chart's 13 deg curve at mu = 0.05 the induction reaches 0.94 at the autorotation angle "
+                      "of 61.4 deg (0.46 to 0.73 at mu = 0.075 and 45 to 55 deg), and Roberts' point at mu = 0.1, "
+                      '22.5 deg lies within it.')),),
 )

@@ -241,7 +241,8 @@ def test_harness_lqr_on_rotorcraft_env():
 def test_35m_crafts_trim_below_the_ideal_power_coefficient(name, alt):
     """Roberts' 35 m crafts trim in the simulator near their design altitude and generate; their power
     coefficient (eq. 4, at the density and wind the trimmed craft meets) lies below Roberts' ideal curve at
-    their incidence (no profile drag: an upper bound for any real rotor) and between half and all of the steady
+    their incidence (no profile drag; the blade-element model passes it in places, docs/rotor.md, but not at these
+    trims) and between half and all of the steady
     study's optimum, which chooses incidence and collective freely (2 % allowance: the study's density)."""
     from laddermill_gym.rotorcraft.rotor import ideal_power_coefficient
     from laddermill_gym.studies.rotorcraft.rotor_design import best_operating_point, load_design

@@ -190,10 +190,37 @@ def _inflow_residual(c0, c1, mu, lam_inf, lam):
 
 
 @njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
+def _inflow_turn(c0, c1, mu, lam_inf, x0, x1, f1, direction, n_eval, max_iter):
+    """Where |f| of the bracket search grew again at x1 (f1) before f changed sign: bisection on the sign of
+    d|f|/ds between x0 and x1 (s along ``direction``) for the smallest |f|. A point there where f has the other sign
+    bounds the nearer of two close roots that the growing steps stepped over. Returns (found, x, f, n_eval): found
+    with the first such point x (the nearer root in (x0, x)), else the search ends at the turn with f's sign kept."""
+    fa, dfa = _inflow_residual(c0, c1, mu, lam_inf, x0)
+    n_eval += 1
+    if (fa > 0.0) == (direction * dfa > 0.0):  # |f| grows from x0 on: its least on (x0, x1) is at x0, already seen
+        return False, x1, f1, n_eval
+    lo, hi = x0, x1  # |f| falls at lo, grows at hi
+    tol = 1e-14 * (1.0 + abs(x0) + abs(x1))
+    while n_eval < max_iter and abs(hi - lo) > tol:
+        mid = 0.5 * (lo + hi)
+        fm, dfm = _inflow_residual(c0, c1, mu, lam_inf, mid)
+        n_eval += 1
+        if (fm > 0.0) != (fa > 0.0) or fm == 0.0:
+            return True, mid, fm, n_eval
+        if (fm > 0.0) == (direction * dfm > 0.0):
+            hi = mid
+        else:
+            lo = mid
+    return False, x1, f1, n_eval
+
+
+@njit(cache=True, _nrt=False, fastmath={"contract", "nsz", "arcp"}, error_model="numpy")
 def _inflow_bracket(c0, c1, mu, lam_inf, f0, n_eval, max_iter):
     """Bracket search of :func:`solve_inflow`: from lam_inf (residual f0) in the direction that reduces |f|, steps
-    growing by 1.25 until f changes sign. Returns (found, x0, f0, x1, f1, n_eval): the last two points and their
-    residuals (a sign change between them when found) and the residual evaluations so far."""
+    growing by 1.25 until f changes sign. Where |f| grows again before that (momentum theory's heavily loaded
+    windmill state, whose two close roots a growing step can pass over), :func:`_inflow_turn` looks between the
+    last two points for the nearer root first. Returns (found, x0, f0, x1, f1, n_eval): the last two points and
+    their residuals (a sign change between them when found) and the residual evaluations so far."""
     x0 = lam_inf
     direction = -1.0 if f0 > 0.0 else 1.0
     scale = max(abs(lam_inf), mu, 1e-3)
@@ -203,13 +230,18 @@ def _inflow_bracket(c0, c1, mu, lam_inf, f0, n_eval, max_iter):
     found = False
     while n_eval < max_iter:
         x1 = x0 + direction * h
-        f1, _ = _inflow_residual(c0, c1, mu, lam_inf, x1)
+        f1, df1 = _inflow_residual(c0, c1, mu, lam_inf, x1)
         n_eval += 1
         if not math.isfinite(f1):
             break
         if (f1 > 0.0) != (f0 > 0.0) or f1 == 0.0:
             found = True
             break
+        if (f1 > 0.0) == (direction * df1 > 0.0):  # |f| turned: a root pair may lie between x0 and x1
+            found, xm, fm, n_eval = _inflow_turn(c0, c1, mu, lam_inf, x0, x1, f1, direction, n_eval, max_iter)
+            if found:
+                x1, f1 = xm, fm
+                break
         x0, f0 = x1, f1
         h *= 1.25
     return found, x0, f0, x1, f1, n_eval

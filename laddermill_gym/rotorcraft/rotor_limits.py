@@ -76,8 +76,10 @@ def collective_at_limit(params: RotorParams, mu: float, alpha_c: float,
                         limit: float = BLADE_INCIDENCE_LIMIT) -> float:
     """Collective theta0 [rad] that puts the retreating blade tip at the incidence limit [rad].
 
-    Solves tip_aoa(theta0) = limit (tip_aoa rises with theta0) over theta0 in [-60, 40] deg by a scan and
-    Brent's method. Raises RotorSolveError when the limit cannot be reached in that range.
+    Solves tip_aoa(theta0) = limit over theta0 in [-60, 40] deg by a scan and Brent's method: the first
+    collective from below at which the tip reaches the limit (tip_aoa rises with theta0, except in near-axial
+    flow past momentum theory's fold, where it falls back when the light branch of the inflow ends). Raises
+    RotorSolveError when the limit cannot be reached in that range.
     """
     p = check_params(params).packed()
     mu, alpha_c, limit = check_mu(mu), check_alpha(alpha_c), check_limit(limit)
@@ -99,7 +101,12 @@ def _collective_at_limit(p, mu, alpha_c, limit, out) -> float:
     if bracket is None:
         raise RotorSolveError(f"blade-incidence limit {limit} rad not reached for theta0 in {_THETA_RANGE} rad "
                               f"at mu = {mu}, alpha_c = {alpha_c} rad")
-    return brentq(excess, *bracket, xtol=1e-13, rtol=1e-13)
+    root = brentq(excess, *bracket, xtol=1e-13, rtol=1e-13)
+    # near-axial flow (mu of a few hundredths) past momentum theory's fold: the tip incidence is not monotone in
+    # theta0 and the whole range's bracket may hold a later crossing; the limit is the first one (a review of
+    # 2026-12-07: 13.3 deg on the reversed-flow branch where 7 deg is the light branch's crossing)
+    earlier = _scan_root(excess, lo, root - 1e-9 * (1.0 + abs(root)), 101, rising=True)
+    return root if earlier is None else brentq(excess, *earlier, xtol=1e-13, rtol=1e-13)
 
 
 def max_power_at_limit(params: RotorParams, mu: float, alpha_c: float,
