@@ -224,3 +224,27 @@ def test_a_run_folder_holds_one_run_with_the_config_it_trained(tmp_path, capsys)
     with pytest.raises(SystemExit) as exc:
         main([str(_small_config(tmp_path)), "--out", str(run)])
     assert exc.value.code == 2 and "holds a training run already (config.yaml)" in capsys.readouterr().err
+
+
+def test_run_episodes_metrics_are_the_recorded_series():
+    """``laddermill evaluate``'s headline columns against a loop written here on the same env and controller (a
+    review of 2026-12-07: keeping the last offset instead of the largest, or dividing the power by one step too many,
+    passed every test): the largest |dy| over the episode, start included, and the mean of the per-step power."""
+    from laddermill_gym.control.factory import make_controller
+    from laddermill_gym.envs.observation import OBS_INDEX
+    from laddermill_gym.harness.evaluate import run_episodes
+
+    ctrl = make_controller("lqr", TW)
+    res = run_episodes(ctrl, WingVectorEnv(2, **dict(ENV_IDS[TW], episode_time=40.0)))
+    env = WingVectorEnv(2, **dict(ENV_IDS[TW], episode_time=40.0))
+    obs, _ = env.reset(seed=[0, 1])
+    dys, powers = [obs[:, OBS_INDEX["dy"]].astype(float)], []
+    for _ in range(800):  # 40 s of 0.05 s periods: both copies run to the time limit
+        obs, _, term, trunc, info = env.step(ctrl.predict(obs, deterministic=True)[0])
+        dys.append(obs[:, OBS_INDEX["dy"]].astype(float))
+        powers.append(info["power_W"])
+    assert trunc.all() and not term.any()
+    dys = np.array(dys)
+    assert np.argmax(np.abs(dys[:, 0])) < len(dys) - 1  # the largest offset is not the last one: the max is tested
+    np.testing.assert_array_equal(res.max_lateral_m[:, 0], np.abs(dys).max(axis=0))
+    np.testing.assert_allclose(res.mean_power_W, np.mean(powers, axis=0), rtol=1e-12)

@@ -90,9 +90,11 @@ def test_power_matches_rotor_module(craft):
 
 def test_eq6_matches_restricted_jacobian(craft):
     """M, D, K and the input column derived from the craft's physics agree with the full simulator's
-    Jacobian restricted to (y, phi) within 5 % (issue), entry by entry."""
+    Jacobian restricted to (y, phi) entry by entry: the issue asks for 5 %; they agree to 1.0 % (the roll damping,
+    through the product of inertia eq. (6) leaves out), so 1.5 % is the bound that catches a few-percent error in
+    the derivation (a 3 % roll inertia gave 2.95 %: a review of 2026-12-07)."""
     chk = jacobian_check(straight_tether_variant(craft))
-    assert chk["max_rel_error"] < 0.05
+    assert chk["max_rel_error"] < 0.015
     # the roll input is the differential thrust: beta = -2 s dT/dtheta, alpha = 0 at a level trim
     assert chk["alpha_beta"][0] == 0.0 and chk["alpha_beta"][1] < 0.0
 

@@ -66,7 +66,11 @@ def test_lqr_designs_for_a_user_scene_file(tmp_path):
     text = (CONFIG_DIR / "scenes" / "tethered_wing.yaml").read_text()
     text = text.replace("wing_type: ../wings/", "wing_type: package:wings/", 1)
     text = text.replace("cable: ../cables/", "cable: package:cables/", 1)
+    assert "  v0: 8.0 " in text
     path = tmp_path / "my_wing.yaml"
-    path.write_text(text)
+    path.write_text(text.replace("  v0: 8.0 ", "  v0: 11.0", 1))  # another wind: another trim and gain
     ctrl = make_controller("lqr", TW, {"scene": str(path)})
-    assert ctrl.gains.shape == (1, 2, 6)
+    default = make_controller("lqr", TW)
+    assert ctrl.gains.shape == default.gains.shape == (1, 2, 6)
+    # the user's file is the one designed on (a review of 2026-12-07: ignoring it passed): the gains differ
+    assert np.abs(ctrl.gains - default.gains).max() > 1e-3 * np.abs(default.gains).max()

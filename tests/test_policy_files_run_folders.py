@@ -128,6 +128,18 @@ def test_a_shared_runs_other_model_file_flies_itself(tmp_path):
     assert not np.all(make_controller(str(run), LC).predict(obs, deterministic=True)[0] == 0.5)
 
 
-def test_the_craft_lqr_takes_a_shipped_config_name():
+def test_the_craft_lqr_takes_a_shipped_config_name(tmp_path):
     ctrl = make_controller("lqr:lqr_rotorcraft", RC)
     assert ctrl.predict(np.zeros(ctrl.obs_dim), deterministic=True)[0].shape == (2,)
+    # a config of its own is the one designed on (a review of 2026-12-07: one that named the default passed a
+    # factory that ignored the config): a tighter roll weight, another gain
+    from laddermill_gym.model.configio import CONFIG_DIR
+
+    text = (CONFIG_DIR / "agents" / "lqr_rotorcraft.yaml").read_text()
+    assert "  phi_deg: 3.0 " in text and "craft: roberts_flying_model " in text
+    mine = tmp_path / "lqr_tight_roll.yaml"
+    mine.write_text(text.replace("  phi_deg: 3.0 ", "  phi_deg: 0.5 ", 1))
+    obs = np.zeros(ctrl.obs_dim)
+    obs[np.arange(ctrl.obs_dim) % 3 == 0] = 0.01  # a state off the trim, the same for both
+    tight = make_controller(f"lqr:{mine}", RC)
+    assert not np.allclose(tight.predict(obs, deterministic=True)[0], ctrl.predict(obs, deterministic=True)[0])
