@@ -111,6 +111,21 @@ def test_stop_at_the_closed_form_time_with_a_report(dim, body):
     assert float(depth.group(1)) <= 0.0
 
 
+def test_a_ground_at_zero_reports_the_height_alone():
+    """At a ground height of 0 the height is the depth: the report gives it at four digits, without a separate
+    depth (0bb72da; a review of 2026-12-07 found its test covered only a ground above 0)."""
+    H = 10.0
+    sim = Simulator(*falling_wings(3, [H]), IntegratorSettings(dt=DT, ground_height=0.0))
+    n = contact_step(H, 0.0)
+    with pytest.raises(SimulationError) as err:
+        sim.step(n_steps=10 * n)
+    text = str(err.value)
+    m = REPORT.search(text)
+    assert m and "from the ground" not in text and "ground height 0 m" in text, text
+    assert float(m.group(4)) == pytest.approx(free_fall_height(H, n * DT), rel=1e-3, abs=1e-4)
+    assert float(m.group(4)) <= 0.0
+
+
 def test_error_controlled_run_stops_in_the_step_that_reaches_the_ground():
     """DP5(4) takes steps of its own size: the contact lies in the step after the state kept, and the report's
     time and height are those of that step's end on the closed-form fall."""

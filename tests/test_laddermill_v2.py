@@ -90,7 +90,8 @@ def mill():
 @pytest.mark.slow
 def test_operating_point_periodic_power_is_the_hand_estimate_and_tensions_within_the_limit(mill):
     """The default settle finds the periodic motion from rest through the scene's ramp; its period-mean power equals
-    efficiency x (T_first - T_last) V_c (closed form, within 1e-3) and is docs/wing_data.md's 102.2 kW to 0.5 %;
+    efficiency x (T_first - T_last) V_c (closed form, within 1e-3) and is docs/mill_fast.md's 102.2 kW to 0.5 % (a
+    figure the mill study printed: a check against the code's earlier output, not an independent one);
     over one period from it in 3D (zero action, no disturbance) the mean power agrees again (1 %) and every element's
     tension stays below breaking load / 2.5."""
     op, st = mill.operating_point, mill.task.batch.assembly.station
