@@ -165,7 +165,18 @@ def reel_kind(asm: Assembly) -> ReelWinch3D:
 
 def nodes_in_air(asm: Assembly, x: np.ndarray) -> int:
     """Free nodes in the air in state ``x`` (the start's plus those paid out, ``SX_TRANSFERS``)."""
-    return int(asm.station.nodes_in_air + round(float(x[asm.body_state_size + C.SX_TRANSFERS])))
+    return station_nodes_in_air(asm.station, x, asm.body_state_size)
+
+
+def station_nodes_in_air(st: ReelStation, x: np.ndarray, xoff: int) -> int:
+    """:func:`nodes_in_air` from the station ``st`` and its state entries at ``xoff``."""
+    return int(st.nodes_in_air + round(float(x[xoff + C.SX_TRANSFERS])))
+
+
+def drum_rest_length(st: ReelStation, x: np.ndarray, xoff: int) -> float:
+    """Rest length l_d [m] of the drum element, l_p + s - m l_n (``kernels/reel.drum_rest_length``), from the
+    station ``st`` and its state entries at ``xoff``."""
+    return float(st.piece_length + x[xoff + C.SX_MOVED] - x[xoff + C.SX_TRANSFERS] * st.reel.element_length)
 
 
 def ground_contacts(asm: Assembly, x: np.ndarray) -> int:

@@ -19,12 +19,20 @@ from pathlib import Path
 import numpy as np
 
 from laddermill_gym.envs.pumping.reel_start import reel_state
-from laddermill_gym.kernels.contract import SX_MOVED, SX_SPEED, SX_TRANSFERS
+from laddermill_gym.kernels.contract import SX_MOVED, SX_SPEED
 from laddermill_gym.kernels.reel import MIN_FRACTION as REEL_MIN_FRACTION
 from laddermill_gym.kernels.winch import MIN_FRACTION
 from laddermill_gym.ladder.scene import Scene, load_scene
 from laddermill_gym.model.configio import ConfigError, config_path, read_yaml
-from laddermill_gym.model.reel import ReelSpec, ground_contacts, is_reel, read_reeling, with_reel
+from laddermill_gym.model.reel import (
+    ReelSpec,
+    drum_rest_length,
+    ground_contacts,
+    is_reel,
+    read_reeling,
+    station_nodes_in_air,
+    with_reel,
+)
 from laddermill_gym.model.station import StationParams
 from laddermill_gym.model.winch import read_winch, with_winch
 from laddermill_gym.sim.simulator import Simulator
@@ -137,9 +145,8 @@ def reel_limit_text(winch, t: float, x: np.ndarray, xoff: int) -> str | None:
     """The reeling tether's end stop (``kernels/reel.relabel``'s LIMIT) in the state x at time t [s]: the drum element
     (rest length l_d = l_p + s - m l_n) under ``MIN_FRACTION`` of the element length l_n with only one node in the
     air; None when it is not."""
-    ln, moved, m = winch.reel.element_length, x[xoff + SX_MOVED], x[xoff + SX_TRANSFERS]
-    rest = winch.piece_length + moved - m * ln
-    if winch.nodes_in_air + math.floor(m + 0.5) >= 2 or not rest < REEL_MIN_FRACTION * ln:
+    ln, rest = winch.reel.element_length, drum_rest_length(winch, x, xoff)
+    if station_nodes_in_air(winch, x, xoff) >= 2 or not rest < REEL_MIN_FRACTION * ln:
         return None
     return (f"the winch reeled the tether in to its last element: the drum element's rest length {rest:.6g} m at "
             f"t = {t:.6g} s is below {100 * REEL_MIN_FRACTION:g} % of the element length {ln:.4g} m "
