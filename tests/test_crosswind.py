@@ -1,18 +1,21 @@
 """The crosswind pumping controller (control/crosswind.py, crosswind_guidance.py, crosswind_config.py) and the
 wind-window read-outs it flies on (envs/pumping/wind_window.py): the geometry against closed forms, the paths'
 extents against their equations, bad configs refused naming the field, and a flown reel-out: figure eights on both
-sides of the wind, far more power than the static cycle, never more than Loyd's bound."""
+sides of the wind, far more power than the static cycle, never more than Loyd's bound, and a winch command that is
+Loyd's third of the along-tether wind written from the scene file."""
 
 import dataclasses
 import math
 
 import numpy as np
 import pytest
+import yaml
 
 from laddermill_gym.control.crosswind import PHASE_NAMES, REEL_OUT
 from laddermill_gym.control.crosswind_config import check_against_scene, load_crosswind_config
 from laddermill_gym.control.crosswind_guidance import PathSpec, path_angles
 from laddermill_gym.control.factory import make_controller
+from laddermill_gym.envs.pumping.observation import WINCH_OBS_INDEX
 from laddermill_gym.envs.pumping.task import PumpingTask
 from laddermill_gym.envs.pumping.wind_window import wind_window
 from laddermill_gym.model.configio import ConfigError
@@ -190,3 +193,35 @@ def test_power_curve_exit_status_tells_a_failure_from_a_wind_without_trim(tmp_pa
     failed = {"v0": 9.0, "failed": "t = 12.00 s: ground contact", **{k: math.nan for k in keys}}
     monkeypatch.setattr(power_curve, "curve_point", lambda wind, length=None: failed)
     assert power_curve.main(["--winds", "9"]) == 1
+
+
+def test_reel_out_winch_command_is_loyds_fraction_of_the_along_tether_wind():
+    """The reel-out's winch law (Loyd 1980's optimum; Lansdorp et al. 2008 section V): the commanded speed is f = 1/3
+    of the wind along the tether at the wing, that wind written here from the scene file's numbers (Meijaard et al.
+    1999 eq. 1 above the boundary layer, v0 + v1 (h - h0), blowing along -x) and the wing's observed position, plus
+    the overload term (overload_gain per N of drum tension above max_tension; zero below it), the gains read from the
+    controller's YAML file. 20 s of reel-out from the trim: the wing crosses the wind, so the wind along the tether
+    and the command change by more than a third."""
+    task = PumpingTask(1, episode_time=100.0, disturbances=[])  # the steady wind (no direction step)
+    ctl = make_controller("crosswind", ID)
+    law = yaml.safe_load(ctl.config.file.read_text())["winch"]
+    assert law["reel_out_factor"] == pytest.approx(1 / 3)
+    wind, winch = task.scene.assembly.wind, task.scene.assembly.fixed_points[0]
+    task.reset(np.ones(1, bool), [np.random.default_rng(0)])
+    commanded, expected = [], []
+    for _ in range(400):
+        o = task.raw_obs[0]
+        r = task.nominal[0] + o[:3] - winch
+        h = -(task.nominal[0][2] + o[2])
+        assert h > wind.h0
+        along = (wind.v0 + wind.v1 * (h - wind.h0)) * -r[0] / np.linalg.norm(r)
+        over = max(o[WINCH_OBS_INDEX["drum_tension"]] - law["max_tension"], 0.0)
+        expected.append(law["reel_out_factor"] * max(along, 0.0) + law["overload_gain"] * over)
+        a, _ = ctl.predict(task.obs.copy())
+        assert ctl.last_phase[0] == REEL_OUT
+        commanded.append(float(task.actions.controls(a)[0, 3]))
+        _, term, _, info = task.step(a)
+        assert not term[0], task.failure_text(0, int(info["failure"][0]))
+    expected = np.array(expected)
+    assert expected.max() - expected.min() > expected.mean() / 3  # the law is exercised over a range of winds
+    np.testing.assert_allclose(commanded, expected, rtol=0, atol=2e-5)
