@@ -87,7 +87,7 @@ def test_reselect_ranks_on_the_unrounded_rms_as_the_training(monkeypatch):
 
     res = {"run/step_50000": dict(survived=60, episodes=96, rms_lateral_m=0.61049, per_set={}, outcomes={}),
            "run/step_100000": dict(survived=60, episodes=96, rms_lateral_m=0.61001, per_set={}, outcomes={})}
-    monkeypatch.setattr(R, "candidates", lambda run: [(k, Path(k + ".zip"), Path("s.pkl")) for k in res])
+    monkeypatch.setattr(R, "candidates", lambda run, name=None: [(k, Path(k + ".zip"), Path("s.pkl")) for k in res])
     monkeypatch.setattr(R, "load_candidate", lambda m, s, e, kw: m.stem)
     monkeypatch.setattr(V, "validate", lambda ctrl, env, kw, val: res["run/" + ctrl])
     with pytest.warns(UserWarning, match="ntm_ib and ntm_ia"):

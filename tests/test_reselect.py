@@ -60,7 +60,8 @@ def test_reselect_matches_the_shipped_loader(tmp_path):
     assert (tmp_path / "rows.csv").read_text().splitlines()[0].startswith("label,survived,episodes")
 
 
-@pytest.mark.parametrize("first,second", [(43, 25), (0, 0), (5, 0), (3, 9), (12, 12)])
+@pytest.mark.parametrize("first,second", [(43, 25), (0, 0), (5, 0), (3, 9), (12, 12), (500, 524), (500, 600),
+                                          (3000, 3400)])
 def test_sign_test_matches_scipy(first, second):
     """harness/paired_survival.sign_test against scipy's exact binomial test (an independent implementation)."""
     from scipy.stats import binomtest
@@ -68,4 +69,99 @@ def test_sign_test_matches_scipy(first, second):
     from laddermill_gym.harness.paired_survival import sign_test
 
     expected = 1.0 if first + second == 0 else binomtest(first, first + second, 0.5).pvalue
-    assert sign_test(first, second) == pytest.approx(expected, rel=1e-12)
+    assert sign_test(first, second) == pytest.approx(expected, rel=1e-9)  # from 1024 pairs 2.0 ** n overflowed
+
+
+def _fake_flights(monkeypatch, survived):
+    """reselect's loading and flying replaced: a model file's policy is its run folder's parent's name, and it
+    survives ``survived[name]`` of 184 episodes."""
+    import laddermill_gym.harness.validation as hv
+    from laddermill_gym.harness import reselect as rs
+
+    monkeypatch.setattr(rs, "load_candidate", lambda model_file, *_a: model_file.parents[2].name)
+    monkeypatch.setattr(hv, "validate", lambda ctrl, *_a: dict(survived=survived[ctrl], episodes=184,
+                                                                rms_lateral_m=1.0, per_set={}, outcomes={}))
+
+
+def test_runs_of_one_name_keep_their_own_results(tmp_path, monkeypatch):
+    """Two run folders of the same name (old/ppo_seed0, new/ppo_seed0): each row carries its own run's result and
+    the better run is selected (a table written here); the same folder twice is refused."""
+    survived = {"old": 50, "new": 90}
+    runs = []
+    for parent in survived:
+        run = tmp_path / parent / "ppo_seed0"
+        (run / "checkpoints").mkdir(parents=True)
+        (run / "checkpoints" / "step_100.zip").write_bytes(b"")
+        (run / "vecnormalize.pkl").write_bytes(b"")
+        runs.append(run)
+    _fake_flights(monkeypatch, survived)
+    rows = reselect(CONFIG, runs, log=lambda _s: None)
+    assert [(r["label"], r["survived"], r["score"]) for r in rows] == [
+        (f"{runs[0]}/step_100", 50, 50), (f"{runs[1]}/step_100", 90, 90)]
+    assert [r["selected"] for r in rows] == [0, 1]
+    with pytest.raises(ValueError, match=r"--runs: .*ppo_seed0 is named twice"):
+        reselect(CONFIG, [runs[0], runs[0]], log=lambda _s: None)
+
+
+def test_a_run_that_normalises_itself_needs_no_statistics(tmp_path):
+    """A run trained with normalize_observations: false (the residual PPO and SAC policies) saves no
+    vecnormalize.pkl: its candidates are listed; with the default (true) the missing file is named."""
+    run = _run_folder(tmp_path, [8, 16])
+    (run / "vecnormalize.pkl").unlink()
+    for policy in ("ResidualSACPolicy", "ResidualPolicy"):
+        (run / "config.yaml").write_text(yaml.safe_dump({"policy": policy, "normalize_observations": False}))
+        assert [label for label, _m, _s in candidates(run)] == ["run/step_8", "run/step_16"]
+    (run / "config.yaml").write_text(yaml.safe_dump({"policy": "MlpPolicy"}))
+    with pytest.raises(FileNotFoundError, match=r"vecnormalize\.pkl: missing; run/step_8"):
+        candidates(run)
+
+
+def test_reselect_with_nothing_to_fly_is_a_usage_error(tmp_path, capsys):
+    from laddermill_gym.harness.reselect import main
+
+    with pytest.raises(SystemExit) as exit_:
+        main(["--config", CONFIG, "--out", str(tmp_path / "x.csv")])
+    assert exit_.value.code == 2 and "nothing to fly" in capsys.readouterr().err
+    with pytest.raises(SystemExit) as exit_:
+        main(["--config", CONFIG, "--runs", str(tmp_path / "nope")])
+    assert exit_.value.code == 2 and "nope: no checkpoints" in capsys.readouterr().err
+
+
+def test_held_out_seeds_that_the_selection_flies_are_refused():
+    """paired_survival's episodes on seeds the config's validation selects on (its ntm_ib set's own, and those of
+    a set with a turbulence of the same model: the same fields, scaled) are refused before any flight, naming the
+    sets; the seeds are compared here with the config file's numbers."""
+    from laddermill_gym.harness.paired_survival import paired_survival
+
+    val = yaml.safe_load(Path(CONFIG).read_text())["validation"]
+    first = val["seed"]
+    ntm = [name for name, vs in val["sets"].items() if any(d.get("model") == "NTM" for d in vs["disturbances"])]
+    assert set(ntm) == {"ntm_ib", "ntm_ia"} and all("seed" not in val["sets"][n] for n in ntm)
+    with pytest.raises(ValueError, match=rf"seeds {first + 5} .. {first + 14} are those the validation of .* selects "
+                                         rf"on \(ntm_ib \(seeds {first + 5} .. {first + 14}\), ntm_ia \(seeds "
+                                         rf"{first + 5} .. {first + 14}\)\): not held out"):
+        paired_survival(CONFIG, "ntm_ib", 10, first + 5, ["lqr", "open_loop"])
+
+
+def test_a_validation_on_a_benchmarks_episodes_is_refused(tmp_path):
+    """A config whose validation flies gusts-v1's own NTM_IB fields (its seeds, from the suite file read here, and
+    a turbulence of the same model) is refused by training and reselect before anything is built, naming the
+    file, the set, the scenario, the suites and the seeds; the shipped config (seeds 1000 on) is held out."""
+    from laddermill_gym.control.rl_config import load_rl_config
+    from laddermill_gym.harness.validation import benchmark_overlaps, check_held_out
+    from laddermill_gym.model.configio import ConfigError
+
+    suite = yaml.safe_load(Path("configs/benchmarks/gusts-v1.yaml").read_text())
+    scen = [s for s in suite["envs"]["laddermill_gym/TetheredWing-v0"]["scenarios"] if s["name"] == "NTM_IB"][0]
+    raw = yaml.safe_load(Path(CONFIG).read_text())
+    assert not benchmark_overlaps(load_rl_config(CONFIG))
+    raw["validation"]["seed"] = 1
+    shared = sorted(set(range(1, 1 + raw["validation"]["sets"]["ntm_ib"]["episodes"])) & set(scen["seeds"]))
+    assert shared == [1, 2]
+    path = tmp_path / "leak.yaml"
+    path.write_text(yaml.safe_dump(raw))
+    with pytest.raises(ConfigError, match=rf"leak\.yaml: field 'validation': .*validation set 'ntm_ib' flies scenario "
+                                          rf"NTM_IB of gusts-v1, gusts-v2, .* \(seeds \{shared}\)"):
+        check_held_out(load_rl_config(path))
+    with pytest.raises(ConfigError, match="a benchmark's episodes would select"):
+        reselect(path, [], reference=["open_loop"], log=lambda _s: None)

@@ -185,3 +185,34 @@ def test_train_seeds_checks_its_options_as_train_does(tmp_path, monkeypatch, cap
         train_seeds.main([PPO_CONFIG, "--seeds", "0", "--out-root", str(tmp_path), *options])
     assert err.value.code == 2
     assert capsys.readouterr().err.strip() == f"laddermill train-seeds: error: {expected}"
+
+
+def test_gradient_steps_zero_is_refused_and_minus_one_or_more_taken(tmp_path):
+    """SB3's off-policy algorithms skip the update when gradient_steps is 0 (``if gradient_steps > 0: train``), so a
+    run would train nothing: refused, naming the field; -1 (as many as env steps) and 1 are taken."""
+    with pytest.raises(ConfigError, match=r"cfg\.yaml: field 'hyperparameters\.gradient_steps' = 0: must be -1"):
+        load_rl_config(_config(tmp_path, SAC_CONFIG, {"gradient_steps": 0}))
+    for ok in (-1, 1):
+        assert load_rl_config(_config(tmp_path, SAC_CONFIG, {"gradient_steps": ok})).hyperparameters[
+            "gradient_steps"] == ok
+
+
+def test_a_sac_critic_warmup_needs_a_fixed_entropy_coefficient(tmp_path):
+    """With SAC's learned entropy coefficient (``ent_coef: auto``, its default) the warm-up's frozen actor keeps the
+    entropy's gradient of one sign, so log(alpha) drifts by about the learning rate per gradient step: refused,
+    naming the field and the value; the shipped residual configs' fixed 0.001 is taken."""
+    source = "configs/agents/sac_tethered_wing_residual_after_warmup.yaml"
+    data = yaml.safe_load(Path(source).read_text())
+    assert data["hyperparameters"]["ent_coef"] == 0.001 and "critic_warmup" in data
+    assert load_rl_config(source).critic_warmup is not None
+    for auto in ("auto", "auto_0.1", None):
+        hyper = dict(data["hyperparameters"])
+        if auto is None:
+            hyper.pop("ent_coef")
+        else:
+            hyper["ent_coef"] = auto
+        path = tmp_path / "cfg.yaml"
+        path.write_text(yaml.safe_dump(dict(data, hyperparameters=hyper)))
+        with pytest.raises(ConfigError, match=rf"cfg\.yaml: field 'critic_warmup' = .*fixed hyperparameters\.ent_coef "
+                                              rf"\(got '{auto or 'auto'}'\)"):
+            load_rl_config(path)

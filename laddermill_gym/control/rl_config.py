@@ -252,6 +252,8 @@ def read_hyperparameters(s: Section, algo: str, n_envs: int | None, total: int |
             "handle_timeout_termination", True):  # SB3's ReplayBuffer refuses the two together
         raise hp.error("optimize_memory_usage", True, "needs replay_buffer_kwargs: {handle_timeout_termination: "
                        "false} (SB3's ReplayBuffer does not support both)")
+    if out.get("gradient_steps") == 0:  # SB3 then skips every update
+        raise hp.error("gradient_steps", 0, "must be -1 (as many as env steps) or at least 1: 0 would train nothing")
     if algo == "PPO" and out.get("batch_size", 64) < 2:  # SB3's PPO asserts it (its advantages are normalised)
         raise hp.error("batch_size", out["batch_size"], "must be at least 2 (PPO normalises a minibatch's advantages)")
     return out
@@ -371,6 +373,9 @@ def load_rl_config(path: str | Path) -> RLConfig:
                       "(SB3's PPO squashes only gSDE actions)")
     init_from = read_init_from(s, algo, pk, cfg["normalize_observations"], cfg["policy"])
     phases = dict(critic_warmup=read_critic_warmup(s, init_from, cfg["total_timesteps"]), validation=read_validation(s))
+    if phases["critic_warmup"] is not None and algo == "SAC" and str(hyper.get("ent_coef", "auto")).startswith("auto"):
+        raise s.error("critic_warmup", s.raw("critic_warmup"), "with SAC needs a fixed hyperparameters.ent_coef (got "
+                      f"{hyper.get('ent_coef', 'auto')!r}): the learned one would drift while the actor is frozen")
     val = phases["validation"]
     if val is not None:  # its episodes fly the training's control period: a whole number of them (else at once)
         why = episode_argument_error(env_id, dict(cfg["env_kwargs"], episode_time=val.episode_time))

@@ -23,8 +23,8 @@ __all__ = ["affine_map", "observation_statistics", "warm_start", "start_residual
            "INIT_STEPS", "CLIP_OBS"]
 
 #: The observation variance of the controller's rollouts is multiplied by this [-] (std x 2) before it becomes the
-#: normalisation's: the normalised observation is clipped to +-10, so excursions up to 20 of the rollouts' standard
-#: deviations (the large gusts the LQR meets in evaluation) still reach the actor unclipped.
+#: normalisation's: with the normalised observation clipped to +-CLIP_OBS (100), excursions up to 200 of the
+#: rollouts' standard deviations (the large gusts the LQR meets in evaluation) still reach the actor unclipped.
 VAR_INFLATION = 4.0
 #: The clip of the normalised observation [-] (SB3's VecNormalize default 10): with 10 the started policy left the
 #: LQR where the turbulence of gusts-v1's NTM_IB moved the wing 65 m sideways (more than 10 of the rollouts'

@@ -17,6 +17,7 @@ step, ``envs.same_task``).
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 import numpy as np
 
@@ -31,8 +32,8 @@ def sign_test(only_first: int, only_second: int) -> float:
         raise ValueError(f"sign_test: counts must be >= 0, got {only_first}, {only_second}")
     if n == 0:
         return 1.0
-    tail = sum(math.comb(n, i) for i in range(k + 1)) / 2.0 ** n
-    return min(1.0, 2.0 * tail)
+    tail = Fraction(sum(math.comb(n, i) for i in range(k + 1)), 2 ** n)  # exact: 2.0 ** n overflows from n = 1024
+    return float(min(Fraction(1), 2 * tail))
 
 
 def paired_survival(config: str, set_name: str, episodes: int, seed: int, controllers: list[str],
@@ -44,6 +45,7 @@ def paired_survival(config: str, set_name: str, episodes: int, seed: int, contro
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.rl_config import load_rl_config
     from laddermill_gym.envs import same_task
+    from laddermill_gym.harness.validation import selection_overlaps
     from laddermill_gym.studies.gusts.gust_bench import run_episodes
 
     if len(controllers) != 2:
@@ -62,6 +64,10 @@ def paired_survival(config: str, set_name: str, episodes: int, seed: int, contro
                          f"{2 ** 32 - 1} (numpy's seed range)")
     kw = cfg.carried_env_kwargs()
     seeds = list(range(seed, seed + episodes))
+    selected_on = selection_overlaps(cfg.validation, set_name, seeds)
+    if selected_on:
+        raise ValueError(f"seed = {seed}: the episodes' seeds {seed} .. {seed + episodes - 1} are those the "
+                         f"validation of {config} selects on ({', '.join(selected_on)}): not held out")
     built = {spec: make_controller(spec, env, kw) for spec in controllers}  # both before any episode: a bad spec
     alive = {}                                                               # fails at once
     for spec in controllers:

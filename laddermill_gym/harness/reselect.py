@@ -26,32 +26,46 @@ import re
 import time
 from pathlib import Path
 
-__all__ = ["candidates", "load_candidate", "reselect", "main"]
+__all__ = ["candidates", "load_candidate", "reselect", "run_names", "main"]
 
 _STEP = re.compile(r"step_(\d+)\.zip$")
 
 
-def candidates(run: Path) -> list[tuple[str, Path, Path]]:
+def candidates(run: Path, name: str | None = None) -> list[tuple[str, Path, Path]]:
     """(label, model file, statistics file) of every policy saved in the training run folder ``run``: its
-    checkpoints in step order, ``best_model.zip`` and ``model.zip``. FileNotFoundError naming the folder when it
-    holds none or lacks the statistics a model needs."""
+    checkpoints in step order, ``best_model.zip`` and ``model.zip``, labelled ``<name>/<stem>`` (``name``: the
+    folder's name by default). FileNotFoundError naming the folder when it holds none or lacks the statistics a
+    model needs (a run trained with ``normalize_observations: false``, whose policy normalises itself, has none)."""
     run = Path(run)
+    name = run.name if name is None else name
     found = []
     ckpts = sorted((run / "checkpoints").glob("step_*.zip"), key=lambda p: int(_STEP.search(p.name).group(1)))
     for p in ckpts:  # the statistics saved with the checkpoint; a run from before 2026-12-06 saved only its last
         own = p.with_name(p.stem + "_vecnormalize.pkl")
-        found.append((f"{run.name}/{p.stem}", p, own if own.is_file() else run / "vecnormalize.pkl"))
-    for name, stats in (("best_model.zip", "best_vecnormalize.pkl"), ("model.zip", "vecnormalize.pkl")):
-        if (run / name).is_file():
-            found.append((f"{run.name}/{Path(name).stem}", run / name, run / stats))
+        found.append((f"{name}/{p.stem}", p, own if own.is_file() else run / "vecnormalize.pkl"))
+    for file, stats in (("best_model.zip", "best_vecnormalize.pkl"), ("model.zip", "vecnormalize.pkl")):
+        if (run / file).is_file():
+            found.append((f"{name}/{Path(file).stem}", run / file, run / stats))
     if not found:
         raise FileNotFoundError(f"{run}: no checkpoints/step_*.zip, best_model.zip or model.zip (a training run "
                                 "folder of laddermill train?)")
-    residual = _config_policy(run / "config.yaml") == "ResidualPolicy"  # it normalises itself: no statistics file
-    for label, _model, stats in found:
-        if not stats.is_file() and not residual:
-            raise FileNotFoundError(f"{stats}: missing; {label} needs its observation statistics")
+    if _config_field(run / "config.yaml", "normalize_observations", True) is not False:
+        for label, _model, stats in found:
+            if not stats.is_file():
+                raise FileNotFoundError(f"{stats}: missing; {label} needs its observation statistics")
     return found
+
+
+def run_names(runs: list[str | Path]) -> list[str]:
+    """A label prefix per run folder: its name, or where two runs share a name, the path as given (ValueError
+    for a folder named twice)."""
+    paths = [Path(r) for r in runs]
+    resolved = [p.resolve() for p in paths]
+    for i, r in enumerate(resolved):
+        if r in resolved[:i]:
+            raise ValueError(f"--runs: {paths[i]} is named twice (as {paths[resolved.index(r)]})")
+    names = [p.name for p in paths]
+    return [p.name if names.count(p.name) == 1 else str(p) for p in paths]
 
 
 def load_candidate(model_file: Path, stats: Path, env_id: str, env_kwargs: dict):
@@ -65,12 +79,12 @@ def load_candidate(model_file: Path, stats: Path, env_id: str, env_kwargs: dict)
     return load_policy(model_file, env_id, env_kwargs, statistics=stats, exact=False)
 
 
-def _config_policy(config: Path) -> str | None:
-    """The ``policy`` of a run folder's ``config.yaml`` (None without the file or the field)."""
+def _config_field(config: Path, field: str, default):
+    """A top-level field of a run folder's ``config.yaml`` (``default`` without the file or the field)."""
     import yaml
 
     data = yaml.safe_load(config.read_text()) if config.is_file() else None
-    return data.get("policy") if isinstance(data, dict) else None
+    return data.get(field, default) if isinstance(data, dict) else default
 
 
 def reselect(config: str | Path, runs: list[str | Path], reference: list[str] = (), out: str | Path | None = None,
@@ -82,43 +96,53 @@ def reselect(config: str | Path, runs: list[str | Path], reference: list[str] = 
     rule, and ``score``). Written to ``out`` (CSV) when given."""
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.rl_config import load_rl_config
-    from laddermill_gym.harness.validation import lost_to_reference, score, validate, warn_shared_fields
+    from laddermill_gym.harness.validation import (
+        check_held_out,
+        lost_to_reference,
+        score,
+        validate,
+        warn_shared_fields,
+    )
 
+    if not runs and not reference:
+        raise ValueError("nothing to fly: name training run folders (--runs) or reference controllers (--reference)")
     cfg = load_rl_config(config)
     if cfg.validation is None:
         raise ValueError(f"{config}: no validation section (the sets to select on)")
+    check_held_out(cfg)
     warn_shared_fields(cfg)
     kw = cfg.carried_env_kwargs()
     sel = cfg.validation.selection
     reference = list(reference) + ([sel.reference] if sel.rule == "paired" and sel.reference not in reference else [])
     jobs = [(spec, None, None) for spec in reference]
-    for run in runs:
-        jobs += candidates(Path(run))
+    for run, name in zip(runs, run_names(runs), strict=True):
+        jobs += candidates(Path(run), name)
     loaded = []
     for label, model_file, stats in jobs:  # every one loaded and checked before any flies (a bad file fails at once)
         t0 = time.process_time()
         ctrl = make_controller(label, cfg.env_id, kw) if model_file is None else \
             load_candidate(model_file, stats, cfg.env_id, kw)
         loaded.append((label, ctrl, model_file is None, time.process_time() - t0))
-    rows, results = [], {}
+    rows, results = [], []  # results[i]: row i's, as validated
     for label, ctrl, is_reference, load_s in loaded:
         t0 = time.process_time() - load_s
-        res = results[label] = validate(ctrl, cfg.env_id, kw, cfg.validation)
+        res = validate(ctrl, cfg.env_id, kw, cfg.validation)
+        results.append(res)
         rows.append(dict(label=label, survived=res["survived"], episodes=res["episodes"], per_set=res["per_set"],
                          rms_lateral_m=round(res["rms_lateral_m"], 3), cpu_s=round(time.process_time() - t0, 1),
                          reference=int(is_reference), selected=0))
         log(f"{label}: {res['survived']}/{res['episodes']} {res['per_set']} RMS lateral "
             f"{res['rms_lateral_m']:.2f} m ({rows[-1]['cpu_s']} CPU s)")
-    ranked = {}  # label -> the result as scored: the raw RMS (the rows show it rounded), as the training ranks
-    for r in rows:
-        res = results[r["label"]]
-        r["lost_to_reference"] = lost_to_reference(res, results[sel.reference]) if sel.rule == "paired" else ""
-        ranked[r["label"]] = dict(res, lost_to_reference=r["lost_to_reference"])
-        r["score"] = score(ranked[r["label"]], sel)[0]
+    paired_with = results[reference.index(sel.reference)] if sel.rule == "paired" else None
+    ranked = []  # row i's result as scored: the raw RMS (the rows show it rounded), as the training ranks
+    for r, res in zip(rows, results, strict=True):
+        r["lost_to_reference"] = lost_to_reference(res, paired_with) if sel.rule == "paired" else ""
+        ranked.append(dict(res, lost_to_reference=r["lost_to_reference"]))
+        r["score"] = score(ranked[-1], sel)[0]
         r["selected"] = r.pop("selected")  # the last column
-    policies = [r for r in rows if not r["reference"]]
+    policies = [i for i, r in enumerate(rows) if not r["reference"]]
     if policies:  # the first of equal scores, in step order: the training keeps a later one only if it is better
-        best = max(policies, key=lambda r: score(ranked[r["label"]], sel))
+        best = rows[max(policies, key=lambda i: score(ranked[i], sel))]
         best["selected"] = 1
         log(f"selected: {best['label']} ({best['survived']}/{best['episodes']}"
             + (f", {best['lost_to_reference']} lost that {sel.reference} holds, score {best['score']:g}"
@@ -139,7 +163,10 @@ def main(argv: list[str] | None = None) -> None:
     p.add_argument("--reference", nargs="*", default=[], help="controllers flown as references (lqr, ...)")
     p.add_argument("--out", default=None, help="CSV of the rows")
     a = p.parse_args(argv)
-    reselect(a.config, a.runs, a.reference, a.out)
+    try:
+        reselect(a.config, a.runs, a.reference, a.out)
+    except (ValueError, OSError) as e:
+        p.error(str(e))
 
 
 if __name__ == "__main__":

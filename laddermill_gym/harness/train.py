@@ -6,9 +6,10 @@
 The run folder gets: ``config.yaml`` (the config used), ``algorithm.txt``, ``run.yaml`` (the command line, seed,
 torch threads and package versions: :mod:`~laddermill_gym.harness.run_record`), TensorBoard logs (``tb/``),
 checkpoints (``checkpoints/``), ``evaluations.csv`` (deterministic returns on the registered evaluation
-scenario, seeds 0 .. n - 1, against wall time and env steps), ``best_model.zip`` (best evaluation) with
-``best_vecnormalize.pkl``, ``model.zip`` (last) with ``vecnormalize.pkl`` (observation statistics) and
-``training_curve.png`` (with the LQR and open-loop returns on the same episodes, also in ``references.csv``).
+scenario, seeds 0 .. n - 1, against wall time and env steps), ``best_model.zip`` (the best evaluation; with a
+``validation`` section, the policy that validated best) with ``best_vecnormalize.pkl``, ``model.zip`` (last) with
+``vecnormalize.pkl`` (observation statistics) and ``training_curve.png`` (with the LQR and open-loop returns on
+the same episodes, also in ``references.csv``).
 Training stops at ``total_timesteps`` or ``time_limit_minutes``, whichever comes first. A progress bar shows
 steps, episodes and the latest evaluation. Every environment (the wings and Rotorcraft-v0,
 configs/agents/ppo_rotorcraft.yaml) trains and evaluates on its batched kernel (:mod:`laddermill_gym.envs.sb3`,
@@ -276,12 +277,14 @@ def train(cfg: RLConfig, out: Path, threads: int | None = None, command: list[st
     import torch
 
     from laddermill_gym.harness.run_record import write_run_record
+    from laddermill_gym.harness.validation import check_held_out
 
     torch.set_num_threads(torch_threads(threads))
     held = [f for f in RUN_FILES if (out / f).exists()]
     if held:  # a second run there would mix its files with the first's (statistics included)
         raise FileExistsError(f"{out}: holds a training run already ({', '.join(held)}); give another --out or "
                               "delete it")
+    check_held_out(cfg)  # a validation on a benchmark's own episodes is refused before anything is built
     model, venv, eval_env = build_model(cfg, out)
     out.mkdir(parents=True, exist_ok=True)
     (out / "checkpoints").mkdir(exist_ok=True)

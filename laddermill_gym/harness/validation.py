@@ -21,7 +21,8 @@ import time
 import numpy as np
 
 __all__ = ["TrainingPhases", "freeze_actor", "set_learning_rate", "validate", "set_seeds", "shared_fields",
-           "warn_shared_fields", "score", "lost_to_reference", "VALIDATION_FIELDS"]
+           "warn_shared_fields", "benchmark_overlaps", "check_held_out", "selection_overlaps", "score",
+           "lost_to_reference", "VALIDATION_FIELDS"]
 
 #: columns of a run's ``validation.csv``
 VALIDATION_FIELDS = ("steps", "minutes", "survived", "episodes", "rms_lateral_m", "per_set", "lost_to_reference",
@@ -90,6 +91,61 @@ def shared_fields(validation) -> list[tuple[str, str, str]]:
         for b in sets[i + 1:]:
             if set(set_seeds(validation, a)) & set(set_seeds(validation, b)):
                 out += [(a.name, b.name, m) for m in sorted(_turbulence_models(a) & _turbulence_models(b))]
+    return out
+
+
+def benchmark_overlaps(cfg) -> list[str]:
+    """What of ``cfg``'s validation flies a shipped gust suite's episodes (a test set selected on): for every set
+    and every scenario of the suites (``configs/benchmarks``) for an id of the config's task, the seeds both use
+    where the two have the same disturbances or a turbulence of the same model (the same seed draws the same field
+    of a model, scaled). Each entry names the set, the scenario, the suites that hold it and the seeds."""
+    from laddermill_gym.envs import same_task
+    from laddermill_gym.studies.gusts.gust_suite import SHIPPED_SHA256, load_suite
+
+    if cfg.validation is None:
+        return []
+    found: dict[tuple, list[str]] = {}  # (set, scenario, seeds) -> the suites
+    for name in SHIPPED_SHA256:
+        suite = load_suite(name)
+        for env_id, (_kw, scenarios) in suite.envs.items():
+            if not same_task(env_id, cfg.env_id):
+                continue
+            for vs in cfg.validation.sets:
+                for sc in scenarios:
+                    same = [dict(d) for d in sc.disturbances] == [dict(d) for d in vs.disturbances] or \
+                        _turbulence_models(vs) & {str(d.get("model")) for d in sc.disturbances
+                                                  if d.get("type") == "Turbulence"}
+                    common = sorted(set(set_seeds(cfg.validation, vs)) & set(sc.seeds))
+                    if same and common:
+                        suites = found.setdefault((vs.name, sc.name, tuple(common)), [])
+                        suites += [name] if name not in suites else []
+    return [f"validation set {v!r} flies scenario {sc} of {', '.join(suites)} (seeds {list(seeds)})"
+            for (v, sc, seeds), suites in found.items()]
+
+
+def check_held_out(cfg) -> None:
+    """ConfigError naming ``cfg``'s file and its validation sets that fly a shipped gust suite's episodes
+    (:func:`benchmark_overlaps`): a benchmark is the test, never a selection's data."""
+    from laddermill_gym.model.configio import ConfigError
+
+    found = benchmark_overlaps(cfg)
+    if found:
+        raise ConfigError(f"{cfg.file}: field 'validation': " + "; ".join(found) + ": a benchmark's episodes would "
+                          "select the policy it then scores (give the validation or the set another seed)")
+
+
+def selection_overlaps(validation, set_name: str, seeds) -> list[str]:
+    """The validation sets of ``validation`` (a config's) that fly any of ``seeds`` on the set ``set_name``'s fields:
+    that set itself, and those with a turbulence of one of its models (the same fields, scaled); each entry names
+    the set and the first and last seed shared."""
+    sets = {vs.name: vs for vs in validation.sets}
+    models = _turbulence_models(sets[set_name])
+    out = []
+    for vs in validation.sets:
+        if vs.name == set_name or models & _turbulence_models(vs):
+            common = sorted(set(set_seeds(validation, vs)) & set(seeds))
+            if common:
+                out.append(f"{vs.name} (seeds {common[0]} .. {common[-1]})")
     return out
 
 
