@@ -232,6 +232,34 @@ def test_the_factory_warns_of_a_mill_design_unstable_over_the_period(small_mill)
     assert np.log(said) == pytest.approx(np.log(rho), rel=1e-3)
 
 
+# ------------------------------------------------------------------ the chain's decentralised design (review 2026-12-07)
+def test_the_factory_warns_of_a_decentralised_chain_design_the_coupled_chain_does_not_hold():
+    """The default chain LQR (lqr_ladder_chain.yaml, decentralised) is stable on each wing's own lateral block but
+    not on the whole chain's coupled lateral model: gains designed here with scipy on the full model's diagonal
+    6 x 6 blocks, closing the full model (ZOH with scipy's expm), give max |z| > 1, the figure the factory's warning
+    states; the centralised config builds without a warning."""
+    import warnings
+
+    with pytest.warns(UnstableDesignWarning, match=r"decentralised design on .*LadderChain-v0's chain does not hold "
+                                                   r"the full coupled lateral model") as seen:
+        make_controller("lqr", "laddermill_gym/LadderChain-v0")
+    said = float(str(seen[0].message).split("max |z| ")[1].split(" ")[0])
+    cfg = load_lqr_config(CONFIG_DIR / "agents" / "lqr_ladder_chain.yaml")
+    sc = load_scene(cfg.scene)
+    x, u = sc.initial_state()
+    A, B, _, _ = lateral_subsystem(linearize(sc.simulator(x, u), x, u))
+    Q, R = bryson_weights(cfg.max_state, cfg.max_input)
+    K = sla.block_diag(*[_dlqr(A[6 * k:6 * k + 6, 6 * k:6 * k + 6], B[6 * k:6 * k + 6, 2 * k:2 * k + 2], Q, R,
+                               cfg.control_period) for k in range(sc.assembly.n_wings)])
+    Ad, Bd = _zoh(A, B, cfg.control_period)
+    rho = float(np.max(np.abs(np.linalg.eigvals(Ad - Bd @ K))))
+    assert rho > 1.0 and said == pytest.approx(rho, abs=2e-4)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", UnstableDesignWarning)
+        make_controller("lqr:" + str(CONFIG_DIR / "agents" / "lqr_ladder_chain_central.yaml"),
+                        "laddermill_gym/LadderChain-v0")
+
+
 # ------------------------------------------------------------------ the craft's design, printed (review C, R3)
 def test_laddermill_lqr_prints_the_default_crafts_eq6_design(capsys):
     """``laddermill lqr --config lqr_rotorcraft``: eq. (6)'s blocks of the default craft (two elements per tether),
@@ -261,3 +289,28 @@ def test_laddermill_lqr_prints_the_default_crafts_eq6_design(capsys):
     check = derive_roll_lateral(straight_tether_variant(load_craft()).simulator())
     np.testing.assert_allclose(np.diag(blocks["K"]) / np.diag(check.K), 2.0, rtol=0.02)
     assert blocks["K"][0, 1] == pytest.approx(check.K[0, 1], rel=1e-3)
+
+
+# ------------------------------------------------------------------ the craft's gain on the whole craft (review 2026-12-07)
+def test_the_craft_gain_is_checked_on_the_whole_crafts_linear_model():
+    """Eq. (6) leaves out the tethers' nodes: the design also closes its gain on the simulator's whole linear model
+    (30 states on the default craft's two-element tethers). Oracle: the gain placed on the named minimal states
+    (wing0_y, wing0_phi, wing0_vy, wing0_p: eq. (6)'s y, phi, y', p at a level trim), ZOH with scipy's expm; the
+    loop is stable but less damped than eq. (6)'s own; a gain of the wrong sign is refused naming the craft."""
+    from laddermill_gym.control.craft_lqr import design_craft_lqr, full_craft_check
+    from laddermill_gym.kernels.contract import CU_DIFFERENTIAL
+
+    d = design_craft_lqr()
+    lin = linearize(d.sim, d.x_trim, d.u_trim)
+    n = lin.A.shape[0]
+    K = np.zeros((lin.B.shape[1], n))
+    K[CU_DIFFERENTIAL, [lin.state_names.index(f"wing0_{s}") for s in ("y", "phi", "vy", "p")]] = d.gain
+    Ad, Bd = _zoh(lin.A, lin.B, d.config.control_period)
+    rho = float(np.max(np.abs(np.linalg.eigvals(Ad - Bd @ K))))
+    assert n == 30 and d.full_closed_loop.size == n
+    assert float(np.max(np.abs(d.full_closed_loop))) == pytest.approx(rho, abs=1e-6)
+    assert np.max(np.abs(d.lqr.closed_loop)) < rho < 1.0
+    assert d.trim_residual == pytest.approx(lin.residual) and d.trim_residual < 1e-6
+    with pytest.raises(ValueError, match=r"craft .*: the gain designed on eq\. \(6\) leaves the whole craft's linear "
+                                         r"model \(30 states\) unstable"):
+        full_craft_check(d.sim, -d.gain, d.config.control_period)

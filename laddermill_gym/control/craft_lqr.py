@@ -66,7 +66,10 @@ def load_craft_lqr_config(path: str | Path = DEFAULT_CRAFT_LQR) -> CraftLQRConfi
 
 @dataclass(frozen=True)
 class CraftLQRDesign:
-    """The design: eq. (6) at the trim, the discrete LQR on it, the trim (x, u) and its simulator."""
+    """The design: eq. (6) at the trim, the discrete LQR on it, the trim (x, u) and its simulator;
+    ``full_closed_loop``: the discrete closed-loop eigenvalues of the gain on the whole craft's linear model (every
+    state of the simulator, tether nodes included, :func:`full_craft_check`), ``trim_residual`` max |dz/dt| of
+    that model's linearisation at the trim (0 at an exact trim)."""
 
     config: CraftLQRConfig
     model: RollLateralModel
@@ -74,6 +77,8 @@ class CraftLQRDesign:
     x_trim: np.ndarray
     u_trim: np.ndarray
     sim: Any
+    full_closed_loop: np.ndarray
+    trim_residual: float
 
     @property
     def gain(self) -> np.ndarray:
@@ -105,7 +110,42 @@ def design_craft_lqr(config: CraftLQRConfig | str | Path = DEFAULT_CRAFT_LQR, cr
     A, B = model.state_space()
     Q, R = bryson_weights(cfg.max_state, np.array([cfg.max_input]))
     lqr = discrete_lqr(A, B, Q, R, cfg.control_period)
-    return CraftLQRDesign(cfg, model, lqr, sim.state.copy(), sim.controls.copy(), sim)
+    full, residual = full_craft_check(sim, lqr.K[0], cfg.control_period)
+    return CraftLQRDesign(cfg, model, lqr, sim.state.copy(), sim.controls.copy(), sim, full, residual)
+
+
+def full_craft_check(sim, gain: np.ndarray, dt: float, h: float = 1e-6) -> tuple[np.ndarray, float]:
+    """(discrete closed-loop eigenvalues, trim residual [state units/s]) of eq. (6)'s ``gain`` (4,) on the whole
+    craft's linear model at the simulator's state and controls (its trim): every minimal coordinate linearised
+    (:func:`~laddermill_gym.control.linearize.linearize`), the gain applied to eq. (6)'s state as a linear map of them
+    (central differences of :func:`lateral_state`, step ``h``), ZOH at ``dt`` [s]. Eq. (6) leaves out the tether's
+    nodes and couplings, so its own closed loop does not show this one's stability; ValueError naming the craft
+    where the gain leaves it unstable (max |z| >= 1)."""
+    import control
+
+    from laddermill_gym.control.linearize import full_from_minimal, linearize, minimal_from_full
+
+    x0, asm = sim.state.copy(), sim.assembly
+    lin = linearize(sim, x0, sim.controls.copy())
+    z0, tail = minimal_from_full(asm, x0), x0[asm.body_state_size:]
+    n = lin.A.shape[0]
+    L = np.zeros((4, n))  # d (y, phi, y', p) / d (minimal coordinates, then the rest of the state)
+    for j in range(n):
+        zp, zm, tp, tm = z0.copy(), z0.copy(), tail.copy(), tail.copy()
+        if j < z0.size:
+            zp[j], zm[j] = z0[j] + h, z0[j] - h
+        else:
+            tp[j - z0.size], tm[j - z0.size] = tail[j - z0.size] + h, tail[j - z0.size] - h
+        L[:, j] = (lateral_state(full_from_minimal(asm, zp, tp), x0)
+                   - lateral_state(full_from_minimal(asm, zm, tm), x0)) / (2.0 * h)
+    K = np.zeros((lin.B.shape[1], n))
+    K[CU_DIFFERENTIAL] = np.asarray(gain, float) @ L
+    sysd = control.c2d(control.ss(lin.A, lin.B, np.eye(n), np.zeros(lin.B.shape)), dt, "zoh")
+    eig = np.linalg.eigvals(np.asarray(sysd.A) - np.asarray(sysd.B) @ K)
+    if not np.max(np.abs(eig)) < 1.0:
+        raise ValueError(f"craft {sim.config.name}: the gain designed on eq. (6) leaves the whole craft's linear "
+                         f"model ({n} states) unstable: closed loop max |z| = {np.max(np.abs(eig)):.5f}")
+    return eig, float(lin.residual)
 
 
 class CraftLQRController:

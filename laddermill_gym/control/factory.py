@@ -21,6 +21,8 @@ from __future__ import annotations
 import warnings
 from pathlib import Path
 
+import numpy as np
+
 from laddermill_gym.control.base import Controller
 from laddermill_gym.envs import ENV_IDS, registered_arguments, task_class
 from laddermill_gym.envs.task import scene_trim
@@ -107,7 +109,6 @@ def _mill_controller(spec: str, kw: dict, env_id: str) -> Controller:
     :data:`DEFAULT_LQR_CONFIGS`; needs the operating point), built with an :class:`UnstableDesignWarning` naming the
     radius when its closed loop grows over the period (the transition matrix's spectral radius >= 1)."""
     if spec == "open_loop":
-        import numpy as np
 
         from laddermill_gym.control.open_loop import OpenLoopController
         from laddermill_gym.envs.laddermill.actions import action_count
@@ -143,15 +144,32 @@ def _mill_controller(spec: str, kw: dict, env_id: str) -> Controller:
 
 
 class UnstableDesignWarning(UserWarning):
-    """A mill LQR whose closed loop grows over the orbit's period (Floquet: the transition matrix's spectral radius
-    is 1 or more): flown as asked (a small test mill, a study of a design that fails), said once per build."""
+    """An LQR whose closed loop grows: a mill's over the orbit's period (Floquet: the transition matrix's spectral
+    radius is 1 or more), a decentralised chain design's on the full coupled lateral model (max |z| of its discrete
+    closed loop 1 or more); flown as asked (a small test mill, a study of a design that fails), said once per
+    build."""
+
+
+def _warn_unstable_chain(design, path: Path, env_id: str) -> None:
+    """UnstableDesignWarning where a decentralised chain ``design`` leaves the chain's full coupled lateral model
+    unstable (:func:`~laddermill_gym.control.lqr.chain_closed_loop`: the whole chain linearised, ZOH at the
+    control period, the per-wing gains block-diagonal)."""
+    from laddermill_gym.control.lqr import chain_closed_loop
+
+    full = float(np.max(np.abs(chain_closed_loop(design)[1])))
+    if not full < 1.0:
+        blocks = float(np.max(np.abs(design.closed_loop)))
+        warnings.warn(f"{path}: its decentralised design on {env_id}'s chain does not hold the full coupled lateral "
+                      f"model: closed loop max |z| {full:.4f} (>= 1; on the per-wing blocks it was designed on "
+                      f"{blocks:.4f}); a centralised design (structure: centralised, lqr_ladder_chain_central.yaml) "
+                      f"holds the default chain; laddermill lqr --config {path} --full-check prints the check",
+                      UnstableDesignWarning, stacklevel=4)
 
 
 def _pumping_controller(spec: str, kw: dict, task_cls: type) -> Controller:
     """PumpingKite-v0 and -v1: ``open_loop`` (the zero action: reel-out trim, winch stopped), ``scripted`` (the cycle
     with rudder and aileron at trim) or ``lqr`` / ``lqr:<config>`` (the cycle with the wing's lateral LQR; default
     config ``lqr_tethered_wing.yaml``, designed on the pumping scene: ``control.pumping_cycle``)."""
-    import numpy as np
 
     from laddermill_gym.control.pumping_cycle import PumpingCycleController, lateral_lqr
     task = task_cls(1, **{k: v for k, v in kw.items() if k != "parallel"})
@@ -180,7 +198,6 @@ def _pointmass_controller(spec: str, kw: dict) -> Controller:
         raise ValueError(f"controller {spec!r} is not available for the point-mass fidelity (its kites have no tail "
                          "surfaces and no rotational dynamics to design an LQR on): use 'open_loop' or a trained "
                          "policy")
-    import numpy as np
 
     from laddermill_gym.control.open_loop import OpenLoopController
     from laddermill_gym.envs.pointmass.task import PointMassTask
@@ -231,8 +248,12 @@ def make_controller(spec: str, env_id: str, env_kwargs: dict | None = None) -> C
                              f"control_dt = {kw['control_dt']} s")
         # the config gives the weights and the period; the design is made on the environment's own scene (a
         # custom file or overrides included)
-        design = design_tethered_wing if sc.assembly.n_wings == 1 else design_ladder_chain
-        return design(cfg, sc, (x_trim.copy(), u_trim.copy())).controller()
+        if sc.assembly.n_wings == 1:
+            return design_tethered_wing(cfg, sc, (x_trim.copy(), u_trim.copy())).controller()
+        design = design_ladder_chain(cfg, sc, (x_trim.copy(), u_trim.copy()))
+        if cfg.structure != "centralised":  # the per-wing blocks' stability says nothing of the coupled chain
+            _warn_unstable_chain(design, path, env_id)
+        return design.controller()
     from laddermill_gym.control.shipped_policies import SHIPPED_POLICIES, shipped_policy_path
 
     path = shipped_policy_path(spec) if spec in SHIPPED_POLICIES else Path(spec)

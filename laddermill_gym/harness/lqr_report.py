@@ -39,6 +39,7 @@ def report_single(design) -> str:
     lq = design.lqr
     rows = [f"scene {design.scene.name}: lateral model {len(LATERAL_STATE_NAMES)} states "
             f"({', '.join(LATERAL_STATE_NAMES)}), inputs (rudder, aileron)",
+            f"trim residual max |dz/dt| = {design.linearization.residual:.3g} (state units per s; 0 at an exact trim)",
             "coupling of the lateral and longitudinal blocks at trim (relative norms): "
             + ", ".join(f"{k} {v:.2e}" for k, v in design.coupling.items()),
             "open-loop lateral modes (continuous):", mode_table(lq.open_loop),
@@ -99,7 +100,8 @@ def _is_craft_config(path) -> bool:
 
 def report_craft(path) -> str:
     """The craft's eq. (6) LQR (``control.craft_lqr``): the blocks M, D, K and (alpha, beta) of the config's craft at
-    its trim in the config's wind, eq. (6)'s modes, the gain and the discrete closed loop."""
+    its trim in the config's wind, eq. (6)'s modes, the gain, the discrete closed loop, and the gain's closed loop on
+    the whole craft's linear model with that model's trim residual."""
     from laddermill_gym.control.craft_lqr import design_craft_lqr
 
     d = design_craft_lqr(path)
@@ -116,7 +118,10 @@ def report_craft(path) -> str:
             "eq. (6)'s modes (continuous):", mode_table(lq.open_loop),
             f"gain K (rad per unit state, columns (y, phi, vy, p)): {block(lq.K[0])}",
             f"closed-loop modes (discrete, ZOH at {lq.dt} s): max |z| = {np.max(np.abs(lq.closed_loop)):.5f}",
-            mode_table(lq.closed_loop, lq.dt)]
+            mode_table(lq.closed_loop, lq.dt),
+            f"on the whole craft's linear model ({d.full_closed_loop.size} states, the tethers' nodes included): "
+            f"max |z| = {np.max(np.abs(d.full_closed_loop)):.5f}; its trim residual max |dz/dt| = "
+            f"{d.trim_residual:.3g} (state units per s)"]
     return "\n".join(rows)
 
 
