@@ -59,7 +59,8 @@ MOVING_CABLE = Covered(
         (rf"smallest mean tension {N} kN at the top of the loop \(slot (\d+)\), the first element at {N} kN and the "
          rf"last at {N} kN", tuple(("~" if k.endswith("kN") else "") + RG % k
                                    for k in ("min_kN", "min_element", "first_kN", "last_kN"))),
-        (rf"\(open-loop growth {N}-{N} 1/s\)", ("~" + LQ % "growth_min", "~" + LQ % "growth")),
+        (rf"\(open-loop growth {N}-{N} 1/s at the phases checked below\)",
+         ("~" + LQ % "growth_min", "~" + LQ % "growth")),
         (rf"max \|z\| between {N} and {N} \(two phases, s / l0 = {N} and {N}, have",
          ("~" + LQ % "z_min", LQ % "max_z", "{mill_lqr_check[z_above_1][0]}", "{mill_lqr_check[z_above_1][1]}")),
         (rf"the 700 control steps, has spectral radius {N}; with the transfer's own Jacobian",
@@ -83,8 +84,9 @@ MOVING_CABLE = Covered(
            "(1,616 right-hand sides",
            # a test's tolerance, and the earlier measurement that set the old step
            "coupling blocks below 1e-6", "(to 1e-9 m over 60 s of", "had found 0.0176 s",
-           "prints it at its start, 2026-11-30;"),  # the day of the printed stable step below
-    timings=(", 0.3 s)", "the 3D mill at 48x real time on one thread", "(57x",
+           "prints it at its start, 2026-11-30;",  # the day of the printed stable step below
+           "(found by a review, 2026-12-07)", "where the new wing in slot 0 is"),
+    timings=(", 0.3 s)", "the 3D mill at 48x real time on one thread", "(57x", "(About 4 minutes.)",
              "(1 min on a quiet machine: 30 s for the operating point, 15 s for the Riccati equation)", "(about 30 s)"),
     # closed forms from the page's inputs and the printed figures: ln |z| / 0.05 s of the two phases above 1, 1/11 of
     # V_c, EA / 7 m on the 54 kg wing, omega dt, the 70 m / 2 m/s period
@@ -97,6 +99,14 @@ MOVING_CABLE = Covered(
     # s), the 2D / 3D comparison (tests/test_moving_cable_modes.py), the LQR's per-phase table and its 300 s run, the 3D
     # direction step of the meijaard study
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed('mill_transfer_transient', (
+            "each of the period's first 70 control steps:",
+            "slot 0's own block grows at up to 27.628 1/s (s / l0 = 0.0143);",
+            "the frozen closed loop reaches max |z| 1.5699 and is at or above 1 at 36 of the 70 steps",
+            "(1.0052 at s / l0 = 0.09,",
+            "and those 70 steps' transition matrix has a 2-norm of 30.9:",
+            "With these per-step models and 40 frozen phases after them, the period's transition matrix with the "
+            "transfer has spectral radius 0.106, against 0.0988 from the 8 phases:")),
         # tests/test_moving_cable_modes.py -s -k in_plane (the page's 4e-8 m of 2026-11-23 a History record)
         Printed('test_figures_quick', ('agree to 9.7e-9 m in every wing position over 100 s (2 transfers)',)),
         Printed('mill_v0_paper_step', (

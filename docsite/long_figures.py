@@ -300,6 +300,8 @@ LONG = {
        for scenario in ("paper_step", "step_minus_0.05", "step_0.1", "gust")},
     # controllers.md: the mills' period checks, the hand-over at NTM_IB seed 0, the shipped policy held out
     "lqr_laddermill": Long("laddermill lqr --config configs/agents/lqr_laddermill.yaml", "minutes", "controllers.md"),
+    "mill_transfer_transient": Long("python -m laddermill_gym.studies.mill.transfer_transient", "4 min",
+                                    "moving_cable.md"),
     "lqr_laddermill_v1": Long("laddermill lqr --config configs/agents/lqr_laddermill_v1.yaml", "minutes",
                               "controllers.md"),
     "switch_ntm_ib_0": Long(" && ".join(  # each order of the hand-over (the page quotes both)
