@@ -232,7 +232,7 @@ def test_the_factory_warns_of_a_mill_design_unstable_over_the_period(small_mill)
     assert np.log(said) == pytest.approx(np.log(rho), rel=1e-3)
 
 
-# ------------------------------------------------------------------ the chain's decentralised design (review 2026-12-07)
+# ---------------------------------------------------------- the chain's decentralised design (review 2026-12-07)
 def test_the_factory_warns_of_a_decentralised_chain_design_the_coupled_chain_does_not_hold():
     """The default chain LQR (lqr_ladder_chain.yaml, decentralised) is stable on each wing's own lateral block but
     not on the whole chain's coupled lateral model: gains designed here with scipy on the full model's diagonal
@@ -291,7 +291,7 @@ def test_laddermill_lqr_prints_the_default_crafts_eq6_design(capsys):
     assert blocks["K"][0, 1] == pytest.approx(check.K[0, 1], rel=1e-3)
 
 
-# ------------------------------------------------------------------ the craft's gain on the whole craft (review 2026-12-07)
+# ------------------------------------------------------ the craft's gain on the whole craft (review 2026-12-07)
 def test_the_craft_gain_is_checked_on_the_whole_crafts_linear_model():
     """Eq. (6) leaves out the tethers' nodes: the design also closes its gain on the simulator's whole linear model
     (30 states on the default craft's two-element tethers). Oracle: the gain placed on the named minimal states

@@ -244,3 +244,64 @@ def test_a_non_finite_state_costs_each_agent_the_full_penalty_as_the_single_env(
         assert infos[a]["reward_lateral"] == pytest.approx(-rc.lateral_weight)  # S(nan) = 1, as i_single's
         assert infos[a]["reward_rates"] == pytest.approx(-rc.rate_weight)
     assert i_single["reward_lateral"] == pytest.approx(-rc.lateral_weight)
+
+
+def test_sb3_adapter_infos_and_observations_are_the_parallel_envs_entry_for_entry():
+    """The SB3 adapter's infos and observations, step by step through an episode's end and the reset after it (2
+    copies of 5 wings, k = 2, some action entries clipped), against a reference loop over the ParallelEnvs seeded
+    seed + b: every info entry's value and Python type (``n_clipped`` included), the observations and the terminal
+    observation against ``expected_local`` (written out entry by entry above)."""
+    k, B, seed = 2, 2, 5
+    kw = case_kwargs(LC, episode_time=0.2)  # 4 control periods of 0.05 s
+    venv = shared_policy_vec_env(LC, B, k=k, seed=seed, **kw)
+    refs = [make(LC, k, episode_time=0.2) for _ in range(B)]
+    n, m = venv.n_agents, SIZES[LC][0]
+    venv.reset()
+    p_ref = [env.reset(seed=seed + b)[1]["wing_0"]["reference_power_W"] for b, env in enumerate(refs)]
+    keys = ("power_W", "failure", "t", "n_clipped", "reward_shared", "reward_lateral", "reward_rates", "reward_effort")
+    rng, ended = np.random.default_rng(3), 0
+    for _ in range(6):
+        actions = rng.uniform(-1.5, 1.5, (B * n, 3)).astype(np.float32)
+        obs, rew, dones, infos = venv.step(actions)
+        assert len(infos) == B * n
+        for b, env in enumerate(refs):
+            _, r, term, trunc, pinfo = env.step({a: actions[b * n + i] for i, a in enumerate(env.possible_agents)})
+            last = expected_local(env.task.obs[0], n, m, k, [pinfo["wing_0"]["power_W"] / p_ref[b]])
+            done = env.agents == []
+            if done:
+                ended += 1
+                after, _ = env.reset()  # the copy's next episode, drawn from the same generator
+                after = np.array([after[a] for a in env.possible_agents])
+                start = expected_local(env.task.obs[0], n, m, k, after[0, -1:])
+            for i, a in enumerate(env.possible_agents):
+                j = b * n + i
+                want = {key: pinfo[a][key] for key in keys}
+                want["TimeLimit.truncated"] = trunc[a] and not term[a]
+                got = dict(infos[j])
+                if done:
+                    np.testing.assert_array_equal(got.pop("terminal_observation"), last[i])
+                    np.testing.assert_array_equal(obs[j], start[i])
+                else:
+                    np.testing.assert_array_equal(obs[j], last[i])
+                assert got == want and {f: type(v) for f, v in got.items()} == {f: type(v) for f, v in want.items()}
+                assert rew[j] == np.float32(r[a]) and dones[j] == done
+        assert any(info["n_clipped"] > 0 for info in infos)
+    assert ended == B  # both copies ended (at 0.2 s) and were reset within the six steps
+
+
+def test_local_observations_clip_each_entry_as_the_bounds_say():
+    """Non-finite and out-of-bound entries of the single-agent observation (the clip is applied to the wing blocks
+    before they are gathered into every agent's view): each local entry is its bound (NaN: the upper one)."""
+    venv = shared_policy_vec_env(LC, 1, k=2, seed=0, **case_kwargs(LC))
+    venv.reset()
+    view, n, m = venv.view, venv.n_agents, SIZES[LC][0]
+    obs = np.repeat(venv.task.obs, 3, axis=0)
+    obs[0, [0, m + 3, 4 * m + 1]] = np.nan, np.inf, -np.inf
+    obs[1, : n * m] *= 1e9  # far outside the bounds
+    shared = np.array([[0.3], [np.nan], [-5e3]])
+    got = view.local_observations(obs, shared)
+    lo, hi = view.obs_low.astype(np.float32), view.obs_high.astype(np.float32)
+    for b in range(3):
+        raw = expected_local(obs[b], n, m, 2, shared[b])
+        np.testing.assert_array_equal(got[b], np.where(np.isnan(raw), hi, np.clip(raw, lo, hi)))
+    assert np.isfinite(got).all()

@@ -69,8 +69,9 @@ def test_gain_locality_blocks_and_band():
     np.testing.assert_array_equal(banded(K, 3), K)
 
 
-def small_policy(tmp_path, k=1):
-    """A shared-policy run folder on the 11-wing v1 mill: PPO with the gain-scheduled actor, random weights."""
+def small_policy(tmp_path, k=1, extractor_k=None):
+    """A shared-policy run folder on the 11-wing v1 mill: PPO with the gain-scheduled actor, random weights
+    (``extractor_k``: the actor's own k, default ``k``, the env's and shared_policy.yaml's)."""
     from stable_baselines3 import PPO
 
     from laddermill_gym.multiagent import shared_policy_vec_env
@@ -80,7 +81,8 @@ def small_policy(tmp_path, k=1):
         venv = shared_policy_vec_env(LM1, 2, k=k, seed=4, **case_kwargs(LM1))
     v = venv.view
     pk = dict(features_extractor_class=GainScheduledExtractor,
-              features_extractor_kwargs=dict(n_agents=v.n_agents, k=k, block=v.block, n_basis=3,
+              features_extractor_kwargs=dict(n_agents=v.n_agents, k=k if extractor_k is None else extractor_k,
+                                             block=v.block, n_basis=3,
                                              trim=np.zeros((v.n_agents, 2)).tolist(), scales=[1.0] * 6),
               net_arch=dict(pi=[], vf=[8]), log_std_init=-3.0)
     model = PPO("MlpPolicy", venv, n_steps=8, batch_size=44, policy_kwargs=pk, seed=0, device="cpu")
@@ -290,3 +292,31 @@ def test_a_shared_config_for_the_point_mass_chain_is_refused_by_name(tmp_path):
     assert bad.read_text() != text
     with pytest.raises(ConfigError, match=r"pmc\.yaml.*'env'.*PointMassChain-v0"):
         load_shared_config(bad)
+
+
+def test_a_model_for_other_slots_or_another_k_is_refused_by_name(tmp_path):
+    """The torch path against the model's own actor: the shipped ppo_chain (an extractor of 101 slots) in a folder
+    whose shared_policy.yaml says 5 agents loaded for a 5-wing chain and flew slots 0, 25, .. 100's trim and gains
+    without a word (the review's t12; the linear actor refused it); an extractor of k = 1 under a yaml of k = 2."""
+    import shutil
+
+    import yaml
+
+    from laddermill_gym.control.shipped_policies import shipped_policy_path
+
+    chain, five = "laddermill_gym/LadderChain-v0", {"scene_options": {"n_wings": 5}}
+    run = tmp_path / "ppo_chain"
+    shutil.copytree(shipped_policy_path("ppo_chain"), run)
+    assert SharedPolicyController.load(run, chain).view.n_agents == 101  # as shipped: loads
+    meta = yaml.safe_load((run / "shared_policy.yaml").read_text())
+    (run / "shared_policy.yaml").write_text(yaml.safe_dump(dict(meta, n_agents=5, env_kwargs=five)))
+    with pytest.raises(ValueError, match=r"ppo_chain/model\.zip: its GainScheduledExtractor has n_agents = 101 "
+                                         r"slots, the env has 5 agents"):
+        SharedPolicyController.load(run, chain, five)
+    small_policy(tmp_path, k=2, extractor_k=1)
+    kw = {key: val for key, val in case_kwargs(LM1).items() if key != "disturbances"}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        with pytest.raises(ValueError, match=r"model\.zip: its GainScheduledExtractor has k = 1, its "
+                                             r"shared_policy\.yaml says k = 2"):
+            SharedPolicyController.load(tmp_path, LM1, kw)

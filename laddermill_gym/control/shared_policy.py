@@ -101,7 +101,8 @@ class SharedPolicyController(SharedController):
 
     Build with :meth:`load` (a run folder holding ``shared_policy.yaml`` and ``model.zip``, or that model file).
     ``check_env(env_id)`` refuses another env, another number of agents or another observation size, naming the
-    file. The shipped policies run torch-free from their exported ``linear_actor.npz`` (``LinearActorController``)."""
+    file; :meth:`check_extractor` a model whose actor was built for other slots or another k than its folder says.
+    The shipped policies run torch-free from their exported ``linear_actor.npz`` (``LinearActorController``)."""
 
     def __init__(self, model, view: WingAgents, source: Path, meta: dict):
         super().__init__(view, source, meta)
@@ -133,7 +134,25 @@ class SharedPolicyController(SharedController):
         view = build_view(meta, model_file, env_id, env_kwargs)
         ctrl = cls(load_as(algo, model_file, meta_file), view, model_file, meta)
         ctrl.check_env(env_id or str(meta["env"]))
+        ctrl.check_extractor()
         return ctrl
+
+    def check_extractor(self) -> None:
+        """Refuse a model whose actor's :class:`GainScheduledExtractor` was built for another number of slots than
+        the env's agents or another ``k`` than its ``shared_policy.yaml`` says (ValueError naming the model file and
+        both values): its slot index round(position (n - 1)) would give the env's agents other slots' operating
+        point (trim) and gains, without a word. Another features extractor has no slot count to check."""
+        policy = self.model.policy
+        ext = getattr(policy, "pi_features_extractor", policy.features_extractor)
+        if not isinstance(ext, GainScheduledExtractor):
+            return
+        if ext.n != self.view.n_agents:
+            raise ValueError(f"{self.source}: its GainScheduledExtractor has n_agents = {ext.n} slots, the env has "
+                             f"{self.view.n_agents} agents (the model was trained for {ext.n} slots; its "
+                             f"{SHARED_POLICY_FILE} says {self.meta['n_agents']})")
+        if ext.k != int(self.meta["k"]):
+            raise ValueError(f"{self.source}: its GainScheduledExtractor has k = {ext.k}, its {SHARED_POLICY_FILE} "
+                             f"says k = {self.meta['k']}")
 
 
 def is_linear_actor(policy) -> bool:

@@ -199,6 +199,31 @@ def _ppo_callback(cfg: SharedTrainConfig, log, pbar, t_end: float):
     return Callback()
 
 
+def new_model(cfg: SharedTrainConfig, venv, policy_kwargs: dict):
+    """The PPO model (cfg's seed and hyperparameters, on the CPU) of the shared policy on ``venv``."""
+    from stable_baselines3 import PPO
+
+    return PPO("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=policy_kwargs, device="cpu", verbose=0,
+               **cfg.hyperparameters)
+
+
+def ppo_phase_model(cfg: SharedTrainConfig, model, ppo_env, policy_kwargs: dict, env_seed: int):
+    """The PPO phase's model on ``ppo_env`` when it has another number of envs than the DAgger model ``model``
+    (``ppo.n_copies`` != ``imitation.n_copies``; SB3's ``set_env`` takes only the same number): a model built as
+    the first (the same seed, hyperparameters and so learning-rate schedule; its rollout buffer sized for
+    ``ppo_env``), carrying ``model``'s policy: the weights and buffers (the extractor's trim and scales) and the
+    optimizer's state. Building it seeds python, numpy and torch with ``cfg.seed`` and draws the same initial
+    weights as the first build, so torch's generator is where the DAgger model's stood (DAgger draws nothing from
+    it: its fits are least squares, its actions deterministic); ``ppo_env``'s copies are seeded again from its
+    ``env_seed`` (copy b from ``env_seed + b``: SB3 seeds the env with the model's seed, which would replay the
+    DAgger copies' draws). No running normalisation exists to carry (module doc)."""
+    new = new_model(cfg, ppo_env, policy_kwargs)
+    new.policy.load_state_dict(model.policy.state_dict())
+    new.policy.optimizer.load_state_dict(model.policy.optimizer.state_dict())
+    ppo_env.seed(env_seed)
+    return new
+
+
 def plot_curve(out: Path, rows: list[dict], lqr: dict | None) -> Path:
     """Episodes held and mean power against wall time, the LQR's as dashed lines."""
     from laddermill_gym.figure_files import subplots
@@ -224,7 +249,6 @@ def plot_curve(out: Path, rows: list[dict], lqr: dict | None) -> Path:
 def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
     """Run both phases into ``out`` (see the module doc); returns the best evaluation row and the LQR's."""
     import torch as th
-    from stable_baselines3 import PPO
 
     from laddermill_gym.multiagent.sb3 import shared_policy_vec_env
 
@@ -242,8 +266,7 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
     (out / "shared_policy.yaml").write_text(yaml.safe_dump(meta, sort_keys=False))
     write_run_record(out, cfg.seed)  # the command line, seed, torch threads and package versions
     pk = _policy_kwargs(cfg, view, teacher.trim_attitude, bryson_scales(cfg.env_id, cfg.teacher_config))
-    model = PPO("MlpPolicy", venv, seed=cfg.seed, policy_kwargs=pk, device="cpu", verbose=0,
-                **cfg.hyperparameters)
+    model = new_model(cfg, venv, pk)
     ev = Evaluator(cfg, meta)
     lqr = ev.run(teacher)
     print(f"LQR on the evaluation episodes: {lqr}")
@@ -272,9 +295,9 @@ def train_shared(cfg: SharedTrainConfig, out: Path) -> dict:
     model.save(out / "bc_model.zip")
     t_end = t0 + 60 * min(cfg.time_limit_minutes, (time.perf_counter() - t0) / 60 + cfg.ppo_minutes)
     if cfg.ppo_timesteps > 0 and time.perf_counter() < t_end:
-        ppo_env = venv if cfg.ppo_copies == cfg.bc_copies else shared_policy_vec_env(
-            cfg.env_id, cfg.ppo_copies, k=cfg.k, seed=cfg.seed + 1000, **cfg.train_env_kwargs())
-        model.set_env(ppo_env)
+        if cfg.ppo_copies != cfg.bc_copies:  # `log` flies and saves the PPO phase's model from here on
+            ppo_env = shared_policy_vec_env(cfg.env_id, cfg.ppo_copies, k=cfg.k, **cfg.train_env_kwargs())
+            model = ppo_phase_model(cfg, model, ppo_env, pk, env_seed=cfg.seed + 1000)
         with tqdm(total=cfg.ppo_timesteps, unit="step", desc="PPO fine-tuning") as pbar:
             model.learn(total_timesteps=cfg.ppo_timesteps, callback=_ppo_callback(cfg, log, pbar, t_end),
                         reset_num_timesteps=True)

@@ -114,6 +114,16 @@ class WingAgents:
         self.nominal = np.asarray(nominal, dtype=float).reshape(n, self.act_dim)
         self.offsets = np.array([d for d in range(-k, k + 1) if d != 0], dtype=np.int64)
         self.obs_low, self.obs_high = self._bounds()
+        # agent i's blocks (own, then the neighbours') are rows k + i + d, d in _seen, of the wing blocks padded
+        # with k zero blocks at each end; its flags and position are fixed
+        idx = np.arange(n)
+        self._seen = (0, *(int(d) for d in self.offsets))
+        present = (idx[:, None] + self.offsets[None, :] >= 0) & (idx[:, None] + self.offsets[None, :] < n)
+        static = np.concatenate([present.astype(float), (idx / max(n - 1, 1))[:, None]], axis=1)
+        nb = self.block * (1 + 2 * k)
+        self._static = np.empty((n, 2 * k + 1), dtype=np.float32)
+        clip_observations(static, self.obs_low[nb: nb + 2 * k + 1], self.obs_high[nb: nb + 2 * k + 1], self._static)
+        self._padded: np.ndarray | None = None
 
     def _bounds(self) -> tuple[np.ndarray, np.ndarray]:
         """(low, high) (d,) float64 of the local observation: the task's bounds of wing 0's block (every wing's are
@@ -165,22 +175,25 @@ class WingAgents:
         if shared is None:
             shared = (obs[:, -N_STATION_OBS:][:, list(_MILL_SHARED)] if self.kind == "slot"
                       else np.zeros((obs.shape[0], self.n_shared)))
-        B = obs.shape[0]
-        own = obs[:, : n * m].reshape(B, n, m)
-        padded = np.zeros((B, n + 2 * k, m))
-        padded[:, k: k + n] = own
-        parts = [own]
-        idx = np.arange(n)
-        for d in self.offsets:
-            parts.append(padded[:, k + idx + d])
-        present = ((idx[:, None] + self.offsets[None, :] >= 0) & (idx[:, None] + self.offsets[None, :] < n))
-        parts.append(np.broadcast_to(present.astype(float), (B, n, 2 * k)))
-        parts.append(np.broadcast_to((idx / max(n - 1, 1))[None, :, None], (B, n, 1)))
-        parts.append(np.broadcast_to(np.asarray(shared)[:, None, :], (B, n, self.n_shared)))
-        raw = np.concatenate(parts, axis=2)
-        out = np.empty_like(raw)
-        clip_observations(raw, self.obs_low, self.obs_high, out)
-        return out.astype(np.float32)
+        B, g, nb = obs.shape[0], self.n_shared, m * (1 + 2 * k)
+        # clipping is entry by entry with the blocks' bounds (every block's are wing 0's), so the wing blocks are
+        # clipped once (n m entries per copy, not n (2k + 1) m) into the padded buffer, then gathered
+        padded = self._padded_blocks(B)
+        clip_observations(obs[:, : n * m].reshape(B, n, m), self.obs_low[:m], self.obs_high[:m], padded[:, k: k + n])
+        out = np.empty((B, n, self.obs_dim), dtype=np.float32)
+        for j, d in enumerate(self._seen):  # every agent's j-th block seen: the padded rows k + d .. k + d + n - 1
+            out[:, :, j * m: (j + 1) * m] = padded[:, k + d: k + d + n]
+        out[:, :, nb: nb + 2 * k + 1] = self._static
+        clip_observations(np.asarray(shared, dtype=float).reshape(B, 1, g), self.obs_low[-g:], self.obs_high[-g:],
+                          out[:, :, nb + 2 * k + 1:])
+        return out
+
+    def _padded_blocks(self, B: int) -> np.ndarray:
+        """The reused (B, n + 2k, m) float32 buffer of the clipped wing blocks, k zero blocks at each end (the
+        absent neighbours); one per batch size B."""
+        if self._padded is None or self._padded.shape[0] != B:
+            self._padded = np.zeros((B, self.n_agents + 2 * self.k, self.block), dtype=np.float32)
+        return self._padded
 
     # ------------------------------------------------------------------ actions and rewards
     def joint_action(self, per_agent: np.ndarray) -> np.ndarray:
