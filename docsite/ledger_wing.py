@@ -32,8 +32,8 @@ CHECKS = (
     (rf"\| CD0 \(C_D at C_L = 0\) \| {N} \|", (_p("CD0"),)),
     (rf"\| Oswald e \(wing\) \| {N} \|", (_p("model[e]"),)),
     (rf"\| \(L/D\)_max \| {N} at {N} deg", (_p("LD[0]"), _p("LD[1]"))),
-    (rf"\| Cm_alpha about the CG \| {N} /rad", (_p("Cm_alpha"),)),
-    (rf"\| static margin \(no cable\) \| {N} c = {N} m \(neutral point {N} m",
+    (rf"\| Cm_alpha about the CG \(5 deg\) \| {N} /rad", (_p("Cm_alpha"),)),
+    (rf"\| static margin \(no cable, 5 deg\) \| {N} c = {N} m \(neutral point {N} m",
      (_p("margin[0]"), _p("margin[1]"), _p("margin[1]"))),
     (rf"\| free-flight trim, d_e = 0 \| alpha = {N} deg", (_p("free_trim"),)),
     (rf"\| CLq, Cmq \| {N}, {N} \|", (D % "CLq", D % "Cmq")),
@@ -78,7 +78,8 @@ CHECKS = (
     (rf"V_V = 2 S_v l_v/\(S b\) = {N} \|", (_p("V_V"),)),
     (rf"\(1 \+ cos Lambda\) \+ 0\.009 A = {N}", (_p("model[eta_v(1+ds/db)]"),)),
     (rf"Tail volume V_H = S_h l_t / \(S c\) = {N} \(from the wing's ac\), V_V = {N};", (_p("V_H"), _p("V_V"))),
-    (rf"free-flight static margin {N} c \(neutral point {N} m behind the CG\), pitch damping C_mq = {N}, "
+    (rf"free-flight static margin {N} c at alpha = 5 deg \(neutral point {N} m behind the CG\), pitch damping "
+     rf"C_mq = {N}, "
      rf"C_mad = {N} \(above\)", (_p("margin[0]"), _p("margin[1]"), D % "Cmq", D % "Cmad")),
     (rf"\(here {N} /rad from 3 deg dihedral", (D % "Clb",)),
     (rf"\(V_V = {N}; Cnb = {N}, Cnr = {N}\)", (_p("V_V"), D % "Cnb", D % "Cnr")),
