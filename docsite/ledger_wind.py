@@ -110,6 +110,9 @@ WIND = Covered(
             (r"beta = ([\d.]+), T = (\d+) s \(vertical shear\)", (C % "ews_beta", C % "ews_t")),
             (r"\(1 \+ \(([\d.]+) L Omega\)\^2\)\^\(5/6\)", (C % "vk_a",))),
     given=(  # the profiles' names (docsite/host_cpu.py; numerics.md, Bits and machines)
+           # grid_sampling's section: the review's date, the command's lags, NTM_IB's chain grid and IEC's scale
+           "(found by a review, 2026-12-07)", "| u at 20 / 40 s: field; model |", "w's rows are 25 m apart",
+           "against its integral scale of 0.66 Lambda_1)", "anticorrelates with itself 40 s later", "(95 % half",
            "znver4 names numpy's AVX-512 loops with OpenBLAS's SkylakeX kernels",
            "(Meijaard et al. 1999 eqs. 1-3)", "(cos a, sin a, 0)",  # the standards' formulas and clauses
            "sigma_1 = I_ref (0.75 V_hub + 5.6 m/s) | Kaimal: f S_k / sigma_k^2 = (4 f L_k / V_hub) / (1 + 6 f L_k / "
@@ -160,12 +163,27 @@ WIND = Covered(
            "s of advection.", "over the whole 60 s", "(the suite's full durations; 1 seed, 3 for turbulence;",
            "LadderMill-v0 (60 s;", "for a 3.5 km chain", "The Gaussian 1 + speed_std z",
            "The +20 % speed step", "against the whole 60 s reference", "gusts-v1's 0.01 rad direction step"),
-    timings=("is drawn in about 3.5 ms",  # the page's own measurements on the shared 2-core machine (its load given)
+    timings=("read through the kernel; about 40 s)",
+             "is drawn in about 3.5 ms",  # the page's own measurements on the shared 2-core machine (its load given)
              "medians of 11-15 interleaved runs of 80 steps on the 2-core machine shared with other jobs): ratio with /"
              " without 1.29 (1.015 vs 1.311 ms per step, load about 3) before the fade-in slot, 1.18 and 1.11 after it"
              " in two runs at a higher load (2.5 vs 3.0 ms, 2.2 vs 2.5 ms). Drawing the field at a reset takes 3-16 "
              "ms.", "--out runs/gust_bench_v2/pumping # 16 s", "--out runs/gust_bench_v2/mill # 2 min 50 s"),
     printed=(  # long groups: python -m docsite.readme_figures --long NAME (docsite/long_figures.py)
+        Printed("grid_sampling_v1", (
+            "1000 seeds, 200 nodes and 200 random points of each",
+            "half-widths 0.004-0.017):",
+            "| TetheredWing-v0, NTM_IB | 700 m, dxi 5 m, dh 5 m | 0.997, 1.002, 1.003 | 0.884, 0.855, 0.761 | -0.055 / "
+            "-0.311; 0.418 / 0.257 |",
+            "| TetheredWing-v0, dryden_light | the same | 0.997, 1.005, 1.003 | 0.926, 0.931, 0.868 | -0.049 / -0.461; "
+            "0.540 / 0.292 |",
+            "| LadderChain-v0, NTM_IB | 2100 m, dxi 10 m, dh 25 m | 1.000, 0.996, 1.003 | 0.818, 0.752, 0.621 | "
+            "0.183 / -0.120; 0.347 / 0.195 |",
+            "| LadderChain-v0, dryden_light | the same | 1.000, 1.001, 1.000 | 0.891, 0.891, 0.878 | 0.294 / -0.127; "
+            "0.436 / 0.190 |",
+            "between them the chain's wings meet 62 % of the NTM's w variance",
+            "and the wing 76 %.",
+            "where the unbounded model's correlation is 0.26-0.29.")),
         Printed("turbulence_level", ("| TetheredWing-v0 | NTM IB | 700 | 0.49 | 2.03 | 0.45 |",
                                      "| TetheredWing-v0 | Dryden moderate | 700 | 0.35-0.89 | 1.12-2.85 | 0.07-0.60 |",
                                      "| LadderChain-v0 | NTM IB | 2100 | 0.71 | 1.41 | 0.23 |",
@@ -203,6 +221,7 @@ WIND = Covered(
         )),
     ),
     derived=(
+        "(a standard deviation of 0.79 sigma_w:",  # the square root of grid_sampling's printed 0.621
         # the pumping kite's held NTM_IB seeds' energy ratios less 1 (gust_bench.csv prints the ratios)
         '14-30 % more energy from the gusts)',
         # bounds over gust_bench.csv's causes (--long gusts_v2_mill_printed): every failing sideslip is 60.6-81.6 deg

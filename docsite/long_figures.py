@@ -100,6 +100,8 @@ LONG = {
     "gusts_v6_laddermill": _bench("gusts-v6", "LadderMill-v0", "open_loop lqr", "wind.md", "minutes"),
     # wind.md: how much of each turbulence model the gust suites' grids keep (closed forms, no draws)
     "turbulence_level": Long("python -m laddermill_gym.studies.gusts.turbulence_level", "seconds", "wind.md"),
+    "grid_sampling_v1": Long("python -m laddermill_gym.studies.gusts.grid_sampling --seeds 1000 --env "
+                             "laddermill_gym/TetheredWing-v0 laddermill_gym/LadderChain-v0", "40 s", "wind.md"),
     # rotorcraft.md: the blade-tip guard's prediction error in turbulence, which sets its margin
     "tip_guard_margin": Long("python -m laddermill_gym.studies.rotorcraft.tip_guard_margin --episodes 32",
                              "seconds", "rotorcraft.md"),
