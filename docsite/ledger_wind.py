@@ -113,6 +113,7 @@ WIND = Covered(
            # grid_sampling's section: the review's date, the command's lags, NTM_IB's chain grid and IEC's scale
            "(found by a review, 2026-12-07)", "| u at 20 / 40 s: field; model |", "w's rows are 25 m apart",
            "against its integral scale of 0.66 Lambda_1)", "anticorrelates with itself 40 s later", "(95 % half",
+           ", default 1, which every suite keeps)", "u's correlation at 20 / 40 s on the",
            "znver4 names numpy's AVX-512 loops with OpenBLAS's SkylakeX kernels",
            "(Meijaard et al. 1999 eqs. 1-3)", "(cos a, sin a, 0)",  # the standards' formulas and clauses
            "sigma_1 = I_ref (0.75 V_hub + 5.6 m/s) | Kaimal: f S_k / sigma_k^2 = (4 f L_k / V_hub) / (1 + 6 f L_k / "
@@ -184,6 +185,9 @@ WIND = Covered(
             "between them the chain's wings meet 62 % of the NTM's w variance",
             "and the wing 76 %.",
             "where the unbounded model's correlation is 0.26-0.29.")),
+        Printed("grid_sampling_record", (
+            "wing's NTM_IB grid is 0.419 / 0.242 against the model's 0.418 / 0.257,",
+            "record 1) give 0.463 / 0.358")),
         Printed("turbulence_level", ("| TetheredWing-v0 | NTM IB | 700 | 0.49 | 2.03 | 0.45 |",
                                      "| TetheredWing-v0 | Dryden moderate | 700 | 0.35-0.89 | 1.12-2.85 | 0.07-0.60 |",
                                      "| LadderChain-v0 | NTM IB | 2100 | 0.71 | 1.41 | 0.23 |",

@@ -102,6 +102,9 @@ LONG = {
     "turbulence_level": Long("python -m laddermill_gym.studies.gusts.turbulence_level", "seconds", "wind.md"),
     "grid_sampling_v1": Long("python -m laddermill_gym.studies.gusts.grid_sampling --seeds 1000 --env "
                              "laddermill_gym/TetheredWing-v0 laddermill_gym/LadderChain-v0", "40 s", "wind.md"),
+    "grid_sampling_record": Long(" && ".join(f"python -m laddermill_gym.studies.gusts.grid_sampling --suite gusts-v6 "
+                                             f"--seeds 1000{extra}" for extra in ("", " --record 4")), "40 s",
+                                 "wind.md"),
     # rotorcraft.md: the blade-tip guard's prediction error in turbulence, which sets its margin
     "tip_guard_margin": Long("python -m laddermill_gym.studies.rotorcraft.tip_guard_margin --episodes 32",
                              "seconds", "rotorcraft.md"),

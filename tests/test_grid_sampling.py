@@ -39,3 +39,36 @@ def test_the_nodes_hold_the_models_variance_and_points_between_them_less():
     assert r["between"][0][2] < mean[2] - 2.0 * (half[2] + r["between"][1][2])
     assert r["model_corr"][0] == pytest.approx(1.0, abs=1e-9) and r["field_corr"][0] == pytest.approx(1.0)
     assert 0.0 < r["model_corr"][1] < 1.0
+
+
+def test_a_longer_record_keeps_the_models_correlation_at_long_lags():
+    """``record``: the field's first columns are those of ``synthesize`` over a record four times the grid's (the
+    same generator's draws); with the offset synthesis, u's correlation at a fixed point 20 and 40 s apart over 800
+    fields is the unbounded Kaimal model's (the integral of S(kappa) cos(2 pi kappa U lag) over that of S) within
+    0.08 (about 2.5 standard errors), where the grid-long record (record 1) is not at 40 s."""
+    import dataclasses
+
+    from laddermill_gym.atmosphere.turbulence import low_band, synthesize, turbulence_spectra
+
+    turb = Turbulence(low_frequencies="offset", record=4.0, **KW)
+    g = turb.gust_grid(20.0, np.random.default_rng(5))
+    geo = turb.grid_geometry(20.0)
+    n_rec = turb.record_columns(geo.n_xi)
+    assert n_rec >= 4 * geo.n_xi and n_rec % 2 == 0
+    dk = 1.0 / (n_rec * geo.dxi)
+    h = geo.h0 + geo.dh * np.arange(geo.n_h)
+    args = (turb.wind_class, turb.wind_speed, turb.hub_height, turb.severity, turb.w20)
+    comps = turbulence_spectra(turb.model, dk * np.arange(1, (n_rec + 1) // 2), h, *args)
+    lows = low_band(turb.model, 0.5 * dk, h, *args)
+    rng = np.random.default_rng(5)
+    direct = np.stack([synthesize(s, sig, dec, geo.dh, dk, n_rec, rng, rescale=False, low=low)
+                       for (s, sig, dec), low in zip(comps, lows, strict=True)], axis=-1)
+    np.testing.assert_array_equal(g.values, direct[: geo.n_xi])
+    long = dict(model="NTM", wind_class="IB", wind_speed=8.08, hub_height=100.5, heights=(0.0, 250.0), dh=5.0,
+                along_wind=(-100.0, 100.0), dxi=5.0, fade_in=10.0, low_frequencies="offset")
+    r4 = grid_sampling(Turbulence(record=4.0, **long), 60.0, seeds=800, points=1, lags=(20.0, 40.0))
+    assert np.all(np.abs(r4["field_corr"] - r4["model_corr"]) < 0.08), (r4["field_corr"], r4["model_corr"])
+    r1 = grid_sampling(dataclasses.replace(Turbulence(**long), record=1.0), 60.0, seeds=800, points=1, lags=(40.0,))
+    assert r1["field_corr"][0] - r1["model_corr"][0] > 0.05, (r1["field_corr"], r1["model_corr"])
+    with pytest.raises(ValueError, match=r"Turbulence\.record = 0\.5: must lie in 1 \.\. 1000"):
+        Turbulence(record=0.5)

@@ -181,6 +181,12 @@ class Turbulence(Disturbance):
         The variance below the grid's first mode (:data:`LOW_FREQUENCY_MODES`): "rescale" (the default, the suites
         up to gusts-v5) puts it into the kept modes, "offset" keeps the spectrum's level and adds it as one
         random offset per row.
+    record : float
+        Length of the synthesised record as a multiple of the grid's (>= 1; default 1, the suites' fields): the
+        inverse FFT is periodic over the record, so with 1 the field repeats with the grid's length and its
+        correlation at lags near half of it is not the model's; with ``record`` r the record is r times longer (its
+        modes r times finer, the low band below the finer first mode) and the grid keeps its first n_xi columns
+        (docs/wind.md, "What a point between the nodes meets"). Memory while drawing grows by r, the grid's not.
     """
 
     model: str = "NTM"
@@ -196,6 +202,7 @@ class Turbulence(Disturbance):
     heading: float = 0.0
     fade_in: float = 0.0
     low_frequencies: str = "rescale"
+    record: float = 1.0
 
     def __post_init__(self):
         if self.low_frequencies not in LOW_FREQUENCY_MODES:
@@ -209,6 +216,9 @@ class Turbulence(Disturbance):
         if _number("fade_in", self.fade_in, positive=False) < 0:
             raise ValueError(f"Turbulence.fade_in = {self.fade_in!r}: must be >= 0 s")
         _number("w20", self.w20, allow_none=True)
+        if not _number("record", self.record) >= 1.0 or self.record > 1000.0:
+            raise ValueError(f"Turbulence.record = {self.record!r}: must lie in 1 .. 1000 (the synthesised record's "
+                             "length in grid lengths)")
         object.__setattr__(self, "heights", _pair("heights", self.heights))
         object.__setattr__(self, "along_wind", _pair("along_wind", self.along_wind))
         tm.parse_wind_class(self.wind_class, "Turbulence.wind_class")  # checked whatever the model: a typo is named
@@ -236,16 +246,24 @@ class Turbulence(Disturbance):
         n_h = int(math.ceil((h1 - h0) / self.dh - 1e-9)) + 1
         return GridGeometry(xi0, self.dxi, n_xi, h0, self.dh, n_h, self.wind_speed, self.heading, self.fade_in)
 
+    def record_columns(self, n_xi: int) -> int:
+        """Columns [-] of the synthesised record for a grid of ``n_xi`` columns: n_xi itself with ``record`` 1, else
+        the even number nearest above record x n_xi."""
+        return n_xi if self.record == 1.0 else 2 * int(math.ceil(0.5 * self.record * n_xi))
+
     def gust_grid(self, t_end: float, rng: np.random.Generator) -> GustGrid:
         g = self.grid_geometry(t_end)
         h = g.h0 + g.dh * np.arange(g.n_h)
-        n_f = (g.n_xi + 1) // 2 - 1
-        dkappa = 1.0 / (g.n_xi * g.dxi)
+        n_rec = self.record_columns(g.n_xi)
+        n_f = (n_rec + 1) // 2 - 1
+        dkappa = 1.0 / (n_rec * g.dxi)
         kappa = dkappa * np.arange(1, n_f + 1)
         args = (self.wind_class, self.wind_speed, self.hub_height, self.severity, self.w20)
         comps = turbulence_spectra(self.model, kappa, h, *args)
         offset = self.low_frequencies == "offset"
         lows = low_band(self.model, 0.5 * dkappa, h, *args) if offset else [None] * len(comps)
-        values = np.stack([synthesize(s, sig, dec, g.dh, dkappa, g.n_xi, rng, rescale=not offset, low=low)
+        values = np.stack([synthesize(s, sig, dec, g.dh, dkappa, n_rec, rng, rescale=not offset, low=low)
                            for (s, sig, dec), low in zip(comps, lows, strict=True)], axis=-1)
+        if n_rec != g.n_xi:  # the record's start: no repeat within the grid
+            values = np.ascontiguousarray(values[: g.n_xi])
         return GustGrid(values, g.xi0, g.dxi, g.h0, g.dh, g.advection, g.heading, g.fade_in)

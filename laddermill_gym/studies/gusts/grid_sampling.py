@@ -99,7 +99,8 @@ def _print(env: str, scenario: str, turb, r: dict, seeds: int, points: int) -> N
     def cells(pair):
         return "   ".join(f"{m:.3f} +- {w:.3f}" for m, w in zip(*pair, strict=True))
 
-    print(f"{env} {scenario}: {turb.model} ({turb.low_frequencies}), grid {r['grid_m']:.0f} m along the wind, dxi "
+    print(f"{env} {scenario}: {turb.model} ({turb.low_frequencies}, record {turb.record:g}), grid "
+          f"{r['grid_m']:.0f} m along the wind, dxi "
           f"{r['dxi']:g} m, dh {r['dh']:g} m; {seeds} seeds x {points} points")
     print(f"  g^2 / sigma_k^2 (u, v, w) at the grid's nodes:  {cells(r['node'])}")
     print(f"  g^2 / sigma_k^2 (u, v, w) at random points:     {cells(r['between'])}")
@@ -120,6 +121,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--seeds", type=int, default=100, help="fields drawn per scenario [-]")
     p.add_argument("--points", type=int, default=200, help="nodes and random points read per field [-]")
     p.add_argument("--lags", type=float, nargs="*", default=[20.0, 40.0], help="[s] u's correlation lags")
+    p.add_argument("--record", type=float, default=None, help="draw the fields with this Turbulence.record (the "
+                   "synthesised record in grid lengths) instead of the suite's")
     a = p.parse_args(argv)
 
     def run() -> int:
@@ -134,7 +137,8 @@ def main(argv: list[str] | None = None) -> int:
             for s in suite.envs[env][1]:
                 for i, spec in enumerate(s.disturbances):
                     if spec.get("type") == "Turbulence":
-                        turb = disturbance_from_spec(dict(spec), f"{s.name}.disturbances[{i}]")
+                        given = dict(spec) if a.record is None else dict(spec, record=a.record)
+                        turb = disturbance_from_spec(given, f"{s.name}.disturbances[{i}]")
                         _print(env, s.name, turb, grid_sampling(turb, s.duration, a.seeds, a.points, a.lags),
                                a.seeds, a.points)
         return 0

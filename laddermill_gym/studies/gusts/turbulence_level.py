@@ -33,8 +33,9 @@ def scenario_levels(turb, duration: float) -> dict:
 
     g = turb.grid_geometry(duration)
     h = g.h0 + g.dh * np.arange(g.n_h)
-    dkappa = 1.0 / (g.n_xi * g.dxi)
-    kappa = dkappa * np.arange(1, (g.n_xi + 1) // 2)
+    n_rec = turb.record_columns(g.n_xi)  # the synthesised record's columns (the grid's, with record 1)
+    dkappa = 1.0 / (n_rec * g.dxi)
+    kappa = dkappa * np.arange(1, (n_rec + 1) // 2)
     args = (turb.wind_class, turb.wind_speed, turb.hub_height, turb.severity, turb.w20)
     comps = turbulence_spectra(turb.model, kappa, h, *args)
     lows = low_band(turb.model, 0.5 * dkappa, h, *args)
