@@ -296,7 +296,7 @@ def test_the_craft_gain_is_checked_on_the_whole_crafts_linear_model():
     """Eq. (6) leaves out the tethers' nodes: the design also closes its gain on the simulator's whole linear model
     (30 states on the default craft's two-element tethers). Oracle: the gain placed on the named minimal states
     (wing0_y, wing0_phi, wing0_vy, wing0_p: eq. (6)'s y, phi, y', p at a level trim), ZOH with scipy's expm; the
-    loop is stable but less damped than eq. (6)'s own; a gain of the wrong sign is refused naming the craft."""
+    loop is stable but less damped than eq. (6)'s own; with a gain of the wrong sign both say it grows."""
     from laddermill_gym.control.craft_lqr import design_craft_lqr, full_craft_check
     from laddermill_gym.kernels.contract import CU_DIFFERENTIAL
 
@@ -311,6 +311,34 @@ def test_the_craft_gain_is_checked_on_the_whole_crafts_linear_model():
     assert float(np.max(np.abs(d.full_closed_loop))) == pytest.approx(rho, abs=1e-6)
     assert np.max(np.abs(d.lqr.closed_loop)) < rho < 1.0
     assert d.trim_residual == pytest.approx(lin.residual) and d.trim_residual < 1e-6
-    with pytest.raises(ValueError, match=r"craft .*: the gain designed on eq\. \(6\) leaves the whole craft's linear "
-                                         r"model \(30 states\) unstable"):
-        full_craft_check(d.sim, -d.gain, d.config.control_period)
+    K[CU_DIFFERENTIAL] *= -1.0  # a gain of the wrong sign: the same oracle and the check agree it grows
+    rho_wrong = float(np.max(np.abs(np.linalg.eigvals(Ad - Bd @ K))))
+    wrong = full_craft_check(d.sim, -d.gain, d.config.control_period)[0]
+    assert rho_wrong > 1.0 and float(np.max(np.abs(wrong))) == pytest.approx(rho_wrong, abs=1e-6)
+
+
+def test_the_factory_warns_of_a_craft_gain_the_whole_craft_does_not_hold(tmp_path):
+    """A roll weight six times tighter than the shipped config's (phi 0.5 deg against 3 deg) gives a gain that holds
+    eq. (6) but not the whole craft's linear model: the factory builds it and warns, naming the radius, which the
+    scipy oracle of the test above gives too; the shipped config builds without a warning."""
+    import warnings
+
+    from laddermill_gym.control.craft_lqr import design_craft_lqr
+    from laddermill_gym.kernels.contract import CU_DIFFERENTIAL
+
+    text = DEFAULT_CRAFT_LQR.read_text()
+    assert "  phi_deg: 3.0 " in text
+    mine = tmp_path / "lqr_tight_roll.yaml"
+    mine.write_text(text.replace("  phi_deg: 3.0 ", "  phi_deg: 0.5 ", 1))
+    with pytest.warns(UnstableDesignWarning, match=r"does not hold the whole craft's linear model \(30 states") as seen:
+        make_controller(f"lqr:{mine}", "laddermill_gym/Rotorcraft-v0")
+    said = float(str(seen[0].message).split("max |z| ")[1].split(" ")[0])
+    d = design_craft_lqr(mine)
+    lin = linearize(d.sim, d.x_trim, d.u_trim)
+    K = np.zeros((lin.B.shape[1], lin.A.shape[0]))
+    K[CU_DIFFERENTIAL, [lin.state_names.index(f"wing0_{s}") for s in ("y", "phi", "vy", "p")]] = d.gain
+    Ad, Bd = _zoh(lin.A, lin.B, d.config.control_period)
+    assert said == pytest.approx(float(np.max(np.abs(np.linalg.eigvals(Ad - Bd @ K)))), abs=1e-5) and said > 1.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", UnstableDesignWarning)
+        make_controller("lqr", "laddermill_gym/Rotorcraft-v0")

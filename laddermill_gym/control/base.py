@@ -26,6 +26,7 @@ __all__ = [
     "batch_observations",
     "observe",
     "elements_below_wings",
+    "UnstableDesignWarning",
 ]
 
 #: Observation entries per wing, in the environments' order (the table with units:
@@ -122,3 +123,9 @@ def elements_below_wings(layout, n_wings: int) -> np.ndarray:
     """Index of the element of piece k that ends at wing k, for each wing (chain layouts)."""
     return np.array([layout.piece_elements[k][-1] for k in range(n_wings)], dtype=np.int64)
 
+
+class UnstableDesignWarning(UserWarning):
+    """An LQR whose closed loop grows: a mill's over the orbit's period (Floquet: the transition matrix's spectral
+    radius is 1 or more), a decentralised chain design's on the full coupled lateral model, a craft's eq. (6) gain on
+    the whole craft's linear model (max |z| of the discrete closed loop 1 or more); flown as asked (a small test
+    mill, a study of a design that fails), said once per build (``control.factory.make_controller``)."""

@@ -119,8 +119,8 @@ def full_craft_check(sim, gain: np.ndarray, dt: float, h: float = 1e-6) -> tuple
     craft's linear model at the simulator's state and controls (its trim): every minimal coordinate linearised
     (:func:`~laddermill_gym.control.linearize.linearize`), the gain applied to eq. (6)'s state as a linear map of them
     (central differences of :func:`lateral_state`, step ``h``), ZOH at ``dt`` [s]. Eq. (6) leaves out the tether's
-    nodes and couplings, so its own closed loop does not show this one's stability; ValueError naming the craft
-    where the gain leaves it unstable (max |z| >= 1)."""
+    nodes and couplings, so its own closed loop does not show this one's stability (``make_controller`` warns
+    where this one's max |z| is 1 or more: a tighter roll weight than the shipped config's can do that)."""
     import control
 
     from laddermill_gym.control.linearize import full_from_minimal, linearize, minimal_from_full
@@ -141,11 +141,7 @@ def full_craft_check(sim, gain: np.ndarray, dt: float, h: float = 1e-6) -> tuple
     K = np.zeros((lin.B.shape[1], n))
     K[CU_DIFFERENTIAL] = np.asarray(gain, float) @ L
     sysd = control.c2d(control.ss(lin.A, lin.B, np.eye(n), np.zeros(lin.B.shape)), dt, "zoh")
-    eig = np.linalg.eigvals(np.asarray(sysd.A) - np.asarray(sysd.B) @ K)
-    if not np.max(np.abs(eig)) < 1.0:
-        raise ValueError(f"craft {sim.config.name}: the gain designed on eq. (6) leaves the whole craft's linear "
-                         f"model ({n} states) unstable: closed loop max |z| = {np.max(np.abs(eig)):.5f}")
-    return eig, float(lin.residual)
+    return np.linalg.eigvals(np.asarray(sysd.A) - np.asarray(sysd.B) @ K), float(lin.residual)
 
 
 class CraftLQRController:

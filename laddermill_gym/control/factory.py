@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from laddermill_gym.control.base import Controller
+from laddermill_gym.control.base import Controller, UnstableDesignWarning
 from laddermill_gym.envs import ENV_IDS, registered_arguments, task_class
 from laddermill_gym.envs.task import scene_trim
 from laddermill_gym.ladder.scene import options_key
@@ -89,6 +89,12 @@ def _craft_controller(spec: str, kw: dict) -> Controller:
         if mine != env:
             raise ValueError(f"{where}: {name} = {mine!r} differs from the environment's {env!r}")
     design = design_craft_lqr(cfg)
+    full = float(np.max(np.abs(design.full_closed_loop)))
+    if not full < 1.0:  # eq. (6)'s own loop is stable by construction; the whole craft's need not be
+        warnings.warn(f"{where}: its gain, designed on eq. (6), does not hold the whole craft's linear model "
+                      f"({design.full_closed_loop.size} states, the tethers' nodes included): closed loop max |z| "
+                      f"{full:.5f} (>= 1; eq. (6)'s own {float(np.max(np.abs(design.lqr.closed_loop))):.5f}); "
+                      f"laddermill lqr --config {path} prints both", UnstableDesignWarning, stacklevel=3)
     if kw.get("collective") is not None and float(kw["collective"]) != design.u_trim[0]:
         raise ValueError(f"{where}: the design trims at the craft's collective {design.u_trim[0]!r} rad, the "
                          f"environment at collective = {kw['collective']!r} rad (the controller would hold its own)")
@@ -141,13 +147,6 @@ def _mill_controller(spec: str, kw: dict, env_id: str) -> Controller:
                       f"{design.phases.size} phases); laddermill lqr --config {path} prints the check",
                       UnstableDesignWarning, stacklevel=3)
     return design.controller(task)
-
-
-class UnstableDesignWarning(UserWarning):
-    """An LQR whose closed loop grows: a mill's over the orbit's period (Floquet: the transition matrix's spectral
-    radius is 1 or more), a decentralised chain design's on the full coupled lateral model (max |z| of its discrete
-    closed loop 1 or more); flown as asked (a small test mill, a study of a design that fails), said once per
-    build."""
 
 
 def _warn_unstable_chain(design, path: Path, env_id: str) -> None:
