@@ -71,6 +71,30 @@ def integration_diagnosis(task, b: int) -> str:
         return f"no diagnosis of the state ({type(err).__name__}: {err})"
 
 
+def failed_step_culprits(sim, status: int) -> str:
+    """What a copy's failed physics step broke, from its last good state in ``sim`` (the copy's simulator): for the
+    LIMIT status the bodies over the speed or rate limit with their values, the step taken again at the batch's
+    finest retry, dt / 16 (``sim.batch.SUBSTEP_DIVISORS``; dt where retries are off), without those checks
+    (``sim.reports.trial_state``, ``state_problems``); for NONFINITE the alpha-rate term's cause where it is one; ""
+    where nothing shows (the last good state alone is below every limit by construction). Ends with "; " when not
+    empty."""
+    from laddermill_gym.sim.batch import SUBSTEP_DIVISORS
+    from laddermill_gym.sim.reports import state_problems, step_alpha_rate_cause, trial_state
+
+    h = sim.settings.dt / (SUBSTEP_DIVISORS[-1] if SUBSTEP_DIVISORS else 1)  # the finest step taken (no retries: dt)
+    try:
+        if status == LIMIT:
+            trial = trial_state(sim, h)
+            bad = state_problems(sim, trial[1]) if trial is not None else []
+            return f"in the step to t = {sim.t + h:.6g} s: {', '.join(bad[:4])}; " if bad else ""
+        if status == NONFINITE:
+            cause = step_alpha_rate_cause(sim, h)
+            return f"{cause}; " if cause else ""
+    except (ValueError, RuntimeError, ArithmeticError, AttributeError, TypeError) as err:  # must not hide the failure
+        return f"(the failed step not retraced: {type(err).__name__}: {err}); "
+    return ""
+
+
 def shared_failure_text(task, b: int, code: int, statuses: dict[int, str], unit: str = "wing") -> str | None:
     """The sentence for copy ``b``'s failure ``code`` where the wing families word it alike: "" for 0, the
     integrator's status for 1, a ground stop of the integrator for 2, the cable's tension [N] for 3; None where the
@@ -81,8 +105,10 @@ def shared_failure_text(task, b: int, code: int, statuses: dict[int, str], unit:
     bt = task.batch
     t = float(bt.t[b])
     if code == 1:
-        return (f"t = {t:.2f} s: integration failed ({statuses.get(int(bt.status[b]), 'unknown')}); "
-                f"{_in_units(integration_diagnosis(task, b), unit)}")
+        status = int(bt.status[b])
+        culprits = failed_step_culprits(copy_simulator(task, b), status) if np.all(np.isfinite(bt.states[b])) else ""
+        return (f"t = {t:.2f} s: integration failed ({statuses.get(status, 'unknown')}); "
+                f"{_in_units(culprits + integration_diagnosis(task, b), unit)}")
     if code == 2 and bt.status[b] == GROUND:
         stop = ground_stop_text(bt.assembly, bt.states[b], bt.settings.ground_height)
         return f"t = {t:.2f} s: {_in_units(stop, unit)}"

@@ -53,7 +53,9 @@ class EpisodeResults:
     mean_power_W (n,);  max_lateral_m (n, n_wings) largest |lateral offset| of every wing;
     clipped_fraction (n,) share of action entries outside [-1, 1];
     t (T + 1,) [s] and lateral_m (n, T + 1, n_wings) lateral offsets (nan after an episode ended), if recorded;
-    failure_names: failure code -> name of the environment (the wings' :data:`FAILURES` or the craft's).
+    failure_names: failure code -> name of the environment (the wings' :data:`FAILURES` or the craft's);
+    failure_reasons (n,) the env's ``info["failure_reason"]`` at the episode's end (time, body, quantity, value;
+    "" where it ran to the time limit).
     """
 
     returns: np.ndarray
@@ -65,6 +67,7 @@ class EpisodeResults:
     t: np.ndarray | None = None
     lateral_m: np.ndarray | None = None
     failure_names: dict[int, str] = field(default_factory=lambda: dict(FAILURES))
+    failure_reasons: list[str] | None = None
 
 
 def run_episodes(controller, env, n_episodes: int | None = None, record: bool = True,
@@ -85,6 +88,7 @@ def run_episodes(controller, env, n_episodes: int | None = None, record: bool = 
     alive = np.ones(n, bool)
     ret, power, steps, clipped = np.zeros(n), np.zeros(n), np.zeros(n, int), np.zeros(n)
     failures = np.zeros(n, int)
+    reasons = [""] * n
     lengths = np.zeros(n)
     dy0 = lateral(obs)
     max_lat = np.abs(dy0)
@@ -103,13 +107,15 @@ def run_episodes(controller, env, n_episodes: int | None = None, record: bool = 
             series.append(np.where(alive[:, None], dy, np.nan))
         ended = alive & (term | trunc)
         failures[ended] = info["failure"][ended]
+        for i in np.flatnonzero(ended & (info["failure"] != 0)):
+            reasons[i] = str(info["failure_reason"][i])
         lengths[ended] = info["t"][ended]
         alive &= ~ended
         bar.update(1)
     bar.close()
     out = EpisodeResults(returns=ret, lengths_s=lengths, failures=failures, mean_power_W=power / np.maximum(steps, 1),
                          max_lateral_m=max_lat, clipped_fraction=clipped / np.maximum(steps * task.n_actions, 1),
-                         failure_names=dict(getattr(env, "failure_names", FAILURES)))
+                         failure_names=dict(getattr(env, "failure_names", FAILURES)), failure_reasons=reasons)
     if record:
         lat = np.stack(series, axis=1)
         out.t = task.control_dt * np.arange(lat.shape[1])
@@ -122,13 +128,13 @@ def write_tables(out: Path, results: dict[str, EpisodeResults]) -> None:
     with open(out / "summary.csv", "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["controller", "seed", "return", "length_s", "failure", "mean_power_W", "max_lateral_m",
-                    "clipped_fraction"])
+                    "clipped_fraction", "failure_reason"])
         for name, res in results.items():
             for i in range(len(res.returns)):
                 fail = res.failure_names[int(res.failures[i])]
                 w.writerow([name, i, f"{res.returns[i]:.4f}", f"{res.lengths_s[i]:.2f}", fail,
                             f"{res.mean_power_W[i]:.1f}", f"{res.max_lateral_m[i].max():.4f}",
-                            f"{res.clipped_fraction[i]:.4f}"])
+                            f"{res.clipped_fraction[i]:.4f}", res.failure_reasons[i] if res.failure_reasons else ""])
     with open(out / "lateral.csv", "w", newline="") as fh:  # long format: the episodes end at different times
         w = csv.writer(fh)
         w.writerow(["controller", "t_s", "wing", "dy_m"])

@@ -318,6 +318,8 @@ def failure_message(sim, status: int, h: float) -> str:
         culprit = _limit_culprits(sim, trial[1]) if trial is not None else []
         own = getattr(sim, "limit_cause", None)  # a model's physical limit of its own (the winch's reel-in end)
         own = own(h) if callable(own) else None
+        if own and not culprit:  # that limit alone: a physical end of the model, not a numerical breakdown
+            return f"physical limit at t = {sim.t:.6g} s, in the step to t = {sim.t + h:.6g} s: {own}"
         culprit = culprit + [own] if own else culprit
     elif status == NONFINITE and np.all(np.isfinite(sim.state)):
         x = _rk4_trial(sim, h)

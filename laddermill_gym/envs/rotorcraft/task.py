@@ -332,13 +332,17 @@ class CraftTask(TaskCore):
         return sim
 
     def _diagnosis(self, b: int) -> str:
-        """The simulator's diagnosis of copy ``b``'s state; for a state that is not finite (the simulator refuses
-        one) its first non-finite entry."""
+        """What copy ``b``'s failed step broke (``envs.wing_failures.failed_step_culprits``) and the simulator's
+        diagnosis of its last good state; for a state that is not finite (the simulator refuses one) its first
+        non-finite entry."""
+        from laddermill_gym.envs.wing_failures import failed_step_culprits
+
         x = self.batch.states[b]
         bad = np.flatnonzero(~np.isfinite(x))
         if bad.size:
             return f"state[{int(bad[0])}] = {x[bad[0]]} is not finite ({bad.size} entries)"
-        return self.simulator(b).diagnose()
+        sim = self.simulator(b)
+        return failed_step_culprits(sim, int(self.batch.status[b])) + sim.diagnose()
 
     def failure_text(self, b: int, code: int) -> str:
         """A sentence on why copy ``b`` terminated with failure ``code`` (time and quantity); "" for code 0."""
