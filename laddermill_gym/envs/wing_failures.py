@@ -95,6 +95,16 @@ def failed_step_culprits(sim, status: int) -> str:
     return ""
 
 
+def _copy_culprits(task, b: int, status: int) -> str:
+    """:func:`failed_step_culprits` of copy ``b``'s simulator; a simulator that cannot be built says so instead
+    (the read-out must not hide the failure)."""
+    try:
+        sim = copy_simulator(task, b)
+    except (ValueError, RuntimeError, AttributeError, IndexError) as err:
+        return f"(the failed step not retraced: {type(err).__name__}: {err}); "
+    return failed_step_culprits(sim, status)
+
+
 def shared_failure_text(task, b: int, code: int, statuses: dict[int, str], unit: str = "wing") -> str | None:
     """The sentence for copy ``b``'s failure ``code`` where the wing families word it alike: "" for 0, the
     integrator's status for 1, a ground stop of the integrator for 2, the cable's tension [N] for 3; None where the
@@ -106,7 +116,7 @@ def shared_failure_text(task, b: int, code: int, statuses: dict[int, str], unit:
     t = float(bt.t[b])
     if code == 1:
         status = int(bt.status[b])
-        culprits = failed_step_culprits(copy_simulator(task, b), status) if np.all(np.isfinite(bt.states[b])) else ""
+        culprits = _copy_culprits(task, b, status) if np.all(np.isfinite(bt.states[b])) else ""
         return (f"t = {t:.2f} s: integration failed ({statuses.get(status, 'unknown')}); "
                 f"{_in_units(culprits + integration_diagnosis(task, b), unit)}")
     if code == 2 and bt.status[b] == GROUND:
