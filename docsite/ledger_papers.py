@@ -117,7 +117,7 @@ LANSDORP = Covered(
            "Delta L = 200 m", "eq. 9, is", "eq. 9 gives", "eqs. 10-14 fed",
            "(reel-in at 5 m/s, not 16.7; a 10 m/s wind; one tether element)",
            "(400 s, the registered 0.01 rad direction step;", "| 400 s |", "the 240 m drum"),
-    timings=("optimised in 1.3-2.7 s (median of 5;", "15 min;", "| PPO (15 min) |"),
+    timings=("optimised in 0.6-2.6 s on the development machines (median of 5;", "15 min;", "| PPO (15 min) |"),
     derived=("needs 1.8 MW while flying",),  # 1 MW / 0.566 of the time
     # a PPO run of `laddermill train configs/agents/ppo_pumping_kite.yaml` (15 min; not shipped) and its 1200 s run
     history=(

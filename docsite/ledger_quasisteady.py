@@ -89,7 +89,13 @@ QUASISTEADY = Covered(
         "18 (L >= 2.5 Delta L), as in the paper's Fig. 17.",
         'The shapes are 1 at 100 m.',
         'The speed is linear between 10 m and 80 m.',
-        'The shipped set is extrapolated to 600 m only.',
+        'It is extrapolated to 600 m only.',
+        # the limited exponent's two calm cases (tests/test_site_wind.py checks the first against the closed form)
+        'An hour calm at 10 m under wind at 80 m has an unbounded exponent and takes the upper limit, 0.6;',
+        'an hour calm at both heights takes 0 (its speeds are 0 anyway).',
+        'frequencies that add up to more than 100 %,',
+        'For the 2010 data these are',
+        "with the 2010 set extrapolated higher, design 1 climbs with it.",
         'Every output that uses heights above 80 m says so.',
         'Above 2000 distinct heights (years of soundings) they are resampled every 5 m.',
         '2020, 8 clusters x 100 bins, 10-600 m. - :',
@@ -134,13 +140,17 @@ QUASISTEADY = Covered(
     ),
     timings=(
         # the page's own timing table (python -m laddermill_gym.quasisteady.timing, median of 5 on the shared 2-core
-        # machine, 2026-12-07 03:37: 1.24 s, 9786 solves, 0.127 ms; 0.57 s, 4193, 0.135 ms); the hourly runs 2026-11-24
+        # machine, 2026-12-07 22:13, znver4: 2.59 s, 13573 solves, 0.191 ms; 2.33 s, 11457, 0.203 ms; at 03:37 on
+        # another machine: 1.24 s, 9786, 0.127 ms; 0.57 s, 4193, 0.135 ms); the hourly runs 2026-11-24
         '**Timing.** One year of daily states (365)',
-        'on the shipped 2010 data, median of 5 runs on the shared 2-core development machine (2026-12-07, load 0.8):',
+        'on the shipped 2010 data, median of 5 runs on the shared 2-core development machine (2026-12-07 22:13, load',
+        '0.8;',
         'Table 1 (eq. 16)',
-        '1.24 | 9786 | 0.13',
+        '2.59 | 13573 | 0.19',
         'Table 2 (eq. 20)',
-        '0.57 | 4193 | 0.14',
+        '2.33 | 11457 | 0.20',
+        'The same code printed 9786 and 4193 inner solves (1.24 and 0.57 s) at 03:37 that day on another machine',
+        'the number of solves, moves with the last bits of the machine\'s arithmetic (numpy\'s SIMD loops and',
         'With every hour a state of its own (8760 C_L variables), one run of each case took 11 s (Table 1) and '
         '16 s (Table 2) on the same machine (2026-11-24).',
         'The command (prints the median of 5 runs per case):',
@@ -181,7 +191,9 @@ QUASISTEADY = Covered(
         Printed('site_sweeps', (
             'Its power-law extrapolation keeps the wind growing with height, so design 1 climbs to the top of the '
             'allowed range (600 m).',
-            'its h = 353.6 m at 45 deg and h = 272.3 m at 57 deg are both L = 500 m.',
+            # two snippets: Table 1's paper column and Table 2's lie more than 60 printed numbers apart
+            'its h = 353.6 m at 45 deg and',
+            'h = 272.3 m at 57 deg are both L = 500 m.',
             'On the Cabauw profiles the shortest cable is active for design 2 (L = 500 m)',
             'and nearly so for design 1 (L = 560 m).',
             'On the 2010 data our laddermill comes close: 46.7 % against 16.8 %.',
@@ -191,6 +203,10 @@ QUASISTEADY = Covered(
             # not_rerun: the figure drew the mean, the notes were printed only where no extrapolation note replaced
             # them)
             '- f <= 1/3 gives a mean of 0.97 MW.',
+            # the tables' row "On a bound of the search" (2026-12-07): 'h = 600 m: the upper bound, the top of the
+            # data (every state has data up to 600 m)' and 'theta = 57 deg: the lower bound, the case's theta_bounds'
+            "design 1's altitude, 600 m, the top of the data, and design 2's angle, 57 deg, the case's lower bound.",
+            'On Cabauw their bars add up to the 56.6 % that the bins cover,',
             "Above 80 m it follows a power law whose exponent comes from each hour's two speeds, clipped to [0, 0.6] "
             '(247 of 8760 hours).',
         )),

@@ -118,6 +118,9 @@ def test_uniform_wind_closed_form_optimum():
     assert res.design.d == pytest.approx(d, rel=1e-3)
     assert res.design.S == pytest.approx(S, rel=1e-3)
     assert res.solution.mean_power == pytest.approx(case.power_target, rel=1e-6)
+    # the largest angle is the case's bound, and the result says so (no other variable is on a bound: the cable's
+    # shortest length is eq. 18's, not a bound of h)
+    assert res.at_bounds == ("theta = 80 deg: the upper bound, the case's theta_bounds",)
 
 
 def _literal(case, wind, starts):
@@ -242,3 +245,39 @@ def test_covered_heights_stop_at_the_first_gap_and_name_data_without_any():
     with pytest.raises(ValueError, match="no height at which every wind state has data"):
         covered_heights(SiteWind(hs, np.array([[np.nan, 6.0, 7.0, 8.0], [5.0, np.nan, np.nan, np.nan]]),
                                  np.array([0.5, 0.5]), ("a", "b"), source="gappy.csv"))
+
+
+def test_an_optimum_that_follows_a_bound_is_named_with_the_bound():
+    """A wind that rises with height up to the data's top: eq. 16's cost has no altitude term, so the design rises
+    with the top of the data (200 m where every second state stops there, 600 m on the whole data, 400 m under the
+    case's own 400 m bound), and each result names the bound it sits on and where that bound comes from."""
+    hs = np.array([0.0, 100.0, 200.0, 300.0, 600.0])
+    v = np.array([[5.0, 9.0, 10.0, 11.0, 12.5]] * 20) * np.linspace(0.9, 1.3, 20)[:, None]
+    full = SiteWind(hs, v, np.full(20, 1 / 20), tuple(f"2020-01-{i + 1:02d}" for i in range(20)))
+    cut = dataclasses.replace(full, speed=np.where((np.arange(20)[:, None] % 2 == 1) & (hs > 200.0), np.nan, v))
+    capped = dataclasses.replace(TABLE1, h_bounds=(TABLE1.h_bounds[0], 400.0))
+    for case, wind, top, why in ((TABLE1, cut, 200.0, "the top of the data (every state has data up to 200 m)"),
+                                 (TABLE1, full, 600.0, "the top of the data (every state has data up to 600 m)"),
+                                 (capped, full, 400.0, "the case's h_bounds")):
+        res = optimise(case, wind)
+        assert res.design.h == pytest.approx(top, rel=1e-9)
+        assert res.at_bounds == (f"h = {top:g} m: the upper bound, {why}",)
+
+
+def test_a_state_where_even_no_lift_overloads_the_cable_is_landed():
+    """Eq. 9 at C_L = 0 (kite and cable drag alone, written out here) above the cable's strength (eq. 15): that
+    state's kite is landed (no tension, no power, C_L 0); every other state flies at or above its drag-only
+    tension and within the strength."""
+    case = TABLE2
+    des = Design(300.0, np.radians(60.0), 0.003, 150.0)
+    w = np.linspace(4.0, 120.0, 59)
+    sol = solve_states(case, des, w, np.full(w.size, 1 / w.size))
+    f_max = 1.6e9 / 2.5 * np.pi * 0.003**2 / 4
+    w_e = w * (np.sin(des.theta) - 1 / 3)
+    drag_only = 0.5 * 1.225 * des.S * (0.03 + des.d * des.length * 1.2 / (4 * des.S)) * w_e ** 2
+    landed = drag_only > f_max
+    assert 3 <= landed.sum() < w.size - 3  # the test's winds reach past the strength, not all of them
+    assert np.all(sol.tension[landed] == 0.0) and np.all(sol.power[landed] == 0.0) and np.all(sol.cl[landed] == 0.0)
+    flown = ~landed & (sol.tension > 0)
+    assert np.all(sol.tension[flown] >= drag_only[flown] * (1 - 1e-12))
+    assert np.all(sol.tension <= f_max * (1 + 1e-12))

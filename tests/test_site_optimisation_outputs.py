@@ -156,3 +156,26 @@ def test_the_evaluation_data_are_read_in_the_format_given(tmp_path, monkeypatch)
     assert main(["--wind", str(_profiles(tmp_path)), "--out", str(tmp_path / "o"), "--quiet", "--case", "table2",
                  "--format", "csv", "--no-turbine"]) == 0
     assert formats and set(formats) == {"csv"}
+
+
+def test_histograms_show_each_state_at_its_share_of_the_whole_time(tmp_path):
+    """Bins that cover 56.6 % of the time (the Cabauw frequency table's sum, read here with the csv module) draw
+    bars that add up to 56.6 %, each state at its own time share, and the axis says what the bars cover (they were
+    scaled to 100 % under the label 'share of time'); states that cover the whole time add up to 100 %."""
+    from laddermill_gym.figure_files import subplots
+    from laddermill_gym.quasisteady.site_data import shipped_wind
+    from laddermill_gym.quasisteady.site_outputs import time_histogram
+
+    freq = next(Path(__file__).resolve().parents[1].glob("configs/wind/**/*freq*.csv"))
+    with open(freq, newline="") as fh:
+        rows = [r for r in csv.reader(fh, delimiter=";") if r][1:]
+    share = sum(float(r[4]) for r in rows)  # [%]
+    wind = shipped_wind("cabauw")
+    _, ax = subplots(1, 2)
+    x = np.arange(wind.n) % 7
+    heights = time_histogram(ax[0], x, wind.weight, np.arange(8) - 0.5, "x")
+    assert heights.sum() == pytest.approx(share, rel=1e-12)
+    np.testing.assert_allclose(heights, [100 * wind.weight[x == k].sum() for k in range(7)], rtol=1e-12)
+    assert ax[0].get_ylabel() == f"share of time [%] (bars: {share:.1f} %, the data)"
+    whole = time_histogram(ax[1], np.zeros(4), np.full(4, 0.25), 3, "x")
+    assert whole.sum() == pytest.approx(100.0) and ax[1].get_ylabel() == "share of time [%]"

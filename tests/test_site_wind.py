@@ -242,3 +242,47 @@ def test_bad_cluster_files_named(tmp_path):
     shape.write_text("h [m];u1 [-];v1 [-];scale factor1 [-]\n10.0;0.7;0.0;1.1\n100.0;0.9;0.0;1.1\n")
     with pytest.raises(SiteWindError, match="shape.csv: the shape must be 1 at h = 100 m"):
         read_clusters([shape], freq)
+
+
+def test_cluster_tables_refuse_what_would_change_the_data(tmp_path):
+    """Each bad entry of a cluster frequency table or shape file is named by file, line, field and value, where the
+    reader used to truncate a cluster number 1.7 to cluster 1, or leave a sum of 150 % to a message without the
+    file."""
+    from laddermill_gym.atmosphere.site_wind_formats import read_clusters
+
+    shape = tmp_path / "shape.csv"
+    shape.write_text("h [m];u1 [-];v1 [-];sf [-]\n10.0;0.7;0.0;1\n100.0;1.0;0.0;1\n")
+    freq = tmp_path / "freq.csv"
+    head = "cluster;bin;v100_low [m/s];v100_high [m/s];frequency [%]\n"
+    cases = {"1;0;5;6;10\n1.7;1;6;7;10\n": r"freq.csv: line 3, field 'cluster' = 1.7: a cluster number must be a whole",
+             "1;0;5;6;-3\n": r"freq.csv: line 2, field 'frequency \[%\]' = -3: a frequency must be >= 0",
+             "1;0;6;6;3\n": r"freq.csv: line 2, field 'v100_high \[m/s\]' = 6: the bin's upper wind speed must be",
+             "1;0;5;6;90\n1;1;6;7;60\n": r"freq.csv: field 'frequency \[%\]': the frequencies add up to 150 %, more "}
+    for rows, message in cases.items():
+        freq.write_text(head + rows)
+        with pytest.raises(SiteWindError, match=message):
+            read_clusters([shape], freq)
+    freq.write_text(head + "1;0;5;6;40\n1;1;6;7;60\n")  # exactly 100 %: accepted, weights 0.4 and 0.6
+    np.testing.assert_allclose(read_clusters([shape], freq).weight, [0.4, 0.6])
+    shape.write_text("h [m];u1 [-];v1 [-];sf [-]\n100.0;1.0;0.0;1\n10.0;0.7;0.0;1\n")
+    with pytest.raises(SiteWindError, match=r"shape.csv: line 3, field 'h \[m\]' = 10: heights must rise"):
+        read_clusters([shape], freq)
+
+
+def test_site_wind_refuses_a_weight_that_is_not_a_number():
+    from laddermill_gym.atmosphere.site_wind import SiteWind
+
+    with pytest.raises(ValueError, match=r"weight nan of state 'b': weights must be finite"):
+        SiteWind(np.array([10.0, 100.0]), np.ones((2, 2)), np.array([0.5, np.nan]), ("a", "b"))
+
+
+def test_a_calm_lower_height_under_wind_takes_the_upper_exponent_limit(tmp_path):
+    """v1 = 0, v2 > 0: ln(v2 / v1) / ln(h2 / h1) is +inf, so the limited exponent is the upper limit 0.6 and the
+    speed at 600 m is v2 (600 / 80)^0.6 (it was the lower limit 0: v2, as if the shear were none)."""
+    p = tmp_path / "two.csv"
+    p.write_text("variable_name,wind_speed,wind_speed\nheight,10,80\n2010-01-01 00:00:00,0.0,5\n"
+                 "2010-01-01 01:00:00,4.0,0.0\n2010-01-01 02:00:00,0.0,0.0\n")
+    w = read_two_heights(p, top=600.0)
+    np.testing.assert_allclose(w.at(600.0), [5.0 * (600.0 / 80.0) ** 0.6, 0.0, 0.0], rtol=1e-12)
+    np.testing.assert_allclose(w.at(45.0), [2.5, 2.0, 0.0], rtol=1e-12)  # linear between the two heights
+    assert "in 3 of 3 hours" in w.notes[0]

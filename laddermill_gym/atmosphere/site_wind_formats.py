@@ -136,6 +136,10 @@ def read_clusters(profile_paths: list[Path | str], frequency_path: Path | str) -
         header, a = _read_semicolon(p, 3)
         if not header[0].startswith("h"):
             raise SiteWindError(f"{p}: line 1, field '{header[0]}': expected the height column 'h [m]'")
+        if np.any(np.diff(a[:, 0]) <= 0):
+            bad = int(np.flatnonzero(np.diff(a[:, 0]) <= 0)[0])
+            raise SiteWindError(f"{p}: line {bad + 3}, field '{header[0]}' = {a[bad + 1, 0]:g}: heights must rise "
+                                f"line by line (the line before has {a[bad, 0]:g})")
         if heights is None:
             heights = a[:, 0]
         elif not np.array_equal(heights, a[:, 0]):
@@ -147,13 +151,11 @@ def read_clusters(profile_paths: list[Path | str], frequency_path: Path | str) -
         shapes.append(mag)
     fpath = Path(frequency_path)
     header, f = _read_semicolon(fpath, 5)
+    _check_frequencies(fpath, header, f)
     cl = f[:, 0].astype(int)
     if cl.min() < 1 or cl.max() > len(shapes):
         raise SiteWindError(f"{fpath}: field '{header[0]}': clusters {cl.min()}..{cl.max()}, "
                             f"but {len(shapes)} profile files")
-    if np.any(f[:, 4] < 0) or np.any(f[:, 3] <= f[:, 2]):
-        bad = int(np.flatnonzero((f[:, 4] < 0) | (f[:, 3] <= f[:, 2]))[0])
-        raise SiteWindError(f"{fpath}: line {bad + 2}: negative frequency or an empty wind-speed bin")
     v100 = 0.5 * (f[:, 2] + f[:, 3])
     speed = v100[:, None] * np.array(shapes)[cl - 1]
     labels = tuple(f"cluster {c} bin {int(b)}" for c, b in zip(cl, f[:, 1], strict=True))
@@ -161,6 +163,24 @@ def read_clusters(profile_paths: list[Path | str], frequency_path: Path | str) -
                     source=f"{fpath.name} and {len(shapes)} cluster shapes (Schelbergen et al. 2020)",
                     notes=(f"wind-speed bins cover {f[:, 4].sum():.1f} % of the time; the rest (below cut-in or "
                            f"above cut-out) is outside the data",))
+
+
+def _check_frequencies(path: Path, header: list[str], f: np.ndarray) -> None:
+    """SiteWindError naming the file, line, field and value of the first bad entry of a cluster frequency table
+    ``f`` (rows: cluster, bin, v100_low, v100_high, frequency [%]; every entry finite, ``parse_number``): a cluster
+    number that is not a whole number, a negative frequency, a bin whose upper speed is not above its lower one, or
+    frequencies that add up to more than 100 %."""
+    checks = ((0, f[:, 0] == np.round(f[:, 0]), "a cluster number must be a whole number"),
+              (4, f[:, 4] >= 0, "a frequency must be >= 0"),
+              (3, f[:, 3] > f[:, 2], "the bin's upper wind speed must be above its lower one"))
+    for col, ok, why in checks:
+        bad = np.flatnonzero(~ok)
+        if bad.size:
+            k = int(bad[0])
+            raise SiteWindError(f"{path}: line {k + 2}, field '{header[col]}' = {f[k, col]:g}: {why}")
+    total = float(f[:, 4].sum())
+    if total > 100.0 + 1e-6:
+        raise SiteWindError(f"{path}: field '{header[4]}': the frequencies add up to {total:g} %, more than 100 %")
 
 
 # ------------------------------------------------------------------------------------------- two-height series
@@ -205,7 +225,9 @@ def read_two_heights(path: Path | str, top: float = 1000.0, step: float = 10.0,
                                     f"{row[c]!r}: must be finite and >= 0")
     with np.errstate(divide="ignore", invalid="ignore"):
         raw = np.log(v[:, 1] / v[:, 0]) / np.log(h2 / h1)
-    alpha = np.clip(np.where(np.isfinite(raw), raw, alpha_range[0]), *alpha_range)
+    # a calm hour at both heights (nan) takes the lower limit (its speeds are 0 anyway); a calm lower height under
+    # wind (+inf) or a calm upper one (-inf) is limited as any other exponent
+    alpha = np.clip(np.where(np.isnan(raw), alpha_range[0], raw), *alpha_range)
     n_clip = int(np.sum(~(raw == alpha)))  # limited, or undefined (a calm hour)
     grid = np.concatenate((np.arange(h1, h2, step), np.arange(h2, top + 0.5 * step, step)))
     t = np.clip((grid - h1) / (h2 - h1), 0.0, 1.0)

@@ -70,7 +70,7 @@ def _run_case(case, spec, wind, out, quiet, fmt="auto"):
                                    f"{case.name} design run through {_eval_spec(spec)}"))
     if not quiet:
         print(f"  {case.name} on {spec}: {r.states} states, {r.evaluations} inner solves, {r.wall_time:.2f} s, "
-              f"feasible {r.feasible}")
+              f"feasible {r.feasible}" + "".join(f"; on a bound: {note}" for note in r.at_bounds))
         # the time mean (eq. 16's P-bar): time outside the data, and states without data at h, count as no power
         means = ", ".join(f"{lab} mean {np.sum(ev.weight[ok] * P) / 1e6:.3f} MW" for lab, (P, _) in runs.items())
         print(f"  {case.name} design run through {_eval_spec(spec)} (figs. 19-20): {means}"
@@ -173,7 +173,8 @@ def run(args) -> int:
                                          "mean_power_W": r.solution.mean_power,
                                          "mean_tension_N": r.solution.mean_tension, "F_max_N": r.solution.f_max,
                                          "values": so.design_values(r, wind.weight), "wall_time_s": r.wall_time,
-                                         "inner_solves": r.evaluations, "states": r.states}
+                                         "inner_solves": r.evaluations, "states": r.states,
+                                         "at_bounds": list(r.at_bounds)}
             if cname == args.case[-1]:
                 speeds = np.linspace(3.0, 25.0, 45)
                 curves = so.model_power_curves(case, r.design, speeds)

@@ -40,6 +40,7 @@ class SiteResult:
     wall_time: float        # [s] optimisation wall time
     evaluations: int        # inner problems solved
     states: int             # wind states used
+    at_bounds: tuple[str, ...] = ()  # free variables on a bound of the search, each with its value and source
 
 
 def _usable(wind: SiteWind, h: float):
@@ -137,7 +138,36 @@ def optimise(case: SiteCase, wind: SiteWind, fixed: dict | None = None, starts: 
         des, sol = solve(z0)
         best = ((False, sol.ratio), des, sol)
     (ok, _), des, sol = best
-    return SiteResult(case, des, sol, bool(ok), time.perf_counter() - t0, count[0], int(np.sum(wind.weight > 0)))
+    return SiteResult(case, des, sol, bool(ok), time.perf_counter() - t0, count[0], int(np.sum(wind.weight > 0)),
+                      bound_notes(des, case, wind, fixed))
+
+
+#: how each design variable is written in a bound's note: (unit, factor from SI)
+_SHOWN = {"h": ("m", 1.0), "theta": ("deg", 180.0 / np.pi), "d": ("mm", 1e3), "S": ("m^2", 1.0)}
+
+
+def bound_notes(design: Design, case: SiteCase, wind: SiteWind, fixed: dict | None = None) -> tuple[str, ...]:
+    """The free variables of ``design`` that lie on a bound of the search (within 1e-6 of its range), each as
+    'h = 600 m: the upper bound, the top of the data (every state has data up to 600 m)': an optimum there is the
+    bound's, not the site's (moving the bound moves it). The altitude's bounds are ``case.h_bounds`` narrowed to
+    the heights at which every wind state has data (:func:`covered_heights`); the others are the case's."""
+    bottom, top = covered_heights(wind)
+    bounds = dict(zip(NAMES, _bounds(case, wind), strict=True))
+    source = {("h", 0): ("the case's h_bounds" if bottom <= case.h_bounds[0] else
+                         f"the lowest height with data in every state ({bottom:g} m)"),
+              ("h", 1): ("the case's h_bounds" if top >= case.h_bounds[1] else
+                         f"the top of the data (every state has data up to {top:g} m)")}
+    notes = []
+    for name in NAMES:
+        if name in (fixed or {}):
+            continue
+        value, (lo, hi) = getattr(design, name), bounds[name]
+        for side, b in ((0, lo), (1, hi)):
+            if abs(value - b) <= 1e-6 * (hi - lo):
+                unit, k = _SHOWN[name]
+                why = source.get((name, side), f"the case's {name}_bounds")
+                notes.append(f"{name} = {k * value:.4g} {unit}: the {('lower', 'upper')[side]} bound, {why}")
+    return tuple(notes)
 
 
 def starting_points(case, bounds, free, n, max_power):
