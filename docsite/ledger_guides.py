@@ -44,7 +44,8 @@ GETTING_STARTED = Covered(
 
 
 SCALE_OUT = Covered(  # every figure a dated timing on the shared 2-core machine (the page gives the load)
-    given=("cores / N, at least 1 |", "one big machine) | 1 |", "of this node) | 1 |", "that cluster ( ) | 1 |",
+    given=("accept a connection within 5 s is refused in one line",  # ray_start.PROBE_TIMEOUT_S
+           "cores / N, at least 1 |", "one big machine) | 1 |", "of this node) | 1 |", "that cluster ( ) | 1 |",
            "a 0.5 s episode per environment", "two seeds, a 1 - cos gust, 120 s episodes", "a 2-core machine shared",
            "on 2 local workers", "| 2 workers [s] |", "lqr (3 repeats)", "open_loop (1 repeat; )", "1. **The same code",
            "a SHA-256", "2. **A filled numba cache", "3. **Shared paths**", "Ray 2.60 turns on", "(Ray 2.60 here"),

@@ -61,6 +61,9 @@ class _FakeRay:
     def cluster_resources(self):
         return {"CPU": float(self.cpus)}
 
+    def available_resources(self):  # every CPU free (tests/test_parallel_start.py: some held)
+        return {"CPU": float(self.cpus)}
+
     def remote(self, num_cpus=1, max_concurrency=1):
         fake = self
 

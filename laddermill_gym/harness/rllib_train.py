@@ -60,9 +60,24 @@ def _ray_modules():
         from ray.rllib.algorithms.ppo import PPOConfig
         from ray.rllib.core.rl_module.default_model_config import DefaultModelConfig
         from ray.tune.registry import register_env
-    except ImportError:
-        raise RuntimeError(RLLIB_HINT) from None
+    except ImportError as err:  # the missing module named: a present but broken RLlib (a dependency missing) too
+        raise RuntimeError(f"{RLLIB_HINT} ({err})") from None
     return PPOConfig, DefaultModelConfig, register_env
+
+
+def check_runner_cpus(env_runners: int) -> str | None:
+    """Start Ray (or join ``RAY_ADDRESS``'s cluster) as RLlib would and return the error text when ``env_runners``
+    exceeds the cluster's CPUs (a runner takes one: those beyond would never start, and the first iteration would
+    wait for them without end); None when they fit."""
+    import ray
+
+    if not ray.is_initialized():
+        ray.init(logging_level="warning")
+    cpus = int(ray.cluster_resources().get("CPU", 0))
+    if env_runners > cpus:
+        return (f"--env-runners {env_runners}: the Ray cluster has {cpus} CPUs, one per env runner (the runners beyond "
+                "them would never start)")
+    return None
 
 
 def ppo_config(env_id: str = "laddermill_gym/TetheredWing-v0", env_config: dict | None = None, how: str = "entry",
@@ -71,7 +86,8 @@ def ppo_config(env_id: str = "laddermill_gym/TetheredWing-v0", env_config: dict 
     """RLlib's ``PPOConfig`` for ``env_id`` on ``env_runners`` remote runners (0: the driver samples itself) of
     ``envs_per_runner`` copies each; ``how`` is "entry" or "register" (module doc); ``train_batch`` env steps per
     iteration, split into minibatches of ``minibatch`` over ``epochs`` passes; ``hidden`` the layer widths of the
-    policy and value networks."""
+    policy and value networks. RLlib seeds each runner from ``seed`` and its index, so the same seed with another
+    number of runners samples other episodes (a 1-runner and a 2-runner run differ from the first iteration)."""
     PPOConfig, DefaultModelConfig, register_env = _ray_modules()
     env_config = dict(env_config or {})
     if how == "entry":
@@ -151,6 +167,9 @@ def main(argv: list[str] | None = None) -> int:
                             a.minibatch, a.epochs, seed=a.seed)
     except RuntimeError as err:
         p.error(str(err))
+    too_many = check_runner_cpus(a.env_runners)
+    if too_many:
+        p.error(too_many)
     train(config, a.iterations)
     return 0
 

@@ -7,7 +7,9 @@ running returns the results in the order of the tasks:
 * serial (``workers=0``, the default): in this process, one after the other;
 * local processes (``workers=N``): :class:`concurrent.futures.ProcessPoolExecutor` with N workers started by
   ``spawn`` (a fresh interpreter, never a fork of a process whose numba threads are running);
-* Ray (``ray="local"|"auto"|ADDRESS``): N Ray actors (one CPU each; N = ``workers`` or the cluster's CPUs).
+* Ray (``ray="local"|"auto"|ADDRESS``): N Ray actors (one CPU each; N = ``workers`` or the cluster's free
+  CPUs); an actor gets tasks once it has started, so one waiting for a CPU holds none
+  (:mod:`laddermill_gym.studies.ray_start`, which also refuses an address that does not answer).
 
 Warm-up. A fresh process pays numba's compile of every kernel a task reaches on its first call (94 s of wall
 time for one environment on a loaded 2-core machine with an empty cache), or a load from the on-disk cache
@@ -51,9 +53,11 @@ from laddermill_gym.studies.pool_workers import (
     call_task,
     init_worker,
     source_digest,
+    start_worker,
     versions,
     worker_report,
 )
+from laddermill_gym.studies.ray_start import Starting, probe
 
 __all__ = ["Task", "Pool", "TasksFailed", "TasksInterrupted", "STOP_MESSAGE", "run_tasks", "worker_report",
            "source_digest", "add_arguments", "check_arguments", "RAY_HINT"]
@@ -137,7 +141,7 @@ class Pool:
     Parameters
     ----------
     workers : int        0: serially in this process; N >= 1: N local worker processes (``spawn``), or N Ray
-                         actors with ``ray`` (0 with ``ray``: one per CPU of the cluster)
+                         actors with ``ray`` (0 with ``ray``: one per free CPU of the cluster)
     ray : str or None    None (no Ray), ``"local"`` (start a one-node Ray here with ``workers`` CPUs),
                          ``"auto"`` (join the running cluster: ``RAY_ADDRESS`` or ``ray start`` on this node) or
                          a cluster address (``HOST:6379`` or ``ray://HOST:10001``)
@@ -163,6 +167,7 @@ class Pool:
         self._init = (uuid.uuid4().hex, warm, threads if (workers or ray) else None, versions())
         self._ex = self._ray = None
         self._actors: list = []
+        self._starting: Starting | None = None  # the actors' start (ray_start.py), asked at the first batch
         self._started_ray = False
         self._events: tuple = ()
 
@@ -174,6 +179,7 @@ class Pool:
                     self._ray.init(num_cpus=self.workers or os.cpu_count(), include_dashboard=False,
                                    logging_level="warning")
                 else:
+                    probe(self.ray)  # ray.init retries an address that does not answer without end
                     self._ray.init(address=self.ray, logging_level="warning")
                 self._started_ray = True
             cpus = int(self._ray.cluster_resources().get("CPU", 0))
@@ -183,14 +189,15 @@ class Pool:
 
                 raise UsageError(f"--workers {self.workers}: the Ray cluster ({self.ray}) has {cpus} CPUs, one per "
                                  "worker")
-            n = self.workers or max(1, cpus)
+            # workers 0: one actor per CPU free now (other jobs' actors hold the rest), at least one
+            n = self.workers or max(1, int(self._ray.available_resources().get("CPU", cpus)))
             n = max(1, min(n, self.cap)) if self.cap is not None else n
             actor = self._ray.remote(num_cpus=1, max_concurrency=2)(RayWorker)  # a thread for stop() beside call()
             self._actors = [actor.remote(*self._init) for _ in range(n)]
         elif self.workers:
             spawn = multiprocessing.get_context("spawn")
             self._events = (spawn.Event(), spawn.Event())  # the caller's stop and abort (pool_workers)
-            self._ex = cf.ProcessPoolExecutor(self.workers, mp_context=spawn, initializer=init_worker,
+            self._ex = cf.ProcessPoolExecutor(self.workers, mp_context=spawn, initializer=start_worker,
                                               initargs=(*self._init, self._events))
         else:
             init_worker(*self._init)
@@ -257,8 +264,15 @@ class Pool:
                     return
             return
         queue, running, failed, asked = list(range(len(tasks)))[::-1], {}, False, False
-        free = list(self._actors) if self._actors else [None] * self.workers
+        if self._actors and self._starting is None:
+            self._starting = Starting(self._ray, self._actors)
+        free = list(self._starting.ready) if self._actors else [None] * self.workers
         while queue or running:
+            if self._actors:  # an actor gets tasks once it has started (one waiting for a CPU would hold them)
+                try:
+                    self._starting.admit(free)
+                except RuntimeError as err:
+                    raise TasksFailed(str(err)) from err.__cause__
             while queue and free and not failed and not stop.requested:
                 i, slot = queue.pop(), free.pop()
                 with children_ignore_interrupts():  # a submit may start a local worker (interrupt.py)
@@ -269,7 +283,11 @@ class Pool:
                 asked = True
                 self._ask_to_stop([slot for _, slot in running.values()])
             if not running:
-                return
+                if not (self._actors and queue and self._starting.refs and not failed and not stop.requested):
+                    return
+                self._starting.warn_if_slow()  # tasks wait for an actor to start
+                self._ray.wait(list(self._starting.refs), num_returns=1, timeout=0.25)
+                continue
             done = (self._ray.wait(list(running), num_returns=1, timeout=0.25)[0] if self._actors else
                     cf.wait(running, timeout=0.25, return_when=cf.FIRST_COMPLETED)[0])  # a Ctrl-C noticed in 0.25 s
             for ref in done:

@@ -25,7 +25,8 @@ from typing import Any
 
 from laddermill_gym.sim.interrupt import ignore_terminal_interrupts, request_stop
 
-__all__ = ["source_digest", "versions", "init_worker", "call_task", "worker_report", "RayWorker", "ABORT_STATUS"]
+__all__ = ["source_digest", "versions", "init_worker", "start_worker", "call_task", "worker_report", "RayWorker",
+           "ABORT_STATUS"]
 
 #: A local worker's exit status when its caller aborts the batch (a second Ctrl-C): as a shell's for SIGINT.
 ABORT_STATUS = 130
@@ -100,14 +101,35 @@ def init_worker(run_id: str, warmup: tuple, threads: int | None, caller: dict, s
     _STATE["note"] = f"{where} runs other package source than the caller ({text})" if bad else ""
 
 
+def start_worker(*init_args) -> None:
+    """:func:`init_worker` for a worker process or actor: an exception it raises (another version than the caller's,
+    a failing warm-up) is kept instead of ending the worker, and every task given to the worker then raises it
+    (:func:`call_task`), so that the batch's failure names the cause, where a local pool only said that a process
+    ended abruptly and Ray that an actor died in its creation task."""
+    _STATE["start_error"] = None
+    try:
+        init_worker(*init_args)
+    except Exception as err:  # reported with every task this worker is given
+        _STATE["start_error"] = err
+
+
 def call_task(index: int, fn: Callable, kwargs: dict) -> tuple[int, Any, str]:
     """(index, the task's result, the worker's version note: given once, then ""). numba's thread count is per
-    thread: it is set again here, since a Ray actor runs its calls in another thread than its start."""
+    thread: it is set again here, since a Ray actor runs its calls in another thread than its start. A worker that
+    could not start (:func:`start_worker`) raises its start's error; a task that calls ``sys.exit`` raises
+    RuntimeError (the same on every path: a SystemExit would otherwise end a serial batch without naming the
+    task)."""
+    err = _STATE.get("start_error")
+    if err is not None:
+        raise RuntimeError(f"the worker could not start: {type(err).__name__}: {err}") from err
     if _STATE["threads"]:
         import numba
 
         numba.set_num_threads(_STATE["threads"])
-    result = fn(**kwargs)
+    try:
+        result = fn(**kwargs)
+    except SystemExit as exit_:
+        raise RuntimeError(f"the task called sys.exit({exit_.code!r})") from None
     return index, result, _STATE.pop("note", "")
 
 
@@ -125,7 +147,15 @@ class RayWorker:
     threads, so that :meth:`stop` runs while :meth:`call` does."""
 
     def __init__(self, *init_args):
-        init_worker(*init_args, signals="ray")
+        start_worker(*init_args, "ray")
+
+    def ready(self) -> bool:
+        """True once the actor has started (its warm-up done); raises its start's error (:func:`start_worker`). The
+        pool gives an actor tasks only after this returned: an actor still waiting for a CPU gets none."""
+        err = _STATE.get("start_error")
+        if err is not None:
+            raise RuntimeError(f"the worker could not start: {type(err).__name__}: {err}") from err
+        return True
 
     def call(self, index: int, fn: Callable, kwargs: dict) -> tuple[int, Any, str]:
         return call_task(index, fn, kwargs)

@@ -171,7 +171,7 @@ def run_sweeps(specs: dict[str, SweepSpec], names, workers: int = 0, ray: str | 
 
     tasks = [(variant_task, {"name": n, "value": float(v)}) for n in names for v in specs[n].values]
     quantities = ("max_real", "osc_real")
-    with Pool(workers, ray, warmup=[(warm_base, {})]) as pool:
+    with Pool(workers, ray, warmup=[(warm_base, {})], cap=len(tasks)) as pool:  # no more actors than variants
         out = iter(pool.run(tasks, desc="lateral variants", unit="variant", progress=progress))
         results = [SweepResult(specs[n], tuple(next(out) for _ in specs[n].values)) for n in names]
         brackets = [(r.spec.name, q, a, b) for r in results for q in quantities for a, b in r.brackets(q)]
