@@ -281,3 +281,16 @@ def test_a_state_where_even_no_lift_overloads_the_cable_is_landed():
     flown = ~landed & (sol.tension > 0)
     assert np.all(sol.tension[flown] >= drag_only[flown] * (1 - 1e-12))
     assert np.all(sol.tension <= f_max * (1 + 1e-12))
+
+
+def test_a_fixed_altitude_outside_the_covered_heights_is_refused():
+    """Every second state stops at 200 m: a fixed altitude of 300 m would count those states as calm (no power), as
+    the free altitude's bound prevents; it is refused, 200 m is not."""
+    hs = np.array([0.0, 100.0, 200.0, 300.0, 600.0])
+    v = np.array([[5.0, 9.0, 10.0, 11.0, 12.5]] * 20) * np.linspace(0.9, 1.3, 20)[:, None]
+    cut = SiteWind(hs, np.where((np.arange(20)[:, None] % 2 == 1) & (hs > 200.0), np.nan, v), np.full(20, 1 / 20),
+                   tuple(f"2020-01-{i + 1:02d}" for i in range(20)), source="cut.csv")
+    with pytest.raises(ValueError, match=r"fixed h = 300 m is outside 50-200 m, the altitudes where every wind state "
+                                         r"of cut.csv has data"):
+        optimise(TABLE2, cut, fixed={"h": 300.0})
+    assert optimise(TABLE2, cut, fixed={"h": 200.0}, starts=1).design.h == 200.0

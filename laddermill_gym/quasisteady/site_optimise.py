@@ -83,6 +83,10 @@ def optimise(case: SiteCase, wind: SiteWind, fixed: dict | None = None, starts: 
         raise ValueError(f"optimise: unknown fixed variables {sorted(bad)}; known {NAMES}")
     free = [k for k, n in enumerate(NAMES) if n not in fixed]
     bounds = _bounds(case, wind)
+    if "h" in fixed and not bounds[0][0] <= fixed["h"] <= bounds[0][1]:  # a state without data there would be calm
+        raise ValueError(f"optimise: fixed h = {fixed['h']:g} m is outside {bounds[0][0]:g}-{bounds[0][1]:g} m, the "
+                         f"altitudes where every wind state of {wind.source or 'the data'} has data and the case "
+                         "allows")
     par, count = case.params, [0]
     t0 = time.perf_counter()
 
