@@ -151,6 +151,19 @@ def test_a_task_that_calls_sys_exit_is_named(workers):
         pool.run([(exits, dict(code=3))], progress=False, labels=["seed 4"])
 
 
+def dies() -> None:
+    """A task that ends its process at once."""
+    os._exit(7)
+
+
+def test_a_local_worker_that_dies_is_said_to_have_died():
+    """A worker process ended by its task: the failure says a worker process ended abruptly, where it read as if
+    each task running then had raised an error of its own."""
+    with pytest.raises(parallel.TasksFailed, match=r"^task 0 \(.*dies, \[\]\) failed: BrokenProcessPool: a local "
+                                                   r"worker process ended abruptly"):
+        parallel.run_tasks([(dies, {}), (sleep_and_return, dict(v=1, s=2.0))], workers=2, progress=False)
+
+
 def test_results_keep_the_task_order_whatever_order_they_end_in():
     """Uneven sleeps on two workers: task 0 ends last, yet the results are 0..5 in the tasks' order."""
     sleeps = [0.9, 0.0, 0.3, 0.0, 0.2, 0.0]

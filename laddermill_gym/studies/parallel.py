@@ -86,7 +86,11 @@ def _own(err: BaseException) -> BaseException:
 
 
 def _first_line(err: BaseException) -> str:
-    """An exception's type and message without a remote traceback."""
+    """An exception's type and message without a remote traceback (a broken local pool: what that means, since the
+    executor cannot tell which of the tasks running then ended its worker)."""
+    if isinstance(err, cf.process.BrokenProcessPool):
+        return ("BrokenProcessPool: a local worker process ended abruptly (a crash, os._exit, the out-of-memory "
+                "killer) while this task ran; each task running then is named, the one that ended it among them")
     lines = [x for x in str(_own(err)).splitlines() if x.strip()]
     return f"{type(_own(err)).__name__}: {lines[0] if lines else ''}"
 
