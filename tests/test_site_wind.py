@@ -286,3 +286,31 @@ def test_a_calm_lower_height_under_wind_takes_the_upper_exponent_limit(tmp_path)
     np.testing.assert_allclose(w.at(600.0), [5.0 * (600.0 / 80.0) ** 0.6, 0.0, 0.0], rtol=1e-12)
     np.testing.assert_allclose(w.at(45.0), [2.5, 2.0, 0.0], rtol=1e-12)  # linear between the two heights
     assert "in 3 of 3 hours" in w.notes[0]
+
+
+def test_daily_means_say_what_they_do_to_the_mean_cube():
+    """Two days of two hours, 4 and 8 m/s, then 6 and 6 m/s at 80 m: the daily means' mean cube is (6^3 + 6^3) / 2
+    = 216 against the hours' (4^3 + 8^3 + 6^3 + 6^3) / 4 = 252, a ratio of 0.857, which the daily data state."""
+    from laddermill_gym.atmosphere.site_wind import SiteWind
+
+    hours = SiteWind(np.array([10.0, 80.0, 200.0]), np.array([[2.0, 4.0, 5.0], [4.0, 8.0, 9.0], [3.0, 6.0, 7.0],
+                                                              [3.0, 6.0, 7.0]]), np.full(4, 0.25),
+                     ("2010-01-01 00", "2010-01-01 01", "2010-01-02 00", "2010-01-02 01"), measured_top=80.0)
+    notes = daily(hours).notes
+    assert notes == (f"daily means: the time mean of w^3 at 80 m is {216 / 252:.3f} of the 4 states' (a day's mean "
+                     "wind has less than its mean cube; one profile a day, as the paper's soundings, would not lower "
+                     "it)",)
+
+
+def test_a_sounding_level_without_direction_keeps_its_speed_and_a_wrong_speed_unit_is_named(tmp_path):
+    """The second sounding's 200 m level has its DRCT blank: its 16 kn count (the speed at 196 m above ground),
+    where the level used to be dropped; a speed column in m/s instead of knots is refused by name."""
+    p = tmp_path / "debilt.txt"
+    row = "  990.0    200    8.4    6.6     88   6.00    210     16  281.9  298.6  283.0"
+    assert WYOMING.count(row) == 1
+    p.write_text(WYOMING.replace(row, row.replace("    210", "       ")))
+    w = read_wyoming(p)
+    assert w.at(196.0)[1] == pytest.approx(16 * 1852.0 / 3600.0, rel=1e-12)
+    p.write_text(WYOMING.replace("deg   knot", "deg    m/s"))
+    with pytest.raises(SiteWindError, match=r"debilt.txt: line \d+, field 'SKNT': unit 'm/s', expected knot"):
+        read_wyoming(p)

@@ -228,5 +228,20 @@ def daily(wind: SiteWind) -> SiteWind:
                 speed[k, cols] = np.nanmean(rows[:, cols], axis=0)
             else:
                 speed[k] = np.nanmean(rows, axis=0)
-    return SiteWind(wind.heights, speed, np.full(keys.size, 1.0 / keys.size), tuple(keys), None,
-                    wind.measured_top, wind.extrapolation, wind.source + ", daily means", wind.notes)
+    weight = np.full(keys.size, 1.0 / keys.size)
+    return SiteWind(wind.heights, speed, weight, tuple(keys), None, wind.measured_top, wind.extrapolation,
+                    wind.source + ", daily means", wind.notes + _cube_note(wind, speed, weight))
+
+
+def _cube_note(wind: SiteWind, speed: np.ndarray, weight: np.ndarray) -> tuple[str, ...]:
+    """What averaging a day's profiles does to the power's measure: the daily means' time mean of w^3 over the
+    states' own, at the highest measured height where every state has data (() when there is none)."""
+    full = np.all(np.isfinite(wind.speed), axis=0) & np.all(np.isfinite(speed), axis=0)
+    full &= wind.heights <= wind.measured_top
+    if not full.any():
+        return ()
+    j = int(np.flatnonzero(full)[-1])
+    ratio = np.sum(weight * speed[:, j] ** 3) / np.sum(wind.weight * wind.speed[:, j] ** 3) * np.sum(wind.weight)
+    return (f"daily means: the time mean of w^3 at {wind.heights[j]:g} m is {ratio:.3f} of the {wind.n} states' "
+            "(a day's mean wind has less than its mean cube; one profile a day, as the paper's soundings, would not "
+            "lower it)",)

@@ -39,6 +39,9 @@ def _wyoming_rows(lines, start, path):
     units = lines[i + 1][1].split() if i + 1 < len(lines) else []
     if len(units) >= 2 and units[names.index("HGHT")] != "m":
         raise SiteWindError(f"{path}: line {lines[i + 1][0]}, field 'HGHT': unit {units[1]!r}, expected m")
+    if len(units) == len(names) and units[names.index("SKNT")] != "knot":
+        raise SiteWindError(f"{path}: line {lines[i + 1][0]}, field 'SKNT': unit {units[names.index('SKNT')]!r}, "
+                            "expected knot")
     j = i + 2
     while j < len(lines) and set(lines[j][1].strip()) == {"-"}:
         j += 1
@@ -81,17 +84,18 @@ def _wyoming_one(lines, start, path, end):
             except ValueError:
                 raise SiteWindError(f"{path}: line {ln}, field '{name}' = {f!r}: not a number") from None
         table.append(rec)
-    good = [r for r in table if np.isfinite(r["HGHT"]) and np.isfinite(r["SKNT"]) and np.isfinite(r["DRCT"])]
+    # a level with a speed but no direction keeps its speed (the power needs only the speed; its direction is NaN)
+    good = [r for r in table if np.isfinite(r["HGHT"]) and np.isfinite(r["SKNT"])]
     if len(good) < 2:
         raise SiteWindError(f"{path}: line {lines[start][0]}: sounding {when:%Y-%m-%d %HZ} has fewer than two "
-                            f"levels with height, direction and speed")
+                            f"levels with height and speed")
     if elevation is None:  # no station block: the surface is the level with the highest pressure
         elevation = max(good, key=lambda r: r.get("PRES", -np.inf))["HGHT"]
     good = sorted((r for r in good if r["HGHT"] >= elevation), key=lambda r: r["HGHT"])
     h = np.array([r["HGHT"] - elevation for r in good])
     keep = np.concatenate(([True], np.diff(h) > 0))  # the archive sometimes repeats a level
     return (when.strftime("%Y-%m-%dT%H:00Z"), h[keep], np.array([r["SKNT"] for r in good])[keep] * KNOT,
-            np.array([r["DRCT"] for r in good])[keep])
+            np.array([r.get("DRCT", np.nan) for r in good])[keep])
 
 
 def read_wyoming(path: Path | str, grid_step: float = 5.0) -> SiteWind:

@@ -163,7 +163,8 @@ def run(args) -> int:
             _fail(f"--wind {spec!r}: {err}")
         _check_heights(spec, winds[spec], base, args)
     for spec, wind in winds.items():
-        print(f"{spec}: {wind.n} wind states, {wind.heights[0]:g}-{wind.heights[-1]:g} m ({wind.source})")
+        print(f"{spec}: {wind.n} wind states, {wind.heights[0]:g}-{wind.heights[-1]:g} m ({wind.source})"
+              + "".join(f"; {note}" for note in wind.notes))
         for cname in args.case:
             case = base[cname]
             r, ev, w_ev, p_ev, f = _run_case(case, spec, wind, out, args.quiet, args.format)
