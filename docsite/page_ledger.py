@@ -70,7 +70,8 @@ LEDGER = {
                               "coverage does not read: no ledger accounts for them"),
     "command_line.md": Covered(given=("does about 40 s after the direction step",
                                       # the CLI's exit statuses (cli.run_guarded, cmd_simulate's --allow-breakdown)
-                                      "with exit status 3 ( : 0,")),
+                                      "with exit status 3 ( : 0,",
+                                      "keeps what it has, with exit status 0 (1 with );")),
     "getting_started.md": GETTING_STARTED,
     "index.md": INDEX,
     "layout.md": Covered(given=("eq. (6)",)),

@@ -300,8 +300,9 @@ FORWARDED: dict[str, tuple[str, str]] = {
                     "local processes (--workers N) or on Ray (--ray)"),
     "workers": ("laddermill_gym.studies.gusts.warm_workers", "laddermill workers warm: prepare a node for "
                 "--workers / --ray (fill numba's cache, compute the operating points once)"),
-    "pumping-cycle": ("laddermill_gym.studies.pumping.pumping_cycle", "pumping kite: the scripted cycle with the "
-                      "lateral LQR against the quasi-steady prediction (Lansdorp, Schmehl)"),
+    "pumping-cycle": ("laddermill_gym.studies.pumping.pumping_cycle", "pumping kite: the crosswind cycle (figure "
+                      "eights; --controller lqr: the scripted cycle with the lateral LQR) against the quasi-steady "
+                      "prediction (Lansdorp, Schmehl)"),
     "tether-convergence": ("laddermill_gym.studies.pumping.tether_convergence", "pumping kite: the crosswind cycle "
                            "on the single element and on reeling tethers of 3 to 10 elements (docs/reeling_tether.md)"),
     "demo": ("laddermill_gym.studies.mill.control_demo", "the main job: the mill through the paper's direction step, "

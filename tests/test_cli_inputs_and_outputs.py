@@ -179,3 +179,13 @@ def test_a_scenes_file_name_drops_only_a_yaml_suffix():
 
     assert [file_stem(n) for n in ("wing_v2.5", "dir/wing_v2.5.yaml", "tethered_wing", "x/y.yml")] == \
         ["wing_v2.5", "wing_v2.5", "tethered_wing", "y"]
+
+
+def test_a_reader_that_leaves_the_pipe_ends_the_command_quietly():
+    """``laddermill scenes | head -1``: the reader closes the pipe before the command writes; the command ends with
+    141 (a tool ended by SIGPIPE) and nothing on stderr, where it printed a BrokenPipeError traceback."""
+    proc = subprocess.Popen([sys.executable, "-m", "laddermill_gym", "scenes"], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE)
+    proc.stdout.close()  # before the command's first line
+    err = proc.stderr.read()
+    assert proc.wait(timeout=120) == 141 and err == b""

@@ -89,7 +89,8 @@ def writable_file(path, option: str = "--out", suffixes: tuple = ()):
 def run_guarded(name: str, run) -> int:
     """The exit status of ``run()``, the command ``laddermill name``: bad input (UsageError, ConfigError) one line
     on stderr and 2; a start state or setting the simulator refuses (SimulationError) one line and 3; Ctrl-C one line
-    and 130 (a command that keeps its partial results says so itself)."""
+    and 130 (a command that keeps its partial results says so itself); a reader that closed the output pipe, nothing
+    and 141 (as a tool ended by SIGPIPE)."""
     from laddermill_gym.model.configio import ConfigError
     from laddermill_gym.sim.simulator import SimulationError
 
@@ -102,6 +103,11 @@ def run_guarded(name: str, run) -> int:
     except KeyboardInterrupt as err:  # a batch on workers says what each task did (studies/parallel.TasksInterrupted)
         print(f"laddermill {name}: interrupted (Ctrl-C)" + (f": {err}" if str(err) else ""), file=sys.stderr)
         return 130
+    except BrokenPipeError:  # the reader of the output left (``laddermill scenes | head``): end quietly, as a shell
+        import os  # tool ended by SIGPIPE; later writes (the interpreter's flush at exit) go nowhere
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 141
 
 
 def check_controllers(specs, option: str = "--controllers") -> None:
