@@ -62,9 +62,10 @@ class SiteWind:
                              f"labels {len(self.labels)} do not match")
         if np.any(np.diff(h) <= 0):
             raise ValueError("SiteWind: heights must be strictly ascending")
-        if not np.all(np.isfinite(w)):
-            raise ValueError(f"SiteWind: weight {float(w[~np.isfinite(w)][0])} of state "
-                             f"{self.labels[int(np.flatnonzero(~np.isfinite(w))[0])]!r}: weights must be finite")
+        bad = np.flatnonzero(~np.isfinite(w))
+        if bad.size:
+            raise ValueError(f"SiteWind: weight {float(w[bad[0]])} of state {self.labels[int(bad[0])]!r}: weights must "
+                             "be finite")
         if np.any(w < 0) or w.sum() > 1.0 + 1e-9:
             raise ValueError(f"SiteWind: weights must be >= 0 and add up to <= 1 (sum {w.sum():.6g})")
 

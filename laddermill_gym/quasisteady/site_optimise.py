@@ -143,23 +143,24 @@ def optimise(case: SiteCase, wind: SiteWind, fixed: dict | None = None, starts: 
         best = ((False, sol.ratio), des, sol)
     (ok, _), des, sol = best
     return SiteResult(case, des, sol, bool(ok), time.perf_counter() - t0, count[0], int(np.sum(wind.weight > 0)),
-                      bound_notes(des, case, wind, fixed))
+                      bound_notes(des, case, bounds, fixed))
 
 
 #: how each design variable is written in a bound's note: (unit, factor from SI)
 _SHOWN = {"h": ("m", 1.0), "theta": ("deg", 180.0 / np.pi), "d": ("mm", 1e3), "S": ("m^2", 1.0)}
 
 
-def bound_notes(design: Design, case: SiteCase, wind: SiteWind, fixed: dict | None = None) -> tuple[str, ...]:
-    """The free variables of ``design`` that lie on a bound of the search (within 1e-6 of its range), each as
-    'h = 600 m: the upper bound, the top of the data (every state has data up to 600 m)': an optimum there is the
-    bound's, not the site's (moving the bound moves it). The altitude's bounds are ``case.h_bounds`` narrowed to
-    the heights at which every wind state has data (:func:`covered_heights`); the others are the case's."""
-    bottom, top = covered_heights(wind)
-    bounds = dict(zip(NAMES, _bounds(case, wind), strict=True))
-    source = {("h", 0): ("the case's h_bounds" if bottom <= case.h_bounds[0] else
+def bound_notes(design: Design, case: SiteCase, bounds: list, fixed: dict | None = None) -> tuple[str, ...]:
+    """The free variables of ``design`` that lie on a bound of the search ``bounds`` (the (low, high) of ``NAMES``,
+    as :func:`optimise` searched them; within 1e-6 of the range), each as 'h = 600 m: the upper bound, the top of the
+    data (every state has data up to 600 m)': an optimum there is the bound's, not the site's (moving the bound moves
+    it). The altitude's bounds are ``case.h_bounds`` narrowed to the heights at which every wind state has data
+    (:func:`covered_heights`): a bound inside the case's is the data's; the others are the case's."""
+    bounds = dict(zip(NAMES, bounds, strict=True))
+    (bottom, top), (case_lo, case_hi) = bounds["h"], case.h_bounds
+    source = {("h", 0): ("the case's h_bounds" if bottom <= case_lo else
                          f"the lowest height with data in every state ({bottom:g} m)"),
-              ("h", 1): ("the case's h_bounds" if top >= case.h_bounds[1] else
+              ("h", 1): ("the case's h_bounds" if top >= case_hi else
                          f"the top of the data (every state has data up to {top:g} m)")}
     notes = []
     for name in NAMES:
