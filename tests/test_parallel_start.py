@@ -13,6 +13,8 @@ from __future__ import annotations
 import os
 import re
 import socket
+import subprocess
+import sys
 import time
 
 import pytest
@@ -78,8 +80,8 @@ class _FakeRay:
     def cluster_resources(self):
         return {"CPU": float(self.cpus)}
 
-    def available_resources(self):
-        return {"CPU": float(self.free)}
+    def available_resources(self):  # as Ray: no "CPU" entry when none is free
+        return {"CPU": float(self.free)} if self.free else {"memory": 1e9}
 
     def remote(self, num_cpus=1, max_concurrency=1):
         def wrap(cls):
@@ -117,6 +119,11 @@ def test_tasks_go_only_to_actors_that_have_started(monkeypatch):
     with parallel.Pool(0, "auto"):  # workers 0: one actor per free CPU (1), not per CPU of the cluster (2)
         pass
     assert len(fake.actors) == 3
+    held = _FakeRay(cpus=3, free=0, starts=[True])  # every CPU held: one actor, which starts when one is freed
+    monkeypatch.setattr(parallel, "_ray_module", lambda: held)
+    with parallel.Pool(0, "auto"):
+        pass
+    assert len(held.actors) == 1
 
 
 def test_actors_that_cannot_start_name_their_cause(monkeypatch):
@@ -126,11 +133,13 @@ def test_actors_that_cannot_start_name_their_cause(monkeypatch):
     with parallel.Pool(2, "auto") as pool, pytest.raises(parallel.TasksFailed) as got:
         pool.run([(sleep_and_return, dict(v=0, s=0.0))], progress=False)
     assert str(got.value) == f"no Ray worker could start (2 tried): {err}"
-    fake = _FakeRay(cpus=2, free=2, starts=[err, True])  # one node wrong: the other runs the tasks
-    monkeypatch.setattr(parallel, "_ray_module", lambda: fake)
-    with parallel.Pool(2, "auto") as pool:
+    fake = _FakeRay(cpus=2, free=2, starts=[err, True])  # one node wrong: the other runs the tasks, and the one
+    monkeypatch.setattr(parallel, "_ray_module", lambda: fake)  # left out is named with its cause (it was silent)
+    with parallel.Pool(2, "auto") as pool, pytest.warns(RuntimeWarning) as got_warnings:
         assert pool.run([(sleep_and_return, dict(v=i, s=0.0)) for i in range(3)], progress=False) == [0, 1, 2]
     assert [a.calls for a in fake.actors] == [0, 3]
+    assert [str(w.message) for w in got_warnings] == [f"a Ray worker could not start and gets no tasks (1 of 2 so "
+                                                      f"far): {err}"]
 
 
 def test_a_local_worker_that_cannot_start_names_its_cause(monkeypatch):
@@ -219,3 +228,17 @@ def test_on_a_real_cluster_with_a_cpu_taken_the_batch_ends_and_runners_are_check
     finally:
         if started:
             ray.shutdown()
+
+
+def test_a_failed_task_is_named_in_a_fresh_interpreter():
+    """A serial batch's failure report in a process where no local pool ever ran: it used to end in an
+    AttributeError (``concurrent.futures.process`` is a submodule that ``import concurrent.futures`` does not load,
+    and only a local pool loaded it), so a serial or Ray run's failed task went unnamed unless another test had
+    made a local pool first (review of 2026-12-08)."""
+    script = ("from laddermill_gym.studies import parallel\n"
+              "def boom():\n    raise ValueError('bad input')\n"
+              "try:\n    parallel.run_tasks([(boom, {})], progress=False)\n"
+              "except parallel.TasksFailed as e:\n    print('TasksFailed', e)\n")
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert re.search(r"^TasksFailed task 0 \(__main__\.boom, \[\]\) failed: ValueError: bad input", out.stdout), out

@@ -42,6 +42,7 @@ import sys
 import uuid
 import warnings
 from collections.abc import Callable
+from concurrent.futures.process import BrokenProcessPool  # a submodule `import concurrent.futures` does not load
 from contextlib import nullcontext
 from typing import Any
 
@@ -88,7 +89,7 @@ def _own(err: BaseException) -> BaseException:
 def _first_line(err: BaseException) -> str:
     """An exception's type and message without a remote traceback (a broken local pool: what that means, since the
     executor cannot tell which of the tasks running then ended its worker)."""
-    if isinstance(err, cf.process.BrokenProcessPool):
+    if isinstance(err, BrokenProcessPool):
         return ("BrokenProcessPool: a local worker process ended abruptly (a crash, os._exit, the out-of-memory "
                 "killer) while this task ran; each task running then is named, the one that ended it among them")
     lines = [x for x in str(_own(err)).splitlines() if x.strip()]
@@ -193,8 +194,9 @@ class Pool:
 
                 raise UsageError(f"--workers {self.workers}: the Ray cluster ({self.ray}) has {cpus} CPUs, one per "
                                  "worker")
-            # workers 0: one actor per CPU free now (other jobs' actors hold the rest), at least one
-            n = self.workers or max(1, int(self._ray.available_resources().get("CPU", cpus)))
+            # workers 0: one actor per CPU free now (other jobs' actors hold the rest), at least one (Ray leaves
+            # "CPU" out of the available resources when none is free)
+            n = self.workers or max(1, int(self._ray.available_resources().get("CPU", 0)))
             n = max(1, min(n, self.cap)) if self.cap is not None else n
             actor = self._ray.remote(num_cpus=1, max_concurrency=2)(RayWorker)  # a thread for stop() beside call()
             self._actors = [actor.remote(*self._init) for _ in range(n)]

@@ -45,13 +45,15 @@ def probe(address: str) -> None:
 
 class Starting:
     """The actors of a pool that have not yet answered ``ready`` (``refs``: ready call -> actor), those that have
-    (``ready``) and the errors of those that could not start. :meth:`admit` moves the answered ones."""
+    (``ready``) and the errors of those that could not start. :meth:`admit` moves the answered ones; once one actor
+    has started, each that could not is warned of with its cause (RuntimeWarning)."""
 
     def __init__(self, ray, actors: list):
         self.ray, self.total = ray, len(actors)
         self.refs = {a.ready.remote(): a for a in actors}
         self.ready: list = []
         self.errors: list = []
+        self.named = 0  # errors warned of
         self.since = time.monotonic()
         self.warned = False
 
@@ -69,12 +71,14 @@ class Starting:
                     continue
                 self.ready.append(actor)
                 free.append(actor)
+        if self.ready:  # the batch goes on without those that could not start: say why their CPUs stay unused
+            for i in range(self.named, len(self.errors)):
+                warnings.warn(f"a Ray worker could not start and gets no tasks ({i + 1} of {self.total} so far): "
+                              f"{_cause_line(self.errors[i])}", RuntimeWarning, stacklevel=3)
+            self.named = len(self.errors)
         if not self.ready and not self.refs:
-            err = self.errors[0]
-            cause = getattr(err, "cause", None)
-            first = str(cause if isinstance(cause, BaseException) else err).strip().splitlines()
             raise RuntimeError(f"no Ray worker could start ({len(self.errors)} tried): "
-                               f"{first[0] if first else type(err).__name__}") from err
+                               f"{_cause_line(self.errors[0])}") from self.errors[0]
 
     def warn_if_slow(self) -> None:
         """Warn once when tasks have waited :data:`SLOW_START_S` with no actor started: the cluster's CPUs are held by
@@ -83,6 +87,14 @@ class Starting:
             return
         self.warned = True
         free = self.ray.available_resources().get("CPU", 0)
-        warnings.warn(f"none of the {self.total} Ray workers has started after {SLOW_START_S:.0f} s: the cluster has "
-                      f"{free:g} CPUs free of {self.ray.cluster_resources().get('CPU', 0):g} (other jobs hold the "
-                      "rest); the tasks start when a worker does", RuntimeWarning, stacklevel=3)
+        failed = f"; {len(self.errors)} could not start (warned)" if self.errors else ""
+        warnings.warn(f"none of the {self.total} Ray workers has started after {SLOW_START_S:.0f} s{failed}: the "
+                      f"cluster has {free:g} CPUs free of {self.ray.cluster_resources().get('CPU', 0):g} (other jobs "
+                      "hold the rest); the tasks start when a worker does", RuntimeWarning, stacklevel=3)
+
+
+def _cause_line(err: BaseException) -> str:
+    """The first line of a worker's start error (Ray's error wraps the worker's own as its ``cause``)."""
+    cause = getattr(err, "cause", None)
+    first = str(cause if isinstance(cause, BaseException) else err).strip().splitlines()
+    return first[0] if first else type(err).__name__
