@@ -10,6 +10,7 @@ have), and the file system.
 from __future__ import annotations
 
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -181,11 +182,26 @@ def test_a_scenes_file_name_drops_only_a_yaml_suffix():
         ["wing_v2.5", "wing_v2.5", "tethered_wing", "y"]
 
 
-def test_a_reader_that_leaves_the_pipe_ends_the_command_quietly():
+@pytest.mark.parametrize("unbuffered", [False, True])
+def test_a_reader_that_leaves_the_pipe_ends_the_command_quietly(unbuffered):
     """``laddermill scenes | head -1``: the reader closes the pipe before the command writes; the command ends with
-    141 (a tool ended by SIGPIPE) and nothing on stderr, where it printed a BrokenPipeError traceback."""
+    141 (a tool ended by SIGPIPE) and nothing on stderr, where it printed a BrokenPipeError traceback. Both with
+    Python's default block-buffered pipe (the output then written at the end of the command) and with
+    ``PYTHONUNBUFFERED`` (each line at once); the first passed only with the second set (review of 2026-12-08)."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"} | ({"PYTHONUNBUFFERED": "1"} if unbuffered
+                                                                             else {})
     proc = subprocess.Popen([sys.executable, "-m", "laddermill_gym", "scenes"], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE)
+                            stderr=subprocess.PIPE, env=env)
     proc.stdout.close()  # before the command's first line
     err = proc.stderr.read()
     assert proc.wait(timeout=120) == 141 and err == b""
+
+
+def test_a_broken_pipe_that_is_not_the_output_keeps_its_traceback():
+    """A BrokenPipeError from a pipe of the command's own while its standard output is fine is a failure with its
+    traceback (exit status 1), not the quiet 141 of a reader that left the output (review of 2026-12-08)."""
+    script = ("import sys\nfrom laddermill_gym.studies.commands import run_guarded\n"
+              "def run():\n    raise BrokenPipeError('a worker pipe closed')\n"
+              "sys.exit(run_guarded('demo', run))\n")
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 1 and "BrokenPipeError: a worker pipe closed" in out.stderr, out

@@ -95,7 +95,9 @@ def run_guarded(name: str, run) -> int:
     from laddermill_gym.sim.simulator import SimulationError
 
     try:
-        return int(run() or 0)
+        status = int(run() or 0)
+        sys.stdout.flush()  # a pipe's block buffer is written here, not at the interpreter's exit, past this guard
+        return status
     except (UsageError, ConfigError, SimulationError) as err:  # bad input: one line, no traceback
         text = " ".join(line.strip() for line in str(err).splitlines() if line.strip())
         print(f"laddermill {name}: error: {text}", file=sys.stderr)
@@ -104,10 +106,27 @@ def run_guarded(name: str, run) -> int:
         print(f"laddermill {name}: interrupted (Ctrl-C)" + (f": {err}" if str(err) else ""), file=sys.stderr)
         return 130
     except BrokenPipeError:  # the reader of the output left (``laddermill scenes | head``): end quietly, as a shell
-        import os  # tool ended by SIGPIPE; later writes (the interpreter's flush at exit) go nowhere
+        if not _stdout_reader_left():  # tool ended by SIGPIPE; a pipe or socket of the command's own: its traceback
+            raise
+        import os  # later writes (the interpreter's flush at exit) go nowhere
 
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 141
+
+
+def _stdout_reader_left() -> bool:
+    """Whether standard output is a pipe whose reader has closed it (poll reports an error on its write end); True
+    where the platform has no ``select.poll`` (it cannot tell)."""
+    import select
+
+    if not hasattr(select, "poll"):
+        return True
+    try:
+        poller = select.poll()
+        poller.register(sys.stdout.fileno(), select.POLLOUT)
+        return any(events & (select.POLLERR | select.POLLHUP) for _, events in poller.poll(0))
+    except (AttributeError, OSError, ValueError):  # no file descriptor (a captured stream)
+        return False
 
 
 def check_controllers(specs, option: str = "--controllers") -> None:
