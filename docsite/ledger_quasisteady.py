@@ -20,6 +20,7 @@ QUASISTEADY = Covered(
         'the quasi-steady model of Schmehl et al. (2013) and van der Vlugt et al. (2019).',
         '16-20), the sweeps, and the fixed design run through the data. - , : the tables and figures ( ). - :',
         "## Lansdorp's model (eqs. 1-15)",
+        "Fig. 14's altitudes are the paper's 200-600 m in 50 m steps",  # the paper's grid (cli.PAPER_FIG14_HEIGHTS)
         '1, 8 | effective wind w_e = w sin(theta)',
         '- v_out (the wind component along the cable, less the reel-out speed; floored at 0);',
         '6 | cable drag lumped at the kite:',

@@ -247,6 +247,22 @@ def test_covered_heights_stop_at_the_first_gap_and_name_data_without_any():
                                  np.array([0.5, 0.5]), ("a", "b"), source="gappy.csv"))
 
 
+def test_fig14_altitudes_stay_within_the_data():
+    """``--sweeps``' Fig. 14 grid: the paper's 200-600 m in 50 m steps cut to the heights the data cover; data that
+    start at 300 m made the sweep fix 200 m, which ``optimise`` refuses, and the command lost its tables (review of
+    2026-12-08); data below 250 m left one altitude or none for the figure. Oracle: the grids written out."""
+    from laddermill_gym.quasisteady.cli import fig14_heights
+
+    def wind(heights):
+        return _uniform_wind(10.0, heights, n=2)
+
+    assert fig14_heights(wind((300.0, 600.0, 1000.0))).tolist() == [300, 350, 400, 450, 500, 550, 600]
+    assert fig14_heights(wind((10.0, 2000.0))).tolist() == [200, 250, 300, 350, 400, 450, 500, 550, 600]
+    assert fig14_heights(wind((10.0, 220.0))).tolist() == [10.0, 36.25, 62.5, 88.75, 115.0, 141.25, 167.5,
+                                                           193.75, 220.0]
+    assert fig14_heights(wind((700.0, 1100.0))).tolist() == [700, 750, 800, 850, 900, 950, 1000, 1050, 1100]
+
+
 def test_an_optimum_that_follows_a_bound_is_named_with_the_bound():
     """A wind that rises with height up to the data's top: eq. 16's cost has no altitude term, so the design rises
     with the top of the data (200 m where every second state stops there, 600 m on the whole data, 400 m under the

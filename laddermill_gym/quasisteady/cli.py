@@ -214,11 +214,28 @@ def run(args) -> int:
     return 0
 
 
+#: Fig. 14's altitudes in the paper [m] (Lansdorp et al. 2008: 200-600 m)
+PAPER_FIG14_HEIGHTS = np.linspace(200.0, 600.0, 9)
+
+
+def fig14_heights(wind) -> np.ndarray:
+    """Fig. 14's altitudes [m]: the paper's 200-600 m in 50 m steps within the heights every state has data for
+    (:func:`covered_heights`; a fixed altitude outside them is refused), or, where fewer than two of those lie
+    within them, nine across what the data cover (one where they cover a single height)."""
+    bottom, top = covered_heights(wind)
+    hs = PAPER_FIG14_HEIGHTS[(PAPER_FIG14_HEIGHTS >= bottom) & (PAPER_FIG14_HEIGHTS <= top)]
+    if hs.size >= 2:
+        return hs
+    return np.linspace(bottom, top, 9) if top > bottom else np.array([bottom])
+
+
 def _sweeps(case, spec, wind, out, n_states, quiet):
     sub = wind.subset(slice(None, None, max(1, wind.n // n_states)))
     sub = dataclasses.replace(sub, weight=sub.weight / sub.weight.sum() * wind.weight.sum())
-    hs, thetas = np.linspace(200.0, 600.0, 9), np.radians(np.linspace(45.0, 80.0, 8))
-    hs = hs[hs <= covered_heights(wind)[1]]
+    hs, thetas = fig14_heights(wind), np.radians(np.linspace(45.0, 80.0, 8))
+    if not np.isin(hs, PAPER_FIG14_HEIGHTS).all():
+        print(f"laddermill site: Fig. 14 of {spec} at {hs[0]:g}-{hs[-1]:g} m, the heights its data cover (the paper's "
+              "200-600 m lie outside them)", file=sys.stderr)
     total = hs.size * thetas.size + sum(v.size for v, _ in SWEEPS.values())
     with tqdm(total=total, desc=f"sensitivity on {sub.n} states", disable=quiet) as bar:
         grid = altitude_angle_grid(case, sub, hs, thetas, bar)
