@@ -267,6 +267,14 @@ def test_cluster_tables_refuse_what_would_change_the_data(tmp_path):
     shape.write_text("h [m];u1 [-];v1 [-];sf [-]\n100.0;1.0;0.0;1\n10.0;0.7;0.0;1\n")
     with pytest.raises(SiteWindError, match=r"shape.csv: line 3, field 'h \[m\]' = 10: heights must rise"):
         read_clusters([shape], freq)
+    # blank lines count: the lines named are the file's, where the rows after a blank line were named one short
+    shape.write_text("h [m];u1 [-];v1 [-];sf [-]\n10.0;0.7;0.0;1\n100.0;1.0;0.0;1\n")
+    freq.write_text(head + "\n1;0;5;6;40\n\n1;1;6;7;-1\n")
+    with pytest.raises(SiteWindError, match=r"freq.csv: line 5, field 'frequency \[%\]' = -1"):
+        read_clusters([shape], freq)
+    shape.write_text("h [m];u1 [-];v1 [-];sf [-]\n\n100.0;1.0;0.0;1\n\n10.0;0.7;0.0;1\n")
+    with pytest.raises(SiteWindError, match=r"shape.csv: line 5, field 'h \[m\]' = 10: heights must rise"):
+        read_clusters([shape], freq)
 
 
 def test_site_wind_refuses_a_weight_that_is_not_a_number():

@@ -118,17 +118,19 @@ def read_wyoming(path: Path | str, grid_step: float = 5.0) -> SiteWind:
 
 # ------------------------------------------------------------------------------------------- clustered profiles
 def _read_semicolon(path: Path, need: int):
+    """(header, (n, columns) values, (n,) the file's line number of each row) of a ';' table; blank lines skipped."""
     with open_text(path) as fh:
-        rows = [r for r in csv.reader(fh, delimiter=";") if r]
+        reader = csv.reader(fh, delimiter=";")
+        rows = [(reader.line_num, r) for r in reader if r]
     if len(rows) < 2:
         raise SiteWindError(f"{path}: no data rows")
-    header = [c.strip() for c in rows[0]]
+    header = [c.strip() for c in rows[0][1]]
     out = []
-    for k, row in enumerate(rows[1:], start=2):
+    for k, row in rows[1:]:
         if len(row) != len(header) or len(row) < need:
             raise SiteWindError(f"{path}: line {k}: {len(row)} fields, expected {len(header)}")
         out.append([parse_number(text, path, k, name) for name, text in zip(header, row, strict=True)])
-    return header, np.array(out)
+    return header, np.array(out), np.array([k for k, _ in rows[1:]])
 
 
 def read_clusters(profile_paths: list[Path | str], frequency_path: Path | str) -> SiteWind:
@@ -137,13 +139,13 @@ def read_clusters(profile_paths: list[Path | str], frequency_path: Path | str) -
     Each (cluster, bin) is a state: speed(h) = v100 |(u, v)(h)| with v100 the bin's centre; weight = frequency."""
     shapes, heights = [], None
     for p in map(Path, profile_paths):
-        header, a = _read_semicolon(p, 3)
+        header, a, line = _read_semicolon(p, 3)
         if not header[0].startswith("h"):
             raise SiteWindError(f"{p}: line 1, field '{header[0]}': expected the height column 'h [m]'")
         if np.any(np.diff(a[:, 0]) <= 0):
-            bad = int(np.flatnonzero(np.diff(a[:, 0]) <= 0)[0])
-            raise SiteWindError(f"{p}: line {bad + 3}, field '{header[0]}' = {a[bad + 1, 0]:g}: heights must rise "
-                                f"line by line (the line before has {a[bad, 0]:g})")
+            bad = int(np.flatnonzero(np.diff(a[:, 0]) <= 0)[0]) + 1
+            raise SiteWindError(f"{p}: line {line[bad]}, field '{header[0]}' = {a[bad, 0]:g}: heights must rise "
+                                f"line by line (the line before has {a[bad - 1, 0]:g})")
         if heights is None:
             heights = a[:, 0]
         elif not np.array_equal(heights, a[:, 0]):
@@ -154,8 +156,8 @@ def read_clusters(profile_paths: list[Path | str], frequency_path: Path | str) -
             raise SiteWindError(f"{p}: the shape must be 1 at h = 100 m (a row 'h [m]' = 100 with |(u, v)| = 1)")
         shapes.append(mag)
     fpath = Path(frequency_path)
-    header, f = _read_semicolon(fpath, 5)
-    _check_frequencies(fpath, header, f)
+    header, f, line = _read_semicolon(fpath, 5)
+    _check_frequencies(fpath, header, f, line)
     cl = f[:, 0].astype(int)
     if cl.min() < 1 or cl.max() > len(shapes):
         raise SiteWindError(f"{fpath}: field '{header[0]}': clusters {cl.min()}..{cl.max()}, "
@@ -169,9 +171,10 @@ def read_clusters(profile_paths: list[Path | str], frequency_path: Path | str) -
                            f"above cut-out) is outside the data",))
 
 
-def _check_frequencies(path: Path, header: list[str], f: np.ndarray) -> None:
+def _check_frequencies(path: Path, header: list[str], f: np.ndarray, line: np.ndarray) -> None:
     """SiteWindError naming the file, line, field and value of the first bad entry of a cluster frequency table
-    ``f`` (rows: cluster, bin, v100_low, v100_high, frequency [%]; every entry finite, ``parse_number``): a cluster
+    ``f`` (rows: cluster, bin, v100_low, v100_high, frequency [%]; every entry finite, ``parse_number``; ``line``
+    each row's line in the file): a cluster
     number that is not a whole number, a negative frequency, a bin whose upper speed is not above its lower one, or
     frequencies that add up to more than 100 %."""
     checks = ((0, f[:, 0] == np.round(f[:, 0]), "a cluster number must be a whole number"),
@@ -181,7 +184,7 @@ def _check_frequencies(path: Path, header: list[str], f: np.ndarray) -> None:
         bad = np.flatnonzero(~ok)
         if bad.size:
             k = int(bad[0])
-            raise SiteWindError(f"{path}: line {k + 2}, field '{header[col]}' = {f[k, col]:g}: {why}")
+            raise SiteWindError(f"{path}: line {line[k]}, field '{header[col]}' = {f[k, col]:g}: {why}")
     total = float(f[:, 4].sum())
     if total > 100.0 + 1e-6:
         raise SiteWindError(f"{path}: field '{header[4]}': the frequencies add up to {total:g} %, more than 100 %")
