@@ -86,8 +86,8 @@ def check_lines(lines: list[str]) -> tuple[int, list[tuple[int, str, str]]]:
             covered.pop()
         value_text = match.group("val")
         if not value_text:  # a parent: its block is covered when its comment starts with (all [unit])
-            if ALL_UNIT.match(comment):
-                covered.append(indent)
+            if ALL_UNIT.match(comment):  # a list item's key ("- key:"): its block is that key's, not the item's
+                covered.append(indent + 2 if is_item and match.groupdict().get("key") else indent)
             continue
         comments = [comment]
         while True:  # a flow collection over several lines: join them until the value parses
@@ -136,3 +136,8 @@ def test_the_rules_flag_what_they_should():
     checked, failures = check_lines(lines)
     assert [(n, key) for n, key, _ in failures] == [(2, "b"), (3, "c"), (6, "e"), (14, "k")]
     assert checked == 13
+    # a marker on a list item's key covers that key's block, not the items after it (they passed unchecked)
+    items = ["points:", "- xyz:          # (all [m]) corners", "    a: 1.0", "  other: 2.0", "- mass: 5.0",
+             "- speed: 3.0     # [m/s]"]
+    checked, failures = check_lines(items)
+    assert [(n, key) for n, key, _ in failures] == [(4, "other"), (5, "mass")] and checked == 4
