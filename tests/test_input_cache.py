@@ -76,6 +76,25 @@ def test_an_edited_rotor_file_reaches_the_craft_config(configs):
     assert edited is not first and edited.rotor.sigma == load_craft_config(craft).rotor.sigma == 0.06
 
 
+def test_a_relative_path_after_a_chdir_names_the_other_folder_s_file(tmp_path, monkeypatch):
+    """The same relative craft path in two folders with different masses: after ``chdir`` the cache answered with
+    the first folder's craft, trim and env (a review of 2026-12-08; the key was the path's text, and the files the
+    first call read were unchanged). Oracle: a fresh ``load_craft_config`` in each folder."""
+    rel = "rotorcraft/roberts_flying_model.yaml"
+    for name, mass in (("a", 20.0), ("b", 25.0)):
+        for part in ("rotorcraft", "rotors", "cables"):
+            shutil.copytree(CONFIGS / part, tmp_path / name / part)
+        craft = tmp_path / name / rel
+        text, n = re.subn(r"\nmass: [\d.]+", f"\nmass: {mass}", craft.read_text(), count=1)
+        assert n == 1
+        craft.write_text(text)
+    masses = []
+    for name in ("a", "b", "a"):
+        monkeypatch.chdir(tmp_path / name)
+        masses.append((craft_config(rel).mass, load_craft_config(rel).mass))
+    assert masses == [(20.0, 20.0), (25.0, 25.0), (20.0, 20.0)]
+
+
 def test_the_spline_caches_hold_the_tables_used_last_only():
     """Keyed on the table object, they kept every table ever splined: a sweep of freshly loaded scenes grew by about
     160 kB a scene (a review of 2026-12-07). Oracle: the copies still alive once the test drops its own references."""

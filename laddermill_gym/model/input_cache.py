@@ -3,17 +3,19 @@
 The envs keep what is costly to rebuild (a scene's trim, the mill's operating point, a craft's trim, the point-mass
 starts) per process, keyed on the arguments: a scene's name or path and its overrides. A name or a path does not say
 what the file holds, so a file edited during a session (a sweep that rewrites one YAML, a notebook) was ignored for
-the rest of it. :func:`input_cache` keys on the arguments as ``functools.lru_cache`` does and, besides, records every
-file the call read (the loaders report them: :func:`note_read`, called by ``configio.read_yaml`` and
-``aero_table.load_aero_table``) with the SHA-256 of its bytes; a hit whose files have changed since is computed
-again. Checking costs one hash of a few small files (tens of kB) per hit. A cached call inside another reports its
-files to the outer one, hit or not, so nested caches see the same edits.
+the rest of it. :func:`input_cache` keys on the arguments and the working directory (a relative path, or a config
+name found there, names another file after a ``chdir``) and, besides, records every file the call read (the loaders
+report them: :func:`note_read`, called by ``configio.read_yaml`` and ``aero_table.load_aero_table``) with the
+SHA-256 of its bytes; a hit whose files have changed since is computed again. Checking costs one hash of a few
+small files (tens of kB) per hit. A cached call inside another reports its files to the outer one, hit or not, so
+nested caches see the same edits.
 """
 
 from __future__ import annotations
 
 import functools
 import hashlib
+import os
 import threading
 from collections import OrderedDict
 from contextlib import contextmanager
@@ -50,10 +52,18 @@ def _digest(path: str) -> str | None:
         return None
 
 
+def _cwd() -> str:
+    """The working directory (relative paths and config names resolve against it first), "" where it is gone."""
+    try:
+        return os.getcwd()
+    except OSError:
+        return ""
+
+
 def input_cache(maxsize: int):
-    """Decorator: memoise a function of hashable arguments on them (the ``maxsize`` most recently used results, as
-    ``functools.lru_cache``), a result kept only while every file its call read holds the same bytes. The wrapper
-    has ``cache_clear()``; exceptions are not cached."""
+    """Decorator: memoise a function of hashable arguments on them and the working directory (the ``maxsize`` most
+    recently used results, as ``functools.lru_cache``), a result kept only while every file its call read holds the
+    same bytes. The wrapper has ``cache_clear()``; exceptions are not cached."""
 
     def decorate(fn):
         entries: OrderedDict = OrderedDict()
@@ -61,7 +71,7 @@ def input_cache(maxsize: int):
 
         @functools.wraps(fn)
         def cached(*args, **kwargs):
-            key = (args, tuple(sorted(kwargs.items())))
+            key = (args, tuple(sorted(kwargs.items())), _cwd())  # a relative path names another file elsewhere
             with lock:
                 hit = entries.get(key)
             if hit is not None and all(_digest(f) == d for f, d in hit[1].items()):
