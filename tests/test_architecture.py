@@ -21,6 +21,7 @@ PACKAGE = ROOT / "laddermill_gym"
 RANK = {
     "contract": -1, "configs": 0, "kernels": 0, "atmosphere": 0,  # configs: the shipped data (a namespace package)
     "figure_files": 0,  # figures for files on their own Agg canvas; imports matplotlib only
+    "warning_site": 0,  # where a warning about a user's input points; imports nothing of the package
     "model": 1,
     "reference": 2, "sim": 2,
     "ladder": 3, "rotorcraft": 3, "quasisteady": 3,

@@ -6,6 +6,7 @@ smears its disturbances away without a word (``wind_dt = 1000``): it warns."""
 from __future__ import annotations
 
 import math
+import sys
 import warnings
 
 import gymnasium as gym
@@ -125,3 +126,50 @@ def test_an_unknown_scene_option_is_named(env_id):
     """It was a TypeError from inside load_scene ("unexpected keyword argument 'bogus'")."""
     with pytest.raises(ValueError, match=r"scene_options\['bogus'\] = 1: not an option of load_scene \(known: "):
         gym.make(env_id, scene_options={"bogus": 1})
+
+
+def test_numpy_scalars_are_numbers_in_every_argument_check():
+    """The arguments a review of 2026-12-08 found still testing ``(int, float)``: each takes numpy's scalars as the
+    Python number they stand for (oracle: the same call with that number; a float32 read as its shortest decimal, as
+    ``positive`` reads a control period), and still refuses a bool."""
+    from laddermill_gym.atmosphere.disturbances import RandomPerturbation
+    from laddermill_gym.atmosphere.iec_gusts import EOG
+    from laddermill_gym.atmosphere.turbulence import Turbulence
+    from laddermill_gym.envs.laddermill.actions import check_authority
+    from laddermill_gym.envs.physics_step import env_physics_settings, physics_scene_options
+    from laddermill_gym.envs.rotorcraft.settings import RotorcraftTerminationConfig as TerminationConfig
+    from laddermill_gym.envs.task_base import check_copies
+
+    assert check_authority(np.float32(0.2)) == check_authority(0.2) == 0.2
+    assert check_authority(np.int64(1)) == 1.0
+    assert check_copies(np.float32(2.0)) == check_copies(np.int64(2)) == 2
+    with pytest.raises(ValueError, match=r"authority = True: must be a number in \(0, 1\]"):
+        check_authority(True)
+    env = gym.make(TW, physics_dt=np.float32(0.025)).unwrapped  # was "control_dt = 0.05 s is not a whole multiple"
+    assert env.task.batch.settings.dt == 0.025 and env.task.n_substeps == 2
+    assert physics_scene_options(None, None, np.float32(0.025), 0.05)["dt"] == 0.025
+    settings = env.task.batch.settings
+    assert env_physics_settings(settings, None, np.float32(0.025), 0.05).dt == 0.025
+    assert env_physics_settings(settings, None, np.int64(1), 1.0).dt == 1.0
+    assert TerminationConfig(max_abs_roll_deg=np.float32(45.0)).max_abs_roll_deg == 45.0
+    with pytest.raises(ValueError, match=r"termination.max_abs_roll_deg = True: must be a finite number > 0"):
+        TerminationConfig(max_abs_roll_deg=True)
+    assert Turbulence(record=np.float32(2.0), heights=(np.float32(0.0), 100.0)).heights == (0.0, 100.0)
+    assert EOG(time=np.float32(5.0)).time == 5.0
+    assert RandomPerturbation(speed_std=np.float32(0.1)).speed_std == np.float32(0.1)
+
+
+@pytest.mark.parametrize("env_id, vector", [(TW, False), (TW, True), (RC, False)])
+def test_an_argument_s_warning_points_at_the_line_that_made_the_env(env_id, vector):
+    """A fixed stacklevel pointed into Gymnasium's registration code (make, make_vec) or the package's own
+    registration (review of 2026-12-08); the warning's file and line are now the caller's, here this test's."""
+    kw = dict(episode_time=10.0, wind_dt=20.0, disturbances=[{"type": "DirectionStep", "time": 12.0}])
+    with warnings.catch_warnings(record=True) as got:
+        warnings.simplefilter("always")
+        mode = dict(vectorization_mode="vector_entry_point")
+        line = sys._getframe().f_lineno + 1
+        env = gym.make_vec(env_id, 2, **mode, **kw) if vector else gym.make(env_id, **kw)
+    env.close()
+    mine = [(w.category.__name__, w.filename, w.lineno) for w in got
+            if w.category.__name__ in ("CoarseWindWarning", "LateDisturbanceWarning")]
+    assert sorted(mine) == [("CoarseWindWarning", __file__, line), ("LateDisturbanceWarning", __file__, line)]

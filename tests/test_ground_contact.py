@@ -126,6 +126,26 @@ def test_a_ground_at_zero_reports_the_height_alone():
     assert float(m.group(4)) <= 0.0
 
 
+def test_an_env_s_ground_stop_text_does_not_round_a_body_below_the_ground():
+    """The envs' stop text gave the lowest body at three digits: 4.9 mm above a ground at 49.34 m read "at 49.3 m",
+    below it (review of 2026-12-08). Oracle: the state's own lowest height, moved by hand."""
+    from laddermill_gym.sim.reports import ground_stop_text, lowest_body
+
+    asm = load_scene("tethered_wing").assembly
+    x = load_scene("tethered_wing").simulator().state.copy()
+    _, h = lowest_body(asm, x)
+    ws, ns = asm.wing_state_size, asm.node_state_size
+    for k in range(asm.n_wings):  # every body moved down by the same amount (z down): the lowest at 49.3449 m
+        x[k * ws + B3_POS + 2] += h - 49.3449
+    for j in range(asm.n_nodes):
+        x[asm.n_wings * ws + j * ns + N3_POS + 2] += h - 49.3449
+    name, low = lowest_body(asm, x)
+    assert low == pytest.approx(49.3449, abs=1e-9)
+    text = ground_stop_text(asm, x, 49.34)
+    assert text.endswith(f"lowest body {name} at 49.34 m (0.0049 m above the ground)"), text
+    assert ground_stop_text(asm, x, 0.0).endswith(f"lowest body {name} at 49.34 m"), text
+
+
 def test_error_controlled_run_stops_in_the_step_that_reaches_the_ground():
     """DP5(4) takes steps of its own size: the contact lies in the step after the state kept, and the report's
     time and height are those of that step's end on the closed-form fall."""

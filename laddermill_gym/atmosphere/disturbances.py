@@ -158,7 +158,7 @@ class RandomPerturbation(Disturbance):
     def __post_init__(self):
         for name in ("speed_std", "direction_std", "correlation_time"):
             v = getattr(self, name)
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v < 0 or (
+            if isinstance(v, bool) or not isinstance(v, numbers.Real) or not math.isfinite(v) or v < 0 or (
                     name == "correlation_time" and v == 0):
                 raise ValueError(f"RandomPerturbation.{name} = {v!r}: must be a finite number "
                                  f"{'> 0 s' if name == 'correlation_time' else '>= 0'}")

@@ -18,6 +18,7 @@ How they enter the air:
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -38,7 +39,7 @@ EWS_BETA = 6.4  # -, 6.3.2.6
 
 
 def _num(cls: str, name: str, value, low: float | None = 0.0, strict: bool = True) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or (
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) or (
             low is not None and (value <= low if strict else value < low)):
         bound = "" if low is None else f" {'>' if strict else '>='} {low:g}"
         raise ValueError(f"{cls}.{name} = {value!r}: must be a finite number{bound}")

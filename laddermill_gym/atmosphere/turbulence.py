@@ -19,6 +19,7 @@ rho_j^2) e_j, rho_j = exp(-k dh): O(n_f n_h) work and no Cholesky factorisation.
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -138,7 +139,7 @@ def turbulence_spectra(model: str, kappa: np.ndarray, h: np.ndarray, wind_class:
 
 def _pair(name: str, value) -> tuple[float, float]:
     if not (isinstance(value, (tuple, list)) and len(value) == 2
-            and all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in value)
+            and all(isinstance(v, numbers.Real) and not isinstance(v, bool) and math.isfinite(v) for v in value)
             and value[0] < value[1]):
         raise ValueError(f"Turbulence.{name} = {value!r}: must be a pair [low, high] of finite numbers, low < high")
     return float(value[0]), float(value[1])
@@ -147,7 +148,7 @@ def _pair(name: str, value) -> tuple[float, float]:
 def _number(name: str, value, positive: bool = True, allow_none: bool = False):
     if allow_none and value is None:
         return None
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or (
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) or (
             positive and not value > 0):
         raise ValueError(f"Turbulence.{name} = {value!r}: must be a finite number{' > 0' if positive else ''}")
     return float(value)

@@ -154,6 +154,7 @@ def _warn_unstable_chain(design, path: Path, env_id: str) -> None:
     unstable (:func:`~laddermill_gym.control.lqr.chain_closed_loop`: the whole chain linearised, ZOH at the
     control period, the per-wing gains block-diagonal)."""
     from laddermill_gym.control.lqr import chain_closed_loop
+    from laddermill_gym.warning_site import user_stacklevel
 
     full = float(np.max(np.abs(chain_closed_loop(design)[1])))
     if not full < 1.0:
@@ -162,7 +163,7 @@ def _warn_unstable_chain(design, path: Path, env_id: str) -> None:
                       f"model: closed loop max |z| {full:.4f} (>= 1; on the per-wing blocks it was designed on "
                       f"{blocks:.4f}); a centralised design (structure: centralised, lqr_ladder_chain_central.yaml) "
                       f"holds the default chain; laddermill lqr --config {path} --full-check prints the check",
-                      UnstableDesignWarning, stacklevel=4)
+                      UnstableDesignWarning, stacklevel=user_stacklevel())
 
 
 def _pumping_controller(spec: str, kw: dict, task_cls: type) -> Controller:

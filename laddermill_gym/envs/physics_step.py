@@ -37,6 +37,7 @@ import numpy as np
 
 from laddermill_gym.atmosphere.disturbances import sample_modulation
 from laddermill_gym.atmosphere.field import WindField
+from laddermill_gym.envs.task_base import positive
 from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS, W_METHODS
 from laddermill_gym.sim.simulator import Simulator
 from laddermill_gym.sim.stable_step import estimate_stable_step
@@ -120,7 +121,7 @@ def physics_scene_options(scene_options, physics_step: str | None, physics_dt, c
         if physics_dt is None and physics_step in W_METHODS:
             physics_dt = control_dt
     if physics_dt is not None:
-        options["dt"] = physics_dt
+        options["dt"] = positive("physics_dt", physics_dt, "s")  # np.float32(0.025) read as 0.025
     return options
 
 
@@ -136,11 +137,8 @@ def env_physics_settings(settings, physics_step: str | None, physics_dt: float |
     method = settings.method if physics_step is None else physics_step
     if physics_dt is None:
         dt = control_dt if method in W_METHODS else settings.dt
-    elif isinstance(physics_dt, bool) or not (isinstance(physics_dt, (int, float)) and math.isfinite(physics_dt)
-                                              and physics_dt > 0):
-        raise ValueError(f"physics_dt = {physics_dt!r}: must be a finite number > 0 s")
     else:
-        dt = float(physics_dt)
+        dt = positive("physics_dt", physics_dt, "s")  # numpy's scalars too; np.float32(0.025) read as 0.025
     return dataclasses.replace(settings, method=method, dt=dt)
 
 
@@ -149,8 +147,9 @@ def jacobian_settings(settings, jacobian_every):
     ``IntegratorSettings.jacobian_every``). ValueError naming the argument and its value unless an integer >= 1,
     or > 1 with a method that is not a fixed-step W-method."""
     k = jacobian_every
-    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 1:
-        raise ValueError(f"jacobian_every = {k!r}: must be an integer >= 1 (physics steps per Jacobian)")
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 1 <= k <= np.iinfo(np.int64).max:
+        raise ValueError(f"jacobian_every = {k!r}: must be an integer from 1 to 2**63 - 1 (physics steps per "
+                         "Jacobian)")
     if k != 1 and settings.method not in W_METHODS:
         raise ValueError(f"jacobian_every = {k!r}: only a W-method reuses its Jacobian (the physics step is "
                          f"{settings.method!r})")

@@ -67,6 +67,7 @@ from laddermill_gym.model.packing import make_workspace
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.breakpoints import W_METHODS
 from laddermill_gym.sim.stable_step import UnstableStepWarning
+from laddermill_gym.warning_site import user_stacklevel
 
 __all__ = ["RewardConfig", "TerminationConfig", "WingTask", "FAILURES", "scene_trim"]
 
@@ -104,7 +105,7 @@ def _stable_step_scene(name: str, options: dict, trimmed, control_dt: float, dis
     dt, note = stable_physics_step(sc, x, u, control_dt, disturbances, episode_time, wind_dt)
     if not note:
         return sc, x, u, ""
-    warnings.warn(f"scene {sc.name}: {note}", UnstableStepWarning, stacklevel=3)
+    warnings.warn(f"scene {sc.name}: {note}", UnstableStepWarning, stacklevel=user_stacklevel())
     return (*scene_trim(name, options_key(dict(options, dt=dt))), note)
 
 

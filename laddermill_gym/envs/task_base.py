@@ -33,6 +33,7 @@ from laddermill_gym.kernels.contract import B3_RATE, B3_SIZE, B3_VEL
 from laddermill_gym.model.configio import load_yaml_text
 from laddermill_gym.sim.batch import BatchSimulator
 from laddermill_gym.sim.breakpoints import FIXED_STEP_METHODS
+from laddermill_gym.warning_site import user_stacklevel
 
 __all__ = ["TaskCore", "positive", "check_copies", "substeps_per_period", "clip_observations", "add_wing_noise",
            "default_parallel", "refuse_reset_options"]
@@ -70,7 +71,7 @@ def warn_coarse_wind(disturbances, wind_dt: float, episode_time: float) -> None:
     if disturbances and wind_dt > episode_time:
         warnings.warn(f"wind_dt = {wind_dt:g} s is longer than the episode (episode_time = {episode_time:g} s): the "
                       "wind modulation is sampled every wind_dt, so a disturbance is smeared over wind_dt and barely "
-                      "acts", CoarseWindWarning, stacklevel=6)
+                      "acts", CoarseWindWarning, stacklevel=user_stacklevel())
 
 
 class LateDisturbanceWarning(UserWarning):
@@ -94,7 +95,7 @@ def env_disturbances(value, episode_time: float | None = None, wind_dt: float | 
         if first is not None and first >= episode_time:
             warnings.warn(f"disturbances[{i}] ({type(d).__name__}, time = {onset!r} s) starts at or after the "
                           f"episode's end (episode_time = {episode_time!r} s): it never acts",
-                          LateDisturbanceWarning, stacklevel=3)
+                          LateDisturbanceWarning, stacklevel=user_stacklevel())
     if wind_dt is not None and episode_time is not None:
         warn_coarse_wind(out, wind_dt, episode_time)
     return out
@@ -103,8 +104,8 @@ def env_disturbances(value, episode_time: float | None = None, wind_dt: float | 
 def check_copies(n_copies, name: str = "n_copies") -> int:
     """The number of copies B as an int; ValueError naming ``name`` and the value unless it is a positive integer
     (an int, or a float of integral value; not a bool, a string or None)."""
-    if (isinstance(n_copies, bool) or not isinstance(n_copies, (numbers.Integral, float)) or int(n_copies) != n_copies
-            or n_copies < 1):
+    if (isinstance(n_copies, bool) or not isinstance(n_copies, numbers.Real) or not math.isfinite(n_copies)
+            or int(n_copies) != n_copies or n_copies < 1):
         raise ValueError(f"{name} = {n_copies!r}: must be a positive integer")
     return int(n_copies)
 

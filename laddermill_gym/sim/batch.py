@@ -8,6 +8,8 @@ benchmark.
 
 from __future__ import annotations
 
+import numbers
+
 import numpy as np
 
 from laddermill_gym.atmosphere.field import WindField, pack_wind_field
@@ -129,7 +131,7 @@ class BatchSimulator:
         (samples at t0 + i spacing [s] of the speed factor [-] and the direction offset [rad]). At most
         ``n_modulation`` samples (held at the last value afterwards) and a grid of at most ``n_grid`` floats."""
         if not isinstance(field, WindField):
-            if not (isinstance(spacing, (int, float)) and spacing > 0 and np.isfinite(spacing)):
+            if not (isinstance(spacing, numbers.Real) and spacing > 0 and np.isfinite(spacing)):
                 raise ValueError(f"wind modulation of copy {copy}: spacing = {spacing!r} s must be a finite number > 0")
             try:
                 field = WindField(field, spacing, speed, direction)

@@ -132,8 +132,9 @@ def ground_stop_text(asm, x: np.ndarray, ground_height: float) -> str:
     """Why a batch copy in the state x (its last state above the ground) stopped with status GROUND: the ground
     height [m] and the lowest wing CG or free cable node, which reached it in the next step (the environments)."""
     name, h = lowest_body(asm, x)
+    above = f" ({h - ground_height:.3g} m above the ground)" if ground_height else ""  # at 0 the height says it
     return (f"ground contact in the next physics step (ground height {ground_height:g} m); lowest body "
-            f"{name} at {h:.3g} m")
+            f"{name} at {h:.4g} m{above}")
 
 
 def _limit_culprits(sim, x: np.ndarray) -> list[str]:

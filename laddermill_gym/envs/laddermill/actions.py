@@ -23,9 +23,12 @@ Q_op + a torque_half_range, clipped to the station's torque limits (the same ran
 
 from __future__ import annotations
 
+import numbers
+
 import numpy as np
 
 from laddermill_gym.envs.actions import ActionLayout, resolve_groups
+from laddermill_gym.envs.task_base import positive
 from laddermill_gym.model.params import CONTROL_NAMES, N_CONTROLS, Assembly
 
 __all__ = ["SLOT_GROUPINGS", "resolve_slot_groups", "action_count", "check_surfaces", "check_authority",
@@ -69,10 +72,10 @@ def check_surfaces(surfaces) -> tuple[str, ...]:
 
 def check_authority(authority) -> float:
     """``authority`` as a float; ValueError naming it unless a number in (0, 1]."""
-    if isinstance(authority, bool) or not isinstance(authority, (int, float)) or not 0.0 < authority <= 1.0:
+    if isinstance(authority, bool) or not isinstance(authority, numbers.Real) or not 0.0 < authority <= 1.0:
         raise ValueError(f"authority = {authority!r}: must be a number in (0, 1] (the share of each tail "
                          "surface's half range one unit of action commands)")
-    return float(authority)
+    return positive("authority", authority, "")  # np.float32(0.2) read as 0.2
 
 
 class SlotActionMap:

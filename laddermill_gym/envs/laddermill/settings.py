@@ -6,6 +6,7 @@ validate their fields, naming field and value). Terminations use the wing envs'
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 from laddermill_gym.envs.rotorcraft.settings import InitialNoise, RotorcraftRewardConfig
@@ -67,7 +68,7 @@ class DrumConfig:
             v = getattr(self, name)
             if v is None and name == "torque_half_range":
                 continue
-            if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            if isinstance(v, bool) or not (isinstance(v, numbers.Real) and math.isfinite(v) and v > 0):
                 raise ValueError(f"drum.{name} = {v!r}: must be a finite number > 0")
 
 
@@ -89,5 +90,5 @@ class SpeedCommandConfig:
             v = getattr(self, name)
             if v is None and name == "half_range":
                 continue
-            if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            if isinstance(v, bool) or not (isinstance(v, numbers.Real) and math.isfinite(v) and v > 0):
                 raise ValueError(f"speed.{name} = {v!r}: must be a finite number > 0")

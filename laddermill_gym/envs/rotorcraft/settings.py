@@ -4,6 +4,7 @@ the random start perturbations (frozen dataclasses that validate their fields, n
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 from laddermill_gym.envs.task_settings import (
@@ -64,7 +65,7 @@ class RotorcraftTerminationConfig(FailureLimits):
         self.check_range("pitch_range_deg")
         for name in ("breaking_factor", "max_abs_roll_deg", "max_abs_yaw_deg"):
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            if isinstance(v, bool) or not (isinstance(v, numbers.Real) and math.isfinite(v) and v > 0):
                 raise ValueError(f"termination.{name} = {v!r}: must be a finite number > 0")
         if not isinstance(self.blade_stall, bool):
             raise ValueError(f"termination.blade_stall = {self.blade_stall!r}: must be true or false")

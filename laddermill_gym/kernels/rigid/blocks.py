@@ -48,9 +48,10 @@ def tree_solve(D, U, Y, piv, bv, order, parent, bsz):
 
     D[c] diagonal blocks (may be unsymmetric), U[c] = M[c, parent[c]], M[parent[c], c] = U[c]^T.
     Returns False if a diagonal block off the fast 6 x 6 path is singular. The fast path (a wing's block under a
-    wing's, its diagonal positive) eliminates without pivoting and does not test its pivots: a singular or
-    indefinite block there gives non-finite values, which the step's check reports as a non-finite state (the
-    blocks are symmetric positive definite plus a small apparent-mass term, so it is not met in practice)."""
+    wing's, its diagonal positive) eliminates without pivoting and does not test its pivots: a zero pivot there
+    gives non-finite values, which the step's check reports as a non-finite state; an indefinite block with nonzero
+    pivots is solved as any other (the blocks are symmetric positive definite plus a small apparent-mass term, so
+    neither is met in practice)."""
     nbk = order.size
     for ii in range(nbk):
         c = order[ii]

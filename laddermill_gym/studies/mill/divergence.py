@@ -22,6 +22,7 @@ criterion, the time after the step and the wings (or elements).
 from __future__ import annotations
 
 import math
+import numbers
 import time
 from dataclasses import dataclass, field
 
@@ -64,7 +65,7 @@ class EndCriteria:
             raise ValueError(f"EndCriteria.alpha_range_deg = {self.alpha_range_deg!r}: need finite low < high [deg]")
         for name in ("max_abs_beta_deg", "aero_hold_s", "breaking_fraction"):
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            if isinstance(v, bool) or not (isinstance(v, numbers.Real) and math.isfinite(v) and v > 0):
                 raise ValueError(f"EndCriteria.{name} = {v!r}: must be a finite number > 0")
 
 
