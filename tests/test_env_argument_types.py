@@ -173,3 +173,13 @@ def test_an_argument_s_warning_points_at_the_line_that_made_the_env(env_id, vect
     mine = [(w.category.__name__, w.filename, w.lineno) for w in got
             if w.category.__name__ in ("CoarseWindWarning", "LateDisturbanceWarning")]
     assert sorted(mine) == [("CoarseWindWarning", __file__, line), ("LateDisturbanceWarning", __file__, line)]
+
+
+@pytest.mark.parametrize("env_id, fidelity", [(TW, "pointmass"), (PMC, "rigid")])
+def test_a_scene_fidelity_option_is_refused_by_name(env_id, fidelity):
+    """Each env sets its scene's fidelity: PointMassChain-v0 with fidelity 'rigid' ended in a TypeError ("multiple
+    values for keyword argument 'fidelity'"), TetheredWing-v0 with 'pointmass' in an error about an
+    elements_per_piece override the user never gave (review of 2026-12-08)."""
+    with pytest.raises(ValueError, match=rf"scene_options\['fidelity'\] = '{fidelity}': each env sets its scene's "
+                                         r"fidelity"):
+        gym.make(env_id, scene_options={"fidelity": fidelity})

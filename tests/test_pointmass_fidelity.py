@@ -56,3 +56,22 @@ def test_bad_fidelity_names_file_and_field(tmp_path):
         load_scene("tethered_wing", fidelity="pointmass")  # a rigid file has no string resolution
     with pytest.raises(ConfigError, match=r"element_length.*0\.3"):
         load_scene("tethered_wing", fidelity="pointmass", element_length=0.3)
+
+
+def test_an_option_of_the_other_fidelity_is_refused_and_cable_aero_reaches_the_rigid_start():
+    """Review of 2026-12-08: ``element_length`` at the rigid fidelity was ignored without a word (the converse was
+    refused), and the ``cable_aero=False`` keyword took the drag off the string but not off the rigid equilibrium the
+    string starts from. Oracle for the second: the same switch given as a nested override, a separate route that
+    reached both, and the default's start, which has drag."""
+    from laddermill_gym.ladder.fidelity import rigid_static
+
+    with pytest.raises(ConfigError, match=r"tethered_wing\.yaml: element_length = 2\.0 \(override\): not at the rigid "
+                                          r"fidelity"):
+        load_scene("tethered_wing", element_length=2.0)
+    starts = {}
+    for label, kw in (("keyword", dict(cable_aero=False)),
+                      ("nested", dict(overrides={"fidelity": {"cable_aero": False}})), ("default", {})):
+        pm = load_scene("tethered_wing", fidelity="pointmass", element_length=10.0, **kw)
+        starts[label] = rigid_static(pm)[0].state.copy()
+    assert np.array_equal(starts["keyword"], starts["nested"])
+    assert not np.allclose(starts["keyword"], starts["default"], atol=1e-3)

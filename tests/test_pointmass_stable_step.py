@@ -130,3 +130,63 @@ def test_the_env_refines_a_step_the_old_limit_let_through():
     assert task.scene.dt <= 0.9 * _limit(task.string)
     assert _run_to_the_end(env) == ""
     env.close()
+
+
+def _chain_radius(string, lengths, dt: float) -> float:
+    """Spectral radius of one symplectic Euler step of the string's whole axial chain (free nodes between two anchors,
+    element lengths ``lengths``, lumped masses, Voigt damping), built densely: the oracle for the moving cable."""
+    c = string.cable
+    k = c.EA / np.asarray(lengths)
+    d = c.DA / np.asarray(lengths)
+    m = c.mass_per_length * 0.5 * (lengths[:-1] + lengths[1:])
+    n = m.size
+
+    def assembled(e):
+        mat = np.diag(e[:-1] + e[1:])
+        mat -= np.diag(e[1:-1], 1) + np.diag(e[1:-1], -1)
+        return mat / m[:, None]
+
+    kick = np.block([[np.eye(n), np.zeros((n, n))], [-dt * assembled(k), np.eye(n) - dt * assembled(d)]])
+    drift = np.block([[np.eye(n), dt * np.eye(n)], [np.zeros((n, n)), np.eye(n)]])
+    return float(np.max(np.abs(np.linalg.eigvals(drift @ kick))))
+
+
+def test_the_moving_cable_s_short_end_elements_set_its_explicit_step():
+    """On the moving cable the end elements run from a to a + l_e and from b down to b - l_e; next to a 0.1 l_e element
+    the string's stable step is about a fifth of the uniform string's, where the env stepped at 0.9 of the latter
+    and the first element's tension came out 0 (review of 2026-12-08). Oracles: the dense amplification matrix of the
+    whole chain at both extreme configurations, and runs of the moving string from a quiet start (its first element's
+    tension at 0.9 x the limit equals a run at a quarter of it; at 1.25 x it does not)."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+    from laddermill_gym.model.pointmass_mill import PointMassStation, station_state
+    from laddermill_gym.sim.pointmass import PointMassError, explicit_stable_dt
+    from laddermill_gym.sim.pointmass_mill import PointMassMillSimulator
+    from tests.test_pointmass_pay_out import _moving_string
+
+    _, string, x = _moving_string(v_c=2.0, s=0.0)
+    st = PointMassStation(1.0, 0.1, 1.1, (0.0,), (2.0,))
+    dt = explicit_stable_dt(string, st)
+    assert dt < 0.21 * explicit_stable_dt(string)
+    n = string.n_nodes
+    configs = [np.r_[0.1, np.ones(n - 1), 1.1], np.r_[1.1, np.ones(n - 1), 0.1]]
+    assert max(_chain_radius(string, lengths, 0.999 * dt) for lengths in configs) < 1.0
+    assert max(_chain_radius(string, lengths, 1.001 * dt) for lengths in configs) > 1.0
+    xs = x.reshape(-1, 6)
+    xs[:, 3:6], xs[:, 4], xs[:, 0], xs[:, 2] = 0.0, 2.0, 0.0, -100.0  # quiet: every node at V_c along the cable
+
+    def first_tension(step):
+        sim = PointMassMillSimulator(string, st, x.copy(), np.zeros(6), step, "explicit",
+                                     station_x=station_state(st, 0.0, 0.0))
+        try:
+            sim.advance(0.002)
+        except PointMassError:
+            return math.nan
+        return float(sim.tensions()[0])
+
+    reference = first_tension(0.25 * dt)
+    assert reference > 1e4
+    assert first_tension(0.9 * dt) == pytest.approx(reference, rel=1e-3)
+    assert not first_tension(1.25 * dt) == pytest.approx(reference, rel=1e-3)

@@ -282,6 +282,30 @@ def test_a_run_records_and_the_check_compares_every_carried_setting(tmp_path):
         check_trained_settings(run, LM1, {k: v for k, v in kw.items() if k != "surfaces"})
 
 
+def test_a_chain_run_records_its_scene_and_the_check_compares_it(tmp_path):
+    """The wing family's carried settings lacked ``scene``: a LadderChain-v0 policy trained on another chain file
+    of the same wing count recorded no scene and was evaluated on the registered one without a word (review of
+    2026-12-08); the mill and point-mass families carried it. Oracle: the mill's refusal of the same case."""
+    import shutil
+
+    import yaml
+
+    from laddermill_gym.control.rl_config import carried_settings
+    from laddermill_gym.control.shipped_policies import shipped_policy_path
+    from laddermill_gym.control.trained_settings import check_trained_settings
+
+    chain = "laddermill_gym/LadderChain-v0"
+    kw = {"scene": "my_chain.yaml", "control_dt": 0.05, "episode_time": 30.0}
+    assert carried_settings(chain, kw) == carried_settings(LM1, kw) == {"scene": "my_chain.yaml", "control_dt": 0.05}
+    run = tmp_path / "ppo_chain"
+    shutil.copytree(shipped_policy_path("ppo_chain"), run)
+    meta = yaml.safe_load((run / "shared_policy.yaml").read_text())
+    meta["env_kwargs"] = dict(meta.get("env_kwargs") or {}, scene="my_chain.yaml")
+    (run / "shared_policy.yaml").write_text(yaml.safe_dump(meta))
+    with pytest.raises(ValueError, match=r"trained with scene = 'my_chain\.yaml'; .* has 'ladder_chain'"):
+        check_trained_settings(run, chain, {})
+
+
 def test_a_shared_config_for_the_point_mass_chain_is_refused_by_name(tmp_path):
     from laddermill_gym.harness.shared_config import load_shared_config
     from laddermill_gym.model.configio import CONFIG_DIR, ConfigError

@@ -35,7 +35,7 @@ CRAFT_ENV_KWARGS: tuple[str, ...] = tuple(p for p in inspect.signature(CraftTask
 #: Arguments the evaluation env takes over from training (the policy's spaces and the model must match);
 #: the rest (wind, disturbances, episode length, reward, termination) is the registered scenario's
 CARRIED_KWARGS: dict[str, tuple[str, ...]] = {
-    "wing": ("action_mode", "groups", "control_dt", "physics_dt", "alpha_servo_tau", "scene_options"),
+    "wing": ("scene", "action_mode", "groups", "control_dt", "physics_dt", "alpha_servo_tau", "scene_options"),
     "craft": ("craft", "collective", "control_dt", "physics_dt"),
     "mill": ("scene", "scene_options", "control_dt", "groups", "n_bands", "surfaces", "generator_torque", "drum",
              "cable_speed_command", "speed", "operating_point", "settle", "authority"),

@@ -47,7 +47,7 @@ def check_task_arguments(task_class: type, kwargs: dict, vector: bool) -> None:
 
 def check_scene_options(options) -> None:
     """ValueError naming the entry unless ``scene_options`` is None or a dict of ``load_scene``'s keyword options
-    (an unknown key was a TypeError from deep inside the scene loader)."""
+    (an unknown key was a TypeError from deep inside the scene loader) other than ``fidelity``, which the env sets."""
     if options is None:
         return
     if not isinstance(options, dict):
@@ -56,6 +56,9 @@ def check_scene_options(options) -> None:
 
     from laddermill_gym.ladder.scene import load_scene
 
+    if "fidelity" in options:  # the env passes its own: a TypeError ("multiple values") or another family's error
+        raise ValueError(f"scene_options['fidelity'] = {options['fidelity']!r}: each env sets its scene's fidelity "
+                         "(the wing, chain and mill envs 'rigid', PointMassChain 'pointmass'): choose the env instead")
     known = [p.name for p in inspect.signature(load_scene).parameters.values() if p.kind is p.KEYWORD_ONLY]
     unknown = sorted(set(options) - set(known))
     if unknown:

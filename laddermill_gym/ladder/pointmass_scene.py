@@ -153,7 +153,18 @@ def read_pointmass(s: Section, fid: Section, path: Path, *, element_length: floa
                              max_speed=vmax)
     return PointMassScene(name=name, file=path, description=desc, string=string,
                           controls=attitude_controls(nk, *att), method=meth, dt=step, piece_length=piece,
-                          station=station, overrides=overrides or None)
+                          station=station, overrides=_with_cable_aero(overrides, cable_aero))
+
+
+def _with_cable_aero(overrides: dict | None, cable_aero: bool | None) -> dict | None:
+    """The nested overrides a point-mass scene keeps for its rigid start, with the ``cable_aero`` keyword folded in
+    as ``fidelity.cable_aero``: the rigid start read the file's drag while the string had none (review of
+    2026-12-08)."""
+    if cable_aero is None:
+        return overrides or None
+    merged = dict(overrides or {})
+    merged["fidelity"] = {**(merged.get("fidelity") or {}), "cable_aero": cable_aero}
+    return merged
 
 
 def _override(path: Path, key: str, value) -> float:

@@ -63,7 +63,8 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
     overrides it; at 'pointmass' the result is a :class:`~laddermill_gym.ladder.pointmass_scene.PointMassScene`
     (its string at ``fidelity.element_length`` or ``element_length`` [m]; ``n_wings``, ``dt``, ``method``
     ('explicit' or 'implicit') and ``cable_aero`` (False: no drag on the string) apply; ``dimension`` other than 3,
-    ``sag`` and ``elements_per_piece`` are refused), and nothing of the rigid model is built.
+    ``sag`` and ``elements_per_piece`` are refused), and nothing of the rigid model is built. At 'rigid'
+    ``element_length`` is refused (the cable's resolution is ``elements_per_piece``).
 
     ``overrides``: a nested mapping merged into the file's fields before they are read, e.g.
     ``{"wind": {"v0": 10.0}, "chain": {"piece_length": 120.0}}`` (parameters as data); checked like the file, errors
@@ -79,6 +80,10 @@ def load_scene(name_or_path: str | Path, *, dimension: int | None = None, sag: b
         _refuse_rigid_only(path, dimension=dimension, sag=sag, elements_per_piece=elements_per_piece)
         return read_pointmass(s, s.section("fidelity"), path, element_length=element_length, n_kites=n_wings,
                               dt=dt, method=method, cable_aero=cable_aero, overrides=overrides)
+    if element_length is not None:  # the rigid model's elements are elements_per_piece per piece: it was ignored
+        raise ConfigError(f"{path}: element_length = {element_length!r} (override): not at the rigid fidelity: its "
+                          "cable's resolution is elements_per_piece (element_length applies with fidelity "
+                          "'pointmass')")
     try:
         return read_rigid(s, path, dimension=dimension, sag=sag, cable_aero=cable_aero,
                           elements_per_piece=elements_per_piece, n_wings=n_wings, dt=dt, method=method)

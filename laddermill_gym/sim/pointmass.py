@@ -68,11 +68,12 @@ def run_on_threads(threads: int, serial, parallel, *args):
         numba.set_num_threads(before)
 
 
-def explicit_stable_dt(s: PointMassString) -> float:
-    """Largest stable symplectic-Euler step [s] of the string's axial dynamics. On its highest mode (the undamped
-    chain's omega = 2c/l0, c = sqrt(EA/mu), damped at the Voigt rate g = 4 DA/(mu l0^2)) the step's amplification
-    matrix is stable while (dt/t_c)^2 + dt/t_d < 1, t_c = l0/c, t_d = mu l0^2/(2 DA) (Jury's conditions on its
-    trace 2 - (omega dt)^2 - dt g and determinant 1 - dt g); the limit is the positive root
+def explicit_stable_dt(s: PointMassString, station=None) -> float:
+    """Largest stable symplectic-Euler step [s] of the string's axial dynamics (on the moving cable's ``station``:
+    the smaller of this and the step its short end elements allow, :func:`_moving_stable_dt`). On its highest mode (the
+    undamped chain's omega = 2c/l0, c = sqrt(EA/mu), damped at the Voigt rate g = 4 DA/(mu l0^2)) the step's
+    amplification matrix is stable while (dt/t_c)^2 + dt/t_d < 1, t_c = l0/c, t_d = mu l0^2/(2 DA) (Jury's conditions on
+    its trace 2 - (omega dt)^2 - dt g and determinant 1 - dt g); the limit is the positive root
     dt = t_c^2 (-1/t_d + sqrt(1/t_d^2 + 4/t_c^2))/2 = 2 / (1/t_d + sqrt(1/t_d^2 + 4/t_c^2)) (the second form without
     the cancellation), l0/c without damping. It lies below both t_c and t_d: min(t_c, t_d), returned until
     2026-12-07, overstated it by up to the golden ratio, 1.62x, at t_c = t_d."""
@@ -80,9 +81,42 @@ def explicit_stable_dt(s: PointMassString) -> float:
     l0 = s.element_length
     tc = l0 / np.sqrt(c.EA / c.mass_per_length)
     if not c.DA > 0:
-        return float(tc)
-    inv_td = 2.0 * c.DA / (c.mass_per_length * l0 * l0)
-    return float(2.0 / (inv_td + np.sqrt(inv_td * inv_td + 4.0 / (tc * tc))))
+        uniform = float(tc)
+    else:
+        inv_td = 2.0 * c.DA / (c.mass_per_length * l0 * l0)
+        uniform = float(2.0 / (inv_td + np.sqrt(inv_td * inv_td + 4.0 / (tc * tc))))
+    if station is None:
+        return uniform
+    return min(uniform, _moving_stable_dt(s, station))
+
+
+def _moving_stable_dt(s: PointMassString, station) -> float:
+    """The stable step [s] of a string on the moving cable's station (``model.pointmass_mill.PointMassStation``):
+    its end elements run from a to a + l_e and from b down to b - l_e, and a short one raises the highest mode far
+    above the uniform string's (a node between a 0.1 l_e element and an l_e one: about 4.5x the rate, so about a
+    fifth of the step where damping rules; a review of 2026-12-08 saw the env's 0.9 x the uniform limit end in a
+    speed limit). Voigt damping is proportional to the stiffness (DA / l against EA / l per element), so every mode
+    of M^-1 K (lumped masses mu (l_j + l_(j+1)) / 2, both ends anchored) has g = beta omega^2, beta = DA / EA, and
+    the step is stable while omega^2 dt^2 + 2 g dt < 4: dt = -beta + sqrt(beta^2 + 4 / lambda_max), at the two
+    extreme configurations (s = 0 and s -> l_e), lambda_max from LAPACK's bisection on the symmetric tridiagonal
+    M^-1/2 K M^-1/2 (O(n)). For the uniform string this is the closed form above (its infinite chain's highest
+    mode bounds the finite one's)."""
+    from scipy.linalg import eigvalsh_tridiagonal
+
+    c, n, le = s.cable, int(s.n_nodes), float(station.element_length)
+    a, b = float(station.first_length), float(station.last_length)
+    beta = c.DA / c.EA if c.DA > 0 else 0.0
+    worst = 0.0
+    for first, last in ((a, b), (a + le, max(b - le, 1e-3 * le))):  # b - s > 0 for s < l_e: b >= l_e
+        lengths = np.full(n + 1, float(s.element_length))
+        lengths[0], lengths[-1] = first, last
+        k = c.EA / lengths  # (n + 1,) element stiffness [N/m]
+        m = c.mass_per_length * 0.5 * (lengths[:-1] + lengths[1:])  # (n,) node masses [kg]
+        diag = (k[:-1] + k[1:]) / m
+        off = -k[1:-1] / np.sqrt(m[:-1] * m[1:])
+        lam = eigvalsh_tridiagonal(diag, off, select="i", select_range=(n - 1, n - 1))[0] if n > 1 else diag[0]
+        worst = max(worst, float(lam))
+    return float(-beta + np.sqrt(beta * beta + 4.0 / worst))
 
 
 class PointMassSimulator:
