@@ -29,7 +29,7 @@ V0, RHO0, H_B, G = 8.0, 1.225, 8400.0, 9.81  # uniform wind above h0 = 50 m (v1 
 KITE_MASS = 54.0
 
 
-def _moving_string(v_c=2.0, le=1.0, a=0.1, b=1.1, s=0.3, n=12, seed=3):
+def moving_string(v_c=2.0, le=1.0, a=0.1, b=1.1, s=0.3, n=12, seed=3):
     """A string across the wind (along y, 100 m high) between two ground points with cable drag, gravity, mass-only
     kites on nodes 3 and 8, moving at V_c with the cable moved s since the last transfer; positions and velocities
     perturbed at random. Returns (simulator, string, state)."""
@@ -108,7 +108,7 @@ def _dense_mill_step(string, x, v_c, s, dt, a=0.1, b=1.1):
 
 @pytest.mark.parametrize("v_c", [2.0, -2.0, 0.0])
 def test_one_implicit_step_equals_the_dense_solve_with_the_pay_out_on_the_right_hand_side(v_c):
-    sim, string, x = _moving_string(v_c)
+    sim, string, x = moving_string(v_c)
     v1, p1 = _dense_mill_step(string, x.copy(), v_c, 0.3, sim.dt)
     sim.step(1)
     scale = np.abs(v1).max()

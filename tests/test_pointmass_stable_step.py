@@ -157,16 +157,12 @@ def test_the_moving_cable_s_short_end_elements_set_its_explicit_step():
     and the first element's tension came out 0 (review of 2026-12-08). Oracles: the dense amplification matrix of the
     whole chain at both extreme configurations, and runs of the moving string from a quiet start (its first element's
     tension at 0.9 x the limit equals a run at a quarter of it; at 1.25 x it does not)."""
-    import sys
-    from pathlib import Path
-
-    sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
     from laddermill_gym.model.pointmass_mill import PointMassStation, station_state
     from laddermill_gym.sim.pointmass import PointMassError, explicit_stable_dt
     from laddermill_gym.sim.pointmass_mill import PointMassMillSimulator
-    from tests.test_pointmass_pay_out import _moving_string
+    from tests.test_pointmass_pay_out import moving_string
 
-    _, string, x = _moving_string(v_c=2.0, s=0.0)
+    _, string, x = moving_string(v_c=2.0, s=0.0)
     st = PointMassStation(1.0, 0.1, 1.1, (0.0,), (2.0,))
     dt = explicit_stable_dt(string, st)
     assert dt < 0.21 * explicit_stable_dt(string)

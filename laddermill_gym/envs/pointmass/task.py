@@ -92,13 +92,11 @@ def _check_step(scene: str, dt) -> None:
 
 def _stable_options(scene: str, options, control_dt: float, control_dt_shown):
     """``options`` (frozen ``load_scene`` options) unchanged, unless the scene's step ``method`` is ``"explicit"`` and
-    its ``dt`` is past ``ENV_STEP_MARGIN`` of the string's stable step
-    (:func:`~laddermill_gym.sim.pointmass.explicit_stable_dt`, the root of (dt / t_c)^2 + dt / t_d = 1, t_c = l0 / c,
-    t_d = mu l0^2 / (2 DA); on the moving cable that of its short end elements if smaller): then with ``dt`` the largest
-    whole fraction of the control period below it, and an UnstableStepWarning naming both (as the wing envs do for RK4,
-    ``envs/physics_step.py``; past it a run "stopped: speed limit exceeded" within a period). ValueError unless the
-    scene's step (checked before the scene is loaded when ``scene_options`` give it) is a finite number > 0 that divides
-    ``control_dt`` [s]."""
+    its ``dt`` is past ``ENV_STEP_MARGIN`` of the string's stable step (:func:`~laddermill_gym.sim.pointmass.
+    explicit_stable_dt`, on the moving cable its short end elements'): then with ``dt`` the largest whole fraction of
+    the control period below it, and an UnstableStepWarning naming both (as the wing envs do for RK4; past it a run
+    "stopped: speed limit exceeded" within a period). ValueError unless the scene's step (checked before the scene is
+    loaded when ``scene_options`` give it) is a finite number > 0 that divides ``control_dt`` [s]."""
     if dict(options).get("dt") is not None:
         _check_step(scene, dict(options)["dt"])
     sc = _scene(scene, options)
@@ -113,12 +111,11 @@ def _stable_options(scene: str, options, control_dt: float, control_dt_shown):
     if sc.dt <= limit:
         return options
     n = periods_below(control_dt, limit)
-    of = (f"{sc.string.element_length:g} m elements" if sc.station is None else
-          f"{sc.string.element_length:g} m elements, the moving cable's end elements down to "
-          f"{min(sc.station.first_length, sc.station.last_length - sc.station.element_length):.3g} m")
-    warnings.warn(f"scene {sc.name}: dt = {sc.dt:g} s is above {ENV_STEP_MARGIN:g} x the explicit step's stable "
-                  f"step {stable:.4g} s ((dt / t_c)^2 + dt / t_d < 1 of {of}): stepping at {control_dt / n:.4g} s, "
-                  f"{n} steps per control period", UnstableStepWarning, stacklevel=user_stacklevel())
+    st, l0 = sc.station, sc.string.element_length  # the moving cable's end elements may be shorter
+    short = min(l0, st.first_length, st.last_length - st.element_length) if st else l0
+    warnings.warn(f"scene {sc.name}: dt = {sc.dt:g} s is above {ENV_STEP_MARGIN:g} x the explicit step's stable step"
+                  f" {stable:.4g} s (of {l0:g} m elements, shortest {short:.3g} m): stepping at {control_dt / n:.4g} s,"
+                  f" {n} steps per control period", UnstableStepWarning, stacklevel=user_stacklevel())
     return freeze({**thaw(options), "dt": control_dt / n})
 
 
