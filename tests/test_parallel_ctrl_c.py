@@ -58,19 +58,22 @@ def batch():
         names = sys.argv[3]
         done = pool.run([(snooze.snooze, dict(folder=sys.argv[1], name=n, seconds=float(sys.argv[2]))) for n in names],
                         progress=False, labels=[f"task {n}" for n in names])
-        print(" ".join(done))
+        print(" ".join(done), flush=True)
+        for n in sys.argv[4:]:  # later batches on the same workers, one task each
+            print(*pool.run([(snooze.snooze, dict(folder=sys.argv[1], name=n, seconds=0.1))], progress=False))
 
 if __name__ == "__main__":  # a spawned worker imports this file as __mp_main__
     raise SystemExit(run_guarded("batch", batch))
 """
 
 
-def _batch(tmp_path: Path, seconds: float, names: str = "abc") -> subprocess.Popen:
+def _batch(tmp_path: Path, seconds: float, names: str = "abc", *later: str) -> subprocess.Popen:
     (tmp_path / "snooze.py").write_text(SNOOZE)
     (tmp_path / "batch.py").write_text(BATCH)
     (tmp_path / "marks").mkdir()
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(tmp_path), os.environ.get("PYTHONPATH", "")]))
-    return subprocess.Popen([sys.executable, str(tmp_path / "batch.py"), str(tmp_path / "marks"), str(seconds), names],
+    return subprocess.Popen([sys.executable, str(tmp_path / "batch.py"), str(tmp_path / "marks"), str(seconds), names,
+                             *later],
                             start_new_session=True, env=env, stdout=open(tmp_path / "stdout.txt", "w"),
                             stderr=open(tmp_path / "stderr.txt", "w"))
 
@@ -97,6 +100,20 @@ def test_a_ctrl_c_after_the_last_task_started_keeps_every_result(tmp_path):
     _ctrl_c(proc)
     rc, err = _finish(proc, tmp_path)
     assert rc == 0 and (tmp_path / "stdout.txt").read_text().split() == ["a", "b"], err[-2000:]
+
+
+def test_a_ctrl_c_during_one_batch_starts_no_task_of_the_next_on_the_same_workers(tmp_path):
+    """Every task of the first batch ended after the Ctrl-C, so it returned; the next batch on the same pool then
+    started its tasks, on workers that kept the stop (a training would have ended at its first check), although the
+    message said no new task starts (review of 2026-12-08)."""
+    proc = _batch(tmp_path, 3.0, "ab", "c")
+    _wait_for(proc, lambda: len(_marks(tmp_path)) == 2, 120, tmp_path)
+    _ctrl_c(proc)
+    rc, err = _finish(proc, tmp_path)
+    assert rc == 130 and _marks(tmp_path) == ["a", "b"], err[-2000:]  # c never started
+    assert (tmp_path / "stdout.txt").read_text().split() == ["a", "b"]
+    assert err.strip().endswith("stopped by Ctrl-C during an earlier batch on these workers: none of this batch's 1 "
+                                "tasks started")
 
 
 def snooze_here(seconds: float) -> float:

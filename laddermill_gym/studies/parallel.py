@@ -175,6 +175,7 @@ class Pool:
         self._starting: Starting | None = None  # the actors' start (ray_start.py), asked at the first batch
         self._started_ray = False
         self._events: tuple = ()
+        self._stopped = False  # a Ctrl-C stopped a batch: the workers keep the stop, no later batch starts
 
     def __enter__(self) -> Pool:
         if self.ray is not None:
@@ -229,10 +230,15 @@ class Pool:
         finish (and reach ``on_result``); then TasksFailed names every failed task by its ``labels`` entry
         (default: index, function and argument names). On local processes or Ray actors the first Ctrl-C stops the
         start of new tasks and asks the running ones to stop (:data:`STOP_MESSAGE`); once they ended,
-        TasksInterrupted names each; a second Ctrl-C raises KeyboardInterrupt at once and ends the workers. Serially
-        Ctrl-C is the running task's (a training saves and raises; other tasks raise KeyboardInterrupt)."""
+        TasksInterrupted names each (where every task had completed, their results are returned), and a later
+        batch on the same pool raises TasksInterrupted before any task starts; a second Ctrl-C raises
+        KeyboardInterrupt at once and ends the workers. Serially Ctrl-C is the running task's (a training saves and
+        raises; other tasks raise KeyboardInterrupt)."""
         tasks = [(fn, dict(kw)) for fn, kw in tasks]
         labels = [_label(i, t) for i, t in enumerate(tasks)] if labels is None else [str(x) for x in labels]
+        if self._stopped:  # the workers keep the stop (a task would end at its first check), and the user asked it
+            raise TasksInterrupted(f"stopped by Ctrl-C during an earlier batch on these workers: none of this "
+                                   f"batch's {len(tasks)} tasks started")
         out: list = [None] * len(tasks)
         failures, done, outcomes = [], 0, {}
         serial = not (self._actors or self._ex is not None)
@@ -250,8 +256,10 @@ class Pool:
                 bar.update()
                 if on_result is not None:
                     on_result(i, result)
-        if not serial and stop.requested and (failures or len(outcomes) < len(tasks)):
-            raise _interrupted(labels, outcomes, len(tasks))  # (every task completed: their results stand)
+        if not serial and stop.requested:  # no later batch starts on these workers (they keep the stop)
+            self._stopped = True
+            if failures or len(outcomes) < len(tasks):
+                raise _interrupted(labels, outcomes, len(tasks))  # (every task completed: their results stand)
         if failures:
             raise _failed(failures, labels, done, len(tasks)) from failures[0][1]
         return out
