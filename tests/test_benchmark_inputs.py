@@ -60,6 +60,34 @@ def test_a_measurement_that_could_not_mean_anything_is_refused_first(tmp_path, c
     assert says in capsys.readouterr().err
 
 
+def test_thread_scaling_refuses_an_env_on_one_thread_before_measuring_any(monkeypatch):
+    """``--envs LadderChain-v0 TetheredWing-v0 --copies 16 --threads 1 2`` measured the chain for minutes, then
+    refused the wing (one thread at 16 copies) and wrote nothing (review of 2026-12-08). Stand-in vector envs: the
+    refusal names the wing, no env was stepped, every env built was closed."""
+    import numba
+
+    from laddermill_gym.studies.benchmarks import env_benchmark as eb
+    from laddermill_gym.studies.commands import UsageError
+
+    built, measured = [], []
+
+    class Native:
+        def __init__(self, env_id):
+            self.task = types.SimpleNamespace(parallel="Chain" in env_id)
+            self.closed = False
+            built.append(self)
+
+        def close(self):
+            self.closed = True
+
+    monkeypatch.setattr(eb.gym, "make_vec", lambda env_id, **kw: Native(env_id))
+    monkeypatch.setattr(eb, "_steps_per_second", lambda *a, **k: measured.append(a) or (1.0, 0.0, 0.0))
+    monkeypatch.setattr(numba.config, "NUMBA_NUM_THREADS", 2)
+    with pytest.raises(UsageError, match=r"--threads at --copies 16: laddermill_gym/TetheredWing-v0 steps so few "):
+        eb.thread_scaling([1, 2], envs=["LadderChain-v0", "TetheredWing-v0"], copies=16, echo=lambda *a: None)
+    assert measured == [] and len(built) == 2 and all(n.closed for n in built)
+
+
 def test_physics_step_accuracy_refuses_a_time_of_no_whole_period(capsys):
     from laddermill_gym.studies.benchmarks import physics_step_accuracy as psa
 

@@ -258,20 +258,24 @@ def thread_scaling(thread_counts, envs=None, copies: int = 512, quick: bool = Fa
     if len(counts) < len(thread_counts):
         echo(f"note: thread counts above the pool's {pool} threads (NUMBA_NUM_THREADS or the cpu count) left out")
     res = {"cpus": os.cpu_count(), "pool": pool, "copies": copies}
-    for name in envs or ("TetheredWing-v0", "Rotorcraft-v0"):
-        env_id = ENVS[name][0]
-        native = gym.make_vec(env_id, num_envs=copies, vectorization_mode="vector_entry_point")
+    names = list(envs or ("TetheredWing-v0", "Rotorcraft-v0"))
+    natives = {name: gym.make_vec(ENVS[name][0], num_envs=copies, vectorization_mode="vector_entry_point")
+               for name in names}
+    serial = [ENVS[n][0] for n in names if not getattr(natives[n].task, "parallel", False)]
+    if max(counts) > 1 and serial:  # one thread whatever numba's count: refused before any env is measured
+        from laddermill_gym.studies.commands import UsageError
+
+        for native in natives.values():
+            native.close()
+        raise UsageError(f"--threads at --copies {copies}: {', '.join(serial)} steps so few copies on one thread (its "
+                         "task takes several threads from envs/task_base.PARALLEL_COPIES copies, or 2 for a model of "
+                         "PARALLEL_STATE_SIZE states), so no thread count would change it")
+    for name in names:
+        env_id, native = ENVS[name][0], natives[name]
         obs, _ = native.reset(seed=0)
         from laddermill_gym.control.factory import make_controller
 
         act = np.asarray(make_controller("open_loop", env_id).predict(obs)[0], dtype=np.float32)
-        if max(counts) > 1 and not getattr(native.task, "parallel", False):  # one thread whatever numba's count
-            from laddermill_gym.studies.commands import UsageError
-
-            native.close()
-            raise UsageError(f"--threads at --copies {copies}: {env_id} steps so few copies on one thread (its task "
-                             "takes several threads from envs/task_base.PARALLEL_COPIES copies, or 2 for a model of "
-                             "PARALLEL_STATE_SIZE states), so no thread count would change it")
         runner = native.task._kernel
         launcher = getattr(runner, "launcher", None)
         echo(f"{env_id} at {copies} copies:")
