@@ -98,6 +98,27 @@ def _fake_run(monkeypatch, rows_of_env: dict):
     monkeypatch.setattr(gb, "run_suite", lambda suite, env_ids, *a, **k: [r for e in env_ids for r in rows_of_env[e]])
 
 
+def test_runs_per_env_merge_when_one_env_names_a_file_and_an_edit_of_it_is_refused(tmp_path, monkeypatch, capsys):
+    """The config digest covered the files the run's own envs name: a suite whose TetheredWing-v0 names a scene
+    file refused the TetheredWing-v1 run into the same folder as "another config_digest" (review of 2026-12-08). It
+    now covers the suite's envs, so the runs merge; an edit of the named file between them is still refused."""
+    scene = tmp_path / "my_wing.yaml"
+    scene.write_text((CONFIG_DIR / "scenes" / "tethered_wing.yaml").read_text().replace("../", f"{CONFIG_DIR}/"))
+    suite = tmp_path / "named.yaml"
+    suite.write_text(SUITE.replace("env_kwargs: {}", f"env_kwargs: {{scene: {scene}}}", 1))
+    out = tmp_path / "bench"
+    _fake_run(monkeypatch, {TW: [_row(TW, "open_loop", 0)], TW1: [_row(TW1, "open_loop", 0)]})
+    for env in (TW, TW1):
+        assert cli_main(["gust-bench", "--suite", str(suite), "--env", env, "--controllers", "open_loop",
+                         "--out", str(out)]) == 0, capsys.readouterr().err
+    assert sorted(_strict(out / "gust_bench.json")["env_arguments"]) == [TW, TW1]
+    scene.write_text(scene.read_text() + "\n# edited\n")
+    capsys.readouterr()
+    assert cli_main(["gust-bench", "--suite", str(suite), "--env", TW1, "--controllers", "open_loop",
+                     "--out", str(out)]) == 2
+    assert "holds results of config_digest" in _one_line(capsys.readouterr().err)
+
+
 def _strict(path):
     def refuse(name):
         raise ValueError(f"not JSON: {name}")

@@ -38,15 +38,18 @@ _SAME = ("suite", "version", "suite_sha256", "package_version", "source_digest",
 def run_provenance(suite: Suite, env_ids) -> dict:
     """What a run's figures depend on beside the suite's scenarios: the suite file's SHA-256, per env the arguments
     it was built with (the registered ones merged with the suite's, ``envs.registered_arguments``: scene, physics
-    step, control period), the package's version and a digest of its source (``studies.parallel.source_digest``). A
-    suite fixes its scenarios; the physics is the env id's, so a result is read with the arguments it ran on."""
+    step, control period), the package's version, a digest of its source (``studies.parallel.source_digest``) and
+    one of the files every env of the suite reads (:func:`config_digest`; the suite's envs, not the run's, so runs of
+    one env each merge). A suite fixes its scenarios; the physics is the env id's, so a result is read with the
+    arguments it ran on."""
     from laddermill_gym import __version__
     from laddermill_gym.envs import registered_arguments
     from laddermill_gym.studies.parallel import source_digest
 
-    arguments = {e: registered_arguments(e, suite.envs[e][0]) for e in env_ids}
+    every = {e: registered_arguments(e, suite.envs[e][0]) for e in suite.envs}  # the digest: the suite's, not the
+    arguments = {e: every[e] for e in env_ids}  # run's envs (a run per env merges into one folder)
     return {"suite_sha256": suite.sha256, "package_version": __version__, "source_digest": source_digest(),
-            "config_digest": config_digest(arguments), "env_arguments": arguments}
+            "config_digest": config_digest(every), "env_arguments": arguments}
 
 
 def config_digest(env_arguments: dict) -> str:
