@@ -181,6 +181,20 @@ def test_table_merges_runs_a_later_case_replacing_an_earlier_one():
     assert [(r["v0_m_s"], r["tail_rule"], r["power_kW"]) for r in rows] == [(8.0, "scene", 1.0), (10.0, "depower", 5.0)]
 
 
+def test_table_of_adaptive_runs_keeps_the_adaptive_search_for_its_caption():
+    """A default run searches V_c adaptively (``wind_speeds: null`` in its JSON); ``--table`` on it made the grid an
+    empty tuple and the figure's caption crashed (``min() arg is an empty sequence``) after the CSV and JSON were
+    written (review of 2026-12-08)."""
+    from laddermill_gym.studies.mill.power_curve_plot import grid_text
+
+    adaptive = {"config": {"speeds": [2.0], "wind_speeds": None, "tail": "scene"}, "rows": []}
+    cfg, _ = power_curve.merge_tables([adaptive, adaptive])
+    assert cfg.wind_speeds is None and grid_text(cfg) == "adaptive V_c search"
+    fixed = {"config": {"speeds": [], "wind_speeds": [2.0, 4.0], "tail": "scene"}, "rows": []}
+    cfg, _ = power_curve.merge_tables([adaptive, fixed])
+    assert grid_text(cfg) == "V_c 2-4 m/s"
+
+
 # The adaptive V_c search per wind (studies/mill/vc_search.py). Oracle: the rule as stated in docs/power_curve.md
 # (grid 2, 3, 5; up through 6-10 while the fastest operates; 4 where 3 is best and 5 fails; 1, 0.5 where nothing
 # operates or the best is the lowest tried), walked by hand on synthetic mills that operate on a given set of V_c.

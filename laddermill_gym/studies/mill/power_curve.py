@@ -281,8 +281,8 @@ def _config(args) -> Config:
 
 def merge_tables(metas: list[dict]) -> tuple[Config, list[dict]]:
     """The settings and rows of earlier runs' JSON (:func:`write`): rows in order, a later run's (V0, V_c) replacing
-    an earlier one's; the last run's settings with the cable speeds of all; a row from before the tail rule was
-    recorded gets its run's (``scene``)."""
+    an earlier one's; the last run's settings with the cable speeds of all (``wind_speeds`` None when every run
+    searched adaptively); a row from before the tail rule was recorded gets its run's (``scene``)."""
     cases: dict = {}
     cfgs = []
     for meta in metas:
@@ -292,7 +292,10 @@ def merge_tables(metas: list[dict]) -> tuple[Config, list[dict]]:
         for r in meta["rows"]:
             cases[(r["v0_m_s"], r["v_c_m_s"])] = {"scene": r["scene"], "tail_rule": cfg.tail} | r
     join = lambda name: tuple(sorted({v for c in cfgs for v in getattr(c, name) or ()}))  # noqa: E731
-    return dataclasses.replace(cfgs[-1], speeds=join("speeds"), wind_speeds=join("wind_speeds")), list(cases.values())
+    # the fixed wind-speed grids' union; None (the adaptive search) where no run had one: an empty grid crashed the
+    # figure's caption after the table was written
+    return (dataclasses.replace(cfgs[-1], speeds=join("speeds"), wind_speeds=join("wind_speeds") or None),
+            list(cases.values()))
 
 
 def main(argv=None) -> int:

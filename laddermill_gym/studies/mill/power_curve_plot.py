@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-__all__ = ["plot_power_curve"]
+__all__ = ["plot_power_curve", "grid_text"]
 
 
 def plot_power_curve(path: Path, cfg, rows: list[dict], best: list[dict], paper_v0: float,
@@ -40,7 +40,7 @@ def plot_power_curve(path: Path, cfg, rows: list[dict], best: list[dict], paper_
         ax2.plot(none, [0.0] * len(none), "v", color="C3", label="no periodic case within the limit")
     ax2.legend(fontsize=8)
     ax2.set(xlabel="wind speed V0 at 50 m [m/s]", ylabel="best mean power [kW]",
-            title=f"best V_c per wind ({_grid_text(cfg)}), tail rule '{cfg.tail}'")
+            title=f"best V_c per wind ({grid_text(cfg)}), tail rule '{cfg.tail}'")
     ax3 = ax2.twinx()
     ax3.plot([b["v0_m_s"] for b in okb], [b["best_v_c_m_s"] for b in okb], "s--", color="C1")
     ax3.set_ylabel("best V_c [m/s]", color="C1")
@@ -48,7 +48,7 @@ def plot_power_curve(path: Path, cfg, rows: list[dict], best: list[dict], paper_
     fig.savefig(path, dpi=110)
 
 
-def _grid_text(cfg) -> str:
+def grid_text(cfg) -> str:
     """The search per wind in words: the adaptive rule or the fixed grid's range."""
     if cfg.wind_speeds is None:
         return "adaptive V_c search"
