@@ -78,6 +78,15 @@ def test_module_programs_refuse_numbers_that_are_not(capsys):
     with pytest.raises(SystemExit) as e:
         switch_controllers.main(["--scenario", "NTM_IB", "--controllers", "lqr", "open_loop", "--times", "nan"])
     assert e.value.code == 2 and "--times nan" in capsys.readouterr().err
+    # a hand-over after the episode's end printed "survives" for a hand-over that never happened; an unknown scenario
+    # ended in a traceback (review of 2026-12-08); gusts-v1's NTM_IB episodes are 60 s (configs/benchmarks/gusts-v1)
+    for argv, says in ((["--scenario", "NTM_IB", "--times", "0", "1000"], "--times 1000.0: at or after the end of "
+                        "NTM_IB's episode (60 s): no hand-over"),
+                       (["--scenario", "nosuch", "--times", "1"], "--scenario 'nosuch': ")):
+        with pytest.raises(SystemExit) as e:
+            switch_controllers.main([*argv, "--controllers", "lqr", "open_loop"])
+        err = capsys.readouterr().err
+        assert e.value.code == 2 and says in err and "Traceback" not in err, err
     with pytest.raises(SystemExit) as e:
         trim_slope.main(["--elevators", "nan", "1000"])
     assert e.value.code == 2 and "--elevators = [nan, 1000.0]" in capsys.readouterr().err

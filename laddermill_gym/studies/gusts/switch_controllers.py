@@ -90,6 +90,13 @@ def main(argv: list[str] | None = None) -> None:
     bad = [t for t in a.times if not (math.isfinite(t) and t >= 0.0)]
     if bad:  # before the controllers are built
         p.error(f"--times {bad[0]!r}: each hand-over time must be a finite number >= 0 s")
+    try:
+        end = float(scenario(a.env, a.scenario, a.suite)["duration"])  # [s] the episode's length
+    except ValueError as err:
+        p.error(f"--scenario {a.scenario!r}: {err}")
+    late = [t for t in a.times if t >= end]
+    if late:  # the first controller would fly the whole episode: no hand-over to report
+        p.error(f"--times {late[0]!r}: at or after the end of {a.scenario}'s episode ({end:g} s): no hand-over")
     first, second = a.controllers
     for t, code, t_end in handover_outcomes(a.env, a.scenario, a.seed, a.controllers, a.times, a.suite):
         print(f"{first} -> {second} at {t:g} s: " + ("survives" if code == 0 else f"fails at {t_end:.2f} s"))
