@@ -143,7 +143,7 @@ def test_held_out_seeds_that_the_selection_flies_are_refused():
         paired_survival(CONFIG, "ntm_ib", 10, first + 5, ["lqr", "open_loop"])
 
 
-def test_a_validation_on_a_benchmarks_episodes_is_refused(tmp_path):
+def test_a_validation_on_a_benchmarks_episodes_is_refused(tmp_path, monkeypatch, capsys):
     """A config whose validation flies gusts-v1's own NTM_IB fields (its seeds, from the suite file read here, and
     a turbulence of the same model) is refused by training and reselect before anything is built, naming the
     file, the set, the scenario, the suites and the seeds; the shipped config (seeds 1000 on) is held out."""
@@ -165,3 +165,14 @@ def test_a_validation_on_a_benchmarks_episodes_is_refused(tmp_path):
         check_held_out(load_rl_config(path))
     with pytest.raises(ConfigError, match="a benchmark's episodes would select"):
         reselect(path, [], reference=["open_loop"], log=lambda _s: None)
+    # train-seeds refuses it as laddermill train does, before any worker or warm-up (it reached the check inside
+    # each seed's training and reported exit 1, "seed 0 failed"; review of 2026-12-08)
+    from laddermill_gym.harness import train_seeds as ts
+
+    def never(*args, **kwargs):
+        raise AssertionError("a seed was started")
+
+    monkeypatch.setattr(ts, "train_seeds", never)
+    with pytest.raises(SystemExit) as err:
+        ts.main([str(path), "--seeds", "0", "--out-root", str(tmp_path / "runs")])
+    assert err.value.code == 2 and "a benchmark's episodes would select" in capsys.readouterr().err

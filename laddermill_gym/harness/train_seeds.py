@@ -144,9 +144,12 @@ def _run(args, prog: str = PROG) -> int:
     if is_shared_config(args.config):
         _fail(prog, f"config {args.config!r}: a shared per-wing policy's config; train-seeds runs laddermill train's "
                     "configs (train it with laddermill train CONFIG --seed S)")
-    try:  # laddermill train's checks (a NaN time limit, --n-envs above 4096, a minibatch beyond the rollout ...)
-        _config(args.config, over)  # a bad config fails here, before any worker starts
-    except UsageError as err:
+    from laddermill_gym.harness.validation import check_held_out
+    from laddermill_gym.model.configio import ConfigError
+
+    try:  # laddermill train's checks (a NaN time limit, --n-envs above 4096, a minibatch beyond the rollout, a
+        check_held_out(_config(args.config, over))  # validation on a benchmark's episodes ...): before any worker
+    except (UsageError, ConfigError) as err:
         _fail(prog, str(err))
     from laddermill_gym.harness.train import RUN_FILES
 
