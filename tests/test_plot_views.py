@@ -58,6 +58,34 @@ def test_an_empty_recording_and_a_missing_wing_are_named(wing_run, tmp_path):
         plot_histories(rec, tmp_path / "h.png", wings=[3])
 
 
+def test_each_copy_of_a_vector_env_keeps_its_own_view():
+    """The view box and the time of the last frame were one for all copies: drawing copy 1 at the time copy 0 was
+    drawn read as a reset and dropped copy 0's widened box (review of 2026-12-08). Oracle: the boxes by hand."""
+    import gymnasium as gym
+
+    import laddermill_gym  # noqa: F401
+    from laddermill_gym.envs.render import SceneRenderer
+
+    env = gym.make_vec("laddermill_gym/TetheredWing-v0", 2, vectorization_mode="vector_entry_point")
+    env.reset(seed=[0, 1])
+    env.step(np.zeros((2, *env.single_action_space.shape), dtype=np.float32))
+    task = env.task
+    view = SceneRenderer(task)
+    start = tuple(c.copy() for c in view.box)
+    task.batch.states[0][:3] += np.array([-500.0, 0.0, 0.0])  # copy 0's wing 500 m downwind
+    view.draw(0)
+    wide = tuple(c.copy() for c in view.box)
+    assert wide[0][0] <= task.batch.states[0][0] - view.pad + 1e-9
+    view.draw(1)  # copy 1 at the same time: its own (start) box
+    assert all(np.array_equal(a, b) for a, b in zip(view.box, start, strict=True))
+    task.batch.t[0] += 0.05
+    task.batch.states[0][:3] -= np.array([-500.0, 0.0, 0.0])  # back inside the start's box
+    view.draw(0)  # copy 0's next frame keeps its widened box (a view never narrows within an episode)
+    assert all(np.array_equal(a, b) for a, b in zip(view.box, wide, strict=True))
+    view.close()
+    env.close()
+
+
 def test_the_env_view_follows_a_body_that_leaves_it_and_human_mode_restores_pyplot():
     """Through ``draw``: a wing moved 500 m downwind widens the box to hold it; a broken-down (NaN) state draws on the
     box it has; the next episode (after a reset) starts on the start's box again."""

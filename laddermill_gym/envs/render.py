@@ -109,7 +109,8 @@ class SceneRenderer(FigureRenderer):
         pad = 0.15 * float(np.max(hi - lo)) + max(w.span for w in asm.wing_types)
         self.box = self.start_box = (lo - pad, hi + pad)
         self.pad = pad
-        self.drawn_t = -np.inf  # the time of the last frame drawn: an earlier one is a new episode's
+        # per copy: its view box and the time of its last frame drawn (an earlier one is a new episode's)
+        self.views: dict[int, tuple] = {}
 
     def follow(self, points: np.ndarray) -> None:
         """Widen the view box (never narrow it within an episode: the view stays still while the bodies are inside)
@@ -128,9 +129,9 @@ class SceneRenderer(FigureRenderer):
         ax = self.ax
         ax.cla()
         t = float(self.task.batch.t[b])
-        if t <= self.drawn_t:  # a reset (or the same state again): the view starts from the start's box
-            self.box = self.start_box
-        self.drawn_t = t
+        box, drawn_t = self.views.get(b, (self.start_box, -np.inf))
+        # a reset (or the same state again): the view starts from the start's box; each copy keeps its own view
+        self.box = self.start_box if t <= drawn_t else box
         pos, rot, segments = scene_geometry(self.asm, self.task.batch.states[b])
         up = np.array([1.0, 1.0, -1.0])  # plot altitude = -z
         for p, q in segments:
@@ -140,6 +141,7 @@ class SceneRenderer(FigureRenderer):
         fp = self.asm.fixed_points * up
         ax.scatter(fp[:, 0], fp[:, 1], fp[:, 2], color="k", marker="^", s=30)
         self.follow(np.vstack([pos, segments.reshape(-1, 3)]))
+        self.views[b] = (self.box, t)
         set_view_box(ax, self.box)
         ax.set_title(f"{self.task.scene.name}  t = {self.task.batch.t[b]:6.2f} s")
         return self.frame()
