@@ -64,8 +64,26 @@ def test_an_unknown_algorithm_and_an_unreadable_config_are_named(run_folder, tmp
         make_controller(str(bad), TW)
     (bad / "algorithm.txt").write_text("PPO\n")
     (bad / "config.yaml").write_text("env: [unclosed\n")
-    with pytest.raises(ValueError, match=r"config\.yaml: not readable YAML"):
+    with pytest.raises(ValueError, match=r"config\.yaml: not valid YAML"):
         make_controller(str(bad), TW)
+
+
+def test_a_run_s_settings_are_read_as_training_read_them(run_folder, tmp_path):
+    """YAML 1.2, as the package's loader: ``control_dt: 5e-2`` trains at 0.05 s, and the run's own setting was read
+    back by YAML 1.1 as the text '5e-2' and refused as another control period (review of 2026-12-08). Oracle: the
+    training config loader's value, and the same run refused at another period."""
+    import shutil
+
+    from laddermill_gym.control.trained_settings import check_trained_settings
+    from laddermill_gym.model.configio import load_yaml_text
+
+    run = tmp_path / "run"
+    shutil.copytree(run_folder, run)
+    (run / "config.yaml").write_text(f"algorithm: PPO\nenv: {TW}\nenv_kwargs:\n  control_dt: 5e-2\n")
+    assert load_yaml_text((run / "config.yaml").read_text(), "x")["env_kwargs"]["control_dt"] == 0.05
+    check_trained_settings(run, TW, {"control_dt": 0.05})
+    with pytest.raises(ValueError, match=r"trained with control_dt = 0\.05; .* has 0\.1"):
+        check_trained_settings(run, TW, {"control_dt": 0.1})
 
 
 def test_a_model_without_its_algorithm_file_is_named(run_folder, tmp_path):

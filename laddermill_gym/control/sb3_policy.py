@@ -206,12 +206,11 @@ def read_run_config(config: Path) -> dict | None:
     ValueError naming the file when it is not YAML."""
     if not config.is_file():
         return None
-    import yaml
+    from laddermill_gym.model.configio import load_yaml_text
 
-    try:
-        data = yaml.safe_load(config.read_text())
-    except yaml.YAMLError as err:
-        raise ValueError(f"{config}: not readable YAML ({err})") from None
+    # the package's YAML 1.2 reader, as training read the file (YAML 1.1's safe_load reads 5e-2 as a string, and the
+    # run's own control_dt: 5e-2 was refused as another setting than the 0.05 it trained at)
+    data = load_yaml_text(config.read_text(), str(config))  # ConfigError (a ValueError) naming the file
     return data if isinstance(data, dict) else None
 
 

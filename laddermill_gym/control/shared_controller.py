@@ -29,11 +29,11 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-import yaml
 
 from laddermill_gym.control.exact_actor import affine_fixed_order
 from laddermill_gym.envs import same_task
 from laddermill_gym.envs.observation import OBS_INDEX
+from laddermill_gym.model.configio import load_yaml_text
 from laddermill_gym.multiagent.agents import AGENT_KINDS, WingAgents, build_task
 
 __all__ = ["SHARED_POLICY_FILE", "LINEAR_ACTOR_FILE", "LATERAL_FIELDS", "LINEAR_ACTOR_KEYS", "SharedController",
@@ -59,10 +59,7 @@ def file_digest(path: Path) -> str:
 
 def read_shared_meta(path: Path) -> dict[str, Any]:
     """``shared_policy.yaml``'s fields; ValueError naming the file when it is not YAML or lacks a field."""
-    try:
-        meta = yaml.safe_load(Path(path).read_text())
-    except yaml.YAMLError as err:
-        raise ValueError(f"{path}: not readable YAML ({err})") from None
+    meta = load_yaml_text(Path(path).read_text(), str(path))  # YAML 1.2 (5e-2 a number), ConfigError naming the file
     need = ("env", "k", "n_agents", "obs_dim", "algorithm")
     missing = [f for f in need if not isinstance(meta, dict) or f not in meta]
     if missing:

@@ -81,9 +81,9 @@ def load_candidate(model_file: Path, stats: Path, env_id: str, env_kwargs: dict)
 
 def _config_field(config: Path, field: str, default):
     """A top-level field of a run folder's ``config.yaml`` (``default`` without the file or the field)."""
-    import yaml
+    from laddermill_gym.model.configio import load_yaml_text
 
-    data = yaml.safe_load(config.read_text()) if config.is_file() else None
+    data = load_yaml_text(config.read_text(), str(config)) if config.is_file() else None  # YAML 1.2, as training
     return data.get(field, default) if isinstance(data, dict) else default
 
 
