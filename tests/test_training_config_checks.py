@@ -197,6 +197,29 @@ def test_gradient_steps_zero_is_refused_and_minus_one_or_more_taken(tmp_path):
             "gradient_steps"] == ok
 
 
+@pytest.mark.parametrize("key, value, ok", [
+    ("ent_coef", "auto", True), ("ent_coef", "auto_0.1", True), ("target_entropy", "auto", True),
+    # accepted by the check and refused by SB3 when it built the model (review of 2026-12-08): SB3 takes
+    # target_entropy 'auto' or a number, and logs an initial ent_coef, which must be above 0
+    ("target_entropy", "auto_0.5", False), ("ent_coef", "auto_0", False), ("ent_coef", "auto_", False),
+    ("ent_coef", "auto_-1", False)])
+def test_sac_auto_texts_are_those_sb3_takes(tmp_path, key, value, ok):
+    from stable_baselines3 import SAC
+
+    try:  # the oracle: SB3 itself, on a small env
+        SAC("MlpPolicy", "Pendulum-v1", buffer_size=10, device="cpu", **{key: value})
+        builds = True
+    except (ValueError, AssertionError):
+        builds = False
+    assert builds == ok
+    path = _config(tmp_path, SAC_CONFIG, {key: value})
+    if ok:
+        assert load_rl_config(path).hyperparameters[key] == value
+    else:
+        with pytest.raises(ConfigError, match=rf"cfg\.yaml: field 'hyperparameters\.{key}' = '{value}': 'auto'"):
+            load_rl_config(path)
+
+
 def test_a_sac_critic_warmup_needs_a_fixed_entropy_coefficient(tmp_path):
     """With SAC's learned entropy coefficient (``ent_coef: auto``, its default) the warm-up's frozen actor keeps the
     entropy's gradient of one sign, so log(alpha) drifts by about the learning rate per gradient step: refused,

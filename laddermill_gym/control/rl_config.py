@@ -234,10 +234,12 @@ def read_hyperparameters(s: Section, algo: str, n_envs: int | None, total: int |
             out[key] = hp.flag(key)
         elif rule is None or (value is None and rule.get("optional")):
             out[key] = hp.raw(key)
-        elif rule.get("auto") and isinstance(value, str):  # SAC's "auto" or "auto_<initial value>"
-            head, _, tail = value.partition("_")
-            if algo != "SAC" or head != "auto" or (tail and not _is_number(tail)):
-                raise hp.error(key, value, "'auto' (or 'auto_<number>', its initial value) is SAC's only")
+        elif rule.get("auto") and isinstance(value, str):  # SAC's "auto"; ent_coef also "auto_<initial value>"
+            head, sep, tail = value.partition("_")  # SB3 takes target_entropy "auto" or a number, and an initial
+            initial = key == "ent_coef" and _is_number(tail) and float(tail) > 0  # ent_coef above 0 (it logs it)
+            if algo != "SAC" or head != "auto" or (sep and not initial):
+                raise hp.error(key, value, "'auto'" + (" (or 'auto_<number > 0>', its initial value)" if key ==
+                                                       "ent_coef" else "") + " is SAC's only")
             out[key] = value
         else:
             out[key] = hp.number(key, **{k: v for k, v in rule.items() if k not in ("optional", "auto")})
