@@ -54,6 +54,39 @@ def test_sb3_smoke_training_and_policy_as_controller(tmp_path, monkeypatch):
     assert a.shape == (3, 3) and np.all(np.abs(a) <= 1.0)
 
 
+def test_an_evaluation_on_the_last_step_is_of_the_saved_model(tmp_path, monkeypatch):
+    """An evaluation that fell on the final step (4 + 508 = 512 = total_timesteps) was taken as the final model's,
+    but SB3 updates the model once more after the last step's callback: evaluations.csv's last row was of a policy
+    never saved (review of 2026-12-08). Oracle: the saved model.zip flown on the same evaluation episodes."""
+    pytest.importorskip("stable_baselines3")
+    import csv
+
+    import gymnasium as gym
+    from stable_baselines3.common.vec_env import DummyVecEnv
+
+    from laddermill_gym.control.rl_config import load_rl_config
+    from laddermill_gym.harness.train import _evaluate, evaluation_env, train
+
+    cfg = load_rl_config(_small_config(tmp_path, eval={"every": 508, "episodes": 2}))
+    monkeypatch.setitem(ENV_IDS, TW, dict(ENV_IDS[TW], episode_time=2.0))
+    out = tmp_path / "run"
+    train(cfg, out)
+    with open(out / "evaluations.csv", newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    assert [int(r["steps"]) for r in rows] == [4, 512]  # one row per step count: the final model's replaced it
+    from stable_baselines3 import PPO
+    from stable_baselines3.common.vec_env import VecNormalize
+
+    from laddermill_gym.control.sb3_policy import SB3Controller
+
+    env = evaluation_env(cfg)
+    stats = VecNormalize.load(str(out / "vecnormalize.pkl"), DummyVecEnv([lambda: gym.make(TW)]))
+    saved = SB3Controller(PPO.load(out / "model.zip", device="cpu"), stats.obs_rms.mean, stats.obs_rms.var,
+                          stats.clip_obs, stats.epsilon)  # through torch, as the harness evaluates
+    returns, _ = _evaluate(saved, env, 2)
+    assert float(rows[-1]["mean_return"]) == float(np.mean(returns))
+
+
 def test_sac_config_trains_a_few_hundred_steps(tmp_path, monkeypatch):
     pytest.importorskip("stable_baselines3")
     from laddermill_gym.control.rl_config import load_rl_config

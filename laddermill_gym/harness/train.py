@@ -67,6 +67,7 @@ def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm, stop=None):
             self.next_ckpt = cfg.checkpoint_every
             self.best = -np.inf
             self.rows = []
+            self.halted = False  # the time limit stopped the training (no update after the last callback)
 
         def _vecnorm(self):
             from stable_baselines3.common.vec_env import VecNormalize
@@ -81,6 +82,8 @@ def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm, stop=None):
             minutes = (time.perf_counter() - self.t0) / 60
             row = dict(steps=self.num_timesteps, minutes=round(minutes, 3), mean_return=float(np.mean(returns)),
                        min_return=float(np.min(returns)), mean_length_s=float(np.mean(lengths)))
+            if self.rows and self.rows[-1]["steps"] == row["steps"]:  # the final model (SB3's last update after
+                self.rows.pop()  # the last step's callback) replaces the row of the same step count
             self.rows.append(row)
             self.logger.record("eval/mean_return", row["mean_return"])
             self.logger.record("eval/mean_length_s", row["mean_length_s"])
@@ -99,10 +102,11 @@ def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm, stop=None):
             if vn is not None:
                 vn.save(str(out / "best_vecnormalize.pkl"))
 
-        def _save_checkpoint(self):
-            """The policy now as ``checkpoints/step_<n>.zip`` with the statistics it acts with (once per step n: a
-            validation saves the policy it validates, so every validated policy is a checkpoint reselect reads)."""
-            if self.num_timesteps == getattr(self, "checkpoint_step", None):
+        def _save_checkpoint(self, force: bool = False):
+            """The policy now as ``checkpoints/step_<n>.zip`` with the statistics it acts with (once per step n unless
+            ``force``: a validation saves the policy it validates, so every validated policy is a checkpoint reselect
+            reads)."""
+            if self.num_timesteps == getattr(self, "checkpoint_step", None) and not force:
                 return
             self.model.save(out / "checkpoints" / f"step_{self.num_timesteps}.zip")
             if (vn := self._vecnorm()) is not None:  # the statistics the checkpoint acts with
@@ -120,7 +124,8 @@ def make_callback(cfg: RLConfig, out: Path, eval_env, pbar: tqdm, stop=None):
                 self.next_ckpt += cfg.checkpoint_every
             if stop is not None and stop.requested:
                 return False
-            return (time.perf_counter() - self.t0) < 60.0 * cfg.time_limit_minutes
+            self.halted = (time.perf_counter() - self.t0) >= 60.0 * cfg.time_limit_minutes  # SB3 then stops at once
+            return not self.halted
 
     return Harness()
 
@@ -297,12 +302,13 @@ def train(cfg: RLConfig, out: Path, threads: int | None = None, command: list[st
                         "abort)") as stop):
         cb = make_callback(cfg, out, eval_env, pbar, stop)
         model.learn(total_timesteps=cfg.total_timesteps, callback=cb, tb_log_name=cfg.algorithm)
-        if not stop.requested:  # the final model, unless the callback has just evaluated it (a time limit)
-            if not cb.rows or cb.rows[-1]["steps"] != model.num_timesteps:
+        if not stop.requested:  # the final model, unless the callback evaluated it and stopped the training there (a
+            # time limit); at total_timesteps SB3 updates the model once more after the last step's callback
+            at_end = lambda rows: cb.halted and rows and rows[-1]["steps"] == model.num_timesteps  # noqa: E731
+            if not at_end(cb.rows):
                 cb.evaluate()
-            validated = getattr(cb, "val_rows", None)
-            if cfg.validation is not None and not (validated and validated[-1]["steps"] == model.num_timesteps):
-                cb.validate()
+            if cfg.validation is not None and not at_end(getattr(cb, "val_rows", None)):
+                cb.validate(final=True)
     minutes = (time.perf_counter() - t0) / 60
     model.save(out / "model.zip")
     if cfg.normalize_observations:

@@ -201,12 +201,14 @@ class TrainingPhases:
             self.saved_rate = (self.model.learning_rate, self.model.lr_schedule)
             set_learning_rate(self.model, self.cfg.critic_warmup.learning_rate)
 
-    def validate(self):
-        """The validation sets (control/rl_phases.py); the best policy so far kept as best_model.zip."""
+    def validate(self, final: bool = False):
+        """The validation sets (control/rl_phases.py); the best policy so far kept as best_model.zip. ``final``: the
+        model after training, which SB3 updated once more after the last step's callback: its checkpoint and row
+        replace those of a validation at the same step count."""
         from laddermill_gym.control.sb3_policy import SB3Controller
 
         vn = self._vecnorm()
-        self._save_checkpoint()  # the policy validated here, on disk as checkpoints/step_<n>.zip (reselect's)
+        self._save_checkpoint(force=final)  # the policy validated here, on disk as checkpoints/step_<n>.zip
         ctrl = SB3Controller(self.model, *((vn.obs_rms.mean, vn.obs_rms.var, vn.clip_obs, vn.epsilon)
                                            if vn is not None else ()))
         res = validate(ctrl, self.cfg.env_id, self.cfg.carried_env_kwargs(), self.cfg.validation)
@@ -218,6 +220,8 @@ class TrainingPhases:
             self.best_val = res
             self._save_best(vn)
         self.val_rows = getattr(self, "val_rows", [])
+        if self.val_rows and self.val_rows[-1]["steps"] == self.num_timesteps:  # the final model at the same count
+            self.val_rows.pop()
         shown = {k: v for k, v in res.items() if k != "outcomes"}
         shown.setdefault("lost_to_reference", "")
         self.val_rows.append(dict(steps=self.num_timesteps, minutes=round((time.perf_counter() - self.t0) / 60, 3),
