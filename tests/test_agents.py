@@ -65,7 +65,8 @@ def test_an_evaluation_on_the_last_step_is_of_the_saved_model(tmp_path, monkeypa
     from stable_baselines3.common.vec_env import DummyVecEnv
 
     from laddermill_gym.control.rl_config import load_rl_config
-    from laddermill_gym.harness.train import _evaluate, evaluation_env, train
+    from laddermill_gym.harness.evaluate import run_episodes
+    from laddermill_gym.harness.train import evaluation_env, train
 
     cfg = load_rl_config(_small_config(tmp_path, eval={"every": 508, "episodes": 2}))
     monkeypatch.setitem(ENV_IDS, TW, dict(ENV_IDS[TW], episode_time=2.0))
@@ -83,7 +84,7 @@ def test_an_evaluation_on_the_last_step_is_of_the_saved_model(tmp_path, monkeypa
     stats = VecNormalize.load(str(out / "vecnormalize.pkl"), DummyVecEnv([lambda: gym.make(TW)]))
     saved = SB3Controller(PPO.load(out / "model.zip", device="cpu"), stats.obs_rms.mean, stats.obs_rms.var,
                           stats.clip_obs, stats.epsilon)  # through torch, as the harness evaluates
-    returns, _ = _evaluate(saved, env, 2)
+    returns = run_episodes(saved, env, 2, record=False).returns  # the harness's evaluation, seeds 0 and 1
     assert float(rows[-1]["mean_return"]) == float(np.mean(returns))
 
 
