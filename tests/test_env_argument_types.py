@@ -183,3 +183,15 @@ def test_a_scene_fidelity_option_is_refused_by_name(env_id, fidelity):
     with pytest.raises(ValueError, match=rf"scene_options\['fidelity'\] = '{fidelity}': each env sets its scene's "
                                          r"fidelity"):
         gym.make(env_id, scene_options={"fidelity": fidelity})
+
+
+def test_the_rotorcraft_s_refined_step_warning_points_at_the_line_that_made_the_env():
+    """``stacklevel=2`` pointed into the package's env skeleton (review of 2026-12-08)."""
+    from laddermill_gym.sim.stable_step import UnstableStepWarning
+
+    with warnings.catch_warnings(record=True) as got:
+        warnings.simplefilter("always")
+        line = sys._getframe().f_lineno + 1
+        gym.make(RC, physics_step="rk4", physics_dt=0.0125).close()
+    mine = [(w.filename, w.lineno) for w in got if issubclass(w.category, UnstableStepWarning)]
+    assert mine == [(__file__, line)]

@@ -18,6 +18,7 @@ from typing import NamedTuple
 import numpy as np
 
 from laddermill_gym.kernels.contract import B3_POS, N3_POS
+from laddermill_gym.warning_site import user_stacklevel
 
 __all__ = ["LoopExtent", "extent", "point_positions", "check_turbulence_cover", "start_points", "LOOP", "START"]
 
@@ -83,5 +84,5 @@ def check_turbulence_cover(disturbances, points: np.ndarray, where: str = "distu
                              f"{what.format(lo=req[0], hi=req[1])}; outside the grid the edge values of the "
                              "turbulence hold")
     for t in texts:
-        warnings.warn(t, RuntimeWarning, stacklevel=3)
+        warnings.warn(t, RuntimeWarning, stacklevel=user_stacklevel())
     return texts

@@ -42,6 +42,7 @@ from laddermill_gym.model.input_cache import input_cache
 from laddermill_gym.model.states import planar_to_3d
 from laddermill_gym.model.station import electrical_power
 from laddermill_gym.sim.reports import lowest_body
+from laddermill_gym.warning_site import user_stacklevel
 
 __all__ = ["OperatingPoint", "SettleConfig", "compute_operating_point", "operating_point", "cached_operating_point",
            "mill_scene", "scene_digest", "nominal_positions", "operating_point_pending", "SEARCH_HOOK"]
@@ -242,7 +243,7 @@ def compute_operating_point(scene: str = "laddermill", options: tuple = (), sett
                         alpha_range_rad=alpha_range, note=note,
                         scene_digest=scene_digest(mill_scene(scene, options, 3)))
     if warn and not op.converged:
-        warnings.warn(f"LadderMill operating point: {note}", RuntimeWarning, stacklevel=2)
+        warnings.warn(f"LadderMill operating point: {note}", RuntimeWarning, stacklevel=user_stacklevel())
     return op
 
 
@@ -312,7 +313,7 @@ def operating_point(scene: str, options: tuple, settle: SettleConfig) -> Operati
     op, _ = cached_operating_point(scene, options, settle)
     _RETURNED.add((scene, options, settle))
     if not op.converged:
-        warnings.warn(f"LadderMill operating point: {op.note}", RuntimeWarning, stacklevel=2)
+        warnings.warn(f"LadderMill operating point: {op.note}", RuntimeWarning, stacklevel=user_stacklevel())
     return op
 
 

@@ -62,6 +62,7 @@ from laddermill_gym.model.states import rotations_from_quaternions
 from laddermill_gym.model.station import electrical_power
 from laddermill_gym.sim.simulator import Simulator
 from laddermill_gym.sim.stable_step import UnstableStepWarning
+from laddermill_gym.warning_site import user_stacklevel
 
 __all__ = ["MillTask"]
 
@@ -222,7 +223,7 @@ class MillTask(TaskCore):
                                                      self.episode_time, self.wind_dt)
         if not self.physics_step_note:
             return settings
-        warnings.warn(f"{self.env_name}: {self.physics_step_note}", UnstableStepWarning, stacklevel=4)
+        warnings.warn(f"{self.env_name}: {self.physics_step_note}", UnstableStepWarning, stacklevel=user_stacklevel())
         settings = dataclasses.replace(settings, dt=dt)
         self.n_substeps = substeps_per_period(self.scene.name, settings, self.control_dt, control_dt)
         return settings

@@ -9,6 +9,7 @@ from __future__ import annotations
 import warnings
 
 from laddermill_gym.envs.rotorcraft.env import RotorcraftEnv, RotorcraftVectorEnv
+from laddermill_gym.warning_site import user_stacklevel
 
 __all__ = ["RotorcraftV1Env", "RotorcraftV1VectorEnv", "warn_without_blade_limit"]
 
@@ -86,4 +87,4 @@ def warn_without_blade_limit(task) -> None:
     one difference from Rotorcraft-v0 (a termination config built without ``blade_stall=True`` turns it off)."""
     if not task.termination_config.blade_stall:
         warnings.warn("Rotorcraft-v1 with termination.blade_stall off: the blade-incidence limit, v1's one difference "
-                      "from Rotorcraft-v0, does not end episodes", UserWarning, stacklevel=3)
+                      "from Rotorcraft-v0, does not end episodes", UserWarning, stacklevel=user_stacklevel())

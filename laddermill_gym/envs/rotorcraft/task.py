@@ -62,6 +62,7 @@ from laddermill_gym.rotorcraft.craft_observe import (
 )
 from laddermill_gym.sim.reports import ground_stop_text
 from laddermill_gym.sim.stable_step import UnstableStepWarning
+from laddermill_gym.warning_site import user_stacklevel
 
 __all__ = ["CraftTask", "CRAFT_FAILURES", "CraftScene"]
 
@@ -164,7 +165,8 @@ class CraftTask(TaskCore):
                 dt, self.physics_step_note = stable_rk4_step(probe, settings.dt, self.control_dt, self.disturbances,
                                                              self.episode_time, self.wind_dt)
                 if self.physics_step_note:
-                    warnings.warn(f"{self.env_name}: {self.physics_step_note}", UnstableStepWarning, stacklevel=2)
+                    warnings.warn(f"{self.env_name}: {self.physics_step_note}", UnstableStepWarning,
+                                  stacklevel=user_stacklevel())
                     settings = dataclasses.replace(settings, dt=dt)
             self.n_substeps = whole_multiple(self.control_dt, settings.dt, control_dt)
             # the W step's iteration matrix kept for jacobian_every physics steps (1: every step, the registered bits)

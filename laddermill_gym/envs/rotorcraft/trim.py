@@ -15,6 +15,7 @@ from laddermill_gym.kernels.contract import CU_COLLECTIVE
 from laddermill_gym.model.input_cache import input_cache
 from laddermill_gym.rotorcraft.config import DEFAULT_CRAFT, CraftConfig, load_craft_config
 from laddermill_gym.rotorcraft.craft import Craft, load_craft
+from laddermill_gym.warning_site import user_stacklevel
 
 __all__ = ["craft_config", "control_ranges", "trim_controls", "untrimmed_craft", "craft_trim",
            "trim_on_disk", "trim_action"]
@@ -133,5 +134,5 @@ def check_trim_incidence(craft: Craft, sim, x_trim: np.ndarray, blade_stall: boo
             f"{math.degrees(limit):.3g} deg limit of the rotor model; pass {hint}")
     if blade_stall:
         raise ValueError(text + " (termination.blade_stall would end the episode at once)")
-    warnings.warn(text, BladeLimitWarning, stacklevel=4)
+    warnings.warn(text, BladeLimitWarning, stacklevel=user_stacklevel())
     return tip
