@@ -152,3 +152,35 @@ def test_demo_flies_a_run_trained_with_groups_on_the_runs_action_layout(tmp_path
                       "--no-gif", "--no-progress", "--out", str(out)]) == 0
     assert (out / "demo.csv").is_file()
     assert "run" in capsys.readouterr().out
+
+
+def test_a_run_s_physics_step_stays_with_its_own_id(tmp_path, monkeypatch):
+    """A v0 training config that pins ``physics_dt: 0.05`` made TetheredWing-v1 (two RK4 steps of 25 ms) step RK4 at
+    50 ms under paired_survival --env and the commands' controller specs, neither id's step (review of 2026-12-08).
+    Flown on its own id the run keeps it; on another id of the task it is left out. Oracles: the settings by hand
+    and the env paired_survival builds."""
+    import gymnasium as gym
+    import numpy as np
+
+    from laddermill_gym.control.rl_config import load_rl_config
+    from laddermill_gym.harness import paired_survival as ps
+
+    raw = yaml.safe_load(open("configs/agents/ppo_tethered_wing_severe.yaml").read())
+    raw["env_kwargs"]["physics_dt"] = 0.05
+    run = tmp_path / "run"
+    run.mkdir()
+    (run / "config.yaml").write_text(yaml.safe_dump(raw))
+    assert load_rl_config(run / "config.yaml").carried_env_kwargs()["physics_dt"] == 0.05
+    assert policy_env_kwargs(str(run), TW)["physics_dt"] == 0.05
+    assert "physics_dt" not in policy_env_kwargs(str(run), TW1)
+    steps = []
+
+    def episodes(controller, env_id, kw, seeds, episode_time, disturbances):
+        env = gym.make(env_id, **kw).unwrapped
+        steps.append((env_id, env.task.batch.settings.method, env.task.batch.settings.dt))
+        env.close()
+        return {"failure": np.zeros(len(seeds), dtype=int)}
+
+    monkeypatch.setattr(gb, "run_episodes", episodes)
+    ps.paired_survival(run / "config.yaml", "ntm_ib", 1, 5000, ["lqr", "open_loop"], TW1)
+    assert steps == [(TW1, "rk4", 0.025)] * 2  # v1's registered step

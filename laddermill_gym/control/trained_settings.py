@@ -16,13 +16,26 @@ from typing import Any
 
 from laddermill_gym.envs import ENV_IDS, registered_arguments, same_task, task_class
 
-__all__ = ["training_settings", "settings_of", "check_trained_settings"]
+__all__ = ["training_settings", "settings_of", "check_trained_settings", "carried_to"]
 
 #: settings the check leaves out: the physics step is the env's (TetheredWing-v0's policies fly v1), and so are
 #: the integrator's entries of ``scene_options`` (``load_scene``'s ``method`` and ``dt``: v0 registers its W method
 #: there)
 PHYSICS_KEYS = ("physics_step", "physics_dt")
 PHYSICS_SCENE_OPTIONS = ("method", "dt")
+
+
+def carried_to(trained_env: str, env_id: str | None, carried: dict[str, Any]) -> dict[str, Any]:
+    """A run's carried settings ``carried`` (trained on ``trained_env``) for flying its policy on ``env_id``: without
+    the physics step (:data:`PHYSICS_KEYS`, the integrator's ``scene_options``) where ``env_id`` is another id of the
+    same task, which steps its own physics (a v0 config's ``physics_dt: 0.05`` made TetheredWing-v1 step RK4 at
+    50 ms, neither id's step; review of 2026-12-08)."""
+    if env_id is None or env_id == trained_env:
+        return dict(carried)
+    out = {k: v for k, v in carried.items() if k not in PHYSICS_KEYS}
+    if isinstance(out.get("scene_options"), dict):
+        out["scene_options"] = _policy_part("scene_options", out["scene_options"])
+    return out
 
 
 def _policy_part(key: str, value):

@@ -44,6 +44,7 @@ def paired_survival(config: str, set_name: str, episodes: int, seed: int, contro
     ``envs.same_task``, ValueError naming both otherwise)."""
     from laddermill_gym.control.factory import make_controller
     from laddermill_gym.control.rl_config import load_rl_config
+    from laddermill_gym.control.trained_settings import carried_to
     from laddermill_gym.envs import same_task
     from laddermill_gym.harness.validation import selection_overlaps
     from laddermill_gym.studies.gusts.gust_bench import run_episodes
@@ -62,7 +63,7 @@ def paired_survival(config: str, set_name: str, episodes: int, seed: int, contro
     if not (isinstance(seed, int) and 0 <= seed and seed + episodes - 1 <= 2 ** 32 - 1):
         raise ValueError(f"seed = {seed!r}: the episodes' seeds {seed} .. {seed + episodes - 1} must lie in 0 .. "
                          f"{2 ** 32 - 1} (numpy's seed range)")
-    kw = cfg.carried_env_kwargs()
+    kw = carried_to(cfg.env_id, env, cfg.carried_env_kwargs())  # another id of the task: its own physics step
     seeds = list(range(seed, seed + episodes))
     selected_on = selection_overlaps(cfg.validation, set_name, seeds)
     if selected_on:

@@ -73,6 +73,7 @@ def policy_env_kwargs(spec: str, env_id: str | None = None) -> dict:
     on another task than ``env_id`` (``envs.same_task``: the same task on another physics step is accepted) raises
     ValueError naming both."""
     from laddermill_gym.control.rl_config import CARRIED_KWARGS, env_family, load_rl_config
+    from laddermill_gym.control.trained_settings import carried_to
     from laddermill_gym.control.zoo_run import find_zoo_run, read_zoo_run
     from laddermill_gym.envs import same_task
 
@@ -86,7 +87,7 @@ def policy_env_kwargs(spec: str, env_id: str | None = None) -> dict:
         if env_id is not None and not same_task(run.env_id, env_id):
             raise ValueError(f"{run.folder}: an rl-zoo3 run on {run.env_id!r}, evaluated on {env_id!r} (--env)")
         keys = CARRIED_KWARGS[env_family(run.env_id)]
-        return {k: v for k, v in run.env_kwargs.items() if k in keys}
+        return carried_to(run.env_id, env_id, {k: v for k, v in run.env_kwargs.items() if k in keys})
     if not path.exists():
         return {}
     from laddermill_gym.control.sb3_policy import run_folder
@@ -97,8 +98,10 @@ def policy_env_kwargs(spec: str, env_id: str | None = None) -> dict:
         return {}
     if (folder / SHARED_POLICY_FILE).is_file():  # a shared per-wing policy: its own description holds the env's
         # control settings (laddermill train ppo_mill_v1; its config.yaml is not an SB3 run's)
-        return dict(read_shared_meta(folder / SHARED_POLICY_FILE).get("env_kwargs") or {})
-    return load_rl_config(folder / "config.yaml").carried_env_kwargs()
+        meta = read_shared_meta(folder / SHARED_POLICY_FILE)
+        return carried_to(str(meta["env"]), env_id, dict(meta.get("env_kwargs") or {}))
+    cfg = load_rl_config(folder / "config.yaml")
+    return carried_to(cfg.env_id, env_id, cfg.carried_env_kwargs())  # another id of the task: its own physics
 
 
 def build_controllers(specs, env_id: str, env_kwargs: dict | None = None, build: Callable | None = None,
