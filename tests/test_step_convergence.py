@@ -55,3 +55,14 @@ def test_craft_step_options_labels_parse_and_bad_copies_are_refused(capsys):
     with pytest.raises(SystemExit):
         cso.main(["--copies", "0"])
     assert "--copies = 0: must be a positive integer" in capsys.readouterr().err
+
+
+def test_an_env_without_a_physics_step_is_refused_in_one_line(capsys):
+    """gusts-v4 holds PointMassChain-v0, whose task takes no physics_step: it ended in a TypeError traceback
+    (review of 2026-12-08)."""
+    from laddermill_gym.studies.gusts import step_convergence
+
+    with pytest.raises(SystemExit) as err:
+        step_convergence.main(["--env", "laddermill_gym/PointMassChain-v0", "--suite", "gusts-v4", "--controllers",
+                               "open_loop", "--steps", "rk4:0.001", "rk4:0.002"])
+    assert err.value.code == 2 and "takes no physics_step" in capsys.readouterr().err

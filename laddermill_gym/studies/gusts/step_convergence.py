@@ -78,6 +78,10 @@ def scorecards(suite_name: str, env_id: str, controllers, steps, echo=print) -> 
     suite = load_suite(suite_name)
     if env_id not in suite.envs:
         raise ValueError(f"env = {env_id!r}: not in suite {suite.name} ({', '.join(sorted(suite.envs))})")
+    from laddermill_gym.envs import env_arguments
+
+    if "physics_step" not in env_arguments(env_id):  # the point-mass and pumping envs step their own way
+        raise ValueError(f"env = {env_id!r}: takes no physics_step, so its scorecard cannot be flown on other steps")
     kwargs, scenarios = suite.envs[env_id]
     longest = max(s.duration for s in scenarios)
     for label, args in step_args.items():  # a step too fine to finish is named before any episode
