@@ -3,7 +3,8 @@
 The oracle for its accuracy is an independent run of the same physics at a step eight times finer (RK4 at 3.125 ms,
 well inside RK4's stable step of about 0.11 s at the trim): v1's rewards and positions must be within it, and v0's
 registered ROS34PW2 step of 50 ms must be the less accurate of the two (the reason the id exists). Its gust scorecard
-(slow) must lose the episodes the reference step loses (gusts-v4, docs/controllers.md).
+(slow) must lose the scenarios the reference step loses, and the episodes lost on both end near the same times
+(gusts-v4, docs/controllers.md).
 """
 
 from __future__ import annotations

@@ -7,7 +7,8 @@ SB3 model), ``vecnormalize.pkl`` (its observation statistics), ``config.yaml`` (
 the env), ``algorithm.txt`` and ``README.md`` (the command and seed that reproduce it, and its scores). A shared
 per-wing policy of the mill (``ppo_mill``: ``laddermill train ppo_mill_v1``; ``ppo_mill_v3``: ``laddermill train
 ppo_mill_v3``) has ``shared_policy.yaml`` instead of
-``vecnormalize.pkl`` (its actor scales its inputs by fixed Bryson scales), its config is ``ppo_mill_v1.yaml``, and
+``vecnormalize.pkl`` (its actor scales its inputs by fixed Bryson scales), its config is the shared training's
+(``ppo_mill_v1.yaml``, ``ppo_mill_v3.yaml``), and
 ``linear_actor.npz`` (its linear actor exported from ``model.zip``) lets it run without torch
 (``control/shared_controller.py``).
 """

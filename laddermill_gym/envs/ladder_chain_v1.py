@@ -24,10 +24,10 @@ class LadderChainV1Env(WingEnv):
     step once per control period moves the chain's open-loop rewards by 4-5 % (docs/benchmarks.md), which this one
     does not. Judged against RK4 at 3.125 ms over 10 s of seeded actions of 0.3 amplitude (tests/test_chain_v1.py,
     slow; 2026-12-05): the largest reward error 0.0041 (v0's: 0.0016), the mean reward 0.5458 as the reference's,
-    the positions within 1e-3 of the chain's extent. On 8 copies on two threads it stepped 3,407-3,515 env steps/s
-    in three runs, v0 2,633-2,738 in the same runs (issue 32's 3,000; ``laddermill bench-envs --quick --envs
-    LadderChain-v0 LadderChain-v1 --copies 8``, docs/benchmarks.md). Stronger wind shortens RK4's stable step: the
-    env checks it in the strongest wind of its disturbances and steps finer where needed, as v0 does.
+    the positions within 1e-3 of the chain's extent. On 8 copies on two threads it stepped 3,343 / 3,375 / 3,049 env
+    steps/s in three runs, v0 2,668 / 2,703 / 2,380 in the same runs (issue 32's 3,000; ``laddermill bench-envs --quick
+    --envs LadderChain-v0 LadderChain-v1 --copies 8``, docs/benchmarks.md). Stronger wind shortens RK4's stable step:
+    the env checks it in the strongest wind of its disturbances and steps finer where needed, as v0 does.
 
     ## Action Space
 

@@ -1,8 +1,9 @@
 """How far an env's trajectory moves when its physics step changes (issue 32 point 3): one copy of an env id over
 a short episode of seeded actions (the open-loop action plus uniform noise, the same for every step), its wings'
-CG and cable nodes' positions after every control period, against RK4 at a quarter of the registered step (the
-reference). Prints the extent (the largest distance of a point from the origin over the reference run) and, per
-physics step, the largest position error [m], as a share of the extent, and its CPU time and rate on this process's
+CG and cable nodes' positions after every control period, against RK4 at a quarter of the scene's RK4 step
+(``REGISTERED_DT``: 3.125 ms for the chains and TetheredWing-v1, 2.5 ms for the mills; the reference). Prints the extent
+(the largest distance of a point from the origin over the reference run) and, per physics step, the largest position
+error [m], as a share of the extent, and its CPU time and rate on this process's
 thread (one copy, so one thread). A label ``METHOD:K`` (``ros2t:8``) keeps the W-method's iteration matrix for K
 steps (the env argument ``jacobian_every``; not ``whip_spectrum --methods``' METHOD:DT, a step size).
 tests/test_fast_physics_step.py holds the 1e-3 bound for ``physics_step="ros34pw2"`` and for ``"ros2"`` with
@@ -110,8 +111,8 @@ def check_labels(steps) -> None:
 def compare(env_id: str, episode_time: float, steps=("ros34pw2",), echo=print, **kwargs) -> dict:
     """The study: {"extent": m, "periods": control periods asked, label: {"error_m", "share", "periods",
     "cpu_s"}} for the registered step ("registered") and each ``physics_step`` of ``steps`` (once per control
-    period), against RK4 at a quarter of the registered step; ``kwargs`` go to every env (e.g. the operating
-    point)."""
+    period), against RK4 at a quarter of the scene's RK4 step (``REGISTERED_DT``); ``kwargs`` go to every env (e.g.
+    the operating point)."""
     check_labels(steps)
     n = int(round(episode_time / 0.05))
     ref, _, r_ref = episode(env_id, n, physics_step="rk4", jacobian_every=1, physics_dt=REGISTERED_DT[env_id] / 4,
