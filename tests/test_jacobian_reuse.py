@@ -108,6 +108,10 @@ def test_the_env_argument_is_checked_by_name():
     assert jacobian_settings(w, 1).jacobian_every == 1 and jacobian_settings(w, 3).jacobian_every == 3
     with pytest.raises(ValueError, match=r"jacobian_every = 0: must be an integer >= 1"):
         jacobian_settings(w, 0)
+    # past int64 the env argument is named (it was IntegratorSettings.jacobian_every; review of 2026-12-08)
+    with pytest.raises(ValueError, match=r"^jacobian_every = 9223372036854775808: must be an integer >= 1 .* at "
+                                         r"most 2\*\*63 - 1"):
+        jacobian_settings(w, 2 ** 63)
     with pytest.raises(ValueError, match=r"jacobian_every = 2: only a W-method .*'rk4'"):
         jacobian_settings(IntegratorSettings(method="rk4", dt=0.01), 2)
 

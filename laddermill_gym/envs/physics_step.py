@@ -148,8 +148,8 @@ def jacobian_settings(settings, jacobian_every):
     or > 1 with a method that is not a fixed-step W-method."""
     k = jacobian_every
     if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 1 <= k <= np.iinfo(np.int64).max:
-        raise ValueError(f"jacobian_every = {k!r}: must be an integer from 1 to 2**63 - 1 (physics steps per "
-                         "Jacobian)")
+        raise ValueError(f"jacobian_every = {k!r}: must be an integer >= 1 (physics steps per Jacobian), at most "
+                         "2**63 - 1")
     if k != 1 and settings.method not in W_METHODS:
         raise ValueError(f"jacobian_every = {k!r}: only a W-method reuses its Jacobian (the physics step is "
                          f"{settings.method!r})")
