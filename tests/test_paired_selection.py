@@ -80,7 +80,7 @@ def _phases(tmp_path, monkeypatch, selection, sequence):
     phases.model = None
     phases._vecnorm = lambda: None
     phases._save_best = lambda _vn: saved.append(phases.num_timesteps)
-    phases._save_checkpoint = lambda: None  # the training's callback saves the validated policy
+    phases._save_checkpoint = lambda force=False: None  # the training's callback saves the validated policy
     for step in range(len(sequence)):
         phases.num_timesteps = step
         phases.validate()

@@ -58,7 +58,8 @@ def check_scene_options(options) -> None:
 
     if "fidelity" in options:  # the env passes its own: a TypeError ("multiple values") or another family's error
         raise ValueError(f"scene_options['fidelity'] = {options['fidelity']!r}: each env sets its scene's fidelity "
-                         "(the wing, chain and mill envs 'rigid', PointMassChain 'pointmass'): choose the env instead")
+                         "('pointmass' is PointMassEnv's, laddermill_gym/PointMassChain-v0; 'rigid' the wing, chain "
+                         "and mill envs'): choose the env instead")
     known = [p.name for p in inspect.signature(load_scene).parameters.values() if p.kind is p.KEYWORD_ONLY]
     unknown = sorted(set(options) - set(known))
     if unknown:
