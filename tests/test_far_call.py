@@ -40,6 +40,14 @@ def through_address(x, k):
     return scaled_sum_far(x, k) + 100
 
 
+scaled_sum_far_threads = far_call(scaled_sum, types.int64)  # a call site of its own, first called from six threads
+
+
+@njit(nogil=True)
+def through_address_threads(x, k):
+    return scaled_sum_far_threads(x, k) + 100
+
+
 @njit
 def linked(x, k):
     return scaled_sum(x, k) + 100
@@ -82,11 +90,14 @@ def test_wrong_return_type_is_an_error_not_a_crash(capfd):
 
 
 def test_first_calls_from_threads_at_once():
+    """Six threads make the first calls of a call site at once (a site of its own: the file's other tests resolve
+    ``through_address``'s first, so this test resolved nothing when the file ran in its order; review of
+    2026-12-08)."""
     out = [None] * 6
 
     def run(i):
         x = np.arange(5.0)
-        out[i] = (through_address(x, 2.0), x[0])
+        out[i] = (through_address_threads(x, 2.0), x[0])
 
     threads = [threading.Thread(target=run, args=(i,)) for i in range(6)]
     for th in threads:

@@ -84,6 +84,40 @@ def test_the_first_process_waits_for_the_statics_line_not_for_any_output():
     w.wait()
 
 
+def test_a_warm_up_that_writes_much_after_its_line_is_not_left_blocked(monkeypatch):
+    """A warm-up whose output outgrows the pipe after the line its caller waited for (numba's debug variables print
+    to it) blocked on its write until the wait's limit, then was killed (review of 2026-12-08). Oracle: the process's
+    own exit status, 0, within seconds of a 60 s limit."""
+    import time
+
+    from laddermill_gym.envs import kernel_warmup as kw
+
+    monkeypatch.setattr(kw, "WAIT_LIMIT_S", 60.0)
+    code = (f"print({kw.CALLEES_DONE!r}, flush=True)\n"
+            "for i in range(20000): print('[cache] data saved to /a/numba/cache/path/kernel-123.py311.1.nbc')\n")
+    w = kw.Warmup(subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE))
+    assert w.wait_for(kw.CALLEES_DONE)
+    t0 = time.monotonic()
+    assert w.wait() == 0 and time.monotonic() - t0 < 30.0
+
+
+def test_a_wait_that_raises_stops_every_other_warm_up():
+    """The waits for the warm-ups stood outside the block that stops them on an error: a Ctrl-C during the wait, or a
+    failed warm-up's warning turned into an error, left the other warm-up compiling with its lock held (review of
+    2026-12-08). Oracle: the processes' own state after the failed wait."""
+    from laddermill_gym.envs import kernel_warmup as kw
+
+    failing = kw.Warmup(subprocess.Popen([sys.executable, "-c", "raise SystemExit(1)"], stdout=subprocess.PIPE))
+    sleeping = kw.Warmup(subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)"],
+                                          stdout=subprocess.PIPE))
+    proc = sleeping.proc
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)  # the failed warm-up's warning as an error (pytest -W error)
+        with pytest.raises(RuntimeWarning, match="exited with code 1"):
+            kw.wait_all((failing, None, sleeping))
+    assert proc.poll() is not None and sleeping.proc is None  # stopped and reaped, not left sleeping
+
+
 def test_pending_until_returned_or_on_disk(tmp_path, monkeypatch):
     monkeypatch.setenv(op_cache.CACHE_VARIABLE, str(tmp_path / "cache"))
     operating_point.cache_clear()

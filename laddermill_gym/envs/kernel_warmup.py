@@ -52,7 +52,7 @@ import time
 import warnings
 
 __all__ = ["SWITCH", "CALLEES_DONE", "CHILD_MODULE", "PeerWarmup", "Warmup", "await_callees", "cache_directory",
-           "claim", "enabled", "on_disk", "start", "stopped_on_error", "usable_cores"]
+           "claim", "enabled", "on_disk", "start", "stopped_on_error", "usable_cores", "wait_all"]
 
 #: the environment variable that switches the warm-up off (value ``off``)
 SWITCH = "LADDERMILL_KERNEL_WARMUP"
@@ -109,7 +109,11 @@ class Warmup:
         """Wait for the process; its exit code (None if it had to be stopped). A process that failed or was stopped
         costs only its time (this process compiles what it still needs) and is named in a RuntimeWarning."""
         if self.returncode is None and self.proc is not None:
-            try:
+            try:  # its output read to the end: a warm-up writing more than a pipe holds (numba's debug variables
+                if self.proc.stdout is not None:  # print to it) would block until the limit
+                    if self.proc.stdin is not None and self.proc.stdin.closed:  # its payload, sent at the start
+                        self.proc.stdin = None  # (communicate would flush it)
+                    self.proc.communicate(timeout=self._left())
                 self.returncode = self.proc.wait(timeout=self._left())
             except subprocess.TimeoutExpired:
                 self.proc.kill()
@@ -171,6 +175,17 @@ def stopped_on_error(warmups):
             if warmup is not None:
                 warmup.stop()
         raise
+
+
+def wait_all(warmups) -> None:
+    """Wait for every warm-up of ``warmups`` (:class:`Warmup`, :class:`PeerWarmup` or None) before the first kernel
+    call; if a wait raises (Ctrl-C, its warning turned into an error), stop the others first: the waits stood outside
+    :func:`stopped_on_error`, and an interrupted construction left a warm-up compiling, holding its lock (a review of
+    2026-12-08)."""
+    with stopped_on_error(warmups):
+        for warmup in warmups:
+            if warmup is not None:
+                warmup.wait()
 
 
 def enabled(kernels) -> bool:

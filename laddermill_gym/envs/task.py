@@ -213,9 +213,7 @@ class WingTask(TaskCore):
             self._nsteps = np.zeros(B, dtype=np.int64)
             self.steps = np.zeros(B, dtype=np.int64)
             self.obs_low, self.obs_high = observation_bounds(sc)
-        for warmup in warmups:  # before the first kernel call: load what they compiled from numba's cache
-            if warmup is not None:
-                warmup.wait()
+        kernel_warmup.wait_all(warmups)  # before the first kernel call: load what they compiled from numba's cache
         # trim observation: nominal alpha per wing and the reference power
         one = WingTask._observe_state(self, x_trim, u_trim)
         alpha_trim = one[0].reshape(nw, N_OBS_PER_WING)[:, OBS_INDEX["alpha"]]

@@ -39,11 +39,11 @@ import dataclasses
 
 import numpy as np
 
-from laddermill_gym.envs.kernel_warmup import SWITCH, Warmup, enabled, stopped_on_error
+from laddermill_gym.envs.kernel_warmup import SWITCH, Warmup, enabled, stopped_on_error, wait_all
 from laddermill_gym.envs.kernel_warmup import start as start_target
 
 __all__ = ["SWITCH", "STATICS_DONE", "TARGET", "Warmup", "before_search", "compile_in_plane", "compile_statics",
-           "enabled", "start", "stopped_on_error"]
+           "enabled", "start", "stopped_on_error", "wait_all"]
 
 #: what the second process calls (``envs/warmup_run.py``) with the task's arguments
 TARGET = "laddermill_gym.envs.laddermill.warmup_child:compile_for"

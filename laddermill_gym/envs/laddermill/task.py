@@ -169,8 +169,7 @@ class MillTask(TaskCore):
                 self.op.state[: B3_SIZE * n].reshape(n, B3_SIZE)[:, B3_QUAT: B3_QUAT + 4])
             self.batch.states[:] = self.op.state
             self.batch.controls[:] = self.u_op
-        if warmup is not None:  # before the first kernel call: load what it compiled from numba's cache
-            warmup.wait()
+        kernel_warmup.wait_all((warmup,))  # before the first kernel call: load what it compiled from numba's cache
 
     # ------------------------------------------------------------------ construction
     def _operating_point_warmup(self, given, scene: str, options: tuple, task_kwargs: dict):

@@ -176,8 +176,7 @@ class CraftTask(TaskCore):
             if isinstance(warmup, kernel_warmup.Warmup) and warmup.wait_for(kernel_warmup.CALLEES_DONE):
                 # the W method's loop compiled here, beside the warm-up's step kernel (envs/step_callees.py)
                 compile_ahead(w_loop_call(self.batch, self._dx))
-        if warmup is not None:  # before the first kernel call: load what it compiled from numba's cache
-            warmup.wait()
+        kernel_warmup.wait_all((warmup,))  # before the first kernel call: load what it compiled from numba's cache
         self._references()
         rc, tc = self.reward_config, self.termination_config
         self.lateral_scale = rc.lateral_scale if rc.lateral_scale is not None else 0.05 * cfg.tethers.length
