@@ -142,6 +142,22 @@ def test_actors_that_cannot_start_name_their_cause(monkeypatch):
                                                       f"far): {err}"]
 
 
+def test_the_slow_start_warning_names_a_worker_that_could_not_start(monkeypatch):
+    """One actor failed to start, the other waits for a CPU: after SLOW_START_S the warning names the failure's cause
+    (it said "(warned)" of a failure no warning had named: those are warned of once an actor has started)."""
+    err = RuntimeError("worker on node-7 runs other code than the caller")
+    fake = _FakeRay(cpus=2, free=0, starts=[err, False])
+    actors = [fake.remote()(object).remote() for _ in range(2)]
+    starting = ray_start.Starting(fake, actors)
+    starting.admit([])
+    monkeypatch.setattr(ray_start, "SLOW_START_S", 0.0)
+    with pytest.warns(RuntimeWarning) as got:
+        starting.warn_if_slow()
+    assert [str(w.message) for w in got] == [
+        "none of the 2 Ray workers has started after 0 s; 1 could not start (worker on node-7 runs other code than "
+        "the caller): the cluster has 0 CPUs free of 2 (other jobs hold the rest); the tasks start when a worker does"]
+
+
 def test_a_local_worker_that_cannot_start_names_its_cause(monkeypatch):
     """The caller says numpy '0.0-other'; each spawned worker reads its own numpy version, refuses, and every task
     reports that (it was "BrokenProcessPool: A process in the process pool was terminated abruptly")."""

@@ -87,7 +87,7 @@ class Starting:
             return
         self.warned = True
         free = self.ray.available_resources().get("CPU", 0)
-        failed = f"; {len(self.errors)} could not start (warned)" if self.errors else ""
+        failed = f"; {len(self.errors)} could not start ({_cause_line(self.errors[0])})" if self.errors else ""
         warnings.warn(f"none of the {self.total} Ray workers has started after {SLOW_START_S:.0f} s{failed}: the "
                       f"cluster has {free:g} CPUs free of {self.ray.cluster_resources().get('CPU', 0):g} (other jobs "
                       "hold the rest); the tasks start when a worker does", RuntimeWarning, stacklevel=3)
