@@ -119,5 +119,6 @@ def _check_scene_options(s: Section, kwargs: dict) -> None:
             raise s.error(f"env_kwargs.scene_options.{name}", value[name], f"not an argument of load_scene (known: "
                           f"{sorted(known)})")
         if name == "fidelity":  # the env passes its own (envs/task_env.check_scene_options)
-            raise s.error("env_kwargs.scene_options.fidelity", value[name], "each env sets its scene's fidelity "
-                          "(the wing, chain and mill envs 'rigid', PointMassChain 'pointmass'): choose the env instead")
+            from laddermill_gym.envs.task_env import FIDELITY_IS_THE_ENVS
+
+            raise s.error("env_kwargs.scene_options.fidelity", value[name], FIDELITY_IS_THE_ENVS)

@@ -45,6 +45,12 @@ def check_task_arguments(task_class: type, kwargs: dict, vector: bool) -> None:
     check_scene_options(kwargs.get("scene_options"))
 
 
+#: why an env takes no ``scene_options['fidelity']`` (the env and a training config's check say it alike)
+FIDELITY_IS_THE_ENVS = ("each env sets its scene's fidelity ('pointmass' is PointMassEnv's, "
+                        "laddermill_gym/PointMassChain-v0; 'rigid' the wing, chain and mill envs'): choose the env "
+                        "instead")
+
+
 def check_scene_options(options) -> None:
     """ValueError naming the entry unless ``scene_options`` is None or a dict of ``load_scene``'s keyword options
     (an unknown key was a TypeError from deep inside the scene loader) other than ``fidelity``, which the env sets."""
@@ -57,9 +63,7 @@ def check_scene_options(options) -> None:
     from laddermill_gym.ladder.scene import load_scene
 
     if "fidelity" in options:  # the env passes its own: a TypeError ("multiple values") or another family's error
-        raise ValueError(f"scene_options['fidelity'] = {options['fidelity']!r}: each env sets its scene's fidelity "
-                         "('pointmass' is PointMassEnv's, laddermill_gym/PointMassChain-v0; 'rigid' the wing, chain "
-                         "and mill envs'): choose the env instead")
+        raise ValueError(f"scene_options['fidelity'] = {options['fidelity']!r}: {FIDELITY_IS_THE_ENVS}")
     known = [p.name for p in inspect.signature(load_scene).parameters.values() if p.kind is p.KEYWORD_ONLY]
     unknown = sorted(set(options) - set(known))
     if unknown:
